@@ -1,0 +1,247 @@
+"""Radial internal clearance of single-row deep groove ball bearings (ISO 5753-1 classes).
+
+The clearance classes C2 < CN < C3 < C4 < C5 give the *radial internal clearance* G_r, the
+total radial play of one ring against the other, unmounted and unloaded. The papers' gap per
+side is half of it (Delta = e = G_r / 2); this module returns G_r itself.
+
+The limits are those of ``data/clearance_deep_groove.csv``, copied from NSK's reproduction of
+the ISO 5753-1 table for deep groove ball bearings [1]_ and confirmed cell by cell for 6-140 mm
+by [2]_. Bore ranges are "over / incl": a bore of exactly 30 mm belongs to the 24-30 row.
+
+GOST 24810-81 numbers the same clearance groups of single-row radial ball bearings with a
+cylindrical bore 6, normal, 7, 8, 9 (= C2, CN, C3, C4, C5) [3]_. The GOST micrometre limits
+were not found, so the ISO limits are used for the GOST groups too.
+
+References
+----------
+.. [1] NSK, *Rolling Bearings* catalogue, Table 9.9 "Radial Internal Clearances in Deep Groove
+   Ball Bearings" (values of ISO 5753-1), micrometres.
+.. [2] PTI, "Bearing inserts internal clearance", pti.eu technical information (same values).
+.. [3] aprom.by, "Зазоры в подшипниках качения" (GOST 24810 groups and their ISO
+   equivalents), text copy in the BearingsInfo collection, section 1.3.
+
+>>> clearance_range(30, "C3")
+(0.013, 0.028)
+>>> radial_clearance(30, "CN")
+0.0125
+>>> parse_class("7")
+'C3'
+"""
+
+from __future__ import annotations
+
+import csv
+import functools
+import re
+from dataclasses import dataclass
+from importlib import resources
+
+from .errors import InputError
+
+#: The ISO clearance classes the table gives, in increasing clearance.
+CLASSES: tuple[str, ...] = ("C2", "CN", "C3", "C4", "C5")
+
+#: GOST 24810-81 clearance groups of single-row radial ball bearings with a cylindrical
+#: bore, and their ISO classes (aprom.by text, see the module references).
+GOST_GROUPS: dict[str, str] = {"6": "C2", "7": "C3", "8": "C4", "9": "C5"}
+
+#: How a class may be picked from its range.
+PICKS: tuple[str, ...] = ("min", "mean", "max")
+
+_NORMAL = {"N", "CN", "C0", "0", "NORMAL", "NORM", "НОРМАЛЬНАЯ", "НОРМ", "M", "М"}
+_GROUP_WORD = re.compile(r"^(?:G|GR|GROUP|ГР|ГРУППА)\s*\.?\s*(\S+)$")
+_ALLOWED = (
+    "C2, CN, C3, C4, C5 (ISO 5753-1; 'N', 'normal', '0' mean CN) or the GOST 24810 groups "
+    "6, 7, 8, 9 (= C2, C3, C4, C5; normal = CN), also written 'G7'"
+)
+
+
+@dataclass(frozen=True)
+class ClearanceRow:
+    """One bore range of the clearance table.
+
+    Attributes
+    ----------
+    bore_over, bore_incl : float
+        The row holds bores ``bore_over < d <= bore_incl``. [mm]
+    limits : dict
+        ``{class: (min, max)}`` radial internal clearance. [mm]
+    source : str
+        Where the row was copied from.
+    """
+
+    bore_over: float
+    bore_incl: float
+    limits: dict[str, tuple[float, float]]
+    source: str
+
+
+@functools.lru_cache(maxsize=1)
+def table() -> tuple[ClearanceRow, ...]:
+    """The clearance table of deep groove ball bearings, rows in increasing bore.
+
+    Returns
+    -------
+    tuple of ClearanceRow
+        Limits converted from the file's micrometres to [mm].
+    """
+    path = resources.files("bearingload").joinpath("data/clearance_deep_groove.csv")
+    rows = []
+    for rec in csv.DictReader(path.read_text(encoding="utf-8").splitlines()):
+        limits = {
+            cls: (float(rec[f"{cls}_min"]) / 1000.0, float(rec[f"{cls}_max"]) / 1000.0)
+            for cls in CLASSES
+        }
+        rows.append(
+            ClearanceRow(float(rec["bore_over"]), float(rec["bore_incl"]), limits, rec["source"])
+        )
+    return tuple(rows)
+
+
+def parse_class(text: str) -> str:
+    """Read a clearance class or GOST clearance group.
+
+    Parameters
+    ----------
+    text : str
+        ``C2``, ``CN``, ``C3``, ``C4``, ``C5`` (any case; ``N``, ``normal``, ``0`` and ``M``
+        mean CN), or a GOST 24810 group ``6``, ``7``, ``8``, ``9``, optionally written
+        ``G7`` / ``group 7``.
+
+    Returns
+    -------
+    str
+        One of :data:`CLASSES`.
+
+    Raises
+    ------
+    InputError
+        For anything else (parameter ``clearance``), listing the allowed classes.
+
+    Examples
+    --------
+    >>> parse_class("c3"), parse_class("normal"), parse_class("G9")
+    ('C3', 'CN', 'C5')
+    """
+    raw = str(text).strip().upper()
+    group = _GROUP_WORD.match(raw)
+    key = group.group(1) if group else raw
+    if key in CLASSES:
+        return key
+    if key in _NORMAL:
+        return "CN"
+    if key in GOST_GROUPS:
+        return GOST_GROUPS[key]
+    hint = ""
+    if key == "C1":
+        hint = " (C1 is not tabulated for deep groove ball bearings)"
+    raise InputError("clearance", f"unknown clearance class {text!r}{hint}; allowed: {_ALLOWED}")
+
+
+def looks_like_class(text: str) -> bool:
+    """Tell whether ``text`` names a clearance class rather than a length.
+
+    A bare number is always a length (the package's rule: a bare number is in mm), so
+    ``"0"`` means zero clearance here and ``"7"`` means 7 mm; write ``"G7"`` or ``"C3"`` for
+    the GOST group 7. Use it to route a ``--clearance`` option to :func:`parse_class` or to
+    :func:`bearingload.units.parse_quantity`.
+
+    Parameters
+    ----------
+    text : str
+        The option value as typed.
+
+    Returns
+    -------
+    bool
+
+    Examples
+    --------
+    >>> looks_like_class("C3"), looks_like_class("cn"), looks_like_class("20um")
+    (True, True, False)
+    """
+    raw = str(text).strip().upper()
+    if re.fullmatch(r"[+-]?(?:\d+\.?\d*|\.\d+)(?:E[+-]?\d+)?", raw):
+        return False
+    group = _GROUP_WORD.match(raw)
+    key = group.group(1) if group else raw
+    if group and key in GOST_GROUPS:
+        return True
+    return key in CLASSES or (key in _NORMAL and not key[0].isdigit()) or key == "C1"
+
+
+def _row(bore: float) -> ClearanceRow:
+    rows = table()
+    try:
+        d = float(bore)
+    except (TypeError, ValueError):
+        raise InputError("bore", f"{bore!r} is not a number") from None
+    for row in rows:
+        if row.bore_over < d <= row.bore_incl:
+            return row
+    raise InputError(
+        "bore",
+        f"{d:g} mm is outside the clearance table of deep groove ball bearings "
+        f"(over {rows[0].bore_over:g} up to {rows[-1].bore_incl:g} mm); "
+        "give the clearance as a length instead, e.g. --clearance 20um",
+    )
+
+
+def clearance_range(bore: float, cls: str) -> tuple[float, float]:
+    """Smallest and largest radial internal clearance G_r of a class.
+
+    Parameters
+    ----------
+    bore : float
+        Nominal bore diameter d. [mm]
+    cls : str
+        Clearance class or GOST group, as accepted by :func:`parse_class`.
+
+    Returns
+    -------
+    (float, float)
+        (min, max) radial internal clearance G_r. [mm]
+
+    Raises
+    ------
+    InputError
+        Bore outside the table, or unknown class.
+    """
+    return _row(bore).limits[parse_class(cls)]
+
+
+def radial_clearance(bore: float, cls: str, pick: str = "mean") -> float:
+    """Radial internal clearance G_r of a class, at its lower limit, middle or upper limit.
+
+    Parameters
+    ----------
+    bore : float
+        Nominal bore diameter d. [mm]
+    cls : str
+        Clearance class or GOST group, as accepted by :func:`parse_class`.
+    pick : str, default "mean"
+        ``min``, ``mean`` (middle of the range) or ``max``.
+
+    Returns
+    -------
+    float
+        Radial internal clearance G_r (total play; the gap per side is G_r / 2). [mm]
+
+    Raises
+    ------
+    InputError
+        Bore outside the table, unknown class, or unknown pick.
+
+    Examples
+    --------
+    >>> radial_clearance(40, "C3", pick="max")
+    0.033
+    """
+    if pick not in PICKS:
+        raise InputError("pick", f"unknown pick {pick!r}; allowed: {', '.join(PICKS)}")
+    low, high = clearance_range(bore, cls)
+    if pick == "min":
+        return low
+    if pick == "max":
+        return high
+    return (low + high) / 2.0

@@ -1,0 +1,300 @@
+"""Parse deep groove ball bearing designations: ISO ``6306-2RS1/C3`` and GOST ``75-313``.
+
+Accepted forms
+--------------
+* ISO 15 / maker designations of single-row deep groove ball bearings: ``6`` + diameter
+  series (``0``, ``2``, ``3``, ``4``, ``8``, ``9``) + two-digit bore code, e.g. ``6306``, with optional
+  suffixes: seals and shields (``-2RS``, ``2RS1``, ``-2Z``, ``ZZ``, ``LLU`` ...), the clearance
+  class (``C2``, ``CN``, ``C3``, ``C4``, ``C5``, also ``C1``), the accuracy class (``P6``, ``P5``
+  ...), or both at once as SKF writes them (``P63`` = P6 + C3) [2]_. Separators ``-``, ``/``
+  and spaces are optional: ``6306-2RS1/C3``, ``6306 ZZ C3``, ``6306ZZC3``.
+* Russian designations of GOST 8338-75, which drop the leading 6 of the ISO name [1]_:
+  a three-digit number whose first digit is the diameter series ``2``, ``3`` or ``4``
+  (``306`` = 6306). A five- or six-digit number is read with GOST 3189's layout
+  (design variant, type ``0`` = radial ball bearing, series, bore), e.g. ``180306``; the design
+  variant is kept in :attr:`Designation.design_code` and not interpreted.
+  An optional prefix before a dash carries, read from the dash leftwards, the accuracy class,
+  the radial clearance group and the friction-moment row [2]_: ``75-313`` is accuracy class 5,
+  clearance group 7 (= C3), bearing 313; ``6-208`` is accuracy class 6 with the normal group;
+  ``0-306`` is class 0. GOST 24810-81 groups of these bearings: 6 = C2, none (or ``M``) = CN,
+  7 = C3, 8 = C4, 9 = C5 [2]_.
+
+A four-digit ``6xxx`` is always read as ISO (under GOST 3189 the digit 6 in that place would
+mean an angular-contact bearing; the catalogues this package uses never need that reading).
+Bore code: 00 = 10, 01 = 12, 02 = 15, 03 = 17 mm, otherwise d = 5 x code.
+
+References
+----------
+.. [1] Catalogue cross-references ISO <-> GOST (NSK / GOST 8338-75 tables, KINEX catalogue):
+   306 = 6306, 208 = 6208, 405 = 6405.
+.. [2] aprom.by, "Зазоры в подшипниках качения" (GOST designation scheme "category, friction
+   moment, clearance group, accuracy - basic designation", example 75-313ЕШ2; GOST 24810 - ISO
+   clearance equivalents; SKF P63 = P6 + C3), text copy in the BearingsInfo collection, section 1.3.
+
+>>> d = parse("75-313")
+>>> d.iso_name, d.bore, d.clearance_class, d.accuracy_class
+('6313', 65.0, 'C3', '5')
+>>> parse("6306-2RS1/C3").suffixes
+('2RS1', 'C3')
+"""
+
+from __future__ import annotations
+
+import re
+from dataclasses import dataclass
+
+from .errors import InputError
+
+#: Bore codes with a special bore diameter; every other code means d = 5 x code. [mm]
+SPECIAL_BORES: dict[str, float] = {"00": 10.0, "01": 12.0, "02": 15.0, "03": 17.0}
+
+#: GOST 24810-81 radial clearance groups of single-row radial ball bearings with a
+#: cylindrical bore, as ISO classes ("M" marks the normal group when a friction row is given).
+GOST_CLEARANCE_GROUPS: dict[str, str | None] = {
+    "6": "C2",
+    "7": "C3",
+    "8": "C4",
+    "9": "C5",
+    "M": "CN",
+    "H": None,  # non-standard clearance agreed with the customer
+}
+
+ACCEPTED_FORMS = (
+    "ISO '6306', '6306-2RS', '6306-2Z/C3', '6306ZZC3' (series 60, 62, 63, 64, 68, 69) or "
+    "GOST '306', '180306', '75-313', '6-208' (series 2xx, 3xx, 4xx)"
+)
+
+# Cyrillic letters that look like Latin ones, folded so that both spellings parse.
+_FOLD = str.maketrans("АВСЕНКМОРТХ", "ABCEHKMOPTX")
+
+_ISO = re.compile(r"^6(?P<series>[023489])(?P<bore>\d{2})(?P<rest>(?:[^0-9].*)?)$")
+_GOST = re.compile(
+    r"^(?:(?P<prefix>[^-\s]{1,6})\s*-\s*)?"
+    r"(?:(?P<design>[1-9]\d?)0)?(?P<series>\d)(?P<bore>\d{2})"
+    r"(?P<rest>(?:[^0-9].*)?)$"
+)
+_PREFIX = re.compile(
+    r"^(?P<category>\d?[ABC])?"
+    r"(?:(?P<friction>\d)?(?P<clearance>[0-9MH]))?"
+    r"(?P<accuracy>[0245678T])$"
+)
+_SUFFIX_TOKENS = re.compile(
+    r"(?P<clearance>C[1-5N])(?![0-9])"
+    r"|(?P<precision>P(?:6X|[0245-6]))(?P<pclr>[1-5])?(?![0-9])"
+    r"|(?P<seal>2RS[1HR]?|RS[1HR]?|2RZ|RZ|2Z|ZZ|Z|2NSE|NSE|DDU|DD|LLU|LLB|LLH|LU|LB|VV|NR|N)"
+)
+
+
+@dataclass(frozen=True)
+class Designation:
+    """A parsed bearing designation.
+
+    Attributes
+    ----------
+    text : str
+        The designation as given (stripped).
+    standard : str
+        ``"ISO"`` or ``"GOST"``: the system the designation was written in.
+    series : str
+        ISO dimension-series code: ``"60"``, ``"62"``, ``"63"``, ``"64"``, ``"68"``, ``"69"``.
+    bore_code : str
+        The two-digit bore code, e.g. ``"06"``.
+    bore : float
+        Bore diameter d. [mm]
+    iso_name : str
+        Basic ISO designation, e.g. ``"6306"``.
+    gost_name : str or None
+        Basic GOST 8338 designation, e.g. ``"306"``; None for the 60, 68 and 69 series
+        (their GOST names follow other rules, not implemented).
+    suffixes : tuple of str
+        Suffix tokens in order, normalised to upper case (``("2RS1", "C3")``).
+    clearance_class : str or None
+        ISO clearance class from a suffix or a GOST group (``"C3"``); None when the
+        designation marks none, which by both standards means the normal class CN.
+    clearance_group : str or None
+        The GOST clearance group as marked in the prefix (``"7"``, ``"M"``, ``"H"``).
+    accuracy_class : str or None
+        Accuracy class as marked: GOST prefix digit (``"5"``) or ISO suffix (``"P5"``).
+    design_code : str or None
+        GOST design-variant digits of a five- or six-digit designation (``"18"`` in 180306).
+    """
+
+    text: str
+    standard: str
+    series: str
+    bore_code: str
+    bore: float
+    iso_name: str
+    gost_name: str | None
+    suffixes: tuple[str, ...] = ()
+    clearance_class: str | None = None
+    clearance_group: str | None = None
+    accuracy_class: str | None = None
+    design_code: str | None = None
+
+    @property
+    def base(self) -> str:
+        """Basic designation in the system it was written in (``"306"`` or ``"6306"``)."""
+        if self.standard == "GOST" and self.gost_name is not None:
+            return self.gost_name
+        return self.iso_name
+
+
+def bore_from_code(code: str) -> float:
+    """Bore diameter of a two-digit bore code.
+
+    Parameters
+    ----------
+    code : str
+        ``"00"`` ... ``"99"``.
+
+    Returns
+    -------
+    float
+        d [mm]: 00 = 10, 01 = 12, 02 = 15, 03 = 17, otherwise 5 x code.
+
+    Examples
+    --------
+    >>> bore_from_code("03"), bore_from_code("06")
+    (17.0, 30.0)
+    """
+    if not re.fullmatch(r"\d{2}", code):
+        raise InputError("bore_code", f"{code!r} is not a two-digit bore code")
+    return SPECIAL_BORES.get(code, 5.0 * int(code))
+
+
+def _error(text: str, why: str = "") -> InputError:
+    reason = f" ({why})" if why else ""
+    return InputError(
+        "bearing",
+        f"cannot read {text!r} as a bearing designation{reason}; accepted: {ACCEPTED_FORMS}",
+    )
+
+
+def _parse_suffixes(text: str, rest: str) -> tuple[tuple[str, ...], str | None, str | None]:
+    """Split the suffix part into tokens; return (tokens, clearance class, accuracy class)."""
+    if re.search(r"[^\w\s/-]|_", rest):
+        raise _error(text, f"unexpected character in the suffix {rest.strip()!r}")
+    tokens: list[str] = []
+    clearances: list[str] = []
+    accuracies: list[str] = []
+    for chunk in re.split(r"[-/\s]+", rest.strip(" -/")):
+        pos = 0
+        while pos < len(chunk):
+            m = _SUFFIX_TOKENS.match(chunk, pos)
+            if m is None:
+                # An unknown token runs to the end of the chunk, except a trailing clearance
+                # code glued to it ("TN9C3").
+                tail = re.search(r"C[1-5N]$", chunk[pos:])
+                end = len(chunk) - (2 if tail and len(chunk) - pos > 2 else 0)
+                tokens.append(chunk[pos:end])
+                pos = end
+                continue
+            tokens.append(m.group(0))
+            if m.group("clearance"):
+                clearances.append(m.group("clearance"))
+            if m.group("precision"):
+                accuracies.append(m.group("precision"))
+                if m.group("pclr"):
+                    clearances.append("C" + m.group("pclr"))
+            pos = m.end()
+    if len(set(clearances)) > 1:
+        raise _error(text, f"two clearance classes {', '.join(clearances)}")
+    if len(set(accuracies)) > 1:
+        raise _error(text, f"two accuracy classes {', '.join(accuracies)}")
+    return (
+        tuple(t for t in tokens if t),
+        clearances[0] if clearances else None,
+        accuracies[0] if accuracies else None,
+    )
+
+
+def parse(text: str) -> Designation:
+    """Parse a deep groove ball bearing designation.
+
+    Parameters
+    ----------
+    text : str
+        ISO (``6306``, ``6306-2RS1/C3``) or GOST (``306``, ``75-313``, ``180306``)
+        designation; case does not matter, Cyrillic and Latin look-alike letters are equal.
+
+    Returns
+    -------
+    Designation
+
+    Raises
+    ------
+    InputError
+        (parameter ``bearing``) when the text is not one of the accepted forms, names an
+        unsupported series, or marks two different clearance or accuracy classes.
+
+    Examples
+    --------
+    >>> d = parse("306")
+    >>> d.standard, d.iso_name, d.gost_name, d.bore, d.clearance_class
+    ('GOST', '6306', '306', 30.0, None)
+    >>> parse("6208 ZZ C3").clearance_class
+    'C3'
+    """
+    raw = str(text).strip()
+    norm = raw.upper().translate(_FOLD)
+    if not norm:
+        raise _error(raw, "empty")
+    m = _ISO.match(norm)
+    if m:
+        suffixes, clr, acc = _parse_suffixes(raw, m.group("rest"))
+        series, code = m.group("series"), m.group("bore")
+        return Designation(
+            text=raw,
+            standard="ISO",
+            series="6" + series,
+            bore_code=code,
+            bore=bore_from_code(code),
+            iso_name=f"6{series}{code}",
+            gost_name=f"{series}{code}" if series in "234" else None,
+            suffixes=suffixes,
+            clearance_class=clr,
+            accuracy_class=acc,
+        )
+    m = _GOST.match(norm)
+    if m is None:
+        raise _error(raw)
+    series, code = m.group("series"), m.group("bore")
+    if series not in "234":
+        raise _error(raw, f"GOST diameter series {series} is not supported, only 2, 3, 4")
+    suffixes, clr, acc = _parse_suffixes(raw, m.group("rest"))
+    group = None
+    prefix = m.group("prefix")
+    if prefix is not None:
+        p = _PREFIX.match(prefix)
+        if p is None:
+            raise _error(raw, f"prefix {prefix!r} is not '[friction][clearance group]accuracy'")
+        group = p.group("clearance")
+        if group is not None:
+            if group not in GOST_CLEARANCE_GROUPS:
+                raise _error(
+                    raw,
+                    f"clearance group {group} is not a group of single-row radial ball "
+                    "bearings with cylindrical bore (6, 7, 8, 9; M or none = normal; H)",
+                )
+            from_group = GOST_CLEARANCE_GROUPS[group]
+            if clr is not None and from_group is not None and clr != from_group:
+                raise _error(raw, f"group {group} (= {from_group}) contradicts suffix {clr}")
+            clr = clr or from_group
+        if acc is not None:
+            raise _error(raw, f"accuracy class given twice ({p.group('accuracy')} and {acc})")
+        acc = p.group("accuracy")
+    return Designation(
+        text=raw,
+        standard="GOST",
+        series="6" + series,
+        bore_code=code,
+        bore=bore_from_code(code),
+        iso_name=f"6{series}{code}",
+        gost_name=f"{series}{code}",
+        suffixes=suffixes,
+        clearance_class=clr,
+        clearance_group=group,
+        accuracy_class=acc,
+        design_code=m.group("design"),
+    )
