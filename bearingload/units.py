@@ -102,6 +102,4 @@ def parse_quantity(text: str | float, kind: str, *, parameter: str | None = None
 
 
 def _example(kind: str) -> str:
-    return {"force": "300kgf", "length": "20um", "stiffness": "4700kgf/mm^1.5"}.get(
-        kind, "208GPa"
-    )
+    return {"force": "300kgf", "length": "20um", "stiffness": "4700kgf/mm^1.5"}.get(kind, "208GPa")

@@ -1,0 +1,561 @@
+"""The ring-equilibrium engine: the exact discrete load distribution of a radial bearing.
+
+Every discrete model of the package is a case of this one (DOMAIN.md §1; Kurochkin 1973, eqs. 1.1-1.8;
+Kuzmenko 2010, §1-3). Conventions:
+
+* Outer ring fixed, radial load ``F_r`` on the inner ring; angles measured from the load line.
+* ``z`` balls equally spaced; ball 1 sits at the cage angle ``phi_1``, ball ``i`` at
+  ``phi_i = phi_1 + 2*pi*(i - 1)/z``. Cage angle 0: a ball under the load; ``180/z`` degrees
+  ("half pitch"): the load acts between two balls.
+* ``clearance`` is the radial internal clearance ``G_r`` (total radial play, as in ISO 5753-1);
+  the gap per side is ``e = G_r/2``. Negative = preload.
+* Ball ``i`` is compressed by ``delta_i = x cos(phi_i) + y sin(phi_i) - e`` and carries
+  ``Q_i = K max(delta_i, 0)^m`` (``m`` = 3/2 balls, 10/9 rollers). The inner ring displacement
+  ``(x, y)`` minimises the convex potential ``sum K/(m+1) max(delta_i, 0)^(m+1) - F_r x``.
+
+Numerics. Lengths are scaled by ``s = (F_r/K)^(1/m)``, the approach one ball would have under the
+whole load, so every case is solved at unit load. The unknown is the approach of the ball nearest
+to the load line (not the ring position), so that a huge clearance with a small load loses no digits.
+Cages at 0 or half pitch are symmetric (``y = 0``): one unknown, solved by a bracketed Newton
+iteration over half the ring, vectorised over all cases with the same ``z``. Any other cage angle:
+a damped Newton iteration on the potential in two unknowns.
+"""
+
+from __future__ import annotations
+
+from dataclasses import dataclass
+from typing import Any
+
+import numpy as np
+
+from . import validate
+from .errors import ConvergenceError, InputError
+
+#: Relative equilibrium residual the solver drives every case below. [-]
+TOLERANCE = 1e-13
+#: Iteration cap of every Newton loop; reaching it raises ConvergenceError.
+MAX_ITERATIONS = 200
+#: Cage angles within this fraction of a pitch of 0 or 1/2 are treated as symmetric. [-]
+SYMMETRY_SNAP = 1e-12
+
+
+@dataclass(frozen=True)
+class LoadDistribution:
+    """Solution of the ring equilibrium for one case or an array of cases.
+
+    Every attribute is a numpy array of the broadcast input shape (0-d for scalar input).
+
+    Attributes
+    ----------
+    balls : ndarray of int
+        Number of balls ``z``. [-]
+    load : ndarray
+        Radial load ``F_r``. [N]
+    stiffness : ndarray
+        Ball stiffness ``K`` of both contacts in series, ``Q = K delta^m``. [N/mm^m]
+    clearance : ndarray
+        Radial internal clearance ``G_r`` (total play; negative = preload). [mm]
+    cage_angle : ndarray
+        Angle of ball 1 from the load line. [rad]
+    exponent : ndarray
+        Load-deflection exponent ``m``. [-]
+    x, y : ndarray
+        Inner-ring displacement along and across the load. [mm]
+    q_max : ndarray
+        Load of the most heavily loaded ball. [N]
+    loaded_balls : ndarray of int
+        Number of balls carrying load. [-]
+    load_zone : ndarray
+        Half-angle of the load zone, ``arccos(e/|d|)`` around the displacement ``d``. [rad]
+    stiffness_matrix : ndarray, shape (..., 2, 2)
+        Tangent stiffness ``dF/dd`` of the bearing in the (along, across) axes. [N/mm]
+    iterations : ndarray of int
+        Newton iterations spent on each case. [-]
+    """
+
+    balls: np.ndarray
+    load: np.ndarray
+    stiffness: np.ndarray
+    clearance: np.ndarray
+    cage_angle: np.ndarray
+    exponent: np.ndarray
+    x: np.ndarray
+    y: np.ndarray
+    q_max: np.ndarray
+    loaded_balls: np.ndarray
+    load_zone: np.ndarray
+    stiffness_matrix: np.ndarray
+    iterations: np.ndarray
+
+    @property
+    def k(self) -> np.ndarray:
+        """Load factor ``k = Q_max/F_r`` (Kuzmenko 2010, eq. 1.17). [-]"""
+        return self.q_max / self.load
+
+    @property
+    def K_Q(self) -> np.ndarray:
+        """Load-concentration factor ``K_Q = Q_max/Q_mean = k z/2`` (Kuzmenko & Sabadash 2014). [-]"""
+        return self.k * self.balls / 2.0
+
+    @property
+    def stiffness_radial(self) -> np.ndarray:
+        """Tangent radial stiffness ``dF_r/dx`` with the transverse force held at zero. [N/mm]
+
+        The Schur complement ``K_xx - K_xy^2/K_yy``; where only one ball carries (``K_yy = 0``, no
+        transverse stiffness) it is ``K_xx``.
+        """
+        kxx = self.stiffness_matrix[..., 0, 0]
+        kxy = self.stiffness_matrix[..., 0, 1]
+        kyy = self.stiffness_matrix[..., 1, 1]
+        with np.errstate(divide="ignore", invalid="ignore"):
+            schur = kxx - np.where(kyy > 0, kxy**2 / np.where(kyy > 0, kyy, 1.0), 0.0)
+        return schur
+
+    def ball_angles(self) -> np.ndarray:
+        """Angles ``phi_i`` of balls 1..z from the load line, for one case. [rad]"""
+        z = int(self._one(self.balls))
+        return float(self._one(self.cage_angle)) + 2.0 * np.pi * np.arange(z) / z
+
+    def ball_loads(self) -> np.ndarray:
+        """Load ``Q_i`` of balls 1..z (ball 1 at the cage angle), for one case. [N]"""
+        phi = self.ball_angles()
+        e = float(self._one(self.clearance)) / 2.0
+        delta = (
+            float(self._one(self.x)) * _snapped_cos(phi)
+            + float(self._one(self.y)) * _snapped_sin(phi)
+            - e
+        )
+        m = float(self._one(self.exponent))
+        return float(self._one(self.stiffness)) * np.maximum(delta, 0.0) ** m
+
+    def _one(self, arr: np.ndarray) -> Any:
+        if np.size(arr) != 1:
+            raise ValueError(
+                "ball_loads() and ball_angles() describe one case; index the result first"
+            )
+        return np.asarray(arr).reshape(())
+
+    def __getitem__(self, index: Any) -> LoadDistribution:
+        """The distribution of the cases selected by ``index`` (numpy indexing of the case shape)."""
+        fields = {name: getattr(self, name)[index] for name in self.__dataclass_fields__}
+        fields["stiffness_matrix"] = self.stiffness_matrix[index]
+        return LoadDistribution(**fields)
+
+
+def solve(
+    balls: Any,
+    load: Any,
+    stiffness: Any,
+    clearance: Any = 0.0,
+    cage_angle: Any = 0.0,
+    exponent: Any = 1.5,
+) -> LoadDistribution:
+    """Solve the equilibrium of the inner ring: the exact discrete load distribution.
+
+    Parameters
+    ----------
+    balls : int or array_like
+        Number of rolling elements ``z``, 1 to 100 000. [-]
+    load : float or array_like
+        Radial load ``F_r``, > 0. [N]
+    stiffness : float or array_like
+        Rolling-element stiffness ``K`` of both contacts in series, ``Q = K delta^m``, > 0. [N/mm^m]
+    clearance : float or array_like, default 0
+        Radial internal clearance ``G_r`` (total play; gap per side ``G_r/2``; negative = preload). [mm]
+    cage_angle : float or array_like, default 0
+        Angle of ball 1 from the load line; 0 = a ball under the load, ``180/z`` = half pitch. [°]
+    exponent : float or array_like, default 1.5
+        Load-deflection exponent ``m``: 3/2 for balls (point contact), 10/9 for rollers. [-]
+
+    Returns
+    -------
+    LoadDistribution
+        Arrays of the broadcast shape of the inputs.
+
+    Raises
+    ------
+    InputError
+        A parameter outside its domain; with fewer than 3 balls, a cage angle that puts no ball on
+        the load line (no equilibrium exists).
+    ConvergenceError
+        A case did not reach the tolerance (never observed; reported with its data).
+
+    Examples
+    --------
+    Bearing 306 of Kuzmenko (2010), zero clearance, a ball under the load (Table 1: k = 0.5435):
+
+    >>> r = solve(8, 300.0, 4700.0)
+    >>> round(float(r.k), 4), int(r.loaded_balls)
+    (0.5432, 3)
+    """
+    z = validate.ball_count(balls)
+    f = validate.positive("load", load, "N")
+    kk = validate.positive("stiffness", stiffness, "N/mm^m")
+    g = validate.finite("clearance", clearance)
+    phi1 = np.deg2rad(validate.finite("cage_angle", cage_angle))
+    m = validate.exponent(exponent)
+    z, f, kk, g, phi1, m = np.broadcast_arrays(z, f, kk, g, phi1, m)
+    shape = z.shape
+    z, f, kk, g, phi1, m = (a.ravel() for a in (z, f, kk, g, phi1, m))
+
+    scale = (f / kk) ** (1.0 / m)  # approach of one ball carrying the whole load [mm]
+    e_hat = (g / 2.0) / scale
+    pitch = 2.0 * np.pi / z
+    frac = np.mod(phi1, pitch) / pitch
+    frac = np.where(frac > 1.0 - SYMMETRY_SNAP, 0.0, frac)
+    kind = np.full(z.shape, 2, dtype=np.int8)  # 0: ball under load, 1: half pitch, 2: general
+    kind[frac < SYMMETRY_SNAP] = 0
+    kind[np.abs(frac - 0.5) < SYMMETRY_SNAP] = 1
+    few = (z < 3) & (kind != 0)
+    if np.any(few):
+        raise InputError(
+            "cage_angle",
+            "with 1 or 2 balls a ball must sit on the load line (cage angle 0), "
+            "otherwise no equilibrium exists",
+        )
+
+    n = z.size
+    res = {
+        "xi": np.zeros(n),  # approach of the reference ball (nearest the load line), scaled
+        "eta": np.zeros(n),  # transverse displacement, scaled
+        "x0": np.ones(n),  # reference position where the nearest balls touch, in units of e
+        "y0": np.zeros(n),
+        "iterations": np.zeros(n, dtype=np.int64),
+        "q_hat": np.zeros(n),
+        "loaded": np.zeros(n, dtype=np.int64),
+        "hess": np.zeros((n, 3)),  # scaled Hxx, Hxy, Hyy
+    }
+
+    keys = z.astype(np.int64) * 3 + kind
+    for key in np.unique(keys):
+        idx = np.nonzero(keys == key)[0]
+        zz, kd = int(key // 3), int(key % 3)
+        if kd == 2:
+            ring = _Ring.general(zz, frac[idx] * 2.0 * np.pi / zz)
+            out = _solve_general(ring, e_hat[idx], m[idx])
+            _store(out, ring, idx, e_hat[idx], m[idx], False, res)
+        else:
+            for front in (True, False):
+                j = idx[(e_hat[idx] >= 0) == front]
+                if j.size:
+                    ring = _Ring.symmetric(zz, half_pitch=kd == 1, front=front)
+                    out = _solve_symmetric(ring, e_hat[j], m[j])
+                    _store(out, ring, j, e_hat[j], m[j], True, res)
+
+    xi, eta, hess = res["xi"], res["eta"], res["hess"]
+    x0, y0 = res["x0"], res["y0"]
+    e = g / 2.0
+    x = e * x0 + xi * scale
+    y = e * y0 + eta * scale
+    r = np.hypot(x, y)
+    # half-angle of the load zone: arccos(e/r) = 2 arcsin(sqrt((1 - e/r)/2)), with 1 - e/r for
+    # e > 0 from r^2 - e^2 = e^2 (|d0|^2 - 1) + 2 e s (d0 . zeta) + s^2 |zeta|^2 (no cancellation)
+    with np.errstate(divide="ignore", invalid="ignore"):
+        r2_e2 = (
+            e**2 * (x0**2 + y0**2 - 1.0)
+            + 2.0 * e * scale * (x0 * xi + y0 * eta)
+            + scale**2 * (xi**2 + eta**2)
+        )
+        one_minus = np.where(e > 0, np.maximum(r2_e2, 0.0) / (r * (r + e)), 1.0 - e / r)
+    one_minus = np.clip(one_minus, 0.0, 2.0)
+    zone = 2.0 * np.arcsin(np.sqrt(one_minus / 2.0))
+    hscale = (f / scale)[:, None] * hess
+    matrix = np.empty((n, 2, 2))
+    matrix[:, 0, 0], matrix[:, 0, 1], matrix[:, 1, 0], matrix[:, 1, 1] = (
+        hscale[:, 0],
+        hscale[:, 1],
+        hscale[:, 1],
+        hscale[:, 2],
+    )
+
+    def shaped(a: np.ndarray) -> np.ndarray:
+        return a.reshape(shape)
+
+    return LoadDistribution(
+        balls=shaped(z),
+        load=shaped(f),
+        stiffness=shaped(kk),
+        clearance=shaped(g),
+        cage_angle=shaped(phi1),
+        exponent=shaped(m),
+        x=shaped(x),
+        y=shaped(y),
+        q_max=shaped(res["q_hat"] * f),
+        loaded_balls=shaped(res["loaded"]),
+        load_zone=shaped(zone),
+        stiffness_matrix=matrix.reshape(shape + (2, 2)),
+        iterations=shaped(res["iterations"]),
+    )
+
+
+def _snapped_cos(phi: np.ndarray) -> np.ndarray:
+    c = np.cos(phi)
+    return np.where(np.abs(c) < 1e-14, 0.0, c)
+
+
+def _snapped_sin(phi: np.ndarray) -> np.ndarray:
+    s = np.sin(phi)
+    return np.where(np.abs(s) < 1e-14, 0.0, s)
+
+
+@dataclass(frozen=True)
+class _Ring:
+    """A set of ball angles, with the reference ring position where the nearest balls just touch.
+
+    The reference position ``d0 = e (x0, y0)`` is where the two balls straddling the load line,
+    at ``mu - h`` and ``mu + h``, both just touch (for a ball on the load line, ``h = 0``). Each
+    ball's scaled approach is ``delta = xi c + eta s - e_hat u`` with ``(xi, eta)`` the scaled
+    displacement from ``d0`` and ``u = 1 - cos(phi - mu)/cos h >= 0`` computed without
+    cancellation, so a huge clearance costs no digits. ``w``: multiplicity of each angle.
+    """
+
+    c: np.ndarray
+    s: np.ndarray
+    u: np.ndarray
+    w: np.ndarray
+    x0: np.ndarray
+    y0: np.ndarray
+    c_max: np.ndarray
+    w_max: np.ndarray
+
+    @staticmethod
+    def _build(phi: np.ndarray, w: np.ndarray, mu: Any, h: float, front: bool = False) -> _Ring:
+        """``phi``: angles, shape (k,) shared or (n, k) per case; ``mu``: scalar or (n,)."""
+        mu = np.asarray(mu, dtype=float)
+        if front:  # clearance >= 0: balls at 90 degrees or beyond can never carry load
+            keep = np.cos(phi) > 1e-14
+            phi, w = phi[keep], w[keep]
+        c, s = _snapped_cos(phi), _snapped_sin(phi)
+        theta = phi - (mu[..., None] if mu.ndim else mu)
+        u = 2.0 * np.sin((theta + h) / 2.0) * np.sin((theta - h) / 2.0) / np.cos(h)
+        top = np.argmax(c, axis=-1)
+        c_max = np.take_along_axis(c, top[..., None], -1)[..., 0] if c.ndim == 2 else c[top]
+        w_max = np.take_along_axis(w, top[..., None], -1)[..., 0] if w.ndim == 2 else w[top]
+        return _Ring(
+            c=c,
+            s=s,
+            u=np.maximum(u, 0.0),
+            w=w,
+            x0=np.cos(mu) / np.cos(h),
+            y0=np.sin(mu) / np.cos(h),
+            c_max=np.asarray(c_max, dtype=float),
+            w_max=np.asarray(w_max, dtype=float),
+        )
+
+    @classmethod
+    def symmetric(cls, z: int, half_pitch: bool, front: bool) -> _Ring:
+        """Half of a ring symmetric about the load line, each angle with its multiplicity.
+
+        ``front``: keep only the balls ahead of 90 degrees (enough when the clearance is >= 0).
+        """
+        j = np.arange(z)
+        phi = (j + (0.5 if half_pitch else 0.0)) * 2.0 * np.pi / z
+        phi = np.minimum(phi, 2.0 * np.pi - phi)  # fold the lower half onto the upper half
+        uniq, counts = np.unique(np.round(phi / np.pi * 2 * z) / (2 * z), return_counts=True)
+        h = np.pi / z if half_pitch else 0.0
+        return cls._build(uniq * np.pi, counts.astype(float), 0.0, h, front)
+
+    @classmethod
+    def general(cls, z: int, phi1: np.ndarray) -> _Ring:
+        """All z balls of each case, ball 1 at ``phi1`` in (0, 2 pi/z) [rad], shape (n,).
+
+        Balls 1 and z straddle the load line; the ring arrays are per case, shape (n, z).
+        """
+        pitch = 2.0 * np.pi / z
+        phi = phi1[:, None] + np.arange(z) * pitch
+        phi = np.where(phi > np.pi, phi - 2.0 * np.pi, phi)
+        return cls._build(phi, np.ones_like(phi), phi1 - pitch / 2.0, pitch / 2.0)
+
+
+def _rows(a: np.ndarray, idx: np.ndarray) -> np.ndarray:
+    """Rows ``idx`` of a per-case (2-D) ring array; a shared (1-D) ring array as it is."""
+    return a if a.ndim == 1 else a[idx]
+
+
+def _dot(q: np.ndarray, v: np.ndarray) -> np.ndarray:
+    """Sum over the balls of ``q * v`` where ``v`` is shared (1-D) or per case (2-D)."""
+    return q @ v if v.ndim == 1 else np.einsum("ij,ij->i", q, v)
+
+
+def _power_terms(delta: np.ndarray, m: np.ndarray) -> tuple[np.ndarray, np.ndarray]:
+    """Scaled ball load ``delta_+^m`` and its derivative ``m delta_+^(m-1)``."""
+    pos = np.maximum(delta, 0.0)
+    mm = m[:, None]
+    if np.all(m == 1.5):
+        root = np.sqrt(pos)
+        return pos * root, 1.5 * root
+    with np.errstate(divide="ignore", invalid="ignore"):
+        pm1 = np.where(pos > 0, pos ** (mm - 1.0), 0.0)
+    return pos * pm1, mm * pm1
+
+
+@dataclass
+class _Solved:
+    xi: np.ndarray
+    eta: np.ndarray
+    iterations: np.ndarray
+
+
+def _solve_symmetric(ring: _Ring, e_hat: np.ndarray, m: np.ndarray) -> _Solved:
+    """Solve ``sum w Q(delta) c = 1`` for the scaled approach ``xi`` with ``eta = 0``.
+
+    Bracketed Newton: the bracket [lo, hi] always holds the root; a Newton step leaving it is
+    replaced by bisection. For ``e >= 0`` the residual is convex and increasing in ``xi``, ``lo = 0``
+    and the one-ball bound ``hi`` hold the root, and Newton from ``hi`` descends monotonically.
+    """
+    c, u, w = ring.c, ring.u, ring.w
+    cw = c * w
+    c2w = c * cw
+
+    def residual(
+        xi: np.ndarray, eh: np.ndarray, mm: np.ndarray, idx: np.ndarray
+    ) -> tuple[np.ndarray, np.ndarray]:
+        delta = xi[:, None] * _rows(c, idx) - eh[:, None] * _rows(u, idx)
+        q, dq = _power_terms(delta, mm)
+        return _dot(q, _rows(cw, idx)) - 1.0, _dot(dq, _rows(c2w, idx))
+
+    n = e_hat.size
+    everyone = np.arange(n)
+    # one ball (pair) nearest the load carrying everything: an upper bound when e >= 0
+    hi = (1.0 / (ring.w_max * ring.c_max)) ** (1.0 / m) / ring.c_max
+    x0 = ring.x0
+    lo = np.zeros(n)
+    pre = np.nonzero(e_hat < 0)[0]
+    if pre.size:
+        # preload: widen the bracket until it holds the root, starting from the centred ring
+        hi[pre] = hi[pre] - e_hat[pre] * (x0[pre] if x0.ndim else x0)
+        for _ in range(400):
+            g_lo, _ = residual(lo[pre], e_hat[pre], m[pre], pre)
+            g_hi, _ = residual(hi[pre], e_hat[pre], m[pre], pre)
+            bad_lo, bad_hi = g_lo > 0, g_hi < 0
+            if not (bad_lo.any() or bad_hi.any()):
+                break
+            width = hi[pre] - lo[pre]
+            lo[pre] = np.where(bad_lo, lo[pre] - 2 * width, lo[pre])
+            hi[pre] = np.where(bad_hi, hi[pre] + 2 * width, hi[pre])
+    xi = hi.copy()
+    last = np.full(n, np.inf)
+    iterations = np.zeros(n, dtype=np.int64)
+    active = everyone
+    for it in range(1, MAX_ITERATIONS + 1):
+        x, lo_a, hi_a = xi[active], lo[active], hi[active]
+        g, dg = residual(x, e_hat[active], m[active], active)
+        lo_a = np.where(g < 0, x, lo_a)
+        hi_a = np.where(g > 0, x, hi_a)
+        with np.errstate(divide="ignore", invalid="ignore"):
+            new = x - g / dg
+        outside = ~((new > lo_a) & (new < hi_a))
+        new = np.where(outside, 0.5 * (lo_a + hi_a), new)
+        done = (np.abs(g) <= TOLERANCE) | (np.abs(new - x) <= 4e-16 * np.abs(x))
+        xi[active] = np.where(done, x, new)
+        last[active] = g
+        lo[active], hi[active] = lo_a, hi_a
+        iterations[active] = it
+        active = active[~done]
+        if active.size == 0:
+            break
+    # each case stopped at a point whose residual was evaluated: that residual is the proof
+    last[active] = np.inf
+    _check(last, "symmetric ring equilibrium", iterations, e_hat, m)
+    return _Solved(xi=xi, eta=np.zeros(n), iterations=iterations)
+
+
+def _solve_general(ring: _Ring, e_hat: np.ndarray, m: np.ndarray) -> _Solved:
+    """Minimise the scaled potential in (xi, eta) by damped Newton with an Armijo line search."""
+    c, s, u = ring.c, ring.s, ring.u
+    cc, cs, ss = c * c, c * s, s * s
+    first = _solve_symmetric(ring, e_hat, m)  # x-equilibrium alone, y = 0: the starting point
+    xi, eta = first.xi.copy(), np.zeros(e_hat.size)
+    iterations = first.iterations.copy()
+    mm = m
+
+    def state(
+        a: np.ndarray, b: np.ndarray, eh: np.ndarray, mv: np.ndarray, idx: np.ndarray
+    ) -> tuple[np.ndarray, ...]:
+        cr, sr = _rows(c, idx), _rows(s, idx)
+        delta = a[:, None] * cr + b[:, None] * sr - eh[:, None] * _rows(u, idx)
+        q, dq = _power_terms(delta, mv)
+        pos = np.maximum(delta, 0.0)
+        energy = (q * pos).sum(1) / (mv + 1.0) - a
+        gx, gy = _dot(q, cr) - 1.0, _dot(q, sr)
+        hxx, hxy = _dot(dq, _rows(cc, idx)), _dot(dq, _rows(cs, idx))
+        return energy, gx, gy, hxx, hxy, _dot(dq, _rows(ss, idx))
+
+    active = np.arange(e_hat.size)
+    for _ in range(MAX_ITERATIONS):
+        a, b, eh, mv = xi[active], eta[active], e_hat[active], mm[active]
+        energy, gx, gy, hxx, hxy, hyy = state(a, b, eh, mv, active)
+        gnorm = np.hypot(gx, gy)
+        done = gnorm <= TOLERANCE
+        reg = 1e-12 * (hxx + hyy) + 1e-300
+        hxx, hyy = hxx + reg, hyy + reg
+        det = hxx * hyy - hxy * hxy
+        dx = -(hyy * gx - hxy * gy) / det
+        dy = -(hxx * gy - hxy * gx) / det
+        slope = gx * dx + gy * dy
+        t = np.ones_like(a)
+        pending = ~done
+        for _ in range(80):
+            if not pending.any():
+                break
+            na, nb = a + t * dx, b + t * dy
+            e_new, ngx, ngy, *_ = state(na, nb, eh, mv, active)
+            ok = (e_new <= energy + 1e-4 * t * slope) | (np.hypot(ngx, ngy) < 0.5 * gnorm)
+            pending &= ~ok
+            t = np.where(pending, 0.5 * t, t)
+        small = np.hypot(t * dx, t * dy) <= 4e-16 * np.hypot(a, b) + 1e-300
+        xi[active] = np.where(done, a, a + t * dx)
+        eta[active] = np.where(done, b, b + t * dy)
+        iterations[active] += 1
+        active = active[~(done | small)]
+        if active.size == 0:
+            break
+    else:
+        raise ConvergenceError(
+            "ring equilibrium at a general cage angle",
+            MAX_ITERATIONS,
+            float("nan"),
+            {"e_hat": e_hat[active], "exponent": m[active]},
+        )
+    _, gx, gy, *_ = state(xi, eta, e_hat, mm, np.arange(e_hat.size))
+    _check(np.hypot(gx, gy), "ring equilibrium at a general cage angle", iterations, e_hat, m)
+    return _Solved(xi=xi, eta=eta, iterations=iterations)
+
+
+def _check(
+    residual: np.ndarray, solver: str, iterations: np.ndarray, e_hat: np.ndarray, m: np.ndarray
+) -> None:
+    """Raise ConvergenceError where the residual is not small; never return a silent wrong number."""
+    bad = ~(np.abs(residual) <= 1e-11)
+    if np.any(bad):
+        raise ConvergenceError(
+            solver,
+            int(iterations[bad].max()),
+            float(np.nanmax(np.abs(residual[bad]))),
+            {"e_hat": e_hat[bad], "exponent": m[bad]},
+        )
+
+
+def _store(
+    out: _Solved,
+    ring: _Ring,
+    idx: np.ndarray,
+    e_hat: np.ndarray,
+    m: np.ndarray,
+    symmetric: bool,
+    res: dict[str, np.ndarray],
+) -> None:
+    """Write one group's solution and the quantities derived from it into the output arrays."""
+    delta = out.xi[:, None] * ring.c
+    if not symmetric:
+        delta += out.eta[:, None] * ring.s
+    delta -= e_hat[:, None] * ring.u
+    np.maximum(delta, 0.0, out=delta)
+    _, dq = _power_terms(delta, m)
+    res["xi"][idx], res["eta"][idx] = out.xi, out.eta
+    res["x0"][idx], res["y0"][idx], res["iterations"][idx] = ring.x0, ring.y0, out.iterations
+    res["q_hat"][idx] = delta.max(axis=1) ** m
+    res["loaded"][idx] = _dot((delta > 0).astype(float), ring.w).round().astype(np.int64)
+    res["hess"][idx, 0] = _dot(dq, ring.w * ring.c * ring.c)
+    res["hess"][idx, 1] = 0.0 if symmetric else _dot(dq, ring.w * ring.c * ring.s)
+    res["hess"][idx, 2] = _dot(dq, ring.w * ring.s * ring.s)

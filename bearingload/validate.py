@@ -1,0 +1,48 @@
+"""Input checks shared by every model: one place that says what each parameter allows."""
+
+from __future__ import annotations
+
+import numpy as np
+
+from .errors import InputError
+
+
+def finite(name: str, value: object) -> np.ndarray:
+    """Return ``value`` as a float array, raising :class:`InputError` on NaN or infinity."""
+    arr = np.asarray(value, dtype=float)
+    if not np.all(np.isfinite(arr)):
+        raise InputError(name, "must be a finite number (got NaN or infinity)")
+    return arr
+
+
+def positive(name: str, value: object, unit: str) -> np.ndarray:
+    """Return ``value`` as a float array, raising unless every element is finite and > 0."""
+    arr = finite(name, value)
+    if np.any(arr <= 0):
+        raise InputError(name, f"must be greater than 0 {unit} (got {_worst(arr, arr <= 0)})")
+    return arr
+
+
+def ball_count(value: object, *, name: str = "balls", maximum: int = 100_000) -> np.ndarray:
+    """Return the number of balls as an int array; each must be a whole number 1 <= z <= maximum."""
+    arr = finite(name, value)
+    if np.any(arr != np.round(arr)):
+        raise InputError(name, f"must be a whole number (got {_worst(arr, arr != np.round(arr))})")
+    if np.any(arr < 1) or np.any(arr > maximum):
+        bad = (arr < 1) | (arr > maximum)
+        raise InputError(name, f"must be between 1 and {maximum} (got {_worst(arr, bad)})")
+    return arr.astype(np.int64)
+
+
+def exponent(value: object, *, name: str = "exponent") -> np.ndarray:
+    """Return the load-deflection exponent; 1 <= m <= 3 (3/2 balls, 10/9 rollers)."""
+    arr = finite(name, value)
+    if np.any((arr < 1) | (arr > 3)):
+        raise InputError(
+            name, f"must be between 1 and 3 (1.5 for balls, 10/9 for rollers; got {arr.flat[0]:g})"
+        )
+    return arr
+
+
+def _worst(arr: np.ndarray, bad: np.ndarray) -> str:
+    return f"{np.asarray(arr)[np.asarray(bad)].flat[0]:g}"
