@@ -1,0 +1,258 @@
+"""Tests of bearingload.catalog: row consistency, the papers' bearings, lookup and overrides."""
+
+from __future__ import annotations
+
+import math
+from importlib import resources
+
+import pytest
+
+from bearingload.catalog import (
+    DEFAULT_F_I,
+    DEFAULT_F_O,
+    BearingGeometry,
+    check_geometry,
+    entries,
+    find,
+    lookup,
+)
+from bearingload.designation import parse
+from bearingload.errors import InputError
+from bearingload.units import KGF
+
+ROWS = entries()
+WITH_GEOMETRY = [r for r in ROWS if r.has_geometry]
+
+
+def _id(row: BearingGeometry) -> str:
+    return f"{row.standard}-{row.designation}"
+
+
+def test_catalogue_size_and_standards() -> None:
+    assert len([r for r in ROWS if r.standard == "GOST"]) == 26
+    assert len([r for r in ROWS if r.standard == "ISO"]) == 74
+    assert len(WITH_GEOMETRY) >= 50
+    names = [(r.standard, r.designation) for r in ROWS]
+    assert len(names) == len(set(names))
+
+
+def test_csv_is_plain() -> None:
+    raw = resources.files("bearingload").joinpath("data/bearings.csv").read_bytes()
+    assert b"\r" not in raw
+    assert raw.endswith(b"\n")
+    assert raw.splitlines()[0] == (
+        b"designation,standard,d,D,B,ball_diameter,balls,pitch_diameter,C,C0,f0,f_i,f_o,"
+        b"source,notes"
+    )
+
+
+@pytest.mark.parametrize("row", ROWS, ids=_id)
+def test_row_consistency(row: BearingGeometry) -> None:
+    parsed = parse(row.designation)
+    assert parsed.standard == row.standard
+    assert parsed.base == row.designation
+    assert parsed.bore == row.d  # bore code agrees with the tabulated bore
+    assert 0 < row.d < row.D
+    assert 0 < row.B < row.D - row.d
+    assert row.C is not None and row.C0 is not None
+    assert 0 < row.C0 < row.C  # ball bearings: C0 below C in every source used
+    assert row.source.strip()
+    assert row.notes.strip()
+    assert 0.5 < row.f_i <= row.f_o < 0.6
+
+
+@pytest.mark.parametrize("row", WITH_GEOMETRY, ids=_id)
+def test_ball_set_fits(row: BearingGeometry) -> None:
+    z, dw, dm = row.balls, row.ball_diameter, row.pitch_diameter
+    assert z is not None and dw is not None and dm is not None
+    assert row.d < dm < row.D
+    assert dm == pytest.approx((row.d + row.D) / 2)  # every source used: d_m = (d + D)/2
+    assert dw < (row.D - row.d) / 2
+    assert z * dw < math.pi * dm
+    assert dw < dm * math.sin(math.pi / z)  # neighbouring balls do not overlap
+    check_geometry(row.d, row.D, z, dw, dm, row.f_i, row.f_o)
+
+
+GOST_AMBIGUOUS = {"209", "307"}
+
+
+@pytest.mark.parametrize("row", [r for r in WITH_GEOMETRY if r.standard == "GOST"], ids=_id)
+def test_gost_static_rating_rule(row: BearingGeometry) -> None:
+    # Old GOST / Palmgren rule C0 = 1.25 z Dw^2 [kgf, mm], used to derive z.
+    assert row.balls is not None and row.ball_diameter is not None and row.C0 is not None
+    ratio = row.C0 / (1.25 * KGF * row.balls * row.ball_diameter**2)
+    if row.designation in GOST_AMBIGUOUS:
+        assert "ambiguous" in row.notes
+        assert 0.95 < ratio < 1.05
+    else:
+        assert ratio == pytest.approx(1.0, abs=0.02)
+        if row.designation in ("208", "306"):  # z given by the papers
+            assert "seed 00" in row.source
+        else:
+            assert "z derived" in row.source and "z derived" in row.notes
+
+
+@pytest.mark.parametrize("row", [r for r in WITH_GEOMETRY if r.standard == "ISO"], ids=_id)
+def test_iso_ball_set_matches_nsk_fingerprint(row: BearingGeometry) -> None:
+    # C0r = f0 z Dw^2 (NSK catalogue); the accepted ball sets agree within 1 %.
+    assert row.f0 is not None and row.C0 is not None
+    assert row.balls is not None and row.ball_diameter is not None
+    assert row.f0 * row.balls * row.ball_diameter**2 == pytest.approx(row.C0, rel=0.01)
+
+
+def test_rows_without_ball_set_say_so() -> None:
+    for row in ROWS:
+        if not row.has_geometry:
+            assert row.balls is None and row.ball_diameter is None and row.pitch_diameter is None
+            assert "--balls" in row.notes
+
+
+def test_gost_and_iso_pairs_share_boundary_dimensions() -> None:
+    iso = {r.designation: r for r in ROWS if r.standard == "ISO"}
+    for row in (r for r in ROWS if r.standard == "GOST"):
+        other = iso[parse(row.designation).iso_name]
+        assert (row.d, row.D, row.B) == (other.d, other.D, other.B)
+
+
+def test_seed_000_bearing_306() -> None:
+    # Kuzmenko 2010 (seed 000), Table 2 "Данные по ГОСТ 8338-75":
+    # 306: d 30, D 72, Dw 12.3, z 8, C 2200 kgf, C0 1510 kgf; groove radius R2 = 1.03 R1
+    # (section 3.4: R1 = 6.15, R2 = 6.33 mm) -> f = 0.515.
+    b = lookup("306")
+    assert (b.standard, b.d, b.D, b.ball_diameter, b.balls) == ("GOST", 30.0, 72.0, 12.3, 8)
+    assert b.C == pytest.approx(2200 * KGF, rel=1e-12)
+    assert b.C0 == pytest.approx(1510 * KGF, rel=1e-12)
+    assert (b.f_i, b.f_o) == (0.515, 0.515)
+    assert b.pitch_diameter == 51.0
+    assert "seed 000" in b.source
+
+
+def test_seed_002_bearing_208() -> None:
+    # Kuzmenko & Sabadash 2014 (seed 002), section 2.1 item 2: bearing 208 with d 40, D 80,
+    # B 18 mm, C 2500 kgf, C_k 1810 kgf, ball diameter 12.7 mm, z 9.
+    b = lookup("208")
+    assert (b.d, b.D, b.B, b.ball_diameter, b.balls) == (40.0, 80.0, 18.0, 12.7, 9)
+    assert b.C == pytest.approx(2500 * KGF, rel=1e-12)
+    assert b.C0 == pytest.approx(1810 * KGF, rel=1e-12)
+    assert (b.f_i, b.f_o) == (DEFAULT_F_I, DEFAULT_F_O) == (0.52, 0.53)
+    assert "seed 002" in b.source
+
+
+def test_gost_and_iso_resolve_to_their_own_rows() -> None:
+    gost, iso = lookup("306"), lookup("6306")
+    assert (gost.standard, iso.standard) == ("GOST", "ISO")
+    # NSK-consistent ISO ball set 8 x 11.906 (z Dw^2 f0 = 15 kN = C0r) vs the paper's 12.3.
+    assert (iso.balls, iso.ball_diameter) == (8, 11.906)
+    assert iso.C == 26700.0 and iso.C0 == 15000.0  # NSK 6306: Cr 26.7 kN, C0r 15.0 kN
+    assert (iso.f_i, iso.f_o) == (0.52, 0.53)
+
+
+def test_default_conformity_everywhere_but_306() -> None:
+    odd = [r.designation for r in ROWS if (r.f_i, r.f_o) != (DEFAULT_F_I, DEFAULT_F_O)]
+    assert odd == ["306"]
+
+
+def test_lookup_keeps_the_parsed_designation() -> None:
+    b = lookup("6306-2RS1/C3")
+    assert b.designation == "6306"
+    assert b.parsed.clearance_class == "C3"
+    assert b.parsed.suffixes == ("2RS1", "C3")
+    g = lookup("75-313")
+    assert (g.designation, g.standard, g.parsed.clearance_class) == ("313", "GOST", "C3")
+    assert lookup("180306").designation == "306"
+
+
+def test_unknown_designation_explains_manual_geometry() -> None:
+    with pytest.raises(InputError) as info:
+        lookup("6807")
+    msg = str(info.value)
+    assert info.value.parameter == "bearing"
+    assert "not in the catalogue" in msg
+    assert "--balls Z --ball-diameter DW --pitch-diameter DM" in msg
+    assert "bearingload catalog" in msg
+
+
+def test_unknown_gost_points_to_iso_counterpart() -> None:
+    with pytest.raises(InputError, match="'6203' is in the catalogue"):
+        lookup("203")
+
+
+def test_unreadable_designation_explains_manual_geometry() -> None:
+    with pytest.raises(InputError, match="--balls Z --ball-diameter DW") as info:
+        find("bearing-x")
+    assert info.value.parameter == "bearing"
+    assert "accepted: ISO" in str(info.value)
+
+
+def test_row_without_ball_set() -> None:
+    row = find("6002")  # listed, no geometry
+    assert not row.has_geometry and row.C0 == 2830.0
+    with pytest.raises(InputError, match="give --balls and --ball-diameter"):
+        lookup("6002")
+    with pytest.raises(InputError, match="give --ball-diameter$"):
+        lookup("6002", balls=9)
+    with pytest.raises(InputError, match="GOST designation '304'"):
+        lookup("6304")
+
+
+def test_overrides() -> None:
+    b = lookup("6002", balls=9, ball_diameter=4.762)
+    assert (b.balls, b.ball_diameter, b.pitch_diameter) == (9, 4.762, 23.5)
+    assert b.overrides == ("balls", "ball_diameter")
+    c = lookup("306", balls=9, pitch_diameter=50.5, f_i=0.52, f_o=0.53)
+    assert (c.balls, c.ball_diameter, c.pitch_diameter, c.f_i, c.f_o) == (
+        9,
+        12.3,
+        50.5,
+        0.52,
+        0.53,
+    )
+    assert set(c.overrides) == {"balls", "pitch_diameter", "f_i", "f_o"}
+    assert lookup("306").overrides == ()
+
+
+@pytest.mark.parametrize(
+    ("kwargs", "parameter"),
+    [
+        ({"balls": 0}, "balls"),
+        ({"balls": 2.5}, "balls"),
+        ({"balls": 20}, "balls"),  # 20 x 12.3 mm balls overlap on d_m 51
+        ({"ball_diameter": 0.0}, "ball-diameter"),
+        ({"ball_diameter": 21.0}, "ball-diameter"),  # (D - d)/2 = 21
+        ({"pitch_diameter": 40.0}, "pitch-diameter"),  # below d + Dw = 42.3
+        ({"pitch_diameter": 60.0}, "pitch-diameter"),  # above D - Dw = 59.7
+        ({"f_i": 0.5}, "f_i"),
+        ({"f_o": 1.2}, "f_o"),
+    ],
+)
+def test_bad_overrides(kwargs: dict[str, float], parameter: str) -> None:
+    with pytest.raises(InputError) as info:
+        lookup("306", **kwargs)  # type: ignore[arg-type]
+    assert info.value.parameter == parameter
+
+
+def test_entries_filters() -> None:
+    assert [b.designation for b in entries(bore=30)] == [
+        "206",
+        "306",
+        "6006",
+        "6206",
+        "6306",
+        "6406",
+    ]
+    s63 = entries(series="63")
+    assert s63 and all(b.series == "63" for b in s63)
+    assert entries(series="3") == s63 == entries(series="63xx")
+    gost = entries(standard="gost")
+    assert len(gost) == 26 and all(b.standard == "GOST" for b in gost)
+    assert [b.designation for b in entries(series="2", standard="ISO", bore=40)] == ["6208"]
+    assert entries(bore=31) == []
+
+
+@pytest.mark.parametrize(
+    ("kwargs", "parameter"), [({"series": "65"}, "series"), ({"standard": "DIN"}, "standard")]
+)
+def test_entries_errors(kwargs: dict[str, str], parameter: str) -> None:
+    with pytest.raises(InputError) as info:
+        entries(**kwargs)  # type: ignore[arg-type]
+    assert info.value.parameter == parameter

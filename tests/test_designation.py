@@ -1,0 +1,137 @@
+"""Tests of bearingload.designation: ISO and GOST designations, prefixes, suffixes, errors."""
+
+from __future__ import annotations
+
+import dataclasses
+
+import pytest
+
+from bearingload.designation import Designation, bore_from_code, parse
+from bearingload.errors import InputError
+
+# text -> (standard, base, iso_name, gost_name, bore [mm], suffixes, clearance, group, accuracy)
+CASES = {
+    "306": ("GOST", "306", "6306", "306", 30.0, (), None, None, None),
+    "6306": ("ISO", "6306", "6306", "306", 30.0, (), None, None, None),
+    "208": ("GOST", "208", "6208", "208", 40.0, (), None, None, None),
+    "6306-2RS": ("ISO", "6306", "6306", "306", 30.0, ("2RS",), None, None, None),
+    "6306 2rs": ("ISO", "6306", "6306", "306", 30.0, ("2RS",), None, None, None),
+    "6306-2Z": ("ISO", "6306", "6306", "306", 30.0, ("2Z",), None, None, None),
+    "6306ZZ": ("ISO", "6306", "6306", "306", 30.0, ("ZZ",), None, None, None),
+    "6306C3": ("ISO", "6306", "6306", "306", 30.0, ("C3",), "C3", None, None),
+    "6306-C3": ("ISO", "6306", "6306", "306", 30.0, ("C3",), "C3", None, None),
+    "6306-2RS1/C3": ("ISO", "6306", "6306", "306", 30.0, ("2RS1", "C3"), "C3", None, None),
+    "6306 ZZ C4": ("ISO", "6306", "6306", "306", 30.0, ("ZZ", "C4"), "C4", None, None),
+    "6208ZZC2": ("ISO", "6208", "6208", "208", 40.0, ("ZZ", "C2"), "C2", None, None),
+    "6205-2RSH/C5": ("ISO", "6205", "6205", "205", 25.0, ("2RSH", "C5"), "C5", None, None),
+    "6205/CN": ("ISO", "6205", "6205", "205", 25.0, ("CN",), "CN", None, None),
+    "6306/P63": ("ISO", "6306", "6306", "306", 30.0, ("P63",), "C3", None, "P6"),
+    "6306-TN9C3": ("ISO", "6306", "6306", "306", 30.0, ("TN9", "C3"), "C3", None, None),
+    "6000": ("ISO", "6000", "6000", None, 10.0, (), None, None, None),
+    "6001": ("ISO", "6001", "6001", None, 12.0, (), None, None, None),
+    "6202": ("ISO", "6202", "6202", "202", 15.0, (), None, None, None),
+    "6303": ("ISO", "6303", "6303", "303", 17.0, (), None, None, None),
+    "6416": ("ISO", "6416", "6416", "416", 80.0, (), None, None, None),
+    "6807": ("ISO", "6807", "6807", None, 35.0, (), None, None, None),
+    # GOST prefixes: read leftwards from the dash, accuracy class then clearance group
+    # (aprom.by text, example 75-313ЕШ2: group 7, class 5, bearing 313).
+    "75-313": ("GOST", "313", "6313", "313", 65.0, (), "C3", "7", "5"),
+    "75-313ЕШ2": ("GOST", "313", "6313", "313", 65.0, ("EШ2",), "C3", "7", "5"),
+    "6-208": ("GOST", "208", "6208", "208", 40.0, (), None, None, "6"),
+    "60-208": ("GOST", "208", "6208", "208", 40.0, (), "C2", "6", "0"),
+    "0-306": ("GOST", "306", "6306", "306", 30.0, (), None, None, "0"),
+    "80-306": ("GOST", "306", "6306", "306", 30.0, (), "C4", "8", "0"),
+    "96-310": ("GOST", "310", "6310", "310", 50.0, (), "C5", "9", "6"),
+    "2М5-208": ("GOST", "208", "6208", "208", 40.0, (), "CN", "M", "5"),
+    "Н0-306": ("GOST", "306", "6306", "306", 30.0, (), None, "H", "0"),
+    "306-C3": ("GOST", "306", "6306", "306", 30.0, ("C3",), "C3", None, None),
+    "405": ("GOST", "405", "6405", "405", 25.0, (), None, None, None),
+}
+
+
+@pytest.mark.parametrize("text", sorted(CASES))
+def test_parse_table(text: str) -> None:
+    std, base, iso, gost, bore, suffixes, clr, group, acc = CASES[text]
+    d = parse(text)
+    assert isinstance(d, Designation)
+    assert d.text == text
+    assert (d.standard, d.base, d.iso_name, d.gost_name) == (std, base, iso, gost)
+    assert d.bore == bore
+    assert d.suffixes == suffixes
+    assert (d.clearance_class, d.clearance_group, d.accuracy_class) == (clr, group, acc)
+
+
+def test_series_and_bore_code() -> None:
+    d = parse("6313-2Z")
+    assert (d.series, d.bore_code) == ("63", "13")
+    assert parse("213").series == "62"
+    assert parse("6004").series == "60"
+
+
+def test_gost_long_form_keeps_design_code() -> None:
+    # GOST 3189 layout: design variant, type 0 (radial ball), series, bore.
+    d = parse("180306")
+    assert (d.standard, d.base, d.iso_name, d.design_code) == ("GOST", "306", "6306", "18")
+    assert parse("80306").design_code == "8"
+    assert parse("306").design_code is None
+
+
+@pytest.mark.parametrize(("cyrillic", "latin"), [("2М5-208", "2M5-208"), ("Н0-306", "H0-306")])
+def test_cyrillic_and_latin_prefix_letters_are_equal(cyrillic: str, latin: str) -> None:
+    assert "М" in cyrillic or "Н" in cyrillic  # really Cyrillic
+    assert dataclasses.replace(parse(cyrillic), text="") == dataclasses.replace(
+        parse(latin), text=""
+    )
+
+
+@pytest.mark.parametrize(
+    ("code", "bore"),
+    [("00", 10.0), ("01", 12.0), ("02", 15.0), ("03", 17.0), ("04", 20.0), ("06", 30.0)]
+    + [("20", 100.0), ("96", 480.0)],
+)
+def test_bore_code(code: str, bore: float) -> None:
+    assert bore_from_code(code) == bore
+
+
+@pytest.mark.parametrize("code", ["6", "abc", "123", ""])
+def test_bore_code_rejects(code: str) -> None:
+    with pytest.raises(InputError, match="bore_code"):
+        bore_from_code(code)
+
+
+@pytest.mark.parametrize(
+    ("text", "why"),
+    [
+        ("", "empty"),
+        ("   ", "empty"),
+        ("abc", "accepted: ISO"),
+        ("30", "accepted: ISO"),
+        ("63060", "accepted: ISO"),
+        ("6506", "accepted: ISO"),
+        ("106", "series 1 is not supported"),
+        ("6306.2RS", "unexpected character"),
+        ("6306_2RS", "unexpected character"),
+        ("6306-C3C4", "two clearance classes"),
+        ("6306/P6P5", "two accuracy classes"),
+        ("75-313/C4", "contradicts suffix C4"),
+        ("3-313", "prefix '3'"),
+        ("25-313", "clearance group 2 is not a group"),
+        ("5-313/P5", "accuracy class given twice"),
+        ("6-6306", "accepted: ISO"),
+    ],
+)
+def test_parse_errors(text: str, why: str) -> None:
+    with pytest.raises(InputError, match="bearing") as info:
+        parse(text)
+    assert info.value.parameter == "bearing"
+    assert why in str(info.value)
+    assert "accepted: ISO '6306'" in str(info.value)
+
+
+def test_error_is_a_value_error() -> None:
+    with pytest.raises(ValueError):
+        parse("not a bearing")
+
+
+def test_consistent_suffix_and_group_is_accepted() -> None:
+    assert parse("75-313/C3").clearance_class == "C3"
