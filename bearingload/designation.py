@@ -2,25 +2,28 @@
 
 Accepted forms
 --------------
-* ISO 15 / maker designations of single-row deep groove ball bearings: ``6`` + diameter
-  series (``0``, ``2``, ``3``, ``4``, ``8``, ``9``) + two-digit bore code, e.g. ``6306``, with optional
-  suffixes: seals and shields (``-2RS``, ``2RS1``, ``-2Z``, ``ZZ``, ``LLU`` ...), the clearance
-  class (``C2``, ``CN``, ``C3``, ``C4``, ``C5``, also ``C1``), the accuracy class (``P6``, ``P5``
-  ...), or both at once as SKF writes them (``P63`` = P6 + C3) [2]_. Separators ``-``, ``/``
-  and spaces are optional: ``6306-2RS1/C3``, ``6306 ZZ C3``, ``6306ZZC3``.
+* ISO 15 / maker designations of single-row deep groove ball bearings: ``6`` + diameter series
+  (``0``, ``2``, ``3``, ``4``, ``8``, ``9``) + two-digit bore code, e.g. ``6306``, with
+  optional suffixes: seals and shields (``-2RS``, ``2RS1``, ``-2Z``, ``ZZ``, ``LLU`` ...), the
+  clearance class (``C2``, ``CN``, ``C3``, ``C4``, ``C5``, also ``C1``), the accuracy class
+  (``P6``, ``P5`` ...), or both at once as SKF writes them (``P63`` = P6 + C3) [2]_.
+  Separators ``-``, ``/`` and spaces are optional: ``6306-2RS1/C3``, ``6306 ZZ C3``,
+  ``6306ZZC3``.
 * Russian designations of GOST 8338-75, which drop the leading 6 of the ISO name [1]_:
   a three-digit number whose first digit is the diameter series ``2``, ``3`` or ``4``
-  (``306`` = 6306). A five- or six-digit number is read with GOST 3189's layout
-  (design variant, type ``0`` = radial ball bearing, series, bore), e.g. ``180306``; the design
-  variant is kept in :attr:`Designation.design_code` and not interpreted.
+  (``306`` = 6306). A five- or six-digit number is read with the layout of Russian basic
+  designations [2]_ (design variant, type ``0`` = radial ball bearing, series, bore), e.g.
+  ``180306``; the design variant is kept in :attr:`Designation.design_code` and not
+  interpreted.
   An optional prefix before a dash carries, read from the dash leftwards, the accuracy class,
   the radial clearance group and the friction-moment row [2]_: ``75-313`` is accuracy class 5,
   clearance group 7 (= C3), bearing 313; ``6-208`` is accuracy class 6 with the normal group;
   ``0-306`` is class 0. GOST 24810-81 groups of these bearings: 6 = C2, none (or ``M``) = CN,
   7 = C3, 8 = C4, 9 = C5 [2]_.
 
-A four-digit ``6xxx`` is always read as ISO (under GOST 3189 the digit 6 in that place would
-mean an angular-contact bearing; the catalogues this package uses never need that reading).
+A four-digit ``6xxx`` is always read as ISO (in the Russian layout the digit 6 in that
+place would mean a bearing type other than the radial ball bearing; the catalogues this
+package uses never need that reading).
 Bore code: 00 = 10, 01 = 12, 02 = 15, 03 = 17 mm, otherwise d = 5 x code.
 
 References
@@ -29,7 +32,8 @@ References
    306 = 6306, 208 = 6208, 405 = 6405.
 .. [2] aprom.by, "Зазоры в подшипниках качения" (GOST designation scheme "category, friction
    moment, clearance group, accuracy - basic designation", example 75-313ЕШ2; GOST 24810 - ISO
-   clearance equivalents; SKF P63 = P6 + C3), text copy in the BearingsInfo collection, section 1.3.
+   clearance equivalents; SKF P63 = P6 + C3), text copy in the BearingsInfo collection,
+   section 1.3.
 
 >>> d = parse("75-313")
 >>> d.iso_name, d.bore, d.clearance_class, d.accuracy_class
