@@ -71,6 +71,11 @@ class LoadDistribution:
         Tangent stiffness ``dF/dd`` of the bearing in the (along, across) axes. [N/mm]
     iterations : ndarray of int
         Newton iterations spent on each case. [-]
+    offset : ndarray, shape (..., 2)
+        Displacement from the reference position where the balls nearest the load line just
+        touch; with it each ball's approach is computed without cancellation. [mm]
+    reference : ndarray, shape (..., 2)
+        ``(mu, h)``: the straddling balls nearest the load line sit at ``mu -+ h``. [rad]
     """
 
     balls: np.ndarray
@@ -86,6 +91,8 @@ class LoadDistribution:
     load_zone: np.ndarray
     stiffness_matrix: np.ndarray
     iterations: np.ndarray
+    offset: np.ndarray
+    reference: np.ndarray
 
     @property
     def k(self) -> np.ndarray:
@@ -116,15 +123,24 @@ class LoadDistribution:
         z = int(self._one(self.balls))
         return float(self._one(self.cage_angle)) + 2.0 * np.pi * np.arange(z) / z
 
+    def ball_approaches(self) -> np.ndarray:
+        """Approach ``delta_i`` of balls 1..z (negative: the gap left), for one case. [mm]
+
+        Computed as ``offset . n_i - e u_i`` from the reference position, so that a clearance
+        much larger than the elastic approach costs no digits.
+        """
+        phi = self.ball_angles()
+        mu, h = (float(v) for v in np.asarray(self.reference).reshape(2))
+        dx, dy = (float(v) for v in np.asarray(self.offset).reshape(2))
+        e = float(self._one(self.clearance)) / 2.0
+        theta = phi - mu
+        u = 2.0 * np.sin((theta + h) / 2.0) * np.sin((theta - h) / 2.0) / np.cos(h)
+        u = np.where(np.abs(u) < 1e-13, 0.0, u)
+        return dx * _snapped_cos(phi) + dy * _snapped_sin(phi) - e * u
+
     def ball_loads(self) -> np.ndarray:
         """Load ``Q_i`` of balls 1..z (ball 1 at the cage angle), for one case. [N]"""
-        phi = self.ball_angles()
-        e = float(self._one(self.clearance)) / 2.0
-        delta = (
-            float(self._one(self.x)) * _snapped_cos(phi)
-            + float(self._one(self.y)) * _snapped_sin(phi)
-            - e
-        )
+        delta = self.ball_approaches()
         m = float(self._one(self.exponent))
         return float(self._one(self.stiffness)) * np.maximum(delta, 0.0) ** m
 
@@ -138,7 +154,8 @@ class LoadDistribution:
     def __getitem__(self, index: Any) -> LoadDistribution:
         """The distribution of the cases selected by ``index`` (numpy indexing of the case shape)."""
         fields = {name: getattr(self, name)[index] for name in self.__dataclass_fields__}
-        fields["stiffness_matrix"] = self.stiffness_matrix[index]
+        for name in ("stiffness_matrix", "offset", "reference"):
+            fields[name] = getattr(self, name)[index]
         return LoadDistribution(**fields)
 
 
@@ -224,6 +241,7 @@ def solve(
         "q_hat": np.zeros(n),
         "loaded": np.zeros(n, dtype=np.int64),
         "hess": np.zeros((n, 3)),  # scaled Hxx, Hxy, Hyy
+        "reference": np.zeros((n, 2)),  # (mu, h) of the straddling balls
     }
 
     keys = z.astype(np.int64) * 3 + kind
@@ -285,6 +303,8 @@ def solve(
         load_zone=shaped(zone),
         stiffness_matrix=matrix.reshape(shape + (2, 2)),
         iterations=shaped(res["iterations"]),
+        offset=np.stack([xi * scale, eta * scale], axis=-1).reshape(shape + (2,)),
+        reference=res["reference"].reshape(shape + (2,)),
     )
 
 
@@ -317,6 +337,8 @@ class _Ring:
     y0: np.ndarray
     c_max: np.ndarray
     w_max: np.ndarray
+    mu: np.ndarray
+    h: float
 
     @staticmethod
     def _build(phi: np.ndarray, w: np.ndarray, mu: Any, h: float, front: bool = False) -> _Ring:
@@ -334,12 +356,15 @@ class _Ring:
         return _Ring(
             c=c,
             s=s,
-            u=np.maximum(u, 0.0),
+            # the straddling balls have u = 0 exactly; rounding must not leave e_hat * 1e-17
+            u=np.where(u < 1e-13, 0.0, u),
             w=w,
             x0=np.cos(mu) / np.cos(h),
             y0=np.sin(mu) / np.cos(h),
             c_max=np.asarray(c_max, dtype=float),
             w_max=np.asarray(w_max, dtype=float),
+            mu=mu,
+            h=h,
         )
 
     @classmethod
@@ -406,13 +431,24 @@ def _solve_symmetric(ring: _Ring, e_hat: np.ndarray, m: np.ndarray) -> _Solved:
     c, u, w = ring.c, ring.u, ring.w
     cw = c * w
     c2w = c * cw
+    abs_cw = np.abs(cw)
+    preloaded = bool(np.any(e_hat < 0))
 
     def residual(
         xi: np.ndarray, eh: np.ndarray, mm: np.ndarray, idx: np.ndarray
     ) -> tuple[np.ndarray, np.ndarray]:
+        """Force residual relative to the larger of the load and the ball forces, and its slope.
+
+        Under a heavy preload the ball forces dwarf the load and cancel; the residual is measured
+        against them, the only scale at which floating point can resolve it.
+        """
         delta = xi[:, None] * _rows(c, idx) - eh[:, None] * _rows(u, idx)
         q, dq = _power_terms(delta, mm)
-        return _dot(q, _rows(cw, idx)) - 1.0, _dot(dq, _rows(c2w, idx))
+        g, dg = _dot(q, _rows(cw, idx)) - 1.0, _dot(dq, _rows(c2w, idx))
+        if preloaded:
+            size = np.maximum(1.0, _dot(q, _rows(abs_cw, idx)))
+            return g / size, dg / size
+        return g, dg
 
     n = e_hat.size
     everyone = np.arange(n)
@@ -479,14 +515,15 @@ def _solve_general(ring: _Ring, e_hat: np.ndarray, m: np.ndarray) -> _Solved:
         energy = (q * pos).sum(1) / (mv + 1.0) - a
         gx, gy = _dot(q, cr) - 1.0, _dot(q, sr)
         hxx, hxy = _dot(dq, _rows(cc, idx)), _dot(dq, _rows(cs, idx))
-        return energy, gx, gy, hxx, hxy, _dot(dq, _rows(ss, idx))
+        size = np.maximum(1.0, q.sum(1))  # residual scale: the load or, under preload, the balls
+        return energy, gx, gy, hxx, hxy, _dot(dq, _rows(ss, idx)), size
 
     active = np.arange(e_hat.size)
     for _ in range(MAX_ITERATIONS):
         a, b, eh, mv = xi[active], eta[active], e_hat[active], mm[active]
-        energy, gx, gy, hxx, hxy, hyy = state(a, b, eh, mv, active)
+        energy, gx, gy, hxx, hxy, hyy, size = state(a, b, eh, mv, active)
         gnorm = np.hypot(gx, gy)
-        done = gnorm <= TOLERANCE
+        done = gnorm <= TOLERANCE * size
         reg = 1e-12 * (hxx + hyy) + 1e-300
         hxx, hyy = hxx + reg, hyy + reg
         det = hxx * hyy - hxy * hxy
@@ -517,8 +554,10 @@ def _solve_general(ring: _Ring, e_hat: np.ndarray, m: np.ndarray) -> _Solved:
             float("nan"),
             {"e_hat": e_hat[active], "exponent": m[active]},
         )
-    _, gx, gy, *_ = state(xi, eta, e_hat, mm, np.arange(e_hat.size))
-    _check(np.hypot(gx, gy), "ring equilibrium at a general cage angle", iterations, e_hat, m)
+    _, gx, gy, *_, size = state(xi, eta, e_hat, mm, np.arange(e_hat.size))
+    _check(
+        np.hypot(gx, gy) / size, "ring equilibrium at a general cage angle", iterations, e_hat, m
+    )
     return _Solved(xi=xi, eta=eta, iterations=iterations)
 
 
@@ -554,6 +593,7 @@ def _store(
     _, dq = _power_terms(delta, m)
     res["xi"][idx], res["eta"][idx] = out.xi, out.eta
     res["x0"][idx], res["y0"][idx], res["iterations"][idx] = ring.x0, ring.y0, out.iterations
+    res["reference"][idx, 0], res["reference"][idx, 1] = ring.mu, ring.h
     res["q_hat"][idx] = delta.max(axis=1) ** m
     res["loaded"][idx] = _dot((delta > 0).astype(float), ring.w).round().astype(np.int64)
     res["hess"][idx, 0] = _dot(dq, ring.w * ring.c * ring.c)

@@ -1,0 +1,38 @@
+# bearingload: every target creates its own environment (.venv) from pyproject.toml.
+PY ?= python3
+VENV := .venv
+BIN := $(VENV)/bin
+STAMP := $(VENV)/.installed
+
+.PHONY: run test lint tables bench clean
+
+$(STAMP): pyproject.toml
+	$(PY) -m venv $(VENV)
+	$(BIN)/python -m pip install --quiet --upgrade pip
+	$(BIN)/python -m pip install --quiet -e '.[test]'
+	touch $(STAMP)
+
+## make run: set up, regenerate tables/, print a worked example (bearing 306 of Kuzmenko 2010)
+run: $(STAMP)
+	$(BIN)/python -m bearingload.committed tables
+	$(BIN)/bearingload solve --balls 8 --load 300kgf --stiffness 4700kgf/mm^1.5 --clearance 20um
+	$(BIN)/bearingload table k --z-max 12
+
+## make test: set up, lint (ruff, mypy), run the whole test suite
+test: $(STAMP) lint
+	$(BIN)/python -m pytest
+
+lint: $(STAMP)
+	$(BIN)/ruff check bearingload tests benchmarks
+	$(BIN)/ruff format --check bearingload tests benchmarks
+	$(BIN)/mypy bearingload
+
+tables: $(STAMP)
+	$(BIN)/python -m bearingload.committed tables
+
+## make bench: vectorised solver against a per-case scipy brentq loop, same run
+bench: $(STAMP)
+	$(BIN)/python benchmarks/bench_solver.py
+
+clean:
+	rm -rf $(VENV) build *.egg-info .pytest_cache .mypy_cache .ruff_cache .hypothesis

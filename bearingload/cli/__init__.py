@@ -1,0 +1,61 @@
+"""The ``bearingload`` command: a thin click layer over the library.
+
+Commands live one per module; each builds its rows with the library and prints them through
+:mod:`bearingload.render`.
+"""
+
+from __future__ import annotations
+
+import click
+
+from .. import __version__
+from .options import CONTEXT
+
+
+@click.group(context_settings=CONTEXT)
+@click.version_option(__version__, "--version", prog_name="bearingload")
+def main() -> None:
+    """Load distribution among the balls (and rollers) of a radial rolling bearing.
+
+    Outer ring fixed, radial load on the inner ring, angles from the load line. Clearance is the
+    radial internal clearance G_r (total play, ISO 5753-1); the gap per side is G_r/2; negative
+    clearance is preload. Bare numbers are N, mm and N/mm^1.5; units may be written after a number
+    (300kgf, 20um, 4700kgf/mm^1.5).
+
+    \b
+    Examples:
+      bearingload solve --balls 8 --load 300kgf --stiffness 4700kgf/mm^1.5 --clearance 20um
+      bearingload table k
+      bearingload table kq --format csv -o kq.csv
+    """
+
+
+def _register() -> None:
+    from . import solve, table
+
+    main.add_command(solve.solve)
+    main.add_command(table.table)
+
+
+_register()
+
+
+def run(argv: list[str] | None = None) -> None:
+    """Console entry point: every error is one ``Error:`` line on stderr, never a traceback.
+
+    Exit status: 0 success, 2 bad input (usage), 1 other failures.
+    """
+    import sys
+
+    try:
+        main.main(args=argv, prog_name="bearingload", standalone_mode=False)
+    except click.exceptions.Exit as exc:
+        sys.exit(exc.exit_code)
+    except click.ClickException as exc:
+        click.echo(f"Error: {exc.format_message()}", err=True)
+        sys.exit(exc.exit_code)
+    except click.exceptions.Abort:
+        click.echo("Error: aborted", err=True)
+        sys.exit(1)
+    except BrokenPipeError:
+        sys.exit(1)

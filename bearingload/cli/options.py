@@ -1,0 +1,118 @@
+"""Shared pieces of the command line: quantity types, output options, error handling."""
+
+from __future__ import annotations
+
+import functools
+from collections.abc import Callable
+from typing import Any
+
+import click
+
+from ..errors import BearingloadError, InputError
+from ..units import BASE_UNIT, UNITS, parse_quantity
+
+CONTEXT = {"help_option_names": ["-h", "--help"], "max_content_width": 100}
+
+
+class Quantity(click.ParamType):
+    """A number with an optional unit suffix, converted to the package's internal unit."""
+
+    def __init__(self, kind: str) -> None:
+        self.kind = kind
+        self.name = f"{kind} [{BASE_UNIT[kind]}]"
+
+    def convert(
+        self, value: Any, param: click.Parameter | None, ctx: click.Context | None
+    ) -> float:
+        if isinstance(value, float):
+            return value
+        try:
+            return parse_quantity(value, self.kind, parameter=param.name if param else None)
+        except InputError as exc:
+            self.fail(str(exc).split(": ", 1)[-1], param, ctx)
+
+
+class CageAngle(click.ParamType):
+    """Cage angle in degrees, or ``half`` for half a pitch (the load between two balls)."""
+
+    name = "DEG|half"
+
+    def convert(self, value: Any, param: click.Parameter | None, ctx: click.Context | None) -> Any:
+        if value == "half" or isinstance(value, float):
+            return value
+        text = str(value).strip().lower().removesuffix("deg").removesuffix("°").strip()
+        if text == "half":
+            return "half"
+        try:
+            angle = float(text)
+        except ValueError:
+            self.fail(f"{value!r} is neither an angle in degrees nor 'half'", param, ctx)
+        if angle != angle or angle in (float("inf"), float("-inf")):
+            self.fail(f"{value!r} is not a finite angle", param, ctx)
+        return angle
+
+
+def units_help(kind: str) -> str:
+    return ", ".join(UNITS[kind])
+
+
+def output_options(func: Callable[..., Any]) -> Callable[..., Any]:
+    """``--format`` and ``-o/--output``, shared by every command that prints results."""
+    func = click.option(
+        "-o",
+        "--output",
+        type=click.Path(dir_okay=False, writable=True),
+        help="Write to FILE (whole or not at all) instead of standard output.",
+    )(func)
+    func = click.option(
+        "--format",
+        "fmt",
+        type=click.Choice(["table", "csv", "markdown", "json"]),
+        default="table",
+        show_default=True,
+        help="Output format; csv and json carry 10 significant digits.",
+    )(func)
+    return func
+
+
+def emit(text: str, output: str | None) -> None:
+    """Print ``text`` or write it atomically to ``output``."""
+    if output:
+        from ..render import write_atomic
+
+        try:
+            write_atomic(text, output)
+        except OSError as exc:
+            raise click.UsageError(
+                f"Invalid value for '-o' / '--output': cannot write {output!r}: {exc.strerror}"
+            ) from exc
+    else:
+        click.echo(text, nl=False)
+
+
+#: Library parameter names -> the option the user typed.
+OPTION_NAMES = {
+    "balls": "--balls",
+    "load": "--load",
+    "stiffness": "--stiffness",
+    "clearance": "--clearance",
+    "cage_angle": "--cage-angle",
+    "exponent": "--exponent",
+}
+
+
+def library_errors(func: Callable[..., Any]) -> Callable[..., Any]:
+    """Turn library exceptions into one ``Error:`` line with exit status 2 (bad input) or 1."""
+
+    @functools.wraps(func)
+    def wrapper(*args: Any, **kwargs: Any) -> Any:
+        try:
+            return func(*args, **kwargs)
+        except InputError as exc:
+            option = OPTION_NAMES.get(exc.parameter, exc.parameter)
+            message = str(exc).split(": ", 1)[-1]
+            raise click.UsageError(f"Invalid value for '{option}': {message}") from exc
+        except BearingloadError as exc:
+            raise click.ClickException(str(exc)) from exc
+
+    return wrapper

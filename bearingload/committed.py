@@ -1,0 +1,48 @@
+"""The tables committed under ``tables/``: one registry, written by ``make tables``, checked by tests.
+
+Each entry maps a file stem to a function returning the :class:`~bearingload.render.Table`;
+every table is written as CSV (for diffs and scripts) and Markdown (for people).
+
+Run ``python -m bearingload.committed DIR`` to (re)write them.
+"""
+
+from __future__ import annotations
+
+import os
+import sys
+from collections.abc import Callable
+
+from .render import Table, render, write_atomic
+
+
+def _registry() -> dict[str, Callable[[], Table]]:
+    from .tables import table_k, table_kq
+
+    return {
+        "table1_k_zero_clearance": lambda: table_k(30),
+        "table2_kq_zero_clearance": lambda: table_kq(30),
+    }
+
+
+def generate() -> dict[str, str]:
+    """File name -> content of every committed table."""
+    files = {}
+    for stem, build in _registry().items():
+        table = build()
+        files[f"{stem}.csv"] = render([table], "csv")
+        files[f"{stem}.md"] = render([table], "markdown")
+    return files
+
+
+def write_all(directory: str) -> list[str]:
+    """Write every committed table into ``directory``; returns the file names written."""
+    os.makedirs(directory, exist_ok=True)
+    files = generate()
+    for name, text in files.items():
+        write_atomic(text, os.path.join(directory, name))
+    return sorted(files)
+
+
+if __name__ == "__main__":  # pragma: no cover - exercised by `make tables`
+    for name in write_all(sys.argv[1] if len(sys.argv) > 1 else "tables"):
+        print(f"wrote tables/{name}")

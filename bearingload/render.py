@@ -1,0 +1,161 @@
+"""The one place that turns rows into text: aligned table, CSV, Markdown or JSON.
+
+Numbers are formatted here, never by the callers, so every output is identical from run to run
+(``\\n`` line ends, fixed column order) and CI can diff the committed tables against the code.
+Machine formats (csv, json) carry 10 significant digits; the human ``table`` and ``markdown``
+formats carry each column's display precision.
+"""
+
+from __future__ import annotations
+
+import json
+import math
+import os
+import tempfile
+from collections.abc import Sequence
+from dataclasses import dataclass
+from typing import Any
+
+FORMATS = ("table", "csv", "markdown", "json")
+MACHINE_DIGITS = 10
+
+
+@dataclass(frozen=True)
+class Column:
+    """One column: ``key`` in the row dicts, ``header`` shown to people, ``unit``, display ``digits``.
+
+    ``digits`` is the number of significant digits in the human formats (``None``: integers and text).
+    """
+
+    key: str
+    header: str
+    unit: str = ""
+    digits: int | None = None
+
+    def label(self) -> str:
+        return f"{self.header} [{self.unit}]" if self.unit else self.header
+
+
+@dataclass(frozen=True)
+class Table:
+    """A titled block of rows with its columns and optional notes (shown under human formats)."""
+
+    title: str
+    columns: Sequence[Column]
+    rows: Sequence[dict[str, Any]]
+    notes: Sequence[str] = ()
+
+
+def machine_number(value: Any) -> Any:
+    """A value as written to csv/json: floats at 10 significant digits, ints and text as they are."""
+    if isinstance(value, bool) or value is None or isinstance(value, str):
+        return value
+    if isinstance(value, int) or (hasattr(value, "dtype") and value.dtype.kind in "iu"):
+        return int(value)
+    v = float(value)
+    if not math.isfinite(v):
+        raise ValueError(f"refusing to write a non-finite number ({v})")
+    return float(f"{v:.{MACHINE_DIGITS}g}")
+
+
+def _human(value: Any, digits: int | None) -> str:
+    if isinstance(value, str):
+        return value
+    if digits is None or isinstance(value, int) or getattr(value, "dtype", None) == "int64":
+        return str(int(value))
+    v = float(value)
+    if v == 0:
+        return "0"
+    text = f"{v:.{digits}g}"
+    if "e" in text:
+        return text
+    # keep trailing zeros of the significant digits, e.g. 0.5430 not 0.543
+    decimals = max(digits - 1 - int(math.floor(math.log10(abs(float(text))))), 0)
+    return f"{v:.{decimals}f}"
+
+
+def _machine_text(value: Any) -> str:
+    v = machine_number(value)
+    return v if isinstance(v, str) else repr(v) if isinstance(v, float) else str(v)
+
+
+def render(tables: Sequence[Table], fmt: str, *, document: dict[str, Any] | None = None) -> str:
+    """Render tables in ``fmt`` (one of :data:`FORMATS`).
+
+    For ``json``, ``document`` (a dict) is written if given, else ``{title: [rows...]}``.
+    """
+    if fmt not in FORMATS:
+        raise ValueError(f"unknown format {fmt!r}; allowed: {', '.join(FORMATS)}")
+    if fmt == "json":
+        doc = document if document is not None else _table_documents(tables)
+        return json.dumps(_machine_tree(doc), indent=2, ensure_ascii=False) + "\n"
+    blocks = []
+    for t in tables:
+        if fmt == "csv":
+            lines = [",".join(c.key for c in t.columns)]
+            lines += [
+                ",".join(_csv_cell(_machine_text(r[c.key])) for c in t.columns) for r in t.rows
+            ]
+            blocks.append("\n".join(lines))
+            continue
+        from tabulate import tabulate  # heavy: imported only when a table is drawn
+
+        cells = [[_human(r[c.key], c.digits) for c in t.columns] for r in t.rows]
+        headers = [c.label() for c in t.columns]
+        align = ["right"] * len(headers)
+        if fmt == "markdown":
+            body = tabulate(cells, headers, tablefmt="pipe", colalign=align, disable_numparse=True)
+            text = f"### {t.title}\n\n{body}"
+            if t.notes:
+                text += "\n\n" + "\n".join(f"- {n}" for n in t.notes)
+        else:
+            body = tabulate(
+                cells, headers, tablefmt="simple", colalign=align, disable_numparse=True
+            )
+            text = f"{t.title}\n\n{body}"
+            if t.notes:
+                text += "\n\n" + "\n".join(t.notes)
+        blocks.append(text)
+    return "\n\n".join(blocks) + "\n"
+
+
+def _table_documents(tables: Sequence[Table]) -> Any:
+    docs = [
+        {
+            "title": t.title,
+            "units": {c.key: c.unit for c in t.columns if c.unit},
+            "rows": list(t.rows),
+        }
+        for t in tables
+    ]
+    return docs[0] if len(docs) == 1 else docs
+
+
+def _csv_cell(text: str) -> str:
+    if any(ch in text for ch in ',"\n'):
+        return '"' + text.replace('"', '""') + '"'
+    return text
+
+
+def _machine_tree(obj: Any) -> Any:
+    if isinstance(obj, dict):
+        return {k: _machine_tree(v) for k, v in obj.items()}
+    if isinstance(obj, (list, tuple)):
+        return [_machine_tree(v) for v in obj]
+    if hasattr(obj, "tolist") and getattr(obj, "ndim", 0) > 0:
+        return [_machine_tree(v) for v in obj.tolist()]
+    return machine_number(obj)
+
+
+def write_atomic(text: str, path: str) -> None:
+    """Write ``text`` to ``path`` whole or not at all (temporary file, then rename)."""
+    directory = os.path.dirname(os.path.abspath(path))
+    fd, tmp = tempfile.mkstemp(prefix=".bearingload-", dir=directory)
+    try:
+        with os.fdopen(fd, "w", encoding="utf-8", newline="\n") as fh:
+            fh.write(text)
+        os.replace(tmp, path)
+    except BaseException:
+        if os.path.exists(tmp):
+            os.unlink(tmp)
+        raise
