@@ -31,6 +31,7 @@ class Column:
     header: str
     unit: str = ""
     digits: int | None = None
+    align: str = "right"
 
     def label(self) -> str:
         return f"{self.header} [{self.unit}]" if self.unit else self.header
@@ -102,7 +103,7 @@ def render(tables: Sequence[Table], fmt: str, *, document: dict[str, Any] | None
 
         cells = [[_human(r[c.key], c.digits) for c in t.columns] for r in t.rows]
         headers = [c.label() for c in t.columns]
-        align = ["right"] * len(headers)
+        align = [c.align for c in t.columns]
         if fmt == "markdown":
             body = tabulate(cells, headers, tablefmt="pipe", colalign=align, disable_numparse=True)
             text = f"### {t.title}\n\n{body}"

@@ -1,0 +1,210 @@
+"""The command line of the core: solve, table, formats, errors, help, committed tables, start-up."""
+
+from __future__ import annotations
+
+import csv
+import io
+import json
+import os
+import subprocess
+import sys
+from pathlib import Path
+
+import click
+import pytest
+from click.testing import CliRunner
+
+from bearingload import committed
+from bearingload.cli import main, run
+from bearingload.equilibrium import solve
+from bearingload.units import KGF
+
+ROOT = Path(__file__).resolve().parents[1]
+
+
+def invoke(*args: str):
+    return CliRunner().invoke(main, list(args), catch_exceptions=False)
+
+
+def run_cli(*args: str) -> subprocess.CompletedProcess:
+    """The installed entry point in a fresh interpreter, as a user runs it."""
+    return subprocess.run(
+        [sys.executable, "-m", "bearingload", *args], capture_output=True, text=True, timeout=60
+    )
+
+
+def test_solve_306_summary_lines():
+    out = invoke(
+        "solve", "-z", "8", "--load", "300kgf", "--stiffness", "4700kgf/mm^1.5", "--clearance", "20um"
+    )
+    assert out.exit_code == 0
+    r = solve(8, 300 * KGF, 4700 * KGF, 0.02)
+    text = out.output
+    assert "z = 8, F_r = 2941.99 N (300 kgf)" in text
+    assert "G_r = 20 µm (gap per side 10 µm)" in text
+    assert f"{float(r.q_max) / KGF:.6g}" in text  # 167.310 kgf
+    assert "heaviest ball load Q_max              167.310  kgf" in text
+    assert "load zone half-angle                  85.1474  °" in text
+    lines = [ln for ln in text.splitlines() if ln.strip().startswith(("1 ", "2 ", "8 "))]
+    assert len(lines) == 3
+
+
+def test_solve_json_keys_and_values():
+    out = invoke("solve", "-z", "9", "-F", "5kN", "-K", "3.8e5", "-G", "15um", "--format", "json")
+    doc = json.loads(out.output)
+    for key in (
+        "k",
+        "K_Q",
+        "q_max",
+        "deflection",
+        "loaded_balls",
+        "load_zone_deg",
+        "ball_loads",
+        "stiffness_radial",
+        "clearance",
+    ):
+        assert key in doc, key
+    r = solve(9, 5000.0, 3.8e5, 0.015)
+    assert doc["q_max"] == pytest.approx(float(r.q_max), rel=1e-9)
+    assert doc["deflection"] == pytest.approx(float(r.x), rel=1e-9)
+    assert doc["clearance"] == 0.015
+    assert len(doc["ball_loads"]) == 9
+    assert doc["ball_loads"][0] == pytest.approx(doc["q_max"], rel=1e-9)
+    assert sum(q * __import__("math").cos(__import__("math").radians(a))
+               for q, a in zip(doc["ball_loads"], doc["ball_angles_deg"], strict=True)) == pytest.approx(5000.0, rel=1e-8)  # fmt: skip
+
+
+def test_solve_half_pitch_and_preload():
+    out = invoke("solve", "-z", "12", "-F", "5kN", "-K", "3.8e5", "-G", "-50um", "--cage-angle", "half")
+    assert out.exit_code == 0
+    assert "cage angle 15°" in out.output
+    assert "balls carrying load                        12" in out.output
+
+
+def test_csv_is_machine_readable_and_deterministic():
+    a = invoke("table", "k", "--format", "csv").output
+    b = invoke("table", "k", "--format", "csv").output
+    assert a == b
+    assert "\r" not in a
+    rows = list(csv.DictReader(io.StringIO(a)))
+    assert [int(r["z"]) for r in rows] == list(range(1, 31))
+    assert float(rows[7]["k"]) == pytest.approx(0.5432136169, abs=1e-10)  # 10 significant digits
+
+
+@pytest.mark.parametrize("fmt", ["table", "csv", "markdown", "json"])
+def test_every_format_of_table_kq(fmt):
+    out = invoke("table", "kq", "--format", fmt, "--z-max", "12")
+    assert out.exit_code == 0
+    assert "2.1926" in out.output or "2.192604" in out.output
+
+
+def test_table_under_conditions_changes_with_clearance():
+    base = invoke("table", "k", "--format", "json", "--z-max", "10").output
+    worn = invoke(
+        "table", "k", "--format", "json", "--z-max", "10", "--clearance", "100um",
+        "--load", "300kgf", "--stiffness", "4700kgf/mm^1.5",
+    ).output  # fmt: skip
+    k0 = {r["z"]: r["k"] for r in json.loads(base)["rows"]}
+    k1 = {r["z"]: r["k"] for r in json.loads(worn)["rows"]}
+    assert k1[8] == pytest.approx(float(solve(8, 300 * KGF, 4700 * KGF, 0.1).k), rel=1e-9)
+    assert all(k1[z] >= k0[z] for z in k0)
+
+
+def test_output_file_written_whole(tmp_path):
+    target = tmp_path / "k.csv"
+    out = invoke("table", "k", "--format", "csv", "-o", str(target))
+    assert out.exit_code == 0 and out.output == ""
+    assert target.read_text() == invoke("table", "k", "--format", "csv").output
+    assert [p.name for p in tmp_path.iterdir()] == ["k.csv"]  # no temporary file left
+
+
+def test_output_not_written_on_error(tmp_path):
+    target = tmp_path / "bad.csv"
+    r = run_cli("table", "k", "--load", "-1", "-o", str(target))
+    assert r.returncode == 2
+    assert not target.exists()
+
+
+@pytest.mark.parametrize(
+    "args, message",
+    [
+        (["solve", "-z", "0", "-F", "1", "-K", "1"], "Invalid value for '--balls'"),
+        (["solve", "-z", "8", "-F", "-300", "-K", "1"], "Invalid value for '--load': must be greater than 0 N"),
+        (["solve", "-z", "8", "-F", "nan", "-K", "1"], "Invalid value for '--load'"),
+        (["solve", "-z", "8", "-F", "3parsec", "-K", "1"], "unknown unit 'parsec'"),
+        (["solve", "-z", "8", "-F", "1", "-K", "1", "-G", "5 furlong"], "Invalid value for '--clearance'"),
+        (["solve", "-z", "8", "-F", "1", "-K", "0"], "Invalid value for '--stiffness'"),
+        (["solve", "-z", "8", "-F", "1", "-K", "1", "--format", "xml"], "Invalid value for '--format'"),
+        (["solve", "-z", "8", "-F", "1", "-K", "1", "--cage-angle", "north"], "Invalid value for '--cage-angle'"),
+        (["solve", "-z", "2", "-F", "1", "-K", "1", "--cage-angle", "half"], "a ball must sit on the load line"),
+        (["solve", "-z", "8", "-F", "1", "-K", "1", "-m", "0.2"], "Invalid value for '--exponent'"),
+        (["solve", "-z", "8", "-K", "1"], "Missing option '--load'"),
+        (["table", "xyz"], "Invalid value for '{k|kq}'"),
+        (["table", "k", "--z-max", "0"], "Invalid value for '--z-max'"),
+    ],
+)  # fmt: skip
+def test_bad_input_is_one_error_line_exit_2(args, message):
+    r = run_cli(*args)
+    assert r.returncode == 2, r.stderr
+    assert r.stdout == ""
+    lines = r.stderr.strip().splitlines()
+    assert len(lines) == 1, r.stderr
+    assert lines[0].startswith("Error: ")
+    assert message in lines[0]
+    assert "Traceback" not in r.stderr
+
+
+def _commands(group: click.Group, prefix: tuple[str, ...] = ()):
+    for name, cmd in group.commands.items():
+        yield prefix + (name,), cmd
+        if isinstance(cmd, click.Group):
+            yield from _commands(cmd, prefix + (name,))
+
+
+def test_every_command_has_help_with_examples():
+    for path, cmd in _commands(main):
+        out = invoke(*path, "--help")
+        assert out.exit_code == 0
+        assert "Usage:" in out.output
+        assert "Example" in out.output, path
+        assert cmd.help and len(cmd.help) > 40, path
+        assert invoke(*path, "-h").output == out.output
+
+
+def test_version():
+    out = invoke("--version")
+    assert out.output.startswith("bearingload, version ")
+
+
+def test_run_success_and_failure(capsys):
+    run(["table", "k", "--z-max", "3", "--format", "csv"])
+    assert capsys.readouterr().out.startswith("z,n,k\n1,1,1.0")
+    with pytest.raises(SystemExit) as info:
+        run(["solve", "-z", "8", "-F", "0", "-K", "1"])
+    assert info.value.code == 2
+    err = capsys.readouterr().err
+    assert err.startswith("Error: Invalid value for '--load'") and err.count("\n") == 1
+
+
+def test_committed_tables_match_the_code():
+    """tables/ is exactly what the code generates: the files, their names, their bytes."""
+    generated = committed.generate()
+    on_disk = {p.name: p.read_text(encoding="utf-8") for p in (ROOT / "tables").iterdir()}
+    assert sorted(on_disk) == sorted(generated), "run `make tables` and commit the result"
+    for name, text in generated.items():
+        assert on_disk[name] == text, f"tables/{name} is stale: run `make tables`"
+
+
+def test_terminal_calculation_imports_no_scipy():
+    code = (
+        "import sys\n"
+        "from bearingload.cli import main\n"
+        "main.main(args=['table', 'k'], standalone_mode=False)\n"
+        "main.main(args=['solve', '-z', '8', '-F', '1', '-K', '1'], standalone_mode=False)\n"
+        "print('scipy' in sys.modules, 'tabulate' in sys.modules)\n"
+    )
+    r = subprocess.run(
+        [sys.executable, "-c", code], capture_output=True, text=True, timeout=60, env=os.environ
+    )
+    assert r.returncode == 0, r.stderr
+    assert r.stdout.strip().splitlines()[-1] == "False True"
