@@ -1,6 +1,7 @@
 """The one place that turns rows into text: aligned table, CSV, Markdown or JSON.
 
-Numbers are formatted here, never by the callers, so every output is identical from run to run
+Numbers are formatted and columns aligned here (no tabulate: its import alone costs more
+than the whole terminal calculation), never by the callers, so every output is identical from run to run
 (``\\n`` line ends, fixed column order) and CI can diff the committed tables against the code.
 Machine formats (csv, json) carry 10 significant digits; the human ``table`` and ``markdown``
 formats carry each column's display precision.
@@ -99,25 +100,46 @@ def render(tables: Sequence[Table], fmt: str, *, document: dict[str, Any] | None
             ]
             blocks.append("\n".join(lines))
             continue
-        from tabulate import tabulate  # heavy: imported only when a table is drawn
-
         cells = [[_human(r[c.key], c.digits) for c in t.columns] for r in t.rows]
         headers = [c.label() for c in t.columns]
         align = [c.align for c in t.columns]
         if fmt == "markdown":
-            body = tabulate(cells, headers, tablefmt="pipe", colalign=align, disable_numparse=True)
-            text = f"### {t.title}\n\n{body}"
+            text = f"### {t.title}\n\n{_grid(cells, headers, align, markdown=True)}"
             if t.notes:
                 text += "\n\n" + "\n".join(f"- {n}" for n in t.notes)
         else:
-            body = tabulate(
-                cells, headers, tablefmt="simple", colalign=align, disable_numparse=True
-            )
-            text = f"{t.title}\n\n{body}"
+            text = f"{t.title}\n\n{_grid(cells, headers, align, markdown=False)}"
             if t.notes:
                 text += "\n\n" + "\n".join(t.notes)
         blocks.append(text)
     return "\n\n".join(blocks) + "\n"
+
+
+def _grid(cells: list[list[str]], headers: list[str], align: list[str], *, markdown: bool) -> str:
+    """Aligned columns: a plain table with a dashed rule, or a Markdown pipe table."""
+    widths = [max([len(h)] + [len(row[i]) for row in cells]) for i, h in enumerate(headers)]
+    if markdown:
+        widths = [max(w, 3) for w in widths]
+
+    def line(values: list[str]) -> str:
+        parts = [
+            v.rjust(w) if a == "right" else v.ljust(w)
+            for v, w, a in zip(values, widths, align, strict=True)
+        ]
+        return ("| " + " | ".join(parts) + " |") if markdown else "  ".join(parts).rstrip()
+
+    if markdown:
+        rule = (
+            "|"
+            + "|".join(
+                ("-" * (w + 1) + ":") if a == "right" else (":" + "-" * (w + 1))
+                for w, a in zip(widths, align, strict=True)
+            )
+            + "|"
+        )
+    else:
+        rule = "  ".join("-" * w for w in widths)
+    return "\n".join([line(headers), rule] + [line(row) for row in cells])
 
 
 def _table_documents(tables: Sequence[Table]) -> Any:

@@ -207,4 +207,4 @@ def test_terminal_calculation_imports_no_scipy():
         [sys.executable, "-c", code], capture_output=True, text=True, timeout=60, env=os.environ
     )
     assert r.returncode == 0, r.stderr
-    assert r.stdout.strip().splitlines()[-1] == "False True"
+    assert r.stdout.strip().splitlines()[-1] == "False False"
