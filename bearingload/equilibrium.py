@@ -244,21 +244,19 @@ def solve(
         "reference": np.zeros((n, 2)),  # (mu, h) of the straddling balls
     }
 
-    keys = z.astype(np.int64) * 3 + kind
-    for key in np.unique(keys):
-        idx = np.nonzero(keys == key)[0]
-        zz, kd = int(key // 3), int(key % 3)
+    # one group per (z, cage kind, clearance sign): the cases of a group share their ring
+    keys = (z.astype(np.int64) * 3 + kind) * 2 + (e_hat < 0)
+    order = np.argsort(keys, kind="stable")
+    group_keys, starts = np.unique(keys[order], return_index=True)
+    for key, idx in zip(group_keys, np.split(order, starts[1:]), strict=True):
+        zz, kd, preload = int(key // 6), int(key // 2 % 3), bool(key % 2)
+        eh, mm = e_hat[idx], m[idx]
         if kd == 2:
             ring = _Ring.general(zz, frac[idx] * 2.0 * np.pi / zz)
-            out = _solve_general(ring, e_hat[idx], m[idx])
-            _store(out, ring, idx, e_hat[idx], m[idx], False, res)
+            _store(_solve_general(ring, eh, mm), ring, idx, eh, mm, False, res)
         else:
-            for front in (True, False):
-                j = idx[(e_hat[idx] >= 0) == front]
-                if j.size:
-                    ring = _Ring.symmetric(zz, half_pitch=kd == 1, front=front)
-                    out = _solve_symmetric(ring, e_hat[j], m[j])
-                    _store(out, ring, j, e_hat[j], m[j], True, res)
+            ring = _Ring.symmetric(zz, half_pitch=kd == 1, front=not preload)
+            _store(_solve_symmetric(ring, eh, mm), ring, idx, eh, mm, True, res)
 
     xi, eta, hess = res["xi"], res["eta"], res["hess"]
     x0, y0 = res["x0"], res["y0"]
@@ -470,6 +468,17 @@ def _solve_symmetric(ring: _Ring, e_hat: np.ndarray, m: np.ndarray) -> _Solved:
             lo[pre] = np.where(bad_lo, lo[pre] - 2 * width, lo[pre])
             hi[pre] = np.where(bad_hi, hi[pre] + 2 * width, hi[pre])
     xi = hi.copy()
+    if c.ndim == 1 and n > 1 and np.all(m == m[0]):
+        # start on the tangent of xi(e_hat) at zero clearance, below the one-ball bound: xi is
+        # concave in e_hat >= 0, so the start lies above the root and Newton descends at once
+        front = c > 0
+        m0 = float(m[0])
+        sum_c = float(np.sum(w[front] * c[front] ** (m0 + 1.0)))
+        xi0 = sum_c ** (-1.0 / m0)
+        slope = float(np.sum(w[front] * c[front] ** m0 * u[front])) / sum_c
+        xi = np.where(e_hat >= 0, np.minimum(xi0 + slope * e_hat, hi), hi)
+        if not preloaded:
+            return _newton_convex(ring, e_hat, m0, xi)
     last = np.full(n, np.inf)
     iterations = np.zeros(n, dtype=np.int64)
     active = everyone
@@ -493,6 +502,44 @@ def _solve_symmetric(ring: _Ring, e_hat: np.ndarray, m: np.ndarray) -> _Solved:
     # each case stopped at a point whose residual was evaluated: that residual is the proof
     last[active] = np.inf
     _check(last, "symmetric ring equilibrium", iterations, e_hat, m)
+    return _Solved(xi=xi, eta=np.zeros(n), iterations=iterations)
+
+
+def _newton_convex(ring: _Ring, e_hat: np.ndarray, m: float, start: np.ndarray) -> _Solved:
+    """Plain Newton for a shared ring with clearance >= 0: the fast path of the symmetric solver.
+
+    With ``e >= 0`` only balls ahead of 90° are in the ring, the residual is convex and increasing
+    in ``xi`` and its slope is positive wherever ``xi > 0`` (the reference ball, ``u = 0``, is
+    then loaded), so Newton converges from any positive start, monotonically after the first step.
+    """
+    c, u = ring.c, ring.u
+    cw, c2w = c * ring.w, c * c * ring.w
+    xi = start.copy()
+    n = xi.size
+    last = np.full(n, np.inf)
+    iterations = np.zeros(n, dtype=np.int64)
+    active = np.arange(n)
+    for it in range(1, MAX_ITERATIONS + 1):
+        xa = xi[active]
+        delta = xa[:, None] * c - e_hat[active][:, None] * u
+        np.maximum(delta, 0.0, out=delta)
+        if m == 1.5:
+            root = np.sqrt(delta)
+            g = (delta * root) @ cw - 1.0
+            dg = 1.5 * (root @ c2w)
+        else:
+            q, dq = _power_terms(delta, np.full(xa.size, m))
+            g, dg = q @ cw - 1.0, dq @ c2w
+        step = g / dg
+        done = (np.abs(g) <= TOLERANCE) | (np.abs(step) <= 4e-16 * xa)
+        xi[active] = np.where(done, xa, xa - step)
+        last[active] = g
+        iterations[active] = it
+        active = active[~done]
+        if active.size == 0:
+            break
+    last[active] = np.inf
+    _check(last, "symmetric ring equilibrium", iterations, e_hat, np.full(n, m))
     return _Solved(xi=xi, eta=np.zeros(n), iterations=iterations)
 
 
@@ -589,13 +636,22 @@ def _store(
     if not symmetric:
         delta += out.eta[:, None] * ring.s
     delta -= e_hat[:, None] * ring.u
+    loaded = delta > 0
     np.maximum(delta, 0.0, out=delta)
-    _, dq = _power_terms(delta, m)
+    if np.all(m == 1.5):
+        dq = 1.5 * np.sqrt(delta)
+    else:
+        _, dq = _power_terms(delta, m)
+    if symmetric:  # the reference ball (u = 0, largest cos) carries the most
+        q_hat = (out.xi * ring.c_max) ** m
+    else:
+        q_hat = delta.max(axis=1) ** m
     res["xi"][idx], res["eta"][idx] = out.xi, out.eta
     res["x0"][idx], res["y0"][idx], res["iterations"][idx] = ring.x0, ring.y0, out.iterations
     res["reference"][idx, 0], res["reference"][idx, 1] = ring.mu, ring.h
-    res["q_hat"][idx] = delta.max(axis=1) ** m
-    res["loaded"][idx] = _dot((delta > 0).astype(float), ring.w).round().astype(np.int64)
+    res["q_hat"][idx] = q_hat
+    res["loaded"][idx] = np.rint(_dot(loaded.astype(float), ring.w))
     res["hess"][idx, 0] = _dot(dq, ring.w * ring.c * ring.c)
-    res["hess"][idx, 1] = 0.0 if symmetric else _dot(dq, ring.w * ring.c * ring.s)
+    if not symmetric:
+        res["hess"][idx, 1] = _dot(dq, ring.w * ring.c * ring.s)
     res["hess"][idx, 2] = _dot(dq, ring.w * ring.s * ring.s)
