@@ -35,7 +35,15 @@ def run_cli(*args: str) -> subprocess.CompletedProcess:
 
 def test_solve_306_summary_lines():
     out = invoke(
-        "solve", "-z", "8", "--load", "300kgf", "--stiffness", "4700kgf/mm^1.5", "--clearance", "20um"
+        "solve",
+        "-z",
+        "8",
+        "--load",
+        "300kgf",
+        "--stiffness",
+        "4700kgf/mm^1.5",
+        "--clearance",
+        "20um",
     )
     assert out.exit_code == 0
     r = solve(8, 300 * KGF, 4700 * KGF, 0.02)
@@ -75,7 +83,9 @@ def test_solve_json_keys_and_values():
 
 
 def test_solve_half_pitch_and_preload():
-    out = invoke("solve", "-z", "12", "-F", "5kN", "-K", "3.8e5", "-G", "-50um", "--cage-angle", "half")
+    out = invoke(
+        "solve", "-z", "12", "-F", "5kN", "-K", "3.8e5", "-G", "-50um", "--cage-angle", "half"
+    )
     assert out.exit_code == 0
     assert "cage angle 15°" in out.output
     assert "balls carrying load                        12" in out.output
