@@ -16,11 +16,17 @@ from .render import Table, render, write_atomic
 
 
 def _registry() -> dict[str, Callable[[], Table]]:
+    from .bearing_tables import kuzmenko2010_306_table
     from .tables import table_k, table_kq
 
     return {
         "table1_k_zero_clearance": lambda: table_k(30),
         "table2_kq_zero_clearance": lambda: table_kq(30),
+        # bearing 306 at the conditions of Kuzmenko (2010) with the exact Hertz stiffness
+        "table1_k_306_300kgf_gr20um": lambda: kuzmenko2010_306_table("k", 0.020),
+        "table2_kq_306_300kgf_gr20um": lambda: kuzmenko2010_306_table("kq", 0.020),
+        "table1_k_306_300kgf_gr100um": lambda: kuzmenko2010_306_table("k", 0.100),
+        "table2_kq_306_300kgf_gr100um": lambda: kuzmenko2010_306_table("kq", 0.100),
     }
 
 

@@ -1,0 +1,480 @@
+"""From what an engineer types to what the engine needs: geometry, stiffness, clearance, sources.
+
+:func:`resolve_bearing` turns a designation (``306``, ``6306-2RS/C3``) or a hand-given ball
+set, optional overrides of every geometry value, a modulus and a clearance (a length or an
+ISO 5753-1 class) into a :class:`ResolvedBearing`: the number of balls, the ball stiffness
+K [N/mm^1.5] with its inner and outer contact parts, the radial internal clearance G_r [mm], the
+load ratings, and for every value the place it came from.
+
+Rules
+-----
+* Geometry: catalogue row (:func:`bearingload.catalog.lookup`), each value replaceable.
+  Without a designation, ``balls`` is needed and either ``stiffness`` or the ball geometry
+  (``ball_diameter`` and ``pitch_diameter``; conformities default to 0.52 / 0.53).
+* Stiffness: exact Hertz (:func:`bearingload.hertz.ball_stiffness`) from the geometry, E and nu
+  (default bearing steel, 208 000 MPa and 0.3), unless ``stiffness`` is given.
+* Clearance: a length is G_r itself (total radial play; the gap per side is G_r/2). A class
+  (``C2 CN C3 C4 C5``, GOST groups written ``G6 G7 G8 G9``; a bare number is always a length)
+  is resolved by the bore from the ISO 5753-1 table and picked at ``min``, ``mean`` or ``max``.
+  With a designation and no clearance, the class the designation marks is used, else CN
+  (by ISO and GOST an unmarked designation means the normal group). Without a designation
+  and no clearance: zero.
+
+>>> b = resolve_bearing("306", clearance="20um")
+>>> b.balls, round(b.clearance, 6), round(float(b.stiffness), -2)
+(8, 0.02, 404600.0)
+"""
+
+from __future__ import annotations
+
+import dataclasses
+import math
+from dataclasses import dataclass
+
+from .catalog import DEFAULT_F_I, DEFAULT_F_O, BearingGeometry, lookup
+from .clearance import PICKS, clearance_range, looks_like_class, parse_class
+from .errors import InputError
+from .units import parse_quantity
+
+#: Young's modulus used when none is given: bearing steel, NSK 208 000 MPa. [MPa]
+DEFAULT_MODULUS = 208_000.0
+#: Poisson's ratio used when none is given. [-]
+DEFAULT_POISSON = 0.3
+
+
+@dataclass(frozen=True)
+class Provenance:
+    """One input value as used, with its unit and where it came from."""
+
+    key: str
+    label: str
+    value: float | int | str | None
+    unit: str
+    source: str
+
+
+@dataclass(frozen=True)
+class ResolvedBearing:
+    """Everything the load-distribution engine needs for one bearing, and where it came from.
+
+    Attributes
+    ----------
+    designation : str or None
+        The designation as typed; None for a hand-given ball set.
+    geometry : BearingGeometry or None
+        The catalogue row with the overrides applied.
+    balls : int
+        Number of balls z.
+    ball_diameter, pitch_diameter : float or None
+        D_w and d_m; None when only the stiffness was given. [mm]
+    f_i, f_o : float or None
+        Groove conformities r / D_w. [-]
+    modulus : float
+        Young's modulus E of balls and rings. [MPa]
+    poisson : float
+        Poisson's ratio nu. [-]
+    stiffness : float
+        Ball stiffness K, both contacts in series, Q = K delta^1.5. [N/mm^1.5]
+    stiffness_inner, stiffness_outer : float or None
+        Hertz stiffness of the inner and outer contact (None without geometry). [N/mm^1.5]
+    stiffness_given : bool
+        True when K was given rather than computed.
+    clearance : float
+        Radial internal clearance G_r, total play. [mm]
+    clearance_class : str or None
+        ISO class the clearance was taken from (``"C3"``), None for a length.
+    clearance_range : tuple of float or None
+        (min, max) of that class at this bore. [mm]
+    clearance_pick : str or None
+        ``min``, ``mean`` or ``max`` for a class.
+    C, C0 : float or None
+        Basic dynamic and static load ratings. [N]
+    provenance : tuple of Provenance
+        Every value above with its source, in display order.
+    sources : tuple of str
+        The long source texts the provenance refers to as, [2] ...
+    """
+
+    designation: str | None
+    geometry: BearingGeometry | None
+    balls: int
+    ball_diameter: float | None
+    pitch_diameter: float | None
+    f_i: float | None
+    f_o: float | None
+    modulus: float
+    poisson: float
+    stiffness: float
+    stiffness_inner: float | None
+    stiffness_outer: float | None
+    stiffness_given: bool
+    clearance: float
+    clearance_class: str | None
+    clearance_range: tuple[float, float] | None
+    clearance_pick: str | None
+    C: float | None
+    C0: float | None
+    provenance: tuple[Provenance, ...]
+    sources: tuple[str, ...]
+
+    @property
+    def has_geometry(self) -> bool:
+        """True when D_w, d_m, f_i, f_o are known (Hertz pressures can be computed)."""
+        return None not in (self.ball_diameter, self.pitch_diameter, self.f_i, self.f_o)
+
+    def with_clearance(self, pick: str) -> ResolvedBearing:
+        """The same bearing at the ``min``, ``mean`` or ``max`` of its clearance class.
+
+        Raises
+        ------
+        InputError
+            (parameter ``pick``) when the clearance was given as a length, or the pick is unknown.
+        """
+        if pick not in PICKS:
+            raise InputError("pick", f"unknown pick {pick!r}; allowed: {', '.join(PICKS)}")
+        if self.clearance_range is None:
+            raise InputError(
+                "pick",
+                f"{pick!r} needs a clearance class (C2 CN C3 C4 C5), not a clearance length",
+            )
+        low, high = self.clearance_range
+        value = {"min": low, "mean": 0.5 * (low + high), "max": high}[pick]
+        prov = tuple(
+            dataclasses.replace(p, value=value * 1e3, source=_class_source(self, pick))
+            if p.key == "clearance"
+            else p
+            for p in self.provenance
+        )
+        return dataclasses.replace(self, clearance=value, clearance_pick=pick, provenance=prov)
+
+
+def _class_source(b: ResolvedBearing, pick: str) -> str:
+    """The clearance source text of ``b`` with its pick replaced."""
+    old = next(p.source for p in b.provenance if p.key == "clearance")
+    head, _, _ = old.rpartition(", ")
+    return f"{head}, {pick} (clearance table)"
+
+
+@dataclass(frozen=True)
+class ClearanceSpec:
+    """A clearance as typed: a length G_r [mm] or a clearance class."""
+
+    length: float | None = None
+    cls: str | None = None
+    text: str = ""
+
+
+def parse_clearance(text: str | float | None) -> ClearanceSpec | None:
+    """Read a clearance option: a length (bare number = mm) or a class.
+
+    ``C2 CN C3 C4 C5`` (also ``N``, ``normal``), GOST 24810 groups written ``G6 G7 G8 G9``; a
+    bare number is always a length, so ``7`` means 7 mm, not group 7.
+
+    Returns
+    -------
+    ClearanceSpec or None
+        None when ``text`` is None.
+
+    Raises
+    ------
+    InputError
+        (parameter ``clearance``) neither a length nor a class.
+
+    >>> parse_clearance("C3").cls, parse_clearance("g7").cls, parse_clearance("20um").length
+    ('C3', 'C3', 0.02)
+    """
+    if text is None:
+        return None
+    if isinstance(text, (int, float)):
+        return ClearanceSpec(length=float(text), text=repr(text))
+    if looks_like_class(text):
+        return ClearanceSpec(cls=parse_class(text), text=str(text))
+    try:
+        return ClearanceSpec(
+            length=parse_quantity(text, "length", parameter="clearance"), text=text
+        )
+    except InputError as exc:
+        raise InputError(
+            "clearance",
+            f"{str(exc).split(': ', 1)[-1]}; or a clearance class C2, CN, C3, C4, C5 "
+            "(GOST groups G6, G7, G8, G9)",
+        ) from None
+
+
+def clearance_length(spec: ClearanceSpec | None) -> float:
+    """G_r [mm] of a clearance given as a length (0 for None); a class needs a bearing's bore.
+
+    Raises
+    ------
+    InputError
+        (parameter ``clearance``) for a class.
+    """
+    if spec is None:
+        return 0.0
+    if spec.length is None:
+        raise InputError("clearance", _NEEDS_BORE.format(spec.text))
+    return spec.length
+
+
+_NEEDS_BORE = (
+    "a clearance class ({}) is resolved by the bore; give a bearing designation, or the "
+    "clearance as a length, e.g. --clearance 20um"
+)
+
+
+def _positive(name: str, value: float | None) -> None:
+    if value is not None and not (math.isfinite(value) and value > 0):
+        raise InputError(name, f"must be a finite number greater than 0; got {value!r}")
+
+
+def resolve_bearing(
+    designation: str | None = None,
+    *,
+    balls: int | None = None,
+    ball_diameter: float | None = None,
+    pitch_diameter: float | None = None,
+    f_i: float | None = None,
+    f_o: float | None = None,
+    modulus: float | None = None,
+    poisson: float | None = None,
+    stiffness: float | None = None,
+    clearance: str | float | ClearanceSpec | None = None,
+    clearance_pick: str = "mean",
+) -> ResolvedBearing:
+    """Resolve a bearing for a calculation: geometry, K, G_r and the source of each.
+
+    Parameters
+    ----------
+    designation : str, optional
+        Catalogue designation (``306``, ``6306-2RS/C3``, ``75-313``).
+    balls : int, optional
+        Number of balls z (required without a designation).
+    ball_diameter, pitch_diameter : float, optional
+        D_w and d_m, replacing the catalogue's. [mm]
+    f_i, f_o : float, optional
+        Inner and outer groove conformity r / D_w. [-]
+    modulus : float, optional
+        Young's modulus E of balls and rings; default 208 000. [MPa]
+    poisson : float, optional
+        Poisson's ratio nu; default 0.3. [-]
+    stiffness : float, optional
+        Ball stiffness K replacing the Hertz value. [N/mm^1.5]
+    clearance : str, float or ClearanceSpec, optional
+        G_r as a length (float: [mm]; text with a unit) or a class, see :func:`parse_clearance`.
+    clearance_pick : {"mean", "min", "max"}
+        Where in a class range to take G_r.
+
+    Returns
+    -------
+    ResolvedBearing
+
+    Raises
+    ------
+    InputError
+        Unknown designation (``bearing``), impossible geometry (``balls``, ``ball-diameter``,
+        ``pitch-diameter``, ``f_i``, ``f_o``), missing inputs, a clearance class without a bore
+        (``clearance``), bad modulus or Poisson's ratio.
+    """
+    for name, value in (
+        ("modulus", modulus),
+        ("stiffness", stiffness),
+        ("ball-diameter", ball_diameter),
+        ("pitch-diameter", pitch_diameter),
+    ):
+        _positive(name, value)
+    if poisson is not None and not (math.isfinite(poisson) and -1.0 < poisson <= 0.5):
+        raise InputError("poisson", f"must lie in (-1, 0.5]; got {poisson!r}")
+    if clearance_pick not in PICKS:
+        raise InputError("pick", f"unknown pick {clearance_pick!r}; allowed: {', '.join(PICKS)}")
+    spec = clearance if isinstance(clearance, ClearanceSpec) else parse_clearance(clearance)
+    given = {
+        "balls": balls,
+        "ball_diameter": ball_diameter,
+        "pitch_diameter": pitch_diameter,
+        "f_i": f_i,
+        "f_o": f_o,
+    }
+    prov: list[Provenance] = []
+    sources: list[str] = []
+    geom: BearingGeometry | None = None
+    dw: float | None
+    dm: float | None
+    fi: float | None
+    fo: float | None
+    if designation is not None:
+        geom = lookup(designation, **given)  # type: ignore[arg-type]
+        sources.append(f"catalogue row {geom.designation} ({geom.standard}): {geom.source}")
+        if geom.notes:
+            sources.append(f"catalogue notes: {geom.notes}")
+        z = int(geom.balls or 0)
+        dw, dm, fi, fo = geom.ball_diameter, geom.pitch_diameter, geom.f_i, geom.f_o
+        bore: float | None = geom.d
+        prov += [
+            Provenance("d", "bore d", geom.d, "mm", "catalogue"),
+            Provenance("D", "outside diameter D", geom.D, "mm", "catalogue"),
+        ]
+    else:
+        if balls is None:
+            raise InputError("balls", "give the number of balls, or a bearing designation")
+        if isinstance(balls, bool) or int(balls) != balls or balls < 1:
+            raise InputError(
+                "balls", f"the number of balls must be a whole number >= 1, not {balls!r}"
+            )
+        z, dw, dm, bore = int(balls), ball_diameter, pitch_diameter, None
+        fi = f_i if f_i is not None or dw is None else DEFAULT_F_I
+        fo = f_o if f_o is not None or dw is None else DEFAULT_F_O
+        if stiffness is None and (dw is None or dm is None):
+            raise InputError(
+                "stiffness",
+                "give the ball stiffness, or the ball geometry (--ball-diameter and "
+                "--pitch-diameter), or a bearing designation",
+            )
+    overridden = set(geom.overrides) if geom is not None else set(given)
+
+    def src(field: str, default: str) -> str:
+        if geom is None:
+            return "given" if given.get(field) is not None else default
+        return "given (override)" if field in overridden else default
+
+    pitch_src = "catalogue"
+    if geom is not None and "pitch_diameter" not in overridden:
+        pitch_src = "(d + D)/2" if math.isclose(dm or 0.0, (geom.d + geom.D) / 2) else pitch_src
+    prov += [
+        Provenance("balls", "balls z", z, "", src("balls", "catalogue")),
+        Provenance(
+            "ball_diameter", "ball diameter D_w", dw, "mm", src("ball_diameter", "catalogue")
+        ),
+        Provenance(
+            "pitch_diameter", "pitch diameter d_m", dm, "mm", src("pitch_diameter", pitch_src)
+        ),
+        Provenance(
+            "f_i", "inner conformity f_i = r_i/D_w", fi, "", src("f_i", _f_source(geom, "f_i"))
+        ),
+        Provenance(
+            "f_o", "outer conformity f_o = r_o/D_w", fo, "", src("f_o", _f_source(geom, "f_o"))
+        ),
+    ]
+    e = DEFAULT_MODULUS if modulus is None else float(modulus)
+    nu = DEFAULT_POISSON if poisson is None else float(poisson)
+    k_i = k_o = k_hertz = None
+    if dw is not None and dm is not None and fi is not None and fo is not None:
+        from .hertz import ball_stiffness
+
+        prov += [
+            Provenance(
+                "modulus",
+                "Young's modulus E",
+                e,
+                "MPa",
+                "given" if modulus is not None else "default: bearing steel (NSK 208 000 MPa)",
+            ),
+            Provenance(
+                "poisson",
+                "Poisson's ratio nu",
+                nu,
+                "",
+                "given" if poisson is not None else "default: steel",
+            ),
+        ]
+        ks = ball_stiffness(dw, dm, fi, fo, e, nu)
+        k_i, k_o, k_hertz = float(ks.inner), float(ks.outer), float(ks.ball)
+        prov += [
+            Provenance("stiffness_inner", "inner contact K_i", k_i, "N/mm^1.5", "Hertz, exact"),
+            Provenance("stiffness_outer", "outer contact K_o", k_o, "N/mm^1.5", "Hertz, exact"),
+        ]
+    k_given = stiffness is not None
+    k = float(stiffness) if stiffness is not None else float(k_hertz or 0.0)
+    prov.append(
+        Provenance(
+            "stiffness",
+            "ball stiffness K (series)",
+            k,
+            "N/mm^1.5",
+            "given" if k_given else "Hertz, exact: (K_i^-2/3 + K_o^-2/3)^-3/2",
+        )
+    )
+    g_r, cls, rng, pick, g_src = _resolve_clearance(spec, geom, bore, clearance_pick)
+    if rng is not None:
+        sources.append(_clearance_row_source(bore))
+    prov.append(Provenance("clearance", "radial clearance G_r (total)", g_r * 1e3, "µm", g_src))
+    c = geom.C if geom is not None else None
+    c0 = geom.C0 if geom is not None else None
+    if geom is not None:
+        prov += [
+            Provenance("C", "dynamic load rating C", c, "N", "catalogue" if c else "unknown"),
+            Provenance("C0", "static load rating C0", c0, "N", "catalogue" if c0 else "unknown"),
+        ]
+    return ResolvedBearing(
+        designation=designation,
+        geometry=geom,
+        balls=z,
+        ball_diameter=dw,
+        pitch_diameter=dm,
+        f_i=fi,
+        f_o=fo,
+        modulus=e,
+        poisson=nu,
+        stiffness=k,
+        stiffness_inner=k_i,
+        stiffness_outer=k_o,
+        stiffness_given=k_given,
+        clearance=g_r,
+        clearance_class=cls,
+        clearance_range=rng,
+        clearance_pick=pick,
+        C=c,
+        C0=c0,
+        provenance=tuple(prov),
+        sources=tuple(sources),
+    )
+
+
+def _f_source(geom: BearingGeometry | None, field: str) -> str:
+    if geom is None:
+        return f"default {DEFAULT_F_I if field == 'f_i' else DEFAULT_F_O} (ISO/TS 16281 convention)"
+    value = getattr(geom, field)
+    default = DEFAULT_F_I if field == "f_i" else DEFAULT_F_O
+    if value == default:
+        return "default (ISO/TS 16281 convention)"
+    return "catalogue"
+
+
+def _resolve_clearance(
+    spec: ClearanceSpec | None,
+    geom: BearingGeometry | None,
+    bore: float | None,
+    pick: str,
+) -> tuple[float, str | None, tuple[float, float] | None, str | None, str]:
+    """G_r [mm], class, class range [mm], pick and a source text."""
+    if spec is not None and spec.length is not None:
+        return spec.length, None, None, None, "given"
+    if spec is None:
+        if geom is None:
+            return 0.0, None, None, None, "default: zero clearance"
+        cls = geom.parsed.clearance_class or "CN"
+        how = (
+            f"class {cls} marked in the designation"
+            if geom.parsed.clearance_class
+            else "no class marked in the designation: CN (normal)"
+        )
+    else:
+        cls = spec.cls or "CN"
+        how = f"class {cls}"
+    if bore is None:
+        raise InputError("clearance", _NEEDS_BORE.format(spec.text if spec else cls))
+    low, high = clearance_range(bore, cls)
+    value = {"min": low, "mean": 0.5 * (low + high), "max": high}[pick]
+    source = (
+        f"{how}; ISO 5753-1 {cls} {low * 1e3:g}-{high * 1e3:g} µm at d = {bore:g} mm, {pick} "
+        "(clearance table)"
+    )
+    return value, cls, (low, high), pick, source
+
+
+def _clearance_row_source(bore: float | None) -> str:
+    from .clearance import table
+
+    for row in table():
+        if bore is not None and row.bore_over < bore <= row.bore_incl:
+            return f"clearance table (bore over {row.bore_over:g} incl {row.bore_incl:g} mm): {row.source}"
+    return "clearance table"  # pragma: no cover - clearance_range raised before
