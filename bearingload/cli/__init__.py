@@ -27,15 +27,18 @@ def main() -> None:
       bearingload solve --balls 8 --load 300kgf --stiffness 4700kgf/mm^1.5 --clearance 20um
       bearingload table k
       bearingload table kq --format csv -o kq.csv
+      bearingload solve 306 --load 300kgf --clearance C3
+      bearingload catalog show 306
       bearingload fit examples/bearing208_kuzmenko2014.csv --load-unit kgf --balls 9
     """
 
 
 def _register() -> None:
-    from . import fit, solve, table
+    from . import catalog, fit, solve, table
 
     main.add_command(solve.solve)
     main.add_command(table.table)
+    main.add_command(catalog.catalog)
     main.add_command(fit.fit)
 
 

@@ -98,6 +98,23 @@ OPTION_NAMES = {
     "clearance": "--clearance",
     "cage_angle": "--cage-angle",
     "exponent": "--exponent",
+    # bearing, geometry and life options (bearingload.bearing, bearingload.life)
+    "bearing": "BEARING",
+    "ball-diameter": "--ball-diameter",
+    "D_w": "--ball-diameter",
+    "pitch-diameter": "--pitch-diameter",
+    "d_m": "--pitch-diameter",
+    "f_i": "--inner-conformity",
+    "f_o": "--outer-conformity",
+    "modulus": "--modulus",
+    "E1": "--modulus",
+    "poisson": "--poisson",
+    "nu1": "--poisson",
+    "pick": "--clearance-pick",
+    "bore": "--clearance",
+    "revolutions": "--revolutions",
+    "series": "--series",
+    "standard": "--standard",
 }
 
 

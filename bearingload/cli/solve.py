@@ -6,11 +6,18 @@ from typing import Any
 
 import click
 
+from .bearing_options import CLEARANCE_HELP, Clearance, geometry_options
 from .options import CONTEXT, CageAngle, Quantity, emit, library_errors, output_options, units_help
 
 
 @click.command(context_settings=CONTEXT)
-@click.option("--balls", "-z", type=int, required=True, help="Number of balls z (1 to 100000).")
+@click.argument("bearing", required=False, metavar="[BEARING]")
+@click.option(
+    "--balls",
+    "-z",
+    type=int,
+    help="Number of balls z (1 to 100000); required without a BEARING, else an override.",
+)
 @click.option(
     "--load",
     "-F",
@@ -22,18 +29,33 @@ from .options import CONTEXT, CageAngle, Quantity, emit, library_errors, output_
     "--stiffness",
     "-K",
     type=Quantity("stiffness"),
-    required=True,
-    help="Ball stiffness K of both contacts in series, Q = K delta^m. "
+    help="Ball stiffness K of both contacts in series, Q = K delta^m; required without a "
+    "BEARING or ball geometry, else it replaces the Hertz value. "
     f"Units: {units_help('stiffness')} (bare number: N/mm^1.5).",
 )
 @click.option(
     "--clearance",
     "-G",
-    type=Quantity("length"),
-    default="0",
+    type=Clearance(),
+    help=CLEARANCE_HELP + " Default: without a BEARING 0; with one, the class its designation "
+    "marks, else CN (an unmarked designation means the normal group).",
+)
+@click.option(
+    "--clearance-pick",
+    type=click.Choice(["min", "mean", "max", "range"]),
+    default="mean",
     show_default=True,
-    help="Radial internal clearance G_r, total play (gap per side G_r/2); negative = preload. "
-    f"Units: {units_help('length')} (bare number: mm).",
+    help="Where in a clearance class to take G_r; 'range' solves at min, mean and max and "
+    "prints them side by side.",
+)
+@geometry_options
+@click.option(
+    "--revolutions",
+    type=click.FloatRange(min=0, min_open=True),
+    default=36e6,
+    show_default=True,
+    help="Life L [revolutions] for the allowable load C/(L/10^6)^(1/3). The default is the "
+    "worked value of Kuzmenko (2010) §3.2 (36e6 rev, e.g. 1000 h at 600 rpm); set your own.",
 )
 @click.option(
     "--cage-angle",
@@ -54,10 +76,19 @@ from .options import CONTEXT, CageAngle, Quantity, emit, library_errors, output_
 @output_options
 @library_errors
 def solve(
-    balls: int,
+    bearing: str | None,
+    balls: int | None,
     load: float,
-    stiffness: float,
-    clearance: float,
+    stiffness: float | None,
+    clearance: Any,
+    clearance_pick: str,
+    ball_diameter: float | None,
+    pitch_diameter: float | None,
+    inner_conformity: float | None,
+    outer_conformity: float | None,
+    modulus: float | None,
+    poisson: float | None,
+    revolutions: float,
     cage_angle: Any,
     exponent: float,
     fmt: str,
@@ -68,13 +99,69 @@ def solve(
     The inner ring moves until the ball forces balance the radial load (DOMAIN: Kurochkin 1973,
     Kuzmenko 2010). Ball 1 sits at the cage angle; balls are numbered counter-clockwise.
 
+    BEARING is a catalogue designation (306, 6306-2RS/C3, 75-313; see 'bearingload catalog'):
+    its ball set gives the exact Hertz ball stiffness, its bore resolves a clearance class, its
+    rating C gives the life (C/F_r)^3. The report names the source of every value. Without a
+    BEARING give --balls and --stiffness (or the ball geometry).
+
     \b
     Examples:
+      # bearing 306 of the catalogue, 300 kgf, ISO clearance class C3 (mean of its range)
+      bearingload solve 306 --load 300kgf --clearance C3
+      # the whole C3 range side by side, the paper's modulus
+      bearingload solve 6306 -F 3kN -G C3 --clearance-pick range --modulus 2.1e4kgf/mm^2
       # bearing 306 of Kuzmenko (2010): 8 balls, 300 kgf, the paper's stiffness, G_r = 20 µm
       bearingload solve -z 8 --load 300kgf --stiffness 4700kgf/mm^1.5 --clearance 20um
       # the load between two balls, 50 µm preload, JSON for a script
       bearingload solve -z 12 -F 5kN -K 3.8e5 -G -50um --cage-angle half --format json
     """
-    from ..solve_report import solve_report
+    if bearing is None and ball_diameter is None and pitch_diameter is None:
+        from ..bearing import clearance_length
+        from ..solve_report import solve_report
 
-    emit(solve_report(balls, load, stiffness, clearance, cage_angle, exponent, fmt), output)
+        if balls is None:
+            raise click.UsageError(
+                "Missing option '--balls' / '-z' (or give a BEARING designation)"
+            )
+        if stiffness is None:
+            raise click.UsageError(
+                "Missing option '--stiffness' / '-K' (or give a BEARING designation, or "
+                "--ball-diameter and --pitch-diameter)"
+            )
+        g_r = clearance_length(clearance)
+        emit(solve_report(balls, load, stiffness, g_r, cage_angle, exponent, fmt), output)
+        return
+    from ..bearing import resolve_bearing
+    from ..bearing_report import bearing_report, solve_bearing
+
+    if exponent != 1.5:
+        raise click.UsageError(
+            "Invalid value for '--exponent': a ball bearing (Hertz point contact) has m = 1.5; "
+            "other exponents need --balls and --stiffness without a BEARING"
+        )
+    resolved = resolve_bearing(
+        bearing,
+        balls=balls,
+        ball_diameter=ball_diameter,
+        pitch_diameter=pitch_diameter,
+        f_i=inner_conformity,
+        f_o=outer_conformity,
+        modulus=modulus,
+        poisson=poisson,
+        stiffness=stiffness,
+        clearance=clearance,
+        clearance_pick="mean" if clearance_pick == "range" else clearance_pick,
+    )
+    if clearance_pick == "range" and resolved.clearance_range is None:
+        raise click.UsageError(
+            "Invalid value for '--clearance-pick': 'range' needs a clearance class "
+            "(C2 CN C3 C4 C5), not a clearance length"
+        )
+    picks = ["min", "mean", "max"] if clearance_pick == "range" else [None]
+    cases = [
+        solve_bearing(
+            resolved if p is None else resolved.with_clearance(p), load, cage_angle, revolutions
+        )
+        for p in picks
+    ]
+    emit(bearing_report(cases, fmt), output)

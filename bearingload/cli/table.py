@@ -6,6 +6,7 @@ from typing import Any
 
 import click
 
+from .bearing_options import CLEARANCE_HELP, Clearance, geometry_options, renamed
 from .options import CONTEXT, CageAngle, Quantity, emit, library_errors, output_options
 
 TABLES = ("k", "kq")
@@ -25,21 +26,27 @@ TABLES = ("k", "kq")
     help="Radial load F_r (matters only with clearance). Bare number: N.",
 )
 @click.option(
+    "--bearing",
+    "-b",
+    help="Catalogue designation (306, 6306): K is the exact Hertz stiffness of its ball and "
+    "raceways, a clearance class is resolved by its bore.",
+)
+@click.option(
     "--stiffness",
     "-K",
     type=Quantity("stiffness"),
-    default="1e5",
-    show_default=True,
-    help="Ball stiffness K (matters only with clearance). Bare number: N/mm^1.5.",
+    help="Ball stiffness K (matters only with clearance); default 1e5 N/mm^1.5, or the Hertz "
+    "value of --bearing. Bare number: N/mm^1.5.",
 )
+@click.option("--clearance", "-G", type=Clearance(), help=CLEARANCE_HELP + " Default: 0.")
 @click.option(
-    "--clearance",
-    "-G",
-    type=Quantity("length"),
-    default="0",
+    "--clearance-pick",
+    type=click.Choice(["min", "mean", "max"]),
+    default="mean",
     show_default=True,
-    help="Radial internal clearance G_r, total play; negative = preload. Bare number: mm.",
+    help="Where in a clearance class to take G_r.",
 )
+@geometry_options
 @click.option(
     "--cage-angle",
     type=CageAngle(),
@@ -61,8 +68,16 @@ def table(
     name: str,
     z_max: int,
     load: float,
-    stiffness: float,
-    clearance: float,
+    bearing: str | None,
+    stiffness: float | None,
+    clearance: Any,
+    clearance_pick: str,
+    ball_diameter: float | None,
+    pitch_diameter: float | None,
+    inner_conformity: float | None,
+    outer_conformity: float | None,
+    modulus: float | None,
+    poisson: float | None,
     cage_angle: Any,
     exponent: float,
     fmt: str,
@@ -83,10 +98,45 @@ def table(
       bearingload table kq --format csv -o kq.csv
       bearingload table k --clearance 20um --load 300kgf --stiffness 4700kgf/mm^1.5
       bearingload table k --cage-angle half --z-max 40
+      # Table 1 for the ball and raceways of bearing 306 (exact Hertz K), 300 kgf, 20 µm
+      bearingload table k --bearing 306 --load 300kgf --clearance 20um
     """
     from ..render import render
     from ..tables import Conditions, table_k, table_kq
 
-    cond = Conditions(load, stiffness, clearance, cage_angle, exponent)
+    geometry = (ball_diameter, pitch_diameter, inner_conformity, outer_conformity, modulus, poisson)
+    if bearing is not None:
+        from ..bearing import resolve_bearing
+        from ..bearing_tables import bearing_table
+
+        if exponent != 1.5:
+            raise click.UsageError(
+                "Invalid value for '--exponent': a ball bearing (Hertz point contact) has m = 1.5"
+            )
+        resolved = renamed(
+            lambda: resolve_bearing(
+                bearing,
+                ball_diameter=ball_diameter,
+                pitch_diameter=pitch_diameter,
+                f_i=inner_conformity,
+                f_o=outer_conformity,
+                modulus=modulus,
+                poisson=poisson,
+                stiffness=stiffness,
+                clearance=clearance if clearance is not None else 0.0,
+                clearance_pick=clearance_pick,
+            ),
+            {"bearing": "--bearing"},
+        )
+        emit(render([bearing_table(name, resolved, load, z_max, cage_angle)], fmt), output)
+        return
+    if any(v is not None for v in geometry):
+        raise click.UsageError(
+            "the geometry and material options (--ball-diameter ... --poisson) need --bearing"
+        )
+    from ..bearing import clearance_length
+
+    k = 1e5 if stiffness is None else stiffness
+    cond = Conditions(load, k, clearance_length(clearance), cage_angle, exponent)
     builder = {"k": table_k, "kq": table_kq}[name]
     emit(render([builder(z_max, cond)], fmt), output)

@@ -1,0 +1,121 @@
+"""Rows of the bearing catalogue for people and scripts: the list, and one entry with sources.
+
+Units: diameters and widths [mm], load ratings [kN] in the list and [N] in one entry.
+"""
+
+from __future__ import annotations
+
+from typing import Any
+
+from .catalog import BearingGeometry, entries, find
+from .render import Column, Table, render
+
+
+def catalog_list(
+    fmt: str,
+    series: str | None = None,
+    standard: str | None = None,
+    bore: float | None = None,
+) -> str:
+    """The catalogue rows, filtered as :func:`bearingload.catalog.entries`, rendered in ``fmt``."""
+    rows = [_row(b) for b in entries(series=series, standard=standard, bore=bore)]
+    filters = [
+        f"{k} {v:g}" if isinstance(v, float) else f"{k} {v}"
+        for k, v in (("series", series), ("standard", standard), ("bore", bore))
+        if v is not None
+    ]
+    title = "Deep groove ball bearings in the catalogue"
+    if filters:
+        title += f" ({', '.join(filters)})"
+    table = Table(
+        title=title,
+        columns=[
+            Column("designation", "bearing", align="left"),
+            Column("standard", "std", align="left"),
+            Column("d", "d", "mm", 5),
+            Column("D", "D", "mm", 5),
+            Column("B", "B", "mm", 5),
+            Column("balls", "z"),
+            Column("ball_diameter", "D_w", "mm", 5),
+            Column("pitch_diameter", "d_m", "mm", 5),
+            Column("f_i", "f_i", "-", 3),
+            Column("f_o", "f_o", "-", 3),
+            Column("C", "C", "kN", 4),
+            Column("C0", "C0", "kN", 4),
+        ],
+        rows=rows,
+        notes=[
+            f"{len(rows)} bearings; '-': ball set unknown (give --balls and --ball-diameter). "
+            "Sources of each row: bearingload catalog show DESIGNATION."
+        ],
+    )
+    return render([table], fmt)
+
+
+def _row(b: BearingGeometry) -> dict[str, Any]:
+    return {
+        "designation": b.designation,
+        "standard": b.standard,
+        "d": b.d,
+        "D": b.D,
+        "B": b.B,
+        "balls": b.balls if b.balls is not None else "-",
+        "ball_diameter": b.ball_diameter if b.ball_diameter is not None else "-",
+        "pitch_diameter": b.pitch_diameter if b.pitch_diameter is not None else "-",
+        "f_i": b.f_i,
+        "f_o": b.f_o,
+        "C": b.C / 1e3 if b.C is not None else "-",
+        "C0": b.C0 / 1e3 if b.C0 is not None else "-",
+    }
+
+
+def catalog_entry(designation: str, fmt: str) -> str:
+    """One catalogue entry with its sources and notes, rendered in ``fmt``.
+
+    Raises
+    ------
+    InputError
+        (parameter ``bearing``) unknown or unreadable designation.
+    """
+    b = find(designation)
+    p = b.parsed
+    fields: list[tuple[str, str, Any, str]] = [
+        ("designation", "designation", b.designation, ""),
+        ("standard", "standard", b.standard, ""),
+        ("iso_name", "ISO name", p.iso_name, ""),
+        ("gost_name", "GOST name", p.gost_name or "-", ""),
+        ("series", "dimension series", b.series, ""),
+        ("d", "bore d", b.d, "mm"),
+        ("D", "outside diameter D", b.D, "mm"),
+        ("B", "width B", b.B, "mm"),
+        ("balls", "balls z", b.balls if b.balls is not None else "-", ""),
+        ("ball_diameter", "ball diameter D_w", _or_dash(b.ball_diameter), "mm"),
+        ("pitch_diameter", "pitch diameter d_m", _or_dash(b.pitch_diameter), "mm"),
+        ("f_i", "inner conformity f_i", b.f_i, "-"),
+        ("f_o", "outer conformity f_o", b.f_o, "-"),
+        ("C", "dynamic load rating C", _or_dash(b.C), "N"),
+        ("C0", "static load rating C0", _or_dash(b.C0), "N"),
+        ("f0", "factor f0 (C0 = f0 z D_w^2)", _or_dash(b.f0), "N/mm^2"),
+        ("clearance_class", "clearance class marked", p.clearance_class or "none (CN)", ""),
+    ]
+    if fmt == "json":
+        doc: dict[str, Any] = {key: value for key, _, value, _ in fields}
+        doc["source"] = b.source
+        doc["notes"] = b.notes
+        doc["units"] = {key: unit for key, _, _, unit in fields if unit and unit != "-"}
+        return render([], "json", document=doc)
+    table = Table(
+        title=f"Bearing {b.designation} ({b.standard})",
+        columns=[
+            Column("quantity", "quantity", align="left"),
+            Column("value", "value", digits=6, align="left"),
+            Column("unit", "unit", align="left"),
+        ],
+        rows=[{"quantity": label, "value": v, "unit": u} for _, label, v, u in fields],
+        notes=[f"source: {b.source}", f"notes: {b.notes or '-'}"],
+    )
+    return render([table], fmt)
+
+
+def _or_dash(value: float | None) -> float | str:
+    return "-" if value is None else value

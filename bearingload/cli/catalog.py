@@ -1,0 +1,60 @@
+"""``bearingload catalog``: list and filter the bearing catalogue, show one entry with sources."""
+
+from __future__ import annotations
+
+import click
+
+from .bearing_options import renamed
+from .options import CONTEXT, Quantity, emit, library_errors, output_options
+
+
+@click.group(context_settings=CONTEXT, invoke_without_command=True)
+@click.option("--series", help="Dimension series: 60, 62, 63, 64 (or GOST style 2, 3, 4; 62xx).")
+@click.option("--standard", help="GOST or ISO (any case).")
+@click.option("--bore", type=Quantity("length"), help="Bore diameter d. Bare number: mm.")
+@output_options
+@click.pass_context
+@library_errors
+def catalog(
+    ctx: click.Context,
+    series: str | None,
+    standard: str | None,
+    bore: float | None,
+    fmt: str,
+    output: str | None,
+) -> None:
+    """List the deep groove ball bearings of the catalogue, optionally filtered.
+
+    Each row carries its boundary dimensions, ball set (where known), groove conformities and
+    load ratings; 'catalog show DESIGNATION' prints one entry with the sources of its numbers.
+
+    \b
+    Examples:
+      bearingload catalog
+      bearingload catalog --series 63 --standard ISO --format csv
+      bearingload catalog --bore 30
+      bearingload catalog show 306
+    """
+    if ctx.invoked_subcommand is not None:
+        return
+    from ..catalog_report import catalog_list
+
+    emit(catalog_list(fmt, series=series, standard=standard, bore=bore), output)
+
+
+@catalog.command(context_settings=CONTEXT)
+@click.argument("designation")
+@output_options
+@library_errors
+def show(designation: str, fmt: str, output: str | None) -> None:
+    """Print one catalogue entry: dimensions, ball set, ratings, and where each came from.
+
+    \b
+    Examples:
+      bearingload catalog show 306
+      bearingload catalog show 6306-2RS/C3 --format json
+    """
+    from ..catalog_report import catalog_entry
+
+    text = renamed(lambda: catalog_entry(designation, fmt), {"bearing": "DESIGNATION"})
+    emit(text, output)
