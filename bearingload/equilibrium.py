@@ -417,6 +417,8 @@ class _Solved:
     xi: np.ndarray
     eta: np.ndarray
     iterations: np.ndarray
+    #: (loaded balls, Hxx, Hyy) when the solver already has them at the solution, else None
+    derived: tuple[np.ndarray, np.ndarray, np.ndarray] | None = None
 
 
 def _solve_symmetric(ring: _Ring, e_hat: np.ndarray, m: np.ndarray) -> _Solved:
@@ -512,12 +514,13 @@ def _newton_convex(ring: _Ring, e_hat: np.ndarray, m: float, start: np.ndarray) 
     in ``xi`` and its slope is positive wherever ``xi > 0`` (the reference ball, ``u = 0``, is
     then loaded), so Newton converges from any positive start, monotonically after the first step.
     """
-    c, u = ring.c, ring.u
-    cw, c2w = c * ring.w, c * c * ring.w
+    c, u, w = ring.c, ring.u, ring.w
+    cw, c2w, s2w = c * w, c * c * w, ring.s * ring.s * w
     xi = start.copy()
     n = xi.size
     last = np.full(n, np.inf)
     iterations = np.zeros(n, dtype=np.int64)
+    loaded, hxx, hyy = np.zeros(n), np.zeros(n), np.zeros(n)
     active = np.arange(n)
     for it in range(1, MAX_ITERATIONS + 1):
         xa = xi[active]
@@ -526,21 +529,27 @@ def _newton_convex(ring: _Ring, e_hat: np.ndarray, m: float, start: np.ndarray) 
         if m == 1.5:
             root = np.sqrt(delta)
             g = (delta * root) @ cw - 1.0
-            dg = 1.5 * (root @ c2w)
+            dq = 1.5 * root
         else:
             q, dq = _power_terms(delta, np.full(xa.size, m))
-            g, dg = q @ cw - 1.0, dq @ c2w
+            g = q @ cw - 1.0
+        dg = dq @ c2w
         step = g / dg
         done = (np.abs(g) <= TOLERANCE) | (np.abs(step) <= 4e-16 * xa)
         xi[active] = np.where(done, xa, xa - step)
         last[active] = g
         iterations[active] = it
+        # the cases that stop here stop at this very point: keep what the output needs
+        fin = active[done]
+        loaded[fin] = (delta[done] > 0) @ w
+        hxx[fin] = dg[done]
+        hyy[fin] = dq[done] @ s2w
         active = active[~done]
         if active.size == 0:
             break
     last[active] = np.inf
     _check(last, "symmetric ring equilibrium", iterations, e_hat, np.full(n, m))
-    return _Solved(xi=xi, eta=np.zeros(n), iterations=iterations)
+    return _Solved(xi=xi, eta=np.zeros(n), iterations=iterations, derived=(loaded, hxx, hyy))
 
 
 def _solve_general(ring: _Ring, e_hat: np.ndarray, m: np.ndarray) -> _Solved:
@@ -632,6 +641,15 @@ def _store(
     res: dict[str, np.ndarray],
 ) -> None:
     """Write one group's solution and the quantities derived from it into the output arrays."""
+    res["xi"][idx], res["eta"][idx] = out.xi, out.eta
+    res["x0"][idx], res["y0"][idx], res["iterations"][idx] = ring.x0, ring.y0, out.iterations
+    res["reference"][idx, 0], res["reference"][idx, 1] = ring.mu, ring.h
+    if out.derived is not None:  # symmetric ring: the reference ball carries the most
+        loaded, hxx, hyy = out.derived
+        res["q_hat"][idx] = (out.xi * ring.c_max) ** m
+        res["loaded"][idx] = np.rint(loaded)
+        res["hess"][idx, 0], res["hess"][idx, 2] = hxx, hyy
+        return
     delta = out.xi[:, None] * ring.c
     if not symmetric:
         delta += out.eta[:, None] * ring.s
@@ -646,9 +664,6 @@ def _store(
         q_hat = (out.xi * ring.c_max) ** m
     else:
         q_hat = delta.max(axis=1) ** m
-    res["xi"][idx], res["eta"][idx] = out.xi, out.eta
-    res["x0"][idx], res["y0"][idx], res["iterations"][idx] = ring.x0, ring.y0, out.iterations
-    res["reference"][idx, 0], res["reference"][idx, 1] = ring.mu, ring.h
     res["q_hat"][idx] = q_hat
     res["loaded"][idx] = np.rint(_dot(loaded.astype(float), ring.w))
     res["hess"][idx, 0] = _dot(dq, ring.w * ring.c * ring.c)
