@@ -17,6 +17,7 @@ from .render import Table, render, write_atomic
 
 def _registry() -> dict[str, Callable[[], Table]]:
     from .bearing_tables import kuzmenko2010_306_table
+    from .method_tables import table_compare
     from .tables import table_k, table_kq
 
     return {
@@ -27,6 +28,8 @@ def _registry() -> dict[str, Callable[[], Table]]:
         "table2_kq_306_300kgf_gr20um": lambda: kuzmenko2010_306_table("kq", 0.020),
         "table1_k_306_300kgf_gr100um": lambda: kuzmenko2010_306_table("k", 0.100),
         "table2_kq_306_300kgf_gr100um": lambda: kuzmenko2010_306_table("kq", 0.100),
+        # exact, continuum, Stribeck and Palmgren side by side (issue 4), Table 1 conditions
+        "k_methods_zero_clearance": lambda: table_compare("k", 30),
     }
 
 

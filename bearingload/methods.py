@@ -22,6 +22,9 @@ palmgren   ``Q_max = 5 F_r/z`` (Palmgren 1959; seed 003, eq. 2)            stiff
                                                                            cage angle, exponent
 =========  ==============================================================  =======================
 
+Importing this module imports no numpy (the command line lists the methods at start-up); each
+method imports what it needs when called.
+
 Every method still checks every input (a negative stiffness is an error for Stribeck too), so the
 methods accept and reject the same cases; the one exception is the exact model, which has no
 equilibrium with one or two balls when no ball sits on the load line.
@@ -33,9 +36,6 @@ from collections.abc import Callable
 from dataclasses import dataclass
 from typing import Any
 
-import numpy as np
-
-from . import validate
 from .errors import InputError
 
 #: The default method of :func:`compute` and of ``bearingload solve``.
@@ -105,6 +105,8 @@ class Method:
 
 def _scalar(value: Any) -> Any:
     """Python float for a 0-d array, the array otherwise."""
+    import numpy as np
+
     arr = np.asarray(value)
     return float(arr) if arr.ndim == 0 else arr
 
@@ -123,6 +125,9 @@ def _exact(
 def _continuum(
     balls: Any, load: Any, stiffness: Any, clearance: Any, cage_angle: Any, exponent: Any
 ) -> MethodResult:
+    import numpy as np
+
+    from . import validate
     from .continuum import solve_continuum
 
     angle = validate.finite("cage_angle", cage_angle)  # checked, then not used
@@ -133,10 +138,13 @@ def _continuum(
     return MethodResult("continuum", k, q, kq, zone)
 
 
-def _one_line(name: str, constant: float) -> Callable[..., MethodResult]:
+def _one_line(name: str) -> Callable[..., MethodResult]:
     def estimate(
         balls: Any, load: Any, stiffness: Any, clearance: Any, cage_angle: Any, exponent: Any
     ) -> MethodResult:
+        import numpy as np
+
+        from . import validate
         from .approximations import palmgren, stribeck
 
         z = validate.ball_count(balls)
@@ -146,7 +154,7 @@ def _one_line(name: str, constant: float) -> Callable[..., MethodResult]:
         a = validate.finite("cage_angle", cage_angle)
         m = validate.exponent(exponent)
         z, f, *_ = np.broadcast_arrays(z, f, kk, g, a, m)
-        r = (stribeck if name == "stribeck" else palmgren)(z, f, constant)
+        r = (stribeck if name == "stribeck" else palmgren)(z, f)
         k, q = np.asarray(r.k), np.asarray(r.q_max)
         return MethodResult(name, _scalar(k), _scalar(q), _scalar(k * z / 2.0), None)
 
@@ -154,8 +162,6 @@ def _one_line(name: str, constant: float) -> Callable[..., MethodResult]:
 
 
 def _build() -> dict[str, Method]:
-    from .approximations import PALMGREN_CONSTANT, STRIBECK_CONSTANT
-
     fixed = ("stiffness", "clearance", "cage_angle", "exponent")
     return {
         "exact": Method(
@@ -171,14 +177,14 @@ def _build() -> dict[str, Method]:
         ),
         "stribeck": Method(
             "stribeck",
-            _one_line("stribeck", STRIBECK_CONSTANT),
-            f"Stribeck (1901): Q_max = {STRIBECK_CONSTANT:g} F_r/z",
+            _one_line("stribeck"),
+            "Stribeck (1901): Q_max = 4.37 F_r/z",  # approximations.STRIBECK_CONSTANT
             fixed,
         ),
         "palmgren": Method(
             "palmgren",
-            _one_line("palmgren", PALMGREN_CONSTANT),
-            f"Palmgren (1959): Q_max = {PALMGREN_CONSTANT:g} F_r/z",
+            _one_line("palmgren"),
+            "Palmgren (1959): Q_max = 5 F_r/z",  # approximations.PALMGREN_CONSTANT
             fixed,
         ),
     }
@@ -274,4 +280,6 @@ def compute_all(
 
 def relative_error(result: MethodResult, reference: MethodResult) -> Any:
     """``Q_max / Q_max,reference - 1`` (the same as the ratio of the ``k``). [-]"""
+    import numpy as np
+
     return _scalar(np.asarray(result.q_max) / np.asarray(reference.q_max) - 1.0)

@@ -4,13 +4,15 @@ from __future__ import annotations
 
 import inspect
 import math
+import subprocess
+import sys
 from typing import Any
 
 import mpmath as mp
 import numpy as np
 import pytest
 
-from bearingload.approximations import palmgren, stribeck
+from bearingload.approximations import PALMGREN_CONSTANT, STRIBECK_CONSTANT, palmgren, stribeck
 from bearingload.continuum import solve_continuum
 from bearingload.equilibrium import solve
 from bearingload.errors import InputError
@@ -50,6 +52,14 @@ def test_same_signature_for_every_method():
             assert isinstance(value, float)
         assert r.q_max == pytest.approx(r.k * CASE[1], rel=1e-14)
         assert r.K_Q == pytest.approx(r.k * CASE[0] / 2, rel=1e-14)
+
+
+def test_titles_quote_the_constants_and_import_is_light():
+    assert f"Q_max = {STRIBECK_CONSTANT:g} F_r/z" in METHODS["stribeck"].title
+    assert f"Q_max = {PALMGREN_CONSTANT:g} F_r/z" in METHODS["palmgren"].title
+    code = "import sys, bearingload.methods; print('numpy' in sys.modules)"
+    r = subprocess.run([sys.executable, "-c", code], capture_output=True, text=True, timeout=60)
+    assert r.stdout.strip() == "False", r.stderr
 
 
 def test_unknown_method_names_the_valid_ones():

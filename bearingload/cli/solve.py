@@ -6,6 +6,7 @@ from typing import Any
 
 import click
 
+from ..methods import DEFAULT_METHOD, list_methods
 from .bearing_options import CLEARANCE_HELP, Clearance, geometry_options
 from .options import CONTEXT, CageAngle, Quantity, emit, library_errors, output_options, units_help
 
@@ -73,6 +74,15 @@ from .options import CONTEXT, CageAngle, Quantity, emit, library_errors, output_
     show_default=True,
     help="Load-deflection exponent m: 1.5 for balls, 1.1111 (10/9) for rollers.",
 )
+@click.option(
+    "--method",
+    type=click.Choice([*list_methods(), "all"]),
+    default=DEFAULT_METHOD,
+    show_default=True,
+    help="exact: ring equilibrium, every ball; continuum: loads smeared over the raceway; "
+    "stribeck: 4.37 F_r/z; palmgren: 5 F_r/z (these two ignore stiffness, clearance, cage "
+    "angle and exponent); all: every method side by side with its error against exact.",
+)
 @output_options
 @library_errors
 def solve(
@@ -91,6 +101,7 @@ def solve(
     revolutions: float,
     cage_angle: Any,
     exponent: float,
+    method: str,
     fmt: str,
     output: str | None,
 ) -> None:
@@ -114,6 +125,8 @@ def solve(
       bearingload solve -z 8 --load 300kgf --stiffness 4700kgf/mm^1.5 --clearance 20um
       # the load between two balls, 50 µm preload, JSON for a script
       bearingload solve -z 12 -F 5kN -K 3.8e5 -G -50um --cage-angle half --format json
+      # exact, continuum, Stribeck and Palmgren side by side, errors against the exact answer
+      bearingload solve -z 8 -F 300kgf -K 4700kgf/mm^1.5 -G 20um --method all
     """
     if bearing is None and ball_diameter is None and pitch_diameter is None:
         from ..bearing import clearance_length
@@ -129,6 +142,12 @@ def solve(
                 "--ball-diameter and --pitch-diameter)"
             )
         g_r = clearance_length(clearance)
+        if method != "exact":
+            from ..method_report import method_report
+
+            text = method_report(method, balls, load, stiffness, g_r, cage_angle, exponent, fmt)
+            emit(text, output)
+            return
         emit(solve_report(balls, load, stiffness, g_r, cage_angle, exponent, fmt), output)
         return
     from ..bearing import resolve_bearing
@@ -157,6 +176,33 @@ def solve(
             "Invalid value for '--clearance-pick': 'range' needs a clearance class "
             "(C2 CN C3 C4 C5), not a clearance length"
         )
+    if method != "exact":
+        from ..method_report import method_report
+
+        if clearance_pick == "range":
+            raise click.UsageError(
+                "Invalid value for '--clearance-pick': 'range' works with --method exact only; "
+                "pick min, mean or max"
+            )
+        label = f"bearing {resolved.designation}" if resolved.designation else "the given ball"
+        k_src = "given" if resolved.stiffness_given else "exact Hertz"
+        context = (
+            f"z, K ({k_src}) and G_r of {label}; 'bearingload solve' without --method lists "
+            "the source of every value."
+        )
+        text = method_report(
+            method,
+            resolved.balls,
+            load,
+            resolved.stiffness,
+            resolved.clearance,
+            cage_angle,
+            1.5,
+            fmt,
+            context=context,
+        )
+        emit(text, output)
+        return
     picks = ["min", "mean", "max"] if clearance_pick == "range" else [None]
     cases = [
         solve_bearing(

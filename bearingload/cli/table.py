@@ -6,6 +6,7 @@ from typing import Any
 
 import click
 
+from ..methods import DEFAULT_METHOD, list_methods
 from .bearing_options import CLEARANCE_HELP, Clearance, geometry_options, renamed
 from .options import CONTEXT, CageAngle, Quantity, emit, library_errors, output_options
 
@@ -62,6 +63,14 @@ TABLES = ("k", "kq")
     show_default=True,
     help="Load-deflection exponent m: 1.5 balls, 1.1111 rollers.",
 )
+@click.option(
+    "--method",
+    type=click.Choice([*list_methods(), "all"]),
+    default=DEFAULT_METHOD,
+    show_default=True,
+    help="The model the table is computed with (see 'bearingload solve --help'); all: one table "
+    "comparing every method with its error against the exact answer.",
+)
 @output_options
 @library_errors
 def table(
@@ -80,6 +89,7 @@ def table(
     poisson: float | None,
     cage_angle: Any,
     exponent: float,
+    method: str,
     fmt: str,
     output: str | None,
 ) -> None:
@@ -100,6 +110,8 @@ def table(
       bearingload table k --cage-angle half --z-max 40
       # Table 1 for the ball and raceways of bearing 306 (exact Hertz K), 300 kgf, 20 µm
       bearingload table k --bearing 306 --load 300kgf --clearance 20um
+      # exact, continuum, Stribeck and Palmgren side by side for z = 1-30
+      bearingload table k --method all
     """
     from ..render import render
     from ..tables import Conditions, table_k, table_kq
@@ -128,6 +140,16 @@ def table(
             ),
             {"bearing": "--bearing"},
         )
+        if method != "exact":
+            from ..method_tables import bearing_note
+            from ..tables import Conditions
+
+            cond = Conditions(load, resolved.stiffness, resolved.clearance, cage_angle, 1.5)
+            emit(
+                render([_method_table(name, method, z_max, cond, bearing_note(resolved))], fmt),
+                output,
+            )
+            return
         emit(render([bearing_table(name, resolved, load, z_max, cage_angle)], fmt), output)
         return
     if any(v is not None for v in geometry):
@@ -138,5 +160,23 @@ def table(
 
     k = 1e5 if stiffness is None else stiffness
     cond = Conditions(load, k, clearance_length(clearance), cage_angle, exponent)
+    if method != "exact":
+        emit(render([_method_table(name, method, z_max, cond)], fmt), output)
+        return
     builder = {"k": table_k, "kq": table_kq}[name]
     emit(render([builder(z_max, cond)], fmt), output)
+
+
+def _method_table(name: str, method: str, z_max: int, cond: Any, note: str | None = None) -> Any:
+    """The table of one non-exact method, or the comparison of all (:mod:`bearingload.method_tables`)."""
+    import dataclasses
+
+    from ..method_tables import table_compare, table_method
+
+    if method == "all":
+        table = table_compare(name, z_max, cond)
+    else:
+        table = table_method(name, method, z_max, cond)
+    if note:
+        table = dataclasses.replace(table, notes=[*table.notes, note])
+    return table
