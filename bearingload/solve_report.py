@@ -81,9 +81,9 @@ def solve_report(
     summary_table = Table(
         title=f"Summary ({inputs})",
         columns=[
-            Column("quantity", "quantity"),
+            Column("quantity", "quantity", align="left"),
             Column("value", "value", digits=6),
-            Column("unit", "unit"),
+            Column("unit", "unit", align="left"),
         ],
         rows=[{"quantity": label, "value": v, "unit": unit} for _, label, v, unit, _ in summary],
     )

@@ -316,10 +316,22 @@ def test_q_max_non_decreasing_in_clearance(z, m, half, gaps):
     preloads=st.lists(st.floats(1e-3, 1e4), min_size=2, max_size=6),
 )
 def test_q_max_rises_again_with_preload(z, m, preloads):
-    """Under preload (G_r < 0) Q_max grows with the preload: every ball is pressed harder."""
+    """Under preload (G_r < 0) Q_max first falls a little, while the load zone widens to the whole
+    ring, then rises with the preload: once every ball is loaded, every ball is pressed harder.
+
+    (Found by this test: Q_max is not monotone over all preloads; z = 5, m = 3/2 at unit load and
+    stiffness gives 0.8178 at e = -0.25 and 0.7692 at e = -0.375, confirmed by mpmath.)
+    """
     p = np.sort(np.array(preloads))
     r = solve(z, 1.0, 1.0, -2 * p, 0.0, m)
-    assert np.all(np.diff(r.q_max) >= -1e-12 * r.q_max[1:])
+    # unimodal: non-increasing up to the smallest value, non-decreasing after it
+    low = int(np.argmin(r.q_max))
+    tol = 1e-12 * r.q_max
+    assert np.all(np.diff(r.q_max[: low + 1]) <= tol[1 : low + 1])
+    assert np.all(np.diff(r.q_max[low:]) >= -tol[low + 1 :])
+    everyone = r.loaded_balls == z
+    q_all = r.q_max[everyone]
+    assert np.all(np.diff(q_all) >= -1e-12 * q_all[1:])
 
 
 @settings(max_examples=100, deadline=None)
