@@ -19,6 +19,7 @@ from .bearing import ResolvedBearing
 from .equilibrium import LoadDistribution, solve
 from .life import allowable_load, rating_life
 from .render import Column, Table, render
+from .report_parts import JSON_UNITS, distribution_json, distribution_rows, summary_table
 from .units import KGF
 
 
@@ -91,40 +92,22 @@ def solve_bearing(
     return BearingCase(bearing, load, angle, r, p_i, p_o, life, allow, revolutions)
 
 
-def _summary(case: BearingCase) -> list[tuple[str, str, Any, str]]:
-    r = case.result
-    rows: list[tuple[str, str, Any, str]] = [
-        ("clearance", "radial clearance G_r", case.bearing.clearance * 1e3, "µm"),
-        ("k", "load factor k = Q_max/F_r", float(r.k), "-"),
-        ("K_Q", "load concentration K_Q = k z/2", float(r.K_Q), "-"),
-        ("q_max", "heaviest ball load Q_max", float(r.q_max), "N"),
-        ("q_max_kgf", "heaviest ball load Q_max", float(r.q_max) / KGF, "kgf"),
-        ("loaded_balls", "balls carrying load", int(r.loaded_balls), ""),
-        ("load_zone_deg", "load zone half-angle", float(np.rad2deg(r.load_zone)), "°"),
-        ("deflection", "ring displacement along the load x", float(r.x) * 1e3, "µm"),
-        ("deflection_across", "ring displacement across the load y", float(r.y) * 1e3, "µm"),
-        ("stiffness_radial", "radial stiffness dF_r/dx", float(r.stiffness_radial), "N/mm"),
+def _summary(case: BearingCase) -> list[tuple[str, Any, str]]:
+    rows: list[tuple[str, Any, str]] = [
+        ("radial clearance G_r", case.bearing.clearance * 1e3, "µm")
     ]
+    rows += distribution_rows(case.result)
     if case.p_max_inner is not None:
         rows += [
-            ("p_max_inner", "max contact pressure, inner", case.p_max_inner, "MPa"),
-            ("p_max_outer", "max contact pressure, outer", case.p_max_outer, "MPa"),
+            ("max contact pressure, inner", case.p_max_inner, "MPa"),
+            ("max contact pressure, outer", case.p_max_outer, "MPa"),
         ]
     if case.rating_life is not None:
+        label = f"allowable load C/L^(1/3), L = {case.revolutions:.4g} rev"
         rows += [
-            ("rating_life", "basic rating life L10 = (C/F_r)^3", case.rating_life, "10^6 rev"),
-            (
-                "allowable_load",
-                f"allowable load C/L^(1/3), L = {case.revolutions:.4g} rev",
-                case.allowable_load,
-                "N",
-            ),
-            (
-                "allowable_load_kgf",
-                f"allowable load C/L^(1/3), L = {case.revolutions:.4g} rev",
-                (case.allowable_load or 0.0) / KGF,
-                "kgf",
-            ),
+            ("basic rating life L10 = (C/F_r)^3", case.rating_life, "10^6 rev"),
+            (label, case.allowable_load, "N"),
+            (label, (case.allowable_load or 0.0) / KGF, "kgf"),
         ]
     return rows
 
@@ -166,22 +149,14 @@ def bearing_report(cases: list[BearingCase], fmt: str) -> str:
     first = cases[0]
     summaries = [_summary(c) for c in cases]
     if len(cases) == 1:
-        summary = Table(
-            title=f"Summary ({_inputs(first)})",
-            columns=[
-                Column("quantity", "quantity", align="left"),
-                Column("value", "value", digits=6),
-                Column("unit", "unit", align="left"),
-            ],
-            rows=[{"quantity": lab, "value": v, "unit": u} for _, lab, v, u in summaries[0]],
-        )
+        summary = summary_table(f"Summary ({_inputs(first)})", summaries[0])
     else:
         picks = [c.bearing.clearance_pick or str(i) for i, c in enumerate(cases)]
         rows = []
-        for i, (_, lab, _, unit) in enumerate(summaries[0]):
+        for i, (lab, _, unit) in enumerate(summaries[0]):
             row: dict[str, Any] = {"quantity": lab, "unit": unit}
             for pick, s in zip(picks, summaries, strict=True):
-                row[pick] = s[i][2]
+                row[pick] = s[i][1]
             rows.append(row)
         summary = Table(
             title=(
@@ -222,27 +197,16 @@ def _balls_table(cases: list[BearingCase]) -> Table:
 
 
 def _case_document(case: BearingCase) -> dict[str, Any]:
-    r = case.result
-    doc: dict[str, Any] = {
-        "clearance": case.bearing.clearance,
-        "clearance_pick": case.bearing.clearance_pick,
-        "k": float(r.k),
-        "K_Q": float(r.K_Q),
-        "q_max": float(r.q_max),
-        "loaded_balls": int(r.loaded_balls),
-        "load_zone_deg": float(np.rad2deg(r.load_zone)),
-        "deflection": float(r.x),
-        "deflection_across": float(r.y),
-        "stiffness_radial": float(r.stiffness_radial),
-        "stiffness_matrix": r.stiffness_matrix.tolist(),
-        "p_max_inner": case.p_max_inner,
-        "p_max_outer": case.p_max_outer,
-        "rating_life": case.rating_life,
-        "allowable_load": case.allowable_load,
-        "ball_angles_deg": np.rad2deg(r.ball_angles()),
-        "ball_loads": r.ball_loads(),
-    }
-    return doc
+    return (
+        {"clearance": case.bearing.clearance, "clearance_pick": case.bearing.clearance_pick}
+        | distribution_json(case.result)
+        | {
+            "p_max_inner": case.p_max_inner,
+            "p_max_outer": case.p_max_outer,
+            "rating_life": case.rating_life,
+            "allowable_load": case.allowable_load,
+        }
+    )
 
 
 def _document(cases: list[BearingCase]) -> dict[str, Any]:
@@ -272,20 +236,12 @@ def _document(cases: list[BearingCase]) -> dict[str, Any]:
         doc.update(_case_document(first))
     else:
         doc["cases"] = [_case_document(c) for c in cases]
-    doc["units"] = {
-        "load": "N",
+    doc["units"] = JSON_UNITS | {
         "stiffness": "N/mm^1.5",
         "stiffness_ball": "N/mm^1.5",
         "stiffness_inner": "N/mm^1.5",
         "stiffness_outer": "N/mm^1.5",
-        "clearance": "mm (G_r, total radial play)",
         "clearance_range": "mm",
-        "q_max": "N",
-        "ball_loads": "N",
-        "deflection": "mm",
-        "deflection_across": "mm",
-        "stiffness_radial": "N/mm",
-        "stiffness_matrix": "N/mm",
         "p_max_inner": "MPa (at the heaviest ball load)",
         "p_max_outer": "MPa (at the heaviest ball load)",
         "rating_life": "10^6 revolutions, (C/F_r)^3",

@@ -14,6 +14,7 @@ import numpy as np
 
 from .methods import METHODS, MethodResult, compute, compute_all, relative_error
 from .render import Column, Table, render
+from .report_parts import inputs_json, inputs_text, summary_table
 from .units import KGF
 
 #: How the CLI names the inputs a method ignores.
@@ -30,32 +31,8 @@ def _ignores_text(name: str) -> str:
     return "nothing" if not ignored else ", ".join(ignored)
 
 
-def _inputs(
-    balls: int, load: float, stiffness: float, clearance: float, angle: float, exponent: float
-) -> str:
-    return (
-        f"z = {balls}, F_r = {load:.6g} N ({load / KGF:.6g} kgf), "
-        f"K = {stiffness:.6g} N/mm^{exponent:g}, G_r = {clearance * 1e3:.6g} µm "
-        f"(gap per side {clearance * 500:.6g} µm), cage angle {angle:.6g}°, m = {exponent:.6g}"
-    )
-
-
 def _zone_deg(result: MethodResult) -> float | None:
     return None if result.load_zone is None else float(np.rad2deg(result.load_zone))
-
-
-def _common_json(
-    balls: int, load: float, stiffness: float, clearance: float, angle: float, exponent: float
-) -> dict[str, Any]:
-    """The inputs, in the keys and units of the exact solver's JSON."""
-    return {
-        "balls": balls,
-        "load": load,
-        "stiffness": stiffness,
-        "clearance": clearance,
-        "cage_angle_deg": angle,
-        "exponent": exponent,
-    }
 
 
 def _units(exponent: float) -> dict[str, str]:
@@ -98,19 +75,6 @@ def method_report(
     return _one_line(method, args, fmt, extra)
 
 
-def _summary_table(title: str, rows: list[tuple[str, Any, str]], notes: list[str]) -> Table:
-    return Table(
-        title=title,
-        columns=[
-            Column("quantity", "quantity", align="left"),
-            Column("value", "value", digits=6),
-            Column("unit", "unit", align="left"),
-        ],
-        rows=[{"quantity": q, "value": v, "unit": u} for q, v, u in rows],
-        notes=notes,
-    )
-
-
 def _continuum(args: tuple[Any, ...], fmt: str, extra: list[str]) -> str:
     from .continuum import solve_continuum
 
@@ -122,7 +86,7 @@ def _continuum(args: tuple[Any, ...], fmt: str, extra: list[str]) -> str:
     note = f"{METHODS['continuum'].title}. The continuum has no cage position: --cage-angle is ignored."
     if fmt == "json":
         doc = (
-            _common_json(*args)
+            inputs_json(*args)
             | {
                 "method": "continuum",
                 "k": k,
@@ -151,7 +115,7 @@ def _continuum(args: tuple[Any, ...], fmt: str, extra: list[str]) -> str:
         ("load-zone parameter epsilon", float(r.epsilon), "-"),
     ]
     return render(
-        [_summary_table(f"Continuum model ({_inputs(*args)})", rows, [note, *extra])], fmt
+        [summary_table(f"Continuum model ({inputs_text(*args)})", rows, [note, *extra])], fmt
     )
 
 
@@ -163,7 +127,7 @@ def _one_line(method: str, args: tuple[Any, ...], fmt: str, extra: list[str]) ->
     )
     if fmt == "json":
         doc = (
-            _common_json(*args)
+            inputs_json(*args)
             | {
                 "method": method,
                 "k": r.k,
@@ -182,8 +146,8 @@ def _one_line(method: str, args: tuple[Any, ...], fmt: str, extra: list[str]) ->
         ("heaviest ball load Q_max", r.q_max, "N"),
         ("heaviest ball load Q_max", r.q_max / KGF, "kgf"),
     ]
-    title = f"{method.capitalize()} estimate ({_inputs(*args)})"
-    return render([_summary_table(title, rows, [note, *extra])], fmt)
+    title = f"{method.capitalize()} estimate ({inputs_text(*args)})"
+    return render([summary_table(title, rows, [note, *extra])], fmt)
 
 
 def comparison_rows(results: dict[str, MethodResult]) -> list[dict[str, Any]]:
@@ -208,7 +172,7 @@ def _comparison(args: tuple[Any, ...], fmt: str, extra: list[str]) -> str:
     rows = comparison_rows(compute_all(*args))
     if fmt == "json":
         doc = (
-            _common_json(*args)
+            inputs_json(*args)
             | {
                 "reference": "exact",
                 "methods": {
@@ -232,7 +196,7 @@ def _comparison(args: tuple[Any, ...], fmt: str, extra: list[str]) -> str:
         if row["load_zone_deg"] is None:
             row["load_zone_deg"] = "" if fmt == "csv" else "-"
     table = Table(
-        title=f"Methods side by side ({_inputs(*args)})",
+        title=f"Methods side by side ({inputs_text(*args)})",
         columns=[
             Column("method", "method", align="left"),
             Column("k", "k", "-", 5),

@@ -133,3 +133,40 @@ def library_errors(func: Callable[..., Any]) -> Callable[..., Any]:
             raise click.ClickException(str(exc)) from exc
 
     return wrapper
+
+
+def cage_angle_option(func: Callable[..., Any]) -> Callable[..., Any]:
+    """``--cage-angle DEG|half``, shared by ``solve`` and ``table``."""
+    return click.option(
+        "--cage-angle",
+        type=CageAngle(),
+        default="0",
+        show_default=True,
+        help="Angle of ball 1 from the load line in degrees; 0 = a ball under the load, "
+        "'half' = the load between two balls.",
+    )(func)
+
+
+def exponent_option(func: Callable[..., Any]) -> Callable[..., Any]:
+    """``--exponent/-m``, shared by ``solve`` and ``table``."""
+    return click.option(
+        "--exponent",
+        "-m",
+        type=float,
+        default=1.5,
+        show_default=True,
+        help="Load-deflection exponent m: 1.5 for balls, 1.1111 (10/9) for rollers.",
+    )(func)
+
+
+def method_option(help_text: str) -> Callable[[Callable[..., Any]], Callable[..., Any]]:
+    """``--method`` over the registered methods and ``all``; imports no numpy."""
+    from ..methods import DEFAULT_METHOD, list_methods
+
+    return click.option(
+        "--method",
+        type=click.Choice([*list_methods(), "all"]),
+        default=DEFAULT_METHOD,
+        show_default=True,
+        help=help_text,
+    )

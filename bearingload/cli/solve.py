@@ -6,9 +6,18 @@ from typing import Any
 
 import click
 
-from ..methods import DEFAULT_METHOD, list_methods
 from .bearing_options import CLEARANCE_HELP, Clearance, geometry_options
-from .options import CONTEXT, CageAngle, Quantity, emit, library_errors, output_options, units_help
+from .options import (
+    CONTEXT,
+    Quantity,
+    cage_angle_option,
+    emit,
+    exponent_option,
+    library_errors,
+    method_option,
+    output_options,
+    units_help,
+)
 
 
 @click.command(context_settings=CONTEXT)
@@ -58,30 +67,12 @@ from .options import CONTEXT, CageAngle, Quantity, emit, library_errors, output_
     help="Life L [revolutions] for the allowable load C/(L/10^6)^(1/3). The default is the "
     "worked value of Kuzmenko (2010) §3.2 (36e6 rev, e.g. 1000 h at 600 rpm); set your own.",
 )
-@click.option(
-    "--cage-angle",
-    type=CageAngle(),
-    default="0",
-    show_default=True,
-    help="Angle of ball 1 from the load line in degrees; 0 = a ball under the load, "
-    "'half' = the load between two balls.",
-)
-@click.option(
-    "--exponent",
-    "-m",
-    type=float,
-    default=1.5,
-    show_default=True,
-    help="Load-deflection exponent m: 1.5 for balls, 1.1111 (10/9) for rollers.",
-)
-@click.option(
-    "--method",
-    type=click.Choice([*list_methods(), "all"]),
-    default=DEFAULT_METHOD,
-    show_default=True,
-    help="exact: ring equilibrium, every ball; continuum: loads smeared over the raceway; "
+@cage_angle_option
+@exponent_option
+@method_option(
+    "exact: ring equilibrium, every ball; continuum: loads smeared over the raceway; "
     "stribeck: 4.37 F_r/z; palmgren: 5 F_r/z (these two ignore stiffness, clearance, cage "
-    "angle and exponent); all: every method side by side with its error against exact.",
+    "angle and exponent); all: every method side by side with its error against exact."
 )
 @output_options
 @library_errors

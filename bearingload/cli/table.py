@@ -6,9 +6,17 @@ from typing import Any
 
 import click
 
-from ..methods import DEFAULT_METHOD, list_methods
 from .bearing_options import CLEARANCE_HELP, Clearance, geometry_options, renamed
-from .options import CONTEXT, CageAngle, Quantity, emit, library_errors, output_options
+from .options import (
+    CONTEXT,
+    Quantity,
+    cage_angle_option,
+    emit,
+    exponent_option,
+    library_errors,
+    method_option,
+    output_options,
+)
 
 TABLES = ("k", "kq")
 
@@ -48,28 +56,11 @@ TABLES = ("k", "kq")
     help="Where in a clearance class to take G_r.",
 )
 @geometry_options
-@click.option(
-    "--cage-angle",
-    type=CageAngle(),
-    default="0",
-    show_default=True,
-    help="Cage angle in degrees, or 'half' (the load between two balls).",
-)
-@click.option(
-    "--exponent",
-    "-m",
-    type=float,
-    default=1.5,
-    show_default=True,
-    help="Load-deflection exponent m: 1.5 balls, 1.1111 rollers.",
-)
-@click.option(
-    "--method",
-    type=click.Choice([*list_methods(), "all"]),
-    default=DEFAULT_METHOD,
-    show_default=True,
-    help="The model the table is computed with (see 'bearingload solve --help'); all: one table "
-    "comparing every method with its error against the exact answer.",
+@cage_angle_option
+@exponent_option
+@method_option(
+    "The model the table is computed with (see 'bearingload solve --help'); all: one table "
+    "comparing every method with its error against the exact answer."
 )
 @output_options
 @library_errors
