@@ -32,9 +32,14 @@ import math
 from dataclasses import dataclass
 
 from .catalog import DEFAULT_F_I, DEFAULT_F_O, BearingGeometry, lookup
-from .clearance import PICKS, clearance_range, looks_like_class, parse_class
+from .clearance import (
+    _NEEDS_BORE,
+    PICKS,
+    ClearanceSpec,
+    clearance_range,
+    parse_clearance,
+)
 from .errors import InputError
-from .units import parse_quantity
 
 #: Young's modulus used when none is given: bearing steel, NSK 208 000 MPa. [MPa]
 DEFAULT_MODULUS = 208_000.0
@@ -153,73 +158,6 @@ def _class_source(b: ResolvedBearing, pick: str) -> str:
     old = next(p.source for p in b.provenance if p.key == "clearance")
     head, _, _ = old.rpartition(", ")
     return f"{head}, {pick} (clearance table)"
-
-
-@dataclass(frozen=True)
-class ClearanceSpec:
-    """A clearance as typed: a length G_r [mm] or a clearance class."""
-
-    length: float | None = None
-    cls: str | None = None
-    text: str = ""
-
-
-def parse_clearance(text: str | float | None) -> ClearanceSpec | None:
-    """Read a clearance option: a length (bare number = mm) or a class.
-
-    ``C2 CN C3 C4 C5`` (also ``N``, ``normal``), GOST 24810 groups written ``G6 G7 G8 G9``; a
-    bare number is always a length, so ``7`` means 7 mm, not group 7.
-
-    Returns
-    -------
-    ClearanceSpec or None
-        None when ``text`` is None.
-
-    Raises
-    ------
-    InputError
-        (parameter ``clearance``) neither a length nor a class.
-
-    >>> parse_clearance("C3").cls, parse_clearance("g7").cls, parse_clearance("20um").length
-    ('C3', 'C3', 0.02)
-    """
-    if text is None:
-        return None
-    if isinstance(text, (int, float)):
-        return ClearanceSpec(length=float(text), text=repr(text))
-    if looks_like_class(text):
-        return ClearanceSpec(cls=parse_class(text), text=str(text))
-    try:
-        return ClearanceSpec(
-            length=parse_quantity(text, "length", parameter="clearance"), text=text
-        )
-    except InputError as exc:
-        raise InputError(
-            "clearance",
-            f"{str(exc).split(': ', 1)[-1]}; or a clearance class C2, CN, C3, C4, C5 "
-            "(GOST groups G6, G7, G8, G9)",
-        ) from None
-
-
-def clearance_length(spec: ClearanceSpec | None) -> float:
-    """G_r [mm] of a clearance given as a length (0 for None); a class needs a bearing's bore.
-
-    Raises
-    ------
-    InputError
-        (parameter ``clearance``) for a class.
-    """
-    if spec is None:
-        return 0.0
-    if spec.length is None:
-        raise InputError("clearance", _NEEDS_BORE.format(spec.text))
-    return spec.length
-
-
-_NEEDS_BORE = (
-    "a clearance class ({}) is resolved by the bore; give a bearing designation, or the "
-    "clearance as a length, e.g. --clearance 20um"
-)
 
 
 def _positive(name: str, value: float | None) -> None:

@@ -23,6 +23,7 @@ a damped Newton iteration on the potential in two unknowns.
 
 from __future__ import annotations
 
+import functools
 from dataclasses import dataclass
 from typing import Any
 
@@ -232,7 +233,7 @@ def solve(
         )
 
     n = z.size
-    res = {
+    res = {  # in group order until all groups are solved
         "xi": np.zeros(n),  # approach of the reference ball (nearest the load line), scaled
         "eta": np.zeros(n),  # transverse displacement, scaled
         "x0": np.ones(n),  # reference position where the nearest balls touch, in units of e
@@ -244,19 +245,26 @@ def solve(
         "reference": np.zeros((n, 2)),  # (mu, h) of the straddling balls
     }
 
-    # one group per (z, cage kind, clearance sign): the cases of a group share their ring
+    # one group per (z, cage kind, clearance sign): the cases of a group share their ring.
+    # Work in group order (contiguous slices), and put the cases back in their order once.
     keys = (z.astype(np.int64) * 3 + kind) * 2 + (e_hat < 0)
     order = np.argsort(keys, kind="stable")
     group_keys, starts = np.unique(keys[order], return_index=True)
-    for key, idx in zip(group_keys, np.split(order, starts[1:]), strict=True):
+    ends = np.append(starts[1:], n)
+    e_sorted, m_sorted, frac_sorted = e_hat[order], m[order], frac[order]
+    for key, start, end in zip(group_keys, starts, ends, strict=True):
         zz, kd, preload = int(key // 6), int(key // 2 % 3), bool(key % 2)
-        eh, mm = e_hat[idx], m[idx]
+        part = slice(int(start), int(end))
+        eh, mm = e_sorted[part], m_sorted[part]
         if kd == 2:
-            ring = _Ring.general(zz, frac[idx] * 2.0 * np.pi / zz)
-            _store(_solve_general(ring, eh, mm), ring, idx, eh, mm, False, res)
+            ring = _Ring.general(zz, frac_sorted[part] * 2.0 * np.pi / zz)
+            _store(_solve_general(ring, eh, mm), ring, part, eh, mm, False, res)
         else:
             ring = _Ring.symmetric(zz, half_pitch=kd == 1, front=not preload)
-            _store(_solve_symmetric(ring, eh, mm), ring, idx, eh, mm, True, res)
+            _store(_solve_symmetric(ring, eh, mm), ring, part, eh, mm, True, res)
+    for name, sorted_values in res.items():
+        res[name] = np.empty_like(sorted_values)
+        res[name][order] = sorted_values
 
     xi, eta, hess = res["xi"], res["eta"], res["hess"]
     x0, y0 = res["x0"], res["y0"]
@@ -366,6 +374,7 @@ class _Ring:
         )
 
     @classmethod
+    @functools.lru_cache(maxsize=4096)
     def symmetric(cls, z: int, half_pitch: bool, front: bool) -> _Ring:
         """Half of a ring symmetric about the load line, each angle with its multiplicity.
 
@@ -524,7 +533,8 @@ def _newton_convex(ring: _Ring, e_hat: np.ndarray, m: float, start: np.ndarray) 
     active = np.arange(n)
     for it in range(1, MAX_ITERATIONS + 1):
         xa = xi[active]
-        delta = xa[:, None] * c - e_hat[active][:, None] * u
+        delta = xa[:, None] * c
+        delta -= e_hat[active][:, None] * u
         np.maximum(delta, 0.0, out=delta)
         if m == 1.5:
             root = np.sqrt(delta)
@@ -634,7 +644,7 @@ def _check(
 def _store(
     out: _Solved,
     ring: _Ring,
-    idx: np.ndarray,
+    idx: slice,
     e_hat: np.ndarray,
     m: np.ndarray,
     symmetric: bool,

@@ -18,12 +18,12 @@ CLEARANCE_HELP = (
 
 
 class Clearance(click.ParamType):
-    """A clearance length or class, read by :func:`bearingload.bearing.parse_clearance`."""
+    """A clearance length or class, read by :func:`bearingload.clearance.parse_clearance`."""
 
     name = "LENGTH|CLASS"
 
     def convert(self, value: Any, param: click.Parameter | None, ctx: click.Context | None) -> Any:
-        from ..bearing import ClearanceSpec, parse_clearance
+        from ..clearance import ClearanceSpec, parse_clearance
 
         if isinstance(value, ClearanceSpec):
             return value

@@ -120,7 +120,7 @@ def solve(
       bearingload solve -z 8 -F 300kgf -K 4700kgf/mm^1.5 -G 20um --method all
     """
     if bearing is None and ball_diameter is None and pitch_diameter is None:
-        from ..bearing import clearance_length
+        from ..clearance import clearance_length
         from ..solve_report import solve_report
 
         if balls is None:

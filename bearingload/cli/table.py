@@ -147,7 +147,7 @@ def table(
         raise click.UsageError(
             "the geometry and material options (--ball-diameter ... --poisson) need --bearing"
         )
-    from ..bearing import clearance_length
+    from ..clearance import clearance_length
 
     k = 1e5 if stiffness is None else stiffness
     cond = Conditions(load, k, clearance_length(clearance), cage_angle, exponent)
