@@ -233,17 +233,8 @@ def solve(
         )
 
     n = z.size
-    res = {  # in group order until all groups are solved
-        "xi": np.zeros(n),  # approach of the reference ball (nearest the load line), scaled
-        "eta": np.zeros(n),  # transverse displacement, scaled
-        "x0": np.ones(n),  # reference position where the nearest balls touch, in units of e
-        "y0": np.zeros(n),
-        "iterations": np.zeros(n, dtype=np.int64),
-        "q_hat": np.zeros(n),
-        "loaded": np.zeros(n, dtype=np.int64),
-        "hess": np.zeros((n, 3)),  # scaled Hxx, Hxy, Hyy
-        "reference": np.zeros((n, 2)),  # (mu, h) of the straddling balls
-    }
+    # per-case results, one row each, in group order until every group is solved (columns: _COL)
+    res = np.zeros((n, len(_COL)))
 
     # one group per (z, cage kind, clearance sign): the cases of a group share their ring.
     # Work in group order (contiguous slices), and put the cases back in their order once.
@@ -262,12 +253,10 @@ def solve(
         else:
             ring = _Ring.symmetric(zz, half_pitch=kd == 1, front=not preload)
             _store(_solve_symmetric(ring, eh, mm), ring, part, eh, mm, True, res)
-    for name, sorted_values in res.items():
-        res[name] = np.empty_like(sorted_values)
-        res[name][order] = sorted_values
-
-    xi, eta, hess = res["xi"], res["eta"], res["hess"]
-    x0, y0 = res["x0"], res["y0"]
+    rows = np.empty_like(res)
+    rows[order] = res  # back to the order of the cases, all columns at once
+    xi, eta, x0, y0 = (rows[:, _COL[k]] for k in ("xi", "eta", "x0", "y0"))
+    hxx, hxy, hyy = (rows[:, _COL[k]] for k in ("hxx", "hxy", "hyy"))
     e = g / 2.0
     x = e * x0 + xi * scale
     y = e * y0 + eta * scale
@@ -283,14 +272,11 @@ def solve(
         one_minus = np.where(e > 0, np.maximum(r2_e2, 0.0) / (r * (r + e)), 1.0 - e / r)
     one_minus = np.clip(one_minus, 0.0, 2.0)
     zone = 2.0 * np.arcsin(np.sqrt(one_minus / 2.0))
-    hscale = (f / scale)[:, None] * hess
+    to_n_mm = f / scale  # scaled stiffness -> N/mm
     matrix = np.empty((n, 2, 2))
-    matrix[:, 0, 0], matrix[:, 0, 1], matrix[:, 1, 0], matrix[:, 1, 1] = (
-        hscale[:, 0],
-        hscale[:, 1],
-        hscale[:, 1],
-        hscale[:, 2],
-    )
+    matrix[:, 0, 0] = hxx * to_n_mm
+    matrix[:, 0, 1] = matrix[:, 1, 0] = hxy * to_n_mm
+    matrix[:, 1, 1] = hyy * to_n_mm
 
     def shaped(a: np.ndarray) -> np.ndarray:
         return a.reshape(shape)
@@ -304,13 +290,13 @@ def solve(
         exponent=shaped(m),
         x=shaped(x),
         y=shaped(y),
-        q_max=shaped(res["q_hat"] * f),
-        loaded_balls=shaped(res["loaded"]),
+        q_max=shaped(rows[:, _COL["q_hat"]] * f),
+        loaded_balls=shaped(rows[:, _COL["loaded"]].astype(np.int64)),
         load_zone=shaped(zone),
         stiffness_matrix=matrix.reshape(shape + (2, 2)),
-        iterations=shaped(res["iterations"]),
+        iterations=shaped(rows[:, _COL["iterations"]].astype(np.int64)),
         offset=np.stack([xi * scale, eta * scale], axis=-1).reshape(shape + (2,)),
-        reference=res["reference"].reshape(shape + (2,)),
+        reference=rows[:, [_COL["mu"], _COL["h"]]].reshape(shape + (2,)),
     )
 
 
@@ -641,42 +627,57 @@ def _check(
         )
 
 
+#: Columns of the per-case result rows of :func:`solve`.
+_COL = {
+    name: i
+    for i, name in enumerate(
+        ("xi", "eta", "x0", "y0", "q_hat", "loaded", "hxx", "hxy", "hyy", "mu", "h", "iterations")
+    )
+}
+
+
 def _store(
     out: _Solved,
     ring: _Ring,
-    idx: slice,
+    part: slice,
     e_hat: np.ndarray,
     m: np.ndarray,
     symmetric: bool,
-    res: dict[str, np.ndarray],
+    res: np.ndarray,
 ) -> None:
-    """Write one group's solution and the quantities derived from it into the output arrays."""
-    res["xi"][idx], res["eta"][idx] = out.xi, out.eta
-    res["x0"][idx], res["y0"][idx], res["iterations"][idx] = ring.x0, ring.y0, out.iterations
-    res["reference"][idx, 0], res["reference"][idx, 1] = ring.mu, ring.h
+    """Write one group's solution and the quantities derived from it into its rows of ``res``.
+
+    ``xi, eta``: scaled displacement from the reference position ``e (x0, y0)``; ``q_hat``: the
+    heaviest scaled ball load; ``hxx, hxy, hyy``: scaled stiffness; ``mu, h``: reference angles.
+    """
+    rows = res[part]
+    col = _COL
+    rows[:, col["xi"]], rows[:, col["eta"]] = out.xi, out.eta
+    rows[:, col["x0"]], rows[:, col["y0"]] = ring.x0, ring.y0
+    rows[:, col["mu"]], rows[:, col["h"]] = ring.mu, ring.h
+    rows[:, col["iterations"]] = out.iterations
     if out.derived is not None:  # symmetric ring: the reference ball carries the most
         loaded, hxx, hyy = out.derived
-        res["q_hat"][idx] = (out.xi * ring.c_max) ** m
-        res["loaded"][idx] = np.rint(loaded)
-        res["hess"][idx, 0], res["hess"][idx, 2] = hxx, hyy
+        rows[:, col["q_hat"]] = (out.xi * ring.c_max) ** m
+        rows[:, col["loaded"]] = np.rint(loaded)
+        rows[:, col["hxx"]], rows[:, col["hyy"]] = hxx, hyy
         return
     delta = out.xi[:, None] * ring.c
     if not symmetric:
         delta += out.eta[:, None] * ring.s
     delta -= e_hat[:, None] * ring.u
-    loaded = delta > 0
+    loaded_mask = delta > 0
     np.maximum(delta, 0.0, out=delta)
     if np.all(m == 1.5):
         dq = 1.5 * np.sqrt(delta)
     else:
         _, dq = _power_terms(delta, m)
     if symmetric:  # the reference ball (u = 0, largest cos) carries the most
-        q_hat = (out.xi * ring.c_max) ** m
+        rows[:, col["q_hat"]] = (out.xi * ring.c_max) ** m
     else:
-        q_hat = delta.max(axis=1) ** m
-    res["q_hat"][idx] = q_hat
-    res["loaded"][idx] = np.rint(_dot(loaded.astype(float), ring.w))
-    res["hess"][idx, 0] = _dot(dq, ring.w * ring.c * ring.c)
+        rows[:, col["q_hat"]] = delta.max(axis=1) ** m
+    rows[:, col["loaded"]] = np.rint(_dot(loaded_mask.astype(float), ring.w))
+    rows[:, col["hxx"]] = _dot(dq, ring.w * ring.c * ring.c)
     if not symmetric:
-        res["hess"][idx, 1] = _dot(dq, ring.w * ring.c * ring.s)
-    res["hess"][idx, 2] = _dot(dq, ring.w * ring.s * ring.s)
+        rows[:, col["hxy"]] = _dot(dq, ring.w * ring.c * ring.s)
+    rows[:, col["hyy"]] = _dot(dq, ring.w * ring.s * ring.s)

@@ -103,7 +103,7 @@ def main() -> None:
     print("bearingload benchmark (one core; BLAS threads pinned to 1)")
     print("  cases: z 3-40, loads 1 N-10 kN, clearance 0 or 0.1 um-0.5 mm, cage 0 or half pitch")
     print(
-        f"  vectorised engine   : {rate_vec:12,.0f} cases/s  ({N_CASES:,} cases in {t_vec:.3f} s, best of 3)"
+        f"  vectorised engine   : {rate_vec:12,.0f} cases/s  ({N_CASES:,} cases in {t_vec:.3f} s, best of 7)"
     )
     print(
         f"  per-case brentq loop: {rate_loop:12,.0f} cases/s  ({N_BASELINE:,} cases in {t_loop:.3f} s)"
