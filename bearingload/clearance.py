@@ -30,11 +30,9 @@ References
 
 from __future__ import annotations
 
-import csv
 import functools
 import re
 from dataclasses import dataclass
-from importlib import resources
 
 from .errors import InputError
 from .units import parse_quantity
@@ -86,6 +84,9 @@ def table() -> tuple[ClearanceRow, ...]:
     tuple of ClearanceRow
         Limits converted from the file's micrometres to [mm].
     """
+    import csv  # the table is read on first use only
+    from importlib import resources
+
     path = resources.files("bearingload").joinpath("data/clearance_deep_groove.csv")
     rows = []
     for rec in csv.DictReader(path.read_text(encoding="utf-8").splitlines()):

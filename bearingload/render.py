@@ -9,10 +9,8 @@ formats carry each column's display precision.
 
 from __future__ import annotations
 
-import json
 import math
 import os
-import tempfile
 from collections.abc import Sequence
 from dataclasses import dataclass
 from typing import Any
@@ -90,6 +88,8 @@ def render(tables: Sequence[Table], fmt: str, *, document: dict[str, Any] | None
         raise ValueError(f"unknown format {fmt!r}; allowed: {', '.join(FORMATS)}")
     if fmt == "json":
         doc = document if document is not None else _table_documents(tables)
+        import json
+
         return json.dumps(_machine_tree(doc), indent=2, ensure_ascii=False) + "\n"
     blocks = []
     for t in tables:
@@ -173,6 +173,8 @@ def _machine_tree(obj: Any) -> Any:
 def write_atomic(text: str, path: str) -> None:
     """Write ``text`` to ``path`` whole or not at all (temporary file, then rename)."""
     directory = os.path.dirname(os.path.abspath(path))
+    import tempfile  # imported here: it costs more than the rest of a terminal run's rendering
+
     fd, tmp = tempfile.mkstemp(prefix=".bearingload-", dir=directory)
     try:
         with os.fdopen(fd, "w", encoding="utf-8", newline="\n") as fh:

@@ -6,13 +6,33 @@ Commands live one per module; each builds its rows with the library and prints t
 
 from __future__ import annotations
 
+import importlib
+
 import click
 
 from .. import __version__
 from .options import CONTEXT
 
+#: Command name -> module of this package defining a command object of the same name.
+COMMANDS = {"solve": "solve", "table": "table", "catalog": "catalog", "fit": "fit"}
 
-@click.group(context_settings=CONTEXT)
+
+class LazyGroup(click.Group):
+    """A group that imports a command's module only when that command runs (or help lists it),
+    so a terminal calculation pays for the one command it uses."""
+
+    def list_commands(self, ctx: click.Context) -> list[str]:
+        return list(COMMANDS)
+
+    def get_command(self, ctx: click.Context, cmd_name: str) -> click.Command | None:
+        if cmd_name not in COMMANDS:
+            return None
+        module = importlib.import_module(f"{__name__}.{COMMANDS[cmd_name]}")
+        command: click.Command = getattr(module, cmd_name)
+        return command
+
+
+@click.group(cls=LazyGroup, context_settings=CONTEXT)
 @click.version_option(__version__, "--version", prog_name="bearingload")
 def main() -> None:
     """Load distribution among the balls (and rollers) of a radial rolling bearing.
@@ -31,18 +51,6 @@ def main() -> None:
       bearingload catalog show 306
       bearingload fit examples/bearing208_kuzmenko2014.csv --load-unit kgf --balls 9
     """
-
-
-def _register() -> None:
-    from . import catalog, fit, solve, table
-
-    main.add_command(solve.solve)
-    main.add_command(table.table)
-    main.add_command(catalog.catalog)
-    main.add_command(fit.fit)
-
-
-_register()
 
 
 def run(argv: list[str] | None = None) -> None:
