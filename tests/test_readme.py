@@ -30,7 +30,8 @@ def test_readme_has_console_examples():
 
 
 @pytest.mark.parametrize("command, expected", console_examples())
-def test_readme_console_example(command, expected):
+def test_readme_console_example(command, expected, monkeypatch):
+    monkeypatch.chdir(README.parent)  # example files are named relative to the repository
     args = shlex.split(command)
     assert args[0] == "bearingload"
     result = CliRunner().invoke(main, args[1:], catch_exceptions=False)
