@@ -193,7 +193,7 @@ def test_timoshenko_table(theta, m, n):
 
 def test_ball_stiffness_near_nsk_approximation():
     """NSK's catalogue approach of a ball between both raceways, delta = 0.00044 (Q^2/D_w)^(1/3)
-    (mm, N; shared/reference/catalog.md §3), i.e. K = sqrt(D_w)/0.00044^1.5, for bearing 306
+    (mm, N; NSK "Rolling Bearings" catalogue, section 15.1), i.e. K = sqrt(D_w)/0.00044^1.5, for 306
     (D_w = 12.303 mm) and usual conformities 0.515/0.52: a cross-check within 10 %."""
     k = ball_stiffness(12.303, 51.0, 0.515, 0.52).ball
     nsk = math.sqrt(12.303) / 0.00044**1.5
