@@ -1,6 +1,6 @@
 """The ring-equilibrium engine: the exact discrete load distribution of a radial bearing.
 
-Every discrete model of the package is a case of this one (DOMAIN.md §1; Kurochkin 1973, eqs. 1.1-1.8;
+Every discrete model of the package is a case of this one (Kurochkin 1973, eqs. 1.1-1.8;
 Kuzmenko 2010, §1-3). Conventions:
 
 * Outer ring fixed, radial load ``F_r`` on the inner ring; angles measured from the load line.

@@ -147,15 +147,34 @@ def cage_angle_option(func: Callable[..., Any]) -> Callable[..., Any]:
     )(func)
 
 
+class Exponent(click.ParamType):
+    """A load-deflection exponent as a number or a fraction: ``1.5``, ``3/2``, ``10/9``."""
+
+    name = "M"
+
+    def convert(
+        self, value: Any, param: click.Parameter | None, ctx: click.Context | None
+    ) -> float:
+        if isinstance(value, float):
+            return value
+        text = str(value).strip()
+        num, slash, den = text.partition("/")
+        try:
+            m = float(num) / float(den) if slash else float(text)
+        except (ValueError, ZeroDivisionError):
+            self.fail(f"{value!r} is neither a number nor a fraction like 10/9", param, ctx)
+        return m
+
+
 def exponent_option(func: Callable[..., Any]) -> Callable[..., Any]:
     """``--exponent/-m``, shared by ``solve`` and ``table``."""
     return click.option(
         "--exponent",
         "-m",
-        type=float,
+        type=Exponent(),
         default=1.5,
         show_default=True,
-        help="Load-deflection exponent m: 1.5 for balls, 1.1111 (10/9) for rollers.",
+        help="Load-deflection exponent m: 1.5 (or 3/2) for balls, 10/9 for rollers.",
     )(func)
 
 

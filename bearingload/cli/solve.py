@@ -98,7 +98,7 @@ def solve(
 ) -> None:
     """Solve the exact ring equilibrium of one bearing: every ball's load and a summary.
 
-    The inner ring moves until the ball forces balance the radial load (DOMAIN: Kurochkin 1973,
+    The inner ring moves until the ball forces balance the radial load (Kurochkin 1973,
     Kuzmenko 2010). Ball 1 sits at the cage angle; balls are numbered counter-clockwise.
 
     BEARING is a catalogue designation (306, 6306-2RS/C3, 75-313; see 'bearingload catalog'):
