@@ -19,7 +19,13 @@ from .bearing import ResolvedBearing
 from .equilibrium import LoadDistribution, solve
 from .life import allowable_load, rating_life
 from .render import Column, Table, render
-from .report_parts import JSON_UNITS, distribution_json, distribution_rows, summary_table
+from .report_parts import (
+    JSON_UNITS,
+    cage_angle_deg,
+    distribution_json,
+    distribution_rows,
+    summary_table,
+)
 from .units import KGF
 
 
@@ -64,7 +70,7 @@ def solve_bearing(
         rating life (C/F_r)^3 and the allowable load (when C is known).
     """
     z = bearing.balls
-    angle = 180.0 / z if cage_angle == "half" else float(cage_angle)
+    angle = cage_angle_deg(cage_angle, z)
     r = solve(z, load, bearing.stiffness, bearing.clearance, angle, 1.5)
     p_i = p_o = None
     if (

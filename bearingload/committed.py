@@ -53,5 +53,6 @@ def write_all(directory: str) -> list[str]:
 
 
 if __name__ == "__main__":  # pragma: no cover - exercised by `make tables`
-    for name in write_all(sys.argv[1] if len(sys.argv) > 1 else "tables"):
-        print(f"wrote tables/{name}")
+    target = sys.argv[1] if len(sys.argv) > 1 else "tables"
+    for name in write_all(target):
+        print(f"wrote {os.path.join(target, name)}")

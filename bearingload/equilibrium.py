@@ -120,9 +120,9 @@ class LoadDistribution:
         return schur
 
     def ball_angles(self) -> np.ndarray:
-        """Angles ``phi_i`` of balls 1..z from the load line, for one case. [rad]"""
+        """Angles ``phi_i`` of balls 1..z from the load line, in [0, 2 pi), for one case. [rad]"""
         z = int(self._one(self.balls))
-        return float(self._one(self.cage_angle)) + 2.0 * np.pi * np.arange(z) / z
+        return np.mod(float(self._one(self.cage_angle)) + 2.0 * np.pi * np.arange(z) / z, 2 * np.pi)
 
     def ball_approaches(self) -> np.ndarray:
         """Approach ``delta_i`` of balls 1..z (negative: the gap left), for one case. [mm]
@@ -210,14 +210,17 @@ def solve(
     f = validate.positive("load", load, "N")
     kk = validate.positive("stiffness", stiffness, "N/mm^m")
     g = validate.finite("clearance", clearance)
-    phi1 = np.deg2rad(validate.finite("cage_angle", cage_angle))
+    # reduce in degrees first (exact), so a huge angle keeps its position on the ring
+    phi1 = np.deg2rad(np.mod(validate.finite("cage_angle", cage_angle), 360.0))
     m = validate.exponent(exponent)
     z, f, kk, g, phi1, m = np.broadcast_arrays(z, f, kk, g, phi1, m)
     shape = z.shape
     z, f, kk, g, phi1, m = (a.ravel() for a in (z, f, kk, g, phi1, m))
 
-    scale = (f / kk) ** (1.0 / m)  # approach of one ball carrying the whole load [mm]
-    e_hat = (g / 2.0) / scale
+    with np.errstate(all="ignore"):
+        scale = (f / kk) ** (1.0 / m)  # approach of one ball carrying the whole load [mm]
+        e_hat = (g / 2.0) / scale
+    _check_range(scale, e_hat)
     pitch = 2.0 * np.pi / z
     frac = np.mod(phi1, pitch) / pitch
     frac = np.where(frac > 1.0 - SYMMETRY_SNAP, 0.0, frac)
@@ -298,6 +301,32 @@ def solve(
         offset=np.stack([xi * scale, eta * scale], axis=-1).reshape(shape + (2,)),
         reference=rows[:, [_COL["mu"], _COL["h"]]].reshape(shape + (2,)),
     )
+
+
+#: Range of the one-ball approach (F_r/K)^(1/m) the solver accepts, and of the clearance in
+#: units of it: inside it every intermediate value is a normal double. [mm], [-]
+APPROACH_RANGE = (1e-100, 1e100)
+CLEARANCE_RATIO_MAX = 1e100
+
+
+def _check_range(scale: np.ndarray, e_hat: np.ndarray) -> None:
+    """Reject finite inputs whose scaled problem would overflow or underflow double precision."""
+    lo, hi = APPROACH_RANGE
+    bad = ~((scale >= lo) & (scale <= hi))
+    if np.any(bad):
+        raise InputError(
+            "load",
+            f"load and stiffness give a one-ball approach (F_r/K)^(1/m) = "
+            f"{np.asarray(scale)[bad].flat[0]:.3g} mm, outside the {lo:g} to {hi:g} mm the "
+            "solver resolves; check the units of the load and the stiffness",
+        )
+    bad = ~(np.abs(e_hat) <= CLEARANCE_RATIO_MAX)
+    if np.any(bad):
+        raise InputError(
+            "clearance",
+            f"must be at most {CLEARANCE_RATIO_MAX:g} times the one-ball approach "
+            "(F_r/K)^(1/m) in size; check its unit",
+        )
 
 
 def _snapped_cos(phi: np.ndarray) -> np.ndarray:

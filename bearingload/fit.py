@@ -146,8 +146,11 @@ def fit_two_point(load: Any, displacement: Any, base_points: Any = None) -> Powe
             f"the two base points have the same displacement ({u1:g} mm); "
             "the exponent n = lg(Q1/Q2)/lg(u1/u2) is undefined",
         )
-    n = math.log(q1 / q2) / math.log(u1 / u2)
-    c = q1 / u1**n
+    n = (math.log(q1) - math.log(q2)) / (math.log(u1) - math.log(u2))  # no under/overflow
+    with np.errstate(over="ignore", under="ignore"):
+        c = float(q1 / np.float64(u1) ** n)  # exact through the first base point
+        if not (math.isfinite(c) and c > 0):  # extreme data: the same C through logarithms
+            c = float(np.exp(math.log(q1) - n * math.log(u1)))
     return _result(q, u, c, n, "two_point")
 
 

@@ -166,7 +166,21 @@ def build_fit_report(
     fits = {}
     for key, method, _ in FITS:
         kwargs = {"base_points": base} if method == "two_point" and base is not None else {}
-        fits[key] = fit_power_law(m.load, m.displacement, method, **kwargs)
+        with np.errstate(all="ignore"):
+            fit = fit_power_law(m.load, m.displacement, method, **kwargs)
+        if not (np.isfinite(fit.coefficient) and np.isfinite(fit.exponent)):
+            raise InputError(
+                path,
+                f"the {method.replace('_', ' ')} fit of Q = C u^n overflows double precision "
+                f"(n = {fit.exponent:.4g}); the loads or displacements span too many decades",
+            )
+        if fit.exponent <= 0:
+            raise InputError(
+                path,
+                f"the {method.replace('_', ' ')} fit gives n = {fit.exponent:.4g} <= 0: the load "
+                "falls as the displacement grows; a bearing's load-displacement curve rises",
+            )
+        fits[key] = fit
     if base is None:
         i1, i2 = int(np.argmin(m.load)), int(np.argmax(m.load))
         pts = ((m.load[i1], m.displacement[i1]), (m.load[i2], m.displacement[i2]))

@@ -73,7 +73,11 @@ def rating_life(C: ArrayLike, P: ArrayLike, exponent: float = BALL_LIFE_EXPONENT
     c = _positive("C", C)
     p = _positive("load", P)
     e = _positive("exponent", exponent)
-    return _out((c / p) ** e)
+    with np.errstate(over="ignore"):
+        life = (c / p) ** e
+    if not np.all(np.isfinite(life)):
+        raise InputError("load", "is so small that the rating life (C/P)^p overflows")
+    return _out(life)
 
 
 def allowable_load(

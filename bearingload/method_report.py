@@ -14,7 +14,7 @@ import numpy as np
 
 from .methods import METHODS, MethodResult, compute, compute_all, relative_error
 from .render import Column, Table, render
-from .report_parts import inputs_json, inputs_text, summary_table
+from .report_parts import cage_angle_deg, inputs_json, inputs_text, summary_table
 from .units import KGF
 
 #: How the CLI names the inputs a method ignores.
@@ -65,7 +65,7 @@ def method_report(
     Inputs in N, N/mm^m, mm, degrees or ``"half"`` (half a pitch), as ``bearingload solve``;
     ``context`` is one more note line (where the inputs came from), and ``"context"`` in JSON.
     """
-    angle = 180.0 / balls if cage_angle == "half" else float(cage_angle)
+    angle = cage_angle_deg(cage_angle, balls)
     args = (balls, load, stiffness, clearance, angle, exponent)
     extra = [context] if context else []
     if method == "all":

@@ -14,6 +14,7 @@ import numpy as np
 
 from .methods import METHODS, compute
 from .render import Column, Table
+from .tables import balls_and_angles, omitted_note
 
 #: The quantity of each table name: (result attribute, header, display digits, description).
 QUANTITIES = {
@@ -22,17 +23,8 @@ QUANTITIES = {
 }
 
 
-def _balls_and_angles(z_max: int, cage_angle: float | str) -> tuple[np.ndarray, np.ndarray]:
-    """z = 1..z_max (from 3 for a half-pitch cage) and the cage angle of each, in degrees."""
-    z = np.arange(1, z_max + 1)
-    if cage_angle == "half":
-        z = z[z >= 3]  # with one or two balls the load between two balls has no equilibrium
-        return z, 180.0 / z
-    return z, np.full(z.shape, float(cage_angle))
-
-
 def _solve(method: str, z_max: int, cond: Any) -> tuple[np.ndarray, Any]:
-    z, angle = _balls_and_angles(z_max, cond.cage_angle)
+    z, angle = balls_and_angles(z_max, cond.cage_angle)
     return z, compute(method, z, cond.load, cond.stiffness, cond.clearance, angle, cond.exponent)
 
 
@@ -69,7 +61,9 @@ def table_method(name: str, method: str, z_max: int = 30, cond: Any = None) -> T
         title=f"{what}, {method} method ({cond.describe()})",
         columns=[Column("z", "z"), Column(attr, header, "-", digits)],
         rows=[{"z": int(zi), attr: float(v)} for zi, v in zip(z, values, strict=True)],
-        notes=[f"{method}: {METHODS[method].title}."] + _ignored(method),
+        notes=[f"{method}: {METHODS[method].title}."]
+        + _ignored(method)
+        + omitted_note(z_max, cond.cage_angle),
     )
 
 
@@ -86,7 +80,7 @@ def table_compare(name: str, z_max: int = 30, cond: Any = None) -> Table:
     from .equilibrium import solve
 
     results = {m: _solve(m, z_max, cond)[1] for m in METHODS}
-    z, angle = _balls_and_angles(z_max, cond.cage_angle)
+    z, angle = balls_and_angles(z_max, cond.cage_angle)
     exact = results["exact"]
     loaded = solve(z, cond.load, cond.stiffness, cond.clearance, angle, cond.exponent).loaded_balls
     columns = [Column("z", "z"), Column("n", "n")]
@@ -115,7 +109,8 @@ def table_compare(name: str, z_max: int = 30, cond: Any = None) -> Table:
             "angle.",
             "The smeared models assume many balls: for z <= 4 they give k = 4.37/z or 5/z above 1, "
             "a heaviest ball carrying more than the whole load.",
-        ],
+        ]
+        + omitted_note(z_max, cond.cage_angle),
     )
 
 

@@ -94,7 +94,7 @@ def render(tables: Sequence[Table], fmt: str, *, document: dict[str, Any] | None
     blocks = []
     for t in tables:
         if fmt == "csv":
-            lines = [",".join(c.key for c in t.columns)]
+            lines = [",".join(_csv_header(c) for c in t.columns)]
             lines += [
                 ",".join(_csv_cell(_machine_text(r[c.key])) for c in t.columns) for r in t.rows
             ]
@@ -154,6 +154,12 @@ def _table_documents(tables: Sequence[Table]) -> Any:
     return docs[0] if len(docs) == 1 else docs
 
 
+def _csv_header(column: Column) -> str:
+    """A csv column name: the key, with its unit where it has one (``load [N]``)."""
+    unit = column.unit if column.unit not in ("", "-") else ""
+    return _csv_cell(f"{column.key} [{unit}]" if unit else column.key)
+
+
 def _csv_cell(text: str) -> str:
     if any(ch in text for ch in ',"\n'):
         return '"' + text.replace('"', '""') + '"'
@@ -171,15 +177,37 @@ def _machine_tree(obj: Any) -> Any:
 
 
 def write_atomic(text: str, path: str) -> None:
-    """Write ``text`` to ``path`` whole or not at all (temporary file, then rename)."""
-    directory = os.path.dirname(os.path.abspath(path))
+    """Write ``text`` to ``path`` whole or not at all.
+
+    A regular file (new or existing) is written to a temporary file in the same directory and
+    renamed over the target, so a reader never sees half a file and a failure leaves the old
+    file as it was. The result has the permissions of the file it replaces, or 0666 less the
+    umask for a new file. A symbolic link is followed (the file it points to is replaced, the
+    link stays). Something that exists but cannot be replaced (a device, a FIFO) is written to
+    directly. Raises OSError (e.g. IsADirectoryError) when the path cannot be written.
+    """
+    real = os.path.realpath(path)
+    if os.path.isdir(real):
+        raise IsADirectoryError(21, "is a directory", path)
+    if os.path.exists(real) and not os.path.isfile(real):
+        with open(real, "w", encoding="utf-8", newline="\n") as fh:
+            fh.write(text)
+        return
+    if os.path.exists(real):
+        mode = os.stat(real).st_mode & 0o7777
+    else:
+        umask = os.umask(0)
+        os.umask(umask)
+        mode = 0o666 & ~umask
     import tempfile  # imported here: it costs more than the rest of a terminal run's rendering
 
-    fd, tmp = tempfile.mkstemp(prefix=".bearingload-", dir=directory)
+    fd, tmp = tempfile.mkstemp(prefix=".bearingload-", dir=os.path.dirname(real))
     try:
         with os.fdopen(fd, "w", encoding="utf-8", newline="\n") as fh:
             fh.write(text)
-        os.replace(tmp, path)
+            fh.flush()
+            os.fchmod(fh.fileno(), mode)
+        os.replace(tmp, real)
     except BaseException:
         if os.path.exists(tmp):
             os.unlink(tmp)

@@ -30,6 +30,11 @@ JSON_UNITS = {
 }
 
 
+def cage_angle_deg(cage_angle: float | str, balls: int) -> float:
+    """The cage angle in [0, 360) degrees; ``"half"`` is half a pitch, 180/z."""
+    return 180.0 / balls if cage_angle == "half" else float(cage_angle) % 360.0
+
+
 def inputs_text(
     balls: int, load: float, stiffness: float, clearance: float, angle: float, exponent: float
 ) -> str:

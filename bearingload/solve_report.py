@@ -8,6 +8,7 @@ from .equilibrium import solve
 from .render import Column, Table, render
 from .report_parts import (
     JSON_UNITS,
+    cage_angle_deg,
     distribution_json,
     distribution_rows,
     inputs_json,
@@ -26,7 +27,7 @@ def solve_report(
     fmt: str,
 ) -> str:
     """Solve one case and render it in ``fmt``. Inputs in N, N/mm^m, mm, degrees or ``"half"``."""
-    angle = 180.0 / balls if cage_angle == "half" else float(cage_angle)
+    angle = cage_angle_deg(cage_angle, balls)
     args = (balls, load, stiffness, clearance, angle, exponent)
     r = solve(*args)
     if fmt == "json":

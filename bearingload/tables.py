@@ -44,26 +44,39 @@ class Conditions:
         return text
 
 
-def cage_angle_deg(cage_angle: float | str, z: np.ndarray) -> np.ndarray:
-    """Cage angle in degrees for each z; ``"half"`` means half a pitch, 180/z degrees."""
+def balls_and_angles(z_max: int, cage_angle: float | str) -> tuple[np.ndarray, np.ndarray]:
+    """z = 1..z_max and the cage angle of each [°], leaving out z = 1-2 where no equilibrium exists.
+
+    With one ball, equilibrium needs it on the load line (cage angle 0 mod 360°); with two, one of
+    them (0 mod 180°). ``"half"`` means half a pitch, 180/z degrees.
+    """
+    z = np.arange(1, z_max + 1)
     if cage_angle == "half":
-        return 180.0 / z
-    return np.full(z.shape, float(cage_angle))
+        z = z[z >= 3]
+        return z, 180.0 / z
+    angle = float(cage_angle)
+    keep = (z >= 3) | ((z == 2) & (angle % 180.0 == 0)) | ((z == 1) & (angle % 360.0 == 0))
+    z = z[keep]
+    return z, np.full(z.shape, angle)
+
+
+def omitted_note(z_max: int, cage_angle: float | str) -> list[str]:
+    """A note naming the z left out by :func:`balls_and_angles`, if any."""
+    z, _ = balls_and_angles(z_max, cage_angle)
+    missing = sorted(set(range(1, min(z_max, 2) + 1)) - {int(v) for v in z})
+    if not missing:
+        return []
+    listed = " and ".join(str(v) for v in missing)
+    return [
+        f"z = {listed} left out: with one or two balls equilibrium needs a ball on the load line "
+        "(cage angle 0)."
+    ]
 
 
 def distribution_over_z(z_max: int, cond: Conditions) -> LoadDistribution:
     """Solve the cases z = 1..z_max under ``cond`` in one vectorised call."""
-    z = np.arange(1, z_max + 1)
-    if cond.cage_angle == "half":
-        z = z[z >= 3]  # with 1-2 balls no ball straddling the load line gives equilibrium
-    return solve(
-        z,
-        cond.load,
-        cond.stiffness,
-        cond.clearance,
-        cage_angle_deg(cond.cage_angle, z),
-        cond.exponent,
-    )
+    z, angle = balls_and_angles(z_max, cond.cage_angle)
+    return solve(z, cond.load, cond.stiffness, cond.clearance, angle, cond.exponent)
 
 
 def table_k(z_max: int = 30, cond: Conditions | None = None) -> Table:
@@ -78,7 +91,10 @@ def table_k(z_max: int = 30, cond: Conditions | None = None) -> Table:
         title=f"Load factor k = Q_max/F_r (exact discrete model; {cond.describe()})",
         columns=[Column("z", "z"), Column("n", "n"), Column("k", "k", "-", 4)],
         rows=rows,
-        notes=["z: balls; n: balls carrying load; k: heaviest ball load over the radial load."],
+        notes=[
+            "z: balls; n: balls carrying load; k: heaviest ball load over the radial load.",
+            *omitted_note(z_max, cond.cage_angle),
+        ],
     )
 
 
@@ -94,5 +110,8 @@ def table_kq(z_max: int = 30, cond: Conditions | None = None) -> Table:
         title=f"Load-concentration factor K_Q = k z/2 (exact discrete model; {cond.describe()})",
         columns=[Column("z", "z"), Column("n", "n"), Column("K_Q", "K_Q", "-", 5)],
         rows=rows,
-        notes=["K_Q: heaviest ball load over the mean load F_r/(z/2)."],
+        notes=[
+            "K_Q: heaviest ball load over the mean load F_r/(z/2).",
+            *omitted_note(z_max, cond.cage_angle),
+        ],
     )

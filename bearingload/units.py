@@ -28,17 +28,10 @@ INCH = 25.4
 UNITS: dict[str, dict[str, float]] = {
     "force": {"N": 1.0, "kN": 1e3, "kgf": KGF, "kp": KGF, "lbf": LBF},
     "length": {"mm": 1.0, "um": 1e-3, "µm": 1e-3, "μm": 1e-3, "in": INCH, "m": 1e3},
-    "stiffness": {
-        "N/mm^1.5": 1.0,
-        "N/mm^3/2": 1.0,
-        "kgf/mm^1.5": KGF,
-        "kgf/mm^3/2": KGF,
-    },
+    # stiffness units are read by parse_stiffness: F/L^e for any force F and length L above
+    "stiffness": {"N/mm^1.5": 1.0, "kgf/mm^1.5": KGF, "N/um^1.5": 1e3**1.5, "N/mm^(10/9)": 1.0},
     "modulus": {"MPa": 1.0, "N/mm^2": 1.0, "GPa": 1e3, "kgf/mm^2": KGF, "Pa": 1e-6},
 }
-# Q = K' * (delta[um])^1.5 = K' * (1000 delta[mm])^1.5 -> K[N/mm^1.5] = K' * 1000^1.5
-UNITS["stiffness"]["N/um^1.5"] = 1e3**1.5
-UNITS["stiffness"]["kgf/um^1.5"] = KGF * 1e3**1.5
 
 #: The unit a bare number is taken in, per kind.
 BASE_UNIT = {"force": "N", "length": "mm", "stiffness": "N/mm^1.5", "modulus": "MPa"}
@@ -91,6 +84,8 @@ def parse_quantity(text: str | float, kind: str, *, parameter: str | None = None
         raise InputError(name, f"{text!r} is not a finite number")
     if unit == "":
         return value
+    if kind == "stiffness":
+        return value * stiffness_factor(unit, None, parameter=name)
     lookup = {_canonical(u): f for u, f in units.items()}
     if unit not in lookup:
         raise InputError(
@@ -103,3 +98,64 @@ def parse_quantity(text: str | float, kind: str, *, parameter: str | None = None
 
 def _example(kind: str) -> str:
     return {"force": "300kgf", "length": "20um", "stiffness": "4700kgf/mm^1.5"}.get(kind, "208GPa")
+
+
+_STIFFNESS_UNIT = re.compile(
+    r"^(?P<force>[A-Za-z]+)/(?P<length>[A-Za-zµμ]+)\^\(?(?P<num>\d+(?:\.\d*)?)(?:/(?P<den>\d+))?\)?$"
+)
+
+
+def stiffness_factor(unit: str, exponent: float | None, *, parameter: str = "stiffness") -> float:
+    """Factor from a stiffness unit ``F/L^e`` to N/mm^e, checking ``e`` against ``exponent``.
+
+    ``Q = K delta^m``: a stiffness in force ``F`` per length ``L`` to the power ``e`` converts
+    as ``K [N/mm^e] = K' f_F / f_L^e`` (``f``: the factor of each unit to N or mm), so the
+    exponent of the unit must be the load-deflection exponent ``m`` of the calculation.
+
+    >>> stiffness_factor("kgf/mm^1.5", 1.5)
+    9.80665
+    >>> round(stiffness_factor("N/um^(10/9)", 10 / 9), 3)
+    2154.435
+    """
+    from .errors import InputError
+
+    match = _STIFFNESS_UNIT.match(_canonical(unit))
+    forces, lengths = UNITS["force"], UNITS["length"]
+    if match is None or match["force"] not in forces or match["length"] not in lengths:
+        raise InputError(
+            parameter,
+            f"unknown unit {unit!r}; write force/length^m with a force in "
+            f"{', '.join(forces)} and a length in {', '.join(lengths)}, e.g. N/mm^1.5, "
+            "kgf/mm^1.5, N/um^1.5, N/mm^(10/9) (a bare number is N/mm^m)",
+        )
+    e = float(match["num"]) / (float(match["den"]) if match["den"] else 1.0)
+    if exponent is not None and abs(e - exponent) > 1e-3 * exponent:
+        raise InputError(
+            parameter,
+            f"the unit {unit!r} is for the exponent {e:g}, but the load-deflection exponent is "
+            f"{exponent:g}; write the stiffness in N/mm^{exponent:g} (or force/length^{exponent:g})",
+        )
+    return forces[match["force"]] / lengths[match["length"]] ** (exponent or e)
+
+
+def parse_stiffness(text: str | float, exponent: float, *, parameter: str = "stiffness") -> float:
+    """A ball or roller stiffness with its unit, in N/mm^m for the exponent ``m``.
+
+    A bare number is N/mm^m; ``4700kgf/mm^1.5``, ``3e5 N/mm^(10/9)``, ``12 N/um^1.5`` are read with
+    their own units, whose length exponent must equal ``m``.
+
+    >>> parse_stiffness("4700kgf/mm^1.5", 1.5)
+    46091.255
+    """
+    from .errors import InputError
+
+    if isinstance(text, (int, float)):
+        return float(text)
+    match = _NUMBER.match(str(text))
+    if match is None:
+        raise InputError(
+            parameter, f"cannot read {text!r} as a number with a unit; write e.g. '4700kgf/mm^1.5'"
+        )
+    value = float(match.group(1))
+    unit = _canonical(match.group(2))
+    return value if unit == "" else value * stiffness_factor(unit, exponent, parameter=parameter)

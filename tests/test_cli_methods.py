@@ -206,7 +206,7 @@ def test_table_compare_z_1_to_30():
         ref = solve(z, 1000.0, 1e5)
         assert float(r["K_Q_exact"]) == pytest.approx(float(ref.K_Q), rel=1e-9)
         assert int(r["n"]) == int(ref.loaded_balls)
-        assert float(r["error_palmgren"]) == pytest.approx(
+        assert float(r["error_palmgren [%]"]) == pytest.approx(
             100 * (5 / (z * float(ref.k)) - 1), rel=1e-8
         )
 
@@ -226,10 +226,10 @@ def test_table_shows_discrete_approaching_continuum():
         invoke("table", "k", "--method", "all", "--z-max", "320", "--format", "csv").output
     )
     by_z = {int(r["z"]): r for r in rows}
-    errors = [abs(float(by_z[z]["error_continuum"])) for z in (5, 10, 20, 40, 80, 160, 320)]
+    errors = [abs(float(by_z[z]["error_continuum [%]"])) for z in (5, 10, 20, 40, 80, 160, 320)]
     assert all(b < a for a, b in zip(errors, errors[1:], strict=False)), errors
     assert errors[0] == pytest.approx(3.319, abs=1e-3) and errors[-1] < 2e-6
-    assert float(by_z[320]["error_stribeck"]) == pytest.approx(
+    assert float(by_z[320]["error_stribeck [%]"]) == pytest.approx(
         100 * (4.37 / 4.370095923820 - 1), abs=2e-5
     )
 

@@ -72,3 +72,10 @@ def run(argv: list[str] | None = None) -> None:
         sys.exit(1)
     except BrokenPipeError:
         sys.exit(1)
+    except Exception as exc:  # a bug, not bad input: still one line, but say so
+        click.echo(
+            f"Error: internal error ({type(exc).__name__}: {exc}); please report it with the "
+            "command line that caused it",
+            err=True,
+        )
+        sys.exit(1)

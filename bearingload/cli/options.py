@@ -23,13 +23,19 @@ class Quantity(click.ParamType):
 
     def convert(
         self, value: Any, param: click.Parameter | None, ctx: click.Context | None
-    ) -> float:
+    ) -> float | str:
         if isinstance(value, float):
             return value
         try:
-            return parse_quantity(value, self.kind, parameter=param.name if param else None)
+            number = parse_quantity(value, self.kind, parameter=param.name if param else None)
         except InputError as exc:
             self.fail(str(exc).split(": ", 1)[-1], param, ctx)
+        if self.kind == "stiffness":
+            return str(value)  # converted with the exponent by the command (stiffness_value)
+        return number
+
+    def get_metavar(self, param: click.Parameter, ctx: click.Context | None = None) -> str:
+        return f"{self.kind.upper()} [{BASE_UNIT[self.kind]}]"
 
 
 class CageAngle(click.ParamType):
@@ -52,6 +58,27 @@ class CageAngle(click.ParamType):
         return angle
 
 
+def stiffness_value(text: str | None, exponent: float) -> float | None:
+    """The --stiffness text in N/mm^m, its unit checked against the exponent m."""
+    if text is None:
+        return None
+    from ..units import parse_stiffness
+    from ..validate import exponent as valid_exponent
+
+    try:
+        valid_exponent(exponent)  # the exponent's own error comes first
+    except InputError as exc:
+        raise click.UsageError(
+            f"Invalid value for '--exponent': {str(exc).split(': ', 1)[-1]}"
+        ) from exc
+    try:
+        return parse_stiffness(text, exponent)
+    except InputError as exc:
+        raise click.UsageError(
+            f"Invalid value for '--stiffness': {str(exc).split(': ', 1)[-1]}"
+        ) from exc
+
+
 def units_help(kind: str) -> str:
     return ", ".join(UNITS[kind])
 
@@ -62,7 +89,8 @@ def output_options(func: Callable[..., Any]) -> Callable[..., Any]:
         "-o",
         "--output",
         type=click.Path(dir_okay=False, writable=True),
-        help="Write to FILE (whole or not at all) instead of standard output.",
+        help="Write to FILE (whole or not at all; '-' is standard output) instead of "
+        "standard output.",
     )(func)
     func = click.option(
         "--format",
@@ -76,8 +104,10 @@ def output_options(func: Callable[..., Any]) -> Callable[..., Any]:
 
 
 def emit(text: str, output: str | None) -> None:
-    """Print ``text`` or write it atomically to ``output``."""
-    if output:
+    """Print ``text`` (also for ``-o -``) or write it whole to the file ``output``."""
+    if output == "":
+        raise click.UsageError("Invalid value for '-o' / '--output': the file name is empty")
+    if output is not None and output != "-":
         from ..render import write_atomic
 
         try:
@@ -154,7 +184,7 @@ class Exponent(click.ParamType):
 
     def convert(
         self, value: Any, param: click.Parameter | None, ctx: click.Context | None
-    ) -> float:
+    ) -> float | str:
         if isinstance(value, float):
             return value
         text = str(value).strip()

@@ -16,6 +16,7 @@ from .options import (
     library_errors,
     method_option,
     output_options,
+    stiffness_value,
     units_help,
 )
 
@@ -61,7 +62,7 @@ from .options import (
 @geometry_options
 @click.option(
     "--revolutions",
-    type=click.FloatRange(min=0, min_open=True),
+    type=click.FloatRange(min=0, max=1e30, min_open=True),
     default=36e6,
     show_default=True,
     help="Life L [revolutions] for the allowable load C/(L/10^6)^(1/3). The default is the "
@@ -80,7 +81,7 @@ def solve(
     bearing: str | None,
     balls: int | None,
     load: float,
-    stiffness: float | None,
+    stiffness: str | None,
     clearance: Any,
     clearance_pick: str,
     ball_diameter: float | None,
@@ -119,6 +120,11 @@ def solve(
       # exact, continuum, Stribeck and Palmgren side by side, errors against the exact answer
       bearingload solve -z 8 -F 300kgf -K 4700kgf/mm^1.5 -G 20um --method all
     """
+    if not revolutions == revolutions:  # NaN passes click's range check
+        raise click.UsageError(
+            "Invalid value for '--revolutions': must be a number of revolutions > 0, got nan"
+        )
+    k_given = stiffness_value(stiffness, exponent)  # N/mm^m
     if bearing is None and ball_diameter is None and pitch_diameter is None:
         from ..clearance import clearance_length
         from ..solve_report import solve_report
@@ -127,7 +133,7 @@ def solve(
             raise click.UsageError(
                 "Missing option '--balls' / '-z' (or give a BEARING designation)"
             )
-        if stiffness is None:
+        if k_given is None:
             raise click.UsageError(
                 "Missing option '--stiffness' / '-K' (or give a BEARING designation, or "
                 "--ball-diameter and --pitch-diameter)"
@@ -136,10 +142,10 @@ def solve(
         if method != "exact":
             from ..method_report import method_report
 
-            text = method_report(method, balls, load, stiffness, g_r, cage_angle, exponent, fmt)
+            text = method_report(method, balls, load, k_given, g_r, cage_angle, exponent, fmt)
             emit(text, output)
             return
-        emit(solve_report(balls, load, stiffness, g_r, cage_angle, exponent, fmt), output)
+        emit(solve_report(balls, load, k_given, g_r, cage_angle, exponent, fmt), output)
         return
     from ..bearing import resolve_bearing
     from ..bearing_report import bearing_report, solve_bearing
@@ -158,7 +164,7 @@ def solve(
         f_o=outer_conformity,
         modulus=modulus,
         poisson=poisson,
-        stiffness=stiffness,
+        stiffness=k_given,
         clearance=clearance,
         clearance_pick="mean" if clearance_pick == "range" else clearance_pick,
     )

@@ -16,6 +16,7 @@ from .options import (
     library_errors,
     method_option,
     output_options,
+    stiffness_value,
 )
 
 TABLES = ("k", "kq")
@@ -69,7 +70,7 @@ def table(
     z_max: int,
     load: float,
     bearing: str | None,
-    stiffness: float | None,
+    stiffness: str | None,
     clearance: Any,
     clearance_pick: str,
     ball_diameter: float | None,
@@ -104,6 +105,7 @@ def table(
       # exact, continuum, Stribeck and Palmgren side by side for z = 1-30
       bearingload table k --method all
     """
+    k_given = stiffness_value(stiffness, exponent)  # N/mm^m
     from ..render import render
     from ..tables import Conditions, table_k, table_kq
 
@@ -125,7 +127,7 @@ def table(
                 f_o=outer_conformity,
                 modulus=modulus,
                 poisson=poisson,
-                stiffness=stiffness,
+                stiffness=k_given,
                 clearance=clearance if clearance is not None else 0.0,
                 clearance_pick=clearance_pick,
             ),
@@ -149,7 +151,7 @@ def table(
         )
     from ..clearance import clearance_length
 
-    k = 1e5 if stiffness is None else stiffness
+    k = 1e5 if k_given is None else k_given
     cond = Conditions(load, k, clearance_length(clearance), cage_angle, exponent)
     if method != "exact":
         emit(render([_method_table(name, method, z_max, cond)], fmt), output)
