@@ -239,8 +239,23 @@ def resolve_bearing(
     dm: float | None
     fi: float | None
     fo: float | None
+    hand_bore: float | None = None
     if designation is not None:
-        geom = lookup(designation, **given)  # type: ignore[arg-type]
+        try:
+            geom = lookup(designation, **given)  # type: ignore[arg-type]
+        except InputError:
+            # not in the catalogue (or no ball set there): with the ball set given by hand, the
+            # designation still gives the bore, which resolves a clearance class
+            if balls is None or ball_diameter is None or pitch_diameter is None:
+                raise
+            from .designation import parse
+
+            hand_bore = parse(designation).bore
+            sources.append(
+                f"{designation}: not used from the catalogue; bore d = {hand_bore:g} mm read from "
+                "the designation, ball set given by hand"
+            )
+    if geom is not None:
         sources.append(f"catalogue row {geom.designation} ({geom.standard}): {geom.source}")
         if geom.notes:
             sources.append(f"catalogue notes: {geom.notes}")
@@ -258,7 +273,7 @@ def resolve_bearing(
             raise InputError(
                 "balls", f"the number of balls must be a whole number >= 1, not {balls!r}"
             )
-        z, dw, dm, bore = int(balls), ball_diameter, pitch_diameter, None
+        z, dw, dm, bore = int(balls), ball_diameter, pitch_diameter, hand_bore
         fi = f_i if f_i is not None or dw is None else DEFAULT_F_I
         fo = f_o if f_o is not None or dw is None else DEFAULT_F_O
         if stiffness is None and (dw is None or dm is None):
@@ -332,6 +347,12 @@ def resolve_bearing(
         )
     )
     g_r, cls, rng, pick, g_src = _resolve_clearance(spec, geom, bore, clearance_pick)
+    if dw is not None and abs(g_r) >= dw / 2:
+        raise InputError(
+            "clearance",
+            f"G_r = {g_r:g} mm is at least half the ball diameter ({dw:g} mm): no bearing has such "
+            f"a play or preload; a bare number is mm (did you mean {g_r:g}um?)",
+        )
     if rng is not None:
         sources.append(_clearance_row_source(bore))
     prov.append(Provenance("clearance", "radial clearance G_r (total)", g_r * 1e3, "µm", g_src))
@@ -388,7 +409,7 @@ def _resolve_clearance(
         return spec.length, None, None, None, "given"
     if spec is None:
         if geom is None:
-            return 0.0, None, None, None, "default: zero clearance"
+            return 0.0, None, None, None, "default: zero clearance (no catalogue row)"
         cls = geom.parsed.clearance_class or "CN"
         how = (
             f"class {cls} marked in the designation"

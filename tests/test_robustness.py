@@ -143,3 +143,23 @@ def test_fit_of_data_spanning_many_decades(tmp_path):
     r = run_cli("fit", str(f), "--format", "json")
     assert r.returncode == 0, r.stderr
     assert '"n": 1.0' in r.stdout
+
+
+def test_a_bearing_outside_the_catalogue_with_its_ball_set_resolves_a_class():
+    out = CliRunner().invoke(
+        main,
+        ["solve", "6330", "-F", "1kN", "-G", "C3", "-z", "8", "--ball-diameter", "30",
+         "--pitch-diameter", "225", "--format", "json"],
+    )  # fmt: skip
+    assert out.exit_code == 0, out.output
+    import json
+
+    doc = json.loads(out.output)
+    assert doc["clearance_range"] == [0.046, 0.091]  # ISO 5753-1 C3, bore 140-160 mm (NSK 9.9)
+    assert doc["clearance"] == pytest.approx(0.0685)
+
+
+def test_a_clearance_of_half_a_ball_is_refused():
+    r = run_cli("solve", "306", "-F", "300kgf", "-G", "20")
+    assert r.returncode == 2
+    assert "did you mean 20um?" in r.stderr and r.stderr.count("\n") == 1
