@@ -11,7 +11,8 @@ STAMP := $(VENV)/.installed
 $(STAMP): pyproject.toml
 	$(PY) -m venv $(VENV)
 	$(BIN)/python -m pip install --quiet --upgrade pip
-	$(BIN)/python -m pip install --quiet -e '.[test]' --config-settings editable_mode=compat
+	$(BIN)/python -m pip install --quiet -e '.[test]' --config-settings editable_mode=compat \
+		|| $(BIN)/python -m pip install --quiet -e '.[test]'  # a setuptools without compat mode
 	$(BIN)/python -m compileall -q bearingload
 	touch $(STAMP)
 
