@@ -79,39 +79,42 @@ def distribution_over_z(z_max: int, cond: Conditions) -> LoadDistribution:
     return solve(z, cond.load, cond.stiffness, cond.clearance, angle, cond.exponent)
 
 
-def table_k(z_max: int = 30, cond: Conditions | None = None) -> Table:
-    """Table 1 of Kuzmenko (2010): ``k = Q_max/F_r`` and loaded balls ``n`` for z = 1..z_max."""
-    cond = cond or Conditions()
+def _exact_table(
+    key: str, digits: int, title: str, note: str, z_max: int, cond: Conditions
+) -> Table:
+    """One column ``key`` (an attribute of the solution: ``k`` or ``K_Q``) and ``n`` over z."""
     r = distribution_over_z(z_max, cond)
     rows = [
-        {"z": int(z), "n": int(n), "k": float(k)}
-        for z, n, k in zip(r.balls, r.loaded_balls, r.k, strict=True)
+        {"z": int(z), "n": int(n), key: float(v)}
+        for z, n, v in zip(r.balls, r.loaded_balls, getattr(r, key), strict=True)
     ]
     return Table(
-        title=f"Load factor k = Q_max/F_r (exact discrete model; {cond.describe()})",
-        columns=[Column("z", "z"), Column("n", "n"), Column("k", "k", "-", 4)],
+        title=f"{title} (exact discrete model; {cond.describe()})",
+        columns=[Column("z", "z"), Column("n", "n"), Column(key, key, "-", digits)],
         rows=rows,
-        notes=[
-            "z: balls; n: balls carrying load; k: heaviest ball load over the radial load.",
-            *omitted_note(z_max, cond.cage_angle),
-        ],
+        notes=[note, *omitted_note(z_max, cond.cage_angle)],
+    )
+
+
+def table_k(z_max: int = 30, cond: Conditions | None = None) -> Table:
+    """Table 1 of Kuzmenko (2010): ``k = Q_max/F_r`` and loaded balls ``n`` for z = 1..z_max."""
+    return _exact_table(
+        "k",
+        4,
+        "Load factor k = Q_max/F_r",
+        "z: balls; n: balls carrying load; k: heaviest ball load over the radial load.",
+        z_max,
+        cond or Conditions(),
     )
 
 
 def table_kq(z_max: int = 30, cond: Conditions | None = None) -> Table:
     """Table 2.2 of Kuzmenko & Sabadash (2014): ``K_Q = Q_max/Q_mean = k z/2`` for z = 1..z_max."""
-    cond = cond or Conditions()
-    r = distribution_over_z(z_max, cond)
-    rows = [
-        {"z": int(z), "n": int(n), "K_Q": float(kq)}
-        for z, n, kq in zip(r.balls, r.loaded_balls, r.K_Q, strict=True)
-    ]
-    return Table(
-        title=f"Load-concentration factor K_Q = k z/2 (exact discrete model; {cond.describe()})",
-        columns=[Column("z", "z"), Column("n", "n"), Column("K_Q", "K_Q", "-", 5)],
-        rows=rows,
-        notes=[
-            "K_Q: heaviest ball load over the mean load F_r/(z/2).",
-            *omitted_note(z_max, cond.cage_angle),
-        ],
+    return _exact_table(
+        "K_Q",
+        5,
+        "Load-concentration factor K_Q = k z/2",
+        "K_Q: heaviest ball load over the mean load F_r/(z/2).",
+        z_max,
+        cond or Conditions(),
     )
