@@ -12,25 +12,16 @@ from pathlib import Path
 
 import click
 import pytest
-from click.testing import CliRunner
 
 from bearingload import committed
 from bearingload.cli import main, run
 from bearingload.equilibrium import solve
 from bearingload.units import KGF
 
+from .cli_helpers import invoke
+from .cli_helpers import run_process as run_cli
+
 ROOT = Path(__file__).resolve().parents[1]
-
-
-def invoke(*args: str):
-    return CliRunner().invoke(main, list(args), catch_exceptions=False)
-
-
-def run_cli(*args: str) -> subprocess.CompletedProcess:
-    """The installed entry point in a fresh interpreter, as a user runs it."""
-    return subprocess.run(
-        [sys.executable, "-m", "bearingload", *args], capture_output=True, text=True, timeout=60
-    )
 
 
 def test_solve_306_summary_lines():

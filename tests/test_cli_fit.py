@@ -9,11 +9,12 @@ from pathlib import Path
 
 import mpmath as mp
 import pytest
-from click.testing import CliRunner
 
-from bearingload.cli import main, run
 from bearingload.fit_report import parse_base_point
 from bearingload.units import KGF
+
+from .cli_helpers import invoke
+from .cli_helpers import run_entry as run_cli
 
 ROOT = Path(__file__).resolve().parents[1]
 EXAMPLE = str(ROOT / "examples" / "bearing208_kuzmenko2014.csv")
@@ -30,21 +31,6 @@ DISPLACEMENTS = [0.68, 0.8, 0.93, 1.03, 1.12, 1.24, 1.35, 1.44, 1.57, 1.67]
 # tests/test_fit.py::DISAGREEMENTS: rows 2 and 5 took sigma_bar from the wrong u/u_max (0.416,
 # 0.62 are themselves sigma_bar values), row 9 is an arithmetic slip (0.940^1.19 = 0.929).
 SIGMA_BAR_DISAGREEMENTS = {2: (0.352, 0.4165), 5: (0.566, 0.6216), 9: (0.923, 0.9292)}
-
-
-def invoke(*args: str):
-    return CliRunner().invoke(main, list(args), catch_exceptions=False)
-
-
-def run_cli(capsys, *args: str) -> tuple[int, str, str]:
-    """Run the console entry point in-process: (exit status, stdout, stderr)."""
-    try:
-        run(list(args))
-        code = 0
-    except SystemExit as exc:
-        code = int(exc.code or 0)
-    out, err = capsys.readouterr()
-    return code, out, err
 
 
 def exact_n() -> float:

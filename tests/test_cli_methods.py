@@ -10,32 +10,19 @@ from pathlib import Path
 
 import mpmath as mp
 import pytest
-from click.testing import CliRunner
 
 from bearingload import committed
-from bearingload.cli import main, run
 from bearingload.continuum import solve_continuum
 from bearingload.equilibrium import solve
 from bearingload.methods import list_methods
 from bearingload.units import KGF
 
+from .cli_helpers import invoke
+from .cli_helpers import run_entry as run_cli
+
 ROOT = Path(__file__).resolve().parents[1]
 # Bearing 306 of Kuzmenko (2010), §3: z = 8, F_r = 300 kgf, K = 4700 kgf/mm^1.5, G_r = 20 um.
 CASE_306 = ["-z", "8", "-F", "300kgf", "-K", "4700kgf/mm^1.5", "-G", "20um"]
-
-
-def invoke(*args: str):
-    return CliRunner().invoke(main, list(args), catch_exceptions=False)
-
-
-def run_cli(capsys, *args: str) -> tuple[int, str, str]:
-    try:
-        run(list(args))
-        code = 0
-    except SystemExit as exc:
-        code = int(exc.code or 0)
-    out, err = capsys.readouterr()
-    return code, out, err
 
 
 def rows_of(text: str) -> list[dict[str, str]]:

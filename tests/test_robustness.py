@@ -5,7 +5,6 @@ from __future__ import annotations
 import os
 import stat
 import subprocess
-import sys
 
 import numpy as np
 import pytest
@@ -17,15 +16,7 @@ from bearingload.errors import InputError
 from bearingload.render import write_atomic
 from bearingload.units import parse_stiffness
 
-
-def run_cli(*args: str, cwd=None) -> subprocess.CompletedProcess:
-    return subprocess.run(
-        [sys.executable, "-m", "bearingload", *args],
-        capture_output=True,
-        text=True,
-        timeout=60,
-        cwd=cwd,
-    )
+from .cli_helpers import run_process as run_cli
 
 
 def test_write_follows_a_symlink(tmp_path):
