@@ -40,6 +40,7 @@ from .clearance import (
     parse_clearance,
 )
 from .errors import InputError
+from .validate import finite_positive
 
 #: Young's modulus used when none is given: bearing steel, NSK 208 000 MPa. [MPa]
 DEFAULT_MODULUS = 208_000.0
@@ -160,11 +161,6 @@ def _class_source(b: ResolvedBearing, pick: str) -> str:
     return f"{head}, {pick} (clearance table)"
 
 
-def _positive(name: str, value: float | None) -> None:
-    if value is not None and not (math.isfinite(value) and value > 0):
-        raise InputError(name, f"must be a finite number greater than 0; got {value!r}")
-
-
 def resolve_bearing(
     designation: str | None = None,
     *,
@@ -219,7 +215,8 @@ def resolve_bearing(
         ("ball-diameter", ball_diameter),
         ("pitch-diameter", pitch_diameter),
     ):
-        _positive(name, value)
+        if value is not None:
+            finite_positive(name, value)
     if poisson is not None and not (math.isfinite(poisson) and -1.0 < poisson <= 0.5):
         raise InputError("poisson", f"must lie in (-1, 0.5]; got {poisson!r}")
     if clearance_pick not in PICKS:

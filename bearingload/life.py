@@ -27,18 +27,12 @@ import numpy as np
 from numpy.typing import ArrayLike
 
 from .errors import InputError
+from .validate import finite_positive
 
 #: Life exponent p of ball bearings (ISO 281). [-]
 BALL_LIFE_EXPONENT = 3.0
 #: Life exponent p of roller bearings (ISO 281). [-]
 ROLLER_LIFE_EXPONENT = 10.0 / 3.0
-
-
-def _positive(name: str, value: ArrayLike) -> np.ndarray:
-    arr = np.asarray(value, dtype=float)
-    if not np.all(np.isfinite(arr) & (arr > 0)):
-        raise InputError(name, f"must be a finite number greater than 0; got {value!r}")
-    return arr
 
 
 def _out(x: np.ndarray) -> Any:
@@ -70,9 +64,9 @@ def rating_life(C: ArrayLike, P: ArrayLike, exponent: float = BALL_LIFE_EXPONENT
     >>> float(rating_life(3000.0, 300.0))
     1000.0
     """
-    c = _positive("C", C)
-    p = _positive("load", P)
-    e = _positive("exponent", exponent)
+    c = finite_positive("C", C)
+    p = finite_positive("load", P)
+    e = finite_positive("exponent", exponent)
     with np.errstate(over="ignore"):
         life = (c / p) ** e
     if not np.all(np.isfinite(life)):
@@ -110,7 +104,7 @@ def allowable_load(
     >>> round(float(allowable_load(2200.0, 360.0)), 1)
     309.3
     """
-    c = _positive("C", C)
-    n = _positive("revolutions", revolutions)
-    e = _positive("exponent", exponent)
+    c = finite_positive("C", C)
+    n = finite_positive("revolutions", revolutions)
+    e = finite_positive("exponent", exponent)
     return _out(c / n ** (1.0 / e))

@@ -23,6 +23,14 @@ def positive(name: str, value: object, unit: str) -> np.ndarray:
     return arr
 
 
+def finite_positive(name: str, value: object) -> np.ndarray:
+    """Return ``value`` as a float array; every element must be a finite number > 0."""
+    arr = np.asarray(value, dtype=float)
+    if not np.all(np.isfinite(arr) & (arr > 0)):
+        raise InputError(name, f"must be a finite number greater than 0; got {value!r}")
+    return arr
+
+
 def ball_count(value: object, *, name: str = "balls", maximum: int = 100_000) -> np.ndarray:
     """Return the number of balls as an int array; each must be a whole number 1 <= z <= maximum."""
     arr = finite(name, value)
