@@ -18,7 +18,7 @@ $(STAMP): pyproject.toml
 
 ## make run: set up, regenerate tables/, print a worked example (bearing 306 of Kuzmenko 2010)
 run: $(STAMP)
-	$(BIN)/python -m bearingload.committed tables
+	$(BIN)/python -m bearingload.reports.committed tables
 	$(BIN)/bearingload solve --balls 8 --load 300kgf --stiffness 4700kgf/mm^1.5 --clearance 20um
 	$(BIN)/bearingload table k --z-max 12
 
@@ -32,7 +32,7 @@ lint: $(STAMP)
 	$(BIN)/mypy bearingload
 
 tables: $(STAMP)
-	$(BIN)/python -m bearingload.committed tables
+	$(BIN)/python -m bearingload.reports.committed tables
 
 ## make bench: vectorised solver against a per-case scipy brentq loop, same run
 bench: $(STAMP)

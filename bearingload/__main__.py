@@ -1,5 +1,5 @@
 """``python -m bearingload``: the same as the ``bearingload`` command."""
 
-from .cli import run
+from bearingload.cli import run
 
 run()

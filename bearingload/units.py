@@ -65,7 +65,7 @@ def parse_quantity(text: str | float, kind: str, *, parameter: str | None = None
     InputError
         When the text is not a finite number followed by an accepted unit of that kind.
     """
-    from .errors import InputError
+    from bearingload.errors import InputError
 
     name = parameter or kind
     units = UNITS[kind]
@@ -117,7 +117,7 @@ def stiffness_factor(unit: str, exponent: float | None, *, parameter: str = "sti
     >>> round(stiffness_factor("N/um^(10/9)", 10 / 9), 3)
     2154.435
     """
-    from .errors import InputError
+    from bearingload.errors import InputError
 
     match = _STIFFNESS_UNIT.match(_canonical(unit))
     forces, lengths = UNITS["force"], UNITS["length"]
@@ -147,7 +147,7 @@ def parse_stiffness(text: str | float, exponent: float, *, parameter: str = "sti
     >>> parse_stiffness("4700kgf/mm^1.5", 1.5)
     46091.255
     """
-    from .errors import InputError
+    from bearingload.errors import InputError
 
     if isinstance(text, (int, float)):
         return float(text)

@@ -4,7 +4,7 @@ from __future__ import annotations
 
 import numpy as np
 
-from .errors import InputError
+from bearingload.errors import InputError
 
 
 def finite(name: str, value: object) -> np.ndarray:

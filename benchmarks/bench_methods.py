@@ -1,4 +1,4 @@
-"""Benchmark: every registered method of :mod:`bearingload.methods`, timed side by side.
+"""Benchmark: every registered method of :mod:`bearingload.models.registry`, timed side by side.
 
 Run with ``python benchmarks/bench_methods.py``. For each method: the time of one scalar call
 (median of repeats), the throughput of one vectorised call over random cases, and the relative
@@ -19,7 +19,7 @@ import time  # noqa: E402
 
 import numpy as np  # noqa: E402
 
-from bearingload.methods import METHODS, compute  # noqa: E402
+from bearingload.models.registry import METHODS, compute  # noqa: E402
 
 N_CASES = 100_000
 REPEATS = 200

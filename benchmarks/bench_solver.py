@@ -23,7 +23,7 @@ import time  # noqa: E402
 
 import numpy as np  # noqa: E402
 
-from bearingload.equilibrium import solve  # noqa: E402
+from bearingload.models.equilibrium import solve  # noqa: E402
 
 N_CASES = 100_000
 N_BASELINE = 2_000

@@ -10,14 +10,14 @@ import pytest
 from hypothesis import given
 from hypothesis import strategies as st
 
-from bearingload.approximations import (
+from bearingload.errors import InputError
+from bearingload.models.approximations import (
     PALMGREN_CONSTANT,
     STRIBECK_CONSTANT,
     Approximation,
     palmgren,
     stribeck,
 )
-from bearingload.errors import InputError
 
 
 def test_published_constants():

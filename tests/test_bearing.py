@@ -1,17 +1,17 @@
-"""Designation + overrides + clearance -> geometry, K, G_r and sources (bearingload.bearing),
+"""Designation + overrides + clearance -> geometry, K, G_r and sources (bearingload.bearings.resolve),
 and one bearing reproduced end to end against a peer calculation."""
 
 from __future__ import annotations
 
 import pytest
 
-from bearingload import committed
-from bearingload.bearing import parse_clearance, resolve_bearing
-from bearingload.bearing_report import solve_bearing
-from bearingload.bearing_tables import KUZMENKO2010_LOAD, kuzmenko2010_306
-from bearingload.equilibrium import solve
+from bearingload.bearings.resolve import parse_clearance, resolve_bearing
+from bearingload.contact.hertz import ball_stiffness
 from bearingload.errors import InputError
-from bearingload.hertz import ball_stiffness
+from bearingload.models.equilibrium import solve
+from bearingload.reports import committed
+from bearingload.reports.bearing import solve_bearing
+from bearingload.studies.bearing_tables import KUZMENKO2010_LOAD, kuzmenko2010_306
 from bearingload.units import KGF
 
 # NSK Rolling Bearings catalogue, Table 9.9 (ISO 5753-1), deep groove ball bearings, bore over
@@ -153,7 +153,7 @@ def test_range_needs_a_class():
 def test_pressures_life_and_allowable_load_of_a_case():
     b = resolve_bearing("306", clearance=0.02)
     case = solve_bearing(b, 300 * KGF, revolutions=36e6)
-    from bearingload.hertz import ball_contacts
+    from bearingload.contact.hertz import ball_contacts
 
     c = ball_contacts(float(case.result.q_max), 12.3, 51.0, 0.515, 0.515, 208000.0, 0.3)
     assert case.p_max_inner == float(c.inner.p_max) and case.p_max_outer == float(c.outer.p_max)

@@ -1,4 +1,4 @@
-"""Tests of bearingload.catalog: row consistency, the papers' bearings, lookup and overrides."""
+"""Tests of bearingload.bearings.catalog: row consistency, the papers' bearings, lookup and overrides."""
 
 from __future__ import annotations
 
@@ -7,7 +7,7 @@ from importlib import resources
 
 import pytest
 
-from bearingload.catalog import (
+from bearingload.bearings.catalog import (
     DEFAULT_F_I,
     DEFAULT_F_O,
     BearingGeometry,
@@ -16,7 +16,7 @@ from bearingload.catalog import (
     find,
     lookup,
 )
-from bearingload.designation import parse
+from bearingload.bearings.designation import parse
 from bearingload.errors import InputError
 from bearingload.units import KGF
 
@@ -37,7 +37,7 @@ def test_catalogue_size_and_standards() -> None:
 
 
 def test_csv_is_plain() -> None:
-    raw = resources.files("bearingload").joinpath("data/bearings.csv").read_bytes()
+    raw = resources.files("bearingload.bearings").joinpath("data/bearings.csv").read_bytes()
     assert b"\r" not in raw
     assert raw.endswith(b"\n")
     assert raw.splitlines()[0] == (

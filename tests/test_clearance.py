@@ -1,10 +1,10 @@
-"""Tests of bearingload.clearance: the ISO 5753-1 table for deep groove ball bearings."""
+"""Tests of bearingload.bearings.clearance: the ISO 5753-1 table for deep groove ball bearings."""
 
 from __future__ import annotations
 
 import pytest
 
-from bearingload.clearance import (
+from bearingload.bearings.clearance import (
     CLASSES,
     ClearanceRow,
     clearance_range,

@@ -9,9 +9,9 @@ import json
 import pytest
 from click.testing import CliRunner
 
-from bearingload.bearing import resolve_bearing
+from bearingload.bearings.resolve import resolve_bearing
 from bearingload.cli import main, run
-from bearingload.equilibrium import solve
+from bearingload.models.equilibrium import solve
 from bearingload.units import KGF
 
 

@@ -13,9 +13,9 @@ from pathlib import Path
 import click
 import pytest
 
-from bearingload import committed
 from bearingload.cli import main, run
-from bearingload.equilibrium import solve
+from bearingload.models.equilibrium import solve
+from bearingload.reports import committed
 from bearingload.units import KGF
 
 from .cli_helpers import invoke

@@ -11,10 +11,10 @@ from pathlib import Path
 import mpmath as mp
 import pytest
 
-from bearingload import committed
-from bearingload.continuum import solve_continuum
-from bearingload.equilibrium import solve
-from bearingload.methods import list_methods
+from bearingload.models.continuum import solve_continuum
+from bearingload.models.equilibrium import solve
+from bearingload.models.registry import list_methods
+from bearingload.reports import committed
 from bearingload.units import KGF
 
 from .cli_helpers import invoke

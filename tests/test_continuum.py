@@ -10,14 +10,14 @@ import pytest
 from hypothesis import given, settings
 from hypothesis import strategies as st
 
-from bearingload import continuum
-from bearingload.continuum import (
+from bearingload.errors import ConvergenceError, InputError
+from bearingload.models import continuum
+from bearingload.models.continuum import (
     load_zone_integral,
     solve_continuum,
     zero_clearance_integral,
     zero_clearance_k,
 )
-from bearingload.errors import ConvergenceError, InputError
 
 KGF = 9.80665
 

@@ -1,4 +1,4 @@
-"""Tests of bearingload.designation: ISO and GOST designations, prefixes, suffixes, errors."""
+"""Tests of bearingload.bearings.designation: ISO and GOST designations, prefixes, suffixes, errors."""
 
 from __future__ import annotations
 
@@ -6,7 +6,7 @@ import dataclasses
 
 import pytest
 
-from bearingload.designation import Designation, bore_from_code, parse
+from bearingload.bearings.designation import Designation, bore_from_code, parse
 from bearingload.errors import InputError
 
 # text -> (standard, base, iso_name, gost_name, bore [mm], suffixes, clearance, group, accuracy)

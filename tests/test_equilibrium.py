@@ -10,8 +10,8 @@ import pytest
 from hypothesis import HealthCheck, given, settings
 from hypothesis import strategies as st
 
-from bearingload.equilibrium import solve
 from bearingload.errors import InputError
+from bearingload.models.equilibrium import solve
 from bearingload.units import KGF
 
 from .fixtures.published import (

@@ -12,7 +12,7 @@ from hypothesis import given, settings
 from hypothesis import strategies as st
 
 from bearingload.errors import InputError
-from bearingload.fit import (
+from bearingload.studies.fit import (
     METHODS,
     PowerLawFit,
     fit_least_squares,

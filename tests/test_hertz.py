@@ -1,4 +1,4 @@
-"""Tests of bearingload.hertz: exact Hertz point contact, raceway contacts, line contact, seed 000.
+"""Tests of bearingload.contact.hertz: exact Hertz point contact, raceway contacts, line contact, seed 000.
 
 The reference for the elliptic-integral solution is independent code: mpmath's ellipk/ellipe
 (parameter m = e^2) and findroot at 30 digits, on the Legendre form of the Hertz equation,
@@ -18,9 +18,8 @@ import pytest
 from hypothesis import given, settings
 from hypothesis import strategies as st
 
-from bearingload import hertz
-from bearingload.errors import ConvergenceError, InputError
-from bearingload.hertz import (
+from bearingload.contact import hertz
+from bearingload.contact.hertz import (
     ball_contacts,
     ball_raceway_curvatures,
     ball_stiffness,
@@ -36,6 +35,7 @@ from bearingload.hertz import (
     roller_stiffness,
     series_stiffness,
 )
+from bearingload.errors import ConvergenceError, InputError
 from bearingload.units import KGF
 
 mp.mp.dps = 30

@@ -1,12 +1,12 @@
-"""Basic rating life and allowable load (bearingload.life) against Kuzmenko (2010) §3.2."""
+"""Basic rating life and allowable load (bearingload.bearings.life) against Kuzmenko (2010) §3.2."""
 
 from __future__ import annotations
 
 import numpy as np
 import pytest
 
+from bearingload.bearings.life import ROLLER_LIFE_EXPONENT, allowable_load, rating_life
 from bearingload.errors import InputError
-from bearingload.life import ROLLER_LIFE_EXPONENT, allowable_load, rating_life
 
 # Kuzmenko A.G., "Load distribution between balls in a radial ball bearing", Problems of
 # Tribology, 2010 (seed 000), §3.2: allowable load Q = C / N^(1/3) for bearing 306,

@@ -12,11 +12,16 @@ import mpmath as mp
 import numpy as np
 import pytest
 
-from bearingload.approximations import PALMGREN_CONSTANT, STRIBECK_CONSTANT, palmgren, stribeck
-from bearingload.continuum import solve_continuum
-from bearingload.equilibrium import solve
 from bearingload.errors import InputError
-from bearingload.methods import (
+from bearingload.models.approximations import (
+    PALMGREN_CONSTANT,
+    STRIBECK_CONSTANT,
+    palmgren,
+    stribeck,
+)
+from bearingload.models.continuum import solve_continuum
+from bearingload.models.equilibrium import solve
+from bearingload.models.registry import (
     DEFAULT_METHOD,
     METHODS,
     MethodResult,
@@ -57,7 +62,7 @@ def test_same_signature_for_every_method():
 def test_titles_quote_the_constants_and_import_is_light():
     assert f"Q_max = {STRIBECK_CONSTANT:g} F_r/z" in METHODS["stribeck"].title
     assert f"Q_max = {PALMGREN_CONSTANT:g} F_r/z" in METHODS["palmgren"].title
-    code = "import sys, bearingload.methods; print('numpy' in sys.modules)"
+    code = "import sys, bearingload.models.registry; print('numpy' in sys.modules)"
     r = subprocess.run([sys.executable, "-c", code], capture_output=True, text=True, timeout=60)
     assert r.stdout.strip() == "False", r.stderr
 

@@ -11,9 +11,9 @@ import pytest
 from click.testing import CliRunner
 
 from bearingload.cli import main
-from bearingload.equilibrium import solve
 from bearingload.errors import InputError
-from bearingload.render import write_atomic
+from bearingload.models.equilibrium import solve
+from bearingload.reports.render import write_atomic
 from bearingload.units import parse_stiffness
 
 from .cli_helpers import run_process as run_cli

@@ -1,7 +1,7 @@
 """The ``bearingload`` command: a thin click layer over the library.
 
 Commands live one per module; each builds its rows with the library and prints them through
-:mod:`bearingload.render`.
+:mod:`bearingload.reports.render`.
 """
 
 from __future__ import annotations
@@ -10,8 +10,8 @@ import importlib
 
 import click
 
-from .. import __version__
-from .options import CONTEXT
+from bearingload import __version__
+from bearingload.cli.options import CONTEXT
 
 #: Command name -> module of this package defining a command object of the same name.
 COMMANDS = {"solve": "solve", "table": "table", "catalog": "catalog", "fit": "fit"}

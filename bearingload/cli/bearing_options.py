@@ -7,8 +7,8 @@ from typing import Any
 
 import click
 
-from ..errors import InputError
-from .options import Quantity, units_help
+from bearingload.cli.options import Quantity, units_help
+from bearingload.errors import InputError
 
 CLEARANCE_HELP = (
     "Radial internal clearance G_r, total play (gap per side G_r/2; negative = preload): a length "
@@ -18,12 +18,12 @@ CLEARANCE_HELP = (
 
 
 class Clearance(click.ParamType):
-    """A clearance length or class, read by :func:`bearingload.clearance.parse_clearance`."""
+    """A clearance length or class, read by :func:`bearingload.bearings.clearance.parse_clearance`."""
 
     name = "LENGTH|CLASS"
 
     def convert(self, value: Any, param: click.Parameter | None, ctx: click.Context | None) -> Any:
-        from ..clearance import ClearanceSpec, parse_clearance
+        from bearingload.bearings.clearance import ClearanceSpec, parse_clearance
 
         if isinstance(value, ClearanceSpec):
             return value

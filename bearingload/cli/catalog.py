@@ -4,8 +4,8 @@ from __future__ import annotations
 
 import click
 
-from .bearing_options import renamed
-from .options import CONTEXT, Quantity, emit, library_errors, output_options
+from bearingload.cli.bearing_options import renamed
+from bearingload.cli.options import CONTEXT, Quantity, emit, library_errors, output_options
 
 
 @click.group(context_settings=CONTEXT, invoke_without_command=True)
@@ -37,7 +37,7 @@ def catalog(
     """
     if ctx.invoked_subcommand is not None:
         return
-    from ..catalog_report import catalog_list
+    from bearingload.reports.catalog import catalog_list
 
     emit(catalog_list(fmt, series=series, standard=standard, bore=bore), output)
 
@@ -54,7 +54,7 @@ def show(designation: str, fmt: str, output: str | None) -> None:
       bearingload catalog show 306
       bearingload catalog show 6306-2RS/C3 --format json
     """
-    from ..catalog_report import catalog_entry
+    from bearingload.reports.catalog import catalog_entry
 
     text = renamed(lambda: catalog_entry(designation, fmt), {"bearing": "DESIGNATION"})
     emit(text, output)

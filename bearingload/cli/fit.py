@@ -8,9 +8,9 @@ from typing import Any
 
 import click
 
-from ..errors import BearingloadError, InputError
-from ..units import UNITS
-from .options import CONTEXT, emit, output_options
+from bearingload.cli.options import CONTEXT, emit, output_options
+from bearingload.errors import BearingloadError, InputError
+from bearingload.units import UNITS
 
 #: Library parameter names of this command -> the option the user typed.
 FIT_OPTIONS = {
@@ -25,7 +25,7 @@ FIT_OPTIONS = {
 def fit_errors(func: Callable[..., Any]) -> Callable[..., Any]:
     """Turn library errors into one ``Error:`` line; file errors name FILE, the row and the column.
 
-    :func:`bearingload.fit.read_measurements` names the parameter ``"<path> row N, column 'c'"``;
+    :func:`bearingload.studies.fit.read_measurements` names the parameter ``"<path> row N, column 'c'"``;
     that becomes ``Invalid value for 'FILE': row N, column 'c': <message>`` (exit status 2).
     """
 
@@ -105,7 +105,7 @@ def fit(
           --base 200kgf:0.8mm --base 1000kgf:1.67mm --balls 9
       bearingload fit data.csv --displacement-unit um --format json
     """
-    from ..fit_report import fit_report, parse_base_point
+    from bearingload.reports.fit import fit_report, parse_base_point
 
     points = None
     if base:

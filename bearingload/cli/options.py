@@ -8,8 +8,8 @@ from typing import Any
 
 import click
 
-from ..errors import BearingloadError, InputError
-from ..units import BASE_UNIT, UNITS, parse_quantity
+from bearingload.errors import BearingloadError, InputError
+from bearingload.units import BASE_UNIT, UNITS, parse_quantity
 
 CONTEXT = {"help_option_names": ["-h", "--help"], "max_content_width": 100}
 
@@ -62,8 +62,8 @@ def stiffness_value(text: str | None, exponent: float) -> float | None:
     """The --stiffness text in N/mm^m, its unit checked against the exponent m."""
     if text is None:
         return None
-    from ..units import parse_stiffness
-    from ..validate import exponent as valid_exponent
+    from bearingload.units import parse_stiffness
+    from bearingload.validate import exponent as valid_exponent
 
     try:
         valid_exponent(exponent)  # the exponent's own error comes first
@@ -108,7 +108,7 @@ def emit(text: str, output: str | None) -> None:
     if output == "":
         raise click.UsageError("Invalid value for '-o' / '--output': the file name is empty")
     if output is not None and output != "-":
-        from ..render import write_atomic
+        from bearingload.reports.render import write_atomic
 
         try:
             write_atomic(text, output)
@@ -128,7 +128,7 @@ OPTION_NAMES = {
     "clearance": "--clearance",
     "cage_angle": "--cage-angle",
     "exponent": "--exponent",
-    # bearing, geometry and life options (bearingload.bearing, bearingload.life)
+    # bearing, geometry and life options (bearingload.bearings.resolve, bearingload.bearings.life)
     "bearing": "BEARING",
     "ball-diameter": "--ball-diameter",
     "D_w": "--ball-diameter",
@@ -210,7 +210,7 @@ def exponent_option(func: Callable[..., Any]) -> Callable[..., Any]:
 
 def method_option(help_text: str) -> Callable[[Callable[..., Any]], Callable[..., Any]]:
     """``--method`` over the registered methods and ``all``; imports no numpy."""
-    from ..methods import DEFAULT_METHOD, list_methods
+    from bearingload.models.registry import DEFAULT_METHOD, list_methods
 
     return click.option(
         "--method",

@@ -6,8 +6,8 @@ from typing import Any
 
 import click
 
-from .bearing_options import CLEARANCE_HELP, Clearance, geometry_options
-from .options import (
+from bearingload.cli.bearing_options import CLEARANCE_HELP, Clearance, geometry_options
+from bearingload.cli.options import (
     CONTEXT,
     Quantity,
     cage_angle_option,
@@ -126,8 +126,8 @@ def solve(
         )
     k_given = stiffness_value(stiffness, exponent)  # N/mm^m
     if bearing is None and ball_diameter is None and pitch_diameter is None:
-        from ..clearance import clearance_length
-        from ..solve_report import solve_report
+        from bearingload.bearings.clearance import clearance_length
+        from bearingload.reports.solve import solve_report
 
         if balls is None:
             raise click.UsageError(
@@ -140,15 +140,15 @@ def solve(
             )
         g_r = clearance_length(clearance)
         if method != "exact":
-            from ..method_report import method_report
+            from bearingload.reports.methods import method_report
 
             text = method_report(method, balls, load, k_given, g_r, cage_angle, exponent, fmt)
             emit(text, output)
             return
         emit(solve_report(balls, load, k_given, g_r, cage_angle, exponent, fmt), output)
         return
-    from ..bearing import resolve_bearing
-    from ..bearing_report import bearing_report, solve_bearing
+    from bearingload.bearings.resolve import resolve_bearing
+    from bearingload.reports.bearing import bearing_report, solve_bearing
 
     if exponent != 1.5:
         raise click.UsageError(
@@ -174,7 +174,7 @@ def solve(
             "(C2 CN C3 C4 C5), not a clearance length"
         )
     if method != "exact":
-        from ..method_report import method_report
+        from bearingload.reports.methods import method_report
 
         if clearance_pick == "range":
             raise click.UsageError(

@@ -6,8 +6,8 @@ from typing import Any
 
 import click
 
-from .bearing_options import CLEARANCE_HELP, Clearance, geometry_options, renamed
-from .options import (
+from bearingload.cli.bearing_options import CLEARANCE_HELP, Clearance, geometry_options, renamed
+from bearingload.cli.options import (
     CONTEXT,
     Quantity,
     cage_angle_option,
@@ -106,13 +106,13 @@ def table(
       bearingload table k --method all
     """
     k_given = stiffness_value(stiffness, exponent)  # N/mm^m
-    from ..render import render
-    from ..tables import Conditions, table_k, table_kq
+    from bearingload.reports.render import render
+    from bearingload.studies.tables import Conditions, table_k, table_kq
 
     geometry = (ball_diameter, pitch_diameter, inner_conformity, outer_conformity, modulus, poisson)
     if bearing is not None:
-        from ..bearing import resolve_bearing
-        from ..bearing_tables import bearing_table
+        from bearingload.bearings.resolve import resolve_bearing
+        from bearingload.studies.bearing_tables import bearing_table
 
         if exponent != 1.5:
             raise click.UsageError(
@@ -134,8 +134,8 @@ def table(
             {"bearing": "--bearing"},
         )
         if method != "exact":
-            from ..method_tables import bearing_note
-            from ..tables import Conditions
+            from bearingload.studies.method_tables import bearing_note
+            from bearingload.studies.tables import Conditions
 
             cond = Conditions(load, resolved.stiffness, resolved.clearance, cage_angle, 1.5)
             emit(
@@ -149,7 +149,7 @@ def table(
         raise click.UsageError(
             "the geometry and material options (--ball-diameter ... --poisson) need --bearing"
         )
-    from ..clearance import clearance_length
+    from bearingload.bearings.clearance import clearance_length
 
     k = 1e5 if k_given is None else k_given
     cond = Conditions(load, k, clearance_length(clearance), cage_angle, exponent)
@@ -161,10 +161,10 @@ def table(
 
 
 def _method_table(name: str, method: str, z_max: int, cond: Any, note: str | None = None) -> Any:
-    """The table of one non-exact method, or the comparison of all (:mod:`bearingload.method_tables`)."""
+    """The table of one non-exact method, or the comparison of all (:mod:`bearingload.studies.method_tables`)."""
     import dataclasses
 
-    from ..method_tables import table_compare, table_method
+    from bearingload.studies.method_tables import table_compare, table_method
 
     if method == "all":
         table = table_compare(name, z_max, cond)

@@ -40,8 +40,8 @@ import math
 from dataclasses import dataclass
 from importlib import resources
 
-from .designation import Designation, parse
-from .errors import InputError
+from bearingload.bearings.designation import Designation, parse
+from bearingload.errors import InputError
 
 #: Default inner-groove conformity r_i / D_w (ISO/TS 16281 convention). [-]
 DEFAULT_F_I = 0.52
@@ -125,7 +125,7 @@ def _float(text: str) -> float | None:
 
 @functools.lru_cache(maxsize=1)
 def _rows() -> tuple[BearingGeometry, ...]:
-    path = resources.files("bearingload").joinpath("data/bearings.csv")
+    path = resources.files("bearingload.bearings").joinpath("data/bearings.csv")
     rows = []
     for rec in csv.DictReader(path.read_text(encoding="utf-8").splitlines()):
         f_i, f_o = _float(rec["f_i"]), _float(rec["f_o"])
@@ -218,7 +218,7 @@ def find(designation: str) -> BearingGeometry:
     Parameters
     ----------
     designation : str
-        Bearing designation, see :func:`bearingload.designation.parse`.
+        Bearing designation, see :func:`bearingload.bearings.designation.parse`.
 
     Returns
     -------

@@ -26,8 +26,8 @@ from typing import Any
 import numpy as np
 from numpy.typing import ArrayLike
 
-from .errors import InputError
-from .validate import finite_positive
+from bearingload.errors import InputError
+from bearingload.validate import finite_positive
 
 #: Life exponent p of ball bearings (ISO 281). [-]
 BALL_LIFE_EXPONENT = 3.0

@@ -15,18 +15,18 @@ from typing import Any
 
 import numpy as np
 
-from .bearing import ResolvedBearing
-from .equilibrium import LoadDistribution, solve
-from .life import allowable_load, rating_life
-from .render import Column, Table, render
-from .report_parts import (
+from bearingload.bearings.life import allowable_load, rating_life
+from bearingload.bearings.resolve import ResolvedBearing
+from bearingload.models.equilibrium import LoadDistribution, solve
+from bearingload.reports.parts import (
     JSON_UNITS,
     cage_angle_deg,
     distribution_json,
     distribution_rows,
     summary_table,
 )
-from .units import KGF
+from bearingload.reports.render import Column, Table, render
+from bearingload.units import KGF
 
 
 @dataclass(frozen=True)
@@ -55,7 +55,7 @@ def solve_bearing(
     Parameters
     ----------
     bearing : ResolvedBearing
-        From :func:`bearingload.bearing.resolve_bearing`.
+        From :func:`bearingload.bearings.resolve.resolve_bearing`.
     load : float
         Radial load F_r. [N]
     cage_angle : float or "half"
@@ -79,7 +79,7 @@ def solve_bearing(
         and bearing.f_i is not None
         and bearing.f_o is not None
     ):
-        from .hertz import ball_contacts
+        from bearingload.contact.hertz import ball_contacts
 
         c = ball_contacts(
             float(r.q_max),

@@ -4,9 +4,8 @@ from __future__ import annotations
 
 import numpy as np
 
-from .equilibrium import solve
-from .render import Column, Table, render
-from .report_parts import (
+from bearingload.models.equilibrium import solve
+from bearingload.reports.parts import (
     JSON_UNITS,
     cage_angle_deg,
     distribution_json,
@@ -15,6 +14,7 @@ from .report_parts import (
     inputs_text,
     summary_table,
 )
+from bearingload.reports.render import Column, Table, render
 
 
 def solve_report(

@@ -40,8 +40,8 @@ from typing import Any, NamedTuple
 
 import numpy as np
 
-from .errors import ConvergenceError, InputError
-from .units import parse_quantity
+from bearingload.errors import ConvergenceError, InputError
+from bearingload.units import parse_quantity
 
 #: Fitting methods accepted by :func:`fit_power_law`, with a one-line description.
 METHODS = {

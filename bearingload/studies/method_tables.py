@@ -1,7 +1,7 @@
 """Design tables per method and one table comparing the methods, for z = 1..z_max.
 
 ``bearingload table k --method NAME`` prints ``k = Q_max/F_r`` by one registered method of
-:mod:`bearingload.methods` (``exact`` is Table 1 of Kuzmenko 2010, :func:`bearingload.tables.table_k`);
+:mod:`bearingload.models.registry` (``exact`` is Table 1 of Kuzmenko 2010, :func:`bearingload.studies.tables.table_k`);
 ``--method all`` prints :func:`table_compare`: every method side by side with its relative error
 against the exact discrete answer. The same for ``kq`` (``K_Q = k z/2``, Kuzmenko & Sabadash 2014).
 """
@@ -12,9 +12,9 @@ from typing import Any
 
 import numpy as np
 
-from .methods import METHODS, compute
-from .render import Column, Table
-from .tables import balls_and_angles, omitted_note
+from bearingload.models.registry import METHODS, compute
+from bearingload.reports.render import Column, Table
+from bearingload.studies.tables import balls_and_angles, omitted_note
 
 #: The quantity of each table name: (result attribute, header, display digits, description).
 QUANTITIES = {
@@ -43,13 +43,13 @@ def table_method(name: str, method: str, z_max: int = 30, cond: Any = None) -> T
     name : {'k', 'kq'}
         The quantity.
     method : str
-        A registered method (:func:`bearingload.methods.list_methods`).
+        A registered method (:func:`bearingload.models.registry.list_methods`).
     z_max : int
         Largest number of balls. [-]
-    cond : bearingload.tables.Conditions, optional
+    cond : bearingload.studies.tables.Conditions, optional
         Load [N], stiffness [N/mm^m], clearance [mm], cage angle [°] or ``"half"``, exponent.
     """
-    from .tables import Conditions, table_k, table_kq
+    from bearingload.studies.tables import Conditions, table_k, table_kq
 
     cond = cond or Conditions()
     if method == "exact":
@@ -73,11 +73,11 @@ def table_compare(name: str, z_max: int = 30, cond: Any = None) -> Table:
     Columns: ``z``, ``n`` (balls carrying load, exact model), the quantity by each method, and
     ``Q_max/Q_max,exact - 1`` in percent for every other method (the same for ``k`` and ``K_Q``).
     """
-    from .tables import Conditions
+    from bearingload.studies.tables import Conditions
 
     cond = cond or Conditions()
     attr, header, digits, what = QUANTITIES[name]
-    from .equilibrium import solve
+    from bearingload.models.equilibrium import solve
 
     results = {m: _solve(m, z_max, cond)[1] for m in METHODS}
     z, angle = balls_and_angles(z_max, cond.cage_angle)
@@ -117,7 +117,7 @@ def table_compare(name: str, z_max: int = 30, cond: Any = None) -> Table:
 def bearing_note(bearing: Any) -> str:
     """One note line naming the bearing whose ball stiffness and clearance a table uses.
 
-    ``bearing`` is a :class:`bearingload.bearing.ResolvedBearing`.
+    ``bearing`` is a :class:`bearingload.bearings.resolve.ResolvedBearing`.
     """
     label = f"bearing {bearing.designation}" if bearing.designation else "the given ball"
     k_src = "given" if bearing.stiffness_given else "exact Hertz"

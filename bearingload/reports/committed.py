@@ -1,9 +1,9 @@
 """The tables committed under ``tables/``: one registry, written by ``make tables``, checked by tests.
 
-Each entry maps a file stem to a function returning the :class:`~bearingload.render.Table`;
+Each entry maps a file stem to a function returning the :class:`~bearingload.reports.render.Table`;
 every table is written as CSV (for diffs and scripts) and Markdown (for people).
 
-Run ``python -m bearingload.committed DIR`` to (re)write them.
+Run ``python -m bearingload.reports.committed DIR`` to (re)write them.
 """
 
 from __future__ import annotations
@@ -12,13 +12,13 @@ import os
 import sys
 from collections.abc import Callable
 
-from .render import Table, render, write_atomic
+from bearingload.reports.render import Table, render, write_atomic
 
 
 def _registry() -> dict[str, Callable[[], Table]]:
-    from .bearing_tables import kuzmenko2010_306_table
-    from .method_tables import table_compare
-    from .tables import table_k, table_kq
+    from bearingload.studies.bearing_tables import kuzmenko2010_306_table
+    from bearingload.studies.method_tables import table_compare
+    from bearingload.studies.tables import table_k, table_kq
 
     return {
         "table1_k_zero_clearance": lambda: table_k(30),

@@ -29,8 +29,8 @@ from typing import Any
 
 import numpy as np
 
-from . import validate
-from .errors import ConvergenceError, InputError
+from bearingload import validate
+from bearingload.errors import ConvergenceError, InputError
 
 #: Relative equilibrium residual the solver drives every case below. [-]
 TOLERANCE = 1e-13

@@ -12,9 +12,9 @@ from typing import Any
 
 import numpy as np
 
-from .equilibrium import LoadDistribution
-from .render import Column, Table
-from .units import KGF
+from bearingload.models.equilibrium import LoadDistribution
+from bearingload.reports.render import Column, Table
+from bearingload.units import KGF
 
 #: Units of the JSON keys of a solved case.
 JSON_UNITS = {

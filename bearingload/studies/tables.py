@@ -12,8 +12,8 @@ from dataclasses import dataclass
 
 import numpy as np
 
-from .equilibrium import LoadDistribution, solve
-from .render import Column, Table
+from bearingload.models.equilibrium import LoadDistribution, solve
+from bearingload.reports.render import Column, Table
 
 
 @dataclass(frozen=True)

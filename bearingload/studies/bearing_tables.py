@@ -1,6 +1,6 @@
 """Design tables (k, K_Q for z = 1..30) for the ball and raceways of one bearing.
 
-The tables of :mod:`bearingload.tables` depend, with clearance, on the load and the ball
+The tables of :mod:`bearingload.studies.tables` depend, with clearance, on the load and the ball
 stiffness; here the stiffness is the exact Hertz value of a resolved bearing's ball and
 raceways, and the title and notes say which bearing, clearance and sources were used.
 
@@ -9,16 +9,16 @@ F_r = 300 kgf, G_r = 20 µm (Delta = 10 µm per side) and 100 µm (worn, Delta =
 paper's geometry D_w 12.3 mm, d_m 51 mm, f_i = f_o = 0.515 (groove radius 1.03 D_w/2) and
 material E = 2.1e4 kgf/mm^2, nu = 0.3 -- but the exact Hertz stiffness of that geometry
 (about 4.0e5 N/mm^1.5), not the paper's 4700 kgf/mm^1.5 (see
-:func:`bearingload.hertz.kuzmenko2010_ball_constant`).
+:func:`bearingload.contact.hertz.kuzmenko2010_ball_constant`).
 """
 
 from __future__ import annotations
 
 import dataclasses
 
-from .bearing import Provenance, ResolvedBearing, resolve_bearing
-from .render import Table
-from .units import KGF
+from bearingload.bearings.resolve import Provenance, ResolvedBearing, resolve_bearing
+from bearingload.reports.render import Table
+from bearingload.units import KGF
 
 #: Young's modulus of Kuzmenko (2010), §3.4: 2.1e4 kgf/mm^2. [MPa]
 KUZMENKO2010_MODULUS = 2.1e4 * KGF
@@ -49,7 +49,7 @@ def bearing_table(
     cage_angle : float or "half"
         Cage angle [°].
     """
-    from .tables import Conditions, table_k, table_kq
+    from bearingload.studies.tables import Conditions, table_k, table_kq
 
     cond = Conditions(load, bearing.stiffness, bearing.clearance, cage_angle, 1.5)
     table = {"k": table_k, "kq": table_kq}[name](z_max, cond)

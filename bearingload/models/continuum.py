@@ -1,6 +1,6 @@
 """The continuum model: the balls' loads smeared over the raceway (Sjövall/Harris load-zone integral).
 
-Conventions (the same as the discrete engine, :mod:`bearingload.equilibrium`): outer ring fixed, radial load ``F_r``
+Conventions (the same as the discrete engine, :mod:`bearingload.models.equilibrium`): outer ring fixed, radial load ``F_r``
 on the inner ring, angles ``psi`` from the load line; ``clearance`` is the radial internal
 clearance ``G_r`` (total radial play), the gap per side is ``e = G_r/2``, negative = preload;
 ball stiffness ``K`` of both contacts in series, ``Q = K delta^m`` with ``m = 3/2`` for balls and
@@ -66,8 +66,8 @@ from typing import Any
 
 import numpy as np
 
-from . import validate
-from .errors import ConvergenceError, InputError
+from bearingload import validate
+from bearingload.errors import ConvergenceError, InputError
 
 #: Gauss-Legendre order used inside the solver iterations (J_r to ~3e-14). [-]
 NODES_SOLVER = 48

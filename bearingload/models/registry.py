@@ -5,7 +5,7 @@ Every method is called the same way,
     method(balls, load, stiffness, clearance=0.0, cage_angle=0.0, exponent=1.5) -> MethodResult,
 
 with the package's units (N, mm, N/mm^m, degrees) and the conventions of
-:mod:`bearingload.equilibrium` (outer ring fixed, radial load ``F_r`` on the inner ring, angles from
+:mod:`bearingload.models.equilibrium` (outer ring fixed, radial load ``F_r`` on the inner ring, angles from
 the load line; ``clearance`` is the radial internal clearance ``G_r``, total play; negative =
 preload). Inputs broadcast as in the underlying functions.
 
@@ -13,9 +13,9 @@ preload). Inputs broadcast as in the underlying functions.
 name       model                                                           ignores
 =========  ==============================================================  =======================
 exact      ring equilibrium of the discrete balls (Kurochkin 1973;         nothing
-           Kuzmenko 2010, §1-3), :func:`bearingload.equilibrium.solve`
+           Kuzmenko 2010, §1-3), :func:`bearingload.models.equilibrium.solve`
 continuum  balls smeared over the raceway (Kuzmenko 2010, §4-5; Sjövall    cage angle
-           load-zone integral), :func:`bearingload.continuum.solve_continuum`
+           load-zone integral), :func:`bearingload.models.continuum.solve_continuum`
 stribeck   ``Q_max = 4.37 F_r/z`` (Stribeck 1901)                          stiffness, clearance,
                                                                            cage angle, exponent
 palmgren   ``Q_max = 5 F_r/z`` (Palmgren 1959; seed 003, eq. 2)            stiffness, clearance,
@@ -36,7 +36,7 @@ from collections.abc import Callable
 from dataclasses import dataclass
 from typing import Any
 
-from .errors import InputError
+from bearingload.errors import InputError
 
 #: The default method of :func:`compute` and of ``bearingload solve``.
 DEFAULT_METHOD = "exact"
@@ -114,7 +114,7 @@ def _scalar(value: Any) -> Any:
 def _exact(
     balls: Any, load: Any, stiffness: Any, clearance: Any, cage_angle: Any, exponent: Any
 ) -> MethodResult:
-    from .equilibrium import solve
+    from bearingload.models.equilibrium import solve
 
     r = solve(balls, load, stiffness, clearance, cage_angle, exponent)
     return MethodResult(
@@ -127,8 +127,8 @@ def _continuum(
 ) -> MethodResult:
     import numpy as np
 
-    from . import validate
-    from .continuum import solve_continuum
+    from bearingload import validate
+    from bearingload.models.continuum import solve_continuum
 
     angle = validate.finite("cage_angle", cage_angle)  # checked, then not used
     r = solve_continuum(balls, load, stiffness, clearance, exponent)
@@ -144,8 +144,8 @@ def _one_line(name: str) -> Callable[..., MethodResult]:
     ) -> MethodResult:
         import numpy as np
 
-        from . import validate
-        from .approximations import palmgren, stribeck
+        from bearingload import validate
+        from bearingload.models.approximations import palmgren, stribeck
 
         z = validate.ball_count(balls)
         f = validate.positive("load", load, "N")

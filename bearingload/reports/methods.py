@@ -1,9 +1,9 @@
 """Reports of ``bearingload solve --method continuum|stribeck|palmgren|all``.
 
-The exact method keeps its own report (:mod:`bearingload.solve_report`, every ball's load); this
-module renders the other methods of :mod:`bearingload.methods` and the side-by-side comparison,
+The exact method keeps its own report (:mod:`bearingload.reports.solve`, every ball's load); this
+module renders the other methods of :mod:`bearingload.models.registry` and the side-by-side comparison,
 with each method's relative error against the exact discrete answer. Rows are built once and
-printed by :mod:`bearingload.render`.
+printed by :mod:`bearingload.reports.render`.
 """
 
 from __future__ import annotations
@@ -12,10 +12,10 @@ from typing import Any
 
 import numpy as np
 
-from .methods import METHODS, MethodResult, compute, compute_all, relative_error
-from .render import Column, Table, render
-from .report_parts import cage_angle_deg, inputs_json, inputs_text, summary_table
-from .units import KGF
+from bearingload.models.registry import METHODS, MethodResult, compute, compute_all, relative_error
+from bearingload.reports.parts import cage_angle_deg, inputs_json, inputs_text, summary_table
+from bearingload.reports.render import Column, Table, render
+from bearingload.units import KGF
 
 #: How the CLI names the inputs a method ignores.
 OPTION_OF = {
@@ -76,7 +76,7 @@ def method_report(
 
 
 def _continuum(args: tuple[Any, ...], fmt: str, extra: list[str]) -> str:
-    from .continuum import solve_continuum
+    from bearingload.models.continuum import solve_continuum
 
     balls, load, stiffness, clearance, angle, exponent = args
     compute("continuum", *args)  # the registry's input checks, cage angle included

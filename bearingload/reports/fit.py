@@ -3,9 +3,9 @@
 Kuzmenko & Sabadash (2014) fit ``Q = C u^n`` to the load ``Q`` and shaft displacement ``u`` of a
 pressed bearing, claim that the load-concentration factor is ``K_Q = n`` (their eq. 1.10) and give
 the normalised distribution ``sigma_bar = (u/u_max)^(n-1)`` (eq. 1.13). This module fits the law by
-their two-point method and by least squares (:mod:`bearingload.fit`), puts the claim next to the
+their two-point method and by least squares (:mod:`bearingload.studies.fit`), puts the claim next to the
 theoretical ``K_Q(z)`` of the equilibrium and continuum models and next to the Hertz exponent 3/2
-of an ideal clearance-free bearing, and renders all of it through :mod:`bearingload.render`.
+of an ideal clearance-free bearing, and renders all of it through :mod:`bearingload.reports.render`.
 
 Rows are built once (:func:`build_fit_report`); :func:`fit_report` renders them.
 """
@@ -18,15 +18,15 @@ from typing import Any
 
 import numpy as np
 
-from .errors import InputError
-from .render import Column, Table, render
-from .units import UNITS, parse_quantity
+from bearingload.errors import InputError
+from bearingload.reports.render import Column, Table, render
+from bearingload.units import UNITS, parse_quantity
 
 #: Exponent of the Hertz point contact, Q = K delta^(3/2): the exponent of the whole
 #: load-displacement curve of an ideal clearance-free ball bearing. [-]
 HERTZ_EXPONENT = 1.5
 
-#: The fits of the report, in order: (key, method of :func:`bearingload.fit.fit_power_law`, label).
+#: The fits of the report, in order: (key, method of :func:`bearingload.studies.fit.fit_power_law`, label).
 FITS = (
     ("two_point", "two_point", "two base points (paper, eq. 2.1)"),
     ("loglog", "loglog", "least squares on ln Q (log-log)"),
@@ -95,7 +95,7 @@ class FitReport:
     load, displacement : ndarray
         The pairs in the file's units.
     fits : dict
-        key of :data:`FITS` -> :class:`bearingload.fit.PowerLawFit` (internal units N, mm).
+        key of :data:`FITS` -> :class:`bearingload.studies.fit.PowerLawFit` (internal units N, mm).
     base_points : tuple
         The two base points of the two-point fit, in the file's units.
     base_from_file : bool
@@ -147,7 +147,7 @@ def build_fit_report(
     load_unit, displacement_unit : str
         Units of the file's columns.
     """
-    from .fit import fit_power_law, read_measurements
+    from bearingload.studies.fit import fit_power_law, read_measurements
 
     if load_unit not in UNITS["force"]:
         raise InputError(
@@ -207,7 +207,7 @@ def build_fit_report(
 
 
 def _k_q_comparison(fits: dict[str, Any], balls: int | None) -> dict[str, tuple[float | None, str]]:
-    from .methods import compute
+    from bearingload.models.registry import compute
 
     out: dict[str, tuple[float | None, str]] = {
         "claim_two_point": (fits["two_point"].exponent, "the paper's claim K_Q = n, two-point n"),
@@ -269,7 +269,7 @@ def fit_report(
     fmt: str = "table",
 ) -> str:
     """Fit, compare and render in ``fmt`` (see :func:`build_fit_report` for the parameters)."""
-    from .fit import normalized_distribution
+    from bearingload.studies.fit import normalized_distribution
 
     r = build_fit_report(
         path, base=base, balls=balls, load_unit=load_unit, displacement_unit=displacement_unit

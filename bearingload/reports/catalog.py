@@ -7,8 +7,8 @@ from __future__ import annotations
 
 from typing import Any
 
-from .catalog import BearingGeometry, entries, find
-from .render import Column, Table, render
+from bearingload.bearings.catalog import BearingGeometry, entries, find
+from bearingload.reports.render import Column, Table, render
 
 
 def catalog_list(
@@ -17,7 +17,7 @@ def catalog_list(
     standard: str | None = None,
     bore: float | None = None,
 ) -> str:
-    """The catalogue rows, filtered as :func:`bearingload.catalog.entries`, rendered in ``fmt``."""
+    """The catalogue rows, filtered as :func:`bearingload.bearings.catalog.entries`, rendered in ``fmt``."""
     rows = [_row(b) for b in entries(series=series, standard=standard, bore=bore)]
     filters = [
         f"{k} {v:g}" if isinstance(v, float) else f"{k} {v}"

@@ -34,8 +34,8 @@ import functools
 import re
 from dataclasses import dataclass
 
-from .errors import InputError
-from .units import parse_quantity
+from bearingload.errors import InputError
+from bearingload.units import parse_quantity
 
 #: The ISO clearance classes the table gives, in increasing clearance.
 CLASSES: tuple[str, ...] = ("C2", "CN", "C3", "C4", "C5")
@@ -87,7 +87,7 @@ def table() -> tuple[ClearanceRow, ...]:
     import csv  # the table is read on first use only
     from importlib import resources
 
-    path = resources.files("bearingload").joinpath("data/clearance_deep_groove.csv")
+    path = resources.files("bearingload.bearings").joinpath("data/clearance_deep_groove.csv")
     rows = []
     for rec in csv.DictReader(path.read_text(encoding="utf-8").splitlines()):
         limits = {

@@ -49,7 +49,7 @@ from typing import Any, NamedTuple
 import numpy as np
 from numpy.typing import ArrayLike
 
-from .errors import ConvergenceError, InputError
+from bearingload.errors import ConvergenceError, InputError
 
 #: Young's modulus of bearing steel, NSK catalogue: 208 000 MPa {21 200 kgf/mm^2}. [MPa]
 E_STEEL = 208_000.0

@@ -2,9 +2,9 @@
 
 Both give ``Q_max = C F_r / (i z cos(alpha))`` with a constant ``C``: Stribeck's 4.37 is the zero-
 clearance value for point contact (``1/J_r(1/2)`` of the continuum model, see
-:mod:`bearingload.continuum`), Palmgren's 5 allows for a normal operating clearance. They ignore
-the clearance, the load level and the cage position; use :mod:`bearingload.equilibrium` or
-:mod:`bearingload.continuum` when those matter.
+:mod:`bearingload.models.continuum`), Palmgren's 5 allows for a normal operating clearance. They ignore
+the clearance, the load level and the cage position; use :mod:`bearingload.models.equilibrium` or
+:mod:`bearingload.models.continuum` when those matter.
 
 References
 ----------
@@ -23,8 +23,8 @@ from typing import Any, NamedTuple
 
 import numpy as np
 
-from . import validate
-from .errors import InputError
+from bearingload import validate
+from bearingload.errors import InputError
 
 #: Stribeck's constant: Q_max = 4.37 F_r / z (point contact, zero clearance). [-]
 STRIBECK_CONSTANT = 4.37

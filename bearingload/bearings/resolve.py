@@ -8,10 +8,10 @@ load ratings, and for every value the place it came from.
 
 Rules
 -----
-* Geometry: catalogue row (:func:`bearingload.catalog.lookup`), each value replaceable.
+* Geometry: catalogue row (:func:`bearingload.bearings.catalog.lookup`), each value replaceable.
   Without a designation, ``balls`` is needed and either ``stiffness`` or the ball geometry
   (``ball_diameter`` and ``pitch_diameter``; conformities default to 0.52 / 0.53).
-* Stiffness: exact Hertz (:func:`bearingload.hertz.ball_stiffness`) from the geometry, E and nu
+* Stiffness: exact Hertz (:func:`bearingload.contact.hertz.ball_stiffness`) from the geometry, E and nu
   (default bearing steel, 208 000 MPa and 0.3), unless ``stiffness`` is given.
 * Clearance: a length is G_r itself (total radial play; the gap per side is G_r/2). A class
   (``C2 CN C3 C4 C5``, GOST groups written ``G6 G7 G8 G9``; a bare number is always a length)
@@ -31,16 +31,16 @@ import dataclasses
 import math
 from dataclasses import dataclass
 
-from .catalog import DEFAULT_F_I, DEFAULT_F_O, BearingGeometry, lookup
-from .clearance import (
+from bearingload.bearings.catalog import DEFAULT_F_I, DEFAULT_F_O, BearingGeometry, lookup
+from bearingload.bearings.clearance import (
     _NEEDS_BORE,
     PICKS,
     ClearanceSpec,
     clearance_range,
     parse_clearance,
 )
-from .errors import InputError
-from .validate import finite_positive
+from bearingload.errors import InputError
+from bearingload.validate import finite_positive
 
 #: Young's modulus used when none is given: bearing steel, NSK 208 000 MPa. [MPa]
 DEFAULT_MODULUS = 208_000.0
@@ -245,7 +245,7 @@ def resolve_bearing(
             # designation still gives the bore, which resolves a clearance class
             if balls is None or ball_diameter is None or pitch_diameter is None:
                 raise
-            from .designation import parse
+            from bearingload.bearings.designation import parse
 
             hand_bore = parse(designation).bore
             sources.append(
@@ -308,7 +308,7 @@ def resolve_bearing(
     nu = DEFAULT_POISSON if poisson is None else float(poisson)
     k_i = k_o = k_hertz = None
     if dw is not None and dm is not None and fi is not None and fo is not None:
-        from .hertz import ball_stiffness
+        from bearingload.contact.hertz import ball_stiffness
 
         prov += [
             Provenance(
@@ -428,7 +428,7 @@ def _resolve_clearance(
 
 
 def _clearance_row_source(bore: float | None) -> str:
-    from .clearance import table
+    from bearingload.bearings.clearance import table
 
     for row in table():
         if bore is not None and row.bore_over < bore <= row.bore_incl:

@@ -1,0 +1,1 @@
+"""Contact mechanics: Hertz point contact of balls, line contact of rollers."""
