@@ -1,3 +1,45 @@
-"""bearingload: load distribution among the balls and rollers of a radial rolling bearing."""
+"""bearingload: load distribution among the balls and rollers of a radial rolling bearing.
+
+The main entry points, importable from here (each is loaded on first use, so that a terminal
+calculation does not pay for the whole package at start-up)::
+
+    from bearingload import solve              # exact ring equilibrium, degrees in and out
+    from bearingload import solve_continuum    # the continuum model (Kuzmenko 2010, §4-5)
+    from bearingload import compute, list_methods   # any registered model by name
+"""
+
+from __future__ import annotations
+
+from typing import Any
 
 __version__ = "0.1.0"
+
+#: public name -> module that defines it
+_API = {
+    "solve": "bearingload.models.equilibrium",
+    "LoadDistribution": "bearingload.models.equilibrium",
+    "solve_continuum": "bearingload.models.continuum",
+    "compute": "bearingload.models.registry",
+    "compute_all": "bearingload.models.registry",
+    "list_methods": "bearingload.models.registry",
+    "METHODS": "bearingload.models.registry",
+    "InputError": "bearingload.errors",
+    "ConvergenceError": "bearingload.errors",
+    "BearingloadError": "bearingload.errors",
+}
+
+__all__ = ["__version__", *_API]
+
+
+def __getattr__(name: str) -> Any:
+    if name in _API:
+        import importlib
+
+        value = getattr(importlib.import_module(_API[name]), name)
+        globals()[name] = value
+        return value
+    raise AttributeError(f"module 'bearingload' has no attribute {name!r}")
+
+
+def __dir__() -> list[str]:
+    return sorted(__all__)

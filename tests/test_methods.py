@@ -92,7 +92,7 @@ def test_each_method_is_its_library_function():
     assert (r.k, r.q_max, r.K_Q, r.load_zone) == (
         float(cont.k),
         float(cont.q_max),
-        float(cont.k_q),
+        float(cont.K_Q),
         float(cont.load_zone),
     )
     assert compute("stribeck", *CASE).q_max == stribeck(z, f).q_max == 4.37 * f / 8

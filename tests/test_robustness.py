@@ -90,7 +90,7 @@ def test_a_huge_cage_angle_keeps_its_position():
     same = solve(8, 100.0, 4e5, 0.0, 280.0)
     assert float(big.q_max) == pytest.approx(float(same.q_max), rel=1e-13)
     assert float(big.q_max) == pytest.approx(float(big.ball_loads().max()), rel=1e-13)
-    assert np.all((big.ball_angles() >= 0) & (big.ball_angles() < 2 * np.pi))
+    assert np.all((big.ball_angles() >= 0) & (big.ball_angles() < 360.0))
 
 
 def test_roller_stiffness_units():

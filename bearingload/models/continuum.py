@@ -94,17 +94,17 @@ class ContinuumResult:
         Load factor ``Q_max/F_r = 1/(z J_r(eps))``. [-]
     q_max : ndarray
         Load on the most loaded element (on the load line). [N]
-    k_q : ndarray
+    K_Q : ndarray
         Load-concentration factor ``K_Q = Q_max/(F_r/(z/2)) = k z/2`` (Kuzmenko & Sabadash 2014). [-]
     load_zone : ndarray
-        Half-angle of the load zone ``psi_l`` (``pi`` when every element is loaded). [rad]
+        Half-angle of the load zone ``psi_l`` (180 when every element is loaded). [°]
     epsilon : ndarray
         Load-zone parameter ``eps = (1 - e/x)/2``. [-]
     deflection : ndarray
         Displacement ``x`` of the inner ring along the load. [mm]
     max_deflection : ndarray
         Elastic approach of the most loaded element ``delta_max = x - e``. [mm]
-    stiffness : ndarray
+    stiffness_radial : ndarray
         Tangent radial stiffness of the bearing ``dF_r/dx``. [N/mm]
     iterations : ndarray
         Newton iterations spent (0 at zero clearance). [-]
@@ -112,12 +112,12 @@ class ContinuumResult:
 
     k: np.ndarray
     q_max: np.ndarray
-    k_q: np.ndarray
+    K_Q: np.ndarray
     load_zone: np.ndarray
     epsilon: np.ndarray
     deflection: np.ndarray
     max_deflection: np.ndarray
-    stiffness: np.ndarray
+    stiffness_radial: np.ndarray
     iterations: np.ndarray
 
 
@@ -282,7 +282,7 @@ def solve_continuum(
     Returns
     -------
     ContinuumResult
-        ``k``, ``q_max``, ``k_q``, ``load_zone``, ``epsilon``, ``deflection``, ``max_deflection``,
+        ``k``, ``q_max``, ``K_Q``, ``load_zone``, ``epsilon``, ``deflection``, ``max_deflection``,
         ``stiffness`` (``dF_r/dx``) and ``iterations``.
 
     Raises
@@ -337,12 +337,12 @@ def solve_continuum(
     return ContinuumResult(
         k=k.reshape(shape),
         q_max=(k * force).reshape(shape),
-        k_q=(k * z / 2.0).reshape(shape),
-        load_zone=zone.reshape(shape),
+        K_Q=(k * z / 2.0).reshape(shape),
+        load_zone=np.rad2deg(zone).reshape(shape),
         epsilon=eps.reshape(shape),
         deflection=x.reshape(shape),
         max_deflection=d_max.reshape(shape),
-        stiffness=stiff.reshape(shape),
+        stiffness_radial=stiff.reshape(shape),
         iterations=iterations.reshape(shape),
     )
 

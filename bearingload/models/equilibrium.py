@@ -57,7 +57,7 @@ class LoadDistribution:
     clearance : ndarray
         Radial internal clearance ``G_r`` (total play; negative = preload). [mm]
     cage_angle : ndarray
-        Angle of ball 1 from the load line. [rad]
+        Angle of ball 1 from the load line, reduced to [0, 360). [°]
     exponent : ndarray
         Load-deflection exponent ``m``. [-]
     x, y : ndarray
@@ -67,7 +67,7 @@ class LoadDistribution:
     loaded_balls : ndarray of int
         Number of balls carrying load. [-]
     load_zone : ndarray
-        Half-angle of the load zone, ``arccos(e/|d|)`` around the displacement ``d``. [rad]
+        Half-angle of the load zone, ``arccos(e/|d|)`` around the displacement ``d``. [°]
     stiffness_matrix : ndarray, shape (..., 2, 2)
         Tangent stiffness ``dF/dd`` of the bearing in the (along, across) axes. [N/mm]
     iterations : ndarray of int
@@ -120,9 +120,13 @@ class LoadDistribution:
         return schur
 
     def ball_angles(self) -> np.ndarray:
-        """Angles ``phi_i`` of balls 1..z from the load line, in [0, 2 pi), for one case. [rad]"""
+        """Angles ``phi_i`` of balls 1..z from the load line, in [0, 360), for one case. [°]"""
+        return np.rad2deg(self._ball_angles_rad())
+
+    def _ball_angles_rad(self) -> np.ndarray:
         z = int(self._one(self.balls))
-        return np.mod(float(self._one(self.cage_angle)) + 2.0 * np.pi * np.arange(z) / z, 2 * np.pi)
+        phi1 = np.deg2rad(float(self._one(self.cage_angle)))
+        return np.mod(phi1 + 2.0 * np.pi * np.arange(z) / z, 2 * np.pi)
 
     def ball_approaches(self) -> np.ndarray:
         """Approach ``delta_i`` of balls 1..z (negative: the gap left), for one case. [mm]
@@ -130,7 +134,7 @@ class LoadDistribution:
         Computed as ``offset . n_i - e u_i`` from the reference position, so that a clearance
         much larger than the elastic approach costs no digits.
         """
-        phi = self.ball_angles()
+        phi = self._ball_angles_rad()
         mu, h = (float(v) for v in np.asarray(self.reference).reshape(2))
         dx, dy = (float(v) for v in np.asarray(self.offset).reshape(2))
         e = float(self._one(self.clearance)) / 2.0
@@ -211,11 +215,12 @@ def solve(
     kk = validate.positive("stiffness", stiffness, "N/mm^m")
     g = validate.finite("clearance", clearance)
     # reduce in degrees first (exact), so a huge angle keeps its position on the ring
-    phi1 = np.deg2rad(np.mod(validate.finite("cage_angle", cage_angle), 360.0))
+    phi1_deg = np.mod(validate.finite("cage_angle", cage_angle), 360.0)
+    phi1 = np.deg2rad(phi1_deg)
     m = validate.exponent(exponent)
-    z, f, kk, g, phi1, m = np.broadcast_arrays(z, f, kk, g, phi1, m)
+    z, f, kk, g, phi1, phi1_deg, m = np.broadcast_arrays(z, f, kk, g, phi1, phi1_deg, m)
     shape = z.shape
-    z, f, kk, g, phi1, m = (a.ravel() for a in (z, f, kk, g, phi1, m))
+    z, f, kk, g, phi1, phi1_deg, m = (a.ravel() for a in (z, f, kk, g, phi1, phi1_deg, m))
 
     with np.errstate(all="ignore"):
         scale = (f / kk) ** (1.0 / m)  # approach of one ball carrying the whole load [mm]
@@ -290,13 +295,13 @@ def solve(
         load=shaped(f),
         stiffness=shaped(kk),
         clearance=shaped(g),
-        cage_angle=shaped(phi1),
+        cage_angle=shaped(phi1_deg),
         exponent=shaped(m),
         x=shaped(x),
         y=shaped(y),
         q_max=shaped(rows[:, _COL["q_hat"]] * f),
         loaded_balls=shaped(rows[:, _COL["loaded"]].astype(np.int64)),
-        load_zone=shaped(zone),
+        load_zone=shaped(np.rad2deg(zone)),
         stiffness_matrix=matrix.reshape(shape + (2, 2)),
         iterations=shaped(rows[:, _COL["iterations"]].astype(np.int64)),
         offset=np.stack([xi * scale, eta * scale], axis=-1).reshape(shape + (2,)),

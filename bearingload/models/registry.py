@@ -59,7 +59,7 @@ class MethodResult:
     K_Q : float or ndarray
         Load-concentration factor ``K_Q = Q_max/(F_r/(z/2)) = k z/2`` (Kuzmenko & Sabadash 2014). [-]
     load_zone : float, ndarray or None
-        Half-angle of the load zone; ``None`` for the one-line estimates, which have none. [rad]
+        Half-angle of the load zone; ``None`` for the one-line estimates, which have none. [°]
     """
 
     method: str
@@ -133,7 +133,7 @@ def _continuum(
     angle = validate.finite("cage_angle", cage_angle)  # checked, then not used
     r = solve_continuum(balls, load, stiffness, clearance, exponent)
     shape = np.broadcast_shapes(np.shape(r.k), angle.shape)
-    parts = (np.broadcast_to(a, shape) for a in (r.k, r.q_max, r.k_q, r.load_zone))
+    parts = (np.broadcast_to(a, shape) for a in (r.k, r.q_max, r.K_Q, r.load_zone))
     k, q, kq, zone = (_scalar(np.array(a)) for a in parts)
     return MethodResult("continuum", k, q, kq, zone)
 

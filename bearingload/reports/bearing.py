@@ -13,8 +13,6 @@ from __future__ import annotations
 from dataclasses import dataclass
 from typing import Any
 
-import numpy as np
-
 from bearingload.bearings.life import allowable_load, rating_life
 from bearingload.bearings.resolve import ResolvedBearing
 from bearingload.models.equilibrium import LoadDistribution, solve
@@ -180,7 +178,7 @@ def bearing_report(cases: list[BearingCase], fmt: str) -> str:
 
 def _balls_table(cases: list[BearingCase]) -> Table:
     first = cases[0].result
-    phi = np.rad2deg(first.ball_angles())
+    phi = first.ball_angles()
     loads = [c.result.ball_loads() for c in cases]
     columns = [Column("ball", "ball"), Column("angle", "angle", "°", 6)]
     if len(cases) == 1:

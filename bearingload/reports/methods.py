@@ -10,8 +10,6 @@ from __future__ import annotations
 
 from typing import Any
 
-import numpy as np
-
 from bearingload.models.registry import METHODS, MethodResult, compute, compute_all, relative_error
 from bearingload.reports.parts import cage_angle_deg, inputs_json, inputs_text, summary_table
 from bearingload.reports.render import Column, Table, render
@@ -32,7 +30,7 @@ def _ignores_text(name: str) -> str:
 
 
 def _zone_deg(result: MethodResult) -> float | None:
-    return None if result.load_zone is None else float(np.rad2deg(result.load_zone))
+    return None if result.load_zone is None else float(result.load_zone)
 
 
 def _units(exponent: float) -> dict[str, str]:
@@ -81,8 +79,8 @@ def _continuum(args: tuple[Any, ...], fmt: str, extra: list[str]) -> str:
     balls, load, stiffness, clearance, angle, exponent = args
     compute("continuum", *args)  # the registry's input checks, cage angle included
     r = solve_continuum(balls, load, stiffness, clearance, exponent)
-    k, kq, q = float(r.k), float(r.k_q), float(r.q_max)
-    zone = float(np.rad2deg(r.load_zone))
+    k, kq, q = float(r.k), float(r.K_Q), float(r.q_max)
+    zone = float(r.load_zone)
     note = f"{METHODS['continuum'].title}. The continuum has no cage position: --cage-angle is ignored."
     if fmt == "json":
         doc = (
@@ -95,7 +93,7 @@ def _continuum(args: tuple[Any, ...], fmt: str, extra: list[str]) -> str:
                 "load_zone_deg": zone,
                 "deflection": float(r.deflection),
                 "max_deflection": float(r.max_deflection),
-                "stiffness_radial": float(r.stiffness),
+                "stiffness_radial": float(r.stiffness_radial),
                 "epsilon": float(r.epsilon),
                 "ignores": list(METHODS["continuum"].ignores),
                 "units": _units(exponent),
@@ -111,7 +109,7 @@ def _continuum(args: tuple[Any, ...], fmt: str, extra: list[str]) -> str:
         ("load zone half-angle", zone, "°"),
         ("ring displacement along the load x", float(r.deflection) * 1e3, "µm"),
         ("approach on the load line x - G_r/2", float(r.max_deflection) * 1e3, "µm"),
-        ("radial stiffness dF_r/dx", float(r.stiffness), "N/mm"),
+        ("radial stiffness dF_r/dx", float(r.stiffness_radial), "N/mm"),
         ("load-zone parameter epsilon", float(r.epsilon), "-"),
     ]
     return render(

@@ -10,8 +10,6 @@ from __future__ import annotations
 from collections.abc import Sequence
 from typing import Any
 
-import numpy as np
-
 from bearingload.models.equilibrium import LoadDistribution
 from bearingload.reports.render import Column, Table
 from bearingload.units import KGF
@@ -68,7 +66,7 @@ def distribution_rows(r: LoadDistribution) -> list[tuple[str, Any, str]]:
         ("heaviest ball load Q_max", float(r.q_max), "N"),
         ("heaviest ball load Q_max", float(r.q_max) / KGF, "kgf"),
         ("balls carrying load", int(r.loaded_balls), ""),
-        ("load zone half-angle", float(np.rad2deg(r.load_zone)), "°"),
+        ("load zone half-angle", float(r.load_zone), "°"),
         ("ring displacement along the load x", float(r.x) * 1e3, "µm"),
         ("ring displacement across the load y", float(r.y) * 1e3, "µm"),
         ("radial stiffness dF_r/dx", float(r.stiffness_radial), "N/mm"),
@@ -82,12 +80,12 @@ def distribution_json(r: LoadDistribution) -> dict[str, Any]:
         "K_Q": float(r.K_Q),
         "q_max": float(r.q_max),
         "loaded_balls": int(r.loaded_balls),
-        "load_zone_deg": float(np.rad2deg(r.load_zone)),
+        "load_zone_deg": float(r.load_zone),
         "deflection": float(r.x),
         "deflection_across": float(r.y),
         "stiffness_radial": float(r.stiffness_radial),
         "stiffness_matrix": r.stiffness_matrix.tolist(),
-        "ball_angles_deg": np.rad2deg(r.ball_angles()),
+        "ball_angles_deg": r.ball_angles(),
         "ball_loads": r.ball_loads(),
     }
 

@@ -46,9 +46,7 @@ def solve_report(
         ],
         rows=[
             {"ball": i + 1, "angle": float(a), "approach": float(d) * 1e3, "load": float(f)}
-            for i, (a, d, f) in enumerate(
-                zip(np.rad2deg(r.ball_angles()), approach, q, strict=True)
-            )
+            for i, (a, d, f) in enumerate(zip(r.ball_angles(), approach, q, strict=True))
         ],
     )
     summary = summary_table(f"Summary ({inputs_text(*args)})", distribution_rows(r))
