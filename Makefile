@@ -32,7 +32,7 @@ lint: $(STAMP)
 	$(BIN)/mypy bearingload
 
 tables: $(STAMP)
-	$(BIN)/python -m bearingload.reports.committed tables
+	$(BIN)/python -m bearingload.reports.committed tables --readme README.md
 
 ## make bench: vectorised solver against a per-case scipy brentq loop, same run
 bench: $(STAMP)

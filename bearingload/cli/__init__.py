@@ -14,7 +14,13 @@ from bearingload import __version__
 from bearingload.cli.options import CONTEXT
 
 #: Command name -> module of this package defining a command object of the same name.
-COMMANDS = {"solve": "solve", "table": "table", "catalog": "catalog", "fit": "fit"}
+COMMANDS = {
+    "solve": "solve",
+    "table": "table",
+    "catalog": "catalog",
+    "fit": "fit",
+    "errata": "errata",
+}
 
 
 class LazyGroup(click.Group):
@@ -50,6 +56,7 @@ def main() -> None:
       bearingload solve 306 --load 300kgf --clearance C3
       bearingload catalog show 306
       bearingload fit examples/bearing208_kuzmenko2014.csv --load-unit kgf --balls 9
+      bearingload errata --only-differing
     """
 
 

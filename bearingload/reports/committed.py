@@ -3,7 +3,8 @@
 Each entry maps a file stem to a function returning the :class:`~bearingload.reports.render.Table`;
 every table is written as CSV (for diffs and scripts) and Markdown (for people).
 
-Run ``python -m bearingload.reports.committed DIR`` to (re)write them.
+Run ``python -m bearingload.reports.committed DIR [--readme README.md]`` to (re)write them (and
+the README's generated errata block, :func:`bearingload.reports.errata.readme_block`).
 """
 
 from __future__ import annotations
@@ -16,7 +17,9 @@ from bearingload.reports.render import Table, render, write_atomic
 
 
 def _registry() -> dict[str, Callable[[], Table]]:
+    from bearingload.reports.errata import errata_table
     from bearingload.studies.bearing_tables import kuzmenko2010_306_table
+    from bearingload.studies.errata import errata_rows
     from bearingload.studies.method_tables import table_compare
     from bearingload.studies.tables import table_k, table_kq
 
@@ -30,6 +33,8 @@ def _registry() -> dict[str, Callable[[], Table]]:
         "table2_kq_306_300kgf_gr100um": lambda: kuzmenko2010_306_table("kq", 0.100),
         # exact, continuum, Stribeck and Palmgren side by side (issue 4), Table 1 conditions
         "k_methods_zero_clearance": lambda: table_compare("k", 30),
+        # every printed number the project recomputes (bearingload errata)
+        "errata": lambda: errata_table(errata_rows()),
     }
 
 
@@ -52,7 +57,27 @@ def write_all(directory: str) -> list[str]:
     return sorted(files)
 
 
+def update_readme(path: str) -> bool:
+    """Rewrite the generated errata block of the README at ``path``; whether it changed."""
+    from bearingload.reports.errata import replace_readme_block
+
+    with open(path, encoding="utf-8") as fh:
+        text = fh.read()
+    new = replace_readme_block(text)
+    if new != text:
+        write_atomic(new, path)
+    return new != text
+
+
 if __name__ == "__main__":  # pragma: no cover - exercised by `make tables`
-    target = sys.argv[1] if len(sys.argv) > 1 else "tables"
+    args = sys.argv[1:]
+    readme = None
+    if "--readme" in args:
+        at = args.index("--readme")
+        readme = args[at + 1]
+        del args[at : at + 2]
+    target = args[0] if args else "tables"
     for name in write_all(target):
         print(f"wrote {os.path.join(target, name)}")
+    if readme is not None:
+        print(f"{'rewrote' if update_readme(readme) else 'unchanged'} errata block of {readme}")

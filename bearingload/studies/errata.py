@@ -78,7 +78,9 @@ def _loaded_balls(row: Published) -> float:
     from bearingload.models.equilibrium import solve
 
     args = case(row)
-    return float(solve(args["balls"], args["load"], args["stiffness"], args["clearance"]).loaded_balls)
+    return float(
+        solve(args["balls"], args["load"], args["stiffness"], args["clearance"]).loaded_balls
+    )
 
 
 def _resolving_lhs(row: Published) -> float:
@@ -103,7 +105,9 @@ def _hertz(row: Published) -> float:
     paper = kuzmenko2010_ball_constant(r1, r2, r3, e, nu, n_delta)
     b_hertz = paper.sum_rho / 2 - paper.A  # = (1/R1 + 1/R3)/2
     if q == "ball_stiffness":  # exact Hertz, both contacts in series, kgf and mm
-        return float(ball_stiffness(2 * r1, 2 * (r1 + r3), r2 / (2 * r1), r2 / (2 * r1), E=e, nu=nu).ball)
+        return float(
+            ball_stiffness(2 * r1, 2 * (r1 + r3), r2 / (2 * r1), r2 / (2 * r1), E=e, nu=nu).ball
+        )
     values = {
         "e_star": paper.e_star,
         "sum_rho": paper.sum_rho,
@@ -214,7 +218,7 @@ def compare(row: Published) -> dict[str, Any]:
         "printed": row.printed,
         "computed": computed,
         "difference": difference,
-        "relative": difference / computed if computed else float("nan"),
+        "relative": difference / computed if computed else None,
         "verdict": AGREES if agrees else DIFFERS,
         "cause": "" if agrees else (row.cause or "unknown"),
     }
@@ -252,8 +256,10 @@ def _normalised(row: dict[str, Any]) -> dict[str, Any]:
     out.setdefault("unit", "")
     if "relative" not in out:
         computed, diff = out.get("computed"), out.get("difference")
-        ok = isinstance(computed, (int, float)) and isinstance(diff, (int, float)) and computed
-        out["relative"] = diff / computed if ok else float("nan")
+        if isinstance(computed, (int, float)) and isinstance(diff, (int, float)) and computed:
+            out["relative"] = diff / computed
+        else:
+            out["relative"] = None
     out["cause"] = out.get("cause") or ""
     return out
 
@@ -265,9 +271,7 @@ def summary(rows: list[dict[str, Any]]) -> list[dict[str, Any]]:
         c = counts.setdefault((r["source"], r["table"]), [0, 0])
         c[0] += 1
         c[1] += r["verdict"] == DIFFERS
-    return [
-        {"source": s, "table": t, "rows": n, "differ": d} for (s, t), (n, d) in counts.items()
-    ]
+    return [{"source": s, "table": t, "rows": n, "differ": d} for (s, t), (n, d) in counts.items()]
 
 
 __all__ = ["AGREES", "DIFFERS", "FILES", "ROW_SOURCES", "errata_rows", "summary"]

@@ -128,7 +128,9 @@ def load(paper: str) -> tuple[Published, ...]:
         raise ValueError(f"unknown paper {paper!r}; known: {', '.join(FILES)}")
     text = (
         resources.files("bearingload.studies")
-        .joinpath("data", "published", f"{paper}.csv")
+        .joinpath("data")
+        .joinpath("published")
+        .joinpath(f"{paper}.csv")
         .read_text(encoding="utf-8")
     )
     reader = csv.DictReader(text.splitlines())
@@ -163,9 +165,7 @@ def all_published() -> tuple[Published, ...]:
 def select(paper: str, table: str, quantity: str | None = None) -> tuple[Published, ...]:
     """The rows of one table (and quantity) of one paper, in file order."""
     return tuple(
-        r
-        for r in load(paper)
-        if r.table == table and (quantity is None or r.quantity == quantity)
+        r for r in load(paper) if r.table == table and (quantity is None or r.quantity == quantity)
     )
 
 

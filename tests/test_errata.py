@@ -1,0 +1,124 @@
+"""``bearingload errata``: the rows, the command, the committed tables and the README block."""
+
+from __future__ import annotations
+
+import csv
+import io
+import json
+import math
+import subprocess
+import sys
+from pathlib import Path
+
+import pytest
+
+from bearingload.reports import committed
+from bearingload.reports.errata import README_END, README_START, readme_block
+from bearingload.studies import errata
+from bearingload.studies.errata import AGREES, DIFFERS, ROW_SOURCES, errata_rows
+
+from .cli_helpers import invoke, run_entry
+
+ROOT = Path(__file__).resolve().parents[1]
+KEYS = {"source", "table", "cell", "printed", "computed", "difference", "verdict", "cause"}
+
+
+def test_rows_have_every_column_and_a_verdict():
+    rows = errata_rows()
+    assert len(rows) == 172
+    for r in rows:
+        assert KEYS <= set(r)
+        assert r["verdict"] in (AGREES, DIFFERS)
+        assert math.isfinite(r["computed"]) and math.isfinite(r["difference"])
+        assert r["relative"] == pytest.approx(r["difference"] / r["computed"], rel=1e-12)
+    papers = {r["source"] for r in rows}
+    assert papers == {"Kuzmenko 2010", "Kuzmenko & Sabadash 2014"}
+
+
+def test_row_sources_is_the_one_list(monkeypatch):
+    """A new paper is one more (module, function) entry in ROW_SOURCES."""
+    extra = [{"source": "X 1999", "table": "T", "cell": "c", "printed": 1.5, "computed": 1.0,
+              "difference": 0.5, "verdict": DIFFERS, "cause": "test"}]  # fmt: skip
+    monkeypatch.setattr(errata, "_extra_rows_for_test", lambda: extra, raising=False)
+    monkeypatch.setattr(
+        errata,
+        "ROW_SOURCES",
+        [*ROW_SOURCES, ("bearingload.studies.errata", "_extra_rows_for_test")],
+    )
+    rows = errata.errata_rows()
+    assert len(rows) == 173
+    assert rows[-1]["printed"] == "1.5" and rows[-1]["relative"] == 0.5
+
+
+def test_only_differing_and_summary_agree():
+    rows = errata_rows()
+    out = invoke("errata", "--only-differing", "--format", "json").output
+    table = json.loads(out)["rows"]
+    assert len(table) == sum(r["verdict"] == DIFFERS for r in rows) == 52
+    summary = json.loads(invoke("errata", "--summary", "--format", "json").output)
+    counts = summary["rows"]
+    assert sum(c["rows"] for c in counts) == 172 and sum(c["differ"] for c in counts) == 52
+
+
+@pytest.mark.parametrize("fmt", ["table", "csv", "markdown", "json"])
+def test_every_format(fmt):
+    r = invoke("errata", "--format", fmt)
+    assert r.exit_code == 0
+    assert "Table 2.2" in r.output and "differs" in r.output
+    assert r.output == invoke("errata", "--format", fmt).output  # identical from run to run
+
+
+def test_csv_is_the_committed_table(tmp_path):
+    target = tmp_path / "e.csv"
+    r = invoke("errata", "--format", "csv", "-o", str(target))
+    assert r.exit_code == 0 and r.output == ""
+    text = target.read_text(encoding="utf-8")
+    assert text == (ROOT / "tables" / "errata.csv").read_text(encoding="utf-8")
+    rows = list(csv.DictReader(io.StringIO(text)))
+    assert len(rows) == 172
+    z5 = next(r for r in rows if r["table"] == "Table 1" and r["cell"] == "z = 5, k")
+    assert z5["printed"] == "0.9362" and z5["verdict"] == DIFFERS
+
+
+def test_paper_filter_and_bad_paper(capsys):
+    out = invoke("errata", "--paper", "sabadash", "--format", "csv").output
+    lines = out.splitlines()[1:]
+    assert len(lines) == 89 and all(line.startswith("Kuzmenko & Sabadash 2014,") for line in lines)
+    code, out, err = run_entry(capsys, "errata", "--paper", "nobody")
+    assert code == 2 and out == ""
+    assert (
+        err.startswith("Error: Invalid value for '--paper': no paper matches")
+        and err.count("\n") == 1
+    )
+
+
+def test_help_has_examples():
+    out = invoke("errata", "--help").output
+    assert "Examples:" in out and "bearingload errata --only-differing" in out
+
+
+def test_committed_errata_registered():
+    files = committed.generate()
+    assert "errata.csv" in files and "errata.md" in files
+
+
+def test_readme_block_is_generated_from_the_rows():
+    """README.md's "Published vs computed" numbers are exactly what the code generates."""
+    text = (ROOT / "README.md").read_text(encoding="utf-8")
+    start, end = text.index(README_START), text.index(README_END) + len(README_END)
+    assert text[start:end] == readme_block(), "run `make tables` and commit README.md"
+    assert "z = 30, K_Q" in text[start:end]
+    # no hand-kept copy of the printed tables outside the block
+    section = text[text.index("## Published vs computed") : text.index("## Speed")]
+    outside = section.replace(text[start:end], "")
+    for printed in ("0.9362", "2.341", "170.3", "0.7181", "2.1875", "0.416"):
+        assert printed not in outside
+
+
+def test_errata_command_is_lazy():
+    code = (
+        "import sys; from bearingload.cli import main; "
+        "assert 'bearingload.studies.errata' not in sys.modules; "
+        "import bearingload.studies.published; assert 'numpy' not in sys.modules"
+    )
+    assert subprocess.run([sys.executable, "-c", code], timeout=60).returncode == 0
