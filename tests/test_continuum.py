@@ -19,14 +19,21 @@ from bearingload.models.continuum import (
     zero_clearance_k,
 )
 
+from .fixtures.published import (
+    KUZMENKO2010_CONTINUUM_I,
+    KUZMENKO2010_CONTINUUM_K8,
+    KUZMENKO2010_CONTINUUM_KZ,
+)
+
 KGF = 9.80665
 
 # Printed values of Kuzmenko A.G., "Load distribution between balls in a radial ball bearing",
 # Problems of Tribology, 2010, no. 1, pp. 29-41 (seed 000), §4 steps 4-5, compared with the exact
 # values. "computed" is our value (checked against mpmath below); "difference" = printed - computed.
+# The printed values come from the shipped data (tests/fixtures/published.py).
 DISAGREEMENTS = {
     "I = int_0^{pi/2} cos^{5/2} (§4, eq. (d))": {
-        "printed": 0.7181,
+        "printed": KUZMENKO2010_CONTINUUM_I,
         "computed": 0.718884140841355,
         "difference": -0.000784140841355,
         "cause": "arithmetic slip: the paper's own formula pi*Gamma(3.5)/(2^3.5*Gamma(2.25)^2) with "
@@ -34,13 +41,13 @@ DISAGREEMENTS = {
         "if Gamma(1.25) is taken as 0.9069",
     },
     "k z at zero clearance (eq. 4.20)": {
-        "printed": 4.3749,
+        "printed": KUZMENKO2010_CONTINUUM_KZ,
         "computed": 4.370095923820053,
         "difference": 0.004804076179947,
         "cause": "carried over from I = 0.7181 (2 pi/1.4362 = 4.37487)",
     },
     "k for z = 8 at zero clearance (§4, step 5)": {
-        "printed": 0.5468,
+        "printed": KUZMENKO2010_CONTINUUM_K8,
         "computed": 0.546261990477507,
         "difference": 0.000538009522493,
         "cause": "4.3749/8 = 0.546864, from the wrong I; 0.5468 is also truncated, not rounded",
@@ -139,12 +146,12 @@ def test_paper_integral_and_k_disagreements():
     # The paper's own gamma-function arithmetic, with its own table values, gives 0.71889:
     own = math.pi * 2.5 * 1.5 * 0.88623 / (2**3.5 * (1.25 * 0.9064) ** 2)
     assert own == pytest.approx(0.71889, abs=5e-6)
-    assert abs(own - 0.7181) > 7e-4
+    assert abs(own - KUZMENKO2010_CONTINUUM_I) > 7e-4
     # ... and 0.7181 exactly if Gamma(1.25) is read as 0.9069 instead of 0.9064:
     slip = math.pi * 2.5 * 1.5 * 0.88623 / (2**3.5 * (1.25 * 0.9069) ** 2)
-    assert round(slip, 4) == 0.7181
+    assert round(slip, 4) == KUZMENKO2010_CONTINUUM_I
     # The rest of the chain is consistent with the printed I: 2 pi / (2 * 0.7181) = 4.3749.
-    assert round(2 * math.pi / (2 * 0.7181), 4) == 4.3749
+    assert round(2 * math.pi / (2 * KUZMENKO2010_CONTINUUM_I), 4) == KUZMENKO2010_CONTINUUM_KZ
 
 
 def test_paper_claim_continuum_close_to_discrete_z8():

@@ -23,83 +23,82 @@ from bearingload.studies.fit import (
     read_measurements,
 )
 
+from .fixtures.published import (
+    KUZMENKO2014_C,
+    KUZMENKO2014_KQ_Z9_TABLE22,
+    KUZMENKO2014_KQ_Z9_TEXT,
+    KUZMENKO2014_N,
+    KUZMENKO2014_SIGMA_08,
+    KUZMENKO2014_SIGMA_112,
+    KUZMENKO2014_SIGMA_EXPONENT,
+    KUZMENKO2014_TABLE21,
+)
+
 KGF = 9.80665
 EXAMPLE = Path(__file__).resolve().parents[1] / "examples" / "bearing208_kuzmenko2014.csv"
 
 # Kuzmenko A.G., Sabadash B.M. "Load distribution between the balls of a radial rolling bearing.
 # Part 2: solution by the variational-experimental method", Problems of Tribology, 2014 (seed 002),
 # Table 2.1 "Test results", bearing 208 (z = 9), rows 1-10: Q [kgf], u0 [mm], u/u_max, sigma_bar,
-# as printed. The same numbers are shipped in examples/bearing208_kuzmenko2014.csv.
-TABLE_2_1 = np.array(
-    [
-        [100, 0.68, 0.407, 0.343],
-        [200, 0.8, 0.416, 0.352],
-        [300, 0.93, 0.557, 0.498],
-        [400, 1.03, 0.617, 0.563],
-        [500, 1.12, 0.62, 0.566],
-        [600, 1.24, 0.743, 0.702],
-        [700, 1.35, 0.808, 0.776],
-        [800, 1.44, 0.862, 0.838],
-        [900, 1.57, 0.940, 0.923],
-        [1000, 1.67, 1.0, 1.0],
-    ]
-)
+# as printed, from the shipped data (tests/fixtures/published.py). The same numbers are shipped
+# in examples/bearing208_kuzmenko2014.csv.
+TABLE_2_1 = np.array(KUZMENKO2014_TABLE21)
 # Seed 002 §2.2: base points (eq. 2.1), printed n (eq. 2.1), C (eq. 2.2), exponent n - 1 = 1.19
 # used for sigma_bar (eq. 2.4), theoretical K_Q for z = 9 quoted in §3 step 4, and the Table 2.2
 # cell for z/n1 = 9/5.
 BASE_POINTS_KGF = ((200.0, 0.8), (1000.0, 1.67))
-PRINTED_N = 2.1875
-PRINTED_C = 326.0
-PRINTED_SIGMA_EXPONENT = 1.19
-PRINTED_KQ_Z9_TEXT = 2.1870
-PRINTED_KQ_Z9_TABLE_2_2 = 2.193
+PRINTED_N = KUZMENKO2014_N
+PRINTED_C = KUZMENKO2014_C
+PRINTED_SIGMA_EXPONENT = KUZMENKO2014_SIGMA_EXPONENT
+PRINTED_KQ_Z9_TEXT = KUZMENKO2014_KQ_Z9_TEXT
+PRINTED_KQ_Z9_TABLE_2_2 = KUZMENKO2014_KQ_Z9_TABLE22
 
 # Disagreements between the printed numbers and the exact computation (printed - computed).
 DISAGREEMENTS = {
     "n, eq. 2.1": {
-        "printed": 2.1875,
+        "printed": PRINTED_N,
         "computed": 2.186833816923821,
         "difference": 0.000666183076179,
         "cause": "lg(200/1000) = -0.69897 and lg(0.8/1.67) = -0.31963 rounded to 0.7 and 0.32",
     },
     "C, eq. 2.2 [kgf/mm^n]": {
-        "printed": 326.0,
+        "printed": PRINTED_C,
         "computed": 325.80375793651734,
         "difference": 0.19624206348266,
         "cause": "rounding to three figures (agrees)",
     },
     "u/u_max, row 2": {
-        "printed": 0.416,
+        "printed": TABLE_2_1[1, 2],
         "computed": 0.8 / 1.67,
-        "difference": 0.416 - 0.8 / 1.67,
+        "difference": TABLE_2_1[1, 2] - 0.8 / 1.67,
         "cause": "the column holds sigma_bar of row 2 (eq. 2.5: 0.416) instead of 0.8/1.67",
     },
     "u/u_max, row 5": {
-        "printed": 0.62,
+        "printed": TABLE_2_1[4, 2],
         "computed": 1.12 / 1.67,
-        "difference": 0.62 - 1.12 / 1.67,
+        "difference": TABLE_2_1[4, 2] - 1.12 / 1.67,
         "cause": "the column holds sigma_bar of row 5 (eq. 2.6: 0.62) instead of 1.12/1.67",
     },
     "sigma_bar, row 2": {
-        "printed": 0.352,
+        "printed": TABLE_2_1[1, 3],
         "computed": (0.8 / 1.67) ** 1.19,
-        "difference": 0.352 - (0.8 / 1.67) ** 1.19,
+        "difference": TABLE_2_1[1, 3] - (0.8 / 1.67) ** 1.19,
         "cause": "computed from the wrong u/u_max 0.416 (0.416^1.19 = 0.352)",
     },
     "sigma_bar, row 5": {
-        "printed": 0.566,
+        "printed": TABLE_2_1[4, 3],
         "computed": (1.12 / 1.67) ** 1.19,
-        "difference": 0.566 - (1.12 / 1.67) ** 1.19,
+        "difference": TABLE_2_1[4, 3] - (1.12 / 1.67) ** 1.19,
         "cause": "computed from the wrong u/u_max 0.62 (0.62^1.19 = 0.566)",
     },
     "sigma_bar, row 9": {
-        "printed": 0.923,
+        "printed": TABLE_2_1[8, 3],
         "computed": (1.57 / 1.67) ** 1.19,
-        "difference": 0.923 - (1.57 / 1.67) ** 1.19,
+        "difference": TABLE_2_1[8, 3] - (1.57 / 1.67) ** 1.19,
         "cause": "arithmetic slip (0.940^1.19 = 0.929)",
     },
     "K_Q for z = 9, §3 step 4": {
-        "printed": 2.1870,
+        "printed": PRINTED_KQ_Z9_TEXT,
         "computed": 2.192604011809313,
         "difference": -0.005604011809313,
         "cause": "contradicts the paper's own Table 2.2 (2.193 for z = 9); 2.187 is the z = 13 cell",
@@ -152,7 +151,8 @@ def test_paper_normalised_distribution_columns():
     assert sigma[1] == pytest.approx(float((mp.mpf("0.8") / mp.mpf("1.67")) ** 1.19), rel=1e-14)
     # eqs. 2.5-2.6: sigma_bar(0.8) = 0.416 (exactly 0.41654, truncated), sigma_bar(1.12) = 0.62
     assert 0.4165 < sigma[1] < 0.4166
-    assert round(sigma[4], 2) == 0.62 and sigma[-1] == 1.0
+    assert round(sigma[4], 2) == KUZMENKO2014_SIGMA_112 and sigma[-1] == 1.0
+    assert math.floor(sigma[1] * 1000) / 1000 == KUZMENKO2014_SIGMA_08  # eq. 2.5, truncated
     bad = {1, 4, 8}  # rows 2, 5 and 9
     for i in range(10):
         if i in bad:
