@@ -25,7 +25,7 @@ KEYS = {"source", "table", "cell", "printed", "computed", "difference", "verdict
 
 def test_rows_have_every_column_and_a_verdict():
     rows = errata_rows()
-    assert len(rows) == 172
+    assert len(rows) == 186
     for r in rows:
         assert KEYS <= set(r)
         assert r["verdict"] in (AGREES, DIFFERS)
@@ -46,7 +46,7 @@ def test_row_sources_is_the_one_list(monkeypatch):
         [*ROW_SOURCES, ("bearingload.studies.errata", "_extra_rows_for_test")],
     )
     rows = errata.errata_rows()
-    assert len(rows) == 173
+    assert len(rows) == 187
     assert rows[-1]["printed"] == "1.5" and rows[-1]["relative"] == 0.5
 
 
@@ -54,10 +54,10 @@ def test_only_differing_and_summary_agree():
     rows = errata_rows()
     out = invoke("errata", "--only-differing", "--format", "json").output
     table = json.loads(out)["rows"]
-    assert len(table) == sum(r["verdict"] == DIFFERS for r in rows) == 52
+    assert len(table) == sum(r["verdict"] == DIFFERS for r in rows) == 62
     summary = json.loads(invoke("errata", "--summary", "--format", "json").output)
     counts = summary["rows"]
-    assert sum(c["rows"] for c in counts) == 172 and sum(c["differ"] for c in counts) == 52
+    assert sum(c["rows"] for c in counts) == 186 and sum(c["differ"] for c in counts) == 62
 
 
 @pytest.mark.parametrize("fmt", ["table", "csv", "markdown", "json"])
@@ -75,7 +75,7 @@ def test_csv_is_the_committed_table(tmp_path):
     text = target.read_text(encoding="utf-8")
     assert text == (ROOT / "tables" / "errata.csv").read_text(encoding="utf-8")
     rows = list(csv.DictReader(io.StringIO(text)))
-    assert len(rows) == 172
+    assert len(rows) == 186
     z5 = next(r for r in rows if r["table"] == "Table 1" and r["cell"] == "z = 5, k")
     assert z5["printed"] == "0.9362" and z5["verdict"] == DIFFERS
 

@@ -89,6 +89,39 @@ def _resolving_lhs(row: Published) -> float:
     return float(args["load"] / (args["stiffness"] * (args["clearance"] / 2) ** 1.5))
 
 
+def _resolving_rhs(row: Published) -> float:
+    """Right side of Kuzmenko (2010) eq. 3.4 at a trial angle ``phi0`` (a ball under the load).
+
+    ``sum over the loaded balls of cos psi_i (cos psi_i/cos phi0 - 1)^1.5``, ``psi_i = 360° i/z``;
+    ``part`` picks the ball at 0° (``centre``), the others (``sides``) or both (``all``).
+    """
+    import math
+
+    z = int(row.inputs["balls"])
+    c0 = math.cos(math.radians(float(row.inputs["phi0"])))
+    part = row.inputs.get("part", "all")
+    total = 0.0
+    for i in range(z):
+        c = math.cos(2 * math.pi * i / z)
+        if c > c0 and (part == "all" or (part == "centre") == (i == 0)):
+            total += c * (c / c0 - 1.0) ** 1.5
+    return total
+
+
+def _q_max_change(row: Published) -> float:
+    """Change of the heaviest ball load between ``reference_clearance`` and ``clearance``:
+    in the printed unit (``q_max_increase``) or in percent (``q_max_increase_percent``)."""
+    import dataclasses
+
+    base = _with_quantity(row, "q_max")
+    ref_inputs = dict(row.inputs, clearance=row.inputs["reference_clearance"])
+    ref = dataclasses.replace(base, inputs=ref_inputs, unit="kgf")
+    q, q_ref = method_value(dataclasses.replace(base, unit="kgf")), method_value(ref)
+    if row.quantity == "q_max_increase_percent":
+        return 100.0 * (q / q_ref - 1.0)
+    return q - q_ref
+
+
 def _hertz(row: Published) -> float:
     """One step of the §3.4.2 stiffness chain of Kuzmenko (2010), done right."""
     from bearingload.contact.hertz import (
@@ -174,6 +207,9 @@ DERIVATIONS: dict[tuple[str, str], Callable[[Published], float]] = {
     ("exact", "loaded_balls"): _loaded_balls,
     ("exact", "kq_minus_n"): _kq_minus_n,
     ("formula", "resolving_lhs"): _resolving_lhs,
+    ("formula", "resolving_rhs"): _resolving_rhs,
+    ("exact", "q_max_increase"): _q_max_change,
+    ("exact", "q_max_increase_percent"): _q_max_change,
     ("continuum", "integral_I"): _integral,
     ("life", "allowable_load"): _allowable_load,
     **{
