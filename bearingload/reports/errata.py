@@ -66,6 +66,7 @@ def summary_table(rows: list[dict[str, Any]]) -> Table:
             Column("source", "paper", align="left"),
             Column("table", "table / eq. / section", align="left"),
             Column("rows", "checked"),
+            Column("agree", "agree"),
             Column("differ", "differ"),
         ],
         rows=summary(rows),

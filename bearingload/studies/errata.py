@@ -7,8 +7,9 @@ within its printed rounding. Other papers add their rows through :data:`ROW_SOUR
 
 A row is a dict with the keys ``source`` (paper), ``table`` (table, equation or section),
 ``cell``, ``printed`` (text, as printed), ``computed``, ``difference`` (printed - computed),
-``verdict`` (:data:`AGREES` or :data:`DIFFERS`) and ``cause``; rows built here also carry
-``unit`` and ``relative`` (difference / computed).
+``verdict`` (:data:`AGREES`, :data:`DIFFERS`, or another word such as "lost in print" for a cell
+that cannot be compared) and ``cause``; rows built here also carry ``unit`` and ``relative``
+(difference / computed); :func:`errata_rows` fills those in for the other sources.
 """
 
 from __future__ import annotations
@@ -27,6 +28,7 @@ DIFFERS = "differs"
 ROW_SOURCES: list[tuple[str, str]] = [
     ("bearingload.studies.errata", "kuzmenko2010_rows"),
     ("bearingload.studies.errata", "kuzmenko_sabadash2014_rows"),
+    ("bearingload.studies.kurochkin_errata", "kurochkin1973_rows"),
 ]
 
 #: Quantities the registered methods return (``kz`` is ``k`` times the number of balls).
@@ -297,17 +299,24 @@ def _normalised(row: dict[str, Any]) -> dict[str, Any]:
         else:
             out["relative"] = None
     out["cause"] = out.get("cause") or ""
+    if str(out["verdict"]).startswith("agrees"):  # "agrees within printed rounding"
+        out["verdict"] = AGREES
     return out
 
 
 def summary(rows: list[dict[str, Any]]) -> list[dict[str, Any]]:
-    """Per paper and table: how many printed numbers are checked and how many differ."""
+    """Per paper and table: how many printed numbers are checked, agree and differ (a cell that
+    cannot be compared, such as one lost in print, counts as checked only)."""
     counts: dict[tuple[str, str], list[int]] = {}
     for r in rows:
-        c = counts.setdefault((r["source"], r["table"]), [0, 0])
+        c = counts.setdefault((r["source"], r["table"]), [0, 0, 0])
         c[0] += 1
-        c[1] += r["verdict"] == DIFFERS
-    return [{"source": s, "table": t, "rows": n, "differ": d} for (s, t), (n, d) in counts.items()]
+        c[1] += r["verdict"] == AGREES
+        c[2] += r["verdict"] == DIFFERS
+    return [
+        {"source": s, "table": t, "rows": n, "agree": a, "differ": d}
+        for (s, t), (n, a, d) in counts.items()
+    ]
 
 
 __all__ = ["AGREES", "DIFFERS", "FILES", "ROW_SOURCES", "errata_rows", "summary"]
