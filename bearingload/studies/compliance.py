@@ -178,8 +178,8 @@ FIT_PBAR_Z = (0.01, 0.03, 0.1, 0.3, 1.0, 3.0, 10.0, 30.0, 100.0)
 
 def fit_rows() -> list[dict[str, Any]]:
     """The paper's fits (7), (8) against the exact groups, z = 8, 9, 12, 16, P̄/z = 0.01-100."""
-    z, pz = np.meshgrid(FIT_BALLS, FIT_PBAR_Z, indexing="ij")
-    z, pz = z.ravel(), pz.ravel()
+    zz, pp = np.meshgrid(FIT_BALLS, FIT_PBAR_Z, indexing="ij")
+    z, pz = zz.ravel(), pp.ravel()
     exact = paper_groups(z, pz * z, 1.0, 2.0)  # S0 = 1, K = 1: P = z P̄/z
     power = pz**FIT_EXPONENT
     rows = []
