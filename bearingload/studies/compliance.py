@@ -124,7 +124,7 @@ def compensating_clearances(
     --------
     >>> roots = compensating_clearances(9, 1000.0, 1.0e5)
     >>> len(roots), [round(g, 5) for g in roots if g > 0]
-    (6, [0.01062, 0.08429, 0.43571])
+    (6, [0.01065, 0.0843, 0.43572])
     """
     from scipy.optimize import brentq
 
@@ -221,8 +221,9 @@ def fit_table() -> Table:
             "Fit (7) at φ1 = 0 holds within 5 % for 0.1 <= P̄/z <= 3 and any z here (10 % at "
             "P̄/z = 10, 22 % at 100: the exact exponent tends to 2/3). At φ1 = π/z the exact "
             "coefficient depends on z (fit error +22 % at z = 8 against 1 % at z = 16, P̄/z = 0.1).",
-            "Fit (8) does not hold: the exact δα/S0 is 1.04-13 times the fit over the claimed range "
-            "and depends on z; the paper's own coefficients give 2.855 - 2.773 = 0.082, not 0.076.",
+            "Fit (8) does not hold: over 0.1 <= P̄/z <= 10 it misses the exact δα/S0 by -89 % to "
+            "+21 % and the exact value depends on z; the paper's own coefficients (7) give "
+            "2.855 - 2.773 = 0.082, not 0.076.",
         ),
     )
 
