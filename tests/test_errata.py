@@ -21,12 +21,14 @@ from .cli_helpers import invoke, run_entry
 
 ROOT = Path(__file__).resolve().parents[1]
 KUROCHKIN = "Kurochkin 1973, Izv. AN SSSR MTT"
+COMPLIANCE = "Varying-compliance abstract (seed 001), eqs. (7)-(9)"
+STIFFNESS = "Crane-bearing stiffness (seed 003, 2009), eqs. (19)-(22)"
 KEYS = {"source", "table", "cell", "printed", "computed", "difference", "verdict", "cause"}
 
 
 def test_rows_have_every_column_and_a_verdict():
     rows = errata_rows()
-    assert len(rows) == 900
+    assert len(rows) == 914
     for r in rows:
         assert KEYS <= set(r) and isinstance(r["printed"], str)
         assert r["verdict"] in (AGREES, DIFFERS, "lost in print")
@@ -35,7 +37,7 @@ def test_rows_have_every_column_and_a_verdict():
             assert math.isfinite(r["difference"])
             assert r["relative"] == pytest.approx(r["difference"] / r["computed"], rel=1e-12)
     papers = {r["source"] for r in rows}
-    assert papers == {"Kuzmenko 2010", "Kuzmenko & Sabadash 2014", KUROCHKIN}
+    assert papers == {"Kuzmenko 2010", "Kuzmenko & Sabadash 2014", KUROCHKIN, COMPLIANCE, STIFFNESS}
 
 
 def test_counts_per_paper():
@@ -48,6 +50,8 @@ def test_counts_per_paper():
         "Kuzmenko 2010": (97, 36),
         "Kuzmenko & Sabadash 2014": (89, 26),
         KUROCHKIN: (714, 168),
+        COMPLIANCE: (8, 8),
+        STIFFNESS: (6, 5),
     }
 
 
@@ -62,7 +66,7 @@ def test_row_sources_is_the_one_list(monkeypatch):
         [*ROW_SOURCES, ("bearingload.studies.errata", "_extra_rows_for_test")],
     )
     rows = errata.errata_rows()
-    assert len(rows) == 901
+    assert len(rows) == 915
     assert rows[-1]["printed"] == "1.5" and rows[-1]["relative"] == 0.5
 
 
@@ -70,10 +74,10 @@ def test_only_differing_and_summary_agree():
     rows = errata_rows()
     out = invoke("errata", "--only-differing", "--format", "json").output
     table = json.loads(out)["rows"]
-    assert len(table) == sum(r["verdict"] == DIFFERS for r in rows) == 230
+    assert len(table) == sum(r["verdict"] == DIFFERS for r in rows) == 243
     summary = json.loads(invoke("errata", "--summary", "--format", "json").output)
     counts = summary["rows"]
-    assert sum(c["rows"] for c in counts) == 900 and sum(c["differ"] for c in counts) == 230
+    assert sum(c["rows"] for c in counts) == 914 and sum(c["differ"] for c in counts) == 243
 
 
 @pytest.mark.parametrize("fmt", ["table", "csv", "markdown", "json"])
@@ -91,7 +95,7 @@ def test_csv_is_the_committed_table(tmp_path):
     text = target.read_text(encoding="utf-8")
     assert text == (ROOT / "tables" / "errata.csv").read_text(encoding="utf-8")
     rows = list(csv.DictReader(io.StringIO(text)))
-    assert len(rows) == 900
+    assert len(rows) == 914
     z5 = next(r for r in rows if r["table"] == "Table 1" and r["cell"] == "z = 5, k")
     assert z5["printed"] == "0.9362" and z5["verdict"] == DIFFERS
 

@@ -29,6 +29,8 @@ ROW_SOURCES: list[tuple[str, str]] = [
     ("bearingload.studies.errata", "kuzmenko2010_rows"),
     ("bearingload.studies.errata", "kuzmenko_sabadash2014_rows"),
     ("bearingload.studies.kurochkin_errata", "kurochkin1973_rows"),
+    ("bearingload.studies.compliance", "compliance_rows"),
+    ("bearingload.studies.stiffness", "stiffness_rows"),
 ]
 
 #: Quantities the registered methods return (``kz`` is ``k`` times the number of balls).

@@ -21,6 +21,7 @@ from typing import Any
 
 import numpy as np
 
+from bearingload.reports.render import Column, Table
 from bearingload.studies import kurochkin as ku
 
 DATA = os.path.join(os.path.dirname(__file__), "data", "kurochkin1973.csv")
@@ -220,3 +221,28 @@ def kurochkin1973_rows() -> list[dict[str, Any]]:
             }
         )
     return rows
+
+
+def differences_table() -> Table:
+    """Committed table ``kurochkin1973_differences``: every printed cell that is not confirmed."""
+    rows = [r for r in kurochkin1973_rows() if r["verdict"] != "agrees within printed rounding"]
+    return Table(
+        title="Kurochkin (1973), Tables 1-4 and Example 1: printed cells that differ from the "
+        "exact model beyond their printed rounding",
+        columns=[
+            Column("cell", "cell", align="left"),
+            Column("printed", "printed", align="left"),
+            Column("computed", "computed", "-", 5),
+            Column("difference", "printed - computed", "-", 3),
+            Column("cause", "likely cause", align="left"),
+        ],
+        rows=[
+            {**r, "difference": "" if r["difference"] is None else r["difference"]} for r in rows
+        ],
+        notes=(
+            f"{len(rows)} of {len(read_cells())} printed cells; the others agree within their "
+            "printed rounding. Units: T, F0'·10³, F0j'·10³ [-]; ψ [°]; e [µm] (gap per side).",
+            "Exact: the ring equilibrium with P = K = 1 and clearance 2e from eq. (1.13); F0j' by "
+            "Gauss-Legendre quadrature over each smooth piece of the half pitch (error < 1e-12).",
+        ),
+    )
