@@ -39,6 +39,8 @@ COMMANDS = {
     "catalog_show_306": "catalog show 306",
     "fit_208": "fit examples/bearing208_kuzmenko2014.csv --load-unit kgf --base 200kgf:0.8mm "
     "--base 1000kgf:1.67mm --balls 9",
+    "errata_summary": "errata --summary",
+    "errata_sabadash_differing": "errata --paper sabadash --only-differing",
 }
 
 

@@ -35,7 +35,9 @@ def test_rows_have_every_column_and_a_verdict():
         assert math.isfinite(r["computed"])
         if r["verdict"] != "lost in print":
             assert math.isfinite(r["difference"])
-            assert r["relative"] == pytest.approx(r["difference"] / r["computed"], rel=1e-12)
+            assert r["relative_difference"] == pytest.approx(
+                r["difference"] / r["computed"], rel=1e-12
+            )
     papers = {r["source"] for r in rows}
     assert papers == {"Kuzmenko 2010", "Kuzmenko & Sabadash 2014", KUROCHKIN, COMPLIANCE, STIFFNESS}
 
@@ -67,7 +69,7 @@ def test_row_sources_is_the_one_list(monkeypatch):
     )
     rows = errata.errata_rows()
     assert len(rows) == 915
-    assert rows[-1]["printed"] == "1.5" and rows[-1]["relative"] == 0.5
+    assert rows[-1]["printed"] == "1.5" and rows[-1]["relative_difference"] == 0.5
 
 
 def test_only_differing_and_summary_agree():
@@ -77,7 +79,7 @@ def test_only_differing_and_summary_agree():
     assert len(table) == sum(r["verdict"] == DIFFERS for r in rows) == 243
     summary = json.loads(invoke("errata", "--summary", "--format", "json").output)
     counts = summary["rows"]
-    assert sum(c["rows"] for c in counts) == 914 and sum(c["differ"] for c in counts) == 243
+    assert sum(c["checked"] for c in counts) == 914 and sum(c["differ"] for c in counts) == 243
 
 
 @pytest.mark.parametrize("fmt", ["table", "csv", "markdown", "json"])

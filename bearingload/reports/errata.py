@@ -19,19 +19,46 @@ README_END = "<!-- errata:end -->"
 
 NOTES = (
     "printed: as printed (decimal comma made a point); computed: the package's value of the same "
-    "quantity in the same unit; difference = printed - computed; relative = difference/computed.",
+    "quantity in the same unit; relative difference = (printed - computed)/computed.",
     "verdict 'agrees': |difference| is within half a unit of the last printed digit (a printed "
     "integer that states an exact value, such as k = 1, is held to 1e-9).",
 )
 
 
+#: Columns of the errata and of its summary (keys of :data:`bearingload.reports.quantities.QUANTITIES`).
+ERRATA_KEYS = (
+    "source",
+    "table",
+    "cell",
+    "unit",
+    "printed",
+    "computed",
+    "difference",
+    "relative_difference",
+    "verdict",
+    "cause",
+)
+SUMMARY_KEYS = ("source", "table", "checked", "agree", "differ")
+_RIGHT = {"printed", "checked", "agree", "differ"}
+
+
+def _column(key: str) -> Column:
+    from bearingload.reports.quantities import QUANTITIES
+
+    q = QUANTITIES[key]
+    right = key in _RIGHT or q.digits is not None
+    return Column(
+        key, q.label, "" if q.unit == "" else q.unit, q.digits, "right" if right else "left"
+    )
+
+
 def _cells(row: dict[str, Any]) -> dict[str, Any]:
-    out = dict(row)
-    rel = row.get("relative")
-    out["relative_percent"] = 100.0 * rel if isinstance(rel, (int, float)) else ""
-    for key in ("computed", "difference"):
-        if not isinstance(out.get(key), (int, float)):
+    """A row with an empty cell where a number is missing (a cell lost in print)."""
+    out = {k: row.get(k) for k in ERRATA_KEYS}
+    for key in ("computed", "difference", "relative_difference"):
+        if not isinstance(out[key], (int, float)):
             out[key] = ""
+    out["unit"] = out["unit"] or ""
     return out
 
 
@@ -39,36 +66,19 @@ def errata_table(rows: list[dict[str, Any]], title: str | None = None) -> Table:
     """Every row: source, table, cell, unit, printed, computed, difference, verdict, cause."""
     return Table(
         title=title or "Published vs computed: every printed number the project recomputes",
-        columns=[
-            Column("source", "paper", align="left"),
-            Column("table", "table / eq. / section", align="left"),
-            Column("cell", "cell", align="left"),
-            Column("unit", "unit", align="left"),
-            Column("printed", "printed"),
-            Column("computed", "computed", digits=6),
-            Column("difference", "difference", digits=3),
-            Column("relative_percent", "relative", "%", digits=2),
-            Column("verdict", "verdict", align="left"),
-            Column("cause", "cause", align="left"),
-        ],
+        columns=[_column(k) for k in ERRATA_KEYS],
         rows=[_cells(r) for r in rows],
         notes=NOTES,
     )
 
 
 def summary_table(rows: list[dict[str, Any]]) -> Table:
-    """Per paper and table: printed numbers checked and how many differ."""
+    """Per paper and table: printed numbers checked, how many agree and how many differ."""
     from bearingload.studies.errata import summary
 
     return Table(
         title="Printed numbers checked, per paper and table",
-        columns=[
-            Column("source", "paper", align="left"),
-            Column("table", "table / eq. / section", align="left"),
-            Column("rows", "checked"),
-            Column("agree", "agree"),
-            Column("differ", "differ"),
-        ],
+        columns=[_column(k) for k in SUMMARY_KEYS],
         rows=summary(rows),
     )
 

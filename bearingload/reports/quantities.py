@@ -91,6 +91,21 @@ QUANTITIES: dict[str, Quantity] = {
         Quantity("rating_life", "basic rating life L10 = (C/F_r)^3", "10^6 rev"),
         Quantity("allowable_load", "allowable load C/L^(1/3)", "N", also=("kgf", 1 / KGF)),
         Quantity("revolutions", "life L of the allowable load", "10^6 rev"),
+        # published vs computed (bearingload errata); "computed" and "difference" are in the unit
+        # of the row ("unit"), the printed value is text as printed
+        Quantity("source", "paper", "", None),
+        Quantity("table", "table / eq. / section", "", None),
+        Quantity("cell", "cell", "", None),
+        Quantity("unit", "unit", "", None),
+        Quantity("printed", "printed", "", None),
+        Quantity("computed", "computed", "", 6),
+        Quantity("difference", "difference (printed - computed)", "", 3),
+        Quantity("relative_difference", "relative difference", "-", 2),
+        Quantity("verdict", "verdict", "", None),
+        Quantity("cause", "cause", "", None),
+        Quantity("checked", "printed numbers checked", "", None),
+        Quantity("agree", "agree", "", None),
+        Quantity("differ", "differ", "", None),
         # per ball
         Quantity("ball", "ball", "", None),
         Quantity("ball_angles_deg", "angle", "°"),

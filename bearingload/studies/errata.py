@@ -8,8 +8,8 @@ within its printed rounding. Other papers add their rows through :data:`ROW_SOUR
 A row is a dict with the keys ``source`` (paper), ``table`` (table, equation or section),
 ``cell``, ``printed`` (text, as printed), ``computed``, ``difference`` (printed - computed),
 ``verdict`` (:data:`AGREES`, :data:`DIFFERS`, or another word such as "lost in print" for a cell
-that cannot be compared) and ``cause``; rows built here also carry ``unit`` and ``relative``
-(difference / computed); :func:`errata_rows` fills those in for the other sources.
+that cannot be compared) and ``cause``; rows built here also carry ``unit`` and
+``relative_difference`` (difference / computed); :func:`errata_rows` fills those in for the other sources.
 """
 
 from __future__ import annotations
@@ -34,7 +34,7 @@ ROW_SOURCES: list[tuple[str, str]] = [
 ]
 
 #: Quantities the registered methods return (``kz`` is ``k`` times the number of balls).
-METHOD_QUANTITIES = ("k", "K_Q", "q_max", "load_zone", "kz")
+METHOD_QUANTITIES = ("k", "K_Q", "q_max", "load_zone", "loaded_balls", "kz")
 
 #: Defaults of a case whose answer does not depend on them (k at zero clearance). [N, N/mm^m]
 DEFAULT_LOAD = 1000.0
@@ -76,15 +76,6 @@ def method_value(row: Published, method: str | None = None) -> float:
 
 def _floats(row: Published, *names: str) -> list[float]:
     return [float(row.inputs[n]) for n in names]
-
-
-def _loaded_balls(row: Published) -> float:
-    from bearingload.models.equilibrium import solve
-
-    args = case(row)
-    return float(
-        solve(args["balls"], args["load"], args["stiffness"], args["clearance"]).loaded_balls
-    )
 
 
 def _resolving_lhs(row: Published) -> float:
@@ -208,7 +199,6 @@ def _integral(row: Published) -> float:
 
 #: (model, quantity) -> how a printed value that is not a method's output is recomputed.
 DERIVATIONS: dict[tuple[str, str], Callable[[Published], float]] = {
-    ("exact", "loaded_balls"): _loaded_balls,
     ("exact", "kq_minus_n"): _kq_minus_n,
     ("formula", "resolving_lhs"): _resolving_lhs,
     ("formula", "resolving_rhs"): _resolving_rhs,
@@ -258,7 +248,7 @@ def compare(row: Published) -> dict[str, Any]:
         "printed": row.printed,
         "computed": computed,
         "difference": difference,
-        "relative": difference / computed if computed else None,
+        "relative_difference": difference / computed if computed else None,
         "verdict": AGREES if agrees else DIFFERS,
         "cause": "" if agrees else (row.cause or "unknown"),
     }
@@ -294,12 +284,12 @@ def _normalised(row: dict[str, Any]) -> dict[str, Any]:
     printed = out["printed"]
     out["printed"] = printed if isinstance(printed, str) else f"{printed:g}"
     out.setdefault("unit", "")
-    if "relative" not in out:
+    if "relative_difference" not in out:
         computed, diff = out.get("computed"), out.get("difference")
         if isinstance(computed, (int, float)) and isinstance(diff, (int, float)) and computed:
-            out["relative"] = diff / computed
+            out["relative_difference"] = diff / computed
         else:
-            out["relative"] = None
+            out["relative_difference"] = None
     out["cause"] = out.get("cause") or ""
     if str(out["verdict"]).startswith("agrees"):  # "agrees within printed rounding"
         out["verdict"] = AGREES
@@ -316,7 +306,7 @@ def summary(rows: list[dict[str, Any]]) -> list[dict[str, Any]]:
         c[1] += r["verdict"] == AGREES
         c[2] += r["verdict"] == DIFFERS
     return [
-        {"source": s, "table": t, "rows": n, "agree": a, "differ": d}
+        {"source": s, "table": t, "checked": n, "agree": a, "differ": d}
         for (s, t), (n, a, d) in counts.items()
     ]
 
