@@ -191,6 +191,13 @@ def _allowable_load(row: Published) -> float:
     return float(allowable_load(capacity, revolutions))
 
 
+def _gamma(row: Published) -> float:
+    """A value of the gamma function the paper read from a table."""
+    import math
+
+    return math.gamma(float(row.inputs["x"]))
+
+
 def _integral(row: Published) -> float:
     from bearingload.models.continuum import zero_clearance_integral
 
@@ -202,6 +209,7 @@ DERIVATIONS: dict[tuple[str, str], Callable[[Published], float]] = {
     ("exact", "kq_minus_n"): _kq_minus_n,
     ("formula", "resolving_lhs"): _resolving_lhs,
     ("formula", "resolving_rhs"): _resolving_rhs,
+    ("formula", "gamma"): _gamma,
     ("exact", "q_max_increase"): _q_max_change,
     ("exact", "q_max_increase_percent"): _q_max_change,
     ("continuum", "integral_I"): _integral,
