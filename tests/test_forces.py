@@ -154,7 +154,9 @@ def test_preload_centred_ring():
     z, k, g, m = 11, 3e5, -0.004, 1.5
     f = ring_forces(z, 0.0, 0.0, k, g, 7.0, m)
     np.testing.assert_allclose(f.ball_loads, k * 0.002**1.5, rtol=1e-14)
-    assert abs(f.force_x) < 1e-12 * z * k * 0.002**1.5 and abs(f.force_y) < 1e-12 * z * k * 0.002**1.5
+    assert (
+        abs(f.force_x) < 1e-12 * z * k * 0.002**1.5 and abs(f.force_y) < 1e-12 * z * k * 0.002**1.5
+    )
     kk = z / 2 * k * m * 0.002**0.5
     np.testing.assert_allclose(f.stiffness_matrix, [[kk, 0], [0, kk]], rtol=1e-13, atol=1e-9 * kk)
     assert f.loaded_balls == z

@@ -42,6 +42,7 @@ def mp_equilibrium(z, load, k, g, m, phi1_deg):
             lo = mid
         else:
             hi = mid
+
     def residual(a, b):
         fx, fy, _ = mp_ball_forces(z, k, e, m, phi1, a, b)
         return [fx - f, fy]

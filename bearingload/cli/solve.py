@@ -19,6 +19,7 @@ from bearingload.cli.options import (
     stiffness_value,
     units_help,
 )
+from bearingload.cli.plot import ball_loads_plot_option
 
 
 @click.command(context_settings=CONTEXT)
@@ -76,6 +77,7 @@ from bearingload.cli.options import (
     "angle and exponent); all: every method side by side with its error against exact."
 )
 @output_options
+@ball_loads_plot_option
 @library_errors
 def solve(
     bearing: str | None,

@@ -140,8 +140,9 @@ def ring_forces(
         for start in range(0, n, BLOCK):
             part = slice(start, min(start + BLOCK, n))
             block = [a if s else a[part] for a, s in zip(args[2:], shared, strict=True)]
-            _block(nz, args[0][part], args[1][part], *block, fx[part], fy[part],
-                   matrix[part], loads[part], loaded[part])  # fmt: skip
+            k_b, e_b, phi1_b, m_b = block
+            _block(nz, args[0][part], args[1][part], k_b, e_b, phi1_b, m_b,
+                   fx[part], fy[part], matrix[part], loads[part], loaded[part])  # fmt: skip
     if not (np.all(np.isfinite(fx)) and np.all(np.isfinite(matrix))):
         raise InputError(
             "x",
@@ -149,9 +150,7 @@ def ring_forces(
             "double precision; check its unit (mm)",
         )
     if shape == ():
-        return RingForces(
-            float(fx[0]), float(fy[0]), matrix[0], loads[0], int(loaded[0])
-        )
+        return RingForces(float(fx[0]), float(fy[0]), matrix[0], loads[0], int(loaded[0]))
     return RingForces(
         fx.reshape(shape),
         fy.reshape(shape),
