@@ -5,17 +5,16 @@ from __future__ import annotations
 
 import sys
 
+# matplotlib is installed by `make` (extra 'plot'): these tests need it, none is skipped
+import matplotlib.image
 import numpy as np
 import pytest
 
-# matplotlib is installed by `make` (extra 'plot'): these tests need it, none is skipped
-import matplotlib.image  # noqa: E402
+from bearingload.models.equilibrium import solve
+from bearingload.reports import plots
+from bearingload.studies.sweep import sweep
 
-from bearingload.models.equilibrium import solve  # noqa: E402
-from bearingload.reports import plots  # noqa: E402
-from bearingload.studies.sweep import sweep  # noqa: E402
-
-from .cli_helpers import invoke, run_entry  # noqa: E402
+from .cli_helpers import invoke, run_entry
 
 CASE = ("-z", "9", "-F", "1kN", "-K", "1e5", "-G", "10um")
 
