@@ -78,8 +78,8 @@ def ball_loads_plot_option(command: Callable[..., Any]) -> Callable[..., Any]:
 def _ball_loads_figure(options: dict[str, Any]) -> Any:
     """The ball-loads figure of the case(s) the ``solve`` options describe."""
     from bearingload.cli.cases import resolve_case
+    from bearingload.cli.options import cage_angle_deg
     from bearingload.models.equilibrium import solve
-    from bearingload.reports.parts import cage_angle_deg, inputs_text
     from bearingload.reports.plots import ball_loads_figure
 
     geometry = {
@@ -107,8 +107,9 @@ def _ball_loads_figure(options: dict[str, Any]) -> Any:
         label = f"G_r = {g * 1e3:.4g} µm ({p})" if len(picks) > 1 else ""
         cases.append((label, solve(z, options["load"], k, g, angle, m)))
     r = cases[len(cases) // 2][1]
-    title = "Ball loads, exact ring equilibrium: " + inputs_text(
-        int(r.balls), float(r.load), float(r.stiffness), float(r.clearance),
-        float(r.cage_angle), float(r.exponent),
-    )  # fmt: skip
+    title = (
+        f"Ball loads, exact ring equilibrium: z = {int(r.balls)}, F_r = {float(r.load):.6g} N, "
+        f"K = {float(r.stiffness):.6g} N/mm^{float(r.exponent):g}, "
+        f"G_r = {float(r.clearance) * 1e3:.6g} µm, cage angle {float(r.cage_angle):.6g}°"
+    )
     return ball_loads_figure(cases, title)

@@ -9,19 +9,27 @@ from __future__ import annotations
 
 from typing import Any
 
-from bearingload.reports.parts import summary_table
+from bearingload.reports.quantities import QUANTITIES, units
 from bearingload.reports.render import Column, Table, render
 from bearingload.studies.sweep import CageSweep
 from bearingload.units import KGF
 
-#: Quantities summarised over the sweep: key, label, unit of the human formats, factor from the
-#: library unit (mm, N, N/mm) to it.
-SPREADS = (
-    ("x", "ring displacement along the load x", "µm", 1e3),
-    ("y", "ring displacement across the load y", "µm", 1e3),
-    ("q_max", "heaviest ball load Q_max", "N", 1.0),
-    ("stiffness_radial", "radial stiffness dF_r/dx", "N/mm", 1.0),
+#: Quantities summarised over the sweep (min, mean, max, peak-to-peak).
+SPREADS = ("x", "y", "q_max", "stiffness_radial")
+#: Per cage position: the quantity and its short header in the human table.
+ROW_KEYS = (
+    ("cage_angle_deg", "cage angle"),
+    ("x", "x"),
+    ("y", "y"),
+    ("q_max", "Q_max"),
+    ("q_max_ball", "ball"),
+    ("loaded_balls", "loaded"),
+    ("stiffness_xx", "K_xx"),
+    ("stiffness_xy", "K_xy"),
+    ("stiffness_yy", "K_yy"),
+    ("stiffness_radial", "K_r"),
 )
+INPUT_KEYS = ("balls", "load", "stiffness", "clearance", "exponent")
 
 
 def sweep_report(s: CageSweep, fmt: str, context: str = "") -> str:
@@ -45,11 +53,13 @@ def inputs_text(s: CageSweep) -> str:
 
 def _spread_table(s: CageSweep, context: str) -> Table:
     rows = []
-    for key, label, unit, factor in SPREADS:
+    for key in SPREADS:
+        q = QUANTITIES[key]
+        unit, factor = q.shown()
         sp = s.spread(key)
         rows.append(
             {
-                "quantity": label,
+                "quantity": q.label,
                 "min": sp.min * factor,
                 "mean": sp.mean * factor,
                 "max": sp.max * factor,
@@ -76,17 +86,30 @@ def _spread_table(s: CageSweep, context: str) -> Table:
 
 
 def _figures_table(s: CageSweep) -> Table:
-    rows: list[tuple[str, Any, str]] = [
-        ("ripple frequency (periods per cage revolution)", s.ripple_order, "1/rev"),
-    ]
-    if s.compensating_clearance:
-        for g in s.compensating_clearance:
-            rows.append(("compensating clearance G_r", g * 1e3, "µm"))
-    else:
-        rows.append(("compensating clearance G_r", "none", ""))
-    return summary_table(
-        "Ripple",
-        rows,
+    ripple = QUANTITIES["ripple_per_cage_revolution"]
+    comp = QUANTITIES["compensating_clearance"]
+    unit, factor = comp.shown()
+    rows: list[dict[str, Any]] = [
+        {"quantity": f"{ripple.label} (periods per cage revolution)", "value": s.ripple_order,
+         "unit": ripple.unit},
+    ]  # fmt: skip
+    values: list[float | None] = [*s.compensating_clearance] or [None]
+    for g in values:
+        rows.append(
+            {
+                "quantity": comp.label,
+                "value": "none" if g is None else g * factor,
+                "unit": "" if g is None else unit,
+            }
+        )
+    return Table(
+        title="Ripple",
+        columns=[
+            Column("quantity", "quantity", align="left"),
+            Column("value", "value", digits=6),
+            Column("unit", "unit", align="left"),
+        ],
+        rows=rows,
         notes=[
             "compensating clearance: every G_r at which the ring sits at the same x with a ball "
             "under the load and with the load between two balls (no kinematic excitation)."
@@ -95,65 +118,26 @@ def _figures_table(s: CageSweep) -> Table:
 
 
 def _rows_table(s: CageSweep) -> Table:
+    columns = []
+    for key, header in ROW_KEYS:
+        q = QUANTITIES[key]
+        unit, _ = q.shown()
+        columns.append(Column(key, header, unit, q.digits))
+    factors = {key: QUANTITIES[key].shown()[1] for key, _ in ROW_KEYS}
+    rows = [
+        {k: v * factors[k] if isinstance(v, float) else v for k, v in row.items()}
+        for row in _flat_rows(s)
+    ]
     return Table(
         title="Per cage position (ball 1 at the cage angle; angles from the load line)",
-        columns=[
-            Column("cage_angle", "cage angle", "°", 6),
-            Column("x", "x", "µm", 7),
-            Column("y", "y", "µm", 6),
-            Column("q_max", "Q_max", "N", 6),
-            Column("ball", "ball"),
-            Column("loaded", "loaded"),
-            Column("kxx", "K_xx", "N/mm", 6),
-            Column("kxy", "K_xy", "N/mm", 6),
-            Column("kyy", "K_yy", "N/mm", 6),
-            Column("kr", "K_r", "N/mm", 6),
-        ],
-        rows=[
-            {
-                "cage_angle": float(s.cage_angle[i]),
-                "x": float(s.x[i]) * 1e3,
-                "y": float(s.y[i]) * 1e3,
-                "q_max": float(s.q_max[i]),
-                "ball": int(s.q_max_ball[i]),
-                "loaded": int(s.loaded_balls[i]),
-                "kxx": float(s.stiffness_matrix[i, 0, 0]),
-                "kxy": float(s.stiffness_matrix[i, 0, 1]),
-                "kyy": float(s.stiffness_matrix[i, 1, 1]),
-                "kr": float(s.stiffness_radial[i]),
-            }
-            for i in range(s.cage_angle.size)
-        ],
+        columns=columns,
+        rows=rows,
         notes=["ball: the ball carrying Q_max (of two equal, the lower number)."],
     )
 
 
-def _csv_table(s: CageSweep) -> Table:
-    k_unit = f"N/mm^{s.exponent:g}"
-    columns = [
-        Column("balls", "balls"),
-        Column("load", "load", "N"),
-        Column("stiffness", "stiffness", k_unit),
-        Column("clearance", "clearance", "mm"),
-        Column("exponent", "exponent"),
-        Column("cage_angle_deg", "cage angle", "°"),
-        Column("x", "x", "mm"),
-        Column("y", "y", "mm"),
-        Column("q_max", "Q_max", "N"),
-        Column("q_max_ball", "ball"),
-        Column("loaded_balls", "loaded balls"),
-        Column("stiffness_xx", "K_xx", "N/mm"),
-        Column("stiffness_xy", "K_xy", "N/mm"),
-        Column("stiffness_yy", "K_yy", "N/mm"),
-        Column("stiffness_radial", "K_r", "N/mm"),
-    ]
-    inputs = {
-        "balls": s.balls,
-        "load": s.load,
-        "stiffness": s.stiffness,
-        "clearance": s.clearance,
-        "exponent": s.exponent,
-    }
+def _flat_rows(s: CageSweep) -> list[dict[str, Any]]:
+    """One dict per cage position, the stiffness matrix as its three entries (mm, N, N/mm)."""
     rows = []
     for row in _json_rows(s):
         matrix = row.pop("stiffness_matrix")
@@ -162,8 +146,19 @@ def _csv_table(s: CageSweep) -> Table:
             "stiffness_xy": matrix[0][1],
             "stiffness_yy": matrix[1][1],
         }
-        rows.append(inputs | row)
-    return Table(title="sweep", columns=columns, rows=rows)
+        rows.append(row)
+    return rows
+
+
+def _csv_table(s: CageSweep) -> Table:
+    keys = INPUT_KEYS + tuple(k for k, _ in ROW_KEYS)
+    columns = []
+    for key in keys:
+        q = QUANTITIES[key]
+        unit = q.unit.replace("^m", f"^{s.exponent:g}")
+        columns.append(Column(key, q.label, unit, q.digits))
+    inputs = {k: getattr(s, k) for k in INPUT_KEYS}
+    return Table(title="sweep", columns=columns, rows=[inputs | r for r in _flat_rows(s)])
 
 
 def _json_rows(s: CageSweep) -> list[dict[str, Any]]:
@@ -185,7 +180,7 @@ def _json_rows(s: CageSweep) -> list[dict[str, Any]]:
 def sweep_json(s: CageSweep) -> dict[str, Any]:
     """The JSON document of a sweep: inputs, ``rows``, ``summary`` and ``units``."""
     summary: dict[str, Any] = {}
-    for key, *_ in SPREADS:
+    for key in SPREADS:
         sp = s.spread(key)
         summary[key] = {
             "min": sp.min,
@@ -195,26 +190,12 @@ def sweep_json(s: CageSweep) -> dict[str, Any]:
         }
     summary["ripple_per_cage_revolution"] = s.ripple_order
     summary["compensating_clearance"] = list(s.compensating_clearance)
+    rows = _json_rows(s)
+    keys = [*INPUT_KEYS, *rows[0], *summary]
     return {
-        "balls": s.balls,
-        "load": s.load,
-        "stiffness": s.stiffness,
-        "clearance": s.clearance,
-        "exponent": s.exponent,
+        **{k: getattr(s, k) for k in INPUT_KEYS},
         "steps": int(s.cage_angle.size),
-        "rows": _json_rows(s),
+        "rows": rows,
         "summary": summary,
-        "units": {
-            "load": "N",
-            "stiffness": f"N/mm^{s.exponent:g}",
-            "clearance": "mm (G_r, total radial play)",
-            "cage_angle_deg": "°",
-            "x": "mm",
-            "y": "mm",
-            "q_max": "N",
-            "stiffness_matrix": "N/mm",
-            "stiffness_radial": "N/mm",
-            "ripple_per_cage_revolution": "1/rev (periods per cage revolution)",
-            "compensating_clearance": "mm (G_r, total radial play)",
-        },
+        "units": units(keys, s.exponent),
     }
