@@ -78,7 +78,7 @@ def test_table_shows_every_block_with_units():
     )
     assert "ring displacement along the load x     34.7008       34.7075   34.7244       0.02353  µm" in text  # fmt: skip
     assert "radial stiffness dF_r/dx               52025.2       52228.2   52361.9         336.6  N/mm" in text  # fmt: skip
-    assert "ripple frequency (periods per cage revolution)      9  1/rev" in text
+    assert "ripple frequency (periods per cage revolution)         9  1/rev" in text
     assert "cage angle [°]   x [µm]     y [µm]  Q_max [N]  ball  loaded" in text
     # the whole output of every format: tests/golden/sweep_*.txt (test_golden.py)
 
