@@ -513,3 +513,20 @@ def test_cli_kurochkin_formats_and_errors():
         res = invoke("sweep", *args)
         assert res.exit_code == 2, args
         assert message in res.output and "Traceback" not in res.output
+
+
+def test_example1_moment_table_is_odd_about_half_pitch():
+    table = ke.example1_moment_table(steps=9)
+    assert len(table.columns) == 8 and len(table.rows) == 9
+    for first, last in zip(table.rows, table.rows[::-1], strict=True):
+        for key in (c.key for c in table.columns[1:]):
+            assert first[key] == pytest.approx(-last[key], abs=1e-15)
+    load, stiffness = ke.example1_load_stiffness()
+    row = table.rows[2]
+    _, y = ref_solve(
+        7, ku.generalised_parameter(0.006, load, stiffness, 7), mp.radians(row["cage_angle_deg"])
+    )
+    w = 10.731 / (2 * (10.731 + 3.969))
+    assert row["M_e0"] == pytest.approx(
+        float(w * load * (load / stiffness) ** (2 / 3) * y), rel=1e-10
+    )

@@ -23,6 +23,7 @@ from typing import Any
 import numpy as np
 
 from bearingload import validate
+from bearingload.errors import InputError
 from bearingload.models.equilibrium import solve
 from bearingload.reports.render import Column, Table
 
@@ -129,6 +130,10 @@ def compensating_clearances(
     from scipy.optimize import brentq
 
     z = int(validate.ball_count(balls))
+    if z < 3:
+        raise InputError(
+            "balls", "needs at least 3 balls (with fewer no cage angle but 0 is stable)"
+        )
     f = float(validate.positive("load", load, "N"))
     k = float(validate.positive("stiffness", stiffness, "N/mm^m"))
     m = float(validate.exponent(exponent))
