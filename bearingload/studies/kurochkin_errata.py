@@ -182,7 +182,8 @@ def likely_cause(cell: dict[str, str], printed: float, computed: float) -> str:
         return "last digit off by one: rounding or accuracy of the 1973 computation"
     if fourier:
         return "error of the 1973 Fourier integration (larger than the printed rounding)"
-    return _digit_cause(cell, computed, last_digit=True) or "error of the 1973 computation"
+    generic = "misprint or error of the 1973 computation"
+    return _digit_cause(cell, computed, last_digit=True) or generic
 
 
 def kurochkin1973_rows() -> list[dict[str, Any]]:
