@@ -177,3 +177,18 @@ def test_errors():
         sweep(9, [1000.0, 2000.0], 1e5)
     with pytest.raises(InputError, match="clearance"):
         sweep(9, 1000.0, 1e5, float("nan"))
+
+
+def test_compensating_clearances_solved_back():
+    """The summary lists every G_r with x(0) = x(180/z) (z = 9, 1 kN, 1e5 N/mm^1.5: six, three of
+    them preload); swept at each, the ring sits at the same x with a ball under the load and with
+    the load between two balls, and x(0) - x(180/z) changes sign across it."""
+    z, load, k = 9, 1000.0, 1e5
+    roots = sweep(z, load, k, 0.01, steps=3).compensating_clearance
+    assert len(roots) == 6 and sum(g < 0 for g in roots) == 3
+    scale = (load / k) ** (1 / 1.5)
+    for g in roots:
+        s = sweep(z, load, k, g, steps=3)  # cage angles 0, 180/z, 360/z
+        assert abs(s.x[0] - s.x[1]) <= 1e-9 * (scale + abs(g))
+        below, above = (sweep(z, load, k, g * f, steps=3) for f in (1 - 1e-4, 1 + 1e-4))
+        assert (below.x[0] - below.x[1]) * (above.x[0] - above.x[1]) < 0

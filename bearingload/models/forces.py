@@ -160,25 +160,6 @@ def ring_forces(
     )
 
 
-def _ball_directions(z: int, phi1: np.ndarray) -> tuple[np.ndarray, np.ndarray]:
-    """cos and sin of every ball angle: shape (z,) for one cage angle, (n, z) for n of them.
-
-    The cage angle arrives reduced to [0, 360) degrees. cos/sin below 1e-14 in size are snapped
-    to zero, as the engine does, so that a ball at 90° sits there exactly.
-    """
-    # cos(phi1 + a) = cos phi1 cos a - sin phi1 sin a for every cage angle alike (one or many),
-    # so a case gives the same bits alone or in a batch, and no trig runs on the (n, z) arrays
-    pitch = np.deg2rad(360.0 * np.arange(z) / z)
-    ca, sa = _snapped(np.cos(pitch)), _snapped(np.sin(pitch))
-    rad = np.deg2rad(phi1)
-    c1, s1 = _snapped(np.cos(rad))[:, None], _snapped(np.sin(rad))[:, None]
-    c = c1 * ca - s1 * sa
-    s = s1 * ca + c1 * sa
-    if phi1.size == 1:
-        c, s = c[0], s[0]
-    return _snapped(c), _snapped(s)
-
-
 def _snapped(a: np.ndarray) -> np.ndarray:
     """``a`` with entries below 1e-14 in size set to zero (cos and sin of multiples of 90°)."""
     return np.where(np.abs(a) < 1e-14, 0.0, a)
@@ -201,11 +182,21 @@ def _block(
     """Evaluate one block of cases into the given output slices.
 
     ``k, e, phi1, m`` are either per case (length of ``x``) or one shared value (length 1).
+    The sums run in the cage's frame (ball 1 on its first axis), where every case shares the
+    ball directions ``(cos a_j, sin a_j)``, ``a_j = 360 j/z``: the displacement is turned into
+    it, the force and stiffness turned back (``F = R F'``, ``K = R K' R^T``). A cage angle per
+    case then costs what one shared angle does, and a case gives the same bits alone or in a
+    batch. cos/sin below 1e-14 in size are snapped to zero, as the engine does, so that a ball
+    at 90° sits there exactly.
     """
-    c, s = _ball_directions(z, phi1)
+    pitch = np.deg2rad(360.0 * np.arange(z) / z)
+    ca, sa = _snapped(np.cos(pitch)), _snapped(np.sin(pitch))
+    rad = np.deg2rad(phi1)  # reduced to [0, 360) degrees by the caller
+    c1, s1 = _snapped(np.cos(rad)), _snapped(np.sin(rad))
+    xr, yr = x * c1 + y * s1, y * c1 - x * s1  # the displacement in the cage's frame
     delta = loads  # work in the output array: approach, then load
-    np.multiply(x[:, None], c, out=delta)
-    delta += y[:, None] * s
+    np.multiply(xr[:, None], ca, out=delta)
+    delta += yr[:, None] * sa
     delta -= e[:, None]
     mask = delta > 0.0
     loaded[:] = np.count_nonzero(mask, axis=1)
@@ -226,17 +217,11 @@ def _block(
         delta *= k[:, None]
         slope *= k[:, None]
     q = delta
-    if c.ndim == 1:
-        fx[:] = q @ c
-        fy[:] = q @ s
-        matrix[:, 0, 0] = slope @ (c * c)
-        matrix[:, 0, 1] = slope @ (c * s)
-        matrix[:, 1, 1] = slope @ (s * s)
-    else:
-        fx[:] = np.einsum("ij,ij->i", q, c)
-        fy[:] = np.einsum("ij,ij->i", q, s)
-        sc = slope * c
-        matrix[:, 0, 0] = np.einsum("ij,ij->i", sc, c)
-        matrix[:, 0, 1] = np.einsum("ij,ij->i", sc, s)
-        matrix[:, 1, 1] = np.einsum("ij,ij->i", slope * s, s)
-    matrix[:, 1, 0] = matrix[:, 0, 1]
+    gx, gy = q @ ca, q @ sa
+    hxx, hxy, hyy = slope @ (ca * ca), slope @ (ca * sa), slope @ (sa * sa)
+    cc, cs, ss = c1 * c1, c1 * s1, s1 * s1
+    fx[:] = c1 * gx - s1 * gy
+    fy[:] = s1 * gx + c1 * gy
+    matrix[:, 0, 0] = cc * hxx - 2.0 * cs * hxy + ss * hyy
+    matrix[:, 1, 1] = ss * hxx + 2.0 * cs * hxy + cc * hyy
+    matrix[:, 0, 1] = matrix[:, 1, 0] = cs * (hxx - hyy) + (cc - ss) * hxy

@@ -112,7 +112,9 @@ def _figures_table(s: CageSweep) -> Table:
         rows=rows,
         notes=[
             "compensating clearance: every G_r at which the ring sits at the same x with a ball "
-            "under the load and with the load between two balls (no kinematic excitation)."
+            "under the load and with the load between two balls (no kinematic excitation; "
+            "negative = preload). The varying-compliance paper's delta_alpha = delta_S is the "
+            "smallest positive one."
         ],
     )
 

@@ -31,7 +31,8 @@ class Spread:
     """Minimum, mean, maximum and peak-to-peak of a quantity over the cage positions.
 
     The mean is over one period: the two ends of the sweep are the same cage position, so the
-    last one is left out (the trapezoidal mean over the pitch).
+    last one is left out (the trapezoidal mean over the pitch). A mean below 1e-12 of the largest
+    value in size is rounding noise (the engine resolves each value to about 1e-13) and is 0.
     """
 
     min: float
@@ -66,7 +67,9 @@ class CageSweep:
         Tangent radial stiffness ``dF_r/dx`` with the transverse force held at zero. [N/mm]
     compensating_clearance : list of float
         Every clearance ``G_r`` at which ``x`` is the same with a ball under the load and with
-        the load between two balls (seed 001: delta_alpha = delta_S). [mm]
+        the load between two balls, in increasing order (negative = preload); the
+        varying-compliance paper's delta_alpha = delta_S is the smallest positive one. From
+        :func:`bearingload.studies.compliance.compensating_clearances`. [mm]
     """
 
     balls: int
@@ -96,6 +99,8 @@ class CageSweep:
         v = np.asarray(getattr(self, name), dtype=float)
         lo, hi = float(v.min()), float(v.max())
         mean = float(v[:-1].mean()) if v.size > 1 else float(v[0])
+        if abs(mean) <= 1e-12 * float(np.abs(v).max()):
+            mean = 0.0  # rounding noise of a quantity that averages out (y: odd in the cage angle)
         return Spread(lo, mean, hi, hi - lo)
 
 
@@ -183,9 +188,11 @@ def sweep(
     )
 
 
-def compensating_clearance(balls: int, load: float, stiffness: float, exponent: float) -> list:
+def compensating_clearance(
+    balls: int, load: float, stiffness: float, exponent: float
+) -> list[float]:
     """Every clearance G_r [mm] at which the ring sits at the same x with a ball under the load
-    and with the load between two balls (the one call site of the study of seed 001)."""
+    and with the load between two balls: the one call of the varying-compliance study."""
     from bearingload.studies.compliance import compensating_clearances
 
     return [float(v) for v in compensating_clearances(balls, load, stiffness, exponent)]
