@@ -128,6 +128,8 @@ OPTION_NAMES = {
     "clearance": "--clearance",
     "cage_angle": "--cage-angle",
     "exponent": "--exponent",
+    "steps": "--steps",
+    "T": "--kurochkin-T",
     # bearing, geometry and life options (bearingload.bearings.resolve, bearingload.bearings.life)
     "bearing": "BEARING",
     "ball-diameter": "--ball-diameter",
