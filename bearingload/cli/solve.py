@@ -20,6 +20,7 @@ from bearingload.cli.options import (
     stiffness_value,
     units_help,
 )
+from bearingload.cli.plot import ball_loads_plot_option
 
 
 @click.command(context_settings=CONTEXT)
@@ -88,6 +89,7 @@ from bearingload.cli.options import (
     "(JSON always carries it).",
 )
 @output_options
+@ball_loads_plot_option
 @library_errors
 def solve(
     bearing: str | None,

@@ -81,10 +81,18 @@ QUANTITIES: dict[str, Quantity] = {
         Quantity("stiffness_radial", "radial stiffness dF_r/dx", "N/mm"),
         Quantity("approach_max", "heaviest ball approach delta_max", "mm", display=_UM),
         Quantity("stiffness_matrix", "tangent stiffness matrix", "N/mm"),
+        Quantity("stiffness_xx", "tangent stiffness K_xx", "N/mm"),
+        Quantity("stiffness_xy", "tangent stiffness K_xy", "N/mm"),
+        Quantity("stiffness_yy", "tangent stiffness K_yy", "N/mm"),
+        Quantity("q_max_ball", "ball carrying Q_max", "", None),
         Quantity("epsilon", "load-zone parameter epsilon", "-"),
         Quantity("iterations", "solver iterations", "", None),
         Quantity("relative_error", "Q_max/Q_max,exact - 1", "-", 3, display=("%", 100.0)),
         Quantity("valid", "inside the model's range", "", None),
+        # a cage sweep (bearingload sweep)
+        Quantity("steps", "cage positions over one pitch", "", None),
+        Quantity("ripple_per_cage_revolution", "ripple frequency", "1/rev", None),
+        Quantity("compensating_clearance", "compensating clearance G_r", "mm", display=_UM),
         # contact and life (a catalogue bearing)
         Quantity("p_max_inner", "max contact pressure, inner", "MPa"),
         Quantity("p_max_outer", "max contact pressure, outer", "MPa"),
