@@ -405,3 +405,14 @@ def test_input_errors(kwargs, parameter):
 def test_no_load_is_refused():
     with pytest.raises(InputError):
         solve_combined(7, 0.0, 0.0, **PEER)
+
+
+def test_life_clearance_study_shapes():
+    """NASA TM-2012-217115's finding for a radially loaded ball bearing: a slight preload lives
+    longer than zero clearance, which lives longer than a large clearance; under a combined load
+    some clearance helps (larger contact angles share the axial load)."""
+    from bearingload.studies.life_clearance import life_vs_clearance
+
+    rows = {r["clearance_um"]: r for r in life_vs_clearance(clearances_um=(-10, 0, 30, 80))}
+    assert rows[-10]["life_r"] > rows[0]["life_r"] > rows[30]["life_r"] > rows[80]["life_r"]
+    assert rows[30]["life_c"] > rows[0]["life_c"] > rows[-10]["life_c"]
