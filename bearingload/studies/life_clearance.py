@@ -39,6 +39,7 @@ def life_vs_clearance(
 
     b = resolve_bearing(designation, clearance=0.0)
     assert b.C is not None and b.ball_diameter is not None and b.pitch_diameter is not None
+    assert b.f_i is not None and b.f_o is not None
     geometry = {
         "ball_diameter": b.ball_diameter,
         "pitch_diameter": b.pitch_diameter,
