@@ -416,3 +416,14 @@ def test_life_clearance_study_shapes():
     rows = {r["clearance_um"]: r for r in life_vs_clearance(clearances_um=(-10, 0, 30, 80))}
     assert rows[-10]["life_r"] > rows[0]["life_r"] > rows[30]["life_r"] > rows[80]["life_r"]
     assert rows[30]["life_c"] > rows[0]["life_c"] > rows[-10]["life_c"]
+
+
+def test_stiffness_interpolant_is_the_hertz_value():
+    """The Chebyshev curve of K(cos alpha) gives the exact Hertz stiffness at every loaded ball."""
+    from bearingload.models.combined import ball_stiffness_at
+
+    r = solve_combined(7, [1000.0, 10.0, 0.0], [1000.0, 3000.0, 100.0],
+                       clearance=[0.01, 0.3, -0.01], **PEER)  # fmt: skip
+    exact = ball_stiffness_at(r.contact_angles, 11.5, 43.5, 0.52, 0.53, 210000.0, 0.3)
+    loaded = r.ball_loads > 0
+    np.testing.assert_allclose(r.ball_stiffnesses[loaded], exact[loaded], rtol=1e-13)
