@@ -738,6 +738,9 @@ def _result(
     misalignment: Any,
 ) -> CombinedDistribution:
     """Back to physical units and the case shape."""
+    # components left at rounding noise by a symmetric case (|v| < 1e-12 of the largest) are 0
+    big = np.maximum(np.abs(v).max(axis=1, keepdims=True), 1.0)
+    v = np.where(np.abs(v) < 1e-12 * big, 0.0, v)
     delta, ca, sa, _ = _balls(p, v)
     s = p.scale[:, None]
     q = p.f_ref[:, None] * k * np.maximum(delta, 0.0) ** 1.5
