@@ -32,6 +32,9 @@ COMMANDS = {
     "solve_306_c3_geometry": "solve 306 -F 300kgf -G C3 --show-geometry",
     "solve_306_range": "solve 306 -F 300kgf -G C3 --clearance-pick range",
     "solve_6306_range_all": "solve 6306 -F 3kN -G C3 --clearance-pick range --method all",
+    "solve_6205_combined": "solve 6205 -F 1.4kN -A 700N -G C3",
+    "solve_peer_axial_outer": "solve -z 7 --ball-diameter 11.5 --pitch-diameter 43.5 "
+    "--modulus 210000 -F 0 -A 1kN -G 10um -C 23.4kN --rotating outer --per-ball",
     "table_k": "table k --z-max 12",
     "table_kq_306": "table kq --bearing 306 -F 300kgf -G 20um --z-max 10",
     "table_k_all": "table k --method all --z-max 10",
