@@ -427,3 +427,33 @@ def test_stiffness_interpolant_is_the_hertz_value():
     exact = ball_stiffness_at(r.contact_angles, 11.5, 43.5, 0.52, 0.53, 210000.0, 0.3)
     loaded = r.ball_loads > 0
     np.testing.assert_allclose(r.ball_stiffnesses[loaded], exact[loaded], rtol=1e-13)
+
+
+@pytest.mark.parametrize("mode", ["free tilt", "moment", "misalignment"])
+@pytest.mark.parametrize("z", [3, 8, 23])
+def test_random_cases_converge_to_equilibrium(mode, z):
+    """Loads 1e-3 N to 1e5 N either way, moments to 1 kN m, clearances from 0.5 mm of preload...
+    to 0.5 mm of play, any cage angle: every case converges and balances its loads (1e-8)."""
+    rng = np.random.default_rng(z * 31 + len(mode))
+    n = 40
+    fr = np.where(rng.random(n) < 0.2, 0.0, 10 ** rng.uniform(-3, 5, n))
+    fa = np.where(rng.random(n) < 0.3, 0.0, rng.choice([-1, 1], n) * 10 ** rng.uniform(-3, 5, n))
+    fa = np.where((fr == 0) & (fa == 0), 1.0, fa)
+    g = np.where(rng.random(n) < 0.2, 0.0, rng.choice([-1, 1], n, p=[0.3, 0.7]) * 10 ** rng.uniform(-4, np.log10(0.5), n))  # fmt: skip
+    extra = {
+        "free tilt": {},
+        "moment": {"moment": rng.choice([-1, 1], n) * 10 ** rng.uniform(0, 6, n)},
+        "misalignment": {"misalignment": rng.uniform(-0.3, 0.3, n)},
+    }[mode]
+    with warnings.catch_warnings():
+        warnings.simplefilter("error")
+        r = solve_combined(z, fr, fa, clearance=g, cage_angle=rng.uniform(0, 360, n),
+                           ball_diameter=11.5, pitch_diameter=43.5, **extra)  # fmt: skip
+    q, al, ph = r.ball_loads, np.radians(r.contact_angles), np.radians(r.ball_angles)
+    size = np.maximum(np.maximum(fr, np.abs(fa)), q.sum(-1))
+    for got, want in (
+        ((q * np.cos(al) * np.cos(ph)).sum(-1), fr),
+        ((q * np.cos(al) * np.sin(ph)).sum(-1), 0.0),
+        ((q * np.sin(al)).sum(-1), fa),
+    ):
+        assert np.all(np.abs(got - want) <= 1e-8 * size)
