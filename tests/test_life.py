@@ -58,7 +58,7 @@ def test_bad_input(call, parameter):
     assert info.value.parameter == parameter
 
 
-# ISO 281:2007, 6.2, Table 3, single-row radial ball bearings, normal clearance: rows
+# ISO 281:2007, 5.2, Table 3, single-row radial ball bearings, normal clearance: rows
 # (f0 F_a/C0r, e, Y) and X = 0.56 for F_a/F_r > e, copied from the standard's table.
 ISO281_TABLE3 = [
     (0.172, 0.19, 2.30),

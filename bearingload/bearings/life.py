@@ -110,7 +110,7 @@ def allowable_load(
     return _out(c / n ** (1.0 / e))
 
 
-#: ISO 281:2007, 6.2 (dynamic equivalent radial load of radial ball bearings), Table 3, single-row
+#: ISO 281:2007, 5.2 (dynamic equivalent radial load of radial ball bearings), Table 3, single-row
 #: radial (deep-groove) ball bearings with normal clearance: rows of f0 F_a / C0r with e and Y
 #: (X = 0.56) for F_a/F_r > e; for F_a/F_r <= e, X = 1 and Y = 0. Intermediate values by linear
 #: interpolation, as the standard says.
@@ -125,7 +125,7 @@ def equivalent_load_deep_groove(
 ) -> Any:
     """Dynamic equivalent radial load P = X F_r + Y F_a of a deep-groove ball bearing. [N]
 
-    ISO 281:2007, clause 6.2, Table 3 (single row, normal clearance): with
+    ISO 281:2007, clause 5.2, Table 3 (single row, normal clearance): with
     ``r = f0 F_a / C0r`` the factor ``e`` and ``Y`` are interpolated linearly in the table;
     ``F_a/F_r <= e`` gives ``P = F_r``, else ``P = 0.56 F_r + Y F_a``. Outside the table
     (``r < 0.172`` or ``r > 6.89``) the end rows are used. Only the normal-clearance columns are

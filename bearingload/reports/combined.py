@@ -66,7 +66,7 @@ NOTES = (
     "reports it). Without --moment or --misalignment the inner ring is free to tilt (M = 0).",
     "Ball stiffness: exact Hertz at each ball's contact angle (unless --stiffness is given).",
     "L10r: ISO/TS 16281:2008, 4.3 (Q_ci, Q_ce from C_r; cubic mean on the rotating ring, "
-    "exponent 10/3 on the stationary one). L10: ISO 281:2007, 6.2-6.3, P = X F_r + Y F_a.",
+    "exponent 10/3 on the stationary one). L10: ISO 281:2007, 5.2-5.3, P = X F_r + Y F_a.",
 )
 
 

@@ -6,7 +6,7 @@ The computation behind ``bearingload solve`` with ``--axial-load``, ``--moment``
 
 Lives: ISO/TS 16281:2008 reference rating life L10r from the ball loads
 (:mod:`bearingload.bearings.iso16281`), and ISO 281:2007's basic rating life (C_r/P)^3 with
-P = X F_r + Y F_a (clause 6.2, Table 3; needs C0r and f0, i.e. a catalogue bearing; P = F_r
+P = X F_r + Y F_a (clause 5.2, Table 3; needs C0r and f0, i.e. a catalogue bearing; P = F_r
 without an axial load).
 """
 

@@ -116,7 +116,7 @@ def life_vs_clearance_table() -> Table:
         f"F_r + F_a at G_r = {best_c['clearance_um']:g} um (of the rows).",
         f"ISO 281:2007 basic life, blind to clearance: F_r alone (C_r/F_r)^3 = "
         f"{float(rating_life(b.C, RADIAL_LOAD)):.5g}; F_r + F_a: P = X F_r + Y F_a = "
-        f"{p:.5g} N (6.2, Table 3, f0 = {f0:g}, C0r = {b.C0:g} N), "
+        f"{p:.5g} N (5.2, Table 3, f0 = {f0:g}, C0r = {b.C0:g} N), "
         f"(C_r/P)^3 = {float(rating_life(b.C, p)):.5g} (10^6 rev).",
         "Question after Oswald, Zaretsky & Poplawski, NASA TM-2012-217115 (2012).",
     ]
