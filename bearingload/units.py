@@ -31,10 +31,19 @@ UNITS: dict[str, dict[str, float]] = {
     # stiffness units are read by parse_stiffness: F/L^e for any force F and length L above
     "stiffness": {"N/mm^1.5": 1.0, "kgf/mm^1.5": KGF, "N/um^1.5": 1e3**1.5, "N/mm^(10/9)": 1.0},
     "modulus": {"MPa": 1.0, "N/mm^2": 1.0, "GPa": 1e3, "kgf/mm^2": KGF, "Pa": 1e-6},
+    "moment": {"Nmm": 1.0, "N*mm": 1.0, "Nm": 1e3, "N*m": 1e3, "kNm": 1e6, "kgfmm": KGF},
+    "angle": {"deg": 1.0, "°": 1.0, "rad": 180.0 / math.pi, "mrad": 0.18 / math.pi},
 }
 
 #: The unit a bare number is taken in, per kind.
-BASE_UNIT = {"force": "N", "length": "mm", "stiffness": "N/mm^1.5", "modulus": "MPa"}
+BASE_UNIT = {
+    "force": "N",
+    "length": "mm",
+    "stiffness": "N/mm^1.5",
+    "modulus": "MPa",
+    "moment": "N mm",
+    "angle": "°",
+}
 
 _NUMBER = re.compile(r"^\s*([+-]?(?:\d+\.?\d*|\.\d+)(?:[eE][+-]?\d+)?)\s*(.*?)\s*$")
 
@@ -97,7 +106,8 @@ def parse_quantity(text: str | float, kind: str, *, parameter: str | None = None
 
 
 def _example(kind: str) -> str:
-    return {"force": "300kgf", "length": "20um", "stiffness": "4700kgf/mm^1.5"}.get(kind, "208GPa")
+    examples = {"force": "300kgf", "length": "20um", "stiffness": "4700kgf/mm^1.5"}
+    return (examples | {"moment": "1.5Nm", "angle": "2.7mrad"}).get(kind, "208GPa")
 
 
 _STIFFNESS_UNIT = re.compile(

@@ -44,7 +44,7 @@ def test_solve_306_with_clearance_class():
         "heaviest ball load Q_max                  1783.27  N",
         "heaviest ball load Q_max                  181.843  kgf",
         "max contact pressure, inner               2252.76  MPa",
-        "basic rating life L10 = (C/F_r)^3         394.370  10^6 rev",
+        "basic rating life L10 = (C/P)^3           394.370  10^6 rev",
         "life L of the allowable load              36.0000  10^6 rev",
         "allowable load C/L^(1/3)                  666.278  kgf",
         "G_r: class C3; ISO 5753-1 C3 13-28 µm at d = 30 mm, mean (clearance table).",

@@ -146,6 +146,14 @@ OPTION_NAMES = {
     "bore": "--clearance",
     "revolutions": "--revolutions",
     "series": "--series",
+    # combined load (bearingload.models.combined, bearingload.bearings.iso16281)
+    "radial_load": "--load",
+    "axial_load": "--axial-load",
+    "moment": "--moment",
+    "misalignment": "--misalignment",
+    "dynamic_rating": "--dynamic-rating",
+    "ball_diameter": "--ball-diameter",
+    "pitch_diameter": "--pitch-diameter",
     "standard": "--standard",
 }
 

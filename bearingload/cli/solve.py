@@ -7,6 +7,7 @@ from typing import Any
 import click
 
 from bearingload.cli.bearing_options import CLEARANCE_HELP, Clearance, geometry_options
+from bearingload.cli.combined_options import combined_options, wants_combined
 from bearingload.cli.options import (
     CONTEXT,
     Quantity,
@@ -36,7 +37,8 @@ from bearingload.cli.plot import ball_loads_plot_option
     "-F",
     type=Quantity("force"),
     required=True,
-    help=f"Radial load F_r > 0. Units: {units_help('force')} (bare number: N).",
+    help=f"Radial load F_r > 0 (>= 0 with an axial load or a moment). Units: "
+    f"{units_help('force')} (bare number: N).",
 )
 @click.option(
     "--stiffness",
@@ -70,6 +72,7 @@ from bearingload.cli.plot import ball_loads_plot_option
     help="Life L [revolutions] for the allowable load C/(L/10^6)^(1/3). The default is the "
     "worked value of Kuzmenko (2010) §3.2 (36e6 rev, e.g. 1000 h at 600 rpm); set your own.",
 )
+@combined_options
 @cage_angle_option
 @exponent_option
 @method_option(
@@ -112,6 +115,7 @@ def solve(
     show_geometry: bool,
     fmt: str,
     output: str | None,
+    **combined: Any,
 ) -> None:
     """Solve the ring equilibrium of one bearing: the heaviest ball load, how many balls carry,
     the load zone, the ring displacement and stiffness, and every ball's load.
@@ -123,6 +127,13 @@ def solve(
     its ball set gives the exact Hertz ball stiffness, its bore resolves a clearance class, its
     rating C gives the life (C/F_r)^3; --show-geometry prints the source of every value.
     Without a BEARING give --balls and --stiffness (or the ball geometry).
+
+    With --axial-load, --moment, --misalignment, --dynamic-rating or --rotating the inner ring of
+    a deep-groove ball bearing moves radially, axially and tilts (ISO/TS 16281): every ball gets
+    its contact angle; the axial displacement is measured from the centred rings (half the axial
+    play included, as MASTA reports it); the ring is free to tilt unless a moment or a
+    misalignment is given; the report adds the reference rating life L10r for the rotating ring
+    (default inner) beside ISO 281's (C_r/P)^3 with P = X F_r + Y F_a.
 
     \b
     Examples:
@@ -138,6 +149,10 @@ def solve(
       bearingload solve -z 8 -F 300kgf -K 4700kgf/mm^1.5 -G 20um --method all
       # every ball's load as csv, one row per ball
       bearingload solve -z 8 -F 300kgf -K 4700kgf/mm^1.5 --format csv --per-ball
+      # combined load on a 6205 with C3 clearance: contact angles, tilt, L10r
+      bearingload solve 6205 -F 1.4kN --axial-load 700N -G C3
+      # a hand-given ball set under a pure axial load, its C_r, the outer ring rotating
+      bearingload solve -z 7 --ball-diameter 11.5 --pitch-diameter 43.5 -F 0 -A 1kN -G 10um -C 23.4kN --rotating outer
     """
     from bearingload.models.registry import list_methods
     from bearingload.reports.solve import solve_report
@@ -148,13 +163,29 @@ def solve(
         )
     k_given = stiffness_value(stiffness, exponent)  # N/mm^m
     methods = list_methods() if method == "all" else [method]
+    geometry = {"balls": balls, "ball_diameter": ball_diameter, "pitch_diameter": pitch_diameter,
+                "f_i": inner_conformity, "f_o": outer_conformity, "modulus": modulus,
+                "poisson": poisson}  # fmt: skip
+    if wants_combined(combined):
+        from bearingload.cli.combined_options import combined_text
+
+        if method != "exact":
+            raise click.UsageError(
+                "Invalid value for '--method': the combined load (--axial-load, --moment, "
+                "--misalignment) is solved by the exact model only"
+            )
+        bearings = _bearings(bearing, k_given, clearance, clearance_pick, exponent, **geometry)
+        emit(combined_text(bearings, load, cage_angle, combined, fmt, per_ball, show_geometry),
+             output)  # fmt: skip
+        return
     if bearing is None and ball_diameter is None and pitch_diameter is None:
         cases = _by_hand(methods, balls, load, k_given, clearance, cage_angle, exponent)
     else:
-        cases = _catalogue(methods, bearing, load, k_given, clearance, clearance_pick, cage_angle,
-                           exponent, revolutions, balls=balls, ball_diameter=ball_diameter,
-                           pitch_diameter=pitch_diameter, f_i=inner_conformity,
-                           f_o=outer_conformity, modulus=modulus, poisson=poisson)  # fmt: skip
+        bearings = _bearings(bearing, k_given, clearance, clearance_pick, exponent, **geometry)
+        angle = cage_angle_deg(cage_angle, bearings[0].balls)
+        from bearingload.studies.loaded_bearing import solve_bearing
+
+        cases = solve_bearing(bearings, load, angle, methods, revolutions)
     emit(solve_report(cases, fmt, per_ball=per_ball, show_geometry=show_geometry), output)
 
 
@@ -181,20 +212,16 @@ def _by_hand(
     return solve_ring(methods, balls, load, k_given, clearance_length(clearance), angle, exponent)
 
 
-def _catalogue(
-    methods: list[str],
+def _bearings(
     bearing: str | None,
-    load: float,
     k_given: float | None,
     clearance: Any,
     clearance_pick: str,
-    cage_angle: Any,
     exponent: float,
-    revolutions: float,
     **geometry: Any,
 ) -> list[Any]:
+    """The resolved bearing, or the same bearing at the min, mean and max of its class."""
     from bearingload.bearings.resolve import resolve_bearing
-    from bearingload.studies.loaded_bearing import solve_bearing
 
     if exponent != 1.5:
         raise click.UsageError(
@@ -214,6 +241,4 @@ def _catalogue(
             "(C2 CN C3 C4 C5), not a clearance length"
         )
     picks = ["min", "mean", "max"] if clearance_pick == "range" else []
-    bearings = [resolved.with_clearance(p) for p in picks] or [resolved]
-    angle = cage_angle_deg(cage_angle, resolved.balls)
-    return solve_bearing(bearings, load, angle, methods, revolutions)
+    return [resolved.with_clearance(p) for p in picks] or [resolved]

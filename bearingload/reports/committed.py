@@ -19,6 +19,7 @@ def _registry() -> dict[str, Callable[[], Table]]:
     from bearingload.reports.tables import design_table, kuzmenko2010_306_table, table_k, table_kq
     from bearingload.studies.compliance import fit_table
     from bearingload.studies.kurochkin_errata import differences_table, example1_moment_table
+    from bearingload.studies.life_clearance import life_vs_clearance_table
     from bearingload.studies.stiffness import stiffness_table
 
     return {
@@ -36,6 +37,8 @@ def _registry() -> dict[str, Callable[[], Table]]:
         "kurochkin1973_example1": example1_moment_table,
         "compliance_fits": fit_table,
         "stiffness_seed003": stiffness_table,
+        # ISO/TS 16281 L10r against clearance, 6205, radial and combined load (issue 11)
+        "life_vs_clearance_6205": life_vs_clearance_table,
     }
 
 
