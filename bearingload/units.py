@@ -45,6 +45,44 @@ BASE_UNIT = {
     "angle": "°",
 }
 
+#: Plausible ranges of a BARE number (no unit) per (kind, parameter); outside, the number is
+#: refused with the unit the user most likely meant, instead of being used. [base unit]
+PLAUSIBLE_BARE: dict[tuple[str, str | None], tuple[float, float, str]] = {
+    # Young's modulus: bare numbers are MPa; steel 2.1e5, ceramics 3.1e5; "210" is 210 GPa meant
+    ("modulus", None): (1e3, 1e7, "a Young's modulus"),
+    # a radial clearance of 1 mm or more is beyond every ISO 5753-1 class up to 1000 mm bore
+    ("length", "clearance"): (-1.0, 1.0, "a radial clearance"),
+}
+
+
+def plausible_ranges_help(kind: str, parameter: str | None = None) -> str:
+    """The plausible range of a bare number, for --help."""
+    low, high, _ = PLAUSIBLE_BARE[(kind, parameter)]
+    return f"a bare number outside {low:g} to {high:g} {BASE_UNIT[kind]} is refused"
+
+
+def _likely(value: float, kind: str, low: float) -> str:
+    """The unit a bare, implausible number most likely meant, written with the number."""
+    if kind == "modulus":
+        return f"{value:g}GPa" if value < low else f"{value:g}Pa"
+    return f"{value:g}um"
+
+
+def _check_plausible(value: float, kind: str, name: str, text: object) -> None:
+    rule = PLAUSIBLE_BARE.get((kind, name)) or PLAUSIBLE_BARE.get((kind, None))
+    if rule is None or rule[0] <= value < rule[1]:
+        return
+    from bearingload.errors import InputError
+
+    low, high, what = rule
+    raise InputError(
+        name,
+        f"a bare {text} is {value:g} {BASE_UNIT[kind]}, implausible for {what} (bare numbers are "
+        f"{BASE_UNIT[kind]}; plausible {low:g} to {high:g} {BASE_UNIT[kind]}): did you mean "
+        f"{_likely(value, kind, low)}? Write the unit to use the number as it is.",
+    )
+
+
 _NUMBER = re.compile(r"^\s*([+-]?(?:\d+\.?\d*|\.\d+)(?:[eE][+-]?\d+)?)\s*(.*?)\s*$")
 
 
@@ -82,16 +120,14 @@ def parse_quantity(text: str | float, kind: str, *, parameter: str | None = None
         value, unit = float(text), ""
     else:
         match = _NUMBER.match(str(text))
-        if match is None:
-            raise InputError(
-                name,
-                f"cannot read {text!r} as a number with a unit; "
-                f"write e.g. '{_example(kind)}' (units: {', '.join(units)})",
-            )
+        if match is None or re.match(r"^\s*[+-]?\d*,\d", str(text)):
+            raise InputError(name, _unreadable(str(text), kind))
         value, unit = float(match.group(1)), _canonical(match.group(2))
     if not math.isfinite(value):
         raise InputError(name, f"{text!r} is not a finite number")
     if unit == "":
+        if not isinstance(text, (int, float)):
+            _check_plausible(value, kind, name, text)
         return value
     if kind == "stiffness":
         return value * stiffness_factor(unit, None, parameter=name)
@@ -103,6 +139,22 @@ def parse_quantity(text: str | float, kind: str, *, parameter: str | None = None
             f"(a bare number is {BASE_UNIT[kind]})",
         )
     return value * lookup[unit]
+
+
+def _unreadable(text: str, kind: str) -> str:
+    """Why ``text`` is no number with a unit, with a hint for the usual slips."""
+    if re.match(r"^\s*[+-]?\d*,\d+", text):
+        fixed = text.strip().replace(",", ".", 1)
+        return f"cannot read {text!r}: write the decimal point, not a comma: {fixed}"
+    return (
+        f"cannot read {text!r} as a number with a unit; "
+        f"write e.g. '{_example(kind)}' (units: {', '.join(UNITS[kind])})"
+    )
+
+
+def unit_names() -> set[str]:
+    """Every unit the parser knows, as written (for the hint on a unit typed after a space)."""
+    return {u for units in UNITS.values() for u in units} | {"kgf/mm^1.5", "N/mm^1.5"}
 
 
 def _example(kind: str) -> str:
