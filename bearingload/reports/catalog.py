@@ -58,7 +58,7 @@ def _row(b: BearingGeometry) -> dict[str, Any]:
         "standard": b.standard,
         "d": b.d,
         "D": b.D,
-        "B": b.B,
+        "B": _or_dash(b.B),
         "balls": b.balls if b.balls is not None else "-",
         "ball_diameter": b.ball_diameter if b.ball_diameter is not None else "-",
         "pitch_diameter": b.pitch_diameter if b.pitch_diameter is not None else "-",
@@ -87,7 +87,7 @@ def catalog_entry(designation: str, fmt: str) -> str:
         ("series", "dimension series", b.series, ""),
         ("d", "bore d", b.d, "mm"),
         ("D", "outside diameter D", b.D, "mm"),
-        ("B", "width B", b.B, "mm"),
+        ("B", "width B", _or_dash(b.B), "mm"),
         ("balls", "balls z", b.balls if b.balls is not None else "-", ""),
         ("ball_diameter", "ball diameter D_w", _or_dash(b.ball_diameter), "mm"),
         ("pitch_diameter", "pitch diameter d_m", _or_dash(b.pitch_diameter), "mm"),
@@ -96,6 +96,9 @@ def catalog_entry(designation: str, fmt: str) -> str:
         ("C", "dynamic load rating C", _or_dash(b.C), "N"),
         ("C0", "static load rating C0", _or_dash(b.C0), "N"),
         ("f0", "factor f0 (C0 = f0 z D_w^2)", _or_dash(b.f0), "N/mm^2"),
+        ("maker", "ball set of maker", b.maker or "-", ""),
+        ("method", "ball set read/derived", b.method or "-", ""),
+        ("makers", "makers (--maker)", ", ".join(b.makers) or "-", ""),
         ("clearance_class", "clearance class marked", p.clearance_class or "none (CN)", ""),
     ]
     if fmt == "json":
