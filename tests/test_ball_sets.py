@@ -105,7 +105,9 @@ def test_derived_set_is_rederived_from_its_ratings(bs: BallSet) -> None:
     assert own.score - best.score < 0.004
     # The next distinct set scores worse.
     other = next(
-        f for f in fits if f.balls != bs.balls or abs(f.ball_diameter / best.ball_diameter - 1) > 0.01
+        f
+        for f in fits
+        if f.balls != bs.balls or abs(f.ball_diameter / best.ball_diameter - 1) > 0.01
     )
     assert other.score > best.score
 
@@ -215,7 +217,12 @@ def test_maker_variants_selectable() -> None:
     assert (gost.balls, gost.ball_diameter, gost.C0) == (9, 12.7, pytest.approx(1810 * 9.80665))
     assert "GOST 208" in gost.source
     gmn = lookup("6205", maker="GMN")
-    assert (gmn.balls, gmn.ball_diameter, gmn.pitch_diameter, gmn.method) == (9, 7.938, 39.1, "read")
+    assert (gmn.balls, gmn.ball_diameter, gmn.pitch_diameter, gmn.method) == (
+        9,
+        7.938,
+        39.1,
+        "read",
+    )
     cwru = lookup("6205-2RS", maker="CWRU")
     assert (cwru.balls, cwru.ball_diameter, cwru.pitch_diameter) == (9, 7.94, 39.04)
     assert cwru.C is None  # the CWRU page prints no ratings
@@ -239,7 +246,9 @@ def test_disagreeing_designations() -> None:
     # more than the 1 % agreement rule in D_w, or in z.
     differ = []
     for row in entries(standard="ISO"):
-        sets = {(v.balls, v.ball_diameter) for v in (variant(row.designation, m) for m in row.makers)}
+        sets = {
+            (v.balls, v.ball_diameter) for v in (variant(row.designation, m) for m in row.makers)
+        }
         distinct: list[tuple[int, float]] = []
         for z, dw in sorted(sets):
             if not any(z == z2 and abs(dw / dw2 - 1) < 0.01 for z2, dw2 in distinct):

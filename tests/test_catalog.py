@@ -12,9 +12,9 @@ from bearingload.bearings.catalog import (
     DEFAULT_F_I,
     DEFAULT_F_O,
     BearingGeometry,
+    _counterpart,
     check_geometry,
     entries,
-    _counterpart,
     find,
     lookup,
 )
@@ -113,7 +113,9 @@ def test_gost_static_rating_rule(row: BearingGeometry) -> None:
 
 
 @pytest.mark.parametrize(
-    "row", [r for r in WITH_GEOMETRY if r.standard == "ISO" and r.series in ("60", "62", "63")], ids=_id
+    "row",
+    [r for r in WITH_GEOMETRY if r.standard == "ISO" and r.series in ("60", "62", "63")],
+    ids=_id,
 )
 def test_iso_ball_set_matches_nsk_fingerprint(row: BearingGeometry) -> None:
     # C0r = f0 z Dw^2 (NSK catalogue); the accepted ball sets agree within 1 %.

@@ -346,7 +346,9 @@ def variant(designation: str, maker: str) -> BearingGeometry:
     if key == "GOST" and key in row.makers:
         if row.standard == "GOST":
             return row
-        g = next(r for r in _rows() if r.standard == "GOST" and r.parsed.iso_name == row.designation)
+        g = next(
+            r for r in _rows() if r.standard == "GOST" and r.parsed.iso_name == row.designation
+        )
         return dataclasses.replace(
             g,
             designation=row.designation,

@@ -242,8 +242,10 @@ def invert_ball_set(
     sizes = standard_ball_sizes()
     z = np.array(list(balls), dtype=float)[:, None]
     dw = sizes[None, :]
-    ok = (z * dw < np.pi * pitch_diameter) & (dw / pitch_diameter <= 0.40) & (
-        dw / pitch_diameter >= 0.01
+    ok = (
+        (z * dw < np.pi * pitch_diameter)
+        & (dw / pitch_diameter <= 0.40)
+        & (dw / pitch_diameter >= 0.01)
     )
     zz, dd = np.broadcast_arrays(z, dw)
     zz, dd = zz[ok], dd[ok]
