@@ -250,7 +250,7 @@ def resolve_bearing(
             rollers=balls,
             roller_diameter=ball_diameter,
             pitch_diameter=pitch_diameter,
-            modulus=e_in(modulus),
+            modulus=modulus,
             poisson=poisson,
             stiffness=stiffness,
             clearance=spec,
@@ -481,13 +481,6 @@ def _is_roller(designation: str) -> bool:
         return parse(designation).kind == "roller"
     except InputError:
         return False
-
-
-def e_in(modulus: float | None) -> float | None:
-    """The modulus checked as :func:`resolve_bearing` checks it (positive, finite). [MPa]"""
-    if modulus is not None:
-        finite_positive("modulus", modulus)
-    return modulus
 
 
 def _rating_source(geom: BearingGeometry, value: float | None) -> str:
