@@ -157,10 +157,31 @@ def case_warnings(bearing: ResolvedBearing, load: float, result: Any) -> list[st
                 f"{q_max:.6g} N) is above {limit:g} MPa, the pressure of the static rating of "
                 f"{element} bearings (ISO 76)"
             )
-    if int(result.loaded_balls) == 1 and bearing.balls > 1:
-        out.append(
-            f"only one {element} carries the load: the result hangs on a single contact "
-            "(large clearance or few elements); check the clearance"
-        )
+    out += element_warnings(result, bearing.balls, element)
     out += _clearance_findings(bearing)
     return out
+
+
+def element_warnings(result: Any, balls: int, element: str = "ball") -> list[str]:
+    """The finding that needs no bearing data: only one of several elements carries the load.
+
+    Parameters
+    ----------
+    result : LoadDistribution
+        One solved case (``loaded_balls`` is read).
+    balls : int
+        Number of rolling elements z.
+    element : str
+        ``"ball"`` or ``"roller"``, for the wording.
+
+    Returns
+    -------
+    list of str
+        Empty, or the one sentence.
+    """
+    if int(result.loaded_balls) == 1 and balls > 1:
+        return [
+            f"only one {element} carries the load: the result hangs on a single contact "
+            "(large clearance or few elements); check the clearance"
+        ]
+    return []

@@ -14,8 +14,11 @@ from bearingload.cli.options import (
     emit,
     exponent_option,
     library_errors,
+    maker_option,
     method_option,
     output_options,
+    print_warnings,
+    quiet_option,
     stiffness_value,
     units_help,
 )
@@ -75,6 +78,8 @@ from bearingload.cli.options import (
     "stribeck: 4.37 F_r/z; palmgren: 5 F_r/z (these two ignore stiffness, clearance, cage "
     "angle and exponent); all: every method side by side with its error against exact."
 )
+@maker_option
+@quiet_option
 @output_options
 @library_errors
 def solve(
@@ -94,6 +99,8 @@ def solve(
     cage_angle: Any,
     exponent: float,
     method: str,
+    maker: str | None,
+    quiet: bool,
     fmt: str,
     output: str | None,
 ) -> None:
@@ -102,10 +109,16 @@ def solve(
     The inner ring moves until the ball forces balance the radial load (Kurochkin 1973,
     Kuzmenko 2010). Ball 1 sits at the cage angle; balls are numbered counter-clockwise.
 
-    BEARING is a catalogue designation (306, 6306-2RS/C3, 75-313; see 'bearingload catalog'):
-    its ball set gives the exact Hertz ball stiffness, its bore resolves a clearance class, its
-    rating C gives the life (C/F_r)^3. The report names the source of every value. Without a
-    BEARING give --balls and --stiffness (or the ball geometry).
+    BEARING is a catalogue designation (306, 6306-2RS/C3, 75-313, 61806, 16005; see
+    'bearingload catalog'): its ball set gives the exact Hertz ball stiffness, its bore resolves a
+    clearance class, its rating C gives the life (C/F_r)^3. A cylindrical roller bearing (NU206,
+    N 306) is solved with line contact (m = 10/9, Palmgren stiffness). The report names the source
+    of every value. Without a BEARING give --balls and --stiffness (or the ball geometry).
+
+    Cases outside what the bearing supports (s0 = C0/P0 below 1, F_r above C0, contact pressure
+    above 4200 MPa for balls or 4000 MPa for rollers as in ISO 76, one element carrying the load,
+    clearance beyond the ISO 5753-1 classes) print 'Warning: ...' lines on stderr; the result is
+    printed and the exit status is 0. JSON carries them as 'warnings'.
 
     \b
     Examples:
@@ -119,6 +132,9 @@ def solve(
       bearingload solve -z 12 -F 5kN -K 3.8e5 -G -50um --cage-angle half --format json
       # exact, continuum, Stribeck and Palmgren side by side, errors against the exact answer
       bearingload solve -z 8 -F 300kgf -K 4700kgf/mm^1.5 -G 20um --method all
+      # SKF's ball set of a 6208 instead of the default NSK one; a roller bearing
+      bearingload solve 6208 -F 5kN --maker SKF
+      bearingload solve NU206 --load 5kN
     """
     if not revolutions == revolutions:  # NaN passes click's range check
         raise click.UsageError(
@@ -127,7 +143,7 @@ def solve(
     k_given = stiffness_value(stiffness, exponent)  # N/mm^m
     if bearing is None and ball_diameter is None and pitch_diameter is None:
         from bearingload.bearings.clearance import clearance_length
-        from bearingload.reports.solve import solve_report
+        from bearingload.reports.solve import solve_report_with_warnings
 
         if balls is None:
             raise click.UsageError(
@@ -145,16 +161,15 @@ def solve(
             text = method_report(method, balls, load, k_given, g_r, cage_angle, exponent, fmt)
             emit(text, output)
             return
-        emit(solve_report(balls, load, k_given, g_r, cage_angle, exponent, fmt), output)
+        text, warnings = solve_report_with_warnings(
+            balls, load, k_given, g_r, cage_angle, exponent, fmt
+        )
+        emit(text, output)
+        print_warnings(warnings, quiet)
         return
     from bearingload.bearings.resolve import resolve_bearing
-    from bearingload.reports.bearing import bearing_report, solve_bearing
+    from bearingload.reports.bearing import bearing_report, collect_warnings, solve_bearing
 
-    if exponent != 1.5:
-        raise click.UsageError(
-            "Invalid value for '--exponent': a ball bearing (Hertz point contact) has m = 1.5; "
-            "other exponents need --balls and --stiffness without a BEARING"
-        )
     resolved = resolve_bearing(
         bearing,
         balls=balls,
@@ -167,7 +182,18 @@ def solve(
         stiffness=k_given,
         clearance=clearance,
         clearance_pick="mean" if clearance_pick == "range" else clearance_pick,
+        maker=maker,
     )
+    if exponent not in (1.5, resolved.exponent):  # 1.5 is the default, also for rollers
+        contact = (
+            "a roller bearing (line contact) has m = 10/9"
+            if resolved.kind == "roller"
+            else ("a ball bearing (Hertz point contact) has m = 1.5")
+        )
+        raise click.UsageError(
+            f"Invalid value for '--exponent': {contact}; "
+            "other exponents need --balls and --stiffness without a BEARING"
+        )
     if clearance_pick == "range" and resolved.clearance_range is None:
         raise click.UsageError(
             "Invalid value for '--clearance-pick': 'range' needs a clearance class "
@@ -194,7 +220,7 @@ def solve(
             resolved.stiffness,
             resolved.clearance,
             cage_angle,
-            1.5,
+            resolved.exponent,
             fmt,
             context=context,
         )
@@ -208,3 +234,4 @@ def solve(
         for p in picks
     ]
     emit(bearing_report(cases, fmt), output)
+    print_warnings(collect_warnings(cases), quiet)

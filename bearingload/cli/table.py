@@ -14,6 +14,7 @@ from bearingload.cli.options import (
     emit,
     exponent_option,
     library_errors,
+    maker_option,
     method_option,
     output_options,
     stiffness_value,
@@ -63,6 +64,7 @@ TABLES = ("k", "kq")
     "The model the table is computed with (see 'bearingload solve --help'); all: one table "
     "comparing every method with its error against the exact answer."
 )
+@maker_option
 @output_options
 @library_errors
 def table(
@@ -82,6 +84,7 @@ def table(
     cage_angle: Any,
     exponent: float,
     method: str,
+    maker: str | None,
     fmt: str,
     output: str | None,
 ) -> None:
@@ -130,9 +133,15 @@ def table(
                 stiffness=k_given,
                 clearance=clearance if clearance is not None else 0.0,
                 clearance_pick=clearance_pick,
+                maker=maker,
             ),
             {"bearing": "--bearing"},
         )
+        if resolved.kind != "ball":
+            raise click.UsageError(
+                "Invalid value for '--bearing': the tables take ball bearings; for a roller "
+                "bearing use 'bearingload solve' or --exponent 10/9 with --stiffness"
+            )
         if method != "exact":
             from bearingload.studies.method_tables import bearing_note
             from bearingload.studies.tables import Conditions

@@ -13,7 +13,12 @@ from __future__ import annotations
 from dataclasses import dataclass
 from typing import Any
 
-from bearingload.bearings.life import allowable_load, rating_life
+from bearingload.bearings.life import (
+    BALL_LIFE_EXPONENT,
+    ROLLER_LIFE_EXPONENT,
+    allowable_load,
+    rating_life,
+)
 from bearingload.bearings.resolve import ResolvedBearing
 from bearingload.models.equilibrium import LoadDistribution, solve
 from bearingload.reports.parts import (
@@ -40,6 +45,7 @@ class BearingCase:
     rating_life: float | None  # [10^6 rev]
     allowable_load: float | None  # [N]
     revolutions: float  # [rev]
+    warnings: tuple[str, ...] = ()  # bearingload.bearings.checks.case_warnings
 
 
 def solve_bearing(
@@ -65,35 +71,23 @@ def solve_bearing(
     -------
     BearingCase
         p_max of both contacts at the heaviest ball load (when the geometry is known), the basic
-        rating life (C/F_r)^3 and the allowable load (when C is known).
+        rating life (C/F_r)^p (p = 3 balls, 10/3 rollers) and the allowable load (when C is
+        known), and the warnings of :func:`bearingload.bearings.checks.case_warnings`.
     """
+    from bearingload.bearings.checks import case_warnings, max_contact_pressures
+
     z = bearing.balls
     angle = cage_angle_deg(cage_angle, z)
-    r = solve(z, load, bearing.stiffness, bearing.clearance, angle, 1.5)
-    p_i = p_o = None
-    if (
-        bearing.ball_diameter is not None
-        and bearing.pitch_diameter is not None
-        and bearing.f_i is not None
-        and bearing.f_o is not None
-    ):
-        from bearingload.contact.hertz import ball_contacts
-
-        c = ball_contacts(
-            float(r.q_max),
-            bearing.ball_diameter,
-            bearing.pitch_diameter,
-            bearing.f_i,
-            bearing.f_o,
-            bearing.modulus,
-            bearing.poisson,
-        )
-        p_i, p_o = float(c.inner.p_max), float(c.outer.p_max)
+    r = solve(z, load, bearing.stiffness, bearing.clearance, angle, bearing.exponent)
+    pressures = max_contact_pressures(bearing, float(r.q_max))
+    p_i, p_o = pressures if pressures is not None else (None, None)
     life = allow = None
     if bearing.C:
-        life = float(rating_life(bearing.C, load))
-        allow = float(allowable_load(bearing.C, revolutions / 1e6))
-    return BearingCase(bearing, load, angle, r, p_i, p_o, life, allow, revolutions)
+        p = ROLLER_LIFE_EXPONENT if bearing.kind == "roller" else BALL_LIFE_EXPONENT
+        life = float(rating_life(bearing.C, load, p))
+        allow = float(allowable_load(bearing.C, revolutions / 1e6, p))
+    warnings = tuple(case_warnings(bearing, load, r))
+    return BearingCase(bearing, load, angle, r, p_i, p_o, life, allow, revolutions, warnings)
 
 
 def _summary(case: BearingCase) -> list[tuple[str, Any, str]]:
@@ -107,9 +101,11 @@ def _summary(case: BearingCase) -> list[tuple[str, Any, str]]:
             ("max contact pressure, outer", case.p_max_outer, "MPa"),
         ]
     if case.rating_life is not None:
-        label = f"allowable load C/L^(1/3), L = {case.revolutions:.4g} rev"
+        roller = case.bearing.kind == "roller"
+        power, root = ("(10/3)", "(3/10)") if roller else ("3", "(1/3)")
+        label = f"allowable load C/L^{root}, L = {case.revolutions:.4g} rev"
         rows += [
-            ("basic rating life L10 = (C/F_r)^3", case.rating_life, "10^6 rev"),
+            (f"basic rating life L10 = (C/F_r)^{power}", case.rating_life, "10^6 rev"),
             (label, case.allowable_load, "N"),
             (label, (case.allowable_load or 0.0) / KGF, "kgf"),
         ]
@@ -209,6 +205,7 @@ def _case_document(case: BearingCase) -> dict[str, Any]:
             "p_max_outer": case.p_max_outer,
             "rating_life": case.rating_life,
             "allowable_load": case.allowable_load,
+            "warnings": list(case.warnings),
         }
     )
 
@@ -221,7 +218,9 @@ def _document(cases: list[BearingCase]) -> dict[str, Any]:
         "balls": b.balls,
         "load": first.load,
         "cage_angle_deg": first.cage_angle,
-        "exponent": 1.5,
+        "kind": b.kind,
+        "maker": b.geometry.maker if b.geometry is not None else None,
+        "exponent": b.exponent,
         "stiffness": b.stiffness,
         "stiffness_ball": b.stiffness,
         "stiffness_inner": b.stiffness_inner,
@@ -240,18 +239,32 @@ def _document(cases: list[BearingCase]) -> dict[str, Any]:
         doc.update(_case_document(first))
     else:
         doc["cases"] = [_case_document(c) for c in cases]
+        doc["warnings"] = collect_warnings(cases)
+    k_unit = "N/mm^(10/9)" if b.kind == "roller" else "N/mm^1.5"
     doc["units"] = JSON_UNITS | {
-        "stiffness": "N/mm^1.5",
-        "stiffness_ball": "N/mm^1.5",
-        "stiffness_inner": "N/mm^1.5",
-        "stiffness_outer": "N/mm^1.5",
+        "stiffness": k_unit,
+        "stiffness_ball": k_unit,
+        "stiffness_inner": k_unit,
+        "stiffness_outer": k_unit,
         "clearance_range": "mm",
         "p_max_inner": "MPa (at the heaviest ball load)",
         "p_max_outer": "MPa (at the heaviest ball load)",
-        "rating_life": "10^6 revolutions, (C/F_r)^3",
-        "allowable_load": "N, C/(revolutions/10^6)^(1/3)",
+        "rating_life": "10^6 revolutions, (C/F_r)^(10/3)"
+        if b.kind == "roller"
+        else "10^6 revolutions, (C/F_r)^3",
+        "allowable_load": "N, C/(revolutions/10^6)^(3/10)"
+        if b.kind == "roller"
+        else "N, C/(revolutions/10^6)^(1/3)",
         "revolutions": "revolutions",
         "C": "N",
         "C0": "N",
     }
     return doc
+
+
+def collect_warnings(cases: list[BearingCase]) -> list[str]:
+    """The warnings of several cases (a clearance range), each once, in order."""
+    seen: list[str] = []
+    for c in cases:
+        seen += [w for w in c.warnings if w not in seen]
+    return seen

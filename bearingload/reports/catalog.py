@@ -7,7 +7,7 @@ from __future__ import annotations
 
 from typing import Any
 
-from bearingload.bearings.catalog import BearingGeometry, entries, find
+from bearingload.bearings.catalog import BearingGeometry, entries, find, variant
 from bearingload.reports.render import Column, Table, render
 
 
@@ -69,15 +69,17 @@ def _row(b: BearingGeometry) -> dict[str, Any]:
     }
 
 
-def catalog_entry(designation: str, fmt: str) -> str:
+def catalog_entry(designation: str, fmt: str, maker: str | None = None) -> str:
     """One catalogue entry with its sources and notes, rendered in ``fmt``.
+
+    ``maker`` shows that maker's ball set and ratings instead of the default.
 
     Raises
     ------
     InputError
-        (parameter ``bearing``) unknown or unreadable designation.
+        (parameter ``bearing``) unknown or unreadable designation; (``maker``) no such set.
     """
-    b = find(designation)
+    b = find(designation) if maker is None else variant(designation, maker)
     p = b.parsed
     fields: list[tuple[str, str, Any, str]] = [
         ("designation", "designation", b.designation, ""),

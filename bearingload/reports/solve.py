@@ -27,13 +27,31 @@ def solve_report(
     fmt: str,
 ) -> str:
     """Solve one case and render it in ``fmt``. Inputs in N, N/mm^m, mm, degrees or ``"half"``."""
+    return solve_report_with_warnings(balls, load, stiffness, clearance, cage_angle, exponent, fmt)[
+        0
+    ]
+
+
+def solve_report_with_warnings(
+    balls: int,
+    load: float,
+    stiffness: float,
+    clearance: float,
+    cage_angle: float | str,
+    exponent: float,
+    fmt: str,
+) -> tuple[str, list[str]]:
+    """:func:`solve_report` and the case's warnings (:func:`bearingload.bearings.checks.element_warnings`)."""
+    from bearingload.bearings.checks import element_warnings
+
     angle = cage_angle_deg(cage_angle, balls)
     args = (balls, load, stiffness, clearance, angle, exponent)
     r = solve(*args)
+    warnings = element_warnings(r, balls)
     if fmt == "json":
-        doc = inputs_json(*args) | distribution_json(r)
+        doc = inputs_json(*args) | distribution_json(r) | {"warnings": warnings}
         doc["units"] = JSON_UNITS | {"stiffness": f"N/mm^{exponent:g}"}
-        return render([], "json", document=doc)
+        return render([], "json", document=doc), warnings
     q = r.ball_loads()
     approach = np.maximum(q / stiffness, 0.0) ** (1.0 / exponent)
     balls_table = Table(
@@ -50,4 +68,4 @@ def solve_report(
         ],
     )
     summary = summary_table(f"Summary ({inputs_text(*args)})", distribution_rows(r))
-    return render([summary, balls_table], fmt)
+    return render([summary, balls_table], fmt), warnings
