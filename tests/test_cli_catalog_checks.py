@@ -28,7 +28,7 @@ def run(*args: str):
 def test_overload_warns_on_stderr_and_still_prints() -> None:
     r = run("solve", "6205", "-F", "500kN")
     assert r.stderr == OVERLOAD_WARNINGS
-    assert r.stdout.startswith("Bearing 6205 (ISO): geometry and stiffness used\n")
+    assert r.stdout.startswith("Bearing 6205, z = 9, F_r = 500000 N (50985.8 kgf), K = 274869")
     assert "basic rating life L10 = (C/F_r)^3" in r.stdout
 
 
@@ -82,7 +82,7 @@ def test_hand_given_single_ball() -> None:
     ],
 )  # fmt: skip
 def test_new_designations_say_where_geometry_comes_from(args, geometry) -> None:
-    r = run(*args)
+    r = run(*args, "--show-geometry")
     assert r.stderr == ""
     row = next(line for line in r.stdout.splitlines() if line.startswith("balls z"))
     assert row.split()[:3] == ["balls", "z", geometry[1]]
@@ -92,22 +92,28 @@ def test_new_designations_say_where_geometry_comes_from(args, geometry) -> None:
 
 def test_maker_json_and_ratings() -> None:
     doc = json.loads(run("solve", "6208", "-F", "5kN", "--maker", "SKF", "--format", "json").stdout)
-    assert doc["maker"] == "SKF" and doc["C0"] == 19000.0
-    assert doc["geometry"]["ball_diameter"]["value"] == 12.303
-    assert "derived" in doc["geometry"]["ball_diameter"]["source"]
+    b = doc["bearing"]
+    assert b["maker"] == "SKF" and b["C0"] == 19000.0
+    assert b["geometry"]["ball_diameter"]["value"] == 12.303
+    assert "derived" in b["geometry"]["ball_diameter"]["source"]
 
 
 def test_roller_bearing_nu206() -> None:
-    r = run("solve", "NU206", "--load", "5kN")
+    r = run("solve", "NU206", "--load", "5kN", "--show-geometry")
     assert r.stderr == ""
     assert r.stdout.startswith("Bearing NU206: geometry and stiffness used\n")
     assert (
         "rollers z                          13               catalogue: read (dataset)" in r.stdout
     )
-    assert "basic rating life L10 = (C/F_r)^(10/3)" in r.stdout
+    assert "life L10 = (C/F_r)^(10/3)" in r.stdout
+    assert "m = 1.11111" in r.stdout
     doc = json.loads(run("solve", "NU206", "-F", "5kN", "--format", "json").stdout)
-    assert doc["kind"] == "roller" and doc["exponent"] == pytest.approx(10 / 9)
-    assert doc["units"]["stiffness"] == "N/mm^(10/9)" and doc["warnings"] == []
+    case = doc["cases"][0]
+    assert doc["bearing"]["kind"] == "roller" and case["exponent"] == pytest.approx(10 / 9)
+    assert doc["bearing"]["units"]["stiffness_inner"] == "N/mm^(10/9)"
+    assert doc["warnings"] == [] and case["warnings"] == []
+    # life with p = 10/3: (C/F_r)^(10/3), SKF C = 44 kN
+    assert case["rating_life"] == pytest.approx((44000 / 5000) ** (10 / 3), rel=1e-9)  # 10 digits
     over = run("solve", "N 206", "-F", "60kN")
     assert "above 4000 MPa" in over.stderr and over.stderr.count("Warning: ") == 3
 

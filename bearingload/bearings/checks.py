@@ -123,9 +123,9 @@ def case_warnings(bearing: ResolvedBearing, load: float, result: Any) -> list[st
         The bearing as solved (from :func:`bearingload.bearings.resolve.resolve_bearing`).
     load : float
         Radial load F_r. [N]
-    result : LoadDistribution
-        One case of :func:`bearingload.models.equilibrium.solve` (``q_max`` [N] and
-        ``loaded_balls`` are read).
+    result : LoadDistribution or Result
+        One case of :func:`bearingload.models.equilibrium.solve` or a registered model's
+        :class:`bearingload.models.case.Result` (``q_max`` [N] and ``loaded_balls`` are read).
 
     Returns
     -------
@@ -167,8 +167,9 @@ def element_warnings(result: Any, balls: int, element: str = "ball") -> list[str
 
     Parameters
     ----------
-    result : LoadDistribution
-        One solved case (``loaded_balls`` is read).
+    result : LoadDistribution or Result
+        One solved case (``loaded_balls`` is read; None, as the closed-form methods give,
+        means no finding).
     balls : int
         Number of rolling elements z.
     element : str
@@ -179,7 +180,8 @@ def element_warnings(result: Any, balls: int, element: str = "ball") -> list[str
     list of str
         Empty, or the one sentence.
     """
-    if int(result.loaded_balls) == 1 and balls > 1:
+    loaded = getattr(result, "loaded_balls", None)
+    if loaded is not None and int(loaded) == 1 and balls > 1:
         return [
             f"only one {element} carries the load: the result hangs on a single contact "
             "(large clearance or few elements); check the clearance"
