@@ -216,10 +216,25 @@ def _notes(cases: Sequence[LoadedCase], records: Sequence[dict[str, Any]]) -> li
             "life L10 = (C/F_r)^(10/3) and allowable load C/L^(3/10) (ISO 281, p = 10/3)."
         )
     if b is not None:
+        notes += _set_note(b)
         src = next((p.source for p in b.provenance if p.key == "clearance"), "")
         notes.append(f"G_r: {src}.")
         notes.append("--show-geometry lists the geometry used and the source of every value.")
     return notes
+
+
+def _set_note(b: Any) -> list[str]:
+    """Where a catalogue bearing's ball (or roller) set comes from, in one line."""
+    g = b.geometry
+    if b.kind == "roller":
+        z = next(p.source for p in b.provenance if p.key == "balls")
+        return [f"Rollers: D_w and d_m exact (SKF raceway diameters); z {z.split(': ')[-1]}."]
+    if g is None or g.maker is None:
+        return []
+    how = f"{g.method}" + (f", {g.confidence} confidence" if g.method == "derived" else "")
+    others = [m for m in g.makers if m != g.maker]
+    more = f"; other makers' sets: --maker {' | '.join(others)}" if others else ""
+    return [f"Ball set: {g.maker} ({how}){more}."]
 
 
 def _balls_human(cases: Sequence[LoadedCase], records: Sequence[dict[str, Any]]) -> Table:
