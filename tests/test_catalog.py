@@ -50,6 +50,28 @@ def test_catalogue_size_and_standards() -> None:
     assert len(names) == len(set(names))
 
 
+@pytest.mark.parametrize("name", ["ball_sets.csv", "rollers.csv"])
+def test_new_csv_files_are_plain(name: str) -> None:
+    raw = resources.files("bearingload.bearings").joinpath(f"data/{name}").read_bytes()
+    assert b"\r" not in raw and raw.endswith(b"\n")
+    rows = list(csv.reader(raw.decode("utf-8").splitlines()))
+    assert all(len(r) == len(rows[0]) for r in rows)
+    assert rows[0][-2:] == ["source", "notes"]
+
+
+def test_new_series_filters() -> None:
+    assert [len(entries(series=s)) for s in ("618", "68", "619", "69xx", "160")] == [
+        21,
+        21,
+        21,
+        21,
+        20,
+    ]
+    assert entries(series="63", bore=100)[0].designation == "6320"
+    with pytest.raises(InputError, match="allowed: 60, 62, 63, 64, 618, 619, 160"):
+        entries(series="617")
+
+
 def test_csv_is_plain() -> None:
     raw = resources.files("bearingload.bearings").joinpath("data/bearings.csv").read_bytes()
     assert b"\r" not in raw
@@ -76,6 +98,8 @@ def test_row_consistency(row: BearingGeometry) -> None:
     if (row.standard, row.designation) in TABLE_ROWS:
         assert row.C is not None and row.C0 is not None
         assert 0 < row.C0 < row.C  # ball bearings of bearings.csv: C0 below C in every source
+    else:  # NSK 618xx: C0 reaches 1.18 C (61820: 23.0 vs 19.6 kN)
+        assert row.C is not None and row.C0 is not None and 0 < row.C0 < 1.2 * row.C
     assert row.source.strip()
     assert row.notes.strip()
     assert 0.5 < row.f_i <= row.f_o < 0.6

@@ -241,20 +241,8 @@ def resolve_bearing(
         raise InputError("pick", f"unknown pick {clearance_pick!r}; allowed: {', '.join(PICKS)}")
     spec = clearance if isinstance(clearance, ClearanceSpec) else parse_clearance(clearance)
     if designation is not None and _is_roller(designation):
-        from bearingload.bearings.resolve_roller import resolve_roller
-
-        if maker is not None:
-            raise InputError("maker", "the roller bearings have one design each (SKF ECP)")
-        return resolve_roller(
-            designation,
-            rollers=balls,
-            roller_diameter=ball_diameter,
-            pitch_diameter=pitch_diameter,
-            modulus=modulus,
-            poisson=poisson,
-            stiffness=stiffness,
-            clearance=spec,
-        )
+        return _roller(designation, maker, balls, ball_diameter, pitch_diameter, modulus,
+                       poisson, stiffness, spec)  # fmt: skip
     given = {
         "balls": balls,
         "ball_diameter": ball_diameter,
@@ -471,6 +459,34 @@ def _clearance_row_source(bore: float | None) -> str:
         if bore is not None and row.bore_over < bore <= row.bore_incl:
             return f"clearance table (bore over {row.bore_over:g} incl {row.bore_incl:g} mm): {row.source}"
     return "clearance table"  # pragma: no cover - clearance_range raised before
+
+
+def _roller(
+    designation: str,
+    maker: str | None,
+    rollers: int | None,
+    roller_diameter: float | None,
+    pitch_diameter: float | None,
+    modulus: float | None,
+    poisson: float | None,
+    stiffness: float | None,
+    spec: ClearanceSpec | None,
+) -> ResolvedBearing:
+    """A cylindrical roller bearing, see :func:`bearingload.bearings.resolve_roller.resolve_roller`."""
+    from bearingload.bearings.resolve_roller import resolve_roller
+
+    if maker is not None:
+        raise InputError("maker", "the roller bearings have one design each (SKF ECP)")
+    return resolve_roller(
+        designation,
+        rollers=rollers,
+        roller_diameter=roller_diameter,
+        pitch_diameter=pitch_diameter,
+        modulus=modulus,
+        poisson=poisson,
+        stiffness=stiffness,
+        clearance=spec,
+    )
 
 
 def _is_roller(designation: str) -> bool:

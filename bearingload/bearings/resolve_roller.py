@@ -20,6 +20,7 @@ from bearingload.bearings.resolve import (
     Provenance,
     ResolvedBearing,
 )
+from bearingload.bearings.rollers import RollerGeometry
 from bearingload.errors import InputError
 from bearingload.validate import finite_positive
 
@@ -94,41 +95,7 @@ def resolve_roller(
         )
     k_contact = float(palmgren_line_stiffness(row.roller_length))
     k = float(stiffness) if stiffness is not None else float(roller_stiffness(row.roller_length))
-    over = set(row.overrides)
-
-    def src(field: str, default: str) -> str:
-        return "given (override)" if field in over else default
-
-    z_src = "catalogue: " + ("read (dataset)" if row.method == "read z" else "derived, flagged")
-    prov = (
-        Provenance("d", "bore d", row.d, "mm", "catalogue"),
-        Provenance("D", "outside diameter D", row.D, "mm", "catalogue"),
-        Provenance("balls", "rollers z", row.rollers, "", src("rollers", z_src)),
-        Provenance(
-            "ball_diameter", "roller diameter D_w", row.roller_diameter, "mm",
-            src("roller_diameter", "catalogue: (E - F)/2, exact"),
-        ),
-        Provenance(
-            "pitch_diameter", "pitch diameter d_m", row.pitch_diameter, "mm",
-            src("pitch_diameter", "catalogue: (E + F)/2, exact"),
-        ),
-        Provenance(
-            "roller_length", "effective roller length L_we", row.roller_length, "mm",
-            src("roller_length", "catalogue: derived from C0 (ISO 76), flagged"),
-        ),
-        Provenance("stiffness_inner", "inner contact K_i", k_contact, "N/mm^(10/9)", "Palmgren"),
-        Provenance("stiffness_outer", "outer contact K_o", k_contact, "N/mm^(10/9)", "Palmgren"),
-        Provenance(
-            "stiffness", "roller stiffness K (series)", k, "N/mm^(10/9)",
-            "given" if stiffness is not None else "Palmgren line contact, both contacts in series",
-        ),
-        Provenance(
-            "clearance", "radial clearance G_r (total)", g_r * 1e3, "µm",
-            "given" if spec is not None else "default: zero (no roller clearance table)",
-        ),
-        Provenance("C", "dynamic load rating C", row.C, "N", "catalogue: SKF"),
-        Provenance("C0", "static load rating C0", row.C0, "N", "catalogue: SKF"),
-    )  # fmt: skip
+    prov = _provenance(row, k_contact, k, stiffness is not None, spec is not None, g_r)
     return ResolvedBearing(
         designation=designation,
         geometry=None,
@@ -155,3 +122,44 @@ def resolve_roller(
         exponent=LINE_EXPONENT,
         roller_length=row.roller_length,
     )
+
+
+def _provenance(
+    row: RollerGeometry, k_contact: float, k: float, k_given: bool, g_given: bool, g_r: float
+) -> tuple[Provenance, ...]:
+    """Every value of a resolved roller bearing with its unit and source."""
+    over = set(row.overrides)
+
+    def src(field: str, default: str) -> str:
+        return "given (override)" if field in over else default
+
+    z_src = "catalogue: " + ("read (dataset)" if row.method == "read z" else "derived, flagged")
+    return (
+        Provenance("d", "bore d", row.d, "mm", "catalogue"),
+        Provenance("D", "outside diameter D", row.D, "mm", "catalogue"),
+        Provenance("balls", "rollers z", row.rollers, "", src("rollers", z_src)),
+        Provenance(
+            "ball_diameter", "roller diameter D_w", row.roller_diameter, "mm",
+            src("roller_diameter", "catalogue: (E - F)/2, exact"),
+        ),
+        Provenance(
+            "pitch_diameter", "pitch diameter d_m", row.pitch_diameter, "mm",
+            src("pitch_diameter", "catalogue: (E + F)/2, exact"),
+        ),
+        Provenance(
+            "roller_length", "effective roller length L_we", row.roller_length, "mm",
+            src("roller_length", "catalogue: derived from C0 (ISO 76), flagged"),
+        ),
+        Provenance("stiffness_inner", "inner contact K_i", k_contact, "N/mm^(10/9)", "Palmgren"),
+        Provenance("stiffness_outer", "outer contact K_o", k_contact, "N/mm^(10/9)", "Palmgren"),
+        Provenance(
+            "stiffness", "roller stiffness K (series)", k, "N/mm^(10/9)",
+            "given" if k_given else "Palmgren line contact, both contacts in series",
+        ),
+        Provenance(
+            "clearance", "radial clearance G_r (total)", g_r * 1e3, "µm",
+            "given" if g_given else "default: zero (no roller clearance table)",
+        ),
+        Provenance("C", "dynamic load rating C", row.C, "N", "catalogue: SKF"),
+        Provenance("C0", "static load rating C0", row.C0, "N", "catalogue: SKF"),
+    )  # fmt: skip
