@@ -147,3 +147,19 @@ def test_catalog_show_and_list() -> None:
     assert run("table", "k", "-b", "6208", "--maker", "gost", "--z-max", "3").stdout.startswith(
         "Bearing 6208: Load factor"
     )
+
+
+def test_catalog_roller_entry_and_maker_column() -> None:
+    text = run("catalog", "show", "N 206").stdout
+    assert text.startswith("Cylindrical roller bearing NU206 (ISO)\n")
+    assert (
+        "rollers z                  13\n" in text
+        and "effective length L_we      8.79180  mm\n" in text
+    )
+    doc = json.loads(run("catalog", "show", "NU312", "--format", "json").stdout)
+    assert (doc["rollers"], doc["roller_diameter"], doc["method"]) == (12, 19.0, "derived z")
+    lines = run("catalog", "--bore", "30").stdout.splitlines()
+    assert lines[2].split()[-2:] == ["ball", "set"]
+    assert lines[4].endswith("  GOST (D_w read, z derived)")
+    assert lines[9].startswith("6406 ") and lines[9].endswith("  -")  # 64xx: no default maker
+    assert lines[10].startswith("61806 ") and lines[10].endswith("  NSK (derived)")
