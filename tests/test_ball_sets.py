@@ -257,3 +257,21 @@ def test_disagreeing_designations() -> None:
             differ.append(row.designation)
     assert len(differ) == 43
     assert {"6208", "6209", "6305", "6203", "6200"} <= set(differ)
+
+
+def test_iso76_rating_of_every_nsk_set_is_4200_mpa() -> None:
+    # ISO 76's C_0r is the load at which the heaviest contact reaches 4200 MPa (3.2), with the
+    # heaviest ball load 5 C_0r/z (Stribeck's 5; ISO/TR 10657) and grooves 0.52/0.53 D_w. The
+    # exact Hertz pressure at the ISO 76 rating of each derived set therefore lands near 4200 MPa:
+    # a check of the f_0 table, of Hertz and of the sets together (the f_0 table is rounded to
+    # 0.1, and its low-gamma end is not set by the pressure).
+    from bearingload.contact.hertz import ball_contacts
+
+    pressures = []
+    for bs in (b for b in SETS if b.maker == "NSK"):
+        c0 = float(static_rating(bs.balls, bs.ball_diameter, bs.pitch_diameter))
+        q = 5.0 * c0 / bs.balls
+        c = ball_contacts(q, bs.ball_diameter, bs.pitch_diameter, 0.52, 0.53, 207000.0, 0.3)
+        pressures.append(float(c.inner.p_max))
+    assert min(pressures) > 0.97 * 4200 and max(pressures) < 1.01 * 4200
+    assert sum(pressures) / len(pressures) == pytest.approx(4200, rel=0.005)

@@ -163,3 +163,25 @@ def test_catalog_roller_entry_and_maker_column() -> None:
     assert lines[4].endswith("  GOST (D_w read, z derived)")
     assert lines[9].startswith("6406 ") and lines[9].endswith("  -")  # 64xx: no default maker
     assert lines[10].startswith("61806 ") and lines[10].endswith("  NSK (derived)")
+
+
+def test_warnings_of_several_cases_name_their_case() -> None:
+    r = run("solve", "6205", "-F", "500kN", "--method", "all")
+    lines = r.stderr.splitlines()
+    assert lines[:2] == OVERLOAD_WARNINGS.splitlines()[:2]  # shared: given once, as they are
+    assert [x.split(":")[1].strip() for x in lines[2:]] == [
+        "exact",
+        "continuum",
+        "stribeck",
+        "palmgren",
+    ]
+    assert all("above 4200 MPa" in x for x in lines[2:])
+    # near C0 only the largest C5 clearance crosses 4200 MPa: that warning names its case
+    r = run("solve", "6205", "-F", "8000N", "-G", "C5", "--clearance-pick", "range")
+    assert r.stderr == (
+        "Warning: static safety factor s0 = C0/P0 = 0.981 is below 1 (ISO 76: P0 = F_r = 8000 N, "
+        "C0 = 7850 N): the raceways deform permanently\n"
+        "Warning: the load F_r = 8000 N is above the basic static rating C0 = 7850 N\n"
+        "Warning: G_r max: maximum contact pressure 4215.9 MPa (inner contact, heaviest ball "
+        "4357.11 N) is above 4200 MPa, the pressure of the static rating of ball bearings (ISO 76)\n"
+    )

@@ -139,10 +139,23 @@ def _with_bearing(r: Result, b: ResolvedBearing, load: float, revolutions: float
 
 
 def collect_warnings(cases: Sequence[LoadedCase]) -> list[str]:
-    """The warnings of several cases (models, clearances), each once, in order."""
+    """The warnings of several cases (models, clearances), each once, in order.
+
+    A warning every case shares is given as it is; one that only some cases carry is prefixed
+    with the case's method and clearance pick (``"palmgren, G_r max: ..."``).
+    """
     seen: list[str] = []
+    methods = len({c.result.method for c in cases}) > 1
+    picks = len({c.clearance_pick for c in cases}) > 1
     for c in cases:
-        seen += [w for w in c.warnings if w not in seen]
+        for w in c.warnings:
+            if not all(w in other.warnings for other in cases):
+                parts = ([c.result.method] if methods else []) + (
+                    [f"G_r {c.clearance_pick}"] if picks else []
+                )
+                w = f"{', '.join(parts)}: {w}"
+            if w not in seen:
+                seen.append(w)
     return seen
 
 
