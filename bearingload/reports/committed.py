@@ -16,9 +16,7 @@ from bearingload.reports.render import Table, render, write_atomic
 
 
 def _registry() -> dict[str, Callable[[], Table]]:
-    from bearingload.studies.bearing_tables import kuzmenko2010_306_table
-    from bearingload.studies.method_tables import table_compare
-    from bearingload.studies.tables import table_k, table_kq
+    from bearingload.reports.tables import design_table, kuzmenko2010_306_table, table_k, table_kq
 
     return {
         "table1_k_zero_clearance": lambda: table_k(30),
@@ -29,7 +27,7 @@ def _registry() -> dict[str, Callable[[], Table]]:
         "table1_k_306_300kgf_gr100um": lambda: kuzmenko2010_306_table("k", 0.100),
         "table2_kq_306_300kgf_gr100um": lambda: kuzmenko2010_306_table("kq", 0.100),
         # exact, continuum, Stribeck and Palmgren side by side (issue 4), Table 1 conditions
-        "k_methods_zero_clearance": lambda: table_compare("k", 30),
+        "k_methods_zero_clearance": lambda: design_table("k", 30, method="all"),
     }
 
 
