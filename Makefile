@@ -11,8 +11,8 @@ STAMP := $(VENV)/.installed
 $(STAMP): pyproject.toml
 	$(PY) -m venv $(VENV)
 	$(BIN)/python -m pip install --quiet --upgrade pip
-	$(BIN)/python -m pip install --quiet -e '.[test]' --config-settings editable_mode=compat \
-		|| $(BIN)/python -m pip install --quiet -e '.[test]'  # a setuptools without compat mode
+	$(BIN)/python -m pip install --quiet -e '.[test,plot]' --config-settings editable_mode=compat \
+		|| $(BIN)/python -m pip install --quiet -e '.[test,plot]'  # a setuptools without compat mode
 	$(BIN)/python -m compileall -q bearingload
 	touch $(STAMP)
 
@@ -38,11 +38,13 @@ tables: $(STAMP)
 golden: $(STAMP)
 	$(BIN)/python -m tests.golden_outputs
 
-## make bench: vectorised solver against a per-case scipy brentq loop, same run
+## make bench: vectorised solver against a per-case scipy brentq loop, ring_forces against a
+## per-evaluation Python loop, each in one run
 bench: $(STAMP)
 	$(BIN)/python -m compileall -q bearingload
 	$(BIN)/python benchmarks/bench_solver.py
 	$(BIN)/python benchmarks/bench_methods.py
+	$(BIN)/python benchmarks/bench_forces.py
 
 clean:
 	rm -rf $(VENV) build *.egg-info .pytest_cache .mypy_cache .ruff_cache .hypothesis

@@ -14,7 +14,13 @@ from bearingload import __version__
 from bearingload.cli.options import CONTEXT
 
 #: Command name -> module of this package defining a command object of the same name.
-COMMANDS = {"solve": "solve", "table": "table", "catalog": "catalog", "fit": "fit"}
+COMMANDS = {
+    "solve": "solve",
+    "sweep": "sweep",
+    "table": "table",
+    "catalog": "catalog",
+    "fit": "fit",
+}
 
 
 class LazyGroup(click.Group):
@@ -48,6 +54,7 @@ def main() -> None:
       bearingload table k
       bearingload table kq --format csv -o kq.csv
       bearingload solve 306 --load 300kgf --clearance C3
+      bearingload sweep -z 9 --load 1kN --stiffness 1e5 --clearance 10um --steps 19
       bearingload catalog show 306
       bearingload fit examples/bearing208_kuzmenko2014.csv --load-unit kgf --balls 9
     """

@@ -128,6 +128,7 @@ OPTION_NAMES = {
     "clearance": "--clearance",
     "cage_angle": "--cage-angle",
     "exponent": "--exponent",
+    "steps": "--steps",
     # bearing, geometry and life options (bearingload.bearings.resolve, bearingload.bearings.life)
     "bearing": "BEARING",
     "ball-diameter": "--ball-diameter",

@@ -23,6 +23,7 @@ from bearingload.cli.options import (
     stiffness_value,
     units_help,
 )
+from bearingload.cli.plot import ball_loads_plot_option
 
 
 @click.command(context_settings=CONTEXT)
@@ -93,6 +94,7 @@ from bearingload.cli.options import (
 @maker_option
 @quiet_option
 @output_options
+@ball_loads_plot_option
 @library_errors
 def solve(
     bearing: str | None,

@@ -17,6 +17,9 @@ from bearingload.reports.render import Table, render, write_atomic
 
 def _registry() -> dict[str, Callable[[], Table]]:
     from bearingload.reports.tables import design_table, kuzmenko2010_306_table, table_k, table_kq
+    from bearingload.studies.compliance import fit_table
+    from bearingload.studies.kurochkin_errata import differences_table
+    from bearingload.studies.stiffness import stiffness_table
 
     return {
         "table1_k_zero_clearance": lambda: table_k(30),
@@ -28,6 +31,10 @@ def _registry() -> dict[str, Callable[[], Table]]:
         "table2_kq_306_300kgf_gr100um": lambda: kuzmenko2010_306_table("kq", 0.100),
         # exact, continuum, Stribeck and Palmgren side by side (issue 4), Table 1 conditions
         "k_methods_zero_clearance": lambda: design_table("k", 30, method="all"),
+        # the papers of issue 8: Kurochkin 1973 cells that differ, seed 001 fits, seed 003 stiffness
+        "kurochkin1973_differences": differences_table,
+        "compliance_fits": fit_table,
+        "stiffness_seed003": stiffness_table,
     }
 
 
