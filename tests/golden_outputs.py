@@ -35,6 +35,7 @@ COMMANDS = {
     "sweep_hand": "sweep -z 9 -F 1kN -K 1e5 -G 10um --steps 9",
     "sweep_306_c3": "sweep 306 -F 300kgf -G C3 --steps 5",
     "sweep_rollers_preload": "sweep -z 14 -F 10kN -K 8e5 -m 10/9 -G -5um --steps 3",
+    "sweep_kurochkin": "sweep -z 7 --kurochkin-T 0.567 --steps 5",
     "table_k": "table k --z-max 12",
     "table_kq_306": "table kq --bearing 306 -F 300kgf -G 20um --z-max 10",
     "table_k_all": "table k --method all --z-max 10",

@@ -129,6 +129,7 @@ OPTION_NAMES = {
     "cage_angle": "--cage-angle",
     "exponent": "--exponent",
     "steps": "--steps",
+    "T": "--kurochkin-T",
     # bearing, geometry and life options (bearingload.bearings.resolve, bearingload.bearings.life)
     "bearing": "BEARING",
     "ball-diameter": "--ball-diameter",

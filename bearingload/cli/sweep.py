@@ -32,8 +32,8 @@ from bearingload.cli.plot import check_plot, write_plot
     "--load",
     "-F",
     type=Quantity("force"),
-    required=True,
-    help=f"Radial load F_r > 0. Units: {units_help('force')} (bare number: N).",
+    help=f"Radial load F_r > 0 (required unless --kurochkin-T). Units: {units_help('force')} "
+    "(bare number: N).",
 )
 @click.option(
     "--stiffness",
@@ -73,12 +73,20 @@ from bearingload.cli.plot import check_plot, write_plot
     help="Also draw x, y, Q_max and stiffness over the cage angle into FILE.png "
     "(needs matplotlib: pip install 'bearingload[plot]').",
 )
+@click.option(
+    "--kurochkin-T",
+    "kurochkin_t",
+    type=float,
+    help="Kurochkin's dimensionless mode (1973): P = K = 1 and the gap from his parameter T, "
+    "eq. (1.13); rows give F0 = x0 and F0' = -y0, the summary the contact sequence, exit angle "
+    "and Fourier coefficients F0j'. Needs --balls (>= 5) only.",
+)
 @output_options
 @library_errors
 def sweep(
     bearing: str | None,
     balls: int | None,
-    load: float,
+    load: float | None,
     stiffness: str | None,
     clearance: Any,
     clearance_pick: str,
@@ -91,6 +99,7 @@ def sweep(
     exponent: float,
     steps: int,
     plot: str | None,
+    kurochkin_t: float | None,
     fmt: str,
     output: str | None,
 ) -> None:
@@ -115,7 +124,18 @@ def sweep(
       bearingload sweep 306 --load 300kgf --clearance C3 --plot sweep306.png
       # one csv row per cage angle for a spreadsheet
       bearingload sweep -z 12 -F 5kN -K 3.8e5 -G -20um --format csv -o sweep.csv
+      # Kurochkin's dimensionless statics: 7 balls, T = 0.567 (his Table 3)
+      bearingload sweep --balls 7 --kurochkin-T 0.567 --steps 21
     """
+    if kurochkin_t is not None:
+        given = dict(bearing=bearing, load=load, stiffness=stiffness, clearance=clearance,
+                     plot=plot, ball_diameter=ball_diameter, pitch_diameter=pitch_diameter,
+                     inner_conformity=inner_conformity, outer_conformity=outer_conformity,
+                     modulus=modulus, poisson=poisson)  # fmt: skip
+        _kurochkin(balls, kurochkin_t, steps, exponent, given, fmt, output)
+        return
+    if load is None:
+        raise click.UsageError("Missing option '--load' / '-F' (or give --kurochkin-T).")
     if plot is not None:
         check_plot(plot)
     z, k, g_r, m, context = resolve_case(
@@ -144,3 +164,28 @@ def sweep(
 
         write_plot(lambda: save_png(sweep_figure(result), plot), plot)
     emit(text, output)
+
+
+def _kurochkin(
+    balls: int | None,
+    t: float,
+    steps: int,
+    exponent: float,
+    given: dict[str, Any],
+    fmt: str,
+    output: str | None,
+) -> None:
+    """The dimensionless mode: refuse the options it does not use, then sweep and emit."""
+    extra = [k for k, v in given.items() if v is not None]
+    if extra:
+        name = extra[0].replace("_", "-")
+        option = "BEARING" if name == "bearing" else f"--{name}"
+        raise click.UsageError(f"{option} cannot be used with --kurochkin-T (P = K = 1).")
+    if balls is None:
+        raise click.UsageError("--kurochkin-T needs --balls.")
+    if exponent != 1.5:
+        raise click.UsageError("--kurochkin-T is for balls: --exponent must be 3/2.")
+    from bearingload.reports.kurochkin import kurochkin_report
+    from bearingload.studies.kurochkin import kurochkin_sweep
+
+    emit(kurochkin_report(kurochkin_sweep(balls, t, steps), fmt), output)

@@ -18,7 +18,7 @@ from bearingload.reports.render import Table, render, write_atomic
 def _registry() -> dict[str, Callable[[], Table]]:
     from bearingload.reports.tables import design_table, kuzmenko2010_306_table, table_k, table_kq
     from bearingload.studies.compliance import fit_table
-    from bearingload.studies.kurochkin_errata import differences_table
+    from bearingload.studies.kurochkin_errata import differences_table, example1_moment_table
     from bearingload.studies.stiffness import stiffness_table
 
     return {
@@ -33,6 +33,7 @@ def _registry() -> dict[str, Callable[[], Table]]:
         "k_methods_zero_clearance": lambda: design_table("k", 30, method="all"),
         # the papers of issue 8: Kurochkin 1973 cells that differ, seed 001 fits, seed 003 stiffness
         "kurochkin1973_differences": differences_table,
+        "kurochkin1973_example1": example1_moment_table,
         "compliance_fits": fit_table,
         "stiffness_seed003": stiffness_table,
     }

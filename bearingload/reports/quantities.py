@@ -94,6 +94,13 @@ QUANTITIES: dict[str, Quantity] = {
         Quantity("steps", "cage positions over one pitch", "", None),
         Quantity("ripple_per_cage_revolution", "ripple frequency", "1/rev", None),
         Quantity("compensating_clearance", "compensating clearance G_r", "mm", display=_UM),
+        # Kurochkin's dimensionless sweep (bearingload sweep --kurochkin-T), P = K = 1
+        Quantity("kurochkin_T", "generalised parameter T (Kurochkin eq. 1.13)", "-"),
+        Quantity("F0", "F0 = x0 (K/P)^(2/3)", "-"),
+        Quantity("F0_prime", "F0' = -y0 (K/P)^(2/3)", "-"),
+        Quantity("contact_sequence", "contact sequence (loaded balls over a pitch)", "", None),
+        Quantity("exit_angle_deg", "exit angle psi", "°"),
+        Quantity("F0j_prime", "Fourier sine coefficients F0j' (j = 1-5)", "-"),
         # contact and life (a catalogue bearing)
         Quantity("p_max_inner", "max contact pressure, inner", "MPa"),
         Quantity("p_max_outer", "max contact pressure, outer", "MPa"),

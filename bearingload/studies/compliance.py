@@ -23,6 +23,7 @@ from typing import Any
 import numpy as np
 
 from bearingload import validate
+from bearingload.errors import InputError
 from bearingload.models.equilibrium import solve
 from bearingload.reports.render import Column, Table
 
@@ -97,8 +98,11 @@ def compensating_clearances(
     Solves ``x(0) = x(180/z)`` for ``G_r`` exactly (seed 001: "δα = δS", the clearance that removes
     the kinematic excitation at z times the cage frequency). The difference is scanned in
     ``u = asinh(e/s)`` (``s = (F/K)^(1/m)``, ``e = G_r/2``), each sign change refined by brentq to
-    ``xtol = 1e-12 s``. There may be none, one or several; the paper means the smallest positive one
-    (several balls loaded, inside its range P̄/z >= 0.1).
+    ``xtol = 1e-12 s``. There may be none, one or several: each ball entering or leaving contact
+    at one of the two cage positions can flip the sign. The paper means a positive clearance with
+    several balls loaded inside its range P̄/z >= 0.1: the smallest positive root (z = 9,
+    F = 1000 N, K = 1e5 N/mm^1.5: 10.65 µm, P̄/z = 2.87; its eq. (9) would put it at 4.3 µm).
+    Roots closer than 1/SCAN_DENSITY in ``u`` may be missed.
 
     Parameters
     ----------
@@ -129,6 +133,10 @@ def compensating_clearances(
     from scipy.optimize import brentq
 
     z = int(validate.ball_count(balls))
+    if z < 3:
+        raise InputError(
+            "balls", "needs at least 3 balls (with fewer no cage angle but 0 is stable)"
+        )
     f = float(validate.positive("load", load, "N"))
     k = float(validate.positive("stiffness", stiffness, "N/mm^m"))
     m = float(validate.exponent(exponent))

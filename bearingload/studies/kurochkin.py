@@ -31,10 +31,12 @@ Definitions used here (Kurochkin 1973, §1):
 from __future__ import annotations
 
 import math
+from dataclasses import dataclass
 from typing import Any
 
 import numpy as np
 
+from bearingload import validate
 from bearingload.errors import InputError
 from bearingload.models.equilibrium import solve
 
@@ -131,7 +133,7 @@ def displacement(balls: int, T: Any, cage_angle: Any) -> tuple[Any, Any]:
         Ring displacement along the load and minus that across it, in units of (P/K)^(2/3). [-]
     """
     r = solve(balls, 1.0, 1.0, clearance_from_parameter(T, balls), cage_angle)
-    f0, f0p = r.x, -r.y
+    f0, f0p = r.x, 0.0 - r.y  # 0.0 - y: no negative zero at the symmetric positions
     if np.ndim(f0) == 0:
         return float(f0), float(f0p)
     return f0, f0p
@@ -142,12 +144,13 @@ def _approach(cage_angle: float, balls: int, T: float, ball: int) -> float:
     return float(r.ball_approaches()[ball])
 
 
-def exit_angle(balls: int, T: float) -> float:
+def exit_angle(balls: int, T: float) -> float | None:
     """Exit angle ``psi``: where a ball leaves contact as the cage turns forward. [°]
 
     Found by bracketing the sign change of each ball's approach over one pitch of cage angles
     and solving ``delta_i(phi_1) = 0`` with brentq (xtol 1e-13°) on the engine's solution.
-    ``psi = 360/n`` in the sequence 1-2-1 (Kurochkin 1973, eq. 1.15).
+    ``psi = 360/n`` in the sequence 1-2-1 (Kurochkin 1973, eq. 1.15); ``None`` when every ball
+    stays loaded at every cage angle (heavy preload).
 
     Parameters
     ----------
@@ -159,7 +162,7 @@ def exit_angle(balls: int, T: float) -> float:
     return _events(balls, float(T))[0]
 
 
-def _events(balls: int, T: float) -> tuple[float, list[float]]:
+def _events(balls: int, T: float) -> tuple[float | None, list[float]]:
     """(psi, sorted cage angles in [0, pitch] where a ball enters or leaves contact) [°]."""
     from scipy.optimize import brentq
 
@@ -176,8 +179,8 @@ def _events(balls: int, T: float) -> tuple[float, list[float]]:
         psi = (root + ball * pitch + 180.0) % 360.0 - 180.0
         if psi > 0:
             candidates.append(psi)
-    if not candidates:  # every ball keeps touching: T below the sequences with a free ball
-        raise InputError("T", f"no ball leaves contact over a pitch at T = {T!r}")
+    if not candidates:  # every ball stays loaded over the whole pitch
+        return None, []
     psi = min(candidates)
     first = psi % pitch
     events = sorted({round(first, 12), round(pitch - first, 12)} - {0.0, round(pitch, 12)})
@@ -307,3 +310,54 @@ def harmonic_null_parameter(balls: int, harmonic: int, lower: float, upper: floa
         return float(fourier_sine(balls, t, harmonic)[harmonic - 1])
 
     return float(brentq(f, lower, upper, xtol=1e-13))
+
+
+@dataclass(frozen=True)
+class KurochkinSweep:
+    """Kurochkin's dimensionless statics over one ball pitch (P = K = 1)."""
+
+    balls: int
+    T: float
+    clearance: float
+    """``G_r = 2e`` in units of (P/K)^(2/3). [-]"""
+    cage_angle: np.ndarray
+    """[°]"""
+    F0: np.ndarray
+    F0_prime: np.ndarray
+    contact_sequence: str
+    exit_angle: float | None
+    """[°]; None when every ball stays loaded"""
+    fourier: np.ndarray
+    """F0j', j = 1..5. [-]"""
+
+
+def kurochkin_sweep(balls: int, T: float, steps: int = 37) -> KurochkinSweep:
+    """F0, F0' at ``steps`` cage angles over one pitch (both ends), with ψ, sequence and F0j'.
+
+    Parameters
+    ----------
+    balls : int
+        Number of balls ``n`` >= 5. [-]
+    T : float
+        Generalised parameter (Kurochkin 1973, eq. 1.13). [-]
+    steps : int
+        Cage positions from 0 to 360/n, both included, >= 2. [-]
+    """
+    z = _balls(balls)
+    t = float(validate.finite("T", T))
+    n = int(steps)
+    if n != steps or n < 2 or n > 1_000_000:
+        raise InputError("steps", f"must be an integer from 2 to 1000000 (got {steps!r})")
+    angles = np.linspace(0.0, 360.0 / z, n)
+    f0, f0p = displacement(z, t, angles)
+    return KurochkinSweep(
+        balls=z,
+        T=t,
+        clearance=float(clearance_from_parameter(t, z)),
+        cage_angle=angles,
+        F0=np.asarray(f0),
+        F0_prime=np.asarray(f0p),
+        contact_sequence=contact_sequence(z, t),
+        exit_angle=exit_angle(z, t),
+        fourier=np.asarray(fourier_sine(z, t, 5)),
+    )

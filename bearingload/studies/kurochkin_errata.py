@@ -182,7 +182,8 @@ def likely_cause(cell: dict[str, str], printed: float, computed: float) -> str:
         return "last digit off by one: rounding or accuracy of the 1973 computation"
     if fourier:
         return "error of the 1973 Fourier integration (larger than the printed rounding)"
-    return _digit_cause(cell, computed, last_digit=True) or "error of the 1973 computation"
+    generic = "misprint or error of the 1973 computation"
+    return _digit_cause(cell, computed, last_digit=True) or generic
 
 
 def kurochkin1973_rows() -> list[dict[str, Any]]:
@@ -244,5 +245,52 @@ def differences_table() -> Table:
             "printed rounding. Units: T, F0'·10³, F0j'·10³ [-]; ψ [°]; e [µm] (gap per side).",
             "Exact: the ring equilibrium with P = K = 1 and clearance 2e from eq. (1.13); F0j' by "
             "Gauss-Legendre quadrature over each smooth piece of the half pitch (error < 1e-12).",
+        ),
+    )
+
+
+#: Example 1 clearances (gap per side e) whose moment the committed table shows. [µm]
+EXAMPLE1_GAPS_UM = (3.0, 4.0, 5.0, 5.5)
+
+
+def example1_moment_table(steps: int = 15) -> Table:
+    """Committed table ``kurochkin1973_example1``: M(φ1) = w P y0 over one pitch (his Fig. 2).
+
+    Bearing A640018 (n = 7, D = 10.731 mm, d = 3.969 mm, K = 0.45 kgf/µm^1.5, P = 2.5 kgf),
+    rotating inner ring (w = D/(2(D + d))), gaps e = 3, 4, 5, 5.5 µm and the three gaps that
+    null the first, second and third harmonic of M (exact). M in N·mm.
+    """
+    load, stiffness = example1_load_stiffness()
+    d_in, d_b = EXAMPLE1["D"], EXAMPLE1["d"]
+    angles = np.linspace(0.0, 360.0 / 7, steps)
+    nulls = [
+        float(ku.clearance_from_parameter(t, 7, load, stiffness)) * 500.0 for t in example1_nulls()
+    ]
+    gaps = [*EXAMPLE1_GAPS_UM, *nulls]
+    keys = [f"M_e{i}" for i in range(len(gaps))]
+    rows = []
+    for a in angles:
+        row: dict[str, Any] = {"cage_angle_deg": float(a)}
+        for key, e_um in zip(keys, gaps, strict=True):
+            m = ku.conservative_moment(7, load, stiffness, 2 * e_um * 1e-3, a, d_in, d_b, "inner")
+            row[key] = 0.0 + float(m)
+        rows.append(row)
+    labels = [f"M, e = {e:g} µm" for e in EXAMPLE1_GAPS_UM]
+    labels += [f"M, e = {e:.4f} µm (no harmonic {j})" for j, e in enumerate(nulls, start=1)]
+    t_values = ", ".join(
+        f"{e:g} µm: {ku.generalised_parameter(2 * e * 1e-3, load, stiffness, 7):.4f}"
+        for e in EXAMPLE1_GAPS_UM
+    )
+    return Table(
+        title="Kurochkin (1973), Example 1: conservative moment M = w P y0 over one pitch, "
+        "bearing A640018, rotating inner ring",
+        columns=[Column("cage_angle_deg", "cage angle", "°", 5)]
+        + [Column(k, lab, "N·mm", 5) for k, lab in zip(keys, labels, strict=True)],
+        rows=rows,
+        notes=(
+            f"n = 7, D = 10.731 mm, d = 3.969 mm, K = 0.45 kgf/µm^1.5, P = 2.5 kgf; "
+            f"w = D/(2(D + d)) = {ku.moment_arm(d_in, d_b):.5f}. T (eq. 1.13) at e = {t_values}.",
+            "The last three columns use the exact gaps at which F01', F02', F03' vanish; the paper "
+            "prints 4.164, 4.476, 4.611 µm, read from its Table 3 (kurochkin1973_differences).",
         ),
     )
