@@ -44,6 +44,10 @@ COMMANDS = {
     "table_k_all": "table k --method all --z-max 10",
     "catalog_bore_30": "catalog --bore 30",
     "catalog_show_306": "catalog show 306",
+    "catalog_show_6208_skf": "catalog show 6208 --maker SKF",
+    "solve_6205_overload": "solve 6205 -F 500kN",
+    "solve_61806": "solve 61806 -F 500N --show-geometry",
+    "solve_nu206": "solve NU206 -F 5kN --show-geometry",
     "fit_208": "fit examples/bearing208_kuzmenko2014.csv --load-unit kgf --base 200kgf:0.8mm "
     "--base 1000kgf:1.67mm --balls 9",
 }

@@ -129,7 +129,7 @@ def test_without_designation():
     ("kwargs", "parameter", "message"),
     [
         ({"designation": "9999"}, "bearing", "cannot read '9999'"),
-        ({"designation": "6006"}, "bearing", "ball set is unknown"),
+        ({"designation": "6302"}, "bearing", "ball set is unknown"),
         ({"balls": 8, "stiffness": 1e5, "clearance": "C3"}, "clearance", "resolved by the bore"),
         ({"balls": 8}, "stiffness", "give the ball stiffness"),
         ({"stiffness": 1e5}, "balls", "number of balls"),

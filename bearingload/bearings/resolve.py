@@ -8,7 +8,12 @@ load ratings, and for every value the place it came from.
 
 Rules
 -----
-* Geometry: catalogue row (:func:`bearingload.bearings.catalog.lookup`), each value replaceable.
+* Geometry: catalogue row (:func:`bearingload.bearings.catalog.lookup`), each value replaceable;
+  ``maker`` picks another maker's ball set (default NSK, see :mod:`bearingload.bearings.catalog`).
+  A cylindrical roller designation (``NU206``) resolves through
+  :mod:`bearingload.bearings.rollers`: Palmgren line-contact stiffness [N/mm^(10/9)], exponent
+  10/9, and a clearance given as a length (zero by default; the roller clearance classes are not
+  in the catalogue).
   Without a designation, ``balls`` is needed and either ``stiffness`` or the ball geometry
   (``ball_diameter`` and ``pitch_diameter``; conformities default to 0.52 / 0.53).
 * Stiffness: exact Hertz (:func:`bearingload.contact.hertz.ball_stiffness`) from the geometry, E and nu
@@ -95,6 +100,12 @@ class ResolvedBearing:
         ``min``, ``mean`` or ``max`` for a class.
     C, C0 : float or None
         Basic dynamic and static load ratings. [N]
+    kind : str
+        ``"ball"`` or ``"roller"`` (cylindrical roller bearing).
+    exponent : float
+        Load-deflection exponent m of Q = K delta^m: 1.5 balls, 10/9 rollers. [-]
+    roller_length : float or None
+        Effective roller length L_we of a roller bearing. [mm]
     provenance : tuple of Provenance
         Every value above with its source, in display order.
     sources : tuple of str
@@ -122,6 +133,9 @@ class ResolvedBearing:
     C0: float | None
     provenance: tuple[Provenance, ...]
     sources: tuple[str, ...]
+    kind: str = "ball"
+    exponent: float = 1.5
+    roller_length: float | None = None
 
     @property
     def has_geometry(self) -> bool:
@@ -174,6 +188,7 @@ def resolve_bearing(
     stiffness: float | None = None,
     clearance: str | float | ClearanceSpec | None = None,
     clearance_pick: str = "mean",
+    maker: str | None = None,
 ) -> ResolvedBearing:
     """Resolve a bearing for a calculation: geometry, K, G_r and the source of each.
 
@@ -197,6 +212,9 @@ def resolve_bearing(
         G_r as a length (float: [mm]; text with a unit) or a class, see :func:`parse_clearance`.
     clearance_pick : {"mean", "min", "max"}
         Where in a class range to take G_r.
+    maker : str, optional
+        Whose ball set (``NSK`` default, ``NTN``, ``SKF``, ``GMN``, ``GOST`` ...), see
+        :func:`bearingload.bearings.catalog.variant`.
 
     Returns
     -------
@@ -222,6 +240,9 @@ def resolve_bearing(
     if clearance_pick not in PICKS:
         raise InputError("pick", f"unknown pick {clearance_pick!r}; allowed: {', '.join(PICKS)}")
     spec = clearance if isinstance(clearance, ClearanceSpec) else parse_clearance(clearance)
+    if designation is not None and _is_roller(designation):
+        return _roller(designation, maker, balls, ball_diameter, pitch_diameter, modulus,
+                       poisson, stiffness, spec)  # fmt: skip
     given = {
         "balls": balls,
         "ball_diameter": ball_diameter,
@@ -239,8 +260,10 @@ def resolve_bearing(
     hand_bore: float | None = None
     if designation is not None:
         try:
-            geom = lookup(designation, **given)  # type: ignore[arg-type]
-        except InputError:
+            geom = lookup(designation, maker=maker, **given)  # type: ignore[arg-type]
+        except InputError as exc:
+            if exc.parameter == "maker":
+                raise
             # not in the catalogue (or no ball set there): with the ball set given by hand, the
             # designation still gives the bore, which resolves a clearance class
             if balls is None or ball_diameter is None or pitch_diameter is None:
@@ -286,14 +309,16 @@ def resolve_bearing(
             return "given" if given.get(field) is not None else default
         return "given (override)" if field in overridden else default
 
-    pitch_src = "catalogue"
+    set_src = "catalogue"
+    if geom is not None and geom.standard == "ISO" and geom.maker is not None:
+        set_src = f"catalogue: {geom.maker} ball set, {geom.method}"
+
+    pitch_src = set_src
     if geom is not None and "pitch_diameter" not in overridden:
         pitch_src = "(d + D)/2" if math.isclose(dm or 0.0, (geom.d + geom.D) / 2) else pitch_src
     prov += [
-        Provenance("balls", "balls z", z, "", src("balls", "catalogue")),
-        Provenance(
-            "ball_diameter", "ball diameter D_w", dw, "mm", src("ball_diameter", "catalogue")
-        ),
+        Provenance("balls", "balls z", z, "", src("balls", set_src)),
+        Provenance("ball_diameter", "ball diameter D_w", dw, "mm", src("ball_diameter", set_src)),
         Provenance(
             "pitch_diameter", "pitch diameter d_m", dm, "mm", src("pitch_diameter", pitch_src)
         ),
@@ -357,8 +382,8 @@ def resolve_bearing(
     c0 = geom.C0 if geom is not None else None
     if geom is not None:
         prov += [
-            Provenance("C", "dynamic load rating C", c, "N", "catalogue" if c else "unknown"),
-            Provenance("C0", "static load rating C0", c0, "N", "catalogue" if c0 else "unknown"),
+            Provenance("C", "dynamic load rating C", c, "N", _rating_source(geom, c)),
+            Provenance("C0", "static load rating C0", c0, "N", _rating_source(geom, c0)),
         ]
     return ResolvedBearing(
         designation=designation,
@@ -434,3 +459,49 @@ def _clearance_row_source(bore: float | None) -> str:
         if bore is not None and row.bore_over < bore <= row.bore_incl:
             return f"clearance table (bore over {row.bore_over:g} incl {row.bore_incl:g} mm): {row.source}"
     return "clearance table"  # pragma: no cover - clearance_range raised before
+
+
+def _roller(
+    designation: str,
+    maker: str | None,
+    rollers: int | None,
+    roller_diameter: float | None,
+    pitch_diameter: float | None,
+    modulus: float | None,
+    poisson: float | None,
+    stiffness: float | None,
+    spec: ClearanceSpec | None,
+) -> ResolvedBearing:
+    """A cylindrical roller bearing, see :func:`bearingload.bearings.resolve_roller.resolve_roller`."""
+    from bearingload.bearings.resolve_roller import resolve_roller
+
+    if maker is not None:
+        raise InputError("maker", "the roller bearings have one design each (SKF ECP)")
+    return resolve_roller(
+        designation,
+        rollers=rollers,
+        roller_diameter=roller_diameter,
+        pitch_diameter=pitch_diameter,
+        modulus=modulus,
+        poisson=poisson,
+        stiffness=stiffness,
+        clearance=spec,
+    )
+
+
+def _is_roller(designation: str) -> bool:
+    """True for a cylindrical roller designation (NU206 ...); unreadable text counts as not."""
+    from bearingload.bearings.designation import parse
+
+    try:
+        return parse(designation).kind == "roller"
+    except InputError:
+        return False
+
+
+def _rating_source(geom: BearingGeometry, value: float | None) -> str:
+    if not value:
+        return "unknown"
+    if geom.standard == "ISO" and geom.maker is not None:
+        return f"catalogue: {geom.maker}"
+    return "catalogue"

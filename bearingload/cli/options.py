@@ -155,6 +155,8 @@ OPTION_NAMES = {
     "ball_diameter": "--ball-diameter",
     "pitch_diameter": "--pitch-diameter",
     "standard": "--standard",
+    "maker": "--maker",
+    "roller-length": "--roller-length",
 }
 
 
@@ -234,3 +236,32 @@ def method_option(help_text: str) -> Callable[[Callable[..., Any]], Callable[...
         show_default=True,
         help=help_text,
     )
+
+
+def maker_option(func: Callable[..., Any]) -> Callable[..., Any]:
+    """``--maker``: whose ball set a catalogue designation uses."""
+    return click.option(
+        "--maker",
+        help="Whose ball set the designation uses where makers differ: NSK (default), NTN, SKF, "
+        "GMN, GOST, or a published test-rig set (CWRU, PRONOSTIA, PADERBORN); "
+        "'bearingload catalog show X' lists the makers of X.",
+    )(func)
+
+
+def quiet_option(func: Callable[..., Any]) -> Callable[..., Any]:
+    """``--quiet``: no ``Warning:`` lines on the terminal (JSON keeps its ``warnings``)."""
+    return click.option(
+        "--quiet",
+        "-q",
+        is_flag=True,
+        help="Do not print warnings (static safety, contact pressure, ...) on stderr; "
+        "JSON output keeps them under 'warnings'.",
+    )(func)
+
+
+def print_warnings(warnings: list[str], quiet: bool) -> None:
+    """Print each warning as one ``Warning: ...`` line on stderr, unless ``quiet``."""
+    if quiet:
+        return
+    for text in warnings:
+        click.echo(f"Warning: {text}", err=True)

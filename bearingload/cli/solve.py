@@ -16,8 +16,11 @@ from bearingload.cli.options import (
     emit,
     exponent_option,
     library_errors,
+    maker_option,
     method_option,
     output_options,
+    print_warnings,
+    quiet_option,
     stiffness_value,
     units_help,
 )
@@ -91,6 +94,8 @@ from bearingload.cli.plot import ball_loads_plot_option
     help="With a BEARING: also print the geometry used and the source of every value "
     "(JSON always carries it).",
 )
+@maker_option
+@quiet_option
 @output_options
 @ball_loads_plot_option
 @library_errors
@@ -113,6 +118,8 @@ def solve(
     method: str,
     per_ball: bool,
     show_geometry: bool,
+    maker: str | None,
+    quiet: bool,
     fmt: str,
     output: str | None,
     **combined: Any,
@@ -123,10 +130,17 @@ def solve(
     The inner ring moves until the ball forces balance the radial load (Kurochkin 1973,
     Kuzmenko 2010). Ball 1 sits at the cage angle; balls are numbered counter-clockwise.
 
-    BEARING is a catalogue designation (306, 6306-2RS/C3, 75-313; see 'bearingload catalog'):
-    its ball set gives the exact Hertz ball stiffness, its bore resolves a clearance class, its
-    rating C gives the life (C/F_r)^3; --show-geometry prints the source of every value.
-    Without a BEARING give --balls and --stiffness (or the ball geometry).
+    BEARING is a catalogue designation (306, 6306-2RS/C3, 75-313, 61806, 16005; see 'bearingload
+    catalog'): its ball set (NSK's unless --maker names another) gives the exact Hertz ball
+    stiffness, its bore resolves a clearance class, its rating C gives the life (C/P)^p;
+    --show-geometry prints the source of every value. A cylindrical roller bearing (NU206,
+    N 306) is solved with line contact (m = 10/9, Palmgren). Without a BEARING give --balls and
+    --stiffness (or the ball geometry).
+
+    A case outside what the bearing supports (s0 = C0/P0 below 1, F_r above C0, contact pressure
+    above 4200 MPa for balls or 4000 MPa for rollers as in ISO 76, one element carrying the load,
+    clearance beyond the ISO 5753-1 classes) prints 'Warning: ...' lines on stderr; the result is
+    printed and the exit status is 0. JSON carries them as 'warnings'.
 
     With --axial-load, --moment, --misalignment, --dynamic-rating or --rotating the inner ring of
     a deep-groove ball bearing moves radially, axially and tilts (ISO/TS 16281): every ball gets
@@ -153,9 +167,13 @@ def solve(
       bearingload solve 6205 -F 1.4kN --axial-load 700N -G C3
       # a hand-given ball set under a pure axial load, its C_r, the outer ring rotating
       bearingload solve -z 7 --ball-diameter 11.5 --pitch-diameter 43.5 -F 0 -A 1kN -G 10um -C 23.4kN --rotating outer
+      # SKF's ball set of a 6208 instead of NSK's; a cylindrical roller bearing
+      bearingload solve 6208 -F 5kN --maker SKF
+      bearingload solve NU206 --load 5kN
     """
     from bearingload.models.registry import list_methods
     from bearingload.reports.solve import solve_report
+    from bearingload.studies.loaded_bearing import collect_warnings
 
     if not revolutions == revolutions:  # NaN passes click's range check
         raise click.UsageError(
@@ -165,7 +183,7 @@ def solve(
     methods = list_methods() if method == "all" else [method]
     geometry = {"balls": balls, "ball_diameter": ball_diameter, "pitch_diameter": pitch_diameter,
                 "f_i": inner_conformity, "f_o": outer_conformity, "modulus": modulus,
-                "poisson": poisson}  # fmt: skip
+                "poisson": poisson, "maker": maker}  # fmt: skip
     if wants_combined(combined):
         from bearingload.cli.combined_options import combined_text
 
@@ -187,6 +205,7 @@ def solve(
 
         cases = solve_bearing(bearings, load, angle, methods, revolutions)
     emit(solve_report(cases, fmt, per_ball=per_ball, show_geometry=show_geometry), output)
+    print_warnings(collect_warnings(cases), quiet)
 
 
 def _by_hand(
@@ -223,11 +242,6 @@ def _bearings(
     """The resolved bearing, or the same bearing at the min, mean and max of its class."""
     from bearingload.bearings.resolve import resolve_bearing
 
-    if exponent != 1.5:
-        raise click.UsageError(
-            "Invalid value for '--exponent': a ball bearing (Hertz point contact) has m = 1.5; "
-            "other exponents need --balls and --stiffness without a BEARING"
-        )
     resolved = resolve_bearing(
         bearing,
         stiffness=k_given,
@@ -235,6 +249,16 @@ def _bearings(
         clearance_pick="mean" if clearance_pick == "range" else clearance_pick,
         **geometry,
     )
+    if exponent not in (1.5, resolved.exponent):  # 1.5, the option's default, also for rollers
+        contact = (
+            "a roller bearing (line contact) has m = 10/9"
+            if resolved.kind == "roller"
+            else "a ball bearing (Hertz point contact) has m = 1.5"
+        )
+        raise click.UsageError(
+            f"Invalid value for '--exponent': {contact}; "
+            "other exponents need --balls and --stiffness without a BEARING"
+        )
     if clearance_pick == "range" and resolved.clearance_range is None:
         raise click.UsageError(
             "Invalid value for '--clearance-pick': 'range' needs a clearance class "

@@ -90,6 +90,7 @@ QUANTITIES: dict[str, Quantity] = {
         Quantity("iterations", "solver iterations", "", None),
         Quantity("relative_error", "Q_max/Q_max,exact - 1", "-", 3, display=("%", 100.0)),
         Quantity("valid", "inside the model's range", "", None),
+        Quantity("warnings", "warnings (bearingload.bearings.checks)", "", None),
         # a cage sweep (bearingload sweep)
         Quantity("steps", "cage positions over one pitch", "", None),
         Quantity("ripple_per_cage_revolution", "ripple frequency", "1/rev", None),
@@ -104,8 +105,8 @@ QUANTITIES: dict[str, Quantity] = {
         # contact and life (a catalogue bearing)
         Quantity("p_max_inner", "max contact pressure, inner", "MPa"),
         Quantity("p_max_outer", "max contact pressure, outer", "MPa"),
-        Quantity("rating_life", "basic rating life L10 = (C/P)^3", "10^6 rev"),
-        Quantity("allowable_load", "allowable load C/L^(1/3)", "N", also=("kgf", 1 / KGF)),
+        Quantity("rating_life", "basic rating life L10 = (C/P)^p", "10^6 rev"),
+        Quantity("allowable_load", "allowable load C/L^(1/p)", "N", also=("kgf", 1 / KGF)),
         Quantity("revolutions", "life L of the allowable load", "10^6 rev"),
         # combined load of a deep-groove ball bearing (models.combined, bearings.iso16281)
         Quantity("axial_load", "axial load F_a", "N", also=("kgf", 1 / KGF)),
