@@ -17,12 +17,7 @@ from __future__ import annotations
 import math
 import re
 
-#: Standard gravity, exact by definition (CGPM 1901): 1 kgf = 9.80665 N.
-KGF = 9.80665
-#: 1 lbf = 0.45359237 kg x g_n (international avoirdupois pound, 1959). [N]
-LBF = 0.45359237 * KGF
-#: 1 in = 25.4 mm exactly (international inch, 1959).
-INCH = 25.4
+from bearingload.constants import INCH, KGF, LBF  # noqa: F401  (re-exported: units.KGF)
 
 #: Accepted unit suffixes per kind, as factors to the internal unit.
 UNITS: dict[str, dict[str, float]] = {

@@ -34,6 +34,7 @@ import functools
 import re
 from dataclasses import dataclass
 
+from bearingload.constants import CLEARANCE_PICKS
 from bearingload.errors import InputError
 from bearingload.units import parse_quantity
 
@@ -45,7 +46,7 @@ CLASSES: tuple[str, ...] = ("C2", "CN", "C3", "C4", "C5")
 GOST_GROUPS: dict[str, str] = {"6": "C2", "7": "C3", "8": "C4", "9": "C5"}
 
 #: How a class may be picked from its range.
-PICKS: tuple[str, ...] = ("min", "mean", "max")
+PICKS: tuple[str, ...] = CLEARANCE_PICKS
 
 _NORMAL = {"N", "CN", "C0", "0", "NORMAL", "NORM", "НОРМАЛЬНАЯ", "НОРМ", "M", "М"}
 _GROUP_WORD = re.compile(r"^(?:G|GR|GROUP|ГР|ГРУППА)\s*\.?\s*(\S+)$")

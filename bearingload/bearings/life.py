@@ -26,13 +26,9 @@ from typing import Any
 import numpy as np
 from numpy.typing import ArrayLike
 
+from bearingload.constants import BALL_LIFE_EXPONENT, ROLLER_LIFE_EXPONENT  # noqa: E402,F401
 from bearingload.errors import InputError
 from bearingload.validate import finite_positive
-
-#: Life exponent p of ball bearings (ISO 281). [-]
-BALL_LIFE_EXPONENT = 3.0
-#: Life exponent p of roller bearings (ISO 281). [-]
-ROLLER_LIFE_EXPONENT = 10.0 / 3.0
 
 
 def _out(x: np.ndarray) -> Any:

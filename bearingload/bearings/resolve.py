@@ -45,13 +45,13 @@ from bearingload.bearings.clearance import (
     clearance_range,
     parse_clearance,
 )
+from bearingload.constants import STEEL_MODULUS, STEEL_POISSON
 from bearingload.errors import InputError
 from bearingload.validate import finite_positive
 
-#: Young's modulus used when none is given: bearing steel, NSK 208 000 MPa. [MPa]
-DEFAULT_MODULUS = 208_000.0
-#: Poisson's ratio used when none is given. [-]
-DEFAULT_POISSON = 0.3
+#: Young's modulus and Poisson's ratio used when none is given (bearingload.constants). [MPa], [-]
+DEFAULT_MODULUS = STEEL_MODULUS
+DEFAULT_POISSON = STEEL_POISSON
 
 
 @dataclass(frozen=True)

@@ -43,6 +43,7 @@ import numpy as np
 from numpy.typing import ArrayLike
 
 from bearingload.bearings.designation import Designation, parse
+from bearingload.constants import STEEL_MODULUS
 from bearingload.errors import InputError
 
 #: L_we/D_w of the derived roller counts: mean of the published NU204, NU205, NU206. [-]
@@ -235,7 +236,7 @@ def line_contact_pressure(
     length: ArrayLike,
     roller_diameter: float,
     pitch_diameter: float,
-    E: float = 208_000.0,
+    E: float = STEEL_MODULUS,
     nu: float = 0.3,
 ) -> tuple[Any, Any]:
     """Maximum Hertz pressure of a roller's inner and outer line contacts. [MPa]

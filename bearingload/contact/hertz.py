@@ -49,17 +49,17 @@ from typing import Any, NamedTuple
 import numpy as np
 from numpy.typing import ArrayLike
 
+from bearingload.constants import BALL_EXPONENT, ROLLER_EXPONENT, STEEL_MODULUS, STEEL_POISSON
 from bearingload.errors import ConvergenceError, InputError
 
-#: Young's modulus of bearing steel, NSK catalogue: 208 000 MPa {21 200 kgf/mm^2}. [MPa]
-E_STEEL = 208_000.0
-#: Poisson's ratio of bearing steel. [-]
-NU_STEEL = 0.3
+#: Young's modulus and Poisson's ratio of bearing steel (bearingload.constants). [MPa], [-]
+E_STEEL = STEEL_MODULUS
+NU_STEEL = STEEL_POISSON
 #: Palmgren's coefficient of the roller-raceway approach delta = c Q^0.9 / l^0.8 (steel, mm, N).
 PALMGREN_LINE_COEFFICIENT = 3.84e-5
 #: Load-deflection exponents Q = K delta^n: point contact (balls) and line contact (rollers).
-POINT_EXPONENT = 1.5
-LINE_EXPONENT = 10.0 / 9.0
+POINT_EXPONENT = BALL_EXPONENT
+LINE_EXPONENT = ROLLER_EXPONENT
 #: Beyond this ratio of curvature sums the contact is a line contact for every practical
 #: purpose (kappa ~ 1e7); the point-contact solution is refused rather than returned inexact.
 MAX_CURVATURE_RATIO = 1e15

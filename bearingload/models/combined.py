@@ -62,6 +62,7 @@ from typing import Any
 import numpy as np
 
 from bearingload import validate
+from bearingload.constants import STEEL_MODULUS
 from bearingload.errors import ConvergenceError, InputError
 
 #: Relative equilibrium residual every case is driven below (or to rounding). [-]
@@ -222,7 +223,7 @@ def ball_stiffness_at(
     pitch_diameter: Any,
     f_i: Any,
     f_o: Any,
-    modulus: Any = 208_000.0,
+    modulus: Any = STEEL_MODULUS,
     poisson: Any = 0.3,
 ) -> Any:
     """Hertz stiffness of a ball (inner and outer contact in series) at a contact angle. [N/mm^1.5]
@@ -334,7 +335,7 @@ def solve_combined(
     cage_angle: Any = 0.0,
     moment: Any = None,
     misalignment: Any = None,
-    modulus: Any = 208_000.0,
+    modulus: Any = STEEL_MODULUS,
     poisson: Any = 0.3,
     stiffness: Any = None,
     tilt_radius: Any = None,

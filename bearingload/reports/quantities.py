@@ -14,7 +14,7 @@ from __future__ import annotations
 from collections.abc import Iterable
 from dataclasses import dataclass
 
-KGF = 9.80665  # N; the same constant as bearingload.units.KGF (kept here to import nothing)
+from bearingload.constants import KGF
 
 
 @dataclass(frozen=True)
