@@ -34,10 +34,12 @@ lint: $(STAMP)
 tables: $(STAMP)
 	$(BIN)/python -m bearingload.reports.committed tables
 
-## make bench: vectorised solver against a per-case scipy brentq loop, same run
+## make bench: vectorised solver against a per-case scipy brentq loop, one call against scipy root
+## (hybr) and the Hertz contact against brentq on the ellipticity equation: ratios in one run
 bench: $(STAMP)
 	$(BIN)/python -m compileall -q bearingload
 	$(BIN)/python benchmarks/bench_solver.py
+	$(BIN)/python benchmarks/bench_scalar.py
 	$(BIN)/python benchmarks/bench_methods.py
 
 clean:
