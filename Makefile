@@ -6,13 +6,13 @@ VENV := .venv
 BIN := $(VENV)/bin
 STAMP := $(VENV)/.installed
 
-.PHONY: run test lint tables bench clean
+.PHONY: run test lint tables golden bench clean
 
 $(STAMP): pyproject.toml
 	$(PY) -m venv $(VENV)
 	$(BIN)/python -m pip install --quiet --upgrade pip
-	$(BIN)/python -m pip install --quiet -e '.[test]' --config-settings editable_mode=compat \
-		|| $(BIN)/python -m pip install --quiet -e '.[test]'  # a setuptools without compat mode
+	$(BIN)/python -m pip install --quiet -e '.[test,plot]' --config-settings editable_mode=compat \
+		|| $(BIN)/python -m pip install --quiet -e '.[test,plot]'  # a setuptools without compat mode
 	$(BIN)/python -m compileall -q bearingload
 	touch $(STAMP)
 
@@ -34,13 +34,20 @@ lint: $(STAMP)
 tables: $(STAMP)
 	$(BIN)/python -m bearingload.reports.committed tables
 
+## make golden: rewrite the stored CLI outputs (tests/golden/) and the README's console examples
+golden: $(STAMP)
+	$(BIN)/python -m tests.golden_outputs
+
 ## make bench: vectorised solver against a per-case scipy brentq loop, one call against scipy root
-## (hybr) and the Hertz contact against brentq on the ellipticity equation: ratios in one run
+## (hybr) and the Hertz contact against brentq on the ellipticity equation, ring_forces against a
+## per-evaluation Python loop: ratios, each in one run
 bench: $(STAMP)
 	$(BIN)/python -m compileall -q bearingload
 	$(BIN)/python benchmarks/bench_solver.py
 	$(BIN)/python benchmarks/bench_scalar.py
 	$(BIN)/python benchmarks/bench_methods.py
+	$(BIN)/python benchmarks/bench_forces.py
+	$(BIN)/python benchmarks/bench_combined.py
 
 clean:
 	rm -rf $(VENV) build *.egg-info .pytest_cache .mypy_cache .ruff_cache .hypothesis

@@ -288,10 +288,13 @@ def parse_clearance(text: str | float | None) -> ClearanceSpec | None:
             length=parse_quantity(text, "length", parameter="clearance"), text=text
         )
     except InputError as exc:
+        message = str(exc).split(": ", 1)[-1]
+        if "implausible" in message:
+            group = f" (the GOST clearance group {text} is written G{text})" if text in ("6", "7", "8", "9") else ""
+            raise InputError("clearance", message + group) from None
         raise InputError(
             "clearance",
-            f"{str(exc).split(': ', 1)[-1]}; or a clearance class C2, CN, C3, C4, C5 "
-            "(GOST groups G6, G7, G8, G9)",
+            f"{message}; or a clearance class C2, CN, C3, C4, C5 (GOST groups G6, G7, G8, G9)",
         ) from None
 
 

@@ -128,6 +128,8 @@ OPTION_NAMES = {
     "clearance": "--clearance",
     "cage_angle": "--cage-angle",
     "exponent": "--exponent",
+    "steps": "--steps",
+    "T": "--kurochkin-T",
     # bearing, geometry and life options (bearingload.bearings.resolve, bearingload.bearings.life)
     "bearing": "BEARING",
     "ball-diameter": "--ball-diameter",
@@ -144,6 +146,14 @@ OPTION_NAMES = {
     "bore": "--clearance",
     "revolutions": "--revolutions",
     "series": "--series",
+    # combined load (bearingload.models.combined, bearingload.bearings.iso16281)
+    "radial_load": "--load",
+    "axial_load": "--axial-load",
+    "moment": "--moment",
+    "misalignment": "--misalignment",
+    "dynamic_rating": "--dynamic-rating",
+    "ball_diameter": "--ball-diameter",
+    "pitch_diameter": "--pitch-diameter",
     "standard": "--standard",
 }
 
@@ -163,6 +173,11 @@ def library_errors(func: Callable[..., Any]) -> Callable[..., Any]:
             raise click.ClickException(str(exc)) from exc
 
     return wrapper
+
+
+def cage_angle_deg(cage_angle: float | str, balls: int) -> float:
+    """The ``--cage-angle`` value in degrees; ``"half"`` is half a pitch, 180/z."""
+    return 180.0 / balls if cage_angle == "half" else float(cage_angle)
 
 
 def cage_angle_option(func: Callable[..., Any]) -> Callable[..., Any]:

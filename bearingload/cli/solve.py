@@ -7,9 +7,11 @@ from typing import Any
 import click
 
 from bearingload.cli.bearing_options import CLEARANCE_HELP, Clearance, geometry_options
+from bearingload.cli.combined_options import combined_options, wants_combined
 from bearingload.cli.options import (
     CONTEXT,
     Quantity,
+    cage_angle_deg,
     cage_angle_option,
     emit,
     exponent_option,
@@ -19,6 +21,7 @@ from bearingload.cli.options import (
     stiffness_value,
     units_help,
 )
+from bearingload.cli.plot import ball_loads_plot_option
 
 
 @click.command(context_settings=CONTEXT)
@@ -34,7 +37,8 @@ from bearingload.cli.options import (
     "-F",
     type=Quantity("force"),
     required=True,
-    help=f"Radial load F_r > 0. Units: {units_help('force')} (bare number: N).",
+    help=f"Radial load F_r > 0 (>= 0 with an axial load or a moment). Units: "
+    f"{units_help('force')} (bare number: N).",
 )
 @click.option(
     "--stiffness",
@@ -68,6 +72,7 @@ from bearingload.cli.options import (
     help="Life L [revolutions] for the allowable load C/(L/10^6)^(1/3). The default is the "
     "worked value of Kuzmenko (2010) §3.2 (36e6 rev, e.g. 1000 h at 600 rpm); set your own.",
 )
+@combined_options
 @cage_angle_option
 @exponent_option
 @method_option(
@@ -75,7 +80,19 @@ from bearingload.cli.options import (
     "stribeck: 4.37 F_r/z; palmgren: 5 F_r/z (these two ignore stiffness, clearance, cage "
     "angle and exponent); all: every method side by side with its error against exact."
 )
+@click.option(
+    "--per-ball",
+    is_flag=True,
+    help="csv: one row per ball (angle, approach, load) instead of one row per case.",
+)
+@click.option(
+    "--show-geometry",
+    is_flag=True,
+    help="With a BEARING: also print the geometry used and the source of every value "
+    "(JSON always carries it).",
+)
 @output_options
+@ball_loads_plot_option
 @library_errors
 def solve(
     bearing: str | None,
@@ -94,61 +111,117 @@ def solve(
     cage_angle: Any,
     exponent: float,
     method: str,
+    per_ball: bool,
+    show_geometry: bool,
     fmt: str,
     output: str | None,
+    **combined: Any,
 ) -> None:
-    """Solve the exact ring equilibrium of one bearing: every ball's load and a summary.
+    """Solve the ring equilibrium of one bearing: the heaviest ball load, how many balls carry,
+    the load zone, the ring displacement and stiffness, and every ball's load.
 
     The inner ring moves until the ball forces balance the radial load (Kurochkin 1973,
     Kuzmenko 2010). Ball 1 sits at the cage angle; balls are numbered counter-clockwise.
 
     BEARING is a catalogue designation (306, 6306-2RS/C3, 75-313; see 'bearingload catalog'):
     its ball set gives the exact Hertz ball stiffness, its bore resolves a clearance class, its
-    rating C gives the life (C/F_r)^3. The report names the source of every value. Without a
-    BEARING give --balls and --stiffness (or the ball geometry).
+    rating C gives the life (C/F_r)^3; --show-geometry prints the source of every value.
+    Without a BEARING give --balls and --stiffness (or the ball geometry).
+
+    With --axial-load, --moment, --misalignment, --dynamic-rating or --rotating the inner ring of
+    a deep-groove ball bearing moves radially, axially and tilts (ISO/TS 16281): every ball gets
+    its contact angle; the axial displacement is measured from the centred rings (half the axial
+    play included, as MASTA reports it); the ring is free to tilt unless a moment or a
+    misalignment is given; the report adds the reference rating life L10r for the rotating ring
+    (default inner) beside ISO 281's (C_r/P)^3 with P = X F_r + Y F_a.
 
     \b
     Examples:
       # bearing 306 of the catalogue, 300 kgf, ISO clearance class C3 (mean of its range)
       bearingload solve 306 --load 300kgf --clearance C3
-      # the whole C3 range side by side, the paper's modulus
-      bearingload solve 6306 -F 3kN -G C3 --clearance-pick range --modulus 2.1e4kgf/mm^2
+      # the whole C3 range side by side, the paper's modulus, with the geometry used
+      bearingload solve 6306 -F 3kN -G C3 --clearance-pick range --modulus 2.1e4kgf/mm^2 --show-geometry
       # bearing 306 of Kuzmenko (2010): 8 balls, 300 kgf, the paper's stiffness, G_r = 20 µm
       bearingload solve -z 8 --load 300kgf --stiffness 4700kgf/mm^1.5 --clearance 20um
       # the load between two balls, 50 µm preload, JSON for a script
       bearingload solve -z 12 -F 5kN -K 3.8e5 -G -50um --cage-angle half --format json
       # exact, continuum, Stribeck and Palmgren side by side, errors against the exact answer
       bearingload solve -z 8 -F 300kgf -K 4700kgf/mm^1.5 -G 20um --method all
+      # every ball's load as csv, one row per ball
+      bearingload solve -z 8 -F 300kgf -K 4700kgf/mm^1.5 --format csv --per-ball
+      # combined load on a 6205 with C3 clearance: contact angles, tilt, L10r
+      bearingload solve 6205 -F 1.4kN --axial-load 700N -G C3
+      # a hand-given ball set under a pure axial load, its C_r, the outer ring rotating
+      bearingload solve -z 7 --ball-diameter 11.5 --pitch-diameter 43.5 -F 0 -A 1kN -G 10um -C 23.4kN --rotating outer
     """
+    from bearingload.models.registry import list_methods
+    from bearingload.reports.solve import solve_report
+
     if not revolutions == revolutions:  # NaN passes click's range check
         raise click.UsageError(
             "Invalid value for '--revolutions': must be a number of revolutions > 0, got nan"
         )
     k_given = stiffness_value(stiffness, exponent)  # N/mm^m
-    if bearing is None and ball_diameter is None and pitch_diameter is None:
-        from bearingload.bearings.clearance import clearance_length
-        from bearingload.reports.solve import solve_report
+    methods = list_methods() if method == "all" else [method]
+    geometry = {"balls": balls, "ball_diameter": ball_diameter, "pitch_diameter": pitch_diameter,
+                "f_i": inner_conformity, "f_o": outer_conformity, "modulus": modulus,
+                "poisson": poisson}  # fmt: skip
+    if wants_combined(combined):
+        from bearingload.cli.combined_options import combined_text
 
-        if balls is None:
-            raise click.UsageError(
-                "Missing option '--balls' / '-z' (or give a BEARING designation)"
-            )
-        if k_given is None:
-            raise click.UsageError(
-                "Missing option '--stiffness' / '-K' (or give a BEARING designation, or "
-                "--ball-diameter and --pitch-diameter)"
-            )
-        g_r = clearance_length(clearance)
         if method != "exact":
-            from bearingload.reports.methods import method_report
-
-            text = method_report(method, balls, load, k_given, g_r, cage_angle, exponent, fmt)
-            emit(text, output)
-            return
-        emit(solve_report(balls, load, k_given, g_r, cage_angle, exponent, fmt), output)
+            raise click.UsageError(
+                "Invalid value for '--method': the combined load (--axial-load, --moment, "
+                "--misalignment) is solved by the exact model only"
+            )
+        bearings = _bearings(bearing, k_given, clearance, clearance_pick, exponent, **geometry)
+        emit(combined_text(bearings, load, cage_angle, combined, fmt, per_ball, show_geometry),
+             output)  # fmt: skip
         return
+    if bearing is None and ball_diameter is None and pitch_diameter is None:
+        cases = _by_hand(methods, balls, load, k_given, clearance, cage_angle, exponent)
+    else:
+        bearings = _bearings(bearing, k_given, clearance, clearance_pick, exponent, **geometry)
+        angle = cage_angle_deg(cage_angle, bearings[0].balls)
+        from bearingload.studies.loaded_bearing import solve_bearing
+
+        cases = solve_bearing(bearings, load, angle, methods, revolutions)
+    emit(solve_report(cases, fmt, per_ball=per_ball, show_geometry=show_geometry), output)
+
+
+def _by_hand(
+    methods: list[str],
+    balls: int | None,
+    load: float,
+    k_given: float | None,
+    clearance: Any,
+    cage_angle: Any,
+    exponent: float,
+) -> list[Any]:
+    from bearingload.bearings.clearance import clearance_length
+    from bearingload.studies.loaded_bearing import solve_ring
+
+    if balls is None:
+        raise click.UsageError("Missing option '--balls' / '-z' (or give a BEARING designation)")
+    if k_given is None:
+        raise click.UsageError(
+            "Missing option '--stiffness' / '-K' (or give a BEARING designation, or "
+            "--ball-diameter and --pitch-diameter)"
+        )
+    angle = cage_angle_deg(cage_angle, balls)
+    return solve_ring(methods, balls, load, k_given, clearance_length(clearance), angle, exponent)
+
+
+def _bearings(
+    bearing: str | None,
+    k_given: float | None,
+    clearance: Any,
+    clearance_pick: str,
+    exponent: float,
+    **geometry: Any,
+) -> list[Any]:
+    """The resolved bearing, or the same bearing at the min, mean and max of its class."""
     from bearingload.bearings.resolve import resolve_bearing
-    from bearingload.reports.bearing import bearing_report, solve_bearing
 
     if exponent != 1.5:
         raise click.UsageError(
@@ -157,54 +230,15 @@ def solve(
         )
     resolved = resolve_bearing(
         bearing,
-        balls=balls,
-        ball_diameter=ball_diameter,
-        pitch_diameter=pitch_diameter,
-        f_i=inner_conformity,
-        f_o=outer_conformity,
-        modulus=modulus,
-        poisson=poisson,
         stiffness=k_given,
         clearance=clearance,
         clearance_pick="mean" if clearance_pick == "range" else clearance_pick,
+        **geometry,
     )
     if clearance_pick == "range" and resolved.clearance_range is None:
         raise click.UsageError(
             "Invalid value for '--clearance-pick': 'range' needs a clearance class "
             "(C2 CN C3 C4 C5), not a clearance length"
         )
-    if method != "exact":
-        from bearingload.reports.methods import method_report
-
-        if clearance_pick == "range":
-            raise click.UsageError(
-                "Invalid value for '--clearance-pick': 'range' works with --method exact only; "
-                "pick min, mean or max"
-            )
-        label = f"bearing {resolved.designation}" if resolved.designation else "the given ball"
-        k_src = "given" if resolved.stiffness_given else "exact Hertz"
-        context = (
-            f"z, K ({k_src}) and G_r of {label}; 'bearingload solve' without --method lists "
-            "the source of every value."
-        )
-        text = method_report(
-            method,
-            resolved.balls,
-            load,
-            resolved.stiffness,
-            resolved.clearance,
-            cage_angle,
-            1.5,
-            fmt,
-            context=context,
-        )
-        emit(text, output)
-        return
-    picks = ["min", "mean", "max"] if clearance_pick == "range" else [None]
-    cases = [
-        solve_bearing(
-            resolved if p is None else resolved.with_clearance(p), load, cage_angle, revolutions
-        )
-        for p in picks
-    ]
-    emit(bearing_report(cases, fmt), output)
+    picks = ["min", "mean", "max"] if clearance_pick == "range" else []
+    return [resolved.with_clearance(p) for p in picks] or [resolved]

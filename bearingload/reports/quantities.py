@@ -1,0 +1,153 @@
+"""The one table of quantities: key, label, unit, display digits, JSON key.
+
+Every report names a quantity through this table, so one quantity has one label, one unit and one
+JSON key (and csv column) in every command, model and format. Machine formats (csv, json) carry
+the machine ``unit``; the terminal may show a quantity in its ``display`` unit (µm instead of mm)
+and add an ``also`` line in a second unit (kgf beside N).
+
+Adding a quantity: one line in :data:`QUANTITIES`; the key is also the JSON key and the csv
+column stem (``q_max [N]``). Imports nothing heavy: the command line reads it at start-up.
+"""
+
+from __future__ import annotations
+
+from collections.abc import Iterable
+from dataclasses import dataclass
+
+KGF = 9.80665  # N; the same constant as bearingload.units.KGF (kept here to import nothing)
+
+
+@dataclass(frozen=True)
+class Quantity:
+    """One quantity.
+
+    Attributes
+    ----------
+    key : str
+        JSON key and csv column stem; the name of the attribute in the library results.
+    label : str
+        What people read in the terminal and Markdown tables.
+    unit : str
+        Unit of the value in the library and in csv/json (``-`` dimensionless, ``""`` a count
+        or text).
+    digits : int or None
+        Significant digits in the human formats (``None``: integers and text).
+    display : tuple of (unit, factor) or None
+        Unit shown in the human formats and the factor from ``unit`` to it.
+    also : tuple of (unit, factor) or None
+        A second unit shown on an extra line of the human summary (``Q_max`` in kgf).
+    """
+
+    key: str
+    label: str
+    unit: str = "-"
+    digits: int | None = 6
+    display: tuple[str, float] | None = None
+    also: tuple[str, float] | None = None
+
+    @property
+    def json_key(self) -> str:
+        return self.key
+
+    def shown(self) -> tuple[str, float]:
+        """(unit, factor) of the human formats."""
+        return self.display if self.display is not None else (self.unit, 1.0)
+
+
+_UM = ("µm", 1e3)
+_MRAD = ("mrad", 1000.0 * 3.141592653589793 / 180.0)
+
+#: Every quantity a report prints, in the order columns appear.
+QUANTITIES: dict[str, Quantity] = {
+    q.key: q
+    for q in (
+        # the case: inputs
+        Quantity("bearing", "bearing", "", None),
+        Quantity("method", "method", "", None),
+        Quantity("balls", "balls z", "", None),
+        Quantity("load", "radial load F_r", "N", also=("kgf", 1 / KGF)),
+        Quantity("stiffness", "ball stiffness K", "N/mm^m"),
+        Quantity("clearance", "radial clearance G_r", "mm", display=_UM),
+        Quantity("clearance_pick", "clearance pick", "", None),
+        Quantity("cage_angle_deg", "cage angle", "°"),
+        Quantity("exponent", "load-deflection exponent m", "-"),
+        # the load distribution
+        Quantity("k", "load factor k = Q_max/F_r", "-"),
+        Quantity("K_Q", "load concentration K_Q = k z/2", "-"),
+        Quantity("q_max", "heaviest ball load Q_max", "N", also=("kgf", 1 / KGF)),
+        Quantity("loaded_balls", "balls carrying load", "", None),
+        Quantity("load_zone_deg", "load zone half-angle", "°"),
+        Quantity("x", "ring displacement along the load x", "mm", display=_UM),
+        Quantity("y", "ring displacement across the load y", "mm", display=_UM),
+        Quantity("stiffness_radial", "radial stiffness dF_r/dx", "N/mm"),
+        Quantity("approach_max", "heaviest ball approach delta_max", "mm", display=_UM),
+        Quantity("stiffness_matrix", "tangent stiffness matrix", "N/mm"),
+        Quantity("stiffness_xx", "tangent stiffness K_xx", "N/mm"),
+        Quantity("stiffness_xy", "tangent stiffness K_xy", "N/mm"),
+        Quantity("stiffness_yy", "tangent stiffness K_yy", "N/mm"),
+        Quantity("q_max_ball", "ball carrying Q_max", "", None),
+        Quantity("epsilon", "load-zone parameter epsilon", "-"),
+        Quantity("iterations", "solver iterations", "", None),
+        Quantity("relative_error", "Q_max/Q_max,exact - 1", "-", 3, display=("%", 100.0)),
+        Quantity("valid", "inside the model's range", "", None),
+        # a cage sweep (bearingload sweep)
+        Quantity("steps", "cage positions over one pitch", "", None),
+        Quantity("ripple_per_cage_revolution", "ripple frequency", "1/rev", None),
+        Quantity("compensating_clearance", "compensating clearance G_r", "mm", display=_UM),
+        # Kurochkin's dimensionless sweep (bearingload sweep --kurochkin-T), P = K = 1
+        Quantity("kurochkin_T", "generalised parameter T (Kurochkin eq. 1.13)", "-"),
+        Quantity("F0", "F0 = x0 (K/P)^(2/3)", "-"),
+        Quantity("F0_prime", "F0' = -y0 (K/P)^(2/3)", "-"),
+        Quantity("contact_sequence", "contact sequence (loaded balls over a pitch)", "", None),
+        Quantity("exit_angle_deg", "exit angle psi", "°"),
+        Quantity("F0j_prime", "Fourier sine coefficients F0j' (j = 1-5)", "-"),
+        # contact and life (a catalogue bearing)
+        Quantity("p_max_inner", "max contact pressure, inner", "MPa"),
+        Quantity("p_max_outer", "max contact pressure, outer", "MPa"),
+        Quantity("rating_life", "basic rating life L10 = (C/P)^3", "10^6 rev"),
+        Quantity("allowable_load", "allowable load C/L^(1/3)", "N", also=("kgf", 1 / KGF)),
+        Quantity("revolutions", "life L of the allowable load", "10^6 rev"),
+        # combined load of a deep-groove ball bearing (models.combined, bearings.iso16281)
+        Quantity("axial_load", "axial load F_a", "N", also=("kgf", 1 / KGF)),
+        Quantity("moment", "moment M in the load plane", "N mm"),
+        Quantity("misalignment_deg", "imposed misalignment", "°", also=_MRAD),
+        Quantity("rotating", "rotating ring", "", None),
+        Quantity("free_contact_angle_deg", "free contact angle alpha_0", "°"),
+        Quantity("axial_play", "axial play", "mm", display=_UM),
+        Quantity("deflection_axial", "axial displacement from centred rings", "mm", display=_UM),
+        Quantity("tilt_deg", "tilt about the axis across the load", "°", also=_MRAD),
+        Quantity("tilt_cross_deg", "tilt about the load line", "°", also=_MRAD),
+        Quantity("contact_angle_max_deg", "largest contact angle", "°"),
+        Quantity("dynamic_rating", "dynamic load rating C_r", "N"),
+        Quantity("equivalent_load", "equivalent load P = X F_r + Y F_a (ISO 281)", "N"),
+        Quantity("reference_rating_life", "reference rating life L10r (ISO/TS 16281)", "10^6 rev"),
+        # per ball
+        Quantity("ball", "ball", "", None),
+        Quantity("ball_angles_deg", "angle", "°"),
+        Quantity("ball_approaches", "approach delta", "mm", display=_UM),
+        Quantity("ball_loads", "load Q", "N"),
+        Quantity("contact_angles_deg", "contact angle", "°"),
+    )
+}
+
+
+def quantity(key: str) -> Quantity:
+    """The quantity of ``key``; a KeyError names the known keys."""
+    try:
+        return QUANTITIES[key]
+    except KeyError:
+        raise KeyError(f"unknown quantity {key!r}; known: {', '.join(QUANTITIES)}") from None
+
+
+def units(keys: Iterable[str], exponent: float | None = None) -> dict[str, str]:
+    """The JSON ``units`` object of ``keys`` (those with a unit); ``N/mm^m`` gets ``exponent``."""
+    out = {}
+    for key in keys:
+        q = QUANTITIES.get(key)
+        if q is None or q.unit in ("", "-"):
+            continue
+        unit = q.unit
+        if unit == "N/mm^m" and exponent is not None:
+            unit = f"N/mm^{exponent:g}"
+        out[key] = unit
+    return out
