@@ -290,7 +290,11 @@ def parse_clearance(text: str | float | None) -> ClearanceSpec | None:
     except InputError as exc:
         message = str(exc).split(": ", 1)[-1]
         if "implausible" in message:
-            group = f" (the GOST clearance group {text} is written G{text})" if text in ("6", "7", "8", "9") else ""
+            group = (
+                f" (the GOST clearance group {text} is written G{text})"
+                if text in ("6", "7", "8", "9")
+                else ""
+            )
             raise InputError("clearance", message + group) from None
         raise InputError(
             "clearance",
