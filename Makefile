@@ -38,13 +38,16 @@ tables: $(STAMP)
 golden: $(STAMP)
 	$(BIN)/python -m tests.golden_outputs
 
-## make bench: vectorised solver against a per-case scipy brentq loop, ring_forces against a
-## per-evaluation Python loop, each in one run
+## make bench: vectorised solver against a per-case scipy brentq loop, one call against scipy root
+## (hybr) and the Hertz contact against brentq on the ellipticity equation, ring_forces against a
+## per-evaluation Python loop: ratios, each in one run
 bench: $(STAMP)
 	$(BIN)/python -m compileall -q bearingload
 	$(BIN)/python benchmarks/bench_solver.py
+	$(BIN)/python benchmarks/bench_scalar.py
 	$(BIN)/python benchmarks/bench_methods.py
 	$(BIN)/python benchmarks/bench_forces.py
+	$(BIN)/python benchmarks/bench_combined.py
 
 clean:
 	rm -rf $(VENV) build *.egg-info .pytest_cache .mypy_cache .ruff_cache .hypothesis

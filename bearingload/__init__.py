@@ -6,6 +6,7 @@ calculation does not pay for the whole package at start-up)::
     from bearingload import solve              # exact ring equilibrium, degrees in and out
     from bearingload import ring_forces        # the forward problem: force for a displacement
     from bearingload import solve_continuum    # the continuum model (Kuzmenko 2010, §4-5)
+    from bearingload import solve_combined     # radial, axial, tilt of a deep-groove bearing
     from bearingload import compute, list_methods   # any registered model by name
 """
 
@@ -22,6 +23,7 @@ _API = {
     "ring_forces": "bearingload.models.forces",
     "RingForces": "bearingload.models.forces",
     "solve_continuum": "bearingload.models.continuum",
+    "solve_combined": "bearingload.models.combined",
     "compute": "bearingload.models.registry",
     "compute_all": "bearingload.models.registry",
     "list_methods": "bearingload.models.registry",

@@ -93,7 +93,11 @@ def test_class_from_the_designation_and_gost_group():
 
 
 def test_a_bare_number_is_a_length_not_a_group():
-    assert parse_clearance("7").length == 7.0
+    # never group 7: a bare 7 is 7 mm, refused as implausible with both readings offered
+    with pytest.raises(InputError, match=r"did you mean 7um\?.*group 7 is written G7"):
+        parse_clearance("7")
+    assert parse_clearance("7mm").length == 7.0
+    assert parse_clearance("0.7").length == 0.7
     assert parse_clearance("G7").cls == "C3"
     assert parse_clearance(0.02).length == 0.02
     assert resolve_bearing("306", clearance="-10um").clearance == pytest.approx(-0.01)
@@ -125,7 +129,7 @@ def test_without_designation():
     ("kwargs", "parameter", "message"),
     [
         ({"designation": "9999"}, "bearing", "cannot read '9999'"),
-        ({"designation": "6006"}, "bearing", "ball set is unknown"),
+        ({"designation": "6302"}, "bearing", "ball set is unknown"),
         ({"balls": 8, "stiffness": 1e5, "clearance": "C3"}, "clearance", "resolved by the bore"),
         ({"balls": 8}, "stiffness", "give the ball stiffness"),
         ({"stiffness": 1e5}, "balls", "number of balls"),

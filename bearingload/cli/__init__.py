@@ -62,6 +62,24 @@ def main() -> None:
     """
 
 
+def _refuse_detached_units(args: list[str]) -> None:
+    """``-F 300 kgf``: a unit typed as its own word after a number. Say so, instead of an
+    unrelated error about an extra argument or an unknown bearing."""
+    from bearingload.units import unit_names
+
+    units = unit_names()
+    for before, word in zip(args, args[1:], strict=False):
+        try:
+            float(before)
+        except ValueError:
+            continue
+        if word in units:
+            raise click.UsageError(
+                f"'{before} {word}': write a number and its unit without a space, "
+                f"e.g. {before}{word}"
+            )
+
+
 def run(argv: list[str] | None = None) -> None:
     """Console entry point: every error is one ``Error:`` line on stderr, never a traceback.
 
@@ -70,6 +88,7 @@ def run(argv: list[str] | None = None) -> None:
     import sys
 
     try:
+        _refuse_detached_units(sys.argv[1:] if argv is None else argv)
         main.main(args=argv, prog_name="bearingload", standalone_mode=False)
     except click.exceptions.Exit as exc:
         sys.exit(exc.exit_code)

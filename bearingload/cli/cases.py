@@ -35,11 +35,6 @@ def resolve_case(
         return balls, k_given, clearance_length(clearance), exponent, ""
     from bearingload.bearings.resolve import resolve_bearing
 
-    if exponent != 1.5:
-        raise click.UsageError(
-            "Invalid value for '--exponent': a ball bearing (Hertz point contact) has m = 1.5; "
-            "other exponents need --balls and --stiffness without a BEARING"
-        )
     b = resolve_bearing(
         bearing,
         balls=balls,
@@ -48,8 +43,18 @@ def resolve_case(
         clearance_pick=pick,
         **geometry,
     )
+    if exponent not in (1.5, b.exponent):  # 1.5, the option's default, also for rollers
+        contact = (
+            "a roller bearing (line contact) has m = 10/9"
+            if b.kind == "roller"
+            else "a ball bearing (Hertz point contact) has m = 1.5"
+        )
+        raise click.UsageError(
+            f"Invalid value for '--exponent': {contact}; "
+            "other exponents need --balls and --stiffness without a BEARING"
+        )
     label = f"bearing {b.designation}" if b.designation else "the given ball set"
-    k_src = "given" if b.stiffness_given else "exact Hertz"
+    k_src = "given" if b.stiffness_given else ("Palmgren" if b.kind == "roller" else "exact Hertz")
     g_src = next(p.source for p in b.provenance if p.key == "clearance")
     context = f"z and K ({k_src}) of {label}; G_r: {g_src}."
-    return b.balls, float(b.stiffness), b.clearance, 1.5, context
+    return b.balls, float(b.stiffness), b.clearance, b.exponent, context

@@ -14,6 +14,7 @@ from bearingload.cli.options import (
     emit,
     exponent_option,
     library_errors,
+    maker_option,
     method_option,
     output_options,
     stiffness_value,
@@ -63,6 +64,7 @@ TABLES = ("k", "kq")
     "The model the table is computed with (see 'bearingload solve --help'); all: one table "
     "comparing every method with its error against the exact answer."
 )
+@maker_option
 @output_options
 @library_errors
 def table(
@@ -82,6 +84,7 @@ def table(
     cage_angle: Any,
     exponent: float,
     method: str,
+    maker: str | None,
     fmt: str,
     output: str | None,
 ) -> None:
@@ -113,7 +116,7 @@ def table(
                     f_i=inner_conformity, f_o=outer_conformity, modulus=modulus, poisson=poisson)  # fmt: skip
     if bearing is not None:
         cond = _bearing_conditions(bearing, load, k_given, clearance, clearance_pick, cage_angle,
-                                   exponent, geometry)  # fmt: skip
+                                   exponent, dict(geometry, maker=maker))  # fmt: skip
     elif any(v is not None for v in geometry.values()):
         raise click.UsageError(
             "the geometry and material options (--ball-diameter ... --poisson) need --bearing"
@@ -155,4 +158,9 @@ def _bearing_conditions(
         ),
         {"bearing": "--bearing"},
     )
+    if resolved.kind != "ball":
+        raise click.UsageError(
+            "Invalid value for '--bearing': the tables take ball bearings; for a roller "
+            "bearing use 'bearingload solve' or --exponent 10/9 with --stiffness"
+        )
     return for_bearing(resolved, load, cage_angle)

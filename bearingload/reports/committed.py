@@ -22,6 +22,7 @@ def _registry() -> dict[str, Callable[[], Table]]:
     from bearingload.studies.compliance import fit_table
     from bearingload.studies.errata import errata_rows
     from bearingload.studies.kurochkin_errata import differences_table, example1_moment_table
+    from bearingload.studies.life_clearance import life_vs_clearance_table
     from bearingload.studies.stiffness import stiffness_table
 
     return {
@@ -41,6 +42,8 @@ def _registry() -> dict[str, Callable[[], Table]]:
         "stiffness_seed003": stiffness_table,
         # every printed number the project recomputes (bearingload errata)
         "errata": lambda: errata_table(errata_rows()),
+        # ISO/TS 16281 L10r against clearance, 6205, radial and combined load (issue 11)
+        "life_vs_clearance_6205": life_vs_clearance_table,
     }
 
 

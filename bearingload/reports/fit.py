@@ -67,18 +67,47 @@ def fit_report(
     """Fit, compare and render in ``fmt`` (see :func:`build_fit_report` for the parameters).
 
     csv is one table: the fits (one row per method), or with ``points`` the measured points."""
-    from bearingload.studies.fit import normalized_distribution
-
     r = build_fit_report(
         path, base=base, balls=balls, load_unit=load_unit, displacement_unit=displacement_unit
     )
-    lu, du = r.load_unit, r.displacement_unit
+    point_rows = _point_rows(r)
+    if fmt == "json":
+        doc: dict[str, Any] = {
+            "file": r.path,
+            "load_unit": r.load_unit,
+            "displacement_unit": r.displacement_unit,
+            "points": len(point_rows),
+            "balls": r.balls,
+        }
+        for key, _, _ in FITS:
+            doc[key] = _fit_json(r, key)
+        doc["K_Q"] = {k: v for k, (v, _) in r.k_q.items() if k != "hertz_exponent"}
+        doc["hertz_exponent"] = HERTZ_EXPONENT
+        doc["rows"] = point_rows
+        return render([], "json", document=doc)
+    fits_table, points_table = _fits_table(r, len(point_rows)), _points_table(r, point_rows)
+    if fmt == "csv":
+        return render([points_table if points else fits_table], fmt)
+    kq_table = Table(
+        title="Load concentration: the paper's claim K_Q = n against the theory",
+        columns=[Column("value", "value", "-", 5), Column("what", "what", align="left")],
+        rows=[{"value": "n/a" if v is None else v, "what": note} for v, note in r.k_q.values()],
+        notes=list(EXPLANATION)
+        + ([] if r.balls is not None else ["Give --balls Z for the theoretical K_Q(z)."]),
+    )
+    return render([fits_table, points_table, kq_table], fmt)
+
+
+def _point_rows(r: FitReport) -> list[dict[str, Any]]:
+    """Each measured point with the fitted values and sigma_bar, in the file's units."""
+    from bearingload.studies.fit import normalized_distribution
+
     n2, nls = r.fits["two_point"].exponent, r.fits["least_squares"].exponent
     u_max = float(np.max(r.displacement))
     sigma_2 = normalized_distribution(r.displacement, n2, u_max)
     sigma_ls = normalized_distribution(r.displacement, nls, u_max)
-    lf = UNITS["force"][lu]
-    point_rows = [
+    lf = UNITS["force"][r.load_unit]
+    return [
         {
             "row": int(row),
             "load": float(q),
@@ -101,25 +130,15 @@ def fit_report(
             strict=True,
         )
     ]
-    if fmt == "json":
-        doc: dict[str, Any] = {
-            "file": r.path,
-            "load_unit": lu,
-            "displacement_unit": du,
-            "points": len(point_rows),
-            "balls": r.balls,
-        }
-        for key, _, _ in FITS:
-            doc[key] = _fit_json(r, key)
-        doc["K_Q"] = {k: v for k, (v, _) in r.k_q.items() if k != "hertz_exponent"}
-        doc["hertz_exponent"] = HERTZ_EXPONENT
-        doc["rows"] = point_rows
-        return render([], "json", document=doc)
 
+
+def _fits_table(r: FitReport, points: int) -> Table:
+    lu, du = r.load_unit, r.displacement_unit
+    lf = UNITS["force"][lu]
     base_text = ", ".join(f"({q:.6g} {lu}, {u:.6g} {du})" for q, u in r.base_points)
     base_note = "rows of lowest and highest load" if r.base_from_file else "from --base"
-    fits_table = Table(
-        title=f"Power law Q = C u^n fitted to {r.path} ({len(point_rows)} points)",
+    return Table(
+        title=f"Power law Q = C u^n fitted to {r.path} ({points} points)",
         columns=[
             Column("method", "method", align="left"),
             Column("C", "C", f"{lu}/{du}^n", 6),
@@ -141,7 +160,12 @@ def fit_report(
         ],
         notes=[f"Two-point base points: {base_text} ({base_note})."],
     )
-    points_table = Table(
+
+
+def _points_table(r: FitReport, point_rows: list[dict[str, Any]]) -> Table:
+    lu, du = r.load_unit, r.displacement_unit
+    u_max = float(np.max(r.displacement))
+    return Table(
         title=f"Measured points and the normalised distribution sigma_bar = (u/u_max)^(n-1), "
         f"u_max = {u_max:.6g} {du}",
         columns=[
@@ -158,13 +182,3 @@ def fit_report(
         rows=point_rows,
         notes=["row: line in the file (the header is row 1); residual = measured - fitted."],
     )
-    kq_table = Table(
-        title="Load concentration: the paper's claim K_Q = n against the theory",
-        columns=[Column("value", "value", "-", 5), Column("what", "what", align="left")],
-        rows=[{"value": "n/a" if v is None else v, "what": note} for v, note in r.k_q.values()],
-        notes=list(EXPLANATION)
-        + ([] if r.balls is not None else ["Give --balls Z for the theoretical K_Q(z)."]),
-    )
-    if fmt == "csv":
-        return render([points_table if points else fits_table], fmt)
-    return render([fits_table, points_table, kq_table], fmt)

@@ -14,7 +14,7 @@ from __future__ import annotations
 from collections.abc import Iterable
 from dataclasses import dataclass
 
-KGF = 9.80665  # N; the same constant as bearingload.units.KGF (kept here to import nothing)
+from bearingload.constants import KGF
 
 
 @dataclass(frozen=True)
@@ -55,6 +55,7 @@ class Quantity:
 
 
 _UM = ("µm", 1e3)
+_MRAD = ("mrad", 1000.0 * 3.141592653589793 / 180.0)
 
 #: Every quantity a report prints, in the order columns appear.
 QUANTITIES: dict[str, Quantity] = {
@@ -89,6 +90,7 @@ QUANTITIES: dict[str, Quantity] = {
         Quantity("iterations", "solver iterations", "", None),
         Quantity("relative_error", "Q_max/Q_max,exact - 1", "-", 3, display=("%", 100.0)),
         Quantity("valid", "inside the model's range", "", None),
+        Quantity("warnings", "warnings (bearingload.bearings.checks)", "", None),
         # a cage sweep (bearingload sweep)
         Quantity("steps", "cage positions over one pitch", "", None),
         Quantity("ripple_per_cage_revolution", "ripple frequency", "1/rev", None),
@@ -103,8 +105,8 @@ QUANTITIES: dict[str, Quantity] = {
         # contact and life (a catalogue bearing)
         Quantity("p_max_inner", "max contact pressure, inner", "MPa"),
         Quantity("p_max_outer", "max contact pressure, outer", "MPa"),
-        Quantity("rating_life", "basic rating life L10 = (C/F_r)^3", "10^6 rev"),
-        Quantity("allowable_load", "allowable load C/L^(1/3)", "N", also=("kgf", 1 / KGF)),
+        Quantity("rating_life", "basic rating life L10 = (C/P)^p", "10^6 rev"),
+        Quantity("allowable_load", "allowable load C/L^(1/p)", "N", also=("kgf", 1 / KGF)),
         Quantity("revolutions", "life L of the allowable load", "10^6 rev"),
         # published vs computed (bearingload errata); "computed" and "difference" are in the unit
         # of the row ("unit"), the printed value is text as printed
@@ -121,11 +123,26 @@ QUANTITIES: dict[str, Quantity] = {
         Quantity("checked", "printed numbers checked", "", None),
         Quantity("agree", "agree", "", None),
         Quantity("differ", "differ", "", None),
+        # combined load of a deep-groove ball bearing (models.combined, bearings.iso16281)
+        Quantity("axial_load", "axial load F_a", "N", also=("kgf", 1 / KGF)),
+        Quantity("moment", "moment M in the load plane", "N mm"),
+        Quantity("misalignment_deg", "imposed misalignment", "°", also=_MRAD),
+        Quantity("rotating", "rotating ring", "", None),
+        Quantity("free_contact_angle_deg", "free contact angle alpha_0", "°"),
+        Quantity("axial_play", "axial play", "mm", display=_UM),
+        Quantity("deflection_axial", "axial displacement from centred rings", "mm", display=_UM),
+        Quantity("tilt_deg", "tilt about the axis across the load", "°", also=_MRAD),
+        Quantity("tilt_cross_deg", "tilt about the load line", "°", also=_MRAD),
+        Quantity("contact_angle_max_deg", "largest contact angle", "°"),
+        Quantity("dynamic_rating", "dynamic load rating C_r", "N"),
+        Quantity("equivalent_load", "equivalent load P = X F_r + Y F_a (ISO 281)", "N"),
+        Quantity("reference_rating_life", "reference rating life L10r (ISO/TS 16281)", "10^6 rev"),
         # per ball
         Quantity("ball", "ball", "", None),
         Quantity("ball_angles_deg", "angle", "°"),
         Quantity("ball_approaches", "approach delta", "mm", display=_UM),
         Quantity("ball_loads", "load Q", "N"),
+        Quantity("contact_angles_deg", "contact angle", "°"),
     )
 }
 

@@ -16,12 +16,13 @@ from typing import Any
 
 import numpy as np
 
+from bearingload.constants import BALL_EXPONENT
 from bearingload.errors import InputError
 from bearingload.units import UNITS, parse_quantity
 
 #: Exponent of the Hertz point contact, Q = K delta^(3/2): the exponent of the whole
 #: load-displacement curve of an ideal clearance-free ball bearing. [-]
-HERTZ_EXPONENT = 1.5
+HERTZ_EXPONENT = BALL_EXPONENT
 
 #: The fits of the report, in order: (key, method of :func:`bearingload.studies.fit.fit_power_law`, label).
 FITS = (

@@ -21,11 +21,11 @@ from typing import Any
 
 import numpy as np
 
+from bearingload.constants import KGF
 from bearingload.reports.render import Column, Table
 from bearingload.studies import kurochkin as ku
 
 DATA = os.path.join(os.path.dirname(__file__), "data", "kurochkin1973.csv")
-KGF = 9.80665  # [N]
 
 #: Kurochkin (1973), Example 1: bearing A640018. K [kgf/µm^1.5], P [kgf], D, d [mm]
 EXAMPLE1 = {"balls": 7, "K_kgf_um": 0.45, "P_kgf": 2.5, "D": 10.731, "d": 3.969}

@@ -23,13 +23,13 @@ from typing import Any, NamedTuple
 import numpy as np
 
 from bearingload import validate
+from bearingload.constants import KGF
 from bearingload.contact.hertz import LINE_EXPONENT, roller_stiffness
 from bearingload.errors import InputError
 from bearingload.models.equilibrium import solve
 from bearingload.reports.render import Column, Table
 
 SOURCE = "Crane-bearing stiffness (seed 003, 2009), eqs. (19)-(22)"
-KGF = 9.80665  # [N]
 
 
 class RadialStiffness(NamedTuple):
