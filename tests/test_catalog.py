@@ -235,11 +235,11 @@ def test_unreadable_designation_explains_manual_geometry() -> None:
 def test_row_without_ball_set() -> None:
     row = find("6302")  # listed, no default (NSK) ball set: NSK's inversion is inconclusive
     assert not row.has_geometry and row.C0 == 5450.0
-    with pytest.raises(InputError, match="give --balls and --ball-diameter"):
+    with pytest.raises(InputError, match="give 'balls' and 'ball_diameter'"):
         lookup("6302")
-    with pytest.raises(InputError, match="give --ball-diameter$"):
+    with pytest.raises(InputError, match="give 'ball_diameter'$"):
         lookup("6302", balls=7)
-    with pytest.raises(InputError, match=r"--maker NTN \| SKF"):
+    with pytest.raises(InputError, match=r"with 'maker': NTN \| SKF"):
         lookup("6404")
     # the GOST counterpart of an ISO row (the hint of a row without a ball set)
     other = _counterpart(parse("6304"))

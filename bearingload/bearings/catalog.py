@@ -596,7 +596,7 @@ def lookup(
     z, dw = new.balls, new.ball_diameter
     dm = (new.d + new.D) / 2.0 if new.pitch_diameter is None else new.pitch_diameter
     if z is None or dw is None:
-        missing = [opt for opt, v in (("--balls", z), ("--ball-diameter", dw)) if v is None]
+        missing = [f"'{p}'" for p, v in (("balls", z), ("ball_diameter", dw)) if v is None]
         hint = ""
         other = _counterpart(row.parsed)
         if other is not None and other.has_geometry:
@@ -604,7 +604,9 @@ def lookup(
                 f", or use the {other.standard} designation {other.designation!r}, "
                 "whose ball set is known"
             )
-        sets = f" (choose a maker's set: --maker {' | '.join(row.makers)})" if row.makers else ""
+        sets = (
+            f" (choose a maker's set with 'maker': {' | '.join(row.makers)})" if row.makers else ""
+        )
         raise InputError(
             "bearing",
             f"{row.designation!r} is in the catalogue (d {row.d:g}, D {row.D:g}"

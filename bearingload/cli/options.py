@@ -160,6 +160,55 @@ OPTION_NAMES = {
 }
 
 
+#: Where a command calls a library parameter by another option name.
+COMMAND_OPTION_NAMES = {
+    "table": {"bearing": "--bearing"},
+    "catalog show": {"bearing": "DESIGNATION"},
+    "fit": {
+        "base": "--base",
+        "base_points": "--base",
+        "balls": "--balls",
+        "load_unit": "--load-unit",
+        "displacement_unit": "--displacement-unit",
+    },
+}
+
+
+def option_name(parameter: str) -> str:
+    """The option the user typed for a library parameter: the one map from the library's
+    parameter names to the command line's option names."""
+    ctx = click.get_current_context(silent=True)
+    command = " ".join(ctx.command_path.split()[1:]) if ctx is not None else ""
+    return COMMAND_OPTION_NAMES.get(command, {}).get(parameter) or OPTION_NAMES.get(
+        parameter, parameter
+    )
+
+
+def option_message(message: str) -> str:
+    """A library message with every quoted parameter name ('ball_diameter') written as the
+    option the user types ('--ball-diameter')."""
+    import re
+
+    def swap(match: re.Match[str]) -> str:
+        name = match.group(1)
+        return (
+            f"'{option_name(name)}'"
+            if name in OPTION_NAMES or name in _COMMAND_NAMES
+            else match.group(0)
+        )
+
+    return re.sub(r"'([a-z_]+)'", swap, message)
+
+
+_COMMAND_NAMES = {p for names in COMMAND_OPTION_NAMES.values() for p in names}
+
+
+def usage_error(exc: InputError) -> click.UsageError:
+    """The one ``Invalid value for '<option>': <message>`` of a library InputError."""
+    message = option_message(str(exc).split(": ", 1)[-1])
+    return click.UsageError(f"Invalid value for '{option_name(exc.parameter)}': {message}")
+
+
 def library_errors(func: Callable[..., Any]) -> Callable[..., Any]:
     """Turn library exceptions into one ``Error:`` line with exit status 2 (bad input) or 1."""
 
@@ -168,9 +217,7 @@ def library_errors(func: Callable[..., Any]) -> Callable[..., Any]:
         try:
             return func(*args, **kwargs)
         except InputError as exc:
-            option = OPTION_NAMES.get(exc.parameter, exc.parameter)
-            message = str(exc).split(": ", 1)[-1]
-            raise click.UsageError(f"Invalid value for '{option}': {message}") from exc
+            raise usage_error(exc) from exc
         except BearingloadError as exc:
             raise click.ClickException(str(exc)) from exc
 
