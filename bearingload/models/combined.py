@@ -41,7 +41,7 @@ Conventions
 * Misalignment and the gaps: to second order in the tilt, ``delta_j`` loses
   ``R_i^2 theta^2 cos^2(phi_j) / (2 A) = R_i^2 theta^2 (1 + cos 2 phi_j) / (4 A)`` of gap, a
   constant part plus a ``cos 2 phi_j`` part, the structure of the gap law with misalignment in
-  the abstract on clearance and vibration (seed 001, eqs. 3a-4); the exact square root is used.
+  the abstract on clearance and vibration (eqs. 3a-4); the exact square root is used.
 
 Numerics. With ``K`` frozen per ball, the equilibrium is the minimum of the convex potential
 ``sum K_j/2.5 max(delta_j, 0)^2.5 - F_r x - F_a a - M theta`` (``delta_j`` is a norm of an
