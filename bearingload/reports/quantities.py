@@ -90,6 +90,7 @@ QUANTITIES: dict[str, Quantity] = {
         Quantity("iterations", "solver iterations", "", None),
         Quantity("relative_error", "Q_max/Q_max,exact - 1", "-", 3, display=("%", 100.0)),
         Quantity("valid", "inside the model's range", "", None),
+        Quantity("warnings", "warnings", "", None),
         Quantity("warnings", "warnings (bearingload.bearings.checks)", "", None),
         # a cage sweep (bearingload sweep)
         Quantity("steps", "cage positions over one pitch", "", None),

@@ -77,7 +77,11 @@ def solve_report(
     if fmt == "json":
         return render([], "json", document=_document(cases, records, exponent))
     if fmt == "csv":
-        table = _per_ball_table(cases, records) if per_ball else _case_table(records)
+        table = (
+            _per_ball_table(cases, records)
+            if per_ball
+            else _case_table(records, [c.warnings for c in cases])
+        )
         return render([table], "csv")
     tables = []
     if show_geometry and cases[0].bearing is not None:
@@ -105,10 +109,16 @@ def column(key: str, exponent: float | None = None, header: str | None = None) -
 _COUNTS = {"balls", "loaded_balls", "ball", "iterations"}
 
 
-def _case_table(records: Sequence[dict[str, Any]]) -> Table:
+def _case_table(records: Sequence[dict[str, Any]], warnings: Sequence[Sequence[str]] = ()) -> Table:
+    """One row per case; the last column ``warnings`` (" | " between findings, empty when none)."""
     keys = _present(records, INPUT_KEYS + ANSWER_KEYS + ("valid",))
     exponent = records[0]["exponent"]
-    return Table("cases", [column(k, exponent) for k in keys], [_blank(r, keys) for r in records])
+    rows = [_blank(r, keys) for r in records]
+    found = list(warnings) or [()] * len(rows)
+    for row, w in zip(rows, found, strict=True):
+        row["warnings"] = " | ".join(w)
+    columns = [column(k, exponent) for k in keys] + [column("warnings")]
+    return Table("cases", columns, rows)
 
 
 def _blank(record: dict[str, Any], keys: Sequence[str]) -> dict[str, Any]:
