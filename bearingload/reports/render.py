@@ -194,6 +194,74 @@ def _machine_tree(obj: Any) -> Any:
     return machine_number(obj)
 
 
+def csv_header(columns: Sequence[Column]) -> str:
+    """The csv header line of ``columns`` (with its line end), as :func:`render` writes it."""
+    return ",".join(_csv_header(c) for c in columns) + "\n"
+
+
+def csv_block(columns: Sequence[Column], values: dict[str, Sequence[Any]]) -> str:
+    """csv lines (each with its line end) of column-wise ``values`` (key -> list; None: blank).
+
+    The cells are those :func:`render` writes for the same rows, formatted column by column
+    (floats at 10 significant digits), so that a long table is written in chunks at the cost
+    of one format per number.
+    """
+    cells = []
+    for c in columns:
+        vals = values[c.key]
+        if all(type(v) is float or v is None for v in vals):
+            if not all(math.isfinite(v) for v in vals if v is not None):
+                raise ValueError(f"refusing to write a non-finite number in column {c.key!r}")
+            cells.append(
+                ["" if v is None else repr(float(f"{v:.{MACHINE_DIGITS}g}")) for v in vals]
+            )
+        else:
+            cells.append(["" if v is None else _csv_cell(_machine_text(v)) for v in vals])
+    return "".join(",".join(row) + "\n" for row in zip(*cells, strict=True))
+
+
+class atomic_file:
+    """``with atomic_file(path) as fh:`` write ``fh``; the file appears whole when the block ends
+    without an exception, and is left as it was when it raises (see :func:`write_atomic`)."""
+
+    def __init__(self, path: str) -> None:
+        self.path = path
+        self.tmp: str | None = None
+        self.fh: Any = None
+
+    def __enter__(self) -> Any:
+        real = os.path.realpath(self.path)
+        if os.path.isdir(real):
+            raise IsADirectoryError(21, "is a directory", self.path)
+        self.real = real
+        if os.path.exists(real) and not os.path.isfile(real):
+            self.fh = open(real, "w", encoding="utf-8", newline="\n")  # noqa: SIM115
+            return self.fh
+        if os.path.exists(real):
+            self.mode = os.stat(real).st_mode & 0o7777
+        else:
+            umask = os.umask(0)
+            os.umask(umask)
+            self.mode = 0o666 & ~umask
+        import tempfile  # imported here: it costs more than the rest of a terminal run's rendering
+
+        fd, self.tmp = tempfile.mkstemp(prefix=".bearingload-", dir=os.path.dirname(real))
+        self.fh = os.fdopen(fd, "w", encoding="utf-8", newline="\n")
+        return self.fh
+
+    def __exit__(self, kind: Any, exc: Any, tb: Any) -> None:
+        try:
+            if self.tmp is not None and kind is None:
+                self.fh.flush()
+                os.fchmod(self.fh.fileno(), self.mode)
+            self.fh.close()
+            if self.tmp is not None and kind is None:
+                os.replace(self.tmp, self.real)
+        finally:
+            if self.tmp is not None and os.path.exists(self.tmp):
+                os.unlink(self.tmp)
+
+
 def write_atomic(text: str, path: str) -> None:
     """Write ``text`` to ``path`` whole or not at all.
 
@@ -204,29 +272,5 @@ def write_atomic(text: str, path: str) -> None:
     link stays). Something that exists but cannot be replaced (a device, a FIFO) is written to
     directly. Raises OSError (e.g. IsADirectoryError) when the path cannot be written.
     """
-    real = os.path.realpath(path)
-    if os.path.isdir(real):
-        raise IsADirectoryError(21, "is a directory", path)
-    if os.path.exists(real) and not os.path.isfile(real):
-        with open(real, "w", encoding="utf-8", newline="\n") as fh:
-            fh.write(text)
-        return
-    if os.path.exists(real):
-        mode = os.stat(real).st_mode & 0o7777
-    else:
-        umask = os.umask(0)
-        os.umask(umask)
-        mode = 0o666 & ~umask
-    import tempfile  # imported here: it costs more than the rest of a terminal run's rendering
-
-    fd, tmp = tempfile.mkstemp(prefix=".bearingload-", dir=os.path.dirname(real))
-    try:
-        with os.fdopen(fd, "w", encoding="utf-8", newline="\n") as fh:
-            fh.write(text)
-            fh.flush()
-            os.fchmod(fh.fileno(), mode)
-        os.replace(tmp, real)
-    except BaseException:
-        if os.path.exists(tmp):
-            os.unlink(tmp)
-        raise
+    with atomic_file(path) as fh:
+        fh.write(text)

@@ -121,6 +121,7 @@ def _check_header_unit(name: str, unit: str) -> None:
 
 def chunks(stream: TextIO, size: int) -> Iterator[tuple[Header, list[tuple[int, list[str]]]]]:
     """The header and then lists of up to ``size`` (row number, cells); the header is row 1.
+    A file with a header and no rows yields the header once with no rows.
 
     Blank lines are skipped (they still count as rows); a line the csv reader cannot read
     comes with one cell, so that its cell count does not fit the header.
@@ -136,6 +137,7 @@ def chunks(stream: TextIO, size: int) -> Iterator[tuple[Header, list[tuple[int, 
         raise InputError("CASES", f"cannot read the header line: {exc}") from None
     header = read_header(first)
     batch: list[tuple[int, list[str]]] = []
+    any_rows = False
     while True:
         try:
             row = next(reader)
@@ -146,10 +148,11 @@ def chunks(stream: TextIO, size: int) -> Iterator[tuple[Header, list[tuple[int, 
         if not row:
             continue
         batch.append((reader.line_num, row))
+        any_rows = True
         if len(batch) >= size:
             yield header, batch
             batch = []
-    if batch:
+    if batch or not any_rows:
         yield header, batch
 
 

@@ -1,0 +1,331 @@
+"""Many cases at once: the computation behind ``bearingload batch``.
+
+A chunk of rows of a case file (:mod:`bearingload.studies.batch_input`) is read cell by cell,
+each row checked on its own, and then every row of one method is solved by ONE vectorised call
+of the registered model (:mod:`bearingload.models.registry`, e.g. the exact ring equilibrium
+:func:`bearingload.models.equilibrium.solve`, which broadcasts over arrays). A catalogue bearing
+is resolved once per distinct (designation, overrides, clearance) and its z, K, G_r enter the
+same arrays. Should a vectorised call still fail, that method's rows of the chunk are solved one
+by one, so the offending row is named and the others are kept. Each case's answer depends on its
+own row only: the engine solves every case independently.
+
+The quantities are those of :func:`bearingload.studies.loaded_bearing.case_values` (the keys of
+:mod:`bearingload.reports.quantities`), as arrays over the rows.
+"""
+
+from __future__ import annotations
+
+from dataclasses import dataclass, field
+from typing import Any
+
+import numpy as np
+
+from bearingload.errors import BearingloadError, InputError
+from bearingload.studies.batch_input import CellParser, Header
+from bearingload.studies.loaded_bearing import DEFAULT_REVOLUTIONS
+
+#: Solved quantities of a row, in :mod:`bearingload.reports.solve` order (None: blank).
+SOLVED_KEYS = (
+    "q_max",
+    "k",
+    "K_Q",
+    "loaded_balls",
+    "load_zone_deg",
+    "x",
+    "y",
+    "stiffness_radial",
+    "approach_max",
+    "epsilon",
+    "p_max_inner",
+    "p_max_outer",
+    "rating_life",
+    "revolutions",
+    "allowable_load",
+    "valid",
+)
+
+
+@dataclass
+class Chunk:
+    """The answer for one chunk of rows.
+
+    Attributes
+    ----------
+    rows : list of int
+        Row numbers of the solved rows, in input order (the header is row 1).
+    values : dict
+        Quantity key -> list over ``rows`` (None: not given for that row).
+    errors : list of (int, str)
+        Skipped rows: row number and the reason (``"load: must be greater than 0 N (got -5)"``).
+    """
+
+    rows: list[int] = field(default_factory=list)
+    values: dict[str, list[Any]] = field(default_factory=dict)
+    errors: list[tuple[int, str]] = field(default_factory=list)
+
+
+class BatchSolver:
+    """Solve the chunks of one case file; parsed cells and resolved bearings are cached."""
+
+    def __init__(self, header: Header) -> None:
+        self.header = header
+        self.parsers = {n: CellParser(n, header.units.get(n)) for n in header.names}
+        self.bearings: dict[tuple[Any, ...], Any] = {}
+
+    def solve(self, lines: list[tuple[int, list[str]]]) -> Chunk:
+        """Solve one chunk of ``(row number, cells)``."""
+        errors: dict[int, str] = {}
+        cells = self._cells(lines, errors)
+        rows = [x for x in (self._row(r, c, errors) for r, c in cells) if x is not None]
+        parts = _solve_rows(rows, errors)
+        out = Chunk(errors=sorted(errors.items()))
+        if len(parts) == 1:
+            out.rows, out.values = parts[0]
+        elif parts:
+            numbers = [n for p, _ in parts for n in p]
+            order = sorted(range(len(numbers)), key=numbers.__getitem__)
+            out.rows = [numbers[i] for i in order]
+            for k in parts[0][1]:
+                merged = [v for _, c in parts for v in c[k]]
+                out.values[k] = [merged[i] for i in order]
+        return out
+
+    def _cells(
+        self, lines: list[tuple[int, list[str]]], errors: dict[int, str]
+    ) -> list[tuple[int, dict[str, Any]]]:
+        """Each row's cells by column, parsed to package units; a row's first error is kept."""
+        names = self.header.names
+        out = []
+        for row, cells in lines:
+            if len(cells) != len(names):
+                errors[row] = (
+                    f"malformed line: {len(cells)} cells, the header names {len(names)} columns"
+                )
+                continue
+            values = {n: t.strip() for n, t in zip(names, cells, strict=True) if t.strip()}
+            try:
+                m = (
+                    self.parsers["exponent"].parse(values["exponent"])
+                    if "exponent" in values
+                    else 1.5
+                )
+                parsed = {"exponent": m}
+                for n, t in values.items():
+                    if n != "exponent":
+                        parsed[n] = self.parsers[n].parse(t, m)
+            except InputError as exc:
+                errors[row] = str(exc)
+                continue
+            out.append((row, parsed))
+        return out
+
+    def _row(self, row: int, v: dict[str, Any], errors: dict[int, str]) -> dict[str, Any] | None:
+        """The case inputs of one row: z, F_r, K, G_r, cage angle, m, method, bearing."""
+        from bearingload.bearings.clearance import clearance_length
+        from bearingload.models.registry import get_method
+
+        try:
+            get_method(v.get("method", "exact"))
+            by_hand = not any(k in v for k in ("bearing", "ball_diameter", "pitch_diameter"))
+            if by_hand:
+                extra = [k for k in ("inner_conformity", "outer_conformity", "modulus", "poisson",
+                                     "clearance_pick") if k in v]  # fmt: skip
+                if extra:
+                    raise InputError(extra[0], "needs a bearing or a ball geometry")
+                for need in ("balls", "stiffness"):
+                    if need not in v:
+                        raise InputError(need, "missing (give balls and stiffness, or a bearing)")
+                b = None
+                z, k = v["balls"], v["stiffness"]
+                g = v.get("clearance", 0.0)
+                g = g if isinstance(g, float) else clearance_length(g)
+            else:
+                b = self._bearing(v)
+                z, k, g = b.balls, b.stiffness, b.clearance
+            if "load" not in v:
+                raise InputError("load", "missing: every row needs a load")
+            revolutions = v.get("revolutions", DEFAULT_REVOLUTIONS)
+            if not revolutions > 0:
+                raise InputError("revolutions", f"must be greater than 0 rev (got {revolutions:g})")
+            angle = v.get("cage_angle", 0.0)
+            if angle == "half":
+                angle = 180.0 / z if z >= 1 else 0.0  # a bad z is named by the checks
+        except BearingloadError as exc:
+            errors[row] = str(exc)
+            return None
+        return {"row": row, "bearing": b, "balls": z, "load": v["load"], "stiffness": k,
+                "clearance": g, "cage_angle": angle, "exponent": v["exponent"],
+                "method": v.get("method", "exact"), "revolutions": revolutions}  # fmt: skip
+
+    def _bearing(self, v: dict[str, Any]) -> Any:
+        """The resolved bearing of a row, resolved once per distinct inputs."""
+        from bearingload.bearings.resolve import resolve_bearing
+
+        if v["exponent"] != 1.5:
+            raise InputError(
+                "exponent",
+                "a ball bearing (Hertz point contact) has m = 1.5; other exponents need balls "
+                "and stiffness without a bearing",
+            )
+        args = {
+            "balls": v.get("balls"),
+            "ball_diameter": v.get("ball_diameter"),
+            "pitch_diameter": v.get("pitch_diameter"),
+            "f_i": v.get("inner_conformity"),
+            "f_o": v.get("outer_conformity"),
+            "modulus": v.get("modulus"),
+            "poisson": v.get("poisson"),
+            "stiffness": v.get("stiffness"),
+            "clearance": v.get("clearance"),
+            "clearance_pick": v.get("clearance_pick", "mean"),
+        }
+        if args["balls"] is not None:
+            args["balls"] = int(args["balls"])
+        key = (v.get("bearing"), *(repr(a) for a in args.values()))
+        hit = self.bearings.get(key)
+        if hit is None:
+            try:
+                hit = (True, resolve_bearing(v.get("bearing"), **args))
+            except BearingloadError as exc:
+                hit = (False, exc)
+            if len(self.bearings) < 10_000:
+                self.bearings[key] = hit
+        if not hit[0]:
+            raise hit[1]
+        return hit[1]
+
+
+_CHECKS = (
+    ("balls", lambda a: (a < 1) | (a > 100_000) | (a != np.round(a))),
+    ("load", lambda a: ~(a > 0) | ~np.isfinite(a)),
+    ("stiffness", lambda a: ~(a > 0) | ~np.isfinite(a)),
+    ("clearance", lambda a: ~np.isfinite(a)),
+    ("cage_angle", lambda a: ~np.isfinite(a)),
+    ("exponent", lambda a: ~((a >= 1) & (a <= 3))),
+)
+
+
+Part = tuple[list[int], dict[str, list[Any]]]
+
+
+def _solve_rows(rows: list[dict[str, Any]], errors: dict[int, str]) -> list[Part]:
+    """Check the rows (vectorised; the library names a failing row's reason), then solve each
+    method's rows in one call: per method, the row numbers and the quantities over them."""
+    from bearingload.models.case import INPUTS, Case
+
+    if not rows:
+        return []
+    arrays = {k: np.array([r[k] for r in rows], dtype=float) for k in INPUTS}
+    suspect = np.zeros(len(rows), bool)
+    for name, bad in _CHECKS:
+        suspect |= bad(arrays[name])
+    for i in np.flatnonzero(suspect):
+        try:
+            Case.of(*(arrays[k][i] for k in INPUTS))
+        except InputError as exc:
+            errors[rows[i]["row"]] = str(exc)
+    out = []
+    methods = [r["method"] for r in rows]
+    for method in dict.fromkeys(methods):
+        idx = [i for i, r in enumerate(rows) if r["method"] == method and r["row"] not in errors]
+        if idx:
+            out += _solve_method(method, [rows[i] for i in idx],
+                                 {k: a[idx] for k, a in arrays.items()}, errors)  # fmt: skip
+    return out
+
+
+def _solve_method(
+    method: str, rows: list[dict[str, Any]], arrays: dict[str, np.ndarray], errors: dict[int, str]
+) -> list[Part]:
+    """One vectorised call for all ``rows`` of one method; one call per row if that fails."""
+    from bearingload.models.case import INPUTS, Case
+    from bearingload.models.registry import get_method
+
+    model = get_method(method)
+    try:
+        with np.errstate(all="ignore"):
+            result = model.run(Case.of(*(arrays[k] for k in INPUTS)))
+        return [_values(result, rows, arrays)]
+    except (BearingloadError, ValueError, ArithmeticError):
+        if len(rows) == 1:
+            raise
+    out: list[Part] = []
+    for i, r in enumerate(rows):
+        one = {k: a[i : i + 1] for k, a in arrays.items()}
+        try:
+            out += _solve_method(method, [r], one, errors)
+        except (BearingloadError, ValueError, ArithmeticError) as exc:
+            errors[r["row"]] = str(exc)
+    return out
+
+
+def _values(result: Any, rows: list[dict[str, Any]], arrays: dict[str, np.ndarray]) -> Part:
+    """The quantities of every row (the keys of ``case_values``), lists over the rows."""
+    n = len(rows)
+
+    def col(value: Any) -> list[Any]:
+        return [None] * n if value is None else np.broadcast_to(value, (n,)).tolist()
+
+    q = np.broadcast_to(result.q_max, (n,))
+    approach = None if result.x is None else (q / arrays["stiffness"]) ** (1.0 / arrays["exponent"])
+    bearings = [r["bearing"] for r in rows]
+    cols = {
+        "bearing": [None if b is None else (b.designation or "given by hand") for b in bearings],
+        "method": [r["method"] for r in rows],
+        "balls": arrays["balls"].astype(np.int64).tolist(),
+        "load": arrays["load"].tolist(),
+        "stiffness": arrays["stiffness"].tolist(),
+        "clearance": arrays["clearance"].tolist(),
+        "clearance_pick": [None if b is None else b.clearance_pick for b in bearings],
+        "cage_angle_deg": np.mod(arrays["cage_angle"], 360.0).tolist(),
+        "exponent": arrays["exponent"].tolist(),
+        "q_max": col(result.q_max),
+        "k": col(result.k),
+        "K_Q": col(result.K_Q),
+        "loaded_balls": col(result.loaded_balls),
+        "load_zone_deg": col(result.load_zone),
+        "x": col(result.x),
+        "y": col(result.y),
+        "stiffness_radial": col(result.stiffness_radial),
+        "approach_max": col(approach),
+        "epsilon": col(getattr(result.model, "epsilon", None)),
+        "valid": col(result.valid),
+    }
+    cols |= _bearing_values(rows, q)
+    return [r["row"] for r in rows], cols
+
+
+def _bearing_values(rows: list[dict[str, Any]], q: np.ndarray) -> dict[str, list[Any]]:
+    """Hertz pressures at Q_max (known geometry) and life and allowable load (known C)."""
+    from bearingload.bearings.life import allowable_load, rating_life
+
+    n = len(rows)
+    out: dict[str, list[Any]] = {
+        k: [None] * n
+        for k in ("p_max_inner", "p_max_outer", "rating_life", "revolutions", "allowable_load")
+    }
+    geo = [i for i, r in enumerate(rows) if r["bearing"] is not None and r["bearing"].has_geometry]
+    if geo:
+        from bearingload.contact.hertz import ball_contacts
+
+        bs = [rows[i]["bearing"] for i in geo]
+        c = ball_contacts(
+            q[geo],
+            *(np.array([getattr(b, a) for b in bs], dtype=float)
+              for a in ("ball_diameter", "pitch_diameter", "f_i", "f_o", "modulus", "poisson")),
+        )  # fmt: skip
+        for j, i in enumerate(geo):
+            out["p_max_inner"][i] = float(np.ravel(c.inner.p_max)[j])
+            out["p_max_outer"][i] = float(np.ravel(c.outer.p_max)[j])
+    rated = [i for i, r in enumerate(rows) if r["bearing"] is not None and r["bearing"].C]
+    if rated:
+        C = np.array([rows[i]["bearing"].C for i in rated])
+        rev = np.array([rows[i]["revolutions"] for i in rated], dtype=float)
+        load = np.array([rows[i]["load"] for i in rated], dtype=float)
+        life = np.ravel(rating_life(C, load))
+        allow = np.ravel(allowable_load(C, rev / 1e6))
+        for j, i in enumerate(rated):
+            out["rating_life"][i] = float(life[j])
+            out["allowable_load"][i] = float(allow[j])
+            out["revolutions"][i] = float(rev[j] / 1e6)
+    return out
