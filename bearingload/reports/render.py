@@ -209,15 +209,33 @@ def csv_block(columns: Sequence[Column], values: dict[str, Sequence[Any]]) -> st
     cells = []
     for c in columns:
         vals = values[c.key]
-        if all(type(v) is float or v is None for v in vals):
-            if not all(math.isfinite(v) for v in vals if v is not None):
-                raise ValueError(f"refusing to write a non-finite number in column {c.key!r}")
-            cells.append(
-                ["" if v is None else repr(float(f"{v:.{MACHINE_DIGITS}g}")) for v in vals]
-            )
+        types = set(map(type, vals))
+        if types <= {float, type(None)}:
+            cells.append(_float_cells(c.key, vals, type(None) in types))
         else:
-            cells.append(["" if v is None else _csv_cell(_machine_text(v)) for v in vals])
+            cache: dict[Any, str] = {}
+            cells.append([cache[v] if v in cache else cache.setdefault(v, _cell(v)) for v in vals])
     return "".join(",".join(row) + "\n" for row in zip(*cells, strict=True))
+
+
+def _cell(value: Any) -> str:
+    return "" if value is None else _csv_cell(_machine_text(value))
+
+
+def _float_cells(key: str, vals: Sequence[Any], blanks: bool) -> list[str]:
+    """``repr(float(f"{v:.10g}"))`` of every value (as :func:`machine_number`; None: blank),
+    fast: the ``.10g`` text is that repr but for a missing ``.0`` and a few exponents."""
+    numbers = [v for v in vals if v is not None] if blanks else vals
+    if not all(map(math.isfinite, numbers)):
+        raise ValueError(f"refusing to write a non-finite number in column {key!r}")
+    fmt = f"{{:.{MACHINE_DIGITS}g}}".format
+    texts = [fmt(v) if v is not None else "" for v in vals] if blanks else list(map(fmt, vals))
+    return [
+        (t + ".0" if t else t)
+        if "." not in t and "e" not in t
+        else (repr(float(t)) if "e+1" in t or "e+3" in t or "e-3" in t else t)
+        for t in texts
+    ]
 
 
 class atomic_file:

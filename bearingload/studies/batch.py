@@ -75,8 +75,11 @@ class BatchSolver:
     def solve(self, lines: list[tuple[int, list[str]]]) -> Chunk:
         """Solve one chunk of ``(row number, cells)``."""
         errors: dict[int, str] = {}
-        cells = self._cells(lines, errors)
-        rows = [x for x in (self._row(r, c, errors) for r, c in cells) if x is not None]
+        if self.header.has_bearing:
+            cells = self._cells(lines, errors)
+            rows = Rows.of([x for x in (self._row(r, c, errors) for r, c in cells) if x])
+        else:
+            rows = self._hand_rows(lines, errors)
         parts = _solve_rows(rows, errors)
         out = Chunk(errors=sorted(errors.items()))
         if len(parts) == 1:
@@ -90,6 +93,104 @@ class BatchSolver:
                 out.values[k] = [merged[i] for i in order]
         return out
 
+    def _hand_rows(self, lines: list[tuple[int, list[str]]], errors: dict[int, str]) -> Rows:
+        """The rows of a file without bearing columns (rings given by z and K), column by
+        column: bare numbers are converted by numpy at once, other cells one distinct text at
+        a time."""
+        names = self.header.names
+        good = []
+        for row, cells in lines:
+            if len(cells) == len(names):
+                good.append((row, cells))
+            else:
+                errors[row] = _malformed(len(cells), len(names))
+        numbers = [r for r, _ in good]
+        texts = dict(zip(names, zip(*(c for _, c in good), strict=True), strict=True))
+        bad: dict[int, str] = {}
+        m = self._column("exponent", texts, bad, 1.5, None)
+        arrays = {
+            "exponent": m,
+            "balls": self._column("balls", texts, bad, None, m),
+            "load": self._column("load", texts, bad, None, m),
+            "stiffness": self._column("stiffness", texts, bad, None, m),
+            "clearance": self._column("clearance", texts, bad, 0.0, m),
+        }
+        cage = self._column("cage_angle", texts, bad, 0.0, m, half=True)
+        with np.errstate(divide="ignore"):
+            arrays["cage_angle"] = np.where(np.isnan(cage), 180.0 / arrays["balls"], cage)
+        methods = [t.strip() or "exact" for t in texts.get("method", ("",) * len(good))]
+        if "method" in texts:
+            from bearingload.models.registry import METHODS, get_method
+
+            for i, name in enumerate(methods):
+                if name not in METHODS:
+                    try:
+                        get_method(name)
+                    except InputError as exc:
+                        bad.setdefault(i, str(exc))
+        for i, message in bad.items():
+            errors[numbers[i]] = message
+        return Rows(numbers, arrays, methods, [None] * len(good), np.full(len(good), 36e6))
+
+    def _column(
+        self,
+        name: str,
+        texts: dict[str, tuple[str, ...]],
+        bad: dict[int, str],
+        default: float | None,
+        m: np.ndarray | None,
+        half: bool = False,
+    ) -> np.ndarray:
+        """One numeric column in package units (``half``: NaN marks 'half'); a missing cell
+        takes ``default`` or is an error; errors go to ``bad`` (index -> reason)."""
+        n = len(next(iter(texts.values()), ()))
+        if name not in texts:
+            if default is None:
+                for i in range(n):
+                    bad.setdefault(i, f"{name}: missing (give balls and stiffness, or a bearing)")
+                return np.ones(n)
+            return np.full(n, default)
+        cells = texts[name]
+        parser = self.parsers[name]
+        try:
+            values = np.array(cells, dtype=float)
+            if not np.all(np.isfinite(values)):
+                raise ValueError("not finite")
+            if parser.unit:
+                if name == "stiffness":
+                    from bearingload.units import stiffness_factor
+
+                    assert m is not None
+                    return values * np.array(
+                        [stiffness_factor(parser.unit, e, parameter=name) for e in m.tolist()]
+                    )
+                from bearingload.units import parse_quantity
+
+                kind = {"clearance": "length", "cage_angle": "angle"}.get(parser.kind, parser.kind)
+                return values * parse_quantity("1" + parser.unit, kind, parameter=name)
+            return values
+        except (ValueError, InputError):
+            pass
+        out = np.ones(n)
+        for i, text in enumerate(cells):
+            try:
+                if not text.strip():
+                    if default is None:
+                        raise InputError(name, "missing (give balls and stiffness, or a bearing)")
+                    out[i] = default
+                    continue
+                v = parser.parse(text, 1.5 if m is None else float(m[i]))
+                if v == "half" and half:
+                    v = np.nan
+                elif not isinstance(v, float):
+                    from bearingload.bearings.clearance import clearance_length
+
+                    v = clearance_length(v)
+                out[i] = v
+            except InputError as exc:
+                bad.setdefault(i, str(exc))
+        return out
+
     def _cells(
         self, lines: list[tuple[int, list[str]]], errors: dict[int, str]
     ) -> list[tuple[int, dict[str, Any]]]:
@@ -98,9 +199,7 @@ class BatchSolver:
         out = []
         for row, cells in lines:
             if len(cells) != len(names):
-                errors[row] = (
-                    f"malformed line: {len(cells)} cells, the header names {len(names)} columns"
-                )
+                errors[row] = _malformed(len(cells), len(names))
                 continue
             values = {n: t.strip() for n, t in zip(names, cells, strict=True) if t.strip()}
             try:
@@ -185,14 +284,18 @@ class BatchSolver:
         hit = self.bearings.get(key)
         if hit is None:
             try:
-                hit = (True, resolve_bearing(v.get("bearing"), **args))
+                hit = resolve_bearing(v.get("bearing"), **args)
             except BearingloadError as exc:
-                hit = (False, exc)
+                hit = exc
             if len(self.bearings) < 10_000:
                 self.bearings[key] = hit
-        if not hit[0]:
-            raise hit[1]
-        return hit[1]
+        if isinstance(hit, BearingloadError):
+            raise hit
+        return hit
+
+
+def _malformed(cells: int, columns: int) -> str:
+    return f"malformed line: {cells} cells, the header names {columns} columns"
 
 
 _CHECKS = (
@@ -208,35 +311,66 @@ _CHECKS = (
 Part = tuple[list[int], dict[str, list[Any]]]
 
 
-def _solve_rows(rows: list[dict[str, Any]], errors: dict[int, str]) -> list[Part]:
+@dataclass
+class Rows:
+    """Rows ready to solve: row ``numbers``, the case inputs as ``arrays`` (the names of
+    :data:`bearingload.models.case.INPUTS`), each row's ``methods``, ``bearings`` (None: a ring
+    given by z and K) and ``revolutions`` [rev]."""
+
+    numbers: list[int]
+    arrays: dict[str, np.ndarray]
+    methods: list[str]
+    bearings: list[Any]
+    revolutions: np.ndarray
+
+    @classmethod
+    def of(cls, rows: list[dict[str, Any]]) -> Rows:
+        from bearingload.models.case import INPUTS
+
+        return cls(
+            [r["row"] for r in rows],
+            {k: np.array([r[k] for r in rows], dtype=float) for k in INPUTS},
+            [r["method"] for r in rows],
+            [r["bearing"] for r in rows],
+            np.array([r["revolutions"] for r in rows], dtype=float),
+        )
+
+    def take(self, idx: list[int]) -> Rows:
+        return Rows(
+            [self.numbers[i] for i in idx],
+            {k: a[idx] for k, a in self.arrays.items()},
+            [self.methods[i] for i in idx],
+            [self.bearings[i] for i in idx],
+            self.revolutions[idx],
+        )
+
+
+def _solve_rows(rows: Rows, errors: dict[int, str]) -> list[Part]:
     """Check the rows (vectorised; the library names a failing row's reason), then solve each
     method's rows in one call: per method, the row numbers and the quantities over them."""
     from bearingload.models.case import INPUTS, Case
 
-    if not rows:
+    if not rows.numbers:
         return []
-    arrays = {k: np.array([r[k] for r in rows], dtype=float) for k in INPUTS}
-    suspect = np.zeros(len(rows), bool)
+    arrays = rows.arrays
+    suspect = np.zeros(len(rows.numbers), bool)
     for name, bad in _CHECKS:
         suspect |= bad(arrays[name])
     for i in np.flatnonzero(suspect):
         try:
             Case.of(*(arrays[k][i] for k in INPUTS))
         except InputError as exc:
-            errors[rows[i]["row"]] = str(exc)
+            errors[rows.numbers[i]] = str(exc)
     out = []
-    methods = [r["method"] for r in rows]
-    for method in dict.fromkeys(methods):
-        idx = [i for i, r in enumerate(rows) if r["method"] == method and r["row"] not in errors]
+    for method in dict.fromkeys(rows.methods):
+        idx = [i for i, (n, m) in enumerate(zip(rows.numbers, rows.methods, strict=True))
+               if m == method and n not in errors]  # fmt: skip
         if idx:
-            out += _solve_method(method, [rows[i] for i in idx],
-                                 {k: a[idx] for k, a in arrays.items()}, errors)  # fmt: skip
+            out += _solve_method(method, rows.take(idx), errors)
     return out
 
 
-def _solve_method(
-    method: str, rows: list[dict[str, Any]], arrays: dict[str, np.ndarray], errors: dict[int, str]
-) -> list[Part]:
+def _solve_method(method: str, rows: Rows, errors: dict[int, str]) -> list[Part]:
     """One vectorised call for all ``rows`` of one method; one call per row if that fails."""
     from bearingload.models.case import INPUTS, Case
     from bearingload.models.registry import get_method
@@ -244,34 +378,34 @@ def _solve_method(
     model = get_method(method)
     try:
         with np.errstate(all="ignore"):
-            result = model.run(Case.of(*(arrays[k] for k in INPUTS)))
-        return [_values(result, rows, arrays)]
+            result = model.run(Case.of(*(rows.arrays[k] for k in INPUTS)))
+        return [_values(result, rows)]
     except (BearingloadError, ValueError, ArithmeticError):
-        if len(rows) == 1:
+        if len(rows.numbers) == 1:
             raise
     out: list[Part] = []
-    for i, r in enumerate(rows):
-        one = {k: a[i : i + 1] for k, a in arrays.items()}
+    for i, number in enumerate(rows.numbers):
         try:
-            out += _solve_method(method, [r], one, errors)
+            out += _solve_method(method, rows.take([i]), errors)
         except (BearingloadError, ValueError, ArithmeticError) as exc:
-            errors[r["row"]] = str(exc)
+            errors[number] = str(exc)
     return out
 
 
-def _values(result: Any, rows: list[dict[str, Any]], arrays: dict[str, np.ndarray]) -> Part:
+def _values(result: Any, rows: Rows) -> Part:
     """The quantities of every row (the keys of ``case_values``), lists over the rows."""
-    n = len(rows)
+    n = len(rows.numbers)
+    arrays = rows.arrays
 
     def col(value: Any) -> list[Any]:
         return [None] * n if value is None else np.broadcast_to(value, (n,)).tolist()
 
     q = np.broadcast_to(result.q_max, (n,))
     approach = None if result.x is None else (q / arrays["stiffness"]) ** (1.0 / arrays["exponent"])
-    bearings = [r["bearing"] for r in rows]
+    bearings = rows.bearings
     cols = {
         "bearing": [None if b is None else (b.designation or "given by hand") for b in bearings],
-        "method": [r["method"] for r in rows],
+        "method": rows.methods,
         "balls": arrays["balls"].astype(np.int64).tolist(),
         "load": arrays["load"].tolist(),
         "stiffness": arrays["stiffness"].tolist(),
@@ -292,23 +426,24 @@ def _values(result: Any, rows: list[dict[str, Any]], arrays: dict[str, np.ndarra
         "valid": col(result.valid),
     }
     cols |= _bearing_values(rows, q)
-    return [r["row"] for r in rows], cols
+    return rows.numbers, cols
 
 
-def _bearing_values(rows: list[dict[str, Any]], q: np.ndarray) -> dict[str, list[Any]]:
+def _bearing_values(rows: Rows, q: np.ndarray) -> dict[str, list[Any]]:
     """Hertz pressures at Q_max (known geometry) and life and allowable load (known C)."""
     from bearingload.bearings.life import allowable_load, rating_life
 
-    n = len(rows)
+    n = len(rows.numbers)
     out: dict[str, list[Any]] = {
         k: [None] * n
         for k in ("p_max_inner", "p_max_outer", "rating_life", "revolutions", "allowable_load")
     }
-    geo = [i for i, r in enumerate(rows) if r["bearing"] is not None and r["bearing"].has_geometry]
+    bearings = rows.bearings
+    geo = [i for i, b in enumerate(bearings) if b is not None and b.has_geometry]
     if geo:
         from bearingload.contact.hertz import ball_contacts
 
-        bs = [rows[i]["bearing"] for i in geo]
+        bs = [bearings[i] for i in geo]
         c = ball_contacts(
             q[geo],
             *(np.array([getattr(b, a) for b in bs], dtype=float)
@@ -317,11 +452,11 @@ def _bearing_values(rows: list[dict[str, Any]], q: np.ndarray) -> dict[str, list
         for j, i in enumerate(geo):
             out["p_max_inner"][i] = float(np.ravel(c.inner.p_max)[j])
             out["p_max_outer"][i] = float(np.ravel(c.outer.p_max)[j])
-    rated = [i for i, r in enumerate(rows) if r["bearing"] is not None and r["bearing"].C]
+    rated = [i for i, b in enumerate(bearings) if b is not None and b.C]
     if rated:
-        C = np.array([rows[i]["bearing"].C for i in rated])
-        rev = np.array([rows[i]["revolutions"] for i in rated], dtype=float)
-        load = np.array([rows[i]["load"] for i in rated], dtype=float)
+        C = np.array([bearings[i].C for i in rated])
+        rev = rows.revolutions[rated]
+        load = rows.arrays["load"][rated]
         life = np.ravel(rating_life(C, load))
         allow = np.ravel(allowable_load(C, rev / 1e6))
         for j, i in enumerate(rated):
