@@ -69,7 +69,10 @@ def held_report(
             "units": {c.key: c.unit for c in columns if c.unit},
         }
         return render([], "json", document=doc)
-    rows_out = [{k: "" if v is None else v for k, v in r.items()} for r in records]
+    rows_out = [
+        {k: "" if v is None else str(v) if isinstance(v, bool) else v for k, v in r.items()}
+        for r in records
+    ]
     columns = [Column(c.key, c.key, c.unit, c.digits, c.align) for c in columns]  # short heads
     notes = [f"Row {r} skipped: {m}" for r, m in skipped]
     title = f"{len(records)} cases (row: the input file's row, the header is row 1)"
