@@ -39,13 +39,15 @@ golden: $(STAMP)
 	$(BIN)/python -m tests.golden_outputs
 
 ## make bench: vectorised solver against a per-case scipy brentq loop, ring_forces against a
-## per-evaluation Python loop, each in one run
+## per-evaluation Python loop, bearingload batch on 10^5 csv cases against the brentq loop, each
+## in one run
 bench: $(STAMP)
 	$(BIN)/python -m compileall -q bearingload
 	$(BIN)/python benchmarks/bench_solver.py
 	$(BIN)/python benchmarks/bench_methods.py
 	$(BIN)/python benchmarks/bench_forces.py
 	$(BIN)/python benchmarks/bench_combined.py
+	$(BIN)/python benchmarks/bench_batch.py
 
 clean:
 	rm -rf $(VENV) build *.egg-info .pytest_cache .mypy_cache .ruff_cache .hypothesis

@@ -46,6 +46,7 @@ COMMANDS = {
     "catalog_show_306": "catalog show 306",
     "fit_208": "fit examples/bearing208_kuzmenko2014.csv --load-unit kgf --base 200kgf:0.8mm "
     "--base 1000kgf:1.67mm --balls 9",
+    "batch_cases": "batch examples/cases.csv",
 }
 
 
