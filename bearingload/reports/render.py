@@ -202,34 +202,61 @@ def csv_header(columns: Sequence[Column]) -> str:
 def csv_block(columns: Sequence[Column], values: dict[str, Sequence[Any]]) -> str:
     """csv lines (each with its line end) of column-wise ``values`` (key -> list; None: blank).
 
-    The cells are those :func:`render` writes for the same rows, formatted column by column
-    (floats at 10 significant digits), so that a long table is written in chunks at the cost
-    of one format per number.
+    The cells are those :func:`render` writes for the same rows (floats at 10 significant
+    digits), built column by column and joined by one printf-style format per line, so that a
+    long table is written in chunks at the cost of little more than one format per number.
     """
-    cells = []
+    specs, cells = [], []
     for c in columns:
         vals = values[c.key]
         types = set(map(type, vals))
-        if types <= {float, type(None)}:
-            cells.append(_float_cells(c.key, vals, type(None) in types))
+        if types == {float}:
+            spec, col = _float_column(c.key, vals)
+        elif types == {int}:
+            spec, col = "%d", vals
+        elif types <= {float, type(None)}:
+            spec, col = "%s", _float_cells(c.key, vals)
         else:
             cache: dict[Any, str] = {}
-            cells.append([cache[v] if v in cache else cache.setdefault(v, _cell(v)) for v in vals])
-    return "".join(",".join(row) + "\n" for row in zip(*cells, strict=True))
+            spec = "%s"
+            col = [cache[v] if v in cache else cache.setdefault(v, _cell(v)) for v in vals]
+        specs.append(spec)
+        cells.append(col)
+    line = ",".join(specs) + "\n"
+    return "".join(map(line.__mod__, zip(*cells, strict=True)))
 
 
 def _cell(value: Any) -> str:
     return "" if value is None else _csv_cell(_machine_text(value))
 
 
-def _float_cells(key: str, vals: Sequence[Any], blanks: bool) -> list[str]:
-    """``repr(float(f"{v:.10g}"))`` of every value (as :func:`machine_number`; None: blank),
-    fast: the ``.10g`` text is that repr but for a missing ``.0`` and a few exponents."""
-    numbers = [v for v in vals if v is not None] if blanks else vals
+def _float_column(key: str, vals: Sequence[float]) -> tuple[str, Sequence[Any]]:
+    """A float column as ``("%.10g", values)`` where that prints what :func:`machine_number`
+    gives, else as ``("%s", texts)``: the ``.10g`` text is ``repr(float(.10g text))`` but
+    for whole numbers (no ``.0``), |v| >= 1e10 and subnormal or huge exponents."""
+    import numpy as np
+
+    a = np.abs(np.asarray(vals, dtype=float))
+    if not np.all(np.isfinite(a)):
+        raise ValueError(f"refusing to write a non-finite number in column {key!r}")
+    with np.errstate(all="ignore"):
+        near_whole = np.abs(a - np.round(a)) <= 1e-9 * np.maximum(a, 1.0)
+    odd = np.flatnonzero(near_whole | (a >= 1e9) | (a < 1e-290))
+    if odd.size == 0:
+        return f"%.{MACHINE_DIGITS}g", vals
+    texts = list(map(f"{{:.{MACHINE_DIGITS}g}}".format, vals))
+    for i in odd.tolist():
+        texts[i] = _machine_text(vals[i])
+    return "%s", texts
+
+
+def _float_cells(key: str, vals: Sequence[Any]) -> list[str]:
+    """``repr(float(f"{v:.10g}"))`` of every value (as :func:`machine_number`; None: blank)."""
+    numbers = [v for v in vals if v is not None]
     if not all(map(math.isfinite, numbers)):
         raise ValueError(f"refusing to write a non-finite number in column {key!r}")
     fmt = f"{{:.{MACHINE_DIGITS}g}}".format
-    texts = [fmt(v) if v is not None else "" for v in vals] if blanks else list(map(fmt, vals))
+    texts = [fmt(v) if v is not None else "" for v in vals]
     return [
         (t + ".0" if t else t)
         if "." not in t and "e" not in t

@@ -98,14 +98,15 @@ class BatchSolver:
         column: bare numbers are converted by numpy at once, other cells one distinct text at
         a time."""
         names = self.header.names
-        good = []
-        for row, cells in lines:
-            if len(cells) == len(names):
-                good.append((row, cells))
-            else:
-                errors[row] = _malformed(len(cells), len(names))
+        width = len(names)
+        good = [x for x in lines if len(x[1]) == width]
+        if len(good) != len(lines):
+            for row, cells in lines:
+                if len(cells) != width:
+                    errors[row] = _malformed(len(cells), width)
         numbers = [r for r, _ in good]
-        texts = dict(zip(names, zip(*(c for _, c in good), strict=True), strict=True))
+        texts = dict(zip(names, zip(*[c for _, c in good]), strict=False))
+        texts = {n: texts.get(n, ()) for n in names}
         bad: dict[int, str] = {}
         m = self._column("exponent", texts, bad, 1.5, None)
         arrays = {
@@ -118,7 +119,11 @@ class BatchSolver:
         cage = self._column("cage_angle", texts, bad, 0.0, m, half=True)
         with np.errstate(divide="ignore"):
             arrays["cage_angle"] = np.where(np.isnan(cage), 180.0 / arrays["balls"], cage)
-        methods = [t.strip() or "exact" for t in texts.get("method", ("",) * len(good))]
+        methods = (
+            [t.strip() or "exact" for t in texts["method"]]
+            if "method" in texts
+            else ["exact"] * len(good)
+        )
         if "method" in texts:
             from bearingload.models.registry import METHODS, get_method
 
