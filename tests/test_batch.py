@@ -255,3 +255,25 @@ def test_csv_block_matches_render():
     whole = render([Table("t", cols, rows)], "csv")
     block = csv_block(cols, {"v": values, "n": list(range(len(values)))})
     assert whole == "v [N],n\n" + block
+
+
+def test_held_formats_refuse_above_their_limit(tmp_path, monkeypatch):
+    import bearingload.reports.batch as report
+
+    monkeypatch.setattr(report, "MAX_HELD_ROWS", 10)
+    p = _long_file(tmp_path, n=30)
+    target = tmp_path / "out.json"
+    out = batch(p, "--format", "json", "--chunk-size", "4", "-o", str(target))
+    assert out.exit_code == 2 and "at most 10 rows" in out.stderr
+    assert not target.exists()
+    assert (
+        batch(p, "--format", "csv", "--chunk-size", "4").stdout.count("\n") == 29
+    )  # 28 rows + header
+
+
+def test_header_only_file_writes_the_header(tmp_path):
+    p = tmp_path / "empty.csv"
+    p.write_text("balls,load,stiffness\n")
+    out = batch(str(p), "--format", "csv")
+    assert out.exit_code == 0
+    assert out.stdout.startswith("row,method,balls,load [N]") and out.stdout.count("\n") == 1

@@ -245,8 +245,11 @@ def _float_column(key: str, vals: Sequence[float]) -> tuple[str, Sequence[Any]]:
     if odd.size == 0:
         return f"%.{MACHINE_DIGITS}g", vals
     texts = list(map(f"{{:.{MACHINE_DIGITS}g}}".format, vals))
+    cache: dict[Any, str] = {}
     for i in odd.tolist():
-        texts[i] = _machine_text(vals[i])
+        v = vals[i]
+        key = v if v else repr(v)  # 0.0 and -0.0 print differently
+        texts[i] = cache[key] if key in cache else cache.setdefault(key, _machine_text(v))
     return "%s", texts
 
 

@@ -105,7 +105,7 @@ class BatchSolver:
                 if len(cells) != width:
                     errors[row] = _malformed(len(cells), width)
         numbers = [r for r, _ in good]
-        texts = dict(zip(names, zip(*[c for _, c in good]), strict=False))
+        texts = dict(zip(names, zip(*[c for _, c in good], strict=True), strict=False))
         texts = {n: texts.get(n, ()) for n in names}
         bad: dict[int, str] = {}
         m = self._column("exponent", texts, bad, 1.5, None)
@@ -285,7 +285,7 @@ class BatchSolver:
         }
         if args["balls"] is not None:
             args["balls"] = int(args["balls"])
-        key = (v.get("bearing"), *(repr(a) for a in args.values()))
+        key = (v.get("bearing"), *args.values())  # floats, text, frozen ClearanceSpec
         hit = self.bearings.get(key)
         if hit is None:
             try:
@@ -444,19 +444,23 @@ def _bearing_values(rows: Rows, q: np.ndarray) -> dict[str, list[Any]]:
         for k in ("p_max_inner", "p_max_outer", "rating_life", "revolutions", "allowable_load")
     }
     bearings = rows.bearings
-    geo = [i for i, b in enumerate(bearings) if b is not None and b.has_geometry]
-    if geo:
+    groups: dict[int, list[int]] = {}  # one Hertz solution per bearing, over its rows' loads
+    for i, b in enumerate(bearings):
+        if b is not None and b.has_geometry:
+            groups.setdefault(id(b), []).append(i)
+    if groups:
         from bearingload.contact.hertz import ball_contacts
 
-        bs = [bearings[i] for i in geo]
-        c = ball_contacts(
-            q[geo],
-            *(np.array([getattr(b, a) for b in bs], dtype=float)
-              for a in ("ball_diameter", "pitch_diameter", "f_i", "f_o", "modulus", "poisson")),
-        )  # fmt: skip
-        for j, i in enumerate(geo):
-            out["p_max_inner"][i] = float(np.ravel(c.inner.p_max)[j])
-            out["p_max_outer"][i] = float(np.ravel(c.outer.p_max)[j])
+        for idx in groups.values():
+            b = bearings[idx[0]]
+            c = ball_contacts(
+                q[idx], b.ball_diameter, b.pitch_diameter, b.f_i, b.f_o, b.modulus, b.poisson
+            )
+            inner = np.broadcast_to(c.inner.p_max, (len(idx),)).tolist()
+            outer = np.broadcast_to(c.outer.p_max, (len(idx),)).tolist()
+            for j, i in enumerate(idx):
+                out["p_max_inner"][i] = inner[j]
+                out["p_max_outer"][i] = outer[j]
     rated = [i for i, b in enumerate(bearings) if b is not None and b.C]
     if rated:
         C = np.array([bearings[i].C for i in rated])
