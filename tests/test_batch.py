@@ -277,3 +277,18 @@ def test_header_only_file_writes_the_header(tmp_path):
     out = batch(str(p), "--format", "csv")
     assert out.exit_code == 0
     assert out.stdout.startswith("row,method,balls,load [N]") and out.stdout.count("\n") == 1
+
+
+def test_a_row_that_breaks_the_vectorised_solve_is_named_alone(tmp_path):
+    """z = 2 with no ball on the load line passes the input checks but has no equilibrium: the
+    chunk is solved row by row, that row is named, its neighbours are written unchanged."""
+    p = tmp_path / "c.csv"
+    p.write_text("balls,load,stiffness,cage_angle\n8,1kN,1e5,0\n2,1kN,1e5,45\n9,1kN,1e5,17\n")
+    out = batch(str(p), "--format", "csv")
+    assert out.exit_code == 1
+    assert out.stderr.splitlines()[0].startswith("Warning: row 3: cage_angle: with 1 or 2 balls")
+    rows = out.stdout.splitlines()
+    assert [r.split(",")[0] for r in rows] == ["row", "2", "4"]
+    alone = tmp_path / "a.csv"
+    alone.write_text("balls,load,stiffness,cage_angle\n9,1kN,1e5,17\n")
+    assert batch(str(alone), "--format", "csv").stdout.splitlines()[1][1:] == rows[2][1:]

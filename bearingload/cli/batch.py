@@ -55,7 +55,7 @@ def batch(cases: TextIO, strict: bool, chunk_size: int, fmt: str, output: str | 
 
     \b
     Examples:
-      # bearing 306 of Kuzmenko (2010) at three loads, as csv
+      # the example file: rings given by hand, catalogue bearings 306 and 6306, two methods
       bearingload batch examples/cases.csv --format csv
       # a design sweep from a script, read from standard input, written whole to a file
       python make_cases.py | bearingload batch - --format csv -o results.csv
