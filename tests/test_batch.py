@@ -6,6 +6,7 @@ import csv
 import io
 import json
 import os
+import re
 
 import pytest
 from click.testing import CliRunner
@@ -292,3 +293,33 @@ def test_a_row_that_breaks_the_vectorised_solve_is_named_alone(tmp_path):
     alone = tmp_path / "a.csv"
     alone.write_text("balls,load,stiffness,cage_angle\n9,1kN,1e5,17\n")
     assert batch(str(alone), "--format", "csv").stdout.splitlines()[1][1:] == rows[2][1:]
+
+
+def test_geometry_and_overrides_equal_solve(tmp_path):
+    """Ball geometry by hand, a catalogue bearing with overrides, clearance picks, a roller
+    exponent: each row equals 'bearingload solve' with the same options."""
+    p = tmp_path / "g.csv"
+    p.write_text(
+        "bearing,balls,load,stiffness,ball_diameter,pitch_diameter,inner_conformity,modulus,"
+        "clearance,clearance_pick,cage_angle,exponent,revolutions\n"
+        ",7,1kN,,11.5,43.5,,,10um,,0,,\n"
+        "6205,,1.4kN,,,,0.515,2.1e4kgf/mm^2,C3,max,half,,1e8\n"
+        "306,,300kgf,5e5,,,,,C4,min,7,,\n"
+        ",14,10kN,8e5,,,,,-5um,,0,10/9,\n"
+    )
+    out = batch(str(p), "--format", "csv")
+    assert out.exit_code == 0, out.stderr
+    rows = list(csv.DictReader(io.StringIO(out.stdout)))
+    solve_args = [
+        ["-z", "7", "-F", "1kN", "--ball-diameter", "11.5", "--pitch-diameter", "43.5", "-G", "10um"],
+        ["6205", "-F", "1.4kN", "--inner-conformity", "0.515", "--modulus", "2.1e4kgf/mm^2",
+         "-G", "C3", "--clearance-pick", "max", "--cage-angle", "half", "--revolutions", "1e8"],
+        ["306", "-F", "300kgf", "-K", "5e5", "-G", "C4", "--clearance-pick", "min",
+         "--cage-angle", "7"],
+        ["-z", "14", "-F", "10kN", "-K", "8e5", "-G", "-5um", "-m", "10/9"],
+    ]  # fmt: skip
+    for row, args in zip(rows, solve_args, strict=True):
+        expected = _solve_csv(args)
+        for key, value in expected.items():
+            head = re.sub(r"N/mm\^[0-9.]+", "N/mm^m", key)
+            assert row[head] == value, (args, key)
