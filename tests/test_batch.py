@@ -323,3 +323,12 @@ def test_geometry_and_overrides_equal_solve(tmp_path):
         for key, value in expected.items():
             head = re.sub(r"N/mm\^[0-9.]+", "N/mm^m", key)
             assert row[head] == value, (args, key)
+
+
+def test_not_utf8_is_an_error_and_writes_nothing(tmp_path):
+    p = tmp_path / "latin.csv"
+    p.write_bytes(b"balls,load,stiffness\n8,1kN,1e5\n" * 1 + b"8,1kN,1e5\xff\n")
+    target = tmp_path / "out.csv"
+    out = batch(str(p), "--format", "csv", "-o", str(target), "--chunk-size", "1")
+    assert out.exit_code == 2 and "not UTF-8 text" in out.stderr
+    assert not target.exists() and sorted(os.listdir(tmp_path)) == ["latin.csv"]

@@ -74,6 +74,8 @@ def batch(cases: TextIO, strict: bool, chunk_size: int, fmt: str, output: str | 
         first = next(stream, None)
     except InputError as exc:
         raise click.UsageError(_header_message(exc)) from exc
+    except UnicodeDecodeError as exc:
+        raise click.UsageError(_not_text(exc)) from exc
     assert first is not None  # chunks() yields the header at least once
     header = first[0]
     columns = batch_columns(header)
@@ -86,7 +88,7 @@ def batch(cases: TextIO, strict: bool, chunk_size: int, fmt: str, output: str | 
     with _Sink(fmt, output, strict) as sink:
         if fmt == "csv":
             sink.write(csv_head(columns))
-        for _, lines in _all(first, stream):
+        for _, lines in _decoded(_all(first, stream)):
             total += len(lines)
             part = solver.solve(lines)
             if part.errors and strict:
@@ -126,6 +128,18 @@ def batch(cases: TextIO, strict: bool, chunk_size: int, fmt: str, output: str | 
 def _all(first: Any, rest: Any) -> Any:
     yield first
     yield from rest
+
+
+def _decoded(parts: Any) -> Any:
+    """The chunks; a byte that is not UTF-8 is a usage error (nothing is written)."""
+    try:
+        yield from parts
+    except UnicodeDecodeError as exc:
+        raise click.UsageError(_not_text(exc)) from exc
+
+
+def _not_text(exc: UnicodeDecodeError) -> str:
+    return f"Invalid value for 'CASES.csv': not UTF-8 text ({exc.reason} at byte {exc.start})"
 
 
 def _header_message(exc: Exception) -> str:
