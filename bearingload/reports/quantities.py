@@ -90,7 +90,6 @@ QUANTITIES: dict[str, Quantity] = {
         Quantity("iterations", "solver iterations", "", None),
         Quantity("relative_error", "Q_max/Q_max,exact - 1", "-", 3, display=("%", 100.0)),
         Quantity("valid", "inside the model's range", "", None),
-        Quantity("warnings", "warnings", "", None),
         Quantity("warnings", "warnings (bearingload.bearings.checks)", "", None),
         # a cage sweep (bearingload sweep)
         Quantity("steps", "cage positions over one pitch", "", None),
@@ -125,6 +124,7 @@ QUANTITIES: dict[str, Quantity] = {
         Quantity("reference_rating_life", "reference rating life L10r (ISO/TS 16281)", "10^6 rev"),
         # per ball
         Quantity("ball", "ball", "", None),
+        Quantity("row", "row", "", None),  # bearingload batch: the input file's row (header: 1)
         Quantity("ball_angles_deg", "angle", "°"),
         Quantity("ball_approaches", "approach delta", "mm", display=_UM),
         Quantity("ball_loads", "load Q", "N"),

@@ -77,11 +77,7 @@ def solve_report(
     if fmt == "json":
         return render([], "json", document=_document(cases, records, exponent))
     if fmt == "csv":
-        table = (
-            _per_ball_table(cases, records)
-            if per_ball
-            else _case_table(records, [c.warnings for c in cases])
-        )
+        table = _per_ball_table(cases, records) if per_ball else _case_table(records)
         return render([table], "csv")
     tables = []
     if show_geometry and cases[0].bearing is not None:
@@ -106,19 +102,13 @@ def column(key: str, exponent: float | None = None, header: str | None = None) -
     return Column(key, header or q.label, unit, q.digits, align)
 
 
-_COUNTS = {"balls", "loaded_balls", "ball", "iterations"}
+_COUNTS = {"balls", "loaded_balls", "ball", "iterations", "row"}
 
 
-def _case_table(records: Sequence[dict[str, Any]], warnings: Sequence[Sequence[str]] = ()) -> Table:
-    """One row per case; the last column ``warnings`` (" | " between findings, empty when none)."""
+def _case_table(records: Sequence[dict[str, Any]]) -> Table:
     keys = _present(records, INPUT_KEYS + ANSWER_KEYS + ("valid",))
     exponent = records[0]["exponent"]
-    rows = [_blank(r, keys) for r in records]
-    found = list(warnings) or [()] * len(rows)
-    for row, w in zip(rows, found, strict=True):
-        row["warnings"] = " | ".join(w)
-    columns = [column(k, exponent) for k in keys] + [column("warnings")]
-    return Table("cases", columns, rows)
+    return Table("cases", [column(k, exponent) for k in keys], [_blank(r, keys) for r in records])
 
 
 def _blank(record: dict[str, Any], keys: Sequence[str]) -> dict[str, Any]:
