@@ -17,8 +17,9 @@ CONTEXT = {"help_option_names": ["-h", "--help"], "max_content_width": 100}
 class Quantity(click.ParamType):
     """A number with an optional unit suffix, converted to the package's internal unit."""
 
-    def __init__(self, kind: str) -> None:
+    def __init__(self, kind: str, *, positive: bool = False) -> None:
         self.kind = kind
+        self.positive = positive
         self.name = f"{kind} [{BASE_UNIT[kind]}]"
 
     def convert(
@@ -32,6 +33,8 @@ class Quantity(click.ParamType):
             self.fail(str(exc).split(": ", 1)[-1], param, ctx)
         if self.kind == "stiffness":
             return str(value)  # converted with the exponent by the command (stiffness_value)
+        if self.positive and not number > 0:
+            self.fail(f"must be greater than 0 {BASE_UNIT[self.kind]} (got {value})", param, ctx)
         return number
 
     def get_metavar(self, param: click.Parameter, ctx: click.Context | None = None) -> str:
