@@ -2,14 +2,27 @@
 
 from __future__ import annotations
 
+from typing import Any
+
 import numpy as np
 
 from bearingload.errors import InputError
 
 
 def finite(name: str, value: object) -> np.ndarray:
-    """Return ``value`` as a float array, raising :class:`InputError` on NaN or infinity."""
-    arr = np.asarray(value, dtype=float)
+    """Return ``value`` as a float array, raising :class:`InputError` on NaN or infinity, on
+    text (units belong to the command line: the library takes N, mm, N/mm^m, degrees) and on
+    booleans."""
+    if isinstance(value, (bool, np.bool_)) or np.asarray(value).dtype == bool:
+        raise InputError(name, f"must be a number, not a boolean (got {value!r})")
+    try:
+        arr = np.asarray(value, dtype=float)
+    except (TypeError, ValueError):
+        raise InputError(
+            name,
+            f"must be a number (got {value!r}); the library takes N, mm, N/mm^m and degrees "
+            "(bearingload.units.parse_quantity reads text with a unit)",
+        ) from None
     if not np.all(np.isfinite(arr)):
         raise InputError(name, "must be a finite number (got NaN or infinity)")
     return arr
@@ -52,6 +65,23 @@ def exponent(value: object, *, name: str = "exponent") -> np.ndarray:
             f"must be between 1 and 3 (1.5 for balls, 10/9 for rollers; got {_worst(arr, bad)})",
         )
     return arr
+
+
+def broadcast_shape(arrays: dict[str, Any]) -> tuple[int, ...]:
+    """The shape the named arrays broadcast to; :class:`InputError` names them when they do not
+    fit together or when there is no case at all (an empty array)."""
+    try:
+        shape = np.broadcast_shapes(*(np.shape(a) for a in arrays.values()))
+    except ValueError:
+        shapes = ", ".join(f"{k} {np.shape(v)}" for k, v in arrays.items() if np.ndim(v))
+        raise InputError(
+            ", ".join(k for k, v in arrays.items() if np.ndim(v)),
+            f"the array shapes do not broadcast together ({shapes})",
+        ) from None
+    if 0 in shape:
+        empty = [k for k, v in arrays.items() if np.size(v) == 0] or list(arrays)
+        raise InputError(", ".join(empty), "no case to solve: the array is empty")
+    return tuple(shape)
 
 
 def _worst(arr: np.ndarray, bad: np.ndarray) -> str:
