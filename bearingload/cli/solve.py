@@ -193,8 +193,10 @@ def solve(
                 "--misalignment) is solved by the exact model only"
             )
         bearings = _bearings(bearing, k_given, clearance, clearance_pick, exponent, **geometry)
-        emit(combined_text(bearings, load, cage_angle, combined, fmt, per_ball, show_geometry),
-             output)  # fmt: skip
+        text, found = combined_text(bearings, load, cage_angle, combined, fmt, per_ball,
+                                    show_geometry)  # fmt: skip
+        emit(text, output)
+        print_warnings(found, quiet)
         return
     if bearing is None and ball_diameter is None and pitch_diameter is None:
         cases = _by_hand(methods, balls, load, k_given, clearance, cage_angle, exponent)
