@@ -85,3 +85,27 @@ def test_loads_too_small_for_the_combined_solver_are_refused(capsys):
     code, out, err = run_entry(capsys, "solve", "6205", "-F", "1e-9N", "-A", "1e-9N")
     assert code == 2 and err.count("\n") == 1 and "RuntimeWarning" not in err
     assert "the loads are too small for the combined solver" in err
+
+
+@pytest.mark.parametrize(
+    "extra, message",
+    [
+        (["--modulus", "210GPa"], "Error: --modulus needs a BEARING or the ball geometry"),
+        (["--clearance-pick", "range"], "Error: --clearance-pick needs a BEARING"),
+        (["--poisson", "0.3", "--maker", "SKF"], "Error: --poisson, --maker need a BEARING"),
+    ],
+)
+def test_options_a_hand_given_ring_would_ignore_are_refused(capsys, extra, message):
+    code, out, err = run_entry(capsys, "solve", "-z", "8", "-F", "1kN", "-K", "1e5", *extra)
+    assert code == 2 and out == "" and err.count("\n") == 1 and err.startswith(message), err
+
+
+def test_the_largest_contact_angle_is_that_of_a_loaded_ball():
+    doc = json.loads(
+        invoke("solve", "6205", "-F", "1kN", "--misalignment", "0.1", "--format", "json").output
+    )
+    case = doc["cases"][0]
+    loaded = [
+        a for a, q in zip(case["contact_angles_deg"], case["ball_loads"], strict=True) if q > 0
+    ]
+    assert case["contact_angle_max_deg"] == max(loaded, key=abs)

@@ -168,9 +168,19 @@ def combined_values(c: CombinedCase) -> dict[str, Any]:
         "deflection_axial": float(r.axial),
         "tilt_deg": float(r.tilt),
         "tilt_cross_deg": float(r.tilt_cross),
-        "contact_angle_max_deg": float(abs(r.contact_angles).max()),
+        "contact_angle_max_deg": _largest_loaded_angle(r),
         "dynamic_rating": c.dynamic_rating,
         "equivalent_load": c.equivalent_load,
         "rating_life": c.rating_life,
         "reference_rating_life": c.reference_rating_life,
     }
+
+
+def _largest_loaded_angle(r: CombinedDistribution) -> float:
+    """The contact angle of largest size among the balls that carry load, with its sign. [°]"""
+    import numpy as np
+
+    angles = np.asarray(r.contact_angles, dtype=float).ravel()
+    loaded = np.asarray(r.ball_loads, dtype=float).ravel() > 0
+    pool = angles[loaded] if loaded.any() else angles
+    return float(pool[np.argmax(np.abs(pool))])
