@@ -86,7 +86,8 @@ _Y_MIN, _Y_MAX = -700.0, 700.0  # bracket of ln(eps)
 class ContinuumResult:
     """Solution of the continuum model for one case or an array of cases.
 
-    Every attribute is a numpy array of the broadcast input shape (0-d for scalar input).
+    Every attribute is a numpy array of the broadcast input shape; for one case given as
+    scalars, a Python ``int`` or ``float`` (the 2x2 and per-ball arrays stay arrays).
 
     Attributes
     ----------
@@ -335,19 +336,25 @@ def solve_continuum(
     stiff = force / d_max * (m + eps * (1.0 - 2.0 * eps) * dj / j)
     zone = np.where(eps <= 1.0, 2.0 * np.arcsin(np.sqrt(np.minimum(eps, 1.0))), np.pi)
     return ContinuumResult(
-        k=k.reshape(shape),
-        q_max=(k * force).reshape(shape),
-        K_Q=(k * z / 2.0).reshape(shape),
-        load_zone=np.rad2deg(zone).reshape(shape),
-        epsilon=eps.reshape(shape),
-        x=x.reshape(shape),
-        max_deflection=d_max.reshape(shape),
-        stiffness_radial=stiff.reshape(shape),
-        iterations=iterations.reshape(shape),
+        k=_shaped(k, shape),
+        q_max=_shaped((k * force), shape),
+        K_Q=_shaped((k * z / 2.0), shape),
+        load_zone=_shaped(np.rad2deg(zone), shape),
+        epsilon=_shaped(eps, shape),
+        x=_shaped(x, shape),
+        max_deflection=_shaped(d_max, shape),
+        stiffness_radial=_shaped(stiff, shape),
+        iterations=_shaped(iterations, shape),
     )
 
 
 # --------------------------------------------------------------------------- internals
+
+
+def _shaped(values: Any, shape: tuple[int, ...]) -> Any:
+    """``values`` in the case shape; a Python scalar for one scalar case."""
+    arr = np.asarray(values).reshape(shape)
+    return arr.item() if shape == () else arr
 
 
 def _scalar_or_array(values: np.ndarray, like: Any) -> Any:

@@ -60,7 +60,8 @@ __all__ = ["LoadDistribution", "solve", "MAX_ITERATIONS", "TOLERANCE"]
 class LoadDistribution:
     """Solution of the ring equilibrium for one case or an array of cases.
 
-    Every attribute is a numpy array of the broadcast input shape (0-d for scalar input).
+    Every attribute is a numpy array of the broadcast input shape; for one case given as
+    scalars, a Python ``int`` or ``float`` (the 2x2 and per-ball arrays stay arrays).
 
     Attributes
     ----------
@@ -122,7 +123,7 @@ class LoadDistribution:
         return self.k * self.balls / 2.0
 
     @property
-    def stiffness_radial(self) -> np.ndarray:
+    def stiffness_radial(self) -> Any:
         """Tangent radial stiffness ``dF_r/dx`` with the transverse force held at zero. [N/mm]
 
         The Schur complement ``K_xx - K_xy (K_xy/K_yy)`` (no squared term, so neither overflow
@@ -134,7 +135,8 @@ class LoadDistribution:
         kyy = self.stiffness_matrix[..., 1, 1]
         with np.errstate(divide="ignore", invalid="ignore"):
             ratio = np.where(kyy > 0, kxy / np.where(kyy > 0, kyy, 1.0), 0.0)
-        return kxx - kxy * ratio
+        out = np.asarray(kxx - kxy * ratio)
+        return out.item() if out.ndim == 0 else out
 
     def ball_angles(self) -> np.ndarray:
         """Angles ``phi_i`` of balls 1..z from the load line, in [0, 360), for one case. [°]"""
@@ -184,11 +186,14 @@ class LoadDistribution:
 
 
 def _lazy_field(name: str) -> property:
-    def get(self: Any) -> np.ndarray:
+    def get(self: Any) -> Any:
         cache = self.__dict__["_arrays"]
         arr = cache.get(name)
         if arr is None:
-            arr = cache[name] = np.asarray(self.__dict__["_values"][name])
+            value = self.__dict__["_values"][name]
+            arr = np.asarray(value)
+            # one case: a Python int or float for each quantity (arrays stay arrays)
+            arr = cache[name] = arr.item() if arr.ndim == 0 else arr
         return arr
 
     return property(get, doc=f"``{name}`` of the case (see LoadDistribution).")
@@ -448,7 +453,9 @@ def _assemble(
     matrix[:, 0, 1] = matrix[:, 1, 0] = rows[:, _COL["hxy"]] * to_n_mm
     matrix[:, 1, 1] = rows[:, _COL["hyy"]] * to_n_mm
 
-    def shaped(a: np.ndarray) -> np.ndarray:
+    def shaped(a: np.ndarray) -> Any:
+        if shape == ():  # one case: Python scalars, as the one-case path gives
+            return a.reshape(()).item()
         return a.reshape(shape)
 
     return LoadDistribution(
