@@ -17,14 +17,16 @@ from __future__ import annotations
 
 from collections.abc import Sequence
 from dataclasses import dataclass
-from typing import Any
+from typing import TYPE_CHECKING, Any
 
 import numpy as np
 
-from bearingload.bearings.resolve import ResolvedBearing, resolve_bearing
 from bearingload.models.case import Case, Result
 from bearingload.models.registry import get_method
 from bearingload.units import KGF
+
+if TYPE_CHECKING:  # the table command without a bearing does not load the catalogue
+    from bearingload.bearings.resolve import ResolvedBearing
 
 #: Young's modulus of Kuzmenko (2010), §3.4: 2.1e4 kgf/mm^2. [MPa]
 KUZMENKO2010_MODULUS = 2.1e4 * KGF
@@ -85,6 +87,8 @@ def for_bearing(bearing: ResolvedBearing, load: float, cage_angle: float | str =
 def kuzmenko2010_306(clearance: float) -> Conditions:
     """Bearing 306 under the conditions of Kuzmenko (2010) §3: catalogue geometry (= the
     paper's), E = 2.1e4 kgf/mm^2, nu = 0.3, exact Hertz stiffness, 300 kgf, G_r [mm]."""
+    from bearingload.bearings.resolve import resolve_bearing
+
     b = resolve_bearing("306", modulus=KUZMENKO2010_MODULUS, poisson=0.3, clearance=clearance)
     return for_bearing(b, KUZMENKO2010_LOAD)
 
