@@ -17,9 +17,9 @@ from __future__ import annotations
 from collections.abc import Sequence
 from typing import Any
 
-from bearingload.reports.quantities import QUANTITIES, units
+from bearingload.reports.quantities import units
 from bearingload.reports.render import Column, Table, render
-from bearingload.reports.solve import column
+from bearingload.reports.solve import column, quantity_rows
 from bearingload.studies.combined_bearing import CombinedCase, combined_values
 
 INPUT_KEYS = (
@@ -130,18 +130,7 @@ def _summary(records: Sequence[dict[str, Any]]) -> Table:
     if len({r["clearance"] for r in records}) > 1:
         keys.insert(0, "clearance")
     heads = ["value"] if len(records) == 1 else [f"G_r {r['clearance_pick']}" for r in records]
-    rows = []
-    for key in keys:
-        q = QUANTITIES[key]
-        for unit, factor in [q.shown()] + ([q.also] if q.also else []):
-            row: dict[str, Any] = {"quantity": q.label, "unit": unit or ""}
-            for h, r in zip(heads, records, strict=True):
-                v = r.get(key)
-                row[h] = "-" if v is None else (v * factor if q.digits else v)
-            rows.append(row)
-    columns = [Column("quantity", "quantity", align="left")]
-    columns += [Column(h, h, digits=6) for h in heads]
-    columns.append(Column("unit", "unit", align="left"))
+    columns, rows = quantity_rows(keys, heads, records)
     return Table(_title(records), columns, rows, list(NOTES))
 
 

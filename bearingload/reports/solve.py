@@ -158,8 +158,16 @@ def _summary(cases: Sequence[LoadedCase], records: Sequence[dict[str, Any]]) -> 
     keys = _present(records, ANSWER_KEYS)
     if len({r["clearance"] for r in records}) > 1:
         keys.insert(0, "clearance")
-    one = len(records) == 1
-    heads = ["value"] if one else [_heading(r) for r in records]
+    heads = ["value"] if len(records) == 1 else [_heading(r) for r in records]
+    columns, rows = quantity_rows(keys, heads, records)
+    return Table(_title(cases, records), columns, rows, _notes(cases, records))
+
+
+def quantity_rows(
+    keys: Sequence[str], heads: Sequence[str], records: Sequence[dict[str, Any]]
+) -> tuple[list[Column], list[dict[str, Any]]]:
+    """quantity | one column per case | unit: each quantity in its display unit, and again in
+    its second unit where it has one (Q_max in kgf); '-' where a case does not give it."""
     rows = []
     for key in keys:
         q = QUANTITIES[key]
@@ -172,7 +180,7 @@ def _summary(cases: Sequence[LoadedCase], records: Sequence[dict[str, Any]]) -> 
     columns = [Column("quantity", "quantity", align="left")]
     columns += [Column(h, h, digits=6) for h in heads]
     columns.append(Column("unit", "unit", align="left"))
-    return Table(_title(cases, records), columns, rows, _notes(cases, records))
+    return columns, rows
 
 
 def _title(cases: Sequence[LoadedCase], records: Sequence[dict[str, Any]]) -> str:

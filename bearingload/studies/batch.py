@@ -24,26 +24,6 @@ from bearingload.errors import BearingloadError, InputError
 from bearingload.studies.batch_input import CellParser, Header
 from bearingload.studies.loaded_bearing import DEFAULT_REVOLUTIONS
 
-#: Solved quantities of a row, in :mod:`bearingload.reports.solve` order (None: blank).
-SOLVED_KEYS = (
-    "q_max",
-    "k",
-    "K_Q",
-    "loaded_balls",
-    "load_zone_deg",
-    "x",
-    "y",
-    "stiffness_radial",
-    "approach_max",
-    "epsilon",
-    "p_max_inner",
-    "p_max_outer",
-    "rating_life",
-    "revolutions",
-    "allowable_load",
-    "valid",
-)
-
 
 @dataclass
 class Chunk:
