@@ -434,3 +434,52 @@ def test_bad_input_names_the_parameter(kwargs, parameter):
     with pytest.raises(InputError, match=parameter) as info:
         solve(**args)
     assert info.value.parameter == parameter
+
+
+# ---------------------------------------------------------------------------------------------
+# solve(tolerance=): each case driven below its own relative residual, for work-precision studies
+# ---------------------------------------------------------------------------------------------
+def _mp_relative_residual(r, i) -> float:
+    """|F - sum Q_i (cos, sin)| / max(F, sum |Q_i|) of case ``i`` in mpmath from its x, y."""
+    z, e, m = int(r.balls[i]), mp.mpf(float(r.clearance[i])) / 2, mp.mpf(float(r.exponent[i]))
+    phi1 = mp.radians(mp.mpf(float(r.cage_angle[i])))
+    x, y, kk, f = (mp.mpf(float(a[i])) for a in (r.x, r.y, r.stiffness, r.load))
+    fx = fy = total = mp.mpf(0)
+    for j in range(z):
+        phi = phi1 + 2 * mp.pi * j / z
+        d = x * mp.cos(phi) + y * mp.sin(phi) - e
+        if d > 0:
+            q = kk * d**m
+            fx, fy, total = fx + q * mp.cos(phi), fy + q * mp.sin(phi), total + q
+    return float(mp.sqrt((fx - f) ** 2 + fy**2) / max(f, total))
+
+
+@pytest.mark.parametrize("tolerance", [1e-2, 1e-4, 1e-6, 1e-8, 1e-10, 1e-12, 1e-14])
+def test_tolerance_drives_each_case_below_it(tolerance):
+    z = np.array([8, 9, 12, 40, 7, 9, 16])
+    g = np.array([0.0, 0.02, -0.01, 0.1, 0.0, -1e-3, 0.5])
+    cage = np.array([0.0, 20.0, 0.0, 4.5, 11.0, 0.0, 3.0])
+    r = solve(z, 1000.0, 1e5, g, cage, tolerance=tolerance)
+    for i in range(z.size):
+        assert _mp_relative_residual(r, i) <= max(tolerance, 1e-11) * 1.0001 + 1e-15
+
+
+def test_tolerance_loose_costs_fewer_iterations_and_stays_close():
+    z = np.array([8, 9, 12, 40, 7, 9])
+    g = np.array([0.0, 0.02, -0.01, 0.1, 0.0, -1e-3])
+    cage = np.array([0.0, 20.0, 0.0, 4.5, 11.0, 0.0])
+    tight = solve(z, 1000.0, 1e5, g, cage)
+    previous = None
+    for tol in (1e-2, 1e-6, 1e-10, 1e-14):
+        r = solve(z, 1000.0, 1e5, g, cage, tolerance=tol)
+        assert np.all(np.abs(r.q_max / tight.q_max - 1) <= 50 * tol + 1e-12)
+        if previous is not None:
+            assert np.all(r.iterations >= previous)
+        previous = r.iterations
+    assert np.all(solve(z, 1000.0, 1e5, g, cage, tolerance=1e-1).iterations <= tight.iterations)
+
+
+@pytest.mark.parametrize("bad", [0.0, 1e-16, 0.5, float("nan"), -1e-3, "x"])
+def test_tolerance_outside_its_range_is_refused(bad):
+    with pytest.raises(InputError, match="tolerance"):
+        solve(8, 1.0, 1.0, tolerance=bad)

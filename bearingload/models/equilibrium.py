@@ -171,6 +171,8 @@ def solve(
     clearance: Any = 0.0,
     cage_angle: Any = 0.0,
     exponent: Any = 1.5,
+    *,
+    tolerance: float = TOLERANCE,
 ) -> LoadDistribution:
     """Solve the equilibrium of the inner ring: the exact discrete load distribution.
 
@@ -188,6 +190,11 @@ def solve(
         Angle of ball 1 from the load line; 0 = a ball under the load, ``180/z`` = half pitch. [°]
     exponent : float or array_like, default 1.5
         Load-deflection exponent ``m``: 3/2 for balls (point contact), 10/9 for rollers. [-]
+    tolerance : float, keyword-only, default 1e-13
+        Relative equilibrium residual each case is driven below, 1e-15 to 1e-1: the force
+        residual over the larger of the load and the ball forces (preload). Each case stops as
+        soon as its own residual is below it (``iterations`` counts per case); below about 1e-14
+        a case may instead stop where the Newton step no longer changes the displacement. [-]
 
     Returns
     -------
@@ -218,6 +225,7 @@ def solve(
     phi1_deg = np.mod(validate.finite("cage_angle", cage_angle), 360.0)
     phi1 = np.deg2rad(phi1_deg)
     m = validate.exponent(exponent)
+    tol = _tolerance(tolerance)
     z, f, kk, g, phi1, phi1_deg, m = np.broadcast_arrays(z, f, kk, g, phi1, phi1_deg, m)
     shape = z.shape
     z, f, kk, g, phi1, phi1_deg, m = (a.ravel() for a in (z, f, kk, g, phi1, phi1_deg, m))
@@ -258,10 +266,10 @@ def solve(
         eh, mm = e_sorted[part], m_sorted[part]
         if kd == 2:
             ring = _Ring.general(zz, frac_sorted[part] * 2.0 * np.pi / zz)
-            _store(_solve_general(ring, eh, mm), ring, part, eh, mm, False, res)
+            _store(_solve_general(ring, eh, mm, tol), ring, part, eh, mm, False, res)
         else:
             ring = _Ring.symmetric(zz, half_pitch=kd == 1, front=not preload)
-            _store(_solve_symmetric(ring, eh, mm), ring, part, eh, mm, True, res)
+            _store(_solve_symmetric(ring, eh, mm, tol), ring, part, eh, mm, True, res)
     rows = np.empty_like(res)
     rows[order] = res  # back to the order of the cases, all columns at once
     xi, eta, x0, y0 = (rows[:, _COL[k]] for k in ("xi", "eta", "x0", "y0"))
@@ -307,6 +315,23 @@ def solve(
         offset=np.stack([xi * scale, eta * scale], axis=-1).reshape(shape + (2,)),
         reference=rows[:, [_COL["mu"], _COL["h"]]].reshape(shape + (2,)),
     )
+
+
+#: Range of the ``tolerance`` argument of :func:`solve`. [-]
+TOLERANCE_RANGE = (1e-15, 1e-1)
+
+
+def _tolerance(value: Any) -> float:
+    """The relative residual tolerance as a float inside TOLERANCE_RANGE, or InputError."""
+    lo, hi = TOLERANCE_RANGE
+    try:
+        tol = float(value)
+    except (TypeError, ValueError):
+        msg = f"must be a number from {lo:g} to {hi:g} (got {value!r})"
+        raise InputError("tolerance", msg) from None
+    if not lo <= tol <= hi:
+        raise InputError("tolerance", f"must be from {lo:g} to {hi:g} (got {tol!r})")
+    return tol
 
 
 #: Range of the one-ball approach (F_r/K)^(1/m) the solver accepts, and of the clearance in
@@ -451,7 +476,9 @@ class _Solved:
     derived: tuple[np.ndarray, np.ndarray, np.ndarray] | None = None
 
 
-def _solve_symmetric(ring: _Ring, e_hat: np.ndarray, m: np.ndarray) -> _Solved:
+def _solve_symmetric(
+    ring: _Ring, e_hat: np.ndarray, m: np.ndarray, tol: float = TOLERANCE
+) -> _Solved:
     """Solve ``sum w Q(delta) c = 1`` for the scaled approach ``xi`` with ``eta = 0``.
 
     Bracketed Newton: the bracket [lo, hi] always holds the root; a Newton step leaving it is
@@ -510,7 +537,7 @@ def _solve_symmetric(ring: _Ring, e_hat: np.ndarray, m: np.ndarray) -> _Solved:
         slope = float(np.sum(w[front] * c[front] ** m0 * u[front])) / sum_c
         xi = np.where(e_hat >= 0, np.minimum(xi0 + slope * e_hat, hi), hi)
         if not preloaded:
-            return _newton_convex(ring, e_hat, m0, xi)
+            return _newton_convex(ring, e_hat, m0, xi, tol)
     last = np.full(n, np.inf)
     iterations = np.zeros(n, dtype=np.int64)
     active = everyone
@@ -523,7 +550,7 @@ def _solve_symmetric(ring: _Ring, e_hat: np.ndarray, m: np.ndarray) -> _Solved:
             new = x - g / dg
         outside = ~((new > lo_a) & (new < hi_a))
         new = np.where(outside, 0.5 * (lo_a + hi_a), new)
-        done = (np.abs(g) <= TOLERANCE) | (np.abs(new - x) <= 4e-16 * np.abs(x))
+        done = (np.abs(g) <= tol) | (np.abs(new - x) <= 4e-16 * np.abs(x))
         xi[active] = np.where(done, x, new)
         last[active] = g
         lo[active], hi[active] = lo_a, hi_a
@@ -533,11 +560,13 @@ def _solve_symmetric(ring: _Ring, e_hat: np.ndarray, m: np.ndarray) -> _Solved:
             break
     # each case stopped at a point whose residual was evaluated: that residual is the proof
     last[active] = np.inf
-    _check(last, "symmetric ring equilibrium", iterations, e_hat, m)
+    _check(last, "symmetric ring equilibrium", iterations, e_hat, m, tol)
     return _Solved(xi=xi, eta=np.zeros(n), iterations=iterations)
 
 
-def _newton_convex(ring: _Ring, e_hat: np.ndarray, m: float, start: np.ndarray) -> _Solved:
+def _newton_convex(
+    ring: _Ring, e_hat: np.ndarray, m: float, start: np.ndarray, tol: float = TOLERANCE
+) -> _Solved:
     """Plain Newton for a shared ring with clearance >= 0: the fast path of the symmetric solver.
 
     With ``e >= 0`` only balls ahead of 90° are in the ring, the residual is convex and increasing
@@ -566,7 +595,7 @@ def _newton_convex(ring: _Ring, e_hat: np.ndarray, m: float, start: np.ndarray) 
             g = q @ cw - 1.0
         dg = dq @ c2w
         step = g / dg
-        done = (np.abs(g) <= TOLERANCE) | (np.abs(step) <= 4e-16 * xa)
+        done = (np.abs(g) <= tol) | (np.abs(step) <= 4e-16 * xa)
         xi[active] = np.where(done, xa, xa - step)
         last[active] = g
         iterations[active] = it
@@ -579,15 +608,17 @@ def _newton_convex(ring: _Ring, e_hat: np.ndarray, m: float, start: np.ndarray) 
         if active.size == 0:
             break
     last[active] = np.inf
-    _check(last, "symmetric ring equilibrium", iterations, e_hat, np.full(n, m))
+    _check(last, "symmetric ring equilibrium", iterations, e_hat, np.full(n, m), tol)
     return _Solved(xi=xi, eta=np.zeros(n), iterations=iterations, derived=(loaded, hxx, hyy))
 
 
-def _solve_general(ring: _Ring, e_hat: np.ndarray, m: np.ndarray) -> _Solved:
+def _solve_general(
+    ring: _Ring, e_hat: np.ndarray, m: np.ndarray, tol: float = TOLERANCE
+) -> _Solved:
     """Minimise the scaled potential in (xi, eta) by damped Newton with an Armijo line search."""
     c, s, u = ring.c, ring.s, ring.u
     cc, cs, ss = c * c, c * s, s * s
-    first = _solve_symmetric(ring, e_hat, m)  # x-equilibrium alone, y = 0: the starting point
+    first = _solve_symmetric(ring, e_hat, m, tol)  # x-equilibrium alone, y = 0: the starting point
     xi, eta = first.xi.copy(), np.zeros(e_hat.size)
     iterations = first.iterations.copy()
     mm = m
@@ -610,7 +641,7 @@ def _solve_general(ring: _Ring, e_hat: np.ndarray, m: np.ndarray) -> _Solved:
         a, b, eh, mv = xi[active], eta[active], e_hat[active], mm[active]
         energy, gx, gy, hxx, hxy, hyy, size = state(a, b, eh, mv, active)
         gnorm = np.hypot(gx, gy)
-        done = gnorm <= TOLERANCE * size
+        done = gnorm <= tol * size
         reg = 1e-12 * (hxx + hyy) + 1e-300
         hxx, hyy = hxx + reg, hyy + reg
         det = hxx * hyy - hxy * hxy
@@ -643,16 +674,30 @@ def _solve_general(ring: _Ring, e_hat: np.ndarray, m: np.ndarray) -> _Solved:
         )
     _, gx, gy, *_, size = state(xi, eta, e_hat, mm, np.arange(e_hat.size))
     _check(
-        np.hypot(gx, gy) / size, "ring equilibrium at a general cage angle", iterations, e_hat, m
+        np.hypot(gx, gy) / size,
+        "ring equilibrium at a general cage angle",
+        iterations,
+        e_hat,
+        m,
+        tol,
     )
     return _Solved(xi=xi, eta=eta, iterations=iterations)
 
 
 def _check(
-    residual: np.ndarray, solver: str, iterations: np.ndarray, e_hat: np.ndarray, m: np.ndarray
+    residual: np.ndarray,
+    solver: str,
+    iterations: np.ndarray,
+    e_hat: np.ndarray,
+    m: np.ndarray,
+    tol: float = TOLERANCE,
 ) -> None:
-    """Raise ConvergenceError where the residual is not small; never return a silent wrong number."""
-    bad = ~(np.abs(residual) <= 1e-11)
+    """Raise ConvergenceError where the residual is not small; never return a silent wrong number.
+
+    A case may stop where the Newton step no longer moves it, short of a tolerance below what
+    double precision resolves; 1e-11 is the most such a stop may leave.
+    """
+    bad = ~(np.abs(residual) <= max(tol, 1e-11))
     if np.any(bad):
         raise ConvergenceError(
             solver,
