@@ -14,7 +14,14 @@ from bearingload import __version__
 from bearingload.cli.options import CONTEXT
 
 #: Command name -> module of this package defining a command object of the same name.
-COMMANDS = {"solve": "solve", "table": "table", "catalog": "catalog", "fit": "fit"}
+COMMANDS = {
+    "solve": "solve",
+    "table": "table",
+    "catalog": "catalog",
+    "fit": "fit",
+    "accuracy": "accuracy",
+    "stability": "stability",
+}
 
 
 class LazyGroup(click.Group):

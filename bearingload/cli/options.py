@@ -145,6 +145,7 @@ OPTION_NAMES = {
     "revolutions": "--revolutions",
     "series": "--series",
     "standard": "--standard",
+    "plot": "--plot",
 }
 
 

@@ -335,7 +335,15 @@ def solve_continuum(
         )
 
     y, iterations = _solve_log_epsilon(
-        eta, m, j0, nodes or NODES_SOLVER, balls=z, load=force, stiffness=k_ball, clearance=2.0 * e, exponent=m
+        eta,
+        m,
+        j0,
+        nodes or NODES_SOLVER,
+        balls=z,
+        load=force,
+        stiffness=k_ball,
+        clearance=2.0 * e,
+        exponent=m,
     )
     eps = np.exp(y)
     j, dj = _jr(eps, m, nodes or NODES_FINAL, derivative=True)

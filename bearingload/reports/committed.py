@@ -16,6 +16,7 @@ from bearingload.reports.render import Table, render, write_atomic
 
 
 def _registry() -> dict[str, Callable[[], Table]]:
+    from bearingload.studies.accuracy import accuracy_table
     from bearingload.studies.bearing_tables import kuzmenko2010_306_table
     from bearingload.studies.method_tables import table_compare
     from bearingload.studies.tables import table_k, table_kq
@@ -30,6 +31,8 @@ def _registry() -> dict[str, Callable[[], Table]]:
         "table2_kq_306_300kgf_gr100um": lambda: kuzmenko2010_306_table("kq", 0.100),
         # exact, continuum, Stribeck and Palmgren side by side (issue 4), Table 1 conditions
         "k_methods_zero_clearance": lambda: table_compare("k", 30),
+        # work-precision of every method (issue 9): errors and iterations, no times
+        "accuracy": accuracy_table,
     }
 
 
