@@ -34,11 +34,14 @@ lint: $(STAMP)
 tables: $(STAMP)
 	$(BIN)/python -m bearingload.reports.committed tables
 
-## make bench: vectorised solver against a per-case scipy brentq loop, same run
+## make bench: vectorised solver against a per-case scipy brentq loop, same run; the
+## work-precision report (times of this run) and the full stability grid
 bench: $(STAMP)
 	$(BIN)/python -m compileall -q bearingload
 	$(BIN)/python benchmarks/bench_solver.py
 	$(BIN)/python benchmarks/bench_methods.py
+	$(BIN)/bearingload accuracy
+	$(BIN)/bearingload stability --size full
 
 clean:
 	rm -rf $(VENV) build *.egg-info .pytest_cache .mypy_cache .ruff_cache .hypothesis

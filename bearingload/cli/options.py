@@ -146,6 +146,8 @@ OPTION_NAMES = {
     "series": "--series",
     "standard": "--standard",
     "plot": "--plot",
+    "family": "--family",
+    "size": "--size",
 }
 
 

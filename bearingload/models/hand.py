@@ -173,9 +173,7 @@ def kuzmenko2010_trial(
     j = np.where(take_lo, lo, hi)
     cos0 = np.cos(np.deg2rad(j * step))
     q = kk * e**m * np.maximum(c.max(axis=1) / cos0 - 1.0, 0.0) ** m
-    return TrialResult(
-        *(_out(a.reshape(shape)) for a in (q / f, q, j * step, evaluations))  # type: ignore[arg-type]
-    )
+    return TrialResult(*(_out(a.reshape(shape)) for a in (q / f, q, j * step, evaluations)))
 
 
 def table_jr(epsilon: Any) -> np.ndarray:

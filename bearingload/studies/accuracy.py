@@ -162,9 +162,20 @@ def _best_time(call: Callable[[], Any], repeats: int) -> float:
     return best
 
 
-def _one_at_a_time(method: Method, cases: Cases) -> None:
-    for i in range(len(cases)):
-        method.run(cases.take(np.array([i])))
+def _time_loop(method: Method, cases: Cases, repeats: int) -> float:
+    """Best time of running the cases one per call."""
+    singles = [cases.take(np.array([i])) for i in range(len(cases))]
+
+    def loop() -> None:
+        for one in singles:
+            method.run(one)
+
+    return _best_time(loop, repeats)
+
+
+def _time_call(method: Method, cases: Cases, repeats: int) -> float:
+    """Best time of one vectorised call on all the cases."""
+    return _best_time(lambda: method.run(cases), repeats)
 
 
 def measure(*, timing: bool = False, repeats: int = 5, copies: int = 200) -> list[dict[str, Any]]:
@@ -189,12 +200,8 @@ def measure(*, timing: bool = False, repeats: int = 5, copies: int = 200) -> lis
         }
         if timing:
             many = cases.tile(copies)
-            row["seconds_per_case"] = _best_time(
-                lambda m=method, c=cases: _one_at_a_time(m, c), repeats
-            ) / len(cases)
-            row["seconds_per_case_vectorised"] = _best_time(
-                lambda m=method, c=many: m.run(c), repeats
-            ) / len(many)
+            row["seconds_per_case"] = _time_loop(method, cases, repeats) / len(cases)
+            row["seconds_per_case_vectorised"] = _time_call(method, many, repeats) / len(many)
         rows.append(row)
     return rows
 
