@@ -6,7 +6,7 @@ VENV := .venv
 BIN := $(VENV)/bin
 STAMP := $(VENV)/.installed
 
-.PHONY: run test lint tables bench clean
+.PHONY: run test lint tables golden bench clean
 
 $(STAMP): pyproject.toml
 	$(PY) -m venv $(VENV)
@@ -33,6 +33,10 @@ lint: $(STAMP)
 
 tables: $(STAMP)
 	$(BIN)/python -m bearingload.reports.committed tables
+
+## make golden: rewrite the stored CLI outputs (tests/golden/) and the README's console examples
+golden: $(STAMP)
+	$(BIN)/python -m tests.golden_outputs
 
 ## make bench: vectorised solver against a per-case scipy brentq loop, same run; the
 ## work-precision report (times of this run) and the full stability grid

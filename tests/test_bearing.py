@@ -10,8 +10,8 @@ from bearingload.contact.hertz import ball_stiffness
 from bearingload.errors import InputError
 from bearingload.models.equilibrium import solve
 from bearingload.reports import committed
-from bearingload.reports.bearing import solve_bearing
 from bearingload.studies.bearing_tables import KUZMENKO2010_LOAD, kuzmenko2010_306
+from bearingload.studies.loaded_bearing import solve_bearing
 from bearingload.units import KGF
 
 # NSK Rolling Bearings catalogue, Table 9.9 (ISO 5753-1), deep groove ball bearings, bore over
@@ -39,7 +39,7 @@ def test_peer_6305_end_to_end(clearance, delta_um):
     ball set: geometry -> exact Hertz K -> ring equilibrium -> inner-ring displacement."""
     b = resolve_bearing("6305", clearance=clearance, **PEER_6305)
     assert b.pitch_diameter == 43.5 and (b.f_i, b.f_o) == (0.52, 0.53)
-    case = solve_bearing(b, PEER_LOAD)
+    (case,) = solve_bearing([b], PEER_LOAD)
     # measured: 15.11020 and 21.22281 µm, i.e. 7 ppm above and 4 ppm below the reference
     assert float(case.result.x) * 1e3 == pytest.approx(delta_um, rel=1e-5)
     assert int(case.result.loaded_balls) == 3
@@ -152,7 +152,7 @@ def test_range_needs_a_class():
 
 def test_pressures_life_and_allowable_load_of_a_case():
     b = resolve_bearing("306", clearance=0.02)
-    case = solve_bearing(b, 300 * KGF, revolutions=36e6)
+    (case,) = solve_bearing([b], 300 * KGF, revolutions=36e6)
     from bearingload.contact.hertz import ball_contacts
 
     c = ball_contacts(float(case.result.q_max), 12.3, 51.0, 0.515, 0.515, 208000.0, 0.3)

@@ -40,56 +40,61 @@ def test_default_method_is_exact():
 
 def test_solve_all_side_by_side():
     text = invoke("solve", *CASE_306, "--method", "all").output
-    assert text.startswith("Methods side by side (z = 8, F_r = 2941.99 N (300 kgf), K = 46091.3")
+    assert text.startswith("z = 8, F_r = 2941.99 N (300 kgf), K = 46091.3")
     lines = text.splitlines()
-    assert (
-        "exact      0.55770   2.2308    1640.75      167.310         85.147             0  nothing"
-        in lines
-    )
-    assert (
-        "continuum  0.56255   2.2502    1655.01      168.764         85.173         0.869  --cage-angle"
-        in lines
-    )
-    assert (
-        "stribeck   0.54625   2.1850    1607.06      163.875              -         -2.05  --stiffness, --clearance, --cage-angle, --exponent"
-        in lines
-    )
-    assert (
-        "palmgren   0.62500   2.5000    1838.75      187.500              -          12.1  --stiffness, --clearance, --cage-angle, --exponent"
-        in lines
-    )
-    assert "Stribeck and Palmgren ignore stiffness, clearance, cage angle and exponent." in text
+    squeezed = {" ".join(x.split()) for x in lines}
+    for line in (
+        "quantity                                    exact  continuum  stribeck  palmgren  unit",
+        "heaviest ball load Q_max                  1640.75    1655.01   1607.06   1838.75  N",
+        "heaviest ball load Q_max                  167.310    168.764   163.875   187.500  kgf",
+        "load factor k = Q_max/F_r                0.557699   0.562547  0.546250  0.625000  -",
+        "load concentration K_Q = k z/2            2.23080    2.25019   2.18500   2.50000  -",
+        "load zone half-angle                      85.1474    85.1730         -         -  °",
+        "Q_max/Q_max,exact - 1                           0   0.869193  -2.05298   12.0675  %",
+    ):
+        assert " ".join(line.split()) in squeezed, line
+    assert "continuum: continuum model, each ball's load smeared over its pitch (Kuzmenko 2010, §4-5); ignores cage angle." in lines  # fmt: skip
+    assert "stribeck: Stribeck (1901): Q_max = 4.37 F_r/z; ignores stiffness, clearance, cage angle, exponent." in lines  # fmt: skip
+    # Stribeck's constant is for zero clearance: the case is outside its range, and it says so
+    assert any(x.startswith("Warning: stribeck: the case is outside") for x in lines)
 
 
 def test_solve_all_json_relative_errors():
     doc = json.loads(invoke("solve", *CASE_306, "--method", "all", "--format", "json").output)
-    assert list(doc["methods"]) == list_methods()
+    by = {c["method"]: c for c in doc["cases"]}
+    assert list(by) == list_methods()
     r = solve(8, 300 * KGF, 4700 * KGF, 0.02)
-    exact = doc["methods"]["exact"]
+    exact = by["exact"]
     assert exact["q_max"] == pytest.approx(float(r.q_max), rel=1e-9)
     assert exact["relative_error"] == 0.0
-    stribeck = doc["methods"]["stribeck"]
+    stribeck = by["stribeck"]
     assert stribeck["q_max"] == pytest.approx(4.37 * 300 * KGF / 8, rel=1e-9)
     assert stribeck["relative_error"] == pytest.approx(
         stribeck["q_max"] / exact["q_max"] - 1, abs=1e-9
     )
     assert stribeck["load_zone_deg"] is None and "clearance" in stribeck["ignores"]
-    assert doc["methods"]["continuum"]["ignores"] == ["cage_angle"]
+    assert stribeck["valid"] is False and by["palmgren"]["valid"] is True
+    assert by["continuum"]["ignores"] == ["cage_angle"]
+    assert doc["units"]["relative_error"] == "-" if "relative_error" in doc["units"] else True
 
 
 def test_solve_continuum_same_keys_as_exact():
-    exact = json.loads(invoke("solve", *CASE_306, "--format", "json").output)
+    exact = json.loads(invoke("solve", *CASE_306, "--format", "json").output)["cases"][0]
     cont = json.loads(
         invoke("solve", *CASE_306, "--method", "continuum", "--format", "json").output
-    )
-    shared = {"k", "q_max", "load_zone_deg", "K_Q", "deflection", "stiffness_radial", "balls",
+    )["cases"][0]
+    # one key per quantity in every model: the same set of keys, None where a model gives none
+    assert set(exact) - {"ball_angles_deg", "ball_approaches", "ball_loads", "stiffness_matrix"} == set(cont)  # fmt: skip
+    shared = {"k", "q_max", "load_zone_deg", "K_Q", "x", "stiffness_radial", "balls",
               "load", "stiffness", "clearance", "cage_angle_deg", "exponent"}  # fmt: skip
-    assert shared <= set(exact) and shared <= set(cont)
+    assert all(cont[k] is not None and exact[k] is not None for k in shared)
     r = solve_continuum(8, 300 * KGF, 4700 * KGF, 0.02)
     assert cont["k"] == pytest.approx(float(r.k), rel=1e-9)
     assert cont["K_Q"] == pytest.approx(float(r.K_Q), rel=1e-9)
     assert cont["load_zone_deg"] == pytest.approx(float(r.load_zone), rel=1e-9)
-    assert cont["deflection"] == pytest.approx(float(r.deflection), rel=1e-9)
+    assert cont["x"] == pytest.approx(float(r.x), rel=1e-9)
+    assert cont["approach_max"] == pytest.approx(float(r.max_deflection), rel=1e-9)
+    assert cont["epsilon"] == pytest.approx(float(r.epsilon), rel=1e-9)
     assert cont["method"] == "continuum"
     # the two models agree to 0.9 % on bearing 306 (and to 0.03 deg on the load zone)
     assert cont["q_max"] / exact["q_max"] - 1 == pytest.approx(0.00869, abs=5e-5)
@@ -99,13 +104,14 @@ def test_solve_continuum_same_keys_as_exact():
 def test_solve_continuum_table_lines():
     text = invoke("solve", *CASE_306, "--method", "continuum").output
     for line in (
-        "load factor k = Q_max/F_r            0.562547  -",
-        "heaviest ball load Q_max              168.764  kgf",
-        "load zone half-angle                  85.1730  °",
-        "load-zone parameter epsilon          0.457927  -",
+        "load factor k = Q_max/F_r                0.562547  -",
+        "heaviest ball load Q_max                  168.764  kgf",
+        "load zone half-angle                      85.1730  °",
+        "heaviest ball approach delta_max          108.840  µm",
+        "load-zone parameter epsilon              0.457927  -",
     ):
-        assert line in text.splitlines()
-    assert "--cage-angle is ignored" in text
+        assert " ".join(line.split()) in {" ".join(x.split()) for x in text.splitlines()}, line
+    assert "ignores cage angle." in text
 
 
 @pytest.mark.parametrize(
@@ -114,19 +120,22 @@ def test_solve_continuum_table_lines():
 def test_solve_one_line_estimates(method, constant, kgf):
     text = invoke("solve", *CASE_306, "--method", method).output
     assert f"heaviest ball load Q_max         {kgf}  kgf" in text.splitlines()  # 4.37 (5) x 300/8
-    assert "it ignores --stiffness, --clearance, --cage-angle, --exponent." in text
+    assert "ignores stiffness, clearance, cage angle, exponent." in text
     doc = json.loads(invoke("solve", *CASE_306, "--method", method, "--format", "json").output)
-    assert doc["k"] == constant / 8 and doc["load_zone_deg"] is None
-    assert {"k", "q_max", "K_Q", "load_zone_deg"} <= set(doc)
+    case = doc["cases"][0]
+    assert case["k"] == constant / 8 and case["load_zone_deg"] is None
+    assert {"k", "q_max", "K_Q", "load_zone_deg"} <= set(case)
 
 
 def test_solve_method_with_a_bearing_designation():
     text = invoke("solve", "306", "-F", "300kgf", "-G", "20um", "--method", "all").output
-    assert "z, K (exact Hertz) and G_r of bearing 306" in text
+    assert text.startswith("Bearing 306, z = 8, F_r = 2941.99 N (300 kgf), K = 404566 N/mm^1.5")
     doc = json.loads(
         invoke("solve", "306", "-F", "300kgf", "-G", "20um", "--method", "continuum", "--format", "json").output
     )  # fmt: skip
-    assert doc["balls"] == 8 and doc["clearance"] == 0.02 and doc["method"] == "continuum"
+    case = doc["cases"][0]
+    assert case["balls"] == 8 and case["clearance"] == 0.02 and case["method"] == "continuum"
+    assert doc["bearing"]["designation"] == "306"
 
 
 @pytest.mark.parametrize(
@@ -145,13 +154,17 @@ def test_method_errors_are_one_line(capsys, args, message):
     assert err.startswith(message), err
 
 
-def test_range_pick_needs_exact(capsys):
-    code, _, err = run_cli(capsys, "solve", "306", "-F", "300kgf", "-G", "C3", "--clearance-pick",
-                           "range", "--method", "all")  # fmt: skip
-    assert code == 2 and err.count("\n") == 1
-    assert err.startswith(
-        "Error: Invalid value for '--clearance-pick': 'range' works with --method exact only"
-    )
+def test_range_pick_with_every_method():
+    """A clearance range by every model: one column (json: one case) per clearance and model."""
+    doc = json.loads(invoke("solve", "306", "-F", "300kgf", "-G", "C3", "--clearance-pick", "range",
+                            "--method", "all", "--format", "json").output)  # fmt: skip
+    cases = doc["cases"]
+    assert [(c["clearance_pick"], c["method"]) for c in cases] == [
+        (p, m) for p in ("min", "mean", "max") for m in list_methods()
+    ]
+    for c in cases:
+        ref = next(x for x in cases if x["method"] == "exact" and x["clearance"] == c["clearance"])
+        assert c["relative_error"] == pytest.approx(c["q_max"] / ref["q_max"] - 1, abs=1e-9)
 
 
 # --------------------------------------------------------------------------- table --method

@@ -253,7 +253,7 @@ def test_solver_matches_mpmath_findroot(case):
     r = solve_continuum(z, load, k_ball, gr, m)
     x_ref = mp_solve(z, load, k_ball, gr, m)
     e = gr / 2
-    assert float(r.deflection) == pytest.approx(float(x_ref), rel=1e-12)
+    assert float(r.x) == pytest.approx(float(x_ref), rel=1e-12)
     d_ref = x_ref - e
     q_ref = k_ball * d_ref**m
     assert float(r.q_max) == pytest.approx(float(q_ref), rel=1e-11)
@@ -275,7 +275,7 @@ def test_paper_resolving_equation_5_12(case):
     r = solve_continuum(z, load, k_ball, gr, m)
     delta = gr / 2
     phi0 = math.radians(float(r.load_zone))
-    assert math.cos(phi0) == pytest.approx(delta / float(r.deflection), rel=1e-12)
+    assert math.cos(phi0) == pytest.approx(delta / float(r.x), rel=1e-12)
     assert float(r.max_deflection) == pytest.approx(delta * (1 / math.cos(phi0) - 1), rel=1e-11)
     with mp.workdps(30):
         c0 = mp.cos(mp.mpf(phi0))
@@ -301,7 +301,7 @@ def test_zero_clearance_limit_and_scalars():
     assert int(r.iterations) == 0
     # x = (F/(z K J0))^(1/m), stiffness = m F/x
     x = (1000.0 / (8 * 1e5 / load_zone_integral(0.5) ** -1)) ** (1 / 1.5)
-    assert float(r.deflection) == pytest.approx(x, rel=1e-13)
+    assert float(r.x) == pytest.approx(x, rel=1e-13)
     assert float(r.stiffness_radial) == pytest.approx(1.5 * 1000.0 / x, rel=1e-12)
 
 
@@ -314,7 +314,7 @@ def test_array_broadcast_equals_scalar_calls():
         for j in range(3):
             s = solve_continuum(10, loads[j], 2e5, gr[i, 0])
             assert r.k[i, j] == pytest.approx(float(s.k), rel=1e-14)
-            assert r.deflection[i, j] == pytest.approx(float(s.deflection), rel=1e-14)
+            assert r.x[i, j] == pytest.approx(float(s.x), rel=1e-14)
 
 
 def test_extreme_cases_converge_without_nan():
@@ -325,7 +325,7 @@ def test_extreme_cases_converge_without_nan():
         "k",
         "q_max",
         "epsilon",
-        "deflection",
+        "x",
         "max_deflection",
         "stiffness_radial",
         "load_zone",
@@ -355,7 +355,7 @@ def test_light_preload_stiffness_limit():
 )
 def test_property_resolving_equation_residual(z, load, k_ball, gr, m):
     r = solve_continuum(z, load, k_ball, gr, m)
-    d, x, eps = float(r.max_deflection), float(r.deflection), float(r.epsilon)
+    d, x, eps = float(r.max_deflection), float(r.x), float(r.epsilon)
     assert np.isfinite([d, x, eps, float(r.k), float(r.stiffness_radial)]).all()
     # the force equation F = z K d^m J_r(d/(2x)) ...
     f = z * k_ball * d**m * load_zone_integral(d / (2 * x), m)
@@ -425,6 +425,6 @@ def test_convergence_error_carries_cases(monkeypatch):
 
 def test_continuum_load_inverts_solver():
     r = solve_continuum(9, np.array([1.0, 1e3, 1e5]), 3e5, 0.02)
-    f = continuum.continuum_load(9, r.deflection, 3e5, 0.02)
+    f = continuum.continuum_load(9, r.x, 3e5, 0.02)
     assert np.allclose(f, [1.0, 1e3, 1e5], rtol=1e-9)
     assert continuum.continuum_load(9, 0.005, 3e5, 0.02) == 0.0  # x < e: no contact

@@ -109,7 +109,19 @@ def test_csv_headers_carry_units():
         )
         .output
     )
-    assert "ball,angle [°],approach [µm],load [N]" in out.splitlines()
+    header = out.splitlines()[0]
+    assert header.startswith(
+        "method,balls,load [N],stiffness [N/mm^1.5],clearance [mm],cage_angle_deg [°]"
+    )
+    assert (
+        ",q_max [N]," in header and ",x [mm]," in header and ",stiffness_radial [N/mm]," in header
+    )
+    per_ball = CliRunner().invoke(
+        main, ["solve", "-z", "8", "-F", "300kgf", "-K", "4700kgf/mm^1.5", "--format", "csv", "--per-ball"]
+    ).output  # fmt: skip
+    assert per_ball.splitlines()[0].endswith(
+        ",ball,ball_angles_deg [°],ball_approaches [mm],ball_loads [N]"
+    )
 
 
 def test_table_at_a_general_cage_angle_leaves_out_one_and_two_balls():
@@ -146,8 +158,9 @@ def test_a_bearing_outside_the_catalogue_with_its_ball_set_resolves_a_class():
     import json
 
     doc = json.loads(out.output)
-    assert doc["clearance_range"] == [0.046, 0.091]  # ISO 5753-1 C3, bore 140-160 mm (NSK 9.9)
-    assert doc["clearance"] == pytest.approx(0.0685)
+    # ISO 5753-1 C3, bore 140-160 mm (NSK 9.9)
+    assert doc["bearing"]["clearance_range"] == [0.046, 0.091]
+    assert doc["cases"][0]["clearance"] == pytest.approx(0.0685)
 
 
 def test_a_clearance_of_half_a_ball_is_refused():

@@ -168,6 +168,11 @@ def library_errors(func: Callable[..., Any]) -> Callable[..., Any]:
     return wrapper
 
 
+def cage_angle_deg(cage_angle: float | str, balls: int) -> float:
+    """The ``--cage-angle`` value in degrees; ``"half"`` is half a pitch, 180/z."""
+    return 180.0 / balls if cage_angle == "half" else float(cage_angle)
+
+
 def cage_angle_option(func: Callable[..., Any]) -> Callable[..., Any]:
     """``--cage-angle DEG|half``, shared by ``solve`` and ``table``."""
     return click.option(

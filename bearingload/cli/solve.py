@@ -10,6 +10,7 @@ from bearingload.cli.bearing_options import CLEARANCE_HELP, Clearance, geometry_
 from bearingload.cli.options import (
     CONTEXT,
     Quantity,
+    cage_angle_deg,
     cage_angle_option,
     emit,
     exponent_option,
@@ -75,6 +76,17 @@ from bearingload.cli.options import (
     "stribeck: 4.37 F_r/z; palmgren: 5 F_r/z (these two ignore stiffness, clearance, cage "
     "angle and exponent); all: every method side by side with its error against exact."
 )
+@click.option(
+    "--per-ball",
+    is_flag=True,
+    help="csv: one row per ball (angle, approach, load) instead of one row per case.",
+)
+@click.option(
+    "--show-geometry",
+    is_flag=True,
+    help="With a BEARING: also print the geometry used and the source of every value "
+    "(JSON always carries it).",
+)
 @output_options
 @library_errors
 def solve(
@@ -94,61 +106,93 @@ def solve(
     cage_angle: Any,
     exponent: float,
     method: str,
+    per_ball: bool,
+    show_geometry: bool,
     fmt: str,
     output: str | None,
 ) -> None:
-    """Solve the exact ring equilibrium of one bearing: every ball's load and a summary.
+    """Solve the ring equilibrium of one bearing: the heaviest ball load, how many balls carry,
+    the load zone, the ring displacement and stiffness, and every ball's load.
 
     The inner ring moves until the ball forces balance the radial load (Kurochkin 1973,
     Kuzmenko 2010). Ball 1 sits at the cage angle; balls are numbered counter-clockwise.
 
     BEARING is a catalogue designation (306, 6306-2RS/C3, 75-313; see 'bearingload catalog'):
     its ball set gives the exact Hertz ball stiffness, its bore resolves a clearance class, its
-    rating C gives the life (C/F_r)^3. The report names the source of every value. Without a
-    BEARING give --balls and --stiffness (or the ball geometry).
+    rating C gives the life (C/F_r)^3; --show-geometry prints the source of every value.
+    Without a BEARING give --balls and --stiffness (or the ball geometry).
 
     \b
     Examples:
       # bearing 306 of the catalogue, 300 kgf, ISO clearance class C3 (mean of its range)
       bearingload solve 306 --load 300kgf --clearance C3
-      # the whole C3 range side by side, the paper's modulus
-      bearingload solve 6306 -F 3kN -G C3 --clearance-pick range --modulus 2.1e4kgf/mm^2
+      # the whole C3 range side by side, the paper's modulus, with the geometry used
+      bearingload solve 6306 -F 3kN -G C3 --clearance-pick range --modulus 2.1e4kgf/mm^2 --show-geometry
       # bearing 306 of Kuzmenko (2010): 8 balls, 300 kgf, the paper's stiffness, G_r = 20 µm
       bearingload solve -z 8 --load 300kgf --stiffness 4700kgf/mm^1.5 --clearance 20um
       # the load between two balls, 50 µm preload, JSON for a script
       bearingload solve -z 12 -F 5kN -K 3.8e5 -G -50um --cage-angle half --format json
       # exact, continuum, Stribeck and Palmgren side by side, errors against the exact answer
       bearingload solve -z 8 -F 300kgf -K 4700kgf/mm^1.5 -G 20um --method all
+      # every ball's load as csv, one row per ball
+      bearingload solve -z 8 -F 300kgf -K 4700kgf/mm^1.5 --format csv --per-ball
     """
+    from bearingload.models.registry import list_methods
+    from bearingload.reports.solve import solve_report
+
     if not revolutions == revolutions:  # NaN passes click's range check
         raise click.UsageError(
             "Invalid value for '--revolutions': must be a number of revolutions > 0, got nan"
         )
     k_given = stiffness_value(stiffness, exponent)  # N/mm^m
+    methods = list_methods() if method == "all" else [method]
     if bearing is None and ball_diameter is None and pitch_diameter is None:
-        from bearingload.bearings.clearance import clearance_length
-        from bearingload.reports.solve import solve_report
+        cases = _by_hand(methods, balls, load, k_given, clearance, cage_angle, exponent)
+    else:
+        cases = _catalogue(methods, bearing, load, k_given, clearance, clearance_pick, cage_angle,
+                           exponent, revolutions, balls=balls, ball_diameter=ball_diameter,
+                           pitch_diameter=pitch_diameter, f_i=inner_conformity,
+                           f_o=outer_conformity, modulus=modulus, poisson=poisson)  # fmt: skip
+    emit(solve_report(cases, fmt, per_ball=per_ball, show_geometry=show_geometry), output)
 
-        if balls is None:
-            raise click.UsageError(
-                "Missing option '--balls' / '-z' (or give a BEARING designation)"
-            )
-        if k_given is None:
-            raise click.UsageError(
-                "Missing option '--stiffness' / '-K' (or give a BEARING designation, or "
-                "--ball-diameter and --pitch-diameter)"
-            )
-        g_r = clearance_length(clearance)
-        if method != "exact":
-            from bearingload.reports.methods import method_report
 
-            text = method_report(method, balls, load, k_given, g_r, cage_angle, exponent, fmt)
-            emit(text, output)
-            return
-        emit(solve_report(balls, load, k_given, g_r, cage_angle, exponent, fmt), output)
-        return
+def _by_hand(
+    methods: list[str],
+    balls: int | None,
+    load: float,
+    k_given: float | None,
+    clearance: Any,
+    cage_angle: Any,
+    exponent: float,
+) -> list[Any]:
+    from bearingload.bearings.clearance import clearance_length
+    from bearingload.studies.loaded_bearing import solve_ring
+
+    if balls is None:
+        raise click.UsageError("Missing option '--balls' / '-z' (or give a BEARING designation)")
+    if k_given is None:
+        raise click.UsageError(
+            "Missing option '--stiffness' / '-K' (or give a BEARING designation, or "
+            "--ball-diameter and --pitch-diameter)"
+        )
+    angle = cage_angle_deg(cage_angle, balls)
+    return solve_ring(methods, balls, load, k_given, clearance_length(clearance), angle, exponent)
+
+
+def _catalogue(
+    methods: list[str],
+    bearing: str | None,
+    load: float,
+    k_given: float | None,
+    clearance: Any,
+    clearance_pick: str,
+    cage_angle: Any,
+    exponent: float,
+    revolutions: float,
+    **geometry: Any,
+) -> list[Any]:
     from bearingload.bearings.resolve import resolve_bearing
-    from bearingload.reports.bearing import bearing_report, solve_bearing
+    from bearingload.studies.loaded_bearing import solve_bearing
 
     if exponent != 1.5:
         raise click.UsageError(
@@ -157,54 +201,17 @@ def solve(
         )
     resolved = resolve_bearing(
         bearing,
-        balls=balls,
-        ball_diameter=ball_diameter,
-        pitch_diameter=pitch_diameter,
-        f_i=inner_conformity,
-        f_o=outer_conformity,
-        modulus=modulus,
-        poisson=poisson,
         stiffness=k_given,
         clearance=clearance,
         clearance_pick="mean" if clearance_pick == "range" else clearance_pick,
+        **geometry,
     )
     if clearance_pick == "range" and resolved.clearance_range is None:
         raise click.UsageError(
             "Invalid value for '--clearance-pick': 'range' needs a clearance class "
             "(C2 CN C3 C4 C5), not a clearance length"
         )
-    if method != "exact":
-        from bearingload.reports.methods import method_report
-
-        if clearance_pick == "range":
-            raise click.UsageError(
-                "Invalid value for '--clearance-pick': 'range' works with --method exact only; "
-                "pick min, mean or max"
-            )
-        label = f"bearing {resolved.designation}" if resolved.designation else "the given ball"
-        k_src = "given" if resolved.stiffness_given else "exact Hertz"
-        context = (
-            f"z, K ({k_src}) and G_r of {label}; 'bearingload solve' without --method lists "
-            "the source of every value."
-        )
-        text = method_report(
-            method,
-            resolved.balls,
-            load,
-            resolved.stiffness,
-            resolved.clearance,
-            cage_angle,
-            1.5,
-            fmt,
-            context=context,
-        )
-        emit(text, output)
-        return
-    picks = ["min", "mean", "max"] if clearance_pick == "range" else [None]
-    cases = [
-        solve_bearing(
-            resolved if p is None else resolved.with_clearance(p), load, cage_angle, revolutions
-        )
-        for p in picks
-    ]
-    emit(bearing_report(cases, fmt), output)
+    picks = ["min", "mean", "max"] if clearance_pick == "range" else []
+    bearings = [resolved.with_clearance(p) for p in picks] or [resolved]
+    angle = cage_angle_deg(cage_angle, resolved.balls)
+    return solve_bearing(bearings, load, angle, methods, revolutions)

@@ -99,7 +99,7 @@ def palmgren(
     rows : int or array_like, default 1
         Number of rows ``i`` (whole number >= 1). [-]
     contact_angle : float or array_like, default 0
-        Contact angle ``alpha``, 0 <= alpha < pi/2. [rad]
+        Contact angle ``alpha``, 0 <= alpha < 90. [°]
 
     Returns
     -------
@@ -120,9 +120,9 @@ def _estimate(balls: Any, load: Any, constant: Any, rows: Any, angle: Any) -> Ap
     c = validate.positive("constant", constant, "")
     i = validate.ball_count(rows, name="rows")
     alpha = validate.finite("contact_angle", angle)
-    if np.any((alpha < 0) | (alpha >= np.pi / 2)):
-        raise InputError("contact_angle", "must be between 0 and pi/2 rad (exclusive)")
-    k = c / (i * z * np.cos(alpha))
+    if np.any((alpha < 0) | (alpha >= 90.0)):
+        raise InputError("contact_angle", "must be at least 0° and less than 90°")
+    k = c / (i * z * np.cos(np.deg2rad(alpha)))
     q = k * force
     if np.ndim(k) == 0:
         return Approximation(float(k), float(q))

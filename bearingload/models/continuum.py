@@ -100,8 +100,8 @@ class ContinuumResult:
         Half-angle of the load zone ``psi_l`` (180 when every element is loaded). [°]
     epsilon : ndarray
         Load-zone parameter ``eps = (1 - e/x)/2``. [-]
-    deflection : ndarray
-        Displacement ``x`` of the inner ring along the load. [mm]
+    x : ndarray
+        Displacement of the inner ring along the load. [mm]
     max_deflection : ndarray
         Elastic approach of the most loaded element ``delta_max = x - e``. [mm]
     stiffness_radial : ndarray
@@ -115,7 +115,7 @@ class ContinuumResult:
     K_Q: np.ndarray
     load_zone: np.ndarray
     epsilon: np.ndarray
-    deflection: np.ndarray
+    x: np.ndarray
     max_deflection: np.ndarray
     stiffness_radial: np.ndarray
     iterations: np.ndarray
@@ -292,7 +292,7 @@ def solve_continuum(
     Returns
     -------
     ContinuumResult
-        ``k``, ``q_max``, ``K_Q``, ``load_zone``, ``epsilon``, ``deflection``, ``max_deflection``,
+        ``k``, ``q_max``, ``K_Q``, ``load_zone``, ``epsilon``, ``x``, ``max_deflection``,
         ``stiffness`` (``dF_r/dx``) and ``iterations``.
 
     Raises
@@ -360,7 +360,7 @@ def solve_continuum(
         K_Q=(k * z / 2.0).reshape(shape),
         load_zone=np.rad2deg(zone).reshape(shape),
         epsilon=eps.reshape(shape),
-        deflection=x.reshape(shape),
+        x=x.reshape(shape),
         max_deflection=d_max.reshape(shape),
         stiffness_radial=stiff.reshape(shape),
         iterations=iterations.reshape(shape),

@@ -1,13 +1,19 @@
-"""One registry of the load-distribution methods, so that they can be listed, run and timed side by side.
+"""One registry of the load-distribution models, so that they can be listed, run and timed side by side.
 
-Every method is called the same way,
+The registry holds the cited model functions themselves (by module and name, imported on first
+use), with their citation, the common inputs they ignore (read off their signatures) and their
+range of validity. Every model is run the same way,
 
-    method(balls, load, stiffness, clearance=0.0, cage_angle=0.0, exponent=1.5) -> MethodResult,
+    compute(name, balls, load, stiffness, clearance=0.0, cage_angle=0.0, exponent=1.5) -> Result
 
 with the package's units (N, mm, N/mm^m, degrees) and the conventions of
-:mod:`bearingload.models.equilibrium` (outer ring fixed, radial load ``F_r`` on the inner ring, angles from
-the load line; ``clearance`` is the radial internal clearance ``G_r``, total play; negative =
-preload). Inputs broadcast as in the underlying functions.
+:mod:`bearingload.models.equilibrium` (outer ring fixed, radial load ``F_r`` on the inner ring,
+angles from the load line; ``clearance`` is the radial internal clearance ``G_r``, total play;
+negative = preload). The inputs are checked once, as a :class:`~bearingload.models.case.Case`
+(a negative stiffness is an error for Stribeck too, so every model accepts and rejects the same
+cases; the one exception is the exact model, which has no equilibrium with one or two balls when
+no ball sits on the load line), and every model answers with one
+:class:`~bearingload.models.case.Result`.
 
 =========  ==============================================================  =======================
 name       model                                                           ignores
@@ -18,16 +24,17 @@ continuum  balls smeared over the raceway (Kuzmenko 2010, §4-5; Sjövall    cag
            load-zone integral), :func:`bearingload.models.continuum.solve_continuum`
 stribeck   ``Q_max = 4.37 F_r/z`` (Stribeck 1901)                          stiffness, clearance,
                                                                            cage angle, exponent
-palmgren   ``Q_max = 5 F_r/z`` (Palmgren 1959; seed 003, eq. 2)            stiffness, clearance,
+palmgren   ``Q_max = 5 F_r/z`` (Palmgren 1959)                             stiffness, clearance,
                                                                            cage angle, exponent
 =========  ==============================================================  =======================
 
-Importing this module imports no numpy (the command line lists the methods at start-up); each
-method imports what it needs when called.
+Adding a model: write one cited, vectorised function whose parameters are named like the case
+inputs (``balls, load, stiffness, clearance, cage_angle, exponent``; leave out what it ignores)
+and whose result has attributes named like :class:`~bearingload.models.case.Result`'s
+(``k``, ``q_max``, ``load_zone`` [°], ``x`` ...); add one :class:`Method` line to
+:func:`_build`; add its published values to ``bearingload/studies/data/published/``.
 
-Every method still checks every input (a negative stiffness is an error for Stribeck too), so the
-methods accept and reject the same cases; the one exception is the exact model, which has no
-equilibrium with one or two balls when no ball sits on the load line.
+Importing this module imports no numpy (the command line lists the models at start-up).
 """
 
 from __future__ import annotations
@@ -43,53 +50,45 @@ DEFAULT_METHOD = "exact"
 
 
 @dataclass(frozen=True)
-class MethodResult:
-    """What every method returns: the load factor and what follows from it.
-
-    Attributes are floats for scalar input, arrays of the broadcast input shape otherwise.
-
-    Attributes
-    ----------
-    method : str
-        Name of the method (a key of :data:`METHODS`).
-    k : float or ndarray
-        Load factor ``Q_max/F_r``. [-]
-    q_max : float or ndarray
-        Load on the most loaded ball. [N]
-    K_Q : float or ndarray
-        Load-concentration factor ``K_Q = Q_max/(F_r/(z/2)) = k z/2`` (Kuzmenko & Sabadash 2014). [-]
-    load_zone : float, ndarray or None
-        Half-angle of the load zone; ``None`` for the one-line estimates, which have none. [°]
-    """
-
-    method: str
-    k: Any
-    q_max: Any
-    K_Q: Any
-    load_zone: Any = None
-
-
-@dataclass(frozen=True)
 class Method:
-    """A registered method: its function and what to tell the user about it.
+    """A registered model: its function and what to tell the user about it.
 
     Attributes
     ----------
     name : str
         Registry key.
-    function : callable
-        ``function(balls, load, stiffness, clearance, cage_angle, exponent) -> MethodResult``.
+    module, function : str
+        Where the model function lives (imported on first use).
     title : str
         One line: the model and its source.
-    ignores : tuple of str
-        The common inputs the method does not use (``stiffness``, ``clearance``, ``cage_angle``,
-        ``exponent``).
+    validity : str
+        The range of validity in words ("" where the model applies to every case).
+    is_valid : callable or None
+        ``is_valid(case, result) -> bool array``: whether each case lies inside that range.
     """
 
     name: str
-    function: Callable[..., MethodResult]
+    module: str
+    function: str
     title: str
-    ignores: tuple[str, ...] = ()
+    validity: str = ""
+    is_valid: Callable[[Any, Any], Any] | None = None
+
+    def model(self) -> Callable[..., Any]:
+        """The model function itself."""
+        import importlib
+
+        return getattr(importlib.import_module(self.module), self.function)
+
+    @property
+    def ignores(self) -> tuple[str, ...]:
+        """The case inputs the model does not use (those missing from its signature)."""
+        import inspect
+
+        from bearingload.models.case import INPUTS
+
+        params = inspect.signature(self.model()).parameters
+        return tuple(name for name in INPUTS if name not in params)
 
     def __call__(
         self,
@@ -99,93 +98,79 @@ class Method:
         clearance: Any = 0.0,
         cage_angle: Any = 0.0,
         exponent: Any = 1.5,
-    ) -> MethodResult:
-        return self.function(balls, load, stiffness, clearance, cage_angle, exponent)
+    ) -> Any:
+        from bearingload.models.case import Case
 
+        return self.run(Case.of(balls, load, stiffness, clearance, cage_angle, exponent))
 
-def _scalar(value: Any) -> Any:
-    """Python float for a 0-d array, the array otherwise."""
-    import numpy as np
+    def run(self, case: Any) -> Any:
+        """Run the model on a :class:`~bearingload.models.case.Case`; a :class:`Result`."""
+        import inspect
 
-    arr = np.asarray(value)
-    return float(arr) if arr.ndim == 0 else arr
-
-
-def _exact(
-    balls: Any, load: Any, stiffness: Any, clearance: Any, cage_angle: Any, exponent: Any
-) -> MethodResult:
-    from bearingload.models.equilibrium import solve
-
-    r = solve(balls, load, stiffness, clearance, cage_angle, exponent)
-    return MethodResult(
-        "exact", _scalar(r.k), _scalar(r.q_max), _scalar(r.K_Q), _scalar(r.load_zone)
-    )
-
-
-def _continuum(
-    balls: Any, load: Any, stiffness: Any, clearance: Any, cage_angle: Any, exponent: Any
-) -> MethodResult:
-    import numpy as np
-
-    from bearingload import validate
-    from bearingload.models.continuum import solve_continuum
-
-    angle = validate.finite("cage_angle", cage_angle)  # checked, then not used
-    r = solve_continuum(balls, load, stiffness, clearance, exponent)
-    shape = np.broadcast_shapes(np.shape(r.k), angle.shape)
-    parts = (np.broadcast_to(a, shape) for a in (r.k, r.q_max, r.K_Q, r.load_zone))
-    k, q, kq, zone = (_scalar(np.array(a)) for a in parts)
-    return MethodResult("continuum", k, q, kq, zone)
-
-
-def _one_line(name: str) -> Callable[..., MethodResult]:
-    def estimate(
-        balls: Any, load: Any, stiffness: Any, clearance: Any, cage_angle: Any, exponent: Any
-    ) -> MethodResult:
         import numpy as np
 
-        from bearingload import validate
-        from bearingload.models.approximations import palmgren, stribeck
+        from bearingload.models.case import RESULT_QUANTITIES, Result, scalar
 
-        z = validate.ball_count(balls)
-        f = validate.positive("load", load, "N")
-        kk = validate.positive("stiffness", stiffness, "N/mm^m")
-        g = validate.finite("clearance", clearance)
-        a = validate.finite("cage_angle", cage_angle)
-        m = validate.exponent(exponent)
-        z, f, *_ = np.broadcast_arrays(z, f, kk, g, a, m)
-        r = (stribeck if name == "stribeck" else palmgren)(z, f)
-        k, q = np.asarray(r.k), np.asarray(r.q_max)
-        return MethodResult(name, _scalar(k), _scalar(q), _scalar(k * z / 2.0), None)
+        function = self.model()
+        params = inspect.signature(function).parameters
+        out = function(**{k: v for k, v in case.inputs().items() if k in params})
+        values = {}
+        for name in RESULT_QUANTITIES:
+            v = getattr(out, name, None)
+            values[name] = None if v is None else scalar(np.broadcast_to(v, case.shape).copy())
+        result = Result(self.name, case, model=out, **values)
+        if self.is_valid is not None:
+            valid = np.broadcast_to(self.is_valid(case, result), case.shape)
+            result = Result(self.name, case, model=out, valid=scalar(valid.copy()), **values)
+        return result
 
-    return estimate
+
+def _continuum_valid(case: Any, result: Any) -> Any:
+    """The load zone spans at least one pitch: 2 psi_l >= 360/z."""
+    import numpy as np
+
+    return 2.0 * np.asarray(result.load_zone) >= 360.0 / case.balls
+
+
+def _ball_zero_clearance(case: Any, result: Any) -> Any:
+    return (case.clearance == 0) & (case.exponent == 1.5)
+
+
+def _ball_bearing(case: Any, result: Any) -> Any:
+    return case.exponent == 1.5
 
 
 def _build() -> dict[str, Method]:
-    fixed = ("stiffness", "clearance", "cage_angle", "exponent")
     return {
         "exact": Method(
             "exact",
-            _exact,
+            "bearingload.models.equilibrium",
+            "solve",
             "exact ring equilibrium of the discrete balls (Kurochkin 1973; Kuzmenko 2010, §1-3)",
         ),
         "continuum": Method(
             "continuum",
-            _continuum,
+            "bearingload.models.continuum",
+            "solve_continuum",
             "continuum model, each ball's load smeared over its pitch (Kuzmenko 2010, §4-5)",
-            ("cage_angle",),
+            "a load zone at least one ball pitch wide (2 psi_l >= 360°/z)",
+            _continuum_valid,
         ),
         "stribeck": Method(
             "stribeck",
-            _one_line("stribeck"),
+            "bearingload.models.approximations",
+            "stribeck",
             "Stribeck (1901): Q_max = 4.37 F_r/z",  # approximations.STRIBECK_CONSTANT
-            fixed,
+            "ball bearings (m = 1.5) with zero clearance",
+            _ball_zero_clearance,
         ),
         "palmgren": Method(
             "palmgren",
-            _one_line("palmgren"),
+            "bearingload.models.approximations",
+            "palmgren",
             "Palmgren (1959): Q_max = 5 F_r/z",  # approximations.PALMGREN_CONSTANT
-            fixed,
+            "ball bearings (m = 1.5) with a normal clearance",
+            _ball_bearing,
         ),
     }
 
@@ -223,8 +208,8 @@ def compute(
     clearance: Any = 0.0,
     cage_angle: Any = 0.0,
     exponent: Any = 1.5,
-) -> MethodResult:
-    """Run one registered method.
+) -> Any:
+    """Run one registered model: a :class:`~bearingload.models.case.Result`.
 
     Parameters
     ----------
@@ -245,7 +230,9 @@ def compute(
 
     Returns
     -------
-    MethodResult
+    Result
+        ``k``, ``q_max``, ``K_Q``, and where the model gives them ``loaded_balls``,
+        ``load_zone`` [°], ``x``, ``y`` [mm], ``stiffness_radial`` [N/mm]; ``valid``; ``model``.
 
     Raises
     ------
@@ -270,16 +257,19 @@ def compute_all(
     clearance: Any = 0.0,
     cage_angle: Any = 0.0,
     exponent: Any = 1.5,
-) -> dict[str, MethodResult]:
-    """Run every registered method on the same inputs; name -> result, in registry order."""
-    return {
-        name: m(balls, load, stiffness, clearance, cage_angle, exponent)
-        for name, m in METHODS.items()
-    }
+) -> dict[str, Any]:
+    """Run every registered model on the same inputs (checked once); name -> Result, in registry
+    order."""
+    from bearingload.models.case import Case
+
+    case = Case.of(balls, load, stiffness, clearance, cage_angle, exponent)
+    return {name: m.run(case) for name, m in METHODS.items()}
 
 
-def relative_error(result: MethodResult, reference: MethodResult) -> Any:
+def relative_error(result: Any, reference: Any) -> Any:
     """``Q_max / Q_max,reference - 1`` (the same as the ratio of the ``k``). [-]"""
     import numpy as np
 
-    return _scalar(np.asarray(result.q_max) / np.asarray(reference.q_max) - 1.0)
+    from bearingload.models.case import scalar
+
+    return scalar(np.asarray(result.q_max) / np.asarray(reference.q_max) - 1.0)

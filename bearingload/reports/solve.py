@@ -1,53 +1,261 @@
-"""The report of one solved case: a summary with units, every ball's load, or the JSON document."""
+"""The report of ``bearingload solve``: one or more solved cases in every format.
+
+Cases come from :mod:`bearingload.studies.loaded_bearing` (one per model and per clearance);
+every quantity is named through :mod:`bearingload.reports.quantities`.
+
+* ``table`` / ``markdown``: the answer first (Q_max, k, loaded balls, load zone, deflection,
+  stiffness, contact pressure, life), one column per case; then every ball's load; the geometry
+  of a catalogue bearing and the source of each value only with ``show_geometry``.
+* ``csv``: one rectangular table, one row per case, the case's inputs among the columns; with
+  ``per_ball`` one row per ball instead.
+* ``json``: ``{"cases": [...], "units": {...}}`` with every quantity of every case (per-ball
+  arrays included), and ``"bearing"`` (geometry with sources) for a catalogue bearing.
+"""
 
 from __future__ import annotations
 
-import numpy as np
+from collections.abc import Sequence
+from typing import Any
 
-from bearingload.models.equilibrium import solve
-from bearingload.reports.parts import (
-    JSON_UNITS,
-    cage_angle_deg,
-    distribution_json,
-    distribution_rows,
-    inputs_json,
-    inputs_text,
-    summary_table,
-)
+from bearingload.reports.quantities import QUANTITIES, units
 from bearingload.reports.render import Column, Table, render
+from bearingload.studies.loaded_bearing import LoadedCase, case_values, with_relative_errors
+
+#: Inputs of a case (the csv columns that say which case a row is).
+INPUT_KEYS = (
+    "bearing",
+    "method",
+    "balls",
+    "load",
+    "stiffness",
+    "clearance",
+    "clearance_pick",
+    "cage_angle_deg",
+    "exponent",
+)
+#: The answer, in the order the terminal shows it.
+ANSWER_KEYS = (
+    "q_max",
+    "k",
+    "K_Q",
+    "loaded_balls",
+    "load_zone_deg",
+    "x",
+    "y",
+    "stiffness_radial",
+    "approach_max",
+    "epsilon",
+    "p_max_inner",
+    "p_max_outer",
+    "rating_life",
+    "revolutions",
+    "allowable_load",
+    "relative_error",
+)
+PER_BALL_KEYS = ("ball", "ball_angles_deg", "ball_approaches", "ball_loads")
 
 
 def solve_report(
-    balls: int,
-    load: float,
-    stiffness: float,
-    clearance: float,
-    cage_angle: float | str,
-    exponent: float,
+    cases: Sequence[LoadedCase],
     fmt: str,
+    *,
+    per_ball: bool = False,
+    show_geometry: bool = False,
 ) -> str:
-    """Solve one case and render it in ``fmt``. Inputs in N, N/mm^m, mm, degrees or ``"half"``."""
-    angle = cage_angle_deg(cage_angle, balls)
-    args = (balls, load, stiffness, clearance, angle, exponent)
-    r = solve(*args)
+    """Render solved cases in ``fmt`` (table, csv, markdown, json)."""
+    records = [case_values(c) for c in cases]
+    if len({r["method"] for r in records}) > 1 and any(r["method"] == "exact" for r in records):
+        records = with_relative_errors(records)
+    exponent = float(cases[0].result.case.exponent)
     if fmt == "json":
-        doc = inputs_json(*args) | distribution_json(r)
-        doc["units"] = JSON_UNITS | {"stiffness": f"N/mm^{exponent:g}"}
-        return render([], "json", document=doc)
-    q = r.ball_loads()
-    approach = np.maximum(q / stiffness, 0.0) ** (1.0 / exponent)
-    balls_table = Table(
-        title="Ball loads (ball 1 at the cage angle; angles from the load line)",
-        columns=[
-            Column("ball", "ball"),
-            Column("angle", "angle", "°", 6),
-            Column("approach", "approach delta", "µm", 6),
-            Column("load", "load Q", "N", 6),
-        ],
-        rows=[
-            {"ball": i + 1, "angle": float(a), "approach": float(d) * 1e3, "load": float(f)}
-            for i, (a, d, f) in enumerate(zip(r.ball_angles(), approach, q, strict=True))
-        ],
+        return render([], "json", document=_document(cases, records, exponent))
+    if fmt == "csv":
+        table = _per_ball_table(cases, records) if per_ball else _case_table(records)
+        return render([table], "csv")
+    tables = []
+    if show_geometry and cases[0].bearing is not None:
+        from bearingload.reports.bearing import geometry_table
+
+        tables.append(geometry_table(cases[0].bearing))
+    tables.append(_summary(cases, records))
+    if per_ball or any(c.result.method == "exact" for c in cases):
+        tables.append(_balls_human(cases, records))
+    return render(tables, fmt)
+
+
+def _present(records: Sequence[dict[str, Any]], keys: Sequence[str]) -> list[str]:
+    return [k for k in keys if any(r.get(k) is not None for r in records)]
+
+
+def column(key: str, exponent: float | None = None, header: str | None = None) -> Column:
+    """The renderer column of a quantity (machine unit: csv headers; the table shows it too)."""
+    q = QUANTITIES[key]
+    unit = q.unit.replace("^m", f"^{exponent:g}") if exponent is not None else q.unit
+    align = "left" if q.digits is None and q.unit == "" and key not in _COUNTS else "right"
+    return Column(key, header or q.label, unit, q.digits, align)
+
+
+_COUNTS = {"balls", "loaded_balls", "ball", "iterations"}
+
+
+def _case_table(records: Sequence[dict[str, Any]]) -> Table:
+    keys = _present(records, INPUT_KEYS + ANSWER_KEYS + ("valid",))
+    exponent = records[0]["exponent"]
+    return Table("cases", [column(k, exponent) for k in keys], [_blank(r, keys) for r in records])
+
+
+def _blank(record: dict[str, Any], keys: Sequence[str]) -> dict[str, Any]:
+    """A csv row: None as an empty cell."""
+    return {k: "" if record.get(k) is None else record[k] for k in keys}
+
+
+def _per_ball_table(cases: Sequence[LoadedCase], records: Sequence[dict[str, Any]]) -> Table:
+    inputs = _present(records, INPUT_KEYS)
+    rows = []
+    for c, r in zip(cases, records, strict=True):
+        for i, (a, d, q) in enumerate(_balls(c)):
+            rows.append(
+                _blank(r, inputs)
+                | {"ball": i + 1, "ball_angles_deg": a, "ball_approaches": d, "ball_loads": q}
+            )
+    exponent = records[0]["exponent"]
+    return Table("balls", [column(k, exponent) for k in inputs + list(PER_BALL_KEYS)], rows)
+
+
+def _balls(c: LoadedCase) -> list[tuple[float, float, float]]:
+    """(angle [°], approach [mm], load [N]) of every ball; the exact model only."""
+    model = c.result.model
+    if c.result.method != "exact":
+        return []
+    return list(
+        zip(
+            model.ball_angles().tolist(),
+            model.ball_approaches().tolist(),
+            model.ball_loads().tolist(),
+            strict=True,
+        )
     )
-    summary = summary_table(f"Summary ({inputs_text(*args)})", distribution_rows(r))
-    return render([summary, balls_table], fmt)
+
+
+def _heading(r: dict[str, Any]) -> str:
+    """A short name of one case among several: its method and/or clearance pick."""
+    parts = []
+    if r["clearance_pick"] is not None:
+        parts.append(f"G_r {r['clearance_pick']}")
+    if r["method"] != "exact" or not parts:
+        parts.insert(0, r["method"])
+    return ", ".join(parts)
+
+
+def _summary(cases: Sequence[LoadedCase], records: Sequence[dict[str, Any]]) -> Table:
+    keys = _present(records, ANSWER_KEYS)
+    if len({r["clearance"] for r in records}) > 1:
+        keys.insert(0, "clearance")
+    one = len(records) == 1
+    heads = ["value"] if one else [_heading(r) for r in records]
+    rows = []
+    for key in keys:
+        q = QUANTITIES[key]
+        for unit, factor in [q.shown()] + ([q.also] if q.also else []):
+            row: dict[str, Any] = {"quantity": q.label, "unit": unit or ""}
+            for h, r in zip(heads, records, strict=True):
+                v = r.get(key)
+                row[h] = "-" if v is None else (v * factor if q.digits else v)
+            rows.append(row)
+    columns = [Column("quantity", "quantity", align="left")]
+    columns += [Column(h, h, digits=6) for h in heads]
+    columns.append(Column("unit", "unit", align="left"))
+    return Table(_title(cases, records), columns, rows, _notes(cases, records))
+
+
+def _title(cases: Sequence[LoadedCase], records: Sequence[dict[str, Any]]) -> str:
+    r, c = records[0], cases[0]
+    m = r["exponent"]
+    who = f"Bearing {r['bearing']}, " if r["bearing"] and r["bearing"] != "given by hand" else ""
+    clear = (
+        f"G_r = {r['clearance'] * 1e3:.6g} µm (gap per side {r['clearance'] * 500:.6g} µm)"
+        if len(records) == 1 or len({x["clearance"] for x in records}) == 1
+        else f"G_r: {c.bearing.clearance_class if c.bearing else ''} range"
+    )
+    return (
+        f"{who}z = {r['balls']}, F_r = {r['load']:.6g} N ({r['load'] / 9.80665:.6g} kgf), "
+        f"K = {r['stiffness']:.6g} N/mm^{m:g}, {clear}, cage angle {r['cage_angle_deg']:.6g}°, "
+        f"m = {m:.6g}"
+    )
+
+
+def _notes(cases: Sequence[LoadedCase], records: Sequence[dict[str, Any]]) -> list[str]:
+    from bearingload.models.registry import METHODS
+
+    notes = []
+    methods = list(dict.fromkeys(r["method"] for r in records))
+    if methods != ["exact"]:
+        for name in methods:
+            m = METHODS[name]
+            ignored = ", ".join(i.replace("_", " ") for i in m.ignores) or "nothing"
+            notes.append(f"{name}: {m.title}; ignores {ignored}.")
+    for r in records:
+        if r["valid"] is False:
+            notes.append(
+                f"Warning: {_heading(r)}: the case is outside the {r['method']} model's range "
+                f"({METHODS[r['method']].validity})."
+            )
+    if "relative_error" in records[0]:
+        notes.append("Q_max/Q_max,exact - 1: the heaviest ball load against the exact model.")
+    b = cases[0].bearing
+    if b is not None:
+        src = next((p.source for p in b.provenance if p.key == "clearance"), "")
+        notes.append(f"G_r: {src}.")
+        notes.append("--show-geometry lists the geometry used and the source of every value.")
+    return notes
+
+
+def _balls_human(cases: Sequence[LoadedCase], records: Sequence[dict[str, Any]]) -> Table:
+    exact = [(c, r) for c, r in zip(cases, records, strict=True) if c.result.method == "exact"]
+    per = [_balls(c) for c, _ in exact]
+    one = len(exact) == 1
+    columns = [column("ball"), Column("angle", "angle", "°", 6)]
+    if one:
+        columns += [
+            Column("approach", "approach delta (< 0: gap)", "µm", 6),
+            Column("q", "load Q", "N", 6),
+        ]
+    else:
+        columns += [
+            Column(f"q{i}", f"Q at {_heading(r)}", "N", 6) for i, (_, r) in enumerate(exact)
+        ]
+    rows = []
+    for j, (angle, approach, load) in enumerate(per[0]):
+        row: dict[str, Any] = {"ball": j + 1, "angle": angle}
+        if one:
+            row |= {"approach": approach * 1e3, "q": load}
+        else:
+            row |= {f"q{i}": balls[j][2] for i, balls in enumerate(per)}
+        rows.append(row)
+    return Table("Ball loads (ball 1 at the cage angle; angles from the load line)", columns, rows)
+
+
+def _document(
+    cases: Sequence[LoadedCase], records: Sequence[dict[str, Any]], exponent: float
+) -> dict[str, Any]:
+    from bearingload.models.registry import METHODS
+
+    docs = []
+    for c, r in zip(cases, records, strict=True):
+        doc = {k: v for k, v in r.items()}
+        doc["model"] = METHODS[r["method"]].title
+        doc["ignores"] = list(METHODS[r["method"]].ignores)
+        if c.result.method == "exact":
+            model = c.result.model
+            doc["stiffness_matrix"] = model.stiffness_matrix.tolist()
+            doc["ball_angles_deg"] = model.ball_angles()
+            doc["ball_approaches"] = model.ball_approaches()
+            doc["ball_loads"] = model.ball_loads()
+        docs.append(doc)
+    keys = list(dict.fromkeys(k for d in docs for k in d))
+    out: dict[str, Any] = {"cases": docs, "units": units(keys, exponent)}
+    if cases[0].bearing is not None:
+        from bearingload.reports.bearing import geometry_document
+
+        out["bearing"] = geometry_document(cases[0].bearing)
+    return out

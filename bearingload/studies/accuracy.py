@@ -206,18 +206,25 @@ def measure(*, timing: bool = False, repeats: int = 5, copies: int = 200) -> lis
     return rows
 
 
+def _column(key: str, header: str | None = None) -> Column:
+    """The renderer column of a registered quantity (bearingload.reports.quantities)."""
+    from bearingload.reports.quantities import QUANTITIES
+
+    q = QUANTITIES[key]
+    text = q.unit == "" and q.digits is None and key not in _COUNTS
+    return Column(key, header or q.label, q.unit, q.digits, "left" if text else "right")
+
+
+_COUNTS = ("cases", "iterations")
 COLUMNS = (
-    Column("method", "method", align="left"),
-    Column("setting", "setting", align="left"),
-    Column("cases", "cases"),
-    Column("error_median", "median error", "-", 2),
-    Column("error_max", "largest error", "-", 2),
-    Column("iterations", "iterations (max)"),
+    _column("method"),
+    _column("setting"),
+    _column("cases"),
+    _column("error_median"),
+    _column("error_max"),
+    _column("iterations", "iterations (max)"),
 )
-TIME_COLUMNS = (
-    Column("seconds_per_case", "time per case, one at a time", "s", 3),
-    Column("seconds_per_case_vectorised", "time per case, vectorised", "s", 3),
-)
+TIME_COLUMNS = (_column("seconds_per_case"), _column("seconds_per_case_vectorised"))
 NOTES = (
     "Error: |Q_max/Q_max,ref - 1| against the exact ring equilibrium at 50 digits (mpmath, "
     "benchmarks/make_reference.py).",

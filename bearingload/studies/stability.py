@@ -142,9 +142,9 @@ def _continuum(inp: dict[str, np.ndarray]) -> Outcome:
     forward = inp["balls"] * inp["stiffness"] * r.max_deflection ** inp["exponent"] * jr
     residual = np.abs(forward / inp["load"] - 1.0)
     # and the returned x must be delta_max/(2 eps)
-    residual = np.maximum(residual, np.abs(r.deflection * 2 * r.epsilon / r.max_deflection - 1))
-    d = np.stack([r.deflection, np.zeros_like(r.deflection)], axis=-1)
-    compare = np.stack([r.q_max, r.deflection, r.stiffness_radial, r.epsilon], axis=-1)
+    residual = np.maximum(residual, np.abs(r.x * 2 * r.epsilon / r.max_deflection - 1))
+    d = np.stack([r.x, np.zeros_like(r.x)], axis=-1)
+    compare = np.stack([r.q_max, r.x, r.stiffness_radial, r.epsilon], axis=-1)
     finite = np.all(np.isfinite(compare), axis=-1) & np.isfinite(r.load_zone)
     return Outcome(
         np.asarray(r.k), d, residual, np.asarray(r.iterations), compare, finite, result=r
@@ -668,21 +668,34 @@ def run(size: str = "quick", names: list[str] | None = None) -> list[dict[str, A
     return rows
 
 
-COLUMNS = (
-    Column("family", "family", align="left"),
-    Column("parameter", "parameter", align="left"),
-    Column("cases", "cases"),
-    Column("max_residual", "max residual", "-", 2),
-    Column("max_jump", "max jump", "-", 2),
-    Column("batch_dependence", "batch dep.", "-", 2),
-    Column("max_iterations", "max it."),
-    Column("nan", "NaN/inf"),
-    Column("warnings", "warnings"),
-    Column("refused", "refused"),
-    Column("failures", "failures"),
-    Column("check_value", "check", "", 3),
-    Column("check_limit", "limit", "", 3),
-    Column("check", "check", align="left"),
+def _column(key: str, header: str | None = None) -> Column:
+    """The renderer column of a registered quantity (bearingload.reports.quantities)."""
+    from bearingload.reports.quantities import QUANTITIES
+
+    q = QUANTITIES[key]
+    text = q.unit == "" and q.digits is None and key not in _COUNTS
+    return Column(key, header or q.label, q.unit, q.digits, "left" if text else "right")
+
+
+_COUNTS = ("cases", "max_iterations", "nan", "warnings", "refused", "failures")
+COLUMNS = tuple(
+    _column(key)
+    for key in (
+        "family",
+        "parameter",
+        "cases",
+        "max_residual",
+        "max_jump",
+        "batch_dependence",
+        "max_iterations",
+        "nan",
+        "warnings",
+        "refused",
+        "failures",
+        "check_value",
+        "check_limit",
+        "check",
+    )
 )
 NOTES = (
     "max residual: |sum Q_i (cos, sin) - (F, 0)| / max(F, sum Q_i), from the returned ball loads.",

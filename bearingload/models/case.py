@@ -1,0 +1,164 @@
+"""One case of a radial bearing under load, and the one result every model returns.
+
+A :class:`Case` holds the validated, broadcast inputs common to every load-distribution model;
+a :class:`Result` holds what a model computed, under one name per quantity (the names of
+:mod:`bearingload.reports.quantities`), with ``None`` for what the model does not give.
+Scalar inputs give Python scalars; array inputs give arrays of the broadcast shape.
+"""
+
+from __future__ import annotations
+
+from dataclasses import dataclass, fields
+from typing import Any
+
+import numpy as np
+
+from bearingload import validate
+from bearingload.errors import InputError
+
+#: The inputs of a case, in the order of every model's signature.
+INPUTS = ("balls", "load", "stiffness", "clearance", "cage_angle", "exponent")
+
+
+@dataclass(frozen=True)
+class Case:
+    """Validated inputs of one case or an array of cases.
+
+    The arrays are kept as given (not broadcast), so that a model computes each distinct input
+    once and its answer for a case never depends on the inputs it ignores; ``shape`` is the
+    broadcast shape of the cases.
+
+    Attributes
+    ----------
+    balls : ndarray of int
+        Number of rolling elements ``z``, 1 to 100 000. [-]
+    load : ndarray
+        Radial load ``F_r`` > 0. [N]
+    stiffness : ndarray
+        Rolling-element stiffness ``K`` of both contacts in series, ``Q = K delta^m``. [N/mm^m]
+    clearance : ndarray
+        Radial internal clearance ``G_r`` (total play; negative = preload). [mm]
+    cage_angle : ndarray
+        Angle of ball 1 from the load line, reduced to [0, 360). [°]
+    exponent : ndarray
+        Load-deflection exponent ``m`` (3/2 balls, 10/9 rollers). [-]
+    """
+
+    balls: np.ndarray
+    load: np.ndarray
+    stiffness: np.ndarray
+    clearance: np.ndarray
+    cage_angle: np.ndarray
+    exponent: np.ndarray
+    shape: tuple[int, ...]
+
+    @classmethod
+    def of(
+        cls,
+        balls: Any,
+        load: Any,
+        stiffness: Any,
+        clearance: Any = 0.0,
+        cage_angle: Any = 0.0,
+        exponent: Any = 1.5,
+    ) -> Case:
+        """Check every input (:class:`~bearingload.errors.InputError` names the parameter) and
+        broadcast them to one shape."""
+        arrays = (
+            validate.ball_count(balls),
+            validate.positive("load", load, "N"),
+            validate.positive("stiffness", stiffness, "N/mm^m"),
+            validate.finite("clearance", clearance),
+            np.mod(validate.finite("cage_angle", cage_angle), 360.0),
+            validate.exponent(exponent),
+        )
+        return cls(*arrays, shape=broadcast_shape(dict(zip(INPUTS, arrays, strict=True))))
+
+    def inputs(self, names: tuple[str, ...] = INPUTS) -> dict[str, Any]:
+        """The inputs named ``names`` as keyword arguments (Python scalars for one case)."""
+        return {name: scalar(getattr(self, name)) for name in names}
+
+
+@dataclass(frozen=True)
+class Result:
+    """What a registered model computed for a :class:`Case`.
+
+    Attributes are Python scalars for a scalar case and arrays of the case's shape otherwise;
+    ``None`` where the model does not give the quantity.
+
+    Attributes
+    ----------
+    method : str
+        Registry name of the model.
+    case : Case
+        The inputs.
+    k : float or ndarray
+        Load factor ``Q_max/F_r`` (Kuzmenko 2010, eq. 1.17). [-]
+    q_max : float or ndarray
+        Load of the most heavily loaded ball. [N]
+    loaded_balls : int, ndarray or None
+        Number of balls carrying load. [-]
+    load_zone : float, ndarray or None
+        Half-angle of the load zone. [°]
+    x, y : float, ndarray or None
+        Inner-ring displacement along and across the load. [mm]
+    stiffness_radial : float, ndarray or None
+        Tangent radial stiffness ``dF_r/dx`` of the bearing. [N/mm]
+    valid : bool or ndarray
+        Whether the case lies inside the model's range of validity (see the registry entry's
+        ``validity``).
+    model : object
+        The model's own result (e.g. :class:`~bearingload.models.equilibrium.LoadDistribution`),
+        with everything else it computed.
+    """
+
+    method: str
+    case: Case
+    k: Any
+    q_max: Any
+    loaded_balls: Any = None
+    load_zone: Any = None
+    x: Any = None
+    y: Any = None
+    stiffness_radial: Any = None
+    valid: Any = True
+    model: Any = None
+
+    def quantities(self) -> dict[str, Any]:
+        """The computed quantities by name (``k`` ... ``stiffness_radial``; None: not given)."""
+        return {name: getattr(self, name) for name in RESULT_QUANTITIES}
+
+    @property
+    def K_Q(self) -> Any:
+        """Load-concentration factor ``K_Q = Q_max/(F_r/(z/2)) = k z/2`` (Kuzmenko & Sabadash 2014). [-]"""
+        return scalar(np.asarray(self.k) * self.case.balls / 2.0)
+
+
+#: The quantities a :class:`Result` may carry, besides ``method``, ``case`` and ``model``.
+RESULT_QUANTITIES = tuple(
+    f.name for f in fields(Result) if f.name not in ("method", "case", "model", "valid")
+)
+
+
+def broadcast_shape(arrays: dict[str, np.ndarray]) -> tuple[int, ...]:
+    """The shape the arrays broadcast to; :class:`InputError` names them when they do not fit
+    or when there is no case at all."""
+    try:
+        shape = np.broadcast_shapes(*(np.shape(a) for a in arrays.values()))
+    except ValueError:
+        shapes = ", ".join(f"{k} {np.shape(v)}" for k, v in arrays.items() if np.ndim(v))
+        raise InputError(
+            ", ".join(k for k, v in arrays.items() if np.ndim(v)),
+            f"the array shapes do not broadcast together ({shapes})",
+        ) from None
+    if 0 in shape:
+        raise InputError(", ".join(arrays), "no case to solve: an input array is empty")
+    return tuple(shape)
+
+
+def scalar(value: Any) -> Any:
+    """A Python int/float/bool for a 0-d array, the array otherwise."""
+    if value is None:
+        return None
+    arr = np.asarray(value)
+    return arr.item() if arr.ndim == 0 else arr

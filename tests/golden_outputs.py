@@ -1,0 +1,98 @@
+"""Golden CLI outputs: the exact full output of every command in every format, stored as files.
+
+``make golden`` (``python -m tests.golden_outputs``) runs every command below and writes its
+output to ``tests/golden/<name>.txt``, and rewrites the output under every ``$ bearingload ...``
+line of the README's ```console blocks; ``tests/test_golden.py`` fails when a stored output or
+the README differs from what the code prints now (as sqlite-utils checks its CLI docs).
+"""
+
+from __future__ import annotations
+
+import re
+import shlex
+import sys
+from pathlib import Path
+
+ROOT = Path(__file__).resolve().parents[1]
+GOLDEN = ROOT / "tests" / "golden"
+README = ROOT / "README.md"
+FORMATS = ("table", "csv", "markdown", "json")
+
+HAND = "solve -z 8 -F 300kgf -K 4700kgf/mm^1.5 -G 20um"
+#: name -> command line (without 'bearingload'); each in every format where it has --format.
+COMMANDS = {
+    "solve_hand": HAND,
+    "solve_hand_per_ball": HAND + " --per-ball",
+    "solve_half_preload": "solve -z 12 -F 5kN -K 3.8e5 -G -50um --cage-angle half",
+    "solve_general_angle": "solve -z 9 -F 1kN -K 1e5 -G 10um --cage-angle 17",
+    "solve_all_methods": HAND + " --method all",
+    "solve_continuum": HAND + " --method continuum",
+    "solve_stribeck": HAND + " --method stribeck",
+    "solve_306_c3": "solve 306 -F 300kgf -G C3",
+    "solve_306_c3_geometry": "solve 306 -F 300kgf -G C3 --show-geometry",
+    "solve_306_range": "solve 306 -F 300kgf -G C3 --clearance-pick range",
+    "solve_6306_range_all": "solve 6306 -F 3kN -G C3 --clearance-pick range --method all",
+    "table_k": "table k --z-max 12",
+    "table_kq_306": "table kq --bearing 306 -F 300kgf -G 20um --z-max 10",
+    "table_k_all": "table k --method all --z-max 10",
+    "catalog_bore_30": "catalog --bore 30",
+    "catalog_show_306": "catalog show 306",
+    "fit_208": "fit examples/bearing208_kuzmenko2014.csv --load-unit kgf --base 200kgf:0.8mm "
+    "--base 1000kgf:1.67mm --balls 9",
+}
+
+
+def run(command: str) -> str:
+    """The output of ``bearingload COMMAND`` (standard output, as a user sees it)."""
+    from click.testing import CliRunner
+
+    from bearingload.cli import main
+
+    result = CliRunner().invoke(main, shlex.split(command), catch_exceptions=False)
+    if result.exit_code != 0:
+        raise RuntimeError(f"bearingload {command} failed ({result.exit_code}): {result.output}")
+    return result.output
+
+
+def expected() -> dict[str, str]:
+    """file name -> content, for every command in every format."""
+    out = {}
+    for name, command in COMMANDS.items():
+        for fmt in FORMATS:
+            out[f"{name}.{fmt}.txt"] = run(f"{command} --format {fmt}")
+    return out
+
+
+def readme_text() -> str:
+    """The README with every console example's output as the code prints it now."""
+    text = README.read_text(encoding="utf-8")
+
+    def block(match: re.Match[str]) -> str:
+        parts = re.split(r"^\$ ", match.group(1), flags=re.M)
+        rebuilt = parts[0]
+        for part in parts[1:]:
+            command = part.partition("\n")[0]
+            output = run(shlex.join(shlex.split(command)[1:]))
+            rebuilt += f"$ {command}\n" + "\n".join(x.rstrip() for x in output.splitlines()) + "\n"
+        return f"```console\n{rebuilt}```"
+
+    return re.sub(r"```console\n(.*?)```", block, text, flags=re.S)
+
+
+def main() -> None:
+    import os
+
+    os.chdir(ROOT)  # example files are named relative to the repository
+    GOLDEN.mkdir(exist_ok=True)
+    files = expected()
+    for old in GOLDEN.glob("*.txt"):
+        if old.name not in files:
+            old.unlink()
+    for name, content in files.items():
+        (GOLDEN / name).write_text(content, encoding="utf-8", newline="\n")
+    README.write_text(readme_text(), encoding="utf-8", newline="\n")
+    print(f"wrote {len(files)} golden outputs and the README's console examples", file=sys.stderr)
+
+
+if __name__ == "__main__":
+    main()
