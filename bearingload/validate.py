@@ -46,11 +46,15 @@ def exponent(value: object, *, name: str = "exponent") -> np.ndarray:
     """Return the load-deflection exponent; 1 <= m <= 3 (3/2 balls, 10/9 rollers)."""
     arr = finite(name, value)
     if np.any((arr < 1) | (arr > 3)):
+        bad = (arr < 1) | (arr > 3)
         raise InputError(
-            name, f"must be between 1 and 3 (1.5 for balls, 10/9 for rollers; got {arr.flat[0]:g})"
+            name,
+            f"must be between 1 and 3 (1.5 for balls, 10/9 for rollers; got {_worst(arr, bad)})",
         )
     return arr
 
 
 def _worst(arr: np.ndarray, bad: np.ndarray) -> str:
-    return f"{np.asarray(arr)[np.asarray(bad)].flat[0]:g}"
+    """The first offending value, unrounded (shortest repr: 8.0000000001 stays 8.0000000001)."""
+    v = float(np.asarray(arr)[np.asarray(bad)].flat[0])
+    return repr(int(v)) if v.is_integer() and abs(v) < 1e16 else repr(v)

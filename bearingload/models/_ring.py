@@ -1,0 +1,401 @@
+"""Internals of the ring-equilibrium engine: rings of balls, scaled forces and the Newton solvers.
+
+Everything here works in scaled units: lengths over the one-ball approach ``s = (F_r/K)^(1/m)``,
+forces over ``F_r``. Two formulations keep the digits (see :mod:`bearingload.models.equilibrium`):
+
+* clearance >= 0: the unknown ``(xi, eta)`` is the displacement from the reference position
+  where the balls nearest the load line just touch; ball approach ``xi c + eta s - e_hat u``.
+* preload (clearance < 0, z >= 2): the unknown is the displacement from the centred ring; ball
+  approach ``p + xi c + eta s`` with ``p = -e_hat``, and the ball forces are summed as
+  ``p^m ((1 + t)^m - 1)``, ``t = (xi c + eta s)/p`` (the ``p^m`` terms cancel exactly around a
+  full ring), so a heavy preload does not swamp the load.
+
+Every operation is row-wise (one case per row, sums along the row), so a case's answer does not
+depend on the other cases solved with it.
+"""
+
+from __future__ import annotations
+
+import functools
+from dataclasses import dataclass
+from typing import Any
+
+import numpy as np
+
+from bearingload.errors import ConvergenceError
+
+EPS = float(np.finfo(float).eps)
+#: Iteration cap of every Newton loop; reaching it raises ConvergenceError.
+MAX_ITERATIONS = 200
+#: At tolerances up to this the converged point gets one more Newton step (rounding level). [-]
+POLISH = 1e-13
+#: Preloads |e|/s above this are solved from the centred ring (below, from the touching one). [-]
+PRELOAD_CENTRED = 1e-50
+#: Cosines and sines below this are rounding of an exact zero. [-]
+SNAP = 1e-14
+
+
+def snapped_cos(phi: np.ndarray) -> np.ndarray:
+    c = np.cos(phi)
+    return np.where(np.abs(c) < SNAP, 0.0, c)
+
+
+def snapped_sin(phi: np.ndarray) -> np.ndarray:
+    s = np.sin(phi)
+    return np.where(np.abs(s) < SNAP, 0.0, s)
+
+
+def gap_factor(theta: np.ndarray, h: float) -> np.ndarray:
+    """``u = 1 - cos(theta)/cos(h)`` without cancellation; rounding of an exact 0 is 0."""
+    u = 2.0 * np.sin((theta + h) / 2.0) * np.sin((theta - h) / 2.0) / np.cos(h)
+    return np.where(u < 1e-13, 0.0, u)
+
+
+@dataclass(frozen=True)
+class Ring:
+    """A set of ball angles and the reference position of its formulation.
+
+    ``c, s``: cosine and sine of each angle; ``u``: gap factor of each ball (the reference
+    formulation; all 1 for a preload); ``w``: multiplicity of each angle. Arrays are shared,
+    shape (k,), or per case, shape (n, k). ``x0, y0``: reference position over ``e`` (0 under
+    preload); ``mu, h``: the straddling balls nearest the load line sit at ``mu -+ h``.
+    """
+
+    c: np.ndarray
+    s: np.ndarray
+    u: np.ndarray
+    w: np.ndarray
+    x0: Any
+    y0: Any
+    c_max: Any
+    w_max: Any
+    mu: Any
+    h: float
+    preload: bool
+
+    @staticmethod
+    def build(
+        phi: np.ndarray, w: np.ndarray, mu: Any, h: float, front: bool, preload: bool
+    ) -> Ring:
+        """``phi``: angles, shape (k,) shared or (n, k) per case; ``mu``: scalar or (n,)."""
+        mu = np.asarray(mu, dtype=float)
+        if front:  # clearance >= 0: balls at 90 degrees or beyond can never carry load
+            keep = np.cos(phi) > SNAP
+            phi, w = phi[keep], w[keep]
+        c, s = snapped_cos(phi), snapped_sin(phi)
+        theta = phi - (mu[..., None] if mu.ndim else mu)
+        top = np.argmax(c, axis=-1)
+        c_max = np.take_along_axis(c, top[..., None], -1)[..., 0] if c.ndim == 2 else c[top]
+        w_max = np.take_along_axis(w, top[..., None], -1)[..., 0] if w.ndim == 2 else w[top]
+        zero = np.zeros_like(mu)
+        return Ring(
+            c=c,
+            s=s,
+            u=np.ones_like(c) if preload else gap_factor(theta, h),
+            w=w,
+            x0=zero if preload else np.cos(mu) / np.cos(h),
+            y0=zero if preload else np.sin(mu) / np.cos(h),
+            c_max=np.asarray(c_max, dtype=float),
+            w_max=np.asarray(w_max, dtype=float),
+            mu=mu,
+            h=h,
+            preload=preload,
+        )
+
+    @classmethod
+    @functools.lru_cache(maxsize=4096)
+    def symmetric(cls, z: int, half_pitch: bool, preload: bool) -> Ring:
+        """Half of a ring symmetric about the load line, each angle with its multiplicity."""
+        j = np.arange(z)
+        phi = (j + (0.5 if half_pitch else 0.0)) * 2.0 * np.pi / z
+        phi = np.minimum(phi, 2.0 * np.pi - phi)  # fold the lower half onto the upper half
+        uniq, counts = np.unique(np.round(phi / np.pi * 2 * z) / (2 * z), return_counts=True)
+        h = np.pi / z if half_pitch else 0.0
+        return cls.build(uniq * np.pi, counts.astype(float), 0.0, h, not preload, preload)
+
+    @classmethod
+    def general(cls, z: int, phi1: np.ndarray, preload: bool) -> Ring:
+        """All z balls of each case, ball 1 at ``phi1`` in (0, 2 pi/z) [rad], shape (n,)."""
+        pitch = 2.0 * np.pi / z
+        phi = phi1[:, None] + np.arange(z) * pitch
+        phi = np.where(phi > np.pi, phi - 2.0 * np.pi, phi)
+        return cls.build(phi, np.ones_like(phi), phi1 - pitch / 2.0, pitch / 2.0, False, preload)
+
+
+def rows(a: np.ndarray, idx: np.ndarray) -> np.ndarray:
+    """Rows ``idx`` of a per-case (2-D) ring array; a shared (1-D) ring array as it is."""
+    return a if a.ndim == 1 else a[idx]
+
+
+@dataclass
+class State:
+    """Scaled forces at a ring position: residual ``(gx, gy)``, Hessian, size, energy, loads."""
+
+    gx: np.ndarray
+    gy: np.ndarray
+    hxx: np.ndarray
+    hxy: np.ndarray
+    hyy: np.ndarray
+    size: np.ndarray
+    energy: np.ndarray
+    q: np.ndarray
+    dq: np.ndarray
+    delta: np.ndarray
+
+
+def state(
+    ring: Ring,
+    idx: np.ndarray,
+    xi: np.ndarray,
+    eta: np.ndarray | None,
+    e_hat: np.ndarray,
+    m: np.ndarray,
+) -> State:
+    """Scaled ball loads, the force residual and its Jacobian at ``(xi, eta)`` (``eta`` None: 0)."""
+    c, s, w = rows(ring.c, idx), rows(ring.s, idx), rows(ring.w, idx)
+    mm = m[:, None]
+    move = xi[:, None] * c
+    if eta is not None:
+        move = move + eta[:, None] * s
+    with np.errstate(all="ignore"):
+        if ring.preload:
+            p = -e_hat[:, None]
+            t = move / p
+            touching = t > -1.0
+            lg = np.log1p(np.where(touching, t, 0.0))
+            pm = p**mm
+            terms = np.where(touching, pm * np.expm1(mm * lg), -pm)  # q - p^m
+            q = np.where(touching, pm * np.exp(mm * lg), 0.0)
+            dq = np.where(touching, mm * p ** (mm - 1.0) * np.exp((mm - 1.0) * lg), 0.0)
+            bracket = np.where(touching, np.expm1((mm + 1.0) * lg), -1.0) - (mm + 1.0) * t
+            energy = (w * pm * (p * bracket)).sum(1) / (m + 1.0) - xi
+            delta = p + move
+        else:
+            delta = move - e_hat[:, None] * rows(ring.u, idx)
+            pos = np.maximum(delta, 0.0)
+            if np.all(m == 1.5):
+                root = np.sqrt(pos)
+                q, dq = pos * root, 1.5 * root
+            else:
+                pm1 = np.where(pos > 0, pos ** (mm - 1.0), 0.0)
+                q, dq = pos * pm1, mm * pm1
+            terms = q
+            energy = (w * q * pos).sum(1) / (m + 1.0) - xi
+        wt, wdq = w * terms, w * dq
+        gx = (wt * c).sum(1) - 1.0
+        gy = (wt * s).sum(1) if eta is not None else np.zeros_like(gx)
+        hxx = (wdq * c * c).sum(1)
+        hxy = (wdq * c * s).sum(1) if eta is not None else np.zeros_like(gx)
+        hyy = (wdq * s * s).sum(1)
+        # residual scale: the load, or the sum of the terms added when larger (their rounding)
+        size = np.maximum(1.0, (w * np.abs(terms)).sum(1))
+    return State(gx, gy, hxx, hxy, hyy, size, energy, q, dq, delta)
+
+
+def _starts(ring: Ring, e_hat: np.ndarray, m: np.ndarray) -> tuple[np.ndarray, np.ndarray]:
+    """Start and upper bound of the symmetric x-equilibrium, each from the case's data alone."""
+    with np.errstate(all="ignore"):
+        hi = (1.0 / (ring.w_max * ring.c_max)) ** (1.0 / m) / ring.c_max
+    start = hi.copy()
+    if ring.c.ndim == 1:
+        c, u, w = ring.c, ring.u, ring.w
+        front = c > 0
+        for m0 in np.unique(m):  # ring sums per exponent: the same numbers whatever the batch
+            sel = m == m0
+            sum_c = float(np.sum(w[front] * c[front] ** (m0 + 1.0)))
+            if ring.preload:
+                p = -e_hat[sel]
+                lin = 1.0 / (m0 * p ** (m0 - 1.0) * float(np.sum(w * c * c)))
+                start[sel] = np.minimum(lin, hi[sel])
+            else:
+                xi0 = sum_c ** (-1.0 / m0)
+                slope = float(np.sum(w[front] * c[front] ** m0 * u[front])) / sum_c
+                start[sel] = np.minimum(xi0 + slope * e_hat[sel], hi[sel])
+    return start, hi
+
+
+def solve_x(ring: Ring, e_hat: np.ndarray, m: np.ndarray, tol: float) -> tuple[np.ndarray, ...]:
+    """Solve the x-equilibrium ``gx(xi, 0) = 0`` by bracketed Newton; returns (xi, iterations).
+
+    ``gx`` rises with ``xi``; ``gx(0) = -1`` (no ball pushes at the reference or centred position),
+    and the one-ball bound ``hi`` holds the root for a clearance >= 0 (widened under preload).
+    """
+    n = e_hat.size
+    everyone = np.arange(n)
+    start, hi = _starts(ring, e_hat, m)
+    lo = np.zeros(n)
+    if ring.preload:
+        for _ in range(2100):
+            short = state(ring, everyone, hi, None, e_hat, m).gx < 0
+            if not short.any():
+                break
+            hi = np.where(short, 2.0 * hi, hi)
+    xi = start
+    iterations = np.zeros(n, dtype=np.int64)
+    last = np.full(n, np.inf)
+    active = everyone
+    for it in range(1, MAX_ITERATIONS + 1):
+        x = xi[active]
+        st = state(ring, active, x, None, e_hat[active], m[active])
+        g, dg = st.gx, st.hxx
+        lo_a = np.where(g < 0, x, lo[active])
+        hi_a = np.where(g > 0, x, hi[active])
+        with np.errstate(all="ignore"):
+            new = x - g / dg
+        outside = ~((new > lo_a) & (new < hi_a))
+        new = np.where(outside, 0.5 * (lo_a + hi_a), new)
+        rel = g / st.size
+        met = np.abs(rel) <= tol
+        done = met | (np.abs(new - x) <= 4 * EPS * np.abs(x))
+        # at full-precision tolerances the last Newton step is taken too (checked at the result)
+        xi[active] = np.where(done & ~(met & (tol <= POLISH) & ~outside), x, new)
+        last[active], lo[active], hi[active], iterations[active] = rel, lo_a, hi_a, it
+        active = active[~done]
+        if active.size == 0:
+            break
+    last[active] = np.inf
+    check(last, "symmetric ring equilibrium", iterations, e_hat, m, tol)
+    return xi, iterations
+
+
+def solve_xy(ring: Ring, e_hat: np.ndarray, m: np.ndarray, tol: float) -> tuple[np.ndarray, ...]:
+    """Minimise the scaled potential in (xi, eta): damped Newton, Armijo or gradient-halving steps.
+
+    Starts where the half-pitch ring starts (its reference, two balls straddling the load line,
+    is alike), capped by the one-ball bound. The state of an accepted trial point is the next
+    iterate's state (one evaluation per step when the full step is taken).
+    """
+    n = e_hat.size
+    half = Ring.symmetric(ring.c.shape[-1], True, ring.preload)
+    start, _ = _starts(half, e_hat, m)
+    with np.errstate(all="ignore"):
+        hi = (1.0 / ring.c_max) ** (1.0 / m) / ring.c_max
+    xi = np.minimum(start, hi)
+    iterations = np.zeros(n, dtype=np.int64)
+    eta = np.zeros(n)
+    everyone = np.arange(n)
+    cur = state(ring, everyone, xi, eta, e_hat, m)
+    gnorm_all = np.hypot(cur.gx, cur.gy) / cur.size
+    active = np.nonzero(~(gnorm_all <= tol))[0]
+    cur = _take(cur, active)
+    for _ in range(MAX_ITERATIONS):
+        if active.size == 0:
+            break
+        a, b, eh, mv = xi[active], eta[active], e_hat[active], m[active]
+        gnorm = np.hypot(cur.gx, cur.gy)
+        dx, dy = newton_step(cur)
+        slope = cur.gx * dx + cur.gy * dy
+        t = np.ones(active.size)
+        trial = state(ring, active, a + dx, b + dy, eh, mv)
+        pending = ~_accept(trial, cur, t, slope, gnorm)
+        for _ in range(80):
+            if not pending.any():
+                break
+            t = np.where(pending, 0.5 * t, t)
+            sub = np.nonzero(pending)[0]
+            part = state(ring, active[sub], a[sub] + t[sub] * dx[sub], b[sub] + t[sub] * dy[sub],
+                         eh[sub], mv[sub])  # fmt: skip
+            ok = _accept(part, _take(cur, sub), t[sub], slope[sub], gnorm[sub])
+            _put(trial, sub[ok], _take(part, np.nonzero(ok)[0]))
+            pending[sub[ok]] = False
+        na, nb = a + t * dx, b + t * dy
+        small = np.hypot(na - a, nb - b) <= 4 * EPS * np.hypot(na, nb) + 1e-300
+        xi[active], eta[active] = na, nb
+        iterations[active] += 1
+        conv = np.hypot(trial.gx, trial.gy) <= tol * trial.size
+        if tol <= POLISH and conv.any():  # the last Newton step too (checked at the result)
+            fin = np.nonzero(conv)[0]
+            px, py = newton_step(_take(trial, fin))
+            xi[active[fin]] += px
+            eta[active[fin]] += py
+        keep = ~(conv | small)
+        active, cur = active[keep], _take(trial, np.nonzero(keep)[0])
+    else:
+        raise ConvergenceError(
+            "ring equilibrium at a general cage angle",
+            MAX_ITERATIONS,
+            float("nan"),
+            {"e_hat": e_hat[active], "exponent": m[active]},
+        )
+    final = state(ring, everyone, xi, eta, e_hat, m)
+    residual = np.hypot(final.gx, final.gy) / final.size
+    check(residual, "ring equilibrium at a general cage angle", iterations, e_hat, m, tol)
+    return xi, eta, iterations
+
+
+def newton_step(st: State) -> tuple[np.ndarray, np.ndarray]:
+    """The (regularised) Newton step from a state."""
+    with np.errstate(all="ignore"):
+        reg = 1e-12 * (st.hxx + st.hyy) + 1e-300
+        hxx, hyy = st.hxx + reg, st.hyy + reg
+        det = hxx * hyy - st.hxy * st.hxy
+        dx = -(hyy * st.gx - st.hxy * st.gy) / det
+        dy = -(hxx * st.gy - st.hxy * st.gx) / det
+    return dx, dy
+
+
+def _accept(new: State, cur: State, t: np.ndarray, slope: np.ndarray, gnorm: np.ndarray) -> Any:
+    """Armijo decrease of the energy, or the gradient at least halved (rounding-level energy)."""
+    return (new.energy <= cur.energy + 1e-4 * t * slope) | (np.hypot(new.gx, new.gy) < 0.5 * gnorm)
+
+
+def _take(st: State, sel: np.ndarray) -> State:
+    return State(*(getattr(st, f)[sel] for f in st.__dataclass_fields__))
+
+
+def _put(st: State, sel: np.ndarray, part: State) -> None:
+    for f in st.__dataclass_fields__:
+        getattr(st, f)[sel] = getattr(part, f)
+
+
+def check(
+    residual: np.ndarray,
+    solver: str,
+    iterations: np.ndarray,
+    e_hat: np.ndarray,
+    m: np.ndarray,
+    tol: float,
+) -> None:
+    """Raise ConvergenceError where the residual is not small; never return a silent wrong number.
+
+    A case may stop where the Newton step no longer moves it, short of a tolerance below what
+    double precision resolves; 1e-11 is the most such a stop may leave.
+    """
+    bad = ~(np.abs(residual) <= max(tol, 1e-11))
+    if np.any(bad):
+        worst = np.abs(residual[bad])
+        raise ConvergenceError(
+            solver,
+            int(iterations[bad].max()),
+            float(np.max(np.where(np.isfinite(worst), worst, np.inf))),
+            {"e_hat": e_hat[bad], "exponent": m[bad]},
+        )
+
+
+def derived(
+    ring: Ring, xi: np.ndarray, eta: np.ndarray | None, e_hat: np.ndarray, m: np.ndarray
+) -> tuple[np.ndarray, ...]:
+    """(q_hat, loaded, hxx, hxy, hyy, residual) at the solution, scaled.
+
+    A ball counts as loaded when its approach exceeds the rounding of its own computation
+    (8 eps of the terms summed); a ball touching to within rounding counts as unloaded and adds
+    nothing to the stiffness, so the count is one decision per case, not a rounding accident.
+    """
+    idx = np.arange(xi.size)
+    st = state(ring, idx, xi, eta, e_hat, m)
+    c, s, w = rows(ring.c, idx), rows(ring.s, idx), rows(ring.w, idx)
+    noise = np.abs(xi[:, None] * c)
+    if eta is not None:
+        noise = noise + np.abs(eta[:, None] * s)
+    noise = noise + np.abs(e_hat[:, None] * rows(ring.u, idx))
+    loaded = st.delta > 8 * EPS * noise
+    wdq = np.where(loaded, w * st.dq, 0.0)
+    q_hat = np.where(loaded, st.q, 0.0).max(axis=1)
+    return (
+        q_hat,
+        (np.where(loaded, w, 0.0)).sum(1),
+        (wdq * c * c).sum(1),
+        (wdq * c * s).sum(1) if eta is not None else np.zeros_like(q_hat),
+        (wdq * s * s).sum(1),
+        np.hypot(st.gx, st.gy) / st.size,
+    )
