@@ -54,6 +54,24 @@ def exponent(value: object, *, name: str = "exponent") -> np.ndarray:
     return arr
 
 
+def broadcast(names: tuple[str, ...], arrays: list[np.ndarray]) -> tuple[int, ...]:
+    """The common shape of checked input arrays; InputError for an empty or mismatched one."""
+    for name, arr in zip(names, arrays, strict=True):
+        if arr.size == 0:
+            raise InputError(name, f"is an empty array (shape {arr.shape}); give at least one case")
+    shape: tuple[int, ...] = ()
+    for name, arr in zip(names, arrays, strict=True):
+        try:
+            shape = np.broadcast_shapes(shape, arr.shape)
+        except ValueError:
+            raise InputError(
+                name,
+                f"has shape {arr.shape}, which does not broadcast with the shape {shape} of the "
+                "parameters before it; give arrays of one shape (or scalars)",
+            ) from None
+    return shape
+
+
 def _worst(arr: np.ndarray, bad: np.ndarray) -> str:
     """The first offending value, unrounded (shortest repr: 8.0000000001 stays 8.0000000001)."""
     v = float(np.asarray(arr)[np.asarray(bad)].flat[0])
