@@ -59,6 +59,11 @@ class Cases:
     def take(self, mask: np.ndarray) -> Cases:
         return Cases(*(getattr(self, f)[mask] for f in self.__dataclass_fields__))
 
+    def one(self, i: int) -> Cases:
+        """Case ``i`` as Python numbers, the way a caller passes one case."""
+        values = [getattr(self, f)[i].item() for f in self.__dataclass_fields__]
+        return Cases(*values)
+
     def tile(self, copies: int) -> Cases:
         return Cases(*(np.tile(getattr(self, f), copies) for f in self.__dataclass_fields__))
 
@@ -164,7 +169,7 @@ def _best_time(call: Callable[[], Any], repeats: int) -> float:
 
 def _time_loop(method: Method, cases: Cases, repeats: int) -> float:
     """Best time of running the cases one per call."""
-    singles = [cases.take(np.array([i])) for i in range(len(cases))]
+    singles = [cases.one(i) for i in range(len(cases))]
 
     def loop() -> None:
         for one in singles:
