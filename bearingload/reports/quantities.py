@@ -107,6 +107,7 @@ QUANTITIES: dict[str, Quantity] = {
         Quantity("parameter", "parameter", "", None),
         Quantity("max_residual", "max residual", "-", 2),
         Quantity("max_jump", "max jump", "-", 2),
+        Quantity("jump_at", "jump at", "-", 2),
         Quantity("batch_dependence", "batch dep.", "-", 2),
         Quantity("max_iterations", "max it.", "", None),
         Quantity("nan", "NaN/inf", "", None),

@@ -233,12 +233,13 @@ def _relative_difference(a: np.ndarray, b: np.ndarray) -> float:
     return float(rel.max())
 
 
-def _jump(series: Series, out: Outcome) -> float:
-    """Largest relative change of k and d between neighbours per unit of the parameter."""
+def _jump(series: Series, out: Outcome) -> tuple[float, float]:
+    """Largest relative change of k and d between neighbours per unit of the parameter, and the
+    parameter value where it starts."""
     t = series.parameter
     t = np.log10(np.abs(t)) if series.log else t
     ok = out.finite
-    worst = 0.0
+    worst, where = 0.0, float(series.parameter[0])
     for i in range(t.size - 1):
         if not (ok[i] and ok[i + 1]) or t[i + 1] == t[i]:
             continue
@@ -246,15 +247,17 @@ def _jump(series: Series, out: Outcome) -> float:
         dk = abs(k1 - k0) / max(abs(k0), abs(k1), 1e-300)
         d0, d1 = out.d[i], out.d[i + 1]
         dd = float(np.hypot(*(d1 - d0))) / max(float(np.hypot(*d0)), float(np.hypot(*d1)), 1e-300)
-        worst = max(worst, max(dk, dd) / abs(t[i + 1] - t[i]))
-    return worst
+        rate = max(dk, dd) / abs(t[i + 1] - t[i])
+        if rate > worst:
+            worst, where = rate, float(series.parameter[i])
+    return worst, where
 
 
 def _run_family(family: Family, size: str) -> tuple[dict[str, Any], list[Outcome]]:
     solver = SOLVERS[family.kind]
     all_series = family.build(size)
     row: dict[str, Any] = {"cases": 0, "refused": 0, "failures": 0, "nan": 0, "warnings": 0}
-    residual, jump, batch, iterations = 0.0, 0.0, 0.0, 0
+    residual, jump, jump_at, batch, iterations = 0.0, 0.0, 0.0, 0.0, 0
     outcomes = []
     for series in all_series:
         with warnings.catch_warnings(record=True) as caught:
@@ -275,10 +278,16 @@ def _run_family(family: Family, size: str) -> tuple[dict[str, Any], list[Outcome
         if good.any():
             residual = max(residual, float(np.max(out.residual[good])))
             iterations = max(iterations, int(np.max(out.iterations[good])))
-        jump = max(jump, _jump(series, out))
+        rate, where = _jump(series, out)
+        if rate > jump:
+            jump, jump_at = rate, where
         outcomes.append(out)
     row.update(
-        max_residual=residual, max_jump=jump, batch_dependence=batch, max_iterations=iterations
+        max_residual=residual,
+        max_jump=jump,
+        jump_at=jump_at,
+        batch_dependence=batch,
+        max_iterations=iterations,
     )
     return row, outcomes
 
@@ -686,6 +695,7 @@ COLUMNS = tuple(
         "cases",
         "max_residual",
         "max_jump",
+        "jump_at",
         "batch_dependence",
         "max_iterations",
         "nan",
@@ -700,7 +710,8 @@ COLUMNS = tuple(
 NOTES = (
     "max residual: |sum Q_i (cos, sin) - (F, 0)| / max(F, sum Q_i), from the returned ball loads.",
     "max jump: largest relative change of Q_max or (x, y) between neighbours per unit of the "
-    "parameter (log10 of it, or itself through 0); order 1 for a smooth family, a limit of 10.",
+    "parameter (log10 of it, or itself through 0); order 1 for a smooth family, a limit of 10; "
+    "jump at: the parameter value where it starts.",
     "batch dep.: largest relative difference between a case alone and in its family's batch.",
 )
 
