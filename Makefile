@@ -38,11 +38,13 @@ tables: $(STAMP)
 golden: $(STAMP)
 	$(BIN)/python -m tests.golden_outputs
 
-## make bench: vectorised solver against a per-case scipy brentq loop, same run; the
-## work-precision report (times of this run) and the full stability grid
+## make bench: vectorised solver against a per-case scipy brentq loop, one call against scipy root
+## (hybr) and the Hertz contact against brentq on the ellipticity equation: ratios in one run;
+## the work-precision report (times of this run) and the full stability grid
 bench: $(STAMP)
 	$(BIN)/python -m compileall -q bearingload
 	$(BIN)/python benchmarks/bench_solver.py
+	$(BIN)/python benchmarks/bench_scalar.py
 	$(BIN)/python benchmarks/bench_methods.py
 	$(BIN)/bearingload accuracy
 	$(BIN)/bearingload stability --size full

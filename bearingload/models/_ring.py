@@ -31,6 +31,9 @@ MAX_ITERATIONS = 200
 POLISH = 1e-13
 #: Preloads |e|/s above this are solved from the centred ring (below, from the touching one). [-]
 PRELOAD_CENTRED = 1e-50
+#: A cage angle within this of 0 or half pitch is symmetric: 4 ulps of 360°, the rounding of
+#: reducing an angle to one turn and one pitch. [°]
+SYMMETRY_SNAP_DEG = 4.0 * EPS * 360.0
 #: Cosines and sines below this are rounding of an exact zero. [-]
 SNAP = 1e-14
 
@@ -102,6 +105,12 @@ class Ring:
             preload=preload,
         )
 
+    @functools.cached_property
+    def products(self) -> tuple[np.ndarray, ...]:
+        """(c, s, w, wc, ws, wcc, wcs, wss): the weighted products the sums use, once per ring."""
+        wc, ws = self.w * self.c, self.w * self.s
+        return self.c, self.s, self.w, wc, ws, wc * self.c, wc * self.s, ws * self.s
+
     @classmethod
     @functools.lru_cache(maxsize=4096)
     def symmetric(cls, z: int, half_pitch: bool, preload: bool) -> Ring:
@@ -143,6 +152,20 @@ class State:
     delta: np.ndarray
 
 
+def dot(a: np.ndarray, v: np.ndarray) -> np.ndarray:
+    """Row sums of ``a * v`` (``v`` shared (k,) or per case (n, k)).
+
+    einsum, not BLAS: a matrix-vector product may sum a row in an order that depends on the
+    number of rows, and a case's answer must not depend on its batch.
+    """
+    return np.einsum("ij,j->i", a, v) if v.ndim == 1 else np.einsum("ij,ij->i", a, v)
+
+
+def products(ring: Ring, idx: np.ndarray) -> tuple[np.ndarray, ...]:
+    """(c, s, w, wc, ws, wcc, wcs, wss) of the ring for the cases ``idx``."""
+    return tuple(rows(a, idx) for a in ring.products)
+
+
 def state(
     ring: Ring,
     idx: np.ndarray,
@@ -152,7 +175,7 @@ def state(
     m: np.ndarray,
 ) -> State:
     """Scaled ball loads, the force residual and its Jacobian at ``(xi, eta)`` (``eta`` None: 0)."""
-    c, s, w = rows(ring.c, idx), rows(ring.s, idx), rows(ring.w, idx)
+    c, s, w, wc, ws, wcc, wcs, wss = products(ring, idx)
     mm = m[:, None]
     move = xi[:, None] * c
     if eta is not None:
@@ -168,28 +191,49 @@ def state(
             q = np.where(touching, pm * np.exp(mm * lg), 0.0)
             dq = np.where(touching, mm * p ** (mm - 1.0) * np.exp((mm - 1.0) * lg), 0.0)
             bracket = np.where(touching, np.expm1((mm + 1.0) * lg), -1.0) - (mm + 1.0) * t
-            energy = (w * pm * (p * bracket)).sum(1) / (m + 1.0) - xi
+            energy = dot(pm * (p * bracket), w) / (m + 1.0) - xi
             delta = p + move
+            size = np.maximum(1.0, dot(np.abs(terms), w))
         else:
             delta = move - e_hat[:, None] * rows(ring.u, idx)
             pos = np.maximum(delta, 0.0)
-            if np.all(m == 1.5):
-                root = np.sqrt(pos)
-                q, dq = pos * root, 1.5 * root
-            else:
-                pm1 = np.where(pos > 0, pos ** (mm - 1.0), 0.0)
-                q, dq = pos * pm1, mm * pm1
+            q, dq = _powers(pos, m)
             terms = q
-            energy = (w * q * pos).sum(1) / (m + 1.0) - xi
-        wt, wdq = w * terms, w * dq
-        gx = (wt * c).sum(1) - 1.0
-        gy = (wt * s).sum(1) if eta is not None else np.zeros_like(gx)
-        hxx = (wdq * c * c).sum(1)
-        hxy = (wdq * c * s).sum(1) if eta is not None else np.zeros_like(gx)
-        hyy = (wdq * s * s).sum(1)
-        # residual scale: the load, or the sum of the terms added when larger (their rounding)
-        size = np.maximum(1.0, (w * np.abs(terms)).sum(1))
+            energy = dot(q * pos, w) / (m + 1.0) - xi
+            size = np.maximum(1.0, dot(q, w))
+        gx = dot(terms, wc) - 1.0
+        zero = np.zeros_like(gx)
+        gy = dot(terms, ws) if eta is not None else zero
+        hxx = dot(dq, wcc)
+        hxy = dot(dq, wcs) if eta is not None else zero
+        hyy = dot(dq, wss)
     return State(gx, gy, hxx, hxy, hyy, size, energy, q, dq, delta)
+
+
+def _powers(pos: np.ndarray, m: np.ndarray) -> tuple[np.ndarray, np.ndarray]:
+    """``pos^m`` and ``m pos^(m-1)`` (a square root for m = 3/2; one rule per group of cases)."""
+    if np.all(m == 1.5):
+        root = np.sqrt(pos)
+        return pos * root, 1.5 * root
+    mm = m[:, None]
+    with np.errstate(all="ignore"):
+        pm1 = np.where(pos > 0, pos ** (mm - 1.0), 0.0)
+    return pos * pm1, mm * pm1
+
+
+def x_state(
+    ring: Ring, idx: np.ndarray, xi: np.ndarray, e_hat: np.ndarray, m: np.ndarray
+) -> tuple[np.ndarray, np.ndarray, np.ndarray]:
+    """(gx, dgx/dxi, size) with ``eta = 0``: the lean evaluation of the symmetric solver."""
+    if ring.preload:
+        st = state(ring, idx, xi, None, e_hat, m)
+        return st.gx, st.hxx, st.size
+    c, _, w, wc, _, wcc, _, _ = products(ring, idx)
+    delta = xi[:, None] * c
+    delta -= e_hat[:, None] * rows(ring.u, idx)
+    np.maximum(delta, 0.0, out=delta)
+    q, dq = _powers(delta, m)
+    return dot(q, wc) - 1.0, dot(dq, wcc), np.maximum(1.0, dot(q, w))
 
 
 def _starts(ring: Ring, e_hat: np.ndarray, m: np.ndarray) -> tuple[np.ndarray, np.ndarray]:
@@ -226,7 +270,7 @@ def solve_x(ring: Ring, e_hat: np.ndarray, m: np.ndarray, tol: float) -> tuple[n
     lo = np.zeros(n)
     if ring.preload:
         for _ in range(2100):
-            short = state(ring, everyone, hi, None, e_hat, m).gx < 0
+            short = x_state(ring, everyone, hi, e_hat, m)[0] < 0
             if not short.any():
                 break
             hi = np.where(short, 2.0 * hi, hi)
@@ -236,15 +280,14 @@ def solve_x(ring: Ring, e_hat: np.ndarray, m: np.ndarray, tol: float) -> tuple[n
     active = everyone
     for it in range(1, MAX_ITERATIONS + 1):
         x = xi[active]
-        st = state(ring, active, x, None, e_hat[active], m[active])
-        g, dg = st.gx, st.hxx
+        g, dg, size = x_state(ring, active, x, e_hat[active], m[active])
         lo_a = np.where(g < 0, x, lo[active])
         hi_a = np.where(g > 0, x, hi[active])
         with np.errstate(all="ignore"):
             new = x - g / dg
         outside = ~((new > lo_a) & (new < hi_a))
         new = np.where(outside, 0.5 * (lo_a + hi_a), new)
-        rel = g / st.size
+        rel = g / size
         met = np.abs(rel) <= tol
         done = met | (np.abs(new - x) <= 4 * EPS * np.abs(x))
         # at full-precision tolerances the last Newton step is taken too (checked at the result)
@@ -389,13 +432,14 @@ def derived(
         noise = noise + np.abs(eta[:, None] * s)
     noise = noise + np.abs(e_hat[:, None] * rows(ring.u, idx))
     loaded = st.delta > 8 * EPS * noise
-    wdq = np.where(loaded, w * st.dq, 0.0)
+    wdq = np.where(loaded, st.dq, 0.0)
     q_hat = np.where(loaded, st.q, 0.0).max(axis=1)
+    _, _, _, _, _, wcc, wcs, wss = products(ring, idx)
     return (
         q_hat,
-        (np.where(loaded, w, 0.0)).sum(1),
-        (wdq * c * c).sum(1),
-        (wdq * c * s).sum(1) if eta is not None else np.zeros_like(q_hat),
-        (wdq * s * s).sum(1),
+        dot(loaded.astype(float), w),
+        dot(wdq, wcc),
+        dot(wdq, wcs) if eta is not None else np.zeros_like(q_hat),
+        dot(wdq, wss),
         np.hypot(st.gx, st.gy) / st.size,
     )

@@ -24,7 +24,12 @@ _NUMBER = (int, float, np.integer, np.floating)
 
 def is_one_case(*values: Any) -> bool:
     """True when every input is a plain real scalar (no array, no bool)."""
-    return all(isinstance(v, _NUMBER) and not isinstance(v, (bool, np.bool_)) for v in values)
+    for v in values:
+        kind = type(v)
+        if kind is not float and kind is not int:
+            if not isinstance(v, _NUMBER) or isinstance(v, (bool, np.bool_)):
+                return False
+    return True
 
 
 @functools.lru_cache(maxsize=4096)
@@ -58,6 +63,7 @@ def _pitch_table(z: int, preload: bool) -> tuple[list[float], list[float], list[
     return [math.cos(j * pitch) for j in range(z)], [math.sin(j * pitch) for j in range(z)], u
 
 
+@functools.lru_cache(maxsize=1024)
 def _general(z: int, phi1: float, preload: bool) -> tuple[Any, ...]:
     """All z balls, ball 1 at ``phi1`` in (0, 2 pi/z) [rad]: as ``Ring.general`` for one case."""
     pitch = 2.0 * math.pi / z
@@ -98,19 +104,22 @@ def _state(
             hxx, hxy, hyy = hxx + wdq * ci * ci, hxy + wdq * ci * si, hyy + wdq * si * si
             en += wi * pm * (p * br)
     else:
+        sqrt, power = m == 1.5, m - 1.0
         for ci, si, ui, wi in zip(c, s, u, w, strict=True):
             d = xi * ci + eta * si - e_hat * ui
             if d <= 0.0:
                 continue
-            if m == 1.5:
-                r = math.sqrt(d)
-                q, dq = d * r, 1.5 * r
-            else:
-                pm1 = d ** (m - 1.0)
-                q, dq = d * pm1, m * pm1
-            wq, wdq = wi * q, wi * dq
-            gx, gy, qsum, en = gx + wq * ci, gy + wq * si, qsum + wq, en + wq * d
-            hxx, hxy, hyy = hxx + wdq * ci * ci, hxy + wdq * ci * si, hyy + wdq * si * si
+            r = math.sqrt(d) if sqrt else d**power
+            q = wi * (d * r)
+            dq = wi * (m * r)
+            gx += q * ci
+            gy += q * si
+            qsum += q
+            en += q * d
+            dc = dq * ci
+            hxx += dc * ci
+            hxy += dc * si
+            hyy += dq * si * si
     return gx - 1.0, gy, hxx, hxy, hyy, max(1.0, qsum), en / (m + 1.0) - xi
 
 
@@ -182,6 +191,7 @@ def _solve_xy(ring: tuple, e_hat: float, m: float, pre: bool, tol: float) -> tup
     """Damped Newton in (xi, eta) (``_ring.solve_xy`` for one case): (xi, eta, iterations)."""
     xi, eta, its = _start_xy(ring, e_hat, m, pre), 0.0, 0
     cur = _state(ring, xi, eta, e_hat, m, pre)
+    previous = math.inf
     for _ in range(_ring.MAX_ITERATIONS):
         gx, gy, hxx, hxy, hyy, size, energy = cur
         gnorm = math.hypot(gx, gy)
@@ -190,6 +200,13 @@ def _solve_xy(ring: tuple, e_hat: float, m: float, pre: bool, tol: float) -> tup
             if its and tol <= _ring.POLISH:  # the last Newton step too, as the vector path
                 return xi + dx, eta + dy, its
             return xi, eta, its
+        step = math.hypot(dx, dy) / math.hypot(xi, eta)
+        if its and tol <= _ring.POLISH and step <= 1e-9 and step <= 1e-3 * previous:
+            # quadratic convergence seen (steps 1e-3 times the last, <= 1e-9): the next error
+            # is below step^3/previous^2 <= 1e-15; the residual at the point returned is
+            # checked by the caller (else the vectorised path solves the case)
+            return xi + dx, eta + dy, its + 1
+        previous = step
         slope = gx * dx + gy * dy
         t = 1.0
         for _ in range(81):
@@ -211,14 +228,21 @@ def _solve_xy(ring: tuple, e_hat: float, m: float, pre: bool, tol: float) -> tup
     raise ConvergenceError("ring equilibrium at a general cage angle", its, math.nan, {})
 
 
-def _derived(ring: tuple, xi: float, eta: float, e_hat: float, m: float, pre: bool) -> tuple:
-    """(q_hat, loaded, hxx, hxy, hyy) with the loaded-ball rule of ``_ring.derived``."""
+def _derived(
+    ring: tuple, xi: float, eta: float, e_hat: float, m: float, pre: bool, folded: bool
+) -> tuple:
+    """(q_hat, loaded, hxx, hxy, hyy, residual) with the loaded-ball rule of ``_ring.derived``.
+
+    ``residual``: the relative force residual at the point, the proof of an early last step;
+    ``folded``: a symmetric half ring, whose transverse forces cancel with the mirror half.
+    """
     c, s, u, w = ring[:4]
-    q_hat = loaded = hxx = hxy = hyy = 0.0
+    q_hat = loaded = hxx = hxy = hyy = gx = gy = size = 0.0
     p = -e_hat
+    # a ball clears every rounding bound when its approach exceeds this (u <= 1 + 1/cos h <= 3)
+    clear = 8 * EPS * (abs(xi) + abs(eta) + 4.0 * abs(e_hat))
     for ci, si, ui, wi in zip(c, s, u, w, strict=True):
         move = xi * ci + eta * si
-        noise = abs(xi * ci) + abs(eta * si) + abs(e_hat * ui)
         if pre:
             t = move / p
             if not t > -1.0:
@@ -226,6 +250,7 @@ def _derived(ring: tuple, xi: float, eta: float, e_hat: float, m: float, pre: bo
             lg = math.log1p(t)
             d, q = p + move, p**m * math.exp(m * lg)
             dq = m * p ** (m - 1.0) * math.exp((m - 1.0) * lg)
+            term = wi * p**m * math.expm1(m * lg)
         else:
             d = move - e_hat * ui
             if d <= 0.0:
@@ -236,12 +261,19 @@ def _derived(ring: tuple, xi: float, eta: float, e_hat: float, m: float, pre: bo
             else:
                 pm1 = d ** (m - 1.0)
                 q, dq = d * pm1, m * pm1
-        if not d > 8 * EPS * noise:
+            term = wi * q
+        gx, gy, size = gx + term * ci, gy + term * si, size + abs(term)
+        if not d > clear and not d > 8 * EPS * (abs(xi * ci) + abs(eta * si) + abs(e_hat * ui)):
             continue
         q_hat, loaded = max(q_hat, q), loaded + wi
         wdq = wi * dq
         hxx, hxy, hyy = hxx + wdq * ci * ci, hxy + wdq * ci * si, hyy + wdq * si * si
-    return q_hat, loaded, hxx, hxy, hyy
+    if pre:  # the balls left out above each add -p^m to the sums
+        for ci, si, wi in zip(c, s, w, strict=True):
+            if not (xi * ci + eta * si) / p > -1.0:
+                gx, gy, size = gx - wi * p**m * ci, gy - wi * p**m * si, size + wi * p**m
+    residual = math.hypot(gx - 1.0, 0.0 if folded else gy) / max(1.0, size)
+    return q_hat, loaded, hxx, hxy, hyy, residual
 
 
 def _plain(balls: Any, load: Any, stiffness: Any, clearance: Any, cage: Any, m: Any) -> Any:
@@ -258,12 +290,10 @@ def _plain(balls: Any, load: Any, stiffness: Any, clearance: Any, cage: Any, m: 
 
 def _kind(z: int, cage: float, phi1_deg: float) -> tuple[float, int]:
     """``_cage_kind`` of the vectorised path for one case (same operations)."""
-    from bearingload.models.equilibrium import SYMMETRY_SNAP_DEG
-
     pitch_deg = 360.0 / z
     frac = (phi1_deg % pitch_deg) / pitch_deg
     mirror = (math.fmod(abs(cage), 360.0) % pitch_deg) / pitch_deg
-    snap = SYMMETRY_SNAP_DEG / pitch_deg
+    snap = _ring.SYMMETRY_SNAP_DEG / pitch_deg
     if mirror <= snap or mirror >= 1.0 - snap:
         return frac, 0
     return frac, 1 if abs(mirror - 0.5) <= snap else 2
@@ -271,6 +301,9 @@ def _kind(z: int, cage: float, phi1_deg: float) -> tuple[float, int]:
 
 def _in_range(f: float, scale: float, e_hat: float, m: float, z: int) -> bool:
     """``_check_range`` of the vectorised path, as a test (False: let it raise)."""
+    if -1.0 <= e_hat <= 1e90 and 1e-90 <= scale <= 1e90 and 1e-250 <= f <= 1e250:
+        if 1e-250 <= f / scale <= 1e250:  # inside every bound with room to spare
+            return True
     from bearingload.models import equilibrium as eq
 
     lo, hi = eq.APPROACH_RANGE
@@ -311,7 +344,9 @@ def solve_one(*values: Any) -> Any:
         ring = _symmetric(z, kind == 1, pre)
         xi, its = _solve_x(ring, (z, kind == 1, pre), e_hat, m, pre, tol)
         eta = 0.0
-    q_hat, loaded, hxx, hxy, hyy = _derived(ring, xi, eta, e_hat, m, pre)
+    q_hat, loaded, hxx, hxy, hyy, residual = _derived(ring, xi, eta, e_hat, m, pre, kind != 2)
+    if not residual <= max(tol, 1e-11):
+        return None  # not proven here: the vectorised path solves it (or says why not)
     if kind != 2:
         hxy = 0.0  # a folded symmetric ring: the mirror halves cancel exactly
     return _result(plain, phi1_deg, scale, ring, (xi, eta, its), (q_hat, loaded, hxx, hxy, hyy))
@@ -320,9 +355,7 @@ def solve_one(*values: Any) -> Any:
 def _result(
     plain: tuple, phi1_deg: float, scale: float, ring: tuple, sol: tuple, der: tuple
 ) -> Any:
-    """The LoadDistribution of one case (0-d arrays), as ``_assemble`` builds it."""
-    from bearingload.models.equilibrium import LoadDistribution
-
+    """The LoadDistribution of one case, as ``_assemble`` builds it (arrays built on access)."""
     z, f, k, g, _, m = plain
     xi, eta, its = sol
     q_hat, loaded, hxx, hxy, hyy = der
@@ -343,21 +376,23 @@ def _result(
     zone = math.degrees(2.0 * math.asin(math.sqrt(min(max(one_minus, 0.0), 2.0) / 2.0)))
     kn = f / scale
     kxy = hxy * kn
-    a = np.asarray
-    return LoadDistribution(
-        balls=a(z),
-        load=a(f),
-        stiffness=a(k),
-        clearance=a(g),
-        cage_angle=a(phi1_deg),
-        exponent=a(m),
-        x=a(x),
-        y=a(y),
-        q_max=a(q_hat * f),
-        loaded_balls=a(int(round(loaded))),
-        load_zone=a(zone),
-        stiffness_matrix=a([[hxx * kn, kxy], [kxy, hyy * kn]]),
-        iterations=a(its),
-        offset=a([xi * scale, eta * scale]),
-        reference=a([mu, h]),
-    )
+    values = {
+        "balls": z,
+        "load": f,
+        "stiffness": k,
+        "clearance": g,
+        "cage_angle": phi1_deg,
+        "exponent": m,
+        "x": x,
+        "y": y,
+        "q_max": q_hat * f,
+        "loaded_balls": int(round(loaded)),
+        "load_zone": zone,
+        "stiffness_matrix": [[hxx * kn, kxy], [kxy, hyy * kn]],
+        "iterations": its,
+        "offset": [xi * scale, eta * scale],
+        "reference": [mu, h],
+    }
+    from bearingload.models.equilibrium import OneCase
+
+    return OneCase.of(values)

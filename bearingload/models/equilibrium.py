@@ -49,9 +49,8 @@ from bearingload.models._ring import MAX_ITERATIONS, Ring, gap_factor, snapped_c
 
 #: Relative equilibrium residual the solver drives every case below. [-]
 TOLERANCE = 1e-13
-#: A cage angle within this of 0 or half pitch is symmetric: 4 ulps of 360°, the rounding of
-#: reducing an angle to one turn and one pitch. [°]
-SYMMETRY_SNAP_DEG = 4.0 * float(np.finfo(float).eps) * 360.0
+#: A cage angle within this of 0 or half pitch is symmetric (rounding; see the module notes). [°]
+SYMMETRY_SNAP_DEG = _ring.SYMMETRY_SNAP_DEG
 #: Most elements (cases x balls) one vectorised step holds; larger batches go in chunks. [-]
 CHUNK_ELEMENTS = 1 << 18
 __all__ = ["LoadDistribution", "solve", "MAX_ITERATIONS", "TOLERANCE"]
@@ -182,6 +181,35 @@ class LoadDistribution:
         for name in ("stiffness_matrix", "offset", "reference"):
             fields[name] = getattr(self, name)[index]
         return LoadDistribution(**fields)
+
+
+def _lazy_field(name: str) -> property:
+    def get(self: Any) -> np.ndarray:
+        cache = self.__dict__["_arrays"]
+        arr = cache.get(name)
+        if arr is None:
+            arr = cache[name] = np.asarray(self.__dict__["_values"][name])
+        return arr
+
+    return property(get, doc=f"``{name}`` of the case (see LoadDistribution).")
+
+
+class OneCase(LoadDistribution):
+    """The LoadDistribution of one case from the scalar path, its arrays built on first access.
+
+    A call from a Python loop pays for the arrays it reads, not for all fifteen; every
+    attribute is the same 0-d (or (2,), (2, 2)) array the vectorised path gives.
+    """
+
+    @classmethod
+    def of(cls, values: dict[str, Any]) -> OneCase:
+        obj = object.__new__(cls)
+        obj.__dict__["_values"], obj.__dict__["_arrays"] = values, {}
+        return obj
+
+
+for _name in LoadDistribution.__dataclass_fields__:
+    setattr(OneCase, _name, _lazy_field(_name))
 
 
 def solve(
