@@ -199,8 +199,10 @@ def measure(*, timing: bool = False, repeats: int = 5, copies: int = 200) -> lis
             "method": method.method,
             "setting": method.setting,
             "cases": len(cases),
-            "error_median": float(np.median(error)),
-            "error_max": float(np.max(error)),
+            # 3 digits: an error is a magnitude, and its last digits change with the platform's
+            # rounding where it is near 1e-16
+            "error_median": float(f"{np.median(error):.3g}"),
+            "error_max": float(f"{np.max(error):.3g}"),
             "iterations": int(np.max(iterations)),
         }
         if timing:
