@@ -11,8 +11,8 @@ STAMP := $(VENV)/.installed
 $(STAMP): pyproject.toml
 	$(PY) -m venv $(VENV)
 	$(BIN)/python -m pip install --quiet --upgrade pip
-	$(BIN)/python -m pip install --quiet -e '.[test]' --config-settings editable_mode=compat \
-		|| $(BIN)/python -m pip install --quiet -e '.[test]'  # a setuptools without compat mode
+	$(BIN)/python -m pip install --quiet -e '.[test,plot]' --config-settings editable_mode=compat \
+		|| $(BIN)/python -m pip install --quiet -e '.[test,plot]'  # a setuptools without compat mode
 	$(BIN)/python -m compileall -q bearingload
 	touch $(STAMP)
 
@@ -39,13 +39,16 @@ golden: $(STAMP)
 	$(BIN)/python -m tests.golden_outputs
 
 ## make bench: vectorised solver against a per-case scipy brentq loop, one call against scipy root
-## (hybr) and the Hertz contact against brentq on the ellipticity equation: ratios in one run;
-## the work-precision report (times of this run) and the full stability grid
+## (hybr) and the Hertz contact against brentq on the ellipticity equation, ring_forces against a
+## per-evaluation Python loop: ratios, each in one run; the work-precision report (times of this
+## run) and the full stability grid
 bench: $(STAMP)
 	$(BIN)/python -m compileall -q bearingload
 	$(BIN)/python benchmarks/bench_solver.py
 	$(BIN)/python benchmarks/bench_scalar.py
 	$(BIN)/python benchmarks/bench_methods.py
+	$(BIN)/python benchmarks/bench_forces.py
+	$(BIN)/python benchmarks/bench_combined.py
 	$(BIN)/bearingload accuracy
 	$(BIN)/bearingload stability --size full
 

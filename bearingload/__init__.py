@@ -4,7 +4,9 @@ The main entry points, importable from here (each is loaded on first use, so tha
 calculation does not pay for the whole package at start-up)::
 
     from bearingload import solve              # exact ring equilibrium, degrees in and out
+    from bearingload import ring_forces        # the forward problem: force for a displacement
     from bearingload import solve_continuum    # the continuum model (Kuzmenko 2010, §4-5)
+    from bearingload import solve_combined     # radial, axial, tilt of a deep-groove bearing
     from bearingload import compute, list_methods   # any registered model by name
 """
 
@@ -18,7 +20,10 @@ __version__ = "0.1.0"
 _API = {
     "solve": "bearingload.models.equilibrium",
     "LoadDistribution": "bearingload.models.equilibrium",
+    "ring_forces": "bearingload.models.forces",
+    "RingForces": "bearingload.models.forces",
     "solve_continuum": "bearingload.models.continuum",
+    "solve_combined": "bearingload.models.combined",
     "compute": "bearingload.models.registry",
     "compute_all": "bearingload.models.registry",
     "list_methods": "bearingload.models.registry",

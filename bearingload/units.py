@@ -17,12 +17,7 @@ from __future__ import annotations
 import math
 import re
 
-#: Standard gravity, exact by definition (CGPM 1901): 1 kgf = 9.80665 N.
-KGF = 9.80665
-#: 1 lbf = 0.45359237 kg x g_n (international avoirdupois pound, 1959). [N]
-LBF = 0.45359237 * KGF
-#: 1 in = 25.4 mm exactly (international inch, 1959).
-INCH = 25.4
+from bearingload.constants import INCH, KGF, LBF  # noqa: F401  (re-exported: units.KGF)
 
 #: Accepted unit suffixes per kind, as factors to the internal unit.
 UNITS: dict[str, dict[str, float]] = {
@@ -31,10 +26,57 @@ UNITS: dict[str, dict[str, float]] = {
     # stiffness units are read by parse_stiffness: F/L^e for any force F and length L above
     "stiffness": {"N/mm^1.5": 1.0, "kgf/mm^1.5": KGF, "N/um^1.5": 1e3**1.5, "N/mm^(10/9)": 1.0},
     "modulus": {"MPa": 1.0, "N/mm^2": 1.0, "GPa": 1e3, "kgf/mm^2": KGF, "Pa": 1e-6},
+    "moment": {"Nmm": 1.0, "N*mm": 1.0, "Nm": 1e3, "N*m": 1e3, "kNm": 1e6, "kgfmm": KGF},
+    "angle": {"deg": 1.0, "°": 1.0, "rad": 180.0 / math.pi, "mrad": 0.18 / math.pi},
 }
 
 #: The unit a bare number is taken in, per kind.
-BASE_UNIT = {"force": "N", "length": "mm", "stiffness": "N/mm^1.5", "modulus": "MPa"}
+BASE_UNIT = {
+    "force": "N",
+    "length": "mm",
+    "stiffness": "N/mm^1.5",
+    "modulus": "MPa",
+    "moment": "N mm",
+    "angle": "°",
+}
+
+#: Plausible ranges of a BARE number (no unit) per (kind, parameter); outside, the number is
+#: refused with the unit the user most likely meant, instead of being used. [base unit]
+PLAUSIBLE_BARE: dict[tuple[str, str | None], tuple[float, float, str]] = {
+    # Young's modulus: bare numbers are MPa; steel 2.1e5, ceramics 3.1e5; "210" is 210 GPa meant
+    ("modulus", None): (1e3, 1e7, "a Young's modulus"),
+    # a radial clearance of 1 mm or more is beyond every ISO 5753-1 class up to 1000 mm bore
+    ("length", "clearance"): (-1.0, 1.0, "a radial clearance"),
+}
+
+
+def plausible_ranges_help(kind: str, parameter: str | None = None) -> str:
+    """The plausible range of a bare number, for --help."""
+    low, high, _ = PLAUSIBLE_BARE[(kind, parameter)]
+    return f"a bare number outside {low:g} to {high:g} {BASE_UNIT[kind]} is refused"
+
+
+def _likely(value: float, kind: str, low: float) -> str:
+    """The unit a bare, implausible number most likely meant, written with the number."""
+    if kind == "modulus":
+        return f"{value:g}GPa" if value < low else f"{value:g}Pa"
+    return f"{value:g}um"
+
+
+def _check_plausible(value: float, kind: str, name: str, text: object) -> None:
+    rule = PLAUSIBLE_BARE.get((kind, name)) or PLAUSIBLE_BARE.get((kind, None))
+    if rule is None or rule[0] <= value < rule[1]:
+        return
+    from bearingload.errors import InputError
+
+    low, high, what = rule
+    raise InputError(
+        name,
+        f"a bare {text} is {value:g} {BASE_UNIT[kind]}, implausible for {what} (bare numbers are "
+        f"{BASE_UNIT[kind]}; plausible {low:g} to {high:g} {BASE_UNIT[kind]}): did you mean "
+        f"{_likely(value, kind, low)}? Write the unit to use the number as it is.",
+    )
+
 
 _NUMBER = re.compile(r"^\s*([+-]?(?:\d+\.?\d*|\.\d+)(?:[eE][+-]?\d+)?)\s*(.*?)\s*$")
 
@@ -73,16 +115,14 @@ def parse_quantity(text: str | float, kind: str, *, parameter: str | None = None
         value, unit = float(text), ""
     else:
         match = _NUMBER.match(str(text))
-        if match is None:
-            raise InputError(
-                name,
-                f"cannot read {text!r} as a number with a unit; "
-                f"write e.g. '{_example(kind)}' (units: {', '.join(units)})",
-            )
+        if match is None or re.match(r"^\s*[+-]?\d*,\d", str(text)):
+            raise InputError(name, _unreadable(str(text), kind))
         value, unit = float(match.group(1)), _canonical(match.group(2))
     if not math.isfinite(value):
         raise InputError(name, f"{text!r} is not a finite number")
     if unit == "":
+        if not isinstance(text, (int, float)):
+            _check_plausible(value, kind, name, text)
         return value
     if kind == "stiffness":
         return value * stiffness_factor(unit, None, parameter=name)
@@ -96,8 +136,25 @@ def parse_quantity(text: str | float, kind: str, *, parameter: str | None = None
     return value * lookup[unit]
 
 
+def _unreadable(text: str, kind: str) -> str:
+    """Why ``text`` is no number with a unit, with a hint for the usual slips."""
+    if re.match(r"^\s*[+-]?\d*,\d+", text):
+        fixed = text.strip().replace(",", ".", 1)
+        return f"cannot read {text!r}: write the decimal point, not a comma: {fixed}"
+    return (
+        f"cannot read {text!r} as a number with a unit; "
+        f"write e.g. '{_example(kind)}' (units: {', '.join(UNITS[kind])})"
+    )
+
+
+def unit_names() -> set[str]:
+    """Every unit the parser knows, as written (for the hint on a unit typed after a space)."""
+    return {u for units in UNITS.values() for u in units} | {"kgf/mm^1.5", "N/mm^1.5"}
+
+
 def _example(kind: str) -> str:
-    return {"force": "300kgf", "length": "20um", "stiffness": "4700kgf/mm^1.5"}.get(kind, "208GPa")
+    examples = {"force": "300kgf", "length": "20um", "stiffness": "4700kgf/mm^1.5"}
+    return (examples | {"moment": "1.5Nm", "angle": "2.7mrad"}).get(kind, "208GPa")
 
 
 _STIFFNESS_UNIT = re.compile(

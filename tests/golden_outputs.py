@@ -32,11 +32,22 @@ COMMANDS = {
     "solve_306_c3_geometry": "solve 306 -F 300kgf -G C3 --show-geometry",
     "solve_306_range": "solve 306 -F 300kgf -G C3 --clearance-pick range",
     "solve_6306_range_all": "solve 6306 -F 3kN -G C3 --clearance-pick range --method all",
+    "sweep_hand": "sweep -z 9 -F 1kN -K 1e5 -G 10um --steps 9",
+    "sweep_306_c3": "sweep 306 -F 300kgf -G C3 --steps 5",
+    "sweep_rollers_preload": "sweep -z 14 -F 10kN -K 8e5 -m 10/9 -G -5um --steps 3",
+    "sweep_kurochkin": "sweep -z 7 --kurochkin-T 0.567 --steps 5",
+    "solve_6205_combined": "solve 6205 -F 1.4kN -A 700N -G C3",
+    "solve_peer_axial_outer": "solve -z 7 --ball-diameter 11.5 --pitch-diameter 43.5 "
+    "--modulus 210000 -F 0 -A 1kN -G 10um -C 23.4kN --rotating outer --per-ball",
     "table_k": "table k --z-max 12",
     "table_kq_306": "table kq --bearing 306 -F 300kgf -G 20um --z-max 10",
     "table_k_all": "table k --method all --z-max 10",
     "catalog_bore_30": "catalog --bore 30",
     "catalog_show_306": "catalog show 306",
+    "catalog_show_6208_skf": "catalog show 6208 --maker SKF",
+    "solve_6205_overload": "solve 6205 -F 500kN",
+    "solve_61806": "solve 61806 -F 500N --show-geometry",
+    "solve_nu206": "solve NU206 -F 5kN --show-geometry",
     "fit_208": "fit examples/bearing208_kuzmenko2014.csv --load-unit kgf --base 200kgf:0.8mm "
     "--base 1000kgf:1.67mm --balls 9",
 }

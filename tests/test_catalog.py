@@ -2,6 +2,7 @@
 
 from __future__ import annotations
 
+import csv
 import math
 from importlib import resources
 
@@ -11,6 +12,7 @@ from bearingload.bearings.catalog import (
     DEFAULT_F_I,
     DEFAULT_F_O,
     BearingGeometry,
+    _counterpart,
     check_geometry,
     entries,
     find,
@@ -22,6 +24,17 @@ from bearingload.units import KGF
 
 ROWS = entries()
 WITH_GEOMETRY = [r for r in ROWS if r.has_geometry]
+#: Designations of data/bearings.csv (GOST 8338 rows, NSK 60/62/63 to 6317, FBJ 64xx); the
+#: other ISO rows (618, 619, 160 series, 6318-6320) come from data/ball_sets.csv alone.
+TABLE_ROWS = {
+    (r["standard"], r["designation"])
+    for r in csv.DictReader(
+        resources.files("bearingload.bearings")
+        .joinpath("data/bearings.csv")
+        .read_text(encoding="utf-8")
+        .splitlines()
+    )
+}
 
 
 def _id(row: BearingGeometry) -> str:
@@ -30,10 +43,33 @@ def _id(row: BearingGeometry) -> str:
 
 def test_catalogue_size_and_standards() -> None:
     assert len([r for r in ROWS if r.standard == "GOST"]) == 26
-    assert len([r for r in ROWS if r.standard == "ISO"]) == 74
+    assert len([r for r in ROWS if r.standard == "ISO"]) == 139  # 74 of bearings.csv + 65
+    assert len(TABLE_ROWS) == 100
     assert len(WITH_GEOMETRY) >= 50
     names = [(r.standard, r.designation) for r in ROWS]
     assert len(names) == len(set(names))
+
+
+@pytest.mark.parametrize("name", ["ball_sets.csv", "rollers.csv"])
+def test_new_csv_files_are_plain(name: str) -> None:
+    raw = resources.files("bearingload.bearings").joinpath(f"data/{name}").read_bytes()
+    assert b"\r" not in raw and raw.endswith(b"\n")
+    rows = list(csv.reader(raw.decode("utf-8").splitlines()))
+    assert all(len(r) == len(rows[0]) for r in rows)
+    assert rows[0][-2:] == ["source", "notes"]
+
+
+def test_new_series_filters() -> None:
+    assert [len(entries(series=s)) for s in ("618", "68", "619", "69xx", "160")] == [
+        21,
+        21,
+        21,
+        21,
+        20,
+    ]
+    assert entries(series="63", bore=100)[0].designation == "6320"
+    with pytest.raises(InputError, match="allowed: 60, 62, 63, 64, 618, 619, 160"):
+        entries(series="617")
 
 
 def test_csv_is_plain() -> None:
@@ -53,9 +89,17 @@ def test_row_consistency(row: BearingGeometry) -> None:
     assert parsed.base == row.designation
     assert parsed.bore == row.d  # bore code agrees with the tabulated bore
     assert 0 < row.d < row.D
-    assert 0 < row.B < row.D - row.d
-    assert row.C is not None and row.C0 is not None
-    assert 0 < row.C0 < row.C  # ball bearings: C0 below C in every source used
+    if (row.standard, row.designation) in TABLE_ROWS:
+        assert row.B is not None and 0 < row.B < row.D - row.d
+    else:
+        assert row.B is None  # the sources of ball_sets.csv give no width
+    if row.has_geometry or (row.standard, row.designation) in TABLE_ROWS:
+        assert row.C is not None and row.C0 is not None
+    if (row.standard, row.designation) in TABLE_ROWS:
+        assert row.C is not None and row.C0 is not None
+        assert 0 < row.C0 < row.C  # ball bearings of bearings.csv: C0 below C in every source
+    else:  # NSK 618xx: C0 reaches 1.18 C (61820: 23.0 vs 19.6 kN)
+        assert row.C is not None and row.C0 is not None and 0 < row.C0 < 1.2 * row.C
     assert row.source.strip()
     assert row.notes.strip()
     assert 0.5 < row.f_i <= row.f_o < 0.6
@@ -92,7 +136,11 @@ def test_gost_static_rating_rule(row: BearingGeometry) -> None:
             assert "z derived" in row.source and "z derived" in row.notes
 
 
-@pytest.mark.parametrize("row", [r for r in WITH_GEOMETRY if r.standard == "ISO"], ids=_id)
+@pytest.mark.parametrize(
+    "row",
+    [r for r in WITH_GEOMETRY if r.standard == "ISO" and r.series in ("60", "62", "63")],
+    ids=_id,
+)
 def test_iso_ball_set_matches_nsk_fingerprint(row: BearingGeometry) -> None:
     # C0r = f0 z Dw^2 (NSK catalogue); the accepted ball sets agree within 1 %.
     assert row.f0 is not None and row.C0 is not None
@@ -164,7 +212,7 @@ def test_lookup_keeps_the_parsed_designation() -> None:
 
 def test_unknown_designation_explains_manual_geometry() -> None:
     with pytest.raises(InputError) as info:
-        lookup("6807")
+        lookup("6417")
     msg = str(info.value)
     assert info.value.parameter == "bearing"
     assert "not in the catalogue" in msg
@@ -185,14 +233,17 @@ def test_unreadable_designation_explains_manual_geometry() -> None:
 
 
 def test_row_without_ball_set() -> None:
-    row = find("6002")  # listed, no geometry
-    assert not row.has_geometry and row.C0 == 2830.0
+    row = find("6302")  # listed, no default (NSK) ball set: NSK's inversion is inconclusive
+    assert not row.has_geometry and row.C0 == 5450.0
     with pytest.raises(InputError, match="give --balls and --ball-diameter"):
-        lookup("6002")
+        lookup("6302")
     with pytest.raises(InputError, match="give --ball-diameter$"):
-        lookup("6002", balls=9)
-    with pytest.raises(InputError, match="GOST designation '304'"):
-        lookup("6304")
+        lookup("6302", balls=7)
+    with pytest.raises(InputError, match=r"--maker NTN \| SKF"):
+        lookup("6404")
+    # the GOST counterpart of an ISO row (the hint of a row without a ball set)
+    other = _counterpart(parse("6304"))
+    assert other is not None and (other.standard, other.designation) == ("GOST", "304")
 
 
 def test_overrides() -> None:
@@ -239,6 +290,9 @@ def test_entries_filters() -> None:
         "6206",
         "6306",
         "6406",
+        "61806",
+        "61906",
+        "16006",
     ]
     s63 = entries(series="63")
     assert s63 and all(b.series == "63" for b in s63)

@@ -183,7 +183,9 @@ def test_version():
 
 def test_run_success_and_failure(capsys):
     run(["table", "k", "--z-max", "3", "--format", "csv"])
-    assert capsys.readouterr().out.startswith("z,n,k\n1,1,1.0")
+    assert capsys.readouterr().out.startswith(
+        "method,load [N],stiffness [N/mm^1.5],clearance [mm],cage_angle_deg [°],exponent,z,n,k\nexact,1000.0,100000.0,0.0,0.0,1.5,1,1,1.0"
+    )
     with pytest.raises(SystemExit) as info:
         run(["solve", "-z", "8", "-F", "0", "-K", "1"])
     assert info.value.code == 2

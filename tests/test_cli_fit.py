@@ -10,7 +10,7 @@ from pathlib import Path
 import mpmath as mp
 import pytest
 
-from bearingload.reports.fit import parse_base_point
+from bearingload.studies.fit_comparison import parse_base_point
 from bearingload.units import KGF
 
 from .cli_helpers import invoke

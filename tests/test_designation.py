@@ -46,6 +46,16 @@ CASES = {
     "Н0-306": ("GOST", "306", "6306", "306", 30.0, (), None, "H", "0"),
     "306-C3": ("GOST", "306", "6306", "306", 30.0, ("C3",), "C3", None, None),
     "405": ("GOST", "405", "6405", "405", 25.0, (), None, None, None),
+    # ISO 15: bores below 10 mm carry the bore itself as a one-digit code (608: d = 8 mm)
+    "608": ("ISO", "608", "608", None, 8.0, (), None, None, None),
+    "608-2RS": ("ISO", "608", "608", None, 8.0, ("2RS",), None, None, None),
+    "623ZZ/C3": ("ISO", "623", "623", None, 3.0, ("ZZ", "C3"), "C3", None, None),
+    "629": ("ISO", "629", "629", None, 9.0, (), None, None, None),
+    "61806": ("ISO", "61806", "61806", None, 30.0, (), None, None, None),
+    "61900-2RS": ("ISO", "61900", "61900", None, 10.0, ("2RS",), None, None, None),
+    "16005": ("ISO", "16005", "16005", None, 25.0, (), None, None, None),
+    "NU206": ("ISO", "NU206", "NU206", None, 30.0, (), None, None, None),
+    "N 306 ECP/C3": ("ISO", "N306", "N306", None, 30.0, ("ECP", "C3"), "C3", None, None),
 }
 
 
@@ -135,3 +145,32 @@ def test_error_is_a_value_error() -> None:
 
 def test_consistent_suffix_and_group_is_accepted() -> None:
     assert parse("75-313/C3").clearance_class == "C3"
+
+
+@pytest.mark.parametrize(
+    ("text", "series", "kind", "catalogue_name"),
+    [
+        ("608", "60", "ball", "608"),
+        ("623", "62", "ball", "623"),
+        ("61806", "618", "ball", "61806"),
+        ("6806", "68", "ball", "61806"),
+        ("6906-2RS", "69", "ball", "61906"),
+        ("16005", "160", "ball", "16005"),
+        ("6306", "63", "ball", "6306"),
+        ("306", "63", "ball", "306"),
+        ("NU206", "NU2", "roller", "NU206"),
+        ("NJ 312 ECP", "NU3", "roller", "NU312"),
+        ("NUP206", "NU2", "roller", "NU206"),
+    ],
+)
+def test_kind_series_and_catalogue_name(
+    text: str, series: str, kind: str, catalogue_name: str
+) -> None:
+    d = parse(text)
+    assert (d.series, d.kind, d.catalogue_name) == (series, kind, catalogue_name)
+
+
+@pytest.mark.parametrize("text", ["610", "NU406", "NU2205", "N2", "1600", "6180"])
+def test_new_forms_reject(text: str) -> None:
+    with pytest.raises(InputError, match="accepted: ISO"):
+        parse(text)

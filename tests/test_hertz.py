@@ -533,3 +533,50 @@ def test_bearing_306_pressure_at_300_kgf():
 def test_module_doctests():
     result = doctest.testmod(hertz, optionflags=doctest.NORMALIZE_WHITESPACE)
     assert result.attempted > 10 and result.failed == 0
+
+
+# ---------------------------------------------------------------------------------------------
+# The scalar fast path (pure Python, bearingload.contact._hertz_scalar) against the vectorised path
+# ---------------------------------------------------------------------------------------------
+def test_scalar_path_agrees_with_the_vectorised_path():
+    """One contact from Python and the same contact in an array: to ~1e-14, curvature ratios
+    1 ... 1e15 (the arrays take the vectorised Illinois solver on Carlson's integrals)."""
+    ratios = np.concatenate([[1.0, 1.0 + 1e-12, 1.0 + 1e-6], np.geomspace(1.001, 1e15, 150)])
+    for ratio in ratios:
+        one = hertz.hertz_coefficients(0.3, 0.3 * float(ratio))
+        many = hertz.hertz_coefficients(np.array([0.3]), 0.3 * ratio)
+        for a, b in zip(one, many, strict=True):
+            assert np.ndim(a) == 0 and not isinstance(a, np.ndarray)
+            assert float(a) == pytest.approx(float(b[0]), rel=1e-14)
+    for dw, dm, fi, fo in [
+        (12.3, 51.0, 0.515, 0.515),
+        (3.969, 10.731 * 2, 0.52, 0.53),
+        (1, 2.01, 0.5000001, 0.9),
+    ]:
+        one = hertz.ball_stiffness(dw, dm, fi, fo)
+        many = hertz.ball_stiffness(np.array([dw]), dm, fi, fo)
+        for a, b in zip(one, many, strict=True):
+            assert float(a) == pytest.approx(float(b[0]), rel=1e-14)
+        c1 = hertz.point_contact(0.2188, 0.0069 * dw, 1000.0 / dw, e_star=1.1e5)
+        c2 = hertz.point_contact(np.array([0.2188]), 0.0069 * dw, 1000.0 / dw, e_star=1.1e5)
+        for a, b in zip(c1, c2, strict=True):
+            assert float(a) == pytest.approx(float(b[0]), rel=1e-14)
+
+
+def test_scalar_path_refuses_like_the_vectorised_path():
+    with pytest.raises(InputError, match="f_i"):
+        hertz.ball_stiffness(12.3, 51.0, 0.5, 0.515)
+    with pytest.raises(InputError, match="rho_x/rho_y"):
+        hertz.hertz_coefficients(1.0, 1e16)
+    with pytest.raises(InputError, match="load"):
+        hertz.point_contact(0.1, 0.2, -1.0)
+
+
+def test_scalar_start_fit_is_within_its_stated_error():
+    """The Chebyshev start of tools/fit_hertz_start.py: within 3e-7 of the exact ln(kappa)."""
+    from bearingload.contact import _hertz_scalar
+
+    ell = np.linspace(1e-6, np.log(hertz.MAX_CURVATURE_RATIO), 997)
+    exact = np.log(np.asarray(hertz.hertz_coefficients(1.0, np.exp(ell)).kappa, dtype=float))
+    start = np.array([_hertz_scalar.start(float(v)) for v in ell])
+    assert np.max(np.abs(start / exact - 1)) < 3e-7

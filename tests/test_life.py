@@ -56,3 +56,46 @@ def test_bad_input(call, parameter):
     with pytest.raises(InputError, match="greater than 0") as info:
         call()
     assert info.value.parameter == parameter
+
+
+# ISO 281:2007, 5.2, Table 3, single-row radial ball bearings, normal clearance: rows
+# (f0 F_a/C0r, e, Y) and X = 0.56 for F_a/F_r > e, copied from the standard's table.
+ISO281_TABLE3 = [
+    (0.172, 0.19, 2.30),
+    (0.345, 0.22, 1.99),
+    (0.689, 0.26, 1.71),
+    (1.03, 0.28, 1.55),
+    (1.38, 0.30, 1.45),
+    (2.07, 0.34, 1.31),
+    (3.45, 0.38, 1.15),
+    (5.17, 0.42, 1.04),
+    (6.89, 0.44, 1.00),
+]
+
+
+@pytest.mark.parametrize(("ratio", "e", "y"), ISO281_TABLE3)
+def test_iso281_table3_rows(ratio, e, y):
+    from bearingload.bearings.life import equivalent_load_deep_groove
+
+    c0, f0 = 10000.0, 10.0
+    fa = ratio * c0 / f0
+    # just above e: P = 0.56 F_r + Y F_a; just below: P = F_r
+    fr_above = fa / (e * 1.001)
+    p = float(equivalent_load_deep_groove(fr_above, fa, c0, f0))
+    assert p == pytest.approx(0.56 * fr_above + y * fa, rel=1e-12)
+    fr_below = fa / (e * 0.999)
+    assert float(equivalent_load_deep_groove(fr_below, fa, c0, f0)) == fr_below
+
+
+def test_iso281_interpolates_and_clamps():
+    from bearingload.bearings.life import equivalent_load_deep_groove
+
+    # halfway between the rows 1.03 and 1.38: Y = 1.50
+    p = float(equivalent_load_deep_groove(100.0, 1205.0, 10000.0, 10.0))
+    assert p == pytest.approx(56.0 + 1.50 * 1205.0, rel=1e-12)
+    # beyond the last row the last Y (1.00), below the first the first (2.30)
+    assert float(equivalent_load_deep_groove(1.0, 1e5, 1e4, 1.0)) == pytest.approx(0.56 + 1e5)
+    assert float(equivalent_load_deep_groove(1.0, 10.0, 1e6, 1.0)) == pytest.approx(0.56 + 23.0)
+    # pure axial load, f0 F_a/C0r = 1.0 (between the rows 0.689 and 1.03): P = Y F_a
+    y = 1.71 + (1.0 - 0.689) / (1.03 - 0.689) * (1.55 - 1.71)
+    assert float(equivalent_load_deep_groove(0.0, 1000.0, 1e4, 10.0)) == pytest.approx(y * 1000)

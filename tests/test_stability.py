@@ -29,7 +29,7 @@ def test_family_is_stable(rows, family):
     name = f"{family} ({r['parameter']})"
     assert r["nan"] == 0, f"{name}: {r['nan']} cases with NaN/inf"
     assert r["failures"] == 0, f"{name}: {r['failures']} exceptions"
-    assert r["warnings"] == 0, f"{name}: {r['warnings']} warnings"
+    assert r["warnings_raised"] == 0, f"{name}: {r['warnings_raised']} warnings"
     if not r["refusals_allowed"]:
         assert r["refused"] == 0, f"{name}: {r['refused']} cases refused"
     assert r["max_residual"] <= 1e-10, f"{name}: residual {r['max_residual']:.3g}"

@@ -1,7 +1,9 @@
 """Catalogue of single-row deep groove ball bearings: boundary dimensions, balls, ratings.
 
-The rows live in ``data/bearings.csv``, one bearing per row with a ``source`` column naming
-where every number came from and a ``notes`` column flagging what is derived or doubtful.
+Two data files, every row with a ``source`` column naming where its numbers came from and a
+``notes`` column flagging what is derived or doubtful:
+
+``data/bearings.csv``: one row per designation, boundary dimensions and load ratings.
 
 * GOST 8338-75 rows (``204`` ... ``316``): d, D, B, D_w and the ratings from the table of
   GOST 8338-75 in [1]_; that table gives no ball count, so z is derived from the old GOST
@@ -10,10 +12,25 @@ where every number came from and a ``notes`` column flagging what is derived or 
   source papers instead: seed 000 (Kuzmenko 2010, Table 2) and seed 002 (Kuzmenko & Sabadash
   2014, section 2.1), with their ratings in kgf converted at 9.80665 N/kgf.
 * ISO rows (``6000`` ... ``6416``): ratings and boundary dimensions from the NSK [2]_ (60xx,
-  62xx, 63xx) and FBJ (64xx) catalogues. A ball set z x D_w is given only where a published or
-  code table agrees with NSK's static-capacity fingerprint z D_w^2 = C0r / f0 within 1 %;
-  other rows have empty geometry and need ``--balls`` and ``--ball-diameter``.
-* Pitch diameter d_m = (d + D) / 2 unless a row says otherwise.
+  62xx, 63xx) and FBJ (64xx) catalogues; the ball set comes from ``ball_sets.csv``.
+
+``data/ball_sets.csv``: the ball sets z x D_w on d_m of the ISO designations, one row per maker
+(column ``maker``), each marked ``read`` (printed by the maker or a published test rig: GMN
+catalogue, CWRU, PRONOSTIA, Paderborn) or ``derived`` (found by inverting the maker's ISO 281 /
+ISO 76 ratings, :mod:`bearingload.bearings.ratings`; the ratings used are in the row and a
+test re-derives every derived set from them). Where makers use different ball sets for the
+same designation (6208: NSK/NTN/GMN 9 x 15/32", SKF 9 x 31/64", GOST 9 x 1/2") each is its own
+row, selected with ``maker=`` (CLI ``--maker``); the GOST 8338 set of a 62xx/63xx is the
+maker ``GOST``.
+
+Default maker: **NSK** (:data:`DEFAULT_MAKER`). Its inversion has three constraints per row
+(C_r, C_0r and the printed f0) instead of two, so it is the best determined; it reproduces
+15 of the 16 ball sets GMN prints and every published test-rig set of the same designation
+(CWRU 6203/6205, Paderborn 6203, PRONOSTIA 61804), and NSK lists every designation of the
+60, 62, 63, 618, 619 and 160 series to 100 mm bore. Designations NSK does not list (64xx) or
+whose NSK inversion is inconclusive (6302) have no default set: name a maker.
+
+* Pitch diameter d_m = (d + D) / 2 for derived sets; read sets carry the published d_m.
 * Groove conformities f = r / D_w default to f_i = 0.52, f_o = 0.53 (the ISO/TS 16281
   convention for deep groove ball bearings); GOST 306 uses the paper's groove radius
   1.03 D_w / 2, i.e. f_i = f_o = 0.515 (seed 000, section 3.4).
@@ -50,6 +67,12 @@ DEFAULT_F_O = 0.53
 
 STANDARDS: tuple[str, ...] = ("GOST", "ISO")
 
+#: Maker whose ball set an ISO designation gets unless another is chosen (see the module text).
+DEFAULT_MAKER = "NSK"
+
+#: Dimension series of the catalogue (ISO codes).
+SERIES: tuple[str, ...] = ("60", "62", "63", "64", "618", "619", "160")
+
 _BY_HAND = (
     "give the geometry by hand: --balls Z --ball-diameter DW --pitch-diameter DM "
     "(run 'bearingload catalog' to list the known bearings)"
@@ -66,8 +89,10 @@ class BearingGeometry:
         Catalogue designation (``"306"``, ``"6306"``).
     standard : str
         ``"GOST"`` or ``"ISO"``.
-    d, D, B : float
-        Bore, outside diameter, width. [mm]
+    d, D : float
+        Bore, outside diameter. [mm]
+    B : float or None
+        Width; None where the sources used give none (618, 619, 160 series). [mm]
     ball_diameter : float or None
         Ball diameter D_w; None when unknown. [mm]
     balls : int or None
@@ -88,13 +113,24 @@ class BearingGeometry:
         Catalogue factor f0 of C0r = f0 z D_w^2 (NSK rows). [N/mm^2]
     overrides : tuple of str
         Names of fields set by the user rather than the catalogue.
+    maker : str or None
+        Whose ball set this is (``"NSK"``, ``"NTN"``, ``"SKF"``, ``"GMN"``, ``"GOST"``,
+        ``"CWRU"`` ...); None when the row has no ball set.
+    method : str or None
+        ``"read"`` (printed by the source) or ``"derived"`` (inverted from ratings; GOST: D_w
+        read, z derived).
+    confidence : str or None
+        Of a derived set: ``"high"`` or ``"medium"`` (see ``ball_sets.csv``); ``"published"``
+        for a read set.
+    makers : tuple of str
+        Every maker with a ball set for this designation (choose with ``maker=``).
     """
 
     designation: str
     standard: str
     d: float
     D: float
-    B: float
+    B: float | None
     ball_diameter: float | None
     balls: int | None
     pitch_diameter: float | None
@@ -107,6 +143,10 @@ class BearingGeometry:
     parsed: Designation
     f0: float | None = None
     overrides: tuple[str, ...] = ()
+    maker: str | None = None
+    method: str | None = None
+    confidence: str | None = None
+    makers: tuple[str, ...] = ()
 
     @property
     def has_geometry(self) -> bool:
@@ -115,50 +155,227 @@ class BearingGeometry:
 
     @property
     def series(self) -> str:
-        """ISO dimension-series code (``"62"``, ``"63"`` ...)."""
+        """ISO dimension-series code (``"62"``, ``"63"`` ...) as written in the designation."""
         return self.parsed.series
+
+    @property
+    def catalogue_series(self) -> str:
+        """Series of the catalogue row (``"618"`` for a row looked up as ``6806``)."""
+        return {"68": "618", "69": "619"}.get(self.parsed.series, self.parsed.series)
 
 
 def _float(text: str) -> float | None:
     return float(text) if text.strip() else None
 
 
+@dataclass(frozen=True)
+class BallSet:
+    """One row of ``data/ball_sets.csv``: a maker's ball set of one designation."""
+
+    designation: str
+    maker: str
+    d: float
+    D: float
+    balls: int
+    ball_diameter: float
+    pitch_diameter: float
+    C: float | None
+    C0: float | None
+    f0: float | None
+    method: str
+    inversion: str
+    confidence: str
+    source: str
+    notes: str
+
+
+def _read(name: str) -> list[dict[str, str]]:
+    path = resources.files("bearingload.bearings").joinpath(f"data/{name}")
+    return list(csv.DictReader(path.read_text(encoding="utf-8").splitlines()))
+
+
+@functools.lru_cache(maxsize=1)
+def ball_sets() -> tuple[BallSet, ...]:
+    """Every row of ``data/ball_sets.csv`` (all makers), in file order.
+
+    Returns
+    -------
+    tuple of BallSet
+        Diameters [mm], ratings [N], f0 [N/mm^2].
+    """
+    return tuple(
+        BallSet(
+            designation=rec["designation"],
+            maker=rec["maker"],
+            d=float(rec["d"]),
+            D=float(rec["D"]),
+            balls=int(rec["balls"]),
+            ball_diameter=float(rec["ball_diameter"]),
+            pitch_diameter=float(rec["pitch_diameter"]),
+            C=_float(rec["C"]),
+            C0=_float(rec["C0"]),
+            f0=_float(rec["f0"]),
+            method=rec["method"],
+            inversion=rec["inversion"],
+            confidence=rec["confidence"],
+            source=rec["source"],
+            notes=rec["notes"],
+        )
+        for rec in _read("ball_sets.csv")
+    )
+
+
+def _with_set(row: BearingGeometry, bs: BallSet) -> BearingGeometry:
+    """``row`` with the ball set (and the ratings it belongs to) of ``bs``."""
+    return dataclasses.replace(
+        row,
+        balls=bs.balls,
+        ball_diameter=bs.ball_diameter,
+        pitch_diameter=bs.pitch_diameter,
+        C=bs.C,
+        C0=bs.C0,
+        f0=bs.f0,
+        maker=bs.maker,
+        method=bs.method,
+        confidence=bs.confidence,
+        source=f"{bs.maker} ball set ({bs.method}): {bs.source}",
+        notes=bs.notes,
+    )
+
+
+def _csv_row(rec: dict[str, str]) -> BearingGeometry:
+    f_i, f_o = _float(rec["f_i"]), _float(rec["f_o"])
+    gost = rec["standard"] == "GOST"
+    return BearingGeometry(
+        designation=rec["designation"],
+        standard=rec["standard"],
+        d=float(rec["d"]),
+        D=float(rec["D"]),
+        B=_float(rec["B"]),
+        ball_diameter=_float(rec["ball_diameter"]),
+        balls=int(rec["balls"]) if rec["balls"].strip() else None,
+        pitch_diameter=_float(rec["pitch_diameter"]),
+        C=_float(rec["C"]),
+        C0=_float(rec["C0"]),
+        f_i=DEFAULT_F_I if f_i is None else f_i,
+        f_o=DEFAULT_F_O if f_o is None else f_o,
+        source=rec["source"],
+        notes=rec["notes"],
+        parsed=parse(rec["designation"]),
+        f0=_float(rec["f0"]),
+        maker="GOST" if gost else None,
+        method=("read" if "Kuzmenko" in rec["source"] else "D_w read, z derived") if gost else None,
+        confidence="published" if gost else None,
+    )
+
+
 @functools.lru_cache(maxsize=1)
 def _rows() -> tuple[BearingGeometry, ...]:
-    path = resources.files("bearingload.bearings").joinpath("data/bearings.csv")
-    rows = []
-    for rec in csv.DictReader(path.read_text(encoding="utf-8").splitlines()):
-        f_i, f_o = _float(rec["f_i"]), _float(rec["f_o"])
-        rows.append(
-            BearingGeometry(
-                designation=rec["designation"],
-                standard=rec["standard"],
-                d=float(rec["d"]),
-                D=float(rec["D"]),
-                B=float(rec["B"]),
-                ball_diameter=_float(rec["ball_diameter"]),
-                balls=int(rec["balls"]) if rec["balls"].strip() else None,
-                pitch_diameter=_float(rec["pitch_diameter"]),
-                C=_float(rec["C"]),
-                C0=_float(rec["C0"]),
-                f_i=DEFAULT_F_I if f_i is None else f_i,
-                f_o=DEFAULT_F_O if f_o is None else f_o,
-                source=rec["source"],
-                notes=rec["notes"],
-                parsed=parse(rec["designation"]),
-                f0=_float(rec["f0"]),
+    by_name: dict[str, list[BallSet]] = {}
+    for bs in ball_sets():
+        by_name.setdefault(bs.designation, []).append(bs)
+    rows = [_csv_row(rec) for rec in _read("bearings.csv")]
+    gost = {r.parsed.iso_name: r for r in rows if r.standard == "GOST" and r.has_geometry}
+    known = {r.designation for r in rows if r.standard == "ISO"}
+    for name, sets in by_name.items():
+        if name not in known:  # 618, 619, 160 series: the row is the default maker's
+            first = sets[0]
+            rows.append(
+                BearingGeometry(
+                    designation=name,
+                    standard="ISO",
+                    d=first.d,
+                    D=first.D,
+                    B=None,
+                    ball_diameter=None,
+                    balls=None,
+                    pitch_diameter=None,
+                    C=None,
+                    C0=None,
+                    f_i=DEFAULT_F_I,
+                    f_o=DEFAULT_F_O,
+                    source="",
+                    notes="width B: not in the sources used",
+                    parsed=parse(name),
+                )
             )
+    out = []
+    for row in rows:
+        if row.standard == "GOST":
+            out.append(dataclasses.replace(row, makers=("GOST",)))
+            continue
+        sets = by_name.get(row.designation, [])
+        makers = tuple(bs.maker for bs in sets) + (("GOST",) if row.designation in gost else ())
+        default = next((bs for bs in sets if bs.maker == DEFAULT_MAKER), None)
+        if default is not None:
+            row = _with_set(row, default)
+        elif sets:
+            others = ", ".join(f"{bs.maker} {bs.balls} x {bs.ball_diameter:g} mm" for bs in sets)
+            row = dataclasses.replace(row, notes=f"{row.notes}; maker ball sets: {others}")
+        out.append(dataclasses.replace(row, makers=makers))
+    return tuple(out)
+
+
+def variant(designation: str, maker: str) -> BearingGeometry:
+    """The catalogue row of ``designation`` with the ball set (and ratings) of ``maker``.
+
+    Parameters
+    ----------
+    designation : str
+        ISO designation (``6208``, ``61806-2RS``) or GOST (then only ``GOST`` is a maker).
+    maker : str
+        ``NSK``, ``NTN``, ``SKF``, ``GMN``, ``GOST``, ``CWRU``, ``PRONOSTIA``, ``PADERBORN``
+        (any case), where the designation has one; see ``BearingGeometry.makers``.
+
+    Returns
+    -------
+    BearingGeometry
+
+    Raises
+    ------
+    InputError
+        (parameter ``maker``) no ball set of that maker for this designation, listing those
+        that exist.
+
+    >>> b = variant("6208", "gost")
+    >>> b.balls, b.ball_diameter, b.maker
+    (9, 12.7, 'GOST')
+    """
+    row = find(designation)
+    key = str(maker).strip().upper()
+    if key == "GOST" and key in row.makers:
+        if row.standard == "GOST":
+            return row
+        g = next(
+            r for r in _rows() if r.standard == "GOST" and r.parsed.iso_name == row.designation
         )
-    return tuple(rows)
+        return dataclasses.replace(
+            g,
+            designation=row.designation,
+            standard=row.standard,
+            parsed=row.parsed,
+            makers=row.makers,
+            source=f"GOST ball set ({g.method}) of GOST {g.designation}: {g.source}",
+        )
+    for bs in ball_sets():
+        if bs.designation == row.designation and bs.maker == key:
+            return _with_set(row, bs)
+    have = ", ".join(row.makers) or "none"
+    raise InputError(
+        "maker",
+        f"no {maker} ball set for {row.designation} in the catalogue; makers with one: {have}",
+    )
 
 
 def _normalise_series(series: str) -> str:
     s = str(series).strip().upper().rstrip("X")
     if len(s) == 1 and s in "0234":
         s = "6" + s
-    if s not in ("60", "62", "63", "64"):
+    s = {"68": "618", "69": "619"}.get(s, s)
+    if s not in SERIES:
         raise InputError(
-            "series", f"unknown series {series!r}; allowed: 60, 62, 63, 64 (or 2, 3, 4 as in GOST)"
+            "series",
+            f"unknown series {series!r}; allowed: {', '.join(SERIES)} (or 2, 3, 4 as in GOST)",
         )
     return s
 
@@ -171,7 +388,8 @@ def entries(
     Parameters
     ----------
     series : str, optional
-        Dimension series: ``"60"``, ``"62"``, ``"63"``, ``"64"``, or GOST style ``"2"``,
+        Dimension series: ``"60"``, ``"62"``, ``"63"``, ``"64"``, ``"618"`` (or ``"68"``),
+        ``"619"`` (``"69"``), ``"160"``, or GOST style ``"2"``,
         ``"3"``, ``"4"`` (``"62xx"`` also works).
     standard : str, optional
         ``"GOST"`` or ``"ISO"`` (any case).
@@ -181,7 +399,8 @@ def entries(
     Returns
     -------
     list of BearingGeometry
-        In catalogue order (GOST rows first, then ISO by designation).
+        In catalogue order (GOST rows first, then ISO: 60 ... 64, 618, 619, 160), each with
+        its default ball set (:data:`DEFAULT_MAKER`).
 
     Raises
     ------
@@ -191,12 +410,12 @@ def entries(
     Examples
     --------
     >>> [b.designation for b in entries(bore=30)]
-    ['206', '306', '6006', '6206', '6306', '6406']
+    ['206', '306', '6006', '6206', '6306', '6406', '61806', '61906', '16006']
     """
     rows = list(_rows())
     if series is not None:
         s = _normalise_series(series)
-        rows = [r for r in rows if r.series == s]
+        rows = [r for r in rows if r.catalogue_series == s]
     if standard is not None:
         std = str(standard).strip().upper()
         if std not in STANDARDS:
@@ -237,8 +456,14 @@ def find(designation: str) -> BearingGeometry:
         raise InputError(
             "bearing", f"{exc.args[0].removeprefix('bearing: ')}; or {_BY_HAND}"
         ) from None
+    if parsed.kind == "roller":
+        raise InputError(
+            "bearing",
+            f"{parsed.base!r} is a cylindrical roller bearing; "
+            "see bearingload.bearings.rollers (resolve_bearing handles both)",
+        )
     for row in _rows():
-        if row.standard == parsed.standard and row.designation == parsed.base:
+        if row.standard == parsed.standard and row.designation == parsed.catalogue_name:
             return dataclasses.replace(row, parsed=parsed)
     hint = ""
     other = _counterpart(parsed)
@@ -326,6 +551,7 @@ def lookup(
     pitch_diameter: float | None = None,
     f_i: float | None = None,
     f_o: float | None = None,
+    maker: str | None = None,
 ) -> BearingGeometry:
     """Complete geometry of a catalogued bearing for a calculation, with optional overrides.
 
@@ -341,6 +567,8 @@ def lookup(
         Pitch diameter d_m; default the catalogue's, else (d + D) / 2. [mm]
     f_i, f_o : float, optional
         Groove conformities r / D_w, replacing the catalogue's. [-]
+    maker : str, optional
+        Whose ball set to use (see :func:`variant`); default :data:`DEFAULT_MAKER`.
 
     Returns
     -------
@@ -355,7 +583,7 @@ def lookup(
         a catalogued bearing whose ball set is unknown and not given (asking for ``--balls``
         and ``--ball-diameter``); or an impossible geometry.
     """
-    row = find(designation)
+    row = find(designation) if maker is None else variant(designation, maker)
     given = {
         "balls": balls,
         "ball_diameter": ball_diameter,
@@ -376,10 +604,12 @@ def lookup(
                 f", or use the {other.standard} designation {other.designation!r}, "
                 "whose ball set is known"
             )
+        sets = f" (choose a maker's set: --maker {' | '.join(row.makers)})" if row.makers else ""
         raise InputError(
             "bearing",
-            f"{row.designation!r} is in the catalogue (d {row.d:g}, D {row.D:g}, B {row.B:g} mm) "
-            f"but its ball set is unknown; give {' and '.join(missing)}{hint}",
+            f"{row.designation!r} is in the catalogue (d {row.d:g}, D {row.D:g}"
+            f"{'' if row.B is None else f', B {row.B:g}'} mm) "
+            f"but its ball set is unknown{sets}; give {' and '.join(missing)}{hint}",
         )
     check_geometry(new.d, new.D, z, dw, dm, new.f_i, new.f_o)
     return dataclasses.replace(new, balls=int(z), pitch_diameter=dm)

@@ -34,6 +34,7 @@ import functools
 import re
 from dataclasses import dataclass
 
+from bearingload.constants import CLEARANCE_PICKS
 from bearingload.errors import InputError
 from bearingload.units import parse_quantity
 
@@ -45,7 +46,7 @@ CLASSES: tuple[str, ...] = ("C2", "CN", "C3", "C4", "C5")
 GOST_GROUPS: dict[str, str] = {"6": "C2", "7": "C3", "8": "C4", "9": "C5"}
 
 #: How a class may be picked from its range.
-PICKS: tuple[str, ...] = ("min", "mean", "max")
+PICKS: tuple[str, ...] = CLEARANCE_PICKS
 
 _NORMAL = {"N", "CN", "C0", "0", "NORMAL", "NORM", "НОРМАЛЬНАЯ", "НОРМ", "M", "М"}
 _GROUP_WORD = re.compile(r"^(?:G|GR|GROUP|ГР|ГРУППА)\s*\.?\s*(\S+)$")
@@ -288,10 +289,17 @@ def parse_clearance(text: str | float | None) -> ClearanceSpec | None:
             length=parse_quantity(text, "length", parameter="clearance"), text=text
         )
     except InputError as exc:
+        message = str(exc).split(": ", 1)[-1]
+        if "implausible" in message:
+            group = (
+                f" (the GOST clearance group {text} is written G{text})"
+                if text in ("6", "7", "8", "9")
+                else ""
+            )
+            raise InputError("clearance", message + group) from None
         raise InputError(
             "clearance",
-            f"{str(exc).split(': ', 1)[-1]}; or a clearance class C2, CN, C3, C4, C5 "
-            "(GOST groups G6, G7, G8, G9)",
+            f"{message}; or a clearance class C2, CN, C3, C4, C5 (GOST groups G6, G7, G8, G9)",
         ) from None
 
 

@@ -1,9 +1,13 @@
-"""Parse deep groove ball bearing designations: ISO ``6306-2RS1/C3`` and GOST ``75-313``.
+"""Parse bearing designations: ISO ``6306-2RS1/C3``, ``608``, ``61806``, ``NU206`` and GOST ``75-313``.
 
 Accepted forms
 --------------
 * ISO 15 / maker designations of single-row deep groove ball bearings: ``6`` + diameter series
-  (``0``, ``2``, ``3``, ``4``, ``8``, ``9``) + two-digit bore code, e.g. ``6306``, with
+  (``0``, ``2``, ``3``, ``4``, ``8``, ``9``) + two-digit bore code, e.g. ``6306``; the
+  series with a width-series digit, ``618xx``, ``619xx`` and ``160xx`` (``61806``,
+  ``16005``; ``68xx`` and ``69xx`` are the old names of ``618xx`` and ``619xx``, and name
+  the same catalogue rows); and bores below 10 mm, whose one-digit bore code *is* the bore in
+  mm (ISO 15): ``608`` (d = 8), ``623`` (d = 3), ``6x`` + digit. All with
   optional suffixes: seals and shields (``-2RS``, ``2RS1``, ``-2Z``, ``ZZ``, ``LLU`` ...), the
   clearance class (``C2``, ``CN``, ``C3``, ``C4``, ``C5``, also ``C1``), the accuracy class
   (``P6``, ``P5`` ...), or both at once as SKF writes them (``P63`` = P6 + C3) [2]_.
@@ -21,6 +25,12 @@ Accepted forms
   ``0-306`` is class 0. GOST 24810-81 groups of these bearings: 6 = C2, none (or ``M``) = CN,
   7 = C3, 8 = C4, 9 = C5 [2]_.
 
+* Single-row cylindrical roller bearings ``NU``, ``N``, ``NJ``, ``NUP`` + diameter series
+  ``2`` or ``3`` + two-digit bore code, with suffixes (``NU206``, ``N 306 ECP/C3``); the
+  four designs of one size share the rollers and are one catalogue row (``NU206``).
+
+A three-digit ``6xx`` is ISO (a bore below 10 mm): GOST 8338 has no diameter series 6, so the
+old reading of ``608`` as a GOST series was never right.
 A four-digit ``6xxx`` is always read as ISO (in the Russian layout the digit 6 in that
 place would mean a bearing type other than the radial ball bearing; the catalogues this
 package uses never need that reading).
@@ -64,14 +74,26 @@ GOST_CLEARANCE_GROUPS: dict[str, str | None] = {
 }
 
 ACCEPTED_FORMS = (
-    "ISO '6306', '6306-2RS', '6306-2Z/C3', '6306ZZC3' (series 60, 62, 63, 64, 68, 69) or "
-    "GOST '306', '180306', '75-313', '6-208' (series 2xx, 3xx, 4xx)"
+    "ISO '6306', '6306-2RS', '6306-2Z/C3', '6306ZZC3' (series 60, 62, 63, 64, 68, 69), "
+    "'61806', '61906', '16005', small bores '608', '623'; cylindrical roller 'NU206', 'N 306'; "
+    "or GOST '306', '180306', '75-313', '6-208' (series 2xx, 3xx, 4xx)"
 )
+
+#: Old four-digit names of the 618 and 619 series (``6806`` = ``61806``).
+OLD_SERIES_NAMES: dict[str, str] = {"68": "618", "69": "619"}
+
+#: Cylindrical roller bearing types; all four share the rollers of one size.
+ROLLER_TYPES: tuple[str, ...] = ("NUP", "NU", "NJ", "N")
 
 # Cyrillic letters that look like Latin ones, folded so that both spellings parse.
 _FOLD = str.maketrans("АВСЕНКМОРТХ", "ABCEHKMOPTX")
 
 _ISO = re.compile(r"^6(?P<series>[023489])(?P<bore>\d{2})(?P<rest>(?:[^0-9].*)?)$")
+_ISO_WIDE = re.compile(r"^(?P<series>61[89]|160)(?P<bore>\d{2})(?P<rest>(?:[^0-9].*)?)$")
+_ISO_SMALL = re.compile(r"^6(?P<series>[023489])(?P<bore>[1-9])(?P<rest>(?:[^0-9].*)?)$")
+_ROLLER = re.compile(
+    r"^(?P<type>NUP|NU|NJ|N)\s*(?P<series>[23])(?P<bore>\d{2})(?P<rest>(?:[^0-9].*)?)$"
+)
 _GOST = re.compile(
     r"^(?:(?P<prefix>[^-\s]{1,6})\s*-\s*)?"
     r"(?:(?P<design>[1-9]\d?)0)?(?P<series>\d)(?P<bore>\d{2})"
@@ -100,9 +122,10 @@ class Designation:
     standard : str
         ``"ISO"`` or ``"GOST"``: the system the designation was written in.
     series : str
-        ISO dimension-series code: ``"60"``, ``"62"``, ``"63"``, ``"64"``, ``"68"``, ``"69"``.
+        ISO dimension-series code: ``"60"``, ``"62"``, ``"63"``, ``"64"``, ``"68"``, ``"69"``,
+        ``"618"``, ``"619"``, ``"160"``; ``"NU2"``, ``"NU3"`` for cylindrical roller bearings.
     bore_code : str
-        The two-digit bore code, e.g. ``"06"``.
+        The two-digit bore code, e.g. ``"06"`` (one digit, the bore in mm, below 10 mm).
     bore : float
         Bore diameter d. [mm]
     iso_name : str
@@ -121,6 +144,8 @@ class Designation:
         Accuracy class as marked: GOST prefix digit (``"5"``) or ISO suffix (``"P5"``).
     design_code : str or None
         GOST design-variant digits of a five- or six-digit designation (``"18"`` in 180306).
+    kind : str
+        ``"ball"`` (deep groove ball bearing) or ``"roller"`` (cylindrical roller bearing).
     """
 
     text: str
@@ -135,6 +160,7 @@ class Designation:
     clearance_group: str | None = None
     accuracy_class: str | None = None
     design_code: str | None = None
+    kind: str = "ball"
 
     @property
     def base(self) -> str:
@@ -142,6 +168,20 @@ class Designation:
         if self.standard == "GOST" and self.gost_name is not None:
             return self.gost_name
         return self.iso_name
+
+    @property
+    def catalogue_name(self) -> str:
+        """Name of the catalogue row: :attr:`base`, with ``68xx``/``69xx`` read as
+        ``618xx``/``619xx`` and every cylindrical roller type as ``NU`` (``N206`` -> ``NU206``).
+
+        >>> parse("6806").catalogue_name, parse("NJ 206 ECP").catalogue_name
+        ('61806', 'NU206')
+        """
+        if self.kind == "roller":
+            return f"NU{self.series[-1]}{self.bore_code}"
+        if self.standard == "ISO" and self.series in OLD_SERIES_NAMES:
+            return OLD_SERIES_NAMES[self.series] + self.bore_code
+        return self.base
 
 
 def bore_from_code(code: str) -> float:
@@ -244,6 +284,9 @@ def parse(text: str) -> Designation:
     norm = raw.upper().translate(_FOLD)
     if not norm:
         raise _error(raw, "empty")
+    other = _parse_other_iso(raw, norm)
+    if other is not None:
+        return other
     m = _ISO.match(norm)
     if m:
         suffixes, clr, acc = _parse_suffixes(raw, m.group("rest"))
@@ -302,3 +345,43 @@ def parse(text: str) -> Designation:
         accuracy_class=acc,
         design_code=m.group("design"),
     )
+
+
+def _parse_other_iso(raw: str, norm: str) -> Designation | None:
+    """The 618/619/160 series, bores below 10 mm and cylindrical roller bearings; else None."""
+    m = _ROLLER.match(norm)
+    if m:
+        series, code = m.group("series"), m.group("bore")
+        name = f"{m.group('type')}{series}{code}"
+        suffixes, clr, acc = _parse_suffixes(raw, m.group("rest"))
+        return Designation(
+            text=raw,
+            standard="ISO",
+            series=f"NU{series}",
+            bore_code=code,
+            bore=bore_from_code(code),
+            iso_name=name,
+            gost_name=None,
+            suffixes=suffixes,
+            clearance_class=clr,
+            accuracy_class=acc,
+            kind="roller",
+        )
+    for pattern, small in ((_ISO_WIDE, False), (_ISO_SMALL, True)):
+        m = pattern.match(norm)
+        if m:
+            series, code = m.group("series"), m.group("bore")
+            suffixes, clr, acc = _parse_suffixes(raw, m.group("rest"))
+            return Designation(
+                text=raw,
+                standard="ISO",
+                series="6" + series if small else series,
+                bore_code=code,
+                bore=float(code) if small else bore_from_code(code),
+                iso_name=f"6{series}{code}" if small else f"{series}{code}",
+                gost_name=None,
+                suffixes=suffixes,
+                clearance_class=clr,
+                accuracy_class=acc,
+            )
+    return None

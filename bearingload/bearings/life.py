@@ -26,13 +26,9 @@ from typing import Any
 import numpy as np
 from numpy.typing import ArrayLike
 
+from bearingload.constants import BALL_LIFE_EXPONENT, ROLLER_LIFE_EXPONENT  # noqa: E402,F401
 from bearingload.errors import InputError
 from bearingload.validate import finite_positive
-
-#: Life exponent p of ball bearings (ISO 281). [-]
-BALL_LIFE_EXPONENT = 3.0
-#: Life exponent p of roller bearings (ISO 281). [-]
-ROLLER_LIFE_EXPONENT = 10.0 / 3.0
 
 
 def _out(x: np.ndarray) -> Any:
@@ -108,3 +104,58 @@ def allowable_load(
     n = finite_positive("revolutions", revolutions)
     e = finite_positive("exponent", exponent)
     return _out(c / n ** (1.0 / e))
+
+
+#: ISO 281:2007, 5.2 (dynamic equivalent radial load of radial ball bearings), Table 3, single-row
+#: radial (deep-groove) ball bearings with normal clearance: rows of f0 F_a / C0r with e and Y
+#: (X = 0.56) for F_a/F_r > e; for F_a/F_r <= e, X = 1 and Y = 0. Intermediate values by linear
+#: interpolation, as the standard says.
+ISO281_DEEP_GROOVE_F0FA_C0R = (0.172, 0.345, 0.689, 1.03, 1.38, 2.07, 3.45, 5.17, 6.89)
+ISO281_DEEP_GROOVE_E = (0.19, 0.22, 0.26, 0.28, 0.30, 0.34, 0.38, 0.42, 0.44)
+ISO281_DEEP_GROOVE_Y = (2.30, 1.99, 1.71, 1.55, 1.45, 1.31, 1.15, 1.04, 1.00)
+ISO281_DEEP_GROOVE_X = 0.56
+
+
+def equivalent_load_deep_groove(
+    radial_load: ArrayLike, axial_load: ArrayLike, C0: ArrayLike, f0: ArrayLike
+) -> Any:
+    """Dynamic equivalent radial load P = X F_r + Y F_a of a deep-groove ball bearing. [N]
+
+    ISO 281:2007, clause 5.2, Table 3 (single row, normal clearance): with
+    ``r = f0 F_a / C0r`` the factor ``e`` and ``Y`` are interpolated linearly in the table;
+    ``F_a/F_r <= e`` gives ``P = F_r``, else ``P = 0.56 F_r + Y F_a``. Outside the table
+    (``r < 0.172`` or ``r > 6.89``) the end rows are used. Only the normal-clearance columns are
+    implemented: the standard's factors for other clearance groups were not checked against a
+    source for this package.
+
+    Parameters
+    ----------
+    radial_load : array_like
+        F_r >= 0. [N]
+    axial_load : array_like
+        F_a (its size is used). [N]
+    C0 : array_like
+        Basic static radial load rating C0r. [N]
+    f0 : array_like
+        Factor f0 of the bearing (catalogue; ISO 76). [-]
+
+    >>> round(float(equivalent_load_deep_groove(1000.0, 1000.0, 11200.0, 13.2)), 1)
+    2067.6
+    >>> float(equivalent_load_deep_groove(1000.0, 100.0, 11200.0, 13.2))
+    1000.0
+    """
+    fr = np.asarray(radial_load, dtype=float)
+    if not np.all(np.isfinite(fr) & (fr >= 0)):
+        raise InputError("radial_load", f"must be a finite number >= 0; got {radial_load!r}")
+    fa = np.abs(np.asarray(axial_load, dtype=float))
+    if not np.all(np.isfinite(fa)):
+        raise InputError("axial_load", f"must be a finite number; got {axial_load!r}")
+    c0 = finite_positive("C0", C0)
+    f_0 = finite_positive("f0", f0)
+    ratio = f_0 * fa / c0
+    e = np.interp(ratio, ISO281_DEEP_GROOVE_F0FA_C0R, ISO281_DEEP_GROOVE_E)
+    y = np.interp(ratio, ISO281_DEEP_GROOVE_F0FA_C0R, ISO281_DEEP_GROOVE_Y)
+    with np.errstate(divide="ignore", invalid="ignore"):
+        small = np.where(fr > 0, fa / np.where(fr > 0, fr, 1.0) <= e, fa == 0)
+    p = np.where(small, fr, ISO281_DEEP_GROOVE_X * fr + y * fa)
+    return _out(np.asarray(p, dtype=float))

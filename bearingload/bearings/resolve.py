@@ -8,7 +8,12 @@ load ratings, and for every value the place it came from.
 
 Rules
 -----
-* Geometry: catalogue row (:func:`bearingload.bearings.catalog.lookup`), each value replaceable.
+* Geometry: catalogue row (:func:`bearingload.bearings.catalog.lookup`), each value replaceable;
+  ``maker`` picks another maker's ball set (default NSK, see :mod:`bearingload.bearings.catalog`).
+  A cylindrical roller designation (``NU206``) resolves through
+  :mod:`bearingload.bearings.rollers`: Palmgren line-contact stiffness [N/mm^(10/9)], exponent
+  10/9, and a clearance given as a length (zero by default; the roller clearance classes are not
+  in the catalogue).
   Without a designation, ``balls`` is needed and either ``stiffness`` or the ball geometry
   (``ball_diameter`` and ``pitch_diameter``; conformities default to 0.52 / 0.53).
 * Stiffness: exact Hertz (:func:`bearingload.contact.hertz.ball_stiffness`) from the geometry, E and nu
@@ -30,6 +35,7 @@ from __future__ import annotations
 import dataclasses
 import math
 from dataclasses import dataclass
+from typing import Any
 
 from bearingload.bearings.catalog import DEFAULT_F_I, DEFAULT_F_O, BearingGeometry, lookup
 from bearingload.bearings.clearance import (
@@ -39,13 +45,13 @@ from bearingload.bearings.clearance import (
     clearance_range,
     parse_clearance,
 )
+from bearingload.constants import STEEL_MODULUS, STEEL_POISSON
 from bearingload.errors import InputError
 from bearingload.validate import finite_positive
 
-#: Young's modulus used when none is given: bearing steel, NSK 208 000 MPa. [MPa]
-DEFAULT_MODULUS = 208_000.0
-#: Poisson's ratio used when none is given. [-]
-DEFAULT_POISSON = 0.3
+#: Young's modulus and Poisson's ratio used when none is given (bearingload.constants). [MPa], [-]
+DEFAULT_MODULUS = STEEL_MODULUS
+DEFAULT_POISSON = STEEL_POISSON
 
 
 @dataclass(frozen=True)
@@ -95,6 +101,12 @@ class ResolvedBearing:
         ``min``, ``mean`` or ``max`` for a class.
     C, C0 : float or None
         Basic dynamic and static load ratings. [N]
+    kind : str
+        ``"ball"`` or ``"roller"`` (cylindrical roller bearing).
+    exponent : float
+        Load-deflection exponent m of Q = K delta^m: 1.5 balls, 10/9 rollers. [-]
+    roller_length : float or None
+        Effective roller length L_we of a roller bearing. [mm]
     provenance : tuple of Provenance
         Every value above with its source, in display order.
     sources : tuple of str
@@ -122,6 +134,9 @@ class ResolvedBearing:
     C0: float | None
     provenance: tuple[Provenance, ...]
     sources: tuple[str, ...]
+    kind: str = "ball"
+    exponent: float = 1.5
+    roller_length: float | None = None
 
     @property
     def has_geometry(self) -> bool:
@@ -174,6 +189,7 @@ def resolve_bearing(
     stiffness: float | None = None,
     clearance: str | float | ClearanceSpec | None = None,
     clearance_pick: str = "mean",
+    maker: str | None = None,
 ) -> ResolvedBearing:
     """Resolve a bearing for a calculation: geometry, K, G_r and the source of each.
 
@@ -197,6 +213,9 @@ def resolve_bearing(
         G_r as a length (float: [mm]; text with a unit) or a class, see :func:`parse_clearance`.
     clearance_pick : {"mean", "min", "max"}
         Where in a class range to take G_r.
+    maker : str, optional
+        Whose ball set (``NSK`` default, ``NTN``, ``SKF``, ``GMN``, ``GOST`` ...), see
+        :func:`bearingload.bearings.catalog.variant`.
 
     Returns
     -------
@@ -209,6 +228,65 @@ def resolve_bearing(
         ``pitch-diameter``, ``f_i``, ``f_o``), missing inputs, a clearance class without a bore
         (``clearance``), bad modulus or Poisson's ratio.
     """
+    _check_inputs(modulus, stiffness, ball_diameter, pitch_diameter, poisson, clearance_pick)
+    spec = clearance if isinstance(clearance, ClearanceSpec) else parse_clearance(clearance)
+    if designation is not None and _is_roller(designation):
+        return _roller(designation, maker, balls, ball_diameter, pitch_diameter, modulus,
+                       poisson, stiffness, spec)  # fmt: skip
+    given = {"balls": balls, "ball_diameter": ball_diameter, "pitch_diameter": pitch_diameter,
+             "f_i": f_i, "f_o": f_o}  # fmt: skip
+    g = _ball_set(designation, maker, given, stiffness)
+    prov = g.provenance + _ball_set_provenance(g, given)
+    e = DEFAULT_MODULUS if modulus is None else float(modulus)
+    nu = DEFAULT_POISSON if poisson is None else float(poisson)
+    k_i = k_o = k_hertz = None
+    if g.dw is not None and g.dm is not None and g.fi is not None and g.fo is not None:
+        from bearingload.contact.hertz import ball_stiffness
+
+        prov += _material_provenance(e, nu, modulus, poisson)
+        ks = ball_stiffness(g.dw, g.dm, g.fi, g.fo, e, nu)
+        k_i, k_o, k_hertz = float(ks.inner), float(ks.outer), float(ks.ball)
+        prov += [
+            Provenance("stiffness_inner", "inner contact K_i", k_i, "N/mm^1.5", "Hertz, exact"),
+            Provenance("stiffness_outer", "outer contact K_o", k_o, "N/mm^1.5", "Hertz, exact"),
+        ]
+    k = float(stiffness) if stiffness is not None else float(k_hertz or 0.0)
+    k_src = "given" if stiffness is not None else "Hertz, exact: (K_i^-2/3 + K_o^-2/3)^-3/2"
+    prov.append(Provenance("stiffness", "ball stiffness K (series)", k, "N/mm^1.5", k_src))
+    g_r, cls, rng, pick, g_src = _resolve_clearance(spec, g.geom, g.bore, clearance_pick)
+    if g.dw is not None and abs(g_r) >= g.dw / 2:
+        raise InputError(
+            "clearance",
+            f"G_r = {g_r:g} mm is at least half the ball diameter ({g.dw:g} mm): no bearing has "
+            f"such a play or preload; a bare number is mm (did you mean {g_r:g}um?)",
+        )
+    sources = g.sources + ([_clearance_row_source(g.bore)] if rng is not None else [])
+    prov.append(Provenance("clearance", "radial clearance G_r (total)", g_r * 1e3, "µm", g_src))
+    geom = g.geom
+    c = geom.C if geom is not None else None
+    c0 = geom.C0 if geom is not None else None
+    if geom is not None:
+        prov += [
+            Provenance("C", "dynamic load rating C", c, "N", _rating_source(geom, c)),
+            Provenance("C0", "static load rating C0", c0, "N", _rating_source(geom, c0)),
+        ]
+    return ResolvedBearing(
+        designation=designation, geometry=geom, balls=g.z, ball_diameter=g.dw,
+        pitch_diameter=g.dm, f_i=g.fi, f_o=g.fo, modulus=e, poisson=nu, stiffness=k,
+        stiffness_inner=k_i, stiffness_outer=k_o, stiffness_given=stiffness is not None,
+        clearance=g_r, clearance_class=cls, clearance_range=rng, clearance_pick=pick,
+        C=c, C0=c0, provenance=tuple(prov), sources=tuple(sources),
+    )  # fmt: skip
+
+
+def _check_inputs(
+    modulus: float | None,
+    stiffness: float | None,
+    ball_diameter: float | None,
+    pitch_diameter: float | None,
+    poisson: float | None,
+    clearance_pick: str,
+) -> None:
     for name, value in (
         ("modulus", modulus),
         ("stiffness", stiffness),
@@ -221,29 +299,39 @@ def resolve_bearing(
         raise InputError("poisson", f"must lie in (-1, 0.5]; got {poisson!r}")
     if clearance_pick not in PICKS:
         raise InputError("pick", f"unknown pick {clearance_pick!r}; allowed: {', '.join(PICKS)}")
-    spec = clearance if isinstance(clearance, ClearanceSpec) else parse_clearance(clearance)
-    given = {
-        "balls": balls,
-        "ball_diameter": ball_diameter,
-        "pitch_diameter": pitch_diameter,
-        "f_i": f_i,
-        "f_o": f_o,
-    }
-    prov: list[Provenance] = []
-    sources: list[str] = []
-    geom: BearingGeometry | None = None
+
+
+@dataclass
+class _BallSet:
+    """The ball set in use and where it came from (internal to :func:`resolve_bearing`)."""
+
+    geom: BearingGeometry | None
+    z: int
     dw: float | None
     dm: float | None
     fi: float | None
     fo: float | None
+    bore: float | None
+    sources: list[str]
+    provenance: list[Provenance]
+
+
+def _ball_set(
+    designation: str | None, maker: str | None, given: dict[str, Any], stiffness: float | None
+) -> _BallSet:
+    """The catalogue row with the overrides applied, or the ball set given by hand."""
+    sources: list[str] = []
     hand_bore: float | None = None
+    geom: BearingGeometry | None = None
     if designation is not None:
         try:
-            geom = lookup(designation, **given)  # type: ignore[arg-type]
-        except InputError:
+            geom = lookup(designation, maker=maker, **given)
+        except InputError as exc:
+            if exc.parameter == "maker":
+                raise
             # not in the catalogue (or no ball set there): with the ball set given by hand, the
             # designation still gives the bore, which resolves a clearance class
-            if balls is None or ball_diameter is None or pitch_diameter is None:
+            if None in (given["balls"], given["ball_diameter"], given["pitch_diameter"]):
                 raise
             from bearingload.bearings.designation import parse
 
@@ -256,29 +344,31 @@ def resolve_bearing(
         sources.append(f"catalogue row {geom.designation} ({geom.standard}): {geom.source}")
         if geom.notes:
             sources.append(f"catalogue notes: {geom.notes}")
-        z = int(geom.balls or 0)
-        dw, dm, fi, fo = geom.ball_diameter, geom.pitch_diameter, geom.f_i, geom.f_o
-        bore: float | None = geom.d
-        prov += [
+        prov = [
             Provenance("d", "bore d", geom.d, "mm", "catalogue"),
             Provenance("D", "outside diameter D", geom.D, "mm", "catalogue"),
         ]
-    else:
-        if balls is None:
-            raise InputError("balls", "give the number of balls, or a bearing designation")
-        if isinstance(balls, bool) or int(balls) != balls or balls < 1:
-            raise InputError(
-                "balls", f"the number of balls must be a whole number >= 1, not {balls!r}"
-            )
-        z, dw, dm, bore = int(balls), ball_diameter, pitch_diameter, hand_bore
-        fi = f_i if f_i is not None or dw is None else DEFAULT_F_I
-        fo = f_o if f_o is not None or dw is None else DEFAULT_F_O
-        if stiffness is None and (dw is None or dm is None):
-            raise InputError(
-                "stiffness",
-                "give the ball stiffness, or the ball geometry (--ball-diameter and "
-                "--pitch-diameter), or a bearing designation",
-            )
+        return _BallSet(geom, int(geom.balls or 0), geom.ball_diameter, geom.pitch_diameter,
+                        geom.f_i, geom.f_o, geom.d, sources, prov)  # fmt: skip
+    balls, dw, dm = given["balls"], given["ball_diameter"], given["pitch_diameter"]
+    if balls is None:
+        raise InputError("balls", "give the number of balls, or a bearing designation")
+    if isinstance(balls, bool) or int(balls) != balls or balls < 1:
+        raise InputError("balls", f"the number of balls must be a whole number >= 1, not {balls!r}")
+    fi = given["f_i"] if given["f_i"] is not None or dw is None else DEFAULT_F_I
+    fo = given["f_o"] if given["f_o"] is not None or dw is None else DEFAULT_F_O
+    if stiffness is None and (dw is None or dm is None):
+        raise InputError(
+            "stiffness",
+            "give the ball stiffness, or the ball geometry (--ball-diameter and "
+            "--pitch-diameter), or a bearing designation",
+        )
+    return _BallSet(None, int(balls), dw, dm, fi, fo, hand_bore, sources, [])
+
+
+def _ball_set_provenance(g: _BallSet, given: dict[str, Any]) -> list[Provenance]:
+    """z, D_w, d_m, f_i, f_o with the source of each: catalogue, override or given."""
+    geom = g.geom
     overridden = set(geom.overrides) if geom is not None else set(given)
 
     def src(field: str, default: str) -> str:
@@ -286,103 +376,36 @@ def resolve_bearing(
             return "given" if given.get(field) is not None else default
         return "given (override)" if field in overridden else default
 
-    pitch_src = "catalogue"
+    set_src = "catalogue"
+    if geom is not None and geom.standard == "ISO" and geom.maker is not None:
+        set_src = f"catalogue: {geom.maker} ball set, {geom.method}"
+    pitch_src = set_src
     if geom is not None and "pitch_diameter" not in overridden:
-        pitch_src = "(d + D)/2" if math.isclose(dm or 0.0, (geom.d + geom.D) / 2) else pitch_src
-    prov += [
-        Provenance("balls", "balls z", z, "", src("balls", "catalogue")),
+        pitch_src = "(d + D)/2" if math.isclose(g.dm or 0.0, (geom.d + geom.D) / 2) else pitch_src
+    return [
+        Provenance("balls", "balls z", g.z, "", src("balls", set_src)),
+        Provenance("ball_diameter", "ball diameter D_w", g.dw, "mm", src("ball_diameter", set_src)),
         Provenance(
-            "ball_diameter", "ball diameter D_w", dw, "mm", src("ball_diameter", "catalogue")
+            "pitch_diameter", "pitch diameter d_m", g.dm, "mm", src("pitch_diameter", pitch_src)
         ),
         Provenance(
-            "pitch_diameter", "pitch diameter d_m", dm, "mm", src("pitch_diameter", pitch_src)
+            "f_i", "inner conformity f_i = r_i/D_w", g.fi, "", src("f_i", _f_source(geom, "f_i"))
         ),
         Provenance(
-            "f_i", "inner conformity f_i = r_i/D_w", fi, "", src("f_i", _f_source(geom, "f_i"))
-        ),
-        Provenance(
-            "f_o", "outer conformity f_o = r_o/D_w", fo, "", src("f_o", _f_source(geom, "f_o"))
+            "f_o", "outer conformity f_o = r_o/D_w", g.fo, "", src("f_o", _f_source(geom, "f_o"))
         ),
     ]
-    e = DEFAULT_MODULUS if modulus is None else float(modulus)
-    nu = DEFAULT_POISSON if poisson is None else float(poisson)
-    k_i = k_o = k_hertz = None
-    if dw is not None and dm is not None and fi is not None and fo is not None:
-        from bearingload.contact.hertz import ball_stiffness
 
-        prov += [
-            Provenance(
-                "modulus",
-                "Young's modulus E",
-                e,
-                "MPa",
-                "given" if modulus is not None else "default: bearing steel (NSK 208 000 MPa)",
-            ),
-            Provenance(
-                "poisson",
-                "Poisson's ratio nu",
-                nu,
-                "",
-                "given" if poisson is not None else "default: steel",
-            ),
-        ]
-        ks = ball_stiffness(dw, dm, fi, fo, e, nu)
-        k_i, k_o, k_hertz = float(ks.inner), float(ks.outer), float(ks.ball)
-        prov += [
-            Provenance("stiffness_inner", "inner contact K_i", k_i, "N/mm^1.5", "Hertz, exact"),
-            Provenance("stiffness_outer", "outer contact K_o", k_o, "N/mm^1.5", "Hertz, exact"),
-        ]
-    k_given = stiffness is not None
-    k = float(stiffness) if stiffness is not None else float(k_hertz or 0.0)
-    prov.append(
-        Provenance(
-            "stiffness",
-            "ball stiffness K (series)",
-            k,
-            "N/mm^1.5",
-            "given" if k_given else "Hertz, exact: (K_i^-2/3 + K_o^-2/3)^-3/2",
-        )
-    )
-    g_r, cls, rng, pick, g_src = _resolve_clearance(spec, geom, bore, clearance_pick)
-    if dw is not None and abs(g_r) >= dw / 2:
-        raise InputError(
-            "clearance",
-            f"G_r = {g_r:g} mm is at least half the ball diameter ({dw:g} mm): no bearing has such "
-            f"a play or preload; a bare number is mm (did you mean {g_r:g}um?)",
-        )
-    if rng is not None:
-        sources.append(_clearance_row_source(bore))
-    prov.append(Provenance("clearance", "radial clearance G_r (total)", g_r * 1e3, "µm", g_src))
-    c = geom.C if geom is not None else None
-    c0 = geom.C0 if geom is not None else None
-    if geom is not None:
-        prov += [
-            Provenance("C", "dynamic load rating C", c, "N", "catalogue" if c else "unknown"),
-            Provenance("C0", "static load rating C0", c0, "N", "catalogue" if c0 else "unknown"),
-        ]
-    return ResolvedBearing(
-        designation=designation,
-        geometry=geom,
-        balls=z,
-        ball_diameter=dw,
-        pitch_diameter=dm,
-        f_i=fi,
-        f_o=fo,
-        modulus=e,
-        poisson=nu,
-        stiffness=k,
-        stiffness_inner=k_i,
-        stiffness_outer=k_o,
-        stiffness_given=k_given,
-        clearance=g_r,
-        clearance_class=cls,
-        clearance_range=rng,
-        clearance_pick=pick,
-        C=c,
-        C0=c0,
-        provenance=tuple(prov),
-        sources=tuple(sources),
-    )
+
+def _material_provenance(
+    e: float, nu: float, modulus: float | None, poisson: float | None
+) -> list[Provenance]:
+    e_src = "given" if modulus is not None else "default: bearing steel (NSK 208 000 MPa)"
+    nu_src = "given" if poisson is not None else "default: steel"
+    return [
+        Provenance("modulus", "Young's modulus E", e, "MPa", e_src),
+        Provenance("poisson", "Poisson's ratio nu", nu, "", nu_src),
+    ]
 
 
 def _f_source(geom: BearingGeometry | None, field: str) -> str:
@@ -434,3 +457,49 @@ def _clearance_row_source(bore: float | None) -> str:
         if bore is not None and row.bore_over < bore <= row.bore_incl:
             return f"clearance table (bore over {row.bore_over:g} incl {row.bore_incl:g} mm): {row.source}"
     return "clearance table"  # pragma: no cover - clearance_range raised before
+
+
+def _roller(
+    designation: str,
+    maker: str | None,
+    rollers: int | None,
+    roller_diameter: float | None,
+    pitch_diameter: float | None,
+    modulus: float | None,
+    poisson: float | None,
+    stiffness: float | None,
+    spec: ClearanceSpec | None,
+) -> ResolvedBearing:
+    """A cylindrical roller bearing, see :func:`bearingload.bearings.resolve_roller.resolve_roller`."""
+    from bearingload.bearings.resolve_roller import resolve_roller
+
+    if maker is not None:
+        raise InputError("maker", "the roller bearings have one design each (SKF ECP)")
+    return resolve_roller(
+        designation,
+        rollers=rollers,
+        roller_diameter=roller_diameter,
+        pitch_diameter=pitch_diameter,
+        modulus=modulus,
+        poisson=poisson,
+        stiffness=stiffness,
+        clearance=spec,
+    )
+
+
+def _is_roller(designation: str) -> bool:
+    """True for a cylindrical roller designation (NU206 ...); unreadable text counts as not."""
+    from bearingload.bearings.designation import parse
+
+    try:
+        return parse(designation).kind == "roller"
+    except InputError:
+        return False
+
+
+def _rating_source(geom: BearingGeometry, value: float | None) -> str:
+    if not value:
+        return "unknown"
+    if geom.standard == "ISO" and geom.maker is not None:
+        return f"catalogue: {geom.maker}"
+    return "catalogue"

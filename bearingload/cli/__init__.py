@@ -16,6 +16,7 @@ from bearingload.cli.options import CONTEXT
 #: Command name -> module of this package defining a command object of the same name.
 COMMANDS = {
     "solve": "solve",
+    "sweep": "sweep",
     "table": "table",
     "catalog": "catalog",
     "fit": "fit",
@@ -55,9 +56,28 @@ def main() -> None:
       bearingload table k
       bearingload table kq --format csv -o kq.csv
       bearingload solve 306 --load 300kgf --clearance C3
+      bearingload sweep -z 9 --load 1kN --stiffness 1e5 --clearance 10um --steps 19
       bearingload catalog show 306
       bearingload fit examples/bearing208_kuzmenko2014.csv --load-unit kgf --balls 9
     """
+
+
+def _refuse_detached_units(args: list[str]) -> None:
+    """``-F 300 kgf``: a unit typed as its own word after a number. Say so, instead of an
+    unrelated error about an extra argument or an unknown bearing."""
+    from bearingload.units import unit_names
+
+    units = unit_names()
+    for before, word in zip(args, args[1:], strict=False):
+        try:
+            float(before)
+        except ValueError:
+            continue
+        if word in units:
+            raise click.UsageError(
+                f"'{before} {word}': write a number and its unit without a space, "
+                f"e.g. {before}{word}"
+            )
 
 
 def run(argv: list[str] | None = None) -> None:
@@ -68,6 +88,7 @@ def run(argv: list[str] | None = None) -> None:
     import sys
 
     try:
+        _refuse_detached_units(sys.argv[1:] if argv is None else argv)
         main.main(args=argv, prog_name="bearingload", standalone_mode=False)
     except click.exceptions.Exit as exc:
         sys.exit(exc.exit_code)

@@ -13,7 +13,8 @@ from bearingload.errors import InputError
 CLEARANCE_HELP = (
     "Radial internal clearance G_r, total play (gap per side G_r/2; negative = preload): a length "
     "(bare number: mm; units um, mm, in) or an ISO 5753-1 class C2, CN, C3, C4, C5, resolved by the "
-    "bearing's bore. GOST 24810 groups are written G6, G7, G8, G9 (a bare 7 is 7 mm)."
+    "bearing's bore. GOST 24810 groups are written G6, G7, G8, G9. A bare number of 1 mm or more "
+    "is refused as implausible (20 -> did you mean 20um?); write 1.5mm to mean it."
 )
 
 
@@ -62,7 +63,8 @@ def geometry_options(func: Callable[..., Any]) -> Callable[..., Any]:
             "--modulus",
             type=Quantity("modulus"),
             help="Young's modulus E of balls and rings; default 208000 MPa (bearing steel). "
-            f"Units: {units_help('modulus')} (bare number: MPa).",
+            f"Units: {units_help('modulus')} (bare number: MPa; a bare number outside 1000 to "
+            "1e7 MPa is refused: 210 -> did you mean 210GPa?).",
         ),
         click.option("--poisson", type=float, help="Poisson's ratio nu; default 0.3."),
     ]

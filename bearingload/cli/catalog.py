@@ -5,11 +5,21 @@ from __future__ import annotations
 import click
 
 from bearingload.cli.bearing_options import renamed
-from bearingload.cli.options import CONTEXT, Quantity, emit, library_errors, output_options
+from bearingload.cli.options import (
+    CONTEXT,
+    Quantity,
+    emit,
+    library_errors,
+    maker_option,
+    output_options,
+)
 
 
 @click.group(context_settings=CONTEXT, invoke_without_command=True)
-@click.option("--series", help="Dimension series: 60, 62, 63, 64 (or GOST style 2, 3, 4; 62xx).")
+@click.option(
+    "--series",
+    help="Dimension series: 60, 62, 63, 64, 618 (68), 619 (69), 160 (or GOST style 2, 3, 4; 62xx).",
+)
 @click.option("--standard", help="GOST or ISO (any case).")
 @click.option("--bore", type=Quantity("length"), help="Bore diameter d. Bare number: mm.")
 @output_options
@@ -44,17 +54,19 @@ def catalog(
 
 @catalog.command(context_settings=CONTEXT)
 @click.argument("designation")
+@maker_option
 @output_options
 @library_errors
-def show(designation: str, fmt: str, output: str | None) -> None:
+def show(designation: str, maker: str | None, fmt: str, output: str | None) -> None:
     """Print one catalogue entry: dimensions, ball set, ratings, and where each came from.
 
     \b
     Examples:
       bearingload catalog show 306
       bearingload catalog show 6306-2RS/C3 --format json
+      bearingload catalog show 6208 --maker SKF
     """
     from bearingload.reports.catalog import catalog_entry
 
-    text = renamed(lambda: catalog_entry(designation, fmt), {"bearing": "DESIGNATION"})
+    text = renamed(lambda: catalog_entry(designation, fmt, maker), {"bearing": "DESIGNATION"})
     emit(text, output)

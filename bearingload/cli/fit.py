@@ -79,6 +79,12 @@ def fit_errors(func: Callable[..., Any]) -> Callable[..., Any]:
     show_default=True,
     help="Unit of the 'displacement' column.",
 )
+@click.option(
+    "--points",
+    is_flag=True,
+    help="csv: the measured points with the fitted values (one row per point) instead of the "
+    "fits (one row per method).",
+)
 @output_options
 @fit_errors
 def fit(
@@ -87,6 +93,7 @@ def fit(
     balls: int | None,
     load_unit: str,
     displacement_unit: str,
+    points: bool,
     fmt: str,
     output: str | None,
 ) -> None:
@@ -104,17 +111,21 @@ def fit(
       bearingload fit examples/bearing208_kuzmenko2014.csv --load-unit kgf \\
           --base 200kgf:0.8mm --base 1000kgf:1.67mm --balls 9
       bearingload fit data.csv --displacement-unit um --format json
+      # the measured points with the fitted values, as csv
+      bearingload fit data.csv --format csv --points
     """
-    from bearingload.reports.fit import fit_report, parse_base_point
+    from bearingload.reports.fit import fit_report
+    from bearingload.studies.fit_comparison import parse_base_point
 
-    points = None
+    base_points = None
     if base:
         if len(base) != 2:
             raise InputError("base", f"give --base exactly twice or not at all (got {len(base)})")
-        points = [parse_base_point(b, load_unit, displacement_unit) for b in base]
+        base_points = [parse_base_point(b, load_unit, displacement_unit) for b in base]
     text = fit_report(
         file,
-        base=points,
+        base=base_points,
+        points=points,
         balls=balls,
         load_unit=load_unit,
         displacement_unit=displacement_unit,

@@ -128,6 +128,8 @@ OPTION_NAMES = {
     "clearance": "--clearance",
     "cage_angle": "--cage-angle",
     "exponent": "--exponent",
+    "steps": "--steps",
+    "T": "--kurochkin-T",
     # bearing, geometry and life options (bearingload.bearings.resolve, bearingload.bearings.life)
     "bearing": "BEARING",
     "ball-diameter": "--ball-diameter",
@@ -144,7 +146,17 @@ OPTION_NAMES = {
     "bore": "--clearance",
     "revolutions": "--revolutions",
     "series": "--series",
+    # combined load (bearingload.models.combined, bearingload.bearings.iso16281)
+    "radial_load": "--load",
+    "axial_load": "--axial-load",
+    "moment": "--moment",
+    "misalignment": "--misalignment",
+    "dynamic_rating": "--dynamic-rating",
+    "ball_diameter": "--ball-diameter",
+    "pitch_diameter": "--pitch-diameter",
     "standard": "--standard",
+    "maker": "--maker",
+    "roller-length": "--roller-length",
     "plot": "--plot",
     "family": "--family",
     "size": "--size",
@@ -227,3 +239,32 @@ def method_option(help_text: str) -> Callable[[Callable[..., Any]], Callable[...
         show_default=True,
         help=help_text,
     )
+
+
+def maker_option(func: Callable[..., Any]) -> Callable[..., Any]:
+    """``--maker``: whose ball set a catalogue designation uses."""
+    return click.option(
+        "--maker",
+        help="Whose ball set the designation uses where makers differ: NSK (default), NTN, SKF, "
+        "GMN, GOST, or a published test-rig set (CWRU, PRONOSTIA, PADERBORN); "
+        "'bearingload catalog show X' lists the makers of X.",
+    )(func)
+
+
+def quiet_option(func: Callable[..., Any]) -> Callable[..., Any]:
+    """``--quiet``: no ``Warning:`` lines on the terminal (JSON keeps its ``warnings``)."""
+    return click.option(
+        "--quiet",
+        "-q",
+        is_flag=True,
+        help="Do not print warnings (static safety, contact pressure, ...) on stderr; "
+        "JSON output keeps them under 'warnings'.",
+    )(func)
+
+
+def print_warnings(warnings: list[str], quiet: bool) -> None:
+    """Print each warning as one ``Warning: ...`` line on stderr, unless ``quiet``."""
+    if quiet:
+        return
+    for text in warnings:
+        click.echo(f"Warning: {text}", err=True)

@@ -7,6 +7,7 @@ from typing import Any
 import click
 
 from bearingload.cli.bearing_options import CLEARANCE_HELP, Clearance, geometry_options
+from bearingload.cli.combined_options import combined_options, wants_combined
 from bearingload.cli.options import (
     CONTEXT,
     Quantity,
@@ -15,11 +16,15 @@ from bearingload.cli.options import (
     emit,
     exponent_option,
     library_errors,
+    maker_option,
     method_option,
     output_options,
+    print_warnings,
+    quiet_option,
     stiffness_value,
     units_help,
 )
+from bearingload.cli.plot import ball_loads_plot_option
 
 
 @click.command(context_settings=CONTEXT)
@@ -35,7 +40,8 @@ from bearingload.cli.options import (
     "-F",
     type=Quantity("force"),
     required=True,
-    help=f"Radial load F_r > 0. Units: {units_help('force')} (bare number: N).",
+    help=f"Radial load F_r > 0 (>= 0 with an axial load or a moment). Units: "
+    f"{units_help('force')} (bare number: N).",
 )
 @click.option(
     "--stiffness",
@@ -69,6 +75,7 @@ from bearingload.cli.options import (
     help="Life L [revolutions] for the allowable load C/(L/10^6)^(1/3). The default is the "
     "worked value of Kuzmenko (2010) §3.2 (36e6 rev, e.g. 1000 h at 600 rpm); set your own.",
 )
+@combined_options
 @cage_angle_option
 @exponent_option
 @method_option(
@@ -87,7 +94,10 @@ from bearingload.cli.options import (
     help="With a BEARING: also print the geometry used and the source of every value "
     "(JSON always carries it).",
 )
+@maker_option
+@quiet_option
 @output_options
+@ball_loads_plot_option
 @library_errors
 def solve(
     bearing: str | None,
@@ -108,8 +118,11 @@ def solve(
     method: str,
     per_ball: bool,
     show_geometry: bool,
+    maker: str | None,
+    quiet: bool,
     fmt: str,
     output: str | None,
+    **combined: Any,
 ) -> None:
     """Solve the ring equilibrium of one bearing: the heaviest ball load, how many balls carry,
     the load zone, the ring displacement and stiffness, and every ball's load.
@@ -117,10 +130,24 @@ def solve(
     The inner ring moves until the ball forces balance the radial load (Kurochkin 1973,
     Kuzmenko 2010). Ball 1 sits at the cage angle; balls are numbered counter-clockwise.
 
-    BEARING is a catalogue designation (306, 6306-2RS/C3, 75-313; see 'bearingload catalog'):
-    its ball set gives the exact Hertz ball stiffness, its bore resolves a clearance class, its
-    rating C gives the life (C/F_r)^3; --show-geometry prints the source of every value.
-    Without a BEARING give --balls and --stiffness (or the ball geometry).
+    BEARING is a catalogue designation (306, 6306-2RS/C3, 75-313, 61806, 16005; see 'bearingload
+    catalog'): its ball set (NSK's unless --maker names another) gives the exact Hertz ball
+    stiffness, its bore resolves a clearance class, its rating C gives the life (C/P)^p;
+    --show-geometry prints the source of every value. A cylindrical roller bearing (NU206,
+    N 306) is solved with line contact (m = 10/9, Palmgren). Without a BEARING give --balls and
+    --stiffness (or the ball geometry).
+
+    A case outside what the bearing supports (s0 = C0/P0 below 1, F_r above C0, contact pressure
+    above 4200 MPa for balls or 4000 MPa for rollers as in ISO 76, one element carrying the load,
+    clearance beyond the ISO 5753-1 classes) prints 'Warning: ...' lines on stderr; the result is
+    printed and the exit status is 0. JSON carries them as 'warnings'.
+
+    With --axial-load, --moment, --misalignment, --dynamic-rating or --rotating the inner ring of
+    a deep-groove ball bearing moves radially, axially and tilts (ISO/TS 16281): every ball gets
+    its contact angle; the axial displacement is measured from the centred rings (half the axial
+    play included, as MASTA reports it); the ring is free to tilt unless a moment or a
+    misalignment is given; the report adds the reference rating life L10r for the rotating ring
+    (default inner) beside ISO 281's (C_r/P)^3 with P = X F_r + Y F_a.
 
     \b
     Examples:
@@ -136,9 +163,17 @@ def solve(
       bearingload solve -z 8 -F 300kgf -K 4700kgf/mm^1.5 -G 20um --method all
       # every ball's load as csv, one row per ball
       bearingload solve -z 8 -F 300kgf -K 4700kgf/mm^1.5 --format csv --per-ball
+      # combined load on a 6205 with C3 clearance: contact angles, tilt, L10r
+      bearingload solve 6205 -F 1.4kN --axial-load 700N -G C3
+      # a hand-given ball set under a pure axial load, its C_r, the outer ring rotating
+      bearingload solve -z 7 --ball-diameter 11.5 --pitch-diameter 43.5 -F 0 -A 1kN -G 10um -C 23.4kN --rotating outer
+      # SKF's ball set of a 6208 instead of NSK's; a cylindrical roller bearing
+      bearingload solve 6208 -F 5kN --maker SKF
+      bearingload solve NU206 --load 5kN
     """
     from bearingload.models.registry import list_methods
     from bearingload.reports.solve import solve_report
+    from bearingload.studies.loaded_bearing import collect_warnings
 
     if not revolutions == revolutions:  # NaN passes click's range check
         raise click.UsageError(
@@ -146,14 +181,31 @@ def solve(
         )
     k_given = stiffness_value(stiffness, exponent)  # N/mm^m
     methods = list_methods() if method == "all" else [method]
+    geometry = {"balls": balls, "ball_diameter": ball_diameter, "pitch_diameter": pitch_diameter,
+                "f_i": inner_conformity, "f_o": outer_conformity, "modulus": modulus,
+                "poisson": poisson, "maker": maker}  # fmt: skip
+    if wants_combined(combined):
+        from bearingload.cli.combined_options import combined_text
+
+        if method != "exact":
+            raise click.UsageError(
+                "Invalid value for '--method': the combined load (--axial-load, --moment, "
+                "--misalignment) is solved by the exact model only"
+            )
+        bearings = _bearings(bearing, k_given, clearance, clearance_pick, exponent, **geometry)
+        emit(combined_text(bearings, load, cage_angle, combined, fmt, per_ball, show_geometry),
+             output)  # fmt: skip
+        return
     if bearing is None and ball_diameter is None and pitch_diameter is None:
         cases = _by_hand(methods, balls, load, k_given, clearance, cage_angle, exponent)
     else:
-        cases = _catalogue(methods, bearing, load, k_given, clearance, clearance_pick, cage_angle,
-                           exponent, revolutions, balls=balls, ball_diameter=ball_diameter,
-                           pitch_diameter=pitch_diameter, f_i=inner_conformity,
-                           f_o=outer_conformity, modulus=modulus, poisson=poisson)  # fmt: skip
+        bearings = _bearings(bearing, k_given, clearance, clearance_pick, exponent, **geometry)
+        angle = cage_angle_deg(cage_angle, bearings[0].balls)
+        from bearingload.studies.loaded_bearing import solve_bearing
+
+        cases = solve_bearing(bearings, load, angle, methods, revolutions)
     emit(solve_report(cases, fmt, per_ball=per_ball, show_geometry=show_geometry), output)
+    print_warnings(collect_warnings(cases), quiet)
 
 
 def _by_hand(
@@ -179,26 +231,17 @@ def _by_hand(
     return solve_ring(methods, balls, load, k_given, clearance_length(clearance), angle, exponent)
 
 
-def _catalogue(
-    methods: list[str],
+def _bearings(
     bearing: str | None,
-    load: float,
     k_given: float | None,
     clearance: Any,
     clearance_pick: str,
-    cage_angle: Any,
     exponent: float,
-    revolutions: float,
     **geometry: Any,
 ) -> list[Any]:
+    """The resolved bearing, or the same bearing at the min, mean and max of its class."""
     from bearingload.bearings.resolve import resolve_bearing
-    from bearingload.studies.loaded_bearing import solve_bearing
 
-    if exponent != 1.5:
-        raise click.UsageError(
-            "Invalid value for '--exponent': a ball bearing (Hertz point contact) has m = 1.5; "
-            "other exponents need --balls and --stiffness without a BEARING"
-        )
     resolved = resolve_bearing(
         bearing,
         stiffness=k_given,
@@ -206,12 +249,20 @@ def _catalogue(
         clearance_pick="mean" if clearance_pick == "range" else clearance_pick,
         **geometry,
     )
+    if exponent not in (1.5, resolved.exponent):  # 1.5, the option's default, also for rollers
+        contact = (
+            "a roller bearing (line contact) has m = 10/9"
+            if resolved.kind == "roller"
+            else "a ball bearing (Hertz point contact) has m = 1.5"
+        )
+        raise click.UsageError(
+            f"Invalid value for '--exponent': {contact}; "
+            "other exponents need --balls and --stiffness without a BEARING"
+        )
     if clearance_pick == "range" and resolved.clearance_range is None:
         raise click.UsageError(
             "Invalid value for '--clearance-pick': 'range' needs a clearance class "
             "(C2 CN C3 C4 C5), not a clearance length"
         )
     picks = ["min", "mean", "max"] if clearance_pick == "range" else []
-    bearings = [resolved.with_clearance(p) for p in picks] or [resolved]
-    angle = cage_angle_deg(cage_angle, resolved.balls)
-    return solve_bearing(bearings, load, angle, methods, revolutions)
+    return [resolved.with_clearance(p) for p in picks] or [resolved]

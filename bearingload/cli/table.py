@@ -14,6 +14,7 @@ from bearingload.cli.options import (
     emit,
     exponent_option,
     library_errors,
+    maker_option,
     method_option,
     output_options,
     stiffness_value,
@@ -63,6 +64,7 @@ TABLES = ("k", "kq")
     "The model the table is computed with (see 'bearingload solve --help'); all: one table "
     "comparing every method with its error against the exact answer."
 )
+@maker_option
 @output_options
 @library_errors
 def table(
@@ -82,6 +84,7 @@ def table(
     cage_angle: Any,
     exponent: float,
     method: str,
+    maker: str | None,
     fmt: str,
     output: str | None,
 ) -> None:
@@ -105,71 +108,59 @@ def table(
       # exact, continuum, Stribeck and Palmgren side by side for z = 1-30
       bearingload table k --method all
     """
-    k_given = stiffness_value(stiffness, exponent)  # N/mm^m
     from bearingload.reports.render import render
-    from bearingload.studies.tables import Conditions, table_k, table_kq
+    from bearingload.reports.tables import design_table
 
-    geometry = (ball_diameter, pitch_diameter, inner_conformity, outer_conformity, modulus, poisson)
+    k_given = stiffness_value(stiffness, exponent)  # N/mm^m
+    geometry = dict(ball_diameter=ball_diameter, pitch_diameter=pitch_diameter,
+                    f_i=inner_conformity, f_o=outer_conformity, modulus=modulus, poisson=poisson)  # fmt: skip
     if bearing is not None:
-        from bearingload.bearings.resolve import resolve_bearing
-        from bearingload.studies.bearing_tables import bearing_table
-
-        if exponent != 1.5:
-            raise click.UsageError(
-                "Invalid value for '--exponent': a ball bearing (Hertz point contact) has m = 1.5"
-            )
-        resolved = renamed(
-            lambda: resolve_bearing(
-                bearing,
-                ball_diameter=ball_diameter,
-                pitch_diameter=pitch_diameter,
-                f_i=inner_conformity,
-                f_o=outer_conformity,
-                modulus=modulus,
-                poisson=poisson,
-                stiffness=k_given,
-                clearance=clearance if clearance is not None else 0.0,
-                clearance_pick=clearance_pick,
-            ),
-            {"bearing": "--bearing"},
-        )
-        if method != "exact":
-            from bearingload.studies.method_tables import bearing_note
-            from bearingload.studies.tables import Conditions
-
-            cond = Conditions(load, resolved.stiffness, resolved.clearance, cage_angle, 1.5)
-            emit(
-                render([_method_table(name, method, z_max, cond, bearing_note(resolved))], fmt),
-                output,
-            )
-            return
-        emit(render([bearing_table(name, resolved, load, z_max, cage_angle)], fmt), output)
-        return
-    if any(v is not None for v in geometry):
+        cond = _bearing_conditions(bearing, load, k_given, clearance, clearance_pick, cage_angle,
+                                   exponent, dict(geometry, maker=maker))  # fmt: skip
+    elif any(v is not None for v in geometry.values()):
         raise click.UsageError(
             "the geometry and material options (--ball-diameter ... --poisson) need --bearing"
         )
-    from bearingload.bearings.clearance import clearance_length
-
-    k = 1e5 if k_given is None else k_given
-    cond = Conditions(load, k, clearance_length(clearance), cage_angle, exponent)
-    if method != "exact":
-        emit(render([_method_table(name, method, z_max, cond)], fmt), output)
-        return
-    builder = {"k": table_k, "kq": table_kq}[name]
-    emit(render([builder(z_max, cond)], fmt), output)
-
-
-def _method_table(name: str, method: str, z_max: int, cond: Any, note: str | None = None) -> Any:
-    """The table of one non-exact method, or the comparison of all (:mod:`bearingload.studies.method_tables`)."""
-    import dataclasses
-
-    from bearingload.studies.method_tables import table_compare, table_method
-
-    if method == "all":
-        table = table_compare(name, z_max, cond)
     else:
-        table = table_method(name, method, z_max, cond)
-    if note:
-        table = dataclasses.replace(table, notes=[*table.notes, note])
-    return table
+        from bearingload.bearings.clearance import clearance_length
+        from bearingload.studies.tables import Conditions
+
+        k = 1e5 if k_given is None else k_given
+        cond = Conditions(load, k, clearance_length(clearance), cage_angle, exponent)
+    emit(render([design_table(name, z_max, cond, method)], fmt), output)
+
+
+def _bearing_conditions(
+    bearing: str,
+    load: float,
+    k_given: float | None,
+    clearance: Any,
+    clearance_pick: str,
+    cage_angle: Any,
+    exponent: float,
+    geometry: dict[str, Any],
+) -> Any:
+    """The conditions of a catalogue bearing's ball and raceways (Hertz K, its clearance)."""
+    from bearingload.bearings.resolve import resolve_bearing
+    from bearingload.studies.tables import for_bearing
+
+    if exponent != 1.5:
+        raise click.UsageError(
+            "Invalid value for '--exponent': a ball bearing (Hertz point contact) has m = 1.5"
+        )
+    resolved = renamed(
+        lambda: resolve_bearing(
+            bearing,
+            stiffness=k_given,
+            clearance=clearance if clearance is not None else 0.0,
+            clearance_pick=clearance_pick,
+            **geometry,
+        ),
+        {"bearing": "--bearing"},
+    )
+    if resolved.kind != "ball":
+        raise click.UsageError(
+            "Invalid value for '--bearing': the tables take ball bearings; for a roller "
+            "bearing use 'bearingload solve' or --exponent 10/9 with --stiffness"
+        )
+    return for_bearing(resolved, load, cage_angle)

@@ -49,17 +49,18 @@ from typing import Any, NamedTuple
 import numpy as np
 from numpy.typing import ArrayLike
 
+from bearingload.constants import BALL_EXPONENT, ROLLER_EXPONENT, STEEL_MODULUS, STEEL_POISSON
+from bearingload.contact import _hertz_scalar
 from bearingload.errors import ConvergenceError, InputError
 
-#: Young's modulus of bearing steel, NSK catalogue: 208 000 MPa {21 200 kgf/mm^2}. [MPa]
-E_STEEL = 208_000.0
-#: Poisson's ratio of bearing steel. [-]
-NU_STEEL = 0.3
+#: Young's modulus and Poisson's ratio of bearing steel (bearingload.constants). [MPa], [-]
+E_STEEL = STEEL_MODULUS
+NU_STEEL = STEEL_POISSON
 #: Palmgren's coefficient of the roller-raceway approach delta = c Q^0.9 / l^0.8 (steel, mm, N).
 PALMGREN_LINE_COEFFICIENT = 3.84e-5
 #: Load-deflection exponents Q = K delta^n: point contact (balls) and line contact (rollers).
-POINT_EXPONENT = 1.5
-LINE_EXPONENT = 10.0 / 9.0
+POINT_EXPONENT = BALL_EXPONENT
+LINE_EXPONENT = ROLLER_EXPONENT
 #: Beyond this ratio of curvature sums the contact is a line contact for every practical
 #: purpose (kappa ~ 1e7); the point-contact solution is refused rather than returned inexact.
 MAX_CURVATURE_RATIO = 1e15
@@ -155,6 +156,39 @@ def _non_negative(name: str, value: ArrayLike) -> np.ndarray:
 def _out(x: Any) -> Any:
     """Scalar in, scalar out: unwrap 0-d arrays into numpy scalars."""
     return x[()] if isinstance(x, np.ndarray) else x
+
+
+def _plain(*values: object) -> list[float] | None:
+    """The values as finite Python floats when every one is a plain real scalar, else None.
+
+    The scalar fast path (:mod:`bearingload.contact._hertz_scalar`) takes such calls; anything
+    else, or anything it would refuse, goes through the vectorised path (which says why).
+    """
+    out = []
+    for v in values:
+        kind = type(v)
+        if kind is not float and kind is not int:
+            if not isinstance(v, (np.floating, np.integer)) or isinstance(v, bool):
+                return None
+        f = float(v)  # type: ignore[arg-type]
+        if not math.isfinite(f):
+            return None
+        out.append(f)
+    return out
+
+
+def _scalar_modulus(E: float, nu: float) -> float | None:
+    """:func:`reduced_modulus` of two equal bodies for plain floats, or None if refused."""
+    if not (E > 0 and -1.0 < nu <= 0.5):
+        return None
+    return 1.0 / ((1.0 - nu**2) / E + (1.0 - nu**2) / E)
+
+
+def _scalar_pair(rho_x: float, rho_y: float) -> tuple[float, float] | None:
+    small, large = min(rho_x, rho_y), max(rho_x, rho_y)
+    if not (small > 0 and large <= MAX_CURVATURE_RATIO * small):
+        return None
+    return small, large
 
 
 def reduced_modulus(
@@ -316,6 +350,13 @@ def hertz_coefficients(rho_x: ArrayLike, rho_y: ArrayLike) -> HertzCoefficients:
     >>> float(c.kappa), float(c.delta_star)
     (1.0, 1.0)
     """
+    plain = _plain(rho_x, rho_y)
+    pair = None if plain is None else _scalar_pair(*plain)
+    if pair is not None:
+        try:
+            return HertzCoefficients(*(np.float64(v) for v in _hertz_scalar.coefficients(*pair)))
+        except ArithmeticError:
+            pass  # the vectorised solver below
     small, large = _curvature_pair(rho_x, rho_y)
     log_ratio = np.log(large) - np.log(small)
     t = np.zeros_like(log_ratio)
@@ -380,6 +421,9 @@ def point_contact(
     >>> round(float(c.a), 6), round(float(c.delta), 7), round(float(c.p_max), 1)
     (0.421716, 0.0177845, 2684.7)
     """
+    fast = _point_contact_scalar(rho_x, rho_y, load, E, nu, e_star)
+    if fast is not None:
+        return fast
     q = _non_negative("load", load)
     es = _contact_modulus(E, nu, e_star)
     coeffs = hertz_coefficients(rho_x, rho_y)
@@ -398,6 +442,35 @@ def point_contact(
     return PointContact(
         *(_out(v) for v in np.broadcast_arrays(kappa, a, b, delta, stiffness, p_max))
     )
+
+
+def _point_contact_scalar(
+    rho_x: Any, rho_y: Any, load: Any, E: Any, nu: Any, e_star: Any
+) -> PointContact | None:
+    """:func:`point_contact` for plain scalars in pure Python (same formulas), else None."""
+    plain = _plain(rho_x, rho_y, load, E, nu, 1.0 if e_star is None else e_star)
+    if plain is None:
+        return None
+    rx, ry, q, e, n, es_given = plain
+    pair = _scalar_pair(rx, ry)
+    es = _scalar_modulus(e, n) if e_star is None else (es_given if es_given > 0 else None)
+    if pair is None or es is None or not q >= 0:
+        return None
+    try:
+        kappa, a_star, b_star, d_star, _, _ = _hertz_scalar.coefficients(*pair)
+    except ArithmeticError:
+        return None
+    sum_rho = rx + ry
+    x = (1.5 * q / (sum_rho * es)) ** (1.0 / 3.0)
+    values = (
+        kappa,
+        a_star * x,
+        b_star * x,
+        0.5 * d_star * sum_rho * x**2,
+        4.0 * math.sqrt(2.0) / 3.0 * es / (d_star**1.5 * math.sqrt(sum_rho)),
+        sum_rho * es * x / (math.pi * a_star * b_star),
+    )
+    return PointContact(*(np.float64(v) for v in values))
 
 
 def point_contact_stiffness(
@@ -531,10 +604,37 @@ def ball_stiffness(
     >>> round(float(k.ball), -2)
     404600.0
     """
+    fast = _ball_stiffness_scalar(D_w, d_m, f_i, f_o, E, nu, e_star)
+    if fast is not None:
+        return fast
     rho = ball_raceway_curvatures(D_w, d_m, f_i, f_o)
     k_i = point_contact_stiffness(rho.inner_x, rho.inner_y, E, nu, e_star=e_star)
     k_o = point_contact_stiffness(rho.outer_x, rho.outer_y, E, nu, e_star=e_star)
     return BallStiffness(inner=k_i, outer=k_o, ball=series_stiffness(k_i, k_o))
+
+
+def _ball_stiffness_scalar(
+    D_w: Any, d_m: Any, f_i: Any, f_o: Any, E: Any, nu: Any, e_star: Any
+) -> BallStiffness | None:
+    """:func:`ball_stiffness` for plain scalars in pure Python (same formulas), else None."""
+    plain = _plain(D_w, d_m, f_i, f_o, E, nu, 1.0 if e_star is None else e_star)
+    if plain is None:
+        return None
+    dw, dm, fi, fo, e, n, es_given = plain
+    if not (0 < dw < dm and fi > 0.5 and fo > 0.5):
+        return None
+    es = _scalar_modulus(e, n) if e_star is None else (es_given if es_given > 0 else None)
+    inner = (2.0 * dm / (dw * (dm - dw)), (2.0 * fi - 1.0) / (fi * dw))
+    outer = (2.0 * dm / (dw * (dm + dw)), (2.0 * fo - 1.0) / (fo * dw))
+    if es is None or _scalar_pair(*inner) is None or _scalar_pair(*outer) is None:
+        return None
+    try:
+        k_i = _hertz_scalar.stiffness(*inner, es)
+        k_o = _hertz_scalar.stiffness(*outer, es)
+    except ArithmeticError:
+        return None
+    ball = (k_i ** (-1.0 / POINT_EXPONENT) + k_o ** (-1.0 / POINT_EXPONENT)) ** (-POINT_EXPONENT)
+    return BallStiffness(np.float64(k_i), np.float64(k_o), np.float64(ball))
 
 
 def palmgren_line_deflection(

@@ -190,18 +190,22 @@ def _newton_step(st: tuple) -> tuple[float, float]:
 def _solve_xy(ring: tuple, e_hat: float, m: float, pre: bool, tol: float) -> tuple:
     """Damped Newton in (xi, eta) (``_ring.solve_xy`` for one case): (xi, eta, iterations)."""
     xi, eta, its = _start_xy(ring, e_hat, m, pre), 0.0, 0
-    cur = _state(ring, xi, eta, e_hat, m, pre)
+    gx, gy, hxx, hxy, hyy, size, energy = _state(ring, xi, eta, e_hat, m, pre)
+    polish = tol <= _ring.POLISH
     previous = math.inf
+    hypot = math.hypot
     for _ in range(_ring.MAX_ITERATIONS):
-        gx, gy, hxx, hxy, hyy, size, energy = cur
-        gnorm = math.hypot(gx, gy)
-        dx, dy = _newton_step(cur)
+        gnorm = hypot(gx, gy)
+        reg = 1e-12 * (hxx + hyy) + 1e-300
+        hxx, hyy = hxx + reg, hyy + reg
+        det = hxx * hyy - hxy * hxy
+        dx, dy = -(hyy * gx - hxy * gy) / det, -(hxx * gy - hxy * gx) / det
         if gnorm <= tol * size:
-            if its and tol <= _ring.POLISH:  # the last Newton step too, as the vector path
+            if its and polish:  # the last Newton step too, as the vector path
                 return xi + dx, eta + dy, its
             return xi, eta, its
-        step = math.hypot(dx, dy) / math.hypot(xi, eta)
-        if its and tol <= _ring.POLISH and step <= 1e-9 and step <= 1e-3 * previous:
+        step = hypot(dx, dy) / hypot(xi, eta)
+        if its and polish and step <= 1e-9 and step <= 1e-3 * previous:
             # quadratic convergence seen (steps 1e-3 times the last, <= 1e-9): the next error
             # is below step^3/previous^2 <= 1e-15; the residual at the point returned is
             # checked by the caller (else the vectorised path solves the case)
@@ -211,17 +215,15 @@ def _solve_xy(ring: tuple, e_hat: float, m: float, pre: bool, tol: float) -> tup
         t = 1.0
         for _ in range(81):
             trial = _state(ring, xi + t * dx, eta + t * dy, e_hat, m, pre)
-            if (
-                trial[6] <= energy + 1e-4 * t * slope
-                or math.hypot(trial[0], trial[1]) < 0.5 * gnorm
-            ):
+            if hypot(trial[0], trial[1]) < 0.5 * gnorm or trial[6] <= energy + 1e-4 * t * slope:
                 break
             t *= 0.5
         na, nb = xi + t * dx, eta + t * dy
-        small = math.hypot(na - xi, nb - eta) <= 4 * EPS * math.hypot(na, nb) + 1e-300
-        xi, eta, its, cur = na, nb, its + 1, trial
+        small = hypot(na - xi, nb - eta) <= 4 * EPS * hypot(na, nb) + 1e-300
+        xi, eta, its = na, nb, its + 1
+        gx, gy, hxx, hxy, hyy, size, energy = trial
         if small:
-            if math.hypot(trial[0], trial[1]) <= tol * trial[5] and tol <= _ring.POLISH:
+            if hypot(gx, gy) <= tol * size and polish:
                 dx, dy = _newton_step(trial)
                 return xi + dx, eta + dy, its
             return xi, eta, its

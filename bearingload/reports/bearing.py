@@ -37,9 +37,12 @@ def geometry_table(b: ResolvedBearing) -> Table:
 
 def geometry_document(b: ResolvedBearing) -> dict[str, Any]:
     """The bearing's JSON object: designation, ratings, clearance class, geometry with sources."""
+    k_unit = "N/mm^(10/9)" if b.kind == "roller" else "N/mm^1.5"
     return {
         "designation": b.designation,
         "standard": None if b.geometry is None else b.geometry.standard,
+        "kind": b.kind,
+        "maker": None if b.geometry is None else b.geometry.maker,
         "stiffness_inner": b.stiffness_inner,
         "stiffness_outer": b.stiffness_outer,
         "stiffness_given": b.stiffness_given,
@@ -52,8 +55,8 @@ def geometry_document(b: ResolvedBearing) -> dict[str, Any]:
         },
         "sources": list(b.sources),
         "units": {
-            "stiffness_inner": "N/mm^1.5",
-            "stiffness_outer": "N/mm^1.5",
+            "stiffness_inner": k_unit,
+            "stiffness_outer": k_unit,
             "C": "N",
             "C0": "N",
             "clearance_range": "mm",

@@ -7,7 +7,8 @@ from __future__ import annotations
 
 from typing import Any
 
-from bearingload.bearings.catalog import BearingGeometry, entries, find
+from bearingload.bearings.catalog import BearingGeometry, entries, find, variant
+from bearingload.errors import InputError
 from bearingload.reports.render import Column, Table, render
 
 
@@ -42,11 +43,13 @@ def catalog_list(
             Column("f_o", "f_o", "-", 3),
             Column("C", "C", "kN", 4),
             Column("C0", "C0", "kN", 4),
+            Column("maker", "ball set", align="left"),
         ],
         rows=rows,
         notes=[
-            f"{len(rows)} bearings; '-': ball set unknown (give --balls and --ball-diameter). "
-            "Sources of each row: bearingload catalog show DESIGNATION."
+            f"{len(rows)} bearings; '-': ball set unknown (give --balls and --ball-diameter, "
+            "or --maker). Sources of each row and the makers' sets: bearingload catalog show "
+            "DESIGNATION. Cylindrical roller bearings NU/N 203-220, 303-320: catalog show NU206."
         ],
     )
     return render([table], fmt)
@@ -58,7 +61,7 @@ def _row(b: BearingGeometry) -> dict[str, Any]:
         "standard": b.standard,
         "d": b.d,
         "D": b.D,
-        "B": b.B,
+        "B": _or_dash(b.B),
         "balls": b.balls if b.balls is not None else "-",
         "ball_diameter": b.ball_diameter if b.ball_diameter is not None else "-",
         "pitch_diameter": b.pitch_diameter if b.pitch_diameter is not None else "-",
@@ -66,18 +69,29 @@ def _row(b: BearingGeometry) -> dict[str, Any]:
         "f_o": b.f_o,
         "C": b.C / 1e3 if b.C is not None else "-",
         "C0": b.C0 / 1e3 if b.C0 is not None else "-",
+        "maker": f"{b.maker} ({b.method})" if b.maker else "-",
     }
 
 
-def catalog_entry(designation: str, fmt: str) -> str:
+def catalog_entry(designation: str, fmt: str, maker: str | None = None) -> str:
     """One catalogue entry with its sources and notes, rendered in ``fmt``.
+
+    ``maker`` shows that maker's ball set and ratings instead of the default.
 
     Raises
     ------
     InputError
-        (parameter ``bearing``) unknown or unreadable designation.
+        (parameter ``bearing``) unknown or unreadable designation; (``maker``) no such set.
     """
-    b = find(designation)
+    from bearingload.bearings.designation import parse
+
+    try:
+        roller = parse(designation).kind == "roller"
+    except InputError:
+        roller = False  # find() raises with the full hint
+    if roller:
+        return _roller_entry(designation, fmt, maker)
+    b = find(designation) if maker is None else variant(designation, maker)
     p = b.parsed
     fields: list[tuple[str, str, Any, str]] = [
         ("designation", "designation", b.designation, ""),
@@ -87,7 +101,7 @@ def catalog_entry(designation: str, fmt: str) -> str:
         ("series", "dimension series", b.series, ""),
         ("d", "bore d", b.d, "mm"),
         ("D", "outside diameter D", b.D, "mm"),
-        ("B", "width B", b.B, "mm"),
+        ("B", "width B", _or_dash(b.B), "mm"),
         ("balls", "balls z", b.balls if b.balls is not None else "-", ""),
         ("ball_diameter", "ball diameter D_w", _or_dash(b.ball_diameter), "mm"),
         ("pitch_diameter", "pitch diameter d_m", _or_dash(b.pitch_diameter), "mm"),
@@ -96,23 +110,58 @@ def catalog_entry(designation: str, fmt: str) -> str:
         ("C", "dynamic load rating C", _or_dash(b.C), "N"),
         ("C0", "static load rating C0", _or_dash(b.C0), "N"),
         ("f0", "factor f0 (C0 = f0 z D_w^2)", _or_dash(b.f0), "N/mm^2"),
+        ("maker", "ball set of maker", b.maker or "-", ""),
+        ("method", "ball set read/derived", b.method or "-", ""),
+        ("makers", "makers (--maker)", ", ".join(b.makers) or "-", ""),
         ("clearance_class", "clearance class marked", p.clearance_class or "none (CN)", ""),
     ]
+    return _entry(f"Bearing {b.designation} ({b.standard})", fields, b.source, b.notes, fmt)
+
+
+def _roller_entry(designation: str, fmt: str, maker: str | None) -> str:
+    from bearingload.bearings.rollers import lookup
+
+    if maker is not None:
+        raise InputError("maker", "the roller bearings have one design each (SKF ECP)")
+    r = lookup(designation)
+    fields: list[tuple[str, str, Any, str]] = [
+        ("designation", "designation", r.designation, ""),
+        ("iso_name", "as typed", r.parsed.iso_name, ""),
+        ("d", "bore d", r.d, "mm"),
+        ("D", "outside diameter D", r.D, "mm"),
+        ("B", "width B", r.B, "mm"),
+        ("F", "inner raceway diameter F", r.F, "mm"),
+        ("E", "outer raceway diameter E", r.E, "mm"),
+        ("rollers", "rollers z", r.rollers, ""),
+        ("roller_diameter", "roller diameter D_w", r.roller_diameter, "mm"),
+        ("pitch_diameter", "pitch diameter d_m", r.pitch_diameter, "mm"),
+        ("roller_length", "effective length L_we", r.roller_length, "mm"),
+        ("C", "dynamic load rating C", r.C, "N"),
+        ("C0", "static load rating C0", r.C0, "N"),
+        ("method", "roller count read/derived", r.method, ""),
+    ]
+    title = f"Cylindrical roller bearing {r.designation} (ISO)"
+    return _entry(title, fields, r.source, r.notes, fmt)
+
+
+def _entry(
+    title: str, fields: list[tuple[str, str, Any, str]], source: str, notes: str, fmt: str
+) -> str:
     if fmt == "json":
         doc: dict[str, Any] = {key: value for key, _, value, _ in fields}
-        doc["source"] = b.source
-        doc["notes"] = b.notes
+        doc["source"] = source
+        doc["notes"] = notes
         doc["units"] = {key: unit for key, _, _, unit in fields if unit and unit != "-"}
         return render([], "json", document=doc)
     table = Table(
-        title=f"Bearing {b.designation} ({b.standard})",
+        title=title,
         columns=[
             Column("quantity", "quantity", align="left"),
             Column("value", "value", digits=6, align="left"),
             Column("unit", "unit", align="left"),
         ],
         rows=[{"quantity": label, "value": v, "unit": u} for _, label, v, u in fields],
-        notes=[f"source: {b.source}", f"notes: {b.notes or '-'}"],
+        notes=[f"source: {source}", f"notes: {notes or '-'}"],
     )
     return render([table], fmt)
 

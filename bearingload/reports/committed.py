@@ -16,10 +16,12 @@ from bearingload.reports.render import Table, render, write_atomic
 
 
 def _registry() -> dict[str, Callable[[], Table]]:
+    from bearingload.reports.tables import design_table, kuzmenko2010_306_table, table_k, table_kq
     from bearingload.studies.accuracy import accuracy_table
-    from bearingload.studies.bearing_tables import kuzmenko2010_306_table
-    from bearingload.studies.method_tables import table_compare
-    from bearingload.studies.tables import table_k, table_kq
+    from bearingload.studies.compliance import fit_table
+    from bearingload.studies.kurochkin_errata import differences_table, example1_moment_table
+    from bearingload.studies.life_clearance import life_vs_clearance_table
+    from bearingload.studies.stiffness import stiffness_table
 
     return {
         "table1_k_zero_clearance": lambda: table_k(30),
@@ -30,7 +32,14 @@ def _registry() -> dict[str, Callable[[], Table]]:
         "table1_k_306_300kgf_gr100um": lambda: kuzmenko2010_306_table("k", 0.100),
         "table2_kq_306_300kgf_gr100um": lambda: kuzmenko2010_306_table("kq", 0.100),
         # exact, continuum, Stribeck and Palmgren side by side (issue 4), Table 1 conditions
-        "k_methods_zero_clearance": lambda: table_compare("k", 30),
+        "k_methods_zero_clearance": lambda: design_table("k", 30, method="all"),
+        # the papers of issue 8: Kurochkin 1973 cells that differ, seed 001 fits, seed 003 stiffness
+        "kurochkin1973_differences": differences_table,
+        "kurochkin1973_example1": example1_moment_table,
+        "compliance_fits": fit_table,
+        "stiffness_seed003": stiffness_table,
+        # ISO/TS 16281 L10r against clearance, 6205, radial and combined load (issue 11)
+        "life_vs_clearance_6205": life_vs_clearance_table,
         # work-precision of every method (issue 9): errors and iterations, no times
         "accuracy": accuracy_table,
     }

@@ -14,7 +14,7 @@ from __future__ import annotations
 from collections.abc import Iterable
 from dataclasses import dataclass
 
-KGF = 9.80665  # N; the same constant as bearingload.units.KGF (kept here to import nothing)
+from bearingload.constants import KGF
 
 
 @dataclass(frozen=True)
@@ -55,6 +55,7 @@ class Quantity:
 
 
 _UM = ("µm", 1e3)
+_MRAD = ("mrad", 1000.0 * 3.141592653589793 / 180.0)
 
 #: Every quantity a report prints, in the order columns appear.
 QUANTITIES: dict[str, Quantity] = {
@@ -81,21 +82,52 @@ QUANTITIES: dict[str, Quantity] = {
         Quantity("stiffness_radial", "radial stiffness dF_r/dx", "N/mm"),
         Quantity("approach_max", "heaviest ball approach delta_max", "mm", display=_UM),
         Quantity("stiffness_matrix", "tangent stiffness matrix", "N/mm"),
+        Quantity("stiffness_xx", "tangent stiffness K_xx", "N/mm"),
+        Quantity("stiffness_xy", "tangent stiffness K_xy", "N/mm"),
+        Quantity("stiffness_yy", "tangent stiffness K_yy", "N/mm"),
+        Quantity("q_max_ball", "ball carrying Q_max", "", None),
         Quantity("epsilon", "load-zone parameter epsilon", "-"),
         Quantity("iterations", "solver iterations", "", None),
         Quantity("relative_error", "Q_max/Q_max,exact - 1", "-", 3, display=("%", 100.0)),
         Quantity("valid", "inside the model's range", "", None),
+        Quantity("warnings", "warnings (bearingload.bearings.checks)", "", None),
+        # a cage sweep (bearingload sweep)
+        Quantity("steps", "cage positions over one pitch", "", None),
+        Quantity("ripple_per_cage_revolution", "ripple frequency", "1/rev", None),
+        Quantity("compensating_clearance", "compensating clearance G_r", "mm", display=_UM),
+        # Kurochkin's dimensionless sweep (bearingload sweep --kurochkin-T), P = K = 1
+        Quantity("kurochkin_T", "generalised parameter T (Kurochkin eq. 1.13)", "-"),
+        Quantity("F0", "F0 = x0 (K/P)^(2/3)", "-"),
+        Quantity("F0_prime", "F0' = -y0 (K/P)^(2/3)", "-"),
+        Quantity("contact_sequence", "contact sequence (loaded balls over a pitch)", "", None),
+        Quantity("exit_angle_deg", "exit angle psi", "°"),
+        Quantity("F0j_prime", "Fourier sine coefficients F0j' (j = 1-5)", "-"),
         # contact and life (a catalogue bearing)
         Quantity("p_max_inner", "max contact pressure, inner", "MPa"),
         Quantity("p_max_outer", "max contact pressure, outer", "MPa"),
-        Quantity("rating_life", "basic rating life L10 = (C/F_r)^3", "10^6 rev"),
-        Quantity("allowable_load", "allowable load C/L^(1/3)", "N", also=("kgf", 1 / KGF)),
+        Quantity("rating_life", "basic rating life L10 = (C/P)^p", "10^6 rev"),
+        Quantity("allowable_load", "allowable load C/L^(1/p)", "N", also=("kgf", 1 / KGF)),
         Quantity("revolutions", "life L of the allowable load", "10^6 rev"),
+        # combined load of a deep-groove ball bearing (models.combined, bearings.iso16281)
+        Quantity("axial_load", "axial load F_a", "N", also=("kgf", 1 / KGF)),
+        Quantity("moment", "moment M in the load plane", "N mm"),
+        Quantity("misalignment_deg", "imposed misalignment", "°", also=_MRAD),
+        Quantity("rotating", "rotating ring", "", None),
+        Quantity("free_contact_angle_deg", "free contact angle alpha_0", "°"),
+        Quantity("axial_play", "axial play", "mm", display=_UM),
+        Quantity("deflection_axial", "axial displacement from centred rings", "mm", display=_UM),
+        Quantity("tilt_deg", "tilt about the axis across the load", "°", also=_MRAD),
+        Quantity("tilt_cross_deg", "tilt about the load line", "°", also=_MRAD),
+        Quantity("contact_angle_max_deg", "largest contact angle", "°"),
+        Quantity("dynamic_rating", "dynamic load rating C_r", "N"),
+        Quantity("equivalent_load", "equivalent load P = X F_r + Y F_a (ISO 281)", "N"),
+        Quantity("reference_rating_life", "reference rating life L10r (ISO/TS 16281)", "10^6 rev"),
         # per ball
         Quantity("ball", "ball", "", None),
         Quantity("ball_angles_deg", "angle", "°"),
         Quantity("ball_approaches", "approach delta", "mm", display=_UM),
         Quantity("ball_loads", "load Q", "N"),
+        Quantity("contact_angles_deg", "contact angle", "°"),
         # studies: work-precision (bearingload accuracy) and stability (bearingload stability)
         Quantity("setting", "setting", "", None),
         Quantity("cases", "cases", "", None),
@@ -111,7 +143,7 @@ QUANTITIES: dict[str, Quantity] = {
         Quantity("batch_dependence", "batch dep.", "-", 2),
         Quantity("max_iterations", "max it.", "", None),
         Quantity("nan", "NaN/inf", "", None),
-        Quantity("warnings", "warnings", "", None),
+        Quantity("warnings_raised", "warnings raised", "", None),
         Quantity("refused", "refused", "", None),
         Quantity("failures", "failures", "", None),
         Quantity("check_value", "check", "-", 3),

@@ -38,12 +38,18 @@ class Column:
 
 @dataclass(frozen=True)
 class Table:
-    """A titled block of rows with its columns and optional notes (shown under human formats)."""
+    """A titled block of rows with its columns and optional notes (shown under human formats).
+
+    ``conditions`` are values shared by every row (the load, clearance ... a table was computed
+    under): the human formats say them in the title, csv repeats them as leading columns (so the
+    file stays one self-describing rectangular table), json carries them as fields.
+    """
 
     title: str
     columns: Sequence[Column]
     rows: Sequence[dict[str, Any]]
     notes: Sequence[str] = ()
+    conditions: Sequence[tuple[Column, Any]] = ()
 
 
 def machine_number(value: Any) -> Any:
@@ -91,14 +97,12 @@ def render(tables: Sequence[Table], fmt: str, *, document: dict[str, Any] | None
         import json
 
         return json.dumps(_machine_tree(doc), indent=2, ensure_ascii=False) + "\n"
+    if fmt == "csv" and len(tables) != 1:
+        raise ValueError("csv is one rectangular table: render one table at a time")
     blocks = []
     for t in tables:
         if fmt == "csv":
-            lines = [",".join(_csv_header(c) for c in t.columns)]
-            lines += [
-                ",".join(_csv_cell(_machine_text(r[c.key])) for c in t.columns) for r in t.rows
-            ]
-            blocks.append("\n".join(lines))
+            blocks.append(_csv(t))
             continue
         cells = [[_human(r[c.key], c.digits) for c in t.columns] for r in t.rows]
         headers = [c.label() for c in t.columns]
@@ -142,15 +146,29 @@ def _grid(cells: list[list[str]], headers: list[str], align: list[str], *, markd
     return "\n".join([line(headers), rule] + [line(row) for row in cells])
 
 
-def _table_documents(tables: Sequence[Table]) -> Any:
-    docs = [
-        {
-            "title": t.title,
-            "units": {c.key: c.unit for c in t.columns if c.unit},
-            "rows": list(t.rows),
-        }
-        for t in tables
+def _csv(t: Table) -> str:
+    """One rectangular csv table: the conditions as leading columns, then the row columns."""
+    fixed = [_csv_cell(_machine_text(v)) for _, v in t.conditions]
+    lines = [
+        ",".join([_csv_header(c) for c, _ in t.conditions] + [_csv_header(c) for c in t.columns])
     ]
+    lines += [
+        ",".join(fixed + [_csv_cell(_machine_text(r[c.key])) for c in t.columns]) for r in t.rows
+    ]
+    return "\n".join(lines)
+
+
+def _table_documents(tables: Sequence[Table]) -> Any:
+    docs = []
+    for t in tables:
+        doc: dict[str, Any] = {"title": t.title}
+        if t.conditions:
+            doc["conditions"] = {c.key: v for c, v in t.conditions}
+        units = {c.key: c.unit for c, _ in t.conditions if c.unit} | {
+            c.key: c.unit for c in t.columns if c.unit
+        }
+        doc |= {"units": units, "rows": list(t.rows)}
+        docs.append(doc)
     return docs[0] if len(docs) == 1 else docs
 
 

@@ -8,8 +8,10 @@ every quantity is named through :mod:`bearingload.reports.quantities`.
   of a catalogue bearing and the source of each value only with ``show_geometry``.
 * ``csv``: one rectangular table, one row per case, the case's inputs among the columns; with
   ``per_ball`` one row per ball instead.
-* ``json``: ``{"cases": [...], "units": {...}}`` with every quantity of every case (per-ball
-  arrays included), and ``"bearing"`` (geometry with sources) for a catalogue bearing.
+* ``json``: ``{"cases": [...], "units": {...}, "warnings": [...]}`` with every quantity of every
+  case (per-ball arrays and the case's ``warnings`` included), ``"warnings"`` the findings of all
+  cases (each once; empty when all is well), and ``"bearing"`` (geometry with sources) for a
+  catalogue bearing.
 """
 
 from __future__ import annotations
@@ -19,7 +21,12 @@ from typing import Any
 
 from bearingload.reports.quantities import QUANTITIES, units
 from bearingload.reports.render import Column, Table, render
-from bearingload.studies.loaded_bearing import LoadedCase, case_values, with_relative_errors
+from bearingload.studies.loaded_bearing import (
+    LoadedCase,
+    case_values,
+    collect_warnings,
+    with_relative_errors,
+)
 
 #: Inputs of a case (the csv columns that say which case a row is).
 INPUT_KEYS = (
@@ -203,11 +210,31 @@ def _notes(cases: Sequence[LoadedCase], records: Sequence[dict[str, Any]]) -> li
     if "relative_error" in records[0]:
         notes.append("Q_max/Q_max,exact - 1: the heaviest ball load against the exact model.")
     b = cases[0].bearing
+    if b is not None and b.kind == "roller":
+        notes.append(
+            "Cylindrical roller bearing: line contact, m = 10/9 (Palmgren); "
+            "life L10 = (C/F_r)^(10/3) and allowable load C/L^(3/10) (ISO 281, p = 10/3)."
+        )
     if b is not None:
+        notes += _set_note(b)
         src = next((p.source for p in b.provenance if p.key == "clearance"), "")
         notes.append(f"G_r: {src}.")
         notes.append("--show-geometry lists the geometry used and the source of every value.")
     return notes
+
+
+def _set_note(b: Any) -> list[str]:
+    """Where a catalogue bearing's ball (or roller) set comes from, in one line."""
+    g = b.geometry
+    if b.kind == "roller":
+        z = next(p.source for p in b.provenance if p.key == "balls")
+        return [f"Rollers: D_w and d_m exact (SKF raceway diameters); z {z.split(': ')[-1]}."]
+    if g is None or g.maker is None:
+        return []
+    how = f"{g.method}" + (f", {g.confidence} confidence" if g.method == "derived" else "")
+    others = [m for m in g.makers if m != g.maker]
+    more = f"; other makers' sets: --maker {' | '.join(others)}" if others else ""
+    return [f"Ball set: {g.maker} ({how}){more}."]
 
 
 def _balls_human(cases: Sequence[LoadedCase], records: Sequence[dict[str, Any]]) -> Table:
@@ -251,9 +278,14 @@ def _document(
             doc["ball_angles_deg"] = model.ball_angles()
             doc["ball_approaches"] = model.ball_approaches()
             doc["ball_loads"] = model.ball_loads()
+        doc["warnings"] = list(c.warnings)
         docs.append(doc)
     keys = list(dict.fromkeys(k for d in docs for k in d))
-    out: dict[str, Any] = {"cases": docs, "units": units(keys, exponent)}
+    out: dict[str, Any] = {
+        "cases": docs,
+        "units": units(keys, exponent),
+        "warnings": collect_warnings(cases),
+    }
     if cases[0].bearing is not None:
         from bearingload.reports.bearing import geometry_document
 

@@ -13,7 +13,12 @@ from typing import Any
 
 import numpy as np
 
-from bearingload.bearings.life import allowable_load, rating_life
+from bearingload.bearings.life import (
+    BALL_LIFE_EXPONENT,
+    ROLLER_LIFE_EXPONENT,
+    allowable_load,
+    rating_life,
+)
 from bearingload.bearings.resolve import ResolvedBearing
 from bearingload.models.case import Case, Result, scalar
 from bearingload.models.registry import get_method
@@ -36,11 +41,14 @@ class LoadedCase:
     p_max_inner, p_max_outer : float or None
         Maximum Hertz contact pressure at the heaviest ball load (known geometry only). [MPa]
     rating_life : float or None
-        Basic rating life ``(C/F_r)^3`` (known C only). [10^6 rev]
+        Basic rating life ``(C/P)^p`` (p = 3 balls, 10/3 rollers; known C only). [10^6 rev]
     allowable_load : float or None
         ``C/(L/10^6)^(1/3)`` for ``revolutions`` (known C only). [N]
     revolutions : float or None
         The life L of the allowable load. [rev]
+    warnings : tuple of str
+        Findings of :func:`bearingload.bearings.checks.case_warnings` (static safety, load above
+        C0, contact pressure, one loaded element, clearance range); empty when all is well.
     """
 
     result: Result
@@ -50,6 +58,7 @@ class LoadedCase:
     rating_life: float | None = None
     allowable_load: float | None = None
     revolutions: float | None = None
+    warnings: tuple[str, ...] = ()
 
     @property
     def clearance_pick(self) -> str | None:
@@ -69,8 +78,14 @@ def solve_ring(
 
     Units: N, N/mm^m, mm (G_r), degrees. The inputs are checked once.
     """
+    from bearingload.bearings.checks import element_warnings
+
     case = Case.of(balls, load, stiffness, clearance, cage_angle, exponent)
-    return [LoadedCase(get_method(m).run(case)) for m in methods]
+    out = []
+    for m in methods:
+        r = get_method(m).run(case)
+        out.append(LoadedCase(r, warnings=tuple(element_warnings(r, balls))))
+    return out
 
 
 def solve_bearing(
@@ -103,27 +118,45 @@ def solve_bearing(
     """
     out = []
     for b in bearings:
-        case = Case.of(b.balls, load, b.stiffness, b.clearance, cage_angle, 1.5)
+        case = Case.of(b.balls, load, b.stiffness, b.clearance, cage_angle, b.exponent)
         for m in methods:
             out.append(_with_bearing(get_method(m).run(case), b, load, revolutions))
     return out
 
 
 def _with_bearing(r: Result, b: ResolvedBearing, load: float, revolutions: float) -> LoadedCase:
-    p_i = p_o = None
-    if b.has_geometry:
-        from bearingload.contact.hertz import ball_contacts
+    from bearingload.bearings.checks import case_warnings, max_contact_pressures
 
-        assert b.ball_diameter and b.pitch_diameter and b.f_i and b.f_o
-        c = ball_contacts(
-            float(r.q_max), b.ball_diameter, b.pitch_diameter, b.f_i, b.f_o, b.modulus, b.poisson
-        )
-        p_i, p_o = float(c.inner.p_max), float(c.outer.p_max)
+    pressures = max_contact_pressures(b, float(r.q_max))  # balls: Hertz; rollers: line contact
+    p_i, p_o = pressures if pressures is not None else (None, None)
     life = allow = None
     if b.C:
-        life = float(rating_life(b.C, load))
-        allow = float(allowable_load(b.C, revolutions / 1e6))
-    return LoadedCase(r, b, p_i, p_o, life, allow, revolutions if b.C else None)
+        p = ROLLER_LIFE_EXPONENT if b.kind == "roller" else BALL_LIFE_EXPONENT
+        life = float(rating_life(b.C, load, p))
+        allow = float(allowable_load(b.C, revolutions / 1e6, p))
+    warnings = tuple(case_warnings(b, load, r))
+    return LoadedCase(r, b, p_i, p_o, life, allow, revolutions if b.C else None, warnings)
+
+
+def collect_warnings(cases: Sequence[LoadedCase]) -> list[str]:
+    """The warnings of several cases (models, clearances), each once, in order.
+
+    A warning every case shares is given as it is; one that only some cases carry is prefixed
+    with the case's method and clearance pick (``"palmgren, G_r max: ..."``).
+    """
+    seen: list[str] = []
+    methods = len({c.result.method for c in cases}) > 1
+    picks = len({c.clearance_pick for c in cases}) > 1
+    for c in cases:
+        for w in c.warnings:
+            if not all(w in other.warnings for other in cases):
+                parts = ([c.result.method] if methods else []) + (
+                    [f"G_r {c.clearance_pick}"] if picks else []
+                )
+                w = f"{', '.join(parts)}: {w}"
+            if w not in seen:
+                seen.append(w)
+    return seen
 
 
 def case_values(lc: LoadedCase) -> dict[str, Any]:

@@ -5,7 +5,7 @@ balls, the cage angle ...) through its extreme range in one or more series. Per 
 
 * ``cases``: cases run; ``refused``: cases refused up front with an ``InputError`` (allowed only
   where the family probes the edge of the domain); ``failures``: any other exception;
-* ``nan``: cases with a NaN or infinity in any output; ``warnings``: numpy/Python warnings raised;
+* ``nan``: cases with a NaN or infinity in any output; ``warnings_raised``: numpy/Python warnings;
 * ``max_residual``: the largest equilibrium residual, recomputed here from the returned ball loads
   and angles (not the solver's own number): ``|sum_i Q_i (cos phi_i, sin phi_i) - (F_r, 0)|``
   relative to ``max(F_r, sum_i Q_i)`` (under preload the ball forces dwarf the load and cancel;
@@ -256,7 +256,7 @@ def _jump(series: Series, out: Outcome) -> tuple[float, float]:
 def _run_family(family: Family, size: str) -> tuple[dict[str, Any], list[Outcome]]:
     solver = SOLVERS[family.kind]
     all_series = family.build(size)
-    row: dict[str, Any] = {"cases": 0, "refused": 0, "failures": 0, "nan": 0, "warnings": 0}
+    row: dict[str, Any] = {"cases": 0, "refused": 0, "failures": 0, "nan": 0, "warnings_raised": 0}
     residual, jump, jump_at, batch, iterations = 0.0, 0.0, 0.0, 0.0, 0
     outcomes = []
     for series in all_series:
@@ -268,7 +268,7 @@ def _run_family(family: Family, size: str) -> tuple[dict[str, Any], list[Outcome
                 batch = max(batch, _relative_difference(out.compare, single.compare))
             except Exception:  # noqa: BLE001 - a batch that raises: count its cases one by one
                 out, _ = _one_by_one(solver, series)
-        row["warnings"] += len(caught)
+        row["warnings_raised"] += len(caught)
         n = series.parameter.size
         row["cases"] += n
         row["refused"] += out.refused
@@ -686,7 +686,7 @@ def _column(key: str, header: str | None = None) -> Column:
     return Column(key, header or q.label, q.unit, q.digits, "left" if text else "right")
 
 
-_COUNTS = ("cases", "max_iterations", "nan", "warnings", "refused", "failures")
+_COUNTS = ("cases", "max_iterations", "nan", "warnings_raised", "refused", "failures")
 COLUMNS = tuple(
     _column(key)
     for key in (
@@ -699,7 +699,7 @@ COLUMNS = tuple(
         "batch_dependence",
         "max_iterations",
         "nan",
-        "warnings",
+        "warnings_raised",
         "refused",
         "failures",
         "check_value",

@@ -1,30 +1,63 @@
-"""The design tables: rows and columns for Table 1 (k) and Table 2.2 (K_Q), for any conditions.
+"""The design tables' numbers: every registered model over z = 1..z_max under one set of conditions.
 
 Table 1 of Kuzmenko (2010) lists ``k = Q_max/F_r`` and the number of loaded balls ``n`` for
 z = 1-30 at zero clearance with a ball under the load; Table 2.2 of Kuzmenko & Sabadash (2014)
-lists ``K_Q = k z/2`` for the same cases. Both are built here from the exact equilibrium engine,
-under the paper's conditions by default or under any load, stiffness, clearance and cage angle.
+lists ``K_Q = k z/2`` for the same cases. :func:`over_z` computes them (and the other models'
+answers) under the papers' conditions by default or under any load, stiffness, clearance and cage
+angle; :mod:`bearingload.reports.tables` lays them out.
+
+The bearing-306 conditions of Kuzmenko (2010, §3): F_r = 300 kgf, G_r = 20 µm (Delta = 10 µm per
+side) and 100 µm (worn, Delta = 50 µm), the paper's geometry D_w 12.3 mm, d_m 51 mm,
+f_i = f_o = 0.515 (groove radius 1.03 D_w/2) and E = 2.1e4 kgf/mm^2, nu = 0.3 -- but the exact
+Hertz stiffness of that geometry (about 4.0e5 N/mm^1.5), not the paper's 4700 kgf/mm^1.5 (see
+:func:`bearingload.contact.hertz.kuzmenko2010_ball_constant`).
 """
 
 from __future__ import annotations
 
+from collections.abc import Sequence
 from dataclasses import dataclass
+from typing import Any
 
 import numpy as np
 
-from bearingload.models.equilibrium import LoadDistribution, solve
-from bearingload.reports.render import Column, Table
+from bearingload.bearings.resolve import ResolvedBearing, resolve_bearing
+from bearingload.models.case import Case, Result
+from bearingload.models.registry import get_method
+from bearingload.units import KGF
+
+#: Young's modulus of Kuzmenko (2010), §3.4: 2.1e4 kgf/mm^2. [MPa]
+KUZMENKO2010_MODULUS = 2.1e4 * KGF
+#: Radial load of the worked example of Kuzmenko (2010), §3.3: 300 kgf. [N]
+KUZMENKO2010_LOAD = 300.0 * KGF
 
 
 @dataclass(frozen=True)
 class Conditions:
-    """The conditions a table is computed under (internal units)."""
+    """The conditions a table is computed under.
 
-    load: float = 1000.0  # [N]
-    stiffness: float = 1.0e5  # [N/mm^m]
-    clearance: float = 0.0  # [mm], G_r total play
-    cage_angle: float | str = 0.0  # [°] or "half"
-    exponent: float = 1.5  # [-]
+    Attributes
+    ----------
+    load : float
+        Radial load F_r. [N]
+    stiffness : float
+        Ball stiffness K. [N/mm^m]
+    clearance : float
+        Radial internal clearance G_r (total play). [mm]
+    cage_angle : float or "half"
+        Angle of ball 1 from the load line [°], or half a pitch (180/z) for every z.
+    exponent : float
+        Load-deflection exponent m. [-]
+    bearing : ResolvedBearing or None
+        The bearing whose ball and raceways give K and G_r, if any.
+    """
+
+    load: float = 1000.0
+    stiffness: float = 1.0e5
+    clearance: float = 0.0
+    cage_angle: float | str = 0.0
+    exponent: float = 1.5
+    bearing: ResolvedBearing | None = None
 
     def describe(self) -> str:
         if self.clearance == 0:
@@ -44,6 +77,18 @@ class Conditions:
         return text
 
 
+def for_bearing(bearing: ResolvedBearing, load: float, cage_angle: float | str = 0.0) -> Conditions:
+    """The conditions of a bearing's ball and raceways: its Hertz K and its clearance G_r."""
+    return Conditions(load, bearing.stiffness, bearing.clearance, cage_angle, 1.5, bearing)
+
+
+def kuzmenko2010_306(clearance: float) -> Conditions:
+    """Bearing 306 under the conditions of Kuzmenko (2010) §3: catalogue geometry (= the
+    paper's), E = 2.1e4 kgf/mm^2, nu = 0.3, exact Hertz stiffness, 300 kgf, G_r [mm]."""
+    b = resolve_bearing("306", modulus=KUZMENKO2010_MODULUS, poisson=0.3, clearance=clearance)
+    return for_bearing(b, KUZMENKO2010_LOAD)
+
+
 def balls_and_angles(z_max: int, cage_angle: float | str) -> tuple[np.ndarray, np.ndarray]:
     """z = 1..z_max and the cage angle of each [°], leaving out z = 1-2 where no equilibrium exists.
 
@@ -60,61 +105,23 @@ def balls_and_angles(z_max: int, cage_angle: float | str) -> tuple[np.ndarray, n
     return z, np.full(z.shape, angle)
 
 
-def omitted_note(z_max: int, cage_angle: float | str) -> list[str]:
-    """A note naming the z left out by :func:`balls_and_angles`, if any."""
+def omitted(z_max: int, cage_angle: float | str) -> list[int]:
+    """The z of 1..z_max that :func:`balls_and_angles` leaves out."""
     z, _ = balls_and_angles(z_max, cage_angle)
-    missing = sorted(set(range(1, min(z_max, 2) + 1)) - {int(v) for v in z})
-    if not missing:
-        return []
-    listed = " and ".join(str(v) for v in missing)
-    return [
-        f"z = {listed} left out: with one or two balls equilibrium needs a ball on the load line "
-        "(cage angle 0)."
-    ]
+    return sorted(set(range(1, min(z_max, 2) + 1)) - {int(v) for v in z})
 
 
-def distribution_over_z(z_max: int, cond: Conditions) -> LoadDistribution:
-    """Solve the cases z = 1..z_max under ``cond`` in one vectorised call."""
+def over_z(
+    z_max: int, cond: Conditions, methods: Sequence[str] = ("exact",)
+) -> tuple[np.ndarray, dict[str, Result]]:
+    """Every model of ``methods`` (and always ``exact``, which counts the loaded balls) for
+    z = 1..z_max under ``cond``, each in one vectorised call on one checked case."""
     z, angle = balls_and_angles(z_max, cond.cage_angle)
-    return solve(z, cond.load, cond.stiffness, cond.clearance, angle, cond.exponent)
+    case = Case.of(z, cond.load, cond.stiffness, cond.clearance, angle, cond.exponent)
+    names = list(dict.fromkeys(["exact", *methods]))
+    return z, {name: get_method(name).run(case) for name in names}
 
 
-def _exact_table(
-    key: str, digits: int, title: str, note: str, z_max: int, cond: Conditions
-) -> Table:
-    """One column ``key`` (an attribute of the solution: ``k`` or ``K_Q``) and ``n`` over z."""
-    r = distribution_over_z(z_max, cond)
-    rows = [
-        {"z": int(z), "n": int(n), key: float(v)}
-        for z, n, v in zip(r.balls, r.loaded_balls, getattr(r, key), strict=True)
-    ]
-    return Table(
-        title=f"{title} (exact discrete model; {cond.describe()})",
-        columns=[Column("z", "z"), Column("n", "n"), Column(key, key, "-", digits)],
-        rows=rows,
-        notes=[note, *omitted_note(z_max, cond.cage_angle)],
-    )
-
-
-def table_k(z_max: int = 30, cond: Conditions | None = None) -> Table:
-    """Table 1 of Kuzmenko (2010): ``k = Q_max/F_r`` and loaded balls ``n`` for z = 1..z_max."""
-    return _exact_table(
-        "k",
-        4,
-        "Load factor k = Q_max/F_r",
-        "z: balls; n: balls carrying load; k: heaviest ball load over the radial load.",
-        z_max,
-        cond or Conditions(),
-    )
-
-
-def table_kq(z_max: int = 30, cond: Conditions | None = None) -> Table:
-    """Table 2.2 of Kuzmenko & Sabadash (2014): ``K_Q = Q_max/Q_mean = k z/2`` for z = 1..z_max."""
-    return _exact_table(
-        "K_Q",
-        5,
-        "Load-concentration factor K_Q = k z/2",
-        "K_Q: heaviest ball load over the mean load F_r/(z/2).",
-        z_max,
-        cond or Conditions(),
-    )
+def column_of(result: Result, key: str, z: np.ndarray) -> Any:
+    """``result``'s quantity ``key`` as an array over ``z``."""
+    return np.broadcast_to(np.asarray(getattr(result, key)), z.shape)

@@ -1,0 +1,189 @@
+"""Checks of a solved case against what the bearing and the model support: warnings, not errors.
+
+:func:`case_warnings` returns one sentence per finding (an empty list when all is well):
+
+* **static safety factor** s0 = C0/P0 below :data:`S0_MIN` = 1. ISO 76:2006 defines s0 as the
+  ratio of the basic static load rating to the static equivalent load (3.6); the static
+  equivalent radial load of a radial bearing under a purely radial load is P0r = F_r (3.4 and
+  the P0r formula, X0 = 1 when F_a = 0). Below 1 the permanent deformation of rolling element
+  and raceway exceeds the 0.0001 D_w the rating stands for (3.2, note 2).
+* **load above C0**: F_r > C0, the load exceeds the basic static radial load rating itself.
+* **maximum contact pressure** above the pressure that defines C0r in ISO 76:2006 3.2:
+  :data:`P_MAX_BALL` = 4200 MPa for ball bearings (other than self-aligning) and
+  :data:`P_MAX_ROLLER` = 4000 MPa for roller bearings, at the centre of the most heavily loaded
+  contact (computed here by exact Hertz theory for balls and Johnson's line contact for rollers).
+* **one rolling element carries the load**: the solution then rests on a single contact, the
+  model's distribution over the ring means little and a small change of clearance or cage angle
+  changes the answer a lot.
+* **clearance outside the plausible range** of a deep groove ball bearing of this bore: above the
+  C5 maximum of ISO 5753-1 (the largest class there is), or a preload (negative G_r) deeper than
+  :data:`PRELOAD_BOUND_FACTOR` times that C5 maximum (a bound of this project, not of a standard:
+  interference fits and preloading springs take away a few tens of micrometres at these bores,
+  not more than the widest clearance class spans). Positive clearances below C2 min (0 to 3 µm
+  at these bores) are not flagged.
+
+Every threshold is a module constant; the CLI prints each finding as a ``Warning: ...`` line on
+stderr and JSON carries them as ``warnings``.
+
+>>> from bearingload.bearings.resolve import resolve_bearing
+>>> from bearingload.models.equilibrium import solve
+>>> b = resolve_bearing("6205", clearance="C3")
+>>> case_warnings(b, 5000.0, solve(b.balls, 5000.0, b.stiffness, b.clearance))
+[]
+"""
+
+from __future__ import annotations
+
+from typing import Any
+
+from bearingload.bearings.resolve import ResolvedBearing
+from bearingload.errors import InputError
+
+#: Smallest acceptable static safety factor s0 = C0/P0 (ISO 76:2006 3.6). [-]
+S0_MIN = 1.0
+#: Contact pressure defining C0r of ball bearings other than self-aligning (ISO 76:2006 3.2). [MPa]
+P_MAX_BALL = 4200.0
+#: Contact pressure defining C0r of roller bearings (ISO 76:2006 3.2). [MPa]
+P_MAX_ROLLER = 4000.0
+#: Deepest preload accepted without a warning, as a multiple of the bore's C5 maximum. [-]
+PRELOAD_BOUND_FACTOR = 1.0
+
+
+def max_contact_pressures(bearing: ResolvedBearing, load: float) -> tuple[float, float] | None:
+    """Maximum pressures of the inner and outer contact of a rolling element under ``load``.
+
+    Parameters
+    ----------
+    bearing : ResolvedBearing
+        Balls need D_w, d_m, f_i, f_o; rollers D_w, d_m, L_we.
+    load : float
+        Rolling-element load Q >= 0. [N]
+
+    Returns
+    -------
+    (float, float) or None
+        (p_inner, p_outer) [MPa]; None when the geometry is not known (stiffness given by hand).
+    """
+    if bearing.kind == "roller":
+        if bearing.roller_length is None or bearing.ball_diameter is None:
+            return None
+        from bearingload.bearings.rollers import line_contact_pressure
+
+        p_i, p_o = line_contact_pressure(
+            load,
+            bearing.roller_length,
+            bearing.ball_diameter,
+            bearing.pitch_diameter or 0.0,
+            bearing.modulus,
+            bearing.poisson,
+        )
+        return float(p_i), float(p_o)
+    dw, dm, fi, fo = bearing.ball_diameter, bearing.pitch_diameter, bearing.f_i, bearing.f_o
+    if dw is None or dm is None or fi is None or fo is None:
+        return None
+    from bearingload.contact.hertz import ball_contacts
+
+    c = ball_contacts(float(load), dw, dm, fi, fo, bearing.modulus, bearing.poisson)
+    return float(c.inner.p_max), float(c.outer.p_max)
+
+
+def _clearance_findings(bearing: ResolvedBearing) -> list[str]:
+    if bearing.kind != "ball" or bearing.geometry is None:
+        return []
+    from bearingload.bearings.clearance import clearance_range
+
+    bore = bearing.geometry.d
+    try:
+        c5_max = clearance_range(bore, "C5")[1]
+    except InputError:  # bore outside the ISO 5753-1 table
+        return []
+    g_r = bearing.clearance
+    um = 1e3
+    if g_r > c5_max:
+        return [
+            f"radial clearance G_r = {g_r * um:.4g} µm is above the largest class of ISO 5753-1 "
+            f"(C5 max {c5_max * um:.4g} µm at d = {bore:g} mm): no deep groove ball bearing of "
+            "this bore has so much play"
+        ]
+    bound = PRELOAD_BOUND_FACTOR * c5_max
+    if g_r < -bound:
+        return [
+            f"preload G_r = {g_r * um:.4g} µm is deeper than {bound * um:.4g} µm (the C5 "
+            f"maximum of ISO 5753-1 at d = {bore:g} mm, this package's bound): check the fits"
+        ]
+    return []
+
+
+def case_warnings(bearing: ResolvedBearing, load: float, result: Any) -> list[str]:
+    """Findings on one solved case, one sentence each; empty when all is well.
+
+    Parameters
+    ----------
+    bearing : ResolvedBearing
+        The bearing as solved (from :func:`bearingload.bearings.resolve.resolve_bearing`).
+    load : float
+        Radial load F_r. [N]
+    result : LoadDistribution or Result
+        One case of :func:`bearingload.models.equilibrium.solve` or a registered model's
+        :class:`bearingload.models.case.Result` (``q_max`` [N] and ``loaded_balls`` are read).
+
+    Returns
+    -------
+    list of str
+        Thresholds and their sources in the module text.
+    """
+    out: list[str] = []
+    element = "roller" if bearing.kind == "roller" else "ball"
+    c0 = bearing.C0
+    if c0:
+        s0 = c0 / load
+        if s0 < S0_MIN:
+            out.append(
+                f"static safety factor s0 = C0/P0 = {s0:.3g} is below {S0_MIN:g} (ISO 76: "
+                f"P0 = F_r = {load:.6g} N, C0 = {c0:.6g} N): the raceways deform permanently"
+            )
+        if load > c0:
+            out.append(
+                f"the load F_r = {load:.6g} N is above the basic static rating C0 = {c0:.6g} N"
+            )
+    q_max = float(result.q_max)
+    pressures = max_contact_pressures(bearing, q_max)
+    if pressures is not None:
+        limit = P_MAX_ROLLER if bearing.kind == "roller" else P_MAX_BALL
+        p, where = max(zip(pressures, ("inner", "outer"), strict=True))
+        if p > limit:
+            out.append(
+                f"maximum contact pressure {p:.5g} MPa ({where} contact, heaviest {element} "
+                f"{q_max:.6g} N) is above {limit:g} MPa, the pressure of the static rating of "
+                f"{element} bearings (ISO 76)"
+            )
+    out += element_warnings(result, bearing.balls, element)
+    out += _clearance_findings(bearing)
+    return out
+
+
+def element_warnings(result: Any, balls: int, element: str = "ball") -> list[str]:
+    """The finding that needs no bearing data: only one of several elements carries the load.
+
+    Parameters
+    ----------
+    result : LoadDistribution or Result
+        One solved case (``loaded_balls`` is read; None, as the closed-form methods give,
+        means no finding).
+    balls : int
+        Number of rolling elements z.
+    element : str
+        ``"ball"`` or ``"roller"``, for the wording.
+
+    Returns
+    -------
+    list of str
+        Empty, or the one sentence.
+    """
+    loaded = getattr(result, "loaded_balls", None)
+    if loaded is not None and int(loaded) == 1 and balls > 1:
+        return [
+            f"only one {element} carries the load: the result hangs on a single contact "
+            "(large clearance or few elements); check the clearance"
+        ]
+    return []

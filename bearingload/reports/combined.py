@@ -1,0 +1,214 @@
+"""The report of ``bearingload solve`` under a combined load: one or more cases in every format.
+
+Cases come from :mod:`bearingload.studies.combined_bearing` (one per clearance); every quantity is
+named through :mod:`bearingload.reports.quantities`. Same layout as the radial report
+(:mod:`bearingload.reports.solve`):
+
+* ``table`` / ``markdown``: the answer first (Q_max, contact angles, displacements and tilt, the
+  lives), one column per case; then every ball's angle, contact angle, approach and load; the
+  geometry and the source of each value only with ``show_geometry``.
+* ``csv``: one row per case (inputs among the columns); with ``per_ball`` one row per ball.
+* ``json``: ``{"cases": [...], "units": {...}, "bearing": {...}}``; every case carries the
+  per-ball arrays ``ball_angles_deg``, ``contact_angles_deg``, ``ball_approaches``, ``ball_loads``.
+"""
+
+from __future__ import annotations
+
+from collections.abc import Sequence
+from typing import Any
+
+from bearingload.reports.quantities import QUANTITIES, units
+from bearingload.reports.render import Column, Table, render
+from bearingload.reports.solve import column
+from bearingload.studies.combined_bearing import CombinedCase, combined_values
+
+INPUT_KEYS = (
+    "bearing",
+    "method",
+    "balls",
+    "load",
+    "axial_load",
+    "moment",
+    "misalignment_deg",
+    "rotating",
+    "stiffness",
+    "clearance",
+    "clearance_pick",
+    "cage_angle_deg",
+)
+ANSWER_KEYS = (
+    "q_max",
+    "loaded_balls",
+    "contact_angle_max_deg",
+    "free_contact_angle_deg",
+    "axial_play",
+    "x",
+    "y",
+    "deflection_axial",
+    "tilt_deg",
+    "tilt_cross_deg",
+    "moment",
+    "reference_rating_life",
+    "dynamic_rating",
+    "equivalent_load",
+    "rating_life",
+)
+PER_BALL_KEYS = (
+    "ball",
+    "ball_angles_deg",
+    "contact_angles_deg",
+    "ball_approaches",
+    "ball_loads",
+)
+NOTES = (
+    "Outer ring fixed; F_r along the load line (ball angles from it), F_a towards +axial.",
+    "Axial displacement from the centred rings (half the axial play included, as MASTA "
+    "reports it). Without --moment or --misalignment the inner ring is free to tilt (M = 0).",
+    "Ball stiffness: exact Hertz at each ball's contact angle (unless --stiffness is given).",
+    "L10r: ISO/TS 16281:2008, 4.3 (Q_ci, Q_ce from C_r; cubic mean on the rotating ring, "
+    "exponent 10/3 on the stationary one). L10: ISO 281:2007, 5.2-5.3, P = X F_r + Y F_a.",
+)
+
+
+def combined_report(
+    cases: Sequence[CombinedCase], fmt: str, *, per_ball: bool = False, show_geometry: bool = False
+) -> str:
+    """Render solved combined-load cases in ``fmt`` (table, csv, markdown, json)."""
+    records = [combined_values(c) for c in cases]
+    if fmt == "json":
+        return render([], "json", document=_document(cases, records))
+    if fmt == "csv":
+        table = _per_ball_table(cases, records) if per_ball else _case_table(records)
+        return render([table], "csv")
+    tables = []
+    if show_geometry:
+        from bearingload.reports.bearing import geometry_table
+
+        tables.append(geometry_table(cases[0].bearing))
+    tables += [_summary(records), _balls_human(cases, records)]
+    return render(tables, fmt)
+
+
+def _present(records: Sequence[dict[str, Any]], keys: Sequence[str]) -> list[str]:
+    return [k for k in keys if any(r.get(k) is not None for r in records)]
+
+
+def _blank(record: dict[str, Any], keys: Sequence[str]) -> dict[str, Any]:
+    return {k: "" if record.get(k) is None else record[k] for k in keys}
+
+
+def _case_table(records: Sequence[dict[str, Any]]) -> Table:
+    keys = _present(records, INPUT_KEYS + tuple(k for k in ANSWER_KEYS if k != "moment"))
+    return Table("cases", [column(k, 1.5) for k in keys], [_blank(r, keys) for r in records])
+
+
+def _balls(c: CombinedCase) -> list[tuple[float, float, float, float]]:
+    r = c.result
+    return list(
+        zip(
+            r.ball_angles.tolist(),
+            r.contact_angles.tolist(),
+            r.ball_approaches.tolist(),
+            r.ball_loads.tolist(),
+            strict=True,
+        )
+    )
+
+
+def _per_ball_table(cases: Sequence[CombinedCase], records: Sequence[dict[str, Any]]) -> Table:
+    inputs = _present(records, INPUT_KEYS)
+    rows = []
+    for c, r in zip(cases, records, strict=True):
+        for i, values in enumerate(_balls(c)):
+            per = dict(zip(PER_BALL_KEYS[1:], values, strict=True))
+            rows.append(_blank(r, inputs) | {"ball": i + 1} | per)
+    return Table("balls", [column(k, 1.5) for k in inputs + list(PER_BALL_KEYS)], rows)
+
+
+def _summary(records: Sequence[dict[str, Any]]) -> Table:
+    keys = _present(records, ANSWER_KEYS)
+    if len({r["clearance"] for r in records}) > 1:
+        keys.insert(0, "clearance")
+    heads = ["value"] if len(records) == 1 else [f"G_r {r['clearance_pick']}" for r in records]
+    rows = []
+    for key in keys:
+        q = QUANTITIES[key]
+        for unit, factor in [q.shown()] + ([q.also] if q.also else []):
+            row: dict[str, Any] = {"quantity": q.label, "unit": unit or ""}
+            for h, r in zip(heads, records, strict=True):
+                v = r.get(key)
+                row[h] = "-" if v is None else (v * factor if q.digits else v)
+            rows.append(row)
+    columns = [Column("quantity", "quantity", align="left")]
+    columns += [Column(h, h, digits=6) for h in heads]
+    columns.append(Column("unit", "unit", align="left"))
+    return Table(_title(records), columns, rows, list(NOTES))
+
+
+def _title(records: Sequence[dict[str, Any]]) -> str:
+    r = records[0]
+    who = f"Bearing {r['bearing']}, " if r["bearing"] != "given by hand" else ""
+    clear = (
+        f"G_r = {r['clearance'] * 1e3:.6g} µm"
+        if len({x["clearance"] for x in records}) == 1
+        else "G_r: class range"
+    )
+    return (
+        f"{who}z = {r['balls']}, F_r = {r['load']:.6g} N, F_a = {r['axial_load']:.6g} N, "
+        f"{clear}, cage angle {r['cage_angle_deg']:.6g}°, {r['rotating']} ring rotating"
+    )
+
+
+def _balls_human(cases: Sequence[CombinedCase], records: Sequence[dict[str, Any]]) -> Table:
+    per = [_balls(c) for c in cases]
+    columns = [column("ball"), Column("angle", "angle", "°", 6)]
+    one = len(cases) == 1
+    if one:
+        columns += [
+            Column("alpha", "contact angle", "°", 6),
+            Column("approach", "approach delta (< 0: gap)", "µm", 6),
+            Column("q", "load Q", "N", 6),
+        ]
+    else:
+        columns += [
+            Column(f"a{i}", f"contact angle at G_r {r['clearance_pick']}", "°", 6)
+            for i, r in enumerate(records)
+        ]
+        columns += [
+            Column(f"q{i}", f"Q at G_r {r['clearance_pick']}", "N", 6)
+            for i, r in enumerate(records)
+        ]
+    rows = []
+    for j, (angle, alpha, approach, load) in enumerate(per[0]):
+        row: dict[str, Any] = {"ball": j + 1, "angle": angle}
+        if one:
+            row |= {"alpha": alpha, "approach": approach * 1e3, "q": load}
+        else:
+            row |= {f"a{i}": balls[j][1] for i, balls in enumerate(per)}
+            row |= {f"q{i}": balls[j][3] for i, balls in enumerate(per)}
+        rows.append(row)
+    return Table("Ball loads (ball 1 at the cage angle; angles from the load line)", columns, rows)
+
+
+def _document(cases: Sequence[CombinedCase], records: Sequence[dict[str, Any]]) -> dict[str, Any]:
+    from bearingload.reports.bearing import geometry_document
+
+    docs = []
+    for c, r in zip(cases, records, strict=True):
+        res = c.result
+        docs.append(
+            dict(r)
+            | {
+                "model": "3-D ring equilibrium, deep-groove ball bearing (ISO/TS 16281)",
+                "ball_angles_deg": res.ball_angles,
+                "contact_angles_deg": res.contact_angles,
+                "ball_approaches": res.ball_approaches,
+                "ball_loads": res.ball_loads,
+            }
+        )
+    keys = list(dict.fromkeys(k for d in docs for k in d))
+    return {
+        "cases": docs,
+        "units": units(keys, 1.5),
+        "bearing": geometry_document(cases[0].bearing),
+    }

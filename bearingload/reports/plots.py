@@ -1,0 +1,118 @@
+"""Figures (optional extra ``bearingload[plot]``): a cage sweep, and the ball loads around a ring.
+
+matplotlib is imported inside these functions only, with its Agg (file) backend and no pyplot,
+so nothing global changes and a terminal calculation without ``--plot`` never pays for it.
+Each function returns the Figure, so its data can be checked; :func:`save_png` writes it whole
+or not at all.
+"""
+
+from __future__ import annotations
+
+import os
+from collections.abc import Sequence
+from typing import Any
+
+import numpy as np
+
+from bearingload.errors import BearingloadError
+
+INSTALL_HINT = "--plot needs matplotlib: pip install 'bearingload[plot]'"
+
+
+class PlotUnavailable(BearingloadError):
+    """matplotlib is not installed."""
+
+    def __init__(self) -> None:
+        super().__init__(INSTALL_HINT)
+
+
+def require_matplotlib() -> None:
+    """Raise :class:`PlotUnavailable` unless matplotlib can be imported."""
+    try:
+        import matplotlib  # noqa: F401
+    except ImportError as exc:
+        raise PlotUnavailable() from exc
+
+
+def _figure(width: float, height: float) -> Any:
+    require_matplotlib()
+    from matplotlib.figure import Figure
+
+    return Figure(figsize=(width, height), dpi=100, layout="constrained")
+
+
+def sweep_figure(s: Any) -> Any:
+    """x, y [µm], Q_max [N] and radial stiffness [N/mm] over the cage angle [°] of a CageSweep.
+
+    One panel each, in that order; each panel's one line holds the sweep's values.
+    """
+    fig = _figure(7.0, 8.0)
+    axes = fig.subplots(4, 1, sharex=True)
+    angle = np.asarray(s.cage_angle)
+    panels = [
+        (s.x * 1e3, "x, along load [µm]", "ring displacement along the load"),
+        (s.y * 1e3, "y, across load [µm]", "ring displacement across the load"),
+        (s.q_max, "Q_max [N]", "heaviest ball load"),
+        (s.stiffness_radial, "K_r [N/mm]", "radial stiffness dF_r/dx (F_y held 0)"),
+    ]
+    for ax, (values, label, title) in zip(axes, panels, strict=True):
+        ax.plot(angle, values, marker=".")
+        ax.set_ylabel(label)
+        ax.set_title(title, fontsize="small", loc="left")
+        ax.grid(True, alpha=0.3)
+    axes[-1].set_xlabel("cage angle (ball 1 from the load line) [°]")
+    for a in axes:
+        a.ticklabel_format(axis="y", useOffset=False)
+    fig.suptitle(
+        f"Cage sweep over one pitch: z = {s.balls}, F_r = {s.load:.4g} N, "
+        f"K = {s.stiffness:.4g} N/mm^{s.exponent:g}, G_r = {s.clearance * 1e3:.4g} µm",
+        fontsize="medium",
+    )
+    return fig
+
+
+def ball_loads_figure(cases: Sequence[tuple[str, Any]], title: str) -> Any:
+    """Ball loads [N] around the ring, one bar per ball at its angle [°], for solved cases.
+
+    ``cases``: (label, one-case LoadDistribution) pairs, drawn side by side (e.g. the clearance
+    class at its min, mean and max). The load line points down, as in the papers' figures.
+    """
+    fig = _figure(6.5, 6.5)
+    ax = fig.add_subplot(projection="polar")
+    ax.set_theta_zero_location("S")
+    n = len(cases)
+    for j, (label, r) in enumerate(cases):
+        z = int(r.balls)
+        width = np.deg2rad(360.0 / z) * 0.8 / n
+        shift = (j - (n - 1) / 2) * width
+        angles = np.deg2rad(r.ball_angles()) + shift
+        ax.bar(angles, r.ball_loads(), width=width, label=label, alpha=0.8)
+    ax.set_xlabel("ball angle from the load line [°]; load F_r along 0° (down)")
+    ax.set_ylabel("ball load Q [N]", labelpad=28)
+    import textwrap
+
+    ax.set_title("\n".join(textwrap.wrap(title, 70)), fontsize="small")
+    if n > 1 or cases[0][0]:
+        ax.legend(loc="upper center", bbox_to_anchor=(0.5, -0.1), ncol=n, fontsize="small")
+    return fig
+
+
+def save_png(fig: Any, path: str) -> None:
+    """Write ``fig`` as PNG to ``path`` whole or not at all (temporary file, then rename)."""
+    import tempfile
+
+    real = os.path.realpath(path)
+    if os.path.isdir(real):
+        raise IsADirectoryError(21, "is a directory", path)
+    fd, tmp = tempfile.mkstemp(prefix=".bearingload-", suffix=".png", dir=os.path.dirname(real))
+    try:
+        with os.fdopen(fd, "wb") as fh:
+            fig.savefig(fh, format="png")
+        umask = os.umask(0)
+        os.umask(umask)
+        os.chmod(tmp, 0o666 & ~umask)
+        os.replace(tmp, real)
+    except BaseException:
+        if os.path.exists(tmp):
+            os.unlink(tmp)
+        raise

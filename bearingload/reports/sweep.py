@@ -1,0 +1,203 @@
+"""The report of a cage sweep: a summary over one pitch and one row per cage position.
+
+Human formats (table, markdown) show lengths in µm; csv and json in mm, like every report. csv is
+one rectangular table: one row per cage angle with the case's inputs as constant columns (the
+summary is in the table and json formats).
+"""
+
+from __future__ import annotations
+
+from typing import Any
+
+from bearingload.reports.quantities import QUANTITIES, units
+from bearingload.reports.render import Column, Table, render
+from bearingload.studies.sweep import CageSweep
+from bearingload.units import KGF
+
+#: Quantities summarised over the sweep (min, mean, max, peak-to-peak).
+SPREADS = ("x", "y", "q_max", "stiffness_radial")
+#: Per cage position: the quantity and its short header in the human table.
+ROW_KEYS = (
+    ("cage_angle_deg", "cage angle"),
+    ("x", "x"),
+    ("y", "y"),
+    ("q_max", "Q_max"),
+    ("q_max_ball", "ball"),
+    ("loaded_balls", "loaded"),
+    ("stiffness_xx", "K_xx"),
+    ("stiffness_xy", "K_xy"),
+    ("stiffness_yy", "K_yy"),
+    ("stiffness_radial", "K_r"),
+)
+INPUT_KEYS = ("balls", "load", "stiffness", "clearance", "exponent")
+
+
+def sweep_report(s: CageSweep, fmt: str, context: str = "") -> str:
+    """Render a sweep in ``fmt``; ``context`` (e.g. the bearing and its sources) is noted."""
+    if fmt == "json":
+        return render([], "json", document=sweep_json(s))
+    if fmt == "csv":
+        return render([_csv_table(s)], "csv")
+    return render([_spread_table(s, context), _figures_table(s), _rows_table(s)], fmt)
+
+
+def inputs_text(s: CageSweep) -> str:
+    """One line naming the sweep's inputs with units."""
+    return (
+        f"z = {s.balls}, F_r = {s.load:.6g} N ({s.load / KGF:.6g} kgf), "
+        f"K = {s.stiffness:.6g} N/mm^{s.exponent:g}, G_r = {s.clearance * 1e3:.6g} µm "
+        f"(gap per side {s.clearance * 500:.6g} µm), m = {s.exponent:.6g}; cage angle 0 to "
+        f"{360 / s.balls:.6g}° in {s.cage_angle.size} positions"
+    )
+
+
+def _spread_table(s: CageSweep, context: str) -> Table:
+    rows = []
+    for key in SPREADS:
+        q = QUANTITIES[key]
+        unit, factor = q.shown()
+        sp = s.spread(key)
+        rows.append(
+            {
+                "quantity": q.label,
+                "min": sp.min * factor,
+                "mean": sp.mean * factor,
+                "max": sp.max * factor,
+                "ptp": sp.peak_to_peak * factor,
+                "unit": unit,
+            }
+        )
+    notes = ["mean: over one period (the last position, equal to the first, left out)."]
+    if context:
+        notes.append(context)
+    return Table(
+        title=f"Over one ball pitch ({inputs_text(s)})",
+        columns=[
+            Column("quantity", "quantity", align="left"),
+            Column("min", "min", digits=6),
+            Column("mean", "mean", digits=6),
+            Column("max", "max", digits=6),
+            Column("ptp", "peak-to-peak", digits=4),
+            Column("unit", "unit", align="left"),
+        ],
+        rows=rows,
+        notes=notes,
+    )
+
+
+def _figures_table(s: CageSweep) -> Table:
+    ripple = QUANTITIES["ripple_per_cage_revolution"]
+    comp = QUANTITIES["compensating_clearance"]
+    unit, factor = comp.shown()
+    rows: list[dict[str, Any]] = [
+        {"quantity": f"{ripple.label} (periods per cage revolution)", "value": s.ripple_order,
+         "unit": ripple.unit},
+    ]  # fmt: skip
+    values: list[float | None] = [*s.compensating_clearance] or [None]
+    for g in values:
+        rows.append(
+            {
+                "quantity": comp.label,
+                "value": "none" if g is None else g * factor,
+                "unit": "" if g is None else unit,
+            }
+        )
+    return Table(
+        title="Ripple",
+        columns=[
+            Column("quantity", "quantity", align="left"),
+            Column("value", "value", digits=6),
+            Column("unit", "unit", align="left"),
+        ],
+        rows=rows,
+        notes=[
+            "compensating clearance: every G_r at which the ring sits at the same x with a ball "
+            "under the load and with the load between two balls (no kinematic excitation; "
+            "negative = preload). The varying-compliance paper's delta_alpha = delta_S is the "
+            "smallest positive one."
+        ],
+    )
+
+
+def _rows_table(s: CageSweep) -> Table:
+    columns = []
+    for key, header in ROW_KEYS:
+        q = QUANTITIES[key]
+        unit, _ = q.shown()
+        columns.append(Column(key, header, unit, q.digits))
+    factors = {key: QUANTITIES[key].shown()[1] for key, _ in ROW_KEYS}
+    rows = [
+        {k: v * factors[k] if isinstance(v, float) else v for k, v in row.items()}
+        for row in _flat_rows(s)
+    ]
+    return Table(
+        title="Per cage position (ball 1 at the cage angle; angles from the load line)",
+        columns=columns,
+        rows=rows,
+        notes=["ball: the ball carrying Q_max (of two equal, the lower number)."],
+    )
+
+
+def _flat_rows(s: CageSweep) -> list[dict[str, Any]]:
+    """One dict per cage position, the stiffness matrix as its three entries (mm, N, N/mm)."""
+    rows = []
+    for row in _json_rows(s):
+        matrix = row.pop("stiffness_matrix")
+        row |= {
+            "stiffness_xx": matrix[0][0],
+            "stiffness_xy": matrix[0][1],
+            "stiffness_yy": matrix[1][1],
+        }
+        rows.append(row)
+    return rows
+
+
+def _csv_table(s: CageSweep) -> Table:
+    keys = INPUT_KEYS + tuple(k for k, _ in ROW_KEYS)
+    columns = []
+    for key in keys:
+        q = QUANTITIES[key]
+        unit = q.unit.replace("^m", f"^{s.exponent:g}")
+        columns.append(Column(key, q.label, unit, q.digits))
+    inputs = {k: getattr(s, k) for k in INPUT_KEYS}
+    return Table(title="sweep", columns=columns, rows=[inputs | r for r in _flat_rows(s)])
+
+
+def _json_rows(s: CageSweep) -> list[dict[str, Any]]:
+    return [
+        {
+            "cage_angle_deg": float(s.cage_angle[i]),
+            "x": float(s.x[i]),
+            "y": float(s.y[i]),
+            "q_max": float(s.q_max[i]),
+            "q_max_ball": int(s.q_max_ball[i]),
+            "loaded_balls": int(s.loaded_balls[i]),
+            "stiffness_matrix": s.stiffness_matrix[i].tolist(),
+            "stiffness_radial": float(s.stiffness_radial[i]),
+        }
+        for i in range(s.cage_angle.size)
+    ]
+
+
+def sweep_json(s: CageSweep) -> dict[str, Any]:
+    """The JSON document of a sweep: inputs, ``rows``, ``summary`` and ``units``."""
+    summary: dict[str, Any] = {}
+    for key in SPREADS:
+        sp = s.spread(key)
+        summary[key] = {
+            "min": sp.min,
+            "mean": sp.mean,
+            "max": sp.max,
+            "peak_to_peak": sp.peak_to_peak,
+        }
+    summary["ripple_per_cage_revolution"] = s.ripple_order
+    summary["compensating_clearance"] = list(s.compensating_clearance)
+    rows = _json_rows(s)
+    keys = [*INPUT_KEYS, *rows[0], *summary]
+    return {
+        **{k: getattr(s, k) for k in INPUT_KEYS},
+        "steps": int(s.cage_angle.size),
+        "rows": rows,
+        "summary": summary,
+        "units": units(keys, s.exponent),
+    }

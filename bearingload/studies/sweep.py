@@ -1,0 +1,223 @@
+"""The turning cage: the ring equilibrium over one ball pitch of cage positions.
+
+As the cage turns one pitch ``360/z`` the load passes from "a ball under the load" (cage angle 0)
+to "the load between two balls" (``180/z``) and back; the inner-ring position, the heaviest ball
+load and the stiffness change periodically, z times per cage revolution: the varying compliance
+that excites bearing vibration (Kurochkin 1973; the varying-compliance abstract of seed 001;
+Sunnersjö 1978). All cage positions are solved in one vectorised call of the exact engine
+(:func:`bearingload.models.equilibrium.solve`). Conventions are the engine's: outer ring fixed,
+radial load on the inner ring along +x, angles from the load line, ball 1 at the cage angle.
+"""
+
+from __future__ import annotations
+
+from dataclasses import dataclass
+from typing import Any
+
+import numpy as np
+
+from bearingload import validate
+from bearingload.errors import InputError
+from bearingload.models.equilibrium import LoadDistribution, solve
+
+#: Cage positions over one pitch when none are asked for (both ends included). [-]
+DEFAULT_STEPS = 37
+#: Most cage positions one sweep solves. [-]
+MAX_STEPS = 1_000_000
+
+
+@dataclass(frozen=True)
+class Spread:
+    """Minimum, mean, maximum and peak-to-peak of a quantity over the cage positions.
+
+    The mean is over one period: the two ends of the sweep are the same cage position, so the
+    last one is left out (the trapezoidal mean over the pitch). A mean below 1e-12 of the largest
+    value in size is rounding noise (the engine resolves each value to about 1e-13) and is 0.
+    """
+
+    min: float
+    mean: float
+    max: float
+    peak_to_peak: float
+
+
+@dataclass(frozen=True)
+class CageSweep:
+    """The ring equilibrium at cage positions over one ball pitch, both ends included.
+
+    Attributes
+    ----------
+    balls : int
+        Number of balls ``z``. [-]
+    load, stiffness, clearance, exponent : float
+        Radial load [N], ball stiffness [N/mm^m], radial internal clearance G_r [mm], ``m`` [-].
+    cage_angle : ndarray, shape (steps,)
+        Angle of ball 1 from the load line, 0 to ``360/z``. [°]
+    x, y : ndarray
+        Inner-ring displacement along and across the load. [mm]
+    q_max : ndarray
+        Heaviest ball load. [N]
+    q_max_ball : ndarray of int
+        The ball (1..z, ball 1 at the cage angle) carrying ``q_max``; of two equal, the lower. [-]
+    loaded_balls : ndarray of int
+        Number of balls carrying load. [-]
+    stiffness_matrix : ndarray, shape (steps, 2, 2)
+        Tangent stiffness ``dF/d(x, y)`` in the (along, across) axes, analytic. [N/mm]
+    stiffness_radial : ndarray
+        Tangent radial stiffness ``dF_r/dx`` with the transverse force held at zero. [N/mm]
+    compensating_clearance : list of float
+        Every clearance ``G_r`` at which ``x`` is the same with a ball under the load and with
+        the load between two balls, in increasing order (negative = preload); the
+        varying-compliance paper's delta_alpha = delta_S is the smallest positive one. From
+        :func:`bearingload.studies.compliance.compensating_clearances`. [mm]
+    """
+
+    balls: int
+    load: float
+    stiffness: float
+    clearance: float
+    exponent: float
+    cage_angle: np.ndarray
+    x: np.ndarray
+    y: np.ndarray
+    q_max: np.ndarray
+    q_max_ball: np.ndarray
+    loaded_balls: np.ndarray
+    stiffness_matrix: np.ndarray
+    stiffness_radial: np.ndarray
+    compensating_clearance: list[float]
+
+    @property
+    def ripple_order(self) -> int:
+        """Ripple frequency: periods of x, y, Q_max and stiffness per cage revolution, ``z``. [-]"""
+        return self.balls
+
+    def spread(self, name: str) -> Spread:
+        """Min, mean, max and peak-to-peak of ``x``, ``y``, ``q_max`` or ``stiffness_radial``."""
+        if name not in ("x", "y", "q_max", "stiffness_radial"):
+            raise InputError("name", "must be one of x, y, q_max, stiffness_radial")
+        v = np.asarray(getattr(self, name), dtype=float)
+        lo, hi = float(v.min()), float(v.max())
+        mean = float(v[:-1].mean()) if v.size > 1 else float(v[0])
+        if abs(mean) <= 1e-12 * float(np.abs(v).max()):
+            mean = 0.0  # rounding noise of a quantity that averages out (y: odd in the cage angle)
+        return Spread(lo, mean, hi, hi - lo)
+
+
+def sweep(
+    balls: Any,
+    load: Any,
+    stiffness: Any,
+    clearance: Any = 0.0,
+    exponent: Any = 1.5,
+    steps: Any = DEFAULT_STEPS,
+) -> CageSweep:
+    """Solve the ring equilibrium at ``steps`` cage positions over one ball pitch.
+
+    Cage angles ``0, p/(steps - 1), ..., p`` with the pitch ``p = 360/z`` degrees (both ends: the
+    same position, a ball under the load), solved in one vectorised call of the exact 2-D
+    equilibrium (Kurochkin 1973, eqs. 1.6-1.8).
+
+    Parameters
+    ----------
+    balls : int
+        Number of balls ``z``, 3 to 100 000 (with fewer no equilibrium exists off the load
+        line). [-]
+    load : float
+        Radial load ``F_r``, > 0. [N]
+    stiffness : float
+        Ball stiffness ``K`` of both contacts in series, ``Q = K delta^m``, > 0. [N/mm^m]
+    clearance : float, default 0
+        Radial internal clearance ``G_r`` (total play; gap per side ``G_r/2``; negative = preload). [mm]
+    exponent : float, default 1.5
+        Load-deflection exponent ``m``: 3/2 for balls, 10/9 for rollers. [-]
+    steps : int, default 37
+        Cage positions over the pitch, both ends included, 2 to 1 000 000. [-]
+
+    Returns
+    -------
+    CageSweep
+
+    Examples
+    --------
+    Nine balls, 1 kN, K = 1e5 N/mm^1.5, G_r = 10 µm: the ring moves across the load by up to a
+    few tenths of a micrometre as the cage turns.
+
+    >>> s = sweep(9, 1000.0, 1e5, 0.01, steps=9)
+    >>> s.cage_angle[[0, 4, 8]].tolist(), s.q_max_ball[[0, 8]].tolist()
+    ([0.0, 20.0, 40.0], [1, 9])
+    >>> round(s.spread("y").max * 1e3, 4)
+    0.3125
+    """
+    z = _one_int("balls", validate.ball_count(balls))
+    if z < 3:
+        raise InputError(
+            "balls",
+            "a sweep needs at least 3 balls: with 1 or 2 the ring has no equilibrium unless a "
+            "ball sits on the load line",
+        )
+    n = _one_int("steps", validate.ball_count(steps, name="steps", maximum=MAX_STEPS))
+    if n < 2:
+        raise InputError("steps", "must be at least 2 (both ends of the pitch)")
+    f, k, g, m = (
+        float(_one("load", validate.positive("load", load, "N"))),
+        float(_one("stiffness", validate.positive("stiffness", stiffness, "N/mm^m"))),
+        float(_one("clearance", validate.finite("clearance", clearance))),
+        float(_one("exponent", validate.exponent(exponent))),
+    )
+    angles = np.linspace(0.0, 360.0 / z, n)
+    r = solve(z, f, k, g, angles, m)
+    delta = _ball_approaches(r, z)
+    top = delta.max(axis=1, keepdims=True)
+    ties = delta >= top - 1e-12 * np.abs(top)
+    return CageSweep(
+        balls=z,
+        load=f,
+        stiffness=k,
+        clearance=g,
+        exponent=m,
+        cage_angle=angles,
+        x=r.x,
+        y=r.y,
+        q_max=r.q_max,
+        q_max_ball=np.argmax(ties, axis=1) + 1,
+        loaded_balls=r.loaded_balls,
+        stiffness_matrix=r.stiffness_matrix,
+        stiffness_radial=r.stiffness_radial,
+        compensating_clearance=compensating_clearance(z, f, k, m),
+    )
+
+
+def compensating_clearance(
+    balls: int, load: float, stiffness: float, exponent: float
+) -> list[float]:
+    """Every clearance G_r [mm] at which the ring sits at the same x with a ball under the load
+    and with the load between two balls: the one call of the varying-compliance study."""
+    from bearingload.studies.compliance import compensating_clearances
+
+    return [float(v) for v in compensating_clearances(balls, load, stiffness, exponent)]
+
+
+def _ball_approaches(r: LoadDistribution, z: int) -> np.ndarray:
+    """Approach of balls 1..z at every case of ``r``, shape (n, z). [mm]
+
+    From the engine's reference position (``r.offset``, ``r.reference``; see LoadDistribution):
+    ``delta_i = offset . n_i - e u_i`` with ``u_i = 1 - cos(phi_i - mu)/cos h``, so a clearance
+    much larger than the elastic approach costs no digits.
+    """
+    phi = np.deg2rad(np.asarray(r.cage_angle))[:, None] + 2.0 * np.pi * np.arange(z) / z
+    mu, h = r.reference[:, :1], r.reference[:, 1:]
+    theta = phi - mu
+    u = 2.0 * np.sin((theta + h) / 2.0) * np.sin((theta - h) / 2.0) / np.cos(h)
+    e = np.asarray(r.clearance)[:, None] / 2.0
+    return r.offset[:, :1] * np.cos(phi) + r.offset[:, 1:] * np.sin(phi) - e * u
+
+
+def _one(name: str, value: np.ndarray) -> np.ndarray:
+    if value.ndim != 0:
+        raise InputError(name, "must be one number (a sweep is one bearing under one load)")
+    return value
+
+
+def _one_int(name: str, value: np.ndarray) -> int:
+    return int(_one(name, value))

@@ -1,0 +1,112 @@
+"""``bearingload solve`` with a combined load: options, JSON keys and units, errors."""
+
+from __future__ import annotations
+
+import json
+import math
+
+import pytest
+
+from bearingload.bearings.iso16281 import contact_ratings, reference_rating_life
+from bearingload.models.combined import solve_combined
+
+from .cli_helpers import invoke, run_process
+from .fixtures.published import PEER_ISO16281_MASTA
+
+PEER_ARGS = ("-z", "7", "--ball-diameter", "11.5", "--pitch-diameter", "43.5",
+             "--modulus", "210000", "--dynamic-rating", "23.4kN")  # fmt: skip
+
+
+def _document(*args: str) -> dict:
+    result = invoke("solve", *args, "--format", "json")
+    assert result.exit_code == 0, result.output
+    return json.loads(result.output)
+
+
+def _json(*args: str) -> dict:
+    """The one case of the JSON document, with the document's units."""
+    doc = _document(*args)
+    assert len(doc["cases"]) == 1
+    return doc["cases"][0] | {"units": doc["units"]}
+
+
+def test_json_keys_match_the_library():
+    doc = _json(*PEER_ARGS, "-F", "1kN", "--axial-load", "1kN", "-G", "10um")
+    r = solve_combined(7, 1000.0, 1000.0, ball_diameter=11.5, pitch_diameter=43.5,
+                       clearance=0.01, modulus=210000.0)  # fmt: skip
+    assert doc["deflection_axial"] == pytest.approx(float(r.axial), rel=1e-9)
+    assert doc["tilt_deg"] == pytest.approx(float(r.tilt), rel=1e-9)
+    assert doc["contact_angles_deg"] == pytest.approx(list(r.contact_angles), rel=1e-9)
+    q_ci, q_ce = contact_ratings(23400.0, 7, 11.5, 43.5, 0.52, 0.53)
+    life = float(reference_rating_life(r.ball_loads, q_ci, q_ce))
+    assert doc["reference_rating_life"] == pytest.approx(life, rel=1e-9)
+    assert doc["units"]["deflection_axial"] == "mm" and doc["units"]["tilt_deg"] == "°"
+    assert doc["units"]["contact_angles_deg"] == "°"
+    assert doc["units"]["reference_rating_life"] == doc["units"]["rating_life"] == "10^6 rev"
+    # Example 5 of the peer (MASTA): L10r 1630.5367, ours with the Hertz K(alpha) -0.0033 %
+    assert doc["reference_rating_life"] == pytest.approx(PEER_ISO16281_MASTA[5][7], rel=1e-4)
+    assert doc["rating_life"] is None  # ISO 281 P needs C0r and f0: not given for this ball set
+
+
+def test_catalogue_bearing_gets_both_lives():
+    doc = _json("6205", "-F", "1.4kN", "-A", "700N", "-G", "0")
+    # ISO 281:2007 Table 3 at f0 F_a/C0r = 13.9 * 700/7850 = 1.2395: Y = 1.4930
+    y = 1.55 + (13.9 * 700 / 7850 - 1.03) / (1.38 - 1.03) * (1.45 - 1.55)
+    assert doc["equivalent_load"] == pytest.approx(0.56 * 1400 + y * 700, rel=1e-9)
+    assert doc["rating_life"] == pytest.approx((14000 / doc["equivalent_load"]) ** 3)
+    assert doc["reference_rating_life"] > 0 and len(doc["contact_angles_deg"]) == 9
+
+
+def test_misalignment_and_moment_units():
+    a = _json(*PEER_ARGS, "-F", "1kN", "--misalignment", "2mrad", "-G", "10um")
+    assert a["tilt_deg"] == pytest.approx(math.degrees(2e-3), rel=1e-9)
+    assert a["misalignment_deg"] == pytest.approx(math.degrees(2e-3), rel=1e-9)
+    b = _json(*PEER_ARGS, "-F", "1kN", "--moment", "1Nm", "-G", "10um")
+    c = _json(*PEER_ARGS, "-F", "1kN", "--moment", "1000", "-G", "10um")
+    assert b["tilt_deg"] == c["tilt_deg"] != 0
+
+
+def test_outer_ring_rotating_changes_the_life():
+    inner = _json(*PEER_ARGS, "-F", "1kN", "-A", "200N", "-G", "10um")
+    outer = _json(*PEER_ARGS, "-F", "1kN", "-A", "200N", "-G", "10um", "--rotating", "outer")
+    assert inner["ball_loads"] == outer["ball_loads"]
+    assert inner["reference_rating_life"] != outer["reference_rating_life"]
+
+
+def test_table_output_names_the_conventions():
+    out = invoke("solve", *PEER_ARGS, "-F", "0", "-A", "1kN").output
+    assert "axial displacement from centred rings" in out
+    assert "half the axial play included" in out
+    assert "contact angle [°]" in out
+
+
+@pytest.mark.parametrize(
+    ("args", "message"),
+    [
+        (("-z", "7", "-K", "3e5", "-F", "1kN", "-A", "1kN"), "ball geometry"),
+        ((*PEER_ARGS, "-F", "1kN", "--moment", "1Nm", "--misalignment", "0.1"), "'--moment'"),
+        ((*PEER_ARGS, "-F", "0"), "'--load'"),
+        ((*PEER_ARGS, "-F", "1kN", "-A", "1kN", "--method", "all"), "'--method'"),
+        ((*PEER_ARGS, "-F", "1kN", "--misalignment", "2 parsecs"), "'--misalignment'"),
+    ],
+)
+def test_errors_are_one_line(args, message):
+    p = run_process("solve", *args)
+    assert p.returncode == 2, p.stderr
+    lines = [line for line in p.stderr.splitlines() if line.startswith("Error:")]
+    assert len(lines) == 1 and message in lines[0], p.stderr
+    assert "Traceback" not in p.stderr and p.stdout == ""
+
+
+def test_help_lists_the_combined_options():
+    out = invoke("solve", "--help").output
+    for option in ("--axial-load", "--moment", "--misalignment", "--dynamic-rating", "--rotating"):
+        assert option in out
+
+
+def test_clearance_range_side_by_side():
+    doc = _document("6205", "-F", "1.4kN", "-A", "700N", "-G", "C3", "--clearance-pick", "range")
+    picks = [c["clearance_pick"] for c in doc["cases"]]
+    assert picks == ["min", "mean", "max"]
+    lives = [c["reference_rating_life"] for c in doc["cases"]]
+    assert lives == sorted(lives)  # more clearance, larger contact angles, longer life here

@@ -1,0 +1,169 @@
+"""``bearingload sweep``: exact output of every format, errors, help, start-up."""
+
+from __future__ import annotations
+
+import json
+import os
+import subprocess
+import sys
+
+import numpy as np
+import pytest
+
+from bearingload.studies.sweep import sweep
+
+from .cli_helpers import invoke, run_entry
+
+CASE = ("sweep", "-z", "9", "-F", "1kN", "-K", "1e5", "-G", "10um")
+
+CSV_3 = """\
+balls,load [N],stiffness [N/mm^1.5],clearance [mm],exponent,cage_angle_deg [°],x [mm],y [mm],q_max [N],q_max_ball,loaded_balls,stiffness_xx [N/mm],stiffness_xy [N/mm],stiffness_yy [N/mm],stiffness_radial [N/mm]
+9,1000.0,100000.0,0.01,1.5,0.0,0.03472437386,0.0,512.4707383,1,5,52025.23487,0.0,27554.40218,52025.23487
+9,1000.0,100000.0,0.01,1.5,20.0,0.03471268143,0.0,459.005443,1,4,52361.87697,0.0,30842.96794,52361.87697
+9,1000.0,100000.0,0.01,1.5,40.0,0.03472437386,0.0,512.4707383,9,5,52025.23487,0.0,27554.40218,52025.23487
+"""
+
+
+def test_csv_exact_and_rectangular():
+    out = invoke(*CASE, "--steps", "3", "--format", "csv")
+    assert out.exit_code == 0
+    assert out.output == CSV_3
+    lines = out.output.splitlines()
+    assert len({line.count(",") for line in lines}) == 1  # one rectangular block
+
+
+def test_csv_is_byte_identical_run_to_run_and_written_atomically(tmp_path):
+    target = tmp_path / "s.csv"
+    first = invoke(*CASE, "--steps", "5", "--format", "csv", "-o", str(target))
+    assert first.exit_code == 0 and first.output == ""
+    once = target.read_bytes()
+    invoke(*CASE, "--steps", "5", "--format", "csv", "-o", str(target))
+    assert target.read_bytes() == once and b"\r" not in once
+    assert sorted(p.name for p in tmp_path.iterdir()) == ["s.csv"]
+
+
+def test_json_rows_summary_units_match_the_library():
+    out = invoke(*CASE, "--steps", "7", "--format", "json")
+    doc = json.loads(out.output)
+    s = sweep(9, 1000.0, 1e5, 0.01, steps=7)
+    assert [r["cage_angle_deg"] for r in doc["rows"]] == pytest.approx(s.cage_angle.tolist())
+    for i, row in enumerate(doc["rows"]):
+        assert set(row) >= {"cage_angle_deg", "x", "y", "q_max", "loaded_balls", "stiffness_matrix"}
+        assert row["x"] == pytest.approx(s.x[i], rel=1e-9)
+        assert row["y"] == pytest.approx(s.y[i], rel=1e-9, abs=1e-15)
+        assert row["q_max"] == pytest.approx(s.q_max[i], rel=1e-9)
+        assert row["q_max_ball"] == s.q_max_ball[i]
+        assert row["loaded_balls"] == s.loaded_balls[i]
+        assert np.allclose(row["stiffness_matrix"], s.stiffness_matrix[i], rtol=1e-9, atol=1e-6)
+    summary = doc["summary"]
+    for key in ("x", "y", "q_max", "stiffness_radial"):
+        sp = s.spread(key)
+        assert summary[key]["min"] == pytest.approx(sp.min, rel=1e-9)
+        assert summary[key]["max"] == pytest.approx(sp.max, rel=1e-9)
+        assert summary[key]["peak_to_peak"] == pytest.approx(sp.peak_to_peak, rel=1e-9)
+        assert summary[key]["mean"] == pytest.approx(sp.mean, rel=1e-9, abs=1e-15)
+    assert summary["ripple_per_cage_revolution"] == 9
+    assert summary["compensating_clearance"] == pytest.approx(s.compensating_clearance, rel=1e-9)
+    assert doc["units"]["x"] == "mm" and doc["units"]["stiffness_matrix"] == "N/mm"
+    assert doc["units"]["compensating_clearance"].startswith("mm")
+    assert (doc["balls"], doc["load"], doc["clearance"], doc["steps"]) == (9, 1000.0, 0.01, 7)
+
+
+def test_table_shows_every_block_with_units():
+    out = invoke(*CASE, "--steps", "9")
+    text = out.output
+    assert text.startswith(
+        "Over one ball pitch (z = 9, F_r = 1000 N (101.972 kgf), K = 100000 N/mm^1.5, "
+        "G_r = 10 µm (gap per side 5 µm), m = 1.5; cage angle 0 to 40° in 9 positions)\n"
+    )
+    lines = {ln[:35].strip(): ln.split() for ln in text.splitlines()}
+    assert lines["ring displacement along the load x"][-5:] == [
+        "34.7008", "34.7075", "34.7244", "0.02353", "µm",
+    ]  # fmt: skip
+    assert lines["radial stiffness dF_r/dx"][-5:] == ["52025.2", "52228.2", "52361.9", "336.6", "N/mm"]  # fmt: skip
+    assert lines["ring displacement across the load y"][-5:] == [
+        "-0.312488", "0", "0.312488", "0.6250", "µm",
+    ]  # fmt: skip
+    assert "ripple frequency (periods per cage revolution)         9  1/rev" in text
+    assert "compensating clearance G_r                       10.6478  µm" in text
+    assert "cage angle [°]   x [µm]     y [µm]  Q_max [N]  ball  loaded" in text
+    # the whole output of every format: tests/golden/sweep_*.txt (test_golden.py)
+
+
+def test_markdown():
+    out = invoke(*CASE, "--steps", "3", "--format", "markdown")
+    assert out.exit_code == 0
+    assert out.output.startswith("### Over one ball pitch (z = 9")
+    assert "| cage angle [°] |" in out.output
+
+
+def test_catalogue_bearing_names_its_sources():
+    out = invoke("sweep", "306", "--load", "300kgf", "--clearance", "C3", "--steps", "3")
+    assert out.exit_code == 0
+    assert "z and K (exact Hertz) of bearing 306; G_r: " in out.output
+    assert "z = 8, F_r = 2941.99 N (300 kgf)" in out.output
+
+
+def test_rollers_by_stiffness_and_exponent():
+    out = invoke("sweep", "-z", "14", "-F", "10kN", "-K", "8e5", "-m", "10/9", "--steps", "3")
+    assert out.exit_code == 0 and "K = 800000 N/mm^1.11111" in out.output
+
+
+@pytest.mark.parametrize(
+    "args, message",
+    [
+        (("sweep", "-F", "1kN", "-K", "1e5"), "Error: Missing option '--balls' / '-z'"),
+        (("sweep", "-z", "9", "-F", "1kN"), "Error: Missing option '--stiffness' / '-K'"),
+        ((*CASE, "--steps", "1"), "Error: Invalid value for '--steps': must be at least 2"),
+        (
+            ("sweep", "-z", "2", "-F", "1kN", "-K", "1e5"),
+            "Error: Invalid value for '--balls': a sweep needs at least 3 balls",
+        ),  # fmt: skip
+        (("sweep", "-z", "9", "-F", "-1", "-K", "1e5"), "Error: Invalid value for '--load'"),
+        (
+            ("sweep", "306", "-F", "1kN", "-m", "10/9"),
+            "Error: Invalid value for '--exponent': a ball bearing",
+        ),  # fmt: skip
+    ],
+)
+def test_errors_are_one_line_exit_2(capsys, args, message):
+    code, out, err = run_entry(capsys, *args)
+    assert code == 2 and out == ""
+    assert err.startswith(message) and err.count("\n") == 1
+
+
+def test_error_leaves_no_output_file(capsys, tmp_path):
+    target = tmp_path / "s.csv"
+    code, _, err = run_entry(capsys, *CASE, "--steps", "0", "-o", str(target))
+    assert code == 2 and not target.exists()
+
+
+def test_help_has_examples_and_is_listed():
+    out = invoke("sweep", "--help")
+    assert out.exit_code == 0
+    assert "Examples:" in out.output and "bearingload sweep -z 9" in out.output
+    for option in ("--steps", "--plot", "--clearance-pick", "--format", "--ball-diameter"):
+        assert option in out.output
+    assert "sweep" in invoke("--help").output
+
+
+def test_sweep_help_and_solve_import_no_matplotlib():
+    code = (
+        "import sys\n"
+        "from bearingload.cli import main\n"
+        "main.main(args=['solve', '-z', '8', '-F', '1', '-K', '1'], standalone_mode=False)\n"
+        "print('matplotlib' in sys.modules)\n"
+        "import bearingload.cli.sweep\n"
+        "print('numpy' in sys.modules or 'matplotlib' in sys.modules)\n"
+    )
+    env = dict(os.environ)
+    r = subprocess.run([sys.executable, "-c", code], capture_output=True, text=True, env=env)
+    assert r.returncode == 0, r.stderr
+    assert r.stdout.strip().splitlines()[-2:] == ["False", "True"]  # solve itself uses numpy
+    fresh = subprocess.run(
+        [sys.executable, "-c", "import sys, bearingload.cli.sweep; print('numpy' in sys.modules)"],
+        capture_output=True,
+        text=True,
+        env=env,
+    )
+    assert fresh.stdout.strip() == "False"

@@ -1,0 +1,120 @@
+"""--plot: the figures hold the computed data with labelled units; PNGs are real images, written
+whole; without matplotlib one clear error line."""
+
+from __future__ import annotations
+
+import sys
+
+# matplotlib is installed by `make` (extra 'plot'): these tests need it, none is skipped
+import matplotlib.image
+import numpy as np
+import pytest
+
+from bearingload.models.equilibrium import solve
+from bearingload.reports import plots
+from bearingload.studies.sweep import sweep
+
+from .cli_helpers import invoke, run_entry
+
+CASE = ("-z", "9", "-F", "1kN", "-K", "1e5", "-G", "10um")
+
+
+def test_sweep_figure_holds_the_sweep():
+    s = sweep(9, 1000.0, 1e5, 0.01, steps=13)
+    fig = plots.sweep_figure(s)
+    axes = fig.get_axes()
+    assert len(axes) == 4
+    expected = [s.x * 1e3, s.y * 1e3, s.q_max, s.stiffness_radial]
+    units = ["[µm]", "[µm]", "[N]", "[N/mm]"]
+    for ax, values, unit in zip(axes, expected, units, strict=True):
+        (line,) = ax.get_lines()
+        np.testing.assert_array_equal(line.get_xdata(), s.cage_angle)
+        np.testing.assert_array_equal(line.get_ydata(), values)
+        assert unit in ax.get_ylabel()
+    assert "[°]" in axes[-1].get_xlabel()
+
+
+def test_ball_loads_figure_holds_the_loads():
+    r = solve(9, 1000.0, 1e5, 0.01, 7.0)
+    fig = plots.ball_loads_figure([("", r)], "title")
+    (ax,) = fig.get_axes()
+    heights = [p.get_height() for p in ax.patches]
+    np.testing.assert_allclose(heights, r.ball_loads(), rtol=1e-15)
+    assert "[N]" in ax.get_ylabel() and "[°]" in ax.get_xlabel()
+
+
+def test_sweep_plot_png(tmp_path):
+    png = tmp_path / "sweep.png"
+    out = invoke("sweep", *CASE, "--steps", "19", "--plot", str(png))
+    assert out.exit_code == 0 and out.output.startswith("Over one ball pitch")
+    image = matplotlib.image.imread(str(png))
+    assert image.shape[:2] == (800, 700)  # 7 x 8 in at 100 dpi
+    assert image[..., :3].std() > 0.05  # not a blank canvas
+    assert sorted(p.name for p in tmp_path.iterdir()) == ["sweep.png"]  # no temporary left
+
+
+def test_solve_plot_png_and_range(tmp_path):
+    png = tmp_path / "loads.png"
+    out = invoke("solve", *CASE, "--cage-angle", "7", "--plot", str(png))
+    assert out.exit_code == 0 and "Ball loads" in out.output
+    image = matplotlib.image.imread(str(png))
+    assert image.shape[:2] == (650, 650)
+    assert image[..., :3].std() > 0.05
+    out = invoke(
+        "solve", "306", "-F", "300kgf", "-G", "C3", "--clearance-pick", "range", "--plot", str(png)
+    )
+    assert out.exit_code == 0
+    assert matplotlib.image.imread(str(png)).shape[:2] == (650, 650)
+
+
+def test_solve_plot_figure_of_the_range():
+    from bearingload.cli.plot import _ball_loads_figure
+
+    options = dict(
+        bearing="306", balls=None, stiffness=None, clearance="C3", clearance_pick="range",
+        ball_diameter=None, pitch_diameter=None, inner_conformity=None, outer_conformity=None,
+        modulus=None, poisson=None, cage_angle="0", exponent=1.5, load=2941.99,
+    )  # fmt: skip
+    from bearingload.bearings.clearance import parse_clearance
+
+    options["clearance"] = parse_clearance("C3")
+    fig = _ball_loads_figure(options)
+    (ax,) = fig.get_axes()
+    labels = [t.get_text() for t in ax.get_legend().get_texts()]
+    assert [lab.split("(")[-1] for lab in labels] == ["min)", "mean)", "max)"]
+    assert len(ax.patches) == 3 * 8
+
+
+def test_without_matplotlib_one_error_line_and_nothing_written(capsys, tmp_path, monkeypatch):
+    for name in [m for m in sys.modules if m == "matplotlib" or m.startswith("matplotlib.")]:
+        monkeypatch.delitem(sys.modules, name)
+    monkeypatch.setitem(sys.modules, "matplotlib", None)  # import matplotlib -> ImportError
+    png, csv = tmp_path / "p.png", tmp_path / "o.csv"
+    for command in ("sweep", "solve"):
+        code, out, err = run_entry(
+            capsys, command, *CASE, "--plot", str(png), "--format", "csv", "-o", str(csv)
+        )
+        assert code == 1 and out == ""
+        assert err == "Error: --plot needs matplotlib: pip install 'bearingload[plot]'\n"
+        assert list(tmp_path.iterdir()) == []
+
+
+def test_plot_into_a_missing_folder_is_a_usage_error(capsys, tmp_path):
+    code, out, err = run_entry(capsys, "sweep", *CASE, "--plot", str(tmp_path / "no" / "p.png"))
+    assert code == 2 and out == ""
+    assert err.startswith("Error: Invalid value for '--plot': cannot write")
+
+
+def test_save_png_is_atomic(tmp_path, monkeypatch):
+    target = tmp_path / "p.png"
+    target.write_bytes(b"old")
+    fig = plots.sweep_figure(sweep(9, 1000.0, 1e5, 0.01, steps=3))
+
+    def broken(*args, **kwargs):
+        raise OSError(28, "No space left on device")
+
+    monkeypatch.setattr(fig, "savefig", broken)
+    with pytest.raises(OSError):
+        plots.save_png(fig, str(target))
+    assert target.read_bytes() == b"old"
+    assert [p.name for p in tmp_path.iterdir()] == ["p.png"]

@@ -1,0 +1,49 @@
+"""Units that catch mistakes: an implausible bare number is refused with the likely unit, and the
+usual slips (a space before the unit, a decimal comma) get a hint instead of an unrelated error."""
+
+from __future__ import annotations
+
+import pytest
+
+from bearingload.errors import InputError
+from bearingload.units import parse_quantity
+
+from .cli_helpers import run_entry
+
+HAND = ["solve", "-z", "8", "-F", "300kgf", "-K", "4700kgf/mm^1.5"]
+
+
+@pytest.mark.parametrize(
+    "args, message",
+    [
+        (["solve", "306", "-F", "300kgf", "--modulus", "210"],
+         "Error: Invalid value for '--modulus': a bare 210 is 210 MPa, implausible for a Young's "
+         "modulus (bare numbers are MPa; plausible 1000 to 1e+07 MPa): did you mean 210GPa?"),
+        (["solve", "306", "-F", "300kgf", "--modulus", "2.1e11"], "did you mean 2.1e+11Pa?"),
+        ([*HAND, "-G", "20"],
+         "Error: Invalid value for '--clearance' / '-G': a bare 20 is 20 mm, implausible for a "
+         "radial clearance (bare numbers are mm; plausible -1 to 1 mm): did you mean 20um?"),
+        (["solve", "306", "-F", "300kgf", "-G", "7"], "(the GOST clearance group 7 is written G7)"),
+        ([*HAND, "-G", "0,02"], "write the decimal point, not a comma: 0.02"),
+        (["solve", "-z", "8", "-F", "300", "kgf", "-K", "4700kgf/mm^1.5"],
+         "Error: '300 kgf': write a number and its unit without a space, e.g. 300kgf"),
+        (["table", "k", "-G", "20", "um"], "Error: '20 um': write a number and its unit without a space"),
+    ],
+)  # fmt: skip
+def test_slips_get_one_line_with_the_likely_meaning(capsys, args, message):
+    code, out, err = run_entry(capsys, *args)
+    assert code == 2 and out == "" and err.count("\n") == 1 and "Traceback" not in err
+    assert message in err, err
+
+
+def test_written_units_are_used_as_they_are(capsys):
+    """The refusal is for bare numbers only: with its unit a number means what it says."""
+    code, out, _ = run_entry(capsys, *HAND, "-G", "1.5mm")
+    assert code == 0 and "G_r = 1500 µm" in out
+    code, out, _ = run_entry(capsys, "solve", "306", "-F", "300kgf", "--modulus", "210GPa")
+    assert code == 0
+    assert parse_quantity("210000", "modulus") == 210000.0
+    assert parse_quantity("0.99", "length", parameter="clearance") == 0.99
+    with pytest.raises(InputError, match="did you mean 1um"):
+        parse_quantity("1", "length", parameter="clearance")
+    assert parse_quantity("20", "length", parameter="ball_diameter") == 20.0  # no rule there
