@@ -2,14 +2,27 @@
 
 from __future__ import annotations
 
+from typing import Any
+
 import numpy as np
 
 from bearingload.errors import InputError
 
 
 def finite(name: str, value: object) -> np.ndarray:
-    """Return ``value`` as a float array, raising :class:`InputError` on NaN or infinity."""
-    arr = np.asarray(value, dtype=float)
+    """Return ``value`` as a float array, raising :class:`InputError` on NaN or infinity, on
+    text (units belong to the command line: the library takes N, mm, N/mm^m, degrees) and on
+    booleans."""
+    if isinstance(value, (bool, np.bool_)) or np.asarray(value).dtype == bool:
+        raise InputError(name, f"must be a number, not a boolean (got {value!r})")
+    try:
+        arr = np.asarray(value, dtype=float)
+    except (TypeError, ValueError):
+        raise InputError(
+            name,
+            f"must be a number (got {value!r}); the library takes N, mm, N/mm^m and degrees "
+            "(bearingload.units.parse_quantity reads text with a unit)",
+        ) from None
     if not np.all(np.isfinite(arr)):
         raise InputError(name, "must be a finite number (got NaN or infinity)")
     return arr
@@ -54,22 +67,21 @@ def exponent(value: object, *, name: str = "exponent") -> np.ndarray:
     return arr
 
 
-def broadcast(names: tuple[str, ...], arrays: list[np.ndarray]) -> tuple[int, ...]:
-    """The common shape of checked input arrays; InputError for an empty or mismatched one."""
-    for name, arr in zip(names, arrays, strict=True):
-        if arr.size == 0:
-            raise InputError(name, f"is an empty array (shape {arr.shape}); give at least one case")
-    shape: tuple[int, ...] = ()
-    for name, arr in zip(names, arrays, strict=True):
-        try:
-            shape = np.broadcast_shapes(shape, arr.shape)
-        except ValueError:
-            raise InputError(
-                name,
-                f"has shape {arr.shape}, which does not broadcast with the shape {shape} of the "
-                "parameters before it; give arrays of one shape (or scalars)",
-            ) from None
-    return shape
+def broadcast_shape(arrays: dict[str, Any]) -> tuple[int, ...]:
+    """The shape the named arrays broadcast to; :class:`InputError` names them when they do not
+    fit together or when there is no case at all (an empty array)."""
+    try:
+        shape = np.broadcast_shapes(*(np.shape(a) for a in arrays.values()))
+    except ValueError:
+        shapes = ", ".join(f"{k} {np.shape(v)}" for k, v in arrays.items() if np.ndim(v))
+        raise InputError(
+            ", ".join(k for k, v in arrays.items() if np.ndim(v)),
+            f"the array shapes do not broadcast together ({shapes})",
+        ) from None
+    if 0 in shape:
+        empty = [k for k, v in arrays.items() if np.size(v) == 0] or list(arrays)
+        raise InputError(", ".join(empty), "no case to solve: the array is empty")
+    return tuple(shape)
 
 
 def _worst(arr: np.ndarray, bad: np.ndarray) -> str:

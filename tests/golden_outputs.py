@@ -50,6 +50,7 @@ COMMANDS = {
     "solve_nu206": "solve NU206 -F 5kN --show-geometry",
     "fit_208": "fit examples/bearing208_kuzmenko2014.csv --load-unit kgf --base 200kgf:0.8mm "
     "--base 1000kgf:1.67mm --balls 9",
+    "batch_cases": "batch examples/cases.csv",
 }
 
 

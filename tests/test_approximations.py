@@ -21,7 +21,7 @@ from bearingload.models.approximations import (
 def test_published_constants():
     # Stribeck 1901 (Kuzmenko 2010, ref. [2]): Q_max = 4.37 F_r / z.
     assert STRIBECK_CONSTANT == 4.37
-    # Seed 003 (crane-dynamics paper, 2009), eq. (2): Q = 5 F_r / (i z cos alpha).
+    # The crane paper (2009), eq. (2): Q = 5 F_r / (i z cos alpha).
     assert PALMGREN_CONSTANT == 5.0
 
 

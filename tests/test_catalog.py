@@ -163,7 +163,7 @@ def test_gost_and_iso_pairs_share_boundary_dimensions() -> None:
 
 
 def test_seed_000_bearing_306() -> None:
-    # Kuzmenko 2010 (seed 000), Table 2 "Данные по ГОСТ 8338-75":
+    # Kuzmenko 2010, Table 2 "Данные по ГОСТ 8338-75":
     # 306: d 30, D 72, Dw 12.3, z 8, C 2200 kgf, C0 1510 kgf; groove radius R2 = 1.03 R1
     # (section 3.4: R1 = 6.15, R2 = 6.33 mm) -> f = 0.515.
     b = lookup("306")
@@ -176,7 +176,7 @@ def test_seed_000_bearing_306() -> None:
 
 
 def test_seed_002_bearing_208() -> None:
-    # Kuzmenko & Sabadash 2014 (seed 002), section 2.1 item 2: bearing 208 with d 40, D 80,
+    # Kuzmenko & Sabadash 2014, section 2.1 item 2: bearing 208 with d 40, D 80,
     # B 18 mm, C 2500 kgf, C_k 1810 kgf, ball diameter 12.7 mm, z 9.
     b = lookup("208")
     assert (b.d, b.D, b.B, b.ball_diameter, b.balls) == (40.0, 80.0, 18.0, 12.7, 9)
@@ -235,11 +235,11 @@ def test_unreadable_designation_explains_manual_geometry() -> None:
 def test_row_without_ball_set() -> None:
     row = find("6302")  # listed, no default (NSK) ball set: NSK's inversion is inconclusive
     assert not row.has_geometry and row.C0 == 5450.0
-    with pytest.raises(InputError, match="give --balls and --ball-diameter"):
+    with pytest.raises(InputError, match="give 'balls' and 'ball_diameter'"):
         lookup("6302")
-    with pytest.raises(InputError, match="give --ball-diameter$"):
+    with pytest.raises(InputError, match="give 'ball_diameter'$"):
         lookup("6302", balls=7)
-    with pytest.raises(InputError, match=r"--maker NTN \| SKF"):
+    with pytest.raises(InputError, match=r"with 'maker': NTN \| SKF"):
         lookup("6404")
     # the GOST counterpart of an ISO row (the hint of a row without a ball set)
     other = _counterpart(parse("6304"))

@@ -92,7 +92,7 @@ def test_picks() -> None:
     assert radial_clearance(40, "C3", pick="min") == pytest.approx(0.015)
     assert radial_clearance(40, "C3", pick="max") == pytest.approx(0.033)
     assert radial_clearance(40, "C3") == pytest.approx(0.024)
-    # Seed 000 takes G_r = 20 um for bearing 306 (d = 30): the CN maximum of row 24-30.
+    # Kuzmenko (2010) takes G_r = 20 um for bearing 306 (d = 30): the CN maximum of row 24-30.
     assert radial_clearance(30, "CN", pick="max") == pytest.approx(0.020)
 
 

@@ -137,10 +137,10 @@ def test_catalog_list_and_filters():
     assert lines[0] == "Deep groove ball bearings in the catalogue (bore 30)"
     assert lines[2].split() == [
         "bearing", "std", "d", "[mm]", "D", "[mm]", "B", "[mm]", "z", "D_w", "[mm]", "d_m", "[mm]",
-        "f_i", "[-]", "f_o", "[-]", "C", "[kN]", "C0", "[kN]", "ball", "set",
+        "f_i", "[-]", "f_o", "[-]", "C", "[N]", "C0", "[N]", "ball", "set",
     ]  # fmt: skip
     assert (
-        "306      GOST  30.000  72.000  19.000   8    12.300    51.000    0.515    0.515   21.57    14.81  GOST (read)"
+        "306      GOST  30.000  72.000  19.000   8    12.300    51.000    0.515    0.515   21575   14808  GOST (read)"
         in lines
     )
     rows = list(

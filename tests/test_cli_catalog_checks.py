@@ -128,7 +128,7 @@ def test_roller_bearing_nu206() -> None:
         ),
         (["solve", "NU206", "-F", "1kN", "-m", "1.1"], "a roller bearing (line contact) has m = 10/9"),
         (["solve", "NU206", "-F", "1kN", "-G", "C3"], "Invalid value for '--clearance': the clearance classes of cylindrical"),
-        (["solve", "6404", "-F", "1kN"], "choose a maker's set: --maker NTN | SKF"),
+        (["solve", "6404", "-F", "1kN"], "choose a maker's set with '--maker': NTN | SKF"),
         (["table", "k", "-b", "NU206"], "the tables take ball bearings"),
         (["catalog", "show", "6208", "--maker", "X"], "Invalid value for '--maker': no X ball set"),
     ],

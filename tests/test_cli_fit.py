@@ -20,7 +20,7 @@ ROOT = Path(__file__).resolve().parents[1]
 EXAMPLE = str(ROOT / "examples" / "bearing208_kuzmenko2014.csv")
 PAPER = ["--load-unit", "kgf", "--base", "200kgf:0.8mm", "--base", "1000kgf:1.67mm"]
 
-# Kuzmenko A.G., Sabadash B.M., Problems of Tribology, 2014 (seed 002), §2.2: eq. 2.1 n = 2.1875
+# Kuzmenko A.G., Sabadash B.M., Problems of Tribology, 2014, §2.2: eq. 2.1 n = 2.1875
 # (from lg 0.2 / lg(0.8/1.67) rounded to 0.7/0.32), eq. 2.2 C = 326 [kgf/mm^n], eq. 2.4 exponent
 # n - 1 = 1.19, and Table 2.1, last column sigma_bar for rows 1-10 (u = 0.68 ... 1.67 mm).
 PRINTED_N = 2.1875

@@ -1,4 +1,4 @@
-"""Seed 001: compensating clearances and the paper's fits, against an mpmath reference."""
+"""The compliance abstract: compensating clearances and the paper's fits, against an mpmath reference."""
 
 from __future__ import annotations
 

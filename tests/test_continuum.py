@@ -22,7 +22,7 @@ from bearingload.models.continuum import (
 KGF = 9.80665
 
 # Printed values of Kuzmenko A.G., "Load distribution between balls in a radial ball bearing",
-# Problems of Tribology, 2010, no. 1, pp. 29-41 (seed 000), §4 steps 4-5, compared with the exact
+# Problems of Tribology, 2010, no. 1, pp. 29-41, §4 steps 4-5, compared with the exact
 # values. "computed" is our value (checked against mpmath below); "difference" = printed - computed.
 DISAGREEMENTS = {
     "I = int_0^{pi/2} cos^{5/2} (§4, eq. (d))": {

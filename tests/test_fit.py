@@ -27,7 +27,7 @@ KGF = 9.80665
 EXAMPLE = Path(__file__).resolve().parents[1] / "examples" / "bearing208_kuzmenko2014.csv"
 
 # Kuzmenko A.G., Sabadash B.M. "Load distribution between the balls of a radial rolling bearing.
-# Part 2: solution by the variational-experimental method", Problems of Tribology, 2014 (seed 002),
+# Part 2: solution by the variational-experimental method", Problems of Tribology, 2014,
 # Table 2.1 "Test results", bearing 208 (z = 9), rows 1-10: Q [kgf], u0 [mm], u/u_max, sigma_bar,
 # as printed. The same numbers are shipped in examples/bearing208_kuzmenko2014.csv.
 TABLE_2_1 = np.array(
@@ -44,7 +44,7 @@ TABLE_2_1 = np.array(
         [1000, 1.67, 1.0, 1.0],
     ]
 )
-# Seed 002 §2.2: base points (eq. 2.1), printed n (eq. 2.1), C (eq. 2.2), exponent n - 1 = 1.19
+# Kuzmenko & Sabadash (2014) §2.2: base points (eq. 2.1), printed n (eq. 2.1), C (eq. 2.2), exponent n - 1 = 1.19
 # used for sigma_bar (eq. 2.4), theoretical K_Q for z = 9 quoted in §3 step 4, and the Table 2.2
 # cell for z/n1 = 9/5.
 BASE_POINTS_KGF = ((200.0, 0.8), (1000.0, 1.67))
@@ -180,7 +180,7 @@ def test_paper_normalised_distribution_columns():
 
 def test_paper_kq_claim_z9():
     """K_Q = k z/2 for z = 9 from the discrete Stribeck sum (Kuzmenko 2010 eq. 1.17), computed
-    here independently of the equilibrium engine, against seed 002's K_Q = 2.1870 and K_Q = n."""
+    here independently of the equilibrium engine, against the paper's K_Q = 2.1870 and K_Q = n."""
     z = 9
     with mp.workdps(30):
         step = 2 * mp.pi / z

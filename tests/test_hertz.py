@@ -1,4 +1,4 @@
-"""Tests of bearingload.contact.hertz: exact Hertz point contact, raceway contacts, line contact, seed 000.
+"""Tests of bearingload.contact.hertz: exact Hertz point contact, raceway contacts, line contact, Kuzmenko (2010).
 
 The reference for the elliptic-integral solution is independent code: mpmath's ellipk/ellipe
 (parameter m = e^2) and findroot at 30 digits, on the Legendre form of the Hertz equation,
@@ -462,7 +462,7 @@ def test_roller_two_contacts_in_series():
 
 
 # ---------------------------------------------------------------------------------------------
-# Seed 000 (Kuzmenko 2010, §3.4.2): bearing 306, the paper's procedure against the exact one
+# Kuzmenko (2010, §3.4.2): bearing 306, the paper's procedure against the exact one
 # ---------------------------------------------------------------------------------------------
 
 PAPER = kuzmenko2010_ball_constant()

@@ -9,7 +9,7 @@ from bearingload.bearings.life import ROLLER_LIFE_EXPONENT, allowable_load, rati
 from bearingload.errors import InputError
 
 # Kuzmenko A.G., "Load distribution between balls in a radial ball bearing", Problems of
-# Tribology, 2010 (seed 000), §3.2: allowable load Q = C / N^(1/3) for bearing 306,
+# Tribology, 2010, §3.2: allowable load Q = C / N^(1/3) for bearing 306,
 # C = 2200 kgf: "666 kgf" for N = 36 x 10^6 revolutions (printed to whole kgf).
 KUZMENKO2010_C_KGF = 2200.0
 KUZMENKO2010_ALLOWABLE_36_KGF = 666.0

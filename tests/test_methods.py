@@ -116,7 +116,7 @@ def test_one_line_estimates_have_no_load_zone_and_ignore_the_rest():
             with pytest.raises(InputError) as exc:
                 compute(name, *bad)
             assert exc.value.parameter == param
-    # Stribeck's K_Q = 4.37/2 and Palmgren's 5/2 for every z (seed 002's K_Q definition)
+    # Stribeck's K_Q = 4.37/2 and Palmgren's 5/2 for every z (the paper's K_Q definition)
     assert compute("stribeck", 17, 1.0, 1.0).K_Q == pytest.approx(2.185)
     assert compute("palmgren", 17, 1.0, 1.0).K_Q == pytest.approx(2.5)
 

@@ -1,4 +1,4 @@
-"""Seed 003: bearing radial stiffness, exact (against mpmath) and by the paper's procedure."""
+"""The crane paper (2009): bearing radial stiffness, exact (against mpmath) and by the paper's procedure."""
 
 from __future__ import annotations
 

@@ -9,8 +9,7 @@ Two data files, every row with a ``source`` column naming where its numbers came
   GOST 8338-75 in [1]_; that table gives no ball count, so z is derived from the old GOST
   static-capacity rule C0 = 1.25 z D_w^2 [kgf, mm] (exact for the seeds' 306 and 208;
   ambiguous for 209 and 307, see their notes). Rows 306 and 208 carry the numbers of the
-  source papers instead: seed 000 (Kuzmenko 2010, Table 2) and seed 002 (Kuzmenko & Sabadash
-  2014, section 2.1), with their ratings in kgf converted at 9.80665 N/kgf.
+  source papers instead: Kuzmenko (2010, Table 2) and Kuzmenko & Sabadash (2014, section 2.1), with their ratings in kgf converted at 9.80665 N/kgf.
 * ISO rows (``6000`` ... ``6416``): ratings and boundary dimensions from the NSK [2]_ (60xx,
   62xx, 63xx) and FBJ (64xx) catalogues; the ball set comes from ``ball_sets.csv``.
 
@@ -33,7 +32,7 @@ whose NSK inversion is inconclusive (6302) have no default set: name a maker.
 * Pitch diameter d_m = (d + D) / 2 for derived sets; read sets carry the published d_m.
 * Groove conformities f = r / D_w default to f_i = 0.52, f_o = 0.53 (the ISO/TS 16281
   convention for deep groove ball bearings); GOST 306 uses the paper's groove radius
-  1.03 D_w / 2, i.e. f_i = f_o = 0.515 (seed 000, section 3.4).
+  1.03 D_w / 2, i.e. f_i = f_o = 0.515 (section 3.4).
 
 References
 ----------
@@ -596,7 +595,7 @@ def lookup(
     z, dw = new.balls, new.ball_diameter
     dm = (new.d + new.D) / 2.0 if new.pitch_diameter is None else new.pitch_diameter
     if z is None or dw is None:
-        missing = [opt for opt, v in (("--balls", z), ("--ball-diameter", dw)) if v is None]
+        missing = [f"'{p}'" for p, v in (("balls", z), ("ball_diameter", dw)) if v is None]
         hint = ""
         other = _counterpart(row.parsed)
         if other is not None and other.has_geometry:
@@ -604,7 +603,9 @@ def lookup(
                 f", or use the {other.standard} designation {other.designation!r}, "
                 "whose ball set is known"
             )
-        sets = f" (choose a maker's set: --maker {' | '.join(row.makers)})" if row.makers else ""
+        sets = (
+            f" (choose a maker's set with 'maker': {' | '.join(row.makers)})" if row.makers else ""
+        )
         raise InputError(
             "bearing",
             f"{row.designation!r} is in the catalogue (d {row.d:g}, D {row.D:g}"

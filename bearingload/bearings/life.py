@@ -6,7 +6,7 @@ Lundberg-Palmgren / ISO 281 basic rating life, in millions of revolutions::
 
 with the basic dynamic load rating C and the equivalent dynamic load P (P = F_r for a purely
 radial load on a radial bearing). Solved for the load it gives the load a bearing may carry for
-L millions of revolutions, P = C / L^(1/p); Kuzmenko (2010, seed 000, §3.2) writes this as the
+L millions of revolutions, P = C / L^(1/p); Kuzmenko (2010, §3.2) writes this as the
 allowable load Q = C / N^(1/3) and works it for bearing 306 (C = 2200 kgf): 666 kgf for
 N = 36 x 10^6 revolutions.
 

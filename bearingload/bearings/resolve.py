@@ -360,8 +360,8 @@ def _ball_set(
     if stiffness is None and (dw is None or dm is None):
         raise InputError(
             "stiffness",
-            "give the ball stiffness, or the ball geometry (--ball-diameter and "
-            "--pitch-diameter), or a bearing designation",
+            "give the ball stiffness, or the ball geometry ('ball_diameter' and "
+            "'pitch_diameter'), or a bearing designation",
         )
     return _BallSet(None, int(balls), dw, dm, fi, fo, hand_bore, sources, [])
 

@@ -170,7 +170,7 @@ def roller_count(C0: float, roller_diameter: float, pitch_diameter: float) -> tu
         and z * roller_diameter <= MAX_FILL * math.pi * pitch_diameter
     ]
     if not admitted:
-        raise InputError("rollers", "no roller count fits the rating; give --balls")
+        raise InputError("rollers", "no roller count fits the rating; give 'balls'")
     best = min(admitted, key=lambda z: abs(zl / z / roller_diameter - LENGTH_RATIO))
     return best, admitted
 

@@ -20,6 +20,7 @@ COMMANDS = {
     "table": "table",
     "catalog": "catalog",
     "fit": "fit",
+    "batch": "batch",
     "accuracy": "accuracy",
     "stability": "stability",
 }
@@ -59,6 +60,7 @@ def main() -> None:
       bearingload sweep -z 9 --load 1kN --stiffness 1e5 --clearance 10um --steps 19
       bearingload catalog show 306
       bearingload fit examples/bearing208_kuzmenko2014.csv --load-unit kgf --balls 9
+      bearingload batch examples/cases.csv --format csv
     """
 
 
@@ -89,7 +91,9 @@ def run(argv: list[str] | None = None) -> None:
 
     try:
         _refuse_detached_units(sys.argv[1:] if argv is None else argv)
-        main.main(args=argv, prog_name="bearingload", standalone_mode=False)
+        status = main.main(args=argv, prog_name="bearingload", standalone_mode=False)
+        if isinstance(status, int) and status:  # ctx.exit(n) returns n without standalone mode
+            sys.exit(status)
     except click.exceptions.Exit as exc:
         sys.exit(exc.exit_code)
     except click.ClickException as exc:

@@ -71,14 +71,3 @@ def geometry_options(func: Callable[..., Any]) -> Callable[..., Any]:
     for option in reversed(options):
         func = option(func)
     return func
-
-
-def renamed(func: Callable[[], Any], names: dict[str, str]) -> Any:
-    """Call ``func``; an InputError of a parameter in ``names`` becomes that option's usage error."""
-    try:
-        return func()
-    except InputError as exc:
-        if exc.parameter not in names:
-            raise
-        message = str(exc).split(": ", 1)[-1]
-        raise click.UsageError(f"Invalid value for '{names[exc.parameter]}': {message}") from exc

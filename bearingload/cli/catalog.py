@@ -4,7 +4,6 @@ from __future__ import annotations
 
 import click
 
-from bearingload.cli.bearing_options import renamed
 from bearingload.cli.options import (
     CONTEXT,
     Quantity,
@@ -68,5 +67,5 @@ def show(designation: str, maker: str | None, fmt: str, output: str | None) -> N
     """
     from bearingload.reports.catalog import catalog_entry
 
-    text = renamed(lambda: catalog_entry(designation, fmt, maker), {"bearing": "DESIGNATION"})
+    text = catalog_entry(designation, fmt, maker)
     emit(text, output)

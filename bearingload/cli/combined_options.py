@@ -44,7 +44,7 @@ def combined_options(func: Callable[..., Any]) -> Callable[..., Any]:
         click.option(
             "--dynamic-rating",
             "-C",
-            type=Quantity("force"),
+            type=Quantity("force", positive=True),
             help="Basic dynamic load rating C_r for the lives, replacing the catalogue's (needed "
             "for a bearing given by hand). Units: N, kN, kgf (bare number: N).",
         ),

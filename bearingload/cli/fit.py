@@ -8,18 +8,9 @@ from typing import Any
 
 import click
 
-from bearingload.cli.options import CONTEXT, emit, output_options
+from bearingload.cli.options import CONTEXT, emit, output_options, usage_error
 from bearingload.errors import BearingloadError, InputError
 from bearingload.units import UNITS
-
-#: Library parameter names of this command -> the option the user typed.
-FIT_OPTIONS = {
-    "base": "--base",
-    "base_points": "--base",
-    "balls": "--balls",
-    "load_unit": "--load-unit",
-    "displacement_unit": "--displacement-unit",
-}
 
 
 def fit_errors(func: Callable[..., Any]) -> Callable[..., Any]:
@@ -35,13 +26,12 @@ def fit_errors(func: Callable[..., Any]) -> Callable[..., Any]:
         try:
             return func(*args, **kwargs)
         except InputError as exc:
-            message = str(exc)[len(exc.parameter) + 2 :]
             if path and exc.parameter.startswith(path):
+                message = str(exc)[len(exc.parameter) + 2 :]
                 where = exc.parameter[len(path) :].strip()
                 text = f"{where}: {message}" if where else message
                 raise click.UsageError(f"Invalid value for 'FILE': {text}") from exc
-            option = FIT_OPTIONS.get(exc.parameter, exc.parameter)
-            raise click.UsageError(f"Invalid value for '{option}': {message}") from exc
+            raise usage_error(exc) from exc
         except BearingloadError as exc:
             raise click.ClickException(str(exc)) from exc
 

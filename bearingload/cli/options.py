@@ -17,8 +17,9 @@ CONTEXT = {"help_option_names": ["-h", "--help"], "max_content_width": 100}
 class Quantity(click.ParamType):
     """A number with an optional unit suffix, converted to the package's internal unit."""
 
-    def __init__(self, kind: str) -> None:
+    def __init__(self, kind: str, *, positive: bool = False) -> None:
         self.kind = kind
+        self.positive = positive
         self.name = f"{kind} [{BASE_UNIT[kind]}]"
 
     def convert(
@@ -32,6 +33,8 @@ class Quantity(click.ParamType):
             self.fail(str(exc).split(": ", 1)[-1], param, ctx)
         if self.kind == "stiffness":
             return str(value)  # converted with the exponent by the command (stiffness_value)
+        if self.positive and not number > 0:
+            self.fail(f"must be greater than 0 {BASE_UNIT[self.kind]} (got {value})", param, ctx)
         return number
 
     def get_metavar(self, param: click.Parameter, ctx: click.Context | None = None) -> str:
@@ -163,6 +166,55 @@ OPTION_NAMES = {
 }
 
 
+#: Where a command calls a library parameter by another option name.
+COMMAND_OPTION_NAMES = {
+    "table": {"bearing": "--bearing"},
+    "catalog show": {"bearing": "DESIGNATION"},
+    "fit": {
+        "base": "--base",
+        "base_points": "--base",
+        "balls": "--balls",
+        "load_unit": "--load-unit",
+        "displacement_unit": "--displacement-unit",
+    },
+}
+
+
+def option_name(parameter: str) -> str:
+    """The option the user typed for a library parameter: the one map from the library's
+    parameter names to the command line's option names."""
+    ctx = click.get_current_context(silent=True)
+    command = " ".join(ctx.command_path.split()[1:]) if ctx is not None else ""
+    return COMMAND_OPTION_NAMES.get(command, {}).get(parameter) or OPTION_NAMES.get(
+        parameter, parameter
+    )
+
+
+def option_message(message: str) -> str:
+    """A library message with every quoted parameter name ('ball_diameter') written as the
+    option the user types ('--ball-diameter')."""
+    import re
+
+    def swap(match: re.Match[str]) -> str:
+        name = match.group(1)
+        return (
+            f"'{option_name(name)}'"
+            if name in OPTION_NAMES or name in _COMMAND_NAMES
+            else match.group(0)
+        )
+
+    return re.sub(r"'([a-z_]+)'", swap, message)
+
+
+_COMMAND_NAMES = {p for names in COMMAND_OPTION_NAMES.values() for p in names}
+
+
+def usage_error(exc: InputError) -> click.UsageError:
+    """The one ``Invalid value for '<option>': <message>`` of a library InputError."""
+    message = option_message(str(exc).split(": ", 1)[-1])
+    return click.UsageError(f"Invalid value for '{option_name(exc.parameter)}': {message}")
+
+
 def library_errors(func: Callable[..., Any]) -> Callable[..., Any]:
     """Turn library exceptions into one ``Error:`` line with exit status 2 (bad input) or 1."""
 
@@ -171,9 +223,7 @@ def library_errors(func: Callable[..., Any]) -> Callable[..., Any]:
         try:
             return func(*args, **kwargs)
         except InputError as exc:
-            option = OPTION_NAMES.get(exc.parameter, exc.parameter)
-            message = str(exc).split(": ", 1)[-1]
-            raise click.UsageError(f"Invalid value for '{option}': {message}") from exc
+            raise usage_error(exc) from exc
         except BearingloadError as exc:
             raise click.ClickException(str(exc)) from exc
 

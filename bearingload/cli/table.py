@@ -6,7 +6,7 @@ from typing import Any
 
 import click
 
-from bearingload.cli.bearing_options import CLEARANCE_HELP, Clearance, geometry_options, renamed
+from bearingload.cli.bearing_options import CLEARANCE_HELP, Clearance, geometry_options
 from bearingload.cli.options import (
     CONTEXT,
     Quantity,
@@ -148,15 +148,12 @@ def _bearing_conditions(
         raise click.UsageError(
             "Invalid value for '--exponent': a ball bearing (Hertz point contact) has m = 1.5"
         )
-    resolved = renamed(
-        lambda: resolve_bearing(
-            bearing,
-            stiffness=k_given,
-            clearance=clearance if clearance is not None else 0.0,
-            clearance_pick=clearance_pick,
-            **geometry,
-        ),
-        {"bearing": "--bearing"},
+    resolved = resolve_bearing(
+        bearing,
+        stiffness=k_given,
+        clearance=clearance if clearance is not None else 0.0,
+        clearance_pick=clearance_pick,
+        **geometry,
     )
     if resolved.kind != "ball":
         raise click.UsageError(

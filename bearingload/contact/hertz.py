@@ -36,7 +36,7 @@ long ellipses (``m -> 1``).
 Line contact (rollers) uses Palmgren's empirical steel formula, see
 :func:`palmgren_line_deflection`.
 
-Seed 000 (Kuzmenko 2010, §3.4.2) computes the ball stiffness of bearing 306 by a table
+Kuzmenko (2010, §3.4.2) computes the ball stiffness of bearing 306 by a table
 procedure; :func:`kuzmenko2010_ball_constant` repeats it step by step so it can be compared
 with the exact solution.
 """
@@ -214,7 +214,7 @@ def reduced_modulus(
     E_star : numpy scalar or ndarray
         [MPa]
 
-    >>> round(float(reduced_modulus(2.1e4, 0.3)), 1)  # seed 000, kgf/mm^2
+    >>> round(float(reduced_modulus(2.1e4, 0.3)), 1)  # Kuzmenko (2010), kgf/mm^2
     11538.5
     """
     e1 = _positive("E1", E1)
@@ -709,7 +709,7 @@ def roller_stiffness(
 
 
 class Kuzmenko2010BallConstant(NamedTuple):
-    """Seed 000, §3.4.2, step by step (kgf, mm, as in the paper)."""
+    """Kuzmenko (2010), §3.4.2, step by step (kgf, mm, as in the paper)."""
 
     e_star: float
     """E* = E / (2 (1 - nu^2)); printed 1.1538e4. [kgf/mm^2]"""
@@ -746,7 +746,7 @@ def kuzmenko2010_ball_constant(
     """Repeat the ball-stiffness procedure of Kuzmenko (2010), §3.4.2, bearing 306.
 
     Kuzmenko, *Load distribution between balls in a radial ball bearing*, Problems of
-    Tribology, 2010 (seed 000, eq. 3.3 and the worked example after it). The paper writes
+    Tribology, 2010 (eq. 3.3 and the worked example after it). The paper writes
     the Hertz approach of the ball-inner ring contact as u0 = c1 Q^(2/3) with
     c1 = 0.655 n_delta (sum_rho / E*^2)^(1/3), takes n_delta = 0.55 from a printed table at
     A/B = 0.0219, obtains c1 = 0.000425 and then reports c_v = 2350 = 1/c1 and

@@ -84,7 +84,7 @@ def palmgren(
     rows: Any = 1,
     contact_angle: Any = 0.0,
 ) -> Approximation:
-    """Palmgren's estimate ``Q_max = 5 F_r / (i z cos(alpha))`` (Palmgren 1959; seed 003, eq. 2).
+    """Palmgren's estimate ``Q_max = 5 F_r / (i z cos(alpha))`` (Palmgren 1959; the crane paper (2009), eq. 2).
 
     The factor 5 instead of Stribeck's 4.37 allows for a normal radial clearance.
 

@@ -14,7 +14,7 @@ from typing import Any
 import numpy as np
 
 from bearingload import validate
-from bearingload.errors import InputError
+from bearingload.validate import broadcast_shape
 
 #: The inputs of a case, in the order of every model's signature.
 INPUTS = ("balls", "load", "stiffness", "clearance", "cage_angle", "exponent")
@@ -138,22 +138,6 @@ class Result:
 RESULT_QUANTITIES = tuple(
     f.name for f in fields(Result) if f.name not in ("method", "case", "model", "valid")
 )
-
-
-def broadcast_shape(arrays: dict[str, np.ndarray]) -> tuple[int, ...]:
-    """The shape the arrays broadcast to; :class:`InputError` names them when they do not fit
-    or when there is no case at all."""
-    try:
-        shape = np.broadcast_shapes(*(np.shape(a) for a in arrays.values()))
-    except ValueError:
-        shapes = ", ".join(f"{k} {np.shape(v)}" for k, v in arrays.items() if np.ndim(v))
-        raise InputError(
-            ", ".join(k for k, v in arrays.items() if np.ndim(v)),
-            f"the array shapes do not broadcast together ({shapes})",
-        ) from None
-    if 0 in shape:
-        raise InputError(", ".join(arrays), "no case to solve: an input array is empty")
-    return tuple(shape)
 
 
 def scalar(value: Any) -> Any:

@@ -41,7 +41,7 @@ Conventions
 * Misalignment and the gaps: to second order in the tilt, ``delta_j`` loses
   ``R_i^2 theta^2 cos^2(phi_j) / (2 A) = R_i^2 theta^2 (1 + cos 2 phi_j) / (4 A)`` of gap, a
   constant part plus a ``cos 2 phi_j`` part, the structure of the gap law with misalignment in
-  the abstract on clearance and vibration (seed 001, eqs. 3a-4); the exact square root is used.
+  the abstract on clearance and vibration (eqs. 3a-4); the exact square root is used.
 
 Numerics. With ``K`` frozen per ball, the equilibrium is the minimum of the convex potential
 ``sum K_j/2.5 max(delta_j, 0)^2.5 - F_r x - F_a a - M theta`` (``delta_j`` is a norm of an
@@ -291,6 +291,7 @@ def axial_only(
     k = validate.positive("stiffness", stiffness, "N/mm^1.5")
     big_a = validate.positive("A", A, "mm")
     g = validate.finite("clearance", clearance) / 2.0
+    validate.broadcast_shape({"axial_load": f, "stiffness": k, "A": big_a, "clearance": g})
     z, f, k, big_a, g = np.broadcast_arrays(z, f, k, big_a, g)
     c = big_a - g  # radial distance of the groove centres
     gap2 = g * (2.0 * big_a - g)  # A^2 - c^2: u^2 at first contact (negative under preload)
@@ -413,6 +414,12 @@ def solve_combined(
     e = validate.positive("modulus", modulus, "MPa")
     nu = validate.finite("poisson", poisson)
     k_given = None if stiffness is None else validate.positive("stiffness", stiffness, "N/mm^1.5")
+    validate.broadcast_shape(
+        {"radial_load": fr, "axial_load": fa, "moment": mm, "misalignment": tilt_deg,
+         "cage_angle": cage, "modulus": e, "poisson": nu, "moment_cross": mc,
+         "ball_diameter": ball_diameter, "pitch_diameter": pitch_diameter, "f_i": f_i,
+         "f_o": f_o, "clearance": clearance}
+    )  # fmt: skip
     arrays = np.broadcast_arrays(
         fr,
         fa,

@@ -317,8 +317,9 @@ def solve_continuum(
     m = validate.exponent(exponent)
     if nodes is not None and not (isinstance(nodes, int) and 1 <= nodes <= 1000):
         raise InputError("nodes", f"must be a whole number from 1 to 1000, got {nodes!r}")
-    names = ("balls", "load", "stiffness", "clearance", "exponent")
-    shape = validate.broadcast(names, [z, force, k_ball, e, m])
+    shape = validate.broadcast_shape(
+        {"balls": z, "load": force, "stiffness": k_ball, "clearance": e, "exponent": m}
+    )
     z, force, k_ball, e, m = (
         np.array(np.broadcast_to(a, shape), dtype=float).ravel() for a in (z, force, k_ball, e, m)
     )

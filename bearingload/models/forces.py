@@ -124,7 +124,9 @@ def ring_forces(
     e = validate.finite("clearance", clearance) / 2.0
     phi1 = np.mod(validate.finite("cage_angle", cage_angle), 360.0)
     m = validate.exponent(exponent)
-    shape = np.broadcast_shapes(xs.shape, ys.shape, kk.shape, e.shape, phi1.shape, m.shape)
+    shape = validate.broadcast_shape(
+        {"x": xs, "y": ys, "stiffness": kk, "clearance": e, "cage_angle": phi1, "exponent": m}
+    )
     n = int(np.prod(shape))
     # x and y per case; a parameter shared by every case stays one value (length 1), so the
     # sums run on ball arrays shared by the whole block

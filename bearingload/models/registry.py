@@ -133,11 +133,13 @@ def _continuum_valid(case: Any, result: Any) -> Any:
 
 
 def _ball_zero_clearance(case: Any, result: Any) -> Any:
-    return (case.clearance == 0) & (case.exponent == 1.5)
+    """Stribeck: point contact, zero clearance, and k = 4.37/z <= 1 (z >= 5)."""
+    return (case.clearance == 0) & (case.exponent == 1.5) & (case.balls >= 5)
 
 
 def _ball_bearing(case: Any, result: Any) -> Any:
-    return case.exponent == 1.5
+    """Palmgren: point contact (normal clearance), and k = 5/z <= 1 (z >= 5)."""
+    return (case.exponent == 1.5) & (case.balls >= 5)
 
 
 def _build() -> dict[str, Method]:
@@ -161,7 +163,7 @@ def _build() -> dict[str, Method]:
             "bearingload.models.approximations",
             "stribeck",
             "Stribeck (1901): Q_max = 4.37 F_r/z",  # approximations.STRIBECK_CONSTANT
-            "ball bearings (m = 1.5) with zero clearance",
+            "ball bearings (m = 1.5) with zero clearance and at least 5 balls",
             _ball_zero_clearance,
         ),
         "palmgren": Method(
@@ -169,7 +171,7 @@ def _build() -> dict[str, Method]:
             "bearingload.models.approximations",
             "palmgren",
             "Palmgren (1959): Q_max = 5 F_r/z",  # approximations.PALMGREN_CONSTANT
-            "ball bearings (m = 1.5) with a normal clearance",
+            "ball bearings (m = 1.5) with a normal clearance and at least 5 balls",
             _ball_bearing,
         ),
     }

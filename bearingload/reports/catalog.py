@@ -41,8 +41,8 @@ def catalog_list(
             Column("pitch_diameter", "d_m", "mm", 5),
             Column("f_i", "f_i", "-", 3),
             Column("f_o", "f_o", "-", 3),
-            Column("C", "C", "kN", 4),
-            Column("C0", "C0", "kN", 4),
+            Column("C", "C", "N", 5),
+            Column("C0", "C0", "N", 5),
             Column("maker", "ball set", align="left"),
         ],
         rows=rows,
@@ -67,8 +67,8 @@ def _row(b: BearingGeometry) -> dict[str, Any]:
         "pitch_diameter": b.pitch_diameter if b.pitch_diameter is not None else "-",
         "f_i": b.f_i,
         "f_o": b.f_o,
-        "C": b.C / 1e3 if b.C is not None else "-",
-        "C0": b.C0 / 1e3 if b.C0 is not None else "-",
+        "C": b.C if b.C is not None else "-",
+        "C0": b.C0 if b.C0 is not None else "-",
         "maker": f"{b.maker} ({b.method})" if b.maker else "-",
     }
 

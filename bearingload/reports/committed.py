@@ -31,14 +31,14 @@ def _registry() -> dict[str, Callable[[], Table]]:
         "table2_kq_306_300kgf_gr20um": lambda: kuzmenko2010_306_table("kq", 0.020),
         "table1_k_306_300kgf_gr100um": lambda: kuzmenko2010_306_table("k", 0.100),
         "table2_kq_306_300kgf_gr100um": lambda: kuzmenko2010_306_table("kq", 0.100),
-        # exact, continuum, Stribeck and Palmgren side by side (issue 4), Table 1 conditions
+        # exact, continuum, Stribeck and Palmgren side by side, Table 1 conditions
         "k_methods_zero_clearance": lambda: design_table("k", 30, method="all"),
-        # the papers of issue 8: Kurochkin 1973 cells that differ, seed 001 fits, seed 003 stiffness
+        # the papers of the turning cage: Kurochkin 1973 cells that differ, the compliance abstract fits, the crane paper (2009) stiffness
         "kurochkin1973_differences": differences_table,
         "kurochkin1973_example1": example1_moment_table,
         "compliance_fits": fit_table,
         "stiffness_seed003": stiffness_table,
-        # ISO/TS 16281 L10r against clearance, 6205, radial and combined load (issue 11)
+        # ISO/TS 16281 L10r against clearance, 6205, radial and combined load
         "life_vs_clearance_6205": life_vs_clearance_table,
         # work-precision of every method (issue 9): errors and iterations, no times
         "accuracy": accuracy_table,

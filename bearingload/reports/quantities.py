@@ -124,6 +124,7 @@ QUANTITIES: dict[str, Quantity] = {
         Quantity("reference_rating_life", "reference rating life L10r (ISO/TS 16281)", "10^6 rev"),
         # per ball
         Quantity("ball", "ball", "", None),
+        Quantity("row", "row", "", None),  # bearingload batch: the input file's row (header: 1)
         Quantity("ball_angles_deg", "angle", "°"),
         Quantity("ball_approaches", "approach delta", "mm", display=_UM),
         Quantity("ball_loads", "load Q", "N"),

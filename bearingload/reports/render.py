@@ -194,6 +194,122 @@ def _machine_tree(obj: Any) -> Any:
     return machine_number(obj)
 
 
+def csv_header(columns: Sequence[Column]) -> str:
+    """The csv header line of ``columns`` (with its line end), as :func:`render` writes it."""
+    return ",".join(_csv_header(c) for c in columns) + "\n"
+
+
+def csv_block(columns: Sequence[Column], values: dict[str, Sequence[Any]]) -> str:
+    """csv lines (each with its line end) of column-wise ``values`` (key -> list; None: blank).
+
+    The cells are those :func:`render` writes for the same rows (floats at 10 significant
+    digits), built column by column and joined by one printf-style format per line, so that a
+    long table is written in chunks at the cost of little more than one format per number.
+    """
+    specs, cells = [], []
+    for c in columns:
+        vals = values[c.key]
+        types = set(map(type, vals))
+        if types == {float}:
+            spec, col = _float_column(c.key, vals)
+        elif types == {int}:
+            spec, col = "%d", vals
+        elif types <= {float, type(None)}:
+            spec, col = "%s", _float_cells(c.key, vals)
+        else:
+            cache: dict[Any, str] = {}
+            spec = "%s"
+            col = [cache[v] if v in cache else cache.setdefault(v, _cell(v)) for v in vals]
+        specs.append(spec)
+        cells.append(col)
+    line = ",".join(specs) + "\n"
+    return "".join(map(line.__mod__, zip(*cells, strict=True)))
+
+
+def _cell(value: Any) -> str:
+    return "" if value is None else _csv_cell(_machine_text(value))
+
+
+def _float_column(key: str, vals: Sequence[float]) -> tuple[str, Sequence[Any]]:
+    """A float column as ``("%.10g", values)`` where that prints what :func:`machine_number`
+    gives, else as ``("%s", texts)``: the ``.10g`` text is ``repr(float(.10g text))`` but
+    for whole numbers (no ``.0``), |v| >= 1e10 and subnormal or huge exponents."""
+    import numpy as np
+
+    a = np.abs(np.asarray(vals, dtype=float))
+    if not np.all(np.isfinite(a)):
+        raise ValueError(f"refusing to write a non-finite number in column {key!r}")
+    with np.errstate(all="ignore"):
+        near_whole = np.abs(a - np.round(a)) <= 1e-9 * np.maximum(a, 1.0)
+    odd = np.flatnonzero(near_whole | (a >= 1e9) | (a < 1e-290))
+    if odd.size == 0:
+        return f"%.{MACHINE_DIGITS}g", vals
+    texts = list(map(f"{{:.{MACHINE_DIGITS}g}}".format, vals))
+    cache: dict[Any, str] = {}
+    for i in odd.tolist():
+        v = vals[i]
+        key = v if v else repr(v)  # 0.0 and -0.0 print differently
+        texts[i] = cache[key] if key in cache else cache.setdefault(key, _machine_text(v))
+    return "%s", texts
+
+
+def _float_cells(key: str, vals: Sequence[Any]) -> list[str]:
+    """``repr(float(f"{v:.10g}"))`` of every value (as :func:`machine_number`; None: blank)."""
+    numbers = [v for v in vals if v is not None]
+    if not all(map(math.isfinite, numbers)):
+        raise ValueError(f"refusing to write a non-finite number in column {key!r}")
+    fmt = f"{{:.{MACHINE_DIGITS}g}}".format
+    texts = [fmt(v) if v is not None else "" for v in vals]
+    return [
+        (t + ".0" if t else t)
+        if "." not in t and "e" not in t
+        else (repr(float(t)) if "e+1" in t or "e+3" in t or "e-3" in t else t)
+        for t in texts
+    ]
+
+
+class atomic_file:
+    """``with atomic_file(path) as fh:`` write ``fh``; the file appears whole when the block ends
+    without an exception, and is left as it was when it raises (see :func:`write_atomic`)."""
+
+    def __init__(self, path: str) -> None:
+        self.path = path
+        self.tmp: str | None = None
+        self.fh: Any = None
+
+    def __enter__(self) -> Any:
+        real = os.path.realpath(self.path)
+        if os.path.isdir(real):
+            raise IsADirectoryError(21, "is a directory", self.path)
+        self.real = real
+        if os.path.exists(real) and not os.path.isfile(real):
+            self.fh = open(real, "w", encoding="utf-8", newline="\n")  # noqa: SIM115
+            return self.fh
+        if os.path.exists(real):
+            self.mode = os.stat(real).st_mode & 0o7777
+        else:
+            umask = os.umask(0)
+            os.umask(umask)
+            self.mode = 0o666 & ~umask
+        import tempfile  # imported here: it costs more than the rest of a terminal run's rendering
+
+        fd, self.tmp = tempfile.mkstemp(prefix=".bearingload-", dir=os.path.dirname(real))
+        self.fh = os.fdopen(fd, "w", encoding="utf-8", newline="\n")
+        return self.fh
+
+    def __exit__(self, kind: Any, exc: Any, tb: Any) -> None:
+        try:
+            if self.tmp is not None and kind is None:
+                self.fh.flush()
+                os.fchmod(self.fh.fileno(), self.mode)
+            self.fh.close()
+            if self.tmp is not None and kind is None:
+                os.replace(self.tmp, self.real)
+        finally:
+            if self.tmp is not None and os.path.exists(self.tmp):
+                os.unlink(self.tmp)
+
+
 def write_atomic(text: str, path: str) -> None:
     """Write ``text`` to ``path`` whole or not at all.
 
@@ -204,29 +320,5 @@ def write_atomic(text: str, path: str) -> None:
     link stays). Something that exists but cannot be replaced (a device, a FIFO) is written to
     directly. Raises OSError (e.g. IsADirectoryError) when the path cannot be written.
     """
-    real = os.path.realpath(path)
-    if os.path.isdir(real):
-        raise IsADirectoryError(21, "is a directory", path)
-    if os.path.exists(real) and not os.path.isfile(real):
-        with open(real, "w", encoding="utf-8", newline="\n") as fh:
-            fh.write(text)
-        return
-    if os.path.exists(real):
-        mode = os.stat(real).st_mode & 0o7777
-    else:
-        umask = os.umask(0)
-        os.umask(umask)
-        mode = 0o666 & ~umask
-    import tempfile  # imported here: it costs more than the rest of a terminal run's rendering
-
-    fd, tmp = tempfile.mkstemp(prefix=".bearingload-", dir=os.path.dirname(real))
-    try:
-        with os.fdopen(fd, "w", encoding="utf-8", newline="\n") as fh:
-            fh.write(text)
-            fh.flush()
-            os.fchmod(fh.fileno(), mode)
-        os.replace(tmp, real)
-    except BaseException:
-        if os.path.exists(tmp):
-            os.unlink(tmp)
-        raise
+    with atomic_file(path) as fh:
+        fh.write(text)

@@ -102,7 +102,7 @@ def column(key: str, exponent: float | None = None, header: str | None = None) -
     return Column(key, header or q.label, unit, q.digits, align)
 
 
-_COUNTS = {"balls", "loaded_balls", "ball", "iterations"}
+_COUNTS = {"balls", "loaded_balls", "ball", "iterations", "row"}
 
 
 def _case_table(records: Sequence[dict[str, Any]]) -> Table:

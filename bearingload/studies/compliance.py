@@ -1,7 +1,7 @@
-"""Varying compliance (seed 001): the ring position between "a ball under the load" and "the load
+"""Varying compliance: the ring position between "a ball under the load" and "the load
 between two balls", the clearance that compensates it, and the paper's power-law fits.
 
-The conference abstract on clearance, cage position and vibration (seed 001; DOMAIN.md §6)
+The conference abstract on clearance, cage position and vibration (DOMAIN.md §6)
 compares the cage angles ``phi_1 = 0`` and ``phi_1 = 180/z``: the ring moves elastically (``δα``)
 and kinematically (``δS``) between them, and a clearance exists at which the two cancel so the
 ring keeps its place. Here that condition is solved exactly, ``x(0) = x(180/z)`` with the
@@ -27,7 +27,7 @@ from bearingload.errors import InputError
 from bearingload.models.equilibrium import solve
 from bearingload.reports.render import Column, Table
 
-SOURCE = "Varying-compliance abstract (seed 001), eqs. (7)-(9)"
+SOURCE = "Varying-compliance abstract, eqs. (7)-(9)"
 #: The paper's fits: α/S0 = a (P̄/z)^0.6, δα/S0 = 0.076 (P̄/z)^0.6, sin(2π/z) = 0.152 (P̄/z)^0.6
 FIT_EXPONENT = 0.6
 FIT_A_BALL = 2.855
@@ -95,7 +95,7 @@ def compensating_clearances(
 ) -> list[float]:
     """Every clearance at which the ring sits at the same place for cage angles 0 and 180/z. [mm]
 
-    Solves ``x(0) = x(180/z)`` for ``G_r`` exactly (seed 001: "δα = δS", the clearance that removes
+    Solves ``x(0) = x(180/z)`` for ``G_r`` exactly (the compliance abstract: "δα = δS", the clearance that removes
     the kinematic excitation at z times the cage frequency). The difference is scanned in
     ``u = asinh(e/s)`` (``s = (F/K)^(1/m)``, ``e = G_r/2``), each sign change refined by brentq to
     ``xtol = 1e-12 s``. There may be none, one or several: each ball entering or leaving contact
@@ -219,7 +219,7 @@ def fit_table() -> Table:
             Column(f"{key}_error", f"{label} fit error", "%", 3),
         ]
     return Table(
-        title="Seed 001 fits (7) α/S0 = a (P̄/z)^0.6 (a = 2.855 at φ1 = 0, 2.773 at φ1 = π/z) "
+        title="The compliance abstract fits (7) α/S0 = a (P̄/z)^0.6 (a = 2.855 at φ1 = 0, 2.773 at φ1 = π/z) "
         "and (8) δα/S0 = 0.076 (P̄/z)^0.6 against the exact ring equilibrium",
         columns=cols,
         rows=fit_rows(),
@@ -249,7 +249,7 @@ def _best_coefficient(key: str, pbar_z: np.ndarray) -> tuple[float, float]:
 
 
 def compliance_rows() -> list[dict[str, Any]]:
-    """The printed constants of seed 001, eqs. (7)-(9), against the exact model.
+    """The printed constants of the compliance abstract, eqs. (7)-(9), against the exact model.
 
     Keys as :func:`bearingload.studies.kurochkin_errata.kurochkin1973_rows`: ``source``,
     ``table``, ``cell``, ``printed``, ``computed``, ``difference``, ``verdict``, ``cause``.

@@ -1,6 +1,6 @@
-"""Radial stiffness of ball and roller bearings: the exact equilibrium against seed 003's procedure.
+"""Radial stiffness of ball and roller bearings: the exact equilibrium against the crane paper's (2009) procedure.
 
-Seed 003 (radial stiffness of rolling bearings for crane dynamics, 2009) estimates a bearing's
+The crane paper (radial stiffness of rolling bearings for crane dynamics, 2009) estimates a bearing's
 stiffness in four steps (its conclusions): (20) the load of the most loaded element
 ``Q0 = 5 F_r/(i z cos α)``; (19) the other loads from it, ``Q_j = Q0 cos^m(j γ)`` with ``γ = 2π/z``
 (22); (18) each element's stiffness ``c_j = Q_j/δ_j`` (its eq. 6, a secant); (21) the bearing's
@@ -29,7 +29,7 @@ from bearingload.errors import InputError
 from bearingload.models.equilibrium import solve
 from bearingload.reports.render import Column, Table
 
-SOURCE = "Crane-bearing stiffness (seed 003, 2009), eqs. (19)-(22)"
+SOURCE = "Crane-bearing stiffness (2009), eqs. (19)-(22)"
 
 
 class RadialStiffness(NamedTuple):
@@ -120,7 +120,7 @@ def roller_element_stiffness(roller_diameter: Any, effective_length: Any) -> Any
 
 
 class Seed003Result(NamedTuple):
-    """Seed 003's procedure, step by step."""
+    """The crane paper's (2009) procedure, step by step."""
 
     q0: float
     """(20) Q0 = 5 F_r/(i z cos α). [N]"""
@@ -140,7 +140,7 @@ def seed003_stiffness(
     rows: int = 1,
     contact_angle: float = 0.0,
 ) -> Seed003Result:
-    """The bearing stiffness by seed 003's procedure (module docstring). Units as
+    """The bearing stiffness by the crane paper's (2009) procedure (module docstring). Units as
     :func:`radial_stiffness`; zero clearance is implied by (19)."""
     z = int(validate.ball_count(balls))
     a = float(_angle(contact_angle))
@@ -181,7 +181,7 @@ def _cases() -> list[tuple[str, int, float, float, float, int, float]]:
 
 
 def comparison_rows() -> list[dict[str, Any]]:
-    """Exact tangent/secant stiffness and Q_max against seed 003's procedure for :data:`CASES`."""
+    """Exact tangent/secant stiffness and Q_max against the crane paper's (2009) procedure for :data:`CASES`."""
     out = []
     for label, z, load, k, m, rows, alpha in _cases():
         exact = radial_stiffness(z, load, k, 0.0, 0.0, m, rows, alpha)
@@ -211,21 +211,21 @@ def stiffness_table() -> Table:
         Column("load", "F_r", "N", 5),
         Column("stiffness", "K", "N/mm^m", 5),
         Column("exponent", "m", "-", 4),
-        Column("q0_paper", "Q0 seed 003 (20)", "N", 5),
+        Column("q0_paper", "Q0 crane paper (20)", "N", 5),
         Column("q_max", "Q_max exact", "N", 5),
-        Column("c_paper", "c seed 003 (21)", "N/mm", 5),
+        Column("c_paper", "c crane paper (21)", "N/mm", 5),
         Column("tangent", "tangent exact", "N/mm", 5),
         Column("secant", "secant exact", "N/mm", 5),
         Column("paper_over_tangent", "(21)/tangent", "-", 4),
         Column("paper_over_secant", "(21)/secant", "-", 4),
     ]
     return Table(
-        title="Radial bearing stiffness: seed 003's procedure against the exact equilibrium "
+        title="Radial bearing stiffness: the crane paper's (2009) procedure against the exact equilibrium "
         "(zero clearance, a ball or roller under the load)",
         columns=cols,
         rows=comparison_rows(),
         notes=(
-            "Seed 003: Q0 = 5 F_r/(i z cos α) (20), Q_j = Q0 cos^m(jγ) (19), c_j = Q_j/δ_j (18), "
+            "The crane paper (2009): Q0 = 5 F_r/(i z cos α) (20), Q_j = Q0 cos^m(jγ) (19), c_j = Q_j/δ_j (18), "
             "c = i cos α [c_0 + 2 Σ c_j cos(jγ)] (21), γ = 2π/z (22). Exact: each row carries "
             "F_r/i with radial element stiffness K cos^(m+1) α; tangent dF_r/dx, secant F_r/x.",
             "Why they differ: (a) the factor 5 in (20) is Stribeck's allowance for clearance; at "
@@ -244,7 +244,7 @@ def stiffness_table() -> Table:
 
 
 def stiffness_rows() -> list[dict[str, Any]]:
-    """Seed 003's printed constants against exact values (keys as ``kurochkin1973_rows``)."""
+    """The crane paper's (2009) printed constants against exact values (keys as ``kurochkin1973_rows``)."""
     rows = []
     for z, m in ((8, 1.5), (12, 1.5), (1000, 1.5), (14, LINE_EXPONENT), (1000, LINE_EXPONENT)):
         r = solve(z, 1.0, 1.0, 0.0, 0.0, m)

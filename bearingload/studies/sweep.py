@@ -3,7 +3,7 @@
 As the cage turns one pitch ``360/z`` the load passes from "a ball under the load" (cage angle 0)
 to "the load between two balls" (``180/z``) and back; the inner-ring position, the heaviest ball
 load and the stiffness change periodically, z times per cage revolution: the varying compliance
-that excites bearing vibration (Kurochkin 1973; the varying-compliance abstract of seed 001;
+that excites bearing vibration (Kurochkin 1973; the varying-compliance abstract;
 Sunnersjö 1978). All cage positions are solved in one vectorised call of the exact engine
 (:func:`bearingload.models.equilibrium.solve`). Conventions are the engine's: outer ring fixed,
 radial load on the inner ring along +x, angles from the load line, ball 1 at the cage angle.

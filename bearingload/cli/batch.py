@@ -1,0 +1,223 @@
+"""``bearingload batch``: many cases from a csv file, one output row per case."""
+
+from __future__ import annotations
+
+import sys
+import time
+from typing import Any, TextIO
+
+import click
+
+from bearingload.cli.options import CONTEXT, library_errors, output_options
+
+#: Rows read, solved and written at a time (memory stays flat however long the file).
+CHUNK_ROWS = 50_000
+
+
+@click.command(context_settings=CONTEXT)
+@click.argument("cases", type=click.File("r", encoding="utf-8-sig"), metavar="CASES.csv")
+@click.option(
+    "--strict",
+    is_flag=True,
+    help="Stop at the first bad row (exit 2) and write nothing, instead of skipping it.",
+)
+@click.option(
+    "--chunk-size",
+    type=click.IntRange(min=1),
+    default=CHUNK_ROWS,
+    show_default=True,
+    help="Rows read, solved and written at a time; the output does not depend on it.",
+)
+@output_options
+@library_errors
+def batch(cases: TextIO, strict: bool, chunk_size: int, fmt: str, output: str | None) -> None:
+    """Solve every case (row) of a csv file: one output row per case, in input order, with the
+    input file's row number (the header is row 1), the inputs and the columns that
+    'bearingload solve --format csv' writes for one case.
+
+    CASES.csv ('-': standard input) names its columns like the options of 'solve': load
+    (required), balls and stiffness, or bearing (a catalogue designation) and/or the ball
+    geometry (ball_diameter, pitch_diameter, inner_conformity, outer_conformity, modulus,
+    poisson), clearance (a length or a class C2 CN C3 C4 C5) with clearance_pick (min, mean,
+    max), cage_angle (degrees or 'half'), exponent, method, revolutions. A missing column or
+    an empty cell takes solve's default. A unit in the header (load [kN]) is the unit of the
+    column's bare numbers; a number with its own unit (300kgf) keeps it. An unknown column is
+    an error (exit 2); the combined load (axial_load ...) is not read by batch yet.
+
+    A bad row (a negative load, an unknown unit or bearing, z = 0, a line with the wrong
+    number of cells) is named on standard error with its row number and the reason; the other
+    rows are still solved and written, and the exit status is 1 when any row was skipped
+    (0: every row solved; 2: bad command line or header, or a bad row with --strict).
+
+    The rows of one method are solved together, chunk by chunk, by one vectorised call of
+    the model. csv is streamed (any number of rows, -o written whole at the end); json,
+    markdown and table hold every row and refuse files over 100000 rows.
+
+    \b
+    Examples:
+      # the example file: rings given by hand, catalogue bearings 306 and 6306, two methods
+      bearingload batch examples/cases.csv --format csv
+      # a design sweep from a script, read from standard input, written whole to a file
+      python make_cases.py | bearingload batch - --format csv -o results.csv
+      # stop at the first bad row, write nothing
+      bearingload batch examples/cases.csv --strict --format json
+    """
+    from bearingload.errors import InputError
+    from bearingload.reports.batch import MAX_HELD_ROWS, batch_columns, csv_head, csv_rows
+    from bearingload.studies.batch import BatchSolver
+    from bearingload.studies.batch_input import chunks
+
+    if output == "":
+        raise click.UsageError("Invalid value for '-o' / '--output': the file name is empty")
+    try:
+        stream = chunks(cases, chunk_size)
+        first = next(stream, None)
+    except InputError as exc:
+        raise click.UsageError(_header_message(exc)) from exc
+    except UnicodeDecodeError as exc:
+        raise click.UsageError(_not_text(exc)) from exc
+    assert first is not None  # chunks() yields the header at least once
+    header = first[0]
+    columns = batch_columns(header)
+    solver = BatchSolver(header)
+    held: dict[str, list[Any]] = {}
+    held_rows: list[int] = []
+    skipped: list[tuple[int, str]] = []
+    progress = _Progress()
+    total = 0
+    with _Sink(fmt, output, strict) as sink:
+        if fmt == "csv":
+            sink.write(csv_head(columns))
+        for _, lines in _decoded(_all(first, stream)):
+            total += len(lines)
+            part = solver.solve(lines)
+            if part.errors and strict:
+                sink.fail()
+                row, message = part.errors[0]
+                raise click.UsageError(f"Invalid value in row {row}: {message}")
+            for row, message in part.errors:
+                progress.clear()
+                click.echo(f"Warning: row {row}: {message}", err=True)
+            skipped += part.errors
+            if fmt == "csv":
+                if part.rows:
+                    sink.write(csv_rows(columns, part.rows, part.values))
+            else:
+                held_rows += part.rows
+                if len(held_rows) > MAX_HELD_ROWS:
+                    sink.fail()
+                    raise click.UsageError(
+                        f"Invalid value for '--format': {fmt} holds every row and takes at most "
+                        f"{MAX_HELD_ROWS} rows; write --format csv for longer files"
+                    )
+                for k, v in part.values.items():
+                    held.setdefault(k, []).extend(v)
+            progress.update(total)
+        progress.clear()
+        if fmt != "csv":
+            from bearingload.reports.batch import held_report
+
+            if not held_rows:
+                held = {c.key: [] for c in columns if c.key != "row"}
+            sink.write(held_report(columns, held_rows, held, skipped, fmt))
+    if skipped:
+        click.echo(f"Warning: {len(skipped)} of {total} rows skipped (exit status 1)", err=True)
+        click.get_current_context().exit(1)
+
+
+def _all(first: Any, rest: Any) -> Any:
+    yield first
+    yield from rest
+
+
+def _decoded(parts: Any) -> Any:
+    """The chunks; a byte that is not UTF-8 is a usage error (nothing is written)."""
+    try:
+        yield from parts
+    except UnicodeDecodeError as exc:
+        raise click.UsageError(_not_text(exc)) from exc
+
+
+def _not_text(exc: UnicodeDecodeError) -> str:
+    return f"Invalid value for 'CASES.csv': not UTF-8 text ({exc.reason} at byte {exc.start})"
+
+
+def _header_message(exc: Exception) -> str:
+    """'Invalid value for ...' of an error in the header line (a column's unit names it)."""
+    if getattr(exc, "parameter", None) in ("CASES", "columns"):
+        return f"Invalid value for 'CASES.csv': {str(exc).split(': ', 1)[-1]}"
+    return f"Invalid value for 'CASES.csv' header: {exc}"
+
+
+class _Sink:
+    """Where the report goes: a temporary file renamed over ``-o FILE`` at the end, a spool
+    copied to standard output at the end (``--strict``: nothing is written before the last row
+    is known to be good), or standard output chunk by chunk."""
+
+    def __init__(self, fmt: str, output: str | None, strict: bool) -> None:
+        self.output = None if output in (None, "-") else output
+        self.spool = strict and self.output is None
+        self.failed = False
+
+    def __enter__(self) -> _Sink:
+        if self.output is not None:
+            from bearingload.reports.render import atomic_file
+
+            self.atomic: Any = atomic_file(self.output)
+            try:
+                self.fh = self.atomic.__enter__()
+            except OSError as exc:
+                raise click.UsageError(
+                    f"Invalid value for '-o' / '--output': cannot write {self.output!r}: "
+                    f"{exc.strerror}"
+                ) from exc
+        elif self.spool:
+            import tempfile
+
+            self.fh = tempfile.TemporaryFile("w+", encoding="utf-8", newline="\n")
+        return self
+
+    def write(self, text: str) -> None:
+        if self.output is None and not self.spool:
+            click.echo(text, nl=False)
+        else:
+            self.fh.write(text)
+
+    def fail(self) -> None:
+        self.failed = True
+
+    def __exit__(self, kind: Any, exc: Any, tb: Any) -> None:
+        bad = kind is not None or self.failed
+        if self.output is not None:
+            try:
+                self.atomic.__exit__(RuntimeError if bad else None, None, None)
+            except OSError as error:
+                raise click.UsageError(
+                    f"Invalid value for '-o' / '--output': cannot write {self.output!r}: "
+                    f"{error.strerror}"
+                ) from error
+        elif self.spool:
+            if not bad:
+                self.fh.seek(0)
+                while block := self.fh.read(1 << 20):
+                    click.echo(block, nl=False)
+            self.fh.close()
+
+
+class _Progress:
+    """Rows done, on standard error when it is a terminal and the run has taken over a second."""
+
+    def __init__(self) -> None:
+        self.start = time.monotonic()
+        self.tty = sys.stderr.isatty()
+        self.shown = False
+
+    def update(self, rows: int) -> None:
+        if self.tty and time.monotonic() - self.start > 1.0:
+            click.echo(f"\rbatch: {rows} rows solved or skipped", err=True, nl=False)
+            self.shown = True
+
+    def clear(self) -> None:
+        if self.shown:
+            click.echo("\r" + " " * 40 + "\r", err=True, nl=False)
+            self.shown = False

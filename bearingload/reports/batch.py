@@ -1,0 +1,79 @@
+"""The report of ``bearingload batch``: one row per solved case, the columns of ``solve``.
+
+The columns are ``row`` (the input file's row, header = 1) and then those ``bearingload solve
+--format csv`` writes for one case (:data:`bearingload.reports.solve.INPUT_KEYS` and
+``ANSWER_KEYS``, headers through :mod:`bearingload.reports.quantities`). They are fixed by the
+file's header, so that every chunk of a long file has the same columns: the bearing columns
+(``bearing``, ``clearance_pick``, contact pressures, life) only when the file can name a bearing
+or a ball geometry, ``epsilon`` only with a ``method`` column.
+"""
+
+from __future__ import annotations
+
+from collections.abc import Sequence
+from typing import Any
+
+from bearingload.reports.render import Column, Table, csv_block, csv_header, render
+from bearingload.reports.solve import ANSWER_KEYS, INPUT_KEYS, column
+from bearingload.studies.batch_input import Header
+
+#: The most rows json, markdown and table hold in memory (csv is streamed without a limit).
+MAX_HELD_ROWS = 100_000
+_BEARING_ONLY = (
+    "bearing",
+    "clearance_pick",
+    "p_max_inner",
+    "p_max_outer",
+    "rating_life",
+    "revolutions",
+    "allowable_load",
+)
+
+
+def batch_columns(header: Header) -> list[Column]:
+    """The output columns for a file with ``header``."""
+    keys = ["row", *INPUT_KEYS, *(k for k in ANSWER_KEYS if k != "relative_error"), "valid"]
+    if not header.has_bearing:
+        keys = [k for k in keys if k not in _BEARING_ONLY]
+    if "method" not in header.names:
+        keys.remove("epsilon")
+    exponent = None if "exponent" in header.names else 1.5
+    return [column(k, exponent) for k in keys]
+
+
+def csv_head(columns: Sequence[Column]) -> str:
+    """The csv header line."""
+    return csv_header(columns)
+
+
+def csv_rows(columns: Sequence[Column], rows: Sequence[int], values: dict[str, Any]) -> str:
+    """The csv lines of one solved chunk."""
+    return csv_block(columns, {"row": rows} | values)
+
+
+def held_report(
+    columns: Sequence[Column],
+    rows: Sequence[int],
+    values: dict[str, list[Any]],
+    skipped: Sequence[tuple[int, str]],
+    fmt: str,
+) -> str:
+    """The whole report in ``fmt`` (json, markdown, table) from every solved row."""
+    keys = [c.key for c in columns]
+    data = {"row": list(rows)} | values
+    records = [dict(zip(keys, r, strict=True)) for r in zip(*(data[k] for k in keys), strict=True)]
+    if fmt == "json":
+        doc = {
+            "cases": records,
+            "skipped": [{"row": r, "reason": m} for r, m in skipped],
+            "units": {c.key: c.unit for c in columns if c.unit},
+        }
+        return render([], "json", document=doc)
+    rows_out = [
+        {k: "" if v is None else str(v) if isinstance(v, bool) else v for k, v in r.items()}
+        for r in records
+    ]
+    columns = [Column(c.key, c.key, c.unit, c.digits, c.align) for c in columns]  # short heads
+    notes = [f"Row {r} skipped: {m}" for r, m in skipped]
+    title = f"{len(records)} cases (row: the input file's row, the header is row 1)"
+    return render([Table(title, columns, rows_out, notes)], fmt)

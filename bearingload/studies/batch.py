@@ -1,0 +1,475 @@
+"""Many cases at once: the computation behind ``bearingload batch``.
+
+A chunk of rows of a case file (:mod:`bearingload.studies.batch_input`) is read cell by cell,
+each row checked on its own, and then every row of one method is solved by ONE vectorised call
+of the registered model (:mod:`bearingload.models.registry`, e.g. the exact ring equilibrium
+:func:`bearingload.models.equilibrium.solve`, which broadcasts over arrays). A catalogue bearing
+is resolved once per distinct (designation, overrides, clearance) and its z, K, G_r enter the
+same arrays. Should a vectorised call still fail, that method's rows of the chunk are solved one
+by one, so the offending row is named and the others are kept. Each case's answer depends on its
+own row only: the engine solves every case independently.
+
+The quantities are those of :func:`bearingload.studies.loaded_bearing.case_values` (the keys of
+:mod:`bearingload.reports.quantities`), as arrays over the rows.
+"""
+
+from __future__ import annotations
+
+from dataclasses import dataclass, field
+from typing import Any
+
+import numpy as np
+
+from bearingload.errors import BearingloadError, InputError
+from bearingload.studies.batch_input import CellParser, Header
+from bearingload.studies.loaded_bearing import DEFAULT_REVOLUTIONS
+
+#: Solved quantities of a row, in :mod:`bearingload.reports.solve` order (None: blank).
+SOLVED_KEYS = (
+    "q_max",
+    "k",
+    "K_Q",
+    "loaded_balls",
+    "load_zone_deg",
+    "x",
+    "y",
+    "stiffness_radial",
+    "approach_max",
+    "epsilon",
+    "p_max_inner",
+    "p_max_outer",
+    "rating_life",
+    "revolutions",
+    "allowable_load",
+    "valid",
+)
+
+
+@dataclass
+class Chunk:
+    """The answer for one chunk of rows.
+
+    Attributes
+    ----------
+    rows : list of int
+        Row numbers of the solved rows, in input order (the header is row 1).
+    values : dict
+        Quantity key -> list over ``rows`` (None: not given for that row).
+    errors : list of (int, str)
+        Skipped rows: row number and the reason (``"load: must be greater than 0 N (got -5)"``).
+    """
+
+    rows: list[int] = field(default_factory=list)
+    values: dict[str, list[Any]] = field(default_factory=dict)
+    errors: list[tuple[int, str]] = field(default_factory=list)
+
+
+class BatchSolver:
+    """Solve the chunks of one case file; parsed cells and resolved bearings are cached."""
+
+    def __init__(self, header: Header) -> None:
+        self.header = header
+        self.parsers = {n: CellParser(n, header.units.get(n)) for n in header.names}
+        self.bearings: dict[tuple[Any, ...], Any] = {}
+
+    def solve(self, lines: list[tuple[int, list[str]]]) -> Chunk:
+        """Solve one chunk of ``(row number, cells)``."""
+        errors: dict[int, str] = {}
+        if self.header.has_bearing:
+            cells = self._cells(lines, errors)
+            rows = Rows.of([x for x in (self._row(r, c, errors) for r, c in cells) if x])
+        else:
+            rows = self._hand_rows(lines, errors)
+        parts = _solve_rows(rows, errors)
+        out = Chunk(errors=sorted(errors.items()))
+        if len(parts) == 1:
+            out.rows, out.values = parts[0]
+        elif parts:
+            numbers = [n for p, _ in parts for n in p]
+            order = sorted(range(len(numbers)), key=numbers.__getitem__)
+            out.rows = [numbers[i] for i in order]
+            for k in parts[0][1]:
+                merged = [v for _, c in parts for v in c[k]]
+                out.values[k] = [merged[i] for i in order]
+        return out
+
+    def _hand_rows(self, lines: list[tuple[int, list[str]]], errors: dict[int, str]) -> Rows:
+        """The rows of a file without bearing columns (rings given by z and K), column by
+        column: bare numbers are converted by numpy at once, other cells one distinct text at
+        a time."""
+        names = self.header.names
+        width = len(names)
+        good = [x for x in lines if len(x[1]) == width]
+        if len(good) != len(lines):
+            for row, cells in lines:
+                if len(cells) != width:
+                    errors[row] = _malformed(len(cells), width)
+        numbers = [r for r, _ in good]
+        texts = dict(zip(names, zip(*[c for _, c in good], strict=True), strict=False))
+        texts = {n: texts.get(n, ()) for n in names}
+        bad: dict[int, str] = {}
+        m = self._column("exponent", texts, bad, 1.5, None)
+        arrays = {
+            "exponent": m,
+            "balls": self._column("balls", texts, bad, None, m),
+            "load": self._column("load", texts, bad, None, m),
+            "stiffness": self._column("stiffness", texts, bad, None, m),
+            "clearance": self._column("clearance", texts, bad, 0.0, m),
+        }
+        cage = self._column("cage_angle", texts, bad, 0.0, m, half=True)
+        with np.errstate(divide="ignore"):
+            arrays["cage_angle"] = np.where(np.isnan(cage), 180.0 / arrays["balls"], cage)
+        methods = (
+            [t.strip() or "exact" for t in texts["method"]]
+            if "method" in texts
+            else ["exact"] * len(good)
+        )
+        if "method" in texts:
+            from bearingload.models.registry import METHODS, get_method
+
+            for i, name in enumerate(methods):
+                if name not in METHODS:
+                    try:
+                        get_method(name)
+                    except InputError as exc:
+                        bad.setdefault(i, str(exc))
+        for i, message in bad.items():
+            errors[numbers[i]] = message
+        return Rows(numbers, arrays, methods, [None] * len(good), np.full(len(good), 36e6))
+
+    def _column(
+        self,
+        name: str,
+        texts: dict[str, tuple[str, ...]],
+        bad: dict[int, str],
+        default: float | None,
+        m: np.ndarray | None,
+        half: bool = False,
+    ) -> np.ndarray:
+        """One numeric column in package units (``half``: NaN marks 'half'); a missing cell
+        takes ``default`` or is an error; errors go to ``bad`` (index -> reason)."""
+        n = len(next(iter(texts.values()), ()))
+        if name not in texts:
+            if default is None:
+                for i in range(n):
+                    bad.setdefault(i, f"{name}: missing (give balls and stiffness, or a bearing)")
+                return np.ones(n)
+            return np.full(n, default)
+        cells = texts[name]
+        parser = self.parsers[name]
+        try:
+            values = np.array(cells, dtype=float)
+            if not np.all(np.isfinite(values)):
+                raise ValueError("not finite")
+            if parser.unit:
+                if name == "stiffness":
+                    from bearingload.units import stiffness_factor
+
+                    assert m is not None
+                    return values * np.array(
+                        [stiffness_factor(parser.unit, e, parameter=name) for e in m.tolist()]
+                    )
+                from bearingload.units import parse_quantity
+
+                kind = {"clearance": "length", "cage_angle": "angle"}.get(parser.kind, parser.kind)
+                return values * parse_quantity("1" + parser.unit, kind, parameter=name)
+            return values
+        except (ValueError, InputError):
+            pass
+        out = np.ones(n)
+        for i, text in enumerate(cells):
+            try:
+                if not text.strip():
+                    if default is None:
+                        raise InputError(name, "missing (give balls and stiffness, or a bearing)")
+                    out[i] = default
+                    continue
+                v = parser.parse(text, 1.5 if m is None else float(m[i]))
+                if v == "half" and half:
+                    v = np.nan
+                elif not isinstance(v, float):
+                    from bearingload.bearings.clearance import clearance_length
+
+                    v = clearance_length(v)
+                out[i] = v
+            except InputError as exc:
+                bad.setdefault(i, str(exc))
+        return out
+
+    def _cells(
+        self, lines: list[tuple[int, list[str]]], errors: dict[int, str]
+    ) -> list[tuple[int, dict[str, Any]]]:
+        """Each row's cells by column, parsed to package units; a row's first error is kept."""
+        names = self.header.names
+        out = []
+        for row, cells in lines:
+            if len(cells) != len(names):
+                errors[row] = _malformed(len(cells), len(names))
+                continue
+            values = {n: t.strip() for n, t in zip(names, cells, strict=True) if t.strip()}
+            try:
+                m = (
+                    self.parsers["exponent"].parse(values["exponent"])
+                    if "exponent" in values
+                    else 1.5
+                )
+                parsed = {"exponent": m}
+                for n, t in values.items():
+                    if n != "exponent":
+                        parsed[n] = self.parsers[n].parse(t, m)
+            except InputError as exc:
+                errors[row] = str(exc)
+                continue
+            out.append((row, parsed))
+        return out
+
+    def _row(self, row: int, v: dict[str, Any], errors: dict[int, str]) -> dict[str, Any] | None:
+        """The case inputs of one row: z, F_r, K, G_r, cage angle, m, method, bearing."""
+        from bearingload.bearings.clearance import clearance_length
+        from bearingload.models.registry import get_method
+
+        try:
+            get_method(v.get("method", "exact"))
+            by_hand = not any(k in v for k in ("bearing", "ball_diameter", "pitch_diameter"))
+            if by_hand:
+                extra = [k for k in ("inner_conformity", "outer_conformity", "modulus", "poisson",
+                                     "clearance_pick") if k in v]  # fmt: skip
+                if extra:
+                    raise InputError(extra[0], "needs a bearing or a ball geometry")
+                for need in ("balls", "stiffness"):
+                    if need not in v:
+                        raise InputError(need, "missing (give balls and stiffness, or a bearing)")
+                b = None
+                z, k = v["balls"], v["stiffness"]
+                g = v.get("clearance", 0.0)
+                g = g if isinstance(g, float) else clearance_length(g)
+            else:
+                b = self._bearing(v)
+                z, k, g = b.balls, b.stiffness, b.clearance
+            if "load" not in v:
+                raise InputError("load", "missing: every row needs a load")
+            revolutions = v.get("revolutions", DEFAULT_REVOLUTIONS)
+            if not revolutions > 0:
+                raise InputError("revolutions", f"must be greater than 0 rev (got {revolutions:g})")
+            angle = v.get("cage_angle", 0.0)
+            if angle == "half":
+                angle = 180.0 / z if z >= 1 else 0.0  # a bad z is named by the checks
+        except BearingloadError as exc:
+            errors[row] = str(exc)
+            return None
+        return {"row": row, "bearing": b, "balls": z, "load": v["load"], "stiffness": k,
+                "clearance": g, "cage_angle": angle, "exponent": v["exponent"],
+                "method": v.get("method", "exact"), "revolutions": revolutions}  # fmt: skip
+
+    def _bearing(self, v: dict[str, Any]) -> Any:
+        """The resolved bearing of a row, resolved once per distinct inputs."""
+        from bearingload.bearings.resolve import resolve_bearing
+
+        if v["exponent"] != 1.5:
+            raise InputError(
+                "exponent",
+                "a ball bearing (Hertz point contact) has m = 1.5; other exponents need balls "
+                "and stiffness without a bearing",
+            )
+        args = {
+            "balls": v.get("balls"),
+            "ball_diameter": v.get("ball_diameter"),
+            "pitch_diameter": v.get("pitch_diameter"),
+            "f_i": v.get("inner_conformity"),
+            "f_o": v.get("outer_conformity"),
+            "modulus": v.get("modulus"),
+            "poisson": v.get("poisson"),
+            "stiffness": v.get("stiffness"),
+            "clearance": v.get("clearance"),
+            "clearance_pick": v.get("clearance_pick", "mean"),
+        }
+        if args["balls"] is not None:
+            args["balls"] = int(args["balls"])
+        key = (v.get("bearing"), *args.values())  # floats, text, frozen ClearanceSpec
+        hit = self.bearings.get(key)
+        if hit is None:
+            try:
+                hit = resolve_bearing(v.get("bearing"), **args)
+            except BearingloadError as exc:
+                hit = exc
+            if len(self.bearings) < 10_000:
+                self.bearings[key] = hit
+        if isinstance(hit, BearingloadError):
+            raise hit
+        return hit
+
+
+def _malformed(cells: int, columns: int) -> str:
+    return f"malformed line: {cells} cells, the header names {columns} columns"
+
+
+_CHECKS = (
+    ("balls", lambda a: (a < 1) | (a > 100_000) | (a != np.round(a))),
+    ("load", lambda a: ~(a > 0) | ~np.isfinite(a)),
+    ("stiffness", lambda a: ~(a > 0) | ~np.isfinite(a)),
+    ("clearance", lambda a: ~np.isfinite(a)),
+    ("cage_angle", lambda a: ~np.isfinite(a)),
+    ("exponent", lambda a: ~((a >= 1) & (a <= 3))),
+)
+
+
+Part = tuple[list[int], dict[str, list[Any]]]
+
+
+@dataclass
+class Rows:
+    """Rows ready to solve: row ``numbers``, the case inputs as ``arrays`` (the names of
+    :data:`bearingload.models.case.INPUTS`), each row's ``methods``, ``bearings`` (None: a ring
+    given by z and K) and ``revolutions`` [rev]."""
+
+    numbers: list[int]
+    arrays: dict[str, np.ndarray]
+    methods: list[str]
+    bearings: list[Any]
+    revolutions: np.ndarray
+
+    @classmethod
+    def of(cls, rows: list[dict[str, Any]]) -> Rows:
+        from bearingload.models.case import INPUTS
+
+        return cls(
+            [r["row"] for r in rows],
+            {k: np.array([r[k] for r in rows], dtype=float) for k in INPUTS},
+            [r["method"] for r in rows],
+            [r["bearing"] for r in rows],
+            np.array([r["revolutions"] for r in rows], dtype=float),
+        )
+
+    def take(self, idx: list[int]) -> Rows:
+        return Rows(
+            [self.numbers[i] for i in idx],
+            {k: a[idx] for k, a in self.arrays.items()},
+            [self.methods[i] for i in idx],
+            [self.bearings[i] for i in idx],
+            self.revolutions[idx],
+        )
+
+
+def _solve_rows(rows: Rows, errors: dict[int, str]) -> list[Part]:
+    """Check the rows (vectorised; the library names a failing row's reason), then solve each
+    method's rows in one call: per method, the row numbers and the quantities over them."""
+    from bearingload.models.case import INPUTS, Case
+
+    if not rows.numbers:
+        return []
+    arrays = rows.arrays
+    suspect = np.zeros(len(rows.numbers), bool)
+    for name, bad in _CHECKS:
+        suspect |= bad(arrays[name])
+    for i in np.flatnonzero(suspect):
+        try:
+            Case.of(*(arrays[k][i] for k in INPUTS))
+        except InputError as exc:
+            errors[rows.numbers[i]] = str(exc)
+    out = []
+    for method in dict.fromkeys(rows.methods):
+        idx = [i for i, (n, m) in enumerate(zip(rows.numbers, rows.methods, strict=True))
+               if m == method and n not in errors]  # fmt: skip
+        if idx:
+            out += _solve_method(method, rows.take(idx), errors)
+    return out
+
+
+def _solve_method(method: str, rows: Rows, errors: dict[int, str]) -> list[Part]:
+    """One vectorised call for all ``rows`` of one method; one call per row if that fails."""
+    from bearingload.models.case import INPUTS, Case
+    from bearingload.models.registry import get_method
+
+    model = get_method(method)
+    try:
+        with np.errstate(all="ignore"):
+            result = model.run(Case.of(*(rows.arrays[k] for k in INPUTS)))
+        return [_values(result, rows)]
+    except (BearingloadError, ValueError, ArithmeticError):
+        if len(rows.numbers) == 1:
+            raise
+    out: list[Part] = []
+    for i, number in enumerate(rows.numbers):
+        try:
+            out += _solve_method(method, rows.take([i]), errors)
+        except (BearingloadError, ValueError, ArithmeticError) as exc:
+            errors[number] = str(exc)
+    return out
+
+
+def _values(result: Any, rows: Rows) -> Part:
+    """The quantities of every row (the keys of ``case_values``), lists over the rows."""
+    n = len(rows.numbers)
+    arrays = rows.arrays
+
+    def col(value: Any) -> list[Any]:
+        return [None] * n if value is None else np.broadcast_to(value, (n,)).tolist()
+
+    q = np.broadcast_to(result.q_max, (n,))
+    approach = None if result.x is None else (q / arrays["stiffness"]) ** (1.0 / arrays["exponent"])
+    bearings = rows.bearings
+    cols = {
+        "bearing": [None if b is None else (b.designation or "given by hand") for b in bearings],
+        "method": rows.methods,
+        "balls": arrays["balls"].astype(np.int64).tolist(),
+        "load": arrays["load"].tolist(),
+        "stiffness": arrays["stiffness"].tolist(),
+        "clearance": arrays["clearance"].tolist(),
+        "clearance_pick": [None if b is None else b.clearance_pick for b in bearings],
+        "cage_angle_deg": np.mod(arrays["cage_angle"], 360.0).tolist(),
+        "exponent": arrays["exponent"].tolist(),
+        "q_max": col(result.q_max),
+        "k": col(result.k),
+        "K_Q": col(result.K_Q),
+        "loaded_balls": col(result.loaded_balls),
+        "load_zone_deg": col(result.load_zone),
+        "x": col(result.x),
+        "y": col(result.y),
+        "stiffness_radial": col(result.stiffness_radial),
+        "approach_max": col(approach),
+        "epsilon": col(getattr(result.model, "epsilon", None)),
+        "valid": col(result.valid),
+    }
+    cols |= _bearing_values(rows, q)
+    return rows.numbers, cols
+
+
+def _bearing_values(rows: Rows, q: np.ndarray) -> dict[str, list[Any]]:
+    """Hertz pressures at Q_max (known geometry) and life and allowable load (known C)."""
+    from bearingload.bearings.life import allowable_load, rating_life
+
+    n = len(rows.numbers)
+    out: dict[str, list[Any]] = {
+        k: [None] * n
+        for k in ("p_max_inner", "p_max_outer", "rating_life", "revolutions", "allowable_load")
+    }
+    bearings = rows.bearings
+    groups: dict[int, list[int]] = {}  # one Hertz solution per bearing, over its rows' loads
+    for i, b in enumerate(bearings):
+        if b is not None and b.has_geometry:
+            groups.setdefault(id(b), []).append(i)
+    if groups:
+        from bearingload.contact.hertz import ball_contacts
+
+        for idx in groups.values():
+            b = bearings[idx[0]]
+            c = ball_contacts(
+                q[idx], b.ball_diameter, b.pitch_diameter, b.f_i, b.f_o, b.modulus, b.poisson
+            )
+            inner = np.broadcast_to(c.inner.p_max, (len(idx),)).tolist()
+            outer = np.broadcast_to(c.outer.p_max, (len(idx),)).tolist()
+            for j, i in enumerate(idx):
+                out["p_max_inner"][i] = inner[j]
+                out["p_max_outer"][i] = outer[j]
+    rated = [i for i, b in enumerate(bearings) if b is not None and b.C]
+    if rated:
+        C = np.array([bearings[i].C for i in rated])
+        rev = rows.revolutions[rated]
+        load = rows.arrays["load"][rated]
+        life = np.ravel(rating_life(C, load))
+        allow = np.ravel(allowable_load(C, rev / 1e6))
+        for j, i in enumerate(rated):
+            out["rating_life"][i] = float(life[j])
+            out["allowable_load"][i] = float(allow[j])
+            out["revolutions"][i] = float(rev[j] / 1e6)
+    return out

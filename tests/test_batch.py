@@ -1,0 +1,334 @@
+"""``bearingload batch``: exact output, units, stdin, bad rows, --strict, -o, chunks, solve parity."""
+
+from __future__ import annotations
+
+import csv
+import io
+import json
+import os
+import re
+
+import pytest
+from click.testing import CliRunner
+
+from bearingload.cli import main
+from bearingload.reports.render import _machine_text, csv_block
+
+from .cli_helpers import run_entry
+
+SMALL = """\
+balls,load [kgf],stiffness,clearance,cage_angle
+8,300,4700kgf/mm^1.5,20um,0
+12,5000N,3.8e5,-50um,half
+"""
+
+SMALL_CSV = """\
+row,method,balls,load [N],stiffness [N/mm^1.5],clearance [mm],cage_angle_deg [°],exponent,q_max [N],k,K_Q,loaded_balls,load_zone_deg [°],x [mm],y [mm],stiffness_radial [N/mm],approach_max [mm],valid
+2,exact,8,2941.995,46091.255,0.02,0.0,1.5,1640.74899,0.5576994489,2.230797796,3,85.14740553,0.1182137403,0.0,41498.22827,0.1082137403,True
+3,exact,12,5000.0,380000.0,-0.05,15.0,1.5,2379.275159,0.4758550318,2.855130191,12,180.0,0.009287385775,0.0,533484.305,0.03397092578,True
+"""
+
+SMALL_MARKDOWN = """\
+### 2 cases (row: the input file's row, the header is row 1)
+
+| row | method | balls | load [N] | stiffness [N/mm^1.5] | clearance [mm] | cage_angle_deg [°] | exponent [-] | q_max [N] |    k [-] | K_Q [-] | loaded_balls | load_zone_deg [°] |     x [mm] | y [mm] | stiffness_radial [N/mm] | approach_max [mm] | valid |
+|----:|:-------|------:|---------:|---------------------:|---------------:|-------------------:|-------------:|----------:|---------:|--------:|-------------:|------------------:|-----------:|-------:|------------------------:|------------------:|:------|
+|   2 | exact  |     8 |  2941.99 |              46091.3 |      0.0200000 |                  0 |      1.50000 |   1640.75 | 0.557699 | 2.23080 |            3 |           85.1474 |   0.118214 |      0 |                 41498.2 |          0.108214 | True  |
+|   3 | exact  |    12 |  5000.00 |               380000 |     -0.0500000 |            15.0000 |      1.50000 |   2379.28 | 0.475855 | 2.85513 |           12 |           180.000 | 0.00928739 |      0 |                  533484 |         0.0339709 | True  |
+"""
+
+
+def batch(*args: str, stdin: str | None = None):
+    return CliRunner().invoke(main, ["batch", *args], input=stdin, catch_exceptions=False)
+
+
+@pytest.fixture
+def small(tmp_path):
+    path = tmp_path / "cases.csv"
+    path.write_text(SMALL, encoding="utf-8")
+    return str(path)
+
+
+def test_csv_exact(small):
+    out = batch(small, "--format", "csv")
+    assert out.exit_code == 0
+    assert out.stdout == SMALL_CSV
+    assert out.stderr == ""
+
+
+def test_markdown_exact(small):
+    out = batch(small, "--format", "markdown")
+    assert out.exit_code == 0
+    assert out.stdout == SMALL_MARKDOWN
+
+
+def test_table_exact(small):
+    out = batch(small)
+    assert out.exit_code == 0
+    lines = out.stdout.splitlines()
+    assert lines[0] == "2 cases (row: the input file's row, the header is row 1)"
+    assert lines[2].split()[:4] == ["row", "method", "balls", "load"]
+    assert [line.split()[0] for line in lines[4:]] == ["2", "3"]
+    assert lines[4].split()[8] == "1640.75" and lines[5].split()[8] == "2379.28"
+
+
+def test_json_exact(small):
+    out = batch(small, "--format", "json")
+    assert out.exit_code == 0
+    doc = json.loads(out.stdout)
+    assert [c["row"] for c in doc["cases"]] == [2, 3]
+    assert doc["cases"][0]["q_max"] == 1640.74899
+    assert doc["cases"][1]["cage_angle_deg"] == 15.0
+    assert doc["skipped"] == []
+    assert doc["units"]["q_max"] == "N" and doc["units"]["stiffness"] == "N/mm^1.5"
+    # the same numbers as the csv, key for key
+    rows = list(csv.DictReader(io.StringIO(SMALL_CSV)))
+    for case, row in zip(doc["cases"], rows, strict=True):
+        for head, text in row.items():
+            assert _machine_text(case[head.split(" [")[0]]) == text
+
+
+def test_units_in_headers_and_in_values(tmp_path):
+    a = tmp_path / "a.csv"
+    a.write_text("balls,load [kN],stiffness [kgf/mm^1.5],clearance [um]\n8,2.941995,4700,20\n")
+    b = tmp_path / "b.csv"
+    b.write_text("balls,load,stiffness,clearance\n8,300kgf,4700kgf/mm^1.5,0.02mm\n")
+    c = tmp_path / "c.csv"  # a cell's own unit wins over the header's
+    c.write_text("balls,load [kN],stiffness,clearance [um]\n8,300kgf,46091.255,0.02mm\n")
+    outs = [batch(str(p), "--format", "csv") for p in (a, b, c)]
+    assert all(o.exit_code == 0 for o in outs)
+    assert outs[0].stdout == outs[1].stdout == outs[2].stdout
+    assert outs[0].stdout.splitlines()[1] == SMALL_CSV.splitlines()[1]
+
+
+def test_bad_header_unit_and_unknown_column_are_errors(tmp_path):
+    p = tmp_path / "x.csv"
+    p.write_text("balls,load [furlong],stiffness\n8,1,1\n")
+    out = batch(str(p), "--format", "csv")
+    assert out.exit_code == 2 and "furlong" in out.stderr and out.stdout == ""
+    p.write_text("balls,load,stiffnes,colour\n8,1,1,red\n")
+    out = batch(str(p), "--format", "csv")
+    assert out.exit_code == 2
+    assert "'stiffnes', 'colour'" in out.stderr and out.stdout == ""
+
+
+def test_stdin(small):
+    with open(small, encoding="utf-8") as fh:
+        text = fh.read()
+    out = batch("-", "--format", "csv", stdin=text)
+    assert out.exit_code == 0 and out.stdout == SMALL_CSV
+
+
+BAD = """\
+balls,load,stiffness,clearance
+8,300kgf,4700kgf/mm^1.5,20um
+8,-5,4700kgf/mm^1.5,20um
+0,300kgf,4700kgf/mm^1.5,20um
+8,300kgf,4700kgf/mm^1.5,20furlong
+8,300kgf,4700kgf/mm^1.5
+12,5kN,3.8e5,-50um
+"""
+
+
+def test_bad_rows_named_and_good_rows_written(capsys, tmp_path):
+    p = tmp_path / "bad.csv"
+    p.write_text(BAD)
+    code, out, err = run_entry(capsys, "batch", str(p), "--format", "csv")
+    assert code == 1
+    assert [line.split(",")[0] for line in out.splitlines()] == ["row", "2", "7"]
+    assert err.splitlines() == [
+        "Warning: row 3: load: must be greater than 0 N (got -5)",
+        "Warning: row 4: balls: must be between 1 and 100000 (got 0)",
+        "Warning: row 5: clearance: unknown unit 'furlong' in '20furlong'; allowed: mm, um, µm, "
+        "μm, in, m (a bare number is mm)",
+        "Warning: row 6: malformed line: 3 cells, the header names 4 columns",
+        "Warning: 4 of 6 rows skipped (exit status 1)",
+    ]
+
+
+def test_unknown_bearing_named(tmp_path):
+    p = tmp_path / "b.csv"
+    p.write_text("bearing,load\n306,300kgf\n9999,300kgf\n")
+    out = batch(str(p), "--format", "csv")
+    assert out.exit_code == 1
+    assert out.stderr.startswith("Warning: row 3: bearing: cannot read '9999'")
+    assert [line.split(",")[0] for line in out.stdout.splitlines()] == ["row", "2"]
+
+
+def test_strict_writes_nothing(tmp_path):
+    p = tmp_path / "bad.csv"
+    p.write_text(BAD)
+    target = tmp_path / "out.csv"
+    out = batch(str(p), "--strict", "--format", "csv", "-o", str(target))
+    assert out.exit_code == 2
+    assert "row 3: load: must be greater than 0 N (got -5)" in out.stderr
+    assert not target.exists()
+    assert os.listdir(tmp_path) == ["bad.csv"]  # no temporary file left behind
+    out = batch(str(p), "--strict", "--format", "csv")
+    assert out.exit_code == 2 and out.stdout == ""
+
+
+def test_output_file_written_whole(small, tmp_path):
+    target = tmp_path / "out.csv"
+    target.write_text("old\n")
+    out = batch(small, "--format", "csv", "-o", str(target))
+    assert out.exit_code == 0 and out.stdout == ""
+    assert target.read_text() == SMALL_CSV
+    p = tmp_path / "bad.csv"
+    p.write_text(BAD)
+    batch(str(p), "--strict", "--format", "csv", "-o", str(target))
+    assert target.read_text() == SMALL_CSV  # a failed run leaves the old file as it was
+
+
+def _long_file(tmp_path, n=53):
+    lines = ["balls,load,stiffness,clearance [um],cage_angle,method"]
+    for i in range(n):
+        bad = i % 17 == 5
+        load = "-1" if bad else f"{100 + 37 * i}N"
+        method = ("exact", "continuum", "stribeck")[i % 3] if i % 4 else ""
+        lines.append(
+            f"{5 + i % 11},{load},{1e5 + 1e3 * i},{(i % 9) - 3},{'half' if i % 2 else i},{method}"
+        )
+    p = tmp_path / "long.csv"
+    p.write_text("\n".join(lines) + "\n")
+    return str(p)
+
+
+@pytest.mark.parametrize("fmt", ["csv", "json"])
+def test_chunk_boundaries_do_not_change_the_bytes(tmp_path, fmt):
+    p = _long_file(tmp_path)
+    one = batch(p, "--format", fmt)
+    assert one.exit_code == 1  # rows 7, 24, 41 have a negative load
+    for size in (1, 4, 10):
+        other = batch(p, "--format", fmt, "--chunk-size", str(size))
+        assert other.stdout == one.stdout
+        assert other.stderr == one.stderr
+
+
+def test_answer_does_not_depend_on_neighbours(tmp_path):
+    p = _long_file(tmp_path)
+    whole = batch(p, "--format", "csv").stdout.splitlines()
+    lines = open(p).read().splitlines()
+    for i in (1, 8, 30, 52):  # each row alone in its own file
+        single = tmp_path / f"one{i}.csv"
+        single.write_text(lines[0] + "\n" + lines[i] + "\n")
+        out = batch(str(single), "--format", "csv").stdout.splitlines()
+        row = next(r for r in whole if r.startswith(f"{i + 1},"))
+        assert out[1].split(",")[1:] == row.split(",")[1:]
+
+
+def _solve_csv(args: list[str]) -> dict[str, str]:
+    out = CliRunner().invoke(main, ["solve", *args, "--format", "csv"], catch_exceptions=False)
+    assert out.exit_code == 0
+    return next(csv.DictReader(io.StringIO(out.stdout)))
+
+
+def test_results_equal_solve_row_for_row():
+    """examples/cases.csv against 'bearingload solve' with the same options, every column."""
+    root = os.path.dirname(os.path.dirname(__file__))
+    out = batch(os.path.join(root, "examples", "cases.csv"), "--format", "csv")
+    assert out.exit_code == 0
+    rows = list(csv.DictReader(io.StringIO(out.stdout)))
+    solve_args = [
+        ["-z", "8", "-F", "300kgf", "-K", "4700kgf/mm^1.5", "-G", "20um"],
+        ["-z", "8", "-F", "300kgf", "-K", "4700kgf/mm^1.5", "-G", "20um", "--cage-angle", "half"],
+        ["-z", "8", "-F", "300kgf", "-K", "4700kgf/mm^1.5", "-G", "20um", "--method", "continuum"],
+        ["306", "-F", "300kgf", "-G", "C3"],
+        ["306", "-F", "500kgf", "-G", "C3", "--cage-angle", "half"],
+        ["6306", "-F", "3kN", "-G", "C2"],
+        ["-z", "12", "-F", "5kN", "-K", "3.8e5", "-G", "-50um", "--cage-angle", "half"],
+    ]
+    assert len(rows) == len(solve_args)
+    for row, args in zip(rows, solve_args, strict=True):
+        expected = _solve_csv(args)
+        for key, value in expected.items():
+            assert row[key] == value, (args, key)
+        assert all(row[k] == "" for k in row if k not in expected and k != "row")
+
+
+def test_csv_block_matches_render():
+    """The chunked csv writer gives the renderer's cells for awkward numbers."""
+    from bearingload.reports.render import Column, Table, render
+
+    values = [0.0, -0.0, 1e10, 9999999999.5, 1e16, 123456789012.0, 100.0, 1e-5, 5e-324, 2 / 3]
+    cols = [Column("v", "v", "N", 6), Column("n", "n")]
+    rows = [{"v": v, "n": i} for i, v in enumerate(values)]
+    whole = render([Table("t", cols, rows)], "csv")
+    block = csv_block(cols, {"v": values, "n": list(range(len(values)))})
+    assert whole == "v [N],n\n" + block
+
+
+def test_held_formats_refuse_above_their_limit(tmp_path, monkeypatch):
+    import bearingload.reports.batch as report
+
+    monkeypatch.setattr(report, "MAX_HELD_ROWS", 10)
+    p = _long_file(tmp_path, n=30)
+    target = tmp_path / "out.json"
+    out = batch(p, "--format", "json", "--chunk-size", "4", "-o", str(target))
+    assert out.exit_code == 2 and "at most 10 rows" in out.stderr
+    assert not target.exists()
+    assert (
+        batch(p, "--format", "csv", "--chunk-size", "4").stdout.count("\n") == 29
+    )  # 28 rows + header
+
+
+def test_header_only_file_writes_the_header(tmp_path):
+    p = tmp_path / "empty.csv"
+    p.write_text("balls,load,stiffness\n")
+    out = batch(str(p), "--format", "csv")
+    assert out.exit_code == 0
+    assert out.stdout.startswith("row,method,balls,load [N]") and out.stdout.count("\n") == 1
+
+
+def test_a_row_that_breaks_the_vectorised_solve_is_named_alone(tmp_path):
+    """z = 2 with no ball on the load line passes the input checks but has no equilibrium: the
+    chunk is solved row by row, that row is named, its neighbours are written unchanged."""
+    p = tmp_path / "c.csv"
+    p.write_text("balls,load,stiffness,cage_angle\n8,1kN,1e5,0\n2,1kN,1e5,45\n9,1kN,1e5,17\n")
+    out = batch(str(p), "--format", "csv")
+    assert out.exit_code == 1
+    assert out.stderr.splitlines()[0].startswith("Warning: row 3: cage_angle: with 1 or 2 balls")
+    rows = out.stdout.splitlines()
+    assert [r.split(",")[0] for r in rows] == ["row", "2", "4"]
+    alone = tmp_path / "a.csv"
+    alone.write_text("balls,load,stiffness,cage_angle\n9,1kN,1e5,17\n")
+    assert batch(str(alone), "--format", "csv").stdout.splitlines()[1][1:] == rows[2][1:]
+
+
+def test_geometry_and_overrides_equal_solve(tmp_path):
+    """Ball geometry by hand, a catalogue bearing with overrides, clearance picks, a roller
+    exponent: each row equals 'bearingload solve' with the same options."""
+    p = tmp_path / "g.csv"
+    p.write_text(
+        "bearing,balls,load,stiffness,ball_diameter,pitch_diameter,inner_conformity,modulus,"
+        "clearance,clearance_pick,cage_angle,exponent,revolutions\n"
+        ",7,1kN,,11.5,43.5,,,10um,,0,,\n"
+        "6205,,1.4kN,,,,0.515,2.1e4kgf/mm^2,C3,max,half,,1e8\n"
+        "306,,300kgf,5e5,,,,,C4,min,7,,\n"
+        ",14,10kN,8e5,,,,,-5um,,0,10/9,\n"
+    )
+    out = batch(str(p), "--format", "csv")
+    assert out.exit_code == 0, out.stderr
+    rows = list(csv.DictReader(io.StringIO(out.stdout)))
+    solve_args = [
+        ["-z", "7", "-F", "1kN", "--ball-diameter", "11.5", "--pitch-diameter", "43.5", "-G", "10um"],
+        ["6205", "-F", "1.4kN", "--inner-conformity", "0.515", "--modulus", "2.1e4kgf/mm^2",
+         "-G", "C3", "--clearance-pick", "max", "--cage-angle", "half", "--revolutions", "1e8"],
+        ["306", "-F", "300kgf", "-K", "5e5", "-G", "C4", "--clearance-pick", "min",
+         "--cage-angle", "7"],
+        ["-z", "14", "-F", "10kN", "-K", "8e5", "-G", "-5um", "-m", "10/9"],
+    ]  # fmt: skip
+    for row, args in zip(rows, solve_args, strict=True):
+        expected = _solve_csv(args)
+        for key, value in expected.items():
+            head = re.sub(r"N/mm\^[0-9.]+", "N/mm^m", key)
+            assert row[head] == value, (args, key)
+
+
+def test_not_utf8_is_an_error_and_writes_nothing(tmp_path):
+    p = tmp_path / "latin.csv"
+    p.write_bytes(b"balls,load,stiffness\n8,1kN,1e5\n" * 1 + b"8,1kN,1e5\xff\n")
+    target = tmp_path / "out.csv"
+    out = batch(str(p), "--format", "csv", "-o", str(target), "--chunk-size", "1")
+    assert out.exit_code == 2 and "not UTF-8 text" in out.stderr
+    assert not target.exists() and sorted(os.listdir(tmp_path)) == ["latin.csv"]
