@@ -65,8 +65,8 @@ def _likely(value: float, kind: str, low: float) -> str:
 
 def _check_plausible(value: float, kind: str, name: str, text: object) -> None:
     rule = PLAUSIBLE_BARE.get((kind, name)) or PLAUSIBLE_BARE.get((kind, None))
-    if rule is None or rule[0] <= value < rule[1]:
-        return
+    if rule is None or rule[0] <= value < rule[1] or (kind == "modulus" and value <= 0):
+        return  # a modulus <= 0 is refused by the model's own check, not guessed at
     from bearingload.errors import InputError
 
     low, high, what = rule

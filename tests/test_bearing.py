@@ -176,9 +176,9 @@ def test_committed_306_tables_use_the_papers_conditions():
     assert b.stiffness == pytest.approx(float(k.ball), rel=1e-15)
     text = committed.generate()["table1_k_306_300kgf_gr20um.csv"]
     rows = list(csv.DictReader(io.StringIO(text)))
-    row8 = next(row for row in rows if row["z"] == "8")
+    row8 = next(row for row in rows if row["balls"] == "8")
     r = solve(8, KUZMENKO2010_LOAD, b.stiffness, 0.02)
-    assert (row8["n"], row8["k"]) == ("3", repr(float(f"{float(r.k):.10g}")))
+    assert (row8["loaded_balls"], row8["k"]) == ("3", repr(float(f"{float(r.k):.10g}")))
     # the conditions travel with the numbers: one rectangular csv
     assert row8["bearing"] == "306" and row8["clearance [mm]"] == "0.02"
     assert float(row8["load [N]"]) == pytest.approx(KUZMENKO2010_LOAD, rel=1e-9)

@@ -126,7 +126,7 @@ def test_table_k_for_bearing_306():
     rows = list(csv.DictReader(io.StringIO(invoke(
         "table", "kq", "-b", "306", "-F", "300kgf", "-G", "20um", "--format", "csv"
     ))))  # fmt: skip
-    assert [int(r["z"]) for r in rows] == list(range(1, 31))
+    assert [int(r["balls"]) for r in rows] == list(range(1, 31))
     b = resolve_bearing("306")
     r = solve(8, 300 * KGF, b.stiffness, 0.02)
     assert float(rows[7]["K_Q"]) == pytest.approx(float(r.K_Q), rel=1e-9)

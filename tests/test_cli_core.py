@@ -92,7 +92,7 @@ def test_csv_is_machine_readable_and_deterministic():
     assert a == b
     assert "\r" not in a
     rows = list(csv.DictReader(io.StringIO(a)))
-    assert [int(r["z"]) for r in rows] == list(range(1, 31))
+    assert [int(r["balls"]) for r in rows] == list(range(1, 31))
     assert float(rows[7]["k"]) == pytest.approx(0.5432136169, abs=1e-10)  # 10 significant digits
 
 
@@ -109,8 +109,8 @@ def test_table_under_conditions_changes_with_clearance():
         "table", "k", "--format", "json", "--z-max", "10", "--clearance", "100um",
         "--load", "300kgf", "--stiffness", "4700kgf/mm^1.5",
     ).output  # fmt: skip
-    k0 = {r["z"]: r["k"] for r in json.loads(base)["rows"]}
-    k1 = {r["z"]: r["k"] for r in json.loads(worn)["rows"]}
+    k0 = {r["balls"]: r["k"] for r in json.loads(base)["rows"]}
+    k1 = {r["balls"]: r["k"] for r in json.loads(worn)["rows"]}
     assert k1[8] == pytest.approx(float(solve(8, 300 * KGF, 4700 * KGF, 0.1).k), rel=1e-9)
     assert all(k1[z] >= k0[z] for z in k0)
 
@@ -184,7 +184,7 @@ def test_version():
 def test_run_success_and_failure(capsys):
     run(["table", "k", "--z-max", "3", "--format", "csv"])
     assert capsys.readouterr().out.startswith(
-        "method,load [N],stiffness [N/mm^1.5],clearance [mm],cage_angle_deg [°],exponent,z,n,k\nexact,1000.0,100000.0,0.0,0.0,1.5,1,1,1.0"
+        "method,load [N],stiffness [N/mm^1.5],clearance [mm],cage_angle_deg [°],exponent,balls,loaded_balls,k\nexact,1000.0,100000.0,0.0,0.0,1.5,1,1,1.0"
     )
     with pytest.raises(SystemExit) as info:
         run(["solve", "-z", "8", "-F", "0", "-K", "1"])

@@ -173,8 +173,10 @@ def test_range_pick_with_every_method():
 def test_table_k_per_method():
     for method, constant in (("stribeck", 4.37), ("palmgren", 5.0)):
         rows = rows_of(invoke("table", "k", "--method", method, "--format", "csv").output)
-        assert [int(r["z"]) for r in rows] == list(range(1, 31))
-        assert all(float(r["k"]) == pytest.approx(constant / int(r["z"]), rel=1e-9) for r in rows)
+        assert [int(r["balls"]) for r in rows] == list(range(1, 31))
+        assert all(
+            float(r["k"]) == pytest.approx(constant / int(r["balls"]), rel=1e-9) for r in rows
+        )
     rows = rows_of(invoke("table", "kq", "--method", "continuum", "--format", "csv").output)
     with mp.workdps(30):
         kq = float(mp.pi / (2 * mp.quad(lambda p: mp.cos(p) ** 2.5, [0, mp.pi / 2])))
@@ -201,10 +203,10 @@ def test_table_compare_z_1_to_30():
     rows = rows_of(invoke("table", "kq", "--method", "all", "--format", "csv").output)
     assert len(rows) == 30
     for r in rows:
-        z = int(r["z"])
+        z = int(r["balls"])
         ref = solve(z, 1000.0, 1e5)
         assert float(r["K_Q_exact"]) == pytest.approx(float(ref.K_Q), rel=1e-9)
-        assert int(r["n"]) == int(ref.loaded_balls)
+        assert int(r["loaded_balls"]) == int(ref.loaded_balls)
         assert float(r["error_palmgren [%]"]) == pytest.approx(
             100 * (5 / (z * float(ref.k)) - 1), rel=1e-8
         )
@@ -214,7 +216,7 @@ def test_table_compare_half_pitch_starts_at_three():
     rows = rows_of(
         invoke("table", "k", "--method", "all", "--cage-angle", "half", "--format", "csv").output
     )
-    assert [int(r["z"]) for r in rows] == list(range(3, 31))
+    assert [int(r["balls"]) for r in rows] == list(range(3, 31))
 
 
 def test_table_shows_discrete_approaching_continuum():
@@ -224,7 +226,7 @@ def test_table_shows_discrete_approaching_continuum():
     rows = rows_of(
         invoke("table", "k", "--method", "all", "--z-max", "320", "--format", "csv").output
     )
-    by_z = {int(r["z"]): r for r in rows}
+    by_z = {int(r["balls"]): r for r in rows}
     errors = [abs(float(by_z[z]["error_continuum [%]"])) for z in (5, 10, 20, 40, 80, 160, 320)]
     assert all(b < a for a, b in zip(errors, errors[1:], strict=False)), errors
     assert errors[0] == pytest.approx(3.319, abs=1e-3) and errors[-1] < 2e-6

@@ -53,3 +53,59 @@ def test_a_zero_dynamic_rating_is_refused(capsys):
     code, out, err = run_entry(capsys, "solve", "6205", "-F", "1kN", "-C", "0")
     assert code == 2 and out == "" and err.count("\n") == 1
     assert "--dynamic-rating" in err and "must be greater than 0 N" in err
+
+
+def test_the_combined_path_warns_like_the_radial_one(capsys):
+    code, out, err = run_entry(capsys, "solve", "6205", "-F", "500kN", "-A", "1N")
+    assert code == 0 and "Bearing 6205" in out
+    assert "Warning: static safety factor s0 = C0/P0" in err
+    assert "is above the basic static rating C0 = 7850 N" in err
+    assert "maximum contact pressure" in err
+    doc = json.loads(invoke("solve", "6205", "-F", "1kN", "-A", "100N", "--format", "json").output)
+    assert doc["warnings"] == [] and doc["cases"][0]["warnings"] == []
+    code, out, err = run_entry(capsys, "solve", "6205", "-F", "1kN", "--misalignment", "0.5")
+    assert code == 0 and "more than the 10 arcmin" in err
+
+
+def test_a_tilt_of_degrees_is_refused(capsys):
+    code, out, err = run_entry(capsys, "solve", "6205", "-F", "1kN", "--misalignment", "90")
+    assert code == 2 and out == "" and err.count("\n") == 1
+    assert "Invalid value for '--misalignment': must be within ±2°" in err
+
+
+@pytest.mark.parametrize("radial", [1e-12, 1e-9, 1e-6, 1e-3])
+def test_a_vanishing_radial_load_beside_a_moment_is_solved(radial):
+    """The start follows the load that dominates: the tilt is the moment-alone tilt."""
+    alone = solve_combined(9, 0.0, 0.0, moment=1e3, **GEOMETRY)
+    r = solve_combined(9, radial, 0.0, moment=1e3, **GEOMETRY)
+    assert float(r.tilt) == pytest.approx(float(alone.tilt), rel=1e-6)
+
+
+def test_loads_too_small_for_the_combined_solver_are_refused(capsys):
+    code, out, err = run_entry(capsys, "solve", "6205", "-F", "1e-9N", "-A", "1e-9N")
+    assert code == 2 and err.count("\n") == 1 and "RuntimeWarning" not in err
+    assert "the loads are too small for the combined solver" in err
+
+
+@pytest.mark.parametrize(
+    "extra, message",
+    [
+        (["--modulus", "210GPa"], "Error: --modulus needs a BEARING or the ball geometry"),
+        (["--clearance-pick", "range"], "Error: --clearance-pick needs a BEARING"),
+        (["--poisson", "0.3", "--maker", "SKF"], "Error: --poisson, --maker need a BEARING"),
+    ],
+)
+def test_options_a_hand_given_ring_would_ignore_are_refused(capsys, extra, message):
+    code, out, err = run_entry(capsys, "solve", "-z", "8", "-F", "1kN", "-K", "1e5", *extra)
+    assert code == 2 and out == "" and err.count("\n") == 1 and err.startswith(message), err
+
+
+def test_the_largest_contact_angle_is_that_of_a_loaded_ball():
+    doc = json.loads(
+        invoke("solve", "6205", "-F", "1kN", "--misalignment", "0.1", "--format", "json").output
+    )
+    case = doc["cases"][0]
+    loaded = [
+        a for a, q in zip(case["contact_angles_deg"], case["ball_loads"], strict=True) if q > 0
+    ]
+    assert case["contact_angle_max_deg"] == max(loaded, key=abs)

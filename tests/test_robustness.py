@@ -63,7 +63,7 @@ def test_write_into_a_fifo_writes_through(tmp_path):
 def test_dash_is_standard_output_and_empty_name_is_an_error(tmp_path):
     r = run_cli("table", "k", "--z-max", "2", "--format", "csv", "-o", "-", cwd=tmp_path)
     assert r.returncode == 0 and r.stdout.startswith(
-        "method,load [N],stiffness [N/mm^1.5],clearance [mm],cage_angle_deg [°],exponent,z,n,k\n"
+        "method,load [N],stiffness [N/mm^1.5],clearance [mm],cage_angle_deg [°],exponent,balls,loaded_balls,k\n"
     )
     assert list(tmp_path.iterdir()) == []
     r = run_cli("table", "k", "-o", "")

@@ -26,8 +26,8 @@ HAND = ["solve", "-z", "8", "-F", "300kgf", "-K", "4700kgf/mm^1.5"]
         (["solve", "306", "-F", "300kgf", "-G", "7"], "(the GOST clearance group 7 is written G7)"),
         ([*HAND, "-G", "0,02"], "write the decimal point, not a comma: 0.02"),
         (["solve", "-z", "8", "-F", "300", "kgf", "-K", "4700kgf/mm^1.5"],
-         "Error: '300 kgf': write a number and its unit without a space, e.g. 300kgf"),
-        (["table", "k", "-G", "20", "um"], "Error: '20 um': write a number and its unit without a space"),
+         "Error: Invalid value for '-F': '300 kgf': write a number and its unit without a space, e.g. 300kgf"),
+        (["table", "k", "-G", "20", "um"], "Error: Invalid value for '-G': '20 um': write a number and its unit without a space"),
     ],
 )  # fmt: skip
 def test_slips_get_one_line_with_the_likely_meaning(capsys, args, message):

@@ -187,3 +187,64 @@ def element_warnings(result: Any, balls: int, element: str = "ball") -> list[str
             "(large clearance or few elements); check the clearance"
         ]
     return []
+
+
+#: ISO 76:2006, 7.1: static equivalent radial load of radial ball bearings,
+#: P0r = X0 F_r + Y0 F_a with X0 = 0.6, Y0 = 0.5, and P0r = F_r where that is larger. [-]
+X0_BALL, Y0_BALL = 0.6, 0.5
+#: Misalignment a deep-groove ball bearing tolerates: 2 to 10 arcmin (SKF rolling bearings
+#: catalogue, deep groove ball bearings, "Misalignment"); above 10 arcmin a warning. [°]
+MISALIGNMENT_TOLERATED = 10.0 / 60.0
+
+
+def combined_warnings(
+    bearing: ResolvedBearing,
+    radial_load: float,
+    axial_load: float,
+    q_max: float,
+    loaded_balls: int,
+    misalignment: float | None = None,
+) -> list[str]:
+    """Findings on one combined-load case (ball bearing), one sentence each; empty when all is well.
+
+    The static checks use the static equivalent load of ISO 76:2006, 7.1
+    (``P0 = max(F_r, 0.6 F_r + 0.5 |F_a|)``); the contact pressure is that of the heaviest ball
+    at the groove's radial section (:func:`max_contact_pressures`), the check the static rating
+    is defined by.
+    """
+    out: list[str] = []
+    p0 = max(radial_load, X0_BALL * radial_load + Y0_BALL * abs(axial_load))
+    c0 = bearing.C0
+    if c0 and p0 > 0:
+        s0 = c0 / p0
+        if s0 < S0_MIN:
+            out.append(
+                f"static safety factor s0 = C0/P0 = {s0:.3g} is below {S0_MIN:g} (ISO 76: "
+                f"P0 = max(F_r, 0.6 F_r + 0.5 F_a) = {p0:.6g} N, C0 = {c0:.6g} N): the raceways "
+                "deform permanently"
+            )
+        if p0 > c0:
+            out.append(
+                f"the static equivalent load P0 = {p0:.6g} N is above the basic static rating "
+                f"C0 = {c0:.6g} N"
+            )
+    pressures = max_contact_pressures(bearing, q_max)
+    if pressures is not None:
+        p, where = max(zip(pressures, ("inner", "outer"), strict=True))
+        if p > P_MAX_BALL:
+            out.append(
+                f"maximum contact pressure {p:.5g} MPa ({where} contact, heaviest ball "
+                f"{q_max:.6g} N) is above {P_MAX_BALL:g} MPa, the pressure of the static rating "
+                "of ball bearings (ISO 76)"
+            )
+    if loaded_balls == 1 and bearing.balls > 1:
+        out.append(
+            "only one ball carries the load: the result hangs on a single contact (large "
+            "clearance or few elements); check the clearance"
+        )
+    if misalignment is not None and abs(misalignment) > MISALIGNMENT_TOLERATED:
+        out.append(
+            f"a misalignment of {misalignment:.4g}° is more than the 10 arcmin (0.167°) a "
+            "deep-groove ball bearing tolerates (SKF catalogue)"
+        )
+    return out

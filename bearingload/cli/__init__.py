@@ -70,14 +70,16 @@ def _refuse_detached_units(args: list[str]) -> None:
     from bearingload.units import unit_names
 
     units = unit_names()
-    for before, word in zip(args, args[1:], strict=False):
+    for i, (before, word) in enumerate(zip(args, args[1:], strict=False)):
         try:
             float(before)
         except ValueError:
             continue
         if word in units:
+            option = args[i - 1] if i > 0 and args[i - 1].startswith("-") else None
+            where = f"Invalid value for '{option}': " if option else ""
             raise click.UsageError(
-                f"'{before} {word}': write a number and its unit without a space, "
+                f"{where}'{before} {word}': write a number and its unit without a space, "
                 f"e.g. {before}{word}"
             )
 

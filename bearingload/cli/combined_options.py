@@ -73,8 +73,9 @@ def combined_text(
     fmt: str,
     per_ball: bool = False,
     show_geometry: bool = False,
-) -> str:
-    """Solve the resolved ``bearings`` (one per clearance) under the combined load; the report."""
+) -> tuple[str, list[str]]:
+    """Solve the resolved ``bearings`` (one per clearance) under the combined load: the report
+    and the warnings of every case."""
     from bearingload.cli.options import cage_angle_deg
     from bearingload.reports.combined import combined_report
     from bearingload.studies.combined_bearing import solve_combined_bearing
@@ -89,4 +90,5 @@ def combined_text(
         rotating=values.get("rotating") or "inner",
         dynamic_rating=values.get("dynamic_rating"),
     )
-    return combined_report(cases, fmt, per_ball=per_ball, show_geometry=show_geometry)
+    text = combined_report(cases, fmt, per_ball=per_ball, show_geometry=show_geometry)
+    return text, list(dict.fromkeys(w for c in cases for w in c.warnings))

@@ -193,10 +193,23 @@ def solve(
                 "--misalignment) is solved by the exact model only"
             )
         bearings = _bearings(bearing, k_given, clearance, clearance_pick, exponent, **geometry)
-        emit(combined_text(bearings, load, cage_angle, combined, fmt, per_ball, show_geometry),
-             output)  # fmt: skip
+        text, found = combined_text(bearings, load, cage_angle, combined, fmt, per_ball,
+                                    show_geometry)  # fmt: skip
+        emit(text, output)
+        print_warnings(found, quiet)
         return
     if bearing is None and ball_diameter is None and pitch_diameter is None:
+        unused = [name for name, v in (("--inner-conformity", inner_conformity),
+                  ("--outer-conformity", outer_conformity), ("--modulus", modulus),
+                  ("--poisson", poisson), ("--maker", maker)) if v is not None]  # fmt: skip
+        unused += ["--clearance-pick"] if clearance_pick != "mean" else []
+        if unused:
+            one = len(unused) == 1
+            raise click.UsageError(
+                f"{', '.join(unused)} {'needs' if one else 'need'} a BEARING or the ball geometry "
+                "(--ball-diameter and --pitch-diameter): with --balls and --stiffness alone "
+                f"{'it' if one else 'they'} would be ignored"
+            )
         cases = _by_hand(methods, balls, load, k_given, clearance, cage_angle, exponent)
     else:
         bearings = _bearings(bearing, k_given, clearance, clearance_pick, exponent, **geometry)

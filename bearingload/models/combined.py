@@ -451,9 +451,33 @@ def solve_combined(
     f_ref = np.maximum(np.maximum(fr, np.abs(fa)), np.hypot(mm, mc) / geo.R_i)
     if np.any(f_ref <= 0):
         raise InputError("radial_load", "give a radial load, an axial load or a moment")
+    _check_scale(f_ref, k_ref, geo.A)
     problem = _Problem.build(z, phi, geo, fr, fa, mm, mc, np.deg2rad(tilt_deg), f_ref, k_ref)
-    v, k_hat, its = _solve_with_stiffness(problem, geo, e, nu, k_given is None, misalignment)
+    with np.errstate(all="ignore"):
+        v, k_hat, its = _solve_with_stiffness(problem, geo, e, nu, k_given is None, misalignment)
     return _result(problem, geo, v, k_hat, its, shape, fr, fa, mm, gr, cage, misalignment)
+
+
+#: Largest groove-geometry length A over the one-ball approach (F/K)^(2/3) the combined solver
+#: takes: beyond it a load is a vanishing fraction of what moves the ring in its groove. [-]
+GEOMETRY_RATIO_MAX = 1e8
+
+
+def _check_scale(f_ref: np.ndarray, k_ref: np.ndarray, big_a: np.ndarray) -> None:
+    """Refuse loads so small against the groove geometry that the scaled problem loses its
+    digits (the radial solver, without an axial load, takes any ratio)."""
+    scale = (f_ref / k_ref) ** (2.0 / 3.0)
+    bad = np.broadcast_to(big_a, scale.shape) / scale > GEOMETRY_RATIO_MAX
+    if np.any(bad):
+        f_min = float(
+            np.max(k_ref * (np.broadcast_to(big_a, scale.shape) / GEOMETRY_RATIO_MAX) ** 1.5)
+        )
+        raise InputError(
+            "radial_load",
+            f"the loads are too small for the combined solver (the largest of F_r, |F_a| and "
+            f"M/R_i is {float(np.min(f_ref)):.3g} N; it takes at least {f_min:.2g} N for this "
+            "bearing); the radial solver, without an axial load, takes any load",
+        )
 
 
 @dataclass(frozen=True)
@@ -635,12 +659,14 @@ def _start(p: _Problem, geo: _Geometry, cage: np.ndarray) -> np.ndarray:
     n = p.f_hat.shape[0]
     v = np.zeros((n, 5))
     f = p.f_hat * p.f_ref[:, None]  # [N]
-    radial = f[:, 0] > 0
+    # a load component below 1e-3 of the largest does not pick the start (a vanishing F_r beside
+    # a moment would otherwise start the tilt from the radial solution, far from the answer)
+    radial = p.f_hat[:, 0] > 1e-3
     if radial.any():
         r = solve(p.z, f[radial, 0], p.k_ref[radial], 2.0 * geo.g[radial], cage[radial])
         v[radial, 0] = r.x / p.scale[radial]
         v[radial, 1] = r.y / p.scale[radial]
-    axial = f[:, 2] != 0
+    axial = np.abs(p.f_hat[:, 2]) > 1e-3
     if axial.any():
         u, _, _ = axial_only(
             p.z, np.abs(f[axial, 2]), p.k_ref[axial], geo.A[axial], 2.0 * geo.g[axial]

@@ -204,6 +204,7 @@ def _document(cases: Sequence[CombinedCase], records: Sequence[dict[str, Any]]) 
                 "contact_angles_deg": res.contact_angles,
                 "ball_approaches": res.ball_approaches,
                 "ball_loads": res.ball_loads,
+                "warnings": list(c.warnings),
             }
         )
     keys = list(dict.fromkeys(k for d in docs for k in d))
@@ -211,4 +212,5 @@ def _document(cases: Sequence[CombinedCase], records: Sequence[dict[str, Any]]) 
         "cases": docs,
         "units": units(keys, 1.5),
         "bearing": geometry_document(cases[0].bearing),
+        "warnings": list(dict.fromkeys(w for c in cases for w in c.warnings)),
     }

@@ -118,7 +118,7 @@ QUANTITIES: dict[str, Quantity] = {
         Quantity("deflection_axial", "axial displacement from centred rings", "mm", display=_UM),
         Quantity("tilt_deg", "tilt about the axis across the load", "°", also=_MRAD),
         Quantity("tilt_cross_deg", "tilt about the load line", "°", also=_MRAD),
-        Quantity("contact_angle_max_deg", "largest contact angle", "°"),
+        Quantity("contact_angle_max_deg", "largest contact angle of a loaded ball", "°"),
         Quantity("dynamic_rating", "dynamic load rating C_r", "N"),
         Quantity("equivalent_load", "equivalent load P = X F_r + Y F_a (ISO 281)", "N"),
         Quantity("reference_rating_life", "reference rating life L10r (ISO/TS 16281)", "10^6 rev"),

@@ -98,7 +98,7 @@ def _exact(name: str, z_max: int, cond: Conditions) -> Table:
     z, results = over_z(z_max, cond)
     r = results["exact"]
     rows = [
-        {"z": int(zi), "n": int(n), attr: float(v)}
+        {"balls": int(zi), "loaded_balls": int(n), attr: float(v)}
         for zi, n, v in zip(z, column_of(r, "loaded_balls", z), column_of(r, attr, z), strict=True)
     ]
     title = f"{what} (exact discrete model; {cond.describe()})"
@@ -106,7 +106,7 @@ def _exact(name: str, z_max: int, cond: Conditions) -> Table:
     if cond.bearing is not None:
         title = f"Bearing {cond.bearing.designation}: {title}"
         notes += _bearing_notes(cond, z_max)
-    columns = [Column("z", "z"), Column("n", "n"), Column(attr, attr, "-", digits)]
+    columns = [Column("balls", "z"), Column("loaded_balls", "n"), Column(attr, attr, "-", digits)]
     return Table(title, columns, rows, notes, _conditions(cond, "exact"))
 
 
@@ -146,8 +146,8 @@ def _one_method(name: str, method: str, z_max: int, cond: Conditions) -> Table:
     notes += [f"{method} ignores: {', '.join(ignored)}."] if ignored else []
     return Table(
         title=f"{what}, {method} method ({cond.describe()})",
-        columns=[Column("z", "z"), Column(attr, header, "-", digits)],
-        rows=[{"z": int(zi), attr: float(v)} for zi, v in zip(z, values, strict=True)],
+        columns=[Column("balls", "z"), Column(attr, header, "-", digits)],
+        rows=[{"balls": int(zi), attr: float(v)} for zi, v in zip(z, values, strict=True)],
         notes=notes + _omitted_note(z_max, cond) + _method_bearing_note(cond),
         conditions=_conditions(cond, method),
     )
@@ -165,12 +165,12 @@ def _compare(name: str, z_max: int, cond: Conditions) -> Table:
         for m, r in results.items()
         if m != "exact"
     }
-    columns = [Column("z", "z"), Column("n", "n")]
+    columns = [Column("balls", "z"), Column("loaded_balls", "n")]
     columns += [Column(f"{attr}_{m}", f"{header} {m}", "-", digits) for m in values]
     columns += [Column(f"error_{m}", f"{m} vs exact", "%", 3) for m in errors]
     rows = []
     for i, zi in enumerate(z):
-        row: dict[str, Any] = {"z": int(zi), "n": int(loaded[i])}
+        row: dict[str, Any] = {"balls": int(zi), "loaded_balls": int(loaded[i])}
         row.update({f"{attr}_{m}": float(v[i]) for m, v in values.items()})
         row.update({f"error_{m}": 100.0 * float(e[i]) for m, e in errors.items()})
         rows.append(row)

@@ -12,6 +12,7 @@ without an axial load).
 
 from __future__ import annotations
 
+import dataclasses
 from collections.abc import Sequence
 from dataclasses import dataclass
 from typing import Any
@@ -19,6 +20,10 @@ from typing import Any
 from bearingload.bearings.resolve import ResolvedBearing
 from bearingload.errors import InputError
 from bearingload.models.combined import CombinedDistribution
+
+#: The largest imposed misalignment accepted: a tilt of a few degrees would push the balls over
+#: the groove shoulders of a deep-groove bearing (which tolerates 2-10 arcmin). [°]
+MISALIGNMENT_MAX = 2.0
 
 
 @dataclass(frozen=True)
@@ -33,6 +38,7 @@ class CombinedCase:
     equivalent_load: float | None  # [N]
     rating_life: float | None  # [10^6 rev]
     reference_rating_life: float | None  # [10^6 rev]
+    warnings: tuple[str, ...] = ()
 
 
 def solve_combined_bearing(
@@ -70,8 +76,16 @@ def solve_combined_bearing(
     InputError
         ``ball_diameter`` when the geometry is unknown; the solver's own errors.
     """
+    from bearingload.bearings.checks import combined_warnings
     from bearingload.models.combined import solve_combined
 
+    if misalignment is not None and abs(misalignment) > MISALIGNMENT_MAX:
+        raise InputError(
+            "misalignment",
+            f"must be within ±{MISALIGNMENT_MAX:g}° (got {misalignment:g}°): a deep-groove ball "
+            "bearing tolerates 2-10 arcmin, and a tilt of degrees would push the balls over the "
+            "groove shoulders, which the model does not describe",
+        )
     out = []
     for b in bearings:
         if not b.has_geometry:
@@ -96,7 +110,10 @@ def solve_combined_bearing(
             poisson=b.poisson,
             stiffness=b.stiffness if b.stiffness_given else None,
         )
-        out.append(_lives(b, r, misalignment, rotating, dynamic_rating or b.C))
+        case = _lives(b, r, misalignment, rotating, dynamic_rating or b.C)
+        found = combined_warnings(b, load, axial_load, float(r.q_max), int(r.loaded_balls),
+                                  misalignment)  # fmt: skip
+        out.append(dataclasses.replace(case, warnings=tuple(found)))
     return out
 
 
@@ -151,9 +168,19 @@ def combined_values(c: CombinedCase) -> dict[str, Any]:
         "deflection_axial": float(r.axial),
         "tilt_deg": float(r.tilt),
         "tilt_cross_deg": float(r.tilt_cross),
-        "contact_angle_max_deg": float(abs(r.contact_angles).max()),
+        "contact_angle_max_deg": _largest_loaded_angle(r),
         "dynamic_rating": c.dynamic_rating,
         "equivalent_load": c.equivalent_load,
         "rating_life": c.rating_life,
         "reference_rating_life": c.reference_rating_life,
     }
+
+
+def _largest_loaded_angle(r: CombinedDistribution) -> float:
+    """The contact angle of largest size among the balls that carry load, with its sign. [°]"""
+    import numpy as np
+
+    angles = np.asarray(r.contact_angles, dtype=float).ravel()
+    loaded = np.asarray(r.ball_loads, dtype=float).ravel() > 0
+    pool = angles[loaded] if loaded.any() else angles
+    return float(pool[np.argmax(np.abs(pool))])
