@@ -41,7 +41,7 @@ golden: $(STAMP)
 ## make bench: vectorised solver against a per-case scipy brentq loop, one call against scipy root
 ## (hybr) and the Hertz contact against brentq on the ellipticity equation, ring_forces against a
 ## per-evaluation Python loop, bearingload batch on 10^5 csv cases against the brentq loop: ratios,
-## each in one run
+## each in one run; the work-precision report (times of this run) and the full stability grid
 bench: $(STAMP)
 	$(BIN)/python -m compileall -q bearingload
 	$(BIN)/python benchmarks/bench_solver.py
@@ -50,6 +50,8 @@ bench: $(STAMP)
 	$(BIN)/python benchmarks/bench_forces.py
 	$(BIN)/python benchmarks/bench_combined.py
 	$(BIN)/python benchmarks/bench_batch.py
+	$(BIN)/bearingload accuracy
+	$(BIN)/bearingload stability --size full
 
 clean:
 	rm -rf $(VENV) build *.egg-info .pytest_cache .mypy_cache .ruff_cache .hypothesis

@@ -22,6 +22,8 @@ COMMANDS = {
     "fit": "fit",
     "batch": "batch",
     "errata": "errata",
+    "accuracy": "accuracy",
+    "stability": "stability",
 }
 
 

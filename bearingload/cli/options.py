@@ -161,6 +161,9 @@ OPTION_NAMES = {
     "paper": "--paper",
     "maker": "--maker",
     "roller-length": "--roller-length",
+    "plot": "--plot",
+    "family": "--family",
+    "size": "--size",
 }
 
 

@@ -19,6 +19,7 @@ from bearingload.reports.render import Table, render, write_atomic
 def _registry() -> dict[str, Callable[[], Table]]:
     from bearingload.reports.errata import errata_table
     from bearingload.reports.tables import design_table, kuzmenko2010_306_table, table_k, table_kq
+    from bearingload.studies.accuracy import accuracy_table
     from bearingload.studies.compliance import fit_table
     from bearingload.studies.errata import errata_rows
     from bearingload.studies.kurochkin_errata import differences_table, example1_moment_table
@@ -44,6 +45,8 @@ def _registry() -> dict[str, Callable[[], Table]]:
         "errata": lambda: errata_table(errata_rows()),
         # ISO/TS 16281 L10r against clearance, 6205, radial and combined load
         "life_vs_clearance_6205": life_vs_clearance_table,
+        # work-precision of every method (issue 9): errors and iterations, no times
+        "accuracy": accuracy_table,
     }
 
 

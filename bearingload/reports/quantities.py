@@ -144,6 +144,27 @@ QUANTITIES: dict[str, Quantity] = {
         Quantity("ball_approaches", "approach delta", "mm", display=_UM),
         Quantity("ball_loads", "load Q", "N"),
         Quantity("contact_angles_deg", "contact angle", "°"),
+        # studies: work-precision (bearingload accuracy) and stability (bearingload stability)
+        Quantity("setting", "setting", "", None),
+        Quantity("cases", "cases", "", None),
+        Quantity("error_median", "median error", "-", 2),
+        Quantity("error_max", "largest error", "-", 2),
+        Quantity("seconds_per_case", "time per case, one per call", "s", 3),
+        Quantity("seconds_per_case_vectorised", "time per case, vectorised", "s", 3),
+        Quantity("family", "family", "", None),
+        Quantity("parameter", "parameter", "", None),
+        Quantity("max_residual", "max residual", "-", 2),
+        Quantity("max_jump", "max jump", "-", 2),
+        Quantity("jump_at", "jump at", "-", 2),
+        Quantity("batch_dependence", "batch dep.", "-", 2),
+        Quantity("max_iterations", "max it.", "", None),
+        Quantity("nan", "NaN/inf", "", None),
+        Quantity("warnings_raised", "warnings raised", "", None),
+        Quantity("refused", "refused", "", None),
+        Quantity("failures", "failures", "", None),
+        Quantity("check_value", "check", "-", 3),
+        Quantity("check_limit", "limit", "-", 3),
+        Quantity("check", "check", "", None),
     )
 }
 

@@ -1,0 +1,249 @@
+"""Work-precision study: every way the package computes Q_max, its error and its cost.
+
+The cases (fixed; ``data/accuracy_reference.csv``): bearing 306 of Kuzmenko (2010, §3.4:
+``F_r = 300 kgf``, ``K = 4700 kgf/mm^1.5``) with z = 6, 8, 12, 20, 40 balls, radial clearance
+``G_r`` = -20 (preload), 0, 20 (the paper's Delta = 0.01 mm), 100 and 400 um, a ball under the load
+(cage angle 0) and the load between two balls (180/z), m = 3/2: 50 cases.
+
+The reference is ``k = Q_max/F_r`` of the exact ring equilibrium at 50 digits (mpmath), written by
+``benchmarks/make_reference.py``, which shares no code with the package (a test re-computes a
+sample of it). The methods measured:
+
+* ``exact``: the ring-equilibrium engine (:func:`bearingload.models.equilibrium.solve`) at
+  relative residual tolerances 1e-2 ... 1e-14;
+* ``trial``: Kuzmenko's trial angles at 1°, 0.1°, 0.01° (:func:`bearingload.models.hand.kuzmenko2010_trial`;
+  the cases with clearance only, the procedure needs a gap);
+* ``continuum``: the continuum model at Gauss-Legendre orders 2 ... 128 and its default
+  (:func:`bearingload.models.continuum.solve_continuum`); it ignores the cage angle;
+* ``jr_table``: the continuum model with ``J_r`` interpolated in a table at steps of 0.1
+  (:func:`bearingload.models.hand.load_zone_table_k`);
+* ``stribeck`` (4.37/z) and ``palmgren`` (5/z).
+
+Errors and iteration counts are deterministic and committed (``tables/accuracy.*``); run times
+vary from run to run and are only printed.
+"""
+
+from __future__ import annotations
+
+import csv
+import os
+import time
+from collections.abc import Callable
+from dataclasses import dataclass
+from typing import Any
+
+import numpy as np
+
+from bearingload.reports.render import Column, Table
+
+REFERENCE_FILE = os.path.join(os.path.dirname(__file__), "data", "accuracy_reference.csv")
+#: Tolerances of the exact solver measured (relative equilibrium residual). [-]
+TOLERANCES = (1e-2, 1e-3, 1e-4, 1e-6, 1e-8, 1e-10, 1e-12, 1e-13, 1e-14)
+#: Resolutions of the trial angle. [°]
+TRIAL_STEPS = (1.0, 0.1, 0.01)
+#: Gauss-Legendre orders of the continuum model. [-]
+QUADRATURE_ORDERS = (2, 4, 8, 16, 32, 128)
+
+
+@dataclass(frozen=True)
+class Cases:
+    """The accuracy cases as arrays, with the reference load factor."""
+
+    balls: np.ndarray
+    load: np.ndarray
+    stiffness: np.ndarray
+    clearance: np.ndarray
+    cage_angle: np.ndarray
+    k_reference: np.ndarray
+
+    def take(self, mask: np.ndarray) -> Cases:
+        return Cases(*(getattr(self, f)[mask] for f in self.__dataclass_fields__))
+
+    def one(self, i: int) -> Cases:
+        """Case ``i`` as Python numbers, the way a caller passes one case."""
+        values = [getattr(self, f)[i].item() for f in self.__dataclass_fields__]
+        return Cases(*values)
+
+    def tile(self, copies: int) -> Cases:
+        return Cases(*(np.tile(getattr(self, f), copies) for f in self.__dataclass_fields__))
+
+    def __len__(self) -> int:
+        return int(self.balls.size)
+
+
+def reference_cases() -> Cases:
+    """Read the cases and their 50-digit reference ``k`` (as doubles) from the package data."""
+    with open(REFERENCE_FILE, encoding="utf-8", newline="") as fh:
+        rows = list(csv.reader(fh))[1:]
+    cols = list(zip(*rows, strict=True))
+    return Cases(
+        np.array(cols[1], dtype=np.int64),
+        *(np.array(cols[i], dtype=float) for i in range(2, 7)),
+    )
+
+
+#: A method: cases -> (k, iterations per case)
+Runner = Callable[[Cases], tuple[np.ndarray, np.ndarray]]
+
+
+@dataclass(frozen=True)
+class Method:
+    """One way of computing k: its name, its setting, which cases it applies to, and how."""
+
+    method: str
+    setting: str
+    run: Runner
+    applies: Callable[[Cases], np.ndarray] = lambda c: np.ones(len(c), dtype=bool)
+
+
+def _exact(tolerance: float) -> Runner:
+    def run(c: Cases) -> tuple[np.ndarray, np.ndarray]:
+        from bearingload.models.equilibrium import solve
+
+        r = solve(c.balls, c.load, c.stiffness, c.clearance, c.cage_angle, tolerance=tolerance)
+        return np.asarray(r.k), np.asarray(r.iterations)
+
+    return run
+
+
+def _trial(step: float) -> Runner:
+    def run(c: Cases) -> tuple[np.ndarray, np.ndarray]:
+        from bearingload.models.hand import kuzmenko2010_trial
+
+        r = kuzmenko2010_trial(c.balls, c.load, c.stiffness, c.clearance, c.cage_angle, step)
+        return np.asarray(r.k), np.asarray(r.evaluations)
+
+    return run
+
+
+def _continuum(nodes: int | None) -> Runner:
+    def run(c: Cases) -> tuple[np.ndarray, np.ndarray]:
+        from bearingload.models.continuum import solve_continuum
+
+        r = solve_continuum(c.balls, c.load, c.stiffness, c.clearance, nodes=nodes)
+        return np.asarray(r.k), np.asarray(r.iterations)
+
+    return run
+
+
+def _table(c: Cases) -> tuple[np.ndarray, np.ndarray]:
+    from bearingload.models.hand import load_zone_table_k
+
+    r = load_zone_table_k(c.balls, c.load, c.stiffness, c.clearance)
+    return np.asarray(r.k), np.asarray(r.iterations)
+
+
+def _constant(value: float) -> Runner:
+    def run(c: Cases) -> tuple[np.ndarray, np.ndarray]:
+        from bearingload.models.approximations import palmgren, stribeck
+
+        r = (stribeck if value == 4.37 else palmgren)(c.balls, c.load)
+        return np.asarray(r.k), np.zeros(np.shape(r.k), dtype=np.int64)
+
+    return run
+
+
+def methods() -> list[Method]:
+    """Every method measured, in the order of the report."""
+    out = [Method("exact", f"tolerance {t:.0e}", _exact(t)) for t in TOLERANCES]
+    out += [
+        Method("trial", f"phi0 step {s:g} deg", _trial(s), lambda c: c.clearance > 0)
+        for s in TRIAL_STEPS
+    ]
+    out += [Method("continuum", f"{n} nodes", _continuum(n)) for n in QUADRATURE_ORDERS]
+    out.append(Method("continuum", "default (48/128 nodes)", _continuum(None)))
+    out.append(Method("jr_table", "J_r step 0.1, 4 decimals", _table))
+    out.append(Method("stribeck", "4.37/z", _constant(4.37)))
+    out.append(Method("palmgren", "5/z", _constant(5.0)))
+    return out
+
+
+def _best_time(call: Callable[[], Any], repeats: int) -> float:
+    best = float("inf")
+    for _ in range(repeats):
+        t0 = time.perf_counter()
+        call()
+        best = min(best, time.perf_counter() - t0)
+    return best
+
+
+def _time_loop(method: Method, cases: Cases, repeats: int) -> float:
+    """Best time of running the cases one per call."""
+    singles = [cases.one(i) for i in range(len(cases))]
+
+    def loop() -> None:
+        for one in singles:
+            method.run(one)
+
+    return _best_time(loop, repeats)
+
+
+def _time_call(method: Method, cases: Cases, repeats: int) -> float:
+    """Best time of one vectorised call on all the cases."""
+    return _best_time(lambda: method.run(cases), repeats)
+
+
+def measure(*, timing: bool = False, repeats: int = 5, copies: int = 200) -> list[dict[str, Any]]:
+    """One row per method and setting: cases, relative error of Q_max (median, largest), iterations.
+
+    With ``timing``: the run time per case one case at a time (best of ``repeats`` loops over the
+    cases) and vectorised (one call on the cases repeated ``copies`` times, best of ``repeats``). [s]
+    """
+    all_cases = reference_cases()
+    rows = []
+    for method in methods():
+        cases = all_cases.take(method.applies(all_cases))
+        k, iterations = method.run(cases)
+        error = np.abs(k / cases.k_reference - 1.0)
+        row: dict[str, Any] = {
+            "method": method.method,
+            "setting": method.setting,
+            "cases": len(cases),
+            # 3 digits: an error is a magnitude, and its last digits change with the platform's
+            # rounding where it is near 1e-16
+            "error_median": float(f"{np.median(error):.3g}"),
+            "error_max": float(f"{np.max(error):.3g}"),
+            "iterations": int(np.max(iterations)),
+        }
+        if timing:
+            many = cases.tile(copies)
+            row["seconds_per_case"] = _time_loop(method, cases, repeats) / len(cases)
+            row["seconds_per_case_vectorised"] = _time_call(method, many, repeats) / len(many)
+        rows.append(row)
+    return rows
+
+
+def _column(key: str, header: str | None = None) -> Column:
+    """The renderer column of a registered quantity (bearingload.reports.quantities)."""
+    from bearingload.reports.quantities import QUANTITIES
+
+    q = QUANTITIES[key]
+    text = q.unit == "" and q.digits is None and key not in _COUNTS
+    return Column(key, header or q.label, q.unit, q.digits, "left" if text else "right")
+
+
+_COUNTS = ("cases", "iterations")
+COLUMNS = (
+    _column("method"),
+    _column("setting"),
+    _column("cases"),
+    _column("error_median"),
+    _column("error_max"),
+    _column("iterations", "iterations (max)"),
+)
+TIME_COLUMNS = (_column("seconds_per_case"), _column("seconds_per_case_vectorised"))
+NOTES = (
+    "Error: |Q_max/Q_max,ref - 1| against the exact ring equilibrium at 50 digits (mpmath, "
+    "benchmarks/make_reference.py).",
+    "Cases: bearing 306 (Kuzmenko 2010: 300 kgf, K = 4700 kgf/mm^1.5), z = 6, 8, 12, 20, 40, "
+    "G_r = -20, 0, 20, 100, 400 um, cage angle 0 and 180/z: 50 cases (trial: the 30 with clearance).",
+    "Iterations: Newton steps (exact, continuum), evaluations of the resolving equation (trial), "
+    "bisection steps (jr_table).",
+)
+
+
+def accuracy_table(rows: list[dict[str, Any]] | None = None) -> Table:
+    """The work-precision table; time columns when the rows carry them."""
+    rows = measure() if rows is None else rows
+    columns = COLUMNS + (TIME_COLUMNS if rows and "seconds_per_case" in rows[0] else ())
+    return Table("Work-precision of every method for Q_max (k = Q_max/F_r)", columns, rows, NOTES)
