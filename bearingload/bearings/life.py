@@ -35,7 +35,7 @@ def _out(x: np.ndarray) -> Any:
     return x[()] if x.ndim == 0 else x
 
 
-def rating_life(C: ArrayLike, P: ArrayLike, exponent: float = BALL_LIFE_EXPONENT) -> Any:
+def rating_life(C: ArrayLike, P: ArrayLike, exponent: ArrayLike = BALL_LIFE_EXPONENT) -> Any:
     """Basic rating life L10 = (C/P)^p. [10^6 revolutions]
 
     Parameters
@@ -71,7 +71,7 @@ def rating_life(C: ArrayLike, P: ArrayLike, exponent: float = BALL_LIFE_EXPONENT
 
 
 def allowable_load(
-    C: ArrayLike, revolutions: ArrayLike, exponent: float = BALL_LIFE_EXPONENT
+    C: ArrayLike, revolutions: ArrayLike, exponent: ArrayLike = BALL_LIFE_EXPONENT
 ) -> Any:
     """Equivalent load that gives a basic rating life of ``revolutions``: P = C / L^(1/p).
 

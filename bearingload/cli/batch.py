@@ -14,6 +14,10 @@ from bearingload.cli.options import CONTEXT, library_errors, output_options
 CHUNK_ROWS = 50_000
 
 
+#: Warnings shown on the terminal; json lists every row's warnings.
+MAX_WARNINGS_SHOWN = 20
+
+
 @click.command(context_settings=CONTEXT)
 @click.argument("cases", type=click.File("r", encoding="utf-8-sig"), metavar="CASES.csv")
 @click.option(
@@ -83,6 +87,7 @@ def batch(cases: TextIO, strict: bool, chunk_size: int, fmt: str, output: str | 
     held: dict[str, list[Any]] = {}
     held_rows: list[int] = []
     skipped: list[tuple[int, str]] = []
+    warned = 0
     progress = _Progress()
     total = 0
     with _Sink(fmt, output, strict) as sink:
@@ -99,6 +104,12 @@ def batch(cases: TextIO, strict: bool, chunk_size: int, fmt: str, output: str | 
                 progress.clear()
                 click.echo(f"Warning: row {row}: {message}", err=True)
             skipped += part.errors
+            for row, found in zip(part.rows, part.values.get("warnings", []), strict=False):
+                for text in found:
+                    warned += 1
+                    if warned <= MAX_WARNINGS_SHOWN:
+                        progress.clear()
+                        click.echo(f"Warning: row {row}: {text}", err=True)
             if fmt == "csv":
                 if part.rows:
                     sink.write(csv_rows(columns, part.rows, part.values))
@@ -120,6 +131,12 @@ def batch(cases: TextIO, strict: bool, chunk_size: int, fmt: str, output: str | 
             if not held_rows:
                 held = {c.key: [] for c in columns if c.key != "row"}
             sink.write(held_report(columns, held_rows, held, skipped, fmt))
+    if warned > MAX_WARNINGS_SHOWN:
+        click.echo(
+            f"Warning: {warned - MAX_WARNINGS_SHOWN} more warnings not shown (--format json "
+            "lists every row's warnings)",
+            err=True,
+        )
     if skipped:
         click.echo(f"Warning: {len(skipped)} of {total} rows skipped (exit status 1)", err=True)
         click.get_current_context().exit(1)

@@ -37,7 +37,8 @@ def batch_columns(header: Header) -> list[Column]:
         keys = [k for k in keys if k not in _BEARING_ONLY]
     if "method" not in header.names:
         keys.remove("epsilon")
-    exponent = None if "exponent" in header.names else 1.5
+    # rows of roller bearings (m = 10/9) or an exponent column mix exponents: N/mm^m then
+    exponent = None if "exponent" in header.names or header.has_bearing else 1.5
     return [column(k, exponent) for k in keys]
 
 
@@ -63,6 +64,8 @@ def held_report(
     data = {"row": list(rows)} | values
     records = [dict(zip(keys, r, strict=True)) for r in zip(*(data[k] for k in keys), strict=True)]
     if fmt == "json":
+        for record, found in zip(records, values.get("warnings", []), strict=False):
+            record["warnings"] = list(found)
         doc = {
             "cases": records,
             "skipped": [{"row": r, "reason": m} for r, m in skipped],

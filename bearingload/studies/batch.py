@@ -141,6 +141,8 @@ class BatchSolver:
             values = np.array(cells, dtype=float)
             if not np.all(np.isfinite(values)):
                 raise ValueError("not finite")
+            if not parser.unit and _implausible(name, parser.kind, values):
+                raise ValueError("implausible bare numbers: named row by row below")
             if parser.unit:
                 if name == "stiffness":
                     from bearingload.units import stiffness_factor
@@ -238,19 +240,14 @@ class BatchSolver:
             errors[row] = str(exc)
             return None
         return {"row": row, "bearing": b, "balls": z, "load": v["load"], "stiffness": k,
-                "clearance": g, "cage_angle": angle, "exponent": v["exponent"],
+                "clearance": g, "cage_angle": angle,
+                "exponent": v["exponent"] if b is None else b.exponent,
                 "method": v.get("method", "exact"), "revolutions": revolutions}  # fmt: skip
 
     def _bearing(self, v: dict[str, Any]) -> Any:
         """The resolved bearing of a row, resolved once per distinct inputs."""
         from bearingload.bearings.resolve import resolve_bearing
 
-        if v["exponent"] != 1.5:
-            raise InputError(
-                "exponent",
-                "a ball bearing (Hertz point contact) has m = 1.5; other exponents need balls "
-                "and stiffness without a bearing",
-            )
         args = {
             "balls": v.get("balls"),
             "ball_diameter": v.get("ball_diameter"),
@@ -276,7 +273,29 @@ class BatchSolver:
                 self.bearings[key] = hit
         if isinstance(hit, BearingloadError):
             raise hit
+        if v["exponent"] not in (1.5, hit.exponent):  # 1.5 is the column's default
+            contact = (
+                "a roller bearing (line contact) has m = 10/9"
+                if hit.kind == "roller"
+                else "a ball bearing (Hertz point contact) has m = 1.5"
+            )
+            raise InputError(
+                "exponent", f"{contact}; other exponents need balls and stiffness without a bearing"
+            )
         return hit
+
+
+def _implausible(name: str, kind: str, values: np.ndarray) -> bool:
+    """Whether some bare number lies outside the plausible range of its quantity
+    (:data:`bearingload.units.PLAUSIBLE_BARE`)."""
+    from bearingload.units import PLAUSIBLE_BARE
+
+    kind = {"clearance": "length", "cage_angle": "angle"}.get(kind, kind)
+    rule = PLAUSIBLE_BARE.get((kind, name)) or PLAUSIBLE_BARE.get((kind, None))
+    if rule is None:
+        return False
+    low, high, _ = rule
+    return bool(np.any((values < low) | (values >= high)))
 
 
 def _malformed(cells: int, columns: int) -> str:
@@ -411,7 +430,34 @@ def _values(result: Any, rows: Rows) -> Part:
         "valid": col(result.valid),
     }
     cols |= _bearing_values(rows, q)
+    cols["warnings"] = _warnings(rows, cols)
     return rows.numbers, cols
+
+
+def _warnings(rows: Rows, cols: dict[str, list[Any]]) -> list[list[str]]:
+    """The checks of ``solve`` on every row (bearings.checks): the static rating, the contact
+    pressure and a single loaded ball for a catalogue bearing; a single loaded ball otherwise."""
+    from types import SimpleNamespace
+
+    from bearingload.bearings.checks import case_warnings, element_warnings
+
+    out: list[list[str]] = [[] for _ in rows.bearings]
+    if all(b is None for b in rows.bearings):  # rings by z and K: only a single loaded ball
+        loaded = np.array([-1 if v is None else v for v in cols["loaded_balls"]])
+        for i in np.flatnonzero((loaded == 1) & (np.asarray(cols["balls"]) > 1)).tolist():
+            one = SimpleNamespace(loaded_balls=1)
+            out[i] = element_warnings(one, cols["balls"][i])
+        return out
+    out = []
+    for i, b in enumerate(rows.bearings):
+        one = SimpleNamespace(q_max=cols["q_max"][i], loaded_balls=cols["loaded_balls"][i])
+        if b is not None:
+            out.append(case_warnings(b, cols["load"][i], one))
+        elif one.loaded_balls == 1 and cols["balls"][i] > 1:
+            out.append(element_warnings(one, cols["balls"][i]))
+        else:
+            out.append([])
+    return out
 
 
 def _bearing_values(rows: Rows, q: np.ndarray) -> dict[str, list[Any]]:
@@ -428,11 +474,23 @@ def _bearing_values(rows: Rows, q: np.ndarray) -> dict[str, list[Any]]:
     for i, b in enumerate(bearings):
         if b is not None and b.has_geometry:
             groups.setdefault(id(b), []).append(i)
+    if any(b is not None and b.kind == "roller" for b in bearings):
+        groups.update(
+            {id(b): [i for i, x in enumerate(bearings) if x is b] for b in bearings
+             if b is not None and b.kind == "roller"}
+        )  # fmt: skip
     if groups:
+        from bearingload.bearings.checks import max_contact_pressures
         from bearingload.contact.hertz import ball_contacts
 
         for idx in groups.values():
             b = bearings[idx[0]]
+            if b.kind == "roller":  # line contact, one row at a time
+                for i in idx:
+                    found = max_contact_pressures(b, float(q[i]))
+                    if found is not None:
+                        out["p_max_inner"][i], out["p_max_outer"][i] = found
+                continue
             c = ball_contacts(
                 q[idx], b.ball_diameter, b.pitch_diameter, b.f_i, b.f_o, b.modulus, b.poisson
             )
@@ -443,11 +501,15 @@ def _bearing_values(rows: Rows, q: np.ndarray) -> dict[str, list[Any]]:
                 out["p_max_outer"][i] = outer[j]
     rated = [i for i, b in enumerate(bearings) if b is not None and b.C]
     if rated:
+        from bearingload.constants import BALL_LIFE_EXPONENT, ROLLER_LIFE_EXPONENT
+
         C = np.array([bearings[i].C for i in rated])
         rev = rows.revolutions[rated]
         load = rows.arrays["load"][rated]
-        life = np.ravel(rating_life(C, load))
-        allow = np.ravel(allowable_load(C, rev / 1e6))
+        p = np.array([ROLLER_LIFE_EXPONENT if bearings[i].kind == "roller" else BALL_LIFE_EXPONENT
+                      for i in rated])  # fmt: skip
+        life = np.ravel(rating_life(C, load, p))
+        allow = np.ravel(allowable_load(C, rev / 1e6, p))
         for j, i in enumerate(rated):
             out["rating_life"][i] = float(life[j])
             out["allowable_load"][i] = float(allow[j])

@@ -208,7 +208,8 @@ class CellParser:
         kind = "length" if kind == "clearance" else "angle" if kind == "cage_angle" else kind
         if plain is not None and self.unit:
             return units.parse_quantity(f"{plain!r}{self.unit}", kind, parameter=name)
-        return plain if plain is not None else units.parse_quantity(text, kind, parameter=name)
+        # a bare number: refused when implausible for its quantity, as on the command line
+        return units.parse_quantity(text, kind, parameter=name)
 
 
 def _plain(name: str, text: str) -> float | None:
