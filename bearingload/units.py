@@ -140,6 +140,12 @@ def _unreadable(text: str, kind: str) -> str:
     """Why ``text`` is no number with a unit, with a hint for the usual slips."""
     if re.match(r"^\s*[+-]?\d*,\d+", text):
         fixed = text.strip().replace(",", ".", 1)
+        if re.match(r"^\s*[+-]?\d{1,3}(,\d{3})+\b", text):  # 3,000: a thousands separator?
+            whole = re.sub(r"(?<=\d),(?=\d{3}\b)", "", text.strip())
+            return (
+                f"cannot read {text!r}: write no thousands separator ({whole}) or a decimal "
+                f"point ({fixed})"
+            )
         return f"cannot read {text!r}: write the decimal point, not a comma: {fixed}"
     return (
         f"cannot read {text!r} as a number with a unit; "

@@ -20,7 +20,7 @@ PEER_ARGS = ("-z", "7", "--ball-diameter", "11.5", "--pitch-diameter", "43.5",
 def _document(*args: str) -> dict:
     result = invoke("solve", *args, "--format", "json")
     assert result.exit_code == 0, result.output
-    return json.loads(result.output)
+    return json.loads(result.stdout)  # warnings go to stderr
 
 
 def _json(*args: str) -> dict:

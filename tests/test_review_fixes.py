@@ -109,3 +109,14 @@ def test_the_largest_contact_angle_is_that_of_a_loaded_ball():
         a for a, q in zip(case["contact_angles_deg"], case["ball_loads"], strict=True) if q > 0
     ]
     assert case["contact_angle_max_deg"] == max(loaded, key=abs)
+
+
+def test_second_review_sweep_moment_and_separators(capsys):
+    code, out, err = run_entry(
+        capsys, "sweep", "-z", "9", "-F", "1kN", "-K", "1e5", "-G", "0.9mm", "-n", "3"
+    )
+    assert code == 0 and "Warning: only one ball carries the load at 2 of 3 cage angles" in err
+    code, out, err = run_entry(capsys, "solve", "6205", "-F", "1kN", "--moment", "1e9Nmm")
+    assert code == 2 and "Invalid value for '--moment': tilts the inner ring by 39" in err
+    code, out, err = run_entry(capsys, "solve", "-z", "8", "-F", "3,000", "-K", "1e5")
+    assert code == 2 and "write no thousands separator (3000) or a decimal point (3.000)" in err

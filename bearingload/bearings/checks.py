@@ -244,7 +244,7 @@ def combined_warnings(
         )
     if misalignment is not None and abs(misalignment) > MISALIGNMENT_TOLERATED:
         out.append(
-            f"a misalignment of {misalignment:.4g}° is more than the 10 arcmin (0.167°) a "
-            "deep-groove ball bearing tolerates (SKF catalogue)"
+            f"a tilt of the inner ring of {misalignment:.4g}° is more than the 10 arcmin "
+            "(0.167°) a deep-groove ball bearing tolerates (SKF catalogue)"
         )
     return out

@@ -159,6 +159,10 @@ def sweep(
 
     result = run_sweep(z, load, k, g_r, m, steps)
     text = sweep_report(result, fmt, context)
+    from bearingload.reports.sweep import sweep_warnings
+
+    for warning in sweep_warnings(result):
+        click.echo(f"Warning: {warning}", err=True)
     if plot is not None:
         from bearingload.reports.plots import save_png, sweep_figure
 

@@ -200,4 +200,20 @@ def sweep_json(s: CageSweep) -> dict[str, Any]:
         "rows": rows,
         "summary": summary,
         "units": units(keys, s.exponent),
+        "warnings": sweep_warnings(s),
     }
+
+
+def sweep_warnings(s: CageSweep) -> list[str]:
+    """The checks of ``solve`` that need no bearing data, over the pitch: one loaded ball."""
+    import numpy as np
+
+    one = np.asarray(s.loaded_balls) == 1
+    if not one.any() or int(s.balls) <= 1:
+        return []
+    angles = np.asarray(s.cage_angle)[one]
+    return [
+        f"only one ball carries the load at {one.sum()} of {one.size} cage angles "
+        f"({angles.min():.6g}° to {angles.max():.6g}°): the result hangs on a single contact "
+        "(large clearance or few elements); check the clearance"
+    ]

@@ -13,6 +13,7 @@ without an axial load).
 from __future__ import annotations
 
 import dataclasses
+import math
 from collections.abc import Sequence
 from dataclasses import dataclass
 from typing import Any
@@ -110,9 +111,18 @@ def solve_combined_bearing(
             poisson=b.poisson,
             stiffness=b.stiffness if b.stiffness_given else None,
         )
+        tilt = math.degrees(
+            math.hypot(math.radians(float(r.tilt)), math.radians(float(r.tilt_cross)))
+        )
+        if moment is not None and misalignment is None and tilt > MISALIGNMENT_MAX:
+            raise InputError(
+                "moment",
+                f"tilts the inner ring by {tilt:.3g}°, beyond ±{MISALIGNMENT_MAX:g}°: the balls "
+                "would ride over the groove shoulders, which the model does not describe",
+            )
         case = _lives(b, r, misalignment, rotating, dynamic_rating or b.C)
         found = combined_warnings(b, load, axial_load, float(r.q_max), int(r.loaded_balls),
-                                  misalignment)  # fmt: skip
+                                  tilt if moment is not None else misalignment)  # fmt: skip
         out.append(dataclasses.replace(case, warnings=tuple(found)))
     return out
 
