@@ -297,15 +297,6 @@ def compliance_rows() -> list[dict[str, Any]]:
 
 
 def _row(cell: str, printed: str, computed: float, resolution: float, cause: str) -> dict[str, Any]:
-    diff = float(printed) - computed
-    agrees = abs(diff) <= 0.5 * resolution * (1 + 1e-9)
-    return {
-        "source": SOURCE,
-        "table": "eqs. (7)-(9)",
-        "cell": cell,
-        "printed": printed,
-        "computed": computed,
-        "difference": diff,
-        "verdict": "agrees within printed rounding" if agrees else "differs",
-        "cause": "" if agrees else cause,
-    }
+    from bearingload.studies.published import printed_row
+
+    return printed_row(SOURCE, "eqs. (7)-(9)", cell, printed, computed, resolution, cause)

@@ -34,6 +34,7 @@ import csv
 from dataclasses import dataclass, field
 from functools import cache
 from importlib import resources
+from typing import Any
 
 #: Paper key (the ``source`` column) -> full citation.
 SOURCES = {
@@ -175,3 +176,22 @@ def lookup(paper: str, table: str, cell: str) -> Published:
         if r.table == table and r.cell == cell:
             return r
     raise KeyError((paper, table, cell))
+
+
+def printed_row(
+    source: str, table: str, cell: str, printed: str, computed: float, resolution: float, cause: str
+) -> dict[str, Any]:
+    """One errata row: a printed number against the project's value. It agrees when the
+    difference is within half a unit of the last printed digit (``resolution``)."""
+    diff = float(printed) - computed
+    agrees = abs(diff) <= 0.5 * resolution * (1 + 1e-9)
+    return {
+        "source": source,
+        "table": table,
+        "cell": cell,
+        "printed": printed,
+        "computed": computed,
+        "difference": diff,
+        "verdict": "agrees within printed rounding" if agrees else "differs",
+        "cause": "" if agrees else cause,
+    }

@@ -273,15 +273,6 @@ def stiffness_rows() -> list[dict[str, Any]]:
 
 
 def _row(cell: str, printed: str, computed: float, resolution: float, cause: str) -> dict[str, Any]:
-    diff = float(printed) - computed
-    agrees = abs(diff) <= 0.5 * resolution * (1 + 1e-9)
-    return {
-        "source": SOURCE,
-        "table": "procedure (19)-(22)",
-        "cell": cell,
-        "printed": printed,
-        "computed": computed,
-        "difference": diff,
-        "verdict": "agrees within printed rounding" if agrees else "differs",
-        "cause": "" if agrees else cause,
-    }
+    from bearingload.studies.published import printed_row
+
+    return printed_row(SOURCE, "procedure (19)-(22)", cell, printed, computed, resolution, cause)
