@@ -39,6 +39,7 @@ Importing this module imports no numpy (the command line lists the models at sta
 
 from __future__ import annotations
 
+import functools
 from collections.abc import Callable
 from dataclasses import dataclass
 from typing import Any
@@ -83,11 +84,9 @@ class Method:
     @property
     def ignores(self) -> tuple[str, ...]:
         """The case inputs the model does not use (those missing from its signature)."""
-        import inspect
-
         from bearingload.models.case import INPUTS
 
-        params = inspect.signature(self.model()).parameters
+        params = _parameters(self.module, self.function)
         return tuple(name for name in INPUTS if name not in params)
 
     def __call__(
@@ -105,24 +104,33 @@ class Method:
 
     def run(self, case: Any) -> Any:
         """Run the model on a :class:`~bearingload.models.case.Case`; a :class:`Result`."""
-        import inspect
+        import dataclasses
 
         import numpy as np
 
         from bearingload.models.case import RESULT_QUANTITIES, Result, scalar
 
-        function = self.model()
-        params = inspect.signature(function).parameters
-        out = function(**{k: v for k, v in case.inputs().items() if k in params})
+        params = _parameters(self.module, self.function)
+        out = self.model()(**{k: v for k, v in case.inputs().items() if k in params})
         values = {}
         for name in RESULT_QUANTITIES:
             v = getattr(out, name, None)
             values[name] = None if v is None else scalar(np.broadcast_to(v, case.shape).copy())
         result = Result(self.name, case, model=out, **values)
-        if self.is_valid is not None:
-            valid = np.broadcast_to(self.is_valid(case, result), case.shape)
-            result = Result(self.name, case, model=out, valid=scalar(valid.copy()), **values)
-        return result
+        if self.is_valid is None:
+            return result
+        valid = np.broadcast_to(self.is_valid(case, result), case.shape)
+        return dataclasses.replace(result, valid=scalar(valid.copy()))
+
+
+@functools.cache
+def _parameters(module: str, function: str) -> frozenset[str]:
+    """The parameter names of a model function, read once per function."""
+    import importlib
+    import inspect
+
+    model = getattr(importlib.import_module(module), function)
+    return frozenset(inspect.signature(model).parameters)
 
 
 def _continuum_valid(case: Any, result: Any) -> Any:
