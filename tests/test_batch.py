@@ -328,13 +328,41 @@ def test_geometry_and_overrides_equal_solve(tmp_path):
             assert row[head] == value, (args, key)
 
 
-def test_not_utf8_is_an_error_and_writes_nothing(tmp_path):
+def test_a_line_not_utf8_is_a_bad_row_named_by_its_number(tmp_path):
+    """A line that is not UTF-8 is skipped and named (row and byte), the others are solved;
+    the same whichever path reads the block (bare numbers, units, quotes)."""
+    for first, second in (("8,1000,1e5", "9,1000,1e5"), ("8,1kN,1e5", '"9",1kN,1e5')):
+        p = tmp_path / "latin.csv"
+        p.write_bytes(
+            f"balls,load,stiffness\n{first}\n".encode() + b"8,1kN,1e5\xff\n"
+            + f"{second}\n".encode()
+        )  # fmt: skip
+        out = batch(str(p), "--format", "csv", "--chunk-size", "2")
+        assert out.exit_code == 1
+        assert [line.split(",")[0] for line in out.stdout.splitlines()] == ["row", "2", "4"]
+        assert out.stderr.splitlines()[0] == (
+            "Warning: row 3: not UTF-8 text (invalid start byte at byte 10 of the line)"
+        )
+
+
+def test_a_header_not_utf8_is_an_error_and_writes_nothing(tmp_path):
     p = tmp_path / "latin.csv"
-    p.write_bytes(b"balls,load,stiffness\n8,1kN,1e5\n" * 1 + b"8,1kN,1e5\xff\n")
+    p.write_bytes(b"balls,load \xb5,stiffness\n8,1kN,1e5\n")
     target = tmp_path / "out.csv"
-    out = batch(str(p), "--format", "csv", "-o", str(target), "--chunk-size", "1")
+    out = batch(str(p), "--format", "csv", "-o", str(target))
     assert out.exit_code == 2 and "not UTF-8 text" in out.stderr
     assert not target.exists() and sorted(os.listdir(tmp_path)) == ["latin.csv"]
+
+
+def test_line_ends_and_byte_order_mark(tmp_path):
+    """CR LF line ends and a UTF-8 byte order mark read as LF; CR alone is refused."""
+    expected = batch("-", "--format", "csv", stdin="balls,load,stiffness\n8,1kN,1e5\n").stdout
+    p = tmp_path / "crlf.csv"
+    p.write_bytes(b"\xef\xbb\xbfballs,load,stiffness\r\n8,1kN,1e5\r\n")
+    assert batch(str(p), "--format", "csv").stdout == expected
+    p.write_bytes(b"balls,load,stiffness\r8,1kN,1e5\r")
+    out = batch(str(p), "--format", "csv")
+    assert out.exit_code == 2 and "CR alone" in out.stderr
 
 
 def test_roller_bearing_rows_are_solved_as_rollers(tmp_path):
@@ -377,3 +405,33 @@ def test_rows_carry_the_checks_of_solve(tmp_path):
     assert cases[2]["warnings"] == []
     assert "Warning: row 2: static safety factor" in out.stderr
     assert "Warning: row 3: only one ball carries the load" in out.stderr
+
+
+def test_bare_number_blocks_and_parsed_blocks_agree(tmp_path):
+    """A block of bare numbers is read by numpy at once, a block with a unit, a quote or a
+    blank line cell by cell: the same cases give the same bytes either way."""
+    import numpy as np
+
+    rng = np.random.default_rng(7)
+    rows = [
+        (int(rng.integers(3, 40)), float(rng.uniform(1, 1e4)), float(10 ** rng.uniform(4, 6)),
+         float(rng.choice([0.0, rng.uniform(-0.01, 0.05)])), float(rng.uniform(0, 30)))
+        for _ in range(40)
+    ]  # fmt: skip
+    head = "balls,load [N],stiffness,clearance [mm],cage_angle\n"
+    plain = head + "".join(",".join(repr(v) for v in r) + "\n" for r in rows)
+    lines = plain.splitlines(keepends=True)
+    lines[1] = lines[1].replace(",", "N,", 2).replace("N,", ",", 1)  # load '...N': a unit
+    lines[12] = '"' + lines[12].replace(",", '",', 1)  # a quoted cell from here on
+    lines.insert(5, "\n")  # a blank line (row numbers move on)
+    mixed = "".join(lines)
+    a = batch("-", "--format", "csv", "--chunk-size", "10", stdin=plain)
+    b = batch("-", "--format", "csv", "--chunk-size", "10", stdin=mixed)
+    assert a.exit_code == b.exit_code == 0, (a.stderr, b.stderr)
+
+    def cases(out: str) -> list[str]:
+        return [line.split(",", 1)[1] for line in out.splitlines()[1:]]
+
+    assert cases(a.stdout) == cases(b.stdout)
+    numbers = [int(line.split(",")[0]) for line in b.stdout.splitlines()[1:]]
+    assert numbers == [*range(2, 6), *range(7, 43)]

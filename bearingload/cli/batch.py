@@ -4,7 +4,7 @@ from __future__ import annotations
 
 import sys
 import time
-from typing import Any, TextIO
+from typing import Any, BinaryIO
 
 import click
 
@@ -19,7 +19,7 @@ MAX_WARNINGS_SHOWN = 20
 
 
 @click.command(context_settings=CONTEXT)
-@click.argument("cases", type=click.File("r", encoding="utf-8-sig"), metavar="CASES.csv")
+@click.argument("cases", type=click.File("rb"), metavar="CASES.csv")
 @click.option(
     "--strict",
     is_flag=True,
@@ -34,7 +34,7 @@ MAX_WARNINGS_SHOWN = 20
 )
 @output_options
 @library_errors
-def batch(cases: TextIO, strict: bool, chunk_size: int, fmt: str, output: str | None) -> None:
+def batch(cases: BinaryIO, strict: bool, chunk_size: int, fmt: str, output: str | None) -> None:
     """Solve every case (row) of a csv file: one output row per case, in input order, with the
     input file's row number (the header is row 1), the inputs and the columns that
     'bearingload solve --format csv' writes for one case.
@@ -49,7 +49,7 @@ def batch(cases: TextIO, strict: bool, chunk_size: int, fmt: str, output: str | 
     an error (exit 2); the combined load (axial_load ...) is not read by batch yet.
 
     A bad row (a negative load, an unknown unit or bearing, z = 0, a line with the wrong
-    number of cells) is named on standard error with its row number and the reason; the other
+    number of cells, a line that is not UTF-8 text) is named on standard error with its row number and the reason; the other
     rows are still solved and written, and the exit status is 1 when any row was skipped
     (0: every row solved; 2: bad command line or header, or a bad row with --strict).
 
@@ -78,8 +78,6 @@ def batch(cases: TextIO, strict: bool, chunk_size: int, fmt: str, output: str | 
         first = next(stream, None)
     except InputError as exc:
         raise click.UsageError(_header_message(exc)) from exc
-    except UnicodeDecodeError as exc:
-        raise click.UsageError(_not_text(exc)) from exc
     assert first is not None  # chunks() yields the header at least once
     header = first[0]
     columns = batch_columns(header)
@@ -93,7 +91,7 @@ def batch(cases: TextIO, strict: bool, chunk_size: int, fmt: str, output: str | 
     with _Sink(fmt, output, strict) as sink:
         if fmt == "csv":
             sink.write(csv_head(columns))
-        for _, lines in _decoded(_all(first, stream)):
+        for _, lines in _all(first, stream):
             total += len(lines)
             part = solver.solve(lines)
             if part.errors and strict:
@@ -122,7 +120,7 @@ def batch(cases: TextIO, strict: bool, chunk_size: int, fmt: str, output: str | 
                         f"{MAX_HELD_ROWS} rows; write --format csv for longer files"
                     )
                 for k, v in part.values.items():
-                    held.setdefault(k, []).extend(v)
+                    held.setdefault(k, []).extend(v.tolist() if hasattr(v, "tolist") else v)
             progress.update(total)
         progress.clear()
         if fmt != "csv":
@@ -145,18 +143,6 @@ def batch(cases: TextIO, strict: bool, chunk_size: int, fmt: str, output: str | 
 def _all(first: Any, rest: Any) -> Any:
     yield first
     yield from rest
-
-
-def _decoded(parts: Any) -> Any:
-    """The chunks; a byte that is not UTF-8 is a usage error (nothing is written)."""
-    try:
-        yield from parts
-    except UnicodeDecodeError as exc:
-        raise click.UsageError(_not_text(exc)) from exc
-
-
-def _not_text(exc: UnicodeDecodeError) -> str:
-    return f"Invalid value for 'CASES.csv': not UTF-8 text ({exc.reason} at byte {exc.start})"
 
 
 def _header_message(exc: Exception) -> str:

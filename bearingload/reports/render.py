@@ -148,14 +148,12 @@ def _grid(cells: list[list[str]], headers: list[str], align: list[str], *, markd
 
 def _csv(t: Table) -> str:
     """One rectangular csv table: the conditions as leading columns, then the row columns."""
-    fixed = [_csv_cell(_machine_text(v)) for _, v in t.conditions]
-    lines = [
-        ",".join([_csv_header(c) for c, _ in t.conditions] + [_csv_header(c) for c in t.columns])
-    ]
-    lines += [
-        ",".join(fixed + [_csv_cell(_machine_text(r[c.key])) for c in t.columns]) for r in t.rows
-    ]
-    return "\n".join(lines)
+    columns = [c for c, _ in t.conditions] + list(t.columns)
+    if len({c.key for c in columns}) != len(columns):
+        raise ValueError(f"csv columns named twice in table {t.title!r}")
+    values = {c.key: [v] * len(t.rows) for c, v in t.conditions}
+    values |= {c.key: [r[c.key] for r in t.rows] for c in t.columns}
+    return (csv_header(columns) + csv_block(columns, values)).removesuffix("\n")
 
 
 def _table_documents(tables: Sequence[Table]) -> Any:
@@ -199,73 +197,78 @@ def csv_header(columns: Sequence[Column]) -> str:
     return ",".join(_csv_header(c) for c in columns) + "\n"
 
 
-def csv_block(columns: Sequence[Column], values: dict[str, Sequence[Any]]) -> str:
-    """csv lines (each with its line end) of column-wise ``values`` (key -> list; None: blank).
+def csv_block(columns: Sequence[Column], values: dict[str, Any]) -> str:
+    """csv lines (each with its line end) of column-wise ``values`` (key -> list or numpy
+    array over the rows; None in a list: a blank cell).
 
     The cells are those :func:`render` writes for the same rows (floats at 10 significant
-    digits), built column by column and joined by one printf-style format per line, so that a
-    long table is written in chunks at the cost of little more than one format per number.
+    digits), built a whole column at a time (:mod:`bearingload.reports.csv_text`), so that a
+    long table is written in chunks at the cost of a few array operations per column.
     """
-    specs, cells = [], []
-    for c in columns:
-        vals = values[c.key]
+    from bearingload.reports.csv_text import join_rows
+
+    if not columns or not len(values[columns[0].key]):
+        return ""
+    parts = [_column_part(values[c.key]) for c in columns]
+    try:
+        return join_rows(parts)
+    except ValueError as exc:  # a NaN or infinity: name its column
+        bad = next(c.key for c, (kind, data) in zip(columns, parts, strict=True)
+                   if kind == "f" and not _all_finite(data))  # fmt: skip
+        raise ValueError(f"refusing to write a non-finite number in column {bad!r}") from exc
+
+
+def _all_finite(data: Any) -> bool:
+    import numpy as np
+
+    values = data[0] if isinstance(data, tuple) else data
+    return bool(np.all(np.isfinite(np.asarray(values, dtype=float))))
+
+
+def _column_part(vals: Any) -> tuple[str, Any]:
+    """One column for :func:`bearingload.reports.csv_text.join_rows`: numbers as arrays (with
+    a mask of blank cells where a list holds None), anything else as text cells."""
+    import numpy as np
+
+    from bearingload.reports import csv_text
+
+    kind = getattr(getattr(vals, "dtype", None), "kind", "")
+    if not kind:
         types = set(map(type, vals))
-        if types == {float}:
-            spec, col = _float_column(c.key, vals)
-        elif types == {int}:
-            spec, col = "%d", vals
-        elif types <= {float, type(None)}:
-            spec, col = "%s", _float_cells(c.key, vals)
-        else:
-            cache: dict[Any, str] = {}
-            spec = "%s"
-            col = [cache[v] if v in cache else cache.setdefault(v, _cell(v)) for v in vals]
-        specs.append(spec)
-        cells.append(col)
-    line = ",".join(specs) + "\n"
-    return "".join(map(line.__mod__, zip(*cells, strict=True)))
+        if types <= {float, int, type(None)} and not types <= {type(None)}:
+            dtype = np.int64 if types <= {int, type(None)} else float
+            kind = "i" if dtype is np.int64 else "f"
+            if type(None) not in types:
+                return kind, np.asarray(vals, dtype=dtype)
+            missing = np.array([v is None for v in vals], bool)
+            return kind, (np.asarray([v or 0 for v in vals], dtype=dtype), missing)
+    if kind == "f":
+        return "f", vals
+    if kind and kind in "iu":
+        return "i", vals
+    if kind == "b":
+        pair = csv_text.text_cells([_cell(False), _cell(True)])
+        return "t", pair[np.asarray(vals, dtype=np.intp)]
+    items = vals.tolist() if kind else list(vals)
+    if items and type(items[0]) is str and items.count(items[0]) == len(items):
+        one = csv_text.text_cells([_cell(items[0])])
+        return "t", np.broadcast_to(one, (len(items), one.shape[1]))
+    plain = all(type(v) is str for v in items)  # text: the value is its own key
+    distinct: dict[Any, int] = {}
+    texts: list[str] = []
+    codes = []
+    for v in items:  # the text of each distinct value, once
+        k = v if plain else (type(v), repr(v))  # 1, 1.0 and True; 0.0 and -0.0 differ
+        i = distinct.get(k)
+        if i is None:
+            i = distinct[k] = len(texts)
+            texts.append(_cell(v))
+        codes.append(i)
+    return "t", csv_text.text_cells(texts)[np.asarray(codes, dtype=np.intp)]
 
 
 def _cell(value: Any) -> str:
     return "" if value is None else _csv_cell(_machine_text(value))
-
-
-def _float_column(key: str, vals: Sequence[float]) -> tuple[str, Sequence[Any]]:
-    """A float column as ``("%.10g", values)`` where that prints what :func:`machine_number`
-    gives, else as ``("%s", texts)``: the ``.10g`` text is ``repr(float(.10g text))`` but
-    for whole numbers (no ``.0``), |v| >= 1e10 and subnormal or huge exponents."""
-    import numpy as np
-
-    a = np.abs(np.asarray(vals, dtype=float))
-    if not np.all(np.isfinite(a)):
-        raise ValueError(f"refusing to write a non-finite number in column {key!r}")
-    with np.errstate(all="ignore"):
-        near_whole = np.abs(a - np.round(a)) <= 1e-9 * np.maximum(a, 1.0)
-    odd = np.flatnonzero(near_whole | (a >= 1e9) | (a < 1e-290))
-    if odd.size == 0:
-        return f"%.{MACHINE_DIGITS}g", vals
-    texts = list(map(f"{{:.{MACHINE_DIGITS}g}}".format, vals))
-    cache: dict[Any, str] = {}
-    for i in odd.tolist():
-        v = vals[i]
-        key = v if v else repr(v)  # 0.0 and -0.0 print differently
-        texts[i] = cache[key] if key in cache else cache.setdefault(key, _machine_text(v))
-    return "%s", texts
-
-
-def _float_cells(key: str, vals: Sequence[Any]) -> list[str]:
-    """``repr(float(f"{v:.10g}"))`` of every value (as :func:`machine_number`; None: blank)."""
-    numbers = [v for v in vals if v is not None]
-    if not all(map(math.isfinite, numbers)):
-        raise ValueError(f"refusing to write a non-finite number in column {key!r}")
-    fmt = f"{{:.{MACHINE_DIGITS}g}}".format
-    texts = [fmt(v) if v is not None else "" for v in vals]
-    return [
-        (t + ".0" if t else t)
-        if "." not in t and "e" not in t
-        else (repr(float(t)) if "e+1" in t or "e+3" in t or "e-3" in t else t)
-        for t in texts
-    ]
 
 
 class atomic_file:

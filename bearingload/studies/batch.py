@@ -15,13 +15,14 @@ The quantities are those of :func:`bearingload.studies.loaded_bearing.case_value
 
 from __future__ import annotations
 
+from collections.abc import Sequence
 from dataclasses import dataclass, field
 from typing import Any
 
 import numpy as np
 
 from bearingload.errors import BearingloadError, InputError
-from bearingload.studies.batch_input import CellParser, Header
+from bearingload.studies.batch_input import Block, CellParser, Header
 from bearingload.studies.loaded_bearing import DEFAULT_REVOLUTIONS
 
 
@@ -34,13 +35,14 @@ class Chunk:
     rows : list of int
         Row numbers of the solved rows, in input order (the header is row 1).
     values : dict
-        Quantity key -> list over ``rows`` (None: not given for that row).
+        Quantity key -> numpy array or list over ``rows`` (a list holds None where a
+        quantity is not given for that row).
     errors : list of (int, str)
         Skipped rows: row number and the reason (``"load: must be greater than 0 N (got -5)"``).
     """
 
     rows: list[int] = field(default_factory=list)
-    values: dict[str, list[Any]] = field(default_factory=dict)
+    values: dict[str, Any] = field(default_factory=dict)
     errors: list[tuple[int, str]] = field(default_factory=list)
 
 
@@ -52,14 +54,14 @@ class BatchSolver:
         self.parsers = {n: CellParser(n, header.units.get(n)) for n in header.names}
         self.bearings: dict[tuple[Any, ...], Any] = {}
 
-    def solve(self, lines: list[tuple[int, list[str]]]) -> Chunk:
-        """Solve one chunk of ``(row number, cells)``."""
-        errors: dict[int, str] = {}
+    def solve(self, block: Block) -> Chunk:
+        """Solve one block of rows."""
+        errors: dict[int, str] = dict(block.errors)
         if self.header.has_bearing:
-            cells = self._cells(lines, errors)
+            cells = self._cells(block.cells(), errors)
             rows = Rows.of([x for x in (self._row(r, c, errors) for r, c in cells) if x])
         else:
-            rows = self._hand_rows(lines, errors)
+            rows = self._numbers_only(block) or self._hand_rows(block.cells(), errors)
         parts = _solve_rows(rows, errors)
         out = Chunk(errors=sorted(errors.items()))
         if len(parts) == 1:
@@ -69,9 +71,60 @@ class BatchSolver:
             order = sorted(range(len(numbers)), key=numbers.__getitem__)
             out.rows = [numbers[i] for i in order]
             for k in parts[0][1]:
-                merged = [v for _, c in parts for v in c[k]]
-                out.values[k] = [merged[i] for i in order]
+                pieces = [c[k] for _, c in parts]
+                if all(isinstance(p, np.ndarray) for p in pieces):
+                    out.values[k] = np.concatenate(pieces)[order]
+                else:
+                    merged = [v for p in pieces for v in _items(p)]
+                    out.values[k] = [merged[i] for i in order]
         return out
+
+    def _numbers_only(self, block: Block) -> Rows | None:
+        """The rows of a block whose cells are all bare numbers (and the columns all numeric:
+        balls, stiffness, load ...), read by numpy at once; None when some cell needs the cell
+        parser (a unit, 'half', a fraction, a bad or implausible number), which then reads the
+        block and names the bad rows."""
+        names = self.header.names
+        n = len(block.numbers)
+        if block.lines is None or not n or not set(names) <= _NUMERIC or not _HAND <= set(names):
+            return None
+        try:
+            table = np.loadtxt(block.lines, delimiter=",", comments=None, dtype=float, ndmin=2)
+        except ValueError:
+            return None
+        if table.shape != (n, len(names)):
+            return None
+        given = dict(zip(names, table.T, strict=True))
+        arrays: dict[str, np.ndarray] = {}
+        for name, default in (("exponent", 1.5), ("balls", None), ("load", None),
+                              ("stiffness", None), ("clearance", 0.0), ("cage_angle", 0.0)):  # fmt: skip
+            if name not in given:
+                arrays[name] = np.full(n, default)
+                continue
+            found = self._bare(name, given[name], arrays["exponent"])
+            if found is None:
+                return None
+            arrays[name] = found
+        return Rows(block.numbers, arrays, ["exact"] * n, [None] * n, np.full(n, 36e6), True)
+
+    def _bare(self, name: str, values: np.ndarray, m: np.ndarray | None) -> np.ndarray | None:
+        """Bare numbers of a column in package units (a unit in the header scales them), or
+        None when some are not finite or implausible for their quantity without a unit."""
+        parser = self.parsers[name]
+        if not np.all(np.isfinite(values)):
+            return None
+        if not parser.unit:
+            return None if _implausible(name, parser.kind, values) else values
+        if name == "stiffness":
+            from bearingload.units import stiffness_factor
+
+            assert m is not None
+            factors = {e: stiffness_factor(parser.unit, e, parameter=name) for e in set(m.tolist())}
+            return values * np.array([factors[e] for e in m.tolist()])
+        from bearingload.units import parse_quantity
+
+        kind = {"clearance": "length", "cage_angle": "angle"}.get(parser.kind, parser.kind)
+        return values * parse_quantity("1" + parser.unit, kind, parameter=name)
 
     def _hand_rows(self, lines: list[tuple[int, list[str]]], errors: dict[int, str]) -> Rows:
         """The rows of a file without bearing columns (rings given by z and K), column by
@@ -115,7 +168,7 @@ class BatchSolver:
                         bad.setdefault(i, str(exc))
         for i, message in bad.items():
             errors[numbers[i]] = message
-        return Rows(numbers, arrays, methods, [None] * len(good), np.full(len(good), 36e6))
+        return Rows(numbers, arrays, methods, [None] * len(good), np.full(len(good), 36e6), True)
 
     def _column(
         self,
@@ -137,25 +190,10 @@ class BatchSolver:
             return np.full(n, default)
         cells = texts[name]
         parser = self.parsers[name]
-        try:
-            values = np.array(cells, dtype=float)
-            if not np.all(np.isfinite(values)):
-                raise ValueError("not finite")
-            if not parser.unit and _implausible(name, parser.kind, values):
-                raise ValueError("implausible bare numbers: named row by row below")
-            if parser.unit:
-                if name == "stiffness":
-                    from bearingload.units import stiffness_factor
-
-                    assert m is not None
-                    return values * np.array(
-                        [stiffness_factor(parser.unit, e, parameter=name) for e in m.tolist()]
-                    )
-                from bearingload.units import parse_quantity
-
-                kind = {"clearance": "length", "cage_angle": "angle"}.get(parser.kind, parser.kind)
-                return values * parse_quantity("1" + parser.unit, kind, parameter=name)
-            return values
+        try:  # bare numbers at once; otherwise (and to name the bad ones) cell by cell
+            found = self._bare(name, np.array(cells, dtype=float), m)
+            if found is not None:
+                return found
         except (ValueError, InputError):
             pass
         out = np.ones(n)
@@ -285,6 +323,16 @@ class BatchSolver:
         return hit
 
 
+def _items(values: Any) -> list[Any]:
+    """A column as a list of Python values (None where not given)."""
+    return values.tolist() if isinstance(values, np.ndarray) else list(values)
+
+
+#: Columns whose cells may all be bare numbers (then a block is read by numpy at once).
+_NUMERIC = frozenset(("balls", "load", "stiffness", "clearance", "cage_angle", "exponent"))
+_HAND = frozenset(("balls", "load", "stiffness"))
+
+
 def _implausible(name: str, kind: str, values: np.ndarray) -> bool:
     """Whether some bare number lies outside the plausible range of its quantity
     (:data:`bearingload.units.PLAUSIBLE_BARE`)."""
@@ -326,6 +374,7 @@ class Rows:
     methods: list[str]
     bearings: list[Any]
     revolutions: np.ndarray
+    by_hand: bool = False  # True: every ring given by z and K (no bearing)
 
     @classmethod
     def of(cls, rows: list[dict[str, Any]]) -> Rows:
@@ -337,6 +386,7 @@ class Rows:
             [r["method"] for r in rows],
             [r["bearing"] for r in rows],
             np.array([r["revolutions"] for r in rows], dtype=float),
+            all(r["bearing"] is None for r in rows),
         )
 
     def take(self, idx: list[int]) -> Rows:
@@ -346,6 +396,7 @@ class Rows:
             [self.methods[i] for i in idx],
             [self.bearings[i] for i in idx],
             self.revolutions[idx],
+            self.by_hand,
         )
 
 
@@ -366,7 +417,10 @@ def _solve_rows(rows: Rows, errors: dict[int, str]) -> list[Part]:
         except InputError as exc:
             errors[rows.numbers[i]] = str(exc)
     out = []
-    for method in dict.fromkeys(rows.methods):
+    methods = dict.fromkeys(rows.methods)
+    if len(methods) == 1 and not any(n in errors for n in rows.numbers):
+        return _solve_method(rows.methods[0], rows, errors)  # every row, one call
+    for method in methods:
         idx = [i for i, (n, m) in enumerate(zip(rows.numbers, rows.methods, strict=True))
                if m == method and n not in errors]  # fmt: skip
         if idx:
@@ -401,22 +455,27 @@ def _values(result: Any, rows: Rows) -> Part:
     n = len(rows.numbers)
     arrays = rows.arrays
 
-    def col(value: Any) -> list[Any]:
-        return [None] * n if value is None else np.broadcast_to(value, (n,)).tolist()
+    def col(value: Any) -> Any:
+        return [None] * n if value is None else np.broadcast_to(value, (n,)).copy()
 
     q = np.broadcast_to(result.q_max, (n,))
     approach = None if result.x is None else (q / arrays["stiffness"]) ** (1.0 / arrays["exponent"])
     bearings = rows.bearings
+    by_hand = rows.by_hand
     cols = {
-        "bearing": [None if b is None else (b.designation or "given by hand") for b in bearings],
+        "bearing": [None] * n
+        if by_hand
+        else [None if b is None else (b.designation or "given by hand") for b in bearings],
         "method": rows.methods,
-        "balls": arrays["balls"].astype(np.int64).tolist(),
-        "load": arrays["load"].tolist(),
-        "stiffness": arrays["stiffness"].tolist(),
-        "clearance": arrays["clearance"].tolist(),
-        "clearance_pick": [None if b is None else b.clearance_pick for b in bearings],
-        "cage_angle_deg": np.mod(arrays["cage_angle"], 360.0).tolist(),
-        "exponent": arrays["exponent"].tolist(),
+        "balls": arrays["balls"].astype(np.int64),
+        "load": arrays["load"],
+        "stiffness": arrays["stiffness"],
+        "clearance": arrays["clearance"],
+        "clearance_pick": [None] * n
+        if by_hand
+        else [None if b is None else b.clearance_pick for b in bearings],
+        "cage_angle_deg": np.mod(arrays["cage_angle"], 360.0),
+        "exponent": arrays["exponent"],
         "q_max": col(result.q_max),
         "k": col(result.k),
         "K_Q": col(result.K_Q),
@@ -434,19 +493,24 @@ def _values(result: Any, rows: Rows) -> Part:
     return rows.numbers, cols
 
 
-def _warnings(rows: Rows, cols: dict[str, list[Any]]) -> list[list[str]]:
+def _warnings(rows: Rows, cols: dict[str, Any]) -> list[Sequence[str]]:
     """The checks of ``solve`` on every row (bearings.checks): the static rating, the contact
     pressure and a single loaded ball for a catalogue bearing; a single loaded ball otherwise."""
     from types import SimpleNamespace
 
     from bearingload.bearings.checks import case_warnings, element_warnings
 
-    out: list[list[str]] = [[] for _ in rows.bearings]
-    if all(b is None for b in rows.bearings):  # rings by z and K: only a single loaded ball
-        loaded = np.array([-1 if v is None else v for v in cols["loaded_balls"]])
+    out: list[Sequence[str]] = [()] * len(rows.bearings)
+    if rows.by_hand:  # rings by z and K: only a single loaded ball
+        found = cols["loaded_balls"]
+        loaded = (
+            found
+            if isinstance(found, np.ndarray)
+            else np.array([-1 if v is None else v for v in found])
+        )
+        single = tuple(element_warnings(SimpleNamespace(loaded_balls=1), 2))  # one sentence
         for i in np.flatnonzero((loaded == 1) & (np.asarray(cols["balls"]) > 1)).tolist():
-            one = SimpleNamespace(loaded_balls=1)
-            out[i] = element_warnings(one, cols["balls"][i])
+            out[i] = single
         return out
     out = []
     for i, b in enumerate(rows.bearings):
@@ -470,6 +534,8 @@ def _bearing_values(rows: Rows, q: np.ndarray) -> dict[str, list[Any]]:
         for k in ("p_max_inner", "p_max_outer", "rating_life", "revolutions", "allowable_load")
     }
     bearings = rows.bearings
+    if rows.by_hand:  # rings given by z and K
+        return out
     groups: dict[int, list[int]] = {}  # one Hertz solution per bearing, over its rows' loads
     for i, b in enumerate(bearings):
         if b is not None and b.has_geometry:

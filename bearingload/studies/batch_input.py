@@ -11,8 +11,8 @@ from __future__ import annotations
 
 import re
 from collections.abc import Iterator
-from dataclasses import dataclass
-from typing import Any, TextIO
+from dataclasses import dataclass, field
+from typing import Any, BinaryIO
 
 from bearingload.errors import InputError
 
@@ -119,25 +119,149 @@ def _check_header_unit(name: str, unit: str) -> None:
         raise InputError(f"{name} [{unit}]", "this column takes no unit")
 
 
-def chunks(stream: TextIO, size: int) -> Iterator[tuple[Header, list[tuple[int, list[str]]]]]:
-    """The header and then lists of up to ``size`` (row number, cells); the header is row 1.
-    A file with a header and no rows yields the header once with no rows.
+@dataclass
+class Block:
+    """One chunk of data rows as read: their row numbers (the header is row 1), their text, and
+    the lines that could not be read (row number -> reason).
 
-    Blank lines are skipped (they still count as rows); a line the csv reader cannot read
-    comes with one cell, so that its cell count does not fit the header.
+    ``lines`` holds each row's line when the chunk has no quote character (its cells are the
+    line split at commas, and bare numbers can be read by numpy at once); a chunk with quotes
+    comes already split by the csv module (``parsed``).
     """
+
+    numbers: list[int]
+    lines: list[str] | None = None
+    parsed: list[list[str]] | None = None
+    errors: dict[int, str] = field(default_factory=dict)
+
+    def __len__(self) -> int:
+        return len(self.numbers) + len(self.errors)
+
+    def cells(self) -> list[tuple[int, list[str]]]:
+        """(row number, cells) of every readable row."""
+        if self.parsed is None:
+            self.parsed = [line.split(",") for line in self.lines or ()]
+        return list(zip(self.numbers, self.parsed, strict=True))
+
+
+def chunks(stream: BinaryIO, size: int) -> Iterator[tuple[Header, Block]]:
+    """The header and then blocks of up to ``size`` rows of a csv file read as bytes; the header
+    is row 1. A file with a header and no rows yields the header once with an empty block.
+
+    Each line is decoded as UTF-8 on its own (a byte order mark before the header is dropped):
+    a line that is not UTF-8 is a bad row named by its number, not the end of the file. Blank
+    lines are skipped (they still count as rows). Once a quote character appears, the rest of
+    the file is read by the csv module (a quoted cell may hold commas and line breaks); a line
+    the csv module cannot read comes as one cell, so that its cell count does not fit.
+    """
+    header = _header(next(_numbered(stream, 0), None))
+    any_rows = False
+    for block in _blocks(stream, size):
+        any_rows = True
+        yield header, block
+    if not any_rows:
+        yield header, Block([])
+
+
+def _header(first: tuple[int, str] | None) -> Header:
     import csv
 
-    reader = csv.reader(stream)
+    if first is None:
+        raise InputError("CASES", "the file is empty; its first line names the columns")
+    number, text = first
+    if number < 0:
+        raise InputError("CASES", f"the header line is not UTF-8 text ({text})")
+    if "\r" in text:
+        raise InputError("CASES", "lines end in CR alone; write LF or CR LF line ends")
     try:
-        first = next(reader)
-    except StopIteration:
-        raise InputError("CASES", "the file is empty; its first line names the columns") from None
+        fields = next(csv.reader([text.removeprefix("\ufeff")]), [])
     except csv.Error as exc:
         raise InputError("CASES", f"cannot read the header line: {exc}") from None
-    header = read_header(first)
-    batch: list[tuple[int, list[str]]] = []
-    any_rows = False
+    if not fields:
+        raise InputError("CASES", "the first line is blank; it must name the columns")
+    return read_header(fields)
+
+
+def _numbered(lines: Iterator[bytes], last: int) -> Iterator[tuple[int, str]]:
+    """(row number, text without its line end) of each line after row ``last``; a line that is
+    not UTF-8 comes with a negative row number and the reason as its text."""
+    for number, raw in enumerate(lines, start=last + 1):
+        try:
+            text = raw.decode("utf-8")
+        except UnicodeDecodeError as exc:
+            yield -number, f"{exc.reason} at byte {exc.start + 1} of the line"
+            continue
+        yield number, text.rstrip("\r\n")
+
+
+def _blocks(stream: BinaryIO, size: int) -> Iterator[Block]:
+    """Blocks of rows after the header: a block of UTF-8 lines without quotes is decoded and
+    split at once; from the first quote on, the csv module reads the rest."""
+    from itertools import islice
+
+    last = 1  # row number of the last line read
+    while True:
+        raw = list(islice(stream, size))
+        if not raw:
+            return
+        whole = b"".join(raw)
+        try:
+            text = whole.decode("utf-8")
+        except UnicodeDecodeError:
+            text = None
+        if text is None or '"' in text:
+            taken = list(_numbered(iter(raw), last))
+            if text is not None or any('"' in t for n, t in taken if n > 0):
+                yield from _quoted_blocks(iter(taken), _numbered(stream, last + len(raw)), size)
+                return
+            yield _block(taken)
+        else:
+            texts = (text[:-1] if text.endswith("\n") else text).split("\n")
+            if "\r" in text:
+                texts = [t.rstrip("\r") for t in texts]
+            numbers = range(last + 1, last + 1 + len(texts))
+            if "" in texts:
+                yield _block(list(zip(numbers, texts, strict=True)))
+            else:
+                yield Block(list(numbers), lines=texts)
+        last += len(raw)
+
+
+def _block(taken: list[tuple[int, str]]) -> Block:
+    """A block of (row number, text) pairs: blank lines skipped, lines not UTF-8 named."""
+    block = Block([], lines=[])
+    for number, text in taken:
+        if number < 0:
+            block.errors[-number] = f"not UTF-8 text ({text})"
+        elif text:
+            block.numbers.append(number)
+            block.lines.append(text)  # type: ignore[union-attr]
+    return block
+
+
+def _quoted_blocks(
+    first: Iterator[tuple[int, str]], rest: Iterator[tuple[int, str]], size: int
+) -> Iterator[Block]:
+    """Blocks read by the csv module from ``first`` and then ``rest``; a record's row number is
+    the number of its last line."""
+    import csv
+    from itertools import chain
+
+    errors: dict[int, str] = {}
+    last = [0]
+
+    def texts() -> Iterator[str]:
+        for number, text in chain(first, rest):
+            if number < 0:
+                errors[-number] = f"not UTF-8 text ({text})"
+                last[0] = -number
+                yield ""  # a blank line: skipped by the reader
+            else:
+                last[0] = number
+                yield text + "\n"
+
+    reader = csv.reader(texts())
+    block = Block([], parsed=[])
     while True:
         try:
             row = next(reader)
@@ -145,15 +269,18 @@ def chunks(stream: TextIO, size: int) -> Iterator[tuple[Header, list[tuple[int, 
             break
         except csv.Error:
             row = ["\0"]  # unreadable: a cell count that never fits
-        if not row:
-            continue
-        batch.append((reader.line_num, row))
-        any_rows = True
-        if len(batch) >= size:
-            yield header, batch
-            batch = []
-    if batch or not any_rows:
-        yield header, batch
+        block.errors.update(errors)
+        errors.clear()
+        if row:
+            block.numbers.append(last[0])
+            assert block.parsed is not None
+            block.parsed.append(row)
+        if len(block) >= size:
+            yield block
+            block = Block([], parsed=[])
+    block.errors.update(errors)
+    if len(block):
+        yield block
 
 
 class CellParser:
