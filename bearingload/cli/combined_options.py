@@ -78,12 +78,13 @@ def combined_inputs(values: dict[str, Any]) -> dict[str, Any]:
     }
 
 
-def refuse_combined(values: dict[str, Any], why: str) -> None:
-    """One usage error naming the first combined-load option given, and ``why`` it is refused."""
+def refuse_combined(values: dict[str, Any], where: str, why: str) -> None:
+    """One usage error naming the first combined-load option given, ``where`` it was given and
+    ``why`` it is refused there."""
     given = [k for k in COMBINED_PARAMS if values.get(k) is not None]
     if given:
         option = "--" + given[0].replace("_", "-")
-        raise click.UsageError(f"{option} cannot be used here: {why}")
+        raise click.UsageError(f"{option} cannot be used with {where}: {why}")
 
 
 def combined_text(

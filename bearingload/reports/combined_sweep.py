@@ -8,7 +8,7 @@ Same layout as the radial sweep (:mod:`bearingload.reports.sweep`) and the same 
   L10); one row per cage position.
 * ``csv``: one rectangular table, one row per cage angle, the inputs as leading columns and the
   cage-independent figures as trailing constant columns.
-* ``json``: inputs, ``rows``, ``summary``, ``units``, ``bearing`` and ``warnings``.
+* ``json``: inputs, ``rows``, ``summary``, ``units``, ``geometry`` and ``warnings``.
 """
 
 from __future__ import annotations
@@ -240,8 +240,8 @@ def _csv_table(s: CombinedSweep) -> Table:
 
 
 def combined_sweep_json(s: CombinedSweep) -> dict[str, Any]:
-    """The JSON document: inputs, ``steps``, ``rows``, ``summary``, ``units``, ``bearing``,
-    ``warnings``."""
+    """The JSON document: inputs, ``steps``, ``rows``, ``summary``, ``units``, ``geometry`` (the
+    bearing's, with the source of every value), ``warnings``."""
     from bearingload.reports.bearing import geometry_document
 
     summary: dict[str, Any] = {}
@@ -266,6 +266,6 @@ def combined_sweep_json(s: CombinedSweep) -> dict[str, Any]:
         "rows": body,
         "summary": summary,
         "units": units(keys, 1.5),
-        "bearing": geometry_document(s.bearing),
+        "geometry": geometry_document(s.bearing),
         "warnings": list(s.warnings),
     }

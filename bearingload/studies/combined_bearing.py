@@ -118,8 +118,10 @@ def solve_on_bearing(
     cage_angle: Any = 0.0,
     moment: float | None = None,
     misalignment: float | None = None,
+    clearance: Any = None,
 ) -> CombinedDistribution:
-    """The 3-D ring equilibrium of one resolved ball bearing, at one or many cage angles.
+    """The 3-D ring equilibrium of one resolved ball bearing, at one or many cage angles (or
+    clearances).
 
     Parameters
     ----------
@@ -134,6 +136,9 @@ def solve_on_bearing(
         Moment in the plane of the load; default free tilt. [N mm]
     misalignment : float, optional
         Imposed tilt in the plane of the load, within ±:data:`MISALIGNMENT_MAX`. [°]
+    clearance : float or array_like, optional
+        Radial internal clearance G_r instead of the bearing's (an array solves every one in
+        the same vectorised call). [mm]
 
     Raises
     ------
@@ -165,7 +170,7 @@ def solve_on_bearing(
         pitch_diameter=b.pitch_diameter,
         f_i=b.f_i,
         f_o=b.f_o,
-        clearance=b.clearance,
+        clearance=b.clearance if clearance is None else clearance,
         cage_angle=cage_angle,
         moment=moment,
         misalignment=misalignment,
