@@ -117,9 +117,21 @@ class CombinedSweep:
         return None if v is None else np.asarray(v)
 
     def spread(self, key: str) -> Spread | None:
-        """Min, mean, max and peak-to-peak of ``key`` over the pitch (None if not given)."""
+        """Min, mean, max and peak-to-peak of ``key`` over the pitch (None if not given).
+
+        A mean of a displacement (tilt) below 1e-12 of the largest displacement (tilt) of any
+        axis is the solver's rounding noise and is 0 (y and the cross tilt are odd in the cage
+        angle)."""
         v = self.values(key)
-        return None if v is None else spread_of(v)
+        if v is None:
+            return None
+        family = next((f for f in _FAMILIES if key in f), (key,))
+        scale = max(float(np.max(np.abs(np.asarray(self.values(k))))) for k in family)
+        return spread_of(v, scale)
+
+
+#: Quantities whose rounding noise is measured against the largest of their family.
+_FAMILIES = (("x", "y", "deflection_axial"), ("tilt_deg", "tilt_cross_deg"))
 
 
 def combined_sweep(

@@ -99,13 +99,14 @@ class CageSweep:
         return spread_of(getattr(self, name))
 
 
-def spread_of(values: Any) -> Spread:
+def spread_of(values: Any, scale: float | None = None) -> Spread:
     """Min, mean, max and peak-to-peak of ``values`` over the cage positions of one pitch, both
-    ends included (see :class:`Spread`)."""
+    ends included (see :class:`Spread`); a mean below 1e-12 of ``scale`` (default the largest
+    value in size) is rounding noise and is 0."""
     v = np.asarray(values, dtype=float)
     lo, hi = float(v.min()), float(v.max())
     mean = float(v[:-1].mean()) if v.size > 1 else float(v[0])
-    if abs(mean) <= 1e-12 * float(np.abs(v).max()):
+    if abs(mean) <= 1e-12 * (float(np.abs(v).max()) if scale is None else scale):
         mean = 0.0  # rounding noise of a quantity that averages out (y: odd in the cage angle)
     return Spread(lo, mean, hi, hi - lo)
 
