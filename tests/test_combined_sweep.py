@@ -190,3 +190,43 @@ def test_help_shows_the_combined_options_with_examples():
         assert option in out
     assert "bearingload sweep 6205 -F 1.4kN --axial-load 700N" in out
     assert "N mm" in out and "(bare number: N)" in out
+
+
+def test_every_json_key_is_a_quantity():
+    doc = json.loads(invoke(*CLI, "--format", "json").stdout)
+    structure = {"model", "steps", "rows", "summary", "units", "geometry", "warnings"}
+    assert set(doc) - structure <= set(QUANTITIES)
+    assert set(doc["rows"][0]) <= set(QUANTITIES) and set(doc["summary"]) <= set(QUANTITIES)
+    assert set(doc["units"]) <= set(QUANTITIES)
+
+
+@pytest.mark.parametrize("command", ["sweep", "table"])
+def test_help_examples_with_combined_options_run(command):
+    """Every example of --help that uses a combined-load option (or table life) runs."""
+    import shlex
+
+    text = invoke(command, "--help").output
+    examples = [ln.strip() for ln in text.split("Examples:")[1].split("Options:")[0].splitlines()]
+    chosen = [
+        shlex.split(ln)[1:]
+        for ln in examples
+        if ln.startswith("bearingload ")
+        and any(w in ln for w in ("--axial-load", "--misalignment", "--moment", " life "))
+    ]
+    assert len(chosen) >= 3
+    for args in chosen:
+        out = invoke(*args)
+        assert out.exit_code == 0, (args, out.output)
+
+
+def test_long_sweeps_run_in_chunks_with_the_same_answer(monkeypatch):
+    import bearingload.studies.combined_sweep as module
+
+    b = resolve_bearing("6205", clearance="C3")
+    whole = combined_sweep(b, 1400.0, 700.0, steps=50)
+    monkeypatch.setattr(module, "CHUNK_BALLS", 9 * 7)  # 7 positions a call: 8 calls
+    chunked = combined_sweep(b, 1400.0, 700.0, steps=50)
+    for key in ("x", "y", "axial", "tilt", "tilt_cross", "ball_loads", "contact_angles"):
+        np.testing.assert_array_equal(getattr(whole.result, key), getattr(chunked.result, key))
+    np.testing.assert_array_equal(whole.reference_rating_life, chunked.reference_rating_life)
+    np.testing.assert_array_equal(whole.q_max_ball, chunked.q_max_ball)

@@ -13,6 +13,8 @@ at the cage angle, axial displacement from the centred rings).
 
 from __future__ import annotations
 
+import dataclasses
+from collections.abc import Sequence
 from dataclasses import dataclass
 from typing import Any
 
@@ -38,6 +40,9 @@ SPREAD_KEYS = (
 )
 #: Two ball loads within this relative difference are equal when naming the heaviest ball. [-]
 TIE = 1e-9
+#: Cage positions times balls solved per call: a longer sweep runs in chunks of this many ball
+#: contacts (about 100 MB each), which changes no answer (no case depends on its batch). [-]
+CHUNK_BALLS = 2**17
 
 
 @dataclass(frozen=True)
@@ -149,7 +154,8 @@ def combined_sweep(
 
     Cage angles ``0, p/(steps - 1), ..., p`` with the pitch ``p = 360/z`` degrees, all solved in
     one vectorised call of :func:`bearingload.models.combined.solve_combined` (each position's
-    answer is the one a single call at that angle gives: no case depends on its batch).
+    answer is the one a single call at that angle gives: no case depends on its batch); beyond
+    :data:`CHUNK_BALLS` ball contacts, in one call per chunk of that size.
 
     Parameters
     ----------
@@ -196,8 +202,20 @@ def combined_sweep(
     )
 
     angles = cage_angles(int(bearing.balls), steps)
-    r = solve_on_bearing(bearing, load, axial_load, cage_angle=angles, moment=moment,
-                         misalignment=misalignment)  # fmt: skip
+    chunk = max(1, CHUNK_BALLS // int(bearing.balls))
+    r = _joined(
+        [
+            solve_on_bearing(
+                bearing,
+                load,
+                axial_load,
+                cage_angle=angles[i : i + chunk],
+                moment=moment,
+                misalignment=misalignment,
+            )  # fmt: skip
+            for i in range(0, angles.size, chunk)
+        ]
+    )
     l10r, p_eq, life, c_r = life_figures(bearing, r, rotating, dynamic_rating)
     loads = np.asarray(r.ball_loads)
     top = loads.max(axis=1, keepdims=True)
@@ -218,3 +236,15 @@ def combined_sweep(
         contact_angle_max=np.asarray(largest_loaded_angle(r), dtype=float),
         warnings=tuple(found),
     )
+
+
+def _joined(parts: Sequence[CombinedDistribution]) -> CombinedDistribution:
+    """The solutions of consecutive chunks of cage positions as one (the one part as it is)."""
+    if len(parts) == 1:
+        return parts[0]
+    joined = {
+        f.name: np.concatenate([getattr(p, f.name) for p in parts])
+        for f in dataclasses.fields(CombinedDistribution)
+        if f.name != "balls"
+    }
+    return CombinedDistribution(balls=parts[0].balls, **joined)
