@@ -133,7 +133,7 @@ def test_hand_geometry_with_a_rating():
         (("table", "life", "-b", "6205", "-F", "1kN", "--clearances", "0,C3"),
          "Error: Invalid value for '--clearances'"),
         (("table", "life", "-b", "6205", "-F", "1kN", "--clearances", "0,1mm"),
-         "Error: Invalid value for '--clearance'"),
+         "Error: Invalid value for '--clearances': must be smaller"),
     ],
 )  # fmt: skip
 def test_errors_are_one_line_exit_2(capsys, tmp_path, args, message):
@@ -149,3 +149,18 @@ def test_help_lists_life_with_examples():
     assert "bearingload table life --bearing 6205 --load 1.4kN" in out
     for option in ("--clearances", "--axial-load", "--dynamic-rating", "--rotating", "--balls"):
         assert option in out
+
+
+def test_a_clearance_beyond_the_groove_names_the_list_option(capsys):
+    code, out, err = run_entry(capsys, "table", "life", "-b", "6205", "-F", "1kN",
+                               "--clearances", "0,0.9mm")  # fmt: skip
+    assert code == 2 and out == ""
+    assert err.startswith("Error: Invalid value for '--clearances': must be smaller than")
+
+
+def test_one_loaded_ball_is_named_by_its_rows():
+    hand = resolve_bearing(None, balls=7, ball_diameter=11.5, pitch_diameter=43.5)
+    t = life_against_clearance(hand, 1000.0, clearances=[0.0, 0.08], dynamic_rating=23400.0,
+                               misalignment=np.degrees(2e-3), rotating="outer")  # fmt: skip
+    assert list(t.loaded_balls) == [3, 1]
+    assert any("only one ball carries the load at G_r = 80 µm" in w for w in t.warnings)

@@ -1,4 +1,5 @@
-"""``bearingload table``: the classical design tables, regenerated exactly."""
+"""``bearingload table``: the classical design tables, regenerated exactly; and `table life`, a
+bearing's ISO/TS 16281 life against its clearance."""
 
 from __future__ import annotations
 
@@ -26,6 +27,7 @@ from bearingload.cli.options import (
     stiffness_value,
     units_help,
 )
+from bearingload.errors import InputError
 
 TABLES = ("k", "kq", "life")
 #: Why table k and kq refuse the combined-load options.
@@ -269,13 +271,19 @@ def _life(
             "--pitch-diameter and --dynamic-rating"
         )
     b = resolve_bearings(bearing, k_given, None, clearance_pick, exponent, **geometry)[0]
-    result = life_against_clearance(
-        b,
-        load,
-        clearances=clearances,
-        cage_angle=cage_angle_deg(cage_angle, b.balls),
-        **combined_inputs(combined),
-    )
+    try:
+        result = life_against_clearance(
+            b,
+            load,
+            clearances=clearances,
+            cage_angle=cage_angle_deg(cage_angle, b.balls),
+            **combined_inputs(combined),
+        )
+    except InputError as exc:
+        if exc.parameter != "clearance":
+            raise
+        message = str(exc).split(": ", 1)[-1]
+        raise click.UsageError(f"Invalid value for '--clearances': {message}") from exc
     text = life_report(result, fmt)
     print_warnings(list(result.warnings), False)
     emit(text, output)

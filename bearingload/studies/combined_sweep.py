@@ -221,8 +221,14 @@ def combined_sweep(
     top = loads.max(axis=1, keepdims=True)
     heaviest = np.argmax(loads >= top * (1.0 - TIE), axis=1) + 1
     tilt = float(np.max(ring_tilt(r))) if moment is not None else misalignment
-    found = combined_warnings(bearing, load, axial_load, float(np.max(r.q_max)),
-                              int(np.min(r.loaded_balls)), tilt)  # fmt: skip
+    found = combined_warnings(bearing, load, axial_load, float(np.max(r.q_max)), 2, tilt)
+    one = np.asarray(r.loaded_balls) == 1
+    if one.any() and bearing.balls > 1:
+        found.append(
+            f"only one ball carries the load at {one.sum()} of {one.size} cage angles "
+            f"({angles[one].min():.6g}° to {angles[one].max():.6g}°): the result hangs on a "
+            "single contact (large clearance or few elements); check the clearance"
+        )
     return CombinedSweep(
         bearing=bearing,
         result=r,

@@ -195,8 +195,14 @@ def life_against_clearance(
     zero = float(l10r[int(np.flatnonzero(with_zero == 0)[0])])
     n = g.size
     tilt = float(np.max(ring_tilt(r))) if moment is not None else misalignment
-    found = combined_warnings(bearing, load, axial_load, float(np.max(r.q_max[:n])),
-                              int(np.min(r.loaded_balls[:n])), tilt)  # fmt: skip
+    found = combined_warnings(bearing, load, axial_load, float(np.max(r.q_max[:n])), 2, tilt)
+    one = np.asarray(r.loaded_balls)[:n] == 1
+    if one.any() and bearing.balls > 1:
+        at = ", ".join(f"{v * 1e3:.6g}" for v in g[one])
+        found.append(
+            f"only one ball carries the load at G_r = {at} µm: those rows hang on a single "
+            "contact (large clearance or few elements)"
+        )
     return LifeAgainstClearance(
         bearing=bearing,
         load=float(load),
