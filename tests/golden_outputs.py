@@ -39,9 +39,15 @@ COMMANDS = {
     "solve_6205_combined": "solve 6205 -F 1.4kN -A 700N -G C3",
     "solve_peer_axial_outer": "solve -z 7 --ball-diameter 11.5 --pitch-diameter 43.5 "
     "--modulus 210000 -F 0 -A 1kN -G 10um -C 23.4kN --rotating outer --per-ball",
+    "sweep_6205_combined": "sweep 6205 -F 1.4kN -A 700N -G C3 --steps 5",
+    "sweep_peer_misalignment": "sweep -z 7 --ball-diameter 11.5 --pitch-diameter 43.5 "
+    "--modulus 210000 -F 1kN -G 10um -C 23.4kN --rotating outer --misalignment 2mrad --steps 3",
     "table_k": "table k --z-max 12",
     "table_kq_306": "table kq --bearing 306 -F 300kgf -G 20um --z-max 10",
     "table_k_all": "table k --method all --z-max 10",
+    "table_life_6205_combined": "table life --bearing 6205 -F 1.4kN -A 700N",
+    "table_life_peer": "table life -z 7 --ball-diameter 11.5 --pitch-diameter 43.5 --modulus "
+    "210000 -C 23.4kN -F 1kN --clearances -5um,0,5um,10um,20um",
     "catalog_bore_30": "catalog --bore 30",
     "catalog_show_306": "catalog show 306",
     "catalog_show_6208_skf": "catalog show 6208 --maker SKF",

@@ -144,7 +144,7 @@ def test_output_not_written_on_error(tmp_path):
         (["solve", "-z", "2", "-F", "1", "-K", "1", "--cage-angle", "half"], "a ball must sit on the load line"),
         (["solve", "-z", "8", "-F", "1", "-K", "1", "-m", "0.2"], "Invalid value for '--exponent'"),
         (["solve", "-z", "8", "-K", "1"], "Missing option '--load'"),
-        (["table", "xyz"], "Invalid value for '{k|kq}'"),
+        (["table", "xyz"], "Invalid value for '{k|kq|life}'"),
         (["table", "k", "--z-max", "0"], "Invalid value for '--z-max'"),
     ],
 )  # fmt: skip

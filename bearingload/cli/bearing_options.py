@@ -34,6 +34,26 @@ class Clearance(click.ParamType):
             self.fail(str(exc).split(": ", 1)[-1], param, ctx)
 
 
+class ClearanceList(click.ParamType):
+    """Comma-separated clearance lengths (bare number: mm), each read as ``--clearance`` reads a
+    length."""
+
+    name = "G1,G2,..."
+
+    def convert(self, value: Any, param: click.Parameter | None, ctx: click.Context | None) -> Any:
+        from bearingload.bearings.clearance import clearance_length
+
+        if isinstance(value, list):
+            return value
+        out = []
+        for item in str(value).split(","):
+            spec = Clearance().convert(item.strip(), param, ctx)
+            if spec is None or getattr(spec, "length", None) is None:
+                self.fail(f"{item.strip()!r} is not a length (classes are not rows)", param, ctx)
+            out.append(clearance_length(spec))
+        return out
+
+
 def geometry_options(func: Callable[..., Any]) -> Callable[..., Any]:
     """``--ball-diameter --pitch-diameter --inner-conformity --outer-conformity --modulus --poisson``."""
     options = [

@@ -33,28 +33,51 @@ def resolve_case(
                 "--ball-diameter and --pitch-diameter)"
             )
         return balls, k_given, clearance_length(clearance), exponent, ""
+    b = resolve_bearings(bearing, k_given, clearance, pick, exponent, balls=balls, **geometry)[0]
+    return b.balls, float(b.stiffness), b.clearance, b.exponent, bearing_context(b)
+
+
+def bearing_context(b: Any) -> str:
+    """One note naming where z, K and G_r of a resolved bearing come from."""
+    label = f"bearing {b.designation}" if b.designation else "the given ball set"
+    k_src = "given" if b.stiffness_given else ("Palmgren" if b.kind == "roller" else "exact Hertz")
+    g_src = next(p.source for p in b.provenance if p.key == "clearance")
+    return f"z and K ({k_src}) of {label}; G_r: {g_src}."
+
+
+def resolve_bearings(
+    bearing: str | None,
+    k_given: float | None,
+    clearance: Any,
+    clearance_pick: str,
+    exponent: float,
+    **geometry: Any,
+) -> list[Any]:
+    """The resolved bearing, or the same bearing at the min, mean and max of its class
+    (``clearance_pick`` ``range``), as ``solve`` and ``sweep`` resolve it."""
     from bearingload.bearings.resolve import resolve_bearing
 
-    b = resolve_bearing(
+    resolved = resolve_bearing(
         bearing,
-        balls=balls,
         stiffness=k_given,
         clearance=clearance,
-        clearance_pick=pick,
+        clearance_pick="mean" if clearance_pick == "range" else clearance_pick,
         **geometry,
     )
-    if exponent not in (1.5, b.exponent):  # 1.5, the option's default, also for rollers
+    if exponent not in (1.5, resolved.exponent):  # 1.5, the option's default, also for rollers
         contact = (
             "a roller bearing (line contact) has m = 10/9"
-            if b.kind == "roller"
+            if resolved.kind == "roller"
             else "a ball bearing (Hertz point contact) has m = 1.5"
         )
         raise click.UsageError(
             f"Invalid value for '--exponent': {contact}; "
             "other exponents need --balls and --stiffness without a BEARING"
         )
-    label = f"bearing {b.designation}" if b.designation else "the given ball set"
-    k_src = "given" if b.stiffness_given else ("Palmgren" if b.kind == "roller" else "exact Hertz")
-    g_src = next(p.source for p in b.provenance if p.key == "clearance")
-    context = f"z and K ({k_src}) of {label}; G_r: {g_src}."
-    return b.balls, float(b.stiffness), b.clearance, b.exponent, context
+    if clearance_pick == "range" and resolved.clearance_range is None:
+        raise click.UsageError(
+            "Invalid value for '--clearance-pick': 'range' needs a clearance class "
+            "(C2 CN C3 C4 C5), not a clearance length"
+        )
+    picks = ["min", "mean", "max"] if clearance_pick == "range" else []
+    return [resolved.with_clearance(p) for p in picks] or [resolved]

@@ -65,6 +65,28 @@ def wants_combined(values: dict[str, Any]) -> bool:
     return any(values.get(k) is not None for k in COMBINED_PARAMS)
 
 
+def combined_inputs(values: dict[str, Any]) -> dict[str, Any]:
+    """The combined-load options as the keyword arguments of the library (F_a 0 when not given,
+    the inner ring rotating by default): the one conversion ``solve``, ``sweep`` and ``table``
+    share."""
+    return {
+        "axial_load": values.get("axial_load") or 0.0,
+        "moment": values.get("moment"),
+        "misalignment": values.get("misalignment"),
+        "rotating": values.get("rotating") or "inner",
+        "dynamic_rating": values.get("dynamic_rating"),
+    }
+
+
+def refuse_combined(values: dict[str, Any], where: str, why: str) -> None:
+    """One usage error naming the first combined-load option given, ``where`` it was given and
+    ``why`` it is refused there."""
+    given = [k for k in COMBINED_PARAMS if values.get(k) is not None]
+    if given:
+        option = "--" + given[0].replace("_", "-")
+        raise click.UsageError(f"{option} cannot be used with {where}: {why}")
+
+
 def combined_text(
     bearings: list[Any],
     load: float,
@@ -83,12 +105,8 @@ def combined_text(
     cases = solve_combined_bearing(
         bearings,
         load,
-        values.get("axial_load") or 0.0,
         cage_angle=cage_angle_deg(cage_angle, bearings[0].balls),
-        moment=values.get("moment"),
-        misalignment=values.get("misalignment"),
-        rotating=values.get("rotating") or "inner",
-        dynamic_rating=values.get("dynamic_rating"),
+        **combined_inputs(values),
     )
     text = combined_report(cases, fmt, per_ball=per_ball, show_geometry=show_geometry)
     return text, list(dict.fromkeys(w for c in cases for w in c.warnings))

@@ -7,6 +7,7 @@ from typing import Any
 import click
 
 from bearingload.cli.bearing_options import CLEARANCE_HELP, Clearance, geometry_options
+from bearingload.cli.cases import resolve_bearings
 from bearingload.cli.combined_options import combined_options, wants_combined
 from bearingload.cli.options import (
     CONTEXT,
@@ -192,7 +193,9 @@ def solve(
                 "Invalid value for '--method': the combined load (--axial-load, --moment, "
                 "--misalignment) is solved by the exact model only"
             )
-        bearings = _bearings(bearing, k_given, clearance, clearance_pick, exponent, **geometry)
+        bearings = resolve_bearings(
+            bearing, k_given, clearance, clearance_pick, exponent, **geometry
+        )
         text, found = combined_text(bearings, load, cage_angle, combined, fmt, per_ball,
                                     show_geometry)  # fmt: skip
         emit(text, output)
@@ -212,7 +215,9 @@ def solve(
             )
         cases = _by_hand(methods, balls, load, k_given, clearance, cage_angle, exponent)
     else:
-        bearings = _bearings(bearing, k_given, clearance, clearance_pick, exponent, **geometry)
+        bearings = resolve_bearings(
+            bearing, k_given, clearance, clearance_pick, exponent, **geometry
+        )
         angle = cage_angle_deg(cage_angle, bearings[0].balls)
         from bearingload.studies.loaded_bearing import solve_bearing
 
@@ -242,40 +247,3 @@ def _by_hand(
         )
     angle = cage_angle_deg(cage_angle, balls)
     return solve_ring(methods, balls, load, k_given, clearance_length(clearance), angle, exponent)
-
-
-def _bearings(
-    bearing: str | None,
-    k_given: float | None,
-    clearance: Any,
-    clearance_pick: str,
-    exponent: float,
-    **geometry: Any,
-) -> list[Any]:
-    """The resolved bearing, or the same bearing at the min, mean and max of its class."""
-    from bearingload.bearings.resolve import resolve_bearing
-
-    resolved = resolve_bearing(
-        bearing,
-        stiffness=k_given,
-        clearance=clearance,
-        clearance_pick="mean" if clearance_pick == "range" else clearance_pick,
-        **geometry,
-    )
-    if exponent not in (1.5, resolved.exponent):  # 1.5, the option's default, also for rollers
-        contact = (
-            "a roller bearing (line contact) has m = 10/9"
-            if resolved.kind == "roller"
-            else "a ball bearing (Hertz point contact) has m = 1.5"
-        )
-        raise click.UsageError(
-            f"Invalid value for '--exponent': {contact}; "
-            "other exponents need --balls and --stiffness without a BEARING"
-        )
-    if clearance_pick == "range" and resolved.clearance_range is None:
-        raise click.UsageError(
-            "Invalid value for '--clearance-pick': 'range' needs a clearance class "
-            "(C2 CN C3 C4 C5), not a clearance length"
-        )
-    picks = ["min", "mean", "max"] if clearance_pick == "range" else []
-    return [resolved.with_clearance(p) for p in picks] or [resolved]

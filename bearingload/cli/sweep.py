@@ -8,6 +8,7 @@ import click
 
 from bearingload.cli.bearing_options import CLEARANCE_HELP, Clearance, geometry_options
 from bearingload.cli.cases import resolve_case
+from bearingload.cli.combined_options import COMBINED_PARAMS, combined_options, wants_combined
 from bearingload.cli.options import (
     CONTEXT,
     Quantity,
@@ -32,8 +33,8 @@ from bearingload.cli.plot import check_plot, write_plot
     "--load",
     "-F",
     type=Quantity("force"),
-    help=f"Radial load F_r > 0 (required unless --kurochkin-T). Units: {units_help('force')} "
-    "(bare number: N).",
+    help="Radial load F_r > 0 (>= 0 with an axial load or a moment; required unless "
+    f"--kurochkin-T). Units: {units_help('force')} (bare number: N).",
 )
 @click.option(
     "--stiffness",
@@ -81,6 +82,7 @@ from bearingload.cli.plot import check_plot, write_plot
     "eq. (1.13); rows give F0 = x0 and F0' = -y0, the summary the contact sequence, exit angle "
     "and Fourier coefficients F0j'. Needs --balls (>= 5) only.",
 )
+@combined_options
 @output_options
 @library_errors
 def sweep(
@@ -102,6 +104,7 @@ def sweep(
     kurochkin_t: float | None,
     fmt: str,
     output: str | None,
+    **combined: Any,
 ) -> None:
     """Turn the cage one ball pitch: ring position, Q_max and stiffness at every cage angle.
 
@@ -116,6 +119,15 @@ def sweep(
     The bearing and condition options are those of 'bearingload solve'. csv: one row per cage
     angle with the inputs as columns; json: rows, a summary and units.
 
+    With --axial-load, --moment, --misalignment, --dynamic-rating or --rotating (a deep-groove
+    ball bearing: a catalogue designation, or --balls with --ball-diameter and --pitch-diameter)
+    every cage position is solved by the 3-D ring equilibrium of 'solve' (ISO/TS 16281), all in
+    one vectorised call: per position x, y, the axial displacement (from the centred rings, half
+    the axial play included), the tilts (the ring is free to tilt unless a moment or a
+    misalignment is given), Q_max and its ball, the loaded balls, the largest contact angle and
+    the reference rating life L10r of the rotating ring (default inner); beside them ISO 281's
+    (C_r/P)^3, the same at every position. Not for roller bearings or --kurochkin-T.
+
     \b
     Examples:
       # nine balls, 1 kN, K = 1e5 N/mm^1.5, G_r = 10 µm, 19 cage positions
@@ -126,18 +138,32 @@ def sweep(
       bearingload sweep -z 12 -F 5kN -K 3.8e5 -G -20um --format csv -o sweep.csv
       # Kurochkin's dimensionless statics: 7 balls, T = 0.567 (his Table 3)
       bearingload sweep --balls 7 --kurochkin-T 0.567 --steps 21
+      # combined load on a 6205 (C3): F_r 1.4 kN, F_a 700 N, L10r at every cage position
+      bearingload sweep 6205 -F 1.4kN --axial-load 700N -G C3 --steps 9
+      # a hand-given ball set, C_r 23.4 kN, outer ring rotating, imposed 2 mrad tilt, as csv
+      bearingload sweep -z 7 --ball-diameter 11.5 --pitch-diameter 43.5 -F 1kN -G 10um -C 23.4kN --rotating outer --misalignment 2mrad --format csv
+      # a moment of 5 N m in the load plane, json for a script
+      bearingload sweep 6205 -F 1kN -A 300N --moment 5Nm --format json
     """
     if kurochkin_t is not None:
         given = dict(bearing=bearing, load=load, stiffness=stiffness, clearance=clearance,
                      plot=plot, ball_diameter=ball_diameter, pitch_diameter=pitch_diameter,
                      inner_conformity=inner_conformity, outer_conformity=outer_conformity,
                      modulus=modulus, poisson=poisson)  # fmt: skip
+        given |= {k: combined.get(k) for k in COMBINED_PARAMS}
         _kurochkin(balls, kurochkin_t, steps, exponent, given, fmt, output)
         return
     if load is None:
         raise click.UsageError("Missing option '--load' / '-F' (or give --kurochkin-T).")
     if plot is not None:
         check_plot(plot)
+    if wants_combined(combined):
+        geometry = dict(balls=balls, ball_diameter=ball_diameter, pitch_diameter=pitch_diameter,
+                        f_i=inner_conformity, f_o=outer_conformity, modulus=modulus,
+                        poisson=poisson)  # fmt: skip
+        _combined(bearing, load, stiffness, clearance, clearance_pick, exponent, geometry,
+                  combined, steps, plot, fmt, output)  # fmt: skip
+        return
     z, k, g_r, m, context = resolve_case(
         bearing,
         balls,
@@ -167,6 +193,39 @@ def sweep(
         from bearingload.reports.plots import save_png, sweep_figure
 
         write_plot(lambda: save_png(sweep_figure(result), plot), plot)
+    emit(text, output)
+
+
+def _combined(
+    bearing: str | None,
+    load: float,
+    stiffness: str | None,
+    clearance: Any,
+    clearance_pick: str,
+    exponent: float,
+    geometry: dict[str, Any],
+    combined: dict[str, Any],
+    steps: int,
+    plot: str | None,
+    fmt: str,
+    output: str | None,
+) -> None:
+    """The sweep under a combined load: one vectorised 3-D solve over the pitch, then emit."""
+    from bearingload.cli.cases import bearing_context, resolve_bearings
+    from bearingload.cli.combined_options import combined_inputs
+    from bearingload.cli.options import print_warnings, stiffness_value
+    from bearingload.reports.combined_sweep import combined_sweep_report
+    from bearingload.studies.combined_sweep import combined_sweep
+
+    k_given = stiffness_value(stiffness, exponent)
+    b = resolve_bearings(bearing, k_given, clearance, clearance_pick, exponent, **geometry)[0]
+    result = combined_sweep(b, load, steps=steps, **combined_inputs(combined))
+    text = combined_sweep_report(result, fmt, bearing_context(b))
+    print_warnings(list(result.warnings), False)
+    if plot is not None:
+        from bearingload.reports.plots import combined_sweep_figure, save_png
+
+        write_plot(lambda: save_png(combined_sweep_figure(result), plot), plot)
     emit(text, output)
 
 

@@ -1,4 +1,5 @@
-"""Figures (optional extra ``bearingload[plot]``): a cage sweep, and the ball loads around a ring.
+"""Figures (optional extra ``bearingload[plot]``): a cage sweep (radial or combined load), and the
+ball loads around a ring.
 
 matplotlib is imported inside these functions only, with its Agg (file) backend and no pyplot,
 so nothing global changes and a terminal calculation without ``--plot`` never pays for it.
@@ -66,6 +67,40 @@ def sweep_figure(s: Any) -> Any:
     fig.suptitle(
         f"Cage sweep over one pitch: z = {s.balls}, F_r = {s.load:.4g} N, "
         f"K = {s.stiffness:.4g} N/mm^{s.exponent:g}, G_r = {s.clearance * 1e3:.4g} µm",
+        fontsize="medium",
+    )
+    return fig
+
+
+def combined_sweep_figure(s: Any) -> Any:
+    """x, y, axial displacement [µm], tilt [°], Q_max [N] and L10r [10^6 rev] over the cage
+    angle [°] of a CombinedSweep (L10r only where C_r is known).
+
+    One panel each, in that order; each panel's one line holds the sweep's values.
+    """
+    r = s.result
+    panels = [
+        (r.x * 1e3, "x [µm]", "ring displacement along the load"),
+        (r.y * 1e3, "y [µm]", "ring displacement across the load"),
+        (r.axial * 1e3, "axial [µm]", "axial displacement from the centred rings"),
+        (r.tilt, "tilt [°]", "tilt about the axis across the load"),
+        (r.q_max, "Q_max [N]", "heaviest ball load"),
+    ]
+    if s.reference_rating_life is not None:
+        panels.append((s.reference_rating_life, "L10r [10^6 rev]", "ISO/TS 16281 L10r"))
+    fig = _figure(7.0, 1.8 * len(panels) + 0.8)
+    axes = fig.subplots(len(panels), 1, sharex=True)
+    angle = np.asarray(s.cage_angle)
+    for ax, (values, label, title) in zip(axes, panels, strict=True):
+        ax.plot(angle, values, marker=".")
+        ax.set_ylabel(label)
+        ax.set_title(title, fontsize="small", loc="left")
+        ax.grid(True, alpha=0.3)
+        ax.ticklabel_format(axis="y", useOffset=False)
+    axes[-1].set_xlabel("cage angle (ball 1 from the load line) [°]")
+    fig.suptitle(
+        f"Cage sweep over one pitch: z = {s.balls}, F_r = {float(r.radial_load[0]):.4g} N, "
+        f"F_a = {float(r.axial_load[0]):.4g} N, G_r = {float(r.clearance[0]) * 1e3:.4g} µm",
         fontsize="medium",
     )
     return fig

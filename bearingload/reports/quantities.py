@@ -137,6 +137,7 @@ QUANTITIES: dict[str, Quantity] = {
         Quantity("dynamic_rating", "dynamic load rating C_r", "N"),
         Quantity("equivalent_load", "equivalent load P = X F_r + Y F_a (ISO 281)", "N"),
         Quantity("reference_rating_life", "reference rating life L10r (ISO/TS 16281)", "10^6 rev"),
+        Quantity("relative_life", "L10r over L10r at G_r = 0", "-", 4),
         # per ball
         Quantity("ball", "ball", "", None),
         Quantity("row", "row", "", None),  # bearingload batch: the input file's row (header: 1)

@@ -13,10 +13,11 @@ without an axial load).
 from __future__ import annotations
 
 import dataclasses
-import math
 from collections.abc import Sequence
 from dataclasses import dataclass
 from typing import Any
+
+import numpy as np
 
 from bearingload.bearings.resolve import ResolvedBearing
 from bearingload.errors import InputError
@@ -78,8 +79,23 @@ def solve_combined_bearing(
         ``ball_diameter`` when the geometry is unknown; the solver's own errors.
     """
     from bearingload.bearings.checks import combined_warnings
-    from bearingload.models.combined import solve_combined
 
+    out = []
+    for b in bearings:
+        r = solve_on_bearing(b, load, axial_load, cage_angle=cage_angle, moment=moment,
+                             misalignment=misalignment)  # fmt: skip
+        l10r, p_eq, life, c_r = life_figures(b, r, rotating, dynamic_rating)
+        case = CombinedCase(b, r, misalignment, rotating, c_r, p_eq, life,
+                            None if l10r is None else float(l10r))  # fmt: skip
+        tilt = float(np.max(ring_tilt(r)))
+        found = combined_warnings(b, load, axial_load, float(r.q_max), int(r.loaded_balls),
+                                  tilt if moment is not None else misalignment)  # fmt: skip
+        out.append(dataclasses.replace(case, warnings=tuple(found)))
+    return out
+
+
+def check_misalignment(misalignment: float | None) -> None:
+    """Refuse an imposed misalignment beyond :data:`MISALIGNMENT_MAX`. [°]"""
     if misalignment is not None and abs(misalignment) > MISALIGNMENT_MAX:
         raise InputError(
             "misalignment",
@@ -87,62 +103,112 @@ def solve_combined_bearing(
             "bearing tolerates 2-10 arcmin, and a tilt of degrees would push the balls over the "
             "groove shoulders, which the model does not describe",
         )
-    out = []
-    for b in bearings:
-        if not b.has_geometry:
-            raise InputError(
-                "ball_diameter",
-                "the combined load needs the ball geometry: give a bearing designation, or "
-                "the ball and pitch diameters",
-            )
-        r = solve_combined(
-            b.balls,
-            load,
-            axial_load,
-            ball_diameter=b.ball_diameter,
-            pitch_diameter=b.pitch_diameter,
-            f_i=b.f_i,
-            f_o=b.f_o,
-            clearance=b.clearance,
-            cage_angle=cage_angle,
-            moment=moment,
-            misalignment=misalignment,
-            modulus=b.modulus,
-            poisson=b.poisson,
-            stiffness=b.stiffness if b.stiffness_given else None,
-        )
-        tilt = math.degrees(
-            math.hypot(math.radians(float(r.tilt)), math.radians(float(r.tilt_cross)))
-        )
-        if moment is not None and misalignment is None and tilt > MISALIGNMENT_MAX:
-            raise InputError(
-                "moment",
-                f"tilts the inner ring by {tilt:.3g}°, beyond ±{MISALIGNMENT_MAX:g}°: the balls "
-                "would ride over the groove shoulders, which the model does not describe",
-            )
-        case = _lives(b, r, misalignment, rotating, dynamic_rating or b.C)
-        found = combined_warnings(b, load, axial_load, float(r.q_max), int(r.loaded_balls),
-                                  tilt if moment is not None else misalignment)  # fmt: skip
-        out.append(dataclasses.replace(case, warnings=tuple(found)))
-    return out
 
 
-def _lives(
+def ring_tilt(r: CombinedDistribution) -> Any:
+    """Size of the inner ring's tilt, both axes together, of every case. [°]"""
+    return np.degrees(np.hypot(np.radians(r.tilt), np.radians(r.tilt_cross)))
+
+
+def solve_on_bearing(
     b: ResolvedBearing,
-    r: CombinedDistribution,
-    misalignment: float | None,
-    rotating: str,
-    c_r: float | None,
-) -> CombinedCase:
+    load: float,
+    axial_load: float = 0.0,
+    *,
+    cage_angle: Any = 0.0,
+    moment: float | None = None,
+    misalignment: float | None = None,
+    clearance: Any = None,
+) -> CombinedDistribution:
+    """The 3-D ring equilibrium of one resolved ball bearing, at one or many cage angles (or
+    clearances).
+
+    Parameters
+    ----------
+    b : ResolvedBearing
+        With known ball geometry (D_w, d_m, f_i, f_o).
+    load, axial_load : float
+        F_r >= 0 and F_a. [N]
+    cage_angle : float or array_like
+        Angle of ball 1 from the load line; an array solves every angle in one vectorised
+        call of :func:`bearingload.models.combined.solve_combined`. [°]
+    moment : float, optional
+        Moment in the plane of the load; default free tilt. [N mm]
+    misalignment : float, optional
+        Imposed tilt in the plane of the load, within ±:data:`MISALIGNMENT_MAX`. [°]
+    clearance : float or array_like, optional
+        Radial internal clearance G_r instead of the bearing's (an array solves every one in
+        the same vectorised call). [mm]
+
+    Raises
+    ------
+    InputError
+        ``misalignment`` beyond the limit, ``ball_diameter`` when the geometry is unknown (a
+        roller bearing, or a ball set given by its stiffness), ``moment`` when it tilts the ring
+        beyond the limit at any cage angle; the solver's own errors.
+    """
+    from bearingload.models.combined import solve_combined
+
+    check_misalignment(misalignment)
+    if b.kind != "ball":
+        raise InputError(
+            "bearing",
+            f"{b.designation} is a {b.kind} bearing: the combined load (axial load, moment, "
+            "misalignment, ISO/TS 16281 life) is solved for deep-groove ball bearings only",
+        )
+    if not b.has_geometry:
+        raise InputError(
+            "ball_diameter",
+            "the combined load needs the ball geometry: give a bearing designation, or "
+            "the ball and pitch diameters",
+        )
+    r = solve_combined(
+        b.balls,
+        load,
+        axial_load,
+        ball_diameter=b.ball_diameter,
+        pitch_diameter=b.pitch_diameter,
+        f_i=b.f_i,
+        f_o=b.f_o,
+        clearance=b.clearance if clearance is None else clearance,
+        cage_angle=cage_angle,
+        moment=moment,
+        misalignment=misalignment,
+        modulus=b.modulus,
+        poisson=b.poisson,
+        stiffness=b.stiffness if b.stiffness_given else None,
+    )
+    tilt = float(np.max(ring_tilt(r)))
+    if moment is not None and misalignment is None and tilt > MISALIGNMENT_MAX:
+        raise InputError(
+            "moment",
+            f"tilts the inner ring by {tilt:.3g}°, beyond ±{MISALIGNMENT_MAX:g}°: the balls "
+            "would ride over the groove shoulders, which the model does not describe",
+        )
+    return r
+
+
+def life_figures(
+    b: ResolvedBearing, r: CombinedDistribution, rotating: str, dynamic_rating: float | None
+) -> tuple[Any, float | None, float | None, float | None]:
+    """(L10r [10^6 rev] of every case of ``r`` or None, P [N], L10 [10^6 rev], C_r [N]).
+
+    L10r: ISO/TS 16281:2008, 4.3, from the ball loads (an array over the cases of ``r``). P and
+    L10: ISO 281:2007, 5.2 and Table 3 (P = X F_r + Y F_a, needs C0r and f0 of a catalogue
+    bearing; P = F_r without an axial load); one value, the same for every cage angle. None
+    where C_r (``dynamic_rating`` or the catalogue's) is unknown.
+    """
     from bearingload.bearings.iso16281 import contact_ratings, reference_rating_life
     from bearingload.bearings.life import equivalent_load_deep_groove, rating_life
 
+    c_r = dynamic_rating or b.C
     l10r = p_eq = life = None
     if c_r:
         assert b.ball_diameter and b.pitch_diameter and b.f_i and b.f_o
         q_ci, q_ce = contact_ratings(c_r, b.balls, b.ball_diameter, b.pitch_diameter, b.f_i, b.f_o)
-        l10r = float(reference_rating_life(r.ball_loads, q_ci, q_ce, rotating))
-        fr, fa = float(r.radial_load), float(r.axial_load)
+        l10r = reference_rating_life(r.ball_loads, q_ci, q_ce, rotating)
+        fr = float(np.asarray(r.radial_load).reshape(-1)[0])
+        fa = float(np.asarray(r.axial_load).reshape(-1)[0])
         f0 = None if b.geometry is None else b.geometry.f0
         if fa == 0:
             p_eq = fr
@@ -150,7 +216,7 @@ def _lives(
             p_eq = float(equivalent_load_deep_groove(fr, fa, b.C0, f0))
         if p_eq:
             life = float(rating_life(c_r, p_eq))
-    return CombinedCase(b, r, misalignment, rotating, c_r, p_eq, life, l10r)
+    return l10r, p_eq, life, c_r
 
 
 def combined_values(c: CombinedCase) -> dict[str, Any]:
@@ -178,7 +244,7 @@ def combined_values(c: CombinedCase) -> dict[str, Any]:
         "deflection_axial": float(r.axial),
         "tilt_deg": float(r.tilt),
         "tilt_cross_deg": float(r.tilt_cross),
-        "contact_angle_max_deg": _largest_loaded_angle(r),
+        "contact_angle_max_deg": float(largest_loaded_angle(r)),
         "dynamic_rating": c.dynamic_rating,
         "equivalent_load": c.equivalent_load,
         "rating_life": c.rating_life,
@@ -186,11 +252,12 @@ def combined_values(c: CombinedCase) -> dict[str, Any]:
     }
 
 
-def _largest_loaded_angle(r: CombinedDistribution) -> float:
-    """The contact angle of largest size among the balls that carry load, with its sign. [°]"""
-    import numpy as np
-
-    angles = np.asarray(r.contact_angles, dtype=float).ravel()
-    loaded = np.asarray(r.ball_loads, dtype=float).ravel() > 0
-    pool = angles[loaded] if loaded.any() else angles
-    return float(pool[np.argmax(np.abs(pool))])
+def largest_loaded_angle(r: CombinedDistribution) -> Any:
+    """The contact angle of largest size among the balls that carry load, with its sign, of
+    every case of ``r`` (of all balls where none carries). [°]"""
+    angles = np.asarray(r.contact_angles, dtype=float)
+    loaded = np.asarray(r.ball_loads, dtype=float) > 0
+    pool = loaded | ~loaded.any(axis=-1, keepdims=True)
+    idx = np.argmax(np.where(pool, np.abs(angles), -1.0), axis=-1)
+    out = np.take_along_axis(angles, idx[..., None], axis=-1)[..., 0]
+    return out[()] if out.ndim == 0 else out

@@ -2,27 +2,227 @@
 
 The question of Oswald, Zaretsky & Poplawski (*Effect of Internal Clearance on Load Distribution
 and Life of Radially Loaded Ball and Roller Bearings*, NASA TM-2012-217115, 2012): which
-clearance gives the longest life, and how a slight preload compares with a clearance. Here for
-the catalogue bearing 6205 (z = 9, D_w = 7.938 mm, d_m = 38.5 mm, groove radii 0.52/0.53 D_w,
-C_r = 14 000 N, C0r = 7850 N, f0 = 13.9; see bearings.csv for the sources), inner ring rotating,
-ISO/TS 16281 life from the load distribution of :func:`bearingload.models.combined.solve_combined`
-(exact Hertz stiffness at each contact angle, ring free to tilt), under a radial load alone and
-under the same radial load with an axial load. ISO 281's basic life (C_r/P)^3 with
-P = X F_r + Y F_a (normal clearance) does not see the clearance; it is given beside.
+clearance gives the longest life, and how a slight preload compares with a clearance.
+:func:`life_against_clearance` answers it for any deep-groove ball bearing (a catalogue
+designation, or a hand-given ball set with its C_r) under a radial load, an axial load and a
+moment or misalignment: the ISO/TS 16281:2008 life (clause 4.3) from the load distribution of
+:func:`bearingload.models.combined.solve_combined` (exact Hertz stiffness at each contact angle,
+ring free to tilt unless a moment or misalignment is given), every clearance in one vectorised
+call. ISO 281's basic life (C_r/P)^3 with P = X F_r + Y F_a (normal clearance) does not see the
+clearance; it is given beside. ``bearingload table life`` prints it.
+
+The committed table ``tables/life_vs_clearance_6205`` (:func:`life_vs_clearance_table`) is the
+same computation for the catalogue bearing 6205 (z = 9, D_w = 7.938 mm, d_m = 38.5 mm, groove
+radii 0.52/0.53 D_w, C_r = 14 000 N, C0r = 7850 N, f0 = 13.9; see bearings.csv for the sources),
+inner ring rotating, under F_r = 1400 N alone and with F_a = 700 N, side by side.
 """
 
 from __future__ import annotations
 
+from dataclasses import dataclass
+from typing import TYPE_CHECKING, Any
+
 import numpy as np
 
+from bearingload.errors import InputError
 from bearingload.reports.render import Column, Table
 
-#: The study's bearing and loads. [N]
+if TYPE_CHECKING:
+    from bearingload.bearings.resolve import ResolvedBearing
+
+#: The committed study's bearing and loads. [N]
 DESIGNATION = "6205"
 RADIAL_LOAD = 1400.0  # C_r / 10
 AXIAL_LOAD = 700.0
-#: Radial internal clearances G_r of the rows, from preload to large play. [um]
+#: Radial internal clearances G_r of the rows at a bore of 25 mm, from preload to large play
+#: (C5 ends at 53 um there); other bores scale them by their C5 maximum (ISO 5753-1). [um]
 CLEARANCES_UM = (-20, -15, -10, -8, -6, -4, -2, 0, 2, 4, 6, 8, 10, 15, 20, 30, 40, 60, 80)
+#: C5 maximum of ISO 5753-1 at the bore of :data:`CLEARANCES_UM` (24 < d <= 30 mm). [mm]
+REFERENCE_C5_MAX = 0.053
+
+
+@dataclass(frozen=True)
+class LifeAgainstClearance:
+    """L10r of one bearing under one load at a list of clearances.
+
+    Attributes
+    ----------
+    bearing : ResolvedBearing
+        The bearing (its geometry and ratings).
+    load, axial_load : float
+        F_r and F_a. [N]
+    moment, misalignment : float or None
+        Applied moment [N mm] or imposed tilt [°]; both None: the ring is free to tilt.
+    cage_angle : float
+        Angle of ball 1 from the load line. [°]
+    rotating : str
+        The ring rotating relative to the load.
+    dynamic_rating : float
+        C_r. [N]
+    clearance : ndarray
+        G_r of the rows (negative = preload). [mm]
+    free_contact_angle, contact_angle_max : ndarray
+        alpha_0 and the largest contact angle of a loaded ball, with its sign. [°]
+    loaded_balls : ndarray of int
+        Balls carrying load. [-]
+    q_max : ndarray
+        Heaviest ball load. [N]
+    reference_rating_life : ndarray
+        ISO/TS 16281 L10r. [10^6 rev]
+    relative_life : ndarray
+        L10r over L10r at G_r = 0 (solved in the same call when not among the rows). [-]
+    equivalent_load, rating_life : float or None
+        ISO 281's P = X F_r + Y F_a [N] and (C_r/P)^3 [10^6 rev]; None where P needs C0r and
+        f0 that a hand-given ball set does not have.
+    warnings : tuple of str
+        The checks of ``solve`` (static safety, contact pressure, one loaded ball) over the rows.
+    """
+
+    bearing: ResolvedBearing
+    load: float
+    axial_load: float
+    moment: float | None
+    misalignment: float | None
+    cage_angle: float
+    rotating: str
+    dynamic_rating: float
+    clearance: np.ndarray
+    free_contact_angle: np.ndarray
+    contact_angle_max: np.ndarray
+    loaded_balls: np.ndarray
+    q_max: np.ndarray
+    reference_rating_life: np.ndarray
+    relative_life: np.ndarray
+    equivalent_load: float | None
+    rating_life: float | None
+    warnings: tuple[str, ...] = ()
+
+
+def default_clearances(bearing: ResolvedBearing) -> np.ndarray:
+    """The rows' clearances for ``bearing``: :data:`CLEARANCES_UM` scaled by the C5 maximum of
+    ISO 5753-1 at its bore over that at 25 mm, to 0.1 um. [mm]
+
+    A hand-given ball set has no bore: it is taken as d_m - 1.5 D_w (6205: 26.6 mm for 25 mm;
+    6305 and 306 within 3 mm), clamped to the bores of the clearance table (6 to 400 mm).
+    """
+    from bearingload.bearings.clearance import clearance_range, table
+
+    rows = table()
+    if bearing.geometry is not None:
+        bore = float(bearing.geometry.d)
+    else:
+        assert bearing.pitch_diameter is not None and bearing.ball_diameter is not None
+        bore = bearing.pitch_diameter - 1.5 * bearing.ball_diameter
+    bore = min(max(bore, rows[0].bore_over + 1e-9), rows[-1].bore_incl)
+    scale = clearance_range(bore, "C5")[1] / REFERENCE_C5_MAX
+    values = np.round(np.asarray(CLEARANCES_UM, dtype=float) * scale, 1)
+    return np.unique(values) * 1e-3
+
+
+def life_against_clearance(
+    bearing: ResolvedBearing,
+    load: float,
+    axial_load: float = 0.0,
+    *,
+    clearances: Any = None,
+    cage_angle: float = 0.0,
+    moment: float | None = None,
+    misalignment: float | None = None,
+    rotating: str = "inner",
+    dynamic_rating: float | None = None,
+) -> LifeAgainstClearance:
+    """The ISO/TS 16281 life of ``bearing`` at a list of clearances, in one vectorised solve.
+
+    Parameters
+    ----------
+    bearing : ResolvedBearing
+        A deep-groove ball bearing with its ball geometry (its own clearance is not used).
+    load, axial_load : float
+        F_r >= 0 and F_a. [N]
+    clearances : array_like, optional
+        G_r of the rows, each below 2 (f_i + f_o - 1) D_w; default :func:`default_clearances`. [mm]
+    cage_angle : float, default 0
+        Angle of ball 1 from the load line. [°]
+    moment, misalignment : float, optional
+        Moment in the load plane [N mm] or imposed tilt [°]; default the ring is free to tilt.
+    rotating : {"inner", "outer"}
+        Ring rotating relative to the load (ISO/TS 16281, 4.3).
+    dynamic_rating : float, optional
+        C_r replacing the catalogue's; needed for a hand-given ball set. [N]
+
+    Returns
+    -------
+    LifeAgainstClearance
+
+    Raises
+    ------
+    InputError
+        ``dynamic_rating`` when C_r is unknown, ``clearance`` for an empty or non-finite list;
+        those of :func:`bearingload.studies.combined_bearing.solve_on_bearing`.
+
+    Examples
+    --------
+    NASA TM-2012-217115's finding for a radially loaded ball bearing: a slight preload lives
+    longer than zero clearance.
+
+    >>> from bearingload.bearings.resolve import resolve_bearing
+    >>> t = life_against_clearance(resolve_bearing("6205"), 1400.0, clearances=[-0.01, 0.0, 0.03])
+    >>> t.relative_life.round(3).tolist()
+    [1.116, 1.0, 0.766]
+    """
+    from bearingload.bearings.checks import combined_warnings
+    from bearingload.studies.combined_bearing import (
+        largest_loaded_angle,
+        life_figures,
+        ring_tilt,
+        solve_on_bearing,
+    )
+
+    if not (dynamic_rating or bearing.C):
+        raise InputError(
+            "dynamic_rating",
+            "the life needs the basic dynamic load rating C_r: a ball set given by hand has "
+            "none; give it",
+        )
+    g = default_clearances(bearing) if clearances is None else np.asarray(clearances, float)
+    if g.ndim != 1 or g.size == 0 or not np.all(np.isfinite(g)):
+        raise InputError("clearance", "must be a non-empty list of finite lengths")
+    with_zero = g if np.any(g == 0) else np.append(g, 0.0)
+    r = solve_on_bearing(bearing, load, axial_load, cage_angle=cage_angle, moment=moment,
+                         misalignment=misalignment, clearance=with_zero)  # fmt: skip
+    l10r, p_eq, life, c_r = life_figures(bearing, r, rotating, dynamic_rating)
+    assert l10r is not None and c_r is not None
+    zero = float(l10r[int(np.flatnonzero(with_zero == 0)[0])])
+    n = g.size
+    tilt = float(np.max(ring_tilt(r))) if moment is not None else misalignment
+    found = combined_warnings(bearing, load, axial_load, float(np.max(r.q_max[:n])), 2, tilt)
+    one = np.asarray(r.loaded_balls)[:n] == 1
+    if one.any() and bearing.balls > 1:
+        at = ", ".join(f"{v * 1e3:.6g}" for v in g[one])
+        found.append(
+            f"only one ball carries the load at G_r = {at} µm: those rows hang on a single "
+            "contact (large clearance or few elements)"
+        )
+    return LifeAgainstClearance(
+        bearing=bearing,
+        load=float(load),
+        axial_load=float(axial_load),
+        moment=moment,
+        misalignment=misalignment,
+        cage_angle=float(cage_angle),
+        rotating=rotating,
+        dynamic_rating=float(c_r),
+        clearance=g,
+        free_contact_angle=np.asarray(r.free_contact_angle)[:n],
+        contact_angle_max=np.asarray(largest_loaded_angle(r))[:n],
+        loaded_balls=np.asarray(r.loaded_balls)[:n],
+        q_max=np.asarray(r.q_max)[:n],
+        reference_rating_life=np.asarray(l10r)[:n],
+        relative_life=np.asarray(l10r)[:n] / zero,
+        equivalent_load=p_eq,
+        rating_life=life,
+        warnings=tuple(found),
+    )
 
 
 def life_vs_clearance(
@@ -32,48 +232,29 @@ def life_vs_clearance(
     clearances_um: tuple[float, ...] = CLEARANCES_UM,
 ) -> list[dict[str, float]]:
     """Rows of G_r [um], alpha_0 [°], loaded balls, Q_max [N], L10r [10^6 rev] for F_r alone and
-    for F_r with F_a, and L10r relative to zero clearance."""
-    from bearingload.bearings.iso16281 import contact_ratings, reference_rating_life
+    for F_r with F_a, and L10r relative to zero clearance: two :func:`life_against_clearance`
+    side by side (inner ring rotating, a ball under the load)."""
     from bearingload.bearings.resolve import resolve_bearing
-    from bearingload.models.combined import solve_combined
 
     b = resolve_bearing(designation, clearance=0.0)
-    assert b.C is not None and b.ball_diameter is not None and b.pitch_diameter is not None
-    assert b.f_i is not None and b.f_o is not None
-    geometry = {
-        "ball_diameter": b.ball_diameter,
-        "pitch_diameter": b.pitch_diameter,
-        "f_i": b.f_i,
-        "f_o": b.f_o,
-        "modulus": b.modulus,
-        "poisson": b.poisson,
-    }
     g = np.asarray(clearances_um, dtype=float) * 1e-3
-    q_ci, q_ce = contact_ratings(b.C, b.balls, b.ball_diameter, b.pitch_diameter, b.f_i, b.f_o)
-    out: dict[str, np.ndarray] = {}
-    for tag, fa in (("r", 0.0), ("c", axial_load)):
-        r = solve_combined(b.balls, radial_load, fa, clearance=g, **geometry)
-        out[f"life_{tag}"] = reference_rating_life(r.ball_loads, q_ci, q_ce, "inner")
-        out[f"q_{tag}"] = r.q_max
-        out[f"n_{tag}"] = r.loaded_balls
-        out["alpha0"] = r.free_contact_angle
-        out[f"alpha_{tag}"] = r.contact_angles.max(axis=-1)
-    zero = int(np.argmin(np.abs(g)))
+    radial = life_against_clearance(b, radial_load, 0.0, clearances=g)
+    combined = life_against_clearance(b, radial_load, axial_load, clearances=g)
     rows = []
     for i, gr in enumerate(clearances_um):
         rows.append(
             {
                 "clearance_um": float(gr),
-                "free_contact_angle_deg": float(out["alpha0"][i]),
-                "loaded_r": int(out["n_r"][i]),
-                "q_max_r": float(out["q_r"][i]),
-                "life_r": float(out["life_r"][i]),
-                "ratio_r": float(out["life_r"][i] / out["life_r"][zero]),
-                "loaded_c": int(out["n_c"][i]),
-                "alpha_max_c": float(out["alpha_c"][i]),
-                "q_max_c": float(out["q_c"][i]),
-                "life_c": float(out["life_c"][i]),
-                "ratio_c": float(out["life_c"][i] / out["life_c"][zero]),
+                "free_contact_angle_deg": float(radial.free_contact_angle[i]),
+                "loaded_r": int(radial.loaded_balls[i]),
+                "q_max_r": float(radial.q_max[i]),
+                "life_r": float(radial.reference_rating_life[i]),
+                "ratio_r": float(radial.relative_life[i]),
+                "loaded_c": int(combined.loaded_balls[i]),
+                "alpha_max_c": float(combined.contact_angle_max[i]),
+                "q_max_c": float(combined.q_max[i]),
+                "life_c": float(combined.reference_rating_life[i]),
+                "ratio_c": float(combined.relative_life[i]),
             }
         )
     return rows

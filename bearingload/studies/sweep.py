@@ -96,12 +96,19 @@ class CageSweep:
         """Min, mean, max and peak-to-peak of ``x``, ``y``, ``q_max`` or ``stiffness_radial``."""
         if name not in ("x", "y", "q_max", "stiffness_radial"):
             raise InputError("name", "must be one of x, y, q_max, stiffness_radial")
-        v = np.asarray(getattr(self, name), dtype=float)
-        lo, hi = float(v.min()), float(v.max())
-        mean = float(v[:-1].mean()) if v.size > 1 else float(v[0])
-        if abs(mean) <= 1e-12 * float(np.abs(v).max()):
-            mean = 0.0  # rounding noise of a quantity that averages out (y: odd in the cage angle)
-        return Spread(lo, mean, hi, hi - lo)
+        return spread_of(getattr(self, name))
+
+
+def spread_of(values: Any, scale: float | None = None) -> Spread:
+    """Min, mean, max and peak-to-peak of ``values`` over the cage positions of one pitch, both
+    ends included (see :class:`Spread`); a mean below 1e-12 of ``scale`` (default the largest
+    value in size) is rounding noise and is 0."""
+    v = np.asarray(values, dtype=float)
+    lo, hi = float(v.min()), float(v.max())
+    mean = float(v[:-1].mean()) if v.size > 1 else float(v[0])
+    if abs(mean) <= 1e-12 * (float(np.abs(v).max()) if scale is None else scale):
+        mean = 0.0  # rounding noise of a quantity that averages out (y: odd in the cage angle)
+    return Spread(lo, mean, hi, hi - lo)
 
 
 def sweep(
@@ -150,22 +157,13 @@ def sweep(
     0.3125
     """
     z = _one_int("balls", validate.ball_count(balls))
-    if z < 3:
-        raise InputError(
-            "balls",
-            "a sweep needs at least 3 balls: with 1 or 2 the ring has no equilibrium unless a "
-            "ball sits on the load line",
-        )
-    n = _one_int("steps", validate.ball_count(steps, name="steps", maximum=MAX_STEPS))
-    if n < 2:
-        raise InputError("steps", "must be at least 2 (both ends of the pitch)")
+    angles = cage_angles(z, steps)
     f, k, g, m = (
         float(_one("load", validate.positive("load", load, "N"))),
         float(_one("stiffness", validate.positive("stiffness", stiffness, "N/mm^m"))),
         float(_one("clearance", validate.finite("clearance", clearance))),
         float(_one("exponent", validate.exponent(exponent))),
     )
-    angles = np.linspace(0.0, 360.0 / z, n)
     r = solve(z, f, k, g, angles, m)
     delta = _ball_approaches(r, z)
     top = delta.max(axis=1, keepdims=True)
@@ -186,6 +184,26 @@ def sweep(
         stiffness_radial=r.stiffness_radial,
         compensating_clearance=compensating_clearance(z, f, k, m),
     )
+
+
+def cage_angles(balls: int, steps: Any = DEFAULT_STEPS) -> np.ndarray:
+    """The ``steps`` cage angles ``0, p/(steps - 1), ..., p`` over one pitch ``p = 360/z``. [°]
+
+    Raises
+    ------
+    InputError
+        ``balls`` below 3 (no equilibrium off the load line), ``steps`` not 2 to 1 000 000.
+    """
+    if balls < 3:
+        raise InputError(
+            "balls",
+            "a sweep needs at least 3 balls: with 1 or 2 the ring has no equilibrium unless a "
+            "ball sits on the load line",
+        )
+    n = _one_int("steps", validate.ball_count(steps, name="steps", maximum=MAX_STEPS))
+    if n < 2:
+        raise InputError("steps", "must be at least 2 (both ends of the pitch)")
+    return np.linspace(0.0, 360.0 / balls, n)
 
 
 def compensating_clearance(

@@ -1,0 +1,271 @@
+"""The report of a cage sweep under a combined load (``bearingload sweep`` with ``--axial-load``...).
+
+Same layout as the radial sweep (:mod:`bearingload.reports.sweep`) and the same quantity keys as
+``solve``'s combined report (:mod:`bearingload.reports.combined`):
+
+* ``table`` / ``markdown``: min, mean, max and peak-to-peak over the pitch; the figures that do
+  not depend on the cage (ripple order, free contact angle, axial play, C_r, ISO 281's P and
+  L10); one row per cage position.
+* ``csv``: one rectangular table, one row per cage angle, the inputs as leading columns and the
+  cage-independent figures as trailing constant columns.
+* ``json``: inputs, ``rows``, ``summary``, ``units``, ``geometry`` and ``warnings``.
+"""
+
+from __future__ import annotations
+
+from typing import Any
+
+from bearingload.reports.combined import NOTES
+from bearingload.reports.quantities import QUANTITIES, units
+from bearingload.reports.render import Column, Table, render
+from bearingload.reports.solve import column
+from bearingload.studies.combined_sweep import SPREAD_KEYS, CombinedSweep
+
+#: Per cage position: the quantity and its short header in the human table.
+ROW_KEYS = (
+    ("cage_angle_deg", "cage angle"),
+    ("x", "x"),
+    ("y", "y"),
+    ("deflection_axial", "axial"),
+    ("tilt_deg", "tilt"),
+    ("tilt_cross_deg", "tilt cross"),
+    ("moment", "M"),
+    ("q_max", "Q_max"),
+    ("q_max_ball", "ball"),
+    ("loaded_balls", "loaded"),
+    ("contact_angle_max_deg", "alpha_max"),
+    ("reference_rating_life", "L10r"),
+)
+#: The cage-independent figures (csv: trailing constant columns; json: in the summary).
+FIXED_KEYS = (
+    "free_contact_angle_deg",
+    "axial_play",
+    "dynamic_rating",
+    "equivalent_load",
+    "rating_life",
+)
+
+
+def combined_sweep_report(s: CombinedSweep, fmt: str, context: str = "") -> str:
+    """Render a combined sweep in ``fmt``; ``context`` (the bearing and its sources) is noted."""
+    if fmt == "json":
+        return render([], "json", document=combined_sweep_json(s))
+    if fmt == "csv":
+        return render([_csv_table(s)], "csv")
+    return render([_spread_table(s, context), _fixed_table(s), _rows_table(s)], fmt)
+
+
+def inputs(s: CombinedSweep) -> dict[str, Any]:
+    """The sweep's inputs under their quantity keys (a moment only where it is one)."""
+    b, r = s.bearing, s.result
+    out: dict[str, Any] = {
+        "bearing": b.designation or "given by hand",
+        "balls": s.balls,
+        "load": float(r.radial_load[0]),
+        "axial_load": float(r.axial_load[0]),
+    }
+    if s.misalignment is None:
+        out["moment"] = float(r.moment[0])
+    else:
+        out["misalignment_deg"] = float(s.misalignment)
+    return out | {
+        "rotating": s.rotating,
+        "stiffness": float(b.stiffness),
+        "clearance": float(b.clearance),
+        "clearance_pick": b.clearance_pick,
+    }
+
+
+def _row_keys(s: CombinedSweep) -> list[tuple[str, str]]:
+    """The per-position columns: the moment only where it is an answer (imposed misalignment),
+    L10r only where C_r is known."""
+    skip = {"moment"} if s.misalignment is None else set()
+    if s.reference_rating_life is None:
+        skip.add("reference_rating_life")
+    return [(k, h) for k, h in ROW_KEYS if k not in skip]
+
+
+def _spread_keys(s: CombinedSweep) -> list[str]:
+    keys = {k for k, _ in _row_keys(s)}
+    return [k for k in SPREAD_KEYS if k in keys]
+
+
+def fixed(s: CombinedSweep) -> dict[str, Any]:
+    """The figures the cage does not change, under their quantity keys."""
+    r = s.result
+    return {
+        "free_contact_angle_deg": float(r.free_contact_angle[0]),
+        "axial_play": float(r.axial_play[0]),
+        "dynamic_rating": s.dynamic_rating,
+        "equivalent_load": s.equivalent_load,
+        "rating_life": s.rating_life,
+    }
+
+
+def rows(s: CombinedSweep) -> list[dict[str, Any]]:
+    """One dict per cage position, machine units (mm, °, N, N mm, 10^6 rev)."""
+    keys = [k for k, _ in _row_keys(s)]
+    r = s.result
+    data: dict[str, Any] = {
+        "cage_angle_deg": r.cage_angle,
+        "q_max_ball": s.q_max_ball,
+    } | {k: s.values(k) for k in keys if k in SPREAD_KEYS}
+    out = []
+    for i in range(s.cage_angle.size):
+        row = {}
+        for k in keys:
+            v = data[k][i]
+            row[k] = int(v) if k in ("q_max_ball", "loaded_balls") else float(v)
+        out.append(row)
+    return out
+
+
+def title(s: CombinedSweep) -> str:
+    """One line naming the sweep's inputs with units."""
+    i = inputs(s)
+    who = f"bearing {i['bearing']}, " if i["bearing"] != "given by hand" else ""
+    tilt = (
+        f", imposed misalignment {i['misalignment_deg']:.6g}°"
+        if "misalignment_deg" in i
+        else f", M = {i['moment']:.6g} N mm"
+        if i["moment"]
+        else ""
+    )
+    return (
+        f"{who}z = {s.balls}, F_r = {i['load']:.6g} N, F_a = {i['axial_load']:.6g} N{tilt}, "
+        f"G_r = {i['clearance'] * 1e3:.6g} µm, {s.rotating} ring rotating; cage angle 0 to "
+        f"{360 / s.balls:.6g}° in {s.cage_angle.size} positions"
+    )
+
+
+def _spread_table(s: CombinedSweep, context: str) -> Table:
+    out = []
+    for key in _spread_keys(s):
+        q = QUANTITIES[key]
+        sp = s.spread(key)
+        assert sp is not None
+        for unit, factor in [q.shown()] + ([q.also] if q.also else []):
+            out.append(
+                {
+                    "quantity": q.label,
+                    "min": sp.min * factor,
+                    "mean": sp.mean * factor,
+                    "max": sp.max * factor,
+                    "ptp": sp.peak_to_peak * factor,
+                    "unit": unit or "",
+                }
+            )
+    notes = ["mean: over one period (the last position, equal to the first, left out).", *NOTES]
+    if context:
+        notes.append(context)
+    return Table(
+        title=f"Over one ball pitch ({title(s)})",
+        columns=[
+            Column("quantity", "quantity", align="left"),
+            Column("min", "min", digits=6),
+            Column("mean", "mean", digits=6),
+            Column("max", "max", digits=6),
+            Column("ptp", "peak-to-peak", digits=4),
+            Column("unit", "unit", align="left"),
+        ],
+        rows=out,
+        notes=notes,
+    )
+
+
+def _fixed_table(s: CombinedSweep) -> Table:
+    ripple = QUANTITIES["ripple_per_cage_revolution"]
+    out: list[dict[str, Any]] = [
+        {"quantity": f"{ripple.label} (periods per cage revolution)", "value": s.ripple_order,
+         "unit": ripple.unit},
+    ]  # fmt: skip
+    for key, value in fixed(s).items():
+        q = QUANTITIES[key]
+        unit, factor = q.shown()
+        out.append(
+            {
+                "quantity": q.label,
+                "value": "-" if value is None else value * factor,
+                "unit": unit,
+            }
+        )
+    return Table(
+        title="The same at every cage position",
+        columns=[
+            Column("quantity", "quantity", align="left"),
+            Column("value", "value", digits=6),
+            Column("unit", "unit", align="left"),
+        ],
+        rows=out,
+        notes=[
+            "ISO 281's basic life (C_r/P)^3 does not see the cage position, the clearance or the "
+            "load distribution; L10r (ISO/TS 16281) does, per cage position above."
+        ],
+    )
+
+
+def _rows_table(s: CombinedSweep) -> Table:
+    columns = []
+    factors = {}
+    for key, header in _row_keys(s):
+        q = QUANTITIES[key]
+        unit, factors[key] = q.shown()
+        columns.append(Column(key, header, unit, q.digits))
+    shown = [
+        {k: v * factors[k] if isinstance(v, float) else v for k, v in row.items()}
+        for row in rows(s)
+    ]
+    return Table(
+        title="Per cage position (ball 1 at the cage angle; angles from the load line)",
+        columns=columns,
+        rows=shown,
+        notes=[
+            "axial: from the centred rings; tilt: about the axis across the load; tilt cross: "
+            "about the load line; ball: the ball carrying Q_max (of two equal, the lower "
+            "number); alpha_max: the largest contact angle of a loaded ball."
+        ],
+    )
+
+
+def _csv_table(s: CombinedSweep) -> Table:
+    head = inputs(s)
+    tail = fixed(s)
+    keys = [*head, *(k for k, _ in _row_keys(s)), *tail]
+    const = {k: "" if v is None else v for k, v in (head | tail).items()}
+    return Table(
+        title="sweep",
+        columns=[column(k, 1.5) for k in keys],
+        rows=[const | r for r in rows(s)],
+    )
+
+
+def combined_sweep_json(s: CombinedSweep) -> dict[str, Any]:
+    """The JSON document: inputs, ``steps``, ``rows``, ``summary``, ``units``, ``geometry`` (the
+    bearing's, with the source of every value), ``warnings``."""
+    from bearingload.reports.bearing import geometry_document
+
+    summary: dict[str, Any] = {}
+    for key in _spread_keys(s):
+        sp = s.spread(key)
+        assert sp is not None
+        summary[key] = {
+            "min": sp.min,
+            "mean": sp.mean,
+            "max": sp.max,
+            "peak_to_peak": sp.peak_to_peak,
+        }
+    summary["ripple_per_cage_revolution"] = s.ripple_order
+    summary |= fixed(s)
+    head = inputs(s)
+    body = rows(s)
+    keys = [*head, *body[0], *summary]
+    return {
+        **head,
+        "model": "3-D ring equilibrium, deep-groove ball bearing (ISO/TS 16281)",
+        "steps": int(s.cage_angle.size),
+        "rows": body,
+        "summary": summary,
+        "units": units(keys, 1.5),
+        "geometry": geometry_document(s.bearing),
+        "warnings": list(s.warnings),
+    }

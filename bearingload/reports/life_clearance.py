@@ -1,0 +1,167 @@
+"""The report of ``bearingload table life``: L10r against the radial internal clearance.
+
+The numbers come from :func:`bearingload.studies.life_clearance.life_against_clearance`; this
+module lays them out. One row per clearance; the bearing, loads and ratings are the table's
+conditions (the title for people, leading columns in csv, fields in json, with ``units`` and the
+``warnings`` of the checks). Human formats show G_r in µm, csv and json in mm.
+"""
+
+from __future__ import annotations
+
+from typing import Any
+
+from bearingload.reports.quantities import QUANTITIES, units
+from bearingload.reports.render import Column, Table, render
+from bearingload.reports.solve import column
+from bearingload.studies.life_clearance import LifeAgainstClearance
+
+#: The row quantities and their short headers in the human table.
+ROW_KEYS = (
+    ("clearance", "G_r"),
+    ("free_contact_angle_deg", "alpha_0"),
+    ("loaded_balls", "n"),
+    ("contact_angle_max_deg", "alpha_max"),
+    ("q_max", "Q_max"),
+    ("reference_rating_life", "L10r"),
+    ("relative_life", "L10r/L10r(0)"),
+    ("rating_life", "L10 ISO 281"),
+)
+
+
+def life_report(t: LifeAgainstClearance, fmt: str) -> str:
+    """Render the life-against-clearance table in ``fmt`` (table, csv, markdown, json)."""
+    if fmt == "json":
+        return render([], "json", document=life_document(t))
+    return render([life_table(t, human=fmt in ("table", "markdown"))], fmt)
+
+
+def _tilted(t: LifeAgainstClearance) -> bool:
+    """True when the balls take contact angles beyond alpha_0's play (an axial load, a moment
+    or a misalignment): the largest contact angle is then a column."""
+    return bool(t.axial_load or t.moment or t.misalignment)
+
+
+def _keys(t: LifeAgainstClearance) -> list[tuple[str, str]]:
+    skip = set() if _tilted(t) else {"contact_angle_max_deg"}
+    if t.rating_life is None:
+        skip.add("rating_life")
+    return [(k, h) for k, h in ROW_KEYS if k not in skip]
+
+
+def conditions(t: LifeAgainstClearance) -> dict[str, Any]:
+    """The table's conditions under their quantity keys."""
+    out: dict[str, Any] = {
+        "bearing": t.bearing.designation or "given by hand",
+        "balls": int(t.bearing.balls),
+        "load": t.load,
+        "axial_load": t.axial_load,
+    }
+    if t.misalignment is not None:
+        out["misalignment_deg"] = float(t.misalignment)
+    else:
+        out["moment"] = float(t.moment or 0.0)
+    return out | {
+        "rotating": t.rotating,
+        "cage_angle_deg": t.cage_angle,
+        "dynamic_rating": t.dynamic_rating,
+        "equivalent_load": t.equivalent_load,
+    }
+
+
+def _rows(t: LifeAgainstClearance, human: bool) -> list[dict[str, Any]]:
+    data: dict[str, Any] = {
+        "clearance": t.clearance,
+        "free_contact_angle_deg": t.free_contact_angle,
+        "loaded_balls": t.loaded_balls,
+        "contact_angle_max_deg": t.contact_angle_max,
+        "q_max": t.q_max,
+        "reference_rating_life": t.reference_rating_life,
+        "relative_life": t.relative_life,
+    }
+    out = []
+    for i in range(t.clearance.size):
+        row: dict[str, Any] = {}
+        for key, _ in _keys(t):
+            if key == "rating_life":
+                v: Any = t.rating_life
+            elif key == "loaded_balls":
+                v = int(data[key][i])
+            else:
+                v = float(data[key][i])
+            if human and isinstance(v, float):
+                v *= QUANTITIES[key].shown()[1]
+            row[key] = v
+        out.append(row)
+    return out
+
+
+def title(t: LifeAgainstClearance) -> str:
+    c = conditions(t)
+    who = f"bearing {c['bearing']}" if c["bearing"] != "given by hand" else "ball set given by hand"
+    tilt = (
+        f", imposed misalignment {c['misalignment_deg']:.6g}°"
+        if "misalignment_deg" in c
+        else f", M = {c['moment']:.6g} N mm"
+        if c["moment"]
+        else ""
+    )
+    return (
+        f"L10r against radial internal clearance: {who}, z = {c['balls']}, "
+        f"F_r = {t.load:.6g} N, F_a = {t.axial_load:.6g} N{tilt}, {t.rotating} ring rotating, "
+        f"cage angle {t.cage_angle:.6g}°, C_r = {t.dynamic_rating:.6g} N"
+    )
+
+
+def _notes(t: LifeAgainstClearance) -> list[str]:
+    best = int(t.reference_rating_life.argmax())
+    p = t.equivalent_load
+    iso281 = (
+        f"L10 ISO 281: ISO 281:2007 basic life (C_r/P)^3 with P = X F_r + Y F_a = {p:.6g} N "
+        "(5.2, Table 3, normal clearance), the same in every row: it does not see the clearance."
+        if t.rating_life is not None and p is not None
+        else "ISO 281's basic life needs P = X F_r + Y F_a, i.e. C0r and f0 of a catalogue "
+        "bearing: not given for a ball set given by hand."
+    )
+    return [
+        "G_r: radial internal clearance, total play (negative = preload); alpha_0: free contact "
+        "angle; n: balls carrying load; alpha_max: largest contact angle of a loaded ball.",
+        "L10r: ISO/TS 16281:2008, 4.3, from the ball loads of the 3-D ring equilibrium (exact "
+        "Hertz stiffness at each contact angle; the ring free to tilt unless a moment or a "
+        "misalignment is given); L10r(0): at G_r = 0.",
+        iso281,
+        f"Longest L10r of the rows: G_r = {t.clearance[best] * 1e3:.6g} µm, "
+        f"{t.relative_life[best]:.4g} times that at G_r = 0.",
+        "Question after Oswald, Zaretsky & Poplawski, NASA TM-2012-217115 (2012).",
+    ]
+
+
+def life_table(t: LifeAgainstClearance, human: bool = True) -> Table:
+    """The table: display units (µm) for people, machine units (mm) for csv."""
+    columns = []
+    for key, header in _keys(t):
+        q = QUANTITIES[key]
+        if human:
+            digits = 4 if key == "clearance" else q.digits
+            columns.append(Column(key, header, q.shown()[0], digits))
+        else:
+            columns.append(column(key))
+    conds = conditions(t)
+    fixed = [] if human else [(column(k), "" if v is None else v) for k, v in conds.items()]
+    return Table(title(t), columns, _rows(t, human), _notes(t) if human else [], fixed)
+
+
+def life_document(t: LifeAgainstClearance) -> dict[str, Any]:
+    """The JSON document: the conditions, ``rows``, ``units``, ``geometry`` (the bearing's, with
+    the source of every value), ``warnings``."""
+    from bearingload.reports.bearing import geometry_document
+
+    conds = conditions(t)
+    body = _rows(t, human=False)
+    return {
+        "title": title(t),
+        **conds,
+        "rows": body,
+        "units": units([*conds, *body[0]], 1.5),
+        "geometry": geometry_document(t.bearing),
+        "warnings": list(t.warnings),
+    }
