@@ -57,6 +57,7 @@ COMMANDS = {
     "fit_208": "fit examples/bearing208_kuzmenko2014.csv --load-unit kgf --base 200kgf:0.8mm "
     "--base 1000kgf:1.67mm --balls 9",
     "batch_cases": "batch examples/cases.csv",
+    "batch_combined": "batch examples/combined_cases.csv",
     "errata_summary": "errata --summary",
     "errata_sabadash_differing": "errata --paper sabadash --only-differing",
 }

@@ -10,10 +10,6 @@ import click
 
 from bearingload.cli.options import CONTEXT, library_errors, output_options
 
-#: Rows read, solved and written at a time (memory stays flat however long the file).
-CHUNK_ROWS = 50_000
-
-
 #: Warnings shown on the terminal; json lists every row's warnings.
 MAX_WARNINGS_SHOWN = 20
 
@@ -28,13 +24,15 @@ MAX_WARNINGS_SHOWN = 20
 @click.option(
     "--chunk-size",
     type=click.IntRange(min=1),
-    default=CHUNK_ROWS,
-    show_default=True,
-    help="Rows read, solved and written at a time; the output does not depend on it.",
+    default=None,
+    help="Rows read, solved and written at a time; the output does not depend on it. "
+    "Default: 50000, or 10000 for combined-load cases.",
 )
 @output_options
 @library_errors
-def batch(cases: BinaryIO, strict: bool, chunk_size: int, fmt: str, output: str | None) -> None:
+def batch(
+    cases: BinaryIO, strict: bool, chunk_size: int | None, fmt: str, output: str | None
+) -> None:
     """Solve every case (row) of a csv file: one output row per case, in input order, with the
     input file's row number (the header is row 1), the inputs and the columns that
     'bearingload solve --format csv' writes for one case.
@@ -46,7 +44,13 @@ def batch(cases: BinaryIO, strict: bool, chunk_size: int, fmt: str, output: str 
     max), cage_angle (degrees or 'half'), exponent, method, revolutions. A missing column or
     an empty cell takes solve's default. A unit in the header (load [kN]) is the unit of the
     column's bare numbers; a number with its own unit (300kgf) keeps it. An unknown column is
-    an error (exit 2); the combined load (axial_load ...) is not read by batch yet.
+    an error (exit 2).
+
+    A column axial_load, moment, misalignment, dynamic_rating or rotating (inner, outer) makes
+    every row a combined-load case of a deep-groove ball bearing, as 'solve --axial-load ...'
+    solves it (3-D ring equilibrium, ISO/TS 16281 L10r, ISO 281 L10; load may then be 0): the
+    file names a bearing or the ball geometry, and has no method, exponent or revolutions
+    column. The rows of one bearing are solved together by one vectorised call.
 
     A bad row (a negative load, an unknown unit or bearing, z = 0, a line with the wrong
     number of cells, a line that is not UTF-8 text) is named on standard error with its row number and the reason; the other
@@ -65,6 +69,8 @@ def batch(cases: BinaryIO, strict: bool, chunk_size: int, fmt: str, output: str 
       python make_cases.py | bearingload batch - --format csv -o results.csv
       # stop at the first bad row, write nothing
       bearingload batch examples/cases.csv --strict --format json
+      # combined loads: axial load, moment or misalignment, L10r (ISO/TS 16281) per row
+      bearingload batch examples/combined_cases.csv --format csv
     """
     from bearingload.errors import InputError
     from bearingload.reports.batch import MAX_HELD_ROWS, batch_columns, csv_head, csv_rows

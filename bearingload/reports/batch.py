@@ -5,7 +5,8 @@ The columns are ``row`` (the input file's row, header = 1) and then those ``bear
 ``ANSWER_KEYS``, headers through :mod:`bearingload.reports.quantities`). They are fixed by the
 file's header, so that every chunk of a long file has the same columns: the bearing columns
 (``bearing``, ``clearance_pick``, contact pressures, life) only when the file can name a bearing
-or a ball geometry, ``epsilon`` only with a ``method`` column.
+or a ball geometry, ``epsilon`` only with a ``method`` column. A file of combined-load cases
+(an ``axial_load`` ... column) has the columns ``solve`` writes with an axial load.
 """
 
 from __future__ import annotations
@@ -32,6 +33,10 @@ _BEARING_ONLY = (
 
 def batch_columns(header: Header) -> list[Column]:
     """The output columns for a file with ``header``."""
+    if header.combined:  # the columns of solve's csv with an axial load, every one
+        from bearingload.studies.batch_combined import COMBINED_KEYS
+
+        return [column(k, 1.5) for k in ("row", *COMBINED_KEYS)]
     keys = ["row", *INPUT_KEYS, *(k for k in ANSWER_KEYS if k != "relative_error"), "valid"]
     if not header.has_bearing:
         keys = [k for k in keys if k not in _BEARING_ONLY]

@@ -57,27 +57,44 @@ class BatchSolver:
     def solve(self, block: Block) -> Chunk:
         """Solve one block of rows."""
         errors: dict[int, str] = dict(block.errors)
+        if self.header.combined:
+            from bearingload.studies.batch_combined import solve_combined_rows
+
+            cells = self._cells(block.cells(), errors)
+            found = [x for x in (self._combined_row(r, c, errors) for r, c in cells) if x]
+            return _merged(solve_combined_rows(found, errors), errors)
         if self.header.has_bearing:
             cells = self._cells(block.cells(), errors)
             rows = Rows.of([x for x in (self._row(r, c, errors) for r, c in cells) if x])
         else:
             rows = self._numbers_only(block) or self._hand_rows(block.cells(), errors)
-        parts = _solve_rows(rows, errors)
-        out = Chunk(errors=sorted(errors.items()))
-        if len(parts) == 1:
-            out.rows, out.values = parts[0]
-        elif parts:
-            numbers = [n for p, _ in parts for n in p]
-            order = sorted(range(len(numbers)), key=numbers.__getitem__)
-            out.rows = [numbers[i] for i in order]
-            for k in parts[0][1]:
-                pieces = [c[k] for _, c in parts]
-                if all(isinstance(p, np.ndarray) for p in pieces):
-                    out.values[k] = np.concatenate(pieces)[order]
-                else:
-                    merged = [v for p in pieces for v in _items(p)]
-                    out.values[k] = [merged[i] for i in order]
-        return out
+        return _merged(_solve_rows(rows, errors), errors)
+
+    def _combined_row(
+        self, row: int, v: dict[str, Any], errors: dict[int, str]
+    ) -> dict[str, Any] | None:
+        """The inputs of one combined-load row: its resolved bearing, F_r, F_a, the tilt."""
+        try:
+            if not any(k in v for k in ("bearing", "ball_diameter", "pitch_diameter")):
+                raise InputError(
+                    "bearing", "missing: the combined load needs a bearing or its ball geometry"
+                )
+            b = self._bearing(v | {"exponent": 1.5})
+            if "load" not in v:
+                raise InputError("load", "missing: every row needs a (radial) load, 0 allowed")
+            if not v["load"] >= 0:
+                raise InputError("load", f"must be 0 N or more (got {v['load']!r} N)")
+            if v.get("dynamic_rating") is not None and not v["dynamic_rating"] > 0:
+                raise InputError("dynamic_rating", "must be greater than 0 N")
+            angle = v.get("cage_angle", 0.0)
+            angle = 180.0 / b.balls if angle == "half" else angle
+        except BearingloadError as exc:
+            errors[row] = str(exc)
+            return None
+        return {"row": row, "bearing": b, "load": v["load"],
+                "axial_load": v.get("axial_load", 0.0), "moment": v.get("moment"),
+                "misalignment": v.get("misalignment"), "rotating": v.get("rotating", "inner"),
+                "dynamic_rating": v.get("dynamic_rating"), "cage_angle": angle}  # fmt: skip
 
     def _numbers_only(self, block: Block) -> Rows | None:
         """The rows of a block whose cells are all bare numbers (and the columns all numeric:
@@ -321,6 +338,25 @@ class BatchSolver:
                 "exponent", f"{contact}; other exponents need balls and stiffness without a bearing"
             )
         return hit
+
+
+def _merged(parts: list[Part], errors: dict[int, str]) -> Chunk:
+    """The chunk's answer: the solved parts merged in row order, and the skipped rows."""
+    out = Chunk(errors=sorted(errors.items()))
+    if len(parts) == 1:
+        out.rows, out.values = parts[0]
+    elif parts:
+        numbers = [n for p, _ in parts for n in p]
+        order = sorted(range(len(numbers)), key=numbers.__getitem__)
+        out.rows = [numbers[i] for i in order]
+        for k in parts[0][1]:
+            pieces = [c[k] for _, c in parts]
+            if all(isinstance(p, np.ndarray) for p in pieces):
+                out.values[k] = np.concatenate(pieces)[order]
+            else:
+                merged = [v for p in pieces for v in _items(p)]
+                out.values[k] = [merged[i] for i in order]
+    return out
 
 
 def _items(values: Any) -> list[Any]:

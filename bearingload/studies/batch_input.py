@@ -16,6 +16,10 @@ from typing import Any, BinaryIO
 
 from bearingload.errors import InputError
 
+#: Rows read, solved and written at a time (memory stays flat however long the file): radial
+#: cases, and combined-load cases (whose 3-D solver needs more memory per case).
+CHUNK_ROWS = 50_000
+CHUNK_ROWS_COMBINED = 10_000
 #: Accepted columns -> kind of value (a units.py kind, or how the cell is read).
 COLUMNS: dict[str, str] = {
     "bearing": "text",
@@ -34,9 +38,17 @@ COLUMNS: dict[str, str] = {
     "exponent": "exponent",
     "method": "text",
     "revolutions": "number",
+    "axial_load": "force",
+    "moment": "moment",
+    "misalignment": "angle",
+    "dynamic_rating": "force",
+    "rotating": "ring",
 }
-#: Options of ``solve`` that a batch file cannot carry yet (the combined-load path).
-NOT_YET = ("axial_load", "moment", "misalignment", "dynamic_rating", "rotating")
+#: Columns that make every row of a file a combined-load case (3-D equilibrium, ISO/TS 16281).
+COMBINED_COLUMNS = ("axial_load", "moment", "misalignment", "dynamic_rating", "rotating")
+#: Columns a combined-load file cannot have: its method is the 3-D equilibrium, and its life is
+#: L10r in 10^6 revolutions.
+NOT_COMBINED = ("method", "revolutions", "exponent")
 #: Columns that make a row a bearing (resolved by bearings.resolve) rather than a bare ring.
 BEARING_COLUMNS = (
     "bearing",
@@ -58,6 +70,11 @@ class Header:
 
     names: tuple[str, ...]
     units: dict[str, str]
+
+    @property
+    def combined(self) -> bool:
+        """True when the rows are combined-load cases (an axial load, moment ... column)."""
+        return any(n in COMBINED_COLUMNS for n in self.names)
 
     @property
     def has_bearing(self) -> bool:
@@ -82,20 +99,14 @@ def read_header(fields: list[str]) -> Header:
         names.append(name)
         if match and match.group(2):
             units[name] = match.group(2)
-    unknown = [n for n in names if n not in COLUMNS and n not in NOT_YET]
+    unknown = [n for n in names if n not in COLUMNS]
     if unknown:
         raise InputError(
             "columns",
             f"unknown column(s) {', '.join(repr(n) for n in unknown)}; "
             f"allowed: {', '.join(COLUMNS)}",
         )
-    later = [n for n in names if n in NOT_YET]
-    if later:
-        raise InputError(
-            "columns",
-            f"{', '.join(later)}: the combined load is not solved by batch yet; "
-            "use 'bearingload solve' for it",
-        )
+    _check_combined(names)
     twice = sorted({n for n in names if names.count(n) > 1})
     if twice:
         raise InputError("columns", f"column(s) given twice: {', '.join(twice)}")
@@ -104,6 +115,26 @@ def read_header(fields: list[str]) -> Header:
     for name, unit in units.items():
         _check_header_unit(name, unit)
     return Header(tuple(names), units)
+
+
+def _check_combined(names: list[str]) -> None:
+    """A combined-load file names its bearings (or ball geometry) and no radial-only column."""
+    combined = [n for n in names if n in COMBINED_COLUMNS]
+    if not combined:
+        return
+    if not any(n in ("bearing", "ball_diameter", "pitch_diameter") for n in names):
+        raise InputError(
+            "columns",
+            f"{combined[0]}: the combined load needs deep-groove ball bearings: add a 'bearing' "
+            "column (a designation) or 'ball_diameter' and 'pitch_diameter'",
+        )
+    refused = [n for n in names if n in NOT_COMBINED]
+    if refused:
+        raise InputError(
+            "columns",
+            f"{refused[0]}: not used with the combined load ({combined[0]}): its rows are "
+            "solved by the 3-D equilibrium of a ball bearing (m = 1.5), lives in 10^6 rev",
+        )
 
 
 def _check_header_unit(name: str, unit: str) -> None:
@@ -144,9 +175,10 @@ class Block:
         return list(zip(self.numbers, self.parsed, strict=True))
 
 
-def chunks(stream: BinaryIO, size: int) -> Iterator[tuple[Header, Block]]:
-    """The header and then blocks of up to ``size`` rows of a csv file read as bytes; the header
-    is row 1. A file with a header and no rows yields the header once with an empty block.
+def chunks(stream: BinaryIO, size: int | None = None) -> Iterator[tuple[Header, Block]]:
+    """The header and then blocks of up to ``size`` rows of a csv file read as bytes (default
+    :data:`CHUNK_ROWS`, or :data:`CHUNK_ROWS_COMBINED` for a file of combined-load cases); the
+    header is row 1. A file with a header and no rows yields the header once with an empty block.
 
     Each line is decoded as UTF-8 on its own (a byte order mark before the header is dropped):
     a line that is not UTF-8 is a bad row named by its number, not the end of the file. Blank
@@ -155,6 +187,8 @@ def chunks(stream: BinaryIO, size: int) -> Iterator[tuple[Header, Block]]:
     the csv module cannot read comes as one cell, so that its cell count does not fit.
     """
     header = _header(next(_numbered(stream, 0), None))
+    if size is None:
+        size = CHUNK_ROWS_COMBINED if header.combined else CHUNK_ROWS
     any_rows = False
     for block in _blocks(stream, size):
         any_rows = True
@@ -317,6 +351,10 @@ class CellParser:
         kind, name = self.kind, self.name
         if kind in ("text", "pick"):
             return _choice(name, text) if kind == "pick" else text
+        if kind == "ring":
+            if text not in ("inner", "outer"):
+                raise InputError(name, f"unknown ring {text!r}; allowed: inner, outer")
+            return text
         if kind in ("number", "count"):
             return _number(name, text, self.unit, whole=kind == "count")
         if kind == "exponent":

@@ -198,57 +198,98 @@ def life_figures(
     bearing; P = F_r without an axial load); one value, the same for every cage angle. None
     where C_r (``dynamic_rating`` or the catalogue's) is unknown.
     """
-    from bearingload.bearings.iso16281 import contact_ratings, reference_rating_life
-    from bearingload.bearings.life import equivalent_load_deep_groove, rating_life
-
     c_r = dynamic_rating or b.C
     l10r = p_eq = life = None
     if c_r:
-        assert b.ball_diameter and b.pitch_diameter and b.f_i and b.f_o
-        q_ci, q_ce = contact_ratings(c_r, b.balls, b.ball_diameter, b.pitch_diameter, b.f_i, b.f_o)
-        l10r = reference_rating_life(r.ball_loads, q_ci, q_ce, rotating)
+        l10r = reference_lives(b, r, rotating, c_r)
         fr = float(np.asarray(r.radial_load).reshape(-1)[0])
         fa = float(np.asarray(r.axial_load).reshape(-1)[0])
-        f0 = None if b.geometry is None else b.geometry.f0
-        if fa == 0:
-            p_eq = fr
-        elif b.C0 is not None and f0 is not None:
-            p_eq = float(equivalent_load_deep_groove(fr, fa, b.C0, f0))
-        if p_eq:
-            life = float(rating_life(c_r, p_eq))
+        p, l10 = basic_lives(b, c_r, fr, fa)
+        p_eq = None if p is None else float(p)
+        life = None if l10 is None else float(l10)
     return l10r, p_eq, life, c_r
+
+
+def reference_lives(b: ResolvedBearing, r: CombinedDistribution, rotating: str, c_r: float) -> Any:
+    """L10r of every case of ``r`` (ISO/TS 16281:2008, 4.3), the contact ratings from C_r. [10^6 rev]"""
+    from bearingload.bearings.iso16281 import contact_ratings, reference_rating_life
+
+    assert b.ball_diameter and b.pitch_diameter and b.f_i and b.f_o
+    q_ci, q_ce = contact_ratings(c_r, b.balls, b.ball_diameter, b.pitch_diameter, b.f_i, b.f_o)
+    return reference_rating_life(r.ball_loads, q_ci, q_ce, rotating)
+
+
+def basic_lives(b: ResolvedBearing, c_r: float, fr: Any, fa: Any) -> tuple[Any, Any]:
+    """ISO 281:2007's P = X F_r + Y F_a (5.2, Table 3) and L10 = (C_r/P)^3 (5.3) of every
+    (F_r, F_a) [N]: P = F_r without an axial load; (None, None) with one where C0r or f0 is
+    unknown (not a catalogue bearing). [N], [10^6 rev]"""
+    from bearingload.bearings.life import equivalent_load_deep_groove, rating_life
+
+    fr, fa = np.asarray(fr, dtype=float), np.asarray(fa, dtype=float)
+    f0 = None if b.geometry is None else b.geometry.f0
+    if b.C0 is not None and f0 is not None:
+        p = np.where(fa == 0, fr, equivalent_load_deep_groove(fr, fa, b.C0, f0))
+    elif np.all(fa == 0):
+        p = fr
+    else:
+        return None, None
+    return p, rating_life(c_r, p)  # P > 0: the solver refuses a case without load
 
 
 def combined_values(c: CombinedCase) -> dict[str, Any]:
     """Every quantity of one case under its key of :mod:`bearingload.reports.quantities`."""
-    r, b = c.result, c.bearing
+    columns = case_columns(
+        c.bearing, c.result, c.misalignment, c.rotating, c.dynamic_rating,
+        c.equivalent_load, c.rating_life, c.reference_rating_life,
+    )  # fmt: skip
+    return {k: v if v is None or isinstance(v, str) else v.reshape(-1)[0].item()
+            for k, v in columns.items()}  # fmt: skip
+
+
+def case_columns(
+    b: ResolvedBearing,
+    r: CombinedDistribution,
+    misalignment: Any,
+    rotating: Any,
+    dynamic_rating: Any,
+    equivalent_load: Any,
+    rating_life: Any,
+    reference_rating_life: Any,
+) -> dict[str, Any]:
+    """Every quantity of the cases of ``r`` (one bearing) under its key of
+    :mod:`bearingload.reports.quantities`: a numpy array over the cases, text, or None where a
+    quantity is not given (no misalignment imposed, C_r unknown, no catalogue C0r and f0)."""
+
+    def arr(value: Any, dtype: Any = float) -> Any:
+        return None if value is None else np.atleast_1d(np.asarray(value, dtype=dtype))
+
     return {
         "bearing": b.designation or "given by hand",
         "method": "combined",
-        "balls": int(r.balls),
-        "load": float(r.radial_load),
-        "axial_load": float(r.axial_load),
-        "moment": float(r.moment),
-        "misalignment_deg": c.misalignment,
-        "rotating": c.rotating,
-        "stiffness": float(b.stiffness),
-        "clearance": float(r.clearance),
+        "balls": arr(r.balls, np.int64),
+        "load": arr(r.radial_load),
+        "axial_load": arr(r.axial_load),
+        "moment": arr(r.moment),
+        "misalignment_deg": arr(misalignment),
+        "rotating": rotating,
+        "stiffness": arr(b.stiffness),
+        "clearance": arr(r.clearance),
         "clearance_pick": b.clearance_pick,
-        "cage_angle_deg": float(r.cage_angle),
-        "free_contact_angle_deg": float(r.free_contact_angle),
-        "axial_play": float(r.axial_play),
-        "q_max": float(r.q_max),
-        "loaded_balls": int(r.loaded_balls),
-        "x": float(r.x),
-        "y": float(r.y),
-        "deflection_axial": float(r.axial),
-        "tilt_deg": float(r.tilt),
-        "tilt_cross_deg": float(r.tilt_cross),
-        "contact_angle_max_deg": float(largest_loaded_angle(r)),
-        "dynamic_rating": c.dynamic_rating,
-        "equivalent_load": c.equivalent_load,
-        "rating_life": c.rating_life,
-        "reference_rating_life": c.reference_rating_life,
+        "cage_angle_deg": arr(r.cage_angle),
+        "free_contact_angle_deg": arr(r.free_contact_angle),
+        "axial_play": arr(r.axial_play),
+        "q_max": arr(r.q_max),
+        "loaded_balls": arr(r.loaded_balls, np.int64),
+        "x": arr(r.x),
+        "y": arr(r.y),
+        "deflection_axial": arr(r.axial),
+        "tilt_deg": arr(r.tilt),
+        "tilt_cross_deg": arr(r.tilt_cross),
+        "contact_angle_max_deg": arr(largest_loaded_angle(r)),
+        "dynamic_rating": arr(dynamic_rating),
+        "equivalent_load": arr(equivalent_load),
+        "rating_life": arr(rating_life),
+        "reference_rating_life": arr(reference_rating_life),
     }
 
 

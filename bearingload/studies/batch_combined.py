@@ -1,0 +1,131 @@
+"""Rows of a batch file under a combined load: the computation behind ``bearingload batch`` when
+the file has an ``axial_load``, ``moment``, ``misalignment``, ``dynamic_rating`` or ``rotating``
+column.
+
+Every row names a deep-groove ball bearing (a catalogue designation and/or its ball geometry),
+as ``bearingload solve --axial-load ...`` needs. The rows of one resolved bearing that share the
+kind of tilt (free, a moment, an imposed misalignment), the rotating ring and C_r are solved by
+ONE vectorised call (their clearances, loads and cage angles as arrays) of :func:`bearingload.models.combined.solve_combined` (through
+:func:`bearingload.studies.combined_bearing.solve_on_bearing`), their lives by the vectorised
+ISO/TS 16281 and ISO 281 functions. Should a group's call fail, its rows are solved one by one so
+that the failing row is named and the others kept. Each row's answer depends on its own inputs
+only (the combined solver treats every case independently; a test checks batch against solve).
+"""
+
+from __future__ import annotations
+
+from collections.abc import Sequence
+from typing import Any
+
+import numpy as np
+
+from bearingload.errors import BearingloadError
+
+#: The output columns of a combined-load file (those of ``solve --format csv`` with an axial
+#: load), after the row number.
+COMBINED_KEYS = (
+    "bearing", "method", "balls", "load", "axial_load", "moment", "misalignment_deg",
+    "rotating", "stiffness", "clearance", "clearance_pick", "cage_angle_deg", "q_max",
+    "loaded_balls", "contact_angle_max_deg", "free_contact_angle_deg", "axial_play", "x", "y",
+    "deflection_axial", "tilt_deg", "tilt_cross_deg", "reference_rating_life",
+    "dynamic_rating", "equivalent_load", "rating_life",
+)  # fmt: skip
+
+Part = tuple[list[int], dict[str, Any]]
+
+#: Rows times balls solved per vectorised call (about 30 MB of solver work arrays; larger calls
+#: are no faster per case).
+CALL_BALLS = 2**15
+
+
+def solve_combined_rows(rows: Sequence[dict[str, Any]], errors: dict[int, str]) -> list[Part]:
+    """Solve rows given as dicts (``row``, ``bearing`` (resolved), ``load``, ``axial_load``,
+    ``moment``, ``misalignment``, ``rotating``, ``dynamic_rating``, ``cage_angle``); per group,
+    the row numbers and the quantities over them. Failing rows go to ``errors``."""
+    groups: dict[tuple[Any, ...], list[dict[str, Any]]] = {}
+    for r in rows:
+        key = (_same_balls(r["bearing"]), r["moment"] is None, r["misalignment"] is None,
+               r["rotating"], r["dynamic_rating"])  # fmt: skip
+        groups.setdefault(key, []).append(r)
+    out: list[Part] = []
+    for group in groups.values():  # memory bounded: at most CALL_BALLS ball contacts a call
+        size = max(1, CALL_BALLS // int(group[0]["bearing"].balls))
+        for i in range(0, len(group), size):
+            out += _solve_group(group[i : i + size], errors)
+    return out
+
+
+def _same_balls(b: Any) -> tuple[Any, ...]:
+    """What rows must share to be solved in one call: the bearing but its clearance (which
+    enters the call as an array)."""
+    f0 = None if b.geometry is None else b.geometry.f0
+    return (b.designation, b.kind, b.balls, b.ball_diameter, b.pitch_diameter, b.f_i, b.f_o,
+            b.modulus, b.poisson, b.stiffness, b.stiffness_given, b.C, b.C0, f0)  # fmt: skip
+
+
+def _solve_group(group: list[dict[str, Any]], errors: dict[int, str]) -> list[Part]:
+    """One vectorised call for the group; one call per row if that fails."""
+    try:
+        with np.errstate(all="ignore"):
+            return [_group_values(group)]
+    except (BearingloadError, ValueError, ArithmeticError) as exc:
+        if len(group) == 1:
+            errors[group[0]["row"]] = str(exc)
+            return []
+    out: list[Part] = []
+    for r in group:
+        out += _solve_group([r], errors)
+    return out
+
+
+def _group_values(group: list[dict[str, Any]]) -> Part:
+    """Solve the rows of one bearing together: their quantities (arrays over the rows)."""
+    from bearingload.bearings.checks import combined_warnings
+    from bearingload.studies.combined_bearing import (
+        basic_lives,
+        case_columns,
+        reference_lives,
+        ring_tilt,
+        solve_on_bearing,
+    )
+
+    first = group[0]
+    b = first["bearing"]
+
+    def given(key: str) -> Any:
+        return None if first[key] is None else np.array([r[key] for r in group], dtype=float)
+
+    load, axial = given("load"), given("axial_load")
+    misalignment = given("misalignment")
+    if misalignment is not None:  # each row within the limit (solve_on_bearing checks the max)
+        from bearingload.studies.combined_bearing import check_misalignment
+
+        check_misalignment(float(np.max(np.abs(misalignment))))
+    clearance = np.array([g["bearing"].clearance for g in group], dtype=float)
+    r = solve_on_bearing(b, load, axial, cage_angle=given("cage_angle"), moment=given("moment"),
+                         misalignment=misalignment, clearance=clearance)  # fmt: skip
+    c_r = first["dynamic_rating"] or b.C
+    l10r = p_eq = life = None
+    if c_r:
+        l10r = reference_lives(b, r, first["rotating"], c_r)
+        p_eq, life = basic_lives(b, c_r, load, axial)
+    n = len(group)
+    cols = case_columns(b, r, misalignment, first["rotating"], None if not c_r else
+                        np.full(n, float(c_r)), p_eq, life, l10r)  # fmt: skip
+    cols = {k: _over_rows(v, n) for k, v in cols.items()}
+    cols["clearance_pick"] = [g["bearing"].clearance_pick for g in group]
+    tilts = np.broadcast_to(ring_tilt(r), (n,)).tolist()
+    q, loaded = cols["q_max"].tolist(), cols["loaded_balls"].tolist()
+    cols["warnings"] = [
+        combined_warnings(g["bearing"], g["load"], g["axial_load"], q[i], loaded[i],
+                          tilts[i] if g["moment"] is not None else g["misalignment"])
+        for i, g in enumerate(group)
+    ]  # fmt: skip
+    return [g["row"] for g in group], cols
+
+
+def _over_rows(value: Any, n: int) -> Any:
+    """A column over the ``n`` rows: an array, or a list (text; None where not given)."""
+    if value is None or isinstance(value, str):
+        return [value] * n
+    return np.broadcast_to(value, (n,)).copy()
