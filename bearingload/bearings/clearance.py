@@ -85,12 +85,10 @@ def table() -> tuple[ClearanceRow, ...]:
     tuple of ClearanceRow
         Limits converted from the file's micrometres to [mm].
     """
-    import csv  # the table is read on first use only
-    from importlib import resources
+    from bearingload.bearings._data import read_rows  # the table is read on first use only
 
-    path = resources.files("bearingload.bearings").joinpath("data/clearance_deep_groove.csv")
     rows = []
-    for rec in csv.DictReader(path.read_text(encoding="utf-8").splitlines()):
+    for rec in read_rows("clearance_deep_groove.csv"):
         limits = {
             cls: (float(rec[f"{cls}_min"]) / 1000.0, float(rec[f"{cls}_max"]) / 1000.0)
             for cls in CLASSES
