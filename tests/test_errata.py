@@ -82,6 +82,19 @@ def test_only_differing_and_summary_agree():
     assert sum(c["checked"] for c in counts) == 916 and sum(c["differ"] for c in counts) == 243
 
 
+def test_summary_with_only_differing_keeps_the_tables_where_some_differ():
+    """--summary --only-differing used to ignore the filter and list every table."""
+    every = json.loads(invoke("errata", "--summary", "--format", "json").output)["rows"]
+    r = invoke("errata", "--summary", "--only-differing", "--format", "json")
+    assert r.exit_code == 0
+    doc = json.loads(r.output)
+    kept = doc["rows"]
+    assert "only those where a printed number differs" in doc["title"]
+    assert kept == [c for c in every if c["differ"] > 0]
+    assert len(kept) < len(every)  # e.g. Kuzmenko 2010 §3.2: 2 checked, none differ
+    assert sum(c["differ"] for c in kept) == sum(c["differ"] for c in every)
+
+
 @pytest.mark.parametrize("fmt", ["table", "csv", "markdown", "json"])
 def test_every_format(fmt):
     r = invoke("errata", "--format", fmt)
