@@ -100,9 +100,9 @@ def resolve_roller(
     k_contact = float(palmgren_line_stiffness(row.roller_length))
     k = float(stiffness) if stiffness is not None else float(roller_stiffness(row.roller_length))
     prov = _provenance(row, k_contact, k, stiffness is not None, g_src, g_r)
-    sources = (f"catalogue row {row.designation}: {row.source}", f"catalogue notes: {row.notes}")
+    sources = [f"catalogue row {row.designation}: {row.source}", f"catalogue notes: {row.notes}"]
     if rng is not None:
-        sources += (_clearance_row_source(row.d, "roller"),)
+        sources.append(_clearance_row_source(row.d, "roller"))
     return ResolvedBearing(
         designation=designation,
         geometry=None,
@@ -124,7 +124,7 @@ def resolve_roller(
         C=row.C,
         C0=row.C0,
         provenance=prov,
-        sources=sources,
+        sources=tuple(sources),
         kind="roller",
         exponent=LINE_EXPONENT,
         roller_length=row.roller_length,
