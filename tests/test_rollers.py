@@ -158,3 +158,36 @@ def test_roller_default_clearance_is_cn_of_the_roller_table() -> None:
     assert marked.clearance_class == "C4" and marked.clearance == pytest.approx(0.085, abs=1e-15)
     source = {p.key: p.source for p in b.provenance}["clearance"]
     assert "cylindrical roller" in source and "CN 20-45 µm at d = 30 mm" in source
+
+
+@pytest.mark.parametrize("fmt", ["table", "markdown"])
+def test_roller_outputs_say_roller_in_human_formats(fmt: str) -> None:
+    """solve and sweep of a roller bearing used to print 'heaviest ball load', 'balls carrying
+    load', 'Ball loads', 'ball' (the element carrying Q_max) for the rollers."""
+    import re
+
+    from .cli_helpers import invoke
+
+    out = invoke("solve", "NU206", "-F", "5kN", "--format", fmt).output
+    for label in ("heaviest roller load Q_max", "rollers carrying load", "Roller loads (roller 1"):
+        assert label in out
+    sweep = invoke("sweep", "NU206", "-F", "5kN", "--steps", "3", "--format", fmt).output
+    assert "Over one roller pitch" in sweep and "roller: the roller carrying Q_max" in sweep
+    for text in (out, sweep):
+        # 'ball' only where a note speaks of ball bearings or of a model's own description
+        lines = [ln for ln in text.splitlines() if re.search(r"\b[Bb]alls?\b", ln)]
+        assert all("ball bearings" in ln or "discrete balls" in ln or "each ball's" in ln
+                   for ln in lines), lines  # fmt: skip
+    ball = invoke("solve", "306", "-F", "300kgf", "--format", fmt).output
+    assert "heaviest ball load Q_max" in ball and "roller" not in ball
+
+
+def test_roller_machine_keys_stay_the_same() -> None:
+    import json
+
+    from .cli_helpers import invoke
+
+    doc = json.loads(invoke("solve", "NU206", "-F", "5kN", "--format", "json").output)
+    assert {"q_max", "loaded_balls", "ball_loads"} <= set(doc["cases"][0])
+    csv_head = invoke("sweep", "NU206", "-F", "5kN", "--steps", "3", "--format", "csv").output
+    assert "q_max_ball" in csv_head.splitlines()[0] and "roller" not in csv_head

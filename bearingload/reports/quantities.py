@@ -13,8 +13,9 @@ from __future__ import annotations
 
 from collections.abc import Iterable
 from dataclasses import dataclass
+from typing import Any
 
-from bearingload.constants import KGF
+from bearingload.constants import KGF, ROLLER_EXPONENT
 
 
 @dataclass(frozen=True)
@@ -189,3 +190,57 @@ def units(keys: Iterable[str], exponent: float | None = None) -> dict[str, str]:
             unit = f"N/mm^{exponent:g}"
         out[key] = unit
     return out
+
+
+def element_words(text: str, exponent: float) -> str:
+    """A human label written for the rolling elements of the exponent: under line contact
+    (m = 10/9, cylindrical rollers) 'ball(s)' reads 'roller(s)'; otherwise ``text`` as it is.
+
+    Labels only: csv columns and JSON keys (``q_max_ball``, ``loaded_balls``) stay the same for
+    every bearing.
+
+    Parameters
+    ----------
+    text : str
+        A label, title or header.
+    exponent : float
+        Load-deflection exponent m of the case. [-]
+
+    Examples
+    --------
+    >>> element_words("Ball loads (ball 1 at the cage angle)", 10 / 9)
+    'Roller loads (roller 1 at the cage angle)'
+    >>> element_words("balls carrying load", 1.5)
+    'balls carrying load'
+    """
+    if abs(float(exponent) - ROLLER_EXPONENT) > 1e-12:
+        return text
+    import re
+
+    return re.sub(
+        r"\b([Bb])all(s?)\b", lambda m: f"{'Rr'[m.group(1) == 'b']}oller{m.group(2)}", text
+    )
+
+
+def for_elements(table: Any, exponent: float, notes: bool = False) -> Any:
+    """A :class:`bearingload.reports.render.Table` with its title, column headers and
+    ``quantity`` cells (and, with ``notes``, its notes) written by :func:`element_words`."""
+    import dataclasses
+
+    if abs(float(exponent) - ROLLER_EXPONENT) > 1e-12:
+        return table
+
+    def words(text: str) -> str:
+        return element_words(text, exponent)
+
+    rows = [
+        r | {"quantity": words(r["quantity"])} if isinstance(r.get("quantity"), str) else r
+        for r in table.rows
+    ]
+    return dataclasses.replace(
+        table,
+        title=words(table.title),
+        columns=[dataclasses.replace(c, header=words(c.header)) for c in table.columns],
+        rows=rows,
+        notes=[words(n) for n in table.notes] if notes else table.notes,
+    )
