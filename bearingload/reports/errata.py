@@ -19,7 +19,8 @@ README_END = "<!-- errata:end -->"
 
 NOTES = (
     "printed: as printed (decimal comma made a point); computed: the package's value of the same "
-    "quantity in the same unit; relative difference = (printed - computed)/computed.",
+    "quantity in the same unit; relative difference = (printed - computed)/computed (in % here; "
+    "a fraction in csv and json).",
     "verdict 'agrees': |difference| is within half a unit of the last printed digit (a printed "
     "integer that states an exact value, such as k = 1, is held to 1e-9).",
 )
@@ -48,7 +49,12 @@ def _column(key: str) -> Column:
     q = QUANTITIES[key]
     right = key in _RIGHT or q.digits is not None
     return Column(
-        key, q.label, "" if q.unit == "" else q.unit, q.digits, "right" if right else "left"
+        key,
+        q.label,
+        "" if q.unit == "" else q.unit,
+        q.digits,
+        "right" if right else "left",
+        q.display,
     )
 
 

@@ -56,6 +56,8 @@ class Quantity:
 
 
 _UM = ("µm", 1e3)
+#: Relative errors and differences: a fraction [-] in csv and json, % in the human formats.
+_PERCENT = ("%", 100.0)
 _MRAD = ("mrad", 1000.0 * 3.141592653589793 / 180.0)
 
 #: Every quantity a report prints, in the order columns appear.
@@ -89,7 +91,7 @@ QUANTITIES: dict[str, Quantity] = {
         Quantity("q_max_ball", "ball carrying Q_max", "", None),
         Quantity("epsilon", "load-zone parameter epsilon", "-"),
         Quantity("iterations", "solver iterations", "", None),
-        Quantity("relative_error", "Q_max/Q_max,exact - 1", "-", 3, display=("%", 100.0)),
+        Quantity("relative_error", "Q_max/Q_max,exact - 1", "-", 3, display=_PERCENT),
         Quantity("valid", "inside the model's range", "", None),
         Quantity("warnings", "warnings (bearingload.bearings.checks)", "", None),
         # a cage sweep (bearingload sweep)
@@ -118,7 +120,7 @@ QUANTITIES: dict[str, Quantity] = {
         Quantity("printed", "printed", "", None),
         Quantity("computed", "computed", "", 6),
         Quantity("difference", "difference (printed - computed)", "", 3),
-        Quantity("relative_difference", "relative difference", "-", 2),
+        Quantity("relative_difference", "relative difference", "-", 3, display=_PERCENT),
         Quantity("verdict", "verdict", "", None),
         Quantity("cause", "cause", "", None),
         Quantity("checked", "printed numbers checked", "", None),
@@ -148,8 +150,8 @@ QUANTITIES: dict[str, Quantity] = {
         # studies: work-precision (bearingload accuracy) and stability (bearingload stability)
         Quantity("setting", "setting", "", None),
         Quantity("cases", "cases", "", None),
-        Quantity("error_median", "median error", "-", 2),
-        Quantity("error_max", "largest error", "-", 2),
+        Quantity("error_median", "median error", "-", 2, display=_PERCENT),
+        Quantity("error_max", "largest error", "-", 2, display=_PERCENT),
         Quantity("seconds_per_case", "time per case, one per call", "s", 3),
         Quantity("seconds_per_case_vectorised", "time per case, vectorised", "s", 3),
         Quantity("family", "family", "", None),
