@@ -40,7 +40,8 @@ golden: $(STAMP)
 
 ## make bench: vectorised solver against a per-case scipy brentq loop, one call against scipy root
 ## (hybr) and the Hertz contact against brentq on the ellipticity equation, ring_forces against a
-## per-evaluation Python loop, bearingload batch on 10^5 csv cases against the brentq loop: ratios,
+## per-evaluation Python loop, bearingload batch on 10^5 csv cases against the brentq loop, the
+## start-up of solve and table k against python -c 'import numpy': ratios,
 ## each in one run; the work-precision report (times of this run) and the full stability grid
 bench: $(STAMP)
 	$(BIN)/python -m compileall -q bearingload
@@ -51,6 +52,7 @@ bench: $(STAMP)
 	$(BIN)/python benchmarks/bench_combined.py
 	$(BIN)/python benchmarks/bench_combined_sweep.py
 	$(BIN)/python benchmarks/bench_batch.py
+	$(BIN)/python benchmarks/bench_startup.py
 	$(BIN)/bearingload accuracy
 	$(BIN)/bearingload stability --size full
 

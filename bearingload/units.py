@@ -136,6 +136,52 @@ def parse_quantity(text: str | float, kind: str, *, parameter: str | None = None
     return value * lookup[unit]
 
 
+def parse_cage_angle(text: str | float, *, parameter: str = "cage_angle") -> float | str:
+    """Parse a cage angle: ``"half"`` (half a pitch, the load between two balls) or an angle.
+
+    The one reading of a cage angle for every command and for ``batch`` files: a bare number is
+    degrees; ``deg``, ``°``, ``rad`` and ``mrad`` may follow it (any case: ``5DEG``, ``0.1rad``).
+
+    Parameters
+    ----------
+    text : str or float
+        ``"12"``, ``"12deg"``, ``"0.1rad"``, ``"half"``, or a number. [° unless a unit is written]
+    parameter : str, optional
+        Name used in the error message.
+
+    Returns
+    -------
+    float or str
+        The angle in [°], or ``"half"``.
+
+    Raises
+    ------
+    InputError
+        When the text is neither ``half`` nor a finite angle with an angle unit.
+
+    Examples
+    --------
+    >>> parse_cage_angle("HALF"), parse_cage_angle("20"), parse_cage_angle("90°")
+    ('half', 20.0, 90.0)
+    >>> round(parse_cage_angle("0.1rad"), 9)
+    5.729577951
+    """
+    if isinstance(text, (int, float)):
+        return parse_quantity(float(text), "angle", parameter=parameter)
+    folded = str(text).strip().lower()
+    if folded == "half":
+        return "half"
+    from bearingload.errors import InputError
+
+    try:
+        return parse_quantity(folded, "angle", parameter=parameter)
+    except InputError as exc:
+        detail = str(exc).split(": ", 1)[-1]
+        raise InputError(
+            parameter, f"{detail}; or 'half' (half a pitch: the load between two balls)"
+        ) from None
+
+
 def _unreadable(text: str, kind: str) -> str:
     """Why ``text`` is no number with a unit, with a hint for the usual slips."""
     if re.match(r"^\s*[+-]?\d*,\d+", text):

@@ -127,7 +127,7 @@ def test_roller_bearing_nu206() -> None:
             "with one: NSK, NTN, SKF, GMN, GOST",
         ),
         (["solve", "NU206", "-F", "1kN", "-m", "1.1"], "a roller bearing (line contact) has m = 10/9"),
-        (["solve", "NU206", "-F", "1kN", "-G", "C3"], "Invalid value for '--clearance': the clearance classes of cylindrical"),
+        (["solve", "NU206", "-F", "1kN", "-G", "4.5mm"], "Invalid value for '--clearance': G_r = 4.5 mm is at least half the roller diameter"),
         (["solve", "6404", "-F", "1kN"], "choose a maker's set with '--maker': NTN | SKF"),
         (["table", "k", "-b", "NU206"], "the tables take ball bearings"),
         (["catalog", "show", "6208", "--maker", "X"], "Invalid value for '--maker': no X ball set"),

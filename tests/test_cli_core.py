@@ -215,3 +215,30 @@ def test_terminal_calculation_imports_no_scipy():
     )
     assert r.returncode == 0, r.stderr
     assert r.stdout.strip().splitlines()[-1] == "False False"
+
+
+@pytest.mark.parametrize(
+    "args, absent",
+    [
+        (["table", "k"], ["numpy.ma", "importlib.resources", "bearingload.bearings.catalog"]),
+        (
+            ["solve", "-z", "8", "-F", "300kgf", "-K", "4700kgf/mm^1.5", "-G", "20um"],
+            ["numpy.ma", "importlib.resources", "bearingload.bearings.catalog"],
+        ),
+        (["solve", "306", "-F", "300kgf"], ["numpy.ma", "importlib.resources"]),
+    ],
+)
+def test_terminal_calculation_skips_modules_it_does_not_need(args, absent):
+    """Start-up: np.unique imports numpy.ma (7 ms), importlib.resources pulls in pathlib,
+    tempfile and shutil (10 ms), the catalogue is not needed for a ring given by z and K."""
+    code = (
+        "import sys\n"
+        "from bearingload.cli import main\n"
+        f"main.main(args={args!r}, standalone_mode=False)\n"
+        f"print(sorted(m for m in {absent!r} if m in sys.modules))\n"
+    )
+    r = subprocess.run(
+        [sys.executable, "-c", code], capture_output=True, text=True, timeout=60, env=os.environ
+    )
+    assert r.returncode == 0, r.stderr
+    assert r.stdout.strip().splitlines()[-1] == "[]"

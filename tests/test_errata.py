@@ -82,6 +82,19 @@ def test_only_differing_and_summary_agree():
     assert sum(c["checked"] for c in counts) == 916 and sum(c["differ"] for c in counts) == 243
 
 
+def test_summary_with_only_differing_keeps_the_tables_where_some_differ():
+    """--summary --only-differing used to ignore the filter and list every table."""
+    every = json.loads(invoke("errata", "--summary", "--format", "json").output)["rows"]
+    r = invoke("errata", "--summary", "--only-differing", "--format", "json")
+    assert r.exit_code == 0
+    doc = json.loads(r.output)
+    kept = doc["rows"]
+    assert "only those where a printed number differs" in doc["title"]
+    assert kept == [c for c in every if c["differ"] > 0]
+    assert len(kept) < len(every)  # e.g. Kuzmenko 2010 §3.2: 2 checked, none differ
+    assert sum(c["differ"] for c in kept) == sum(c["differ"] for c in every)
+
+
 @pytest.mark.parametrize("fmt", ["table", "csv", "markdown", "json"])
 def test_every_format(fmt):
     r = invoke("errata", "--format", fmt)
@@ -144,3 +157,27 @@ def test_errata_command_is_lazy():
         "import bearingload.studies.published; assert 'numpy' not in sys.modules"
     )
     assert subprocess.run([sys.executable, "-c", code], timeout=60).returncode == 0
+
+
+def test_relative_errors_are_percent_in_human_formats_and_fractions_in_machine_ones():
+    """errata printed its relative difference as a fraction [-] and the accuracy report its
+    errors as fractions, while solve and table k --method all print % (the review's finding)."""
+    from bearingload.reports.quantities import QUANTITIES
+    from bearingload.reports.render import render
+    from bearingload.studies.accuracy import accuracy_table
+
+    relative = [q for q in QUANTITIES.values() if "error" in q.key or "relative" in q.key]
+    assert {q.key for q in relative} >= {"relative_error", "relative_difference", "error_max"}
+    assert all(q.shown() == ("%", 100.0) and q.unit == "-" for q in relative)
+    human = invoke("errata", "--paper", "sabadash", "--only-differing").output
+    assert "relative difference [%]" in human and "relative difference [-]" not in human
+    first = json.loads(invoke("errata", "--paper", "sabadash", "--only-differing", "--format", "json").output)["rows"][0]  # fmt: skip
+    assert first["relative_difference"] == 1.0  # printed 1, computed 0.5: +100 %
+    assert "100  differs" in human.splitlines()[4]
+    row = {"method": "m", "setting": "s", "cases": 1, "error_median": 0.0012, "error_max": 0.5,
+           "iterations": 3}  # fmt: skip
+    text = render([accuracy_table([row])], "markdown")
+    assert "median error [%]" in text
+    cells = [c.strip() for c in text.splitlines()[4].split("|")]
+    assert cells[4:6] == ["0.12", "50"], cells
+    assert render([accuracy_table([row])], "csv").splitlines()[1] == "m,s,1,0.0012,0.5,3"

@@ -96,7 +96,7 @@ def test_resolve_and_solve_nu206() -> None:
     b = resolve_bearing("NU206")
     assert (b.kind, b.exponent, b.balls, b.ball_diameter) == ("roller", 10 / 9, 13, 9.0)
     assert b.stiffness == pytest.approx(float(roller_stiffness(b.roller_length)), rel=1e-15)
-    assert b.clearance == 0.0 and (b.C, b.C0) == (44000.0, 36500.0)
+    assert (b.C, b.C0) == (44000.0, 36500.0)
     sources = {p.key: p.source for p in b.provenance}
     assert "read" in sources["balls"] and "derived" in sources["roller_length"]
     assert (
@@ -112,7 +112,6 @@ def test_resolve_and_solve_nu206() -> None:
 @pytest.mark.parametrize(
     ("kwargs", "parameter"),
     [
-        ({"clearance": "C3"}, "clearance"),
         ({"maker": "NSK"}, "maker"),
         ({"clearance": "5mm"}, "clearance"),
     ],
@@ -121,3 +120,74 @@ def test_roller_errors(kwargs: dict[str, str], parameter: str) -> None:
     with pytest.raises(InputError) as info:
         resolve_bearing("NU206", **kwargs)  # type: ignore[arg-type]
     assert info.value.parameter == parameter
+
+
+#: ISO 5753-1 radial internal clearance of cylindrical roller bearings with a cylindrical bore,
+#: µm, (bore over, incl): C2, CN, C3, C4, C5 (min, max), as printed by original-bearing.com
+#: ("Radial internal clearance of cylindrical roller bearings with a cylindrical bore"); C2-C4
+#: the same at ahrinternational.com/bearing_clearance.htm. Rows covering the catalogue's bores.
+ROLLER_CLEARANCE_PRINTED = {
+    (0, 24): ((0, 25), (20, 45), (35, 60), (50, 75), (65, 90)),
+    (24, 30): ((0, 25), (20, 45), (35, 60), (50, 75), (70, 95)),
+    (30, 40): ((5, 30), (25, 50), (45, 70), (60, 85), (80, 105)),
+    (50, 65): ((10, 40), (40, 70), (60, 90), (80, 110), (110, 140)),
+    (80, 100): ((15, 50), (50, 85), (75, 110), (105, 140), (155, 190)),
+}
+
+
+@pytest.mark.parametrize("row", sorted(ROLLER_CLEARANCE_PRINTED))
+def test_roller_clearance_table_is_the_printed_one(row: tuple[int, int]) -> None:
+    from bearingload.bearings.clearance import CLASSES, clearance_range
+
+    bore = row[1]  # 'over / incl': the upper bore belongs to the row
+    for cls, (low, high) in zip(CLASSES, ROLLER_CLEARANCE_PRINTED[row], strict=True):
+        got = clearance_range(bore, cls, kind="roller")
+        assert got == pytest.approx((low / 1e3, high / 1e3), abs=1e-12), (row, cls)
+
+
+def test_roller_default_clearance_is_cn_of_the_roller_table() -> None:
+    """NU206 (d = 30 mm) used G_r = 0 although the help said 'the class the designation marks,
+    else CN': CN of cylindrical roller bearings at 24-30 mm is 20-45 µm."""
+    b = resolve_bearing("NU206")
+    assert (b.clearance_class, b.clearance_pick) == ("CN", "mean")
+    assert b.clearance == pytest.approx(0.0325, abs=1e-15)
+    assert b.clearance_range == pytest.approx((0.020, 0.045), abs=1e-15)
+    c3 = resolve_bearing("NU206", clearance="C3", clearance_pick="max")
+    assert (c3.clearance_class, c3.clearance) == ("C3", pytest.approx(0.060, abs=1e-15))
+    marked = resolve_bearing("NU210 C4")  # d = 50: C4 70-100 µm
+    assert marked.clearance_class == "C4" and marked.clearance == pytest.approx(0.085, abs=1e-15)
+    source = {p.key: p.source for p in b.provenance}["clearance"]
+    assert "cylindrical roller" in source and "CN 20-45 µm at d = 30 mm" in source
+
+
+@pytest.mark.parametrize("fmt", ["table", "markdown"])
+def test_roller_outputs_say_roller_in_human_formats(fmt: str) -> None:
+    """solve and sweep of a roller bearing used to print 'heaviest ball load', 'balls carrying
+    load', 'Ball loads', 'ball' (the element carrying Q_max) for the rollers."""
+    import re
+
+    from .cli_helpers import invoke
+
+    out = invoke("solve", "NU206", "-F", "5kN", "--format", fmt).output
+    for label in ("heaviest roller load Q_max", "rollers carrying load", "Roller loads (roller 1"):
+        assert label in out
+    sweep = invoke("sweep", "NU206", "-F", "5kN", "--steps", "3", "--format", fmt).output
+    assert "Over one roller pitch" in sweep and "roller: the roller carrying Q_max" in sweep
+    for text in (out, sweep):
+        # 'ball' only where a note speaks of ball bearings or of a model's own description
+        lines = [ln for ln in text.splitlines() if re.search(r"\b[Bb]alls?\b", ln)]
+        assert all("ball bearings" in ln or "discrete balls" in ln or "each ball's" in ln
+                   for ln in lines), lines  # fmt: skip
+    ball = invoke("solve", "306", "-F", "300kgf", "--format", fmt).output
+    assert "heaviest ball load Q_max" in ball and "roller" not in ball
+
+
+def test_roller_machine_keys_stay_the_same() -> None:
+    import json
+
+    from .cli_helpers import invoke
+
+    doc = json.loads(invoke("solve", "NU206", "-F", "5kN", "--format", "json").output)
+    assert {"q_max", "loaded_balls", "ball_loads"} <= set(doc["cases"][0])
+    csv_head = invoke("sweep", "NU206", "-F", "5kN", "--steps", "3", "--format", "csv").output
+    assert "q_max_ball" in csv_head.splitlines()[0] and "roller" not in csv_head

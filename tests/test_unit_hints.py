@@ -3,12 +3,15 @@ usual slips (a space before the unit, a decimal comma) get a hint instead of an 
 
 from __future__ import annotations
 
+import json
+import math
+
 import pytest
 
 from bearingload.errors import InputError
-from bearingload.units import parse_quantity
+from bearingload.units import parse_cage_angle, parse_quantity
 
-from .cli_helpers import run_entry
+from .cli_helpers import invoke, run_entry
 
 HAND = ["solve", "-z", "8", "-F", "300kgf", "-K", "4700kgf/mm^1.5"]
 
@@ -47,3 +50,40 @@ def test_written_units_are_used_as_they_are(capsys):
     with pytest.raises(InputError, match="did you mean 1um"):
         parse_quantity("1", "length", parameter="clearance")
     assert parse_quantity("20", "length", parameter="ball_diameter") == 20.0  # no rule there
+
+
+@pytest.mark.parametrize(
+    "spelling, degrees",
+    [("0.1rad", 0.1 * 180.0 / math.pi), ("5.5", 5.5), ("5.5deg", 5.5), ("5.5°", 5.5),
+     ("5.5DEG", 5.5), ("30mrad", 0.03 * 180.0 / math.pi), ("0.1 rad", 0.1 * 180.0 / math.pi)],
+)  # fmt: skip
+def test_cage_angle_spellings_are_those_of_batch(tmp_path, spelling, degrees):
+    """solve and table read --cage-angle as batch reads its cage_angle column: degrees by
+    default, deg, rad, mrad (solve used to refuse '0.1rad')."""
+    solve = [*HAND, "-G", "20um", "--format", "json"]
+    got = json.loads(invoke(*solve, "--cage-angle", spelling).output)["cases"][0]
+    want = json.loads(invoke(*solve, "--cage-angle", repr(degrees)).output)["cases"][0]
+    assert got["cage_angle_deg"] == pytest.approx(degrees, rel=1e-9)  # json: 10 digits
+    assert got["q_max"] == want["q_max"]
+    cases = tmp_path / "c.csv"
+    cell = spelling if spelling != "5.5DEG" else "5.5deg"  # batch's units are case-sensitive
+    cases.write_text(f"balls,load,stiffness,clearance,cage_angle\n8,300kgf,4700kgf/mm^1.5,20um,"
+                     f"{cell}\n", encoding="utf-8")  # fmt: skip
+    row = json.loads(invoke("batch", str(cases), "--format", "json").output)["cases"][0]
+    assert row["q_max"] == pytest.approx(got["q_max"], rel=1e-9)
+    table = invoke("table", "k", "--z-max", "9", "--cage-angle", spelling, "--format", "json")
+    assert table.exit_code == 0
+
+
+def test_cage_angle_parser_half_and_refusals():
+    assert parse_cage_angle("Half") == "half" and parse_cage_angle(12) == 12.0
+    with pytest.raises(InputError, match="'half'"):
+        parse_cage_angle("12 kgf")
+    with pytest.raises(InputError, match="cage_angle"):
+        parse_cage_angle("nan")
+
+
+def test_bad_cage_angle_is_one_error_line(capsys):
+    code, out, err = run_entry(capsys, *HAND, "--cage-angle", "0.1radian")
+    assert code == 2 and out == "" and err.count("\n") == 1
+    assert err.startswith("Error: Invalid value for '--cage-angle': unknown unit 'radian'"), err

@@ -49,12 +49,10 @@ References
 
 from __future__ import annotations
 
-import csv
 import dataclasses
 import functools
 import math
 from dataclasses import dataclass
-from importlib import resources
 
 from bearingload.bearings.designation import Designation, parse
 from bearingload.errors import InputError
@@ -189,8 +187,9 @@ class BallSet:
 
 
 def _read(name: str) -> list[dict[str, str]]:
-    path = resources.files("bearingload.bearings").joinpath(f"data/{name}")
-    return list(csv.DictReader(path.read_text(encoding="utf-8").splitlines()))
+    from bearingload.bearings._data import read_rows
+
+    return read_rows(name)
 
 
 @functools.lru_cache(maxsize=1)

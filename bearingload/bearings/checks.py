@@ -34,10 +34,12 @@ stderr and JSON carries them as ``warnings``.
 
 from __future__ import annotations
 
-from typing import Any
+from typing import TYPE_CHECKING, Any
 
-from bearingload.bearings.resolve import ResolvedBearing
 from bearingload.errors import InputError
+
+if TYPE_CHECKING:  # the catalogue is imported only where a bearing is resolved
+    from bearingload.bearings.resolve import ResolvedBearing
 
 #: Smallest acceptable static safety factor s0 = C0/P0 (ISO 76:2006 3.6). [-]
 S0_MIN = 1.0

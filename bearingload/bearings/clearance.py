@@ -1,4 +1,5 @@
-"""Radial internal clearance of single-row deep groove ball bearings (ISO 5753-1 classes).
+"""Radial internal clearance of single-row deep groove ball bearings and of cylindrical roller
+bearings with a cylindrical bore (ISO 5753-1 classes).
 
 The clearance classes C2 < CN < C3 < C4 < C5 give the *radial internal clearance* G_r, the
 total radial play of one ring against the other, unmounted and unloaded. The papers' gap per
@@ -7,6 +8,11 @@ side is half of it (Delta = e = G_r / 2); this module returns G_r itself.
 The limits are those of ``data/clearance_deep_groove.csv``, copied from NSK's reproduction of
 the ISO 5753-1 table for deep groove ball bearings [1]_ and confirmed cell by cell for 6-140 mm
 by [2]_. Bore ranges are "over / incl": a bore of exactly 30 mm belongs to the 24-30 row.
+
+The limits of cylindrical roller bearings with a cylindrical bore (``kind="roller"``) are those
+of ``data/clearance_cylindrical_roller.csv``, copied from the ISO 5753-1 table reproduced by [4]_
+(C2, Normal, C3, C4, C5) and confirmed for C2-C4 cell by cell to 250 mm by [5]_. The number of
+the table inside ISO 5753-1 was not read.
 
 GOST 24810-81 numbers the same clearance groups of single-row radial ball bearings with a
 cylindrical bore 6, normal, 7, 8, 9 (= C2, CN, C3, C4, C5) [3]_. The GOST micrometre limits
@@ -19,6 +25,10 @@ References
 .. [2] PTI, "Bearing inserts internal clearance", pti.eu technical information (same values).
 .. [3] aprom.by, "Зазоры в подшипниках качения" (GOST 24810 groups and their ISO
    equivalents), text copy in the BearingsInfo collection, section 1.3.
+.. [4] original-bearing.com, "Radial internal clearance of cylindrical roller bearings with a
+   cylindrical bore", https://original-bearing.com/article/s103/ (micrometres).
+.. [5] AHR International, "Bearing clearance", http://ahrinternational.com/bearing_clearance.htm
+   (C2, CN, C3, C4 of cylindrical roller bearings, micrometres).
 
 >>> clearance_range(30, "C3")
 (0.013, 0.028)
@@ -26,6 +36,8 @@ References
 0.0125
 >>> parse_class("7")
 'C3'
+>>> clearance_range(30, "CN", kind="roller")
+(0.02, 0.045)
 """
 
 from __future__ import annotations
@@ -76,21 +88,36 @@ class ClearanceRow:
     source: str
 
 
-@functools.lru_cache(maxsize=1)
-def table() -> tuple[ClearanceRow, ...]:
-    """The clearance table of deep groove ball bearings, rows in increasing bore.
+#: Bearing kind -> (file of its clearance table, what the table covers).
+TABLES: dict[str, tuple[str, str]] = {
+    "ball": ("clearance_deep_groove.csv", "deep groove ball bearings"),
+    "roller": (
+        "clearance_cylindrical_roller.csv",
+        "cylindrical roller bearings (cylindrical bore)",
+    ),
+}
+
+
+@functools.lru_cache(maxsize=2)
+def table(kind: str = "ball") -> tuple[ClearanceRow, ...]:
+    """The clearance table of one bearing kind, rows in increasing bore.
+
+    Parameters
+    ----------
+    kind : {"ball", "roller"}
+        Deep groove ball bearings, or cylindrical roller bearings with a cylindrical bore.
 
     Returns
     -------
     tuple of ClearanceRow
         Limits converted from the file's micrometres to [mm].
     """
-    import csv  # the table is read on first use only
-    from importlib import resources
+    from bearingload.bearings._data import read_rows  # the table is read on first use only
 
-    path = resources.files("bearingload.bearings").joinpath("data/clearance_deep_groove.csv")
+    if kind not in TABLES:
+        raise InputError("kind", f"unknown bearing kind {kind!r}; allowed: {', '.join(TABLES)}")
     rows = []
-    for rec in csv.DictReader(path.read_text(encoding="utf-8").splitlines()):
+    for rec in read_rows(TABLES[kind][0]):
         limits = {
             cls: (float(rec[f"{cls}_min"]) / 1000.0, float(rec[f"{cls}_max"]) / 1000.0)
             for cls in CLASSES
@@ -173,8 +200,8 @@ def looks_like_class(text: str) -> bool:
     return key in CLASSES or (key in _NORMAL and not key[0].isdigit()) or key == "C1"
 
 
-def _row(bore: float) -> ClearanceRow:
-    rows = table()
+def _row(bore: float, kind: str = "ball") -> ClearanceRow:
+    rows = table(kind)
     try:
         d = float(bore)
     except (TypeError, ValueError):
@@ -184,13 +211,13 @@ def _row(bore: float) -> ClearanceRow:
             return row
     raise InputError(
         "bore",
-        f"{d:g} mm is outside the clearance table of deep groove ball bearings "
+        f"{d:g} mm is outside the clearance table of {TABLES[kind][1]} "
         f"(over {rows[0].bore_over:g} up to {rows[-1].bore_incl:g} mm); "
         "give the clearance as a length instead, e.g. --clearance 20um",
     )
 
 
-def clearance_range(bore: float, cls: str) -> tuple[float, float]:
+def clearance_range(bore: float, cls: str, kind: str = "ball") -> tuple[float, float]:
     """Smallest and largest radial internal clearance G_r of a class.
 
     Parameters
@@ -199,6 +226,8 @@ def clearance_range(bore: float, cls: str) -> tuple[float, float]:
         Nominal bore diameter d. [mm]
     cls : str
         Clearance class or GOST group, as accepted by :func:`parse_class`.
+    kind : {"ball", "roller"}, default "ball"
+        Deep groove ball bearing, or cylindrical roller bearing with a cylindrical bore.
 
     Returns
     -------
@@ -210,10 +239,10 @@ def clearance_range(bore: float, cls: str) -> tuple[float, float]:
     InputError
         Bore outside the table, or unknown class.
     """
-    return _row(bore).limits[parse_class(cls)]
+    return _row(bore, kind).limits[parse_class(cls)]
 
 
-def radial_clearance(bore: float, cls: str, pick: str = "mean") -> float:
+def radial_clearance(bore: float, cls: str, pick: str = "mean", kind: str = "ball") -> float:
     """Radial internal clearance G_r of a class, at its lower limit, middle or upper limit.
 
     Parameters
@@ -224,6 +253,8 @@ def radial_clearance(bore: float, cls: str, pick: str = "mean") -> float:
         Clearance class or GOST group, as accepted by :func:`parse_class`.
     pick : str, default "mean"
         ``min``, ``mean`` (middle of the range) or ``max``.
+    kind : {"ball", "roller"}, default "ball"
+        Deep groove ball bearing, or cylindrical roller bearing with a cylindrical bore.
 
     Returns
     -------
@@ -242,7 +273,7 @@ def radial_clearance(bore: float, cls: str, pick: str = "mean") -> float:
     """
     if pick not in PICKS:
         raise InputError("pick", f"unknown pick {pick!r}; allowed: {', '.join(PICKS)}")
-    low, high = clearance_range(bore, cls)
+    low, high = clearance_range(bore, cls, kind)
     if pick == "min":
         return low
     if pick == "max":

@@ -12,8 +12,8 @@ Rules
   ``maker`` picks another maker's ball set (default NSK, see :mod:`bearingload.bearings.catalog`).
   A cylindrical roller designation (``NU206``) resolves through
   :mod:`bearingload.bearings.rollers`: Palmgren line-contact stiffness [N/mm^(10/9)], exponent
-  10/9, and a clearance given as a length (zero by default; the roller clearance classes are not
-  in the catalogue).
+  10/9, and a clearance given as a length or an ISO 5753-1 class of cylindrical roller bearings
+  (default: the class the designation marks, else CN, as for ball bearings).
   Without a designation, ``balls`` is needed and either ``stiffness`` or the ball geometry
   (``ball_diameter`` and ``pitch_diameter``; conformities default to 0.52 / 0.53).
 * Stiffness: exact Hertz (:func:`bearingload.contact.hertz.ball_stiffness`) from the geometry, E and nu
@@ -232,7 +232,7 @@ def resolve_bearing(
     spec = clearance if isinstance(clearance, ClearanceSpec) else parse_clearance(clearance)
     if designation is not None and _is_roller(designation):
         return _roller(designation, maker, balls, ball_diameter, pitch_diameter, modulus,
-                       poisson, stiffness, spec)  # fmt: skip
+                       poisson, stiffness, spec, clearance_pick)  # fmt: skip
     given = {"balls": balls, "ball_diameter": ball_diameter, "pitch_diameter": pitch_diameter,
              "f_i": f_i, "f_o": f_o}  # fmt: skip
     g = _ball_set(designation, maker, given, stiffness)
@@ -420,11 +420,13 @@ def _f_source(geom: BearingGeometry | None, field: str) -> str:
 
 def _resolve_clearance(
     spec: ClearanceSpec | None,
-    geom: BearingGeometry | None,
+    geom: Any,
     bore: float | None,
     pick: str,
+    kind: str = "ball",
 ) -> tuple[float, str | None, tuple[float, float] | None, str | None, str]:
-    """G_r [mm], class, class range [mm], pick and a source text."""
+    """G_r [mm], class, class range [mm], pick and a source text; ``geom``: a catalogue row
+    with its ``parsed`` designation (ball or roller), or None; ``kind``: whose table."""
     if spec is not None and spec.length is not None:
         return spec.length, None, None, None, "given"
     if spec is None:
@@ -441,19 +443,20 @@ def _resolve_clearance(
         how = f"class {cls}"
     if bore is None:
         raise InputError("clearance", _NEEDS_BORE.format(spec.text if spec else cls))
-    low, high = clearance_range(bore, cls)
+    low, high = clearance_range(bore, cls, kind)
     value = {"min": low, "mean": 0.5 * (low + high), "max": high}[pick]
     source = (
-        f"{how}; ISO 5753-1 {cls} {low * 1e3:g}-{high * 1e3:g} µm at d = {bore:g} mm, {pick} "
+        f"{how}; ISO 5753-1{'' if kind == 'ball' else ' (cylindrical roller bearings)'} {cls} "
+        f"{low * 1e3:g}-{high * 1e3:g} µm at d = {bore:g} mm, {pick} "
         "(clearance table)"
     )
     return value, cls, (low, high), pick, source
 
 
-def _clearance_row_source(bore: float | None) -> str:
+def _clearance_row_source(bore: float | None, kind: str = "ball") -> str:
     from bearingload.bearings.clearance import table
 
-    for row in table():
+    for row in table(kind):
         if bore is not None and row.bore_over < bore <= row.bore_incl:
             return f"clearance table (bore over {row.bore_over:g} incl {row.bore_incl:g} mm): {row.source}"
     return "clearance table"  # pragma: no cover - clearance_range raised before
@@ -469,6 +472,7 @@ def _roller(
     poisson: float | None,
     stiffness: float | None,
     spec: ClearanceSpec | None,
+    clearance_pick: str = "mean",
 ) -> ResolvedBearing:
     """A cylindrical roller bearing, see :func:`bearingload.bearings.resolve_roller.resolve_roller`."""
     from bearingload.bearings.resolve_roller import resolve_roller
@@ -484,6 +488,7 @@ def _roller(
         poisson=poisson,
         stiffness=stiffness,
         clearance=spec,
+        clearance_pick=clearance_pick,
     )
 
 

@@ -3,12 +3,15 @@
 Geometry from :mod:`bearingload.bearings.rollers` (each value replaceable), the roller
 stiffness of Palmgren's line contact (:func:`bearingload.contact.hertz.roller_stiffness`,
 Q = K delta^(10/9), both contacts of the effective length L_we in series), exponent 10/9, and the
-radial clearance G_r given as a length (zero by default: the ISO 5753-1 classes of cylindrical
-roller bearings are not in the catalogue).
+radial clearance G_r given as a length or an ISO 5753-1 class of cylindrical roller bearings with
+a cylindrical bore (:func:`bearingload.bearings.clearance.clearance_range`, ``kind="roller"``);
+by default the class the designation marks, else CN.
 
 >>> b = resolve_roller("NU206")
 >>> b.balls, b.exponent == 10 / 9, round(b.stiffness, -2)
 (13, True, 257600.0)
+>>> b.clearance_class, round(b.clearance * 1e3, 3)  # CN 20-45 µm at d = 30 mm, mean [µm]
+('CN', 32.5)
 """
 
 from __future__ import annotations
@@ -19,6 +22,8 @@ from bearingload.bearings.resolve import (
     DEFAULT_POISSON,
     Provenance,
     ResolvedBearing,
+    _clearance_row_source,
+    _resolve_clearance,
 )
 from bearingload.bearings.rollers import RollerGeometry
 from bearingload.errors import InputError
@@ -36,6 +41,7 @@ def resolve_roller(
     poisson: float | None = None,
     stiffness: float | None = None,
     clearance: str | float | ClearanceSpec | None = None,
+    clearance_pick: str = "mean",
 ) -> ResolvedBearing:
     """Resolve a cylindrical roller bearing: rollers, K [N/mm^(10/9)], G_r and their sources.
 
@@ -55,7 +61,10 @@ def resolve_roller(
     stiffness : float, optional
         Roller stiffness K replacing Palmgren's. [N/mm^(10/9)]
     clearance : str, float or ClearanceSpec, optional
-        G_r as a length (float [mm] or text with a unit); a class is refused.
+        G_r as a length (float [mm] or text with a unit) or a class ``C2 CN C3 C4 C5``; default
+        the class the designation marks, else CN (ISO 5753-1, cylindrical roller bearings).
+    clearance_pick : {"mean", "min", "max"}
+        Where in a class's range G_r is taken. [-]
 
     Returns
     -------
@@ -66,7 +75,8 @@ def resolve_roller(
     Raises
     ------
     InputError
-        Unknown designation, impossible overrides, a clearance class (``clearance``).
+        Unknown designation, impossible overrides, a bore outside the clearance table
+        (``bore``), a clearance of half the roller diameter or more (``clearance``).
     """
     from bearingload.bearings.rollers import lookup
     from bearingload.contact.hertz import LINE_EXPONENT, palmgren_line_stiffness, roller_stiffness
@@ -81,13 +91,7 @@ def resolve_roller(
         roller_length=roller_length,
     )
     spec = clearance if isinstance(clearance, ClearanceSpec) else parse_clearance(clearance)
-    if spec is not None and spec.length is None:
-        raise InputError(
-            "clearance",
-            f"the clearance classes of cylindrical roller bearings are not in the catalogue; "
-            f"give {row.designation}'s clearance as a length, e.g. 20um",
-        )
-    g_r = 0.0 if spec is None else float(spec.length or 0.0)
+    g_r, cls, rng, pick, g_src = _resolve_clearance(spec, row, row.d, clearance_pick, "roller")
     if abs(g_r) >= row.roller_diameter / 2:
         raise InputError(
             "clearance",
@@ -95,7 +99,10 @@ def resolve_roller(
         )
     k_contact = float(palmgren_line_stiffness(row.roller_length))
     k = float(stiffness) if stiffness is not None else float(roller_stiffness(row.roller_length))
-    prov = _provenance(row, k_contact, k, stiffness is not None, spec is not None, g_r)
+    prov = _provenance(row, k_contact, k, stiffness is not None, g_src, g_r)
+    sources = [f"catalogue row {row.designation}: {row.source}", f"catalogue notes: {row.notes}"]
+    if rng is not None:
+        sources.append(_clearance_row_source(row.d, "roller"))
     return ResolvedBearing(
         designation=designation,
         geometry=None,
@@ -111,13 +118,13 @@ def resolve_roller(
         stiffness_outer=k_contact,
         stiffness_given=stiffness is not None,
         clearance=g_r,
-        clearance_class=None,
-        clearance_range=None,
-        clearance_pick=None,
+        clearance_class=cls,
+        clearance_range=rng,
+        clearance_pick=pick,
         C=row.C,
         C0=row.C0,
         provenance=prov,
-        sources=(f"catalogue row {row.designation}: {row.source}", f"catalogue notes: {row.notes}"),
+        sources=tuple(sources),
         kind="roller",
         exponent=LINE_EXPONENT,
         roller_length=row.roller_length,
@@ -125,7 +132,7 @@ def resolve_roller(
 
 
 def _provenance(
-    row: RollerGeometry, k_contact: float, k: float, k_given: bool, g_given: bool, g_r: float
+    row: RollerGeometry, k_contact: float, k: float, k_given: bool, g_src: str, g_r: float
 ) -> tuple[Provenance, ...]:
     """Every value of a resolved roller bearing with its unit and source."""
     over = set(row.overrides)
@@ -158,7 +165,7 @@ def _provenance(
         ),
         Provenance(
             "clearance", "radial clearance G_r (total)", g_r * 1e3, "µm",
-            "given" if g_given else "default: zero (no roller clearance table)",
+            g_src,
         ),
         Provenance("C", "dynamic load rating C", row.C, "N", "catalogue: SKF"),
         Provenance("C0", "static load rating C0", row.C0, "N", "catalogue: SKF"),

@@ -31,17 +31,16 @@ References
 
 from __future__ import annotations
 
-import csv
 import dataclasses
 import functools
 import math
 from dataclasses import dataclass
-from importlib import resources
 from typing import Any
 
 import numpy as np
 from numpy.typing import ArrayLike
 
+from bearingload.bearings._data import read_rows
 from bearingload.bearings.designation import Designation, parse
 from bearingload.constants import STEEL_MODULUS
 from bearingload.errors import InputError
@@ -106,9 +105,8 @@ class RollerGeometry:
 @functools.lru_cache(maxsize=1)
 def entries() -> tuple[RollerGeometry, ...]:
     """Every row of ``data/rollers.csv`` (NU203-NU220, NU303-NU320), in file order."""
-    path = resources.files("bearingload.bearings").joinpath("data/rollers.csv")
     rows = []
-    for rec in csv.DictReader(path.read_text(encoding="utf-8").splitlines()):
+    for rec in read_rows("rollers.csv"):
         rows.append(
             RollerGeometry(
                 designation=rec["designation"],

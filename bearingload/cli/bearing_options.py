@@ -13,7 +13,7 @@ from bearingload.errors import InputError
 CLEARANCE_HELP = (
     "Radial internal clearance G_r, total play (gap per side G_r/2; negative = preload): a length "
     "(bare number: mm; units um, mm, in) or an ISO 5753-1 class C2, CN, C3, C4, C5, resolved by the "
-    "bearing's bore. GOST 24810 groups are written G6, G7, G8, G9. A bare number of 1 mm or more "
+    "bearing's bore (deep groove ball or cylindrical roller bearing table). GOST 24810 groups are written G6, G7, G8, G9. A bare number of 1 mm or more "
     "is refused as implausible (20 -> did you mean 20um?); write 1.5mm to mean it."
 )
 

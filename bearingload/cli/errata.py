@@ -14,7 +14,10 @@ from bearingload.cli.options import CONTEXT, emit, library_errors, output_option
 )
 @click.option("--only-differing", is_flag=True, help="Only the printed numbers that differ.")
 @click.option(
-    "--summary", is_flag=True, help="Per paper and table: how many are checked, how many differ."
+    "--summary",
+    is_flag=True,
+    help="Per paper and table: how many are checked, how many differ (with --only-differing: "
+    "only the tables where some differ).",
 )
 @output_options
 @library_errors
@@ -32,6 +35,7 @@ def errata(
       bearingload errata
       bearingload errata --only-differing
       bearingload errata --summary
+      bearingload errata --summary --only-differing
       bearingload errata --paper sabadash --format csv -o errata.csv
     """
     from bearingload.reports.errata import errata_report

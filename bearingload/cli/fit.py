@@ -100,9 +100,10 @@ def fit(
       # bearing 208, Table 2.1 of Kuzmenko & Sabadash (2014), the paper's base points
       bearingload fit examples/bearing208_kuzmenko2014.csv --load-unit kgf \\
           --base 200kgf:0.8mm --base 1000kgf:1.67mm --balls 9
-      bearingload fit data.csv --displacement-unit um --format json
+      # as json (a file of displacements in micrometres takes --displacement-unit um)
+      bearingload fit examples/bearing208_kuzmenko2014.csv --load-unit kgf --format json
       # the measured points with the fitted values, as csv
-      bearingload fit data.csv --format csv --points
+      bearingload fit examples/bearing208_kuzmenko2014.csv --load-unit kgf --format csv --points
     """
     from bearingload.reports.fit import fit_report
     from bearingload.studies.fit_comparison import parse_base_point

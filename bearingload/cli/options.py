@@ -9,7 +9,7 @@ from typing import Any
 import click
 
 from bearingload.errors import BearingloadError, InputError
-from bearingload.units import BASE_UNIT, UNITS, parse_quantity
+from bearingload.units import BASE_UNIT, UNITS, parse_cage_angle, parse_quantity
 
 CONTEXT = {"help_option_names": ["-h", "--help"], "max_content_width": 100}
 
@@ -42,23 +42,19 @@ class Quantity(click.ParamType):
 
 
 class CageAngle(click.ParamType):
-    """Cage angle in degrees, or ``half`` for half a pitch (the load between two balls)."""
+    """Cage angle: degrees by default, ``deg``, ``rad``, ``mrad``, or ``half`` for half a pitch
+    (the load between two balls); read by :func:`bearingload.units.parse_cage_angle`, as
+    ``batch`` reads its ``cage_angle`` column."""
 
     name = "DEG|half"
 
     def convert(self, value: Any, param: click.Parameter | None, ctx: click.Context | None) -> Any:
         if value == "half" or isinstance(value, float):
             return value
-        text = str(value).strip().lower().removesuffix("deg").removesuffix("°").strip()
-        if text == "half":
-            return "half"
         try:
-            angle = float(text)
-        except ValueError:
-            self.fail(f"{value!r} is neither an angle in degrees nor 'half'", param, ctx)
-        if angle != angle or angle in (float("inf"), float("-inf")):
-            self.fail(f"{value!r} is not a finite angle", param, ctx)
-        return angle
+            return parse_cage_angle(value)
+        except InputError as exc:
+            self.fail(str(exc).split(": ", 1)[-1], param, ctx)
 
 
 def stiffness_value(text: str | None, exponent: float) -> float | None:
@@ -243,8 +239,8 @@ def cage_angle_option(func: Callable[..., Any]) -> Callable[..., Any]:
         type=CageAngle(),
         default="0",
         show_default=True,
-        help="Angle of ball 1 from the load line in degrees; 0 = a ball under the load, "
-        "'half' = the load between two balls.",
+        help="Angle of ball 1 from the load line, degrees unless a unit follows (12, 12deg, "
+        "0.2rad, 3mrad); 0 = a ball under the load, 'half' = the load between two balls.",
     )(func)
 
 

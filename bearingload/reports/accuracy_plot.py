@@ -50,12 +50,12 @@ def plot_work_precision(rows: list[dict[str, Any]], path: str) -> None:
                 ("error_max", "-o", f"{name} (largest)"),
                 ("error_median", ":s", f"{name} (median)"),
             ):
-                err = [max(r[key], ERROR_FLOOR) for r in mine]
+                err = [100.0 * max(r[key], ERROR_FLOOR) for r in mine]  # in %
                 ax.loglog(t, err, style, color=color, label=label, markersize=4)
         ax.set_xlabel("time per case [s]")
         ax.set_title(title)
         ax.grid(True, which="major", alpha=0.3)
-    axes[0].set_ylabel("relative error of Q_max [-]")
+    axes[0].set_ylabel("relative error of Q_max [%]")
     handles, labels = axes[0].get_legend_handles_labels()
     fig.legend(handles, labels, fontsize=7, loc="lower center", ncol=6)
     fig.suptitle("bearingload accuracy: error against run time (50 cases, bearing 306 family)")

@@ -19,7 +19,8 @@ README_END = "<!-- errata:end -->"
 
 NOTES = (
     "printed: as printed (decimal comma made a point); computed: the package's value of the same "
-    "quantity in the same unit; relative difference = (printed - computed)/computed.",
+    "quantity in the same unit; relative difference = (printed - computed)/computed (in % here; "
+    "a fraction in csv and json).",
     "verdict 'agrees': |difference| is within half a unit of the last printed digit (a printed "
     "integer that states an exact value, such as k = 1, is held to 1e-9).",
 )
@@ -48,7 +49,12 @@ def _column(key: str) -> Column:
     q = QUANTITIES[key]
     right = key in _RIGHT or q.digits is not None
     return Column(
-        key, q.label, "" if q.unit == "" else q.unit, q.digits, "right" if right else "left"
+        key,
+        q.label,
+        "" if q.unit == "" else q.unit,
+        q.digits,
+        "right" if right else "left",
+        q.display,
     )
 
 
@@ -72,15 +78,20 @@ def errata_table(rows: list[dict[str, Any]], title: str | None = None) -> Table:
     )
 
 
-def summary_table(rows: list[dict[str, Any]]) -> Table:
-    """Per paper and table: printed numbers checked, how many agree and how many differ."""
+def summary_table(rows: list[dict[str, Any]], only_differing: bool = False) -> Table:
+    """Per paper and table: printed numbers checked, how many agree and how many differ.
+
+    With ``only_differing``, only the papers' tables where at least one printed number differs
+    (their counts still cover every number checked in them).
+    """
     from bearingload.studies.errata import summary
 
-    return Table(
-        title="Printed numbers checked, per paper and table",
-        columns=[_column(k) for k in SUMMARY_KEYS],
-        rows=summary(rows),
-    )
+    counts = summary(rows)
+    title = "Printed numbers checked, per paper and table"
+    if only_differing:
+        counts = [c for c in counts if c["differ"] > 0]
+        title += " (only those where a printed number differs)"
+    return Table(title=title, columns=[_column(k) for k in SUMMARY_KEYS], rows=counts)
 
 
 def errata_report(
@@ -98,7 +109,7 @@ def errata_report(
             raise InputError("paper", f"no paper matches {paper!r}; papers: {', '.join(papers)}")
         rows = [r for r in rows if r["source"] in chosen]
     if summary:
-        return render([summary_table(rows)], fmt)
+        return render([summary_table(rows, only_differing)], fmt)
     if only_differing:
         rows = [r for r in rows if r["verdict"] == DIFFERS]
     return render([errata_table(rows)], fmt)

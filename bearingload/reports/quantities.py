@@ -13,8 +13,9 @@ from __future__ import annotations
 
 from collections.abc import Iterable
 from dataclasses import dataclass
+from typing import Any
 
-from bearingload.constants import KGF
+from bearingload.constants import KGF, ROLLER_EXPONENT
 
 
 @dataclass(frozen=True)
@@ -55,6 +56,8 @@ class Quantity:
 
 
 _UM = ("µm", 1e3)
+#: Relative errors and differences: a fraction [-] in csv and json, % in the human formats.
+_PERCENT = ("%", 100.0)
 _MRAD = ("mrad", 1000.0 * 3.141592653589793 / 180.0)
 
 #: Every quantity a report prints, in the order columns appear.
@@ -88,7 +91,7 @@ QUANTITIES: dict[str, Quantity] = {
         Quantity("q_max_ball", "ball carrying Q_max", "", None),
         Quantity("epsilon", "load-zone parameter epsilon", "-"),
         Quantity("iterations", "solver iterations", "", None),
-        Quantity("relative_error", "Q_max/Q_max,exact - 1", "-", 3, display=("%", 100.0)),
+        Quantity("relative_error", "Q_max/Q_max,exact - 1", "-", 3, display=_PERCENT),
         Quantity("valid", "inside the model's range", "", None),
         Quantity("warnings", "warnings (bearingload.bearings.checks)", "", None),
         # a cage sweep (bearingload sweep)
@@ -117,7 +120,7 @@ QUANTITIES: dict[str, Quantity] = {
         Quantity("printed", "printed", "", None),
         Quantity("computed", "computed", "", 6),
         Quantity("difference", "difference (printed - computed)", "", 3),
-        Quantity("relative_difference", "relative difference", "-", 2),
+        Quantity("relative_difference", "relative difference", "-", 3, display=_PERCENT),
         Quantity("verdict", "verdict", "", None),
         Quantity("cause", "cause", "", None),
         Quantity("checked", "printed numbers checked", "", None),
@@ -148,8 +151,8 @@ QUANTITIES: dict[str, Quantity] = {
         # studies: work-precision (bearingload accuracy) and stability (bearingload stability)
         Quantity("setting", "setting", "", None),
         Quantity("cases", "cases", "", None),
-        Quantity("error_median", "median error", "-", 2),
-        Quantity("error_max", "largest error", "-", 2),
+        Quantity("error_median", "median error", "-", 2, display=_PERCENT),
+        Quantity("error_max", "largest error", "-", 2, display=_PERCENT),
         Quantity("seconds_per_case", "time per case, one per call", "s", 3),
         Quantity("seconds_per_case_vectorised", "time per case, vectorised", "s", 3),
         Quantity("family", "family", "", None),
@@ -190,3 +193,57 @@ def units(keys: Iterable[str], exponent: float | None = None) -> dict[str, str]:
             unit = f"N/mm^{exponent:g}"
         out[key] = unit
     return out
+
+
+def element_words(text: str, exponent: float) -> str:
+    """A human label written for the rolling elements of the exponent: under line contact
+    (m = 10/9, cylindrical rollers) 'ball(s)' reads 'roller(s)'; otherwise ``text`` as it is.
+
+    Labels only: csv columns and JSON keys (``q_max_ball``, ``loaded_balls``) stay the same for
+    every bearing.
+
+    Parameters
+    ----------
+    text : str
+        A label, title or header.
+    exponent : float
+        Load-deflection exponent m of the case. [-]
+
+    Examples
+    --------
+    >>> element_words("Ball loads (ball 1 at the cage angle)", 10 / 9)
+    'Roller loads (roller 1 at the cage angle)'
+    >>> element_words("balls carrying load", 1.5)
+    'balls carrying load'
+    """
+    if abs(float(exponent) - ROLLER_EXPONENT) > 1e-12:
+        return text
+    import re
+
+    return re.sub(
+        r"\b([Bb])all(s?)\b", lambda m: f"{'Rr'[m.group(1) == 'b']}oller{m.group(2)}", text
+    )
+
+
+def for_elements(table: Any, exponent: float, notes: bool = False) -> Any:
+    """A :class:`bearingload.reports.render.Table` with its title, column headers and
+    ``quantity`` cells (and, with ``notes``, its notes) written by :func:`element_words`."""
+    import dataclasses
+
+    if abs(float(exponent) - ROLLER_EXPONENT) > 1e-12:
+        return table
+
+    def words(text: str) -> str:
+        return element_words(text, exponent)
+
+    rows = [
+        r | {"quantity": words(r["quantity"])} if isinstance(r.get("quantity"), str) else r
+        for r in table.rows
+    ]
+    return dataclasses.replace(
+        table,
+        title=words(table.title),
+        columns=[dataclasses.replace(c, header=words(c.header)) for c in table.columns],
+        rows=rows,
+        notes=[words(n) for n in table.notes] if notes else table.notes,
+    )

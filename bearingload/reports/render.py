@@ -24,6 +24,8 @@ class Column:
     """One column: ``key`` in the row dicts, ``header`` shown to people, ``unit``, display ``digits``.
 
     ``digits`` is the number of significant digits in the human formats (``None``: integers and text).
+    ``display`` (unit, factor): the human formats show a number times ``factor`` in that unit (a
+    relative error as ``%``); csv and json keep the number and ``unit`` as they are.
     """
 
     key: str
@@ -31,9 +33,17 @@ class Column:
     unit: str = ""
     digits: int | None = None
     align: str = "right"
+    display: tuple[str, float] | None = None
 
     def label(self) -> str:
-        return f"{self.header} [{self.unit}]" if self.unit else self.header
+        unit = self.display[0] if self.display else self.unit
+        return f"{self.header} [{unit}]" if unit else self.header
+
+    def shown(self, value: Any) -> Any:
+        """A cell as the human formats show it: a number in the display unit."""
+        if self.display is None or isinstance(value, (str, bool)) or value is None:
+            return value
+        return value * self.display[1]
 
 
 @dataclass(frozen=True)
@@ -104,7 +114,7 @@ def render(tables: Sequence[Table], fmt: str, *, document: dict[str, Any] | None
         if fmt == "csv":
             blocks.append(_csv(t))
             continue
-        cells = [[_human(r[c.key], c.digits) for c in t.columns] for r in t.rows]
+        cells = [[_human(c.shown(r[c.key]), c.digits) for c in t.columns] for r in t.rows]
         headers = [c.label() for c in t.columns]
         align = [c.align for c in t.columns]
         if fmt == "markdown":

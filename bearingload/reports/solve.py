@@ -19,7 +19,7 @@ from __future__ import annotations
 from collections.abc import Sequence
 from typing import Any
 
-from bearingload.reports.quantities import QUANTITIES, units
+from bearingload.reports.quantities import QUANTITIES, element_words, for_elements, units
 from bearingload.reports.render import Column, Table, render
 from bearingload.studies.loaded_bearing import (
     LoadedCase,
@@ -87,7 +87,7 @@ def solve_report(
     tables.append(_summary(cases, records))
     if per_ball or any(c.result.method == "exact" for c in cases):
         tables.append(_balls_human(cases, records))
-    return render(tables, fmt)
+    return render([for_elements(t, exponent) for t in tables], fmt)  # rollers: 'roller loads'
 
 
 def _present(records: Sequence[dict[str, Any]], keys: Sequence[str]) -> list[str]:
@@ -216,7 +216,12 @@ def _notes(cases: Sequence[LoadedCase], records: Sequence[dict[str, Any]]) -> li
                 f"({METHODS[r['method']].validity})."
             )
     if "relative_error" in records[0]:
-        notes.append("Q_max/Q_max,exact - 1: the heaviest ball load against the exact model.")
+        notes.append(
+            element_words(
+                "Q_max/Q_max,exact - 1: the heaviest ball load against the exact model.",
+                records[0]["exponent"],
+            )
+        )
     b = cases[0].bearing
     if b is not None and b.kind == "roller":
         notes.append(

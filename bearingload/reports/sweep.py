@@ -9,7 +9,7 @@ from __future__ import annotations
 
 from typing import Any
 
-from bearingload.reports.quantities import QUANTITIES, units
+from bearingload.reports.quantities import QUANTITIES, for_elements, units
 from bearingload.reports.render import Column, Table, render
 from bearingload.studies.sweep import CageSweep
 from bearingload.units import KGF
@@ -38,7 +38,8 @@ def sweep_report(s: CageSweep, fmt: str, context: str = "") -> str:
         return render([], "json", document=sweep_json(s))
     if fmt == "csv":
         return render([_csv_table(s)], "csv")
-    return render([_spread_table(s, context), _figures_table(s), _rows_table(s)], fmt)
+    tables = [_spread_table(s, context), _figures_table(s), _rows_table(s)]
+    return render([for_elements(t, s.exponent, notes=True) for t in tables], fmt)
 
 
 def inputs_text(s: CageSweep) -> str:

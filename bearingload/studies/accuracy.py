@@ -219,7 +219,7 @@ def _column(key: str, header: str | None = None) -> Column:
 
     q = QUANTITIES[key]
     text = q.unit == "" and q.digits is None and key not in _COUNTS
-    return Column(key, header or q.label, q.unit, q.digits, "left" if text else "right")
+    return Column(key, header or q.label, q.unit, q.digits, "left" if text else "right", q.display)
 
 
 _COUNTS = ("cases", "iterations")
@@ -234,7 +234,7 @@ COLUMNS = (
 TIME_COLUMNS = (_column("seconds_per_case"), _column("seconds_per_case_vectorised"))
 NOTES = (
     "Error: |Q_max/Q_max,ref - 1| against the exact ring equilibrium at 50 digits (mpmath, "
-    "benchmarks/make_reference.py).",
+    "benchmarks/make_reference.py), in % (a fraction in csv and json).",
     "Cases: bearing 306 (Kuzmenko 2010: 300 kgf, K = 4700 kgf/mm^1.5), z = 6, 8, 12, 20, 40, "
     "G_r = -20, 0, 20, 100, 400 um, cage angle 0 and 180/z: 50 cases (trial: the 30 with clearance).",
     "Iterations: Newton steps (exact, continuum), evaluations of the resolving equation (trial), "

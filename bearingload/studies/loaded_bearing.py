@@ -9,7 +9,7 @@ from __future__ import annotations
 
 from collections.abc import Sequence
 from dataclasses import dataclass
-from typing import Any
+from typing import TYPE_CHECKING, Any
 
 import numpy as np
 
@@ -19,9 +19,11 @@ from bearingload.bearings.life import (
     allowable_load,
     rating_life,
 )
-from bearingload.bearings.resolve import ResolvedBearing
 from bearingload.models.case import Case, Result, scalar
 from bearingload.models.registry import get_method
+
+if TYPE_CHECKING:  # the catalogue is imported only where a bearing is resolved
+    from bearingload.bearings.resolve import ResolvedBearing
 
 #: Life for the allowable load when none is given: Kuzmenko (2010) §3.2, 36e6 revolutions. [rev]
 DEFAULT_REVOLUTIONS = 36e6
