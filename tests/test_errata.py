@@ -166,7 +166,9 @@ def test_relative_errors_are_percent_in_human_formats_and_fractions_in_machine_o
     from bearingload.reports.render import render
     from bearingload.studies.accuracy import accuracy_table
 
-    relative = [q for q in QUANTITIES.values() if "error" in q.key or "relative" in q.key]
+    relative = [  # errors and differences, not ratios such as relative_life (L10r / L10r at 0)
+        q for q in QUANTITIES.values() if "error" in q.key or q.key == "relative_difference"
+    ]
     assert {q.key for q in relative} >= {"relative_error", "relative_difference", "error_max"}
     assert all(q.shown() == ("%", 100.0) and q.unit == "-" for q in relative)
     human = invoke("errata", "--paper", "sabadash", "--only-differing").output

@@ -359,8 +359,10 @@ class CellParser:
             return _number(name, text, self.unit, whole=kind == "count")
         if kind == "exponent":
             return _exponent(text)
-        if kind == "cage_angle" and text.lower() == "half":
-            return "half"
+        if kind == "cage_angle":  # the one reading of solve, sweep and table
+            plain = _plain(name, text)
+            given = f"{plain!r}{self.unit}" if plain is not None and self.unit else text
+            return units.parse_cage_angle(given, parameter=name)
         if kind == "clearance" and re.fullmatch(r"(?i)c[2-5n]|g[6-9]|cn|normal", text):
             from bearingload.bearings.clearance import parse_clearance
 
