@@ -59,7 +59,10 @@ def test_integers_match_str():
 def test_join_rows_blanks_and_text():
     text = text_cells(["a", "é", ""])
     floats = ("f", (np.array([1.5, 0.0, 2.0]), np.array([False, True, False])))
-    assert join_rows([("t", text), floats, ("i", np.array([1, 2, 3]))]) == "a,1.5,1\né,,2\n,2.0,3\n"
+    assert (
+        join_rows([("t", text), floats, ("i", np.array([1, 2, 3]))])
+        == "a,1.5,1\né,,2\n,2.0,3\n".encode()
+    )
 
 
 def test_render_csv_is_csv_block():

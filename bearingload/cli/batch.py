@@ -186,9 +186,13 @@ class _Sink:
             self.fh = tempfile.TemporaryFile("w+", encoding="utf-8", newline="\n")
         return self
 
-    def write(self, text: str) -> None:
+    def write(self, text: str | bytes) -> None:
+        """Write text, or csv lines already encoded as UTF-8 (written as they are)."""
         if self.output is None and not self.spool:
             click.echo(text, nl=False)
+        elif isinstance(text, bytes):
+            self.fh.flush()
+            self.fh.buffer.write(text)
         else:
             self.fh.write(text)
 

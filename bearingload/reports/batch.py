@@ -14,7 +14,7 @@ from __future__ import annotations
 from collections.abc import Sequence
 from typing import Any
 
-from bearingload.reports.render import Column, Table, csv_block, csv_header, render
+from bearingload.reports.render import Column, Table, csv_bytes, csv_header, render
 from bearingload.reports.solve import ANSWER_KEYS, INPUT_KEYS, column
 from bearingload.studies.batch_input import Header
 
@@ -52,9 +52,9 @@ def csv_head(columns: Sequence[Column]) -> str:
     return csv_header(columns)
 
 
-def csv_rows(columns: Sequence[Column], rows: Sequence[int], values: dict[str, Any]) -> str:
-    """The csv lines of one solved chunk."""
-    return csv_block(columns, {"row": rows} | values)
+def csv_rows(columns: Sequence[Column], rows: Sequence[int], values: dict[str, Any]) -> bytes:
+    """The csv lines of one solved chunk (UTF-8)."""
+    return csv_bytes(columns, {"row": rows} | values)
 
 
 def held_report(

@@ -60,8 +60,9 @@ def float_cells(values: Any) -> np.ndarray:
     return out
 
 
-def write_floats(out: np.ndarray, v: np.ndarray) -> None:
-    """Write the cells of the floats ``v`` into ``out`` (n x :data:`FLOAT_WIDTH`)."""
+def write_floats(out: np.ndarray, v: np.ndarray) -> np.ndarray:
+    """Write the cells of the floats ``v`` into ``out`` (n x :data:`FLOAT_WIDTH`, all NUL);
+    return which slots some cell may use (the others are NUL in every row)."""
     if not np.all(np.isfinite(v)):
         raise ValueError("refusing to write a non-finite number")
     a = np.abs(v)
@@ -69,8 +70,10 @@ def write_floats(out: np.ndarray, v: np.ndarray) -> None:
         e = np.floor(np.log10(np.where(a > 0, a, 1.0))).astype(np.int64)
         m, e, fast = _ten_digits(a, e)
     fast &= a > 0
-    out[:, 0] = np.where(np.signbit(v), _MINUS, _NUL)
-    _slots(out, np.where(fast, m, 1e9).astype(np.int64), e, fast)
+    negative = np.signbit(v)
+    out[:, 0] = np.where(negative, _MINUS, _NUL)
+    used = _slots(out, np.where(fast, m, 1e9).astype(np.int64), e, fast)
+    used[0] = negative.any()
     zero = np.flatnonzero(a == 0)  # '0.0' in the slots of the first digit, its point, the next
     out[zero, 6] = _ZERO
     out[zero, 7] = _DOT
@@ -83,6 +86,8 @@ def write_floats(out: np.ndarray, v: np.ndarray) -> None:
             text = _machine_text(float(v[i])).encode("ascii")
             out[i, :] = 0
             out[i, : len(text)] = np.frombuffer(text, np.uint8)
+            used[: len(text)] = True
+    return used
 
 
 def _ten_digits(a: np.ndarray, e: np.ndarray) -> tuple[np.ndarray, np.ndarray, np.ndarray]:
@@ -107,9 +112,11 @@ def _ten_digits(a: np.ndarray, e: np.ndarray) -> tuple[np.ndarray, np.ndarray, n
 _COUNT = np.arange(10)
 
 
-def _slots(out: np.ndarray, m: np.ndarray, e: np.ndarray, fast: np.ndarray) -> None:
+def _slots(out: np.ndarray, m: np.ndarray, e: np.ndarray, fast: np.ndarray) -> np.ndarray:
     """Fill the slots of the text of ``m 10^(e-9)`` in the rows where ``fast`` (a notation no
-    row uses costs nothing)."""
+    row uses costs nothing); return the slots some row may use."""
+    used = np.zeros(FLOAT_WIDTH, bool)
+    used[6:26] = True  # the digits and their points
     d = _digits(m)
     nsig = 10 - np.argmax(d[:, ::-1] != _ZERO, axis=1)  # digits up to the last nonzero one
     fixed_int = fast & (e >= 0) & (e <= 15)  # 123.45, 1200.0, 1e15 -> 1000000000000000.0
@@ -120,23 +127,28 @@ def _slots(out: np.ndarray, m: np.ndarray, e: np.ndarray, fast: np.ndarray) -> N
         r = np.flatnonzero(fixed_int & (e <= 9))
         out[r, 7 + 2 * e[r]] = _DOT
         out[:, 33] = np.where(fixed_int & (nsig <= e + 1), _ZERO, _NUL)  # the 0 of '.0'
+        used[33] = True
         if np.any(fixed_int & (e >= 10)):  # whole numbers of 11 to 16 digits
             for j in range(6):
                 out[:, 26 + j] = np.where(fixed_int & (e >= 10 + j), _ZERO, _NUL)
             out[:, 32] = np.where(fixed_int & (e >= 10), _DOT, _NUL)
+            used[26:33] = True
     out[:, 6:26:2] = np.where(_COUNT < np.where(fast, shown, 0)[:, None], d, _NUL)
     if fixed_frac.any():  # '0.' and up to three zeros
+        used[1:6] = True
         out[:, 1] = np.where(fixed_frac, _ZERO, _NUL)
         out[:, 2] = np.where(fixed_frac, _DOT, _NUL)
         for j in range(3):
             out[:, 3 + j] = np.where(fixed_frac & (-e - 1 > j), _ZERO, _NUL)
     if sci.any():
+        used[34:38] = True
         out[:, 7] |= np.where(sci & (nsig > 1), _DOT, _NUL)
         ae = np.abs(e).astype(np.uint8)  # below 100 on this path (|e| <= 31)
         out[:, 34] = np.where(sci, _E, _NUL)
         out[:, 35] = np.where(sci, np.where(e < 0, _MINUS, _PLUS), _NUL)
         out[:, 36] = np.where(sci, ae // 10 + _ZERO, _NUL)
         out[:, 37] = np.where(sci, ae % 10 + _ZERO, _NUL)
+    return used
 
 
 def _digits(m: np.ndarray) -> np.ndarray:
@@ -151,28 +163,26 @@ def _digits(m: np.ndarray) -> np.ndarray:
 
 
 def int_cells(values: Any) -> np.ndarray:
-    """The decimal text of integers (|v| < 10^19) as a byte matrix of :data:`INT_WIDTH` slots."""
+    """The decimal text of integers (|v| < 10^19) as a byte matrix: a sign slot and as many
+    digit slots as the largest needs."""
     v = np.asarray(values, dtype=np.int64).ravel()
-    out = np.zeros((v.size, INT_WIDTH), np.uint8)
-    write_ints(out, v)
-    return out
-
-
-def write_ints(out: np.ndarray, v: np.ndarray) -> None:
-    """Write the cells of the integers ``v`` into ``out`` (n x :data:`INT_WIDTH`)."""
     a = np.abs(v).astype(np.uint64)
+    width = len(str(int(a.max()))) if v.size else 1
+    out = np.zeros((v.size, 1 + width), np.uint8)
     out[:, 0] = np.where(v < 0, _MINUS, _NUL)
-    if v.size and int(a.max()) < 10**10:  # ten digits without the leading zeros
-        d = _digits(a.astype(np.int64))
+    if width <= 10:  # ten digits at once, the leading zeros dropped
+        d = _digits(a.astype(np.int64))[:, 10 - width :]
         nonzero = d != _ZERO
-        first = np.where(nonzero.any(axis=1), np.argmax(nonzero, axis=1), 9)  # 0 is '0'
-        out[:, 1:11] = np.where(_COUNT >= first[:, None], d, _NUL)
-        return
+        first = np.where(nonzero.any(axis=1), np.argmax(nonzero, axis=1), width - 1)  # 0: '0'
+        out[:, 1:] = np.where(np.arange(width) >= first[:, None], d, _NUL)
+        return out
     started = np.zeros(v.size, bool)
-    for j in range(19):
-        digit = ((a // np.uint64(10 ** (18 - j))) % np.uint64(10)).astype(np.uint8)
-        started |= (digit != 0) | (j == 18)
+    for j in range(width):
+        power = np.uint64(10 ** (width - 1 - j))
+        digit = ((a // power) % np.uint64(10)).astype(np.uint8)
+        started |= (digit != 0) | (j == width - 1)
         out[:, 1 + j] = np.where(started, digit + _ZERO, _NUL)
+    return out
 
 
 def text_cells(texts: Sequence[str]) -> np.ndarray:
@@ -185,34 +195,49 @@ def text_cells(texts: Sequence[str]) -> np.ndarray:
     return flat.view(np.uint8).reshape(len(encoded), width)
 
 
-def join_rows(columns: Sequence[tuple[str, Any]]) -> str:
-    """csv lines from whole columns: each ``(kind, data)`` is ``("f", floats)``, ``("i",
-    integers)`` or ``("t", byte matrix of text cells)``; a numeric column may come as
-    ``(kind, (data, missing))`` with a mask of blank cells. Every column is written straight
-    into its slots of one byte block (cells joined by ',' and each row ended by '\\n'), which
-    becomes text once its NUL bytes are dropped."""
-    widths = [
-        FLOAT_WIDTH if kind == "f" else INT_WIDTH if kind == "i" else data.shape[1]
-        for kind, data in columns
-    ]
-    n = len(columns[0][1][0] if isinstance(columns[0][1], tuple) else columns[0][1])
-    block = np.zeros((n, sum(widths) + len(widths)), np.uint8)
+def join_rows(columns: Sequence[tuple[str, Any]]) -> bytes:
+    """csv lines (UTF-8 bytes) from whole columns: each ``(kind, data)`` is ``("f", floats)``,
+    ``("i", integers)`` or ``("t", byte matrix of text cells)``; a numeric column may come as
+    ``(kind, (data, missing))`` with a mask of blank cells. The cells of every column, without
+    the slots no row of it uses, are laid side by side in one byte block (cells joined by ','
+    and each row ended by '\\n'), which becomes the lines once its NUL bytes are dropped."""
+    cells = [_cells(kind, data) for kind, data in columns]
+    n = cells[0].shape[0]
+    block = np.empty((n, sum(c.shape[1] for c in cells) + len(cells)), np.uint8)
     at = 0
-    for (kind, data), width in zip(columns, widths, strict=True):
-        cells = block[:, at : at + width]
-        missing = None
-        if isinstance(data, tuple):
-            data, missing = data
-        if kind == "f":
-            write_floats(cells, np.asarray(data, dtype=float))
-        elif kind == "i":
-            write_ints(cells, np.asarray(data, dtype=np.int64))
-        else:
-            cells[:] = data
-        if missing is not None:
-            cells[missing] = 0
-        at += width
+    for c in cells:
+        block[:, at : at + c.shape[1]] = c
+        at += c.shape[1]
         block[:, at] = ord(",")
         at += 1
     block[:, -1] = ord("\n")
-    return block.tobytes().translate(None, b"\0").decode("utf-8")
+    return block.tobytes().translate(None, b"\0")
+
+
+def _cells(kind: str, data: Any) -> np.ndarray:
+    """The byte matrix of one column (blank where ``data`` comes with a missing mask)."""
+    missing = None
+    if isinstance(data, tuple):
+        data, missing = data
+    if kind == "f":
+        v = np.asarray(data, dtype=float).ravel()
+        if v.size > 1 and _constant(v):  # one text for every row (exponent 1.5, y = 0 ...)
+            one = np.zeros((1, FLOAT_WIDTH), np.uint8)
+            cell = one[:, write_floats(one, v[:1])]
+            out = np.broadcast_to(cell, (v.size, cell.shape[1]))
+        else:
+            out = np.zeros((v.size, FLOAT_WIDTH), np.uint8)
+            out = out[:, write_floats(out, v)]
+    elif kind == "i":
+        out = int_cells(data)
+    else:
+        out = np.asarray(data, dtype=np.uint8)
+    if missing is not None:
+        out = np.array(out)  # writable
+        out[missing] = 0
+    return out
+
+
+def _constant(v: np.ndarray) -> bool:
+    """Whether every value is the first, sign included (0.0 and -0.0 are written apart)."""
+    return bool(np.all(v == v[0])) and bool(np.all(np.signbit(v) == np.signbit(v[0])))

@@ -215,10 +215,15 @@ def csv_block(columns: Sequence[Column], values: dict[str, Any]) -> str:
     digits), built a whole column at a time (:mod:`bearingload.reports.csv_text`), so that a
     long table is written in chunks at the cost of a few array operations per column.
     """
+    return csv_bytes(columns, values).decode("utf-8")
+
+
+def csv_bytes(columns: Sequence[Column], values: dict[str, Any]) -> bytes:
+    """:func:`csv_block` as UTF-8 bytes (what a long csv writes to its file)."""
     from bearingload.reports.csv_text import join_rows
 
     if not columns or not len(values[columns[0].key]):
-        return ""
+        return b""
     parts = [_column_part(values[c.key]) for c in columns]
     try:
         return join_rows(parts)
