@@ -70,6 +70,13 @@ NOTES = (
 )
 
 
+def tilt_text(inputs: dict[str, Any]) -> str:
+    """', imposed misalignment 0.05°' or ', M = 2000 N mm' (or nothing) for a title."""
+    if "misalignment_deg" in inputs:
+        return f", imposed misalignment {inputs['misalignment_deg']:.6g}°"
+    return f", M = {inputs['moment']:.6g} N mm" if inputs["moment"] else ""
+
+
 def combined_report(
     cases: Sequence[CombinedCase], fmt: str, *, per_ball: bool = False, show_geometry: bool = False
 ) -> str:

@@ -15,7 +15,7 @@ from __future__ import annotations
 
 from typing import Any
 
-from bearingload.reports.combined import NOTES
+from bearingload.reports.combined import NOTES, tilt_text
 from bearingload.reports.quantities import QUANTITIES, units
 from bearingload.reports.render import Column, Table, render
 from bearingload.reports.solve import column
@@ -124,13 +124,7 @@ def title(s: CombinedSweep) -> str:
     """One line naming the sweep's inputs with units."""
     i = inputs(s)
     who = f"bearing {i['bearing']}, " if i["bearing"] != "given by hand" else ""
-    tilt = (
-        f", imposed misalignment {i['misalignment_deg']:.6g}°"
-        if "misalignment_deg" in i
-        else f", M = {i['moment']:.6g} N mm"
-        if i["moment"]
-        else ""
-    )
+    tilt = tilt_text(i)
     return (
         f"{who}z = {s.balls}, F_r = {i['load']:.6g} N, F_a = {i['axial_load']:.6g} N{tilt}, "
         f"G_r = {i['clearance'] * 1e3:.6g} µm, {s.rotating} ring rotating; cage angle 0 to "
@@ -139,38 +133,16 @@ def title(s: CombinedSweep) -> str:
 
 
 def _spread_table(s: CombinedSweep, context: str) -> Table:
-    out = []
+    from bearingload.reports.sweep import spread_table
+
+    entries = []
     for key in _spread_keys(s):
         q = QUANTITIES[key]
         sp = s.spread(key)
         assert sp is not None
-        for unit, factor in [q.shown()] + ([q.also] if q.also else []):
-            out.append(
-                {
-                    "quantity": q.label,
-                    "min": sp.min * factor,
-                    "mean": sp.mean * factor,
-                    "max": sp.max * factor,
-                    "ptp": sp.peak_to_peak * factor,
-                    "unit": unit or "",
-                }
-            )
+        entries += [(q, sp, shown) for shown in [q.shown()] + ([q.also] if q.also else [])]
     notes = ["mean: over one period (the last position, equal to the first, left out).", *NOTES]
-    if context:
-        notes.append(context)
-    return Table(
-        title=f"Over one ball pitch ({title(s)})",
-        columns=[
-            Column("quantity", "quantity", align="left"),
-            Column("min", "min", digits=6),
-            Column("mean", "mean", digits=6),
-            Column("max", "max", digits=6),
-            Column("ptp", "peak-to-peak", digits=4),
-            Column("unit", "unit", align="left"),
-        ],
-        rows=out,
-        notes=notes,
-    )
+    return spread_table(f"Over one ball pitch ({title(s)})", entries, notes, context)
 
 
 def _fixed_table(s: CombinedSweep) -> Table:

@@ -10,6 +10,7 @@ from __future__ import annotations
 
 from typing import Any
 
+from bearingload.reports.combined import tilt_text
 from bearingload.reports.quantities import QUANTITIES, units
 from bearingload.reports.render import Column, Table, render
 from bearingload.reports.solve import column
@@ -98,13 +99,7 @@ def _rows(t: LifeAgainstClearance, human: bool) -> list[dict[str, Any]]:
 def title(t: LifeAgainstClearance) -> str:
     c = conditions(t)
     who = f"bearing {c['bearing']}" if c["bearing"] != "given by hand" else "ball set given by hand"
-    tilt = (
-        f", imposed misalignment {c['misalignment_deg']:.6g}°"
-        if "misalignment_deg" in c
-        else f", M = {c['moment']:.6g} N mm"
-        if c["moment"]
-        else ""
-    )
+    tilt = tilt_text(c)
     return (
         f"L10r against radial internal clearance: {who}, z = {c['balls']}, "
         f"F_r = {t.load:.6g} N, F_a = {t.axial_load:.6g} N{tilt}, {t.rotating} ring rotating, "

@@ -53,26 +53,21 @@ def inputs_text(s: CageSweep) -> str:
 
 
 def _spread_table(s: CageSweep, context: str) -> Table:
-    rows = []
-    for key in SPREADS:
-        q = QUANTITIES[key]
-        unit, factor = q.shown()
-        sp = s.spread(key)
-        rows.append(
-            {
-                "quantity": q.label,
-                "min": sp.min * factor,
-                "mean": sp.mean * factor,
-                "max": sp.max * factor,
-                "ptp": sp.peak_to_peak * factor,
-                "unit": unit,
-            }
-        )
+    entries = [(QUANTITIES[key], s.spread(key), QUANTITIES[key].shown()) for key in SPREADS]
     notes = ["mean: over one period (the last position, equal to the first, left out)."]
-    if context:
-        notes.append(context)
+    return spread_table(f"Over one ball pitch ({inputs_text(s)})", entries, notes, context)
+
+
+def spread_table(title: str, entries: Any, notes: list[str], context: str) -> Table:
+    """The min/mean/max/peak-to-peak table of a sweep: ``entries`` are (quantity, spread,
+    (unit, factor)) rows; ``context`` (if any) is the last note."""
+    rows = [
+        {"quantity": q.label, "min": sp.min * factor, "mean": sp.mean * factor,
+         "max": sp.max * factor, "ptp": sp.peak_to_peak * factor, "unit": unit or ""}
+        for q, sp, (unit, factor) in entries
+    ]  # fmt: skip
     return Table(
-        title=f"Over one ball pitch ({inputs_text(s)})",
+        title=title,
         columns=[
             Column("quantity", "quantity", align="left"),
             Column("min", "min", digits=6),
@@ -82,7 +77,7 @@ def _spread_table(s: CageSweep, context: str) -> Table:
             Column("unit", "unit", align="left"),
         ],
         rows=rows,
-        notes=notes,
+        notes=[*notes, context] if context else list(notes),
     )
 
 
