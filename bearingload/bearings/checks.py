@@ -116,7 +116,9 @@ def _clearance_findings(bearing: ResolvedBearing) -> list[str]:
     return []
 
 
-def case_warnings(bearing: ResolvedBearing, load: float, result: Any) -> list[str]:
+def case_warnings(
+    bearing: ResolvedBearing, load: float, result: Any, pressures: Any = "compute"
+) -> list[str]:
     """Findings on one solved case, one sentence each; empty when all is well.
 
     Parameters
@@ -128,6 +130,9 @@ def case_warnings(bearing: ResolvedBearing, load: float, result: Any) -> list[st
     result : LoadDistribution or Result
         One case of :func:`bearingload.models.equilibrium.solve` or a registered model's
         :class:`bearingload.models.case.Result` (``q_max`` [N] and ``loaded_balls`` are read).
+    pressures : (float, float) or None, optional
+        The maximum contact pressures (inner, outer) at Q_max [MPa] where already known (None:
+        not known for this bearing); by default computed here.
 
     Returns
     -------
@@ -149,7 +154,8 @@ def case_warnings(bearing: ResolvedBearing, load: float, result: Any) -> list[st
                 f"the load F_r = {load:.6g} N is above the basic static rating C0 = {c0:.6g} N"
             )
     q_max = float(result.q_max)
-    pressures = max_contact_pressures(bearing, q_max)
+    if isinstance(pressures, str):
+        pressures = max_contact_pressures(bearing, q_max)
     if pressures is not None:
         limit = P_MAX_ROLLER if bearing.kind == "roller" else P_MAX_BALL
         p, where = max(zip(pressures, ("inner", "outer"), strict=True))

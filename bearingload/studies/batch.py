@@ -552,7 +552,9 @@ def _warnings(rows: Rows, cols: dict[str, Any]) -> list[Sequence[str]]:
     for i, b in enumerate(rows.bearings):
         one = SimpleNamespace(q_max=cols["q_max"][i], loaded_balls=cols["loaded_balls"][i])
         if b is not None:
-            out.append(case_warnings(b, cols["load"][i], one))
+            inner, outer = cols["p_max_inner"][i], cols["p_max_outer"][i]
+            known = None if inner is None else (inner, outer)  # computed over the rows above
+            out.append(case_warnings(b, cols["load"][i], one, known))
         elif one.loaded_balls == 1 and cols["balls"][i] > 1:
             out.append(element_warnings(one, cols["balls"][i]))
         else:

@@ -328,6 +328,7 @@ class CellParser:
         self.name = name
         self.kind = COLUMNS[name]
         self.unit = unit
+        self.factor: float | None = None  # of the header's unit to the package unit
         self.cache: dict[Any, Any] = {}
 
     def parse(self, text: str, exponent: float = 1.5) -> Any:
@@ -361,8 +362,13 @@ class CellParser:
             return _exponent(text)
         if kind == "cage_angle":  # the one reading of solve, sweep and table
             plain = _plain(name, text)
-            given = f"{plain!r}{self.unit}" if plain is not None and self.unit else text
-            return units.parse_cage_angle(given, parameter=name)
+            if plain is None:
+                return units.parse_cage_angle(text, parameter=name)
+            if not self.unit:
+                return plain
+            if self.factor is None:
+                self.factor = float(units.parse_cage_angle("1" + self.unit, parameter=name))
+            return plain * self.factor
         if kind == "clearance" and re.fullmatch(r"(?i)c[2-5n]|g[6-9]|cn|normal", text):
             from bearingload.bearings.clearance import parse_clearance
 
@@ -373,8 +379,10 @@ class CellParser:
                 return plain * units.stiffness_factor(self.unit, exponent, parameter=name)
             return units.parse_stiffness(text, exponent, parameter=name)
         kind = "length" if kind == "clearance" else "angle" if kind == "cage_angle" else kind
-        if plain is not None and self.unit:
-            return units.parse_quantity(f"{plain!r}{self.unit}", kind, parameter=name)
+        if plain is not None and self.unit:  # the header's unit: its factor, found once
+            if self.factor is None:
+                self.factor = units.parse_quantity("1" + self.unit, kind, parameter=name)
+            return plain * self.factor
         # a bare number: refused when implausible for its quantity, as on the command line
         return units.parse_quantity(text, kind, parameter=name)
 
