@@ -89,7 +89,7 @@ def max_contact_pressures(bearing: ResolvedBearing, load: float) -> tuple[float,
     return float(c.inner.p_max), float(c.outer.p_max)
 
 
-def _clearance_findings(bearing: ResolvedBearing) -> list[str]:
+def clearance_findings(bearing: ResolvedBearing) -> list[str]:
     if bearing.kind != "ball" or bearing.geometry is None:
         return []
     from bearingload.bearings.clearance import clearance_range
@@ -166,7 +166,7 @@ def case_warnings(
                 f"{element} bearings (ISO 76)"
             )
     out += element_warnings(result, bearing.balls, element)
-    out += _clearance_findings(bearing)
+    out += clearance_findings(bearing)
     return out
 
 

@@ -22,7 +22,7 @@ from typing import Any
 import numpy as np
 
 from bearingload.errors import BearingloadError, InputError
-from bearingload.studies.batch_input import Block, CellParser, Header
+from bearingload.studies.batch_input import COLUMNS, Block, CellParser, Header
 from bearingload.studies.loaded_bearing import DEFAULT_REVOLUTIONS
 
 
@@ -64,8 +64,7 @@ class BatchSolver:
             found = [x for x in (self._combined_row(r, c, errors) for r, c in cells) if x]
             return _merged(solve_combined_rows(found, errors), errors)
         if self.header.has_bearing:
-            cells = self._cells(block.cells(), errors)
-            rows = Rows.of([x for x in (self._row(r, c, errors) for r, c in cells) if x])
+            rows = self._bearing_rows(block.cells(), errors)
         else:
             rows = self._numbers_only(block) or self._hand_rows(block.cells(), errors)
         return _merged(_solve_rows(rows, errors), errors)
@@ -260,44 +259,162 @@ class BatchSolver:
             out.append((row, parsed))
         return out
 
-    def _row(self, row: int, v: dict[str, Any], errors: dict[int, str]) -> dict[str, Any] | None:
-        """The case inputs of one row: z, F_r, K, G_r, cage angle, m, method, bearing."""
+    def _bearing_rows(self, lines: list[tuple[int, list[str]]], errors: dict[int, str]) -> Rows:
+        """The rows of a file that can name bearings, column by column: each distinct cell text
+        parsed once, each distinct set of a row's bearing inputs (all but its load, cage angle
+        and revolutions) resolved once; a row's first error in file order is kept."""
+        names = self.header.names
+        good = []
+        for row, cells in lines:
+            if len(cells) == len(names):
+                good.append((row, cells))
+            else:
+                errors[row] = _malformed(len(cells), len(names))
+        numbers = [row for row, _ in good]
+        parsed, failed = self._parsed_columns([c for _, c in good])
+        keyed = [n for n in names if n not in _PER_ROW]
+        index: dict[tuple[Any, ...], int] = {}
+        codes = np.array(
+            [index.setdefault(k, len(index)) for k in zip(*(parsed[n] for n in keyed), strict=True)]
+            if keyed
+            else [index.setdefault((), 0)] * len(good),
+            dtype=np.intp,
+        )
+        cases: list[Any] = []
+        for key in index:  # each distinct bearing once
+            v = {n: x for n, x in zip(keyed, key, strict=True) if x is not _EMPTY}
+            try:
+                cases.append(self._case_of(v | {"exponent": v.get("exponent", 1.5)}))
+            except BearingloadError as exc:
+                cases.append(str(exc))
+        bad = dict(failed)  # a row's first error: its cells, its bearing, its load ...
+        for i, code in enumerate(codes.tolist()):
+            if isinstance(cases[code], str):
+                bad.setdefault(i, cases[code])
+        per_row = {n: parsed.get(n, [_EMPTY] * len(good)) for n in _PER_ROW}
+        for i, x in enumerate(per_row["load"]):
+            if x is _EMPTY:
+                bad.setdefault(i, "load: missing: every row needs a load")
+        revolutions = [DEFAULT_REVOLUTIONS if x is _EMPTY else x for x in per_row["revolutions"]]
+        for i, x in enumerate(revolutions):
+            if not x > 0:
+                bad.setdefault(i, f"revolutions: must be greater than 0 rev (got {x:g})")
+        for i, message in bad.items():
+            errors[numbers[i]] = message
+        keep = [i for i in range(len(good)) if i not in bad]
+        return self._rows_of(keep, numbers, codes, cases, per_row, revolutions)
+
+    @staticmethod
+    def _rows_of(
+        keep: list[int], numbers: list[int], codes: np.ndarray, cases: list[Any],
+        per_row: dict[str, list[Any]], revolutions: list[float],
+    ) -> Rows:  # fmt: skip
+        """The kept rows as arrays: each row's bearing case by its code, its load, cage angle
+        ('half': half the pitch; blank: 0) and revolutions."""
+        ok = [c if isinstance(c, dict) else None for c in cases]
+        code = codes[keep]
+        table = {k: np.array([0.0 if c is None else c[k] for c in ok], dtype=float)
+                 for k in ("balls", "stiffness", "clearance", "exponent")}  # fmt: skip
+        arrays = {k: t[code] for k, t in table.items()}
+        arrays["load"] = np.array([per_row["load"][i] for i in keep], dtype=float)
+        angles = [per_row["cage_angle"][i] for i in keep]
+        half = np.array([a == "half" for a in angles], dtype=bool)
+        given = np.array([0.0 if a is _EMPTY or a == "half" else a for a in angles], float)
+        z = arrays["balls"]
+        with np.errstate(divide="ignore"):
+            arrays["cage_angle"] = np.where(half, np.where(z >= 1, 180.0 / z, 0.0), given)
+        code_list = code.tolist()
+        return Rows(
+            [numbers[i] for i in keep],
+            arrays,
+            [ok[c]["method"] for c in code_list],
+            [ok[c]["bearing"] for c in code_list],
+            np.array([revolutions[i] for i in keep], dtype=float),
+            all(c is None or c["bearing"] is None for c in ok),
+        )
+
+    def _numeric_column(self, name: str, texts: Any, m: list[Any]) -> list[float] | None:
+        """A column of bare numbers in package units at once (as the cell parser reads each),
+        or None when some cell needs the parser (a unit or word in the cell, a blank, a bad or
+        implausible number, a fraction in the count of balls)."""
+        kind = COLUMNS[name]
+        if kind in ("text", "pick", "ring", "exponent") or not texts:
+            return None
+        try:
+            values = np.array(texts, dtype=float)
+        except ValueError:
+            return None
+        if kind == "count" and not np.all(values == np.round(values)):
+            return None
+        if kind in ("count", "number"):
+            return values.tolist() if np.all(np.isfinite(values)) else None
+        try:
+            found = self._bare(name, values, np.array(m, dtype=float))
+        except InputError:
+            return None
+        return None if found is None else found.tolist()
+
+    def _parsed_columns(self, rows: list[list[str]]) -> tuple[dict[str, list[Any]], dict[int, str]]:
+        """Every column's cells parsed (``_EMPTY`` for a blank cell), and each failing row's first
+        error: the exponent first (other cells depend on it), then in file order."""
+        names = self.header.names
+        texts = dict(zip(names, zip(*rows, strict=True), strict=False)) if rows else {}
+        order = (["exponent"] if "exponent" in names else []) + [
+            n for n in names if n != "exponent"
+        ]
+        parsed: dict[str, list[Any]] = {}
+        failed: dict[int, str] = {}
+        m: list[Any] = [1.5] * len(rows)
+        for n in order:
+            fast = self._numeric_column(n, texts.get(n, ()), m)
+            if fast is not None:  # every cell a bare number, read at once
+                parsed[n] = fast
+                continue
+            parser = self.parsers[n]
+            cache: dict[tuple[str, Any], Any] = {}
+            column = []
+            for i, (text, e) in enumerate(zip(texts.get(n, ()), m, strict=True)):
+                key = (text, e)
+                hit = cache.get(key)
+                if hit is None:
+                    t = text.strip()
+                    try:
+                        hit = (True, parser.parse(t, e) if t else _EMPTY)
+                    except InputError as exc:
+                        hit = (False, str(exc))
+                    cache[key] = hit
+                if not hit[0] and i not in failed:
+                    failed[i] = hit[1]
+                column.append(hit[1] if hit[0] else _EMPTY)
+            parsed[n] = column
+            if n == "exponent":
+                m = [1.5 if x is _EMPTY else x for x in column]
+        return parsed, failed
+
+    def _case_of(self, v: dict[str, Any]) -> dict[str, Any]:
+        """What a row's inputs other than load, cage angle and revolutions give: the method,
+        the resolved bearing (None: a ring by z and K), z, K, G_r and m."""
         from bearingload.bearings.clearance import clearance_length
         from bearingload.models.registry import get_method
 
-        try:
-            get_method(v.get("method", "exact"))
-            by_hand = not any(k in v for k in ("bearing", "ball_diameter", "pitch_diameter"))
-            if by_hand:
-                extra = [k for k in ("inner_conformity", "outer_conformity", "modulus", "poisson",
-                                     "clearance_pick") if k in v]  # fmt: skip
-                if extra:
-                    raise InputError(extra[0], "needs a bearing or a ball geometry")
-                for need in ("balls", "stiffness"):
-                    if need not in v:
-                        raise InputError(need, "missing (give balls and stiffness, or a bearing)")
-                b = None
-                z, k = v["balls"], v["stiffness"]
-                g = v.get("clearance", 0.0)
-                g = g if isinstance(g, float) else clearance_length(g)
-            else:
-                b = self._bearing(v)
-                z, k, g = b.balls, b.stiffness, b.clearance
-            if "load" not in v:
-                raise InputError("load", "missing: every row needs a load")
-            revolutions = v.get("revolutions", DEFAULT_REVOLUTIONS)
-            if not revolutions > 0:
-                raise InputError("revolutions", f"must be greater than 0 rev (got {revolutions:g})")
-            angle = v.get("cage_angle", 0.0)
-            if angle == "half":
-                angle = 180.0 / z if z >= 1 else 0.0  # a bad z is named by the checks
-        except BearingloadError as exc:
-            errors[row] = str(exc)
-            return None
-        return {"row": row, "bearing": b, "balls": z, "load": v["load"], "stiffness": k,
-                "clearance": g, "cage_angle": angle,
-                "exponent": v["exponent"] if b is None else b.exponent,
-                "method": v.get("method", "exact"), "revolutions": revolutions}  # fmt: skip
+        get_method(v.get("method", "exact"))
+        by_hand = not any(k in v for k in ("bearing", "ball_diameter", "pitch_diameter"))
+        if by_hand:
+            extra = [k for k in ("inner_conformity", "outer_conformity", "modulus", "poisson",
+                                 "clearance_pick") if k in v]  # fmt: skip
+            if extra:
+                raise InputError(extra[0], "needs a bearing or a ball geometry")
+            for need in ("balls", "stiffness"):
+                if need not in v:
+                    raise InputError(need, "missing (give balls and stiffness, or a bearing)")
+            g = v.get("clearance", 0.0)
+            return {"bearing": None, "balls": v["balls"], "stiffness": v["stiffness"],
+                    "clearance": g if isinstance(g, float) else clearance_length(g),
+                    "exponent": v["exponent"], "method": v.get("method", "exact")}  # fmt: skip
+        b = self._bearing(v)
+        return {"bearing": b, "balls": b.balls, "stiffness": b.stiffness,
+                "clearance": b.clearance, "exponent": b.exponent,
+                "method": v.get("method", "exact")}  # fmt: skip
 
     def _bearing(self, v: dict[str, Any]) -> Any:
         """The resolved bearing of a row, resolved once per distinct inputs."""
@@ -363,6 +480,11 @@ def _items(values: Any) -> list[Any]:
     """A column as a list of Python values (None where not given)."""
     return values.tolist() if isinstance(values, np.ndarray) else list(values)
 
+
+#: A blank cell (the column's default applies).
+_EMPTY: Any = object()
+#: Columns that differ from row to row without changing the bearing.
+_PER_ROW = ("load", "cage_angle", "revolutions")
 
 #: Columns whose cells may all be bare numbers (then a block is read by numpy at once).
 _NUMERIC = frozenset(("balls", "load", "stiffness", "clearance", "cage_angle", "exponent"))
@@ -548,18 +670,49 @@ def _warnings(rows: Rows, cols: dict[str, Any]) -> list[Sequence[str]]:
         for i in np.flatnonzero((loaded == 1) & (np.asarray(cols["balls"]) > 1)).tolist():
             out[i] = single
         return out
-    out = []
-    for i, b in enumerate(rows.bearings):
+    for i in np.flatnonzero(_may_warn(rows, cols)).tolist():  # the others: nothing to say
+        b = rows.bearings[i]
         one = SimpleNamespace(q_max=cols["q_max"][i], loaded_balls=cols["loaded_balls"][i])
         if b is not None:
             inner, outer = cols["p_max_inner"][i], cols["p_max_outer"][i]
             known = None if inner is None else (inner, outer)  # computed over the rows above
-            out.append(case_warnings(b, cols["load"][i], one, known))
-        elif one.loaded_balls == 1 and cols["balls"][i] > 1:
-            out.append(element_warnings(one, cols["balls"][i]))
+            out[i] = case_warnings(b, cols["load"][i], one, known)
         else:
-            out.append([])
+            out[i] = element_warnings(one, cols["balls"][i])
     return out
+
+
+def _may_warn(rows: Rows, cols: dict[str, Any]) -> np.ndarray:
+    """The rows on which a check of ``case_warnings`` can fire (a superset, vectorised): s0 or
+    C0 exceeded, contact pressure above its limit, one loaded ball, a clearance finding of the
+    bearing (each distinct bearing asked once)."""
+    from bearingload.bearings.checks import P_MAX_BALL, P_MAX_ROLLER, S0_MIN, clearance_findings
+
+    n = len(rows.bearings)
+    c0, limit = np.full(n, np.nan), np.full(n, np.inf)
+    own = np.zeros(n, bool)
+    seen: dict[int, tuple[float, float, bool]] = {}
+    for i, b in enumerate(rows.bearings):
+        if b is not None:
+            if id(b) not in seen:
+                seen[id(b)] = (b.C0 or np.nan, P_MAX_ROLLER if b.kind == "roller" else P_MAX_BALL,
+                               bool(clearance_findings(b)))  # fmt: skip
+            c0[i], limit[i], own[i] = seen[id(b)]
+
+    def numbers(key: str, missing: float) -> np.ndarray:
+        v = cols[key]
+        return (
+            v
+            if isinstance(v, np.ndarray)
+            else np.array([missing if x is None else x for x in v], float)
+        )
+
+    load = np.asarray(cols["load"], dtype=float)
+    pressure = np.maximum(numbers("p_max_inner", 0.0), numbers("p_max_outer", 0.0))
+    with np.errstate(divide="ignore", invalid="ignore"):
+        static = (c0 / load < S0_MIN) | (load > c0)
+    single = (numbers("loaded_balls", -1.0) == 1) & (np.asarray(cols["balls"]) > 1)
+    return static | (pressure > limit) | own | single
 
 
 def _bearing_values(rows: Rows, q: np.ndarray) -> dict[str, list[Any]]:
