@@ -60,7 +60,7 @@ class BatchSolver:
         if self.header.combined:
             from bearingload.studies.batch_combined import solve_combined_rows
 
-            cells = self._cells(block.cells(), errors)
+            cells = self._row_dicts(block.cells(), errors)
             found = [x for x in (self._combined_row(r, c, errors) for r, c in cells) if x]
             return _merged(solve_combined_rows(found, errors), errors)
         if self.header.has_bearing:
@@ -232,31 +232,34 @@ class BatchSolver:
                 bad.setdefault(i, str(exc))
         return out
 
-    def _cells(
+    def _well_formed(
+        self, lines: list[tuple[int, list[str]]], errors: dict[int, str]
+    ) -> list[tuple[int, list[str]]]:
+        """The lines with as many cells as the header names columns; the others go to
+        ``errors``."""
+        width = len(self.header.names)
+        good = []
+        for row, cells in lines:
+            if len(cells) == width:
+                good.append((row, cells))
+            else:
+                errors[row] = _malformed(len(cells), width)
+        return good
+
+    def _row_dicts(
         self, lines: list[tuple[int, list[str]]], errors: dict[int, str]
     ) -> list[tuple[int, dict[str, Any]]]:
-        """Each row's cells by column, parsed to package units; a row's first error is kept."""
+        """Each readable row's non-blank cells by column, parsed to package units (the rows that
+        fail to parse, and malformed lines, go to ``errors``)."""
         names = self.header.names
+        good = self._well_formed(lines, errors)
+        parsed, failed = self._parsed_columns([c for _, c in good])
         out = []
-        for row, cells in lines:
-            if len(cells) != len(names):
-                errors[row] = _malformed(len(cells), len(names))
+        for i, (row, _) in enumerate(good):
+            if i in failed:
+                errors[row] = failed[i]
                 continue
-            values = {n: t.strip() for n, t in zip(names, cells, strict=True) if t.strip()}
-            try:
-                m = (
-                    self.parsers["exponent"].parse(values["exponent"])
-                    if "exponent" in values
-                    else 1.5
-                )
-                parsed = {"exponent": m}
-                for n, t in values.items():
-                    if n != "exponent":
-                        parsed[n] = self.parsers[n].parse(t, m)
-            except InputError as exc:
-                errors[row] = str(exc)
-                continue
-            out.append((row, parsed))
+            out.append((row, {n: parsed[n][i] for n in names if parsed[n][i] is not _EMPTY}))
         return out
 
     def _bearing_rows(self, lines: list[tuple[int, list[str]]], errors: dict[int, str]) -> Rows:
@@ -264,12 +267,7 @@ class BatchSolver:
         parsed once, each distinct set of a row's bearing inputs (all but its load, cage angle
         and revolutions) resolved once; a row's first error in file order is kept."""
         names = self.header.names
-        good = []
-        for row, cells in lines:
-            if len(cells) == len(names):
-                good.append((row, cells))
-            else:
-                errors[row] = _malformed(len(cells), len(names))
+        good = self._well_formed(lines, errors)
         numbers = [row for row, _ in good]
         parsed, failed = self._parsed_columns([c for _, c in good])
         keyed = [n for n in names if n not in _PER_ROW]
