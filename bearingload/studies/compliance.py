@@ -97,7 +97,7 @@ def compensating_clearances(
 
     Solves ``x(0) = x(180/z)`` for ``G_r`` exactly (the compliance abstract: "δα = δS", the clearance that removes
     the kinematic excitation at z times the cage frequency). The difference is scanned in
-    ``u = asinh(e/s)`` (``s = (F/K)^(1/m)``, ``e = G_r/2``), each sign change refined by brentq to
+    ``u = asinh(e/s)`` (``s = (F/K)^(1/m)``, ``e = G_r/2``), each sign change refined in its bracket (:func:`bearingload.roots.bracketed_root`) to
     ``xtol = 1e-12 s``. There may be none, one or several: each ball entering or leaving contact
     at one of the two cage positions can flip the sign. The paper means a positive clearance with
     several balls loaded inside its range P̄/z >= 0.1: the smallest positive root (z = 9,
@@ -130,7 +130,7 @@ def compensating_clearances(
     >>> len(roots), [round(g, 5) for g in roots if g > 0]
     (6, [0.01065, 0.0843, 0.43572])
     """
-    from scipy.optimize import brentq
+    from bearingload.roots import bracketed_root
 
     z = int(validate.ball_count(balls))
     if z < 3:
@@ -153,9 +153,10 @@ def compensating_clearances(
     gk, dk = g[keep], d[keep]
     roots = []
     for i in np.nonzero(np.sign(dk[:-1]) != np.sign(dk[1:]))[0]:
-        roots.append(
-            float(brentq(_difference, gk[i], gk[i + 1], args=(z, f, k, m), xtol=1e-12 * s))
+        root = bracketed_root(
+            lambda x: _difference(x, z, f, k, m), gk[i], gk[i + 1], xtol=1e-12 * s
         )
+        roots.append(root)
     return sorted(roots)
 
 

@@ -148,7 +148,7 @@ def exit_angle(balls: int, T: float) -> float | None:
     """Exit angle ``psi``: where a ball leaves contact as the cage turns forward. [°]
 
     Found by bracketing the sign change of each ball's approach over one pitch of cage angles
-    and solving ``delta_i(phi_1) = 0`` with brentq (xtol 1e-13°) on the engine's solution.
+    and solving ``delta_i(phi_1) = 0`` in its bracket (:func:`bearingload.roots.bracketed_root`, xtol 1e-13°) on the engine's solution.
     ``psi = 360/n`` in the sequence 1-2-1 (Kurochkin 1973, eq. 1.15); ``None`` when every ball
     stays loaded at every cage angle (heavy preload).
 
@@ -164,7 +164,9 @@ def exit_angle(balls: int, T: float) -> float | None:
 
 def _events(balls: int, T: float) -> tuple[float | None, list[float]]:
     """(psi, sorted cage angles in [0, pitch] where a ball enters or leaves contact) [°]."""
-    from scipy.optimize import brentq
+    from functools import partial
+
+    from bearingload.roots import bracketed_root
 
     z = _balls(balls)
     pitch = 360.0 / z
@@ -175,7 +177,8 @@ def _events(balls: int, T: float) -> tuple[float | None, list[float]]:
     candidates = []
     for k, ball in zip(*np.nonzero(leaving), strict=True):
         a, b = grid[k], grid[k + 1]
-        root = brentq(_approach, a, b, args=(z, T, int(ball)), xtol=1e-13, rtol=1e-15)
+        approach = partial(_approach, balls=z, T=T, ball=int(ball))
+        root = bracketed_root(approach, a, b, xtol=1e-13, rtol=1e-15)
         psi = (root + ball * pitch + 180.0) % 360.0 - 180.0
         if psi > 0:
             candidates.append(psi)
@@ -299,17 +302,17 @@ def conservative_moment(
 
 
 def harmonic_null_parameter(balls: int, harmonic: int, lower: float, upper: float) -> float:
-    """The T in [lower, upper] at which ``F0j'(T) = 0`` for j = ``harmonic`` (brentq). [-]
+    """The T in [lower, upper] at which ``F0j'(T) = 0`` for j = ``harmonic``. [-]
 
     The conservative moment ``M = w P y0`` then has no j-th harmonic (Kurochkin 1973, Example 1,
     part 2).
     """
-    from scipy.optimize import brentq
+    from bearingload.roots import bracketed_root
 
     def f(t: float) -> float:
         return float(fourier_sine(balls, t, harmonic)[harmonic - 1])
 
-    return float(brentq(f, lower, upper, xtol=1e-13))
+    return bracketed_root(f, lower, upper, xtol=1e-13)
 
 
 @dataclass(frozen=True)
