@@ -4,6 +4,7 @@ from __future__ import annotations
 
 import sys
 import time
+from itertools import compress
 from typing import Any, BinaryIO
 
 import click
@@ -108,7 +109,9 @@ def batch(
                 progress.clear()
                 click.echo(f"Warning: row {row}: {message}", err=True)
             skipped += part.errors
-            for row, found in zip(part.rows, part.values.get("warnings", []), strict=False):
+            found_by_row = part.values.get("warnings", [])
+            for i in compress(range(len(found_by_row)), found_by_row):  # rows with warnings
+                row, found = part.rows[i], found_by_row[i]
                 for text in found:
                     warned += 1
                     if warned <= MAX_WARNINGS_SHOWN:
