@@ -96,7 +96,7 @@ CLI = ("sweep", "6205", "-F", "1.4kN", "-A", "700N", "-G", "C3", "--steps", "5")
 def test_csv_is_one_rectangular_table_inputs_first():
     out = invoke(*CLI, "--format", "csv")
     assert out.exit_code == 0
-    rows = list(csv.reader(io.StringIO(out.output)))
+    rows = list(csv.reader(io.StringIO(out.stdout)))
     assert len(rows) == 6 and len({len(r) for r in rows}) == 1
     head = rows[0]
     assert head[:9] == ["bearing", "balls", "load [N]", "axial_load [N]", "moment [N mm]",
@@ -126,10 +126,10 @@ def test_json_keys_are_solves_keys():
 
 
 def test_table_and_markdown_have_units():
-    out = invoke(*CLI).output
+    out = invoke(*CLI).stdout
     assert "reference rating life L10r (ISO/TS 16281)" in out and "10^6 rev" in out
     assert "axial [µm]" in out and "tilt [°]" in out and "L10r [10^6 rev]" in out
-    md = invoke(*CLI, "--format", "markdown").output
+    md = invoke(*CLI, "--format", "markdown").stdout
     assert md.startswith("### Over one ball pitch (bearing 6205, z = 9, F_r = 1400 N")
 
 
