@@ -126,3 +126,25 @@ def test_json_keys_are_solves():
         if not isinstance(value, (list, dict)) and key != "model":  # model: solve's prose
             assert doc["cases"][0][key] == value, key
     assert doc["units"]["reference_rating_life"] == "10^6 rev"
+
+
+def test_a_moment_alone_converges_and_has_no_iso281_life():
+    """F_r = F_a = 0 with a moment: the ring tilts until balls touch (the start may touch none:
+    the solver then moves along the load to the first contact), L10r from the ball loads, and
+    no ISO 281 life (P = 0)."""
+    import json
+
+    for designation in ("75-313", "6313", "6205"):
+        for cage in ("0", "half"):
+            out = CliRunner().invoke(
+                main,
+                ["solve", designation, "-F", "0", "--moment", "2Nm", "--cage-angle", cage,
+                 "--format", "json"],
+            )  # fmt: skip
+            assert out.exit_code == 0, (designation, cage, out.output)
+            case = json.loads(out.stdout)["cases"][0]
+            assert case["rating_life"] is None and case["equivalent_load"] == 0.0
+            assert case["reference_rating_life"] > 0 and case["tilt_deg"] > 0
+            assert abs(case["tilt_cross_deg"]) < 1e-12  # balls symmetric about the load plane
+    row = _rows(_batch("bearing,load,moment\n6205,0,2Nm\n", "--format", "csv").stdout)[0]
+    assert row["rating_life [10^6 rev]"] == "" and float(row["reference_rating_life [10^6 rev]"])

@@ -615,6 +615,9 @@ def _minimise(p: _Problem, v: np.ndarray, k: np.ndarray) -> tuple[np.ndarray, np
         trace = np.trace(hess, axis1=1, axis2=2)
         hess += (1e-13 * trace + 1e-300)[:, None, None] * eye
         step = -np.linalg.solve(hess, grad[:, :, None])[:, :, 0]
+        loose = np.flatnonzero(~(trace > 1.0 * q.locked.sum()) & ~done)  # no ball in contact
+        if loose.size:  # Newton has no curvature there: move along the load to the first contact
+            step[loose] = _to_contact(q.sub(loose), va[loose])
         slope = (grad * step).sum(1)
         t = np.ones(len(active))
         pending = ~done
@@ -650,6 +653,28 @@ def _minimise(p: _Problem, v: np.ndarray, k: np.ndarray) -> tuple[np.ndarray, np
                 {"f_hat": p.f_hat[bad], "clearance_hat": 2.0 * p.g_hat[bad]},
             )
     return v, iterations
+
+
+def _to_contact(p: _Problem, v: np.ndarray) -> np.ndarray:
+    """For rings that touch no ball: the step along the generalised load (the potential falls
+    along it while no ball is loaded) that brings the nearest ball, to first order, a little
+    into contact; zero where no ball comes nearer that way."""
+    delta, ca, sa, _ = _balls(p, v)
+    direction = np.where(p.locked, 0.0, p.f_hat)
+    direction /= np.maximum(np.linalg.norm(direction, axis=1, keepdims=True), 1e-300)
+    c, s = p.c, p.s
+    rate = (
+        ca * c * direction[:, 0, None]
+        + ca * s * direction[:, 1, None]
+        + sa * direction[:, 2, None]
+        + sa * c * direction[:, 3, None]
+        + sa * s * direction[:, 4, None]
+    )  # d(delta_j)/dt along the direction
+    with np.errstate(divide="ignore", invalid="ignore"):
+        reach = np.where(rate > 0, -delta / rate, np.inf)
+    t = np.min(reach, axis=1)
+    t = np.where(np.isfinite(t), 1.001 * t + 1e-9, 0.0)
+    return direction * t[:, None]
 
 
 def _start(p: _Problem, geo: _Geometry, cage: np.ndarray) -> np.ndarray:

@@ -113,6 +113,9 @@ def _group_values(group: list[dict[str, Any]]) -> Part:
     cols = case_columns(b, r, misalignment, first["rotating"], None if not c_r else
                         np.full(n, float(c_r)), p_eq, life, l10r)  # fmt: skip
     cols = {k: _over_rows(v, n) for k, v in cols.items()}
+    life = cols["rating_life"]
+    if isinstance(life, np.ndarray) and np.isnan(life).any():  # a moment alone: no L10
+        cols["rating_life"] = [None if v != v else v for v in life.tolist()]
     cols["clearance_pick"] = [g["bearing"].clearance_pick for g in group]
     tilts = np.broadcast_to(ring_tilt(r), (n,)).tolist()
     q, loaded = cols["q_max"].tolist(), cols["loaded_balls"].tolist()
