@@ -118,7 +118,7 @@ class BatchSolver:
             if name not in given:
                 arrays[name] = np.full(n, default)
                 continue
-            found = self._bare(name, given[name], arrays["exponent"])
+            found = self._bare(name, given[name], arrays.get("exponent"))
             if found is None:
                 return None
             arrays[name] = found
@@ -136,7 +136,11 @@ class BatchSolver:
             from bearingload.units import stiffness_factor
 
             assert m is not None
-            factors = {e: stiffness_factor(parser.unit, e, parameter=name) for e in set(m.tolist())}
+            try:  # a unit of another exponent: the cell parser names the row
+                factors = {e: stiffness_factor(parser.unit, e, parameter=name)
+                           for e in set(m.tolist())}  # fmt: skip
+            except InputError:
+                return None
             return values * np.array([factors[e] for e in m.tolist()])
         from bearingload.units import parse_quantity
 
