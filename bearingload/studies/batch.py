@@ -212,6 +212,8 @@ class BatchSolver:
         cells = texts[name]
         parser = self.parsers[name]
         try:  # bare numbers at once; otherwise (and to name the bad ones) cell by cell
+            if "_" in "".join(cells):  # numpy reads '1_000' as Python does; the cells refuse it
+                raise ValueError("underscores")
             found = self._bare(name, np.array(cells, dtype=float), m)
             if found is not None:
                 return found

@@ -379,10 +379,18 @@ class CellParser:
         return units.parse_quantity(text, kind, parameter=name)
 
 
+def _float(text: str) -> float:
+    """``float(text)`` without the underscores Python allows ('1_000'): the command line's
+    unit parser refuses them, and so must every cell, however its chunk is read."""
+    if "_" in text:
+        raise ValueError(text)
+    return float(text)
+
+
 def _plain(name: str, text: str) -> float | None:
     """A bare finite number, or None (then the unit parser reads the text)."""
     try:
-        v = float(text)
+        v = _float(text)
     except ValueError:
         return None
     if v != v or v in (float("inf"), float("-inf")):
@@ -392,7 +400,7 @@ def _plain(name: str, text: str) -> float | None:
 
 def _number(name: str, text: str, unit: str | None, *, whole: bool) -> float:
     try:
-        v = float(text)
+        v = _float(text)
     except ValueError:
         raise InputError(name, f"cannot read {text!r} as a number") from None
     if v != v or v in (float("inf"), float("-inf")):
@@ -405,7 +413,7 @@ def _number(name: str, text: str, unit: str | None, *, whole: bool) -> float:
 def _exponent(text: str) -> float:
     num, slash, den = text.partition("/")
     try:
-        return float(num) / float(den) if slash else float(text)
+        return _float(num) / _float(den) if slash else _float(text)
     except (ValueError, ZeroDivisionError):
         raise InputError(
             "exponent", f"{text!r} is neither a number nor a fraction like 10/9"
