@@ -53,3 +53,27 @@ def test_a_number_with_underscores_is_refused_whatever_the_other_rows(chunk):
     r = _batch(with_unit, "--chunk-size", chunk)
     assert "row 2: load" in r.stderr and "row 3: cage_angle" in r.stderr
     assert r.stdout.splitlines()[1:] == []
+
+
+def test_a_moment_alone_is_solved_with_its_L10r_and_no_iso281_life():
+    """solve --help: the radial load is '>= 0 with an axial load or a moment'; with a moment
+    alone (F_r = F_a = 0) solve, sweep, table life and batch refused the case after solving it,
+    'load: must be a finite number greater than 0; got array(0.)' (ISO 281's L10 = (C_r/P)^3
+    with P = 0). Now L10 is blank (ISO 281 has none for a moment), L10r is given."""
+    solve = _run("solve", "6205", "--load", "0", "--moment", "1Nm", "--format", "json")
+    assert solve.exit_code == 0, solve.output
+    assert '"rating_life": null' in solve.stdout and '"equivalent_load": 0.0' in solve.stdout
+    assert "array(" not in solve.output
+    sweep = _run("sweep", "6205", "--load", "0", "--moment", "1Nm", "--format", "csv")
+    assert sweep.exit_code == 0, sweep.output
+    life = _run("table", "life", "-b", "6205", "-F", "0", "--moment", "1Nm", "--clearances", "0")
+    assert life.exit_code == 0, life.output
+    assert "none under a moment alone" in life.stdout
+    rows = _batch("bearing,load,moment\n6205,0,1Nm\n6205,1N,1Nm\n")
+    assert rows.exit_code == 0, rows.output
+    lines = rows.stdout.splitlines()
+    assert lines[1].endswith(",0.0,") and not lines[2].endswith(",")  # no L10, then an L10
+    alone = _run("solve", "6205", "--load", "0", "--moment", "1Nm", "--format", "csv")
+    head, values = alone.stdout.splitlines()
+    got = dict(zip(lines[0].split(","), lines[1].split(","), strict=True))
+    assert all(got[k] == v for k, v in zip(head.split(","), values.split(","), strict=True))

@@ -114,6 +114,8 @@ def _group_values(group: list[dict[str, Any]]) -> Part:
                         np.full(n, float(c_r)), p_eq, life, l10r)  # fmt: skip
     cols = {k: _over_rows(v, n) for k, v in cols.items()}
     cols["clearance_pick"] = [g["bearing"].clearance_pick for g in group]
+    if life is not None and np.isnan(cols["rating_life"]).any():  # a moment alone: no L10
+        cols["rating_life"] = [None if v != v else v for v in cols["rating_life"].tolist()]
     tilts = np.broadcast_to(ring_tilt(r), (n,)).tolist()
     q, loaded = cols["q_max"].tolist(), cols["loaded_balls"].tolist()
     cols["warnings"] = [

@@ -206,7 +206,7 @@ def life_figures(
         fa = float(np.asarray(r.axial_load).reshape(-1)[0])
         p, l10 = basic_lives(b, c_r, fr, fa)
         p_eq = None if p is None else float(p)
-        life = None if l10 is None else float(l10)
+        life = None if l10 is None or np.isnan(l10) else float(l10)
     return l10r, p_eq, life, c_r
 
 
@@ -222,7 +222,8 @@ def reference_lives(b: ResolvedBearing, r: CombinedDistribution, rotating: str, 
 def basic_lives(b: ResolvedBearing, c_r: float, fr: Any, fa: Any) -> tuple[Any, Any]:
     """ISO 281:2007's P = X F_r + Y F_a (5.2, Table 3) and L10 = (C_r/P)^3 (5.3) of every
     (F_r, F_a) [N]: P = F_r without an axial load; (None, None) with one where C0r or f0 is
-    unknown (not a catalogue bearing). [N], [10^6 rev]"""
+    unknown (not a catalogue bearing). Under a moment alone (F_r = F_a = 0) P = 0 and L10 is
+    NaN: ISO 281 has no life for it (L10r, ISO/TS 16281, has). [N], [10^6 rev]"""
     from bearingload.bearings.life import equivalent_load_deep_groove, rating_life
 
     fr, fa = np.asarray(fr, dtype=float), np.asarray(fa, dtype=float)
@@ -233,7 +234,9 @@ def basic_lives(b: ResolvedBearing, c_r: float, fr: Any, fa: Any) -> tuple[Any, 
         p = fr
     else:
         return None, None
-    return p, rating_life(c_r, p)  # P > 0: the solver refuses a case without load
+    p = np.asarray(p, dtype=float)
+    life = np.where(p > 0, rating_life(c_r, np.where(p > 0, p, 1.0)), np.nan)
+    return p, life if life.ndim else float(life)
 
 
 def combined_values(c: CombinedCase) -> dict[str, Any]:
