@@ -77,3 +77,17 @@ def test_a_moment_alone_is_solved_with_its_L10r_and_no_iso281_life():
     head, values = alone.stdout.splitlines()
     got = dict(zip(lines[0].split(","), lines[1].split(","), strict=True))
     assert all(got[k] == v for k, v in zip(head.split(","), values.split(","), strict=True))
+
+
+def test_library_errors_name_a_number_not_the_repr_of_an_array():
+    """validate.finite_positive wrote 'got array([ 1., -2.])' (numpy's repr) into messages
+    that reach the terminal; it names the first offending value, as validate.positive does."""
+    import numpy as np
+
+    from bearingload.bearings.life import rating_life
+    from bearingload.errors import InputError
+
+    for value, shown in ((np.array(0.0), "got 0"), (np.array([1.0, -2.0]), "got -2")):
+        with pytest.raises(InputError, match=f"{shown}$") as info:
+            rating_life(1000.0, value)
+        assert "array" not in str(info.value)
