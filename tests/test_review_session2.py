@@ -91,3 +91,13 @@ def test_library_errors_name_a_number_not_the_repr_of_an_array():
         with pytest.raises(InputError, match=f"{shown}$") as info:
             rating_life(1000.0, value)
         assert "array" not in str(info.value)
+
+
+def test_a_skipped_row_names_the_column_not_the_library_parameter():
+    """A combined row without any load was skipped as 'radial_load: give a radial load ...':
+    a batch file has no column radial_load (its column is load), as solve names --load."""
+    r = _batch("bearing,load,axial_load\n6205,0,0\n6205,1kN,0\n")
+    assert r.exit_code == 1
+    assert r.stderr.startswith(
+        "Warning: row 2: load: give a radial load, an axial load or a moment"
+    )

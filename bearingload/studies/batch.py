@@ -22,7 +22,7 @@ from typing import Any
 import numpy as np
 
 from bearingload.errors import BearingloadError, InputError
-from bearingload.studies.batch_input import Block, CellParser, Header
+from bearingload.studies.batch_input import Block, CellParser, Header, row_message
 from bearingload.studies.loaded_bearing import DEFAULT_REVOLUTIONS
 
 
@@ -89,7 +89,7 @@ class BatchSolver:
             angle = v.get("cage_angle", 0.0)
             angle = 180.0 / b.balls if angle == "half" else angle
         except BearingloadError as exc:
-            errors[row] = str(exc)
+            errors[row] = row_message(exc)
             return None
         return {"row": row, "bearing": b, "load": v["load"],
                 "axial_load": v.get("axial_load", 0.0), "moment": v.get("moment"),
@@ -261,7 +261,7 @@ class BatchSolver:
                     if n != "exponent":
                         parsed[n] = self.parsers[n].parse(t, m)
             except InputError as exc:
-                errors[row] = str(exc)
+                errors[row] = row_message(exc)
                 continue
             out.append((row, parsed))
         return out
@@ -298,7 +298,7 @@ class BatchSolver:
             if angle == "half":
                 angle = 180.0 / z if z >= 1 else 0.0  # a bad z is named by the checks
         except BearingloadError as exc:
-            errors[row] = str(exc)
+            errors[row] = row_message(exc)
             return None
         return {"row": row, "bearing": b, "balls": z, "load": v["load"], "stiffness": k,
                 "clearance": g, "cage_angle": angle,
@@ -457,7 +457,7 @@ def _solve_rows(rows: Rows, errors: dict[int, str]) -> list[Part]:
         try:
             Case.of(*(arrays[k][i] for k in INPUTS))
         except InputError as exc:
-            errors[rows.numbers[i]] = str(exc)
+            errors[rows.numbers[i]] = row_message(exc)
     out = []
     methods = dict.fromkeys(rows.methods)
     if len(methods) == 1 and not any(n in errors for n in rows.numbers):
@@ -488,7 +488,7 @@ def _solve_method(method: str, rows: Rows, errors: dict[int, str]) -> list[Part]
         try:
             out += _solve_method(method, rows.take([i]), errors)
         except (BearingloadError, ValueError, ArithmeticError) as exc:
-            errors[number] = str(exc)
+            errors[number] = row_message(exc)
     return out
 
 

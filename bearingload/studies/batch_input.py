@@ -61,6 +61,21 @@ BEARING_COLUMNS = (
     "clearance_pick",
     "revolutions",
 )
+#: Library parameter names -> the column of a batch file they come from: a skipped row's
+#: reason names the column the user wrote (as the command line names the option).
+_COLUMN_OF = {
+    "radial_load": "load",
+    "D_w": "ball_diameter",
+    "ball-diameter": "ball_diameter",
+    "d_m": "pitch_diameter",
+    "pitch-diameter": "pitch_diameter",
+    "f_i": "inner_conformity",
+    "f_o": "outer_conformity",
+    "E1": "modulus",
+    "nu1": "poisson",
+    "pick": "clearance_pick",
+    "bore": "clearance",
+}
 _HEADER = re.compile(r"^\s*([^\[\]]*?)\s*(?:\[\s*([^\]]*?)\s*\])?\s*$")
 
 
@@ -315,6 +330,12 @@ def _quoted_blocks(
     block.errors.update(errors)
     if len(block):
         yield block
+
+
+def row_message(exc: Exception) -> str:
+    """The reason a row is skipped, ``column: message``, from a library error."""
+    column = _COLUMN_OF.get(getattr(exc, "parameter", ""))
+    return str(exc) if column is None else f"{column}: {str(exc).split(': ', 1)[-1]}"
 
 
 class CellParser:
