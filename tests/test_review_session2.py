@@ -101,3 +101,22 @@ def test_a_skipped_row_names_the_column_not_the_library_parameter():
     assert r.stderr.startswith(
         "Warning: row 2: load: give a radial load, an axial load or a moment"
     )
+
+
+@pytest.mark.parametrize("chunk", ["1", "2", "100"])
+def test_a_quote_never_closed_is_named_where_it_opens(chunk):
+    """An unclosed quote made the csv reader take every line to the end of the file into one
+    cell; batch then named the LAST line, 'row 6: malformed line: 2 cells', and rows 4 and 5
+    vanished without a word. Now the row where the quote opens is named, with the span."""
+    text = 'balls,load,stiffness\n8,1000,46000\n8,"1000,46000\n8,1000,46000\n8,1000,46000\n'
+    r = _batch(text, "--chunk-size", chunk)
+    assert r.exit_code == 1
+    assert r.stderr.startswith(
+        "Warning: row 3: a quote opened in this row is never closed: rows 3 to 5 (the end of "
+        "the file) were read as one cell"
+    )
+    assert [line.split(",")[0] for line in r.stdout.splitlines()[1:]] == ["2"]
+    closed = 'balls,load,stiffness\n8,"10\n00",46000\n8,"2000",46000\n'  # closed: as before
+    r = _batch(closed, "--chunk-size", chunk)
+    assert "row 3: load: unknown unit '00'" in r.stderr
+    assert [line.split(",")[0] for line in r.stdout.splitlines()[1:]] == ["4"]

@@ -292,12 +292,15 @@ def _quoted_blocks(
     first: Iterator[tuple[int, str]], rest: Iterator[tuple[int, str]], size: int
 ) -> Iterator[Block]:
     """Blocks read by the csv module from ``first`` and then ``rest``; a record's row number is
-    the number of its last line."""
+    the number of its last line. A quote never closed (an odd number of quote characters in a
+    record of several lines: the reader took every line to the end of the file into one cell)
+    is a bad row named by the row where it opened."""
     import csv
     from itertools import chain
 
     errors: dict[int, str] = {}
     last = [0]
+    opened = [0, 0]  # the first row of the record being read, and its quote characters
 
     def texts() -> Iterator[str]:
         for number, text in chain(first, rest):
@@ -307,6 +310,8 @@ def _quoted_blocks(
                 yield ""  # a blank line: skipped by the reader
             else:
                 last[0] = number
+                opened[0] = opened[0] or number
+                opened[1] += text.count('"')
                 yield text + "\n"
 
     reader = csv.reader(texts())
@@ -318,6 +323,14 @@ def _quoted_blocks(
             break
         except csv.Error:
             row = ["\0"]  # unreadable: a cell count that never fits
+        start, quotes = opened
+        opened[:] = [0, 0]
+        if quotes % 2 and start < last[0]:
+            errors[start] = (
+                f"a quote opened in this row is never closed: rows {start} to {last[0]} (the end "
+                "of the file) were read as one cell"
+            )
+            row = []
         block.errors.update(errors)
         errors.clear()
         if row:
