@@ -140,3 +140,12 @@ def test_no_function_is_over_80_lines_of_code():
                 if body and body[-1].end_lineno - body[0].lineno + 1 > 80:  # type: ignore[operator]
                     long.append(f"{path.name}:{node.name}")
     assert long == []
+
+
+def test_an_empty_load_cell_says_the_load_is_missing():
+    """An empty load cell of rings given by z and K was skipped as 'load: missing (give balls
+    and stiffness, or a bearing)', advice that does not fit; rows of bearings said 'load:
+    missing: every row needs a load'. Both now say the latter."""
+    for text in ("balls,load,stiffness\n8,,46000\n", "bearing,load\n306,\n"):
+        r = _batch(text)
+        assert r.stderr.startswith("Warning: row 2: load: missing: every row needs a load\n")

@@ -206,7 +206,7 @@ class BatchSolver:
         if name not in texts:
             if default is None:
                 for i in range(n):
-                    bad.setdefault(i, f"{name}: missing (give balls and stiffness, or a bearing)")
+                    bad.setdefault(i, f"{name}: {_missing(name)}")
                 return np.ones(n)
             return np.full(n, default)
         cells = texts[name]
@@ -224,7 +224,7 @@ class BatchSolver:
             try:
                 if not text.strip():
                     if default is None:
-                        raise InputError(name, "missing (give balls and stiffness, or a bearing)")
+                        raise InputError(name, _missing(name))
                     out[i] = default
                     continue
                 v = parser.parse(text, 1.5 if m is None else float(m[i]))
@@ -386,6 +386,13 @@ def _implausible(name: str, kind: str, values: np.ndarray) -> bool:
         return False
     low, high, _ = rule
     return bool(np.any((values < low) | (values >= high)))
+
+
+def _missing(name: str) -> str:
+    """Why an empty cell of a column without a default is a bad row."""
+    if name == "load":
+        return "missing: every row needs a load"  # as for rows of bearings
+    return "missing (give balls and stiffness, or a bearing)"
 
 
 def _malformed(cells: int, columns: int) -> str:
