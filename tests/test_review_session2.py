@@ -149,3 +149,10 @@ def test_an_empty_load_cell_says_the_load_is_missing():
     for text in ("balls,load,stiffness\n8,,46000\n", "bearing,load\n306,\n"):
         r = _batch(text)
         assert r.stderr.startswith("Warning: row 2: load: missing: every row needs a load\n")
+
+
+def test_errata_only_differing_title_says_the_filter():
+    """errata --only-differing (without --summary) kept the title 'every printed number the
+    project recomputes' over a table of the differing ones only (json 'title' too)."""
+    r = _run("errata", "--only-differing", "--format", "json")
+    assert '"title": "Published vs computed: the printed numbers that differ' in r.stdout
