@@ -156,3 +156,19 @@ def test_errata_only_differing_title_says_the_filter():
     project recomputes' over a table of the differing ones only (json 'title' too)."""
     r = _run("errata", "--only-differing", "--format", "json")
     assert '"title": "Published vs computed: the printed numbers that differ' in r.stdout
+
+
+@pytest.mark.parametrize("chunk", ["1", "100"])
+def test_a_row_failing_alone_in_its_method_or_chunk_is_named_not_fatal(chunk):
+    """A row whose solve fails (a load too small for the rating life, a one-ball approach out
+    of range) ended the whole run with 'Error: Invalid value for '--load': ...' (exit 2, the
+    csv header already written) when it was the only row of its method or of its chunk: the
+    row-by-row fallback re-raised for a single row. It is a skipped row like any other."""
+    for text in (
+        "load,bearing,method\n1e-300,306,stribeck\n1000,306,exact\n",
+        "load,bearing\n1e-300,NU206\n1000,306\n",
+    ):
+        r = _batch(text, "--chunk-size", chunk)
+        assert r.exit_code == 1, r.output
+        assert r.stderr.startswith("Warning: row 2: load: ")
+        assert [line.split(",")[0] for line in r.stdout.splitlines()[1:]] == ["3"]

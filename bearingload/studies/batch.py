@@ -478,7 +478,9 @@ def _solve_rows(rows: Rows, errors: dict[int, str]) -> list[Part]:
 
 
 def _solve_method(method: str, rows: Rows, errors: dict[int, str]) -> list[Part]:
-    """One vectorised call for all ``rows`` of one method; one call per row if that fails."""
+    """One vectorised call for all ``rows`` of one method; one call per row if that fails (a
+    row that fails alone is named in ``errors``, also when it is the only row of its method or
+    of its chunk)."""
     from bearingload.models.case import INPUTS, Case
     from bearingload.models.registry import get_method
 
@@ -487,15 +489,13 @@ def _solve_method(method: str, rows: Rows, errors: dict[int, str]) -> list[Part]
         with np.errstate(all="ignore"):
             result = model.run(Case.of(*(rows.arrays[k] for k in INPUTS)))
         return [_values(result, rows)]
-    except (BearingloadError, ValueError, ArithmeticError):
+    except (BearingloadError, ValueError, ArithmeticError) as exc:
         if len(rows.numbers) == 1:
-            raise
+            errors[rows.numbers[0]] = row_message(exc)
+            return []
     out: list[Part] = []
-    for i, number in enumerate(rows.numbers):
-        try:
-            out += _solve_method(method, rows.take([i]), errors)
-        except (BearingloadError, ValueError, ArithmeticError) as exc:
-            errors[number] = row_message(exc)
+    for i in range(len(rows.numbers)):
+        out += _solve_method(method, rows.take([i]), errors)
     return out
 
 
