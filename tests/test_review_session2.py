@@ -172,3 +172,13 @@ def test_a_row_failing_alone_in_its_method_or_chunk_is_named_not_fatal(chunk):
         assert r.exit_code == 1, r.output
         assert r.stderr.startswith("Warning: row 2: load: ")
         assert [line.split(",")[0] for line in r.stdout.splitlines()[1:]] == ["3"]
+
+
+def test_stderr_is_in_row_order_whatever_the_chunk_size():
+    """Within a chunk the skipped rows were printed before the checks' warnings, so with the
+    default chunk 'row 4: ...' came before 'row 3: only one ball carries the load', and with
+    --chunk-size 1 after it: standard error hung on --chunk-size."""
+    text = "balls,bearing,load\n8,306,1000\n3,306,3\n0,306,-5\n"
+    found = {c: _batch(text, "--chunk-size", c).stderr for c in ("1", "2", "100")}
+    assert found["1"] == found["2"] == found["100"]
+    assert found["1"].index("row 3:") < found["1"].index("row 4:")

@@ -104,16 +104,8 @@ def batch(
                 sink.fail()
                 row, message = part.errors[0]
                 raise click.UsageError(f"Invalid value in row {row}: {message}")
-            for row, message in part.errors:
-                progress.clear()
-                click.echo(f"Warning: row {row}: {message}", err=True)
             skipped += part.errors
-            for row, found in zip(part.rows, part.values.get("warnings", []), strict=False):
-                for text in found:
-                    warned += 1
-                    if warned <= MAX_WARNINGS_SHOWN:
-                        progress.clear()
-                        click.echo(f"Warning: row {row}: {text}", err=True)
+            warned = _row_messages(part, warned, progress)
             if fmt == "csv":
                 if part.rows:
                     sink.write(csv_rows(columns, part.rows, part.values))
@@ -144,6 +136,21 @@ def batch(
     if skipped:
         click.echo(f"Warning: {len(skipped)} of {total} rows skipped (exit status 1)", err=True)
         click.get_current_context().exit(1)
+
+
+def _row_messages(part: Any, warned: int, progress: _Progress) -> int:
+    """Print the chunk's skipped rows and the checks' warnings in row order (so that stderr
+    does not depend on --chunk-size), the warnings up to :data:`MAX_WARNINGS_SHOWN` in all;
+    return the number of warnings so far."""
+    found = zip(part.rows, part.values.get("warnings", []), strict=False)
+    messages = [(row, text, False) for row, text in part.errors]
+    messages += [(row, text, True) for row, texts in found for text in texts]
+    for row, text, warning in sorted(messages, key=lambda m: m[0]):  # stable: a row's order
+        warned += warning
+        if not warning or warned <= MAX_WARNINGS_SHOWN:
+            progress.clear()
+            click.echo(f"Warning: row {row}: {text}", err=True)
+    return warned
 
 
 def _all(first: Any, rest: Any) -> Any:
