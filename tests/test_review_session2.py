@@ -182,3 +182,14 @@ def test_stderr_is_in_row_order_whatever_the_chunk_size():
     found = {c: _batch(text, "--chunk-size", c).stderr for c in ("1", "2", "100")}
     assert found["1"] == found["2"] == found["100"]
     assert found["1"].index("row 3:") < found["1"].index("row 4:")
+
+
+def test_a_row_with_two_errors_names_the_same_one_whatever_the_chunk():
+    """A balls cell of 8.5 was read by numpy without the whole-number check when its column
+    was all bare numbers, so a row with two errors was named by one or the other depending
+    on its neighbours ('stiffness: missing' or 'balls: must be a whole number'); and the
+    row checks overwrote the parser's first error."""
+    text = "load,balls,cage_angle\n-5,9.5,0\n300kgf,,-400\n"
+    out = {c: _batch(text, "--chunk-size", c).stderr for c in ("1", "2")}
+    assert out["1"] == out["2"]
+    assert out["1"].startswith("Warning: row 2: balls: must be a whole number (got 9.5)")

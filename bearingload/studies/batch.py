@@ -130,6 +130,8 @@ class BatchSolver:
         parser = self.parsers[name]
         if not np.all(np.isfinite(values)):
             return None
+        if parser.kind == "count" and np.any(values != np.round(values)):
+            return None  # 8.5 balls: named by the cell parser, as when another cell needs it
         if not parser.unit:
             return None if _implausible(name, parser.kind, values) else values
         if name == "stiffness":
@@ -464,7 +466,7 @@ def _solve_rows(rows: Rows, errors: dict[int, str]) -> list[Part]:
         try:
             Case.of(*(arrays[k][i] for k in INPUTS))
         except InputError as exc:
-            errors[rows.numbers[i]] = row_message(exc)
+            errors.setdefault(rows.numbers[i], row_message(exc))  # a row's first error kept
     out = []
     methods = dict.fromkeys(rows.methods)
     if len(methods) == 1 and not any(n in errors for n in rows.numbers):
