@@ -193,3 +193,24 @@ def test_a_row_with_two_errors_names_the_same_one_whatever_the_chunk():
     out = {c: _batch(text, "--chunk-size", c).stderr for c in ("1", "2")}
     assert out["1"] == out["2"]
     assert out["1"].startswith("Warning: row 2: balls: must be a whole number (got 9.5)")
+
+
+def test_a_convergence_failure_with_nan_residuals_prints_no_numpy_warning():
+    """A moment alone at half a pitch (75-313, M = 2 N m, cage angle 22.5°) does not converge
+    (a finding of this review, not fixed here); the ConvergenceError path took np.nanmax of
+    all-NaN residuals, a RuntimeWarning ('All-NaN slice encountered') on the terminal."""
+    import warnings
+
+    from bearingload.bearings.resolve import resolve_bearing
+    from bearingload.errors import ConvergenceError
+    from bearingload.models.combined import solve_combined
+
+    b = resolve_bearing("75-313")
+    with warnings.catch_warnings():
+        warnings.simplefilter("error")
+        try:
+            solve_combined(b.balls, 0.0, 0.0, ball_diameter=b.ball_diameter,
+                           pitch_diameter=b.pitch_diameter, f_i=b.f_i, f_o=b.f_o,
+                           clearance=b.clearance, cage_angle=22.5, moment=2000.0)  # fmt: skip
+        except ConvergenceError:
+            pass
