@@ -50,6 +50,7 @@ def bracketed_root(
     >>> round(bracketed_root(lambda x: x * x - 2.0, 0.0, 2.0, xtol=1e-15), 14)
     1.41421356237309
     """
+    a, b = float(a), float(b)
     fa, fb = float(f(a)), float(f(b))
     for x, fx in ((a, fa), (b, fb)):
         if fx != fx or fx in (float("inf"), float("-inf")):

@@ -39,8 +39,9 @@ def positive(name: str, value: object, unit: str) -> np.ndarray:
 def finite_positive(name: str, value: object) -> np.ndarray:
     """Return ``value`` as a float array; every element must be a finite number > 0."""
     arr = np.asarray(value, dtype=float)
-    if not np.all(np.isfinite(arr) & (arr > 0)):
-        raise InputError(name, f"must be a finite number greater than 0; got {value!r}")
+    good = np.isfinite(arr) & (arr > 0)
+    if not np.all(good):  # the first offending value, not the repr of an array
+        raise InputError(name, f"must be a finite number greater than 0; got {_worst(arr, ~good)}")
     return arr
 
 

@@ -105,18 +105,8 @@ def batch(
                 sink.fail()
                 row, message = part.errors[0]
                 raise click.UsageError(f"Invalid value in row {row}: {message}")
-            for row, message in part.errors:
-                progress.clear()
-                click.echo(f"Warning: row {row}: {message}", err=True)
             skipped += part.errors
-            found_by_row = part.values.get("warnings", [])
-            for i in compress(range(len(found_by_row)), found_by_row):  # rows with warnings
-                row, found = part.rows[i], found_by_row[i]
-                for text in found:
-                    warned += 1
-                    if warned <= MAX_WARNINGS_SHOWN:
-                        progress.clear()
-                        click.echo(f"Warning: row {row}: {text}", err=True)
+            warned = _row_messages(part, warned, progress)
             if fmt == "csv":
                 if part.rows:
                     sink.write(csv_rows(columns, part.rows, part.values))
@@ -147,6 +137,22 @@ def batch(
     if skipped:
         click.echo(f"Warning: {len(skipped)} of {total} rows skipped (exit status 1)", err=True)
         click.get_current_context().exit(1)
+
+
+def _row_messages(part: Any, warned: int, progress: _Progress) -> int:
+    """Print the chunk's skipped rows and the checks' warnings in row order (so that stderr
+    does not depend on --chunk-size), the warnings up to :data:`MAX_WARNINGS_SHOWN` in all;
+    return the number of warnings so far."""
+    found = part.values.get("warnings", [])
+    messages = [(row, text, False) for row, text in part.errors]
+    messages += [(part.rows[i], text, True)
+                 for i in compress(range(len(found)), found) for text in found[i]]  # fmt: skip
+    for row, text, warning in sorted(messages, key=lambda m: m[0]):  # stable: a row's order
+        warned += warning
+        if not warning or warned <= MAX_WARNINGS_SHOWN:
+            progress.clear()
+            click.echo(f"Warning: row {row}: {text}", err=True)
+    return warned
 
 
 def _all(first: Any, rest: Any) -> Any:

@@ -644,7 +644,9 @@ def _minimise(p: _Problem, v: np.ndarray, k: np.ndarray) -> tuple[np.ndarray, np
     residual = np.linalg.norm(grad, axis=1) / size
     bad = ~(residual <= ACCEPT)
     if np.any(bad) or active.size:
-        worst = float(np.nanmax(residual[bad])) if np.any(bad) else float(residual.max())
+        found = residual[bad] if np.any(bad) else residual
+        known = found[~np.isnan(found)]  # nanmax of all-NaN would warn on the terminal
+        worst = float(known.max()) if known.size else math.nan
         if np.any(bad):
             raise ConvergenceError(
                 "combined-load ring equilibrium",

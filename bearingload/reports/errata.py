@@ -111,7 +111,13 @@ def errata_report(
     if summary:
         return render([summary_table(rows, only_differing)], fmt)
     if only_differing:
+        checked = len(rows)
         rows = [r for r in rows if r["verdict"] == DIFFERS]
+        title = (
+            "Published vs computed: the printed numbers that differ from the computation "
+            f"({len(rows)} of {checked} checked)"
+        )
+        return render([errata_table(rows, title)], fmt)
     return render([errata_table(rows)], fmt)
 
 

@@ -114,6 +114,8 @@ def _notes(t: LifeAgainstClearance) -> list[str]:
         f"L10 ISO 281: ISO 281:2007 basic life (C_r/P)^3 with P = X F_r + Y F_a = {p:.6g} N "
         "(5.2, Table 3, normal clearance), the same in every row: it does not see the clearance."
         if t.rating_life is not None and p is not None
+        else "ISO 281's basic life: none under a moment alone (P = X F_r + Y F_a = 0 N)."
+        if p == 0
         else "ISO 281's basic life needs P = X F_r + Y F_a, i.e. C0r and f0 of a catalogue "
         "bearing: not given for a ball set given by hand."
     )

@@ -22,7 +22,7 @@ from typing import Any
 import numpy as np
 
 from bearingload.errors import BearingloadError, InputError
-from bearingload.studies.batch_input import COLUMNS, Block, CellParser, Header
+from bearingload.studies.batch_input import COLUMNS, Block, CellParser, Header, row_message
 from bearingload.studies.loaded_bearing import DEFAULT_REVOLUTIONS
 
 
@@ -88,7 +88,7 @@ class BatchSolver:
             angle = v.get("cage_angle", 0.0)
             angle = 180.0 / b.balls if angle == "half" else angle
         except BearingloadError as exc:
-            errors[row] = str(exc)
+            errors[row] = row_message(exc)
             return None
         return {"row": row, "bearing": b, "load": v["load"],
                 "axial_load": v.get("axial_load", 0.0), "moment": v.get("moment"),
@@ -117,7 +117,7 @@ class BatchSolver:
             if name not in given:
                 arrays[name] = np.full(n, default)
                 continue
-            found = self._bare(name, given[name], arrays["exponent"])
+            found = self._bare(name, given[name], arrays.get("exponent"))
             if found is None:
                 return None
             arrays[name] = found
@@ -129,13 +129,19 @@ class BatchSolver:
         parser = self.parsers[name]
         if not np.all(np.isfinite(values)):
             return None
+        if parser.kind == "count" and np.any(values != np.round(values)):
+            return None  # 8.5 balls: named by the cell parser, as when another cell needs it
         if not parser.unit:
             return None if _implausible(name, parser.kind, values) else values
         if name == "stiffness":
             from bearingload.units import stiffness_factor
 
             assert m is not None
-            factors = {e: stiffness_factor(parser.unit, e, parameter=name) for e in set(m.tolist())}
+            try:  # a unit of another exponent: the cell parser names the row
+                factors = {e: stiffness_factor(parser.unit, e, parameter=name)
+                           for e in set(m.tolist())}  # fmt: skip
+            except InputError:
+                return None
             return values * np.array([factors[e] for e in m.tolist()])
         from bearingload.units import parse_quantity
 
@@ -201,12 +207,14 @@ class BatchSolver:
         if name not in texts:
             if default is None:
                 for i in range(n):
-                    bad.setdefault(i, f"{name}: missing (give balls and stiffness, or a bearing)")
+                    bad.setdefault(i, f"{name}: {_missing(name)}")
                 return np.ones(n)
             return np.full(n, default)
         cells = texts[name]
         parser = self.parsers[name]
         try:  # bare numbers at once; otherwise (and to name the bad ones) cell by cell
+            if "_" in "".join(cells):  # numpy reads '1_000' as Python does; the cells refuse it
+                raise ValueError("underscores")
             found = self._bare(name, np.array(cells, dtype=float), m)
             if found is not None:
                 return found
@@ -217,7 +225,7 @@ class BatchSolver:
             try:
                 if not text.strip():
                     if default is None:
-                        raise InputError(name, "missing (give balls and stiffness, or a bearing)")
+                        raise InputError(name, _missing(name))
                     out[i] = default
                     continue
                 v = parser.parse(text, 1.5 if m is None else float(m[i]))
@@ -284,7 +292,7 @@ class BatchSolver:
             try:
                 cases.append(self._case_of(v | {"exponent": v.get("exponent", 1.5)}))
             except BearingloadError as exc:
-                cases.append(str(exc))
+                cases.append(row_message(exc))
         bad = dict(failed)  # a row's first error: its cells, its bearing, its load ...
         for i, code in enumerate(codes.tolist()):
             if isinstance(cases[code], str):
@@ -336,8 +344,8 @@ class BatchSolver:
         or None when some cell needs the parser (a unit or word in the cell, a blank, a bad or
         implausible number, a fraction in the count of balls)."""
         kind = COLUMNS[name]
-        if kind in ("text", "pick", "ring", "exponent") or not texts:
-            return None
+        if kind in ("text", "pick", "ring", "exponent") or not texts or "_" in "".join(texts):
+            return None  # numpy reads '1_000' as Python does; the cell parser refuses it
         try:
             values = np.array(texts, dtype=float)
         except ValueError:
@@ -379,7 +387,7 @@ class BatchSolver:
                     try:
                         hit = (True, parser.parse(t, e) if t else _EMPTY)
                     except InputError as exc:
-                        hit = (False, str(exc))
+                        hit = (False, row_message(exc))
                     cache[key] = hit
                 if not hit[0] and i not in failed:
                     failed[i] = hit[1]
@@ -502,6 +510,13 @@ def _implausible(name: str, kind: str, values: np.ndarray) -> bool:
     return bool(np.any((values < low) | (values >= high)))
 
 
+def _missing(name: str) -> str:
+    """Why an empty cell of a column without a default is a bad row."""
+    if name == "load":
+        return "missing: every row needs a load"  # as for rows of bearings
+    return "missing (give balls and stiffness, or a bearing)"
+
+
 def _malformed(cells: int, columns: int) -> str:
     return f"malformed line: {cells} cells, the header names {columns} columns"
 
@@ -571,7 +586,7 @@ def _solve_rows(rows: Rows, errors: dict[int, str]) -> list[Part]:
         try:
             Case.of(*(arrays[k][i] for k in INPUTS))
         except InputError as exc:
-            errors[rows.numbers[i]] = str(exc)
+            errors.setdefault(rows.numbers[i], row_message(exc))  # a row's first error kept
     out = []
     methods = dict.fromkeys(rows.methods)
     if len(methods) == 1 and not any(n in errors for n in rows.numbers):
@@ -585,7 +600,9 @@ def _solve_rows(rows: Rows, errors: dict[int, str]) -> list[Part]:
 
 
 def _solve_method(method: str, rows: Rows, errors: dict[int, str]) -> list[Part]:
-    """One vectorised call for all ``rows`` of one method; one call per row if that fails."""
+    """One vectorised call for all ``rows`` of one method; one call per row if that fails (a
+    row that fails alone is named in ``errors``, also when it is the only row of its method or
+    of its chunk)."""
     from bearingload.models.case import INPUTS, Case
     from bearingload.models.registry import get_method
 
@@ -594,15 +611,13 @@ def _solve_method(method: str, rows: Rows, errors: dict[int, str]) -> list[Part]
         with np.errstate(all="ignore"):
             result = model.run(Case.of(*(rows.arrays[k] for k in INPUTS)))
         return [_values(result, rows)]
-    except (BearingloadError, ValueError, ArithmeticError):
+    except (BearingloadError, ValueError, ArithmeticError) as exc:
         if len(rows.numbers) == 1:
-            raise
+            errors[rows.numbers[0]] = row_message(exc)
+            return []
     out: list[Part] = []
-    for i, number in enumerate(rows.numbers):
-        try:
-            out += _solve_method(method, rows.take([i]), errors)
-        except (BearingloadError, ValueError, ArithmeticError) as exc:
-            errors[number] = str(exc)
+    for i in range(len(rows.numbers)):
+        out += _solve_method(method, rows.take([i]), errors)
     return out
 
 

@@ -20,6 +20,7 @@ from typing import Any
 import numpy as np
 
 from bearingload.errors import BearingloadError
+from bearingload.studies.batch_input import row_message
 
 #: The output columns of a combined-load file (those of ``solve --format csv`` with an axial
 #: load), after the row number.
@@ -70,7 +71,7 @@ def _solve_group(group: list[dict[str, Any]], errors: dict[int, str]) -> list[Pa
             return [_group_values(group)]
     except (BearingloadError, ValueError, ArithmeticError) as exc:
         if len(group) == 1:
-            errors[group[0]["row"]] = str(exc)
+            errors[group[0]["row"]] = row_message(exc)
             return []
     out: list[Part] = []
     for r in group:

@@ -61,6 +61,21 @@ BEARING_COLUMNS = (
     "clearance_pick",
     "revolutions",
 )
+#: Library parameter names -> the column of a batch file they come from: a skipped row's
+#: reason names the column the user wrote (as the command line names the option).
+_COLUMN_OF = {
+    "radial_load": "load",
+    "D_w": "ball_diameter",
+    "ball-diameter": "ball_diameter",
+    "d_m": "pitch_diameter",
+    "pitch-diameter": "pitch_diameter",
+    "f_i": "inner_conformity",
+    "f_o": "outer_conformity",
+    "E1": "modulus",
+    "nu1": "poisson",
+    "pick": "clearance_pick",
+    "bore": "clearance",
+}
 _HEADER = re.compile(r"^\s*([^\[\]]*?)\s*(?:\[\s*([^\]]*?)\s*\])?\s*$")
 
 
@@ -277,12 +292,15 @@ def _quoted_blocks(
     first: Iterator[tuple[int, str]], rest: Iterator[tuple[int, str]], size: int
 ) -> Iterator[Block]:
     """Blocks read by the csv module from ``first`` and then ``rest``; a record's row number is
-    the number of its last line."""
+    the number of its last line. A quote never closed (an odd number of quote characters in a
+    record of several lines: the reader took every line to the end of the file into one cell)
+    is a bad row named by the row where it opened."""
     import csv
     from itertools import chain
 
     errors: dict[int, str] = {}
     last = [0]
+    opened = [0, 0]  # the first row of the record being read, and its quote characters
 
     def texts() -> Iterator[str]:
         for number, text in chain(first, rest):
@@ -292,6 +310,8 @@ def _quoted_blocks(
                 yield ""  # a blank line: skipped by the reader
             else:
                 last[0] = number
+                opened[0] = opened[0] or number
+                opened[1] += text.count('"')
                 yield text + "\n"
 
     reader = csv.reader(texts())
@@ -303,6 +323,14 @@ def _quoted_blocks(
             break
         except csv.Error:
             row = ["\0"]  # unreadable: a cell count that never fits
+        start, quotes = opened
+        opened[:] = [0, 0]
+        if quotes % 2 and start < last[0]:
+            errors[start] = (
+                f"a quote opened in this row is never closed: rows {start} to {last[0]} (the end "
+                "of the file) were read as one cell"
+            )
+            row = []
         block.errors.update(errors)
         errors.clear()
         if row:
@@ -315,6 +343,12 @@ def _quoted_blocks(
     block.errors.update(errors)
     if len(block):
         yield block
+
+
+def row_message(exc: Exception) -> str:
+    """The reason a row is skipped, ``column: message``, from a library error."""
+    column = _COLUMN_OF.get(getattr(exc, "parameter", ""))
+    return str(exc) if column is None else f"{column}: {str(exc).split(': ', 1)[-1]}"
 
 
 class CellParser:
@@ -387,10 +421,18 @@ class CellParser:
         return units.parse_quantity(text, kind, parameter=name)
 
 
+def _float(text: str) -> float:
+    """``float(text)`` without the underscores Python allows ('1_000'): the command line's
+    unit parser refuses them, and so must every cell, however its chunk is read."""
+    if "_" in text:
+        raise ValueError(text)
+    return float(text)
+
+
 def _plain(name: str, text: str) -> float | None:
     """A bare finite number, or None (then the unit parser reads the text)."""
     try:
-        v = float(text)
+        v = _float(text)
     except ValueError:
         return None
     if v != v or v in (float("inf"), float("-inf")):
@@ -400,7 +442,7 @@ def _plain(name: str, text: str) -> float | None:
 
 def _number(name: str, text: str, unit: str | None, *, whole: bool) -> float:
     try:
-        v = float(text)
+        v = _float(text)
     except ValueError:
         raise InputError(name, f"cannot read {text!r} as a number") from None
     if v != v or v in (float("inf"), float("-inf")):
@@ -413,7 +455,7 @@ def _number(name: str, text: str, unit: str | None, *, whole: bool) -> float:
 def _exponent(text: str) -> float:
     num, slash, den = text.partition("/")
     try:
-        return float(num) / float(den) if slash else float(text)
+        return _float(num) / _float(den) if slash else _float(text)
     except (ValueError, ZeroDivisionError):
         raise InputError(
             "exponent", f"{text!r} is neither a number nor a fraction like 10/9"

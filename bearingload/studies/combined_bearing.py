@@ -222,8 +222,8 @@ def reference_lives(b: ResolvedBearing, r: CombinedDistribution, rotating: str, 
 def basic_lives(b: ResolvedBearing, c_r: float, fr: Any, fa: Any) -> tuple[Any, Any]:
     """ISO 281:2007's P = X F_r + Y F_a (5.2, Table 3) and L10 = (C_r/P)^3 (5.3) of every
     (F_r, F_a) [N]: P = F_r without an axial load; (None, None) with one where C0r or f0 is
-    unknown (not a catalogue bearing). L10 is NaN where P = 0 (a moment alone: ISO 281 has no
-    life for it). [N], [10^6 rev]"""
+    unknown (not a catalogue bearing). Under a moment alone (F_r = F_a = 0) P = 0 and L10 is
+    NaN: ISO 281 has no life for it (L10r, ISO/TS 16281, has). [N], [10^6 rev]"""
     from bearingload.bearings.life import equivalent_load_deep_groove, rating_life
 
     fr, fa = np.asarray(fr, dtype=float), np.asarray(fa, dtype=float)
