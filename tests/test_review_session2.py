@@ -214,3 +214,40 @@ def test_a_convergence_failure_with_nan_residuals_prints_no_numpy_warning():
                            clearance=b.clearance, cage_angle=22.5, moment=2000.0)  # fmt: skip
         except ConvergenceError:
             pass
+
+
+def test_continuum_refuses_what_the_exact_model_refuses():
+    """K = 1e200 N/mm^1.5: one Error line naming the load and stiffness (it ended in an internal
+    error with numpy warnings)."""
+    import pytest
+
+    from bearingload.errors import InputError
+    from bearingload.models.continuum import solve_continuum
+
+    with pytest.raises(InputError, match="one-ball approach"):
+        solve_continuum(8, 1000.0, 1e200, clearance=-0.05)
+
+
+def test_a_roller_bearings_stiffness_is_read_in_its_own_unit():
+    """-K of a cylindrical roller bearing is N/mm^(10/9) (its m) unless --exponent says
+    otherwise: its unit is accepted, and N/mm^1.5 is refused instead of taken as N/mm^(10/9);
+    batch reads a roller row's stiffness the same way."""
+    from click.testing import CliRunner
+
+    from bearingload.cli import main
+
+    def run(*args):
+        return CliRunner().invoke(main, list(args))
+
+    given = run("solve", "NU206", "-F", "5kN", "-K", "3e5N/mm^(10/9)", "--format", "csv")
+    bare = run("solve", "NU206", "-F", "5kN", "-K", "3e5", "--format", "csv")
+    assert given.exit_code == 0 and given.stdout == bare.stdout
+    wrong = run("solve", "NU206", "-F", "5kN", "-K", "3e5N/mm^1.5")
+    assert wrong.exit_code == 2 and "exponent is 1.11111" in wrong.stderr
+    ball = run("solve", "306", "-F", "5kN", "-K", "3e5N/mm^1.5", "--format", "csv")
+    assert ball.exit_code == 0
+    text = "bearing,load,stiffness\nNU206,5kN,3e5N/mm^(10/9)\n306,5kN,3e5N/mm^1.5\n"
+    out = CliRunner().invoke(main, ["batch", "-", "--format", "csv"], input=text)
+    assert out.exit_code == 0, out.stderr
+    rows = out.stdout.splitlines()[1:]
+    assert rows[0].split(",")[5] == "300000.0" and rows[1].split(",")[5] == "300000.0"

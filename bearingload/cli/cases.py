@@ -19,7 +19,7 @@ def resolve_case(
     geometry: dict[str, Any],
 ) -> tuple[int, float, float, float, str]:
     """(z, K [N/mm^m], G_r [mm], m, context note) from a BEARING or hand-given balls, as solve."""
-    k_given = stiffness_value(stiffness, exponent)
+    k_given = stiffness_value(stiffness, exponent, bearing)
     if bearing is None and geometry["ball_diameter"] is None and geometry["pitch_diameter"] is None:
         from bearingload.bearings.clearance import clearance_length
 

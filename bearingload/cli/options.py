@@ -57,10 +57,12 @@ class CageAngle(click.ParamType):
             self.fail(str(exc).split(": ", 1)[-1], param, ctx)
 
 
-def stiffness_value(text: str | None, exponent: float) -> float | None:
-    """The --stiffness text in N/mm^m, its unit checked against the exponent m."""
+def stiffness_value(text: str | None, exponent: float, bearing: str | None = None) -> float | None:
+    """The --stiffness text in N/mm^m, its unit checked against the exponent m: the --exponent
+    given, else that of the BEARING's contact (10/9 for a cylindrical roller bearing)."""
     if text is None:
         return None
+    exponent = _contact_exponent(bearing, exponent)
     from bearingload.units import parse_stiffness
     from bearingload.validate import exponent as valid_exponent
 
@@ -76,6 +78,22 @@ def stiffness_value(text: str | None, exponent: float) -> float | None:
         raise click.UsageError(
             f"Invalid value for '--stiffness': {str(exc).split(': ', 1)[-1]}"
         ) from exc
+
+
+def _contact_exponent(bearing: str | None, exponent: float) -> float:
+    """``exponent`` if --exponent was given or no roller bearing is named, else 10/9."""
+    ctx = click.get_current_context(silent=True)
+    source = ctx.get_parameter_source("exponent") if ctx is not None else None
+    if bearing is None or source not in (None, click.core.ParameterSource.DEFAULT):
+        return exponent
+    from bearingload.bearings.designation import parse
+    from bearingload.constants import ROLLER_EXPONENT
+
+    try:
+        kind = parse(bearing).kind
+    except InputError:
+        return exponent  # the designation's own error comes later, where it is resolved
+    return ROLLER_EXPONENT if kind == "roller" else exponent
 
 
 def units_help(kind: str) -> str:

@@ -180,7 +180,7 @@ def solve(
         raise click.UsageError(
             "Invalid value for '--revolutions': must be a number of revolutions > 0, got nan"
         )
-    k_given = stiffness_value(stiffness, exponent)  # N/mm^m
+    k_given = stiffness_value(stiffness, exponent, bearing)  # N/mm^m
     methods = list_methods() if method == "all" else [method]
     geometry = {"balls": balls, "ball_diameter": ball_diameter, "pitch_diameter": pitch_diameter,
                 "f_i": inner_conformity, "f_o": outer_conformity, "modulus": modulus,

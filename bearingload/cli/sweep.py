@@ -217,7 +217,7 @@ def _combined(
     from bearingload.reports.combined_sweep import combined_sweep_report
     from bearingload.studies.combined_sweep import combined_sweep
 
-    k_given = stiffness_value(stiffness, exponent)
+    k_given = stiffness_value(stiffness, exponent, bearing)
     b = resolve_bearings(bearing, k_given, clearance, clearance_pick, exponent, **geometry)[0]
     result = combined_sweep(b, load, steps=steps, **combined_inputs(combined))
     text = combined_sweep_report(result, fmt, bearing_context(b))

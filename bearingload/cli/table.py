@@ -165,7 +165,7 @@ def table(
     from bearingload.reports.render import render
     from bearingload.reports.tables import design_table
 
-    k_given = stiffness_value(stiffness, exponent)  # N/mm^m
+    k_given = stiffness_value(stiffness, exponent, bearing)  # N/mm^m
     geometry: dict[str, Any] = dict(ball_diameter=ball_diameter, pitch_diameter=pitch_diameter,
                     f_i=inner_conformity, f_o=outer_conformity, modulus=modulus, poisson=poisson)  # fmt: skip
     if name == "life":

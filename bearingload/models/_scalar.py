@@ -302,7 +302,7 @@ def _kind(z: int, cage: float, phi1_deg: float) -> tuple[float, int]:
 
 
 def _in_range(f: float, scale: float, e_hat: float, m: float, z: int) -> bool:
-    """``_check_range`` of the vectorised path, as a test (False: let it raise)."""
+    """``check_range`` of the vectorised path, as a test (False: let it raise)."""
     if -1.0 <= e_hat <= 1e90 and 1e-90 <= scale <= 1e90 and 1e-250 <= f <= 1e250:
         if 1e-250 <= f / scale <= 1e250:  # inside every bound with room to spare
             return True

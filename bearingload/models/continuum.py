@@ -325,6 +325,11 @@ def solve_continuum(
         np.array(np.broadcast_to(a, shape), dtype=float).ravel() for a in (z, force, k_ball, e, m)
     )
 
+    from bearingload.models.equilibrium import check_range
+
+    with np.errstate(all="ignore"):  # the exact model's range: the same inputs refused alike
+        scale = (force / k_ball) ** (1.0 / m)
+        check_range(force, scale, e / scale, m, z)
     j0 = _integral_i(m) / np.pi
     x0 = (force / (z * k_ball * j0)) ** (1.0 / m)
     eta = e / x0

@@ -294,7 +294,7 @@ def solve(
     with np.errstate(all="ignore"):
         scale = (f / kk) ** (1.0 / m)  # approach of one ball carrying the whole load [mm]
         e_hat = (g / 2.0) / scale
-    _check_range(f, scale, e_hat, m, z)
+    check_range(f, scale, e_hat, m, z)
     frac, kind = _cage_kind(z, cage, phi1_deg)
     rows = _solve_groups(z, kind, frac, e_hat, m, tol)
     return _assemble(shape, z, f, kk, g, phi1_deg, m, scale, rows)
@@ -532,10 +532,12 @@ CLEARANCE_RATIO_MAX = 1e100
 RESULT_RANGE = (1e-300, 1e300)
 
 
-def _check_range(
+def check_range(
     f: np.ndarray, scale: np.ndarray, e_hat: np.ndarray, m: np.ndarray, z: np.ndarray
 ) -> None:
-    """Reject finite inputs whose scaled problem or results would leave double precision."""
+    """Reject finite inputs whose scaled problem or results would leave double precision
+    (``scale`` = (F/K)^(1/m) [mm], ``e_hat`` = (G_r/2)/scale [-]); the continuum model uses the
+    same range."""
     lo, hi = APPROACH_RANGE
     bad = ~((scale >= lo) & (scale <= hi))
     if np.any(bad):

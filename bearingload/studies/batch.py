@@ -360,6 +360,23 @@ class BatchSolver:
             return None
         return None if found is None else found.tolist()
 
+    def _contact_exponents(self, designations: Any, n: int) -> list[float]:
+        """Each row's m for reading its stiffness before an exponent column is read: 10/9 where
+        the row names a cylindrical roller bearing (as solve reads -K with one), else 1.5."""
+        if designations is None or "exponent" in self.header.names:
+            return [1.5] * n
+        from bearingload.bearings.designation import parse
+        from bearingload.constants import ROLLER_EXPONENT
+
+        kinds: dict[str, float] = {}
+        for text in set(designations):
+            try:
+                roller = parse(text.strip()).kind == "roller" if text.strip() else False
+            except InputError:
+                roller = False  # named by the bearing's own error
+            kinds[text] = ROLLER_EXPONENT if roller else 1.5
+        return [kinds[t] for t in designations]
+
     def _parsed_columns(self, rows: list[list[str]]) -> tuple[dict[str, list[Any]], dict[int, str]]:
         """Every column's cells parsed (``_EMPTY`` for a blank cell), and each failing row's first
         error: the exponent first (other cells depend on it), then in file order."""
@@ -370,7 +387,7 @@ class BatchSolver:
         ]
         parsed: dict[str, list[Any]] = {}
         failed: dict[int, str] = {}
-        m: list[Any] = [1.5] * len(rows)
+        m: list[Any] = self._contact_exponents(texts.get("bearing"), len(rows))
         for n in order:
             fast = self._numeric_column(n, texts.get(n, ()), m)
             if fast is not None:  # every cell a bare number, read at once
