@@ -251,3 +251,21 @@ def test_a_roller_bearings_stiffness_is_read_in_its_own_unit():
     assert out.exit_code == 0, out.stderr
     rows = out.stdout.splitlines()[1:]
     assert rows[0].split(",")[5] == "300000.0" and rows[1].split(",")[5] == "300000.0"
+
+
+def test_an_internal_error_is_one_line_and_exit_status_3(capsys, monkeypatch):
+    """A bug is told apart from skipped rows (1) and bad input (2) by its exit status."""
+    import bearingload.reports.solve as report
+
+    from .cli_helpers import run_entry
+
+    def broken(*args, **kwargs):
+        raise RuntimeError("boom")
+
+    monkeypatch.setattr(report, "solve_report", broken)
+    code, out, err = run_entry(capsys, "solve", "-z", "8", "-F", "1kN", "-K", "1e5")
+    assert code == 3 and out == ""
+    assert err.splitlines() == [
+        "Error: internal error (RuntimeError: boom); please report it with the command line "
+        "that caused it"
+    ]

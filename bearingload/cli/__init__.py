@@ -86,10 +86,15 @@ def _refuse_detached_units(args: list[str]) -> None:
             )
 
 
+#: Exit status of an internal error (a bug), apart from 1 (batch: rows skipped) and 2 (usage).
+INTERNAL_ERROR = 3
+
+
 def run(argv: list[str] | None = None) -> None:
     """Console entry point: every error is one ``Error:`` line on stderr, never a traceback.
 
-    Exit status: 0 success, 2 bad input (usage), 1 other failures.
+    Exit status: 0 success; 1 a failure of the computation (no convergence) or, for batch, rows
+    skipped; 2 bad input (usage); 3 an internal error (a bug: please report it).
     """
     import sys
 
@@ -114,4 +119,4 @@ def run(argv: list[str] | None = None) -> None:
             "command line that caused it",
             err=True,
         )
-        sys.exit(1)
+        sys.exit(INTERNAL_ERROR)
