@@ -161,15 +161,12 @@ def _fixed_table(s: CombinedSweep) -> Table:
                 "unit": unit,
             }
         )
-    return Table(
-        title="The same at every cage position",
-        columns=[
-            Column("quantity", "quantity", align="left"),
-            Column("value", "value", digits=6),
-            Column("unit", "unit", align="left"),
-        ],
-        rows=out,
-        notes=[
+    from bearingload.reports.sweep import value_table
+
+    return value_table(
+        "The same at every cage position",
+        out,
+        [
             "ISO 281's basic life (C_r/P)^3 does not see the cage position, the clearance or the "
             "load distribution; L10r (ISO/TS 16281) does, per cage position above."
         ],

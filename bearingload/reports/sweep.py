@@ -98,20 +98,29 @@ def _figures_table(s: CageSweep) -> Table:
                 "unit": "" if g is None else unit,
             }
         )
+    return value_table(
+        "Ripple",
+        rows,
+        [
+            "compensating clearance: every G_r at which the ring sits at the same x with a ball "
+            "under the load and with the load between two balls (no kinematic excitation; "
+            "negative = preload). The varying-compliance paper's delta_alpha = delta_S is the "
+            "smallest positive one."
+        ],
+    )
+
+
+def value_table(title: str, rows: list[dict[str, Any]], notes: list[str]) -> Table:
+    """A table of single figures of a sweep: rows of quantity, value, unit."""
     return Table(
-        title="Ripple",
+        title=title,
         columns=[
             Column("quantity", "quantity", align="left"),
             Column("value", "value", digits=6),
             Column("unit", "unit", align="left"),
         ],
         rows=rows,
-        notes=[
-            "compensating clearance: every G_r at which the ring sits at the same x with a ball "
-            "under the load and with the load between two balls (no kinematic excitation; "
-            "negative = preload). The varying-compliance paper's delta_alpha = delta_S is the "
-            "smallest positive one."
-        ],
+        notes=notes,
     )
 
 
