@@ -17,3 +17,39 @@ def test_bracketed_root_does_not_return_a_far_bracket_end_silently():
         bracketed_root(lambda x: math.atan(x - 1.0), 0.0, 1e300)
     # a wide bracket that can be halved in time still gives the root
     assert abs(bracketed_root(lambda x: math.atan(x - 1.0), 0.0, 1e6) - 1.0) <= 4e-12
+
+
+def _run(*args: str, stdin: str | None = None):
+    from click.testing import CliRunner
+
+    from bearingload.cli import main
+
+    return CliRunner().invoke(main, list(args), input=stdin)
+
+
+def _batch(text: str, *args: str):
+    return _run("batch", "-", "--format", "csv", *args, stdin=text)
+
+
+def test_batch_reads_a_roller_rows_stiffness_in_its_own_unit_beside_an_exponent_column():
+    """With an 'exponent' column in the file, a roller row whose exponent cell is blank had its
+    stiffness read in N/mm^1.5: '4700kgf/mm^1.5' was taken (as kgf/mm^(10/9)) where solve
+    refuses it, and '3e5N/mm^(10/9)' refused where solve takes it."""
+    text = (
+        "bearing,load,stiffness,exponent\n"
+        "NU204,5kN,3e5N/mm^(10/9),\n"
+        "NU204,5kN,4700kgf/mm^1.5,\n"
+        "306,5kN,4e5N/mm^1.5,\n"
+    )
+    solved = _run("solve", "NU204", "-F", "5kN", "-K", "3e5N/mm^(10/9)", "--format", "csv")
+    assert solved.exit_code == 0
+    refused = _run("solve", "NU204", "-F", "5kN", "-K", "4700kgf/mm^1.5")
+    assert refused.exit_code == 2
+    for chunk in ("1", "100"):
+        r = _batch(text, "--chunk-size", chunk)
+        assert r.exit_code == 1, r.output
+        assert [line.split(",")[0] for line in r.stdout.splitlines()[1:]] == ["2", "4"]
+        assert r.stderr.startswith("Warning: row 3: stiffness: the unit 'kgf/mm^1.5'")
+        assert (
+            r.stdout.splitlines()[1].split(",")[10] == solved.stdout.splitlines()[1].split(",")[9]
+        )

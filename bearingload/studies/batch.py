@@ -361,9 +361,9 @@ class BatchSolver:
         return None if found is None else found.tolist()
 
     def _contact_exponents(self, designations: Any, n: int) -> list[float]:
-        """Each row's m for reading its stiffness before an exponent column is read: 10/9 where
+        """Each row's m for reading its stiffness where its exponent cell is blank: 10/9 where
         the row names a cylindrical roller bearing (as solve reads -K with one), else 1.5."""
-        if designations is None or "exponent" in self.header.names:
+        if designations is None:
             return [1.5] * n
         from bearingload.bearings.designation import parse
         from bearingload.constants import ROLLER_EXPONENT
@@ -387,7 +387,8 @@ class BatchSolver:
         ]
         parsed: dict[str, list[Any]] = {}
         failed: dict[int, str] = {}
-        m: list[Any] = self._contact_exponents(texts.get("bearing"), len(rows))
+        contact = self._contact_exponents(texts.get("bearing"), len(rows))
+        m: list[Any] = contact
         for n in order:
             fast = self._numeric_column(n, texts.get(n, ()), m)
             if fast is not None:  # every cell a bare number, read at once
@@ -411,7 +412,7 @@ class BatchSolver:
                 column.append(hit[1] if hit[0] else _EMPTY)
             parsed[n] = column
             if n == "exponent":
-                m = [1.5 if x is _EMPTY else x for x in column]
+                m = [c if x is _EMPTY else x for x, c in zip(column, contact, strict=True)]
         return parsed, failed
 
     def _case_of(self, v: dict[str, Any]) -> dict[str, Any]:
