@@ -53,3 +53,19 @@ def test_batch_reads_a_roller_rows_stiffness_in_its_own_unit_beside_an_exponent_
         assert (
             r.stdout.splitlines()[1].split(",")[10] == solved.stdout.splitlines()[1].split(",")[9]
         )
+
+
+def test_an_explicit_exponent_of_1_5_is_refused_for_a_roller_bearing():
+    """--exponent 1.5 (the option's default written out) with a roller bearing read -K in
+    N/mm^1.5 and then solved the rollers with m = 10/9, taking 3e5 N/mm^1.5 as 3e5 N/mm^(10/9):
+    the explicit exponent was ignored. solve, sweep and a batch row's exponent cell now refuse it
+    as they refuse --exponent 10/9 for a ball bearing."""
+    for command in ("solve", "sweep"):
+        r = _run(command, "NU204", "-F", "5kN", "-K", "3e5N/mm^1.5", "--exponent", "1.5")
+        assert r.exit_code == 2, r.output
+        assert "Error: Invalid value for '--exponent': a roller bearing" in r.output
+    assert _run("solve", "306", "-F", "5kN", "--exponent", "1.5").exit_code == 0
+    r = _batch("bearing,load,exponent\nNU204,5kN,1.5\n306,5kN,1.5\nNU204,5kN,\n")
+    assert r.exit_code == 1, r.output
+    assert r.stderr.startswith("Warning: row 2: exponent: a roller bearing (line contact)")
+    assert [line.split(",")[0] for line in r.stdout.splitlines()[1:]] == ["3", "4"]

@@ -78,7 +78,7 @@ class BatchSolver:
                 raise InputError(
                     "bearing", "missing: the combined load needs a bearing or its ball geometry"
                 )
-            b = self._bearing(v | {"exponent": 1.5})
+            b = self._bearing({k: x for k, x in v.items() if k != "exponent"})
             if "load" not in v:
                 raise InputError("load", "missing: every row needs a (radial) load, 0 allowed")
             if not v["load"] >= 0:
@@ -290,7 +290,7 @@ class BatchSolver:
         for key in index:  # each distinct bearing once
             v = {n: x for n, x in zip(keyed, key, strict=True) if x is not _EMPTY}
             try:
-                cases.append(self._case_of(v | {"exponent": v.get("exponent", 1.5)}))
+                cases.append(self._case_of(v))  # no "exponent": the cell is blank
             except BearingloadError as exc:
                 cases.append(row_message(exc))
         bad = dict(failed)  # a row's first error: its cells, its bearing, its load ...
@@ -434,7 +434,7 @@ class BatchSolver:
             g = v.get("clearance", 0.0)
             return {"bearing": None, "balls": v["balls"], "stiffness": v["stiffness"],
                     "clearance": g if isinstance(g, float) else clearance_length(g),
-                    "exponent": v["exponent"], "method": v.get("method", "exact")}  # fmt: skip
+                    "exponent": v.get("exponent", 1.5), "method": v.get("method", "exact")}  # fmt: skip
         b = self._bearing(v)
         return {"bearing": b, "balls": b.balls, "stiffness": b.stiffness,
                 "clearance": b.clearance, "exponent": b.exponent,
@@ -469,7 +469,7 @@ class BatchSolver:
                 self.bearings[key] = hit
         if isinstance(hit, BearingloadError):
             raise hit
-        if v["exponent"] not in (1.5, hit.exponent):  # 1.5 is the column's default
+        if v.get("exponent", hit.exponent) != hit.exponent:  # a blank cell: the bearing's m
             contact = (
                 "a roller bearing (line contact) has m = 10/9"
                 if hit.kind == "roller"
