@@ -13,6 +13,8 @@ from __future__ import annotations
 
 from collections.abc import Callable
 
+from bearingload.errors import ConvergenceError
+
 #: Evaluations at the most: enough to halve any double-precision bracket to its last bit.
 MAX_EVALUATIONS = 400
 
@@ -46,6 +48,9 @@ def bracketed_root(
     ------
     ValueError
         ``f(a)`` and ``f(b)`` have the same sign, or a value is not finite.
+    ConvergenceError
+        The bracket is still wider than the tolerance after :data:`MAX_EVALUATIONS` steps
+        (a bracket over 2^133 times the tolerance), instead of a bracket end far from the root.
 
     >>> round(bracketed_root(lambda x: x * x - 2.0, 0.0, 2.0, xtol=1e-15), 14)
     1.41421356237309
@@ -76,4 +81,7 @@ def bracketed_root(
             a, fa = c, fc
         else:
             b, fb = c, fc
+    else:
+        if abs(b - a) > 2.0 * (xtol + rtol * max(abs(a), abs(b))):
+            raise ConvergenceError("bracketed root", MAX_EVALUATIONS, abs(b - a), {"a": a, "b": b})
     return a if abs(fa) < abs(fb) else b

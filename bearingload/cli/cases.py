@@ -6,7 +6,7 @@ from typing import Any
 
 import click
 
-from bearingload.cli.options import stiffness_value
+from bearingload.cli.options import exponent_given, stiffness_value
 
 
 def resolve_case(
@@ -64,7 +64,7 @@ def resolve_bearings(
         clearance_pick="mean" if clearance_pick == "range" else clearance_pick,
         **geometry,
     )
-    if exponent not in (1.5, resolved.exponent):  # 1.5, the option's default, also for rollers
+    if exponent != resolved.exponent and (exponent != 1.5 or exponent_given()):  # 1.5: default
         contact = (
             "a roller bearing (line contact) has m = 10/9"
             if resolved.kind == "roller"

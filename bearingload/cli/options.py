@@ -80,11 +80,16 @@ def stiffness_value(text: str | None, exponent: float, bearing: str | None = Non
         ) from exc
 
 
-def _contact_exponent(bearing: str | None, exponent: float) -> float:
-    """``exponent`` if --exponent was given or no roller bearing is named, else 10/9."""
+def exponent_given() -> bool:
+    """Whether the command line gave --exponent (not its default 1.5)."""
     ctx = click.get_current_context(silent=True)
     source = ctx.get_parameter_source("exponent") if ctx is not None else None
-    if bearing is None or source not in (None, click.core.ParameterSource.DEFAULT):
+    return source not in (None, click.core.ParameterSource.DEFAULT)
+
+
+def _contact_exponent(bearing: str | None, exponent: float) -> float:
+    """``exponent`` if --exponent was given or no roller bearing is named, else 10/9."""
+    if bearing is None or exponent_given():
         return exponent
     from bearingload.bearings.designation import parse
     from bearingload.constants import ROLLER_EXPONENT

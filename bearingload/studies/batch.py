@@ -78,7 +78,7 @@ class BatchSolver:
                 raise InputError(
                     "bearing", "missing: the combined load needs a bearing or its ball geometry"
                 )
-            b = self._bearing(v | {"exponent": 1.5})
+            b = self._bearing({k: x for k, x in v.items() if k != "exponent"})
             if "load" not in v:
                 raise InputError("load", "missing: every row needs a (radial) load, 0 allowed")
             if not v["load"] >= 0:
@@ -290,7 +290,7 @@ class BatchSolver:
         for key in index:  # each distinct bearing once
             v = {n: x for n, x in zip(keyed, key, strict=True) if x is not _EMPTY}
             try:
-                cases.append(self._case_of(v | {"exponent": v.get("exponent", 1.5)}))
+                cases.append(self._case_of(v))  # no "exponent": the cell is blank
             except BearingloadError as exc:
                 cases.append(row_message(exc))
         bad = dict(failed)  # a row's first error: its cells, its bearing, its load ...
@@ -361,9 +361,9 @@ class BatchSolver:
         return None if found is None else found.tolist()
 
     def _contact_exponents(self, designations: Any, n: int) -> list[float]:
-        """Each row's m for reading its stiffness before an exponent column is read: 10/9 where
+        """Each row's m for reading its stiffness where its exponent cell is blank: 10/9 where
         the row names a cylindrical roller bearing (as solve reads -K with one), else 1.5."""
-        if designations is None or "exponent" in self.header.names:
+        if designations is None:
             return [1.5] * n
         from bearingload.bearings.designation import parse
         from bearingload.constants import ROLLER_EXPONENT
@@ -387,7 +387,8 @@ class BatchSolver:
         ]
         parsed: dict[str, list[Any]] = {}
         failed: dict[int, str] = {}
-        m: list[Any] = self._contact_exponents(texts.get("bearing"), len(rows))
+        contact = self._contact_exponents(texts.get("bearing"), len(rows))
+        m: list[Any] = contact
         for n in order:
             fast = self._numeric_column(n, texts.get(n, ()), m)
             if fast is not None:  # every cell a bare number, read at once
@@ -411,7 +412,7 @@ class BatchSolver:
                 column.append(hit[1] if hit[0] else _EMPTY)
             parsed[n] = column
             if n == "exponent":
-                m = [1.5 if x is _EMPTY else x for x in column]
+                m = [c if x is _EMPTY else x for x, c in zip(column, contact, strict=True)]
         return parsed, failed
 
     def _case_of(self, v: dict[str, Any]) -> dict[str, Any]:
@@ -433,7 +434,7 @@ class BatchSolver:
             g = v.get("clearance", 0.0)
             return {"bearing": None, "balls": v["balls"], "stiffness": v["stiffness"],
                     "clearance": g if isinstance(g, float) else clearance_length(g),
-                    "exponent": v["exponent"], "method": v.get("method", "exact")}  # fmt: skip
+                    "exponent": v.get("exponent", 1.5), "method": v.get("method", "exact")}  # fmt: skip
         b = self._bearing(v)
         return {"bearing": b, "balls": b.balls, "stiffness": b.stiffness,
                 "clearance": b.clearance, "exponent": b.exponent,
@@ -468,7 +469,7 @@ class BatchSolver:
                 self.bearings[key] = hit
         if isinstance(hit, BearingloadError):
             raise hit
-        if v["exponent"] not in (1.5, hit.exponent):  # 1.5 is the column's default
+        if v.get("exponent", hit.exponent) != hit.exponent:  # a blank cell: the bearing's m
             contact = (
                 "a roller bearing (line contact) has m = 10/9"
                 if hit.kind == "roller"
