@@ -69,3 +69,27 @@ def test_an_explicit_exponent_of_1_5_is_refused_for_a_roller_bearing():
     assert r.exit_code == 1, r.output
     assert r.stderr.startswith("Warning: row 2: exponent: a roller bearing (line contact)")
     assert [line.split(",")[0] for line in r.stdout.splitlines()[1:]] == ["3", "4"]
+
+
+def test_combined_loads_near_the_smallest_accepted_converge():
+    """Tiny loads with a clearance of the groove geometry's size (the review: 95 of 288 such
+    loadings of a 6313 ended in ConvergenceError after 200 iterations; below the new limit they
+    are refused by name): every loading from the smallest accepted load up converges."""
+    import pytest
+
+    from bearingload.bearings.resolve import resolve_bearing
+    from bearingload.errors import InputError
+    from bearingload.models.combined import GEOMETRY_RATIO_MAX, solve_combined
+
+    b = resolve_bearing("6313")
+    big_a = (b.f_i + b.f_o - 1.0) * b.ball_diameter
+    f_min = b.stiffness * (big_a / GEOMETRY_RATIO_MAX) ** 1.5
+    geometry = {"ball_diameter": b.ball_diameter, "pitch_diameter": b.pitch_diameter,
+                "f_i": b.f_i, "f_o": b.f_o}  # fmt: skip
+    for load in (1.01 * f_min, 30.0 * f_min):
+        for tilt in ({"moment": 10.0 * load}, {"misalignment": 0.05}, {}):
+            r = solve_combined(b.balls, load, 0.1 * load, clearance=big_a, cage_angle=3.0,
+                               **geometry, **tilt)  # fmt: skip
+            assert float(r.q_max) > 0
+    with pytest.raises(InputError, match="too small for the combined solver"):
+        solve_combined(b.balls, 0.5 * f_min, 0.0, clearance=big_a, **geometry)
