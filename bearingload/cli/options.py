@@ -298,6 +298,19 @@ def exponent_option(func: Callable[..., Any]) -> Callable[..., Any]:
     )(func)
 
 
+def stiffness_option(func: Callable[..., Any]) -> Callable[..., Any]:
+    """``--stiffness/-K`` of one ring, shared by ``solve`` and ``sweep``."""
+    return click.option(
+        "--stiffness",
+        "-K",
+        type=Quantity("stiffness"),
+        help="Ball stiffness K of both contacts in series, Q = K delta^m; required without a "
+        "BEARING or ball geometry, else it replaces the Hertz value. "
+        f"Units: {units_help('stiffness')} (bare number: N/mm^1.5, N/mm^(10/9) for a "
+        "cylindrical roller bearing unless --exponent says otherwise).",
+    )(func)
+
+
 def method_option(help_text: str) -> Callable[[Callable[..., Any]], Callable[..., Any]]:
     """``--method`` over the registered methods and ``all``; imports no numpy."""
     from bearingload.models.registry import DEFAULT_METHOD, list_methods

@@ -22,6 +22,7 @@ from bearingload.cli.options import (
     output_options,
     print_warnings,
     quiet_option,
+    stiffness_option,
     stiffness_value,
     units_help,
 )
@@ -44,14 +45,7 @@ from bearingload.cli.plot import ball_loads_plot_option
     help=f"Radial load F_r > 0 (>= 0 with an axial load or a moment). Units: "
     f"{units_help('force')} (bare number: N).",
 )
-@click.option(
-    "--stiffness",
-    "-K",
-    type=Quantity("stiffness"),
-    help="Ball stiffness K of both contacts in series, Q = K delta^m; required without a "
-    "BEARING or ball geometry, else it replaces the Hertz value. "
-    f"Units: {units_help('stiffness')} (bare number: N/mm^1.5).",
-)
+@stiffness_option
 @click.option(
     "--clearance",
     "-G",

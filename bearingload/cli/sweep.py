@@ -16,6 +16,7 @@ from bearingload.cli.options import (
     exponent_option,
     library_errors,
     output_options,
+    stiffness_option,
     units_help,
 )
 from bearingload.cli.plot import check_plot, write_plot
@@ -36,14 +37,7 @@ from bearingload.cli.plot import check_plot, write_plot
     help="Radial load F_r > 0 (>= 0 with an axial load or a moment; required unless "
     f"--kurochkin-T). Units: {units_help('force')} (bare number: N).",
 )
-@click.option(
-    "--stiffness",
-    "-K",
-    type=Quantity("stiffness"),
-    help="Ball stiffness K of both contacts in series, Q = K delta^m; required without a "
-    "BEARING or ball geometry, else it replaces the Hertz value. "
-    f"Units: {units_help('stiffness')} (bare number: N/mm^1.5).",
-)
+@stiffness_option
 @click.option(
     "--clearance",
     "-G",

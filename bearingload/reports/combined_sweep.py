@@ -17,7 +17,7 @@ from typing import Any
 
 from bearingload.reports.combined import NOTES, tilt_text
 from bearingload.reports.quantities import QUANTITIES, units
-from bearingload.reports.render import Column, Table, render
+from bearingload.reports.render import Table, render
 from bearingload.reports.solve import column
 from bearingload.studies.combined_sweep import SPREAD_KEYS, CombinedSweep
 
@@ -174,21 +174,12 @@ def _fixed_table(s: CombinedSweep) -> Table:
 
 
 def _rows_table(s: CombinedSweep) -> Table:
-    columns = []
-    factors = {}
-    for key, header in _row_keys(s):
-        q = QUANTITIES[key]
-        unit, factors[key] = q.shown()
-        columns.append(Column(key, header, unit, q.digits))
-    shown = [
-        {k: v * factors[k] if isinstance(v, float) else v for k, v in row.items()}
-        for row in rows(s)
-    ]
-    return Table(
-        title="Per cage position (ball 1 at the cage angle; angles from the load line)",
-        columns=columns,
-        rows=shown,
-        notes=[
+    from bearingload.reports.sweep import positions_table
+
+    return positions_table(
+        _row_keys(s),
+        rows(s),
+        [
             "axial: from the centred rings; tilt: about the axis across the load; tilt cross: "
             "about the load line; ball: the ball carrying Q_max (of two equal, the lower "
             "number); alpha_max: the largest contact angle of a loaded ball."

@@ -125,21 +125,28 @@ def value_table(title: str, rows: list[dict[str, Any]], notes: list[str]) -> Tab
 
 
 def _rows_table(s: CageSweep) -> Table:
+    return positions_table(
+        ROW_KEYS, _flat_rows(s), ["ball: the ball carrying Q_max (of two equal, the lower number)."]
+    )
+
+
+def positions_table(keys: Any, rows: list[dict[str, Any]], notes: list[str]) -> Table:
+    """The per-position table of a sweep: ``keys`` are (quantity key, column header) pairs, the
+    floats of ``rows`` shown in each quantity's display unit."""
     columns = []
-    for key, header in ROW_KEYS:
+    factors = {}
+    for key, header in keys:
         q = QUANTITIES[key]
-        unit, _ = q.shown()
+        unit, factors[key] = q.shown()
         columns.append(Column(key, header, unit, q.digits))
-    factors = {key: QUANTITIES[key].shown()[1] for key, _ in ROW_KEYS}
-    rows = [
-        {k: v * factors[k] if isinstance(v, float) else v for k, v in row.items()}
-        for row in _flat_rows(s)
+    shown = [
+        {k: v * factors[k] if isinstance(v, float) else v for k, v in row.items()} for row in rows
     ]
     return Table(
         title="Per cage position (ball 1 at the cage angle; angles from the load line)",
         columns=columns,
-        rows=rows,
-        notes=["ball: the ball carrying Q_max (of two equal, the lower number)."],
+        rows=shown,
+        notes=notes,
     )
 
 
