@@ -22,7 +22,14 @@ from typing import Any
 import numpy as np
 
 from bearingload.errors import BearingloadError, InputError
-from bearingload.studies.batch_input import COLUMNS, Block, CellParser, Header, row_message
+from bearingload.studies.batch_input import (
+    COLUMNS,
+    Block,
+    CellParser,
+    Header,
+    row_message,
+    unit_kind,
+)
 from bearingload.studies.loaded_bearing import DEFAULT_REVOLUTIONS
 
 
@@ -145,7 +152,7 @@ class BatchSolver:
             return values * np.array([factors[e] for e in m.tolist()])
         from bearingload.units import parse_quantity
 
-        kind = {"clearance": "length", "cage_angle": "angle"}.get(parser.kind, parser.kind)
+        kind = unit_kind(parser.kind)
         return values * parse_quantity("1" + parser.unit, kind, parameter=name)
 
     def _hand_rows(self, lines: list[tuple[int, list[str]]], errors: dict[int, str]) -> Rows:
@@ -153,12 +160,7 @@ class BatchSolver:
         column: bare numbers are converted by numpy at once, other cells one distinct text at
         a time."""
         names = self.header.names
-        width = len(names)
-        good = [x for x in lines if len(x[1]) == width]
-        if len(good) != len(lines):
-            for row, cells in lines:
-                if len(cells) != width:
-                    errors[row] = _malformed(len(cells), width)
+        good = self._well_formed(lines, errors)
         numbers = [r for r, _ in good]
         texts = dict(zip(names, zip(*[c for _, c in good], strict=True), strict=False))
         texts = {n: texts.get(n, ()) for n in names}
@@ -520,7 +522,7 @@ def _implausible(name: str, kind: str, values: np.ndarray) -> bool:
     (:data:`bearingload.units.PLAUSIBLE_BARE`)."""
     from bearingload.units import PLAUSIBLE_BARE
 
-    kind = {"clearance": "length", "cage_angle": "angle"}.get(kind, kind)
+    kind = unit_kind(kind)
     rule = PLAUSIBLE_BARE.get((kind, name)) or PLAUSIBLE_BARE.get((kind, None))
     if rule is None:
         return False

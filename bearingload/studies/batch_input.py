@@ -132,6 +132,11 @@ def read_header(fields: list[str]) -> Header:
     return Header(tuple(names), units)
 
 
+def unit_kind(kind: str) -> str:
+    """The units.py kind of a column kind: a clearance is a length, a cage angle an angle."""
+    return {"clearance": "length", "cage_angle": "angle"}.get(kind, kind)
+
+
 def _check_combined(names: list[str]) -> None:
     """A combined-load file names its bearings (or ball geometry) and no radial-only column."""
     combined = [n for n in names if n in COMBINED_COLUMNS]
@@ -156,7 +161,7 @@ def _check_header_unit(name: str, unit: str) -> None:
     from bearingload.units import UNITS, parse_quantity, stiffness_factor
 
     kind = COLUMNS[name]
-    kind = "length" if kind == "clearance" else "angle" if kind == "cage_angle" else kind
+    kind = unit_kind(kind)
     if kind == "stiffness":
         stiffness_factor(unit, None, parameter=f"{name} [{unit}]")
     elif kind in UNITS:
@@ -412,7 +417,7 @@ class CellParser:
             if plain is not None and self.unit:
                 return plain * units.stiffness_factor(self.unit, exponent, parameter=name)
             return units.parse_stiffness(text, exponent, parameter=name)
-        kind = "length" if kind == "clearance" else "angle" if kind == "cage_angle" else kind
+        kind = unit_kind(kind)
         if plain is not None and self.unit:  # the header's unit: its factor, found once
             if self.factor is None:
                 self.factor = units.parse_quantity("1" + self.unit, kind, parameter=name)
