@@ -385,3 +385,22 @@ def _parse_other_iso(raw: str, norm: str) -> Designation | None:
                 accuracy_class=acc,
             )
     return None
+
+
+def contact_exponent(text: str | None, default: float = 1.5) -> float:
+    """The load-deflection exponent m a designation implies: 10/9 for a cylindrical roller
+    bearing (line contact), else ``default`` (also for no or an unreadable designation, whose
+    own error comes where it is resolved). [-]
+
+    >>> round(contact_exponent("NU206"), 4), contact_exponent("6306"), contact_exponent(None)
+    (1.1111, 1.5, 1.5)
+    """
+    if text is None or not text.strip():
+        return default
+    try:
+        kind = parse(text.strip()).kind
+    except InputError:
+        return default
+    from bearingload.constants import ROLLER_EXPONENT
+
+    return ROLLER_EXPONENT if kind == "roller" else default

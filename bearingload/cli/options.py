@@ -89,16 +89,11 @@ def exponent_given() -> bool:
 
 def _contact_exponent(bearing: str | None, exponent: float) -> float:
     """``exponent`` if --exponent was given or no roller bearing is named, else 10/9."""
-    if bearing is None or exponent_given():
+    if exponent_given():
         return exponent
-    from bearingload.bearings.designation import parse
-    from bearingload.constants import ROLLER_EXPONENT
+    from bearingload.bearings.designation import contact_exponent
 
-    try:
-        kind = parse(bearing).kind
-    except InputError:
-        return exponent  # the designation's own error comes later, where it is resolved
-    return ROLLER_EXPONENT if kind == "roller" else exponent
+    return contact_exponent(bearing, exponent)
 
 
 def units_help(kind: str) -> str:

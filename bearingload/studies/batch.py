@@ -367,16 +367,9 @@ class BatchSolver:
         the row names a cylindrical roller bearing (as solve reads -K with one), else 1.5."""
         if designations is None:
             return [1.5] * n
-        from bearingload.bearings.designation import parse
-        from bearingload.constants import ROLLER_EXPONENT
+        from bearingload.bearings.designation import contact_exponent
 
-        kinds: dict[str, float] = {}
-        for text in set(designations):
-            try:
-                roller = parse(text.strip()).kind == "roller" if text.strip() else False
-            except InputError:
-                roller = False  # named by the bearing's own error
-            kinds[text] = ROLLER_EXPONENT if roller else 1.5
+        kinds = {text: contact_exponent(text) for text in set(designations)}
         return [kinds[t] for t in designations]
 
     def _parsed_columns(self, rows: list[list[str]]) -> tuple[dict[str, list[Any]], dict[int, str]]:
