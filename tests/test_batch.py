@@ -205,6 +205,29 @@ def test_chunk_boundaries_do_not_change_the_bytes(tmp_path, fmt):
         assert other.stderr == one.stderr
 
 
+def test_reads_of_any_size_give_the_same_bytes(tmp_path, monkeypatch):
+    """The file is read in large parts cut at line ends: parts smaller than a line, a last line
+    without its line end, quotes and a line that is not UTF-8 after the first part change
+    nothing."""
+    from bearingload.studies import batch_input
+
+    p = _long_file(tmp_path)
+    text = open(p, "rb").read()
+    lines = text.splitlines(keepends=True)
+    lines[20] = lines[20].replace(b",", b'"",', 1)  # the csv module reads from here on
+    lines[30] = lines[30][:-1] + b"\xff\n"
+    variants = {"plain": text, "no last line end": text[:-1], "quoted": b"".join(lines)}
+    for name, data in variants.items():
+        q = tmp_path / f"{name}.csv"
+        q.write_bytes(data)
+        whole = batch(str(q), "--format", "csv")
+        for read, size in ((1, "3"), (7, "4"), (64, "1"), (1000, "50")):
+            monkeypatch.setattr(batch_input, "READ_BYTES", read)
+            part = batch(str(q), "--format", "csv", "--chunk-size", size)
+            assert (part.stdout, part.stderr) == (whole.stdout, whole.stderr), (name, read)
+        monkeypatch.undo()
+
+
 def test_answer_does_not_depend_on_neighbours(tmp_path):
     p = _long_file(tmp_path)
     whole = batch(p, "--format", "csv").stdout.splitlines()

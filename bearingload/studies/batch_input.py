@@ -251,34 +251,70 @@ def _numbered(lines: Iterator[bytes], last: int) -> Iterator[tuple[int, str]]:
 def _blocks(stream: BinaryIO, size: int) -> Iterator[Block]:
     """Blocks of rows after the header: a block of UTF-8 lines without quotes is decoded and
     split at once; from the first quote on, the csv module reads the rest."""
-    from itertools import islice
-
     last = 1  # row number of the last line read
-    while True:
-        raw = list(islice(stream, size))
-        if not raw:
-            return
-        whole = b"".join(raw)
+    pieces = _pieces(stream, size)
+    for whole in pieces:
         try:
             text = whole.decode("utf-8")
         except UnicodeDecodeError:
             text = None
         if text is None or '"' in text:
+            raw = _lines_of(whole)
             taken = list(_numbered(iter(raw), last))
             if text is not None or any('"' in t for n, t in taken if n > 0):
-                yield from _quoted_blocks(iter(taken), _numbered(stream, last + len(raw)), size)
+                after = (line for whole in pieces for line in _lines_of(whole))
+                rest = _numbered(after, last + len(raw))
+                yield from _quoted_blocks(iter(taken), rest, size)
                 return
             yield _block(taken)
+            last += len(raw)
+            continue
+        texts = (text[:-1] if text.endswith("\n") else text).split("\n")
+        if "\r" in text:
+            texts = [t.rstrip("\r") for t in texts]
+        numbers = range(last + 1, last + 1 + len(texts))
+        if "" in texts:
+            yield _block(list(zip(numbers, texts, strict=True)))
         else:
-            texts = (text[:-1] if text.endswith("\n") else text).split("\n")
-            if "\r" in text:
-                texts = [t.rstrip("\r") for t in texts]
-            numbers = range(last + 1, last + 1 + len(texts))
-            if "" in texts:
-                yield _block(list(zip(numbers, texts, strict=True)))
-            else:
-                yield Block(list(numbers), lines=texts)
-        last += len(raw)
+            yield Block(list(numbers), lines=texts)
+        last += len(texts)
+
+
+#: Bytes asked of the stream at a time (reading a line at a time costs more than the rest of
+#: reading).
+READ_BYTES = 1 << 22
+
+
+def _pieces(stream: BinaryIO, size: int) -> Iterator[bytes]:
+    """Pieces of ``size`` whole lines each (the last: what is left) of a binary stream, read
+    :data:`READ_BYTES` at a time."""
+    import numpy as np
+
+    read = getattr(stream, "read1", stream.read)
+    parts: list[bytes] = []
+    lines = 0
+    while True:
+        if lines >= size:  # cut after the size-th line end
+            whole = b"".join(parts)
+            ends = np.flatnonzero(np.frombuffer(whole, np.uint8) == ord("\n"))
+            cut = int(ends[size - 1]) + 1
+            yield whole[:cut]
+            parts, lines = [whole[cut:]], len(ends) - size
+            continue
+        data = read(READ_BYTES)
+        if not data:
+            if any(parts):
+                yield b"".join(parts)
+            return
+        parts.append(data)
+        lines += data.count(b"\n")
+
+
+def _lines_of(whole: bytes) -> list[bytes]:
+    """The lines of a piece, each with its line end (the last one may have none)."""
+    lines = [line + b"\n" for line in whole.split(b"\n")]
+    lines[-1] = lines[-1][:-1]
+    return lines if lines[-1] else lines[:-1]
 
 
 def _block(taken: list[tuple[int, str]]) -> Block:
