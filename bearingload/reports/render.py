@@ -218,7 +218,7 @@ def csv_block(columns: Sequence[Column], values: dict[str, Any]) -> str:
     return csv_bytes(columns, values).decode("utf-8")
 
 
-def csv_bytes(columns: Sequence[Column], values: dict[str, Any]) -> bytes:
+def csv_bytes(columns: Sequence[Column], values: dict[str, Any]) -> bytes | bytearray:
     """:func:`csv_block` as UTF-8 bytes (what a long csv writes to its file)."""
     from bearingload.reports.csv_text import join_rows
 
