@@ -228,6 +228,24 @@ def test_reads_of_any_size_give_the_same_bytes(tmp_path, monkeypatch):
         monkeypatch.undo()
 
 
+def test_long_file_tuning_changes_no_byte_and_is_undone(tmp_path, monkeypatch):
+    """A long first chunk tunes the process (malloc, garbage collector): the same bytes, and
+    the collector's settings are given back (the command may run inside a Python process)."""
+    import gc
+
+    from bearingload.cli import batch as batch_command
+
+    p = _long_file(tmp_path)
+    plain = batch(p, "--format", "csv")
+    before = gc.get_threshold(), gc.get_freeze_count()
+    monkeypatch.setattr(batch_command, "LONG_CHUNK", 2)
+    tuned = batch(p, "--format", "csv")
+    assert (tuned.stdout, tuned.stderr, tuned.exit_code) == (
+        plain.stdout, plain.stderr, plain.exit_code
+    )  # fmt: skip
+    assert (gc.get_threshold(), gc.get_freeze_count()) == before
+
+
 def test_answer_does_not_depend_on_neighbours(tmp_path):
     p = _long_file(tmp_path)
     whole = batch(p, "--format", "csv").stdout.splitlines()

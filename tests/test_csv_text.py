@@ -78,3 +78,32 @@ def test_render_csv_is_csv_block():
     whole = render([Table("t", cols, rows)], "csv")
     assert whole == "v [N],n,t,o\n" + csv_block(cols, values)
     assert '"x,y"' in whole and '"q"""' in whole
+
+
+def test_threaded_block_is_the_serial_block(monkeypatch):
+    """A long block's columns are made by threads (the lookup tables made on first use by
+    several at once): the bytes are those of one thread, and of the renderer."""
+    from bearingload.reports import csv_text
+
+    rng = np.random.default_rng(3)
+    n = csv_text.PARALLEL_ROWS + 1
+    v = rng.random(n) * 10.0 ** rng.integers(-8, 20, n)
+    columns = [
+        ("i", np.arange(n)),
+        ("f", v),
+        ("f", -v[::-1]),
+        ("f", (np.round(v), v > 1e10)),
+        ("f", np.full(n, 1.5)),
+        ("t", text_cells(["exact", "x"] * (n // 2) + ["exact"])),
+    ]
+    csv_text._tables.cache_clear()
+    threaded = join_rows(columns)
+    monkeypatch.setattr(csv_text, "PARALLEL_ROWS", n + 1)
+    assert join_rows(columns) == threaded
+    lines = threaded.decode().splitlines()
+    for i in (0, 1, n - 1):
+        blank = "" if v[i] > 1e10 else _machine_text(float(np.round(v[i])))
+        text = "exact" if i % 2 == 0 else "x"
+        expected = [str(i), _machine_text(v[i]), _machine_text(-v[n - 1 - i]), blank, "1.5", text]
+        assert lines[i] == ",".join(expected)
+    assert sum(line.split(",")[3] == "" for line in lines) == int(np.sum(v > 1e10)) > 0

@@ -4,6 +4,8 @@ from __future__ import annotations
 
 import sys
 import time
+from collections.abc import Iterator
+from contextlib import contextmanager
 from itertools import compress
 from typing import Any, BinaryIO
 
@@ -11,7 +13,7 @@ import click
 
 from bearingload.cli.options import CONTEXT, library_errors, output_options
 
-#: Rows of a first chunk from which the run is tuned for a long file (:func:`_tune_for_long_files`).
+#: Rows of a first chunk from which the run is tuned for a long file (:func:`_tuned`).
 LONG_CHUNK = 20_000
 
 #: Warnings shown on the terminal; json lists every row's warnings.
@@ -90,8 +92,6 @@ def batch(
         raise click.UsageError(_header_message(exc)) from exc
     assert first is not None  # chunks() yields the header at least once
     header = first[0]
-    if len(first[1]) >= LONG_CHUNK:
-        _tune_for_long_files()
     columns = batch_columns(header)
     solver = BatchSolver(header)
     held: dict[str, list[Any]] = {}
@@ -100,7 +100,7 @@ def batch(
     warned = 0
     progress = _Progress()
     total = 0
-    with _Sink(fmt, output, strict) as sink:
+    with _Sink(fmt, output, strict) as sink, _tuned(len(first[1]) >= LONG_CHUNK):
         if fmt == "csv":
             sink.write(csv_head(columns))
         for _, lines in _all(first, stream):
@@ -160,16 +160,31 @@ def _row_messages(part: Any, warned: int, progress: _Progress) -> int:
     return warned
 
 
-def _tune_for_long_files() -> None:
+@contextmanager
+def _tuned(long_file: bool) -> Iterator[None]:
     """A long file allocates and frees the same large arrays chunk after chunk, and makes many
     small objects (cells, row numbers): on Linux, ask glibc's malloc to keep freed memory for
     reuse (in one arena, which the writer threads share) rather than give it back to the system
     and fault it in again; and let the garbage collector pass less often over the objects of
-    start-up. About 7 % of a 10^5-row run; nothing else changes."""
+    start-up (as it was afterwards: the command may run inside a Python process). About 7 % of a
+    10^5-row run; nothing else changes."""
+    if not long_file:
+        yield
+        return
     import gc
 
+    threshold = gc.get_threshold()
     gc.freeze()
     gc.set_threshold(50_000, 20, 20)
+    _keep_freed_memory()
+    try:
+        yield
+    finally:
+        gc.set_threshold(*threshold)
+        gc.unfreeze()
+
+
+def _keep_freed_memory() -> None:
     if not sys.platform.startswith("linux"):
         return
     try:
