@@ -100,6 +100,26 @@ def test_options_a_hand_given_ring_would_ignore_are_refused(capsys, extra, messa
     assert code == 2 and out == "" and err.count("\n") == 1 and err.startswith(message), err
 
 
+@pytest.mark.parametrize(
+    "args, message",
+    [
+        (["solve", "-z", "8", "-F", "1kN", "-K", "1e5", "--clearance-pick", "mean"],
+         "Error: --clearance-pick needs a BEARING"),
+        (["sweep", "-z", "8", "-F", "1kN", "-K", "1e5", "--modulus", "210GPa"],
+         "Error: --modulus needs a BEARING or the ball geometry"),
+        (["sweep", "-z", "8", "-F", "1kN", "-K", "1e5", "--clearance-pick", "max"],
+         "Error: --clearance-pick needs a BEARING"),
+        (["table", "k", "--clearance-pick", "min"], "Error: --clearance-pick needs --bearing"),
+    ],
+)  # fmt: skip
+def test_sweep_and_table_refuse_what_a_hand_given_ring_would_ignore(capsys, args, message):
+    """sweep and table k took --modulus or --clearance-pick without a bearing and ignored them;
+    solve let an explicit --clearance-pick mean pass (a batch file's clearance_pick cell is
+    refused): all refuse them now, as solve refused the others."""
+    code, out, err = run_entry(capsys, *args)
+    assert code == 2 and out == "" and err.count("\n") == 1 and err.startswith(message), err
+
+
 def test_the_largest_contact_angle_is_that_of_a_loaded_ball():
     doc = json.loads(
         invoke("solve", "6205", "-F", "1kN", "--misalignment", "0.1", "--format", "json").output

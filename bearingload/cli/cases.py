@@ -32,9 +32,40 @@ def resolve_case(
                 "Missing option '--stiffness' / '-K' (or give a BEARING designation, or "
                 "--ball-diameter and --pitch-diameter)"
             )
+        refuse_unused({option: geometry[key] for key, option in _BEARING_ONLY.items()})
         return balls, k_given, clearance_length(clearance), exponent, ""
     b = resolve_bearings(bearing, k_given, clearance, pick, exponent, balls=balls, **geometry)[0]
     return b.balls, float(b.stiffness), b.clearance, b.exponent, bearing_context(b)
+
+
+#: Options only a bearing or its ball geometry uses (resolve_case's geometry keys).
+_BEARING_ONLY = {"f_i": "--inner-conformity", "f_o": "--outer-conformity",
+                 "modulus": "--modulus", "poisson": "--poisson"}  # fmt: skip
+
+
+def refuse_unused(
+    given: dict[str, Any],
+    need: str = "a BEARING or the ball geometry (--ball-diameter and --pitch-diameter): with "
+    "--balls and --stiffness alone",
+) -> None:
+    """Refuse the options (name -> value, None: not given) that only a BEARING or the ball
+    geometry uses when neither is given, and --clearance-pick when it is given on the command
+    line: with --balls and --stiffness alone they would be ignored (a batch file's
+    clearance_pick column is refused alike)."""
+    from click.core import ParameterSource
+
+    unused = [name for name, value in given.items() if value is not None]
+    ctx = click.get_current_context(silent=True)
+    if ctx is not None and ctx.get_parameter_source("clearance_pick") not in (
+        None, ParameterSource.DEFAULT
+    ):  # fmt: skip
+        unused.append("--clearance-pick")
+    if unused:
+        one = len(unused) == 1
+        raise click.UsageError(
+            f"{', '.join(unused)} {'needs' if one else 'need'} {need} "
+            f"{'it' if one else 'they'} would be ignored"
+        )
 
 
 def bearing_context(b: Any) -> str:

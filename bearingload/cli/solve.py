@@ -7,7 +7,7 @@ from typing import Any
 import click
 
 from bearingload.cli.bearing_options import CLEARANCE_HELP, Clearance, geometry_options
-from bearingload.cli.cases import resolve_bearings
+from bearingload.cli.cases import refuse_unused, resolve_bearings
 from bearingload.cli.combined_options import combined_options, wants_combined
 from bearingload.cli.options import (
     CONTEXT,
@@ -196,17 +196,9 @@ def solve(
         print_warnings(found, quiet)
         return
     if bearing is None and ball_diameter is None and pitch_diameter is None:
-        unused = [name for name, v in (("--inner-conformity", inner_conformity),
-                  ("--outer-conformity", outer_conformity), ("--modulus", modulus),
-                  ("--poisson", poisson), ("--maker", maker)) if v is not None]  # fmt: skip
-        unused += ["--clearance-pick"] if clearance_pick != "mean" else []
-        if unused:
-            one = len(unused) == 1
-            raise click.UsageError(
-                f"{', '.join(unused)} {'needs' if one else 'need'} a BEARING or the ball geometry "
-                "(--ball-diameter and --pitch-diameter): with --balls and --stiffness alone "
-                f"{'it' if one else 'they'} would be ignored"
-            )
+        refuse_unused({"--inner-conformity": inner_conformity,
+                       "--outer-conformity": outer_conformity, "--modulus": modulus,
+                       "--poisson": poisson, "--maker": maker})  # fmt: skip
         cases = _by_hand(methods, balls, load, k_given, clearance, cage_angle, exponent)
     else:
         bearings = resolve_bearings(

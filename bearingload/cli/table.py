@@ -199,8 +199,10 @@ def table(
         )
     else:
         from bearingload.bearings.clearance import clearance_length
+        from bearingload.cli.cases import refuse_unused
         from bearingload.studies.tables import Conditions
 
+        refuse_unused({}, "--bearing (a class is a catalogue bearing's); without one")
         k = 1e5 if k_given is None else k_given
         cond = Conditions(load, k, clearance_length(clearance), cage_angle, exponent)
     emit(render([design_table(name, z_max, cond, method)], fmt), output)
