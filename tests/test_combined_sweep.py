@@ -150,7 +150,9 @@ def test_plot_is_written(tmp_path):
     out = invoke(*CLI, "--plot", str(target))
     assert out.exit_code == 0 and target.read_bytes()[:4] == b"\x89PNG"
     s = combined_sweep(resolve_bearing("6205", clearance="C3"), 1400.0, 700.0, steps=5)
-    fig = combined_sweep_figure(s)
+    fig = combined_sweep_figure(s, "6205")
+    assert fig.get_suptitle().startswith("6205: Cage sweep over one pitch: z = 9,")
+    assert combined_sweep_figure(s).get_suptitle().startswith("Cage sweep")
     lines = [ax.get_lines()[0].get_ydata() for ax in fig.axes]
     np.testing.assert_allclose(lines[4], s.result.q_max)
     np.testing.assert_allclose(lines[5], s.reference_rating_life)

@@ -32,6 +32,8 @@ def test_sweep_figure_holds_the_sweep():
         np.testing.assert_array_equal(line.get_ydata(), values)
         assert unit in ax.get_ylabel()
     assert "[°]" in axes[-1].get_xlabel()
+    assert fig.get_suptitle().startswith("Cage sweep over one pitch: z = 9,")
+    assert plots.sweep_figure(s, "306").get_suptitle().startswith("306: Cage sweep")
 
 
 def test_ball_loads_figure_holds_the_loads():

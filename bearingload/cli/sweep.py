@@ -186,7 +186,7 @@ def sweep(
     if plot is not None:
         from bearingload.reports.plots import save_png, sweep_figure
 
-        write_plot(lambda: save_png(sweep_figure(result), plot), plot)
+        write_plot(lambda: save_png(sweep_figure(result, bearing), plot), plot)
     emit(text, output)
 
 
@@ -219,7 +219,7 @@ def _combined(
     if plot is not None:
         from bearingload.reports.plots import combined_sweep_figure, save_png
 
-        write_plot(lambda: save_png(combined_sweep_figure(result), plot), plot)
+        write_plot(lambda: save_png(combined_sweep_figure(result, b.designation), plot), plot)
     emit(text, output)
 
 

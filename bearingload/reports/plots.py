@@ -42,8 +42,9 @@ def _figure(width: float, height: float) -> Any:
     return Figure(figsize=(width, height), dpi=100, layout="constrained")
 
 
-def sweep_figure(s: Any) -> Any:
-    """x, y [µm], Q_max [N] and radial stiffness [N/mm] over the cage angle [°] of a CageSweep.
+def sweep_figure(s: Any, name: str | None = None) -> Any:
+    """x, y [µm], Q_max [N] and radial stiffness [N/mm] over the cage angle [°] of a CageSweep
+    (``name``: the bearing's designation, in the title).
 
     One panel each, in that order; each panel's one line holds the sweep's values.
     """
@@ -65,16 +66,17 @@ def sweep_figure(s: Any) -> Any:
     for a in axes:
         a.ticklabel_format(axis="y", useOffset=False)
     fig.suptitle(
-        f"Cage sweep over one pitch: z = {s.balls}, F_r = {s.load:.4g} N, "
+        f"{_named(name)}Cage sweep over one pitch: z = {s.balls}, F_r = {s.load:.4g} N, "
         f"K = {s.stiffness:.4g} N/mm^{s.exponent:g}, G_r = {s.clearance * 1e3:.4g} µm",
         fontsize="medium",
     )
     return fig
 
 
-def combined_sweep_figure(s: Any) -> Any:
+def combined_sweep_figure(s: Any, name: str | None = None) -> Any:
     """x, y, axial displacement [µm], tilt [°], Q_max [N] and L10r [10^6 rev] over the cage
-    angle [°] of a CombinedSweep (L10r only where C_r is known).
+    angle [°] of a CombinedSweep (L10r only where C_r is known; ``name``: the bearing's
+    designation, in the title).
 
     One panel each, in that order; each panel's one line holds the sweep's values.
     """
@@ -99,11 +101,16 @@ def combined_sweep_figure(s: Any) -> Any:
         ax.ticklabel_format(axis="y", useOffset=False)
     axes[-1].set_xlabel("cage angle (ball 1 from the load line) [°]")
     fig.suptitle(
-        f"Cage sweep over one pitch: z = {s.balls}, F_r = {float(r.radial_load[0]):.4g} N, "
+        f"{_named(name)}Cage sweep over one pitch: z = {s.balls}, "
+        f"F_r = {float(r.radial_load[0]):.4g} N, "
         f"F_a = {float(r.axial_load[0]):.4g} N, G_r = {float(r.clearance[0]) * 1e3:.4g} µm",
         fontsize="medium",
     )
     return fig
+
+
+def _named(name: str | None) -> str:
+    return f"{name}: " if name else ""
 
 
 def ball_loads_figure(cases: Sequence[tuple[str, Any]], title: str) -> Any:
