@@ -230,14 +230,16 @@ def join_rows(columns: Sequence[tuple[str, Any]]) -> bytearray:
     n = _rows(*columns[0])
     pool = _threads(len(columns)) if n >= PARALLEL_ROWS else None
     run = pool.map if pool else map
-    cells = list(run(_cells, *zip(*columns, strict=True)))
-    widths = [sum(hi - lo for lo, hi in runs) + 1 for _, runs in cells]  # each with its ','
-    starts = np.cumsum([0, *widths]).tolist()
-    buffer = bytearray(n * starts[-1])  # zeros; the block is a view of it (no copy out)
-    block = np.frombuffer(buffer, np.uint8).reshape(n, starts[-1])
-    list(run(_lay, [block] * len(cells), cells, starts[:-1]))
-    if pool:
-        pool.shutdown()
+    try:  # the threads end here, also when a column fails (a NaN)
+        cells = list(run(_cells, *zip(*columns, strict=True)))
+        widths = [sum(hi - lo for lo, hi in runs) + 1 for _, runs in cells]  # with its ','
+        starts = np.cumsum([0, *widths]).tolist()
+        buffer = bytearray(n * starts[-1])  # zeros; the block is a view of it (no copy out)
+        block = np.frombuffer(buffer, np.uint8).reshape(n, starts[-1])
+        list(run(_lay, [block] * len(cells), cells, starts[:-1]))
+    finally:
+        if pool:
+            pool.shutdown(cancel_futures=True)
     block[:, -1] = ord("\n")
     return buffer.translate(None, b"\0")
 
