@@ -228,6 +228,31 @@ def test_reads_of_any_size_give_the_same_bytes(tmp_path, monkeypatch):
         monkeypatch.undo()
 
 
+def test_small_chunks_search_each_read_byte_once(monkeypatch):
+    """--chunk-size 1 on a long file: the line ends of each read are searched once, not once per
+    piece cut from it (that made reading quadratic: 2*10^5 rows took 85 s instead of 0.3 s)."""
+    import numpy as np
+
+    from bearingload.studies import batch_input
+
+    data = b"".join(b"%d,8,1e5\n" % i for i in range(20_000))
+    searched = [0]
+    frombuffer = np.frombuffer
+
+    def counting(buffer, *args, **kwargs):
+        searched[0] += len(buffer)
+        return frombuffer(buffer, *args, **kwargs)
+
+    monkeypatch.setattr(batch_input, "READ_BYTES", 1 << 16)
+    monkeypatch.setattr(np, "frombuffer", counting)
+    for size in (1, 7):
+        searched[0] = 0
+        pieces = list(batch_input._pieces(io.BytesIO(data), size))
+        assert b"".join(pieces) == data
+        assert all(p.count(b"\n") == size for p in pieces[:-1])
+        assert searched[0] <= 2 * len(data)
+
+
 def test_long_file_tuning_changes_no_byte_and_is_undone(tmp_path, monkeypatch):
     """A long first chunk tunes the process (malloc, garbage collector): the same bytes, and
     the collector's settings are given back (the command may run inside a Python process)."""
@@ -244,6 +269,59 @@ def test_long_file_tuning_changes_no_byte_and_is_undone(tmp_path, monkeypatch):
         plain.stdout, plain.stderr, plain.exit_code
     )  # fmt: skip
     assert (gc.get_threshold(), gc.get_freeze_count()) == before
+
+
+def test_long_file_tuning_leaves_objects_frozen_before_frozen(tmp_path, monkeypatch):
+    """A program that froze its objects (gc.freeze before forking workers) runs batch on a long
+    file: its objects stay frozen (gc.unfreeze would thaw them all)."""
+    import gc
+
+    from bearingload.cli import batch as batch_command
+
+    p = _long_file(tmp_path)
+    monkeypatch.setattr(batch_command, "LONG_CHUNK", 2)
+    mine = [[] for _ in range(3)]  # the program's objects
+    gc.freeze()
+    try:
+        assert not any(o is mine for o in gc.get_objects())  # frozen: in no generation
+        assert batch(p, "--format", "csv").exit_code == 1
+        assert not any(o is mine for o in gc.get_objects())
+    finally:
+        gc.unfreeze()
+    assert any(o is mine for o in gc.get_objects())
+
+
+def test_malloc_is_tuned_only_in_a_process_of_its_own(tmp_path, monkeypatch, capsys):
+    """glibc's malloc settings cannot be given back (a program that ran batch would keep every
+    megabyte it frees afterwards): only the console entry point, whose process batch owns,
+    sets them; click's main inside another program does not."""
+    from bearingload.cli import batch as batch_command
+
+    p = _long_file(tmp_path)
+    calls: list[int] = []
+    monkeypatch.setattr(batch_command, "LONG_CHUNK", 2)
+    monkeypatch.setattr(batch_command, "_keep_freed_memory", lambda: calls.append(1))
+    inside = batch(p, "--format", "csv")
+    assert calls == []
+    code, out, err = run_entry(capsys, "batch", p, "--format", "csv")
+    assert calls == [1]
+    assert (code, out, err) == (1, inside.stdout, inside.stderr)
+
+
+@pytest.mark.parametrize("libc", ["missing", "no mallopt"])
+def test_malloc_tuning_without_glibc_is_skipped(monkeypatch, libc):
+    """No C library to load, or one without mallopt (not glibc): nothing is tuned, no error."""
+    import ctypes
+
+    from bearingload.cli.batch import _keep_freed_memory
+
+    def cdll(name):
+        if libc == "missing":
+            raise OSError("no such library")
+        return object()
+
+    monkeypatch.setattr(ctypes, "CDLL", cdll)
+    _keep_freed_memory()
 
 
 def test_answer_does_not_depend_on_neighbours(tmp_path):

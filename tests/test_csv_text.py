@@ -107,3 +107,24 @@ def test_threaded_block_is_the_serial_block(monkeypatch):
         expected = [str(i), _machine_text(v[i]), _machine_text(-v[n - 1 - i]), blank, "1.5", text]
         assert lines[i] == ",".join(expected)
     assert sum(line.split(",")[3] == "" for line in lines) == int(np.sum(v > 1e10)) > 0
+
+
+def test_a_failing_threaded_block_leaves_no_thread_behind(monkeypatch):
+    """A NaN in a long block: the renderer's error names its column, and the writer threads
+    have ended when it is raised (not when the pool happens to be collected)."""
+    import os
+    import threading
+
+    from bearingload.reports import csv_text
+    from bearingload.reports.render import csv_bytes
+
+    monkeypatch.setattr(os, "sched_getaffinity", lambda pid: {0, 1, 2, 3}, raising=False)
+
+    n = csv_text.PARALLEL_ROWS
+    values = {k: np.arange(n, dtype=float) for k in "abcd"}
+    values["c"][n // 2] = np.nan
+    before = threading.active_count()
+    with pytest.raises(ValueError, match="non-finite number in column 'c'") as caught:
+        csv_bytes([Column(k, k) for k in "abcd"], values)
+    assert threading.active_count() == before
+    del caught

@@ -100,7 +100,8 @@ def batch(
     warned = 0
     progress = _Progress()
     total = 0
-    with _Sink(fmt, output, strict) as sink, _tuned(len(first[1]) >= LONG_CHUNK):
+    long_file = len(first[1]) >= LONG_CHUNK
+    with _Sink(fmt, output, strict) as sink, _tuned(long_file, _own_process()):
         if fmt == "csv":
             sink.write(csv_head(columns))
         for _, lines in _all(first, stream):
@@ -161,30 +162,44 @@ def _row_messages(part: Any, warned: int, progress: _Progress) -> int:
 
 
 @contextmanager
-def _tuned(long_file: bool) -> Iterator[None]:
+def _tuned(long_file: bool, own_process: bool) -> Iterator[None]:
     """A long file allocates and frees the same large arrays chunk after chunk, and makes many
-    small objects (cells, row numbers): on Linux, ask glibc's malloc to keep freed memory for
-    reuse (in one arena, which the writer threads share) rather than give it back to the system
-    and fault it in again; and let the garbage collector pass less often over the objects of
-    start-up (as it was afterwards: the command may run inside a Python process). About 7 % of a
-    10^5-row run; nothing else changes."""
+    small objects (cells, row numbers): let the garbage collector pass less often over the
+    objects of start-up (its settings given back at the end, and objects someone else froze
+    left frozen: the command may run inside a Python program); and, on Linux and only in a
+    process of its own (:data:`bearingload.cli.OWN_PROCESS`), ask glibc's malloc to keep freed
+    memory for reuse (in one arena, which the writer threads share) rather than give it back
+    to the system and fault it in again. That cannot be undone: a program running batch would
+    keep every megabyte it frees afterwards. About 7 % of a 10^5-row run; the output does not
+    change."""
     if not long_file:
         yield
         return
     import gc
 
     threshold = gc.get_threshold()
-    gc.freeze()
+    freeze = gc.get_freeze_count() == 0  # gc.unfreeze() would thaw the caller's objects too
+    if freeze:
+        gc.freeze()
     gc.set_threshold(50_000, 20, 20)
-    _keep_freed_memory()
+    if own_process:
+        _keep_freed_memory()
     try:
         yield
     finally:
         gc.set_threshold(*threshold)
-        gc.unfreeze()
+        if freeze:
+            gc.unfreeze()
+
+
+def _own_process() -> bool:
+    from bearingload.cli import OWN_PROCESS
+
+    return click.get_current_context().obj == OWN_PROCESS
 
 
 def _keep_freed_memory() -> None:
+    """glibc's malloc: keep freed memory, and one arena (process-wide, for good)."""
     if not sys.platform.startswith("linux"):
         return
     try:

@@ -17,9 +17,10 @@ text with a few dozen numpy operations over the whole column:
 Each cell is a row of byte *slots* (:data:`FLOAT_WIDTH`): every character has a fixed slot and
 an unused slot holds NUL, so that each slot (or run of slots: the digits, masked past the last
 one shown, come from lookup tables four at a time, as do '0.000' and 'e-05') is one vectorised
-operation over the column; a line is the row's bytes without the NULs. Zeros are written 0.0 (or -0.0) directly; values outside
-10^-13 ... 10^32 and near-ties take the one-at-a-time path (``render._machine_text``), so every
-cell is byte for byte the text ``render`` writes; a test checks this on 600,000 values.
+operation over the column; a line is the row's bytes without the NULs. Zeros are written 0.0
+(or -0.0) directly; values outside 10^-13 ... 10^32 and near-ties take the one-at-a-time path
+(``render._machine_text``), so every cell is byte for byte the text ``render`` writes; a test
+checks this on 600,000 values.
 """
 
 from __future__ import annotations
@@ -230,14 +231,16 @@ def join_rows(columns: Sequence[tuple[str, Any]]) -> bytearray:
     n = _rows(*columns[0])
     pool = _threads(len(columns)) if n >= PARALLEL_ROWS else None
     run = pool.map if pool else map
-    cells = list(run(_cells, *zip(*columns, strict=True)))
-    widths = [sum(hi - lo for lo, hi in runs) + 1 for _, runs in cells]  # each with its ','
-    starts = np.cumsum([0, *widths]).tolist()
-    buffer = bytearray(n * starts[-1])  # zeros; the block is a view of it (no copy out)
-    block = np.frombuffer(buffer, np.uint8).reshape(n, starts[-1])
-    list(run(_lay, [block] * len(cells), cells, starts[:-1]))
-    if pool:
-        pool.shutdown()
+    try:  # the threads end here, also when a column fails (a NaN)
+        cells = list(run(_cells, *zip(*columns, strict=True)))
+        widths = [sum(hi - lo for lo, hi in runs) + 1 for _, runs in cells]  # with its ','
+        starts = np.cumsum([0, *widths]).tolist()
+        buffer = bytearray(n * starts[-1])  # zeros; the block is a view of it (no copy out)
+        block = np.frombuffer(buffer, np.uint8).reshape(n, starts[-1])
+        list(run(_lay, [block] * len(cells), cells, starts[:-1]))
+    finally:
+        if pool:
+            pool.shutdown(cancel_futures=True)
     block[:, -1] = ord("\n")
     return buffer.translate(None, b"\0")
 
@@ -252,10 +255,13 @@ def _lay(block: np.ndarray, cells: tuple[np.ndarray, list[tuple[int, int]]], at:
 
 
 def _rows(kind: str, data: Any) -> int:
+    """The number of rows of one ``(kind, data)`` column of :func:`join_rows`."""
     return len(data[0] if isinstance(data, tuple) else data)
 
 
 def _threads(columns: int) -> Any:
+    """A pool of one thread per processor this process may use, at most four and one per
+    column; None where that is one thread."""
     import os
     from concurrent.futures import ThreadPoolExecutor
 

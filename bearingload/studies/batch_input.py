@@ -287,27 +287,27 @@ READ_BYTES = 1 << 22
 
 def _pieces(stream: BinaryIO, size: int) -> Iterator[bytes]:
     """Pieces of ``size`` whole lines each (the last: what is left) of a binary stream, read
-    :data:`READ_BYTES` at a time."""
+    :data:`READ_BYTES` at a time. The line ends of what has been read are found once, and every
+    piece they complete is cut from it (a small ``size`` costs no search per piece)."""
     import numpy as np
 
     read = getattr(stream, "read1", stream.read)
     parts: list[bytes] = []
     lines = 0
-    while True:
-        if lines >= size:  # cut after the size-th line end
-            whole = b"".join(parts)
-            ends = np.flatnonzero(np.frombuffer(whole, np.uint8) == ord("\n"))
-            cut = int(ends[size - 1]) + 1
-            yield whole[:cut]
-            parts, lines = [whole[cut:]], len(ends) - size
-            continue
-        data = read(READ_BYTES)
-        if not data:
-            if any(parts):
-                yield b"".join(parts)
-            return
+    while data := read(READ_BYTES):
         parts.append(data)
         lines += data.count(b"\n")
+        if lines < size:
+            continue
+        whole = b"".join(parts)
+        ends = np.flatnonzero(np.frombuffer(whole, np.uint8) == ord("\n"))
+        start = 0
+        for cut in (ends[size - 1 :: size] + 1).tolist():  # after every size-th line end
+            yield whole[start:cut]
+            start = cut
+        parts, lines = [whole[start:]], lines % size
+    if any(parts):
+        yield b"".join(parts)
 
 
 def _lines_of(whole: bytes) -> list[bytes]:
