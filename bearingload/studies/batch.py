@@ -602,7 +602,7 @@ def _solve_rows(rows: Rows, errors: dict[int, str]) -> list[Part]:
             errors.setdefault(rows.numbers[i], row_message(exc))  # a row's first error kept
     out = []
     methods = dict.fromkeys(rows.methods)
-    if len(methods) == 1 and not any(n in errors for n in rows.numbers):
+    if len(methods) == 1 and (not errors or not any(n in errors for n in rows.numbers)):
         return _solve_method(rows.methods[0], rows, errors)  # every row, one call
     for method in methods:
         idx = [i for i, (n, m) in enumerate(zip(rows.numbers, rows.methods, strict=True))
