@@ -54,6 +54,10 @@ def test_integers_match_str():
     assert _texts(int_cells(v)) == [str(x) for x in v.tolist()]
     small = np.arange(-1000, 1000)
     assert _texts(int_cells(small)) == [str(x) for x in small.tolist()]
+    rng = np.random.default_rng(5)
+    for top in (10**4, 10**5, 10**8 - 1, 10**8, 10**10 - 1):  # each width's path
+        v = np.concatenate([[0, top, -top], rng.integers(-top, top, 3000)])
+        assert _texts(int_cells(v)) == [str(x) for x in v.tolist()], top
 
 
 def test_join_rows_blanks_and_text():

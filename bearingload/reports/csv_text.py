@@ -111,7 +111,7 @@ def _ten_digits(a: np.ndarray, e: np.ndarray) -> tuple[np.ndarray, np.ndarray, n
 
 
 @cache
-def _tables() -> tuple[np.ndarray, np.ndarray, np.ndarray, np.ndarray]:
+def _tables() -> tuple[np.ndarray, np.ndarray, np.ndarray, np.ndarray, np.ndarray]:
     """Lookup tables of the cell writer, made on first use (not at import; threads that ask at
     once may each make them, alike).
 
@@ -120,7 +120,9 @@ def _tables() -> tuple[np.ndarray, np.ndarray, np.ndarray, np.ndarray]:
     * ``sig[v]``: how many of those four characters reach the last nonzero digit (0 for 0);
     * ``prefix[k]``: '0.' and k - 1 zeros for k = 1 ... 4 (fixed notation below 1), NUL for 0,
       as the eight bytes of one uint64 word;
-    * ``suffix[e + 64]``: 'e-05', 'e+16' ... of the decimal exponent e (|e| < 64), one uint32.
+    * ``suffix[e + 64]``: 'e-05', 'e+16' ... of the decimal exponent e (|e| < 64), one uint32;
+    * ``lead[v]``: the four characters of v with its leading zeros NUL (0: four NUL), and
+      ``lead[10^4 + v]`` the same with 0 written '0', one uint32 each.
     """
     kept = np.stack([np.where(np.arange(4) < k, _FOUR, _NUL).view(np.uint32).ravel()
                      for k in range(5)])  # fmt: skip
@@ -128,13 +130,17 @@ def _tables() -> tuple[np.ndarray, np.ndarray, np.ndarray, np.ndarray]:
     sig = np.where(nonzero.any(axis=1), 4 - np.argmax(nonzero[:, ::-1], axis=1), 0)
     prefix = np.array([b""] + [b"0." + b"0" * k for k in range(4)], "S8").view(np.uint64)
     suffix = np.array([b"e%+03d" % x for x in range(-64, 64)], "S4").view(np.uint32)
-    return kept.ravel(), sig.astype(np.uint8), prefix, suffix
+    lead = np.where(np.maximum.accumulate(_FOUR != _ZERO, axis=1), _FOUR, _NUL)
+    lead_zero = lead.copy()
+    lead_zero[0, 3] = _ZERO
+    leads = np.concatenate([lead, lead_zero]).view(np.uint32).ravel()
+    return kept.ravel(), sig.astype(np.uint8), prefix, suffix, leads
 
 
 def _slots(out: np.ndarray, m: np.ndarray, e: np.ndarray, fast: np.ndarray) -> np.ndarray:
     """Fill the slots of the text of ``m 10^(e-9)`` in the rows where ``fast`` (a notation no
     row uses costs nothing); return the slots some row may use."""
-    kept, sig, prefix, suffix = _tables()
+    kept, sig, prefix, suffix, _ = _tables()
     used = np.zeros(FLOAT_WIDTH, bool)
     used[6:26] = True  # the digits and their points
     high, rest = np.divmod(m, 10**8)  # m: ten digits, high < 100 (its first two characters: 0)
@@ -189,6 +195,14 @@ def int_cells(values: Any) -> np.ndarray:
     width = len(str(int(a.max()))) if v.size else 1
     out = np.zeros((v.size, 1 + width), np.uint8)
     out[:, 0] = np.where(v < 0, _MINUS, _NUL)
+    if width <= 8:  # two words of four characters from a table, leading zeros NUL
+        lead = _tables()[4]
+        high, low = np.divmod(a.astype(np.int64), 10_000)
+        words = np.empty((v.size, 2), np.uint32)
+        words[:, 0] = lead[high]  # 0: nothing
+        words[:, 1] = np.where(high > 0, _FOUR_WORDS[low], lead[low + 10_000])  # 0: '0'
+        out[:, 1:] = words.view(np.uint8)[:, 8 - width :]
+        return out
     if width <= 10:  # ten digits at once; a digit is shown from the first nonzero one on
         d = _digits(a.astype(np.int64))[:, 10 - width :]
         shown = a[:, None] >= _POW10_INT[width - 1 :: -1]
