@@ -132,3 +132,11 @@ def test_a_failing_threaded_block_leaves_no_thread_behind(monkeypatch):
         csv_bytes([Column(k, k) for k in "abcd"], values)
     assert threading.active_count() == before
     del caught
+
+
+def test_negative_zero_beside_a_blank_cell_keeps_its_sign():
+    """A list column with a None beside -0.0 wrote 0.0 (the blank's filler was 'v or 0');
+    the same column without the None writes -0.0, as the renderer does one value at a time."""
+    cols = [Column("v", "v")]
+    assert csv_block(cols, {"v": [-0.0, None, 1.5]}) == "-0.0\n\n1.5\n"
+    assert csv_block(cols, {"v": [-0.0, 1.5]}) == f"{_machine_text(-0.0)}\n1.5\n"

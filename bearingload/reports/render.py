@@ -256,7 +256,7 @@ def _column_part(vals: Any) -> tuple[str, Any]:
             if type(None) not in types:
                 return kind, np.asarray(vals, dtype=dtype)
             missing = np.array([v is None for v in vals], bool)
-            return kind, (np.asarray([v or 0 for v in vals], dtype=dtype), missing)
+            return kind, (np.asarray([0 if v is None else v for v in vals], dtype=dtype), missing)
     if kind == "f":
         return "f", vals
     if kind and kind in "iu":
