@@ -12,14 +12,18 @@ are grouped by z, as a user with a batch would. Single thread: BLAS threads are 
 from __future__ import annotations
 
 import os
+import sys
 
 os.environ.setdefault("OMP_NUM_THREADS", "1")
 os.environ.setdefault("OPENBLAS_NUM_THREADS", "1")
 os.environ.setdefault("MKL_NUM_THREADS", "1")
 
-import time  # noqa: E402
 
 import numpy as np  # noqa: E402
+
+sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
+
+from bench_solver import best_of  # noqa: E402
 
 from bearingload.contact.hertz import ball_stiffness  # noqa: E402
 from bearingload.models.combined import solve_combined  # noqa: E402
@@ -38,15 +42,6 @@ def random_cases(n: int, rng: np.random.Generator) -> dict[str, np.ndarray]:
     g = np.where(rng.random(n) < 0.2, 0.0, 10 ** rng.uniform(-3, -1, n))
     cage = rng.uniform(0, 360, n)
     return {"z": z, "fr": fr, "fa": fa, "g": g, "cage": cage}
-
-
-def best_of(fn, repeat: int = 3) -> float:
-    times = []
-    for _ in range(repeat):
-        t0 = time.perf_counter()
-        fn()
-        times.append(time.perf_counter() - t0)
-    return min(times)
 
 
 def main() -> None:

@@ -13,14 +13,18 @@ Single thread: BLAS threads are pinned to 1.
 from __future__ import annotations
 
 import os
+import sys
 
 os.environ.setdefault("OMP_NUM_THREADS", "1")
 os.environ.setdefault("OPENBLAS_NUM_THREADS", "1")
 os.environ.setdefault("MKL_NUM_THREADS", "1")
 
-import time  # noqa: E402
 
 import numpy as np  # noqa: E402
+
+sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
+
+from bench_solver import best_of  # noqa: E402
 
 from bearingload.bearings.iso16281 import contact_ratings, reference_rating_life  # noqa: E402
 from bearingload.bearings.resolve import resolve_bearing  # noqa: E402
@@ -30,15 +34,6 @@ from bearingload.studies.sweep import cage_angles  # noqa: E402
 
 STEPS = 36
 F_R, F_A = 1400.0, 700.0
-
-
-def best_of(fn, repeat: int) -> float:
-    times = []
-    for _ in range(repeat):
-        t0 = time.perf_counter()
-        fn()
-        times.append(time.perf_counter() - t0)
-    return min(times)
 
 
 def main() -> None:

@@ -10,15 +10,19 @@ its own cage angle), 10 µm clearance. Single thread: BLAS threads are pinned to
 from __future__ import annotations
 
 import os
+import sys
 
 os.environ.setdefault("OMP_NUM_THREADS", "1")
 os.environ.setdefault("OPENBLAS_NUM_THREADS", "1")
 os.environ.setdefault("MKL_NUM_THREADS", "1")
 
 import math  # noqa: E402
-import time  # noqa: E402
 
 import numpy as np  # noqa: E402
+
+sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
+
+from bench_solver import best_of  # noqa: E402
 
 from bearingload.models.forces import ring_forces  # noqa: E402
 
@@ -47,15 +51,6 @@ def loop_case(x: float, y: float, cage_deg: float) -> tuple[float, float, float,
             kxy += dq * c * s
             kyy += dq * s * s
     return fx, fy, kxx, kxy, kyy
-
-
-def best_of(fn, repeat: int) -> float:
-    times = []
-    for _ in range(repeat):
-        t0 = time.perf_counter()
-        fn()
-        times.append(time.perf_counter() - t0)
-    return min(times)
 
 
 def main() -> None:
