@@ -27,12 +27,11 @@ from __future__ import annotations
 
 from collections.abc import Sequence
 from functools import cache
-from typing import Any
+from typing import Any, NamedTuple
 
 import numpy as np
 
 _POW10 = 10.0 ** np.arange(23)  # exact doubles
-_POW10_INT = 10 ** np.arange(10, dtype=np.uint64)
 #: The four digit characters of 0 ... 9999 (a gather beats integer division per digit).
 _FOUR = ((np.arange(10_000)[:, None] // np.array([1000, 100, 10, 1])) % 10 + ord("0")).astype(
     np.uint8
@@ -56,9 +55,15 @@ def float_cells(values: Any) -> np.ndarray:
     ValueError
         A value is NaN or infinite (csv carries finite numbers only).
     """
-    v = np.asarray(values, dtype=float).ravel()
+    out, used = _float_slots(np.asarray(values, dtype=float).ravel())
+    return out[:, used]
+
+
+def _float_slots(v: np.ndarray) -> tuple[np.ndarray, np.ndarray]:
+    """Every slot of the cells of the floats ``v`` (n x :data:`FLOAT_WIDTH`) and which slots
+    some cell may use."""
     out = np.zeros((v.size, FLOAT_WIDTH), np.uint8)
-    return out[:, write_floats(out, v)]
+    return out, write_floats(out, v)
 
 
 def write_floats(out: np.ndarray, v: np.ndarray) -> np.ndarray:
@@ -110,8 +115,16 @@ def _ten_digits(a: np.ndarray, e: np.ndarray) -> tuple[np.ndarray, np.ndarray, n
     return np.where(carry, 1e9, m), e + carry, fast
 
 
+class _Tables(NamedTuple):
+    kept: np.ndarray
+    sig: np.ndarray
+    prefix: np.ndarray
+    suffix: np.ndarray
+    lead: np.ndarray
+
+
 @cache
-def _tables() -> tuple[np.ndarray, np.ndarray, np.ndarray, np.ndarray, np.ndarray]:
+def _tables() -> _Tables:
     """Lookup tables of the cell writer, made on first use (not at import; threads that ask at
     once may each make them, alike).
 
@@ -134,13 +147,13 @@ def _tables() -> tuple[np.ndarray, np.ndarray, np.ndarray, np.ndarray, np.ndarra
     lead_zero = lead.copy()
     lead_zero[0, 3] = _ZERO
     leads = np.concatenate([lead, lead_zero]).view(np.uint32).ravel()
-    return kept.ravel(), sig.astype(np.uint8), prefix, suffix, leads
+    return _Tables(kept.ravel(), sig.astype(np.uint8), prefix, suffix, leads)
 
 
 def _slots(out: np.ndarray, m: np.ndarray, e: np.ndarray, fast: np.ndarray) -> np.ndarray:
     """Fill the slots of the text of ``m 10^(e-9)`` in the rows where ``fast`` (a notation no
     row uses costs nothing); return the slots some row may use."""
-    kept, sig, prefix, suffix, _ = _tables()
+    kept, sig, prefix, suffix, _ = _tables()  # lead: int_cells
     used = np.zeros(FLOAT_WIDTH, bool)
     used[6:26] = True  # the digits and their points
     high, rest = np.divmod(m, 10**8)  # m: ten digits, high < 100 (its first two characters: 0)
@@ -176,17 +189,6 @@ def _slots(out: np.ndarray, m: np.ndarray, e: np.ndarray, fast: np.ndarray) -> n
     return used
 
 
-def _digits(m: np.ndarray) -> np.ndarray:
-    """The ten digit characters of each integer ``m`` < 10^10 (n x 10 bytes)."""
-    high, rest = np.divmod(m, 10**8)
-    middle, low = np.divmod(rest, 10**4)
-    groups = np.empty((m.size, 3), np.uint32)  # three gathers of four characters each
-    groups[:, 0] = _FOUR_WORDS[high]
-    groups[:, 1] = _FOUR_WORDS[middle]
-    groups[:, 2] = _FOUR_WORDS[low]
-    return groups.view(np.uint8)[:, 2:]
-
-
 def int_cells(values: Any) -> np.ndarray:
     """The decimal text of integers (|v| < 10^19) as a byte matrix: a sign slot and as many
     digit slots as the largest needs."""
@@ -196,20 +198,14 @@ def int_cells(values: Any) -> np.ndarray:
     out = np.zeros((v.size, 1 + width), np.uint8)
     out[:, 0] = np.where(v < 0, _MINUS, _NUL)
     if width <= 8:  # two words of four characters from a table, leading zeros NUL
-        lead = _tables()[4]
+        lead = _tables().lead
         high, low = np.divmod(a.astype(np.int64), 10_000)
         words = np.empty((v.size, 2), np.uint32)
         words[:, 0] = lead[high]  # 0: nothing
         words[:, 1] = np.where(high > 0, _FOUR_WORDS[low], lead[low + 10_000])  # 0: '0'
         out[:, 1:] = words.view(np.uint8)[:, 8 - width :]
         return out
-    if width <= 10:  # ten digits at once; a digit is shown from the first nonzero one on
-        d = _digits(a.astype(np.int64))[:, 10 - width :]
-        shown = a[:, None] >= _POW10_INT[width - 1 :: -1]
-        shown[:, -1] = True  # 0: '0'
-        out[:, 1:] = np.where(shown, d, _NUL)
-        return out
-    started = np.zeros(v.size, bool)
+    started = np.zeros(v.size, bool)  # 10^8 and more: a digit at a time
     for j in range(width):
         power = np.uint64(10 ** (width - 1 - j))
         digit = ((a // power) % np.uint64(10)).astype(np.uint8)
@@ -293,8 +289,7 @@ def _cells(kind: str, data: Any) -> tuple[np.ndarray, list[tuple[int, int]]]:
     if kind == "f":
         v = np.asarray(data, dtype=float).ravel()
         constant = v.size > 1 and _constant(v)  # one text for every row (exponent 1.5, y = 0)
-        out = np.zeros((1 if constant else v.size, FLOAT_WIDTH), np.uint8)
-        used = write_floats(out, v[:1] if constant else v)
+        out, used = _float_slots(v[:1] if constant else v)
         out = np.broadcast_to(out, (v.size, FLOAT_WIDTH)) if constant else out
         edges = np.flatnonzero(np.diff(np.concatenate([[False], used, [False]])))
         runs = list(zip(edges[::2].tolist(), edges[1::2].tolist(), strict=True))

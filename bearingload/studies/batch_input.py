@@ -262,7 +262,7 @@ def _blocks(stream: BinaryIO, size: int) -> Iterator[Block]:
             raw = _lines_of(whole)
             taken = list(_numbered(iter(raw), last))
             if text is not None or any('"' in t for n, t in taken if n > 0):
-                after = (line for whole in pieces for line in _lines_of(whole))
+                after = (line for piece in pieces for line in _lines_of(piece))
                 rest = _numbered(after, last + len(raw))
                 yield from _quoted_blocks(iter(taken), rest, size)
                 return
