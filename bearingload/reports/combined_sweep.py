@@ -13,6 +13,7 @@ Same layout as the radial sweep (:mod:`bearingload.reports.sweep`) and the same 
 
 from __future__ import annotations
 
+from dataclasses import asdict
 from typing import Any
 
 from bearingload.reports.combined import NOTES, tilt_text
@@ -208,12 +209,7 @@ def combined_sweep_json(s: CombinedSweep) -> dict[str, Any]:
     for key in _spread_keys(s):
         sp = s.spread(key)
         assert sp is not None
-        summary[key] = {
-            "min": sp.min,
-            "mean": sp.mean,
-            "max": sp.max,
-            "peak_to_peak": sp.peak_to_peak,
-        }
+        summary[key] = asdict(sp)  # min, mean, max, peak_to_peak
     summary["ripple_per_cage_revolution"] = s.ripple_order
     summary |= fixed(s)
     head = inputs(s)

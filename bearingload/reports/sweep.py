@@ -7,6 +7,7 @@ summary is in the table and json formats).
 
 from __future__ import annotations
 
+from dataclasses import asdict
 from typing import Any
 
 from bearingload.reports.quantities import QUANTITIES, for_elements, units
@@ -196,12 +197,7 @@ def sweep_json(s: CageSweep) -> dict[str, Any]:
     summary: dict[str, Any] = {}
     for key in SPREADS:
         sp = s.spread(key)
-        summary[key] = {
-            "min": sp.min,
-            "mean": sp.mean,
-            "max": sp.max,
-            "peak_to_peak": sp.peak_to_peak,
-        }
+        summary[key] = asdict(sp)  # min, mean, max, peak_to_peak
     summary["ripple_per_cage_revolution"] = s.ripple_order
     summary["compensating_clearance"] = list(s.compensating_clearance)
     rows = _json_rows(s)
