@@ -27,7 +27,20 @@ UNITS: dict[str, dict[str, float]] = {
     "stiffness": {"N/mm^1.5": 1.0, "kgf/mm^1.5": KGF, "N/um^1.5": 1e3**1.5, "N/mm^(10/9)": 1.0},
     "modulus": {"MPa": 1.0, "N/mm^2": 1.0, "GPa": 1e3, "kgf/mm^2": KGF, "Pa": 1e-6},
     "moment": {"Nmm": 1.0, "N*mm": 1.0, "Nm": 1e3, "N*m": 1e3, "kNm": 1e6, "kgfmm": KGF},
-    "angle": {"deg": 1.0, "°": 1.0, "rad": 180.0 / math.pi, "mrad": 0.18 / math.pi},
+    # minutes and seconds of arc as well: the misalignment a bearing tolerates is quoted in
+    # arcmin (SKF: 2-10'); ' and " are the usual signs, ′ and ″ the typographic primes
+    "angle": {
+        "deg": 1.0,
+        "°": 1.0,
+        "rad": 180.0 / math.pi,
+        "mrad": 0.18 / math.pi,
+        "arcmin": 1.0 / 60.0,
+        "'": 1.0 / 60.0,
+        "′": 1.0 / 60.0,
+        "arcsec": 1.0 / 3600.0,
+        '"': 1.0 / 3600.0,
+        "″": 1.0 / 3600.0,
+    },
 }
 
 #: The unit a bare number is taken in, per kind.
@@ -93,14 +106,14 @@ def parse_quantity(text: str | float, kind: str, *, parameter: str | None = None
     text : str or float
         ``"300kgf"``, ``"0.02 mm"``, ``"20um"``, or a bare number. [unit as written]
     kind : str
-        One of ``force``, ``length``, ``stiffness``, ``modulus``.
+        One of ``force``, ``length``, ``stiffness``, ``modulus``, ``moment``, ``angle``.
     parameter : str, optional
         Name used in the error message (defaults to ``kind``).
 
     Returns
     -------
     float
-        The value in N, mm, N/mm^1.5 or MPa.
+        The value in N, mm, N/mm^1.5, MPa, N mm or degrees.
 
     Raises
     ------
@@ -140,7 +153,8 @@ def parse_cage_angle(text: str | float, *, parameter: str = "cage_angle") -> flo
     """Parse a cage angle: ``"half"`` (half a pitch, the load between two balls) or an angle.
 
     The one reading of a cage angle for every command and for ``batch`` files: a bare number is
-    degrees; ``deg``, ``°``, ``rad`` and ``mrad`` may follow it (any case: ``5DEG``, ``0.1rad``).
+    degrees; ``deg``, ``°``, ``rad``, ``mrad``, ``arcmin`` (or ``'``) and ``arcsec`` (or ``"``)
+    may follow it (any case: ``5DEG``, ``0.1rad``, ``30arcmin``).
 
     Parameters
     ----------
@@ -165,6 +179,8 @@ def parse_cage_angle(text: str | float, *, parameter: str = "cage_angle") -> flo
     ('half', 20.0, 90.0)
     >>> round(parse_cage_angle("0.1rad"), 9)
     5.729577951
+    >>> parse_cage_angle("30arcmin"), parse_cage_angle("90'"), parse_cage_angle('5400"')
+    (0.5, 1.5, 1.5)
     """
     if isinstance(text, (int, float)):
         return parse_quantity(float(text), "angle", parameter=parameter)

@@ -55,11 +55,12 @@ def test_written_units_are_used_as_they_are(capsys):
 @pytest.mark.parametrize(
     "spelling, degrees",
     [("0.1rad", 0.1 * 180.0 / math.pi), ("5.5", 5.5), ("5.5deg", 5.5), ("5.5°", 5.5),
-     ("5.5DEG", 5.5), ("30mrad", 0.03 * 180.0 / math.pi), ("0.1 rad", 0.1 * 180.0 / math.pi)],
+     ("5.5DEG", 5.5), ("30mrad", 0.03 * 180.0 / math.pi), ("0.1 rad", 0.1 * 180.0 / math.pi),
+     ("330arcmin", 5.5), ("330'", 5.5), ("19800arcsec", 5.5), ('19800"', 5.5), ("330′", 5.5)],
 )  # fmt: skip
 def test_cage_angle_spellings_are_those_of_batch(tmp_path, spelling, degrees):
     """solve and table read --cage-angle as batch reads its cage_angle column: degrees by
-    default, deg, rad, mrad (solve used to refuse '0.1rad')."""
+    default, deg, rad, mrad, arcmin (or '), arcsec (or ") (solve used to refuse '0.1rad')."""
     solve = [*HAND, "-G", "20um", "--format", "json"]
     got = json.loads(invoke(*solve, "--cage-angle", spelling).output)["cases"][0]
     want = json.loads(invoke(*solve, "--cage-angle", repr(degrees)).output)["cases"][0]
@@ -87,3 +88,18 @@ def test_bad_cage_angle_is_one_error_line(capsys):
     code, out, err = run_entry(capsys, *HAND, "--cage-angle", "0.1radian")
     assert code == 2 and out == "" and err.count("\n") == 1
     assert err.startswith("Error: Invalid value for '--cage-angle': unknown unit 'radian'"), err
+
+
+@pytest.mark.parametrize(
+    ("text", "degrees"),
+    [("10arcmin", 10 / 60), ("10 arcmin", 10 / 60), ("10'", 10 / 60), ("10′", 10 / 60),
+     ("36arcsec", 0.01), ('36"', 0.01), ("36″", 0.01), ("-3ARCMIN", None)],
+)  # fmt: skip
+def test_minutes_and_seconds_of_arc(text, degrees):
+    """The misalignment a deep-groove bearing tolerates is quoted in arcmin (2-10'); the
+    warnings speak in arcmin: the options read it (units are case-sensitive, as for forces)."""
+    if degrees is None:
+        with pytest.raises(InputError, match="unknown unit 'ARCMIN'.*arcmin"):
+            parse_quantity(text, "angle")
+        return
+    assert parse_quantity(text, "angle") == pytest.approx(degrees, rel=1e-15)
