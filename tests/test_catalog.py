@@ -310,3 +310,28 @@ def test_entries_errors(kwargs: dict[str, str], parameter: str) -> None:
     with pytest.raises(InputError) as info:
         entries(**kwargs)  # type: ignore[arg-type]
     assert info.value.parameter == parameter
+
+
+def test_a_lone_makers_set_is_the_rows_set() -> None:
+    """6405 and 6407-6416: NTN alone gives a ball set; it is used without maker= and marked
+    (only_maker), its ratings with it. Where two makers give one (6302, 6403, 6404, 6406) the
+    row stays without a set and a maker must be named."""
+    from bearingload.bearings.catalog import ball_sets, variant
+
+    lone = {bs.designation for bs in ball_sets()} - {
+        bs.designation for bs in ball_sets() if bs.maker == "NSK"
+    }
+    for name in sorted(lone):
+        row = find(name)
+        if len(row.makers) == 1:
+            assert row.only_maker and row.has_geometry and row.maker == row.makers[0] == "NTN"
+            ntn = variant(name, "NTN")
+            assert (row.balls, row.ball_diameter, row.C, row.C0) == (
+                ntn.balls, ntn.ball_diameter, ntn.C, ntn.C0
+            )  # fmt: skip
+            assert not ntn.only_maker  # named: nothing to say
+        else:
+            assert not row.only_maker and not row.has_geometry
+    assert sorted(n for n in lone if find(n).only_maker) == [
+        "6405", "6407", "6408", "6409", "6410", "6411", "6412", "6413", "6414", "6415", "6416"
+    ]  # fmt: skip

@@ -174,3 +174,78 @@ def test_kind_series_and_catalogue_name(
 def test_new_forms_reject(text: str) -> None:
     with pytest.raises(InputError, match="accepted: ISO"):
         parse(text)
+
+
+#: Designations of bearing types the package does not model (makers' catalogue names), and the
+#: type the refusal must name; 30205 and 30305 used to read as GOST ball bearings 205 and 305.
+UNMODELLED = {
+    "30205": "tapered roller bearing (series 302)",
+    "30305": "tapered roller bearing (series 303)",
+    "31305 J2": "tapered roller bearing (series 313)",
+    "32005 X": "tapered roller bearing (series 320)",
+    "32205": "tapered roller bearing (series 322)",
+    "32305": "tapered roller bearing (series 323)",
+    "32905": "tapered roller bearing (series 329)",
+    "33005": "tapered roller bearing (series 330)",
+    "33105": "tapered roller bearing (series 331)",
+    "33205": "tapered roller bearing (series 332)",
+    "22205 E": "spherical roller bearing (series 222)",
+    "22308 EK": "spherical roller bearing (series 223)",
+    "23005": "spherical roller bearing (series 230)",
+    "23105": "spherical roller bearing (series 231)",
+    "23205": "spherical roller bearing (series 232)",
+    "23905": "spherical roller bearing (series 239)",
+    "24005": "spherical roller bearing (series 240)",
+    "24105": "spherical roller bearing (series 241)",
+    "1205": "self-aligning ball bearing (series 12)",
+    "1305 ETN9": "self-aligning ball bearing (series 13)",
+    "2205": "self-aligning ball bearing (series 22",
+    "2305-2RS": "self-aligning ball bearing (series 23",
+    "51105": "thrust ball bearing (series 511)",
+    "51205": "thrust ball bearing (series 512)",
+    "51305": "thrust ball bearing (series 513)",
+    "51405": "thrust ball bearing (series 514)",
+    "52205": "thrust ball bearing (series 522)",
+    "53205": "thrust ball bearing (series 532)",
+    "29412 E": "thrust roller bearing (series 294)",
+    "81212": "thrust roller bearing (series 812)",
+    "NA4905": "needle roller bearing (NA)",
+    "NK20/16": "needle roller bearing (NK)",
+    "HK1516": "needle roller bearing (HK)",
+    "NKI 20/16": "needle roller bearing (NKI)",
+    "7205B": "angular contact ball bearing (series 72)",
+    "7305 BEP": "angular contact ball bearing (series 73)",
+    "7005C": "angular contact ball bearing (series 70)",
+    "7206AC": "angular contact ball bearing (series 72)",
+    "71905 CD/P4A": "angular contact ball bearing (series 719)",
+    "7205": "angular contact ball bearing (series 72; read as GOST 3189, type digit 7, a tapered",
+    "36205": "angular contact ball bearing (GOST 3189 type digit 6)",
+    "8205": "thrust ball bearing (GOST 3189 type digit 8)",
+    "QJ 206": "four-point contact ball bearing (QJ)",
+    "NN3006": "double-row cylindrical roller bearing (NN)",
+    "6-30205": "tapered roller bearing (series 302)",
+}
+
+
+@pytest.mark.parametrize("text", sorted(UNMODELLED))
+def test_unmodelled_types_are_named_and_refused(text: str) -> None:
+    from bearingload.bearings.designation import MODELLED, UnmodelledBearing
+
+    with pytest.raises(UnmodelledBearing) as info:
+        parse(text)
+    assert info.value.parameter == "bearing"
+    message = str(info.value)
+    assert f"{text!r} is " in message and UNMODELLED[text] in message
+    assert message.endswith(f"which bearingload does not model; it models {MODELLED}")
+
+
+def test_the_refusal_keeps_every_form_the_catalogue_accepts() -> None:
+    """Every catalogue and roller row still parses (the refusal runs before every form), and
+    the GOST long forms with a design variant stay ball bearings."""
+    from bearingload.bearings.catalog import entries
+    from bearingload.bearings.rollers import entries as roller_entries
+
+    for name in [r.designation for r in entries()] + [r.designation for r in roller_entries()]:
+        assert parse(name).base == name
+    for text in ("180306", "80306", "60205", "50205", "160306", "6-208", "75-313", "306"):
+        assert parse(text).kind == "ball" and parse(text).standard == "GOST"

@@ -27,7 +27,9 @@ Default maker: **NSK** (:data:`DEFAULT_MAKER`). Its inversion has three constrai
 15 of the 16 ball sets GMN prints and every published test-rig set of the same designation
 (CWRU 6203/6205, Paderborn 6203, PRONOSTIA 61804), and NSK lists every designation of the
 60, 62, 63, 618, 619 and 160 series to 100 mm bore. Designations NSK does not list (64xx) or
-whose NSK inversion is inconclusive (6302) have no default set: name a maker.
+whose NSK inversion is inconclusive (6302) have no default set: where one maker alone gives a
+set (6405, 6407 ... 6416: NTN) that set is used and said so (``only_maker``); where several
+do (6302, 6403, 6404, 6406: NTN and SKF) name a maker.
 
 * Pitch diameter d_m = (d + D) / 2 for derived sets; read sets carry the published d_m.
 * Groove conformities f = r / D_w default to f_i = 0.52, f_o = 0.53 (the ISO/TS 16281
@@ -54,7 +56,7 @@ import functools
 import math
 from dataclasses import dataclass
 
-from bearingload.bearings.designation import Designation, parse
+from bearingload.bearings.designation import Designation, UnmodelledBearing, parse
 from bearingload.errors import InputError
 
 #: Default inner-groove conformity r_i / D_w (ISO/TS 16281 convention). [-]
@@ -121,6 +123,9 @@ class BearingGeometry:
         for a read set.
     makers : tuple of str
         Every maker with a ball set for this designation (choose with ``maker=``).
+    only_maker : bool
+        True when the ball set is that of the one maker who gives a set for this designation
+        (``6408``: NTN), used without ``maker=`` because there is nothing to choose between.
     """
 
     designation: str
@@ -144,6 +149,7 @@ class BearingGeometry:
     method: str | None = None
     confidence: str | None = None
     makers: tuple[str, ...] = ()
+    only_maker: bool = False
 
     @property
     def has_geometry(self) -> bool:
@@ -307,6 +313,8 @@ def _rows() -> tuple[BearingGeometry, ...]:
         default = next((bs for bs in sets if bs.maker == DEFAULT_MAKER), None)
         if default is not None:
             row = _with_set(row, default)
+        elif len(makers) == 1 and sets:  # one maker gives a set: nothing to choose between
+            row = dataclasses.replace(_with_set(row, sets[0]), only_maker=True)
         elif sets:
             others = ", ".join(f"{bs.maker} {bs.balls} x {bs.ball_diameter:g} mm" for bs in sets)
             row = dataclasses.replace(row, notes=f"{row.notes}; maker ball sets: {others}")
@@ -357,7 +365,7 @@ def variant(designation: str, maker: str) -> BearingGeometry:
         )
     for bs in ball_sets():
         if bs.designation == row.designation and bs.maker == key:
-            return _with_set(row, bs)
+            return dataclasses.replace(_with_set(row, bs), only_maker=False)
     have = ", ".join(row.makers) or "none"
     raise InputError(
         "maker",
@@ -450,6 +458,8 @@ def find(designation: str) -> BearingGeometry:
     """
     try:
         parsed = parse(designation)
+    except UnmodelledBearing:
+        raise  # another bearing type: no geometry given by hand makes it a deep-groove one
     except InputError as exc:
         raise InputError(
             "bearing", f"{exc.args[0].removeprefix('bearing: ')}; or {_BY_HAND}"

@@ -79,6 +79,72 @@ ACCEPTED_FORMS = (
     "or GOST '306', '180306', '75-313', '6-208' (series 2xx, 3xx, 4xx)"
 )
 
+#: What bearingload models, named when it refuses a designation of another bearing type.
+MODELLED = (
+    "single-row deep groove ball bearings (ISO series 60, 62, 63, 64, 618, 619, 160 and bores "
+    "below 10 mm; GOST 8338 2xx, 3xx, 4xx) and single-row cylindrical roller bearings (NU, N, "
+    "NJ, NUP of the 2 and 3 series)"
+)
+
+#: Designations of bearing types that bearingload does not model, as the makers' catalogues
+#: name them: (pattern of the upper-case designation, whose group ``series`` is the series;
+#: what the designation is, with ``{series}``). Checked before the deep-groove and GOST forms:
+#: a tapered roller bearing 30205 would otherwise read as a GOST ball bearing 205 of design
+#: variant 3. The type digit of GOST 3189 (the fourth from the right) is 2 for cylindrical,
+#: 7 for tapered roller bearings, 6 for angular contact and 8 for thrust ball bearings.
+_UNMODELLED: tuple[tuple[re.Pattern[str], str], ...] = tuple(
+    (re.compile(pattern), what)
+    for pattern, what in (
+        (
+            r"^(?P<series>3(?:0[23]|13|2[0239]|3[012]))\d{2}(?!\d)",
+            "a tapered roller bearing (series {series})",
+        ),
+        (
+            r"^(?P<series>2(?:2[23]|3[01289]|4[01]))\d{2}(?!\d)",
+            "a spherical roller bearing (series {series})",
+        ),
+        (r"^(?P<series>1[23])\d{2}(?!\d)", "a self-aligning ball bearing (series {series})"),
+        (
+            r"^(?P<series>2[23])\d{2}(?!\d)",
+            "a self-aligning ball bearing (series {series}; read as GOST 3189, type digit 2, a "
+            "cylindrical roller bearing: give its ISO name, NU, N, NJ or NUP and the last three "
+            "digits)",
+        ),
+        (
+            r"^(?P<series>5(?:1[1-4]|[234][2-4]))\d{2}(?!\d)",
+            "a thrust ball bearing (series {series})",
+        ),
+        (r"^(?P<series>8[1-5])\d{2}(?!\d)", "a thrust ball bearing (GOST 3189 type digit 8)"),
+        (
+            r"^(?P<series>29[234]|81[12]|89[34])\d{2}(?!\d)",
+            "a thrust roller bearing (series {series})",
+        ),
+        (
+            r"^(?P<series>7[0-4]|71[89])\d{2}\s*[-/]?\s*(?:AC|A|B|C|E)",
+            "a single-row angular contact ball bearing (series {series})",
+        ),
+        (
+            r"^(?P<series>71[89])\d{2}(?!\d)",
+            "a single-row angular contact ball bearing (series {series})",
+        ),
+        (
+            r"^(?P<series>7[0-5])\d{2}(?!\d)",
+            "a single-row angular contact ball bearing (series {series}; read as GOST 3189, "
+            "type digit 7, a tapered roller bearing)",
+        ),
+        (
+            r"^(?P<series>[34]6[1-4])\d{2}(?!\d)",
+            "an angular contact ball bearing (GOST 3189 type digit 6)",
+        ),
+        (
+            r"^(?P<series>RNA|NA|NKI[AB]?|NKS|NKX|NK|NX|HK|BK)\s*\d",
+            "a needle roller bearing ({series})",
+        ),
+        (r"^(?P<series>QJF?)\s*\d", "a four-point contact ball bearing ({series})"),
+        (r"^(?P<series>NNU?)\s*\d", "a double-row cylindrical roller bearing ({series})"),
+    )
+)
+
 #: Old four-digit names of the 618 and 619 series (``6806`` = ``61806``).
 OLD_SERIES_NAMES: dict[str, str] = {"68": "618", "69": "619"}
 
@@ -207,6 +273,29 @@ def bore_from_code(code: str) -> float:
     return SPECIAL_BORES.get(code, 5.0 * int(code))
 
 
+class UnmodelledBearing(InputError):
+    """A designation of a bearing type bearingload does not model (tapered or spherical roller,
+    self-aligning, angular contact, thrust, needle ...): no geometry given by hand helps."""
+
+
+def _refuse_unmodelled(raw: str, norm: str) -> None:
+    """Raise :class:`UnmodelledBearing` when ``norm`` (with or without a GOST prefix such as
+    ``6-``) names a bearing type of :data:`_UNMODELLED`."""
+    bodies = [norm]
+    m = re.match(r"^([^-\s]{1,6})\s*-\s*(\S.*)$", norm)
+    if m and _PREFIX.match(m.group(1)):
+        bodies.append(m.group(2))
+    for body in bodies:
+        for pattern, what in _UNMODELLED:
+            hit = pattern.match(body)
+            if hit:
+                raise UnmodelledBearing(
+                    "bearing",
+                    f"{raw!r} is {what.format(series=hit.group('series'))}, which bearingload "
+                    f"does not model; it models {MODELLED}",
+                )
+
+
 def _error(text: str, why: str = "") -> InputError:
     reason = f" ({why})" if why else ""
     return InputError(
@@ -270,7 +359,10 @@ def parse(text: str) -> Designation:
     ------
     InputError
         (parameter ``bearing``) when the text is not one of the accepted forms, names an
-        unsupported series, or marks two different clearance or accuracy classes.
+        unsupported series, or marks two different clearance or accuracy classes;
+        :class:`UnmodelledBearing` when it names a bearing type the package does not model
+        (``30205`` tapered roller, ``22205`` spherical roller, ``1205`` self-aligning ball,
+        ``51205`` thrust, ``7205B`` angular contact, ``NA4905`` needle ...).
 
     Examples
     --------
@@ -284,6 +376,7 @@ def parse(text: str) -> Designation:
     norm = raw.upper().translate(_FOLD)
     if not norm:
         raise _error(raw, "empty")
+    _refuse_unmodelled(raw, norm)
     other = _parse_other_iso(raw, norm)
     if other is not None:
         return other

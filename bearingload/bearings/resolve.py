@@ -37,7 +37,13 @@ import math
 from dataclasses import dataclass
 from typing import Any
 
-from bearingload.bearings.catalog import DEFAULT_F_I, DEFAULT_F_O, BearingGeometry, lookup
+from bearingload.bearings.catalog import (
+    DEFAULT_F_I,
+    DEFAULT_F_O,
+    DEFAULT_MAKER,
+    BearingGeometry,
+    lookup,
+)
 from bearingload.bearings.clearance import (
     _NEEDS_BORE,
     PICKS,
@@ -342,6 +348,8 @@ def _ball_set(
             )
     if geom is not None:
         sources.append(f"catalogue row {geom.designation} ({geom.standard}): {geom.source}")
+        if geom.only_maker:
+            sources.append(only_maker_text(geom))
         if geom.notes:
             sources.append(f"catalogue notes: {geom.notes}")
         prov = [
@@ -366,6 +374,14 @@ def _ball_set(
     return _BallSet(None, int(balls), dw, dm, fi, fo, hand_bore, sources, [])
 
 
+def only_maker_text(geom: BearingGeometry) -> str:
+    """Why a ball set was used without a maker being named: its maker is the only one."""
+    return (
+        f"ball set: {geom.maker}'s, the only maker with a ball set for {geom.designation} in the "
+        f"catalogue (no {DEFAULT_MAKER} set), used without a maker being named"
+    )
+
+
 def _ball_set_provenance(g: _BallSet, given: dict[str, Any]) -> list[Provenance]:
     """z, D_w, d_m, f_i, f_o with the source of each: catalogue, override or given."""
     geom = g.geom
@@ -379,6 +395,8 @@ def _ball_set_provenance(g: _BallSet, given: dict[str, Any]) -> list[Provenance]
     set_src = "catalogue"
     if geom is not None and geom.standard == "ISO" and geom.maker is not None:
         set_src = f"catalogue: {geom.maker} ball set, {geom.method}"
+        if geom.only_maker:
+            set_src += f" (the only maker with a set for {geom.designation})"
     pitch_src = set_src
     if geom is not None and "pitch_diameter" not in overridden:
         pitch_src = "(d + D)/2" if math.isclose(g.dm or 0.0, (geom.d + geom.D) / 2) else pitch_src

@@ -229,14 +229,14 @@ def _notes(cases: Sequence[LoadedCase], records: Sequence[dict[str, Any]]) -> li
             "life L10 = (C/F_r)^(10/3) and allowable load C/L^(3/10) (ISO 281, p = 10/3)."
         )
     if b is not None:
-        notes += _set_note(b)
+        notes += set_note(b)
         src = next((p.source for p in b.provenance if p.key == "clearance"), "")
         notes.append(f"G_r: {src}.")
         notes.append("--show-geometry lists the geometry used and the source of every value.")
     return notes
 
 
-def _set_note(b: Any) -> list[str]:
+def set_note(b: Any) -> list[str]:
     """Where a catalogue bearing's ball (or roller) set comes from, in one line."""
     g = b.geometry
     if b.kind == "roller":
@@ -247,6 +247,8 @@ def _set_note(b: Any) -> list[str]:
     how = f"{g.method}" + (f", {g.confidence} confidence" if g.method == "derived" else "")
     others = [m for m in g.makers if m != g.maker]
     more = f"; other makers' sets: --maker {' | '.join(others)}" if others else ""
+    if g.only_maker:
+        more = f"; the only maker with a ball set for {g.designation} in the catalogue"
     return [f"Ball set: {g.maker} ({how}){more}."]
 
 
