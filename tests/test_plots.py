@@ -3,6 +3,7 @@ whole; without matplotlib one clear error line."""
 
 from __future__ import annotations
 
+import json
 import sys
 
 # matplotlib is installed by `make` (extra 'plot'): these tests need it, none is skipped
@@ -38,7 +39,7 @@ def test_sweep_figure_holds_the_sweep():
 
 def test_ball_loads_figure_holds_the_loads():
     r = solve(9, 1000.0, 1e5, 0.01, 7.0)
-    fig = plots.ball_loads_figure([("", r)], "title")
+    fig = plots.ball_loads_figure([("", r.ball_angles(), r.ball_loads())], "title")
     (ax,) = fig.get_axes()
     heights = [p.get_height() for p in ax.patches]
     np.testing.assert_allclose(heights, r.ball_loads(), rtol=1e-15)
@@ -69,22 +70,34 @@ def test_solve_plot_png_and_range(tmp_path):
     assert matplotlib.image.imread(str(png)).shape[:2] == (650, 650)
 
 
-def test_solve_plot_figure_of_the_range():
-    from bearingload.cli.plot import _ball_loads_figure
-
-    options = dict(
-        bearing="306", balls=None, stiffness=None, clearance="C3", clearance_pick="range",
-        ball_diameter=None, pitch_diameter=None, inner_conformity=None, outer_conformity=None,
-        modulus=None, poisson=None, cage_angle="0", exponent=1.5, load=2941.99,
-    )  # fmt: skip
-    from bearingload.bearings.clearance import parse_clearance
-
-    options["clearance"] = parse_clearance("C3")
-    fig = _ball_loads_figure(options)
+def test_solve_plot_figure_of_the_range(monkeypatch, tmp_path):
+    figures = _drawn(monkeypatch)
+    out = invoke("solve", "306", "-F", "300kgf", "-G", "C3", "--clearance-pick", "range",
+                 "--format", "json", "--plot", str(tmp_path / "p.png"))  # fmt: skip
+    (fig,) = figures
     (ax,) = fig.get_axes()
     labels = [t.get_text() for t in ax.get_legend().get_texts()]
     assert [lab.split("(")[-1] for lab in labels] == ["min)", "mean)", "max)"]
     assert len(ax.patches) == 3 * 8
+    cases = json.loads(out.stdout)["cases"]
+    heights = [p.get_height() for p in ax.patches]
+    expected = [q for c in cases for q in c["ball_loads"]]  # the command's own solution
+    assert heights == pytest.approx(expected, rel=1e-9, abs=1e-9)
+
+
+def _drawn(monkeypatch) -> list:
+    """Every Figure saved while the test runs (whatever draws it), saved as it would be."""
+    from matplotlib.figure import Figure
+
+    figures: list = []
+    save = Figure.savefig
+
+    def recording(self, *args, **kwargs):
+        figures.append(self)
+        return save(self, *args, **kwargs)
+
+    monkeypatch.setattr(Figure, "savefig", recording)
+    return figures
 
 
 def test_without_matplotlib_one_error_line_and_nothing_written(capsys, tmp_path, monkeypatch):
@@ -107,7 +120,7 @@ def test_plot_into_a_missing_folder_is_a_usage_error(capsys, tmp_path):
     assert err.startswith("Error: Invalid value for '--plot': cannot write")
 
 
-def test_save_png_is_atomic(tmp_path, monkeypatch):
+def test_save_figure_is_atomic(tmp_path, monkeypatch):
     target = tmp_path / "p.png"
     target.write_bytes(b"old")
     fig = plots.sweep_figure(sweep(9, 1000.0, 1e5, 0.01, steps=3))
@@ -117,6 +130,6 @@ def test_save_png_is_atomic(tmp_path, monkeypatch):
 
     monkeypatch.setattr(fig, "savefig", broken)
     with pytest.raises(OSError):
-        plots.save_png(fig, str(target))
+        plots.save_figure(fig, str(target))
     assert target.read_bytes() == b"old"
     assert [p.name for p in tmp_path.iterdir()] == ["p.png"]

@@ -36,6 +36,8 @@ from __future__ import annotations
 
 from typing import TYPE_CHECKING, Any
 
+import numpy as np
+
 from bearingload.errors import InputError
 
 if TYPE_CHECKING:  # the catalogue is imported only where a bearing is resolved
@@ -49,22 +51,37 @@ P_MAX_BALL = 4200.0
 P_MAX_ROLLER = 4000.0
 #: Deepest preload accepted without a warning, as a multiple of the bore's C5 maximum. [-]
 PRELOAD_BOUND_FACTOR = 1.0
+#: ISO 76:2006, 7.1: static equivalent radial load of radial ball bearings,
+#: P0r = X0 F_r + Y0 F_a with X0 = 0.6, Y0 = 0.5, and P0r = F_r where that is larger. [-]
+X0_BALL, Y0_BALL = 0.6, 0.5
 
 
-def max_contact_pressures(bearing: ResolvedBearing, load: float) -> tuple[float, float] | None:
-    """Maximum pressures of the inner and outer contact of a rolling element under ``load``.
+def max_contact_pressures(
+    bearing: ResolvedBearing, load: Any, contact_angle: Any = 0.0
+) -> tuple[float, float] | None:
+    """Maximum pressures of the inner and outer contact of a rolling element under ``load``,
+    or the largest of each contact over several balls.
+
+    A ball at the contact angle alpha touches raceways whose curvature in the rolling direction
+    is 2 cos(alpha)/(d_m -+ D_w cos(alpha)) (inner, outer; Harris & Kotzalas, ISO/TS 16281),
+    that of a zero-angle bearing of pitch diameter d_m/cos(alpha): exact Hertz theory
+    (:func:`bearingload.contact.hertz.ball_contacts`) at that pitch diameter, the curvatures
+    the combined-load solver gives the ball stiffness with.
 
     Parameters
     ----------
     bearing : ResolvedBearing
         Balls need D_w, d_m, f_i, f_o; rollers D_w, d_m, L_we.
-    load : float
-        Rolling-element load Q >= 0. [N]
+    load : float or array_like
+        Rolling-element load Q >= 0, or the loads of several balls. [N]
+    contact_angle : float or array_like
+        Contact angle of each ball (balls only; rollers: 0). [°]
 
     Returns
     -------
     (float, float) or None
-        (p_inner, p_outer) [MPa]; None when the geometry is not known (stiffness given by hand).
+        (p_inner, p_outer), each the largest over the balls given [MPa]; None when the geometry
+        is not known (stiffness given by hand).
     """
     if bearing.kind == "roller":
         if bearing.roller_length is None or bearing.ball_diameter is None:
@@ -79,14 +96,44 @@ def max_contact_pressures(bearing: ResolvedBearing, load: float) -> tuple[float,
             bearing.modulus,
             bearing.poisson,
         )
-        return float(p_i), float(p_o)
+        return float(np.max(p_i)), float(np.max(p_o))
     dw, dm, fi, fo = bearing.ball_diameter, bearing.pitch_diameter, bearing.f_i, bearing.f_o
     if dw is None or dm is None or fi is None or fo is None:
         return None
     from bearingload.contact.hertz import ball_contacts
 
-    c = ball_contacts(float(load), dw, dm, fi, fo, bearing.modulus, bearing.poisson)
-    return float(c.inner.p_max), float(c.outer.p_max)
+    if np.ndim(load) == 0 and np.ndim(contact_angle) == 0 and float(contact_angle) == 0.0:
+        c = ball_contacts(float(load), dw, dm, fi, fo, bearing.modulus, bearing.poisson)
+        return float(c.inner.p_max), float(c.outer.p_max)
+    # |cos|: a contact angle past 90° (which the combined solver can report far beyond C0) has
+    # the raceway curvatures of its mirror angle; at 90° the rolling curvature is that of d_m = inf
+    cos_a = np.clip(np.abs(np.cos(np.deg2rad(np.asarray(contact_angle, dtype=float)))), 1e-9, 1.0)
+    c = ball_contacts(np.asarray(load, dtype=float), dw, dm / cos_a, fi, fo, bearing.modulus,
+                      bearing.poisson)  # fmt: skip
+    return float(np.max(c.inner.p_max)), float(np.max(c.outer.p_max))
+
+
+def static_equivalent_load(radial_load: float, axial_load: float = 0.0) -> float:
+    """Static equivalent radial load P0 of a radial ball bearing (ISO 76:2006, 7.1). [N]
+
+    ``P0 = max(X0 F_r + Y0 |F_a|, F_r)`` with X0 = :data:`X0_BALL` = 0.6, Y0 = :data:`Y0_BALL`
+    = 0.5 (single-row radial ball bearings); P0 = F_r without an axial load, as for a
+    cylindrical roller bearing under its radial load (ISO 76, 7.2).
+
+    >>> static_equivalent_load(1000.0), static_equivalent_load(1000.0, 2000.0)
+    (1000.0, 1600.0)
+    """
+    return max(radial_load, X0_BALL * radial_load + Y0_BALL * abs(axial_load))
+
+
+def static_safety(c0: float | None, p0: float) -> float | None:
+    """Static safety factor s0 = C0/P0 (ISO 76:2006, 3.6); None where C0 is not known or
+    P0 = 0 (nothing loads the bearing statically: no finite factor). [-]
+
+    >>> static_safety(10000.0, 2500.0), static_safety(None, 1.0), static_safety(1.0, 0.0)
+    (4.0, None, None)
+    """
+    return c0 / p0 if c0 and p0 > 0 else None
 
 
 def clearance_findings(bearing: ResolvedBearing) -> list[str]:
@@ -142,8 +189,8 @@ def case_warnings(
     out: list[str] = []
     element = "roller" if bearing.kind == "roller" else "ball"
     c0 = bearing.C0
-    if c0:
-        s0 = c0 / load
+    s0 = static_safety(c0, load)
+    if c0 and s0 is not None:
         if s0 < S0_MIN:
             out.append(
                 f"static safety factor s0 = C0/P0 = {s0:.3g} is below {S0_MIN:g} (ISO 76: "
@@ -197,9 +244,6 @@ def element_warnings(result: Any, balls: int, element: str = "ball") -> list[str
     return []
 
 
-#: ISO 76:2006, 7.1: static equivalent radial load of radial ball bearings,
-#: P0r = X0 F_r + Y0 F_a with X0 = 0.6, Y0 = 0.5, and P0r = F_r where that is larger. [-]
-X0_BALL, Y0_BALL = 0.6, 0.5
 #: Misalignment a deep-groove ball bearing tolerates: 2 to 10 arcmin (SKF rolling bearings
 #: catalogue, deep groove ball bearings, "Misalignment"); above 10 arcmin a warning. [°]
 MISALIGNMENT_TOLERATED = 10.0 / 60.0
@@ -212,19 +256,21 @@ def combined_warnings(
     q_max: float,
     loaded_balls: int,
     misalignment: float | None = None,
+    pressures: tuple[float, float] | None | str = "compute",
 ) -> list[str]:
     """Findings on one combined-load case (ball bearing), one sentence each; empty when all is well.
 
     The static checks use the static equivalent load of ISO 76:2006, 7.1
-    (``P0 = max(F_r, 0.6 F_r + 0.5 |F_a|)``); the contact pressure is that of the heaviest ball
-    at the groove's radial section (:func:`max_contact_pressures`), the check the static rating
-    is defined by.
+    (:func:`static_equivalent_load`, ``P0 = max(F_r, 0.6 F_r + 0.5 |F_a|)``). The contact
+    pressure: ``pressures`` (inner, outer) [MPa] where known (the largest of every ball at its
+    contact angle, as ``solve`` reports them; None: not known for this bearing), by default that
+    of the heaviest ball at the groove's radial section (:func:`max_contact_pressures`).
     """
     out: list[str] = []
-    p0 = max(radial_load, X0_BALL * radial_load + Y0_BALL * abs(axial_load))
+    p0 = static_equivalent_load(radial_load, axial_load)
     c0 = bearing.C0
-    if c0 and p0 > 0:
-        s0 = c0 / p0
+    s0 = static_safety(c0, p0)
+    if c0 and s0 is not None:
         if s0 < S0_MIN:
             out.append(
                 f"static safety factor s0 = C0/P0 = {s0:.3g} is below {S0_MIN:g} (ISO 76: "
@@ -236,7 +282,8 @@ def combined_warnings(
                 f"the static equivalent load P0 = {p0:.6g} N is above the basic static rating "
                 f"C0 = {c0:.6g} N"
             )
-    pressures = max_contact_pressures(bearing, q_max)
+    if isinstance(pressures, str):
+        pressures = max_contact_pressures(bearing, q_max)
     if pressures is not None:
         p, where = max(zip(pressures, ("inner", "outer"), strict=True))
         if p > P_MAX_BALL:

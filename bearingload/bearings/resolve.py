@@ -174,6 +174,14 @@ class ResolvedBearing:
         )
         return dataclasses.replace(self, clearance=value, clearance_pick=pick, provenance=prov)
 
+    def with_dynamic_rating(self, rating: float) -> ResolvedBearing:
+        """The same bearing with its basic dynamic load rating C replaced by a given one. [N]"""
+        given = Provenance("C", "dynamic load rating C", rating, "N", "given")
+        prov = tuple(given if p.key == "C" else p for p in self.provenance)
+        if given not in prov:
+            prov += (given,)
+        return dataclasses.replace(self, C=rating, provenance=prov)
+
 
 def _class_source(b: ResolvedBearing, pick: str) -> str:
     """The clearance source text of ``b`` with its pick replaced."""

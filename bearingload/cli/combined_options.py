@@ -1,9 +1,10 @@
 """The combined-load options of ``bearingload solve`` and the path that serves them.
 
-``--axial-load``, ``--moment``, ``--misalignment``, ``--dynamic-rating``, ``--rotating``: with
+``--axial-load``, ``--moment``, ``--misalignment`` (the LOAD options, :data:`LOAD_PARAMS`): with
 any of them given, ``solve`` runs the 3-D ring equilibrium of a deep-groove ball bearing
-(:func:`bearingload.models.combined.solve_combined`) instead of the radial engine, and reports
-the ISO/TS 16281 reference rating life beside ISO 281's basic life.
+(:func:`bearingload.models.combined.solve_combined`) instead of the radial engine.
+``--dynamic-rating`` and ``--rotating`` (:data:`LIFE_PARAMS`) feed only the lives (ISO 281's L10,
+ISO/TS 16281's L10r): they never choose the engine, so they never change a ball load.
 """
 
 from __future__ import annotations
@@ -15,8 +16,12 @@ import click
 
 from bearingload.cli.options import Quantity, units_help
 
+#: The load options: any of them given, ``solve`` solves the combined load.
+LOAD_PARAMS = ("axial_load", "moment", "misalignment")
+#: The options that feed only the lives.
+LIFE_PARAMS = ("dynamic_rating", "rotating")
 #: The parameters of the combined path, as the command receives them.
-COMBINED_PARAMS = ("axial_load", "moment", "misalignment", "dynamic_rating", "rotating")
+COMBINED_PARAMS = LOAD_PARAMS + LIFE_PARAMS
 
 
 def combined_options(func: Callable[..., Any]) -> Callable[..., Any]:
@@ -45,14 +50,15 @@ def combined_options(func: Callable[..., Any]) -> Callable[..., Any]:
             "--dynamic-rating",
             "-C",
             type=Quantity("force", positive=True),
-            help="Basic dynamic load rating C_r for the lives, replacing the catalogue's (needed "
-            "for a bearing given by hand). Units: N, kN, kgf (bare number: N).",
+            help="Basic dynamic load rating C_r for the lives L10 and L10r, replacing the "
+            "catalogue's (needed for a bearing given by hand); changes no load. Units: N, kN, "
+            "kgf (bare number: N).",
         ),
         click.option(
             "--rotating",
             type=click.Choice(["inner", "outer"]),
             help="The ring that rotates relative to the load, for the reference rating life "
-            "(default inner).",
+            "L10r (default inner); changes no load.",
         ),
     ]
     for option in reversed(options):
@@ -61,8 +67,14 @@ def combined_options(func: Callable[..., Any]) -> Callable[..., Any]:
 
 
 def wants_combined(values: dict[str, Any]) -> bool:
-    """True when any combined-load option was given."""
-    return any(values.get(k) is not None for k in COMBINED_PARAMS)
+    """True when a load option (:data:`LOAD_PARAMS`: axial load, moment, misalignment) was
+    given: the load alone chooses the engine."""
+    return any(values.get(k) is not None for k in LOAD_PARAMS)
+
+
+def lives_given(values: dict[str, Any]) -> bool:
+    """True when an option that feeds only the lives (:data:`LIFE_PARAMS`) was given."""
+    return any(values.get(k) is not None for k in LIFE_PARAMS)
 
 
 def combined_inputs(values: dict[str, Any]) -> dict[str, Any]:
@@ -87,26 +99,17 @@ def refuse_combined(values: dict[str, Any], where: str, why: str) -> None:
         raise click.UsageError(f"{option} cannot be used with {where}: {why}")
 
 
-def combined_text(
-    bearings: list[Any],
-    load: float,
-    cage_angle: Any,
-    values: dict[str, Any],
-    fmt: str,
-    per_ball: bool = False,
-    show_geometry: bool = False,
-) -> tuple[str, list[str]]:
-    """Solve the resolved ``bearings`` (one per clearance) under the combined load: the report
-    and the warnings of every case."""
+def combined_cases(
+    bearings: list[Any], load: float, cage_angle: Any, values: dict[str, Any]
+) -> list[Any]:
+    """Solve the resolved ``bearings`` (one per clearance) under the combined load: one
+    :class:`bearingload.studies.combined_bearing.CombinedCase` each."""
     from bearingload.cli.options import cage_angle_deg
-    from bearingload.reports.combined import combined_report
     from bearingload.studies.combined_bearing import solve_combined_bearing
 
-    cases = solve_combined_bearing(
+    return solve_combined_bearing(
         bearings,
         load,
         cage_angle=cage_angle_deg(cage_angle, bearings[0].balls),
         **combined_inputs(values),
     )
-    text = combined_report(cases, fmt, per_ball=per_ball, show_geometry=show_geometry)
-    return text, list(dict.fromkeys(w for c in cases for w in c.warnings))

@@ -2,6 +2,8 @@
 
 from __future__ import annotations
 
+import functools
+from collections.abc import Callable
 from typing import Any
 
 import click
@@ -26,7 +28,7 @@ from bearingload.cli.options import (
     stiffness_value,
     units_help,
 )
-from bearingload.cli.plot import ball_loads_plot_option
+from bearingload.cli.plot import ball_loads_plot_option, check_plot, save_plot
 
 
 @click.command(context_settings=CONTEXT)
@@ -117,6 +119,7 @@ def solve(
     quiet: bool,
     fmt: str,
     output: str | None,
+    plot: str | None,
     **combined: Any,
 ) -> None:
     """Solve the ring equilibrium of one bearing: the heaviest ball load, how many balls carry,
@@ -137,12 +140,14 @@ def solve(
     clearance beyond the ISO 5753-1 classes) prints 'Warning: ...' lines on stderr; the result is
     printed and the exit status is 0. JSON carries them as 'warnings'.
 
-    With --axial-load, --moment, --misalignment, --dynamic-rating or --rotating the inner ring of
-    a deep-groove ball bearing moves radially, axially and tilts (ISO/TS 16281): every ball gets
-    its contact angle; the axial displacement is measured from the centred rings (half the axial
-    play included, as MASTA reports it); the ring is free to tilt unless a moment or a
-    misalignment is given; the report adds the reference rating life L10r for the rotating ring
-    (default inner) beside ISO 281's (C_r/P)^3 with P = X F_r + Y F_a.
+    With --axial-load, --moment or --misalignment the inner ring of a deep-groove ball bearing
+    moves radially, axially and tilts (ISO/TS 16281): every ball gets its contact angle; the axial
+    displacement is measured from the centred rings (half the axial play included, as MASTA
+    reports it); the ring is free to tilt unless a moment or a misalignment is given; the report
+    adds the contact pressures at every ball's contact angle, the static safety s0 (ISO 76) and
+    ISO 281's (C_r/P)^3 with P = X F_r + Y F_a. The reference rating life L10r (ISO/TS 16281,
+    from the ball loads) is given wherever the ball geometry and C_r are known, radial load or
+    not; --rotating (default inner) and --dynamic-rating feed the lives only and change no load.
 
     \b
     Examples:
@@ -165,23 +170,28 @@ def solve(
       # SKF's ball set of a 6208 instead of NSK's; a cylindrical roller bearing
       bearingload solve 6208 -F 5kN --maker SKF
       bearingload solve NU206 --load 5kN
+      # the ball loads and contact angles of this solution drawn into a PDF
+      bearingload solve 6205 -F 5kN -A 2kN --plot loads.pdf
     """
     from bearingload.models.registry import list_methods
-    from bearingload.reports.solve import solve_report
-    from bearingload.studies.loaded_bearing import collect_warnings
 
     if not revolutions == revolutions:  # NaN passes click's range check
         raise click.UsageError(
             "Invalid value for '--revolutions': must be a number of revolutions > 0, got nan"
         )
-    k_given = stiffness_value(stiffness, exponent, bearing)  # N/mm^m
     methods = list_methods() if method == "all" else [method]
+    if plot is not None:  # before any work
+        check_plot(plot)
+        if "exact" not in methods and not wants_combined(combined):
+            raise click.UsageError(
+                f"Invalid value for '--plot': it draws the ball loads of the exact model; "
+                f"--method {method} gives none (use --method exact or all)"
+            )
+    k_given = stiffness_value(stiffness, exponent, bearing)  # N/mm^m
     geometry = {"balls": balls, "ball_diameter": ball_diameter, "pitch_diameter": pitch_diameter,
                 "f_i": inner_conformity, "f_o": outer_conformity, "modulus": modulus,
                 "poisson": poisson, "maker": maker}  # fmt: skip
-    if wants_combined(combined):
-        from bearingload.cli.combined_options import combined_text
-
+    if wants_combined(combined):  # the load alone chooses the engine, never a life option
         if method != "exact":
             raise click.UsageError(
                 "Invalid value for '--method': the combined load (--axial-load, --moment, "
@@ -190,26 +200,103 @@ def solve(
         bearings = resolve_bearings(
             bearing, k_given, clearance, clearance_pick, exponent, **geometry
         )
-        text, found = combined_text(bearings, load, cage_angle, combined, fmt, per_ball,
-                                    show_geometry)  # fmt: skip
-        emit(text, output)
-        print_warnings(found, quiet)
-        return
-    if bearing is None and ball_diameter is None and pitch_diameter is None:
-        refuse_unused({"--inner-conformity": inner_conformity,
-                       "--outer-conformity": outer_conformity, "--modulus": modulus,
-                       "--poisson": poisson, "--maker": maker})  # fmt: skip
-        cases = _by_hand(methods, balls, load, k_given, clearance, cage_angle, exponent)
+        if bearings[0].kind == "ball" and bearings[0].has_geometry:
+            check_rotating(bearings[0], combined, methods)
+        text, found, figure = _combined(bearings, load, cage_angle, combined, fmt, per_ball,
+                                        show_geometry)  # fmt: skip
     else:
-        bearings = resolve_bearings(
-            bearing, k_given, clearance, clearance_pick, exponent, **geometry
-        )
-        angle = cage_angle_deg(cage_angle, bearings[0].balls)
-        from bearingload.studies.loaded_bearing import solve_bearing
+        from bearingload.reports.solve import solve_report
+        from bearingload.studies.loaded_bearing import collect_warnings
 
-        cases = solve_bearing(bearings, load, angle, methods, revolutions)
-    emit(solve_report(cases, fmt, per_ball=per_ball, show_geometry=show_geometry), output)
-    print_warnings(collect_warnings(cases), quiet)
+        if bearing is None and ball_diameter is None and pitch_diameter is None:
+            refuse_unused({"--inner-conformity": inner_conformity,
+                           "--outer-conformity": outer_conformity, "--modulus": modulus,
+                           "--poisson": poisson, "--maker": maker,
+                           "--dynamic-rating": combined.get("dynamic_rating"),
+                           "--rotating": combined.get("rotating")})  # fmt: skip
+            cases = _by_hand(methods, balls, load, k_given, clearance, cage_angle, exponent)
+        else:
+            bearings = resolve_bearings(
+                bearing, k_given, clearance, clearance_pick, exponent, **geometry
+            )
+            cases = _radial(bearings, load, cage_angle, methods, revolutions, combined)
+        text = solve_report(cases, fmt, per_ball=per_ball, show_geometry=show_geometry)
+        found = collect_warnings(cases)
+        figure = functools.partial(_figure, "solve_figure", cases)
+    if plot is not None:
+        save_plot(figure, plot)  # the figure of this very solution, written whole
+    emit(text, output)
+    print_warnings(found, quiet)
+
+
+def check_rotating(b: Any, combined: dict[str, Any], methods: list[str]) -> None:
+    """Refuse --rotating where no reference rating life L10r is computed for it to select the
+    ring of: a roller bearing, no ball geometry, no C_r, or no exact ball loads."""
+    if combined.get("rotating") is None:
+        return
+    why = None
+    if b.kind != "ball":
+        why = f"L10r is computed for ball bearings only ({b.designation} is a {b.kind} bearing)"
+    elif not b.has_geometry:
+        why = "L10r needs the ball geometry (a BEARING, or --ball-diameter and --pitch-diameter)"
+    elif not (combined.get("dynamic_rating") or b.C):
+        why = "L10r needs the dynamic load rating C_r: give --dynamic-rating"
+    elif "exact" not in methods:
+        why = f"L10r needs the exact ball loads (--method {methods[0]} gives none)"
+    if why is not None:
+        raise click.UsageError(
+            "Invalid value for '--rotating': it names the rotating ring for the reference rating "
+            f"life L10r (ISO/TS 16281), and {why}"
+        )
+
+
+def _radial(
+    bearings: list[Any],
+    load: float,
+    cage_angle: Any,
+    methods: list[str],
+    revolutions: float,
+    combined: dict[str, Any],
+) -> list[Any]:
+    """The radial engine on resolved bearings: C replaced by --dynamic-rating, and L10r from the
+    exact ball loads for the ring --rotating names (default inner) where it can be computed."""
+    from bearingload.studies.loaded_bearing import solve_bearing
+    from bearingload.studies.reference_life import with_reference_lives
+
+    rating = combined.get("dynamic_rating")
+    if rating is not None:
+        bearings = [b.with_dynamic_rating(rating) for b in bearings]
+    check_rotating(bearings[0], combined, methods)
+    angle = cage_angle_deg(cage_angle, bearings[0].balls)
+    cases = solve_bearing(bearings, load, angle, methods, revolutions)
+    return with_reference_lives(cases, combined.get("rotating") or "inner")
+
+
+def _combined(
+    bearings: list[Any],
+    load: float,
+    cage_angle: Any,
+    combined: dict[str, Any],
+    fmt: str,
+    per_ball: bool,
+    show_geometry: bool,
+) -> tuple[str, list[str], Callable[[], Any]]:
+    """The combined-load engine on resolved bearings: (report, warnings, its figure)."""
+    from bearingload.cli.combined_options import combined_cases
+    from bearingload.reports.combined import combined_report
+
+    cases = combined_cases(bearings, load, cage_angle, combined)
+    text = combined_report(cases, fmt, per_ball=per_ball, show_geometry=show_geometry)
+    found = list(dict.fromkeys(w for c in cases for w in c.warnings))
+    return text, found, functools.partial(_figure, "combined_loads_figure", cases)
+
+
+def _figure(name: str, cases: list[Any]) -> Any:
+    """The figure ``name`` of :mod:`bearingload.reports.plots` of the solved ``cases``
+    (imported only when a plot is drawn)."""
+    from bearingload.reports import plots
+
+    return getattr(plots, name)(cases)
 
 
 def _by_hand(

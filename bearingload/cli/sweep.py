@@ -8,7 +8,12 @@ import click
 
 from bearingload.cli.bearing_options import CLEARANCE_HELP, Clearance, geometry_options
 from bearingload.cli.cases import resolve_case
-from bearingload.cli.combined_options import COMBINED_PARAMS, combined_options, wants_combined
+from bearingload.cli.combined_options import (
+    COMBINED_PARAMS,
+    combined_options,
+    lives_given,
+    wants_combined,
+)
 from bearingload.cli.options import (
     CONTEXT,
     Quantity,
@@ -19,7 +24,7 @@ from bearingload.cli.options import (
     stiffness_option,
     units_help,
 )
-from bearingload.cli.plot import check_plot, write_plot
+from bearingload.cli.plot import check_plot, save_plot
 
 
 @click.command(context_settings=CONTEXT)
@@ -65,8 +70,8 @@ from bearingload.cli.plot import check_plot, write_plot
 @click.option(
     "--plot",
     type=click.Path(dir_okay=False),
-    help="Also draw x, y, Q_max and stiffness over the cage angle into FILE.png "
-    "(needs matplotlib: pip install 'bearingload[plot]').",
+    help="Also draw x, y, Q_max and stiffness over the cage angle into FILE; its extension "
+    "gives the format (.png, .pdf, .svg ...). Needs matplotlib: pip install 'bearingload[plot]'.",
 )
 @click.option(
     "--kurochkin-T",
@@ -151,7 +156,7 @@ def sweep(
         raise click.UsageError("Missing option '--load' / '-F' (or give --kurochkin-T).")
     if plot is not None:
         check_plot(plot)
-    if wants_combined(combined):
+    if wants_combined(combined) or lives_given(combined):  # only this sweep gives the lives
         geometry = dict(balls=balls, ball_diameter=ball_diameter, pitch_diameter=pitch_diameter,
                         f_i=inner_conformity, f_o=outer_conformity, modulus=modulus,
                         poisson=poisson)  # fmt: skip
@@ -184,9 +189,9 @@ def sweep(
     for warning in sweep_warnings(result):
         click.echo(f"Warning: {warning}", err=True)
     if plot is not None:
-        from bearingload.reports.plots import save_png, sweep_figure
+        from bearingload.reports.plots import sweep_figure
 
-        write_plot(lambda: save_png(sweep_figure(result, bearing), plot), plot)
+        save_plot(lambda: sweep_figure(result, bearing), plot)
     emit(text, output)
 
 
@@ -217,9 +222,9 @@ def _combined(
     text = combined_sweep_report(result, fmt, bearing_context(b))
     print_warnings(list(result.warnings), False)
     if plot is not None:
-        from bearingload.reports.plots import combined_sweep_figure, save_png
+        from bearingload.reports.plots import combined_sweep_figure
 
-        write_plot(lambda: save_png(combined_sweep_figure(result, b.designation), plot), plot)
+        save_plot(lambda: combined_sweep_figure(result, b.designation), plot)
     emit(text, output)
 
 

@@ -4,9 +4,10 @@ Cases come from :mod:`bearingload.studies.combined_bearing` (one per clearance);
 named through :mod:`bearingload.reports.quantities`. Same layout as the radial report
 (:mod:`bearingload.reports.solve`):
 
-* ``table`` / ``markdown``: the answer first (Q_max, contact angles, displacements and tilt, the
-  lives), one column per case; then every ball's angle, contact angle, approach and load; the
-  geometry and the source of each value only with ``show_geometry``.
+* ``table`` / ``markdown``: the answer first (Q_max, loaded balls, the largest contact pressures
+  and the static safety, contact angles, displacements and tilt, the lives), one column per
+  case; then every ball's angle, contact angle, approach and load; the geometry and the source
+  of each value only with ``show_geometry``.
 * ``csv``: one row per case (inputs among the columns); with ``per_ball`` one row per ball.
 * ``json``: ``{"cases": [...], "units": {...}, "bearing": {...}}``; every case carries the
   per-ball arrays ``ball_angles_deg``, ``contact_angles_deg``, ``ball_approaches``, ``ball_loads``.
@@ -19,7 +20,7 @@ from typing import Any
 
 from bearingload.reports.quantities import units
 from bearingload.reports.render import Column, Table, render
-from bearingload.reports.solve import column, quantity_rows
+from bearingload.reports.solve import column, quantity_rows, set_note
 from bearingload.studies.combined_bearing import CombinedCase, combined_values
 
 INPUT_KEYS = (
@@ -39,6 +40,10 @@ INPUT_KEYS = (
 ANSWER_KEYS = (
     "q_max",
     "loaded_balls",
+    "p_max_inner",
+    "p_max_outer",
+    "static_equivalent_load",
+    "static_safety",
     "contact_angle_max_deg",
     "free_contact_angle_deg",
     "axial_play",
@@ -53,6 +58,9 @@ ANSWER_KEYS = (
     "equivalent_load",
     "rating_life",
 )
+#: Keys ``solve`` writes under a combined load that ``bearingload batch``
+#: (:mod:`bearingload.studies.batch_combined`) does not compute yet.
+SOLVE_ONLY_KEYS = ("p_max_inner", "p_max_outer", "static_equivalent_load", "static_safety")
 PER_BALL_KEYS = (
     "ball",
     "ball_angles_deg",
@@ -67,6 +75,11 @@ NOTES = (
     "Ball stiffness: exact Hertz at each ball's contact angle (unless --stiffness is given).",
     "L10r: ISO/TS 16281:2008, 4.3 (Q_ci, Q_ce from C_r; cubic mean on the rotating ring, "
     "exponent 10/3 on the stationary one). L10: ISO 281:2007, 5.2-5.3, P = X F_r + Y F_a.",
+)
+#: What the one-case report adds to :data:`NOTES` (the sweep does not give these quantities).
+STATIC_NOTE = (
+    "Contact pressures: exact Hertz, every ball at its load and contact angle, the largest of "
+    "each contact. s0 = C0/P0, P0 = max(F_r, 0.6 F_r + 0.5 F_a) (ISO 76:2006, 7.1)."
 )
 
 
@@ -92,7 +105,7 @@ def combined_report(
         from bearingload.reports.bearing import geometry_table
 
         tables.append(geometry_table(cases[0].bearing))
-    tables += [_summary(records), _balls_human(cases, records)]
+    tables += [_summary(records, cases[0].bearing), _balls_human(cases, records)]
     return render(tables, fmt)
 
 
@@ -132,13 +145,13 @@ def _per_ball_table(cases: Sequence[CombinedCase], records: Sequence[dict[str, A
     return Table("balls", [column(k, 1.5) for k in inputs + list(PER_BALL_KEYS)], rows)
 
 
-def _summary(records: Sequence[dict[str, Any]]) -> Table:
+def _summary(records: Sequence[dict[str, Any]], bearing: Any) -> Table:
     keys = _present(records, ANSWER_KEYS)
     if len({r["clearance"] for r in records}) > 1:
         keys.insert(0, "clearance")
     heads = ["value"] if len(records) == 1 else [f"G_r {r['clearance_pick']}" for r in records]
     columns, rows = quantity_rows(keys, heads, records)
-    return Table(_title(records), columns, rows, list(NOTES))
+    return Table(_title(records), columns, rows, [*NOTES, STATIC_NOTE, *set_note(bearing)])
 
 
 def _title(records: Sequence[dict[str, Any]]) -> str:

@@ -3,8 +3,8 @@ ball loads around a ring.
 
 matplotlib is imported inside these functions only, with its Agg (file) backend and no pyplot,
 so nothing global changes and a terminal calculation without ``--plot`` never pays for it.
-Each function returns the Figure, so its data can be checked; :func:`save_png` writes it whole
-or not at all.
+Each function returns the Figure, so its data can be checked; :func:`save_figure` writes it whole
+or not at all, in the format its extension names (:func:`plot_formats`).
 """
 
 from __future__ import annotations
@@ -113,43 +113,139 @@ def _named(name: str | None) -> str:
     return f"{name}: " if name else ""
 
 
-def ball_loads_figure(cases: Sequence[tuple[str, Any]], title: str) -> Any:
-    """Ball loads [N] around the ring, one bar per ball at its angle [°], for solved cases.
+def ball_loads_figure(
+    cases: Sequence[tuple[str, Any, Any]],
+    title: str,
+    contact_angles: Sequence[Any] | None = None,
+) -> Any:
+    """Ball loads [N] around the ring, one bar per ball at its angle [°], for solved cases; with
+    ``contact_angles`` a second panel: every ball's contact angle [°] over its angle.
 
-    ``cases``: (label, one-case LoadDistribution) pairs, drawn side by side (e.g. the clearance
-    class at its min, mean and max). The load line points down, as in the papers' figures.
+    ``cases``: (label, ball angles [°], ball loads [N]) triples, drawn side by side (e.g. the
+    clearance class at its min, mean and max); ``contact_angles``: one array per case [°]. The
+    load line points down, as in the papers' figures.
     """
-    fig = _figure(6.5, 6.5)
-    ax = fig.add_subplot(projection="polar")
-    ax.set_theta_zero_location("S")
-    n = len(cases)
-    for j, (label, r) in enumerate(cases):
-        z = int(r.balls)
-        width = np.deg2rad(360.0 / z) * 0.8 / n
-        shift = (j - (n - 1) / 2) * width
-        angles = np.deg2rad(r.ball_angles()) + shift
-        ax.bar(angles, r.ball_loads(), width=width, label=label, alpha=0.8)
-    ax.set_xlabel("ball angle from the load line [°]; load F_r along 0° (down)")
-    ax.set_ylabel("ball load Q [N]", labelpad=28)
     import textwrap
 
+    fig = _figure(6.5, 6.5 if contact_angles is None else 9.0)
+    if contact_angles is None:
+        ax = fig.add_subplot(projection="polar")
+    else:
+        ax = fig.add_subplot(3, 1, (1, 2), projection="polar")
+    ax.set_theta_zero_location("S")
+    n = len(cases)
+    for j, (label, angles, loads) in enumerate(cases):
+        z = len(loads)
+        width = np.deg2rad(360.0 / z) * 0.8 / n
+        shift = (j - (n - 1) / 2) * width
+        ax.bar(np.deg2rad(np.asarray(angles)) + shift, loads, width=width, label=label, alpha=0.8)
+    ax.set_xlabel("ball angle from the load line [°]; load F_r along 0° (down)")
+    ax.set_ylabel("ball load Q [N]", labelpad=28)
     ax.set_title("\n".join(textwrap.wrap(title, 70)), fontsize="small")
     if n > 1 or cases[0][0]:
         ax.legend(loc="upper center", bbox_to_anchor=(0.5, -0.1), ncol=n, fontsize="small")
+    if contact_angles is not None:
+        low = fig.add_subplot(3, 1, 3)
+        for (label, angles, _), alpha in zip(cases, contact_angles, strict=True):
+            low.plot(angles, alpha, marker="o", label=label or None)
+        low.set_xlabel("ball angle from the load line [°]")
+        low.set_ylabel("contact angle [°]")
+        low.grid(True, alpha=0.3)
     return fig
 
 
-def save_png(fig: Any, path: str) -> None:
-    """Write ``fig`` as PNG to ``path`` whole or not at all (temporary file, then rename)."""
+def solve_figure(cases: Sequence[Any]) -> Any:
+    """The ball loads of ``bearingload solve``'s own radial cases (LoadedCase of
+    :mod:`bearingload.studies.loaded_bearing`): those of the exact model, one set per clearance
+    pick side by side; the title names the middle one."""
+    exact = [c for c in cases if c.result.method == "exact"]
+    several = len(exact) > 1
+    drawn = []
+    for c in exact:
+        model, case = c.result.model, c.result.case
+        label = (
+            f"G_r = {float(case.clearance) * 1e3:.4g} µm ({c.clearance_pick})" if several else ""
+        )
+        drawn.append((label, model.ball_angles(), model.ball_loads()))
+    case = exact[len(exact) // 2].result.case
+    title = (
+        f"Ball loads, exact ring equilibrium: z = {int(case.balls)}, "
+        f"F_r = {float(case.load):.6g} N, K = {float(case.stiffness):.6g} "
+        f"N/mm^{float(case.exponent):g}, G_r = {float(case.clearance) * 1e3:.6g} µm, "
+        f"cage angle {float(case.cage_angle):.6g}°"
+    )
+    return ball_loads_figure(drawn, title)
+
+
+def combined_loads_figure(cases: Sequence[Any]) -> Any:
+    """The ball loads and contact angles of ``bearingload solve``'s own combined-load cases
+    (CombinedCase of :mod:`bearingload.studies.combined_bearing`), one set per clearance pick."""
+    several = len(cases) > 1
+    drawn, alphas = [], []
+    for c in cases:
+        r = c.result
+        g = float(np.asarray(r.clearance).reshape(-1)[0])
+        label = f"G_r = {g * 1e3:.4g} µm ({c.bearing.clearance_pick})" if several else ""
+        drawn.append(
+            (label, np.asarray(r.ball_angles).reshape(-1), np.asarray(r.ball_loads).reshape(-1))
+        )
+        alphas.append(np.asarray(r.contact_angles).reshape(-1))
+    r = cases[len(cases) // 2].result
+
+    def one(v: Any) -> float:
+        return float(np.asarray(v).reshape(-1)[0])
+
+    title = (
+        f"Ball loads, 3-D ring equilibrium: z = {int(r.balls)}, F_r = {one(r.radial_load):.6g} N, "
+        f"F_a = {one(r.axial_load):.6g} N, G_r = {one(r.clearance) * 1e3:.6g} µm, "
+        f"cage angle {one(r.cage_angle):.6g}°"
+    )
+    return ball_loads_figure(drawn, title, alphas)
+
+
+#: Extensions matplotlib writes through Pillow: offered only where Pillow can write them.
+PILLOW_FORMATS = frozenset({"avif", "gif", "jpeg", "jpg", "tif", "tiff", "webp"})
+
+
+def plot_formats() -> list[str]:
+    """The file extensions a figure can be written as here: those of matplotlib's canvas, less
+    ``pgf`` (needs a LaTeX installation) and the Pillow formats Pillow cannot write."""
+    require_matplotlib()
+    from matplotlib.backends.backend_agg import FigureCanvasAgg
+
+    names = set(FigureCanvasAgg.get_supported_filetypes()) - {"pgf"}
+    try:
+        from PIL import Image
+
+        Image.init()
+        pillow = {
+            ext.lstrip(".").lower()
+            for ext, fmt in Image.registered_extensions().items()
+            if fmt in Image.SAVE
+        }
+    except ImportError:
+        pillow = set()
+    return sorted(n for n in names if n not in PILLOW_FORMATS or n in pillow)
+
+
+def plot_format(path: str) -> str:
+    """The format of a figure file: its extension, lower case, without the dot ('' if none)."""
+    return os.path.splitext(path)[1].lstrip(".").lower()
+
+
+def save_figure(fig: Any, path: str) -> None:
+    """Write ``fig`` to ``path`` in the format its extension names (:func:`plot_formats`), whole
+    or not at all (temporary file, then rename)."""
     import tempfile
 
+    fmt = plot_format(path) or "png"
     real = os.path.realpath(path)
     if os.path.isdir(real):
         raise IsADirectoryError(21, "is a directory", path)
-    fd, tmp = tempfile.mkstemp(prefix=".bearingload-", suffix=".png", dir=os.path.dirname(real))
+    fd, tmp = tempfile.mkstemp(prefix=".bearingload-", suffix=f".{fmt}", dir=os.path.dirname(real))
     try:
         with os.fdopen(fd, "wb") as fh:
-            fig.savefig(fh, format="png")
+            fig.savefig(fh, format=fmt)
         umask = os.umask(0)
         os.umask(umask)
         os.chmod(tmp, 0o666 & ~umask)

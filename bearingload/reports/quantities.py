@@ -108,6 +108,8 @@ QUANTITIES: dict[str, Quantity] = {
         # contact and life (a catalogue bearing)
         Quantity("p_max_inner", "max contact pressure, inner", "MPa"),
         Quantity("p_max_outer", "max contact pressure, outer", "MPa"),
+        Quantity("static_equivalent_load", "static equivalent load P0 (ISO 76)", "N"),
+        Quantity("static_safety", "static safety factor s0 = C0/P0 (ISO 76)", "-"),
         Quantity("rating_life", "basic rating life L10 = (C/P)^p", "10^6 rev"),
         Quantity("allowable_load", "allowable load C/L^(1/p)", "N", also=("kgf", 1 / KGF)),
         Quantity("revolutions", "life L of the allowable load", "10^6 rev"),

@@ -4,7 +4,7 @@ Cases come from :mod:`bearingload.studies.loaded_bearing` (one per model and per
 every quantity is named through :mod:`bearingload.reports.quantities`.
 
 * ``table`` / ``markdown``: the answer first (Q_max, k, loaded balls, load zone, deflection,
-  stiffness, contact pressure, life), one column per case; then every ball's load; the geometry
+  stiffness, contact pressure, static safety, the lives L10 and L10r), one column per case; then every ball's load; the geometry
   of a catalogue bearing and the source of each value only with ``show_geometry``.
 * ``csv``: one rectangular table, one row per case, the case's inputs among the columns; with
   ``per_ball`` one row per ball instead.
@@ -39,6 +39,7 @@ INPUT_KEYS = (
     "clearance_pick",
     "cage_angle_deg",
     "exponent",
+    "rotating",
 )
 #: The answer, in the order the terminal shows it.
 ANSWER_KEYS = (
@@ -54,12 +55,17 @@ ANSWER_KEYS = (
     "epsilon",
     "p_max_inner",
     "p_max_outer",
+    "static_safety",
     "rating_life",
+    "reference_rating_life",
     "revolutions",
     "allowable_load",
     "relative_error",
 )
 PER_BALL_KEYS = ("ball", "ball_angles_deg", "ball_approaches", "ball_loads")
+#: Keys ``solve`` writes that ``bearingload batch`` (:mod:`bearingload.studies.batch`) does not
+#: compute yet: its columns are those of ``solve`` without these.
+SOLVE_ONLY_KEYS = ("rotating", "static_safety", "reference_rating_life")
 
 
 def solve_report(
@@ -221,6 +227,13 @@ def _notes(cases: Sequence[LoadedCase], records: Sequence[dict[str, Any]]) -> li
                 "Q_max/Q_max,exact - 1: the heaviest ball load against the exact model.",
                 records[0]["exponent"],
             )
+        )
+    rotating = next((r["rotating"] for r in records if r["rotating"] is not None), None)
+    if rotating is not None:
+        notes.append(
+            f"L10r: ISO/TS 16281:2008, 4.3, from the exact ball loads at the contact angle 0 "
+            f"(Q_ci, Q_ce from C; {rotating} ring rotating: cubic mean on it, exponent 10/3 on "
+            "the stationary one; --rotating)."
         )
     b = cases[0].bearing
     if b is not None and b.kind == "roller":

@@ -12,16 +12,17 @@ without an axial load).
 
 from __future__ import annotations
 
-import dataclasses
 from collections.abc import Sequence
 from dataclasses import dataclass
-from typing import Any
+from typing import TYPE_CHECKING, Any
 
 import numpy as np
 
 from bearingload.bearings.resolve import ResolvedBearing
 from bearingload.errors import InputError
-from bearingload.models.combined import CombinedDistribution
+
+if TYPE_CHECKING:  # the solver is imported where a case is solved
+    from bearingload.models.combined import CombinedDistribution
 
 #: The largest imposed misalignment accepted: a tilt of a few degrees would push the balls over
 #: the groove shoulders of a deep-groove bearing (which tolerates 2-10 arcmin). [°]
@@ -30,7 +31,8 @@ MISALIGNMENT_MAX = 2.0
 
 @dataclass(frozen=True)
 class CombinedCase:
-    """One solved combined-load case of a bearing and the lives derived from it."""
+    """One solved combined-load case of a bearing and what derives from it: lives, the largest
+    contact pressures and the static safety."""
 
     bearing: ResolvedBearing
     result: CombinedDistribution
@@ -41,6 +43,10 @@ class CombinedCase:
     rating_life: float | None  # [10^6 rev]
     reference_rating_life: float | None  # [10^6 rev]
     warnings: tuple[str, ...] = ()
+    p_max_inner: float | None = None  # largest over the balls, each at its contact angle [MPa]
+    p_max_outer: float | None = None  # [MPa]
+    static_equivalent_load: float | None = None  # P0, ISO 76 [N]
+    static_safety: float | None = None  # s0 = C0/P0 [-]
 
 
 def solve_combined_bearing(
@@ -78,19 +84,28 @@ def solve_combined_bearing(
     InputError
         ``ball_diameter`` when the geometry is unknown; the solver's own errors.
     """
-    from bearingload.bearings.checks import combined_warnings
+    from bearingload.bearings.checks import (
+        combined_warnings,
+        max_contact_pressures,
+        static_equivalent_load,
+        static_safety,
+    )
 
     out = []
     for b in bearings:
         r = solve_on_bearing(b, load, axial_load, cage_angle=cage_angle, moment=moment,
                              misalignment=misalignment)  # fmt: skip
         l10r, p_eq, life, c_r = life_figures(b, r, rotating, dynamic_rating)
-        case = CombinedCase(b, r, misalignment, rotating, c_r, p_eq, life,
-                            None if l10r is None else float(l10r))  # fmt: skip
+        pressures = max_contact_pressures(b, r.ball_loads, r.contact_angles)
+        p0 = static_equivalent_load(load, axial_load)
         tilt = float(np.max(ring_tilt(r)))
         found = combined_warnings(b, load, axial_load, float(r.q_max), int(r.loaded_balls),
-                                  tilt if moment is not None else misalignment)  # fmt: skip
-        out.append(dataclasses.replace(case, warnings=tuple(found)))
+                                  tilt if moment is not None else misalignment,
+                                  pressures)  # fmt: skip
+        p_i, p_o = pressures if pressures is not None else (None, None)
+        out.append(CombinedCase(b, r, misalignment, rotating, c_r, p_eq, life,
+                                None if l10r is None else float(l10r), tuple(found), p_i, p_o,
+                                p0, static_safety(b.C0, p0)))  # fmt: skip
     return out
 
 
@@ -212,11 +227,9 @@ def life_figures(
 
 def reference_lives(b: ResolvedBearing, r: CombinedDistribution, rotating: str, c_r: float) -> Any:
     """L10r of every case of ``r`` (ISO/TS 16281:2008, 4.3), the contact ratings from C_r. [10^6 rev]"""
-    from bearingload.bearings.iso16281 import contact_ratings, reference_rating_life
+    from bearingload.studies.reference_life import ball_reference_life
 
-    assert b.ball_diameter and b.pitch_diameter and b.f_i and b.f_o
-    q_ci, q_ce = contact_ratings(c_r, b.balls, b.ball_diameter, b.pitch_diameter, b.f_i, b.f_o)
-    return reference_rating_life(r.ball_loads, q_ci, q_ce, rotating)
+    return ball_reference_life(b, r.ball_loads, rotating, c_r)
 
 
 def basic_lives(b: ResolvedBearing, c_r: float, fr: Any, fa: Any) -> tuple[Any, Any]:
@@ -246,8 +259,14 @@ def combined_values(c: CombinedCase) -> dict[str, Any]:
         c.bearing, c.result, c.misalignment, c.rotating, c.dynamic_rating,
         c.equivalent_load, c.rating_life, c.reference_rating_life,
     )  # fmt: skip
-    return {k: v if v is None or isinstance(v, str) else v.reshape(-1)[0].item()
-            for k, v in columns.items()}  # fmt: skip
+    values = {k: v if v is None or isinstance(v, str) else v.reshape(-1)[0].item()
+              for k, v in columns.items()}  # fmt: skip
+    return values | {
+        "p_max_inner": c.p_max_inner,
+        "p_max_outer": c.p_max_outer,
+        "static_equivalent_load": c.static_equivalent_load,
+        "static_safety": c.static_safety,
+    }
 
 
 def case_columns(

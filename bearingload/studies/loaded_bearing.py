@@ -51,6 +51,13 @@ class LoadedCase:
     warnings : tuple of str
         Findings of :func:`bearingload.bearings.checks.case_warnings` (static safety, load above
         C0, contact pressure, one loaded element, clearance range); empty when all is well.
+    static_safety : float or None
+        s0 = C0/P0 with P0 = F_r (ISO 76; known C0 only). [-]
+    reference_rating_life : float or None
+        ISO/TS 16281 L10r from the exact ball loads (set by
+        :func:`bearingload.studies.reference_life.with_reference_lives`). [10^6 rev]
+    rotating : str or None
+        The ring rotating relative to the load for ``reference_rating_life``.
     """
 
     result: Result
@@ -61,6 +68,9 @@ class LoadedCase:
     allowable_load: float | None = None
     revolutions: float | None = None
     warnings: tuple[str, ...] = ()
+    static_safety: float | None = None
+    reference_rating_life: float | None = None
+    rotating: str | None = None
 
     @property
     def clearance_pick(self) -> str | None:
@@ -127,7 +137,7 @@ def solve_bearing(
 
 
 def _with_bearing(r: Result, b: ResolvedBearing, load: float, revolutions: float) -> LoadedCase:
-    from bearingload.bearings.checks import case_warnings, max_contact_pressures
+    from bearingload.bearings.checks import case_warnings, max_contact_pressures, static_safety
 
     pressures = max_contact_pressures(b, float(r.q_max))  # balls: Hertz; rollers: line contact
     p_i, p_o = pressures if pressures is not None else (None, None)
@@ -137,7 +147,8 @@ def _with_bearing(r: Result, b: ResolvedBearing, load: float, revolutions: float
         life = float(rating_life(b.C, load, p))
         allow = float(allowable_load(b.C, revolutions / 1e6, p))
     warnings = tuple(case_warnings(b, load, r))
-    return LoadedCase(r, b, p_i, p_o, life, allow, revolutions if b.C else None, warnings)
+    return LoadedCase(r, b, p_i, p_o, life, allow, revolutions if b.C else None, warnings,
+                      static_safety(b.C0, load))  # fmt: skip
 
 
 def collect_warnings(cases: Sequence[LoadedCase]) -> list[str]:
@@ -196,6 +207,9 @@ def case_values(lc: LoadedCase) -> dict[str, Any]:
         "rating_life": lc.rating_life,
         "allowable_load": lc.allowable_load,
         "revolutions": None if lc.revolutions is None else lc.revolutions / 1e6,
+        "static_safety": lc.static_safety,
+        "reference_rating_life": lc.reference_rating_life,
+        "rotating": lc.rotating,
     }
 
 
