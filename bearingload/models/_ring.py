@@ -25,10 +25,8 @@ are computed in the load frame, with the cosines of the one-case path.
 
 from __future__ import annotations
 
-import dataclasses
 import functools
 import math
-from dataclasses import dataclass
 from typing import Any
 
 import numpy as np
@@ -65,30 +63,48 @@ def gap_factor(theta: np.ndarray, h: float) -> np.ndarray:
     return np.where(u < 1e-13, 0.0, u)
 
 
-@dataclass(frozen=True)
 class Ring:
-    """A set of ball angles and the reference position of its formulation.
+    """A set of ball angles and the reference position of its formulation (read-only).
 
     ``c, s``: cosine and sine of each angle; ``u``: gap factor of each ball (the reference
     formulation; all 1 for a preload); ``w``: multiplicity of each angle. Arrays are shared,
     shape (k,), or per case, shape (n, k). ``x0, y0``: reference position over ``e`` (0 under
     preload); ``mu, h``: the straddling balls nearest the load line sit at ``mu -+ h``.
+    ``turn``: per case, (cos, sin) of the angle of the ball nearest the load line and the sign of
+    y (-1: the mirror image) when c, s are shared in its frame (a general ring), else None.
+
+    A plain class, not a dataclass: a frozen dataclass of these fields costs about 0.5 ms of
+    every terminal command's start-up to create.
     """
 
-    c: np.ndarray
-    s: np.ndarray
-    u: np.ndarray
-    w: np.ndarray
-    x0: Any
-    y0: Any
-    c_max: Any
-    w_max: Any
-    mu: Any
-    h: float
-    preload: bool
-    #: Per case, (cos, sin) of the angle of the ball nearest the load line and the sign of y
-    #: (-1: the mirror image) when c, s are shared in its frame (a general ring), else None.
-    turn: tuple[np.ndarray, np.ndarray, np.ndarray] | None = None
+    __slots__ = ("c", "s", "u", "w", "x0", "y0", "c_max", "w_max", "mu", "h", "preload", "turn",
+                 "_products")  # fmt: skip
+
+    def __init__(
+        self,
+        *,
+        c: np.ndarray,
+        s: np.ndarray,
+        u: np.ndarray,
+        w: np.ndarray,
+        x0: Any,
+        y0: Any,
+        c_max: Any,
+        w_max: Any,
+        mu: Any,
+        h: float,
+        preload: bool,
+        turn: tuple[np.ndarray, np.ndarray, np.ndarray] | None = None,
+    ) -> None:
+        self.c, self.s, self.u, self.w = c, s, u, w
+        self.x0, self.y0, self.c_max, self.w_max = x0, y0, c_max, w_max
+        self.mu, self.h, self.preload, self.turn = mu, h, preload, turn
+        self._products: tuple[np.ndarray, ...] | None = None
+
+    def replace(self, **changes: Any) -> Ring:
+        """A copy with ``changes`` (field name -> value)."""
+        fields = {name: getattr(self, name) for name in self.__slots__[:-1]}
+        return Ring(**{**fields, **changes})
 
     @staticmethod
     def build(
@@ -119,11 +135,14 @@ class Ring:
             preload=preload,
         )
 
-    @functools.cached_property
+    @property
     def products(self) -> tuple[np.ndarray, ...]:
         """(c, s, w, wc, ws, wcc, wcs, wss): the weighted products the sums use, once per ring."""
-        wc, ws = self.w * self.c, self.w * self.s
-        return self.c, self.s, self.w, wc, ws, wc * self.c, wc * self.s, ws * self.s
+        if self._products is None:
+            wc, ws = self.w * self.c, self.w * self.s
+            self._products = (self.c, self.s, self.w, wc, ws, wc * self.c, wc * self.s,
+                              ws * self.s)  # fmt: skip
+        return self._products
 
     @classmethod
     @functools.lru_cache(maxsize=4096)
@@ -179,7 +198,7 @@ class Ring:
         ct, st, sign = (a[:, None] for a in self.turn)
         c = _snap(ct * self.c - st * self.s)
         s = sign * _snap(st * self.c + ct * self.s)
-        return dataclasses.replace(self, c=c, s=s, turn=None)
+        return self.replace(c=c, s=s, turn=None)
 
 
 def _snap(a: np.ndarray) -> np.ndarray:
@@ -220,20 +239,29 @@ def rows(a: np.ndarray, idx: Index) -> np.ndarray:
     return a if a.ndim == 1 else a[idx]
 
 
-@dataclass
 class State:
-    """Scaled forces at a ring position: residual ``(gx, gy)``, Hessian, size, energy, loads."""
+    """Scaled forces at a ring position: residual ``(gx, gy)``, Hessian, size, energy, loads.
 
-    gx: np.ndarray
-    gy: np.ndarray
-    hxx: np.ndarray
-    hxy: np.ndarray
-    hyy: np.ndarray
-    size: np.ndarray
-    energy: np.ndarray
-    q: np.ndarray
-    dq: np.ndarray
-    delta: np.ndarray
+    ``gx`` ... ``energy`` per case, ``q, dq, delta`` per ball (a plain class: see Ring).
+    """
+
+    __slots__ = ("gx", "gy", "hxx", "hxy", "hyy", "size", "energy", "q", "dq", "delta")
+
+    def __init__(
+        self,
+        gx: np.ndarray,
+        gy: np.ndarray,
+        hxx: np.ndarray,
+        hxy: np.ndarray,
+        hyy: np.ndarray,
+        size: np.ndarray,
+        energy: np.ndarray,
+        q: np.ndarray,
+        dq: np.ndarray,
+        delta: np.ndarray,
+    ) -> None:
+        self.gx, self.gy, self.hxx, self.hxy, self.hyy = gx, gy, hxx, hxy, hyy
+        self.size, self.energy, self.q, self.dq, self.delta = size, energy, q, dq, delta
 
 
 def dot(a: np.ndarray, v: np.ndarray) -> np.ndarray:
