@@ -95,12 +95,14 @@ def main() -> None:
     rate_loop = N_BASELINE / t_loop
     agreement = np.max(np.abs(result.q_max[idx] / q_ref - 1))
 
-    angles = rng.uniform(0, 360, N_CASES // 10)
-    sub = tuple(a[: N_CASES // 10] for a in args[:4])
-    sym = np.where(rng.random(N_CASES // 10) < 0.5, 0.0, 180.0 / sub[0])
-    t_gen = best_of(lambda: solve(*sub, angles), repeat=3)
-    t_sym = best_of(lambda: solve(*sub, sym), repeat=3)
-    rate_gen = (N_CASES // 10) / t_gen
+    angles = rng.uniform(0, 360, N_CASES)
+    sym = np.where(rng.random(N_CASES) < 0.5, 0.0, 180.0 / args[0])
+    general = {}  # cases -> (time any cage angle, time symmetric), same cases otherwise
+    for n in (N_CASES // 10, N_CASES):
+        sub = tuple(a[:n] for a in args[:4])
+        t_gen = best_of(lambda sub=sub, n=n: solve(*sub, angles[:n]), repeat=3)
+        general[n] = (t_gen, best_of(lambda sub=sub, n=n: solve(*sub, sym[:n]), repeat=3))
+    rate_gen = (N_CASES // 10) / general[N_CASES // 10][0]
 
     print("bearingload benchmark (one core; BLAS threads pinned to 1)")
     print("  cases: z 3-40, loads 1 N-10 kN, clearance 0 or 0.1 um-0.5 mm, cage 0 or half pitch")
@@ -115,7 +117,9 @@ def main() -> None:
     print(
         f"  any cage angle (2-D): {rate_gen:12,.0f} cases/s  ({N_CASES // 10:,} cases, best of 3)"
     )
-    print(f"  2-D / symmetric     : {t_gen / t_sym:12.2f} x  time per case, same cases otherwise")
+    for n, (t_gen, t_sym) in general.items():
+        print(f"  2-D / symmetric     : {t_gen / t_sym:12.2f} x  time per case, {n:,} cases, "
+              "same cases otherwise")  # fmt: skip
     print(
         f"  Newton iterations   : mean {result.iterations.mean():.2f}, max {result.iterations.max()}"
     )

@@ -186,6 +186,23 @@ def test_seed_002_bearing_208() -> None:
     assert "Kuzmenko & Sabadash 2014" in b.source
 
 
+def test_one_row_lookup_equals_the_whole_catalogue() -> None:
+    """find() builds only the row asked for (start-up); it is the row the whole catalogue has,
+    for every designation, and none where the catalogue has none."""
+    from bearingload.bearings import catalog
+
+    catalog._row.cache_clear()
+    for row in catalog._rows():
+        first = next(
+            r
+            for r in catalog._rows()
+            if (r.standard, r.designation) == (row.standard, row.designation)
+        )
+        assert catalog._row(row.standard, row.designation) == first
+        assert find(row.designation) == first
+    assert catalog._row("ISO", "6999") is None and catalog._row("GOST", "999") is None
+
+
 def test_gost_and_iso_resolve_to_their_own_rows() -> None:
     gost, iso = lookup("306"), lookup("6306")
     assert (gost.standard, iso.standard) == ("GOST", "ISO")

@@ -216,11 +216,17 @@ def test_symmetric_cases_against_mpmath(z, e, m, half):
     assert float(r.y) == 0.0
 
 
-@pytest.mark.parametrize(
-    "z, e, m, phi1",
-    [(8, 0.0, 1.5, 10.0), (8, 0.01, 1.5, 5.0), (7, 2.0, 1.5, 13.0), (12, -0.4, 1.5, 3.3),
-     (9, 0.2, 10 / 9, 31.0), (3, 0.0, 1.5, 50.0), (25, 50.0, 1.5, 1.0), (5, 1e4, 1.5, 17.0)],
-)  # fmt: skip
+GENERAL_CASES = [
+    (8, 0.0, 1.5, 10.0), (8, 0.01, 1.5, 5.0), (7, 2.0, 1.5, 13.0), (12, -0.4, 1.5, 3.3),
+    (9, 0.2, 10 / 9, 31.0), (3, 0.0, 1.5, 50.0), (25, 50.0, 1.5, 1.0), (5, 1e4, 1.5, 17.0),
+    (1000, 1e6, 1.5, 0.1), (1000, -30.0, 1.5, 0.2), (40, 1e-3, 10 / 9, 4.4), (3, -2.0, 2.0, 97.0),
+    # ball z a hair ahead of the load line: y is ill-conditioned (at exactly 0 the ring may slide
+    # across; see the module notes of equilibrium)
+    (3, 0.0, 1.5, 120.0 * (1 - 1e-11)), (3, 0.15, 1.5, 120.0 * (1 - 1e-9)),
+]  # fmt: skip
+
+
+@pytest.mark.parametrize("z, e, m, phi1", GENERAL_CASES)
 def test_general_cage_angle_against_mpmath(z, e, m, phi1):
     r = solve(z, 1.0, 1.0, 2 * e, phi1, m)
     x_ref, y_ref = mp_general(z, e, m, phi1, (float(r.x), float(r.y)))
@@ -241,6 +247,85 @@ def test_general_cage_angle_against_mpmath(z, e, m, phi1):
         for i in range(z)
     ]
     np.testing.assert_allclose(q, q_ref, rtol=1e-9, atol=1e-12 * max(q_ref))
+
+
+def mp_stiffness(z, e, m, phi1_deg, x, y):
+    """Tangent stiffness [[Kxx, Kxy], [Kxy, Kyy]] at unit load and stiffness, in mpmath."""
+    kxx = kxy = kyy = mp.mpf(0)
+    for i in range(z):
+        phi = mp.radians(phi1_deg) + 2 * mp.pi * i / z
+        d = x * mp.cos(phi) + y * mp.sin(phi) - e
+        if d > 0:
+            dq = mp.mpf(m) * d ** (mp.mpf(m) - 1)
+            kxx += dq * mp.cos(phi) ** 2
+            kxy += dq * mp.cos(phi) * mp.sin(phi)
+            kyy += dq * mp.sin(phi) ** 2
+    return np.array([[float(kxx), float(kxy)], [float(kxy), float(kyy)]])
+
+
+@pytest.mark.parametrize("z", sorted({c[0] for c in GENERAL_CASES}))
+def test_general_cage_angles_in_one_array_call_against_mpmath(z):
+    """The vectorised general path (a batch of cage angles, iterated in the frame of the ball
+    nearest the load line) against mpmath: x, y to 1e-12 of the scale, the stiffness matrix to
+    1e-11 of its largest entry (no ball just touching), and the one-case path."""
+    cases = [c for c in GENERAL_CASES if c[0] == z]
+    e, m, phi1 = (np.array([c[i] for c in cases]) for i in (1, 2, 3))
+    r = solve(z, 1.0, 1.0, 2 * e, phi1, m)
+    for j, (_, ej, mj, pj) in enumerate(cases):
+        x_ref, y_ref = mp_general(z, ej, mj, pj, (float(r.x[j]), float(r.y[j])))
+        scale = max(1.0, abs(float(x_ref)))
+        assert abs(float(r.x[j]) - float(x_ref)) <= 1e-12 * scale
+        assert abs(float(r.y[j]) - float(y_ref)) <= 1e-12 * scale
+        k_ref = mp_stiffness(z, mp.mpf(ej), mj, pj, x_ref, y_ref)
+        if np.min(np.abs(r[j].ball_approaches())) > 1e-6 * scale:  # K jumps where a ball touches
+            atol = 1e-11 * k_ref.max()
+            np.testing.assert_allclose(r.stiffness_matrix[j], k_ref, rtol=0, atol=atol)
+        one = solve(z, 1.0, 1.0, 2 * ej, pj, mj)
+        assert float(one.x) == pytest.approx(float(r.x[j]), rel=3e-14)
+        assert abs(float(one.y) - float(r.y[j])) <= 3e-14 * abs(float(r.x[j]))
+        assert int(one.loaded_balls) == int(r.loaded_balls[j])
+
+
+@pytest.mark.parametrize("z", [3, 5, 9, 40, 1000])
+@pytest.mark.parametrize("preload", [False, True])
+@pytest.mark.parametrize("nearest", ["ball 1", "ball z"])
+def test_turned_ring_forces_equal_the_load_frame_forces(z, preload, nearest):
+    """The general ring's forces and Jacobian evaluated in the frame of the ball nearest the
+    load line (of the mirror image when that is ball z) and turned back equal the load-frame
+    sums with per-case cosines (also a small K_yy beside a large K_xx: few balls loaded, z up
+    to 1000)."""
+    from bearingload.models import _ring
+
+    rng = np.random.default_rng(z)
+    n = 500
+    frac = rng.uniform(0.0, 0.5, n) if nearest == "ball 1" else rng.uniform(0.5, 1.0, n)
+    frac[0] = 0.5 if nearest == "ball 1" else np.nextafter(0.5, 1.0)  # the boundary
+    if preload:
+        e = -(10 ** rng.uniform(-2, 2, n))
+    else:
+        e = np.where(rng.random(n) < 0.2, 0.0, 10 ** rng.uniform(-3, 6, n))
+    m = rng.choice([1.5, 10 / 9], n)
+    ring = _ring.Ring.general(z, frac, preload)
+    xi, eta, _ = _ring.solve_xy(ring, e, m, 1e-13)
+    # Neither frame is exact: the approach of a ball, a small difference under a large
+    # clearance, and dq = m delta^(m-1) of a ball that barely touches magnify the rounding of
+    # the moves (different in the two frames) beyond eps. At the solution (the balls straddling
+    # the load line both carry) each entry to 1e-11 of its own size (a turn error of eps times
+    # the trace would leave a small K_yy wrong by far more); away from it (a line-search
+    # point), to 1e-12 of the trace.
+    for a, b, strict in ((xi, eta, True), (1.3 * xi, eta - 0.1 * xi, False)):
+        turned = _ring.state(ring, _ring.ALL, a, b, e, m)
+        plain = _ring.state(ring.in_load_frame(), _ring.ALL, a, b, e, m)
+        for name in ("gx", "gy"):
+            diff = np.abs(getattr(turned, name) - getattr(plain, name))
+            assert np.all(diff <= 1e-13 * plain.size), name
+        trace = plain.hxx + plain.hyy
+        for name in ("hxx", "hyy", "hxy"):
+            ref = getattr(plain, name)
+            own = np.sqrt(plain.hxx * plain.hyy) if name == "hxy" else np.abs(ref)
+            bound = 1e-11 * own if strict else 1e-12 * trace
+            assert np.all(np.abs(getattr(turned, name) - ref) <= bound), name
+        assert np.all(np.abs(turned.size - plain.size) <= 1e-13 * plain.size)
 
 
 # ---------------------------------------------------------------------------------------------

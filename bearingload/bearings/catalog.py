@@ -54,6 +54,7 @@ from __future__ import annotations
 import dataclasses
 import functools
 import math
+from collections.abc import Container
 from dataclasses import dataclass
 
 from bearingload.bearings.designation import Designation, UnmodelledBearing, parse
@@ -192,10 +193,32 @@ class BallSet:
     notes: str
 
 
-def _read(name: str) -> list[dict[str, str]]:
+@functools.lru_cache(maxsize=2)
+def _read(name: str) -> tuple[dict[str, str], ...]:
+    """The rows of ``data/<name>``, read once (treat as read-only)."""
     from bearingload.bearings._data import read_rows
 
-    return read_rows(name)
+    return tuple(read_rows(name))
+
+
+def _ball_set(rec: dict[str, str]) -> BallSet:
+    return BallSet(
+        designation=rec["designation"],
+        maker=rec["maker"],
+        d=float(rec["d"]),
+        D=float(rec["D"]),
+        balls=int(rec["balls"]),
+        ball_diameter=float(rec["ball_diameter"]),
+        pitch_diameter=float(rec["pitch_diameter"]),
+        C=_float(rec["C"]),
+        C0=_float(rec["C0"]),
+        f0=_float(rec["f0"]),
+        method=rec["method"],
+        inversion=rec["inversion"],
+        confidence=rec["confidence"],
+        source=rec["source"],
+        notes=rec["notes"],
+    )
 
 
 @functools.lru_cache(maxsize=1)
@@ -207,26 +230,7 @@ def ball_sets() -> tuple[BallSet, ...]:
     tuple of BallSet
         Diameters [mm], ratings [N], f0 [N/mm^2].
     """
-    return tuple(
-        BallSet(
-            designation=rec["designation"],
-            maker=rec["maker"],
-            d=float(rec["d"]),
-            D=float(rec["D"]),
-            balls=int(rec["balls"]),
-            ball_diameter=float(rec["ball_diameter"]),
-            pitch_diameter=float(rec["pitch_diameter"]),
-            C=_float(rec["C"]),
-            C0=_float(rec["C0"]),
-            f0=_float(rec["f0"]),
-            method=rec["method"],
-            inversion=rec["inversion"],
-            confidence=rec["confidence"],
-            source=rec["source"],
-            notes=rec["notes"],
-        )
-        for rec in _read("ball_sets.csv")
-    )
+    return tuple(_ball_set(rec) for rec in _read("ball_sets.csv"))
 
 
 def _with_set(row: BearingGeometry, bs: BallSet) -> BearingGeometry:
@@ -273,53 +277,87 @@ def _csv_row(rec: dict[str, str]) -> BearingGeometry:
     )
 
 
+def _set_row(name: str, first: BallSet) -> BearingGeometry:
+    """The row of a designation found only in the ball sets (618, 619, 160 series)."""
+    return BearingGeometry(
+        designation=name,
+        standard="ISO",
+        d=first.d,
+        D=first.D,
+        B=None,
+        ball_diameter=None,
+        balls=None,
+        pitch_diameter=None,
+        C=None,
+        C0=None,
+        f_i=DEFAULT_F_I,
+        f_o=DEFAULT_F_O,
+        source="",
+        notes="width B: not in the sources used",
+        parsed=parse(name),
+    )
+
+
+def _complete(row: BearingGeometry, sets: list[BallSet], gost: Container[str]) -> BearingGeometry:
+    """A catalogue row with its makers and its default ball set; ``sets``: the ball sets of its
+    designation in file order, ``gost``: the ISO names of the GOST rows with a ball set."""
+    if row.standard == "GOST":
+        return dataclasses.replace(row, makers=("GOST",))
+    makers = tuple(bs.maker for bs in sets) + (("GOST",) if row.designation in gost else ())
+    default = next((bs for bs in sets if bs.maker == DEFAULT_MAKER), None)
+    if default is not None:
+        row = _with_set(row, default)
+    elif len(makers) == 1 and sets:  # one maker gives a set: nothing to choose between
+        row = dataclasses.replace(_with_set(row, sets[0]), only_maker=True)
+    elif sets:
+        others = ", ".join(f"{bs.maker} {bs.balls} x {bs.ball_diameter:g} mm" for bs in sets)
+        row = dataclasses.replace(row, notes=f"{row.notes}; maker ball sets: {others}")
+    return dataclasses.replace(row, makers=makers)
+
+
 @functools.lru_cache(maxsize=1)
 def _rows() -> tuple[BearingGeometry, ...]:
     by_name: dict[str, list[BallSet]] = {}
     for bs in ball_sets():
         by_name.setdefault(bs.designation, []).append(bs)
     rows = [_csv_row(rec) for rec in _read("bearings.csv")]
-    gost = {r.parsed.iso_name: r for r in rows if r.standard == "GOST" and r.has_geometry}
+    gost = {r.parsed.iso_name for r in rows if r.standard == "GOST" and r.has_geometry}
     known = {r.designation for r in rows if r.standard == "ISO"}
     for name, sets in by_name.items():
         if name not in known:  # 618, 619, 160 series: the row is the default maker's
-            first = sets[0]
-            rows.append(
-                BearingGeometry(
-                    designation=name,
-                    standard="ISO",
-                    d=first.d,
-                    D=first.D,
-                    B=None,
-                    ball_diameter=None,
-                    balls=None,
-                    pitch_diameter=None,
-                    C=None,
-                    C0=None,
-                    f_i=DEFAULT_F_I,
-                    f_o=DEFAULT_F_O,
-                    source="",
-                    notes="width B: not in the sources used",
-                    parsed=parse(name),
-                )
-            )
-    out = []
-    for row in rows:
-        if row.standard == "GOST":
-            out.append(dataclasses.replace(row, makers=("GOST",)))
-            continue
-        sets = by_name.get(row.designation, [])
-        makers = tuple(bs.maker for bs in sets) + (("GOST",) if row.designation in gost else ())
-        default = next((bs for bs in sets if bs.maker == DEFAULT_MAKER), None)
-        if default is not None:
-            row = _with_set(row, default)
-        elif len(makers) == 1 and sets:  # one maker gives a set: nothing to choose between
-            row = dataclasses.replace(_with_set(row, sets[0]), only_maker=True)
-        elif sets:
-            others = ", ".join(f"{bs.maker} {bs.balls} x {bs.ball_diameter:g} mm" for bs in sets)
-            row = dataclasses.replace(row, notes=f"{row.notes}; maker ball sets: {others}")
-        out.append(dataclasses.replace(row, makers=makers))
-    return tuple(out)
+            rows.append(_set_row(name, sets[0]))
+    return tuple(_complete(row, by_name.get(row.designation, []), gost) for row in rows)
+
+
+@functools.lru_cache(maxsize=1)
+def _gost_iso_names() -> frozenset[str]:
+    """ISO names of the GOST rows that have a ball set."""
+    rows = (_csv_row(rec) for rec in _read("bearings.csv") if rec["standard"] == "GOST")
+    return frozenset(r.parsed.iso_name for r in rows if r.has_geometry)
+
+
+@functools.lru_cache(maxsize=256)
+def _row(standard: str, name: str) -> BearingGeometry | None:
+    """The first row of :func:`_rows` with this standard and designation (None: there is none),
+    built alone: a terminal command that looks up one bearing does not build the other 400
+    rows and ball sets (about 6 ms of its start-up)."""
+    rec = next(
+        (
+            r
+            for r in _read("bearings.csv")
+            if r["standard"] == standard and r["designation"] == name
+        ),
+        None,
+    )
+    row = None if rec is None else _csv_row(rec)
+    if standard != "ISO":
+        return None if row is None else _complete(row, [], ())
+    sets = [_ball_set(r) for r in _read("ball_sets.csv") if r["designation"] == name]
+    if row is None:
+        if not sets:
+            return None
+        row = _set_row(name, sets[0])
+    return _complete(row, sets, _gost_iso_names())
 
 
 def variant(designation: str, maker: str) -> BearingGeometry:
@@ -470,9 +508,9 @@ def find(designation: str) -> BearingGeometry:
             f"{parsed.base!r} is a cylindrical roller bearing; "
             "see bearingload.bearings.rollers (resolve_bearing handles both)",
         )
-    for row in _rows():
-        if row.standard == parsed.standard and row.designation == parsed.catalogue_name:
-            return dataclasses.replace(row, parsed=parsed)
+    row = _row(parsed.standard, parsed.catalogue_name)
+    if row is not None:
+        return dataclasses.replace(row, parsed=parsed)
     hint = ""
     other = _counterpart(parsed)
     if other is not None:

@@ -12,12 +12,21 @@ forces over ``F_r``. Two formulations keep the digits (see :mod:`bearingload.mod
 
 Every operation is row-wise (one case per row, sums along the row), so a case's answer does not
 depend on the other cases solved with it.
+
+A general cage angle: ball ``j`` sits at ``phi_1 + j pitch``. The Newton iterations work in the
+frame of the ball nearest the load line (turned by its angle ``tau``, at most half a pitch, per
+case), where the ball angles and their cosines and sines are the same for every case of one
+``z``: one shared row instead of a row per case, gathered again at every evaluation. The forces
+and the Jacobian are turned back; the rounding this adds is ``eps |sin(tau)|`` of the sums, and
+``tau`` is the angle of a ball that carries load at the equilibrium, so it stays proportional
+to the angles of the loaded balls, as in the load frame. The result quantities (:func:`derived`)
+are computed in the load frame, with the cosines of the one-case path.
 """
 
 from __future__ import annotations
 
 import functools
-from dataclasses import dataclass
+import math
 from typing import Any
 
 import numpy as np
@@ -54,27 +63,48 @@ def gap_factor(theta: np.ndarray, h: float) -> np.ndarray:
     return np.where(u < 1e-13, 0.0, u)
 
 
-@dataclass(frozen=True)
 class Ring:
-    """A set of ball angles and the reference position of its formulation.
+    """A set of ball angles and the reference position of its formulation (read-only).
 
     ``c, s``: cosine and sine of each angle; ``u``: gap factor of each ball (the reference
     formulation; all 1 for a preload); ``w``: multiplicity of each angle. Arrays are shared,
     shape (k,), or per case, shape (n, k). ``x0, y0``: reference position over ``e`` (0 under
     preload); ``mu, h``: the straddling balls nearest the load line sit at ``mu -+ h``.
+    ``turn``: per case, (cos, sin) of the angle of the ball nearest the load line and the sign of
+    y (-1: the mirror image) when c, s are shared in its frame (a general ring), else None.
+
+    A plain class, not a dataclass: a frozen dataclass of these fields costs about 0.5 ms of
+    every terminal command's start-up to create.
     """
 
-    c: np.ndarray
-    s: np.ndarray
-    u: np.ndarray
-    w: np.ndarray
-    x0: Any
-    y0: Any
-    c_max: Any
-    w_max: Any
-    mu: Any
-    h: float
-    preload: bool
+    __slots__ = ("c", "s", "u", "w", "x0", "y0", "c_max", "w_max", "mu", "h", "preload", "turn",
+                 "_products")  # fmt: skip
+
+    def __init__(
+        self,
+        *,
+        c: np.ndarray,
+        s: np.ndarray,
+        u: np.ndarray,
+        w: np.ndarray,
+        x0: Any,
+        y0: Any,
+        c_max: Any,
+        w_max: Any,
+        mu: Any,
+        h: float,
+        preload: bool,
+        turn: tuple[np.ndarray, np.ndarray, np.ndarray] | None = None,
+    ) -> None:
+        self.c, self.s, self.u, self.w = c, s, u, w
+        self.x0, self.y0, self.c_max, self.w_max = x0, y0, c_max, w_max
+        self.mu, self.h, self.preload, self.turn = mu, h, preload, turn
+        self._products: tuple[np.ndarray, ...] | None = None
+
+    def replace(self, **changes: Any) -> Ring:
+        """A copy with ``changes`` (field name -> value)."""
+        fields = {name: getattr(self, name) for name in self.__slots__[:-1]}
+        return Ring(**{**fields, **changes})
 
     @staticmethod
     def build(
@@ -105,11 +135,14 @@ class Ring:
             preload=preload,
         )
 
-    @functools.cached_property
+    @property
     def products(self) -> tuple[np.ndarray, ...]:
         """(c, s, w, wc, ws, wcc, wcs, wss): the weighted products the sums use, once per ring."""
-        wc, ws = self.w * self.c, self.w * self.s
-        return self.c, self.s, self.w, wc, ws, wc * self.c, wc * self.s, ws * self.s
+        if self._products is None:
+            wc, ws = self.w * self.c, self.w * self.s
+            self._products = (self.c, self.s, self.w, wc, ws, wc * self.c, wc * self.s,
+                              ws * self.s)  # fmt: skip
+        return self._products
 
     @classmethod
     @functools.lru_cache(maxsize=4096)
@@ -123,33 +156,112 @@ class Ring:
         return cls.build(uniq * np.pi, counts.astype(float), 0.0, h, not preload, preload)
 
     @classmethod
-    def general(cls, z: int, phi1: np.ndarray, preload: bool) -> Ring:
-        """All z balls of each case, ball 1 at ``phi1`` in (0, 2 pi/z) [rad], shape (n,)."""
-        pitch = 2.0 * np.pi / z
-        phi = phi1[:, None] + np.arange(z) * pitch
-        phi = np.where(phi > np.pi, phi - 2.0 * np.pi, phi)
-        return cls.build(phi, np.ones_like(phi), phi1 - pitch / 2.0, pitch / 2.0, False, preload)
+    def general(cls, z: int, frac: np.ndarray, preload: bool) -> Ring:
+        """All z balls of each case, ball 1 at ``frac`` of a pitch from the load line, frac in
+        (0, 1), shape (n,).
+
+        Shared ``c, s, u`` (:func:`pitch_table`) in the frame of the ball nearest the load
+        line; ``turn``: per case, cos and sin of its angle ``tau`` (made >= 0 by the mirror
+        image when it is ball z) and the sign of ``y`` in the mirror image (-1: mirrored).
+        :meth:`in_load_frame` gives the per-case cosines and sines.
+        """
+        h = np.pi / z
+        last = frac > 0.5
+        # the mirror image of a ring whose ball z is nearest: its ball 1 at 1 - frac (exact),
+        # so the angle of the nearest ball keeps its digits however near the load line
+        tau = np.where(last, 1.0 - frac, frac) * 2.0 * np.pi / z
+        mu = frac * 2.0 * np.pi / z - h
+        cj, sj, u = pitch_table(z, preload)
+        zero = np.zeros_like(mu)
+        ct = np.cos(tau)
+        return Ring(
+            c=cj,
+            s=sj,
+            u=u,
+            w=np.ones(z),
+            x0=zero if preload else np.cos(mu) / math.cos(h),
+            y0=zero if preload else np.sin(mu) / math.cos(h),
+            c_max=_snap(ct),
+            w_max=np.ones_like(mu),
+            mu=mu,
+            h=h,
+            preload=preload,
+            turn=(ct, np.sin(tau), np.where(last, -1.0, 1.0)),
+        )
+
+    def in_load_frame(self) -> Ring:
+        """The same ring with per-case cosines and sines, ``cos(tau + k pitch)`` from the turn
+        and the shared table (sines negated in a mirror image), as the one-case path computes
+        them; itself when not turned."""
+        if self.turn is None:
+            return self
+        ct, st, sign = (a[:, None] for a in self.turn)
+        c = _snap(ct * self.c - st * self.s)
+        s = sign * _snap(st * self.c + ct * self.s)
+        return self.replace(c=c, s=s, turn=None)
 
 
-def rows(a: np.ndarray, idx: np.ndarray) -> np.ndarray:
+def _snap(a: np.ndarray) -> np.ndarray:
+    """Cosines and sines below SNAP set to an exact zero."""
+    return np.where(np.abs(a) < SNAP, 0.0, a)
+
+
+@functools.lru_cache(maxsize=1024)
+def pitch_table(z: int, preload: bool) -> tuple[np.ndarray, np.ndarray, np.ndarray]:
+    """cos and sin of ``k pitch`` and the gap factors of a general ring (z alone), k = 0..z-1.
+
+    Entry ``k`` is ball ``k + 1``, at ``theta = (k + 1/2) pitch`` from the reference angle
+    ``mu`` whatever the cage angle. With ``math`` (the one-case path uses the same numbers);
+    read-only arrays.
+    """
+    pitch = 2.0 * math.pi / z
+    h = pitch / 2.0
+    theta = [(j + 0.5) * pitch for j in range(z)]
+    u = [2.0 * math.sin((t + h) / 2.0) * math.sin((t - h) / 2.0) / math.cos(h) for t in theta]
+    u = [1.0 if preload else (0.0 if v < 1e-13 else v) for v in u]
+    tables = (
+        np.array([math.cos(j * pitch) for j in range(z)]),
+        np.array([math.sin(j * pitch) for j in range(z)]),
+        np.array(u),
+    )
+    for a in tables:
+        a.flags.writeable = False
+    return tables
+
+
+#: Cases of a ring: indices, or ``slice(None)`` for all of them (a view, no copy).
+Index = np.ndarray | slice
+ALL: slice = slice(None)
+
+
+def rows(a: np.ndarray, idx: Index) -> np.ndarray:
     """Rows ``idx`` of a per-case (2-D) ring array; a shared (1-D) ring array as it is."""
     return a if a.ndim == 1 else a[idx]
 
 
-@dataclass
 class State:
-    """Scaled forces at a ring position: residual ``(gx, gy)``, Hessian, size, energy, loads."""
+    """Scaled forces at a ring position: residual ``(gx, gy)``, Hessian, size, energy, loads.
 
-    gx: np.ndarray
-    gy: np.ndarray
-    hxx: np.ndarray
-    hxy: np.ndarray
-    hyy: np.ndarray
-    size: np.ndarray
-    energy: np.ndarray
-    q: np.ndarray
-    dq: np.ndarray
-    delta: np.ndarray
+    ``gx`` ... ``energy`` per case, ``q, dq, delta`` per ball (a plain class: see Ring).
+    """
+
+    __slots__ = ("gx", "gy", "hxx", "hxy", "hyy", "size", "energy", "q", "dq", "delta")
+
+    def __init__(
+        self,
+        gx: np.ndarray,
+        gy: np.ndarray,
+        hxx: np.ndarray,
+        hxy: np.ndarray,
+        hyy: np.ndarray,
+        size: np.ndarray,
+        energy: np.ndarray,
+        q: np.ndarray,
+        dq: np.ndarray,
+        delta: np.ndarray,
+    ) -> None:
+        self.gx, self.gy, self.hxx, self.hxy, self.hyy = gx, gy, hxx, hxy, hyy
+        self.size, self.energy, self.q, self.dq, self.delta = size, energy, q, dq, delta
 
 
 def dot(a: np.ndarray, v: np.ndarray) -> np.ndarray:
@@ -161,25 +273,35 @@ def dot(a: np.ndarray, v: np.ndarray) -> np.ndarray:
     return np.einsum("ij,j->i", a, v) if v.ndim == 1 else np.einsum("ij,ij->i", a, v)
 
 
-def products(ring: Ring, idx: np.ndarray) -> tuple[np.ndarray, ...]:
+def products(ring: Ring, idx: Index) -> tuple[np.ndarray, ...]:
     """(c, s, w, wc, ws, wcc, wcs, wss) of the ring for the cases ``idx``."""
     return tuple(rows(a, idx) for a in ring.products)
 
 
 def state(
     ring: Ring,
-    idx: np.ndarray,
+    idx: Index,
     xi: np.ndarray,
     eta: np.ndarray | None,
     e_hat: np.ndarray,
     m: np.ndarray,
 ) -> State:
-    """Scaled ball loads, the force residual and its Jacobian at ``(xi, eta)`` (``eta`` None: 0)."""
+    """Scaled ball loads, the force residual and its Jacobian at ``(xi, eta)`` (``eta`` None: 0).
+
+    A turned ring (``ring.turn``) is evaluated in the frame of the ball nearest the load line
+    (of the mirror image where that is ball z) and its forces and Jacobian turned back to the
+    load frame; ``q``, ``dq``, ``delta`` are per ball either way.
+    """
     c, s, w, wc, ws, wcc, wcs, wss = products(ring, idx)
     mm = m[:, None]
-    move = xi[:, None] * c
-    if eta is not None:
-        move = move + eta[:, None] * s
+    a, b = xi, eta
+    if ring.turn is not None and eta is not None:
+        cp, sp, sign = (t[idx] for t in ring.turn)
+        mirrored = sign * eta
+        a, b = cp * xi + sp * mirrored, cp * mirrored - sp * xi
+    move = a[:, None] * c
+    if b is not None:
+        move = move + b[:, None] * s
     with np.errstate(all="ignore"):
         if ring.preload:
             p = -e_hat[:, None]
@@ -201,13 +323,39 @@ def state(
             terms = q
             energy = dot(q * pos, w) / (m + 1.0) - xi
             size = np.maximum(1.0, dot(q, w))
-        gx = dot(terms, wc) - 1.0
+        gx = dot(terms, wc)
         zero = np.zeros_like(gx)
         gy = dot(terms, ws) if eta is not None else zero
         hxx = dot(dq, wcc)
         hxy = dot(dq, wcs) if eta is not None else zero
         hyy = dot(dq, wss)
+        if ring.turn is not None and eta is not None:
+            gx, gy, hxx, hxy, hyy = _turned_back(cp, sp, gx, gy, hxx, hxy, hyy)
+            gy, hxy = sign * gy, sign * hxy
+        gx = gx - 1.0
     return State(gx, gy, hxx, hxy, hyy, size, energy, q, dq, delta)
+
+
+def _turned_back(
+    cp: np.ndarray,
+    sp: np.ndarray,
+    gx: np.ndarray,
+    gy: np.ndarray,
+    hxx: np.ndarray,
+    hxy: np.ndarray,
+    hyy: np.ndarray,
+) -> tuple[np.ndarray, ...]:
+    """Force ``g`` and Jacobian ``H`` of the frame of ball 1 in the load frame: ``R g``,
+    ``R H R^T``, ``R`` the turn by ``phi_1`` (cos ``cp``, sin ``sp``)."""
+    cc, ss, cs = cp * cp, sp * sp, cp * sp
+    two_cs_hxy = 2.0 * cs * hxy
+    return (
+        cp * gx - sp * gy,
+        sp * gx + cp * gy,
+        cc * hxx - two_cs_hxy + ss * hyy,
+        cs * (hxx - hyy) + (cc - ss) * hxy,
+        ss * hxx + two_cs_hxy + cc * hyy,
+    )
 
 
 def _powers(pos: np.ndarray, m: np.ndarray) -> tuple[np.ndarray, np.ndarray]:
@@ -318,8 +466,7 @@ def solve_xy(ring: Ring, e_hat: np.ndarray, m: np.ndarray, tol: float) -> tuple[
     xi = np.minimum(start, hi)
     iterations = np.zeros(n, dtype=np.int64)
     eta = np.zeros(n)
-    everyone = np.arange(n)
-    cur = state(ring, everyone, xi, eta, e_hat, m)
+    cur = state(ring, ALL, xi, eta, e_hat, m)
     gnorm_all = np.hypot(cur.gx, cur.gy) / cur.size
     active = np.nonzero(~(gnorm_all <= tol))[0]
     cur = _take(cur, active)
@@ -362,7 +509,7 @@ def solve_xy(ring: Ring, e_hat: np.ndarray, m: np.ndarray, tol: float) -> tuple[
             float("nan"),
             {"e_hat": e_hat[active], "exponent": m[active]},
         )
-    final = state(ring, everyone, xi, eta, e_hat, m)
+    final = state(ring, ALL, xi, eta, e_hat, m)
     residual = np.hypot(final.gx, final.gy) / final.size
     check(residual, "ring equilibrium at a general cage angle", iterations, e_hat, m, tol)
     return xi, eta, iterations
@@ -384,12 +531,19 @@ def _accept(new: State, cur: State, t: np.ndarray, slope: np.ndarray, gnorm: np.
     return (new.energy <= cur.energy + 1e-4 * t * slope) | (np.hypot(new.gx, new.gy) < 0.5 * gnorm)
 
 
+#: The per-case fields of a State (the rest are per ball).
+_PER_CASE = ("gx", "gy", "hxx", "hxy", "hyy", "size", "energy")
+_NO_BALLS = np.empty((0, 0))
+
+
 def _take(st: State, sel: np.ndarray) -> State:
-    return State(*(getattr(st, f)[sel] for f in st.__dataclass_fields__))
+    """The cases ``sel`` of a state, per-case sums only: the iterations need no ball arrays."""
+    case = {f: getattr(st, f)[sel] for f in _PER_CASE}
+    return State(**case, q=_NO_BALLS, dq=_NO_BALLS, delta=_NO_BALLS)
 
 
 def _put(st: State, sel: np.ndarray, part: State) -> None:
-    for f in st.__dataclass_fields__:
+    for f in _PER_CASE:
         getattr(st, f)[sel] = getattr(part, f)
 
 
@@ -426,7 +580,8 @@ def derived(
     (8 eps of the terms summed); a ball touching to within rounding counts as unloaded and adds
     nothing to the stiffness, so the count is one decision per case, not a rounding accident.
     """
-    idx = np.arange(xi.size)
+    ring = ring.in_load_frame()
+    idx = ALL
     st = state(ring, idx, xi, eta, e_hat, m)
     c, s, w = rows(ring.c, idx), rows(ring.s, idx), rows(ring.w, idx)
     noise = np.abs(xi[:, None] * c)

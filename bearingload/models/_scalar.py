@@ -49,36 +49,27 @@ def _symmetric(z: int, half: bool, preload: bool) -> tuple[Any, ...]:
     )
 
 
-@functools.lru_cache(maxsize=4096)
-def _pitch_table(z: int, preload: bool) -> tuple[list[float], list[float], list[float]]:
-    """cos and sin of ``j * pitch`` and the gap factors ``u_j``, which depend on z alone.
-
-    Ball ``j`` sits at ``theta = (j + 1/2) pitch`` from ``mu``, whatever the cage angle.
-    """
-    pitch = 2.0 * math.pi / z
-    h = pitch / 2.0
-    theta = [(j + 0.5) * pitch for j in range(z)]
-    u = [2.0 * math.sin((t + h) / 2.0) * math.sin((t - h) / 2.0) / math.cos(h) for t in theta]
-    u = [1.0 if preload else (0.0 if v < 1e-13 else v) for v in u]
-    return [math.cos(j * pitch) for j in range(z)], [math.sin(j * pitch) for j in range(z)], u
-
-
 @functools.lru_cache(maxsize=1024)
-def _general(z: int, phi1: float, preload: bool) -> tuple[Any, ...]:
-    """All z balls, ball 1 at ``phi1`` in (0, 2 pi/z) [rad]: as ``Ring.general`` for one case."""
+def _general(z: int, frac: float, preload: bool) -> tuple[Any, ...]:
+    """All z balls, ball 1 at ``frac`` of a pitch, frac in (0, 1): ``Ring.general`` for one case,
+    its cosines and sines those of ``Ring.in_load_frame`` (from the ball nearest the load line,
+    whose angle keeps its digits however near the load line)."""
     pitch = 2.0 * math.pi / z
-    mu, h = phi1 - pitch / 2.0, pitch / 2.0
-    cj, sj, u = _pitch_table(z, preload)
-    cp, sp = math.cos(phi1), math.sin(phi1)
+    mu, h = frac * 2.0 * math.pi / z - pitch / 2.0, pitch / 2.0
+    last = frac > 0.5
+    tau = (1.0 - frac if last else frac) * 2.0 * math.pi / z
+    sign = -1.0 if last else 1.0
+    cj, sj, u = (a.tolist() for a in _ring.pitch_table(z, preload))
+    ct, st = math.cos(tau), math.sin(tau)
     snap = _ring.SNAP
-    c = [cp * a - sp * b for a, b in zip(cj, sj, strict=True)]
-    s = [sp * a + cp * b for a, b in zip(cj, sj, strict=True)]
+    c = [ct * a - st * b for a, b in zip(cj, sj, strict=True)]
+    s = [st * a + ct * b for a, b in zip(cj, sj, strict=True)]
     c = [0.0 if -snap < v < snap else v for v in c]
-    s = [0.0 if -snap < v < snap else v for v in s]
+    s = [0.0 if -snap < v < snap else sign * v for v in s]
     cos_h = math.cos(h)
     x0 = 0.0 if preload else math.cos(mu) / cos_h
     y0 = 0.0 if preload else math.sin(mu) / cos_h
-    return c, s, u, [1.0] * z, x0, y0, mu, h, max(c), 1.0
+    return c, s, u, [1.0] * z, x0, y0, mu, h, c[0], 1.0
 
 
 def _state(
@@ -340,7 +331,7 @@ def solve_one(*values: Any) -> Any:
         return None
     pre = e_hat < -_ring.PRELOAD_CENTRED and z >= 2
     if kind == 2:
-        ring = _general(z, frac * 2.0 * np.pi / z, pre)
+        ring = _general(z, frac, pre)
         xi, eta, its = _solve_xy(ring, e_hat, m, pre, tol)
     else:
         ring = _symmetric(z, kind == 1, pre)

@@ -20,7 +20,8 @@ load line just touch, so a huge clearance with a small load loses no digits; und
 the displacement from the centred ring, with the ball forces summed as ``p^m ((1 + t)^m - 1)``
 (the ``p^m`` cancel exactly around the ring), so a heavy preload loses none either. Cages at 0 or
 half pitch are symmetric (``y = 0``): one unknown, bracketed Newton over half the ring; any other
-cage angle: damped Newton in two unknowns. One case alone goes through a pure-Python path
+cage angle: damped Newton in two unknowns, evaluated in the frame of the ball nearest the load
+line (one table of ball angles for all cases of a z). One case alone goes through a pure-Python path
 (:mod:`bearingload.models._scalar`) with the same equations.
 
 Near-symmetric cage angles. A cage angle counts as symmetric (0 or half pitch) only when it is
@@ -392,7 +393,7 @@ def _solve_groups(
             part = slice(lo, min(lo + step, int(end)))
             eh, mm = e_sorted[part], m_sorted[part]
             if kd == 2:
-                ring = Ring.general(zz, frac_sorted[part] * 2.0 * np.pi / zz, pre)
+                ring = Ring.general(zz, frac_sorted[part], pre)
                 xi, eta, its = _ring.solve_xy(ring, eh, mm, tol)
                 _store(res[part], ring, xi, eta, its, eh, mm, tol)
             else:
