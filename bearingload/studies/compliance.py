@@ -151,16 +151,20 @@ def _enclosure(a: np.ndarray, b: np.ndarray, balls: int, m: float) -> tuple[np.n
     )
     ends = [tuple(np.where(near, sign * part, 0.0) for part in _terms(t, cos, m)) for t in (a, b)]
     tol = ROUNDING_ULPS * (cos.size + 8) * np.finfo(float).eps
-    size = sum(np.abs(k).sum(-1) * half**i for i, k in enumerate(coef))
+    absolute = [np.abs(k).sum(-1) for k in coef]
+    size = (
+        sum(absolute[i] * half**i for i in range(p + 1)),
+        sum(i * absolute[i] * half ** (i - 1) for i in range(1, p + 1)),
+    )
     out = []
     for part in (0, 1):
         va, vb = ends[0][part], ends[1][part]
-        margin = tol * (size + (np.abs(va) + np.abs(vb)).sum(-1))
+        margin = tol * (size[part] + (np.abs(va) + np.abs(vb)).sum(-1))
         out += [
             sums[part] - spread[part] + np.minimum(va, vb).sum(-1) - margin,
             sums[part] + spread[part] + np.maximum(va, vb).sum(-1) + margin,
         ]
-    return (*out, tol * (size + (np.abs(ends[0][0]) + np.abs(ends[1][0])).sum(-1)))
+    return (*out, tol * (size[0] + (np.abs(ends[0][0]) + np.abs(ends[1][0])).sum(-1)))
 
 
 def _settle(balls: int, m: float) -> tuple[np.ndarray, np.ndarray, np.ndarray]:
