@@ -1,6 +1,6 @@
 """One root of a scalar function inside a sign-changing bracket, without scipy.
 
-The studies that refine a root found by a scan (the compensating clearances of the sweep, the
+The studies that refine a bracketed root (the compensating clearances of the sweep, the
 contact changes and the zero of a Fourier coefficient in Kurochkin's statics) need only a
 bracketed solver; importing ``scipy.optimize`` for it cost a terminal ``bearingload sweep`` about
 0.4 s of its start-up. :func:`bracketed_root` is regula falsi through the bracket ends with a

@@ -171,6 +171,13 @@ QUANTITIES: dict[str, Quantity] = {
         Quantity("check_value", "check", "-", 3),
         Quantity("check_limit", "limit", "-", 3),
         Quantity("check", "check", "", None),
+        Quantity("residual_radial", "residual F_r", "-", 2),
+        Quantity("residual_cross", "residual F_y", "-", 2),
+        Quantity("residual_axial", "residual F_a", "-", 2),
+        Quantity("residual_moment", "residual M", "-", 2),
+        Quantity("residual_moment_cross", "residual M_c", "-", 2),
+        Quantity("refusal_reasons", "refusal reasons", "", None),
+        Quantity("failure_reasons", "failure reasons", "", None),
     )
 }
 

@@ -21,8 +21,12 @@ balls, the cage angle ...) through its extreme range in one or more series. Per 
 * ``max_iterations``; ``check`` / ``check_value`` / ``check_limit``: the family's own test (the
   displacement against an independent formula, memory per case, ...).
 
-The families cover issue 9's grid and one family per defect of its adversarial review (``d1_`` ...
-``d8_``). :func:`run` with ``size="quick"`` is the reduced grid of the test suite; ``"full"`` the
+The families: clearance through zero and huge, load ratios, ball counts, preload, one loaded ball,
+cage angles at load-zone edges, rollers and m = 1, the continuum model and Hertz contact, and the
+hard corners (heavy preload against an independent formula, stiffness extremes, preload with
+m = 3, memory of large batches, cage angles near symmetry, batch independence, the load zone of
+many balls, bad inputs). The combined-load solver has its own families
+(:mod:`bearingload.studies.stability_combined`). :func:`run` with ``size="quick"`` is the reduced grid of the test suite; ``"full"`` the
 grid of ``make bench``.
 """
 
@@ -406,7 +410,7 @@ def _hertz_ratio(size: str) -> list[Series]:
     ]
 
 
-# --- the defects of issue 9's review
+# --- the hard corners: heavy preload, extreme scales, memory, symmetry, batches, bad inputs
 
 
 def _x_reference(z: int, f: float, k: float, g: float, cage: float, m: float) -> float:
@@ -453,7 +457,7 @@ def _x_check(series: list[Series], outs: list[Outcome], size: str) -> tuple[str,
     return "x against an independent formula (relative)", worst, 1e-10
 
 
-def _d1_heavy_preload(size: str) -> list[Series]:
+def _heavy_preload(size: str) -> list[Series]:
     e = 10.0 ** np.arange(0, 12.01, _steps(size, 1, 0.25))
     return [
         _series(e, True, balls=12, clearance=-2 * e),
@@ -462,13 +466,15 @@ def _d1_heavy_preload(size: str) -> list[Series]:
     ]
 
 
-def _d2_stiffness_extremes(size: str) -> list[Series]:
+def _stiffness_extremes(size: str) -> list[Series]:
     p = np.arange(-300, 155.01, _steps(size, 25, 5))
     v = 10.0**p
     return [_series(v, True, balls=9, load=v, stiffness=v, clearance=6.0, cage_angle=13.0)]
 
 
-def _d2_check(series: list[Series], outs: list[Outcome], size: str) -> tuple[str, float, float]:
+def _stiffness_check(
+    series: list[Series], outs: list[Outcome], size: str
+) -> tuple[str, float, float]:
     # with F = K the scaled problem is the same for every case: stiffness / F is constant
     o, s = outs[0], series[0]
     ratio = o.result.stiffness_radial / s.inputs["load"]
@@ -480,7 +486,7 @@ def _d2_check(series: list[Series], outs: list[Outcome], size: str) -> tuple[str
     )
 
 
-def _d3_preload_m3(size: str) -> list[Series]:
+def _preload_m3(size: str) -> list[Series]:
     p = np.union1d(np.arange(0, 62.01, _steps(size, 4, 1)), [62.0])
     g = -2.0 * 10.0**p
     return [
@@ -490,22 +496,22 @@ def _d3_preload_m3(size: str) -> list[Series]:
     ]
 
 
-def _d4_memory_sizes(size: str) -> tuple[int, int]:
+def _memory_sizes(size: str) -> tuple[int, int]:
     return (2_000, 8_000) if size == "quick" else (20_000, 200_000)
 
 
-def _d4_chunked(size: str) -> list[Series]:
+def _chunked(size: str) -> list[Series]:
     f = np.linspace(0.5, 2.0, 16)
     return [_series(f, True, balls=2000, load=f, clearance=g) for g in (0.0, 2.0)]
 
 
-def _d4_check(series: list[Series], outs: list[Outcome], size: str) -> tuple[str, float, float]:
+def _memory_check(series: list[Series], outs: list[Outcome], size: str) -> tuple[str, float, float]:
     import tracemalloc
 
     from bearingload.models.equilibrium import solve
 
     peaks: list[float] = []
-    sizes = _d4_memory_sizes(size)
+    sizes = _memory_sizes(size)
     for n in sizes:
         load = np.linspace(0.5, 2.0, n)
         tracemalloc.start()
@@ -526,7 +532,7 @@ def _d4_check(series: list[Series], outs: list[Outcome], size: str) -> tuple[str
     )
 
 
-def _d5_near_symmetric(size: str) -> list[Series]:
+def _near_symmetric(size: str) -> list[Series]:
     """Cage angles approaching 0 from both sides. The engine answers angles within
     ``SYMMETRY_SNAP_DEG`` (3.2e-13°) of symmetry as symmetric (its documented rule: below that
     a negative angle loses its sign in the reduction to [0, 360)); with one ball loaded at
@@ -545,14 +551,14 @@ def _d5_near_symmetric(size: str) -> list[Series]:
     ]
 
 
-def _d6_batch(size: str) -> list[Series]:
+def _batch_series(size: str) -> list[Series]:
     base = 23.839033635393225
     k = np.arange(-8, 9, _steps(size, 2, 1))
     f = base + k * np.spacing(base)
     return [_series(f, True, balls=2000, load=f, clearance=2.0, exponent=1.0)]
 
 
-def _d6_check(series: list[Series], outs: list[Outcome], size: str) -> tuple[str, float, float]:
+def _batch_check(series: list[Series], outs: list[Outcome], size: str) -> tuple[str, float, float]:
     from bearingload.models.equilibrium import solve
 
     worst = 0.0
@@ -566,7 +572,7 @@ def _d6_check(series: list[Series], outs: list[Outcome], size: str) -> tuple[str
     return "alone against in a batch of two (relative)", worst, 1e-12
 
 
-def _d7_load_zone(size: str) -> list[Series]:
+def _load_zone(size: str) -> list[Series]:
     e = 10.0 ** np.arange(0, 12.01, _steps(size, 3, 1))
     zs = (1000, 100_000) if size == "quick" else (1000, 10_000, 100_000)
     return [
@@ -576,7 +582,9 @@ def _d7_load_zone(size: str) -> list[Series]:
     ]
 
 
-def _d7_check(series: list[Series], outs: list[Outcome], size: str) -> tuple[str, float, float]:
+def _load_zone_check(
+    series: list[Series], outs: list[Outcome], size: str
+) -> tuple[str, float, float]:
     """Half-angle of the load zone written without cancellation for a symmetric ring: the ball
     nearest the load line at ``h`` carries ``delta_max``, so ``x = (e + delta_max)/cos(h)`` and
     ``1 - e/x = (2 e sin^2(h/2) + delta_max)/(e + delta_max)``."""
@@ -611,11 +619,11 @@ def _bad_inputs() -> list[tuple[Callable[[], Any], str]]:
     ]
 
 
-def _d8_inputs(size: str) -> list[Series]:
+def _no_series(size: str) -> list[Series]:
     return []
 
 
-def _d8_check(series: list[Series], outs: list[Outcome], size: str) -> tuple[str, float, float]:
+def _input_check(series: list[Series], outs: list[Outcome], size: str) -> tuple[str, float, float]:
     wrong = 0
     for call, text in _bad_inputs():
         try:
@@ -639,16 +647,16 @@ FAMILIES: tuple[Family, ...] = (
     Family("rollers_and_m1", "e/s, m = 10/9 and 1", _rollers),
     Family("continuum_epsilon", "e/s: eps -> 0, 1, inf", _continuum_eps, kind="continuum"),
     Family("hertz_curvature", "curvature ratio 1 .. 1e15", _hertz_ratio, kind="hertz"),
-    Family("d1_heavy_preload_x", "-e/s 1 .. 1e12 (1e82)", _d1_heavy_preload, check=_x_check),
+    Family("heavy_preload_x", "-e/s 1 .. 1e12 (1e82)", _heavy_preload, check=_x_check),
     Family(
-        "d2_stiffness_extremes", "F = K 1e-300 .. 1e155", _d2_stiffness_extremes, check=_d2_check
+        "stiffness_extremes", "F = K 1e-300 .. 1e155", _stiffness_extremes, check=_stiffness_check
     ),
-    Family("d3_preload_m3", "-e/s 1 .. 1e62, m = 3", _d3_preload_m3, may_refuse=True),
-    Family("d4_chunked_memory", "load, z = 2000", _d4_chunked, check=_d4_check),
-    Family("d5_near_symmetric_cage", "cage angle -> 0 [deg]", _d5_near_symmetric),
-    Family("d6_batch_independence", "load +- ulps, z = 2000", _d6_batch, check=_d6_check),
-    Family("d7_load_zone_large_z", "e/s 1 .. 1e12, z to 1e5", _d7_load_zone, check=_d7_check),
-    Family("d8_input_errors", "bad inputs", _d8_inputs, check=_d8_check),
+    Family("preload_m3", "-e/s 1 .. 1e62, m = 3", _preload_m3, may_refuse=True),
+    Family("chunked_memory", "load, z = 2000", _chunked, check=_memory_check),
+    Family("near_symmetric_cage", "cage angle -> 0 [deg]", _near_symmetric),
+    Family("batch_independence", "load +- ulps, z = 2000", _batch_series, check=_batch_check),
+    Family("load_zone_large_z", "e/s 1 .. 1e12, z to 1e5", _load_zone, check=_load_zone_check),
+    Family("input_errors", "bad inputs", _no_series, check=_input_check),
 )
 
 
