@@ -38,7 +38,8 @@ import mpmath as mp
 DIGITS = 40
 GEOMETRY = {"balls": 7, "ball_diameter": 11.5, "pitch_diameter": 43.5, "f_i": 0.52, "f_o": 0.53}
 MATERIAL = {"modulus": 208000.0, "poisson": 0.3}
-#: (label (no commas: a csv cell), F_r [N], F_a [N], M [N mm], misalignment [deg] or None, G_r [mm], cage angle [deg])
+#: (label (no commas: a csv cell), F_r [N], F_a [N], M [N mm], misalignment [deg] or None,
+#: G_r [mm], cage angle [deg])
 CASES = (
     ("radial; G_r = 0", 1000.0, 0.0, 0.0, None, 0.0, 0.0),
     ("combined; G_r = 10 um", 1000.0, 500.0, 0.0, None, 0.01, 0.0),
