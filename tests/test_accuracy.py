@@ -1,4 +1,4 @@
-"""The work-precision study (issue 9): reference, hand methods, figures and the command."""
+"""The work-precision study: references, hand methods, the combined solver, figures and the command."""
 
 from __future__ import annotations
 
@@ -15,6 +15,7 @@ from bearingload.models.hand import (
     kuzmenko2010_trial,
     load_zone_table_k,
 )
+from bearingload.studies import accuracy
 from bearingload.studies.accuracy import measure, reference_cases
 
 from .cli_helpers import invoke, run_entry
@@ -150,3 +151,114 @@ def test_accuracy_plot_or_a_clean_error(tmp_path, capsys):
 def test_accuracy_bad_option_is_one_error_line(capsys):
     code, out, err = run_entry(capsys, "accuracy", "--no-timing", "--plot", "x.png")
     assert code == 2 and err.count("\n") == 1 and "--plot" in err
+
+
+# --------------------------------------------------------------------------- combined load
+
+
+def _mp_ball_stiffness(alpha, case):
+    """K(alpha) of both Hertz contacts in series at 30 digits, written here from Johnson (1985,
+    §4.2): the ellipticity k solves (B/A) = k^2 (E(m) - (1 - m) K(m))/(K(m) - E(m)), m = 1 - 1/k^2,
+    and delta* = (2 K/pi) (pi/(2 k^2 E))^(1/3) (Harris & Kotzalas ch. 6)."""
+    dw, fi, fo = (mp.mpf(case[k]) for k in ("ball_diameter", "f_i", "f_o"))
+    dm = mp.mpf(case["pitch_diameter"]) / mp.cos(alpha)
+    e_star = mp.mpf(case["modulus"]) / (2 * (1 - mp.mpf(case["poisson"]) ** 2))
+    total_k = []
+    for rho_x, rho_y in (
+        (2 * dm / (dw * (dm - dw)), (2 * fi - 1) / (fi * dw)),
+        (2 * dm / (dw * (dm + dw)), (2 * fo - 1) / (fo * dw)),
+    ):
+        ratio = max(rho_x, rho_y) / min(rho_x, rho_y)
+
+        def johnson(t, ratio=ratio):
+            k2 = mp.exp(2 * t)
+            m = 1 - 1 / k2
+            return (
+                k2 * (mp.ellipe(m) - (1 - m) * mp.ellipk(m)) / (mp.ellipk(m) - mp.ellipe(m)) - ratio
+            )
+
+        t = mp.findroot(johnson, mp.log(ratio) / 3)
+        k2 = mp.exp(2 * t)
+        m = 1 - 1 / k2
+        d_star = 2 * mp.ellipk(m) / mp.pi * mp.cbrt(mp.pi / (2 * k2 * mp.ellipe(m)))
+        total_k.append(4 * mp.sqrt(2) / 3 * e_star / (d_star**1.5 * mp.sqrt(rho_x + rho_y)))
+    return (total_k[0] ** (-mp.mpf(2) / 3) + total_k[1] ** (-mp.mpf(2) / 3)) ** (-mp.mpf(3) / 2)
+
+
+def _mp_equilibrium_miss(case, state):
+    """Largest miss of the five equilibrium equations at the stored state, over the load."""
+    z, e = case["balls"], mp.mpf(case["clearance"]) / 2
+    dw, fi = mp.mpf(case["ball_diameter"]), mp.mpf(case["f_i"])
+    big_a = (fi + mp.mpf(case["f_o"]) - 1) * dw
+    alpha0 = mp.acos(1 - e / big_a) if e > 0 else mp.mpf(0)
+    arm = mp.mpf(case["pitch_diameter"]) / 2 + (fi - mp.mpf(1) / 2) * dw * mp.cos(alpha0)
+    x, y, a = (mp.mpf(state[k]) for k in ("x [mm]", "y [mm]", "axial [mm]"))
+    th, tc = (mp.radians(mp.mpf(state[k])) for k in ("tilt [deg]", "tilt_cross [deg]"))
+    sums = [mp.mpf(0)] * 5
+    q_max = mp.mpf(0)
+    for j in range(z):
+        phi = mp.radians(mp.mpf(case["cage_angle"])) + 2 * mp.pi * j / z
+        rho = big_a - e + x * mp.cos(phi) + y * mp.sin(phi)
+        u = a + arm * (th * mp.cos(phi) + tc * mp.sin(phi))
+        delta = mp.sqrt(rho**2 + u**2) - big_a
+        if delta <= 0:
+            continue
+        alpha = mp.atan2(u, rho)
+        q = _mp_ball_stiffness(alpha, case) * delta**1.5
+        q_max = max(q_max, q)
+        axial = q * mp.sin(alpha)
+        for i, term in enumerate(
+            (q * mp.cos(alpha) * mp.cos(phi), q * mp.cos(alpha) * mp.sin(phi), axial,
+             arm * axial * mp.cos(phi), arm * axial * mp.sin(phi))
+        ):  # fmt: skip
+            sums[i] += term
+    applied = [case["radial_load"], 0, case["axial_load"], mp.mpf(state["moment_out [N mm]"]), 0]
+    load = max(case["radial_load"], abs(case["axial_load"]))
+    miss = [abs(s - mp.mpf(f)) / (load * (arm if i >= 3 else 1)) for i, (s, f) in
+            enumerate(zip(sums, applied, strict=True))]  # fmt: skip
+    return max(miss), q_max
+
+
+def test_combined_reference_solves_the_model_at_30_digits():
+    """Every stored state balances the loads to 1e-25 of the load in an mpmath evaluation of the
+    model written here (Johnson's form of the ellipticity, not Harris's of the generator), and
+    its Q_max is the stored one; with a moment given the stored moment is the applied one."""
+    import csv
+
+    with open(accuracy.COMBINED_REFERENCE_FILE, encoding="utf-8", newline="") as fh:
+        stored = list(csv.DictReader(fh))
+    cases = accuracy.combined_cases()
+    assert len(cases) == len(stored) == 12
+    with mp.workdps(34):
+        for case, state in zip(cases, stored, strict=True):
+            miss, q_max = _mp_equilibrium_miss(case, state)
+            assert miss < 1e-25, case["label"]
+            assert abs(q_max / mp.mpf(state["q_max [N]"]) - 1) < 1e-25, case["label"]
+            if case["misalignment"] is None:
+                assert float(state["moment_out [N mm]"]) == case["moment"]
+            else:
+                assert float(state["tilt [deg]"]) == pytest.approx(case["misalignment"], abs=1e-15)
+
+
+def test_combined_rows_of_the_report():
+    rows = {r["setting"]: r for r in measure() if r["method"] == "combined"}
+    assert list(rows) == list(accuracy.COMBINED_GROUPS)
+    assert [r["cases"] for r in rows.values()] == [5, 5, 2]
+    # with clearance and under preload the solver meets its reference (today: 2e-12, 3e-13)
+    assert rows["Hertz K(alpha), with clearance"]["error_max"] < 1e-9
+    assert rows["Hertz K(alpha), preload"]["error_max"] < 1e-9
+    for r in rows.values():
+        assert 0 <= r["error_median"] <= r["error_max"] and r["iterations"] > 0
+
+
+def test_combined_error_counts_one_case_per_call(monkeypatch):
+    """An answer that differs alone from in the group shows in the error."""
+    real = accuracy._run_combined
+
+    def alone_off(cases, copies=1):
+        q, its = real(cases, copies)
+        return (q * (1 + 1e-6) if len(cases) * copies == 1 else q), its
+
+    monkeypatch.setattr(accuracy, "_run_combined", alone_off)
+    rows = accuracy.measure_combined()
+    assert min(r["error_max"] for r in rows) >= 0.9e-6

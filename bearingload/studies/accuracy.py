@@ -19,6 +19,16 @@ sample of it). The methods measured:
   (:func:`bearingload.models.hand.load_zone_table_k`);
 * ``stribeck`` (4.37/z) and ``palmgren`` (5/z).
 
+The combined-load solver (:func:`bearingload.models.combined.solve_combined`, the 3-D ring
+equilibrium of ISO/TS 16281 with Hertz ``K(alpha)``) is measured on its own cases
+(``data/accuracy_combined_reference.csv``): a deep-groove bearing of the 6305 size (z = 7,
+``D_w = 11.5``, ``d_m = 43.5`` mm, ``f_i = 0.52``, ``f_o = 0.53``), radial, axial and combined
+loads, a moment, preload down to -30 µm, an imposed misalignment of 0.05° and of exactly 0. The
+reference is ``Q_max`` of that model at 40 digits (mpmath), written by
+``benchmarks/make_combined_reference.py``, which shares no code with the package (a test checks
+the stored states against the model's equations). Rows ``combined``: one per group of cases
+(with clearance, under preload, with an imposed misalignment).
+
 Errors and iteration counts are deterministic and committed (``tables/accuracy.*``); run times
 vary from run to run and are only printed.
 """
@@ -37,6 +47,9 @@ import numpy as np
 from bearingload.reports.render import Column, Table
 
 REFERENCE_FILE = os.path.join(os.path.dirname(__file__), "data", "accuracy_reference.csv")
+COMBINED_REFERENCE_FILE = os.path.join(
+    os.path.dirname(__file__), "data", "accuracy_combined_reference.csv"
+)
 #: Tolerances of the exact solver measured (relative equilibrium residual). [-]
 TOLERANCES = (1e-2, 1e-3, 1e-4, 1e-6, 1e-8, 1e-10, 1e-12, 1e-13, 1e-14)
 #: Resolutions of the trial angle. [°]
@@ -210,6 +223,103 @@ def measure(*, timing: bool = False, repeats: int = 5, copies: int = 200) -> lis
             row["seconds_per_case"] = _time_loop(method, cases, repeats) / len(cases)
             row["seconds_per_case_vectorised"] = _time_call(method, many, repeats) / len(many)
         rows.append(row)
+    return rows + measure_combined(timing=timing, repeats=repeats, copies=copies)
+
+
+#: Keyword arguments of ``solve_combined`` read from the combined reference, with their column.
+_COMBINED_INPUTS = (
+    ("ball_diameter", "ball_diameter [mm]"),
+    ("pitch_diameter", "pitch_diameter [mm]"),
+    ("f_i", "f_i"),
+    ("f_o", "f_o"),
+    ("modulus", "modulus [MPa]"),
+    ("poisson", "poisson"),
+    ("radial_load", "radial_load [N]"),
+    ("axial_load", "axial_load [N]"),
+    ("clearance", "clearance [mm]"),
+    ("cage_angle", "cage_angle [deg]"),
+)
+#: The groups of combined-load cases reported, in order.
+COMBINED_GROUPS = (
+    "Hertz K(alpha), with clearance",
+    "Hertz K(alpha), preload",
+    "Hertz K(alpha), imposed misalignment",
+)
+
+
+def _group(case: dict[str, Any]) -> str:
+    """The group of :data:`COMBINED_GROUPS` a combined case belongs to."""
+    if case["misalignment"] is not None:
+        return COMBINED_GROUPS[2]
+    return COMBINED_GROUPS[1] if case["clearance"] < 0 else COMBINED_GROUPS[0]
+
+
+def combined_cases() -> list[dict[str, Any]]:
+    """The combined-load cases: ``label``, ``balls``, the inputs of ``solve_combined`` (``moment``
+    or, where imposed, ``misalignment`` [°]) and the reference ``q_max`` [N] (as a double)."""
+    with open(COMBINED_REFERENCE_FILE, encoding="utf-8", newline="") as fh:
+        rows = list(csv.DictReader(fh))
+    out = []
+    for r in rows:
+        case: dict[str, Any] = {"label": r["label"], "balls": int(r["balls"])}
+        case |= {key: float(r[column]) for key, column in _COMBINED_INPUTS}
+        tilt = r["misalignment [deg]"]
+        case["misalignment"] = float(tilt) if tilt else None
+        case["moment"] = float(r["moment [N mm]"])
+        case["q_max"] = float(r["q_max [N]"])
+        out.append(case)
+    return out
+
+
+def _run_combined(cases: list[dict[str, Any]], copies: int = 1) -> tuple[np.ndarray, np.ndarray]:
+    """Q_max [N] and iterations of the cases (one z and one kind of tilt), in one call."""
+    from bearingload.models.combined import solve_combined
+
+    keys = [k for k, _ in _COMBINED_INPUTS]
+    keys.append("moment" if cases[0]["misalignment"] is None else "misalignment")
+    kw = {k: np.tile([float(c[k]) for c in cases], copies) for k in keys}
+    r = solve_combined(cases[0]["balls"], **kw)
+    return np.asarray(r.q_max), np.asarray(r.iterations)
+
+
+def measure_combined(
+    *, timing: bool = False, repeats: int = 5, copies: int = 200
+) -> list[dict[str, Any]]:
+    """The combined-load rows of :func:`measure`: per group of :data:`COMBINED_GROUPS` the
+    relative error of Q_max against the 40-digit reference, per case the larger of one case per
+    call and the group in one call (so that an answer depending on the batch shows), and the
+    iterations; with ``timing`` the time per case one per call and vectorised (``copies`` of the
+    group in one call). [s]"""
+    everything = combined_cases()
+    rows = []
+    for setting in COMBINED_GROUPS:
+        cases = [c for c in everything if _group(c) == setting]
+        ref = np.array([c["q_max"] for c in cases])
+        together, iterations = _run_combined(cases)
+        alone = np.concatenate([_run_combined([c])[0] for c in cases])
+        error = np.maximum(np.abs(together / ref - 1.0), np.abs(alone / ref - 1.0))
+        row: dict[str, Any] = {
+            "method": "combined",
+            "setting": setting,
+            "cases": len(cases),
+            "error_median": float(f"{np.median(error):.3g}"),
+            "error_max": float(f"{np.max(error):.3g}"),
+            "iterations": int(np.max(iterations)),
+        }
+        if timing:
+
+            def loop(cs: list[dict[str, Any]] = cases) -> None:
+                for c in cs:
+                    _run_combined([c])
+
+            row["seconds_per_case"] = _best_time(loop, repeats) / len(cases)
+
+            def call(cs: list[dict[str, Any]] = cases) -> None:
+                _run_combined(cs, copies)
+
+            many = _best_time(call, repeats)
+            row["seconds_per_case_vectorised"] = many / (len(cases) * copies)
+        rows.append(row)
     return rows
 
 
@@ -238,7 +348,11 @@ NOTES = (
     "Cases: bearing 306 (Kuzmenko 2010: 300 kgf, K = 4700 kgf/mm^1.5), z = 6, 8, 12, 20, 40, "
     "G_r = -20, 0, 20, 100, 400 um, cage angle 0 and 180/z: 50 cases (trial: the 30 with clearance).",
     "Iterations: Newton steps (exact, continuum), evaluations of the resolving equation (trial), "
-    "bisection steps (jr_table).",
+    "bisection steps (jr_table), Newton steps over all stiffness updates (combined).",
+    "combined: the 3-D ring equilibrium (ISO/TS 16281, Hertz K(alpha)) of a 6305-size bearing, "
+    "z = 7, on 12 cases (radial, axial, combined, a moment, preload to -30 um, an imposed "
+    "misalignment of 0.05 deg and of exactly 0) against the same model at 40 digits (mpmath, "
+    "benchmarks/make_combined_reference.py).",
 )
 
 

@@ -290,8 +290,8 @@ def compensating_clearances(
     the rounding margin) show on every piece no zero or a strictly monotone ``h``; following
     the signs at the piece ends from the sign below ``-1`` (:func:`_sign_brackets`) brackets
     every sign change once, and :func:`bearingload.roots.bracketed_root` refines it to
-    ``|Δt| <= 1e-15``. What double precision cannot tell: where ``h`` stays within the
-    rounding margin of its sums (:data:`ROUNDING_ULPS`) over a whole piece (it vanishes
+    ``|Δt| <= 2 (1e-15 + 4.5e-16 |t|)``. What double precision cannot tell: where ``h`` stays
+    within the rounding margin of its sums (:data:`ROUNDING_ULPS`) over a whole piece (it vanishes
     identically under a full preload for an integer ``m < z - 1``, and falls below rounding
     just above ``t = -1`` with many balls), a root inside is listed once if the signs on both
     sides differ; two roots closer than :data:`RESOLUTION` in ``t`` would show as none.

@@ -139,7 +139,8 @@ def component_residuals(
 
 def overall_residual(result: Any, inputs: dict[str, np.ndarray]) -> np.ndarray:
     """Largest miss of the five components per case relative to one scale, the largest of
-    ``F_r``, ``|F_a|``, ``|M|/R``, ``|M_c|/R`` and ``sum Q_j`` (the radial families' measure). [-]"""
+    ``F_r``, ``|F_a|``, ``|M|/R``, ``|M_c|/R`` and ``sum Q_j`` (the radial families' measure).
+    [-]"""
     q = np.asarray(result.ball_loads, float).reshape(-1, result.balls)
     n = q.shape[0]
     arm = np.reshape(moment_radius(result, inputs), n)
