@@ -254,3 +254,33 @@ def test_the_help_teaches_the_general_load():
         text = invoke(name, "--help").output
         assert "--moment-cross" in text and "--tilt-radius" in text
         assert "--tilt-radius pitch" in text  # an example uses it
+
+
+def test_batch_columns_moment_cross_and_tilt_radius_are_the_options(tmp_path):
+    """A batch row with moment_cross and tilt_radius is solve with --moment-cross and
+    --tilt-radius (the same values); the columns are written only when the file has them; a
+    bad lever skips its row naming the column."""
+    path = tmp_path / "cases.csv"
+    path.write_text(
+        "bearing,load,axial_load,moment_cross,tilt_radius,clearance\n"
+        "6205,1kN,500N,2Nm,pitch,C3\n6205,1kN,500N,,20mm,C3\n6205,1kN,500N,-1Nm,,C3\n"
+        "6205,1kN,500N,2Nm,0,C3\n",
+        encoding="utf-8",
+    )
+    out = invoke("batch", str(path), "--format", "json")
+    assert out.exit_code == 1, out.output  # one row skipped
+    doc = json.loads(out.stdout)
+    assert [s["row"] for s in doc["skipped"]] == [5]
+    assert doc["skipped"][0]["reason"].startswith("tilt_radius: must be groove, pitch or a length")
+    options = [("--moment-cross", "2Nm", "--tilt-radius", "pitch"), ("--tilt-radius", "20mm"),
+               ("--moment-cross", "-1Nm")]  # fmt: skip
+    for row, extra in zip(doc["cases"], options, strict=True):
+        one = _case("6205", "-F", "1kN", "-A", "500N", "-G", "C3", "-q", *extra)
+        assert row["moment_cross"] == one.get("moment_cross")
+        assert row["tilt_radius"] == one.get("tilt_radius")
+        for key in ("q_max", "tilt_deg", "tilt_cross_deg", "reference_rating_life"):
+            assert row[key] == pytest.approx(one[key], rel=1e-9, abs=1e-15), key
+    plain = tmp_path / "plain.csv"
+    plain.write_text("bearing,load,axial_load\n6205,1kN,500N\n", encoding="utf-8")
+    head = invoke("batch", str(plain), "--format", "csv").stdout.splitlines()[0]
+    assert "moment_cross" not in head and "tilt_radius" not in head
