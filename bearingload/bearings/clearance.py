@@ -59,6 +59,8 @@ GOST_GROUPS: dict[str, str] = {"6": "C2", "7": "C3", "8": "C4", "9": "C5"}
 
 #: How a class may be picked from its range.
 PICKS: tuple[str, ...] = CLEARANCE_PICKS
+#: The pick that takes a class at every one of :data:`PICKS`, side by side.
+RANGE = "range"
 
 _NORMAL = {"N", "CN", "C0", "0", "NORMAL", "NORM", "НОРМАЛЬНАЯ", "НОРМ", "M", "М"}
 _GROUP_WORD = re.compile(r"^(?:G|GR|GROUP|ГР|ГРУППА)\s*\.?\s*(\S+)$")
@@ -279,6 +281,16 @@ def radial_clearance(bore: float, cls: str, pick: str = "mean", kind: str = "bal
     if pick == "max":
         return high
     return (low + high) / 2.0
+
+
+def picks_of(pick: str) -> tuple[str, ...]:
+    """The picks a clearance pick stands for: :data:`PICKS` (min, mean, max) for
+    :data:`RANGE`, else the pick itself (checked where it is used).
+
+    >>> picks_of("range"), picks_of("max")
+    (('min', 'mean', 'max'), ('max',))
+    """
+    return PICKS if pick == RANGE else (pick,)
 
 
 @dataclass(frozen=True)

@@ -47,9 +47,11 @@ from bearingload.bearings.catalog import (
 from bearingload.bearings.clearance import (
     _NEEDS_BORE,
     PICKS,
+    RANGE,
     ClearanceSpec,
     clearance_range,
     parse_clearance,
+    picks_of,
 )
 from bearingload.constants import STEEL_MODULUS, STEEL_POISSON
 from bearingload.errors import InputError
@@ -291,6 +293,75 @@ def resolve_bearing(
         clearance=g_r, clearance_class=cls, clearance_range=rng, clearance_pick=pick,
         C=c, C0=c0, provenance=tuple(prov), sources=tuple(sources),
     )  # fmt: skip
+
+
+#: The contact of each kind of bearing, which gives its load-deflection exponent m of
+#: Q = K delta^m: Hertz point contact 1.5, line contact 10/9 (Palmgren).
+CONTACTS = {
+    "ball": "a ball bearing (Hertz point contact) has m = 1.5",
+    "roller": "a roller bearing (line contact) has m = 10/9",
+}
+
+
+def check_exponent(bearing: ResolvedBearing, exponent: float | None) -> None:
+    """Refuse a load-deflection exponent m other than the one the bearing's contact gives
+    (:data:`CONTACTS`); None: the bearing's own.
+
+    Raises
+    ------
+    InputError
+        (parameter ``exponent``) naming the contact and its m.
+    """
+    if exponent is not None and exponent != bearing.exponent:
+        raise InputError(
+            "exponent",
+            f"{CONTACTS[bearing.kind]}; another exponent needs a ring given by its stiffness, "
+            "not a bearing designation",
+        )
+
+
+def resolve_bearings(
+    designation: str | None = None,
+    *,
+    clearance_pick: str = "mean",
+    exponent: float | None = None,
+    **options: Any,
+) -> list[ResolvedBearing]:
+    """The bearing of :func:`resolve_bearing` at every pick of ``clearance_pick``: one, or the
+    min, mean and max of its clearance class for ``"range"`` (:func:`picks_of`).
+
+    Parameters
+    ----------
+    designation, **options
+        As :func:`resolve_bearing`.
+    clearance_pick : {"mean", "min", "max", "range"}
+        Where in a class range to take G_r; ``range``: at each of min, mean and max.
+    exponent : float, optional
+        A load-deflection exponent m to check against the bearing's (:func:`check_exponent`). [-]
+
+    Raises
+    ------
+    InputError
+        Those of :func:`resolve_bearing` and :func:`check_exponent`; ``pick`` for ``range`` with a
+        clearance given as a length.
+
+    >>> [round(b.clearance, 4) for b in resolve_bearings("306", clearance="C3",
+    ...                                                   clearance_pick="range")]
+    [0.013, 0.0205, 0.028]
+    """
+    picks = picks_of(clearance_pick)
+    resolved = resolve_bearing(
+        designation, clearance_pick="mean" if clearance_pick == RANGE else clearance_pick, **options
+    )
+    check_exponent(resolved, exponent)
+    if clearance_pick != RANGE:
+        return [resolved]
+    if resolved.clearance_range is None:
+        raise InputError(
+            "pick",
+            f"{RANGE!r} needs a clearance class (C2 CN C3 C4 C5), not a clearance length",
+        )
+    return [resolved.with_clearance(p) for p in picks]
 
 
 def _check_inputs(

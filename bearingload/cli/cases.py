@@ -1,64 +1,30 @@
-"""From the bearing and condition options of ``solve`` and ``sweep`` to one case of the engine."""
+"""From a command's :class:`~bearingload.cli.case_options.CaseOptions` to what the engines take:
+the resolved bearings, or a ring given by z and K; the options a case would ignore, refused."""
 
 from __future__ import annotations
 
+from collections.abc import Collection
 from typing import Any
 
 import click
 
-from bearingload.cli.options import exponent_given, stiffness_value
+from bearingload.cli.case_options import BEARING_ONLY, CaseOptions
 
-
-def resolve_case(
-    bearing: str | None,
-    balls: int | None,
-    stiffness: str | None,
-    clearance: Any,
-    pick: str,
-    exponent: float,
-    geometry: dict[str, Any],
-) -> tuple[int, float, float, float, str]:
-    """(z, K [N/mm^m], G_r [mm], m, context note) from a BEARING or hand-given balls, as solve."""
-    k_given = stiffness_value(stiffness, exponent, bearing)
-    if bearing is None and geometry["ball_diameter"] is None and geometry["pitch_diameter"] is None:
-        from bearingload.bearings.clearance import clearance_length
-
-        if balls is None:
-            raise click.UsageError(
-                "Missing option '--balls' / '-z' (or give a BEARING designation)"
-            )
-        if k_given is None:
-            raise click.UsageError(
-                "Missing option '--stiffness' / '-K' (or give a BEARING designation, or "
-                "--ball-diameter and --pitch-diameter)"
-            )
-        refuse_unused({option: geometry[key] for key, option in _BEARING_ONLY.items()})
-        return balls, k_given, clearance_length(clearance), exponent, ""
-    b = resolve_bearings(bearing, k_given, clearance, pick, exponent, balls=balls, **geometry)[0]
-    return b.balls, float(b.stiffness), b.clearance, b.exponent, bearing_context(b)
-
-
-#: Options only a bearing or its ball geometry uses (resolve_case's geometry keys).
-_BEARING_ONLY = {"f_i": "--inner-conformity", "f_o": "--outer-conformity",
-                 "modulus": "--modulus", "poisson": "--poisson"}  # fmt: skip
+#: What the options a ring given by z and K ignores need.
+NEED_BEARING = (
+    "a BEARING or the ball geometry (--ball-diameter and --pitch-diameter): with --balls and "
+    "--stiffness alone"
+)
 
 
 def refuse_unused(
-    given: dict[str, Any],
-    need: str = "a BEARING or the ball geometry (--ball-diameter and --pitch-diameter): with "
-    "--balls and --stiffness alone",
+    case: CaseOptions, names: Collection[str] = BEARING_ONLY, need: str = NEED_BEARING
 ) -> None:
-    """Refuse the options (name -> value, None: not given) that only a BEARING or the ball
-    geometry uses when neither is given, and --clearance-pick when it is given on the command
-    line: with --balls and --stiffness alone they would be ignored (a batch file's
+    """Refuse the options ``names`` given (a value) and --clearance-pick given on the command
+    line: ``need`` says what they need, without which they would be ignored (a batch file's
     clearance_pick column is refused alike)."""
-    from click.core import ParameterSource
-
-    unused = [name for name, value in given.items() if value is not None]
-    ctx = click.get_current_context(silent=True)
-    if ctx is not None and ctx.get_parameter_source("clearance_pick") not in (
-        None, ParameterSource.DEFAULT
-    ):  # fmt: skip
+    unused = [f"--{n.replace('_', '-')}" for n in names if getattr(case, n) is not None]
+    if "clearance_pick" in case.given:
         unused.append("--clearance-pick")
     if unused:
         one = len(unused) == 1
@@ -66,6 +32,63 @@ def refuse_unused(
             f"{', '.join(unused)} {'needs' if one else 'need'} {need} "
             f"{'it' if one else 'they'} would be ignored"
         )
+
+
+def refuse_range(case: CaseOptions, where: str) -> None:
+    """Refuse --clearance-pick range where the command solves one clearance."""
+    from bearingload.bearings.clearance import RANGE
+
+    if case.clearance_pick == RANGE:
+        raise click.UsageError(
+            f"Invalid value for '--clearance-pick': {RANGE!r} (min, mean and max side by side) is "
+            f"solve's; {where} takes min, mean or max"
+        )
+
+
+def refuse_tilt_radius(case: CaseOptions) -> None:
+    """Refuse --tilt-radius where the radial engine solves the case: it has no tilt."""
+    if case.tilt_radius is not None:
+        raise click.UsageError(
+            "Invalid value for '--tilt-radius': it is the lever of the inner ring's tilt, and "
+            "only the combined load (--axial-load, --moment, --moment-cross, --misalignment) "
+            "tilts the ring"
+        )
+
+
+def ring_by_hand(case: CaseOptions, stiffness: float | None) -> tuple[int, float]:
+    """(z, K [N/mm^m]) of a ring given by hand, both required."""
+    if case.balls is None:
+        raise click.UsageError("Missing option '--balls' / '-z' (or give a BEARING designation)")
+    if stiffness is None:
+        raise click.UsageError(
+            "Missing option '--stiffness' / '-K' (or give a BEARING designation, or "
+            "--ball-diameter and --pitch-diameter)"
+        )
+    return case.balls, stiffness
+
+
+def resolve_case(case: CaseOptions) -> tuple[int, float, float, float, str]:
+    """(z, K [N/mm^m], G_r [mm], m, context note) of one ring from a BEARING or hand-given balls,
+    as solve resolves it."""
+    k_given = case.stiffness_value()
+    if case.by_hand:
+        from bearingload.bearings.clearance import clearance_length
+
+        z, k = ring_by_hand(case, k_given)
+        refuse_unused(case)
+        return z, k, clearance_length(case.clearance), case.exponent_or(1.5), ""
+    b = resolve_bearings(case, k_given)[0]
+    return b.balls, float(b.stiffness), b.clearance, b.exponent, bearing_context(b)
+
+
+def resolve_bearings(case: CaseOptions, stiffness: float | None, **override: Any) -> list[Any]:
+    """The resolved bearing, or the same bearing at the min, mean and max of its class
+    (--clearance-pick range): :func:`bearingload.bearings.resolve.resolve_bearings` of the
+    case's arguments (``stiffness`` in N/mm^m; ``override`` replaces arguments)."""
+    from bearingload.bearings.resolve import resolve_bearings as resolve
+
+    arguments = case.bearing_arguments(stiffness) | override
+    return resolve(arguments.pop("designation"), **arguments)
 
 
 def bearing_context(b: Any) -> str:
@@ -76,39 +99,35 @@ def bearing_context(b: Any) -> str:
     return f"z and K ({k_src}) of {label}; G_r: {g_src}."
 
 
-def resolve_bearings(
-    bearing: str | None,
-    k_given: float | None,
-    clearance: Any,
-    clearance_pick: str,
-    exponent: float,
-    **geometry: Any,
-) -> list[Any]:
-    """The resolved bearing, or the same bearing at the min, mean and max of its class
-    (``clearance_pick`` ``range``), as ``solve`` and ``sweep`` resolve it."""
-    from bearingload.bearings.resolve import resolve_bearing
+def check_rotating(case: CaseOptions, b: Any, methods: list[str]) -> None:
+    """Refuse --rotating where no reference rating life L10r is computed for it to select the
+    ring of: a roller bearing, no ball geometry, no C_r, or no exact ball loads."""
+    if case.rotating is None:
+        return
+    why = None
+    if b.kind != "ball":
+        why = f"L10r is computed for ball bearings only ({b.designation} is a {b.kind} bearing)"
+    elif not b.has_geometry:
+        why = "L10r needs the ball geometry (a BEARING, or --ball-diameter and --pitch-diameter)"
+    elif not (case.dynamic_rating or b.C):
+        why = "L10r needs the dynamic load rating C_r: give --dynamic-rating"
+    elif "exact" not in methods:
+        why = f"L10r needs the exact ball loads (--method {methods[0]} gives none)"
+    if why is not None:
+        raise click.UsageError(
+            "Invalid value for '--rotating': it names the rotating ring for the reference rating "
+            f"life L10r (ISO/TS 16281), and {why}"
+        )
 
-    resolved = resolve_bearing(
-        bearing,
-        stiffness=k_given,
-        clearance=clearance,
-        clearance_pick="mean" if clearance_pick == "range" else clearance_pick,
-        **geometry,
+
+def combined_cases(bearings: list[Any], case: CaseOptions) -> list[Any]:
+    """Solve the resolved ``bearings`` (one per clearance) under the case's combined load: one
+    :class:`bearingload.studies.combined_bearing.CombinedCase` each."""
+    from bearingload.studies.combined_bearing import solve_combined_bearing
+
+    return solve_combined_bearing(
+        bearings,
+        case.radial_load,
+        cage_angle=case.cage_angle_deg(bearings[0].balls),
+        **case.combined_arguments(),
     )
-    if exponent != resolved.exponent and (exponent != 1.5 or exponent_given()):  # 1.5: default
-        contact = (
-            "a roller bearing (line contact) has m = 10/9"
-            if resolved.kind == "roller"
-            else "a ball bearing (Hertz point contact) has m = 1.5"
-        )
-        raise click.UsageError(
-            f"Invalid value for '--exponent': {contact}; "
-            "other exponents need --balls and --stiffness without a BEARING"
-        )
-    if clearance_pick == "range" and resolved.clearance_range is None:
-        raise click.UsageError(
-            "Invalid value for '--clearance-pick': 'range' needs a clearance class "
-            "(C2 CN C3 C4 C5), not a clearance length"
-        )
-    picks = ["min", "mean", "max"] if clearance_pick == "range" else []
-    return [resolved.with_clearance(p) for p in picks] or [resolved]

@@ -4,12 +4,13 @@ from __future__ import annotations
 
 import click
 
+from bearingload.cli.case_options import maker_option
 from bearingload.cli.options import (
     CONTEXT,
+    LibraryArgument,
     Quantity,
     emit,
     library_errors,
-    maker_option,
     output_options,
 )
 
@@ -52,7 +53,7 @@ def catalog(
 
 
 @catalog.command(context_settings=CONTEXT)
-@click.argument("designation")
+@click.argument("designation", cls=LibraryArgument, library=("bearing",))
 @maker_option
 @output_options
 @library_errors

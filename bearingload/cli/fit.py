@@ -8,7 +8,7 @@ from typing import Any
 
 import click
 
-from bearingload.cli.options import CONTEXT, emit, output_options, usage_error
+from bearingload.cli.options import CONTEXT, LibraryOption, emit, output_options, usage_error
 from bearingload.errors import BearingloadError, InputError
 from bearingload.units import UNITS
 
@@ -43,6 +43,8 @@ def fit_errors(func: Callable[..., Any]) -> Callable[..., Any]:
 @click.option(
     "--base",
     "base",
+    cls=LibraryOption,
+    library=("base_points",),
     multiple=True,
     metavar="LOAD:DISPLACEMENT",
     help="A base point of the two-point fit, e.g. 200kgf:0.8mm; give it twice (bare numbers are "

@@ -57,45 +57,6 @@ class CageAngle(click.ParamType):
             self.fail(str(exc).split(": ", 1)[-1], param, ctx)
 
 
-def stiffness_value(text: str | None, exponent: float, bearing: str | None = None) -> float | None:
-    """The --stiffness text in N/mm^m, its unit checked against the exponent m: the --exponent
-    given, else that of the BEARING's contact (10/9 for a cylindrical roller bearing)."""
-    if text is None:
-        return None
-    exponent = _contact_exponent(bearing, exponent)
-    from bearingload.units import parse_stiffness
-    from bearingload.validate import exponent as valid_exponent
-
-    try:
-        valid_exponent(exponent)  # the exponent's own error comes first
-    except InputError as exc:
-        raise click.UsageError(
-            f"Invalid value for '--exponent': {str(exc).split(': ', 1)[-1]}"
-        ) from exc
-    try:
-        return parse_stiffness(text, exponent)
-    except InputError as exc:
-        raise click.UsageError(
-            f"Invalid value for '--stiffness': {str(exc).split(': ', 1)[-1]}"
-        ) from exc
-
-
-def exponent_given() -> bool:
-    """Whether the command line gave --exponent (not its default 1.5)."""
-    ctx = click.get_current_context(silent=True)
-    source = ctx.get_parameter_source("exponent") if ctx is not None else None
-    return source not in (None, click.core.ParameterSource.DEFAULT)
-
-
-def _contact_exponent(bearing: str | None, exponent: float) -> float:
-    """``exponent`` if --exponent was given or no roller bearing is named, else 10/9."""
-    if exponent_given():
-        return exponent
-    from bearingload.bearings.designation import contact_exponent
-
-    return contact_exponent(bearing, exponent)
-
-
 def units_help(kind: str) -> str:
     return ", ".join(UNITS[kind])
 
@@ -137,91 +98,57 @@ def emit(text: str, output: str | None) -> None:
         click.echo(text, nl=False)
 
 
-#: Library parameter names -> the option the user typed.
-OPTION_NAMES = {
-    "balls": "--balls",
-    "load": "--load",
-    "stiffness": "--stiffness",
-    "clearance": "--clearance",
-    "cage_angle": "--cage-angle",
-    "exponent": "--exponent",
-    "steps": "--steps",
-    "T": "--kurochkin-T",
-    # bearing, geometry and life options (bearingload.bearings.resolve, bearingload.bearings.life)
-    "bearing": "BEARING",
-    "ball-diameter": "--ball-diameter",
-    "D_w": "--ball-diameter",
-    "pitch-diameter": "--pitch-diameter",
-    "d_m": "--pitch-diameter",
-    "f_i": "--inner-conformity",
-    "f_o": "--outer-conformity",
-    "modulus": "--modulus",
-    "E1": "--modulus",
-    "poisson": "--poisson",
-    "nu1": "--poisson",
-    "pick": "--clearance-pick",
-    "bore": "--clearance",
-    "revolutions": "--revolutions",
-    "series": "--series",
-    # combined load (bearingload.models.combined, bearingload.bearings.iso16281)
-    "radial_load": "--load",
-    "axial_load": "--axial-load",
-    "moment": "--moment",
-    "misalignment": "--misalignment",
-    "dynamic_rating": "--dynamic-rating",
-    "ball_diameter": "--ball-diameter",
-    "pitch_diameter": "--pitch-diameter",
-    "standard": "--standard",
-    "paper": "--paper",
-    "maker": "--maker",
-    "roller-length": "--roller-length",
-    "plot": "--plot",
-    "family": "--family",
-    "size": "--size",
-}
+class LibraryOption(click.Option):
+    """An option that answers for the library's names of its parameter (``library``), so that a
+    library error names the option the user typed (:func:`option_name`)."""
+
+    def __init__(self, *args: Any, library: tuple[str, ...] = (), **kwargs: Any) -> None:
+        super().__init__(*args, **kwargs)
+        self.library = library
 
 
-#: Where a command calls a library parameter by another option name.
-COMMAND_OPTION_NAMES = {
-    "table": {"bearing": "--bearing"},
-    "catalog show": {"bearing": "DESIGNATION"},
-    "fit": {
-        "base": "--base",
-        "base_points": "--base",
-        "balls": "--balls",
-        "load_unit": "--load-unit",
-        "displacement_unit": "--displacement-unit",
-    },
-}
+class LibraryArgument(click.Argument):
+    """An argument that answers for the library's names of its parameter (``library``)."""
+
+    def __init__(self, *args: Any, library: tuple[str, ...] = (), **kwargs: Any) -> None:
+        super().__init__(*args, **kwargs)
+        self.library = library
 
 
-def option_name(parameter: str) -> str:
-    """The option the user typed for a library parameter: the one map from the library's
-    parameter names to the command line's option names."""
+def _shown(param: click.Parameter) -> str:
+    """How the user writes ``param``: its long option, or the argument's name."""
+    if isinstance(param, click.Option):
+        return next((o for o in param.opts if o.startswith("--")), param.opts[0])
+    return (param.metavar or (param.name or "").upper()).strip("[]. ")
+
+
+def _parameter(name: str) -> click.Parameter | None:
+    """The parameter of the running command that the library calls ``name``: its own name, or
+    one of the ``library`` names it answers for."""
     ctx = click.get_current_context(silent=True)
-    command = " ".join(ctx.command_path.split()[1:]) if ctx is not None else ""
-    return COMMAND_OPTION_NAMES.get(command, {}).get(parameter) or OPTION_NAMES.get(
-        parameter, parameter
+    params = ctx.command.params if ctx is not None else []
+    return next((p for p in params if p.name == name), None) or next(
+        (p for p in params if name in getattr(p, "library", ())), None
     )
 
 
+def option_name(parameter: str) -> str:
+    """The option the user typed for a library parameter (``ball_diameter``, ``D_w`` ->
+    ``--ball-diameter``); a name no parameter of the running command answers for, as it is."""
+    param = _parameter(parameter)
+    return parameter if param is None else _shown(param)
+
+
 def option_message(message: str) -> str:
-    """A library message with every quoted parameter name ('ball_diameter') written as the
-    option the user types ('--ball-diameter')."""
+    """A library message with every quoted parameter name ('ball_diameter') of the running
+    command written as the option the user types ('--ball-diameter')."""
     import re
 
     def swap(match: re.Match[str]) -> str:
-        name = match.group(1)
-        return (
-            f"'{option_name(name)}'"
-            if name in OPTION_NAMES or name in _COMMAND_NAMES
-            else match.group(0)
-        )
+        param = _parameter(match.group(1))
+        return match.group(0) if param is None else f"'{_shown(param)}'"
 
     return re.sub(r"'([a-z_]+)'", swap, message)
-
-
-_COMMAND_NAMES = {p for names in COMMAND_OPTION_NAMES.values() for p in names}
 
 
 def usage_error(exc: InputError) -> click.UsageError:
@@ -245,23 +172,6 @@ def library_errors(func: Callable[..., Any]) -> Callable[..., Any]:
     return wrapper
 
 
-def cage_angle_deg(cage_angle: float | str, balls: int) -> float:
-    """The ``--cage-angle`` value in degrees; ``"half"`` is half a pitch, 180/z."""
-    return 180.0 / balls if cage_angle == "half" else float(cage_angle)
-
-
-def cage_angle_option(func: Callable[..., Any]) -> Callable[..., Any]:
-    """``--cage-angle DEG|half``, shared by ``solve`` and ``table``."""
-    return click.option(
-        "--cage-angle",
-        type=CageAngle(),
-        default="0",
-        show_default=True,
-        help="Angle of ball 1 from the load line, degrees unless a unit follows (12, 12deg, "
-        "0.2rad, 3mrad); 0 = a ball under the load, 'half' = the load between two balls.",
-    )(func)
-
-
 class Exponent(click.ParamType):
     """A load-deflection exponent as a number or a fraction: ``1.5``, ``3/2``, ``10/9``."""
 
@@ -281,31 +191,6 @@ class Exponent(click.ParamType):
         return m
 
 
-def exponent_option(func: Callable[..., Any]) -> Callable[..., Any]:
-    """``--exponent/-m``, shared by ``solve`` and ``table``."""
-    return click.option(
-        "--exponent",
-        "-m",
-        type=Exponent(),
-        default=1.5,
-        show_default=True,
-        help="Load-deflection exponent m: 1.5 (or 3/2) for balls, 10/9 for rollers.",
-    )(func)
-
-
-def stiffness_option(func: Callable[..., Any]) -> Callable[..., Any]:
-    """``--stiffness/-K`` of one ring, shared by ``solve`` and ``sweep``."""
-    return click.option(
-        "--stiffness",
-        "-K",
-        type=Quantity("stiffness"),
-        help="Ball stiffness K of both contacts in series, Q = K delta^m; required without a "
-        "BEARING or ball geometry, else it replaces the Hertz value. "
-        f"Units: {units_help('stiffness')} (bare number: N/mm^1.5, N/mm^(10/9) for a "
-        "cylindrical roller bearing unless --exponent says otherwise).",
-    )(func)
-
-
 def method_option(help_text: str) -> Callable[[Callable[..., Any]], Callable[..., Any]]:
     """``--method`` over the registered methods and ``all``; imports no numpy."""
     from bearingload.models.registry import DEFAULT_METHOD, list_methods
@@ -317,16 +202,6 @@ def method_option(help_text: str) -> Callable[[Callable[..., Any]], Callable[...
         show_default=True,
         help=help_text,
     )
-
-
-def maker_option(func: Callable[..., Any]) -> Callable[..., Any]:
-    """``--maker``: whose ball set a catalogue designation uses."""
-    return click.option(
-        "--maker",
-        help="Whose ball set the designation uses where makers differ: NSK (default), NTN, SKF, "
-        "GMN, GOST, or a published test-rig set (CWRU, PRONOSTIA, PADERBORN); "
-        "'bearingload catalog show X' lists the makers of X.",
-    )(func)
 
 
 def quiet_option(func: Callable[..., Any]) -> Callable[..., Any]:

@@ -8,62 +8,27 @@ from typing import Any
 
 import click
 
-from bearingload.cli.bearing_options import CLEARANCE_HELP, Clearance, geometry_options
-from bearingload.cli.cases import refuse_unused, resolve_bearings
-from bearingload.cli.combined_options import combined_options, wants_combined
+from bearingload.cli.case_options import CaseOptions, case_options
+from bearingload.cli.cases import (
+    check_rotating,
+    refuse_tilt_radius,
+    refuse_unused,
+    resolve_bearings,
+)
 from bearingload.cli.options import (
     CONTEXT,
-    Quantity,
-    cage_angle_deg,
-    cage_angle_option,
     emit,
-    exponent_option,
     library_errors,
-    maker_option,
     method_option,
     output_options,
     print_warnings,
     quiet_option,
-    stiffness_option,
-    stiffness_value,
-    units_help,
 )
 from bearingload.cli.plot import ball_loads_plot_option, check_plot, save_plot
 
 
 @click.command(context_settings=CONTEXT)
-@click.argument("bearing", required=False, metavar="[BEARING]")
-@click.option(
-    "--balls",
-    "-z",
-    type=int,
-    help="Number of balls z (1 to 100000); required without a BEARING, else an override.",
-)
-@click.option(
-    "--load",
-    "-F",
-    type=Quantity("force"),
-    required=True,
-    help=f"Radial load F_r > 0 (>= 0 with an axial load or a moment). Units: "
-    f"{units_help('force')} (bare number: N).",
-)
-@stiffness_option
-@click.option(
-    "--clearance",
-    "-G",
-    type=Clearance(),
-    help=CLEARANCE_HELP + " Default: without a BEARING 0; with one, the class its designation "
-    "marks, else CN (an unmarked designation means the normal group).",
-)
-@click.option(
-    "--clearance-pick",
-    type=click.Choice(["min", "mean", "max", "range"]),
-    default="mean",
-    show_default=True,
-    help="Where in a clearance class to take G_r; 'range' solves at min, mean and max and "
-    "prints them side by side.",
-)
-@geometry_options
+@case_options(required=("load",))
 @click.option(
     "--revolutions",
     type=click.FloatRange(min=0, max=1e30, min_open=True),
@@ -72,9 +37,6 @@ from bearingload.cli.plot import ball_loads_plot_option, check_plot, save_plot
     help="Life L [revolutions] for the allowable load C/(L/10^6)^(1/3). The default is the "
     "worked value of Kuzmenko (2010) §3.2 (36e6 rev, e.g. 1000 h at 600 rpm); set your own.",
 )
-@combined_options
-@cage_angle_option
-@exponent_option
 @method_option(
     "exact: ring equilibrium, every ball; continuum: loads smeared over the raceway; "
     "stribeck: 4.37 F_r/z; palmgren: 5 F_r/z (these two ignore stiffness, clearance, cage "
@@ -91,36 +53,20 @@ from bearingload.cli.plot import ball_loads_plot_option, check_plot, save_plot
     help="With a BEARING: also print the geometry used and the source of every value "
     "(JSON always carries it).",
 )
-@maker_option
 @quiet_option
 @output_options
 @ball_loads_plot_option
 @library_errors
 def solve(
-    bearing: str | None,
-    balls: int | None,
-    load: float,
-    stiffness: str | None,
-    clearance: Any,
-    clearance_pick: str,
-    ball_diameter: float | None,
-    pitch_diameter: float | None,
-    inner_conformity: float | None,
-    outer_conformity: float | None,
-    modulus: float | None,
-    poisson: float | None,
+    case: CaseOptions,
     revolutions: float,
-    cage_angle: Any,
-    exponent: float,
     method: str,
     per_ball: bool,
     show_geometry: bool,
-    maker: str | None,
     quiet: bool,
     fmt: str,
     output: str | None,
     plot: str | None,
-    **combined: Any,
 ) -> None:
     """Solve the ring equilibrium of one bearing: the heaviest ball load, how many balls carry,
     the load zone, the ring displacement and stiffness, and every ball's load.
@@ -140,14 +86,16 @@ def solve(
     clearance beyond the ISO 5753-1 classes) prints 'Warning: ...' lines on stderr; the result is
     printed and the exit status is 0. JSON carries them as 'warnings'.
 
-    With --axial-load, --moment or --misalignment the inner ring of a deep-groove ball bearing
-    moves radially, axially and tilts (ISO/TS 16281): every ball gets its contact angle; the axial
-    displacement is measured from the centred rings (half the axial play included, as MASTA
-    reports it); the ring is free to tilt unless a moment or a misalignment is given; the report
-    adds the contact pressures at every ball's contact angle, the static safety s0 (ISO 76) and
-    ISO 281's (C_r/P)^3 with P = X F_r + Y F_a. The reference rating life L10r (ISO/TS 16281,
-    from the ball loads) is given wherever the ball geometry and C_r are known, radial load or
-    not; --rotating (default inner) and --dynamic-rating feed the lives only and change no load.
+    With --axial-load, --moment, --moment-cross or --misalignment the inner ring of a deep-groove
+    ball bearing moves radially, axially and tilts about both axes (ISO/TS 16281): every ball gets
+    its contact angle; the axial displacement is measured from the centred rings (half the axial
+    play included, as MASTA reports it); the ring is free to tilt unless a moment or a
+    misalignment is given, and --tilt-radius sets the lever of the tilt (default groove, the
+    radius of the inner groove centres; pitch: d_m/2, as MASTA); the report adds the contact
+    pressures at every ball's contact angle, the static safety s0 (ISO 76) and ISO 281's
+    (C_r/P)^3 with P = X F_r + Y F_a. The reference rating life L10r (ISO/TS 16281, from the ball
+    loads) is given wherever the ball geometry and C_r are known, radial load or not; --rotating
+    (default inner) and --dynamic-rating feed the lives only and change no load.
 
     \b
     Examples:
@@ -167,6 +115,8 @@ def solve(
       bearingload solve 6205 -F 1.4kN --axial-load 700N -G C3
       # a hand-given ball set under a pure axial load, its C_r, the outer ring rotating
       bearingload solve -z 7 --ball-diameter 11.5 --pitch-diameter 43.5 -F 0 -A 1kN -G 10um -C 23.4kN --rotating outer
+      # a moment of 2 N m about the load line (MASTA's M_x), the tilt at the pitch radius
+      bearingload solve 6205 -F 1kN -A 500N --moment-cross 2Nm --tilt-radius pitch
       # SKF's ball set of a 6208 instead of NSK's; a cylindrical roller bearing
       bearingload solve 6208 -F 5kN --maker SKF
       bearingload solve NU206 --load 5kN
@@ -182,44 +132,33 @@ def solve(
     methods = list_methods() if method == "all" else [method]
     if plot is not None:  # before any work
         check_plot(plot)
-        if "exact" not in methods and not wants_combined(combined):
+        if "exact" not in methods and not case.wants_combined:
             raise click.UsageError(
                 f"Invalid value for '--plot': it draws the ball loads of the exact model; "
                 f"--method {method} gives none (use --method exact or all)"
             )
-    k_given = stiffness_value(stiffness, exponent, bearing)  # N/mm^m
-    geometry = {"balls": balls, "ball_diameter": ball_diameter, "pitch_diameter": pitch_diameter,
-                "f_i": inner_conformity, "f_o": outer_conformity, "modulus": modulus,
-                "poisson": poisson, "maker": maker}  # fmt: skip
-    if wants_combined(combined):  # the load alone chooses the engine, never a life option
+    k_given = case.stiffness_value()  # N/mm^m
+    if case.wants_combined:  # the load alone chooses the engine, never a life option
         if method != "exact":
             raise click.UsageError(
                 "Invalid value for '--method': the combined load (--axial-load, --moment, "
-                "--misalignment) is solved by the exact model only"
+                "--moment-cross, --misalignment) is solved by the exact model only"
             )
-        bearings = resolve_bearings(
-            bearing, k_given, clearance, clearance_pick, exponent, **geometry
-        )
+        bearings = resolve_bearings(case, k_given)
         if bearings[0].kind == "ball" and bearings[0].has_geometry:
-            check_rotating(bearings[0], combined, methods)
-        text, found, figure = _combined(bearings, load, cage_angle, combined, fmt, per_ball,
-                                        show_geometry)  # fmt: skip
+            check_rotating(case, bearings[0], methods)
+        text, found, figure = _combined(bearings, case, fmt, per_ball, show_geometry)
     else:
         from bearingload.reports.solve import solve_report
         from bearingload.studies.loaded_bearing import collect_warnings
 
-        if bearing is None and ball_diameter is None and pitch_diameter is None:
-            refuse_unused({"--inner-conformity": inner_conformity,
-                           "--outer-conformity": outer_conformity, "--modulus": modulus,
-                           "--poisson": poisson, "--maker": maker,
-                           "--dynamic-rating": combined.get("dynamic_rating"),
-                           "--rotating": combined.get("rotating")})  # fmt: skip
-            cases = _by_hand(methods, balls, load, k_given, clearance, cage_angle, exponent)
+        refuse_tilt_radius(case)
+        if case.by_hand:
+            refuse_unused(case)
+            cases = _by_hand(methods, case, k_given)
         else:
-            bearings = resolve_bearings(
-                bearing, k_given, clearance, clearance_pick, exponent, **geometry
-            )
-            cases = _radial(bearings, load, cage_angle, methods, revolutions, combined)
+            bearings = resolve_bearings(case, k_given)
+            cases = _radial(bearings, case, methods, revolutions)
         text = solve_report(cases, fmt, per_ball=per_ball, show_geometry=show_geometry)
         found = collect_warnings(cases)
         figure = functools.partial(_figure, "solve_figure", cases)
@@ -229,63 +168,30 @@ def solve(
     print_warnings(found, quiet)
 
 
-def check_rotating(b: Any, combined: dict[str, Any], methods: list[str]) -> None:
-    """Refuse --rotating where no reference rating life L10r is computed for it to select the
-    ring of: a roller bearing, no ball geometry, no C_r, or no exact ball loads."""
-    if combined.get("rotating") is None:
-        return
-    why = None
-    if b.kind != "ball":
-        why = f"L10r is computed for ball bearings only ({b.designation} is a {b.kind} bearing)"
-    elif not b.has_geometry:
-        why = "L10r needs the ball geometry (a BEARING, or --ball-diameter and --pitch-diameter)"
-    elif not (combined.get("dynamic_rating") or b.C):
-        why = "L10r needs the dynamic load rating C_r: give --dynamic-rating"
-    elif "exact" not in methods:
-        why = f"L10r needs the exact ball loads (--method {methods[0]} gives none)"
-    if why is not None:
-        raise click.UsageError(
-            "Invalid value for '--rotating': it names the rotating ring for the reference rating "
-            f"life L10r (ISO/TS 16281), and {why}"
-        )
-
-
 def _radial(
-    bearings: list[Any],
-    load: float,
-    cage_angle: Any,
-    methods: list[str],
-    revolutions: float,
-    combined: dict[str, Any],
+    bearings: list[Any], case: CaseOptions, methods: list[str], revolutions: float
 ) -> list[Any]:
     """The radial engine on resolved bearings: C replaced by --dynamic-rating, and L10r from the
     exact ball loads for the ring --rotating names (default inner) where it can be computed."""
     from bearingload.studies.loaded_bearing import solve_bearing
     from bearingload.studies.reference_life import with_reference_lives
 
-    rating = combined.get("dynamic_rating")
-    if rating is not None:
-        bearings = [b.with_dynamic_rating(rating) for b in bearings]
-    check_rotating(bearings[0], combined, methods)
-    angle = cage_angle_deg(cage_angle, bearings[0].balls)
-    cases = solve_bearing(bearings, load, angle, methods, revolutions)
-    return with_reference_lives(cases, combined.get("rotating") or "inner")
+    if case.dynamic_rating is not None:
+        bearings = [b.with_dynamic_rating(case.dynamic_rating) for b in bearings]
+    check_rotating(case, bearings[0], methods)
+    angle = case.cage_angle_deg(bearings[0].balls)
+    cases = solve_bearing(bearings, case.radial_load, angle, methods, revolutions)
+    return with_reference_lives(cases, case.rotating or "inner")
 
 
 def _combined(
-    bearings: list[Any],
-    load: float,
-    cage_angle: Any,
-    combined: dict[str, Any],
-    fmt: str,
-    per_ball: bool,
-    show_geometry: bool,
+    bearings: list[Any], case: CaseOptions, fmt: str, per_ball: bool, show_geometry: bool
 ) -> tuple[str, list[str], Callable[[], Any]]:
     """The combined-load engine on resolved bearings: (report, warnings, its figure)."""
-    from bearingload.cli.combined_options import combined_cases
+    from bearingload.cli.cases import combined_cases
     from bearingload.reports.combined import combined_report
 
-    cases = combined_cases(bearings, load, cage_angle, combined)
+    cases = combined_cases(bearings, case)
     text = combined_report(cases, fmt, per_ball=per_ball, show_geometry=show_geometry)
     found = list(dict.fromkeys(w for c in cases for w in c.warnings))
     return text, found, functools.partial(_figure, "combined_loads_figure", cases)
@@ -299,24 +205,13 @@ def _figure(name: str, cases: list[Any]) -> Any:
     return getattr(plots, name)(cases)
 
 
-def _by_hand(
-    methods: list[str],
-    balls: int | None,
-    load: float,
-    k_given: float | None,
-    clearance: Any,
-    cage_angle: Any,
-    exponent: float,
-) -> list[Any]:
+def _by_hand(methods: list[str], case: CaseOptions, k_given: float | None) -> list[Any]:
+    """The radial engine on a ring given by z and K."""
     from bearingload.bearings.clearance import clearance_length
+    from bearingload.cli.cases import ring_by_hand
     from bearingload.studies.loaded_bearing import solve_ring
 
-    if balls is None:
-        raise click.UsageError("Missing option '--balls' / '-z' (or give a BEARING designation)")
-    if k_given is None:
-        raise click.UsageError(
-            "Missing option '--stiffness' / '-K' (or give a BEARING designation, or "
-            "--ball-diameter and --pitch-diameter)"
-        )
-    angle = cage_angle_deg(cage_angle, balls)
-    return solve_ring(methods, balls, load, k_given, clearance_length(clearance), angle, exponent)
+    z, k = ring_by_hand(case, k_given)
+    angle = case.cage_angle_deg(z)
+    g_r = clearance_length(case.clearance)
+    return solve_ring(methods, z, case.radial_load, k, g_r, angle, case.exponent_or(1.5))

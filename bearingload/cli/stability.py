@@ -4,7 +4,7 @@ from __future__ import annotations
 
 import click
 
-from bearingload.cli.options import CONTEXT, emit, library_errors, output_options
+from bearingload.cli.options import CONTEXT, LibraryOption, emit, library_errors, output_options
 
 
 @click.command(context_settings=CONTEXT)
@@ -18,6 +18,8 @@ from bearingload.cli.options import CONTEXT, emit, library_errors, output_option
 @click.option(
     "--family",
     "families",
+    cls=LibraryOption,
+    library=("family",),
     multiple=True,
     help="Run only this family (repeatable); default: every family.",
 )

@@ -2,63 +2,21 @@
 
 from __future__ import annotations
 
-from typing import Any
-
 import click
 
-from bearingload.cli.bearing_options import CLEARANCE_HELP, Clearance, geometry_options
-from bearingload.cli.cases import resolve_case
-from bearingload.cli.combined_options import (
-    COMBINED_PARAMS,
-    combined_options,
-    lives_given,
-    wants_combined,
-)
-from bearingload.cli.options import (
-    CONTEXT,
-    Quantity,
-    emit,
-    exponent_option,
-    library_errors,
-    output_options,
-    stiffness_option,
-    units_help,
-)
+from bearingload.cli.case_options import COMBINED_PARAMS, CaseOptions, case_options
+from bearingload.cli.cases import refuse_range, refuse_tilt_radius, resolve_case
+from bearingload.cli.options import CONTEXT, LibraryOption, emit, library_errors, output_options
 from bearingload.cli.plot import check_plot, save_plot
+
+#: The case options the dimensionless mode refuses (P = K = 1, the gap from T).
+KUROCHKIN_REFUSES = ("bearing", "load", "stiffness", "clearance", "plot", "ball_diameter",
+                     "pitch_diameter", "inner_conformity", "outer_conformity", "modulus",
+                     "poisson", "maker", *COMBINED_PARAMS)  # fmt: skip
 
 
 @click.command(context_settings=CONTEXT)
-@click.argument("bearing", required=False, metavar="[BEARING]")
-@click.option(
-    "--balls",
-    "-z",
-    type=int,
-    help="Number of balls z (3 to 100000); required without a BEARING, else an override.",
-)
-@click.option(
-    "--load",
-    "-F",
-    type=Quantity("force"),
-    help="Radial load F_r > 0 (>= 0 with an axial load or a moment; required unless "
-    f"--kurochkin-T). Units: {units_help('force')} (bare number: N).",
-)
-@stiffness_option
-@click.option(
-    "--clearance",
-    "-G",
-    type=Clearance(),
-    help=CLEARANCE_HELP + " Default: without a BEARING 0; with one, the class its designation "
-    "marks, else CN.",
-)
-@click.option(
-    "--clearance-pick",
-    type=click.Choice(["min", "mean", "max"]),
-    default="mean",
-    show_default=True,
-    help="Where in a clearance class to take G_r.",
-)
-@geometry_options
-@exponent_option
+@case_options(omit=("cage_angle",))
 @click.option(
     "--steps",
     "-n",
@@ -77,33 +35,21 @@ from bearingload.cli.plot import check_plot, save_plot
     "--kurochkin-T",
     "kurochkin_t",
     type=float,
+    cls=LibraryOption,
+    library=("T",),
     help="Kurochkin's dimensionless mode (1973): P = K = 1 and the gap from his parameter T, "
     "eq. (1.13); rows give F0 = x0 and F0' = -y0, the summary the contact sequence, exit angle "
     "and Fourier coefficients F0j'. Needs --balls (>= 5) only.",
 )
-@combined_options
 @output_options
 @library_errors
 def sweep(
-    bearing: str | None,
-    balls: int | None,
-    load: float | None,
-    stiffness: str | None,
-    clearance: Any,
-    clearance_pick: str,
-    ball_diameter: float | None,
-    pitch_diameter: float | None,
-    inner_conformity: float | None,
-    outer_conformity: float | None,
-    modulus: float | None,
-    poisson: float | None,
-    exponent: float,
+    case: CaseOptions,
     steps: int,
     plot: str | None,
     kurochkin_t: float | None,
     fmt: str,
     output: str | None,
-    **combined: Any,
 ) -> None:
     """Turn the cage one ball pitch: ring position, Q_max and stiffness at every cage angle.
 
@@ -115,17 +61,19 @@ def sweep(
     pitch, and every compensating clearance: the G_r at which the ring sits at the same x with a
     ball under the load and with the load between two balls.
 
-    The bearing and condition options are those of 'bearingload solve'. csv: one row per cage
-    angle with the inputs as columns; json: rows, a summary and units.
+    The bearing and condition options are those of 'bearingload solve' (the cage angle is what
+    turns). csv: one row per cage angle with the inputs as columns; json: rows, a summary and
+    units.
 
-    With --axial-load, --moment, --misalignment, --dynamic-rating or --rotating (a deep-groove
-    ball bearing: a catalogue designation, or --balls with --ball-diameter and --pitch-diameter)
-    every cage position is solved by the 3-D ring equilibrium of 'solve' (ISO/TS 16281), all in
-    one vectorised call: per position x, y, the axial displacement (from the centred rings, half
-    the axial play included), the tilts (the ring is free to tilt unless a moment or a
-    misalignment is given), Q_max and its ball, the loaded balls, the largest contact angle and
-    the reference rating life L10r of the rotating ring (default inner); beside them ISO 281's
-    (C_r/P)^3, the same at every position. Not for roller bearings or --kurochkin-T.
+    With --axial-load, --moment, --moment-cross, --misalignment, --dynamic-rating or --rotating
+    (a deep-groove ball bearing: a catalogue designation, or --balls with --ball-diameter and
+    --pitch-diameter) every cage position is solved by the 3-D ring equilibrium of 'solve'
+    (ISO/TS 16281), all in one vectorised call: per position x, y, the axial displacement (from
+    the centred rings, half the axial play included), the tilts about both axes (the ring is free
+    to tilt unless a moment or a misalignment is given; --tilt-radius sets the lever), Q_max and
+    its ball, the loaded balls, the largest contact angle and the reference rating life L10r of
+    the rotating ring (default inner); beside them ISO 281's (C_r/P)^3, the same at every
+    position. Not for roller bearings or --kurochkin-T.
 
     \b
     Examples:
@@ -143,82 +91,47 @@ def sweep(
       bearingload sweep -z 7 --ball-diameter 11.5 --pitch-diameter 43.5 -F 1kN -G 10um -C 23.4kN --rotating outer --misalignment 2mrad --format csv
       # a moment of 5 N m in the load plane, json for a script
       bearingload sweep 6205 -F 1kN -A 300N --moment 5Nm --format json
+      # a moment of 2 N m about the load line, the tilt at the pitch radius as MASTA
+      bearingload sweep 6205 -F 1kN -A 300N --moment-cross 2Nm --tilt-radius pitch --steps 9
     """
     if kurochkin_t is not None:
-        given = dict(bearing=bearing, load=load, stiffness=stiffness, clearance=clearance,
-                     plot=plot, ball_diameter=ball_diameter, pitch_diameter=pitch_diameter,
-                     inner_conformity=inner_conformity, outer_conformity=outer_conformity,
-                     modulus=modulus, poisson=poisson)  # fmt: skip
-        given |= {k: combined.get(k) for k in COMBINED_PARAMS}
-        _kurochkin(balls, kurochkin_t, steps, exponent, given, fmt, output)
+        _kurochkin(case, kurochkin_t, steps, plot, fmt, output)
         return
-    if load is None:
+    if case.load is None:
         raise click.UsageError("Missing option '--load' / '-F' (or give --kurochkin-T).")
+    refuse_range(case, "sweep")
     if plot is not None:
         check_plot(plot)
-    if wants_combined(combined) or lives_given(combined):  # only this sweep gives the lives
-        geometry = dict(balls=balls, ball_diameter=ball_diameter, pitch_diameter=pitch_diameter,
-                        f_i=inner_conformity, f_o=outer_conformity, modulus=modulus,
-                        poisson=poisson)  # fmt: skip
-        _combined(bearing, load, stiffness, clearance, clearance_pick, exponent, geometry,
-                  combined, steps, plot, fmt, output)  # fmt: skip
+    if case.wants_combined or case.lives_given:  # only this sweep gives the lives
+        _combined(case, steps, plot, fmt, output)
         return
-    z, k, g_r, m, context = resolve_case(
-        bearing,
-        balls,
-        stiffness,
-        clearance,
-        clearance_pick,
-        exponent,
-        dict(
-            ball_diameter=ball_diameter,
-            pitch_diameter=pitch_diameter,
-            f_i=inner_conformity,
-            f_o=outer_conformity,
-            modulus=modulus,
-            poisson=poisson,
-        ),
-    )
-    from bearingload.reports.sweep import sweep_report
+    refuse_tilt_radius(case)
+    z, k, g_r, m, context = resolve_case(case)
+    from bearingload.reports.sweep import sweep_report, sweep_warnings
     from bearingload.studies.sweep import sweep as run_sweep
 
-    result = run_sweep(z, load, k, g_r, m, steps)
+    result = run_sweep(z, case.radial_load, k, g_r, m, steps)
     text = sweep_report(result, fmt, context)
-    from bearingload.reports.sweep import sweep_warnings
-
     for warning in sweep_warnings(result):
         click.echo(f"Warning: {warning}", err=True)
     if plot is not None:
         from bearingload.reports.plots import sweep_figure
 
-        save_plot(lambda: sweep_figure(result, bearing), plot)
+        save_plot(lambda: sweep_figure(result, case.bearing), plot)
     emit(text, output)
 
 
 def _combined(
-    bearing: str | None,
-    load: float,
-    stiffness: str | None,
-    clearance: Any,
-    clearance_pick: str,
-    exponent: float,
-    geometry: dict[str, Any],
-    combined: dict[str, Any],
-    steps: int,
-    plot: str | None,
-    fmt: str,
-    output: str | None,
+    case: CaseOptions, steps: int, plot: str | None, fmt: str, output: str | None
 ) -> None:
     """The sweep under a combined load: one vectorised 3-D solve over the pitch, then emit."""
     from bearingload.cli.cases import bearing_context, resolve_bearings
-    from bearingload.cli.combined_options import combined_inputs
-    from bearingload.cli.options import print_warnings, stiffness_value
+    from bearingload.cli.options import print_warnings
     from bearingload.reports.combined_sweep import combined_sweep_report
     from bearingload.studies.combined_sweep import combined_sweep
 
-    k_given = stiffness_value(stiffness, exponent, bearing)
-    b = resolve_bearings(bearing, k_given, clearance, clearance_pick, exponent, **geometry)[0]
-    result = combined_sweep(b, load, steps=steps, **combined_inputs(combined))
+    b = resolve_bearings(case, case.stiffness_value())[0]
+    result = combined_sweep(b, case.radial_load, steps=steps, **case.combined_arguments())
     text = combined_sweep_report(result, fmt, bearing_context(b))
     print_warnings(list(result.warnings), False)
     if plot is not None:
@@ -229,25 +142,21 @@ def _combined(
 
 
 def _kurochkin(
-    balls: int | None,
-    t: float,
-    steps: int,
-    exponent: float,
-    given: dict[str, Any],
-    fmt: str,
-    output: str | None,
+    case: CaseOptions, t: float, steps: int, plot: str | None, fmt: str, output: str | None
 ) -> None:
     """The dimensionless mode: refuse the options it does not use, then sweep and emit."""
-    extra = [k for k, v in given.items() if v is not None]
+    extra = [
+        n for n in KUROCHKIN_REFUSES if (plot if n == "plot" else getattr(case, n)) is not None
+    ]
     if extra:
         name = extra[0].replace("_", "-")
         option = "BEARING" if name == "bearing" else f"--{name}"
         raise click.UsageError(f"{option} cannot be used with --kurochkin-T (P = K = 1).")
-    if balls is None:
+    if case.balls is None:
         raise click.UsageError("--kurochkin-T needs --balls.")
-    if exponent != 1.5:
+    if case.exponent_or(1.5) != 1.5:
         raise click.UsageError("--kurochkin-T is for balls: --exponent must be 3/2.")
     from bearingload.reports.kurochkin import kurochkin_report
     from bearingload.studies.kurochkin import kurochkin_sweep
 
-    emit(kurochkin_report(kurochkin_sweep(balls, t, steps), fmt), output)
+    emit(kurochkin_report(kurochkin_sweep(case.balls, t, steps), fmt), output)

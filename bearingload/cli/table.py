@@ -7,26 +7,9 @@ from typing import Any
 
 import click
 
-from bearingload.cli.bearing_options import (
-    CLEARANCE_HELP,
-    Clearance,
-    ClearanceList,
-    geometry_options,
-)
-from bearingload.cli.combined_options import combined_options, refuse_combined
-from bearingload.cli.options import (
-    CONTEXT,
-    Quantity,
-    cage_angle_option,
-    emit,
-    exponent_option,
-    library_errors,
-    maker_option,
-    method_option,
-    output_options,
-    stiffness_value,
-    units_help,
-)
+from bearingload.cli.case_options import COMBINED_PARAMS, CaseOptions, Clearance, case_options
+from bearingload.cli.cases import refuse_range
+from bearingload.cli.options import CONTEXT, emit, library_errors, method_option, output_options
 from bearingload.errors import InputError
 
 TABLES = ("k", "kq", "life")
@@ -38,8 +21,29 @@ RADIAL_ONLY = (
 )
 
 
+class ClearanceList(click.ParamType):
+    """Comma-separated clearance lengths (bare number: mm), each read as ``--clearance`` reads a
+    length."""
+
+    name = "G1,G2,..."
+
+    def convert(self, value: Any, param: click.Parameter | None, ctx: click.Context | None) -> Any:
+        from bearingload.bearings.clearance import clearance_length
+
+        if isinstance(value, list):
+            return value
+        out = []
+        for item in str(value).split(","):
+            spec = Clearance().convert(item.strip(), param, ctx)
+            if spec is None or getattr(spec, "length", None) is None:
+                self.fail(f"{item.strip()!r} is not a length (classes are not rows)", param, ctx)
+            out.append(clearance_length(spec))
+        return out
+
+
 @click.command(context_settings=CONTEXT)
 @click.argument("name", type=click.Choice(TABLES))
+@case_options(bearing="option", defaults={"load": "1000"})
 @click.option(
     "--z-max",
     type=click.IntRange(1, 1000),
@@ -48,83 +52,26 @@ RADIAL_ONLY = (
     help="Largest z (k, kq).",
 )
 @click.option(
-    "--load",
-    "-F",
-    type=Quantity("force"),
-    default="1000",
-    show_default=True,
-    help="Radial load F_r (k, kq: matters only with clearance; life: required, >= 0 with an "
-    f"axial load or a moment). Units: {units_help('force')} (bare number: N).",
-)
-@click.option(
-    "--bearing",
-    "-b",
-    help="Catalogue designation (306, 6306): K is the exact Hertz stiffness of its ball and "
-    "raceways, a clearance class is resolved by its bore.",
-)
-@click.option(
-    "--stiffness",
-    "-K",
-    type=Quantity("stiffness"),
-    help="Ball stiffness K (matters only with clearance); default 1e5 N/mm^1.5, or the Hertz "
-    "value of --bearing. Bare number: N/mm^1.5.",
-)
-@click.option("--clearance", "-G", type=Clearance(), help=CLEARANCE_HELP + " Default: 0.")
-@click.option(
-    "--clearance-pick",
-    type=click.Choice(["min", "mean", "max"]),
-    default="mean",
-    show_default=True,
-    help="Where in a clearance class to take G_r.",
-)
-@click.option(
-    "--balls",
-    "-z",
-    type=int,
-    help="life: number of balls z of a ball set given by hand (with --ball-diameter, "
-    "--pitch-diameter and --dynamic-rating), or an override of --bearing's.",
-)
-@click.option(
     "--clearances",
     type=ClearanceList(),
     help="life: the rows' clearances G_r, comma-separated lengths (bare number: mm; negative = "
     "preload), e.g. '-10um,0,10um,30um'. Default: -20 to 80 µm at a 25 mm bore, scaled by the "
     "bore's ISO 5753-1 C5 maximum.",
 )
-@geometry_options
-@combined_options
-@cage_angle_option
-@exponent_option
 @method_option(
     "The model the table is computed with (see 'bearingload solve --help'); all: one table "
     "comparing every method with its error against the exact answer."
 )
-@maker_option
 @output_options
 @library_errors
 def table(
     name: str,
+    case: CaseOptions,
     z_max: int,
-    load: float,
-    bearing: str | None,
-    stiffness: str | None,
-    clearance: Any,
-    clearance_pick: str,
-    ball_diameter: float | None,
-    pitch_diameter: float | None,
-    inner_conformity: float | None,
-    outer_conformity: float | None,
-    modulus: float | None,
-    poisson: float | None,
-    cage_angle: Any,
-    exponent: float,
+    clearances: list[float] | None,
     method: str,
-    maker: str | None,
     fmt: str,
     output: str | None,
-    balls: int | None,
-    clearances: list[float] | None,
-    **combined: Any,
 ) -> None:
     """Print a design table for z = 1..z-max balls, or a bearing's life against its clearance.
 
@@ -139,8 +86,8 @@ def table(
     'sweep'.
 
     life: one deep-groove ball bearing (--bearing, or --balls, --ball-diameter,
-    --pitch-diameter and --dynamic-rating) under --load and optionally --axial-load, --moment or
-    --misalignment, the ring named by --rotating turning (default inner): per clearance G_r
+    --pitch-diameter and --dynamic-rating) under --load and optionally --axial-load, --moment,
+    --moment-cross or --misalignment (--tilt-radius: the lever of the tilt), the ring named by --rotating turning (default inner): per clearance G_r
     (--clearances, default from preload to large play scaled to the bearing) the free contact
     angle, loaded balls, Q_max, L10r and L10r relative to G_r = 0, and ISO 281's (C_r/P)^3
     beside it, which does not see the clearance (Oswald, Zaretsky & Poplawski, NASA
@@ -165,35 +112,31 @@ def table(
     from bearingload.reports.render import render
     from bearingload.reports.tables import design_table
 
-    k_given = stiffness_value(stiffness, exponent, bearing)  # N/mm^m
-    geometry: dict[str, Any] = dict(ball_diameter=ball_diameter, pitch_diameter=pitch_diameter,
-                    f_i=inner_conformity, f_o=outer_conformity, modulus=modulus, poisson=poisson)  # fmt: skip
+    k_given = case.stiffness_value()  # N/mm^m
+    refuse_range(case, f"table {name}")
     if name == "life":
         refused = {
             "--z-max": (_given("z_max"), "it is one bearing, not a table over z"),
             "--method": (_given("method"), "the life comes from the exact 3-D model only"),
-            "--clearance": (clearance is not None, "its rows are clearances (--clearances)"),
+            "--clearance": (case.clearance is not None, "its rows are clearances (--clearances)"),
         }
         for option, (given, why) in refused.items():
             if given:
                 raise click.UsageError(f"{option} cannot be used with table life: {why}")
-        if not _given("load"):
+        if "load" not in case.given:
             raise click.UsageError("Missing option '--load' / '-F': table life needs F_r (N)")
-        geometry |= {"balls": balls, "maker": maker}
-        _life(bearing, load, k_given, clearance_pick, exponent, geometry, clearances,
-              cage_angle, combined, fmt, output)  # fmt: skip
+        _life(case, k_given, clearances, fmt, output)
         return
-    refuse_combined(combined, f"table {name}", RADIAL_ONLY)
-    for option, value in (("--balls", balls), ("--clearances", clearances)):
+    case.refuse(COMBINED_PARAMS, f"table {name}", RADIAL_ONLY)
+    for option, value in (("--balls", case.balls), ("--clearances", clearances)):
         if value is not None:
             raise click.UsageError(
                 f"{option} cannot be used with table {name}: it is an option of table life "
                 "(table k and kq run over z = 1..--z-max at one clearance)"
             )
-    if bearing is not None:
-        cond = _bearing_conditions(bearing, load, k_given, clearance, clearance_pick, cage_angle,
-                                   exponent, dict(geometry, maker=maker))  # fmt: skip
-    elif any(v is not None for v in geometry.values()):
+    if case.bearing is not None:
+        cond = _bearing_conditions(case, k_given)
+    elif not case.by_hand or any(getattr(case, n) is not None for n in _GEOMETRY):
         raise click.UsageError(
             "the geometry and material options (--ball-diameter ... --poisson) need --bearing"
         )
@@ -202,43 +145,33 @@ def table(
         from bearingload.cli.cases import refuse_unused
         from bearingload.studies.tables import Conditions
 
-        refuse_unused({}, "--bearing (a class is a catalogue bearing's); without one")
+        refuse_unused(case, ("maker",), "--bearing (a class and a maker's ball set are a "
+                      "catalogue bearing's); without one")  # fmt: skip
         k = 1e5 if k_given is None else k_given
-        cond = Conditions(load, k, clearance_length(clearance), cage_angle, exponent)
+        cond = Conditions(case.radial_load, k, clearance_length(case.clearance), case.cage_angle,
+                          case.exponent_or(1.5))  # fmt: skip
     emit(render([design_table(name, z_max, cond, method)], fmt), output)
 
 
-def _bearing_conditions(
-    bearing: str,
-    load: float,
-    k_given: float | None,
-    clearance: Any,
-    clearance_pick: str,
-    cage_angle: Any,
-    exponent: float,
-    geometry: dict[str, Any],
-) -> Any:
+#: The ball geometry and material options, which only a catalogue bearing's table takes.
+_GEOMETRY = ("inner_conformity", "outer_conformity", "modulus", "poisson")
+
+
+def _bearing_conditions(case: CaseOptions, k_given: float | None) -> Any:
     """The conditions of a catalogue bearing's ball and raceways (Hertz K, its clearance)."""
-    from bearingload.bearings.resolve import resolve_bearing
+    from bearingload.bearings.resolve import check_exponent
+    from bearingload.cli.cases import resolve_bearings
     from bearingload.studies.tables import for_bearing
 
-    if exponent != 1.5:
-        raise click.UsageError(
-            "Invalid value for '--exponent': a ball bearing (Hertz point contact) has m = 1.5"
-        )
-    resolved = resolve_bearing(
-        bearing,
-        stiffness=k_given,
-        clearance=clearance if clearance is not None else 0.0,
-        clearance_pick=clearance_pick,
-        **geometry,
-    )
+    clearance = case.clearance if case.clearance is not None else 0.0
+    resolved = resolve_bearings(case, k_given, clearance=clearance, exponent=None)[0]
     if resolved.kind != "ball":
         raise click.UsageError(
             "Invalid value for '--bearing': the tables take ball bearings; for a roller "
             "bearing use 'bearingload solve' or --exponent 10/9 with --stiffness"
         )
-    return for_bearing(resolved, load, cage_angle)
+    check_exponent(resolved, case.exponent)
+    return for_bearing(resolved, case.radial_load, case.cage_angle)
 
 
 def _given(param: str) -> bool:
@@ -248,38 +181,31 @@ def _given(param: str) -> bool:
 
 
 def _life(
-    bearing: str | None,
-    load: float,
+    case: CaseOptions,
     k_given: float | None,
-    clearance_pick: str,
-    exponent: float,
-    geometry: dict[str, Any],
     clearances: list[float] | None,
-    cage_angle: Any,
-    combined: dict[str, Any],
     fmt: str,
     output: str | None,
 ) -> None:
     """``table life``: resolve the bearing as solve does, solve every clearance, emit."""
     from bearingload.cli.cases import resolve_bearings
-    from bearingload.cli.combined_options import combined_inputs
-    from bearingload.cli.options import cage_angle_deg, print_warnings
+    from bearingload.cli.options import print_warnings
     from bearingload.reports.life_clearance import life_report
     from bearingload.studies.life_clearance import life_against_clearance
 
-    if bearing is None and geometry["ball_diameter"] is None:
+    if case.bearing is None and case.ball_diameter is None:
         raise click.UsageError(
             "table life needs a bearing: --bearing, or --balls, --ball-diameter, "
             "--pitch-diameter and --dynamic-rating"
         )
-    b = resolve_bearings(bearing, k_given, None, clearance_pick, exponent, **geometry)[0]
+    b = resolve_bearings(case, k_given)[0]
     try:
         result = life_against_clearance(
             b,
-            load,
+            case.radial_load,
             clearances=clearances,
-            cage_angle=cage_angle_deg(cage_angle, b.balls),
-            **combined_inputs(combined),
+            cage_angle=case.cage_angle_deg(b.balls),
+            **case.combined_arguments(),
         )
     except InputError as exc:
         if exc.parameter != "clearance":

@@ -32,12 +32,18 @@ _BEARING_ONLY = (
 )
 
 
+#: Columns of a combined-load file written only when the file has them (as solve writes them
+#: only when given).
+_COMBINED_IF_GIVEN = ("moment_cross", "tilt_radius")
+
+
 def batch_columns(header: Header) -> list[Column]:
     """The output columns for a file with ``header``."""
     if header.combined:  # the columns of solve's csv with an axial load, every one
         from bearingload.studies.batch_combined import COMBINED_KEYS
 
-        return [column(k, 1.5) for k in ("row", *COMBINED_KEYS)]
+        given = [k for k in COMBINED_KEYS if k not in _COMBINED_IF_GIVEN or k in header.names]
+        return [column(k, 1.5) for k in ("row", *given)]
     keys = ["row", *INPUT_KEYS, *(k for k in ANSWER_KEYS if k != "relative_error"), "valid"]
     keys = [k for k in keys if k not in SOLVE_ONLY_KEYS]
     if not header.has_bearing:

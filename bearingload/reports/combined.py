@@ -30,7 +30,9 @@ INPUT_KEYS = (
     "load",
     "axial_load",
     "moment",
+    "moment_cross",
     "misalignment_deg",
+    "tilt_radius",
     "rotating",
     "stiffness",
     "clearance",
@@ -53,6 +55,7 @@ ANSWER_KEYS = (
     "tilt_deg",
     "tilt_cross_deg",
     "moment",
+    "moment_cross",
     "reference_rating_life",
     "dynamic_rating",
     "equivalent_load",
@@ -84,10 +87,17 @@ STATIC_NOTE = (
 
 
 def tilt_text(inputs: dict[str, Any]) -> str:
-    """', imposed misalignment 0.05°' or ', M = 2000 N mm' (or nothing) for a title."""
-    if "misalignment_deg" in inputs:
-        return f", imposed misalignment {inputs['misalignment_deg']:.6g}°"
-    return f", M = {inputs['moment']:.6g} N mm" if inputs["moment"] else ""
+    """', imposed misalignment 0.05°' or ', M = 2000 N mm' (or nothing), then the moment about
+    the load line and the lever of the tilt where given, for a title."""
+    if inputs.get("misalignment_deg") is not None:
+        text = f", imposed misalignment {inputs['misalignment_deg']:.6g}°"
+    else:
+        text = f", M = {inputs['moment']:.6g} N mm" if inputs["moment"] else ""
+    if inputs.get("moment_cross") is not None:
+        text += f", M_cross = {inputs['moment_cross']:.6g} N mm"
+    if inputs.get("tilt_radius") is not None:
+        text += f", tilt lever {inputs['tilt_radius']:.6g} mm"
+    return text
 
 
 def combined_report(
@@ -118,7 +128,7 @@ def _blank(record: dict[str, Any], keys: Sequence[str]) -> dict[str, Any]:
 
 
 def _case_table(records: Sequence[dict[str, Any]]) -> Table:
-    keys = _present(records, INPUT_KEYS + tuple(k for k in ANSWER_KEYS if k != "moment"))
+    keys = _present(records, tuple(dict.fromkeys(INPUT_KEYS + ANSWER_KEYS)))
     return Table("cases", [column(k, 1.5) for k in keys], [_blank(r, keys) for r in records])
 
 
@@ -162,9 +172,10 @@ def _title(records: Sequence[dict[str, Any]]) -> str:
         if len({x["clearance"] for x in records}) == 1
         else "G_r: class range"
     )
+    lever = f", tilt lever {r['tilt_radius']:.6g} mm" if r.get("tilt_radius") is not None else ""
     return (
         f"{who}z = {r['balls']}, F_r = {r['load']:.6g} N, F_a = {r['axial_load']:.6g} N, "
-        f"{clear}, cage angle {r['cage_angle_deg']:.6g}°, {r['rotating']} ring rotating"
+        f"{clear}, cage angle {r['cage_angle_deg']:.6g}°, {r['rotating']} ring rotating{lever}"
     )
 
 

@@ -57,7 +57,8 @@ def combined_sweep_report(s: CombinedSweep, fmt: str, context: str = "") -> str:
 
 
 def inputs(s: CombinedSweep) -> dict[str, Any]:
-    """The sweep's inputs under their quantity keys (a moment only where it is one)."""
+    """The sweep's inputs under their quantity keys (a moment only where it is one; the moment
+    about the load line and the lever of the tilt where given)."""
     b, r = s.bearing, s.result
     out: dict[str, Any] = {
         "bearing": b.designation or "given by hand",
@@ -67,8 +68,12 @@ def inputs(s: CombinedSweep) -> dict[str, Any]:
     }
     if s.misalignment is None:
         out["moment"] = float(r.moment[0])
-    else:
+    if s.moment_cross is not None:
+        out["moment_cross"] = float(s.moment_cross)
+    if s.misalignment is not None:
         out["misalignment_deg"] = float(s.misalignment)
+    if s.tilt_radius is not None:
+        out["tilt_radius"] = float(s.tilt_radius)
     return out | {
         "rotating": s.rotating,
         "stiffness": float(b.stiffness),

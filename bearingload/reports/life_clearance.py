@@ -38,8 +38,8 @@ def life_report(t: LifeAgainstClearance, fmt: str) -> str:
 
 def _tilted(t: LifeAgainstClearance) -> bool:
     """True when the balls take contact angles beyond alpha_0's play (an axial load, a moment
-    or a misalignment): the largest contact angle is then a column."""
-    return bool(t.axial_load or t.moment or t.misalignment)
+    about either axis or a misalignment): the largest contact angle is then a column."""
+    return bool(t.axial_load or t.moment or t.moment_cross or t.misalignment)
 
 
 def _keys(t: LifeAgainstClearance) -> list[tuple[str, str]]:
@@ -61,6 +61,10 @@ def conditions(t: LifeAgainstClearance) -> dict[str, Any]:
         out["misalignment_deg"] = float(t.misalignment)
     else:
         out["moment"] = float(t.moment or 0.0)
+    if t.moment_cross is not None:
+        out["moment_cross"] = float(t.moment_cross)
+    if t.tilt_radius is not None:
+        out["tilt_radius"] = float(t.tilt_radius)
     return out | {
         "rotating": t.rotating,
         "cage_angle_deg": t.cage_angle,

@@ -131,7 +131,9 @@ QUANTITIES: dict[str, Quantity] = {
         # combined load of a deep-groove ball bearing (models.combined, bearings.iso16281)
         Quantity("axial_load", "axial load F_a", "N", also=("kgf", 1 / KGF)),
         Quantity("moment", "moment M in the load plane", "N mm"),
+        Quantity("moment_cross", "moment M_cross about the load line", "N mm"),
         Quantity("misalignment_deg", "imposed misalignment", "°", also=_MRAD),
+        Quantity("tilt_radius", "lever of the tilt (radius of the tilted groove centres)", "mm"),
         Quantity("rotating", "rotating ring", "", None),
         Quantity("free_contact_angle_deg", "free contact angle alpha_0", "°"),
         Quantity("axial_play", "axial play", "mm", display=_UM),

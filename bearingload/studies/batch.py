@@ -21,6 +21,7 @@ from typing import Any
 
 import numpy as np
 
+from bearingload.bearings.tilt import tilt_lever
 from bearingload.errors import BearingloadError, InputError
 from bearingload.studies.batch_input import (
     COLUMNS,
@@ -94,11 +95,13 @@ class BatchSolver:
                 raise InputError("dynamic_rating", "must be greater than 0 N")
             angle = v.get("cage_angle", 0.0)
             angle = 180.0 / b.balls if angle == "half" else angle
+            lever = tilt_lever(v.get("tilt_radius"), b.pitch_diameter)  # None: groove
         except BearingloadError as exc:
             errors[row] = row_message(exc)
             return None
         return {"row": row, "bearing": b, "load": v["load"],
                 "axial_load": v.get("axial_load", 0.0), "moment": v.get("moment"),
+                "moment_cross": v.get("moment_cross"), "tilt_radius": lever,
                 "misalignment": v.get("misalignment"), "rotating": v.get("rotating", "inner"),
                 "dynamic_rating": v.get("dynamic_rating"), "cage_angle": angle}  # fmt: skip
 

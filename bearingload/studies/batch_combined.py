@@ -25,8 +25,9 @@ from bearingload.studies.batch_input import row_message
 #: The output columns of a combined-load file (those of ``solve --format csv`` with an axial
 #: load), after the row number.
 COMBINED_KEYS = (
-    "bearing", "method", "balls", "load", "axial_load", "moment", "misalignment_deg",
-    "rotating", "stiffness", "clearance", "clearance_pick", "cage_angle_deg", "q_max",
+    "bearing", "method", "balls", "load", "axial_load", "moment", "moment_cross",
+    "misalignment_deg", "tilt_radius", "rotating", "stiffness", "clearance", "clearance_pick",
+    "cage_angle_deg", "q_max",
     "loaded_balls", "contact_angle_max_deg", "free_contact_angle_deg", "axial_play", "x", "y",
     "deflection_axial", "tilt_deg", "tilt_cross_deg", "reference_rating_life",
     "dynamic_rating", "equivalent_load", "rating_life",
@@ -46,7 +47,8 @@ def solve_combined_rows(rows: Sequence[dict[str, Any]], errors: dict[int, str]) 
     groups: dict[tuple[Any, ...], list[dict[str, Any]]] = {}
     for r in rows:
         key = (_same_balls(r["bearing"]), r["moment"] is None, r["misalignment"] is None,
-               r["rotating"], r["dynamic_rating"])  # fmt: skip
+               r["rotating"], r["dynamic_rating"], r["moment_cross"] is None,
+               r["tilt_radius"] is None)  # fmt: skip
         groups.setdefault(key, []).append(r)
     out: list[Part] = []
     for group in groups.values():  # memory bounded: at most CALL_BALLS ball contacts a call
@@ -103,8 +105,10 @@ def _group_values(group: list[dict[str, Any]]) -> Part:
 
         check_misalignment(float(np.max(np.abs(misalignment))))
     clearance = np.array([g["bearing"].clearance for g in group], dtype=float)
+    cross, lever = given("moment_cross"), given("tilt_radius")
     r = solve_on_bearing(b, load, axial, cage_angle=given("cage_angle"), moment=given("moment"),
-                         misalignment=misalignment, clearance=clearance)  # fmt: skip
+                         misalignment=misalignment, clearance=clearance, moment_cross=cross,
+                         tilt_radius=lever)  # fmt: skip
     c_r = first["dynamic_rating"] or b.C
     l10r = p_eq = life = None
     if c_r:
@@ -112,7 +116,9 @@ def _group_values(group: list[dict[str, Any]]) -> Part:
         p_eq, life = basic_lives(b, c_r, load, axial)
     n = len(group)
     cols = case_columns(b, r, misalignment, first["rotating"], None if not c_r else
-                        np.full(n, float(c_r)), p_eq, life, l10r)  # fmt: skip
+                        np.full(n, float(c_r)), p_eq, life, l10r, moment_cross=cross,
+                        tilt_radius=lever)  # fmt: skip
+    cols |= {k: cols.get(k) for k in ("moment_cross", "tilt_radius")}  # None: not given
     cols = {k: _over_rows(v, n) for k, v in cols.items()}
     life = cols["rating_life"]
     if isinstance(life, np.ndarray) and np.isnan(life).any():  # a moment alone: no L10
@@ -122,7 +128,8 @@ def _group_values(group: list[dict[str, Any]]) -> Part:
     q, loaded = cols["q_max"].tolist(), cols["loaded_balls"].tolist()
     cols["warnings"] = [
         combined_warnings(g["bearing"], g["load"], g["axial_load"], q[i], loaded[i],
-                          tilts[i] if g["moment"] is not None else g["misalignment"])
+                          tilts[i] if g["moment"] is not None or g["moment_cross"]
+                          else g["misalignment"])
         for i, g in enumerate(group)
     ]  # fmt: skip
     return [g["row"] for g in group], cols

@@ -40,12 +40,15 @@ COLUMNS: dict[str, str] = {
     "revolutions": "number",
     "axial_load": "force",
     "moment": "moment",
+    "moment_cross": "moment",
     "misalignment": "angle",
+    "tilt_radius": "tilt_radius",
     "dynamic_rating": "force",
     "rotating": "ring",
 }
 #: Columns that make every row of a file a combined-load case (3-D equilibrium, ISO/TS 16281).
-COMBINED_COLUMNS = ("axial_load", "moment", "misalignment", "dynamic_rating", "rotating")
+COMBINED_COLUMNS = ("axial_load", "moment", "moment_cross", "misalignment", "tilt_radius",
+                    "dynamic_rating", "rotating")  # fmt: skip
 #: Columns a combined-load file cannot have: its method is the 3-D equilibrium, and its life is
 #: L10r in 10^6 revolutions.
 NOT_COMBINED = ("method", "revolutions", "exponent")
@@ -134,7 +137,7 @@ def read_header(fields: list[str]) -> Header:
 
 def unit_kind(kind: str) -> str:
     """The units.py kind of a column kind: a clearance is a length, a cage angle an angle."""
-    return {"clearance": "length", "cage_angle": "angle"}.get(kind, kind)
+    return {"clearance": "length", "cage_angle": "angle", "tilt_radius": "length"}.get(kind, kind)
 
 
 def _check_combined(names: list[str]) -> None:
@@ -435,6 +438,11 @@ class CellParser:
             return _number(name, text, self.unit, whole=kind == "count")
         if kind == "exponent":
             return _exponent(text)
+        if kind == "tilt_radius":  # groove, pitch or a length, as --tilt-radius reads it
+            from bearingload.bearings.tilt import parse_tilt_radius
+
+            unit = self.unit if self.unit and _plain(name, text) is not None else ""
+            return parse_tilt_radius(text + unit)
         if kind == "cage_angle":  # the one reading of solve, sweep and table
             plain = _plain(name, text)
             if plain is None:

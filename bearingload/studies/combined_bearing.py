@@ -1,8 +1,10 @@
 """A deep-groove ball bearing under a combined load: the 3-D ring equilibrium and the lives.
 
 The computation behind ``bearingload solve`` with ``--axial-load``, ``--moment``,
-``--misalignment``, ``--dynamic-rating`` or ``--rotating``: one :class:`CombinedCase` per clearance
-(a class at its min, mean and max gives three). The report only prints it.
+``--moment-cross``, ``--misalignment``, ``--dynamic-rating`` or ``--rotating``: one
+:class:`CombinedCase` per clearance (a class at its min, mean and max gives three). The report
+only prints it. The lever of the tilt (``groove``, ``pitch`` or a length) is read by
+:mod:`bearingload.bearings.tilt`.
 
 Lives: ISO/TS 16281:2008 reference rating life L10r from the ball loads
 (:mod:`bearingload.bearings.iso16281`), and ISO 281:2007's basic rating life (C_r/P)^3 with
@@ -47,6 +49,8 @@ class CombinedCase:
     p_max_outer: float | None = None  # [MPa]
     static_equivalent_load: float | None = None  # P0, ISO 76 [N]
     static_safety: float | None = None  # s0 = C0/P0 [-]
+    moment_cross: float | None = None  # applied, about the load line; None: not given [N mm]
+    tilt_radius: float | None = None  # lever of the tilt given; None: R_i (groove) [mm]
 
 
 def solve_combined_bearing(
@@ -59,8 +63,10 @@ def solve_combined_bearing(
     misalignment: float | None = None,
     rotating: str = "inner",
     dynamic_rating: float | None = None,
+    moment_cross: float | None = None,
+    tilt_radius: str | float | None = None,
 ) -> list[CombinedCase]:
-    """Solve each resolved bearing (one per clearance) under F_r, F_a and a moment.
+    """Solve each resolved bearing (one per clearance) under F_r, F_a and the moments.
 
     Parameters
     ----------
@@ -78,6 +84,10 @@ def solve_combined_bearing(
         Ring rotating relative to the load (for L10r).
     dynamic_rating : float, optional
         C_r replacing the catalogue's. [N]
+    moment_cross : float, optional
+        Moment about the load line (MASTA's M_x); None: not given (0). [N mm]
+    tilt_radius : {"groove", "pitch"} or float, optional
+        Lever of the tilt, see :mod:`bearingload.bearings.tilt`; None: groove. [mm]
 
     Raises
     ------
@@ -90,23 +100,39 @@ def solve_combined_bearing(
         static_equivalent_load,
         static_safety,
     )
+    from bearingload.bearings.tilt import tilt_lever
 
     out = []
     for b in bearings:
+        lever = tilt_lever(tilt_radius, b.pitch_diameter)
         r = solve_on_bearing(b, load, axial_load, cage_angle=cage_angle, moment=moment,
-                             misalignment=misalignment)  # fmt: skip
+                             misalignment=misalignment, moment_cross=moment_cross,
+                             tilt_radius=lever)  # fmt: skip
         l10r, p_eq, life, c_r = life_figures(b, r, rotating, dynamic_rating)
         pressures = max_contact_pressures(b, r.ball_loads, r.contact_angles)
         p0 = static_equivalent_load(load, axial_load)
-        tilt = float(np.max(ring_tilt(r)))
         found = combined_warnings(b, load, axial_load, float(r.q_max), int(r.loaded_balls),
-                                  tilt if moment is not None else misalignment,
+                                  warned_tilt(r, moment, moment_cross, misalignment),
                                   pressures)  # fmt: skip
         p_i, p_o = pressures if pressures is not None else (None, None)
         out.append(CombinedCase(b, r, misalignment, rotating, c_r, p_eq, life,
                                 None if l10r is None else float(l10r), tuple(found), p_i, p_o,
-                                p0, static_safety(b.C0, p0)))  # fmt: skip
+                                p0, static_safety(b.C0, p0), moment_cross, lever))  # fmt: skip
     return out
+
+
+def warned_tilt(
+    r: CombinedDistribution,
+    moment: float | None,
+    moment_cross: float | None,
+    misalignment: float | None,
+) -> float | None:
+    """The tilt the checks weigh (:func:`bearingload.bearings.checks.combined_warnings`): the
+    largest tilt of the ring where a moment tilts it, the misalignment imposed alone, else
+    None (a ring free to tilt under no moment). [°]"""
+    if moment is not None or moment_cross:
+        return float(np.max(ring_tilt(r)))
+    return misalignment
 
 
 def check_misalignment(misalignment: float | None) -> None:
@@ -134,6 +160,8 @@ def solve_on_bearing(
     moment: float | None = None,
     misalignment: float | None = None,
     clearance: Any = None,
+    moment_cross: Any = None,
+    tilt_radius: float | None = None,
 ) -> CombinedDistribution:
     """The 3-D ring equilibrium of one resolved ball bearing, at one or many cage angles (or
     clearances).
@@ -154,13 +182,19 @@ def solve_on_bearing(
     clearance : float or array_like, optional
         Radial internal clearance G_r instead of the bearing's (an array solves every one in
         the same vectorised call). [mm]
+    moment_cross : float or array_like, optional
+        Moment about the load line (MASTA's M_x); None: 0. [N mm]
+    tilt_radius : float, optional
+        Lever of the tilt (:func:`bearingload.bearings.tilt.tilt_lever`); None: the solver's
+        R_i. [mm]
 
     Raises
     ------
     InputError
         ``misalignment`` beyond the limit, ``ball_diameter`` when the geometry is unknown (a
-        roller bearing, or a ball set given by its stiffness), ``moment`` when it tilts the ring
-        beyond the limit at any cage angle; the solver's own errors.
+        roller bearing, or a ball set given by its stiffness), ``moment``, ``moment_cross`` or
+        (a free ring) ``tilt_radius`` when it tilts the ring beyond the limit at any cage angle;
+        the solver's own errors.
     """
     from bearingload.models.combined import solve_combined
 
@@ -192,11 +226,19 @@ def solve_on_bearing(
         modulus=b.modulus,
         poisson=b.poisson,
         stiffness=b.stiffness if b.stiffness_given else None,
+        tilt_radius=tilt_radius,
+        moment_cross=0.0 if moment_cross is None else moment_cross,
     )
     tilt = float(np.max(ring_tilt(r)))
-    if moment is not None and misalignment is None and tilt > MISALIGNMENT_MAX:
+    cross = moment_cross is not None and bool(np.any(np.asarray(moment_cross) != 0))
+    tilted = "moment" if moment is not None and misalignment is None else None
+    if tilted is None and cross:
+        tilted = "moment_cross"
+    if tilted is None and tilt_radius is not None and misalignment is None:
+        tilted = "tilt_radius"  # a free ring: a short lever alone can tilt it beyond the model
+    if tilted is not None and tilt > MISALIGNMENT_MAX:
         raise InputError(
-            "moment",
+            tilted,
             f"tilts the inner ring by {tilt:.3g}°, beyond ±{MISALIGNMENT_MAX:g}°: the balls "
             "would ride over the groove shoulders, which the model does not describe",
         )
@@ -258,6 +300,7 @@ def combined_values(c: CombinedCase) -> dict[str, Any]:
     columns = case_columns(
         c.bearing, c.result, c.misalignment, c.rotating, c.dynamic_rating,
         c.equivalent_load, c.rating_life, c.reference_rating_life,
+        moment_cross=c.moment_cross, tilt_radius=c.tilt_radius,
     )  # fmt: skip
     values = {k: v if v is None or isinstance(v, str) else v.reshape(-1)[0].item()
               for k, v in columns.items()}  # fmt: skip
@@ -278,14 +321,20 @@ def case_columns(
     equivalent_load: Any,
     rating_life: Any,
     reference_rating_life: Any,
+    *,
+    moment_cross: Any = None,
+    tilt_radius: Any = None,
 ) -> dict[str, Any]:
     """Every quantity of the cases of ``r`` (one bearing) under its key of
     :mod:`bearingload.reports.quantities`: a numpy array over the cases, text, or None where a
-    quantity is not given (no misalignment imposed, C_r unknown, no catalogue C0r and f0)."""
+    quantity is not given (no misalignment imposed, C_r unknown, no catalogue C0r and f0); the
+    applied ``moment_cross`` [N mm] and the lever ``tilt_radius`` [mm] only where given."""
 
     def arr(value: Any, dtype: Any = float) -> Any:
         return None if value is None else np.atleast_1d(np.asarray(value, dtype=dtype))
 
+    cross = {} if moment_cross is None else {"moment_cross": arr(moment_cross)}
+    lever = {} if tilt_radius is None else {"tilt_radius": arr(tilt_radius)}
     return {
         "bearing": b.designation or "given by hand",
         "method": "combined",
@@ -293,7 +342,9 @@ def case_columns(
         "load": arr(r.radial_load),
         "axial_load": arr(r.axial_load),
         "moment": arr(r.moment),
+        **cross,
         "misalignment_deg": arr(misalignment),
+        **lever,
         "rotating": rotating,
         "stiffness": arr(b.stiffness),
         "clearance": arr(r.clearance),

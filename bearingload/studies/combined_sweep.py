@@ -72,6 +72,10 @@ class CombinedSweep:
         Contact angle of largest size among the loaded balls, with its sign. [°]
     warnings : tuple of str
         The checks of ``solve`` over the pitch (heaviest load, fewest loaded balls).
+    moment_cross : float or None
+        The moment applied about the load line; None: not given. [N mm]
+    tilt_radius : float or None
+        The lever of the tilt given; None: the solver's R_i (``groove``). [mm]
     """
 
     bearing: ResolvedBearing
@@ -85,6 +89,8 @@ class CombinedSweep:
     q_max_ball: np.ndarray
     contact_angle_max: np.ndarray
     warnings: tuple[str, ...] = ()
+    moment_cross: float | None = None
+    tilt_radius: float | None = None
 
     @property
     def balls(self) -> int:
@@ -149,6 +155,8 @@ def combined_sweep(
     rotating: str = "inner",
     dynamic_rating: float | None = None,
     steps: Any = DEFAULT_STEPS,
+    moment_cross: float | None = None,
+    tilt_radius: str | float | None = None,
 ) -> CombinedSweep:
     """Solve a deep-groove ball bearing under a combined load at ``steps`` cage positions.
 
@@ -173,6 +181,10 @@ def combined_sweep(
         C_r replacing the catalogue's (needed for the lives of a hand-given ball set). [N]
     steps : int, default 37
         Cage positions over the pitch, both ends included, 2 to 1 000 000. [-]
+    moment_cross : float, optional
+        Moment about the load line (MASTA's M_x); None: not given (0). [N mm]
+    tilt_radius : {"groove", "pitch"} or float, optional
+        Lever of the tilt, see :mod:`bearingload.bearings.tilt`; None: groove. [mm]
 
     Returns
     -------
@@ -194,15 +206,17 @@ def combined_sweep(
     True
     """
     from bearingload.bearings.checks import combined_warnings
+    from bearingload.bearings.tilt import tilt_lever
     from bearingload.studies.combined_bearing import (
         largest_loaded_angle,
         life_figures,
-        ring_tilt,
         solve_on_bearing,
+        warned_tilt,
     )
 
     angles = cage_angles(int(bearing.balls), steps)
     chunk = max(1, CHUNK_BALLS // int(bearing.balls))
+    lever = tilt_lever(tilt_radius, bearing.pitch_diameter)
     r = _joined(
         [
             solve_on_bearing(
@@ -212,6 +226,8 @@ def combined_sweep(
                 cage_angle=angles[i : i + chunk],
                 moment=moment,
                 misalignment=misalignment,
+                moment_cross=moment_cross,
+                tilt_radius=lever,
             )  # fmt: skip
             for i in range(0, angles.size, chunk)
         ]
@@ -220,7 +236,7 @@ def combined_sweep(
     loads = np.asarray(r.ball_loads)
     top = loads.max(axis=1, keepdims=True)
     heaviest = np.argmax(loads >= top * (1.0 - TIE), axis=1) + 1
-    tilt = float(np.max(ring_tilt(r))) if moment is not None else misalignment
+    tilt = warned_tilt(r, moment, moment_cross, misalignment)
     found = combined_warnings(bearing, load, axial_load, float(np.max(r.q_max)), 2, tilt)
     one = np.asarray(r.loaded_balls) == 1
     if one.any() and bearing.balls > 1:
@@ -241,6 +257,8 @@ def combined_sweep(
         q_max_ball=heaviest,
         contact_angle_max=np.asarray(largest_loaded_angle(r), dtype=float),
         warnings=tuple(found),
+        moment_cross=moment_cross,
+        tilt_radius=lever,
     )
 
 

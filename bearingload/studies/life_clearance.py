@@ -76,6 +76,9 @@ class LifeAgainstClearance:
         f0 that a hand-given ball set does not have.
     warnings : tuple of str
         The checks of ``solve`` (static safety, contact pressure, one loaded ball) over the rows.
+    moment_cross, tilt_radius : float or None
+        Moment applied about the load line [N mm] and the lever of the tilt [mm]; None: not
+        given (0, and the solver's R_i).
     """
 
     bearing: ResolvedBearing
@@ -96,6 +99,8 @@ class LifeAgainstClearance:
     equivalent_load: float | None
     rating_life: float | None
     warnings: tuple[str, ...] = ()
+    moment_cross: float | None = None
+    tilt_radius: float | None = None
 
 
 def default_clearances(bearing: ResolvedBearing) -> np.ndarray:
@@ -130,6 +135,8 @@ def life_against_clearance(
     misalignment: float | None = None,
     rotating: str = "inner",
     dynamic_rating: float | None = None,
+    moment_cross: float | None = None,
+    tilt_radius: str | float | None = None,
 ) -> LifeAgainstClearance:
     """The ISO/TS 16281 life of ``bearing`` at a list of clearances, in one vectorised solve.
 
@@ -149,6 +156,10 @@ def life_against_clearance(
         Ring rotating relative to the load (ISO/TS 16281, 4.3).
     dynamic_rating : float, optional
         C_r replacing the catalogue's; needed for a hand-given ball set. [N]
+    moment_cross, tilt_radius : optional
+        Moment about the load line [N mm] and the lever of the tilt
+        (:mod:`bearingload.bearings.tilt`), as :func:`bearingload.studies.combined_bearing.
+        solve_combined_bearing` takes them.
 
     Returns
     -------
@@ -171,11 +182,12 @@ def life_against_clearance(
     [1.116, 1.0, 0.766]
     """
     from bearingload.bearings.checks import combined_warnings
+    from bearingload.bearings.tilt import tilt_lever
     from bearingload.studies.combined_bearing import (
         largest_loaded_angle,
         life_figures,
-        ring_tilt,
         solve_on_bearing,
+        warned_tilt,
     )
 
     if not (dynamic_rating or bearing.C):
@@ -188,13 +200,15 @@ def life_against_clearance(
     if g.ndim != 1 or g.size == 0 or not np.all(np.isfinite(g)):
         raise InputError("clearance", "must be a non-empty list of finite lengths")
     with_zero = g if np.any(g == 0) else np.append(g, 0.0)
+    lever = tilt_lever(tilt_radius, bearing.pitch_diameter)
     r = solve_on_bearing(bearing, load, axial_load, cage_angle=cage_angle, moment=moment,
-                         misalignment=misalignment, clearance=with_zero)  # fmt: skip
+                         misalignment=misalignment, clearance=with_zero,
+                         moment_cross=moment_cross, tilt_radius=lever)  # fmt: skip
     l10r, p_eq, life, c_r = life_figures(bearing, r, rotating, dynamic_rating)
     assert l10r is not None and c_r is not None
     zero = float(l10r[int(np.flatnonzero(with_zero == 0)[0])])
     n = g.size
-    tilt = float(np.max(ring_tilt(r))) if moment is not None else misalignment
+    tilt = warned_tilt(r, moment, moment_cross, misalignment)
     found = combined_warnings(bearing, load, axial_load, float(np.max(r.q_max[:n])), 2, tilt)
     one = np.asarray(r.loaded_balls)[:n] == 1
     if one.any() and bearing.balls > 1:
@@ -222,6 +236,8 @@ def life_against_clearance(
         equivalent_load=p_eq,
         rating_life=life,
         warnings=tuple(found),
+        moment_cross=moment_cross,
+        tilt_radius=lever,
     )
 
 

@@ -1,0 +1,447 @@
+"""The case options of ``solve``, ``sweep`` and ``table``: declared once, read once.
+
+:func:`case_options` declares every option that describes the case (the bearing, its balls, the
+load, stiffness, clearance, geometry, material, cage angle, exponent and the combined load), each
+with its one help text; a command lists the few it does not take (``omit``). Click's values are
+converted once into a :class:`CaseOptions`, which the command receives as its ``case`` argument
+and which converts itself into the library's arguments (:meth:`CaseOptions.bearing_arguments`,
+:meth:`CaseOptions.combined_arguments`). Every option answers for the library's names of its
+parameter (:class:`bearingload.cli.options.LibraryOption`), so a library error names the option
+the user typed.
+
+The LOAD options (:data:`LOAD_PARAMS`: axial load, moment, cross moment, misalignment) choose the
+3-D combined engine; ``--tilt-radius`` only sets its lever; ``--dynamic-rating`` and
+``--rotating`` (:data:`LIFE_PARAMS`) feed only the lives and never change a ball load.
+
+Imports nothing heavy: the command line reads it at start-up.
+"""
+
+from __future__ import annotations
+
+import functools
+from collections.abc import Callable, Collection, Mapping
+from dataclasses import dataclass, fields
+from typing import Any
+
+import click
+
+from bearingload.cli.options import (
+    CageAngle,
+    Exponent,
+    LibraryArgument,
+    LibraryOption,
+    Quantity,
+    units_help,
+    usage_error,
+)
+from bearingload.errors import InputError
+
+#: The load options: any of them given, the combined engine solves the case.
+LOAD_PARAMS = ("axial_load", "moment", "moment_cross", "misalignment")
+#: The options of the combined engine that are not loads: the lever of the tilt.
+TILT_PARAMS = ("tilt_radius",)
+#: The options that feed only the lives.
+LIFE_PARAMS = ("dynamic_rating", "rotating")
+#: The combined-load options, in the order a refusal names the first one given.
+COMBINED_PARAMS = LOAD_PARAMS + TILT_PARAMS + LIFE_PARAMS
+#: The options only a bearing or its ball geometry uses, refused for a ring given by z and K.
+BEARING_ONLY = ("inner_conformity", "outer_conformity", "modulus", "poisson", "maker",
+                "dynamic_rating", "rotating")  # fmt: skip
+
+CLEARANCE_HELP = (
+    "Radial internal clearance G_r, total play (gap per side G_r/2; negative = preload): a length "
+    "(bare number: mm; units um, mm, in) or an ISO 5753-1 class C2, CN, C3, C4, C5, resolved by "
+    "the bearing's bore (deep groove ball or cylindrical roller bearing table); GOST 24810 groups "
+    "are written G6, G7, G8, G9. A bare number of 1 mm or more is refused as implausible (20 -> "
+    "did you mean 20um?); write 1.5mm to mean it. Default: 0 without a bearing; with one, the "
+    "class its designation marks, else CN (an unmarked designation means the normal group); "
+    "table k and kq: 0, the papers' condition."
+)
+
+
+class Clearance(click.ParamType):
+    """A clearance length or class, read by :func:`bearingload.bearings.clearance.parse_clearance`."""
+
+    name = "LENGTH|CLASS"
+
+    def convert(self, value: Any, param: click.Parameter | None, ctx: click.Context | None) -> Any:
+        from bearingload.bearings.clearance import ClearanceSpec, parse_clearance
+
+        if isinstance(value, ClearanceSpec):
+            return value
+        try:
+            return parse_clearance(value)
+        except InputError as exc:
+            self.fail(str(exc).split(": ", 1)[-1], param, ctx)
+
+
+class TiltRadius(click.ParamType):
+    """``groove``, ``pitch`` or a length, read by :func:`bearingload.bearings.tilt.parse_tilt_radius`."""
+
+    name = "groove|pitch|LENGTH"
+
+    def convert(self, value: Any, param: click.Parameter | None, ctx: click.Context | None) -> Any:
+        from bearingload.bearings.tilt import parse_tilt_radius
+
+        try:
+            return parse_tilt_radius(value)
+        except InputError as exc:
+            self.fail(str(exc).split(": ", 1)[-1], param, ctx)
+
+
+def _option(*decls: str, **attrs: Any) -> tuple[tuple[str, ...], dict[str, Any]]:
+    return decls, attrs
+
+
+_FORCE, _MOMENT, _ANGLE = (units_help(k) for k in ("force", "moment", "angle"))
+MAKER_HELP = (
+    "Whose ball set the designation uses where makers differ: NSK (default), NTN, SKF, GMN, "
+    "GOST, or a published test-rig set (CWRU, PRONOSTIA, PADERBORN); 'bearingload catalog show "
+    "X' lists the makers of X."
+)
+
+#: Every case option: click parameter name -> (declarations, attributes), in help order;
+#: ``library``: the library's other names of the parameter (:class:`LibraryOption`).
+DECLARATIONS: dict[str, tuple[tuple[str, ...], dict[str, Any]]] = {
+    "balls": _option(
+        "--balls",
+        "-z",
+        type=int,
+        help="Number of balls z (1 to 100000; a sweep: 3 or more): required for a ring given "
+        "by hand, else it replaces the designation's.",
+    ),
+    "load": _option(
+        "--load",
+        "-F",
+        type=Quantity("force"),
+        library=("radial_load",),
+        help=f"Radial load F_r > 0 (>= 0 with an axial load or a moment). Units: {_FORCE} "
+        "(bare number: N).",
+    ),
+    "axial_load": _option(
+        "--axial-load",
+        "-A",
+        type=Quantity("force"),
+        help="Axial load F_a on the inner ring (deep-groove ball bearings; needs the ball "
+        f"geometry). Units: {_FORCE} (bare number: N).",
+    ),
+    "moment": _option(
+        "--moment",
+        type=Quantity("moment"),
+        help="Moment M tilting the inner ring in the plane of the radial load (about the "
+        "axis across the load line); default: the ring is free to tilt (M = 0). Units: "
+        f"{_MOMENT} (bare number: N mm).",
+    ),
+    "moment_cross": _option(
+        "--moment-cross",
+        type=Quantity("moment"),
+        help="Moment M_cross tilting the inner ring about the load line (MASTA's M_x); "
+        f"default 0. Units: {_MOMENT} (bare number: N mm).",
+    ),
+    "misalignment": _option(
+        "--misalignment",
+        type=Quantity("angle"),
+        help="Imposed tilt of the inner ring in the plane of the radial load, instead of "
+        f"--moment. Units: {_ANGLE} (bare number: degrees).",
+    ),
+    "tilt_radius": _option(
+        "--tilt-radius",
+        type=TiltRadius(),
+        help="Lever of the tilt: the radius at which a tilt moves the inner groove centres "
+        "axially, and the arm of the moments. 'groove' (default): R_i of the inner groove "
+        "curvature centres (ISO/TS 16281); 'pitch': d_m/2, the lever of MASTA's tilts; or a "
+        "length (bare number: mm).",
+    ),
+    "stiffness": _option(
+        "--stiffness",
+        "-K",
+        type=Quantity("stiffness"),
+        help="Ball stiffness K of both contacts in series, Q = K delta^m; required without a "
+        "bearing or the ball geometry (table k and kq: default 1e5 N/mm^1.5), else it "
+        f"replaces the Hertz value. Units: {units_help('stiffness')} (bare number: "
+        "N/mm^1.5, N/mm^(10/9) for a cylindrical roller bearing unless --exponent says "
+        "otherwise).",
+    ),
+    "clearance": _option(
+        "--clearance", "-G", type=Clearance(), library=("bore",), help=CLEARANCE_HELP
+    ),
+    "clearance_pick": _option(
+        "--clearance-pick",
+        type=click.Choice(["min", "mean", "max", "range"]),
+        default="mean",
+        show_default=True,
+        library=("pick",),
+        help="Where in a clearance class to take G_r; 'range' (solve): at min, mean and max, "
+        "side by side.",
+    ),
+    "ball_diameter": _option(
+        "--ball-diameter",
+        type=Quantity("length"),
+        library=("D_w", "ball-diameter"),
+        help="Ball diameter D_w, replacing the catalogue's. Bare number: mm.",
+    ),
+    "pitch_diameter": _option(
+        "--pitch-diameter",
+        type=Quantity("length"),
+        library=("d_m", "pitch-diameter"),
+        help="Pitch diameter d_m; default the catalogue's, else (d + D)/2. Bare number: mm.",
+    ),
+    "inner_conformity": _option(
+        "--inner-conformity",
+        type=float,
+        library=("f_i",),
+        help="Inner groove conformity f_i = r_i/D_w, in (0.5, 1); default the catalogue's "
+        "(0.52 when unknown).",
+    ),
+    "outer_conformity": _option(
+        "--outer-conformity",
+        type=float,
+        library=("f_o",),
+        help="Outer groove conformity f_o = r_o/D_w; default the catalogue's (0.53 when unknown).",
+    ),
+    "modulus": _option(
+        "--modulus",
+        type=Quantity("modulus"),
+        library=("E1",),
+        help="Young's modulus E of balls and rings; default 208000 MPa (bearing steel). "
+        f"Units: {units_help('modulus')} (bare number: MPa; a bare number outside 1000 to "
+        "1e7 MPa is refused: 210 -> did you mean 210GPa?).",
+    ),
+    "poisson": _option(
+        "--poisson", type=float, library=("nu1",), help="Poisson's ratio nu; default 0.3."
+    ),
+    "maker": _option("--maker", help=MAKER_HELP),
+    "cage_angle": _option(
+        "--cage-angle",
+        type=CageAngle(),
+        default="0",
+        show_default=True,
+        help="Angle of ball 1 from the load line, degrees unless a unit follows (12, 12deg, "
+        "0.2rad, 3mrad); 0 = a ball under the load, 'half' = the load between two balls.",
+    ),
+    "exponent": _option(
+        "--exponent",
+        "-m",
+        type=Exponent(),
+        default=1.5,
+        show_default=True,
+        help="Load-deflection exponent m: 1.5 (or 3/2) for balls, 10/9 for rollers.",
+    ),
+    "dynamic_rating": _option(
+        "--dynamic-rating",
+        "-C",
+        type=Quantity("force", positive=True),
+        help="Basic dynamic load rating C_r for the lives L10 and L10r, replacing the "
+        f"catalogue's (needed for a bearing given by hand); changes no load. Units: {_FORCE} "
+        "(bare number: N).",
+    ),
+    "rotating": _option(
+        "--rotating",
+        type=click.Choice(["inner", "outer"]),
+        help="The ring that rotates relative to the load, for the reference rating life "
+        "L10r (default inner); changes no load.",
+    ),
+}
+
+
+BEARING_HELP = (
+    "Catalogue designation (306, 6306-2RS/C3, NU206; see 'bearingload catalog'): its ball set "
+    "gives the exact Hertz ball stiffness, its bore resolves a clearance class."
+)
+
+
+def maker_option(func: Callable[..., Any]) -> Callable[..., Any]:
+    """``--maker`` alone, for a command that shows a designation (``catalog show``)."""
+    return click.option("--maker", cls=LibraryOption, help=MAKER_HELP)(func)
+
+
+def case_options(
+    *,
+    bearing: str = "argument",
+    omit: Collection[str] = (),
+    required: Collection[str] = (),
+    defaults: Mapping[str, Any] | None = None,
+) -> Callable[[Callable[..., Any]], Callable[..., Any]]:
+    """Declare the case options on a command and hand it one :class:`CaseOptions` as ``case``.
+
+    Parameters
+    ----------
+    bearing : {"argument", "option"}
+        The designation as the optional argument BEARING, or as ``--bearing/-b``.
+    omit : collection of str
+        Options (parameter names) the command does not declare at all.
+    required : collection of str
+        Options click requires.
+    defaults : mapping, optional
+        Defaults other than none (shown in the help), e.g. ``{"load": "1000"}``.
+    """
+    declared = {n: d for n, d in DECLARATIONS.items() if n not in omit}
+
+    def decorate(func: Callable[..., Any]) -> Callable[..., Any]:
+        @functools.wraps(func)
+        def command(**kwargs: Any) -> Any:
+            values = {name: kwargs.pop(name, None) for name in CASE_FIELDS}
+            try:
+                case = CaseOptions.of(values)
+            except InputError as exc:
+                raise usage_error(exc) from exc
+            return func(case=case, **kwargs)
+
+        for name, (decls, attrs) in reversed(declared.items()):
+            if name in (defaults or {}):
+                attrs = attrs | {"default": (defaults or {})[name], "show_default": True}
+            option = click.option(
+                *decls, name, cls=LibraryOption, required=name in required, **attrs
+            )
+            command = option(command)
+        if bearing == "option":
+            return click.option("--bearing", "-b", cls=LibraryOption, help=BEARING_HELP)(command)
+        designation = click.argument(
+            "bearing", cls=LibraryArgument, required=False, metavar="[BEARING]"
+        )
+        return designation(command)
+
+    return decorate
+
+
+@dataclass(frozen=True)
+class CaseOptions:
+    """The case as the command line gave it, in the package's units (N, mm, N mm, °, MPa).
+
+    ``stiffness`` stays the text typed (its unit is checked against the exponent by
+    :meth:`stiffness_value`); ``exponent`` is None unless given (the bearing's own m: 10/9 for a
+    cylindrical roller bearing, else 1.5); ``given`` names the options given on the command
+    line (not left at a default).
+    """
+
+    bearing: str | None = None
+    balls: int | None = None
+    load: float | None = None
+    axial_load: float | None = None
+    moment: float | None = None
+    moment_cross: float | None = None
+    misalignment: float | None = None
+    tilt_radius: str | float | None = None
+    stiffness: str | None = None
+    clearance: Any = None
+    clearance_pick: str = "mean"
+    ball_diameter: float | None = None
+    pitch_diameter: float | None = None
+    inner_conformity: float | None = None
+    outer_conformity: float | None = None
+    modulus: float | None = None
+    poisson: float | None = None
+    maker: str | None = None
+    cage_angle: float | str = 0.0
+    exponent: float | None = None
+    dynamic_rating: float | None = None
+    rotating: str | None = None
+    given: frozenset[str] = frozenset()
+
+    @classmethod
+    def of(cls, values: dict[str, Any]) -> CaseOptions:
+        """The case of click's converted ``values`` (parameter name -> value; an omitted option
+        None), with the sources of the running command's parameters."""
+        ctx = click.get_current_context(silent=True)
+        default = (None, click.core.ParameterSource.DEFAULT)
+        given = frozenset(
+            name
+            for name in values
+            if ctx is not None and ctx.get_parameter_source(name) not in default
+        )
+        values = {k: v for k, v in values.items() if v is not None}
+        if "exponent" not in given:
+            values.pop("exponent", None)
+        return cls(**values, given=given)
+
+    @property
+    def radial_load(self) -> float:
+        """F_r, 0 where none is given (sweep --kurochkin-T; solve and table always have one). [N]"""
+        return 0.0 if self.load is None else self.load
+
+    @property
+    def by_hand(self) -> bool:
+        """True for a ring given by its balls and stiffness: no designation, no ball geometry."""
+        return self.bearing is None and self.ball_diameter is None and self.pitch_diameter is None
+
+    @property
+    def wants_combined(self) -> bool:
+        """True when a load option (:data:`LOAD_PARAMS`) was given: the load alone chooses the
+        engine."""
+        return any(getattr(self, k) is not None for k in LOAD_PARAMS)
+
+    @property
+    def lives_given(self) -> bool:
+        """True when an option that feeds only the lives (:data:`LIFE_PARAMS`) was given."""
+        return any(getattr(self, k) is not None for k in LIFE_PARAMS)
+
+    def first_given(self, names: Collection[str]) -> str | None:
+        """The option (``--axial-load``) of the first of ``names`` with a value, else None."""
+        name = next((n for n in names if getattr(self, n) is not None), None)
+        return None if name is None else "--" + name.replace("_", "-")
+
+    def refuse(self, names: Collection[str], where: str, why: str) -> None:
+        """One usage error naming the first of the options ``names`` given, ``where`` it was
+        given and ``why`` it is refused there."""
+        option = self.first_given(names)
+        if option is not None:
+            raise click.UsageError(f"{option} cannot be used with {where}: {why}")
+
+    def exponent_or(self, default: float = 1.5) -> float:
+        """The exponent given, else ``default``. [-]"""
+        return default if self.exponent is None else self.exponent
+
+    def stiffness_value(self) -> float | None:
+        """--stiffness in N/mm^m, its unit checked against the exponent m: the --exponent given,
+        else that of the designation's contact (:func:`bearingload.bearings.designation.
+        contact_exponent`: 10/9 for a cylindrical roller bearing, else 1.5)."""
+        from bearingload.bearings.designation import contact_exponent
+        from bearingload.units import parse_stiffness
+        from bearingload.validate import exponent as valid_exponent
+
+        m = self.exponent if self.exponent is not None else contact_exponent(self.bearing)
+        valid_exponent(m)  # the exponent's own error comes first, also without a stiffness
+        return None if self.stiffness is None else parse_stiffness(self.stiffness, m)
+
+    def cage_angle_deg(self, balls: int) -> float:
+        """The cage angle in degrees; ``"half"`` is half a pitch, 180/z. [°]"""
+        return 180.0 / balls if self.cage_angle == "half" else float(self.cage_angle)
+
+    def bearing_arguments(self, stiffness: float | None = None) -> dict[str, Any]:
+        """The keyword arguments of :func:`bearingload.bearings.resolve.resolve_bearings` (the
+        designation first), ``stiffness`` the converted --stiffness [N/mm^m]."""
+        return {
+            "designation": self.bearing,
+            "balls": self.balls,
+            "ball_diameter": self.ball_diameter,
+            "pitch_diameter": self.pitch_diameter,
+            "f_i": self.inner_conformity,
+            "f_o": self.outer_conformity,
+            "modulus": self.modulus,
+            "poisson": self.poisson,
+            "maker": self.maker,
+            "stiffness": stiffness,
+            "clearance": self.clearance,
+            "clearance_pick": self.clearance_pick,
+            "exponent": self.exponent,
+        }
+
+    def combined_arguments(self) -> dict[str, Any]:
+        """The combined load as the keyword arguments of the combined studies
+        (:func:`bearingload.studies.combined_bearing.solve_combined_bearing`,
+        :func:`bearingload.studies.combined_sweep.combined_sweep`,
+        :func:`bearingload.studies.life_clearance.life_against_clearance`): F_a 0 when not
+        given, the inner ring rotating by default, the lever as given (None: groove)."""
+        return {
+            "axial_load": self.axial_load or 0.0,
+            "moment": self.moment,
+            "moment_cross": self.moment_cross,
+            "misalignment": self.misalignment,
+            "tilt_radius": self.tilt_radius,
+            "rotating": self.rotating or "inner",
+            "dynamic_rating": self.dynamic_rating,
+        }
+
+
+#: The parameters of :class:`CaseOptions` that come from the command line.
+CASE_FIELDS = tuple(f.name for f in fields(CaseOptions) if f.name != "given")
