@@ -106,7 +106,6 @@ class Problem:
     z: int
     c: np.ndarray  # cos phi_j, (n, z)
     s: np.ndarray  # sin phi_j, (n, z)
-    cs: tuple[np.ndarray, ...]  # Dekker splits (c_hi, c_lo, s_hi, s_lo), (n, z) each
     scale: np.ndarray  # s [mm], (n,)
     a_hat: np.ndarray  # A / s
     pre: np.ndarray  # preload approach p = max(-G_r/2, 0) / s
@@ -135,17 +134,15 @@ class Problem:
         pre = np.maximum(-g, 0.0) / scale
         b_hi, b_lo = _two_sum(a_hat, pre)
         t_imp = rest.pop("t_imp") / scale
-        return Problem(z, c, s, (*_split(c), *_split(s)), scale, a_hat, pre,
-                       np.maximum(g, 0.0) / scale, b_hi, b_lo, t_imp=t_imp, **rest)  # fmt: skip
+        return Problem(z, c, s, scale, a_hat, pre, np.maximum(g, 0.0) / scale, b_hi, b_lo,
+                       t_imp=t_imp, **rest)  # fmt: skip
 
     def take(self, idx: np.ndarray) -> Problem:
         """The cases ``idx`` only."""
         out = {}
         for field in dataclasses.fields(self):
             value = getattr(self, field.name)
-            if field.name == "cs":
-                value = tuple(a[idx] for a in value)
-            elif isinstance(value, np.ndarray):
+            if isinstance(value, np.ndarray):
                 value = value[idx]
             out[field.name] = value
         return Problem(**out)
@@ -166,7 +163,7 @@ class Balls:
     eps: np.ndarray  # d - B, to the last digits
 
     def take(self, idx: np.ndarray) -> Balls:
-        return Balls(*(getattr(self, k)[idx] for k in _BALL_FIELDS))
+        return Balls(self.rho[idx], self.u[idx], self.d[idx], self.eps[idx])
 
     def put(self, mask: np.ndarray, other: Balls) -> Balls:
         """These balls, with the rows ``mask`` from ``other``."""
@@ -185,7 +182,8 @@ def reference(p: Problem, vh: np.ndarray, vl: np.ndarray) -> Balls:
     millions of times the approach (a clearance near 2A), and the result is a function of the
     position alone.
     """
-    c_hi, c_lo, s_hi, s_lo = p.cs
+    c_hi, c_lo = _split(p.c)
+    s_hi, s_lo = _split(p.s)
     col = [(vh[:, i, None], vl[:, i, None]) for i in range(5)]
     r1 = _two_prod(col[X][0], p.c, (c_hi, c_lo))
     r2 = _two_prod(col[Y][0], p.s, (s_hi, s_lo))
@@ -275,6 +273,9 @@ def loads(p: Problem, b: Balls, kappa: np.ndarray) -> Loads:
     q = k * pos * root
     dev = p.deviation
     q0 = np.where(dev, p.pre * np.sqrt(p.pre), 0.0)
+    if not dev.any():  # no preload in this call: the deviations are the loads
+        zero = np.zeros_like(q)
+        return Loads(ca, sa, cam1, q, q, root, zero, zero, q0)
     tau = np.where(dev[:, None], b.eps / np.where(pre > 0, pre, 1.0), 0.0)
     sig = tau / (1.0 + np.sqrt(np.maximum(1.0 + tau, 0.0)))
     change = q0[:, None] * np.where(touch, k * (tau + sig + tau * sig) + kappa, -1.0)
@@ -343,10 +344,15 @@ def energy_change(
     with ``X(tau) = (1 + tau)^2.5 - 1 - 2.5 tau``."""
     w, dd, ddr = steps
     dev = p.deviation
-    pre = np.where(dev, p.pre, 1.0)
-    linear = lo.q0 * (ddr + kappa * dd).sum(1)
-    bend = ((1.0 + kappa) * (_excess(lo.tau, lo.sig) - _excess(lr.tau, lr.sig))).sum(1)
-    deviation = linear + pre * pre * np.sqrt(pre) / 2.5 * bend
+    work = (p.f * w).sum(1)
+    deviation = np.zeros_like(work)
+    if dev.any():
+        pre = np.where(dev, p.pre, 1.0)
+        linear = lo.q0 * (ddr + kappa * dd).sum(1)
+        bend = ((1.0 + kappa) * (_excess(lo.tau, lo.sig) - _excess(lr.tau, lr.sig))).sum(1)
+        deviation = linear + pre * pre * np.sqrt(pre) / 2.5 * bend
+        if dev.all():
+            return deviation - work
     # without preload: K/2.5 (delta^2.5 - delta_ref^2.5) = K delta_ref^2.5 (2.5 r + X(r))/2.5,
     # r = dd/delta_ref, for a ball in contact at both positions (a difference otherwise)
     pos_ref = lr.root * lr.root
@@ -355,10 +361,48 @@ def energy_change(
     sig = r / (1.0 + np.sqrt(np.maximum(1.0 + r, 0.0)))
     kd = lr.q * pos_ref  # K delta_ref^2.5
     change = np.where(both, kd * (r + _excess(r, sig) / 2.5), (lo.q * lo.root**2 - kd) / 2.5)
-    return np.where(dev, deviation, change.sum(1)) - (p.f * w).sum(1)
+    return np.where(dev, deviation, change.sum(1)) - work
 
 
 # ------------------------------------------------------------------------------- the Newton
+
+
+@dataclass
+class Point:
+    """The balls, loads, generalised forces, term sizes and residual at the positions of some
+    cases (the rows of every array), and how many steps they were carried along by
+    :func:`offset` since :func:`reference` computed them."""
+
+    b: Balls
+    lo: Loads
+    gen: np.ndarray
+    size: np.ndarray
+    res: np.ndarray
+    age: np.ndarray
+
+    @staticmethod
+    def at(q: Problem, kappa: np.ndarray, b: Balls, age: int = 0) -> Point:
+        lo = loads(q, b, kappa)
+        gen, size = forces(q, lo)
+        res = residual(q, gen, size, q.locked)
+        return Point(b, lo, gen, size, res, np.full(res.shape, age, dtype=np.int64))
+
+    def take(self, rows: np.ndarray) -> Point:
+        return Point(self.b.take(rows), _take_loads(self.lo, rows), self.gen[rows],
+                     self.size[rows], self.res[rows], self.age[rows])  # fmt: skip
+
+    def put(self, rows: np.ndarray, other: Point) -> None:
+        """Overwrite the rows ``rows`` with ``other`` (in place)."""
+        for name in _BALL_FIELDS:
+            getattr(self.b, name)[rows] = getattr(other.b, name)
+        for name in _LOAD_FIELDS:
+            getattr(self.lo, name)[rows] = getattr(other.lo, name)
+        for name in ("gen", "size", "res", "age"):
+            getattr(self, name)[rows] = getattr(other, name)
+
+
+#: Steps a point is carried by the difference formulas before it is recomputed afresh. [-]
+REFRESH = 8
 
 
 def minimise(
@@ -366,35 +410,43 @@ def minimise(
 ) -> tuple[np.ndarray, np.ndarray, np.ndarray]:
     """Damped Newton with an Armijo line search on the convex potential (stiffness ``1 +
     kappa`` frozen): each case until every free component is within TOLERANCE (see
-    :func:`residual`) or its residual stops falling (rounding). Returns the position (hi, lo)
-    and the iterations per case; the caller checks the residual left."""
+    :func:`residual`) or its residual stops falling (rounding). The point a step reaches is
+    the line search's trial (:func:`offset` from the last); a case is recomputed afresh in
+    double-double (:func:`reference`) every REFRESH steps and before it counts as converged.
+    Returns the position (hi, lo) and the iterations per case; the caller checks the residual."""
     vh, vl = vh.copy(), vl.copy()
     iterations = np.zeros(vh.shape[0], dtype=np.int64)
     active = np.arange(vh.shape[0])
     q, ka = p, kappa
+    pt = Point.at(q, ka, reference(q, vh, vl))
     best = np.full(active.size, np.inf)
     stall = np.zeros(active.size, dtype=np.int64)
+    slow = np.zeros(active.size, dtype=bool)
     for _ in range(MAX_ITERATIONS):
-        cur = reference(q, vh[active], vl[active])
-        lo = loads(q, cur, ka)
-        gen, size = forces(q, lo)
-        res = residual(q, gen, size, q.locked)
-        better = (res < 0.5 * best) | (res > STALL_BELOW)
-        best = np.where(better, res, best)
+        old = np.flatnonzero(((pt.res <= TOLERANCE) & (pt.age > 0)) | (pt.age >= REFRESH))
+        if old.size:
+            sub = q.take(old)
+            pt.put(old, Point.at(sub, ka[old], reference(sub, vh[active[old]], vl[active[old]])))
+        better = (pt.res < 0.5 * best) | (pt.res > STALL_BELOW)
+        best = np.where(better, pt.res, best)
         stall = np.where(better, 0, stall + 1)
-        stop = (res <= TOLERANCE) | (stall >= STALL) | ~np.isfinite(res)
-        grad = np.where(q.locked, 0.0, gen - q.f)
-        step, hess = _newton_step(q, cur, lo, ka, grad, stop)
-        moved = _line_search(q, ka, (cur, lo), (step, hess), grad, res)
-        stop |= ~np.any(moved != 0.0, axis=1)
+        stop = (pt.res <= TOLERANCE) | (stall >= STALL) | ~np.isfinite(pt.res)
+        grad = np.where(q.locked, 0.0, pt.gen - q.f)
+        step, hess = _newton_step(q, pt.b, pt.lo, ka, grad, stop)
+        before = pt.res
+        moved, pt = _line_search(q, ka, pt, (step, hess), grad, slow)
+        slow = pt.res > 0.9 * before
+        still = ~np.any(moved != 0.0, axis=1)
+        stop |= still & (pt.age == 0)  # no step from a fresh point: rounding
+        pt.age[still] = REFRESH  # no step from a carried point: recompute it first
         hi, lo_ = _two_sum(vh[active], moved)
         vh[active], vl[active] = _fast(hi, lo_ + vl[active])
         iterations[active[~stop]] += 1
-        keep = ~stop
-        if not keep.any():
+        keep = np.flatnonzero(~stop)
+        if not keep.size:
             break
-        active, q, ka = active[keep], q.take(keep), ka[keep]
-        best, stall = best[keep], stall[keep]
+        active, q, ka, pt = active[keep], q.take(keep), ka[keep], pt.take(keep)
+        best, stall, slow = best[keep], stall[keep], slow[keep]
     return vh, vl, iterations
 
 
@@ -414,21 +466,26 @@ def _newton_step(
 
 
 def _take_loads(lo: Loads, idx: np.ndarray) -> Loads:
-    return Loads(*(getattr(lo, f.name)[idx] for f in dataclasses.fields(lo)))
+    return Loads(*(getattr(lo, name)[idx] for name in _LOAD_FIELDS))
+
+
+_LOAD_FIELDS = ("ca", "sa", "cam1", "q", "dq", "root", "tau", "sig", "q0")
 
 
 def _line_search(
     q: Problem,
     kappa: np.ndarray,
-    at: tuple[Balls, Loads],
+    pt: Point,
     newton: tuple[np.ndarray, np.ndarray],
     grad: np.ndarray,
-    res: np.ndarray,
-) -> np.ndarray:
-    """The move (n, 5): ``t`` times the step, t = 1, then (if that fails and a ball not in
+    slow: np.ndarray,
+) -> tuple[np.ndarray, Point]:
+    """The move (n, 5) and the point it reaches: ``t`` times the step, t = 1, then (if that fails and a ball not in
     contact would be reached before) just past the first contact along the step, then halved,
-    until the potential falls (Armijo) or the residual halves; each trial that fails is tried
-    once more with a second-order correction (``-H^-1`` times the forces left at the trial).
+    until the potential falls (Armijo) or the residual halves. On the ``slow`` cases (the last
+    step took off less than a tenth of the residual), a trial that fails or does the same is
+    tried once more with a second-order correction (``-H^-1`` times the forces left at the
+    trial). ``pt`` may be changed in place.
 
     The first contact matters along a direction the balls in contact do not resist (a ring
     sliding in its clearance): the regularised Newton step there is a fixed length, and halving
@@ -436,48 +493,86 @@ def _line_search(
     path is an arc (a ring rolling a ball along its groove, radius A, about millions of elastic
     approaches): a straight step leaves the arc by s^2/(2A), into the stiff direction.
     """
-    cur, lo = at
     step, hess = newton
     slope = (grad * step).sum(1)
     t = np.ones(step.shape[0])
     moved = np.zeros_like(step)
-    pending = np.any(step != 0.0, axis=1)
-    contact = _first_contact(q, cur, lo, step)
+    res = pt.res.copy()
+    pending = np.flatnonzero(np.any(step != 0.0, axis=1))
     for k in range(60):
-        if not pending.any():
+        if not pending.size:
             break
-        w = t[:, None] * step
-        ok, gen, drop, left = _accept(q, kappa, (cur, lo), w, t * slope, res)
-        # corrected where the trial fails or leaves more than a quarter of the residual
-        retry = pending & (~ok | (left > 0.25 * res))
-        if retry.any():
-            fix = -np.linalg.solve(hess, np.where(q.locked, 0.0, gen - q.f)[:, :, None])[:, :, 0]
-            w2 = np.where(retry[:, None], w + fix, 0.0)
-            ok2, _, drop2, _ = _accept(q, kappa, (cur, lo), w2, t * slope, res)
-            better = retry & ok2 & (~ok | (drop2 < drop))
-            w = np.where(better[:, None], w2, w)
-            ok |= better
-        moved = np.where((pending & ok)[:, None], w, moved)
-        pending &= ~ok
-        shorter = np.minimum(0.5, contact) if k == 0 else 0.5 * t
-        t = np.where(pending, shorter, t)
-    return moved
+        part = _part(q, kappa, pt, pending)
+        w = t[pending, None] * step[pending]
+        drop_min = t[pending] * slope[pending]
+        ok, trial = _accept(part, w, drop_min, res[pending])
+        # corrected where the trial fails or leaves more than 90 % of the residual, again
+        retry = np.flatnonzero(slow[pending] & (~ok | (trial.res > 0.9 * res[pending])))
+        if retry.size:
+            sub = _part(*part, retry)
+            left = np.where(sub[0].locked, 0.0, trial.gen[retry] - sub[0].f)
+            fix = -np.linalg.solve(hess[pending[retry]], left[:, :, None])[:, :, 0]
+            ok2, trial2 = _accept(sub, w[retry] + fix, drop_min[retry], res[pending[retry]], True)
+            better = ok2 & (~ok[retry] | (trial2.drop < trial.drop[retry]))
+            w[retry[better]] += fix[better]
+            ok[retry[better]] = True
+            trial.put(retry[better], trial2.take(np.flatnonzero(better)))
+        moved[pending[ok]] = w[ok]
+        if ok.all() and pending.size == step.shape[0]:
+            return moved, trial  # every case took its first trial: that is the new point
+        pt.put(pending[ok], trial.take(np.flatnonzero(ok)))
+        pending = pending[~ok]
+        if k == 0 and pending.size:  # just past the first contact along the step, or half
+            sub = _part(q, kappa, pt, pending)
+            t[pending] = np.minimum(0.5, _first_contact(sub[0], sub[2].b, sub[2].lo, step[pending]))
+        else:
+            t[pending] *= 0.5
+    return moved, pt
+
+
+Part = tuple[Problem, np.ndarray, Point]
+
+
+def _part(q: Problem, kappa: np.ndarray, pt: Point, rows: np.ndarray) -> Part:
+    """The cases ``rows`` of a problem, its stiffness and its point (all of them as they are)."""
+    if rows.size == q.f.shape[0]:
+        return q, kappa, pt
+    return q.take(rows), kappa[rows], pt.take(rows)
+
+
+@dataclass
+class _Trial(Point):
+    drop: np.ndarray = dataclasses.field(default_factory=lambda: np.zeros(0))
+
+    def take(self, rows: np.ndarray) -> _Trial:
+        p = Point.take(self, rows)
+        return _Trial(p.b, p.lo, p.gen, p.size, p.res, p.age, self.drop[rows])
+
+    def put(self, rows: np.ndarray, other: Point) -> None:
+        Point.put(self, rows, other)
+        if isinstance(other, _Trial):
+            self.drop[rows] = other.drop
 
 
 def _accept(
-    q: Problem, kappa: np.ndarray, at: tuple[Balls, Loads], w: np.ndarray, drop_min: np.ndarray,
-    res: np.ndarray,
-) -> tuple[np.ndarray, ...]:  # fmt: skip
-    """Whether the move ``w`` is taken (the potential falls by 1e-4 of ``drop_min``, or the
-    residual halves), the ball forces there, the change of the potential and the residual."""
-    cur, lo = at
-    trial, dd, ddr = offset(q, cur, w)
-    lt = loads(q, trial, kappa)
-    drop = energy_change(q, kappa, lo, lt, (w, dd, ddr))
+    part: Part, w: np.ndarray, drop_min: np.ndarray, res: np.ndarray, need_drop: bool = False
+) -> tuple[Any, ...]:
+    """Whether the move ``w`` is taken (the residual halves, or the potential falls by 1e-4 of
+    ``drop_min``), and the point there with the change of the potential, ``drop`` (0 where not
+    needed: every residual halves, unless ``need_drop``)."""
+    q, kappa, pt = part
+    b, dd, ddr = offset(q, pt.b, w)
+    lt = loads(q, b, kappa)
     gen, size = forces(q, lt)
     left = residual(q, gen, size, q.locked)
-    ok = ((drop <= 1e-4 * drop_min) | (left < 0.5 * res)) & np.any(w != 0.0, axis=1)
-    return ok, gen, np.where(np.isfinite(drop), drop, np.inf), left
+    ok = left < 0.5 * res
+    drop = np.zeros_like(left)  # (not needed where the residual halves)
+    if need_drop or not ok.all():
+        drop = energy_change(q, kappa, pt.lo, lt, (w, dd, ddr))
+        drop = np.where(np.isfinite(drop), drop, np.inf)
+        ok |= drop <= 1e-4 * drop_min
+    ok &= np.any(w != 0.0, axis=1)
+    return ok, _Trial(b, lt, gen, size, left, pt.age + 1, drop)
 
 
 def _first_contact(q: Problem, cur: Balls, lo: Loads, step: np.ndarray) -> np.ndarray:

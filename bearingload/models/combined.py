@@ -575,22 +575,7 @@ def _start(p: Problem, geo: _Geometry, cage: np.ndarray) -> np.ndarray:
     # the last bits the radial engine and the bisection leave, which may vary with the batch
     with np.errstate(over="ignore"):
         single = v.astype(np.float32).astype(float)
-    v = np.where(p.locked, 0.0, np.where(np.abs(v) < 1e30, single, v))
-    # both parts take up the play, radially and axially, which a clearance of about 2A cannot
-    # give at once: of the two parts and their sum, the one of lowest potential
-    radial_part = v * np.array([1.0, 1.0, 0.0, 0.0, 0.0])
-    axial_part = v - radial_part
-    candidates = [v, radial_part, axial_part]
-    energy = np.stack([_potential(p, w) for w in candidates])
-    best = np.argmin(np.where(np.isfinite(energy), energy, np.inf), axis=0)
-    return np.choose(best[:, None], candidates)
-
-
-def _potential(p: Problem, v: np.ndarray) -> np.ndarray:
-    """Scaled potential sum_j delta_j^2.5/2.5 - f.v at ``v`` with K_0 (to compare starts)."""
-    b = _ring.reference(p, v, np.zeros_like(v))
-    delta = np.maximum(p.pre[:, None] + b.eps, 0.0)
-    return (delta * delta * np.sqrt(delta)).sum(1) / 2.5 - (p.f * v).sum(1)
+    return np.where(p.locked, 0.0, np.where(np.abs(v) < 1e30, single, v))
 
 
 class _StiffnessCurve:
