@@ -74,37 +74,48 @@ def test_a_zero_misalignment_does_not_depend_on_its_batch():
 
 
 def _random_mix(rng, n):
-    """Cases mixing what decides which components a case holds: F_a or a moment 0 or not, F_r
-    0 or not, the cage at 0, half a pitch or anywhere, preload or clearance."""
+    """Cases mixing what decides which components a case holds and how its line searches go:
+    F_a or a moment 0 or not, F_r 0 or not, the cage at 0, half a pitch or anywhere, preload,
+    clearance, a clearance near the groove limit 2A (0.79 mm), loads from 0.01 N."""
     z = 9
-    fr = np.where(rng.random(n) < 0.25, 0.0, 10 ** rng.uniform(0, 4, n))
-    fa = np.where(rng.random(n) < 0.4, 0.0, rng.choice([-1, 1], n) * 10 ** rng.uniform(0, 3.5, n))
+    fr = np.where(rng.random(n) < 0.25, 0.0, 10 ** rng.uniform(-2, 4, n))
+    fa = np.where(rng.random(n) < 0.4, 0.0, rng.choice([-1, 1], n) * 10 ** rng.uniform(-3, 3.5, n))
     fa = np.where((fr == 0) & (fa == 0), 50.0, fa)
     cage = rng.choice([0.0, 20.0, 13.7, 250.0], n)
-    g = rng.choice([-0.01, 0.0, 0.015, 0.05], n)
+    g = rng.choice([-0.01, 0.0, 0.015, 0.05, 0.5, 0.75], n)
     return z, fr, fa, cage, g
 
 
 @pytest.mark.parametrize("tilt", ["free", "moment", "misalignment"])
 def test_every_case_of_a_batch_is_the_case_alone(tilt):
     """Bit for bit: each row of one vectorised call equals the call of that row alone (the
-    components a case holds are decided per case)."""
+    components a case holds are decided per case; a line search where some rows take their
+    first trial and others do not once changed the next step of the others)."""
     rng = np.random.default_rng(7)
-    z, fr, fa, cage, g = _random_mix(rng, 24)
+    n = 30
+    z, fr, fa, cage, g = _random_mix(rng, n)
     extra = {
         "free": {},
-        "moment": {"moment": np.where(rng.random(24) < 0.5, 0.0, rng.uniform(-3e3, 3e3, 24))},
+        "moment": {"moment": np.where(rng.random(n) < 0.5, 0.0, rng.uniform(-3e3, 3e3, n))},
         "misalignment": {
-            "misalignment": np.where(rng.random(24) < 0.5, 0.0, rng.uniform(-0.1, 0.1, 24))
+            "misalignment": np.where(rng.random(n) < 0.5, 0.0, rng.uniform(-0.1, 0.1, n))
         },
     }[tilt]
-    batch = solve_combined(z, fr, fa, clearance=g, cage_angle=cage, **G6205, **extra)
-    for i in range(24):
-        one = solve_combined(z, fr[i], fa[i], clearance=g[i], cage_angle=cage[i], **G6205,
-                             **{k: v[i] for k, v in extra.items()})  # fmt: skip
-        for key in ("x", "y", "axial", "tilt", "tilt_cross", "moment"):
-            assert float(getattr(one, key)) == float(getattr(batch, key)[i]), (i, key)
-        assert np.array_equal(one.ball_loads, batch.ball_loads[i])
+    alone = {}
+    for i in range(n):
+        try:
+            alone[i] = solve_combined(z, fr[i], fa[i], clearance=g[i], cage_angle=cage[i], **G6205,
+                                      **{k: v[i] for k, v in extra.items()})  # fmt: skip
+        except InputError as exc:  # a ball at the groove edge: not in the batch
+            assert "contact angle of 90°" in str(exc)
+    rows = np.array(sorted(alone))
+    assert rows.size >= n - 4
+    batch = solve_combined(z, fr[rows], fa[rows], clearance=g[rows], cage_angle=cage[rows], **G6205,
+                           **{k: v[rows] for k, v in extra.items()})  # fmt: skip
+    for j, i in enumerate(rows):
+        for key in ("x", "y", "axial", "tilt", "tilt_cross", "moment", "iterations"):
+            assert float(getattr(alone[i], key)) == float(getattr(batch, key)[j]), (i, key)
+        assert np.array_equal(alone[i].ball_loads, batch.ball_loads[j])
 
 
 def test_batch_solves_misalignment_rows_in_one_call(monkeypatch):
@@ -134,6 +145,25 @@ def test_batch_solves_misalignment_rows_in_one_call(monkeypatch):
     for i, row in enumerate(rows):
         alone = CliRunner().invoke(main, ["batch", "-", "--format", "csv"], input=head + row)
         assert alone.stdout.splitlines()[1].split(",", 1)[1] == lines[1 + i].split(",", 1)[1]
+
+
+def test_batch_misalignment_rows_are_each_the_row_alone_bit_for_bit():
+    """The quantities batch computes for a group of misalignment rows (one call) are those of
+    each row solved alone, to the last bit."""
+    from bearingload.studies.batch_combined import solve_combined_rows
+
+    b = resolve_bearing("6205", clearance="C3")
+    rows = [{"row": i + 2, "bearing": b, "load": 1000.0 + 37 * i, "axial_load": 100.0 * (i % 3),
+             "moment": None, "misalignment": [0.0, 0.02, -0.05, 0.1][i % 4], "rotating": "inner",
+             "dynamic_rating": None, "cage_angle": 7.0 * i} for i in range(12)]  # fmt: skip
+    errors: dict[int, str] = {}
+    ((numbers, together),) = solve_combined_rows(rows, errors)
+    assert numbers == [r["row"] for r in rows] and not errors
+    for i, r in enumerate(rows):
+        ((_, alone),) = solve_combined_rows([r], errors)
+        for key, value in alone.items():
+            if isinstance(value, np.ndarray):
+                assert np.array_equal(value, together[key][i : i + 1]), key
 
 
 # ----------------------------------------------------------------- 2. no ball past its groove
@@ -296,12 +326,12 @@ PRELOADED = {
     },
 }  # fmt: skip
 #: A displacement driven by its own applied load (x by F_r, axial by F_a, tilt by M, tilt_cross
-#: by the moment across) agrees with the mpmath solve to this of itself (measured: 2e-15 to
+#: by the moment across) agrees with the mpmath solve to this of itself (measured: 1.5e-15 to
 #: 5e-14); any displacement to it plus SECONDARY of the ring's largest displacement: one the
 #: others drive, 1e-9 of them (y at a cage of 11°), is the balance of force terms of the size of
-#: the load, which the solver drives to TOLERANCE (1e-12) of them (measured up to 3.3e-15). [-]
+#: the load, known to their rounding (measured up to 3.3e-15). [-]
 MP_REL = 1e-12
-SECONDARY = 1e-12
+SECONDARY = 2e-14
 DRIVEN = {"x": "radial_load", "axial": "axial_load", "tilt": "moment", "tilt_cross": "moment_cross"}
 
 

@@ -52,7 +52,9 @@ MAX_ITERATIONS = 2000
 #: iterations has reached its rounding. [-]
 STALL = 12
 STALL_BELOW = 1e-9
-#: A component without an applied load is measured against the size of its terms or, where
+#: A residual within this times the sum of the magnitudes of its terms is their rounding. [-]
+ROUNDING = 64.0 * float(np.finfo(float).eps)
+#: A component without an applied load is measured against the rounding of its terms or, where
 #: those vanish with it at the answer, this times the largest applied load. [-]
 FLOOR = 1e-6
 #: Dekker's splitting constant 2^27 + 1 (exact products of doubles). [-]
@@ -304,12 +306,14 @@ def forces(p: Problem, lo: Loads) -> tuple[np.ndarray, np.ndarray]:
 
 
 def residual(p: Problem, gen: np.ndarray, size: np.ndarray, held: np.ndarray) -> np.ndarray:
-    """Per case, the largest residual of a component not ``held`` (n, 5), over its applied load
-    or, where that is smaller, the size of its terms (its rounding level); a component without
-    an applied load also over FLOOR times the largest load (1 scaled): its terms may vanish at
-    the answer with its residual (no loaded ball with an axial component, say). [-]"""
+    """Per case, the largest residual of a component not ``held`` (n, 5), each over its applied
+    load or, where larger, the rounding level of its terms (ROUNDING times the sum of their
+    magnitudes) over TOLERANCE: so at most TOLERANCE means each component balanced to 1e-12 of
+    its load, or to the rounding of the sum it is (its terms 100 times the load, say, under an
+    imposed tilt). A component without an applied load is also measured against FLOOR times
+    the largest load (1 scaled): its terms may vanish at the answer with its residual. [-]"""
     grad = np.where(held, 0.0, gen - p.f)
-    ref = np.maximum(np.abs(p.f), size)
+    ref = np.maximum(np.abs(p.f), (ROUNDING / TOLERANCE) * size)
     ref = np.where(p.f == 0, np.maximum(ref, FLOOR), ref)
     return np.max(np.abs(grad) / ref, axis=1)
 
@@ -433,7 +437,7 @@ def minimise(
         stop = (pt.res <= TOLERANCE) | (stall >= STALL) | ~np.isfinite(pt.res)
         grad = np.where(q.locked, 0.0, pt.gen - q.f)
         step, hess = _newton_step(q, pt.b, pt.lo, ka, grad, stop)
-        before = pt.res
+        before = pt.res.copy()  # the line search may change pt in place
         moved, pt = _line_search(q, ka, pt, (step, hess), grad, slow)
         slow = pt.res > 0.9 * before
         still = ~np.any(moved != 0.0, axis=1)
