@@ -8,8 +8,6 @@ from __future__ import annotations
 
 from typing import Any
 
-import numpy as np
-
 
 class BearingloadError(Exception):
     """Base class of every error this package raises on purpose."""
@@ -62,6 +60,8 @@ class ConvergenceError(BearingloadError, ArithmeticError):
         self.iterations = iterations
         self.residual = residual
         self.cases = cases
+        import numpy as np  # here: importing the errors must stay light (no numpy)
+
         count = max((int(np.size(v)) for v in cases.values()), default=1)
         what = "" if not cases else " for " + ("the case " if count == 1 else f"{count} cases: ")
         what += format_cases(cases, units)
@@ -88,6 +88,8 @@ def format_cases(cases: dict[str, Any], units: dict[str, str] | None = None) -> 
     >>> format_cases({"load": np.arange(6.0)}, {"load": "N"})
     'load = 0, 1, 2, 3, ... (6 values) N'
     """
+    import numpy as np
+
     units = units or {}
     parts = []
     for name, value in cases.items():

@@ -21,6 +21,14 @@ Geometry (deep-groove ball bearing, one row)
   y sin phi_j``, its axial one ``u_j = a + R_i (theta cos phi_j + theta_c sin phi_j)``; the
   ball is compressed by ``delta_j = sqrt(rho_j^2 + u_j^2) - A`` and its contact angle is
   ``alpha_j = atan2(u_j, rho_j)``.
+* A ball touches its grooves only while its contact normal is below 90°, ``rho_j > 0``: with
+  ``rho_j <= 0`` its groove centres have crossed, the torus formula would press it against the
+  far halves of the grooves, which have no ring material, and the ball is loose (so with
+  ``F_a = 0`` and no moment the model is the radial engine's for any load and clearance). A
+  ball left carrying load at the groove edge (``rho_j <= 0`` with ``|u_j| > A``, or a contact
+  angle that rounds to 90°: pushed axially past the edge, or tilted over it) is a state the
+  model does not describe: :class:`~bearingload.errors.InputError` names the ball and the case.
+  The contact angle given for a loose ball is ``atan2(u_j, max(rho_j, 0))``, within ±90°.
 * Ball load ``Q_j = K(alpha_j) max(delta_j, 0)^1.5`` with ``K(alpha)`` the exact Hertz stiffness
   of both contacts in series (:func:`bearingload.contact.hertz.ball_stiffness`) with the
   contact-angle-dependent curvatures: ``1/R_x = 2/D_w +- 2 cos(alpha)/(d_m -+ D_w cos(alpha))``,
@@ -34,8 +42,9 @@ Conventions
 * Positive ``F_a`` pushes the inner ring towards +axial. The moment ``M`` [N mm] is the
   generalised force of ``theta``: positive ``M`` pushes the load-line side of the inner ring
   towards +axial. Without a moment and without a misalignment the ring is free to tilt (``M =
-  0``), as ISO/TS 16281 and MASTA treat a single bearing; an imposed misalignment fixes
-  ``theta`` (and ``theta_c = 0``) and the moment it needs is reported.
+  0``), as ISO/TS 16281 and MASTA treat a single bearing; an imposed misalignment (0 included:
+  ``misalignment=0.0`` holds the ring aligned) fixes ``theta`` and the moment it needs is
+  reported (``theta_c`` stays free, balanced by ``moment_cross``).
 * Which ring rotates does not enter the equilibrium (no centrifugal or gyroscopic terms); it
   enters the life, :mod:`bearingload.bearings.iso16281`.
 * Misalignment and the gaps: to second order in the tilt, ``delta_j`` loses
@@ -44,12 +53,18 @@ Conventions
   the abstract on clearance and vibration (eqs. 3a-4); the exact square root is used.
 
 Numerics. With ``K`` frozen per ball, the equilibrium is the minimum of the convex potential
-``sum K_j/2.5 max(delta_j, 0)^2.5 - F_r x - F_a a - M theta`` (``delta_j`` is a norm of an
-affine function minus a constant, so convex). Lengths are scaled by ``(F/K)^(2/3)`` with ``F``
-the load size; Newton with an Armijo line search minimises it, started from the radial engine's
-solution and the axial closed form; then ``K_j`` is updated to the new contact angles and the
-minimisation repeated until the stiffnesses stop changing. Cases that do not reach the tolerance
-raise :class:`~bearingload.errors.ConvergenceError`.
+``sum K_j/2.5 max(delta_j, 0)^2.5 - F_r x - F_a a - M theta`` with ``delta_j = |(max(rho_j, 0),
+u_j)| - A`` (a norm of a convex, nondecreasing map of an affine function, minus a constant:
+convex, once differentiable; it equals the torus formula wherever a ball can touch). Lengths
+are scaled by ``(F/K)^(2/3)`` with ``F`` the largest applied load; damped Newton minimises it
+(:mod:`bearingload.models._combined_ring`: positions and ball approaches in double-double, the
+forces of a preloaded ring summed from the preloaded reference), started from the radial
+engine's solution and the axial closed form; then ``K_j`` is updated to the new contact angles
+and the minimisation repeated until the update leaves the equilibrium. Each case stops when
+every applied component is balanced to 1e-12 of itself (or to the rounding of the sum it is,
+its terms much larger than it); a component held at 0 by a symmetry of the case is exactly 0.
+No case depends on the others of its call. Cases left above 1e-8 raise
+:class:`~bearingload.errors.ConvergenceError`, naming their inputs.
 """
 
 from __future__ import annotations
@@ -366,7 +381,8 @@ def solve_combined(
         Moment tilting the inner ring in the plane of the load line (see the module docstring);
         default: the ring is free to tilt (M = 0). [N mm]
     misalignment : array_like, optional
-        Imposed tilt of the inner ring in the plane of the load line, instead of a moment. [°]
+        Imposed tilt of the inner ring in the plane of the load line, instead of a moment; 0
+        holds the ring aligned (the moment that takes is reported). [°]
     modulus, poisson : array_like, default 208 000 MPa, 0.3
         E [MPa] and nu [-] of balls and rings.
     stiffness : array_like, optional
@@ -386,9 +402,11 @@ def solve_combined(
     Raises
     ------
     InputError
-        A parameter outside its domain, no load at all, both a moment and a misalignment.
+        A parameter outside its domain, no load at all, both a moment and a misalignment; a
+        case whose equilibrium leaves a loaded ball at the groove edge (contact angle 90°).
     ConvergenceError
-        No equilibrium reached (e.g. a load the balls cannot carry).
+        No equilibrium reached (e.g. a load the balls cannot carry); the message names the
+        inputs of the failing cases.
 
     Pure radial load, zero clearance: the contact angles stay 0 and the radial engine's answer
     comes back (peer 6305 geometry, ISO/TS 16281 example):
@@ -468,10 +486,11 @@ def solve_combined(
 
 
 #: Largest groove-geometry length A over the one-ball approach (F/K)^(2/3) the combined solver
-#: takes: beyond it a load is a vanishing fraction of what moves the ring in its groove, and the
-#: ball approaches, small differences of lengths this much larger, lose the digits Newton needs
-#: (at 7e7, 9 of 60 loadings of a 6313 stalled at a residual of 1e-8; up to 2e7 every one of
-#: 1620 loadings of five bearings near the limit converges). [-]
+#: takes: beyond it a load is a vanishing fraction of what moves the ring in its groove (before
+#: the ball approaches were computed in double-double, at 7e7, 9 of 60 loadings of a 6313 stalled
+#: at a residual of 1e-8; 4 of 1200 near 2e7 too). Since then every loading of the random
+#: campaign (tests/campaign_combined.py: 10^4 cases, loads down to this limit, clearances up to
+#: 2A) and of the tests near the limit converges. [-]
 GEOMETRY_RATIO_MAX = 2e7
 
 
@@ -602,8 +621,9 @@ class _StiffnessCurve:
         self.w = np.where(np.arange(self.NODES) % 2 == 0, 1.0, -1.0) * np.sin(theta)
         c = (self.x + 1.0) / 2.0
         dw, dm, fi, fo, ee, nn = (uniq[:, i, None] for i in range(6))
-        k_c = ball_stiffness(dw, dm / c, fi, fo, ee, nn).ball  # (unique geometries, nodes)
-        k_1 = ball_stiffness(dw, dm, fi, fo, ee, nn).ball
+        at = np.append(c, 1.0)  # the nodes and cos(alpha) = 1, in one Hertz evaluation
+        k_all = ball_stiffness(dw, dm / at, fi, fo, ee, nn).ball  # (unique geometries, nodes + 1)
+        k_c, k_1 = k_all[:, :-1], k_all[:, -1:]
         inv = inverse.reshape(-1)
         self.values = ((k_c / k_1 - 1.0) / (c - 1.0))[inv] * (k_1[inv, 0] / k_ref)[:, None]
 
