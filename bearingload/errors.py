@@ -32,6 +32,10 @@ class InputError(BearingloadError, ValueError):
 class ConvergenceError(BearingloadError, ArithmeticError):
     """An iterative solver did not converge; carries the data needed to reproduce it.
 
+    The message names the failing cases' inputs as numbers (with their units where the solver
+    gives them), never as numpy arrays: ``... for the case radial_load = 1000 N, clearance =
+    0.02 mm``; see :func:`format_cases`.
+
     Attributes
     ----------
     solver : str
@@ -45,13 +49,63 @@ class ConvergenceError(BearingloadError, ArithmeticError):
     """
 
     def __init__(
-        self, solver: str, iterations: int, residual: float, cases: dict[str, Any]
+        self,
+        solver: str,
+        iterations: int,
+        residual: float,
+        cases: dict[str, Any],
+        units: dict[str, str] | None = None,
     ) -> None:
         self.solver = solver
         self.iterations = iterations
         self.residual = residual
         self.cases = cases
+        import numpy as np  # here: importing the errors must stay light (no numpy)
+
+        count = max((int(np.size(v)) for v in cases.values()), default=1)
+        what = "" if not cases else " for " + ("the case " if count == 1 else f"{count} cases: ")
+        what += format_cases(cases, units)
         super().__init__(
             f"{solver} did not converge after {iterations} iterations "
-            f"(relative residual {residual:.3g}) for the cases {cases}"
+            f"(relative residual {residual:.3g}){what}"
         )
+
+
+#: At most this many values of one input are written into a message. [-]
+SHOWN_VALUES = 4
+
+
+def format_cases(cases: dict[str, Any], units: dict[str, str] | None = None) -> str:
+    """``name = value unit, ...`` of the inputs of some cases, for a message.
+
+    Values are written with 6 significant digits (no ``array(...)``); of several cases, the
+    first :data:`SHOWN_VALUES` and how many there are (one value where all are equal).
+
+    >>> import numpy as np
+    >>> format_cases({"balls": 8, "load": np.array([1.0, 2.5e-7]), "clearance": np.float64(0.02)},
+    ...              {"load": "N", "clearance": "mm"})
+    'balls = 8, load = 1 and 2.5e-07 N, clearance = 0.02 mm'
+    >>> format_cases({"load": np.arange(6.0)}, {"load": "N"})
+    'load = 0, 1, 2, 3, ... (6 values) N'
+    """
+    import numpy as np
+
+    units = units or {}
+    parts = []
+    for name, value in cases.items():
+        flat = np.asarray(value).reshape(-1)
+        if flat.size > 1 and np.all(flat == flat[0]):
+            flat = flat[:1]  # the same value for every case: once
+        if flat.dtype.kind in "fciub" and flat.size:
+            numbers = [format(x.item(), ".6g") for x in flat[:SHOWN_VALUES]]
+            if flat.size > SHOWN_VALUES:
+                text = ", ".join(numbers) + f", ... ({flat.size} values)"
+            elif len(numbers) > 1:
+                text = ", ".join(numbers[:-1]) + " and " + numbers[-1]
+            else:
+                text = numbers[0]
+        else:
+            text = ", ".join(str(x) for x in flat[:SHOWN_VALUES]) or "none"
+        unit = units.get(name)
+        parts.append(f"{name} = {text}" + (f" {unit}" if unit else ""))
+    return ", ".join(parts)

@@ -21,6 +21,14 @@ Geometry (deep-groove ball bearing, one row)
   y sin phi_j``, its axial one ``u_j = a + R_i (theta cos phi_j + theta_c sin phi_j)``; the
   ball is compressed by ``delta_j = sqrt(rho_j^2 + u_j^2) - A`` and its contact angle is
   ``alpha_j = atan2(u_j, rho_j)``.
+* A ball touches its grooves only while its contact normal is below 90°, ``rho_j > 0``: with
+  ``rho_j <= 0`` its groove centres have crossed, the torus formula would press it against the
+  far halves of the grooves, which have no ring material, and the ball is loose (so with
+  ``F_a = 0`` and no moment the model is the radial engine's for any load and clearance). A
+  ball left carrying load at the groove edge (``rho_j <= 0`` with ``|u_j| > A``, or a contact
+  angle that rounds to 90°: pushed axially past the edge, or tilted over it) is a state the
+  model does not describe: :class:`~bearingload.errors.InputError` names the ball and the case.
+  The contact angle given for a loose ball is ``atan2(u_j, max(rho_j, 0))``, within ±90°.
 * Ball load ``Q_j = K(alpha_j) max(delta_j, 0)^1.5`` with ``K(alpha)`` the exact Hertz stiffness
   of both contacts in series (:func:`bearingload.contact.hertz.ball_stiffness`) with the
   contact-angle-dependent curvatures: ``1/R_x = 2/D_w +- 2 cos(alpha)/(d_m -+ D_w cos(alpha))``,
@@ -34,8 +42,9 @@ Conventions
 * Positive ``F_a`` pushes the inner ring towards +axial. The moment ``M`` [N mm] is the
   generalised force of ``theta``: positive ``M`` pushes the load-line side of the inner ring
   towards +axial. Without a moment and without a misalignment the ring is free to tilt (``M =
-  0``), as ISO/TS 16281 and MASTA treat a single bearing; an imposed misalignment fixes
-  ``theta`` (and ``theta_c = 0``) and the moment it needs is reported.
+  0``), as ISO/TS 16281 and MASTA treat a single bearing; an imposed misalignment (0 included:
+  ``misalignment=0.0`` holds the ring aligned) fixes ``theta`` and the moment it needs is
+  reported (``theta_c`` stays free, balanced by ``moment_cross``).
 * Which ring rotates does not enter the equilibrium (no centrifugal or gyroscopic terms); it
   enters the life, :mod:`bearingload.bearings.iso16281`.
 * Misalignment and the gaps: to second order in the tilt, ``delta_j`` loses
@@ -44,12 +53,18 @@ Conventions
   the abstract on clearance and vibration (eqs. 3a-4); the exact square root is used.
 
 Numerics. With ``K`` frozen per ball, the equilibrium is the minimum of the convex potential
-``sum K_j/2.5 max(delta_j, 0)^2.5 - F_r x - F_a a - M theta`` (``delta_j`` is a norm of an
-affine function minus a constant, so convex). Lengths are scaled by ``(F/K)^(2/3)`` with ``F``
-the load size; Newton with an Armijo line search minimises it, started from the radial engine's
-solution and the axial closed form; then ``K_j`` is updated to the new contact angles and the
-minimisation repeated until the stiffnesses stop changing. Cases that do not reach the tolerance
-raise :class:`~bearingload.errors.ConvergenceError`.
+``sum K_j/2.5 max(delta_j, 0)^2.5 - F_r x - F_a a - M theta`` with ``delta_j = |(max(rho_j, 0),
+u_j)| - A`` (a norm of a convex, nondecreasing map of an affine function, minus a constant:
+convex, once differentiable; it equals the torus formula wherever a ball can touch). Lengths
+are scaled by ``(F/K)^(2/3)`` with ``F`` the largest applied load; damped Newton minimises it
+(:mod:`bearingload.models._combined_ring`: positions and ball approaches in double-double, the
+forces of a preloaded ring summed from the preloaded reference), started from the radial
+engine's solution and the axial closed form; then ``K_j`` is updated to the new contact angles
+and the minimisation repeated until the update leaves the equilibrium. Each case stops when
+every applied component is balanced to 1e-12 of itself (or to the rounding of the sum it is,
+its terms much larger than it); a component held at 0 by a symmetry of the case is exactly 0.
+No case depends on the others of its call. Cases left above 1e-8 raise
+:class:`~bearingload.errors.ConvergenceError`, naming their inputs.
 """
 
 from __future__ import annotations
@@ -64,14 +79,12 @@ import numpy as np
 from bearingload import validate
 from bearingload.constants import STEEL_MODULUS
 from bearingload.errors import ConvergenceError, InputError
+from bearingload.models import _combined_ring as _ring
+from bearingload.models._combined_ring import ACCEPT, MAX_ITERATIONS, TOLERANCE, Problem
 
-#: Relative equilibrium residual every case is driven below (or to rounding). [-]
-TOLERANCE = 1e-12
-#: Largest relative residual accepted at the end; above it ConvergenceError. [-]
-ACCEPT = 1e-8
-#: Newton iterations per stiffness update (a load near the smallest accepted with a clearance of
-#: about A takes up to some hundreds: about 25 more per decade of lower load); outer updates.
-MAX_ITERATIONS = 2000
+__all__ = ["CombinedDistribution", "solve_combined", "axial_only", "groove_geometry",
+           "ball_stiffness_at", "TOLERANCE", "ACCEPT", "MAX_ITERATIONS"]  # fmt: skip
+#: Stiffness updates (each followed by a minimisation) before ConvergenceError. [-]
 MAX_STIFFNESS_UPDATES = 40
 
 
@@ -368,7 +381,8 @@ def solve_combined(
         Moment tilting the inner ring in the plane of the load line (see the module docstring);
         default: the ring is free to tilt (M = 0). [N mm]
     misalignment : array_like, optional
-        Imposed tilt of the inner ring in the plane of the load line, instead of a moment. [°]
+        Imposed tilt of the inner ring in the plane of the load line, instead of a moment; 0
+        holds the ring aligned (the moment that takes is reported). [°]
     modulus, poisson : array_like, default 208 000 MPa, 0.3
         E [MPa] and nu [-] of balls and rings.
     stiffness : array_like, optional
@@ -388,9 +402,11 @@ def solve_combined(
     Raises
     ------
     InputError
-        A parameter outside its domain, no load at all, both a moment and a misalignment.
+        A parameter outside its domain, no load at all, both a moment and a misalignment; a
+        case whose equilibrium leaves a loaded ball at the groove edge (contact angle 90°).
     ConvergenceError
-        No equilibrium reached (e.g. a load the balls cannot carry).
+        No equilibrium reached (e.g. a load the balls cannot carry); the message names the
+        inputs of the failing cases.
 
     Pure radial load, zero clearance: the contact angles stay 0 and the radial engine's answer
     comes back (peer 6305 geometry, ISO/TS 16281 example):
@@ -440,7 +456,6 @@ def solve_combined(
     if tilt_radius is not None:
         radius = validate.positive("tilt_radius", tilt_radius, "mm")
         geo = dataclasses.replace(geo, R_i=np.broadcast_to(radius, dw.shape).astype(float))
-    phi = np.deg2rad(cage)[:, None] + 2.0 * np.pi * np.arange(z) / z
     if z < 3 and np.any((np.mod(cage, 360.0 / z) != 0) & (fr > 0)):
         raise InputError(
             "cage_angle",
@@ -453,17 +468,29 @@ def solve_combined(
     if np.any(f_ref <= 0):
         raise InputError("radial_load", "give a radial load, an axial load or a moment")
     _check_scale(f_ref, k_ref, geo.A)
-    problem = _Problem.build(z, phi, geo, fr, fa, mm, mc, np.deg2rad(tilt_deg), f_ref, k_ref)
+    t_imp = geo.R_i * np.deg2rad(tilt_deg)  # [mm]
+    c, s, mirror = _directions(z, cage)
+    held, imposed = _locks(z, mirror, (fr, fa, mm, mc), t_imp, misalignment is not None)
+    f = np.stack([fr, np.zeros_like(fr), fa, mm / geo.R_i, mc / geo.R_i], axis=1) / f_ref[:, None]
+    problem = Problem.make(z, (c, s), (geo.A, geo.g), f=f, t_imp=t_imp, locked=held,
+                           imposed=imposed, f_ref=f_ref, k_ref=k_ref)  # fmt: skip
+    given = {"balls": z, "radial_load": fr, "axial_load": fa, "moment": mm, "moment_cross": mc,
+             "clearance": gr, "cage_angle": cage}  # fmt: skip
+    if misalignment is not None:
+        given["misalignment"] = tilt_deg
     with np.errstate(all="ignore"):
-        v, k_hat, its = _solve_with_stiffness(problem, geo, e, nu, k_given is None, misalignment)
-    return _result(problem, geo, v, k_hat, its, shape, fr, fa, mm, gr, cage, misalignment)
+        vh, vl, kappa, its = _solve_with_stiffness(problem, geo, e, nu, k_given is None)
+        checked = _checked(problem, vh, vl, kappa, its, given)
+        answer = (vh + vl, kappa, its, checked)
+        return _result(problem, geo, answer, shape, given, misalignment)
 
 
 #: Largest groove-geometry length A over the one-ball approach (F/K)^(2/3) the combined solver
-#: takes: beyond it a load is a vanishing fraction of what moves the ring in its groove, and the
-#: ball approaches, small differences of lengths this much larger, lose the digits Newton needs
-#: (at 7e7, 9 of 60 loadings of a 6313 stalled at a residual of 1e-8; up to 2e7 every one of
-#: 1620 loadings of five bearings near the limit converges). [-]
+#: takes: beyond it a load is a vanishing fraction of what moves the ring in its groove (before
+#: the ball approaches were computed in double-double, at 7e7, 9 of 60 loadings of a 6313 stalled
+#: at a residual of 1e-8; 4 of 1200 near 2e7 too). Since then every loading of the random
+#: campaign (tests/campaign_combined.py: 10^4 cases, loads down to this limit, clearances up to
+#: 2A) and of the tests near the limit converges. [-]
 GEOMETRY_RATIO_MAX = 2e7
 
 
@@ -484,226 +511,80 @@ def _check_scale(f_ref: np.ndarray, k_ref: np.ndarray, big_a: np.ndarray) -> Non
         )
 
 
-@dataclass(frozen=True)
-class _Problem:
-    """The scaled problem: lengths in units of s = (F/K)^(2/3), forces in units of F."""
+def _directions(z: int, cage: np.ndarray) -> tuple[np.ndarray, np.ndarray, np.ndarray]:
+    """cos and sin of every ball's angle (n, z), and which cases are symmetric about the load
+    line (n,): a cage at 0 or half a pitch, within the radial engine's snap (rounding).
 
-    z: int
-    c: np.ndarray  # cos phi_j, (n, z)
-    s: np.ndarray  # sin phi_j, (n, z)
-    scale: np.ndarray  # s [mm], (n,)
-    a_hat: np.ndarray  # A / s
-    g_hat: np.ndarray  # (G_r/2) / s
-    f_hat: np.ndarray  # generalised forces of (x, y, a, t, t_c), (n, 5)
-    t_imp: np.ndarray  # imposed R_i theta / s, (n,)
-    locked: np.ndarray  # (5,) bool: the tilt is imposed
-    f_ref: np.ndarray  # F [N]
-    k_ref: np.ndarray  # K [N/mm^1.5]
-
-    @staticmethod
-    def build(
-        z: int,
-        phi: np.ndarray,
-        geo: _Geometry,
-        fr: np.ndarray,
-        fa: np.ndarray,
-        mm: np.ndarray,
-        mc: np.ndarray,
-        tilt: np.ndarray,
-        f_ref: np.ndarray,
-        k_ref: np.ndarray,
-    ) -> _Problem:
-        scale = (f_ref / k_ref) ** (2.0 / 3.0)
-        c, s = np.cos(phi), np.sin(phi)
-        c = np.where(np.abs(c) < 1e-15, 0.0, c)
-        s = np.where(np.abs(s) < 1e-15, 0.0, s)
-        zero = np.zeros_like(fr)
-        f_hat = np.stack([fr, zero, fa, mm / geo.R_i, mc / geo.R_i], axis=1) / f_ref[:, None]
-        locked = np.array([False, False, False, True, False]) if np.any(tilt) else None
-        return _Problem(
-            z=z,
-            c=c,
-            s=s,
-            scale=scale,
-            a_hat=geo.A / scale,
-            g_hat=geo.g / scale,
-            f_hat=f_hat,
-            t_imp=geo.R_i * tilt / scale,
-            locked=np.zeros(5, bool) if locked is None else locked,
-            f_ref=f_ref,
-            k_ref=k_ref,
-        )
-
-    def sub(self, idx: np.ndarray) -> _Problem:
-        """The cases ``idx`` only."""
-        return _Problem(
-            self.z,
-            self.c[idx],
-            self.s[idx],
-            self.scale[idx],
-            self.a_hat[idx],
-            self.g_hat[idx],
-            self.f_hat[idx],
-            self.t_imp[idx],
-            self.locked,
-            self.f_ref[idx],
-            self.k_ref[idx],
-        )
-
-
-def _balls(p: _Problem, v: np.ndarray) -> tuple[np.ndarray, ...]:
-    """Scaled approach, cos and sin of the contact angle, centre distance of every ball."""
-    r = v[:, 0, None] * p.c + v[:, 1, None] * p.s
-    u = v[:, 2, None] + (v[:, 3, None] + p.t_imp[:, None]) * p.c + v[:, 4, None] * p.s
-    a, g = p.a_hat[:, None], p.g_hat[:, None]
-    rho = a - g + r
-    d = np.hypot(rho, u)
-    # d - A without cancellation: (rho^2 - A^2 + u^2)/(d + A), rho^2 - A^2 = (r - g)(2A - g + r)
-    delta = ((r - g) * (2.0 * a - g + r) + u * u) / (d + a)
-    safe = np.where(d > 0, d, 1.0)
-    return delta, np.where(d > 0, rho / safe, 1.0), np.where(d > 0, u / safe, 0.0), safe
-
-
-def _state(p: _Problem, v: np.ndarray, k: np.ndarray, hessian: bool = True) -> tuple[Any, ...]:
-    """Scaled potential, its gradient (n, 5) and Hessian (n, 5, 5), and the force size (n,)."""
-    delta, ca, sa, d = _balls(p, v)
-    pos = np.maximum(delta, 0.0)
-    root = np.sqrt(pos)
-    q = k * pos * root
-    energy = (q * pos).sum(1) / 2.5 - (p.f_hat * v).sum(1)
-    c, s = p.c, p.s
-    grad = (
-        np.stack(
-            [
-                (q * ca * c).sum(1),
-                (q * ca * s).sum(1),
-                (q * sa).sum(1),
-                (q * sa * c).sum(1),
-                (q * sa * s).sum(1),
-            ],
-            axis=1,
-        )
-        - p.f_hat
-    )
-    grad[:, p.locked] = 0.0
-    size = np.maximum(1.0, q.sum(1))
-    if not hessian:
-        return energy, grad, None, size
-    g_vec = np.stack([ca * c, ca * s, sa, sa * c, sa * s], axis=2)
-    h_vec = np.stack([-sa * c, -sa * s, ca, ca * c, ca * s], axis=2)
-    hess = np.einsum("nz,nzi,nzj->nij", 1.5 * k * root, g_vec, g_vec)
-    hess += np.einsum("nz,nzi,nzj->nij", q / d, h_vec, h_vec)
-    hess[:, p.locked, :] = 0.0
-    hess[:, :, p.locked] = 0.0
-    hess[:, p.locked, p.locked] = 1.0
-    return energy, grad, hess, size
-
-
-def _minimise(p: _Problem, v: np.ndarray, k: np.ndarray) -> tuple[np.ndarray, np.ndarray]:
-    """Damped Newton with an Armijo line search on the convex potential; every case to TOLERANCE.
-
-    Returns the displacements and the iterations per case; raises ConvergenceError for a case
-    whose residual stays above ACCEPT.
+    The directions of a symmetric case are exactly mirrored (the angle folded onto [0, 180°]
+    before its cosine is taken, as the radial engine does): cos(phi_j) and cos(-phi_j) computed
+    apart differ in their last bit, which at a clearance of millions of elastic approaches
+    unbalances the mirror balls' loads by 1e-5, against a y held at 0 by the symmetry.
     """
-    v = v.copy()
-    n = v.shape[0]
-    iterations = np.zeros(n, dtype=np.int64)
-    active = np.arange(n)
-    eye = np.eye(5)
-    for _ in range(MAX_ITERATIONS):
-        q = p.sub(active)
-        va, ka = v[active], k[active]
-        energy, grad, hess, size = _state(q, va, ka)
-        gnorm = np.linalg.norm(grad, axis=1)
-        done = gnorm <= TOLERANCE * size
-        trace = np.trace(hess, axis1=1, axis2=2)
-        hess += (1e-13 * trace + 1e-300)[:, None, None] * eye
-        step = -np.linalg.solve(hess, grad[:, :, None])[:, :, 0]
-        loose = np.flatnonzero(~(trace > 1.0 * q.locked.sum()) & ~done)  # no ball in contact
-        if loose.size:  # Newton has no curvature there: move along the load to the first contact
-            step[loose] = _to_contact(q.sub(loose), va[loose])
-        slope = (grad * step).sum(1)
-        t = np.ones(len(active))
-        pending = ~done
-        for _ in range(60):
-            if not pending.any():
-                break
-            trial = va + t[:, None] * step
-            e_new, g_new, _, _ = _state(q, trial, ka, hessian=False)
-            ok = (e_new <= energy + 1e-4 * t * slope) | (
-                np.linalg.norm(g_new, axis=1) < 0.5 * gnorm
-            )
-            pending &= ~ok
-            t = np.where(pending, 0.5 * t, t)
-        moved = t[:, None] * step
-        tiny = np.linalg.norm(moved, axis=1) <= 1e-14 * (
-            np.linalg.norm(va, axis=1) + q.a_hat + np.abs(q.g_hat)
-        )
-        v[active] = np.where(done[:, None], va, va + moved)
-        iterations[active] += 1
-        active = active[~(done | tiny)]
-        if active.size == 0:
-            break
-    _, grad, _, size = _state(p, v, k, hessian=False)
-    residual = np.linalg.norm(grad, axis=1) / size
-    bad = ~(residual <= ACCEPT)
-    if np.any(bad) or active.size:
-        found = residual[bad] if np.any(bad) else residual
-        known = found[~np.isnan(found)]  # nanmax of all-NaN would warn on the terminal
-        worst = float(known.max()) if known.size else math.nan
-        if np.any(bad):
-            raise ConvergenceError(
-                "combined-load ring equilibrium",
-                int(iterations.max()),
-                worst,
-                {"f_hat": p.f_hat[bad], "clearance_hat": 2.0 * p.g_hat[bad]},
-            )
-    return v, iterations
+    from bearingload.models._ring import SYMMETRY_SNAP_DEG
+
+    pitch = 360.0 / z
+    j = np.arange(z)
+    frac = np.mod(np.fmod(np.abs(cage), 360.0), pitch)
+    snap = SYMMETRY_SNAP_DEG
+    half = np.abs(frac - pitch / 2.0) <= snap
+    mirror = (frac <= snap) | (frac >= pitch - snap) | half
+    phi = np.deg2rad(cage)[:, None] + 2.0 * np.pi * j / z
+    c, s = np.cos(phi), np.sin(phi)
+    if mirror.any():  # ball j at (k_j / z) turns, k_j = j + first + (0 or 1/2)
+        first = np.round((cage[mirror] - 0.5 * pitch * half[mirror]) / pitch)
+        k = np.mod(j + first[:, None] + 0.5 * half[mirror, None], z)
+        folded = 2.0 * np.pi * np.minimum(k, z - k) / z
+        c[mirror], s[mirror] = np.cos(folded), np.where(k <= z / 2.0, 1.0, -1.0) * np.sin(folded)
+    return c, s, mirror
 
 
-def _to_contact(p: _Problem, v: np.ndarray) -> np.ndarray:
-    """For rings that touch no ball: the step along the generalised load (the potential falls
-    along it while no ball is loaded) that brings the nearest ball, to first order, a little
-    into contact; zero where no ball comes nearer that way."""
-    delta, ca, sa, _ = _balls(p, v)
-    direction = np.where(p.locked, 0.0, p.f_hat)
-    direction /= np.maximum(np.linalg.norm(direction, axis=1, keepdims=True), 1e-300)
-    c, s = p.c, p.s
-    rate = (
-        ca * c * direction[:, 0, None]
-        + ca * s * direction[:, 1, None]
-        + sa * direction[:, 2, None]
-        + sa * c * direction[:, 3, None]
-        + sa * s * direction[:, 4, None]
-    )  # d(delta_j)/dt along the direction
-    with np.errstate(divide="ignore", invalid="ignore"):
-        reach = np.where(rate > 0, -delta / rate, np.inf)
-    t = np.min(reach, axis=1)
-    t = np.where(np.isfinite(t), 1.001 * t + 1e-9, 0.0)
-    return direction * t[:, None]
+def _locks(
+    z: int, mirror: np.ndarray, loads: tuple[np.ndarray, ...], t_imp: np.ndarray, imposed: bool
+) -> tuple[np.ndarray, np.ndarray]:
+    """Which of (x, y, a, t, t_c) each case holds: (held (n, 5), imposed (n, 5)).
+
+    The tilt when a misalignment is given (at any value, 0 included); and the components that
+    are 0 by a symmetry of the case, exactly rather than to rounding: ``y`` and ``t_c`` when the
+    balls are symmetric about the load line (cage at 0 or half a pitch, within the radial
+    engine's snap) and no moment acts across it; ``a``, ``t``, ``t_c`` without an axial load,
+    moment or tilt (the mirror image across the mid-plane); ``x``, ``y``, ``t``, ``t_c`` without
+    a radial load, moment or tilt (the ring's z-fold symmetry, z >= 2). The potential is convex
+    and has the symmetry, so a minimum with these components 0 exists.
+    """
+    fr, fa, mm, mc = loads
+    n = fr.shape[0]
+    no_tilt = (mm == 0) & (mc == 0) & (t_imp == 0)
+    held = np.zeros((n, 5), dtype=bool)
+    held[:, 3] = imposed
+    held[:, [1, 4]] |= (mirror & (mc == 0))[:, None]
+    held[:, 2:] |= ((fa == 0) & no_tilt)[:, None]
+    held[:, [0, 1, 3, 4]] |= ((fr == 0) & no_tilt & (z >= 2))[:, None]
+    fixed = np.zeros((n, 5), dtype=bool)
+    fixed[:, 3] = imposed
+    return held, fixed
 
 
-def _start(p: _Problem, geo: _Geometry, cage: np.ndarray) -> np.ndarray:
+def _start(p: Problem, geo: _Geometry, cage: np.ndarray) -> np.ndarray:
     """Radial engine for F_r alone, the axial closed form for F_a (or the moment) alone."""
     from bearingload.models.equilibrium import solve
 
-    n = p.f_hat.shape[0]
+    n = p.f.shape[0]
     v = np.zeros((n, 5))
-    f = p.f_hat * p.f_ref[:, None]  # [N]
+    f = p.f * p.f_ref[:, None]  # [N]
     # a load component below 1e-3 of the largest does not pick the start (a vanishing F_r beside
     # a moment would otherwise start the tilt from the radial solution, far from the answer)
-    radial = p.f_hat[:, 0] > 1e-3
+    radial = p.f[:, 0] > 1e-3
     if radial.any():
         r = solve(p.z, f[radial, 0], p.k_ref[radial], 2.0 * geo.g[radial], cage[radial])
         v[radial, 0] = r.x / p.scale[radial]
         v[radial, 1] = r.y / p.scale[radial]
-    axial = np.abs(p.f_hat[:, 2]) > 1e-3
+    axial = np.abs(p.f[:, 2]) > 1e-3
     if axial.any():
         u, _, _ = axial_only(
             p.z, np.abs(f[axial, 2]), p.k_ref[axial], geo.A[axial], 2.0 * geo.g[axial]
         )
         v[axial, 2] = np.sign(f[axial, 2]) * u / p.scale[axial]
-    size = np.hypot(f[:, 3] * (not p.locked[3]), f[:, 4])
+    size = np.hypot(f[:, 3] * ~p.locked[:, 3], f[:, 4])
     pure = (~radial) & (~axial) & (size > 0) & (p.t_imp == 0)
     if pure.any():  # a moment alone: the ring tilts as if twice it were an axial load
         u, _, _ = axial_only(p.z, 2.0 * size[pure], p.k_ref[pure], geo.A[pure], 2.0 * geo.g[pure])
@@ -713,119 +594,161 @@ def _start(p: _Problem, geo: _Geometry, cage: np.ndarray) -> np.ndarray:
     # the last bits the radial engine and the bisection leave, which may vary with the batch
     with np.errstate(over="ignore"):
         single = v.astype(np.float32).astype(float)
-    return np.where(np.abs(v) < 1e30, single, v)
+    return np.where(p.locked, 0.0, np.where(np.abs(v) < 1e30, single, v))
 
 
 class _StiffnessCurve:
-    """K(alpha) of each case's geometry as a Chebyshev interpolant in cos(alpha), scaled by K_ref.
+    """K(alpha)/K_0 - 1 of each case's geometry, from a Chebyshev interpolant in cos(alpha).
 
-    ``K`` depends on the angle only through ``cos(alpha)`` in the curvature sums, smoothly (the
-    nearest singularity, ``cos(alpha) = +-d_m/D_w``, lies far outside [cos 89°, 1]); 17 Chebyshev
-    points reproduce the exact Hertz value to rounding (checked in the tests against
-    :func:`ball_stiffness_at`). One Hertz evaluation per distinct geometry instead of one per
-    ball and stiffness update.
+    ``K`` depends on the angle only through ``c = cos(alpha)`` in the curvature sums, smoothly
+    (the nearest singularity, ``c = +-d_m/D_w``, lies far outside [0, 1]). Interpolated is the
+    divided difference ``D(c) = (K(c)/K(1) - 1)/(c - 1)`` at 24 Chebyshev points of the first
+    kind (inside (0, 1)), so that ``kappa = (c - 1) D(c)`` with ``c - 1 = -sin^2/(1 + cos)`` keeps
+    its digits at a contact angle of 1e-13 rad (heavy preload, tiny axial load: the forces are
+    summed from the deviations, :mod:`bearingload.models._combined_ring`). The tests check it
+    against :func:`ball_stiffness_at`. One Hertz evaluation per node and distinct geometry.
     """
 
-    NODES = 17
-    LOW = math.cos(math.radians(89.0))
+    NODES = 24
 
     def __init__(self, geo: _Geometry, e: np.ndarray, nu: np.ndarray, k_ref: np.ndarray) -> None:
+        from bearingload.contact.hertz import ball_stiffness
+
         params = np.stack([geo.D_w, geo.d_m, geo.f_i, geo.f_o, e, nu], axis=1)
         uniq, inverse = np.unique(params, axis=0, return_inverse=True)
-        n = self.NODES - 1
-        j = np.arange(self.NODES)
-        self.x = np.cos(np.pi * j / n)
-        self.w = np.where(j % 2 == 0, 1.0, -1.0) * np.where((j == 0) | (j == n), 0.5, 1.0)
-        cos_nodes = self.LOW + (1.0 - self.LOW) * (self.x + 1.0) / 2.0
-        alpha = np.degrees(np.arccos(np.minimum(cos_nodes, 1.0)))
-        values = ball_stiffness_at(
-            alpha[None, :], *(uniq[:, i, None] for i in range(6))
-        )  # (unique geometries, nodes)
-        self.values = values[inverse.reshape(-1)] / k_ref[:, None]
+        theta = (2.0 * np.arange(self.NODES) + 1.0) * np.pi / (2.0 * self.NODES)
+        self.x = np.cos(theta)
+        self.w = np.where(np.arange(self.NODES) % 2 == 0, 1.0, -1.0) * np.sin(theta)
+        c = (self.x + 1.0) / 2.0
+        dw, dm, fi, fo, ee, nn = (uniq[:, i, None] for i in range(6))
+        at = np.append(c, 1.0)  # the nodes and cos(alpha) = 1, in one Hertz evaluation
+        k_all = ball_stiffness(dw, dm / at, fi, fo, ee, nn).ball  # (unique geometries, nodes + 1)
+        k_c, k_1 = k_all[:, :-1], k_all[:, -1:]
+        inv = inverse.reshape(-1)
+        self.values = ((k_c / k_1 - 1.0) / (c - 1.0))[inv] * (k_1[inv, 0] / k_ref)[:, None]
 
-    def __call__(self, idx: np.ndarray, cos_alpha: np.ndarray) -> np.ndarray:
-        """Scaled K of the cases ``idx`` at ``cos_alpha`` (shape (len(idx), z))."""
-        c = np.clip(cos_alpha, self.LOW, 1.0)
-        t = 2.0 * (c - self.LOW) / (1.0 - self.LOW) - 1.0
-        diff = t[..., None] - self.x
-        hit = diff == 0.0
-        with np.errstate(divide="ignore", invalid="ignore"):
-            terms = self.w / np.where(hit, 1.0, diff)
-        f = self.values[idx][:, None, :]
-        value = (terms * f).sum(-1) / terms.sum(-1)
-        exact = (hit * f).sum(-1)
-        return np.where(hit.any(-1), exact, value)
+    def __call__(self, idx: np.ndarray, cos_alpha: np.ndarray, cos_m1: np.ndarray) -> np.ndarray:
+        """kappa of the cases ``idx`` (shape (len(idx), z)) from cos(alpha) and cos(alpha) - 1."""
+        t = 2.0 * np.clip(cos_alpha, 0.0, 1.0) - 1.0
+        terms = self.w / (t[..., None] - self.x)  # t is never a node: no node is 0 or 1
+        return cos_m1 * (terms * self.values[idx][:, None, :]).sum(-1) / terms.sum(-1)
 
 
 def _solve_with_stiffness(
-    p: _Problem, geo: _Geometry, e: np.ndarray, nu: np.ndarray, hertz: bool, tilt: Any
-) -> tuple[np.ndarray, np.ndarray, np.ndarray]:
-    """Minimise with frozen ball stiffnesses, update them to the contact angles, repeat."""
+    p: Problem, geo: _Geometry, e: np.ndarray, nu: np.ndarray, hertz: bool
+) -> tuple[np.ndarray, np.ndarray, np.ndarray, np.ndarray]:
+    """Minimise with frozen ball stiffnesses, update them to the contact angles, repeat until
+    the update leaves the equilibrium (to the tolerance). Returns (v_hi, v_lo, kappa,
+    iterations)."""
     cage = np.rad2deg(np.arctan2(p.s[:, 0], p.c[:, 0]))
-    v = _start(p, geo, cage)
-    k = np.ones_like(p.c)
-    total = np.zeros(v.shape[0], dtype=np.int64)
-    todo = np.arange(v.shape[0])  # each case stops on its own: no case depends on the batch
-    change = np.inf
+    vh = _start(p, geo, cage)
+    vl = np.zeros_like(vh)
+    kappa = np.zeros_like(p.c)
+    total = np.zeros(vh.shape[0], dtype=np.int64)
+    todo = np.arange(vh.shape[0])  # each case stops on its own: no case depends on the batch
     curve: _StiffnessCurve | None = None
     for _ in range(MAX_STIFFNESS_UPDATES):
-        sub = p.sub(todo)
-        v[todo], its = _minimise(sub, v[todo], k[todo])
+        sub = p.take(todo)
+        vh[todo], vl[todo], its = _ring.minimise(sub, vh[todo], vl[todo], kappa[todo])
         total[todo] += its
         if not hertz:
-            return v, k, total
+            return vh, vl, kappa, total
         if curve is None:
             curve = _StiffnessCurve(geo, e, nu, p.k_ref)
-        delta, ca, _, _ = _balls(sub, v[todo])
-        loaded = delta > 0
-        k_new = np.where(loaded, curve(todo, ca), k[todo])
-        rel = np.max(np.where(loaded, np.abs(k_new / k[todo] - 1.0), 0.0), axis=1)
-        k[todo] = k_new
-        change = float(rel.max())
-        todo = todo[rel > 1e-13]
+        b = _ring.reference(sub, vh[todo], vl[todo])
+        lo = _ring.loads(sub, b, kappa[todo])
+        before = _ring.residual(sub, *_ring.forces(sub, lo), sub.locked)
+        k_new = np.where(lo.root > 0, curve(todo, lo.ca, lo.cam1), kappa[todo])
+        updated = _ring.loads(sub, b, k_new)
+        after = _ring.residual(sub, *_ring.forces(sub, updated), sub.locked)
+        kappa[todo] = k_new  # (a change of 1e-16 in kappa moves 1e6 times it under preload)
+        todo = todo[after > np.maximum(_ring.TOLERANCE, before)]
         if todo.size == 0:
-            return v, k, total
-    raise ConvergenceError("combined-load ball stiffness update", MAX_STIFFNESS_UPDATES, change, {})
+            return vh, vl, kappa, total
+    raise ConvergenceError(
+        "combined-load ball stiffness update", MAX_STIFFNESS_UPDATES, math.nan, {}
+    )
+
+
+def _checked(
+    p: Problem, vh: np.ndarray, vl: np.ndarray, kappa: np.ndarray, its: np.ndarray, given: dict
+) -> tuple[Any, ...]:
+    """The balls, loads and forces at the answer; ConvergenceError where the residual (held
+    components but an imposed tilt included) is above ACCEPT, InputError where a loaded ball
+    sits at the groove edge (its groove centres crossed, or its contact angle 90° to the
+    digits of a double)."""
+    b = _ring.reference(p, vh, vl)
+    lo = _ring.loads(p, b, kappa)
+    gen, size = _ring.forces(p, lo)
+    res = _ring.residual(p, gen, size, p.imposed)
+    bad = ~(res <= ACCEPT)
+    if np.any(bad):
+        known = res[bad][~np.isnan(res[bad])]  # nanmax of all-NaN would warn on the terminal
+        raise ConvergenceError(
+            "combined-load ring equilibrium",
+            int(its[bad].max()),
+            float(known.max()) if known.size else math.nan,
+            {k: v[bad] if np.ndim(v) else v for k, v in given.items()},
+            units=_UNITS,
+        )
+    # crossed groove centres, or a contact angle that rounds to 90° (a minimum may sit at the
+    # edge: there the potential's curvature across the groove ends)
+    edge = (lo.root > 0) & ((b.rho <= 0) | (np.rad2deg(np.arctan2(np.abs(lo.sa), lo.ca)) >= 90.0))
+    if np.any(edge):
+        case, ball = (int(i[0]) for i in np.nonzero(edge))
+        _refuse_edge(case, ball, given)
+    return b, lo, gen
+
+
+_UNITS = {"radial_load": "N", "axial_load": "N", "moment": "N mm", "moment_cross": "N mm",
+          "misalignment": "°", "clearance": "mm", "cage_angle": "°"}  # fmt: skip
+
+
+def _refuse_edge(case: int, ball: int, given: dict) -> None:
+    """InputError: ball ``ball`` of case ``case`` would carry load past the groove edge."""
+    from bearingload.errors import format_cases
+
+    one = {k: (v[case] if np.ndim(v) else v) for k, v in given.items()}
+    name = "axial_load" if one["axial_load"] != 0 else "moment"
+    raise InputError(
+        name,
+        f"the loads and the clearance drive ball {ball + 1} to a contact angle of 90°, the "
+        "edge of its groove (the centres of its two grooves cross): it would ride over the "
+        "groove shoulder, which the model does not describe; lower the axial load, moment or "
+        f"tilt, or the clearance ({format_cases(one, _UNITS)})",
+    )
 
 
 def _result(
-    p: _Problem,
+    p: Problem,
     geo: _Geometry,
-    v: np.ndarray,
-    k: np.ndarray,
-    its: np.ndarray,
+    answer: tuple[Any, ...],
     shape: tuple[int, ...],
-    fr: np.ndarray,
-    fa: np.ndarray,
-    mm: np.ndarray,
-    gr: np.ndarray,
-    cage: np.ndarray,
+    given: dict,
     misalignment: Any,
 ) -> CombinedDistribution:
     """Back to physical units and the case shape."""
-    # components left at rounding noise by a symmetric case (|v| < 1e-12 of the largest) are 0
-    big = np.maximum(np.abs(v).max(axis=1, keepdims=True), 1.0)
-    v = np.where(np.abs(v) < 1e-12 * big, 0.0, v)
-    delta, ca, sa, _ = _balls(p, v)
-    s = p.scale[:, None]
-    q = p.f_ref[:, None] * k * np.maximum(delta, 0.0) ** 1.5
+    v, kappa, its, (b, lo, gen) = answer
+    q = p.f_ref[:, None] * lo.q
     t = v[:, 3] + p.t_imp
-    moment = geo.R_i * (q * sa * p.c).sum(1) if misalignment is not None else mm
+    mm = given["moment"]
+    moment = geo.R_i * p.f_ref * gen[:, 3] if misalignment is not None else mm
     z = p.z
 
     def case(a: np.ndarray) -> np.ndarray:
-        return a.reshape(shape)
+        return np.asarray(a).reshape(shape)
 
     def ball(a: np.ndarray) -> np.ndarray:
         return a.reshape(shape + (z,))
 
+    cage = given["cage_angle"]
     phi = np.mod(cage[:, None] + 360.0 * np.arange(z) / z, 360.0)
     return CombinedDistribution(
         balls=z,
-        radial_load=case(fr),
-        axial_load=case(fa),
+        radial_load=case(given["radial_load"]),
+        axial_load=case(given["axial_load"]),
         moment=case(moment),
-        clearance=case(gr),
+        clearance=case(given["clearance"]),
         cage_angle=case(cage),
         free_contact_angle=case(np.rad2deg(geo.alpha0)),
         axial_play=case(2.0 * geo.A * np.sin(geo.alpha0)),
@@ -835,9 +758,9 @@ def _result(
         tilt=case(np.rad2deg(t * p.scale / geo.R_i)),
         tilt_cross=case(np.rad2deg(v[:, 4] * p.scale / geo.R_i)),
         ball_angles=ball(phi),
-        contact_angles=ball(np.rad2deg(np.arctan2(sa, ca))),
-        ball_approaches=ball(delta * s),
-        ball_stiffnesses=ball(k * p.k_ref[:, None]),
+        contact_angles=ball(np.rad2deg(np.arctan2(lo.sa, lo.ca))),
+        ball_approaches=ball((p.pre[:, None] + b.eps) * p.scale[:, None]),
+        ball_stiffnesses=ball((1.0 + kappa) * p.k_ref[:, None]),
         ball_loads=ball(q),
         iterations=case(its),
     )

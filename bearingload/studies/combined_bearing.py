@@ -135,12 +135,16 @@ def warned_tilt(
     return misalignment
 
 
-def check_misalignment(misalignment: float | None) -> None:
-    """Refuse an imposed misalignment beyond :data:`MISALIGNMENT_MAX`. [°]"""
-    if misalignment is not None and abs(misalignment) > MISALIGNMENT_MAX:
+def check_misalignment(misalignment: Any) -> None:
+    """Refuse an imposed misalignment beyond :data:`MISALIGNMENT_MAX` (one value or an array of
+    them, as a batch group passes). [°]"""
+    if misalignment is None:
+        return
+    worst = float(np.max(np.abs(misalignment)))
+    if worst > MISALIGNMENT_MAX:
         raise InputError(
             "misalignment",
-            f"must be within ±{MISALIGNMENT_MAX:g}° (got {misalignment:g}°): a deep-groove ball "
+            f"must be within ±{MISALIGNMENT_MAX:g}° (got {worst:g}°): a deep-groove ball "
             "bearing tolerates 2-10 arcmin, and a tilt of degrees would push the balls over the "
             "groove shoulders, which the model does not describe",
         )
@@ -158,7 +162,7 @@ def solve_on_bearing(
     *,
     cage_angle: Any = 0.0,
     moment: float | None = None,
-    misalignment: float | None = None,
+    misalignment: Any = None,
     clearance: Any = None,
     moment_cross: Any = None,
     tilt_radius: float | None = None,
@@ -177,8 +181,9 @@ def solve_on_bearing(
         call of :func:`bearingload.models.combined.solve_combined`. [°]
     moment : float, optional
         Moment in the plane of the load; default free tilt. [N mm]
-    misalignment : float, optional
-        Imposed tilt in the plane of the load, within ±:data:`MISALIGNMENT_MAX`. [°]
+    misalignment : float or array_like, optional
+        Imposed tilt in the plane of the load, within ±:data:`MISALIGNMENT_MAX` (an array: one
+        per case, as a batch group of rows gives it). [°]
     clearance : float or array_like, optional
         Radial internal clearance G_r instead of the bearing's (an array solves every one in
         the same vectorised call). [mm]
