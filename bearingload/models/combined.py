@@ -476,7 +476,7 @@ def solve_combined(
                            imposed=imposed, f_ref=f_ref, k_ref=k_ref)  # fmt: skip
     given = {"balls": z, "radial_load": fr, "axial_load": fa, "moment": mm, "moment_cross": mc,
              "clearance": gr, "cage_angle": cage}  # fmt: skip
-    if misalignment is not None:
+    if misalignment is not None:  # the moment is then the reaction, not an input
         given["misalignment"] = tilt_deg
     with np.errstate(all="ignore"):
         vh, vl, kappa, its = _solve_with_stiffness(problem, geo, e, nu, k_given is None)
@@ -688,7 +688,7 @@ def _checked(
             "combined-load ring equilibrium",
             int(its[bad].max()),
             float(known.max()) if known.size else math.nan,
-            {k: v[bad] if np.ndim(v) else v for k, v in given.items()},
+            _described(given, bad),
             units=_UNITS,
         )
     # crossed groove centres, or a contact angle that rounds to 90° (a minimum may sit at the
@@ -700,6 +700,16 @@ def _checked(
     return b, lo, gen
 
 
+def _described(given: dict, rows: np.ndarray) -> dict:
+    """The inputs of the cases ``rows``, for a message: without a moment none of them has (or,
+    under an imposed misalignment, that is a reaction)."""
+    out = {k: v[rows] if np.ndim(v) else v for k, v in given.items()}
+    for key in ("moment", "moment_cross"):
+        if "misalignment" in out and key == "moment" or not np.any(out[key]):
+            del out[key]
+    return out
+
+
 _UNITS = {"radial_load": "N", "axial_load": "N", "moment": "N mm", "moment_cross": "N mm",
           "misalignment": "°", "clearance": "mm", "cage_angle": "°"}  # fmt: skip
 
@@ -708,8 +718,13 @@ def _refuse_edge(case: int, ball: int, given: dict) -> None:
     """InputError: ball ``ball`` of case ``case`` would carry load past the groove edge."""
     from bearingload.errors import format_cases
 
-    one = {k: (v[case] if np.ndim(v) else v) for k, v in given.items()}
-    name = "axial_load" if one["axial_load"] != 0 else "moment"
+    one = _described(given, np.array([case]))
+    if one["axial_load"] != 0:
+        name = "axial_load"
+    else:
+        name = next(
+            (k for k in ("misalignment", "moment", "moment_cross") if k in one), "clearance"
+        )
     raise InputError(
         name,
         f"the loads and the clearance drive ball {ball + 1} to a contact angle of 90°, the "
