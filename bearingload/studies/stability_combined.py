@@ -34,6 +34,7 @@ A deep-groove bearing of the 6305 size is used throughout (``D_w = 11.5``, ``d_m
 from __future__ import annotations
 
 import math
+import re
 import warnings
 from collections import Counter
 from collections.abc import Callable
@@ -180,8 +181,11 @@ def _solve(series: Series, index: Any) -> Any:
 
 
 def _reason(exc: Exception) -> str:
+    """The kind of a refusal or failure: the message without the case it names (the ball's
+    number and the inputs), so that refusals of one kind count together."""
     if isinstance(exc, InputError):
-        return str(exc)
+        text = re.sub(r" \(balls = [^()]*\)$", "", str(exc))
+        return re.sub(r"\bball \d+ ", "a ball ", text)
     if isinstance(exc, ConvergenceError):
         return f"ConvergenceError (residual {exc.residual:.2g})"
     return f"{type(exc).__name__}: {str(exc)[:70]}"
