@@ -152,3 +152,19 @@ def test_a_moment_alone_converges_and_has_no_iso281_life():
             assert abs(case["tilt_cross_deg"]) < 1e-12  # balls symmetric about the load plane
     row = _rows(_batch("bearing,load,moment\n6205,0,2Nm\n", "--format", "csv").stdout)[0]
     assert row["rating_life [10^6 rev]"] == "" and float(row["reference_rating_life [10^6 rev]"])
+
+
+def test_iso281_life_of_a_row_without_f0_does_not_depend_on_its_group():
+    """Bearing 306 (GOST ball set: C0r known, f0 not): a row without an axial load has P = F_r
+    and L10 = (C_r/P)^3 as solve gives them, whether or not another row of its bearing has an
+    axial load (which has no ISO 281 P without f0)."""
+    alone = _rows(_batch("bearing,load,axial_load\n306,1kN,0\n", "--format", "csv").stdout)
+    mixed = _rows(
+        _batch("bearing,load,axial_load\n306,1kN,0\n306,1kN,100N\n", "--format", "csv").stdout
+    )
+    solved = _rows(
+        CliRunner().invoke(main, ["solve", "306", "-F", "1kN", "-A", "0", "--format", "csv"]).stdout
+    )[0]
+    for key in ("equivalent_load [N]", "rating_life [10^6 rev]"):
+        assert alone[0][key] == mixed[0][key] == solved[key] != "", key
+        assert mixed[1][key] == "", key

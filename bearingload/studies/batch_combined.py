@@ -116,9 +116,10 @@ def _group_values(group: list[dict[str, Any]]) -> Part:
                         tilt_radius=lever)  # fmt: skip
     cols |= {k: cols.get(k) for k in ("moment_cross", "tilt_radius")}  # None: not given
     cols = {k: _over_rows(v, n) for k, v in cols.items()}
-    life = cols["rating_life"]
-    if isinstance(life, np.ndarray) and np.isnan(life).any():  # a moment alone: no L10
-        cols["rating_life"] = [None if v != v else v for v in life.tolist()]
+    for key in ("equivalent_load", "rating_life"):  # a moment alone, an F_a without f0: none
+        values = cols[key]
+        if isinstance(values, np.ndarray) and np.isnan(values).any():
+            cols[key] = [None if v != v else v for v in values.tolist()]
     cols["clearance_pick"] = [g["bearing"].clearance_pick for g in group]
     tilts = np.broadcast_to(ring_tilt(r), (n,)).tolist()
     q, loaded = cols["q_max"].tolist(), cols["loaded_balls"].tolist()
