@@ -5,6 +5,7 @@ from __future__ import annotations
 
 import csv
 import io
+import json
 import random
 
 from click.testing import CliRunner
@@ -168,3 +169,16 @@ def test_iso281_life_of_a_row_without_f0_does_not_depend_on_its_group():
     for key in ("equivalent_load [N]", "rating_life [10^6 rev]"):
         assert alone[0][key] == mixed[0][key] == solved[key] != "", key
         assert mixed[1][key] == "", key
+
+
+def test_row_warnings_weigh_the_pressures_solve_reports():
+    """The contact pressure warning of a row is solve's: every ball at its contact angle (near
+    41°, the largest inner pressure 4155 MPa, below ISO 76's 4200), not the heaviest ball at
+    the groove's radial section (4276 MPa, which warned)."""
+    args = ["6205", "-F", "0", "--axial-load", "27kN", "-G", "0.1mm", "--format", "json"]
+    solved = json.loads(CliRunner().invoke(main, ["solve", *args]).stdout)
+    out = _batch("bearing,load,axial_load,clearance\n6205,0,27kN,0.1mm\n", "--format", "json")
+    row = json.loads(out.stdout)["cases"][0]
+    assert row["warnings"] == solved["cases"][0]["warnings"] == solved["warnings"]
+    assert not any("contact pressure" in w for w in row["warnings"])
+    assert solved["cases"][0]["p_max_inner"] < 4200.0
