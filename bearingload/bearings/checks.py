@@ -311,4 +311,4 @@ def combined_warnings(
             "are those of a bearing with normal clearance; L10r, from the load distribution, "
             "sees the clearance"
         )
-    return out
+    return out + clearance_findings(bearing)
