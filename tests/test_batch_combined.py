@@ -5,6 +5,7 @@ from __future__ import annotations
 
 import csv
 import io
+import json
 import random
 
 from click.testing import CliRunner
@@ -152,3 +153,32 @@ def test_a_moment_alone_converges_and_has_no_iso281_life():
             assert abs(case["tilt_cross_deg"]) < 1e-12  # balls symmetric about the load plane
     row = _rows(_batch("bearing,load,moment\n6205,0,2Nm\n", "--format", "csv").stdout)[0]
     assert row["rating_life [10^6 rev]"] == "" and float(row["reference_rating_life [10^6 rev]"])
+
+
+def test_iso281_life_of_a_row_without_f0_does_not_depend_on_its_group():
+    """Bearing 306 (GOST ball set: C0r known, f0 not): a row without an axial load has P = F_r
+    and L10 = (C_r/P)^3 as solve gives them, whether or not another row of its bearing has an
+    axial load (which has no ISO 281 P without f0)."""
+    alone = _rows(_batch("bearing,load,axial_load\n306,1kN,0\n", "--format", "csv").stdout)
+    mixed = _rows(
+        _batch("bearing,load,axial_load\n306,1kN,0\n306,1kN,100N\n", "--format", "csv").stdout
+    )
+    solved = _rows(
+        CliRunner().invoke(main, ["solve", "306", "-F", "1kN", "-A", "0", "--format", "csv"]).stdout
+    )[0]
+    for key in ("equivalent_load [N]", "rating_life [10^6 rev]"):
+        assert alone[0][key] == mixed[0][key] == solved[key] != "", key
+        assert mixed[1][key] == "", key
+
+
+def test_row_warnings_weigh_the_pressures_solve_reports():
+    """The contact pressure warning of a row is solve's: every ball at its contact angle (near
+    41°, the largest inner pressure 4155 MPa, below ISO 76's 4200), not the heaviest ball at
+    the groove's radial section (4276 MPa, which warned)."""
+    args = ["6205", "-F", "0", "--axial-load", "27kN", "-G", "0.1mm", "--format", "json"]
+    solved = json.loads(CliRunner().invoke(main, ["solve", *args]).stdout)
+    out = _batch("bearing,load,axial_load,clearance\n6205,0,27kN,0.1mm\n", "--format", "json")
+    row = json.loads(out.stdout)["cases"][0]
+    assert row["warnings"] == solved["cases"][0]["warnings"] == solved["warnings"]
+    assert not any("contact pressure" in w for w in row["warnings"])
+    assert solved["cases"][0]["p_max_inner"] < 4200.0

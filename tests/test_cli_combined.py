@@ -110,3 +110,37 @@ def test_clearance_range_side_by_side():
     assert picks == ["min", "mean", "max"]
     lives = [c["reference_rating_life"] for c in doc["cases"]]
     assert lives == sorted(lives)  # more clearance, larger contact angles, longer life here
+
+
+def test_the_normal_clearance_caveat_of_iso281_only_where_p_and_l10_are_given():
+    """With C3 and an axial load ISO 281's P and L10 use the factors for normal clearance, which
+    a warning says; bearing 306 (GOST ball set, no f0) has no P and no L10 under an axial load,
+    so nothing to warn about."""
+    caveat = "factors of Table 3 for normal clearance"
+    doc = _document("6205", "-F", "1kN", "--axial-load", "300N", "-G", "C3")
+    assert doc["cases"][0]["rating_life"] > 0
+    assert any(caveat in w for w in doc["warnings"])
+    doc = _document("306", "-F", "1kN", "--axial-load", "300N", "-G", "C4")
+    assert doc["cases"][0]["rating_life"] is None
+    assert doc["cases"][0]["equivalent_load"] is None
+    assert not any(caveat in w for w in doc["warnings"])
+
+
+@pytest.mark.parametrize(("clearance", "finding"), [("250um", "above the largest class"),
+                                                    ("-80um", "deeper than")])  # fmt: skip
+def test_clearance_beyond_the_iso_classes_is_flagged_under_a_combined_load(clearance, finding):
+    """A clearance the radial path flags (beyond C5 of ISO 5753-1 for the bore, or a preload
+    deeper than the package's bound) is flagged as well with an axial load, solve and batch."""
+    radial = _document("6205", "-F", "1kN", "-G", clearance)
+    combined = _document("6205", "-F", "1kN", "--axial-load", "100N", "-G", clearance)
+    assert any(finding in w for w in radial["warnings"])
+    assert [w for w in combined["warnings"] if finding in w] == [
+        w for w in radial["warnings"] if finding in w
+    ]
+    from click.testing import CliRunner
+
+    from bearingload.cli import main
+
+    text = f"bearing,load,axial_load,clearance\n6205,1kN,100N,{clearance}\n"
+    row = CliRunner().invoke(main, ["batch", "-", "--format", "json"], input=text)
+    assert any(finding in w for w in json.loads(row.stdout)["cases"][0]["warnings"])

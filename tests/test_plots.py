@@ -15,7 +15,7 @@ from bearingload.models.equilibrium import solve
 from bearingload.reports import plots
 from bearingload.studies.sweep import sweep
 
-from .cli_helpers import invoke, run_entry
+from .cli_helpers import invoke, run_entry, run_process
 
 CASE = ("-z", "9", "-F", "1kN", "-K", "1e5", "-G", "10um")
 
@@ -133,3 +133,13 @@ def test_save_figure_is_atomic(tmp_path, monkeypatch):
         plots.save_figure(fig, str(target))
     assert target.read_bytes() == b"old"
     assert [p.name for p in tmp_path.iterdir()] == ["p.png"]
+
+
+@pytest.mark.parametrize("extension", ["eps", "ps"])
+def test_postscript_plot_prints_nothing_on_the_terminal(tmp_path, extension):
+    """PostScript has no transparency (the grid lines are drawn opaque): matplotlib's log line
+    about it is not for the user's terminal; the file is written, stderr stays empty."""
+    path = tmp_path / f"loads.{extension}"
+    out = run_process("solve", *CASE, "--plot", str(path))
+    assert out.returncode == 0 and out.stderr == ""
+    assert path.read_bytes().startswith(b"%!PS")

@@ -303,11 +303,12 @@ def combined_warnings(
             "(0.167°) a deep-groove ball bearing tolerates (SKF catalogue)"
         )
     group = bearing.clearance_class
-    if axial_load != 0 and c0 and group in ("C3", "C4", "C5"):
+    f0 = None if bearing.geometry is None else bearing.geometry.f0  # P needs C0r and f0
+    if axial_load != 0 and c0 and f0 is not None and group in ("C3", "C4", "C5"):
         out.append(
             f"ISO 281's P = X F_r + Y F_a here uses the factors of Table 3 for normal clearance "
             f"(the standard's e, X, Y for {group} clearance are not in this package): P and L10 "
             "are those of a bearing with normal clearance; L10r, from the load distribution, "
             "sees the clearance"
         )
-    return out
+    return out + clearance_findings(bearing)

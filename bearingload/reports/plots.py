@@ -236,6 +236,7 @@ def plot_format(path: str) -> str:
 def save_figure(fig: Any, path: str) -> None:
     """Write ``fig`` to ``path`` in the format its extension names (:func:`plot_formats`), whole
     or not at all (temporary file, then rename)."""
+    import logging
     import tempfile
 
     fmt = plot_format(path) or "png"
@@ -243,7 +244,12 @@ def save_figure(fig: Any, path: str) -> None:
     if os.path.isdir(real):
         raise IsADirectoryError(21, "is a directory", path)
     fd, tmp = tempfile.mkstemp(prefix=".bearingload-", suffix=f".{fmt}", dir=os.path.dirname(real))
+    # PostScript has no transparency: matplotlib logs that it draws the grid opaque, a line
+    # for developers, not for the user's terminal
+    ps_log = logging.getLogger("matplotlib.backends.backend_ps")
+    level = ps_log.level
     try:
+        ps_log.setLevel(logging.ERROR)
         with os.fdopen(fd, "wb") as fh:
             fig.savefig(fh, format=fmt)
         umask = os.umask(0)
@@ -254,3 +260,5 @@ def save_figure(fig: Any, path: str) -> None:
         if os.path.exists(tmp):
             os.unlink(tmp)
         raise
+    finally:
+        ps_log.setLevel(level)

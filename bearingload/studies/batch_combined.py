@@ -116,19 +116,41 @@ def _group_values(group: list[dict[str, Any]]) -> Part:
                         tilt_radius=lever)  # fmt: skip
     cols |= {k: cols.get(k) for k in ("moment_cross", "tilt_radius")}  # None: not given
     cols = {k: _over_rows(v, n) for k, v in cols.items()}
-    life = cols["rating_life"]
-    if isinstance(life, np.ndarray) and np.isnan(life).any():  # a moment alone: no L10
-        cols["rating_life"] = [None if v != v else v for v in life.tolist()]
+    for key in ("equivalent_load", "rating_life"):  # a moment alone, an F_a without f0: none
+        values = cols[key]
+        if isinstance(values, np.ndarray) and np.isnan(values).any():
+            cols[key] = [None if v != v else v for v in values.tolist()]
     cols["clearance_pick"] = [g["bearing"].clearance_pick for g in group]
     tilts = np.broadcast_to(ring_tilt(r), (n,)).tolist()
     q, loaded = cols["q_max"].tolist(), cols["loaded_balls"].tolist()
+    pressures = _row_pressures(b, r, n)
     cols["warnings"] = [
         combined_warnings(g["bearing"], g["load"], g["axial_load"], q[i], loaded[i],
                           tilts[i] if g["moment"] is not None or g["moment_cross"]
-                          else g["misalignment"])
+                          else g["misalignment"], pressures[i])
         for i, g in enumerate(group)
     ]  # fmt: skip
     return [g["row"] for g in group], cols
+
+
+def _row_pressures(b: Any, r: Any, n: int) -> list[tuple[float, float] | None]:
+    """The largest inner and outer contact pressure of each of the ``n`` rows, every ball at its
+    load and contact angle, as ``solve`` weighs them (exact Hertz,
+    :func:`bearingload.bearings.checks.max_contact_pressures`, vectorised over the rows); None
+    per row where the ball geometry is not known. [MPa]"""
+    from bearingload.bearings.checks import max_contact_pressures
+
+    loads = np.asarray(r.ball_loads, dtype=float).reshape(n, -1)
+    angles = np.broadcast_to(np.asarray(r.contact_angles, dtype=float), loads.shape)
+    if max_contact_pressures(b, loads[0], angles[0]) is None:
+        return [None] * n
+    from bearingload.contact.hertz import ball_contacts
+
+    cos_a = np.clip(np.abs(np.cos(np.deg2rad(angles))), 1e-9, 1.0)  # as max_contact_pressures
+    c = ball_contacts(loads, b.ball_diameter, b.pitch_diameter / cos_a, b.f_i, b.f_o,
+                      b.modulus, b.poisson)  # fmt: skip
+    inner, outer = np.max(c.inner.p_max, axis=-1), np.max(c.outer.p_max, axis=-1)
+    return [(float(i), float(o)) for i, o in zip(inner, outer, strict=True)]
 
 
 def _over_rows(value: Any, n: int) -> Any:

@@ -282,7 +282,8 @@ def reference_lives(b: ResolvedBearing, r: CombinedDistribution, rotating: str, 
 def basic_lives(b: ResolvedBearing, c_r: float, fr: Any, fa: Any) -> tuple[Any, Any]:
     """ISO 281:2007's P = X F_r + Y F_a (5.2, Table 3) and L10 = (C_r/P)^3 (5.3) of every
     (F_r, F_a) [N]: P = F_r without an axial load; (None, None) with one where C0r or f0 is
-    unknown (not a catalogue bearing). Under a moment alone (F_r = F_a = 0) P = 0 and L10 is
+    unknown (not a catalogue bearing): NaN for those cases, each case on its own inputs, and
+    (None, None) when no case has a P. Under a moment alone (F_r = F_a = 0) P = 0 and L10 is
     NaN: ISO 281 has no life for it (L10r, ISO/TS 16281, has). [N], [10^6 rev]"""
     from bearingload.bearings.life import equivalent_load_deep_groove, rating_life
 
@@ -290,10 +291,10 @@ def basic_lives(b: ResolvedBearing, c_r: float, fr: Any, fa: Any) -> tuple[Any, 
     f0 = None if b.geometry is None else b.geometry.f0
     if b.C0 is not None and f0 is not None:
         p = np.where(fa == 0, fr, equivalent_load_deep_groove(fr, fa, b.C0, f0))
-    elif np.all(fa == 0):
-        p = fr
     else:
-        return None, None
+        p = np.where(fa == 0, fr, np.nan)
+        if np.isnan(p).all():
+            return None, None
     loaded = p > 0
     life = np.full(p.shape, np.nan)
     life[loaded] = rating_life(c_r, p[loaded])
