@@ -489,3 +489,44 @@ def test_random_campaign():
         assert np.all(np.abs(r.contact_angles[r.ball_loads > 0]) < 90.0)
         _assert_balanced(r, fr, fa, tilt.get("moment", 0.0 if not tilt else None), 0.0, 1e-11)
     assert solved >= 250
+
+
+# ------------------------------------------------- 1 or 2 balls: no equilibrium with a free tilt
+
+
+@pytest.mark.parametrize(
+    ("z", "kw"),
+    [
+        (1, {"radial_load": 1000.0, "axial_load": 1.0}),
+        (1, {"radial_load": 0.0, "axial_load": 100.0}),
+        (1, {"radial_load": 1000.0, "moment": 1000.0}),
+        (1, {"radial_load": 1000.0, "moment_cross": 1000.0, "misalignment": 0.0}),
+        (2, {"radial_load": 0.0, "moment_cross": 1000.0}),
+        (2, {"radial_load": 0.0, "moment": 1000.0, "cage_angle": 90.0}),
+        (2, {"radial_load": 1000.0, "moment_cross": 1000.0, "misalignment": 0.0}),
+    ],
+)
+def test_one_or_two_balls_that_cannot_hold_the_ring_are_refused_naming_balls(z, kw):
+    """These ended in a ConvergenceError after up to 2000 iterations (one ball under an axial
+    load turns the ring about itself; two balls on a line resist no moment about that line)."""
+    with pytest.raises(InputError, match="^balls: .* cannot hold the ring"):
+        solve_combined(z, **kw, ball_diameter=7.938, pitch_diameter=38.5, clearance=0.0125)
+
+
+@pytest.mark.parametrize(
+    ("z", "kw"),
+    [
+        (1, {"radial_load": 1000.0, "axial_load": 100.0, "misalignment": 0.0}),
+        (2, {"radial_load": 1000.0, "axial_load": 100.0}),
+        (2, {"radial_load": 0.0, "axial_load": 100.0}),
+        (2, {"radial_load": 1000.0, "moment": 1000.0}),
+        (2, {"radial_load": 0.0, "moment_cross": 1000.0, "cage_angle": 90.0}),
+    ],
+)
+def test_one_or_two_balls_that_can_hold_the_ring_balance_it(z, kw):
+    r = solve_combined(z, **kw, ball_diameter=7.938, pitch_diameter=38.5, clearance=0.0125)
+    phi = np.deg2rad(r.ball_angles)
+    alpha = np.deg2rad(r.contact_angles)
+    q = r.ball_loads
+    assert abs(float(np.sum(q * np.cos(alpha) * np.cos(phi))) - kw["radial_load"]) <= 1e-9 * 1e3
+    assert abs(float(np.sum(q * np.sin(alpha))) - kw.get("axial_load", 0.0)) <= 1e-9 * 1e3

@@ -462,6 +462,7 @@ def solve_combined(
             "with 1 or 2 balls a ball must sit on the load line (cage angle 0), "
             "otherwise no equilibrium exists",
         )
+    _check_few_balls(z, cage, fa, mm, mc, misalignment is not None)
     k_ref = flat[13] if k_given is not None else ball_stiffness_at(0.0, dw, dm, fi, fo, e, nu)
     k_ref = np.asarray(k_ref, dtype=float)
     f_ref = np.maximum(np.maximum(fr, np.abs(fa)), np.hypot(mm, mc) / geo.R_i)
@@ -483,6 +484,37 @@ def solve_combined(
         checked = _checked(problem, vh, vl, kappa, its, given)
         answer = (vh + vl, kappa, its, checked)
         return _result(problem, geo, answer, shape, given, misalignment)
+
+
+def _check_few_balls(
+    z: int, cage: np.ndarray, fa: np.ndarray, mm: np.ndarray, mc: np.ndarray, locked: bool
+) -> None:
+    """Refuse the loads that 1 or 2 balls cannot hold with the ring free to tilt.
+
+    One ball carries one force: a free tilt turns the ring about it under any axial load or
+    moment, and nothing holds a moment about the ball's own line. Two balls (at the cage angle c
+    and c + 180°) hold a moment only about the axis across their line: the component
+    ``M sin c - M_c cos c`` about the line itself turns the ring freely, and with the tilt
+    imposed so does ``M_c`` when the balls sit on the load line.
+    """
+    if z >= 3:
+        return
+    c = np.deg2rad(cage)
+    size = np.maximum(np.hypot(mm, mc), 1e-300)
+    if z == 1:
+        free = np.abs(mc) > 0 if locked else (fa != 0) | (mm != 0) | (mc != 0)
+    elif locked:
+        free = (np.abs(np.sin(c)) < 1e-12) & (mc != 0)
+    else:
+        free = np.abs(mm * np.sin(c) - mc * np.cos(c)) > 1e-9 * size
+    if np.any(free):
+        what = "an axial load or a moment" if z == 1 and not locked else "this moment"
+        raise InputError(
+            "balls",
+            f"{z} ball{'s' if z > 1 else ''} cannot hold the ring under {what}: nothing stops it "
+            "turning about the balls' line (no equilibrium exists); give at least 3 balls"
+            + ("" if locked else ", or impose the tilt with a misalignment (0: aligned)"),
+        )
 
 
 #: Largest groove-geometry length A over the one-ball approach (F/K)^(2/3) the combined solver
