@@ -71,6 +71,7 @@ from __future__ import annotations
 
 import dataclasses
 import math
+from collections import OrderedDict
 from dataclasses import dataclass
 from typing import Any
 
@@ -462,8 +463,12 @@ def solve_combined(
             "with 1 or 2 balls a ball must sit on the load line (cage angle 0), "
             "otherwise no equilibrium exists",
         )
-    k_ref = flat[13] if k_given is not None else ball_stiffness_at(0.0, dw, dm, fi, fo, e, nu)
-    k_ref = np.asarray(k_ref, dtype=float)
+    curve = None
+    if k_given is None:
+        k_ref, values = _hertz_setup(geo, e, nu)
+        curve = _StiffnessCurve(values)
+    else:
+        k_ref = flat[13]
     f_ref = np.maximum(np.maximum(fr, np.abs(fa)), np.hypot(mm, mc) / geo.R_i)
     if np.any(f_ref <= 0):
         raise InputError("radial_load", "give a radial load, an axial load or a moment")
@@ -479,7 +484,7 @@ def solve_combined(
     if misalignment is not None:  # the moment is then the reaction, not an input
         given["misalignment"] = tilt_deg
     with np.errstate(all="ignore"):
-        vh, vl, kappa, its = _solve_with_stiffness(problem, geo, e, nu, k_given is None)
+        vh, vl, kappa, its = _solve_with_stiffness(problem, geo, curve)
         checked = _checked(problem, vh, vl, kappa, its, given)
         answer = (vh + vl, kappa, its, checked)
         return _result(problem, geo, answer, shape, given, misalignment)
@@ -597,6 +602,58 @@ def _start(p: Problem, geo: _Geometry, cage: np.ndarray) -> np.ndarray:
     return np.where(p.locked, 0.0, np.where(np.abs(v) < 1e30, single, v))
 
 
+#: Chebyshev nodes of the stiffness curve (first kind) on [-1, 1], their barycentric weights
+#: and cos(alpha) at each. [-]
+_NODES = 24
+_NODE_THETA = (2.0 * np.arange(_NODES) + 1.0) * np.pi / (2.0 * _NODES)
+_NODE_X = np.cos(_NODE_THETA)
+_NODE_W = np.where(np.arange(_NODES) % 2 == 0, 1.0, -1.0) * np.sin(_NODE_THETA)
+_NODE_COS = (_NODE_X + 1.0) / 2.0
+#: Distinct geometries (D_w, d_m, f_i, f_o, E, nu) whose Hertz set-up is kept across calls, the
+#: least recently used dropped first: an optimiser or a rotor time-stepper calls with the same
+#: bearing thousands of times, and the set-up (25 exact Hertz evaluations, each solving the
+#: ellipticity equation) costs more than a solve. [-]
+SETUP_CACHE_SIZE = 256
+_SETUP: OrderedDict[tuple[float, ...], tuple[float, np.ndarray]] = OrderedDict()
+
+
+def _hertz_setup(geo: _Geometry, e: np.ndarray, nu: np.ndarray) -> tuple[np.ndarray, np.ndarray]:
+    """Per case, K_0 = K(alpha = 0) [N/mm^1.5] (n,) and the divided differences ``D(c) = (K(c)/
+    K_0 - 1)/(c - 1)`` at the nodes of :class:`_StiffnessCurve` (n, NODES): one Hertz evaluation
+    (:func:`bearingload.contact.hertz.ball_stiffness`, element by element, so an entry does not
+    depend on the geometries computed with it) of the nodes and c = 1 per distinct geometry not
+    in the cache. The cache holds exactly what would be computed: it changes no bit."""
+    from bearingload.contact.hertz import ball_stiffness
+
+    params = np.stack([geo.D_w, geo.d_m, geo.f_i, geo.f_o, e, nu], axis=1)
+    if params.shape[0] == 1:
+        uniq, inv = params, np.zeros(1, dtype=np.intp)
+    else:
+        uniq, inverse = np.unique(params, axis=0, return_inverse=True)
+        inv = inverse.reshape(-1)
+    keys = [tuple(row) for row in uniq.tolist()]
+    missing = [i for i, key in enumerate(keys) if key not in _SETUP]
+    found = {}
+    if missing:
+        dw, dm, fi, fo, ee, nn = (uniq[missing, i, None] for i in range(6))
+        at = np.append(_NODE_COS, 1.0)  # the nodes and cos(alpha) = 1, in one Hertz evaluation
+        k_all = ball_stiffness(dw, dm / at, fi, fo, ee, nn).ball  # (geometries, nodes + 1)
+        k_c, k_1 = k_all[:, :-1], k_all[:, -1:]
+        d = (k_c / k_1 - 1.0) / (_NODE_COS - 1.0)
+        for row, i in enumerate(missing):
+            found[keys[i]] = (float(k_1[row, 0]), d[row])
+    rows = []
+    for key in keys:
+        entry = found.get(key) or _SETUP[key]
+        _SETUP[key] = entry
+        _SETUP.move_to_end(key)
+        rows.append(entry)
+    while len(_SETUP) > SETUP_CACHE_SIZE:
+        _SETUP.popitem(last=False)
+    k0 = np.array([r[0] for r in rows])[inv]
+    return k0, np.stack([r[1] for r in rows])[inv]
+
+
 class _StiffnessCurve:
     """K(alpha)/K_0 - 1 of each case's geometry, from a Chebyshev interpolant in cos(alpha).
 
@@ -609,23 +666,13 @@ class _StiffnessCurve:
     against :func:`ball_stiffness_at`. One Hertz evaluation per node and distinct geometry.
     """
 
-    NODES = 24
+    NODES = _NODES
 
-    def __init__(self, geo: _Geometry, e: np.ndarray, nu: np.ndarray, k_ref: np.ndarray) -> None:
-        from bearingload.contact.hertz import ball_stiffness
-
-        params = np.stack([geo.D_w, geo.d_m, geo.f_i, geo.f_o, e, nu], axis=1)
-        uniq, inverse = np.unique(params, axis=0, return_inverse=True)
-        theta = (2.0 * np.arange(self.NODES) + 1.0) * np.pi / (2.0 * self.NODES)
-        self.x = np.cos(theta)
-        self.w = np.where(np.arange(self.NODES) % 2 == 0, 1.0, -1.0) * np.sin(theta)
-        c = (self.x + 1.0) / 2.0
-        dw, dm, fi, fo, ee, nn = (uniq[:, i, None] for i in range(6))
-        at = np.append(c, 1.0)  # the nodes and cos(alpha) = 1, in one Hertz evaluation
-        k_all = ball_stiffness(dw, dm / at, fi, fo, ee, nn).ball  # (unique geometries, nodes + 1)
-        k_c, k_1 = k_all[:, :-1], k_all[:, -1:]
-        inv = inverse.reshape(-1)
-        self.values = ((k_c / k_1 - 1.0) / (c - 1.0))[inv] * (k_1[inv, 0] / k_ref)[:, None]
+    def __init__(self, values: np.ndarray) -> None:
+        """``values``: D at the nodes over each case's K_0, (n, NODES) (:func:`_hertz_setup`)."""
+        self.x = _NODE_X
+        self.w = _NODE_W
+        self.values = values
 
     def __call__(self, idx: np.ndarray, cos_alpha: np.ndarray, cos_m1: np.ndarray) -> np.ndarray:
         """kappa of the cases ``idx`` (shape (len(idx), z)) from cos(alpha) and cos(alpha) - 1."""
@@ -635,7 +682,7 @@ class _StiffnessCurve:
 
 
 def _solve_with_stiffness(
-    p: Problem, geo: _Geometry, e: np.ndarray, nu: np.ndarray, hertz: bool
+    p: Problem, geo: _Geometry, curve: _StiffnessCurve | None
 ) -> tuple[np.ndarray, np.ndarray, np.ndarray, np.ndarray]:
     """Minimise with frozen ball stiffnesses, update them to the contact angles, repeat until
     the update leaves the equilibrium (to the tolerance). Returns (v_hi, v_lo, kappa,
@@ -646,15 +693,12 @@ def _solve_with_stiffness(
     kappa = np.zeros_like(p.c)
     total = np.zeros(vh.shape[0], dtype=np.int64)
     todo = np.arange(vh.shape[0])  # each case stops on its own: no case depends on the batch
-    curve: _StiffnessCurve | None = None
     for _ in range(MAX_STIFFNESS_UPDATES):
         sub = p.take(todo)
         vh[todo], vl[todo], its = _ring.minimise(sub, vh[todo], vl[todo], kappa[todo])
         total[todo] += its
-        if not hertz:
-            return vh, vl, kappa, total
         if curve is None:
-            curve = _StiffnessCurve(geo, e, nu, p.k_ref)
+            return vh, vl, kappa, total
         b = _ring.reference(sub, vh[todo], vl[todo])
         lo = _ring.loads(sub, b, kappa[todo])
         before = _ring.residual(sub, *_ring.forces(sub, lo), sub.locked)
