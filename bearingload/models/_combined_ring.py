@@ -410,25 +410,29 @@ REFRESH = 8
 
 
 def minimise(
-    p: Problem, vh: np.ndarray, vl: np.ndarray, kappa: np.ndarray
+    p: Problem, vh: np.ndarray, vl: np.ndarray, kappa: np.ndarray, start: Point | None = None
 ) -> tuple[np.ndarray, np.ndarray, np.ndarray]:
     """Damped Newton with an Armijo line search on the convex potential (stiffness ``1 +
     kappa`` frozen): each case until every free component is within TOLERANCE (see
     :func:`residual`) or its residual stops falling (rounding). The point a step reaches is
     the line search's trial (:func:`offset` from the last); a case is recomputed afresh in
     double-double (:func:`reference`) every REFRESH steps and before it counts as converged.
-    Returns the position (hi, lo) and the iterations per case; the caller checks the residual."""
+    ``start``: the point at ``(vh, vl)`` if the caller has it (``Point.at`` of
+    :func:`reference` there, as computed here otherwise). Returns the position (hi, lo) and the
+    iterations per case; the caller checks the residual."""
     vh, vl = vh.copy(), vl.copy()
     iterations = np.zeros(vh.shape[0], dtype=np.int64)
     active = np.arange(vh.shape[0])
     q, ka = p, kappa
-    pt = Point.at(q, ka, reference(q, vh, vl))
+    pt = Point.at(q, ka, reference(q, vh, vl)) if start is None else start
     best = np.full(active.size, np.inf)
     stall = np.zeros(active.size, dtype=np.int64)
     slow = np.zeros(active.size, dtype=bool)
     for _ in range(MAX_ITERATIONS):
         old = np.flatnonzero(((pt.res <= TOLERANCE) & (pt.age > 0)) | (pt.age >= REFRESH))
-        if old.size:
+        if old.size == active.size:  # all of them: no copies
+            pt = Point.at(q, ka, reference(q, vh[active], vl[active]))
+        elif old.size:
             sub = q.take(old)
             pt.put(old, Point.at(sub, ka[old], reference(sub, vh[active[old]], vl[active[old]])))
         better = (pt.res < 0.5 * best) | (pt.res > STALL_BELOW)
@@ -449,8 +453,9 @@ def minimise(
         keep = np.flatnonzero(~stop)
         if not keep.size:
             break
-        active, q, ka, pt = active[keep], q.take(keep), ka[keep], pt.take(keep)
-        best, stall, slow = best[keep], stall[keep], slow[keep]
+        if keep.size < active.size:
+            active, q, ka, pt = active[keep], q.take(keep), ka[keep], pt.take(keep)
+            best, stall, slow = best[keep], stall[keep], slow[keep]
     return vh, vl, iterations
 
 
