@@ -411,15 +411,15 @@ REFRESH = 8
 
 def minimise(
     p: Problem, vh: np.ndarray, vl: np.ndarray, kappa: np.ndarray, start: Point | None = None
-) -> tuple[np.ndarray, np.ndarray, np.ndarray]:
+) -> tuple[np.ndarray, np.ndarray, np.ndarray, Point]:
     """Damped Newton with an Armijo line search on the convex potential (stiffness ``1 +
     kappa`` frozen): each case until every free component is within TOLERANCE (see
     :func:`residual`) or its residual stops falling (rounding). The point a step reaches is
     the line search's trial (:func:`offset` from the last); a case is recomputed afresh in
     double-double (:func:`reference`) every REFRESH steps and before it counts as converged.
     ``start``: the point at ``(vh, vl)`` if the caller has it (``Point.at`` of
-    :func:`reference` there, as computed here otherwise). Returns the position (hi, lo) and the
-    iterations per case; the caller checks the residual."""
+    :func:`reference` there, as computed here otherwise). Returns the position (hi, lo), the
+    iterations per case and the point there (fresh); the caller checks the residual."""
     vh, vl = vh.copy(), vl.copy()
     iterations = np.zeros(vh.shape[0], dtype=np.int64)
     active = np.arange(vh.shape[0])
@@ -428,6 +428,7 @@ def minimise(
     best = np.full(active.size, np.inf)
     stall = np.zeros(active.size, dtype=np.int64)
     slow = np.zeros(active.size, dtype=bool)
+    ends: list[tuple[np.ndarray, Point, np.ndarray]] = []
     for _ in range(MAX_ITERATIONS):
         old = np.flatnonzero(((pt.res <= TOLERANCE) & (pt.age > 0)) | (pt.age >= REFRESH))
         if old.size == active.size:  # all of them: no copies
@@ -439,6 +440,9 @@ def minimise(
         best = np.where(better, pt.res, best)
         stall = np.where(better, 0, stall + 1)
         stop = (pt.res <= TOLERANCE) | (stall >= STALL) | ~np.isfinite(pt.res)
+        if stop.all():  # (no step: the position and the point stay)
+            ends.append((active, pt, pt.age == 0))
+            break
         grad = np.where(q.locked, 0.0, pt.gen - q.f)
         step, hess = _newton_step(q, pt.b, pt.lo, ka, grad, stop)
         before = pt.res.copy()  # the line search may change pt in place
@@ -446,6 +450,8 @@ def minimise(
         slow = pt.res > 0.9 * before
         still = ~np.any(moved != 0.0, axis=1)
         stop |= still & (pt.age == 0)  # no step from a fresh point: rounding
+        if stop.any():
+            ends.append((active[stop], pt.take(np.flatnonzero(stop)), pt.age[stop] == 0))
         pt.age[still] = REFRESH  # no step from a carried point: recompute it first
         hi, lo_ = _two_sum(vh[active], moved)
         vh[active], vl[active] = _fast(hi, lo_ + vl[active])
@@ -456,7 +462,38 @@ def minimise(
         if keep.size < active.size:
             active, q, ka, pt = active[keep], q.take(keep), ka[keep], pt.take(keep)
             best, stall, slow = best[keep], stall[keep], slow[keep]
-    return vh, vl, iterations
+    return vh, vl, iterations, _ended(p, kappa, vh, vl, ends)
+
+
+def _ended(
+    p: Problem, kappa: np.ndarray, vh: np.ndarray, vl: np.ndarray, ends: list[tuple[Any, ...]]
+) -> Point:
+    """The point of every case at its final position: where the minimisation stopped at a fresh
+    point (:func:`reference` there), that one; the others recomputed afresh."""
+    n = vh.shape[0]
+    fresh = np.zeros(n, dtype=bool)
+    if len(ends) == 1 and ends[0][0].size == n and ends[0][2].all():
+        rows, pt, _ = ends[0]
+        if np.array_equal(rows, np.arange(n)):
+            return pt
+    for rows, _, is_fresh in ends:
+        fresh[rows[is_fresh]] = True
+    redo = np.flatnonzero(~fresh)
+    if redo.size == n:
+        return Point.at(p, kappa, reference(p, vh, vl))
+    first = ends[0][1]
+    out = Point(
+        Balls(*(np.empty((n,) + getattr(first.b, k).shape[1:]) for k in _BALL_FIELDS)),
+        Loads(*(np.empty((n,) + getattr(first.lo, k).shape[1:]) for k in _LOAD_FIELDS)),
+        np.empty((n, 5)), np.empty((n, 5)), np.empty(n), np.zeros(n, dtype=np.int64),
+    )  # fmt: skip
+    for rows, pt, is_fresh in ends:
+        keep = np.flatnonzero(is_fresh)
+        out.put(rows[keep], pt.take(keep))
+    if redo.size:
+        sub = p.take(redo)
+        out.put(redo, Point.at(sub, kappa[redo], reference(sub, vh[redo], vl[redo])))
+    return out
 
 
 def _newton_step(

@@ -502,8 +502,8 @@ def solve_combined(
     if misalignment is not None:  # the moment is then the reaction, not an input
         given["misalignment"] = tilt_deg
     with np.errstate(all="ignore"):
-        vh, vl, kappa, its = _solve_with_stiffness(problem, geo, curve)
-        checked = _checked(problem, vh, vl, kappa, its, given)
+        vh, vl, kappa, its, end = _solve_with_stiffness(problem, geo, curve)
+        checked = _checked(problem, end, its, given)
         answer = (vh + vl, kappa, its, checked)
         return _result(problem, geo, answer, shape, given, misalignment)
 
@@ -704,10 +704,11 @@ class _StiffnessCurve:
 
 def _solve_with_stiffness(
     p: Problem, geo: _Geometry, curve: _StiffnessCurve | None
-) -> tuple[np.ndarray, np.ndarray, np.ndarray, np.ndarray]:
+) -> tuple[np.ndarray, np.ndarray, np.ndarray, np.ndarray, _ring.Point]:
     """Minimise with frozen ball stiffnesses, update them to the contact angles, repeat until
     the update leaves the equilibrium (to the tolerance). Returns (v_hi, v_lo, kappa,
-    iterations)."""
+    iterations, the point there: :func:`_ring.reference` at the position, the loads with
+    kappa)."""
     cage = np.rad2deg(np.arctan2(p.s[:, 0], p.c[:, 0]))
     vh = _start(p, geo, cage)
     vl = np.zeros_like(vh)
@@ -715,21 +716,24 @@ def _solve_with_stiffness(
     total = np.zeros(vh.shape[0], dtype=np.int64)
     todo = np.arange(vh.shape[0])  # each case stops on its own: no case depends on the batch
     sub, start = p, None
+    last: _ring.Point | None = None  # every case's point at its position, with its stiffness
     for _ in range(MAX_STIFFNESS_UPDATES):
-        vh[todo], vl[todo], its = _ring.minimise(sub, vh[todo], vl[todo], kappa[todo], start)
+        vh[todo], vl[todo], its, end = _ring.minimise(sub, vh[todo], vl[todo], kappa[todo], start)
         total[todo] += its
         if curve is None:
-            return vh, vl, kappa, total
-        b = _ring.reference(sub, vh[todo], vl[todo])
-        lo = _ring.loads(sub, b, kappa[todo])
-        before = _ring.residual(sub, *_ring.forces(sub, lo), sub.locked)
+            return vh, vl, kappa, total, end
+        b, lo = end.b, end.lo  # (fresh: reference() at the position)
         k_new = np.where(lo.root > 0, curve(todo, lo.ca, lo.cam1), kappa[todo])
         # the point the next minimisation starts from (the same position, the new stiffness)
         start = _ring.Point.at(sub, k_new, b)
+        if last is None:
+            last = start
+        else:
+            last.put(todo, start)
         kappa[todo] = k_new  # (a change of 1e-16 in kappa moves 1e6 times it under preload)
-        going = np.flatnonzero(start.res > np.maximum(_ring.TOLERANCE, before))
+        going = np.flatnonzero(start.res > np.maximum(_ring.TOLERANCE, end.res))
         if going.size == 0:
-            return vh, vl, kappa, total
+            return vh, vl, kappa, total, last
         if going.size < todo.size:
             todo, sub, start = todo[going], sub.take(going), start.take(going)
     raise ConvergenceError(
@@ -737,16 +741,12 @@ def _solve_with_stiffness(
     )
 
 
-def _checked(
-    p: Problem, vh: np.ndarray, vl: np.ndarray, kappa: np.ndarray, its: np.ndarray, given: dict
-) -> tuple[Any, ...]:
+def _checked(p: Problem, end: _ring.Point, its: np.ndarray, given: dict) -> tuple[Any, ...]:
     """The balls, loads and forces at the answer; ConvergenceError where the residual (held
     components but an imposed tilt included) is above ACCEPT, InputError where a loaded ball
     sits at the groove edge (its groove centres crossed, or its contact angle 90° to the
-    digits of a double)."""
-    b = _ring.reference(p, vh, vl)
-    lo = _ring.loads(p, b, kappa)
-    gen, size = _ring.forces(p, lo)
+    digits of a double). ``end``: the point at the answer (:func:`_solve_with_stiffness`)."""
+    b, lo, gen, size = end.b, end.lo, end.gen, end.size
     res = _ring.residual(p, gen, size, p.imposed)
     bad = ~(res <= ACCEPT)
     if np.any(bad):
