@@ -36,6 +36,7 @@ Every operation is row-wise (one case per row), so no case depends on the others
 from __future__ import annotations
 
 import dataclasses
+import functools
 from dataclasses import dataclass
 from typing import Any
 
@@ -148,6 +149,12 @@ class Problem:
                 value = value[idx]
             out[field.name] = value
         return Problem(**out)
+
+    @functools.cached_property
+    def arms(self) -> np.ndarray:
+        """The factors of the ball forces in the generalised ones, ``(c, s, 1, c, s)`` per ball
+        (n, 5, z)."""
+        return np.stack([self.c, self.s, np.ones_like(self.c), self.c, self.s], axis=1)
 
     @property
     def deviation(self) -> np.ndarray:
@@ -288,21 +295,32 @@ def forces(p: Problem, lo: Loads) -> tuple[np.ndarray, np.ndarray]:
     """The generalised ball forces on the ring, ``sum_j (q_j - q_0) g_j + q_0 sum_j g'_j`` (see
     the module notes), and the sum of the magnitudes of the terms of each (its rounding level
     over eps), (n, 5) each."""
-    c, s, q0 = p.c, p.s, lo.q0[:, None]
+    q0 = lo.q0[:, None]
     radial = lo.dq * lo.ca + q0 * lo.cam1
     axial = (lo.dq + q0) * lo.sa
-    gen = np.stack(
-        [(radial * c).sum(1), (radial * s).sum(1), axial.sum(1), (axial * c).sum(1),
-         (axial * s).sum(1)], axis=1
-    )  # fmt: skip
+    gen = _sum_arms(radial, axial, p.arms)
     w_r = np.abs(lo.dq * lo.ca) + q0 * np.abs(lo.cam1)
     w_a = (np.abs(lo.dq) + q0) * np.abs(lo.sa)
-    ac, as_ = np.abs(c), np.abs(s)
-    size = np.stack(
-        [(w_r * ac).sum(1), (w_r * as_).sum(1), w_a.sum(1), (w_a * ac).sum(1),
-         (w_a * as_).sum(1)], axis=1
-    )  # fmt: skip
-    return gen, size
+    return gen, _sum_arms(w_r, w_a, np.abs(p.arms))
+
+
+def _times_arms(radial: np.ndarray, axial: np.ndarray, arms: np.ndarray) -> np.ndarray:
+    """``(radial c, radial s, axial, axial c, axial s)`` per ball, (n, z, 5) contiguous."""
+    terms = np.empty(arms.shape)
+    terms[:, :2] = radial[:, None]
+    terms[:, 2:] = axial[:, None]
+    terms *= arms
+    return np.ascontiguousarray(terms.transpose(0, 2, 1))
+
+
+def _sum_arms(radial: np.ndarray, axial: np.ndarray, arms: np.ndarray) -> np.ndarray:
+    """``sum_j (radial_j c_j, radial_j s_j, axial_j, axial_j c_j, axial_j s_j)`` (n, 5), the
+    products formed in one array (the same sums, term by term, as five apart)."""
+    terms = np.empty(arms.shape)
+    terms[:, :2] = radial[:, None]
+    terms[:, 2:] = axial[:, None]
+    terms *= arms
+    return np.add.reduce(terms, axis=2)
 
 
 def residual(p: Problem, gen: np.ndarray, size: np.ndarray, held: np.ndarray) -> np.ndarray:
@@ -320,11 +338,10 @@ def residual(p: Problem, gen: np.ndarray, size: np.ndarray, held: np.ndarray) ->
 
 def hessian(p: Problem, b: Balls, lo: Loads, kappa: np.ndarray) -> np.ndarray:
     """d(forces)/dv (n, 5, 5) with the held components decoupled (unit rows)."""
-    c, s = p.c, p.s
     w1 = 1.5 * (1.0 + kappa) * lo.root
     w2 = np.where(b.rho > 0, lo.q / np.where(b.d > 0, b.d, 1.0), 0.0)
-    g = np.stack([lo.ca * c, lo.ca * s, lo.sa, lo.sa * c, lo.sa * s], axis=2)
-    h = np.stack([-lo.sa * c, -lo.sa * s, lo.ca, lo.ca * c, lo.ca * s], axis=2)
+    g = _times_arms(lo.ca, lo.sa, p.arms)
+    h = _times_arms(-lo.sa, lo.ca, p.arms)
     hess = np.einsum("nz,nzi,nzj->nij", w1, g, g) + np.einsum("nz,nzi,nzj->nij", w2, h, h)
     free = ~p.locked
     hess *= free[:, :, None] & free[:, None, :]
