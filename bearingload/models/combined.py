@@ -63,7 +63,9 @@ engine's solution and the axial closed form; then ``K_j`` is updated to the new 
 and the minimisation repeated until the update leaves the equilibrium. Each case stops when
 every applied component is balanced to 1e-12 of itself (or to the rounding of the sum it is,
 its terms much larger than it); a component held at 0 by a symmetry of the case is exactly 0.
-No case depends on the others of its call. Cases left above 1e-8 raise
+No case depends on the others of its call, nor on earlier calls: the Hertz set-up of a
+geometry (K_0 and the stiffness curve's nodes) is kept across calls (an LRU of
+``SETUP_CACHE_SIZE`` geometries), and holds exactly what would be computed. Cases left above 1e-8 raise
 :class:`~bearingload.errors.ConvergenceError`, naming their inputs.
 """
 
