@@ -36,6 +36,7 @@ Every operation is row-wise (one case per row), so no case depends on the others
 from __future__ import annotations
 
 import dataclasses
+import functools
 from dataclasses import dataclass
 from typing import Any
 
@@ -148,6 +149,12 @@ class Problem:
                 value = value[idx]
             out[field.name] = value
         return Problem(**out)
+
+    @functools.cached_property
+    def arms(self) -> np.ndarray:
+        """The factors of the ball forces in the generalised ones, ``(c, s, 1, c, s)`` per ball
+        (n, 5, z)."""
+        return np.stack([self.c, self.s, np.ones_like(self.c), self.c, self.s], axis=1)
 
     @property
     def deviation(self) -> np.ndarray:
@@ -288,21 +295,32 @@ def forces(p: Problem, lo: Loads) -> tuple[np.ndarray, np.ndarray]:
     """The generalised ball forces on the ring, ``sum_j (q_j - q_0) g_j + q_0 sum_j g'_j`` (see
     the module notes), and the sum of the magnitudes of the terms of each (its rounding level
     over eps), (n, 5) each."""
-    c, s, q0 = p.c, p.s, lo.q0[:, None]
+    q0 = lo.q0[:, None]
     radial = lo.dq * lo.ca + q0 * lo.cam1
     axial = (lo.dq + q0) * lo.sa
-    gen = np.stack(
-        [(radial * c).sum(1), (radial * s).sum(1), axial.sum(1), (axial * c).sum(1),
-         (axial * s).sum(1)], axis=1
-    )  # fmt: skip
+    gen = _sum_arms(radial, axial, p.arms)
     w_r = np.abs(lo.dq * lo.ca) + q0 * np.abs(lo.cam1)
     w_a = (np.abs(lo.dq) + q0) * np.abs(lo.sa)
-    ac, as_ = np.abs(c), np.abs(s)
-    size = np.stack(
-        [(w_r * ac).sum(1), (w_r * as_).sum(1), w_a.sum(1), (w_a * ac).sum(1),
-         (w_a * as_).sum(1)], axis=1
-    )  # fmt: skip
-    return gen, size
+    return gen, _sum_arms(w_r, w_a, np.abs(p.arms))
+
+
+def _times_arms(radial: np.ndarray, axial: np.ndarray, arms: np.ndarray) -> np.ndarray:
+    """``(radial c, radial s, axial, axial c, axial s)`` per ball, (n, z, 5) contiguous."""
+    terms = np.empty(arms.shape)
+    terms[:, :2] = radial[:, None]
+    terms[:, 2:] = axial[:, None]
+    terms *= arms
+    return np.ascontiguousarray(terms.transpose(0, 2, 1))
+
+
+def _sum_arms(radial: np.ndarray, axial: np.ndarray, arms: np.ndarray) -> np.ndarray:
+    """``sum_j (radial_j c_j, radial_j s_j, axial_j, axial_j c_j, axial_j s_j)`` (n, 5), the
+    products formed in one array (the same sums, term by term, as five apart)."""
+    terms = np.empty(arms.shape)
+    terms[:, :2] = radial[:, None]
+    terms[:, 2:] = axial[:, None]
+    terms *= arms
+    return np.add.reduce(terms, axis=2)
 
 
 def residual(p: Problem, gen: np.ndarray, size: np.ndarray, held: np.ndarray) -> np.ndarray:
@@ -320,11 +338,10 @@ def residual(p: Problem, gen: np.ndarray, size: np.ndarray, held: np.ndarray) ->
 
 def hessian(p: Problem, b: Balls, lo: Loads, kappa: np.ndarray) -> np.ndarray:
     """d(forces)/dv (n, 5, 5) with the held components decoupled (unit rows)."""
-    c, s = p.c, p.s
     w1 = 1.5 * (1.0 + kappa) * lo.root
     w2 = np.where(b.rho > 0, lo.q / np.where(b.d > 0, b.d, 1.0), 0.0)
-    g = np.stack([lo.ca * c, lo.ca * s, lo.sa, lo.sa * c, lo.sa * s], axis=2)
-    h = np.stack([-lo.sa * c, -lo.sa * s, lo.ca, lo.ca * c, lo.ca * s], axis=2)
+    g = _times_arms(lo.ca, lo.sa, p.arms)
+    h = _times_arms(-lo.sa, lo.ca, p.arms)
     hess = np.einsum("nz,nzi,nzj->nij", w1, g, g) + np.einsum("nz,nzi,nzj->nij", w2, h, h)
     free = ~p.locked
     hess *= free[:, :, None] & free[:, None, :]
@@ -410,31 +427,39 @@ REFRESH = 8
 
 
 def minimise(
-    p: Problem, vh: np.ndarray, vl: np.ndarray, kappa: np.ndarray
-) -> tuple[np.ndarray, np.ndarray, np.ndarray]:
+    p: Problem, vh: np.ndarray, vl: np.ndarray, kappa: np.ndarray, start: Point | None = None
+) -> tuple[np.ndarray, np.ndarray, np.ndarray, Point]:
     """Damped Newton with an Armijo line search on the convex potential (stiffness ``1 +
     kappa`` frozen): each case until every free component is within TOLERANCE (see
     :func:`residual`) or its residual stops falling (rounding). The point a step reaches is
     the line search's trial (:func:`offset` from the last); a case is recomputed afresh in
     double-double (:func:`reference`) every REFRESH steps and before it counts as converged.
-    Returns the position (hi, lo) and the iterations per case; the caller checks the residual."""
+    ``start``: the point at ``(vh, vl)`` if the caller has it (``Point.at`` of
+    :func:`reference` there, as computed here otherwise). Returns the position (hi, lo), the
+    iterations per case and the point there (fresh); the caller checks the residual."""
     vh, vl = vh.copy(), vl.copy()
     iterations = np.zeros(vh.shape[0], dtype=np.int64)
     active = np.arange(vh.shape[0])
     q, ka = p, kappa
-    pt = Point.at(q, ka, reference(q, vh, vl))
+    pt = Point.at(q, ka, reference(q, vh, vl)) if start is None else start
     best = np.full(active.size, np.inf)
     stall = np.zeros(active.size, dtype=np.int64)
     slow = np.zeros(active.size, dtype=bool)
+    ends: list[tuple[np.ndarray, Point, np.ndarray]] = []
     for _ in range(MAX_ITERATIONS):
         old = np.flatnonzero(((pt.res <= TOLERANCE) & (pt.age > 0)) | (pt.age >= REFRESH))
-        if old.size:
+        if old.size == active.size:  # all of them: no copies
+            pt = Point.at(q, ka, reference(q, vh[active], vl[active]))
+        elif old.size:
             sub = q.take(old)
             pt.put(old, Point.at(sub, ka[old], reference(sub, vh[active[old]], vl[active[old]])))
         better = (pt.res < 0.5 * best) | (pt.res > STALL_BELOW)
         best = np.where(better, pt.res, best)
         stall = np.where(better, 0, stall + 1)
         stop = (pt.res <= TOLERANCE) | (stall >= STALL) | ~np.isfinite(pt.res)
+        if stop.all():  # (no step: the position and the point stay)
+            ends.append((active, pt, pt.age == 0))
+            break
         grad = np.where(q.locked, 0.0, pt.gen - q.f)
         step, hess = _newton_step(q, pt.b, pt.lo, ka, grad, stop)
         before = pt.res.copy()  # the line search may change pt in place
@@ -442,6 +467,8 @@ def minimise(
         slow = pt.res > 0.9 * before
         still = ~np.any(moved != 0.0, axis=1)
         stop |= still & (pt.age == 0)  # no step from a fresh point: rounding
+        if stop.any():
+            ends.append((active[stop], pt.take(np.flatnonzero(stop)), pt.age[stop] == 0))
         pt.age[still] = REFRESH  # no step from a carried point: recompute it first
         hi, lo_ = _two_sum(vh[active], moved)
         vh[active], vl[active] = _fast(hi, lo_ + vl[active])
@@ -449,9 +476,41 @@ def minimise(
         keep = np.flatnonzero(~stop)
         if not keep.size:
             break
-        active, q, ka, pt = active[keep], q.take(keep), ka[keep], pt.take(keep)
-        best, stall, slow = best[keep], stall[keep], slow[keep]
-    return vh, vl, iterations
+        if keep.size < active.size:
+            active, q, ka, pt = active[keep], q.take(keep), ka[keep], pt.take(keep)
+            best, stall, slow = best[keep], stall[keep], slow[keep]
+    return vh, vl, iterations, _ended(p, kappa, vh, vl, ends)
+
+
+def _ended(
+    p: Problem, kappa: np.ndarray, vh: np.ndarray, vl: np.ndarray, ends: list[tuple[Any, ...]]
+) -> Point:
+    """The point of every case at its final position: where the minimisation stopped at a fresh
+    point (:func:`reference` there), that one; the others recomputed afresh."""
+    n = vh.shape[0]
+    fresh = np.zeros(n, dtype=bool)
+    if len(ends) == 1 and ends[0][0].size == n and ends[0][2].all():
+        rows, pt, _ = ends[0]
+        if np.array_equal(rows, np.arange(n)):
+            return pt
+    for rows, _, is_fresh in ends:
+        fresh[rows[is_fresh]] = True
+    redo = np.flatnonzero(~fresh)
+    if redo.size == n:
+        return Point.at(p, kappa, reference(p, vh, vl))
+    first = ends[0][1]
+    out = Point(
+        Balls(*(np.empty((n,) + getattr(first.b, k).shape[1:]) for k in _BALL_FIELDS)),
+        Loads(*(np.empty((n,) + getattr(first.lo, k).shape[1:]) for k in _LOAD_FIELDS)),
+        np.empty((n, 5)), np.empty((n, 5)), np.empty(n), np.zeros(n, dtype=np.int64),
+    )  # fmt: skip
+    for rows, pt, is_fresh in ends:
+        keep = np.flatnonzero(is_fresh)
+        out.put(rows[keep], pt.take(keep))
+    if redo.size:
+        sub = p.take(redo)
+        out.put(redo, Point.at(sub, kappa[redo], reference(sub, vh[redo], vl[redo])))
+    return out
 
 
 def _newton_step(

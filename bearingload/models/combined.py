@@ -63,7 +63,9 @@ engine's solution and the axial closed form; then ``K_j`` is updated to the new 
 and the minimisation repeated until the update leaves the equilibrium. Each case stops when
 every applied component is balanced to 1e-12 of itself (or to the rounding of the sum it is,
 its terms much larger than it); a component held at 0 by a symmetry of the case is exactly 0.
-No case depends on the others of its call. Cases left above 1e-8 raise
+No case depends on the others of its call, nor on earlier calls: the Hertz set-up of a
+geometry (K_0 and the stiffness curve's nodes) is kept across calls (an LRU of
+``SETUP_CACHE_SIZE`` geometries), and holds exactly what would be computed. Cases left above 1e-8 raise
 :class:`~bearingload.errors.ConvergenceError`, naming their inputs.
 """
 
@@ -71,6 +73,7 @@ from __future__ import annotations
 
 import dataclasses
 import math
+from collections import OrderedDict
 from dataclasses import dataclass
 from typing import Any
 
@@ -308,6 +311,21 @@ def axial_only(
     validate.broadcast_shape({"axial_load": f, "stiffness": k, "A": big_a, "clearance": g})
     z, f, k, big_a, g = np.broadcast_arrays(z, f, k, big_a, g)
     c = big_a - g  # radial distance of the groove centres
+    lo, hi, approach = _axial_bracket(z, f, k, big_a, g)
+    u = 0.5 * (lo + hi)
+    return _out(u), _out(np.rad2deg(np.arctan2(u, c))), _out(k * approach(u) ** 1.5)
+
+
+def _axial_bracket(
+    z: np.ndarray, f: np.ndarray, k: np.ndarray, big_a: np.ndarray, g: np.ndarray,
+    scale: np.ndarray | None = None,
+) -> tuple[np.ndarray, np.ndarray, Any]:  # fmt: skip
+    """Bisection of :func:`axial_only` (arrays of one shape, ``g`` = G_r/2): the bracket (lo,
+    hi) of the axial offset u [mm], each case stopped on its own when it is 4e-16 of u wide or,
+    given ``scale``, when u/scale rounds to the same single-precision number at both ends (then
+    so does the midpoint the full bisection would give: rounding is monotone), and the approach
+    as a function of u."""
+    c = big_a - g  # radial distance of the groove centres
     gap2 = g * (2.0 * big_a - g)  # A^2 - c^2: u^2 at first contact (negative under preload)
     u0 = np.sqrt(np.maximum(gap2, 0.0))
     target = f / (z * k)
@@ -327,14 +345,17 @@ def axial_only(
         hi = np.where(short, 2.0 * hi, hi)
     for _ in range(200):
         open_ = hi - lo > 4e-16 * hi  # each case stops on its own
+        if scale is not None:
+            top = hi / scale
+            single = (lo / scale).astype(np.float32) == top.astype(np.float32)
+            open_ &= ~(single & (top < 1e30))
         if not open_.any():
             break
         mid = 0.5 * (lo + hi)
         below = excess(mid) < 0
         lo = np.where(open_ & below, mid, lo)
         hi = np.where(open_ & ~below, mid, hi)
-    u = 0.5 * (lo + hi)
-    return _out(u), _out(np.rad2deg(np.arctan2(u, c))), _out(k * approach(u) ** 1.5)
+    return lo, hi, approach
 
 
 def solve_combined(
@@ -463,8 +484,12 @@ def solve_combined(
             "otherwise no equilibrium exists",
         )
     _check_few_balls(z, cage, fa, mm, mc, misalignment is not None)
-    k_ref = flat[13] if k_given is not None else ball_stiffness_at(0.0, dw, dm, fi, fo, e, nu)
-    k_ref = np.asarray(k_ref, dtype=float)
+    curve = None
+    if k_given is None:
+        k_ref, values = _hertz_setup(geo, e, nu)
+        curve = _StiffnessCurve(values)
+    else:
+        k_ref = flat[13]
     f_ref = np.maximum(np.maximum(fr, np.abs(fa)), np.hypot(mm, mc) / geo.R_i)
     if np.any(f_ref <= 0):
         raise InputError("radial_load", "give a radial load, an axial load or a moment")
@@ -480,8 +505,8 @@ def solve_combined(
     if misalignment is not None:  # the moment is then the reaction, not an input
         given["misalignment"] = tilt_deg
     with np.errstate(all="ignore"):
-        vh, vl, kappa, its = _solve_with_stiffness(problem, geo, e, nu, k_given is None)
-        checked = _checked(problem, vh, vl, kappa, its, given)
+        vh, vl, kappa, its, end = _solve_with_stiffness(problem, geo, curve)
+        checked = _checked(problem, end, its, given)
         answer = (vh + vl, kappa, its, checked)
         return _result(problem, geo, answer, shape, given, misalignment)
 
@@ -612,10 +637,13 @@ def _start(p: Problem, geo: _Geometry, cage: np.ndarray) -> np.ndarray:
         v[radial, 1] = r.y / p.scale[radial]
     axial = np.abs(p.f[:, 2]) > 1e-3
     if axial.any():
-        u, _, _ = axial_only(
-            p.z, np.abs(f[axial, 2]), p.k_ref[axial], geo.A[axial], 2.0 * geo.g[axial]
+        # bisected only until the single-precision start is fixed (the same start as the full
+        # axial_only gives, in half its steps)
+        fz = np.full(int(axial.sum()), float(p.z))
+        lo, hi, _ = _axial_bracket(
+            fz, np.abs(f[axial, 2]), p.k_ref[axial], geo.A[axial], geo.g[axial], p.scale[axial]
         )
-        v[axial, 2] = np.sign(f[axial, 2]) * u / p.scale[axial]
+        v[axial, 2] = np.sign(f[axial, 2]) * (0.5 * (lo + hi)) / p.scale[axial]
     size = np.hypot(f[:, 3] * ~p.locked[:, 3], f[:, 4])
     pure = (~radial) & (~axial) & (size > 0) & (p.t_imp == 0)
     if pure.any():  # a moment alone: the ring tilts as if twice it were an axial load
@@ -627,6 +655,58 @@ def _start(p: Problem, geo: _Geometry, cage: np.ndarray) -> np.ndarray:
     with np.errstate(over="ignore"):
         single = v.astype(np.float32).astype(float)
     return np.where(p.locked, 0.0, np.where(np.abs(v) < 1e30, single, v))
+
+
+#: Chebyshev nodes of the stiffness curve (first kind) on [-1, 1], their barycentric weights
+#: and cos(alpha) at each. [-]
+_NODES = 24
+_NODE_THETA = (2.0 * np.arange(_NODES) + 1.0) * np.pi / (2.0 * _NODES)
+_NODE_X = np.cos(_NODE_THETA)
+_NODE_W = np.where(np.arange(_NODES) % 2 == 0, 1.0, -1.0) * np.sin(_NODE_THETA)
+_NODE_COS = (_NODE_X + 1.0) / 2.0
+#: Distinct geometries (D_w, d_m, f_i, f_o, E, nu) whose Hertz set-up is kept across calls, the
+#: least recently used dropped first: an optimiser or a rotor time-stepper calls with the same
+#: bearing thousands of times, and the set-up (25 exact Hertz evaluations, each solving the
+#: ellipticity equation) costs more than a solve. [-]
+SETUP_CACHE_SIZE = 256
+_SETUP: OrderedDict[tuple[float, ...], tuple[float, np.ndarray]] = OrderedDict()
+
+
+def _hertz_setup(geo: _Geometry, e: np.ndarray, nu: np.ndarray) -> tuple[np.ndarray, np.ndarray]:
+    """Per case, K_0 = K(alpha = 0) [N/mm^1.5] (n,) and the divided differences ``D(c) = (K(c)/
+    K_0 - 1)/(c - 1)`` at the nodes of :class:`_StiffnessCurve` (n, NODES): one Hertz evaluation
+    (:func:`bearingload.contact.hertz.ball_stiffness`, element by element, so an entry does not
+    depend on the geometries computed with it) of the nodes and c = 1 per distinct geometry not
+    in the cache. The cache holds exactly what would be computed: it changes no bit."""
+    from bearingload.contact.hertz import ball_stiffness
+
+    params = np.stack([geo.D_w, geo.d_m, geo.f_i, geo.f_o, e, nu], axis=1)
+    if params.shape[0] == 1:
+        uniq, inv = params, np.zeros(1, dtype=np.intp)
+    else:
+        uniq, inverse = np.unique(params, axis=0, return_inverse=True)
+        inv = inverse.reshape(-1)
+    keys = [tuple(row) for row in uniq.tolist()]
+    missing = [i for i, key in enumerate(keys) if key not in _SETUP]
+    found = {}
+    if missing:
+        dw, dm, fi, fo, ee, nn = (uniq[missing, i, None] for i in range(6))
+        at = np.append(_NODE_COS, 1.0)  # the nodes and cos(alpha) = 1, in one Hertz evaluation
+        k_all = ball_stiffness(dw, dm / at, fi, fo, ee, nn).ball  # (geometries, nodes + 1)
+        k_c, k_1 = k_all[:, :-1], k_all[:, -1:]
+        d = (k_c / k_1 - 1.0) / (_NODE_COS - 1.0)
+        for row, i in enumerate(missing):
+            found[keys[i]] = (float(k_1[row, 0]), d[row])
+    rows = []
+    for key in keys:
+        entry = found.get(key) or _SETUP[key]
+        _SETUP[key] = entry
+        _SETUP.move_to_end(key)
+        rows.append(entry)
+    while len(_SETUP) > SETUP_CACHE_SIZE:
+        _SETUP.popitem(last=False)
+    k0 = np.array([r[0] for r in rows])[inv]
+    return k0, np.stack([r[1] for r in rows])[inv]
 
 
 class _StiffnessCurve:
@@ -641,23 +721,13 @@ class _StiffnessCurve:
     against :func:`ball_stiffness_at`. One Hertz evaluation per node and distinct geometry.
     """
 
-    NODES = 24
+    NODES = _NODES
 
-    def __init__(self, geo: _Geometry, e: np.ndarray, nu: np.ndarray, k_ref: np.ndarray) -> None:
-        from bearingload.contact.hertz import ball_stiffness
-
-        params = np.stack([geo.D_w, geo.d_m, geo.f_i, geo.f_o, e, nu], axis=1)
-        uniq, inverse = np.unique(params, axis=0, return_inverse=True)
-        theta = (2.0 * np.arange(self.NODES) + 1.0) * np.pi / (2.0 * self.NODES)
-        self.x = np.cos(theta)
-        self.w = np.where(np.arange(self.NODES) % 2 == 0, 1.0, -1.0) * np.sin(theta)
-        c = (self.x + 1.0) / 2.0
-        dw, dm, fi, fo, ee, nn = (uniq[:, i, None] for i in range(6))
-        at = np.append(c, 1.0)  # the nodes and cos(alpha) = 1, in one Hertz evaluation
-        k_all = ball_stiffness(dw, dm / at, fi, fo, ee, nn).ball  # (unique geometries, nodes + 1)
-        k_c, k_1 = k_all[:, :-1], k_all[:, -1:]
-        inv = inverse.reshape(-1)
-        self.values = ((k_c / k_1 - 1.0) / (c - 1.0))[inv] * (k_1[inv, 0] / k_ref)[:, None]
+    def __init__(self, values: np.ndarray) -> None:
+        """``values``: D at the nodes over each case's K_0, (n, NODES) (:func:`_hertz_setup`)."""
+        self.x = _NODE_X
+        self.w = _NODE_W
+        self.values = values
 
     def __call__(self, idx: np.ndarray, cos_alpha: np.ndarray, cos_m1: np.ndarray) -> np.ndarray:
         """kappa of the cases ``idx`` (shape (len(idx), z)) from cos(alpha) and cos(alpha) - 1."""
@@ -667,51 +737,50 @@ class _StiffnessCurve:
 
 
 def _solve_with_stiffness(
-    p: Problem, geo: _Geometry, e: np.ndarray, nu: np.ndarray, hertz: bool
-) -> tuple[np.ndarray, np.ndarray, np.ndarray, np.ndarray]:
+    p: Problem, geo: _Geometry, curve: _StiffnessCurve | None
+) -> tuple[np.ndarray, np.ndarray, np.ndarray, np.ndarray, _ring.Point]:
     """Minimise with frozen ball stiffnesses, update them to the contact angles, repeat until
     the update leaves the equilibrium (to the tolerance). Returns (v_hi, v_lo, kappa,
-    iterations)."""
+    iterations, the point there: :func:`_ring.reference` at the position, the loads with
+    kappa)."""
     cage = np.rad2deg(np.arctan2(p.s[:, 0], p.c[:, 0]))
     vh = _start(p, geo, cage)
     vl = np.zeros_like(vh)
     kappa = np.zeros_like(p.c)
     total = np.zeros(vh.shape[0], dtype=np.int64)
     todo = np.arange(vh.shape[0])  # each case stops on its own: no case depends on the batch
-    curve: _StiffnessCurve | None = None
+    sub, start = p, None
+    last: _ring.Point | None = None  # every case's point at its position, with its stiffness
     for _ in range(MAX_STIFFNESS_UPDATES):
-        sub = p.take(todo)
-        vh[todo], vl[todo], its = _ring.minimise(sub, vh[todo], vl[todo], kappa[todo])
+        vh[todo], vl[todo], its, end = _ring.minimise(sub, vh[todo], vl[todo], kappa[todo], start)
         total[todo] += its
-        if not hertz:
-            return vh, vl, kappa, total
         if curve is None:
-            curve = _StiffnessCurve(geo, e, nu, p.k_ref)
-        b = _ring.reference(sub, vh[todo], vl[todo])
-        lo = _ring.loads(sub, b, kappa[todo])
-        before = _ring.residual(sub, *_ring.forces(sub, lo), sub.locked)
+            return vh, vl, kappa, total, end
+        b, lo = end.b, end.lo  # (fresh: reference() at the position)
         k_new = np.where(lo.root > 0, curve(todo, lo.ca, lo.cam1), kappa[todo])
-        updated = _ring.loads(sub, b, k_new)
-        after = _ring.residual(sub, *_ring.forces(sub, updated), sub.locked)
+        # the point the next minimisation starts from (the same position, the new stiffness)
+        start = _ring.Point.at(sub, k_new, b)
+        if last is None:
+            last = start
+        else:
+            last.put(todo, start)
         kappa[todo] = k_new  # (a change of 1e-16 in kappa moves 1e6 times it under preload)
-        todo = todo[after > np.maximum(_ring.TOLERANCE, before)]
-        if todo.size == 0:
-            return vh, vl, kappa, total
+        going = np.flatnonzero(start.res > np.maximum(_ring.TOLERANCE, end.res))
+        if going.size == 0:
+            return vh, vl, kappa, total, last
+        if going.size < todo.size:
+            todo, sub, start = todo[going], sub.take(going), start.take(going)
     raise ConvergenceError(
         "combined-load ball stiffness update", MAX_STIFFNESS_UPDATES, math.nan, {}
     )
 
 
-def _checked(
-    p: Problem, vh: np.ndarray, vl: np.ndarray, kappa: np.ndarray, its: np.ndarray, given: dict
-) -> tuple[Any, ...]:
+def _checked(p: Problem, end: _ring.Point, its: np.ndarray, given: dict) -> tuple[Any, ...]:
     """The balls, loads and forces at the answer; ConvergenceError where the residual (held
     components but an imposed tilt included) is above ACCEPT, InputError where a loaded ball
     sits at the groove edge (its groove centres crossed, or its contact angle 90° to the
-    digits of a double)."""
-    b = _ring.reference(p, vh, vl)
-    lo = _ring.loads(p, b, kappa)
-    gen, size = _ring.forces(p, lo)
+    digits of a double). ``end``: the point at the answer (:func:`_solve_with_stiffness`)."""
+    b, lo, gen, size = end.b, end.lo, end.gen, end.size
     res = _ring.residual(p, gen, size, p.imposed)
     bad = ~(res <= ACCEPT)
     if np.any(bad):
