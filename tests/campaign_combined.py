@@ -85,12 +85,9 @@ def main(n: int, seed: int) -> None:
     seen: dict[str, Any] = {}
     original = combined._checked
 
-    def spy(p: Any, vh: Any, vl: Any, kappa: Any, its: Any, given: Any) -> Any:
-        out = original(p, vh, vl, kappa, its, given)
-        seen["gen"], seen["f"], seen["size"] = out[2][0], p.f[0], None
-        from bearingload.models import _combined_ring as ring
-
-        seen["size"] = ring.forces(p, out[1])[1][0]
+    def spy(p: Any, end: Any, its: Any, given: Any) -> Any:
+        out = original(p, end, its, given)
+        seen["gen"], seen["f"], seen["size"] = out[2][0], p.f[0], end.size[0]
         seen["imposed"] = p.imposed[0]
         return out
 
