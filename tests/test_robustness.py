@@ -63,7 +63,7 @@ def test_write_into_a_fifo_writes_through(tmp_path):
 def test_dash_is_standard_output_and_empty_name_is_an_error(tmp_path):
     r = run_cli("table", "k", "--z-max", "2", "--format", "csv", "-o", "-", cwd=tmp_path)
     assert r.returncode == 0 and r.stdout.startswith(
-        "method,load [N],stiffness [N/mm^1.5],clearance [mm],cage_angle_deg [°],exponent,balls,loaded_balls,k\n"
+        "method,load [N],stiffness [N/mm^1.5],clearance [mm],cage_angle [°],exponent,balls,loaded_balls,k\n"
     )
     assert list(tmp_path.iterdir()) == []
     r = run_cli("table", "k", "-o", "")
@@ -120,7 +120,7 @@ def test_csv_headers_carry_units():
     )
     header = out.splitlines()[0]
     assert header.startswith(
-        "method,balls,load [N],stiffness [N/mm^1.5],clearance [mm],cage_angle_deg [°]"
+        "method,balls,load [N],stiffness [N/mm^1.5],clearance [mm],cage_angle [°]"
     )
     assert (
         ",q_max [N]," in header and ",x [mm]," in header and ",stiffness_radial [N/mm]," in header
@@ -129,7 +129,7 @@ def test_csv_headers_carry_units():
         main, ["solve", "-z", "8", "-F", "300kgf", "-K", "4700kgf/mm^1.5", "--format", "csv", "--per-ball"]
     ).output  # fmt: skip
     assert per_ball.splitlines()[0].endswith(
-        ",ball,ball_angles_deg [°],ball_approaches [mm],ball_loads [N]"
+        ",ball,ball_angles [°],ball_approaches [mm],ball_loads [N]"
     )
 
 
