@@ -98,8 +98,8 @@ def test_a_huge_cage_angle_keeps_its_position():
     big = solve(8, 100.0, 4e5, 0.0, 1e16)
     same = solve(8, 100.0, 4e5, 0.0, 280.0)
     assert float(big.q_max) == pytest.approx(float(same.q_max), rel=1e-13)
-    assert float(big.q_max) == pytest.approx(float(big.ball_loads().max()), rel=1e-13)
-    assert np.all((big.ball_angles() >= 0) & (big.ball_angles() < 360.0))
+    assert float(big.q_max) == pytest.approx(float(big.ball_loads.max()), rel=1e-13)
+    assert np.all((big.ball_angles >= 0) & (big.ball_angles < 360.0))
 
 
 def test_roller_stiffness_units():
@@ -446,4 +446,4 @@ def test_scalar_path_agrees_with_the_vectorised_path():
         for name in ("x", "q_max", "stiffness_radial", "load_zone"):
             assert float(getattr(a, name)) == pytest.approx(float(getattr(b, name)[0]), rel=3e-14)
         assert abs(float(a.y) - float(b.y[0])) <= 3e-14 * abs(float(b.x[0]))
-        np.testing.assert_allclose(a.ball_loads(), b[0].ball_loads(), rtol=1e-13, atol=1e-13 * f)
+        np.testing.assert_allclose(a.ball_loads, b[0].ball_loads, rtol=1e-13, atol=1e-13 * f)

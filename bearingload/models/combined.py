@@ -96,8 +96,10 @@ class CombinedDistribution:
     ----------
     balls : int
         Number of balls z. [-]
-    radial_load, axial_load : ndarray
-        F_r and F_a. [N]
+    load, axial_load : ndarray
+        Radial load F_r (the keyword ``radial_load`` of :func:`solve_combined`; ``load`` as in
+        :class:`~bearingload.models.equilibrium.LoadDistribution` and the JSON key) and axial
+        load F_a. [N]
     moment : ndarray
         Moment on the inner ring, applied or (imposed misalignment) needed. [N mm]
     clearance : ndarray
@@ -129,7 +131,7 @@ class CombinedDistribution:
     """
 
     balls: int
-    radial_load: np.ndarray
+    load: np.ndarray
     axial_load: np.ndarray
     moment: np.ndarray
     clearance: np.ndarray
@@ -760,7 +762,7 @@ def _result(
     phi = np.mod(cage[:, None] + 360.0 * np.arange(z) / z, 360.0)
     return CombinedDistribution(
         balls=z,
-        radial_load=case(given["radial_load"]),
+        load=case(given["radial_load"]),
         axial_load=case(given["axial_load"]),
         moment=case(moment),
         clearance=case(given["clearance"]),

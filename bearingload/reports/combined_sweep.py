@@ -63,7 +63,7 @@ def inputs(s: CombinedSweep) -> dict[str, Any]:
     out: dict[str, Any] = {
         "bearing": b.designation or "given by hand",
         "balls": s.balls,
-        "load": float(r.radial_load[0]),
+        "load": float(r.load[0]),
         "axial_load": float(r.axial_load[0]),
     }
     if s.misalignment is None:

@@ -142,9 +142,9 @@ def _balls(c: LoadedCase) -> list[tuple[float, float, float]]:
         return []
     return list(
         zip(
-            model.ball_angles().tolist(),
-            model.ball_approaches().tolist(),
-            model.ball_loads().tolist(),
+            model.ball_angles.tolist(),
+            model.ball_approaches.tolist(),
+            model.ball_loads.tolist(),
             strict=True,
         )
     )
@@ -303,9 +303,9 @@ def _document(
         if c.result.method == "exact":
             model = c.result.model
             doc["stiffness_matrix"] = model.stiffness_matrix.tolist()
-            doc["ball_angles"] = model.ball_angles()
-            doc["ball_approaches"] = model.ball_approaches()
-            doc["ball_loads"] = model.ball_loads()
+            doc["ball_angles"] = model.ball_angles
+            doc["ball_approaches"] = model.ball_approaches
+            doc["ball_loads"] = model.ball_loads
         doc["warnings"] = list(c.warnings)
         docs.append(doc)
     keys = list(dict.fromkeys(k for d in docs for k in d))

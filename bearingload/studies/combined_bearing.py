@@ -264,7 +264,7 @@ def life_figures(
     l10r = p_eq = life = None
     if c_r:
         l10r = reference_lives(b, r, rotating, c_r)
-        fr = float(np.asarray(r.radial_load).reshape(-1)[0])
+        fr = float(np.asarray(r.load).reshape(-1)[0])
         fa = float(np.asarray(r.axial_load).reshape(-1)[0])
         p, l10 = basic_lives(b, c_r, fr, fa)
         p_eq = None if p is None else float(p)
@@ -344,7 +344,7 @@ def case_columns(
         "bearing": b.designation or "given by hand",
         "method": "combined",
         "balls": arr(r.balls, np.int64),
-        "load": arr(r.radial_load),
+        "load": arr(r.load),
         "axial_load": arr(r.axial_load),
         "moment": arr(r.moment),
         **cross,

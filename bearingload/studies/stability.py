@@ -104,8 +104,8 @@ def _engine_residual(result: Any) -> np.ndarray:
     out = np.empty(np.size(result.q_max))
     for i in range(out.size):
         one = result[i]
-        q = one.ball_loads()
-        phi = np.deg2rad(one.ball_angles())
+        q = one.ball_loads
+        phi = np.deg2rad(one.ball_angles)
         fx, fy = float(q @ np.cos(phi)), float(q @ np.sin(phi))
         f = float(one.load)
         out[i] = math.hypot(fx - f, fy) / max(f, float(q.sum()))
