@@ -92,6 +92,10 @@ MAX_STIFFNESS_UPDATES = 40
 class CombinedDistribution:
     """Solution of the combined-load equilibrium; arrays of the case shape, ball arrays (..., z).
 
+    For one case given as scalars every case quantity is a Python ``float`` (``iterations`` an
+    ``int``; :func:`bearingload.validate.scalar_out`), as in
+    :class:`~bearingload.models.equilibrium.LoadDistribution`; the ball arrays stay (z,) arrays.
+
     Attributes
     ----------
     balls : int
@@ -151,14 +155,14 @@ class CombinedDistribution:
     iterations: np.ndarray
 
     @property
-    def q_max(self) -> np.ndarray:
+    def q_max(self) -> Any:
         """Load of the most heavily loaded ball. [N]"""
-        return self.ball_loads.max(axis=-1)
+        return validate.scalar_out(self.ball_loads.max(axis=-1))
 
     @property
-    def loaded_balls(self) -> np.ndarray:
+    def loaded_balls(self) -> Any:
         """Number of balls carrying load. [-]"""
-        return (self.ball_loads > 0).sum(axis=-1)
+        return validate.scalar_out((self.ball_loads > 0).sum(axis=-1))
 
 
 @dataclass(frozen=True)
@@ -752,8 +756,8 @@ def _result(
     moment = geo.R_i * p.f_ref * gen[:, 3] if misalignment is not None else mm
     z = p.z
 
-    def case(a: np.ndarray) -> np.ndarray:
-        return np.asarray(a).reshape(shape)
+    def case(a: np.ndarray) -> Any:
+        return validate.scalar_out(np.asarray(a).reshape(shape))
 
     def ball(a: np.ndarray) -> np.ndarray:
         return a.reshape(shape + (z,))

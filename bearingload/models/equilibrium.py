@@ -136,8 +136,7 @@ class LoadDistribution:
         kyy = self.stiffness_matrix[..., 1, 1]
         with np.errstate(divide="ignore", invalid="ignore"):
             ratio = np.where(kyy > 0, kxy / np.where(kyy > 0, kyy, 1.0), 0.0)
-        out = np.asarray(kxx - kxy * ratio)
-        return out.item() if out.ndim == 0 else out
+        return validate.scalar_out(kxx - kxy * ratio)
 
     @property
     def ball_angles(self) -> np.ndarray:
@@ -197,7 +196,7 @@ def _lazy_field(name: str) -> property:
             value = self.__dict__["_values"][name]
             arr = np.asarray(value)
             # one case: a Python int or float for each quantity (arrays stay arrays)
-            arr = cache[name] = arr.item() if arr.ndim == 0 else arr
+            arr = cache[name] = validate.scalar_out(arr)
         return arr
 
     return property(get, doc=f"``{name}`` of the case (see LoadDistribution).")
