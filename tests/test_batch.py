@@ -24,7 +24,7 @@ balls,load [kgf],stiffness,clearance,cage_angle
 """
 
 SMALL_CSV = """\
-row,method,balls,load [N],stiffness [N/mm^1.5],clearance [mm],cage_angle_deg [°],exponent,q_max [N],k,K_Q,loaded_balls,load_zone_deg [°],x [mm],y [mm],stiffness_radial [N/mm],approach_max [mm],valid
+row,method,balls,load [N],stiffness [N/mm^1.5],clearance [mm],cage_angle [°],exponent,q_max [N],k,K_Q,loaded_balls,load_zone [°],x [mm],y [mm],stiffness_radial [N/mm],approach_max [mm],valid
 2,exact,8,2941.995,46091.255,0.02,0.0,1.5,1640.74899,0.5576994489,2.230797796,3,85.14740553,0.1182137403,0.0,41498.22827,0.1082137403,True
 3,exact,12,5000.0,380000.0,-0.05,15.0,1.5,2379.275159,0.4758550318,2.855130191,12,180.0,0.009287385775,0.0,533484.305,0.03397092578,True
 """
@@ -32,10 +32,10 @@ row,method,balls,load [N],stiffness [N/mm^1.5],clearance [mm],cage_angle_deg [°
 SMALL_MARKDOWN = """\
 ### 2 cases (row: the input file's row, the header is row 1)
 
-| row | method | balls | load [N] | stiffness [N/mm^1.5] | clearance [mm] | cage_angle_deg [°] | exponent [-] | q_max [N] |    k [-] | K_Q [-] | loaded_balls | load_zone_deg [°] |     x [mm] | y [mm] | stiffness_radial [N/mm] | approach_max [mm] | valid |
-|----:|:-------|------:|---------:|---------------------:|---------------:|-------------------:|-------------:|----------:|---------:|--------:|-------------:|------------------:|-----------:|-------:|------------------------:|------------------:|:------|
-|   2 | exact  |     8 |  2941.99 |              46091.3 |      0.0200000 |                  0 |      1.50000 |   1640.75 | 0.557699 | 2.23080 |            3 |           85.1474 |   0.118214 |      0 |                 41498.2 |          0.108214 | True  |
-|   3 | exact  |    12 |  5000.00 |               380000 |     -0.0500000 |            15.0000 |      1.50000 |   2379.28 | 0.475855 | 2.85513 |           12 |           180.000 | 0.00928739 |      0 |                  533484 |         0.0339709 | True  |
+| row | method | balls | load [N] | stiffness [N/mm^1.5] | clearance [mm] | cage_angle [°] | exponent [-] | q_max [N] |    k [-] | K_Q [-] | loaded_balls | load_zone [°] |     x [mm] | y [mm] | stiffness_radial [N/mm] | approach_max [mm] | valid |
+|----:|:-------|------:|---------:|---------------------:|---------------:|---------------:|-------------:|----------:|---------:|--------:|-------------:|--------------:|-----------:|-------:|------------------------:|------------------:|:------|
+|   2 | exact  |     8 |  2941.99 |              46091.3 |      0.0200000 |              0 |      1.50000 |   1640.75 | 0.557699 | 2.23080 |            3 |       85.1474 |   0.118214 |      0 |                 41498.2 |          0.108214 | True  |
+|   3 | exact  |    12 |  5000.00 |               380000 |     -0.0500000 |        15.0000 |      1.50000 |   2379.28 | 0.475855 | 2.85513 |           12 |       180.000 | 0.00928739 |      0 |                  533484 |         0.0339709 | True  |
 """
 
 
@@ -79,7 +79,7 @@ def test_json_exact(small):
     doc = json.loads(out.stdout)
     assert [c["row"] for c in doc["cases"]] == [2, 3]
     assert doc["cases"][0]["q_max"] == 1640.74899
-    assert doc["cases"][1]["cage_angle_deg"] == 15.0
+    assert doc["cases"][1]["cage_angle"] == 15.0
     assert doc["skipped"] == []
     assert doc["units"]["q_max"] == "N" and doc["units"]["stiffness"] == "N/mm^1.5"
     # the same numbers as the csv, key for key

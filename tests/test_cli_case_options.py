@@ -155,12 +155,12 @@ def test_tilt_radius_pitch_is_the_library_at_half_the_pitch_diameter():
     assert case["tilt_radius"] == b.pitch_diameter / 2 == 19.25
     assert case["moment_cross"] == -1000.0 and case["moment"] == 3000.0
     assert case["ball_loads"] == pytest.approx(r.ball_loads.tolist(), rel=1e-9)
-    assert case["tilt_deg"] == pytest.approx(float(r.tilt), rel=1e-9)
-    assert case["tilt_cross_deg"] == pytest.approx(float(r.tilt_cross), rel=1e-9)
+    assert case["tilt"] == pytest.approx(float(r.tilt), rel=1e-9)
+    assert case["tilt_cross"] == pytest.approx(float(r.tilt_cross), rel=1e-9)
     groove = _case("6205", "-F", "1.4kN", "-A", "700N", "--moment", "3Nm", "-G", "C3",
                    "--moment-cross", "-1Nm", "--tilt-radius", "groove")  # fmt: skip
     assert "tilt_radius" not in groove  # the default lever, R_i
-    assert groove["tilt_deg"] != pytest.approx(case["tilt_deg"], rel=1e-4)
+    assert groove["tilt"] != pytest.approx(case["tilt"], rel=1e-4)
 
 
 def test_a_length_lever_is_the_library_at_that_length():
@@ -180,9 +180,9 @@ def test_moment_cross_alone_tilts_about_the_load_line_only(load):
     line tilts the ring about the load line only."""
     case = _case("6205", "-F", load, "--moment-cross", "2Nm", "-q")
     assert case["method"] == "combined" and case["moment_cross"] == 2000.0
-    assert case["tilt_cross_deg"] > 0.1
-    assert case["tilt_deg"] == pytest.approx(0.0, abs=1e-12 * case["tilt_cross_deg"])
-    assert case["deflection_axial"] == pytest.approx(0.0, abs=1e-12)
+    assert case["tilt_cross"] > 0.1
+    assert case["tilt"] == pytest.approx(0.0, abs=1e-12 * case["tilt_cross"])
+    assert case["axial"] == pytest.approx(0.0, abs=1e-12)
 
 
 @pytest.mark.parametrize(
@@ -198,13 +198,13 @@ def test_moment_cross_is_the_moment_with_the_load_line_turned_90_degrees(bearing
     turned = _case(*common, "--moment", "3Nm", "--cage-angle", str(cage - 90.0))
     scale = max(cross["ball_loads"])
     assert cross["ball_loads"] == pytest.approx(turned["ball_loads"], abs=1e-9 * scale)
-    assert cross["contact_angles_deg"] == pytest.approx(turned["contact_angles_deg"], abs=1e-9)
-    assert cross["tilt_cross_deg"] == pytest.approx(turned["tilt_deg"], rel=1e-9)
-    assert cross["tilt_deg"] == pytest.approx(-turned["tilt_cross_deg"], abs=1e-9 * abs(cross["tilt_cross_deg"]))  # fmt: skip
+    assert cross["contact_angles"] == pytest.approx(turned["contact_angles"], abs=1e-9)
+    assert cross["tilt_cross"] == pytest.approx(turned["tilt"], rel=1e-9)
+    assert cross["tilt"] == pytest.approx(-turned["tilt_cross"], abs=1e-9 * abs(cross["tilt_cross"]))  # fmt: skip
     size = math.hypot(cross["x"], cross["y"])
     assert cross["x"] == pytest.approx(-turned["y"], abs=1e-9 * size + 1e-15)
     assert cross["y"] == pytest.approx(turned["x"], abs=1e-9 * size + 1e-15)
-    assert cross["deflection_axial"] == pytest.approx(turned["deflection_axial"], rel=1e-9)
+    assert cross["axial"] == pytest.approx(turned["axial"], rel=1e-9)
     assert cross["reference_rating_life"] == pytest.approx(
         turned["reference_rating_life"], rel=1e-9
     )
@@ -222,7 +222,7 @@ def test_masta_moment_about_the_load_line(example):
                              g["modulus"], g["poisson"]).ball)  # fmt: skip
     case = _case(*PEER, "-F", f"{fr}N", "-A", f"{fa}N", "--moment-cross", f"{mx}Nmm",
                  "-G", f"{s_r}mm", "-K", f"{k!r}", "--tilt-radius", "pitch", "-q")  # fmt: skip
-    total = math.radians(math.hypot(case["tilt_deg"], case["tilt_cross_deg"])) * 1e3
+    total = math.radians(math.hypot(case["tilt"], case["tilt_cross"])) * 1e3
     assert total == pytest.approx(tilt, rel=4e-5)
     assert case["reference_rating_life"] == pytest.approx(life, rel=3e-4)
 
@@ -236,8 +236,8 @@ def test_sweep_and_table_life_pass_the_general_load_through():
     doc = json.loads(out.stdout)
     assert doc["moment_cross"] == 2000.0 and doc["tilt_radius"] == 20.0
     row = doc["rows"][1]
-    one = _case("6205", *load, "-G", "10um", "--cage-angle", str(row["cage_angle_deg"]))
-    assert row["tilt_cross_deg"] == pytest.approx(one["tilt_cross_deg"], rel=1e-9)
+    one = _case("6205", *load, "-G", "10um", "--cage-angle", str(row["cage_angle"]))
+    assert row["tilt_cross"] == pytest.approx(one["tilt_cross"], rel=1e-9)
     assert row["q_max"] == pytest.approx(one["q_max"], rel=1e-9)
     out = invoke("table", "life", "-b", "6205", *load, "--clearances", "0,10um", "--format", "json")
     assert out.exit_code == 0, out.output
@@ -278,7 +278,7 @@ def test_batch_columns_moment_cross_and_tilt_radius_are_the_options(tmp_path):
         one = _case("6205", "-F", "1kN", "-A", "500N", "-G", "C3", "-q", *extra)
         assert row["moment_cross"] == one.get("moment_cross")
         assert row["tilt_radius"] == one.get("tilt_radius")
-        for key in ("q_max", "tilt_deg", "tilt_cross_deg", "reference_rating_life"):
+        for key in ("q_max", "tilt", "tilt_cross", "reference_rating_life"):
             assert row[key] == pytest.approx(one[key], rel=1e-9, abs=1e-15), key
     plain = tmp_path / "plain.csv"
     plain.write_text("bearing,load,axial_load\n6205,1kN,500N\n", encoding="utf-8")

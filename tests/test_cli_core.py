@@ -61,7 +61,7 @@ def test_solve_json_keys_and_values():
         "q_max",
         "x",
         "loaded_balls",
-        "load_zone_deg",
+        "load_zone",
         "ball_loads",
         "stiffness_radial",
         "clearance",
@@ -74,7 +74,7 @@ def test_solve_json_keys_and_values():
     assert len(doc["ball_loads"]) == 9
     assert doc["ball_loads"][0] == pytest.approx(doc["q_max"], rel=1e-9)
     assert sum(q * __import__("math").cos(__import__("math").radians(a))
-               for q, a in zip(doc["ball_loads"], doc["ball_angles_deg"], strict=True)) == pytest.approx(5000.0, rel=1e-8)  # fmt: skip
+               for q, a in zip(doc["ball_loads"], doc["ball_angles"], strict=True)) == pytest.approx(5000.0, rel=1e-8)  # fmt: skip
 
 
 def test_solve_half_pitch_and_preload():
@@ -184,7 +184,7 @@ def test_version():
 def test_run_success_and_failure(capsys):
     run(["table", "k", "--z-max", "3", "--format", "csv"])
     assert capsys.readouterr().out.startswith(
-        "method,load [N],stiffness [N/mm^1.5],clearance [mm],cage_angle_deg [°],exponent,balls,loaded_balls,k\nexact,1000.0,100000.0,0.0,0.0,1.5,1,1,1.0"
+        "method,load [N],stiffness [N/mm^1.5],clearance [mm],cage_angle [°],exponent,balls,loaded_balls,k\nexact,1000.0,100000.0,0.0,0.0,1.5,1,1,1.0"
     )
     with pytest.raises(SystemExit) as info:
         run(["solve", "-z", "8", "-F", "0", "-K", "1"])

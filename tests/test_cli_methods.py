@@ -72,7 +72,7 @@ def test_solve_all_json_relative_errors():
     assert stribeck["relative_error"] == pytest.approx(
         stribeck["q_max"] / exact["q_max"] - 1, abs=1e-9
     )
-    assert stribeck["load_zone_deg"] is None and "clearance" in stribeck["ignores"]
+    assert stribeck["load_zone"] is None and "clearance" in stribeck["ignores"]
     assert stribeck["valid"] is False and by["palmgren"]["valid"] is True
     assert by["continuum"]["ignores"] == ["cage_angle"]
     assert doc["units"]["relative_error"] == "-" if "relative_error" in doc["units"] else True
@@ -84,21 +84,21 @@ def test_solve_continuum_same_keys_as_exact():
         invoke("solve", *CASE_306, "--method", "continuum", "--format", "json").output
     )["cases"][0]
     # one key per quantity in every model: the same set of keys, None where a model gives none
-    assert set(exact) - {"ball_angles_deg", "ball_approaches", "ball_loads", "stiffness_matrix"} == set(cont)  # fmt: skip
-    shared = {"k", "q_max", "load_zone_deg", "K_Q", "x", "stiffness_radial", "balls",
-              "load", "stiffness", "clearance", "cage_angle_deg", "exponent"}  # fmt: skip
+    assert set(exact) - {"ball_angles", "ball_approaches", "ball_loads", "stiffness_matrix"} == set(cont)  # fmt: skip
+    shared = {"k", "q_max", "load_zone", "K_Q", "x", "stiffness_radial", "balls",
+              "load", "stiffness", "clearance", "cage_angle", "exponent"}  # fmt: skip
     assert all(cont[k] is not None and exact[k] is not None for k in shared)
     r = solve_continuum(8, 300 * KGF, 4700 * KGF, 0.02)
     assert cont["k"] == pytest.approx(float(r.k), rel=1e-9)
     assert cont["K_Q"] == pytest.approx(float(r.K_Q), rel=1e-9)
-    assert cont["load_zone_deg"] == pytest.approx(float(r.load_zone), rel=1e-9)
+    assert cont["load_zone"] == pytest.approx(float(r.load_zone), rel=1e-9)
     assert cont["x"] == pytest.approx(float(r.x), rel=1e-9)
-    assert cont["approach_max"] == pytest.approx(float(r.max_deflection), rel=1e-9)
+    assert cont["approach_max"] == pytest.approx(float(r.approach_max), rel=1e-9)
     assert cont["epsilon"] == pytest.approx(float(r.epsilon), rel=1e-9)
     assert cont["method"] == "continuum"
     # the two models agree to 0.9 % on bearing 306 (and to 0.03 deg on the load zone)
     assert cont["q_max"] / exact["q_max"] - 1 == pytest.approx(0.00869, abs=5e-5)
-    assert abs(cont["load_zone_deg"] - exact["load_zone_deg"]) < 0.03
+    assert abs(cont["load_zone"] - exact["load_zone"]) < 0.03
 
 
 def test_solve_continuum_table_lines():
@@ -123,8 +123,8 @@ def test_solve_one_line_estimates(method, constant, kgf):
     assert "ignores stiffness, clearance, cage angle, exponent." in text
     doc = json.loads(invoke("solve", *CASE_306, "--method", method, "--format", "json").output)
     case = doc["cases"][0]
-    assert case["k"] == constant / 8 and case["load_zone_deg"] is None
-    assert {"k", "q_max", "K_Q", "load_zone_deg"} <= set(case)
+    assert case["k"] == constant / 8 and case["load_zone"] is None
+    assert {"k", "q_max", "K_Q", "load_zone"} <= set(case)
 
 
 def test_solve_method_with_a_bearing_designation():

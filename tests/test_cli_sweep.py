@@ -17,7 +17,7 @@ from .cli_helpers import invoke, run_entry
 CASE = ("sweep", "-z", "9", "-F", "1kN", "-K", "1e5", "-G", "10um")
 
 CSV_3 = """\
-balls,load [N],stiffness [N/mm^1.5],clearance [mm],exponent,cage_angle_deg [°],x [mm],y [mm],q_max [N],q_max_ball,loaded_balls,stiffness_xx [N/mm],stiffness_xy [N/mm],stiffness_yy [N/mm],stiffness_radial [N/mm]
+balls,load [N],stiffness [N/mm^1.5],clearance [mm],exponent,cage_angle [°],x [mm],y [mm],q_max [N],q_max_ball,loaded_balls,stiffness_xx [N/mm],stiffness_xy [N/mm],stiffness_yy [N/mm],stiffness_radial [N/mm]
 9,1000.0,100000.0,0.01,1.5,0.0,0.03472437386,0.0,512.4707383,1,5,52025.23487,0.0,27554.40218,52025.23487
 9,1000.0,100000.0,0.01,1.5,20.0,0.03471268143,0.0,459.005443,1,4,52361.87697,0.0,30842.96794,52361.87697
 9,1000.0,100000.0,0.01,1.5,40.0,0.03472437386,0.0,512.4707383,9,5,52025.23487,0.0,27554.40218,52025.23487
@@ -46,9 +46,9 @@ def test_json_rows_summary_units_match_the_library():
     out = invoke(*CASE, "--steps", "7", "--format", "json")
     doc = json.loads(out.output)
     s = sweep(9, 1000.0, 1e5, 0.01, steps=7)
-    assert [r["cage_angle_deg"] for r in doc["rows"]] == pytest.approx(s.cage_angle.tolist())
+    assert [r["cage_angle"] for r in doc["rows"]] == pytest.approx(s.cage_angle.tolist())
     for i, row in enumerate(doc["rows"]):
-        assert set(row) >= {"cage_angle_deg", "x", "y", "q_max", "loaded_balls", "stiffness_matrix"}
+        assert set(row) >= {"cage_angle", "x", "y", "q_max", "loaded_balls", "stiffness_matrix"}
         assert row["x"] == pytest.approx(s.x[i], rel=1e-9)
         assert row["y"] == pytest.approx(s.y[i], rel=1e-9, abs=1e-15)
         assert row["q_max"] == pytest.approx(s.q_max[i], rel=1e-9)

@@ -272,7 +272,7 @@ def test_radial_only_is_the_radial_engine(z, clearance, cage):
     r = solve_combined(z, 1500.0, 0.0, clearance=clearance, cage_angle=cage_deg, **PEER)
     assert float(r.x) == pytest.approx(float(radial.x), rel=1e-12)
     assert float(r.y) == pytest.approx(float(radial.y), abs=1e-12 * float(radial.x))
-    np.testing.assert_allclose(r.ball_loads, radial.ball_loads(), rtol=0, atol=1e-12 * 1500)
+    np.testing.assert_allclose(r.ball_loads, radial.ball_loads, rtol=0, atol=1e-12 * 1500)
     assert float(r.axial) == 0.0 and float(r.tilt) == 0.0
     assert np.all(r.contact_angles == 0.0)
 

@@ -180,7 +180,7 @@ def test_the_ball_opposite_the_load_carries_nothing():
     assert np.all(np.abs(r.contact_angles[r.ball_loads > 0]) < 90.0)
     assert int(r.loaded_balls) == int(radial.loaded_balls) == 1
     assert float(r.x) == pytest.approx(float(radial.x), rel=1e-14)
-    np.testing.assert_allclose(r.ball_loads, radial.ball_loads(), rtol=0, atol=1e-12 * 500.0)
+    np.testing.assert_allclose(r.ball_loads, radial.ball_loads, rtol=0, atol=1e-12 * 500.0)
 
 
 def test_radial_loads_up_to_overload_and_the_groove_limit_are_the_radial_engine():
@@ -206,7 +206,7 @@ def test_radial_loads_up_to_overload_and_the_groove_limit_are_the_radial_engine(
         size = abs(float(radial.x)) + abs(g)
         assert float(r.x) == pytest.approx(float(radial.x), abs=1e-13 * size, rel=1e-12)
         assert float(r.y) == pytest.approx(float(radial.y), abs=1e-12 * size)
-        np.testing.assert_allclose(r.ball_loads, radial.ball_loads(), rtol=1e-9, atol=1e-12 * load)
+        np.testing.assert_allclose(r.ball_loads, radial.ball_loads, rtol=1e-9, atol=1e-12 * load)
         assert float(r.axial) == 0.0 and float(r.tilt) == 0.0
 
 

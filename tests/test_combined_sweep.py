@@ -102,7 +102,7 @@ def test_csv_is_one_rectangular_table_inputs_first():
     assert head[:9] == ["bearing", "balls", "load [N]", "axial_load [N]", "moment [N mm]",
                         "rotating", "stiffness [N/mm^1.5]", "clearance [mm]",
                         "clearance_pick"]  # fmt: skip
-    assert head[9] == "cage_angle_deg [°]" and "reference_rating_life [10^6 rev]" in head
+    assert head[9] == "cage_angle [°]" and "reference_rating_life [10^6 rev]" in head
     for name in head:  # every column is a quantity of the one table, with its unit
         key, _, unit = name.partition(" [")
         assert key in QUANTITIES and unit.rstrip("]") == QUANTITIES[key].unit.replace("^m", "^1.5")
@@ -112,15 +112,15 @@ def test_json_keys_are_solves_keys():
     doc = json.loads(invoke(*CLI, "--format", "json").stdout)
     solved = json.loads(invoke("solve", *CLI[1:8], "--format", "json").stdout)["cases"][0]
     first = doc["rows"][0]  # cage angle 0: solve's default
-    for key in ("x", "y", "deflection_axial", "tilt_deg", "tilt_cross_deg", "q_max",
-                "loaded_balls", "contact_angle_max_deg", "reference_rating_life"):  # fmt: skip
+    for key in ("x", "y", "axial", "tilt", "tilt_cross", "q_max",
+                "loaded_balls", "contact_angle_max", "reference_rating_life"):  # fmt: skip
         assert first[key] == pytest.approx(solved[key], rel=1e-12, abs=1e-15), key
-    for key in ("free_contact_angle_deg", "axial_play", "equivalent_load", "rating_life"):
+    for key in ("free_contact_angle", "axial_play", "equivalent_load", "rating_life"):
         assert doc["summary"][key] == pytest.approx(solved[key], rel=1e-12), key
     for key in ("bearing", "load", "axial_load", "clearance", "rotating"):
         assert doc[key] == solved[key]
     assert doc["summary"]["q_max"]["max"] == max(r["q_max"] for r in doc["rows"])
-    assert doc["units"]["deflection_axial"] == "mm" and doc["units"]["tilt_deg"] == "°"
+    assert doc["units"]["axial"] == "mm" and doc["units"]["tilt"] == "°"
     assert doc["units"]["reference_rating_life"] == "10^6 rev"
     assert doc["steps"] == 5 and doc["geometry"]["designation"] == "6205"
 
@@ -138,7 +138,7 @@ def test_misalignment_gives_the_moment_per_row():
                  "-F", "1kN", "-G", "10um", "-C", "23.4kN", "--misalignment", "2mrad",
                  "--steps", "3", "--format", "json")  # fmt: skip
     doc = json.loads(out.stdout)
-    assert "moment" not in doc and doc["misalignment_deg"] == pytest.approx(np.degrees(2e-3))
+    assert "moment" not in doc and doc["misalignment"] == pytest.approx(np.degrees(2e-3))
     assert all(r["moment"] > 0 for r in doc["rows"]) and doc["units"]["moment"] == "N mm"
 
 

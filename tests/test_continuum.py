@@ -293,7 +293,7 @@ def test_paper_resolving_equation_5_12(case):
     delta = gr / 2
     phi0 = math.radians(float(r.load_zone))
     assert math.cos(phi0) == pytest.approx(delta / float(r.x), rel=1e-12)
-    assert float(r.max_deflection) == pytest.approx(delta * (1 / math.cos(phi0) - 1), rel=1e-11)
+    assert float(r.approach_max) == pytest.approx(delta * (1 / math.cos(phi0) - 1), rel=1e-11)
     with mp.workdps(30):
         c0 = mp.cos(mp.mpf(phi0))
         integral = mp.quad(lambda p: max(mp.cos(p) / c0 - 1, 0) ** 1.5 * mp.cos(p), [0, phi0])
@@ -343,13 +343,13 @@ def test_extreme_cases_converge_without_nan():
         "q_max",
         "epsilon",
         "x",
-        "max_deflection",
+        "approach_max",
         "stiffness_radial",
         "load_zone",
     ):
         values = getattr(r, name)
         assert np.all(np.isfinite(values)), name
-    assert np.all(r.max_deflection > 0) and np.all(r.stiffness_radial > 0)
+    assert np.all(r.approach_max > 0) and np.all(r.stiffness_radial > 0)
     assert r.iterations.max() <= 12
 
 
@@ -372,7 +372,7 @@ def test_light_preload_stiffness_limit():
 )
 def test_property_resolving_equation_residual(z, load, k_ball, gr, m):
     r = solve_continuum(z, load, k_ball, gr, m)
-    d, x, eps = float(r.max_deflection), float(r.x), float(r.epsilon)
+    d, x, eps = float(r.approach_max), float(r.x), float(r.epsilon)
     assert np.isfinite([d, x, eps, float(r.k), float(r.stiffness_radial)]).all()
     # the force equation F = z K d^m J_r(d/(2x)) ...
     f = z * k_ball * d**m * load_zone_integral(d / (2 * x), m)

@@ -233,7 +233,7 @@ def test_general_cage_angle_against_mpmath(z, e, m, phi1):
     scale = max(1.0, abs(float(x_ref)))
     assert abs(float(r.x) - float(x_ref)) <= 1e-12 * scale
     assert abs(float(r.y) - float(y_ref)) <= 1e-12 * scale
-    q = r.ball_loads()
+    q = r.ball_loads
     q_ref = [
         float(
             max(
@@ -277,7 +277,7 @@ def test_general_cage_angles_in_one_array_call_against_mpmath(z):
         assert abs(float(r.x[j]) - float(x_ref)) <= 1e-12 * scale
         assert abs(float(r.y[j]) - float(y_ref)) <= 1e-12 * scale
         k_ref = mp_stiffness(z, mp.mpf(ej), mj, pj, x_ref, y_ref)
-        if np.min(np.abs(r[j].ball_approaches())) > 1e-6 * scale:  # K jumps where a ball touches
+        if np.min(np.abs(r[j].ball_approaches)) > 1e-6 * scale:  # K jumps where a ball touches
             atol = 1e-11 * k_ref.max()
             np.testing.assert_allclose(r.stiffness_matrix[j], k_ref, rtol=0, atol=atol)
         one = solve(z, 1.0, 1.0, 2 * ej, pj, mj)
@@ -333,8 +333,8 @@ def test_turned_ring_forces_equal_the_load_frame_forces(z, preload, nearest):
 # ---------------------------------------------------------------------------------------------
 def _residual(r) -> float:
     """Equilibrium residual of one case relative to the total ball load."""
-    q = r.ball_loads()
-    phi = np.radians(r.ball_angles())
+    q = r.ball_loads
+    phi = np.radians(r.ball_angles)
     fx = np.sum(q * np.cos(phi)) - float(r.load)
     fy = np.sum(q * np.sin(phi))
     return math.hypot(fx, fy) / max(np.sum(q), float(r.load))
@@ -449,8 +449,8 @@ def test_symmetric_cages_have_no_transverse_displacement(z, gap, m):
     for cage in (0.0, 180.0 / z):
         r = solve(z, 1.0, 1.0, gap, cage, m)
         assert float(r.y) == 0.0
-        q = r.ball_loads()
-        phi = np.mod(np.radians(r.ball_angles()), 2 * np.pi)
+        q = r.ball_loads
+        phi = np.mod(np.radians(r.ball_angles), 2 * np.pi)
         mirrored = np.mod(-phi, 2 * np.pi)
         order = np.argsort(phi)
         order_m = np.argsort(mirrored)
@@ -490,7 +490,7 @@ def test_scalar_in_scalar_out_and_broadcasting():
     assert r.q_max.shape == (2, 3)
     one = solve(9, 3000.0, 1e5, 0.01)
     assert float(r.q_max[1, 2]) == pytest.approx(float(one.q_max), rel=1e-12)
-    assert r[1, 2].ball_loads().shape == (9,)
+    assert r[1, 2].ball_loads.shape == (9,)
 
 
 def test_kq_definition():

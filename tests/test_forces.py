@@ -103,7 +103,7 @@ def test_solved_displacement_gives_back_the_load(z, g, phi1, m):
     assert abs(f.force_y) <= 1e-9 * load
     np.testing.assert_allclose(f.stiffness_matrix, r.stiffness_matrix, rtol=1e-8, atol=1e-8 * load)
     assert f.loaded_balls == int(r.loaded_balls)
-    np.testing.assert_allclose(f.ball_loads, r.ball_loads(), rtol=1e-8, atol=1e-9 * load)
+    np.testing.assert_allclose(f.ball_loads, r.ball_loads, rtol=1e-8, atol=1e-9 * load)
 
 
 def test_sweep_of_solved_positions_in_one_call():

@@ -478,19 +478,17 @@ def test_cli_kurochkin_json_against_reference():
     assert res.exit_code == 0, res.output
     doc = json.loads(res.output)
     assert doc["balls"] == 7 and doc["kurochkin_T"] == 0.567 and len(doc["rows"]) == 11
-    assert set(doc["rows"][0]) == {"cage_angle_deg", "F0", "F0_prime"}
+    assert set(doc["rows"][0]) == {"cage_angle", "F0", "F0_prime"}
     row = doc["rows"][3]
-    x, y = ref_solve(7, 0.567, mp.radians(row["cage_angle_deg"]))
+    x, y = ref_solve(7, 0.567, mp.radians(row["cage_angle"]))
     assert row["F0"] == pytest.approx(float(x), rel=1e-9)
     assert row["F0_prime"] == pytest.approx(float(-y), rel=1e-9, abs=1e-12)
     summary = doc["summary"]
     assert summary["contact_sequence"] == "3-2-3"
-    assert summary["exit_angle_deg"] == pytest.approx(
-        float(mp.degrees(ref_psi(7, 0.567))), abs=1e-8
-    )
+    assert summary["exit_angle"] == pytest.approx(float(mp.degrees(ref_psi(7, 0.567))), abs=1e-8)
     ref = ref_row(7, 0.567)["f0j"]
     assert summary["F0j_prime"] == pytest.approx([float(v) for v in ref], abs=1e-10)
-    assert doc["units"]["cage_angle_deg"] == "°"
+    assert doc["units"]["cage_angle"] == "°"
 
 
 def test_cli_kurochkin_formats_and_errors():
@@ -499,7 +497,7 @@ def test_cli_kurochkin_formats_and_errors():
     csv_out = invoke("sweep", "-z", "6", "--kurochkin-T", "0.5", "--steps", "3", "--format", "csv")
     assert csv_out.exit_code == 0
     lines = csv_out.output.splitlines()
-    assert lines[0] == "balls,kurochkin_T,cage_angle_deg [°],F0,F0_prime"
+    assert lines[0] == "balls,kurochkin_T,cage_angle [°],F0,F0_prime"
     assert len(lines) == 4 and lines[2].startswith("6,0.5,30.0,")
     table = invoke("sweep", "-z", "6", "--kurochkin-T", "0.5", "--steps", "3")
     assert "contact sequence" in table.output and "3-2-3" in table.output
@@ -524,7 +522,7 @@ def test_example1_moment_table_is_odd_about_half_pitch():
     load, stiffness = ke.example1_load_stiffness()
     row = table.rows[2]
     _, y = ref_solve(
-        7, ku.generalised_parameter(0.006, load, stiffness, 7), mp.radians(row["cage_angle_deg"])
+        7, ku.generalised_parameter(0.006, load, stiffness, 7), mp.radians(row["cage_angle"])
     )
     w = 10.731 / (2 * (10.731 + 3.969))
     assert row["M_e0"] == pytest.approx(

@@ -50,9 +50,9 @@ def test_table_life_6205_reproduces_the_committed_rows(extra, tag):
                  ("reference_rating_life [10^6 rev]", f"life_{tag} [10^6 rev]"),
                  ("relative_life", f"ratio_{tag}")]  # fmt: skip
         if tag == "r":
-            pairs.append(("free_contact_angle_deg [°]", "free_contact_angle_deg [°]"))
+            pairs.append(("free_contact_angle [°]", "free_contact_angle [°]"))
         else:
-            pairs.append(("contact_angle_max_deg [°]", f"alpha_max_{tag} [°]"))
+            pairs.append(("contact_angle_max [°]", f"alpha_max_{tag} [°]"))
         for mine, theirs in pairs:
             assert float(got[mine]) == pytest.approx(float(want[theirs]), rel=2e-10, abs=1e-12)
 

@@ -39,10 +39,10 @@ def test_sweep_figure_holds_the_sweep():
 
 def test_ball_loads_figure_holds_the_loads():
     r = solve(9, 1000.0, 1e5, 0.01, 7.0)
-    fig = plots.ball_loads_figure([("", r.ball_angles(), r.ball_loads())], "title")
+    fig = plots.ball_loads_figure([("", r.ball_angles, r.ball_loads)], "title")
     (ax,) = fig.get_axes()
     heights = [p.get_height() for p in ax.patches]
-    np.testing.assert_allclose(heights, r.ball_loads(), rtol=1e-15)
+    np.testing.assert_allclose(heights, r.ball_loads, rtol=1e-15)
     assert "[N]" in ax.get_ylabel() and "[°]" in ax.get_xlabel()
 
 

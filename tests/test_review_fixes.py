@@ -125,10 +125,8 @@ def test_the_largest_contact_angle_is_that_of_a_loaded_ball():
         invoke("solve", "6205", "-F", "1kN", "--misalignment", "0.1", "--format", "json").output
     )
     case = doc["cases"][0]
-    loaded = [
-        a for a, q in zip(case["contact_angles_deg"], case["ball_loads"], strict=True) if q > 0
-    ]
-    assert case["contact_angle_max_deg"] == max(loaded, key=abs)
+    loaded = [a for a, q in zip(case["contact_angles"], case["ball_loads"], strict=True) if q > 0]
+    assert case["contact_angle_max"] == max(loaded, key=abs)
 
 
 def test_second_review_sweep_moment_and_separators(capsys):

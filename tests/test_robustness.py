@@ -63,7 +63,7 @@ def test_write_into_a_fifo_writes_through(tmp_path):
 def test_dash_is_standard_output_and_empty_name_is_an_error(tmp_path):
     r = run_cli("table", "k", "--z-max", "2", "--format", "csv", "-o", "-", cwd=tmp_path)
     assert r.returncode == 0 and r.stdout.startswith(
-        "method,load [N],stiffness [N/mm^1.5],clearance [mm],cage_angle_deg [°],exponent,balls,loaded_balls,k\n"
+        "method,load [N],stiffness [N/mm^1.5],clearance [mm],cage_angle [°],exponent,balls,loaded_balls,k\n"
     )
     assert list(tmp_path.iterdir()) == []
     r = run_cli("table", "k", "-o", "")
@@ -98,8 +98,8 @@ def test_a_huge_cage_angle_keeps_its_position():
     big = solve(8, 100.0, 4e5, 0.0, 1e16)
     same = solve(8, 100.0, 4e5, 0.0, 280.0)
     assert float(big.q_max) == pytest.approx(float(same.q_max), rel=1e-13)
-    assert float(big.q_max) == pytest.approx(float(big.ball_loads().max()), rel=1e-13)
-    assert np.all((big.ball_angles() >= 0) & (big.ball_angles() < 360.0))
+    assert float(big.q_max) == pytest.approx(float(big.ball_loads.max()), rel=1e-13)
+    assert np.all((big.ball_angles >= 0) & (big.ball_angles < 360.0))
 
 
 def test_roller_stiffness_units():
@@ -120,7 +120,7 @@ def test_csv_headers_carry_units():
     )
     header = out.splitlines()[0]
     assert header.startswith(
-        "method,balls,load [N],stiffness [N/mm^1.5],clearance [mm],cage_angle_deg [°]"
+        "method,balls,load [N],stiffness [N/mm^1.5],clearance [mm],cage_angle [°]"
     )
     assert (
         ",q_max [N]," in header and ",x [mm]," in header and ",stiffness_radial [N/mm]," in header
@@ -129,7 +129,7 @@ def test_csv_headers_carry_units():
         main, ["solve", "-z", "8", "-F", "300kgf", "-K", "4700kgf/mm^1.5", "--format", "csv", "--per-ball"]
     ).output  # fmt: skip
     assert per_ball.splitlines()[0].endswith(
-        ",ball,ball_angles_deg [°],ball_approaches [mm],ball_loads [N]"
+        ",ball,ball_angles [°],ball_approaches [mm],ball_loads [N]"
     )
 
 
@@ -446,4 +446,4 @@ def test_scalar_path_agrees_with_the_vectorised_path():
         for name in ("x", "q_max", "stiffness_radial", "load_zone"):
             assert float(getattr(a, name)) == pytest.approx(float(getattr(b, name)[0]), rel=3e-14)
         assert abs(float(a.y) - float(b.y[0])) <= 3e-14 * abs(float(b.x[0]))
-        np.testing.assert_allclose(a.ball_loads(), b[0].ball_loads(), rtol=1e-13, atol=1e-13 * f)
+        np.testing.assert_allclose(a.ball_loads, b[0].ball_loads, rtol=1e-13, atol=1e-13 * f)

@@ -161,7 +161,7 @@ def test_one_vectorised_solve(monkeypatch):
 def test_huge_clearance_and_tiny_load_name_the_right_ball():
     s = sweep(9, 1e-6, 1e5, 10.0, steps=9)
     for i in range(9):
-        q = solve(9, 1e-6, 1e5, 10.0, s.cage_angle[i]).ball_loads()
+        q = solve(9, 1e-6, 1e5, 10.0, s.cage_angle[i]).ball_loads
         assert s.q_max_ball[i] == 1 + int(np.argmax(q >= q.max() * (1 - 1e-9)))
     assert np.all(np.isfinite(s.stiffness_radial))
 

@@ -64,7 +64,7 @@ def test_cage_angle_spellings_are_those_of_batch(tmp_path, spelling, degrees):
     solve = [*HAND, "-G", "20um", "--format", "json"]
     got = json.loads(invoke(*solve, "--cage-angle", spelling).output)["cases"][0]
     want = json.loads(invoke(*solve, "--cage-angle", repr(degrees)).output)["cases"][0]
-    assert got["cage_angle_deg"] == pytest.approx(degrees, rel=1e-9)  # json: 10 digits
+    assert got["cage_angle"] == pytest.approx(degrees, rel=1e-9)  # json: 10 digits
     assert got["q_max"] == want["q_max"]
     cases = tmp_path / "c.csv"
     cell = spelling if spelling != "5.5DEG" else "5.5deg"  # batch's units are case-sensitive

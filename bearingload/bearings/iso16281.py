@@ -38,14 +38,10 @@ from numpy.typing import ArrayLike
 
 from bearingload import validate
 from bearingload.errors import InputError
+from bearingload.validate import scalar_out
 
 #: Which ring rotates relative to the load: the values ``rotating`` accepts.
 ROTATING = ("inner", "outer")
-
-
-def _out(x: Any) -> Any:
-    x = np.asarray(x)
-    return x[()] if x.ndim == 0 else x
 
 
 def contact_ratings(
@@ -107,7 +103,7 @@ def contact_ratings(
     base = c / (z * rows**0.7 * cos_a**0.7)
     q_ci = base / 0.407 * (1.0 + (1.044 * x) ** (10.0 / 3.0)) ** 0.3
     q_ce = base / 0.389 * (1.0 + (1.044 * x) ** (-10.0 / 3.0)) ** 0.3
-    return _out(q_ci), _out(q_ce)
+    return scalar_out(q_ci), scalar_out(q_ce)
 
 
 def equivalent_ball_loads(ball_loads: ArrayLike, rotating: str = "inner") -> tuple[Any, Any]:
@@ -136,8 +132,8 @@ def equivalent_ball_loads(ball_loads: ArrayLike, rotating: str = "inner") -> tup
     cubic = peak[..., 0] * np.mean(rel**3, axis=-1) ** (1.0 / 3.0)
     ten_thirds = peak[..., 0] * np.mean(rel ** (10.0 / 3.0), axis=-1) ** 0.3
     if rotating == "inner":
-        return _out(cubic), _out(ten_thirds)
-    return _out(ten_thirds), _out(cubic)
+        return scalar_out(cubic), scalar_out(ten_thirds)
+    return scalar_out(ten_thirds), scalar_out(cubic)
 
 
 def reference_rating_life(
@@ -169,4 +165,4 @@ def reference_rating_life(
         inner = (q_ei / ci) ** (10.0 / 3.0)
         outer = (q_ee / ce) ** (10.0 / 3.0)
         life = (inner + outer) ** (-0.9)
-    return _out(life)
+    return scalar_out(life)

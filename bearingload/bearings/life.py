@@ -28,11 +28,7 @@ from numpy.typing import ArrayLike
 
 from bearingload.constants import BALL_LIFE_EXPONENT, ROLLER_LIFE_EXPONENT  # noqa: E402,F401
 from bearingload.errors import InputError
-from bearingload.validate import finite_positive
-
-
-def _out(x: np.ndarray) -> Any:
-    return x[()] if x.ndim == 0 else x
+from bearingload.validate import finite_positive, scalar_out
 
 
 def rating_life(C: ArrayLike, P: ArrayLike, exponent: ArrayLike = BALL_LIFE_EXPONENT) -> Any:
@@ -67,7 +63,7 @@ def rating_life(C: ArrayLike, P: ArrayLike, exponent: ArrayLike = BALL_LIFE_EXPO
         life = (c / p) ** e
     if not np.all(np.isfinite(life)):
         raise InputError("load", "is so small that the rating life (C/P)^p overflows")
-    return _out(life)
+    return scalar_out(life)
 
 
 def allowable_load(
@@ -103,7 +99,7 @@ def allowable_load(
     c = finite_positive("C", C)
     n = finite_positive("revolutions", revolutions)
     e = finite_positive("exponent", exponent)
-    return _out(c / n ** (1.0 / e))
+    return scalar_out(c / n ** (1.0 / e))
 
 
 #: ISO 281:2007, 5.2 (dynamic equivalent radial load of radial ball bearings), Table 3, single-row
@@ -158,4 +154,4 @@ def equivalent_load_deep_groove(
     with np.errstate(divide="ignore", invalid="ignore"):
         small = np.where(fr > 0, fa / np.where(fr > 0, fr, 1.0) <= e, fa == 0)
     p = np.where(small, fr, ISO281_DEEP_GROOVE_X * fr + y * fa)
-    return _out(np.asarray(p, dtype=float))
+    return scalar_out(np.asarray(p, dtype=float))

@@ -40,6 +40,7 @@ import numpy as np
 from numpy.typing import ArrayLike
 
 from bearingload.errors import InputError
+from bearingload.validate import scalar_out
 
 #: ISO 281:2007 Table 1: b_m of radial ball bearings (deep groove, angular contact). [-]
 B_M = 1.3
@@ -79,10 +80,6 @@ def _gamma(ball_diameter: ArrayLike, pitch_diameter: ArrayLike) -> np.ndarray:
     return g
 
 
-def _out(x: np.ndarray) -> Any:
-    return x[()] if x.ndim == 0 else x
-
-
 def f_c(ball_diameter: ArrayLike, pitch_diameter: ArrayLike) -> Any:
     """Factor f_c of ISO 281:2007 Table 2 (single-row deep groove), linearly interpolated.
 
@@ -102,7 +99,7 @@ def f_c(ball_diameter: ArrayLike, pitch_diameter: ArrayLike) -> Any:
     59.838
     """
     g = _gamma(ball_diameter, pitch_diameter)
-    return _out(np.interp(g, np.arange(1, 41) / 100.0, FC_TABLE))
+    return scalar_out(np.interp(g, np.arange(1, 41) / 100.0, FC_TABLE))
 
 
 def f_0(ball_diameter: ArrayLike, pitch_diameter: ArrayLike) -> Any:
@@ -124,7 +121,7 @@ def f_0(ball_diameter: ArrayLike, pitch_diameter: ArrayLike) -> Any:
     13.815
     """
     g = _gamma(ball_diameter, pitch_diameter)
-    return _out(np.interp(g, np.arange(41) / 100.0, F0_TABLE))
+    return scalar_out(np.interp(g, np.arange(41) / 100.0, F0_TABLE))
 
 
 def dynamic_rating(balls: ArrayLike, ball_diameter: ArrayLike, pitch_diameter: ArrayLike) -> Any:
@@ -148,7 +145,7 @@ def dynamic_rating(balls: ArrayLike, ball_diameter: ArrayLike, pitch_diameter: A
     dw = np.asarray(ball_diameter, dtype=float)
     fc = np.asarray(f_c(dw, pitch_diameter))
     power = np.where(dw <= _INCH, dw**1.8, 3.647 * dw**1.4)
-    return _out(B_M * fc * z ** (2.0 / 3.0) * power)
+    return scalar_out(B_M * fc * z ** (2.0 / 3.0) * power)
 
 
 def static_rating(balls: ArrayLike, ball_diameter: ArrayLike, pitch_diameter: ArrayLike) -> Any:
@@ -158,7 +155,7 @@ def static_rating(balls: ArrayLike, ball_diameter: ArrayLike, pitch_diameter: Ar
     """
     z = np.asarray(balls, dtype=float)
     dw = np.asarray(ball_diameter, dtype=float)
-    return _out(np.asarray(f_0(dw, pitch_diameter)) * z * dw**2)
+    return scalar_out(np.asarray(f_0(dw, pitch_diameter)) * z * dw**2)
 
 
 def standard_ball_sizes() -> np.ndarray:

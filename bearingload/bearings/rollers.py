@@ -44,6 +44,7 @@ from bearingload.bearings._data import read_rows
 from bearingload.bearings.designation import Designation, parse
 from bearingload.constants import STEEL_MODULUS
 from bearingload.errors import InputError
+from bearingload.validate import scalar_out
 
 #: L_we/D_w of the derived roller counts: mean of the published NU204, NU205, NU206. [-]
 LENGTH_RATIO = 1.017
@@ -276,4 +277,4 @@ def line_contact_pressure(
     rho_o = 2.0 / dw - 2.0 / (dm + dw)
     p_i = np.sqrt(q * e_star * rho_i / (math.pi * le))
     p_o = np.sqrt(q * e_star * rho_o / (math.pi * le))
-    return (p_i[()] if p_i.ndim == 0 else p_i), (p_o[()] if p_o.ndim == 0 else p_o)
+    return scalar_out(p_i), scalar_out(p_o)

@@ -52,6 +52,7 @@ from numpy.typing import ArrayLike
 from bearingload.constants import BALL_EXPONENT, ROLLER_EXPONENT, STEEL_MODULUS, STEEL_POISSON
 from bearingload.contact import _hertz_scalar
 from bearingload.errors import ConvergenceError, InputError
+from bearingload.validate import scalar_out
 
 #: Young's modulus and Poisson's ratio of bearing steel (bearingload.constants). [MPa], [-]
 E_STEEL = STEEL_MODULUS
@@ -153,11 +154,6 @@ def _non_negative(name: str, value: ArrayLike) -> np.ndarray:
     return arr
 
 
-def _out(x: Any) -> Any:
-    """Scalar in, scalar out: unwrap 0-d arrays into numpy scalars."""
-    return x[()] if isinstance(x, np.ndarray) else x
-
-
 def _plain(*values: object) -> list[float] | None:
     """The values as finite Python floats when every one is a plain real scalar, else None.
 
@@ -223,7 +219,7 @@ def reduced_modulus(
     n2 = n1 if nu2 is None else _finite("nu2", nu2)
     for name, nu in (("nu1", n1), ("nu2", n2)):
         _check(name, nu, "between -1 and 0.5", (nu > -1.0) & (nu <= 0.5))
-    return _out(1.0 / ((1.0 - n1**2) / e1 + (1.0 - n2**2) / e2))
+    return scalar_out(1.0 / ((1.0 - n1**2) / e1 + (1.0 - n2**2) / e2))
 
 
 def _contact_modulus(E: ArrayLike, nu: ArrayLike, e_star: ArrayLike | None) -> np.ndarray:
@@ -244,7 +240,7 @@ def curvature_difference(rho_x: ArrayLike, rho_y: ArrayLike) -> Any:
     0.0
     """
     small, large = _curvature_pair(rho_x, rho_y)
-    return _out((large - small) / (large + small))
+    return scalar_out((large - small) / (large + small))
 
 
 def _curvature_pair(rho_x: ArrayLike, rho_y: ArrayLike) -> tuple[np.ndarray, np.ndarray]:
@@ -375,7 +371,7 @@ def hertz_coefficients(rho_x: ArrayLike, rho_y: ArrayLike) -> HertzCoefficients:
     pair = None if plain is None else _scalar_pair(*plain)
     if pair is not None:
         try:
-            return HertzCoefficients(*(np.float64(v) for v in _hertz_scalar.coefficients(*pair)))
+            return HertzCoefficients(*(float(v) for v in _hertz_scalar.coefficients(*pair)))
         except ArithmeticError:
             pass  # the vectorised solver below
     small, large = _curvature_pair(rho_x, rho_y)
@@ -392,7 +388,9 @@ def hertz_coefficients(rho_x: ArrayLike, rho_y: ArrayLike) -> HertzCoefficients:
     a_star = np.cbrt(2.0 * kappa**2 * e_int / math.pi)
     b_star = np.cbrt(2.0 * e_int / (math.pi * kappa))
     delta_star = 2.0 * k_int / math.pi * np.cbrt(math.pi / (2.0 * kappa**2 * e_int))
-    return HertzCoefficients(*(_out(v) for v in (kappa, a_star, b_star, delta_star, k_int, e_int)))
+    return HertzCoefficients(
+        *(scalar_out(v) for v in (kappa, a_star, b_star, delta_star, k_int, e_int))
+    )
 
 
 def ellipticity(rho_x: ArrayLike, rho_y: ArrayLike) -> Any:
@@ -461,7 +459,7 @@ def point_contact(
     # 3Q/(2 pi a b) written with X so that Q = 0 gives 0, not 0/0
     p_max = sum_rho * es * x / (math.pi * a_star * b_star)
     return PointContact(
-        *(_out(v) for v in np.broadcast_arrays(kappa, a, b, delta, stiffness, p_max))
+        *(scalar_out(v) for v in np.broadcast_arrays(kappa, a, b, delta, stiffness, p_max))
     )
 
 
@@ -491,7 +489,7 @@ def _point_contact_scalar(
         4.0 * math.sqrt(2.0) / 3.0 * es / (d_star**1.5 * math.sqrt(sum_rho)),
         sum_rho * es * x / (math.pi * a_star * b_star),
     )
-    return PointContact(*(np.float64(v) for v in values))
+    return PointContact(*(float(v) for v in values))
 
 
 def point_contact_stiffness(
@@ -533,7 +531,7 @@ def series_stiffness(k1: ArrayLike, k2: ArrayLike, exponent: float = POINT_EXPON
     """
     a = _positive("k1", k1)
     b = _positive("k2", k2)
-    return _out((a ** (-1.0 / exponent) + b ** (-1.0 / exponent)) ** (-exponent))
+    return scalar_out((a ** (-1.0 / exponent) + b ** (-1.0 / exponent)) ** (-exponent))
 
 
 def ball_raceway_curvatures(
@@ -566,10 +564,10 @@ def ball_raceway_curvatures(
         _check(name, raw, "greater than 0.5 (groove radius larger than the ball radius)", f > 0.5)
     # the forms below avoid the cancellations 2/D - 1/(f D) and 2/D -/+ 2/(d_m -/+ D)
     return RacewayCurvatures(
-        inner_x=_out(2.0 * dm / (dw * (dm - dw))),
-        inner_y=_out((2.0 * fi - 1.0) / (fi * dw)),
-        outer_x=_out(2.0 * dm / (dw * (dm + dw))),
-        outer_y=_out((2.0 * fo - 1.0) / (fo * dw)),
+        inner_x=scalar_out(2.0 * dm / (dw * (dm - dw))),
+        inner_y=scalar_out((2.0 * fi - 1.0) / (fi * dw)),
+        outer_x=scalar_out(2.0 * dm / (dw * (dm + dw))),
+        outer_y=scalar_out((2.0 * fo - 1.0) / (fo * dw)),
     )
 
 
@@ -655,7 +653,7 @@ def _ball_stiffness_scalar(
     except ArithmeticError:
         return None
     ball = (k_i ** (-1.0 / POINT_EXPONENT) + k_o ** (-1.0 / POINT_EXPONENT)) ** (-POINT_EXPONENT)
-    return BallStiffness(np.float64(k_i), np.float64(k_o), np.float64(ball))
+    return BallStiffness(float(k_i), float(k_o), float(ball))
 
 
 def palmgren_line_deflection(
@@ -685,7 +683,7 @@ def palmgren_line_deflection(
     """
     q = _non_negative("load", load)
     length_ = _positive("length", length)
-    return _out(coefficient * q**0.9 / length_**0.8)
+    return scalar_out(coefficient * q**0.9 / length_**0.8)
 
 
 def palmgren_line_stiffness(
@@ -701,7 +699,7 @@ def palmgren_line_stiffness(
     80590.0
     """
     length_ = _positive("length", length)
-    return _out(length_ ** (8.0 / 9.0) / coefficient ** (10.0 / 9.0))
+    return scalar_out(length_ ** (8.0 / 9.0) / coefficient ** (10.0 / 9.0))
 
 
 def roller_stiffness(

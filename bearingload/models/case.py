@@ -141,8 +141,6 @@ RESULT_QUANTITIES = tuple(
 
 
 def scalar(value: Any) -> Any:
-    """A Python int/float/bool for a 0-d array, the array otherwise."""
-    if value is None:
-        return None
-    arr = np.asarray(value)
-    return arr.item() if arr.ndim == 0 else arr
+    """A Python int/float/bool for a 0-d array, the array otherwise
+    (:func:`bearingload.validate.scalar_out`)."""
+    return validate.scalar_out(value)

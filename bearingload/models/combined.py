@@ -95,12 +95,18 @@ MAX_STIFFNESS_UPDATES = 40
 class CombinedDistribution:
     """Solution of the combined-load equilibrium; arrays of the case shape, ball arrays (..., z).
 
+    For one case given as scalars every case quantity is a Python ``float`` (``iterations`` an
+    ``int``; :func:`bearingload.validate.scalar_out`), as in
+    :class:`~bearingload.models.equilibrium.LoadDistribution`; the ball arrays stay (z,) arrays.
+
     Attributes
     ----------
     balls : int
         Number of balls z. [-]
-    radial_load, axial_load : ndarray
-        F_r and F_a. [N]
+    load, axial_load : ndarray
+        Radial load F_r (the keyword ``radial_load`` of :func:`solve_combined`; ``load`` as in
+        :class:`~bearingload.models.equilibrium.LoadDistribution` and the JSON key) and axial
+        load F_a. [N]
     moment : ndarray
         Moment on the inner ring, applied or (imposed misalignment) needed. [N mm]
     clearance : ndarray
@@ -132,7 +138,7 @@ class CombinedDistribution:
     """
 
     balls: int
-    radial_load: np.ndarray
+    load: np.ndarray
     axial_load: np.ndarray
     moment: np.ndarray
     clearance: np.ndarray
@@ -152,14 +158,14 @@ class CombinedDistribution:
     iterations: np.ndarray
 
     @property
-    def q_max(self) -> np.ndarray:
+    def q_max(self) -> Any:
         """Load of the most heavily loaded ball. [N]"""
-        return self.ball_loads.max(axis=-1)
+        return validate.scalar_out(self.ball_loads.max(axis=-1))
 
     @property
-    def loaded_balls(self) -> np.ndarray:
+    def loaded_balls(self) -> Any:
         """Number of balls carrying load. [-]"""
-        return (self.ball_loads > 0).sum(axis=-1)
+        return validate.scalar_out((self.ball_loads > 0).sum(axis=-1))
 
 
 @dataclass(frozen=True)
@@ -851,8 +857,8 @@ def _result(
     moment = geo.R_i * p.f_ref * gen[:, 3] if misalignment is not None else mm
     z = p.z
 
-    def case(a: np.ndarray) -> np.ndarray:
-        return np.asarray(a).reshape(shape)
+    def case(a: np.ndarray) -> Any:
+        return validate.scalar_out(np.asarray(a).reshape(shape))
 
     def ball(a: np.ndarray) -> np.ndarray:
         return a.reshape(shape + (z,))
@@ -861,7 +867,7 @@ def _result(
     phi = np.mod(cage[:, None] + 360.0 * np.arange(z) / z, 360.0)
     return CombinedDistribution(
         balls=z,
-        radial_load=case(given["radial_load"]),
+        load=case(given["radial_load"]),
         axial_load=case(given["axial_load"]),
         moment=case(moment),
         clearance=case(given["clearance"]),

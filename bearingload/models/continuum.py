@@ -103,7 +103,7 @@ class ContinuumResult:
         Load-zone parameter ``eps = (1 - e/x)/2``. [-]
     x : ndarray
         Displacement of the inner ring along the load. [mm]
-    max_deflection : ndarray
+    approach_max : ndarray
         Elastic approach of the most loaded element ``delta_max = x - e``. [mm]
     stiffness_radial : ndarray
         Tangent radial stiffness of the bearing ``dF_r/dx``. [N/mm]
@@ -117,7 +117,7 @@ class ContinuumResult:
     load_zone: np.ndarray
     epsilon: np.ndarray
     x: np.ndarray
-    max_deflection: np.ndarray
+    approach_max: np.ndarray
     stiffness_radial: np.ndarray
     iterations: np.ndarray
 
@@ -293,7 +293,7 @@ def solve_continuum(
     Returns
     -------
     ContinuumResult
-        ``k``, ``q_max``, ``K_Q``, ``load_zone``, ``epsilon``, ``x``, ``max_deflection``,
+        ``k``, ``q_max``, ``K_Q``, ``load_zone``, ``epsilon``, ``x``, ``approach_max``,
         ``stiffness`` (``dF_r/dx``) and ``iterations``.
 
     Raises
@@ -369,7 +369,7 @@ def solve_continuum(
         load_zone=_shaped(np.rad2deg(zone), shape),
         epsilon=_shaped(eps, shape),
         x=_shaped(x, shape),
-        max_deflection=_shaped(d_max, shape),
+        approach_max=_shaped(d_max, shape),
         stiffness_radial=_shaped(stiff, shape),
         iterations=_shaped(iterations, shape),
     )

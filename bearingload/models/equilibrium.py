@@ -136,9 +136,9 @@ class LoadDistribution:
         kyy = self.stiffness_matrix[..., 1, 1]
         with np.errstate(divide="ignore", invalid="ignore"):
             ratio = np.where(kyy > 0, kxy / np.where(kyy > 0, kyy, 1.0), 0.0)
-        out = np.asarray(kxx - kxy * ratio)
-        return out.item() if out.ndim == 0 else out
+        return validate.scalar_out(kxx - kxy * ratio)
 
+    @property
     def ball_angles(self) -> np.ndarray:
         """Angles ``phi_i`` of balls 1..z from the load line, in [0, 360), for one case. [°]"""
         return np.rad2deg(self._ball_angles_rad())
@@ -148,6 +148,7 @@ class LoadDistribution:
         phi1 = np.deg2rad(float(self._one(self.cage_angle)))
         return np.mod(phi1 + 2.0 * np.pi * np.arange(z) / z, 2 * np.pi)
 
+    @property
     def ball_approaches(self) -> np.ndarray:
         """Approach ``delta_i`` of balls 1..z (negative: the gap left), for one case. [mm]
 
@@ -165,16 +166,17 @@ class LoadDistribution:
         u = gap_factor(phi - mu, h)
         return dx * snapped_cos(phi) + dy * snapped_sin(phi) - e * u
 
+    @property
     def ball_loads(self) -> np.ndarray:
         """Load ``Q_i`` of balls 1..z (ball 1 at the cage angle), for one case. [N]"""
-        delta = self.ball_approaches()
+        delta = self.ball_approaches
         m = float(self._one(self.exponent))
         return float(self._one(self.stiffness)) * np.maximum(delta, 0.0) ** m
 
     def _one(self, arr: np.ndarray) -> Any:
         if np.size(arr) != 1:
             raise ValueError(
-                "ball_loads() and ball_angles() describe one case; index the result first"
+                "ball_loads, ball_approaches and ball_angles describe one case; index the result first"
             )
         return np.asarray(arr).reshape(())
 
@@ -194,7 +196,7 @@ def _lazy_field(name: str) -> property:
             value = self.__dict__["_values"][name]
             arr = np.asarray(value)
             # one case: a Python int or float for each quantity (arrays stay arrays)
-            arr = cache[name] = arr.item() if arr.ndim == 0 else arr
+            arr = cache[name] = validate.scalar_out(arr)
         return arr
 
     return property(get, doc=f"``{name}`` of the case (see LoadDistribution).")

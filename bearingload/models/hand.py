@@ -29,6 +29,7 @@ import numpy as np
 
 from bearingload import validate
 from bearingload.errors import InputError
+from bearingload.validate import scalar_out
 
 #: Load-zone parameters of the printed table, steps of 0.1. [-]
 TABLE_EPSILON = (0.0, 0.1, 0.2, 0.3, 0.4, 0.5, 0.6, 0.7, 0.8, 0.9, 1.0)
@@ -56,10 +57,6 @@ class TrialResult(NamedTuple):
     q_max: Any
     angle: Any
     evaluations: Any
-
-
-def _out(a: np.ndarray) -> Any:
-    return a.item() if a.ndim == 0 else a
 
 
 def kuzmenko2010_trial(
@@ -173,7 +170,7 @@ def kuzmenko2010_trial(
     j = np.where(take_lo, lo, hi)
     cos0 = np.cos(np.deg2rad(j * step))
     q = kk * e**m * np.maximum(c.max(axis=1) / cos0 - 1.0, 0.0) ** m
-    return TrialResult(*(_out(a.reshape(shape)) for a in (q / f, q, j * step, evaluations)))
+    return TrialResult(*(scalar_out(a.reshape(shape)) for a in (q / f, q, j * step, evaluations)))
 
 
 def table_jr(epsilon: Any) -> np.ndarray:
@@ -248,4 +245,4 @@ def load_zone_table_k(balls: Any, load: Any, stiffness: Any, clearance: Any = 0.
     eps = np.where(e == 0, 0.5, 0.5 * (lo + hi))
     k = 1.0 / (z * table_jr(eps))
     its = np.where(e == 0, 0, iterations)
-    return TableResult(*(_out(np.asarray(a)) for a in (k, k * f, eps, its)))
+    return TableResult(*(scalar_out(np.asarray(a)) for a in (k, k * f, eps, its)))

@@ -10,7 +10,7 @@ named through :mod:`bearingload.reports.quantities`. Same layout as the radial r
   of each value only with ``show_geometry``.
 * ``csv``: one row per case (inputs among the columns); with ``per_ball`` one row per ball.
 * ``json``: ``{"cases": [...], "units": {...}, "bearing": {...}}``; every case carries the
-  per-ball arrays ``ball_angles_deg``, ``contact_angles_deg``, ``ball_approaches``, ``ball_loads``.
+  per-ball arrays ``ball_angles``, ``contact_angles``, ``ball_approaches``, ``ball_loads``.
 """
 
 from __future__ import annotations
@@ -31,13 +31,13 @@ INPUT_KEYS = (
     "axial_load",
     "moment",
     "moment_cross",
-    "misalignment_deg",
+    "misalignment",
     "tilt_radius",
     "rotating",
     "stiffness",
     "clearance",
     "clearance_pick",
-    "cage_angle_deg",
+    "cage_angle",
 )
 ANSWER_KEYS = (
     "q_max",
@@ -46,14 +46,14 @@ ANSWER_KEYS = (
     "p_max_outer",
     "static_equivalent_load",
     "static_safety",
-    "contact_angle_max_deg",
-    "free_contact_angle_deg",
+    "contact_angle_max",
+    "free_contact_angle",
     "axial_play",
     "x",
     "y",
-    "deflection_axial",
-    "tilt_deg",
-    "tilt_cross_deg",
+    "axial",
+    "tilt",
+    "tilt_cross",
     "moment",
     "moment_cross",
     "reference_rating_life",
@@ -66,8 +66,8 @@ ANSWER_KEYS = (
 SOLVE_ONLY_KEYS = ("p_max_inner", "p_max_outer", "static_equivalent_load", "static_safety")
 PER_BALL_KEYS = (
     "ball",
-    "ball_angles_deg",
-    "contact_angles_deg",
+    "ball_angles",
+    "contact_angles",
     "ball_approaches",
     "ball_loads",
 )
@@ -89,8 +89,8 @@ STATIC_NOTE = (
 def tilt_text(inputs: dict[str, Any]) -> str:
     """', imposed misalignment 0.05°' or ', M = 2000 N mm' (or nothing), then the moment about
     the load line and the lever of the tilt where given, for a title."""
-    if inputs.get("misalignment_deg") is not None:
-        text = f", imposed misalignment {inputs['misalignment_deg']:.6g}°"
+    if inputs.get("misalignment") is not None:
+        text = f", imposed misalignment {inputs['misalignment']:.6g}°"
     else:
         text = f", M = {inputs['moment']:.6g} N mm" if inputs["moment"] else ""
     if inputs.get("moment_cross") is not None:
@@ -175,7 +175,7 @@ def _title(records: Sequence[dict[str, Any]]) -> str:
     lever = f", tilt lever {r['tilt_radius']:.6g} mm" if r.get("tilt_radius") is not None else ""
     return (
         f"{who}z = {r['balls']}, F_r = {r['load']:.6g} N, F_a = {r['axial_load']:.6g} N, "
-        f"{clear}, cage angle {r['cage_angle_deg']:.6g}°, {r['rotating']} ring rotating{lever}"
+        f"{clear}, cage angle {r['cage_angle']:.6g}°, {r['rotating']} ring rotating{lever}"
     )
 
 
@@ -220,8 +220,8 @@ def _document(cases: Sequence[CombinedCase], records: Sequence[dict[str, Any]]) 
             dict(r)
             | {
                 "model": "3-D ring equilibrium, deep-groove ball bearing (ISO/TS 16281)",
-                "ball_angles_deg": res.ball_angles,
-                "contact_angles_deg": res.contact_angles,
+                "ball_angles": res.ball_angles,
+                "contact_angles": res.contact_angles,
                 "ball_approaches": res.ball_approaches,
                 "ball_loads": res.ball_loads,
                 "warnings": list(c.warnings),

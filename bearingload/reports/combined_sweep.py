@@ -24,22 +24,22 @@ from bearingload.studies.combined_sweep import SPREAD_KEYS, CombinedSweep
 
 #: Per cage position: the quantity and its short header in the human table.
 ROW_KEYS = (
-    ("cage_angle_deg", "cage angle"),
+    ("cage_angle", "cage angle"),
     ("x", "x"),
     ("y", "y"),
-    ("deflection_axial", "axial"),
-    ("tilt_deg", "tilt"),
-    ("tilt_cross_deg", "tilt cross"),
+    ("axial", "axial"),
+    ("tilt", "tilt"),
+    ("tilt_cross", "tilt cross"),
     ("moment", "M"),
     ("q_max", "Q_max"),
     ("q_max_ball", "ball"),
     ("loaded_balls", "loaded"),
-    ("contact_angle_max_deg", "alpha_max"),
+    ("contact_angle_max", "alpha_max"),
     ("reference_rating_life", "L10r"),
 )
 #: The cage-independent figures (csv: trailing constant columns; json: in the summary).
 FIXED_KEYS = (
-    "free_contact_angle_deg",
+    "free_contact_angle",
     "axial_play",
     "dynamic_rating",
     "equivalent_load",
@@ -63,7 +63,7 @@ def inputs(s: CombinedSweep) -> dict[str, Any]:
     out: dict[str, Any] = {
         "bearing": b.designation or "given by hand",
         "balls": s.balls,
-        "load": float(r.radial_load[0]),
+        "load": float(r.load[0]),
         "axial_load": float(r.axial_load[0]),
     }
     if s.misalignment is None:
@@ -71,7 +71,7 @@ def inputs(s: CombinedSweep) -> dict[str, Any]:
     if s.moment_cross is not None:
         out["moment_cross"] = float(s.moment_cross)
     if s.misalignment is not None:
-        out["misalignment_deg"] = float(s.misalignment)
+        out["misalignment"] = float(s.misalignment)
     if s.tilt_radius is not None:
         out["tilt_radius"] = float(s.tilt_radius)
     return out | {
@@ -100,7 +100,7 @@ def fixed(s: CombinedSweep) -> dict[str, Any]:
     """The figures the cage does not change, under their quantity keys."""
     r = s.result
     return {
-        "free_contact_angle_deg": float(r.free_contact_angle[0]),
+        "free_contact_angle": float(r.free_contact_angle[0]),
         "axial_play": float(r.axial_play[0]),
         "dynamic_rating": s.dynamic_rating,
         "equivalent_load": s.equivalent_load,
@@ -113,7 +113,7 @@ def rows(s: CombinedSweep) -> list[dict[str, Any]]:
     keys = [k for k, _ in _row_keys(s)]
     r = s.result
     data: dict[str, Any] = {
-        "cage_angle_deg": r.cage_angle,
+        "cage_angle": r.cage_angle,
         "q_max_ball": s.q_max_ball,
     } | {k: s.values(k) for k in keys if k in SPREAD_KEYS}
     out = []

@@ -1,6 +1,6 @@
 """The report of Kurochkin's dimensionless sweep (``bearingload sweep --kurochkin-T``).
 
-Rows: ``cage_angle_deg``, ``F0`` (= x0), ``F0_prime`` (= -y0) with P = K = 1; summary: the
+Rows: ``cage_angle``, ``F0`` (= x0), ``F0_prime`` (= -y0) with P = K = 1; summary: the
 contact sequence, the exit angle ψ and the Fourier sine coefficients F0j' (j = 1-5) of F0' over
 the cage angle (Kurochkin 1973, eqs. 1.13, 2.1-2.3; bearingload.studies.kurochkin).
 """
@@ -13,7 +13,7 @@ from bearingload.reports.quantities import QUANTITIES, units
 from bearingload.reports.render import Column, Table, render
 from bearingload.studies.kurochkin import KurochkinSweep
 
-ROW_KEYS = ("cage_angle_deg", "F0", "F0_prime")
+ROW_KEYS = ("cage_angle", "F0", "F0_prime")
 NOTE = (
     "F0' Fourier coefficients: Gauss-Legendre quadrature over each smooth piece of half a pitch "
     "(split where a ball enters or leaves contact, kinks mapped out); error < 1e-12."
@@ -22,7 +22,7 @@ NOTE = (
 
 def _rows(s: KurochkinSweep) -> list[dict[str, Any]]:
     return [
-        {"cage_angle_deg": float(a), "F0": float(f), "F0_prime": float(p)}
+        {"cage_angle": float(a), "F0": float(f), "F0_prime": float(p)}
         for a, f, p in zip(s.cage_angle, s.F0, s.F0_prime, strict=True)
     ]
 
@@ -31,7 +31,7 @@ def kurochkin_json(s: KurochkinSweep) -> dict[str, Any]:
     """JSON document: inputs, ``rows``, ``summary`` and ``units``."""
     summary = {
         "contact_sequence": s.contact_sequence,
-        "exit_angle_deg": s.exit_angle,
+        "exit_angle": s.exit_angle,
         "F0j_prime": [float(v) for v in s.fourier],
     }
     keys = ["balls", "kurochkin_T", "clearance", *ROW_KEYS, *summary]

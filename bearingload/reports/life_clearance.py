@@ -19,9 +19,9 @@ from bearingload.studies.life_clearance import LifeAgainstClearance
 #: The row quantities and their short headers in the human table.
 ROW_KEYS = (
     ("clearance", "G_r"),
-    ("free_contact_angle_deg", "alpha_0"),
+    ("free_contact_angle", "alpha_0"),
     ("loaded_balls", "n"),
-    ("contact_angle_max_deg", "alpha_max"),
+    ("contact_angle_max", "alpha_max"),
     ("q_max", "Q_max"),
     ("reference_rating_life", "L10r"),
     ("relative_life", "L10r/L10r(0)"),
@@ -43,7 +43,7 @@ def _tilted(t: LifeAgainstClearance) -> bool:
 
 
 def _keys(t: LifeAgainstClearance) -> list[tuple[str, str]]:
-    skip = set() if _tilted(t) else {"contact_angle_max_deg"}
+    skip = set() if _tilted(t) else {"contact_angle_max"}
     if t.rating_life is None:
         skip.add("rating_life")
     return [(k, h) for k, h in ROW_KEYS if k not in skip]
@@ -58,7 +58,7 @@ def conditions(t: LifeAgainstClearance) -> dict[str, Any]:
         "axial_load": t.axial_load,
     }
     if t.misalignment is not None:
-        out["misalignment_deg"] = float(t.misalignment)
+        out["misalignment"] = float(t.misalignment)
     else:
         out["moment"] = float(t.moment or 0.0)
     if t.moment_cross is not None:
@@ -67,7 +67,7 @@ def conditions(t: LifeAgainstClearance) -> dict[str, Any]:
         out["tilt_radius"] = float(t.tilt_radius)
     return out | {
         "rotating": t.rotating,
-        "cage_angle_deg": t.cage_angle,
+        "cage_angle": t.cage_angle,
         "dynamic_rating": t.dynamic_rating,
         "equivalent_load": t.equivalent_load,
     }
@@ -76,9 +76,9 @@ def conditions(t: LifeAgainstClearance) -> dict[str, Any]:
 def _rows(t: LifeAgainstClearance, human: bool) -> list[dict[str, Any]]:
     data: dict[str, Any] = {
         "clearance": t.clearance,
-        "free_contact_angle_deg": t.free_contact_angle,
+        "free_contact_angle": t.free_contact_angle,
         "loaded_balls": t.loaded_balls,
-        "contact_angle_max_deg": t.contact_angle_max,
+        "contact_angle_max": t.contact_angle_max,
         "q_max": t.q_max,
         "reference_rating_life": t.reference_rating_life,
         "relative_life": t.relative_life,

@@ -102,7 +102,7 @@ def combined_sweep_figure(s: Any, name: str | None = None) -> Any:
     axes[-1].set_xlabel("cage angle (ball 1 from the load line) [°]")
     fig.suptitle(
         f"{_named(name)}Cage sweep over one pitch: z = {s.balls}, "
-        f"F_r = {float(r.radial_load[0]):.4g} N, "
+        f"F_r = {float(r.load[0]):.4g} N, "
         f"F_a = {float(r.axial_load[0]):.4g} N, G_r = {float(r.clearance[0]) * 1e3:.4g} µm",
         fontsize="medium",
     )
@@ -166,7 +166,7 @@ def solve_figure(cases: Sequence[Any]) -> Any:
         label = (
             f"G_r = {float(case.clearance) * 1e3:.4g} µm ({c.clearance_pick})" if several else ""
         )
-        drawn.append((label, model.ball_angles(), model.ball_loads()))
+        drawn.append((label, model.ball_angles, model.ball_loads))
     case = exact[len(exact) // 2].result.case
     title = (
         f"Ball loads, exact ring equilibrium: z = {int(case.balls)}, "
@@ -196,7 +196,7 @@ def combined_loads_figure(cases: Sequence[Any]) -> Any:
         return float(np.asarray(v).reshape(-1)[0])
 
     title = (
-        f"Ball loads, 3-D ring equilibrium: z = {int(r.balls)}, F_r = {one(r.radial_load):.6g} N, "
+        f"Ball loads, 3-D ring equilibrium: z = {int(r.balls)}, F_r = {one(r.load):.6g} N, "
         f"F_a = {one(r.axial_load):.6g} N, G_r = {one(r.clearance) * 1e3:.6g} µm, "
         f"cage angle {one(r.cage_angle):.6g}°"
     )

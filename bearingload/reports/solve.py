@@ -37,7 +37,7 @@ INPUT_KEYS = (
     "stiffness",
     "clearance",
     "clearance_pick",
-    "cage_angle_deg",
+    "cage_angle",
     "exponent",
     "rotating",
 )
@@ -47,7 +47,7 @@ ANSWER_KEYS = (
     "k",
     "K_Q",
     "loaded_balls",
-    "load_zone_deg",
+    "load_zone",
     "x",
     "y",
     "stiffness_radial",
@@ -62,7 +62,7 @@ ANSWER_KEYS = (
     "allowable_load",
     "relative_error",
 )
-PER_BALL_KEYS = ("ball", "ball_angles_deg", "ball_approaches", "ball_loads")
+PER_BALL_KEYS = ("ball", "ball_angles", "ball_approaches", "ball_loads")
 #: Keys ``solve`` writes that ``bearingload batch`` (:mod:`bearingload.studies.batch`) does not
 #: compute yet: its columns are those of ``solve`` without these.
 SOLVE_ONLY_KEYS = ("rotating", "static_safety", "reference_rating_life")
@@ -129,7 +129,7 @@ def _per_ball_table(cases: Sequence[LoadedCase], records: Sequence[dict[str, Any
         for i, (a, d, q) in enumerate(_balls(c)):
             rows.append(
                 _blank(r, inputs)
-                | {"ball": i + 1, "ball_angles_deg": a, "ball_approaches": d, "ball_loads": q}
+                | {"ball": i + 1, "ball_angles": a, "ball_approaches": d, "ball_loads": q}
             )
     exponent = records[0]["exponent"]
     return Table("balls", [column(k, exponent) for k in inputs + list(PER_BALL_KEYS)], rows)
@@ -142,9 +142,9 @@ def _balls(c: LoadedCase) -> list[tuple[float, float, float]]:
         return []
     return list(
         zip(
-            model.ball_angles().tolist(),
-            model.ball_approaches().tolist(),
-            model.ball_loads().tolist(),
+            model.ball_angles.tolist(),
+            model.ball_approaches.tolist(),
+            model.ball_loads.tolist(),
             strict=True,
         )
     )
@@ -200,7 +200,7 @@ def _title(cases: Sequence[LoadedCase], records: Sequence[dict[str, Any]]) -> st
     )
     return (
         f"{who}z = {r['balls']}, F_r = {r['load']:.6g} N ({r['load'] / 9.80665:.6g} kgf), "
-        f"K = {r['stiffness']:.6g} N/mm^{m:g}, {clear}, cage angle {r['cage_angle_deg']:.6g}°, "
+        f"K = {r['stiffness']:.6g} N/mm^{m:g}, {clear}, cage angle {r['cage_angle']:.6g}°, "
         f"m = {m:.6g}"
     )
 
@@ -303,9 +303,9 @@ def _document(
         if c.result.method == "exact":
             model = c.result.model
             doc["stiffness_matrix"] = model.stiffness_matrix.tolist()
-            doc["ball_angles_deg"] = model.ball_angles()
-            doc["ball_approaches"] = model.ball_approaches()
-            doc["ball_loads"] = model.ball_loads()
+            doc["ball_angles"] = model.ball_angles
+            doc["ball_approaches"] = model.ball_approaches
+            doc["ball_loads"] = model.ball_loads
         doc["warnings"] = list(c.warnings)
         docs.append(doc)
     keys = list(dict.fromkeys(k for d in docs for k in d))

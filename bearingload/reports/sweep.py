@@ -19,7 +19,7 @@ from bearingload.units import KGF
 SPREADS = ("x", "y", "q_max", "stiffness_radial")
 #: Per cage position: the quantity and its short header in the human table.
 ROW_KEYS = (
-    ("cage_angle_deg", "cage angle"),
+    ("cage_angle", "cage angle"),
     ("x", "x"),
     ("y", "y"),
     ("q_max", "Q_max"),
@@ -179,7 +179,7 @@ def _csv_table(s: CageSweep) -> Table:
 def _json_rows(s: CageSweep) -> list[dict[str, Any]]:
     return [
         {
-            "cage_angle_deg": float(s.cage_angle[i]),
+            "cage_angle": float(s.cage_angle[i]),
             "x": float(s.x[i]),
             "y": float(s.y[i]),
             "q_max": float(s.q_max[i]),

@@ -77,7 +77,7 @@ def _conditions(cond: Conditions, method: str | None) -> list[tuple[Column, Any]
     if cond.cage_angle == "half":
         out.append((Column("cage_angle_pitch", "cage angle", "pitch"), 0.5))
     else:
-        out.append((Column("cage_angle_deg", "cage angle", "°"), float(cond.cage_angle)))
+        out.append((Column("cage_angle", "cage angle", "°"), float(cond.cage_angle)))
     out.append((Column("exponent", "exponent"), cond.exponent))
     return out
 

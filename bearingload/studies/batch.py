@@ -661,13 +661,13 @@ def _values(result: Any, rows: Rows) -> Part:
         "clearance_pick": [None] * n
         if by_hand
         else [None if b is None else b.clearance_pick for b in bearings],
-        "cage_angle_deg": np.mod(arrays["cage_angle"], 360.0),
+        "cage_angle": np.mod(arrays["cage_angle"], 360.0),
         "exponent": arrays["exponent"],
         "q_max": col(result.q_max),
         "k": col(result.k),
         "K_Q": col(result.K_Q),
         "loaded_balls": col(result.loaded_balls),
-        "load_zone_deg": col(result.load_zone),
+        "load_zone": col(result.load_zone),
         "x": col(result.x),
         "y": col(result.y),
         "stiffness_radial": col(result.stiffness_radial),

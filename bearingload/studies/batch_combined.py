@@ -26,10 +26,10 @@ from bearingload.studies.batch_input import row_message
 #: load), after the row number.
 COMBINED_KEYS = (
     "bearing", "method", "balls", "load", "axial_load", "moment", "moment_cross",
-    "misalignment_deg", "tilt_radius", "rotating", "stiffness", "clearance", "clearance_pick",
-    "cage_angle_deg", "q_max",
-    "loaded_balls", "contact_angle_max_deg", "free_contact_angle_deg", "axial_play", "x", "y",
-    "deflection_axial", "tilt_deg", "tilt_cross_deg", "reference_rating_life",
+    "misalignment", "tilt_radius", "rotating", "stiffness", "clearance", "clearance_pick",
+    "cage_angle", "q_max",
+    "loaded_balls", "contact_angle_max", "free_contact_angle", "axial_play", "x", "y",
+    "axial", "tilt", "tilt_cross", "reference_rating_life",
     "dynamic_rating", "equivalent_load", "rating_life",
 )  # fmt: skip
 

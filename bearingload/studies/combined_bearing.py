@@ -264,7 +264,7 @@ def life_figures(
     l10r = p_eq = life = None
     if c_r:
         l10r = reference_lives(b, r, rotating, c_r)
-        fr = float(np.asarray(r.radial_load).reshape(-1)[0])
+        fr = float(np.asarray(r.load).reshape(-1)[0])
         fa = float(np.asarray(r.axial_load).reshape(-1)[0])
         p, l10 = basic_lives(b, c_r, fr, fa)
         p_eq = None if p is None else float(p)
@@ -345,27 +345,27 @@ def case_columns(
         "bearing": b.designation or "given by hand",
         "method": "combined",
         "balls": arr(r.balls, np.int64),
-        "load": arr(r.radial_load),
+        "load": arr(r.load),
         "axial_load": arr(r.axial_load),
         "moment": arr(r.moment),
         **cross,
-        "misalignment_deg": arr(misalignment),
+        "misalignment": arr(misalignment),
         **lever,
         "rotating": rotating,
         "stiffness": arr(b.stiffness),
         "clearance": arr(r.clearance),
         "clearance_pick": b.clearance_pick,
-        "cage_angle_deg": arr(r.cage_angle),
-        "free_contact_angle_deg": arr(r.free_contact_angle),
+        "cage_angle": arr(r.cage_angle),
+        "free_contact_angle": arr(r.free_contact_angle),
         "axial_play": arr(r.axial_play),
         "q_max": arr(r.q_max),
         "loaded_balls": arr(r.loaded_balls, np.int64),
         "x": arr(r.x),
         "y": arr(r.y),
-        "deflection_axial": arr(r.axial),
-        "tilt_deg": arr(r.tilt),
-        "tilt_cross_deg": arr(r.tilt_cross),
-        "contact_angle_max_deg": arr(largest_loaded_angle(r)),
+        "axial": arr(r.axial),
+        "tilt": arr(r.tilt),
+        "tilt_cross": arr(r.tilt_cross),
+        "contact_angle_max": arr(largest_loaded_angle(r)),
         "dynamic_rating": arr(dynamic_rating),
         "equivalent_load": arr(equivalent_load),
         "rating_life": arr(rating_life),

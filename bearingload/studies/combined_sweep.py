@@ -29,13 +29,13 @@ from bearingload.studies.sweep import DEFAULT_STEPS, Spread, cage_angles, spread
 SPREAD_KEYS = (
     "x",
     "y",
-    "deflection_axial",
-    "tilt_deg",
-    "tilt_cross_deg",
+    "axial",
+    "tilt",
+    "tilt_cross",
     "moment",
     "q_max",
     "loaded_balls",
-    "contact_angle_max_deg",
+    "contact_angle_max",
     "reference_rating_life",
 )
 #: Two ball loads within this relative difference are equal when naming the heaviest ball. [-]
@@ -113,13 +113,13 @@ class CombinedSweep:
         table = {
             "x": r.x,
             "y": r.y,
-            "deflection_axial": r.axial,
-            "tilt_deg": r.tilt,
-            "tilt_cross_deg": r.tilt_cross,
+            "axial": r.axial,
+            "tilt": r.tilt,
+            "tilt_cross": r.tilt_cross,
             "moment": r.moment,
             "q_max": r.q_max,
             "loaded_balls": r.loaded_balls,
-            "contact_angle_max_deg": self.contact_angle_max,
+            "contact_angle_max": self.contact_angle_max,
             "reference_rating_life": self.reference_rating_life,
         }
         if key not in table:
@@ -142,7 +142,7 @@ class CombinedSweep:
 
 
 #: Quantities whose rounding noise is measured against the largest of their family.
-_FAMILIES = (("x", "y", "deflection_axial"), ("tilt_deg", "tilt_cross_deg"))
+_FAMILIES = (("x", "y", "axial"), ("tilt", "tilt_cross"))
 
 
 def combined_sweep(

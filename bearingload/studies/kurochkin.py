@@ -141,7 +141,7 @@ def displacement(balls: int, T: Any, cage_angle: Any) -> tuple[Any, Any]:
 
 def _approach(cage_angle: float, balls: int, T: float, ball: int) -> float:
     r = solve(balls, 1.0, 1.0, clearance_from_parameter(T, balls), cage_angle)
-    return float(r.ball_approaches()[ball])
+    return float(r.ball_approaches[ball])
 
 
 def exit_angle(balls: int, T: float) -> float | None:
@@ -172,7 +172,7 @@ def _events(balls: int, T: float) -> tuple[float | None, list[float]]:
     pitch = 360.0 / z
     grid = np.linspace(0.0, pitch, BRACKET_STEPS + 1)
     r = solve(z, 1.0, 1.0, clearance_from_parameter(T, z), grid)
-    delta = np.array([r[k].ball_approaches() for k in range(grid.size)])  # (steps, balls)
+    delta = np.array([r[k].ball_approaches for k in range(grid.size)])  # (steps, balls)
     leaving = (delta[:-1] > 0) & (delta[1:] <= 0)
     candidates = []
     for k, ball in zip(*np.nonzero(leaving), strict=True):

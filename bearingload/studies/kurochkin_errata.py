@@ -270,7 +270,7 @@ def example1_moment_table(steps: int = 15) -> Table:
     keys = [f"M_e{i}" for i in range(len(gaps))]
     rows = []
     for a in angles:
-        row: dict[str, Any] = {"cage_angle_deg": float(a)}
+        row: dict[str, Any] = {"cage_angle": float(a)}
         for key, e_um in zip(keys, gaps, strict=True):
             m = ku.conservative_moment(7, load, stiffness, 2 * e_um * 1e-3, a, d_in, d_b, "inner")
             row[key] = 0.0 + float(m)
@@ -284,7 +284,7 @@ def example1_moment_table(steps: int = 15) -> Table:
     return Table(
         title="Kurochkin (1973), Example 1: conservative moment M = w P y0 over one pitch, "
         "bearing A640018, rotating inner ring",
-        columns=[Column("cage_angle_deg", "cage angle", "°", 5)]
+        columns=[Column("cage_angle", "cage angle", "°", 5)]
         + [Column(k, lab, "N·mm", 5) for k, lab in zip(keys, labels, strict=True)],
         rows=rows,
         notes=(

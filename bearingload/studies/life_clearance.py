@@ -261,7 +261,7 @@ def life_vs_clearance(
         rows.append(
             {
                 "clearance_um": float(gr),
-                "free_contact_angle_deg": float(radial.free_contact_angle[i]),
+                "free_contact_angle": float(radial.free_contact_angle[i]),
                 "loaded_r": int(radial.loaded_balls[i]),
                 "q_max_r": float(radial.q_max[i]),
                 "life_r": float(radial.reference_rating_life[i]),
@@ -291,7 +291,7 @@ def life_vs_clearance_table() -> Table:
     best_c = max(rows, key=lambda r: r["life_c"])
     columns = [
         Column("clearance_um", "G_r", "um", 3),
-        Column("free_contact_angle_deg", "alpha_0", "°", 4),
+        Column("free_contact_angle", "alpha_0", "°", 4),
         Column("loaded_r", "n (F_r)"),
         Column("q_max_r", "Q_max (F_r)", "N", 5),
         Column("life_r", "L10r (F_r)", "10^6 rev", 5),

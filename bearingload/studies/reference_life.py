@@ -45,6 +45,6 @@ def with_reference_lives(cases: Sequence[LoadedCase], rotating: str) -> list[Loa
             out.append(c)
             continue
         assert b.C is not None
-        life = float(ball_reference_life(b, c.result.model.ball_loads(), rotating, b.C))
+        life = float(ball_reference_life(b, c.result.model.ball_loads, rotating, b.C))
         out.append(dataclasses.replace(c, reference_rating_life=life, rotating=rotating))
     return out

@@ -104,8 +104,8 @@ def _engine_residual(result: Any) -> np.ndarray:
     out = np.empty(np.size(result.q_max))
     for i in range(out.size):
         one = result[i]
-        q = one.ball_loads()
-        phi = np.deg2rad(one.ball_angles())
+        q = one.ball_loads
+        phi = np.deg2rad(one.ball_angles)
         fx, fy = float(q @ np.cos(phi)), float(q @ np.sin(phi))
         f = float(one.load)
         out[i] = math.hypot(fx - f, fy) / max(f, float(q.sum()))
@@ -143,10 +143,10 @@ def _continuum(inp: dict[str, np.ndarray]) -> Outcome:
     # forward load z K delta_max^m J_r(eps) at the returned state; (x - e from the returned x
     # would cancel at huge clearance, so the returned delta_max and eps are used)
     jr = load_zone_integral(r.epsilon, inp["exponent"])
-    forward = inp["balls"] * inp["stiffness"] * r.max_deflection ** inp["exponent"] * jr
+    forward = inp["balls"] * inp["stiffness"] * r.approach_max ** inp["exponent"] * jr
     residual = np.abs(forward / inp["load"] - 1.0)
     # and the returned x must be delta_max/(2 eps)
-    residual = np.maximum(residual, np.abs(r.x * 2 * r.epsilon / r.max_deflection - 1))
+    residual = np.maximum(residual, np.abs(r.x * 2 * r.epsilon / r.approach_max - 1))
     d = np.stack([r.x, np.zeros_like(r.x)], axis=-1)
     compare = np.stack([r.q_max, r.x, r.stiffness_radial, r.epsilon], axis=-1)
     finite = np.all(np.isfinite(compare), axis=-1) & np.isfinite(r.load_zone)

@@ -120,7 +120,7 @@ def component_residuals(
     )
     n = q.shape[0]
     applied = (
-        np.reshape(result.radial_load, n),
+        np.reshape(result.load, n),
         np.zeros(n),
         np.reshape(result.axial_load, n),
         np.reshape(result.moment, n),
@@ -148,7 +148,7 @@ def overall_residual(result: Any, inputs: dict[str, np.ndarray]) -> np.ndarray:
     miss = component_residuals(result, inputs, absolute=True)
     miss[:, 3:] /= arm[:, None]
     scale = np.max(
-        [np.reshape(result.radial_load, n), np.abs(np.reshape(result.axial_load, n)),
+        [np.reshape(result.load, n), np.abs(np.reshape(result.axial_load, n)),
          np.abs(np.reshape(result.moment, n)) / arm,
          np.abs(np.broadcast_to(inputs.get("moment_cross", np.zeros(n)), n)) / arm, q.sum(-1)],
         axis=0,
