@@ -256,6 +256,18 @@ def test_axial_only_closed_form(clearance, fa):
     assert abs(float(r.tilt)) < 1e-9
 
 
+def test_groove_geometry_and_axial_only_keep_the_scalar_contract():
+    """Scalars in, Python floats out (validate.scalar_out); arrays in, arrays out."""
+    geometry = groove_geometry(11.5, 43.5, 0.52, 0.53, 0.01)
+    assert all(type(v) is float for v in geometry)
+    assert all(type(v) is float for v in axial_only(7, 1000.0, K_6305, geometry[0], 0.01))
+    many = groove_geometry(np.array([11.0, 11.5]), 43.5, 0.52, 0.53, 0.01)
+    assert all(isinstance(v, np.ndarray) and v.shape == (2,) for v in many)
+    assert [float(v[1]) for v in many] == list(geometry)
+    axial = axial_only(7, np.array([1000.0, 2000.0]), K_6305, geometry[0], 0.01)
+    assert all(isinstance(v, np.ndarray) and v.shape == (2,) for v in axial)
+
+
 # ------------------------------------------------------------------- reduction to the radial model
 
 

@@ -10,6 +10,7 @@ delta* instead.
 from __future__ import annotations
 
 import doctest
+import inspect
 import math
 
 import mpmath as mp
@@ -394,24 +395,32 @@ def test_conformity_close_to_half_stays_accurate():
 @pytest.mark.parametrize(
     ("call", "match"),
     [
-        (lambda: ball_stiffness(0.0, 51.0, 0.515, 0.52), "D_w: must be positive"),
-        (lambda: ball_stiffness(-12.3, 51.0, 0.515, 0.52), "D_w: must be positive"),
-        (lambda: ball_stiffness(12.3, -51.0, 0.515, 0.52), "d_m: must be positive"),
-        (lambda: ball_stiffness(12.3, 12.3, 0.515, 0.52), "D_w: must be smaller than"),
-        (lambda: ball_stiffness(60.0, 51.0, 0.515, 0.52), "D_w: must be smaller than"),
+        (lambda: ball_stiffness(0.0, 51.0, 0.515, 0.52), "ball_diameter: must be positive"),
+        (lambda: ball_stiffness(-12.3, 51.0, 0.515, 0.52), "ball_diameter: must be positive"),
+        (lambda: ball_stiffness(12.3, -51.0, 0.515, 0.52), "pitch_diameter: must be positive"),
+        (lambda: ball_stiffness(12.3, 12.3, 0.515, 0.52), "ball_diameter: must be smaller than"),
+        (lambda: ball_stiffness(60.0, 51.0, 0.515, 0.52), "ball_diameter: must be smaller than"),
         (lambda: ball_stiffness(12.3, 51.0, 0.5, 0.52), "f_i: must be greater than 0.5"),
         (lambda: ball_stiffness(12.3, 51.0, 0.515, 0.45), "f_o: must be greater than 0.5"),
         (lambda: ball_stiffness(12.3, 51.0, [0.515, 0.4], 0.52), "f_i: must be greater"),
-        (lambda: ball_stiffness(float("nan"), 51.0, 0.515, 0.52), "D_w: must be a finite"),
+        (
+            lambda: ball_stiffness(float("nan"), 51.0, 0.515, 0.52),
+            "ball_diameter: must be a finite",
+        ),
         (lambda: ball_contacts(-1.0, 12.3, 51.0, 0.515, 0.52), "load: must be zero or positive"),
         (lambda: point_contact(0.0, 0.1, 1.0), "rho_x: must be positive"),
         (lambda: point_contact(0.1, -0.1, 1.0), "rho_y: must be positive"),
         (lambda: point_contact(0.1, float("inf"), 1.0), "rho_y: must be a finite"),
         (lambda: point_contact(1.0, 1e-16, 1.0), "rho_x/rho_y: must be a ratio of at most"),
         (lambda: point_contact(0.1, 0.1, 1.0, e_star=0.0), "e_star: must be positive"),
-        (lambda: point_contact(0.1, 0.1, 1.0, E=-1.0), "E1: must be positive"),
-        (lambda: reduced_modulus(2e5, 0.6), "nu1: must be between -1 and 0.5"),
-        (lambda: reduced_modulus(2e5, 0.3, 3e5, -1.0), "nu2: must be between -1 and 0.5"),
+        (lambda: point_contact(0.1, 0.1, 1.0, modulus=-1.0), "modulus: must be positive"),
+        (lambda: point_contact(0.1, 0.1, 1.0, poisson=0.6), "poisson: must be between -1"),
+        (lambda: ball_stiffness(12.3, 51.0, 0.515, 0.52, 0.0), "modulus: must be positive"),
+        (lambda: ball_contacts(1.0, 12.3, 51.0, 0.515, 0.52, poisson=-1.0), "poisson: must be"),
+        (lambda: point_contact_stiffness(0.1, 0.1, float("nan")), "modulus: must be a finite"),
+        (lambda: reduced_modulus(2e5, 0.6), "poisson: must be between -1 and 0.5"),
+        (lambda: reduced_modulus(2e5, 0.3, -3e5), "modulus2: must be positive"),
+        (lambda: reduced_modulus(2e5, 0.3, 3e5, -1.0), "poisson2: must be between -1 and 0.5"),
         (lambda: series_stiffness(0.0, 1.0), "k1: must be positive"),
         (lambda: palmgren_line_deflection(100.0, 0.0), "length: must be positive"),
         (lambda: palmgren_line_deflection(-100.0, 10.0), "load: must be zero or positive"),
@@ -427,6 +436,41 @@ def test_input_error_is_a_value_error_naming_the_parameter():
     with pytest.raises(ValueError) as info:
         ball_stiffness(12.3, 51.0, 0.5, 0.52)
     assert info.value.parameter == "f_i"
+
+
+@pytest.mark.parametrize(
+    ("function", "names"),
+    [
+        (point_contact, ("modulus", "poisson")),
+        (point_contact_stiffness, ("modulus", "poisson")),
+        (ball_raceway_curvatures, ("ball_diameter", "pitch_diameter")),
+        (ball_contacts, ("ball_diameter", "pitch_diameter", "modulus", "poisson")),
+        (ball_stiffness, ("ball_diameter", "pitch_diameter", "modulus", "poisson")),
+        (reduced_modulus, ("modulus", "poisson", "modulus2", "poisson2")),
+        (kuzmenko2010_ball_constant, ("modulus", "poisson")),
+    ],
+)
+def test_public_parameters_use_the_package_spelling(function, names):
+    """One spelling per input (as solve_combined, the CLI and the batch columns): the short
+    symbols D_w, d_m, E, nu, E1, nu1, E2, nu2 are not parameter names."""
+    params = inspect.signature(function).parameters
+    assert set(names) <= set(params)
+    assert not {"D_w", "d_m", "E", "nu", "E1", "nu1", "E2", "nu2"} & set(params)
+
+
+def test_keywords_give_the_positional_answer():
+    by_name = ball_stiffness(
+        ball_diameter=12.3, pitch_diameter=51.0, f_i=0.515, f_o=0.52, modulus=2.1e5, poisson=0.28
+    )
+    assert by_name == ball_stiffness(12.3, 51.0, 0.515, 0.52, 2.1e5, 0.28)
+    assert by_name != ball_stiffness(12.3, 51.0, 0.515, 0.52)  # the keywords are not ignored
+    c = ball_contacts(500.0, 12.3, 51.0, 0.515, 0.52, modulus=2.1e5, poisson=0.28)
+    assert c == ball_contacts(500.0, 12.3, 51.0, 0.515, 0.52, 2.1e5, 0.28)
+    assert reduced_modulus(modulus=2e5, poisson=0.3, modulus2=3e5, poisson2=0.25) == (
+        reduced_modulus(2e5, 0.3, 3e5, 0.25)
+    )
+    with pytest.raises(TypeError):
+        ball_stiffness(12.3, 51.0, 0.515, 0.52, E=2.1e5)
 
 
 def test_convergence_error_carries_the_cases(monkeypatch):
@@ -517,7 +561,7 @@ def test_bearing_306_exact_against_the_paper():
     inner 1.128e5, outer 1.205e5, both in series 4.12e4 kgf/mm^1.5 (4.04e5 N/mm^1.5).
     The paper's c = 4700 is 11.4 % of it (8.77 times too small); its own c1 used
     consistently, (2 c1)^(-3/2) = 4.03e4, is 2.1 % below the exact value."""
-    k = ball_stiffness(D_W, D_M, F_PAPER, F_PAPER, E=E_KGF, nu=0.3)
+    k = ball_stiffness(D_W, D_M, F_PAPER, F_PAPER, modulus=E_KGF, poisson=0.3)
     assert float(k.inner) == pytest.approx(1.1281e5, rel=1e-4)
     assert float(k.outer) == pytest.approx(1.2050e5, rel=1e-4)
     assert float(k.ball) == pytest.approx(4.1205e4, rel=1e-4)
@@ -526,12 +570,12 @@ def test_bearing_306_exact_against_the_paper():
     assert PAPER.k_contact / float(k.inner) == pytest.approx(1.011, abs=1e-3)
     assert PAPER.k_pair / float(k.ball) == pytest.approx(0.979, abs=1e-3)
     # with the nominal groove radius 1.03 R1 = 6.3345 mm (f = 0.515) instead of the rounded 6.33
-    nominal = ball_stiffness(D_W, D_M, 0.515, 0.515, E=E_KGF, nu=0.3)
+    nominal = ball_stiffness(D_W, D_M, 0.515, 0.515, modulus=E_KGF, poisson=0.3)
     assert float(nominal.ball) == pytest.approx(4.0846e4, rel=1e-4)
 
 
 def test_bearing_306_pressure_at_300_kgf():
-    got = ball_contacts(300.0 * KGF, D_W, D_M, F_PAPER, F_PAPER, E=E_KGF * KGF, nu=0.3)
+    got = ball_contacts(300.0 * KGF, D_W, D_M, F_PAPER, F_PAPER, modulus=E_KGF * KGF, poisson=0.3)
     assert float(got.inner.p_max) == pytest.approx(268.32 * KGF, rel=1e-4)  # 2631 MPa
     assert float(got.outer.p_max) == pytest.approx(214.13 * KGF, rel=1e-4)  # 2100 MPa
 

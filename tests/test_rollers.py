@@ -92,6 +92,33 @@ def test_line_contact_pressure_against_mpmath(q: float) -> None:
     assert [float(x) for x in got] == pytest.approx(ref, rel=1e-13, abs=1e-9)
 
 
+def test_line_contact_pressure_takes_the_package_spelling() -> None:
+    by_name = line_contact_pressure(
+        5000.0, 8.792, roller_diameter=9.0, pitch_diameter=46.5, modulus=2.1e5, poisson=0.28
+    )
+    ref = _p_ref(5000.0, 8.792, 9.0, 46.5, 2.1e5, 0.28)
+    assert [float(x) for x in by_name] == pytest.approx(ref, rel=1e-13)
+    assert all(type(x) is float for x in by_name)
+
+
+@pytest.mark.parametrize(
+    ("kwargs", "parameter"),
+    [
+        ({"modulus": 0.0}, "modulus"),
+        ({"modulus": float("inf")}, "modulus"),
+        ({"poisson": 0.6}, "poisson"),
+        ({"poisson": -1.0}, "poisson"),
+        ({"poisson": float("nan")}, "poisson"),
+    ],
+)
+def test_line_contact_pressure_names_a_bad_material(
+    kwargs: dict[str, float], parameter: str
+) -> None:
+    with pytest.raises(InputError) as info:
+        line_contact_pressure(5000.0, 8.792, 9.0, 46.5, **kwargs)
+    assert info.value.parameter == parameter
+
+
 def test_resolve_and_solve_nu206() -> None:
     b = resolve_bearing("NU206")
     assert (b.kind, b.exponent, b.balls, b.ball_diameter) == ("roller", 10 / 9, 13, 9.0)

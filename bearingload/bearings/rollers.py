@@ -42,7 +42,7 @@ from numpy.typing import ArrayLike
 
 from bearingload.bearings._data import read_rows
 from bearingload.bearings.designation import Designation, parse
-from bearingload.constants import STEEL_MODULUS
+from bearingload.constants import STEEL_MODULUS, STEEL_POISSON
 from bearingload.errors import InputError
 from bearingload.validate import scalar_out
 
@@ -235,8 +235,8 @@ def line_contact_pressure(
     length: ArrayLike,
     roller_diameter: float,
     pitch_diameter: float,
-    E: float = STEEL_MODULUS,
-    nu: float = 0.3,
+    modulus: float = STEEL_MODULUS,
+    poisson: float = STEEL_POISSON,
 ) -> tuple[Any, Any]:
     """Maximum Hertz pressure of a roller's inner and outer line contacts. [MPa]
 
@@ -251,10 +251,10 @@ def line_contact_pressure(
         Effective contact length L_we > 0. [mm]
     roller_diameter, pitch_diameter : float
         D_w, d_m. [mm]
-    E : float
-        Young's modulus. [MPa]
-    nu : float
-        Poisson's ratio. [-]
+    modulus : float
+        Young's modulus E of rollers and rings, > 0. [MPa]
+    poisson : float
+        Poisson's ratio nu, in (-1, 0.5]. [-]
 
     Returns
     -------
@@ -271,8 +271,13 @@ def line_contact_pressure(
         raise InputError("load", f"must be finite and >= 0 N, not {load!r}")
     if np.any(~np.isfinite(le)) or np.any(le <= 0):
         raise InputError("roller-length", f"must be finite and > 0 mm, not {length!r}")
+    e, nu = float(modulus), float(poisson)
+    if not (math.isfinite(e) and e > 0):
+        raise InputError("modulus", f"must be finite and > 0 MPa, not {modulus!r}")
+    if not -1.0 < nu <= 0.5:
+        raise InputError("poisson", f"must lie in (-1, 0.5], not {poisson!r}")
     dw, dm = float(roller_diameter), float(pitch_diameter)
-    e_star = E / (2.0 * (1.0 - nu * nu))
+    e_star = e / (2.0 * (1.0 - nu * nu))
     rho_i = 2.0 / dw + 2.0 / (dm - dw)
     rho_o = 2.0 / dw - 2.0 / (dm + dw)
     p_i = np.sqrt(q * e_star * rho_i / (math.pi * le))

@@ -188,10 +188,10 @@ def _scalar_pair(rho_x: float, rho_y: float) -> tuple[float, float] | None:
 
 
 def reduced_modulus(
-    E1: ArrayLike = E_STEEL,
-    nu1: ArrayLike = NU_STEEL,
-    E2: ArrayLike | None = None,
-    nu2: ArrayLike | None = None,
+    modulus: ArrayLike = E_STEEL,
+    poisson: ArrayLike = NU_STEEL,
+    modulus2: ArrayLike | None = None,
+    poisson2: ArrayLike | None = None,
 ) -> Any:
     """Contact modulus E* of two bodies, 1/E* = (1 - nu1^2)/E1 + (1 - nu2^2)/E2.
 
@@ -200,10 +200,10 @@ def reduced_modulus(
 
     Parameters
     ----------
-    E1, nu1 : array_like
-        Young's modulus [MPa] and Poisson's ratio [-] of body 1.
-    E2, nu2 : array_like, optional
-        The same for body 2; default: equal to body 1.
+    modulus, poisson : array_like
+        Young's modulus E1 [MPa] and Poisson's ratio nu1 [-] of body 1.
+    modulus2, poisson2 : array_like, optional
+        The same for body 2 (E2, nu2); default: equal to body 1.
 
     Returns
     -------
@@ -213,19 +213,21 @@ def reduced_modulus(
     >>> round(float(reduced_modulus(2.1e4, 0.3)), 1)  # Kuzmenko (2010), kgf/mm^2
     11538.5
     """
-    e1 = _positive("E1", E1)
-    n1 = _finite("nu1", nu1)
-    e2 = e1 if E2 is None else _positive("E2", E2)
-    n2 = n1 if nu2 is None else _finite("nu2", nu2)
-    for name, nu in (("nu1", n1), ("nu2", n2)):
+    e1 = _positive("modulus", modulus)
+    n1 = _finite("poisson", poisson)
+    e2 = e1 if modulus2 is None else _positive("modulus2", modulus2)
+    n2 = n1 if poisson2 is None else _finite("poisson2", poisson2)
+    for name, nu in (("poisson", n1), ("poisson2", n2)):
         _check(name, nu, "between -1 and 0.5", (nu > -1.0) & (nu <= 0.5))
     return scalar_out(1.0 / ((1.0 - n1**2) / e1 + (1.0 - n2**2) / e2))
 
 
-def _contact_modulus(E: ArrayLike, nu: ArrayLike, e_star: ArrayLike | None) -> np.ndarray:
+def _contact_modulus(
+    modulus: ArrayLike, poisson: ArrayLike, e_star: ArrayLike | None
+) -> np.ndarray:
     if e_star is not None:
         return _positive("e_star", e_star)
-    return np.asarray(reduced_modulus(E, nu), dtype=float)
+    return np.asarray(reduced_modulus(modulus, poisson), dtype=float)
 
 
 def curvature_difference(rho_x: ArrayLike, rho_y: ArrayLike) -> Any:
@@ -408,8 +410,8 @@ def point_contact(
     rho_x: ArrayLike,
     rho_y: ArrayLike,
     load: ArrayLike,
-    E: ArrayLike = E_STEEL,
-    nu: ArrayLike = NU_STEEL,
+    modulus: ArrayLike = E_STEEL,
+    poisson: ArrayLike = NU_STEEL,
     *,
     e_star: ArrayLike | None = None,
 ) -> PointContact:
@@ -421,11 +423,12 @@ def point_contact(
         Curvature sums in the two principal planes, both positive. [1/mm]
     load : array_like
         Normal load Q >= 0. [N]
-    E, nu : array_like
-        Young's modulus [MPa] and Poisson's ratio [-] of both (identical) bodies.
+    modulus, poisson : array_like
+        Young's modulus E [MPa] and Poisson's ratio nu [-] of both (identical) bodies;
+        default bearing steel.
     e_star : array_like, optional
         Contact modulus E* [MPa] (see :func:`reduced_modulus` for two different
-        materials); overrides ``E`` and ``nu``.
+        materials); overrides ``modulus`` and ``poisson``.
 
     Returns
     -------
@@ -440,11 +443,11 @@ def point_contact(
     >>> round(float(c.a), 6), round(float(c.delta), 7), round(float(c.p_max), 1)
     (0.421716, 0.0177845, 2684.7)
     """
-    fast = _point_contact_scalar(rho_x, rho_y, load, E, nu, e_star)
+    fast = _point_contact_scalar(rho_x, rho_y, load, modulus, poisson, e_star)
     if fast is not None:
         return fast
     q = _non_negative("load", load)
-    es = _contact_modulus(E, nu, e_star)
+    es = _contact_modulus(modulus, poisson, e_star)
     coeffs = hertz_coefficients(rho_x, rho_y)
     sum_rho = np.asarray(rho_x, dtype=float) + np.asarray(rho_y, dtype=float)
     kappa = np.asarray(coeffs.kappa)
@@ -495,8 +498,8 @@ def _point_contact_scalar(
 def point_contact_stiffness(
     rho_x: ArrayLike,
     rho_y: ArrayLike,
-    E: ArrayLike = E_STEEL,
-    nu: ArrayLike = NU_STEEL,
+    modulus: ArrayLike = E_STEEL,
+    poisson: ArrayLike = NU_STEEL,
     *,
     e_star: ArrayLike | None = None,
 ) -> Any:
@@ -510,7 +513,7 @@ def point_contact_stiffness(
     >>> round(float(point_contact_stiffness(0.1, 0.1, e_star=1e5)))  # (4/3) 1e5 sqrt(10)
     421637
     """
-    return point_contact(rho_x, rho_y, 1.0, E, nu, e_star=e_star).stiffness
+    return point_contact(rho_x, rho_y, 1.0, modulus, poisson, e_star=e_star).stiffness
 
 
 def series_stiffness(k1: ArrayLike, k2: ArrayLike, exponent: float = POINT_EXPONENT) -> Any:
@@ -535,7 +538,7 @@ def series_stiffness(k1: ArrayLike, k2: ArrayLike, exponent: float = POINT_EXPON
 
 
 def ball_raceway_curvatures(
-    D_w: ArrayLike, d_m: ArrayLike, f_i: ArrayLike, f_o: ArrayLike
+    ball_diameter: ArrayLike, pitch_diameter: ArrayLike, f_i: ArrayLike, f_o: ArrayLike
 ) -> RacewayCurvatures:
     """Curvature sums of a radial ball bearing's raceway contacts (contact angle 0). [1/mm]
 
@@ -544,10 +547,10 @@ def ball_raceway_curvatures(
 
     Parameters
     ----------
-    D_w : array_like
-        Ball diameter. [mm]
-    d_m : array_like
-        Pitch diameter, greater than D_w. [mm]
+    ball_diameter : array_like
+        Ball diameter D_w. [mm]
+    pitch_diameter : array_like
+        Pitch diameter d_m, greater than D_w. [mm]
     f_i, f_o : array_like
         Groove conformities r_i/D_w and r_o/D_w, greater than 0.5. [-]
 
@@ -555,9 +558,9 @@ def ball_raceway_curvatures(
     >>> round(float(c.inner_x + c.inner_y), 4)
     0.219
     """
-    dw = _positive("D_w", D_w)
-    dm = _positive("d_m", d_m)
-    _check("D_w", D_w, "smaller than the pitch diameter d_m", dw < dm)
+    dw = _positive("ball_diameter", ball_diameter)
+    dm = _positive("pitch_diameter", pitch_diameter)
+    _check("ball_diameter", ball_diameter, "smaller than the pitch diameter", dw < dm)
     fi = _finite("f_i", f_i)
     fo = _finite("f_o", f_o)
     for name, f, raw in (("f_i", fi, f_i), ("f_o", fo, f_o)):
@@ -573,12 +576,12 @@ def ball_raceway_curvatures(
 
 def ball_contacts(
     load: ArrayLike,
-    D_w: ArrayLike,
-    d_m: ArrayLike,
+    ball_diameter: ArrayLike,
+    pitch_diameter: ArrayLike,
     f_i: ArrayLike,
     f_o: ArrayLike,
-    E: ArrayLike = E_STEEL,
-    nu: ArrayLike = NU_STEEL,
+    modulus: ArrayLike = E_STEEL,
+    poisson: ArrayLike = NU_STEEL,
     *,
     e_star: ArrayLike | None = None,
 ) -> BallContacts:
@@ -591,28 +594,29 @@ def ball_contacts(
     >>> round(float(c.inner.p_max)), round(float(c.outer.p_max))
     (1858, 1483)
     """
-    rho = ball_raceway_curvatures(D_w, d_m, f_i, f_o)
+    rho = ball_raceway_curvatures(ball_diameter, pitch_diameter, f_i, f_o)
     return BallContacts(
-        inner=point_contact(rho.inner_x, rho.inner_y, load, E, nu, e_star=e_star),
-        outer=point_contact(rho.outer_x, rho.outer_y, load, E, nu, e_star=e_star),
+        inner=point_contact(rho.inner_x, rho.inner_y, load, modulus, poisson, e_star=e_star),
+        outer=point_contact(rho.outer_x, rho.outer_y, load, modulus, poisson, e_star=e_star),
     )
 
 
 def ball_stiffness(
-    D_w: ArrayLike,
-    d_m: ArrayLike,
+    ball_diameter: ArrayLike,
+    pitch_diameter: ArrayLike,
     f_i: ArrayLike,
     f_o: ArrayLike,
-    E: ArrayLike = E_STEEL,
-    nu: ArrayLike = NU_STEEL,
+    modulus: ArrayLike = E_STEEL,
+    poisson: ArrayLike = NU_STEEL,
     *,
     e_star: ArrayLike | None = None,
 ) -> BallStiffness:
     """Hertz stiffness of a ball's inner and outer contacts and of both in series.
 
     K = (K_i^(-2/3) + K_o^(-2/3))^(-3/2), so that Q = K delta^1.5 with delta the total
-    approach of the rings. Parameters as in :func:`ball_raceway_curvatures`;
-    E [MPa] and nu [-] default to bearing steel (NSK: 208 000 MPa, 0.3).
+    approach of the rings. Parameters as in :func:`ball_raceway_curvatures` and
+    :func:`point_contact`; ``modulus`` E [MPa] and ``poisson`` nu [-] default to bearing steel
+    (NSK: 208 000 MPa, 0.3).
 
     Returns
     -------
@@ -623,12 +627,12 @@ def ball_stiffness(
     >>> round(float(k.ball), -2)
     404600.0
     """
-    fast = _ball_stiffness_scalar(D_w, d_m, f_i, f_o, E, nu, e_star)
+    fast = _ball_stiffness_scalar(ball_diameter, pitch_diameter, f_i, f_o, modulus, poisson, e_star)
     if fast is not None:
         return fast
-    rho = ball_raceway_curvatures(D_w, d_m, f_i, f_o)
-    k_i = point_contact_stiffness(rho.inner_x, rho.inner_y, E, nu, e_star=e_star)
-    k_o = point_contact_stiffness(rho.outer_x, rho.outer_y, E, nu, e_star=e_star)
+    rho = ball_raceway_curvatures(ball_diameter, pitch_diameter, f_i, f_o)
+    k_i = point_contact_stiffness(rho.inner_x, rho.inner_y, modulus, poisson, e_star=e_star)
+    k_o = point_contact_stiffness(rho.outer_x, rho.outer_y, modulus, poisson, e_star=e_star)
     return BallStiffness(inner=k_i, outer=k_o, ball=series_stiffness(k_i, k_o))
 
 
@@ -758,8 +762,8 @@ def kuzmenko2010_ball_constant(
     R1: float = 6.15,
     R2: float = 6.33,
     R3: float = 19.35,
-    E: float = 2.1e4,
-    nu: float = 0.3,
+    modulus: float = 2.1e4,
+    poisson: float = 0.3,
     n_delta: float = 0.55,
 ) -> Kuzmenko2010BallConstant:
     """Repeat the ball-stiffness procedure of Kuzmenko (2010), §3.4.2, bearing 306.
@@ -781,8 +785,8 @@ def kuzmenko2010_ball_constant(
     ----------
     R1, R2, R3 : float
         Ball, groove and inner-raceway radii. [mm]
-    E, nu : float
-        Young's modulus [kgf/mm^2] and Poisson's ratio [-].
+    modulus, poisson : float
+        Young's modulus E [kgf/mm^2] and Poisson's ratio nu [-].
     n_delta : float
         The table coefficient the paper used. [-]
 
@@ -790,7 +794,7 @@ def kuzmenko2010_ball_constant(
     >>> round(k.c1, 6), round(k.c_v), round(k.c)
     (0.000425, 2352, 4704)
     """
-    e_star = E / (2.0 * (1.0 - nu**2))
+    e_star = modulus / (2.0 * (1.0 - poisson**2))
     sum_rho = 2.0 / R1 - 1.0 / R2 + 1.0 / R3
     A = 0.5 * (1.0 / R1 - 1.0 / R2)
     B = 0.5 * (1.0 / R2 + 1.0 / R3)

@@ -208,7 +208,11 @@ def groove_geometry(
     """
     geo = _geometry(ball_diameter, pitch_diameter, f_i, f_o, clearance)
     play = 2.0 * geo.A * np.sin(geo.alpha0)
-    return _out(geo.A), _out(np.rad2deg(geo.alpha0)), _out(play)
+    return (
+        validate.scalar_out(geo.A),
+        validate.scalar_out(np.rad2deg(geo.alpha0)),
+        validate.scalar_out(play),
+    )
 
 
 def _geometry(dw: Any, dm: Any, fi: Any, fo: Any, clearance: Any) -> _Geometry:
@@ -233,11 +237,6 @@ def _geometry(dw: Any, dm: Any, fi: Any, fo: Any, clearance: Any) -> _Geometry:
     alpha0 = 2.0 * np.arcsin(np.sqrt(np.clip(g / (2.0 * A), 0.0, 1.0)))
     R_i = dm / 2.0 + (fi - 0.5) * dw * np.cos(alpha0)
     return _Geometry(dw, dm, fi, fo, A, g, alpha0, R_i)
-
-
-def _out(x: np.ndarray) -> Any:
-    x = np.asarray(x)
-    return x[()] if x.ndim == 0 else x
 
 
 def ball_stiffness_at(
@@ -319,7 +318,11 @@ def axial_only(
     c = big_a - g  # radial distance of the groove centres
     lo, hi, approach = _axial_bracket(z, f, k, big_a, g)
     u = 0.5 * (lo + hi)
-    return _out(u), _out(np.rad2deg(np.arctan2(u, c))), _out(k * approach(u) ** 1.5)
+    return (
+        validate.scalar_out(u),
+        validate.scalar_out(np.rad2deg(np.arctan2(u, c))),
+        validate.scalar_out(k * approach(u) ** 1.5),
+    )
 
 
 def _axial_bracket(

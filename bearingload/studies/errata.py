@@ -134,7 +134,9 @@ def _hertz(row: Published) -> float:
     b_hertz = paper.sum_rho / 2 - paper.A  # = (1/R1 + 1/R3)/2
     if q == "ball_stiffness":  # exact Hertz, both contacts in series, kgf and mm
         return float(
-            ball_stiffness(2 * r1, 2 * (r1 + r3), r2 / (2 * r1), r2 / (2 * r1), E=e, nu=nu).ball
+            ball_stiffness(
+                2 * r1, 2 * (r1 + r3), r2 / (2 * r1), r2 / (2 * r1), modulus=e, poisson=nu
+            ).ball
         )
     values = {
         "e_star": paper.e_star,
