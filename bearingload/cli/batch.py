@@ -55,9 +55,12 @@ def batch(
     A column axial_load, moment, moment_cross, misalignment, tilt_radius (groove, pitch or a
     length), dynamic_rating or rotating (inner, outer) makes every row a combined-load case of a
     deep-groove ball bearing, as 'solve --axial-load ...' solves it (3-D ring equilibrium,
-    ISO/TS 16281 L10r, ISO 281 L10; load may then be 0): the file names a bearing or the ball
-    geometry, and has no method, exponent or revolutions column. The rows of one bearing are
-    solved together by one vectorised call.
+    ISO/TS 16281 L10r, ISO 281 L10; load may then be 0), with every column solve writes (the
+    largest contact pressures, every ball at its contact angle, and ISO 76's P0 and s0 among
+    them): the file names a bearing or the ball geometry, and has no method, exponent or
+    revolutions column. A tilt_radius cell needs an axial_load, moment, moment_cross or
+    misalignment cell on its row (as --tilt-radius needs a combined load); a row without is
+    skipped. The rows of one bearing are solved together by one vectorised call.
 
     A bad row (a negative load, an unknown unit or bearing, z = 0, a line with the wrong
     number of cells, a line that is not UTF-8 text) is named on standard error with its row number and the reason; the other

@@ -61,9 +61,6 @@ ANSWER_KEYS = (
     "equivalent_load",
     "rating_life",
 )
-#: Keys ``solve`` writes under a combined load that ``bearingload batch``
-#: (:mod:`bearingload.studies.batch_combined`) does not compute yet.
-SOLVE_ONLY_KEYS = ("p_max_inner", "p_max_outer", "static_equivalent_load", "static_safety")
 PER_BALL_KEYS = (
     "ball",
     "ball_angles",

@@ -82,6 +82,8 @@ class BatchSolver:
     ) -> dict[str, Any] | None:
         """The inputs of one combined-load row: its resolved bearing, F_r, F_a, the tilt."""
         try:
+            if "tilt_radius" in v and not any(k in v for k in _COMBINED_LOADS):
+                raise InputError("tilt_radius", _TILT_ALONE)
             if not any(k in v for k in ("bearing", "ball_diameter", "pitch_diameter")):
                 raise InputError(
                     "bearing", "missing: the combined load needs a bearing or its ball geometry"
@@ -507,6 +509,15 @@ def _items(values: Any) -> list[Any]:
 _EMPTY: Any = object()
 #: Columns that differ from row to row without changing the bearing.
 _PER_ROW = ("load", "cage_angle", "revolutions")
+
+#: The cells that load a combined-load row (as solve's load options choose its engine).
+_COMBINED_LOADS = ("axial_load", "moment", "moment_cross", "misalignment")
+#: A tilt_radius without a load that tilts the ring: solve's refusal of --tilt-radius
+#: (bearingload.cli.cases.refuse_tilt_radius), in column names.
+_TILT_ALONE = (
+    "it is the lever of the inner ring's tilt, and only the combined load (axial_load, moment, "
+    "moment_cross, misalignment) tilts the ring"
+)
 
 #: Columns whose cells may all be bare numbers (then a block is read by numpy at once).
 _NUMERIC = frozenset(("balls", "load", "stiffness", "clearance", "cage_angle", "exponent"))

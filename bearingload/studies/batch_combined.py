@@ -27,8 +27,8 @@ from bearingload.studies.batch_input import row_message
 COMBINED_KEYS = (
     "bearing", "method", "balls", "load", "axial_load", "moment", "moment_cross",
     "misalignment", "tilt_radius", "rotating", "stiffness", "clearance", "clearance_pick",
-    "cage_angle", "q_max",
-    "loaded_balls", "contact_angle_max", "free_contact_angle", "axial_play", "x", "y",
+    "cage_angle", "q_max", "loaded_balls", "p_max_inner", "p_max_outer",
+    "static_equivalent_load", "static_safety", "contact_angle_max", "free_contact_angle", "axial_play", "x", "y",
     "axial", "tilt", "tilt_cross", "reference_rating_life",
     "dynamic_rating", "equivalent_load", "rating_life",
 )  # fmt: skip
@@ -121,36 +121,62 @@ def _group_values(group: list[dict[str, Any]]) -> Part:
         if isinstance(values, np.ndarray) and np.isnan(values).any():
             cols[key] = [None if v != v else v for v in values.tolist()]
     cols["clearance_pick"] = [g["bearing"].clearance_pick for g in group]
+    pressures = _row_pressures(b, r, n)
+    cols |= _static_columns(b, pressures, [g["load"] for g in group],
+                            [g["axial_load"] for g in group])  # fmt: skip
     tilts = np.broadcast_to(ring_tilt(r), (n,)).tolist()
     q, loaded = cols["q_max"].tolist(), cols["loaded_balls"].tolist()
-    pressures = _row_pressures(b, r, n)
+    per_row: list[Any] = (
+        [None] * n
+        if pressures is None
+        else list(zip(*(p.tolist() for p in pressures), strict=True))
+    )
     cols["warnings"] = [
         combined_warnings(g["bearing"], g["load"], g["axial_load"], q[i], loaded[i],
                           tilts[i] if g["moment"] is not None or g["moment_cross"]
-                          else g["misalignment"], pressures[i])
+                          else g["misalignment"], per_row[i])
         for i, g in enumerate(group)
     ]  # fmt: skip
     return [g["row"] for g in group], cols
 
 
-def _row_pressures(b: Any, r: Any, n: int) -> list[tuple[float, float] | None]:
+def _static_columns(
+    b: Any, pressures: tuple[np.ndarray, np.ndarray] | None, load: list[float], axial: list[float]
+) -> dict[str, Any]:
+    """The columns ``solve`` adds to the solved case (as
+    :func:`bearingload.studies.combined_bearing.solve_combined_bearing` computes them): the
+    largest inner and outer contact pressure of each row (blank where the ball geometry is not
+    known) [MPa], the static equivalent load P0 = max(F_r, 0.6 F_r + 0.5 |F_a|) of ISO 76:2006,
+    7.1 [N] and the static safety s0 = C0/P0 (ISO 76:2006, 3.6; blank where C0 is not known or
+    P0 = 0) [-], by the functions solve uses."""
+    from bearingload.bearings.checks import static_equivalent_load, static_safety
+
+    n = len(load)
+    p0 = [static_equivalent_load(fr, fa) for fr, fa in zip(load, axial, strict=True)]
+    inner, outer = ([None] * n, [None] * n) if pressures is None else pressures
+    return {
+        "p_max_inner": inner,
+        "p_max_outer": outer,
+        "static_equivalent_load": np.array(p0, dtype=float),
+        "static_safety": [static_safety(b.C0, p) for p in p0],
+    }
+
+
+def _row_pressures(b: Any, r: Any, n: int) -> tuple[np.ndarray, np.ndarray] | None:
     """The largest inner and outer contact pressure of each of the ``n`` rows, every ball at its
     load and contact angle, as ``solve`` weighs them (exact Hertz,
     :func:`bearingload.bearings.checks.max_contact_pressures`, vectorised over the rows); None
-    per row where the ball geometry is not known. [MPa]"""
-    from bearingload.bearings.checks import max_contact_pressures
+    where the ball geometry is not known. [MPa]"""
+    if None in (b.ball_diameter, b.pitch_diameter, b.f_i, b.f_o):  # as max_contact_pressures
+        return None
+    from bearingload.contact.hertz import ball_contacts
 
     loads = np.asarray(r.ball_loads, dtype=float).reshape(n, -1)
     angles = np.broadcast_to(np.asarray(r.contact_angles, dtype=float), loads.shape)
-    if max_contact_pressures(b, loads[0], angles[0]) is None:
-        return [None] * n
-    from bearingload.contact.hertz import ball_contacts
-
     cos_a = np.clip(np.abs(np.cos(np.deg2rad(angles))), 1e-9, 1.0)  # as max_contact_pressures
     c = ball_contacts(loads, b.ball_diameter, b.pitch_diameter / cos_a, b.f_i, b.f_o,
                       b.modulus, b.poisson)  # fmt: skip
-    inner, outer = np.max(c.inner.p_max, axis=-1), np.max(c.outer.p_max, axis=-1)
-    return [(float(i), float(o)) for i, o in zip(inner, outer, strict=True)]
+    return np.max(c.inner.p_max, axis=-1), np.max(c.outer.p_max, axis=-1)
 
 
 def _over_rows(value: Any, n: int) -> Any:
