@@ -35,3 +35,18 @@ def run_process(*args: str, cwd=None) -> subprocess.CompletedProcess:
         timeout=60,
         cwd=cwd,
     )
+
+
+def drawn(monkeypatch) -> list:
+    """Every Figure saved while the test runs (whatever draws it), saved as it would be."""
+    from matplotlib.figure import Figure
+
+    figures: list = []
+    save = Figure.savefig
+
+    def recording(self, *args, **kwargs):
+        figures.append(self)
+        return save(self, *args, **kwargs)
+
+    monkeypatch.setattr(Figure, "savefig", recording)
+    return figures

@@ -12,7 +12,7 @@ import sys
 import mpmath as mp
 import pytest
 
-from .cli_helpers import invoke, run_entry
+from .cli_helpers import drawn, invoke, run_entry
 from .fixtures.published import PEER_ISO16281_BEARING, PEER_ISO16281_MASTA
 from .test_hertz import mp_contact
 
@@ -26,26 +26,11 @@ def _json(*args: str) -> dict:
     return json.loads(out.stdout)
 
 
-def _drawn(monkeypatch) -> list:
-    """Every Figure saved while the test runs, saved as it would be."""
-    from matplotlib.figure import Figure
-
-    figures: list = []
-    save = Figure.savefig
-
-    def recording(self, *args, **kwargs):
-        figures.append(self)
-        return save(self, *args, **kwargs)
-
-    monkeypatch.setattr(Figure, "savefig", recording)
-    return figures
-
-
 # --- 1. --plot: the command's own solution, in the format of the extension --------------------
 def test_plot_draws_the_combined_solution_it_printed(monkeypatch, tmp_path):
     """solve 6205 -F 5kN -A 2kN --plot drew the radial-only solution (Q_max 3286 N at ball 1,
     the table 2815 N); now the bars are the table's ball loads, the line its contact angles."""
-    figures = _drawn(monkeypatch)
+    figures = drawn(monkeypatch)
     args = ("6205", "-F", "5kN", "-A", "2kN", "--plot", str(tmp_path / "x.png"))
     case = _json(*args)["cases"][0]
     (fig,) = figures
@@ -59,7 +44,7 @@ def test_plot_draws_the_combined_solution_it_printed(monkeypatch, tmp_path):
 
 
 def test_plot_draws_the_radial_solution_it_printed(monkeypatch, tmp_path):
-    figures = _drawn(monkeypatch)
+    figures = drawn(monkeypatch)
     case = _json(*PEER, "-F", "1kN", "-G", "10um", "--cage-angle", "7",
                  "--plot", str(tmp_path / "x.png"))["cases"][0]  # fmt: skip
     (ax,) = figures[0].get_axes()

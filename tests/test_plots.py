@@ -15,7 +15,7 @@ from bearingload.models.equilibrium import solve
 from bearingload.reports import plots
 from bearingload.studies.sweep import sweep
 
-from .cli_helpers import invoke, run_entry, run_process
+from .cli_helpers import drawn, invoke, run_entry, run_process
 
 CASE = ("-z", "9", "-F", "1kN", "-K", "1e5", "-G", "10um")
 
@@ -71,7 +71,7 @@ def test_solve_plot_png_and_range(tmp_path):
 
 
 def test_solve_plot_figure_of_the_range(monkeypatch, tmp_path):
-    figures = _drawn(monkeypatch)
+    figures = drawn(monkeypatch)
     out = invoke("solve", "306", "-F", "300kgf", "-G", "C3", "--clearance-pick", "range",
                  "--format", "json", "--plot", str(tmp_path / "p.png"))  # fmt: skip
     (fig,) = figures
@@ -83,21 +83,6 @@ def test_solve_plot_figure_of_the_range(monkeypatch, tmp_path):
     heights = [p.get_height() for p in ax.patches]
     expected = [q for c in cases for q in c["ball_loads"]]  # the command's own solution
     assert heights == pytest.approx(expected, rel=1e-9, abs=1e-9)
-
-
-def _drawn(monkeypatch) -> list:
-    """Every Figure saved while the test runs (whatever draws it), saved as it would be."""
-    from matplotlib.figure import Figure
-
-    figures: list = []
-    save = Figure.savefig
-
-    def recording(self, *args, **kwargs):
-        figures.append(self)
-        return save(self, *args, **kwargs)
-
-    monkeypatch.setattr(Figure, "savefig", recording)
-    return figures
 
 
 def test_without_matplotlib_one_error_line_and_nothing_written(capsys, tmp_path, monkeypatch):

@@ -665,13 +665,18 @@ def family_names() -> list[str]:
     return [f.name for f in FAMILIES]
 
 
-def run(size: str = "quick", names: list[str] | None = None) -> list[dict[str, Any]]:
-    """One row per family (see the module notes); ``size`` is ``"quick"`` or ``"full"``."""
+def check_selection(size: str, names: list[str] | None, known: list[str]) -> None:
+    """InputError unless ``size`` is one of :data:`SIZES` and every name is one of ``known``."""
     if size not in SIZES:
         raise InputError("size", f"must be one of {', '.join(SIZES)}; got {size!r}")
-    unknown = sorted(set(names or ()) - set(family_names()))
+    unknown = sorted(set(names or ()) - set(known))
     if unknown:
-        raise InputError("family", f"unknown {unknown[0]!r}; valid: {', '.join(family_names())}")
+        raise InputError("family", f"unknown {unknown[0]!r}; valid: {', '.join(known)}")
+
+
+def run(size: str = "quick", names: list[str] | None = None) -> list[dict[str, Any]]:
+    """One row per family (see the module notes); ``size`` is ``"quick"`` or ``"full"``."""
+    check_selection(size, names, family_names())
     rows = []
     for family in FAMILIES:
         if names and family.name not in names:

@@ -375,13 +375,9 @@ def family_names() -> list[str]:
 
 def run(size: str = "quick", names: list[str] | None = None) -> list[dict[str, Any]]:
     """One row per combined-load family (module notes); ``size`` ``"quick"`` or ``"full"``."""
-    from bearingload.studies.stability import SIZES
+    from bearingload.studies.stability import check_selection
 
-    if size not in SIZES:
-        raise InputError("size", f"must be one of {', '.join(SIZES)}; got {size!r}")
-    unknown = sorted(set(names or ()) - set(family_names()))
-    if unknown:
-        raise InputError("family", f"unknown {unknown[0]!r}; valid: {', '.join(family_names())}")
+    check_selection(size, names, family_names())
     return [_run_family(f, size) for f in FAMILIES if not names or f.name in names]
 
 
