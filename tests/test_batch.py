@@ -13,7 +13,6 @@ from click.testing import CliRunner
 
 from bearingload.cli import main
 from bearingload.reports.render import _machine_text, csv_block
-from bearingload.reports.solve import SOLVE_ONLY_KEYS
 
 from .cli_helpers import run_entry
 
@@ -338,11 +337,11 @@ def test_answer_does_not_depend_on_neighbours(tmp_path):
 
 
 def _solve_csv(args: list[str]) -> dict[str, str]:
-    """solve's csv row, without the columns batch does not compute yet (SOLVE_ONLY_KEYS)."""
+    """solve's csv row, every column."""
     out = CliRunner().invoke(main, ["solve", *args, "--format", "csv"], catch_exceptions=False)
     assert out.exit_code == 0
     row = next(csv.DictReader(io.StringIO(out.stdout)))
-    return {k: v for k, v in row.items() if k.split(" [")[0] not in SOLVE_ONLY_KEYS}
+    return dict(row)
 
 
 def test_results_equal_solve_row_for_row():
@@ -448,6 +447,40 @@ def test_geometry_and_overrides_equal_solve(tmp_path):
         for key, value in expected.items():
             head = re.sub(r"N/mm\^[0-9.]+", "N/mm^m", key)
             assert row[head] == value, (args, key)
+
+
+def test_static_safety_and_reference_life_equal_solve(tmp_path):
+    """s0 = C0/F_r (ISO 76) and L10r (ISO/TS 16281) of radial rows equal solve's, blank where
+    solve leaves them out: no C_r (geometry by hand), not the exact model, a roller bearing."""
+    p = tmp_path / "s.csv"
+    p.write_text(
+        "bearing,load,ball_diameter,pitch_diameter,balls,clearance,cage_angle,method\n"
+        "6205,1.4kN,,,,C3,,\n"
+        "6205,2kN,,,,-5um,half,\n"
+        "6205,1.4kN,,,,C3,,continuum\n"
+        "6306,3kN,,,,C2,,\n"
+        "NU206,5kN,,,,,,\n"
+        ",1kN,11.5,43.5,7,10um,,\n"
+    )
+    out = batch(str(p), "--format", "csv")
+    assert out.exit_code == 0, out.stderr
+    rows = list(csv.DictReader(io.StringIO(out.stdout)))
+    solve_args = [
+        ["6205", "-F", "1.4kN", "-G", "C3"],
+        ["6205", "-F", "2kN", "-G", "-5um", "--cage-angle", "half"],
+        ["6205", "-F", "1.4kN", "-G", "C3", "--method", "continuum"],
+        ["6306", "-F", "3kN", "-G", "C2"],
+        ["NU206", "-F", "5kN"],
+        ["-z", "7", "-F", "1kN", "--ball-diameter", "11.5", "--pitch-diameter", "43.5", "-G", "10um"],
+    ]  # fmt: skip
+    life, s0 = "reference_rating_life [10^6 rev]", "static_safety"
+    for row, args in zip(rows, solve_args, strict=True):
+        expected = _solve_csv(args)
+        for key in (life, s0, "rotating"):
+            assert row[key] == expected.get(key, ""), (args, key)
+    assert [bool(r[life]) for r in rows] == [True, True, False, True, False, False]
+    assert [r["rotating"] for r in rows] == ["inner", "inner", "", "inner", "", ""]
+    assert [bool(r[s0]) for r in rows] == [True, True, True, True, True, False]
 
 
 def test_a_line_not_utf8_is_a_bad_row_named_by_its_number(tmp_path):

@@ -51,7 +51,7 @@ def test_batch_reads_a_roller_rows_stiffness_in_its_own_unit_beside_an_exponent_
         assert [line.split(",")[0] for line in r.stdout.splitlines()[1:]] == ["2", "4"]
         assert r.stderr.startswith("Warning: row 3: stiffness: the unit 'kgf/mm^1.5'")
         assert (
-            r.stdout.splitlines()[1].split(",")[10] == solved.stdout.splitlines()[1].split(",")[9]
+            r.stdout.splitlines()[1].split(",")[11] == solved.stdout.splitlines()[1].split(",")[9]
         )
 
 

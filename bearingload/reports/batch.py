@@ -2,10 +2,10 @@
 
 The columns are ``row`` (the input file's row, header = 1) and then those ``bearingload solve
 --format csv`` writes for one case (:data:`bearingload.reports.solve.INPUT_KEYS` and
-``ANSWER_KEYS``, less the ``SOLVE_ONLY_KEYS`` batch does not compute yet; headers through
+``ANSWER_KEYS``; headers through
 :mod:`bearingload.reports.quantities`). They are fixed by the file's header, so that every
 chunk of a long file has the same columns: the bearing columns (``bearing``,
-``clearance_pick``, contact pressures, life) only when the file can name a bearing or a ball
+``clearance_pick``, contact pressures, static safety, lives, ``rotating``) only when the file can name a bearing or a ball
 geometry, ``epsilon`` only with a ``method`` column. A file of combined-load cases
 (an ``axial_load`` ... column) has the columns ``solve`` writes with an axial load.
 """
@@ -16,7 +16,7 @@ from collections.abc import Sequence
 from typing import Any
 
 from bearingload.reports.render import Column, Table, csv_bytes, csv_header, render
-from bearingload.reports.solve import ANSWER_KEYS, INPUT_KEYS, SOLVE_ONLY_KEYS, column
+from bearingload.reports.solve import ANSWER_KEYS, INPUT_KEYS, column
 from bearingload.studies.batch_input import Header
 
 #: The most rows json, markdown and table hold in memory (csv is streamed without a limit).
@@ -26,8 +26,11 @@ _BEARING_ONLY = (
     "clearance_pick",
     "p_max_inner",
     "p_max_outer",
+    "static_safety",
     "rating_life",
+    "reference_rating_life",
     "revolutions",
+    "rotating",
     "allowable_load",
 )
 
@@ -45,7 +48,6 @@ def batch_columns(header: Header) -> list[Column]:
         given = [k for k in COMBINED_KEYS if k not in _COMBINED_IF_GIVEN or k in header.names]
         return [column(k, 1.5) for k in ("row", *given)]
     keys = ["row", *INPUT_KEYS, *(k for k in ANSWER_KEYS if k != "relative_error"), "valid"]
-    keys = [k for k in keys if k not in SOLVE_ONLY_KEYS]
     if not header.has_bearing:
         keys = [k for k in keys if k not in _BEARING_ONLY]
     if "method" not in header.names:

@@ -63,9 +63,6 @@ ANSWER_KEYS = (
     "relative_error",
 )
 PER_BALL_KEYS = ("ball", "ball_angles", "ball_approaches", "ball_loads")
-#: Keys ``solve`` writes that ``bearingload batch`` (:mod:`bearingload.studies.batch`) does not
-#: compute yet: its columns are those of ``solve`` without these.
-SOLVE_ONLY_KEYS = ("rotating", "static_safety", "reference_rating_life")
 
 
 def solve_report(

@@ -687,6 +687,7 @@ def _values(result: Any, rows: Rows) -> Part:
         "valid": col(result.valid),
     }
     cols |= _bearing_values(rows, q)
+    cols |= _solve_lives(result, rows)
     cols["warnings"] = _warnings(rows, cols)
     return rows.numbers, cols
 
@@ -812,3 +813,57 @@ def _bearing_values(rows: Rows, q: np.ndarray) -> dict[str, list[Any]]:
             out["allowable_load"][i] = float(allow[j])
             out["revolutions"][i] = float(rev[j] / 1e6)
     return out
+
+
+def _solve_lives(result: Any, rows: Rows) -> dict[str, list[Any]]:
+    """What solve's radial path adds for a bearing: the static safety s0 = C0/P0 with P0 = F_r
+    (ISO 76:2006, 3.6) where C0 is known, and the reference rating life L10r (ISO/TS 16281:2008,
+    4.3) of the exact model's ball loads, the inner ring rotating (solve's default), where
+    :func:`bearingload.studies.reference_life.has_reference_life`; one call per bearing."""
+    from bearingload.studies.reference_life import ball_reference_life, has_reference_life
+
+    n = len(rows.numbers)
+    out: dict[str, list[Any]] = {
+        k: [None] * n for k in ("static_safety", "reference_rating_life", "rotating")
+    }
+    if rows.by_hand:
+        return out
+    c0 = np.array([np.nan if b is None or not b.C0 else b.C0 for b in rows.bearings])
+    with np.errstate(divide="ignore", invalid="ignore"):
+        s0 = c0 / rows.arrays["load"]  # every load > 0 (checked)
+    out["static_safety"] = [None if np.isnan(v) else v for v in s0.tolist()]
+    groups: dict[int, list[int]] = {}
+    for i, (b, m) in enumerate(zip(rows.bearings, rows.methods, strict=True)):
+        if b is not None and m == "exact" and has_reference_life(b):
+            groups.setdefault(id(b), []).append(i)
+    for idx in groups.values():
+        b = rows.bearings[idx[0]]
+        loads = _ball_loads(result.model, n, np.array(idx), b.balls)
+        life = np.broadcast_to(ball_reference_life(b, loads, "inner", b.C), (len(idx),))
+        for j, i in enumerate(idx):
+            out["reference_rating_life"][i] = float(life[j])
+            out["rotating"][i] = "inner"
+    return out
+
+
+def _ball_loads(model: Any, n: int, idx: np.ndarray, z: int) -> np.ndarray:
+    """Loads Q_i [N] of balls 1..z (ball 1 at the cage angle) of the cases ``idx`` of the
+    exact model's ``n`` cases, each of z balls: the computation of
+    :attr:`bearingload.models.equilibrium.LoadDistribution.ball_loads` over the rows at once."""
+    from bearingload.models._ring import gap_factor, snapped_cos, snapped_sin
+
+    def at(name: str) -> np.ndarray:
+        return np.reshape(getattr(model, name), (n,))[idx][:, None]
+
+    phi1 = np.deg2rad(at("cage_angle"))
+    phi = np.mod(phi1 + 2.0 * np.pi * np.arange(z) / z, 2 * np.pi)
+    e = at("clearance") / 2.0
+    reference = np.reshape(model.reference, (n, 2))[idx]
+    offset = np.reshape(model.offset, (n, 2))[idx]
+    mu, h = reference[:, :1], reference[:, 1:]
+    dx, dy = offset[:, :1], offset[:, 1:]
+    cos, sin = snapped_cos(phi), snapped_sin(phi)
+    with np.errstate(all="ignore"):
+        free = dx * cos + dy * sin - e * gap_factor(phi - mu, h)
+        delta = np.where((e < 0) & (z >= 2), at("x") * cos + at("y") * sin - e, free)
+    return at("stiffness") * np.maximum(delta, 0.0) ** at("exponent")
