@@ -136,8 +136,16 @@ def test_other_formats_and_output_file(tmp_path):
     target = tmp_path / "fit.csv"
     assert invoke("fit", EXAMPLE, *PAPER, "--format", "csv", "-o", str(target)).output == ""
     lines = target.read_text().splitlines()
-    assert lines[0] == "method,C [kgf/mm^n],n,r2,r2_log,rms [kgf]"
+    assert lines[0] == "method,C [kgf/mm^n],n,r_squared,r_squared_log,rms [kgf]"
     assert lines[1].startswith('"two base points (paper, eq. 2.1)",325.8037579,2.186833817,')
+
+
+def test_csv_columns_are_the_json_keys():
+    """One key per quantity: the csv's R² columns carry the JSON's (and PowerLawFit's) names."""
+    header = invoke("fit", EXAMPLE, *PAPER, "--format", "csv").output.splitlines()[0]
+    stems = {name.split(" [")[0] for name in header.split(",")}
+    fit = json.loads(invoke("fit", EXAMPLE, *PAPER, "--format", "json").output)["least_squares"]
+    assert {"n", "r_squared", "r_squared_log"} <= stems & set(fit)
 
 
 # --------------------------------------------------------------------------- malformed input

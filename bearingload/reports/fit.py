@@ -143,8 +143,8 @@ def _fits_table(r: FitReport, points: int) -> Table:
             Column("method", "method", align="left"),
             Column("C", "C", f"{lu}/{du}^n", 6),
             Column("n", "n", "-", 6),
-            Column("r2", "R²", "-", 4),
-            Column("r2_log", "R² of ln Q", "-", 4),
+            Column("r_squared", "R²", "-", 4),
+            Column("r_squared_log", "R² of ln Q", "-", 4),
             Column("rms", "rms residual", lu, 4),
         ],
         rows=[
@@ -152,8 +152,8 @@ def _fits_table(r: FitReport, points: int) -> Table:
                 "method": label,
                 "C": r.coefficient(key),
                 "n": r.fits[key].exponent,
-                "r2": r.fits[key].r_squared,
-                "r2_log": r.fits[key].r_squared_log,
+                "r_squared": r.fits[key].r_squared,
+                "r_squared_log": r.fits[key].r_squared_log,
                 "rms": float(np.sqrt(np.mean((r.fits[key].residuals / lf) ** 2))),
             }
             for key, _, label in FITS
