@@ -53,16 +53,13 @@ def stability(size: str, families: tuple[str, ...], fmt: str, output: str | None
       bearingload stability --family combined_misalignment --family combined_preload
       bearingload stability --size full --family combined_ball_count --format json -o z.json
     """
-    from bearingload.errors import InputError
     from bearingload.reports.render import render
+    from bearingload.reports.stability import stability_table
     from bearingload.studies import stability as radial
     from bearingload.studies import stability_combined as combined
 
     names = list(families)
-    known = radial.family_names() + combined.family_names()
-    unknown = [n for n in names if n not in known]
-    if unknown:
-        raise InputError("family", f"unknown {unknown[0]!r}; valid: {', '.join(known)}")
+    radial.check_selection(size, names, radial.family_names() + combined.family_names())
     kinds = [
         (module, [n for n in names if n in module.family_names()]) for module in (radial, combined)
     ]
@@ -72,5 +69,7 @@ def stability(size: str, families: tuple[str, ...], fmt: str, output: str | None
             "Invalid value for '--format': csv holds one table; name with --family only radial "
             "or only combined_* families"
         )
-    tables = [module.stability_table(module.run(size, picked or None)) for module, picked in chosen]
+    tables = [
+        stability_table(module, module.run(size, picked or None)) for module, picked in chosen
+    ]
     emit(render(tables, fmt), output)

@@ -41,7 +41,6 @@ from typing import Any
 import numpy as np
 
 from bearingload.errors import InputError
-from bearingload.reports.render import Column, Table
 
 SIZES = ("quick", "full")
 
@@ -700,35 +699,24 @@ def run(size: str = "quick", names: list[str] | None = None) -> list[dict[str, A
     return rows
 
 
-def _column(key: str, header: str | None = None) -> Column:
-    """The renderer column of a registered quantity (bearingload.reports.quantities)."""
-    from bearingload.reports.quantities import QUANTITIES
-
-    q = QUANTITIES[key]
-    text = q.unit == "" and q.digits is None and key not in _COUNTS
-    return Column(key, header or q.label, q.unit, q.digits, "left" if text else "right")
-
-
-_COUNTS = ("cases", "max_iterations", "nan", "warnings_raised", "refused", "failures")
-COLUMNS = tuple(
-    _column(key)
-    for key in (
-        "family",
-        "parameter",
-        "cases",
-        "max_residual",
-        "max_jump",
-        "jump_at",
-        "batch_dependence",
-        "max_iterations",
-        "nan",
-        "warnings_raised",
-        "refused",
-        "failures",
-        "check_value",
-        "check_limit",
-        "check",
-    )
+#: Title and columns of the report (:mod:`bearingload.reports.stability`).
+TITLE = "Numerical stability on stiff and extreme cases"
+KEYS = (
+    "family",
+    "parameter",
+    "cases",
+    "max_residual",
+    "max_jump",
+    "jump_at",
+    "batch_dependence",
+    "max_iterations",
+    "nan",
+    "warnings_raised",
+    "refused",
+    "failures",
+    "check_value",
+    "check_limit",
+    "check",
 )
 NOTES = (
     "max residual: |sum Q_i (cos, sin) - (F, 0)| / max(F, sum Q_i), from the returned ball loads.",
@@ -737,8 +725,3 @@ NOTES = (
     "jump at: the parameter value where it starts.",
     "batch dep.: largest relative difference between a case alone and in its family's batch.",
 )
-
-
-def stability_table(rows: list[dict[str, Any]]) -> Table:
-    """The stability summary, one row per family."""
-    return Table("Numerical stability on stiff and extreme cases", COLUMNS, rows, NOTES)

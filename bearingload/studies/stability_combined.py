@@ -44,7 +44,6 @@ from typing import Any
 import numpy as np
 
 from bearingload.errors import ConvergenceError, InputError
-from bearingload.reports.render import Table
 
 #: The bearing of every family: a deep-groove ball bearing of the 6305 size. [mm], [-]
 GEOMETRY = {"ball_diameter": 11.5, "pitch_diameter": 43.5, "f_i": 0.52, "f_o": 0.53}
@@ -381,7 +380,9 @@ def run(size: str = "quick", names: list[str] | None = None) -> list[dict[str, A
     return [_run_family(f, size) for f in FAMILIES if not names or f.name in names]
 
 
-_KEYS = (
+#: Title and columns of the report (:mod:`bearingload.reports.stability`).
+TITLE = "Numerical stability of the combined-load solver"
+KEYS = (
     "family", "parameter", "cases", "refused", "failures", "nan", "max_residual",
     *(f"residual_{c}" for c in
     COMPONENTS), "batch_dependence", "max_iterations", "warnings_raised", "check_value",
@@ -398,11 +399,3 @@ NOTES = (
     "Bearing: D_w 11.5 mm, d_m 43.5 mm (more where z needs it), f_i 0.52, f_o 0.53 (A = 0.575 "
     "mm), z = 7 unless varied, Hertz K(alpha); F_r = 1000 N, G_r = 10 um unless varied.",
 )
-
-
-def stability_table(rows: list[dict[str, Any]]) -> Table:
-    """The combined-load stability summary, one row per family."""
-    from bearingload.studies.stability import _column
-
-    columns = tuple(_column(k) for k in _KEYS)
-    return Table("Numerical stability of the combined-load solver", columns, rows, NOTES)
