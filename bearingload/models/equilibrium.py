@@ -152,19 +152,18 @@ class LoadDistribution:
     def ball_approaches(self) -> np.ndarray:
         """Approach ``delta_i`` of balls 1..z (negative: the gap left), for one case. [mm]
 
-        Computed as ``offset . n_i - e u_i`` from the reference position, so that a clearance
-        much larger than the elastic approach costs no digits (under preload the reference is
-        the centred ring and ``u_i = 1``).
+        See :func:`ball_approaches` (the same over many cases).
         """
-        phi = self._ball_angles_rad()
-        e = float(self._one(self.clearance)) / 2.0
-        if e < 0 and phi.size >= 2:
-            x, y = float(self._one(self.x)), float(self._one(self.y))
-            return x * snapped_cos(phi) + y * snapped_sin(phi) - e
-        mu, h = (float(v) for v in np.asarray(self.reference).reshape(2))
-        dx, dy = (float(v) for v in np.asarray(self.offset).reshape(2))
-        u = gap_factor(phi - mu, h)
-        return dx * snapped_cos(phi) + dy * snapped_sin(phi) - e * u
+        one = self._one
+        return ball_approaches(
+            int(one(self.balls)),
+            float(one(self.cage_angle)),
+            float(one(self.clearance)),
+            float(one(self.x)),
+            float(one(self.y)),
+            np.asarray(self.reference).reshape(2),
+            np.asarray(self.offset).reshape(2),
+        )
 
     @property
     def ball_loads(self) -> np.ndarray:
@@ -186,6 +185,35 @@ class LoadDistribution:
         for name in ("stiffness_matrix", "offset", "reference"):
             fields[name] = getattr(self, name)[index]
         return LoadDistribution(**fields)
+
+
+def ball_approaches(
+    z: int,
+    cage_angle: Any,
+    clearance: Any,
+    x: Any,
+    y: Any,
+    reference: np.ndarray,
+    offset: np.ndarray,
+) -> np.ndarray:
+    """Approaches ``delta_i`` of balls 1..z (ball 1 at the cage angle; negative: the gap left)
+    of one case, or of many given as columns: ``cage_angle`` [°], ``clearance`` G_r [mm], ``x``,
+    ``y`` [mm] of shape (n, 1), ``reference`` and ``offset`` of :class:`LoadDistribution` of shape
+    (n, 2); returns (n, z). [mm]
+
+    Computed as ``offset . n_i - e u_i`` from the reference position, so that a clearance much
+    larger than the elastic approach costs no digits; under preload (e < 0, z >= 2) as
+    ``x cos phi_i + y sin phi_i - e`` from the centred ring.
+    """
+    phi = np.mod(np.deg2rad(cage_angle) + 2.0 * np.pi * np.arange(z) / z, 2 * np.pi)
+    e = np.asarray(clearance) / 2.0
+    cos, sin = snapped_cos(phi), snapped_sin(phi)
+    mu = reference[..., :1]
+    h: Any = reference[..., 1:]  # gap_factor works elementwise
+    dx, dy = offset[..., :1], offset[..., 1:]
+    with np.errstate(all="ignore"):  # the branch not taken may see a gap factor of a preload
+        free = dx * cos + dy * sin - e * gap_factor(phi - mu, h)
+        return np.where((e < 0) & (z >= 2), x * cos + y * sin - e, free)
 
 
 def _lazy_field(name: str) -> property:

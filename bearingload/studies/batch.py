@@ -848,22 +848,16 @@ def _solve_lives(result: Any, rows: Rows) -> dict[str, list[Any]]:
 
 def _ball_loads(model: Any, n: int, idx: np.ndarray, z: int) -> np.ndarray:
     """Loads Q_i [N] of balls 1..z (ball 1 at the cage angle) of the cases ``idx`` of the
-    exact model's ``n`` cases, each of z balls: the computation of
-    :attr:`bearingload.models.equilibrium.LoadDistribution.ball_loads` over the rows at once."""
-    from bearingload.models._ring import gap_factor, snapped_cos, snapped_sin
+    exact model's ``n`` cases, each of z balls, as
+    :attr:`bearingload.models.equilibrium.LoadDistribution.ball_loads` gives them one by one."""
+    from bearingload.models.equilibrium import ball_approaches
 
     def at(name: str) -> np.ndarray:
         return np.reshape(getattr(model, name), (n,))[idx][:, None]
 
-    phi1 = np.deg2rad(at("cage_angle"))
-    phi = np.mod(phi1 + 2.0 * np.pi * np.arange(z) / z, 2 * np.pi)
-    e = at("clearance") / 2.0
     reference = np.reshape(model.reference, (n, 2))[idx]
     offset = np.reshape(model.offset, (n, 2))[idx]
-    mu, h = reference[:, :1], reference[:, 1:]
-    dx, dy = offset[:, :1], offset[:, 1:]
-    cos, sin = snapped_cos(phi), snapped_sin(phi)
-    with np.errstate(all="ignore"):
-        free = dx * cos + dy * sin - e * gap_factor(phi - mu, h)
-        delta = np.where((e < 0) & (z >= 2), at("x") * cos + at("y") * sin - e, free)
+    delta = ball_approaches(
+        z, at("cage_angle"), at("clearance"), at("x"), at("y"), reference, offset
+    )
     return at("stiffness") * np.maximum(delta, 0.0) ** at("exponent")
