@@ -100,17 +100,31 @@ def max_contact_pressures(
     dw, dm, fi, fo = bearing.ball_diameter, bearing.pitch_diameter, bearing.f_i, bearing.f_o
     if dw is None or dm is None or fi is None or fo is None:
         return None
-    from bearingload.contact.hertz import ball_contacts
-
     if np.ndim(load) == 0 and np.ndim(contact_angle) == 0 and float(contact_angle) == 0.0:
+        from bearingload.contact.hertz import ball_contacts
+
         c = ball_contacts(float(load), dw, dm, fi, fo, bearing.modulus, bearing.poisson)
         return float(c.inner.p_max), float(c.outer.p_max)
+    p_i, p_o = ball_pressures(bearing, load, contact_angle)
+    return float(np.max(p_i)), float(np.max(p_o))
+
+
+def ball_pressures(
+    bearing: ResolvedBearing, load: Any, contact_angle: Any
+) -> tuple[np.ndarray, np.ndarray]:
+    """Maximum pressures of the inner and outer contact of every ball given (the arrays of
+    ``load`` and ``contact_angle`` broadcast), each ball at its own contact angle (see
+    :func:`max_contact_pressures`; the bearing's D_w, d_m, f_i, f_o must be known). [MPa]"""
+    from bearingload.contact.hertz import ball_contacts
+
+    dw, dm, fi, fo = bearing.ball_diameter, bearing.pitch_diameter, bearing.f_i, bearing.f_o
+    assert dw is not None and dm is not None and fi is not None and fo is not None
     # |cos|: a contact angle past 90° (which the combined solver can report far beyond C0) has
     # the raceway curvatures of its mirror angle; at 90° the rolling curvature is that of d_m = inf
     cos_a = np.clip(np.abs(np.cos(np.deg2rad(np.asarray(contact_angle, dtype=float)))), 1e-9, 1.0)
     c = ball_contacts(np.asarray(load, dtype=float), dw, dm / cos_a, fi, fo, bearing.modulus,
                       bearing.poisson)  # fmt: skip
-    return float(np.max(c.inner.p_max)), float(np.max(c.outer.p_max))
+    return np.asarray(c.inner.p_max), np.asarray(c.outer.p_max)
 
 
 def static_equivalent_load(radial_load: float, axial_load: float = 0.0) -> float:

@@ -169,14 +169,11 @@ def _row_pressures(b: Any, r: Any, n: int) -> tuple[np.ndarray, np.ndarray] | No
     where the ball geometry is not known. [MPa]"""
     if None in (b.ball_diameter, b.pitch_diameter, b.f_i, b.f_o):  # as max_contact_pressures
         return None
-    from bearingload.contact.hertz import ball_contacts
+    from bearingload.bearings.checks import ball_pressures
 
     loads = np.asarray(r.ball_loads, dtype=float).reshape(n, -1)
-    angles = np.broadcast_to(np.asarray(r.contact_angles, dtype=float), loads.shape)
-    cos_a = np.clip(np.abs(np.cos(np.deg2rad(angles))), 1e-9, 1.0)  # as max_contact_pressures
-    c = ball_contacts(loads, b.ball_diameter, b.pitch_diameter / cos_a, b.f_i, b.f_o,
-                      b.modulus, b.poisson)  # fmt: skip
-    return np.max(c.inner.p_max, axis=-1), np.max(c.outer.p_max, axis=-1)
+    p_i, p_o = ball_pressures(b, loads, np.broadcast_to(r.contact_angles, loads.shape))
+    return np.max(p_i, axis=-1), np.max(p_o, axis=-1)
 
 
 def _over_rows(value: Any, n: int) -> Any:
