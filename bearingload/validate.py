@@ -13,9 +13,12 @@ def finite(name: str, value: object) -> np.ndarray:
     """Return ``value`` as a float array, raising :class:`InputError` on NaN or infinity, on
     text (units belong to the command line: the library takes N, mm, N/mm^m, degrees) and on
     booleans."""
-    if isinstance(value, (bool, np.bool_)) or np.asarray(value).dtype == bool:
+    raw = np.asarray(value)
+    if isinstance(value, (bool, np.bool_)) or raw.dtype == bool:
         raise InputError(name, f"must be a number, not a boolean (got {value!r})")
     try:
+        if raw.dtype.kind in "USO" and any(isinstance(v, (str, bytes)) for v in raw.flat):
+            raise ValueError  # numpy would read "1000" as 1000.0, and "1 kN" not at all
         arr = np.asarray(value, dtype=float)
     except (TypeError, ValueError):
         raise InputError(
