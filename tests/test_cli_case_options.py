@@ -159,7 +159,10 @@ def test_tilt_radius_pitch_is_the_library_at_half_the_pitch_diameter():
     assert case["tilt_cross"] == pytest.approx(float(r.tilt_cross), rel=1e-9)
     groove = _case("6205", "-F", "1.4kN", "-A", "700N", "--moment", "3Nm", "-G", "C3",
                    "--moment-cross", "-1Nm", "--tilt-radius", "groove")  # fmt: skip
-    assert "tilt_radius" not in groove  # the default lever, R_i
+    # the default lever, R_i = d_m/2 + (f_i - 1/2) D_w cos(alpha_0), reported as a number
+    alpha0 = math.radians(groove["free_contact_angle"])
+    r_i = b.pitch_diameter / 2 + (b.f_i - 0.5) * b.ball_diameter * math.cos(alpha0)
+    assert groove["tilt_radius"] == pytest.approx(r_i, rel=1e-12)
     assert groove["tilt"] != pytest.approx(case["tilt"], rel=1e-4)
 
 
@@ -283,4 +286,4 @@ def test_batch_columns_moment_cross_and_tilt_radius_are_the_options(tmp_path):
     plain = tmp_path / "plain.csv"
     plain.write_text("bearing,load,axial_load\n6205,1kN,500N\n", encoding="utf-8")
     head = invoke("batch", str(plain), "--format", "csv").stdout.splitlines()[0]
-    assert "moment_cross" not in head and "tilt_radius" not in head
+    assert "moment_cross" not in head and "tilt_radius [mm]" in head  # (the lever used)

@@ -144,3 +144,35 @@ def test_clearance_beyond_the_iso_classes_is_flagged_under_a_combined_load(clear
     text = f"bearing,load,axial_load,clearance\n6205,1kN,100N,{clearance}\n"
     row = CliRunner().invoke(main, ["batch", "-", "--format", "json"], input=text)
     assert any(finding in w for w in json.loads(row.stdout)["cases"][0]["warnings"])
+
+
+def test_a_tilt_lever_far_from_the_pitch_radius_is_warned_of():
+    """``--tilt-radius 1e9`` (a unit slip) was used without a word; a lever outside 0.5-2 times
+    d_m/2 now warns, naming the lever and the pitch radius; one near d_m/2 does not."""
+    far = invoke("solve", "6205", "-F", "1.4kN", "-A", "700N", "--tilt-radius", "1e9")
+    assert far.exit_code == 0
+    assert "Warning: tilt lever 1e+09 mm is 5.19e+07 times the pitch radius" in far.output
+    near = invoke("solve", "6205", "-F", "1.4kN", "-A", "700N", "--tilt-radius", "20mm")
+    assert near.exit_code == 0 and "Warning: tilt lever" not in near.output
+
+
+def test_a_misalignment_just_beyond_the_limit_is_shown_with_its_digits():
+    """``--misalignment 2.0000001`` was refused with "got 2°", the limit itself."""
+    out = invoke("solve", "6205", "-F", "1.4kN", "-A", "700N", "--misalignment", "2.0000001")
+    assert out.exit_code != 0 and "(got 2.0000001°)" in out.output
+
+
+def test_the_default_tilt_lever_is_reported_as_a_number():
+    """With the default lever (``groove``) the output named no lever at all; now the radius of
+    the inner groove centres R_i = d_m/2 + (f_i - 1/2) D_w cos(alpha_0) is in the title and in
+    the JSON as ``tilt_radius`` [mm], as a given lever is."""
+    out = json.loads(
+        invoke("solve", "6205", "-F", "1.4kN", "-A", "700N", "--format", "json").output
+    )
+    case = out["cases"][0] if "cases" in out else out
+    lever = case["tilt_radius"]
+    r = solve_combined(9, 1400.0, 700.0, ball_diameter=7.938, pitch_diameter=38.5,
+                       clearance=0.0125)  # fmt: skip
+    assert lever == pytest.approx(r.tilt_radius, rel=1e-6)
+    assert 19.25 < lever < 19.25 + 0.02 * 7.938
+    assert "tilt lever 19.4" in invoke("solve", "6205", "-F", "1.4kN", "-A", "700N").output

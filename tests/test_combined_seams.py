@@ -419,9 +419,10 @@ def test_loads_from_the_smallest_accepted_up_converge():
 def test_a_convergence_error_names_the_inputs_in_their_units(monkeypatch):
     """The ConvergenceError message printed internal arrays (f_hat, clearance_hat); it names
     the inputs of the failing cases in N, N mm and mm now, numbers only."""
-    from bearingload.models import _combined_ring
+    from bearingload.models import _combined_fast, _combined_ring
 
     monkeypatch.setattr(_combined_ring, "MAX_ITERATIONS", 1)
+    monkeypatch.setattr(_combined_fast, "STEPS", 0)  # (the first stage would solve them)
     with pytest.raises(ConvergenceError) as info:
         solve_combined(9, np.array([1400.0, 20.0]), 700.0, clearance=0.3, **G6205)
     message = str(info.value)
@@ -530,3 +531,14 @@ def test_one_or_two_balls_that_can_hold_the_ring_balance_it(z, kw):
     q = r.ball_loads
     assert abs(float(np.sum(q * np.cos(alpha) * np.cos(phi))) - kw["radial_load"]) <= 1e-9 * 1e3
     assert abs(float(np.sum(q * np.sin(alpha))) - kw.get("axial_load", 0.0)) <= 1e-9 * 1e3
+
+
+@pytest.mark.parametrize("load", ["1000", b"1000", ["1000", 500.0]])
+def test_text_for_a_load_is_refused_not_read_as_newtons(load):
+    """``solve_combined(9, "1000", ...)`` was solved as 1000 N: numpy reads the text. The library
+    takes numbers in N, mm and degrees; text (where a unit belongs) is an InputError naming the
+    parameter, as for ``"1 kN"``."""
+    with pytest.raises(InputError, match="radial_load.*must be a number"):
+        solve_combined(9, load, 100.0, **G6205)
+    with pytest.raises(InputError, match="radial_load.*must be a number"):
+        solve_combined(9, "1 kN", 100.0, **G6205)

@@ -80,3 +80,29 @@ def tilt_lever(spec: str | float | None, pitch_diameter: float | None) -> float 
             raise InputError("tilt_radius", "'pitch' needs the pitch diameter of the bearing")
         return 0.5 * float(pitch_diameter)
     return float(spec)
+
+
+#: A lever given as a length outside these multiples of the pitch radius d_m/2 is warned of: the
+#: radius at which the inner groove centres move lies between the bore and the groove bottom,
+#: within a few tens of percent of d_m/2 for every deep-groove bearing. [-]
+LEVER_RANGE = (0.5, 2.0)
+
+
+def lever_warning(lever: float | None, pitch_diameter: float | None) -> str | None:
+    """A sentence when a lever given as a length is far from the bearing's pitch radius (a unit
+    slip: ``--tilt-radius 1e9`` or ``0.02`` meant in metres), None otherwise. [mm]
+
+    >>> lever_warning(21.0, 43.5) is None, lever_warning(1e9, 43.5)[:24]
+    (True, 'tilt lever 1e+09 mm is 4')
+    """
+    if lever is None or not pitch_diameter:
+        return None
+    ratio = lever / (0.5 * float(pitch_diameter))
+    if LEVER_RANGE[0] <= ratio <= LEVER_RANGE[1]:
+        return None
+    return (
+        f"tilt lever {lever:.6g} mm is {ratio:.3g} times the pitch radius d_m/2 = "
+        f"{0.5 * float(pitch_diameter):.6g} mm: the lever is the radius at which the inner groove "
+        "centres move axially (ISO/TS 16281: that of the groove centres, near d_m/2); the tilt "
+        "and the moment's arm scale with it (check --tilt-radius and its unit)"
+    )

@@ -427,7 +427,12 @@ REFRESH = 8
 
 
 def minimise(
-    p: Problem, vh: np.ndarray, vl: np.ndarray, kappa: np.ndarray, start: Point | None = None
+    p: Problem,
+    vh: np.ndarray,
+    vl: np.ndarray,
+    kappa: np.ndarray,
+    start: Point | None = None,
+    polish: bool = False,
 ) -> tuple[np.ndarray, np.ndarray, np.ndarray, Point]:
     """Damped Newton with an Armijo line search on the convex potential (stiffness ``1 +
     kappa`` frozen): each case until every free component is within TOLERANCE (see
@@ -446,7 +451,7 @@ def minimise(
     stall = np.zeros(active.size, dtype=np.int64)
     slow = np.zeros(active.size, dtype=bool)
     ends: list[tuple[np.ndarray, Point, np.ndarray]] = []
-    for _ in range(MAX_ITERATIONS):
+    for k in range(MAX_ITERATIONS):
         old = np.flatnonzero(((pt.res <= TOLERANCE) & (pt.age > 0)) | (pt.age >= REFRESH))
         if old.size == active.size:  # all of them: no copies
             pt = Point.at(q, ka, reference(q, vh[active], vl[active]))
@@ -456,7 +461,8 @@ def minimise(
         better = (pt.res < 0.5 * best) | (pt.res > STALL_BELOW)
         best = np.where(better, pt.res, best)
         stall = np.where(better, 0, stall + 1)
-        stop = (pt.res <= TOLERANCE) | (stall >= STALL) | ~np.isfinite(pt.res)
+        stop = ((pt.res <= TOLERANCE) & (k > 0 or not polish)) | (stall >= STALL)
+        stop |= ~np.isfinite(pt.res)
         if stop.all():  # (no step: the position and the point stay)
             ends.append((active, pt, pt.age == 0))
             break

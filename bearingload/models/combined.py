@@ -58,8 +58,10 @@ u_j)| - A`` (a norm of a convex, nondecreasing map of an affine function, minus 
 convex, once differentiable; it equals the torus formula wherever a ball can touch). Lengths
 are scaled by ``(F/K)^(2/3)`` with ``F`` the largest applied load; damped Newton minimises it
 (:mod:`bearingload.models._combined_ring`: positions and ball approaches in double-double, the
-forces of a preloaded ring summed from the preloaded reference), started from the radial
-engine's solution and the axial closed form; then ``K_j`` is updated to the new contact angles
+forces of a preloaded ring summed from the preloaded reference), started from where plain
+double-precision Newton steps (:mod:`bearingload.models._combined_fast`, the stiffness following
+the contact angles) take the radial engine's solution and the axial closed form; it measures
+and finishes every case itself, so the accuracy is its own. Then ``K_j`` is updated to the new contact angles
 and the minimisation repeated until the update leaves the equilibrium. Each case stops when
 every applied component is balanced to 1e-12 of itself (or to the rounding of the sum it is,
 its terms much larger than it); a component held at 0 by a symmetry of the case is exactly 0.
@@ -82,6 +84,7 @@ import numpy as np
 from bearingload import validate
 from bearingload.constants import STEEL_MODULUS
 from bearingload.errors import ConvergenceError, InputError
+from bearingload.models import _combined_fast as _fast
 from bearingload.models import _combined_ring as _ring
 from bearingload.models._combined_ring import ACCEPT, MAX_ITERATIONS, TOLERANCE, Problem
 
@@ -133,8 +136,18 @@ class CombinedDistribution:
         K(alpha_j), both contacts in series. [N/mm^1.5]
     ball_loads : ndarray (..., z)
         Q_j. [N]
+    tilt_radius : ndarray
+        The lever of the tilt used: the ``tilt_radius`` given, or R_i, the radius of the inner
+        groove curvature centres (ISO/TS 16281). [mm]
+    stiffness_matrix : ndarray (..., 5, 5)
+        The bearing's stiffness at the equilibrium, symmetric: d(F_x, F_y, F_a, M, M_c)/d(x, y,
+        axial, tilt, tilt_cross), forces [N] and moments [N mm] on the inner ring per
+        displacement [mm] and tilt [rad] of it (x along the load line, tilts in radians, as a
+        rotor model takes them). See ``stiffness_radial``, ``stiffness_axial``,
+        ``stiffness_tilt``. [N/mm, N/rad, N mm/mm, N mm/rad]
     iterations : ndarray of int
-        Newton iterations summed over the stiffness updates. [-]
+        Newton steps: those of the double-precision first stage and of the double-double
+        minimisations, summed over the stiffness updates. [-]
     """
 
     balls: int
@@ -155,12 +168,29 @@ class CombinedDistribution:
     ball_approaches: np.ndarray
     ball_stiffnesses: np.ndarray
     ball_loads: np.ndarray
+    tilt_radius: np.ndarray
+    stiffness_matrix: np.ndarray
     iterations: np.ndarray
 
     @property
     def q_max(self) -> Any:
         """Load of the most heavily loaded ball. [N]"""
         return validate.scalar_out(self.ball_loads.max(axis=-1))
+
+    @property
+    def stiffness_radial(self) -> Any:
+        """dF_x/dx, the radial stiffness along the load line. [N/mm]"""
+        return validate.scalar_out(self.stiffness_matrix[..., 0, 0])
+
+    @property
+    def stiffness_axial(self) -> Any:
+        """dF_a/d(axial), the axial stiffness. [N/mm]"""
+        return validate.scalar_out(self.stiffness_matrix[..., 2, 2])
+
+    @property
+    def stiffness_tilt(self) -> Any:
+        """dM/d(tilt), the tilting stiffness in the plane of the load. [N mm/rad]"""
+        return validate.scalar_out(self.stiffness_matrix[..., 3, 3])
 
     @property
     def loaded_balls(self) -> Any:
@@ -516,7 +546,13 @@ def solve_combined(
     with np.errstate(all="ignore"):
         vh, vl, kappa, its, end = _solve_with_stiffness(problem, geo, curve)
         checked = _checked(problem, end, its, given)
-        answer = (vh + vl, kappa, its, checked)
+        answer = (
+            vh + vl,
+            kappa,
+            its,
+            checked,
+            _tangent(problem, geo, end, kappa, curve, mirror & (mc == 0)),
+        )
         return _result(problem, geo, answer, shape, given, misalignment)
 
 
@@ -744,6 +780,18 @@ class _StiffnessCurve:
         terms = self.w / (t[..., None] - self.x)  # t is never a node: no node is 0 or 1
         return cos_m1 * (terms * self.values[idx][:, None, :]).sum(-1) / terms.sum(-1)
 
+    def slope(self, cos_alpha: np.ndarray, cos_m1: np.ndarray) -> np.ndarray:
+        """d(kappa)/d(cos alpha) of every case (n, z), the derivative of the interpolant:
+        ``D + (c - 1) dD/dc`` with the barycentric quotient differentiated term by term."""
+        t = 2.0 * np.clip(cos_alpha, 0.0, 1.0) - 1.0
+        inv = 1.0 / (t[..., None] - self.x)
+        terms = self.w * inv
+        f = self.values[:, None, :]
+        num, den = (terms * f).sum(-1), terms.sum(-1)
+        d_num, d_den = -(terms * inv * f).sum(-1), -(terms * inv).sum(-1)
+        dd_dc = 2.0 * (d_num * den - num * d_den) / (den * den)
+        return num / den + cos_m1 * dd_dc
+
 
 def _solve_with_stiffness(
     p: Problem, geo: _Geometry, curve: _StiffnessCurve | None
@@ -753,15 +801,15 @@ def _solve_with_stiffness(
     iterations, the point there: :func:`_ring.reference` at the position, the loads with
     kappa)."""
     cage = np.rad2deg(np.arctan2(p.s[:, 0], p.c[:, 0]))
-    vh = _start(p, geo, cage)
+    vh, kappa, total = _fast.newton(p, _start(p, geo, cage), curve)
     vl = np.zeros_like(vh)
-    kappa = np.zeros_like(p.c)
-    total = np.zeros(vh.shape[0], dtype=np.int64)
     todo = np.arange(vh.shape[0])  # each case stops on its own: no case depends on the batch
     sub, start = p, None
     last: _ring.Point | None = None  # every case's point at its position, with its stiffness
     for _ in range(MAX_STIFFNESS_UPDATES):
-        vh[todo], vl[todo], its, end = _ring.minimise(sub, vh[todo], vl[todo], kappa[todo], start)
+        vh[todo], vl[todo], its, end = _ring.minimise(
+            sub, vh[todo], vl[todo], kappa[todo], start, polish=start is None
+        )
         total[todo] += its
         if curve is None:
             return vh, vl, kappa, total, end
@@ -844,6 +892,43 @@ def _refuse_edge(case: int, ball: int, given: dict) -> None:
     )
 
 
+def _tangent(p: Problem, geo: _Geometry, point: _ring.Point, kappa: np.ndarray,
+             curve: _StiffnessCurve | None, mirrored: np.ndarray) -> np.ndarray:  # fmt: skip
+    """The stiffness matrix of every case at its equilibrium (n, 5, 5): d(generalised force)/
+    d(displacement), rows (F_x, F_y, F_a [N], M, M_c [N mm]), columns (x, y, axial [mm], tilt,
+    tilt_cross [rad]), every component free (the held ones too: holding them is the solver's).
+
+    Ball j carries ``Q_j = K(alpha_j) delta_j^1.5`` along its contact normal ``g_j``; its part
+    of the matrix is ``dQ/d(delta) g g^T + Q/d h h^T + dQ/d(alpha) g h^T / d`` (``h`` the
+    direction in which the normal turns, ``d`` the distance of the groove centres; the last term
+    from the stiffness's change with the contact angle, about 1e-5 of the matrix on a 6205). The matrix
+    returned is the symmetric part (that last term's antisymmetric part left out), the form a
+    rotor model takes; with a constant ``stiffness`` the tangent is symmetric as it is. In a
+    case symmetric about the load line (``mirrored``: the balls and the loads) the couplings of
+    (x, axial, tilt) with (y, tilt_cross) are 0, exactly rather than to rounding."""
+    b, lo = point.b, point.lo
+    inside = b.rho > 0
+    d = np.where(b.d > 0, b.d, 1.0)
+    g = _ring._times_arms(lo.ca, lo.sa, p.arms)
+    h = _ring._times_arms(-lo.sa, lo.ca, p.arms)
+    w1 = 1.5 * (1.0 + kappa) * lo.root
+    w2 = np.where(inside, lo.q / d, 0.0)
+    t = np.einsum("nz,nzi,nzj->nij", w1, g, g) + np.einsum("nz,nzi,nzj->nij", w2, h, h)
+    if curve is not None:
+        dq = curve.slope(lo.ca, lo.cam1) * -lo.sa * lo.root**3  # dQ/d(alpha), scaled
+        w3 = np.where(inside & (lo.root > 0), dq / d, 0.0)
+        cross = np.einsum("nz,nzi,nzj->nij", w3, g, h)
+        t += cross
+    lever = np.ones((p.f.shape[0], 5))
+    lever[:, 3:] = geo.R_i[:, None]
+    t *= (p.f_ref / p.scale)[:, None, None] * lever[:, :, None] * lever[:, None, :]
+    t = 0.5 * (t + t.transpose(0, 2, 1))  # (exactly: the rounding of the products aside)
+    along, across = np.array([0, 2, 3]), np.array([1, 4])
+    t[np.ix_(mirrored, along, across)] = 0.0
+    t[np.ix_(mirrored, across, along)] = 0.0
+    return t
+
+
 def _result(
     p: Problem,
     geo: _Geometry,
@@ -853,7 +938,7 @@ def _result(
     misalignment: Any,
 ) -> CombinedDistribution:
     """Back to physical units and the case shape."""
-    v, kappa, its, (b, lo, gen) = answer
+    v, kappa, its, (b, lo, gen), tangent = answer
     q = p.f_ref[:, None] * lo.q
     t = v[:, 3] + p.t_imp
     mm = given["moment"]
@@ -887,5 +972,7 @@ def _result(
         ball_approaches=ball((p.pre[:, None] + b.eps) * p.scale[:, None]),
         ball_stiffnesses=ball((1.0 + kappa) * p.k_ref[:, None]),
         ball_loads=ball(q),
+        tilt_radius=case(geo.R_i),
+        stiffness_matrix=tangent.reshape(shape + (5, 5)),
         iterations=case(its),
     )

@@ -37,7 +37,7 @@ _BEARING_ONLY = (
 
 #: Columns of a combined-load file written only when the file has them (as solve writes them
 #: only when given).
-_COMBINED_IF_GIVEN = ("moment_cross", "tilt_radius")
+_COMBINED_IF_GIVEN = ("moment_cross",)
 
 
 def batch_columns(header: Header) -> list[Column]:

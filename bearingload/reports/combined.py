@@ -54,12 +54,20 @@ ANSWER_KEYS = (
     "axial",
     "tilt",
     "tilt_cross",
+    "stiffness_radial",
+    "stiffness_axial",
+    "stiffness_tilt",
     "moment",
     "moment_cross",
     "reference_rating_life",
     "dynamic_rating",
     "equivalent_load",
     "rating_life",
+)
+#: The units of the 5x5 ``stiffness_matrix`` (``units`` of a combined-load JSON document).
+MATRIX_UNITS = (
+    "rows F_x, F_y, F_a [N], M, M_c [N mm]; columns x, y, axial [mm], tilt, tilt_cross [rad]: "
+    "N/mm, N/rad, N mm/mm, N mm/rad"
 )
 PER_BALL_KEYS = (
     "ball",
@@ -221,13 +229,14 @@ def _document(cases: Sequence[CombinedCase], records: Sequence[dict[str, Any]]) 
                 "contact_angles": res.contact_angles,
                 "ball_approaches": res.ball_approaches,
                 "ball_loads": res.ball_loads,
+                "stiffness_matrix": res.stiffness_matrix.tolist(),
                 "warnings": list(c.warnings),
             }
         )
     keys = list(dict.fromkeys(k for d in docs for k in d))
     return {
         "cases": docs,
-        "units": units(keys, 1.5),
+        "units": units(keys, 1.5) | {"stiffness_matrix": MATRIX_UNITS},
         "bearing": geometry_document(cases[0].bearing),
         "warnings": list(dict.fromkeys(w for c in cases for w in c.warnings)),
     }

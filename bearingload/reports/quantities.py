@@ -84,6 +84,8 @@ QUANTITIES: dict[str, Quantity] = {
         Quantity("y", "ring displacement across the load y", "mm", display=_UM),
         Quantity("stiffness_radial", "radial stiffness dF_r/dx", "N/mm"),
         Quantity("approach_max", "heaviest ball approach delta_max", "mm", display=_UM),
+        Quantity("stiffness_axial", "axial stiffness dF_a/d(axial)", "N/mm"),
+        Quantity("stiffness_tilt", "tilting stiffness dM/d(tilt)", "N mm/rad"),
         Quantity("stiffness_matrix", "tangent stiffness matrix", "N/mm"),
         Quantity("stiffness_xx", "tangent stiffness K_xx", "N/mm"),
         Quantity("stiffness_xy", "tangent stiffness K_xy", "N/mm"),

@@ -29,7 +29,8 @@ COMBINED_KEYS = (
     "misalignment", "tilt_radius", "rotating", "stiffness", "clearance", "clearance_pick",
     "cage_angle", "q_max", "loaded_balls", "p_max_inner", "p_max_outer",
     "static_equivalent_load", "static_safety", "contact_angle_max", "free_contact_angle", "axial_play", "x", "y",
-    "axial", "tilt", "tilt_cross", "reference_rating_life",
+    "axial", "tilt", "tilt_cross", "stiffness_radial", "stiffness_axial", "stiffness_tilt",
+    "reference_rating_life",
     "dynamic_rating", "equivalent_load", "rating_life",
 )  # fmt: skip
 

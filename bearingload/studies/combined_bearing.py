@@ -50,7 +50,7 @@ class CombinedCase:
     static_equivalent_load: float | None = None  # P0, ISO 76 [N]
     static_safety: float | None = None  # s0 = C0/P0 [-]
     moment_cross: float | None = None  # applied, about the load line; None: not given [N mm]
-    tilt_radius: float | None = None  # lever of the tilt given; None: R_i (groove) [mm]
+    tilt_radius: float | None = None  # lever of the tilt used (given, or R_i: groove) [mm]
 
 
 def solve_combined_bearing(
@@ -100,7 +100,7 @@ def solve_combined_bearing(
         static_equivalent_load,
         static_safety,
     )
-    from bearingload.bearings.tilt import tilt_lever
+    from bearingload.bearings.tilt import lever_warning, tilt_lever
 
     out = []
     for b in bearings:
@@ -114,10 +114,13 @@ def solve_combined_bearing(
         found = combined_warnings(b, load, axial_load, float(r.q_max), int(r.loaded_balls),
                                   warned_tilt(r, moment, moment_cross, misalignment),
                                   pressures)  # fmt: skip
+        if isinstance(tilt_radius, float) and (said := lever_warning(lever, b.pitch_diameter)):
+            found.append(said)
         p_i, p_o = pressures if pressures is not None else (None, None)
         out.append(CombinedCase(b, r, misalignment, rotating, c_r, p_eq, life,
                                 None if l10r is None else float(l10r), tuple(found), p_i, p_o,
-                                p0, static_safety(b.C0, p0), moment_cross, lever))  # fmt: skip
+                                p0, static_safety(b.C0, p0), moment_cross,
+                                float(r.tilt_radius)))  # fmt: skip
     return out
 
 
@@ -144,7 +147,7 @@ def check_misalignment(misalignment: Any) -> None:
     if worst > MISALIGNMENT_MAX:
         raise InputError(
             "misalignment",
-            f"must be within ±{MISALIGNMENT_MAX:g}° (got {worst:g}°): a deep-groove ball "
+            f"must be within ±{MISALIGNMENT_MAX:g}° (got {worst:.10g}°): a deep-groove ball "
             "bearing tolerates 2-10 arcmin, and a tilt of degrees would push the balls over the "
             "groove shoulders, which the model does not describe",
         )
@@ -334,13 +337,14 @@ def case_columns(
     """Every quantity of the cases of ``r`` (one bearing) under its key of
     :mod:`bearingload.reports.quantities`: a numpy array over the cases, text, or None where a
     quantity is not given (no misalignment imposed, C_r unknown, no catalogue C0r and f0); the
-    applied ``moment_cross`` [N mm] and the lever ``tilt_radius`` [mm] only where given."""
+    applied ``moment_cross`` [N mm] only where given; the lever ``tilt_radius`` [mm] used (the
+    one given, else the solver's R_i)."""
 
     def arr(value: Any, dtype: Any = float) -> Any:
         return None if value is None else np.atleast_1d(np.asarray(value, dtype=dtype))
 
     cross = {} if moment_cross is None else {"moment_cross": arr(moment_cross)}
-    lever = {} if tilt_radius is None else {"tilt_radius": arr(tilt_radius)}
+    lever = {"tilt_radius": arr(r.tilt_radius if tilt_radius is None else tilt_radius)}
     return {
         "bearing": b.designation or "given by hand",
         "method": "combined",
@@ -365,6 +369,9 @@ def case_columns(
         "axial": arr(r.axial),
         "tilt": arr(r.tilt),
         "tilt_cross": arr(r.tilt_cross),
+        "stiffness_radial": arr(r.stiffness_radial),
+        "stiffness_axial": arr(r.stiffness_axial),
+        "stiffness_tilt": arr(r.stiffness_tilt),
         "contact_angle_max": arr(largest_loaded_angle(r)),
         "dynamic_rating": arr(dynamic_rating),
         "equivalent_load": arr(equivalent_load),

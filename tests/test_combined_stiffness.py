@@ -1,0 +1,148 @@
+"""The 5x5 stiffness matrix of a combined-load solve (``CombinedDistribution.stiffness_matrix``).
+
+Proved two ways: (a) against an independent mpmath Jacobian of the five ring forces (40 digits,
+its own geometry and, for the Hertz stiffness, its own elliptic-integral contact stiffness) at
+the solver's equilibrium; (b) against finite differences of the solve itself: the compliance
+(the matrix's inverse) times a small change of each applied load is the change of the
+displacements the solver returns.
+"""
+
+from __future__ import annotations
+
+import math
+
+import mpmath as mp
+import numpy as np
+import pytest
+
+from bearingload.models.combined import solve_combined
+
+from .test_combined import mp_ball_stiffness
+
+G6205 = {"ball_diameter": 7.938, "pitch_diameter": 38.5}  # the catalogue 6205 (NSK ball set)
+CASES = {
+    "clearance, free tilt": dict(radial_load=1400.0, axial_load=700.0, clearance=0.0125),
+    "preload, moments both ways, cage off the load line": dict(
+        radial_load=500.0,
+        axial_load=200.0,
+        clearance=-0.01,
+        moment=5000.0,
+        moment_cross=-3000.0,
+        cage_angle=7.0,
+    ),  # fmt: skip
+    "imposed misalignment": dict(
+        radial_load=2000.0, axial_load=-300.0, clearance=0.02, misalignment=0.05
+    ),  # fmt: skip
+}
+
+
+def _mp_forces(case: dict, v: list, stiffness: float | None) -> list:
+    """(F_x, F_y, F_a [N], M, M_c [N mm]) the balls exert on the inner ring at v = (x, y, a [mm],
+    theta, theta_c [rad]), at 40 digits (ISO/TS 16281 kinematics, the module's conventions)."""
+    mp.mp.dps = 40
+    dw, dm = mp.mpf(G6205["ball_diameter"]), mp.mpf(G6205["pitch_diameter"])
+    fi, fo = mp.mpf("0.52"), mp.mpf("0.53")
+    big_a = (fi + fo - 1) * dw
+    g = mp.mpf(case["clearance"]) / 2
+    alpha0 = mp.acos(1 - g / big_a) if g > 0 else mp.mpf(0)
+    radius = dm / 2 + (fi - mp.mpf("0.5")) * dw * mp.cos(alpha0)
+    z = 9
+    out = [mp.mpf(0)] * 5
+    x, y, a, th, thc = v
+    for j in range(z):
+        phi = mp.radians(case.get("cage_angle", 0.0)) + 2 * mp.pi * j / z
+        rho = big_a - g + x * mp.cos(phi) + y * mp.sin(phi)
+        u = a + radius * (th * mp.cos(phi) + thc * mp.sin(phi))
+        delta = mp.sqrt(rho**2 + u**2) - big_a
+        if delta <= 0 or rho <= 0:
+            continue
+        alpha = mp.atan2(u, rho)
+        k = mp.mpf(stiffness) if stiffness else mp_ball_stiffness(
+            alpha, dw, dm, fi, fo, mp.mpf(208000), mp.mpf("0.3"))  # fmt: skip
+        q = k * delta**1.5
+        arms = (mp.cos(alpha) * mp.cos(phi), mp.cos(alpha) * mp.sin(phi), mp.sin(alpha),
+                radius * mp.sin(alpha) * mp.cos(phi), radius * mp.sin(alpha) * mp.sin(phi))  # fmt: skip
+        out = [o + q * arm for o, arm in zip(out, arms, strict=True)]
+    return out
+
+
+def _mp_jacobian(case: dict, r, stiffness: float | None) -> np.ndarray:
+    """d(forces)/d(v) at the solver's equilibrium, central differences at 40 digits (step 1e-15
+    of the lengths: the truncation error is 1e-30 of the entries)."""
+    mp.mp.dps = 40
+    v0 = [mp.mpf(r.x), mp.mpf(r.y), mp.mpf(r.axial), mp.radians(mp.mpf(r.tilt)),
+          mp.radians(mp.mpf(r.tilt_cross))]  # fmt: skip
+    jac = np.zeros((5, 5))
+    for col in range(5):
+        h = mp.mpf("1e-15") / (20 if col >= 3 else 1)  # (a tilt of 1 rad moves R_i ~ 20 mm)
+        up, down = list(v0), list(v0)
+        up[col] += h
+        down[col] -= h
+        f_up, f_down = _mp_forces(case, up, stiffness), _mp_forces(case, down, stiffness)
+        jac[:, col] = [float((a - b) / (2 * h)) for a, b in zip(f_up, f_down, strict=True)]
+    return jac
+
+
+@pytest.mark.parametrize("name", list(CASES))
+@pytest.mark.parametrize("stiffness", [3.0e5, None], ids=["constant K", "Hertz K(alpha)"])
+def test_the_matrix_is_the_jacobian_of_the_ring_forces(name, stiffness):
+    """Constant K: the matrix is the mpmath Jacobian to 1e-12 of its largest entry (measured:
+    8e-16 to 1.1e-15). Hertz K(alpha): the Jacobian is not quite symmetric (the stiffness
+    changes with the contact angle); the matrix is its symmetric part to 1e-12 (measured: 1e-15
+    to 2.4e-15), and the part left out is below 1e-4 of the largest entry (measured: 6e-6 to
+    9e-6)."""
+    case = CASES[name]
+    r = solve_combined(9, stiffness=stiffness, **G6205, **case)
+    jac = _mp_jacobian(case, r, stiffness)
+    mat = np.asarray(r.stiffness_matrix)
+    assert np.array_equal(mat, mat.T)
+    # entries scaled to a common size: forces per mm, moments per rad over R_i
+    scale = np.diag([1.0, 1.0, 1.0, 1.0 / r.tilt_radius, 1.0 / r.tilt_radius])
+    jac_s, mat_s = scale @ jac @ scale, scale @ mat @ scale
+    size = np.abs(jac_s).max()
+    sym = 0.5 * (jac_s + jac_s.T)
+    assert np.abs(mat_s - sym).max() <= 1e-12 * size
+    skew = np.abs(jac_s - jac_s.T).max() / 2
+    assert skew <= (1e-12 if stiffness else 1e-4) * size
+    assert np.all(np.linalg.eigvalsh(mat_s) > 0)  # stable: every direction pushes back
+
+
+@pytest.mark.parametrize("name", list(CASES))
+def test_the_compliance_moves_the_solve_as_the_loads_change(name):
+    """The inverse of the matrix (constant K) predicts how the solve's displacements move when
+    F_r, F_a, M or M_c change by 1e-5 of the largest load (central differences of the solve,
+    error ~1e-10 from the step, 1e-7 from the 1e-12 equilibrium over the 1e-5 step): to 1e-6.
+    The tilt is held where a misalignment is imposed: there its column is not an input."""
+    case = dict(CASES[name])
+    k = 3.0e5
+    r = solve_combined(9, stiffness=k, **G6205, **case)
+    lever = r.tilt_radius
+    held = "misalignment" in case
+    free = [0, 1, 2, 4] if held else [0, 1, 2, 3, 4]
+    comp = np.linalg.inv(np.asarray(r.stiffness_matrix)[np.ix_(free, free)])
+    f_ref = max(case["radial_load"], abs(case["axial_load"]))
+    inputs = {0: "radial_load", 2: "axial_load", 3: "moment", 4: "moment_cross"}
+    if held:
+        del inputs[3]
+    for row, key in inputs.items():
+        h = 1e-5 * f_ref * (lever if row >= 3 else 1.0)
+        moved = []
+        for sign in (1.0, -1.0):
+            c = dict(case)
+            c[key] = c.get(key, 0.0) + sign * h
+            s = solve_combined(9, stiffness=k, **G6205, **c)
+            moved.append(np.array([s.x, s.y, s.axial, math.radians(s.tilt),
+                                   math.radians(s.tilt_cross)])[free])  # fmt: skip
+        got = (moved[0] - moved[1]) / (2 * h)
+        want = comp[:, free.index(row)]
+        assert np.allclose(got, want, rtol=1e-6, atol=1e-6 * np.abs(want).max()), key
+
+
+def test_the_named_stiffnesses_are_the_diagonal():
+    r = solve_combined(9, 1400.0, 700.0, clearance=0.0125, **G6205)
+    m = r.stiffness_matrix
+    assert (r.stiffness_radial, r.stiffness_axial, r.stiffness_tilt) == (m[0, 0], m[2, 2], m[3, 3])
+    assert isinstance(r.stiffness_radial, float) and m.shape == (5, 5)
+    many = solve_combined(9, [1400.0, 100.0], 700.0, clearance=0.0125, **G6205)
+    assert many.stiffness_matrix.shape == (2, 5, 5)
+    np.testing.assert_array_equal(many.stiffness_matrix[0], m)  # no case depends on the others
