@@ -7,7 +7,7 @@ import math
 import pytest
 
 from bearingload.errors import ConvergenceError
-from bearingload.roots import bracketed_root
+from bearingload.numerics import bracketed_root
 
 
 def test_bracketed_root_does_not_return_a_far_bracket_end_silently():

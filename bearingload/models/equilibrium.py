@@ -43,7 +43,7 @@ from typing import Any
 
 import numpy as np
 
-from bearingload import validate
+from bearingload import numerics, validate
 from bearingload.errors import InputError
 from bearingload.models import _ring, _scalar
 from bearingload.models._ring import (
@@ -145,7 +145,7 @@ class LoadDistribution:
         kyy = self.stiffness_matrix[..., 1, 1]
         with np.errstate(divide="ignore", invalid="ignore"):
             ratio = np.where(kyy > 0, kxy / np.where(kyy > 0, kyy, 1.0), 0.0)
-        return validate.scalar_out(kxx - kxy * ratio)
+        return numerics.scalar_out(kxx - kxy * ratio)
 
     @property
     def ball_angles(self) -> np.ndarray:
@@ -233,7 +233,7 @@ def _lazy_field(name: str) -> property:
             value = self.__dict__["_values"][name]
             arr = np.asarray(value)
             # one case: a Python int or float for each quantity (arrays stay arrays)
-            arr = cache[name] = validate.scalar_out(arr)
+            arr = cache[name] = numerics.scalar_out(arr)
         return arr
 
     return property(get, doc=f"``{name}`` of the case (see LoadDistribution).")

@@ -289,7 +289,7 @@ def compensating_clearances(
     remainder for the smooth terms, the monotone range for a term near its kink, widened by
     the rounding margin) show on every piece no zero or a strictly monotone ``h``; following
     the signs at the piece ends from the sign below ``-1`` (:func:`_sign_brackets`) brackets
-    every sign change once, and :func:`bearingload.roots.bracketed_root` refines it to
+    every sign change once, and :func:`bearingload.numerics.bracketed_root` refines it to
     ``|Δt| <= 2 (1e-15 + 4.5e-16 |t|)``. What double precision cannot tell: where ``h`` stays
     within the rounding margin of its sums (:data:`ROUNDING_ULPS`) over a whole piece (it vanishes
     identically under a full preload for an integer ``m < z - 1``, and falls below rounding
@@ -320,7 +320,7 @@ def compensating_clearances(
     >>> len(roots), [round(g, 5) for g in roots if g > 0]
     (6, [0.01065, 0.0843, 0.43572])
     """
-    from bearingload.roots import bracketed_root
+    from bearingload.numerics import bracketed_root
 
     z = int(validate.ball_count(balls))
     if z < 3:
