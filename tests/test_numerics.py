@@ -10,7 +10,7 @@ import pytest
 from scipy.optimize import brentq
 
 from bearingload.numerics import bracketed_root
-from bearingload.studies.compliance import _difference, compensating_clearances
+from bearingload.studies.compensation import _difference, compensating_clearances
 
 AWKWARD = [  # (f, a, b, the root)
     (lambda x: x**3 - 2 * x - 5, 2.0, 3.0, None),  # None: brentq's
