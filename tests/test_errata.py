@@ -161,7 +161,7 @@ def test_errata_command_is_lazy():
 
 def test_relative_errors_are_percent_in_human_formats_and_fractions_in_machine_ones():
     """errata printed its relative difference as a fraction [-] and the accuracy report its
-    errors as fractions, while solve and table k --method all print % (the review's finding)."""
+    errors as fractions, while solve and table k --method all print %."""
     from bearingload.reports.accuracy import accuracy_table
     from bearingload.reports.quantities import QUANTITIES
     from bearingload.reports.render import render
@@ -183,3 +183,10 @@ def test_relative_errors_are_percent_in_human_formats_and_fractions_in_machine_o
     cells = [c.strip() for c in text.splitlines()[4].split("|")]
     assert cells[4:6] == ["0.12", "50"], cells
     assert render([accuracy_table([row])], "csv").splitlines()[1] == "m,s,1,0.0012,0.5,3"
+
+
+def test_errata_only_differing_title_says_the_filter():
+    """errata --only-differing (without --summary) kept the title 'every printed number the
+    project recomputes' over a table of the differing ones only (json 'title' too)."""
+    r = invoke("errata", "--only-differing", "--format", "json")
+    assert '"title": "Published vs computed: the printed numbers that differ' in r.stdout

@@ -9,6 +9,7 @@ import math
 import pytest
 from scipy.optimize import brentq
 
+from bearingload.errors import ConvergenceError
 from bearingload.numerics import bracketed_root
 from bearingload.studies.compensation import _difference, compensating_clearances
 
@@ -98,3 +99,12 @@ def test_elliptic_integrals_elements_do_not_depend_on_each_other():
     k_int, e_int, n, d = (v[0] for v in together[:4])
     assert (k_int, e_int) == (math.pi / 2, math.pi / 2)
     assert (n, d) == (math.pi / 4, math.pi / 4)
+
+
+def test_bracketed_root_does_not_return_a_far_bracket_end_silently():
+    # a bracket of 1e300 around a root at 1 cannot be halved to 1e-12 in 400 evaluations: it
+    # returned 0.0 (where f = -0.785) as the root; it must raise instead
+    with pytest.raises(ConvergenceError):
+        bracketed_root(lambda x: math.atan(x - 1.0), 0.0, 1e300)
+    # a wide bracket that can be halved in time still gives the root
+    assert abs(bracketed_root(lambda x: math.atan(x - 1.0), 0.0, 1e6) - 1.0) <= 4e-12

@@ -1,4 +1,4 @@
-"""Edge cases found in review: output files, extreme but finite inputs, huge angles, units."""
+"""Edge cases: output files, extreme but finite inputs, huge angles, units."""
 
 from __future__ import annotations
 
@@ -179,7 +179,7 @@ def test_a_clearance_of_half_a_ball_is_refused():
 
 
 # ---------------------------------------------------------------------------------------------
-# Defects an adversarial review found in the equilibrium engine, each against an independent
+# Defects once found in the equilibrium engine, each against an independent
 # mpmath solution written here (no code shared with bearingload.models).
 # ---------------------------------------------------------------------------------------------
 def _mp_ring(z, phi1_deg):
