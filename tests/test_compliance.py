@@ -36,7 +36,7 @@ def ref_difference(z, load, stiffness, clearance):
     )
 
 
-def test_issue_example_has_six_roots_three_under_preload():
+def test_nine_balls_have_six_compensating_clearances_three_under_preload():
     roots = comp.compensating_clearances(9, 1000.0, 1.0e5, lower=-0.03, upper=0.5)
     assert len(roots) == 6
     assert sum(g < 0 for g in roots) == 3
