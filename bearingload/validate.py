@@ -31,6 +31,26 @@ def finite(name: str, value: object) -> np.ndarray:
     return arr
 
 
+def require(name: str, value: object, rule: str, ok: Any) -> None:
+    """Raise :class:`InputError` ``<name>: must be <rule>; got <value>`` unless every ``ok``."""
+    if not np.all(ok):
+        raise InputError(name, f"must be {rule}; got {value!r}")
+
+
+def positive_number(name: str, value: object) -> np.ndarray:
+    """Return ``value`` as a float array: finite (:func:`finite`) and > 0 (``must be positive``)."""
+    arr = finite(name, value)
+    require(name, value, "positive", arr > 0)
+    return arr
+
+
+def non_negative(name: str, value: object) -> np.ndarray:
+    """Return ``value`` as a float array: finite (:func:`finite`) and >= 0."""
+    arr = finite(name, value)
+    require(name, value, "zero or positive", arr >= 0)
+    return arr
+
+
 def positive(name: str, value: object, unit: str) -> np.ndarray:
     """Return ``value`` as a float array, raising unless every element is finite and > 0."""
     arr = finite(name, value)
@@ -92,20 +112,3 @@ def _worst(arr: np.ndarray, bad: np.ndarray) -> str:
     """The first offending value, unrounded (shortest repr: 8.0000000001 stays 8.0000000001)."""
     v = float(np.asarray(arr)[np.asarray(bad)].flat[0])
     return repr(int(v)) if v.is_integer() and abs(v) < 1e16 else repr(v)
-
-
-def scalar_out(value: Any) -> Any:
-    """The scalar contract of every public function: a case given as scalars gives Python
-    ``float``/``int``/``bool`` (a 0-d array or numpy scalar is unwrapped with ``.item()``), a case
-    given as arrays gives numpy arrays; ``None`` stays ``None``. Ball-level quantities are
-    arrays in either case (their callers do not pass them here).
-
-    >>> scalar_out(np.float64(2.5)), type(scalar_out(np.asarray(3)))
-    (2.5, <class 'int'>)
-    >>> scalar_out(np.zeros(2))
-    array([0., 0.])
-    """
-    if value is None or isinstance(value, (bool, int, float)) and not isinstance(value, np.generic):
-        return value
-    arr = np.asarray(value)
-    return arr.item() if arr.ndim == 0 else arr

@@ -1,7 +1,7 @@
 """Write the high-precision reference of the combined-load rows of ``bearingload accuracy``.
 
 Run ``python benchmarks/make_combined_reference.py`` (needs mpmath, a test dependency) to
-regenerate ``bearingload/studies/data/accuracy_combined_reference.csv``. It shares no code with
+regenerate ``bearingload/quality/data/accuracy_combined_reference.csv``. It shares no code with
 the package: the model of ``bearingload.models.combined`` (ISO/TS 16281; Harris & Kotzalas,
 *Rolling Bearing Analysis*, 5th ed., ch. 8), as its module docstring states it, is written out
 here again in mpmath at 40 significant digits:
@@ -58,7 +58,7 @@ OUT = os.path.join(
     os.path.dirname(__file__),
     "..",
     "bearingload",
-    "studies",
+    "quality",
     "data",
     "accuracy_combined_reference.csv",
 )

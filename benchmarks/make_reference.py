@@ -1,7 +1,7 @@
 """Write the high-precision reference of ``bearingload accuracy``: Q_max of the exact ring equilibrium.
 
 Run ``python benchmarks/make_reference.py`` (needs mpmath, a test dependency) to regenerate
-``bearingload/studies/data/accuracy_reference.csv``. It shares no code with the package: the ring
+``bearingload/quality/data/accuracy_reference.csv``. It shares no code with the package: the ring
 equilibrium is written out here again in mpmath at 50 significant digits and solved by bisection.
 
 The cases (the fixed set of the accuracy report): bearing 306 of Kuzmenko (2010, §3.4: F_r =
@@ -30,7 +30,7 @@ CLEARANCES = (-0.020, 0.0, 0.020, 0.100, 0.400)  # mm
 EXPONENT = 1.5
 DIGITS = 50
 OUT = os.path.join(
-    os.path.dirname(__file__), "..", "bearingload", "studies", "data", "accuracy_reference.csv"
+    os.path.dirname(__file__), "..", "bearingload", "quality", "data", "accuracy_reference.csv"
 )
 
 

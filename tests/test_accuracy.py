@@ -15,8 +15,8 @@ from bearingload.models.hand import (
     kuzmenko2010_trial,
     load_zone_table_k,
 )
-from bearingload.studies import accuracy
-from bearingload.studies.accuracy import measure, reference_cases
+from bearingload.quality import accuracy
+from bearingload.quality.accuracy import measure, reference_cases
 
 from .cli_helpers import invoke, run_entry
 

@@ -8,6 +8,7 @@ import pytest
 from hypothesis import given
 from hypothesis import strategies as st
 
+from bearingload import compute
 from bearingload.errors import InputError
 from bearingload.models.approximations import (
     PALMGREN_CONSTANT,
@@ -83,3 +84,11 @@ def test_errors():
         palmgren(8, 100.0, contact_angle=90.0)
     with pytest.raises(InputError, match="constant"):
         stribeck(8, 100.0, constant=0.0)
+
+
+def test_one_line_estimates_are_outside_their_range_below_five_balls():
+    """k = 4.37/z (5/z) above 1 for z < 5: one ball would carry more than the whole load."""
+    for z in (1, 2, 3, 4):
+        assert compute("stribeck", z, 1000.0, 1e5).valid is False
+        assert compute("palmgren", z, 1000.0, 1e5).valid is False
+    assert compute("stribeck", 5, 1000.0, 1e5).valid is True

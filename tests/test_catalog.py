@@ -3,6 +3,7 @@
 from __future__ import annotations
 
 import csv
+import json
 import math
 from importlib import resources
 
@@ -21,6 +22,8 @@ from bearingload.bearings.catalog import (
 from bearingload.bearings.designation import parse
 from bearingload.errors import InputError
 from bearingload.units import KGF
+
+from .cli_helpers import invoke
 
 ROWS = entries()
 WITH_GEOMETRY = [r for r in ROWS if r.has_geometry]
@@ -162,7 +165,7 @@ def test_gost_and_iso_pairs_share_boundary_dimensions() -> None:
         assert (row.d, row.D, row.B) == (other.d, other.D, other.B)
 
 
-def test_seed_000_bearing_306() -> None:
+def test_kuzmenko2010_bearing_306() -> None:
     # Kuzmenko 2010, Table 2 "Данные по ГОСТ 8338-75":
     # 306: d 30, D 72, Dw 12.3, z 8, C 2200 kgf, C0 1510 kgf; groove radius R2 = 1.03 R1
     # (section 3.4: R1 = 6.15, R2 = 6.33 mm) -> f = 0.515.
@@ -175,7 +178,7 @@ def test_seed_000_bearing_306() -> None:
     assert "Kuzmenko 2010 Table 2" in b.source
 
 
-def test_seed_002_bearing_208() -> None:
+def test_kuzmenko_sabadash2014_bearing_208() -> None:
     # Kuzmenko & Sabadash 2014, section 2.1 item 2: bearing 208 with d 40, D 80,
     # B 18 mm, C 2500 kgf, C_k 1810 kgf, ball diameter 12.7 mm, z 9.
     b = lookup("208")
@@ -352,3 +355,11 @@ def test_a_lone_makers_set_is_the_rows_set() -> None:
     assert sorted(n for n in lone if find(n).only_maker) == [
         "6405", "6407", "6408", "6409", "6410", "6411", "6412", "6413", "6414", "6415", "6416"
     ]  # fmt: skip
+
+
+def test_the_dynamic_rating_is_always_in_newtons():
+    listed = json.loads(invoke("catalog", "--bore", "25", "--format", "json").output)
+    row = next(r for r in listed["rows"] if r["designation"] == "6205")
+    shown = json.loads(invoke("catalog", "show", "6205", "--format", "json").output)
+    assert listed["units"]["C"] == "N" and row["C"] == 14000.0
+    assert json.dumps(shown).count("14000.0") >= 1

@@ -8,7 +8,8 @@ import mpmath as mp
 import numpy as np
 import pytest
 
-from bearingload.studies import compliance as co
+from bearingload.papers import compliance as co
+from bearingload.studies import compensation as comp
 
 mp.mp.dps = 30
 
@@ -35,12 +36,12 @@ def ref_difference(z, load, stiffness, clearance):
     )
 
 
-def test_issue_example_has_six_roots_three_under_preload():
-    roots = co.compensating_clearances(9, 1000.0, 1.0e5, lower=-0.03, upper=0.5)
+def test_nine_balls_have_six_compensating_clearances_three_under_preload():
+    roots = comp.compensating_clearances(9, 1000.0, 1.0e5, lower=-0.03, upper=0.5)
     assert len(roots) == 6
     assert sum(g < 0 for g in roots) == 3
     assert roots == sorted(roots)
-    assert co.compensating_clearances(9, 1000.0, 1.0e5) == pytest.approx(roots, rel=1e-9)
+    assert comp.compensating_clearances(9, 1000.0, 1.0e5) == pytest.approx(roots, rel=1e-9)
 
 
 @pytest.mark.parametrize(
@@ -48,7 +49,7 @@ def test_issue_example_has_six_roots_three_under_preload():
 )
 def test_roots_solved_back_against_reference(z, load, stiffness):
     s = (load / stiffness) ** (2 / 3)
-    roots = co.compensating_clearances(z, load, stiffness)
+    roots = comp.compensating_clearances(z, load, stiffness)
     assert roots
     for g in roots:
         # the exact positions coincide at the root and the difference changes sign across it
@@ -64,7 +65,7 @@ def test_close_pair_of_roots_z33():
     the difference at fixed steps (1/400 in asinh(e/s), 0.04 µm here) stepped over: both are
     listed and each is the mpmath root of the exact x(0) - x(180/z) in its own bracket."""
     z, load, stiffness = 33, 3.28, 4490.0
-    roots = co.compensating_clearances(z, load, stiffness)
+    roots = comp.compensating_clearances(z, load, stiffness)
     close = [g for g in roots if -1.96e-3 < g < -1.93e-3]
     assert [round(g * 1e3, 5) for g in close] == [-1.95644, -1.93865]
     half = 5e-6  # [mm] each bracket holds one root: the two are 1.78e-5 mm apart
@@ -96,10 +97,10 @@ def test_balance_difference_and_its_sign_under_full_preload(z, m):
     """h(t) against mpmath, and below t = -1 (every ball loaded) the sign the binomial series
     predicts (0: the difference vanishes identically for an integer m < z - 1)."""
     for t in (-0.9, -0.3, 0.2, 0.8):
-        assert co.balance_difference(t, z, m) == pytest.approx(
+        assert comp.balance_difference(t, z, m) == pytest.approx(
             float(ref_balance(z, m, t)), abs=1e-14
         )
-    sign = co._preload_sign(z, m)
+    sign = comp._preload_sign(z, m)
     for t in (-1.0, -1.5, -4.0, -30.0):
         ref = ref_balance(z, m, t)
         assert (abs(ref) < mp.mpf(10) ** -25) if sign == 0 else (mp.sign(ref) == sign)
@@ -109,7 +110,7 @@ def test_root_condition_is_the_balance_difference():
     """At a root t of h the exact ring displacement is the same at both cage angles, with the
     clearance G_r = 2 t (F/(K g_0(t)))^(1/m) the function returns."""
     z, load, stiffness = 12, 250.0, 3.0e5
-    for g in co.compensating_clearances(z, load, stiffness):
+    for g in comp.compensating_clearances(z, load, stiffness):
         x_ball = ref_x(z, load, stiffness, g, "ball")
         t = mp.mpf(g) / 2 / x_ball
         assert abs(ref_balance(z, 1.5, t)) < 1e-12
@@ -120,13 +121,13 @@ def test_root_condition_is_the_balance_difference():
 def test_every_sign_change_of_a_fine_scan_is_bracketed(z, m):
     """Each sign change of h on a 100001-point scan of -1 <= t <= cos(π/z) (points within the
     rounding margin carry no sign) lies in one bracket, and each bracket holds one."""
-    brackets = co._sign_brackets(z, m)
+    brackets = comp._sign_brackets(z, m)
     t = np.linspace(-1.0, math.cos(math.pi / z), 100_001)
-    signs = co._signs(t, z, m)
+    signs = comp._signs(t, z, m)
     keep = signs != 0
     ts, ss = t[keep], signs[keep]
     changes = [(ts[i], ts[i + 1]) for i in np.nonzero(ss[:-1] != ss[1:])[0]]
-    first = co._preload_sign(z, m)
+    first = comp._preload_sign(z, m)
     if first and ss[0] != first:
         changes.insert(0, (-1.0, ts[0]))
     assert len(changes) == len(brackets)
@@ -135,16 +136,16 @@ def test_every_sign_change_of_a_fine_scan_is_bracketed(z, m):
 
 
 def test_roots_in_a_range():
-    every = co.compensating_clearances(9, 1000.0, 1.0e5)
-    inside = co.compensating_clearances(9, 1000.0, 1.0e5, lower=0.0, upper=0.1)
+    every = comp.compensating_clearances(9, 1000.0, 1.0e5)
+    inside = comp.compensating_clearances(9, 1000.0, 1.0e5, lower=0.0, upper=0.1)
     assert inside == [g for g in every if 0.0 <= g <= 0.1]
     assert len(inside) == 2
 
 
 def test_no_root_with_three_balls_and_roller_exponent():
-    assert co.compensating_clearances(3, 1000.0, 1.0e5) == []
-    roots = co.compensating_clearances(9, 1000.0, 1.0e5, exponent=10 / 9)
-    assert all(abs(co.position_difference(9, 1000.0, 1.0e5, g, 10 / 9)) < 1e-12 for g in roots)
+    assert comp.compensating_clearances(3, 1000.0, 1.0e5) == []
+    roots = comp.compensating_clearances(9, 1000.0, 1.0e5, exponent=10 / 9)
+    assert all(abs(comp.position_difference(9, 1000.0, 1.0e5, g, 10 / 9)) < 1e-12 for g in roots)
 
 
 def test_paper_groups_against_reference():

@@ -1,6 +1,6 @@
 """Conformance: every registered model on every printed value it applies to, and the errata.
 
-The printed values are the shipped data files (bearingload/studies/data/published/*.csv). A row
+The printed values are the shipped data files (bearingload/papers/data/published/*.csv). A row
 applies to a registered method when its ``model`` column names the method and its ``quantity`` is
 one the methods return. The printed numbers that differ from the computation beyond their printed
 rounding are listed here by (paper, table, cell): a change in either direction (a new
@@ -12,7 +12,7 @@ from __future__ import annotations
 import pytest
 
 from bearingload.models.registry import METHODS, compute
-from bearingload.studies.errata import (
+from bearingload.papers.errata import (
     DERIVATIONS,
     DIFFERS,
     METHOD_QUANTITIES,
@@ -21,7 +21,7 @@ from bearingload.studies.errata import (
     kuzmenko2010_rows,
     kuzmenko_sabadash2014_rows,
 )
-from bearingload.studies.published import FILES, all_published
+from bearingload.papers.published import FILES, all_published
 from bearingload.units import KGF
 
 K10, K14 = "Kuzmenko 2010", "Kuzmenko & Sabadash 2014"
@@ -131,7 +131,7 @@ def test_errata_rows_are_exactly_the_known_disagreements():
 def test_causes_only_where_a_cell_differs(paper):
     """The data files give a cause only for a cell that differs (for some the cause is unknown)."""
     by_key = {(r["source"], r["table"], r["cell"]): r for r in errata_rows()}
-    from bearingload.studies.published import load
+    from bearingload.papers.published import load
 
     for row in load(paper):
         if row.cause:

@@ -445,3 +445,15 @@ def test_continuum_load_inverts_solver():
     f = continuum.continuum_load(9, r.x, 3e5, 0.02)
     assert np.allclose(f, [1.0, 1e3, 1e5], rtol=1e-9)
     assert continuum.continuum_load(9, 0.005, 3e5, 0.02) == 0.0  # x < e: no contact
+
+
+def test_continuum_refuses_what_the_exact_model_refuses():
+    """K = 1e200 N/mm^1.5: one Error line naming the load and stiffness (it ended in an internal
+    error with numpy warnings)."""
+    import pytest
+
+    from bearingload.errors import InputError
+    from bearingload.models.continuum import solve_continuum
+
+    with pytest.raises(InputError, match="one-ball approach"):
+        solve_continuum(8, 1000.0, 1e200, clearance=-0.05)

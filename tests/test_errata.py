@@ -12,10 +12,10 @@ from pathlib import Path
 
 import pytest
 
+from bearingload.papers import errata
+from bearingload.papers.errata import AGREES, DIFFERS, ROW_SOURCES, errata_rows
 from bearingload.reports import committed
 from bearingload.reports.errata import README_END, README_START, readme_block
-from bearingload.studies import errata
-from bearingload.studies.errata import AGREES, DIFFERS, ROW_SOURCES, errata_rows
 
 from .cli_helpers import invoke, run_entry
 
@@ -65,7 +65,7 @@ def test_row_sources_is_the_one_list(monkeypatch):
     monkeypatch.setattr(
         errata,
         "ROW_SOURCES",
-        [*ROW_SOURCES, ("bearingload.studies.errata", "_extra_rows_for_test")],
+        [*ROW_SOURCES, ("bearingload.papers.errata", "_extra_rows_for_test")],
     )
     rows = errata.errata_rows()
     assert len(rows) == 917
@@ -153,18 +153,18 @@ def test_readme_block_is_generated_from_the_rows():
 def test_errata_command_is_lazy():
     code = (
         "import sys; from bearingload.cli import main; "
-        "assert 'bearingload.studies.errata' not in sys.modules; "
-        "import bearingload.studies.published; assert 'numpy' not in sys.modules"
+        "assert 'bearingload.papers.errata' not in sys.modules; "
+        "import bearingload.papers.published; assert 'numpy' not in sys.modules"
     )
     assert subprocess.run([sys.executable, "-c", code], timeout=60).returncode == 0
 
 
 def test_relative_errors_are_percent_in_human_formats_and_fractions_in_machine_ones():
     """errata printed its relative difference as a fraction [-] and the accuracy report its
-    errors as fractions, while solve and table k --method all print % (the review's finding)."""
+    errors as fractions, while solve and table k --method all print %."""
+    from bearingload.reports.accuracy import accuracy_table
     from bearingload.reports.quantities import QUANTITIES
     from bearingload.reports.render import render
-    from bearingload.studies.accuracy import accuracy_table
 
     relative = [  # errors and differences, not ratios such as relative_life (L10r / L10r at 0)
         q for q in QUANTITIES.values() if "error" in q.key or q.key == "relative_difference"
@@ -183,3 +183,10 @@ def test_relative_errors_are_percent_in_human_formats_and_fractions_in_machine_o
     cells = [c.strip() for c in text.splitlines()[4].split("|")]
     assert cells[4:6] == ["0.12", "50"], cells
     assert render([accuracy_table([row])], "csv").splitlines()[1] == "m,s,1,0.0012,0.5,3"
+
+
+def test_errata_only_differing_title_says_the_filter():
+    """errata --only-differing (without --summary) kept the title 'every printed number the
+    project recomputes' over a table of the differing ones only (json 'title' too)."""
+    r = invoke("errata", "--only-differing", "--format", "json")
+    assert '"title": "Published vs computed: the printed numbers that differ' in r.stdout

@@ -15,8 +15,9 @@ import numpy as np
 import pytest
 
 from bearingload.errors import InputError
-from bearingload.studies import kurochkin as ku
-from bearingload.studies import kurochkin_errata as ke
+from bearingload.papers import kurochkin as ku
+from bearingload.papers import kurochkin_errata as ke
+from bearingload.reports.papers import kurochkin1973_example1_table
 
 mp.mp.dps = 30
 
@@ -514,7 +515,7 @@ def test_cli_kurochkin_formats_and_errors():
 
 
 def test_example1_moment_table_is_odd_about_half_pitch():
-    table = ke.example1_moment_table(steps=9)
+    table = kurochkin1973_example1_table(steps=9)
     assert len(table.columns) == 8 and len(table.rows) == 9
     for first, last in zip(table.rows, table.rows[::-1], strict=True):
         for key in (c.key for c in table.columns[1:]):

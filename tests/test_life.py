@@ -20,7 +20,7 @@ def test_allowable_load_of_the_paper():
 
 
 def test_allowable_load_for_360_million_revolutions():
-    # the second check: 2200 / 360^(1/3) = 309.3 kgf
+    # 2200 / 360^(1/3) = 309.3 kgf
     assert float(allowable_load(2200.0, 360.0)) == pytest.approx(309.26, abs=0.005)
 
 

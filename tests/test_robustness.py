@@ -1,4 +1,4 @@
-"""Edge cases found in review: output files, extreme but finite inputs, huge angles, units."""
+"""Edge cases: output files, extreme but finite inputs, huge angles, units."""
 
 from __future__ import annotations
 
@@ -179,7 +179,7 @@ def test_a_clearance_of_half_a_ball_is_refused():
 
 
 # ---------------------------------------------------------------------------------------------
-# Defects an adversarial review found in the equilibrium engine, each against an independent
+# Defects once found in the equilibrium engine, each against an independent
 # mpmath solution written here (no code shared with bearingload.models).
 # ---------------------------------------------------------------------------------------------
 def _mp_ring(z, phi1_deg):
@@ -383,7 +383,7 @@ def test_defect6_a_case_does_not_depend_on_its_batch():
         for j, i in enumerate(perm):
             for name in names:
                 assert getattr(batch, name)[j] == getattr(alone[i], name)[0], (i, name)
-    # the issue's reproduction: 299 balls carry (mpmath: the next pair misses by 1.7e-18)
+    # 299 balls carry (mpmath: the next pair misses by 1.7e-18)
     assert int(alone[0].loaded_balls[0]) == 299
     assert float(alone[0].stiffness_radial[0]) == pytest.approx(277.96473747, rel=1e-9)
 

@@ -6,6 +6,7 @@ import math
 
 import mpmath
 import pytest
+from click.testing import CliRunner
 
 from bearingload.bearings.designation import parse
 from bearingload.bearings.resolve import resolve_bearing
@@ -18,6 +19,7 @@ from bearingload.bearings.rollers import (
     roller_count,
     total_length,
 )
+from bearingload.cli import main
 from bearingload.contact.hertz import roller_stiffness
 from bearingload.errors import InputError
 from bearingload.models.equilibrium import solve
@@ -218,3 +220,52 @@ def test_roller_machine_keys_stay_the_same() -> None:
     assert {"q_max", "loaded_balls", "ball_loads"} <= set(doc["cases"][0])
     csv_head = invoke("sweep", "NU206", "-F", "5kN", "--steps", "3", "--format", "csv").output
     assert "q_max_ball" in csv_head.splitlines()[0] and "roller" not in csv_head
+
+
+def _run(*args: str, stdin: str | None = None):
+    return CliRunner().invoke(main, list(args), input=stdin)
+
+
+def _batch(text: str, *args: str):
+    return _run("batch", "-", "--format", "csv", *args, stdin=text)
+
+
+def test_a_roller_bearings_stiffness_is_read_in_its_own_unit():
+    """-K of a cylindrical roller bearing is N/mm^(10/9) (its m) unless --exponent says
+    otherwise: its unit is accepted, and N/mm^1.5 is refused instead of taken as N/mm^(10/9);
+    batch reads a roller row's stiffness the same way."""
+    from click.testing import CliRunner
+
+    from bearingload.cli import main
+
+    def run(*args):
+        return CliRunner().invoke(main, list(args))
+
+    given = run("solve", "NU206", "-F", "5kN", "-K", "3e5N/mm^(10/9)", "--format", "csv")
+    bare = run("solve", "NU206", "-F", "5kN", "-K", "3e5", "--format", "csv")
+    assert given.exit_code == 0 and given.stdout == bare.stdout
+    wrong = run("solve", "NU206", "-F", "5kN", "-K", "3e5N/mm^1.5")
+    assert wrong.exit_code == 2 and "exponent is 1.11111" in wrong.stderr
+    ball = run("solve", "306", "-F", "5kN", "-K", "3e5N/mm^1.5", "--format", "csv")
+    assert ball.exit_code == 0
+    text = "bearing,load,stiffness\nNU206,5kN,3e5N/mm^(10/9)\n306,5kN,3e5N/mm^1.5\n"
+    out = CliRunner().invoke(main, ["batch", "-", "--format", "csv"], input=text)
+    assert out.exit_code == 0, out.stderr
+    rows = out.stdout.splitlines()[1:]
+    assert rows[0].split(",")[5] == "300000.0" and rows[1].split(",")[5] == "300000.0"
+
+
+def test_an_explicit_exponent_of_1_5_is_refused_for_a_roller_bearing():
+    """--exponent 1.5 (the option's default written out) with a roller bearing read -K in
+    N/mm^1.5 and then solved the rollers with m = 10/9, taking 3e5 N/mm^1.5 as 3e5 N/mm^(10/9):
+    the explicit exponent was ignored. solve, sweep and a batch row's exponent cell now refuse it
+    as they refuse --exponent 10/9 for a ball bearing."""
+    for command in ("solve", "sweep"):
+        r = _run(command, "NU204", "-F", "5kN", "-K", "3e5N/mm^1.5", "--exponent", "1.5")
+        assert r.exit_code == 2, r.output
+        assert "Error: Invalid value for '--exponent': a roller bearing" in r.output
+    assert _run("solve", "306", "-F", "5kN", "--exponent", "1.5").exit_code == 0
+    r = _batch("bearing,load,exponent\nNU204,5kN,1.5\n306,5kN,1.5\nNU204,5kN,\n")
+    assert r.exit_code == 1, r.output
+    assert r.stderr.startswith("Warning: row 2: exponent: a roller bearing (line contact)")
+    assert [line.split(",")[0] for line in r.stdout.splitlines()[1:]] == ["3", "4"]

@@ -14,8 +14,8 @@ import numpy as np
 import pytest
 
 from bearingload.models.equilibrium import solve
-from bearingload.studies import stability
-from bearingload.studies import stability_combined as sc
+from bearingload.quality import stability
+from bearingload.quality import stability_combined as sc
 
 from .cli_helpers import invoke, run_entry
 

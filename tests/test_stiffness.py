@@ -10,7 +10,7 @@ import pytest
 
 from bearingload.contact.hertz import roller_stiffness
 from bearingload.errors import InputError
-from bearingload.studies import stiffness as st
+from bearingload.papers import crane_stiffness as st
 
 mp.mp.dps = 30
 
@@ -55,9 +55,9 @@ def test_tangent_against_finite_difference_and_vectorised():
     assert r.tangent.shape == (3,)
 
 
-def test_seed003_procedure_by_hand():
+def test_crane2009_procedure_by_hand():
     z, load, k, m = 8, 2942.0, 46091.0, 1.5
-    res = st.seed003_stiffness(z, load, k, m, rows=2, contact_angle=20.0)
+    res = st.crane2009_stiffness(z, load, k, m, rows=2, contact_angle=20.0)
     a = math.radians(20.0)
     q0 = 5 * load / (2 * z * math.cos(a))
     g = 2 * math.pi / z
@@ -87,8 +87,8 @@ def test_comparison_rows_and_ratios():
     assert all(r["c_paper"] > r["tangent"] for r in rollers)
 
 
-def test_stiffness_rows():
-    rows = st.stiffness_rows()
+def test_crane2009_rows():
+    rows = st.crane2009_rows()
     five = [r for r in rows if "factor 5" in r["cell"]]
     assert all(r["verdict"] == "differs" for r in five)
     assert five[2]["computed"] == pytest.approx(4.37, abs=0.005)  # 1/J_r(0.5), many balls

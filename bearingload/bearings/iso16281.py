@@ -38,7 +38,7 @@ from numpy.typing import ArrayLike
 
 from bearingload import validate
 from bearingload.errors import InputError
-from bearingload.validate import scalar_out
+from bearingload.numerics import scalar_out
 
 #: Which ring rotates relative to the load: the values ``rotating`` accepts.
 ROTATING = ("inner", "outer")

@@ -28,7 +28,8 @@ from numpy.typing import ArrayLike
 
 from bearingload.constants import BALL_LIFE_EXPONENT, ROLLER_LIFE_EXPONENT  # noqa: E402,F401
 from bearingload.errors import InputError
-from bearingload.validate import finite_positive, scalar_out
+from bearingload.numerics import scalar_out
+from bearingload.validate import finite_positive
 
 
 def rating_life(C: ArrayLike, P: ArrayLike, exponent: ArrayLike = BALL_LIFE_EXPONENT) -> Any:

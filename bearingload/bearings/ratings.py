@@ -40,7 +40,7 @@ import numpy as np
 from numpy.typing import ArrayLike
 
 from bearingload.errors import InputError
-from bearingload.validate import scalar_out
+from bearingload.numerics import scalar_out
 
 #: ISO 281:2007 Table 1: b_m of radial ball bearings (deep groove, angular contact). [-]
 B_M = 1.3

@@ -32,7 +32,6 @@ Rules
 
 from __future__ import annotations
 
-import dataclasses
 import math
 from dataclasses import dataclass
 from typing import Any
@@ -45,151 +44,22 @@ from bearingload.bearings.catalog import (
     lookup,
 )
 from bearingload.bearings.clearance import (
-    _NEEDS_BORE,
     PICKS,
     RANGE,
     ClearanceSpec,
-    clearance_range,
     parse_clearance,
     picks_of,
 )
-from bearingload.constants import STEEL_MODULUS, STEEL_POISSON
+from bearingload.bearings.resolved import (
+    DEFAULT_MODULUS,
+    DEFAULT_POISSON,
+    Provenance,
+    ResolvedBearing,
+    clearance_row_source,
+    resolve_clearance,
+)
 from bearingload.errors import InputError
 from bearingload.validate import finite_positive
-
-#: Young's modulus and Poisson's ratio used when none is given (bearingload.constants). [MPa], [-]
-DEFAULT_MODULUS = STEEL_MODULUS
-DEFAULT_POISSON = STEEL_POISSON
-
-
-@dataclass(frozen=True)
-class Provenance:
-    """One input value as used, with its unit and where it came from."""
-
-    key: str
-    label: str
-    value: float | int | str | None
-    unit: str
-    source: str
-
-
-@dataclass(frozen=True)
-class ResolvedBearing:
-    """Everything the load-distribution engine needs for one bearing, and where it came from.
-
-    Attributes
-    ----------
-    designation : str or None
-        The designation as typed; None for a hand-given ball set.
-    geometry : BearingGeometry or None
-        The catalogue row with the overrides applied.
-    balls : int
-        Number of balls z.
-    ball_diameter, pitch_diameter : float or None
-        D_w and d_m; None when only the stiffness was given. [mm]
-    f_i, f_o : float or None
-        Groove conformities r / D_w. [-]
-    modulus : float
-        Young's modulus E of balls and rings. [MPa]
-    poisson : float
-        Poisson's ratio nu. [-]
-    stiffness : float
-        Ball stiffness K, both contacts in series, Q = K delta^1.5. [N/mm^1.5]
-    stiffness_inner, stiffness_outer : float or None
-        Hertz stiffness of the inner and outer contact (None without geometry). [N/mm^1.5]
-    stiffness_given : bool
-        True when K was given rather than computed.
-    clearance : float
-        Radial internal clearance G_r, total play. [mm]
-    clearance_class : str or None
-        ISO class the clearance was taken from (``"C3"``), None for a length.
-    clearance_range : tuple of float or None
-        (min, max) of that class at this bore. [mm]
-    clearance_pick : str or None
-        ``min``, ``mean`` or ``max`` for a class.
-    C, C0 : float or None
-        Basic dynamic and static load ratings. [N]
-    kind : str
-        ``"ball"`` or ``"roller"`` (cylindrical roller bearing).
-    exponent : float
-        Load-deflection exponent m of Q = K delta^m: 1.5 balls, 10/9 rollers. [-]
-    roller_length : float or None
-        Effective roller length L_we of a roller bearing. [mm]
-    provenance : tuple of Provenance
-        Every value above with its source, in display order.
-    sources : tuple of str
-        The long source texts the provenance refers to as, [2] ...
-    """
-
-    designation: str | None
-    geometry: BearingGeometry | None
-    balls: int
-    ball_diameter: float | None
-    pitch_diameter: float | None
-    f_i: float | None
-    f_o: float | None
-    modulus: float
-    poisson: float
-    stiffness: float
-    stiffness_inner: float | None
-    stiffness_outer: float | None
-    stiffness_given: bool
-    clearance: float
-    clearance_class: str | None
-    clearance_range: tuple[float, float] | None
-    clearance_pick: str | None
-    C: float | None
-    C0: float | None
-    provenance: tuple[Provenance, ...]
-    sources: tuple[str, ...]
-    kind: str = "ball"
-    exponent: float = 1.5
-    roller_length: float | None = None
-
-    @property
-    def has_geometry(self) -> bool:
-        """True when D_w, d_m, f_i, f_o are known (Hertz pressures can be computed)."""
-        return None not in (self.ball_diameter, self.pitch_diameter, self.f_i, self.f_o)
-
-    def with_clearance(self, pick: str) -> ResolvedBearing:
-        """The same bearing at the ``min``, ``mean`` or ``max`` of its clearance class.
-
-        Raises
-        ------
-        InputError
-            (parameter ``pick``) when the clearance was given as a length, or the pick is unknown.
-        """
-        if pick not in PICKS:
-            raise InputError("pick", f"unknown pick {pick!r}; allowed: {', '.join(PICKS)}")
-        if self.clearance_range is None:
-            raise InputError(
-                "pick",
-                f"{pick!r} needs a clearance class (C2 CN C3 C4 C5), not a clearance length",
-            )
-        low, high = self.clearance_range
-        value = {"min": low, "mean": 0.5 * (low + high), "max": high}[pick]
-        prov = tuple(
-            dataclasses.replace(p, value=value * 1e3, source=_class_source(self, pick))
-            if p.key == "clearance"
-            else p
-            for p in self.provenance
-        )
-        return dataclasses.replace(self, clearance=value, clearance_pick=pick, provenance=prov)
-
-    def with_dynamic_rating(self, rating: float) -> ResolvedBearing:
-        """The same bearing with its basic dynamic load rating C replaced by a given one. [N]"""
-        given = Provenance("C", "dynamic load rating C", rating, "N", "given")
-        prov = tuple(given if p.key == "C" else p for p in self.provenance)
-        if given not in prov:
-            prov += (given,)
-        return dataclasses.replace(self, C=rating, provenance=prov)
-
-
-def _class_source(b: ResolvedBearing, pick: str) -> str:
-    """The clearance source text of ``b`` with its pick replaced."""
-    old = next(p.source for p in b.provenance if p.key == "clearance")
-    head, _, _ = old.rpartition(", ")
-    return f"{head}, {pick} (clearance table)"
 
 
 def resolve_bearing(
@@ -269,14 +139,14 @@ def resolve_bearing(
     k = float(stiffness) if stiffness is not None else float(k_hertz or 0.0)
     k_src = "given" if stiffness is not None else "Hertz, exact: (K_i^-2/3 + K_o^-2/3)^-3/2"
     prov.append(Provenance("stiffness", "ball stiffness K (series)", k, "N/mm^1.5", k_src))
-    g_r, cls, rng, pick, g_src = _resolve_clearance(spec, g.geom, g.bore, clearance_pick)
+    g_r, cls, rng, pick, g_src = resolve_clearance(spec, g.geom, g.bore, clearance_pick)
     if g.dw is not None and abs(g_r) >= g.dw / 2:
         raise InputError(
             "clearance",
             f"G_r = {g_r:g} mm is at least half the ball diameter ({g.dw:g} mm): no bearing has "
             f"such a play or preload; a bare number is mm (did you mean {g_r:g}um?)",
         )
-    sources = g.sources + ([_clearance_row_source(g.bore)] if rng is not None else [])
+    sources = g.sources + ([clearance_row_source(g.bore)] if rng is not None else [])
     prov.append(Provenance("clearance", "radial clearance G_r (total)", g_r * 1e3, "µm", g_src))
     geom = g.geom
     c = geom.C if geom is not None else None
@@ -513,50 +383,6 @@ def _f_source(geom: BearingGeometry | None, field: str) -> str:
     if value == default:
         return "default (ISO/TS 16281 convention)"
     return "catalogue"
-
-
-def _resolve_clearance(
-    spec: ClearanceSpec | None,
-    geom: Any,
-    bore: float | None,
-    pick: str,
-    kind: str = "ball",
-) -> tuple[float, str | None, tuple[float, float] | None, str | None, str]:
-    """G_r [mm], class, class range [mm], pick and a source text; ``geom``: a catalogue row
-    with its ``parsed`` designation (ball or roller), or None; ``kind``: whose table."""
-    if spec is not None and spec.length is not None:
-        return spec.length, None, None, None, "given"
-    if spec is None:
-        if geom is None:
-            return 0.0, None, None, None, "default: zero clearance (no catalogue row)"
-        cls = geom.parsed.clearance_class or "CN"
-        how = (
-            f"class {cls} marked in the designation"
-            if geom.parsed.clearance_class
-            else "no class marked in the designation: CN (normal)"
-        )
-    else:
-        cls = spec.cls or "CN"
-        how = f"class {cls}"
-    if bore is None:
-        raise InputError("clearance", _NEEDS_BORE.format(spec.text if spec else cls))
-    low, high = clearance_range(bore, cls, kind)
-    value = {"min": low, "mean": 0.5 * (low + high), "max": high}[pick]
-    source = (
-        f"{how}; ISO 5753-1{'' if kind == 'ball' else ' (cylindrical roller bearings)'} {cls} "
-        f"{low * 1e3:g}-{high * 1e3:g} µm at d = {bore:g} mm, {pick} "
-        "(clearance table)"
-    )
-    return value, cls, (low, high), pick, source
-
-
-def _clearance_row_source(bore: float | None, kind: str = "ball") -> str:
-    from bearingload.bearings.clearance import table
-
-    for row in table(kind):
-        if bore is not None and row.bore_over < bore <= row.bore_incl:
-            return f"clearance table (bore over {row.bore_over:g} incl {row.bore_incl:g} mm): {row.source}"
-    return "clearance table"  # pragma: no cover - clearance_range raised before
 
 
 def _roller(

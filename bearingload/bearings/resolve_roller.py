@@ -17,13 +17,13 @@ by default the class the designation marks, else CN.
 from __future__ import annotations
 
 from bearingload.bearings.clearance import ClearanceSpec, parse_clearance
-from bearingload.bearings.resolve import (
+from bearingload.bearings.resolved import (
     DEFAULT_MODULUS,
     DEFAULT_POISSON,
     Provenance,
     ResolvedBearing,
-    _clearance_row_source,
-    _resolve_clearance,
+    clearance_row_source,
+    resolve_clearance,
 )
 from bearingload.bearings.rollers import RollerGeometry
 from bearingload.errors import InputError
@@ -91,7 +91,7 @@ def resolve_roller(
         roller_length=roller_length,
     )
     spec = clearance if isinstance(clearance, ClearanceSpec) else parse_clearance(clearance)
-    g_r, cls, rng, pick, g_src = _resolve_clearance(spec, row, row.d, clearance_pick, "roller")
+    g_r, cls, rng, pick, g_src = resolve_clearance(spec, row, row.d, clearance_pick, "roller")
     if abs(g_r) >= row.roller_diameter / 2:
         raise InputError(
             "clearance",
@@ -102,7 +102,7 @@ def resolve_roller(
     prov = _provenance(row, k_contact, k, stiffness is not None, g_src, g_r)
     sources = [f"catalogue row {row.designation}: {row.source}", f"catalogue notes: {row.notes}"]
     if rng is not None:
-        sources.append(_clearance_row_source(row.d, "roller"))
+        sources.append(clearance_row_source(row.d, "roller"))
     return ResolvedBearing(
         designation=designation,
         geometry=None,

@@ -44,7 +44,7 @@ from bearingload.bearings._data import read_rows
 from bearingload.bearings.designation import Designation, parse
 from bearingload.constants import STEEL_MODULUS, STEEL_POISSON
 from bearingload.errors import InputError
-from bearingload.validate import scalar_out
+from bearingload.numerics import scalar_out
 
 #: L_we/D_w of the derived roller counts: mean of the published NU204, NU205, NU206. [-]
 LENGTH_RATIO = 1.017

@@ -57,8 +57,9 @@ def accuracy(
         raise click.UsageError("Invalid value for '--plot': the diagram needs --timing")
     if plot_file == "":
         raise click.UsageError("Invalid value for '--plot': the file name is empty")
+    from bearingload.quality.accuracy import measure
+    from bearingload.reports.accuracy import accuracy_table
     from bearingload.reports.render import render
-    from bearingload.studies.accuracy import accuracy_table, measure
 
     rows = measure(timing=timing, repeats=repeats)
     text = render([accuracy_table(rows)], fmt)

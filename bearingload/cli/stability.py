@@ -53,10 +53,10 @@ def stability(size: str, families: tuple[str, ...], fmt: str, output: str | None
       bearingload stability --family combined_misalignment --family combined_preload
       bearingload stability --size full --family combined_ball_count --format json -o z.json
     """
+    from bearingload.quality import stability as radial
+    from bearingload.quality import stability_combined as combined
     from bearingload.reports.render import render
     from bearingload.reports.stability import stability_table
-    from bearingload.studies import stability as radial
-    from bearingload.studies import stability_combined as combined
 
     names = list(families)
     radial.check_selection(size, names, radial.family_names() + combined.family_names())

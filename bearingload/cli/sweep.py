@@ -156,7 +156,7 @@ def _kurochkin(
         raise click.UsageError("--kurochkin-T needs --balls.")
     if case.exponent_or(1.5) != 1.5:
         raise click.UsageError("--kurochkin-T is for balls: --exponent must be 3/2.")
+    from bearingload.papers.kurochkin import kurochkin_sweep
     from bearingload.reports.kurochkin import kurochkin_report
-    from bearingload.studies.kurochkin import kurochkin_sweep
 
     emit(kurochkin_report(kurochkin_sweep(case.balls, t, steps), fmt), output)

@@ -4,9 +4,8 @@ Same equation as :mod:`bearingload.contact.hertz` (Johnson 1985, §4.2; Harris &
 ch. 6): the ellipticity ``kappa = e^t`` solves ``ln((E - pK)/(K - E)) + 2t = ln(B/A)`` with
 ``p = 1/kappa^2 = 1 - m``. Here for one contact:
 
-* K and E by the arithmetic-geometric mean (Abramowitz & Stegun 17.6), with ``K - E`` summed
-  from the positive terms ``2^(n-1) c_n^2`` (``c_(n+1) = c_n^2 / (4 a_(n+1))``), so that neither
-  the circle (``m -> 0``) nor a long ellipse (``m -> 1``) cancels;
+* K and E by the arithmetic-geometric mean (:func:`bearingload.numerics.elliptic_integrals`,
+  the one the vectorised path uses; Abramowitz & Stegun 17.6);
 * a start from Hamrock & Brewe's fit, then Newton with the analytic derivative (``dK/dm``,
   ``dE/dm`` in closed form) until the step is at rounding level.
 """
@@ -15,42 +14,14 @@ from __future__ import annotations
 
 import math
 
+from bearingload.numerics import elliptic_integrals
+
 EPS = 2.220446049250313e-16
-
-
-def elliptic(t: float) -> tuple[float, float, float, float, float, float]:
-    """(K, E, (E - pK)/m, (K - E)/m, m, p) at ``kappa = e^t`` (t > 0), by the AGM."""
-    p = math.exp(-2.0 * t)
-    m = -math.expm1(-2.0 * t)
-    sqrt = math.sqrt
-    a, b = 1.0, sqrt(p)
-    c2 = m  # c_0^2
-    rest = 0.0  # sum over n >= 1 of 2^(n-1) c_n^2
-    weight = 0.5
-    small = 1e-17 * m
-    for _ in range(60):
-        a_next = 0.5 * (a + b)
-        c = c2 / (4.0 * a_next)  # c_(n+1) = c_n^2 / (4 a_(n+1)), no cancellation
-        b = sqrt(a * b)
-        a = a_next
-        c2 = c * c
-        weight += weight
-        term = weight * c2
-        rest += term
-        if term <= small:  # then also a - b = 2 c_(n+1) is at rounding level
-            break
-    k_int = math.pi / (2.0 * a)
-    total = 0.5 + rest / m  # sum over n >= 0 of 2^(n-1) c_n^2 / m
-    d = k_int * total  # (K - E)/m
-    e_int = k_int - m * d
-    # (E - pK)/m: near the circle as K (1/2 - sum_{n>=1} 2^(n-1) c_n^2/m), else directly
-    n = k_int * (1.0 - total) if p > 0.5 else (e_int - p * k_int) / m
-    return k_int, e_int, n, d, m, p
 
 
 def _residual(t: float, target: float) -> tuple[float, float, tuple]:
     """Residual ln(n/d) + 2t - ln(B/A) and its derivative in t."""
-    ell = elliptic(t)
+    ell = elliptic_integrals(t)
     k_int, e_int, n, d, m, p = ell
     # dK/dm = n/(2p), dE/dm = -d/2, dm/dt = 2p; n m = E - pK, d m = K - E
     dk, de = n / (2.0 * p) * 2.0 * p, -d / 2.0 * 2.0 * p

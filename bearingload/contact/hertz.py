@@ -49,10 +49,11 @@ from typing import Any, NamedTuple
 import numpy as np
 from numpy.typing import ArrayLike
 
+from bearingload import validate
 from bearingload.constants import BALL_EXPONENT, ROLLER_EXPONENT, STEEL_MODULUS, STEEL_POISSON
 from bearingload.contact import _hertz_scalar
-from bearingload.errors import ConvergenceError, InputError
-from bearingload.validate import scalar_out
+from bearingload.errors import ConvergenceError
+from bearingload.numerics import elliptic_integrals, scalar_out
 
 #: Young's modulus and Poisson's ratio of bearing steel (bearingload.constants). [MPa], [-]
 E_STEEL = STEEL_MODULUS
@@ -131,29 +132,6 @@ class BallContacts(NamedTuple):
     outer: PointContact
 
 
-def _check(name: str, value: object, rule: str, ok: Any) -> None:
-    if not np.all(ok):
-        raise InputError(name, f"must be {rule}; got {value!r}")
-
-
-def _finite(name: str, value: ArrayLike) -> np.ndarray:
-    arr = np.asarray(value, dtype=float)
-    _check(name, value, "a finite number", np.isfinite(arr))
-    return arr
-
-
-def _positive(name: str, value: ArrayLike) -> np.ndarray:
-    arr = _finite(name, value)
-    _check(name, value, "positive", arr > 0)
-    return arr
-
-
-def _non_negative(name: str, value: ArrayLike) -> np.ndarray:
-    arr = _finite(name, value)
-    _check(name, value, "zero or positive", arr >= 0)
-    return arr
-
-
 def _plain(*values: object) -> list[float] | None:
     """The values as finite Python floats when every one is a plain real scalar, else None.
 
@@ -213,12 +191,12 @@ def reduced_modulus(
     >>> round(float(reduced_modulus(2.1e4, 0.3)), 1)  # Kuzmenko (2010), kgf/mm^2
     11538.5
     """
-    e1 = _positive("modulus", modulus)
-    n1 = _finite("poisson", poisson)
-    e2 = e1 if modulus2 is None else _positive("modulus2", modulus2)
-    n2 = n1 if poisson2 is None else _finite("poisson2", poisson2)
+    e1 = validate.positive_number("modulus", modulus)
+    n1 = validate.finite("poisson", poisson)
+    e2 = e1 if modulus2 is None else validate.positive_number("modulus2", modulus2)
+    n2 = n1 if poisson2 is None else validate.finite("poisson2", poisson2)
     for name, nu in (("poisson", n1), ("poisson2", n2)):
-        _check(name, nu, "between -1 and 0.5", (nu > -1.0) & (nu <= 0.5))
+        validate.require(name, nu, "between -1 and 0.5", (nu > -1.0) & (nu <= 0.5))
     return scalar_out(1.0 / ((1.0 - n1**2) / e1 + (1.0 - n2**2) / e2))
 
 
@@ -226,7 +204,7 @@ def _contact_modulus(
     modulus: ArrayLike, poisson: ArrayLike, e_star: ArrayLike | None
 ) -> np.ndarray:
     if e_star is not None:
-        return _positive("e_star", e_star)
+        return validate.positive_number("e_star", e_star)
     return np.asarray(reduced_modulus(modulus, poisson), dtype=float)
 
 
@@ -246,10 +224,10 @@ def curvature_difference(rho_x: ArrayLike, rho_y: ArrayLike) -> Any:
 
 
 def _curvature_pair(rho_x: ArrayLike, rho_y: ArrayLike) -> tuple[np.ndarray, np.ndarray]:
-    rx = _positive("rho_x", rho_x)
-    ry = _positive("rho_y", rho_y)
+    rx = validate.positive_number("rho_x", rho_x)
+    ry = validate.positive_number("rho_y", rho_y)
     small, large = np.broadcast_arrays(np.minimum(rx, ry), np.maximum(rx, ry))
-    _check(
+    validate.require(
         "rho_x/rho_y",
         (rho_x, rho_y),
         f"a ratio of at most {MAX_CURVATURE_RATIO:g} (beyond it use the line-contact model)",
@@ -258,48 +236,9 @@ def _curvature_pair(rho_x: ArrayLike, rho_y: ArrayLike) -> tuple[np.ndarray, np.
     return small, large
 
 
-def _elliptic(t: np.ndarray) -> tuple[np.ndarray, np.ndarray, np.ndarray, np.ndarray]:
-    """K, E, (E - pK)/m and (K - E)/m at ``kappa = e^t`` (t >= 0; m = 1 - p, p = 1/kappa^2).
-
-    The arithmetic-geometric mean, element by element as
-    :func:`bearingload.contact._hertz_scalar.elliptic` (each element stops at its own step, so
-    that it does not depend on the others): ``K = pi / (2 AGM(1, sqrt p))`` and
-    ``(K - E)/m = K (1/2 + sum 2^(n-1) c_n^2 / m)`` with ``c_(n+1) = c_n^2 / (4 a_(n+1))``, free
-    of cancellation both near the circle and for long ellipses. At t = 0 the limits
-    K = E = pi/2 and (K - E)/m = (E - pK)/m = pi/4.
-    """
-    t = np.asarray(t, dtype=float)
-    p = np.exp(-2.0 * t)
-    m = -np.expm1(-2.0 * t)
-    a, b, c2 = np.ones_like(t), np.sqrt(p), m.copy()
-    rest = np.zeros_like(t)
-    weight = 0.5
-    active = m > 0
-    for _ in range(60):
-        if not active.any():
-            break
-        a_next = 0.5 * (a + b)
-        c = c2 / (4.0 * a_next)
-        b = np.where(active, np.sqrt(a * b), b)
-        a = np.where(active, a_next, a)
-        c2 = np.where(active, c * c, c2)
-        weight += weight
-        term = weight * c2
-        rest = np.where(active, rest + term, rest)
-        active &= ~(term <= 1e-17 * m)  # then also a - b = 2 c_(n+1) is at rounding level
-    k_int = math.pi / (2.0 * a)
-    with np.errstate(divide="ignore", invalid="ignore"):
-        total = 0.5 + np.where(m > 0, rest / m, 0.0)
-    d = k_int * total
-    e_int = k_int - m * d
-    with np.errstate(divide="ignore", invalid="ignore"):
-        n = np.where(p > 0.5, k_int * (1.0 - total), (e_int - p * k_int) / m)
-    return k_int, e_int, n, d
-
-
 def _log_ratio_residual(t: np.ndarray, log_ratio: np.ndarray) -> np.ndarray:
     """ln(B/A as a function of ln kappa = t) - ln(B/A wanted); increasing in t."""
-    _, _, n, d = _elliptic(t)
+    _, _, n, d, _, _ = elliptic_integrals(t)
     return np.log(n) - np.log(d) + 2.0 * t - log_ratio
 
 
@@ -383,7 +322,7 @@ def hertz_coefficients(rho_x: ArrayLike, rho_y: ArrayLike) -> HertzCoefficients:
     if elliptic.any():
         t[elliptic] = _solve_log_kappa(log_ratio[elliptic])
     kappa = np.exp(t)
-    k_int, e_int, _, _ = _elliptic(t)
+    k_int, e_int, _, _, _, _ = elliptic_integrals(t)
     circle = ~elliptic
     k_int = np.where(circle, 0.5 * math.pi, k_int)
     e_int = np.where(circle, 0.5 * math.pi, e_int)
@@ -446,7 +385,7 @@ def point_contact(
     fast = _point_contact_scalar(rho_x, rho_y, load, modulus, poisson, e_star)
     if fast is not None:
         return fast
-    q = _non_negative("load", load)
+    q = validate.non_negative("load", load)
     es = _contact_modulus(modulus, poisson, e_star)
     coeffs = hertz_coefficients(rho_x, rho_y)
     sum_rho = np.asarray(rho_x, dtype=float) + np.asarray(rho_y, dtype=float)
@@ -532,8 +471,8 @@ def series_stiffness(k1: ArrayLike, k2: ArrayLike, exponent: float = POINT_EXPON
     >>> round(float(series_stiffness(1.0, 1.0)), 6)
     0.353553
     """
-    a = _positive("k1", k1)
-    b = _positive("k2", k2)
+    a = validate.positive_number("k1", k1)
+    b = validate.positive_number("k2", k2)
     return scalar_out((a ** (-1.0 / exponent) + b ** (-1.0 / exponent)) ** (-exponent))
 
 
@@ -558,13 +497,15 @@ def ball_raceway_curvatures(
     >>> round(float(c.inner_x + c.inner_y), 4)
     0.219
     """
-    dw = _positive("ball_diameter", ball_diameter)
-    dm = _positive("pitch_diameter", pitch_diameter)
-    _check("ball_diameter", ball_diameter, "smaller than the pitch diameter", dw < dm)
-    fi = _finite("f_i", f_i)
-    fo = _finite("f_o", f_o)
+    dw = validate.positive_number("ball_diameter", ball_diameter)
+    dm = validate.positive_number("pitch_diameter", pitch_diameter)
+    validate.require("ball_diameter", ball_diameter, "smaller than the pitch diameter", dw < dm)
+    fi = validate.finite("f_i", f_i)
+    fo = validate.finite("f_o", f_o)
     for name, f, raw in (("f_i", fi, f_i), ("f_o", fo, f_o)):
-        _check(name, raw, "greater than 0.5 (groove radius larger than the ball radius)", f > 0.5)
+        validate.require(
+            name, raw, "greater than 0.5 (groove radius larger than the ball radius)", f > 0.5
+        )
     # the forms below avoid the cancellations 2/D - 1/(f D) and 2/D -/+ 2/(d_m -/+ D)
     return RacewayCurvatures(
         inner_x=scalar_out(2.0 * dm / (dw * (dm - dw))),
@@ -685,8 +626,8 @@ def palmgren_line_deflection(
     >>> round(float(palmgren_line_deflection(1000.0, 10.0)), 7)
     0.0030502
     """
-    q = _non_negative("load", load)
-    length_ = _positive("length", length)
+    q = validate.non_negative("load", load)
+    length_ = validate.positive_number("length", length)
     return scalar_out(coefficient * q**0.9 / length_**0.8)
 
 
@@ -702,7 +643,7 @@ def palmgren_line_stiffness(
     >>> round(float(palmgren_line_stiffness(1.0)), -1)
     80590.0
     """
-    length_ = _positive("length", length)
+    length_ = validate.positive_number("length", length)
     return scalar_out(length_ ** (8.0 / 9.0) / coefficient ** (10.0 / 9.0))
 
 

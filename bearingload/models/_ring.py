@@ -45,6 +45,12 @@ PRELOAD_CENTRED = 1e-50
 SYMMETRY_SNAP_DEG = 4.0 * EPS * 360.0
 #: Cosines and sines below this are rounding of an exact zero. [-]
 SNAP = 1e-14
+#: Range of the one-ball approach (F_r/K)^(1/m) the solver accepts, and of the clearance in
+#: units of it: inside it every intermediate value is a normal double. [mm], [-]
+APPROACH_RANGE = (1e-100, 1e100)
+CLEARANCE_RATIO_MAX = 1e100
+#: Largest and smallest magnitude of a result (ball load [N], stiffness [N/mm]) accepted. [-]
+RESULT_RANGE = (1e-300, 1e300)
 
 
 def snapped_cos(phi: np.ndarray) -> np.ndarray:

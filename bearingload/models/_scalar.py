@@ -297,22 +297,21 @@ def _in_range(f: float, scale: float, e_hat: float, m: float, z: int) -> bool:
     if -1.0 <= e_hat <= 1e90 and 1e-90 <= scale <= 1e90 and 1e-250 <= f <= 1e250:
         if 1e-250 <= f / scale <= 1e250:  # inside every bound with room to spare
             return True
-    from bearingload.models import equilibrium as eq
-
-    lo, hi = eq.APPROACH_RANGE
-    if not (lo <= scale <= hi and abs(e_hat) <= eq.CLEARANCE_RATIO_MAX):
+    lo, hi = _ring.APPROACH_RANGE
+    if not (lo <= scale <= hi and abs(e_hat) <= _ring.CLEARANCE_RATIO_MAX):
         return False
     log_p = math.log10(max(1.0, -e_hat))
     log_q = math.log10(f) + m * log_p
     log_k = math.log10(f / scale) + math.log10(m * z) + (m - 1.0) * log_p
-    r_lo, r_hi = (math.log10(v) for v in eq.RESULT_RANGE)
+    r_lo, r_hi = (math.log10(v) for v in _ring.RESULT_RANGE)
     return (
         log_q <= r_hi and log_k <= r_hi and math.log10(f / scale) >= r_lo and math.log10(f) >= r_lo
     )
 
 
 def solve_one(*values: Any) -> Any:
-    """Solve one case (inputs as for ``solve``, then the tolerance); None: use the vector path."""
+    """Solve one case (inputs as for ``solve``, then the tolerance): the fields of its
+    ``OneCase`` (``equilibrium.solve`` builds it), or None: use the vector path."""
     plain = _plain(*values[:6])
     if plain is None:
         return None
@@ -348,7 +347,8 @@ def solve_one(*values: Any) -> Any:
 def _result(
     plain: tuple, phi1_deg: float, scale: float, ring: tuple, sol: tuple, der: tuple
 ) -> Any:
-    """The LoadDistribution of one case, as ``_assemble`` builds it (arrays built on access)."""
+    """The fields of one case's LoadDistribution, as ``_assemble`` builds them (the class builds
+    the arrays on access)."""
     z, f, k, g, _, m = plain
     xi, eta, its = sol
     q_hat, loaded, hxx, hxy, hyy = der
@@ -386,6 +386,4 @@ def _result(
         "offset": [xi * scale, eta * scale],
         "reference": [mu, h],
     }
-    from bearingload.models.equilibrium import OneCase
-
-    return OneCase.of(values)
+    return values

@@ -13,7 +13,7 @@ from typing import Any
 
 import numpy as np
 
-from bearingload import validate
+from bearingload import numerics, validate
 from bearingload.validate import broadcast_shape
 
 #: The inputs of a case, in the order of every model's signature.
@@ -142,5 +142,5 @@ RESULT_QUANTITIES = tuple(
 
 def scalar(value: Any) -> Any:
     """A Python int/float/bool for a 0-d array, the array otherwise
-    (:func:`bearingload.validate.scalar_out`)."""
-    return validate.scalar_out(value)
+    (:func:`bearingload.numerics.scalar_out`)."""
+    return numerics.scalar_out(value)

@@ -81,7 +81,7 @@ from typing import Any
 
 import numpy as np
 
-from bearingload import validate
+from bearingload import numerics, validate
 from bearingload.constants import STEEL_MODULUS
 from bearingload.errors import ConvergenceError, InputError
 from bearingload.models import _combined_fast as _fast
@@ -99,7 +99,7 @@ class CombinedDistribution:
     """Solution of the combined-load equilibrium; arrays of the case shape, ball arrays (..., z).
 
     For one case given as scalars every case quantity is a Python ``float`` (``iterations`` an
-    ``int``; :func:`bearingload.validate.scalar_out`), as in
+    ``int``; :func:`bearingload.numerics.scalar_out`), as in
     :class:`~bearingload.models.equilibrium.LoadDistribution`; the ball arrays stay (z,) arrays.
 
     Attributes
@@ -175,7 +175,7 @@ class CombinedDistribution:
     @property
     def q_max(self) -> Any:
         """Load of the most heavily loaded ball. [N]"""
-        return validate.scalar_out(self.ball_loads.max(axis=-1))
+        return numerics.scalar_out(self.ball_loads.max(axis=-1))
 
     @property
     def stiffness_radial(self) -> Any:
@@ -195,7 +195,7 @@ class CombinedDistribution:
     @property
     def loaded_balls(self) -> Any:
         """Number of balls carrying load. [-]"""
-        return validate.scalar_out((self.ball_loads > 0).sum(axis=-1))
+        return numerics.scalar_out((self.ball_loads > 0).sum(axis=-1))
 
 
 @dataclass(frozen=True)
@@ -239,9 +239,9 @@ def groove_geometry(
     geo = _geometry(ball_diameter, pitch_diameter, f_i, f_o, clearance)
     play = 2.0 * geo.A * np.sin(geo.alpha0)
     return (
-        validate.scalar_out(geo.A),
-        validate.scalar_out(np.rad2deg(geo.alpha0)),
-        validate.scalar_out(play),
+        numerics.scalar_out(geo.A),
+        numerics.scalar_out(np.rad2deg(geo.alpha0)),
+        numerics.scalar_out(play),
     )
 
 
@@ -349,9 +349,9 @@ def axial_only(
     lo, hi, approach = _axial_bracket(z, f, k, big_a, g)
     u = 0.5 * (lo + hi)
     return (
-        validate.scalar_out(u),
-        validate.scalar_out(np.rad2deg(np.arctan2(u, c))),
-        validate.scalar_out(k * approach(u) ** 1.5),
+        numerics.scalar_out(u),
+        numerics.scalar_out(np.rad2deg(np.arctan2(u, c))),
+        numerics.scalar_out(k * approach(u) ** 1.5),
     )
 
 
@@ -946,7 +946,7 @@ def _result(
     z = p.z
 
     def case(a: np.ndarray) -> Any:
-        return validate.scalar_out(np.asarray(a).reshape(shape))
+        return numerics.scalar_out(np.asarray(a).reshape(shape))
 
     def ball(a: np.ndarray) -> np.ndarray:
         return a.reshape(shape + (z,))

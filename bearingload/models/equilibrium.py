@@ -43,10 +43,19 @@ from typing import Any
 
 import numpy as np
 
-from bearingload import validate
+from bearingload import numerics, validate
 from bearingload.errors import InputError
 from bearingload.models import _ring, _scalar
-from bearingload.models._ring import MAX_ITERATIONS, Ring, gap_factor, snapped_cos, snapped_sin
+from bearingload.models._ring import (
+    APPROACH_RANGE,
+    CLEARANCE_RATIO_MAX,
+    MAX_ITERATIONS,
+    RESULT_RANGE,
+    Ring,
+    gap_factor,
+    snapped_cos,
+    snapped_sin,
+)
 
 #: Relative equilibrium residual the solver drives every case below. [-]
 TOLERANCE = 1e-13
@@ -136,7 +145,7 @@ class LoadDistribution:
         kyy = self.stiffness_matrix[..., 1, 1]
         with np.errstate(divide="ignore", invalid="ignore"):
             ratio = np.where(kyy > 0, kxy / np.where(kyy > 0, kyy, 1.0), 0.0)
-        return validate.scalar_out(kxx - kxy * ratio)
+        return numerics.scalar_out(kxx - kxy * ratio)
 
     @property
     def ball_angles(self) -> np.ndarray:
@@ -224,7 +233,7 @@ def _lazy_field(name: str) -> property:
             value = self.__dict__["_values"][name]
             arr = np.asarray(value)
             # one case: a Python int or float for each quantity (arrays stay arrays)
-            arr = cache[name] = validate.scalar_out(arr)
+            arr = cache[name] = numerics.scalar_out(arr)
         return arr
 
     return property(get, doc=f"``{name}`` of the case (see LoadDistribution).")
@@ -316,7 +325,7 @@ def solve(
     if _scalar.is_one_case(balls, load, stiffness, clearance, cage_angle, exponent):
         one = _scalar.solve_one(balls, load, stiffness, clearance, cage_angle, exponent, tol)
         if one is not None:
-            return one
+            return OneCase.of(one)
     inputs = _validated(balls, load, stiffness, clearance, cage_angle, exponent)
     shape = inputs[0].shape
     z, f, kk, g, cage, m = (a.ravel() for a in inputs)
@@ -553,14 +562,6 @@ def _tolerance(value: Any) -> float:
     if not lo <= tol <= hi:
         raise InputError("tolerance", f"must be from {lo:g} to {hi:g} (got {tol!r})")
     return tol
-
-
-#: Range of the one-ball approach (F_r/K)^(1/m) the solver accepts, and of the clearance in
-#: units of it: inside it every intermediate value is a normal double. [mm], [-]
-APPROACH_RANGE = (1e-100, 1e100)
-CLEARANCE_RATIO_MAX = 1e100
-#: Largest and smallest magnitude of a result (ball load [N], stiffness [N/mm]) accepted. [-]
-RESULT_RANGE = (1e-300, 1e300)
 
 
 def check_range(

@@ -29,7 +29,7 @@ import numpy as np
 
 from bearingload import validate
 from bearingload.errors import InputError
-from bearingload.validate import scalar_out
+from bearingload.numerics import scalar_out
 
 #: Load-zone parameters of the printed table, steps of 0.1. [-]
 TABLE_EPSILON = (0.0, 0.1, 0.2, 0.3, 0.4, 0.5, 0.6, 0.7, 0.8, 0.9, 1.0)

@@ -32,7 +32,7 @@ Adding a model: write one cited, vectorised function whose parameters are named 
 inputs (``balls, load, stiffness, clearance, cage_angle, exponent``; leave out what it ignores)
 and whose result has attributes named like :class:`~bearingload.models.case.Result`'s
 (``k``, ``q_max``, ``load_zone`` [°], ``x`` ...); add one :class:`Method` line to
-:func:`_build`; add its published values to ``bearingload/studies/data/published/``.
+:func:`_build`; add its published values to ``bearingload/papers/data/published/``.
 
 Importing this module imports no numpy (the command line lists the models at start-up).
 """

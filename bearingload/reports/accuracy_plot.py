@@ -21,7 +21,7 @@ def plot_work_precision(rows: list[dict[str, Any]], path: str) -> None:
     Parameters
     ----------
     rows : list of dict
-        Rows of :func:`bearingload.studies.accuracy.measure` with timing.
+        Rows of :func:`bearingload.quality.accuracy.measure` with timing.
     path : str
         Output file (PNG).
 

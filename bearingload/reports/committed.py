@@ -17,14 +17,17 @@ from bearingload.reports.render import Table, render, write_atomic
 
 
 def _registry() -> dict[str, Callable[[], Table]]:
+    from bearingload.papers.errata import errata_rows
+    from bearingload.reports.accuracy import accuracy_table
     from bearingload.reports.errata import errata_table
+    from bearingload.reports.life_clearance import life_vs_clearance_table
+    from bearingload.reports.papers import (
+        compliance_fits_table,
+        crane_stiffness_table,
+        kurochkin1973_differences_table,
+        kurochkin1973_example1_table,
+    )
     from bearingload.reports.tables import design_table, kuzmenko2010_306_table, table_k, table_kq
-    from bearingload.studies.accuracy import accuracy_table
-    from bearingload.studies.compliance import fit_table
-    from bearingload.studies.errata import errata_rows
-    from bearingload.studies.kurochkin_errata import differences_table, example1_moment_table
-    from bearingload.studies.life_clearance import life_vs_clearance_table
-    from bearingload.studies.stiffness import stiffness_table
 
     return {
         "table1_k_zero_clearance": lambda: table_k(30),
@@ -37,15 +40,15 @@ def _registry() -> dict[str, Callable[[], Table]]:
         # exact, continuum, Stribeck and Palmgren side by side, Table 1 conditions
         "k_methods_zero_clearance": lambda: design_table("k", 30, method="all"),
         # the papers of the turning cage: Kurochkin 1973 cells that differ, the compliance abstract fits, the crane paper (2009) stiffness
-        "kurochkin1973_differences": differences_table,
-        "kurochkin1973_example1": example1_moment_table,
-        "compliance_fits": fit_table,
-        "stiffness_seed003": stiffness_table,
+        "kurochkin1973_differences": kurochkin1973_differences_table,
+        "kurochkin1973_example1": kurochkin1973_example1_table,
+        "compliance_fits": compliance_fits_table,
+        "crane2009_stiffness": crane_stiffness_table,
         # every printed number the project recomputes (bearingload errata)
         "errata": lambda: errata_table(errata_rows()),
         # ISO/TS 16281 L10r against clearance, 6205, radial and combined load
         "life_vs_clearance_6205": life_vs_clearance_table,
-        # work-precision of every method (issue 9): errors and iterations, no times
+        # work-precision of every method: errors and iterations, no times
         "accuracy": accuracy_table,
     }
 

@@ -1,6 +1,6 @@
 """The report of ``bearingload errata``: every printed number the project recomputes, as tables.
 
-The rows come from :func:`bearingload.studies.errata.errata_rows` (one source of truth); this
+The rows come from :func:`bearingload.papers.errata.errata_rows` (one source of truth); this
 module only chooses the columns. The same rows make ``tables/errata.csv`` and ``.md`` and the
 marked block of the README's "Published vs computed" section (:func:`readme_block`).
 """
@@ -84,7 +84,7 @@ def summary_table(rows: list[dict[str, Any]], only_differing: bool = False) -> T
     With ``only_differing``, only the papers' tables where at least one printed number differs
     (their counts still cover every number checked in them).
     """
-    from bearingload.studies.errata import summary
+    from bearingload.papers.errata import summary
 
     counts = summary(rows)
     title = "Printed numbers checked, per paper and table"
@@ -99,7 +99,7 @@ def errata_report(
 ) -> str:
     """The rendered errata (or, with ``summary``, the counts per paper and table)."""
     from bearingload.errors import InputError
-    from bearingload.studies.errata import DIFFERS, errata_rows
+    from bearingload.papers.errata import DIFFERS, errata_rows
 
     rows = errata_rows()
     if paper is not None:
@@ -123,7 +123,7 @@ def errata_report(
 
 def readme_block() -> str:
     """The generated part of the README's "Published vs computed": counts, then every erratum."""
-    from bearingload.studies.errata import DIFFERS, errata_rows
+    from bearingload.papers.errata import DIFFERS, errata_rows
 
     rows = errata_rows()
     differ = [r for r in rows if r["verdict"] == DIFFERS]

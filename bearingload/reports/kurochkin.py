@@ -2,16 +2,16 @@
 
 Rows: ``cage_angle``, ``F0`` (= x0), ``F0_prime`` (= -y0) with P = K = 1; summary: the
 contact sequence, the exit angle ψ and the Fourier sine coefficients F0j' (j = 1-5) of F0' over
-the cage angle (Kurochkin 1973, eqs. 1.13, 2.1-2.3; bearingload.studies.kurochkin).
+the cage angle (Kurochkin 1973, eqs. 1.13, 2.1-2.3; bearingload.papers.kurochkin).
 """
 
 from __future__ import annotations
 
 from typing import Any
 
+from bearingload.papers.kurochkin import KurochkinSweep
 from bearingload.reports.quantities import QUANTITIES, units
 from bearingload.reports.render import Column, Table, render
-from bearingload.studies.kurochkin import KurochkinSweep
 
 ROW_KEYS = ("cage_angle", "F0", "F0_prime")
 NOTE = (

@@ -14,7 +14,14 @@ from bearingload.reports.combined import tilt_text
 from bearingload.reports.quantities import QUANTITIES, units
 from bearingload.reports.render import Column, Table, render
 from bearingload.reports.solve import column
-from bearingload.studies.life_clearance import LifeAgainstClearance
+from bearingload.studies.life_clearance import (
+    AXIAL_LOAD,
+    DESIGNATION,
+    RADIAL_LOAD,
+    LifeAgainstClearance,
+    life_vs_clearance,
+    life_vs_clearance_basic,
+)
 
 #: The row quantities and their short headers in the human table.
 ROW_KEYS = (
@@ -166,3 +173,42 @@ def life_document(t: LifeAgainstClearance) -> dict[str, Any]:
         "geometry": geometry_document(t.bearing),
         "warnings": list(t.warnings),
     }
+
+
+def life_vs_clearance_table() -> Table:
+    """The committed table ``tables/life_vs_clearance_6205``."""
+    rows = life_vs_clearance()
+    basic = life_vs_clearance_basic()
+    b, f0, p = basic["bearing"], basic["f0"], basic["equivalent_load"]
+    assert b.C is not None and b.C0 is not None
+    best_r = max(rows, key=lambda r: r["life_r"])
+    best_c = max(rows, key=lambda r: r["life_c"])
+    columns = [
+        Column("clearance_um", "G_r", "um", 3),
+        Column("free_contact_angle", "alpha_0", "°", 4),
+        Column("loaded_r", "n (F_r)"),
+        Column("q_max_r", "Q_max (F_r)", "N", 5),
+        Column("life_r", "L10r (F_r)", "10^6 rev", 5),
+        Column("ratio_r", "L10r/L10r(0) (F_r)", "-", 4),
+        Column("loaded_c", "n (F_r+F_a)"),
+        Column("alpha_max_c", "alpha_max (F_r+F_a)", "°", 4),
+        Column("q_max_c", "Q_max (F_r+F_a)", "N", 5),
+        Column("life_c", "L10r (F_r+F_a)", "10^6 rev", 5),
+        Column("ratio_c", "L10r/L10r(0) (F_r+F_a)", "-", 4),
+    ]
+    notes = [
+        f"Bearing {DESIGNATION}: z = {b.balls}, D_w = {b.ball_diameter} mm, "
+        f"d_m = {b.pitch_diameter} mm, f_i = {b.f_i}, f_o = {b.f_o}, E = {b.modulus:g} MPa, "
+        f"C_r = {b.C:g} N; F_r = {RADIAL_LOAD:g} N, F_a = {AXIAL_LOAD:g} N; inner ring rotating; "
+        "negative G_r = preload.",
+        "L10r: ISO/TS 16281:2008 clause 4.3 from the ball loads of the 3-D ring equilibrium "
+        "(exact Hertz stiffness at each contact angle, ring free to tilt).",
+        f"Longest life: F_r alone at G_r = {best_r['clearance_um']:g} um, "
+        f"F_r + F_a at G_r = {best_c['clearance_um']:g} um (of the rows).",
+        f"ISO 281:2007 basic life, blind to clearance: F_r alone (C_r/F_r)^3 = "
+        f"{basic['life_radial']:.5g}; F_r + F_a: P = X F_r + Y F_a = "
+        f"{p:.5g} N (5.2, Table 3, f0 = {f0:g}, C0r = {b.C0:g} N), "
+        f"(C_r/P)^3 = {basic['life_combined']:.5g} (10^6 rev).",
+        "Question after Oswald, Zaretsky & Poplawski, NASA TM-2012-217115 (2012).",
+    ]
+    return Table("L10r against radial internal clearance, 6205", columns, rows, notes)

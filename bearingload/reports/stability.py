@@ -1,5 +1,5 @@
-"""The stability reports: one table per kind of family (:mod:`bearingload.studies.stability`,
-:mod:`bearingload.studies.stability_combined`), each study giving its rows, ``TITLE``, ``KEYS``
+"""The stability reports: one table per kind of family (:mod:`bearingload.quality.stability`,
+:mod:`bearingload.quality.stability_combined`), each study giving its rows, ``TITLE``, ``KEYS``
 and ``NOTES``."""
 
 from __future__ import annotations

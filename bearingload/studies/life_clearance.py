@@ -11,7 +11,7 @@ ring free to tilt unless a moment or misalignment is given), every clearance in 
 call. ISO 281's basic life (C_r/P)^3 with P = X F_r + Y F_a (normal clearance) does not see the
 clearance; it is given beside. ``bearingload table life`` prints it.
 
-The committed table ``tables/life_vs_clearance_6205`` (:func:`life_vs_clearance_table`) is the
+The committed table ``tables/life_vs_clearance_6205`` (:func:`life_vs_clearance`) is the
 same computation for the catalogue bearing 6205 (z = 9, D_w = 7.938 mm, d_m = 38.5 mm, groove
 radii 0.52/0.53 D_w, C_r = 14 000 N, C0r = 7850 N, f0 = 13.9; see bearings.csv for the sources),
 inner ring rotating, under F_r = 1400 N alone and with F_a = 700 N, side by side.
@@ -25,7 +25,6 @@ from typing import TYPE_CHECKING, Any
 import numpy as np
 
 from bearingload.errors import InputError
-from bearingload.reports.render import Column, Table
 
 if TYPE_CHECKING:
     from bearingload.bearings.resolve import ResolvedBearing
@@ -276,45 +275,22 @@ def life_vs_clearance(
     return rows
 
 
-def life_vs_clearance_table() -> Table:
-    """The committed table ``tables/life_vs_clearance_6205``."""
+def life_vs_clearance_basic(designation: str = DESIGNATION) -> dict[str, Any]:
+    """What the committed table states beside its rows: the bearing, ISO 281:2007's equivalent
+    load ``P = X F_r + Y F_a`` [N] (5.2, Table 3) with its ``f0`` and the basic lives
+    ``(C_r/F_r)^3`` and ``(C_r/P)^3`` [10^6 rev], blind to the clearance."""
     from bearingload.bearings.life import equivalent_load_deep_groove, rating_life
     from bearingload.bearings.resolve import resolve_bearing
 
-    rows = life_vs_clearance()
-    b = resolve_bearing(DESIGNATION, clearance=0.0)
+    b = resolve_bearing(designation, clearance=0.0)
     assert b.C is not None and b.C0 is not None and b.geometry is not None
     f0 = b.geometry.f0
     assert f0 is not None
     p = float(equivalent_load_deep_groove(RADIAL_LOAD, AXIAL_LOAD, b.C0, f0))
-    best_r = max(rows, key=lambda r: r["life_r"])
-    best_c = max(rows, key=lambda r: r["life_c"])
-    columns = [
-        Column("clearance_um", "G_r", "um", 3),
-        Column("free_contact_angle", "alpha_0", "°", 4),
-        Column("loaded_r", "n (F_r)"),
-        Column("q_max_r", "Q_max (F_r)", "N", 5),
-        Column("life_r", "L10r (F_r)", "10^6 rev", 5),
-        Column("ratio_r", "L10r/L10r(0) (F_r)", "-", 4),
-        Column("loaded_c", "n (F_r+F_a)"),
-        Column("alpha_max_c", "alpha_max (F_r+F_a)", "°", 4),
-        Column("q_max_c", "Q_max (F_r+F_a)", "N", 5),
-        Column("life_c", "L10r (F_r+F_a)", "10^6 rev", 5),
-        Column("ratio_c", "L10r/L10r(0) (F_r+F_a)", "-", 4),
-    ]
-    notes = [
-        f"Bearing {DESIGNATION}: z = {b.balls}, D_w = {b.ball_diameter} mm, "
-        f"d_m = {b.pitch_diameter} mm, f_i = {b.f_i}, f_o = {b.f_o}, E = {b.modulus:g} MPa, "
-        f"C_r = {b.C:g} N; F_r = {RADIAL_LOAD:g} N, F_a = {AXIAL_LOAD:g} N; inner ring rotating; "
-        "negative G_r = preload.",
-        "L10r: ISO/TS 16281:2008 clause 4.3 from the ball loads of the 3-D ring equilibrium "
-        "(exact Hertz stiffness at each contact angle, ring free to tilt).",
-        f"Longest life: F_r alone at G_r = {best_r['clearance_um']:g} um, "
-        f"F_r + F_a at G_r = {best_c['clearance_um']:g} um (of the rows).",
-        f"ISO 281:2007 basic life, blind to clearance: F_r alone (C_r/F_r)^3 = "
-        f"{float(rating_life(b.C, RADIAL_LOAD)):.5g}; F_r + F_a: P = X F_r + Y F_a = "
-        f"{p:.5g} N (5.2, Table 3, f0 = {f0:g}, C0r = {b.C0:g} N), "
-        f"(C_r/P)^3 = {float(rating_life(b.C, p)):.5g} (10^6 rev).",
-        "Question after Oswald, Zaretsky & Poplawski, NASA TM-2012-217115 (2012).",
-    ]
-    return Table("L10r against radial internal clearance, 6205", columns, rows, notes)
+    return {
+        "bearing": b,
+        "f0": f0,
+        "equivalent_load": p,
+        "life_radial": float(rating_life(b.C, RADIAL_LOAD)),
+        "life_combined": float(rating_life(b.C, p)),
+    }

@@ -69,7 +69,7 @@ class CageSweep:
         Every clearance ``G_r`` at which ``x`` is the same with a ball under the load and with
         the load between two balls, in increasing order (negative = preload); the
         varying-compliance paper's delta_alpha = delta_S is the smallest positive one. From
-        :func:`bearingload.studies.compliance.compensating_clearances`. [mm]
+        :func:`bearingload.studies.compensation.compensating_clearances`. [mm]
     """
 
     balls: int
@@ -211,7 +211,7 @@ def compensating_clearance(
 ) -> list[float]:
     """Every clearance G_r [mm] at which the ring sits at the same x with a ball under the load
     and with the load between two balls: the one call of the varying-compliance study."""
-    from bearingload.studies.compliance import compensating_clearances
+    from bearingload.studies.compensation import compensating_clearances
 
     return [float(v) for v in compensating_clearances(balls, load, stiffness, exponent)]
 

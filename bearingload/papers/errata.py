@@ -1,7 +1,7 @@
 """Every number the papers print that the project recomputes: printed, computed, verdict, cause.
 
 One row per printed number. The printed values of Kuzmenko (2010) and Kuzmenko & Sabadash (2014)
-come from the shipped data files (:mod:`bearingload.studies.published`); each is recomputed here
+come from the shipped data files (:mod:`bearingload.papers.published`); each is recomputed here
 with the package's own models and procedures (never fitted to the printed number) and compared
 within its printed rounding. Other papers add their rows through :data:`ROW_SOURCES`.
 
@@ -18,7 +18,7 @@ import importlib
 from collections.abc import Callable, Iterable
 from typing import Any
 
-from bearingload.studies.published import FILES, Published, load
+from bearingload.papers.published import FILES, Published, load
 
 AGREES = "agrees"
 DIFFERS = "differs"
@@ -26,11 +26,11 @@ DIFFERS = "differs"
 #: Where the rows come from: (module, function) of :mod:`bearingload.studies`, in listing order.
 #: Each function takes no argument and returns a list of row dicts (see the module docstring).
 ROW_SOURCES: list[tuple[str, str]] = [
-    ("bearingload.studies.errata", "kuzmenko2010_rows"),
-    ("bearingload.studies.errata", "kuzmenko_sabadash2014_rows"),
-    ("bearingload.studies.kurochkin_errata", "kurochkin1973_rows"),
-    ("bearingload.studies.compliance", "compliance_rows"),
-    ("bearingload.studies.stiffness", "stiffness_rows"),
+    ("bearingload.papers.errata", "kuzmenko2010_rows"),
+    ("bearingload.papers.errata", "kuzmenko_sabadash2014_rows"),
+    ("bearingload.papers.kurochkin_errata", "kurochkin1973_rows"),
+    ("bearingload.papers.compliance", "compliance_rows"),
+    ("bearingload.papers.crane_stiffness", "crane2009_rows"),
 ]
 
 #: Quantities the registered methods return (``kz`` is ``k`` times the number of balls).

@@ -26,7 +26,7 @@ cage angles at load-zone edges, rollers and m = 1, the continuum model and Hertz
 hard corners (heavy preload against an independent formula, stiffness extremes, preload with
 m = 3, memory of large batches, cage angles near symmetry, batch independence, the load zone of
 many balls, bad inputs). The combined-load solver has its own families
-(:mod:`bearingload.studies.stability_combined`). :func:`run` with ``size="quick"`` is the reduced grid of the test suite; ``"full"`` the
+(:mod:`bearingload.quality.stability_combined`). :func:`run` with ``size="quick"`` is the reduced grid of the test suite; ``"full"`` the
 grid of ``make bench``.
 """
 

@@ -148,7 +148,7 @@ def exit_angle(balls: int, T: float) -> float | None:
     """Exit angle ``psi``: where a ball leaves contact as the cage turns forward. [°]
 
     Found by bracketing the sign change of each ball's approach over one pitch of cage angles
-    and solving ``delta_i(phi_1) = 0`` in its bracket (:func:`bearingload.roots.bracketed_root`, xtol 1e-13°) on the engine's solution.
+    and solving ``delta_i(phi_1) = 0`` in its bracket (:func:`bearingload.numerics.bracketed_root`, xtol 1e-13°) on the engine's solution.
     ``psi = 360/n`` in the sequence 1-2-1 (Kurochkin 1973, eq. 1.15); ``None`` when every ball
     stays loaded at every cage angle (heavy preload).
 
@@ -166,7 +166,7 @@ def _events(balls: int, T: float) -> tuple[float | None, list[float]]:
     """(psi, sorted cage angles in [0, pitch] where a ball enters or leaves contact) [°]."""
     from functools import partial
 
-    from bearingload.roots import bracketed_root
+    from bearingload.numerics import bracketed_root
 
     z = _balls(balls)
     pitch = 360.0 / z
@@ -307,7 +307,7 @@ def harmonic_null_parameter(balls: int, harmonic: int, lower: float, upper: floa
     The conservative moment ``M = w P y0`` then has no j-th harmonic (Kurochkin 1973, Example 1,
     part 2).
     """
-    from bearingload.roots import bracketed_root
+    from bearingload.numerics import bracketed_root
 
     def f(t: float) -> float:
         return float(fourier_sine(balls, t, harmonic)[harmonic - 1])

@@ -1,6 +1,6 @@
 """Numbers printed in the papers, as shipped data: one CSV file per paper, one row per printed cell.
 
-The files live in ``bearingload/studies/data/published/`` (``<paper>.csv``), in the manner of
+The files live in ``bearingload/papers/data/published/`` (``<paper>.csv``), in the manner of
 pvlib's data fixtures; the tests, the conformance check and ``bearingload errata`` read them from
 here, so each printed number is copied once, with its source.
 
@@ -10,7 +10,7 @@ source          the paper (a key of :data:`SOURCES`)
 table           table, equation or section of the paper ("Table 1", "eq. 2.1", "§3.4")
 cell            the row/column identifier inside it ("z = 5", "row 2")
 quantity        what the number is (``k``, ``K_Q``, ``loaded_balls``, ``q_max``, ``load_zone``,
-                ``kz``, ... ; see :mod:`bearingload.studies.errata` for how each is recomputed)
+                ``kz``, ... ; see :mod:`bearingload.papers.errata` for how each is recomputed)
 model           the model family it concerns: a method of :mod:`bearingload.models.registry`
                 (``exact``, ``continuum``) or the procedure that recomputes it (``hertz``,
                 ``fit``, ``life``, ``formula``)
@@ -128,7 +128,7 @@ def load(paper: str) -> tuple[Published, ...]:
     if paper not in FILES:
         raise ValueError(f"unknown paper {paper!r}; known: {', '.join(FILES)}")
     text = (
-        resources.files("bearingload.studies")
+        resources.files("bearingload.papers")
         .joinpath("data")
         .joinpath("published")
         .joinpath(f"{paper}.csv")

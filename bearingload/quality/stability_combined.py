@@ -374,7 +374,7 @@ def family_names() -> list[str]:
 
 def run(size: str = "quick", names: list[str] | None = None) -> list[dict[str, Any]]:
     """One row per combined-load family (module notes); ``size`` ``"quick"`` or ``"full"``."""
-    from bearingload.studies.stability import check_selection
+    from bearingload.quality.stability import check_selection
 
     check_selection(size, names, family_names())
     return [_run_family(f, size) for f in FAMILIES if not names or f.name in names]

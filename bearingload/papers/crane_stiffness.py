@@ -27,7 +27,6 @@ from bearingload.constants import KGF
 from bearingload.contact.hertz import LINE_EXPONENT, roller_stiffness
 from bearingload.errors import InputError
 from bearingload.models.equilibrium import solve
-from bearingload.reports.render import Column, Table
 
 SOURCE = "Crane-bearing stiffness (2009), eqs. (19)-(22)"
 
@@ -119,7 +118,7 @@ def roller_element_stiffness(roller_diameter: Any, effective_length: Any) -> Any
     return roller_stiffness(effective_length)
 
 
-class Seed003Result(NamedTuple):
+class CraneProcedure(NamedTuple):
     """The crane paper's (2009) procedure, step by step."""
 
     q0: float
@@ -132,14 +131,14 @@ class Seed003Result(NamedTuple):
     """(21) i cos α [c_0 + 2 Σ_{j>=1} c_j cos(j γ)]. [N/mm]"""
 
 
-def seed003_stiffness(
+def crane2009_stiffness(
     balls: int,
     load: float,
     stiffness: float,
     exponent: float = 1.5,
     rows: int = 1,
     contact_angle: float = 0.0,
-) -> Seed003Result:
+) -> CraneProcedure:
     """The bearing stiffness by the crane paper's (2009) procedure (module docstring). Units as
     :func:`radial_stiffness`; zero clearance is implied by (19)."""
     z = int(validate.ball_count(balls))
@@ -155,7 +154,7 @@ def seed003_stiffness(
     delta = (loads / k) ** (1.0 / m)
     c = loads / delta
     total = int(rows) * math.cos(a) * (c[0] + 2.0 * float(np.sum(c[1:] * np.cos(j[1:] * gamma))))
-    return Seed003Result(q0, loads, c, float(total))
+    return CraneProcedure(q0, loads, c, float(total))
 
 
 #: The cases of the committed table: (label, z, load [N], K [N/mm^m], m, rows, α [°])
@@ -185,7 +184,7 @@ def comparison_rows() -> list[dict[str, Any]]:
     out = []
     for label, z, load, k, m, rows, alpha in _cases():
         exact = radial_stiffness(z, load, k, 0.0, 0.0, m, rows, alpha)
-        paper = seed003_stiffness(z, load, k, m, rows, alpha)
+        paper = crane2009_stiffness(z, load, k, m, rows, alpha)
         out.append(
             {
                 "case": label,
@@ -204,46 +203,7 @@ def comparison_rows() -> list[dict[str, Any]]:
     return out
 
 
-def stiffness_table() -> Table:
-    """Committed table ``stiffness_seed003``."""
-    cols = [
-        Column("case", "case", align="left"),
-        Column("load", "F_r", "N", 5),
-        Column("stiffness", "K", "N/mm^m", 5),
-        Column("exponent", "m", "-", 4),
-        Column("q0_paper", "Q0 crane paper (20)", "N", 5),
-        Column("q_max", "Q_max exact", "N", 5),
-        Column("c_paper", "c crane paper (21)", "N/mm", 5),
-        Column("tangent", "tangent exact", "N/mm", 5),
-        Column("secant", "secant exact", "N/mm", 5),
-        Column("paper_over_tangent", "(21)/tangent", "-", 4),
-        Column("paper_over_secant", "(21)/secant", "-", 4),
-    ]
-    return Table(
-        title="Radial bearing stiffness: the crane paper's (2009) procedure against the exact equilibrium "
-        "(zero clearance, a ball or roller under the load)",
-        columns=cols,
-        rows=comparison_rows(),
-        notes=(
-            "The crane paper (2009): Q0 = 5 F_r/(i z cos α) (20), Q_j = Q0 cos^m(jγ) (19), c_j = Q_j/δ_j (18), "
-            "c = i cos α [c_0 + 2 Σ c_j cos(jγ)] (21), γ = 2π/z (22). Exact: each row carries "
-            "F_r/i with radial element stiffness K cos^(m+1) α; tangent dF_r/dx, secant F_r/x.",
-            "Why they differ: (a) the factor 5 in (20) is Stribeck's allowance for clearance; at "
-            "zero clearance the exact z Q_max/F_r is 4.37 (balls) or 4.08 (rollers) for many "
-            "elements, so Q0 is high and every c_j with it; (b) (21) projects each element once "
-            "(cos jγ, cos α) where the radial stiffness needs the square of each projection; "
-            "(c) (18) is a secant element stiffness, the tangent one is m times larger; (d) the "
-            "loads (19) do not balance F_r. The errors partly cancel: for balls with α = 0 (21) "
-            "lies between the exact secant and tangent (0.83 of the tangent); at α = 40° and for "
-            "rollers it exceeds even the tangent (1.08 and 1.16 times). At zero clearance every "
-            "stiffness scales as F_r^((m-1)/m), so the ratios do not depend on the load.",
-            "Rollers: Palmgren's line contact per contact, both contacts in series "
-            "(bearingload.contact.hertz.roller_stiffness); the roller set is illustrative.",
-        ),
-    )
-
-
-def stiffness_rows() -> list[dict[str, Any]]:
+def crane2009_rows() -> list[dict[str, Any]]:
     """The crane paper's (2009) printed constants against exact values (keys as ``kurochkin1973_rows``)."""
     rows = []
     for z, m in ((8, 1.5), (12, 1.5), (1000, 1.5), (14, LINE_EXPONENT), (1000, LINE_EXPONENT)):
@@ -273,6 +233,6 @@ def stiffness_rows() -> list[dict[str, Any]]:
 
 
 def _row(cell: str, printed: str, computed: float, resolution: float, cause: str) -> dict[str, Any]:
-    from bearingload.studies.published import printed_row
+    from bearingload.papers.published import printed_row
 
     return printed_row(SOURCE, "procedure (19)-(22)", cell, printed, computed, resolution, cause)

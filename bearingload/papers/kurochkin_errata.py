@@ -2,7 +2,7 @@
 
 The printed cells are copied, as printed, into ``data/kurochkin1973.csv`` (one row per cell, with
 the table, row, column, inputs and the printed resolution). :func:`kurochkin1973_rows` recomputes
-each one with :mod:`bearingload.studies.kurochkin` and says whether it agrees within its printed
+each one with :mod:`bearingload.papers.kurochkin` and says whether it agrees within its printed
 rounding and, if not, the likely cause. Causes are classified by rules (a lost sign, a single
 digit added, dropped or changed, an off-by-one last digit), never written per cell.
 
@@ -22,8 +22,7 @@ from typing import Any
 import numpy as np
 
 from bearingload.constants import KGF
-from bearingload.reports.render import Column, Table
-from bearingload.studies import kurochkin as ku
+from bearingload.papers import kurochkin as ku
 
 DATA = os.path.join(os.path.dirname(__file__), "data", "kurochkin1973.csv")
 
@@ -224,41 +223,29 @@ def kurochkin1973_rows() -> list[dict[str, Any]]:
     return rows
 
 
-def differences_table() -> Table:
-    """Committed table ``kurochkin1973_differences``: every printed cell that is not confirmed."""
-    rows = [r for r in kurochkin1973_rows() if r["verdict"] != "agrees within printed rounding"]
-    return Table(
-        title="Kurochkin (1973), Tables 1-4 and Example 1: printed cells that differ from the "
-        "exact model beyond their printed rounding",
-        columns=[
-            Column("cell", "cell", align="left"),
-            Column("printed", "printed", align="left"),
-            Column("computed", "computed", "-", 5),
-            Column("difference", "printed - computed", "-", 3),
-            Column("cause", "likely cause", align="left"),
-        ],
-        rows=[
-            {**r, "difference": "" if r["difference"] is None else r["difference"]} for r in rows
-        ],
-        notes=(
-            f"{len(rows)} of {len(read_cells())} printed cells; the others agree within their "
-            "printed rounding. Units: T, F0'·10³, F0j'·10³ [-]; ψ [°]; e [µm] (gap per side).",
-            "Exact: the ring equilibrium with P = K = 1 and clearance 2e from eq. (1.13); F0j' by "
-            "Gauss-Legendre quadrature over each smooth piece of the half pitch (error < 1e-12).",
-        ),
-    )
-
-
 #: Example 1 clearances (gap per side e) whose moment the committed table shows. [µm]
 EXAMPLE1_GAPS_UM = (3.0, 4.0, 5.0, 5.5)
 
 
-def example1_moment_table(steps: int = 15) -> Table:
-    """Committed table ``kurochkin1973_example1``: M(φ1) = w P y0 over one pitch (his Fig. 2).
+def differences_rows() -> list[dict[str, Any]]:
+    """The rows of :func:`kurochkin1973_rows` whose printed cell is not confirmed (it differs
+    beyond its printed rounding, or it was lost in print)."""
+    return [r for r in kurochkin1973_rows() if r["verdict"] != "agrees within printed rounding"]
+
+
+def example1_moments(steps: int = 15) -> dict[str, Any]:
+    """Kurochkin's Example 1: the conservative moment M(φ1) = w P y0 over one pitch (his Fig. 2).
 
     Bearing A640018 (n = 7, D = 10.731 mm, d = 3.969 mm, K = 0.45 kgf/µm^1.5, P = 2.5 kgf),
-    rotating inner ring (w = D/(2(D + d))), gaps e = 3, 4, 5, 5.5 µm and the three gaps that
-    null the first, second and third harmonic of M (exact). M in N·mm.
+    rotating inner ring (w = D/(2(D + d))), gaps e = 3, 4, 5, 5.5 µm (:data:`EXAMPLE1_GAPS_UM`)
+    and the three gaps that null the first, second and third harmonic of M (exact).
+
+    Returns
+    -------
+    dict
+        ``rows``: per cage angle [°] (``cage_angle``) the moments ``M_e0``, ``M_e1`` ... [N·mm]
+        at the gaps in order; ``nulls``: the three nulling gaps [µm]; ``parameters``: T (eq.
+        1.13) at each of :data:`EXAMPLE1_GAPS_UM` [-]; ``moment_arm``: w [-].
     """
     load, stiffness = example1_load_stiffness()
     d_in, d_b = EXAMPLE1["D"], EXAMPLE1["d"]
@@ -275,22 +262,12 @@ def example1_moment_table(steps: int = 15) -> Table:
             m = ku.conservative_moment(7, load, stiffness, 2 * e_um * 1e-3, a, d_in, d_b, "inner")
             row[key] = 0.0 + float(m)
         rows.append(row)
-    labels = [f"M, e = {e:g} µm" for e in EXAMPLE1_GAPS_UM]
-    labels += [f"M, e = {e:.4f} µm (no harmonic {j})" for j, e in enumerate(nulls, start=1)]
-    t_values = ", ".join(
-        f"{e:g} µm: {ku.generalised_parameter(2 * e * 1e-3, load, stiffness, 7):.4f}"
-        for e in EXAMPLE1_GAPS_UM
-    )
-    return Table(
-        title="Kurochkin (1973), Example 1: conservative moment M = w P y0 over one pitch, "
-        "bearing A640018, rotating inner ring",
-        columns=[Column("cage_angle", "cage angle", "°", 5)]
-        + [Column(k, lab, "N·mm", 5) for k, lab in zip(keys, labels, strict=True)],
-        rows=rows,
-        notes=(
-            f"n = 7, D = 10.731 mm, d = 3.969 mm, K = 0.45 kgf/µm^1.5, P = 2.5 kgf; "
-            f"w = D/(2(D + d)) = {ku.moment_arm(d_in, d_b):.5f}. T (eq. 1.13) at e = {t_values}.",
-            "The last three columns use the exact gaps at which F01', F02', F03' vanish; the paper "
-            "prints 4.164, 4.476, 4.611 µm, read from its Table 3 (kurochkin1973_differences).",
-        ),
-    )
+    return {
+        "rows": rows,
+        "nulls": nulls,
+        "parameters": [
+            float(ku.generalised_parameter(2 * e * 1e-3, load, stiffness, 7))
+            for e in EXAMPLE1_GAPS_UM
+        ],
+        "moment_arm": float(ku.moment_arm(d_in, d_b)),
+    }

@@ -1,0 +1,189 @@
+"""The import structure of the package (docs/architecture.md): no circles, imports only downwards.
+
+Every ``import`` and ``from ... import`` of every module under ``bearingload/`` is read from its
+syntax tree, including the imports inside functions (which hide a circle from the interpreter
+but not from a reader), and resolved to the module it names (``from bearingload.models import
+equilibrium`` is the module ``bearingload.models.equilibrium``).
+"""
+
+from __future__ import annotations
+
+import ast
+from pathlib import Path
+
+import pytest
+
+PACKAGE = Path(__file__).resolve().parents[1] / "bearingload"
+
+#: Rank of each top-level part of the package: a module imports only modules of its own rank or
+#: lower ones. Reports and commands sit on top; the papers' checks and the quality harnesses use
+#: the services and models below them, never the reports that render them.
+LAYERS = {
+    "bearingload": 0,  # the package's own __init__ (lazy public names, no static import)
+    "errors": 0,
+    "constants": 0,
+    "units": 1,
+    "validate": 1,
+    "numerics": 1,
+    "contact": 2,
+    "bearings": 3,
+    "models": 3,
+    "studies": 4,
+    "papers": 5,
+    "quality": 5,
+    "reports": 6,
+    "cli": 7,
+    "__main__": 8,
+}
+
+#: Circles between two files still to be removed. reports.render <-> reports.csv_text: the batch
+#: output's fast csv writer, being rewritten with the batch command; remove the entry then.
+KNOWN_CIRCLES = {frozenset({"bearingload.reports.render", "bearingload.reports.csv_text"})}
+
+
+def _modules() -> dict[str, tuple[Path, bool]]:
+    """Module name -> (file, is a package's __init__)."""
+    out = {}
+    for path in PACKAGE.rglob("*.py"):
+        parts = list(path.relative_to(PACKAGE.parent).with_suffix("").parts)
+        is_package = parts[-1] == "__init__"
+        if is_package:
+            parts = parts[:-1]
+        out[".".join(parts)] = (path, is_package)
+    return out
+
+
+def _resolve(name: str, modules: dict[str, tuple[Path, bool]]) -> str | None:
+    while name and name not in modules:
+        name = name.rpartition(".")[0]
+    return name or None
+
+
+def import_graph() -> dict[str, set[str]]:
+    """Module -> the package's modules it imports anywhere in its file."""
+    modules = _modules()
+    graph: dict[str, set[str]] = {}
+    for name, (path, is_package) in modules.items():
+        base = name.split(".") if is_package else name.split(".")[:-1]
+        targets: set[str] = set()
+        for node in ast.walk(ast.parse(path.read_text(encoding="utf-8"))):
+            if isinstance(node, ast.Import):
+                wanted = [a.name for a in node.names]
+            elif isinstance(node, ast.ImportFrom):
+                parent = base[: len(base) - node.level + 1] if node.level else []
+                module = ".".join(parent + ([node.module] if node.module else []))
+                wanted = [f"{module}.{a.name}" for a in node.names]
+            else:
+                continue
+            for w in wanted:
+                if w.split(".")[0] == "bearingload":
+                    target = _resolve(w, modules)
+                    if target is not None and target != name:
+                        targets.add(target)
+        graph[name] = targets
+    return graph
+
+
+def _part(module: str) -> str:
+    parts = module.split(".")
+    return parts[1] if len(parts) > 1 else parts[0]
+
+
+def test_the_graph_sees_imports_inside_functions():
+    """The walk reads function-level imports (the hiding place of the circles it guards)."""
+    graph = import_graph()
+    # compensating_clearances imports the root finder inside the function
+    assert "bearingload.numerics" in graph["bearingload.studies.compensation"]
+    # the command modules import their studies inside the command functions
+    assert "bearingload.quality.stability" in graph["bearingload.cli.stability"]
+
+
+def test_no_file_imports_a_file_that_imports_it():
+    graph = import_graph()
+    circles = {
+        frozenset({a, b}) for a, targets in graph.items() for b in targets if a in graph.get(b, ())
+    }
+    assert circles <= KNOWN_CIRCLES, sorted(sorted(c) for c in circles - KNOWN_CIRCLES)
+
+
+def test_no_longer_circle():
+    """No circle through three or more files either (Tarjan's strongly connected components)."""
+    graph = import_graph()
+    index: dict[str, int] = {}
+    low: dict[str, int] = {}
+    stack: list[str] = []
+    components: list[set[str]] = []
+
+    def visit(v: str) -> None:
+        index[v] = low[v] = len(index)
+        stack.append(v)
+        for w in graph[v]:
+            if w not in index:
+                visit(w)
+                low[v] = min(low[v], low[w])
+            elif w in stack:
+                low[v] = min(low[v], index[w])
+        if low[v] == index[v]:
+            component = set()
+            while True:
+                w = stack.pop()
+                component.add(w)
+                if w == v:
+                    break
+            if len(component) > 1:
+                components.append(component)
+
+    for v in sorted(graph):
+        if v not in index:
+            visit(v)
+    assert [c for c in components if frozenset(c) not in KNOWN_CIRCLES] == []
+
+
+def test_every_part_has_a_layer():
+    assert {_part(m) for m in import_graph()} <= set(LAYERS)
+
+
+@pytest.mark.parametrize("lower", ["studies", "papers", "quality", "models", "bearings"])
+def test_below_reports_nothing_builds_a_report(lower):
+    """Studies, the papers' checks and the harnesses return data; only reports/ and cli/ import
+    the renderer."""
+    graph = import_graph()
+    offending = [
+        (m, t)
+        for m, targets in graph.items()
+        if _part(m) == lower
+        for t in targets
+        if _part(t) in ("reports", "cli")
+    ]
+    assert offending == []
+
+
+def test_imports_run_downwards():
+    graph = import_graph()
+    upwards = [
+        (m, t)
+        for m, targets in sorted(graph.items())
+        for t in sorted(targets)
+        if LAYERS[_part(t)] > LAYERS[_part(m)]
+    ]
+    assert upwards == []
+
+
+def test_no_function_is_over_80_lines_of_code():
+    """The standard 'no function over ~80 lines' had no test (the brief says there is one):
+    every function of the package, its docstring aside, fits in 80 lines."""
+    import ast
+    from pathlib import Path
+
+    import bearingload
+
+    long = []
+    for path in sorted(Path(bearingload.__file__).parent.rglob("*.py")):
+        for node in ast.walk(ast.parse(path.read_text(encoding="utf-8"))):
+            if isinstance(node, (ast.FunctionDef, ast.AsyncFunctionDef)):
+                body = node.body
+                if ast.get_docstring(node) is not None:
+                    body = body[1:]
+                if body and body[-1].end_lineno - body[0].lineno + 1 > 80:  # type: ignore[operator]
+                    long.append(f"{path.name}:{node.name}")
+    assert long == []

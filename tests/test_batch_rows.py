@@ -1,0 +1,155 @@
+"""``bearingload batch``: how the rows of a file are read, refused and named, the same whatever the
+chunk size and the other rows (bare-number columns, underscores, quotes, empty cells, a row
+failing alone, the order of the warnings, a roller row's stiffness)."""
+
+from __future__ import annotations
+
+import pytest
+from click.testing import CliRunner
+
+from bearingload.cli import main
+
+
+def _run(*args: str, stdin: str | None = None):
+    return CliRunner().invoke(main, list(args), input=stdin)
+
+
+def _batch(text: str, *args: str):
+    return _run("batch", "-", "--format", "csv", *args, stdin=text)
+
+
+def test_an_exponent_column_of_bare_numbers_is_read():
+    """A file of bare numbers with an 'exponent' column went through the numbers-only reader,
+    which looked up the exponent column before it had read it: 'internal error (KeyError:
+    'exponent')', exit 1, for the simplest such file."""
+    text = "balls,load,stiffness,exponent\n8,1000,46000,1.5\n8,1000,46000,10/9\n"
+    for chunk in ("1", "100"):
+        r = _batch(text, "--chunk-size", chunk)
+        assert r.exit_code == 0, r.output
+        assert "internal error" not in r.output
+    alone = _run("solve", "-z", "8", "-F", "1000", "-K", "46000", "--exponent", "1.5",
+                 "--format", "csv")  # fmt: skip
+    rows = _batch(text).stdout.splitlines()
+    assert rows[1].split(",")[8:] == alone.stdout.splitlines()[1].split(",")[7:]
+    # a header unit of another exponent: that row named, not the whole run ended (exit 2)
+    mixed = "balls,load,stiffness [N/mm^(10/9)],exponent\n8,1000,46000,1.5\n8,1000,46000,10/9\n"
+    for chunk in ("1", "100"):
+        r = _batch(mixed, "--chunk-size", chunk)
+        assert r.exit_code == 1, r.output
+        assert r.stderr.startswith("Warning: row 2: stiffness: the unit 'N/mm^(10/9)'")
+        assert [line.split(",")[0] for line in r.stdout.splitlines()[1:]] == ["3"]
+
+
+@pytest.mark.parametrize("chunk", ["1", "3", "100"])
+def test_a_number_with_underscores_is_refused_whatever_the_other_rows(chunk):
+    """'1_000' is refused by solve (--load 1_000: unknown unit '_000'); batch accepted it as
+    1000 N when every other load cell of its chunk was a bare number (numpy, like Python's
+    float, reads underscores) and refused it otherwise, so the output hung on --chunk-size."""
+    text = "balls,load,stiffness\n8,1_000,46000\n8,1kN,46000\n8,2000,46000\n"
+    r = _batch(text, "--chunk-size", chunk)
+    assert r.exit_code == 1
+    assert "row 2: load" in r.stderr
+    assert [line.split(",")[0] for line in r.stdout.splitlines()[1:]] == ["3", "4"]
+    with_unit = "balls,load [kN],stiffness,cage_angle [deg]\n8,1_0,46000,0\n8,1,46000,1_0\n"
+    r = _batch(with_unit, "--chunk-size", chunk)
+    assert "row 2: load" in r.stderr and "row 3: cage_angle" in r.stderr
+    assert r.stdout.splitlines()[1:] == []
+
+
+def test_a_skipped_row_names_the_column_not_the_library_parameter():
+    """A combined row without any load was skipped as 'radial_load: give a radial load ...':
+    a batch file has no column radial_load (its column is load), as solve names --load."""
+    r = _batch("bearing,load,axial_load\n6205,0,0\n6205,1kN,0\n")
+    assert r.exit_code == 1
+    assert r.stderr.startswith(
+        "Warning: row 2: load: give a radial load, an axial load or a moment"
+    )
+
+
+@pytest.mark.parametrize("chunk", ["1", "2", "100"])
+def test_a_quote_never_closed_is_named_where_it_opens(chunk):
+    """An unclosed quote made the csv reader take every line to the end of the file into one
+    cell; batch then named the LAST line, 'row 6: malformed line: 2 cells', and rows 4 and 5
+    vanished without a word. Now the row where the quote opens is named, with the span."""
+    text = 'balls,load,stiffness\n8,1000,46000\n8,"1000,46000\n8,1000,46000\n8,1000,46000\n'
+    r = _batch(text, "--chunk-size", chunk)
+    assert r.exit_code == 1
+    assert r.stderr.startswith(
+        "Warning: row 3: a quote opened in this row is never closed: rows 3 to 5 (the end of "
+        "the file) were read as one cell"
+    )
+    assert [line.split(",")[0] for line in r.stdout.splitlines()[1:]] == ["2"]
+    closed = 'balls,load,stiffness\n8,"10\n00",46000\n8,"2000",46000\n'  # closed: as before
+    r = _batch(closed, "--chunk-size", chunk)
+    assert "row 3: load: unknown unit '00'" in r.stderr
+    assert [line.split(",")[0] for line in r.stdout.splitlines()[1:]] == ["4"]
+
+
+def test_an_empty_load_cell_says_the_load_is_missing():
+    """An empty load cell of rings given by z and K was skipped as 'load: missing (give balls
+    and stiffness, or a bearing)', advice that does not fit; rows of bearings said 'load:
+    missing: every row needs a load'. Both now say the latter."""
+    for text in ("balls,load,stiffness\n8,,46000\n", "bearing,load\n306,\n"):
+        r = _batch(text)
+        assert r.stderr.startswith("Warning: row 2: load: missing: every row needs a load\n")
+
+
+@pytest.mark.parametrize("chunk", ["1", "100"])
+def test_a_row_failing_alone_in_its_method_or_chunk_is_named_not_fatal(chunk):
+    """A row whose solve fails (a load too small for the rating life, a one-ball approach out
+    of range) ended the whole run with 'Error: Invalid value for '--load': ...' (exit 2, the
+    csv header already written) when it was the only row of its method or of its chunk: the
+    row-by-row fallback re-raised for a single row. It is a skipped row like any other."""
+    for text in (
+        "load,bearing,method\n1e-300,306,stribeck\n1000,306,exact\n",
+        "load,bearing\n1e-300,NU206\n1000,306\n",
+    ):
+        r = _batch(text, "--chunk-size", chunk)
+        assert r.exit_code == 1, r.output
+        assert r.stderr.startswith("Warning: row 2: load: ")
+        assert [line.split(",")[0] for line in r.stdout.splitlines()[1:]] == ["3"]
+
+
+def test_stderr_is_in_row_order_whatever_the_chunk_size():
+    """Within a chunk the skipped rows were printed before the checks' warnings, so with the
+    default chunk 'row 4: ...' came before 'row 3: only one ball carries the load', and with
+    --chunk-size 1 after it: standard error hung on --chunk-size."""
+    text = "balls,bearing,load\n8,306,1000\n3,306,3\n0,306,-5\n"
+    found = {c: _batch(text, "--chunk-size", c).stderr for c in ("1", "2", "100")}
+    assert found["1"] == found["2"] == found["100"]
+    assert found["1"].index("row 3:") < found["1"].index("row 4:")
+
+
+def test_a_row_with_two_errors_names_the_same_one_whatever_the_chunk():
+    """A balls cell of 8.5 was read by numpy without the whole-number check when its column
+    was all bare numbers, so a row with two errors was named by one or the other depending
+    on its neighbours ('stiffness: missing' or 'balls: must be a whole number'); and the
+    row checks overwrote the parser's first error."""
+    text = "load,balls,cage_angle\n-5,9.5,0\n300kgf,,-400\n"
+    out = {c: _batch(text, "--chunk-size", c).stderr for c in ("1", "2")}
+    assert out["1"] == out["2"]
+    assert out["1"].startswith("Warning: row 2: balls: must be a whole number (got 9.5)")
+
+
+def test_batch_reads_a_roller_rows_stiffness_in_its_own_unit_beside_an_exponent_column():
+    """With an 'exponent' column in the file, a roller row whose exponent cell is blank had its
+    stiffness read in N/mm^1.5: '4700kgf/mm^1.5' was taken (as kgf/mm^(10/9)) where solve
+    refuses it, and '3e5N/mm^(10/9)' refused where solve takes it."""
+    text = (
+        "bearing,load,stiffness,exponent\n"
+        "NU204,5kN,3e5N/mm^(10/9),\n"
+        "NU204,5kN,4700kgf/mm^1.5,\n"
+        "306,5kN,4e5N/mm^1.5,\n"
+    )
+    solved = _run("solve", "NU204", "-F", "5kN", "-K", "3e5N/mm^(10/9)", "--format", "csv")
+    assert solved.exit_code == 0
+    refused = _run("solve", "NU204", "-F", "5kN", "-K", "4700kgf/mm^1.5")
+    assert refused.exit_code == 2
+    for chunk in ("1", "100"):
+        r = _batch(text, "--chunk-size", chunk)
+        assert r.exit_code == 1, r.output
+        assert [line.split(",")[0] for line in r.stdout.splitlines()[1:]] == ["2", "4"]
+        assert r.stderr.startswith("Warning: row 3: stiffness: the unit 'kgf/mm^1.5'")
+        assert (
+            r.stdout.splitlines()[1].split(",")[11] == solved.stdout.splitlines()[1].split(",")[9]
+        )
