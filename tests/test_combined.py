@@ -257,7 +257,7 @@ def test_axial_only_closed_form(clearance, fa):
 
 
 def test_groove_geometry_and_axial_only_keep_the_scalar_contract():
-    """Scalars in, Python floats out (validate.scalar_out); arrays in, arrays out."""
+    """Scalars in, Python floats out (numerics.scalar_out); arrays in, arrays out."""
     geometry = groove_geometry(11.5, 43.5, 0.52, 0.53, 0.01)
     assert all(type(v) is float for v in geometry)
     assert all(type(v) is float for v in axial_only(7, 1000.0, K_6305, geometry[0], 0.01))

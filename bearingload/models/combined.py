@@ -180,17 +180,17 @@ class CombinedDistribution:
     @property
     def stiffness_radial(self) -> Any:
         """dF_x/dx, the radial stiffness along the load line. [N/mm]"""
-        return validate.scalar_out(self.stiffness_matrix[..., 0, 0])
+        return numerics.scalar_out(self.stiffness_matrix[..., 0, 0])
 
     @property
     def stiffness_axial(self) -> Any:
         """dF_a/d(axial), the axial stiffness. [N/mm]"""
-        return validate.scalar_out(self.stiffness_matrix[..., 2, 2])
+        return numerics.scalar_out(self.stiffness_matrix[..., 2, 2])
 
     @property
     def stiffness_tilt(self) -> Any:
         """dM/d(tilt), the tilting stiffness in the plane of the load. [N mm/rad]"""
-        return validate.scalar_out(self.stiffness_matrix[..., 3, 3])
+        return numerics.scalar_out(self.stiffness_matrix[..., 3, 3])
 
     @property
     def loaded_balls(self) -> Any:
