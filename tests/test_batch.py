@@ -8,11 +8,12 @@ import json
 import os
 import re
 
+import numpy as np
 import pytest
 from click.testing import CliRunner
 
 from bearingload.cli import main
-from bearingload.reports.render import _machine_text, csv_block
+from bearingload.reports.render import Column, _machine_text, csv_block
 
 from .cli_helpers import run_entry
 
@@ -205,123 +206,42 @@ def test_chunk_boundaries_do_not_change_the_bytes(tmp_path, fmt):
         assert other.stderr == one.stderr
 
 
-def test_reads_of_any_size_give_the_same_bytes(tmp_path, monkeypatch):
-    """The file is read in large parts cut at line ends: parts smaller than a line, a last line
-    without its line end, quotes and a line that is not UTF-8 after the first part change
-    nothing."""
-    from bearingload.studies import batch_input
-
+def test_chunks_of_any_size_give_the_same_bytes(tmp_path):
+    """A last line without its line end, quotes (a cell read by the csv module) and a line that
+    is not UTF-8 change nothing, whatever the chunk size (one row at a time included)."""
     p = _long_file(tmp_path)
     text = open(p, "rb").read()
     lines = text.splitlines(keepends=True)
-    lines[20] = lines[20].replace(b",", b'"",', 1)  # the csv module reads from here on
+    lines[20] = lines[20].replace(b",", b'"",', 1)
     lines[30] = lines[30][:-1] + b"\xff\n"
     variants = {"plain": text, "no last line end": text[:-1], "quoted": b"".join(lines)}
     for name, data in variants.items():
         q = tmp_path / f"{name}.csv"
         q.write_bytes(data)
         whole = batch(str(q), "--format", "csv")
-        for read, size in ((1, "3"), (7, "4"), (64, "1"), (1000, "50")):
-            monkeypatch.setattr(batch_input, "READ_BYTES", read)
+        for size in ("1", "3", "4", "50"):
             part = batch(str(q), "--format", "csv", "--chunk-size", size)
-            assert (part.stdout, part.stderr) == (whole.stdout, whole.stderr), (name, read)
-        monkeypatch.undo()
+            assert (part.stdout, part.stderr) == (whole.stdout, whole.stderr), (name, size)
 
 
-def test_small_chunks_search_each_read_byte_once(monkeypatch):
-    """--chunk-size 1 on a long file: the line ends of each read are searched once, not once per
-    piece cut from it (that made reading quadratic: 2*10^5 rows took 85 s instead of 0.3 s)."""
-    import numpy as np
+def test_a_chunk_reads_only_its_own_lines():
+    """The file is read chunk by chunk (memory flat however long it is): the first chunk of 7
+    rows is given before the lines after it are read."""
+    from bearingload.batch.read import read_cases
 
-    from bearingload.studies import batch_input
+    read = [0]
 
-    data = b"".join(b"%d,8,1e5\n" % i for i in range(20_000))
-    searched = [0]
-    frombuffer = np.frombuffer
+    def lines():
+        yield b"balls,load,stiffness\n"
+        for i in range(10_000):
+            read[0] += 1
+            yield b"%d,8,1e5\n" % (i + 1)
 
-    def counting(buffer, *args, **kwargs):
-        searched[0] += len(buffer)
-        return frombuffer(buffer, *args, **kwargs)
-
-    monkeypatch.setattr(batch_input, "READ_BYTES", 1 << 16)
-    monkeypatch.setattr(np, "frombuffer", counting)
-    for size in (1, 7):
-        searched[0] = 0
-        pieces = list(batch_input._pieces(io.BytesIO(data), size))
-        assert b"".join(pieces) == data
-        assert all(p.count(b"\n") == size for p in pieces[:-1])
-        assert searched[0] <= 2 * len(data)
-
-
-def test_long_file_tuning_changes_no_byte_and_is_undone(tmp_path, monkeypatch):
-    """A long first chunk tunes the process (malloc, garbage collector): the same bytes, and
-    the collector's settings are given back (the command may run inside a Python process)."""
-    import gc
-
-    from bearingload.cli import batch as batch_command
-
-    p = _long_file(tmp_path)
-    plain = batch(p, "--format", "csv")
-    before = gc.get_threshold(), gc.get_freeze_count()
-    monkeypatch.setattr(batch_command, "LONG_CHUNK", 2)
-    tuned = batch(p, "--format", "csv")
-    assert (tuned.stdout, tuned.stderr, tuned.exit_code) == (
-        plain.stdout, plain.stderr, plain.exit_code
-    )  # fmt: skip
-    assert (gc.get_threshold(), gc.get_freeze_count()) == before
-
-
-def test_long_file_tuning_leaves_objects_frozen_before_frozen(tmp_path, monkeypatch):
-    """A program that froze its objects (gc.freeze before forking workers) runs batch on a long
-    file: its objects stay frozen (gc.unfreeze would thaw them all)."""
-    import gc
-
-    from bearingload.cli import batch as batch_command
-
-    p = _long_file(tmp_path)
-    monkeypatch.setattr(batch_command, "LONG_CHUNK", 2)
-    mine = [[] for _ in range(3)]  # the program's objects
-    gc.freeze()
-    try:
-        assert not any(o is mine for o in gc.get_objects())  # frozen: in no generation
-        assert batch(p, "--format", "csv").exit_code == 1
-        assert not any(o is mine for o in gc.get_objects())
-    finally:
-        gc.unfreeze()
-    assert any(o is mine for o in gc.get_objects())
-
-
-def test_malloc_is_tuned_only_in_a_process_of_its_own(tmp_path, monkeypatch, capsys):
-    """glibc's malloc settings cannot be given back (a program that ran batch would keep every
-    megabyte it frees afterwards): only the console entry point, whose process batch owns,
-    sets them; click's main inside another program does not."""
-    from bearingload.cli import batch as batch_command
-
-    p = _long_file(tmp_path)
-    calls: list[int] = []
-    monkeypatch.setattr(batch_command, "LONG_CHUNK", 2)
-    monkeypatch.setattr(batch_command, "_keep_freed_memory", lambda: calls.append(1))
-    inside = batch(p, "--format", "csv")
-    assert calls == []
-    code, out, err = run_entry(capsys, "batch", p, "--format", "csv")
-    assert calls == [1]
-    assert (code, out, err) == (1, inside.stdout, inside.stderr)
-
-
-@pytest.mark.parametrize("libc", ["missing", "no mallopt"])
-def test_malloc_tuning_without_glibc_is_skipped(monkeypatch, libc):
-    """No C library to load, or one without mallopt (not glibc): nothing is tuned, no error."""
-    import ctypes
-
-    from bearingload.cli.batch import _keep_freed_memory
-
-    def cdll(name):
-        if libc == "missing":
-            raise OSError("no such library")
-        return object()
-
-    monkeypatch.setattr(ctypes, "CDLL", cdll)
-    _keep_freed_memory()
+    header, blocks = read_cases(lines(), 7)  # type: ignore[arg-type]
+    first = next(blocks)
+    assert header.names == ("balls", "load", "stiffness")
+    assert first.numbers == list(range(2, 9)) and read[0] <= 8
+    assert sum(len(b.numbers) for b in blocks) == 10_000 - 7 and read[0] == 10_000
 
 
 def test_answer_does_not_depend_on_neighbours(tmp_path):
@@ -382,8 +302,60 @@ def test_csv_block_matches_render():
     assert whole == "v [N],n\n" + block
 
 
+def test_render_csv_is_csv_block():
+    """Small tables (render) and long streamed ones (csv_block) write the same bytes: floats at
+    ten digits as machine_number keeps them, text quoted where it must be, blanks, booleans."""
+    from bearingload.reports.render import Column, Table, render
+
+    awkward = [0.0, -0.0, 1.0, -1.0, 0.1, 1 / 3, 1.5, 100.0, 1e-4, 1e-5, 9.99999999995e-5, 1e9,
+               1e10, 9999999999.5, 12345678905.0, 1e15, 1e16, 9.9999999995e15, 1e22, 1e-13,
+               1e300, -1e-300, 5e-324, 1.7976931348623157e308, 0.30000000000000004, 123.456]  # fmt: skip
+    cols = [Column("v", "v", "N", 6), Column("n", "n"), Column("t", "t"), Column("o", "o")]
+    values = {
+        "v": awkward,
+        "n": list(range(len(awkward))),
+        "t": ["x,y", 'q"', "plain"] * 8 + ["µm", ""],
+        "o": [None, True, 3, 2.5] * 6 + ["z", -0.0],
+    }
+    rows = [dict(zip(values, r, strict=True)) for r in zip(*values.values(), strict=True)]
+    whole = render([Table("t", cols, rows)], "csv")
+    assert whole == "v [N],n,t,o\n" + csv_block(cols, values)
+    assert whole == "v [N],n,t,o\n" + csv_block(cols, {"v": np.array(awkward)} | {
+        k: values[k] for k in "nto"})  # fmt: skip
+    assert '"x,y"' in whole and '"q"""' in whole
+    lines = whole.splitlines()[1:]
+    assert [line.split(",")[0] for line in lines] == [_machine_text(v) for v in awkward]
+    assert [float(line.split(",")[0]) for line in lines] == [float(f"{v:.10g}") for v in awkward]
+
+
+def test_integers_and_constant_columns():
+    v = np.array([0, -1, 7, 10, 99, 100, -123456789, 9999999999, 2**62, -(2**62)])
+    assert csv_block([Column("i", "i")], {"i": v}).splitlines() == [str(x) for x in v.tolist()]
+    for constant in (np.full(3, 1.5), np.full(3, -0.0), np.array([0.0, -0.0, 0.0])):
+        assert csv_block([Column("f", "f")], {"f": constant}).splitlines() == [
+            _machine_text(x) for x in constant.tolist()
+        ]
+
+
+def test_non_finite_refused_with_its_column():
+    cols = [Column("a", "a"), Column("b", "b")]
+    with pytest.raises(ValueError, match="non-finite number in column 'b'"):
+        csv_block(cols, {"a": [1.0, 2.0], "b": np.array([1.0, np.inf])})
+    with pytest.raises(ValueError, match="non-finite number in column 'a'"):
+        csv_block(cols, {"a": [1.0, float("nan")], "b": np.array([1.0, 2.0])})
+
+
+def test_negative_zero_beside_a_blank_cell_keeps_its_sign():
+    """A list column with a None beside -0.0 wrote 0.0 (the blank's filler was 'v or 0');
+    the same column without the None writes -0.0, as the renderer does one value at a time."""
+    cols = [Column("v", "v")]
+    assert csv_block(cols, {"v": [-0.0, None, 1.5]}) == "-0.0\n\n1.5\n"
+    assert csv_block(cols, {"v": [-0.0, 1.5]}) == f"{_machine_text(-0.0)}\n1.5\n"
+    assert csv_block(cols, {"v": np.array([-0.0, 1.5])}) == "-0.0\n1.5\n"
+
+
 def test_held_formats_refuse_above_their_limit(tmp_path, monkeypatch):
-    import bearingload.reports.batch as report
+    import bearingload.batch.report as report
 
     monkeypatch.setattr(report, "MAX_HELD_ROWS", 10)
     p = _long_file(tmp_path, n=30)

@@ -286,3 +286,66 @@ def test_a_tilt_radius_without_a_combined_load_is_refused_for_its_row():
     assert "(axial_load, moment, moment_cross, misalignment) tilts the ring" in lines[0]
     strict = _batch(text, "--format", "csv", "--strict")
     assert strict.exit_code == 2 and "tilt_radius" in strict.stderr
+
+
+def test_life_columns_do_not_choose_the_engine():
+    """rotating and dynamic_rating feed the lives only (as solve's --rotating and
+    --dynamic-rating): a file whose rows differ only by a rotating cell gives every row the load
+    distribution of the radial engine, and each row's L10r and L10 are solve's for its options.
+    A rotating or dynamic_rating column made every row of the file a combined-load case."""
+    text = ("bearing,load,clearance,rotating,dynamic_rating\n6205,1.4kN,C3,,\n"
+            "6205,1.4kN,C3,outer,\n6205,1.4kN,C3,inner,20kN\n")  # fmt: skip
+    out = _batch(text, "--format", "csv")
+    assert out.exit_code == 0, out.stderr
+    rows = _rows(out.stdout)
+    options = [[], ["--rotating", "outer"], ["--rotating", "inner", "--dynamic-rating", "20kN"]]
+    radial = _rows(
+        CliRunner()
+        .invoke(main, ["solve", "6205", "-F", "1.4kN", "-G", "C3", "--format", "csv"])
+        .stdout
+    )[0]
+    for row, extra in zip(rows, options, strict=True):
+        assert row["method"] == "exact"
+        for key in ("q_max [N]", "k", "loaded_balls", "load_zone [°]", "x [mm]", "y [mm]"):
+            assert row[key] == radial[key], key
+        args = ["solve", "6205", "-F", "1.4kN", "-G", "C3", *extra, "--format", "csv"]
+        expected = _rows(CliRunner().invoke(main, args).stdout)[0]
+        for key, value in expected.items():  # a file of bearings: stiffness in N/mm^m
+            assert row[key.replace("N/mm^1.5", "N/mm^m")] == value, (extra, key)
+    assert (
+        rows[1]["reference_rating_life [10^6 rev]"] != rows[0]["reference_rating_life [10^6 rev]"]
+    )
+    assert rows[2]["rating_life [10^6 rev]"] != rows[0]["rating_life [10^6 rev]"]
+
+
+def test_the_load_of_each_row_chooses_its_engine():
+    """In a file with an axial_load column, a row with an axial_load cell (0 included) is a
+    combined-load case as solve -A solves it; a row without one is a radial case, as solve
+    without -A, filling the columns the two engines share."""
+    text = "bearing,load,axial_load,clearance\n6205,1kN,,C3\n6205,1kN,0,C3\n6205,1kN,300N,C3\n"
+    out = _batch(text, "--format", "csv")
+    assert out.exit_code == 0, out.stderr
+    rows = _rows(out.stdout)
+    assert [r["method"] for r in rows] == ["exact", "combined", "combined"]
+    for row, extra in zip(rows, ([], ["-A", "0"], ["-A", "300N"]), strict=True):
+        args = ["solve", "6205", "-F", "1kN", "-G", "C3", *extra, "--format", "csv"]
+        expected = _rows(CliRunner().invoke(main, args).stdout)[0]
+        shared = [k for k in expected if k in row]
+        assert len(shared) > 12
+        for key in shared:
+            assert row[key] == expected[key], (extra, key)
+    assert rows[0]["axial_load [N]"] == rows[0]["tilt [°]"] == ""
+
+
+def test_a_rotating_cell_solve_refuses_is_a_skipped_row():
+    """--rotating where no L10r is computed (a roller bearing, no C_r, another method) is
+    refused by solve; a rotating cell there is a skipped row naming the reason, in column names."""
+    text = ("bearing,balls,ball_diameter,pitch_diameter,load,rotating\nNU206,,,,5kN,outer\n"
+            ",7,11.5,43.5,1kN,outer\n6205,,,,1kN,outer\n")  # fmt: skip
+    out = _batch(text, "--format", "csv")
+    assert out.exit_code == 1
+    assert [r["row"] for r in _rows(out.stdout)] == ["4"]
+    lines = out.stderr.splitlines()
+    assert lines[0].startswith("Warning: row 2: rotating: it names the rotating ring")
+    assert "ball bearings only" in lines[0]
+    assert lines[1].startswith("Warning: row 3: rotating: ") and "give dynamic_rating" in lines[1]

@@ -150,21 +150,26 @@ def test_batch_solves_misalignment_rows_in_one_call(monkeypatch):
 def test_batch_misalignment_rows_are_each_the_row_alone_bit_for_bit():
     """The quantities batch computes for a group of misalignment rows (one call) are those of
     each row solved alone, to the last bit."""
-    from bearingload.studies.batch_combined import solve_combined_rows
+    from bearingload.studies.combined_bearing import combined_columns, solve_combined_bearing
 
     b = resolve_bearing("6205", clearance="C3")
-    rows = [{"row": i + 2, "bearing": b, "load": 1000.0 + 37 * i, "axial_load": 100.0 * (i % 3),
-             "moment": None, "misalignment": [0.0, 0.02, -0.05, 0.1][i % 4], "rotating": "inner",
-             "dynamic_rating": None, "cage_angle": 7.0 * i, "moment_cross": None,
-             "tilt_radius": None} for i in range(12)]  # fmt: skip
-    errors: dict[int, str] = {}
-    ((numbers, together),) = solve_combined_rows(rows, errors)
-    assert numbers == [r["row"] for r in rows] and not errors
-    for i, r in enumerate(rows):
-        ((_, alone),) = solve_combined_rows([r], errors)
+    i = np.arange(12)
+    load, axial = 1000.0 + 37 * i, 100.0 * (i % 3)
+    tilt, cage = np.array([0.0, 0.02, -0.05, 0.1])[i % 4], 7.0 * i
+
+    def solved(rows):
+        (case,) = solve_combined_bearing([b], load[rows], axial[rows], misalignment=tilt[rows],
+                                         cage_angle=cage[rows])  # fmt: skip
+        return combined_columns(case)
+
+    together = solved(i)
+    for j in i.tolist():
+        alone = solved([j])
         for key, value in alone.items():
             if isinstance(value, np.ndarray):
-                assert np.array_equal(value, together[key][i : i + 1]), key
+                assert np.array_equal(value, np.broadcast_to(together[key], (12,))[j : j + 1]), key
+            elif isinstance(value, list):
+                assert value == together[key][j : j + 1], key
 
 
 # ----------------------------------------------------------------- 2. no ball past its groove

@@ -60,22 +60,7 @@ def max_contact_pressures(
     bearing: ResolvedBearing, load: Any, contact_angle: Any = 0.0
 ) -> tuple[float, float] | None:
     """Maximum pressures of the inner and outer contact of a rolling element under ``load``,
-    or the largest of each contact over several balls.
-
-    A ball at the contact angle alpha touches raceways whose curvature in the rolling direction
-    is 2 cos(alpha)/(d_m -+ D_w cos(alpha)) (inner, outer; Harris & Kotzalas, ISO/TS 16281),
-    that of a zero-angle bearing of pitch diameter d_m/cos(alpha): exact Hertz theory
-    (:func:`bearingload.contact.hertz.ball_contacts`) at that pitch diameter, the curvatures
-    the combined-load solver gives the ball stiffness with.
-
-    Parameters
-    ----------
-    bearing : ResolvedBearing
-        Balls need D_w, d_m, f_i, f_o; rollers D_w, d_m, L_we.
-    load : float or array_like
-        Rolling-element load Q >= 0, or the loads of several balls. [N]
-    contact_angle : float or array_like
-        Contact angle of each ball (balls only; rollers: 0). [°]
+    or the largest of each contact over several balls (see :func:`contact_pressures`). [MPa]
 
     Returns
     -------
@@ -83,12 +68,43 @@ def max_contact_pressures(
         (p_inner, p_outer), each the largest over the balls given [MPa]; None when the geometry
         is not known (stiffness given by hand).
     """
+    found = contact_pressures(bearing, load, contact_angle)
+    if found is None:
+        return None
+    return float(np.max(found[0])), float(np.max(found[1]))
+
+
+def contact_pressures(bearing: ResolvedBearing, load: Any, contact_angle: Any = 0.0) -> Any:
+    """Maximum pressures of the inner and outer contact of each rolling element load given.
+
+    A ball at the contact angle alpha touches raceways whose curvature in the rolling direction
+    is 2 cos(alpha)/(d_m -+ D_w cos(alpha)) (inner, outer; Harris & Kotzalas, ISO/TS 16281),
+    that of a zero-angle bearing of pitch diameter d_m/cos(alpha): exact Hertz theory
+    (:func:`bearingload.contact.hertz.ball_contacts`) at that pitch diameter, the curvatures
+    the combined-load solver gives the ball stiffness with. Rollers: Johnson's line contact
+    (:func:`bearingload.bearings.rollers.line_contact_pressure`).
+
+    Parameters
+    ----------
+    bearing : ResolvedBearing
+        Balls need D_w, d_m, f_i, f_o; rollers D_w, d_m, L_we.
+    load : float or array_like
+        Rolling-element loads Q >= 0 (one case's balls, or the heaviest ball of many cases). [N]
+    contact_angle : float or array_like
+        Contact angle of each ball (balls only; rollers: 0). [°]
+
+    Returns
+    -------
+    (p_inner, p_outer) or None
+        Floats for one load, arrays of the shape of ``load`` otherwise [MPa]; None when the
+        geometry is not known (stiffness given by hand).
+    """
     if bearing.kind == "roller":
         if bearing.roller_length is None or bearing.ball_diameter is None:
             return None
         from bearingload.bearings.rollers import line_contact_pressure
 
-        p_i, p_o = line_contact_pressure(
+        return line_contact_pressure(
             load,
             bearing.roller_length,
             bearing.ball_diameter,
@@ -96,17 +112,19 @@ def max_contact_pressures(
             bearing.modulus,
             bearing.poisson,
         )
-        return float(np.max(p_i)), float(np.max(p_o))
     dw, dm, fi, fo = bearing.ball_diameter, bearing.pitch_diameter, bearing.f_i, bearing.f_o
     if dw is None or dm is None or fi is None or fo is None:
         return None
-    if np.ndim(load) == 0 and np.ndim(contact_angle) == 0 and float(contact_angle) == 0.0:
+    if np.ndim(contact_angle) == 0 and float(contact_angle) == 0.0:
         from bearingload.contact.hertz import ball_contacts
 
-        c = ball_contacts(float(load), dw, dm, fi, fo, bearing.modulus, bearing.poisson)
-        return float(c.inner.p_max), float(c.outer.p_max)
-    p_i, p_o = ball_pressures(bearing, load, contact_angle)
-    return float(np.max(p_i)), float(np.max(p_o))
+        one = np.ndim(load) == 0
+        c = ball_contacts(float(load) if one else np.asarray(load, dtype=float), dw, dm, fi, fo,
+                          bearing.modulus, bearing.poisson)  # fmt: skip
+        if one:
+            return float(c.inner.p_max), float(c.outer.p_max)
+        return np.asarray(c.inner.p_max), np.asarray(c.outer.p_max)
+    return ball_pressures(bearing, load, contact_angle)
 
 
 def ball_pressures(

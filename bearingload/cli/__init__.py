@@ -86,11 +86,6 @@ def _refuse_detached_units(args: list[str]) -> None:
             )
 
 
-#: ``ctx.obj`` of a command run by :func:`run`, the console entry point: the process is the
-#: command's own, so that a command may tune it for good (batch: glibc's malloc), which it must
-#: not do inside another Python program (click's ``main``, a test runner).
-OWN_PROCESS = "bearingload owns the process"
-
 #: Exit status of an internal error (a bug), apart from 1 (batch: rows skipped) and 2 (usage).
 INTERNAL_ERROR = 3
 
@@ -105,9 +100,7 @@ def run(argv: list[str] | None = None) -> None:
 
     try:
         _refuse_detached_units(sys.argv[1:] if argv is None else argv)
-        status = main.main(
-            args=argv, prog_name="bearingload", standalone_mode=False, obj=OWN_PROCESS
-        )
+        status = main.main(args=argv, prog_name="bearingload", standalone_mode=False)
         if isinstance(status, int) and status:  # ctx.exit(n) returns n without standalone mode
             sys.exit(status)
     except click.exceptions.Exit as exc:

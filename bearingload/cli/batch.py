@@ -4,17 +4,12 @@ from __future__ import annotations
 
 import sys
 import time
-from collections.abc import Iterator
-from contextlib import contextmanager
 from itertools import compress
 from typing import Any, BinaryIO
 
 import click
 
 from bearingload.cli.options import CONTEXT, library_errors, output_options
-
-#: Rows of a first chunk from which the run is tuned for a long file (:func:`_tuned`).
-LONG_CHUNK = 20_000
 
 #: Warnings shown on the terminal; json lists every row's warnings.
 MAX_WARNINGS_SHOWN = 20
@@ -32,7 +27,7 @@ MAX_WARNINGS_SHOWN = 20
     type=click.IntRange(min=1),
     default=None,
     help="Rows read, solved and written at a time; the output does not depend on it. "
-    "Default: 50000, or 10000 for combined-load cases.",
+    "Default: 10000.",
 )
 @output_options
 @library_errors
@@ -52,24 +47,26 @@ def batch(
     column's bare numbers; a number with its own unit (300kgf) keeps it. An unknown column is
     an error (exit 2).
 
-    A column axial_load, moment, moment_cross, misalignment, tilt_radius (groove, pitch or a
-    length), dynamic_rating or rotating (inner, outer) makes every row a combined-load case of a
-    deep-groove ball bearing, as 'solve --axial-load ...' solves it (3-D ring equilibrium,
-    ISO/TS 16281 L10r, ISO 281 L10; load may then be 0), with every column solve writes (the
-    largest contact pressures, every ball at its contact angle, and ISO 76's P0 and s0 among
-    them): the file names a bearing or the ball geometry, and has no method, exponent or
-    revolutions column. A tilt_radius cell needs an axial_load, moment, moment_cross or
-    misalignment cell on its row (as --tilt-radius needs a combined load); a row without is
-    skipped. The rows of one bearing are solved together by one vectorised call.
+    dynamic_rating (C_r replacing the catalogue's) and rotating (inner, outer: the ring of the
+    reference rating life L10r) feed the lives only. As for 'solve', the load alone chooses a
+    row's engine: a cell in axial_load, moment, moment_cross or misalignment makes the row a
+    combined-load case of a deep-groove ball bearing (3-D ring equilibrium, ISO/TS 16281 L10r,
+    ISO 281 L10; load may then be 0), with tilt_radius (groove, pitch or a length) the lever
+    of its tilt; a row without such a cell is a radial case. A file with one of these columns
+    writes the columns solve writes with an axial load (a radial row of it fills those the two
+    engines share), names a bearing or the ball geometry, and has no method, exponent or
+    revolutions column. A tilt_radius cell without a combined load on its row is refused.
 
     A bad row (a negative load, an unknown unit or bearing, z = 0, a line with the wrong
-    number of cells, a line that is not UTF-8 text) is named on standard error with its row number and the reason; the other
-    rows are still solved and written, and the exit status is 1 when any row was skipped
-    (0: every row solved; 2: bad command line or header, or a bad row with --strict).
+    number of cells, a line that is not UTF-8 text) is named on standard error with its row
+    number and the reason; the other rows are still solved and written, and the exit status is
+    1 when any row was skipped (0: every row solved; 2: bad command line or header, or a bad
+    row with --strict).
 
-    The rows of one method are solved together, chunk by chunk, by one vectorised call of
-    the model. csv is streamed (any number of rows, -o written whole at the end); json,
-    markdown and table hold every row and refuse files over 100000 rows.
+    The rows that share a bearing (or ring), method and engine are solved together, chunk by
+    chunk, by one vectorised call of the function solve uses for one case; each row's answer
+    depends on its own cells only. csv is streamed (any number of rows, -o written whole at
+    the end); json, markdown and table hold every row and refuse files over 100000 rows.
 
     \b
     Examples:
@@ -82,35 +79,36 @@ def batch(
       # combined loads: axial load, moment or misalignment, L10r (ISO/TS 16281) per row
       bearingload batch examples/combined_cases.csv --format csv
     """
+    from bearingload.batch.read import CHUNK_ROWS, read_cases
+    from bearingload.batch.report import (
+        MAX_HELD_ROWS,
+        batch_columns,
+        csv_head,
+        csv_rows,
+        row_values,
+    )
+    from bearingload.batch.solve import BatchSolver
     from bearingload.errors import InputError
-    from bearingload.reports.batch import MAX_HELD_ROWS, batch_columns, csv_head, csv_rows
-    from bearingload.studies.batch import BatchSolver
-    from bearingload.studies.batch_input import chunks
 
     if output == "":
         raise click.UsageError("Invalid value for '-o' / '--output': the file name is empty")
     try:
-        stream = chunks(cases, chunk_size)
-        first = next(stream, None)
+        header, blocks = read_cases(cases, chunk_size or CHUNK_ROWS)
     except InputError as exc:
         raise click.UsageError(_header_message(exc)) from exc
-    assert first is not None  # chunks() yields the header at least once
-    header = first[0]
     columns = batch_columns(header)
     solver = BatchSolver(header)
-    held: dict[str, list[Any]] = {}
+    held: dict[str, list[Any]] = {c.key: [] for c in columns if c.key != "row"}
     held_rows: list[int] = []
     skipped: list[tuple[int, str]] = []
-    warned = 0
+    warned = total = 0
     progress = _Progress()
-    total = 0
-    long_file = len(first[1]) >= LONG_CHUNK
-    with _Sink(fmt, output, strict) as sink, _tuned(long_file, _own_process()):
+    with _Sink(output, strict) as sink:
         if fmt == "csv":
             sink.write(csv_head(columns))
-        for _, lines in _all(first, stream):
-            total += len(lines)
-            part = solver.solve(lines)
+        for block in blocks:
+            total += len(block.numbers) + len(block.errors)
+            part = solver.solve(block)
             if part.errors and strict:
                 sink.fail()
                 row, message = part.errors[0]
@@ -128,15 +126,15 @@ def batch(
                         f"Invalid value for '--format': {fmt} holds every row and takes at most "
                         f"{MAX_HELD_ROWS} rows; write --format csv for longer files"
                     )
-                for k, v in part.values.items():
+                values = row_values(columns, len(part.rows), part.values)
+                values["warnings"] = part.values.get("warnings", [()] * len(part.rows))
+                for k, v in values.items():
                     held.setdefault(k, []).extend(v.tolist() if hasattr(v, "tolist") else v)
             progress.update(total)
         progress.clear()
         if fmt != "csv":
-            from bearingload.reports.batch import held_report
+            from bearingload.batch.report import held_report
 
-            if not held_rows:
-                held = {c.key: [] for c in columns if c.key != "row"}
             sink.write(held_report(columns, held_rows, held, skipped, fmt))
     if warned > MAX_WARNINGS_SHOWN:
         click.echo(
@@ -165,63 +163,6 @@ def _row_messages(part: Any, warned: int, progress: _Progress) -> int:
     return warned
 
 
-@contextmanager
-def _tuned(long_file: bool, own_process: bool) -> Iterator[None]:
-    """A long file allocates and frees the same large arrays chunk after chunk, and makes many
-    small objects (cells, row numbers): let the garbage collector pass less often over the
-    objects of start-up (its settings given back at the end, and objects someone else froze
-    left frozen: the command may run inside a Python program); and, on Linux and only in a
-    process of its own (:data:`bearingload.cli.OWN_PROCESS`), ask glibc's malloc to keep freed
-    memory for reuse (in one arena, which the writer threads share) rather than give it back
-    to the system and fault it in again. That cannot be undone: a program running batch would
-    keep every megabyte it frees afterwards. About 7 % of a 10^5-row run; the output does not
-    change."""
-    if not long_file:
-        yield
-        return
-    import gc
-
-    threshold = gc.get_threshold()
-    freeze = gc.get_freeze_count() == 0  # gc.unfreeze() would thaw the caller's objects too
-    if freeze:
-        gc.freeze()
-    gc.set_threshold(50_000, 20, 20)
-    if own_process:
-        _keep_freed_memory()
-    try:
-        yield
-    finally:
-        gc.set_threshold(*threshold)
-        if freeze:
-            gc.unfreeze()
-
-
-def _own_process() -> bool:
-    from bearingload.cli import OWN_PROCESS
-
-    return click.get_current_context().obj == OWN_PROCESS
-
-
-def _keep_freed_memory() -> None:
-    """glibc's malloc: keep freed memory, and one arena (process-wide, for good)."""
-    if not sys.platform.startswith("linux"):
-        return
-    try:
-        import ctypes
-
-        libc = ctypes.CDLL(None)
-        libc.mallopt(-1, 1 << 30)  # M_TRIM_THRESHOLD
-        libc.mallopt(-3, 1 << 25)  # M_MMAP_THRESHOLD: arrays up to 32 MB from the heap
-        libc.mallopt(-8, 1)  # M_ARENA_MAX: one arena, shared by the writer threads
-    except (OSError, AttributeError):  # not glibc
-        pass
-
-
-def _all(first: Any, rest: Any) -> Any:
-    yield first
-    yield from rest
-
-
 def _header_message(exc: Exception) -> str:
     """'Invalid value for ...' of an error in the header line (a column's unit names it)."""
     if getattr(exc, "parameter", None) in ("CASES", "columns"):
@@ -234,7 +175,7 @@ class _Sink:
     copied to standard output at the end (``--strict``: nothing is written before the last row
     is known to be good), or standard output chunk by chunk."""
 
-    def __init__(self, fmt: str, output: str | None, strict: bool) -> None:
+    def __init__(self, output: str | None, strict: bool) -> None:
         self.output = None if output in (None, "-") else output
         self.spool = strict and self.output is None
         self.failed = False
@@ -257,13 +198,9 @@ class _Sink:
             self.fh = tempfile.TemporaryFile("w+", encoding="utf-8", newline="\n")
         return self
 
-    def write(self, text: str | bytes | bytearray) -> None:
-        """Write text, or csv lines already encoded as UTF-8 (written as they are)."""
+    def write(self, text: str) -> None:
         if self.output is None and not self.spool:
             click.echo(text, nl=False)
-        elif not isinstance(text, str):
-            self.fh.flush()
-            self.fh.buffer.write(text)
         else:
             self.fh.write(text)
 

@@ -104,15 +104,9 @@ def check_rotating(case: CaseOptions, b: Any, methods: list[str]) -> None:
     ring of: a roller bearing, no ball geometry, no C_r, or no exact ball loads."""
     if case.rotating is None:
         return
-    why = None
-    if b.kind != "ball":
-        why = f"L10r is computed for ball bearings only ({b.designation} is a {b.kind} bearing)"
-    elif not b.has_geometry:
-        why = "L10r needs the ball geometry (a BEARING, or --ball-diameter and --pitch-diameter)"
-    elif not (case.dynamic_rating or b.C):
-        why = "L10r needs the dynamic load rating C_r: give --dynamic-rating"
-    elif "exact" not in methods:
-        why = f"L10r needs the exact ball loads (--method {methods[0]} gives none)"
+    from bearingload.studies.reference_life import rotating_refusal
+
+    why = rotating_refusal(b, case.dynamic_rating, "exact" if "exact" in methods else methods[0])
     if why is not None:
         raise click.UsageError(
             "Invalid value for '--rotating': it names the rotating ring for the reference rating "

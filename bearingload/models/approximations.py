@@ -124,6 +124,6 @@ def _estimate(balls: Any, load: Any, constant: Any, rows: Any, angle: Any) -> Ap
         raise InputError("contact_angle", "must be at least 0° and less than 90°")
     k = c / (i * z * np.cos(np.deg2rad(alpha)))
     q = k * force
-    if np.ndim(k) == 0:
+    if np.ndim(q) == 0:  # one case (z alone an array, or the load alone: arrays)
         return Approximation(float(k), float(q))
     return Approximation(np.broadcast_to(k, q.shape).copy(), q)

@@ -92,7 +92,9 @@ def _human(value: Any, digits: int | None) -> str:
 
 def _machine_text(value: Any) -> str:
     v = machine_number(value)
-    return v if isinstance(v, str) else repr(v) if isinstance(v, float) else str(v)
+    return (
+        v if isinstance(v, str) else number_text(float(value)) if isinstance(v, float) else str(v)
+    )
 
 
 def render(tables: Sequence[Table], fmt: str, *, document: dict[str, Any] | None = None) -> str:
@@ -209,77 +211,57 @@ def csv_header(columns: Sequence[Column]) -> str:
 
 def csv_block(columns: Sequence[Column], values: dict[str, Any]) -> str:
     """csv lines (each with its line end) of column-wise ``values`` (key -> list or numpy
-    array over the rows; None in a list: a blank cell).
-
-    The cells are those :func:`render` writes for the same rows (floats at 10 significant
-    digits), built a whole column at a time (:mod:`bearingload.reports.csv_text`), so that a
-    long table is written in chunks at the cost of a few array operations per column.
-    """
-    return csv_bytes(columns, values).decode("utf-8")
-
-
-def csv_bytes(columns: Sequence[Column], values: dict[str, Any]) -> bytes | bytearray:
-    """:func:`csv_block` as UTF-8 bytes (what a long csv writes to its file)."""
-    from bearingload.reports.csv_text import join_rows
-
+    array over the rows; None in a list: a blank cell): the cells :func:`render` writes for the
+    same rows, so that a long table can be written in chunks."""
     if not columns or not len(values[columns[0].key]):
-        return b""
-    parts = [_column_part(values[c.key]) for c in columns]
-    try:
-        return join_rows(parts)
-    except ValueError as exc:  # a NaN or infinity: name its column
-        bad = next(c.key for c, (kind, data) in zip(columns, parts, strict=True)
-                   if kind == "f" and not _all_finite(data))  # fmt: skip
-        raise ValueError(f"refusing to write a non-finite number in column {bad!r}") from exc
+        return ""
+    cells = [_column_cells(c.key, values[c.key]) for c in columns]
+    return "\n".join(map(",".join, zip(*cells, strict=True))) + "\n"
 
 
-def _all_finite(data: Any) -> bool:
-    import numpy as np
+def number_text(value: float) -> str:
+    """The csv text of a float: ``repr(float(f"{value:.10g}"))`` (:func:`machine_number`),
+    the one formatting of every number in every csv. Where ``%.10g`` writes a point and no
+    exponent, that is already its text (the same digits in the same notation)."""
+    text = f"{value:.10g}"
+    if "." in text and "e" not in text:
+        return text
+    if not math.isfinite(value):
+        raise ValueError(f"refusing to write a non-finite number ({value})")
+    return repr(float(text))
 
-    values = data[0] if isinstance(data, tuple) else data
-    return bool(np.all(np.isfinite(np.asarray(values, dtype=float))))
 
-
-def _column_part(vals: Any) -> tuple[str, Any]:
-    """One column for :func:`bearingload.reports.csv_text.join_rows`: numbers as arrays (with
-    a mask of blank cells where a list holds None), anything else as text cells."""
-    import numpy as np
-
-    from bearingload.reports import csv_text
-
+def _column_cells(key: str, vals: Any) -> list[str]:
+    """The cells of one column: floats by :func:`number_text`, each distinct other value once."""
+    items = vals.tolist() if hasattr(vals, "tolist") else vals
     kind = getattr(getattr(vals, "dtype", None), "kind", "")
-    if not kind:
-        types = set(map(type, vals))
-        if types <= {float, int, type(None)} and not types <= {type(None)}:
-            dtype = np.int64 if types <= {int, type(None)} else float
-            kind = "i" if dtype is np.int64 else "f"
-            if type(None) not in types:
-                return kind, np.asarray(vals, dtype=dtype)
-            missing = np.array([v is None for v in vals], bool)
-            return kind, (np.asarray([0 if v is None else v for v in vals], dtype=dtype), missing)
-    if kind == "f":
-        return "f", vals
-    if kind and kind in "iu":
-        return "i", vals
-    if kind == "b":
-        pair = csv_text.text_cells([_cell(False), _cell(True)])
-        return "t", pair[np.asarray(vals, dtype=np.intp)]
-    items = vals.tolist() if kind else list(vals)
-    if items and type(items[0]) is str and items.count(items[0]) == len(items):
-        one = csv_text.text_cells([_cell(items[0])])
-        return "t", np.broadcast_to(one, (len(items), one.shape[1]))
-    plain = all(type(v) is str for v in items)  # text: the value is its own key
-    distinct: dict[Any, int] = {}
-    texts: list[str] = []
-    codes = []
-    for v in items:  # the text of each distinct value, once
-        k = v if plain else (type(v), repr(v))  # 1, 1.0 and True; 0.0 and -0.0 differ
-        i = distinct.get(k)
-        if i is None:
-            i = distinct[k] = len(texts)
-            texts.append(_cell(v))
-        codes.append(i)
-    return "t", csv_text.text_cells(texts)[np.asarray(codes, dtype=np.intp)]
+    try:
+        if kind == "f":
+            import numpy as np
+
+            same = np.all(vals == vals[0]) and np.all(np.signbit(vals) == np.signbit(vals[0]))
+            if same:  # one text for a constant column (y = 0, m = 1.5)
+                return [number_text(items[0])] * len(items)
+            return list(map(number_text, items))
+        if kind in ("i", "u") or (
+            items and type(items[0]) is int and set(map(type, items)) == {int}
+        ):
+            return list(map(str, items))
+        if kind == "b":
+            return list(map({True: "True", False: "False"}.__getitem__, items))
+        if items and type(items[0]) is str and items.count(items[0]) == len(items):
+            return [_cell(items[0])] * len(items)  # one text in every row (method exact)
+        seen: dict[Any, str] = {}
+        out = []
+        for v in items:
+            k = (type(v), v if type(v) is not float else repr(v))  # 0.0 and -0.0 differ
+            text = seen.get(k)
+            if text is None:
+                text = seen[k] = _cell(v)
+            out.append(text)
+        return out
+    except ValueError as exc:  # a NaN or infinity: name its column
+        raise ValueError(f"refusing to write a non-finite number in column {key!r}") from exc
 
 
 def _cell(value: Any) -> str:

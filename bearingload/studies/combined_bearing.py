@@ -20,6 +20,7 @@ from typing import TYPE_CHECKING, Any
 
 import numpy as np
 
+from bearingload import numerics
 from bearingload.bearings.resolve import ResolvedBearing
 from bearingload.errors import InputError
 
@@ -44,7 +45,7 @@ class CombinedCase:
     equivalent_load: float | None  # [N]
     rating_life: float | None  # [10^6 rev]
     reference_rating_life: float | None  # [10^6 rev]
-    warnings: tuple[str, ...] = ()
+    warnings: tuple[Any, ...] = ()  # one case: its sentences; many: a tuple per case
     p_max_inner: float | None = None  # largest over the balls, each at its contact angle [MPa]
     p_max_outer: float | None = None  # [MPa]
     static_equivalent_load: float | None = None  # P0, ISO 76 [N]
@@ -55,18 +56,20 @@ class CombinedCase:
 
 def solve_combined_bearing(
     bearings: Sequence[ResolvedBearing],
-    load: float,
-    axial_load: float = 0.0,
+    load: Any,
+    axial_load: Any = 0.0,
     *,
-    cage_angle: float = 0.0,
-    moment: float | None = None,
-    misalignment: float | None = None,
+    cage_angle: Any = 0.0,
+    moment: Any = None,
+    misalignment: Any = None,
     rotating: str = "inner",
     dynamic_rating: float | None = None,
-    moment_cross: float | None = None,
-    tilt_radius: str | float | None = None,
+    moment_cross: Any = None,
+    tilt_radius: Any = None,
 ) -> list[CombinedCase]:
-    """Solve each resolved bearing (one per clearance) under F_r, F_a and the moments.
+    """Solve each resolved bearing (one per clearance) under F_r, F_a and the moments; arrays of
+    loads, cage angles and moments solve many cases in one call (each
+    :class:`CombinedCase` then holds arrays or lists over them, ``warnings`` a tuple per case).
 
     Parameters
     ----------
@@ -86,42 +89,87 @@ def solve_combined_bearing(
         C_r replacing the catalogue's. [N]
     moment_cross : float, optional
         Moment about the load line (MASTA's M_x); None: not given (0). [N mm]
-    tilt_radius : {"groove", "pitch"} or float, optional
-        Lever of the tilt, see :mod:`bearingload.bearings.tilt`; None: groove. [mm]
+    tilt_radius : {"groove", "pitch"}, float or ndarray, optional
+        Lever of the tilt, see :mod:`bearingload.bearings.tilt`; None: groove; an array: the
+        lever of each case. [mm]
 
     Raises
     ------
     InputError
         ``ball_diameter`` when the geometry is unknown; the solver's own errors.
     """
-    from bearingload.bearings.checks import (
-        combined_warnings,
-        max_contact_pressures,
-        static_equivalent_load,
-        static_safety,
-    )
-    from bearingload.bearings.tilt import lever_warning, tilt_lever
+    from bearingload.bearings.tilt import tilt_lever
 
     out = []
     for b in bearings:
-        lever = tilt_lever(tilt_radius, b.pitch_diameter)
+        lever = (tilt_radius if isinstance(tilt_radius, np.ndarray)
+                 else tilt_lever(tilt_radius, b.pitch_diameter))  # fmt: skip
         r = solve_on_bearing(b, load, axial_load, cage_angle=cage_angle, moment=moment,
                              misalignment=misalignment, moment_cross=moment_cross,
                              tilt_radius=lever)  # fmt: skip
-        l10r, p_eq, life, c_r = life_figures(b, r, rotating, dynamic_rating)
-        pressures = max_contact_pressures(b, r.ball_loads, r.contact_angles)
-        p0 = static_equivalent_load(load, axial_load)
-        found = combined_warnings(b, load, axial_load, float(r.q_max), int(r.loaded_balls),
-                                  warned_tilt(r, moment, moment_cross, misalignment),
-                                  pressures)  # fmt: skip
-        if isinstance(tilt_radius, float) and (said := lever_warning(lever, b.pitch_diameter)):
-            found.append(said)
-        p_i, p_o = pressures if pressures is not None else (None, None)
-        out.append(CombinedCase(b, r, misalignment, rotating, c_r, p_eq, life,
-                                None if l10r is None else float(l10r), tuple(found), p_i, p_o,
-                                p0, static_safety(b.C0, p0), moment_cross,
-                                float(r.tilt_radius)))  # fmt: skip
+        out.append(_combined_case(b, r, load, axial_load, moment, misalignment, moment_cross,
+                                  lever, rotating, dynamic_rating))  # fmt: skip
     return out
+
+
+def _combined_case(
+    b: ResolvedBearing, r: CombinedDistribution, load: Any, axial_load: Any, moment: Any,
+    misalignment: Any, moment_cross: Any, lever: Any, rotating: str, dynamic_rating: Any,
+) -> CombinedCase:  # fmt: skip
+    """What derives from the solved case(s) ``r``: lives, the largest contact pressures, P0,
+    s0 and the checks of every case (one case: numbers; many: arrays or lists)."""
+    from bearingload.bearings.checks import (
+        combined_warnings,
+        contact_pressures,
+        static_equivalent_load,
+        static_safety,
+    )
+    from bearingload.bearings.tilt import lever_warning
+
+    shape = np.shape(r.q_max)
+
+    def each(value: Any) -> list[Any]:
+        return np.broadcast_to(np.asarray(value, dtype=float), shape).ravel().tolist()
+
+    c_r = dynamic_rating or b.C
+    l10r = p_eq = life = None
+    if c_r:
+        l10r = reference_lives(b, r, rotating, c_r)
+        p_eq, life = basic_lives(b, c_r, load, axial_load)
+    found = contact_pressures(b, r.ball_loads, r.contact_angles)
+    p_i = p_o = None
+    if found is not None:
+        p_i, p_o = np.max(found[0], axis=-1), np.max(found[1], axis=-1)
+    fr, fa, q = each(load), each(axial_load), each(r.q_max)
+    loaded = np.broadcast_to(r.loaded_balls, shape).ravel().tolist()
+    tilts = each(ring_tilt(r))
+    cross = [None] * len(q) if moment_cross is None else each(moment_cross)
+    tilted = [None] * len(q) if misalignment is None else each(misalignment)
+    warned = [
+        t if moment is not None or c else m for t, c, m in zip(tilts, cross, tilted, strict=True)
+    ]
+    inner = (
+        [None] * len(q)
+        if p_i is None or p_o is None
+        else list(zip(each(p_i), each(p_o), strict=True))
+    )
+    p0 = [static_equivalent_load(f, a) for f, a in zip(fr, fa, strict=True)]
+    checks = tuple(tuple(combined_warnings(b, fr[i], fa[i], q[i], int(loaded[i]), warned[i], inner[i]))
+                   for i in range(len(q)))  # fmt: skip
+    s0 = [static_safety(b.C0, p) for p in p0]
+    said = lever_warning(lever, b.pitch_diameter)  # (None for groove and pitch)
+    if said:
+        checks = tuple(c + (said,) for c in checks)
+    lever = numerics.scalar_out(r.tilt_radius)  # the lever used: given, or R_i
+    if shape == ():
+        p_eq = None if p_eq is None else float(p_eq)
+        life = None if life is None or np.isnan(life) else float(life)
+        return CombinedCase(b, r, misalignment, rotating, c_r, p_eq, life,
+                            None if l10r is None else float(l10r), checks[0],
+                            None if p_i is None else float(p_i), None if p_o is None else float(p_o),
+                            p0[0], s0[0], moment_cross, lever)  # fmt: skip
+    return CombinedCase(b, r, misalignment, rotating, c_r, p_eq, life, l10r, checks, p_i, p_o,
+                        p0, s0, moment_cross, lever)  # type: ignore[arg-type]  # fmt: skip
 
 
 def warned_tilt(
@@ -168,7 +216,7 @@ def solve_on_bearing(
     misalignment: Any = None,
     clearance: Any = None,
     moment_cross: Any = None,
-    tilt_radius: float | None = None,
+    tilt_radius: Any = None,
 ) -> CombinedDistribution:
     """The 3-D ring equilibrium of one resolved ball bearing, at one or many cage angles (or
     clearances).
@@ -306,18 +354,39 @@ def basic_lives(b: ResolvedBearing, c_r: float, fr: Any, fa: Any) -> tuple[Any, 
 
 def combined_values(c: CombinedCase) -> dict[str, Any]:
     """Every quantity of one case under its key of :mod:`bearingload.reports.quantities`."""
+    return {k: v if v is None or isinstance(v, str) else
+            v[0] if isinstance(v, list) else v.reshape(-1)[0].item()
+            for k, v in combined_columns(c).items() if k != "warnings"}  # fmt: skip
+
+
+def combined_columns(c: CombinedCase) -> dict[str, Any]:
+    """The quantities of :func:`combined_values` of every case of ``c`` (one or many): arrays,
+    lists (None where a case has no value), or text; and ``warnings``, one tuple per case."""
+    n = int(np.size(c.result.q_max))
+
+    def listed(value: Any) -> Any:
+        if value is None or isinstance(value, list):
+            return [value] * n if value is None else value
+        values = np.broadcast_to(np.asarray(value, dtype=float), (n,))
+        return [None if v != v else v for v in values.tolist()]  # NaN: no value
+
     columns = case_columns(
         c.bearing, c.result, c.misalignment, c.rotating, c.dynamic_rating,
         c.equivalent_load, c.rating_life, c.reference_rating_life,
         moment_cross=c.moment_cross, tilt_radius=c.tilt_radius,
     )  # fmt: skip
-    values = {k: v if v is None or isinstance(v, str) else v.reshape(-1)[0].item()
-              for k, v in columns.items()}  # fmt: skip
-    return values | {
-        "p_max_inner": c.p_max_inner,
-        "p_max_outer": c.p_max_outer,
-        "static_equivalent_load": c.static_equivalent_load,
-        "static_safety": c.static_safety,
+    for key in ("equivalent_load", "rating_life"):  # a moment alone, an F_a without f0: none
+        values = columns[key]
+        if values is not None and np.isnan(values).any():
+            columns[key] = listed(values)
+    return columns | {
+        "p_max_inner": listed(c.p_max_inner),
+        "p_max_outer": listed(c.p_max_outer),
+        "static_equivalent_load": np.broadcast_to(
+            np.asarray(c.static_equivalent_load, float), (n,)
+        ),
+        "static_safety": listed(c.static_safety),
+        "warnings": [c.warnings] if n == 1 and np.ndim(c.result.q_max) == 0 else list(c.warnings),
     }
 
 

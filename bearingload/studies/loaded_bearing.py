@@ -9,6 +9,7 @@ from __future__ import annotations
 
 from collections.abc import Sequence
 from dataclasses import dataclass
+from types import SimpleNamespace
 from typing import TYPE_CHECKING, Any
 
 import numpy as np
@@ -31,7 +32,9 @@ DEFAULT_REVOLUTIONS = 36e6
 
 @dataclass(frozen=True)
 class LoadedCase:
-    """One solved case.
+    """One solved case, or many solved at once (one bearing or ring, one method: inputs given as
+    arrays); then each number below is an array (a list for ``static_safety``) over the cases,
+    and ``warnings`` holds one tuple per case.
 
     Attributes
     ----------
@@ -62,14 +65,14 @@ class LoadedCase:
 
     result: Result
     bearing: ResolvedBearing | None = None
-    p_max_inner: float | None = None
-    p_max_outer: float | None = None
-    rating_life: float | None = None
-    allowable_load: float | None = None
-    revolutions: float | None = None
-    warnings: tuple[str, ...] = ()
-    static_safety: float | None = None
-    reference_rating_life: float | None = None
+    p_max_inner: Any = None
+    p_max_outer: Any = None
+    rating_life: Any = None
+    allowable_load: Any = None
+    revolutions: Any = None
+    warnings: tuple[Any, ...] = ()
+    static_safety: Any = None
+    reference_rating_life: Any = None
     rotating: str | None = None
 
     @property
@@ -79,33 +82,43 @@ class LoadedCase:
 
 def solve_ring(
     methods: Sequence[str],
-    balls: int,
-    load: float,
-    stiffness: float,
-    clearance: float = 0.0,
-    cage_angle: float = 0.0,
-    exponent: float = 1.5,
+    balls: Any,
+    load: Any,
+    stiffness: Any,
+    clearance: Any = 0.0,
+    cage_angle: Any = 0.0,
+    exponent: Any = 1.5,
 ) -> list[LoadedCase]:
-    """Solve one ring given by z and K by each of ``methods`` (registry names).
+    """Solve one ring given by z and K by each of ``methods`` (registry names); arrays of inputs
+    solve many rings in one call of each model (one :class:`LoadedCase` per method, its fields
+    arrays over the rings).
 
     Units: N, N/mm^m, mm (G_r), degrees. The inputs are checked once.
     """
     from bearingload.bearings.checks import element_warnings
 
     case = Case.of(balls, load, stiffness, clearance, cage_angle, exponent)
+    z = np.broadcast_to(np.asarray(balls), case.shape).ravel().tolist()
     out = []
     for m in methods:
         r = get_method(m).run(case)
-        out.append(LoadedCase(r, warnings=tuple(element_warnings(r, balls))))
+        loaded = _per_case(r.loaded_balls, case.shape)
+        seen: dict[tuple[Any, int], tuple[str, ...]] = {}  # the finding of each (loaded, z)
+        found = []
+        for key in zip(loaded, z, strict=True):
+            if key not in seen:
+                seen[key] = tuple(element_warnings(SimpleNamespace(loaded_balls=key[0]), key[1]))
+            found.append(seen[key])
+        out.append(LoadedCase(r, warnings=found[0] if r.case.shape == () else tuple(found)))
     return out
 
 
 def solve_bearing(
     bearings: Sequence[ResolvedBearing],
-    load: float,
-    cage_angle: float = 0.0,
+    load: Any,
+    cage_angle: Any = 0.0,
     methods: Sequence[str] = ("exact",),
-    revolutions: float = DEFAULT_REVOLUTIONS,
+    revolutions: Any = DEFAULT_REVOLUTIONS,
 ) -> list[LoadedCase]:
     """Solve each resolved bearing (one per clearance) by each of ``methods``.
 
@@ -113,20 +126,21 @@ def solve_bearing(
     ----------
     bearings : sequence of ResolvedBearing
         From :func:`bearingload.bearings.resolve.resolve_bearing` (and ``with_clearance``).
-    load : float
-        Radial load F_r. [N]
-    cage_angle : float
+    load : float or array_like
+        Radial load F_r; an array solves every load in one call of each model. [N]
+    cage_angle : float or array_like
         Angle of ball 1 from the load line. [°]
     methods : sequence of str
         Registered model names.
-    revolutions : float
+    revolutions : float or array_like
         Life L for the allowable load ``C/(L/10^6)^(1/3)``. [rev]
 
     Returns
     -------
     list of LoadedCase
-        Bearing by bearing, model by model. Contact pressures at each model's heaviest ball load
-        where the geometry is known; life and allowable load where C is known.
+        Bearing by bearing, model by model (with array inputs, each holds arrays over the
+        cases). Contact pressures at each model's heaviest ball load where the geometry is
+        known; life and allowable load where C is known.
     """
     out = []
     for b in bearings:
@@ -136,19 +150,45 @@ def solve_bearing(
     return out
 
 
-def _with_bearing(r: Result, b: ResolvedBearing, load: float, revolutions: float) -> LoadedCase:
-    from bearingload.bearings.checks import case_warnings, max_contact_pressures, static_safety
+def _with_bearing(r: Result, b: ResolvedBearing, load: Any, revolutions: Any) -> LoadedCase:
+    """What the bearing adds to the solved case(s) ``r``: contact pressures, L10, allowable
+    load, s0 (one case: floats; many: arrays) and the checks of every case."""
+    from bearingload.bearings.checks import case_warnings, contact_pressures, static_safety
 
-    pressures = max_contact_pressures(b, float(r.q_max))  # balls: Hertz; rollers: line contact
+    q = r.q_max
+    pressures = contact_pressures(b, q)  # balls: Hertz; rollers: line contact
     p_i, p_o = pressures if pressures is not None else (None, None)
-    life = allow = None
+    life = allow = revs = None
     if b.C:
         p = ROLLER_LIFE_EXPONENT if b.kind == "roller" else BALL_LIFE_EXPONENT
-        life = float(rating_life(b.C, load, p))
-        allow = float(allowable_load(b.C, revolutions / 1e6, p))
-    warnings = tuple(case_warnings(b, load, r))
-    return LoadedCase(r, b, p_i, p_o, life, allow, revolutions if b.C else None, warnings,
-                      static_safety(b.C0, load))  # fmt: skip
+        life = scalar(rating_life(b.C, load, p))
+        allow = scalar(allowable_load(b.C, np.asarray(revolutions) / 1e6, p))
+        revs = revolutions
+    shape = r.case.shape
+    loads = np.broadcast_to(load, shape).ravel().tolist()
+    inner = None if p_i is None else np.broadcast_to(p_i, shape).ravel().tolist()
+    outer = None if p_o is None else np.broadcast_to(p_o, shape).ravel().tolist()
+    found = [tuple(case_warnings(b, loads[i], one, None if inner is None or outer is None
+                                 else (inner[i], outer[i])))
+             for i, one in enumerate(_each_case(r))]  # fmt: skip
+    s0 = [static_safety(b.C0, f) for f in loads]
+    if shape == ():
+        return LoadedCase(r, b, p_i, p_o, life, allow, revs, found[0], s0[0])
+    return LoadedCase(r, b, p_i, p_o, life, allow, revs, tuple(found), s0)
+
+
+def _each_case(r: Result) -> list[Any]:
+    """Each case of ``r`` as the checks read it (``q_max`` [N], ``loaded_balls``)."""
+    q = _per_case(r.q_max, r.case.shape)
+    loaded = _per_case(r.loaded_balls, r.case.shape)
+    return [SimpleNamespace(q_max=a, loaded_balls=b) for a, b in zip(q, loaded, strict=True)]
+
+
+def _per_case(value: Any, shape: tuple[int, ...]) -> list[Any]:
+    """A quantity of every case as a list (None for each where not given)."""
+    if value is None:
+        return [None] * int(np.prod(shape))
+    return np.broadcast_to(value, shape).ravel().tolist()
 
 
 def collect_warnings(cases: Sequence[LoadedCase]) -> list[str]:
@@ -177,38 +217,60 @@ def case_values(lc: LoadedCase) -> dict[str, Any]:
 
     Inputs first, then the answer; ``None`` where the model or the bearing does not give it.
     """
+    if np.ndim(lc.result.k) != 0:
+        raise ValueError("case_values describes one case; solve one case per LoadedCase")
+    return {k: v if v is None or isinstance(v, str) else _one(v)
+            for k, v in case_columns(lc).items()}  # fmt: skip
+
+
+def _one(v: Any) -> Any:
+    return v[0] if isinstance(v, list) else np.asarray(v).reshape(-1)[0].item()
+
+
+def case_columns(lc: LoadedCase) -> dict[str, Any]:
+    """The quantities of :func:`case_values` of every case of ``lc`` (one case or many solved
+    at once): a numpy array or a list over the cases, text, or None where not given."""
     r, c = lc.result, lc.result.case
     b = lc.bearing
-    if np.ndim(r.k) != 0:
-        raise ValueError("case_values describes one case; solve one case per LoadedCase")
+    n = int(np.prod(c.shape))
+
+    def col(value: Any, dtype: Any = float) -> Any:
+        if value is None or isinstance(value, (str, list)):
+            return value
+        return np.broadcast_to(np.asarray(value, dtype=dtype), c.shape).ravel()
+
     return {
         "bearing": None if b is None else (b.designation or "given by hand"),
         "method": r.method,
-        "balls": int(c.balls),
-        "load": float(c.load),
-        "stiffness": float(c.stiffness),
-        "clearance": float(c.clearance),
+        "balls": col(c.balls, np.int64),
+        "load": col(c.load),
+        "stiffness": col(c.stiffness),
+        "clearance": col(c.clearance),
         "clearance_pick": lc.clearance_pick,
-        "cage_angle": float(c.cage_angle),
-        "exponent": float(c.exponent),
-        "q_max": r.q_max,
-        "k": r.k,
-        "K_Q": r.K_Q,
-        "loaded_balls": r.loaded_balls,
-        "load_zone": r.load_zone,
-        "x": r.x,
-        "y": r.y,
-        "stiffness_radial": r.stiffness_radial,
-        "approach_max": None if r.x is None else (r.q_max / c.stiffness) ** (1.0 / c.exponent),
-        "epsilon": scalar(getattr(r.model, "epsilon", None)),
-        "valid": r.valid,
-        "p_max_inner": lc.p_max_inner,
-        "p_max_outer": lc.p_max_outer,
-        "rating_life": lc.rating_life,
-        "allowable_load": lc.allowable_load,
-        "revolutions": None if lc.revolutions is None else lc.revolutions / 1e6,
-        "static_safety": lc.static_safety,
-        "reference_rating_life": lc.reference_rating_life,
+        "cage_angle": col(c.cage_angle),
+        "exponent": col(c.exponent),
+        "q_max": col(r.q_max),
+        "k": col(r.k),
+        "K_Q": col(r.K_Q),
+        "loaded_balls": col(r.loaded_balls, np.int64),
+        "load_zone": col(r.load_zone),
+        "x": col(r.x),
+        "y": col(r.y),
+        "stiffness_radial": col(r.stiffness_radial),
+        "approach_max": None
+        if r.x is None
+        else col((np.asarray(r.q_max) / c.stiffness) ** (1.0 / np.asarray(c.exponent))),
+        "epsilon": col(getattr(r.model, "epsilon", None)),
+        "valid": col(r.valid, bool),
+        "p_max_inner": col(lc.p_max_inner),
+        "p_max_outer": col(lc.p_max_outer),
+        "rating_life": col(lc.rating_life),
+        "allowable_load": col(lc.allowable_load),
+        "revolutions": None if lc.revolutions is None else col(np.asarray(lc.revolutions) / 1e6),
+        "static_safety": lc.static_safety
+        if isinstance(lc.static_safety, list)
+        else [lc.static_safety] * n,
+        "reference_rating_life": col(lc.reference_rating_life),
         "rotating": lc.rotating,
     }
 

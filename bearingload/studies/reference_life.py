@@ -12,6 +12,8 @@ import dataclasses
 from collections.abc import Sequence
 from typing import TYPE_CHECKING, Any
 
+import numpy as np
+
 if TYPE_CHECKING:
     from bearingload.bearings.resolve import ResolvedBearing
     from bearingload.studies.loaded_bearing import LoadedCase
@@ -33,11 +35,27 @@ def has_reference_life(b: ResolvedBearing, dynamic_rating: float | None = None) 
     return b.kind == "ball" and b.has_geometry and bool(dynamic_rating or b.C)
 
 
+def rotating_refusal(b: ResolvedBearing, dynamic_rating: float | None, method: str) -> str | None:
+    """Why a rotating ring cannot be named for ``b`` solved by ``method`` (no L10r is computed
+    for it to select the ring of), or None: a roller bearing, no ball geometry, no C_r, or no
+    exact ball loads."""
+    if b.kind != "ball":
+        return f"L10r is computed for ball bearings only ({b.designation} is a {b.kind} bearing)"
+    if not b.has_geometry:
+        return "L10r needs the ball geometry (a BEARING, or --ball-diameter and --pitch-diameter)"
+    if not (dynamic_rating or b.C):
+        return "L10r needs the dynamic load rating C_r: give --dynamic-rating"
+    if method != "exact":
+        return f"L10r needs the exact ball loads (--method {method} gives none)"
+    return None
+
+
 def with_reference_lives(cases: Sequence[LoadedCase], rotating: str) -> list[LoadedCase]:
     """The radial path's cases (:func:`bearingload.studies.loaded_bearing.solve_bearing`) with
     the reference rating life L10r from the exact model's ball loads, every ball at the contact
     angle 0 (ISO/TS 16281:2008, 4.3; ``rotating`` the ring that turns relative to the load),
-    where it can be computed (:func:`has_reference_life`, exact model); others unchanged."""
+    where it can be computed (:func:`has_reference_life`, exact model); others unchanged. A
+    case holding many cases gets an array of lives."""
     out = []
     for c in cases:
         b = c.bearing
@@ -45,6 +63,29 @@ def with_reference_lives(cases: Sequence[LoadedCase], rotating: str) -> list[Loa
             out.append(c)
             continue
         assert b.C is not None
-        life = float(ball_reference_life(b, c.result.model.ball_loads, rotating, b.C))
+        many = c.result.case.shape != ()
+        loads = all_ball_loads(c.result.model) if many else c.result.model.ball_loads
+        life = ball_reference_life(b, loads, rotating, b.C)
+        life = np.asarray(life).reshape(-1) if many else float(life)
         out.append(dataclasses.replace(c, reference_rating_life=life, rotating=rotating))
     return out
+
+
+def all_ball_loads(model: Any) -> np.ndarray:
+    """Loads Q_i [N] of balls 1..z (ball 1 at the cage angle) of every case of the exact
+    model's result (one z), one row per case, as
+    :attr:`bearingload.models.equilibrium.LoadDistribution.ball_loads` gives them one by one."""
+    from bearingload.models.equilibrium import ball_approaches
+
+    n = int(np.size(model.x))
+
+    def at(name: str) -> np.ndarray:
+        return np.broadcast_to(getattr(model, name), np.shape(model.x)).reshape(n)[:, None]
+
+    z = int(np.asarray(model.balls).reshape(-1)[0])
+    reference = np.broadcast_to(model.reference, (*np.shape(model.x), 2)).reshape(n, 2)
+    offset = np.broadcast_to(model.offset, (*np.shape(model.x), 2)).reshape(n, 2)
+    delta = ball_approaches(
+        z, at("cage_angle"), at("clearance"), at("x"), at("y"), reference, offset
+    )
+    return at("stiffness") * np.maximum(delta, 0.0) ** at("exponent")

@@ -6,8 +6,10 @@ The columns are ``row`` (the input file's row, header = 1) and then those ``bear
 :mod:`bearingload.reports.quantities`). They are fixed by the file's header, so that every
 chunk of a long file has the same columns: the bearing columns (``bearing``,
 ``clearance_pick``, contact pressures, static safety, lives, ``rotating``) only when the file can name a bearing or a ball
-geometry, ``epsilon`` only with a ``method`` column. A file of combined-load cases
-(an ``axial_load`` ... column) has the columns ``solve`` writes with an axial load.
+geometry, ``epsilon`` only with a ``method`` column. A file with a combined-load column
+(``axial_load``, ``moment``, ``moment_cross``, ``misalignment``, ``tilt_radius``) has the columns
+``solve`` writes with an axial load; its rows without a load cell, solved by the radial engine,
+fill the columns the two engines share.
 """
 
 from __future__ import annotations
@@ -15,9 +17,9 @@ from __future__ import annotations
 from collections.abc import Sequence
 from typing import Any
 
-from bearingload.reports.render import Column, Table, csv_bytes, csv_header, render
+from bearingload.batch.read import Header
+from bearingload.reports.render import Column, Table, csv_block, csv_header, render
 from bearingload.reports.solve import ANSWER_KEYS, INPUT_KEYS, column
-from bearingload.studies.batch_input import Header
 
 #: The most rows json, markdown and table hold in memory (csv is streamed without a limit).
 MAX_HELD_ROWS = 100_000
@@ -38,13 +40,22 @@ _BEARING_ONLY = (
 #: Columns of a combined-load file written only when the file has them (as solve writes them
 #: only when given).
 _COMBINED_IF_GIVEN = ("moment_cross",)
+#: The output columns of a combined-load file (those of ``solve --format csv`` with an axial
+#: load), after the row number.
+COMBINED_KEYS = (
+    "bearing", "method", "balls", "load", "axial_load", "moment", "moment_cross",
+    "misalignment", "tilt_radius", "rotating", "stiffness", "clearance", "clearance_pick",
+    "cage_angle", "q_max", "loaded_balls", "p_max_inner", "p_max_outer",
+    "static_equivalent_load", "static_safety", "contact_angle_max", "free_contact_angle",
+    "axial_play", "x", "y", "axial", "tilt", "tilt_cross", "stiffness_radial",
+    "stiffness_axial", "stiffness_tilt", "reference_rating_life",
+    "dynamic_rating", "equivalent_load", "rating_life",
+)  # fmt: skip
 
 
 def batch_columns(header: Header) -> list[Column]:
     """The output columns for a file with ``header``."""
     if header.combined:  # the columns of solve's csv with an axial load, every one
-        from bearingload.studies.batch_combined import COMBINED_KEYS
-
         given = [k for k in COMBINED_KEYS if k not in _COMBINED_IF_GIVEN or k in header.names]
         return [column(k, 1.5) for k in ("row", *given)]
     keys = ["row", *INPUT_KEYS, *(k for k in ANSWER_KEYS if k != "relative_error"), "valid"]
@@ -62,11 +73,14 @@ def csv_head(columns: Sequence[Column]) -> str:
     return csv_header(columns)
 
 
-def csv_rows(
-    columns: Sequence[Column], rows: Sequence[int], values: dict[str, Any]
-) -> bytes | bytearray:
-    """The csv lines of one solved chunk (UTF-8)."""
-    return csv_bytes(columns, {"row": rows} | values)
+def csv_rows(columns: Sequence[Column], rows: Sequence[int], values: dict[str, Any]) -> str:
+    """The csv lines of one solved chunk."""
+    return csv_block(columns, {"row": rows} | row_values(columns, len(rows), values))
+
+
+def row_values(columns: Sequence[Column], n: int, values: dict[str, Any]) -> dict[str, Any]:
+    """The values of ``columns`` but the row number, blank (None) where the rows have none."""
+    return {c.key: values.get(c.key, [None] * n) for c in columns if c.key != "row"}
 
 
 def held_report(

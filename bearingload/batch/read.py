@@ -1,0 +1,438 @@
+"""Reading a csv file of cases: the header, chunks of rows by the ``csv`` module, the cells.
+
+Columns are named like the options of ``bearingload solve`` (``load``, ``clearance``,
+``ball_diameter`` ...); a unit in the header (``load [kN]``) is the unit of the column's bare
+numbers, a unit in a cell (``300kgf``) is that cell's own. One reader turns a column of cells
+into values (:func:`read_column`): bare numbers at once by numpy, any other cell by the parser
+of its kind (:class:`CellParser`), each distinct text once.
+"""
+
+from __future__ import annotations
+
+import csv
+import re
+from collections.abc import Iterator, Sequence
+from dataclasses import dataclass, field
+from typing import Any, BinaryIO
+
+from bearingload.errors import InputError
+
+#: Rows read, solved and written at a time (memory stays flat however long the file).
+CHUNK_ROWS = 10_000
+#: Accepted columns -> kind of value (a units.py kind, or how the cell is read).
+COLUMNS: dict[str, str] = {
+    "bearing": "text",
+    "balls": "count",
+    "load": "force",
+    "stiffness": "stiffness",
+    "ball_diameter": "length",
+    "pitch_diameter": "length",
+    "inner_conformity": "number",
+    "outer_conformity": "number",
+    "modulus": "modulus",
+    "poisson": "number",
+    "clearance": "clearance",
+    "clearance_pick": "pick",
+    "cage_angle": "cage_angle",
+    "exponent": "exponent",
+    "method": "text",
+    "revolutions": "number",
+    "axial_load": "force",
+    "moment": "moment",
+    "moment_cross": "moment",
+    "misalignment": "angle",
+    "tilt_radius": "tilt_radius",
+    "dynamic_rating": "force",
+    "rotating": "ring",
+}
+#: The load columns: a row with a cell in one of them is a combined-load case (3-D equilibrium),
+#: as solve's load options choose its engine; the others are radial cases.
+LOAD_COLUMNS = ("axial_load", "moment", "moment_cross", "misalignment")
+#: Columns that belong to the combined load (tilt_radius: the lever of its tilt).
+COMBINED_COLUMNS = (*LOAD_COLUMNS, "tilt_radius")
+#: Columns a file with combined-load columns cannot have: its combined rows are solved by the
+#: 3-D equilibrium (m = 1.5), their lives in 10^6 revolutions.
+NOT_COMBINED = ("method", "revolutions", "exponent")
+#: Columns that make a row a bearing (resolved by bearings.resolve) rather than a bare ring.
+BEARING_COLUMNS = ("bearing", "ball_diameter", "pitch_diameter", "inner_conformity",
+                   "outer_conformity", "modulus", "poisson", "clearance_pick", "revolutions")  # fmt: skip
+#: Library parameter names -> the column of a batch file they come from: a skipped row's
+#: reason names the column the user wrote (as the command line names the option).
+_COLUMN_OF = {
+    "radial_load": "load",
+    "ball-diameter": "ball_diameter",
+    "pitch-diameter": "pitch_diameter",
+    "f_i": "inner_conformity",
+    "f_o": "outer_conformity",
+    "pick": "clearance_pick",
+    "bore": "clearance",
+}
+_HEADER = re.compile(r"^\s*([^\[\]]*?)\s*(?:\[\s*([^\]]*?)\s*\])?\s*$")
+
+
+@dataclass(frozen=True)
+class Header:
+    """The columns of a batch file: ``names`` in file order and each one's header ``units``."""
+
+    names: tuple[str, ...]
+    units: dict[str, str]
+
+    @property
+    def combined(self) -> bool:
+        """True when rows may be combined-load cases (an axial load, moment ... column)."""
+        return any(n in COMBINED_COLUMNS for n in self.names)
+
+    @property
+    def has_bearing(self) -> bool:
+        """True when some column can make a row a catalogue or geometry bearing."""
+        return any(n in BEARING_COLUMNS for n in self.names)
+
+
+def read_header(fields: list[str]) -> Header:
+    """The header row: column names (``-`` or spaces read as ``_``) and their ``[unit]``.
+
+    Raises
+    ------
+    InputError
+        (parameter ``columns``) naming unknown, duplicated or not-yet-supported columns, a
+        missing ``load``, or a header unit that does not fit its column.
+    """
+    names, units = [], {}
+    for raw in fields:
+        match = _HEADER.match(raw)
+        name = (match.group(1) if match else raw).strip().lower().replace("-", "_")
+        name = name.replace(" ", "_")
+        names.append(name)
+        if match and match.group(2):
+            units[name] = match.group(2)
+    unknown = [n for n in names if n not in COLUMNS]
+    if unknown:
+        raise InputError(
+            "columns",
+            f"unknown column(s) {', '.join(repr(n) for n in unknown)}; "
+            f"allowed: {', '.join(COLUMNS)}",
+        )
+    _check_combined(names)
+    twice = sorted({n for n in names if names.count(n) > 1})
+    if twice:
+        raise InputError("columns", f"column(s) given twice: {', '.join(twice)}")
+    if "load" not in names:
+        raise InputError("columns", "the column 'load' is required")
+    for name, unit in units.items():
+        _check_header_unit(name, unit)
+    return Header(tuple(names), units)
+
+
+def unit_kind(kind: str) -> str:
+    """The units.py kind of a column kind: a clearance is a length, a cage angle an angle."""
+    return {"clearance": "length", "cage_angle": "angle", "tilt_radius": "length"}.get(kind, kind)
+
+
+def _check_combined(names: list[str]) -> None:
+    """A file with combined-load columns names its bearings (or ball geometry) and no
+    radial-only column."""
+    combined = [n for n in names if n in COMBINED_COLUMNS]
+    if not combined:
+        return
+    if not any(n in ("bearing", "ball_diameter", "pitch_diameter") for n in names):
+        raise InputError(
+            "columns",
+            f"{combined[0]}: the combined load needs deep-groove ball bearings: add a 'bearing' "
+            "column (a designation) or 'ball_diameter' and 'pitch_diameter'",
+        )
+    refused = [n for n in names if n in NOT_COMBINED]
+    if refused:
+        raise InputError(
+            "columns",
+            f"{refused[0]}: not used with the combined load ({combined[0]}): its rows are "
+            "solved by the 3-D equilibrium of a ball bearing (m = 1.5), lives in 10^6 rev",
+        )
+
+
+def _check_header_unit(name: str, unit: str) -> None:
+    from bearingload.units import UNITS, parse_quantity, stiffness_factor
+
+    kind = unit_kind(COLUMNS[name])
+    if kind == "stiffness":
+        stiffness_factor(unit, None, parameter=f"{name} [{unit}]")
+    elif kind in UNITS:
+        parse_quantity("1" + unit, kind, parameter=f"{name} [{unit}]")
+    else:
+        raise InputError(f"{name} [{unit}]", "this column takes no unit")
+
+
+@dataclass
+class Block:
+    """One chunk of data rows as read: their row numbers (the header is row 1), their cells,
+    and the rows that could not be read (row number -> reason)."""
+
+    numbers: list[int] = field(default_factory=list)
+    cells: list[list[str]] = field(default_factory=list)
+    errors: dict[int, str] = field(default_factory=dict)
+
+
+def read_cases(stream: BinaryIO, size: int = CHUNK_ROWS) -> tuple[Header, Iterator[Block]]:
+    """The header of a csv file read as bytes (row 1), and its blocks of up to ``size`` rows.
+
+    The rows are read by the ``csv`` module (a quoted cell may hold commas and line breaks; a
+    record's row number is that of its last line). Each line is decoded as UTF-8 on its own (a
+    byte order mark before the header is dropped): a line that is not UTF-8 is a bad row named
+    by its number, not the end of the file. Blank lines are skipped (they still count as rows).
+
+    Raises
+    ------
+    InputError
+        (parameter ``CASES`` or ``columns``) for a header that cannot be read.
+    """
+    lines = iter(stream)
+    return _header(next(lines, None)), _blocks(lines, size)
+
+
+def _blocks(lines: Iterator[bytes], size: int) -> Iterator[Block]:
+    errors: dict[int, str] = {}
+    quotes: dict[int, int] = {}  # row -> quote characters, of the lines that have any
+    reader = csv.reader(_decoded(lines, errors, quotes))
+    block, last = Block(), 1
+    while True:
+        try:
+            cells = next(reader)
+        except StopIteration:
+            break
+        except csv.Error:
+            cells = ["\0"]  # unreadable: a cell count that never fits
+        row = reader.line_num + 1
+        if row > last + 1 and sum(quotes.pop(r, 0) for r in range(last + 1, row + 1)) % 2:
+            start = last + 1  # an odd count: the reader took every line to the end into a cell
+            errors[start] = (f"a quote opened in this row is never closed: rows {start} to {row} "
+                             "(the end of the file) were read as one cell")  # fmt: skip
+            cells = []
+        quotes.pop(row, None)
+        last = row
+        block.errors |= errors
+        errors.clear()
+        if cells:
+            block.numbers.append(row)
+            block.cells.append(cells)
+        if len(block.numbers) + len(block.errors) >= size:
+            yield block
+            block = Block()
+    block.errors |= errors
+    if block.numbers or block.errors:
+        yield block
+
+
+def _header(first: bytes | None) -> Header:
+    if first is None:
+        raise InputError("CASES", "the file is empty; its first line names the columns")
+    try:
+        text = first.decode("utf-8").removeprefix("\ufeff").rstrip("\r\n")
+    except UnicodeDecodeError as exc:
+        raise InputError("CASES", f"the header line is not UTF-8 text ({_where(exc)})") from None
+    if "\r" in text:
+        raise InputError("CASES", "lines end in CR alone; write LF or CR LF line ends")
+    try:
+        fields = next(csv.reader([text]), [])
+    except csv.Error as exc:
+        raise InputError("CASES", f"cannot read the header line: {exc}") from None
+    if not fields:
+        raise InputError("CASES", "the first line is blank; it must name the columns")
+    return read_header(fields)
+
+
+def _decoded(lines: Iterator[bytes], errors: dict[int, str], quotes: dict[int, int]) -> Any:
+    """The text of each line after the header (row 2 on); a line that is not UTF-8 goes to
+    ``errors`` and reads as a blank line. Lines with quote characters are counted in
+    ``quotes``."""
+    for row, raw in enumerate(lines, start=2):
+        try:
+            text = raw.decode("utf-8")
+        except UnicodeDecodeError as exc:
+            errors[row] = f"not UTF-8 text ({_where(exc)})"
+            text = "\n"
+        if '"' in text:
+            quotes[row] = text.count('"')
+        yield text
+
+
+def _where(exc: UnicodeDecodeError) -> str:
+    return f"{exc.reason} at byte {exc.start + 1} of the line"
+
+
+def row_message(exc: Exception) -> str:
+    """The reason a row is skipped, ``column: message``, from a library error."""
+    column = _COLUMN_OF.get(getattr(exc, "parameter", ""))
+    return str(exc) if column is None else f"{column}: {str(exc).split(': ', 1)[-1]}"
+
+
+def read_column(
+    parser: CellParser, texts: Sequence[str], exponents: Sequence[float] | None = None
+) -> tuple[list[Any], dict[int, str]]:
+    """The values of one column's cells in package units (None: a blank cell) and the reasons
+    of the cells that cannot be read (index -> ``column: reason``). ``exponents``: each row's
+    m, which a stiffness unit needs (default 1.5).
+
+    A column of bare numbers is read by numpy at once (a header unit scales it); otherwise, or
+    when some number is implausible without a unit, each distinct cell text is parsed once."""
+    fast = parser.bare_numbers(texts, exponents)
+    if fast is not None:
+        return fast, {}
+    values: list[Any] = []
+    bad: dict[int, str] = {}
+    seen: dict[tuple[str, float], tuple[bool, Any]] = {}
+    for i, text in enumerate(texts):
+        key = (text, 1.5 if exponents is None else exponents[i])
+        hit = seen.get(key)
+        if hit is None:
+            t = text.strip()
+            try:
+                hit = seen[key] = (True, parser.parse(t, key[1]) if t else None)
+            except InputError as exc:
+                hit = seen[key] = (False, row_message(exc))
+        if not hit[0]:
+            bad[i] = hit[1]
+        values.append(hit[1] if hit[0] else None)
+    return values, bad
+
+
+class CellParser:
+    """Parse the cells of one column: ``parse(text)`` returns the value in the package unit, or
+    raises :class:`InputError` named after the column."""
+
+    def __init__(self, name: str, unit: str | None) -> None:
+        self.name = name
+        self.kind = COLUMNS[name]
+        self.unit = unit
+
+    def bare_numbers(self, texts: Sequence[str], m: Sequence[float] | None) -> list[Any] | None:
+        """Every cell a bare number (no unit, word or blank), read at once and in package units
+        as :meth:`parse` reads each; None when some cell needs :meth:`parse` (also to be named:
+        a fraction of a ball, a number implausible without a unit, infinity)."""
+        import numpy as np
+
+        if self.kind in ("text", "pick", "ring", "exponent", "tilt_radius") or not texts:
+            return None
+        if "_" in "".join(texts):  # numpy reads '1_000' as Python does; the parser refuses it
+            return None
+        try:
+            v = np.array(texts, dtype=float)
+        except ValueError:
+            return None
+        if not np.all(np.isfinite(v)) or (self.kind == "count" and np.any(v != np.round(v))):
+            return None
+        if self.kind in ("count", "number"):
+            return v.tolist()
+        if not self.unit:
+            return None if _implausible(self.name, self.kind, v) else v.tolist()
+        from bearingload import units
+
+        if self.kind == "stiffness":
+            exponents = np.full(v.size, 1.5) if m is None else np.asarray(m, dtype=float)
+            try:  # a unit of another exponent: the parser names the row
+                factor = {e: units.stiffness_factor(self.unit, e, parameter=self.name)
+                          for e in set(exponents.tolist())}  # fmt: skip
+            except InputError:
+                return None
+            return (v * np.array([factor[e] for e in exponents.tolist()])).tolist()
+        if self.kind == "cage_angle":
+            return (v * float(units.parse_cage_angle("1" + self.unit))).tolist()
+        return (v * units.parse_quantity("1" + self.unit, unit_kind(self.kind))).tolist()
+
+    def parse(self, text: str, exponent: float = 1.5) -> Any:
+        from bearingload import units
+
+        kind, name = self.kind, self.name
+        if kind in ("text", "pick"):
+            return _choice(name, text) if kind == "pick" else text
+        if kind == "ring":
+            if text not in ("inner", "outer"):
+                raise InputError(name, f"unknown ring {text!r}; allowed: inner, outer")
+            return text
+        if kind in ("number", "count"):
+            return _number(name, text, whole=kind == "count")
+        if kind == "exponent":
+            return _exponent(text)
+        plain = _plain(name, text)
+        if kind == "tilt_radius":  # groove, pitch or a length, as --tilt-radius reads it
+            from bearingload.bearings.tilt import parse_tilt_radius
+
+            return parse_tilt_radius(text + (self.unit if self.unit and plain is not None else ""))
+        if kind == "cage_angle":  # the one reading of solve, sweep and table
+            if plain is None:
+                return units.parse_cage_angle(text, parameter=name)
+            if not self.unit:
+                return plain
+            return plain * float(units.parse_cage_angle("1" + self.unit, parameter=name))
+        if kind == "clearance" and re.fullmatch(r"(?i)c[2-5n]|g[6-9]|cn|normal", text):
+            from bearingload.bearings.clearance import parse_clearance
+
+            return parse_clearance(text)
+        if kind == "stiffness":
+            if plain is not None and self.unit:
+                return plain * units.stiffness_factor(self.unit, exponent, parameter=name)
+            return units.parse_stiffness(text, exponent, parameter=name)
+        if plain is not None and self.unit:
+            return plain * units.parse_quantity("1" + self.unit, unit_kind(kind), parameter=name)
+        # a bare number: refused when implausible for its quantity, as on the command line
+        return units.parse_quantity(text, unit_kind(kind), parameter=name)
+
+
+def _implausible(name: str, kind: str, values: Any) -> bool:
+    """Whether some bare number lies outside the plausible range of its quantity
+    (:data:`bearingload.units.PLAUSIBLE_BARE`)."""
+    import numpy as np
+
+    from bearingload.units import PLAUSIBLE_BARE
+
+    kind = unit_kind(kind)
+    rule = PLAUSIBLE_BARE.get((kind, name)) or PLAUSIBLE_BARE.get((kind, None))
+    if rule is None:
+        return False
+    low, high, _ = rule
+    return bool(np.any((values < low) | (values >= high)))
+
+
+def _float(text: str) -> float:
+    """``float(text)`` without the underscores Python allows ('1_000'): the command line's
+    unit parser refuses them, and so must every cell."""
+    if "_" in text:
+        raise ValueError(text)
+    return float(text)
+
+
+def _plain(name: str, text: str) -> float | None:
+    """A bare finite number, or None (then the unit parser reads the text)."""
+    try:
+        v = _float(text)
+    except ValueError:
+        return None
+    if v != v or v in (float("inf"), float("-inf")):
+        raise InputError(name, f"{text!r} is not a finite number")
+    return v
+
+
+def _number(name: str, text: str, *, whole: bool) -> float:
+    try:
+        v = _float(text)
+    except ValueError:
+        raise InputError(name, f"cannot read {text!r} as a number") from None
+    if v != v or v in (float("inf"), float("-inf")):
+        raise InputError(name, f"{text!r} is not a finite number")
+    if whole and v != round(v):
+        raise InputError(name, f"must be a whole number (got {text})")
+    return v
+
+
+def _exponent(text: str) -> float:
+    num, slash, den = text.partition("/")
+    try:
+        return _float(num) / _float(den) if slash else _float(text)
+    except (ValueError, ZeroDivisionError):
+        raise InputError(
+            "exponent", f"{text!r} is neither a number nor a fraction like 10/9"
+        ) from None
+
+
+def _choice(name: str, text: str) -> str:
+    if text not in ("min", "mean", "max"):
+        raise InputError(name, f"unknown pick {text!r}; allowed: min, mean, max")
+    return text

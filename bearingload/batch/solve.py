@@ -1,0 +1,387 @@
+"""Solving the rows of a block: each row by the engine ``solve`` would choose for it.
+
+The load alone chooses a row's engine, as for ``solve``: a cell in a load column (axial_load,
+moment, moment_cross, misalignment) makes it a combined-load case of a deep-groove ball bearing
+(3-D ring equilibrium); otherwise it is a radial case, a ring given by z and K or a bearing.
+Rows that share what a vectorised call shares are solved together, by the functions ``solve``
+calls for one case, given arrays: a ring's rows of one method by
+:func:`bearingload.studies.loaded_bearing.solve_ring`; a bearing's rows of one method and
+rotating ring by :func:`~bearingload.studies.loaded_bearing.solve_bearing` and
+:func:`~bearingload.studies.reference_life.with_reference_lives`; a bearing's combined rows of
+one kind of tilt, rotating ring and C_r by
+:func:`bearingload.studies.combined_bearing.solve_combined_bearing` (their loads, moments and
+cage angles as arrays). The per-row checks are those of :mod:`bearingload.bearings.checks`.
+Every engine solves each case on its own, so a row's answer depends on its own cells only.
+Should a call fail, its rows are split in halves until the failing row stands alone, named.
+"""
+
+from __future__ import annotations
+
+import re
+from collections.abc import Callable, Sequence
+from dataclasses import dataclass, field
+from typing import Any
+
+import numpy as np
+
+from bearingload.batch.read import LOAD_COLUMNS, Block, CellParser, Header, read_column, row_message
+from bearingload.errors import BearingloadError, InputError
+
+
+@dataclass
+class Chunk:
+    """The answer for one block: the solved ``rows`` (row numbers, in input order), their
+    ``values`` (quantity key -> array or list over ``rows``; None where not given, and
+    ``warnings``: one tuple per row), and the skipped rows (row number, reason)."""
+
+    rows: list[int] = field(default_factory=list)
+    values: dict[str, Any] = field(default_factory=dict)
+    errors: list[tuple[int, str]] = field(default_factory=list)
+
+
+#: Cells that make a row a bearing (resolved) rather than a ring given by z and K.
+_GEOMETRY = ("bearing", "ball_diameter", "pitch_diameter")
+#: Cells of a bearing that a ring given by z and K cannot use.
+_BEARING_ONLY = ("inner_conformity", "outer_conformity", "modulus", "poisson", "clearance_pick",
+                 "revolutions", "rotating", "dynamic_rating")  # fmt: skip
+_TILT_ALONE = (
+    "tilt_radius: it is the lever of the inner ring's tilt, and only the combined load "
+    "(axial_load, moment, moment_cross, misalignment) tilts the ring"
+)
+#: Rows times balls solved per combined call (about 30 MB of solver work arrays).
+CALL_BALLS = 2**15
+
+Part = tuple[list[int], dict[str, Any]]
+
+
+class BatchSolver:
+    """Solve the blocks of one case file; resolved bearings are kept from block to block."""
+
+    def __init__(self, header: Header) -> None:
+        self.header = header
+        self.parsers = {n: CellParser(n, header.units.get(n)) for n in header.names}
+        self.bearings: dict[tuple[Any, ...], Any] = {}
+
+    def solve(self, block: Block) -> Chunk:
+        """Solve one block of rows."""
+        errors = dict(block.errors)
+        width = len(self.header.names)
+        numbers, rows = block.numbers, block.cells
+        if set(map(len, rows)) - {width}:  # lines with another number of cells: bad rows
+            numbers, rows = [], []
+            for number, cells in zip(block.numbers, block.cells, strict=True):
+                if len(cells) == width:
+                    numbers.append(number)
+                    rows.append(cells)
+                else:
+                    errors[number] = (
+                        f"malformed line: {len(cells)} cells, the header names {width} columns"
+                    )
+        cols, bad = self._columns(rows)
+        groups: dict[tuple[Any, ...], list[int]] = {}
+        for i, key in enumerate(self._keys(cols, len(rows), bad)):
+            if key is not None:
+                groups.setdefault(key, []).append(i)
+        parts: list[Part] = []
+        for key, idx in groups.items():
+            size = _call_size(key)
+            for start in range(0, len(idx), size):
+                parts += _split(_ENGINES[key[0]], key, idx[start : start + size], cols, bad)
+        for i, message in bad.items():
+            errors[numbers[i]] = message
+        return _merged(parts, numbers, errors)
+
+    def _columns(self, rows: list[list[str]]) -> tuple[dict[str, list[Any]], dict[int, str]]:
+        """Every column's values (None: blank) and each failing row's first error: the exponent
+        first (a stiffness unit depends on it), then in file order."""
+        names = self.header.names
+        texts = dict(zip(names, zip(*rows, strict=True), strict=True)) if rows else {}
+        cols: dict[str, list[Any]] = {}
+        bad: dict[int, str] = {}
+        m = None
+        if "bearing" in texts:  # m of a stiffness unit: 10/9 where the row names a roller bearing
+            from bearingload.bearings.designation import contact_exponent
+
+            kinds = {t: contact_exponent(t) for t in set(texts["bearing"])}
+            m = [kinds[t] for t in texts["bearing"]]
+        for name in sorted(names, key=lambda n: n != "exponent"):
+            values, failed = read_column(self.parsers[name], texts.get(name, ()), m)
+            for i, message in failed.items():
+                bad.setdefault(i, message)
+            cols[name] = values
+            if name == "exponent":
+                m = [
+                    x if x is not None else 1.5 if m is None else m[i] for i, x in enumerate(values)
+                ]
+        return cols, bad
+
+    def _keys(self, cols: dict[str, list[Any]], n: int, bad: dict[int, str]) -> list[Any]:
+        """Each row's group: ("ring", method), ("bearing", resolved bearing, method, rotating)
+        or ("combined", ...); a row that cannot be solved goes to ``bad``."""
+        keys: list[Any] = [None] * n
+        cols["_lever"] = [None] * n  # a combined row's lever of the tilt [mm]
+        loads = [cols[c] for c in LOAD_COLUMNS if c in cols]
+        geometry = [cols[c] for c in _GEOMETRY if c in cols]
+        tilt = cols.get("tilt_radius")
+        rings = []
+        if not (loads or geometry or tilt):  # rings given by z and K only
+            rings = [i for i in range(n) if i not in bad]
+            n = 0
+        for i in range(n):
+            if i in bad:
+                continue
+            try:
+                if loads and any(c[i] is not None for c in loads):
+                    keys[i] = self._combined_key(cols, i)
+                elif tilt is not None and tilt[i] is not None:
+                    bad[i] = _TILT_ALONE
+                elif geometry and any(c[i] is not None for c in geometry):
+                    keys[i] = self._bearing_key(cols, i)
+                else:
+                    rings.append(i)
+            except BearingloadError as exc:
+                bad[i] = row_message(exc)
+        _ring_keys(cols, rings, keys, bad)
+        return keys
+
+    def _row(self, cols: dict[str, list[Any]], i: int) -> dict[str, Any]:
+        return {k: v[i] for k, v in cols.items() if v[i] is not None}
+
+    def _bearing_key(self, cols: dict[str, list[Any]], i: int) -> tuple[Any, ...]:
+        """A radial row of a bearing: its resolved bearing (C_r replaced by a dynamic_rating
+        cell), method and rotating ring, checked as solve checks them."""
+        from bearingload.studies.reference_life import rotating_refusal
+
+        v = self._row(cols, i)
+        method = v.get("method", "exact")
+        _check_method(method)
+        b = self._bearing(v)
+        c_r = v.get("dynamic_rating")
+        if v.get("exponent", b.exponent) != b.exponent:  # a blank cell: the bearing's m
+            contact = ("a roller bearing (line contact) has m = 10/9" if b.kind == "roller"
+                       else "a ball bearing (Hertz point contact) has m = 1.5")  # fmt: skip
+            raise InputError("exponent", f"{contact}; other exponents need balls and stiffness "
+                             "without a bearing")  # fmt: skip
+        if "rotating" in v and (why := rotating_refusal(b, c_r, method)) is not None:
+            why = re.sub(r"--([a-z-]+)", lambda m: m.group(1).replace("-", "_"), why)
+            raise InputError("rotating", "it names the rotating ring for the reference rating "
+                             f"life L10r (ISO/TS 16281), and {why.replace('a BEARING', 'a bearing')}")  # fmt: skip
+        if "load" not in v:
+            raise InputError("load", "missing: every row needs a load")
+        if not v.get("revolutions", 1.0) > 0:
+            raise InputError(
+                "revolutions", f"must be greater than 0 rev (got {v['revolutions']:g})"
+            )
+        return ("bearing", b, method, v.get("rotating", "inner"))
+
+    def _combined_key(self, cols: dict[str, list[Any]], i: int) -> tuple[Any, ...]:
+        """A combined-load row: its resolved bearing and what its call shares (the kind of tilt,
+        the rotating ring, C_r), checked as solve checks them."""
+        from bearingload.bearings.tilt import tilt_lever
+
+        v = self._row(cols, i)
+        if not any(k in v for k in _GEOMETRY):
+            raise InputError(
+                "bearing", "missing: the combined load needs a bearing or its ball geometry"
+            )
+        b = self._bearing(v)
+        if "load" not in v:
+            raise InputError("load", "missing: every row needs a (radial) load, 0 allowed")
+        if not v["load"] >= 0:
+            raise InputError("load", f"must be 0 N or more (got {v['load']!r} N)")
+        lever = cols["_lever"][i] = tilt_lever(v.get("tilt_radius"), b.pitch_diameter)
+        tilts = (*(k in v for k in ("moment", "misalignment", "moment_cross")), lever is None)
+        return ("combined", b, tilts, v.get("rotating", "inner"), v.get("dynamic_rating"))
+
+    def _bearing(self, v: dict[str, Any]) -> Any:
+        """The resolved bearing of a row's cells, resolved once per distinct cells."""
+        from bearingload.bearings.resolve import resolve_bearing
+
+        args = {"balls": v.get("balls"), "ball_diameter": v.get("ball_diameter"),
+                "pitch_diameter": v.get("pitch_diameter"), "f_i": v.get("inner_conformity"),
+                "f_o": v.get("outer_conformity"), "modulus": v.get("modulus"),
+                "poisson": v.get("poisson"), "stiffness": v.get("stiffness"),
+                "clearance": v.get("clearance"), "clearance_pick": v.get("clearance_pick", "mean")}  # fmt: skip
+        if args["balls"] is not None:
+            args["balls"] = int(args["balls"])
+        c_r = v.get("dynamic_rating")
+        key = (v.get("bearing"), c_r, *args.values())  # floats, text, frozen ClearanceSpec
+        hit = self.bearings.get(key)
+        if hit is None:
+            try:
+                if c_r is not None and not c_r > 0:
+                    raise InputError("dynamic_rating", "must be greater than 0 N")
+                hit = resolve_bearing(v.get("bearing"), **args)
+                hit = hit if c_r is None else hit.with_dynamic_rating(c_r)
+            except BearingloadError as exc:
+                hit = exc
+            if len(self.bearings) < 10_000:
+                self.bearings[key] = hit
+        if isinstance(hit, BearingloadError):
+            raise hit
+        return hit
+
+
+def _check_method(name: str) -> None:
+    from bearingload.models.registry import METHODS, get_method
+
+    if name not in METHODS:
+        get_method(name)  # raises, naming the methods there are
+
+
+def _ring_keys(
+    cols: dict[str, list[Any]], idx: list[int], keys: list[Any], bad: dict[int, str]
+) -> None:
+    """The group of each radial row of a ring given by z and K, ("ring", method): it has both, a
+    load, a known method and no cell of a bearing (a row's first error goes to ``bad``)."""
+    from bearingload.models.registry import METHODS, get_method
+
+    methods = ["exact" if m is None else m for m in cols["method"]] if "method" in cols else None
+    for name in {} if methods is None else set(methods) - set(METHODS):
+        try:
+            get_method(name)
+        except InputError as exc:
+            for i in idx:
+                if methods is not None and methods[i] == name:
+                    bad.setdefault(i, row_message(exc))
+    found = [(k, "needs a bearing or a ball geometry") for k in _BEARING_ONLY if k in cols]
+    found += [
+        (k, "missing (give balls and stiffness, or a bearing)") for k in ("balls", "stiffness")
+    ]
+    found += [("load", "missing: every row needs a load")]
+    for name, why in found:
+        column = cols.get(name, [None] * len(keys))
+        blank = name not in _BEARING_ONLY
+        if (None in column) if blank else (column.count(None) < len(column)):  # some row fails
+            for i in idx:
+                if (column[i] is None) == blank:
+                    bad.setdefault(i, f"{name}: {why}")
+    for i in idx:
+        keys[i] = None if i in bad else ("ring", "exact" if methods is None else methods[i])
+
+
+def _take(cols: dict[str, list[Any]], name: str, idx: list[int], default: Any = None) -> list[Any]:
+    column = cols.get(name)
+    if column is None:
+        return [default] * len(idx)
+    return [default if column[i] is None else column[i] for i in idx]
+
+
+def _angles(given: list[Any], balls: Any) -> np.ndarray:
+    """Cage angles [°]: 'half' is half the pitch 180/z."""
+    z = np.broadcast_to(np.asarray(balls, dtype=float), (len(given),))
+    half = np.array([a == "half" for a in given], dtype=bool)
+    angles = np.array([0.0 if a == "half" else a for a in given], dtype=float)
+    return np.where(half, 180.0 / np.maximum(z, 1.0), angles)
+
+
+def _solve_rings(
+    key: tuple[Any, ...], idx: list[int], cols: dict[str, list[Any]]
+) -> dict[str, Any]:
+    from bearingload.bearings.clearance import clearance_length
+    from bearingload.studies.loaded_bearing import case_columns, solve_ring
+
+    balls = np.array(_take(cols, "balls", idx), dtype=float)
+    clearance = [g if isinstance(g, float) else clearance_length(g)
+                 for g in _take(cols, "clearance", idx, 0.0)]  # fmt: skip
+    (lc,) = solve_ring([key[1]], balls, np.array(_take(cols, "load", idx), dtype=float),
+                       np.array(_take(cols, "stiffness", idx), dtype=float),
+                       np.array(clearance, dtype=float),
+                       _angles(_take(cols, "cage_angle", idx, 0.0), balls),
+                       np.array(_take(cols, "exponent", idx, 1.5), dtype=float))  # fmt: skip
+    return case_columns(lc) | {"warnings": list(lc.warnings)}
+
+
+def _solve_bearing(
+    key: tuple[Any, ...], idx: list[int], cols: dict[str, list[Any]]
+) -> dict[str, Any]:
+    from bearingload.studies.loaded_bearing import DEFAULT_REVOLUTIONS, case_columns, solve_bearing
+    from bearingload.studies.reference_life import with_reference_lives
+
+    _, b, method, rotating = key
+    load = np.array(_take(cols, "load", idx), dtype=float)
+    cage = _angles(_take(cols, "cage_angle", idx, 0.0), b.balls)
+    revolutions = np.array(_take(cols, "revolutions", idx, DEFAULT_REVOLUTIONS), dtype=float)
+    cases = solve_bearing([b], load, cage, [method], revolutions)
+    (lc,) = with_reference_lives(cases, rotating)
+    return case_columns(lc) | {"warnings": list(lc.warnings)}
+
+
+def _solve_combined(
+    key: tuple[Any, ...], idx: list[int], cols: dict[str, list[Any]]
+) -> dict[str, Any]:
+    from bearingload.studies.combined_bearing import combined_columns, solve_combined_bearing
+
+    _, b, (moment, misaligned, cross, groove), rotating, c_r = key
+
+    def given(name: str, on: bool = True, default: Any = None) -> Any:
+        return np.array(_take(cols, name, idx, default), dtype=float) if on else None
+
+    (case,) = solve_combined_bearing(
+        [b], given("load"), given("axial_load", default=0.0),
+        cage_angle=_angles(_take(cols, "cage_angle", idx, 0.0), b.balls),
+        moment=given("moment", moment), misalignment=given("misalignment", misaligned),
+        rotating=rotating, dynamic_rating=c_r, moment_cross=given("moment_cross", cross),
+        tilt_radius=None if groove else given("_lever"),
+    )  # fmt: skip
+    return combined_columns(case)
+
+
+Engine = Callable[[tuple[Any, ...], list[int], dict[str, list[Any]]], dict[str, Any]]
+_ENGINES: dict[str, Engine] = {
+    "ring": _solve_rings,
+    "bearing": _solve_bearing,
+    "combined": _solve_combined,
+}
+
+
+def _call_size(key: tuple[Any, ...]) -> int:
+    """Rows per call: a combined call holds at most :data:`CALL_BALLS` ball contacts."""
+    return max(1, CALL_BALLS // int(key[1].balls)) if key[0] == "combined" else 1 << 62
+
+
+def _split(engine: Engine, key: tuple[Any, ...], idx: list[int], cols: dict[str, list[Any]],
+           bad: dict[int, str]) -> list[Part]:  # fmt: skip
+    """The rows ``idx`` of one group in one call; if that fails, each half on its own, down to
+    the failing row, whose reason goes to ``bad``."""
+    try:
+        with np.errstate(all="ignore"):
+            return [(idx, engine(key, idx, cols))]
+    except (BearingloadError, ValueError, ArithmeticError) as exc:
+        if len(idx) == 1:
+            bad[idx[0]] = row_message(exc)
+            return []
+    half = len(idx) // 2
+    return _split(engine, key, idx[:half], cols, bad) + _split(engine, key, idx[half:], cols, bad)
+
+
+def _merged(parts: Sequence[Part], numbers: list[int], errors: dict[int, str]) -> Chunk:
+    """The block's answer: the parts' rows in input order, each column over them (an array
+    where every part gives one of one kind, else a list with None where a part has none)."""
+    out = Chunk(errors=sorted(errors.items()))
+    if not parts:
+        return out
+    idx = [i for p, _ in parts for i in p]
+    order = np.argsort(idx, kind="stable")
+    if bool(np.all(np.diff(idx) > 0)):
+        order = slice(None)  # type: ignore[assignment]  # in input order already
+    out.rows = [numbers[i] for i in np.asarray(idx)[order].tolist()]
+    keys = list(dict.fromkeys(k for _, v in parts for k in v))
+    for k in keys:
+        pieces = [_over(v.get(k), len(p)) for p, v in parts]
+        kinds = {p.dtype.kind if isinstance(p, np.ndarray) else None for p in pieces}
+        if len(kinds) == 1 and None not in kinds:
+            out.values[k] = np.concatenate(pieces)[order]
+        else:
+            merged = [x for p in pieces for x in (p.tolist() if isinstance(p, np.ndarray) else p)]
+            out.values[k] = merged if isinstance(order, slice) else [merged[j] for j in order]
+    return out
+
+
+def _over(value: Any, n: int) -> Any:
+    """A column over ``n`` rows: an array, or a list (text; None where not given)."""
+    if value is None or isinstance(value, str):
+        return [value] * n
+    if isinstance(value, list):
+        return value
+    return np.broadcast_to(value, (n,))
