@@ -225,7 +225,7 @@ def _service_warnings(service: list[Any] | None) -> list[str]:
     return list(dict.fromkeys(w for s in service or [] for w in s.warnings))
 
 
-def _geometry(b: Any) -> dict[str, Any]:
+def life_geometry(b: Any) -> dict[str, Any]:
     """The bearing's part of a :class:`bearingload.bearings.service_life.LifeBasis`."""
     return {
         "kind": b.kind,
@@ -252,7 +252,7 @@ def radial_basis(c: Any) -> Any:
         rating_life=c.rating_life,
         reference_rating_life=c.reference_rating_life,
         q_max=None if c.result.q_max is None else float(c.result.q_max),
-        **_geometry(b),
+        **life_geometry(b),
     )
 
 
@@ -272,7 +272,7 @@ def combined_basis(c: Any) -> Any:
         reference_rating_life=c.reference_rating_life,
         q_max=float(res.ball_loads[heaviest]),
         contact_angle=float(res.contact_angles[heaviest]),
-        **_geometry(c.bearing),
+        **life_geometry(c.bearing),
     )
 
 

@@ -198,7 +198,9 @@ def _life(
             "table life needs a bearing: --bearing, or --balls, --ball-diameter, "
             "--pitch-diameter and --dynamic-rating"
         )
-    b = resolve_bearings(case, k_given)[0]
+    from bearingload.cli.solve import with_ratings
+
+    b = with_ratings(resolve_bearings(case, k_given), case)[0]
     try:
         result = life_against_clearance(
             b,
@@ -212,6 +214,30 @@ def _life(
             raise
         message = str(exc).split(": ", 1)[-1]
         raise click.UsageError(f"Invalid value for '--clearances': {message}") from exc
-    text = life_report(result, fmt)
-    print_warnings(list(result.warnings), False)
+    service = _service(case, result)
+    text = life_report(result, fmt, service)
+    found = list(result.warnings)
+    found += [w for w in dict.fromkeys(w for s in service for w in s.warnings) if w not in found]
+    print_warnings(found, False)
     emit(text, output)
+
+
+def _service(case: CaseOptions, t: Any) -> list[Any]:
+    """The lives of every row of a life-against-clearance table (the heaviest ball at the free
+    contact angle alpha_0 of the row for the film)."""
+    from bearingload.bearings.service_life import LifeBasis
+    from bearingload.cli.solve import life_geometry, service_lives
+
+    bases = [
+        LifeBasis(
+            C=t.dynamic_rating,
+            equivalent_load=t.equivalent_load,
+            rating_life=t.rating_life,
+            reference_rating_life=float(t.reference_rating_life[i]),
+            q_max=float(t.q_max[i]),
+            contact_angle=float(t.free_contact_angle[i]),
+            **life_geometry(t.bearing),
+        )
+        for i in range(t.clearance.size)
+    ]
+    return service_lives(case, bases)
