@@ -217,12 +217,13 @@ def _life(
     service = _service(case, result)
     text = life_report(result, fmt, service)
     found = list(result.warnings)
-    found += [w for w in dict.fromkeys(w for s in service for w in s.warnings) if w not in found]
+    more = dict.fromkeys(w for s in service or [] for w in s.warnings)
+    found += [w for w in more if w not in found]
     print_warnings(found, False)
     emit(text, output)
 
 
-def _service(case: CaseOptions, t: Any) -> list[Any]:
+def _service(case: CaseOptions, t: Any) -> list[Any] | None:
     """The lives of every row of a life-against-clearance table (the heaviest ball at the free
     contact angle alpha_0 of the row for the film)."""
     from bearingload.bearings.service_life import LifeBasis

@@ -62,15 +62,23 @@ ANSWER_KEYS = (
     "p_max_inner",
     "p_max_outer",
     "static_safety",
+    "rating_life",
+    "reference_rating_life",
+    "revolutions",
+    "allowable_load",
+    "relative_error",
+)
+#: The answer of solve's own report: :data:`ANSWER_KEYS` (batch's columns too) with the lives of
+#: :func:`bearingload.bearings.service_life.service_values` (C_0, hours, a_ISO, film) beside them.
+REPORT_KEYS = (
+    *ANSWER_KEYS[: ANSWER_KEYS.index("static_safety") + 1],
     "static_rating",
     "rating_life",
     "rating_life_hours",
     "reference_rating_life",
     "reference_rating_life_hours",
     *SERVICE_KEYS,
-    "revolutions",
-    "allowable_load",
-    "relative_error",
+    *ANSWER_KEYS[ANSWER_KEYS.index("revolutions") :],
 )
 PER_BALL_KEYS = ("ball", "ball_angles", "ball_approaches", "ball_loads")
 
@@ -122,7 +130,7 @@ _COUNTS = {"balls", "loaded_balls", "ball", "iterations", "row"}
 
 
 def _case_table(records: Sequence[dict[str, Any]]) -> Table:
-    keys = _present(records, INPUT_KEYS + ANSWER_KEYS + ("valid",))
+    keys = _present(records, INPUT_KEYS + REPORT_KEYS + ("valid",))
     exponent = records[0]["exponent"]
     return Table("cases", [column(k, exponent) for k in keys], [_blank(r, keys) for r in records])
 
@@ -175,7 +183,7 @@ def _summary(
     records: Sequence[dict[str, Any]],
     extra_notes: Sequence[str] = (),
 ) -> Table:
-    keys = _present(records, ANSWER_KEYS)
+    keys = _present(records, REPORT_KEYS)
     if len({r["clearance"] for r in records}) > 1:
         keys.insert(0, "clearance")
     heads = ["value"] if len(records) == 1 else [_heading(r) for r in records]
