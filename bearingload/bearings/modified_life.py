@@ -25,7 +25,7 @@ ISO 281:2007, *Rolling bearings - Dynamic load ratings and rating life*:
 
   with ``a_ISO <= 50`` (the standard's limit; also where the bracket reaches 0), kappa > 4 taken
   as 4; kappa < 0.1 is outside the standard (this module takes 0.1 and the caller says so).
-  The branches meet at kappa = 0.4 and 1 to the printed digits (the coefficients are continuous).
+  The branches meet at kappa = 0.4 and 1 to the printed digits (within 0.1 %).
 * Contamination factor e_C, Table 13, by level and pitch diameter D_pw (< 100 mm, >= 100 mm).
   The standard gives ranges for the intermediate levels; this module takes the middle of the range
   (:data:`CONTAMINATION`); give e_C itself where it is known better.
@@ -260,7 +260,8 @@ def life_modification_factor(kappa: ArrayLike, ec_cu_over_p: ArrayLike, kind: st
     b = np.where(
         k < 0.4, b_low / k**e_low, np.where(k < 1.0, b_mid / k**e_mid, b_high / k**e_high)
     )
-    bracket = 1.0 - np.maximum(a - b, 0.0) ** outer * x**load_power
+    d = a - b  # > 0 for balls over 0.1 ... 4; for rollers -6e-5 at kappa = 0.1 (as printed)
+    bracket = 1.0 - np.sign(d) * np.abs(d) ** outer * x**load_power
     with np.errstate(divide="ignore", over="ignore"):
         factor = np.where(
             bracket > 0, 0.1 * np.where(bracket > 0, bracket, 1.0) ** (-final), np.inf
