@@ -49,7 +49,10 @@ def test_life_in_hours_reproduces_the_makers_examples(example):
 def test_hours_are_revolutions_over_sixty_n_exactly():
     lives = np.array([1.0, 169.1, 1e6])
     speeds = np.array([0.5, 3000.0, 2e5])
-    expected = [mp.mpf(float(a)) * 10**6 / (60 * mp.mpf(float(n))) for a, n in zip(lives, speeds)]
+    expected = [
+        mp.mpf(float(a)) * 10**6 / (60 * mp.mpf(float(n)))
+        for a, n in zip(lives, speeds, strict=True)
+    ]
     got = ml.life_hours(lives, speeds)
     assert all(abs(g / float(e) - 1) < 1e-15 for g, e in zip(got, expected, strict=True))
 
@@ -227,7 +230,10 @@ def test_point_contact_film_equals_an_independent_hamrock_dowson():
 
 
 def test_line_contact_film_equals_an_independent_dowson_higginson():
-    for q, length, rx, nu, u in ((5000.0, 10.0, 4.0, 20.0, 5000.0), (200.0, 30.0, 12.0, 150.0, 80.0)):
+    for q, length, rx, nu, u in (
+        (5000.0, 10.0, 4.0, 20.0, 5000.0),
+        (200.0, 30.0, 12.0, 150.0, 80.0),
+    ):
         eta = mp.mpf(nu) * mp.mpf("1e-6") * lub.OIL_DENSITY
         ep, r = mp.mpf(228571.4) * 10**6, mp.mpf(rx) / 1000
         big_u, g = eta * mp.mpf(u) / 1000 / (ep * r), mp.mpf(lub.PRESSURE_VISCOSITY) * ep
@@ -292,7 +298,9 @@ def test_a_maker_fatigue_limit_and_e_c_replace_the_estimates():
     out = service_values(op, _BASIS)
     assert out.values["contamination_factor"] == 0.9
     assert out.values["fatigue_load_limit"] == 335.0
-    assert any("--eC" in n for n in out.notes) and any("--fatigue-load-limit" in n for n in out.notes)
+    assert any("--eC" in n for n in out.notes) and any(
+        "--fatigue-load-limit" in n for n in out.notes
+    )
 
 
 def test_no_a_iso_without_c_u_and_a_warning_says_why():
@@ -380,9 +388,14 @@ def test_roller_bearing_gets_line_contact_film_and_roller_constants():
     case = _json("NU206", "-F", "5kN", "--speed", "1000", "--viscosity", "15")["cases"][0]
     v = service_values(
         Operating(speed=1000.0, viscosity=15.0),
-        LifeBasis(kind="roller", C=case["dynamic_rating"] if "dynamic_rating" in case else 44000.0,
-                  C0=36500.0, equivalent_load=5000.0, rating_life=case["rating_life"],
-                  pitch_diameter=46.5),  # fmt: skip
+        LifeBasis(
+            kind="roller",
+            C=case["dynamic_rating"] if "dynamic_rating" in case else 44000.0,
+            C0=36500.0,
+            equivalent_load=5000.0,
+            rating_life=case["rating_life"],
+            pitch_diameter=46.5,
+        ),  # fmt: skip
     ).values
     assert case["a_iso"] == pytest.approx(v["a_iso"]) and case["film_thickness"] > 0
     x = v["contamination_factor"] * v["fatigue_load_limit"] / 5000.0

@@ -148,9 +148,11 @@ def reliability_factor(reliability: ArrayLike) -> Any:
     0.7909
     """
     r = np.asarray(reliability, dtype=float)
-    if not np.all(np.isfinite(r) & (r >= 90.0) & (r <= 99.95)):
+    good = np.isfinite(r) & (r >= 90.0) & (r <= 99.95)
+    if not np.all(good):
+        worst = float(np.atleast_1d(r)[~np.atleast_1d(good)][0])
         raise InputError(
-            "reliability", f"must lie between 90 and 99.95 % (ISO 281 Table 12); got {reliability}"
+            "reliability", f"must lie between 90 and 99.95 % (ISO 281 Table 12); got {worst:g}"
         )
     weibull = 0.95 * (np.log(100.0 / r) / np.log(100.0 / 90.0)) ** (2.0 / 3.0) + 0.05
     listed = np.array(list(RELIABILITY_TABLE))
@@ -257,9 +259,7 @@ def life_modification_factor(kappa: ArrayLike, ec_cu_over_p: ArrayLike, kind: st
         raise InputError("contamination", f"e_C C_u/P must be a finite number >= 0; got {x}")
     a, b_low, b_mid, b_high, outer, load_power, final = _BALL if kind == "ball" else _ROLLER
     e_low, e_mid, e_high = _KAPPA_EXPONENTS
-    b = np.where(
-        k < 0.4, b_low / k**e_low, np.where(k < 1.0, b_mid / k**e_mid, b_high / k**e_high)
-    )
+    b = np.where(k < 0.4, b_low / k**e_low, np.where(k < 1.0, b_mid / k**e_mid, b_high / k**e_high))
     d = a - b  # > 0 for balls over 0.1 ... 4; for rollers -6e-5 at kappa = 0.1 (as printed)
     bracket = 1.0 - np.sign(d) * np.abs(d) ** outer * x**load_power
     with np.errstate(divide="ignore", over="ignore"):

@@ -196,9 +196,7 @@ def _modified_life(
     v[f"a_iso{'_reference' if prefix else ''}"] = a_iso
     v[f"modified_{prefix}rating_life"] = a1 * a_iso * life
     if op.speed is not None:
-        v[f"modified_{prefix}rating_life_hours"] = float(
-            ml.life_hours(a1 * a_iso * life, op.speed)
-        )
+        v[f"modified_{prefix}rating_life_hours"] = float(ml.life_hours(a1 * a_iso * life, op.speed))
 
 
 def _contamination(op: Operating, pitch_diameter: float) -> tuple[float, str]:
@@ -235,6 +233,7 @@ def _film(op: Operating, b: LifeBasis) -> float | None:
         return None
     assert b.ball_diameter is not None and b.pitch_diameter is not None
     assert op.speed is not None and op.viscosity is not None
+    assert b.modulus is not None and b.poisson is not None and b.q_max is not None
     u = lub.entraining_speed(op.speed, b.ball_diameter, b.pitch_diameter, b.contact_angle)
     e_prime = lub.reduced_modulus(b.modulus, b.poisson)
     if b.kind == "ball":

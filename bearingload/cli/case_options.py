@@ -505,9 +505,11 @@ class CaseOptions:
         (:class:`bearingload.bearings.service_life.Operating`; alpha in 1/Pa)."""
         from bearingload.bearings.service_life import Operating
 
-        alpha = {} if self.pressure_viscosity is None else {
-            "pressure_viscosity": self.pressure_viscosity * 1e-9
-        }
+        alpha = (
+            {}
+            if self.pressure_viscosity is None
+            else {"pressure_viscosity": self.pressure_viscosity * 1e-9}
+        )
         return Operating(
             speed=self.speed,
             reliability=self.reliability,

@@ -124,7 +124,7 @@ def combined_report(
 
         tables.append(geometry_table(cases[0].bearing))
     summary = _summary(records, cases[0].bearing)
-    summary = dataclasses.replace(summary, notes=summary.notes + service_notes(service))
+    summary = dataclasses.replace(summary, notes=[*summary.notes, *service_notes(service)])
     tables += [summary, _balls_human(cases, records)]
     return render(tables, fmt)
 

@@ -160,7 +160,9 @@ QUANTITIES: dict[str, Quantity] = {
         Quantity("a_iso", "life modification factor a_ISO (ISO 281)", "-", 4),
         Quantity("modified_rating_life", "modified rating life L_nm = a_1 a_ISO L10", "10^6 rev"),
         Quantity("modified_rating_life_hours", "modified rating life L_nmh", "h"),
-        Quantity("reference_equivalent_load", "reference equivalent load P_ref = C/L10r^(1/p)", "N"),
+        Quantity(
+            "reference_equivalent_load", "reference equivalent load P_ref = C/L10r^(1/p)", "N"
+        ),
         Quantity("a_iso_reference", "a_ISO at P_ref (ISO/TS 16281)", "-", 4),
         Quantity(
             "modified_reference_rating_life",
@@ -168,8 +170,9 @@ QUANTITIES: dict[str, Quantity] = {
             "10^6 rev",
         ),
         Quantity("modified_reference_rating_life_hours", "modified reference life L_nmrh", "h"),
-        Quantity("film_thickness", "minimum film thickness h_min, heaviest contact", "mm",
-                 display=_UM),  # fmt: skip
+        Quantity(
+            "film_thickness", "minimum film thickness h_min, heaviest contact", "mm", display=_UM
+        ),  # fmt: skip
         Quantity("roughness", "composite roughness sigma", "mm", display=_UM),
         Quantity("film_ratio", "film ratio h_min/sigma", "-", 4),
         # per ball
