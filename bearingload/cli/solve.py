@@ -97,6 +97,14 @@ def solve(
     loads) is given wherever the ball geometry and C_r are known, radial load or not; --rotating
     (default inner) and --dynamic-rating feed the lives only and change no load.
 
+    Lives as engineers use them (docs/life.md): --speed gives every life in hours; --reliability
+    a_1 (ISO 281 Table 12); --viscosity (needs --speed) nu_1, kappa, a_ISO (ISO 281, with
+    --contamination or --eC and C_u: --fatigue-load-limit or the estimate from C_0,
+    --static-rating) and the modified lives L_nm = a_1 a_ISO L10 and L_nmr (ISO/TS 16281, a_ISO at
+    P_ref = C L10r^(-1/p)), and the minimum film thickness at the heaviest contact
+    (Hamrock-Dowson; Dowson-Higginson for rollers) with the film ratio for --roughness. Only what
+    the given inputs make meaningful is printed.
+
     \b
     Examples:
       # bearing 306 of the catalogue, 300 kgf, ISO clearance class C3 (mean of its range)
@@ -120,6 +128,8 @@ def solve(
       # SKF's ball set of a 6208 instead of NSK's; a cylindrical roller bearing
       bearingload solve 6208 -F 5kN --maker SKF
       bearingload solve NU206 --load 5kN
+      # hours, a_ISO and the modified lives at 3000 rpm, 20 cSt, 99 % reliability
+      bearingload solve 6205 -F 1.4kN --speed 3000 --viscosity 20cSt --reliability 99
       # the ball loads and contact angles of this solution drawn into a PDF
       bearingload solve 6205 -F 5kN -A 2kN --plot loads.pdf
     """

@@ -92,6 +92,9 @@ def table(
     angle, loaded balls, Q_max, L10r and L10r relative to G_r = 0, and ISO 281's (C_r/P)^3
     beside it, which does not see the clearance (Oswald, Zaretsky & Poplawski, NASA
     TM-2012-217115: which clearance lives longest).
+    With --speed, --viscosity and the other life options of 'solve' (docs/life.md) each row
+    also gives L10rh, P_ref, a_ISO, L_nmr and the film; what is the same in every row (kappa,
+    e_C, C_u, L_nm) is among the conditions.
 
     \b
     Examples:
