@@ -77,9 +77,9 @@ PLAUSIBLE_BARE: dict[tuple[str, str | None], tuple[float, float, str]] = {
     ("length", "roughness"): (0.0, 0.01, "a composite surface roughness"),
     # shaft speeds: dental turbines reach 4e5 rpm; a bare 1e9 is no shaft speed in rpm
     ("speed", None): (0.0, 1e6, "a shaft speed"),
-    # operating viscosities of oils and greases' base oils: 1 (water-like) to 1e5 mm^2/s;
-    # a bare 6.8e-5 is m^2/s meant
-    ("viscosity", None): (0.1, 1e5, "an operating kinematic viscosity"),
+    # operating viscosities of oils and greases' base oils: 1 (water-like) to 1e5 mm^2/s (a cold
+    # gear oil); a bare 6.8e-5 is m^2/s meant
+    ("viscosity", None): (0.1, 1e6, "an operating kinematic viscosity"),
 }
 
 
@@ -96,7 +96,7 @@ def _likely(value: float, kind: str, low: float) -> str:
     if kind == "speed":
         return f"{value:g} in another unit (e.g. {value:g}rad/s), or a number below 1e6 rpm"
     if kind == "viscosity":
-        return f"{value:g}m^2/s" if value < low else f"{value:g}mm^2/s with a unit"
+        return f"{value:g}m^2/s" if value < low else f"{value:g}cSt, written with its unit"
     return f"{value:g}um"
 
 

@@ -422,3 +422,20 @@ def test_table_life_takes_the_life_options():
     assert lnmr == sorted(lnmr, reverse=True)
     human = invoke(*args, "--speed", "3000", "--viscosity", "20")
     assert "L_nmr" in human.stdout and "a_ISO: ISO 281:2007" in human.stdout
+
+
+def test_a_hand_given_ball_set_gets_s0_and_a_iso_from_its_static_rating():
+    hand = ["-z", "7", "--ball-diameter", "11.5", "--pitch-diameter", "43.5", "-F", "1kN",
+            "-G", "10um", "-C", "23.4kN"]  # fmt: skip
+    without = invoke("solve", *hand, "--speed", "1000", "--viscosity", "20", "--format", "json")
+    case = json.loads(without.stdout)["cases"][0]
+    assert "static_safety" not in case or case["static_safety"] is None
+    assert "a_iso" not in case and "C_u" in without.stderr
+    case = _json(*hand, "--static-rating", "12kN", "--speed", "1000", "--viscosity", "20")["cases"][
+        0
+    ]
+    assert case["static_safety"] == pytest.approx(12.0) and case["static_rating"] == 12000.0
+    assert case["fatigue_load_limit"] == pytest.approx(12000 / 22)
+    combined = _json(*hand, "-A", "200N", "--static-rating", "12kN")["cases"][0]
+    assert combined["static_safety"] == pytest.approx(12.0)
+    assert combined["static_rating"] == 12000.0
