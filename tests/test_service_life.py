@@ -439,3 +439,13 @@ def test_a_hand_given_ball_set_gets_s0_and_a_iso_from_its_static_rating():
     combined = _json(*hand, "-A", "200N", "--static-rating", "12kN")["cases"][0]
     assert combined["static_safety"] == pytest.approx(12.0)
     assert combined["static_rating"] == 12000.0
+
+
+def test_pressure_viscosity_option_is_read_in_inverse_gigapascal():
+    """h_min ~ alpha^0.49 (Hamrock-Dowson): 44 1/GPa instead of the default 22 gives 2^0.49."""
+    args = ["6205", "-F", "1kN", "--speed", "3000", "--viscosity", "20"]
+    base = _json(*args)["cases"][0]["film_thickness"]
+    doubled = _json(*args, "--pressure-viscosity", "44")["cases"][0]["film_thickness"]
+    assert doubled / base == pytest.approx(2**0.49, rel=1e-9)
+    same = _json(*args, "--pressure-viscosity", "22")["cases"][0]["film_thickness"]
+    assert same == base
