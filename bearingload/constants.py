@@ -27,5 +27,9 @@ BALL_LIFE_EXPONENT = 3.0
 #: Life exponent p of roller bearings (ISO 281:2007). [-]
 ROLLER_LIFE_EXPONENT = 10.0 / 3.0
 
+#: Contamination levels of ISO 281:2007 Table 13, cleanest first (e_C in
+#: :data:`bearingload.bearings.modified_life.CONTAMINATION_RANGES`).
+CONTAMINATION_LEVELS = ("extreme", "high", "normal", "slight", "typical", "severe", "very-severe")
+
 #: Where in a clearance class's range G_r is taken.
 CLEARANCE_PICKS = ("min", "mean", "max")

@@ -41,6 +41,17 @@ UNITS: dict[str, dict[str, float]] = {
         '"': 1.0 / 3600.0,
         "″": 1.0 / 3600.0,
     },
+    # shaft speed: revolutions per minute (ISO 281 writes r/min)
+    "speed": {
+        "rpm": 1.0,
+        "r/min": 1.0,
+        "1/min": 1.0,
+        "rad/s": 30.0 / math.pi,
+        "1/s": 60.0,
+        "Hz": 60.0,
+    },
+    # kinematic viscosity of the lubricant (1 cSt = 1 mm^2/s)
+    "viscosity": {"mm^2/s": 1.0, "mm²/s": 1.0, "cSt": 1.0, "m^2/s": 1e6, "m²/s": 1e6},
 }
 
 #: The unit a bare number is taken in, per kind.
@@ -51,6 +62,8 @@ BASE_UNIT = {
     "modulus": "MPa",
     "moment": "N mm",
     "angle": "°",
+    "speed": "rpm",
+    "viscosity": "mm^2/s",
 }
 
 #: Plausible ranges of a BARE number (no unit) per (kind, parameter); outside, the number is
@@ -60,6 +73,13 @@ PLAUSIBLE_BARE: dict[tuple[str, str | None], tuple[float, float, str]] = {
     ("modulus", None): (1e3, 1e7, "a Young's modulus"),
     # a radial clearance of 1 mm or more is beyond every ISO 5753-1 class up to 1000 mm bore
     ("length", "clearance"): (-1.0, 1.0, "a radial clearance"),
+    # a composite rms roughness of ground raceways and balls: 0.01 to 1 µm; a bare 0.2 is µm meant
+    ("length", "roughness"): (0.0, 0.01, "a composite surface roughness"),
+    # shaft speeds: dental turbines reach 4e5 rpm; a bare 1e9 is no shaft speed in rpm
+    ("speed", None): (0.0, 1e6, "a shaft speed"),
+    # operating viscosities of oils and greases' base oils: 1 (water-like) to 1e5 mm^2/s (a cold
+    # gear oil); a bare 6.8e-5 is m^2/s meant
+    ("viscosity", None): (0.1, 1e6, "an operating kinematic viscosity"),
 }
 
 
@@ -73,12 +93,20 @@ def _likely(value: float, kind: str, low: float) -> str:
     """The unit a bare, implausible number most likely meant, written with the number."""
     if kind == "modulus":
         return f"{value:g}GPa" if value < low else f"{value:g}Pa"
+    if kind == "speed":
+        return f"{value:g} in another unit (e.g. {value:g}rad/s), or a number below 1e6 rpm"
+    if kind == "viscosity":
+        return f"{value:g}m^2/s" if value < low else f"{value:g}cSt, written with its unit"
     return f"{value:g}um"
+
+
+#: Kinds whose bare numbers <= 0 are left to the option's own positivity check.
+_SIGNED = ("modulus", "speed", "viscosity")
 
 
 def _check_plausible(value: float, kind: str, name: str, text: object) -> None:
     rule = PLAUSIBLE_BARE.get((kind, name)) or PLAUSIBLE_BARE.get((kind, None))
-    if rule is None or rule[0] <= value < rule[1] or (kind == "modulus" and value <= 0):
+    if rule is None or rule[0] <= value < rule[1] or (kind in _SIGNED and value <= 0):
         return  # a modulus <= 0 is refused by the model's own check, not guessed at
     from bearingload.errors import InputError
 
@@ -106,14 +134,15 @@ def parse_quantity(text: str | float, kind: str, *, parameter: str | None = None
     text : str or float
         ``"300kgf"``, ``"0.02 mm"``, ``"20um"``, or a bare number. [unit as written]
     kind : str
-        One of ``force``, ``length``, ``stiffness``, ``modulus``, ``moment``, ``angle``.
+        One of ``force``, ``length``, ``stiffness``, ``modulus``, ``moment``, ``angle``,
+        ``speed``, ``viscosity``.
     parameter : str, optional
         Name used in the error message (defaults to ``kind``).
 
     Returns
     -------
     float
-        The value in N, mm, N/mm^1.5, MPa, N mm or degrees.
+        The value in N, mm, N/mm^1.5, MPa, N mm, degrees, rpm or mm^2/s.
 
     Raises
     ------
@@ -222,7 +251,8 @@ def unit_names() -> set[str]:
 
 def _example(kind: str) -> str:
     examples = {"force": "300kgf", "length": "20um", "stiffness": "4700kgf/mm^1.5"}
-    return (examples | {"moment": "1.5Nm", "angle": "2.7mrad"}).get(kind, "208GPa")
+    more = {"moment": "1.5Nm", "angle": "2.7mrad", "speed": "3000rpm", "viscosity": "20cSt"}
+    return (examples | more).get(kind, "208GPa")
 
 
 _STIFFNESS_UNIT = re.compile(

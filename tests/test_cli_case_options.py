@@ -42,13 +42,14 @@ def test_every_case_option_has_one_help_text_in_every_command():
     """solve, sweep and table declared --balls, --load, --stiffness, --clearance ... each on its
     own, with help texts that drifted apart (--balls '1 to' vs '3 to', --dynamic-rating's
     units); now one declaration serves all three."""
-    from bearingload.cli.case_options import DECLARATIONS
+    from bearingload.cli.case_options import DECLARATIONS, SERVICE_PARAMS
 
     commands = {name: _params(name) for name in ("solve", "sweep", "table")}
     for name in DECLARATIONS:
         helps = {c: getattr(p[name], "help", None) for c, p in commands.items() if name in p}
         assert len(helps) >= 2 and len(set(helps.values())) == 1, (name, helps)
-    assert set(DECLARATIONS) - set(commands["sweep"]) == {"cage_angle"}  # the cage turns
+    # the cage turns; the lives in hours, a_ISO and the film are solve's and table life's
+    assert set(DECLARATIONS) - set(commands["sweep"]) == {"cage_angle", *SERVICE_PARAMS}
     assert set(DECLARATIONS) <= set(commands["solve"]) and set(DECLARATIONS) <= set(
         commands["table"]
     )

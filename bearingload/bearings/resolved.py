@@ -143,6 +143,15 @@ class ResolvedBearing:
             prov += (given,)
         return dataclasses.replace(self, C=rating, provenance=prov)
 
+    def with_static_rating(self, rating: float) -> ResolvedBearing:
+        """The same bearing with its basic static load rating C0 replaced by a given one (the
+        static safety and ISO 281's C_u estimate use it; no ball load changes). [N]"""
+        given = Provenance("C0", "static load rating C0", rating, "N", "given")
+        prov = tuple(given if p.key == "C0" else p for p in self.provenance)
+        if given not in prov:
+            prov += (given,)
+        return dataclasses.replace(self, C0=rating, provenance=prov)
+
 
 def _class_source(b: ResolvedBearing, pick: str) -> str:
     """The clearance source text of ``b`` with its pick replaced."""

@@ -34,19 +34,24 @@ from bearingload.cli.options import (
     units_help,
     usage_error,
 )
+from bearingload.constants import CONTAMINATION_LEVELS
 from bearingload.errors import InputError
 
 #: The load options: any of them given, the combined engine solves the case.
 LOAD_PARAMS = ("axial_load", "moment", "moment_cross", "misalignment")
 #: The options of the combined engine that are not loads: the lever of the tilt.
 TILT_PARAMS = ("tilt_radius",)
+#: The operating conditions of the lives in hours, the modified life and the film
+#: (:class:`bearingload.bearings.service_life.Operating`); they change no load.
+SERVICE_PARAMS = ("static_rating", "speed", "reliability", "viscosity", "contamination", "e_c",
+                  "fatigue_load_limit", "roughness", "pressure_viscosity")  # fmt: skip
 #: The options that feed only the lives.
-LIFE_PARAMS = ("dynamic_rating", "rotating")
+LIFE_PARAMS = ("dynamic_rating", "rotating", *SERVICE_PARAMS)
 #: The combined-load options, in the order a refusal names the first one given.
 COMBINED_PARAMS = LOAD_PARAMS + TILT_PARAMS + LIFE_PARAMS
 #: The options only a bearing or its ball geometry uses, refused for a ring given by z and K.
 BEARING_ONLY = ("inner_conformity", "outer_conformity", "modulus", "poisson", "maker",
-                "dynamic_rating", "rotating")  # fmt: skip
+                "dynamic_rating", "rotating", *SERVICE_PARAMS)  # fmt: skip
 
 CLEARANCE_HELP = (
     "Radial internal clearance G_r, total play (gap per side G_r/2; negative = preload): a length "
@@ -241,6 +246,66 @@ DECLARATIONS: dict[str, tuple[tuple[str, ...], dict[str, Any]]] = {
         help="The ring that rotates relative to the load, for the reference rating life "
         "L10r (default inner); changes no load.",
     ),
+    "static_rating": _option(
+        "--static-rating",
+        type=Quantity("force", positive=True),
+        library=("C0",),
+        help="Basic static load rating C_0 for the static safety s0 = C0/P0 and ISO 281's "
+        "estimate of C_u, replacing the catalogue's; changes no load. Units: "
+        f"{_FORCE} (bare number: N).",
+    ),
+    "speed": _option(
+        "--speed",
+        type=Quantity("speed", positive=True),
+        help="Shaft speed n of the rotating ring: every life also in hours, L 10^6/(60 n); "
+        "needed for the rated viscosity. Units: rpm, r/min, rad/s, 1/s, Hz (bare number: rpm; "
+        "a bare number of 1e6 or more is refused).",
+    ),
+    "reliability": _option(
+        "--reliability",
+        type=click.FloatRange(90.0, 99.95),
+        help="Reliability R in % (90 to 99.95) for a_1 of ISO 281 Table 12 in the modified "
+        "lives; default 90 (a_1 = 1).",
+    ),
+    "viscosity": _option(
+        "--viscosity",
+        type=Quantity("viscosity", positive=True),
+        help="Operating kinematic viscosity nu of the lubricant (at the operating "
+        "temperature): kappa = nu/nu_1, a_ISO and the modified lives of ISO 281 (needs "
+        "--speed). Units: mm^2/s, cSt, m^2/s (bare number: mm^2/s).",
+    ),
+    "contamination": _option(
+        "--contamination",
+        type=click.Choice(CONTAMINATION_LEVELS),
+        help="Contamination level of ISO 281 Table 13 (extreme ... very-severe; e_C the "
+        "middle of its range for the pitch diameter); default normal.",
+    ),
+    "e_c": _option(
+        "--eC",
+        type=click.FloatRange(0.0, 1.0),
+        library=("eC",),
+        help="Contamination factor e_C (0 to 1) instead of --contamination.",
+    ),
+    "fatigue_load_limit": _option(
+        "--fatigue-load-limit",
+        type=Quantity("force", positive=True),
+        library=("C_u",),
+        help="Fatigue load limit C_u (the maker's); default ISO 281 Annex B's estimate from "
+        f"C_0. Units: {_FORCE} (bare number: N).",
+    ),
+    "roughness": _option(
+        "--roughness",
+        type=Quantity("length", positive=True),
+        help="Composite rms roughness sigma = sqrt(sigma_1^2 + sigma_2^2) of the raceway and "
+        "ball, for the film ratio h_min/sigma (e.g. 0.2um; a bare number is mm, 0.01 or more "
+        "refused).",
+    ),
+    "pressure_viscosity": _option(
+        "--pressure-viscosity",
+        type=click.FloatRange(1.0, 100.0),
+        help="Pressure-viscosity coefficient alpha of the oil in 1/GPa (1 to 100) for the film "
+        "thickness; default 22 (2.2e-8 1/Pa, a mineral oil).",
+    ),
 }
 
 
@@ -336,6 +401,15 @@ class CaseOptions:
     exponent: float | None = None
     dynamic_rating: float | None = None
     rotating: str | None = None
+    static_rating: float | None = None
+    speed: float | None = None
+    reliability: float | None = None
+    viscosity: float | None = None
+    contamination: str | None = None
+    e_c: float | None = None
+    fatigue_load_limit: float | None = None
+    roughness: float | None = None
+    pressure_viscosity: float | None = None
     given: frozenset[str] = frozenset()
 
     @classmethod
@@ -425,6 +499,27 @@ class CaseOptions:
             "clearance_pick": self.clearance_pick,
             "exponent": self.exponent,
         }
+
+    def operating(self) -> Any:
+        """The operating conditions of the lives
+        (:class:`bearingload.bearings.service_life.Operating`; alpha in 1/Pa)."""
+        from bearingload.bearings.service_life import Operating
+
+        alpha = (
+            {}
+            if self.pressure_viscosity is None
+            else {"pressure_viscosity": self.pressure_viscosity * 1e-9}
+        )
+        return Operating(
+            speed=self.speed,
+            reliability=self.reliability,
+            viscosity=self.viscosity,
+            contamination=self.contamination,
+            e_c=self.e_c,
+            fatigue_load_limit=self.fatigue_load_limit,
+            roughness=self.roughness,
+            **alpha,
+        )
 
     def combined_arguments(self) -> dict[str, Any]:
         """The combined load as the keyword arguments of the combined studies

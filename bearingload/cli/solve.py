@@ -97,6 +97,14 @@ def solve(
     loads) is given wherever the ball geometry and C_r are known, radial load or not; --rotating
     (default inner) and --dynamic-rating feed the lives only and change no load.
 
+    Lives as engineers use them (docs/life.md): --speed gives every life in hours; --reliability
+    a_1 (ISO 281 Table 12); --viscosity (needs --speed) nu_1, kappa, a_ISO (ISO 281, with
+    --contamination or --eC and C_u: --fatigue-load-limit or the estimate from C_0,
+    --static-rating) and the modified lives L_nm = a_1 a_ISO L10 and L_nmr (ISO/TS 16281, a_ISO at
+    P_ref = C L10r^(-1/p)), and the minimum film thickness at the heaviest contact
+    (Hamrock-Dowson; Dowson-Higginson for rollers) with the film ratio for --roughness. Only what
+    the given inputs make meaningful is printed.
+
     \b
     Examples:
       # bearing 306 of the catalogue, 300 kgf, ISO clearance class C3 (mean of its range)
@@ -120,6 +128,8 @@ def solve(
       # SKF's ball set of a 6208 instead of NSK's; a cylindrical roller bearing
       bearingload solve 6208 -F 5kN --maker SKF
       bearingload solve NU206 --load 5kN
+      # hours, a_ISO and the modified lives at 3000 rpm, 20 cSt, 99 % reliability
+      bearingload solve 6205 -F 1.4kN --speed 3000 --viscosity 20cSt --reliability 99
       # the ball loads and contact angles of this solution drawn into a PDF
       bearingload solve 6205 -F 5kN -A 2kN --plot loads.pdf
     """
@@ -144,7 +154,7 @@ def solve(
                 "Invalid value for '--method': the combined load (--axial-load, --moment, "
                 "--moment-cross, --misalignment) is solved by the exact model only"
             )
-        bearings = resolve_bearings(case, k_given)
+        bearings = with_ratings(resolve_bearings(case, k_given), case)
         if bearings[0].kind == "ball" and bearings[0].has_geometry:
             check_rotating(case, bearings[0], methods)
         text, found, figure = _combined(bearings, case, fmt, per_ball, show_geometry)
@@ -153,14 +163,18 @@ def solve(
         from bearingload.studies.loaded_bearing import collect_warnings
 
         refuse_tilt_radius(case)
+        service = None
         if case.by_hand:
             refuse_unused(case)
             cases = _by_hand(methods, case, k_given)
         else:
-            bearings = resolve_bearings(case, k_given)
+            bearings = with_ratings(resolve_bearings(case, k_given), case)
             cases = _radial(bearings, case, methods, revolutions)
-        text = solve_report(cases, fmt, per_ball=per_ball, show_geometry=show_geometry)
-        found = collect_warnings(cases)
+            service = service_lives(case, [radial_basis(c) for c in cases])
+        text = solve_report(
+            cases, fmt, per_ball=per_ball, show_geometry=show_geometry, service=service
+        )
+        found = collect_warnings(cases) + _service_warnings(service)
         figure = functools.partial(_figure, "solve_figure", cases)
     if plot is not None:
         save_plot(figure, plot)  # the figure of this very solution, written whole
@@ -192,9 +206,90 @@ def _combined(
     from bearingload.reports.combined import combined_report
 
     cases = combined_cases(bearings, case)
-    text = combined_report(cases, fmt, per_ball=per_ball, show_geometry=show_geometry)
+    service = service_lives(case, [combined_basis(c) for c in cases])
+    text = combined_report(
+        cases, fmt, per_ball=per_ball, show_geometry=show_geometry, service=service
+    )
     found = list(dict.fromkeys(w for c in cases for w in c.warnings))
+    found += [w for w in _service_warnings(service) if w not in found]
     return text, found, functools.partial(_figure, "combined_loads_figure", cases)
+
+
+def with_ratings(bearings: list[Any], case: CaseOptions) -> list[Any]:
+    """The resolved bearings with C_0 replaced by --static-rating where given."""
+    if case.static_rating is None:
+        return bearings
+    return [b.with_static_rating(case.static_rating) for b in bearings]
+
+
+def service_lives(case: CaseOptions, bases: list[Any]) -> list[Any] | None:
+    """The lives the case's operating conditions make meaningful, one
+    :class:`bearingload.bearings.service_life.ServiceLife` per basis; None when no option of
+    :data:`bearingload.cli.case_options.SERVICE_PARAMS` is given (the report is then that of the
+    basic lives alone, as batch writes it: C_0, hours, a_ISO and the film are not batch columns
+    yet)."""
+    from bearingload.bearings.service_life import service_values
+    from bearingload.cli.case_options import SERVICE_PARAMS
+
+    if all(getattr(case, n) is None for n in SERVICE_PARAMS):
+        return None
+    op = case.operating()
+    return [service_values(op, b) for b in bases]
+
+
+def _service_warnings(service: list[Any] | None) -> list[str]:
+    return list(dict.fromkeys(w for s in service or [] for w in s.warnings))
+
+
+def life_geometry(b: Any) -> dict[str, Any]:
+    """The bearing's part of a :class:`bearingload.bearings.service_life.LifeBasis`."""
+    return {
+        "kind": b.kind,
+        "C0": b.C0,
+        "pitch_diameter": b.pitch_diameter,
+        "ball_diameter": b.ball_diameter,
+        "f_i": b.f_i,
+        "f_o": b.f_o,
+        "modulus": b.modulus,
+        "poisson": b.poisson,
+        "roller_length": b.roller_length,
+    }
+
+
+def radial_basis(c: Any) -> Any:
+    """The life basis of a radial case (:class:`bearingload.studies.loaded_bearing.LoadedCase`):
+    P = F_r, contact angle 0."""
+    from bearingload.bearings.service_life import LifeBasis
+
+    b = c.bearing
+    return LifeBasis(
+        C=b.C,
+        equivalent_load=float(c.result.case.load),
+        rating_life=c.rating_life,
+        reference_rating_life=c.reference_rating_life,
+        q_max=None if c.result.q_max is None else float(c.result.q_max),
+        **life_geometry(b),
+    )
+
+
+def combined_basis(c: Any) -> Any:
+    """The life basis of a combined-load case: P = X F_r + Y F_a, the heaviest ball at its
+    contact angle."""
+    import numpy as np
+
+    from bearingload.bearings.service_life import LifeBasis
+
+    res = c.result
+    heaviest = int(np.argmax(res.ball_loads))
+    return LifeBasis(
+        C=c.dynamic_rating or c.bearing.C,
+        equivalent_load=c.equivalent_load,
+        rating_life=c.rating_life,
+        reference_rating_life=c.reference_rating_life,
+        q_max=float(res.ball_loads[heaviest]),
+        contact_angle=float(res.contact_angles[heaviest]),
+        **life_geometry(c.bearing),
+    )
 
 
 def _figure(name: str, cases: list[Any]) -> Any:

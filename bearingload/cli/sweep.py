@@ -4,7 +4,12 @@ from __future__ import annotations
 
 import click
 
-from bearingload.cli.case_options import COMBINED_PARAMS, CaseOptions, case_options
+from bearingload.cli.case_options import (
+    COMBINED_PARAMS,
+    SERVICE_PARAMS,
+    CaseOptions,
+    case_options,
+)
 from bearingload.cli.cases import refuse_range, refuse_tilt_radius, resolve_case
 from bearingload.cli.options import CONTEXT, LibraryOption, emit, library_errors, output_options
 from bearingload.cli.plot import check_plot, save_plot
@@ -16,7 +21,7 @@ KUROCHKIN_REFUSES = ("bearing", "load", "stiffness", "clearance", "plot", "ball_
 
 
 @click.command(context_settings=CONTEXT)
-@case_options(omit=("cage_angle",))
+@case_options(omit=("cage_angle", *SERVICE_PARAMS))
 @click.option(
     "--steps",
     "-n",

@@ -92,6 +92,9 @@ def table(
     angle, loaded balls, Q_max, L10r and L10r relative to G_r = 0, and ISO 281's (C_r/P)^3
     beside it, which does not see the clearance (Oswald, Zaretsky & Poplawski, NASA
     TM-2012-217115: which clearance lives longest).
+    With --speed, --viscosity and the other life options of 'solve' (docs/life.md) each row
+    also gives L10rh, P_ref, a_ISO, L_nmr and the film; what is the same in every row (kappa,
+    e_C, C_u, L_nm) is among the conditions.
 
     \b
     Examples:
@@ -198,7 +201,9 @@ def _life(
             "table life needs a bearing: --bearing, or --balls, --ball-diameter, "
             "--pitch-diameter and --dynamic-rating"
         )
-    b = resolve_bearings(case, k_given)[0]
+    from bearingload.cli.solve import with_ratings
+
+    b = with_ratings(resolve_bearings(case, k_given), case)[0]
     try:
         result = life_against_clearance(
             b,
@@ -212,6 +217,31 @@ def _life(
             raise
         message = str(exc).split(": ", 1)[-1]
         raise click.UsageError(f"Invalid value for '--clearances': {message}") from exc
-    text = life_report(result, fmt)
-    print_warnings(list(result.warnings), False)
+    service = _service(case, result)
+    text = life_report(result, fmt, service)
+    found = list(result.warnings)
+    more = dict.fromkeys(w for s in service or [] for w in s.warnings)
+    found += [w for w in more if w not in found]
+    print_warnings(found, False)
     emit(text, output)
+
+
+def _service(case: CaseOptions, t: Any) -> list[Any] | None:
+    """The lives of every row of a life-against-clearance table (the heaviest ball at the free
+    contact angle alpha_0 of the row for the film)."""
+    from bearingload.bearings.service_life import LifeBasis
+    from bearingload.cli.solve import life_geometry, service_lives
+
+    bases = [
+        LifeBasis(
+            C=t.dynamic_rating,
+            equivalent_load=t.equivalent_load,
+            rating_life=t.rating_life,
+            reference_rating_life=float(t.reference_rating_life[i]),
+            q_max=float(t.q_max[i]),
+            contact_angle=float(t.free_contact_angle[i]),
+            **life_geometry(t.bearing),
+        )
+        for i in range(t.clearance.size)
+    ]
+    return service_lives(case, bases)

@@ -15,12 +15,13 @@ named through :mod:`bearingload.reports.quantities`. Same layout as the radial r
 
 from __future__ import annotations
 
+import dataclasses
 from collections.abc import Sequence
 from typing import Any
 
-from bearingload.reports.quantities import units
+from bearingload.reports.quantities import SERVICE_KEYS, units
 from bearingload.reports.render import Column, Table, render
-from bearingload.reports.solve import column, quantity_rows, set_note
+from bearingload.reports.solve import column, quantity_rows, service_notes, set_note, with_service
 from bearingload.studies.combined_bearing import CombinedCase, combined_values
 
 INPUT_KEYS = (
@@ -46,6 +47,7 @@ ANSWER_KEYS = (
     "p_max_outer",
     "static_equivalent_load",
     "static_safety",
+    "static_rating",
     "contact_angle_max",
     "free_contact_angle",
     "axial_play",
@@ -60,9 +62,12 @@ ANSWER_KEYS = (
     "moment",
     "moment_cross",
     "reference_rating_life",
+    "reference_rating_life_hours",
     "dynamic_rating",
     "equivalent_load",
     "rating_life",
+    "rating_life_hours",
+    *SERVICE_KEYS,
 )
 #: The units of the 5x5 ``stiffness_matrix`` (``units`` of a combined-load JSON document).
 MATRIX_UNITS = (
@@ -106,10 +111,16 @@ def tilt_text(inputs: dict[str, Any]) -> str:
 
 
 def combined_report(
-    cases: Sequence[CombinedCase], fmt: str, *, per_ball: bool = False, show_geometry: bool = False
+    cases: Sequence[CombinedCase],
+    fmt: str,
+    *,
+    per_ball: bool = False,
+    show_geometry: bool = False,
+    service: Sequence[Any] | None = None,
 ) -> str:
-    """Render solved combined-load cases in ``fmt`` (table, csv, markdown, json)."""
-    records = [combined_values(c) for c in cases]
+    """Render solved combined-load cases in ``fmt`` (table, csv, markdown, json); ``service``
+    the lives of each case (:class:`bearingload.bearings.service_life.ServiceLife`)."""
+    records = with_service([combined_values(c) for c in cases], service)
     if fmt == "json":
         return render([], "json", document=_document(cases, records))
     if fmt == "csv":
@@ -120,7 +131,9 @@ def combined_report(
         from bearingload.reports.bearing import geometry_table
 
         tables.append(geometry_table(cases[0].bearing))
-    tables += [_summary(records, cases[0].bearing), _balls_human(cases, records)]
+    summary = _summary(records, cases[0].bearing)
+    summary = dataclasses.replace(summary, notes=[*summary.notes, *service_notes(service)])
+    tables += [summary, _balls_human(cases, records)]
     return render(tables, fmt)
 
 

@@ -8,10 +8,11 @@ conditions (the title for people, leading columns in csv, fields in json, with `
 
 from __future__ import annotations
 
+from collections.abc import Sequence
 from typing import Any
 
 from bearingload.reports.combined import tilt_text
-from bearingload.reports.quantities import QUANTITIES, units
+from bearingload.reports.quantities import QUANTITIES, SERVICE_KEYS, units
 from bearingload.reports.render import Column, Table, render
 from bearingload.reports.solve import column
 from bearingload.studies.life_clearance import (
@@ -34,13 +35,43 @@ ROW_KEYS = (
     ("relative_life", "L10r/L10r(0)"),
     ("rating_life", "L10 ISO 281"),
 )
+#: The service lives that differ from row to row (the others are the table's conditions), with
+#: their short headers.
+SERVICE_ROW_KEYS = (
+    ("reference_rating_life_hours", "L10rh"),
+    ("reference_equivalent_load", "P_ref"),
+    ("a_iso_reference", "a_ISO(P_ref)"),
+    ("modified_reference_rating_life", "L_nmr"),
+    ("modified_reference_rating_life_hours", "L_nmrh"),
+    ("film_thickness", "h_min"),
+    ("film_ratio", "h_min/sigma"),
+)
 
 
-def life_report(t: LifeAgainstClearance, fmt: str) -> str:
-    """Render the life-against-clearance table in ``fmt`` (table, csv, markdown, json)."""
+def life_report(t: LifeAgainstClearance, fmt: str, service: Sequence[Any] | None = None) -> str:
+    """Render the life-against-clearance table in ``fmt`` (table, csv, markdown, json);
+    ``service`` the lives of each row (:class:`bearingload.bearings.service_life.ServiceLife`):
+    those that differ by row are columns, the others conditions."""
     if fmt == "json":
-        return render([], "json", document=life_document(t))
-    return render([life_table(t, human=fmt in ("table", "markdown"))], fmt)
+        return render([], "json", document=life_document(t, service))
+    return render([life_table(t, human=fmt in ("table", "markdown"), service=service)], fmt)
+
+
+def _service_rows(service: Sequence[Any] | None) -> list[tuple[str, str]]:
+    """The row keys of :data:`SERVICE_ROW_KEYS` the service lives give."""
+    if not service:
+        return []
+    return [(k, h) for k, h in SERVICE_ROW_KEYS if service[0].values.get(k) is not None]
+
+
+def service_conditions(service: Sequence[Any] | None) -> dict[str, Any]:
+    """The service quantities the same in every row, in the reports' order."""
+    if not service:
+        return {}
+    rows = {k for k, _ in SERVICE_ROW_KEYS}
+    first = service[0].values
+    order = ("static_rating", "rating_life_hours", *SERVICE_KEYS)
+    return {k: first[k] for k in order if k in first and k not in rows}
 
 
 def _tilted(t: LifeAgainstClearance) -> bool:
@@ -80,7 +111,9 @@ def conditions(t: LifeAgainstClearance) -> dict[str, Any]:
     }
 
 
-def _rows(t: LifeAgainstClearance, human: bool) -> list[dict[str, Any]]:
+def _rows(
+    t: LifeAgainstClearance, human: bool, service: Sequence[Any] | None = None
+) -> list[dict[str, Any]]:
     data: dict[str, Any] = {
         "clearance": t.clearance,
         "free_contact_angle": t.free_contact_angle,
@@ -101,6 +134,12 @@ def _rows(t: LifeAgainstClearance, human: bool) -> list[dict[str, Any]]:
             else:
                 v = float(data[key][i])
             if human and isinstance(v, float):
+                v *= QUANTITIES[key].shown()[1]
+            row[key] = v
+        for key, _ in _service_rows(service):
+            assert service is not None
+            v = service[i].values.get(key)
+            if human and v is not None:
                 v *= QUANTITIES[key].shown()[1]
             row[key] = v
         out.append(row)
@@ -143,28 +182,46 @@ def _notes(t: LifeAgainstClearance) -> list[str]:
     ]
 
 
-def life_table(t: LifeAgainstClearance, human: bool = True) -> Table:
+def life_table(
+    t: LifeAgainstClearance, human: bool = True, service: Sequence[Any] | None = None
+) -> Table:
     """The table: display units (µm) for people, machine units (mm) for csv."""
     columns = []
-    for key, header in _keys(t):
+    for key, header in _keys(t) + _service_rows(service):
         q = QUANTITIES[key]
         if human:
             digits = 4 if key == "clearance" else q.digits
             columns.append(Column(key, header, q.shown()[0], digits))
         else:
             columns.append(column(key))
-    conds = conditions(t)
+    conds = conditions(t) | service_conditions(service)
     fixed = [] if human else [(column(k), "" if v is None else v) for k, v in conds.items()]
-    return Table(title(t), columns, _rows(t, human), _notes(t) if human else [], fixed)
+    notes = _notes(t) + _service_notes(service) if human else []
+    return Table(title(t), columns, _rows(t, human, service), notes, fixed)
 
 
-def life_document(t: LifeAgainstClearance) -> dict[str, Any]:
+def _service_notes(service: Sequence[Any] | None) -> list[str]:
+    """The conditions of the service lives, one line, and their notes."""
+    from bearingload.reports.solve import service_notes
+
+    conds = service_conditions(service)
+    if not conds:
+        return []
+    parts = []
+    for key, value in conds.items():
+        q = QUANTITIES[key]
+        unit, factor = q.shown()
+        parts.append(f"{q.label} = {value * factor:.4g}{' ' + unit if unit != '-' else ''}")
+    return ["; ".join(parts) + "."] + service_notes(service)
+
+
+def life_document(t: LifeAgainstClearance, service: Sequence[Any] | None = None) -> dict[str, Any]:
     """The JSON document: the conditions, ``rows``, ``units``, ``geometry`` (the bearing's, with
     the source of every value), ``warnings``."""
     from bearingload.reports.bearing import geometry_document
 
-    conds = conditions(t)
-    body = _rows(t, human=False)
+    conds = conditions(t) | service_conditions(service)
+    body = _rows(t, human=False, service=service)
     return {
         "title": title(t),
         **conds,

@@ -147,6 +147,36 @@ QUANTITIES: dict[str, Quantity] = {
         Quantity("equivalent_load", "equivalent load P = X F_r + Y F_a (ISO 281)", "N"),
         Quantity("reference_rating_life", "reference rating life L10r (ISO/TS 16281)", "10^6 rev"),
         Quantity("relative_life", "L10r over L10r at G_r = 0", "-", 4),
+        # lives as engineers use them (bearings.service_life: ISO 281, ISO/TS 16281, EHL film)
+        Quantity("static_rating", "basic static load rating C_0", "N"),
+        Quantity("speed", "shaft speed n", "rpm"),
+        Quantity("rating_life_hours", "basic rating life L10h", "h"),
+        Quantity("reference_rating_life_hours", "reference rating life L10rh", "h"),
+        Quantity("reliability", "reliability", "%", 4),
+        Quantity("reliability_factor", "life factor for reliability a_1 (ISO 281)", "-", 4),
+        Quantity("viscosity", "operating viscosity nu", "mm^2/s"),
+        Quantity("rated_viscosity", "rated viscosity nu_1 (ISO 281)", "mm^2/s"),
+        Quantity("kappa", "viscosity ratio kappa = nu/nu_1", "-", 4),
+        Quantity("contamination_factor", "contamination factor e_C (ISO 281)", "-", 3),
+        Quantity("fatigue_load_limit", "fatigue load limit C_u", "N"),
+        Quantity("a_iso", "life modification factor a_ISO (ISO 281)", "-", 4),
+        Quantity("modified_rating_life", "modified rating life L_nm = a_1 a_ISO L10", "10^6 rev"),
+        Quantity("modified_rating_life_hours", "modified rating life L_nmh", "h"),
+        Quantity(
+            "reference_equivalent_load", "reference equivalent load P_ref = C/L10r^(1/p)", "N"
+        ),
+        Quantity("a_iso_reference", "a_ISO at P_ref (ISO/TS 16281)", "-", 4),
+        Quantity(
+            "modified_reference_rating_life",
+            "modified reference rating life L_nmr = a_1 a_ISO L10r",
+            "10^6 rev",
+        ),
+        Quantity("modified_reference_rating_life_hours", "modified reference life L_nmrh", "h"),
+        Quantity(
+            "film_thickness", "minimum film thickness h_min, heaviest contact", "mm", display=_UM
+        ),  # fmt: skip
+        Quantity("roughness", "composite roughness sigma", "mm", display=_UM),
+        Quantity("film_ratio", "film ratio h_min/sigma", "-", 4),
         # per ball
         Quantity("ball", "ball", "", None),
         Quantity("row", "row", "", None),  # bearingload batch: the input file's row (header: 1)
@@ -184,6 +214,30 @@ QUANTITIES: dict[str, Quantity] = {
         Quantity("failure_reasons", "failure reasons", "", None),
     )
 }
+
+
+#: The life quantities of :func:`bearingload.bearings.service_life.service_values` after the
+#: basic lives, in the order the reports show them.
+SERVICE_KEYS = (
+    "speed",
+    "reliability",
+    "reliability_factor",
+    "viscosity",
+    "rated_viscosity",
+    "kappa",
+    "contamination_factor",
+    "fatigue_load_limit",
+    "a_iso",
+    "modified_rating_life",
+    "modified_rating_life_hours",
+    "reference_equivalent_load",
+    "a_iso_reference",
+    "modified_reference_rating_life",
+    "modified_reference_rating_life_hours",
+    "film_thickness",
+    "roughness",
+    "film_ratio",
+)
 
 
 def quantity(key: str) -> Quantity:

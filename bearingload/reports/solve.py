@@ -19,7 +19,13 @@ from __future__ import annotations
 from collections.abc import Sequence
 from typing import Any
 
-from bearingload.reports.quantities import QUANTITIES, element_words, for_elements, units
+from bearingload.reports.quantities import (
+    QUANTITIES,
+    SERVICE_KEYS,
+    element_words,
+    for_elements,
+    units,
+)
 from bearingload.reports.render import Column, Table, render
 from bearingload.studies.loaded_bearing import (
     LoadedCase,
@@ -62,6 +68,18 @@ ANSWER_KEYS = (
     "allowable_load",
     "relative_error",
 )
+#: The answer of solve's own report: :data:`ANSWER_KEYS` (batch's columns too) with the lives of
+#: :func:`bearingload.bearings.service_life.service_values` (C_0, hours, a_ISO, film) beside them.
+REPORT_KEYS = (
+    *ANSWER_KEYS[: ANSWER_KEYS.index("static_safety") + 1],
+    "static_rating",
+    "rating_life",
+    "rating_life_hours",
+    "reference_rating_life",
+    "reference_rating_life_hours",
+    *SERVICE_KEYS,
+    *ANSWER_KEYS[ANSWER_KEYS.index("revolutions") :],
+)
 PER_BALL_KEYS = ("ball", "ball_angles", "ball_approaches", "ball_loads")
 
 
@@ -71,9 +89,12 @@ def solve_report(
     *,
     per_ball: bool = False,
     show_geometry: bool = False,
+    service: Sequence[Any] | None = None,
 ) -> str:
-    """Render solved cases in ``fmt`` (table, csv, markdown, json)."""
-    records = [case_values(c) for c in cases]
+    """Render solved cases in ``fmt`` (table, csv, markdown, json); ``service`` the lives of
+    each case (:class:`bearingload.bearings.service_life.ServiceLife`), merged into its record
+    and its notes into the summary's."""
+    records = with_service([case_values(c) for c in cases], service)
     if len({r["method"] for r in records}) > 1 and any(r["method"] == "exact" for r in records):
         records = with_relative_errors(records)
     exponent = float(cases[0].result.case.exponent)
@@ -87,7 +108,7 @@ def solve_report(
         from bearingload.reports.bearing import geometry_table
 
         tables.append(geometry_table(cases[0].bearing))
-    tables.append(_summary(cases, records))
+    tables.append(_summary(cases, records, service_notes(service)))
     if per_ball or any(c.result.method == "exact" for c in cases):
         tables.append(_balls_human(cases, records))
     return render([for_elements(t, exponent) for t in tables], fmt)  # rollers: 'roller loads'
@@ -109,7 +130,7 @@ _COUNTS = {"balls", "loaded_balls", "ball", "iterations", "row"}
 
 
 def _case_table(records: Sequence[dict[str, Any]]) -> Table:
-    keys = _present(records, INPUT_KEYS + ANSWER_KEYS + ("valid",))
+    keys = _present(records, INPUT_KEYS + REPORT_KEYS + ("valid",))
     exponent = records[0]["exponent"]
     return Table("cases", [column(k, exponent) for k in keys], [_blank(r, keys) for r in records])
 
@@ -157,13 +178,32 @@ def _heading(r: dict[str, Any]) -> str:
     return ", ".join(parts)
 
 
-def _summary(cases: Sequence[LoadedCase], records: Sequence[dict[str, Any]]) -> Table:
-    keys = _present(records, ANSWER_KEYS)
+def _summary(
+    cases: Sequence[LoadedCase],
+    records: Sequence[dict[str, Any]],
+    extra_notes: Sequence[str] = (),
+) -> Table:
+    keys = _present(records, REPORT_KEYS)
     if len({r["clearance"] for r in records}) > 1:
         keys.insert(0, "clearance")
     heads = ["value"] if len(records) == 1 else [_heading(r) for r in records]
     columns, rows = quantity_rows(keys, heads, records)
-    return Table(_title(cases, records), columns, rows, _notes(cases, records))
+    notes = _notes(cases, records) + list(extra_notes)
+    return Table(_title(cases, records), columns, rows, notes)
+
+
+def with_service(
+    records: list[dict[str, Any]], service: Sequence[Any] | None
+) -> list[dict[str, Any]]:
+    """The records with each case's service lives merged in."""
+    if not service:
+        return records
+    return [r | s.values for r, s in zip(records, service, strict=True)]
+
+
+def service_notes(service: Sequence[Any] | None) -> list[str]:
+    """The notes of the service lives of several cases, each once."""
+    return list(dict.fromkeys(n for s in service or [] for n in s.notes))
 
 
 def quantity_rows(
