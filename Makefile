@@ -18,7 +18,7 @@ $(STAMP): pyproject.toml
 
 ## make run: set up, regenerate tables/, print a worked example (bearing 306 of Kuzmenko 2010)
 run: $(STAMP)
-	$(BIN)/python -m bearingload.reports.committed tables
+	$(BIN)/bearingload tables update tables
 	$(BIN)/bearingload solve --balls 8 --load 300kgf --stiffness 4700kgf/mm^1.5 --clearance 20um
 	$(BIN)/bearingload table k --z-max 12
 
@@ -31,8 +31,13 @@ lint: $(STAMP)
 	$(BIN)/ruff format --check bearingload tests benchmarks
 	$(BIN)/mypy bearingload
 
+## make tables: rewrite every file of tables/ whose text differs from its command in
+## tables/manifest.toml (bearingload tables update --exact), the example folder examples/tables
+## and the README's errata block
 tables: $(STAMP)
-	$(BIN)/python -m bearingload.reports.committed tables --readme README.md
+	$(BIN)/bearingload tables update --exact tables
+	$(BIN)/bearingload tables update --exact examples/tables
+	$(BIN)/python -m bearingload.reports.committed README.md
 
 ## make golden: rewrite the stored CLI outputs (tests/golden/) and the README's console examples
 golden: $(STAMP)

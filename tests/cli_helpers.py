@@ -15,6 +15,20 @@ def invoke(*args: str) -> Result:
     return CliRunner().invoke(main, list(args), catch_exceptions=False)
 
 
+def committed(name: str) -> tuple[str, str]:
+    """A file of tables/: the text its command in tables/manifest.toml prints now, and the
+    text committed."""
+    from pathlib import Path
+
+    from bearingload.tables_ci.manifest import read_manifest
+
+    folder = Path(__file__).resolve().parents[1] / "tables"
+    entry = next(e for e in read_manifest(str(folder)).entries if e.file == name)
+    printed = invoke(*entry.args, "--format", entry.format)
+    assert printed.exit_code == 0, printed.output
+    return printed.output, (folder / name).read_text(encoding="utf-8")
+
+
 def run_entry(capsys, *args: str) -> tuple[int, str, str]:
     """The console entry point in-process: (exit status, stdout, stderr)."""
     try:

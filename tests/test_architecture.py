@@ -33,6 +33,7 @@ LAYERS = {
     "quality": 5,
     "reports": 6,
     "batch": 7,  # a csv of cases: reads, solves through studies/, writes through reports/
+    "tables_ci": 7,  # a folder of tables against its manifest: compares what cli/ regenerates
     "cli": 8,
     "__main__": 9,
 }

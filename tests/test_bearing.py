@@ -12,10 +12,11 @@ from bearingload.bearings.resolve import parse_clearance, resolve_bearing
 from bearingload.contact.hertz import ball_stiffness
 from bearingload.errors import InputError
 from bearingload.models.equilibrium import solve
-from bearingload.reports import committed
 from bearingload.studies.loaded_bearing import solve_bearing
 from bearingload.studies.tables import KUZMENKO2010_LOAD, kuzmenko2010_306
 from bearingload.units import KGF
+
+from .cli_helpers import committed
 
 # NSK Rolling Bearings catalogue, Table 9.9 (ISO 5753-1), deep groove ball bearings, bore over
 # 24 incl 30 mm: C3 = 13-28 µm, CN = 5-20 µm; bore over 30 incl 40: C4 = 28-46 µm.
@@ -174,7 +175,8 @@ def test_committed_306_tables_use_the_papers_conditions():
     assert b is not None
     k = ball_stiffness(12.3, 51.0, 0.515, 0.515, 2.1e4 * KGF, 0.3)
     assert b.stiffness == pytest.approx(float(k.ball), rel=1e-15)
-    text = committed.generate()["table1_k_306_300kgf_gr20um.csv"]
+    text, on_disk = committed("table1_k_306_300kgf_gr20um.csv")
+    assert text == on_disk
     rows = list(csv.DictReader(io.StringIO(text)))
     row8 = next(row for row in rows if row["balls"] == "8")
     r = solve(8, KUZMENKO2010_LOAD, b.stiffness, 0.02)

@@ -54,7 +54,8 @@ EXAMPLES = help_examples()
 def test_every_command_shows_examples():
     names = {name for name, _ in EXAMPLES}
     expected = {"bearingload", "solve", "sweep", "table", "catalog", "catalog show", "fit"}
-    expected |= {"batch", "errata", "accuracy", "stability"}
+    expected |= {"batch", "errata", "accuracy", "stability", "study", "tables", "tables check"}
+    expected |= {"tables update", "tables add"}
     assert expected <= names, expected - names
 
 

@@ -24,6 +24,8 @@ COMMANDS = {
     "errata": "errata",
     "accuracy": "accuracy",
     "stability": "stability",
+    "study": "study",
+    "tables": "tables",
 }
 
 

@@ -188,17 +188,3 @@ def _compare(name: str, z_max: int, cond: Conditions) -> Table:
         notes=notes + _omitted_note(z_max, cond) + _method_bearing_note(cond),
         conditions=_conditions(cond, None),
     )
-
-
-def kuzmenko2010_306_table(name: str, clearance: float) -> Table:
-    """Table 1 (``"k"``) or 2.2 (``"kq"``) for bearing 306 at 300 kgf and G_r [mm] (the
-    conditions of Kuzmenko 2010, §3, with the exact Hertz stiffness)."""
-    from bearingload.studies.tables import kuzmenko2010_306
-
-    table = design_table(name, 30, kuzmenko2010_306(clearance))
-    note = (
-        "Conditions of Kuzmenko (2010) §3: F_r = 300 kgf, E = 2.1e4 kgf/mm^2, nu = 0.3, the "
-        "paper's geometry (= catalogue row 306); stiffness exact Hertz, not the paper's 4700 "
-        "kgf/mm^1.5."
-    )
-    return Table(table.title, table.columns, table.rows, [*table.notes, note], table.conditions)
