@@ -32,9 +32,10 @@ lint: $(STAMP)
 	$(BIN)/mypy bearingload
 
 tables: $(STAMP)
-	$(BIN)/python -m bearingload.reports.committed tables --readme README.md
+	$(BIN)/python -m bearingload.reports.committed tables --errata docs/errata.md
 
-## make golden: rewrite the stored CLI outputs (tests/golden/) and the README's console examples
+## make golden: rewrite the stored CLI outputs (tests/golden/), the console examples of README.md
+## and docs/, and the command-line reference docs/cli.md (from every command's --help)
 golden: $(STAMP)
 	$(BIN)/python -m tests.golden_outputs
 

@@ -3,8 +3,8 @@
 Each entry maps a file stem to a function returning the :class:`~bearingload.reports.render.Table`;
 every table is written as CSV (for diffs and scripts) and Markdown (for people).
 
-Run ``python -m bearingload.reports.committed DIR [--readme README.md]`` to (re)write them (and
-the README's generated errata block, :func:`bearingload.reports.errata.readme_block`).
+Run ``python -m bearingload.reports.committed DIR [--errata docs/errata.md]`` to (re)write them
+(and the generated errata block of that page, :func:`bearingload.reports.errata.errata_block`).
 """
 
 from __future__ import annotations
@@ -40,12 +40,12 @@ def _registry() -> dict[str, Callable[[], Table]]:
         "kurochkin1973_differences": differences_table,
         "kurochkin1973_example1": example1_moment_table,
         "compliance_fits": fit_table,
-        "stiffness_seed003": stiffness_table,
+        "stiffness_crane2009": stiffness_table,
         # every printed number the project recomputes (bearingload errata)
         "errata": lambda: errata_table(errata_rows()),
         # ISO/TS 16281 L10r against clearance, 6205, radial and combined load
         "life_vs_clearance_6205": life_vs_clearance_table,
-        # work-precision of every method (issue 9): errors and iterations, no times
+        # work-precision of every method: errors and iterations, no times
         "accuracy": accuracy_table,
     }
 
@@ -69,13 +69,13 @@ def write_all(directory: str) -> list[str]:
     return sorted(files)
 
 
-def update_readme(path: str) -> bool:
-    """Rewrite the generated errata block of the README at ``path``; whether it changed."""
-    from bearingload.reports.errata import replace_readme_block
+def update_errata_page(path: str) -> bool:
+    """Rewrite the generated errata block of the page at ``path``; whether it changed."""
+    from bearingload.reports.errata import replace_errata_block
 
     with open(path, encoding="utf-8") as fh:
         text = fh.read()
-    new = replace_readme_block(text)
+    new = replace_errata_block(text)
     if new != text:
         write_atomic(new, path)
     return new != text
@@ -83,13 +83,13 @@ def update_readme(path: str) -> bool:
 
 if __name__ == "__main__":  # pragma: no cover - exercised by `make tables`
     args = sys.argv[1:]
-    readme = None
-    if "--readme" in args:
-        at = args.index("--readme")
-        readme = args[at + 1]
+    page = None
+    if "--errata" in args:
+        at = args.index("--errata")
+        page = args[at + 1]
         del args[at : at + 2]
     target = args[0] if args else "tables"
     for name in write_all(target):
         print(f"wrote {os.path.join(target, name)}")
-    if readme is not None:
-        print(f"{'rewrote' if update_readme(readme) else 'unchanged'} errata block of {readme}")
+    if page is not None:
+        print(f"{'rewrote' if update_errata_page(page) else 'unchanged'} errata block of {page}")

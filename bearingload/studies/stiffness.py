@@ -205,7 +205,7 @@ def comparison_rows() -> list[dict[str, Any]]:
 
 
 def stiffness_table() -> Table:
-    """Committed table ``stiffness_seed003``."""
+    """Committed table ``stiffness_crane2009``."""
     cols = [
         Column("case", "case", align="left"),
         Column("load", "F_r", "N", 5),
