@@ -6,7 +6,7 @@ VENV := .venv
 BIN := $(VENV)/bin
 STAMP := $(VENV)/.installed
 
-.PHONY: run test lint tables golden bench clean
+.PHONY: run test lint tables golden docs bench clean
 
 $(STAMP): pyproject.toml
 	$(PY) -m venv $(VENV)
@@ -38,6 +38,9 @@ tables: $(STAMP)
 ## and docs/, and the command-line reference docs/cli.md (from every command's --help)
 golden: $(STAMP)
 	$(BIN)/python -m tests.golden_outputs
+
+## make docs: everything generated in README.md and docs/ (make tables, then make golden)
+docs: tables golden
 
 ## make bench: vectorised solver against a per-case scipy brentq loop, one call against scipy root
 ## (hybr) and the Hertz contact against brentq on the ellipticity equation, ring_forces against a
