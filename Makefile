@@ -6,7 +6,7 @@ VENV := .venv
 BIN := $(VENV)/bin
 STAMP := $(VENV)/.installed
 
-.PHONY: run test lint tables golden bench clean
+.PHONY: run test lint tables golden docs bench clean
 
 $(STAMP): pyproject.toml
 	$(PY) -m venv $(VENV)
@@ -33,15 +33,19 @@ lint: $(STAMP)
 
 ## make tables: rewrite every file of tables/ whose text differs from its command in
 ## tables/manifest.toml (bearingload tables update --exact), the example folder examples/tables
-## and the README's errata block
+## and the errata block of docs/errata.md
 tables: $(STAMP)
 	$(BIN)/bearingload tables update --exact tables
 	$(BIN)/bearingload tables update --exact examples/tables
-	$(BIN)/python -m bearingload.reports.committed README.md
+	$(BIN)/python -m bearingload.reports.committed docs/errata.md
 
-## make golden: rewrite the stored CLI outputs (tests/golden/) and the README's console examples
+## make golden: rewrite the stored CLI outputs (tests/golden/), the console examples of README.md
+## and docs/, and the command-line reference docs/cli.md (from every command's --help)
 golden: $(STAMP)
 	$(BIN)/python -m tests.golden_outputs
+
+## make docs: everything generated in README.md and docs/ (make tables, then make golden)
+docs: tables golden
 
 ## make bench: vectorised solver against a per-case scipy brentq loop, one call against scipy root
 ## (hybr) and the Hertz contact against brentq on the ellipticity equation, ring_forces against a

@@ -1,9 +1,11 @@
 """Golden CLI outputs: the exact full output of every command in every format, stored as files.
 
 ``make golden`` (``python -m tests.golden_outputs``) runs every command below and writes its
-output to ``tests/golden/<name>.txt``, and rewrites the output under every ``$ bearingload ...``
-line of the README's ```console blocks; ``tests/test_golden.py`` fails when a stored output or
-the README differs from what the code prints now (as sqlite-utils checks its CLI docs).
+output to ``tests/golden/<name>.txt``, rewrites the output under every ``$ bearingload ...``
+line of the ```console blocks of the README and of every ``docs/*.md`` page, and writes the
+command-line reference ``docs/cli.md`` (:mod:`tests.cli_reference`); ``tests/test_golden.py``
+and ``tests/test_docs.py`` fail when a stored output, a page or the reference differs from what
+the code prints now (as sqlite-utils checks its CLI docs).
 """
 
 from __future__ import annotations
@@ -16,6 +18,7 @@ from pathlib import Path
 ROOT = Path(__file__).resolve().parents[1]
 GOLDEN = ROOT / "tests" / "golden"
 README = ROOT / "README.md"
+DOCS = ROOT / "docs"
 FORMATS = ("table", "csv", "markdown", "json")
 
 HAND = "solve -z 8 -F 300kgf -K 4700kgf/mm^1.5 -G 20um"
@@ -84,9 +87,14 @@ def expected() -> dict[str, str]:
     return out
 
 
-def readme_text() -> str:
-    """The README with every console example's output as the code prints it now."""
-    text = README.read_text(encoding="utf-8")
+def doc_pages() -> list[Path]:
+    """The README and every Markdown page of ``docs/``: the files whose console examples are real."""
+    return [README, *sorted(DOCS.glob("*.md"))]
+
+
+def page_text(path: Path) -> str:
+    """The page at ``path`` with every console example's output as the code prints it now."""
+    text = path.read_text(encoding="utf-8")
 
     def block(match: re.Match[str]) -> str:
         parts = re.split(r"^\$ ", match.group(1), flags=re.M)
@@ -100,6 +108,11 @@ def readme_text() -> str:
     return re.sub(r"```console\n(.*?)```", block, text, flags=re.S)
 
 
+def readme_text() -> str:
+    """The README with every console example's output as the code prints it now."""
+    return page_text(README)
+
+
 def main() -> None:
     import os
 
@@ -111,8 +124,16 @@ def main() -> None:
             old.unlink()
     for name, content in files.items():
         (GOLDEN / name).write_text(content, encoding="utf-8", newline="\n")
-    README.write_text(readme_text(), encoding="utf-8", newline="\n")
-    print(f"wrote {len(files)} golden outputs and the README's console examples", file=sys.stderr)
+    for page in doc_pages():
+        page.write_text(page_text(page), encoding="utf-8", newline="\n")
+    from .cli_reference import CLI_DOC, write
+
+    write()
+    print(
+        f"wrote {len(files)} golden outputs, the console examples of README.md and docs/, "
+        f"and {CLI_DOC.relative_to(ROOT)}",
+        file=sys.stderr,
+    )
 
 
 if __name__ == "__main__":

@@ -1,6 +1,7 @@
 """Every example a user is shown runs: the ``bearingload ...`` lines of every command's --help
-(its ``\\b`` Examples block), and the README's bad-input example with its stated error line.
-(The README's console examples are checked, output and all, by test_readme and test_golden.)"""
+(its ``\\b`` Examples block), and the bad-input examples of the README and docs/ with their stated
+error lines. (The console examples of README and docs/ are checked, output and all, by
+test_readme and test_golden.)"""
 
 from __future__ import annotations
 
@@ -74,13 +75,14 @@ def test_help_example_runs(command, example, tmp_path, monkeypatch):
         assert result.output.strip(), example  # the answer went to standard output
 
 
-def _readme_error_examples() -> list[tuple[str, str]]:
-    """(command line, stated output) of the README's ```text blocks that run bearingload."""
-    text = (ROOT / "README.md").read_text(encoding="utf-8")
+def _readme_error_examples(page: Path = ROOT / "README.md") -> list[tuple[str, str]]:
+    """(command line, stated output) of a page's ```text blocks that run bearingload and show
+    its refusal (an ``Error:`` line; other text blocks illustrate outputs of made-up folders)."""
+    text = page.read_text(encoding="utf-8")
     out = []
     for block in re.findall(r"```text\n(.*?)```", text, flags=re.S):
-        if block.startswith("$ bearingload "):
-            command, _, stated = block.partition("\n")
+        command, _, stated = block.partition("\n")
+        if command.startswith("$ bearingload ") and stated.startswith("Error:"):
             out.append((command[len("$ ") :], stated))
     return out
 
@@ -88,6 +90,10 @@ def _readme_error_examples() -> list[tuple[str, str]]:
 def test_readme_bad_input_example_prints_what_the_readme_says(capsys):
     examples = _readme_error_examples()
     assert examples, "the README's Bad input section lost its example"
+    guide = _readme_error_examples(ROOT / "docs" / "guide.md")
+    assert guide, "the guide's Bad input section lost its example"
+    for page in sorted((ROOT / "docs").glob("*.md")):
+        examples += _readme_error_examples(page)
     for command, stated in examples:
         code, out, err = run_entry(capsys, *shlex.split(command)[1:])
         assert code == 2 and out == "", command

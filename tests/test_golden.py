@@ -1,11 +1,12 @@
 """The exact full output of every command in every format against the stored golden files, and the
-README's console examples against what the code prints (regenerate both with ``make golden``)."""
+console examples of the README and docs/ against what the code prints (regenerate both with
+``make golden``)."""
 
 from __future__ import annotations
 
 import pytest
 
-from .golden_outputs import COMMANDS, FORMATS, GOLDEN, README, readme_text, run
+from .golden_outputs import COMMANDS, FORMATS, GOLDEN, README, doc_pages, page_text, run
 
 
 @pytest.mark.parametrize("name", sorted(COMMANDS))
@@ -21,6 +22,7 @@ def test_every_golden_file_has_a_command():
     assert {p.name for p in GOLDEN.glob("*.txt")} == names
 
 
-def test_readme_console_examples_are_current(monkeypatch):
+@pytest.mark.parametrize("page", doc_pages(), ids=lambda p: p.name)
+def test_console_examples_are_current(page, monkeypatch):
     monkeypatch.chdir(README.parent)
-    assert readme_text() == README.read_text(encoding="utf-8"), "make golden rewrites them"
+    assert page_text(page) == page.read_text(encoding="utf-8"), "make golden rewrites them"

@@ -1,23 +1,23 @@
-"""The README's console examples are real: each ``$ bearingload ...`` block is run and compared."""
+"""The console examples of the README and docs/ are real: each ``$ bearingload ...`` is run and
+compared with the output the page shows."""
 
 from __future__ import annotations
 
 import re
 import shlex
-from pathlib import Path
 
 import pytest
 from click.testing import CliRunner
 
 from bearingload.cli import main
 
-README = Path(__file__).resolve().parents[1] / "README.md"
+from .golden_outputs import README, doc_pages
 
 
-def console_examples() -> list[tuple[str, str]]:
+def console_examples(page=README) -> list[tuple[str, str]]:
     """(command, expected output) for every ``$ bearingload`` line in a ```console block."""
     examples = []
-    for block in re.findall(r"```console\n(.*?)```", README.read_text(encoding="utf-8"), re.S):
+    for block in re.findall(r"```console\n(.*?)```", page.read_text(encoding="utf-8"), re.S):
         parts = re.split(r"^\$ ", block, flags=re.M)
         for part in parts[1:]:
             command, _, output = part.partition("\n")
@@ -25,12 +25,20 @@ def console_examples() -> list[tuple[str, str]]:
     return examples
 
 
+def all_examples() -> list[tuple[str, str, str]]:
+    return [(p.name, c, o) for p in doc_pages() for c, o in console_examples(p)]
+
+
 def test_readme_has_console_examples():
-    assert len(console_examples()) >= 3
+    assert len(console_examples()) >= 9  # the ten tasks but the Python one (a doctest)
 
 
-@pytest.mark.parametrize("command, expected", console_examples())
-def test_readme_console_example(command, expected, monkeypatch):
+def test_guide_has_console_examples():
+    assert len(console_examples(README.parent / "docs" / "guide.md")) >= 10
+
+
+@pytest.mark.parametrize("page, command, expected", all_examples())
+def test_console_example(page, command, expected, monkeypatch):
     monkeypatch.chdir(README.parent)  # example files are named relative to the repository
     args = shlex.split(command)
     assert args[0] == "bearingload"
