@@ -3,7 +3,7 @@
 Run with ``make bench``. Times, each as the best of a few runs of a fresh ``bearingload batch``
 process (start-up, reading, checking, solving and writing the csv included):
 
-* 10 cases and 10^5 cases: their ratio (the aim: at most 10x, issue 18: plain code, one
+* 10 cases and 10^5 cases: their ratio (the aim: at most 10x with plain code: one
   thread; the csv module reads, every number is written by ``render.number_text``);
 * the per-case scipy ``brentq`` baseline of ``bench_solver.py`` on 2000 of the same cases, as
   cases per second, against the batch's cases per second end to end;

@@ -75,6 +75,24 @@ def test_no_working_note_labels(page):
     assert not found, found
 
 
+def test_no_working_note_labels_in_code_tables_or_examples():
+    """Nor in the package, the tests, the benchmarks, the committed tables, the examples or the
+    Makefile (names from the domain, not from the project's history)."""
+    root = Path(__file__).resolve().parents[1]
+    files = [root / "Makefile"]
+    for folder in ("bearingload", "tests", "benchmarks", "tables", "examples"):
+        files += [
+            p for p in (root / folder).rglob("*") if p.suffix in (".py", ".csv", ".md", ".toml")
+        ]
+    here = Path(__file__).resolve()
+    found = {
+        str(p.relative_to(root)): hits
+        for p in files
+        if p.resolve() != here and (hits := WORKING_NOTES.findall(p.read_text(encoding="utf-8")))
+    }
+    assert not found, found
+
+
 def _slug(heading: str) -> str:
     """GitHub's anchor of a Markdown heading."""
     return re.sub(r"[^\w\- ]", "", heading.strip().lower()).replace(" ", "-")

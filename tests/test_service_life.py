@@ -1,4 +1,4 @@
-"""Lives as engineers use them (issue 20): hours, a_1, a_ISO, the modified lives, the film.
+"""Lives as engineers use them: hours, a_1, a_ISO, the modified lives, the film.
 
 Library formulas against printed values (tests/fixtures/life_published.py) and against
 independent mpmath implementations written here from the standards' equations; the command line
