@@ -38,8 +38,8 @@ import mpmath as mp
 DIGITS = 40
 GEOMETRY = {"balls": 7, "ball_diameter": 11.5, "pitch_diameter": 43.5, "f_i": 0.52, "f_o": 0.53}
 MATERIAL = {"modulus": 208000.0, "poisson": 0.3}
-#: (label (no commas: a csv cell), F_r [N], F_a [N], M [N mm], misalignment [deg] or None,
-#: G_r [mm], cage angle [deg])
+#: (label (no commas: a csv cell), F_r [N], F_a [N], M [N mm], misalignment [°] or None,
+#: G_r [mm], cage angle [°])
 CASES = (
     ("radial; G_r = 0", 1000.0, 0.0, 0.0, None, 0.0, 0.0),
     ("combined; G_r = 10 um", 1000.0, 500.0, 0.0, None, 0.01, 0.0),
@@ -62,10 +62,12 @@ OUT = os.path.join(
     "data",
     "accuracy_combined_reference.csv",
 )
+#: The columns in the project's vocabulary (``bearingload.reports.quantities``: ``key [unit]``,
+#: the radial load ``load``, angles in °); ``moment_out`` is the moment the equilibrium needs.
 HEADER = (
     "case,label,balls,ball_diameter [mm],pitch_diameter [mm],f_i,f_o,modulus [MPa],poisson,"
-    "radial_load [N],axial_load [N],moment [N mm],misalignment [deg],clearance [mm],"
-    "cage_angle [deg],x [mm],y [mm],axial [mm],tilt [deg],tilt_cross [deg],moment_out [N mm],"
+    "load [N],axial_load [N],moment [N mm],misalignment [°],clearance [mm],"
+    "cage_angle [°],x [mm],y [mm],axial [mm],tilt [°],tilt_cross [°],moment_out [N mm],"
     "q_max [N]"
 )
 

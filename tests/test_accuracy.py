@@ -193,7 +193,7 @@ def _mp_equilibrium_miss(case, state):
     alpha0 = mp.acos(1 - e / big_a) if e > 0 else mp.mpf(0)
     arm = mp.mpf(case["pitch_diameter"]) / 2 + (fi - mp.mpf(1) / 2) * dw * mp.cos(alpha0)
     x, y, a = (mp.mpf(state[k]) for k in ("x [mm]", "y [mm]", "axial [mm]"))
-    th, tc = (mp.radians(mp.mpf(state[k])) for k in ("tilt [deg]", "tilt_cross [deg]"))
+    th, tc = (mp.radians(mp.mpf(state[k])) for k in ("tilt [°]", "tilt_cross [°]"))
     sums = [mp.mpf(0)] * 5
     q_max = mp.mpf(0)
     for j in range(z):
@@ -237,7 +237,7 @@ def test_combined_reference_solves_the_model_at_30_digits():
             if case["misalignment"] is None:
                 assert float(state["moment_out [N mm]"]) == case["moment"]
             else:
-                assert float(state["tilt [deg]"]) == pytest.approx(case["misalignment"], abs=1e-15)
+                assert float(state["tilt [°]"]) == pytest.approx(case["misalignment"], abs=1e-15)
 
 
 def test_combined_rows_of_the_report():

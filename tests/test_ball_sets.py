@@ -190,7 +190,7 @@ def test_standard_ball_sizes() -> None:
 
 
 @pytest.mark.parametrize(
-    ("args", "parameter"), [((0.0, 40.0), "ball-diameter"), ((10.0, 9.0), "pitch-diameter")]
+    ("args", "parameter"), [((0.0, 40.0), "ball_diameter"), ((10.0, 9.0), "pitch_diameter")]
 )
 def test_ratings_refuse_bad_geometry(args: tuple[float, float], parameter: str) -> None:
     with pytest.raises(InputError) as info:

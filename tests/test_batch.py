@@ -257,11 +257,13 @@ def test_answer_does_not_depend_on_neighbours(tmp_path):
 
 
 def _solve_csv(args: list[str]) -> dict[str, str]:
-    """solve's csv row, every column."""
+    """solve's csv row, every column with a value (solve writes every key of its JSON case,
+    blank where null: the bearing columns of a ring given by hand, which batch writes only
+    when its file can name a bearing)."""
     out = CliRunner().invoke(main, ["solve", *args, "--format", "csv"], catch_exceptions=False)
     assert out.exit_code == 0
     row = next(csv.DictReader(io.StringIO(out.stdout)))
-    return dict(row)
+    return {k: v for k, v in row.items() if v != ""}
 
 
 def test_results_equal_solve_row_for_row():

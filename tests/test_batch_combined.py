@@ -311,6 +311,8 @@ def test_life_columns_do_not_choose_the_engine():
         args = ["solve", "6205", "-F", "1.4kN", "-G", "C3", *extra, "--format", "csv"]
         expected = _rows(CliRunner().invoke(main, args).stdout)[0]
         for key, value in expected.items():  # a file of bearings: stiffness in N/mm^m
+            if value == "" and key not in row:
+                continue  # solve's blank epsilon: batch writes it with a method column only
             assert row[key.replace("N/mm^1.5", "N/mm^m")] == value, (extra, key)
     assert (
         rows[1]["reference_rating_life [10^6 rev]"] != rows[0]["reference_rating_life [10^6 rev]"]

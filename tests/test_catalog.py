@@ -236,7 +236,7 @@ def test_unknown_designation_explains_manual_geometry() -> None:
     msg = str(info.value)
     assert info.value.parameter == "bearing"
     assert "not in the catalogue" in msg
-    assert "--balls Z --ball-diameter DW --pitch-diameter DM" in msg
+    assert "'balls', 'ball_diameter' and 'pitch_diameter'" in msg  # the CLI: --ball-diameter
     assert "bearingload catalog" in msg
 
 
@@ -246,7 +246,7 @@ def test_unknown_gost_points_to_iso_counterpart() -> None:
 
 
 def test_unreadable_designation_explains_manual_geometry() -> None:
-    with pytest.raises(InputError, match="--balls Z --ball-diameter DW") as info:
+    with pytest.raises(InputError, match="'balls', 'ball_diameter'") as info:
         find("bearing-x")
     assert info.value.parameter == "bearing"
     assert "accepted: ISO" in str(info.value)
@@ -288,10 +288,10 @@ def test_overrides() -> None:
         ({"balls": 0}, "balls"),
         ({"balls": 2.5}, "balls"),
         ({"balls": 20}, "balls"),  # 20 x 12.3 mm balls overlap on d_m 51
-        ({"ball_diameter": 0.0}, "ball-diameter"),
-        ({"ball_diameter": 21.0}, "ball-diameter"),  # (D - d)/2 = 21
-        ({"pitch_diameter": 40.0}, "pitch-diameter"),  # below d + Dw = 42.3
-        ({"pitch_diameter": 60.0}, "pitch-diameter"),  # above D - Dw = 59.7
+        ({"ball_diameter": 0.0}, "ball_diameter"),
+        ({"ball_diameter": 21.0}, "ball_diameter"),  # (D - d)/2 = 21
+        ({"pitch_diameter": 40.0}, "pitch_diameter"),  # below d + Dw = 42.3
+        ({"pitch_diameter": 60.0}, "pitch_diameter"),  # above D - Dw = 59.7
         ({"f_i": 0.5}, "f_i"),
         ({"f_o": 1.2}, "f_o"),
     ],

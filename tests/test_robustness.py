@@ -120,8 +120,9 @@ def test_csv_headers_carry_units():
     )
     header = out.splitlines()[0]
     assert header.startswith(
-        "method,balls,load [N],stiffness [N/mm^1.5],clearance [mm],cage_angle [°]"
-    )
+        "bearing,method,balls,load [N],stiffness [N/mm^1.5],clearance [mm],clearance_pick,"
+        "cage_angle [°]"
+    )  # every key of the JSON case; bearing and clearance_pick blank for a ring given by hand
     assert (
         ",q_max [N]," in header and ",x [mm]," in header and ",stiffness_radial [N/mm]," in header
     )

@@ -75,7 +75,7 @@ def test_types_share_the_row() -> None:
         lookup("6206")
     with pytest.raises(InputError) as info:
         lookup("NU206", rollers=40)
-    assert info.value.parameter == "balls"
+    assert info.value.parameter == "rollers"  # the library's name; the CLI's --balls
 
 
 def _p_ref(q: float, le: float, dw: float, dm: float, e: float, nu: float) -> tuple[float, float]:

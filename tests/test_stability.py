@@ -79,8 +79,9 @@ def test_stability_cli_json_rows(capsys):
     assert out.exit_code == 0
     doc = json.loads(out.output)
     keys = {"family", "cases", "max_residual", "nan", "failures", "max_iterations"}
-    assert [r["family"] for r in doc["rows"]] == ["hertz_curvature"]
-    assert keys <= set(doc["rows"][0])
+    assert list(doc) == ["radial"]
+    assert [r["family"] for r in doc["radial"]["rows"]] == ["hertz_curvature"]
+    assert keys <= set(doc["radial"]["rows"][0])
     code, _, err = run_entry(capsys, "stability", "--family", "nope")
     assert code == 2 and err.startswith("Error: Invalid value for '--family'")
 
@@ -178,8 +179,11 @@ def test_stability_cli_both_tables_and_csv(capsys):
                  "--format", "json")  # fmt: skip
     assert out.exit_code == 0
     doc = json.loads(out.output)
-    assert [d["rows"][0]["family"] for d in doc] == ["hertz_curvature", "combined_preload"]
-    assert {"residual_axial", "residual_moment", "refusal_reasons"} <= set(doc[1]["rows"][0])
+    assert isinstance(doc, dict) and list(doc) == ["radial", "combined"]  # one document
+    assert [d["rows"][0]["family"] for d in doc.values()] == ["hertz_curvature", "combined_preload"]
+    assert {"residual_axial", "residual_moment", "refusal_reasons"} <= set(
+        doc["combined"]["rows"][0]
+    )
     code, _, err = run_entry(capsys, "stability", "--family", "preload", "--family",
                              "combined_preload", "--format", "csv")  # fmt: skip
     assert code == 2 and err.startswith("Error: Invalid value for '--format': csv holds one table")

@@ -60,8 +60,8 @@ BEARING_COLUMNS = ("bearing", "ball_diameter", "pitch_diameter", "inner_conformi
 #: reason names the column the user wrote (as the command line names the option).
 _COLUMN_OF = {
     "radial_load": "load",
-    "ball-diameter": "ball_diameter",
-    "pitch-diameter": "pitch_diameter",
+    "rollers": "balls",
+    "roller_diameter": "ball_diameter",
     "f_i": "inner_conformity",
     "f_o": "outer_conformity",
     "pick": "clearance_pick",

@@ -74,7 +74,7 @@ DEFAULT_MAKER = "NSK"
 SERIES: tuple[str, ...] = ("60", "62", "63", "64", "618", "619", "160")
 
 _BY_HAND = (
-    "give the geometry by hand: --balls Z --ball-diameter DW --pitch-diameter DM "
+    "give the geometry by hand: 'balls', 'ball_diameter' and 'pitch_diameter' "
     "(run 'bearingload catalog' to list the known bearings)"
 )
 
@@ -564,16 +564,16 @@ def check_geometry(
     if isinstance(balls, bool) or not float(balls).is_integer() or balls < 1:
         raise InputError("balls", f"the number of balls must be a whole number >= 1, not {balls!r}")
     if not ball_diameter > 0:
-        raise InputError("ball-diameter", f"must be > 0 mm, not {ball_diameter!r}")
+        raise InputError("ball_diameter", f"must be > 0 mm, not {ball_diameter!r}")
     if not ball_diameter < (D - d) / 2:
         raise InputError(
-            "ball-diameter",
+            "ball_diameter",
             f"{ball_diameter:g} mm does not fit between the rings: it must be below "
             f"(D - d)/2 = {(D - d) / 2:g} mm",
         )
     if not d + ball_diameter < pitch_diameter < D - ball_diameter:
         raise InputError(
-            "pitch-diameter",
+            "pitch_diameter",
             f"{pitch_diameter:g} mm puts the balls outside the rings: it must lie between "
             f"d + Dw = {d + ball_diameter:g} and D - Dw = {D - ball_diameter:g} mm",
         )

@@ -215,7 +215,7 @@ def _row(bore: float, kind: str = "ball") -> ClearanceRow:
         "bore",
         f"{d:g} mm is outside the clearance table of {TABLES[kind][1]} "
         f"(over {rows[0].bore_over:g} up to {rows[-1].bore_incl:g} mm); "
-        "give the clearance as a length instead, e.g. --clearance 20um",
+        "give 'clearance' as a length instead, e.g. 20um",
     )
 
 
@@ -362,6 +362,6 @@ def clearance_length(spec: ClearanceSpec | None) -> float:
 
 
 _NEEDS_BORE = (
-    "a clearance class ({}) is resolved by the bore; give a bearing designation, or the "
-    "clearance as a length, e.g. --clearance 20um"
+    "a clearance class ({}) is resolved by the bore; give a bearing designation, or "
+    "'clearance' as a length, e.g. 20um"
 )

@@ -69,13 +69,13 @@ def _gamma(ball_diameter: ArrayLike, pitch_diameter: ArrayLike) -> np.ndarray:
     dw = np.asarray(ball_diameter, dtype=float)
     dm = np.asarray(pitch_diameter, dtype=float)
     if not (np.all(np.isfinite(dw)) and np.all(dw > 0)):
-        raise InputError("ball-diameter", f"must be finite and > 0 mm, not {ball_diameter!r}")
+        raise InputError("ball_diameter", f"must be finite and > 0 mm, not {ball_diameter!r}")
     if not (np.all(np.isfinite(dm)) and np.all(dm > dw)):
-        raise InputError("pitch-diameter", f"must exceed the ball diameter, not {pitch_diameter!r}")
+        raise InputError("pitch_diameter", f"must exceed the ball diameter, not {pitch_diameter!r}")
     g = dw / dm
     if np.any(g > 0.40) or np.any(g < 0.01):
         raise InputError(
-            "ball-diameter", "D_w/d_m must lie in 0.01 ... 0.40, the range of the ISO tables"
+            "ball_diameter", "D_w/d_m must lie in 0.01 ... 0.40, the range of the ISO tables"
         )
     return g
 

@@ -110,8 +110,8 @@ def resolve_bearing(
     Raises
     ------
     InputError
-        Unknown designation (``bearing``), impossible geometry (``balls``, ``ball-diameter``,
-        ``pitch-diameter``, ``f_i``, ``f_o``), missing inputs, a clearance class without a bore
+        Unknown designation (``bearing``), impossible geometry (``balls``, ``ball_diameter``,
+        ``pitch_diameter``, ``f_i``, ``f_o``), missing inputs, a clearance class without a bore
         (``clearance``), bad modulus or Poisson's ratio.
     """
     _check_inputs(modulus, stiffness, ball_diameter, pitch_diameter, poisson, clearance_pick)
@@ -245,8 +245,8 @@ def _check_inputs(
     for name, value in (
         ("modulus", modulus),
         ("stiffness", stiffness),
-        ("ball-diameter", ball_diameter),
-        ("pitch-diameter", pitch_diameter),
+        ("ball_diameter", ball_diameter),
+        ("pitch_diameter", pitch_diameter),
     ):
         if value is not None:
             finite_positive(name, value)

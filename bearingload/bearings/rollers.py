@@ -197,7 +197,8 @@ def lookup(
     ------
     InputError
         (parameter ``bearing``) not a cylindrical roller designation or not in the catalogue;
-        (``balls``, ``ball-diameter``, ``pitch-diameter``) impossible overrides.
+        (``rollers``, ``roller_diameter``, ``pitch_diameter``, ``roller_length``) impossible
+        overrides.
     """
     parsed = parse(designation)
     if parsed.kind != "roller":
@@ -218,15 +219,15 @@ def lookup(
     new = dataclasses.replace(row, parsed=parsed, overrides=tuple(changes), **changes)  # type: ignore[arg-type]
     z, dw, dm, le = new.rollers, new.roller_diameter, new.pitch_diameter, new.roller_length
     if isinstance(z, bool) or not float(z).is_integer() or z < 1:
-        raise InputError("balls", f"the number of rollers must be a whole number >= 1, not {z!r}")
+        raise InputError("rollers", f"must be a whole number >= 1, not {z!r}")
     if not 0 < dw < (new.D - new.d) / 2:
-        raise InputError("ball-diameter", f"roller diameter {dw:g} mm does not fit the rings")
+        raise InputError("roller_diameter", f"{dw:g} mm does not fit the rings")
     if not new.d + dw < dm < new.D - dw:
-        raise InputError("pitch-diameter", f"{dm:g} mm puts the rollers outside the rings")
+        raise InputError("pitch_diameter", f"{dm:g} mm puts the rollers outside the rings")
     if z > 1 and not dw < dm * math.sin(math.pi / z):
-        raise InputError("balls", f"{z} rollers of {dw:g} mm overlap on d_m {dm:g} mm")
+        raise InputError("rollers", f"{z} rollers of {dw:g} mm overlap on d_m {dm:g} mm")
     if not (math.isfinite(le) and le > 0):
-        raise InputError("roller-length", f"must be > 0 mm, not {le!r}")
+        raise InputError("roller_length", f"must be > 0 mm, not {le!r}")
     return dataclasses.replace(new, rollers=int(z))
 
 
@@ -270,7 +271,7 @@ def line_contact_pressure(
     if np.any(~np.isfinite(q)) or np.any(q < 0):
         raise InputError("load", f"must be finite and >= 0 N, not {load!r}")
     if np.any(~np.isfinite(le)) or np.any(le <= 0):
-        raise InputError("roller-length", f"must be finite and > 0 mm, not {length!r}")
+        raise InputError("roller_length", f"must be finite and > 0 mm, not {length!r}")
     e, nu = float(modulus), float(poisson)
     if not (math.isfinite(e) and e > 0):
         raise InputError("modulus", f"must be finite and > 0 MPa, not {modulus!r}")

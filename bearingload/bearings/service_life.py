@@ -114,9 +114,9 @@ def _modified(op: Operating, b: LifeBasis, a1: float, out: ServiceLife) -> None:
     """nu_1, kappa, e_C, C_u, a_ISO, the modified lives and the film, into ``out``."""
     v = out.values
     if op.speed is None:
-        raise InputError("viscosity", "needs the shaft speed (--speed) for the rated viscosity")
+        raise InputError("viscosity", "needs the shaft speed ('speed') for the rated viscosity")
     if b.pitch_diameter is None:
-        raise InputError("viscosity", "needs the pitch diameter (a bearing or --pitch-diameter)")
+        raise InputError("viscosity", "needs the pitch diameter (a bearing or 'pitch_diameter')")
     assert op.viscosity is not None
     nu1 = float(lub.rated_viscosity(op.speed, b.pitch_diameter))
     kappa = op.viscosity / nu1

@@ -112,6 +112,7 @@ DECLARATIONS: dict[str, tuple[tuple[str, ...], dict[str, Any]]] = {
         "--balls",
         "-z",
         type=int,
+        library=("rollers",),
         help="Number of balls z (1 to 100000; a sweep: 3 or more): required for a ring given "
         "by hand, else it replaces the designation's.",
     ),
@@ -182,13 +183,13 @@ DECLARATIONS: dict[str, tuple[tuple[str, ...], dict[str, Any]]] = {
     "ball_diameter": _option(
         "--ball-diameter",
         type=Quantity("length"),
-        library=("D_w", "ball-diameter"),
+        library=("D_w", "roller_diameter"),
         help="Ball diameter D_w, replacing the catalogue's. Bare number: mm.",
     ),
     "pitch_diameter": _option(
         "--pitch-diameter",
         type=Quantity("length"),
-        library=("d_m", "pitch-diameter"),
+        library=("d_m",),
         help="Pitch diameter d_m; default the catalogue's, else (d + D)/2. Bare number: mm.",
     ),
     "inner_conformity": _option(

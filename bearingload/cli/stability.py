@@ -44,7 +44,9 @@ def stability(size: str, families: tuple[str, ...], fmt: str, output: str | None
     F_a/F_r from 1e-9 to 1e9, 3 to 1000 balls. Per family: cases, refusals and failures with
     their reasons, NaN/inf, the residual of each equilibrium component (F_r, F_y, F_a, M, M_c)
     recomputed from the ball loads and contact angles, batch dependence, iterations and the
-    family's own check. csv holds one table: with csv, name families of one kind.
+    family's own check. csv holds one table: with csv, name families of one kind. json is one
+    document: {"radial": {...}, "combined": {...}} (the kinds run), each a table's title,
+    units and rows.
 
     \b
     Examples:
@@ -56,7 +58,7 @@ def stability(size: str, families: tuple[str, ...], fmt: str, output: str | None
     from bearingload.quality import stability as radial
     from bearingload.quality import stability_combined as combined
     from bearingload.reports.render import render
-    from bearingload.reports.stability import stability_table
+    from bearingload.reports.stability import stability_document, stability_table
 
     names = list(families)
     radial.check_selection(size, names, radial.family_names() + combined.family_names())
@@ -69,7 +71,11 @@ def stability(size: str, families: tuple[str, ...], fmt: str, output: str | None
             "Invalid value for '--format': csv holds one table; name with --family only radial "
             "or only combined_* families"
         )
-    tables = [
-        stability_table(module, module.run(size, picked or None)) for module, picked in chosen
-    ]
-    emit(render(tables, fmt), output)
+    tables = {
+        "combined" if module is combined else "radial": stability_table(
+            module, module.run(size, picked or None)
+        )
+        for module, picked in chosen
+    }
+    document = stability_document(tables) if fmt == "json" else None
+    emit(render(list(tables.values()), fmt, document=document), output)

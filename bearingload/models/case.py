@@ -24,32 +24,33 @@ INPUTS = ("balls", "load", "stiffness", "clearance", "cage_angle", "exponent")
 class Case:
     """Validated inputs of one case or an array of cases.
 
-    The arrays are kept as given (not broadcast), so that a model computes each distinct input
+    The inputs are kept as given (not broadcast), so that a model computes each distinct input
     once and its answer for a case never depends on the inputs it ignores; ``shape`` is the
-    broadcast shape of the cases.
+    broadcast shape of the cases. An input given as a scalar is a Python ``int``/``float``
+    (the scalar contract), one given as an array an ndarray.
 
     Attributes
     ----------
-    balls : ndarray of int
+    balls : int or ndarray of int
         Number of rolling elements ``z``, 1 to 100 000. [-]
-    load : ndarray
+    load : float or ndarray
         Radial load ``F_r`` > 0. [N]
-    stiffness : ndarray
+    stiffness : float or ndarray
         Rolling-element stiffness ``K`` of both contacts in series, ``Q = K delta^m``. [N/mm^m]
-    clearance : ndarray
+    clearance : float or ndarray
         Radial internal clearance ``G_r`` (total play; negative = preload). [mm]
-    cage_angle : ndarray
+    cage_angle : float or ndarray
         Angle of ball 1 from the load line, reduced to [0, 360). [°]
-    exponent : ndarray
+    exponent : float or ndarray
         Load-deflection exponent ``m`` (3/2 balls, 10/9 rollers). [-]
     """
 
-    balls: np.ndarray
-    load: np.ndarray
-    stiffness: np.ndarray
-    clearance: np.ndarray
-    cage_angle: np.ndarray
-    exponent: np.ndarray
+    balls: Any
+    load: Any
+    stiffness: Any
+    clearance: Any
+    cage_angle: Any
+    exponent: Any
     shape: tuple[int, ...]
 
     @classmethod
@@ -63,7 +64,8 @@ class Case:
         exponent: Any = 1.5,
     ) -> Case:
         """Check every input (:class:`~bearingload.errors.InputError` names the parameter) and
-        broadcast them to one shape."""
+        find their broadcast shape; each input kept as a Python scalar when given as one (the
+        scalar contract, :func:`bearingload.numerics.scalar_out`)."""
         arrays = (
             validate.ball_count(balls),
             validate.positive("load", load, "N"),
@@ -72,7 +74,9 @@ class Case:
             np.mod(validate.finite("cage_angle", cage_angle), 360.0),
             validate.exponent(exponent),
         )
-        return cls(*arrays, shape=broadcast_shape(dict(zip(INPUTS, arrays, strict=True))))
+        shape = broadcast_shape(dict(zip(INPUTS, arrays, strict=True)))
+        balls, load, stiffness, clearance, cage_angle, exponent = (scalar(a) for a in arrays)
+        return cls(balls, load, stiffness, clearance, cage_angle, exponent, shape)
 
     def inputs(self, names: tuple[str, ...] = INPUTS) -> dict[str, Any]:
         """The inputs named ``names`` as keyword arguments (Python scalars for one case)."""

@@ -129,7 +129,9 @@ class CombinedDistribution:
     ball_angles : ndarray (..., z)
         phi_j from the load line. [°]
     contact_angles : ndarray (..., z)
-        Operating contact angle alpha_j of every ball. [°]
+        Operating contact angle alpha_j of every ball; for a ball carrying no load the
+        direction of its groove-centre line, ``atan2(u_j, max(rho_j, 0))``, which is ±90° for
+        a loose ball (groove centres crossed) and never NaN. [°]
     ball_approaches : ndarray (..., z)
         delta_j (negative: the gap left). [mm]
     ball_stiffnesses : ndarray (..., z)

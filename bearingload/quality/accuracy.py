@@ -232,10 +232,10 @@ _COMBINED_INPUTS = (
     ("f_o", "f_o"),
     ("modulus", "modulus [MPa]"),
     ("poisson", "poisson"),
-    ("radial_load", "radial_load [N]"),
+    ("radial_load", "load [N]"),
     ("axial_load", "axial_load [N]"),
     ("clearance", "clearance [mm]"),
-    ("cage_angle", "cage_angle [deg]"),
+    ("cage_angle", "cage_angle [°]"),
 )
 #: The groups of combined-load cases reported, in order.
 COMBINED_GROUPS = (
@@ -261,7 +261,7 @@ def combined_cases() -> list[dict[str, Any]]:
     for r in rows:
         case: dict[str, Any] = {"label": r["label"], "balls": int(r["balls"])}
         case |= {key: float(r[column]) for key, column in _COMBINED_INPUTS}
-        tilt = r["misalignment [deg]"]
+        tilt = r["misalignment [°]"]
         case["misalignment"] = float(tilt) if tilt else None
         case["moment"] = float(r["moment [N mm]"])
         case["q_max"] = float(r["q_max [N]"])

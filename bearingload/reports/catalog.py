@@ -151,7 +151,7 @@ def _entry(
         doc: dict[str, Any] = {key: value for key, _, value, _ in fields}
         doc["source"] = source
         doc["notes"] = notes
-        doc["units"] = {key: unit for key, _, _, unit in fields if unit and unit != "-"}
+        doc["units"] = {key: unit for key, _, _, unit in fields if unit}
         return render([], "json", document=doc)
     table = Table(
         title=title,

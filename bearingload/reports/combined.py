@@ -8,7 +8,8 @@ named through :mod:`bearingload.reports.quantities`. Same layout as the radial r
   and the static safety, contact angles, displacements and tilt, the lives), one column per
   case; then every ball's angle, contact angle, approach and load; the geometry and the source
   of each value only with ``show_geometry``.
-* ``csv``: one row per case (inputs among the columns); with ``per_ball`` one row per ball.
+* ``csv``: one row per case (inputs among the columns), the keys of the JSON case as the radial
+  report writes them (``misalignment`` blank when not given); with ``per_ball`` one row per ball.
 * ``json``: ``{"cases": [...], "units": {...}, "bearing": {...}}``; every case carries the
   per-ball arrays ``ball_angles``, ``contact_angles``, ``ball_approaches``, ``ball_loads``.
 """
@@ -21,7 +22,14 @@ from typing import Any
 
 from bearingload.reports.quantities import SERVICE_KEYS, units
 from bearingload.reports.render import Column, Table, render
-from bearingload.reports.solve import column, quantity_rows, service_notes, set_note, with_service
+from bearingload.reports.solve import (
+    column,
+    given_keys,
+    quantity_rows,
+    service_notes,
+    set_note,
+    with_service,
+)
 from bearingload.studies.combined_bearing import CombinedCase, combined_values
 
 INPUT_KEYS = (
@@ -146,7 +154,7 @@ def _blank(record: dict[str, Any], keys: Sequence[str]) -> dict[str, Any]:
 
 
 def _case_table(records: Sequence[dict[str, Any]]) -> Table:
-    keys = _present(records, tuple(dict.fromkeys(INPUT_KEYS + ANSWER_KEYS)))
+    keys = given_keys(records, tuple(dict.fromkeys(INPUT_KEYS + ANSWER_KEYS)))
     return Table("cases", [column(k, 1.5) for k in keys], [_blank(r, keys) for r in records])
 
 
@@ -164,7 +172,7 @@ def _balls(c: CombinedCase) -> list[tuple[float, float, float, float]]:
 
 
 def _per_ball_table(cases: Sequence[CombinedCase], records: Sequence[dict[str, Any]]) -> Table:
-    inputs = _present(records, INPUT_KEYS)
+    inputs = given_keys(records, INPUT_KEYS)
     rows = []
     for c, r in zip(cases, records, strict=True):
         for i, values in enumerate(_balls(c)):
@@ -220,12 +228,36 @@ def _balls_human(cases: Sequence[CombinedCase], records: Sequence[dict[str, Any]
     for j, (angle, alpha, approach, load) in enumerate(per[0]):
         row: dict[str, Any] = {"ball": j + 1, "angle": angle}
         if one:
-            row |= {"alpha": alpha, "approach": approach * 1e3, "q": load}
+            row |= {
+                "alpha": contact_angle_shown(alpha, load),
+                "approach": approach * 1e3,
+                "q": load,
+            }
         else:
-            row |= {f"a{i}": balls[j][1] for i, balls in enumerate(per)}
+            row |= {f"a{i}": contact_angle_shown(b[j][1], b[j][3]) for i, b in enumerate(per)}
             row |= {f"q{i}": balls[j][3] for i, balls in enumerate(per)}
         rows.append(row)
-    return Table("Ball loads (ball 1 at the cage angle; angles from the load line)", columns, rows)
+    loose = any(ball[3] <= 0.0 for balls in per for ball in balls)
+    return Table(
+        "Ball loads (ball 1 at the cage angle; angles from the load line)",
+        columns,
+        rows,
+        [LOOSE_NOTE] if loose else [],
+    )
+
+
+#: The per-ball table's note where a ball carries no load.
+LOOSE_NOTE = (
+    "Contact angle '-': the ball carries no load, so it has no contact angle (a ball whose "
+    "groove centres have crossed is loose, not at the groove edge). csv and json keep the "
+    "direction of its groove-centre line, atan2(u, max(rho, 0)): up to ±90° for a loose ball."
+)
+
+
+def contact_angle_shown(alpha: float, load: float) -> Any:
+    """A ball's contact angle [°] as the human table shows it: '-' for a ball carrying no load
+    (no contact; a loose ball's ±90° would read as a ball at the groove edge)."""
+    return alpha if load > 0.0 else "-"
 
 
 def _document(cases: Sequence[CombinedCase], records: Sequence[dict[str, Any]]) -> dict[str, Any]:

@@ -39,7 +39,8 @@ def kurochkin_json(s: KurochkinSweep) -> dict[str, Any]:
     doc["load"] = 1.0
     doc |= {"stiffness": 1.0, "steps": len(s.cage_angle), "rows": _rows(s), "summary": summary}
     unit_map = units(keys)
-    unit_map["clearance"] = "(P/K)^(2/3)"
+    # P = K = 1: the load and the stiffness are their own units, the clearance in (P/K)^(2/3)
+    unit_map |= {"load": "P", "stiffness": "K", "clearance": "(P/K)^(2/3)"}
     return doc | {"units": unit_map}
 
 

@@ -113,6 +113,12 @@ def _named(name: str | None) -> str:
     return f"{name}: " if name else ""
 
 
+def _designation(case: Any) -> str | None:
+    """The designation of a solved case's bearing; None when given by hand."""
+    bearing = getattr(case, "bearing", None)
+    return None if bearing is None else bearing.designation
+
+
 def ball_loads_figure(
     cases: Sequence[tuple[str, Any, Any]],
     title: str,
@@ -157,7 +163,7 @@ def ball_loads_figure(
 def solve_figure(cases: Sequence[Any]) -> Any:
     """The ball loads of ``bearingload solve``'s own radial cases (LoadedCase of
     :mod:`bearingload.studies.loaded_bearing`): those of the exact model, one set per clearance
-    pick side by side; the title names the middle one."""
+    pick side by side; the title names the bearing (a catalogue one) and the middle case."""
     exact = [c for c in cases if c.result.method == "exact"]
     several = len(exact) > 1
     drawn = []
@@ -169,7 +175,8 @@ def solve_figure(cases: Sequence[Any]) -> Any:
         drawn.append((label, model.ball_angles, model.ball_loads))
     case = exact[len(exact) // 2].result.case
     title = (
-        f"Ball loads, exact ring equilibrium: z = {int(case.balls)}, "
+        f"{_named(_designation(exact[0]))}Ball loads, exact ring equilibrium: "
+        f"z = {int(case.balls)}, "
         f"F_r = {float(case.load):.6g} N, K = {float(case.stiffness):.6g} "
         f"N/mm^{float(case.exponent):g}, G_r = {float(case.clearance) * 1e3:.6g} µm, "
         f"cage angle {float(case.cage_angle):.6g}°"
@@ -179,7 +186,8 @@ def solve_figure(cases: Sequence[Any]) -> Any:
 
 def combined_loads_figure(cases: Sequence[Any]) -> Any:
     """The ball loads and contact angles of ``bearingload solve``'s own combined-load cases
-    (CombinedCase of :mod:`bearingload.studies.combined_bearing`), one set per clearance pick."""
+    (CombinedCase of :mod:`bearingload.studies.combined_bearing`), one set per clearance pick;
+    the title names the bearing (a catalogue one), as the radial figure's does."""
     several = len(cases) > 1
     drawn, alphas = [], []
     for c in cases:
@@ -189,14 +197,18 @@ def combined_loads_figure(cases: Sequence[Any]) -> Any:
         drawn.append(
             (label, np.asarray(r.ball_angles).reshape(-1), np.asarray(r.ball_loads).reshape(-1))
         )
-        alphas.append(np.asarray(r.contact_angles).reshape(-1))
+        # a ball carrying no load has no contact angle: no point (a loose ball's ±90° would
+        # read as a ball at the groove edge; the human table shows '-')
+        loads = np.asarray(r.ball_loads).reshape(-1)
+        alphas.append(np.where(loads > 0.0, np.asarray(r.contact_angles).reshape(-1), np.nan))
     r = cases[len(cases) // 2].result
 
     def one(v: Any) -> float:
         return float(np.asarray(v).reshape(-1)[0])
 
     title = (
-        f"Ball loads, 3-D ring equilibrium: z = {int(r.balls)}, F_r = {one(r.load):.6g} N, "
+        f"{_named(_designation(cases[0]))}Ball loads, 3-D ring equilibrium: z = {int(r.balls)}, "
+        f"F_r = {one(r.load):.6g} N, "
         f"F_a = {one(r.axial_load):.6g} N, G_r = {one(r.clearance) * 1e3:.6g} µm, "
         f"cage angle {one(r.cage_angle):.6g}°"
     )

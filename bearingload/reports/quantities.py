@@ -249,11 +249,14 @@ def quantity(key: str) -> Quantity:
 
 
 def units(keys: Iterable[str], exponent: float | None = None) -> dict[str, str]:
-    """The JSON ``units`` object of ``keys`` (those with a unit); ``N/mm^m`` gets ``exponent``."""
+    """The JSON ``units`` object of ``keys``: the unit of every measured quantity, ``-`` for a
+    dimensionless one (k, K_Q, epsilon, s0, m); counts (balls), text and flags (unit ``""``) are
+    not listed. The one rule of every JSON document (as batch and the tables write their
+    columns' units); ``N/mm^m`` gets ``exponent``."""
     out = {}
     for key in keys:
         q = QUANTITIES.get(key)
-        if q is None or q.unit in ("", "-"):
+        if q is None or q.unit == "":
             continue
         unit = q.unit
         if unit == "N/mm^m" and exponent is not None:

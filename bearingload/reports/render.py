@@ -169,17 +169,20 @@ def _csv(t: Table) -> str:
 
 
 def _table_documents(tables: Sequence[Table]) -> Any:
-    docs = []
-    for t in tables:
-        doc: dict[str, Any] = {"title": t.title}
-        if t.conditions:
-            doc["conditions"] = {c.key: v for c, v in t.conditions}
-        units = {c.key: c.unit for c, _ in t.conditions if c.unit} | {
-            c.key: c.unit for c in t.columns if c.unit
-        }
-        doc |= {"units": units, "rows": list(t.rows)}
-        docs.append(doc)
+    docs = [table_document(t) for t in tables]
     return docs[0] if len(docs) == 1 else docs
+
+
+def table_document(t: Table) -> dict[str, Any]:
+    """The JSON object of one table: ``title``, ``conditions`` (where it has them), ``units``
+    (of the columns that have one) and ``rows``."""
+    doc: dict[str, Any] = {"title": t.title}
+    if t.conditions:
+        doc["conditions"] = {c.key: v for c, v in t.conditions}
+    units = {c.key: c.unit for c, _ in t.conditions if c.unit} | {
+        c.key: c.unit for c in t.columns if c.unit
+    }
+    return doc | {"units": units, "rows": list(t.rows)}
 
 
 def _csv_header(column: Column) -> str:

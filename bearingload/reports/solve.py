@@ -6,8 +6,10 @@ every quantity is named through :mod:`bearingload.reports.quantities`.
 * ``table`` / ``markdown``: the answer first (Q_max, k, loaded balls, load zone, deflection,
   stiffness, contact pressure, static safety, the lives L10 and L10r), one column per case; then every ball's load; the geometry
   of a catalogue bearing and the source of each value only with ``show_geometry``.
-* ``csv``: one rectangular table, one row per case, the case's inputs among the columns; with
-  ``per_ball`` one row per ball instead.
+* ``csv``: one rectangular table, one row per case, the case's inputs among the columns: every
+  key of the JSON case (a blank cell where it is null) but the per-ball arrays, the stiffness
+  matrix and the texts (``model``, ``ignores``, ``warnings``: on stderr); with ``per_ball`` one
+  row per ball instead.
 * ``json``: ``{"cases": [...], "units": {...}, "warnings": [...]}`` with every quantity of every
   case (per-ball arrays and the case's ``warnings`` included), ``"warnings"`` the findings of all
   cases (each once; empty when all is well), and ``"bearing"`` (geometry with sources) for a
@@ -129,8 +131,13 @@ def column(key: str, exponent: float | None = None, header: str | None = None) -
 _COUNTS = {"balls", "loaded_balls", "ball", "iterations", "row"}
 
 
+def given_keys(records: Sequence[dict[str, Any]], keys: Sequence[str]) -> list[str]:
+    """The ``keys`` the records carry (a value or None, as the JSON document carries them)."""
+    return [k for k in keys if any(k in r for r in records)]
+
+
 def _case_table(records: Sequence[dict[str, Any]]) -> Table:
-    keys = _present(records, INPUT_KEYS + REPORT_KEYS + ("valid",))
+    keys = given_keys(records, INPUT_KEYS + REPORT_KEYS + ("valid",))
     exponent = records[0]["exponent"]
     return Table("cases", [column(k, exponent) for k in keys], [_blank(r, keys) for r in records])
 
@@ -141,7 +148,7 @@ def _blank(record: dict[str, Any], keys: Sequence[str]) -> dict[str, Any]:
 
 
 def _per_ball_table(cases: Sequence[LoadedCase], records: Sequence[dict[str, Any]]) -> Table:
-    inputs = _present(records, INPUT_KEYS)
+    inputs = given_keys(records, INPUT_KEYS)
     rows = []
     for c, r in zip(cases, records, strict=True):
         for i, (a, d, q) in enumerate(_balls(c)):

@@ -8,7 +8,7 @@ from types import ModuleType
 from typing import Any
 
 from bearingload.reports.quantities import QUANTITIES
-from bearingload.reports.render import Column, Table
+from bearingload.reports.render import Column, Table, table_document
 
 #: Counts: no unit and no digits, but numbers, set to the right.
 _COUNTS = ("cases", "max_iterations", "nan", "warnings_raised", "refused", "failures")
@@ -24,3 +24,9 @@ def _column(key: str) -> Column:
 def stability_table(study: ModuleType, rows: list[dict[str, Any]]) -> Table:
     """The summary of ``study``'s families, one row per family."""
     return Table(study.TITLE, tuple(_column(k) for k in study.KEYS), rows, study.NOTES)
+
+
+def stability_document(tables: dict[str, Table]) -> dict[str, Any]:
+    """The one JSON document of a run: each kind's table (``radial``, ``combined``, those run)
+    under its name."""
+    return {kind: table_document(t) for kind, t in tables.items()}

@@ -78,7 +78,7 @@ def _conditions(cond: Conditions, method: str | None) -> list[tuple[Column, Any]
         out.append((Column("cage_angle_pitch", "cage angle", "pitch"), 0.5))
     else:
         out.append((Column("cage_angle", "cage angle", "°"), float(cond.cage_angle)))
-    out.append((Column("exponent", "exponent"), cond.exponent))
+    out.append((Column("exponent", "exponent", "-"), cond.exponent))
     return out
 
 
