@@ -1,4 +1,4 @@
-"""Issue 17: one bearing, one load, one result: the same keys, units and titles in every output."""
+"""One bearing, one load, one result: the same keys, units and titles in every output."""
 
 from __future__ import annotations
 
