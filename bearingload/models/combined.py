@@ -415,8 +415,10 @@ def solve_combined(
     stiffness: Any = None,
     tilt_radius: Any = None,
     moment_cross: Any = 0.0,
+    contact_angle: Any = None,
 ) -> CombinedDistribution:
-    """Equilibrium of the inner ring of a deep-groove ball bearing under F_r, F_a and a moment.
+    """Equilibrium of the inner ring of a deep-groove (or, given ``contact_angle``, an
+    angular-contact) ball bearing under F_r, F_a and a moment.
 
     Conventions and model: see the module docstring. Arrays broadcast over cases; ``balls`` is
     one number per call (the ball arrays of the result have the last axis z).
@@ -454,6 +456,12 @@ def solve_combined(
     moment_cross : array_like, default 0
         Moment tilting the ring about the load line (generalised force of ``tilt_cross``);
         the ring stays free to tilt that way when a misalignment is imposed. [N mm]
+    contact_angle : array_like, optional
+        Design contact angle alpha_0 of an angular-contact ball bearing, 0 to 60: the groove
+        centres offset so that every ball touches both grooves at alpha_0 with no load, the
+        contact one-sided (a thrust F_a >= 0 only; see "Angular contact" in the module
+        docstring). ``clearance`` must then be 0 and ``axial`` is measured from that position;
+        ``axial_play`` is 0. Default: a deep-groove bearing. [°]
 
     Returns
     -------
@@ -484,6 +492,7 @@ def solve_combined(
     if np.any(fr < 0):
         raise InputError("radial_load", "must be >= 0 N")
     fa = validate.finite("axial_load", axial_load)
+    angular = _angular(contact_angle, fa, clearance)
     mm = validate.finite("moment", 0.0 if moment is None else moment)
     mc = validate.finite("moment_cross", moment_cross)
     tilt_deg = validate.finite("misalignment", 0.0 if misalignment is None else misalignment)
@@ -495,7 +504,7 @@ def solve_combined(
         {"radial_load": fr, "axial_load": fa, "moment": mm, "misalignment": tilt_deg,
          "cage_angle": cage, "modulus": e, "poisson": nu, "moment_cross": mc,
          "ball_diameter": ball_diameter, "pitch_diameter": pitch_diameter, "f_i": f_i,
-         "f_o": f_o, "clearance": clearance}
+         "f_o": f_o, "clearance": clearance, "contact_angle": angular}
     )  # fmt: skip
     arrays = np.broadcast_arrays(
         fr,
@@ -507,12 +516,19 @@ def solve_combined(
         nu,
         mc,
         *(np.asarray(v, dtype=float) for v in (ball_diameter, pitch_diameter, f_i, f_o, clearance)),
+        np.zeros(()) if angular is None else angular,
         *(() if k_given is None else (k_given,)),
     )
     shape = arrays[0].shape
     flat = [a.ravel() for a in arrays]
-    fr, fa, mm, tilt_deg, cage, e, nu, mc, dw, dm, fi, fo, gr = flat[:13]
-    geo = _geometry(dw, dm, fi, fo, gr)
+    fr, fa, mm, tilt_deg, cage, e, nu, mc, dw, dm, fi, fo, gr, alpha_d = flat[:14]
+    if angular is None:
+        geo = _geometry(dw, dm, fi, fo, gr)
+    else:  # the deep-groove geometry whose free contact angle is alpha_0: G_r = 2A(1 - cos)
+        big_a = (validate.finite("f_i", fi) + validate.finite("f_o", fo) - 1.0) * dw
+        geo = _geometry(dw, dm, fi, fo, 4.0 * big_a * np.sin(np.deg2rad(alpha_d) / 2.0) ** 2)
+        alpha0 = np.deg2rad(alpha_d)  # as given, not through the arcsine
+        geo = dataclasses.replace(geo, alpha0=alpha0, R_i=dm / 2.0 + (fi - 0.5) * dw * np.cos(alpha0))
     if tilt_radius is not None:
         radius = validate.positive("tilt_radius", tilt_radius, "mm")
         geo = dataclasses.replace(geo, R_i=np.broadcast_to(radius, dw.shape).astype(float))
@@ -528,7 +544,7 @@ def solve_combined(
         k_ref, values = _hertz_setup(geo, e, nu)
         curve = _StiffnessCurve(values)
     else:
-        k_ref = flat[13]
+        k_ref = flat[14]
     f_ref = np.maximum(np.maximum(fr, np.abs(fa)), np.hypot(mm, mc) / geo.R_i)
     if np.any(f_ref <= 0):
         raise InputError("radial_load", "give a radial load, an axial load or a moment")
@@ -537,8 +553,9 @@ def solve_combined(
     c, s, mirror = _directions(z, cage)
     held, imposed = _locks(z, mirror, (fr, fa, mm, mc), t_imp, misalignment is not None)
     f = np.stack([fr, np.zeros_like(fr), fa, mm / geo.R_i, mc / geo.R_i], axis=1) / f_ref[:, None]
+    one_sided = np.full(fr.shape, angular is not None)
     problem = Problem.make(z, (c, s), (geo.A, geo.g), f=f, t_imp=t_imp, locked=held,
-                           imposed=imposed, f_ref=f_ref, k_ref=k_ref)  # fmt: skip
+                           imposed=imposed, f_ref=f_ref, k_ref=k_ref, one_sided=one_sided)  # fmt: skip
     given = {"balls": z, "radial_load": fr, "axial_load": fa, "moment": mm, "moment_cross": mc,
              "clearance": gr, "cage_angle": cage}  # fmt: skip
     if misalignment is not None:  # the moment is then the reaction, not an input
@@ -554,6 +571,30 @@ def solve_combined(
             _tangent(problem, geo, end, kappa, curve, mirror & (mc == 0)),
         )
         return _result(problem, geo, answer, shape, given, misalignment)
+
+
+def _angular(contact_angle: Any, fa: np.ndarray, clearance: Any) -> np.ndarray | None:
+    """The design contact angle [°] checked (None: a deep-groove bearing): 0 to 60°, with no
+    clearance (the angle fixes the geometry) and a thrust F_a >= 0 (one-sided contact)."""
+    if contact_angle is None:
+        return None
+    alpha = validate.finite("contact_angle", contact_angle)
+    if np.any((alpha < 0) | (alpha > 60)):
+        raise InputError("contact_angle", "must be from 0 to 60°")
+    if np.any(validate.finite("clearance", clearance) != 0):
+        raise InputError(
+            "clearance",
+            "must be 0 with a contact angle: the design contact angle fixes the geometry of an "
+            "angular-contact bearing",
+        )
+    if np.any(fa < 0):
+        raise InputError(
+            "axial_load",
+            "must be >= 0 N for an angular-contact bearing: its balls take thrust one way only "
+            "(a reversed load lifts every ball off its groove; mount the bearing the other way "
+            "round, or give the load to its partner)",
+        )
+    return alpha
 
 
 def _check_few_balls(
@@ -907,7 +948,7 @@ def _tangent(p: Problem, geo: _Geometry, point: _ring.Point, kappa: np.ndarray,
     case symmetric about the load line (``mirrored``: the balls and the loads) the couplings of
     (x, axial, tilt) with (y, tilt_cross) are 0, exactly rather than to rounding."""
     b, lo = point.b, point.lo
-    inside = b.rho > 0
+    inside = _ring.turns(p, b)
     d = np.where(b.d > 0, b.d, 1.0)
     g = _ring._times_arms(lo.ca, lo.sa, p.arms)
     h = _ring._times_arms(-lo.sa, lo.ca, p.arms)
@@ -961,10 +1002,10 @@ def _result(
         clearance=case(given["clearance"]),
         cage_angle=case(cage),
         free_contact_angle=case(np.rad2deg(geo.alpha0)),
-        axial_play=case(2.0 * geo.A * np.sin(geo.alpha0)),
+        axial_play=case(np.where(p.one_sided, 0.0, 2.0 * geo.A * np.sin(geo.alpha0))),
         x=case(v[:, 0] * p.scale),
         y=case(v[:, 1] * p.scale),
-        axial=case(v[:, 2] * p.scale),
+        axial=case(v[:, 2] * p.scale - np.where(p.one_sided, geo.A * np.sin(geo.alpha0), 0.0)),
         tilt=case(np.rad2deg(t * p.scale / geo.R_i)),
         tilt_cross=case(np.rad2deg(v[:, 4] * p.scale / geo.R_i)),
         ball_angles=ball(phi),
