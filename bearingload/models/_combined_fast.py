@@ -25,7 +25,7 @@ from collections.abc import Callable
 
 import numpy as np
 
-from bearingload.models._combined_ring import FLOOR, ROUNDING, TOLERANCE, Problem
+from bearingload.models._combined_ring import FLOOR, ROUNDING, TOLERANCE, Problem, cap_step
 
 #: Newton steps at most; a case still going then is handed on as it is. [-]
 STEPS = 16
@@ -93,7 +93,7 @@ def _step(p: Problem, rows: np.ndarray, balls: tuple, grad: np.ndarray) -> np.nd
     hess *= free[:, :, None] & free[:, None, :]
     hess += np.eye(5) * locked[:, None, :]
     hess += (1e-13 * np.trace(hess, axis1=1, axis2=2))[:, None, None] * np.eye(5)
-    return -np.linalg.solve(hess, grad[:, :, None])[:, :, 0]
+    return cap_step(p, -np.linalg.solve(hess, grad[:, :, None])[:, :, 0], rows)
 
 
 def newton(p: Problem, v0: np.ndarray, curve: Curve | None) -> tuple[np.ndarray, ...]:

@@ -549,11 +549,26 @@ def _newton_step(
     hess = hessian(q, cur, lo, kappa)
     trace = np.trace(hess, axis1=1, axis2=2)
     hess += (1e-13 * trace + 1e-300)[:, None, None] * np.eye(5)
-    step = -np.linalg.solve(hess, grad[:, :, None])[:, :, 0]
+    step = cap_step(q, -np.linalg.solve(hess, grad[:, :, None])[:, :, 0])
     loose = np.flatnonzero(~(trace > q.locked.sum(1)) & ~stop)  # no ball in contact
     if loose.size:  # Newton has no curvature there: move along the load to the first contact
-        step[loose] = _to_contact(q.take(loose), cur.take(loose), _take_loads(lo, loose))
+        step[loose] = cap_step(q, _to_contact(q.take(loose), cur.take(loose), _take_loads(lo, loose)), loose)
     return np.where(stop[:, None], 0.0, step), hess
+
+
+def cap_step(p: Problem, step: np.ndarray, rows: Any = slice(None)) -> np.ndarray:
+    """One-sided cases: the step shortened so that no axial part (a, t, t_c) exceeds A. A ball
+    at u_j < 0 has no stiffness along the groove, so with few balls in contact the Newton matrix
+    may be singular along a move that lifts the others further off (its regularised step then
+    goes 1e13 times the force out and takes thousands of steps to come back); an equilibrium
+    lies within a few A of any start (a loaded ball has |u_j| < A). Deep-groove cases: as is."""
+    one = p.one_sided[rows]
+    if not one.any():
+        return step
+    longest = np.max(np.abs(step[:, 2:]), axis=1)
+    a_hat = p.a_hat[rows]
+    shrink = np.where(one & (longest > a_hat), a_hat / np.where(longest > 0, longest, 1.0), 1.0)
+    return step * shrink[:, None]
 
 
 def _take_loads(lo: Loads, idx: np.ndarray) -> Loads:
@@ -603,6 +618,7 @@ def _line_search(
             sub = _part(*part, retry)
             left = np.where(sub[0].locked, 0.0, trial.gen[retry] - sub[0].f)
             fix = -np.linalg.solve(hess[pending[retry]], left[:, :, None])[:, :, 0]
+            fix = cap_step(sub[0], fix)
             ok2, trial2 = _accept(sub, w[retry] + fix, drop_min[retry], res[pending[retry]], True)
             better = ok2 & (~ok[retry] | (trial2.drop < trial.drop[retry]))
             w[retry[better]] += fix[better]
