@@ -539,6 +539,8 @@ def solve_combined(
             "otherwise no equilibrium exists",
         )
     _check_few_balls(z, cage, fa, mm, mc, misalignment is not None)
+    if angular is not None and misalignment is None:
+        _check_one_sided_moment(z, cage, fa, mm, mc, geo.R_i)
     curve = None
     if k_given is None:
         k_ref, values = _hertz_setup(geo, e, nu)
@@ -595,6 +597,39 @@ def _angular(contact_angle: Any, fa: np.ndarray, clearance: Any) -> np.ndarray |
             "round, or give the load to its partner)",
         )
     return alpha
+
+
+def _check_one_sided_moment(
+    z: int, cage: np.ndarray, fa: np.ndarray, mm: np.ndarray, mc: np.ndarray, radius: np.ndarray
+) -> None:
+    """Refuse a moment a single angular-contact bearing cannot hold with its ring free to tilt.
+
+    Every ball pushes the ring axially one way only, ``Q_j sin(alpha_j) >= 0``, at the arm
+    ``R_i (cos phi_j, sin phi_j)``: the thrust and the moments it makes, ``(F_a, M/R_i,
+    M_c/R_i)``, lie in the cone of the vectors ``(1, cos phi_j, sin phi_j)``. An equilibrium
+    needs ``(M, M_c)/(F_a R_i)`` strictly inside the regular z-gon of the ball positions: on
+    every edge, its component along the edge's normal (at ``phi_j + 180°/z``) below
+    ``cos(180°/z)``. Outside, the balls on the far side would lift off and nothing holds the
+    tilt.
+    """
+    tilting = (mm != 0) | (mc != 0)
+    if not np.any(tilting):
+        return
+    half = math.pi / z
+    normals = np.deg2rad(cage)[:, None] + 2.0 * math.pi * np.arange(z) / z + half
+    with np.errstate(divide="ignore", invalid="ignore"):
+        reach = (mm[:, None] * np.cos(normals) + mc[:, None] * np.sin(normals)).max(axis=1)
+        bad = tilting & ~(reach < math.cos(half) * fa * radius)
+    if np.any(bad):
+        i = int(np.flatnonzero(bad)[0])
+        limit = math.cos(half) * fa[i] * radius[i]
+        raise InputError(
+            "moment",
+            f"an angular-contact bearing alone holds a moment only below about F_a R_i "
+            f"cos(180°/z) = {limit:.4g} N mm here (F_a = {fa[i]:.4g} N, R_i = "
+            f"{radius[i]:.4g} mm): its balls push the ring one way only, the far ones would "
+            "lift off; raise the axial load or impose the tilt (misalignment)",
+        )
 
 
 def _check_few_balls(
