@@ -552,7 +552,9 @@ def _newton_step(
     step = cap_step(q, -np.linalg.solve(hess, grad[:, :, None])[:, :, 0])
     loose = np.flatnonzero(~(trace > q.locked.sum(1)) & ~stop)  # no ball in contact
     if loose.size:  # Newton has no curvature there: move along the load to the first contact
-        step[loose] = cap_step(q, _to_contact(q.take(loose), cur.take(loose), _take_loads(lo, loose)), loose)
+        step[loose] = cap_step(
+            q, _to_contact(q.take(loose), cur.take(loose), _take_loads(lo, loose)), loose
+        )
     return np.where(stop[:, None], 0.0, step), hess
 
 

@@ -34,6 +34,35 @@ Geometry (deep-groove ball bearing, one row)
   contact-angle-dependent curvatures: ``1/R_x = 2/D_w +- 2 cos(alpha)/(d_m -+ D_w cos(alpha))``,
   i.e. the zero-angle curvatures of a bearing of pitch diameter ``d_m / cos(alpha)``.
 
+Angular contact (``contact_angle`` given)
+-----------------------------------------
+* Single-row angular-contact ball bearing of design contact angle ``alpha_0`` (Harris & Kotzalas,
+  ch. 8; ISO/TS 16281): the groove curvature centres of every ball lie ``A cos(alpha_0)`` apart
+  radially and ``A sin(alpha_0)`` axially at the zero-load position, where each ball touches
+  both grooves at ``alpha_0``. That is the deep-groove geometry of clearance
+  ``G_r = 2 A (1 - cos alpha_0)`` with the axial unknown shifted by ``A sin(alpha_0)``, so the
+  solver runs on it unchanged; ``axial`` is reported from the zero-load position and
+  ``axial_play`` is 0 (the ring is free the other way). Positive ``F_a`` is the thrust the
+  bearing takes.
+* One-sided contact: the outer ring's low shoulder ends at the groove bottom, so a ball whose
+  contact would move through 0° to the other side of the groove takes no axial part: it sees
+  ``u'_j = max(u_j, 0)`` in place of ``u_j``, ``delta_j = |(max(rho_j, 0), max(u_j, 0))| - A``.
+  The map is componentwise convex and nondecreasing on the nonnegative quadrant where the norm
+  is nondecreasing, so the potential stays convex and once differentiable (the Newton solver's
+  guarantees hold). A ball pushed the wrong way carries nothing while ``rho_j <= A`` (it has left
+  its groove), or, squeezed radially beyond ``A`` at ``u_j <= 0``, carries at 0°, the groove
+  bottom; never a negative load or angle. At ``F_a = 0`` without a moment the loaded balls sit
+  at 0° and the ring has slid the other way by ``A sin(alpha_0)`` (one position of a range: a
+  single bearing under a radial load alone is held axially by its partner in a real mounting).
+* Refused (:class:`~bearingload.errors.InputError`): ``F_a < 0``; a contact angle outside
+  0-60°; a clearance beside it; with the ring free to tilt, a moment the one-way balls cannot
+  hold, ``(M, M_c)/(F_a R_i)`` outside the regular z-gon of the ball positions.
+* Numerics: a ball at ``u_j < 0`` has no stiffness along its groove, so with few balls in
+  contact the Newton matrix may be singular along a move that lifts the others further off;
+  the axial parts of every step of a one-sided case are capped at ``A``
+  (:func:`bearingload.models._combined_ring.cap_step`). Deep-groove cases take none of these
+  branches: their results are bit-identical to those before angular contact was added.
+
 Conventions
 -----------
 * The axial displacement ``a`` is measured from the centred rings: it includes half the axial
@@ -528,7 +557,9 @@ def solve_combined(
         big_a = (validate.finite("f_i", fi) + validate.finite("f_o", fo) - 1.0) * dw
         geo = _geometry(dw, dm, fi, fo, 4.0 * big_a * np.sin(np.deg2rad(alpha_d) / 2.0) ** 2)
         alpha0 = np.deg2rad(alpha_d)  # as given, not through the arcsine
-        geo = dataclasses.replace(geo, alpha0=alpha0, R_i=dm / 2.0 + (fi - 0.5) * dw * np.cos(alpha0))
+        geo = dataclasses.replace(
+            geo, alpha0=alpha0, R_i=dm / 2.0 + (fi - 0.5) * dw * np.cos(alpha0)
+        )
     if tilt_radius is not None:
         radius = validate.positive("tilt_radius", tilt_radius, "mm")
         geo = dataclasses.replace(geo, R_i=np.broadcast_to(radius, dw.shape).astype(float))
