@@ -21,7 +21,7 @@ KUROCHKIN_REFUSES = ("bearing", "load", "stiffness", "clearance", "plot", "ball_
 
 
 @click.command(context_settings=CONTEXT)
-@case_options(omit=("cage_angle", *SERVICE_PARAMS))
+@case_options(omit=("cage_angle", "contact_angle", *SERVICE_PARAMS))
 @click.option(
     "--steps",
     "-n",

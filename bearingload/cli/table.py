@@ -43,7 +43,7 @@ class ClearanceList(click.ParamType):
 
 @click.command(context_settings=CONTEXT)
 @click.argument("name", type=click.Choice(TABLES))
-@case_options(bearing="option", defaults={"load": "1000"})
+@case_options(bearing="option", omit=("contact_angle",), defaults={"load": "1000"})
 @click.option(
     "--z-max",
     type=click.IntRange(1, 1000),

@@ -39,6 +39,7 @@ INPUT_KEYS = (
     "clearance",
     "clearance_pick",
     "cage_angle",
+    "contact_angle",
 )
 ANSWER_KEYS = (
     "q_max",
@@ -191,6 +192,8 @@ def _title(records: Sequence[dict[str, Any]]) -> str:
         else "G_r: class range"
     )
     lever = f", tilt lever {r['tilt_radius']:.6g} mm" if r.get("tilt_radius") is not None else ""
+    if r.get("contact_angle") is not None:  # angular contact: the design angle, no clearance
+        clear = f"angular contact, contact angle {r['contact_angle']:.6g}°"
     return (
         f"{who}z = {r['balls']}, F_r = {r['load']:.6g} N, F_a = {r['axial_load']:.6g} N, "
         f"{clear}, cage angle {r['cage_angle']:.6g}°, {r['rotating']} ring rotating{lever}"
