@@ -1,7 +1,7 @@
 """Benchmark: the combined solver on angular-contact ball bearings against a per-case fsolve.
 
-Run: ``.venv/bin/python benchmarks/bench_angular.py`` (also part of ``make bench`` if listed).
-Issue 19 asks the vectorised solve to be at least 50 times a per-case ``scipy.optimize.fsolve``
+Run: ``make bench`` or ``.venv/bin/python benchmarks/bench_angular.py``.
+The target: the vectorised solve at least 50 times a per-case ``scipy.optimize.fsolve``
 on the same equations. The baseline: per case, fsolve on the three equilibrium equations of the
 inner ring in (x, a, theta) of a 7205-sized bearing (D_w 7.938 mm, d_m 38.5 mm, f_i 0.52, f_o
 0.53, 13 balls), cage angle 0, free tilt, one constant ball stiffness K, the angular-contact

@@ -1,4 +1,4 @@
-"""Random campaign of the combined solver on angular-contact ball bearings (issue 19; a sibling
+"""Random campaign of the combined solver on angular-contact ball bearings (a sibling
 of tests/campaign_combined.py, not part of the test suite).
 
 Run: ``.venv/bin/python -m tests.campaign_angular [cases] [seed]`` (default 10 000 cases, seed

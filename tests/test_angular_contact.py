@@ -1,4 +1,4 @@
-"""Angular-contact ball bearings in the combined solve (issue 19, item 1; ``contact_angle``).
+"""Angular-contact ball bearings in the combined solve (``contact_angle``).
 
 Proof: an independent mpmath reference (40 digits) written in the angular-contact geometry
 itself (groove centres A cos(alpha_0) apart radially and A sin(alpha_0) axially at zero load,
@@ -116,7 +116,7 @@ def test_equilibrium_matches_independent_mpmath(name):
 
 @pytest.mark.parametrize("name", CASES)
 def test_stiffness_matrix_matches_mpmath_jacobian(name):
-    """The 5x5 matrix (issue 19, item 3, for angular contact) against the symmetric part of the
+    """The 5x5 matrix of an angular-contact bearing against the symmetric part of the
     mpmath Jacobian of the five ring forces at the solver's equilibrium (central differences at
     40 digits; the last column/row in N mm per rad)."""
     case = CASES[name]
@@ -221,3 +221,44 @@ def test_batch_cases_alone():
     for i in range(3):
         one = solve_combined(13, fr[i], fa[i], contact_angle=alpha[i], **B7205)
         assert np.array_equal(r.ball_loads[i], one.ball_loads)
+
+
+# ------------------------------------------------------------------------------ command line
+
+HAND = ("solve", "--balls", "13", "--ball-diameter", "7.938", "--pitch-diameter", "38.5",
+        "-F", "2kN")  # fmt: skip
+
+
+def test_cli_contact_angle_solves_and_reports_it(capsys):
+    import json
+
+    from tests.cli_helpers import run_entry
+
+    code, out, err = run_entry(capsys, *HAND, "-A", "1kN", "--contact-angle", "40",
+                               "--format", "json")  # fmt: skip
+    assert code == 0 and err == ""
+    case = json.loads(out)["cases"][0]
+    assert case["contact_angle"] == 40.0 and case["axial_play"] == 0.0
+    r = solve_combined(13, 2000.0, 1000.0, contact_angle=40.0, **B7205)
+    assert math.isclose(case["q_max"], r.q_max, rel_tol=1e-9)
+    assert case["static_equivalent_load"] is None  # ISO 76 X0, Y0 of angular contact: not yet
+
+
+@pytest.mark.parametrize(
+    ("extra", "option"),
+    [
+        (("-A", "1kN", "--contact-angle", "61"), "--contact-angle"),
+        (("-A", "1kN", "--contact-angle", "-5"), "--contact-angle"),
+        (("-A", "-1kN", "--contact-angle", "25"), "--axial-load"),
+        (("-A", "1kN", "--contact-angle", "25", "--clearance", "10um"), "--clearance"),
+        (("-A", "1kN", "--contact-angle", "25", "--moment", "1e5"), "--moment"),
+    ],
+)
+def test_cli_bad_input_is_one_error_line(capsys, extra, option):
+    from tests.cli_helpers import run_entry
+
+    code, out, err = run_entry(capsys, *HAND, *extra)
+    lines = err.strip().splitlines()
+    assert code == 2 and out == ""
+    assert len(lines) == 1 and lines[0].startswith("Error:") and option in lines[0]
+    assert "Traceback" not in err

@@ -127,7 +127,7 @@ DECLARATIONS: dict[str, tuple[tuple[str, ...], dict[str, Any]]] = {
         "--axial-load",
         "-A",
         type=Quantity("force"),
-        help="Axial load F_a on the inner ring (deep-groove ball bearings; needs the ball "
+        help="Axial load F_a on the inner ring (ball bearings; needs the ball "
         f"geometry). Units: {_FORCE} (bare number: N).",
     ),
     "moment": _option(
