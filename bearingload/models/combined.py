@@ -536,30 +536,15 @@ def solve_combined(
          "f_o": f_o, "clearance": clearance, "contact_angle": angular}
     )  # fmt: skip
     arrays = np.broadcast_arrays(
-        fr,
-        fa,
-        mm,
-        tilt_deg,
-        cage,
-        e,
-        nu,
-        mc,
+        fr, fa, mm, tilt_deg, cage, e, nu, mc,
         *(np.asarray(v, dtype=float) for v in (ball_diameter, pitch_diameter, f_i, f_o, clearance)),
         np.zeros(()) if angular is None else angular,
         *(() if k_given is None else (k_given,)),
-    )
+    )  # fmt: skip
     shape = arrays[0].shape
     flat = [a.ravel() for a in arrays]
     fr, fa, mm, tilt_deg, cage, e, nu, mc, dw, dm, fi, fo, gr, alpha_d = flat[:14]
-    if angular is None:
-        geo = _geometry(dw, dm, fi, fo, gr)
-    else:  # the deep-groove geometry whose free contact angle is alpha_0: G_r = 2A(1 - cos)
-        big_a = (validate.finite("f_i", fi) + validate.finite("f_o", fo) - 1.0) * dw
-        geo = _geometry(dw, dm, fi, fo, 4.0 * big_a * np.sin(np.deg2rad(alpha_d) / 2.0) ** 2)
-        alpha0 = np.deg2rad(alpha_d)  # as given, not through the arcsine
-        geo = dataclasses.replace(
-            geo, alpha0=alpha0, R_i=dm / 2.0 + (fi - 0.5) * dw * np.cos(alpha0)
-        )
+    geo = _geometry(dw, dm, fi, fo, gr) if angular is None else _angular_geometry(dw, dm, fi, fo, alpha_d)  # fmt: skip
     if tilt_radius is not None:
         radius = validate.positive("tilt_radius", tilt_radius, "mm")
         geo = dataclasses.replace(geo, R_i=np.broadcast_to(radius, dw.shape).astype(float))
@@ -604,6 +589,15 @@ def solve_combined(
             _tangent(problem, geo, end, kappa, curve, mirror & (mc == 0)),
         )
         return _result(problem, geo, answer, shape, given, misalignment)
+
+
+def _angular_geometry(dw: Any, dm: Any, fi: Any, fo: Any, alpha_deg: np.ndarray) -> _Geometry:
+    """The deep-groove geometry whose free contact angle is the design angle alpha_0 [°]:
+    ``G_r = 2A (1 - cos alpha_0) = 4A sin^2(alpha_0/2)``, alpha_0 kept as given."""
+    big_a = (validate.finite("f_i", fi) + validate.finite("f_o", fo) - 1.0) * dw
+    geo = _geometry(dw, dm, fi, fo, 4.0 * big_a * np.sin(np.deg2rad(alpha_deg) / 2.0) ** 2)
+    alpha0 = np.deg2rad(alpha_deg)  # as given, not through the arcsine
+    return dataclasses.replace(geo, alpha0=alpha0, R_i=dm / 2.0 + (fi - 0.5) * dw * np.cos(alpha0))
 
 
 def _angular(contact_angle: Any, fa: np.ndarray, clearance: Any) -> np.ndarray | None:

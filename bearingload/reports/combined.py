@@ -97,6 +97,15 @@ STATIC_NOTE = (
 )
 
 
+#: What replaces the second of :data:`NOTES` for an angular-contact bearing.
+ANGULAR_NOTE = (
+    "Angular contact (docs/angular_contact.md): one-sided, F_a >= 0 only; the axial displacement "
+    "is measured from the zero-load position (every ball at the design angle). Without --moment "
+    "or --misalignment the inner ring is free to tilt (M = 0). ISO 281 L10 and ISO 76 P0 are not "
+    "given for angular contact."
+)
+
+
 def tilt_text(inputs: dict[str, Any]) -> str:
     """', imposed misalignment 0.05°' or ', M = 2000 N mm' (or nothing), then the moment about
     the load line and the lever of the tilt where given, for a title."""
@@ -180,7 +189,10 @@ def _summary(records: Sequence[dict[str, Any]], bearing: Any) -> Table:
         keys.insert(0, "clearance")
     heads = ["value"] if len(records) == 1 else [f"G_r {r['clearance_pick']}" for r in records]
     columns, rows = quantity_rows(keys, heads, records)
-    return Table(_title(records), columns, rows, [*NOTES, STATIC_NOTE, *set_note(bearing)])
+    notes = [*NOTES, STATIC_NOTE, *set_note(bearing)]
+    if records[0].get("contact_angle") is not None:
+        notes[1] = ANGULAR_NOTE
+    return Table(_title(records), columns, rows, notes)
 
 
 def _title(records: Sequence[dict[str, Any]]) -> str:

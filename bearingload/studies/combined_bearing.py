@@ -433,7 +433,7 @@ def case_columns(
         "clearance": arr(r.clearance),
         "clearance_pick": b.clearance_pick,
         "cage_angle": arr(r.cage_angle),
-        "contact_angle": arr(b.contact_angle),
+        **({} if b.contact_angle is None else {"contact_angle": arr(b.contact_angle)}),
         "free_contact_angle": arr(r.free_contact_angle),
         "axial_play": arr(r.axial_play),
         "q_max": arr(r.q_max),
