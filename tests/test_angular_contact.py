@@ -245,20 +245,21 @@ def test_cli_contact_angle_solves_and_reports_it(capsys):
 
 
 @pytest.mark.parametrize(
-    ("extra", "option"),
+    ("extra", "option", "allowed"),
     [
-        (("-A", "1kN", "--contact-angle", "61"), "--contact-angle"),
-        (("-A", "1kN", "--contact-angle", "-5"), "--contact-angle"),
-        (("-A", "-1kN", "--contact-angle", "25"), "--axial-load"),
-        (("-A", "1kN", "--contact-angle", "25", "--clearance", "10um"), "--clearance"),
-        (("-A", "1kN", "--contact-angle", "25", "--moment", "1e5"), "--moment"),
+        (("-A", "1kN", "--contact-angle", "61"), "--contact-angle", "0 to 60"),
+        (("-A", "1kN", "--contact-angle", "-5"), "--contact-angle", "0 to 60"),
+        (("-A", "-1kN", "--contact-angle", "25"), "--axial-load", ">= 0 N"),
+        (("-A", "1kN", "--contact-angle", "25", "--clearance", "10um"), "--clearance", "no clear"),
+        (("-A", "1kN", "--contact-angle", "25", "--moment", "1e5"), "--moment", "F_a R_i"),
     ],
 )
-def test_cli_bad_input_is_one_error_line(capsys, extra, option):
+def test_cli_bad_input_is_one_error_line(capsys, extra, option, allowed):
     from tests.cli_helpers import run_entry
 
     code, out, err = run_entry(capsys, *HAND, *extra)
     lines = err.strip().splitlines()
     assert code == 2 and out == ""
     assert len(lines) == 1 and lines[0].startswith("Error:") and option in lines[0]
+    assert allowed in lines[0]
     assert "Traceback" not in err
