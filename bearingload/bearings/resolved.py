@@ -104,6 +104,8 @@ class ResolvedBearing:
     kind: str = "ball"
     exponent: float = 1.5
     roller_length: float | None = None
+    #: Design contact angle alpha_0 of an angular-contact ball bearing (None: deep groove). [°]
+    contact_angle: float | None = None
 
     @property
     def has_geometry(self) -> bool:

@@ -38,7 +38,7 @@ from bearingload.constants import CONTAMINATION_LEVELS
 from bearingload.errors import InputError
 
 #: The load options: any of them given, the combined engine solves the case.
-LOAD_PARAMS = ("axial_load", "moment", "moment_cross", "misalignment")
+LOAD_PARAMS = ("axial_load", "moment", "moment_cross", "misalignment", "contact_angle")
 #: The options of the combined engine that are not loads: the lever of the tilt.
 TILT_PARAMS = ("tilt_radius",)
 #: The operating conditions of the lives in hours, the modified life and the film
@@ -128,7 +128,7 @@ DECLARATIONS: dict[str, tuple[tuple[str, ...], dict[str, Any]]] = {
         "--axial-load",
         "-A",
         type=Quantity("force"),
-        help="Axial load F_a on the inner ring (deep-groove ball bearings; needs the ball "
+        help="Axial load F_a on the inner ring (ball bearings; needs the ball "
         f"geometry). Units: {_FORCE} (bare number: N).",
     ),
     "moment": _option(
@@ -149,6 +149,14 @@ DECLARATIONS: dict[str, tuple[tuple[str, ...], dict[str, Any]]] = {
         type=Quantity("angle"),
         help="Imposed tilt of the inner ring in the plane of the radial load, instead of "
         f"--moment. Units: {_ANGLE} (bare number: degrees).",
+    ),
+    "contact_angle": _option(
+        "--contact-angle",
+        type=Quantity("angle"),
+        help="Design contact angle of a single-row angular-contact ball bearing given by hand "
+        "(0 to 60°; with --ball-diameter and --pitch-diameter): the balls take thrust one way, "
+        "F_a >= 0, and leave their grooves when pushed the other way; no clearance. See "
+        f"docs/angular_contact.md. Units: {_ANGLE} (bare number: degrees).",
     ),
     "tilt_radius": _option(
         "--tilt-radius",
@@ -387,6 +395,7 @@ class CaseOptions:
     moment: float | None = None
     moment_cross: float | None = None
     misalignment: float | None = None
+    contact_angle: float | None = None
     tilt_radius: str | float | None = None
     stiffness: str | None = None
     clearance: Any = None

@@ -119,6 +119,18 @@ def combined_cases(bearings: list[Any], case: CaseOptions) -> list[Any]:
     :class:`bearingload.studies.combined_bearing.CombinedCase` each."""
     from bearingload.studies.combined_bearing import solve_combined_bearing
 
+    if case.contact_angle is not None:  # an angular-contact ring given by hand
+        import dataclasses
+
+        why = "the design contact angle fixes the geometry of an angular-contact bearing"
+        case.refuse(("clearance",), "--contact-angle", why + " (no clearance)")
+        if case.bearing is not None:
+            raise click.UsageError(
+                "--contact-angle cannot be used with a bearing designation: give the "
+                "angular-contact ring by hand (--balls, --ball-diameter, --pitch-diameter)"
+            )
+        bearings = [dataclasses.replace(b, contact_angle=case.contact_angle, clearance=0.0)
+                    for b in bearings]  # fmt: skip
     return solve_combined_bearing(
         bearings,
         case.radial_load,

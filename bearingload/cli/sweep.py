@@ -99,6 +99,11 @@ def sweep(
       # a moment of 2 N m about the load line, the tilt at the pitch radius as MASTA
       bearingload sweep 6205 -F 1kN -A 300N --moment-cross 2Nm --tilt-radius pitch --steps 9
     """
+    case.refuse(
+        ("contact_angle",),
+        "sweep",
+        "an angular-contact bearing is solved by 'solve' only (docs/angular_contact.md)",
+    )
     if kurochkin_t is not None:
         _kurochkin(case, kurochkin_t, steps, plot, fmt, output)
         return

@@ -115,6 +115,11 @@ def table(
     from bearingload.reports.render import render
     from bearingload.reports.tables import design_table
 
+    case.refuse(
+        ("contact_angle",),
+        f"table {name}",
+        "an angular-contact bearing is solved by 'solve' only (docs/angular_contact.md)",
+    )
     k_given = case.stiffness_value()  # N/mm^m
     refuse_range(case, f"table {name}")
     if name == "life":

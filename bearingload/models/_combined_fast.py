@@ -25,7 +25,7 @@ from collections.abc import Callable
 
 import numpy as np
 
-from bearingload.models._combined_ring import FLOOR, ROUNDING, TOLERANCE, Problem
+from bearingload.models._combined_ring import FLOOR, ROUNDING, TOLERANCE, Problem, cap_step
 
 #: Newton steps at most; a case still going then is handed on as it is. [-]
 STEPS = 16
@@ -54,6 +54,9 @@ def _state(p: Problem, v: np.ndarray, rows: np.ndarray, curve: Curve | None) -> 
     rho += v[:, 1, None] * s
     u = (v[:, 2, None] + (v[:, 3] + p.t_imp[rows])[:, None] * c) + v[:, 4, None] * s
     rp = np.maximum(rho, 0.0)
+    one_sided = p.one_sided[rows]
+    if one_sided.any():  # angular contact: the ball sees max(u, 0)
+        u = np.where(one_sided[:, None], np.maximum(u, 0.0), u)
     d = np.hypot(rp, u)
     safe = np.where(d > 0, d, 1.0)
     ca, sa = rp / safe, u / safe
@@ -77,7 +80,11 @@ def _step(p: Problem, rows: np.ndarray, balls: tuple, grad: np.ndarray) -> np.nd
     """The Newton step of the cases ``rows`` (the stiffness frozen), 0 on the held components."""
     ca, sa, rho, d, q, root, kappa, _ = balls
     w1 = 1.5 * (1.0 + kappa) * root
-    w2 = np.where(rho > 0, q / np.where(d > 0, d, 1.0), 0.0)
+    inside = rho > 0
+    one_sided = p.one_sided[rows]
+    if one_sided.any():  # at u_j <= 0 (sa = 0) the normal does not turn
+        inside &= ~one_sided[:, None] | (sa > 0)
+    w2 = np.where(inside, q / np.where(d > 0, d, 1.0), 0.0)
     arms = p.arms[rows]
     g, h = _weighted(arms, ca, sa), _weighted(arms, -sa, ca)
     hess = np.einsum("nz,niz,njz->nij", w1, g, g) + np.einsum("nz,niz,njz->nij", w2, h, h)
@@ -86,7 +93,7 @@ def _step(p: Problem, rows: np.ndarray, balls: tuple, grad: np.ndarray) -> np.nd
     hess *= free[:, :, None] & free[:, None, :]
     hess += np.eye(5) * locked[:, None, :]
     hess += (1e-13 * np.trace(hess, axis1=1, axis2=2))[:, None, None] * np.eye(5)
-    return -np.linalg.solve(hess, grad[:, :, None])[:, :, 0]
+    return cap_step(p, -np.linalg.solve(hess, grad[:, :, None])[:, :, 0], rows)
 
 
 def newton(p: Problem, v0: np.ndarray, curve: Curve | None) -> tuple[np.ndarray, ...]:

@@ -121,13 +121,14 @@ class Problem:
     imposed: np.ndarray  # (n, 5) bool: held by an imposed tilt (its moment is a reaction)
     f_ref: np.ndarray  # F [N]
     k_ref: np.ndarray  # K_0 [N/mm^1.5]
+    one_sided: np.ndarray  # (n,) bool: angular contact, a ball with u_j < 0 is at 0° (see below)
 
     @staticmethod
     def make(z: int, directions: tuple[np.ndarray, np.ndarray], lengths: tuple[np.ndarray, ...],
              **rest: Any) -> Problem:  # fmt: skip
         """``directions`` = cos, sin of the ball angles (n, z); ``lengths`` = (A, G_r/2) [mm];
-        ``rest``: f, t_imp [mm], locked, imposed, f_ref, k_ref (the scale s = (F/K)^(2/3)
-        follows)."""
+        ``rest``: f, t_imp [mm], locked, imposed, f_ref, k_ref, optionally one_sided (n,) bool
+        (default none: deep groove; the scale s = (F/K)^(2/3) follows)."""
         big_a, g = lengths
         scale = (rest["f_ref"] / rest["k_ref"]) ** (2.0 / 3.0)
         c, s = directions
@@ -137,6 +138,7 @@ class Problem:
         pre = np.maximum(-g, 0.0) / scale
         b_hi, b_lo = _two_sum(a_hat, pre)
         t_imp = rest.pop("t_imp") / scale
+        rest.setdefault("one_sided", np.zeros(np.shape(scale), dtype=bool))
         return Problem(z, c, s, scale, a_hat, pre, np.maximum(g, 0.0) / scale, b_hi, b_lo,
                        t_imp=t_imp, **rest)  # fmt: skip
 
@@ -168,11 +170,12 @@ class Balls:
 
     rho: np.ndarray  # radial separation of the groove centres
     u: np.ndarray  # axial separation
-    d: np.ndarray  # |(max(rho, 0), u)|
+    d: np.ndarray  # |(max(rho, 0), u')|
     eps: np.ndarray  # d - B, to the last digits
+    up: np.ndarray  # u' = the axial separation the contact sees: u, or max(u, 0) one-sided
 
     def take(self, idx: np.ndarray) -> Balls:
-        return Balls(self.rho[idx], self.u[idx], self.d[idx], self.eps[idx])
+        return Balls(*(getattr(self, k)[idx] for k in _BALL_FIELDS))
 
     def put(self, mask: np.ndarray, other: Balls) -> Balls:
         """These balls, with the rows ``mask`` from ``other``."""
@@ -180,7 +183,7 @@ class Balls:
         return Balls(*(np.where(m, getattr(other, k), getattr(self, k)) for k in _BALL_FIELDS))
 
 
-_BALL_FIELDS = ("rho", "u", "d", "eps")
+_BALL_FIELDS = ("rho", "u", "d", "eps", "up")
 
 
 def reference(p: Problem, vh: np.ndarray, vl: np.ndarray) -> Balls:
@@ -208,21 +211,25 @@ def reference(p: Problem, vh: np.ndarray, vl: np.ndarray) -> Balls:
     u, e2 = _two_sum(u, u2[0])
     tail = e + e2 + u1[1] + u2[1] + col[AX][1] + (t_lo + col[T][1]) * p.c + col[TC][1] * p.s
     u_hi, u_lo = _fast(u, tail)
+    ud = u_hi + u_lo
+    if p.one_sided.any():  # angular contact: the ball sees max(u, 0) (module notes)
+        cut = p.one_sided[:, None] & (u_hi < 0)
+        u_hi, u_lo = np.where(cut, 0.0, u_hi), np.where(cut, 0.0, u_lo)
     mn = _dd_mul(m_hi, m_lo, n_hi, n_lo)
     uu = _dd_mul(u_hi, u_lo, u_hi, u_lo)
     d2, e = _two_sum(mn[0], uu[0])
     d2 = d2 + (e + mn[1] + uu[1])
     rho, e = _two_sum(p.b_hi[:, None], m_hi)
     rho = rho + (e + p.b_lo[:, None] + m_lo)
-    ud = u_hi + u_lo
-    d = np.hypot(np.maximum(rho, 0.0), ud)
+    up = u_hi + u_lo
+    d = np.hypot(np.maximum(rho, 0.0), up)
     b = p.b_hi[:, None]
     # at the groove edge (rho <= 0) d = |u|: |u| - B from the double-double u, not from ud
     sign = np.where(u_hi < 0, -1.0, 1.0)
     edge, e = _two_sum(sign * u_hi, -b)
     edge = edge + (e + sign * u_lo - p.b_lo[:, None])
     eps = np.where(rho > 0, d2 / (d + b), edge)
-    return Balls(rho, ud, d, eps)
+    return Balls(rho, ud, d, eps, up)
 
 
 def offset(p: Problem, ref: Balls, w: np.ndarray) -> tuple[Balls, np.ndarray, np.ndarray]:
@@ -234,17 +241,22 @@ def offset(p: Problem, ref: Balls, w: np.ndarray) -> tuple[Balls, np.ndarray, np
     du = w[:, AX, None] + w[:, T, None] * p.c + w[:, TC, None] * p.s
     rho, u = ref.rho + dr, ref.u + du
     rp, rp_ref = np.maximum(rho, 0.0), np.maximum(ref.rho, 0.0)
-    d = np.hypot(rp, u)
+    up, up_ref = u, ref.up
+    uu = du * (ref.u + u)
+    if p.one_sided.any():  # max(u, 0) where one-sided; the difference formula where both > 0
+        cut = p.one_sided[:, None]
+        up = np.where(cut, np.maximum(u, 0.0), u)
+        uu = np.where(cut & ~((u > 0) & (ref.u > 0)), up * up - up_ref * up_ref, uu)
+    d = np.hypot(rp, up)
     both = (rho > 0) & (ref.rho > 0)
     den = d + ref.d
     den = np.where(den > 0, den, 1.0)
-    uu = du * (ref.u + u)
     dd = (np.where(both, dr * (ref.rho + rho), rp * rp - rp_ref * rp_ref) + uu) / den
     # d - rho = u^2 / (d + rho): the change of that is the part of dd not in dr
-    w_new = u * u / np.where(both, d + rho, 1.0)
-    w_ref = ref.u * ref.u / np.where(both, ref.d + ref.rho, 1.0)
+    w_new = up * up / np.where(both, d + rho, 1.0)
+    w_ref = up_ref * up_ref / np.where(both, ref.d + ref.rho, 1.0)
     ddr = np.where(both, (uu - dr * (w_ref + w_new)) / den, dd - dr)
-    return Balls(rho, u, d, ref.eps + dd), dd, ddr
+    return Balls(rho, u, d, ref.eps + dd, up), dd, ddr
 
 
 # ----------------------------------------------------------------------------------- forces
@@ -271,7 +283,7 @@ def loads(p: Problem, b: Balls, kappa: np.ndarray) -> Loads:
     pos_d = b.d > 0
     safe = np.where(pos_d, b.d, 1.0)
     ca = np.where(pos_d, rp / safe, 1.0)
-    sa = np.where(pos_d, b.u / safe, 0.0)
+    sa = np.where(pos_d, b.up / safe, 0.0)
     cam1 = np.where(b.rho > 0, -sa * sa / (1.0 + ca), ca - 1.0)
     pre = p.pre[:, None]
     delta = pre + b.eps
@@ -339,7 +351,7 @@ def residual(p: Problem, gen: np.ndarray, size: np.ndarray, held: np.ndarray) ->
 def hessian(p: Problem, b: Balls, lo: Loads, kappa: np.ndarray) -> np.ndarray:
     """d(forces)/dv (n, 5, 5) with the held components decoupled (unit rows)."""
     w1 = 1.5 * (1.0 + kappa) * lo.root
-    w2 = np.where(b.rho > 0, lo.q / np.where(b.d > 0, b.d, 1.0), 0.0)
+    w2 = np.where(turns(p, b), lo.q / np.where(b.d > 0, b.d, 1.0), 0.0)
     g = _times_arms(lo.ca, lo.sa, p.arms)
     h = _times_arms(-lo.sa, lo.ca, p.arms)
     hess = np.einsum("nz,nzi,nzj->nij", w1, g, g) + np.einsum("nz,nzi,nzj->nij", w2, h, h)
@@ -347,6 +359,16 @@ def hessian(p: Problem, b: Balls, lo: Loads, kappa: np.ndarray) -> np.ndarray:
     hess *= free[:, :, None] & free[:, None, :]
     hess += np.eye(5) * p.locked[:, None, :]
     return hess
+
+
+def turns(p: Problem, b: Balls) -> np.ndarray:
+    """Balls whose contact normal turns with the ring (n, z): groove centres not crossed and,
+    one-sided, ``u_j > 0`` (at ``u_j <= 0`` the ball sits at 0° whatever ``u_j``: no curvature
+    across the groove)."""
+    inside = b.rho > 0
+    if p.one_sided.any():
+        inside &= ~p.one_sided[:, None] | (b.u > 0)
+    return inside
 
 
 def _excess(tau: np.ndarray, sig: np.ndarray) -> np.ndarray:
@@ -527,11 +549,28 @@ def _newton_step(
     hess = hessian(q, cur, lo, kappa)
     trace = np.trace(hess, axis1=1, axis2=2)
     hess += (1e-13 * trace + 1e-300)[:, None, None] * np.eye(5)
-    step = -np.linalg.solve(hess, grad[:, :, None])[:, :, 0]
+    step = cap_step(q, -np.linalg.solve(hess, grad[:, :, None])[:, :, 0])
     loose = np.flatnonzero(~(trace > q.locked.sum(1)) & ~stop)  # no ball in contact
     if loose.size:  # Newton has no curvature there: move along the load to the first contact
-        step[loose] = _to_contact(q.take(loose), cur.take(loose), _take_loads(lo, loose))
+        step[loose] = cap_step(
+            q, _to_contact(q.take(loose), cur.take(loose), _take_loads(lo, loose)), loose
+        )
     return np.where(stop[:, None], 0.0, step), hess
+
+
+def cap_step(p: Problem, step: np.ndarray, rows: Any = slice(None)) -> np.ndarray:
+    """One-sided cases: the step shortened so that no axial part (a, t, t_c) exceeds A. A ball
+    at u_j < 0 has no stiffness along the groove, so with few balls in contact the Newton matrix
+    may be singular along a move that lifts the others further off (its regularised step then
+    goes 1e13 times the force out and takes thousands of steps to come back); an equilibrium
+    lies within a few A of any start (a loaded ball has |u_j| < A). Deep-groove cases: as is."""
+    one = p.one_sided[rows]
+    if not one.any():
+        return step
+    longest = np.max(np.abs(step[:, 2:]), axis=1)
+    a_hat = p.a_hat[rows]
+    shrink = np.where(one & (longest > a_hat), a_hat / np.where(longest > 0, longest, 1.0), 1.0)
+    return step * shrink[:, None]
 
 
 def _take_loads(lo: Loads, idx: np.ndarray) -> Loads:
@@ -581,6 +620,7 @@ def _line_search(
             sub = _part(*part, retry)
             left = np.where(sub[0].locked, 0.0, trial.gen[retry] - sub[0].f)
             fix = -np.linalg.solve(hess[pending[retry]], left[:, :, None])[:, :, 0]
+            fix = cap_step(sub[0], fix)
             ok2, trial2 = _accept(sub, w[retry] + fix, drop_min[retry], res[pending[retry]], True)
             better = ok2 & (~ok[retry] | (trial2.drop < trial.drop[retry]))
             w[retry[better]] += fix[better]

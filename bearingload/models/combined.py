@@ -34,6 +34,35 @@ Geometry (deep-groove ball bearing, one row)
   contact-angle-dependent curvatures: ``1/R_x = 2/D_w +- 2 cos(alpha)/(d_m -+ D_w cos(alpha))``,
   i.e. the zero-angle curvatures of a bearing of pitch diameter ``d_m / cos(alpha)``.
 
+Angular contact (``contact_angle`` given)
+-----------------------------------------
+* Single-row angular-contact ball bearing of design contact angle ``alpha_0`` (Harris & Kotzalas,
+  ch. 8; ISO/TS 16281): the groove curvature centres of every ball lie ``A cos(alpha_0)`` apart
+  radially and ``A sin(alpha_0)`` axially at the zero-load position, where each ball touches
+  both grooves at ``alpha_0``. That is the deep-groove geometry of clearance
+  ``G_r = 2 A (1 - cos alpha_0)`` with the axial unknown shifted by ``A sin(alpha_0)``, so the
+  solver runs on it unchanged; ``axial`` is reported from the zero-load position and
+  ``axial_play`` is 0 (the ring is free the other way). Positive ``F_a`` is the thrust the
+  bearing takes.
+* One-sided contact: the outer ring's low shoulder ends at the groove bottom, so a ball whose
+  contact would move through 0° to the other side of the groove takes no axial part: it sees
+  ``u'_j = max(u_j, 0)`` in place of ``u_j``, ``delta_j = |(max(rho_j, 0), max(u_j, 0))| - A``.
+  The map is componentwise convex and nondecreasing on the nonnegative quadrant where the norm
+  is nondecreasing, so the potential stays convex and once differentiable (the Newton solver's
+  guarantees hold). A ball pushed the wrong way carries nothing while ``rho_j <= A`` (it has left
+  its groove), or, squeezed radially beyond ``A`` at ``u_j <= 0``, carries at 0°, the groove
+  bottom; never a negative load or angle. At ``F_a = 0`` without a moment the loaded balls sit
+  at 0° and the ring has slid the other way by ``A sin(alpha_0)`` (one position of a range: a
+  single bearing under a radial load alone is held axially by its partner in a real mounting).
+* Refused (:class:`~bearingload.errors.InputError`): ``F_a < 0``; a contact angle outside
+  0-60°; a clearance beside it; with the ring free to tilt, a moment the one-way balls cannot
+  hold, ``(M, M_c)/(F_a R_i)`` outside the regular z-gon of the ball positions.
+* Numerics: a ball at ``u_j < 0`` has no stiffness along its groove, so with few balls in
+  contact the Newton matrix may be singular along a move that lifts the others further off;
+  the axial parts of every step of a one-sided case are capped at ``A``
+  (:func:`bearingload.models._combined_ring.cap_step`). Deep-groove cases take none of these
+  branches: their results are bit-identical to those before angular contact was added.
+
 Conventions
 -----------
 * The axial displacement ``a`` is measured from the centred rings: it includes half the axial
@@ -417,8 +446,10 @@ def solve_combined(
     stiffness: Any = None,
     tilt_radius: Any = None,
     moment_cross: Any = 0.0,
+    contact_angle: Any = None,
 ) -> CombinedDistribution:
-    """Equilibrium of the inner ring of a deep-groove ball bearing under F_r, F_a and a moment.
+    """Equilibrium of the inner ring of a deep-groove (or, given ``contact_angle``, an
+    angular-contact) ball bearing under F_r, F_a and a moment.
 
     Conventions and model: see the module docstring. Arrays broadcast over cases; ``balls`` is
     one number per call (the ball arrays of the result have the last axis z).
@@ -456,6 +487,12 @@ def solve_combined(
     moment_cross : array_like, default 0
         Moment tilting the ring about the load line (generalised force of ``tilt_cross``);
         the ring stays free to tilt that way when a misalignment is imposed. [N mm]
+    contact_angle : array_like, optional
+        Design contact angle alpha_0 of an angular-contact ball bearing, 0 to 60: the groove
+        centres offset so that every ball touches both grooves at alpha_0 with no load, the
+        contact one-sided (a thrust F_a >= 0 only; see "Angular contact" in the module
+        docstring). ``clearance`` must then be 0 and ``axial`` is measured from that position;
+        ``axial_play`` is 0. Default: a deep-groove bearing. [°]
 
     Returns
     -------
@@ -486,6 +523,7 @@ def solve_combined(
     if np.any(fr < 0):
         raise InputError("radial_load", "must be >= 0 N")
     fa = validate.finite("axial_load", axial_load)
+    angular = _angular(contact_angle, fa, clearance)
     mm = validate.finite("moment", 0.0 if moment is None else moment)
     mc = validate.finite("moment_cross", moment_cross)
     tilt_deg = validate.finite("misalignment", 0.0 if misalignment is None else misalignment)
@@ -497,24 +535,18 @@ def solve_combined(
         {"radial_load": fr, "axial_load": fa, "moment": mm, "misalignment": tilt_deg,
          "cage_angle": cage, "modulus": e, "poisson": nu, "moment_cross": mc,
          "ball_diameter": ball_diameter, "pitch_diameter": pitch_diameter, "f_i": f_i,
-         "f_o": f_o, "clearance": clearance}
+         "f_o": f_o, "clearance": clearance, "contact_angle": angular}
     )  # fmt: skip
     arrays = np.broadcast_arrays(
-        fr,
-        fa,
-        mm,
-        tilt_deg,
-        cage,
-        e,
-        nu,
-        mc,
+        fr, fa, mm, tilt_deg, cage, e, nu, mc,
         *(np.asarray(v, dtype=float) for v in (ball_diameter, pitch_diameter, f_i, f_o, clearance)),
+        np.zeros(()) if angular is None else angular,
         *(() if k_given is None else (k_given,)),
-    )
+    )  # fmt: skip
     shape = arrays[0].shape
     flat = [a.ravel() for a in arrays]
-    fr, fa, mm, tilt_deg, cage, e, nu, mc, dw, dm, fi, fo, gr = flat[:13]
-    geo = _geometry(dw, dm, fi, fo, gr)
+    fr, fa, mm, tilt_deg, cage, e, nu, mc, dw, dm, fi, fo, gr, alpha_d = flat[:14]
+    geo = _geometry(dw, dm, fi, fo, gr) if angular is None else _angular_geometry(dw, dm, fi, fo, alpha_d)  # fmt: skip
     if tilt_radius is not None:
         radius = validate.positive("tilt_radius", tilt_radius, "mm")
         geo = dataclasses.replace(geo, R_i=np.broadcast_to(radius, dw.shape).astype(float))
@@ -525,12 +557,14 @@ def solve_combined(
             "otherwise no equilibrium exists",
         )
     _check_few_balls(z, cage, fa, mm, mc, misalignment is not None)
+    if angular is not None and misalignment is None:
+        _check_one_sided_moment(z, cage, fa, mm, mc, geo.R_i)
     curve = None
     if k_given is None:
         k_ref, values = _hertz_setup(geo, e, nu)
         curve = _StiffnessCurve(values)
     else:
-        k_ref = flat[13]
+        k_ref = flat[14]
     f_ref = np.maximum(np.maximum(fr, np.abs(fa)), np.hypot(mm, mc) / geo.R_i)
     if np.any(f_ref <= 0):
         raise InputError("radial_load", "give a radial load, an axial load or a moment")
@@ -539,8 +573,9 @@ def solve_combined(
     c, s, mirror = _directions(z, cage)
     held, imposed = _locks(z, mirror, (fr, fa, mm, mc), t_imp, misalignment is not None)
     f = np.stack([fr, np.zeros_like(fr), fa, mm / geo.R_i, mc / geo.R_i], axis=1) / f_ref[:, None]
+    one_sided = np.full(fr.shape, angular is not None)
     problem = Problem.make(z, (c, s), (geo.A, geo.g), f=f, t_imp=t_imp, locked=held,
-                           imposed=imposed, f_ref=f_ref, k_ref=k_ref)  # fmt: skip
+                           imposed=imposed, f_ref=f_ref, k_ref=k_ref, one_sided=one_sided)  # fmt: skip
     given = {"balls": z, "radial_load": fr, "axial_load": fa, "moment": mm, "moment_cross": mc,
              "clearance": gr, "cage_angle": cage}  # fmt: skip
     if misalignment is not None:  # the moment is then the reaction, not an input
@@ -556,6 +591,72 @@ def solve_combined(
             _tangent(problem, geo, end, kappa, curve, mirror & (mc == 0)),
         )
         return _result(problem, geo, answer, shape, given, misalignment)
+
+
+def _angular_geometry(dw: Any, dm: Any, fi: Any, fo: Any, alpha_deg: np.ndarray) -> _Geometry:
+    """The deep-groove geometry whose free contact angle is the design angle alpha_0 [°]:
+    ``G_r = 2A (1 - cos alpha_0) = 4A sin^2(alpha_0/2)``, alpha_0 kept as given."""
+    big_a = (validate.finite("f_i", fi) + validate.finite("f_o", fo) - 1.0) * dw
+    geo = _geometry(dw, dm, fi, fo, 4.0 * big_a * np.sin(np.deg2rad(alpha_deg) / 2.0) ** 2)
+    alpha0 = np.deg2rad(alpha_deg)  # as given, not through the arcsine
+    return dataclasses.replace(geo, alpha0=alpha0, R_i=dm / 2.0 + (fi - 0.5) * dw * np.cos(alpha0))
+
+
+def _angular(contact_angle: Any, fa: np.ndarray, clearance: Any) -> np.ndarray | None:
+    """The design contact angle [°] checked (None: a deep-groove bearing): 0 to 60°, with no
+    clearance (the angle fixes the geometry) and a thrust F_a >= 0 (one-sided contact)."""
+    if contact_angle is None:
+        return None
+    alpha = validate.finite("contact_angle", contact_angle)
+    if np.any((alpha < 0) | (alpha > 60)):
+        raise InputError("contact_angle", "must be from 0 to 60°")
+    if np.any(validate.finite("clearance", clearance) != 0):
+        raise InputError(
+            "clearance",
+            "must be 0 with a contact angle: the design contact angle fixes the geometry of an "
+            "angular-contact bearing",
+        )
+    if np.any(fa < 0):
+        raise InputError(
+            "axial_load",
+            "must be >= 0 N for an angular-contact bearing: its balls take thrust one way only "
+            "(a reversed load lifts every ball off its groove; mount the bearing the other way "
+            "round, or give the load to its partner)",
+        )
+    return alpha
+
+
+def _check_one_sided_moment(
+    z: int, cage: np.ndarray, fa: np.ndarray, mm: np.ndarray, mc: np.ndarray, radius: np.ndarray
+) -> None:
+    """Refuse a moment a single angular-contact bearing cannot hold with its ring free to tilt.
+
+    Every ball pushes the ring axially one way only, ``Q_j sin(alpha_j) >= 0``, at the arm
+    ``R_i (cos phi_j, sin phi_j)``: the thrust and the moments it makes, ``(F_a, M/R_i,
+    M_c/R_i)``, lie in the cone of the vectors ``(1, cos phi_j, sin phi_j)``. An equilibrium
+    needs ``(M, M_c)/(F_a R_i)`` strictly inside the regular z-gon of the ball positions: on
+    every edge, its component along the edge's normal (at ``phi_j + 180°/z``) below
+    ``cos(180°/z)``. Outside, the balls on the far side would lift off and nothing holds the
+    tilt.
+    """
+    tilting = (mm != 0) | (mc != 0)
+    if not np.any(tilting):
+        return
+    half = math.pi / z
+    normals = np.deg2rad(cage)[:, None] + 2.0 * math.pi * np.arange(z) / z + half
+    with np.errstate(divide="ignore", invalid="ignore"):
+        reach = (mm[:, None] * np.cos(normals) + mc[:, None] * np.sin(normals)).max(axis=1)
+        bad = tilting & ~(reach < math.cos(half) * fa * radius)
+    if np.any(bad):
+        i = int(np.flatnonzero(bad)[0])
+        limit = math.cos(half) * fa[i] * radius[i]
+        raise InputError(
+            "moment",
+            f"an angular-contact bearing alone holds a moment only below about F_a R_i "
+            f"cos(180°/z) = {limit:.4g} N mm here (F_a = {fa[i]:.4g} N, R_i = "
+            f"{radius[i]:.4g} mm): its balls push the ring one way only, the far ones would "
+            "lift off; raise the axial load or impose the tilt (misalignment)",
+        )
 
 
 def _check_few_balls(
@@ -909,7 +1010,7 @@ def _tangent(p: Problem, geo: _Geometry, point: _ring.Point, kappa: np.ndarray,
     case symmetric about the load line (``mirrored``: the balls and the loads) the couplings of
     (x, axial, tilt) with (y, tilt_cross) are 0, exactly rather than to rounding."""
     b, lo = point.b, point.lo
-    inside = b.rho > 0
+    inside = _ring.turns(p, b)
     d = np.where(b.d > 0, b.d, 1.0)
     g = _ring._times_arms(lo.ca, lo.sa, p.arms)
     h = _ring._times_arms(-lo.sa, lo.ca, p.arms)
@@ -963,10 +1064,10 @@ def _result(
         clearance=case(given["clearance"]),
         cage_angle=case(cage),
         free_contact_angle=case(np.rad2deg(geo.alpha0)),
-        axial_play=case(2.0 * geo.A * np.sin(geo.alpha0)),
+        axial_play=case(np.where(p.one_sided, 0.0, 2.0 * geo.A * np.sin(geo.alpha0))),
         x=case(v[:, 0] * p.scale),
         y=case(v[:, 1] * p.scale),
-        axial=case(v[:, 2] * p.scale),
+        axial=case(v[:, 2] * p.scale - np.where(p.one_sided, geo.A * np.sin(geo.alpha0), 0.0)),
         tilt=case(np.rad2deg(t * p.scale / geo.R_i)),
         tilt_cross=case(np.rad2deg(v[:, 4] * p.scale / geo.R_i)),
         ball_angles=ball(phi),

@@ -47,6 +47,7 @@ INPUT_KEYS = (
     "clearance",
     "clearance_pick",
     "cage_angle",
+    "contact_angle",
 )
 ANSWER_KEYS = (
     "q_max",
@@ -101,6 +102,15 @@ NOTES = (
 STATIC_NOTE = (
     "Contact pressures: exact Hertz, every ball at its load and contact angle, the largest of "
     "each contact. s0 = C0/P0, P0 = max(F_r, 0.6 F_r + 0.5 F_a) (ISO 76:2006, 7.1)."
+)
+
+
+#: What replaces the second of :data:`NOTES` for an angular-contact bearing.
+ANGULAR_NOTE = (
+    "Angular contact (docs/angular_contact.md): one-sided, F_a >= 0 only; the axial displacement "
+    "is measured from the zero-load position (every ball at the design angle). Without --moment "
+    "or --misalignment the inner ring is free to tilt (M = 0). ISO 281 L10 and ISO 76 P0 are not "
+    "given for angular contact."
 )
 
 
@@ -187,7 +197,10 @@ def _summary(records: Sequence[dict[str, Any]], bearing: Any) -> Table:
         keys.insert(0, "clearance")
     heads = ["value"] if len(records) == 1 else [f"G_r {r['clearance_pick']}" for r in records]
     columns, rows = quantity_rows(keys, heads, records)
-    return Table(_title(records), columns, rows, [*NOTES, STATIC_NOTE, *set_note(bearing)])
+    notes = [*NOTES, STATIC_NOTE, *set_note(bearing)]
+    if records[0].get("contact_angle") is not None:
+        notes[1] = ANGULAR_NOTE
+    return Table(_title(records), columns, rows, notes)
 
 
 def _title(records: Sequence[dict[str, Any]]) -> str:
@@ -199,6 +212,8 @@ def _title(records: Sequence[dict[str, Any]]) -> str:
         else "G_r: class range"
     )
     lever = f", tilt lever {r['tilt_radius']:.6g} mm" if r.get("tilt_radius") is not None else ""
+    if r.get("contact_angle") is not None:  # angular contact: the design angle, no clearance
+        clear = f"angular contact, contact angle {r['contact_angle']:.6g}°"
     return (
         f"{who}z = {r['balls']}, F_r = {r['load']:.6g} N, F_a = {r['axial_load']:.6g} N, "
         f"{clear}, cage angle {r['cage_angle']:.6g}°, {r['rotating']} ring rotating{lever}"

@@ -137,6 +137,7 @@ QUANTITIES: dict[str, Quantity] = {
         Quantity("misalignment", "imposed misalignment", "°", also=_MRAD),
         Quantity("tilt_radius", "lever of the tilt (radius of the tilted groove centres)", "mm"),
         Quantity("rotating", "rotating ring", "", None),
+        Quantity("contact_angle", "design contact angle (angular contact)", "°"),
         Quantity("free_contact_angle", "free contact angle alpha_0", "°"),
         Quantity("axial_play", "axial play", "mm", display=_UM),
         Quantity("axial", "axial displacement from centred rings", "mm", display=_UM),

@@ -135,7 +135,8 @@ def _combined_case(
     l10r = p_eq = life = None
     if c_r:
         l10r = reference_lives(b, r, rotating, c_r)
-        p_eq, life = basic_lives(b, c_r, load, axial_load)
+        if b.contact_angle is None:  # (ISO 281's X, Y of angular contact: not yet)
+            p_eq, life = basic_lives(b, c_r, load, axial_load)
     found = contact_pressures(b, r.ball_loads, r.contact_angles)
     p_i = p_o = None
     if found is not None:
@@ -153,10 +154,11 @@ def _combined_case(
         if p_i is None or p_o is None
         else list(zip(each(p_i), each(p_o), strict=True))
     )
-    p0 = [static_equivalent_load(f, a) for f, a in zip(fr, fa, strict=True)]
+    p0 = [static_equivalent_load(f, a) if b.contact_angle is None else None
+          for f, a in zip(fr, fa, strict=True)]  # fmt: skip
     checks = tuple(tuple(combined_warnings(b, fr[i], fa[i], q[i], int(loaded[i]), warned[i], inner[i]))
                    for i in range(len(q)))  # fmt: skip
-    s0 = [static_safety(b.C0, p) for p in p0]
+    s0 = [None if p is None else static_safety(b.C0, p) for p in p0]
     said = lever_warning(lever, b.pitch_diameter)  # (None for groove and pitch)
     if said:
         checks = tuple(c + (said,) for c in checks)
@@ -284,6 +286,7 @@ def solve_on_bearing(
         stiffness=b.stiffness if b.stiffness_given else None,
         tilt_radius=tilt_radius,
         moment_cross=0.0 if moment_cross is None else moment_cross,
+        contact_angle=b.contact_angle,
     )
     tilt = float(np.max(ring_tilt(r)))
     cross = moment_cross is not None and bool(np.any(np.asarray(moment_cross) != 0))
@@ -375,6 +378,7 @@ def combined_columns(c: CombinedCase) -> dict[str, Any]:
         c.equivalent_load, c.rating_life, c.reference_rating_life,
         moment_cross=c.moment_cross, tilt_radius=c.tilt_radius,
     )  # fmt: skip
+    sel = c.static_equivalent_load  # (None: angular contact, ISO 76's X0, Y0 not yet)
     for key in ("equivalent_load", "rating_life"):  # a moment alone, an F_a without f0: none
         values = columns[key]
         if values is not None and np.isnan(values).any():
@@ -382,9 +386,9 @@ def combined_columns(c: CombinedCase) -> dict[str, Any]:
     return columns | {
         "p_max_inner": listed(c.p_max_inner),
         "p_max_outer": listed(c.p_max_outer),
-        "static_equivalent_load": np.broadcast_to(
-            np.asarray(c.static_equivalent_load, float), (n,)
-        ),
+        "static_equivalent_load": listed(sel)
+        if sel is None or (isinstance(sel, list) and None in sel)
+        else np.broadcast_to(np.asarray(sel, float), (n,)),
         "static_safety": listed(c.static_safety),
         "warnings": [c.warnings] if n == 1 and np.ndim(c.result.q_max) == 0 else list(c.warnings),
     }
@@ -429,6 +433,7 @@ def case_columns(
         "clearance": arr(r.clearance),
         "clearance_pick": b.clearance_pick,
         "cage_angle": arr(r.cage_angle),
+        **({} if b.contact_angle is None else {"contact_angle": arr(b.contact_angle)}),
         "free_contact_angle": arr(r.free_contact_angle),
         "axial_play": arr(r.axial_play),
         "q_max": arr(r.q_max),

@@ -25,7 +25,8 @@ def ball_reference_life(b: ResolvedBearing, ball_loads: Any, rotating: str, c_r:
     from bearingload.bearings.iso16281 import contact_ratings, reference_rating_life
 
     assert b.ball_diameter and b.pitch_diameter and b.f_i and b.f_o
-    q_ci, q_ce = contact_ratings(c_r, b.balls, b.ball_diameter, b.pitch_diameter, b.f_i, b.f_o)
+    q_ci, q_ce = contact_ratings(c_r, b.balls, b.ball_diameter, b.pitch_diameter, b.f_i, b.f_o,
+                                 contact_angle=b.contact_angle or 0.0)  # fmt: skip
     return reference_rating_life(ball_loads, q_ci, q_ce, rotating)
 
 
