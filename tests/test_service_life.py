@@ -139,6 +139,28 @@ def test_a_iso_is_continuous_at_the_band_edges(kind, edge):
 
 
 @pytest.mark.parametrize("kind", ["ball", "roller"])
+@pytest.mark.parametrize("kappa", [0.2, 0.4, 0.7, 1.0, 2.5, 4.0])
+def test_a_iso_is_continuous_where_it_reaches_its_cap_of_50(kind, kappa):
+    """In e_C C_u/P the standard has one edge: where 0.1 [bracket]^-e reaches 50 (ISO 281:2007
+    9.3.3 caps a_ISO at 50). The cap point x* is found here from the equation in mpmath; just
+    below it a_ISO is 50 to within the step, at and above it exactly 50."""
+    a, b_low, b_mid, b_high, outer, power, final = (
+        (2.5671, 2.2649, 1.9987, 1.9987, 0.83, 1 / 3, 9.3)
+        if kind == "ball"
+        else (1.5859, 1.3993, 1.2348, 1.2348, 1.0, 0.4, 9.185)
+    )
+    k = mp.mpf(kappa)
+    e = mp.mpf("0.054381") if k < 0.4 else mp.mpf("0.190870") if k < 1 else mp.mpf("0.071739")
+    d = mp.mpf(a) - mp.mpf(b_low if k < 0.4 else b_mid if k < 1 else b_high) / k**e
+    bracket = mp.mpf(500) ** (-1 / mp.mpf(final))  # 0.1 bracket^-final = 50
+    x_cap = float(((1 - bracket) / d ** mp.mpf(outer)) ** (1 / mp.mpf(power)))
+    below = float(ml.life_modification_factor(kappa, x_cap * (1 - 1e-9), kind))
+    assert below == pytest.approx(50.0, rel=1e-6) and below <= 50.0
+    assert float(ml.life_modification_factor(kappa, x_cap * (1 + 1e-9), kind)) == 50.0
+    assert float(ml.life_modification_factor(kappa, 0.9 * x_cap, kind)) < 50.0
+
+
+@pytest.mark.parametrize("kind", ["ball", "roller"])
 def test_a_iso_limits_and_monotony(kind):
     kappas = np.linspace(0.1, 4.0, 200)
     # e_C C_u/P = 0: a_ISO = 0.1 whatever kappa

@@ -44,6 +44,31 @@ COLUMNS: dict[str, str] = {
     "tilt_radius": "tilt_radius",
     "dynamic_rating": "force",
     "rotating": "ring",
+    "static_rating": "force",
+    "speed": "speed",
+    "reliability": "number",
+    "viscosity": "viscosity",
+    "contamination": "level",
+    "ec": "number",
+    "fatigue_load_limit": "force",
+    "roughness": "length",
+    "pressure_viscosity": "number",
+}
+#: The operating conditions of the lives (solve's options of the same names; ``eC`` is read as
+#: ``ec``): they feed the lives in hours, a_ISO, the modified lives and the film, never a load.
+SERVICE_COLUMNS = ("speed", "reliability", "viscosity", "contamination", "ec",
+                   "fatigue_load_limit", "roughness", "pressure_viscosity")  # fmt: skip
+#: The ranges of the service columns' values, as the command line's options check them:
+#: column -> (low, high, closed at low, what the range is).
+SERVICE_RANGES: dict[str, tuple[float, float, bool, str]] = {
+    "static_rating": (0.0, float("inf"), False, "must be greater than 0 N"),
+    "fatigue_load_limit": (0.0, float("inf"), False, "must be greater than 0 N"),
+    "speed": (0.0, float("inf"), False, "must be greater than 0 rpm"),
+    "viscosity": (0.0, float("inf"), False, "must be greater than 0 mm^2/s"),
+    "roughness": (0.0, float("inf"), False, "must be greater than 0 mm"),
+    "reliability": (90.0, 99.95, True, "must lie between 90 and 99.95 % (ISO 281 Table 12)"),
+    "ec": (0.0, 1.0, True, "e_C must lie between 0 and 1"),
+    "pressure_viscosity": (1.0, 100.0, True, "must lie between 1 and 100 1/GPa"),
 }
 #: The load columns: a row with a cell in one of them is a combined-load case (3-D equilibrium),
 #: as solve's load options choose its engine; the others are radial cases.
@@ -66,6 +91,7 @@ _COLUMN_OF = {
     "f_o": "outer_conformity",
     "pick": "clearance_pick",
     "bore": "clearance",
+    "eC": "ec",
 }
 _HEADER = re.compile(r"^\s*([^\[\]]*?)\s*(?:\[\s*([^\]]*?)\s*\])?\s*$")
 
@@ -309,7 +335,7 @@ class CellParser:
         a fraction of a ball, a number implausible without a unit, infinity)."""
         import numpy as np
 
-        if self.kind in ("text", "pick", "ring", "exponent", "tilt_radius") or not texts:
+        if self.kind in ("text", "pick", "ring", "level", "exponent", "tilt_radius") or not texts:
             return None
         if "_" in "".join(texts):  # numpy reads '1_000' as Python does; the parser refuses it
             return None
@@ -343,6 +369,14 @@ class CellParser:
         kind, name = self.kind, self.name
         if kind in ("text", "pick"):
             return _choice(name, text) if kind == "pick" else text
+        if kind == "level":
+            from bearingload.constants import CONTAMINATION_LEVELS
+
+            if text not in CONTAMINATION_LEVELS:
+                raise InputError(
+                    name, f"unknown level {text!r}; allowed: {', '.join(CONTAMINATION_LEVELS)}"
+                )
+            return text
         if kind == "ring":
             if text not in ("inner", "outer"):
                 raise InputError(name, f"unknown ring {text!r}; allowed: inner, outer")

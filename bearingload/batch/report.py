@@ -18,8 +18,9 @@ from collections.abc import Sequence
 from typing import Any
 
 from bearingload.batch.read import Header
+from bearingload.reports.quantities import SERVICE_KEYS
 from bearingload.reports.render import Column, Table, csv_block, csv_header, render
-from bearingload.reports.solve import ANSWER_KEYS, INPUT_KEYS, column
+from bearingload.reports.solve import INPUT_KEYS, REPORT_KEYS, column
 
 #: The most rows json, markdown and table hold in memory (csv is streamed without a limit).
 MAX_HELD_ROWS = 100_000
@@ -29,6 +30,7 @@ _BEARING_ONLY = (
     "p_max_inner",
     "p_max_outer",
     "static_safety",
+    "static_rating",
     "rating_life",
     "reference_rating_life",
     "revolutions",
@@ -46,21 +48,50 @@ COMBINED_KEYS = (
     "bearing", "method", "balls", "load", "axial_load", "moment", "moment_cross",
     "misalignment", "tilt_radius", "rotating", "stiffness", "clearance", "clearance_pick",
     "cage_angle", "q_max", "loaded_balls", "p_max_inner", "p_max_outer",
-    "static_equivalent_load", "static_safety", "contact_angle_max", "free_contact_angle",
-    "axial_play", "x", "y", "axial", "tilt", "tilt_cross", "stiffness_radial",
-    "stiffness_axial", "stiffness_tilt", "reference_rating_life",
-    "dynamic_rating", "equivalent_load", "rating_life",
+    "static_equivalent_load", "static_safety", "static_rating", "contact_angle_max",
+    "free_contact_angle", "axial_play", "x", "y", "axial", "tilt", "tilt_cross",
+    "stiffness_radial", "stiffness_axial", "stiffness_tilt", "reference_rating_life",
+    "reference_rating_life_hours", "dynamic_rating", "equivalent_load", "rating_life",
+    "rating_life_hours", *SERVICE_KEYS,
 )  # fmt: skip
+#: The output columns each service input column can give (solve prints them when the option is
+#: given); a file without the column has none of them.
+SERVICE_OUTPUT = {
+    "speed": ("speed", "rating_life_hours", "reference_rating_life_hours",
+              "modified_rating_life_hours", "modified_reference_rating_life_hours"),
+    "reliability": ("reliability", "reliability_factor"),
+    "viscosity": ("viscosity", "rated_viscosity", "kappa", "contamination_factor",
+                  "fatigue_load_limit", "a_iso", "modified_rating_life",
+                  "modified_rating_life_hours", "reference_equivalent_load", "a_iso_reference",
+                  "modified_reference_rating_life", "modified_reference_rating_life_hours",
+                  "film_thickness"),
+    "roughness": ("roughness", "film_ratio"),
+}  # fmt: skip
+
+
+def _service_outputs(header: Header) -> set[str]:
+    """The service columns a file with ``header`` writes."""
+    names = set(header.names)
+    keys = {k for c, ks in SERVICE_OUTPUT.items() if c in names for k in ks}
+    if "viscosity" not in names:  # the modified lives need a_ISO, the film ratio the film
+        keys -= {"modified_rating_life_hours", "modified_reference_rating_life_hours",
+                 "film_ratio", "roughness"}  # fmt: skip
+    return keys
 
 
 def batch_columns(header: Header) -> list[Column]:
     """The output columns for a file with ``header``."""
+    service = set(SERVICE_KEYS) | {"rating_life_hours", "reference_rating_life_hours"}
+    wanted = _service_outputs(header)
     if header.combined:  # the columns of solve's csv with an axial load, every one
         given = [k for k in COMBINED_KEYS if k not in _COMBINED_IF_GIVEN or k in header.names]
+        given = [k for k in given if k not in service or k in wanted]
         return [column(k, 1.5) for k in ("row", *given)]
-    keys = ["row", *INPUT_KEYS, *(k for k in ANSWER_KEYS if k != "relative_error"), "valid"]
+    answer = [k for k in REPORT_KEYS if k != "relative_error"]
+    answer = [k for k in answer if k not in service or k in wanted]
+    keys = ["row", *INPUT_KEYS, *answer, "valid"]
     if not header.has_bearing:
-        keys = [k for k in keys if k not in _BEARING_ONLY]
+        keys = [k for k in keys if k not in _BEARING_ONLY and k not in service]
     if "method" not in header.names:
         keys.remove("epsilon")
     # rows of roller bearings (m = 10/9) or an exponent column mix exponents: N/mm^m then

@@ -24,7 +24,16 @@ from typing import Any
 
 import numpy as np
 
-from bearingload.batch.read import LOAD_COLUMNS, Block, CellParser, Header, read_column, row_message
+from bearingload.batch.read import (
+    LOAD_COLUMNS,
+    SERVICE_COLUMNS,
+    SERVICE_RANGES,
+    Block,
+    CellParser,
+    Header,
+    read_column,
+    row_message,
+)
 from bearingload.errors import BearingloadError, InputError
 
 
@@ -43,7 +52,8 @@ class Chunk:
 _GEOMETRY = ("bearing", "ball_diameter", "pitch_diameter")
 #: Cells of a bearing that a ring given by z and K cannot use.
 _BEARING_ONLY = ("inner_conformity", "outer_conformity", "modulus", "poisson", "clearance_pick",
-                 "revolutions", "rotating", "dynamic_rating")  # fmt: skip
+                 "revolutions", "rotating", "dynamic_rating", "static_rating",
+                 *SERVICE_COLUMNS)  # fmt: skip
 _TILT_ALONE = (
     "tilt_radius: it is the lever of the inner ring's tilt, and only the combined load "
     "(axial_load, moment, moment_cross, misalignment) tilts the ring"
@@ -87,6 +97,7 @@ class BatchSolver:
             size = _call_size(key)
             for start in range(0, len(idx), size):
                 parts += _split(_ENGINES[key[0]], key, idx[start : start + size], cols, bad)
+        with_service(parts, cols)
         for i, message in bad.items():
             errors[numbers[i]] = message
         return _merged(parts, numbers, errors)
@@ -113,6 +124,14 @@ class BatchSolver:
                 m = [
                     x if x is not None else 1.5 if m is None else m[i] for i, x in enumerate(values)
                 ]
+            if name in SERVICE_RANGES:
+                _check_range(name, values, bad)
+        if "viscosity" in cols:  # nu_1 needs the speed, as solve's --viscosity needs --speed
+            speed = cols.get("speed", [None] * len(rows))
+            for i, nu in enumerate(cols["viscosity"]):
+                if nu is not None and speed[i] is None:
+                    bad.setdefault(i, "viscosity: needs the shaft speed (a speed cell) for the "
+                                   "rated viscosity nu_1")  # fmt: skip
         return cols, bad
 
     def _keys(self, cols: dict[str, list[Any]], n: int, bad: dict[int, str]) -> list[Any]:
@@ -166,6 +185,7 @@ class BatchSolver:
             why = re.sub(r"--([a-z-]+)", lambda m: m.group(1).replace("-", "_"), why)
             raise InputError("rotating", "it names the rotating ring for the reference rating "
                              f"life L10r (ISO/TS 16281), and {why.replace('a BEARING', 'a bearing')}")  # fmt: skip
+        _check_life_cells(v, b)
         if "load" not in v:
             raise InputError("load", "missing: every row needs a load")
         if not v.get("revolutions", 1.0) > 0:
@@ -185,6 +205,7 @@ class BatchSolver:
                 "bearing", "missing: the combined load needs a bearing or its ball geometry"
             )
         b = self._bearing(v)
+        _check_life_cells(v, b)
         if "load" not in v:
             raise InputError("load", "missing: every row needs a (radial) load, 0 allowed")
         if not v["load"] >= 0:
@@ -204,8 +225,8 @@ class BatchSolver:
                 "clearance": v.get("clearance"), "clearance_pick": v.get("clearance_pick", "mean")}  # fmt: skip
         if args["balls"] is not None:
             args["balls"] = int(args["balls"])
-        c_r = v.get("dynamic_rating")
-        key = (v.get("bearing"), c_r, *args.values())  # floats, text, frozen ClearanceSpec
+        c_r, c_0 = v.get("dynamic_rating"), v.get("static_rating")
+        key = (v.get("bearing"), c_r, c_0, *args.values())  # floats, text, frozen ClearanceSpec
         hit = self.bearings.get(key)
         if hit is None:
             try:
@@ -213,6 +234,7 @@ class BatchSolver:
                     raise InputError("dynamic_rating", "must be greater than 0 N")
                 hit = resolve_bearing(v.get("bearing"), **args)
                 hit = hit if c_r is None else hit.with_dynamic_rating(c_r)
+                hit = hit if c_0 is None else hit.with_static_rating(c_0)
             except BearingloadError as exc:
                 hit = exc
             if len(self.bearings) < 10_000:
@@ -220,6 +242,14 @@ class BatchSolver:
         if isinstance(hit, BearingloadError):
             raise hit
         return hit
+
+
+def _check_life_cells(v: dict[str, Any], b: Any) -> None:
+    """A viscosity needs the pitch diameter for nu_1, as solve's --viscosity does."""
+    if "viscosity" in v and b.pitch_diameter is None:
+        raise InputError(
+            "viscosity", "needs the pitch diameter (a bearing with its ball set or pitch_diameter)"
+        )
 
 
 def _check_method(name: str) -> None:
@@ -304,7 +334,8 @@ def _solve_bearing(
     revolutions = np.array(_take(cols, "revolutions", idx, DEFAULT_REVOLUTIONS), dtype=float)
     cases = solve_bearing([b], load, cage, [method], revolutions)
     (lc,) = with_reference_lives(cases, rotating)
-    return case_columns(lc) | {"warnings": list(lc.warnings)}
+    out = case_columns(lc) | {"warnings": list(lc.warnings)}
+    return out | {"_bearing": b, "_load": out["load"], "_angle": np.zeros(len(idx))}
 
 
 def _solve_combined(
@@ -324,7 +355,133 @@ def _solve_combined(
         rotating=rotating, dynamic_rating=c_r, moment_cross=given("moment_cross", cross),
         tilt_radius=None if groove else given("_lever"),
     )  # fmt: skip
-    return combined_columns(case)
+    out = combined_columns(case)
+    loads = np.asarray(case.result.ball_loads, dtype=float).reshape(len(idx), -1)
+    heaviest = np.argmax(loads, axis=-1)[:, None]
+    angles = np.asarray(case.result.contact_angles, dtype=float).reshape(len(idx), -1)
+    angle = np.take_along_axis(angles, heaviest, axis=-1)[:, 0]
+    return out | {"_bearing": b, "_load": out["equivalent_load"], "_angle": angle}
+
+
+def with_service(parts: list[Part], cols: dict[str, list[Any]]) -> None:
+    """Add to the bearing rows of ``parts`` the lives of
+    :func:`bearingload.bearings.service_life.service_columns`: C_0 for every row, the others by
+    the life cells each row gives (a value a row has not is None), and their warnings.
+
+    The rows of the block whose bearings share what the lives use (kind, C, C_0, the ball
+    geometry; not the clearance) and that give the same life cells (and contamination level)
+    are one call on arrays. Each part's hidden ``_bearing``, ``_load`` (P of L10 [N]) and
+    ``_angle`` (the contact angle of the heaviest ball [°]) are used and removed."""
+    from bearingload.bearings.service_life import service_columns
+
+    present = [c for c in SERVICE_COLUMNS if c in cols]
+    groups: dict[tuple[Any, ...], list[tuple[int, int]]] = {}
+    bases: dict[tuple[Any, ...], Any] = {}
+    for p, (idx, out) in enumerate(parts):
+        b = out.pop("_bearing", None)
+        if b is None:
+            continue
+        same = (b.kind, b.C, b.C0, b.pitch_diameter, b.ball_diameter, b.f_i, b.f_o, b.modulus,
+                b.poisson, b.roller_length)  # fmt: skip
+        bases[same] = b
+        for j, i in enumerate(idx):
+            given = tuple((c, cols[c][i] if c == "contamination" else True)
+                          for c in present if cols[c][i] is not None)  # fmt: skip
+            groups.setdefault((same, given), []).append((p, j))
+    floats: dict[tuple[int, str], np.ndarray] = {}
+
+    def gathered(key: str, members: list[tuple[int, int]]) -> np.ndarray:
+        for p in {p for p, _ in members}:
+            if (p, key) not in floats:
+                floats[p, key] = _floats(parts[p][1].get(key), len(parts[p][0]))
+        return np.array([floats[p, key][j] for p, j in members], dtype=float)
+
+    for (same, _), members in groups.items():
+        rows = [parts[p][0][j] for p, j in members]
+        found = service_columns(_operating(cols, rows), _basis(bases[same], members, gathered))
+        for key, value in found.items():
+            values = np.broadcast_to(value, (len(members),)).tolist()
+            for (p, j), x in zip(members, values, strict=True):
+                column = parts[p][1].setdefault(key, [None] * len(parts[p][0]))
+                column[j] = None if x != x else x
+        _service_warnings(found.get("kappa"), _operating(cols, rows[:1]), bases[same], members,
+                          parts)  # fmt: skip
+    for _, out in parts:
+        out.pop("_load", None)
+        out.pop("_angle", None)
+
+
+def _operating(cols: dict[str, list[Any]], rows: list[int]) -> Any:
+    """The operating conditions of ``rows`` (which give the same life cells) as arrays."""
+    from bearingload.bearings.service_life import Operating
+
+    def given(c: str, scale: float = 1.0) -> Any:
+        if c not in cols or cols[c][rows[0]] is None:
+            return None
+        return np.array([cols[c][i] for i in rows], dtype=float) * scale
+
+    alpha = given("pressure_viscosity", 1e-9)
+    return Operating(
+        speed=given("speed"), reliability=given("reliability"), viscosity=given("viscosity"),
+        contamination=cols["contamination"][rows[0]] if "contamination" in cols else None,
+        e_c=given("ec"), fatigue_load_limit=given("fatigue_load_limit"),
+        roughness=given("roughness"), **({} if alpha is None else {"pressure_viscosity": alpha}),
+    )  # fmt: skip
+
+
+def _basis(b: Any, members: list[tuple[int, int]], gathered: Callable[..., np.ndarray]) -> Any:
+    """The life basis of the rows ``members`` of bearing ``b`` (P, lives, Q_max, angle)."""
+    from bearingload.bearings.service_life import LifeBasis
+
+    return LifeBasis(
+        kind=b.kind, C=b.C, C0=b.C0, equivalent_load=gathered("_load", members),
+        rating_life=gathered("rating_life", members),
+        reference_rating_life=gathered("reference_rating_life", members),
+        q_max=gathered("q_max", members), contact_angle=gathered("_angle", members),
+        pitch_diameter=b.pitch_diameter, ball_diameter=b.ball_diameter, f_i=b.f_i, f_o=b.f_o,
+        modulus=b.modulus, poisson=b.poisson, roller_length=b.roller_length,
+    )  # fmt: skip
+
+
+def _service_warnings(
+    kappa: Any, op: Any, basis: Any, members: list[tuple[int, int]], parts: list[Part]
+) -> None:
+    """Each row's warnings of its lives, as solve prints them for the case."""
+    from bearingload.bearings.modified_life import KAPPA_RANGE, clamp_kappa
+    from bearingload.bearings.service_life import missing_fatigue_limit
+
+    common = missing_fatigue_limit(op, basis)
+    if kappa is None and not common:
+        return
+    ks = np.broadcast_to(np.nan if kappa is None else kappa, (len(members),))
+    low, high = KAPPA_RANGE
+    for (p, j), k in zip(members, ks.tolist(), strict=True):
+        found = (clamp_kappa(k)[1] if k == k and not low <= k <= high else []) + common
+        if found:
+            warnings = parts[p][1]["warnings"]
+            row = list(warnings[j])
+            warnings[j] = tuple(row + [w for w in found if w not in row])
+
+
+def _floats(value: Any, n: int) -> np.ndarray:
+    """A column over ``n`` rows as floats, None as NaN."""
+    if value is None:
+        return np.full(n, np.nan)
+    if isinstance(value, list):
+        return np.array([np.nan if x is None else x for x in value], dtype=float)
+    return np.broadcast_to(np.asarray(value, dtype=float), (n,))
+
+
+def _check_range(name: str, values: list[Any], bad: dict[int, str]) -> None:
+    """Rows whose cell of a service column lies outside its range (:data:`SERVICE_RANGES`)."""
+    low, high, closed, why = SERVICE_RANGES[name]
+    for i, x in enumerate(values):
+        if (
+            x is not None
+            and not ((low <= x) if closed else (low < x))
+            or (x is not None and x > high)
+        ):
+            bad.setdefault(i, f"{'eC' if name == 'ec' else name}: {why} (got {x:g})")
 
 
 Engine = Callable[[tuple[Any, ...], list[int], dict[str, list[Any]]], dict[str, Any]]

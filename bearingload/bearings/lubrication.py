@@ -188,8 +188,8 @@ def film_line(
 
 
 def rolling_radii(
-    ball_diameter: float, pitch_diameter: float, contact_angle: float = 0.0
-) -> tuple[float, float]:
+    ball_diameter: float, pitch_diameter: float, contact_angle: ArrayLike = 0.0
+) -> tuple[Any, Any]:
     """(R_x inner, R_x outer) in the rolling direction of a ball or roller. [mm]
 
     R_x = D_w (D_pw -+ D_w cos alpha) / (2 D_pw) (inner -, outer +).
@@ -197,15 +197,15 @@ def rolling_radii(
     >>> rolling_radii(10.0, 50.0)
     (4.0, 6.0)
     """
-    c = float(np.cos(np.deg2rad(contact_angle)))
+    c = scalar_out(np.cos(np.deg2rad(np.asarray(contact_angle, dtype=float))))
     rx_i = ball_diameter * (pitch_diameter - ball_diameter * c) / (2.0 * pitch_diameter)
     rx_o = ball_diameter * (pitch_diameter + ball_diameter * c) / (2.0 * pitch_diameter)
     return rx_i, rx_o
 
 
 def ball_radii(
-    ball_diameter: float, pitch_diameter: float, f_i: float, f_o: float, contact_angle: float
-) -> tuple[tuple[float, float], tuple[float, float]]:
+    ball_diameter: float, pitch_diameter: float, f_i: float, f_o: float, contact_angle: ArrayLike
+) -> tuple[tuple[Any, float], tuple[Any, float]]:
     """((R_x, R_y) inner, (R_x, R_y) outer) of a ball in its grooves. [mm]
 
     >>> [tuple(round(v, 3) for v in r) for r in ball_radii(10.0, 50.0, 0.52, 0.53, 0.0)]

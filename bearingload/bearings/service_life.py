@@ -14,6 +14,8 @@ from __future__ import annotations
 from dataclasses import dataclass, field
 from typing import Any
 
+import numpy as np
+
 from bearingload.bearings import lubrication as lub
 from bearingload.bearings import modified_life as ml
 from bearingload.constants import BALL_LIFE_EXPONENT, ROLLER_LIFE_EXPONENT
@@ -42,6 +44,8 @@ class Operating:
         Composite rms roughness sigma = sqrt(sigma_1^2 + sigma_2^2) of the surfaces. [mm]
     pressure_viscosity : float
         alpha of the lubricant. [1/Pa]
+    viscosity_note : str or None
+        Where the viscosity comes from (an oil at its temperature), for the notes.
     """
 
     speed: float | None = None
@@ -52,18 +56,21 @@ class Operating:
     fatigue_load_limit: float | None = None
     roughness: float | None = None
     pressure_viscosity: float = lub.PRESSURE_VISCOSITY
+    viscosity_note: str | None = None
 
 
 @dataclass(frozen=True)
 class LifeBasis:
-    """What one solved case knows for its lives. [N, mm, MPa, °, 10^6 rev]"""
+    """What one solved case (or the cases of one bearing) knows for its lives: ``kind``, the
+    ratings and the geometry are the bearing's; ``equivalent_load``, the lives, ``q_max`` and
+    ``contact_angle`` a float, or an array over cases (NaN: none). [N, mm, MPa, °, 10^6 rev]"""
 
     kind: str = "ball"
     C: float | None = None
     C0: float | None = None
-    equivalent_load: float | None = None
-    rating_life: float | None = None
-    reference_rating_life: float | None = None
+    equivalent_load: Any = None
+    rating_life: Any = None
+    reference_rating_life: Any = None
     pitch_diameter: float | None = None
     ball_diameter: float | None = None
     f_i: float | None = None
@@ -71,8 +78,8 @@ class LifeBasis:
     modulus: float | None = None
     poisson: float | None = None
     roller_length: float | None = None
-    q_max: float | None = None
-    contact_angle: float = 0.0
+    q_max: Any = None
+    contact_angle: Any = 0.0
 
 
 @dataclass
@@ -85,92 +92,143 @@ class ServiceLife:
 
 
 def service_values(op: Operating, b: LifeBasis) -> ServiceLife:
-    """Every life quantity the inputs make meaningful (see the module); C_0 always where known."""
+    """Every life quantity the inputs make meaningful (see the module); C_0 always where known.
+
+    The values are those of :func:`service_columns` (one case: floats; a key without a value is
+    left out), with the notes (sources, choices) and warnings of the case."""
     out = ServiceLife()
-    v = out.values
-    if b.C0:
-        v["static_rating"] = float(b.C0)
-    if op.speed is not None:
-        v["speed"] = op.speed
-        for key in ("rating_life", "reference_rating_life"):
-            life = getattr(b, key)
-            if life is not None:
-                v[f"{key}_hours"] = float(ml.life_hours(life, op.speed))
-    a1 = 1.0
+    columns = service_columns(op, b)
+    out.values = {
+        k: float(x) for k, x in columns.items() if np.ndim(x) == 0 and np.isfinite(float(x))
+    }
     if op.reliability is not None:
-        a1 = float(ml.reliability_factor(op.reliability))
-        v["reliability"] = op.reliability
-        v["reliability_factor"] = a1
         out.notes.append(
             "a_1: ISO 281:2007 Table 12 (between its rows 0.95 (ln(100/R)/ln(100/90))^(2/3) "
             "+ 0.05, the Weibull law the table is drawn from)."
         )
     if op.viscosity is not None:
-        _modified(op, b, a1, out)
+        assert op.speed is not None and b.pitch_diameter is not None
+        out.notes += [op.viscosity_note] if op.viscosity_note else []
+        v = out.values
+        out.warnings += ml.clamp_kappa(v["kappa"])[1]
+        used = float(ml.clamp_kappa(v["kappa"])[0])
+        e_c_note = _contamination(op, b.pitch_diameter)[1]
+        cu_note = _fatigue_limit(op, b)[1]
+        out.notes.append(
+            f"nu_1: ISO 281:2007, 9.3.3, at n = {op.speed:.6g} r/min and D_pw = "
+            f"{b.pitch_diameter:.6g} mm; kappa = nu/nu_1{_used(v['kappa'], used)}. {e_c_note} "
+            f"{cu_note}"
+        )
+        out.notes += _film_note(op, b) if "film_thickness" in v else []
+        out.warnings += missing_fatigue_limit(op, b)
+        if "fatigue_load_limit" in v and "modified_reference_rating_life" in v:
+            out.notes.append(
+                "L_nmr: ISO/TS 16281 modified reference rating life a_1 a_ISO L10r, a_ISO at the "
+                "dynamic equivalent reference load P_ref = C L10r^(-1/p) of the ball loads."
+            )
+        if "fatigue_load_limit" in v:
+            out.notes.append(
+                "a_ISO: ISO 281:2007, 9.3.3 (radial "
+                + ("ball" if b.kind == "ball" else "roller")
+                + " bearings, at most 50); L_nm = a_1 a_ISO L10."
+            )
     return out
 
 
-def _modified(op: Operating, b: LifeBasis, a1: float, out: ServiceLife) -> None:
-    """nu_1, kappa, e_C, C_u, a_ISO, the modified lives and the film, into ``out``."""
-    v = out.values
+def missing_fatigue_limit(op: Operating, b: LifeBasis) -> list[str]:
+    """The warning of a case with a viscosity but no C_u (no C_0 to estimate it from)."""
+    if op.viscosity is None or _fatigue_limit(op, b)[0] is not None:
+        return []
+    return [
+        "a_ISO needs the fatigue load limit C_u: give --fatigue-load-limit, or C_0 "
+        "(--static-rating) for ISO 281's estimate"
+    ]
+
+
+def service_columns(op: Operating, b: LifeBasis) -> dict[str, Any]:
+    """The values of every life quantity the given inputs make meaningful, for one case or many.
+
+    The operating conditions and the case's lives, loads and heaviest contact may be arrays
+    over cases (one bearing: ``kind``, C, C_0 and the geometry are shared); a field None is not
+    given for any case. Returns quantity key -> value (a float, or an array over the cases),
+    NaN where a case has no value (a load of 0, no L10r). Each case's values depend on its own
+    inputs only: ``batch`` calls this with arrays, ``solve`` with one case. [units as the keys]
+
+    Raises
+    ------
+    InputError
+        For a viscosity without speed or pitch diameter, or e_C outside 0 to 1.
+    """
+    v: dict[str, Any] = {}
+    if b.C0:
+        v["static_rating"] = float(b.C0)
+    if op.speed is not None:
+        v["speed"] = _arr(op.speed)
+        for key in ("rating_life", "reference_rating_life"):
+            life = getattr(b, key)
+            if life is not None:
+                v[f"{key}_hours"] = ml.life_hours(_arr(life), op.speed)
+    a1: Any = 1.0
+    if op.reliability is not None:
+        a1 = _arr(ml.reliability_factor(op.reliability))
+        v["reliability"] = _arr(op.reliability)
+        v["reliability_factor"] = a1
+    if op.viscosity is not None:
+        _modified(op, b, a1, v)
+    return v
+
+
+def _arr(value: Any) -> Any:
+    """A float or a float array, None (no value) as NaN."""
+    if isinstance(value, list):
+        return np.array([np.nan if x is None else x for x in value], dtype=float)
+    x = np.asarray(np.nan if value is None else value, dtype=float)
+    return float(x) if x.ndim == 0 else x
+
+
+def _modified(op: Operating, b: LifeBasis, a1: Any, v: dict[str, Any]) -> None:
+    """nu_1, kappa, e_C, C_u, a_ISO, the modified lives and the film, into ``v``."""
     if op.speed is None:
         raise InputError("viscosity", "needs the shaft speed ('speed') for the rated viscosity")
     if b.pitch_diameter is None:
         raise InputError("viscosity", "needs the pitch diameter (a bearing or 'pitch_diameter')")
     assert op.viscosity is not None
-    nu1 = float(lub.rated_viscosity(op.speed, b.pitch_diameter))
-    kappa = op.viscosity / nu1
-    used, found = ml.clamp_kappa(kappa)
-    out.warnings += found
-    v |= {"viscosity": op.viscosity, "rated_viscosity": nu1, "kappa": kappa}
-    e_c, e_c_note = _contamination(op, b.pitch_diameter)
-    v["contamination_factor"] = e_c
-    cu, cu_note = _fatigue_limit(op, b)
-    out.notes.append(
-        f"nu_1: ISO 281:2007, 9.3.3, at n = {op.speed:.6g} r/min and D_pw = "
-        f"{b.pitch_diameter:.6g} mm; kappa = nu/nu_1{_used(kappa, float(used))}. {e_c_note} "
-        f"{cu_note}"
-    )
+    nu1 = _arr(lub.rated_viscosity(op.speed, b.pitch_diameter))
+    kappa = _arr(op.viscosity) / nu1
+    used = ml.clamp_kappa(kappa)[0]
+    v |= {"viscosity": _arr(op.viscosity), "rated_viscosity": nu1, "kappa": kappa}
+    v["contamination_factor"] = e_c = _contamination(op, b.pitch_diameter)[0]
     film = _film(op, b)
     if film is not None:
         v["film_thickness"] = film
         if op.roughness is not None:
-            v["roughness"] = op.roughness
-            v["film_ratio"] = film / op.roughness
-        out.notes.append(
-            "Film: minimum film thickness at the heaviest contact (the thinner of inner and "
-            + (
-                "outer), Hamrock-Dowson (1977) point contact"
-                if b.kind == "ball"
-                else "outer), Dowson-Higginson (1977) line contact"
-            )
-            + f", alpha = {op.pressure_viscosity:.3g} 1/Pa, rho = {lub.OIL_DENSITY:g} kg/m^3; "
-            "film ratio = h_min/sigma (--roughness, composite rms): information beside kappa."
-        )
+            v["roughness"] = _arr(op.roughness)
+            v["film_ratio"] = film / v["roughness"]
+    cu = _fatigue_limit(op, b)[0]
     if cu is None:
-        out.warnings.append(
-            "a_ISO needs the fatigue load limit C_u: give --fatigue-load-limit, or C_0 "
-            "(--static-rating) for ISO 281's estimate"
-        )
         return
-    v["fatigue_load_limit"] = cu
+    v["fatigue_load_limit"] = cu = _arr(cu)
     p = life_exponent(b.kind)
     _modified_life(v, "", b.equivalent_load, b.rating_life, used, e_c, cu, a1, b.kind, op)
     if b.reference_rating_life is not None and b.C:
-        p_ref = b.C * b.reference_rating_life ** (-1.0 / p) if b.reference_rating_life else None
-        v["reference_equivalent_load"] = p_ref
-        _modified_life(
-            v, "reference_", p_ref, b.reference_rating_life, used, e_c, cu, a1, b.kind, op
+        l10r = _arr(b.reference_rating_life)
+        with np.errstate(divide="ignore", invalid="ignore"):
+            p_ref = np.where(l10r > 0, b.C * np.where(l10r > 0, l10r, 1.0) ** (-1.0 / p), np.nan)
+        v["reference_equivalent_load"] = _arr(p_ref)
+        _modified_life(v, "reference_", p_ref, l10r, used, e_c, cu, a1, b.kind, op)
+
+
+def _film_note(op: Operating, b: LifeBasis) -> list[str]:
+    return [
+        "Film: minimum film thickness at the heaviest contact (the thinner of inner and "
+        + (
+            "outer), Hamrock-Dowson (1977) point contact"
+            if b.kind == "ball"
+            else "outer), Dowson-Higginson (1977) line contact"
         )
-        out.notes.append(
-            "L_nmr: ISO/TS 16281 modified reference rating life a_1 a_ISO L10r, a_ISO at the "
-            "dynamic equivalent reference load P_ref = C L10r^(-1/p) of the ball loads."
-        )
-    out.notes.append(
-        "a_ISO: ISO 281:2007, 9.3.3 (radial "
-        + ("ball" if b.kind == "ball" else "roller")
-        + " bearings, at most 50); L_nm = a_1 a_ISO L10."
-    )
+        + f", alpha = {op.pressure_viscosity:.3g} 1/Pa, rho = {lub.OIL_DENSITY:g} kg/m^3; "
+        "film ratio = h_min/sigma (--roughness, composite rms): information beside kappa."
+    ]
 
 
 def _used(kappa: float, used: float) -> str:
@@ -180,31 +238,38 @@ def _used(kappa: float, used: float) -> str:
 def _modified_life(
     v: dict[str, Any],
     prefix: str,
-    load: float | None,
-    life: float | None,
-    kappa: float,
-    e_c: float,
-    cu: float,
-    a1: float,
+    load: Any,
+    life: Any,
+    kappa: Any,
+    e_c: Any,
+    cu: Any,
+    a1: Any,
     kind: str,
     op: Operating,
 ) -> None:
-    """a_ISO at ``load`` and a_1 a_ISO ``life`` (and in hours) under ``prefix`` keys."""
-    if load is None or life is None or not load > 0:
+    """a_ISO at ``load`` and a_1 a_ISO ``life`` (and in hours) under ``prefix`` keys; NaN for a
+    case without a load > 0 or a life."""
+    if load is None or life is None:
         return
-    a_iso = float(ml.life_modification_factor(kappa, e_c * cu / load, kind))
-    v[f"a_iso{'_reference' if prefix else ''}"] = a_iso
-    v[f"modified_{prefix}rating_life"] = a1 * a_iso * life
+    p, life = _arr(load), _arr(life)
+    good = np.isfinite(p) & (p > 0) & np.isfinite(life)
+    if not np.any(good):
+        return
+    x = e_c * cu / np.where(good, p, 1.0)
+    a_iso = np.where(good, ml.life_modification_factor(kappa, x, kind), np.nan)
+    v[f"a_iso{'_reference' if prefix else ''}"] = _arr(a_iso)
+    v[f"modified_{prefix}rating_life"] = modified = _arr(a1 * a_iso * life)
     if op.speed is not None:
-        v[f"modified_{prefix}rating_life_hours"] = float(ml.life_hours(a1 * a_iso * life, op.speed))
+        v[f"modified_{prefix}rating_life_hours"] = _arr(ml.life_hours(modified, op.speed))
 
 
-def _contamination(op: Operating, pitch_diameter: float) -> tuple[float, str]:
+def _contamination(op: Operating, pitch_diameter: float) -> tuple[Any, str]:
     """(e_C, a note saying where it comes from)."""
     if op.e_c is not None:
-        if not 0.0 <= op.e_c <= 1.0:
+        e_c = _arr(op.e_c)
+        if not np.all((e_c >= 0.0) & (e_c <= 1.0)):
             raise InputError("eC", f"must lie between 0 and 1; got {op.e_c}")
-        return op.e_c, "e_C: given (--eC)."
+        return e_c, "e_C: given (--eC)."
     level = op.contamination or "normal"
     e_c = float(ml.contamination_factor(level, pitch_diameter))
     low, high = ml.CONTAMINATION_RANGES[level][0 if pitch_diameter < 100 else 1]
@@ -215,7 +280,7 @@ def _contamination(op: Operating, pitch_diameter: float) -> tuple[float, str]:
     )
 
 
-def _fatigue_limit(op: Operating, b: LifeBasis) -> tuple[float | None, str]:
+def _fatigue_limit(op: Operating, b: LifeBasis) -> tuple[Any, str]:
     """(C_u or None, a note saying where it comes from)."""
     if op.fatigue_load_limit is not None:
         return op.fatigue_load_limit, "C_u: given (--fatigue-load-limit)."
@@ -226,14 +291,20 @@ def _fatigue_limit(op: Operating, b: LifeBasis) -> tuple[float | None, str]:
     return cu, f"C_u: ISO 281:2007 Annex B estimate C_0/{div} (no maker's value used)."
 
 
-def _film(op: Operating, b: LifeBasis) -> float | None:
-    """The minimum film thickness at the heaviest contact, or None without its geometry. [mm]"""
+def _film(op: Operating, b: LifeBasis) -> Any:
+    """The minimum film thickness at the heaviest contact (NaN for a case without a loaded
+    element), or None without the geometry. [mm]"""
     geometry = (b.ball_diameter, b.pitch_diameter, b.modulus, b.poisson, b.q_max)
-    if any(g is None for g in geometry) or not (b.q_max and b.q_max > 0):
+    if any(g is None for g in geometry):
         return None
     assert b.ball_diameter is not None and b.pitch_diameter is not None
     assert op.speed is not None and op.viscosity is not None
-    assert b.modulus is not None and b.poisson is not None and b.q_max is not None
+    assert b.modulus is not None and b.poisson is not None
+    q = _arr(b.q_max)
+    loaded = np.isfinite(q) & (q > 0)
+    if not np.any(loaded):
+        return None
+    q = np.where(loaded, q, 1.0)
     u = lub.entraining_speed(op.speed, b.ball_diameter, b.pitch_diameter, b.contact_angle)
     e_prime = lub.reduced_modulus(b.modulus, b.poisson)
     if b.kind == "ball":
@@ -241,19 +312,17 @@ def _film(op: Operating, b: LifeBasis) -> float | None:
             return None
         radii = lub.ball_radii(b.ball_diameter, b.pitch_diameter, b.f_i, b.f_o, b.contact_angle)
         films = [
-            lub.film_point(b.q_max, rx, ry, e_prime, op.viscosity, u, op.pressure_viscosity)
+            lub.film_point(q, rx, ry, e_prime, op.viscosity, u, op.pressure_viscosity)
             for rx, ry in radii
         ]
     else:
         if b.roller_length is None:
             return None
         films = [
-            lub.film_line(
-                b.q_max, b.roller_length, rx, e_prime, op.viscosity, u, op.pressure_viscosity
-            )
+            lub.film_line(q, b.roller_length, rx, e_prime, op.viscosity, u, op.pressure_viscosity)
             for rx in lub.rolling_radii(b.ball_diameter, b.pitch_diameter, b.contact_angle)
         ]
-    return float(min(films))
+    return _arr(np.where(loaded, np.minimum(*films), np.nan))
 
 
 def life_exponent(kind: str) -> float:

@@ -43,8 +43,11 @@ LOAD_PARAMS = ("axial_load", "moment", "moment_cross", "misalignment", "contact_
 TILT_PARAMS = ("tilt_radius",)
 #: The operating conditions of the lives in hours, the modified life and the film
 #: (:class:`bearingload.bearings.service_life.Operating`); they change no load.
-SERVICE_PARAMS = ("static_rating", "speed", "reliability", "viscosity", "contamination", "e_c",
-                  "fatigue_load_limit", "roughness", "pressure_viscosity")  # fmt: skip
+SERVICE_PARAMS = ("static_rating", "speed", "reliability", "viscosity", "oil", "viscosity_40",
+                  "viscosity_100", "temperature", "contamination", "e_c", "fatigue_load_limit",
+                  "roughness", "pressure_viscosity")  # fmt: skip
+#: The options that give the operating viscosity from the oil (instead of --viscosity).
+OIL_PARAMS = ("oil", "viscosity_40", "viscosity_100", "temperature")
 #: The options that feed only the lives.
 LIFE_PARAMS = ("dynamic_rating", "rotating", *SERVICE_PARAMS)
 #: The combined-load options, in the order a refusal names the first one given.
@@ -78,6 +81,35 @@ class Clearance(click.ParamType):
             return parse_clearance(value)
         except InputError as exc:
             self.fail(str(exc).split(": ", 1)[-1], param, ctx)
+
+
+class Temperature(click.ParamType):
+    """A temperature: a bare number or ``C``/``°C`` is degrees Celsius, ``K`` kelvin."""
+
+    name = "TEMPERATURE [°C]"
+
+    def convert(self, value: Any, param: click.Parameter | None, ctx: click.Context | None) -> Any:
+        import re
+
+        if isinstance(value, float):
+            return value
+        match = re.fullmatch(r"\s*([-+]?[0-9.]+(?:e[-+]?\d+)?)\s*(°C|C|degC|K)?\s*", str(value))
+        try:
+            number = float(match.group(1)) if match else float("nan")
+        except ValueError:
+            number = float("nan")
+        if (
+            not -60.0
+            <= (celsius := number - 273.15 if match and match.group(2) == "K" else number)
+            <= 250.0
+        ):
+            self.fail(
+                f"{value!r}: give the operating temperature in °C (70, 70C) or K (343.15K), "
+                "-60 to 250 °C",
+                param,
+                ctx,
+            )
+        return celsius
 
 
 class TiltRadius(click.ParamType):
@@ -283,6 +315,31 @@ DECLARATIONS: dict[str, tuple[tuple[str, ...], dict[str, Any]]] = {
         "temperature): kappa = nu/nu_1, a_ISO and the modified lives of ISO 281 (needs "
         "--speed). Units: mm^2/s, cSt, m^2/s (bare number: mm^2/s).",
     ),
+    "oil": _option(
+        "--oil",
+        help="ISO 3448 grade of the oil (VG2 ... VG3200; VG68 = 68 mm^2/s at 40 °C, +-10 %) "
+        "instead of --viscosity: with --viscosity-100 and --temperature, nu at the operating "
+        "temperature by ASTM D341 (Walther).",
+    ),
+    "viscosity_40": _option(
+        "--viscosity-40",
+        type=Quantity("viscosity", positive=True),
+        help="Kinematic viscosity of the oil at 40 °C (its datasheet's), instead of --oil. "
+        "Units: mm^2/s, cSt, m^2/s (bare number: mm^2/s).",
+    ),
+    "viscosity_100": _option(
+        "--viscosity-100",
+        type=Quantity("viscosity", positive=True),
+        help="Kinematic viscosity of the oil at 100 °C (its datasheet's), with --oil or "
+        "--viscosity-40: ASTM D341 through the two points gives nu at --temperature. Units: "
+        "mm^2/s, cSt, m^2/s (bare number: mm^2/s).",
+    ),
+    "temperature": _option(
+        "--temperature",
+        type=Temperature(),
+        help="Operating temperature of the oil for --oil or --viscosity-40 (bare number or C: "
+        "°C; K: kelvin; -60 to 250 °C).",
+    ),
     "contamination": _option(
         "--contamination",
         type=click.Choice(CONTAMINATION_LEVELS),
@@ -335,6 +392,7 @@ def case_options(
     omit: Collection[str] = (),
     required: Collection[str] = (),
     defaults: Mapping[str, Any] | None = None,
+    hidden: Collection[str] = (),
 ) -> Callable[[Callable[..., Any]], Callable[..., Any]]:
     """Declare the case options on a command and hand it one :class:`CaseOptions` as ``case``.
 
@@ -348,6 +406,8 @@ def case_options(
         Options click requires.
     defaults : mapping, optional
         Defaults other than none (shown in the help), e.g. ``{"load": "1000"}``.
+    hidden : collection of str
+        Options declared but not in the help: the command refuses them, saying why.
     """
     declared = {n: d for n, d in DECLARATIONS.items() if n not in omit}
 
@@ -364,6 +424,8 @@ def case_options(
         for name, (decls, attrs) in reversed(declared.items()):
             if name in (defaults or {}):
                 attrs = attrs | {"default": (defaults or {})[name], "show_default": True}
+            if name in hidden:
+                attrs = attrs | {"hidden": True}
             option = click.option(
                 *decls, name, cls=LibraryOption, required=name in required, **attrs
             )
@@ -415,6 +477,10 @@ class CaseOptions:
     speed: float | None = None
     reliability: float | None = None
     viscosity: float | None = None
+    oil: str | None = None
+    viscosity_40: float | None = None
+    viscosity_100: float | None = None
+    temperature: float | None = None
     contamination: str | None = None
     e_c: float | None = None
     fatigue_load_limit: float | None = None
@@ -462,7 +528,7 @@ class CaseOptions:
     def first_given(self, names: Collection[str]) -> str | None:
         """The option (``--axial-load``) of the first of ``names`` with a value, else None."""
         name = next((n for n in names if getattr(self, n) is not None), None)
-        return None if name is None else "--" + name.replace("_", "-")
+        return None if name is None else DECLARATIONS[name][0][0]
 
     def refuse(self, names: Collection[str], where: str, why: str) -> None:
         """One usage error naming the first of the options ``names`` given, ``where`` it was
@@ -520,15 +586,58 @@ class CaseOptions:
             if self.pressure_viscosity is None
             else {"pressure_viscosity": self.pressure_viscosity * 1e-9}
         )
+        viscosity, note = self.oil_viscosity()
         return Operating(
             speed=self.speed,
             reliability=self.reliability,
-            viscosity=self.viscosity,
+            viscosity=viscosity,
+            viscosity_note=note,
             contamination=self.contamination,
             e_c=self.e_c,
             fatigue_load_limit=self.fatigue_load_limit,
             roughness=self.roughness,
             **alpha,
+        )
+
+    def oil_viscosity(self) -> tuple[float | None, str | None]:
+        """The operating viscosity [mm^2/s]: --viscosity, or that of the oil (--oil or
+        --viscosity-40, --viscosity-100) at --temperature by ASTM D341; and a note saying how."""
+        if self.viscosity is not None:
+            why = "give the viscosity at the operating temperature, or the oil and its temperature"
+            self.refuse(OIL_PARAMS, "--viscosity", why)
+        if all(getattr(self, n) is None for n in OIL_PARAMS):
+            return self.viscosity, None
+        from bearingload.bearings.oil import iso_grade, viscosity_at
+
+        if (self.oil is None) == (self.viscosity_40 is None):
+            raise click.UsageError(
+                "Invalid value for '--oil' / '--viscosity-40': give the oil by its ISO 3448 grade "
+                "(--oil VG68) or by its viscosity at 40 °C (--viscosity-40), one of the two, with "
+                "--viscosity-100 and --temperature"
+            )
+        for name in ("viscosity_100", "temperature"):
+            if getattr(self, name) is None:
+                option = DECLARATIONS[name][0][0]
+                raise click.UsageError(
+                    f"Missing option '{option}': the oil's viscosity at the operating "
+                    "temperature follows (ASTM D341) from its viscosities at 40 and 100 °C; the "
+                    "viscosity at 100 °C is printed on the oil's datasheet"
+                )
+        assert self.viscosity_100 is not None and self.temperature is not None
+        try:
+            nu40 = iso_grade(self.oil) if self.oil is not None else self.viscosity_40
+            assert nu40 is not None
+            nu = float(viscosity_at(nu40, self.viscosity_100, self.temperature))
+        except InputError as exc:
+            raise usage_error(exc) from exc
+        if self.oil is not None:
+            grade = self.oil.upper().replace("ISO", "").replace("VG", "").strip()
+            source = f"ISO VG {grade} (nu_40 = {nu40:g} mm^2/s, the grade's mid-point; +-10 %)"
+        else:
+            source = f"nu_40 = {nu40:g} mm^2/s"
+        return nu, (
+            f"nu = {nu:.4g} mm^2/s at {self.temperature:g} °C: ASTM D341 (Walther, log log(nu + "
+            f"0.7) = A - B log T) through {source} and nu_100 = {self.viscosity_100:g} mm^2/s."
         )
 
     def combined_arguments(self) -> dict[str, Any]:

@@ -222,17 +222,13 @@ def with_ratings(bearings: list[Any], case: CaseOptions) -> list[Any]:
     return [b.with_static_rating(case.static_rating) for b in bearings]
 
 
-def service_lives(case: CaseOptions, bases: list[Any]) -> list[Any] | None:
+def service_lives(case: CaseOptions, bases: list[Any]) -> list[Any]:
     """The lives the case's operating conditions make meaningful, one
-    :class:`bearingload.bearings.service_life.ServiceLife` per basis; None when no option of
-    :data:`bearingload.cli.case_options.SERVICE_PARAMS` is given (the report is then that of the
-    basic lives alone, as batch writes it: C_0, hours, a_ISO and the film are not batch columns
-    yet)."""
+    :class:`bearingload.bearings.service_life.ServiceLife` per basis: C_0 wherever it is known
+    (catalogue or --static-rating), the rest as the options of
+    :data:`bearingload.cli.case_options.SERVICE_PARAMS` given make it meaningful."""
     from bearingload.bearings.service_life import service_values
-    from bearingload.cli.case_options import SERVICE_PARAMS
 
-    if all(getattr(case, n) is None for n in SERVICE_PARAMS):
-        return None
     op = case.operating()
     return [service_values(op, b) for b in bases]
 

@@ -19,9 +19,17 @@ KUROCHKIN_REFUSES = ("bearing", "load", "stiffness", "clearance", "plot", "ball_
                      "pitch_diameter", "inner_conformity", "outer_conformity", "modulus",
                      "poisson", "maker", *COMBINED_PARAMS)  # fmt: skip
 
+#: Why sweep refuses the operating conditions of the modified lives (:data:`SERVICE_PARAMS`
+#: but --speed, which gives L10h and L10rh at every cage position).
+SERVICE_REFUSAL = (
+    "the sweep shows how the ring position, Q_max and L10r (in hours with --speed) ripple over "
+    "one ball pitch; C_0, a_1, a_ISO, the modified lives and the film are those of the case: "
+    "give the same options to 'bearingload solve' (or 'table life' against the clearance)"
+)
+
 
 @click.command(context_settings=CONTEXT)
-@case_options(omit=("cage_angle", *SERVICE_PARAMS))
+@case_options(omit=("cage_angle",), hidden=[n for n in SERVICE_PARAMS if n != "speed"])
 @click.option(
     "--steps",
     "-n",
@@ -104,6 +112,7 @@ def sweep(
         "sweep",
         "an angular-contact bearing is solved by 'solve' only (docs/angular_contact.md)",
     )
+    case.refuse([n for n in SERVICE_PARAMS if n != "speed"], "sweep", SERVICE_REFUSAL)
     if kurochkin_t is not None:
         _kurochkin(case, kurochkin_t, steps, plot, fmt, output)
         return
@@ -142,6 +151,10 @@ def _combined(
 
     b = resolve_bearings(case, case.stiffness_value())[0]
     result = combined_sweep(b, case.radial_load, steps=steps, **case.combined_arguments())
+    if case.speed is not None:
+        import dataclasses
+
+        result = dataclasses.replace(result, speed=case.speed)
     text = combined_sweep_report(result, fmt, bearing_context(b))
     print_warnings(list(result.warnings), False)
     if plot is not None:

@@ -235,6 +235,7 @@ def _service(case: CaseOptions, t: Any) -> list[Any] | None:
     """The lives of every row of a life-against-clearance table (the heaviest ball at the free
     contact angle alpha_0 of the row for the film)."""
     from bearingload.bearings.service_life import LifeBasis
+    from bearingload.cli.case_options import SERVICE_PARAMS
     from bearingload.cli.solve import life_geometry, service_lives
 
     bases = [
@@ -249,4 +250,6 @@ def _service(case: CaseOptions, t: Any) -> list[Any] | None:
         )
         for i in range(t.clearance.size)
     ]
+    if all(getattr(case, n) is None for n in SERVICE_PARAMS):
+        return None  # C_0 feeds no column of this table (no s0): only with a life option
     return service_lives(case, bases)

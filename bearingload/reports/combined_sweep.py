@@ -36,6 +36,7 @@ ROW_KEYS = (
     ("loaded_balls", "loaded"),
     ("contact_angle_max", "alpha_max"),
     ("reference_rating_life", "L10r"),
+    ("reference_rating_life_hours", "L10rh"),
 )
 #: The cage-independent figures (csv: trailing constant columns; json: in the summary).
 FIXED_KEYS = (
@@ -88,6 +89,8 @@ def _row_keys(s: CombinedSweep) -> list[tuple[str, str]]:
     skip = {"moment"} if s.misalignment is None else set()
     if s.reference_rating_life is None:
         skip.add("reference_rating_life")
+    if s.reference_rating_life is None or s.speed is None:
+        skip.add("reference_rating_life_hours")
     return [(k, h) for k, h in ROW_KEYS if k not in skip]
 
 
@@ -105,7 +108,7 @@ def fixed(s: CombinedSweep) -> dict[str, Any]:
         "dynamic_rating": s.dynamic_rating,
         "equivalent_load": s.equivalent_load,
         "rating_life": s.rating_life,
-    }
+    } | ({} if s.speed is None else {"speed": s.speed, "rating_life_hours": s.hours(s.rating_life)})
 
 
 def rows(s: CombinedSweep) -> list[dict[str, Any]]:

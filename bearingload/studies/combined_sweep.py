@@ -37,6 +37,7 @@ SPREAD_KEYS = (
     "loaded_balls",
     "contact_angle_max",
     "reference_rating_life",
+    "reference_rating_life_hours",
 )
 #: Two ball loads within this relative difference are equal when naming the heaviest ball. [-]
 TIE = 1e-9
@@ -76,6 +77,8 @@ class CombinedSweep:
         The moment applied about the load line; None: not given. [N mm]
     tilt_radius : float or None
         The lever of the tilt given; None: the solver's R_i (``groove``). [mm]
+    speed : float or None
+        Shaft speed n for the lives in hours, L 10^6/(60 n); None: not given. [r/min]
     """
 
     bearing: ResolvedBearing
@@ -91,6 +94,7 @@ class CombinedSweep:
     warnings: tuple[str, ...] = ()
     moment_cross: float | None = None
     tilt_radius: float | None = None
+    speed: float | None = None
 
     @property
     def balls(self) -> int:
@@ -121,11 +125,20 @@ class CombinedSweep:
             "loaded_balls": r.loaded_balls,
             "contact_angle_max": self.contact_angle_max,
             "reference_rating_life": self.reference_rating_life,
+            "reference_rating_life_hours": self.hours(self.reference_rating_life),
         }
         if key not in table:
             raise InputError("name", f"must be one of {', '.join(SPREAD_KEYS)}")
         v = table[key]
         return None if v is None else np.asarray(v)
+
+    def hours(self, life: Any) -> Any:
+        """``life`` [10^6 rev] in hours at :attr:`speed` (None without a speed or a life). [h]"""
+        if self.speed is None or life is None:
+            return None
+        from bearingload.bearings.modified_life import life_hours
+
+        return life_hours(life, self.speed)
 
     def spread(self, key: str) -> Spread | None:
         """Min, mean, max and peak-to-peak of ``key`` over the pitch (None if not given).
