@@ -419,3 +419,11 @@ def test_study_command(capsys):
     assert "kurochkin1973-differences" in out and "Examples:" in out
     code, _, err = run_entry(capsys, "study", "nope")
     assert code == 2 and err.startswith("Error: Invalid value for 'NAME'") and err.count("\n") == 1
+
+
+def test_one_listed_file_is_said_in_the_singular(tmp_path):
+    """'1 listed files of DIR agree with their commands' read wrongly; one file is singular."""
+    d = tmp_path / "one"
+    assert invoke("tables", "add", str(d), "--", "table", "k", "--z-max", "5").exit_code == 0
+    out = invoke("tables", "check", str(d)).output
+    assert out == f"1 listed file of {d} agrees with its command\n"

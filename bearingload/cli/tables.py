@@ -228,7 +228,13 @@ def check(ctx: click.Context, directory: str, rtol: float, atol: float) -> None:
     manifest, produce = _checked(directory)
     states = compare_folder(manifest, regenerate(manifest, produce), rtol, atol)
     if all(s.state == "agrees" for s in states):
-        click.echo(f"{len(states)} listed files of {directory} agree with their commands")
+        n = len(states)
+        said = (
+            "file of {} agrees with its command"
+            if n == 1
+            else "files of {} agree with their commands"
+        )
+        click.echo(f"{n} listed {said.format(directory)}")
         return
     click.echo(check_report(directory, states), nl=False)
     ctx.exit(1)
