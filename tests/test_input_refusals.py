@@ -123,3 +123,17 @@ def test_an_internal_error_is_one_line_and_exit_status_3(capsys, monkeypatch):
         "Error: internal error (RuntimeError: boom); please report it with the command line "
         "that caused it"
     ]
+
+
+@pytest.mark.parametrize(
+    ("args", "names"),
+    [(["study"], "'NAME'. Choose from: kurochkin1973-differences, kurochkin1973-example1"),
+     (["table"], "Choose from: k, kq, life")],
+)  # fmt: skip
+def test_a_missing_choice_argument_is_one_error_line(capsys, args, names):
+    """click words a missing argument with choices over several lines ('Choose from:' then one
+    tab-indented line per choice): 'bearingload study' printed six lines."""
+    code, out, err = run_entry(capsys, *args)
+    assert (code, out) == (2, "")
+    assert err.count("\n") == 1 and err.startswith("Error: Missing argument "), err
+    assert names in err
