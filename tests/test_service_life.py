@@ -356,6 +356,8 @@ def test_static_rating_option_sets_c0_and_the_static_safety():
     [
         (["--speed", "1e9"], "'--speed': a bare 1e9"),
         (["--speed", "0"], "'--speed': must be greater than 0"),
+        (["--speed", "1e-310"], "'--speed': is so small that the life in hours"),
+        (["--speed", "1e-320", "--viscosity", "20"], "'--speed': is so small that the life"),
         (["--speed", "3000", "--viscosity", "0"], "'--viscosity': must be greater than 0"),
         (["--speed", "3000", "--viscosity", "-5cSt"], "'--viscosity': must be greater than 0"),
         (["--viscosity", "20"], "'--viscosity': needs the shaft speed (--speed)"),

@@ -123,7 +123,11 @@ def life_hours(revolutions: ArrayLike, speed: ArrayLike) -> Any:
     """
     n = finite_positive("speed", speed)
     life = np.asarray(revolutions, dtype=float)
-    return scalar_out(life * 1e6 / (60.0 * n))
+    with np.errstate(over="ignore"):
+        hours = life * 1e6 / (60.0 * n)
+    if np.any(np.isinf(hours) & np.isfinite(life)):
+        raise InputError("speed", "is so small that the life in hours L 10^6/(60 n) overflows")
+    return scalar_out(hours)
 
 
 def reliability_factor(reliability: ArrayLike) -> Any:
