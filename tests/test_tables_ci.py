@@ -423,3 +423,23 @@ def test_study_command(capsys):
     assert "kurochkin1973-differences" in out and "Examples:" in out
     code, _, err = run_entry(capsys, "study", "nope")
     assert code == 2 and err.startswith("Error: Invalid value for 'NAME'") and err.count("\n") == 1
+
+
+def test_files_with_crlf_line_ends_agree_and_a_moved_cell_is_still_found(tmp_path, capsys):
+    """A checkout with CR LF line ends (git's core.autocrlf on Windows runners): csv and json
+    agreed, each Markdown table reported every line ending in CR as a differing text line
+    ('committed "", regenerated ""'). Line ends are not cells, in every format."""
+    d = folder(tmp_path, f"{K306}.csv", f"{K306}.md")
+    for name in (f"{K306}.csv", f"{K306}.md"):
+        path = d / name
+        path.write_bytes(path.read_bytes().replace(b"\n", b"\r\n"))
+    code, out, err = run_entry(capsys, "tables", "check", str(d))
+    assert (code, err) == (0, ""), out
+    md = d / f"{K306}.md"
+    text = md.read_bytes().decode("utf-8")
+    first = next(line for line in text.split("\r\n") if line.startswith("|  "))
+    cells = first.split("|")
+    cells[-2] = cells[-2].replace(cells[-2].strip(), "9.999")
+    md.write_bytes(text.replace(first, "|".join(cells), 1).encode("utf-8"))
+    code, out, _ = run_entry(capsys, "tables", "check", str(d))
+    assert code == 1 and "1 cell differs" in out and "9.999" in out, out
