@@ -351,3 +351,19 @@ def test_a_rotating_cell_solve_refuses_is_a_skipped_row():
     assert lines[0].startswith("Warning: row 2: rotating: it names the rotating ring")
     assert "ball bearings only" in lines[0]
     assert lines[1].startswith("Warning: row 3: rotating: ") and "give dynamic_rating" in lines[1]
+
+
+def test_a_lever_far_from_the_pitch_radius_is_warned_on_its_own_row():
+    """A tilt_radius cell far from d_m/2 (a unit slip) ended the whole batch: 'Error: internal
+    error (TypeError: unsupported format string passed to numpy.ndarray.__format__)', exit 3:
+    the lever warning was given the array of the group's levers. Each row is warned as solve
+    warns its case, the rows between are not."""
+    text = "bearing,load,axial_load,tilt_radius\n6205,1kN,300N,1e9\n6205,1kN,300N,20\n6205,1kN,300N,5\n"
+    out = CliRunner().invoke(main, ["batch", "-", "--format", "csv"], input=text)
+    assert out.exit_code == 0, out.output
+    warned = [ln for ln in out.stderr.splitlines() if "tilt lever" in ln]
+    assert [ln.split(": ")[1] for ln in warned] == ["row 2", "row 4"], warned
+    solve = CliRunner().invoke(main, ["solve", "6205", "-F", "1kN", "-A", "300N",
+                                      "--tilt-radius", "1e9"])  # fmt: skip
+    assert warned[0].removeprefix("Warning: row 2: ") in solve.stderr
+    assert len(out.stdout.splitlines()) == 4

@@ -5,6 +5,7 @@ from __future__ import annotations
 
 import json
 
+import numpy as np
 import pytest
 from click.testing import CliRunner
 
@@ -128,3 +129,22 @@ def test_sweep_warns_when_one_ball_carries_the_load(capsys):
         capsys, "sweep", "-z", "9", "-F", "1kN", "-K", "1e5", "-G", "0.9mm", "-n", "3"
     )
     assert code == 0 and "Warning: only one ball carries the load at 2 of 3 cage angles" in err
+
+
+@pytest.mark.parametrize("balls", [20, 100, 1000])
+def test_a_cross_moment_at_zero_clearance_is_solved(balls):
+    """At G_r = 0 the balls at +-90° from the load line touch with zero approach. The line
+    search, after a first trial too long, moved 'just past the first contact along the step'
+    and took those balls for not in contact yet: a fraction 0, halved 60 times, so the case
+    stopped where it started: 'did not converge after 0 iterations (relative residual 1)'
+    (z = 20, F_r = 1 N, M_c = 1.5 N m; 100 to 1000 balls at F_r = 1 and 10 N)."""
+    r = solve_combined(balls, 1.0, 0.0, moment_cross=1500.0, clearance=0.0, **GEOMETRY)
+    loads, angles = np.asarray(r.ball_loads), np.deg2rad(np.asarray(r.contact_angles))
+    phi = np.deg2rad(np.asarray(r.ball_angles))
+    lever = float(r.tilt_radius)
+    assert np.sum(loads * np.cos(angles) * np.cos(phi)) == pytest.approx(1.0, rel=1e-9)
+    assert np.sum(loads * np.sin(angles) * lever * np.sin(phi)) == pytest.approx(1500.0, rel=1e-9)
+    # the cross moment tilts the ring about the load line; at this clearance the balls lift off
+    # the same way at a slightly larger one
+    near = solve_combined(balls, 1.0, 0.0, moment_cross=1500.0, clearance=1e-9, **GEOMETRY)
+    assert float(r.tilt_cross) == pytest.approx(float(near.tilt_cross), rel=1e-3)

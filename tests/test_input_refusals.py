@@ -10,7 +10,7 @@ import pytest
 from bearingload import InputError, ring_forces, solve
 from bearingload.models.combined import solve_combined
 
-from .cli_helpers import run_entry
+from .cli_helpers import run_entry, run_process
 
 GEOMETRY = {"ball_diameter": 7.938, "pitch_diameter": 38.5}
 
@@ -123,3 +123,40 @@ def test_an_internal_error_is_one_line_and_exit_status_3(capsys, monkeypatch):
         "Error: internal error (RuntimeError: boom); please report it with the command line "
         "that caused it"
     ]
+
+
+@pytest.mark.parametrize(
+    ("args", "names"),
+    [(["study"], "'NAME'. Choose from: kurochkin1973-differences, kurochkin1973-example1"),
+     (["table"], "Choose from: k, kq, life")],
+)  # fmt: skip
+def test_a_missing_choice_argument_is_one_error_line(capsys, args, names):
+    """click words a missing argument with choices over several lines ('Choose from:' then one
+    tab-indented line per choice): 'bearingload study' printed six lines."""
+    code, out, err = run_entry(capsys, *args)
+    assert (code, out) == (2, "")
+    assert err.count("\n") == 1 and err.startswith("Error: Missing argument "), err
+    assert names in err
+
+
+@pytest.mark.parametrize(
+    ("args", "message"),
+    [
+        (["16005", "-F", "1kN", "--misalignment", "1e-9", "--modulus", "1e-300Pa"],
+         "Invalid value for '--load': the loads and the ball stiffness give a one-ball approach"),
+        (["16005", "-F", "0", "-A", "1kN", "--modulus", "1e-300Pa"],
+         "Invalid value for '--load': the loads and the ball stiffness give a one-ball approach"),
+        (["16005", "-F", "1kN", "--moment-cross", "1e30", "--tilt-radius", "1e-300"],
+         "Invalid value for '--moment-cross': over the tilt lever (tilt_radius) it is a force"),
+        (["6205", "-F", "1kN", "--moment", "0", "--tilt-radius", "1e300"],
+         "Invalid value for '--tilt-radius': is so large that the tilting stiffness"),
+    ],
+)  # fmt: skip
+def test_combined_inputs_beyond_the_numbers_are_one_error_line(args, message):
+    """Absurd but accepted values (a modulus of 1e-300 Pa, a lever of 1e-300 or 1e300 mm) gave
+    numpy's 'RuntimeWarning: overflow encountered in divide' before the error, 'did not converge
+    after 0 iterations (relative residual nan)' (exit 1), or 'internal error (OverflowError:
+    cannot convert float infinity to integer)' (exit 3: an infinite tilting stiffness)."""
+    done = run_process("solve", *args)  # a fresh interpreter shows numpy's warnings
+    assert (done.returncode, done.stdout) == (2, ""), done.stderr
+    assert done.stderr.count("\n") == 1 and done.stderr.startswith(f"Error: {message}"), done.stderr

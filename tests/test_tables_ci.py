@@ -195,6 +195,10 @@ def test_json_cells_are_named_by_row_and_key(tmp_path):
          "manifest.toml, entry 1 (\"x.csv\"): --output writes a file"),
         ('[[table]]\nfile = "x.csv"\ncommand = "accuracy --no-timing --plot a.png"\n',
          "manifest.toml, entry 1 (\"x.csv\"): --plot writes a file"),
+        ('[[table]]\nfile = "x.csv"\ncommand = "solve -z 8 -F 1kN -K 1e5 --plot p.png"\n',
+         "manifest.toml, entry 1 (\"x.csv\"): --plot writes a file"),
+        ('[[table]]\nfile = "x.csv"\ncommand = "sweep -z 8 -F 1kN -K 1e5 --steps 3 --plot p.png"\n',
+         "manifest.toml, entry 1 (\"x.csv\"): --plot writes a file"),
         ('[[table]]\nfile = "x.csv"\ncommand = "table k --help"\n',
          "manifest.toml, entry 1 (\"x.csv\"): the command prints help or a version"),
         ('[[table]]\nfile = "x.csv"\ncommand = "table life -b 6205"\n',
@@ -427,3 +431,23 @@ def test_one_listed_file_is_said_in_the_singular(tmp_path):
     assert invoke("tables", "add", str(d), "--", "table", "k", "--z-max", "5").exit_code == 0
     out = invoke("tables", "check", str(d)).output
     assert out == f"1 listed file of {d} agrees with its command\n"
+
+
+def test_files_with_crlf_line_ends_agree_and_a_moved_cell_is_still_found(tmp_path, capsys):
+    """A checkout with CR LF line ends (git's core.autocrlf on Windows runners): csv and json
+    agreed, each Markdown table reported every line ending in CR as a differing text line
+    ('committed "", regenerated ""'). Line ends are not cells, in every format."""
+    d = folder(tmp_path, f"{K306}.csv", f"{K306}.md")
+    for name in (f"{K306}.csv", f"{K306}.md"):
+        path = d / name
+        path.write_bytes(path.read_bytes().replace(b"\n", b"\r\n"))
+    code, out, err = run_entry(capsys, "tables", "check", str(d))
+    assert (code, err) == (0, ""), out
+    md = d / f"{K306}.md"
+    text = md.read_bytes().decode("utf-8")
+    first = next(line for line in text.split("\r\n") if line.startswith("|  "))
+    cells = first.split("|")
+    cells[-2] = cells[-2].replace(cells[-2].strip(), "9.999")
+    md.write_bytes(text.replace(first, "|".join(cells), 1).encode("utf-8"))
+    code, out, _ = run_entry(capsys, "tables", "check", str(d))
+    assert code == 1 and "1 cell differs" in out and "9.999" in out, out

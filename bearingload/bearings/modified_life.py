@@ -25,7 +25,8 @@ ISO 281:2007, *Rolling bearings - Dynamic load ratings and rating life*:
 
   with ``a_ISO <= 50`` (the standard's limit; also where the bracket reaches 0), kappa > 4 taken
   as 4; kappa < 0.1 is outside the standard (this module takes 0.1 and the caller says so).
-  The branches meet at kappa = 0.4 and 1 to the printed digits (within 0.1 %).
+  The branches meet at kappa = 1 exactly and at 0.4 to the printed digits: within 0.1 % up to
+  e_C C_u/P = 1, 0.3 % where a_ISO reaches its limit (balls; rollers 4e-5).
 * Contamination factor e_C, Table 13, by level and pitch diameter D_pw (< 100 mm, >= 100 mm).
   The standard gives ranges for the intermediate levels; this module takes the middle of the range
   (:data:`CONTAMINATION`); give e_C itself where it is known better.
@@ -123,7 +124,11 @@ def life_hours(revolutions: ArrayLike, speed: ArrayLike) -> Any:
     """
     n = finite_positive("speed", speed)
     life = np.asarray(revolutions, dtype=float)
-    return scalar_out(life * 1e6 / (60.0 * n))
+    with np.errstate(over="ignore"):
+        hours = life * 1e6 / (60.0 * n)
+    if np.any(np.isinf(hours) & np.isfinite(life)):
+        raise InputError("speed", "is so small that the life in hours L 10^6/(60 n) overflows")
+    return scalar_out(hours)
 
 
 def reliability_factor(reliability: ArrayLike) -> Any:

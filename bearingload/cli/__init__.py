@@ -108,7 +108,9 @@ def run(argv: list[str] | None = None) -> None:
     except click.exceptions.Exit as exc:
         sys.exit(exc.exit_code)
     except click.ClickException as exc:
-        click.echo(f"Error: {exc.format_message()}", err=True)
+        # one line: click lists the choices of a missing argument on lines of their own
+        message = " ".join(exc.format_message().replace("\n\t", " ").splitlines())
+        click.echo(f"Error: {message}", err=True)
         sys.exit(exc.exit_code)
     except click.exceptions.Abort:
         click.echo("Error: aborted", err=True)

@@ -123,7 +123,10 @@ def check_entry(root: click.Group, manifest: Manifest, entry: Entry) -> None:
         shown = param.opts[-1] if isinstance(param, click.Option) else str(param.name)
         if param.name == "fmt":
             raise refuse(f"{shown} in the command: the entry's 'format' names the format")
-        if isinstance(param.type, click.Path) and param.type.writable:
+        # a path given to an option is a file the command writes (-o, --plot; solve's and
+        # sweep's --plot are not marked writable): the folder would change under 'check'
+        kind = param.type
+        if isinstance(kind, click.Path) and (isinstance(param, click.Option) or kind.writable):
             raise refuse(f"{shown} writes a file: the entry's 'file' names the one it makes")
 
 

@@ -692,7 +692,7 @@ def _first_contact(q: Problem, cur: Balls, lo: Loads, step: np.ndarray) -> np.nd
     du = step[:, AX, None] + step[:, T, None] * q.c + step[:, TC, None] * q.s
     rate = lo.ca * dr + lo.sa * du  # d(delta_j)/dt
     with np.errstate(divide="ignore", invalid="ignore"):
-        reach = np.where((rate > 0) & (delta <= 0), -delta / rate, np.inf)
+        reach = np.where((rate > 0) & (delta < 0), -delta / rate, np.inf)
     return np.minimum(1.001 * np.min(reach, axis=1), 1.0)
 
 

@@ -565,7 +565,7 @@ def solve_combined(
         curve = _StiffnessCurve(values)
     else:
         k_ref = flat[14]
-    f_ref = np.maximum(np.maximum(fr, np.abs(fa)), np.hypot(mm, mc) / geo.R_i)
+    f_ref = _reference_force(fr, fa, mm, mc, geo.R_i)
     if np.any(f_ref <= 0):
         raise InputError("radial_load", "give a radial load, an axial load or a moment")
     _check_scale(f_ref, k_ref, geo.A)
@@ -699,10 +699,32 @@ def _check_few_balls(
 GEOMETRY_RATIO_MAX = 2e7
 
 
+def _reference_force(
+    fr: np.ndarray, fa: np.ndarray, mm: np.ndarray, mc: np.ndarray, lever: np.ndarray
+) -> np.ndarray:
+    """The largest of F_r, |F_a| and the moments over the tilt lever, per case. [N]"""
+    with np.errstate(over="ignore"):  # a moment over a lever of 1e-300 mm: refused
+        f_ref = np.maximum(np.maximum(fr, np.abs(fa)), np.hypot(mm, mc) / lever)
+    if not np.all(np.isfinite(f_ref)):
+        raise InputError(
+            "moment" if np.any(mm) else "moment_cross",
+            "over the tilt lever (tilt_radius) it is a force beyond the largest number",
+        )
+    return f_ref
+
+
 def _check_scale(f_ref: np.ndarray, k_ref: np.ndarray, big_a: np.ndarray) -> None:
     """Refuse loads so small against the groove geometry that the scaled problem loses its
     digits (the radial solver, without an axial load, takes any ratio)."""
-    scale = (f_ref / k_ref) ** (2.0 / 3.0)
+    with np.errstate(over="ignore", divide="ignore"):
+        scale = (f_ref / k_ref) ** (2.0 / 3.0)
+    if not np.all(scale <= 1e100):  # the radial engine's bound of the one-ball approach
+        raise InputError(
+            "radial_load",
+            f"the loads and the ball stiffness give a one-ball approach (F/K)^(2/3) = "
+            f"{float(np.max(scale)):.3g} mm, beyond 1e100 mm; check the units of the loads, "
+            "the modulus and the tilt lever",
+        )
     bad = np.broadcast_to(big_a, scale.shape) / scale > GEOMETRY_RATIO_MAX
     if np.any(bad):
         f_min = float(
@@ -1029,6 +1051,10 @@ def _tangent(p: Problem, geo: _Geometry, point: _ring.Point, kappa: np.ndarray,
     along, across = np.array([0, 2, 3]), np.array([1, 4])
     t[np.ix_(mirrored, along, across)] = 0.0
     t[np.ix_(mirrored, across, along)] = 0.0
+    if not np.all(np.isfinite(t)):  # a lever of 1e300 mm: its square times K overflows
+        raise InputError(
+            "tilt_radius", "is so large that the tilting stiffness (lever^2 K) overflows"
+        )
     return t
 
 

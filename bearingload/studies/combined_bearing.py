@@ -159,9 +159,10 @@ def _combined_case(
     checks = tuple(tuple(combined_warnings(b, fr[i], fa[i], q[i], int(loaded[i]), warned[i], inner[i]))
                    for i in range(len(q)))  # fmt: skip
     s0 = [None if p is None else static_safety(b.C0, p) for p in p0]
-    said = lever_warning(lever, b.pitch_diameter)  # (None for groove and pitch)
-    if said:
-        checks = tuple(c + (said,) for c in checks)
+    # each case's own lever (a batch gives one per row; None for groove and pitch)
+    levers = [None] * len(q) if lever is None else each(lever)
+    said = [lever_warning(x, b.pitch_diameter) for x in levers]
+    checks = tuple(c + (w,) if w else c for c, w in zip(checks, said, strict=True))
     lever = numerics.scalar_out(r.tilt_radius)  # the lever used: given, or R_i
     if shape == ():
         p_eq = None if p_eq is None else float(p_eq)

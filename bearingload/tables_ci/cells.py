@@ -113,7 +113,7 @@ def _markdown_blocks(text: str) -> list[tuple[int, Any]]:
     """The blocks of a Markdown text: ``(line, str)`` for a text line, ``(line, grid)`` for a pipe
     table (its header and body cells, the rule left out)."""
     blocks: list[tuple[int, Any]] = []
-    lines = text.split("\n")
+    lines = text.replace("\r\n", "\n").split("\n")  # (CR LF: a checkout's line ends)
     i = 0
     while i < len(lines):
         if not lines[i].lstrip().startswith("|"):
