@@ -67,7 +67,10 @@ def test_a1_is_iso_281_table_12_at_every_listed_reliability():
 
 def test_a1_between_rows_is_the_weibull_law_the_table_rounds():
     """0.95 (ln(100/R)/ln(100/90))^(2/3) + 0.05, in mpmath, rounds to every printed entry (two
-    significant digits) and is what is used between the rows."""
+    significant digits); between the rows a_1 is that law scaled to meet the table at both rows:
+    within the table's rounding of the law, continuous at every row and falling as R rises
+    (the law as it was between the rows jumped at each: a_1(94.9999) = 0.6379 < a_1(95) =
+    0.64)."""
 
     def weibull(r):
         r = mp.mpf(r)
@@ -76,8 +79,15 @@ def test_a1_between_rows_is_the_weibull_law_the_table_rounds():
     for r, a1 in ISO281_TABLE12.items():
         assert abs(float(weibull(r)) - a1) <= 0.5 * 10 ** (np.floor(np.log10(a1)) - 1) + 1e-12
     for r in (91.0, 93.5, 99.5, 99.93):
-        assert abs(float(ml.reliability_factor(r)) - float(weibull(r))) < 1e-14
-    grid = np.linspace(90, 99.95, 400)
+        a1 = float(ml.reliability_factor(r))
+        assert abs(a1 - float(weibull(r))) <= 0.5 * 10 ** (np.floor(np.log10(a1)) - 1)
+    for r, a1 in ISO281_TABLE12.items():
+        for side in (-1e-7, 1e-7):
+            if 90.0 <= r + side <= 99.95:
+                assert float(ml.reliability_factor(r + side)) == pytest.approx(a1, rel=1e-6)
+    rows = np.array(list(ISO281_TABLE12))
+    grid = np.unique(np.concatenate([np.linspace(90, 99.95, 4001), rows, rows - 1e-4]))
+    grid = grid[(grid >= 90) & (grid <= 99.95)]
     assert np.all(np.diff(ml.reliability_factor(grid)) < 0)  # falls as R rises
 
 
@@ -475,3 +485,53 @@ def test_pressure_viscosity_option_is_read_in_inverse_gigapascal():
     assert doubled / base == pytest.approx(2**0.49, rel=1e-9)
     same = _json(*args, "--pressure-viscosity", "22")["cases"][0]["film_thickness"]
     assert same == base
+
+
+@pytest.mark.parametrize(
+    "option",
+    [
+        ("--roughness", "0.1um"),
+        ("--eC", "0.5"),
+        ("--contamination", "high"),
+        ("--fatigue-load-limit", "300N"),
+    ],  # fmt: skip
+)
+def test_an_input_of_the_modified_life_without_a_viscosity_is_refused(capsys, option):
+    """--roughness, --eC, --contamination and --fatigue-load-limit feed only a_ISO and the film,
+    which need --viscosity; without it they were silently ignored (found by the review)."""
+    code, out, err = run_entry(capsys, "solve", "6205", "-F", "1kN", "--speed", "3000", *option)
+    lines = [ln for ln in err.splitlines() if ln.strip()]
+    assert code == 2 and out == "" and len(lines) == 1
+    assert (
+        lines[0].startswith(f"Error: Invalid value for '{option[0]}'") and "viscosity" in lines[0]
+    )
+
+
+def test_a_contamination_level_and_ec_together_are_refused(capsys):
+    """Both give e_C; --eC silently won (found by the review)."""
+    code, out, err = run_entry(capsys, "solve", "6205", "-F", "1kN", "--speed", "3000",
+                               "--viscosity", "20", "--eC", "0.5", "--contamination", "high")  # fmt: skip
+    assert code == 2 and "not both" in err and len(err.strip().splitlines()) == 1
+
+
+def test_a_roughness_beyond_any_surface_is_refused(capsys):
+    """--roughness 1e-310mm overflowed the film ratio to infinity (the review's find: the table
+    renderer then crashed); a composite rms roughness is taken from 0.1 nm to 100 um."""
+    code, out, err = run_entry(capsys, "solve", "6205", "-F", "1kN", "--speed", "3000",
+                               "--viscosity", "20", "--roughness", "1e-310mm")  # fmt: skip
+    assert code == 2 and err.startswith("Error: Invalid value for '--roughness': must lie between")
+
+
+def test_an_infinite_value_is_rendered_not_a_crash():
+    from bearingload.reports.render import Column, Table, render
+
+    text = render([Table("t", [Column("s", "s0", "-", 4)], [{"s": float("inf")}])], "table")
+    assert "inf" in text
+
+
+@pytest.mark.parametrize("option", ["--static-rating", "--dynamic-rating"])
+def test_a_rating_beyond_any_bearing_is_refused(capsys, option):
+    """--static-rating 1e300 with a tiny load overflowed s0 to infinity and ended in an internal
+    error in --format json (the review's find); a rating above 1e9 N is refused."""
+    code, out, err = run_entry(capsys, "solve", "6205", "-F", "1e-12", option, "1e300")
+    assert code == 2 and err.startswith(f"Error: Invalid value for '{option}': must lie between")

@@ -141,7 +141,9 @@ def reliability_factor(reliability: ArrayLike) -> Any:
 
     Returns
     -------
-    a_1: the table's value at a listed R, else 0.95 (ln(100/R)/ln(100/90))^(2/3) + 0.05.
+    a_1: the table's value at a listed R; between two listed rows the Weibull law the table
+    rounds, 0.95 (ln(100/R)/ln(100/90))^(2/3) + 0.05, times a factor interpolated linearly
+    between the table-over-law ratios of the two rows (continuous, falling, exact at the rows).
 
     Raises
     ------
@@ -151,7 +153,7 @@ def reliability_factor(reliability: ArrayLike) -> Any:
     >>> float(reliability_factor(90)), float(reliability_factor(99.95))
     (1.0, 0.077)
     >>> round(float(reliability_factor(93.0)), 4)
-    0.7909
+    0.7925
     """
     r = np.asarray(reliability, dtype=float)
     good = np.isfinite(r) & (r >= 90.0) & (r <= 99.95)
@@ -160,12 +162,20 @@ def reliability_factor(reliability: ArrayLike) -> Any:
         raise InputError(
             "reliability", f"must lie between 90 and 99.95 % (ISO 281 Table 12); got {worst:g}"
         )
-    weibull = 0.95 * (np.log(100.0 / r) / np.log(100.0 / 90.0)) ** (2.0 / 3.0) + 0.05
     listed = np.array(list(RELIABILITY_TABLE))
     values = np.array(list(RELIABILITY_TABLE.values()))
-    hit = np.isclose(r[..., None], listed, rtol=0.0, atol=1e-9)
-    table = np.where(hit.any(axis=-1), (hit * values).sum(axis=-1), weibull)
-    return scalar_out(np.asarray(table, dtype=float))
+    # the Weibull law, scaled between two listed rows so that it meets the table at both: the
+    # printed values are the law rounded, and taking the law as it is between them would jump
+    # at each row (a_1(94.9999) = 0.6379 < a_1(95) = 0.64)
+    between = _weibull(r) * np.interp(r, listed, values / _weibull(listed))
+    exact = np.interp(r, listed, values)  # (equal to the table at a row, to the last bit)
+    at_row = np.isin(r, listed)
+    return scalar_out(np.asarray(np.where(at_row, exact, between), dtype=float))
+
+
+def _weibull(r: np.ndarray) -> np.ndarray:
+    """0.95 (ln(100/R)/ln(100/90))^(2/3) + 0.05, the law ISO 281's Table 12 rounds. [-]"""
+    return 0.95 * (np.log(100.0 / r) / np.log(100.0 / 90.0)) ** (2.0 / 3.0) + 0.05
 
 
 def contamination_factor(level: str, pitch_diameter: ArrayLike) -> Any:

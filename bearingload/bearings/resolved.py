@@ -139,6 +139,7 @@ class ResolvedBearing:
 
     def with_dynamic_rating(self, rating: float) -> ResolvedBearing:
         """The same bearing with its basic dynamic load rating C replaced by a given one. [N]"""
+        _check_rating("dynamic_rating", rating)
         given = Provenance("C", "dynamic load rating C", rating, "N", "given")
         prov = tuple(given if p.key == "C" else p for p in self.provenance)
         if given not in prov:
@@ -148,11 +149,22 @@ class ResolvedBearing:
     def with_static_rating(self, rating: float) -> ResolvedBearing:
         """The same bearing with its basic static load rating C0 replaced by a given one (the
         static safety and ISO 281's C_u estimate use it; no ball load changes). [N]"""
+        _check_rating("static_rating", rating)
         given = Provenance("C0", "static load rating C0", rating, "N", "given")
         prov = tuple(given if p.key == "C0" else p for p in self.provenance)
         if given not in prov:
             prov += (given,)
         return dataclasses.replace(self, C0=rating, provenance=prov)
+
+
+#: The largest load rating taken: beyond those of the largest slewing bearings made (about 1e8
+#: N); a larger number is a unit slip, and a ratio of it would overflow. [N]
+RATING_MAX = 1e9
+
+
+def _check_rating(name: str, rating: float) -> None:
+    if not 0.0 < rating <= RATING_MAX:
+        raise InputError(name, f"must lie between 0 and {RATING_MAX:g} N (got {rating:g} N)")
 
 
 def _class_source(b: ResolvedBearing, pick: str) -> str:

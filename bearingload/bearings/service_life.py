@@ -159,6 +159,7 @@ def service_columns(op: Operating, b: LifeBasis) -> dict[str, Any]:
     InputError
         For a viscosity without speed or pitch diameter, or e_C outside 0 to 1.
     """
+    _check_needs(op)
     v: dict[str, Any] = {}
     if b.C0:
         v["static_rating"] = float(b.C0)
@@ -176,6 +177,36 @@ def service_columns(op: Operating, b: LifeBasis) -> dict[str, Any]:
     if op.viscosity is not None:
         _modified(op, b, a1, v)
     return v
+
+
+#: The composite rms roughness taken: from below an atom's size to a rough turned surface. [mm]
+ROUGHNESS = (1e-7, 0.1)
+#: Inputs that feed only the modified life or the film, both of which need the viscosity. [-]
+NEED_VISCOSITY = ("contamination", "e_c", "fatigue_load_limit", "roughness")
+
+
+def _check_needs(op: Operating) -> None:
+    """Refuse an input that would be ignored: one of NEED_VISCOSITY without a viscosity, and a
+    contamination level together with e_C (one of the two gives e_C)."""
+    if op.viscosity is None:
+        for name in NEED_VISCOSITY:
+            if getattr(op, name) is not None:
+                raise InputError(
+                    name,
+                    "feeds the modified life (a_ISO) or the film, which need the operating "
+                    "viscosity ('viscosity', with 'speed'): without it, it would be ignored",
+                )
+    if op.roughness is not None and not np.all(
+        (np.asarray(op.roughness, dtype=float) >= ROUGHNESS[0])
+        & (np.asarray(op.roughness, dtype=float) <= ROUGHNESS[1])
+    ):
+        raise InputError(
+            "roughness",
+            f"must lie between {ROUGHNESS[0]:g} and {ROUGHNESS[1]:g} mm (0.1 nm to 100 um: a "
+            "composite rms roughness of machined surfaces)",
+        )
+    if op.contamination is not None and op.e_c is not None:
+        raise InputError("e_c", "give a contamination level or e_C, not both (each gives e_C)")
 
 
 def _arr(value: Any) -> Any:

@@ -82,6 +82,8 @@ def _human(value: Any, digits: int | None) -> str:
     v = float(value)
     if v == 0:
         return "0"
+    if not math.isfinite(v):  # (an overflow of extreme inputs; the checks warn of those)
+        return str(v)
     text = f"{v:.{digits}g}"
     if "e" in text:
         return text
