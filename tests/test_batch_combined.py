@@ -12,7 +12,7 @@ from click.testing import CliRunner
 
 from bearingload.cli import main
 
-from .cli_helpers import run_entry
+from .cli_helpers import invoke, run_entry
 
 #: (batch cells, solve options) of one case each: catalogue and hand geometry, preload to C4,
 #: F_r 0, both rings rotating, a moment, an imposed misalignment, C_r given, 'half'.
@@ -367,3 +367,16 @@ def test_a_lever_far_from_the_pitch_radius_is_warned_on_its_own_row():
                                       "--tilt-radius", "1e9"])  # fmt: skip
     assert warned[0].removeprefix("Warning: row 2: ") in solve.stderr
     assert len(out.stdout.splitlines()) == 4
+
+
+def test_a_combined_rotating_cell_without_a_life_is_a_skipped_row(tmp_path):
+    """solve refuses --rotating on a hand-given ring without C_r (no L10r to name the ring of);
+    a combined batch row with the same cells was solved (found by the review): now skipped
+    with solve's reason."""
+    path = tmp_path / "rot.csv"
+    path.write_text("balls,ball_diameter,pitch_diameter,load,axial_load,rotating\n"
+                    "9,7.938,38.5,1000,500,outer\n", encoding="utf-8")  # fmt: skip
+    out = invoke("batch", str(path), "--format", "json")
+    doc = json.loads(out.stdout)
+    assert doc["cases"] == [] and [s["row"] for s in doc["skipped"]] == [2]
+    assert "L10r needs the dynamic load rating C_r" in doc["skipped"][0]["reason"]

@@ -169,8 +169,6 @@ class BatchSolver:
     def _bearing_key(self, cols: dict[str, list[Any]], i: int) -> tuple[Any, ...]:
         """A radial row of a bearing: its resolved bearing (C_r replaced by a dynamic_rating
         cell), method and rotating ring, checked as solve checks them."""
-        from bearingload.studies.reference_life import rotating_refusal
-
         v = self._row(cols, i)
         method = v.get("method", "exact")
         _check_method(method)
@@ -181,10 +179,7 @@ class BatchSolver:
                        else "a ball bearing (Hertz point contact) has m = 1.5")  # fmt: skip
             raise InputError("exponent", f"{contact}; other exponents need balls and stiffness "
                              "without a bearing")  # fmt: skip
-        if "rotating" in v and (why := rotating_refusal(b, c_r, method)) is not None:
-            why = re.sub(r"--([a-z-]+)", lambda m: m.group(1).replace("-", "_"), why)
-            raise InputError("rotating", "it names the rotating ring for the reference rating "
-                             f"life L10r (ISO/TS 16281), and {why.replace('a BEARING', 'a bearing')}")  # fmt: skip
+        _check_rotating(v, b, c_r, method)
         _check_life_cells(v, b)
         if "load" not in v:
             raise InputError("load", "missing: every row needs a load")
@@ -205,6 +200,7 @@ class BatchSolver:
                 "bearing", "missing: the combined load needs a bearing or its ball geometry"
             )
         b = self._bearing(v)
+        _check_rotating(v, b, v.get("dynamic_rating"), "exact")
         _check_life_cells(v, b)
         if "load" not in v:
             raise InputError("load", "missing: every row needs a (radial) load, 0 allowed")
@@ -250,6 +246,16 @@ def _check_life_cells(v: dict[str, Any], b: Any) -> None:
         raise InputError(
             "viscosity", "needs the pitch diameter (a bearing with its ball set or pitch_diameter)"
         )
+
+
+def _check_rotating(v: dict[str, Any], b: Any, c_r: Any, method: str) -> None:
+    """A rotating cell where no L10r is computed is refused, as solve refuses --rotating."""
+    from bearingload.studies.reference_life import rotating_refusal
+
+    if "rotating" in v and (why := rotating_refusal(b, c_r, method)) is not None:
+        why = re.sub(r"--([a-z-]+)", lambda m: m.group(1).replace("-", "_"), why)
+        raise InputError("rotating", "it names the rotating ring for the reference rating "
+                         f"life L10r (ISO/TS 16281), and {why.replace('a BEARING', 'a bearing')}")  # fmt: skip
 
 
 def _check_method(name: str) -> None:
