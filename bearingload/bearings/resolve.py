@@ -463,13 +463,15 @@ def _angular(
     set_ = {"balls": row.balls, "ball_diameter": row.ball_diameter,
             "pitch_diameter": row.pitch_diameter, "f_i": fi, "f_o": fo}  # fmt: skip
     hand = {k: v if given[k] is None else given[k] for k, v in set_.items()}
-    b = resolve_bearing(**hand, modulus=modulus, poisson=poisson, stiffness=stiffness)
+    z, dw, dm = int(hand["balls"]), float(hand["ball_diameter"]), float(hand["pitch_diameter"])
+    b = resolve_bearing(balls=z, ball_diameter=dw, pitch_diameter=dm, f_i=fi, f_o=fo,
+                        modulus=modulus, poisson=poisson, stiffness=stiffness)  # fmt: skip
     name = Designation(parsed.text, parsed.standard, parsed.series, parsed.bore_code, parsed.bore,
                        row.designation, row.designation if parsed.standard == "GOST" else None)  # fmt: skip
     overrides = tuple(k for k in set_ if given[k] is not None)
     geom = BearingGeometry(
-        row.designation, parsed.standard, row.d, row.D, row.B, hand["ball_diameter"],
-        hand["balls"], hand["pitch_diameter"], row.C, row.C0, fi, fo, row.source, row.notes,
+        row.designation, parsed.standard, row.d, row.D, row.B, dw, z, dm, row.C, row.C0, fi, fo,
+        row.source, row.notes,
         name, overrides=overrides, maker=row.maker, method=row.method, confidence=row.confidence,
     )  # fmt: skip
     src = f"catalogue row {row.designation} ({row.maker}, {row.contact_angle:g}°): {row.source}"
