@@ -70,6 +70,9 @@ def test_resolve_gives_the_row_at_its_angle_without_clearance():
     assert b.contact_angle == 40.0 and b.clearance == 0.0 and (b.C, b.C0) == (16700.0, 10200.0)
     with pytest.raises(InputError, match="clearance"):
         resolve_bearing("7205B", clearance="C3")
+    with pytest.raises(InputError, match="NSK"):
+        resolve_bearing("7205B", maker="SKF")
+    assert resolve_bearing("7205B", maker="nsk").balls == 12
 
 
 @pytest.mark.parametrize("text", ["7205AC", "7205C", "7205A", "46205", "36205", "66205", "7207B"])

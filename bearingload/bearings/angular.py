@@ -166,5 +166,5 @@ def find_angular(parsed: AngularDesignation) -> AngularRow:
         "bearing",
         f"{parsed.text!r} is {parsed.what}, which has no catalogue row yet (no public source "
         f"read for it); the angular-contact rows are {names}, or give the ring by hand with "
-        "contact_angle",
+        "its contact angle",
     )

@@ -132,7 +132,7 @@ def resolve_bearing(
                     "an angular-contact bearing takes no clearance: the design contact angle "
                     "fixes its geometry",
                 )
-            return _angular(angular, given, modulus, poisson, stiffness)
+            return _angular(angular, given, modulus, poisson, stiffness, maker)
     g = _ball_set(designation, maker, given, stiffness)
     prov = g.provenance + _ball_set_provenance(g, given)
     e = DEFAULT_MODULUS if modulus is None else float(modulus)
@@ -447,7 +447,7 @@ def _rating_source(geom: BearingGeometry, value: float | None) -> str:
 
 def _angular(
     parsed: Any, given: dict[str, Any], modulus: float | None, poisson: float | None,
-    stiffness: float | None,
+    stiffness: float | None, maker: str | None = None,
 ) -> ResolvedBearing:  # fmt: skip
     """An angular-contact bearing of the catalogue (:mod:`bearingload.bearings.angular`): its
     row, with the values given by hand replacing the row's, at its nominal contact angle, no
@@ -458,6 +458,10 @@ def _angular(
     from bearingload.bearings.designation import Designation
 
     row = find_angular(parsed)
+    if maker is not None and maker.strip().upper() != row.maker:
+        raise InputError(
+            "maker", f"the angular-contact row {row.designation} is {row.maker}'s only"
+        )
     fi = DEFAULT_F_I if given["f_i"] is None else given["f_i"]
     fo = DEFAULT_F_O if given["f_o"] is None else given["f_o"]
     set_ = {"balls": row.balls, "ball_diameter": row.ball_diameter,
