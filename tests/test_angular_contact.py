@@ -241,7 +241,7 @@ def test_cli_contact_angle_solves_and_reports_it(capsys):
     assert case["contact_angle"] == 40.0 and case["axial_play"] == 0.0
     r = solve_combined(13, 2000.0, 1000.0, contact_angle=40.0, **B7205)
     assert math.isclose(case["q_max"], r.q_max, rel_tol=1e-9)
-    assert case["static_equivalent_load"] is None  # ISO 76 X0, Y0 of angular contact: not yet
+    assert case["static_equivalent_load"] == 2000.0  # ISO 76 at 40°: max(F_r, 0.5 F_r + 0.26 F_a)
 
 
 @pytest.mark.parametrize(

@@ -121,6 +121,18 @@ def resolve_bearing(
                        poisson, stiffness, spec, clearance_pick)  # fmt: skip
     given = {"balls": balls, "ball_diameter": ball_diameter, "pitch_diameter": pitch_diameter,
              "f_i": f_i, "f_o": f_o}  # fmt: skip
+    if designation is not None:
+        from bearingload.bearings.angular import parse_angular
+
+        angular = parse_angular(designation)
+        if angular is not None:
+            if spec is not None:
+                raise InputError(
+                    "clearance",
+                    "an angular-contact bearing takes no clearance: the design contact angle "
+                    "fixes its geometry",
+                )
+            return _angular(angular, given, modulus, poisson, stiffness, maker)
     g = _ball_set(designation, maker, given, stiffness)
     prov = g.provenance + _ball_set_provenance(g, given)
     e = DEFAULT_MODULUS if modulus is None else float(modulus)
@@ -431,3 +443,66 @@ def _rating_source(geom: BearingGeometry, value: float | None) -> str:
     if geom.standard == "ISO" and geom.maker is not None:
         return f"catalogue: {geom.maker}"
     return "catalogue"
+
+
+def _angular(
+    parsed: Any, given: dict[str, Any], modulus: float | None, poisson: float | None,
+    stiffness: float | None, maker: str | None = None,
+) -> ResolvedBearing:  # fmt: skip
+    """An angular-contact bearing of the catalogue (:mod:`bearingload.bearings.angular`): its
+    row, with the values given by hand replacing the row's, at its nominal contact angle, no
+    clearance."""
+    import dataclasses
+
+    from bearingload.bearings.angular import find_angular
+    from bearingload.bearings.designation import Designation
+
+    row = find_angular(parsed)
+    if maker is not None and maker.strip().upper() != row.maker:
+        raise InputError(
+            "maker", f"the angular-contact row {row.designation} is {row.maker}'s only"
+        )
+    fi = DEFAULT_F_I if given["f_i"] is None else given["f_i"]
+    fo = DEFAULT_F_O if given["f_o"] is None else given["f_o"]
+    set_ = {"balls": row.balls, "ball_diameter": row.ball_diameter,
+            "pitch_diameter": row.pitch_diameter, "f_i": fi, "f_o": fo}  # fmt: skip
+    hand = {k: v if given[k] is None else given[k] for k, v in set_.items()}
+    z, dw, dm = int(hand["balls"]), float(hand["ball_diameter"]), float(hand["pitch_diameter"])
+    b = resolve_bearing(balls=z, ball_diameter=dw, pitch_diameter=dm, f_i=fi, f_o=fo,
+                        modulus=modulus, poisson=poisson, stiffness=stiffness)  # fmt: skip
+    name = Designation(parsed.text, parsed.standard, parsed.series, parsed.bore_code, parsed.bore,
+                       row.designation, row.designation if parsed.standard == "GOST" else None)  # fmt: skip
+    overrides = tuple(k for k in set_ if given[k] is not None)
+    geom = BearingGeometry(
+        row.designation, parsed.standard, row.d, row.D, row.B, dw, z, dm, row.C, row.C0, fi, fo,
+        row.source, row.notes,
+        name, overrides=overrides, maker=row.maker, method=row.method, confidence=row.confidence,
+    )  # fmt: skip
+    src = f"catalogue row {row.designation} ({row.maker}, {row.contact_angle:g}°): {row.source}"
+    what = {k: "given" if k in overrides else f"catalogue ({row.method})" for k in set_}
+    for k in ("f_i", "f_o"):
+        what[k] = "given" if k in overrides else "not printed by the source: the default, assumed"
+    prov = [
+        Provenance("d", "bore d", row.d, "mm", "catalogue"),
+        Provenance("D", "outside diameter D", row.D, "mm", "catalogue"),
+        Provenance("contact_angle", "nominal contact angle alpha_0", row.contact_angle, "°",
+                   f"designation {parsed.text} ({parsed.what})"),
+        Provenance("balls", "number of balls z", hand["balls"], "", what["balls"]),
+        Provenance("ball_diameter", "ball diameter D_w", hand["ball_diameter"], "mm",
+                   what["ball_diameter"]),
+        Provenance("pitch_diameter", "pitch diameter d_m", hand["pitch_diameter"], "mm",
+                   what["pitch_diameter"]),
+        Provenance("f_i", "inner conformity f_i = r_i/D_w", fi, "", what["f_i"]),
+        Provenance("f_o", "outer conformity f_o = r_o/D_w", fo, "", what["f_o"]),
+        *[p for p in b.provenance if p.key not in ("balls", "ball_diameter", "pitch_diameter",
+                                                    "clearance", "f_i", "f_o")],
+        Provenance("clearance", "radial clearance G_r (total)", 0.0, "µm",
+                   "none: the design contact angle fixes the geometry"),
+        Provenance("C", "dynamic load rating C", row.C, "N", f"catalogue ({row.maker})"),
+        Provenance("C0", "static load rating C0", row.C0, "N", f"catalogue ({row.maker})"),
+    ]  # fmt: skip
+    return dataclasses.replace(
+        b, designation=parsed.text, geometry=geom, C=row.C, C0=row.C0, clearance=0.0,
+        contact_angle=row.contact_angle, provenance=tuple(prov),
+        sources=(src, f"catalogue notes: {row.notes}"),
+    )  # fmt: skip

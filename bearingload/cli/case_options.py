@@ -517,8 +517,13 @@ class CaseOptions:
     @property
     def wants_combined(self) -> bool:
         """True when a load option (:data:`LOAD_PARAMS`) was given: the load alone chooses the
-        engine."""
-        return any(getattr(self, k) is not None for k in LOAD_PARAMS)
+        engine; an angular-contact designation (``7205B``) always takes the combined engine,
+        its balls at the contact angle."""
+        if any(getattr(self, k) is not None for k in LOAD_PARAMS):
+            return True
+        from bearingload.bearings.angular import parse_angular
+
+        return self.bearing is not None and parse_angular(self.bearing) is not None
 
     @property
     def lives_given(self) -> bool:

@@ -148,11 +148,17 @@ def solve(
                 f"--method {method} gives none (use --method exact or all)"
             )
     k_given = case.stiffness_value()  # N/mm^m
-    if case.wants_combined:  # the load alone chooses the engine, never a life option
+    from bearingload.bearings.angular import parse_angular
+
+    angular = case.bearing is not None and parse_angular(case.bearing) is not None
+    # the load alone chooses the engine, never a life option; an angular-contact designation
+    # always takes the combined engine (its balls sit at the contact angle)
+    if case.wants_combined or angular:
         if method != "exact":
+            what = (f"an angular-contact bearing ({case.bearing})" if angular else "the combined "
+                    "load (--axial-load, --moment, --moment-cross, --misalignment)")  # fmt: skip
             raise click.UsageError(
-                "Invalid value for '--method': the combined load (--axial-load, --moment, "
-                "--moment-cross, --misalignment) is solved by the exact model only"
+                f"Invalid value for '--method': {what} is solved by the exact model only"
             )
         bearings = with_ratings(resolve_bearings(case, k_given), case)
         if bearings[0].kind == "ball" and bearings[0].has_geometry:

@@ -49,10 +49,83 @@ def catalog_list(
         notes=[
             f"{len(rows)} bearings; '-': ball set unknown (give --balls and --ball-diameter, "
             "or --maker). Sources of each row and the makers' sets: bearingload catalog show "
-            "DESIGNATION. Cylindrical roller bearings NU/N 203-220, 303-320: catalog show NU206."
+            "DESIGNATION. Cylindrical roller bearings NU/N 203-220, 303-320: catalog show NU206. "
+            "Angular-contact ball bearings: catalog --type angular."
         ],
     )
     return render([table], fmt)
+
+
+def angular_list(fmt: str, bore: float | None = None) -> str:
+    """The angular-contact rows (:func:`bearingload.bearings.angular.angular_rows`), those of
+    bore ``bore`` [mm] where given, rendered in ``fmt``."""
+    from bearingload.bearings.angular import angular_rows
+
+    rows = [
+        {"designation": r.designation, "contact_angle": r.contact_angle, "d": r.d, "D": r.D,
+         "B": r.B, "balls": r.balls, "ball_diameter": r.ball_diameter,
+         "pitch_diameter": r.pitch_diameter, "C": r.C, "C0": r.C0,
+         "maker": f"{r.maker} ({r.method})"}
+        for r in angular_rows()
+        if bore is None or abs(r.d - bore) < 1e-9
+    ]  # fmt: skip
+    title = "Single-row angular-contact ball bearings in the catalogue"
+    if bore is not None:
+        title += f" (bore {bore:g})"
+    table = Table(
+        title=title,
+        columns=[
+            Column("designation", "bearing", align="left"),
+            Column("contact_angle", "alpha_0", "°", 3),
+            Column("d", "d", "mm", 5),
+            Column("D", "D", "mm", 5),
+            Column("B", "B", "mm", 5),
+            Column("balls", "z"),
+            Column("ball_diameter", "D_w", "mm", 5),
+            Column("pitch_diameter", "d_m", "mm", 5),
+            Column("C", "C", "N", 5),
+            Column("C0", "C0", "N", 5),
+            Column("maker", "ratings, ball set", align="left"),
+        ],
+        rows=rows,
+        notes=[
+            f"{len(rows)} bearings; f_i = 0.52, f_o = 0.53 assumed (not printed by the source). "
+            "Sources: bearingload catalog show DESIGNATION. Other angular-contact types (C, AC, "
+            "A; GOST 36xxx, 46xxx, 66xxx) are read but have no row yet: give the ring by hand "
+            "with solve --contact-angle (docs/angular_contact.md)."
+        ],
+    )
+    return render([table], fmt)
+
+
+def _angular_entry(designation: str, fmt: str, maker: str | None) -> str | None:
+    """The entry of an angular-contact designation, or None when ``designation`` is not one."""
+    from bearingload.bearings.angular import find_angular, parse_angular
+
+    parsed = parse_angular(designation)
+    if parsed is None:
+        return None
+    if maker is not None:
+        raise InputError("maker", "the angular-contact rows have one maker each (NSK)")
+    r = find_angular(parsed)
+    fields: list[tuple[str, str, Any, str]] = [
+        ("designation", "designation", r.designation, ""),
+        ("as_typed", "as typed", parsed.text, ""),
+        ("contact_angle", "nominal contact angle alpha_0", r.contact_angle, "°"),
+        ("d", "bore d", r.d, "mm"),
+        ("D", "outside diameter D", r.D, "mm"),
+        ("B", "width B", r.B, "mm"),
+        ("balls", "balls z", r.balls, ""),
+        ("ball_diameter", "ball diameter D_w", r.ball_diameter, "mm"),
+        ("pitch_diameter", "pitch diameter d_m", r.pitch_diameter, "mm"),
+        ("C", "dynamic load rating C", r.C, "N"),
+        ("C0", "static load rating C0", r.C0, "N"),
+        ("maker", "ratings of maker", r.maker, ""),
+        ("method", "ball set read/derived", r.method, ""),
+        ("confidence", "ball set confidence", r.confidence, ""),
+    ]
+    title = f"Angular-contact ball bearing {r.designation}, contact angle {r.contact_angle:g}°"
+    return _entry(title, fields, r.source, r.notes, fmt)
 
 
 def _row(b: BearingGeometry) -> dict[str, Any]:
@@ -85,6 +158,9 @@ def catalog_entry(designation: str, fmt: str, maker: str | None = None) -> str:
     """
     from bearingload.bearings.designation import parse
 
+    angular = _angular_entry(designation, fmt, maker)
+    if angular is not None:
+        return angular
     try:
         roller = parse(designation).kind == "roller"
     except InputError:

@@ -109,8 +109,14 @@ STATIC_NOTE = (
 ANGULAR_NOTE = (
     "Angular contact (docs/angular_contact.md): one-sided, F_a >= 0 only; the axial displacement "
     "is measured from the zero-load position (every ball at the design angle). Without --moment "
-    "or --misalignment the inner ring is free to tilt (M = 0). ISO 281 L10 and ISO 76 P0 are not "
-    "given for angular contact."
+    "or --misalignment the inner ring is free to tilt (M = 0). L10 and P0 at the nominal contact "
+    "angle (ISO 281 Table 3: P = F_r for F_a/F_r <= e, else X F_r + Y F_a; ISO 76: "
+    "P0 = max(F_r, 0.5 F_r + Y0 F_a)); coded for 15, 25, 30 and 40° only."
+)
+#: What replaces :data:`STATIC_NOTE` for an angular-contact bearing.
+ANGULAR_STATIC_NOTE = (
+    "Contact pressures: exact Hertz, every ball at its load and contact angle, the largest of "
+    "each contact. s0 = C0/P0."
 )
 
 
@@ -199,7 +205,7 @@ def _summary(records: Sequence[dict[str, Any]], bearing: Any) -> Table:
     columns, rows = quantity_rows(keys, heads, records)
     notes = [*NOTES, STATIC_NOTE, *set_note(bearing)]
     if records[0].get("contact_angle") is not None:
-        notes[1] = ANGULAR_NOTE
+        notes[1], notes[len(NOTES)] = ANGULAR_NOTE, ANGULAR_STATIC_NOTE
     return Table(_title(records), columns, rows, notes)
 
 

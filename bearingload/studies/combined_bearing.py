@@ -122,6 +122,7 @@ def _combined_case(
         combined_warnings,
         contact_pressures,
         static_equivalent_load,
+        static_equivalent_load_angular,
         static_safety,
     )
     from bearingload.bearings.tilt import lever_warning
@@ -135,8 +136,7 @@ def _combined_case(
     l10r = p_eq = life = None
     if c_r:
         l10r = reference_lives(b, r, rotating, c_r)
-        if b.contact_angle is None:  # (ISO 281's X, Y of angular contact: not yet)
-            p_eq, life = basic_lives(b, c_r, load, axial_load)
+        p_eq, life = basic_lives(b, c_r, load, axial_load)
     found = contact_pressures(b, r.ball_loads, r.contact_angles)
     p_i = p_o = None
     if found is not None:
@@ -154,7 +154,8 @@ def _combined_case(
         if p_i is None or p_o is None
         else list(zip(each(p_i), each(p_o), strict=True))
     )
-    p0 = [static_equivalent_load(f, a) if b.contact_angle is None else None
+    p0 = [static_equivalent_load(f, a) if b.contact_angle is None
+          else static_equivalent_load_angular(f, a, b.contact_angle)
           for f, a in zip(fr, fa, strict=True)]  # fmt: skip
     checks = tuple(tuple(combined_warnings(b, fr[i], fa[i], q[i], int(loaded[i]), warned[i], inner[i]))
                    for i in range(len(q)))  # fmt: skip
@@ -344,7 +345,11 @@ def basic_lives(b: ResolvedBearing, c_r: float, fr: Any, fa: Any) -> tuple[Any, 
 
     fr, fa = np.asarray(fr, dtype=float), np.asarray(fa, dtype=float)
     f0 = None if b.geometry is None else b.geometry.f0
-    if b.C0 is not None and f0 is not None:
+    if b.contact_angle is not None:
+        p = angular_equivalent_load(b, fr, fa, f0)
+        if p is None:
+            return None, None
+    elif b.C0 is not None and f0 is not None:
         p = np.where(fa == 0, fr, equivalent_load_deep_groove(fr, fa, b.C0, f0))
     else:
         p = np.where(fa == 0, fr, np.nan)
@@ -354,6 +359,21 @@ def basic_lives(b: ResolvedBearing, c_r: float, fr: Any, fa: Any) -> tuple[Any, 
     life = np.full(p.shape, np.nan)
     life[loaded] = rating_life(c_r, p[loaded])
     return p, life
+
+
+def angular_equivalent_load(b: ResolvedBearing, fr: Any, fa: Any, f0: float | None) -> Any:
+    """ISO 281's P = X F_r + Y F_a of an angular-contact bearing at its nominal contact angle
+    (:func:`bearingload.bearings.life.equivalent_load_angular_contact`); None where the
+    angle has no coded factors, or at 15° without C0r (e, Y there depend on F_a/C0r). [N]"""
+    from bearingload.bearings.life import (
+        angular_contact_tabulated,
+        equivalent_load_angular_contact,
+    )
+
+    alpha = float(b.contact_angle or 0.0)
+    if not angular_contact_tabulated(alpha) or (abs(alpha - 15.0) < 1e-9 and b.C0 is None):
+        return None
+    return np.asarray(equivalent_load_angular_contact(fr, fa, alpha, b.C0, f0), dtype=float)
 
 
 def combined_values(c: CombinedCase) -> dict[str, Any]:
@@ -379,7 +399,7 @@ def combined_columns(c: CombinedCase) -> dict[str, Any]:
         c.equivalent_load, c.rating_life, c.reference_rating_life,
         moment_cross=c.moment_cross, tilt_radius=c.tilt_radius,
     )  # fmt: skip
-    sel = c.static_equivalent_load  # (None: angular contact, ISO 76's X0, Y0 not yet)
+    sel = c.static_equivalent_load  # (None: an angular contact angle without a coded Y0)
     for key in ("equivalent_load", "rating_life"):  # a moment alone, an F_a without f0: none
         values = columns[key]
         if values is not None and np.isnan(values).any():

@@ -20,6 +20,7 @@ from bearingload.bearings.life import (
     allowable_load,
     rating_life,
 )
+from bearingload.errors import InputError
 from bearingload.models.case import Case, Result, scalar
 from bearingload.models.registry import get_method
 
@@ -144,6 +145,13 @@ def solve_bearing(
     """
     out = []
     for b in bearings:
+        if b.contact_angle is not None:  # the radial engine has every ball at 0°
+            raise InputError(
+                "bearing",
+                f"{b.designation or 'the ring'} is an angular-contact bearing (contact angle "
+                f"{b.contact_angle:g}°): it is solved by the combined engine only (give an axial "
+                "load, 0 allowed)",
+            )
         case = Case.of(b.balls, load, b.stiffness, b.clearance, cage_angle, b.exponent)
         for m in methods:
             out.append(_with_bearing(get_method(m).run(case), b, load, revolutions))

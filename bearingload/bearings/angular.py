@@ -1,0 +1,170 @@
+"""Designations and catalogue rows of single-row angular-contact ball bearings.
+
+Designations read (the contact angle from the suffix or the GOST type):
+
+* ISO/maker form ``70xx``, ``72xx``, ``73xx`` with a contact-angle suffix: ``C`` 15°, ``A5``
+  and ``AC`` 25°, ``A`` 30°, ``B`` 40° (NSK's angular-contact section: "a contact angle of 30°
+  (Symbol A) or 40° (Symbol B)", C 15°, A5 25°; SKF's AC 25° and B 40°, SKF's older A 30° as a
+  maker's page restates SKF's text). Maker suffixes after the letter (``7205 BEP``,
+  ``7205BECBP``, ``7205-B-TVP``, ``7205ACD``) are read past. A plain ``7205`` is not read:
+  Nachi's plain 72xx is 30°, while GOST 3189 reads 7205 as a tapered roller bearing.
+* GOST 831-75 types ``36xxx`` (12°), ``46xxx`` (26°), ``66xxx`` (36°), e.g. ``46205``
+  (GOST 831-75, clause 2, as restated at ajdocs.ru/gsp/49821/2; the K, K6, K7 variants are not
+  read).
+
+Rows: ``data/angular_contact.csv``, each with its source; a designation of one of these types
+without a row is refused, naming the rows there are (:func:`find_angular`).
+"""
+
+from __future__ import annotations
+
+import re
+from dataclasses import dataclass
+from functools import lru_cache
+
+from bearingload.errors import InputError
+
+#: ISO/maker contact-angle suffixes and the nominal angle each stands for. [°]
+ISO_SUFFIX_ANGLES: dict[str, float] = {"C": 15.0, "A5": 25.0, "AC": 25.0, "A": 30.0, "B": 40.0}
+#: GOST 831-75 design digit (before the type digit 6) and the nominal angle. [°]
+GOST_TYPE_ANGLES: dict[str, float] = {"3": 12.0, "4": 26.0, "6": 36.0}
+
+_ISO = re.compile(
+    r"^(?P<series>7[023])(?P<bore>\d{2})\s*[-/]?\s*(?P<letter>A5|AC|A|B|C)(?P<rest>(?:[^0-9].*)?)$"
+)
+_GOST = re.compile(r"^(?:[^-\s]{1,6}\s*-\s*)?(?P<design>[346])6(?P<series>[1-4])(?P<bore>\d{2})$")
+
+
+@dataclass(frozen=True)
+class AngularDesignation:
+    """A parsed angular-contact designation.
+
+    Attributes
+    ----------
+    text : str
+        As given (stripped).
+    name : str
+        The catalogue name: ``7205B`` (series, bore code, contact-angle letter), ``46205``.
+    standard : str
+        ``"ISO"`` or ``"GOST"``.
+    series : str
+        ``"70"``, ``"72"``, ``"73"``; GOST: the series digit.
+    bore_code : str
+        Two digits.
+    bore : float
+        d. [mm]
+    contact_angle : float
+        Nominal contact angle. [°]
+    what : str
+        The type in words, for messages.
+    """
+
+    text: str
+    name: str
+    standard: str
+    series: str
+    bore_code: str
+    bore: float
+    contact_angle: float
+    what: str
+
+
+def parse_angular(text: str) -> AngularDesignation | None:
+    """The angular-contact designation ``text``, or None when it is not one of the forms read.
+
+    >>> d = parse_angular("7205 BEP")
+    >>> d.name, d.contact_angle, d.bore
+    ('7205B', 40.0, 25.0)
+    >>> parse_angular("46205").contact_angle, parse_angular("6205") is None
+    (26.0, True)
+    """
+    from bearingload.bearings.designation import bore_from_code
+
+    raw = text.strip()
+    norm = re.sub(r"\s+", " ", raw.upper())
+    m = _ISO.match(norm)
+    if m:
+        letter = m.group("letter")
+        alpha = ISO_SUFFIX_ANGLES[letter]
+        what = (f"a single-row angular contact ball bearing (series {m.group('series')}, "
+                f"suffix {letter}: {alpha:g}°)")  # fmt: skip
+        bore = m.group("bore")
+        return AngularDesignation(raw, f"{m.group('series')}{bore}{letter}", "ISO",
+                                  m.group("series"), bore, bore_from_code(bore), alpha, what)  # fmt: skip
+    m = _GOST.match(norm)
+    if m:
+        design, series, bore = m.group("design"), m.group("series"), m.group("bore")
+        alpha = GOST_TYPE_ANGLES[design]
+        name = f"{design}6{series}{bore}"
+        what = f"a single-row angular contact ball bearing (GOST 831 type {design}6000: {alpha:g}°)"
+        return AngularDesignation(raw, name, "GOST", series, bore, bore_from_code(bore), alpha,
+                                  what)  # fmt: skip
+    return None
+
+
+@dataclass(frozen=True)
+class AngularRow:
+    """One row of ``data/angular_contact.csv`` (units: mm, N, °)."""
+
+    designation: str
+    maker: str
+    contact_angle: float
+    d: float
+    D: float
+    B: float
+    balls: int
+    ball_diameter: float
+    pitch_diameter: float
+    C: float
+    C0: float
+    method: str
+    confidence: str
+    source: str
+    notes: str
+
+
+@lru_cache(maxsize=1)
+def angular_rows() -> tuple[AngularRow, ...]:
+    """Every angular-contact catalogue row, in file order."""
+    from bearingload.bearings._data import read_rows
+
+    return tuple(
+        AngularRow(
+            r["designation"],
+            r["maker"],
+            float(r["contact_angle"]),
+            float(r["d"]),
+            float(r["D"]),
+            float(r["B"]),
+            int(r["balls"]),
+            float(r["ball_diameter"]),
+            float(r["pitch_diameter"]),
+            float(r["C"]),
+            float(r["C0"]),
+            r["method"],
+            r["confidence"],
+            r["source"],
+            r["notes"],
+        )  # fmt: skip
+        for r in read_rows("angular_contact.csv")
+    )
+
+
+def find_angular(parsed: AngularDesignation) -> AngularRow:
+    """The catalogue row of ``parsed``.
+
+    Raises
+    ------
+    InputError
+        (``bearing``) when there is no row: names the type and the rows there are.
+    """
+    for row in angular_rows():
+        if row.designation == parsed.name:
+            return row
+    names = ", ".join(r.designation for r in angular_rows())
+    raise InputError(
+        "bearing",
+        f"{parsed.text!r} is {parsed.what}, which has no catalogue row yet (no public source "
+        f"read for it); the angular-contact rows are {names}, or give the ring by hand with "
+        "its contact angle",
+    )

@@ -1,0 +1,124 @@
+"""ISO 281 L10 and ISO 76 P0 of single-row angular-contact ball bearings at their nominal contact
+angle, against the public restatements of the standards' tables (tests/fixtures/angular_factors.py):
+every tabulated row, the 15° row at and between its knots (linear interpolation, as the standard's
+note says), P0 at each angle, and the command line for a ring given by hand."""
+
+from __future__ import annotations
+
+import json
+import math
+
+import pytest
+
+from bearingload.bearings.checks import static_equivalent_load_angular
+from bearingload.bearings.life import equivalent_load_angular_contact
+from bearingload.errors import InputError
+
+from .fixtures.angular_factors import ROW_15, ROW_15_X, X0, XY_ROWS, Y0_ROWS
+
+C0 = 14000.0  # N (any C0: the 15° row is read at F_a = r C0 / f0)
+
+
+@pytest.mark.parametrize("alpha", sorted(XY_ROWS))
+def test_fixed_rows_below_and_above_e(alpha):
+    (e, x, y), _ = XY_ROWS[alpha]
+    fr = 1000.0
+    below, above = fr * e * (1 - 1e-9), fr * e * 1.5
+    assert float(equivalent_load_angular_contact(fr, below, alpha)) == fr
+    assert math.isclose(
+        float(equivalent_load_angular_contact(fr, above, alpha)), x * fr + y * above, rel_tol=1e-14
+    )
+    # at F_a/F_r = e both branches nearly agree (the table is continuous to its rounding)
+    assert abs(x + y * e - 1.0) < 0.011
+
+
+@pytest.mark.parametrize("knot", range(len(ROW_15)))
+def test_15_degree_row_at_its_knots_with_and_without_f0(knot):
+    r_f0, r_c0, e, y = ROW_15[knot]
+    f0 = 13.0
+    fa = r_f0 * C0 / f0
+    fr = fa / (e * 1.01)  # just beyond e: the X, Y branch
+    want = ROW_15_X * fr + y * fa
+    got = float(equivalent_load_angular_contact(fr, fa, 15.0, C0, f0))
+    assert math.isclose(got, want, rel_tol=1e-12)
+    fa = r_c0 * C0  # without f0: the F_a/C0 column
+    fr = fa / (e * 1.01)
+    got = float(equivalent_load_angular_contact(fr, fa, 15.0, C0))
+    assert math.isclose(got, ROW_15_X * fr + y * fa, rel_tol=1e-12)
+
+
+@pytest.mark.parametrize("knot", range(len(ROW_15) - 1))
+def test_15_degree_row_interpolates_linearly_between_knots(knot):
+    (r0, _, e0, y0), (r1, _, e1, y1) = ROW_15[knot], ROW_15[knot + 1]
+    t = 0.3
+    r, e, y = r0 + t * (r1 - r0), e0 + t * (e1 - e0), y0 + t * (y1 - y0)
+    f0 = 12.0
+    fa = r * C0 / f0
+    fr_beyond, fr_within = fa / (e * 1.001), fa / (e * 0.999)
+    got = float(equivalent_load_angular_contact(fr_beyond, fa, 15.0, C0, f0))
+    assert math.isclose(got, ROW_15_X * fr_beyond + y * fa, rel_tol=1e-12)
+    assert float(equivalent_load_angular_contact(fr_within, fa, 15.0, C0, f0)) == fr_within
+
+
+def test_15_degree_row_ends_held_outside_the_table():
+    first, last = ROW_15[0], ROW_15[-1]
+    for r, (_, _, _, y) in ((0.01, first), (50.0, last)):
+        fa = r * C0 / 13.0
+        got = float(equivalent_load_angular_contact(1e-3 * fa, fa, 15.0, C0, 13.0))
+        assert math.isclose(got, ROW_15_X * 1e-3 * fa + y * fa, rel_tol=1e-12)
+
+
+@pytest.mark.parametrize("alpha", sorted(Y0_ROWS))
+def test_static_equivalent_load_each_angle(alpha):
+    y0, _ = Y0_ROWS[alpha]
+    for fr, fa in ((1000.0, 0.0), (1000.0, 500.0), (1000.0, 5000.0), (0.0, 3000.0)):
+        assert static_equivalent_load_angular(fr, fa, alpha) == max(fr, X0 * fr + y0 * fa)
+
+
+def test_untabulated_angles_give_nothing_or_refuse():
+    assert static_equivalent_load_angular(1000.0, 1000.0, 20.0) is None
+    with pytest.raises(InputError, match="contact_angle"):
+        equivalent_load_angular_contact(1000.0, 1000.0, 20.0)
+    with pytest.raises(InputError, match="C0"):
+        equivalent_load_angular_contact(1000.0, 1000.0, 15.0)
+    with pytest.raises(InputError, match="axial_load"):
+        equivalent_load_angular_contact(1000.0, -1.0, 40.0)
+
+
+HAND = ("solve", "--balls", "13", "--ball-diameter", "7.938", "--pitch-diameter", "38.5",
+        "-F", "2kN", "-A", "3kN", "--dynamic-rating", "20kN", "--static-rating", "14kN",
+        "--format", "json")  # fmt: skip
+
+
+@pytest.mark.parametrize("alpha", [15.0, 25.0, 30.0, 40.0])
+def test_cli_hand_ring_gives_l10_and_p0(capsys, alpha):
+    from tests.cli_helpers import run_entry
+
+    code, out, err = run_entry(capsys, *HAND, "--contact-angle", f"{alpha:g}")
+    assert code == 0 and err == ""
+    case = json.loads(out)["cases"][0]
+    fr, fa = 2000.0, 3000.0
+    if alpha == 15.0:  # no f0 for a hand-given ring: the F_a/C0 column
+        ratio = fa / 14000.0
+        row = next(i for i in range(len(ROW_15) - 1) if ROW_15[i + 1][1] >= ratio)
+        (_, a0, _, y0), (_, a1, _, y1) = ROW_15[row], ROW_15[row + 1]
+        x, y = ROW_15_X, y0 + (ratio - a0) / (a1 - a0) * (y1 - y0)
+    else:
+        (_, x, y), _ = XY_ROWS[alpha]
+    p = x * fr + y * fa  # F_a/F_r = 1.5 exceeds every e here
+    assert math.isclose(case["equivalent_load"], p, rel_tol=1e-9)
+    assert math.isclose(case["rating_life"], (20000.0 / p) ** 3, rel_tol=1e-9)
+    p0 = max(fr, X0 * fr + Y0_ROWS[alpha][0] * fa)
+    assert math.isclose(case["static_equivalent_load"], p0, rel_tol=1e-12)
+    assert math.isclose(case["static_safety"], 14000.0 / p0, rel_tol=1e-9)
+
+
+def test_cli_untabulated_angle_leaves_l10_and_p0_empty(capsys):
+    from tests.cli_helpers import run_entry
+
+    code, out, err = run_entry(capsys, *HAND, "--contact-angle", "20")
+    assert code == 0 and err == ""
+    case = json.loads(out)["cases"][0]
+    assert case["equivalent_load"] is None and case["rating_life"] is None
+    assert case["static_equivalent_load"] is None and case["static_safety"] is None
+    assert case["reference_rating_life"] > 0  # L10r from the ball loads at any angle
