@@ -57,9 +57,13 @@ def test_walther_against_mpmath_and_through_its_two_points():
         nu40 = 10 ** rng.uniform(0.7, 3.5)
         nu100 = max(2.0, nu40 / rng.uniform(2.0, 15.0))
         t = rng.uniform(-20.0, 150.0)
-        assert viscosity_at(nu40, nu100, t) == pytest.approx(_walther_mp(nu40, nu100, t), rel=1e-9)
         assert viscosity_at(nu40, nu100, 40.0) == pytest.approx(nu40, rel=1e-12)
         assert viscosity_at(nu40, nu100, 100.0) == pytest.approx(nu100, rel=1e-12)
+        if _walther_mp(nu40, nu100, t + 1.0) < 2.0:  # beyond the form's range: refused
+            with pytest.raises(InputError, match="2 mm\\^2/s or more"):
+                viscosity_at(nu40, nu100, t + 1.0)
+            continue
+        assert viscosity_at(nu40, nu100, t) == pytest.approx(_walther_mp(nu40, nu100, t), rel=1e-9)
         assert viscosity_at(nu40, nu100, t + 1.0) < viscosity_at(nu40, nu100, t)
 
 
@@ -77,6 +81,19 @@ def test_refusals():
         viscosity_at(68.0, 80.0, 70.0)
     with pytest.raises(InputError, match="2 mm\\^2/s or more"):
         viscosity_at(68.0, 1.5, 70.0)
+
+
+@pytest.mark.parametrize(
+    ("nu_40", "nu_100", "celsius"),
+    [(68.0, 8.5, 200.0), (68.0, 2.0, 250.0), (9e5, 2.0, -60.0)],
+)
+def test_a_temperature_where_walther_leaves_its_range_is_refused(nu_40, nu_100, celsius):
+    """VG68 with nu_100 = 8.5 at 200 °C gives 1.83 mm^2/s, below the 2 mm^2/s the plain
+    Walther form covers (was returned silently); nu_40 = 9e5 at -60 °C overflowed to infinity,
+    refused later as a bad --viscosity the user never gave."""
+    with pytest.raises(InputError) as info:
+        viscosity_at(nu_40, nu_100, celsius)
+    assert info.value.parameter == "temperature" and "2 mm^2/s" in str(info.value)
 
 
 def _csv(*args: str) -> dict[str, str]:

@@ -122,7 +122,16 @@ def viscosity_at(nu_40: ArrayLike, nu_100: ArrayLike, temperature: ArrayLike) ->
         )
     t = np.asarray(temperature, dtype=float) + ZERO_CELSIUS
     a, b = walther_constants(n40, 40.0 + ZERO_CELSIUS, n100, 100.0 + ZERO_CELSIUS)
-    return walther_viscosity(a, b, t)
+    nu = np.asarray(walther_viscosity(a, b, t), dtype=float)
+    # the form's range, as for its inputs (a rounding below nu_100 = 2 itself is kept)
+    if not np.all(np.isfinite(nu) & (nu >= WALTHER_MIN * (1.0 - 1e-12))):
+        raise InputError(
+            "temperature",
+            f"ASTM D341's Walther form covers {WALTHER_MIN:g} mm^2/s or more and finite; at "
+            f"{np.asarray(temperature, dtype=float)} °C it gives {nu} mm^2/s for this oil: give "
+            "a temperature where it stays in that range, or the viscosity itself (--viscosity)",
+        )
+    return scalar_out(nu)
 
 
 def walther_viscosity(a: ArrayLike, b: ArrayLike, temperature: ArrayLike) -> Any:
