@@ -161,6 +161,38 @@ def test_bad_life_cells_are_named_rows():
     assert [r["row"] for r in _rows(out.stdout)] == ["9"]
 
 
+def test_life_cells_solve_refuses_skip_their_row_only():
+    """Each of these rows ended the whole batch (exit 2, nothing written): the check that
+    refuses them in solve ran over the whole call."""
+    text = (
+        "bearing,load,speed,viscosity,eC,contamination,fatigue_load_limit,roughness\n"
+        "6205,1kN,3000,,0.5,,,\n"
+        "6205,1kN,3000,,,high,,\n"
+        "6205,1kN,3000,,,,300N,\n"
+        "6205,1kN,3000,,,,,0.2um\n"
+        "6205,1kN,3000,20,0.5,high,,\n"
+        "6205,1kN,3000,20,,,,1e-310mm\n"
+        "6205,1kN,3000,20,,,,1mm\n"
+        "6205,1kN,3000,20,,,,\n"
+    )
+    out = _batch(text, "--format", "csv")
+    assert out.exit_code == 1
+    errors = out.stderr.splitlines()
+    for row, name in enumerate(("eC", "contamination", "fatigue_load_limit", "roughness"), 2):
+        assert errors[row - 2].startswith(f"Warning: row {row}: {name}: feeds the modified life")
+    assert errors[4].startswith("Warning: row 6: eC: give a contamination level or eC, not both")
+    assert errors[5].startswith("Warning: row 7: roughness: must lie between 1e-07 and 0.1 mm")
+    assert errors[6].startswith("Warning: row 8: roughness: must lie between 1e-07 and 0.1 mm")
+    assert [r["row"] for r in _rows(out.stdout)] == ["9"]
+    for cells in (
+        "--eC 0.5",
+        "--contamination high",
+        "--fatigue-load-limit 300N",
+        "--roughness 0.2um",
+    ):  # solve refuses each of them too
+        assert _solve(["6205", "-F", "1kN", "--speed", "3000", *cells.split()]).exit_code == 2
+
+
 def test_a_ring_by_hand_refuses_life_cells():
     out = _batch("balls,stiffness,load,speed\n8,1e5,1kN,3000\n", "--format", "csv")
     assert out.exit_code == 1

@@ -132,6 +132,7 @@ class BatchSolver:
                 if nu is not None and speed[i] is None:
                     bad.setdefault(i, "viscosity: needs the shaft speed (a speed cell) for the "
                                    "rated viscosity nu_1")  # fmt: skip
+        _check_needs(cols, len(rows), bad)
         return cols, bad
 
     def _keys(self, cols: dict[str, list[Any]], n: int, bad: dict[int, str]) -> list[Any]:
@@ -476,6 +477,33 @@ def _floats(value: Any, n: int) -> np.ndarray:
     if isinstance(value, list):
         return np.array([np.nan if x is None else x for x in value], dtype=float)
     return np.broadcast_to(np.asarray(value, dtype=float), (n,))
+
+
+#: Cells that feed only the modified life or the film (service_life.NEED_VISCOSITY). [-]
+_NEED_VISCOSITY = ("contamination", "ec", "fatigue_load_limit", "roughness")
+
+
+def _check_needs(cols: dict[str, list[Any]], n: int, bad: dict[int, str]) -> None:
+    """Rows that solve would refuse by :func:`bearingload.bearings.service_life._check_needs`,
+    refused row by row (that check is for a whole call: it ended the batch): a cell of
+    :data:`_NEED_VISCOSITY` without a viscosity, a contamination level with eC, a roughness
+    outside :data:`bearingload.bearings.service_life.ROUGHNESS`."""
+    from bearingload.bearings.service_life import ROUGHNESS
+
+    none: list[Any] = [None] * n
+    nu, level, ec, rough = (cols.get(c, none) for c in ("viscosity", "contamination", "ec",
+                                                         "roughness"))  # fmt: skip
+    for i in range(n):
+        given = [c for c in _NEED_VISCOSITY if cols.get(c, none)[i] is not None]
+        if given and nu[i] is None:
+            bad.setdefault(i, f"{'eC' if given[0] == 'ec' else given[0]}: feeds the modified "
+                           "life (a_ISO) or the film, which need the operating viscosity (a "
+                           "viscosity cell, with a speed): without it, it would be ignored")  # fmt: skip
+        elif level[i] is not None and ec[i] is not None:
+            bad.setdefault(i, "eC: give a contamination level or eC, not both (each gives e_C)")
+        elif rough[i] is not None and not ROUGHNESS[0] <= rough[i] <= ROUGHNESS[1]:
+            bad.setdefault(i, f"roughness: must lie between {ROUGHNESS[0]:g} and "
+                           f"{ROUGHNESS[1]:g} mm (0.1 nm to 100 um; got {rough[i]:g} mm)")  # fmt: skip
 
 
 def _check_range(name: str, values: list[Any], bad: dict[int, str]) -> None:
