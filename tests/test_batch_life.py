@@ -193,6 +193,19 @@ def test_life_cells_solve_refuses_skip_their_row_only():
         assert _solve(["6205", "-F", "1kN", "--speed", "3000", *cells.split()]).exit_code == 2
 
 
+def test_pressure_viscosity_without_a_viscosity_is_refused_as_in_solve():
+    """alpha feeds only the film, which needs the viscosity: it was silently ignored by solve
+    (--pressure-viscosity 5 without --viscosity printed no film and no error) and by batch."""
+    out = _solve(["6205", "-F", "1kN", "--speed", "3000", "--pressure-viscosity", "5"])
+    assert out.exit_code == 2
+    assert "Invalid value for '--pressure-viscosity': feeds the film" in out.stderr
+    text = "bearing,load,speed,viscosity,pressure_viscosity\n6205,1kN,3000,,5\n6205,1kN,3000,20,5\n"
+    out = _batch(text, "--format", "csv")
+    assert out.exit_code == 1
+    assert out.stderr.startswith("Warning: row 2: pressure_viscosity: feeds the modified life")
+    assert [r["row"] for r in _rows(out.stdout)] == ["3"]
+
+
 def test_a_ring_by_hand_refuses_life_cells():
     out = _batch("balls,stiffness,load,speed\n8,1e5,1kN,3000\n", "--format", "csv")
     assert out.exit_code == 1

@@ -479,8 +479,9 @@ def _floats(value: Any, n: int) -> np.ndarray:
     return np.broadcast_to(np.asarray(value, dtype=float), (n,))
 
 
-#: Cells that feed only the modified life or the film (service_life.NEED_VISCOSITY). [-]
-_NEED_VISCOSITY = ("contamination", "ec", "fatigue_load_limit", "roughness")
+#: Cells that feed only the modified life or the film (service_life.NEED_VISCOSITY and alpha,
+#: which solve refuses without --viscosity as well). [-]
+_NEED_VISCOSITY = ("contamination", "ec", "fatigue_load_limit", "roughness", "pressure_viscosity")
 
 
 def _check_needs(cols: dict[str, list[Any]], n: int, bad: dict[int, str]) -> None:

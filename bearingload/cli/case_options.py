@@ -592,6 +592,14 @@ class CaseOptions:
             else {"pressure_viscosity": self.pressure_viscosity * 1e-9}
         )
         viscosity, note = self.oil_viscosity()
+        if alpha and viscosity is None:  # alpha has a default: the library cannot tell it given
+            raise usage_error(
+                InputError(
+                    "pressure_viscosity",
+                    "feeds the film, which needs the operating viscosity ('viscosity', with "
+                    "'speed'): without it, it would be ignored",
+                )
+            )
         return Operating(
             speed=self.speed,
             reliability=self.reliability,
