@@ -380,3 +380,33 @@ def test_a_combined_rotating_cell_without_a_life_is_a_skipped_row(tmp_path):
     doc = json.loads(out.stdout)
     assert doc["cases"] == [] and [s["row"] for s in doc["skipped"]] == [2]
     assert "L10r needs the dynamic load rating C_r" in doc["skipped"][0]["reason"]
+
+
+def test_angular_rows_mixed_with_deep_groove_rows_equal_solve():
+    """An angular-contact row with a blank axial_load cell takes solve's default (F_a = 0, the
+    combined engine, as 'solve 7205B -F 2kN'); it was skipped ('solved by the combined engine
+    only'). Each row equals solve's csv, column by column, beside deep-groove rows."""
+    import csv as csv_module
+    import io as io_module
+
+    from click.testing import CliRunner
+
+    from bearingload.cli import main
+
+    rows = [("7205B", "2kN", "1kN"), ("6205", "2kN", "1kN"), ("7205B", "2kN", ""),
+            ("7205 BEP", "0", "1kN"), ("7205B", "2kN", "-1kN")]  # fmt: skip
+    text = "bearing,load,axial_load\n" + "".join(f"{b},{f},{a}\n" for b, f, a in rows)
+    out = CliRunner().invoke(main, ["batch", "-", "--format", "csv"], input=text)
+    assert out.exit_code == 1  # the reversed thrust of the last row only
+    assert out.stderr.startswith("Warning: row 6: axial_load: must be >= 0 N")
+    got = list(csv_module.DictReader(io_module.StringIO(out.stdout)))
+    assert [r["row"] for r in got] == ["2", "3", "4", "5"]
+    for row, (b, f, a) in zip(got, rows, strict=False):
+        one = CliRunner().invoke(main, ["solve", b, "-F", f, *(["-A", a] if a else []),
+                                        "--format", "csv"])  # fmt: skip
+        assert one.exit_code == 0, one.output
+        want = next(csv_module.DictReader(io_module.StringIO(one.stdout)))
+        shared = [k for k in want if k in row and k != "axial_load [N]"]
+        assert len(shared) > 25
+        assert {k: row[k] for k in shared} == {k: want[k] for k in shared}
+        assert float(row["axial_load [N]"]) == float(want["axial_load [N]"])

@@ -151,7 +151,7 @@ class BatchSolver:
             if i in bad:
                 continue
             try:
-                if loads and any(c[i] is not None for c in loads):
+                if loads and (any(c[i] is not None for c in loads) or self._angular(cols, i)):
                     keys[i] = self._combined_key(cols, i)
                 elif tilt is not None and tilt[i] is not None:
                     bad[i] = _TILT_ALONE
@@ -163,6 +163,12 @@ class BatchSolver:
                 bad[i] = row_message(exc)
         _ring_keys(cols, rings, keys, bad)
         return keys
+
+    def _angular(self, cols: dict[str, list[Any]], i: int) -> bool:
+        """Whether row ``i`` names an angular-contact bearing, which solve gives the combined
+        engine with F_a = 0 when no axial load is given (a blank cell takes solve's default)."""
+        v = self._row(cols, i)
+        return any(k in v for k in _GEOMETRY) and self._bearing(v).contact_angle is not None
 
     def _row(self, cols: dict[str, list[Any]], i: int) -> dict[str, Any]:
         return {k: v[i] for k, v in cols.items() if v[i] is not None}

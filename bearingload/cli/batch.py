@@ -52,7 +52,8 @@ def batch(
     row's engine: a cell in axial_load, moment, moment_cross or misalignment makes the row a
     combined-load case of a deep-groove ball bearing (3-D ring equilibrium, ISO/TS 16281 L10r,
     ISO 281 L10; load may then be 0), with tilt_radius (groove, pitch or a length) the lever
-    of its tilt; a row without such a cell is a radial case. A file with one of these columns
+    of its tilt; a row without such a cell is a radial case (an angular-contact bearing's, in
+    such a file, a combined one at F_a = 0, as solve). A file with one of these columns
     writes the columns solve writes with an axial load (a radial row of it fills those the two
     engines share), names a bearing or the ball geometry, and has no method, exponent or
     revolutions column. A tilt_radius cell without a combined load on its row is refused.
