@@ -210,3 +210,27 @@ def test_a_ring_by_hand_refuses_life_cells():
     out = _batch("balls,stiffness,load,speed\n8,1e5,1kN,3000\n", "--format", "csv")
     assert out.exit_code == 1
     assert "speed: needs a bearing or a ball geometry" in out.stderr
+
+
+def test_a_speed_whose_hours_overflow_skips_its_row_only():
+    """solve refuses --speed 1e-310 (L 10^6/(60 n) overflows); in batch that refusal ended the
+    whole file (exit 2, only the header written). Now the row is skipped with solve's reason and
+    the others are written as without it, radial and combined."""
+    for head, cells in (("bearing,load,speed,viscosity", "6205,2kN"),
+                        ("bearing,load,axial_load,speed,viscosity", "7205B,2kN,1kN")):  # fmt: skip
+        good = f"{cells},1500,20\n{cells},3000,\n"
+        text = f"{head}\n{cells},1e-310,20\n{good}{cells},1e-310,\n"
+        out = _batch(text, "--format", "csv")
+        assert out.exit_code == 1
+        errors = out.stderr.splitlines()
+        assert errors[0] == "Warning: row 2: speed: is so small that the life in hours " + (
+            "L 10^6/(60 n) overflows"
+        )
+        assert errors[1].startswith("Warning: row 5: speed: is so small")
+        assert _solve(["6205", "-F", "1kN", "--speed", "1e-310"]).exit_code == 2
+        alone = _rows(_batch(f"{head}\n{good}", "--format", "csv").stdout)
+        got = _rows(out.stdout)
+        assert [r["row"] for r in got] == ["3", "4"]
+        assert [{k: v for k, v in r.items() if k != "row"} for r in got] == [
+            {k: v for k, v in r.items() if k != "row"} for r in alone
+        ]

@@ -97,7 +97,7 @@ class BatchSolver:
             size = _call_size(key)
             for start in range(0, len(idx), size):
                 parts += _split(_ENGINES[key[0]], key, idx[start : start + size], cols, bad)
-        with_service(parts, cols)
+        with_service(parts, cols, bad)
         for i, message in bad.items():
             errors[numbers[i]] = message
         return _merged(parts, numbers, errors)
@@ -376,7 +376,7 @@ def _solve_combined(
     return out | {"_bearing": b, "_load": out["equivalent_load"], "_angle": angle}
 
 
-def with_service(parts: list[Part], cols: dict[str, list[Any]]) -> None:
+def with_service(parts: list[Part], cols: dict[str, list[Any]], bad: dict[int, str]) -> None:
     """Add to the bearing rows of ``parts`` the lives of
     :func:`bearingload.bearings.service_life.service_columns`: C_0 for every row, the others by
     the life cells each row gives (a value a row has not is None), and their warnings.
@@ -384,7 +384,9 @@ def with_service(parts: list[Part], cols: dict[str, list[Any]]) -> None:
     The rows of the block whose bearings share what the lives use (kind, C, C_0, the ball
     geometry; not the clearance) and that give the same life cells (and contamination level)
     are one call on arrays. Each part's hidden ``_bearing``, ``_load`` (P of L10 [N]) and
-    ``_angle`` (the contact angle of the heaviest ball [°]) are used and removed."""
+    ``_angle`` (the contact angle of the heaviest ball [°]) are used and removed. A row whose
+    lives solve would refuse (a speed so small that its life in hours overflows) is taken out of
+    its part, its reason in ``bad``."""
     from bearingload.bearings.service_life import service_columns
 
     present = [c for c in SERVICE_COLUMNS if c in cols]
@@ -409,19 +411,54 @@ def with_service(parts: list[Part], cols: dict[str, list[Any]]) -> None:
                 floats[p, key] = _floats(parts[p][1].get(key), len(parts[p][0]))
         return np.array([floats[p, key][j] for p, j in members], dtype=float)
 
-    for (same, _), members in groups.items():
-        rows = [parts[p][0][j] for p, j in members]
-        found = service_columns(_operating(cols, rows), _basis(bases[same], members, gathered))
-        for key, value in found.items():
-            values = np.broadcast_to(value, (len(members),)).tolist()
-            for (p, j), x in zip(members, values, strict=True):
-                column = parts[p][1].setdefault(key, [None] * len(parts[p][0]))
-                column[j] = None if x != x else x
-        _service_warnings(found.get("kappa"), _operating(cols, rows[:1]), bases[same], members,
-                          parts)  # fmt: skip
+    failed: dict[tuple[int, int], str] = {}
+    for (same, _), group in groups.items():
+
+        def call(members: list[tuple[int, int]], b: Any = bases[same]) -> dict[str, Any]:
+            rows = [parts[p][0][j] for p, j in members]
+            return service_columns(_operating(cols, rows), _basis(b, members, gathered))
+
+        for members, found in _bisected(group, call, failed):
+            rows = [parts[p][0][j] for p, j in members]
+            for key, value in found.items():
+                values = np.broadcast_to(value, (len(members),)).tolist()
+                for (p, j), x in zip(members, values, strict=True):
+                    column = parts[p][1].setdefault(key, [None] * len(parts[p][0]))
+                    column[j] = None if x != x else x
+            _service_warnings(found.get("kappa"), _operating(cols, rows[:1]), bases[same],
+                              members, parts)  # fmt: skip
     for _, out in parts:
         out.pop("_load", None)
         out.pop("_angle", None)
+    for p in sorted({p for p, _ in failed}, reverse=True):
+        idx, out = parts[p]
+        for j in (j for q, j in failed if q == p):
+            bad[idx[j]] = failed[p, j]
+        keep = [j for j in range(len(idx)) if (p, j) not in failed]
+        if not keep:
+            del parts[p]
+            continue
+        columns = {k: _over(v, len(idx)) for k, v in out.items()}
+        parts[p] = ([idx[j] for j in keep], {k: [v[j] for j in keep] if isinstance(v, list)
+                                             else np.asarray(v)[keep] for k, v in columns.items()})  # fmt: skip
+
+
+def _bisected(
+    members: list[tuple[int, int]],
+    call: Callable[[list[tuple[int, int]]], dict[str, Any]],
+    failed: dict[tuple[int, int], str],
+) -> list[tuple[list[tuple[int, int]], dict[str, Any]]]:
+    """``call`` on ``members`` at once; if that is refused, each half on its own, down to the
+    refused row, whose reason goes to ``failed`` (as :func:`_split` does for the engines)."""
+    try:
+        with np.errstate(all="ignore"):
+            return [(members, call(members))]
+    except BearingloadError as exc:
+        if len(members) == 1:
+            failed[members[0]] = row_message(exc)
+            return []
+    half = len(members) // 2
+    return _bisected(members[:half], call, failed) + _bisected(members[half:], call, failed)
 
 
 def _operating(cols: dict[str, list[Any]], rows: list[int]) -> Any:
