@@ -129,7 +129,7 @@ def viscosity_at(nu_40: ArrayLike, nu_100: ArrayLike, temperature: ArrayLike) ->
             "temperature",
             f"ASTM D341's Walther form covers {WALTHER_MIN:g} mm^2/s or more and finite; at "
             f"{np.asarray(temperature, dtype=float)} °C it gives {nu} mm^2/s for this oil: give "
-            "a temperature where it stays in that range, or the viscosity itself (--viscosity)",
+            "a temperature where it stays in that range, or the operating viscosity itself",
         )
     return scalar_out(nu)
 
