@@ -122,3 +122,15 @@ def test_cli_untabulated_angle_leaves_l10_and_p0_empty(capsys):
     assert case["equivalent_load"] is None and case["rating_life"] is None
     assert case["static_equivalent_load"] is None and case["static_safety"] is None
     assert case["reference_rating_life"] > 0  # L10r from the ball loads at any angle
+
+
+def test_cli_15_degrees_without_c0_says_why_l10_is_missing(capsys):
+    """At 15° e and Y depend on F_a/C_0: without C_0 no L10, P0 still given. The note said
+    only 'coded for 15, 25, 30 and 40°', as if L10 should be there."""
+    from tests.cli_helpers import run_entry
+
+    hand = [a for a in HAND[:-2] if a not in ("--static-rating", "14kN")]
+    code, out, err = run_entry(capsys, *hand, "--contact-angle", "15")
+    assert code == 0 and err == ""
+    assert "basic rating life L10" not in out and "static equivalent load P0" in out
+    assert "L10 at 15° needs C_0" in out
