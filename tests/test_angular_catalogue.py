@@ -131,3 +131,17 @@ def test_catalog_lists_and_shows_angular_rows(capsys):
     assert "NSK" in doc["source"] and "derived" in doc["notes"]
     code, out, err = run_entry(capsys, "catalog", "--type", "angular", "--series", "72")
     assert code == 2 and err.startswith("Error:") and "--type" in err
+
+
+@pytest.mark.parametrize("text", ["7205BDB", "7205BDF", "7205B/DT", "7205B DB", "7205AC/DBA"])
+def test_a_matched_pair_is_refused_not_solved_as_one_bearing(text):
+    """NSK's 7205BDB (back-to-back), DF, DT and the /DB forms name two bearings: they were
+    read past as maker suffixes and solved as one single-row 7205B."""
+    with pytest.raises(InputError, match="matched pair or set") as info:
+        resolve_bearing(text)
+    assert info.value.parameter == "bearing"
+
+
+@pytest.mark.parametrize("text", ["7205BECBP", "7205 BEP", "7205-B-TVP", "7205BEGA", "7205BTN"])
+def test_single_bearing_maker_suffixes_are_still_read(text):
+    assert resolve_bearing(text).contact_angle == 40.0

@@ -6,7 +6,8 @@ Designations read (the contact angle from the suffix or the GOST type):
   and ``AC`` 25°, ``A`` 30°, ``B`` 40° (NSK's angular-contact section: "a contact angle of 30°
   (Symbol A) or 40° (Symbol B)", C 15°, A5 25°; SKF's AC 25° and B 40°, SKF's older A 30° as a
   maker's page restates SKF's text). Maker suffixes after the letter (``7205 BEP``,
-  ``7205BECBP``, ``7205-B-TVP``, ``7205ACD``) are read past. A plain ``7205`` is not read:
+  ``7205BECBP``, ``7205-B-TVP``, ``7205ACD``) are read past, but a matched pair or set
+  (``7205BDB``, ``7205B/DF``, ``7205BDT``) is refused. A plain ``7205`` is not read:
   Nachi's plain 72xx is 30°, while GOST 3189 reads 7205 as a tapered roller bearing.
 * GOST 831-75 types ``36xxx`` (12°), ``46xxx`` (26°), ``66xxx`` (36°), e.g. ``46205``
   (GOST 831-75, clause 2, as restated at ajdocs.ru/gsp/49821/2; the K, K6, K7 variants are not
@@ -32,6 +33,9 @@ GOST_TYPE_ANGLES: dict[str, float] = {"3": 12.0, "4": 26.0, "6": 36.0}
 _ISO = re.compile(
     r"^(?P<series>7[023])(?P<bore>\d{2})\s*[-/]?\s*(?P<letter>A5|AC|A|B|C)(?P<rest>(?:[^0-9].*)?)$"
 )
+#: A matched pair or set after the contact-angle letter (NSK's 7205BDB, 7205BDF, 7205BDT; the
+#: /DB form; DBA ... DBD with a preload class): two bearings, not one.
+_PAIR = re.compile(r"D[BFT][A-D]?(?![A-Z])")
 _GOST = re.compile(r"^(?:[^-\s]{1,6}\s*-\s*)?(?P<design>[346])6(?P<series>[1-4])(?P<bore>\d{2})$")
 
 
@@ -158,6 +162,15 @@ def find_angular(parsed: AngularDesignation) -> AngularRow:
     InputError
         (``bearing``) when there is no row: names the type and the rows there are.
     """
+    m = _ISO.match(re.sub(r"\s+", " ", parsed.text.upper()))
+    if m and _PAIR.search(m.group("rest")):
+        raise InputError(
+            "bearing",
+            f"{parsed.text!r} names a matched pair or set of {parsed.name} (suffix DB "
+            "back-to-back, DF face-to-face or DT tandem), which bearingload does not model: it "
+            f"models one single-row bearing; give {parsed.name} with the load one bearing of "
+            "the set carries",
+        )
     for row in angular_rows():
         if row.designation == parsed.name:
             return row
