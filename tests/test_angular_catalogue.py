@@ -145,3 +145,14 @@ def test_a_matched_pair_is_refused_not_solved_as_one_bearing(text):
 @pytest.mark.parametrize("text", ["7205BECBP", "7205 BEP", "7205-B-TVP", "7205BEGA", "7205BTN"])
 def test_single_bearing_maker_suffixes_are_still_read(text):
     assert resolve_bearing(text).contact_angle == 40.0
+
+
+@pytest.mark.parametrize("name", ["life", "k", "kq"])
+def test_table_refuses_an_angular_designation_naming_it(capsys, name):
+    """table life --bearing 7205B was refused for '--clearances' (never given: the default
+    range), table k/kq for '--clearance'; --contact-angle is refused naming the bearing type."""
+    code, out, err = run_entry(capsys, "table", name, "--bearing", "7205B", "-F", "2kN")
+    assert code == 2 and out == ""
+    lines = err.strip().splitlines()
+    assert len(lines) == 1 and lines[0].startswith("Error: Invalid value for '--bearing'")
+    assert "angular-contact" in lines[0] and "'solve'" in lines[0]

@@ -120,6 +120,13 @@ def table(
         f"table {name}",
         "an angular-contact bearing is solved by 'solve' only (docs/angular_contact.md)",
     )
+    from bearingload.bearings.angular import parse_angular
+
+    if case.bearing is not None and parse_angular(case.bearing) is not None:  # as --contact-angle
+        raise click.UsageError(
+            f"Invalid value for '--bearing': {case.bearing.strip()!r} is an angular-contact "
+            f"bearing, solved by 'solve' and 'sweep', not by 'table {name}' (docs/angular_contact.md)"
+        )
     k_given = case.stiffness_value()  # N/mm^m
     refuse_range(case, f"table {name}")
     if name == "life":
