@@ -156,3 +156,16 @@ def test_table_refuses_an_angular_designation_naming_it(capsys, name):
     lines = err.strip().splitlines()
     assert len(lines) == 1 and lines[0].startswith("Error: Invalid value for '--bearing'")
     assert "angular-contact" in lines[0] and "'solve'" in lines[0]
+
+
+@pytest.mark.parametrize(
+    ("override", "parameter"),
+    [({"pitch_diameter": 10.0}, "pitch_diameter"), ({"ball_diameter": 20.0}, "ball_diameter"),
+     ({"balls": 100}, "balls")],
+)  # fmt: skip
+def test_values_given_by_hand_must_fit_the_rows_rings(override, parameter):
+    """7205B with d_m = 10 mm (bore 25 mm), D_w = 20 mm or 100 balls was solved (as a deep-groove
+    row refuses them, the ring check of the catalogue applies)."""
+    with pytest.raises(InputError) as info:
+        resolve_bearing("7205B", **override)
+    assert info.value.parameter == parameter

@@ -468,6 +468,9 @@ def _angular(
             "pitch_diameter": row.pitch_diameter, "f_i": fi, "f_o": fo}  # fmt: skip
     hand = {k: v if given[k] is None else given[k] for k, v in set_.items()}
     z, dw, dm = int(hand["balls"]), float(hand["ball_diameter"]), float(hand["pitch_diameter"])
+    from bearingload.bearings.catalog import check_geometry
+
+    check_geometry(row.d, row.D, z, dw, dm, fi, fo)  # values given by hand must fit the rings
     b = resolve_bearing(balls=z, ball_diameter=dw, pitch_diameter=dm, f_i=fi, f_o=fo,
                         modulus=modulus, poisson=poisson, stiffness=stiffness)  # fmt: skip
     name = Designation(parsed.text, parsed.standard, parsed.series, parsed.bore_code, parsed.bore,
