@@ -286,3 +286,20 @@ def test_cage_angle_in_arcmin():
     a = _json(*PEER, "-F", "1kN", "--cage-angle", "450arcmin")["cases"][0]
     assert a["cage_angle"] == 7.5
     assert math.isclose(a["ball_angles"][1], 7.5 + 360 / 7, rel_tol=1e-9)  # 10 digits
+
+
+@pytest.mark.parametrize(
+    "args",
+    [["solve", "7205B", "-F", "2kN", "-A", "1kN"], ["solve", "6205", "-F", "2kN", "-A", "1kN"],
+     ["sweep", "7205B", "-F", "2kN", "-A", "1kN"], ["table", "life", "-b", "6205", "-F", "2kN"]],
+)  # fmt: skip
+def test_a_dynamic_rating_beyond_its_range_is_named_in_every_engine(capsys, args):
+    """The radial engine refused -C 1e300 for its range; the combined engines overflowed L10 and
+    refused it as a bad '--load'."""
+    from tests.cli_helpers import run_entry
+
+    code, out, err = run_entry(capsys, *args, "-C", "1e300")
+    assert code == 2 and out == ""
+    assert err.strip() == (
+        "Error: Invalid value for '--dynamic-rating': must lie between 0 and 1e+09 N (got 1e+300 N)"
+    )

@@ -222,7 +222,11 @@ def _combined(
 
 
 def with_ratings(bearings: list[Any], case: CaseOptions) -> list[Any]:
-    """The resolved bearings with C_0 replaced by --static-rating where given."""
+    """The resolved bearings with C_0 replaced by --static-rating where given; --dynamic-rating
+    checked for its range (the combined engines take it as an argument: 1e300 N overflowed its
+    L10, refused as a bad --load)."""
+    if case.dynamic_rating is not None:
+        bearings[0].with_dynamic_rating(case.dynamic_rating)
     if case.static_rating is None:
         return bearings
     return [b.with_static_rating(case.static_rating) for b in bearings]

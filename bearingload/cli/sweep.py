@@ -146,10 +146,11 @@ def _combined(
     """The sweep under a combined load: one vectorised 3-D solve over the pitch, then emit."""
     from bearingload.cli.cases import bearing_context, resolve_bearings
     from bearingload.cli.options import print_warnings
+    from bearingload.cli.solve import with_ratings
     from bearingload.reports.combined_sweep import combined_sweep_report
     from bearingload.studies.combined_sweep import combined_sweep
 
-    b = resolve_bearings(case, case.stiffness_value())[0]
+    b = with_ratings(resolve_bearings(case, case.stiffness_value()), case)[0]
     result = combined_sweep(b, case.radial_load, steps=steps, **case.combined_arguments())
     if case.speed is not None:
         import dataclasses
