@@ -169,3 +169,13 @@ def test_values_given_by_hand_must_fit_the_rows_rings(override, parameter):
     with pytest.raises(InputError) as info:
         resolve_bearing("7205B", **override)
     assert info.value.parameter == parameter
+
+
+def test_catalog_show_takes_the_rows_maker_as_solve_does(capsys):
+    """solve 7205B --maker NSK is accepted (the row is NSK's); catalog show refused any --maker."""
+    code, out, err = run_entry(capsys, "catalog", "show", "7205B", "--maker", "NSK")
+    assert code == 0 and "7205B" in out
+    code, out, err = run_entry(capsys, "catalog", "show", "7205B", "--maker", "SKF")
+    assert code == 2 and "Invalid value for '--maker'" in err and "NSK's only" in err
+    code, out, err = run_entry(capsys, "solve", "7205B", "-F", "1kN", "--maker", "SKF")
+    assert code == 2 and "NSK's only" in err

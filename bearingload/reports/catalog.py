@@ -105,9 +105,9 @@ def _angular_entry(designation: str, fmt: str, maker: str | None) -> str | None:
     parsed = parse_angular(designation)
     if parsed is None:
         return None
-    if maker is not None:
-        raise InputError("maker", "the angular-contact rows have one maker each (NSK)")
     r = find_angular(parsed)
+    if maker is not None and maker.strip().upper() != r.maker:  # as solve 7205B --maker
+        raise InputError("maker", f"the angular-contact row {r.designation} is {r.maker}'s only")
     fields: list[tuple[str, str, Any, str]] = [
         ("designation", "designation", r.designation, ""),
         ("as_typed", "as typed", parsed.text, ""),
