@@ -20,7 +20,6 @@ from typing import TYPE_CHECKING, Any
 
 import numpy as np
 
-from bearingload import numerics
 from bearingload.bearings.resolve import ResolvedBearing
 from bearingload.errors import InputError
 
@@ -51,7 +50,6 @@ class CombinedCase:
     static_equivalent_load: float | None = None  # P0, ISO 76 [N]
     static_safety: float | None = None  # s0 = C0/P0 [-]
     moment_cross: float | None = None  # applied, about the load line; None: not given [N mm]
-    tilt_radius: float | None = None  # lever of the tilt used (given, or R_i: groove) [mm]
 
 
 def solve_combined_bearing(
@@ -164,16 +162,15 @@ def _combined_case(
     levers = [None] * len(q) if lever is None else each(lever)
     said = [lever_warning(x, b.pitch_diameter) for x in levers]
     checks = tuple(c + (w,) if w else c for c, w in zip(checks, said, strict=True))
-    lever = numerics.scalar_out(r.tilt_radius)  # the lever used: given, or R_i
     if shape == ():
         p_eq = None if p_eq is None else float(p_eq)
         life = None if life is None or np.isnan(life) else float(life)
         return CombinedCase(b, r, misalignment, rotating, c_r, p_eq, life,
                             None if l10r is None else float(l10r), checks[0],
                             None if p_i is None else float(p_i), None if p_o is None else float(p_o),
-                            p0[0], s0[0], moment_cross, lever)  # fmt: skip
+                            p0[0], s0[0], moment_cross)  # fmt: skip
     return CombinedCase(b, r, misalignment, rotating, c_r, p_eq, life, l10r, checks, p_i, p_o,
-                        p0, s0, moment_cross, lever)  # type: ignore[arg-type]  # fmt: skip
+                        p0, s0, moment_cross)  # type: ignore[arg-type]  # fmt: skip
 
 
 def warned_tilt(
@@ -397,7 +394,7 @@ def combined_columns(c: CombinedCase) -> dict[str, Any]:
     columns = case_columns(
         c.bearing, c.result, c.misalignment, c.rotating, c.dynamic_rating,
         c.equivalent_load, c.rating_life, c.reference_rating_life,
-        moment_cross=c.moment_cross, tilt_radius=c.tilt_radius,
+        moment_cross=c.moment_cross,
     )  # fmt: skip
     sel = c.static_equivalent_load  # (None: an angular contact angle without a coded Y0)
     for key in ("equivalent_load", "rating_life"):  # a moment alone, an F_a without f0: none
@@ -426,19 +423,18 @@ def case_columns(
     reference_rating_life: Any,
     *,
     moment_cross: Any = None,
-    tilt_radius: Any = None,
 ) -> dict[str, Any]:
     """Every quantity of the cases of ``r`` (one bearing) under its key of
     :mod:`bearingload.reports.quantities`: a numpy array over the cases, text, or None where a
     quantity is not given (no misalignment imposed, C_r unknown, no catalogue C0r and f0); the
-    applied ``moment_cross`` [N mm] only where given; the lever ``tilt_radius`` [mm] used (the
-    one given, else the solver's R_i)."""
+    applied ``moment_cross`` [N mm] only where given; the lever ``tilt_radius`` [mm] the solve
+    used (the one given, else R_i: :attr:`CombinedDistribution.tilt_radius`)."""
 
     def arr(value: Any, dtype: Any = float) -> Any:
         return None if value is None else np.atleast_1d(np.asarray(value, dtype=dtype))
 
     cross = {} if moment_cross is None else {"moment_cross": arr(moment_cross)}
-    lever = {"tilt_radius": arr(r.tilt_radius if tilt_radius is None else tilt_radius)}
+    lever = {"tilt_radius": arr(r.tilt_radius)}
     return {
         "bearing": b.designation or "given by hand",
         "method": "combined",
