@@ -25,7 +25,15 @@ from collections.abc import Callable
 
 import numpy as np
 
-from bearingload.models._combined_ring import FLOOR, ROUNDING, TOLERANCE, Problem, cap_step
+from bearingload.models._combined_ring import (
+    Problem,
+    ball_tangent,
+    cap_step,
+    hold,
+    residual_of,
+    sum_arms,
+    turns,
+)
 
 #: Newton steps at most; a case still going then is handed on as it is. [-]
 STEPS = 16
@@ -35,14 +43,6 @@ HALVINGS = 8
 HAND_ON = 1e-9
 
 Curve = Callable[[np.ndarray, np.ndarray, np.ndarray], np.ndarray]
-
-
-def _weighted(arms: np.ndarray, radial: np.ndarray, axial: np.ndarray) -> np.ndarray:
-    """``(radial c, radial s, axial, axial c, axial s)`` per ball, (n, 5, z)."""
-    terms = arms.copy()
-    terms[:, :2] *= radial[:, None]
-    terms[:, 2:] *= axial[:, None]
-    return terms
 
 
 def _state(p: Problem, v: np.ndarray, rows: np.ndarray, curve: Curve | None) -> tuple:
@@ -67,11 +67,11 @@ def _state(p: Problem, v: np.ndarray, rows: np.ndarray, curve: Curve | None) -> 
     else:
         kappa = np.where(delta > 0, curve(rows, ca, -sa * sa / (1.0 + ca)), 0.0)
     q = (1.0 + kappa) * delta * root
-    terms = _weighted(p.arms[rows], q * ca, q * sa)
-    gen = terms.sum(2)
+    arms = p.arms[rows]
+    gen = sum_arms(q * ca, q * sa, arms)
+    size = sum_arms(np.abs(q * ca), np.abs(q * sa), np.abs(arms))
+    res = residual_of(f, gen, size, locked)
     grad = np.where(locked, 0.0, gen - f)
-    ref = np.maximum(np.abs(f), (ROUNDING / TOLERANCE) * np.abs(terms).sum(2))
-    res = np.max(np.abs(grad) / np.where(f == 0, np.maximum(ref, FLOOR), ref), axis=1)
     energy = (q * delta).sum(1) / 2.5 - (np.where(locked, 0.0, f) * v).sum(1)
     return (ca, sa, rho, d, q, root, kappa, energy), grad, res
 
@@ -80,18 +80,9 @@ def _step(p: Problem, rows: np.ndarray, balls: tuple, grad: np.ndarray) -> np.nd
     """The Newton step of the cases ``rows`` (the stiffness frozen), 0 on the held components."""
     ca, sa, rho, d, q, root, kappa, _ = balls
     w1 = 1.5 * (1.0 + kappa) * root
-    inside = rho > 0
-    one_sided = p.one_sided[rows]
-    if one_sided.any():  # at u_j <= 0 (sa = 0) the normal does not turn
-        inside &= ~one_sided[:, None] | (sa > 0)
+    inside = turns(rho, sa, p.one_sided[rows])  # (sa has the sign of u)
     w2 = np.where(inside, q / np.where(d > 0, d, 1.0), 0.0)
-    arms = p.arms[rows]
-    g, h = _weighted(arms, ca, sa), _weighted(arms, -sa, ca)
-    hess = np.einsum("nz,niz,njz->nij", w1, g, g) + np.einsum("nz,niz,njz->nij", w2, h, h)
-    locked = p.locked[rows]
-    free = ~locked
-    hess *= free[:, :, None] & free[:, None, :]
-    hess += np.eye(5) * locked[:, None, :]
+    hess = hold(ball_tangent(p.arms[rows], ca, sa, w1, w2), p.locked[rows])
     hess += (1e-13 * np.trace(hess, axis1=1, axis2=2))[:, None, None] * np.eye(5)
     return cap_step(p, -np.linalg.solve(hess, grad[:, :, None])[:, :, 0], rows)
 

@@ -310,10 +310,10 @@ def forces(p: Problem, lo: Loads) -> tuple[np.ndarray, np.ndarray]:
     q0 = lo.q0[:, None]
     radial = lo.dq * lo.ca + q0 * lo.cam1
     axial = (lo.dq + q0) * lo.sa
-    gen = _sum_arms(radial, axial, p.arms)
+    gen = sum_arms(radial, axial, p.arms)
     w_r = np.abs(lo.dq * lo.ca) + q0 * np.abs(lo.cam1)
     w_a = (np.abs(lo.dq) + q0) * np.abs(lo.sa)
-    return gen, _sum_arms(w_r, w_a, np.abs(p.arms))
+    return gen, sum_arms(w_r, w_a, np.abs(p.arms))
 
 
 def _times_arms(radial: np.ndarray, axial: np.ndarray, arms: np.ndarray) -> np.ndarray:
@@ -325,7 +325,7 @@ def _times_arms(radial: np.ndarray, axial: np.ndarray, arms: np.ndarray) -> np.n
     return np.ascontiguousarray(terms.transpose(0, 2, 1))
 
 
-def _sum_arms(radial: np.ndarray, axial: np.ndarray, arms: np.ndarray) -> np.ndarray:
+def sum_arms(radial: np.ndarray, axial: np.ndarray, arms: np.ndarray) -> np.ndarray:
     """``sum_j (radial_j c_j, radial_j s_j, axial_j, axial_j c_j, axial_j s_j)`` (n, 5), the
     products formed in one array (the same sums, term by term, as five apart)."""
     terms = np.empty(arms.shape)
@@ -342,32 +342,58 @@ def residual(p: Problem, gen: np.ndarray, size: np.ndarray, held: np.ndarray) ->
     its load, or to the rounding of the sum it is (its terms 100 times the load, say, under an
     imposed tilt). A component without an applied load is also measured against FLOOR times
     the largest load (1 scaled): its terms may vanish at the answer with its residual. [-]"""
-    grad = np.where(held, 0.0, gen - p.f)
-    ref = np.maximum(np.abs(p.f), (ROUNDING / TOLERANCE) * size)
-    ref = np.where(p.f == 0, np.maximum(ref, FLOOR), ref)
+    return residual_of(p.f, gen, size, held)
+
+
+def residual_of(f: np.ndarray, gen: np.ndarray, size: np.ndarray, held: np.ndarray) -> np.ndarray:
+    """:func:`residual` of the applied forces ``f`` (n, 5) (the cases of a problem, taken or
+    not)."""
+    grad = np.where(held, 0.0, gen - f)
+    ref = np.maximum(np.abs(f), (ROUNDING / TOLERANCE) * size)
+    ref = np.where(f == 0, np.maximum(ref, FLOOR), ref)
     return np.max(np.abs(grad) / ref, axis=1)
 
 
 def hessian(p: Problem, b: Balls, lo: Loads, kappa: np.ndarray) -> np.ndarray:
     """d(forces)/dv (n, 5, 5) with the held components decoupled (unit rows)."""
     w1 = 1.5 * (1.0 + kappa) * lo.root
-    w2 = np.where(turns(p, b), lo.q / np.where(b.d > 0, b.d, 1.0), 0.0)
-    g = _times_arms(lo.ca, lo.sa, p.arms)
-    h = _times_arms(-lo.sa, lo.ca, p.arms)
-    hess = np.einsum("nz,nzi,nzj->nij", w1, g, g) + np.einsum("nz,nzi,nzj->nij", w2, h, h)
-    free = ~p.locked
+    w2 = np.where(turns(b.rho, b.u, p.one_sided), lo.q / np.where(b.d > 0, b.d, 1.0), 0.0)
+    return hold(ball_tangent(p.arms, lo.ca, lo.sa, w1, w2), p.locked)
+
+
+def ball_tangent(
+    arms: np.ndarray, ca: np.ndarray, sa: np.ndarray, w1: np.ndarray, w2: np.ndarray,
+    w3: np.ndarray | None = None,
+) -> np.ndarray:  # fmt: skip
+    """``sum_j w1 g g^T + w2 h h^T (+ w3 g h^T)`` (n, 5, 5): ``g_j`` the generalised direction of
+    ball j's contact normal ``(ca c, ca s, sa, sa c, sa s)``, ``h_j`` the direction in which it
+    turns (``ca``, ``sa`` replaced by ``-sa``, ``ca``); ``arms`` (n, 5, z) of :class:`Problem`.
+    With ``w1 = dQ/d(delta)``, ``w2 = Q/d`` and ``w3 = dQ/d(alpha)/d`` the tangent of the ring
+    forces."""
+    g = _times_arms(ca, sa, arms)
+    h = _times_arms(-sa, ca, arms)
+    t = np.einsum("nz,nzi,nzj->nij", w1, g, g) + np.einsum("nz,nzi,nzj->nij", w2, h, h)
+    if w3 is not None:
+        t += np.einsum("nz,nzi,nzj->nij", w3, g, h)
+    return t
+
+
+def hold(hess: np.ndarray, locked: np.ndarray) -> np.ndarray:
+    """``hess`` (n, 5, 5) with the ``locked`` components (n, 5) decoupled: unit rows and
+    columns (in place)."""
+    free = ~locked
     hess *= free[:, :, None] & free[:, None, :]
-    hess += np.eye(5) * p.locked[:, None, :]
+    hess += np.eye(5) * locked[:, None, :]
     return hess
 
 
-def turns(p: Problem, b: Balls) -> np.ndarray:
+def turns(rho: np.ndarray, u: np.ndarray, one_sided: np.ndarray) -> np.ndarray:
     """Balls whose contact normal turns with the ring (n, z): groove centres not crossed and,
-    one-sided, ``u_j > 0`` (at ``u_j <= 0`` the ball sits at 0° whatever ``u_j``: no curvature
-    across the groove)."""
-    inside = b.rho > 0
-    if p.one_sided.any():
-        inside &= ~p.one_sided[:, None] | (b.u > 0)
+    one-sided (``one_sided`` (n,)), ``u_j > 0`` (at ``u_j <= 0`` the ball sits at 0° whatever
+    ``u_j``: no curvature across the groove)."""
+    inside = rho > 0
+    if one_sided.any():
+        inside &= ~one_sided[:, None] | (u > 0)
     return inside
 
 

@@ -1032,18 +1032,15 @@ def _tangent(p: Problem, geo: _Geometry, point: _ring.Point, kappa: np.ndarray,
     case symmetric about the load line (``mirrored``: the balls and the loads) the couplings of
     (x, axial, tilt) with (y, tilt_cross) are 0, exactly rather than to rounding."""
     b, lo = point.b, point.lo
-    inside = _ring.turns(p, b)
+    inside = _ring.turns(b.rho, b.u, p.one_sided)
     d = np.where(b.d > 0, b.d, 1.0)
-    g = _ring._times_arms(lo.ca, lo.sa, p.arms)
-    h = _ring._times_arms(-lo.sa, lo.ca, p.arms)
     w1 = 1.5 * (1.0 + kappa) * lo.root
     w2 = np.where(inside, lo.q / d, 0.0)
-    t = np.einsum("nz,nzi,nzj->nij", w1, g, g) + np.einsum("nz,nzi,nzj->nij", w2, h, h)
+    w3 = None
     if curve is not None:
         dq = curve.slope(lo.ca, lo.cam1) * -lo.sa * lo.root**3  # dQ/d(alpha), scaled
         w3 = np.where(inside & (lo.root > 0), dq / d, 0.0)
-        cross = np.einsum("nz,nzi,nzj->nij", w3, g, h)
-        t += cross
+    t = _ring.ball_tangent(p.arms, lo.ca, lo.sa, w1, w2, w3)
     lever = np.ones((p.f.shape[0], 5))
     lever[:, 3:] = geo.R_i[:, None]
     t *= (p.f_ref / p.scale)[:, None, None] * lever[:, :, None] * lever[:, None, :]
