@@ -33,16 +33,10 @@ def catalog_list(
         columns=[
             Column("designation", "bearing", align="left"),
             Column("standard", "std", align="left"),
-            Column("d", "d", "mm", 5),
-            Column("D", "D", "mm", 5),
-            Column("B", "B", "mm", 5),
-            Column("balls", "z"),
-            Column("ball_diameter", "D_w", "mm", 5),
-            Column("pitch_diameter", "d_m", "mm", 5),
+            *_ring_columns(),
             Column("f_i", "f_i", "-", 3),
             Column("f_o", "f_o", "-", 3),
-            Column("C", "C", "N", 5),
-            Column("C0", "C0", "N", 5),
+            *_rating_columns(),
             Column("maker", "ball set", align="left"),
         ],
         rows=rows,
@@ -54,6 +48,18 @@ def catalog_list(
         ],
     )
     return render([table], fmt)
+
+
+def _ring_columns() -> list[Column]:
+    """d, D, B, z, D_w and d_m: the columns of a catalogue row's rings and ball set."""
+    return [Column("d", "d", "mm", 5), Column("D", "D", "mm", 5), Column("B", "B", "mm", 5),
+            Column("balls", "z"), Column("ball_diameter", "D_w", "mm", 5),
+            Column("pitch_diameter", "d_m", "mm", 5)]  # fmt: skip
+
+
+def _rating_columns() -> list[Column]:
+    """C and C0: the basic load ratings of a catalogue row."""
+    return [Column("C", "C", "N", 5), Column("C0", "C0", "N", 5)]
 
 
 def angular_list(fmt: str, bore: float | None = None) -> str:
@@ -77,14 +83,8 @@ def angular_list(fmt: str, bore: float | None = None) -> str:
         columns=[
             Column("designation", "bearing", align="left"),
             Column("contact_angle", "alpha_0", "°", 3),
-            Column("d", "d", "mm", 5),
-            Column("D", "D", "mm", 5),
-            Column("B", "B", "mm", 5),
-            Column("balls", "z"),
-            Column("ball_diameter", "D_w", "mm", 5),
-            Column("pitch_diameter", "d_m", "mm", 5),
-            Column("C", "C", "N", 5),
-            Column("C0", "C0", "N", 5),
+            *_ring_columns(),
+            *_rating_columns(),
             Column("maker", "ratings, ball set", align="left"),
         ],
         rows=rows,
