@@ -475,7 +475,7 @@ def _operating(cols: dict[str, list[Any]], rows: list[int]) -> Any:
         speed=given("speed"), reliability=given("reliability"), viscosity=given("viscosity"),
         contamination=cols["contamination"][rows[0]] if "contamination" in cols else None,
         e_c=given("ec"), fatigue_load_limit=given("fatigue_load_limit"),
-        roughness=given("roughness"), **({} if alpha is None else {"pressure_viscosity": alpha}),
+        roughness=given("roughness"), pressure_viscosity=alpha,
     )  # fmt: skip
 
 
@@ -522,23 +522,23 @@ def _floats(value: Any, n: int) -> np.ndarray:
     return np.broadcast_to(np.asarray(value, dtype=float), (n,))
 
 
-#: Cells that feed only the modified life or the film (service_life.NEED_VISCOSITY and alpha,
-#: which solve refuses without --viscosity as well). [-]
-_NEED_VISCOSITY = ("contamination", "ec", "fatigue_load_limit", "roughness", "pressure_viscosity")
+#: The batch column of a library parameter, where the two are spelled apart. [-]
+_CELL_OF = {"e_c": "ec"}
 
 
 def _check_needs(cols: dict[str, list[Any]], n: int, bad: dict[int, str]) -> None:
     """Rows that solve would refuse by :func:`bearingload.bearings.service_life._check_needs`,
     refused row by row (that check is for a whole call: it ended the batch): a cell of
-    :data:`_NEED_VISCOSITY` without a viscosity, a contamination level with eC, a roughness
+    :data:`~bearingload.bearings.service_life.NEED_VISCOSITY` without a viscosity, a contamination level with eC, a roughness
     outside :data:`bearingload.bearings.service_life.ROUGHNESS`."""
-    from bearingload.bearings.service_life import ROUGHNESS
+    from bearingload.bearings.service_life import NEED_VISCOSITY, ROUGHNESS
 
+    need = [_CELL_OF.get(name, name) for name in NEED_VISCOSITY]
     none: list[Any] = [None] * n
     nu, level, ec, rough = (cols.get(c, none) for c in ("viscosity", "contamination", "ec",
                                                          "roughness"))  # fmt: skip
     for i in range(n):
-        given = [c for c in _NEED_VISCOSITY if cols.get(c, none)[i] is not None]
+        given = [c for c in need if cols.get(c, none)[i] is not None]
         if given and nu[i] is None:
             bad.setdefault(i, f"{'eC' if given[0] == 'ec' else given[0]}: feeds the modified "
                            "life (a_ISO) or the film, which need the operating viscosity (a "

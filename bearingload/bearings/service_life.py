@@ -42,8 +42,9 @@ class Operating:
         C_u, instead of ISO 281's estimate from C_0. [N]
     roughness : float or None
         Composite rms roughness sigma = sqrt(sigma_1^2 + sigma_2^2) of the surfaces. [mm]
-    pressure_viscosity : float
-        alpha of the lubricant. [1/Pa]
+    pressure_viscosity : float or None
+        alpha of the lubricant; None: :data:`bearingload.bearings.lubrication.PRESSURE_VISCOSITY`
+        (a mineral oil; see :attr:`alpha`). [1/Pa]
     viscosity_note : str or None
         Where the viscosity comes from (an oil at its temperature), for the notes.
     """
@@ -55,8 +56,14 @@ class Operating:
     e_c: float | None = None
     fatigue_load_limit: float | None = None
     roughness: float | None = None
-    pressure_viscosity: float = lub.PRESSURE_VISCOSITY
+    pressure_viscosity: float | None = None
     viscosity_note: str | None = None
+
+    @property
+    def alpha(self) -> Any:
+        """The pressure-viscosity coefficient used: the one given, or a mineral oil's. [1/Pa]"""
+        given = self.pressure_viscosity
+        return lub.PRESSURE_VISCOSITY if given is None else given
 
 
 @dataclass(frozen=True)
@@ -182,7 +189,7 @@ def service_columns(op: Operating, b: LifeBasis) -> dict[str, Any]:
 #: The composite rms roughness taken: from below an atom's size to a rough turned surface. [mm]
 ROUGHNESS = (1e-7, 0.1)
 #: Inputs that feed only the modified life or the film, both of which need the viscosity. [-]
-NEED_VISCOSITY = ("contamination", "e_c", "fatigue_load_limit", "roughness")
+NEED_VISCOSITY = ("contamination", "e_c", "fatigue_load_limit", "roughness", "pressure_viscosity")
 
 
 def _check_needs(op: Operating) -> None:
@@ -191,10 +198,12 @@ def _check_needs(op: Operating) -> None:
     if op.viscosity is None:
         for name in NEED_VISCOSITY:
             if getattr(op, name) is not None:
+                fed = "the film, which needs" if name == "pressure_viscosity" else (
+                    "the modified life (a_ISO) or the film, which need")  # fmt: skip
                 raise InputError(
                     name,
-                    "feeds the modified life (a_ISO) or the film, which need the operating "
-                    "viscosity ('viscosity', with 'speed'): without it, it would be ignored",
+                    f"feeds {fed} the operating viscosity ('viscosity', with 'speed'): without "
+                    "it, it would be ignored",
                 )
     if op.roughness is not None and not np.all(
         (np.asarray(op.roughness, dtype=float) >= ROUGHNESS[0])
@@ -257,7 +266,7 @@ def _film_note(op: Operating, b: LifeBasis) -> list[str]:
             if b.kind == "ball"
             else "outer), Dowson-Higginson (1977) line contact"
         )
-        + f", alpha = {op.pressure_viscosity:.3g} 1/Pa, rho = {lub.OIL_DENSITY:g} kg/m^3; "
+        + f", alpha = {op.alpha:.3g} 1/Pa, rho = {lub.OIL_DENSITY:g} kg/m^3; "
         "film ratio = h_min/sigma (--roughness, composite rms): information beside kappa."
     ]
 
@@ -342,15 +351,12 @@ def _film(op: Operating, b: LifeBasis) -> Any:
         if b.f_i is None or b.f_o is None:
             return None
         radii = lub.ball_radii(b.ball_diameter, b.pitch_diameter, b.f_i, b.f_o, b.contact_angle)
-        films = [
-            lub.film_point(q, rx, ry, e_prime, op.viscosity, u, op.pressure_viscosity)
-            for rx, ry in radii
-        ]
+        films = [lub.film_point(q, rx, ry, e_prime, op.viscosity, u, op.alpha) for rx, ry in radii]
     else:
         if b.roller_length is None:
             return None
         films = [
-            lub.film_line(q, b.roller_length, rx, e_prime, op.viscosity, u, op.pressure_viscosity)
+            lub.film_line(q, b.roller_length, rx, e_prime, op.viscosity, u, op.alpha)
             for rx in lub.rolling_radii(b.ball_diameter, b.pitch_diameter, b.contact_angle)
         ]
     return _arr(np.where(loaded, np.minimum(*films), np.nan))

@@ -586,20 +586,8 @@ class CaseOptions:
         (:class:`bearingload.bearings.service_life.Operating`; alpha in 1/Pa)."""
         from bearingload.bearings.service_life import Operating
 
-        alpha = (
-            {}
-            if self.pressure_viscosity is None
-            else {"pressure_viscosity": self.pressure_viscosity * 1e-9}
-        )
+        alpha = None if self.pressure_viscosity is None else self.pressure_viscosity * 1e-9
         viscosity, note = self.oil_viscosity()
-        if alpha and viscosity is None:  # alpha has a default: the library cannot tell it given
-            raise usage_error(
-                InputError(
-                    "pressure_viscosity",
-                    "feeds the film, which needs the operating viscosity ('viscosity', with "
-                    "'speed'): without it, it would be ignored",
-                )
-            )
         return Operating(
             speed=self.speed,
             reliability=self.reliability,
@@ -609,7 +597,7 @@ class CaseOptions:
             e_c=self.e_c,
             fatigue_load_limit=self.fatigue_load_limit,
             roughness=self.roughness,
-            **alpha,
+            pressure_viscosity=alpha,
         )
 
     def oil_viscosity(self) -> tuple[float | None, str | None]:
