@@ -146,3 +146,16 @@ def test_the_named_stiffnesses_are_the_diagonal():
     many = solve_combined(9, [1400.0, 100.0], 700.0, clearance=0.0125, **G6205)
     assert many.stiffness_matrix.shape == (2, 5, 5)
     np.testing.assert_array_equal(many.stiffness_matrix[0], m)  # no case depends on the others
+
+
+def test_a_coupling_below_rounding_is_zero_whatever_the_order_of_the_sum():
+    """Under a pure axial load every ball carries the same load: the couplings of the axial and
+    tilt rows with x vanish in exact arithmetic (sum_j cos phi_j = 0). Summed in floating point
+    they were rounding (6.5e-12 N/mm beside 1.1e6, in the order the balls were summed); they are
+    reported as 0, while a real coupling (x with tilt) stays."""
+    r = solve_combined(
+        7, 0.0, 1000.0, ball_diameter=11.5, pitch_diameter=43.5, clearance=0.01, modulus=210000.0
+    )
+    k = np.asarray(r.stiffness_matrix)
+    assert k[0, 2] == 0.0 and k[2, 0] == 0.0 and k[2, 3] == 0.0
+    assert k[0, 3] > 1e-3 * math.sqrt(k[0, 0] * k[3, 3])

@@ -372,9 +372,12 @@ def ball_tangent(
     forces."""
     g = _times_arms(ca, sa, arms)
     h = _times_arms(-sa, ca, arms)
-    t = np.einsum("nz,nzi,nzj->nij", w1, g, g) + np.einsum("nz,nzi,nzj->nij", w2, h, h)
+    # one stacked product (n, 5, 2z) @ (n, 2z, 5): a three-operand einsum is 4-5 times slower
+    both = np.concatenate((g, h), axis=1)
+    weighted = np.concatenate((g * w1[:, :, None], h * w2[:, :, None]), axis=1)
+    t = weighted.transpose(0, 2, 1) @ both
     if w3 is not None:
-        t += np.einsum("nz,nzi,nzj->nij", w3, g, h)
+        t += (g * w3[:, :, None]).transpose(0, 2, 1) @ h
     return t
 
 
