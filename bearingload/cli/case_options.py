@@ -98,14 +98,17 @@ class Temperature(click.ParamType):
             number = float(match.group(1)) if match else float("nan")
         except ValueError:
             number = float("nan")
-        if (
-            not -60.0
-            <= (celsius := number - 273.15 if match and match.group(2) == "K" else number)
-            <= 250.0
-        ):
+        celsius = number - 273.15 if match and match.group(2) == "K" else number
+        if not -60.0 <= celsius <= 250.0:
+            as_kelvin = number - 273.15  # a bare number meant in kelvin, where that fits
+            hint = (
+                f"; did you mean {number:g}K ({as_kelvin:g} °C)?"
+                if match and match.group(2) is None and -60.0 <= as_kelvin <= 250.0
+                else ""
+            )
             self.fail(
                 f"{value!r}: give the operating temperature in °C (70, 70C) or K (343.15K), "
-                "-60 to 250 °C",
+                f"-60 to 250 °C{hint}",
                 param,
                 ctx,
             )
