@@ -89,15 +89,24 @@ def plausible_ranges_help(kind: str, parameter: str | None = None) -> str:
     return f"a bare number outside {low:g} to {high:g} {BASE_UNIT[kind]} is refused"
 
 
-def _likely(value: float, kind: str, low: float) -> str:
-    """The unit a bare, implausible number most likely meant, written with the number."""
-    if kind == "modulus":
-        return f"{value:g}GPa" if value < low else f"{value:g}Pa"
-    if kind == "speed":
-        return f"{value:g} in another unit (e.g. {value:g}rad/s), or a number below 1e6 rpm"
-    if kind == "viscosity":
-        return f"{value:g}m^2/s" if value < low else f"{value:g}cSt, written with its unit"
-    return f"{value:g}um"
+#: The units a bare, implausible number may have been meant in, most likely first, per kind
+#: (spellings of one factor once; the base unit's synonyms, cSt for mm^2/s, never help).
+HINT_UNITS = {
+    "modulus": ("GPa", "Pa"),
+    "length": ("um", "in", "m"),
+    "viscosity": ("m^2/s",),
+}
+
+
+def likely_unit(value: float, kind: str, name: str) -> str | None:
+    """``value`` written with the first unit of :data:`HINT_UNITS` that makes it plausible for
+    the parameter ``name`` (``210GPa``), or None where no unit does (a bare speed of 1e9: every
+    speed unit is larger than rpm)."""
+    low, high, _ = PLAUSIBLE_BARE.get((kind, name)) or PLAUSIBLE_BARE[(kind, None)]
+    for unit in HINT_UNITS.get(kind, ()):
+        if low <= value * UNITS[kind][unit] < high:
+            return f"{value:g}{unit}"
+    return None
 
 
 #: Kinds whose bare numbers <= 0 are left to the option's own positivity check.
@@ -111,11 +120,15 @@ def _check_plausible(value: float, kind: str, name: str, text: object) -> None:
     from bearingload.errors import InputError
 
     low, high, what = rule
+    base = BASE_UNIT[kind]
+    meant = likely_unit(value, kind, name)
+    hint = f": did you mean {meant}?" if meant is not None else "."
+    lowest = f"above {low:g}" if kind in _SIGNED and low == 0 else f"at least {low:g}"
     raise InputError(
         name,
-        f"a bare {text} is {value:g} {BASE_UNIT[kind]}, implausible for {what} (bare numbers are "
-        f"{BASE_UNIT[kind]}; plausible {low:g} to {high:g} {BASE_UNIT[kind]}): did you mean "
-        f"{_likely(value, kind, low)}? Write the unit to use the number as it is.",
+        f"a bare {text} is {value:g} {base}, implausible for {what} (bare numbers are {base}; "
+        f"plausible {lowest} and below {high:g} {base}){hint} Write the unit to use the number "
+        "as it is.",
     )
 
 

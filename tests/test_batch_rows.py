@@ -168,3 +168,37 @@ def test_batch_reads_a_roller_rows_stiffness_in_its_own_unit_beside_an_exponent_
         assert [line.split(",")[0] for line in r.stdout.splitlines()[1:]] == ["2", "4"]
         assert r.stderr.startswith("Warning: row 3: stiffness: the unit 'kgf/mm^1.5'")
         assert _csv_values(r.stdout)["q_max [N]"] == _csv_values(solved.stdout)["q_max [N]"]
+
+
+@pytest.mark.parametrize("chunk", ["1", "100"])
+def test_a_trailing_comma_in_the_header_is_an_empty_column_that_rows_may_leave_empty(chunk):
+    """A spreadsheet's export 'balls,load,clearance,' (a trailing comma on every line) was
+    refused as an unknown column ''. Its empty trailing column is accepted with its empty cells
+    (with or without the trailing comma on a row); a value in it skips that row, named."""
+    plain = _batch("balls,load,stiffness,clearance\n9,1000,1e5,0.01\n8,500,1e5,0\n", "--chunk-size",
+                   chunk)  # fmt: skip
+    trailing = _batch("balls,load,stiffness,clearance,\n9,1000,1e5,0.01,\n8,500,1e5,0\n",
+                      "--chunk-size", chunk)  # fmt: skip
+    assert plain.exit_code == trailing.exit_code == 0, trailing.output
+    assert trailing.stdout == plain.stdout
+    filled = _batch("balls,load,stiffness,clearance,,\n9,1000,1e5,0.01,,\n8,500,1e5,0, ,7\n",
+                    "--chunk-size", chunk)  # fmt: skip
+    assert filled.exit_code == 1
+    assert filled.stderr.startswith(
+        "Warning: row 3: a value ('7') in a column the header gives no name (after its last "
+        "column 'clearance')"
+    )
+    assert [line.split(",")[0] for line in filled.stdout.splitlines()[1:]] == ["2"]
+
+
+def test_an_empty_column_name_inside_the_header_is_named(tmp_path, capsys):
+    from .cli_helpers import run_entry
+
+    path = tmp_path / "cases.csv"
+    path.write_text("balls,,load\n9,1,1000\n", encoding="utf-8")
+    code, out, err = run_entry(capsys, "batch", str(path))
+    assert code == 2 and out == ""
+    assert err.strip().splitlines() == [
+        "Error: Invalid value for 'CASES.csv': the header's column 2 has no name (only empty "
+        "columns at the end of the header are allowed, and their cells must be empty)"
+    ]

@@ -176,3 +176,27 @@ def test_the_default_tilt_lever_is_reported_as_a_number():
     assert lever == pytest.approx(r.tilt_radius, rel=1e-6)
     assert 19.25 < lever < 19.25 + 0.02 * 7.938
     assert "tilt lever 19.4" in invoke("solve", "6205", "-F", "1.4kN", "-A", "700N").output
+
+
+@pytest.mark.parametrize(
+    ("args", "where"),
+    [
+        (["6205", "-F", "1kN", "-A", "300N"], "the combined engine"),
+        (["7205B", "-F", "1kN"], "the combined engine"),
+        (["-z", "9", "-F", "1000", "-K", "1e5"], "a ring given by its balls and stiffness"),
+    ],
+)
+def test_revolutions_where_no_allowable_load_is_printed_is_refused(args, where, capsys):
+    """--revolutions sets L of the radial engine's allowable load C/(L/10^6)^(1/3); with an
+    axial load (the combined engine) or a ring without C it was silently ignored."""
+    from .cli_helpers import run_entry
+
+    code, out, err = run_entry(capsys, "solve", *args, "--revolutions", "1e8")
+    lines = err.strip().splitlines()
+    assert code == 2 and out == "" and len(lines) == 1, lines
+    assert lines[0].startswith(f"Error: --revolutions cannot be used with {where}")
+    assert "C/(L/10^6)^(1/3)" in lines[0]
+    # the default (not given) is no refusal; the radial engine of a bearing uses it
+    assert run_entry(capsys, "solve", *args)[0] == 0
+    code, out, _ = run_entry(capsys, "solve", "6205", "-F", "1kN", "--revolutions", "1e8")
+    assert code == 0 and "100.000  10^6 rev" in out

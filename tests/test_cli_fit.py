@@ -226,3 +226,45 @@ def test_entry_point_error_in_a_fresh_interpreter(tmp_path):
 def test_help_has_examples():
     text = invoke("fit", "--help").output
     assert "Examples:" in text and "--base 200kgf:0.8mm --base 1000kgf:1.67mm" in text
+
+
+def _numeric_keys(node: object, counts: tuple[str, ...] = ("points", "balls", "row")) -> set:
+    """The keys of every number (or list of numbers) in a JSON tree, counts left out; a dict of
+    numbers (K_Q by model) counts as its key."""
+    keys: set = set()
+    items = (
+        node.items()
+        if isinstance(node, dict)
+        else enumerate(node if isinstance(node, list) else [])
+    )
+    for key, value in items:
+        leaf = value
+        while isinstance(leaf, list) and leaf:
+            leaf = leaf[0]
+        numeric_dict = isinstance(value, dict) and all(
+            isinstance(v, (int, float)) or v is None for v in value.values()
+        )
+        if isinstance(key, str) and key not in counts and key != "units":
+            if (isinstance(leaf, (int, float)) and not isinstance(leaf, bool)) or numeric_dict:
+                keys.add(key)
+        if isinstance(value, (dict, list)) and key != "units" and not numeric_dict:
+            keys |= _numeric_keys(value, counts)
+    return keys
+
+
+def test_json_carries_a_units_map_like_every_json_of_the_tool():
+    """Every measured number of fit's JSON has its unit in ``units`` ('-' when dimensionless),
+    as solve, sweep, batch and the tables write theirs (fit had none)."""
+    doc = json.loads(invoke("fit", EXAMPLE, *PAPER, "--balls", "9", "--format", "json").output)
+    assert "units" in doc
+    missing = _numeric_keys(doc) - set(doc["units"])
+    assert not missing, missing
+    units = doc["units"]
+    assert units["load"] == units["residuals"] == units["fit_two_point"] == "kgf"
+    assert (
+        units["displacement"] == "mm" and units["C"] == "kgf/mm^n" and units["C_N_mm"] == "N/mm^n"
+    )
+    assert units["n"] == units["r_squared"] == units["sigma_bar_two_point"] == "-"
+    assert units["K_Q"] == units["hertz_exponent"] == "-"
+    um = json.loads(invoke("fit", EXAMPLE, "--displacement-unit", "um", "--format", "json").output)
+    assert um["units"]["displacement"] == "um" and um["units"]["load"] == "N"

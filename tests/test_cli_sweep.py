@@ -167,3 +167,56 @@ def test_sweep_help_and_solve_import_no_matplotlib():
         env=env,
     )
     assert fresh.stdout.strip() == "False"
+
+
+def _sweep_json(*args: str) -> dict:
+    out = invoke("sweep", *args, "--format", "json")
+    assert out.exit_code == 0, out.output
+    return json.loads(out.output)
+
+
+def test_life_inputs_alone_keep_the_radial_engine_and_give_its_lives():
+    """--rotating, --dynamic-rating or --speed without a load option switched sweep to the
+    combined engine (another report; NU205 -C refused as 'a roller bearing'): input that only
+    feeds the lives must not change the engine. The radial sweep now carries them: L10r at each
+    cage position equal to solve's radial L10r there and to the combined sweep's (F_a = 0);
+    L10 and L10h the same at every position; the ball loads those of the plain sweep."""
+    base = ["6205", "-F", "1.4kN", "--steps", "5"]
+    plain = _sweep_json(*base)
+    lives = _sweep_json(*base, "--rotating", "outer", "--speed", "3000")
+    assert "stiffness_matrix" in lives["rows"][0] and "axial" not in lives["rows"][0]
+    for key in ("x", "y", "q_max", "stiffness_radial"):
+        assert [r[key] for r in lives["rows"]] == [r[key] for r in plain["rows"]]
+    assert lives["summary"]["rating_life"] == pytest.approx(1000.0)  # (14 kN / 1.4 kN)^3
+    assert lives["summary"]["rating_life_hours"] == pytest.approx(1000.0e6 / (60 * 3000))
+    assert lives["units"]["reference_rating_life"] == "10^6 rev"
+    assert lives["units"]["reference_rating_life_hours"] == "h"
+    combined = _sweep_json(*base, "-A", "0", "--rotating", "outer", "--speed", "3000")
+    for row, other in zip(lives["rows"], combined["rows"], strict=True):
+        assert row["reference_rating_life"] == pytest.approx(
+            other["reference_rating_life"], rel=1e-9
+        )
+        alone = json.loads(invoke("solve", "6205", "-F", "1.4kN", "--rotating", "outer",
+                                  "--cage-angle", repr(row["cage_angle"]),
+                                  "--format", "json").output)["cases"][0]  # fmt: skip
+        assert row["reference_rating_life"] == pytest.approx(
+            alone["reference_rating_life"], rel=1e-9
+        )
+        assert row["reference_rating_life_hours"] == pytest.approx(
+            row["reference_rating_life"] * 1e6 / (60 * 3000), rel=1e-9
+        )
+    rated = _sweep_json("NU205", "-F", "1kN", "--steps", "3", "-C", "20kN")
+    assert rated["summary"]["rating_life"] == pytest.approx(20.0 ** (10 / 3))
+    assert [r["q_max"] for r in rated["rows"]] == [
+        r["q_max"] for r in _sweep_json("NU205", "-F", "1kN", "--steps", "3")["rows"]
+    ]
+
+
+def test_rotating_is_refused_where_solve_refuses_it(capsys):
+    """A roller bearing has no L10r for --rotating to select the ring of: the radial sweep
+    refuses it with solve's message (it was refused as a roller under the combined engine)."""
+    code, _, err = run_entry(capsys, "sweep", "NU205", "-F", "1kN", "--rotating", "inner")
+    code_solve, _, err_solve = run_entry(capsys, "solve", "NU205", "-F", "1kN", "--rotating",
+                                         "inner")  # fmt: skip
+    assert code == code_solve == 2 and err == err_solve and err.count("\n") == 1
+    assert "L10r is computed for ball bearings only" in err

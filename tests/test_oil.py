@@ -5,16 +5,23 @@ from __future__ import annotations
 
 import csv
 import io
+import math
 import random
 
 import mpmath
+import numpy as np
 import pytest
 from click.testing import CliRunner
 
 from bearingload.bearings.oil import (
+    DEFAULT_VISCOSITY_INDEX,
     ISO_VG,
+    d2270_table,
     iso_grade,
+    reference_viscosities,
+    viscosity_100_of_index,
     viscosity_at,
+    viscosity_index,
     walther_constants,
     walther_viscosity,
 )
@@ -117,7 +124,15 @@ def test_solve_with_the_oil_equals_solve_with_its_viscosity():
     ("args", "message"),
     [
         (["--oil", "VG68", "--viscosity-100", "8.6"], "Missing option '--temperature'"),
-        (["--oil", "VG68", "--temperature", "70"], "Missing option '--viscosity-100'"),
+        (["--oil", "VG5", "--temperature", "70"], "'--viscosity-index': the default VI 95"),
+        (["--oil", "VG68", "--temperature", "70", "--viscosity-index", "1e9"],
+         "'--viscosity-index': an oil of 68 mm^2/s at 40 °C has by ASTM D2270 a VI from"),
+        (["--oil", "VG68", "--temperature", "70", "--viscosity-index", "nan"],
+         "'--viscosity-index': must be a finite number"),
+        (["--oil", "VG68", "--temperature", "70", "--viscosity-index", "95", "--viscosity-100",
+          "8"], "--viscosity-index cannot be used with --viscosity-100"),
+        (["--viscosity", "20", "--viscosity-index", "95"],
+         "--viscosity-index cannot be used with --viscosity"),
         (["--oil", "VG67", "--viscosity-100", "8.6", "--temperature", "70"], "'--oil'"),
         (["--viscosity", "20", "--oil", "VG68"], "--oil cannot be used with --viscosity"),
         (["--oil", "VG68", "--viscosity-40", "60", "--viscosity-100", "8", "--temperature", "70"],
@@ -131,3 +146,105 @@ def test_bad_oil_options_are_one_error_line(args, message, capsys):
     assert code == 2 and out == ""
     lines = err.strip().splitlines()
     assert len(lines) == 1 and lines[0].startswith("Error: ") and message in lines[0], lines
+
+
+# ASTM D2270, its worked examples as restated at dgaequipment.com ("ASTM D2270 for calculating
+# viscosity index", 5.1.4 and 6.1.4): Procedure A, 73.30 and 8.86 mm^2/s: L = 119.94, H = 69.48 by
+# interpolation in Table 1, VI = 92.43 -> 92; Procedure B, 22.83 and 5.05 mm^2/s: H = 28.97,
+# N = 0.14708, VI = 156.37 -> 156.
+
+
+def test_d2270_reproduces_the_standards_worked_examples():
+    low, high = reference_viscosities(8.86)
+    assert round(low, 2) == 119.94 and round(high, 2) == 69.48
+    assert round(viscosity_index(73.30, 8.86), 2) == 92.43
+    assert round(viscosity_index(73.30, 8.86)) == 92
+    assert round(reference_viscosities(5.05)[1], 2) == 28.97
+    # the standard rounds H to 28.97 and N to 0.14708 before its 156.37
+    assert viscosity_index(22.83, 5.05) == pytest.approx(156.37, abs=0.06)
+    assert round(viscosity_index(22.83, 5.05)) == 156
+
+
+def test_d2270_table_is_the_standards_grid_and_meets_its_formulas_at_70():
+    """Table 1: nu_100 = 2.0 (0.1) 20.0, 20.2 (0.2) 30.0, 30.5 (0.5) 70.0 mm^2/s, 311 rows, L and H
+    rising; the formulas used above 70 mm^2/s meet its last row within 0.03 %."""
+    nu, low, high = d2270_table()
+    grid = [2.0 + i / 10 for i in range(181)] + [20.2 + i / 5 for i in range(50)]
+    grid += [30.5 + i / 2 for i in range(80)]
+    assert len(nu) == 311 and nu.tolist() == pytest.approx(grid, abs=1e-9)
+    assert (np.diff(low) > 0).all() and (np.diff(high) > 0).all() and (high < low).all()
+    l70 = 0.8353 * 70.0**2 + 14.67 * 70.0 - 216.0
+    h70 = 0.1684 * 70.0**2 + 11.85 * 70.0 - 97.0
+    assert low[-1] == pytest.approx(l70, rel=3e-4) and high[-1] == pytest.approx(h70, rel=3e-4)
+    assert reference_viscosities(70.0) == pytest.approx((4905.0, 1558.0))
+    assert reference_viscosities(80.0) == pytest.approx((0.8353 * 6400 + 14.67 * 80 - 216,
+                                                         0.1684 * 6400 + 11.85 * 80 - 97))  # fmt: skip
+
+
+def _vi_mp(nu40: float, nu100: float) -> float:
+    """Independent: D2270 in mpmath, Table 1 read from the csv and interpolated by hand."""
+    mpmath.mp.dps = 30
+    nu, low, high = (list(map(mpmath.mpf, c)) for c in d2270_table())
+    u, y = mpmath.mpf(nu40), mpmath.mpf(nu100)
+    if y > 70:
+        lo = mpmath.mpf("0.8353") * y**2 + mpmath.mpf("14.67") * y - 216
+        hi = mpmath.mpf("0.1684") * y**2 + mpmath.mpf("11.85") * y - 97
+    else:
+        i = max(k for k in range(len(nu) - 1) if nu[k] <= y)
+        w = (y - nu[i]) / (nu[i + 1] - nu[i])
+        lo, hi = low[i] + w * (low[i + 1] - low[i]), high[i] + w * (high[i + 1] - high[i])
+    if u >= hi:
+        return float(100 * (lo - u) / (lo - hi))
+    n = (mpmath.log10(hi) - mpmath.log10(u)) / mpmath.log10(y)
+    return float((mpmath.power(10, n) - 1) / mpmath.mpf("0.00715") + 100)
+
+
+def test_d2270_against_mpmath_and_its_inversion_round_trips():
+    """VI against an mpmath implementation at 400 random oils (nu_100 from 2 to 300 mm^2/s, both
+    procedures, table and formulas); nu_100 of (nu_40, VI) gives that VI back and that nu_100."""
+    rng = random.Random(2270)
+    for _ in range(400):
+        nu100 = 10 ** rng.uniform(math.log10(2.0), math.log10(300.0))
+        nu40 = nu100 * rng.uniform(1.5, 40.0)
+        vi = viscosity_index(nu40, nu100)
+        assert vi == pytest.approx(_vi_mp(nu40, nu100), rel=1e-12, abs=1e-9)
+        back = viscosity_100_of_index(nu40, vi)
+        assert back == pytest.approx(nu100, rel=1e-12)
+        assert _vi_mp(nu40, back) == pytest.approx(vi, rel=1e-9, abs=1e-9)
+    # vectorised: the same numbers
+    nu40s = [10.0, 68.0, 460.0, 3200.0]
+    assert viscosity_100_of_index(nu40s, 95.0).tolist() == [
+        viscosity_100_of_index(v, 95.0) for v in nu40s
+    ]
+
+
+def test_a_grade_and_its_vi_give_the_grade_at_40_celsius():
+    """VG68 of VI 95: nu_100 from D2270 (8.53 mm^2/s), ASTM D341 through it gives 68 back at
+    40 °C; the CLI's default VI is 95 and its note says so."""
+    nu100 = viscosity_100_of_index(68.0, 95.0)
+    assert viscosity_index(68.0, nu100) == pytest.approx(95.0, abs=1e-9)
+    assert round(nu100, 2) == 8.53
+    assert viscosity_at(68.0, nu100, 40.0) == pytest.approx(68.0, rel=1e-12)
+    assert DEFAULT_VISCOSITY_INDEX == 95.0
+    base = ["6205", "-F", "1.4kN", "--speed", "3000", "--oil", "VG68"]
+    at40 = _csv(*base, "--temperature", "40C")
+    assert float(at40["viscosity [mm^2/s]"]) == pytest.approx(68.0, rel=1e-9)
+    at70 = _csv(*base, "--temperature", "70C")
+    by_vi = _csv(*base, "--temperature", "70C", "--viscosity-index", "95")
+    by_nu100 = _csv(*base, "--temperature", "70C", "--viscosity-100", repr(nu100))
+    assert at70 == by_vi == by_nu100
+    assert float(at70["viscosity [mm^2/s]"]) == pytest.approx(viscosity_at(68.0, nu100, 70.0))
+    out = CliRunner().invoke(main, ["solve", *base, "--temperature", "70C"])
+    assert out.exit_code == 0, out.output
+    assert "nu_100 = 8.53 mm^2/s (derived by ASTM D2270 from VI 95, default" in out.output
+    high = _csv(*base, "--temperature", "70C", "--viscosity-index", "140")
+    assert float(high["viscosity [mm^2/s]"]) > float(at70["viscosity [mm^2/s]"])
+
+
+def test_bad_viscosity_index_in_the_library():
+    with pytest.raises(InputError, match="viscosity_index: an oil of 4.6 mm\\^2/s"):
+        viscosity_100_of_index(4.6, 95.0)
+    with pytest.raises(InputError, match="viscosity_40"):
+        viscosity_100_of_index(2.0, 95.0)
+    with pytest.raises(InputError, match="viscosity_100: ASTM D2270 defines"):
+        viscosity_index(68.0, 1.9)

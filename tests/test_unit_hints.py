@@ -9,7 +9,7 @@ import math
 import pytest
 
 from bearingload.errors import InputError
-from bearingload.units import parse_cage_angle, parse_quantity
+from bearingload.units import UNITS, parse_cage_angle, parse_quantity
 
 from .cli_helpers import invoke, run_entry
 
@@ -21,11 +21,13 @@ HAND = ["solve", "-z", "8", "-F", "300kgf", "-K", "4700kgf/mm^1.5"]
     [
         (["solve", "306", "-F", "300kgf", "--modulus", "210"],
          "Error: Invalid value for '--modulus': a bare 210 is 210 MPa, implausible for a Young's "
-         "modulus (bare numbers are MPa; plausible 1000 to 1e+07 MPa): did you mean 210GPa?"),
+         "modulus (bare numbers are MPa; plausible at least 1000 and below 1e+07 MPa): did you mean "
+         "210GPa?"),
         (["solve", "306", "-F", "300kgf", "--modulus", "2.1e11"], "did you mean 2.1e+11Pa?"),
         ([*HAND, "-G", "20"],
          "Error: Invalid value for '--clearance' / '-G': a bare 20 is 20 mm, implausible for a "
-         "radial clearance (bare numbers are mm; plausible -1 to 1 mm): did you mean 20um?"),
+         "radial clearance (bare numbers are mm; plausible at least -1 and below 1 mm): did you mean "
+         "20um?"),
         (["solve", "306", "-F", "300kgf", "-G", "7"], "(the GOST clearance group 7 is written G7)"),
         ([*HAND, "-G", "0,02"], "write the decimal point, not a comma: 0.02"),
         (["solve", "-z", "8", "-F", "300", "kgf", "-K", "4700kgf/mm^1.5"],
@@ -103,3 +105,70 @@ def test_minutes_and_seconds_of_arc(text, degrees):
             parse_quantity(text, "angle")
         return
     assert parse_quantity(text, "angle") == pytest.approx(degrees, rel=1e-15)
+
+
+#: (option, bare number) of implausible bare numbers on every option with a plausibility rule.
+IMPLAUSIBLE = [
+    ("--clearance", "5"), ("--clearance", "20"), ("--clearance", "5000"), ("--clearance", "-3"),
+    ("--modulus", "210"), ("--modulus", "2.1e11"), ("--modulus", "1e20"), ("--modulus", "10"),
+    ("--speed", "1e6"), ("--speed", "1e9"),
+    ("--viscosity", "1e6"), ("--viscosity", "1e7"), ("--viscosity", "1e-5"),
+    ("--viscosity", "1e-9"), ("--viscosity", "0.05"),
+    ("--roughness", "0.2"), ("--roughness", "50"),
+]  # fmt: skip
+KIND = {"--clearance": ("length", "clearance"), "--modulus": ("modulus", "modulus"),
+        "--speed": ("speed", "speed"), "--viscosity": ("viscosity", "viscosity"),
+        "--roughness": ("length", "roughness")}  # fmt: skip
+
+
+@pytest.mark.parametrize(("option", "bare"), IMPLAUSIBLE)
+def test_a_unit_hint_names_a_unit_that_makes_the_number_plausible_or_none(capsys, option, bare):
+    """The hints offered units that did not help: 'did you mean 1e+09 in another unit (e.g.
+    1e+09rad/s)' for a bare 1e9 rpm (1e9 rad/s is a larger speed still), '1e+06cSt' for a bare
+    1e6 mm^2/s (cSt is mm^2/s), under 'plausible 0.1 to 1e+06' that 1e6 itself seemed to meet.
+    Now a hint's number and unit pass the same plausibility rule, or there is no hint; the range
+    printed excludes the number refused."""
+    import re
+
+    base = ["solve", "6205", "-F", "1kN", "--speed", "3000", "--viscosity", "20"]
+    code, out, err = run_entry(capsys, *base, option, bare)
+    assert code == 2 and out == "" and err.count("\n") == 1, err
+    low, high = map(
+        float, re.search(r"plausible (?:at least|above) (\S+) and below (\S+) ", err).groups()
+    )
+    assert not low <= float(bare) < high  # the range printed excludes what was refused
+    kind, name = KIND[option]
+    hint = re.search(r"did you mean (\S+)\?", err)
+    if hint is None:
+        assert all(not low <= float(bare) * factor < high for factor in UNITS[kind].values()), (
+            err
+        )  # no unit of the kind makes it plausible
+        return
+    value = parse_quantity(hint.group(1), kind, parameter=name)
+    assert low <= value < high, err
+    code, _, err = run_entry(capsys, *base, option, hint.group(1))
+    assert code == 0, err  # what the hint says is a case solve solves
+
+
+@pytest.mark.parametrize(
+    ("text", "hint"),
+    [("400", "did you mean 400K (126.85 °C)?"), ("300", "did you mean 300K"), ("1000", None),
+     ("-300", None), ("300C", None), ("600K", None)],
+)  # fmt: skip
+def test_a_bare_temperature_out_of_range_offers_kelvin_where_it_fits(capsys, text, hint):
+    code, out, err = run_entry(capsys, "solve", "6205", "-F", "1kN", "--speed", "3000", "--oil",
+                               "VG68", "--temperature", text)  # fmt: skip
+    assert code == 2 and err.count("\n") == 1 and "-60 to 250 °C" in err, err
+    assert (hint in err) if hint else ("did you mean" not in err)
+
+
+def test_a_ball_diameter_too_small_for_the_class_clearance_names_the_ball_diameter(capsys):
+    """A 6205 with --ball-diameter 0.01 (the class CN clearance, 12.5 um, exceeds half of it)
+    was refused as a bad '--clearance' the user never gave, with 'did you mean 0.0125um?'."""
+    code, _, err = run_entry(capsys, "solve", "6205", "-F", "1kN", "--ball-diameter", "0.01")
+    assert code == 2 and err.count("\n") == 1
+    assert err.startswith("Error: Invalid value for '--ball-diameter': 0.01 mm is too small"), err
+    assert "did you mean" not in err
+    hand = ["solve", "-z", "8", "--ball-diameter", "1", "--pitch-diameter", "10", "-F", "10"]
+    assert "did you mean 0.6um?" in run_entry(capsys, *hand, "-G", "0.6")[2]
+    assert "did you mean" not in run_entry(capsys, *hand, "-G", "0.6mm")[2]

@@ -98,10 +98,13 @@ _HEADER = re.compile(r"^\s*([^\[\]]*?)\s*(?:\[\s*([^\]]*?)\s*\])?\s*$")
 
 @dataclass(frozen=True)
 class Header:
-    """The columns of a batch file: ``names`` in file order and each one's header ``units``."""
+    """The columns of a batch file: ``names`` in file order and each one's header ``units``;
+    ``blank_tail`` empty header cells after the last name (a spreadsheet's trailing comma), whose
+    cells a row may have and must leave empty."""
 
     names: tuple[str, ...]
     units: dict[str, str]
+    blank_tail: int = 0
 
     @property
     def combined(self) -> bool:
@@ -123,6 +126,8 @@ def read_header(fields: list[str]) -> Header:
         (parameter ``columns``) naming unknown, duplicated or not-yet-supported columns, a
         missing ``load``, or a header unit that does not fit its column.
     """
+    blank_tail = len(fields) - len(_without_blank_tail(fields))
+    fields = fields[: len(fields) - blank_tail]
     names, units = [], {}
     for raw in fields:
         match = _HEADER.match(raw)
@@ -131,6 +136,12 @@ def read_header(fields: list[str]) -> Header:
         names.append(name)
         if match and match.group(2):
             units[name] = match.group(2)
+    if "" in names:
+        raise InputError(
+            "columns",
+            f"the header's column {names.index('') + 1} has no name (only empty columns at the "
+            "end of the header are allowed, and their cells must be empty)",
+        )
     unknown = [n for n in names if n not in COLUMNS]
     if unknown:
         raise InputError(
@@ -146,7 +157,15 @@ def read_header(fields: list[str]) -> Header:
         raise InputError("columns", "the column 'load' is required")
     for name, unit in units.items():
         _check_header_unit(name, unit)
-    return Header(tuple(names), units)
+    return Header(tuple(names), units, blank_tail)
+
+
+def _without_blank_tail(fields: list[str]) -> list[str]:
+    """The header cells without the empty ones at its end (``balls,load,`` -> balls, load)."""
+    end = len(fields)
+    while end > 1 and not fields[end - 1].strip():
+        end -= 1
+    return fields[:end]
 
 
 def unit_kind(kind: str) -> str:

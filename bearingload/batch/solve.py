@@ -80,13 +80,12 @@ class BatchSolver:
         if set(map(len, rows)) - {width}:  # lines with another number of cells: bad rows
             numbers, rows = [], []
             for number, cells in zip(block.numbers, block.cells, strict=True):
-                if len(cells) == width:
+                message = self._malformed(cells)
+                if message is None:
                     numbers.append(number)
-                    rows.append(cells)
+                    rows.append(cells[:width])
                 else:
-                    errors[number] = (
-                        f"malformed line: {len(cells)} cells, the header names {width} columns"
-                    )
+                    errors[number] = message
         cols, bad = self._columns(rows)
         groups: dict[tuple[Any, ...], list[int]] = {}
         for i, key in enumerate(self._keys(cols, len(rows), bad)):
@@ -101,6 +100,21 @@ class BatchSolver:
         for i, message in bad.items():
             errors[numbers[i]] = message
         return _merged(parts, numbers, errors)
+
+    def _malformed(self, cells: list[str]) -> str | None:
+        """Why a row's cells do not fit the header, or None: one cell per named column, and
+        up to the header's empty trailing columns more, left empty."""
+        width, tail = len(self.header.names), self.header.blank_tail
+        if width <= len(cells) <= width + tail:
+            extra = next((c for c in cells[width:] if c.strip()), None)
+            if extra is None:
+                return None
+            return (
+                f"a value ({extra!r}) in a column the header gives no name (after its last "
+                f"column '{self.header.names[-1]}'); name the column or leave it empty"
+            )
+        named = f" (and {tail} unnamed empty one(s) after them)" if tail else ""
+        return f"malformed line: {len(cells)} cells, the header names {width} columns{named}"
 
     def _columns(self, rows: list[list[str]]) -> tuple[dict[str, list[Any]], dict[int, str]]:
         """Every column's values (None: blank) and each failing row's first error: the exponent

@@ -18,11 +18,18 @@
   nu = 32 cSt at 40 °C, 5.4 cSt at 100 °C, T = °C + 273: A = 9.5259, B = 3.7449, 8.5 cSt at
   80 °C; the tests check it).
 
-Why nu_100 is an input rather than a viscosity index: the kinematic viscosity at 100 °C of an oil
-of a given VI follows from ASTM D2270's Table 1 (the L and H reference viscosities for nu_100 =
-2 to 70 mm^2/s), which is not reproduced here from a source that could be checked (see
-docs/life.md). An oil maker's datasheet prints nu_40 and nu_100; give both, or the grade and
-nu_100.
+* ASTM D2270 viscosity index (VI) from nu_40 = U and nu_100 = Y: L and H, the viscosities at
+  40 °C of the reference oils of VI 0 and 100 with the same nu_100, from the standard's Table 1
+  for 2 <= Y <= 70 mm^2/s (linear interpolation between its rows, as 5.1.1 says) and above 70
+  from its formulas L = 0.8353 Y^2 + 14.67 Y - 216, H = 0.1684 Y^2 + 11.85 Y - 97. Procedure A
+  (VI <= 100, U >= H): VI = 100 (L - U)/(L - H); Procedure B (VI >= 100, U <= H):
+  N = (log H - log U)/log Y, VI = (10^N - 1)/0.00715 + 100. The standard's worked examples
+  (73.30 and 8.86 mm^2/s: L = 119.94, H = 69.48, VI 92; 22.83 and 5.05: H = 28.97, VI 156) are
+  checked by the tests. Table 1 (311 rows, nu_100 = 2.0 ... 70.0 mm^2/s) is
+  ``data/astm_d2270_table1.csv``: ASTM D2270-10 Table 1 as carried by two independent open
+  transcriptions (sherzodr/libvisc ``libvisc.h``, CalebBell/chemicals ``viscosity.py``), which
+  agree in every one of the 933 numbers and reproduce the standard's interpolated L and H.
+  :func:`viscosity_100_of_index` inverts it for nu_100 (an oil given by its grade and VI).
 
 >>> round(viscosity_at(68.0, 8.6, 70.0), 2)  # VG68, nu_100 = 8.6 mm^2/s, at 70 °C
 19.97
@@ -30,6 +37,7 @@ nu_100.
 
 from __future__ import annotations
 
+import functools
 import re
 from typing import Any
 
@@ -51,6 +59,12 @@ ISO_VG_TOLERANCE = 0.10
 ZERO_CELSIUS = 273.15
 #: The smallest kinematic viscosity the plain Walther form (the constant 0.7) covers. [mm^2/s]
 WALTHER_MIN = 2.0
+#: The viscosity index taken for an oil given by its grade alone: a mineral oil of VI 95, the
+#: VI SKF's viscosity-temperature diagram of the ISO grades is drawn for and the least SKF
+#: recommends for rolling bearings (skf.com, "Selecting lubricating oils"). [-]
+DEFAULT_VISCOSITY_INDEX = 95.0
+#: ASTM D2270's smallest nu_100 with a viscosity index (Table 1's first row). [mm^2/s]
+D2270_MIN = 2.0
 
 
 def iso_grade(text: str) -> float:
@@ -149,3 +163,108 @@ def walther_viscosity(a: ArrayLike, b: ArrayLike, temperature: ArrayLike) -> Any
             10.0 ** (np.asarray(a, dtype=float) - np.asarray(b, dtype=float) * np.log10(t))
         )
     return scalar_out(nu - 0.7)
+
+
+@functools.lru_cache(maxsize=1)
+def d2270_table() -> tuple[np.ndarray, np.ndarray, np.ndarray]:
+    """ASTM D2270 Table 1: nu_100 and the L and H of its 311 rows (``data/astm_d2270_table1.csv``,
+    source in the module docstring). [mm^2/s]"""
+    from bearingload.bearings._data import read_rows
+
+    rows = read_rows("astm_d2270_table1.csv")
+    columns = (np.array([float(r[k]) for r in rows]) for k in ("nu_100", "L", "H"))
+    nu, low, high = columns
+    for a in (nu, low, high):
+        a.setflags(write=False)
+    return nu, low, high
+
+
+def reference_viscosities(nu_100: ArrayLike) -> tuple[Any, Any]:
+    """(L, H) of ASTM D2270: the viscosities at 40 °C of the reference oils of VI 0 and VI 100
+    whose viscosity at 100 °C is ``nu_100`` (Table 1 interpolated up to 70 mm^2/s, the
+    standard's formulas above). [mm^2/s]
+
+    >>> [round(float(v), 2) for v in reference_viscosities(8.86)]  # D2270's example, 5.1.4
+    [119.94, 69.48]
+    """
+    y = np.asarray(nu_100, dtype=float)
+    if not np.all(np.isfinite(y) & (y >= D2270_MIN)):
+        raise InputError(
+            "viscosity_100",
+            f"ASTM D2270 defines a viscosity index for a viscosity at 100 °C of "
+            f"{D2270_MIN:g} mm^2/s or more; got {y}",
+        )
+    nu, low, high = d2270_table()
+    table = y <= nu[-1]
+    l_ref = np.where(table, np.interp(y, nu, low), 0.8353 * y**2 + 14.67 * y - 216.0)
+    h_ref = np.where(table, np.interp(y, nu, high), 0.1684 * y**2 + 11.85 * y - 97.0)
+    return scalar_out(l_ref), scalar_out(h_ref)
+
+
+def viscosity_index(nu_40: ArrayLike, nu_100: ArrayLike) -> Any:
+    """The viscosity index of ASTM D2270 (unrounded; the standard reports it rounded to a whole
+    number): Procedure A where nu_40 >= H (VI <= 100), else Procedure B. [-]
+
+    Parameters
+    ----------
+    nu_40, nu_100 : array_like
+        Kinematic viscosities at 40 °C (> 0) and 100 °C (>= 2). [mm^2/s]
+
+    >>> round(viscosity_index(73.30, 8.86)), round(viscosity_index(22.83, 5.05))
+    (92, 156)
+    """
+    u = np.asarray(nu_40, dtype=float)
+    y = np.asarray(nu_100, dtype=float)
+    if not np.all(np.isfinite(u) & (u > 0)):
+        raise InputError("viscosity_40", f"must be a finite viscosity > 0 mm^2/s; got {u}")
+    l_ref, h_ref = (np.asarray(v, dtype=float) for v in reference_viscosities(y))
+    with np.errstate(divide="ignore", invalid="ignore", over="ignore"):
+        by_a = 100.0 * (l_ref - u) / (l_ref - h_ref)
+        n = (np.log10(h_ref) - np.log10(u)) / np.log10(y)
+        by_b = (10.0**n - 1.0) / 0.00715 + 100.0
+    return scalar_out(np.where(u >= h_ref, by_a, by_b))
+
+
+def viscosity_100_of_index(nu_40: ArrayLike, index: ArrayLike) -> Any:
+    """The viscosity at 100 °C of an oil of viscosity ``nu_40`` at 40 °C and viscosity index
+    ``index``: :func:`viscosity_index` inverted by bisection on nu_100 in [2, nu_40] (to
+    machine precision; the VI rises with nu_100 at a given nu_40). [mm^2/s]
+
+    Parameters
+    ----------
+    nu_40 : array_like
+        Kinematic viscosity at 40 °C, above 2. [mm^2/s]
+    index : array_like
+        Viscosity index, between that of nu_100 = 2 mm^2/s (the least ASTM D2270 defines) and
+        that of nu_100 = nu_40 for this nu_40. [-]
+
+    >>> round(viscosity_100_of_index(73.30, viscosity_index(73.30, 8.86)), 9)
+    8.86
+    """
+    u, v = np.broadcast_arrays(np.asarray(nu_40, dtype=float), np.asarray(index, dtype=float))
+    if not np.all(np.isfinite(v)):
+        raise InputError("viscosity_index", f"must be a finite number; got {v}")
+    if not np.all(np.isfinite(u) & (u > D2270_MIN)):
+        raise InputError(
+            "viscosity_40",
+            f"an oil given by its viscosity index needs a viscosity at 40 °C above {D2270_MIN:g} "
+            f"mm^2/s (ASTM D2270 defines no VI below {D2270_MIN:g} mm^2/s at 100 °C); got {u}",
+        )
+    lo, hi = np.full(u.shape, D2270_MIN), u.copy()
+    least, most = np.asarray(viscosity_index(u, lo)), np.asarray(viscosity_index(u, hi))
+    bad = ~((v >= least) & (v < most))
+    if np.any(bad):
+        i = np.flatnonzero(bad)[0]
+        raise InputError(
+            "viscosity_index",
+            f"an oil of {u.flat[i]:g} mm^2/s at 40 °C has by ASTM D2270 a VI from "
+            f"{least.flat[i]:.4g} (nu_100 = {D2270_MIN:g} mm^2/s, the least the standard "
+            f"defines) to below {most.flat[i]:.4g} (nu_100 = nu_40); got {v.flat[i]:g}",
+        )
+    for _ in range(200):
+        mid = 0.5 * (lo + hi)
+        below = np.asarray(viscosity_index(u, mid)) < v
+        lo, hi = np.where(below, mid, lo), np.where(below, hi, mid)
+        if np.all(hi - lo <= 4.0 * np.finfo(float).eps * hi):
+            break
+    return scalar_out(0.5 * (lo + hi))

@@ -33,6 +33,7 @@ Rules
 from __future__ import annotations
 
 import math
+import re
 from dataclasses import dataclass
 from typing import Any
 
@@ -153,11 +154,7 @@ def resolve_bearing(
     prov.append(Provenance("stiffness", "ball stiffness K (series)", k, "N/mm^1.5", k_src))
     g_r, cls, rng, pick, g_src = resolve_clearance(spec, g.geom, g.bore, clearance_pick)
     if g.dw is not None and abs(g_r) >= g.dw / 2:
-        raise InputError(
-            "clearance",
-            f"G_r = {g_r:g} mm is at least half the ball diameter ({g.dw:g} mm): no bearing has "
-            f"such a play or preload; a bare number is mm (did you mean {g_r:g}um?)",
-        )
+        raise _clearance_beyond_ball(spec, g_r, g.dw)
     sources = g.sources + ([clearance_row_source(g.bore)] if rng is not None else [])
     prov.append(Provenance("clearance", "radial clearance G_r (total)", g_r * 1e3, "µm", g_src))
     geom = g.geom
@@ -509,3 +506,19 @@ def _angular(
         contact_angle=row.contact_angle, provenance=tuple(prov),
         sources=(src, f"catalogue notes: {row.notes}"),
     )  # fmt: skip
+
+
+def _clearance_beyond_ball(spec: ClearanceSpec | None, g_r: float, dw: float) -> InputError:
+    """The refusal of |G_r| >= D_w/2 [mm]: a clearance of its class names the ball diameter as
+    the slip; a bare number (mm) the micrometres it likely meant, where that would fit."""
+    what = (f"G_r = {g_r:g} mm is at least half the ball diameter ({dw:g} mm): no bearing has such "
+            "a play or preload")  # fmt: skip
+    if spec is None or spec.length is None:
+        return InputError(
+            "ball_diameter",
+            f"{dw:g} mm is too small for this bearing's clearance: {what} (bare numbers are mm)",
+        )
+    bare = re.fullmatch(r"\s*[+-]?(?:\d+\.?\d*|\.\d+)(?:[eE][+-]?\d+)?\s*", spec.text)
+    if bare and abs(g_r) * 1e-3 < dw / 2:
+        return InputError("clearance", f"{what}; a bare number is mm (did you mean {g_r:g}um?)")
+    return InputError("clearance", what)

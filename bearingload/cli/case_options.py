@@ -44,10 +44,10 @@ TILT_PARAMS = ("tilt_radius",)
 #: The operating conditions of the lives in hours, the modified life and the film
 #: (:class:`bearingload.bearings.service_life.Operating`); they change no load.
 SERVICE_PARAMS = ("static_rating", "speed", "reliability", "viscosity", "oil", "viscosity_40",
-                  "viscosity_100", "temperature", "contamination", "e_c", "fatigue_load_limit",
-                  "roughness", "pressure_viscosity")  # fmt: skip
+                  "viscosity_100", "viscosity_index", "temperature", "contamination", "e_c",
+                  "fatigue_load_limit", "roughness", "pressure_viscosity")  # fmt: skip
 #: The options that give the operating viscosity from the oil (instead of --viscosity).
-OIL_PARAMS = ("oil", "viscosity_40", "viscosity_100", "temperature")
+OIL_PARAMS = ("oil", "viscosity_40", "viscosity_100", "viscosity_index", "temperature")
 #: The options that feed only the lives.
 LIFE_PARAMS = ("dynamic_rating", "rotating", *SERVICE_PARAMS)
 #: The combined-load options, in the order a refusal names the first one given.
@@ -98,14 +98,17 @@ class Temperature(click.ParamType):
             number = float(match.group(1)) if match else float("nan")
         except ValueError:
             number = float("nan")
-        if (
-            not -60.0
-            <= (celsius := number - 273.15 if match and match.group(2) == "K" else number)
-            <= 250.0
-        ):
+        celsius = number - 273.15 if match and match.group(2) == "K" else number
+        if not -60.0 <= celsius <= 250.0:
+            as_kelvin = number - 273.15  # a bare number meant in kelvin, where that fits
+            hint = (
+                f"; did you mean {number:g}K ({as_kelvin:g} °C)?"
+                if match and match.group(2) is None and -60.0 <= as_kelvin <= 250.0
+                else ""
+            )
             self.fail(
                 f"{value!r}: give the operating temperature in °C (70, 70C) or K (343.15K), "
-                "-60 to 250 °C",
+                f"-60 to 250 °C{hint}",
                 param,
                 ctx,
             )
@@ -318,8 +321,9 @@ DECLARATIONS: dict[str, tuple[tuple[str, ...], dict[str, Any]]] = {
     "oil": _option(
         "--oil",
         help="ISO 3448 grade of the oil (VG2 ... VG3200; VG68 = 68 mm^2/s at 40 °C, +-10 %) "
-        "instead of --viscosity: with --viscosity-100 and --temperature, nu at the operating "
-        "temperature by ASTM D341 (Walther).",
+        "instead of --viscosity: with --temperature, nu at the operating temperature by ASTM "
+        "D341 (Walther) through nu_40 and nu_100 (--viscosity-100, else from the viscosity "
+        "index by ASTM D2270).",
     ),
     "viscosity_40": _option(
         "--viscosity-40",
@@ -333,6 +337,13 @@ DECLARATIONS: dict[str, tuple[tuple[str, ...], dict[str, Any]]] = {
         help="Kinematic viscosity of the oil at 100 °C (its datasheet's), with --oil or "
         "--viscosity-40: ASTM D341 through the two points gives nu at --temperature. Units: "
         "mm^2/s, cSt, m^2/s (bare number: mm^2/s).",
+    ),
+    "viscosity_index": _option(
+        "--viscosity-index",
+        type=float,
+        help="Viscosity index VI of the oil (its datasheet's), with --oil or --viscosity-40 "
+        "instead of --viscosity-100: nu_100 follows by ASTM D2270. Default 95 (a mineral oil; "
+        "the VI of SKF's viscosity-temperature diagram).",
     ),
     "temperature": _option(
         "--temperature",
@@ -480,6 +491,7 @@ class CaseOptions:
     oil: str | None = None
     viscosity_40: float | None = None
     viscosity_100: float | None = None
+    viscosity_index: float | None = None
     temperature: float | None = None
     contamination: str | None = None
     e_c: float | None = None
@@ -614,21 +626,21 @@ class CaseOptions:
             raise click.UsageError(
                 "Invalid value for '--oil' / '--viscosity-40': give the oil by its ISO 3448 grade "
                 "(--oil VG68) or by its viscosity at 40 °C (--viscosity-40), one of the two, with "
-                "--viscosity-100 and --temperature"
+                "--temperature"
             )
-        for name in ("viscosity_100", "temperature"):
-            if getattr(self, name) is None:
-                option = DECLARATIONS[name][0][0]
-                raise click.UsageError(
-                    f"Missing option '{option}': the oil's viscosity at the operating "
-                    "temperature follows (ASTM D341) from its viscosities at 40 and 100 °C; the "
-                    "viscosity at 100 °C is printed on the oil's datasheet"
-                )
-        assert self.viscosity_100 is not None and self.temperature is not None
+        if self.temperature is None:
+            raise click.UsageError(
+                "Missing option '--temperature': the oil's viscosity at the operating "
+                "temperature follows (ASTM D341) from its viscosities at 40 and 100 °C"
+            )
+        if self.viscosity_100 is not None:
+            why = "the viscosity index gives the viscosity at 100 °C; give one of the two"
+            self.refuse(["viscosity_index"], "--viscosity-100", why)
         try:
             nu40 = iso_grade(self.oil) if self.oil is not None else self.viscosity_40
             assert nu40 is not None
-            nu = float(viscosity_at(nu40, self.viscosity_100, self.temperature))
+            nu100, how = self._viscosity_100(nu40)
+            nu = float(viscosity_at(nu40, nu100, self.temperature))
         except InputError as exc:
             raise usage_error(exc) from exc
         if self.oil is not None:
@@ -638,8 +650,31 @@ class CaseOptions:
             source = f"nu_40 = {nu40:g} mm^2/s"
         return nu, (
             f"nu = {nu:.4g} mm^2/s at {self.temperature:g} °C: ASTM D341 (Walther, log log(nu + "
-            f"0.7) = A - B log T) through {source} and nu_100 = {self.viscosity_100:g} mm^2/s."
+            f"0.7) = A - B log T) through {source} and nu_100 = {nu100:.4g} mm^2/s{how}."
         )
+
+    def _viscosity_100(self, nu_40: float) -> tuple[float, str]:
+        """nu_100 [mm^2/s]: --viscosity-100, else that of the VI (--viscosity-index, default
+        95) by ASTM D2270; and the words saying which."""
+        if self.viscosity_100 is not None:
+            return self.viscosity_100, ""
+        from bearingload.bearings.oil import DEFAULT_VISCOSITY_INDEX, viscosity_100_of_index
+
+        given = self.viscosity_index is not None
+        index = DEFAULT_VISCOSITY_INDEX if self.viscosity_index is None else self.viscosity_index
+        try:
+            nu100 = float(viscosity_100_of_index(nu_40, index))
+        except InputError as exc:
+            if given or exc.parameter != "viscosity_index":
+                raise
+            why = str(exc).split(": ", 1)[-1]
+            raise InputError(
+                "viscosity_index",
+                f"the default VI {index:g} (a mineral oil) does not fit this oil: {why}; give its "
+                "--viscosity-100 or --viscosity-index",
+            ) from exc
+        which = "given" if given else "default, a mineral oil; --viscosity-index to give it"
+        return nu100, f" (derived by ASTM D2270 from VI {index:g}, {which})"
 
     def combined_arguments(self) -> dict[str, Any]:
         """The combined load as the keyword arguments of the combined studies

@@ -154,6 +154,10 @@ def solve(
     # the load alone chooses the engine, never a life option; an angular-contact designation
     # always takes the combined engine (its balls sit at the contact angle)
     if case.wants_combined or angular:
+        _refuse_revolutions(
+            "the combined engine (a load option, or an angular-contact bearing)",
+            "it prints L10 = (C/P)^3 at P = X F_r + Y F_a and L10r instead",
+        )
         if method != "exact":
             what = (f"an angular-contact bearing ({case.bearing})" if angular else "the combined "
                     "load (--axial-load, --moment, --moment-cross, --misalignment)")  # fmt: skip
@@ -172,6 +176,7 @@ def solve(
         service = None
         if case.by_hand:
             refuse_unused(case)
+            _refuse_revolutions("a ring given by its balls and stiffness", "it has no C")
             cases = _by_hand(methods, case, k_given)
         else:
             bearings = with_ratings(resolve_bearings(case, k_given), case)
@@ -186,6 +191,18 @@ def solve(
         save_plot(figure, plot)  # the figure of this very solution, written whole
     emit(text, output)
     print_warnings(found, quiet)
+
+
+def _refuse_revolutions(where: str, instead: str) -> None:
+    """Refuse a --revolutions given on the command line where no allowable load is printed: it
+    sets the life L of the radial engine's allowable load C/(L/10^6)^(1/3) of a bearing with C."""
+    ctx = click.get_current_context()
+    if ctx.get_parameter_source("revolutions") not in (None, click.core.ParameterSource.DEFAULT):
+        raise click.UsageError(
+            f"--revolutions cannot be used with {where}: it sets the life L of the allowable "
+            f"radial load C/(L/10^6)^(1/3), which only the radial engine prints for a bearing "
+            f"with a dynamic load rating C; {instead}"
+        )
 
 
 def _radial(

@@ -2,6 +2,8 @@
 
 from __future__ import annotations
 
+from typing import Any
+
 import click
 
 from bearingload.cli.case_options import (
@@ -78,15 +80,16 @@ def sweep(
     turns). csv: one row per cage angle with the inputs as columns; json: rows, a summary and
     units.
 
-    With --axial-load, --moment, --moment-cross, --misalignment, --dynamic-rating or --rotating
-    (a deep-groove ball bearing: a catalogue designation, or --balls with --ball-diameter and
-    --pitch-diameter) every cage position is solved by the 3-D ring equilibrium of 'solve'
-    (ISO/TS 16281), all in one vectorised call: per position x, y, the axial displacement (from
-    the centred rings, half the axial play included), the tilts about both axes (the ring is free
-    to tilt unless a moment or a misalignment is given; --tilt-radius sets the lever), Q_max and
-    its ball, the loaded balls, the largest contact angle and the reference rating life L10r of
-    the rotating ring (default inner); beside them ISO 281's (C_r/P)^3, the same at every
-    position. Not for roller bearings or --kurochkin-T.
+    With --axial-load, --moment, --moment-cross or --misalignment (a deep-groove ball bearing: a
+    catalogue designation, or --balls with --ball-diameter and --pitch-diameter) every cage
+    position is solved by the 3-D ring equilibrium of 'solve' (ISO/TS 16281), all in one
+    vectorised call: per position x, y, the axial displacement (from the centred rings, half the
+    axial play included), the tilts about both axes (the ring is free to tilt unless a moment or
+    a misalignment is given; --tilt-radius sets the lever), Q_max and its ball, the loaded balls,
+    the largest contact angle and the reference rating life L10r of the rotating ring (default
+    inner); beside them ISO 281's (C_r/P)^3, the same at every position. Not for roller bearings
+    or --kurochkin-T. The life options alone (--dynamic-rating, --rotating, --speed) never
+    change the engine: the radial sweep adds L10r at each position (ball bearings) and L10.
 
     \b
     Examples:
@@ -121,15 +124,19 @@ def sweep(
     refuse_range(case, "sweep")
     if plot is not None:
         check_plot(plot)
-    if case.wants_combined or case.lives_given:  # only this sweep gives the lives
+    if case.wants_combined:  # the load alone chooses the engine, never a life option
         _combined(case, steps, plot, fmt, output)
         return
     refuse_tilt_radius(case)
     z, k, g_r, m, context = resolve_case(case)
+    import dataclasses
+
     from bearingload.reports.sweep import sweep_report, sweep_warnings
     from bearingload.studies.sweep import sweep as run_sweep
 
-    result = run_sweep(z, case.radial_load, k, g_r, m, steps)
+    life, lives = _radial_lives(case) if case.lives_given else (None, {})
+    result = run_sweep(z, case.radial_load, k, g_r, m, steps, life=life)
+    result = dataclasses.replace(result, **lives)
     text = sweep_report(result, fmt, context)
     for warning in sweep_warnings(result):
         click.echo(f"Warning: {warning}", err=True)
@@ -138,6 +145,35 @@ def sweep(
 
         save_plot(lambda: sweep_figure(result, case.bearing), plot)
     emit(text, output)
+
+
+def _radial_lives(case: CaseOptions) -> tuple[Any, dict[str, Any]]:
+    """The lives of a radial sweep (--dynamic-rating, --rotating, --speed given, no load
+    option): L10r at each cage position from the radial engine's ball loads, every ball at the
+    contact angle 0, as solve's radial path gives it (a ball bearing with its geometry and C_r;
+    --rotating refused where none is computed, as solve refuses it); ISO 281's L10 where C_r is
+    known; hours with --speed. (the ``life`` of the sweep, the fields of its result)"""
+    import functools
+
+    from bearingload.bearings.life import BALL_LIFE_EXPONENT, ROLLER_LIFE_EXPONENT
+    from bearingload.cli.cases import check_rotating, resolve_bearings
+    from bearingload.cli.solve import with_ratings
+    from bearingload.studies.reference_life import ball_reference_life, has_reference_life
+
+    b = with_ratings(resolve_bearings(case, case.stiffness_value()), case)[0]
+    check_rotating(case, b, ["exact"])
+    c_r = case.dynamic_rating or b.C or None
+    rotating = case.rotating or "inner"
+    life = None
+    if c_r is not None and has_reference_life(b, c_r):
+        life = functools.partial(ball_reference_life, b, rotating=rotating, c_r=float(c_r))
+    exponent = ROLLER_LIFE_EXPONENT if b.kind == "roller" else BALL_LIFE_EXPONENT
+    return life, {
+        "dynamic_rating": None if c_r is None else float(c_r),
+        "life_exponent": exponent,
+        "rotating": None if life is None else rotating,
+        "speed": case.speed,
+    }
 
 
 def _combined(

@@ -54,6 +54,26 @@ def _fit_json(report: FitReport, key: str) -> dict[str, Any]:
     return doc
 
 
+def _json_units(load_unit: str, displacement_unit: str) -> dict[str, str]:
+    """The ``units`` object of fit's JSON, the rule of every JSON of the tool: the unit of every
+    measured number in the file's units, ``-`` for a dimensionless one; counts (``points``,
+    ``balls``, ``row``) and text are not listed. ``base_points`` are (load, displacement) pairs."""
+    lu, du = load_unit, displacement_unit
+    dimensionless = ("n", "r_squared", "r_squared_log", "K_Q", "hertz_exponent", "u_over_umax",
+                     "sigma_bar_two_point", "sigma_bar_least_squares")  # fmt: skip
+    return {
+        "C": f"{lu}/{du}^n",
+        "C_N_mm": "N/mm^n",
+        "residuals": lu,
+        "base_points": f"{lu}, {du}",
+        "load": lu,
+        "displacement": du,
+        "fit_two_point": lu,
+        "residual_two_point": lu,
+        "residual_least_squares": lu,
+    } | dict.fromkeys(dimensionless, "-")
+
+
 def fit_report(
     path: str,
     *,
@@ -84,6 +104,7 @@ def fit_report(
         doc["K_Q"] = {k: v for k, (v, _) in r.k_q.items() if k != "hertz_exponent"}
         doc["hertz_exponent"] = HERTZ_EXPONENT
         doc["rows"] = point_rows
+        doc["units"] = _json_units(r.load_unit, r.displacement_unit)
         return render([], "json", document=doc)
     fits_table, points_table = _fits_table(r, len(point_rows)), _points_table(r, point_rows)
     if fmt == "csv":

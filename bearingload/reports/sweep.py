@@ -31,6 +31,36 @@ ROW_KEYS = (
     ("stiffness_radial", "K_r"),
 )
 INPUT_KEYS = ("balls", "load", "stiffness", "clearance", "exponent")
+#: The lives at each cage position, where asked for (--dynamic-rating, --rotating, --speed).
+LIFE_ROW_KEYS = (("reference_rating_life", "L10r"), ("reference_rating_life_hours", "L10rh"))
+
+
+def _life_rows(s: CageSweep) -> list[tuple[str, str]]:
+    """The per-position life columns the sweep has: L10r where computed, in hours at a speed."""
+    if s.reference_rating_life is None:
+        return []
+    return list(LIFE_ROW_KEYS if s.speed is not None else LIFE_ROW_KEYS[:1])
+
+
+def _fixed_lives(s: CageSweep) -> dict[str, Any]:
+    """The lives the cage does not change (ISO 281's L10 at P = F_r, in hours at a speed),
+    where asked for; empty for a plain sweep."""
+    if s.dynamic_rating is None and s.speed is None:
+        return {}
+    out: dict[str, Any] = {"dynamic_rating": s.dynamic_rating, "rating_life": s.rating_life}
+    if s.speed is not None:
+        out |= {"speed": s.speed, "rating_life_hours": s.hours(s.rating_life)}
+    return out
+
+
+def _life_notes(s: CageSweep) -> list[str]:
+    if s.rotating is None:
+        return []
+    return [
+        f"L10r: ISO/TS 16281:2008, 4.3, from the exact ball loads at each cage position, every "
+        f"ball at the contact angle 0 (Q_ci, Q_ce from C; {s.rotating} ring rotating; "
+        "--rotating), as solve gives it; L10: ISO 281 at P = F_r, the same at every position."
+    ]
 
 
 def sweep_report(s: CageSweep, fmt: str, context: str = "") -> str:
@@ -54,8 +84,10 @@ def inputs_text(s: CageSweep) -> str:
 
 
 def _spread_table(s: CageSweep, context: str) -> Table:
-    entries = [(QUANTITIES[key], s.spread(key), QUANTITIES[key].shown()) for key in SPREADS]
-    notes = ["mean: over one period (the last position, equal to the first, left out)."]
+    keys = [*SPREADS, *(k for k, _ in _life_rows(s))]
+    entries = [(QUANTITIES[key], s.spread(key), QUANTITIES[key].shown()) for key in keys]
+    notes = ["mean: over one period (the last position, equal to the first, left out).",
+             *_life_notes(s)]  # fmt: skip
     return spread_table(f"Over one ball pitch ({inputs_text(s)})", entries, notes, context)
 
 
@@ -99,8 +131,13 @@ def _figures_table(s: CageSweep) -> Table:
                 "unit": "" if g is None else unit,
             }
         )
+    for key, value in _fixed_lives(s).items():
+        q = QUANTITIES[key]
+        shown_unit, shown_factor = q.shown()
+        rows.append({"quantity": q.label, "unit": shown_unit,
+                     "value": "-" if value is None else value * shown_factor})  # fmt: skip
     return value_table(
-        "Ripple",
+        "Ripple, and the lives the cage does not change" if _fixed_lives(s) else "Ripple",
         rows,
         [
             "compensating clearance: every G_r at which the ring sits at the same x with a ball "
@@ -127,7 +164,9 @@ def value_table(title: str, rows: list[dict[str, Any]], notes: list[str]) -> Tab
 
 def _rows_table(s: CageSweep) -> Table:
     return positions_table(
-        ROW_KEYS, _flat_rows(s), ["ball: the ball carrying Q_max (of two equal, the lower number)."]
+        [*ROW_KEYS, *_life_rows(s)],
+        _flat_rows(s),
+        ["ball: the ball carrying Q_max (of two equal, the lower number)."],
     )
 
 
@@ -166,19 +205,22 @@ def _flat_rows(s: CageSweep) -> list[dict[str, Any]]:
 
 
 def _csv_table(s: CageSweep) -> Table:
-    keys = INPUT_KEYS + tuple(k for k, _ in ROW_KEYS)
+    fixed = {k: "" if v is None else v for k, v in _fixed_lives(s).items()}
+    keys = [*INPUT_KEYS, *(k for k, _ in [*ROW_KEYS, *_life_rows(s)]), *fixed]
     columns = []
     for key in keys:
         q = QUANTITIES[key]
         unit = q.unit.replace("^m", f"^{s.exponent:g}")
         columns.append(Column(key, q.label, unit, q.digits))
     inputs = {k: getattr(s, k) for k in INPUT_KEYS}
-    return Table(title="sweep", columns=columns, rows=[inputs | r for r in _flat_rows(s)])
+    return Table(title="sweep", columns=columns, rows=[inputs | r | fixed for r in _flat_rows(s)])
 
 
 def _json_rows(s: CageSweep) -> list[dict[str, Any]]:
+    lives = {k: s.values(k) for k, _ in _life_rows(s)}
     return [
-        {
+        {k: float(v[i]) for k, v in lives.items()}
+        | {
             "cage_angle": float(s.cage_angle[i]),
             "x": float(s.x[i]),
             "y": float(s.y[i]),
@@ -195,11 +237,12 @@ def _json_rows(s: CageSweep) -> list[dict[str, Any]]:
 def sweep_json(s: CageSweep) -> dict[str, Any]:
     """The JSON document of a sweep: inputs, ``rows``, ``summary`` and ``units``."""
     summary: dict[str, Any] = {}
-    for key in SPREADS:
+    for key in [*SPREADS, *(k for k, _ in _life_rows(s))]:
         sp = s.spread(key)
         summary[key] = asdict(sp)  # min, mean, max, peak_to_peak
     summary["ripple_per_cage_revolution"] = s.ripple_order
     summary["compensating_clearance"] = list(s.compensating_clearance)
+    summary |= _fixed_lives(s)
     rows = _json_rows(s)
     keys = [*INPUT_KEYS, *rows[0], *summary]
     return {

@@ -11,6 +11,7 @@ radial load on the inner ring along +x, angles from the load line, ball 1 at the
 
 from __future__ import annotations
 
+from collections.abc import Callable
 from dataclasses import dataclass
 from typing import Any
 
@@ -70,6 +71,16 @@ class CageSweep:
         the load between two balls, in increasing order (negative = preload); the
         varying-compliance paper's delta_alpha = delta_S is the smallest positive one. From
         :func:`bearingload.studies.compensation.compensating_clearances`. [mm]
+    reference_rating_life : ndarray or None
+        L10r at each cage position from its ball loads (``life`` of :func:`sweep`). [10^6 rev]
+    dynamic_rating : float or None
+        C_r of a bearing whose lives are asked for (ISO 281's L10 = (C_r/F_r)^p). [N]
+    life_exponent : float
+        p of ISO 281's L10: 3 for balls, 10/3 for rollers. [-]
+    rotating : str or None
+        The ring rotating relative to the load, of ``reference_rating_life``.
+    speed : float or None
+        Shaft speed for the lives in hours. [rpm]
     """
 
     balls: int
@@ -86,6 +97,37 @@ class CageSweep:
     stiffness_matrix: np.ndarray
     stiffness_radial: np.ndarray
     compensating_clearance: list[float]
+    reference_rating_life: np.ndarray | None = None
+    dynamic_rating: float | None = None
+    life_exponent: float = 3.0
+    rotating: str | None = None
+    speed: float | None = None
+
+    @property
+    def rating_life(self) -> float | None:
+        """ISO 281's basic rating life (C_r/F_r)^p (P = F_r), None without C_r. [10^6 rev]"""
+        if self.dynamic_rating is None:
+            return None
+        from bearingload.bearings.life import rating_life
+
+        return float(rating_life(self.dynamic_rating, self.load, self.life_exponent))
+
+    def hours(self, life: Any) -> Any:
+        """``life`` [10^6 rev] in hours at :attr:`speed` (None without a speed or a life). [h]"""
+        if self.speed is None or life is None:
+            return None
+        from bearingload.bearings.modified_life import life_hours
+
+        return life_hours(life, self.speed)
+
+    def values(self, name: str) -> Any:
+        """The per-position values of ``name``: the spread quantities, ``reference_rating_life``
+        and ``reference_rating_life_hours`` (None where not computed)."""
+        if name == "reference_rating_life":
+            return self.reference_rating_life
+        if name == "reference_rating_life_hours":
+            return self.hours(self.reference_rating_life)
+        return getattr(self, name)
 
     @property
     def ripple_order(self) -> int:
@@ -93,10 +135,14 @@ class CageSweep:
         return self.balls
 
     def spread(self, name: str) -> Spread:
-        """Min, mean, max and peak-to-peak of ``x``, ``y``, ``q_max`` or ``stiffness_radial``."""
-        if name not in ("x", "y", "q_max", "stiffness_radial"):
-            raise InputError("name", "must be one of x, y, q_max, stiffness_radial")
-        return spread_of(getattr(self, name))
+        """Min, mean, max and peak-to-peak of ``x``, ``y``, ``q_max``, ``stiffness_radial`` or
+        (where computed) ``reference_rating_life`` and ``reference_rating_life_hours``."""
+        allowed = ("x", "y", "q_max", "stiffness_radial", "reference_rating_life",
+                   "reference_rating_life_hours")  # fmt: skip
+        values = self.values(name) if name in allowed else None
+        if values is None:
+            raise InputError("name", f"must be one of {', '.join(allowed)} (where computed)")
+        return spread_of(values)
 
 
 def spread_of(values: Any, scale: float | None = None) -> Spread:
@@ -118,6 +164,7 @@ def sweep(
     clearance: Any = 0.0,
     exponent: Any = 1.5,
     steps: Any = DEFAULT_STEPS,
+    life: Callable[[np.ndarray], Any] | None = None,
 ) -> CageSweep:
     """Solve the ring equilibrium at ``steps`` cage positions over one ball pitch.
 
@@ -140,6 +187,10 @@ def sweep(
         Load-deflection exponent ``m``: 3/2 for balls, 10/9 for rollers. [-]
     steps : int, default 37
         Cage positions over the pitch, both ends included, 2 to 1 000 000. [-]
+    life : callable, optional
+        L10r of ball loads [N] of shape (steps, z) (e.g. a partial of
+        :func:`bearingload.studies.reference_life.ball_reference_life`): its values at every
+        cage position become ``reference_rating_life``. [10^6 rev]
 
     Returns
     -------
@@ -183,6 +234,9 @@ def sweep(
         stiffness_matrix=r.stiffness_matrix,
         stiffness_radial=r.stiffness_radial,
         compensating_clearance=compensating_clearance(z, f, k, m),
+        reference_rating_life=(
+            None if life is None else np.asarray(life(k * np.maximum(delta, 0.0) ** m))
+        ),
     )
 
 
