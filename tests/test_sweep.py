@@ -192,3 +192,26 @@ def test_compensating_clearances_solved_back():
         assert abs(s.x[0] - s.x[1]) <= 1e-9 * (scale + abs(g))
         below, above = (sweep(z, load, k, g * f, steps=3) for f in (1 - 1e-4, 1 + 1e-4))
         assert (below.x[0] - below.x[1]) * (above.x[0] - above.x[1]) < 0
+
+
+@pytest.mark.parametrize("g", [-0.02, -0.005, 0.0, 0.0125])
+def test_life_sees_the_engines_ball_loads_also_under_preload(g):
+    """The ball loads handed to ``life`` are the engine's at each cage position: their largest
+    is Q_max and they balance the load (preload included: the balls beyond the load zone carry
+    too), as solve's LoadDistribution.ball_loads gives them."""
+    z, f, k = 9, 1000.0, 274868.876
+    seen = []
+
+    def life(q):
+        seen.append(q)
+        return q.max(axis=1)
+
+    s = sweep(z, f, k, g, steps=5, life=life)
+    (q,) = seen
+    assert np.allclose(s.reference_rating_life, s.q_max, rtol=1e-12)
+    phi = np.deg2rad(s.cage_angle)[:, None] + 2.0 * np.pi * np.arange(z) / z
+    assert np.allclose((q * np.cos(phi)).sum(axis=1), f, rtol=1e-9)
+    assert np.allclose((q * np.sin(phi)).sum(axis=1), 0.0, atol=1e-9 * f)
+    for i, angle in enumerate(s.cage_angle):
+        one = solve(z, f, k, g, float(angle), 1.5)
+        assert np.allclose(q[i], one.ball_loads, rtol=1e-12, atol=1e-12 * f)

@@ -19,7 +19,7 @@ import numpy as np
 
 from bearingload import validate
 from bearingload.errors import InputError
-from bearingload.models.equilibrium import LoadDistribution, solve
+from bearingload.models.equilibrium import LoadDistribution, ball_approaches, solve
 
 #: Cage positions over one pitch when none are asked for (both ends included). [-]
 DEFAULT_STEPS = 37
@@ -271,18 +271,18 @@ def compensating_clearance(
 
 
 def _ball_approaches(r: LoadDistribution, z: int) -> np.ndarray:
-    """Approach of balls 1..z at every case of ``r``, shape (n, z). [mm]
+    """Approach of balls 1..z at every case of ``r``, shape (n, z) [mm]: the engine's own
+    :func:`bearingload.models.equilibrium.ball_approaches` (from the reference position, so that
+    a clearance much larger than the elastic approach costs no digits; under preload from the
+    centred ring, every ball pressed by -G_r/2 plus the ring's displacement)."""
 
-    From the engine's reference position (``r.offset``, ``r.reference``; see LoadDistribution):
-    ``delta_i = offset . n_i - e u_i`` with ``u_i = 1 - cos(phi_i - mu)/cos h``, so a clearance
-    much larger than the elastic approach costs no digits.
-    """
-    phi = np.deg2rad(np.asarray(r.cage_angle))[:, None] + 2.0 * np.pi * np.arange(z) / z
-    mu, h = r.reference[:, :1], r.reference[:, 1:]
-    theta = phi - mu
-    u = 2.0 * np.sin((theta + h) / 2.0) * np.sin((theta - h) / 2.0) / np.cos(h)
-    e = np.asarray(r.clearance)[:, None] / 2.0
-    return r.offset[:, :1] * np.cos(phi) + r.offset[:, 1:] * np.sin(phi) - e * u
+    def column(a: Any) -> np.ndarray:
+        return np.broadcast_to(np.asarray(a, dtype=float), np.shape(r.x)).reshape(-1, 1)
+
+    reference, offset = (np.asarray(a).reshape(-1, 2) for a in (r.reference, r.offset))
+    return ball_approaches(
+        z, column(r.cage_angle), column(r.clearance), column(r.x), column(r.y), reference, offset
+    )
 
 
 def _one(name: str, value: np.ndarray) -> np.ndarray:
