@@ -159,3 +159,15 @@ def test_a_coupling_below_rounding_is_zero_whatever_the_order_of_the_sum():
     k = np.asarray(r.stiffness_matrix)
     assert k[0, 2] == 0.0 and k[2, 0] == 0.0 and k[2, 3] == 0.0
     assert k[0, 3] > 1e-3 * math.sqrt(k[0, 0] * k[3, 3])
+
+
+@pytest.mark.parametrize("lever", [1e160, 1e300])
+def test_an_overflowing_tilting_stiffness_is_refused_not_zeroed(lever):
+    """A lever whose square times K overflows gives an infinite tilting stiffness: refused
+    naming tilt_radius. The rounding threshold (4 z eps sqrt(K_aa K_bb)) is itself infinite in
+    that row and had set the infinite entries to 0: a tilting stiffness of 0 N mm/rad, printed
+    with exit 0."""
+    from bearingload.errors import InputError
+
+    with pytest.raises(InputError, match="tilt_radius"):
+        solve_combined(9, 1400.0, 700.0, clearance=0.0125, tilt_radius=lever, **G6205)

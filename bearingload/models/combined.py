@@ -1050,14 +1050,15 @@ def _tangent(p: Problem, geo: _Geometry, point: _ring.Point, kappa: np.ndarray,
     along, across = np.array([0, 2, 3]), np.array([1, 4])
     t[np.ix_(mirrored, along, across)] = 0.0
     t[np.ix_(mirrored, across, along)] = 0.0
-    # a coupling within the rounding of its sum over the balls (|K_ab| <= sqrt(K_aa K_bb) for
-    # this positive semi-definite matrix) is 0: it does not follow the order of the summation
-    diag = np.sqrt(np.abs(np.diagonal(t, axis1=1, axis2=2)))
-    t[np.abs(t) <= (4.0 * p.arms.shape[2] * EPS) * diag[:, :, None] * diag[:, None, :]] = 0.0
     if not np.all(np.isfinite(t)):  # a lever of 1e300 mm: its square times K overflows
         raise InputError(
             "tilt_radius", "is so large that the tilting stiffness (lever^2 K) overflows"
         )
+    # a coupling within the rounding of its sum over the balls (|K_ab| <= sqrt(K_aa K_bb) for
+    # this positive semi-definite matrix) is 0: it does not follow the order of the summation
+    # (after the overflow check: an infinite diagonal would make the threshold infinite)
+    diag = np.sqrt(np.abs(np.diagonal(t, axis1=1, axis2=2)))
+    t[np.abs(t) <= (4.0 * p.arms.shape[2] * EPS) * diag[:, :, None] * diag[:, None, :]] = 0.0
     return t
 
 
