@@ -184,11 +184,14 @@ def test_the_default_tilt_lever_is_reported_as_a_number():
         (["6205", "-F", "1kN", "-A", "300N"], "the combined engine"),
         (["7205B", "-F", "1kN"], "the combined engine"),
         (["-z", "9", "-F", "1000", "-K", "1e5"], "a ring given by its balls and stiffness"),
+        (["-z", "9", "--ball-diameter", "7.938", "--pitch-diameter", "38.5", "-F", "1kN"],
+         "a bearing without a dynamic load rating C"),
     ],
-)
+)  # fmt: skip
 def test_revolutions_where_no_allowable_load_is_printed_is_refused(args, where, capsys):
     """--revolutions sets L of the radial engine's allowable load C/(L/10^6)^(1/3); with an
-    axial load (the combined engine) or a ring without C it was silently ignored."""
+    axial load (the combined engine) or a ring without C (by its stiffness, or by its ball
+    geometry without --dynamic-rating) it was silently ignored."""
     from .cli_helpers import run_entry
 
     code, out, err = run_entry(capsys, "solve", *args, "--revolutions", "1e8")

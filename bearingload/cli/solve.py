@@ -215,6 +215,8 @@ def _radial(
 
     if case.dynamic_rating is not None:
         bearings = [b.with_dynamic_rating(case.dynamic_rating) for b in bearings]
+    if not any(b.C for b in bearings):
+        _refuse_revolutions("a bearing without a dynamic load rating C", "give --dynamic-rating")
     check_rotating(case, bearings[0], methods)
     angle = case.cage_angle_deg(bearings[0].balls)
     cases = solve_bearing(bearings, case.radial_load, angle, methods, revolutions)
