@@ -215,3 +215,21 @@ def test_life_sees_the_engines_ball_loads_also_under_preload(g):
     for i, angle in enumerate(s.cage_angle):
         one = solve(z, f, k, g, float(angle), 1.5)
         assert np.allclose(q[i], one.ball_loads, rtol=1e-12, atol=1e-12 * f)
+
+
+def test_the_mean_of_huge_values_does_not_overflow():
+    """L10rh at a speed of 1e-300 rpm is ~4e307 h at every cage position: their sum overflows,
+    the mean must not (it gave numpy's 'overflow encountered in reduce', an infinite mean and,
+    in JSON, an internal error)."""
+    import warnings
+
+    from bearingload.studies.sweep import spread_of
+
+    v = np.array([3.9e307, 3.7e307, 3.8e307, 3.9e307] * 10)
+    with warnings.catch_warnings():
+        warnings.simplefilter("error")
+        s = spread_of(v)
+    assert s.mean == pytest.approx(np.mean(v[:-1] / 1e307) * 1e307, rel=1e-15)
+    assert (s.min, s.max) == (3.7e307, 3.9e307)
+    tiny = spread_of(np.array([2e-320, 3e-320, 2e-320]))  # subnormal: scaling must not lose them
+    assert tiny.mean == pytest.approx(2.5e-320, rel=1e-3)

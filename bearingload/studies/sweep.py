@@ -151,7 +151,12 @@ def spread_of(values: Any, scale: float | None = None) -> Spread:
     value in size) is rounding noise and is 0."""
     v = np.asarray(values, dtype=float)
     lo, hi = float(v.min()), float(v.max())
-    mean = float(v[:-1].mean()) if v.size > 1 else float(v[0])
+    period = v[:-1] if v.size > 1 else v
+    with np.errstate(over="ignore"):
+        mean = float(period.mean())
+    if not np.isfinite(mean):  # the sum of values near the largest double overflows
+        big = float(np.abs(period).max())
+        mean = big * float((period / big).mean())
     if abs(mean) <= 1e-12 * (float(np.abs(v).max()) if scale is None else scale):
         mean = 0.0  # rounding noise of a quantity that averages out (y: odd in the cage angle)
     return Spread(lo, mean, hi, hi - lo)
