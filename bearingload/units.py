@@ -123,7 +123,8 @@ def _check_plausible(value: float, kind: str, name: str, text: object) -> None:
     base = BASE_UNIT[kind]
     meant = likely_unit(value, kind, name)
     hint = f": did you mean {meant}?" if meant is not None else "."
-    lowest = f"above {low:g}" if kind in _SIGNED and low == 0 else f"at least {low:g}"
+    # a lower bound of 0 is never a value: the signed kinds and the roughness refuse it
+    lowest = f"above {low:g}" if low == 0 else f"at least {low:g}"
     raise InputError(
         name,
         f"a bare {text} is {value:g} {base}, implausible for {what} (bare numbers are {base}; "

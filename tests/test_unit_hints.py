@@ -172,3 +172,13 @@ def test_a_ball_diameter_too_small_for_the_class_clearance_names_the_ball_diamet
     hand = ["solve", "-z", "8", "--ball-diameter", "1", "--pitch-diameter", "10", "-F", "10"]
     assert "did you mean 0.6um?" in run_entry(capsys, *hand, "-G", "0.6")[2]
     assert "did you mean" not in run_entry(capsys, *hand, "-G", "0.6mm")[2]
+
+
+def test_the_lower_bound_printed_for_a_roughness_is_one_it_accepts(capsys):
+    """A bare -0.2 --roughness said 'plausible at least 0 and below 0.01 mm', yet a roughness of
+    0 is refused ('must be greater than 0 mm'): the range printed contradicted the refusal."""
+    base = ["solve", "6205", "-F", "1kN", "--speed", "3000", "--viscosity", "20", "--roughness"]
+    code, out, err = run_entry(capsys, *base, "-0.2")
+    assert code == 2 and "plausible above 0 and below 0.01 mm" in err, err
+    code, out, err = run_entry(capsys, *base, "0")
+    assert code == 2 and "greater than 0" in err, err
