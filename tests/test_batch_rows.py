@@ -202,3 +202,16 @@ def test_an_empty_column_name_inside_the_header_is_named(tmp_path, capsys):
         "Error: Invalid value for 'CASES.csv': the header's column 2 has no name (only empty "
         "columns at the end of the header are allowed, and their cells must be empty)"
     ]
+
+
+def test_a_revolutions_cell_of_a_ball_set_without_c_skips_its_row_as_solve_refuses_it():
+    """A ball set by its geometry without a dynamic_rating has no allowable load: its
+    revolutions cell was ignored (empty revolutions and allowable_load, exit 0); solve refuses
+    --revolutions there. With a dynamic_rating cell the row gives the allowable load."""
+    head = "balls,ball_diameter,pitch_diameter,load,dynamic_rating,revolutions\n"
+    r = _batch(head + "9,7.938,38.5,1000,,1e6\n9,7.938,38.5,1000,14kN,1e6\n")
+    assert r.exit_code == 1, r.output
+    assert r.stderr.startswith("Warning: row 2: revolutions: "), r.stderr
+    assert "dynamic_rating" in r.stderr.splitlines()[0]
+    rows = _csv_values(r.stdout)
+    assert rows["row"] == "3" and float(rows["allowable_load [N]"]) == pytest.approx(14000.0)

@@ -208,6 +208,9 @@ class BatchSolver:
             raise InputError(
                 "revolutions", f"must be greater than 0 rev (got {v['revolutions']:g})"
             )
+        if "revolutions" in v and not b.C:  # no allowable load C/L^(1/p): solve refuses it
+            raise InputError("revolutions", "sets the life of the allowable load, which needs "
+                             "a dynamic load rating C: give a dynamic_rating (or a bearing)")  # fmt: skip
         return ("bearing", b, method, v.get("rotating", "inner"))
 
     def _combined_key(self, cols: dict[str, list[Any]], i: int) -> tuple[Any, ...]:
