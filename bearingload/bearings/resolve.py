@@ -457,11 +457,7 @@ def _angular(
     from bearingload.bearings.angular import find_angular
     from bearingload.bearings.designation import Designation
 
-    row = find_angular(parsed)
-    if maker is not None and maker.strip().upper() != row.maker:
-        raise InputError(
-            "maker", f"the angular-contact row {row.designation} is {row.maker}'s only"
-        )
+    row = find_angular(parsed, maker)
     fi = DEFAULT_F_I if given["f_i"] is None else given["f_i"]
     fo = DEFAULT_F_O if given["f_o"] is None else given["f_o"]
     set_ = {"balls": row.balls, "ball_diameter": row.ball_diameter,
