@@ -273,3 +273,18 @@ def test_catalog_show_takes_the_rows_maker_as_solve_does(capsys):
     code, out, err = run_entry(capsys, "catalog", "show", "7205B", "--maker", "koyo", "--format",
                                "json")  # fmt: skip
     assert code == 0 and json.loads(out)["C"] == 14000.0
+
+
+def test_solve_7205c_takes_koyos_printed_f0_for_the_15_degree_factors(capsys):
+    """ISO 281 Table 3 at 15°: e, Y interpolated in i f0 F_a/C0r with the f0 Koyo prints (14.0);
+    here f0 F_a/C0r = 1.3725, between the knots 1.07 (e 0.46, Y 1.23) and 1.43 (0.47, 1.19)."""
+    code, out, err = run_entry(capsys, "solve", "7205C", "-F", "2kN", "-A", "1kN",
+                               "--format", "json")  # fmt: skip
+    assert code == 0 and err == ""
+    case = json.loads(out)["cases"][0]
+    t = (14.0 * 1000 / 10200 - 1.07) / (1.43 - 1.07)
+    assert 1000 / 2000 > 0.46 + t * 0.01  # F_a/F_r > e
+    p = 0.44 * 2000 + (1.23 - t * 0.04) * 1000
+    assert case["equivalent_load"] == pytest.approx(p, rel=1e-9)
+    assert case["rating_life"] == pytest.approx((16600 / p) ** 3, rel=1e-9)
+    assert case["static_equivalent_load"] == pytest.approx(max(2000, 1000 + 0.46 * 1000))

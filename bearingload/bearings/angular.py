@@ -108,7 +108,8 @@ def parse_angular(text: str) -> AngularDesignation | None:
 
 @dataclass(frozen=True)
 class AngularRow:
-    """One row of ``data/angular_contact.csv`` (units: mm, N, °)."""
+    """One row of ``data/angular_contact.csv`` (units: mm, N, °; ``f0`` the factor of
+    C_0r = f0 z D_w^2 cos(alpha) where the maker prints it: Koyo's 15° rows)."""
 
     designation: str
     maker: str
@@ -121,6 +122,7 @@ class AngularRow:
     pitch_diameter: float
     C: float
     C0: float
+    f0: float | None
     method: str
     confidence: str
     source: str
@@ -145,6 +147,7 @@ def angular_rows() -> tuple[AngularRow, ...]:
             float(r["pitch_diameter"]),
             float(r["C"]),
             float(r["C0"]),
+            float(r["f0"]) if r["f0"] else None,
             r["method"],
             r["confidence"],
             r["source"],

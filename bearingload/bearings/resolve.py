@@ -475,7 +475,7 @@ def _angular(
     geom = BearingGeometry(
         row.designation, parsed.standard, row.d, row.D, row.B, dw, z, dm, row.C, row.C0, fi, fo,
         row.source, row.notes,
-        name, overrides=overrides, maker=row.maker, method=row.method, confidence=row.confidence,
+        name, f0=row.f0, overrides=overrides, maker=row.maker, method=row.method, confidence=row.confidence,
     )  # fmt: skip
     src = f"catalogue row {row.designation} ({row.maker}, {row.contact_angle:g}°): {row.source}"
     what = {k: "given" if k in overrides else f"catalogue ({row.method})" for k in set_}

@@ -119,6 +119,7 @@ def _angular_entry(designation: str, fmt: str, maker: str | None) -> str | None:
         ("pitch_diameter", "pitch diameter d_m", r.pitch_diameter, "mm"),
         ("C", "dynamic load rating C", r.C, "N"),
         ("C0", "static load rating C0", r.C0, "N"),
+        *([("f0", "factor f0 (C0 = f0 z D_w^2 cos alpha_0)", r.f0, "")] if r.f0 else []),
         ("maker", "ratings of maker", r.maker, ""),
         ("method", "ball set read/derived", r.method, ""),
         ("confidence", "ball set confidence", r.confidence, ""),
