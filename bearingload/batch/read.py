@@ -41,6 +41,7 @@ COLUMNS: dict[str, str] = {
     "moment": "moment",
     "moment_cross": "moment",
     "misalignment": "angle",
+    "contact_angle": "angle",
     "tilt_radius": "tilt_radius",
     "dynamic_rating": "force",
     "rotating": "ring",
@@ -71,8 +72,9 @@ SERVICE_RANGES: dict[str, tuple[float, float, bool, str]] = {
     "pressure_viscosity": (1.0, 100.0, True, "must lie between 1 and 100 1/GPa"),
 }
 #: The load columns: a row with a cell in one of them is a combined-load case (3-D equilibrium),
-#: as solve's load options choose its engine; the others are radial cases.
-LOAD_COLUMNS = ("axial_load", "moment", "moment_cross", "misalignment")
+#: as solve's load options choose its engine (``contact_angle``: an angular-contact ring given
+#: by its ball set, as solve's --contact-angle); the others are radial cases.
+LOAD_COLUMNS = ("axial_load", "moment", "moment_cross", "misalignment", "contact_angle")
 #: Columns that belong to the combined load (tilt_radius: the lever of its tilt).
 COMBINED_COLUMNS = (*LOAD_COLUMNS, "tilt_radius")
 #: Columns a file with combined-load columns cannot have: its combined rows are solved by the

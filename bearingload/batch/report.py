@@ -41,13 +41,13 @@ _BEARING_ONLY = (
 
 #: Columns of a combined-load file written only when the file has them (as solve writes them
 #: only when given).
-_COMBINED_IF_GIVEN = ("moment_cross",)
+_COMBINED_IF_GIVEN = ("moment_cross", "contact_angle")
 #: The output columns of a combined-load file (those of ``solve --format csv`` with an axial
 #: load), after the row number.
 COMBINED_KEYS = (
     "bearing", "method", "balls", "load", "axial_load", "moment", "moment_cross",
-    "misalignment", "tilt_radius", "rotating", "stiffness", "clearance", "clearance_pick",
-    "cage_angle", "q_max", "loaded_balls", "p_max_inner", "p_max_outer",
+    "misalignment", "contact_angle", "tilt_radius", "rotating", "stiffness", "clearance",
+    "clearance_pick", "cage_angle", "q_max", "loaded_balls", "p_max_inner", "p_max_outer",
     "static_equivalent_load", "static_safety", "static_rating", "contact_angle_max",
     "free_contact_angle", "axial_play", "x", "y", "axial", "tilt", "tilt_cross",
     "stiffness_radial", "stiffness_axial", "stiffness_tilt", "reference_rating_life",

@@ -224,6 +224,8 @@ class BatchSolver:
                 "bearing", "missing: the combined load needs a bearing or its ball geometry"
             )
         b = self._bearing(v)
+        if "contact_angle" in v:
+            b = _hand_angular(v, b)
         _check_rotating(v, b, v.get("dynamic_rating"), "exact")
         _check_life_cells(v, b)
         if "load" not in v:
@@ -262,6 +264,29 @@ class BatchSolver:
         if isinstance(hit, BearingloadError):
             raise hit
         return hit
+
+
+def _hand_angular(v: dict[str, Any], b: Any) -> Any:
+    """The angular-contact ring of a row's ball set and ``contact_angle`` cell, checked as
+    solve's --contact-angle is: 0 to 60°, no designation, no clearance."""
+    import dataclasses
+
+    alpha = v["contact_angle"]
+    if not 0.0 <= alpha <= 60.0:
+        raise InputError("contact_angle", f"must be from 0 to 60° (got {alpha:.10g}°)")
+    if "bearing" in v:
+        raise InputError(
+            "contact_angle",
+            "cannot be used with a bearing designation (the designation gives the angle): give "
+            "the angular-contact ring by its ball set (ball_diameter, pitch_diameter, balls)",
+        )
+    if v.get("clearance") is not None:
+        raise InputError(
+            "clearance",
+            "must be blank with a contact_angle: the design contact angle fixes the geometry "
+            "of an angular-contact bearing",
+        )
+    return dataclasses.replace(b, contact_angle=float(alpha), clearance=0.0)
 
 
 def _check_life_cells(v: dict[str, Any], b: Any) -> None:

@@ -108,7 +108,8 @@ def parse_angular(text: str) -> AngularDesignation | None:
 
 @dataclass(frozen=True)
 class AngularRow:
-    """One row of ``data/angular_contact.csv`` (units: mm, N, °)."""
+    """One row of ``data/angular_contact.csv`` (units: mm, N, °; ``f0`` the factor of
+    C_0r = f0 z D_w^2 cos(alpha) where the maker prints it: Koyo's 15° rows)."""
 
     designation: str
     maker: str
@@ -121,6 +122,7 @@ class AngularRow:
     pitch_diameter: float
     C: float
     C0: float
+    f0: float | None
     method: str
     confidence: str
     source: str
@@ -145,6 +147,7 @@ def angular_rows() -> tuple[AngularRow, ...]:
             float(r["pitch_diameter"]),
             float(r["C"]),
             float(r["C0"]),
+            float(r["f0"]) if r["f0"] else None,
             r["method"],
             r["confidence"],
             r["source"],
@@ -154,13 +157,19 @@ def angular_rows() -> tuple[AngularRow, ...]:
     )
 
 
-def find_angular(parsed: AngularDesignation) -> AngularRow:
-    """The catalogue row of ``parsed``.
+#: The maker whose row is used when a designation has rows of several makers and none is named.
+DEFAULT_ANGULAR_MAKER = "NSK"
+
+
+def find_angular(parsed: AngularDesignation, maker: str | None = None) -> AngularRow:
+    """The catalogue row of ``parsed``: ``maker``'s, else NSK's where NSK has one, else the
+    one maker's with a row (Koyo's 15°, 30° and 40° rows, NSK's 40° BEA rows).
 
     Raises
     ------
     InputError
-        (``bearing``) when there is no row: names the type and the rows there are.
+        (``bearing``) when there is no row: names the type and the rows of that contact angle
+        and series there are; (``maker``) when ``maker`` has no row for it.
     """
     m = _ISO.match(re.sub(r"\s+", " ", parsed.text.upper()))
     if m and _PAIR.search(m.group("rest")):
@@ -171,13 +180,34 @@ def find_angular(parsed: AngularDesignation) -> AngularRow:
             f"models one single-row bearing; give {parsed.name} with the load one bearing of "
             "the set carries",
         )
-    for row in angular_rows():
-        if row.designation == parsed.name:
-            return row
-    names = ", ".join(r.designation for r in angular_rows())
-    raise InputError(
-        "bearing",
+    rows = [r for r in angular_rows() if r.designation == parsed.name]
+    if not rows:
+        raise InputError("bearing", _no_row_message(parsed))
+    if maker is not None:
+        for row in rows:
+            if row.maker == maker.strip().upper():
+                return row
+        makers = ", ".join(r.maker for r in rows)
+        raise InputError(
+            "maker", f"the angular-contact bearing {parsed.name} has rows of {makers} only"
+        )
+    return next((r for r in rows if r.maker == DEFAULT_ANGULAR_MAKER), rows[0])
+
+
+def _no_row_message(parsed: AngularDesignation) -> str:
+    """Why ``parsed`` has no row, with the rows of its contact angle and series there are."""
+    kin = sorted(
+        {r.designation for r in angular_rows()
+         if r.contact_angle == parsed.contact_angle and r.designation[:2] == parsed.name[:2]}
+    )  # fmt: skip
+    if parsed.standard == "GOST" or not kin:
+        near = f"there is no {parsed.contact_angle:g}° row"
+        if parsed.standard == "ISO":
+            near += f" of series {parsed.series}"
+    else:
+        near = f"the {parsed.contact_angle:g}° rows of series {parsed.series} are {', '.join(kin)}"
+    return (
         f"{parsed.text!r} is {parsed.what}, which has no catalogue row yet (no public source "
-        f"read for it); the angular-contact rows are {names}, or give the ring by hand with "
-        "its contact angle",
+        f"read for it); {near} (bearingload catalog --type angular lists every row), or give "
+        "the ring by hand with its contact angle"
     )

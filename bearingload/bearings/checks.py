@@ -309,6 +309,28 @@ def element_warnings(result: Any, balls: int, element: str = "ball") -> list[str
 MISALIGNMENT_TOLERATED = 10.0 / 60.0
 
 
+def misalignment_findings(misalignment: float, angular: bool) -> list[str]:
+    """The warning on a tilt of the inner ring [°]: above :data:`MISALIGNMENT_TOLERATED` for a
+    deep-groove bearing; any tilt for a single-row angular-contact bearing, whose tolerable
+    misalignment SKF does not give as a number ("limited ability to compensate misalignment
+    ... exact permissible values cannot be given": SKF General Catalogue 6000, Russian edition
+    2006, single row angular contact ball bearings, "Misalignment", p. 413)."""
+    if angular and abs(misalignment) > 0:
+        return [
+            f"the inner ring tilts by {misalignment:.4g}° ({abs(misalignment) * 60:.3g} arcmin): "
+            "a single-row angular-contact ball bearing takes little misalignment, and SKF gives "
+            "no tolerable value for it (it depends on the clearance or preload, the size, the "
+            "internal design and the loads); the 2-10 arcmin of a deep-groove bearing do not "
+            "apply: check the tilt with the maker"
+        ]
+    if not angular and abs(misalignment) > MISALIGNMENT_TOLERATED:
+        return [
+            f"a tilt of the inner ring of {misalignment:.4g}° is more than the 10 arcmin "
+            "(0.167°) a deep-groove ball bearing tolerates (SKF catalogue)"
+        ]
+    return []
+
+
 def combined_warnings(
     bearing: ResolvedBearing,
     radial_load: float,
@@ -360,11 +382,8 @@ def combined_warnings(
             "only one ball carries the load: the result hangs on a single contact (large "
             "clearance or few elements); check the clearance"
         )
-    if misalignment is not None and abs(misalignment) > MISALIGNMENT_TOLERATED:
-        out.append(
-            f"a tilt of the inner ring of {misalignment:.4g}° is more than the 10 arcmin "
-            "(0.167°) a deep-groove ball bearing tolerates (SKF catalogue)"
-        )
+    if misalignment is not None:
+        out.extend(misalignment_findings(misalignment, alpha is not None))
     group = bearing.clearance_class
     f0 = None if bearing.geometry is None else bearing.geometry.f0  # P needs C0r and f0
     if axial_load != 0 and c0 and f0 is not None and group in ("C3", "C4", "C5"):

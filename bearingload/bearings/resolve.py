@@ -454,11 +454,7 @@ def _angular(
     from bearingload.bearings.angular import find_angular
     from bearingload.bearings.designation import Designation
 
-    row = find_angular(parsed)
-    if maker is not None and maker.strip().upper() != row.maker:
-        raise InputError(
-            "maker", f"the angular-contact row {row.designation} is {row.maker}'s only"
-        )
+    row = find_angular(parsed, maker)
     fi = DEFAULT_F_I if given["f_i"] is None else given["f_i"]
     fo = DEFAULT_F_O if given["f_o"] is None else given["f_o"]
     set_ = {"balls": row.balls, "ball_diameter": row.ball_diameter,
@@ -476,7 +472,7 @@ def _angular(
     geom = BearingGeometry(
         row.designation, parsed.standard, row.d, row.D, row.B, dw, z, dm, row.C, row.C0, fi, fo,
         row.source, row.notes,
-        name, overrides=overrides, maker=row.maker, method=row.method, confidence=row.confidence,
+        name, f0=row.f0, overrides=overrides, maker=row.maker, method=row.method, confidence=row.confidence,
     )  # fmt: skip
     src = f"catalogue row {row.designation} ({row.maker}, {row.contact_angle:g}°): {row.source}"
     what = {k: "given" if k in overrides else f"catalogue ({row.method})" for k in set_}

@@ -125,7 +125,14 @@ def table(
     if case.bearing is not None and parse_angular(case.bearing) is not None:  # as --contact-angle
         raise click.UsageError(
             f"Invalid value for '--bearing': {case.bearing.strip()!r} is an angular-contact "
-            f"bearing, solved by 'solve' and 'sweep', not by 'table {name}' (docs/angular_contact.md)"
+            f"bearing, solved by 'solve', 'sweep' and 'batch', not by 'table {name}'"
+            + (
+                " (its rows are radial clearances; the contact angle fixes an angular-contact "
+                "bearing's geometry)"
+                if name == "life"
+                else ""
+            )
+            + " (docs/angular_contact.md)"
         )
     k_given = case.stiffness_value()  # N/mm^m
     refuse_range(case, f"table {name}")

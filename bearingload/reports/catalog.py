@@ -90,9 +90,10 @@ def angular_list(fmt: str, bore: float | None = None) -> str:
         rows=rows,
         notes=[
             f"{len(rows)} bearings; f_i = 0.52, f_o = 0.53 assumed (not printed by the source). "
-            "Sources: bearingload catalog show DESIGNATION. Other angular-contact types (C, AC, "
-            "A; GOST 36xxx, 46xxx, 66xxx) are read but have no row yet: give the ring by hand "
-            "with solve --contact-angle (docs/angular_contact.md)."
+            "Sources: bearingload catalog show DESIGNATION (where NSK and Koyo both have a row, "
+            "NSK's is used unless --maker KOYO). The 25° types (AC, A5) and GOST 36xxx, 46xxx, "
+            "66xxx are read but have no row yet: give the ring by hand with solve "
+            "--contact-angle (docs/angular_contact.md)."
         ],
     )
     return render([table], fmt)
@@ -105,9 +106,7 @@ def _angular_entry(designation: str, fmt: str, maker: str | None) -> str | None:
     parsed = parse_angular(designation)
     if parsed is None:
         return None
-    r = find_angular(parsed)
-    if maker is not None and maker.strip().upper() != r.maker:  # as solve 7205B --maker
-        raise InputError("maker", f"the angular-contact row {r.designation} is {r.maker}'s only")
+    r = find_angular(parsed, maker)  # as solve 7205B --maker
     fields: list[tuple[str, str, Any, str]] = [
         ("designation", "designation", r.designation, ""),
         ("as_typed", "as typed", parsed.text, ""),
@@ -120,6 +119,7 @@ def _angular_entry(designation: str, fmt: str, maker: str | None) -> str | None:
         ("pitch_diameter", "pitch diameter d_m", r.pitch_diameter, "mm"),
         ("C", "dynamic load rating C", r.C, "N"),
         ("C0", "static load rating C0", r.C0, "N"),
+        *([("f0", "factor f0 (C0 = f0 z D_w^2 cos alpha_0)", r.f0, "")] if r.f0 else []),
         ("maker", "ratings of maker", r.maker, ""),
         ("method", "ball set read/derived", r.method, ""),
         ("confidence", "ball set confidence", r.confidence, ""),

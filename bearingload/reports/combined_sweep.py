@@ -189,11 +189,25 @@ def _rows_table(s: CombinedSweep) -> Table:
         _row_keys(s),
         rows(s),
         [
-            "axial: from the centred rings; tilt: about the axis across the load; tilt cross: "
+            f"axial: {_axial_origin(s)}; tilt: about the axis across the load; tilt cross: "
             "about the load line; ball: the ball carrying Q_max (of two equal, the lower "
             "number); alpha_max: the largest contact angle of a loaded ball."
         ],
     )
+
+
+def _axial_origin(s: CombinedSweep) -> str:
+    """Where the axial displacement is measured from (docs/angular_contact.md)."""
+    if s.bearing.contact_angle is None:
+        return "from the centred rings"
+    return "from the zero-load position (every ball at the design contact angle)"
+
+
+def _model(s: CombinedSweep) -> str:
+    alpha = s.bearing.contact_angle
+    kind = ("deep-groove ball bearing" if alpha is None
+            else f"single-row angular-contact ball bearing, {alpha:g}°")  # fmt: skip
+    return f"3-D ring equilibrium, {kind} (ISO/TS 16281)"
 
 
 def _csv_table(s: CombinedSweep) -> Table:
@@ -225,7 +239,7 @@ def combined_sweep_json(s: CombinedSweep) -> dict[str, Any]:
     keys = [*head, *body[0], *summary]
     return {
         **head,
-        "model": "3-D ring equilibrium, deep-groove ball bearing (ISO/TS 16281)",
+        "model": _model(s),
         "steps": int(s.cage_angle.size),
         "rows": body,
         "summary": summary,
