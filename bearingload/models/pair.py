@@ -79,7 +79,7 @@ class PairDistribution:
         "DB", "DF" or "DT".
     bearings : tuple of two CombinedDistribution
         Each bearing in its own frame (bearing 2 of DB/DF mirrored): ``load``, ``axial_load``
-        and ``moment`` are the forces its balls carry (F_x along the pair's load line, F_a >= 0
+        and ``moment`` are the forces its balls carry (the size of its radial force, F_a >= 0
         its thrust, M its own moment), ``x``..``tilt_cross`` its local displacement, ``axial``
         from its zero-load position (the preload offset included). [N, N mm, mm, °]
     load, axial_load, moment, moment_cross : ndarray
@@ -171,11 +171,12 @@ class _Pair:
     off_hi: np.ndarray  # (n, 2) local axial offset (scaled), double-double
     off_lo: np.ndarray
     f: np.ndarray  # (n, 5) applied, scaled
+    held: np.ndarray  # (n, 5) bool: y and theta_c of a case symmetric about the load line, 0
 
     def take(self, idx: np.ndarray) -> _Pair:
         return _Pair(
             (self.probs[0].take(idx), self.probs[1].take(idx)), self.sigma, self.lever[idx],
-            self.off_hi[idx], self.off_lo[idx], self.f[idx],
+            self.off_hi[idx], self.off_lo[idx], self.f[idx], self.held[idx],
         )  # fmt: skip
 
     def maps(self) -> np.ndarray:
@@ -245,7 +246,7 @@ def _evaluate(pp: _Pair, rows: np.ndarray, vh: np.ndarray, vl: np.ndarray, curve
         balls.append(b)
         kappas.append(kappa)
         loads.append(lo)
-    res = _ring.residual_of(pp.f, gen, size, np.zeros(vh.shape, dtype=bool))
+    res = _ring.residual_of(pp.f, gen, size, pp.held)
     return _State(balls, kappas, loads, gen, res, energy)
 
 
@@ -288,8 +289,8 @@ def _dd_add(vh: np.ndarray, vl: np.ndarray, w: np.ndarray) -> tuple[np.ndarray, 
 def _step(pp: _Pair, st: _State, curve: Any, rows: np.ndarray) -> np.ndarray:
     """The Newton step (n, 5) on the pair's tangent, regularised; where no ball is in contact,
     a move along the load; every component within A (scaled) of the position."""
-    grad = st.gen - pp.f
-    jac, _ = _jacobian(pp, st, curve, rows, symmetric=False)
+    grad = np.where(pp.held, 0.0, st.gen - pp.f)
+    jac = _ring.hold(_jacobian(pp, st, curve, rows, symmetric=False)[0], pp.held)
     trace = np.trace(jac, axis1=1, axis2=2)
     jac += (1e-13 * np.abs(trace) + 1e-300)[:, None, None] * np.eye(5)
     with np.errstate(all="ignore"):
@@ -351,7 +352,7 @@ def _line_search(pp: _Pair, st: _State, curve: Any, rows: np.ndarray,
     with the stiffness frozen falls by 1e-4 of its slope (Armijo) or the residual halves; 0
     where none does."""
     vh, vl = at
-    slope = ((st.gen - pp.f) * step).sum(1)
+    slope = (np.where(pp.held, 0.0, st.gen - pp.f) * step).sum(1)
     t = np.ones(step.shape[0])
     moved = np.zeros_like(step)
     pending = np.arange(step.shape[0])
@@ -536,8 +537,10 @@ def _solve(z: int, kind: str, c: dict, shape: tuple[int, ...]) -> PairDistributi
     first = -0.5 if kind in ("DB", "DT") else 0.5
     lever = np.array([first, -first]) * c["width"][:, None]
     sigma = np.array([1.0, 1.0 if kind == "DT" else -1.0])
+    held = np.zeros((n, 5), dtype=bool)
+    held[:, [1, 4]] = (mirror & (mc == 0))[:, None]  # y and theta_c 0 by symmetry, exactly
     pp = _Pair((prob, prob), sigma, lever / geo.R_i[:, None],
-               np.stack([u_hi, u_hi], 1), np.stack([u_lo, u_lo], 1), f)  # fmt: skip
+               np.stack([u_hi, u_hi], 1), np.stack([u_lo, u_lo], 1), f, held)  # fmt: skip
     vh, vl, res, its = _newton(pp, _start(pp, z, geo, fp / f_ref), curve)
     given = {k: c[k] for k in _UNITS}
     _accepted(res, its, given)
@@ -669,7 +672,7 @@ def _result(kind: str, pp: _Pair, geo: Any, answer: tuple[Any, ...], c: dict,
         gen, size = _ring.forces(p, lo)
         at = _ring.Point(st.balls[k], lo, gen, size, np.zeros(n), np.zeros(n, dtype=np.int64))
         tangent = _comb._tangent(p, geo, at, st.kappa[k], curve, mirrored)
-        given = {"radial_load": gen[:, 0] * f_ref, "axial_load": gen[:, 2] * f_ref,
+        given = {"radial_load": np.hypot(gen[:, 0], gen[:, 1]) * f_ref, "axial_load": gen[:, 2] * f_ref,
                  "moment": gen[:, 3] * f_ref * radius, "clearance": np.zeros(n),
                  "cage_angle": c["cage_angle"]}  # fmt: skip
         out = (wh + wl, st.kappa[k], its, (st.balls[k], lo, gen), tangent)
