@@ -194,9 +194,9 @@ def find_angular(parsed: AngularDesignation) -> AngularRow:
         raise InputError(
             "bearing",
             f"{parsed.text!r} names a matched pair or set of {parsed.name} (suffix DB "
-            "back-to-back, DF face-to-face or DT tandem), which bearingload does not model: it "
-            f"models one single-row bearing; give {parsed.name} with the load one bearing of "
-            "the set carries",
+            "back-to-back, DF face-to-face or DT tandem): 'solve' solves a pair (solve "
+            f"{parsed.name}DB, or {parsed.name} --arrangement DB); here give {parsed.name} with "
+            "the load one bearing of the set carries",
         )
     for row in angular_rows():
         if row.designation == parsed.name:
