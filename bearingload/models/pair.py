@@ -52,7 +52,7 @@ from bearingload.constants import STEEL_MODULUS
 from bearingload.errors import ConvergenceError, InputError
 from bearingload.models import _combined_ring as _ring
 from bearingload.models import combined as _comb
-from bearingload.models._combined_ring import ACCEPT, TOLERANCE, Problem
+from bearingload.models._combined_ring import ACCEPT, AX, TC, TOLERANCE, Problem, T, X, Y
 from bearingload.models.combined import CombinedDistribution
 
 __all__ = ["ARRANGEMENTS", "LIFE_EXPONENT", "PairDistribution", "solve_pair", "pair_life"]
@@ -65,6 +65,9 @@ ARRANGEMENTS = ("DB", "DF", "DT")
 LIFE_EXPONENT = 10.0 / 9.0
 #: Newton steps per case before ConvergenceError. [-]
 MAX_STEPS = 400
+#: The first stage (plain doubles) stops at this residual or after FIRST_STEPS steps. [-]
+FIRST_STAGE = 1e-9
+FIRST_STEPS = 60
 #: Halvings of a step in the line search. [-]
 HALVINGS = 50
 
@@ -172,11 +175,12 @@ class _Pair:
     off_lo: np.ndarray
     f: np.ndarray  # (n, 5) applied, scaled
     held: np.ndarray  # (n, 5) bool: y and theta_c of a case symmetric about the load line, 0
+    precise: bool = True  # the balls in double-double (False: plain doubles, the first stage)
 
     def take(self, idx: np.ndarray) -> _Pair:
         return _Pair(
             (self.probs[0].take(idx), self.probs[1].take(idx)), self.sigma, self.lever[idx],
-            self.off_hi[idx], self.off_lo[idx], self.f[idx], self.held[idx],
+            self.off_hi[idx], self.off_lo[idx], self.f[idx], self.held[idx], self.precise,
         )  # fmt: skip
 
     def maps(self) -> np.ndarray:
@@ -206,7 +210,12 @@ class _State:
 def _local(pp: _Pair, k: int, vh: np.ndarray, vl: np.ndarray) -> tuple[np.ndarray, np.ndarray]:
     """Bearing k's local position ``L_k v`` + its axial offset, double-double (n, 5) each."""
     s, r = float(pp.sigma[k]), -pp.lever[:, k]
-    wh, wl = np.empty_like(vh), np.empty_like(vl)
+    wh, wl = np.empty_like(vh), np.zeros_like(vl)
+    if not pp.precise:  # the first stage: plain doubles
+        wh[:, :2] = vh[:, :2] + r[:, None] * vh[:, 3:]
+        wh[:, 2] = s * vh[:, 2] + (pp.off_hi[:, k] + pp.off_lo[:, k])
+        wh[:, 3:] = s * vh[:, 3:]
+        return wh, wl
     for i, t in ((0, 3), (1, 4)):  # x - (z_k/R_i) t: the product exact, the sum carried
         p, e = _ring._two_prod(vh[:, t], r)
         hi, e2 = _ring._two_sum(vh[:, i], p)
@@ -222,14 +231,14 @@ def _evaluate(pp: _Pair, rows: np.ndarray, vh: np.ndarray, vl: np.ndarray, curve
     """Both bearings at ``v`` (the cases ``rows`` of the whole call, for the stiffness curve):
     K at each ball's angle (``frozen``: these stiffnesses instead), the pair's forces and
     residual."""
-    maps = pp.maps()
     balls, kappas, loads = [], [], []
     gen = np.zeros_like(vh)
     size = np.zeros_like(vh)
     energy = np.zeros(vh.shape[0])
     for k in range(2):
         p = pp.probs[k]
-        b = _ring.reference(p, *_local(pp, k, vh, vl))
+        w = _local(pp, k, vh, vl)
+        b = _ring.reference(p, *w) if pp.precise else _balls_double(p, w[0] + w[1])
         zero = np.zeros_like(b.rho)
         if frozen is not None:
             kappa = frozen[k]
@@ -240,14 +249,29 @@ def _evaluate(pp: _Pair, rows: np.ndarray, vh: np.ndarray, vl: np.ndarray, curve
             kappa = curve(rows, lo0.ca, lo0.cam1)
         lo = _ring.loads(p, b, kappa)
         g, sz = _ring.forces(p, lo)
-        gen += np.einsum("nij,ni->nj", maps[:, k], g)
-        size += np.einsum("nij,ni->nj", np.abs(maps[:, k]), sz)
+        gen += _transposed(pp, k, g)
+        size += _transposed(pp, k, sz, magnitude=True)
         energy += (lo.q * lo.root * lo.root).sum(1) / 2.5
         balls.append(b)
         kappas.append(kappa)
         loads.append(lo)
     res = _ring.residual_of(pp.f, gen, size, pp.held)
     return _State(balls, kappas, loads, gen, res, energy)
+
+
+def _transposed(pp: _Pair, k: int, f: np.ndarray, magnitude: bool = False) -> np.ndarray:
+    """``L_k^T f`` (n, 5): bearing k's generalised forces ``f`` as the pair's (its axial ones
+    times sigma_k, its radial ones also times the lever -z_k/R_i in the tilts); with
+    ``magnitude`` the sizes of the terms (every factor by its size)."""
+    s, r = float(pp.sigma[k]), -pp.lever[:, k]
+    if magnitude:
+        s, r = abs(s), np.abs(r)
+    out = np.empty_like(f)
+    out[:, :2] = f[:, :2]
+    out[:, 2:] = s * f[:, 2:]
+    out[:, 3] += r * f[:, 0]
+    out[:, 4] += r * f[:, 1]
+    return out
 
 
 def _jacobian(pp: _Pair, st: _State, curve: Any, rows: np.ndarray, symmetric: bool) -> Any:
@@ -267,11 +291,16 @@ def _jacobian(pp: _Pair, st: _State, curve: Any, rows: np.ndarray, symmetric: bo
         if curve is not None:
             slope = _slope(curve, rows, lo)
             w3 = np.where(inside & (lo.root > 0), slope * -lo.sa * lo.root**3 / d, 0.0)
-        t = _ring.ball_tangent(p.arms, lo.ca, lo.sa, w1, w2, w3)
+        g = _ring._times_arms(lo.ca, lo.sa, p.arms)  # (n, z, 5)
+        h = _ring._times_arms(-lo.sa, lo.ca, p.arms)
+        gt, ht = g.transpose(0, 2, 1), h.transpose(0, 2, 1)
+        t = (gt * w1[:, None, :]) @ g + (ht * w2[:, None, :]) @ h
+        if w3 is not None:
+            t += (gt * w3[:, None, :]) @ h
         if symmetric:
             t = 0.5 * (t + t.transpose(0, 2, 1))
         local.append(t)
-        total += np.einsum("nki,nkl,nlj->nij", maps[:, k], t, maps[:, k])
+        total += maps[:, k].transpose(0, 2, 1) @ t @ maps[:, k]
     return total, local
 
 
@@ -305,24 +334,53 @@ def _step(pp: _Pair, st: _State, curve: Any, rows: np.ndarray) -> np.ndarray:
     return step * shrink[:, None]
 
 
-def _newton(pp: _Pair, vh: np.ndarray, curve: Any) -> tuple[np.ndarray, ...]:
-    """Damped Newton of every case from ``vh`` (n, 5): the position (hi, lo), the residual and
-    the steps per case. Row-wise throughout: no case depends on the others."""
+def _solve_stages(pp: _Pair, v0: np.ndarray, curve: Any) -> tuple[np.ndarray, ...]:
+    """Newton in plain doubles until every case is balanced to FIRST_STAGE (or FIRST_STEPS
+    steps), then in double-double to the tolerance: (position hi, lo, residual, steps)."""
+    import dataclasses
+
+    rough = dataclasses.replace(pp, precise=False)
+    vh, vl, _, its = _newton(rough, v0, np.zeros_like(v0), curve, FIRST_STAGE, FIRST_STEPS)
+    vh, vl, res, more = _newton(pp, vh, vl, curve, TOLERANCE, MAX_STEPS)
+    return vh, vl, res, its + more
+
+
+def _balls_double(p: Problem, w: np.ndarray) -> _ring.Balls:
+    """The balls at the local position ``w`` (n, 5) in plain doubles (the first stage): the
+    geometry of :func:`~bearingload.models._combined_ring.reference` without its carried
+    digits (``d - A = (m (m + 2A) + u'^2)/(d + A)``, ``m = rho - A``)."""
+    m = w[:, X, None] * p.c + w[:, Y, None] * p.s - p.gap[:, None]
+    u = w[:, AX, None] + w[:, T, None] * p.c + w[:, TC, None] * p.s
+    up = np.maximum(u, 0.0)  # one-sided (a pair is angular contact)
+    big_a = p.a_hat[:, None]
+    rho = big_a + m
+    d = np.hypot(np.maximum(rho, 0.0), up)
+    eps = np.where(rho > 0, (m * (m + 2.0 * big_a) + up * up) / (d + big_a), up - big_a)
+    return _ring.Balls(rho, u, d, eps, up)
+
+
+def _newton(pp: _Pair, vh: np.ndarray, vl: np.ndarray, curve: Any, tol: float,
+            steps: int) -> tuple[np.ndarray, ...]:  # fmt: skip
+    """Damped Newton of every case from ``vh + vl`` (n, 5) until its residual is ``tol`` (or
+    it stalls, or ``steps`` steps): the position (hi, lo), the residual and the steps per case.
+    Row-wise throughout: no case depends on the others."""
     n = vh.shape[0]
-    vh, vl = vh.copy(), np.zeros_like(vh)
+    vh, vl = vh.copy(), vl.copy()
     res = np.full(n, np.inf)
     its = np.zeros(n, dtype=np.int64)
     active = np.arange(n)
     sub = pp
     best = np.full(n, np.inf)
     stall = np.zeros(n, dtype=np.int64)
-    for _ in range(MAX_STEPS):
-        st = _evaluate(sub, active, vh[active], vl[active], curve)
+    st: _State | None = None
+    for _ in range(steps):
+        if st is None:
+            st = _evaluate(sub, active, vh[active], vl[active], curve)
         res[active] = st.res
         better = (st.res < 0.5 * best[active]) | (st.res > _ring.STALL_BELOW)
         best[active] = np.where(better, st.res, best[active])
         stall[active] = np.where(better, 0, stall[active] + 1)
-        done = (st.res <= TOLERANCE) | (stall[active] >= _ring.STALL) | ~np.isfinite(st.res)
+        done = (st.res <= tol) | (stall[active] >= _ring.STALL) | ~np.isfinite(st.res)
         if not (~done).any():
             break
         if done.any():
@@ -330,10 +388,13 @@ def _newton(pp: _Pair, vh: np.ndarray, curve: Any) -> tuple[np.ndarray, ...]:
             active, sub = active[keep], sub.take(keep)
             st = _take_state(st, keep)
         step = _step(sub, st, curve, active)
-        moved = _line_search(sub, st, curve, active, (vh[active], vl[active]), step)
+        moved, st = _line_search(sub, st, curve, active, (vh[active], vl[active]), step)
         still = ~np.any(moved != 0.0, axis=1)
         stall[active[still]] = _ring.STALL  # no step taken: rounding (or a failed search)
-        vh[active], vl[active] = _dd_add(vh[active], vl[active], moved)
+        if pp.precise:
+            vh[active], vl[active] = _dd_add(vh[active], vl[active], moved)
+        else:
+            vh[active] += moved
         its[active] += 1
     return vh, vl, res, its
 
@@ -347,31 +408,36 @@ def _take_state(st: _State, idx: np.ndarray) -> _State:
 
 
 def _line_search(pp: _Pair, st: _State, curve: Any, rows: np.ndarray,
-                 at: tuple[np.ndarray, np.ndarray], step: np.ndarray) -> np.ndarray:  # fmt: skip
+                 at: tuple[np.ndarray, np.ndarray],
+                 step: np.ndarray) -> tuple[np.ndarray, _State | None]:  # fmt: skip
     """The move (n, 5): ``t`` times the step, t = 1, 1/2, ..., the first where the potential
     with the stiffness frozen falls by 1e-4 of its slope (Armijo) or the residual halves; 0
-    where none does."""
+    where none does. Also the state there when every case took its first trial (else None)."""
     vh, vl = at
     slope = (np.where(pp.held, 0.0, st.gen - pp.f) * step).sum(1)
     t = np.ones(step.shape[0])
     moved = np.zeros_like(step)
     pending = np.arange(step.shape[0])
-    for _ in range(HALVINGS):
+    for k in range(HALVINGS):
         if not pending.size:
             break
         part = pp.take(pending) if pending.size < step.shape[0] else pp
         w = t[pending, None] * step[pending]
-        th, tl = _dd_add(vh[pending], vl[pending], w)
+        th, tl = (
+            _dd_add(vh[pending], vl[pending], w) if pp.precise else (vh[pending] + w, vl[pending])
+        )
         frozen = [k[pending] for k in st.kappa]
         tr = _evaluate(part, rows[pending], th, tl, curve, frozen)
         fresh = _evaluate(part, rows[pending], th, tl, curve) if curve is not None else tr
         drop = tr.energy - st.energy[pending] - (part.f * w).sum(1)
         ok = (drop <= 1e-4 * t[pending] * slope[pending]) | (fresh.res < 0.5 * st.res[pending])
         ok &= np.all(np.isfinite(w), axis=1)
+        if k == 0 and ok.all():
+            return w, fresh  # every case at its first trial: that is the next state
         moved[pending[ok]] = w[ok]
         pending = pending[~ok]
         t[pending] *= 0.5
-    return moved
+    return moved, None
 
 
 def solve_pair(
@@ -541,7 +607,7 @@ def _solve(z: int, kind: str, c: dict, shape: tuple[int, ...]) -> PairDistributi
     held[:, [1, 4]] = (mirror & (mc == 0))[:, None]  # y and theta_c 0 by symmetry, exactly
     pp = _Pair((prob, prob), sigma, lever / geo.R_i[:, None],
                np.stack([u_hi, u_hi], 1), np.stack([u_lo, u_lo], 1), f, held)  # fmt: skip
-    vh, vl, res, its = _newton(pp, _start(pp, z, geo, fp / f_ref), curve)
+    vh, vl, res, its = _solve_stages(pp, _start(pp, z, geo, fp / f_ref), curve)
     given = {k: c[k] for k in _UNITS}
     _accepted(res, its, given)
     st = _evaluate(pp, rows, vh, vl, curve)
@@ -561,7 +627,7 @@ def _preload_approach(
 ) -> np.ndarray:
     """The approach delta_p (scaled) of every ball of a bearing carrying the thrust ``target``
     (scaled) alone: ``z K(alpha) delta^1.5 sin(alpha) = F_p`` with ``cos(alpha) = A cos(alpha_0)
-    /(A + delta)`` (Harris & Kotzalas §8.3), bisected to 4e-16 of itself; 0 without preload."""
+    /(A + delta)`` (Harris & Kotzalas §8.3), by secant steps in log-log to the last digit; 0 without preload."""
     big_a, gap = p.a_hat, p.gap
     cc = big_a - gap  # A cos(alpha_0)
 
@@ -575,22 +641,23 @@ def _preload_approach(
             kappa = curve(rows, ca[:, None], (-sa * sa / (1.0 + ca))[:, None])[:, 0]
         return z * (1.0 + kappa) * delta**1.5 * sa
 
-    lo = np.zeros_like(target)
-    hi = np.maximum(np.cbrt(target / z) ** 2, 1e-300) * 2.0
-    for _ in range(2000):
-        short = (thrust(hi) < target) & (target > 0)
-        if not short.any():
+    on = target > 0
+    goal = np.log(np.where(on, target, 1.0))
+    sin0 = np.sqrt(gap * (2.0 * big_a - gap)) / big_a
+    x0 = np.cbrt(np.where(on, target, 1.0) / (z * sin0)) ** 2  # the angle kept: an upper bound
+    f0 = np.log(thrust(x0)) - goal
+    x1 = x0 * np.exp(-f0 / 1.5)
+    for _ in range(60):  # secant in log-log (a slope of 1.5 at a fixed angle, a little more)
+        f1 = np.log(thrust(x1)) - goal
+        step = np.log(x1) - np.log(x0)
+        slope = np.where(step != 0, (f1 - f0) / np.where(step != 0, step, 1.0), 1.5)
+        x2 = x1 * np.exp(-f1 / np.clip(slope, 1.0, 4.0))
+        x0, f0 = x1, f1
+        moving = on & (np.abs(x2 - x1) > 2e-16 * x1)
+        x1 = np.where(moving, x2, x1)
+        if not moving.any():
             break
-        hi = np.where(short, 2.0 * hi, hi)
-    for _ in range(200):
-        open_ = (hi - lo > 4e-16 * hi) & (target > 0)
-        if not open_.any():
-            break
-        mid = 0.5 * (lo + hi)
-        below = thrust(mid) < target
-        lo = np.where(open_ & below, mid, lo)
-        hi = np.where(open_ & ~below, mid, hi)
-    return np.where(target > 0, 0.5 * (lo + hi), 0.0)
+    return np.where(on, x1, 0.0)
 
 
 def _axial_at(p: Problem, delta: np.ndarray) -> tuple[np.ndarray, np.ndarray]:
@@ -680,7 +747,7 @@ def _result(kind: str, pp: _Pair, geo: Any, answer: tuple[Any, ...], c: dict,
         phys = maps[:, k].copy()
         phys[:, 0, 3] *= radius
         phys[:, 1, 4] *= radius
-        total += np.einsum("nki,nkl,nlj->nij", phys, tangent, phys)
+        total += phys.transpose(0, 2, 1) @ tangent @ phys
     total = 0.5 * (total + total.transpose(0, 2, 1))
     along, across = np.array([0, 2, 3]), np.array([1, 4])
     total[np.ix_(mirrored, along, across)] = 0.0
