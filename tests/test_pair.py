@@ -304,11 +304,14 @@ def test_pair_life_combines_with_the_weibull_exponent():
         (dict(contact_angle=70.0), "contact_angle"),
         (dict(radial_load=0.0, axial_load=0.0), "radial_load"),
         (dict(width=0.0), "width"),
+        (dict(balls=2), "balls"),
+        (dict(radial_load=1e6, axial_load=1e6), "axial_load"),  # a ball over the groove edge
     ],
 )
 def test_refusals_name_the_parameter(kwargs, name):
     args = dict(radial_load=1000.0, axial_load=500.0, contact_angle=40.0, width=WIDTH, **B7205)
     args.update(kwargs)
+    z = args.pop("balls", Z)
     with pytest.raises(InputError) as err:
-        solve_pair(Z, **args)
+        solve_pair(z, **args)
     assert err.value.parameter == name

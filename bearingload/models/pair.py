@@ -468,7 +468,7 @@ def solve_pair(
     Parameters
     ----------
     balls : int
-        Balls per bearing z, 1 to 1000. [-]
+        Balls per bearing z, 3 to 1000. [-]
     radial_load : array_like
         F_r >= 0 on the shaft at the pair's centre, along the load line. [N]
     axial_load : array_like, default 0
@@ -509,6 +509,12 @@ def solve_pair(
     z = int(validate.ball_count(balls, maximum=1000).reshape(-1)[0])
     if np.size(balls) != 1:
         raise InputError("balls", "must be one number per call (group the cases by z)")
+    if z < 3:
+        raise InputError(
+            "balls",
+            "must be at least 3 per bearing of a pair: 1 or 2 balls leave the shaft free to "
+            "turn about their line (a real bearing has many more)",
+        )
     fr = validate.finite("radial_load", radial_load)
     if np.any(fr < 0):
         raise InputError("radial_load", "must be >= 0 N")
