@@ -125,6 +125,8 @@ def solve(
       bearingload solve -z 7 --ball-diameter 11.5 --pitch-diameter 43.5 -F 0 -A 1kN -G 10um -C 23.4kN --rotating outer
       # a moment of 2 N m about the load line (MASTA's M_x), the tilt at the pitch radius
       bearingload solve 6205 -F 1kN -A 500N --moment-cross 2Nm --tilt-radius pitch
+      # a back-to-back pair of 7205B with 500 N preload (or 7205B --arrangement DB)
+      bearingload solve 7205BDB --preload 500N -F 2kN -A 1kN
       # SKF's ball set of a 6208 instead of NSK's; a cylindrical roller bearing
       bearingload solve 6208 -F 5kN --maker SKF
       bearingload solve NU206 --load 5kN
