@@ -109,7 +109,7 @@ def parse_angular(text: str) -> AngularDesignation | None:
 def split_pair(text: str) -> tuple[str, str | None]:
     """``text`` without the suffix of a matched pair (``7205BDB`` -> ``7205B``, "DB"), and the
     arrangement (None: no such suffix). A maker's preload class after it (``DBA`` ... ``DBD``)
-    is refused: its force differs from maker to maker (give ``--preload``).
+    is refused: its force differs from maker to maker (give the force).
 
     >>> split_pair("7205BDB"), split_pair("7205B/DF"), split_pair("7205 BEP")
     (('7205B', 'DB'), ('7205B', 'DF'), ('7205 BEP', None))
@@ -125,7 +125,7 @@ def split_pair(text: str) -> tuple[str, str | None]:
             f"{text.strip()!r}: the preload class {found.group(0)[2]} of a matched set is the "
             "maker's (its force differs from maker to maker and is not coded): give the pair "
             f"as {m.group('series')}{m.group('bore')}{m.group('letter')}{found.group(0)[:2]} "
-            "with --preload FORCE",
+            "with its preload force",
         )
     rest = m.group("rest")
     single = rest[: found.start()] + rest[found.end() :]
@@ -194,9 +194,8 @@ def find_angular(parsed: AngularDesignation) -> AngularRow:
         raise InputError(
             "bearing",
             f"{parsed.text!r} names a matched pair or set of {parsed.name} (suffix DB "
-            "back-to-back, DF face-to-face or DT tandem): 'solve' solves a pair (solve "
-            f"{parsed.name}DB, or {parsed.name} --arrangement DB); here give {parsed.name} with "
-            "the load one bearing of the set carries",
+            f"back-to-back, DF face-to-face or DT tandem): 'solve {parsed.name}DB' solves the "
+            f"pair; here give {parsed.name} with the load one bearing of the set carries",
         )
     for row in angular_rows():
         if row.designation == parsed.name:

@@ -48,8 +48,6 @@ SERVICE_PARAMS = ("static_rating", "speed", "reliability", "viscosity", "oil", "
                   "roughness", "pressure_viscosity")  # fmt: skip
 #: The options that give the operating viscosity from the oil (instead of --viscosity).
 OIL_PARAMS = ("oil", "viscosity_40", "viscosity_100", "temperature")
-#: The options of a bearing pair (``solve`` only).
-PAIR_PARAMS = ("arrangement", "preload", "width")
 #: The options that feed only the lives.
 LIFE_PARAMS = ("dynamic_rating", "rotating", *SERVICE_PARAMS)
 #: The combined-load options, in the order a refusal names the first one given.
@@ -205,25 +203,6 @@ DECLARATIONS: dict[str, tuple[tuple[str, ...], dict[str, Any]]] = {
         "(0 to 60°; with --ball-diameter and --pitch-diameter): the balls take thrust one way, "
         "F_a >= 0, and leave their grooves when pushed the other way; no clearance. See "
         f"docs/angular_contact.md. Units: {_ANGLE} (bare number: degrees).",
-    ),
-    "arrangement": _option(
-        "--arrangement",
-        type=Arrangement(),
-        help="Solve a pair of two identical angular-contact ball bearings on one shaft: DB "
-        "back-to-back, DF face-to-face, DT tandem (or the designation's suffix: 7205BDB); the "
-        "loads act on the shaft at the pair's centre. See docs/angular_contact.md.",
-    ),
-    "preload": _option(
-        "--preload",
-        type=Quantity("force"),
-        help="Axial preload F_p of a DB or DF pair: the axial force each bearing carries with "
-        f"no external load (>= 0; default 0). Units: {_FORCE} (bare number: N).",
-    ),
-    "width": _option(
-        "--width",
-        type=Quantity("length", positive=True),
-        help="Width B of one bearing of a pair (the bearings' centres lie B apart); default "
-        "the catalogue's. Bare number: mm.",
     ),
     "tilt_radius": _option(
         "--tilt-radius",
@@ -408,6 +387,28 @@ DECLARATIONS: dict[str, tuple[tuple[str, ...], dict[str, Any]]] = {
         "thickness; default 22 (2.2e-8 1/Pa, a mineral oil).",
     ),
 }
+#: The options of a bearing pair, declared on ``solve`` only (:func:`case_options` ``pair``).
+PAIR_DECLARATIONS: dict[str, tuple[tuple[str, ...], dict[str, Any]]] = {
+    "arrangement": _option(
+        "--arrangement",
+        type=Arrangement(),
+        help="Solve a pair of two identical angular-contact ball bearings on one shaft: DB "
+        "back-to-back, DF face-to-face, DT tandem (or the designation's suffix: 7205BDB); the "
+        "loads act on the shaft at the pair's centre. See docs/angular_contact.md.",
+    ),
+    "preload": _option(
+        "--preload",
+        type=Quantity("force"),
+        help="Axial preload F_p of a DB or DF pair: the axial force each bearing carries with "
+        f"no external load (>= 0; default 0). Units: {_FORCE} (bare number: N).",
+    ),
+    "width": _option(
+        "--width",
+        type=Quantity("length", positive=True),
+        help="Width B of one bearing of a pair (the bearings' centres lie B apart); default "
+        "the catalogue's. Bare number: mm.",
+    ),
+}
 
 
 BEARING_HELP = (
@@ -445,10 +446,13 @@ def case_options(
     hidden : collection of str
         Options declared but not in the help: the command refuses them, saying why.
     pair : bool
-        Declare the options of a bearing pair (:data:`PAIR_PARAMS`) too.
+        Declare the options of a bearing pair (:data:`PAIR_DECLARATIONS`) too.
     """
-    left_out = set(omit) | (set() if pair else set(PAIR_PARAMS))
-    declared = {n: d for n, d in DECLARATIONS.items() if n not in left_out}
+    declared = {n: d for n, d in DECLARATIONS.items() if n not in omit}
+    if pair:  # after --contact-angle, in help order
+        at = list(declared).index("contact_angle") + 1 if "contact_angle" in declared else 0
+        items = list(declared.items())
+        declared = dict(items[:at] + list(PAIR_DECLARATIONS.items()) + items[at:])
 
     def decorate(func: Callable[..., Any]) -> Callable[..., Any]:
         @functools.wraps(func)

@@ -87,7 +87,7 @@ def solve_bearing_pair(
         raise InputError(
             "arrangement",
             "a bearing pair is two angular-contact ball bearings: give an angular-contact "
-            "designation (7205B) or a ring by hand with its --contact-angle",
+            "designation (7205B) or a ring by hand with its contact angle",
         )
     lever = tilt_lever(tilt_radius, b.pitch_diameter)
     r = solve_pair(
