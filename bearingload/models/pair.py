@@ -41,6 +41,7 @@ raises :class:`~bearingload.errors.ConvergenceError` naming its inputs.
 
 from __future__ import annotations
 
+import dataclasses
 import math
 from dataclasses import dataclass
 from typing import Any
@@ -52,7 +53,7 @@ from bearingload.constants import STEEL_MODULUS
 from bearingload.errors import ConvergenceError, InputError
 from bearingload.models import _combined_ring as _ring
 from bearingload.models import combined as _comb
-from bearingload.models._combined_ring import ACCEPT, AX, TC, TOLERANCE, Problem, T, X, Y
+from bearingload.models._combined_ring import ACCEPT, TOLERANCE, Problem
 from bearingload.models.combined import CombinedDistribution
 
 __all__ = ["ARRANGEMENTS", "LIFE_EXPONENT", "PairDistribution", "solve_pair", "pair_life"]
@@ -175,12 +176,11 @@ class _Pair:
     off_lo: np.ndarray
     f: np.ndarray  # (n, 5) applied, scaled
     held: np.ndarray  # (n, 5) bool: y and theta_c of a case symmetric about the load line, 0
-    precise: bool = True  # the balls in double-double (False: plain doubles, the first stage)
 
     def take(self, idx: np.ndarray) -> _Pair:
         return _Pair(
             (self.probs[0].take(idx), self.probs[1].take(idx)), self.sigma, self.lever[idx],
-            self.off_hi[idx], self.off_lo[idx], self.f[idx], self.held[idx], self.precise,
+            self.off_hi[idx], self.off_lo[idx], self.f[idx], self.held[idx],
         )  # fmt: skip
 
     def maps(self) -> np.ndarray:
@@ -210,12 +210,7 @@ class _State:
 def _local(pp: _Pair, k: int, vh: np.ndarray, vl: np.ndarray) -> tuple[np.ndarray, np.ndarray]:
     """Bearing k's local position ``L_k v`` + its axial offset, double-double (n, 5) each."""
     s, r = float(pp.sigma[k]), -pp.lever[:, k]
-    wh, wl = np.empty_like(vh), np.zeros_like(vl)
-    if not pp.precise:  # the first stage: plain doubles
-        wh[:, :2] = vh[:, :2] + r[:, None] * vh[:, 3:]
-        wh[:, 2] = s * vh[:, 2] + (pp.off_hi[:, k] + pp.off_lo[:, k])
-        wh[:, 3:] = s * vh[:, 3:]
-        return wh, wl
+    wh, wl = np.empty_like(vh), np.empty_like(vl)
     for i, t in ((0, 3), (1, 4)):  # x - (z_k/R_i) t: the product exact, the sum carried
         p, e = _ring._two_prod(vh[:, t], r)
         hi, e2 = _ring._two_sum(vh[:, i], p)
@@ -237,8 +232,7 @@ def _evaluate(pp: _Pair, rows: np.ndarray, vh: np.ndarray, vl: np.ndarray, curve
     energy = np.zeros(vh.shape[0])
     for k in range(2):
         p = pp.probs[k]
-        w = _local(pp, k, vh, vl)
-        b = _ring.reference(p, *w) if pp.precise else _balls_double(p, w[0] + w[1])
+        b = _ring.reference(p, *_local(pp, k, vh, vl))
         zero = np.zeros_like(b.rho)
         if frozen is not None:
             kappa = frozen[k]
@@ -336,27 +330,11 @@ def _step(pp: _Pair, st: _State, curve: Any, rows: np.ndarray) -> np.ndarray:
 
 def _solve_stages(pp: _Pair, v0: np.ndarray, curve: Any) -> tuple[np.ndarray, ...]:
     """Newton in plain doubles until every case is balanced to FIRST_STAGE (or FIRST_STEPS
-    steps), then in double-double to the tolerance: (position hi, lo, residual, steps)."""
-    import dataclasses
-
-    rough = dataclasses.replace(pp, precise=False)
-    vh, vl, _, its = _newton(rough, v0, np.zeros_like(v0), curve, FIRST_STAGE, FIRST_STEPS)
-    vh, vl, res, more = _newton(pp, vh, vl, curve, TOLERANCE, MAX_STEPS)
+    steps, :func:`_lean_newton`), then with the balls in double-double to the tolerance:
+    (position hi, lo, residual, steps)."""
+    vh, its = _lean_newton(pp, v0, curve)
+    vh, vl, res, more = _newton(pp, vh, np.zeros_like(vh), curve, TOLERANCE, MAX_STEPS)
     return vh, vl, res, its + more
-
-
-def _balls_double(p: Problem, w: np.ndarray) -> _ring.Balls:
-    """The balls at the local position ``w`` (n, 5) in plain doubles (the first stage): the
-    geometry of :func:`~bearingload.models._combined_ring.reference` without its carried
-    digits (``d - A = (m (m + 2A) + u'^2)/(d + A)``, ``m = rho - A``)."""
-    m = w[:, X, None] * p.c + w[:, Y, None] * p.s - p.gap[:, None]
-    u = w[:, AX, None] + w[:, T, None] * p.c + w[:, TC, None] * p.s
-    up = np.maximum(u, 0.0)  # one-sided (a pair is angular contact)
-    big_a = p.a_hat[:, None]
-    rho = big_a + m
-    d = np.hypot(np.maximum(rho, 0.0), up)
-    eps = np.where(rho > 0, (m * (m + 2.0 * big_a) + up * up) / (d + big_a), up - big_a)
-    return _ring.Balls(rho, u, d, eps, up)
 
 
 def _newton(pp: _Pair, vh: np.ndarray, vl: np.ndarray, curve: Any, tol: float,
@@ -391,10 +369,7 @@ def _newton(pp: _Pair, vh: np.ndarray, vl: np.ndarray, curve: Any, tol: float,
         moved, st = _line_search(sub, st, curve, active, (vh[active], vl[active]), step)
         still = ~np.any(moved != 0.0, axis=1)
         stall[active[still]] = _ring.STALL  # no step taken: rounding (or a failed search)
-        if pp.precise:
-            vh[active], vl[active] = _dd_add(vh[active], vl[active], moved)
-        else:
-            vh[active] += moved
+        vh[active], vl[active] = _dd_add(vh[active], vl[active], moved)
         its[active] += 1
     return vh, vl, res, its
 
@@ -423,9 +398,7 @@ def _line_search(pp: _Pair, st: _State, curve: Any, rows: np.ndarray,
             break
         part = pp.take(pending) if pending.size < step.shape[0] else pp
         w = t[pending, None] * step[pending]
-        th, tl = (
-            _dd_add(vh[pending], vl[pending], w) if pp.precise else (vh[pending] + w, vl[pending])
-        )
+        th, tl = _dd_add(vh[pending], vl[pending], w)
         frozen = [k[pending] for k in st.kappa]
         tr = _evaluate(part, rows[pending], th, tl, curve, frozen)
         fresh = _evaluate(part, rows[pending], th, tl, curve) if curve is not None else tr
@@ -805,3 +778,180 @@ def _lift_off(pp: _Pair, geo: Any, curve: Any, delta_p: np.ndarray, c: dict) -> 
         kappa = curve(rows, ca[:, None], (-sa * sa / (1.0 + ca))[:, None])[:, 0]
     thrust = p.z * (1.0 + kappa) * delta**1.5 * sa * p.f_ref
     return np.where(c["axial_load"] < 0, -thrust, thrust)
+
+
+@dataclass(frozen=True)
+class _Lean:
+    """The first stage's pair in plain doubles, both bearings' balls side by side (n, 2z):
+    the arms of each ball's radial and axial separation in the pair's unknowns (n, 5, 2z)."""
+
+    radial: np.ndarray
+    axial: np.ndarray
+    rho0: np.ndarray  # (n, 1) A cos(alpha_0)... the radial separation at v = 0
+    u0: np.ndarray  # (n, 2z) the axial one (the preload offset included)
+    big_a: np.ndarray  # (n, 1)
+    f: np.ndarray
+    held: np.ndarray
+
+    @staticmethod
+    def of(pp: _Pair) -> _Lean:
+        p = pp.probs[0]
+        c, s = np.concatenate([p.c, p.c], 1), np.concatenate([p.s, p.s], 1)
+        z = p.c.shape[1]
+        r = np.repeat(-pp.lever, z, axis=1)  # (n, 2z)
+        sig = np.repeat(pp.sigma, z)[None, :] * np.ones_like(c)
+        zero = np.zeros_like(c)
+        radial = np.stack([c, s, zero, r * c, r * s], axis=1)
+        axial = np.stack([zero, zero, sig, sig * c, sig * s], axis=1)
+        u0 = np.repeat(pp.off_hi + pp.off_lo, z, axis=1)
+        return _Lean(radial, axial, (p.a_hat - p.gap)[:, None], u0, p.a_hat[:, None], pp.f,
+                     pp.held)  # fmt: skip
+
+    def take(self, idx: np.ndarray) -> _Lean:
+        return _Lean(*(getattr(self, k)[idx] for k in _LEAN_FIELDS))
+
+
+_LEAN_FIELDS = ("radial", "axial", "rho0", "u0", "big_a", "f", "held")
+
+
+@dataclass
+class _LeanState:
+    """The lean pair at the positions of some cases: residual, potential, forces and the pieces
+    of the tangent (arrays with the cases on the first axis)."""
+
+    res: np.ndarray
+    energy: np.ndarray
+    gen: np.ndarray
+    g: np.ndarray  # (n, 5, 2z) generalised direction of each ball's contact normal
+    ca: np.ndarray
+    sa: np.ndarray
+    rho: np.ndarray
+    up: np.ndarray
+    d: np.ndarray
+    root: np.ndarray
+    kappa: np.ndarray
+    q: np.ndarray
+
+    def take(self, idx: np.ndarray) -> _LeanState:
+        return _LeanState(*(getattr(self, k.name)[idx] for k in dataclasses.fields(self)))
+
+    def put(self, idx: np.ndarray, other: _LeanState) -> None:
+        for k in dataclasses.fields(self):
+            getattr(self, k.name)[idx] = getattr(other, k.name)
+
+
+def _lean_state(q: _Lean, v: np.ndarray, curve: Any, rows: np.ndarray) -> _LeanState:
+    """The lean pair at ``v`` (plain doubles; K at each ball's angle)."""
+    rho = q.rho0 + (v[:, None, :] @ q.radial)[:, 0]
+    u = q.u0 + (v[:, None, :] @ q.axial)[:, 0]
+    up, rp = np.maximum(u, 0.0), np.maximum(rho, 0.0)
+    d = np.hypot(rp, up)
+    m = rho - q.big_a
+    eps = np.where(rho > 0, (m * (m + 2.0 * q.big_a) + up * up) / (d + q.big_a), up - q.big_a)
+    safe = np.where(d > 0, d, 1.0)
+    ca, sa = np.where(d > 0, rp / safe, 1.0), up / safe
+    pos = np.maximum(eps, 0.0)
+    root = np.sqrt(pos)
+    kappa = np.zeros_like(rho)
+    if curve is not None:
+        kappa = curve(rows, ca, _cos_m1(rho, ca, sa))
+    load = (1.0 + kappa) * pos * root
+    g = q.radial * ca[:, None, :] + q.axial * sa[:, None, :]
+    gen = (g @ load[:, :, None])[:, :, 0]
+    size = (np.abs(g) @ load[:, :, None])[:, :, 0]
+    res = _ring.residual_of(q.f, gen, size, q.held)
+    energy = (load * pos).sum(1) / 2.5 - (q.f * v).sum(1)
+    return _LeanState(res, energy, gen, g, ca, sa, rho, up, d, root, kappa, load)
+
+
+def _cos_m1(rho: np.ndarray, ca: np.ndarray, sa: np.ndarray) -> np.ndarray:
+    """cos(alpha) - 1 without cancellation."""
+    return np.where(rho > 0, -sa * sa / (1.0 + ca), ca - 1.0)
+
+
+def _lean_step(q: _Lean, st: _LeanState, curve: Any, rows: np.ndarray) -> np.ndarray:
+    """The Newton step of the lean pair (its tangent, regularised; within A)."""
+    h = -q.radial * st.sa[:, None, :] + q.axial * st.ca[:, None, :]
+    w1 = 1.5 * (1.0 + st.kappa) * st.root
+    turning = (st.rho > 0) & (st.up > 0)
+    safe = np.where(st.d > 0, st.d, 1.0)
+    w2 = np.where(turning, st.q / safe, 0.0)
+    gt, ht = st.g.transpose(0, 2, 1), h.transpose(0, 2, 1)
+    jac = (st.g * w1[:, None, :]) @ gt + (h * w2[:, None, :]) @ ht
+    if curve is not None:
+        slope = _comb._StiffnessCurve(curve.values[rows]).slope(
+            st.ca, _cos_m1(st.rho, st.ca, st.sa)
+        )
+        w3 = np.where(turning & (st.root > 0), slope * -st.sa * st.root**3 / safe, 0.0)
+        jac += (st.g * w3[:, None, :]) @ ht
+    grad = np.where(q.held, 0.0, st.gen - q.f)
+    jac = _ring.hold(jac, q.held)
+    trace = np.trace(jac, axis1=1, axis2=2)
+    jac += (1e-13 * np.abs(trace) + 1e-300)[:, None, None] * np.eye(5)
+    with np.errstate(all="ignore"):
+        step = -np.linalg.solve(jac, grad[:, :, None])[:, :, 0]
+    big_a = q.big_a[:, 0]
+    bad = ~np.all(np.isfinite(step), axis=1) | ~(trace > 1e-200)
+    if bad.any():
+        norm = np.maximum(np.linalg.norm(grad[bad], axis=1), 1e-300)
+        step[bad] = -grad[bad] / norm[:, None] * big_a[bad, None]
+    longest = np.max(np.abs(step), axis=1)
+    shrink = np.where(longest > big_a, big_a / np.where(longest > 0, longest, 1.0), 1.0)
+    return step * shrink[:, None]
+
+
+def _lean_newton(pp: _Pair, v: np.ndarray, curve: Any) -> tuple[np.ndarray, np.ndarray]:
+    """The first stage: damped Newton in plain doubles until FIRST_STAGE or FIRST_STEPS steps,
+    each case on its own; a case whose line search finds no step is left to the second stage.
+    (position, steps)."""
+    v = v.copy()
+    its = np.zeros(v.shape[0], dtype=np.int64)
+    active = np.arange(v.shape[0])
+    q = _Lean.of(pp)
+    st = _lean_state(q, v, curve, active)
+    for _ in range(FIRST_STEPS):
+        going = np.flatnonzero(st.res > FIRST_STAGE)
+        if going.size < active.size:
+            active, q, st = active[going], q.take(going), st.take(going)
+        if not active.size:
+            break
+        step = _lean_step(q, st, curve, active)
+        taken, t, st = _lean_search(q, st, curve, active, v[active], step)
+        v[active] += np.where(taken[:, None], t[:, None] * step, 0.0)
+        its[active] += 1
+        if not taken.all():
+            keep = np.flatnonzero(taken)
+            active, q, st = active[keep], q.take(keep), st.take(keep)
+    return v, its
+
+
+def _lean_search(q: _Lean, st: _LeanState, curve: Any, rows: np.ndarray, v: np.ndarray,
+                 step: np.ndarray) -> tuple[np.ndarray, np.ndarray, _LeanState]:  # fmt: skip
+    """t = 1, 1/2, ... until the potential falls (Armijo, 1e-4 of the slope) or the residual
+    halves, each case on its own (only the cases still searching evaluated): (taken, t, the
+    state there; a case that found none keeps its own)."""
+    slope = (np.where(q.held, 0.0, st.gen - q.f) * step).sum(1)
+    n = step.shape[0]
+    t = np.ones(n)
+    taken = np.zeros(n, dtype=bool)
+    pending = np.arange(n)
+    new = st
+    for k in range(30):
+        sub = q if pending.size == n else q.take(pending)
+        trial = _lean_state(
+            sub, v[pending] + t[pending, None] * step[pending], curve, rows[pending]
+        )
+        ok = (trial.energy - st.energy[pending] <= 1e-4 * t[pending] * slope[pending]) | (
+            trial.res < 0.5 * st.res[pending]
+        )
+        if k == 0 and ok.all():
+            return np.ones(n, dtype=bool), t, trial
+        if k == 0:
+            new = st.take(np.arange(n))  # a copy to put the accepted trials in
+        new.put(pending[ok], trial.take(np.flatnonzero(ok)))
+        taken[pending[ok]] = True
+        pending = pending[~ok]
+        if not pending.size:
+            break
+        t[pending] *= 0.5
+    return taken, t, new
