@@ -11,7 +11,7 @@ cage angle 0, one constant ball stiffness K, the geometry of :mod:`bearingload.m
 centre, bearing 2 of DB/DF facing the other way, one-sided contact ``max(u, 0)``); no
 Jacobian, xtol 1e-13, started at the rigid-ring estimate. Cases: DB, DF, DT in turn, a0 10-45°,
 F_r 10 N-C_0r, F_a 10 N-C_0r (DB/DF either sign), a preload (DB/DF) 0.1 % to 10 % of C_0r. The
-vectorised call is ``solve_pair`` on all the cases of one arrangement at once. The machine is
+vectorised call is ``solve_pair`` on all the cases of one arrangement at once (1000 each). The machine is
 shared: the two are timed in pairs, the ratio of each pair printed, and their median.
 """
 
@@ -32,7 +32,7 @@ from bearingload.models.pair import solve_pair  # noqa: E402
 
 Z, K, WIDTH = 12, 7.0e5, 15.0
 GEO = {"ball_diameter": 8.7312, "pitch_diameter": 38.5, "f_i": 0.52, "f_o": 0.53}
-N_CASES, PAIRS, SEED = 300, 5, 20261124
+N_CASES, PAIRS, SEED = 1000, 3, 20261124
 KINDS = ("DB", "DF", "DT")
 
 
