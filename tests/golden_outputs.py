@@ -40,6 +40,7 @@ COMMANDS = {
     "sweep_rollers_preload": "sweep -z 14 -F 10kN -K 8e5 -m 10/9 -G -5um --steps 3",
     "sweep_kurochkin": "sweep -z 7 --kurochkin-T 0.567 --steps 5",
     "solve_6205_combined": "solve 6205 -F 1.4kN -A 700N -G C3",
+    "solve_7205bdb_pair": "solve 7205BDB --preload 500N -F 2kN -A 1kN",
     "solve_peer_axial_outer": "solve -z 7 --ball-diameter 11.5 --pitch-diameter 43.5 "
     "--modulus 210000 -F 0 -A 1kN -G 10um -C 23.4kN --rotating outer --per-ball",
     "sweep_6205_combined": "sweep 6205 -F 1.4kN -A 700N -G C3 --steps 5",

@@ -106,6 +106,33 @@ def parse_angular(text: str) -> AngularDesignation | None:
     return None
 
 
+def split_pair(text: str) -> tuple[str, str | None]:
+    """``text`` without the suffix of a matched pair (``7205BDB`` -> ``7205B``, "DB"), and the
+    arrangement (None: no such suffix). A maker's preload class after it (``DBA`` ... ``DBD``)
+    is refused: its force differs from maker to maker (give the force).
+
+    >>> split_pair("7205BDB"), split_pair("7205B/DF"), split_pair("7205 BEP")
+    (('7205B', 'DB'), ('7205B', 'DF'), ('7205 BEP', None))
+    """
+    norm = re.sub(r"\s+", " ", text.strip().upper())
+    m = _ISO.match(norm)
+    found = _PAIR.search(m.group("rest")) if m else None
+    if m is None or found is None:
+        return text, None
+    if len(found.group(0)) > 2:
+        raise InputError(
+            "bearing",
+            f"{text.strip()!r}: the preload class {found.group(0)[2]} of a matched set is the "
+            "maker's (its force differs from maker to maker and is not coded): give the pair "
+            f"as {m.group('series')}{m.group('bore')}{m.group('letter')}{found.group(0)[:2]} "
+            "with its preload force",
+        )
+    rest = m.group("rest")
+    single = rest[: found.start()] + rest[found.end() :]
+    name = f"{m.group('series')}{m.group('bore')}{m.group('letter')}{single.rstrip(' /-')}"
+    return name, found.group(0)
+
+
 @dataclass(frozen=True)
 class AngularRow:
     """One row of ``data/angular_contact.csv`` (units: mm, N, °; ``f0`` the factor of
@@ -176,9 +203,8 @@ def find_angular(parsed: AngularDesignation, maker: str | None = None) -> Angula
         raise InputError(
             "bearing",
             f"{parsed.text!r} names a matched pair or set of {parsed.name} (suffix DB "
-            "back-to-back, DF face-to-face or DT tandem), which bearingload does not model: it "
-            f"models one single-row bearing; give {parsed.name} with the load one bearing of "
-            "the set carries",
+            f"back-to-back, DF face-to-face or DT tandem): 'solve {parsed.name}DB' solves the "
+            f"pair; here give {parsed.name} with the load one bearing of the set carries",
         )
     rows = [r for r in angular_rows() if r.designation == parsed.name]
     if not rows:

@@ -129,6 +129,20 @@ class TiltRadius(click.ParamType):
             self.fail(str(exc).split(": ", 1)[-1], param, ctx)
 
 
+class Arrangement(click.ParamType):
+    """DB, DF or DT, in either case."""
+
+    name = "DB|DF|DT"
+
+    def convert(self, value: Any, param: click.Parameter | None, ctx: click.Context | None) -> Any:
+        text = str(value).strip().upper()
+        if text not in ("DB", "DF", "DT"):
+            self.fail(
+                f"{value!r}: give DB (back-to-back), DF (face-to-face) or DT (tandem)", param, ctx
+            )
+        return text
+
+
 def _option(*decls: str, **attrs: Any) -> tuple[tuple[str, ...], dict[str, Any]]:
     return decls, attrs
 
@@ -384,6 +398,28 @@ DECLARATIONS: dict[str, tuple[tuple[str, ...], dict[str, Any]]] = {
         "thickness; default 22 (2.2e-8 1/Pa, a mineral oil).",
     ),
 }
+#: The options of a bearing pair, declared on ``solve`` only (:func:`case_options` ``pair``).
+PAIR_DECLARATIONS: dict[str, tuple[tuple[str, ...], dict[str, Any]]] = {
+    "arrangement": _option(
+        "--arrangement",
+        type=Arrangement(),
+        help="Solve a pair of two identical angular-contact ball bearings on one shaft: DB "
+        "back-to-back, DF face-to-face, DT tandem (or the designation's suffix: 7205BDB); the "
+        "loads act on the shaft at the pair's centre. See docs/angular_contact.md.",
+    ),
+    "preload": _option(
+        "--preload",
+        type=Quantity("force"),
+        help="Axial preload F_p of a DB or DF pair: the axial force each bearing carries with "
+        f"no external load (>= 0; default 0). Units: {_FORCE} (bare number: N).",
+    ),
+    "width": _option(
+        "--width",
+        type=Quantity("length", positive=True),
+        help="Width B of one bearing of a pair (the bearings' centres lie B apart); default "
+        "the catalogue's. Bare number: mm.",
+    ),
+}
 
 
 BEARING_HELP = (
@@ -404,6 +440,7 @@ def case_options(
     required: Collection[str] = (),
     defaults: Mapping[str, Any] | None = None,
     hidden: Collection[str] = (),
+    pair: bool = False,
 ) -> Callable[[Callable[..., Any]], Callable[..., Any]]:
     """Declare the case options on a command and hand it one :class:`CaseOptions` as ``case``.
 
@@ -419,8 +456,14 @@ def case_options(
         Defaults other than none (shown in the help), e.g. ``{"load": "1000"}``.
     hidden : collection of str
         Options declared but not in the help: the command refuses them, saying why.
+    pair : bool
+        Declare the options of a bearing pair (:data:`PAIR_DECLARATIONS`) too.
     """
     declared = {n: d for n, d in DECLARATIONS.items() if n not in omit}
+    if pair:  # after --contact-angle, in help order
+        at = list(declared).index("contact_angle") + 1 if "contact_angle" in declared else 0
+        items = list(declared.items())
+        declared = dict(items[:at] + list(PAIR_DECLARATIONS.items()) + items[at:])
 
     def decorate(func: Callable[..., Any]) -> Callable[..., Any]:
         @functools.wraps(func)
@@ -469,6 +512,9 @@ class CaseOptions:
     moment_cross: float | None = None
     misalignment: float | None = None
     contact_angle: float | None = None
+    arrangement: str | None = None
+    preload: float | None = None
+    width: float | None = None
     tilt_radius: str | float | None = None
     stiffness: str | None = None
     clearance: Any = None
@@ -687,6 +733,51 @@ class CaseOptions:
             "moment": self.moment,
             "moment_cross": self.moment_cross,
             "misalignment": self.misalignment,
+            "tilt_radius": self.tilt_radius,
+            "rotating": self.rotating or "inner",
+            "dynamic_rating": self.dynamic_rating,
+        }
+
+    def as_pair(self) -> CaseOptions | None:
+        """The case of a bearing pair (a designation's suffix, ``7205BDB``, read as the
+        arrangement and taken off the designation), or None for one bearing; a preload or a
+        width without a pair is refused."""
+        import dataclasses
+
+        from bearingload.bearings.angular import split_pair
+
+        case = self
+        if self.bearing is not None:
+            single, kind = split_pair(self.bearing)
+            if kind is not None:
+                if self.arrangement is not None and self.arrangement.upper() != kind:
+                    raise click.UsageError(
+                        f"Invalid value for '--arrangement': {self.arrangement} contradicts the "
+                        f"designation {self.bearing.strip()!r} (a {kind} pair)"
+                    )
+                case = dataclasses.replace(self, bearing=single, arrangement=kind)
+        if case.arrangement is None:
+            for name in ("preload", "width"):
+                if getattr(case, name) is not None:
+                    raise click.UsageError(
+                        f"Invalid value for '--{name}': it belongs to a bearing pair; give "
+                        "--arrangement DB, DF or DT (or a designation with the suffix, "
+                        "7205BDB); a single bearing is preloaded against another one"
+                    )
+            return None
+        return case
+
+    def pair_arguments(self, balls: int) -> dict[str, Any]:
+        """The pair as the keyword arguments of
+        :func:`bearingload.studies.bearing_pair.solve_bearing_pair` (``balls``: z, for the cage
+        angle 'half'): the arrangement upper-cased, no preload 0."""
+        return {
+            "arrangement": (self.arrangement or "").upper(),
+            "preload": self.preload or 0.0,
+            "width": self.width,
+            "cage_angle": self.cage_angle_deg(balls),
+            "moment": self.moment,
+            "moment_cross": self.moment_cross,
             "tilt_radius": self.tilt_radius,
             "rotating": self.rotating or "inner",
             "dynamic_rating": self.dynamic_rating,

@@ -28,7 +28,7 @@ from bearingload.cli.plot import ball_loads_plot_option, check_plot, save_plot
 
 
 @click.command(context_settings=CONTEXT)
-@case_options(required=("load",))
+@case_options(required=("load",), pair=True)
 @click.option(
     "--revolutions",
     type=click.FloatRange(min=0, max=1e30, min_open=True),
@@ -125,6 +125,8 @@ def solve(
       bearingload solve -z 7 --ball-diameter 11.5 --pitch-diameter 43.5 -F 0 -A 1kN -G 10um -C 23.4kN --rotating outer
       # a moment of 2 N m about the load line (MASTA's M_x), the tilt at the pitch radius
       bearingload solve 6205 -F 1kN -A 500N --moment-cross 2Nm --tilt-radius pitch
+      # a back-to-back pair of 7205B with 500 N preload (or 7205B --arrangement DB)
+      bearingload solve 7205BDB --preload 500N -F 2kN -A 1kN
       # SKF's ball set of a 6208 instead of NSK's; a cylindrical roller bearing
       bearingload solve 6208 -F 5kN --maker SKF
       bearingload solve NU206 --load 5kN
@@ -148,6 +150,13 @@ def solve(
                 f"--method {method} gives none (use --method exact or all)"
             )
     k_given = case.stiffness_value()  # N/mm^m
+    pair = case.as_pair()
+    if pair is not None:
+        _refuse_revolutions("a bearing pair", "it prints L10r and L10 of the pair instead")
+        text, found = _pair(pair, k_given, method, plot, fmt, per_ball, show_geometry)
+        emit(text, output)
+        print_warnings(found, quiet)
+        return
     from bearingload.bearings.angular import parse_angular
 
     angular = case.bearing is not None and parse_angular(case.bearing) is not None
@@ -203,6 +212,52 @@ def _refuse_revolutions(where: str, instead: str) -> None:
             f"radial load C/(L/10^6)^(1/3), which only the radial engine prints for a bearing "
             f"with a dynamic load rating C; {instead}"
         )
+
+
+def _pair(
+    case: CaseOptions, k_given: float | None, method: str, plot: str | None, fmt: str,
+    per_ball: bool, show_geometry: bool,
+) -> tuple[str, list[str]]:  # fmt: skip
+    """A pair of angular-contact ball bearings (--arrangement, or 7205BDB): (report, warnings)."""
+    import dataclasses
+
+    from bearingload.cli.case_options import SERVICE_PARAMS
+    from bearingload.reports.pair import pair_report
+    from bearingload.studies.bearing_pair import solve_bearing_pair
+
+    if method != "exact":
+        raise click.UsageError(
+            "Invalid value for '--method': a bearing pair is solved by the exact model only"
+        )
+    if plot is not None:
+        raise click.UsageError(
+            "Invalid value for '--plot': it draws the ball loads of one bearing, not of a pair"
+        )
+    case.refuse(("misalignment",), "a bearing pair", "the shaft's tilt follows from the "
+                "loads; give --moment")  # fmt: skip
+    case.refuse(SERVICE_PARAMS, "a bearing pair", "the lives in hours and the modified lives "
+                "of a pair are not coded yet (it gives L10r and L10 in 10^6 revolutions)")  # fmt: skip
+    why = "the design contact angle fixes the geometry of an angular-contact bearing"
+    case.refuse(("clearance",), "a bearing pair", why + " (no clearance)")
+    b = with_ratings(resolve_bearings(case, k_given), case)[0]
+    if case.contact_angle is not None:
+        if case.bearing is not None:
+            raise click.UsageError(
+                "--contact-angle cannot be used with a bearing designation: give the "
+                "angular-contact ring by hand (--balls, --ball-diameter, --pitch-diameter)"
+            )
+        b = dataclasses.replace(b, contact_angle=case.contact_angle, clearance=0.0)
+    if b.contact_angle is None:
+        raise click.UsageError(
+            f"Invalid value for '--arrangement': a pair {case.arrangement} is two "
+            "angular-contact ball bearings; give an angular-contact designation (7205B, "
+            "7205BDB) or a ring by hand with --contact-angle"
+        )
+    pc = solve_bearing_pair(b, case.radial_load, case.axial_load or 0.0,
+                            **case.pair_arguments(b.balls))  # fmt: skip
+    service = service_lives(case, [combined_basis(c) for c in pc.bearings])  # C_0, as one bearing
+    text = pair_report(pc, fmt, per_ball=per_ball, show_geometry=show_geometry, service=service)
+    return text, list(pc.warnings)
 
 
 def _radial(

@@ -138,6 +138,13 @@ QUANTITIES: dict[str, Quantity] = {
         Quantity("tilt_radius", "lever of the tilt (radius of the tilted groove centres)", "mm"),
         Quantity("rotating", "rotating ring", "", None),
         Quantity("contact_angle", "design contact angle (angular contact)", "°"),
+        # a pair of angular-contact bearings (docs/angular_contact.md)
+        Quantity("arrangement", "arrangement of the pair (DB, DF, DT)", "", None),
+        Quantity("preload", "preload F_p (each bearing, no external load)", "N"),
+        Quantity("width", "width B of one bearing", "mm"),
+        Quantity("bearing_number", "bearing of the pair", "", None),
+        Quantity("lift_off_axial_load", "lift-off: axial load unloading a bearing", "N"),
+        Quantity("unloaded_bearings", "bearings carrying no load", "", None),
         Quantity("free_contact_angle", "free contact angle alpha_0", "°"),
         Quantity("axial_play", "axial play", "mm", display=_UM),
         Quantity("axial", "axial displacement from centred rings", "mm", display=_UM),

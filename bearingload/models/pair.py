@@ -1,0 +1,957 @@
+"""A pair of identical angular-contact ball bearings on one shaft: back-to-back (DB), face-to-face
+(DF) or tandem (DT), with an axial preload.
+
+Model (Harris & Kotzalas, *Rolling Bearing Analysis*, 5th ed., ch. 8 for each bearing, as
+:mod:`bearingload.models.combined`; the pair is two such bearings on one rigid shaft, as the
+commercial tools model a bearing set):
+
+* The shaft (both inner rings) moves as one rigid body about the pair's centre: ``v = (x, y,
+  a, theta, theta_c)``. Bearing ``k`` sits at the axial position ``z_k = -+B/2`` (B the width
+  of one bearing: the rings abut). A rigid tilt moves its inner groove centres radially by
+  ``-z_k theta`` (``-z_k theta_c`` across the load line) and axially by ``R_i (theta cos phi
+  + theta_c sin phi)`` (the conventions of :mod:`bearingload.models.combined`: a positive tilt
+  pushes the load-line side towards +axial).
+* Bearing 1 takes the shaft's thrust towards +axial (its local axes are the pair's); in DB and
+  DF bearing 2 is mirrored (``sigma_2 = -1``: its local axial displacement and tilts are the
+  negatives of the pair's), in DT it faces the same way (``sigma_2 = +1``). The local
+  displacement of bearing k is ``L_k v``: ``(x - z_k theta, y - z_k theta_c, sigma_k a,
+  sigma_k theta, sigma_k theta_c)``, plus its built-in axial preload offset. DB: bearing 1 at
+  ``-B/2``, its contact lines meet the axis further out (pressure centres apart); DF: bearing 1
+  at ``+B/2`` (pressure centres between the bearings); DT: bearing 1 at ``-B/2``.
+* Forces by virtual work: the pair's generalised force is ``sum_k L_k^T f_k`` (``f_k`` the
+  bearing's (F_x, F_y, F_a, M, M_c) on its inner ring), its stiffness ``sum_k L_k^T K_k L_k``:
+  each bearing's moment plus the lever of its radial force about the centre.
+* Preload ``F_p`` (DB, DF): the rings are ground so that, clamped together with no external
+  load, each bearing carries the axial force ``F_p`` (every ball at the same approach; solved
+  from the single bearing's pure-thrust equation with the Hertz K(alpha)). Lift-off: the
+  external axial load alone at which the bearing opposite to it carries nothing, when the
+  loaded one sits at twice the preload offset (for a Hertz contact at a constant angle
+  ``2^1.5 F_p = 2.83 F_p``, the limit of a light preload; the contact angle growing under the
+  load gives a little more: 2.885 F_p for a 7205B at F_p = 500 N).
+
+Numerics: damped Newton on the pair's five unknowns, each case alone (row-wise operations
+only). The balls of each bearing are evaluated by :mod:`bearingload.models._combined_ring` in
+double-double arithmetic at the local position (:func:`~bearingload.models._combined_ring.
+reference`), the step solves the pair's tangent (with the change of K with the angle), the line
+search takes a step where the potential (stiffness frozen) falls or the residual halves. A case
+stops when every component is balanced to 1e-12 of its load (or to the rounding of its terms),
+the measure of :func:`~bearingload.models._combined_ring.residual_of`; a case left above 1e-8
+raises :class:`~bearingload.errors.ConvergenceError` naming its inputs.
+"""
+
+from __future__ import annotations
+
+import dataclasses
+import math
+from dataclasses import dataclass
+from typing import Any
+
+import numpy as np
+
+from bearingload import numerics, validate
+from bearingload.constants import STEEL_MODULUS
+from bearingload.errors import ConvergenceError, InputError
+from bearingload.models import _combined_ring as _ring
+from bearingload.models import combined as _comb
+from bearingload.models._combined_ring import ACCEPT, TOLERANCE, Problem
+from bearingload.models.combined import CombinedDistribution
+
+__all__ = ["ARRANGEMENTS", "LIFE_EXPONENT", "PairDistribution", "solve_pair", "pair_life"]
+
+#: The arrangements: back-to-back, face-to-face, tandem.
+ARRANGEMENTS = ("DB", "DF", "DT")
+#: Weibull exponent e of a ball bearing's life, combining the lives of its parts: ISO/TS
+#: 16281:2008, 4.3 (the rings' lives, ``L = (L_i^-e + L_e^-e)^(-1/e)``, written there as the
+#: exponent -9/10 = -1/e) and ISO 281:2007's system rule (Lundberg-Palmgren). [-]
+LIFE_EXPONENT = 10.0 / 9.0
+#: Newton steps per case before ConvergenceError. [-]
+MAX_STEPS = 400
+#: The first stage (plain doubles) stops at this residual or after FIRST_STEPS steps. [-]
+FIRST_STAGE = 1e-9
+FIRST_STEPS = 60
+#: Halvings of a step in the line search. [-]
+HALVINGS = 50
+
+
+@dataclass(frozen=True)
+class PairDistribution:
+    """Solution of a bearing pair; arrays of the case shape.
+
+    Attributes
+    ----------
+    arrangement : str
+        "DB", "DF" or "DT".
+    bearings : tuple of two CombinedDistribution
+        Each bearing in its own frame (bearing 2 of DB/DF mirrored): ``load``, ``axial_load``
+        and ``moment`` are the forces its balls carry (the size of its radial force, F_a >= 0
+        its thrust, M its own moment), ``x``..``tilt_cross`` its local displacement, ``axial``
+        from its zero-load position (the preload offset included). [N, N mm, mm, °]
+    load, axial_load, moment, moment_cross : ndarray
+        The loads applied to the shaft. [N, N mm]
+    preload : ndarray
+        F_p, the axial force each bearing of DB/DF carries with no external load. [N]
+    preload_offset : ndarray
+        The axial approach of each bearing at the preload. [mm]
+    width : ndarray
+        B; the bearings' centres lie B/2 either side of the pair's centre. [mm]
+    x, y, axial, tilt, tilt_cross : ndarray
+        The shaft's displacement at the pair's centre. [mm, °]
+    stiffness_matrix : ndarray (..., 5, 5)
+        d(F_x, F_y, F_a, M, M_c)/d(x, y, axial, tilt, tilt_cross) of the shaft at the pair's
+        centre, symmetric. [N/mm, N/rad, N mm/mm, N mm/rad]
+    unloaded : ndarray (..., 2) of bool
+        Whether each bearing carries no load.
+    lift_off_axial_load : ndarray or None
+        DB/DF: the external axial load alone (the sign of the given one, + if 0) at which the
+        opposite bearing carries nothing (0 without preload). None for DT. [N]
+    residual : ndarray
+        The largest residual of the pair's equilibrium over its applied load (or the rounding
+        of its terms). [-]
+    iterations : ndarray of int
+        Newton steps. [-]
+    """
+
+    arrangement: str
+    bearings: tuple[CombinedDistribution, CombinedDistribution]
+    load: Any
+    axial_load: Any
+    moment: Any
+    moment_cross: Any
+    preload: Any
+    preload_offset: Any
+    width: Any
+    x: Any
+    y: Any
+    axial: Any
+    tilt: Any
+    tilt_cross: Any
+    stiffness_matrix: np.ndarray
+    unloaded: np.ndarray
+    lift_off_axial_load: Any
+    residual: Any
+    iterations: Any
+
+    @property
+    def stiffness_radial(self) -> Any:
+        """dF_x/dx of the pair. [N/mm]"""
+        return numerics.scalar_out(self.stiffness_matrix[..., 0, 0])
+
+    @property
+    def stiffness_axial(self) -> Any:
+        """dF_a/d(axial) of the pair. [N/mm]"""
+        return numerics.scalar_out(self.stiffness_matrix[..., 2, 2])
+
+    @property
+    def stiffness_tilt(self) -> Any:
+        """dM/d(tilt) of the pair. [N mm/rad]"""
+        return numerics.scalar_out(self.stiffness_matrix[..., 3, 3])
+
+
+def pair_life(life_1: Any, life_2: Any, exponent: float = LIFE_EXPONENT) -> Any:
+    """The life of two bearings that both must survive: ``(L1^-e + L2^-e)^(-1/e)`` (ISO/TS
+    16281:2008, 4.3, the same rule for the rings of one bearing; Lundberg-Palmgren's system
+    life, e = 10/9 for ball bearings). An infinite life (an unloaded bearing) drops out.
+    [the unit of the lives]
+
+    >>> round(float(pair_life(1000.0, 1000.0)), 3)
+    535.887
+    """
+    a = np.asarray(life_1, dtype=float)
+    b = np.asarray(life_2, dtype=float)
+    with np.errstate(divide="ignore", over="ignore"):
+        total = a ** (-exponent) + b ** (-exponent)
+        out = np.where(total > 0, total ** (-1.0 / exponent), np.inf)
+    out = np.where(np.isinf(a), b, np.where(np.isinf(b), a, out))  # exactly the other one
+    return numerics.scalar_out(out)
+
+
+@dataclass(frozen=True)
+class _Pair:
+    """The scaled pair problem of n cases: one Problem per bearing (the same balls), the maps."""
+
+    probs: tuple[Problem, Problem]
+    sigma: np.ndarray  # (2,) +1 or -1
+    lever: np.ndarray  # (n, 2) z_k / R_i
+    off_hi: np.ndarray  # (n, 2) local axial offset (scaled), double-double
+    off_lo: np.ndarray
+    f: np.ndarray  # (n, 5) applied, scaled
+    held: np.ndarray  # (n, 5) bool: y and theta_c of a case symmetric about the load line, 0
+
+    def take(self, idx: np.ndarray) -> _Pair:
+        return _Pair(
+            (self.probs[0].take(idx), self.probs[1].take(idx)), self.sigma, self.lever[idx],
+            self.off_hi[idx], self.off_lo[idx], self.f[idx], self.held[idx],
+        )  # fmt: skip
+
+    def maps(self) -> np.ndarray:
+        """L_k (n, 2, 5, 5): local displacement per pair displacement (scaled, t = R_i theta)."""
+        n = self.f.shape[0]
+        m = np.zeros((n, 2, 5, 5))
+        for k in range(2):
+            m[:, k, 0, 0] = m[:, k, 1, 1] = 1.0
+            m[:, k, 0, 3] = m[:, k, 1, 4] = -self.lever[:, k]
+            for i in (2, 3, 4):
+                m[:, k, i, i] = self.sigma[k]
+        return m
+
+
+@dataclass
+class _State:
+    """The balls of both bearings at the positions of some cases, and the pair's forces."""
+
+    balls: list[_ring.Balls]
+    kappa: list[np.ndarray]
+    loads: list[_ring.Loads]
+    gen: np.ndarray  # (n, 5) pair, scaled
+    res: np.ndarray  # (n,)
+    energy: np.ndarray  # (n,) the balls' potential, stiffness as in ``loads``
+
+
+def _local(pp: _Pair, k: int, vh: np.ndarray, vl: np.ndarray) -> tuple[np.ndarray, np.ndarray]:
+    """Bearing k's local position ``L_k v`` + its axial offset, double-double (n, 5) each."""
+    s, r = float(pp.sigma[k]), -pp.lever[:, k]
+    wh, wl = np.empty_like(vh), np.empty_like(vl)
+    for i, t in ((0, 3), (1, 4)):  # x - (z_k/R_i) t: the product exact, the sum carried
+        p, e = _ring._two_prod(vh[:, t], r)
+        hi, e2 = _ring._two_sum(vh[:, i], p)
+        wh[:, i], wl[:, i] = _ring._fast(hi, e2 + e + vl[:, i] + r * vl[:, t])
+    hi, e2 = _ring._two_sum(s * vh[:, 2], pp.off_hi[:, k])
+    wh[:, 2], wl[:, 2] = _ring._fast(hi, e2 + s * vl[:, 2] + pp.off_lo[:, k])
+    wh[:, 3:], wl[:, 3:] = s * vh[:, 3:], s * vl[:, 3:]
+    return wh, wl
+
+
+def _evaluate(pp: _Pair, rows: np.ndarray, vh: np.ndarray, vl: np.ndarray, curve: Any,
+              frozen: list[np.ndarray] | None = None) -> _State:  # fmt: skip
+    """Both bearings at ``v`` (the cases ``rows`` of the whole call, for the stiffness curve):
+    K at each ball's angle (``frozen``: these stiffnesses instead), the pair's forces and
+    residual."""
+    balls, kappas, loads = [], [], []
+    gen = np.zeros_like(vh)
+    size = np.zeros_like(vh)
+    energy = np.zeros(vh.shape[0])
+    for k in range(2):
+        p = pp.probs[k]
+        b = _ring.reference(p, *_local(pp, k, vh, vl))
+        zero = np.zeros_like(b.rho)
+        if frozen is not None:
+            kappa = frozen[k]
+        elif curve is None:
+            kappa = zero
+        else:
+            lo0 = _ring.loads(p, b, zero)
+            kappa = curve(rows, lo0.ca, lo0.cam1)
+        lo = _ring.loads(p, b, kappa)
+        g, sz = _ring.forces(p, lo)
+        gen += _transposed(pp, k, g)
+        size += _transposed(pp, k, sz, magnitude=True)
+        energy += (lo.q * lo.root * lo.root).sum(1) / 2.5
+        balls.append(b)
+        kappas.append(kappa)
+        loads.append(lo)
+    res = _ring.residual_of(pp.f, gen, size, pp.held)
+    return _State(balls, kappas, loads, gen, res, energy)
+
+
+def _transposed(pp: _Pair, k: int, f: np.ndarray, magnitude: bool = False) -> np.ndarray:
+    """``L_k^T f`` (n, 5): bearing k's generalised forces ``f`` as the pair's (its axial ones
+    times sigma_k, its radial ones also times the lever -z_k/R_i in the tilts); with
+    ``magnitude`` the sizes of the terms (every factor by its size)."""
+    s, r = float(pp.sigma[k]), -pp.lever[:, k]
+    if magnitude:
+        s, r = abs(s), np.abs(r)
+    out = np.empty_like(f)
+    out[:, :2] = f[:, :2]
+    out[:, 2:] = s * f[:, 2:]
+    out[:, 3] += r * f[:, 0]
+    out[:, 4] += r * f[:, 1]
+    return out
+
+
+def _jacobian(pp: _Pair, st: _State, curve: Any, rows: np.ndarray, symmetric: bool) -> Any:
+    """The pair's tangent d(forces)/dv (n, 5, 5), scaled, and each bearing's local one: ``w1 g
+    g^T + w2 h h^T (+ w3 g h^T``, the change of K with the angle, unless ``symmetric``: then
+    its symmetric part)."""
+    maps = pp.maps()
+    total = np.zeros((pp.f.shape[0], 5, 5))
+    local = []
+    for k in range(2):
+        p, b, lo, kappa = pp.probs[k], st.balls[k], st.loads[k], st.kappa[k]
+        inside = _ring.turns(b.rho, b.u, p.one_sided)
+        d = np.where(b.d > 0, b.d, 1.0)
+        w1 = 1.5 * (1.0 + kappa) * lo.root
+        w2 = np.where(inside, lo.q / d, 0.0)
+        w3 = None
+        if curve is not None:
+            slope = _slope(curve, rows, lo)
+            w3 = np.where(inside & (lo.root > 0), slope * -lo.sa * lo.root**3 / d, 0.0)
+        g = _ring._times_arms(lo.ca, lo.sa, p.arms)  # (n, z, 5)
+        h = _ring._times_arms(-lo.sa, lo.ca, p.arms)
+        gt, ht = g.transpose(0, 2, 1), h.transpose(0, 2, 1)
+        t = (gt * w1[:, None, :]) @ g + (ht * w2[:, None, :]) @ h
+        if w3 is not None:
+            t += (gt * w3[:, None, :]) @ h
+        if symmetric:
+            t = 0.5 * (t + t.transpose(0, 2, 1))
+        local.append(t)
+        total += maps[:, k].transpose(0, 2, 1) @ t @ maps[:, k]
+    return total, local
+
+
+def _slope(curve: Any, rows: np.ndarray, lo: _ring.Loads) -> np.ndarray:
+    """d(kappa)/d(cos alpha) of the cases ``rows`` of the curve."""
+    sub = _comb._StiffnessCurve(curve.values[rows])
+    return sub.slope(lo.ca, lo.cam1)
+
+
+def _dd_add(vh: np.ndarray, vl: np.ndarray, w: np.ndarray) -> tuple[np.ndarray, np.ndarray]:
+    hi, lo = _ring._two_sum(vh, w)
+    return _ring._fast(hi, lo + vl)
+
+
+def _step(pp: _Pair, st: _State, curve: Any, rows: np.ndarray) -> np.ndarray:
+    """The Newton step (n, 5) on the pair's tangent, regularised; where no ball is in contact,
+    a move along the load; every component within A (scaled) of the position."""
+    grad = np.where(pp.held, 0.0, st.gen - pp.f)
+    jac = _ring.hold(_jacobian(pp, st, curve, rows, symmetric=False)[0], pp.held)
+    trace = np.trace(jac, axis1=1, axis2=2)
+    jac += (1e-13 * np.abs(trace) + 1e-300)[:, None, None] * np.eye(5)
+    with np.errstate(all="ignore"):
+        step = -np.linalg.solve(jac, grad[:, :, None])[:, :, 0]
+    a_hat = pp.probs[0].a_hat
+    bad = ~np.all(np.isfinite(step), axis=1) | ~(trace > 1e-200)
+    if bad.any():
+        norm = np.maximum(np.linalg.norm(grad[bad], axis=1), 1e-300)
+        step[bad] = -grad[bad] / norm[:, None] * a_hat[bad, None]
+    longest = np.max(np.abs(step), axis=1)
+    shrink = np.where(longest > a_hat, a_hat / np.where(longest > 0, longest, 1.0), 1.0)
+    return step * shrink[:, None]
+
+
+def _solve_stages(pp: _Pair, v0: np.ndarray, curve: Any) -> tuple[np.ndarray, ...]:
+    """Newton in plain doubles until every case is balanced to FIRST_STAGE (or FIRST_STEPS
+    steps, :func:`_lean_newton`), then with the balls in double-double to the tolerance:
+    (position hi, lo, residual, steps)."""
+    vh, its = _lean_newton(pp, v0, curve)
+    vh, vl, res, more = _newton(pp, vh, np.zeros_like(vh), curve, TOLERANCE, MAX_STEPS)
+    return vh, vl, res, its + more
+
+
+def _newton(pp: _Pair, vh: np.ndarray, vl: np.ndarray, curve: Any, tol: float,
+            steps: int) -> tuple[np.ndarray, ...]:  # fmt: skip
+    """Damped Newton of every case from ``vh + vl`` (n, 5) until its residual is ``tol`` (or
+    it stalls, or ``steps`` steps): the position (hi, lo), the residual and the steps per case.
+    Row-wise throughout: no case depends on the others."""
+    n = vh.shape[0]
+    vh, vl = vh.copy(), vl.copy()
+    res = np.full(n, np.inf)
+    its = np.zeros(n, dtype=np.int64)
+    active = np.arange(n)
+    sub = pp
+    best = np.full(n, np.inf)
+    stall = np.zeros(n, dtype=np.int64)
+    st: _State | None = None
+    for _ in range(steps):
+        if st is None:
+            st = _evaluate(sub, active, vh[active], vl[active], curve)
+        res[active] = st.res
+        better = (st.res < 0.5 * best[active]) | (st.res > _ring.STALL_BELOW)
+        best[active] = np.where(better, st.res, best[active])
+        stall[active] = np.where(better, 0, stall[active] + 1)
+        done = (st.res <= tol) | (stall[active] >= _ring.STALL) | ~np.isfinite(st.res)
+        if not (~done).any():
+            break
+        if done.any():
+            keep = np.flatnonzero(~done)
+            active, sub = active[keep], sub.take(keep)
+            st = _take_state(st, keep)
+        step = _step(sub, st, curve, active)
+        moved, st = _line_search(sub, st, curve, active, (vh[active], vl[active]), step)
+        still = ~np.any(moved != 0.0, axis=1)
+        stall[active[still]] = _ring.STALL  # no step taken: rounding (or a failed search)
+        vh[active], vl[active] = _dd_add(vh[active], vl[active], moved)
+        its[active] += 1
+    return vh, vl, res, its
+
+
+def _take_state(st: _State, idx: np.ndarray) -> _State:
+    return _State(
+        [b.take(idx) for b in st.balls], [k[idx] for k in st.kappa],
+        [_ring._take_loads(lo, idx) for lo in st.loads], st.gen[idx], st.res[idx],
+        st.energy[idx],
+    )  # fmt: skip
+
+
+def _line_search(pp: _Pair, st: _State, curve: Any, rows: np.ndarray,
+                 at: tuple[np.ndarray, np.ndarray],
+                 step: np.ndarray) -> tuple[np.ndarray, _State | None]:  # fmt: skip
+    """The move (n, 5): ``t`` times the step, t = 1, 1/2, ..., the first where the potential
+    with the stiffness frozen falls by 1e-4 of its slope (Armijo) or the residual halves; 0
+    where none does. Also the state there when every case took its first trial (else None)."""
+    vh, vl = at
+    slope = (np.where(pp.held, 0.0, st.gen - pp.f) * step).sum(1)
+    t = np.ones(step.shape[0])
+    moved = np.zeros_like(step)
+    pending = np.arange(step.shape[0])
+    for k in range(HALVINGS):
+        if not pending.size:
+            break
+        part = pp.take(pending) if pending.size < step.shape[0] else pp
+        w = t[pending, None] * step[pending]
+        th, tl = _dd_add(vh[pending], vl[pending], w)
+        frozen = [k[pending] for k in st.kappa]
+        tr = _evaluate(part, rows[pending], th, tl, curve, frozen)
+        fresh = _evaluate(part, rows[pending], th, tl, curve) if curve is not None else tr
+        drop = tr.energy - st.energy[pending] - (part.f * w).sum(1)
+        ok = (drop <= 1e-4 * t[pending] * slope[pending]) | (fresh.res < 0.5 * st.res[pending])
+        ok &= np.all(np.isfinite(w), axis=1)
+        if k == 0 and ok.all():
+            return w, fresh  # every case at its first trial: that is the next state
+        moved[pending[ok]] = w[ok]
+        pending = pending[~ok]
+        t[pending] *= 0.5
+    return moved, None
+
+
+def solve_pair(
+    balls: int,
+    radial_load: Any,
+    axial_load: Any = 0.0,
+    *,
+    arrangement: str = "DB",
+    preload: Any = 0.0,
+    contact_angle: Any,
+    ball_diameter: Any,
+    pitch_diameter: Any,
+    width: Any,
+    f_i: Any = 0.52,
+    f_o: Any = 0.53,
+    cage_angle: Any = 0.0,
+    moment: Any = 0.0,
+    moment_cross: Any = 0.0,
+    modulus: Any = STEEL_MODULUS,
+    poisson: Any = 0.3,
+    stiffness: Any = None,
+    tilt_radius: Any = None,
+) -> PairDistribution:
+    """Equilibrium of the shaft in a pair of identical angular-contact ball bearings.
+
+    Model and conventions: the module docstring. Arrays broadcast over cases.
+
+    Parameters
+    ----------
+    balls : int
+        Balls per bearing z, 3 to 1000. [-]
+    radial_load : array_like
+        F_r >= 0 on the shaft at the pair's centre, along the load line. [N]
+    axial_load : array_like, default 0
+        F_a on the shaft, towards +axial (bearing 1's thrust); DT: > 0. [N]
+    arrangement : {"DB", "DF", "DT"}
+        Back-to-back, face-to-face, tandem.
+    preload : array_like, default 0
+        F_p >= 0, the axial force each bearing carries with no external load (DB, DF). [N]
+    contact_angle : array_like
+        Design contact angle alpha_0, above 0 to 60. [°]
+    ball_diameter, pitch_diameter : array_like
+        D_w and d_m. [mm]
+    width : array_like
+        B of one bearing: their centres lie B/2 either side of the pair's centre. [mm]
+    f_i, f_o : array_like, default 0.52, 0.53
+        Groove conformities. [-]
+    cage_angle : array_like, default 0
+        Angle of ball 1 from the load line (both bearings). [°]
+    moment, moment_cross : array_like, default 0
+        Moments on the shaft in and across the plane of the load line. [N mm]
+    modulus, poisson : array_like
+        E [MPa] and nu [-].
+    stiffness : array_like, optional
+        A constant ball stiffness K instead of the Hertz K(alpha). [N/mm^1.5]
+    tilt_radius : array_like, optional
+        The lever of the tilt at each bearing (default R_i). [mm]
+
+    Returns
+    -------
+    PairDistribution
+
+    >>> r = solve_pair(12, 0.0, 0.0, preload=500.0, contact_angle=40.0, ball_diameter=8.7312,
+    ...                pitch_diameter=38.5, width=15.0)
+    >>> [round(float(b.axial_load), 6) for b in r.bearings]
+    [500.0, 500.0]
+    """
+    kind = _arrangement(arrangement)
+    z = int(validate.ball_count(balls, maximum=1000).reshape(-1)[0])
+    if np.size(balls) != 1:
+        raise InputError("balls", "must be one number per call (group the cases by z)")
+    if z < 3:
+        raise InputError(
+            "balls",
+            "must be at least 3 per bearing of a pair: 1 or 2 balls leave the shaft free to "
+            "turn about their line (a real bearing has many more)",
+        )
+    fr = validate.finite("radial_load", radial_load)
+    if np.any(fr < 0):
+        raise InputError("radial_load", "must be >= 0 N")
+    fa = validate.finite("axial_load", axial_load)
+    fp = validate.finite("preload", preload)
+    _check_pair(kind, fa, fp, contact_angle)
+    named = {"radial_load": fr, "axial_load": fa, "preload": fp, "contact_angle": contact_angle,
+             "ball_diameter": ball_diameter, "pitch_diameter": pitch_diameter,
+             "width": validate.positive("width", width, "mm"), "f_i": f_i, "f_o": f_o,
+             "cage_angle": validate.finite("cage_angle", cage_angle),
+             "moment": validate.finite("moment", moment),
+             "moment_cross": validate.finite("moment_cross", moment_cross),
+             "modulus": validate.positive("modulus", modulus, "MPa"),
+             "poisson": validate.finite("poisson", poisson)}  # fmt: skip
+    if stiffness is not None:
+        named["stiffness"] = validate.positive("stiffness", stiffness, "N/mm^1.5")
+    if tilt_radius is not None:
+        named["tilt_radius"] = validate.positive("tilt_radius", tilt_radius, "mm")
+    validate.broadcast_shape(named)
+    arrays = np.broadcast_arrays(*(np.asarray(v, dtype=float) for v in named.values()))
+    shape = arrays[0].shape
+    c = dict(zip(named, (a.ravel() for a in arrays), strict=True))
+    c["cage_angle"] = np.mod(c["cage_angle"], 360.0)
+    with np.errstate(all="ignore"):
+        return _solve(z, kind, c, shape)
+
+
+def _arrangement(arrangement: Any) -> str:
+    kind = str(arrangement).upper()
+    if kind not in ARRANGEMENTS:
+        raise InputError(
+            "arrangement",
+            f"must be DB (back-to-back), DF (face-to-face) or DT (tandem), not {arrangement!r}",
+        )
+    return kind
+
+
+def _check_pair(kind: str, fa: np.ndarray, fp: np.ndarray, contact_angle: Any) -> None:
+    """Refuse what a pair of this arrangement cannot take."""
+    alpha = validate.finite("contact_angle", contact_angle)
+    if np.any((alpha <= 0) | (alpha > 60)):
+        raise InputError("contact_angle", "must be above 0 and at most 60° for a bearing pair")
+    if np.any(fp < 0):
+        raise InputError("preload", "must be >= 0 N")
+    if kind == "DT" and np.any(fp > 0):
+        raise InputError(
+            "preload",
+            "a tandem pair (DT) is not preloaded in itself: both bearings face the same way, "
+            "so it is preloaded against another bearing; give 0, or use DB or DF",
+        )
+    if kind == "DT" and np.any(fa <= 0):
+        raise InputError(
+            "axial_load",
+            "must be > 0 N for a tandem pair (DT): both bearings take thrust towards +axial only "
+            "(a reversed load lifts every ball; with none the axial position is held by "
+            "another bearing)",
+        )
+
+
+_UNITS = {"radial_load": "N", "axial_load": "N", "moment": "N mm", "moment_cross": "N mm",
+          "preload": "N", "contact_angle": "°", "width": "mm", "cage_angle": "°"}  # fmt: skip
+
+
+def _solve(z: int, kind: str, c: dict, shape: tuple[int, ...]) -> PairDistribution:
+    """The pair of the flat, checked cases ``c``."""
+    geo = _comb._angular_geometry(c["ball_diameter"], c["pitch_diameter"], c["f_i"], c["f_o"],
+                                  c["contact_angle"])  # fmt: skip
+    if "tilt_radius" in c:
+        geo = _replace_radius(geo, c["tilt_radius"])
+    curve = None
+    if "stiffness" in c:
+        k_ref = c["stiffness"]
+    else:
+        k_ref, values = _comb._hertz_setup(geo, c["modulus"], c["poisson"])
+        curve = _comb._StiffnessCurve(values)
+    fr, fa, mm, mc, fp = (c[k] for k in ("radial_load", "axial_load", "moment", "moment_cross",
+                                         "preload"))  # fmt: skip
+    f_ref = np.maximum(_comb._reference_force(fr, fa, mm, mc, geo.R_i), fp)
+    if np.any(f_ref <= 0):
+        raise InputError("radial_load", "give a radial load, an axial load, a moment or a preload")
+    _comb._check_scale(f_ref, k_ref, geo.A)
+    cos_, sin_, mirror = _comb._directions(z, c["cage_angle"])
+    n = fr.size
+    f = np.stack([fr, np.zeros(n), fa, mm / geo.R_i, mc / geo.R_i], axis=1) / f_ref[:, None]
+    prob = Problem.make(z, (cos_, sin_), (geo.A, geo.g), f=np.zeros((n, 5)),
+                        t_imp=np.zeros(n), locked=np.zeros((n, 5), dtype=bool),
+                        imposed=np.zeros((n, 5), dtype=bool), f_ref=f_ref, k_ref=k_ref,
+                        one_sided=np.ones(n, dtype=bool))  # fmt: skip
+    rows = np.arange(n)
+    delta_p = _preload_approach(z, fp / f_ref, prob, curve, rows)
+    u_hi, u_lo = _axial_at(prob, delta_p)
+    first = -0.5 if kind in ("DB", "DT") else 0.5
+    lever = np.array([first, -first]) * c["width"][:, None]
+    sigma = np.array([1.0, 1.0 if kind == "DT" else -1.0])
+    held = np.zeros((n, 5), dtype=bool)
+    held[:, [1, 4]] = (mirror & (mc == 0))[:, None]  # y and theta_c 0 by symmetry, exactly
+    pp = _Pair((prob, prob), sigma, lever / geo.R_i[:, None],
+               np.stack([u_hi, u_hi], 1), np.stack([u_lo, u_lo], 1), f, held)  # fmt: skip
+    vh, vl, res, its = _solve_stages(pp, _start(pp, z, geo, fp / f_ref), curve)
+    given = {k: c[k] for k in _UNITS}
+    _accepted(res, its, given)
+    st = _evaluate(pp, rows, vh, vl, curve)
+    _check_edge(st, given)
+    return _result(kind, pp, geo, (vh, vl, res, its, st), c, shape, curve, mirror & (mc == 0),
+                   delta_p)  # fmt: skip
+
+
+def _replace_radius(geo: Any, radius: np.ndarray) -> Any:
+    import dataclasses
+
+    return dataclasses.replace(geo, R_i=np.broadcast_to(radius, geo.D_w.shape).astype(float))
+
+
+def _preload_approach(
+    z: int, target: np.ndarray, p: Problem, curve: Any, rows: np.ndarray
+) -> np.ndarray:
+    """The approach delta_p (scaled) of every ball of a bearing carrying the thrust ``target``
+    (scaled) alone: ``z K(alpha) delta^1.5 sin(alpha) = F_p`` with ``cos(alpha) = A cos(alpha_0)
+    /(A + delta)`` (Harris & Kotzalas §8.3), by secant steps in log-log to the last digit; 0 without preload."""
+    big_a, gap = p.a_hat, p.gap
+    cc = big_a - gap  # A cos(alpha_0)
+
+    def thrust(delta: np.ndarray) -> np.ndarray:
+        d = big_a + delta
+        # sin^2 = (d^2 - cc^2)/d^2, with d^2 - cc^2 = gap (2A - gap) + delta (2A + delta)
+        sa = np.sqrt(gap * (2.0 * big_a - gap) + delta * (2.0 * big_a + delta)) / d
+        kappa = 0.0
+        if curve is not None:
+            ca = cc / d
+            kappa = curve(rows, ca[:, None], (-sa * sa / (1.0 + ca))[:, None])[:, 0]
+        return z * (1.0 + kappa) * delta**1.5 * sa
+
+    on = target > 0
+    goal = np.log(np.where(on, target, 1.0))
+    sin0 = np.sqrt(gap * (2.0 * big_a - gap)) / big_a
+    x0 = np.cbrt(np.where(on, target, 1.0) / (z * sin0)) ** 2  # the angle kept: an upper bound
+    f0 = np.log(thrust(x0)) - goal
+    x1 = x0 * np.exp(-f0 / 1.5)
+    for _ in range(60):  # secant in log-log (a slope of 1.5 at a fixed angle, a little more)
+        f1 = np.log(thrust(x1)) - goal
+        step = np.log(x1) - np.log(x0)
+        slope = np.where(step != 0, (f1 - f0) / np.where(step != 0, step, 1.0), 1.5)
+        x2 = x1 * np.exp(-f1 / np.clip(slope, 1.0, 4.0))
+        x0, f0 = x1, f1
+        moving = on & (np.abs(x2 - x1) > 2e-16 * x1)
+        x1 = np.where(moving, x2, x1)
+        if not moving.any():
+            break
+    return np.where(on, x1, 0.0)
+
+
+def _axial_at(p: Problem, delta: np.ndarray) -> tuple[np.ndarray, np.ndarray]:
+    """The local axial position (scaled, double-double) at which every ball of a bearing is at
+    the approach ``delta`` with no radial move: the closed form, then Newton steps on the
+    double-double approach of :func:`~bearingload.models._combined_ring.reference`."""
+    big_a, gap = p.a_hat, p.gap
+    hi = np.sqrt(gap * (2.0 * big_a - gap) + delta * (2.0 * big_a + delta))
+    lo = np.zeros_like(hi)
+    v = np.zeros((hi.size, 5))
+    for _ in range(4):
+        vh, vl = v.copy(), v.copy()
+        vh[:, 2], vl[:, 2] = hi, lo
+        b = _ring.reference(p, vh, vl)
+        eps = b.eps[:, 0]
+        sa = b.up[:, 0] / np.where(b.d[:, 0] > 0, b.d[:, 0], 1.0)
+        hi, lo = _dd_add(hi, lo, (delta - eps) / np.where(sa > 0, sa, 1.0))
+    return hi, lo
+
+
+def _start(pp: _Pair, z: int, geo: Any, pre: np.ndarray) -> np.ndarray:
+    """A start: the shares of the loads a rigid ring would give (Stribeck's 5 for the radial
+    load), or the preloaded position where the preload is the larger."""
+    f = pp.f
+    n = f.shape[0]
+    v = np.zeros((n, 5))
+    ca, sa = np.cos(geo.alpha0), np.sin(geo.alpha0)
+    share = np.where(pp.sigma[1] > 0, 0.5, 1.0) * np.abs(f[:, 2])
+    v[:, 2] = np.sign(f[:, 2]) * np.cbrt(share / (z * sa)) ** 2 / sa
+    v[:, 0] = np.cbrt(2.5 * f[:, 0] / (z * ca)) ** 2 / ca
+    light = pre >= np.max(np.abs(f), axis=1)
+    return np.where(light[:, None], 0.0, v)
+
+
+def _accepted(res: np.ndarray, its: np.ndarray, given: dict) -> None:
+    bad = ~(res <= ACCEPT)
+    if np.any(bad):
+        known = res[bad][np.isfinite(res[bad])]
+        cases = {k: v[bad] for k, v in given.items()}
+        raise ConvergenceError(
+            "bearing-pair shaft equilibrium", int(its[bad].max()),
+            float(known.max()) if known.size else math.nan, cases, units=_UNITS,
+        )  # fmt: skip
+
+
+def _check_edge(st: _State, given: dict) -> None:
+    """Refuse a loaded ball at the groove edge (contact angle 90°), as the single bearing."""
+    for k in range(2):
+        b, lo = st.balls[k], st.loads[k]
+        edge = (lo.root > 0) & (
+            (b.rho <= 0) | (np.rad2deg(np.arctan2(np.abs(lo.sa), lo.ca)) >= 90.0)
+        )
+        if np.any(edge):
+            from bearingload.errors import format_cases
+
+            case = int(np.nonzero(edge)[0][0])
+            one = {key: v[[case]] for key, v in given.items()}
+            raise InputError(
+                "axial_load",
+                f"the loads drive a ball of bearing {k + 1} to a contact angle of 90°, the edge of "
+                f"its groove, which the model does not describe ({format_cases(one, _UNITS)})",
+            )
+
+
+def _result(kind: str, pp: _Pair, geo: Any, answer: tuple[Any, ...], c: dict,
+            shape: tuple[int, ...], curve: Any, mirrored: np.ndarray,
+            delta_p: np.ndarray) -> PairDistribution:  # fmt: skip
+    """Back to physical units: each bearing as a CombinedDistribution, the pair's values."""
+    vh, vl, res, its, st = answer
+    p = pp.probs[0]
+    scale, f_ref, radius = p.scale, p.f_ref, geo.R_i
+    n = vh.shape[0]
+    maps = pp.maps()
+    bearings = []
+    total = np.zeros((n, 5, 5))
+    for k in range(2):
+        wh, wl = _local(pp, k, vh, vl)
+        lo = st.loads[k]
+        gen, size = _ring.forces(p, lo)
+        at = _ring.Point(st.balls[k], lo, gen, size, np.zeros(n), np.zeros(n, dtype=np.int64))
+        tangent = _comb._tangent(p, geo, at, st.kappa[k], curve, mirrored)
+        given = {"radial_load": np.hypot(gen[:, 0], gen[:, 1]) * f_ref, "axial_load": gen[:, 2] * f_ref,
+                 "moment": gen[:, 3] * f_ref * radius, "clearance": np.zeros(n),
+                 "cage_angle": c["cage_angle"]}  # fmt: skip
+        out = (wh + wl, st.kappa[k], its, (st.balls[k], lo, gen), tangent)
+        bearings.append(_comb._result(p, geo, out, shape, given, None))
+        phys = maps[:, k].copy()
+        phys[:, 0, 3] *= radius
+        phys[:, 1, 4] *= radius
+        total += phys.transpose(0, 2, 1) @ tangent @ phys
+    total = 0.5 * (total + total.transpose(0, 2, 1))
+    along, across = np.array([0, 2, 3]), np.array([1, 4])
+    total[np.ix_(mirrored, along, across)] = 0.0
+    total[np.ix_(mirrored, across, along)] = 0.0
+    unloaded = np.stack([np.all(st.loads[k].q == 0, axis=1) for k in range(2)], axis=1)
+    v = vh + vl
+
+    def case(a: Any) -> Any:
+        return numerics.scalar_out(np.asarray(a).reshape(shape))
+
+    lift = None if kind == "DT" else case(_lift_off(pp, geo, curve, delta_p, c))
+    return PairDistribution(
+        arrangement=kind, bearings=(bearings[0], bearings[1]),
+        load=case(c["radial_load"]), axial_load=case(c["axial_load"]), moment=case(c["moment"]),
+        moment_cross=case(c["moment_cross"]), preload=case(c["preload"]),
+        preload_offset=case(_offset(p, delta_p) * scale), width=case(c["width"]),
+        x=case(v[:, 0] * scale), y=case(v[:, 1] * scale), axial=case(v[:, 2] * scale),
+        tilt=case(np.rad2deg(v[:, 3] * scale / radius)),
+        tilt_cross=case(np.rad2deg(v[:, 4] * scale / radius)),
+        stiffness_matrix=total.reshape(shape + (5, 5)), unloaded=unloaded.reshape(shape + (2,)),
+        lift_off_axial_load=lift, residual=case(res), iterations=case(its),
+    )  # fmt: skip
+
+
+def _offset(p: Problem, delta: np.ndarray) -> np.ndarray:
+    """The axial approach of a bearing from its zero-load position to every ball at ``delta``
+    (scaled): ``u_p - u_0 = delta (2A + delta)/(u_p + u_0)``, without cancellation."""
+    big_a, gap = p.a_hat, p.gap
+    u0 = np.sqrt(gap * (2.0 * big_a - gap))
+    up = np.sqrt(u0 * u0 + delta * (2.0 * big_a + delta))
+    return delta * (2.0 * big_a + delta) / (up + u0)
+
+
+def _lift_off(pp: _Pair, geo: Any, curve: Any, delta_p: np.ndarray, c: dict) -> np.ndarray:
+    """The external axial load alone at which one bearing of a preloaded DB/DF pair carries
+    nothing: the other then sits at twice the preload offset from its zero-load position. [N]"""
+    p = pp.probs[0]
+    big_a, gap = p.a_hat, p.gap
+    u0 = np.sqrt(gap * (2.0 * big_a - gap))
+    cc = big_a - gap
+    w = 2.0 * _offset(p, delta_p)
+    u = u0 + w
+    d = np.hypot(cc, u)
+    delta = w * (2.0 * u0 + w) / (d + big_a)
+    ca, sa = cc / d, u / d
+    kappa = 0.0
+    if curve is not None:
+        rows = np.arange(ca.size)
+        kappa = curve(rows, ca[:, None], (-sa * sa / (1.0 + ca))[:, None])[:, 0]
+    thrust = p.z * (1.0 + kappa) * delta**1.5 * sa * p.f_ref
+    return np.where(c["axial_load"] < 0, -thrust, thrust)
+
+
+@dataclass(frozen=True)
+class _Lean:
+    """The first stage's pair in plain doubles, both bearings' balls side by side (n, 2z):
+    the arms of each ball's radial and axial separation in the pair's unknowns (n, 5, 2z)."""
+
+    radial: np.ndarray
+    axial: np.ndarray
+    rho0: np.ndarray  # (n, 1) A cos(alpha_0)... the radial separation at v = 0
+    u0: np.ndarray  # (n, 2z) the axial one (the preload offset included)
+    big_a: np.ndarray  # (n, 1)
+    f: np.ndarray
+    held: np.ndarray
+
+    @staticmethod
+    def of(pp: _Pair) -> _Lean:
+        p = pp.probs[0]
+        c, s = np.concatenate([p.c, p.c], 1), np.concatenate([p.s, p.s], 1)
+        z = p.c.shape[1]
+        r = np.repeat(-pp.lever, z, axis=1)  # (n, 2z)
+        sig = np.repeat(pp.sigma, z)[None, :] * np.ones_like(c)
+        zero = np.zeros_like(c)
+        radial = np.stack([c, s, zero, r * c, r * s], axis=1)
+        axial = np.stack([zero, zero, sig, sig * c, sig * s], axis=1)
+        u0 = np.repeat(pp.off_hi + pp.off_lo, z, axis=1)
+        return _Lean(radial, axial, (p.a_hat - p.gap)[:, None], u0, p.a_hat[:, None], pp.f,
+                     pp.held)  # fmt: skip
+
+    def take(self, idx: np.ndarray) -> _Lean:
+        return _Lean(*(getattr(self, k)[idx] for k in _LEAN_FIELDS))
+
+
+_LEAN_FIELDS = ("radial", "axial", "rho0", "u0", "big_a", "f", "held")
+
+
+@dataclass
+class _LeanState:
+    """The lean pair at the positions of some cases: residual, potential, forces and the pieces
+    of the tangent (arrays with the cases on the first axis)."""
+
+    res: np.ndarray
+    energy: np.ndarray
+    gen: np.ndarray
+    g: np.ndarray  # (n, 5, 2z) generalised direction of each ball's contact normal
+    ca: np.ndarray
+    sa: np.ndarray
+    rho: np.ndarray
+    up: np.ndarray
+    d: np.ndarray
+    root: np.ndarray
+    kappa: np.ndarray
+    q: np.ndarray
+
+    def take(self, idx: np.ndarray) -> _LeanState:
+        return _LeanState(*(getattr(self, k.name)[idx] for k in dataclasses.fields(self)))
+
+    def put(self, idx: np.ndarray, other: _LeanState) -> None:
+        for k in dataclasses.fields(self):
+            getattr(self, k.name)[idx] = getattr(other, k.name)
+
+
+def _lean_state(q: _Lean, v: np.ndarray, curve: Any, rows: np.ndarray) -> _LeanState:
+    """The lean pair at ``v`` (plain doubles; K at each ball's angle)."""
+    rho = q.rho0 + (v[:, None, :] @ q.radial)[:, 0]
+    u = q.u0 + (v[:, None, :] @ q.axial)[:, 0]
+    up, rp = np.maximum(u, 0.0), np.maximum(rho, 0.0)
+    d = np.hypot(rp, up)
+    m = rho - q.big_a
+    eps = np.where(rho > 0, (m * (m + 2.0 * q.big_a) + up * up) / (d + q.big_a), up - q.big_a)
+    safe = np.where(d > 0, d, 1.0)
+    ca, sa = np.where(d > 0, rp / safe, 1.0), up / safe
+    pos = np.maximum(eps, 0.0)
+    root = np.sqrt(pos)
+    kappa = np.zeros_like(rho)
+    if curve is not None:
+        kappa = curve(rows, ca, _cos_m1(rho, ca, sa))
+    load = (1.0 + kappa) * pos * root
+    g = q.radial * ca[:, None, :] + q.axial * sa[:, None, :]
+    gen = (g @ load[:, :, None])[:, :, 0]
+    size = (np.abs(g) @ load[:, :, None])[:, :, 0]
+    res = _ring.residual_of(q.f, gen, size, q.held)
+    energy = (load * pos).sum(1) / 2.5 - (q.f * v).sum(1)
+    return _LeanState(res, energy, gen, g, ca, sa, rho, up, d, root, kappa, load)
+
+
+def _cos_m1(rho: np.ndarray, ca: np.ndarray, sa: np.ndarray) -> np.ndarray:
+    """cos(alpha) - 1 without cancellation."""
+    return np.where(rho > 0, -sa * sa / (1.0 + ca), ca - 1.0)
+
+
+def _lean_step(q: _Lean, st: _LeanState, curve: Any, rows: np.ndarray) -> np.ndarray:
+    """The Newton step of the lean pair (its tangent, regularised; within A)."""
+    h = -q.radial * st.sa[:, None, :] + q.axial * st.ca[:, None, :]
+    w1 = 1.5 * (1.0 + st.kappa) * st.root
+    turning = (st.rho > 0) & (st.up > 0)
+    safe = np.where(st.d > 0, st.d, 1.0)
+    w2 = np.where(turning, st.q / safe, 0.0)
+    gt, ht = st.g.transpose(0, 2, 1), h.transpose(0, 2, 1)
+    jac = (st.g * w1[:, None, :]) @ gt + (h * w2[:, None, :]) @ ht
+    if curve is not None:
+        slope = _comb._StiffnessCurve(curve.values[rows]).slope(
+            st.ca, _cos_m1(st.rho, st.ca, st.sa)
+        )
+        w3 = np.where(turning & (st.root > 0), slope * -st.sa * st.root**3 / safe, 0.0)
+        jac += (st.g * w3[:, None, :]) @ ht
+    grad = np.where(q.held, 0.0, st.gen - q.f)
+    jac = _ring.hold(jac, q.held)
+    trace = np.trace(jac, axis1=1, axis2=2)
+    jac += (1e-13 * np.abs(trace) + 1e-300)[:, None, None] * np.eye(5)
+    with np.errstate(all="ignore"):
+        step = -np.linalg.solve(jac, grad[:, :, None])[:, :, 0]
+    big_a = q.big_a[:, 0]
+    bad = ~np.all(np.isfinite(step), axis=1) | ~(trace > 1e-200)
+    if bad.any():
+        norm = np.maximum(np.linalg.norm(grad[bad], axis=1), 1e-300)
+        step[bad] = -grad[bad] / norm[:, None] * big_a[bad, None]
+    longest = np.max(np.abs(step), axis=1)
+    shrink = np.where(longest > big_a, big_a / np.where(longest > 0, longest, 1.0), 1.0)
+    return step * shrink[:, None]
+
+
+def _lean_newton(pp: _Pair, v: np.ndarray, curve: Any) -> tuple[np.ndarray, np.ndarray]:
+    """The first stage: damped Newton in plain doubles until FIRST_STAGE or FIRST_STEPS steps,
+    each case on its own; a case whose line search finds no step is left to the second stage.
+    (position, steps)."""
+    v = v.copy()
+    its = np.zeros(v.shape[0], dtype=np.int64)
+    active = np.arange(v.shape[0])
+    q = _Lean.of(pp)
+    st = _lean_state(q, v, curve, active)
+    for _ in range(FIRST_STEPS):
+        going = np.flatnonzero(st.res > FIRST_STAGE)
+        if going.size < active.size:
+            active, q, st = active[going], q.take(going), st.take(going)
+        if not active.size:
+            break
+        step = _lean_step(q, st, curve, active)
+        taken, t, st = _lean_search(q, st, curve, active, v[active], step)
+        v[active] += np.where(taken[:, None], t[:, None] * step, 0.0)
+        its[active] += 1
+        if not taken.all():
+            keep = np.flatnonzero(taken)
+            active, q, st = active[keep], q.take(keep), st.take(keep)
+    return v, its
+
+
+def _lean_search(q: _Lean, st: _LeanState, curve: Any, rows: np.ndarray, v: np.ndarray,
+                 step: np.ndarray) -> tuple[np.ndarray, np.ndarray, _LeanState]:  # fmt: skip
+    """t = 1, 1/2, ... until the potential falls (Armijo, 1e-4 of the slope) or the residual
+    halves, each case on its own (only the cases still searching evaluated): (taken, t, the
+    state there; a case that found none keeps its own)."""
+    slope = (np.where(q.held, 0.0, st.gen - q.f) * step).sum(1)
+    n = step.shape[0]
+    t = np.ones(n)
+    taken = np.zeros(n, dtype=bool)
+    pending = np.arange(n)
+    new = st
+    for k in range(30):
+        sub = q if pending.size == n else q.take(pending)
+        trial = _lean_state(
+            sub, v[pending] + t[pending, None] * step[pending], curve, rows[pending]
+        )
+        ok = (trial.energy - st.energy[pending] <= 1e-4 * t[pending] * slope[pending]) | (
+            trial.res < 0.5 * st.res[pending]
+        )
+        if k == 0 and ok.all():
+            return np.ones(n, dtype=bool), t, trial
+        if k == 0:
+            new = st.take(np.arange(n))  # a copy to put the accepted trials in
+        new.put(pending[ok], trial.take(np.flatnonzero(ok)))
+        taken[pending[ok]] = True
+        pending = pending[~ok]
+        if not pending.size:
+            break
+        t[pending] *= 0.5
+    return taken, t, new

@@ -1,0 +1,182 @@
+"""The report of ``bearingload solve`` for a pair of angular-contact ball bearings (DB, DF, DT).
+
+* ``table`` / ``markdown``: quantity | pair | bearing 1 | bearing 2 | unit (the loads applied to
+  the shaft in the pair's column, those each bearing carries in its own), then every ball's
+  angle, contact angle and load in both bearings; the geometry only with ``show_geometry``.
+* ``json``: ``{"cases": [pair], "units", "bearing", "warnings"}``: the pair's keys (its inputs,
+  displacement, ``stiffness_matrix``, lift-off, lives) and ``bearings``, one object per bearing
+  with the keys of a single bearing's case (:mod:`bearingload.reports.combined`).
+* ``csv``: one rectangular table, one row per bearing (``bearing_number`` 1, 2): the bearing's
+  keys of a single combined case, and the pair's values in every row under ``pair_...``
+  columns (``pair_x``, ``pair_stiffness_axial``, ...) beside the pair's inputs; with
+  ``per_ball`` one row per ball of each bearing.
+"""
+
+from __future__ import annotations
+
+import dataclasses
+from collections.abc import Sequence
+from typing import Any
+
+from bearingload.reports.combined import MATRIX_UNITS, contact_angle_shown
+from bearingload.reports.quantities import units
+from bearingload.reports.render import Column, Table, render
+from bearingload.reports.solve import column, quantity_rows, with_service
+from bearingload.studies.bearing_pair import ARRANGEMENT_NAMES, PairCase
+from bearingload.studies.combined_bearing import combined_values
+
+#: The pair's inputs (every row of the csv, the JSON case).
+PAIR_INPUTS = ("bearing", "arrangement", "balls", "load", "axial_load", "moment", "moment_cross",
+               "preload", "width", "contact_angle", "cage_angle", "rotating")  # fmt: skip
+#: The pair's answers (``pair_`` columns in the csv).
+PAIR_ANSWERS = ("x", "y", "axial", "tilt", "tilt_cross", "stiffness_radial", "stiffness_axial",
+                "stiffness_tilt", "lift_off_axial_load", "unloaded_bearings",
+                "reference_rating_life", "rating_life")  # fmt: skip
+#: The rows of the human summary (the pair's column shows what it has).
+SUMMARY_KEYS = ("load", "axial_load", "moment", "q_max", "loaded_balls", "p_max_inner",
+                "p_max_outer", "static_equivalent_load", "static_safety", "contact_angle_max",
+                "x", "y", "axial", "tilt", "tilt_cross", "stiffness_radial", "stiffness_axial",
+                "stiffness_tilt", "preload", "lift_off_axial_load", "unloaded_bearings",
+                "reference_rating_life", "equivalent_load", "rating_life")  # fmt: skip
+NOTES = (
+    "The pair: the loads applied to the shaft at the pair's centre (x along F_r, +axial the "
+    "thrust of bearing 1) and the shaft's displacement there; a bearing: the forces its balls "
+    "carry (F_r the size of its radial force) and its own displacement, from its zero-load "
+    "position (the preload offset included), bearing 2 of DB and DF facing the other way.",
+    "Pair model (docs/angular_contact.md): one rigid shaft, the bearings' centres B/2 either "
+    "side of the pair's centre; preload F_p: the axial force each bearing of DB/DF carries with "
+    "no external load; lift-off: the axial load alone at which the other bearing carries nothing.",
+    "Pair lives: (L1^-e + L2^-e)^(-1/e), e = 10/9 (ISO/TS 16281 4.3's rule for the rings of a "
+    "bearing; Lundberg-Palmgren system life); L10r from the ball loads, L10 from P = X F_r + Y "
+    "F_a of each bearing (ISO 281 Table 3, single row).",
+)
+
+
+def pair_record(c: PairCase) -> dict[str, Any]:
+    """The pair's values under their quantity keys."""
+    r = c.result
+    unloaded = [str(k + 1) for k in range(2) if r.unloaded[k]]
+    first = combined_values(c.bearings[0])
+    return {
+        "bearing": first["bearing"], "arrangement": r.arrangement, "balls": first["balls"],
+        "load": r.load, "axial_load": r.axial_load, "moment": r.moment,
+        "moment_cross": r.moment_cross, "preload": r.preload, "width": r.width,
+        "contact_angle": first.get("contact_angle"), "cage_angle": first["cage_angle"],
+        "rotating": c.rotating, "x": r.x, "y": r.y, "axial": r.axial, "tilt": r.tilt,
+        "tilt_cross": r.tilt_cross, "stiffness_radial": r.stiffness_radial,
+        "stiffness_axial": r.stiffness_axial, "stiffness_tilt": r.stiffness_tilt,
+        "lift_off_axial_load": r.lift_off_axial_load,
+        "unloaded_bearings": ", ".join(unloaded) or "none",
+        "reference_rating_life": c.reference_rating_life, "rating_life": c.rating_life,
+    }  # fmt: skip
+
+
+def pair_report(
+    c: PairCase, fmt: str, *, per_ball: bool = False, show_geometry: bool = False,
+    service: Sequence[Any] | None = None,
+) -> str:  # fmt: skip
+    """Render a solved pair in ``fmt`` (table, csv, markdown, json); ``service``: each
+    bearing's service values (:class:`bearingload.bearings.service_life.ServiceLife`), merged
+    into its record as a single bearing's."""
+    pair = pair_record(c)
+    records = with_service([combined_values(b) for b in c.bearings], service)
+    if fmt == "json":
+        return render([], "json", document=_document(c, pair, records))
+    if fmt == "csv":
+        return render([_csv_table(c, pair, records, per_ball)], "csv")
+    tables = []
+    if show_geometry:
+        from bearingload.reports.bearing import geometry_table
+
+        tables.append(geometry_table(c.bearing))
+    heads = ["pair", "bearing 1", "bearing 2"]
+    rows_of = [pair, *records]
+    keys = [k for k in SUMMARY_KEYS if any(r.get(k) is not None for r in rows_of)]
+    columns, rows = quantity_rows(keys, heads, rows_of)
+    tables += [Table(_title(pair), columns, rows, list(NOTES)), _balls_table(c)]
+    return render(tables, fmt)
+
+
+def _title(p: dict[str, Any]) -> str:
+    who = f"Bearings {p['bearing']}, " if p["bearing"] != "given by hand" else ""
+    return (
+        f"{who}pair {p['arrangement']} ({ARRANGEMENT_NAMES[p['arrangement']]}), z = "
+        f"{p['balls']} per bearing, contact angle {p['contact_angle']:.6g}°, F_r = "
+        f"{p['load']:.6g} N, F_a = {p['axial_load']:.6g} N, preload {p['preload']:.6g} N, width "
+        f"B = {p['width']:.6g} mm, cage angle {p['cage_angle']:.6g}°, {p['rotating']} ring rotating"
+    )
+
+
+def _balls_table(c: PairCase) -> Table:
+    columns = [column("ball"), Column("angle", "angle", "°", 6)]
+    for k in (1, 2):
+        columns += [Column(f"a{k}", f"contact angle, bearing {k}", "°", 6),
+                    Column(f"q{k}", f"load Q, bearing {k}", "N", 6)]  # fmt: skip
+    b1, b2 = (b.result for b in c.bearings)
+    rows = []
+    for j in range(len(b1.ball_loads)):
+        row: dict[str, Any] = {"ball": j + 1, "angle": float(b1.ball_angles[j])}
+        for k, b in ((1, b1), (2, b2)):
+            q = float(b.ball_loads[j])
+            row |= {f"a{k}": contact_angle_shown(float(b.contact_angles[j]), q), f"q{k}": q}
+        rows.append(row)
+    return Table("Ball loads of both bearings (ball 1 at the cage angle; angles from the load "
+                 "line; contact angle '-': the ball carries no load)", columns, rows)  # fmt: skip
+
+
+def _document(c: PairCase, pair: dict[str, Any], records: list[dict[str, Any]]) -> dict[str, Any]:
+    from bearingload.reports.bearing import geometry_document
+    from bearingload.reports.combined import _document as single_document
+
+    singles = single_document(list(c.bearings), records)
+    doc = pair | {
+        "model": "pair of angular-contact ball bearings on one rigid shaft (ISO/TS 16281 each)",
+        "stiffness_matrix": c.result.stiffness_matrix.tolist(),
+        "bearings": singles["cases"],
+        "warnings": list(c.warnings),
+    }
+    keys = list(dict.fromkeys([*doc, *(k for s in singles["cases"] for k in s)]))
+    return {
+        "cases": [doc],
+        "units": units(keys, 1.5) | {"stiffness_matrix": MATRIX_UNITS},
+        "bearing": geometry_document(c.bearing),
+        "warnings": list(c.warnings),
+    }
+
+
+def _csv_table(c: PairCase, pair: dict[str, Any], records: list[dict[str, Any]],
+               per_ball: bool) -> Table:  # fmt: skip
+    from bearingload.reports.combined import ANSWER_KEYS, INPUT_KEYS, PER_BALL_KEYS
+
+    inputs = [k for k in PAIR_INPUTS if k not in ("load", "axial_load", "moment", "moment_cross")]
+    applied = [f"pair_{k}" for k in ("load", "axial_load", "moment", "moment_cross")]
+    answers = [f"pair_{k}" for k in PAIR_ANSWERS]
+    own = [k for k in dict.fromkeys(INPUT_KEYS + ANSWER_KEYS)
+           if k not in inputs and any(k in r for r in records)]  # fmt: skip
+    cols = [column(k) for k in inputs]
+    cols += [_pair_column(k) for k in applied + answers] + [column("bearing_number")]
+    cols += [column(k) for k in own]
+    rows = []
+    for n, (b, rec) in enumerate(zip(c.bearings, records, strict=True), start=1):
+        base = {k: pair.get(k) for k in inputs} | {k: pair.get(k[5:]) for k in applied + answers}
+        base |= {"bearing_number": n} | {k: rec.get(k) for k in own}
+        if not per_ball:
+            rows.append(base)
+            continue
+        res = b.result
+        for j in range(len(res.ball_loads)):
+            rows.append(base | {"ball": j + 1, "ball_angles": float(res.ball_angles[j]),
+                                "contact_angles": float(res.contact_angles[j]),
+                                "ball_approaches": float(res.ball_approaches[j]),
+                                "ball_loads": float(res.ball_loads[j])})  # fmt: skip
+    if per_ball:
+        cols += [column(k) for k in PER_BALL_KEYS]
+    keys = [col.key for col in cols]
+    blank = [{k: "" if r.get(k) is None else r[k] for k in keys} for r in rows]
+    return Table("pair", cols, blank)
+
+
+def _pair_column(key: str) -> Column:
+    """The csv column of the pair's value of a quantity (``pair_x``)."""
+    col = column(key[5:])
+    return dataclasses.replace(col, key=key, header=f"pair: {col.header}")

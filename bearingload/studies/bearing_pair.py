@@ -1,0 +1,146 @@
+"""``bearingload solve`` of a pair of angular-contact ball bearings (DB, DF, DT): the pair's
+equilibrium (:func:`bearingload.models.pair.solve_pair`), each bearing as a single combined
+case (its lives, contact pressures, P0, s0 and checks, :mod:`bearingload.studies.
+combined_bearing`) and the pair's lives combined (:func:`bearingload.models.pair.pair_life`).
+"""
+
+from __future__ import annotations
+
+import math
+from dataclasses import dataclass
+from typing import Any
+
+import numpy as np
+
+from bearingload.bearings.resolved import ResolvedBearing
+from bearingload.errors import InputError
+from bearingload.models.pair import PairDistribution
+from bearingload.studies.combined_bearing import CombinedCase
+
+#: The arrangements in words.
+ARRANGEMENT_NAMES = {"DB": "back-to-back", "DF": "face-to-face", "DT": "tandem"}
+
+
+@dataclass(frozen=True)
+class PairCase:
+    """One solved pair: the bearing (both alike), the pair's solution, each bearing as a
+    combined case, the pair's lives [10^6 rev] (None where a bearing's is unknown) and the
+    findings."""
+
+    bearing: ResolvedBearing
+    result: PairDistribution
+    bearings: tuple[CombinedCase, CombinedCase]
+    reference_rating_life: float | None
+    rating_life: float | None
+    rotating: str
+    warnings: tuple[str, ...]
+
+
+def bearing_width(b: ResolvedBearing, width: float | None) -> float:
+    """The width B of one bearing: the one given, else the catalogue's. [mm]"""
+    if width is not None:
+        return float(width)
+    if b.geometry is not None and b.geometry.B:
+        return float(b.geometry.B)
+    raise InputError(
+        "width",
+        "a bearing pair needs the width B of one bearing (the axial distance of the two "
+        "bearings' centres): give it (e.g. 15mm) or a catalogue designation that has it",
+    )
+
+
+def solve_bearing_pair(
+    b: ResolvedBearing,
+    load: float,
+    axial_load: float = 0.0,
+    *,
+    arrangement: str,
+    preload: float = 0.0,
+    width: float | None = None,
+    cage_angle: float = 0.0,
+    moment: float | None = None,
+    moment_cross: float | None = None,
+    tilt_radius: Any = None,
+    rotating: str = "inner",
+    dynamic_rating: float | None = None,
+) -> PairCase:
+    """Solve the pair of two bearings ``b`` (angular contact, with its ball geometry).
+
+    Parameters
+    ----------
+    b : ResolvedBearing
+        One bearing of the pair, with ``contact_angle`` and the ball geometry.
+    load, axial_load : float
+        F_r >= 0 and F_a on the shaft at the pair's centre. [N]
+    arrangement : {"DB", "DF", "DT"}
+    preload : float
+        F_p, DB and DF. [N]
+    width : float, optional
+        B of one bearing; default the catalogue's. [mm]
+    cage_angle, moment, moment_cross, tilt_radius, rotating, dynamic_rating
+        As :func:`bearingload.studies.combined_bearing.solve_combined_bearing`. [°, N mm, mm, N]
+    """
+    from bearingload.bearings.tilt import tilt_lever
+    from bearingload.models.pair import solve_pair
+
+    if b.kind != "ball" or not b.has_geometry or b.contact_angle is None:
+        raise InputError(
+            "arrangement",
+            "a bearing pair is two angular-contact ball bearings: give an angular-contact "
+            "designation (7205B) or a ring by hand with its contact angle",
+        )
+    lever = tilt_lever(tilt_radius, b.pitch_diameter)
+    r = solve_pair(
+        b.balls, load, axial_load, arrangement=arrangement, preload=preload,
+        contact_angle=b.contact_angle, ball_diameter=b.ball_diameter,
+        pitch_diameter=b.pitch_diameter, width=bearing_width(b, width), f_i=b.f_i, f_o=b.f_o,
+        cage_angle=cage_angle, moment=moment or 0.0, moment_cross=moment_cross or 0.0,
+        modulus=b.modulus, poisson=b.poisson,
+        stiffness=b.stiffness if b.stiffness_given else None, tilt_radius=lever,
+    )  # fmt: skip
+    return _pair_case(b, r, lever, rotating, dynamic_rating)
+
+
+def _pair_case(
+    b: ResolvedBearing, r: PairDistribution, lever: Any, rotating: str, dynamic_rating: Any
+) -> PairCase:
+    """Each bearing's lives and checks, the pair's lives and findings."""
+    from bearingload.models.pair import pair_life
+    from bearingload.studies.combined_bearing import _combined_case
+
+    cases = []
+    for k, rk in enumerate(r.bearings):
+        c = _combined_case(b, rk, rk.load, rk.axial_load, rk.moment, None, None, lever,
+                           rotating, dynamic_rating)  # fmt: skip
+        if r.unloaded[k]:  # no ball loaded: no life, no equivalent load
+            import dataclasses
+
+            c = dataclasses.replace(c, reference_rating_life=None, rating_life=None,
+                                    equivalent_load=None)  # fmt: skip
+        cases.append(c)
+    lives = [math.inf if r.unloaded[k] else c.reference_rating_life for k, c in enumerate(cases)]
+    basic = [math.inf if r.unloaded[k] else c.rating_life for k, c in enumerate(cases)]
+    found: list[str] = []
+    for k, c in enumerate(cases):
+        found += [f"bearing {k + 1}: {w}" for w in c.warnings]
+    if r.unloaded.any():
+        k = int(np.flatnonzero(r.unloaded)[0])
+        lift = r.lift_off_axial_load
+        when = ("" if lift is None else
+                f" (lift-off: at an axial load alone beyond {abs(lift):.6g} N for the preload "
+                f"{r.preload:.6g} N)")  # fmt: skip
+        found.append(
+            f"bearing {k + 1} of the {ARRANGEMENT_NAMES[r.arrangement]} pair carries no load"
+            f"{when}: its balls may skid; raise the preload"
+        )
+    return PairCase(b, r, (cases[0], cases[1]), _combined(lives, pair_life),
+                    _combined(basic, pair_life), rotating, tuple(found))  # fmt: skip
+
+
+def _combined(lives: list[Any], rule: Any) -> float | None:
+    """The pair's life of the bearings' lives (an unloaded bearing's infinite one drops out);
+    None where a loaded bearing's is unknown."""
+    if any(x is None or math.isnan(float(x)) for x in lives):
+        return None
+    out = float(rule(float(lives[0]), float(lives[1])))
+    return None if math.isinf(out) else out

@@ -1,0 +1,123 @@
+"""``bearingload solve`` of a pair of angular-contact ball bearings: --arrangement, --preload,
+--width and the designation's suffix (7205BDB); the terminal table, the JSON (``bearings``
+with a single bearing's keys), the csv (one row per bearing); the refusals (one ``Error:`` line
+naming the option)."""
+
+from __future__ import annotations
+
+import csv
+import io
+import json
+import math
+
+import pytest
+
+from bearingload.models.pair import pair_life, solve_pair
+
+from .cli_helpers import run_entry
+
+#: 7205B of the catalogue (NSK, derived ball set): z, D_w, d_m, B.
+ROW = {"ball_diameter": 8.7312, "pitch_diameter": 38.5}
+
+
+def _json(capsys, *args: str) -> dict:
+    code, out, err = run_entry(capsys, "solve", *args, "--format", "json", "--quiet")
+    assert code == 0, err
+    return json.loads(out)
+
+
+def test_suffix_and_option_give_the_same_pair_as_the_library(capsys):
+    a = _json(capsys, "7205BDB", "--preload", "500N", "-F", "2kN", "-A", "1kN")
+    b = _json(capsys, "7205B", "--arrangement", "db", "--preload", "500", "-F", "2kN", "-A", "1kN")
+    assert a == b
+    case = a["cases"][0]
+    r = solve_pair(12, 2000.0, 1000.0, arrangement="DB", preload=500.0, contact_angle=40.0,
+                   width=15.0, **ROW)  # fmt: skip
+    assert case["arrangement"] == "DB" and case["preload"] == 500.0 and case["width"] == 15.0
+    assert math.isclose(case["stiffness_axial"], r.stiffness_axial, rel_tol=1e-9)
+    assert math.isclose(case["x"], r.x, rel_tol=1e-9)
+    assert math.isclose(case["lift_off_axial_load"], r.lift_off_axial_load, rel_tol=1e-9)
+    assert len(case["stiffness_matrix"]) == 5 and "stiffness_matrix" in a["units"]
+    bearings = case["bearings"]
+    assert len(bearings) == 2
+    for k, doc in enumerate(bearings):
+        assert math.isclose(doc["axial_load"], r.bearings[k].axial_load, rel_tol=1e-9)
+        assert doc["ball_loads"] == pytest.approx(r.bearings[k].ball_loads.tolist(), rel=1e-9)
+    # the pair's life combines the bearings' with e = 10/9
+    lives = [d["reference_rating_life"] for d in bearings]
+    assert math.isclose(case["reference_rating_life"], pair_life(*lives), rel_tol=1e-9)
+
+
+def test_each_bearing_has_the_keys_of_a_single_bearing(capsys):
+    single = _json(capsys, "7205B", "-F", "2kN", "-A", "1kN")["cases"][0]
+    pair = _json(capsys, "7205BDF", "--preload", "200N", "-F", "2kN", "-A", "1kN")["cases"][0]
+    for doc in pair["bearings"]:
+        assert list(doc) == list(single)
+
+
+def test_terminal_table_shows_the_pair_and_both_bearings(capsys):
+    code, out, err = run_entry(capsys, "solve", "7205BDB", "--preload", "500N", "-F", "2kN",
+                               "-A", "1kN")  # fmt: skip
+    assert code == 0 and err == ""
+    assert "pair DB (back-to-back)" in out
+    head = next(line for line in out.splitlines() if line.startswith("quantity"))
+    assert "pair" in head and "bearing 1" in head and "bearing 2" in head
+    assert "lift-off: axial load unloading a bearing" in out
+    assert "contact angle, bearing 2" in out
+
+
+def test_csv_is_one_row_per_bearing(capsys):
+    code, out, _ = run_entry(capsys, "solve", "7205BDT", "-F", "1kN", "-A", "2kN", "--format",
+                             "csv")  # fmt: skip
+    assert code == 0
+    rows = list(csv.DictReader(io.StringIO(out)))
+    assert [r["bearing_number"] for r in rows] == ["1", "2"]
+    assert rows[0]["pair_axial_load [N]"] == rows[1]["pair_axial_load [N]"] == "2000.0"
+    shared = sum(float(r["axial_load [N]"]) for r in rows)
+    assert math.isclose(shared, 2000.0, rel_tol=1e-9)  # (csv: 10 digits)
+
+
+def test_lift_off_is_warned(capsys):
+    code, out, err = run_entry(capsys, "solve", "7205BDB", "--preload", "100N", "-F", "0",
+                               "-A", "3kN")  # fmt: skip
+    assert code == 0
+    assert err.startswith("Warning: bearing 2 of the back-to-back pair carries no load")
+    assert "284.8" in err  # the lift-off load for 100 N, printed
+
+
+@pytest.mark.parametrize(
+    ("args", "option"),
+    [
+        (["7205B", "--preload", "500N", "-F", "1kN"], "--preload"),
+        (["6205", "--arrangement", "DB", "-F", "1kN", "-A", "200N"], "--arrangement"),
+        (["7205B", "--arrangement", "DX", "-F", "1kN"], "--arrangement"),
+        (["7205B", "--arrangement", "DB", "--preload=-5N", "-F", "1kN"], "--preload"),
+        (["7205BDT", "--preload", "100N", "-F", "1kN", "-A", "1kN"], "--preload"),
+        (["7205BDT", "-F", "1kN"], "--axial-load"),
+        (["7205BDB", "-F", "1kN", "--arrangement", "DF"], "--arrangement"),
+        (
+            [
+                "-z",
+                "12",
+                "--ball-diameter",
+                "8.7",
+                "--pitch-diameter",
+                "38.5",
+                "--contact-angle",
+                "40",
+                "--arrangement",
+                "DB",
+                "-F",
+                "1kN",
+            ],
+            "--width",
+        ),  # fmt: skip
+        (["7205BDBC", "-F", "1kN"], "BEARING"),
+        (["7205BDB", "-F", "1kN", "--misalignment", "0.01"], "--misalignment"),
+    ],
+)
+def test_bad_input_is_one_error_line_naming_the_option(capsys, args, option):
+    code, out, err = run_entry(capsys, "solve", *args)
+    lines = err.strip().splitlines()
+    assert code == 2 and out == ""
+    assert len(lines) == 1 and lines[0].startswith("Error:") and option in lines[0]
