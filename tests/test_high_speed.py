@@ -186,3 +186,64 @@ def test_refusals_name_the_speed():
         solve_high_speed(9, 1000.0, speed=-1.0, **DEEP)
     with pytest.raises(InputError, match="ball_density"):
         solve_high_speed(9, 1000.0, speed=1000.0, ball_density=7850.0, **DEEP)
+
+
+def _solve_json(*args):
+    import json
+
+    from tests.cli_helpers import invoke
+
+    out = invoke("solve", "7205B", "--load", "500", "--axial-load", "1000", *args,
+                 "--format", "json")  # fmt: skip
+    assert out.exit_code == 0, out.output
+    return json.loads(out.output)
+
+
+def test_cli_speed_includes_the_ball_dynamics_and_the_life_takes_both_contacts():
+    from bearingload.bearings.iso16281 import contact_ratings, reference_rating_life
+    from bearingload.bearings.resolve import resolve_bearing
+
+    doc = _solve_json("--speed", "20000")
+    case = doc["cases"][0]
+    assert "outer-raceway control" in case["model"]
+    qi, qo = np.array(case["ball_loads_inner"]), np.array(case["ball_loads_outer"])
+    ai, ao = np.array(case["contact_angles_inner_deg"]), np.array(case["contact_angles_outer_deg"])
+    assert np.all(qo[qi > 0] > qi[qi > 0]) and np.all(ao[qi > 0] < ai[qi > 0])
+    assert doc["units"]["ball_loads_outer"] == "N"
+    assert doc["units"]["contact_angles_inner_deg"] == "°"
+    # L10r: the inner ring's equivalent load from the inner loads, the outer's from the outer
+    b = resolve_bearing("7205B")
+    q_ci, q_ce = contact_ratings(b.C, b.balls, b.ball_diameter, b.pitch_diameter, b.f_i, b.f_o,
+                                 contact_angle=b.contact_angle)  # fmt: skip
+    both = reference_rating_life(qi, q_ci, q_ce, "inner", outer_loads=qo)
+    assert case["reference_rating_life"] == pytest.approx(float(both), rel=1e-6)
+    assert both != pytest.approx(float(reference_rating_life(qi, q_ci, q_ce, "inner")), rel=1e-4)
+    # the same speed in rad/s
+    same = _solve_json("--speed", f"{20000 * np.pi / 30!r}rad/s")["cases"][0]
+    assert np.allclose(same["ball_loads_outer"], qo, rtol=1e-9)
+
+
+def test_cli_without_speed_or_quasi_static_inner_equals_outer():
+    for args in ((), ("--speed", "20000", "--quasi-static")):
+        case = _solve_json(*args)["cases"][0]
+        assert "outer-raceway" not in case["model"]
+        assert case["ball_loads_inner"] == case["ball_loads_outer"] == case["ball_loads"]
+        assert case["contact_angles_inner_deg"] == case["contact_angles_outer_deg"]
+
+
+def test_cli_ball_density_and_refusals():
+    from tests.cli_helpers import invoke
+
+    steel = _solve_json("--speed", "20000")["cases"][0]
+    ceramic = _solve_json("--speed", "20000", "--ball-density", "3200")["cases"][0]
+    gap = np.array(steel["ball_loads_outer"]) - np.array(steel["ball_loads_inner"])
+    gap_c = np.array(ceramic["ball_loads_outer"]) - np.array(ceramic["ball_loads_inner"])
+    assert gap_c[0] < 0.6 * gap[0]
+    for args, word in (
+        (("--speed", "100000"), "--speed"),
+        (("--ball-density", "3200"), "--ball-density"),
+        (("--quasi-static",), "--quasi-static"),
+    ):
+        out = invoke("solve", "7205B", "--load", "500", "--axial-load", "1000", *args)
+        assert out.exit_code != 0 and word in out.output and "Traceback" not in out.output
+        assert out.output.count("Error") == 1, out.output

@@ -248,15 +248,19 @@ def _solve_balls(
             sd = -(j22 * t[0] - j12 * t[1]) / det
             sa = -(-j21 * t[0] + j11 * t[1]) / det
         go = ~ok & np.isfinite(sd) & np.isfinite(sa)
-        sd, sa = np.where(go, sd, 0.0), np.clip(np.where(go, sa, 0.0), -0.2, 0.2)
+        sd, sa = np.where(go, sd, 0.0), np.where(go, sa, 0.0)
+        cut = np.minimum(1.0, 0.2 / np.maximum(np.abs(sa), 1e-300))  # the Newton direction kept
+        sd, sa = sd * cut, sa * cut
         lam = np.ones_like(do)
         pending = go.copy()
-        for _ in range(40):  # backtracking: the step, halved until the residual falls
+        size = np.hypot(t[0], t[1])  # the line search compares the residual itself
+        for _ in range(30):  # backtracking: the step, halved until the residual falls
             trial_d = np.where(do + lam * sd > 0.1 * do, do + lam * sd, 0.1 * do)
             trial_a = ao + lam * sa
             t2 = ball_terms(b, rho, u, trial_d, trial_a)
-            n2, ok2 = _ball_norm(b, t2, trial_d, moving)
-            better = pending & ((n2 < (1.0 - 1e-4 * lam) * norm) | ok2)
+            ok2 = _ball_norm(b, t2, trial_d, moving)[1]
+            n2 = np.hypot(t2[0], t2[1])
+            better = pending & ((n2 < (1.0 - 1e-4 * lam) * size) | ok2)
             do, ao = np.where(better, trial_d, do), np.where(better, trial_a, ao)
             pending &= ~better
             if not pending.any():
