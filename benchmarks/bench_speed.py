@@ -2,7 +2,7 @@
 fsolve, and one case alone.
 
 Run: ``make bench`` or ``.venv/bin/python benchmarks/bench_speed.py``.
-Targets (issue 19): one case at speed in <= 5 ms; the vectorised solve >= 20 times a per-case
+Targets: one case at speed in <= 5 ms; the vectorised solve >= 20 times a per-case
 ``scipy.optimize.fsolve`` on the same equations.
 The baseline: per case, fsolve on the 3 + 2 z equations of a 7205-sized angular-contact bearing
 (D_w 7.938 mm, d_m 38.5 mm, f_i 0.52, f_o 0.53, 13 balls, cage angle 0, free tilt): the ring's

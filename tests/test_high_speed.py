@@ -207,10 +207,10 @@ def test_cli_speed_includes_the_ball_dynamics_and_the_life_takes_both_contacts()
     case = doc["cases"][0]
     assert "outer-raceway control" in case["model"]
     qi, qo = np.array(case["ball_loads_inner"]), np.array(case["ball_loads_outer"])
-    ai, ao = np.array(case["contact_angles_inner_deg"]), np.array(case["contact_angles_outer_deg"])
+    ai, ao = np.array(case["contact_angles_inner"]), np.array(case["contact_angles_outer"])
     assert np.all(qo[qi > 0] > qi[qi > 0]) and np.all(ao[qi > 0] < ai[qi > 0])
     assert doc["units"]["ball_loads_outer"] == "N"
-    assert doc["units"]["contact_angles_inner_deg"] == "°"
+    assert doc["units"]["contact_angles_inner"] == "°"
     # L10r: the inner ring's equivalent load from the inner loads, the outer's from the outer
     b = resolve_bearing("7205B")
     q_ci, q_ce = contact_ratings(b.C, b.balls, b.ball_diameter, b.pitch_diameter, b.f_i, b.f_o,
@@ -228,7 +228,7 @@ def test_cli_without_speed_or_quasi_static_inner_equals_outer():
         case = _solve_json(*args)["cases"][0]
         assert "outer-raceway" not in case["model"]
         assert case["ball_loads_inner"] == case["ball_loads_outer"] == case["ball_loads"]
-        assert case["contact_angles_inner_deg"] == case["contact_angles_outer_deg"]
+        assert case["contact_angles_inner"] == case["contact_angles_outer"]
 
 
 def test_cli_ball_density_and_refusals():

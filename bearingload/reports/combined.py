@@ -201,7 +201,7 @@ def _per_ball_table(cases: Sequence[CombinedCase], records: Sequence[dict[str, A
 #: The note of a solve with the ball dynamics at speed (the model's name filled in).
 DYNAMICS_NOTE = (
     "Speed: {} (Jones 1960; Harris & Kotzalas; docs/speed.md): each ball has its own inner and "
-    "outer contact angle and load (json: contact_angles_inner_deg, contact_angles_outer_deg, "
+    "outer contact angle and load (json: contact_angles_inner, contact_angles_outer, "
     "ball_loads_inner, ball_loads_outer); the ball table shows the inner contacts; L10r takes "
     "the inner loads for the inner ring, the outer loads for the outer ring."
 )
@@ -307,10 +307,10 @@ def _document(cases: Sequence[CombinedCase], records: Sequence[dict[str, Any]]) 
                 "model": model if dynamics is None else f"{model}; {dynamics}",
                 "ball_angles": res.ball_angles,
                 "contact_angles": res.contact_angles,
-                "contact_angles_inner_deg": getattr(res, "contact_angles_inner", None)
+                "contact_angles_inner": getattr(res, "contact_angles_inner", None)
                 if dynamics
                 else res.contact_angles,
-                "contact_angles_outer_deg": getattr(res, "contact_angles_outer", None)
+                "contact_angles_outer": getattr(res, "contact_angles_outer", None)
                 if dynamics
                 else res.contact_angles,
                 "ball_approaches": res.ball_approaches,

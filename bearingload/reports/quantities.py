@@ -186,8 +186,8 @@ QUANTITIES: dict[str, Quantity] = {
         Quantity("ball_loads", "load Q", "N"),
         Quantity("contact_angles", "contact angle", "°"),
         # per ball, inner and outer contact (they differ with the ball dynamics at speed)
-        Quantity("contact_angles_inner_deg", "inner contact angle", "°"),
-        Quantity("contact_angles_outer_deg", "outer contact angle", "°"),
+        Quantity("contact_angles_inner", "inner contact angle", "°"),
+        Quantity("contact_angles_outer", "outer contact angle", "°"),
         Quantity("ball_loads_inner", "inner load Q_i", "N"),
         Quantity("ball_loads_outer", "outer load Q_o", "N"),
         # studies: work-precision (bearingload accuracy) and stability (bearingload stability)

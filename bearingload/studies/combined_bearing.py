@@ -327,7 +327,7 @@ def _at_speed(
             "speed",
             "the ball dynamics need each contact's Hertz stiffness from the ball geometry, not a "
             "given ball stiffness: leave out the stiffness, or ask for the static model "
-            "(--quasi-static)",
+            "(speed None)",
         )
     density = STEEL_DENSITY if density is None else density
     return solve_high_speed(b.balls, load, axial_load, speed=speed, ball_density=density,
