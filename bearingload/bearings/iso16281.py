@@ -137,7 +137,11 @@ def equivalent_ball_loads(ball_loads: ArrayLike, rotating: str = "inner") -> tup
 
 
 def reference_rating_life(
-    ball_loads: ArrayLike, q_ci: ArrayLike, q_ce: ArrayLike, rotating: str = "inner"
+    ball_loads: ArrayLike,
+    q_ci: ArrayLike,
+    q_ce: ArrayLike,
+    rotating: str = "inner",
+    outer_loads: ArrayLike | None = None,
 ) -> Any:
     """Basic reference rating life L10r from the ball loads (ISO/TS 16281, 4.3). [10^6 rev]
 
@@ -149,6 +153,9 @@ def reference_rating_life(
         Dynamic load ratings of the inner and outer contacts, :func:`contact_ratings`. [N]
     rotating : {"inner", "outer"}
         The ring that rotates relative to the load.
+    outer_loads : array_like, optional
+        The balls' outer contact loads where they differ from ``ball_loads`` (the inner
+        contacts' then; ball dynamics at speed): Q_ee is taken from them. [N]
 
     Returns
     -------
@@ -158,6 +165,8 @@ def reference_rating_life(
     2381.501
     """
     q_ei, q_ee = equivalent_ball_loads(ball_loads, rotating)
+    if outer_loads is not None:
+        q_ee = equivalent_ball_loads(outer_loads, rotating)[1]
     ci = validate.positive("q_ci", q_ci, "N")
     ce = validate.positive("q_ce", q_ce, "N")
     q_ei, q_ee = np.asarray(q_ei), np.asarray(q_ee)

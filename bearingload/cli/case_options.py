@@ -46,6 +46,8 @@ TILT_PARAMS = ("tilt_radius",)
 SERVICE_PARAMS = ("static_rating", "speed", "reliability", "viscosity", "oil", "viscosity_40",
                   "viscosity_100", "viscosity_index", "temperature", "contamination", "e_c",
                   "fatigue_load_limit", "roughness", "pressure_viscosity")  # fmt: skip
+#: The options of the ball dynamics at --speed (solve's combined engine only).
+DYNAMICS_PARAMS = ("ball_density", "quasi_static")
 #: The options that give the operating viscosity from the oil (instead of --viscosity).
 OIL_PARAMS = ("oil", "viscosity_40", "viscosity_100", "viscosity_index", "temperature")
 #: The options that feed only the lives.
@@ -316,8 +318,23 @@ DECLARATIONS: dict[str, tuple[tuple[str, ...], dict[str, Any]]] = {
         "--speed",
         type=Quantity("speed", positive=True),
         help="Shaft speed n of the rotating ring: every life also in hours, L 10^6/(60 n); "
-        "needed for the rated viscosity. Units: rpm, r/min, rad/s, 1/s, Hz (bare number: rpm; "
+        "needed for the rated viscosity. A combined or angular-contact solve includes each "
+        "ball's centrifugal force and gyroscopic moment (outer-raceway control, the inner ring "
+        "turning; docs/speed.md) unless --quasi-static. Units: rpm, r/min, rad/s, 1/s, Hz (bare number: rpm; "
         "a bare number of 1e6 or more is refused).",
+    ),
+    "ball_density": _option(
+        "--ball-density",
+        type=click.FloatRange(min=0.0, min_open=True, max=1e5),
+        help="Density of the balls in kg/m^3 for their centrifugal force and gyroscopic moment "
+        "at --speed (default bearing steel 7850; silicon nitride about 3200).",
+    ),
+    "quasi_static": _option(
+        "--quasi-static",
+        is_flag=True,
+        default=None,  # None when not given, as every case option
+        help="With --speed, solve the static model (no ball dynamics): the speed then gives "
+        "the lives in hours only.",
     ),
     "reliability": _option(
         "--reliability",
@@ -532,6 +549,8 @@ class CaseOptions:
     rotating: str | None = None
     static_rating: float | None = None
     speed: float | None = None
+    ball_density: float | None = None
+    quasi_static: bool | None = None
     reliability: float | None = None
     viscosity: float | None = None
     oil: str | None = None
@@ -721,6 +740,22 @@ class CaseOptions:
             ) from exc
         which = "given" if given else "default, a mineral oil; --viscosity-index to give it"
         return nu100, f" (derived by ASTM D2270 from VI {index:g}, {which})"
+
+    def dynamics_arguments(self) -> dict[str, Any]:
+        """The ball dynamics of :func:`bearingload.studies.combined_bearing.solve_combined_bearing`:
+        the speed [rpm] (None: the static model, also under --quasi-static) and the ball density
+        [kg/mm^3] (None: steel)."""
+        if self.ball_density is not None and (self.speed is None or self.quasi_static):
+            raise click.UsageError(
+                "Invalid value for '--ball-density': it enters the ball dynamics at --speed, "
+                "which --quasi-static or a missing --speed leave out"
+            )
+        if self.quasi_static and self.speed is None:
+            raise click.UsageError("Invalid value for '--quasi-static': it needs --speed")
+        return {
+            "speed": None if self.quasi_static else self.speed,
+            "ball_density": None if self.ball_density is None else self.ball_density * 1e-9,
+        }
 
     def combined_arguments(self) -> dict[str, Any]:
         """The combined load as the keyword arguments of the combined studies

@@ -136,4 +136,5 @@ def combined_cases(bearings: list[Any], case: CaseOptions) -> list[Any]:
         case.radial_load,
         cage_angle=case.cage_angle_deg(bearings[0].balls),
         **case.combined_arguments(),
+        **case.dynamics_arguments(),
     )

@@ -8,7 +8,7 @@ from typing import Any
 
 import click
 
-from bearingload.cli.case_options import CaseOptions, case_options
+from bearingload.cli.case_options import DYNAMICS_PARAMS, CaseOptions, case_options
 from bearingload.cli.cases import (
     check_rotating,
     refuse_tilt_radius,
@@ -182,6 +182,8 @@ def solve(
         from bearingload.studies.loaded_bearing import collect_warnings
 
         refuse_tilt_radius(case)
+        dynamics = "the ball dynamics at --speed are solved by the combined engine (give "
+        case.refuse(DYNAMICS_PARAMS, "the radial solve", dynamics + "--axial-load 0)")
         service = None
         if case.by_hand:
             refuse_unused(case)

@@ -8,6 +8,7 @@ import click
 
 from bearingload.cli.case_options import (
     COMBINED_PARAMS,
+    DYNAMICS_PARAMS,
     SERVICE_PARAMS,
     CaseOptions,
     case_options,
@@ -31,7 +32,10 @@ SERVICE_REFUSAL = (
 
 
 @click.command(context_settings=CONTEXT)
-@case_options(omit=("cage_angle",), hidden=[n for n in SERVICE_PARAMS if n != "speed"])
+@case_options(
+    omit=("cage_angle",),
+    hidden=[*(n for n in SERVICE_PARAMS if n != "speed"), *DYNAMICS_PARAMS],
+)
 @click.option(
     "--steps",
     "-n",
@@ -116,6 +120,8 @@ def sweep(
         "an angular-contact bearing is solved by 'solve' only (docs/angular_contact.md)",
     )
     case.refuse([n for n in SERVICE_PARAMS if n != "speed"], "sweep", SERVICE_REFUSAL)
+    case.refuse(DYNAMICS_PARAMS, "sweep", "the sweep solves the static model (--speed gives "
+                "L10rh); the ball dynamics at speed are solved by 'bearingload solve'")  # fmt: skip
     if kurochkin_t is not None:
         _kurochkin(case, kurochkin_t, steps, plot, fmt, output)
         return

@@ -7,12 +7,23 @@ from typing import Any
 
 import click
 
-from bearingload.cli.case_options import COMBINED_PARAMS, CaseOptions, Clearance, case_options
+from bearingload.cli.case_options import (
+    COMBINED_PARAMS,
+    DYNAMICS_PARAMS,
+    CaseOptions,
+    Clearance,
+    case_options,
+)
 from bearingload.cli.cases import refuse_range
 from bearingload.cli.options import CONTEXT, emit, library_errors, method_option, output_options
 from bearingload.errors import InputError
 
 TABLES = ("k", "kq", "life")
+#: Why table refuses the options of the ball dynamics (its lives take --speed for hours only).
+DYNAMICS_REFUSAL = (
+    "the tables solve the static model (--speed gives the lives in hours); the ball dynamics at "
+    "speed are solved by 'bearingload solve' (docs/speed.md)"
+)
 #: Why table k and kq refuse the combined-load options.
 RADIAL_ONLY = (
     "table k and kq are the papers' radial, dimensionless design tables (k = Q_max/F_r over "
@@ -120,6 +131,7 @@ def table(
         f"table {name}",
         "an angular-contact bearing is solved by 'solve' only (docs/angular_contact.md)",
     )
+    case.refuse(DYNAMICS_PARAMS, f"table {name}", DYNAMICS_REFUSAL)
     from bearingload.bearings.angular import parse_angular
 
     if case.bearing is not None and parse_angular(case.bearing) is not None:  # as --contact-angle

@@ -156,7 +156,7 @@ def combined_report(
         from bearingload.reports.bearing import geometry_table
 
         tables.append(geometry_table(cases[0].bearing))
-    summary = _summary(records, cases[0].bearing)
+    summary = _summary(records, cases[0].bearing, getattr(cases[0].result, "model", None))
     summary = dataclasses.replace(summary, notes=[*summary.notes, *service_notes(service)])
     tables += [summary, _balls_human(cases, records)]
     return render(tables, fmt)
@@ -198,7 +198,16 @@ def _per_ball_table(cases: Sequence[CombinedCase], records: Sequence[dict[str, A
     return Table("balls", [column(k, 1.5) for k in inputs + list(PER_BALL_KEYS)], rows)
 
 
-def _summary(records: Sequence[dict[str, Any]], bearing: Any) -> Table:
+#: The note of a solve with the ball dynamics at speed (the model's name filled in).
+DYNAMICS_NOTE = (
+    "Speed: {} (Jones 1960; Harris & Kotzalas; docs/speed.md): each ball has its own inner and "
+    "outer contact angle and load (json: contact_angles_inner, contact_angles_outer, "
+    "ball_loads_inner, ball_loads_outer); the ball table shows the inner contacts; L10r takes "
+    "the inner loads for the inner ring, the outer loads for the outer ring."
+)
+
+
+def _summary(records: Sequence[dict[str, Any]], bearing: Any, dynamics: str | None = None) -> Table:
     keys = _present(records, ANSWER_KEYS)
     if len({r["clearance"] for r in records}) > 1:
         keys.insert(0, "clearance")
@@ -207,6 +216,8 @@ def _summary(records: Sequence[dict[str, Any]], bearing: Any) -> Table:
     notes = [*NOTES, STATIC_NOTE, *set_note(bearing)]
     if records[0].get("contact_angle") is not None:
         notes[1], notes[len(NOTES)] = ANGULAR_NOTE, ANGULAR_STATIC_NOTE
+    if dynamics is not None:
+        notes.append(DYNAMICS_NOTE.format(dynamics))
     return Table(_title(records), columns, rows, notes)
 
 
@@ -288,14 +299,28 @@ def _document(cases: Sequence[CombinedCase], records: Sequence[dict[str, Any]]) 
     docs = []
     for c, r in zip(cases, records, strict=True):
         res = c.result
+        model = "3-D ring equilibrium, deep-groove ball bearing (ISO/TS 16281)"
+        dynamics = getattr(res, "model", None)  # at speed (models.high_speed)
         docs.append(
             dict(r)
             | {
-                "model": "3-D ring equilibrium, deep-groove ball bearing (ISO/TS 16281)",
+                "model": model if dynamics is None else f"{model}; {dynamics}",
                 "ball_angles": res.ball_angles,
                 "contact_angles": res.contact_angles,
+                "contact_angles_inner": getattr(res, "contact_angles_inner", None)
+                if dynamics
+                else res.contact_angles,
+                "contact_angles_outer": getattr(res, "contact_angles_outer", None)
+                if dynamics
+                else res.contact_angles,
                 "ball_approaches": res.ball_approaches,
                 "ball_loads": res.ball_loads,
+                "ball_loads_inner": getattr(res, "ball_loads_inner", None)
+                if dynamics
+                else res.ball_loads,
+                "ball_loads_outer": getattr(res, "ball_loads_outer", None)
+                if dynamics
+                else res.ball_loads,
                 "stiffness_matrix": res.stiffness_matrix.tolist(),
                 "warnings": list(c.warnings),
             }

@@ -192,6 +192,11 @@ QUANTITIES: dict[str, Quantity] = {
         Quantity("ball_approaches", "approach delta", "mm", display=_UM),
         Quantity("ball_loads", "load Q", "N"),
         Quantity("contact_angles", "contact angle", "°"),
+        # per ball, inner and outer contact (they differ with the ball dynamics at speed)
+        Quantity("contact_angles_inner", "inner contact angle", "°"),
+        Quantity("contact_angles_outer", "outer contact angle", "°"),
+        Quantity("ball_loads_inner", "inner load Q_i", "N"),
+        Quantity("ball_loads_outer", "outer load Q_o", "N"),
         # studies: work-precision (bearingload accuracy) and stability (bearingload stability)
         Quantity("setting", "setting", "", None),
         Quantity("cases", "cases", "", None),

@@ -64,6 +64,8 @@ def solve_combined_bearing(
     dynamic_rating: float | None = None,
     moment_cross: Any = None,
     tilt_radius: Any = None,
+    speed: Any = None,
+    ball_density: Any = None,
 ) -> list[CombinedCase]:
     """Solve each resolved bearing (one per clearance) under F_r, F_a and the moments; arrays of
     loads, cage angles and moments solve many cases in one call (each
@@ -90,6 +92,10 @@ def solve_combined_bearing(
     tilt_radius : {"groove", "pitch"}, float or ndarray, optional
         Lever of the tilt, see :mod:`bearingload.bearings.tilt`; None: groove; an array: the
         lever of each case. [mm]
+    speed, ball_density : float, optional
+        Shaft speed [rpm] of the inner ring: the balls' centrifugal force and gyroscopic
+        moment are included (:mod:`bearingload.models.high_speed`); None: the static model.
+        Ball density [kg/mm^3], default bearing steel.
 
     Raises
     ------
@@ -104,7 +110,7 @@ def solve_combined_bearing(
                  else tilt_lever(tilt_radius, b.pitch_diameter))  # fmt: skip
         r = solve_on_bearing(b, load, axial_load, cage_angle=cage_angle, moment=moment,
                              misalignment=misalignment, moment_cross=moment_cross,
-                             tilt_radius=lever)  # fmt: skip
+                             tilt_radius=lever, speed=speed, ball_density=ball_density)  # fmt: skip
         out.append(_combined_case(b, r, load, axial_load, moment, misalignment, moment_cross,
                                   lever, rotating, dynamic_rating))  # fmt: skip
     return out
@@ -218,6 +224,8 @@ def solve_on_bearing(
     clearance: Any = None,
     moment_cross: Any = None,
     tilt_radius: Any = None,
+    speed: Any = None,
+    ball_density: Any = None,
 ) -> CombinedDistribution:
     """The 3-D ring equilibrium of one resolved ball bearing, at one or many cage angles (or
     clearances).
@@ -244,6 +252,9 @@ def solve_on_bearing(
     tilt_radius : float, optional
         Lever of the tilt (:func:`bearingload.bearings.tilt.tilt_lever`); None: the solver's
         R_i. [mm]
+    speed, ball_density : float, optional
+        Inner ring speed [rpm]: the ball dynamics of :mod:`bearingload.models.high_speed`
+        (outer-raceway control) are included; ball density [kg/mm^3], default steel.
 
     Raises
     ------
@@ -268,10 +279,7 @@ def solve_on_bearing(
             "the combined load needs the ball geometry: give a bearing designation, or "
             "the ball and pitch diameters",
         )
-    r = solve_combined(
-        b.balls,
-        load,
-        axial_load,
+    common = dict(
         ball_diameter=b.ball_diameter,
         pitch_diameter=b.pitch_diameter,
         f_i=b.f_i,
@@ -282,11 +290,15 @@ def solve_on_bearing(
         misalignment=misalignment,
         modulus=b.modulus,
         poisson=b.poisson,
-        stiffness=b.stiffness if b.stiffness_given else None,
         tilt_radius=tilt_radius,
         moment_cross=0.0 if moment_cross is None else moment_cross,
         contact_angle=b.contact_angle,
     )
+    if speed is None:
+        stiffness = b.stiffness if b.stiffness_given else None
+        r = solve_combined(b.balls, load, axial_load, stiffness=stiffness, **common)
+    else:
+        r = _at_speed(b, load, axial_load, speed, ball_density, common)
     tilt = float(np.max(ring_tilt(r)))
     cross = moment_cross is not None and bool(np.any(np.asarray(moment_cross) != 0))
     tilted = "moment" if moment is not None and misalignment is None else None
@@ -301,6 +313,25 @@ def solve_on_bearing(
             "would ride over the groove shoulders, which the model does not describe",
         )
     return r
+
+
+def _at_speed(
+    b: ResolvedBearing, load: Any, axial_load: Any, speed: Any, density: Any, common: dict
+) -> CombinedDistribution:
+    """solve_on_bearing with the ball dynamics (:func:`bearingload.models.high_speed.
+    solve_high_speed`): the two contacts need the Hertz stiffness of the ball geometry."""
+    from bearingload.models.high_speed import STEEL_DENSITY, solve_high_speed
+
+    if b.stiffness_given:
+        raise InputError(
+            "speed",
+            "the ball dynamics need each contact's Hertz stiffness from the ball geometry, not a "
+            "given ball stiffness: leave out the stiffness, or ask for the static model "
+            "(speed None)",
+        )
+    density = STEEL_DENSITY if density is None else density
+    return solve_high_speed(b.balls, load, axial_load, speed=speed, ball_density=density,
+                            **common)  # fmt: skip
 
 
 def life_figures(
@@ -326,10 +357,13 @@ def life_figures(
 
 
 def reference_lives(b: ResolvedBearing, r: CombinedDistribution, rotating: str, c_r: float) -> Any:
-    """L10r of every case of ``r`` (ISO/TS 16281:2008, 4.3), the contact ratings from C_r. [10^6 rev]"""
+    """L10r of every case of ``r`` (ISO/TS 16281:2008, 4.3), the contact ratings from C_r; at
+    speed the inner ring's equivalent load from each ball's inner contact load, the outer
+    ring's from its outer one. [10^6 rev]"""
     from bearingload.studies.reference_life import ball_reference_life
 
-    return ball_reference_life(b, r.ball_loads, rotating, c_r)
+    outer = getattr(r, "ball_loads_outer", None)  # at speed: each ball's outer contact load
+    return ball_reference_life(b, r.ball_loads, rotating, c_r, outer_loads=outer)
 
 
 def basic_lives(b: ResolvedBearing, c_r: float, fr: Any, fa: Any) -> tuple[Any, Any]:

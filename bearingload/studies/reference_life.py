@@ -19,15 +19,18 @@ if TYPE_CHECKING:
     from bearingload.studies.loaded_bearing import LoadedCase
 
 
-def ball_reference_life(b: ResolvedBearing, ball_loads: Any, rotating: str, c_r: float) -> Any:
+def ball_reference_life(
+    b: ResolvedBearing, ball_loads: Any, rotating: str, c_r: float, outer_loads: Any = None
+) -> Any:
     """L10r (ISO/TS 16281:2008, 4.3) of the ball loads Q_j [N] (last axis the z balls) of a ball
-    bearing with known D_w, d_m, f_i, f_o, the contact ratings from C_r [N]. [10^6 rev]"""
+    bearing with known D_w, d_m, f_i, f_o, the contact ratings from C_r [N]; ``outer_loads``:
+    the outer contacts' loads where they differ (ball dynamics at speed). [10^6 rev]"""
     from bearingload.bearings.iso16281 import contact_ratings, reference_rating_life
 
     assert b.ball_diameter and b.pitch_diameter and b.f_i and b.f_o
     q_ci, q_ce = contact_ratings(c_r, b.balls, b.ball_diameter, b.pitch_diameter, b.f_i, b.f_o,
                                  contact_angle=b.contact_angle or 0.0)  # fmt: skip
-    return reference_rating_life(ball_loads, q_ci, q_ce, rotating)
+    return reference_rating_life(ball_loads, q_ci, q_ce, rotating, outer_loads=outer_loads)
 
 
 def has_reference_life(b: ResolvedBearing, dynamic_rating: float | None = None) -> bool:

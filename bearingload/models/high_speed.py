@@ -1,0 +1,700 @@
+"""Ball dynamics at speed: centrifugal force and gyroscopic moment of every ball, outer-raceway
+control (Jones 1960; Harris & Kotzalas, *Rolling Bearing Analysis*, 5th ed., vol. 2 "Advanced
+Concepts of Bearing Technology", ch. 2 "Bearing component motions and speeds" and ch. 3 "High-speed
+operation: ball and roller dynamics").
+
+Units: N, mm, kg, s (the shaft speed in rpm at the input, rad/s inside); ball density in kg/mm^3
+(bearing steel 7.85e-6; silicon nitride 3.2e-6).
+
+Model (one ball ``j`` at ``phi_j``; the geometry, loads and conventions of
+:func:`bearingload.models.combined.solve_combined`, whose static answer is the start):
+
+* The outer groove curvature centre is fixed; the inner one lies ``rho_j`` radially outward and
+  ``u_j`` axially from it (``rho_j = A - G_r/2 + x cos phi_j + y sin phi_j``, ``u_j = a +
+  R_i (theta cos phi_j + theta_c sin phi_j)``; one-sided angular contact: ``u'_j = max(u_j, 0)``,
+  as in the static model). The ball centre is no longer on the line joining them: it lies at
+  ``(X_1, X_2) = (r'_o + delta_o)(sin alpha_o, cos alpha_o)`` (axial, radial) from the outer
+  centre, ``r'_o = (f_o - 1/2) D_w``; the unknowns of each ball are ``delta_o`` and
+  ``alpha_o``. The inner contact follows: ``(u' - X_1, rho - X_2) = (r'_i + delta_i)(sin alpha_i,
+  cos alpha_i)``. ``Q_i = K_i max(delta_i, 0)^1.5``, ``Q_o = K_o max(delta_o, 0)^1.5``.
+* Kinematics, outer-raceway control (Jones; Harris & Kotzalas vol. 2, ch. 2): the ball rolls
+  without spinning on the outer raceway; with ``gamma = D_w/d_m`` and the inner ring at
+  ``omega`` (outer ring still) the attitude angle is ``tan beta = sin alpha_o / (cos alpha_o +
+  gamma)`` and, with ``c_o = (cos alpha_o + tan beta sin alpha_o)/(1 + gamma cos alpha_o)`` and
+  ``c_i = (cos alpha_i + tan beta sin alpha_i)/(1 - gamma cos alpha_i)``, the orbit (cage) speed
+  ``omega_c = omega c_o/(c_o + c_i)`` and the ball's spin ``omega_R = omega/(gamma cos beta
+  (c_o + c_i))``. (Both contacts at alpha: ``omega_c = omega (1 - gamma cos alpha)/2``, the
+  rolling speeds.) Each ball's speeds follow its own two contact angles.
+* Forces on the ball (Harris & Kotzalas vol. 2, ch. 3, with lambda_o = 2, lambda_i = 0): the
+  centrifugal force ``F_c = m d_m omega_c^2 / 2`` outward; the gyroscopic moment ``M_g = J
+  omega_R omega_c sin beta``, ``J = m D_w^2/10``, held by friction at the outer contact only,
+  a force ``2 M_g / D_w`` along the outer raceway. Equilibrium, axial and radial::
+
+      Q_i sin a_i - Q_o sin a_o + (2 M_g/D_w) cos a_o = 0
+      Q_i cos a_i - Q_o cos a_o - (2 M_g/D_w) sin a_o + F_c = 0
+
+* The inner ring sees the inner contacts only (lambda_i = 0): ``F_a = sum Q_i sin a_i``,
+  ``F_r`` along ``x``: ``sum Q_i cos a_i cos phi_j``, the moments with the lever ``R_i``, as in
+  the static model.
+* Hertz: ``K_i`` and ``K_o`` of each ball are the exact Hertz stiffnesses of its inner and outer
+  contact at its own angle (:func:`bearingload.contact.hertz.ball_stiffness` at the pitch
+  diameter ``d_m / cos alpha``, the static model's curvature rule), a Chebyshev interpolant in
+  ``cos alpha`` (24 nodes, once per geometry) inside the equations; at speed 0 (alpha_i =
+  alpha_o) their series value is the static model's ``K(alpha)``.
+* Not modelled: ring expansion, cage and lubricant forces, the inner contact's friction; the
+  ring rotating is the inner one.
+
+Numerics. For given ring positions each ball's two equations are solved by Newton, all balls of
+all cases at once, with the Jacobians from the complex step (exact to rounding); the ring
+equilibrium by damped Newton on ``(x, y, a, R_i theta, R_i theta_c)``, the tangent of the ball
+forces by the implicit function theorem (the ball equations eliminated per ball). The components
+the static model holds by symmetry are held (the speed terms keep those symmetries: ``M_g`` is
+odd in ``alpha_o``). A case stops when each applied component is balanced to ``TOLERANCE`` of
+the largest applied load and every ball to ``BALL_TOLERANCE`` of its forces; left above
+``ACCEPT``, :class:`~bearingload.errors.ConvergenceError` names its inputs. At speed 0 the
+answer is the static one (no step is taken from it).
+"""
+
+from __future__ import annotations
+
+import dataclasses
+import math
+from dataclasses import dataclass
+from typing import Any
+
+import numpy as np
+
+from bearingload import validate
+from bearingload.constants import STEEL_MODULUS
+from bearingload.errors import ConvergenceError, InputError
+from bearingload.models import combined as _combined
+from bearingload.models.combined import CombinedDistribution
+
+__all__ = ["HighSpeedDistribution", "solve_high_speed", "STEEL_DENSITY", "MAX_SPEED_PITCH",
+           "MODEL"]  # fmt: skip
+
+#: Bearing steel (100Cr6) density. [kg/mm^3]
+STEEL_DENSITY = 7.85e-6
+#: Largest n d_m accepted (n the shaft speed [rpm], d_m [mm]). [mm/min]
+MAX_SPEED_PITCH = 2.0e6
+#: The model, as the outputs name it.
+MODEL = "ball dynamics: centrifugal force and gyroscopic moment, outer-raceway control"
+#: Relative residual of the ring equilibrium (of the largest applied load). [-]
+TOLERANCE = 1e-12
+#: Relative residual of each ball's equations (of the sum of its force magnitudes). [-]
+BALL_TOLERANCE = 1e-13
+#: Largest ring residual accepted at the end. [-]
+ACCEPT = 1e-9
+#: Ring Newton steps per stiffness update, ball Newton steps per ring position, updates. [-]
+RING_ITERATIONS = 200
+BALL_ITERATIONS = 30
+STIFFNESS_UPDATES = 20
+#: Rounding of an approach over its length's (of the ball tolerance). [-]
+_ROUND = 16.0 * float(np.finfo(float).eps) / BALL_TOLERANCE
+#: Complex step. [-]
+_H = 1e-30
+#: N mm per kg mm^2/s^2 (forces from kg, mm, s). [-]
+_KG_MM = 1e-3
+
+
+@dataclass(frozen=True)
+class HighSpeedDistribution(CombinedDistribution):
+    """The combined-load answer with each ball's dynamics; arrays as in CombinedDistribution.
+
+    ``contact_angles``, ``ball_loads`` and ``ball_stiffnesses`` are the inner contacts' (those
+    the inner ring sees); ``stiffness_matrix`` the tangent of the ring forces with the ball
+    equations eliminated (not symmetric at speed: the gyroscopic terms have no potential).
+
+    Attributes
+    ----------
+    speed : ndarray
+        Shaft (inner ring) speed n. [rpm]
+    ball_density : ndarray
+        [kg/mm^3]
+    contact_angles_inner, contact_angles_outer : ndarray (..., z)
+        alpha_i, alpha_o. [°]
+    ball_loads_inner, ball_loads_outer : ndarray (..., z)
+        Q_i, Q_o. [N]
+    ball_stiffnesses_outer : ndarray (..., z)
+        K_o (``ball_stiffnesses`` holds K_i). [N/mm^1.5]
+    approaches_inner, approaches_outer : ndarray (..., z)
+        delta_i, delta_o (negative: a gap). [mm]
+    ball_offsets_axial, ball_offsets_radial : ndarray (..., z)
+        X_1, X_2: the ball centre from the outer groove curvature centre. [mm]
+    orbit_speeds, spin_speeds : ndarray (..., z)
+        omega_c (cage) and omega_R of every ball. [rad/s]
+    attitude_angles : ndarray (..., z)
+        beta. [°]
+    centrifugal_forces : ndarray (..., z)
+        F_c. [N]
+    gyroscopic_moments : ndarray (..., z)
+        M_g. [N mm]
+    model : str
+        :data:`MODEL`.
+    """
+
+    speed: Any = None
+    ball_density: Any = None
+    contact_angles_inner: Any = None
+    contact_angles_outer: Any = None
+    ball_loads_inner: Any = None
+    ball_loads_outer: Any = None
+    ball_stiffnesses_outer: Any = None
+    approaches_inner: Any = None
+    approaches_outer: Any = None
+    ball_offsets_axial: Any = None
+    ball_offsets_radial: Any = None
+    orbit_speeds: Any = None
+    spin_speeds: Any = None
+    attitude_angles: Any = None
+    centrifugal_forces: Any = None
+    gyroscopic_moments: Any = None
+    model: str = MODEL
+
+
+@dataclass
+class _Set:
+    """Constants of every ball (n, z) or per case (n, 1), physical units."""
+
+    ri: np.ndarray  # r'_i = (f_i - 1/2) D_w [mm]
+    ro: np.ndarray  # r'_o
+    dw: np.ndarray
+    dm: np.ndarray
+    omega: np.ndarray  # [rad/s]
+    mass: np.ndarray  # [kg]
+    ki: np.ndarray  # K_i at the Chebyshev nodes of cos(alpha) (n, 1, NODES) [N/mm^1.5]
+    ko: np.ndarray
+
+    def take(self, idx: np.ndarray) -> _Set:
+        return _Set(*(getattr(self, f.name)[idx] for f in dataclasses.fields(self)))
+
+
+def ball_terms(b: _Set, rho: Any, u: Any, do: Any, ao: Any) -> tuple[Any, ...]:  # complex-capable
+    """Every quantity of the balls at (rho, u) with the unknowns (delta_o, alpha_o).
+
+    Returns (g1, g2, Q_i, Q_o, sin a_i, cos a_i, F_c, M_g, omega_c, omega_R, beta, delta_i,
+    ring axial force, ring radial force) [N, mm, rad/s]; the ring forces are those the ball
+    puts on the inner ring's equilibrium (``Q_i sin a_i``, ``Q_i cos a_i``)."""
+    lo = b.ro + do
+    so, co = np.sin(ao), np.cos(ao)
+    e1 = u - lo * so
+    e2 = rho - lo * co
+    li = np.sqrt(e1 * e1 + e2 * e2)
+    di = li - b.ri
+    si, ci = e1 / li, e2 / li
+    qi = _stiffness(b.ki, ci) * _power(di)
+    qo = _stiffness(b.ko, co) * _power(do)
+    gamma = b.dw / b.dm
+    tb = so / (co + gamma)
+    beta = np.arctan(tb)
+    c_o = (co + tb * so) / (1.0 + gamma * co)
+    c_i = (ci + tb * si) / (1.0 - gamma * ci)
+    wc = b.omega * c_o / (c_o + c_i)
+    wr = b.omega / (gamma * np.cos(beta) * (c_o + c_i))
+    fc = 0.5 * b.mass * b.dm * wc * wc * _KG_MM
+    mg = 0.1 * b.mass * b.dw * b.dw * wr * wc * np.sin(beta) * _KG_MM
+    fr = 2.0 * mg / b.dw
+    g1 = qi * si - qo * so + fr * co
+    g2 = qi * ci - qo * co - fr * so + fc
+    return g1, g2, qi, qo, si, ci, fc, mg, wc, wr, beta, di, qi * si, qi * ci
+
+
+def _stiffness(nodes: np.ndarray, cos_alpha: Any) -> Any:
+    """K(cos alpha) from its values at the Chebyshev nodes (barycentric interpolation, a
+    rational function: complex-step safe). Below cos = 0.05 (a loose ball pointing across the
+    groove: no load) the value at 0.05. [N/mm^1.5]"""
+    c = np.where(np.real(cos_alpha) < 0.05, 0.05, cos_alpha)
+    terms = _NODE_W / ((2.0 * c - 1.0)[..., None] - _NODE_X)
+    return (terms * nodes).sum(-1) / terms.sum(-1)
+
+
+def _power(d: Any) -> Any:
+    """max(d, 0)^1.5, complex-step safe (0j ** 1.5 is NaN in numpy)."""
+    on = np.real(d) > 0
+    return np.where(on, np.where(on, d, 1.0) ** 1.5, 0.0)
+
+
+def _line_start(b: _Set, rho: np.ndarray, u: np.ndarray) -> tuple[np.ndarray, np.ndarray]:
+    """The static position: the ball on the line of its groove centres, the approach shared by
+    the contacts as their compliances, delta_o = w delta, w = K_o^-2/3 / (K_i^-2/3 + K_o^-2/3)."""
+    r = np.maximum(rho, 0.0)
+    d = np.hypot(r, u)
+    cos_a = r / np.where(d > 0, d, 1.0)
+    ci, co = _stiffness(b.ki, cos_a) ** (-2.0 / 3.0), _stiffness(b.ko, cos_a) ** (-2.0 / 3.0)
+    w = co / (ci + co)
+    return w * (d - b.ri - b.ro), np.arctan2(u, r)
+
+
+def _solve_balls(
+    b: _Set, rho: np.ndarray, u: np.ndarray, do: np.ndarray, ao: np.ndarray
+) -> tuple[np.ndarray, np.ndarray, np.ndarray]:
+    """Newton on every ball's two equations at the ring position (rho, u), from (do, ao).
+    Cases at speed 0 keep the static (line) position. Returns (do, ao, converged (n, z))."""
+    moving = np.broadcast_to(b.omega > 0, do.shape)
+    do, ao = do.copy(), ao.copy()
+    ok = ~moving
+    for _ in range(BALL_ITERATIONS):
+        t = ball_terms(b, rho, u, do, ao)
+        norm, ok = _ball_norm(b, t, do, moving)
+        if ok.all():
+            break
+        hd = _H * (b.ri + b.ro)
+        td = ball_terms(b, rho, u, do + 1j * hd, ao)
+        ta = ball_terms(b, rho, u, do, ao + 1j * _H)
+        j11, j21 = np.imag(td[0]) / hd, np.imag(td[1]) / hd
+        j12, j22 = np.imag(ta[0]) / _H, np.imag(ta[1]) / _H
+        det = j11 * j22 - j12 * j21
+        with np.errstate(all="ignore"):
+            sd = -(j22 * t[0] - j12 * t[1]) / det
+            sa = -(-j21 * t[0] + j11 * t[1]) / det
+        go = ~ok & np.isfinite(sd) & np.isfinite(sa)
+        sd, sa = np.where(go, sd, 0.0), np.where(go, sa, 0.0)
+        cut = np.minimum(1.0, 0.2 / np.maximum(np.abs(sa), 1e-300))  # the Newton direction kept
+        sd, sa = sd * cut, sa * cut
+        lam = np.ones_like(do)
+        pending = go.copy()
+        size = np.hypot(t[0], t[1])  # the line search compares the residual itself
+        for _ in range(12):  # backtracking: the step, halved until the residual falls
+            trial_d = np.where(do + lam * sd > 0.1 * do, do + lam * sd, 0.1 * do)
+            trial_a = ao + lam * sa
+            t2 = ball_terms(b, rho, u, trial_d, trial_a)
+            ok2 = _ball_norm(b, t2, trial_d, moving)[1]
+            n2 = np.hypot(t2[0], t2[1])
+            better = pending & ((n2 < (1.0 - 1e-4 * lam) * size) | ok2)
+            do, ao = np.where(better, trial_d, do), np.where(better, trial_a, ao)
+            pending &= ~better
+            if not pending.any():
+                break
+            lam = np.where(pending, 0.5 * lam, lam)
+        if pending.all():
+            break
+    t = ball_terms(b, rho, u, do, ao)
+    ok = _ball_norm(b, t, do, moving)[1]
+    return do, ao, ok
+
+
+def _ball_norm(
+    b: _Set, t: tuple[Any, ...], do: np.ndarray, moving: np.ndarray
+) -> tuple[np.ndarray, np.ndarray]:
+    """The balls' residual over their force size, and which balls are balanced (those at
+    speed 0 are, on their line)."""
+    g1, g2, qi, qo, fc, mg = t[0], t[1], t[2], t[3], t[6], t[7]
+    size = np.abs(qi) + np.abs(qo) + np.abs(fc) + 2.0 * np.abs(mg) / b.dw
+    # the rounding of the approaches, differences of lengths up to r' + delta
+    di = np.abs(t[11])
+    with np.errstate(all="ignore"):
+        size = size + _ROUND * np.nan_to_num(qi * (di + b.ri) / di + qo * (do + b.ro) / do)
+        norm = np.hypot(g1, g2) / size
+    norm = np.where(np.isfinite(norm), norm, np.inf)
+    return norm, ~moving | (norm <= BALL_TOLERANCE)
+
+
+def _ring_forces(
+    b: _Set, rho: np.ndarray, u: np.ndarray, do: np.ndarray, ao: np.ndarray, one_sided: np.ndarray
+) -> tuple[Any, ...]:
+    """The ball forces on the ring (axial, radial) (n, z) and their total derivatives by
+    (rho, u) with the ball equations eliminated: ((dFa/drho, dFa/du), (dFr/drho, dFr/du))."""
+    up = np.where(one_sided[:, None], np.maximum(u, 0.0), u)
+    dup = np.where(one_sided[:, None], (u > 0).astype(float), 1.0)
+    t0 = ball_terms(b, rho, up, do, ao)
+    hd = hr = hu = _H * (b.ri + b.ro)  # a length of the problem (complex step: any tiny step)
+    cols = [
+        ball_terms(b, rho, up, do + 1j * hd, ao),
+        ball_terms(b, rho, up, do, ao + 1j * _H),
+        ball_terms(b, rho + 1j * hr, up, do, ao),
+        ball_terms(b, rho, up + 1j * hu, do, ao),
+    ]
+    steps = (hd, _H, hr, hu)
+    # rows: g1, g2, Fa, Fr; columns: do, ao, rho, u
+    d = [[np.imag(cols[k][r]) / steps[k] for k in range(4)] for r in (0, 1, 12, 13)]
+    moving = np.broadcast_to(b.omega > 0, do.shape)
+    det = d[0][0] * d[1][1] - d[0][1] * d[1][0]
+    with np.errstate(all="ignore"):
+        inv = np.stack([[d[1][1], -d[0][1]], [-d[1][0], d[0][0]]]) / det
+    out = np.zeros((2, 2) + do.shape)
+    for r in (2, 3):
+        for c, chain in ((2, 1.0), (3, dup)):
+            # dF/dp - dF/dX (dg/dX)^-1 dg/dp
+            dxp = [inv[k, 0] * d[0][c] + inv[k, 1] * d[1][c] for k in range(2)]
+            total = d[r][c] - (d[r][0] * dxp[0] + d[r][1] * dxp[1])
+            static = _static_derivative(b, rho, up, r, c)
+            out[r - 2, c - 2] = np.where(moving, total, static) * chain
+    return t0[12], t0[13], out, t0
+
+
+def _static_derivative(b: _Set, rho: np.ndarray, up: np.ndarray, r: int, c: int) -> np.ndarray:
+    """d(F_a or F_r)/d(rho or u) of a ball at speed 0 (on its line, K in series)."""
+    h = _H * (b.ri + b.ro)
+    rr = rho + 1j * h if c == 2 else rho + 0j
+    uu = up + 1j * h if c == 3 else up + 0j
+    rp = np.where(np.real(rr) > 0, rr, 0.0)
+    d = np.sqrt(rp * rp + uu * uu)
+    with np.errstate(all="ignore"):
+        cos_a = rp / np.where(np.real(d) > 0, d, 1.0)
+    k = (_stiffness(b.ki, cos_a) ** (-2.0 / 3.0) + _stiffness(b.ko, cos_a) ** (-2.0 / 3.0)) ** -1.5
+    delta = d - b.ri - b.ro
+    q = k * _power(delta)
+    with np.errstate(all="ignore"):
+        f = q * (uu if r == 2 else rp) / d
+    return np.nan_to_num(np.imag(f) / h)
+
+
+def _stiffness_nodes(geo: Any, e: np.ndarray, nu: np.ndarray) -> tuple[np.ndarray, np.ndarray]:
+    """K_i and K_o of every case at the Chebyshev nodes of cos(alpha) (n, 1, NODES): exact
+    Hertz (:func:`bearingload.contact.hertz.ball_stiffness` at the pitch diameter
+    d_m / cos alpha, the static model's curvature rule), once per distinct geometry (cached,
+    the cache changes no bit). [N/mm^1.5]"""
+    from bearingload.contact.hertz import ball_stiffness
+
+    params = np.stack([geo.D_w, geo.d_m, geo.f_i, geo.f_o, e, nu], axis=1)
+    rows_i, rows_o = [], []
+    for key in map(tuple, params.tolist()):
+        if key not in _NODE_CACHE:
+            dw, dm, fi, fo, ee, nn = key
+            k = ball_stiffness(dw, dm / _NODE_COS, fi, fo, ee, nn)
+            _NODE_CACHE[key] = (np.asarray(k.inner, float), np.asarray(k.outer, float))
+            while len(_NODE_CACHE) > _combined.SETUP_CACHE_SIZE:
+                _NODE_CACHE.pop(next(iter(_NODE_CACHE)))
+        k_i, k_o = _NODE_CACHE[key]
+        rows_i.append(k_i)
+        rows_o.append(k_o)
+    return np.stack(rows_i)[:, None, :], np.stack(rows_o)[:, None, :]
+
+
+_NODE_X = _combined._NODE_X
+_NODE_W = _combined._NODE_W
+_NODE_COS = _combined._NODE_COS
+_NODE_CACHE: dict[tuple[float, ...], tuple[np.ndarray, np.ndarray]] = {}
+
+
+def _check_speed(speed: Any, density: Any, dm: Any) -> tuple[np.ndarray, np.ndarray]:
+    n = validate.finite("speed", speed)
+    if np.any(n < 0):
+        raise InputError("speed", "must be >= 0 rpm (the inner ring's speed)")
+    rho = validate.positive("ball_density", density, "kg/mm^3")
+    if np.any(rho > 1e-4):
+        raise InputError(
+            "ball_density", "must be in kg/mm^3 (steel 7.85e-6, silicon nitride 3.2e-6), below 1e-4"
+        )
+    with np.errstate(over="ignore"):
+        too_fast = n * np.asarray(dm, dtype=float) > MAX_SPEED_PITCH
+    if np.any(too_fast):
+        raise InputError(
+            "speed",
+            f"n d_m must be at most {MAX_SPEED_PITCH:.0e} mm/min for the ball-dynamics model "
+            f"(n = {float(np.max(n)):.6g} rpm; beyond, ring expansion, cage and lubricant forces "
+            "it leaves out matter)",
+        )
+    return n, rho
+
+
+def solve_high_speed(
+    balls: int,
+    radial_load: Any,
+    axial_load: Any = 0.0,
+    *,
+    speed: Any,
+    ball_density: Any = STEEL_DENSITY,
+    ball_diameter: Any,
+    pitch_diameter: Any,
+    f_i: Any = 0.52,
+    f_o: Any = 0.53,
+    clearance: Any = 0.0,
+    cage_angle: Any = 0.0,
+    moment: Any = None,
+    misalignment: Any = None,
+    modulus: Any = STEEL_MODULUS,
+    poisson: Any = 0.3,
+    tilt_radius: Any = None,
+    moment_cross: Any = 0.0,
+    contact_angle: Any = None,
+) -> HighSpeedDistribution:
+    """Equilibrium of the inner ring turning at ``speed`` with every ball's centrifugal force and
+    gyroscopic moment (outer-raceway control); see the module docstring.
+
+    Parameters as :func:`bearingload.models.combined.solve_combined` (a constant ``stiffness``
+    is not taken: the two contacts need their own Hertz stiffness), and
+
+    speed : array_like
+        Shaft speed n of the inner ring, >= 0, n d_m <= :data:`MAX_SPEED_PITCH`. [rpm]
+    ball_density : array_like, default :data:`STEEL_DENSITY`
+        Density of the balls. [kg/mm^3]
+
+    Raises
+    ------
+    InputError
+        As solve_combined; a speed or density outside its range.
+    ConvergenceError
+        A ball or the ring left unbalanced; the message names the inputs of the cases.
+
+    At speed the outer contacts take the centrifugal force (7205B-sized, 20 000 rpm, thrust):
+
+    >>> r = solve_high_speed(13, 0.0, 1000.0, speed=20000.0, ball_diameter=7.938,
+    ...                      pitch_diameter=38.5, contact_angle=40.0)
+    >>> bool((r.ball_loads_outer > r.ball_loads_inner).all())
+    True
+    """
+    n_rpm, density = _check_speed(speed, ball_density, pitch_diameter)
+    validate.broadcast_shape({"radial_load": radial_load, "speed": n_rpm,
+                              "ball_density": density})  # fmt: skip
+    wide = np.broadcast_shapes(np.shape(radial_load), n_rpm.shape, density.shape)
+    if wide != np.shape(radial_load):
+        radial_load = np.broadcast_to(np.asarray(radial_load, dtype=float), wide)
+    static = _combined.solve_combined(
+        balls, radial_load, axial_load, ball_diameter=ball_diameter,
+        pitch_diameter=pitch_diameter, f_i=f_i, f_o=f_o, clearance=clearance,
+        cage_angle=cage_angle, moment=moment, misalignment=misalignment, modulus=modulus,
+        poisson=poisson, tilt_radius=tilt_radius, moment_cross=moment_cross,
+        contact_angle=contact_angle,
+    )  # fmt: skip
+    shape = np.shape(static.x)
+    z = static.balls
+    given = {"balls": z, "radial_load": radial_load, "axial_load": axial_load,
+             "moment": 0.0 if moment is None else moment, "moment_cross": moment_cross,
+             "clearance": clearance, "cage_angle": cage_angle, "speed": n_rpm}  # fmt: skip
+    if misalignment is not None:
+        given["misalignment"] = misalignment
+    flat = {k: np.broadcast_to(np.asarray(v, dtype=float), shape).ravel()
+            for k, v in given.items() if k != "balls"}  # fmt: skip
+    case_arrays = {
+        name: np.broadcast_to(np.asarray(getattr(static, name), dtype=float), shape).ravel()
+        for name in ("x", "y", "axial", "tilt", "tilt_cross", "tilt_radius")
+    }
+    angles = np.broadcast_to(static.contact_angles, shape + (z,)).reshape(-1, z)
+    d = np.broadcast_arrays(
+        *(np.asarray(v, dtype=float) for v in (ball_diameter, pitch_diameter, f_i, f_o,
+                                               modulus, poisson, density)),
+        np.zeros(()) if contact_angle is None else np.asarray(contact_angle, dtype=float),
+        np.zeros(shape),
+    )  # fmt: skip
+    dw, dm, fi, fo, e, nu, rho_b, alpha_d = (np.broadcast_to(a, shape).ravel() for a in d[:8])
+    geo = (_combined._geometry(dw, dm, fi, fo, flat["clearance"]) if contact_angle is None
+           else _combined._angular_geometry(dw, dm, fi, fo, alpha_d))  # fmt: skip
+    geo = dataclasses.replace(geo, R_i=case_arrays["tilt_radius"])
+    one_sided = np.full(dw.shape, contact_angle is not None)
+    with np.errstate(all="ignore"):
+        out = _solve(z, geo, flat, case_arrays, angles, (e, nu, rho_b), one_sided,
+                     misalignment is not None)  # fmt: skip
+    return _result(static, shape, z, geo, flat, density, out, one_sided, misalignment)
+
+
+@dataclass
+class _Ring:
+    """The ring problem of n cases (physical units; tilts as R_i theta [mm])."""
+
+    b: _Set
+    c: np.ndarray  # cos phi_j (n, z)
+    s: np.ndarray
+    base: np.ndarray  # A - G_r/2 (n,)
+    f: np.ndarray  # applied generalised forces (n, 5) [N]
+    f_ref: np.ndarray  # (n,) [N]
+    held: np.ndarray  # (n, 5) bool
+    one_sided: np.ndarray  # (n,) bool
+
+    def take(self, idx: np.ndarray) -> _Ring:
+        out = {f.name: getattr(self, f.name) for f in dataclasses.fields(self)}
+        return _Ring(out.pop("b").take(idx), **{k: v[idx] for k, v in out.items()})
+
+
+@dataclass
+class _State:
+    """Every ball and the ring's forces at a position v (n, 5)."""
+
+    do: np.ndarray
+    ao: np.ndarray
+    balls_ok: np.ndarray  # (n,) bool
+    gen: np.ndarray  # (n, 5) generalised ring forces [N]
+    jac: np.ndarray  # (n, 5, 5) d gen / d v
+    merit: np.ndarray  # (n,) largest free residual over f_ref (inf: a ball unsolved)
+    terms: tuple[np.ndarray, ...]
+
+
+def _evaluate(r: _Ring, v: np.ndarray, do: np.ndarray, ao: np.ndarray) -> _State:
+    """Solve every ball at the ring position v from (do, ao); the ring forces and tangent."""
+    c, s = r.c, r.s
+    rho = r.base[:, None] + v[:, 0, None] * c + v[:, 1, None] * s
+    u = v[:, 2, None] + v[:, 3, None] * c + v[:, 4, None] * s
+    up = np.where(r.one_sided[:, None], np.maximum(u, 0.0), u)
+    line = _line_start(r.b, rho, up)
+    moving = np.broadcast_to(r.b.omega > 0, do.shape)
+    fresh = ~moving | ~np.isfinite(do)
+    do, ao = np.where(fresh, line[0], do), np.where(fresh, line[1], ao)
+    # a ball at speed always touches its outer groove: start it pressed by about F_c
+    fc = 0.125 * r.b.mass * r.b.dm * r.b.omega**2 * _KG_MM
+    ao = np.where(moving & fresh & (do <= 0), 0.0, ao)
+    do = np.where(moving, np.maximum(do, (fc / r.b.ko[..., -1]) ** (2.0 / 3.0)), do)
+    do, ao, ok = _solve_balls(r.b, rho, up, do, ao)
+    fa, fr, d, terms = _ring_forces(r.b, rho, u, do, ao, r.one_sided)
+    zero, one = np.zeros_like(c), np.ones_like(c)
+    arm_r = np.stack([c, s, zero, zero, zero], axis=1)  # (n, 5, z)
+    arm_a = np.stack([zero, zero, one, c, s], axis=1)
+    gen = (arm_r * fr[:, None, :] + arm_a * fa[:, None, :]).sum(-1)
+    d_fr = d[1, 0][:, None, :] * arm_r + d[1, 1][:, None, :] * arm_a  # (n, 5 = l, z)
+    d_fa = d[0, 0][:, None, :] * arm_r + d[0, 1][:, None, :] * arm_a
+    jac = np.einsum("nkz,nlz->nkl", arm_r, d_fr) + np.einsum("nkz,nlz->nkl", arm_a, d_fa)
+    res = np.where(r.held, 0.0, r.f - gen)
+    merit = np.abs(res).max(axis=1) / r.f_ref
+    balls_ok = np.asarray(ok.all(axis=1))
+    merit = np.where(balls_ok & np.isfinite(merit), merit, np.inf)
+    return _State(do, ao, balls_ok, gen, jac, merit, tuple(terms))
+
+
+def _newton(r: _Ring, v: np.ndarray, do: np.ndarray, ao: np.ndarray) -> tuple[Any, ...]:
+    """Damped Newton on the ring equilibrium, each case on its own. Returns (v, state,
+    iterations (n,))."""
+    n = v.shape[0]
+    its = np.zeros(n, dtype=int)
+    st = _evaluate(r, v, do, ao)
+    todo = np.flatnonzero(~(st.merit <= TOLERANCE))
+    for _ in range(RING_ITERATIONS):
+        if todo.size == 0:
+            break
+        sub = r.take(todo)
+        cur = _take_state(st, todo)
+        jac = np.where(sub.held[:, :, None] | sub.held[:, None, :], 0.0, cur.jac)
+        jac[:, np.arange(5), np.arange(5)] += sub.held
+        res = np.where(sub.held, 0.0, sub.f - cur.gen)
+        step = np.linalg.solve(jac, res[..., None])[..., 0]
+        step = np.where(np.isfinite(step), step, 0.0)
+        lam = np.ones(todo.size)
+        pending = np.arange(todo.size)
+        for _ in range(20):
+            trial = v[todo[pending]] + lam[pending, None] * step[pending]
+            got = _evaluate(sub.take(pending), trial, cur.do[pending], cur.ao[pending])
+            better = (got.merit < (1.0 - 1e-4 * lam[pending]) * cur.merit[pending]) | (
+                got.merit <= TOLERANCE
+            )
+            rows = todo[pending[better]]
+            v[rows] = trial[better]
+            _put_state(st, rows, _take_state(got, np.flatnonzero(better)))
+            pending = pending[~better]
+            if pending.size == 0:
+                break
+            lam[pending] *= 0.5
+        its[todo] += 1
+        stalled = np.zeros(todo.size, dtype=bool)
+        stalled[pending] = True  # no step lowered the residual: its rounding
+        todo = todo[~stalled & ~(st.merit[todo] <= TOLERANCE)]
+    return v, st, its
+
+
+def _take_state(st: _State, idx: np.ndarray) -> _State:
+    return _State(st.do[idx], st.ao[idx], st.balls_ok[idx], st.gen[idx], st.jac[idx],
+                  st.merit[idx], tuple(t[idx] for t in st.terms))  # fmt: skip
+
+
+def _put_state(st: _State, rows: np.ndarray, new: _State) -> None:
+    for name in ("do", "ao", "balls_ok", "gen", "jac", "merit"):
+        getattr(st, name)[rows] = getattr(new, name)
+    for mine, theirs in zip(st.terms, new.terms, strict=True):
+        mine[rows] = theirs
+
+
+def _solve(
+    z: int, geo: Any, flat: dict, pos: dict, angles: np.ndarray, material: tuple[np.ndarray, ...],
+    one_sided: np.ndarray, imposed_tilt: bool,
+) -> tuple[Any, ...]:  # fmt: skip
+    """Set up the ring problem at the static answer and solve it with the stiffness updates."""
+    e, nu, dens = material
+    n = geo.D_w.shape[0]
+    c, s, mirror = _combined._directions(z, np.mod(flat["cage_angle"], 360.0))
+    fr, fa, mm, mc = (flat[k] for k in ("radial_load", "axial_load", "moment", "moment_cross"))
+    rr = geo.R_i
+    t_imp = rr * np.deg2rad(flat.get("misalignment", np.zeros(n)))
+    held, _ = _combined._locks(z, mirror, (fr, fa, mm, mc), t_imp, imposed_tilt)
+    f_ref = _combined._reference_force(fr, fa, mm, mc, rr)
+    f = np.stack([fr, np.zeros(n), fa, mm / rr, mc / rr], axis=1)
+    shift = np.where(one_sided, geo.A * np.sin(geo.alpha0), 0.0)
+    v = np.stack([pos["x"], pos["y"], pos["axial"] + shift, rr * np.deg2rad(pos["tilt"]),
+                  rr * np.deg2rad(pos["tilt_cross"])], axis=1)  # fmt: skip
+    ki, ko = _stiffness_nodes(geo, e, nu)
+    col = [(geo.f_i - 0.5) * geo.D_w, (geo.f_o - 0.5) * geo.D_w, geo.D_w, geo.d_m,
+           flat["speed"] * math.pi / 30.0, dens * math.pi / 6.0 * geo.D_w**3]  # fmt: skip
+    ri, ro, dwc, dmc, omega, mass = (a[:, None] for a in col)
+    b = _Set(ri, ro, dwc, dmc, omega, mass, ki, ko)
+    ring = _Ring(b, c, s, geo.A - geo.g, f, f_ref, held, one_sided)
+    nan = np.full((n, z), np.nan)
+    v, st, total = _newton(ring, v, nan, nan)
+    _check(st, total, flat, one_sided)
+    return ring, v, st, total
+
+
+def _rel(a: np.ndarray, b: np.ndarray) -> float:
+    return float(np.max(np.abs(a - b) / np.abs(b), initial=0.0))
+
+
+def _check(st: _State, its: np.ndarray, flat: dict, one_sided: np.ndarray) -> None:
+    """ConvergenceError naming the inputs of the cases left unbalanced."""
+    bad = ~(st.merit <= ACCEPT)
+    if np.any(bad):
+        known = st.merit[bad][np.isfinite(st.merit[bad])]
+        raise ConvergenceError(
+            "ball-dynamics ring and ball equilibrium",
+            int(its[bad].max()),
+            float(known.max()) if known.size else math.nan,
+            {k: v[bad] for k, v in flat.items()},
+        )
+
+
+def _result(
+    static: CombinedDistribution, shape: tuple[int, ...], z: int, geo: Any, flat: dict,
+    density: np.ndarray, out: tuple[Any, ...], one_sided: np.ndarray, misalignment: Any,
+) -> HighSpeedDistribution:  # fmt: skip
+    """The static answer's fields with the dynamic ring position, balls and tangent."""
+    from bearingload import numerics
+
+    ring, v, st, its = out
+    g1, g2, qi, qo, si, ci, fc, mg, wc, wr, beta, di = st.terms[:12]
+    rr = geo.R_i
+
+    def case(a: Any) -> Any:
+        a = np.asarray(a, dtype=float)
+        return numerics.scalar_out(
+            a.reshape(shape) if a.size == math.prod(shape) else np.broadcast_to(a, shape).copy()
+        )
+
+    def ball(a: Any) -> np.ndarray:
+        return np.asarray(a, dtype=float).reshape(shape + (z,))
+
+    fields = {f.name: getattr(static, f.name) for f in dataclasses.fields(CombinedDistribution)}
+    for name, value in fields.items():
+        if isinstance(value, np.ndarray) or isinstance(value, float):
+            tail = np.shape(value)[len(np.shape(static.x)) :]
+            fields[name] = np.broadcast_to(value, shape + tail).copy()
+            if not tail:
+                fields[name] = case(fields[name])
+    ai = np.rad2deg(np.arctan2(si, ci))
+    ao = np.rad2deg(st.ao)
+
+    lever = np.stack([np.ones_like(rr)] * 3 + [rr, rr], axis=1)
+    tangent = st.jac * lever[:, :, None] * lever[:, None, :]
+
+    shift = np.where(one_sided, geo.A * np.sin(geo.alpha0), 0.0)
+    moment = rr * st.gen[:, 3] if misalignment is not None else flat["moment"]
+    fields.update(
+        x=case(v[:, 0]), y=case(v[:, 1]), axial=case(v[:, 2] - shift),
+        tilt=case(np.rad2deg(v[:, 3] / rr)), tilt_cross=case(np.rad2deg(v[:, 4] / rr)),
+        moment=case(moment),
+        contact_angles=ball(ai), ball_loads=ball(qi), ball_stiffnesses=ball(_stiffness(ring.b.ki, ci)),
+        ball_approaches=ball(di + st.do), stiffness_matrix=tangent.reshape(shape + (5, 5)),
+        iterations=case(np.asarray(fields["iterations"]).ravel() + its),
+    )  # fmt: skip
+    return HighSpeedDistribution(
+        **fields,
+        speed=case(flat["speed"]),
+        ball_density=case(np.broadcast_to(density, shape)),
+        contact_angles_inner=ball(ai),
+        contact_angles_outer=ball(ao),
+        ball_loads_inner=ball(qi),
+        ball_loads_outer=ball(qo),
+        ball_stiffnesses_outer=ball(_stiffness(ring.b.ko, np.cos(st.ao))),
+        approaches_inner=ball(di),
+        approaches_outer=ball(st.do),
+        ball_offsets_axial=ball((ring.b.ro + st.do) * np.sin(st.ao)),
+        ball_offsets_radial=ball((ring.b.ro + st.do) * np.cos(st.ao)),
+        orbit_speeds=ball(wc),
+        spin_speeds=ball(wr),
+        attitude_angles=ball(np.rad2deg(beta)),
+        centrifugal_forces=ball(fc),
+        gyroscopic_moments=ball(mg),
+    )

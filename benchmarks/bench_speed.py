@@ -1,0 +1,108 @@
+"""Benchmark: the ball dynamics at speed (:mod:`bearingload.models.high_speed`) against a per-case
+fsolve, and one case alone.
+
+Run: ``make bench`` or ``.venv/bin/python benchmarks/bench_speed.py``.
+Targets: one case at speed in <= 5 ms; the vectorised solve >= 20 times a per-case
+``scipy.optimize.fsolve`` on the same equations.
+The baseline: per case, fsolve on the 3 + 2 z equations of a 7205-sized angular-contact bearing
+(D_w 7.938 mm, d_m 38.5 mm, f_i 0.52, f_o 0.53, 13 balls, cage angle 0, free tilt): the ring's
+F_r, F_a and moment equations in (x, a, R_i theta) and every ball's two equations in (delta_o,
+alpha_o), the very functions the solver evaluates (:func:`bearingload.models.high_speed.
+ball_terms`, K_i and K_o the same Hertz interpolants), no Jacobian, xtol 1e-12, started at the
+static answer (solve_combined, not timed) with every ball on its line. Cases: contact angle
+10-45°, F_r and F_a 10-5000 N, n 1000-26 000 rpm (n d_m <= 1e6 mm/min). The vectorised call is
+``solve_high_speed(13, F_r, F_a, speed=n, contact_angle=a0)`` on all cases at once (its static
+start included). The machine is shared: the two are timed in pairs, the ratio of each pair
+printed, and their median.
+"""
+
+from __future__ import annotations
+
+import os
+
+os.environ.setdefault("OMP_NUM_THREADS", "1")
+os.environ.setdefault("OPENBLAS_NUM_THREADS", "1")
+
+import math  # noqa: E402
+import statistics  # noqa: E402
+import time  # noqa: E402
+
+import numpy as np  # noqa: E402
+
+from bearingload.models import high_speed as hs  # noqa: E402
+from bearingload.models.combined import _angular_geometry, solve_combined  # noqa: E402
+
+Z = 13
+GEO = {"ball_diameter": 7.938, "pitch_diameter": 38.5, "f_i": 0.52, "f_o": 0.53}
+N_CASES, PAIRS, SEED = 100, 1, 20261124
+
+
+def fsolve_case(fr: float, fa: float, n: float, alpha: float) -> bool:
+    """One case by fsolve on its 3 + 2z equations; whether the ring residual is 1e-8."""
+    from scipy.optimize import fsolve
+
+    dw, dm, fi, fo = (np.array([GEO[k]]) for k in ("ball_diameter", "pitch_diameter", "f_i",
+                                                    "f_o"))  # fmt: skip
+    geo = _angular_geometry(dw, dm, fi, fo, np.array([alpha]))
+    ki, ko = hs._stiffness_nodes(geo, np.array([208000.0]), np.array([0.3]))
+    b = hs._Set((fi - 0.5)[:, None] * dw[:, None], (fo - 0.5)[:, None] * dw[:, None],
+                dw[:, None], dm[:, None], np.array([[n * math.pi / 30.0]]),
+                7.85e-6 * math.pi / 6.0 * dw[:, None] ** 3, ki, ko)  # fmt: skip
+    c = np.cos(2.0 * np.pi * np.arange(Z) / Z)[None, :]
+    big_a, g, r_i = geo.A[0], geo.g[0], geo.R_i[0]
+    s = solve_combined(Z, fr, fa, contact_angle=alpha, modulus=208000.0, **GEO)
+    shift = big_a * math.sin(geo.alpha0[0])
+    v0 = [s.x, s.axial + shift, r_i * math.radians(s.tilt)]
+
+    def geometry(v: np.ndarray) -> tuple[np.ndarray, np.ndarray]:
+        rho = big_a - g + v[0] * c
+        return rho, np.maximum(v[1] + v[2] * c, 0.0)
+
+    rho0, u0 = geometry(np.array(v0))
+    do0, ao0 = hs._line_start(b, rho0, u0)
+    do0 = np.maximum(do0, 1e-6)
+
+    def residual(w: np.ndarray) -> np.ndarray:
+        rho, u = geometry(w[:3])
+        t = hs.ball_terms(b, rho, u, w[3 : 3 + Z][None, :], w[3 + Z :][None, :])
+        fa_j, fr_j = t[12][0], t[13][0]
+        ring = [fr_j @ c[0] - fr, fa_j.sum() - fa, (fa_j * c[0]).sum()]
+        return np.concatenate([ring, t[0][0], t[1][0]])
+
+    w = fsolve(residual, np.concatenate([v0, do0[0], ao0[0]]), xtol=1e-12)
+    return bool(np.max(np.abs(residual(w)[:3])) <= 1e-8 * max(fr, fa))
+
+
+def main() -> None:
+    rng = np.random.default_rng(SEED)
+    fr = rng.uniform(10.0, 5000.0, N_CASES)
+    fa = rng.uniform(10.0, 5000.0, N_CASES)
+    n = rng.uniform(1000.0, 26000.0, N_CASES)
+    alpha = rng.uniform(10.0, 45.0, N_CASES)
+    kw = dict(contact_angle=alpha, modulus=208000.0, **GEO)
+    hs.solve_high_speed(Z, fr[:2], fa[:2], speed=n[:2], **dict(kw, contact_angle=alpha[:2]))
+    one = []
+    for _ in range(20):
+        t0 = time.perf_counter()
+        hs.solve_high_speed(Z, 800.0, 1500.0, speed=20000.0, contact_angle=40.0,
+                            modulus=208000.0, **GEO)  # fmt: skip
+        one.append(time.perf_counter() - t0)
+    print(f"one case at speed (7205-sized, 20 000 rpm): median {statistics.median(one) * 1e3:.2f} "
+          "ms (target <= 5 ms)")  # fmt: skip
+    ratios = []
+    for _ in range(PAIRS):
+        t0 = time.perf_counter()
+        ok = sum(fsolve_case(fr[i], fa[i], n[i], alpha[i]) for i in range(N_CASES))
+        t_fsolve = time.perf_counter() - t0
+        t0 = time.perf_counter()
+        hs.solve_high_speed(Z, fr, fa, speed=n, **kw)
+        t_vec = time.perf_counter() - t0
+        ratios.append(t_fsolve / t_vec)
+        print(f"  fsolve {t_fsolve * 1e3:.0f} ms ({ok}/{N_CASES} converged), vectorised "
+              f"{t_vec * 1e3:.0f} ms: {ratios[-1]:.1f}x")  # fmt: skip
+    print(f"vectorised vs per-case fsolve, {N_CASES} cases: median {statistics.median(ratios):.1f}x"
+          " (target >= 20x)")  # fmt: skip
+
+
+if __name__ == "__main__":
+    main()
