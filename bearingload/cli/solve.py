@@ -223,7 +223,7 @@ def _pair(
     """A pair of angular-contact ball bearings (--arrangement, or 7205BDB): (report, warnings)."""
     import dataclasses
 
-    from bearingload.cli.case_options import SERVICE_PARAMS
+    from bearingload.cli.case_options import DYNAMICS_PARAMS, SERVICE_PARAMS
     from bearingload.reports.pair import pair_report
     from bearingload.studies.bearing_pair import solve_bearing_pair
 
@@ -237,6 +237,8 @@ def _pair(
         )
     case.refuse(("misalignment",), "a bearing pair", "the shaft's tilt follows from the "
                 "loads; give --moment")  # fmt: skip
+    case.refuse(DYNAMICS_PARAMS, "a bearing pair", "a pair is solved by the static model: "
+                "the ball dynamics at speed are coded for one bearing only")  # fmt: skip
     case.refuse(SERVICE_PARAMS, "a bearing pair", "the lives in hours and the modified lives "
                 "of a pair are not coded yet (it gives L10r and L10 in 10^6 revolutions)")  # fmt: skip
     why = "the design contact angle fixes the geometry of an angular-contact bearing"
