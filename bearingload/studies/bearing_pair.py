@@ -110,7 +110,9 @@ def _pair_case(
 
     cases = []
     for k, rk in enumerate(r.bearings):
-        c = _combined_case(b, rk, rk.load, rk.axial_load, rk.moment, None, None, lever,
+        # no moment given to the checks: a bearing's tilt in a pair is the shaft's elastic
+        # tilt, which the pair carries, not a misalignment of shaft and housing
+        c = _combined_case(b, rk, rk.load, rk.axial_load, None, None, None, lever,
                            rotating, dynamic_rating)  # fmt: skip
         if r.unloaded[k]:  # no ball loaded: no life, no equivalent load
             import dataclasses
