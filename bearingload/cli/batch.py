@@ -86,6 +86,7 @@ def batch(
         batch_columns,
         csv_head,
         csv_rows,
+        held_keys,
         row_values,
     )
     from bearingload.batch.solve import BatchSolver
@@ -129,6 +130,8 @@ def batch(
                     )
                 values = row_values(columns, len(part.rows), part.values)
                 values["warnings"] = part.values.get("warnings", [()] * len(part.rows))
+                for k in held_keys(header):  # json: the model and per-ball contacts, as solve
+                    values[k] = part.values.get(k, [None] * len(part.rows))
                 for k, v in values.items():
                     held.setdefault(k, []).extend(v.tolist() if hasattr(v, "tolist") else v)
             progress.update(total)
