@@ -56,7 +56,7 @@ COMBINED_KEYS = (
 )  # fmt: skip
 #: What the rows of a combined-load file carry beyond the columns, as solve's json names it:
 #: the model (the ball dynamics added at a speed) and each ball's inner and outer contact angle
-#: [°] and load [N] (json only; null for a radial row).
+#: [°] and load [N] (json only; null for a radial row, whose model is the radial engine's).
 HELD_KEYS = ("model", "contact_angles_inner", "contact_angles_outer", "ball_loads_inner",
              "ball_loads_outer")  # fmt: skip
 #: The note of a table or markdown report with rows solved with the ball dynamics.

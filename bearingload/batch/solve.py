@@ -238,6 +238,11 @@ class BatchSolver:
         lever = cols["_lever"][i] = tilt_lever(v.get("tilt_radius"), b.pitch_diameter)
         tilts = (*(k in v for k in ("moment", "misalignment", "moment_cross")), lever is None)
         dynamics = _dynamics(v)
+        if dynamics[0] and b.stiffness_given:  # as the library refuses it, in the batch's words
+            raise InputError("speed", "the ball dynamics need each contact's Hertz stiffness "
+                             "from the ball geometry, not a given ball stiffness: leave the "
+                             "stiffness cell blank, or set quasi_static true (the static "
+                             "model)")  # fmt: skip
         return ("combined", b, tilts, v.get("rotating", "inner"), v.get("dynamic_rating"), dynamics)
 
     def _bearing(self, v: dict[str, Any]) -> Any:
@@ -414,6 +419,7 @@ def _solve_rings(
 def _solve_bearing(
     key: tuple[Any, ...], idx: list[int], cols: dict[str, list[Any]]
 ) -> dict[str, Any]:
+    from bearingload.models.registry import METHODS
     from bearingload.studies.loaded_bearing import DEFAULT_REVOLUTIONS, case_columns, solve_bearing
     from bearingload.studies.reference_life import with_reference_lives
 
@@ -423,7 +429,7 @@ def _solve_bearing(
     revolutions = np.array(_take(cols, "revolutions", idx, DEFAULT_REVOLUTIONS), dtype=float)
     cases = solve_bearing([b], load, cage, [method], revolutions)
     (lc,) = with_reference_lives(cases, rotating)
-    out = case_columns(lc) | {"warnings": list(lc.warnings)}
+    out = case_columns(lc) | {"warnings": list(lc.warnings), "model": METHODS[method].title}
     return out | {"_bearing": b, "_load": out["load"], "_angle": np.zeros(len(idx))}
 
 
