@@ -54,6 +54,8 @@ COLUMNS: dict[str, str] = {
     "fatigue_load_limit": "force",
     "roughness": "length",
     "pressure_viscosity": "number",
+    "ball_density": "number",
+    "quasi_static": "flag",
 }
 #: The operating conditions of the lives (solve's options of the same names; ``eC`` is read as
 #: ``ec``): they feed the lives in hours, a_ISO, the modified lives and the film, never a load.
@@ -70,7 +72,15 @@ SERVICE_RANGES: dict[str, tuple[float, float, bool, str]] = {
     "reliability": (90.0, 99.95, True, "must lie between 90 and 99.95 % (ISO 281 Table 12)"),
     "ec": (0.0, 1.0, True, "e_C must lie between 0 and 1"),
     "pressure_viscosity": (1.0, 100.0, True, "must lie between 1 and 100 1/GPa"),
-}
+    "ball_density": (0.0, 1e5, False, "must be greater than 0 and at most 100000 kg/m^3 "
+                     "(bearing steel 7850, silicon nitride about 3200)"),
+}  # fmt: skip
+#: The ball dynamics at a speed (solve's --ball-density, --quasi-static): a combined row with a
+#: speed is solved with each ball's centrifugal force and gyroscopic moment unless quasi_static
+#: is true; ball_density in kg/m^3 (bare numbers, as the option).
+DYNAMICS_COLUMNS = ("ball_density", "quasi_static")
+#: The words of a flag column (case-insensitive; csv output writes True and False).
+FLAGS = {"true": True, "false": False}
 #: The load columns: a row with a cell in one of them is a combined-load case (3-D equilibrium),
 #: as solve's load options choose its engine (``contact_angle``: an angular-contact ring given
 #: by its ball set, as solve's --contact-angle); the others are radial cases.
@@ -356,7 +366,8 @@ class CellParser:
         a fraction of a ball, a number implausible without a unit, infinity)."""
         import numpy as np
 
-        if self.kind in ("text", "pick", "ring", "level", "exponent", "tilt_radius") or not texts:
+        words = ("text", "pick", "ring", "level", "exponent", "tilt_radius", "flag")
+        if not texts or self.kind in words:
             return None
         if "_" in "".join(texts):  # numpy reads '1_000' as Python does; the parser refuses it
             return None
@@ -398,6 +409,12 @@ class CellParser:
                     name, f"unknown level {text!r}; allowed: {', '.join(CONTAMINATION_LEVELS)}"
                 )
             return text
+        if kind == "flag":
+            if text.lower() not in FLAGS:
+                raise InputError(
+                    name, f"cannot read {text!r}; allowed: true, false (or blank: false)"
+                )
+            return FLAGS[text.lower()]
         if kind == "ring":
             if text not in ("inner", "outer"):
                 raise InputError(name, f"unknown ring {text!r}; allowed: inner, outer")

@@ -18,7 +18,7 @@ from collections.abc import Sequence
 from typing import Any
 
 from bearingload.batch.read import Header
-from bearingload.reports.quantities import SERVICE_KEYS
+from bearingload.reports.quantities import SERVICE_KEYS, units
 from bearingload.reports.render import Column, Table, csv_block, csv_header, render
 from bearingload.reports.solve import INPUT_KEYS, REPORT_KEYS, column
 
@@ -54,6 +54,19 @@ COMBINED_KEYS = (
     "reference_rating_life_hours", "dynamic_rating", "equivalent_load", "rating_life",
     "rating_life_hours", *SERVICE_KEYS,
 )  # fmt: skip
+#: What the rows of a combined-load file carry beyond the columns, as solve's json names it:
+#: the model (the ball dynamics added at a speed) and each ball's inner and outer contact angle
+#: [°] and load [N] (json only; null for a radial row, whose model is the radial engine's).
+HELD_KEYS = ("model", "contact_angles_inner", "contact_angles_outer", "ball_loads_inner",
+             "ball_loads_outer")  # fmt: skip
+#: The note of a table or markdown report with rows solved with the ball dynamics.
+DYNAMICS_NOTE = (
+    "Rows with a speed (quasi_static not true) on the combined engine: {} (Jones 1960; Harris & "
+    "Kotzalas; docs/speed.md); every ball has its own inner and outer contact angle and load "
+    "(json: contact_angles_inner, contact_angles_outer, ball_loads_inner, ball_loads_outer); the "
+    "columns give the inner contacts; L10r takes the inner loads for the inner ring, the outer "
+    "loads for the outer ring."
+)
 #: The output columns each service input column can give (solve prints them when the option is
 #: given); a file without the column has none of them.
 SERVICE_OUTPUT = {
@@ -99,6 +112,12 @@ def batch_columns(header: Header) -> list[Column]:
     return [column(k, exponent) for k in keys]
 
 
+def held_keys(header: Header) -> tuple[str, ...]:
+    """The keys beyond the columns that json, markdown and table hold for a file with
+    ``header`` (:data:`HELD_KEYS` for a combined-load file)."""
+    return HELD_KEYS if header.combined else ()
+
+
 def csv_head(columns: Sequence[Column]) -> str:
     """The csv header line."""
     return csv_header(columns)
@@ -125,13 +144,16 @@ def held_report(
     keys = [c.key for c in columns]
     data = {"row": list(rows)} | values
     records = [dict(zip(keys, r, strict=True)) for r in zip(*(data[k] for k in keys), strict=True)]
+    held = [k for k in HELD_KEYS if k in values]
     if fmt == "json":
+        for i, record in enumerate(records):
+            record |= {k: values[k][i] for k in held}
         for record, found in zip(records, values.get("warnings", []), strict=False):
             record["warnings"] = list(found)
         doc = {
             "cases": records,
             "skipped": [{"row": r, "reason": m} for r, m in skipped],
-            "units": {c.key: c.unit for c in columns if c.unit},
+            "units": {c.key: c.unit for c in columns if c.unit} | units(held, 1.5),
         }
         return render([], "json", document=doc)
     rows_out = [
@@ -139,6 +161,8 @@ def held_report(
         for r in records
     ]
     columns = [Column(c.key, c.key, c.unit, c.digits, c.align) for c in columns]  # short heads
-    notes = [f"Row {r} skipped: {m}" for r, m in skipped]
+    models = sorted({m for m in values.get("model", []) if m is not None and "; " in m})
+    notes = [DYNAMICS_NOTE.format(m.split("; ", 1)[1]) for m in models]
+    notes += [f"Row {r} skipped: {m}" for r, m in skipped]
     title = f"{len(records)} cases (row: the input file's row, the header is row 1)"
     return render([Table(title, columns, rows_out, notes)], fmt)

@@ -25,6 +25,7 @@ from typing import Any
 import numpy as np
 
 from bearingload.batch.read import (
+    DYNAMICS_COLUMNS,
     LOAD_COLUMNS,
     SERVICE_COLUMNS,
     SERVICE_RANGES,
@@ -153,6 +154,7 @@ class BatchSolver:
         """Each row's group: ("ring", method), ("bearing", resolved bearing, method, rotating)
         or ("combined", ...); a row that cannot be solved goes to ``bad``."""
         keys: list[Any] = [None] * n
+        rows = n
         cols["_lever"] = [None] * n  # a combined row's lever of the tilt [mm]
         loads = [cols[c] for c in LOAD_COLUMNS if c in cols]
         geometry = [cols[c] for c in _GEOMETRY if c in cols]
@@ -176,6 +178,7 @@ class BatchSolver:
             except BearingloadError as exc:
                 bad[i] = row_message(exc)
         _ring_keys(cols, rings, keys, bad)
+        _refuse_radial_dynamics(cols, keys, rows, bad)
         return keys
 
     def _angular(self, cols: dict[str, list[Any]], i: int) -> bool:
@@ -234,7 +237,13 @@ class BatchSolver:
             raise InputError("load", f"must be 0 N or more (got {v['load']!r} N)")
         lever = cols["_lever"][i] = tilt_lever(v.get("tilt_radius"), b.pitch_diameter)
         tilts = (*(k in v for k in ("moment", "misalignment", "moment_cross")), lever is None)
-        return ("combined", b, tilts, v.get("rotating", "inner"), v.get("dynamic_rating"))
+        dynamics = _dynamics(v)
+        if dynamics[0] and b.stiffness_given:  # as the library refuses it, in the batch's words
+            raise InputError("speed", "the ball dynamics need each contact's Hertz stiffness "
+                             "from the ball geometry, not a given ball stiffness: leave the "
+                             "stiffness cell blank, or set quasi_static true (the static "
+                             "model)")  # fmt: skip
+        return ("combined", b, tilts, v.get("rotating", "inner"), v.get("dynamic_rating"), dynamics)
 
     def _bearing(self, v: dict[str, Any]) -> Any:
         """The resolved bearing of a row's cells, resolved once per distinct cells."""
@@ -287,6 +296,36 @@ def _hand_angular(v: dict[str, Any], b: Any) -> Any:
             "of an angular-contact bearing",
         )
     return dataclasses.replace(b, contact_angle=float(alpha), clearance=0.0)
+
+
+def _dynamics(v: dict[str, Any]) -> tuple[bool, bool]:
+    """(solved with the ball dynamics, with a ball_density cell) of a combined row, its
+    ball_density and quasi_static cells checked as solve checks --ball-density and
+    --quasi-static: the dynamics need a speed, and quasi_static true leaves them out."""
+    quasi = v.get("quasi_static", False)
+    if "ball_density" in v and ("speed" not in v or quasi):
+        raise InputError("ball_density", "it enters the ball dynamics at a speed, which "
+                         "quasi_static true or a missing speed leave out")  # fmt: skip
+    if quasi and "speed" not in v:
+        raise InputError("quasi_static", "it needs a speed (true: the static model at that "
+                         "speed, which then gives the lives in hours only)")  # fmt: skip
+    return "speed" in v and not quasi, "ball_density" in v
+
+
+def _refuse_radial_dynamics(
+    cols: dict[str, list[Any]], keys: list[Any], n: int, bad: dict[int, str]
+) -> None:
+    """A radial row (ring or bearing) with a ball_density or a quasi_static true cell is
+    refused, as solve refuses --ball-density and --quasi-static on the radial solve."""
+    given = [(c, cols[c]) for c in DYNAMICS_COLUMNS if c in cols]
+    for i in range(n) if given else ():
+        name = next((c for c, x in given if x[i] not in (None, False)), None)
+        if name is None or i in bad or keys[i] is None or keys[i][0] == "combined":
+            continue
+        keys[i] = None
+        bad[i] = (f"{name}: not used by the radial solve (a row without a cell in axial_load, "
+                  "moment, moment_cross, misalignment or contact_angle): the ball dynamics at "
+                  "a speed are solved by the combined engine (give an axial_load of 0)")  # fmt: skip
 
 
 def _check_life_cells(v: dict[str, Any], b: Any) -> None:
@@ -380,6 +419,7 @@ def _solve_rings(
 def _solve_bearing(
     key: tuple[Any, ...], idx: list[int], cols: dict[str, list[Any]]
 ) -> dict[str, Any]:
+    from bearingload.models.registry import METHODS
     from bearingload.studies.loaded_bearing import DEFAULT_REVOLUTIONS, case_columns, solve_bearing
     from bearingload.studies.reference_life import with_reference_lives
 
@@ -389,7 +429,7 @@ def _solve_bearing(
     revolutions = np.array(_take(cols, "revolutions", idx, DEFAULT_REVOLUTIONS), dtype=float)
     cases = solve_bearing([b], load, cage, [method], revolutions)
     (lc,) = with_reference_lives(cases, rotating)
-    out = case_columns(lc) | {"warnings": list(lc.warnings)}
+    out = case_columns(lc) | {"warnings": list(lc.warnings), "model": METHODS[method].title}
     return out | {"_bearing": b, "_load": out["load"], "_angle": np.zeros(len(idx))}
 
 
@@ -398,24 +438,40 @@ def _solve_combined(
 ) -> dict[str, Any]:
     from bearingload.studies.combined_bearing import combined_columns, solve_combined_bearing
 
-    _, b, (moment, misaligned, cross, groove), rotating, c_r = key
+    _, b, (moment, misaligned, cross, groove), rotating, c_r, (at_speed, density) = key
 
     def given(name: str, on: bool = True, default: Any = None) -> Any:
         return np.array(_take(cols, name, idx, default), dtype=float) if on else None
+
+    rho = given("ball_density", density)  # [kg/m^3], as solve's --ball-density
 
     (case,) = solve_combined_bearing(
         [b], given("load"), given("axial_load", default=0.0),
         cage_angle=_angles(_take(cols, "cage_angle", idx, 0.0), b.balls),
         moment=given("moment", moment), misalignment=given("misalignment", misaligned),
         rotating=rotating, dynamic_rating=c_r, moment_cross=given("moment_cross", cross),
-        tilt_radius=None if groove else given("_lever"),
+        tilt_radius=None if groove else given("_lever"), speed=given("speed", at_speed),
+        ball_density=None if rho is None else rho * 1e-9,
     )  # fmt: skip
-    out = combined_columns(case)
+    out = combined_columns(case) | _contacts(case.result, len(idx))
     loads = np.asarray(case.result.ball_loads, dtype=float).reshape(len(idx), -1)
     heaviest = np.argmax(loads, axis=-1)[:, None]
     angles = np.asarray(case.result.contact_angles, dtype=float).reshape(len(idx), -1)
     angle = np.take_along_axis(angles, heaviest, axis=-1)[:, 0]
     return out | {"_bearing": b, "_load": out["equivalent_load"], "_angle": angle}
+
+
+def _contacts(res: Any, n: int) -> dict[str, Any]:
+    """The json-only quantities of the ``n`` combined rows of ``res``, as solve's json names
+    them (:func:`bearingload.reports.combined.contact_values`): ``model`` and each row's
+    per-ball contact angles and loads, inner and outer."""
+    from bearingload.reports.combined import contact_values
+
+    found = contact_values(res)
+    out: dict[str, Any] = {"model": found.pop("model")}
+    for key, value in found.items():
+        out[key] = list(np.asarray(value, dtype=float).reshape(n, -1))
+    return out
 
 
 def with_service(parts: list[Part], cols: dict[str, list[Any]], bad: dict[int, str]) -> None:

@@ -58,6 +58,17 @@ def batch(
     engines share), names a bearing or the ball geometry, and has no method, exponent or
     revolutions column. A tilt_radius cell without a combined load on its row is refused.
 
+    The operating conditions of the lives are columns named like solve's options
+    (static_rating, speed, reliability, viscosity, contamination, eC, fatigue_load_limit,
+    roughness, pressure_viscosity; docs/batch.md). As 'solve --speed', a combined row with a
+    speed is solved with each ball's centrifugal force and gyroscopic moment (docs/speed.md):
+    quasi_static (true or false; blank: false) true keeps the static model, the speed then
+    giving the lives in hours only; ball_density (kg/m^3, bare numbers; default bearing steel
+    7850, silicon nitride about 3200) gives the ball mass. Both are refused without a speed,
+    ball_density under quasi_static true, and either on a radial row. json adds to each
+    combined row its model and every ball's inner and outer contact angle and load
+    (contact_angles_inner, contact_angles_outer, ball_loads_inner, ball_loads_outer).
+
     A bad row (a negative load, an unknown unit or bearing, z = 0, a line with the wrong
     number of cells, a line that is not UTF-8 text) is named on standard error with its row
     number and the reason; the other rows are still solved and written, and the exit status is
@@ -79,6 +90,8 @@ def batch(
       bearingload batch examples/cases.csv --strict --format json
       # combined loads: axial load, moment or misalignment, L10r (ISO/TS 16281) per row
       bearingload batch examples/combined_cases.csv --format csv
+      # a speed column: the ball dynamics (quasi_static, ball_density), per-ball contacts in json
+      bearingload batch examples/speed_cases.csv --format json
     """
     from bearingload.batch.read import CHUNK_ROWS, read_cases
     from bearingload.batch.report import (
@@ -86,6 +99,7 @@ def batch(
         batch_columns,
         csv_head,
         csv_rows,
+        held_keys,
         row_values,
     )
     from bearingload.batch.solve import BatchSolver
@@ -129,6 +143,8 @@ def batch(
                     )
                 values = row_values(columns, len(part.rows), part.values)
                 values["warnings"] = part.values.get("warnings", [()] * len(part.rows))
+                for k in held_keys(header):  # json: the model and per-ball contacts, as solve
+                    values[k] = part.values.get(k, [None] * len(part.rows))
                 for k, v in values.items():
                     held.setdefault(k, []).extend(v.tolist() if hasattr(v, "tolist") else v)
             progress.update(total)

@@ -293,34 +293,48 @@ def contact_angle_shown(alpha: float, load: float) -> Any:
     return alpha if load > 0.0 else "-"
 
 
+#: The model of a combined-load case, as json names it (at speed the ball dynamics are added).
+MODEL = "3-D ring equilibrium, deep-groove ball bearing (ISO/TS 16281)"
+
+
+def contact_values(res: Any) -> dict[str, Any]:
+    """The ``model`` of a solved combined-load result (one case or many) and each ball's inner
+    and outer contact angle [°] and load [N], as json names them: at speed those of
+    :class:`bearingload.models.high_speed.HighSpeedDistribution`, else inner = outer."""
+    dynamics = getattr(res, "model", None)  # at speed (models.high_speed)
+    if dynamics is None:
+        angles, loads = (res.contact_angles,) * 2, (res.ball_loads,) * 2
+    else:
+        angles = (res.contact_angles_inner, res.contact_angles_outer)
+        loads = (res.ball_loads_inner, res.ball_loads_outer)
+    return {
+        "model": MODEL if dynamics is None else f"{MODEL}; {dynamics}",
+        "contact_angles_inner": angles[0],
+        "contact_angles_outer": angles[1],
+        "ball_loads_inner": loads[0],
+        "ball_loads_outer": loads[1],
+    }
+
+
 def _document(cases: Sequence[CombinedCase], records: Sequence[dict[str, Any]]) -> dict[str, Any]:
     from bearingload.reports.bearing import geometry_document
 
     docs = []
     for c, r in zip(cases, records, strict=True):
         res = c.result
-        model = "3-D ring equilibrium, deep-groove ball bearing (ISO/TS 16281)"
-        dynamics = getattr(res, "model", None)  # at speed (models.high_speed)
+        found = contact_values(res)
         docs.append(
             dict(r)
             | {
-                "model": model if dynamics is None else f"{model}; {dynamics}",
+                "model": found["model"],
                 "ball_angles": res.ball_angles,
                 "contact_angles": res.contact_angles,
-                "contact_angles_inner": getattr(res, "contact_angles_inner", None)
-                if dynamics
-                else res.contact_angles,
-                "contact_angles_outer": getattr(res, "contact_angles_outer", None)
-                if dynamics
-                else res.contact_angles,
+                "contact_angles_inner": found["contact_angles_inner"],
+                "contact_angles_outer": found["contact_angles_outer"],
                 "ball_approaches": res.ball_approaches,
                 "ball_loads": res.ball_loads,
-                "ball_loads_inner": getattr(res, "ball_loads_inner", None)
-                if dynamics
-                else res.ball_loads,
-                "ball_loads_outer": getattr(res, "ball_loads_outer", None)
-                if dynamics
-                else res.ball_loads,
+                "ball_loads_inner": found["ball_loads_inner"],
+                "ball_loads_outer": found["ball_loads_outer"],
                 "stiffness_matrix": res.stiffness_matrix.tolist(),
                 "warnings": list(c.warnings),
             }
