@@ -58,6 +58,12 @@ def batch(
     engines share), names a bearing or the ball geometry, and has no method, exponent or
     revolutions column. A tilt_radius cell without a combined load on its row is refused.
 
+    The life columns are solve's options of the same names (static_rating, speed,
+    reliability, viscosity, contamination, eC, fatigue_load_limit, roughness,
+    pressure_viscosity); the oil may give the viscosity instead, by solve's rules: oil (an
+    ISO grade, VG68) or viscosity_40, with temperature (bare: °C; K), and viscosity_100 or
+    viscosity_index (default 95).
+
     A bad row (a negative load, an unknown unit or bearing, z = 0, a line with the wrong
     number of cells, a line that is not UTF-8 text) is named on standard error with its row
     number and the reason; the other rows are still solved and written, and the exit status is
