@@ -241,6 +241,54 @@ def parse_cage_angle(text: str | float, *, parameter: str = "cage_angle") -> flo
         ) from None
 
 
+#: The units of a temperature: a bare number and these three are degrees Celsius, ``K`` kelvin.
+TEMPERATURE_UNITS = ("°C", "C", "degC", "K")
+#: The operating temperatures of an oil accepted, as the command line accepts them. [°C]
+TEMPERATURE_RANGE = (-60.0, 250.0)
+
+
+def parse_temperature(text: str | float, *, parameter: str = "temperature") -> float:
+    """An operating temperature in °C: a bare number, ``C``, ``°C`` or ``degC`` is degrees
+    Celsius, ``K`` kelvin (T - 273.15); -60 to 250 °C (:data:`TEMPERATURE_RANGE`). The one
+    reading of ``--temperature`` and of the ``temperature`` column of ``batch``. [°C]
+
+    >>> parse_temperature("70"), parse_temperature("70C"), round(parse_temperature("343.15K"), 9)
+    (70.0, 70.0, 70.0)
+
+    Raises
+    ------
+    InputError
+        Naming ``parameter``: an unreadable text or a temperature outside the range (a bare
+        number that fits the range as kelvin is offered as such: 300 -> 300K).
+    """
+    from bearingload.errors import InputError
+
+    if isinstance(text, (int, float)):
+        match, number = None, float(text)
+    else:
+        units = "|".join(TEMPERATURE_UNITS)
+        match = re.fullmatch(rf"\s*([-+]?[0-9.]+(?:e[-+]?\d+)?)\s*({units})?\s*", str(text))
+        try:
+            number = float(match.group(1)) if match else float("nan")
+        except ValueError:
+            number = float("nan")
+    celsius = number - 273.15 if match and match.group(2) == "K" else number
+    low, high = TEMPERATURE_RANGE
+    if not low <= celsius <= high:
+        as_kelvin = number - 273.15  # a bare number meant in kelvin, where that fits
+        hint = (
+            f"; did you mean {number:g}K ({as_kelvin:g} °C)?"
+            if match and match.group(2) is None and low <= as_kelvin <= high
+            else ""
+        )
+        raise InputError(
+            parameter,
+            f"{text!r}: give the operating temperature in °C (70, 70C) or K (343.15K), "
+            f"{low:g} to {high:g} °C{hint}",
+        )
+    return celsius
+
+
 def _unreadable(text: str, kind: str) -> str:
     """Why ``text`` is no number with a unit, with a hint for the usual slips."""
     if re.match(r"^\s*[+-]?\d*,\d+", text):

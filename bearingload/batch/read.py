@@ -49,6 +49,11 @@ COLUMNS: dict[str, str] = {
     "speed": "speed",
     "reliability": "number",
     "viscosity": "viscosity",
+    "oil": "text",
+    "viscosity_40": "viscosity",
+    "viscosity_100": "viscosity",
+    "viscosity_index": "number",
+    "temperature": "temperature",
     "contamination": "level",
     "ec": "number",
     "fatigue_load_limit": "force",
@@ -59,7 +64,9 @@ COLUMNS: dict[str, str] = {
 }
 #: The operating conditions of the lives (solve's options of the same names; ``eC`` is read as
 #: ``ec``): they feed the lives in hours, a_ISO, the modified lives and the film, never a load.
-SERVICE_COLUMNS = ("speed", "reliability", "viscosity", "contamination", "ec",
+#: The oil columns (``bearings.oil.OIL_INPUTS``) give the viscosity instead of ``viscosity``.
+SERVICE_COLUMNS = ("speed", "reliability", "oil", "viscosity_40", "viscosity_100",
+                   "viscosity_index", "temperature", "viscosity", "contamination", "ec",
                    "fatigue_load_limit", "roughness", "pressure_viscosity")  # fmt: skip
 #: The ranges of the service columns' values, as the command line's options check them:
 #: column -> (low, high, closed at low, what the range is).
@@ -68,6 +75,8 @@ SERVICE_RANGES: dict[str, tuple[float, float, bool, str]] = {
     "fatigue_load_limit": (0.0, float("inf"), False, "must be greater than 0 N"),
     "speed": (0.0, float("inf"), False, "must be greater than 0 rpm"),
     "viscosity": (0.0, float("inf"), False, "must be greater than 0 mm^2/s"),
+    "viscosity_40": (0.0, float("inf"), False, "must be greater than 0 mm^2/s"),
+    "viscosity_100": (0.0, float("inf"), False, "must be greater than 0 mm^2/s"),
     "roughness": (0.0, float("inf"), False, "must be greater than 0 mm"),
     "reliability": (90.0, 99.95, True, "must lie between 90 and 99.95 % (ISO 281 Table 12)"),
     "ec": (0.0, 1.0, True, "e_C must lie between 0 and 1"),
@@ -210,7 +219,12 @@ def _check_header_unit(name: str, unit: str) -> None:
     from bearingload.units import UNITS, parse_quantity, stiffness_factor
 
     kind = unit_kind(COLUMNS[name])
-    if kind == "stiffness":
+    if kind == "temperature":
+        from bearingload.units import TEMPERATURE_UNITS
+
+        if unit not in TEMPERATURE_UNITS:
+            raise InputError(f"{name} [{unit}]", f"allowed units: {', '.join(TEMPERATURE_UNITS)}")
+    elif kind == "stiffness":
         stiffness_factor(unit, None, parameter=f"{name} [{unit}]")
     elif kind in UNITS:
         parse_quantity("1" + unit, kind, parameter=f"{name} [{unit}]")
@@ -366,7 +380,7 @@ class CellParser:
         a fraction of a ball, a number implausible without a unit, infinity)."""
         import numpy as np
 
-        words = ("text", "pick", "ring", "level", "exponent", "tilt_radius", "flag")
+        words = ("text", "pick", "ring", "level", "exponent", "tilt_radius", "flag", "temperature")
         if not texts or self.kind in words:
             return None
         if "_" in "".join(texts):  # numpy reads '1_000' as Python does; the parser refuses it
@@ -424,6 +438,9 @@ class CellParser:
         if kind == "exponent":
             return _exponent(text)
         plain = _plain(name, text)
+        if kind == "temperature":  # °C, K with a unit: the one reading of --temperature
+            suffix = self.unit if self.unit and plain is not None else ""
+            return units.parse_temperature(text + suffix, parameter=name)
         if kind == "tilt_radius":  # groove, pitch or a length, as --tilt-radius reads it
             from bearingload.bearings.tilt import parse_tilt_radius
 

@@ -18,6 +18,7 @@ from collections.abc import Sequence
 from typing import Any
 
 from bearingload.batch.read import Header
+from bearingload.bearings.oil import OIL_INPUTS
 from bearingload.reports.quantities import SERVICE_KEYS, units
 from bearingload.reports.render import Column, Table, csv_block, csv_header, render
 from bearingload.reports.solve import INPUT_KEYS, REPORT_KEYS, column
@@ -85,6 +86,8 @@ SERVICE_OUTPUT = {
 def _service_outputs(header: Header) -> set[str]:
     """The service columns a file with ``header`` writes."""
     names = set(header.names)
+    if names & set(OIL_INPUTS):  # the oil gives the viscosity, and what it feeds
+        names.add("viscosity")
     keys = {k for c, ks in SERVICE_OUTPUT.items() if c in names for k in ks}
     if "viscosity" not in names:  # the modified lives need a_ISO, the film ratio the film
         keys -= {"modified_rating_life_hours", "modified_reference_rating_life_hours",
@@ -93,7 +96,15 @@ def _service_outputs(header: Header) -> set[str]:
 
 
 def batch_columns(header: Header) -> list[Column]:
-    """The output columns for a file with ``header``."""
+    """The output columns for a file with ``header`` (its oil columns, as given, before the
+    operating viscosity they give)."""
+    columns = _columns(header)
+    oil = [column(k) for k in OIL_INPUTS if k in header.names]
+    at = next((i for i, c in enumerate(columns) if c.key == "viscosity"), len(columns))
+    return columns[:at] + oil + columns[at:]
+
+
+def _columns(header: Header) -> list[Column]:
     service = set(SERVICE_KEYS) | {"rating_life_hours", "reference_rating_life_hours"}
     wanted = _service_outputs(header)
     if header.combined:  # the columns of solve's csv with an axial load, every one

@@ -35,6 +35,7 @@ from bearingload.batch.read import (
     read_column,
     row_message,
 )
+from bearingload.bearings.oil import OIL_INPUTS
 from bearingload.errors import BearingloadError, InputError
 
 
@@ -98,6 +99,8 @@ class BatchSolver:
             for start in range(0, len(idx), size):
                 parts += _split(_ENGINES[key[0]], key, idx[start : start + size], cols, bad)
         with_service(parts, cols, bad)
+        for idx, out in parts:  # the oil's cells, written as given (the viscosity is nu's)
+            out |= {c: [cols[c][i] for i in idx] for c in OIL_INPUTS if c in cols}
         for i, message in bad.items():
             errors[numbers[i]] = message
         return _merged(parts, numbers, errors)
@@ -141,6 +144,7 @@ class BatchSolver:
                 ]
             if name in SERVICE_RANGES:
                 _check_range(name, values, bad)
+        with_oil_viscosity(cols, len(rows), bad)
         if "viscosity" in cols:  # nu_1 needs the speed, as solve's --viscosity needs --speed
             speed = cols.get("speed", [None] * len(rows))
             for i, nu in enumerate(cols["viscosity"]):
@@ -273,6 +277,39 @@ class BatchSolver:
         if isinstance(hit, BearingloadError):
             raise hit
         return hit
+
+
+def with_oil_viscosity(cols: dict[str, list[Any]], n: int, bad: dict[int, str]) -> None:
+    """The operating viscosity of each row with an oil cell (:data:`OIL_INPUTS`) into its
+    ``viscosity`` cell, by solve's one rule (:func:`bearingload.bearings.oil.operating_viscosity`,
+    each row on its own, each distinct oil once); a row it refuses, or whose viscosity would
+    have no speed for nu_1, goes to ``bad`` naming the column."""
+    from bearingload.bearings.oil import operating_viscosity
+
+    present = [c for c in OIL_INPUTS if c in cols]
+    if not present:
+        return
+    nu = cols.setdefault("viscosity", [None] * n)
+    speed = cols.get("speed", [None] * n)
+    seen: dict[tuple[Any, ...], tuple[float | None, str | None]] = {}
+    for i in range(n):
+        oil = {c: cols[c][i] for c in present}
+        first = next((c for c in present if oil[c] is not None), None)
+        if i in bad or first is None:
+            continue
+        key = (nu[i], *oil.values())
+        if key not in seen:
+            try:
+                seen[key] = (operating_viscosity(nu[i], **oil)[0], None)
+            except InputError as exc:
+                seen[key] = (None, row_message(exc))
+        value, why = seen[key]
+        if why is None and speed[i] is None:
+            why = f"{first}: needs the shaft speed (a speed cell) for the rated viscosity nu_1"
+        if why is None:
+            nu[i] = value
+        else:
+            bad[i] = why
 
 
 def _hand_angular(v: dict[str, Any], b: Any) -> Any:

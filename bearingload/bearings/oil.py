@@ -268,3 +268,120 @@ def viscosity_100_of_index(nu_40: ArrayLike, index: ArrayLike) -> Any:
         if np.all(hi - lo <= 4.0 * np.finfo(float).eps * hi):
             break
     return scalar_out(0.5 * (lo + hi))
+
+
+#: The inputs that give the operating viscosity from the oil instead of the viscosity itself:
+#: ``solve``'s options and ``batch``'s columns of these names (:func:`operating_viscosity`).
+OIL_INPUTS = ("oil", "viscosity_40", "viscosity_100", "viscosity_index", "temperature")
+
+
+class OilInputError(InputError):
+    """An oil input refused for what is given with it (:func:`operating_viscosity`).
+
+    Attributes
+    ----------
+    kind : str
+        ``"conflict"``: ``parameter`` cannot be used with ``other``; ``"missing"``:
+        ``parameter`` is needed; ``"choice"``: one of ``parameters`` is needed, not both.
+    parameters : tuple of str
+        The inputs named (``parameter`` is the first).
+    other : str or None
+        The input it conflicts with.
+    why : str
+        The reason; other inputs are named in quotes (``'temperature'``).
+    """
+
+    def __init__(
+        self, kind: str, parameters: tuple[str, ...], why: str, other: str | None = None
+    ) -> None:
+        self.kind, self.parameters, self.other, self.why = kind, parameters, other, why
+        text = {"conflict": f"cannot be used with '{other}': {why}", "missing": f"missing: {why}"}
+        super().__init__(" / ".join(parameters), text.get(kind, why))
+        self.parameter = parameters[0]
+
+
+def operating_viscosity(
+    viscosity: float | None = None,
+    *,
+    oil: str | None = None,
+    viscosity_40: float | None = None,
+    viscosity_100: float | None = None,
+    viscosity_index: float | None = None,
+    temperature: float | None = None,
+) -> tuple[float | None, str | None]:
+    """The operating viscosity of one case, given or from its oil, and a note saying how: the
+    one rule of ``solve``'s options and ``batch``'s columns (:data:`OIL_INPUTS`). [mm^2/s]
+
+    ``viscosity`` given, it is the answer (no oil input allowed beside it). Otherwise the oil is
+    its ISO 3448 grade ``oil`` (nu_40 its mid-point) or its ``viscosity_40``, one of the two,
+    at ``temperature`` [°C] (needed); nu_100 is ``viscosity_100``, else that of the viscosity
+    index (``viscosity_index``, default :data:`DEFAULT_VISCOSITY_INDEX`) by ASTM D2270
+    (:func:`viscosity_100_of_index`), not both; nu by ASTM D341 (:func:`viscosity_at`). No
+    input at all: (None, None).
+
+    >>> nu, note = operating_viscosity(oil="VG68", viscosity_100=8.6, temperature=70.0)
+    >>> round(nu, 2)
+    19.97
+
+    Raises
+    ------
+    OilInputError
+        A combination refused (``kind`` says how).
+    InputError
+        An oil input out of its domain (an unknown grade, a VI the oil cannot have ...).
+    """
+    given = {"oil": oil, "viscosity_40": viscosity_40, "viscosity_100": viscosity_100,
+             "viscosity_index": viscosity_index, "temperature": temperature}  # fmt: skip
+    first = next((n for n in OIL_INPUTS if given[n] is not None), None)
+    if viscosity is not None or first is None:
+        if first is not None:
+            why = "give the viscosity at the operating temperature, or the oil and its temperature"
+            raise OilInputError("conflict", (first,), why, other="viscosity")
+        return viscosity, None
+    if (oil is None) == (viscosity_40 is None):
+        raise OilInputError("choice", ("oil", "viscosity_40"), (
+            "give the oil by its ISO 3448 grade ('oil' VG68) or by its viscosity at 40 °C "
+            "('viscosity_40'), one of the two, with 'temperature'"))  # fmt: skip
+    if temperature is None:
+        raise OilInputError("missing", ("temperature",), "the oil's viscosity at the operating "
+                            "temperature follows (ASTM D341) from its viscosities at 40 and 100 °C")  # fmt: skip
+    if viscosity_100 is not None and viscosity_index is not None:
+        why = "the viscosity index gives the viscosity at 100 °C; give one of the two"
+        raise OilInputError("conflict", ("viscosity_index",), why, other="viscosity_100")
+    nu40 = iso_grade(oil) if oil is not None else float(viscosity_40)  # type: ignore[arg-type]
+    if viscosity_100 is not None:
+        nu100, how = float(viscosity_100), ""
+    else:
+        index = DEFAULT_VISCOSITY_INDEX if viscosity_index is None else float(viscosity_index)
+        nu100 = _viscosity_100_of(nu40, index, given=viscosity_index is not None)
+        which = "given" if viscosity_index is not None else (
+            "default, a mineral oil; 'viscosity_index' to give it")  # fmt: skip
+        how = f" (derived by ASTM D2270 from VI {index:g}, {which})"
+    nu = float(viscosity_at(nu40, nu100, temperature))
+    if oil is not None:
+        grade = oil.upper().replace("ISO", "").replace("VG", "").strip()
+        source = f"ISO VG {grade} (nu_40 = {nu40:g} mm^2/s, the grade's mid-point; +-10 %)"
+    else:
+        source = f"nu_40 = {nu40:g} mm^2/s"
+    return nu, (
+        f"nu = {nu:.4g} mm^2/s at {temperature:g} °C: ASTM D341 (Walther, log log(nu + 0.7) = "
+        f"A - B log T) through {source} and nu_100 = {nu100:.4g} mm^2/s{how}."
+    )
+
+
+@functools.lru_cache(maxsize=4096)
+def _viscosity_100_of(nu_40: float, index: float, *, given: bool) -> float:
+    """nu_100 of an oil of ``nu_40`` and VI ``index`` (:func:`viscosity_100_of_index`, one oil
+    at a time, kept: a batch file repeats its oils); the default VI refused in words that say it
+    was the default. [mm^2/s]"""
+    try:
+        return float(viscosity_100_of_index(nu_40, index))
+    except InputError as exc:
+        if given or exc.parameter != "viscosity_index":
+            raise
+        why = str(exc).split(": ", 1)[-1]
+        raise InputError(
+            "viscosity_index",
+            f"the default VI {index:g} (a mineral oil) does not fit this oil: {why}; give its "
+            "'viscosity_100' or 'viscosity_index'",
+        ) from exc

@@ -60,7 +60,9 @@ def batch(
 
     The operating conditions of the lives are columns named like solve's options
     (static_rating, speed, reliability, viscosity, contamination, eC, fatigue_load_limit,
-    roughness, pressure_viscosity; docs/batch.md). As 'solve --speed', a combined row with a
+    roughness, pressure_viscosity; docs/batch.md); the oil may give the viscosity instead, by
+    solve's rules: oil (an ISO grade, VG68) or viscosity_40, with temperature (bare: °C; K), and
+    viscosity_100 or viscosity_index (default 95). As 'solve --speed', a combined row with a
     speed is solved with each ball's centrifugal force and gyroscopic moment (docs/speed.md):
     quasi_static (true or false; blank: false) true keeps the static model, the speed then
     giving the lives in hours only; ball_density (kg/m^3, bare numbers; default bearing steel

@@ -31,6 +31,8 @@ from bearingload.cli.options import (
     LibraryArgument,
     LibraryOption,
     Quantity,
+    option_message,
+    option_name,
     units_help,
     usage_error,
 )
@@ -86,35 +88,19 @@ class Clearance(click.ParamType):
 
 
 class Temperature(click.ParamType):
-    """A temperature: a bare number or ``C``/``°C`` is degrees Celsius, ``K`` kelvin."""
+    """A temperature, read by :func:`bearingload.units.parse_temperature` (°C; ``K`` kelvin)."""
 
     name = "TEMPERATURE [°C]"
 
     def convert(self, value: Any, param: click.Parameter | None, ctx: click.Context | None) -> Any:
-        import re
+        from bearingload.units import parse_temperature
 
         if isinstance(value, float):
             return value
-        match = re.fullmatch(r"\s*([-+]?[0-9.]+(?:e[-+]?\d+)?)\s*(°C|C|degC|K)?\s*", str(value))
         try:
-            number = float(match.group(1)) if match else float("nan")
-        except ValueError:
-            number = float("nan")
-        celsius = number - 273.15 if match and match.group(2) == "K" else number
-        if not -60.0 <= celsius <= 250.0:
-            as_kelvin = number - 273.15  # a bare number meant in kelvin, where that fits
-            hint = (
-                f"; did you mean {number:g}K ({as_kelvin:g} °C)?"
-                if match and match.group(2) is None and -60.0 <= as_kelvin <= 250.0
-                else ""
-            )
-            self.fail(
-                f"{value!r}: give the operating temperature in °C (70, 70C) or K (343.15K), "
-                f"-60 to 250 °C{hint}",
-                param,
-                ctx,
-            )
-        return celsius
+            return parse_temperature(value)
+        except InputError as exc:
+            self.fail(str(exc).split(": ", 1)[-1], param, ctx)
 
 
 class TiltRadius(click.ParamType):
@@ -678,68 +664,28 @@ class CaseOptions:
         )
 
     def oil_viscosity(self) -> tuple[float | None, str | None]:
-        """The operating viscosity [mm^2/s]: --viscosity, or that of the oil (--oil or
-        --viscosity-40, --viscosity-100) at --temperature by ASTM D341; and a note saying how."""
-        if self.viscosity is not None:
-            why = "give the viscosity at the operating temperature, or the oil and its temperature"
-            self.refuse(OIL_PARAMS, "--viscosity", why)
-        if all(getattr(self, n) is None for n in OIL_PARAMS):
-            return self.viscosity, None
-        from bearingload.bearings.oil import iso_grade, viscosity_at
+        """The operating viscosity [mm^2/s] and a note saying how, by the one rule of the oil
+        options and batch's columns (:func:`bearingload.bearings.oil.operating_viscosity`):
+        --viscosity, or that of the oil (--oil or --viscosity-40, --viscosity-100 or
+        --viscosity-index) at --temperature by ASTM D341."""
+        from bearingload.bearings.oil import OilInputError, operating_viscosity
 
-        if (self.oil is None) == (self.viscosity_40 is None):
-            raise click.UsageError(
-                "Invalid value for '--oil' / '--viscosity-40': give the oil by its ISO 3448 grade "
-                "(--oil VG68) or by its viscosity at 40 °C (--viscosity-40), one of the two, with "
-                "--temperature"
-            )
-        if self.temperature is None:
-            raise click.UsageError(
-                "Missing option '--temperature': the oil's viscosity at the operating "
-                "temperature follows (ASTM D341) from its viscosities at 40 and 100 °C"
-            )
-        if self.viscosity_100 is not None:
-            why = "the viscosity index gives the viscosity at 100 °C; give one of the two"
-            self.refuse(["viscosity_index"], "--viscosity-100", why)
+        oil = {n: getattr(self, n) for n in OIL_PARAMS}
         try:
-            nu40 = iso_grade(self.oil) if self.oil is not None else self.viscosity_40
-            assert nu40 is not None
-            nu100, how = self._viscosity_100(nu40)
-            nu = float(viscosity_at(nu40, nu100, self.temperature))
+            nu, note = operating_viscosity(self.viscosity, **oil)
+        except OilInputError as exc:
+            why = option_message(exc.why)
+            names = " / ".join(f"'{option_name(p)}'" for p in exc.parameters)
+            if exc.kind == "conflict":
+                assert exc.other is not None
+                first = option_name(exc.parameter)
+                raise click.UsageError(f"{first} cannot be used with {option_name(exc.other)}: "
+                                       f"{why}") from exc  # fmt: skip
+            head = "Missing option" if exc.kind == "missing" else "Invalid value for"
+            raise click.UsageError(f"{head} {names}: {why}") from exc
         except InputError as exc:
             raise usage_error(exc) from exc
-        if self.oil is not None:
-            grade = self.oil.upper().replace("ISO", "").replace("VG", "").strip()
-            source = f"ISO VG {grade} (nu_40 = {nu40:g} mm^2/s, the grade's mid-point; +-10 %)"
-        else:
-            source = f"nu_40 = {nu40:g} mm^2/s"
-        return nu, (
-            f"nu = {nu:.4g} mm^2/s at {self.temperature:g} °C: ASTM D341 (Walther, log log(nu + "
-            f"0.7) = A - B log T) through {source} and nu_100 = {nu100:.4g} mm^2/s{how}."
-        )
-
-    def _viscosity_100(self, nu_40: float) -> tuple[float, str]:
-        """nu_100 [mm^2/s]: --viscosity-100, else that of the VI (--viscosity-index, default
-        95) by ASTM D2270; and the words saying which."""
-        if self.viscosity_100 is not None:
-            return self.viscosity_100, ""
-        from bearingload.bearings.oil import DEFAULT_VISCOSITY_INDEX, viscosity_100_of_index
-
-        given = self.viscosity_index is not None
-        index = DEFAULT_VISCOSITY_INDEX if self.viscosity_index is None else self.viscosity_index
-        try:
-            nu100 = float(viscosity_100_of_index(nu_40, index))
-        except InputError as exc:
-            if given or exc.parameter != "viscosity_index":
-                raise
-            why = str(exc).split(": ", 1)[-1]
-            raise InputError(
-                "viscosity_index",
-                f"the default VI {index:g} (a mineral oil) does not fit this oil: {why}; give its "
-                "--viscosity-100 or --viscosity-index",
-            ) from exc
-        which = "given" if given else "default, a mineral oil; --viscosity-index to give it"
-        return nu100, f" (derived by ASTM D2270 from VI {index:g}, {which})"
+        return nu, None if note is None else option_message(note)
 
     def dynamics_arguments(self) -> dict[str, Any]:
         """The ball dynamics of :func:`bearingload.studies.combined_bearing.solve_combined_bearing`:

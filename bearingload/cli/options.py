@@ -148,7 +148,7 @@ def option_message(message: str) -> str:
         param = _parameter(match.group(1))
         return match.group(0) if param is None else f"'{_shown(param)}'"
 
-    return re.sub(r"'([a-z_]+)'", swap, message)
+    return re.sub(r"'([a-z_][a-z0-9_]*)'", swap, message)
 
 
 def usage_error(exc: InputError) -> click.UsageError:

@@ -162,6 +162,12 @@ QUANTITIES: dict[str, Quantity] = {
         Quantity("reference_rating_life_hours", "reference rating life L10rh", "h"),
         Quantity("reliability", "reliability", "%", 4),
         Quantity("reliability_factor", "life factor for reliability a_1 (ISO 281)", "-", 4),
+        # the oil that gives nu at its temperature (bearings.oil; batch writes them as given)
+        Quantity("oil", "ISO 3448 grade of the oil", "", None),
+        Quantity("viscosity_40", "viscosity of the oil at 40 °C nu_40", "mm^2/s"),
+        Quantity("viscosity_100", "viscosity of the oil at 100 °C nu_100", "mm^2/s"),
+        Quantity("viscosity_index", "viscosity index VI of the oil (ASTM D2270)", "-", 4),
+        Quantity("temperature", "operating temperature of the oil", "°C", 4),
         Quantity("viscosity", "operating viscosity nu", "mm^2/s"),
         Quantity("rated_viscosity", "rated viscosity nu_1 (ISO 281)", "mm^2/s"),
         Quantity("kappa", "viscosity ratio kappa = nu/nu_1", "-", 4),
