@@ -114,11 +114,7 @@ class CageSweep:
 
     def hours(self, life: Any) -> Any:
         """``life`` [10^6 rev] in hours at :attr:`speed` (None without a speed or a life). [h]"""
-        if self.speed is None or life is None:
-            return None
-        from bearingload.bearings.modified_life import life_hours
-
-        return life_hours(life, self.speed)
+        return hours_at(life, self.speed)
 
     def values(self, name: str) -> Any:
         """The per-position values of ``name``: the spread quantities, ``reference_rating_life``
@@ -143,6 +139,21 @@ class CageSweep:
         if values is None:
             raise InputError("name", f"must be one of {', '.join(allowed)} (where computed)")
         return spread_of(values)
+
+
+def hours_at(life: Any, speed: float | None) -> Any:
+    """``life`` [10^6 rev] in hours at the shaft ``speed`` [r/min], L 10^6/(60 n), as
+    :func:`bearingload.bearings.modified_life.life_hours` gives it; None without a speed or a
+    life (the one conversion of the cage sweeps, radial and combined). [h]
+
+    >>> float(hours_at(60.0, 1000.0)), hours_at(None, 1000.0), hours_at(60.0, None)
+    (1000.0, None, None)
+    """
+    if speed is None or life is None:
+        return None
+    from bearingload.bearings.modified_life import life_hours
+
+    return life_hours(life, speed)
 
 
 def spread_of(values: Any, scale: float | None = None) -> Spread:
