@@ -80,6 +80,10 @@ PLAUSIBLE_BARE: dict[tuple[str, str | None], tuple[float, float, str]] = {
     # operating viscosities of oils and greases' base oils: 1 (water-like) to 1e5 mm^2/s (a cold
     # gear oil); a bare 6.8e-5 is m^2/s meant
     ("viscosity", None): (0.1, 1e6, "an operating kinematic viscosity"),
+    # the datasheet's viscosities of an oil at 40 and 100 °C: the same range (ISO VG 2 is 2.2 at
+    # 40 °C, VG 3200 3200), named for what they are: not the operating viscosity nu
+    ("viscosity", "viscosity_40"): (0.1, 1e6, "an oil's kinematic viscosity at 40 °C"),
+    ("viscosity", "viscosity_100"): (0.1, 1e6, "an oil's kinematic viscosity at 100 °C"),
 }
 
 

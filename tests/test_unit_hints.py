@@ -182,3 +182,20 @@ def test_the_lower_bound_printed_for_a_roughness_is_one_it_accepts(capsys):
     assert code == 2 and "plausible above 0 and below 0.01 mm" in err, err
     code, out, err = run_entry(capsys, *base, "0")
     assert code == 2 and "greater than 0" in err, err
+
+
+@pytest.mark.parametrize(
+    ("option", "what"),
+    [("--viscosity", "an operating kinematic viscosity"),
+     ("--viscosity-40", "an oil's kinematic viscosity at 40 °C"),
+     ("--viscosity-100", "an oil's kinematic viscosity at 100 °C")],
+)  # fmt: skip
+def test_each_viscosity_is_named_for_what_it_is(capsys, option, what):
+    """A bare 1e7 --viscosity-40 was 'implausible for an operating kinematic viscosity': nu_40 is
+    the oil's viscosity at 40 °C (its datasheet's), nu at the operating temperature is another."""
+    oil = ["--oil", "VG68"] if option == "--viscosity-100" else []
+    args = ["solve", "6205", "-F", "1kN", "--speed", "3000", *oil, option, "1e7"]
+    code, out, err = run_entry(capsys, *args, "--temperature", "60")
+    assert code == 2 and out == "" and err.count("\n") == 1, err
+    assert f"implausible for {what} (" in err, err
+    assert ("operating" in err) == (option == "--viscosity"), err
