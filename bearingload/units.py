@@ -102,11 +102,22 @@ HINT_UNITS = {
 }
 
 
+#: Where a hinted reading must fall, per kind, where narrower than :data:`PLAUSIBLE_BARE`: a unit
+#: is suggested only where it makes the number a usual value, not a merely possible one. [base]
+HINT_RANGE = {
+    # oils in service and their datasheet viscosities at 40 and 100 °C (ISO VG 2 to 3200): 1 to
+    # 1e4 mm^2/s, written 1e-6 to 1e-2 in m^2/s; a bare 0.05 read as m^2/s would be 5e4 mm^2/s,
+    # an oil near its pour point, so no unit is suggested for it
+    "viscosity": (1.0, 1e4),
+}
+
+
 def likely_unit(value: float, kind: str, name: str) -> str | None:
     """``value`` written with the first unit of :data:`HINT_UNITS` that makes it plausible for
-    the parameter ``name`` (``210GPa``), or None where no unit does (a bare speed of 1e9: every
-    speed unit is larger than rpm)."""
+    the parameter ``name`` (``210GPa``) and, for the kinds of :data:`HINT_RANGE`, a usual value,
+    or None where no unit does (a bare speed of 1e9: every speed unit is larger than rpm)."""
     low, high, _ = PLAUSIBLE_BARE.get((kind, name)) or PLAUSIBLE_BARE[(kind, None)]
+    low, high = HINT_RANGE.get(kind, (low, high))
     for unit in HINT_UNITS.get(kind, ()):
         if low <= value * UNITS[kind][unit] < high:
             return f"{value:g}{unit}"

@@ -9,7 +9,7 @@ import math
 import pytest
 
 from bearingload.errors import InputError
-from bearingload.units import UNITS, parse_cage_angle, parse_quantity
+from bearingload.units import HINT_RANGE, UNITS, parse_cage_angle, parse_quantity
 
 from .cli_helpers import invoke, run_entry
 
@@ -113,7 +113,7 @@ IMPLAUSIBLE = [
     ("--modulus", "210"), ("--modulus", "2.1e11"), ("--modulus", "1e20"), ("--modulus", "10"),
     ("--speed", "1e6"), ("--speed", "1e9"),
     ("--viscosity", "1e6"), ("--viscosity", "1e7"), ("--viscosity", "1e-5"),
-    ("--viscosity", "1e-9"), ("--viscosity", "0.05"),
+    ("--viscosity", "1e-9"), ("--viscosity", "0.05"), ("--viscosity", "0.009"),
     ("--roughness", "0.2"), ("--roughness", "50"),
 ]  # fmt: skip
 KIND = {"--clearance": ("length", "clearance"), "--modulus": ("modulus", "modulus"),
@@ -139,13 +139,14 @@ def test_a_unit_hint_names_a_unit_that_makes_the_number_plausible_or_none(capsys
     assert not low <= float(bare) < high  # the range printed excludes what was refused
     kind, name = KIND[option]
     hint = re.search(r"did you mean (\S+)\?", err)
+    usual = HINT_RANGE.get(kind, (low, high))  # where a hinted reading must fall
     if hint is None:
-        assert all(not low <= float(bare) * factor < high for factor in UNITS[kind].values()), (
-            err
-        )  # no unit of the kind makes it plausible
+        assert all(
+            not usual[0] <= float(bare) * factor < usual[1] for factor in UNITS[kind].values()
+        ), err  # no unit of the kind makes it plausible (a usual value, for a viscosity)
         return
     value = parse_quantity(hint.group(1), kind, parameter=name)
-    assert low <= value < high, err
+    assert low <= value < high and usual[0] <= value < usual[1], err
     code, _, err = run_entry(capsys, *base, option, hint.group(1))
     assert code == 0, err  # what the hint says is a case solve solves
 
@@ -199,3 +200,21 @@ def test_each_viscosity_is_named_for_what_it_is(capsys, option, what):
     assert code == 2 and out == "" and err.count("\n") == 1, err
     assert f"implausible for {what} (" in err, err
     assert ("operating" in err) == (option == "--viscosity"), err
+
+
+@pytest.mark.parametrize(
+    ("option", "bare", "hint"),
+    [("--viscosity", "0.05", None), ("--viscosity", "0.02", None),
+     ("--viscosity", "6.8e-5", "6.8e-05m^2/s"), ("--viscosity", "0.009", "0.009m^2/s"),
+     ("--viscosity-40", "0.05", None), ("--viscosity-40", "6.8e-5", "6.8e-05m^2/s")],
+)  # fmt: skip
+def test_a_viscosity_hint_is_a_usual_viscosity(capsys, option, bare, hint):
+    """A bare --viscosity 0.05 got 'did you mean 0.05m^2/s?': 5e4 mm^2/s, an oil near its pour
+    point, no likely reading of 0.05 (the plausible range goes to 1e6 mm^2/s only to refuse no
+    real oil). A hint now reads the number as a usual viscosity, 1 to 1e4 mm^2/s, or there is
+    none; the bare unit is mm^2/s (= cSt), never suggested."""
+    temperature = ["--temperature", "60"] if option == "--viscosity-40" else []
+    args = ["solve", "6205", "-F", "1kN", "--speed", "3000", option, bare, *temperature]
+    code, out, err = run_entry(capsys, *args)
+    assert code == 2 and out == "" and err.count("\n") == 1, err
+    assert (f"did you mean {hint}?" in err) if hint else ("did you mean" not in err), err
