@@ -88,9 +88,15 @@ PLAUSIBLE_BARE: dict[tuple[str, str | None], tuple[float, float, str]] = {
 
 
 def plausible_ranges_help(kind: str, parameter: str | None = None) -> str:
-    """The plausible range of a bare number, for --help."""
+    """The bare numbers refused as implausible, for --help, in the words of the refusal: the
+    lower bound is accepted, the upper one refused.
+
+    >>> plausible_ranges_help("length", "clearance")
+    'a bare number below -1 mm or of 1 mm or more is refused'
+    """
     low, high, _ = PLAUSIBLE_BARE[(kind, parameter)]
-    return f"a bare number outside {low:g} to {high:g} {BASE_UNIT[kind]} is refused"
+    unit = BASE_UNIT[kind]
+    return f"a bare number below {low:g} {unit} or of {high:g} {unit} or more is refused"
 
 
 #: The units a bare, implausible number may have been meant in, most likely first, per kind

@@ -218,3 +218,29 @@ def test_a_viscosity_hint_is_a_usual_viscosity(capsys, option, bare, hint):
     code, out, err = run_entry(capsys, *args)
     assert code == 2 and out == "" and err.count("\n") == 1, err
     assert (f"did you mean {hint}?" in err) if hint else ("did you mean" not in err), err
+
+
+@pytest.mark.parametrize(
+    ("option", "kind", "parameter"),
+    [("--clearance", "length", "clearance"), ("--modulus", "modulus", "modulus")],
+)
+def test_the_help_states_exactly_the_bare_numbers_refused(option, kind, parameter):
+    """--clearance's help said 'a bare number of 1 mm or more is refused', yet -3 is refused
+    too; --modulus's said 'outside 1000 to 1e7 MPa', yet 1e7 itself is refused. The help now
+    names both bounds as the refusal applies them: the lower one accepted, the upper refused."""
+    import re
+
+    text = " ".join(invoke("solve", "--help").output.split())
+    unit = {"length": "mm", "modulus": "MPa"}[kind]
+    bounds = re.search(
+        rf"{option}.*?a bare number below (\S+) {unit} or of (\S+) {unit} or more is refused",
+        text,
+        flags=re.IGNORECASE,
+    )
+    assert bounds is not None, text
+    low, high = map(float, bounds.groups())
+    assert parse_quantity(repr(low), kind, parameter=parameter) == low
+    assert parse_quantity(repr(high * (1 - 1e-9)), kind, parameter=parameter) < high
+    for refused in (low - abs(low) * 1e-9 - 1e-12, high):
+        with pytest.raises(InputError, match="implausible"):
+            parse_quantity(repr(refused), kind, parameter=parameter)
