@@ -115,10 +115,12 @@ IMPLAUSIBLE = [
     ("--viscosity", "1e6"), ("--viscosity", "1e7"), ("--viscosity", "1e-5"),
     ("--viscosity", "1e-9"), ("--viscosity", "0.05"), ("--viscosity", "0.009"),
     ("--roughness", "0.2"), ("--roughness", "50"),
+    ("--revolutions", "1e-308"), ("--revolutions", "36"), ("--revolutions", "1e20"),
 ]  # fmt: skip
 KIND = {"--clearance": ("length", "clearance"), "--modulus": ("modulus", "modulus"),
         "--speed": ("speed", "speed"), "--viscosity": ("viscosity", "viscosity"),
-        "--roughness": ("length", "roughness")}  # fmt: skip
+        "--roughness": ("length", "roughness"),
+        "--revolutions": ("revolutions", "revolutions")}  # fmt: skip
 
 
 @pytest.mark.parametrize(("option", "bare"), IMPLAUSIBLE)
@@ -244,3 +246,29 @@ def test_the_help_states_exactly_the_bare_numbers_refused(option, kind, paramete
     for refused in (low - abs(low) * 1e-9 - 1e-12, high):
         with pytest.raises(InputError, match="implausible"):
             parse_quantity(repr(refused), kind, parameter=parameter)
+
+
+def test_implausible_revolutions_are_refused_with_the_likely_unit(capsys):
+    """--revolutions 1e-308 was taken (1e-314 x 10^6 rev) and gave an allowable load of
+    6.5e108 N; a bare 36 (Kuzmenko's N = 36 x 10^6 rev) gave 30 C. A bare life outside 1e5 to
+    1e15 rev is refused in one line, with the unit that makes it plausible (Mrev = 10^6 rev),
+    and the number with its unit is the case solve solves."""
+    import re
+
+    base = ["solve", "6205", "-F", "1kN", "--format", "json"]
+    for bare, hint in (("1e-308", None), ("36", "36Mrev"), ("1e20", None), ("99999", "99999Mrev")):
+        code, out, err = run_entry(capsys, *base, "--revolutions", bare)
+        assert code == 2 and out == "" and err.count("\n") == 1, err
+        assert err.startswith("Error: Invalid value for '--revolutions': a bare ") and (
+            "plausible at least 100000 and below 1e+15 rev" in err
+        ), err
+        assert (f"did you mean {hint}?" in err) if hint else ("did you mean" not in err), err
+    allowable = []
+    for given in ("36Mrev", "36e6", "3.6e7rev", "1e5"):
+        code, out, err = run_entry(capsys, *base, "--revolutions", given)
+        assert code == 0, err
+        allowable.append(json.loads(out)["cases"][0]["allowable_load"])
+    assert allowable[0] == allowable[1] == allowable[2] == pytest.approx(14000 / 36 ** (1 / 3))
+    assert allowable[3] == pytest.approx(14000 / 0.1 ** (1 / 3))
+    code, _, err = run_entry(capsys, *base, "--revolutions", "1e303Mrev")
+    assert code == 2 and re.search(r"'1e303Mrev' overflows", err), err
