@@ -81,6 +81,9 @@ class CageSweep:
         The ring rotating relative to the load, of ``reference_rating_life``.
     speed : float or None
         Shaft speed for the lives in hours. [rpm]
+    warnings : tuple of str
+        The checks of ``solve`` on the bearing over the pitch (:func:`bearing_checks`); the
+        one-loaded-ball finding, per cage angle, is the report's.
     """
 
     balls: int
@@ -102,6 +105,7 @@ class CageSweep:
     life_exponent: float = 3.0
     rotating: str | None = None
     speed: float | None = None
+    warnings: tuple[str, ...] = ()
 
     @property
     def rating_life(self) -> float | None:
@@ -139,6 +143,28 @@ class CageSweep:
         if values is None:
             raise InputError("name", f"must be one of {', '.join(allowed)} (where computed)")
         return spread_of(values)
+
+
+def bearing_checks(bearing: Any, s: CageSweep) -> tuple[str, ...]:
+    """The checks ``solve`` makes on a bearing's case
+    (:func:`bearingload.bearings.checks.case_warnings`: static safety s0 = C0/F_r and F_r above
+    C0, the contact pressure, the clearance beyond ISO 5753-1's classes or the preload beyond
+    this package's bound), over the pitch: the pressure at its heaviest ball load. The finding
+    of one loaded ball is left to the report, which names the cage angles where it holds.
+
+    Parameters
+    ----------
+    bearing : ResolvedBearing
+        The bearing swept (its C0, geometry and clearance).
+    s : CageSweep
+        The sweep of that bearing under its radial load.
+    """
+    from types import SimpleNamespace
+
+    from bearingload.bearings.checks import case_warnings
+
+    heaviest = SimpleNamespace(q_max=float(np.max(s.q_max)), loaded_balls=None)
+    return tuple(case_warnings(bearing, s.load, heaviest))
 
 
 def hours_at(life: Any, speed: float | None) -> Any:
