@@ -268,5 +268,5 @@ def sweep_warnings(s: CageSweep) -> list[str]:
         *s.warnings,
         f"only one ball carries the load at {one.sum()} of {one.size} cage angles "
         f"({angles.min():.6g}° to {angles.max():.6g}°): the result hangs on a single contact "
-        "(large clearance or few elements); check the clearance"
+        "(large clearance or few elements); check the clearance",
     ]
