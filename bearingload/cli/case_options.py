@@ -734,10 +734,14 @@ class CaseOptions:
             if given or exc.parameter != "viscosity_index":
                 raise
             why = str(exc).split(": ", 1)[-1]
+            from bearingload.bearings.oil import D2270_RISING_FROM
+
+            give = "--viscosity-100" + (" or --viscosity-index" if nu_40 >= D2270_RISING_FROM
+                                        else "")  # fmt: skip
             raise InputError(
                 "viscosity_index",
                 f"the default VI {index:g} (a mineral oil) does not fit this oil: {why}; give its "
-                "--viscosity-100 or --viscosity-index",
+                f"{give}",
             ) from exc
         which = "given" if given else "default, a mineral oil; --viscosity-index to give it"
         return nu100, f" (derived by ASTM D2270 from VI {index:g}, {which})"
