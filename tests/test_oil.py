@@ -328,3 +328,21 @@ def test_an_oil_whose_vi_fixes_no_nu100_is_one_error_line(capsys):
     assert code == 2 and "viscosity-100" in err  # nu_100 must be below nu_40
     code, out, err = run_entry(capsys, *args, "--viscosity-40", "3", "--viscosity-100", "2.2")
     assert code == 0, err
+
+
+@pytest.mark.parametrize(
+    ("nu_40", "nu_100", "name", "celsius", "got"),
+    [(1.5, 1.0, "viscosity_40", 40, "1.5"), (68.0, 1.5, "viscosity_100", 100, "1.5")],
+)
+def test_a_viscosity_walther_does_not_cover_is_named_for_its_temperature(
+    nu_40, nu_100, name, celsius, got
+):
+    """--viscosity-40 1.5 --viscosity-100 1.0 was refused as a bad '--viscosity-100' with 'got
+    1.5 and 1.0' (which is which?): the viscosity outside the Walther form's range is named,
+    with its temperature and its value."""
+    with pytest.raises(InputError) as info:
+        viscosity_at(nu_40, nu_100, 60.0)
+    assert info.value.parameter == name
+    assert f"the oil's viscosity at {celsius} °C to be 2 mm^2/s or more; got {got} mm^2/s" in str(
+        info.value
+    )

@@ -141,6 +141,13 @@ def viscosity_at(nu_40: ArrayLike, nu_100: ArrayLike, temperature: ArrayLike) ->
             f"must be below the viscosity at 40 °C (an oil thins as it warms); got {n100} "
             f"against {n40} mm^2/s",
         )
+    for name, nu, celsius in (("viscosity_40", n40, 40), ("viscosity_100", n100, 100)):
+        if not np.all(np.isfinite(nu) & (nu >= WALTHER_MIN)):  # named for what it is
+            raise InputError(
+                name,
+                f"ASTM D341's Walther form needs the oil's viscosity at {celsius} °C to be "
+                f"{WALTHER_MIN:g} mm^2/s or more; got {_shown(nu)} mm^2/s",
+            )
     t = np.asarray(temperature, dtype=float) + ZERO_CELSIUS
     a, b = walther_constants(n40, 40.0 + ZERO_CELSIUS, n100, 100.0 + ZERO_CELSIUS)
     nu = np.asarray(walther_viscosity(a, b, t), dtype=float)
@@ -149,10 +156,16 @@ def viscosity_at(nu_40: ArrayLike, nu_100: ArrayLike, temperature: ArrayLike) ->
         raise InputError(
             "temperature",
             f"ASTM D341's Walther form covers {WALTHER_MIN:g} mm^2/s or more and finite; at "
-            f"{np.asarray(temperature, dtype=float)} °C it gives {nu} mm^2/s for this oil: give "
-            "a temperature where it stays in that range, or the operating viscosity itself",
+            f"{_shown(temperature)} °C it gives {_shown(nu)} mm^2/s for this oil: give a "
+            "temperature where it stays in that range, or the operating viscosity itself",
         )
     return scalar_out(nu)
+
+
+def _shown(values: ArrayLike) -> str:
+    """One value to 6 digits, or the array as numpy prints it (a message's number)."""
+    v = np.asarray(values, dtype=float)
+    return f"{float(v):.6g}" if v.size == 1 else str(v)
 
 
 def walther_viscosity(a: ArrayLike, b: ArrayLike, temperature: ArrayLike) -> Any:
