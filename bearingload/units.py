@@ -52,6 +52,8 @@ UNITS: dict[str, dict[str, float]] = {
     },
     # kinematic viscosity of the lubricant (1 cSt = 1 mm^2/s)
     "viscosity": {"mm^2/s": 1.0, "mm²/s": 1.0, "cSt": 1.0, "m^2/s": 1e6, "m²/s": 1e6},
+    # a life in revolutions; ISO 281 counts lives in millions of them (Mrev = 10^6 rev)
+    "revolutions": {"rev": 1.0, "Mrev": 1e6},
 }
 
 #: The unit a bare number is taken in, per kind.
@@ -64,6 +66,7 @@ BASE_UNIT = {
     "angle": "°",
     "speed": "rpm",
     "viscosity": "mm^2/s",
+    "revolutions": "rev",
 }
 
 #: Plausible ranges of a BARE number (no unit) per (kind, parameter); outside, the number is
@@ -80,13 +83,27 @@ PLAUSIBLE_BARE: dict[tuple[str, str | None], tuple[float, float, str]] = {
     # operating viscosities of oils and greases' base oils: 1 (water-like) to 1e5 mm^2/s (a cold
     # gear oil); a bare 6.8e-5 is m^2/s meant
     ("viscosity", None): (0.1, 1e6, "an operating kinematic viscosity"),
+    # the datasheet's viscosities of an oil at 40 and 100 °C: the same range (ISO VG 2 is 2.2 at
+    # 40 °C, VG 3200 3200), named for what they are: not the operating viscosity nu
+    ("viscosity", "viscosity_40"): (0.1, 1e6, "an oil's kinematic viscosity at 40 °C"),
+    ("viscosity", "viscosity_100"): (0.1, 1e6, "an oil's kinematic viscosity at 100 °C"),
+    # the life of an allowable load C/(L/10^6)^(1/p): below 1e5 rev (half an hour at 3000 rpm)
+    # it exceeds 2 C, far beyond the static rating C0 < C; 1e15 rev is 1e9 x 10^6 rev, beyond
+    # any bearing (1e5 rpm for 1e6 h is 6e12 rev). A bare 36 is Kuzmenko's N = 36 x 10^6 meant
+    ("revolutions", None): (1e5, 1e15, "the life of an allowable load"),
 }
 
 
 def plausible_ranges_help(kind: str, parameter: str | None = None) -> str:
-    """The plausible range of a bare number, for --help."""
+    """The bare numbers refused as implausible, for --help, in the words of the refusal: the
+    lower bound is accepted, the upper one refused.
+
+    >>> plausible_ranges_help("length", "clearance")
+    'a bare number below -1 mm or of 1 mm or more is refused'
+    """
     low, high, _ = PLAUSIBLE_BARE[(kind, parameter)]
-    return f"a bare number outside {low:g} to {high:g} {BASE_UNIT[kind]} is refused"
+    unit = BASE_UNIT[kind]
+    return f"a bare number below {low:g} {unit} or of {high:g} {unit} or more is refused"
 
 
 #: The units a bare, implausible number may have been meant in, most likely first, per kind
@@ -95,14 +112,26 @@ HINT_UNITS = {
     "modulus": ("GPa", "Pa"),
     "length": ("um", "in", "m"),
     "viscosity": ("m^2/s",),
+    "revolutions": ("Mrev",),
+}
+
+
+#: Where a hinted reading must fall, per kind, where narrower than :data:`PLAUSIBLE_BARE`: a unit
+#: is suggested only where it makes the number a usual value, not a merely possible one. [base]
+HINT_RANGE = {
+    # oils in service and their datasheet viscosities at 40 and 100 °C (ISO VG 2 to 3200): 1 to
+    # 1e4 mm^2/s, written 1e-6 to 1e-2 in m^2/s; a bare 0.05 read as m^2/s would be 5e4 mm^2/s,
+    # an oil near its pour point, so no unit is suggested for it
+    "viscosity": (1.0, 1e4),
 }
 
 
 def likely_unit(value: float, kind: str, name: str) -> str | None:
     """``value`` written with the first unit of :data:`HINT_UNITS` that makes it plausible for
-    the parameter ``name`` (``210GPa``), or None where no unit does (a bare speed of 1e9: every
-    speed unit is larger than rpm)."""
+    the parameter ``name`` (``210GPa``) and, for the kinds of :data:`HINT_RANGE`, a usual value,
+    or None where no unit does (a bare speed of 1e9: every speed unit is larger than rpm)."""
     low, high, _ = PLAUSIBLE_BARE.get((kind, name)) or PLAUSIBLE_BARE[(kind, None)]
+    low, high = HINT_RANGE.get(kind, (low, high))
     for unit in HINT_UNITS.get(kind, ()):
         if low <= value * UNITS[kind][unit] < high:
             return f"{value:g}{unit}"
@@ -110,7 +139,7 @@ def likely_unit(value: float, kind: str, name: str) -> str | None:
 
 
 #: Kinds whose bare numbers <= 0 are left to the option's own positivity check.
-_SIGNED = ("modulus", "speed", "viscosity")
+_SIGNED = ("modulus", "speed", "viscosity", "revolutions")
 
 
 def _check_plausible(value: float, kind: str, name: str, text: object) -> None:
@@ -149,14 +178,14 @@ def parse_quantity(text: str | float, kind: str, *, parameter: str | None = None
         ``"300kgf"``, ``"0.02 mm"``, ``"20um"``, or a bare number. [unit as written]
     kind : str
         One of ``force``, ``length``, ``stiffness``, ``modulus``, ``moment``, ``angle``,
-        ``speed``, ``viscosity``.
+        ``speed``, ``viscosity``, ``revolutions``.
     parameter : str, optional
         Name used in the error message (defaults to ``kind``).
 
     Returns
     -------
     float
-        The value in N, mm, N/mm^1.5, MPa, N mm, degrees, rpm or mm^2/s.
+        The value in N, mm, N/mm^1.5, MPa, N mm, degrees, rpm, mm^2/s or revolutions.
 
     Raises
     ------
@@ -189,7 +218,10 @@ def parse_quantity(text: str | float, kind: str, *, parameter: str | None = None
             f"unknown unit {unit!r} in {text!r}; allowed: {', '.join(units)} "
             f"(a bare number is {BASE_UNIT[kind]})",
         )
-    return value * lookup[unit]
+    converted, base = value * lookup[unit], BASE_UNIT[kind]
+    if not math.isfinite(converted):
+        raise InputError(name, f"{text!r} overflows: it is beyond every finite number of {base}")
+    return converted
 
 
 def parse_cage_angle(text: str | float, *, parameter: str = "cage_angle") -> float | str:
@@ -313,7 +345,8 @@ def unit_names() -> set[str]:
 
 def _example(kind: str) -> str:
     examples = {"force": "300kgf", "length": "20um", "stiffness": "4700kgf/mm^1.5"}
-    more = {"moment": "1.5Nm", "angle": "2.7mrad", "speed": "3000rpm", "viscosity": "20cSt"}
+    more = {"moment": "1.5Nm", "angle": "2.7mrad", "speed": "3000rpm", "viscosity": "20cSt",
+            "revolutions": "36Mrev"}  # fmt: skip
     return (examples | more).get(kind, "208GPa")
 
 

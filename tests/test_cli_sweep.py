@@ -220,3 +220,30 @@ def test_rotating_is_refused_where_solve_refuses_it(capsys):
                                          "inner")  # fmt: skip
     assert code == code_solve == 2 and err == err_solve and err.count("\n") == 1
     assert "L10r is computed for ball bearings only" in err
+
+
+@pytest.mark.parametrize(
+    "case",
+    [["6205", "-F", "1kN", "-G", "-0.9", "--speed", "3000"],  # deep preload, 11 GPa
+     ["6205", "-F", "1kN", "-G", "0.9999"],  # play beyond C5, one ball at some angles
+     ["6205", "-F", "20kN"],  # s0 < 1, F_r > C0, pressure
+     ["NU206", "-F", "60kN"],
+     ["-z", "7", "--ball-diameter", "11.5", "--pitch-diameter", "43.5", "-F", "30kN", "-G",
+      "-100um"]],
+)  # fmt: skip
+def test_sweep_warns_as_solve_warns_on_the_same_case(capsys, case):
+    """sweep 6205 -F 1kN -G -0.9 printed no warning where solve of the same case warns of an
+    11 GPa contact pressure and a preload beyond the bound: sweep now gives solve's checks on
+    the bearing (at the heaviest ball load of the pitch: at cage angle 0 in these cases, solve's)
+    on stderr and in its JSON; only the one-loaded-ball finding names its cage angles."""
+    code, _, solve_err = run_entry(capsys, "solve", *case)
+    assert code == 0
+    code, out, sweep_err = run_entry(capsys, "sweep", *case, "--format", "json")
+    assert code == 0
+    one_ball = "only one ball carries the load"
+    want = [w for w in solve_err.splitlines() if one_ball not in w]
+    got = [w for w in sweep_err.splitlines() if one_ball not in w]
+    assert want and got == want, (got, want)
+    assert (one_ball in solve_err) <= (one_ball in sweep_err)  # solve's angle is in the pitch
+    assert json.loads(out)["warnings"] == [w.removeprefix("Warning: ") for w in
+                                           sweep_err.splitlines()]  # fmt: skip

@@ -248,3 +248,101 @@ def test_bad_viscosity_index_in_the_library():
         viscosity_100_of_index(2.0, 95.0)
     with pytest.raises(InputError, match="viscosity_100: ASTM D2270 defines"):
         viscosity_index(68.0, 1.9)
+
+
+def _vi_steps(nu40, points=20001):
+    """The VI of D2270 on a grid of nu_100 over [2, nu_40] and where it falls, the step at
+    nu_100 = 70 (Table 1 to the formulas) left out: (grid, VI, indices of falls)."""
+    y = np.linspace(2.0, nu40, points)
+    v = np.asarray(viscosity_index(nu40, y))
+    falls = np.flatnonzero(np.diff(v) <= 0)
+    return y, v, falls[~((y[falls] <= 70.0) & (y[falls + 1] > 70.0))]
+
+
+@pytest.mark.parametrize("nu40", [2.227, 2.23, 2.3, 2.5, 3.0, 4.6, 10.0, 69.9, 70.001, 70.3,
+                                  100.0, 460.0, 3200.0, 1e4, 1e5])  # fmt: skip
+def test_the_vi_rises_with_nu100_from_the_bound_the_inversion_takes(nu40):
+    """From nu_40 = 2.227 (D2270_RISING_FROM = 2.23 rounds it up) the VI rises with nu_100 over
+    [2, nu_40], but for the standard's own step at 70; the oils below it are refused by the
+    inversion (next test), for which the VI falls or falls and rises."""
+    from bearingload.bearings.oil import D2270_RISING_FROM
+
+    assert D2270_RISING_FROM >= 2.227
+    y, v, falls = _vi_steps(nu40)
+    assert falls.size == 0, y[falls[:5]]
+    if nu40 > 70.0:  # the step down at 70: the standard's Table 1 against its formulas
+        step = viscosity_index(nu40, 70.0) - viscosity_index(nu40, np.nextafter(70.0, 71.0))
+        assert 0.0 < step < (0.1 if nu40 <= 1e4 else 1.0)
+
+
+@pytest.mark.parametrize("nu40", [2.0000001, 2.1, 2.2, 2.226])
+def test_below_the_bound_the_vi_does_not_fix_nu100_and_is_refused(nu40):
+    """--viscosity-40 2.0000001 said 'a VI from 6604 (nu_100 = 2) to below 6604 (nu_100 =
+    nu_40)': the VI falls with nu_100 there, so no VI was accepted and the range printed was
+    none. The VI of these oils does not rise steadily (measured here), and the inversion says
+    so, naming the oil's nu_40 as given."""
+    _, _, falls = _vi_steps(nu40)
+    assert falls.size > 0
+    with pytest.raises(InputError, match=rf"an oil of {nu40:.10g} mm\^2/s .* does not rise"):
+        viscosity_100_of_index(nu40, 95.0)
+
+
+@pytest.mark.parametrize("nu40", [2.23, 2.5, 4.6, 68.0, 70.001, 70.005, 70.3, 100.0, 3200.0])
+def test_the_vi_range_refused_is_the_range_the_inversion_accepts(nu40):
+    """The range a refusal prints is the one accepted: its lower end is a VI the oil has (and
+    round-trips), a VI just above the upper end is refused, one just below accepted ('to below'
+    nu_100 = nu_40, excluded; 'to' the VI at nu_100 = 70 where the step leaves it the largest,
+    for nu_40 just above 70)."""
+    import re
+
+    with pytest.raises(InputError) as refused:
+        viscosity_100_of_index(nu40, 1e6)
+    found = re.search(r"a VI from (\S+) \(nu_100 = 2 .*?\) (to|to below) (\S+) \(nu_100 = (\S+) "
+                      r"mm\^2/s\)", str(refused.value))  # fmt: skip
+    assert found is not None, str(refused.value)
+    low, high, top = float(found[1]), float(found[3]), float(found[4])
+    assert low < high and top == (70.0 if found[2] == "to" else nu40)
+    exact_low = float(viscosity_index(nu40, 2.0))
+    exact_high = float(viscosity_index(nu40, top))
+    assert (low, high) == (pytest.approx(exact_low, rel=1e-5), pytest.approx(exact_high, rel=1e-5))
+    for vi in (exact_low, exact_high - 1e-6 * abs(exact_high)):
+        assert viscosity_index(nu40, viscosity_100_of_index(nu40, vi)) == pytest.approx(
+            vi, rel=1e-9, abs=1e-9
+        )
+    if found[2] == "to":
+        assert viscosity_index(nu40, viscosity_100_of_index(nu40, exact_high)) == pytest.approx(
+            exact_high, rel=1e-9
+        )
+    with pytest.raises(InputError, match="a VI from"):
+        viscosity_100_of_index(nu40, exact_high + 1e-6 * abs(exact_high))
+
+
+def test_an_oil_whose_vi_fixes_no_nu100_is_one_error_line(capsys):
+    args = ["solve", "6205", "-F", "1kN", "--speed", "3000", "--temperature", "40"]
+    code, out, err = run_entry(capsys, *args, "--viscosity-40", "2.0000001")
+    assert code == 2 and out == "" and err.count("\n") == 1, err
+    assert "an oil of 2.0000001 mm^2/s at 40 °C" in err and "does not rise steadily" in err
+    assert err.rstrip().endswith("give its '--viscosity-100'"), err  # a VI cannot help
+    code, out, err = run_entry(capsys, *args, "--viscosity-40", "2.0000001",
+                               "--viscosity-100", "2.0000001")  # fmt: skip
+    assert code == 2 and "viscosity-100" in err  # nu_100 must be below nu_40
+    code, out, err = run_entry(capsys, *args, "--viscosity-40", "3", "--viscosity-100", "2.2")
+    assert code == 0, err
+
+
+@pytest.mark.parametrize(
+    ("nu_40", "nu_100", "name", "celsius", "got"),
+    [(1.5, 1.0, "viscosity_40", 40, "1.5"), (68.0, 1.5, "viscosity_100", 100, "1.5")],
+)
+def test_a_viscosity_walther_does_not_cover_is_named_for_its_temperature(
+    nu_40, nu_100, name, celsius, got
+):
+    """--viscosity-40 1.5 --viscosity-100 1.0 was refused as a bad '--viscosity-100' with 'got
+    1.5 and 1.0' (which is which?): the viscosity outside the Walther form's range is named,
+    with its temperature and its value."""
+    with pytest.raises(InputError) as info:
+        viscosity_at(nu_40, nu_100, 60.0)
+    assert info.value.parameter == name
+    assert f"the oil's viscosity at {celsius} °C to be 2 mm^2/s or more; got {got} mm^2/s" in str(
+        info.value
+    )

@@ -233,3 +233,31 @@ def test_the_mean_of_huge_values_does_not_overflow():
     assert (s.min, s.max) == (3.7e307, 3.9e307)
     tiny = spread_of(np.array([2e-320, 3e-320, 2e-320]))  # subnormal: scaling must not lose them
     assert tiny.mean == pytest.approx(2.5e-320, rel=1e-3)
+
+
+def test_both_sweeps_convert_lives_to_hours_by_one_function(monkeypatch):
+    """The radial and the combined cage sweep give their lives in hours through the one
+    ``hours_at`` (it was written twice): L 10^6/(60 n), None without a speed or a life, and
+    the speed's refusal of ``life_hours`` where the hours overflow."""
+    import dataclasses
+
+    from bearingload.bearings.resolve import resolve_bearing
+    from bearingload.studies import combined_sweep as combined_module
+    from bearingload.studies import sweep as sweep_module
+    from bearingload.studies.combined_sweep import combined_sweep
+
+    life = np.array([60.0, 120.0])
+    assert np.allclose(sweep_module.hours_at(life, 1000.0), [1000.0, 2000.0], rtol=1e-15)
+    assert sweep_module.hours_at(None, 1000.0) is None
+    assert sweep_module.hours_at(life, None) is None
+    with pytest.raises(InputError, match="speed"):
+        sweep_module.hours_at(np.array([1e300]), 1e-300)
+    radial = dataclasses.replace(sweep(9, 1000.0, 274868.876, steps=3), speed=3000.0)
+    combined = dataclasses.replace(
+        combined_sweep(resolve_bearing("6205"), 1000.0, 200.0, steps=3), speed=3000.0
+    )
+    calls = []
+    monkeypatch.setattr(combined_module, "hours_at", lambda lf, n: calls.append((lf, n)) or 1.0)
+    monkeypatch.setattr(sweep_module, "hours_at", lambda lf, n: calls.append((lf, n)) or 2.0)
+    assert (radial.hours(life), combined.hours(life)) == (2.0, 1.0)
+    assert [n for _, n in calls] == [3000.0, 3000.0]

@@ -9,7 +9,7 @@ import math
 import pytest
 
 from bearingload.errors import InputError
-from bearingload.units import UNITS, parse_cage_angle, parse_quantity
+from bearingload.units import HINT_RANGE, UNITS, parse_cage_angle, parse_quantity
 
 from .cli_helpers import invoke, run_entry
 
@@ -113,12 +113,14 @@ IMPLAUSIBLE = [
     ("--modulus", "210"), ("--modulus", "2.1e11"), ("--modulus", "1e20"), ("--modulus", "10"),
     ("--speed", "1e6"), ("--speed", "1e9"),
     ("--viscosity", "1e6"), ("--viscosity", "1e7"), ("--viscosity", "1e-5"),
-    ("--viscosity", "1e-9"), ("--viscosity", "0.05"),
+    ("--viscosity", "1e-9"), ("--viscosity", "0.05"), ("--viscosity", "0.009"),
     ("--roughness", "0.2"), ("--roughness", "50"),
+    ("--revolutions", "1e-308"), ("--revolutions", "36"), ("--revolutions", "1e20"),
 ]  # fmt: skip
 KIND = {"--clearance": ("length", "clearance"), "--modulus": ("modulus", "modulus"),
         "--speed": ("speed", "speed"), "--viscosity": ("viscosity", "viscosity"),
-        "--roughness": ("length", "roughness")}  # fmt: skip
+        "--roughness": ("length", "roughness"),
+        "--revolutions": ("revolutions", "revolutions")}  # fmt: skip
 
 
 @pytest.mark.parametrize(("option", "bare"), IMPLAUSIBLE)
@@ -139,13 +141,14 @@ def test_a_unit_hint_names_a_unit_that_makes_the_number_plausible_or_none(capsys
     assert not low <= float(bare) < high  # the range printed excludes what was refused
     kind, name = KIND[option]
     hint = re.search(r"did you mean (\S+)\?", err)
+    usual = HINT_RANGE.get(kind, (low, high))  # where a hinted reading must fall
     if hint is None:
-        assert all(not low <= float(bare) * factor < high for factor in UNITS[kind].values()), (
-            err
-        )  # no unit of the kind makes it plausible
+        assert all(
+            not usual[0] <= float(bare) * factor < usual[1] for factor in UNITS[kind].values()
+        ), err  # no unit of the kind makes it plausible (a usual value, for a viscosity)
         return
     value = parse_quantity(hint.group(1), kind, parameter=name)
-    assert low <= value < high, err
+    assert low <= value < high and usual[0] <= value < usual[1], err
     code, _, err = run_entry(capsys, *base, option, hint.group(1))
     assert code == 0, err  # what the hint says is a case solve solves
 
@@ -182,3 +185,90 @@ def test_the_lower_bound_printed_for_a_roughness_is_one_it_accepts(capsys):
     assert code == 2 and "plausible above 0 and below 0.01 mm" in err, err
     code, out, err = run_entry(capsys, *base, "0")
     assert code == 2 and "greater than 0" in err, err
+
+
+@pytest.mark.parametrize(
+    ("option", "what"),
+    [("--viscosity", "an operating kinematic viscosity"),
+     ("--viscosity-40", "an oil's kinematic viscosity at 40 °C"),
+     ("--viscosity-100", "an oil's kinematic viscosity at 100 °C")],
+)  # fmt: skip
+def test_each_viscosity_is_named_for_what_it_is(capsys, option, what):
+    """A bare 1e7 --viscosity-40 was 'implausible for an operating kinematic viscosity': nu_40 is
+    the oil's viscosity at 40 °C (its datasheet's), nu at the operating temperature is another."""
+    oil = ["--oil", "VG68"] if option == "--viscosity-100" else []
+    args = ["solve", "6205", "-F", "1kN", "--speed", "3000", *oil, option, "1e7"]
+    code, out, err = run_entry(capsys, *args, "--temperature", "60")
+    assert code == 2 and out == "" and err.count("\n") == 1, err
+    assert f"implausible for {what} (" in err, err
+    assert ("operating" in err) == (option == "--viscosity"), err
+
+
+@pytest.mark.parametrize(
+    ("option", "bare", "hint"),
+    [("--viscosity", "0.05", None), ("--viscosity", "0.02", None),
+     ("--viscosity", "6.8e-5", "6.8e-05m^2/s"), ("--viscosity", "0.009", "0.009m^2/s"),
+     ("--viscosity-40", "0.05", None), ("--viscosity-40", "6.8e-5", "6.8e-05m^2/s")],
+)  # fmt: skip
+def test_a_viscosity_hint_is_a_usual_viscosity(capsys, option, bare, hint):
+    """A bare --viscosity 0.05 got 'did you mean 0.05m^2/s?': 5e4 mm^2/s, an oil near its pour
+    point, no likely reading of 0.05 (the plausible range goes to 1e6 mm^2/s only to refuse no
+    real oil). A hint now reads the number as a usual viscosity, 1 to 1e4 mm^2/s, or there is
+    none; the bare unit is mm^2/s (= cSt), never suggested."""
+    temperature = ["--temperature", "60"] if option == "--viscosity-40" else []
+    args = ["solve", "6205", "-F", "1kN", "--speed", "3000", option, bare, *temperature]
+    code, out, err = run_entry(capsys, *args)
+    assert code == 2 and out == "" and err.count("\n") == 1, err
+    assert (f"did you mean {hint}?" in err) if hint else ("did you mean" not in err), err
+
+
+@pytest.mark.parametrize(
+    ("option", "kind", "parameter"),
+    [("--clearance", "length", "clearance"), ("--modulus", "modulus", "modulus")],
+)
+def test_the_help_states_exactly_the_bare_numbers_refused(option, kind, parameter):
+    """--clearance's help said 'a bare number of 1 mm or more is refused', yet -3 is refused
+    too; --modulus's said 'outside 1000 to 1e7 MPa', yet 1e7 itself is refused. The help now
+    names both bounds as the refusal applies them: the lower one accepted, the upper refused."""
+    import re
+
+    text = " ".join(invoke("solve", "--help").output.split())
+    unit = {"length": "mm", "modulus": "MPa"}[kind]
+    bounds = re.search(
+        rf"{option}.*?a bare number below (\S+) {unit} or of (\S+) {unit} or more is refused",
+        text,
+        flags=re.IGNORECASE,
+    )
+    assert bounds is not None, text
+    low, high = map(float, bounds.groups())
+    assert parse_quantity(repr(low), kind, parameter=parameter) == low
+    assert parse_quantity(repr(high * (1 - 1e-9)), kind, parameter=parameter) < high
+    for refused in (low - abs(low) * 1e-9 - 1e-12, high):
+        with pytest.raises(InputError, match="implausible"):
+            parse_quantity(repr(refused), kind, parameter=parameter)
+
+
+def test_implausible_revolutions_are_refused_with_the_likely_unit(capsys):
+    """--revolutions 1e-308 was taken (1e-314 x 10^6 rev) and gave an allowable load of
+    6.5e108 N; a bare 36 (Kuzmenko's N = 36 x 10^6 rev) gave 30 C. A bare life outside 1e5 to
+    1e15 rev is refused in one line, with the unit that makes it plausible (Mrev = 10^6 rev),
+    and the number with its unit is the case solve solves."""
+    import re
+
+    base = ["solve", "6205", "-F", "1kN", "--format", "json"]
+    for bare, hint in (("1e-308", None), ("36", "36Mrev"), ("1e20", None), ("99999", "99999Mrev")):
+        code, out, err = run_entry(capsys, *base, "--revolutions", bare)
+        assert code == 2 and out == "" and err.count("\n") == 1, err
+        assert err.startswith("Error: Invalid value for '--revolutions': a bare ") and (
+            "plausible at least 100000 and below 1e+15 rev" in err
+        ), err
+        assert (f"did you mean {hint}?" in err) if hint else ("did you mean" not in err), err
+    allowable = []
+    for given in ("36Mrev", "36e6", "3.6e7rev", "1e5"):
+        code, out, err = run_entry(capsys, *base, "--revolutions", given)
+        assert code == 0, err
+        allowable.append(json.loads(out)["cases"][0]["allowable_load"])
+    assert allowable[0] == allowable[1] == allowable[2] == pytest.approx(14000 / 36 ** (1 / 3))
+    assert allowable[3] == pytest.approx(14000 / 0.1 ** (1 / 3))
+    code, _, err = run_entry(capsys, *base, "--revolutions", "1e303Mrev")
+    assert code == 2 and re.search(r"'1e303Mrev' overflows", err), err

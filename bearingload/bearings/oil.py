@@ -65,6 +65,13 @@ WALTHER_MIN = 2.0
 DEFAULT_VISCOSITY_INDEX = 95.0
 #: ASTM D2270's smallest nu_100 with a viscosity index (Table 1's first row). [mm^2/s]
 D2270_MIN = 2.0
+#: The nu_100 above which ASTM D2270 takes L and H from its formulas, not Table 1. [mm^2/s]
+D2270_TABLE_MAX = 70.0
+#: The least nu_40 (rounded up) from which the VI of D2270 rises with nu_100 over all of
+#: [2 mm^2/s, nu_40], the step at nu_100 = 70 apart; below it the VI falls with nu_100 (for nu_40
+#: up to 2.14) or falls and rises (2.15 to 2.226 mm^2/s, measured on a grid of 2e5 nu_100 per
+#: oil; tests/test_oil.py checks it), so a VI does not fix nu_100 there. [mm^2/s]
+D2270_RISING_FROM = 2.23
 
 
 def iso_grade(text: str) -> float:
@@ -134,6 +141,13 @@ def viscosity_at(nu_40: ArrayLike, nu_100: ArrayLike, temperature: ArrayLike) ->
             f"must be below the viscosity at 40 °C (an oil thins as it warms); got {n100} "
             f"against {n40} mm^2/s",
         )
+    for name, nu, celsius in (("viscosity_40", n40, 40), ("viscosity_100", n100, 100)):
+        if not np.all(np.isfinite(nu) & (nu >= WALTHER_MIN)):  # named for what it is
+            raise InputError(
+                name,
+                f"ASTM D341's Walther form needs the oil's viscosity at {celsius} °C to be "
+                f"{WALTHER_MIN:g} mm^2/s or more; got {_shown(nu)} mm^2/s",
+            )
     t = np.asarray(temperature, dtype=float) + ZERO_CELSIUS
     a, b = walther_constants(n40, 40.0 + ZERO_CELSIUS, n100, 100.0 + ZERO_CELSIUS)
     nu = np.asarray(walther_viscosity(a, b, t), dtype=float)
@@ -142,10 +156,16 @@ def viscosity_at(nu_40: ArrayLike, nu_100: ArrayLike, temperature: ArrayLike) ->
         raise InputError(
             "temperature",
             f"ASTM D341's Walther form covers {WALTHER_MIN:g} mm^2/s or more and finite; at "
-            f"{np.asarray(temperature, dtype=float)} °C it gives {nu} mm^2/s for this oil: give "
-            "a temperature where it stays in that range, or the operating viscosity itself",
+            f"{_shown(temperature)} °C it gives {_shown(nu)} mm^2/s for this oil: give a "
+            "temperature where it stays in that range, or the operating viscosity itself",
         )
     return scalar_out(nu)
+
+
+def _shown(values: ArrayLike) -> str:
+    """One value to 6 digits, or the array as numpy prints it (a message's number)."""
+    v = np.asarray(values, dtype=float)
+    return f"{float(v):.6g}" if v.size == 1 else str(v)
 
 
 def walther_viscosity(a: ArrayLike, b: ArrayLike, temperature: ArrayLike) -> Any:
@@ -225,18 +245,36 @@ def viscosity_index(nu_40: ArrayLike, nu_100: ArrayLike) -> Any:
     return scalar_out(np.where(u >= h_ref, by_a, by_b))
 
 
+def _top(nu_40: np.ndarray) -> np.ndarray:
+    """The nu_100 of the largest VI an oil of ``nu_40`` has: nu_40 itself (excluded: the oil
+    must thin), or 70 mm^2/s where the step down of the VI at 70 (Table 1 to the formulas)
+    leaves the VI at nu_40 below that at 70, for nu_40 just above 70. [mm^2/s]"""
+    top = nu_40.copy()
+    above = nu_40 > D2270_TABLE_MAX
+    if np.any(above):
+        at_70 = np.asarray(viscosity_index(nu_40[above], D2270_TABLE_MAX))
+        at_top = np.asarray(viscosity_index(nu_40[above], nu_40[above]))
+        top[above] = np.where(at_70 > at_top, D2270_TABLE_MAX, nu_40[above])
+    return top
+
+
 def viscosity_100_of_index(nu_40: ArrayLike, index: ArrayLike) -> Any:
     """The viscosity at 100 °C of an oil of viscosity ``nu_40`` at 40 °C and viscosity index
     ``index``: :func:`viscosity_index` inverted by bisection on nu_100 in [2, nu_40] (to
-    machine precision; the VI rises with nu_100 at a given nu_40). [mm^2/s]
+    machine precision). At a given nu_40 of :data:`D2270_RISING_FROM` or more the VI rises with
+    nu_100, but for a step down at nu_100 = 70 mm^2/s (the standard's Table 1 gives L = 4905,
+    H = 1558 there, its formulas 4903.87, 1557.66 just above): a VI within that step (0.01 to
+    0.09 for nu_40 of 71 to 10^4 mm^2/s) is had by two nu_100 within 0.02 mm^2/s of 70, and
+    the bisection returns one of them. Below :data:`D2270_RISING_FROM` the VI does not fix
+    nu_100 and is refused. [mm^2/s]
 
     Parameters
     ----------
     nu_40 : array_like
-        Kinematic viscosity at 40 °C, above 2. [mm^2/s]
+        Kinematic viscosity at 40 °C, at least :data:`D2270_RISING_FROM`. [mm^2/s]
     index : array_like
-        Viscosity index, between that of nu_100 = 2 mm^2/s (the least ASTM D2270 defines) and
-        that of nu_100 = nu_40 for this nu_40. [-]
+        Viscosity index, from that of nu_100 = 2 mm^2/s (the least ASTM D2270 defines) to below
+        that of nu_100 = nu_40 for this nu_40 (up to that at nu_100 = 70 where larger). [-]
 
     >>> round(viscosity_100_of_index(73.30, viscosity_index(73.30, 8.86)), 9)
     8.86
@@ -250,16 +288,25 @@ def viscosity_100_of_index(nu_40: ArrayLike, index: ArrayLike) -> Any:
             f"an oil given by its viscosity index needs a viscosity at 40 °C above {D2270_MIN:g} "
             f"mm^2/s (ASTM D2270 defines no VI below {D2270_MIN:g} mm^2/s at 100 °C); got {u}",
         )
-    lo, hi = np.full(u.shape, D2270_MIN), u.copy()
-    least, most = np.asarray(viscosity_index(u, lo)), np.asarray(viscosity_index(u, hi))
-    bad = ~((v >= least) & (v < most))
-    if np.any(bad):
-        i = np.flatnonzero(bad)[0]
+    if np.any(u < D2270_RISING_FROM):
         raise InputError(
             "viscosity_index",
-            f"an oil of {u.flat[i]:g} mm^2/s at 40 °C has by ASTM D2270 a VI from "
-            f"{least.flat[i]:.4g} (nu_100 = {D2270_MIN:g} mm^2/s, the least the standard "
-            f"defines) to below {most.flat[i]:.4g} (nu_100 = nu_40); got {v.flat[i]:g}",
+            f"an oil of {u.flat[np.argmax(u < D2270_RISING_FROM)]:.10g} mm^2/s at 40 °C has by "
+            f"ASTM D2270 a VI that does not rise steadily with nu_100 (it does from nu_40 = "
+            f"{D2270_RISING_FROM:g} mm^2/s up), so its VI does not fix its viscosity at 100 °C",
+        )
+    lo, hi = np.full(u.shape, D2270_MIN), _top(u)
+    least, most = np.asarray(viscosity_index(u, lo)), np.asarray(viscosity_index(u, hi))
+    bad = ~((v >= least) & ((v <= most) & (hi < u) | (v < most)))
+    if np.any(bad):
+        i = np.flatnonzero(bad)[0]
+        top = "to below" if hi.flat[i] == u.flat[i] else "to"
+        raise InputError(
+            "viscosity_index",
+            f"an oil of {u.flat[i]:.10g} mm^2/s at 40 °C has by ASTM D2270 a VI from "
+            f"{least.flat[i]:.6g} (nu_100 = {D2270_MIN:g} mm^2/s, the least the standard "
+            f"defines) {top} {most.flat[i]:.6g} (nu_100 = {hi.flat[i]:.6g} mm^2/s); got "
+            f"{v.flat[i]:g}",
         )
     for _ in range(200):
         mid = 0.5 * (lo + hi)
@@ -380,8 +427,10 @@ def _viscosity_100_of(nu_40: float, index: float, *, given: bool) -> float:
         if given or exc.parameter != "viscosity_index":
             raise
         why = str(exc).split(": ", 1)[-1]
+        # below D2270_RISING_FROM no VI fixes nu_100: only nu_100 itself helps
+        give = "'viscosity_100'" + (" or 'viscosity_index'" if nu_40 >= D2270_RISING_FROM else "")
         raise InputError(
             "viscosity_index",
             f"the default VI {index:g} (a mineral oil) does not fit this oil: {why}; give its "
-            "'viscosity_100' or 'viscosity_index'",
+            f"{give}",
         ) from exc

@@ -38,6 +38,7 @@ from bearingload.cli.options import (
 )
 from bearingload.constants import CONTAMINATION_LEVELS
 from bearingload.errors import InputError
+from bearingload.units import plausible_ranges_help
 
 #: The load options: any of them given, the combined engine solves the case.
 LOAD_PARAMS = ("axial_load", "moment", "moment_cross", "misalignment", "contact_angle")
@@ -64,10 +65,10 @@ CLEARANCE_HELP = (
     "Radial internal clearance G_r, total play (gap per side G_r/2; negative = preload): a length "
     "(bare number: mm; units um, mm, in) or an ISO 5753-1 class C2, CN, C3, C4, C5, resolved by "
     "the bearing's bore (deep groove ball or cylindrical roller bearing table); GOST 24810 groups "
-    "are written G6, G7, G8, G9. A bare number of 1 mm or more is refused as implausible (20 -> "
-    "did you mean 20um?); write 1.5mm to mean it. Default: 0 without a bearing; with one, the "
-    "class its designation marks, else CN (an unmarked designation means the normal group); "
-    "table k and kq: 0, the papers' condition."
+    f"are written G6, G7, G8, G9. A{plausible_ranges_help('length', 'clearance')[1:]} as "
+    "implausible (20 -> did you mean 20um?); write 1.5mm to mean it. Default: 0 without a "
+    "bearing; with one, the class its designation marks, else CN (an unmarked designation "
+    "means the normal group); table k and kq: 0, the papers' condition."
 )
 
 
@@ -255,8 +256,8 @@ DECLARATIONS: dict[str, tuple[tuple[str, ...], dict[str, Any]]] = {
         type=Quantity("modulus"),
         library=("E1",),
         help="Young's modulus E of balls and rings; default 208000 MPa (bearing steel). "
-        f"Units: {units_help('modulus')} (bare number: MPa; a bare number outside 1000 to "
-        "1e7 MPa is refused: 210 -> did you mean 210GPa?).",
+        f"Units: {units_help('modulus')} (bare number: MPa; "
+        f"{plausible_ranges_help('modulus')}: 210 -> did you mean 210GPa?).",
     ),
     "poisson": _option(
         "--poisson", type=float, library=("nu1",), help="Poisson's ratio nu; default 0.3."

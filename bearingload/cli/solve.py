@@ -17,6 +17,7 @@ from bearingload.cli.cases import (
 )
 from bearingload.cli.options import (
     CONTEXT,
+    Quantity,
     emit,
     library_errors,
     method_option,
@@ -25,17 +26,20 @@ from bearingload.cli.options import (
     quiet_option,
 )
 from bearingload.cli.plot import ball_loads_plot_option, check_plot, save_plot
+from bearingload.units import plausible_ranges_help
 
 
 @click.command(context_settings=CONTEXT)
 @case_options(required=("load",), pair=True)
 @click.option(
     "--revolutions",
-    type=click.FloatRange(min=0, max=1e30, min_open=True),
+    type=Quantity("revolutions", positive=True),
     default=36e6,
     show_default=True,
     help="Life L [revolutions] for the allowable load C/(L/10^6)^(1/3). The default is the "
-    "worked value of Kuzmenko (2010) §3.2 (36e6 rev, e.g. 1000 h at 600 rpm); set your own.",
+    "worked value of Kuzmenko (2010) §3.2 (36e6 rev, e.g. 1000 h at 600 rpm); set your own. "
+    f"Units: rev, Mrev = 10^6 rev (bare number: rev; {plausible_ranges_help('revolutions')}: "
+    "36 -> did you mean 36Mrev?).",
 )
 @method_option(
     "exact: ring equilibrium, every ball; continuum: loads smeared over the raceway; "

@@ -143,6 +143,8 @@ def sweep(
     life, lives = _radial_lives(case) if case.lives_given else (None, {})
     result = run_sweep(z, case.radial_load, k, g_r, m, steps, life=life)
     result = dataclasses.replace(result, **lives)
+    if not case.by_hand:  # solve's checks on the bearing, as solve makes them
+        result = dataclasses.replace(result, warnings=_bearing_checks(case, result))
     text = sweep_report(result, fmt, context)
     for warning in sweep_warnings(result):
         click.echo(f"Warning: {warning}", err=True)
@@ -151,6 +153,17 @@ def sweep(
 
         save_plot(lambda: sweep_figure(result, case.bearing), plot)
     emit(text, output)
+
+
+def _bearing_checks(case: CaseOptions, result: Any) -> tuple[str, ...]:
+    """The warnings solve gives on the bearing of the case (s0, C0, contact pressure, clearance),
+    at the heaviest ball load of the sweep ``result``."""
+    from bearingload.cli.cases import resolve_bearings
+    from bearingload.cli.solve import with_ratings
+    from bearingload.studies.sweep import bearing_checks
+
+    return bearing_checks(with_ratings(resolve_bearings(case, case.stiffness_value()), case)[0],
+                          result)  # fmt: skip
 
 
 def _radial_lives(case: CaseOptions) -> tuple[Any, dict[str, Any]]:

@@ -256,15 +256,17 @@ def sweep_json(s: CageSweep) -> dict[str, Any]:
 
 
 def sweep_warnings(s: CageSweep) -> list[str]:
-    """The checks of ``solve`` that need no bearing data, over the pitch: one loaded ball."""
+    """The checks of ``solve`` over the pitch: those on the bearing (``s.warnings``), then the
+    one that needs no bearing data, one loaded ball, with the cage angles where it holds."""
     import numpy as np
 
     one = np.asarray(s.loaded_balls) == 1
     if not one.any() or int(s.balls) <= 1:
-        return []
+        return list(s.warnings)
     angles = np.asarray(s.cage_angle)[one]
     return [
+        *s.warnings,
         f"only one ball carries the load at {one.sum()} of {one.size} cage angles "
         f"({angles.min():.6g}° to {angles.max():.6g}°): the result hangs on a single contact "
-        "(large clearance or few elements); check the clearance"
+        "(large clearance or few elements); check the clearance",
     ]

@@ -23,7 +23,7 @@ import numpy as np
 from bearingload.bearings.resolve import ResolvedBearing
 from bearingload.errors import InputError
 from bearingload.models.combined import CombinedDistribution
-from bearingload.studies.sweep import DEFAULT_STEPS, Spread, cage_angles, spread_of
+from bearingload.studies.sweep import DEFAULT_STEPS, Spread, cage_angles, hours_at, spread_of
 
 #: Per-position quantities a combined sweep summarises, keys of reports.quantities.
 SPREAD_KEYS = (
@@ -134,11 +134,7 @@ class CombinedSweep:
 
     def hours(self, life: Any) -> Any:
         """``life`` [10^6 rev] in hours at :attr:`speed` (None without a speed or a life). [h]"""
-        if self.speed is None or life is None:
-            return None
-        from bearingload.bearings.modified_life import life_hours
-
-        return life_hours(life, self.speed)
+        return hours_at(life, self.speed)
 
     def spread(self, key: str) -> Spread | None:
         """Min, mean, max and peak-to-peak of ``key`` over the pitch (None if not given).

@@ -81,6 +81,9 @@ class CageSweep:
         The ring rotating relative to the load, of ``reference_rating_life``.
     speed : float or None
         Shaft speed for the lives in hours. [rpm]
+    warnings : tuple of str
+        The checks of ``solve`` on the bearing over the pitch (:func:`bearing_checks`); the
+        one-loaded-ball finding, per cage angle, is the report's.
     """
 
     balls: int
@@ -102,6 +105,7 @@ class CageSweep:
     life_exponent: float = 3.0
     rotating: str | None = None
     speed: float | None = None
+    warnings: tuple[str, ...] = ()
 
     @property
     def rating_life(self) -> float | None:
@@ -114,11 +118,7 @@ class CageSweep:
 
     def hours(self, life: Any) -> Any:
         """``life`` [10^6 rev] in hours at :attr:`speed` (None without a speed or a life). [h]"""
-        if self.speed is None or life is None:
-            return None
-        from bearingload.bearings.modified_life import life_hours
-
-        return life_hours(life, self.speed)
+        return hours_at(life, self.speed)
 
     def values(self, name: str) -> Any:
         """The per-position values of ``name``: the spread quantities, ``reference_rating_life``
@@ -143,6 +143,43 @@ class CageSweep:
         if values is None:
             raise InputError("name", f"must be one of {', '.join(allowed)} (where computed)")
         return spread_of(values)
+
+
+def bearing_checks(bearing: Any, s: CageSweep) -> tuple[str, ...]:
+    """The checks ``solve`` makes on a bearing's case
+    (:func:`bearingload.bearings.checks.case_warnings`: static safety s0 = C0/F_r and F_r above
+    C0, the contact pressure, the clearance beyond ISO 5753-1's classes or the preload beyond
+    this package's bound), over the pitch: the pressure at its heaviest ball load. The finding
+    of one loaded ball is left to the report, which names the cage angles where it holds.
+
+    Parameters
+    ----------
+    bearing : ResolvedBearing
+        The bearing swept (its C0, geometry and clearance).
+    s : CageSweep
+        The sweep of that bearing under its radial load.
+    """
+    from types import SimpleNamespace
+
+    from bearingload.bearings.checks import case_warnings
+
+    heaviest = SimpleNamespace(q_max=float(np.max(s.q_max)), loaded_balls=None)
+    return tuple(case_warnings(bearing, s.load, heaviest))
+
+
+def hours_at(life: Any, speed: float | None) -> Any:
+    """``life`` [10^6 rev] in hours at the shaft ``speed`` [r/min], L 10^6/(60 n), as
+    :func:`bearingload.bearings.modified_life.life_hours` gives it; None without a speed or a
+    life (the one conversion of the cage sweeps, radial and combined). [h]
+
+    >>> float(hours_at(60.0, 1000.0)), hours_at(None, 1000.0), hours_at(60.0, None)
+    (1000.0, None, None)
+    """
+    if speed is None or life is None:
+        return None
+    from bearingload.bearings.modified_life import life_hours
+
+    return life_hours(life, speed)
 
 
 def spread_of(values: Any, scale: float | None = None) -> Spread:
