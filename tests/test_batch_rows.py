@@ -215,3 +215,22 @@ def test_a_revolutions_cell_of_a_ball_set_without_c_skips_its_row_as_solve_refus
     assert "dynamic_rating" in r.stderr.splitlines()[0]
     rows = _csv_values(r.stdout)
     assert rows["row"] == "3" and float(rows["allowable_load [N]"]) == pytest.approx(14000.0)
+
+
+def test_a_revolutions_cell_is_read_as_solve_reads_revolutions():
+    """A bare revolutions cell is revolutions, refused where implausible (a bare 36 meant 36
+    million: solve says 'did you mean 36Mrev?'; 1e-308 gave an allowable load of 6.5e108 N) and
+    its row skipped; '36Mrev' and a header unit '[Mrev]' give solve's allowable load."""
+    import json
+
+    bad = _run("batch", "-", stdin="bearing,load,revolutions\n6205,1kN,36\n6205,1kN,1e-308\n")
+    assert bad.exit_code == 1
+    assert "row 2: revolutions" in bad.stderr and "did you mean 36Mrev?" in bad.stderr
+    assert "row 3: revolutions" in bad.stderr and "implausible" in bad.stderr
+    want = json.loads(_run("solve", "6205", "-F", "1kN", "--revolutions", "36Mrev",
+                           "--format", "json").stdout)["cases"][0]["allowable_load"]  # fmt: skip
+    for text in ("bearing,load,revolutions\n6205,1kN,36Mrev\n",
+                 "bearing,load,revolutions [Mrev]\n6205,1kN,36\n"):  # fmt: skip
+        out = _run("batch", "-", "--format", "json", stdin=text)
+        assert out.exit_code == 0, out.output
+        assert json.loads(out.stdout)["cases"][0]["allowable_load"] == want

@@ -36,7 +36,7 @@ COLUMNS: dict[str, str] = {
     "cage_angle": "cage_angle",
     "exponent": "exponent",
     "method": "text",
-    "revolutions": "number",
+    "revolutions": "revolutions",
     "axial_load": "force",
     "moment": "moment",
     "moment_cross": "moment",
