@@ -121,3 +121,28 @@ def test_bad_input_is_one_error_line_naming_the_option(capsys, args, option):
     lines = err.strip().splitlines()
     assert code == 2 and out == ""
     assert len(lines) == 1 and lines[0].startswith("Error:") and option in lines[0]
+
+
+@pytest.mark.parametrize(
+    "args",
+    [
+        ["7205BDB", "-F", "1kN"],  # the mirror image across the mid-plane: no axial, no tilt
+        ["7205BDF", "-F", "1kN", "--preload", "200N"],
+        ["7205BDT", "-F", "0", "-A", "2kN"],  # the z-fold symmetry: no radial, no tilt
+        ["7205BDB", "-F", "0", "-A", "1kN", "--preload", "300N"],
+        ["7205BDB", "-F", "0", "--preload", "300N"],
+    ],
+)
+def test_symmetric_pair_has_no_rounding_tilt_nor_its_warning(capsys, args):
+    # these components were left at the rounding (tilt 3e-17°, F_r of a bearing 1.6e-13 N) and
+    # the angular-contact tilt warning, which weighs any tilt, was printed for them
+    code, out, err = run_entry(capsys, "solve", *args, "--format", "json")
+    assert code == 0 and "tilts" not in err
+    case = json.loads(out)["cases"][0]
+    assert case["tilt"] == 0.0 and case["tilt_cross"] == 0.0 and case["y"] == 0.0
+    if args[2] == "0":
+        assert case["x"] == 0.0
+        for doc in case["bearings"]:
+            assert doc["load"] == 0.0 and doc["moment"] == 0.0 and doc["tilt"] == 0.0
+    else:
+        assert case["axial"] == 0.0

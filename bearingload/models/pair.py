@@ -584,6 +584,10 @@ def _solve(z: int, kind: str, c: dict, shape: tuple[int, ...]) -> PairDistributi
     sigma = np.array([1.0, 1.0 if kind == "DT" else -1.0])
     held = np.zeros((n, 5), dtype=bool)
     held[:, [1, 4]] = (mirror & (mc == 0))[:, None]  # y and theta_c 0 by symmetry, exactly
+    no_moment = (mm == 0) & (mc == 0)
+    held[:, [0, 1, 3, 4]] |= ((fr == 0) & no_moment)[:, None]  # the z-fold symmetry (z >= 3)
+    if kind != "DT":  # the bearings' mirror image across the pair's mid-plane
+        held[:, 2:] |= ((fa == 0) & no_moment)[:, None]
     pp = _Pair((prob, prob), sigma, lever / geo.R_i[:, None],
                np.stack([u_hi, u_hi], 1), np.stack([u_lo, u_lo], 1), f, held)  # fmt: skip
     vh, vl, res, its = _solve_stages(pp, _start(pp, z, geo, fp / f_ref), curve)
@@ -718,8 +722,11 @@ def _result(kind: str, pp: _Pair, geo: Any, answer: tuple[Any, ...], c: dict,
         gen, size = _ring.forces(p, lo)
         at = _ring.Point(st.balls[k], lo, gen, size, np.zeros(n), np.zeros(n, dtype=np.int64))
         tangent = _comb._tangent(p, geo, at, st.kappa[k], curve, mirrored)
-        given = {"radial_load": np.hypot(gen[:, 0], gen[:, 1]) * f_ref, "axial_load": gen[:, 2] * f_ref,
-                 "moment": gen[:, 3] * f_ref * radius, "clearance": np.zeros(n),
+        axisymmetric = pp.held[:, 0]  # no radial force nor moment on a bearing, exactly
+        given = {"radial_load": np.where(axisymmetric, 0.0, np.hypot(gen[:, 0], gen[:, 1]) * f_ref),
+                 "axial_load": gen[:, 2] * f_ref,
+                 "moment": np.where(axisymmetric, 0.0, gen[:, 3] * f_ref * radius),
+                 "clearance": np.zeros(n),
                  "cage_angle": c["cage_angle"]}  # fmt: skip
         out = (wh + wl, st.kappa[k], its, (st.balls[k], lo, gen), tangent)
         bearings.append(_comb._result(p, geo, out, shape, given, None))
