@@ -146,3 +146,15 @@ def test_symmetric_pair_has_no_rounding_tilt_nor_its_warning(capsys, args):
             assert doc["load"] == 0.0 and doc["moment"] == 0.0 and doc["tilt"] == 0.0
     else:
         assert case["axial"] == 0.0
+
+
+def test_tilt_is_warned_where_a_moment_is_given_only(capsys):
+    # as one bearing: a shaft free to tilt under no moment is not warned of (this case printed
+    # the angular-contact tilt warning for its 0.0152° on both bearings); a moment is
+    base = ["solve", "7205BDB", "--preload", "500N", "-F", "2kN", "-A", "1kN"]
+    code, _, err = run_entry(capsys, *base)
+    assert code == 0 and err == ""
+    code, _, err = run_entry(capsys, *base, "--moment", "3Nm")
+    assert code == 0
+    assert err.startswith("Warning: bearing 1: the inner ring tilts by")
+    assert "Warning: bearing 2: the inner ring tilts by" in err
