@@ -752,6 +752,12 @@ class CaseOptions:
             )
         if self.quasi_static and self.speed is None:
             raise click.UsageError("Invalid value for '--quasi-static': it needs --speed")
+        if self.rotating == "outer" and self.speed is not None and not self.quasi_static:
+            raise click.UsageError(
+                "Invalid value for '--rotating': the ball dynamics at --speed are coded for the "
+                "inner ring turning (docs/speed.md); give --quasi-static for the static model "
+                "with the outer ring's lives"
+            )
         return {
             "speed": None if self.quasi_static else self.speed,
             "ball_density": None if self.ball_density is None else self.ball_density * 1e-9,
