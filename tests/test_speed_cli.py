@@ -25,3 +25,11 @@ def test_outer_ring_rotating_is_refused_with_the_ball_dynamics(capsys):
     code, out, _ = run_entry(capsys, *BASE, "--rotating", "outer", "--quasi-static",
                              "--format", "json")  # fmt: skip
     assert code == 0 and json.loads(out)["cases"][0]["rotating"] == "outer"
+
+
+def test_given_stiffness_is_refused_in_the_words_of_the_command_line(capsys):
+    # the refusal named the library's argument: 'ask for the static model (speed None)'
+    line = _error_line(capsys, *BASE, "--stiffness", "3e5")
+    assert "--stiffness" in line and "--quasi-static" in line and "None" not in line
+    code, _, _ = run_entry(capsys, *BASE, "--stiffness", "3e5", "--quasi-static")
+    assert code == 0

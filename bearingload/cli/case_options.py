@@ -758,6 +758,12 @@ class CaseOptions:
                 "inner ring turning (docs/speed.md); give --quasi-static for the static model "
                 "with the outer ring's lives"
             )
+        if self.stiffness is not None and self.speed is not None and not self.quasi_static:
+            raise click.UsageError(
+                "Invalid value for '--stiffness': the ball dynamics at --speed need each "
+                "contact's Hertz stiffness from the ball geometry; leave out --stiffness, or "
+                "give --quasi-static for the static model"
+            )
         return {
             "speed": None if self.quasi_static else self.speed,
             "ball_density": None if self.ball_density is None else self.ball_density * 1e-9,
