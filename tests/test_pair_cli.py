@@ -158,3 +158,14 @@ def test_tilt_is_warned_where_a_moment_is_given_only(capsys):
     assert code == 0
     assert err.startswith("Warning: bearing 1: the inner ring tilts by")
     assert "Warning: bearing 2: the inner ring tilts by" in err
+
+
+def test_static_rating_gives_each_bearing_its_static_safety(capsys):
+    # --static-rating was refused as 'the lives in hours ... of a pair are not coded yet',
+    # though it only sets C_0 of s0 = C0/P0, which the pair prints for each bearing
+    case = _json(capsys, "7205BDB", "--preload", "500N", "-F", "2kN", "-A", "1kN",
+                 "--static-rating", "20kN")["cases"][0]  # fmt: skip
+    for doc in case["bearings"]:
+        assert doc["static_rating"] == 20000.0
+        assert math.isclose(doc["static_safety"], 20000.0 / doc["static_equivalent_load"],
+                            rel_tol=1e-9)  # fmt: skip

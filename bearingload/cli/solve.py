@@ -239,7 +239,8 @@ def _pair(
                 "loads; give --moment")  # fmt: skip
     case.refuse(DYNAMICS_PARAMS, "a bearing pair", "a pair is solved by the static model: "
                 "the ball dynamics at speed are coded for one bearing only")  # fmt: skip
-    case.refuse(SERVICE_PARAMS, "a bearing pair", "the lives in hours and the modified lives "
+    lives = tuple(p for p in SERVICE_PARAMS if p != "static_rating")  # C_0 gives each s0
+    case.refuse(lives, "a bearing pair", "the lives in hours and the modified lives "
                 "of a pair are not coded yet (it gives L10r and L10 in 10^6 revolutions)")  # fmt: skip
     why = "the design contact angle fixes the geometry of an angular-contact bearing"
     case.refuse(("clearance",), "a bearing pair", why + " (no clearance)")
