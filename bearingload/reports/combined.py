@@ -299,7 +299,10 @@ def _document(cases: Sequence[CombinedCase], records: Sequence[dict[str, Any]]) 
     docs = []
     for c, r in zip(cases, records, strict=True):
         res = c.result
-        model = "3-D ring equilibrium, deep-groove ball bearing (ISO/TS 16281)"
+        alpha = c.bearing.contact_angle
+        kind = ("deep-groove ball bearing" if alpha is None
+                else f"single-row angular-contact ball bearing, {alpha:g}°")  # fmt: skip
+        model = f"3-D ring equilibrium, {kind} (ISO/TS 16281)"
         dynamics = getattr(res, "model", None)  # at speed (models.high_speed)
         docs.append(
             dict(r)
