@@ -97,6 +97,9 @@ def solve(
     loads) is given wherever the ball geometry and C_r are known, radial load or not; --rotating
     (default inner) and --dynamic-rating feed the lives only and change no load.
 
+    At --speed a combined or angular-contact solve includes each ball's centrifugal force and
+    gyroscopic moment (docs/speed.md; --quasi-static: the static model); a pair refuses --speed.
+
     Lives as engineers use them (docs/life.md): --speed gives every life in hours; --reliability
     a_1 (ISO 281 Table 12); --viscosity (needs --speed) nu_1, kappa, a_ISO (ISO 281, with
     --contamination or --eC and C_u: --fatigue-load-limit or the estimate from C_0,
