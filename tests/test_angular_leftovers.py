@@ -192,3 +192,21 @@ def test_json_model_names_the_bearing_type_as_sweep_does(capsys, args, kind):
                                "json", "--quiet")  # fmt: skip
     assert code == 0, err
     assert json.loads(out)["cases"][0]["model"] == f"3-D ring equilibrium, {kind} (ISO/TS 16281)"
+
+
+@pytest.mark.parametrize(
+    "args",
+    [
+        ["solve", "7205B", "-F", "2kN", "-A", "1kN"],
+        ["solve", "7205BDB", "--preload", "200N", "-F", "2kN", "-A", "1kN"],
+        ["sweep", "7205B", "-F", "2kN", "-A", "1kN", "--steps", "3"],
+    ],
+)
+def test_angular_tables_name_the_axial_origin_of_angular_contact(capsys, args):
+    # the row read 'axial displacement from centred rings' (the deep-groove origin), and the
+    # sweep's note 'from the centred rings (half the axial play included ...)', beside the note
+    # that the angular-contact axial displacement is measured from the zero-load position
+    code, out, _ = run_entry(capsys, *args)
+    assert code == 0
+    assert "centred rings" not in out
+    assert "axial displacement from zero-load position" in out

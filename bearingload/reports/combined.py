@@ -114,6 +114,9 @@ ANGULAR_NOTE = (
     "P0 = max(F_r, 0.5 F_r + Y0 F_a)); coded for 15, 25, 30 and 40° only (L10 at 15° needs "
     "C_0: e and Y there depend on F_a/C_0)."
 )
+#: The label of ``axial`` for an angular-contact bearing (its origin: every ball at the design
+#: angle, not the centred rings).
+ANGULAR_LABELS = {"axial": "axial displacement from zero-load position"}
 #: What replaces :data:`STATIC_NOTE` for an angular-contact bearing.
 ANGULAR_STATIC_NOTE = (
     "Contact pressures: exact Hertz, every ball at its load and contact angle, the largest of "
@@ -212,9 +215,10 @@ def _summary(records: Sequence[dict[str, Any]], bearing: Any, dynamics: str | No
     if len({r["clearance"] for r in records}) > 1:
         keys.insert(0, "clearance")
     heads = ["value"] if len(records) == 1 else [f"G_r {r['clearance_pick']}" for r in records]
-    columns, rows = quantity_rows(keys, heads, records)
+    angular = records[0].get("contact_angle") is not None
+    columns, rows = quantity_rows(keys, heads, records, ANGULAR_LABELS if angular else None)
     notes = [*NOTES, STATIC_NOTE, *set_note(bearing)]
-    if records[0].get("contact_angle") is not None:
+    if angular:
         notes[1], notes[len(NOTES)] = ANGULAR_NOTE, ANGULAR_STATIC_NOTE
     if dynamics is not None:
         notes.append(DYNAMICS_NOTE.format(dynamics))

@@ -18,7 +18,7 @@ import dataclasses
 from collections.abc import Sequence
 from typing import Any
 
-from bearingload.reports.combined import MATRIX_UNITS, contact_angle_shown
+from bearingload.reports.combined import ANGULAR_LABELS, MATRIX_UNITS, contact_angle_shown
 from bearingload.reports.quantities import units
 from bearingload.reports.render import Column, Table, render
 from bearingload.reports.solve import column, quantity_rows, with_service
@@ -92,7 +92,7 @@ def pair_report(
     heads = ["pair", "bearing 1", "bearing 2"]
     rows_of = [pair, *records]
     keys = [k for k in SUMMARY_KEYS if any(r.get(k) is not None for r in rows_of)]
-    columns, rows = quantity_rows(keys, heads, rows_of)
+    columns, rows = quantity_rows(keys, heads, rows_of, ANGULAR_LABELS)
     tables += [Table(_title(pair), columns, rows, list(NOTES)), _balls_table(c)]
     return render(tables, fmt)
 
