@@ -113,6 +113,12 @@ def test_lift_off_is_warned(capsys):
             "--width",
         ),  # fmt: skip
         (["7205BDBC", "-F", "1kN"], "BEARING"),
+        # a ring by z and K with its contact angle: the refusal named --arrangement and asked
+        # for 'a ring by hand with its contact angle', which was given
+        (
+            "-z 8 -K 4700 --contact-angle 40 --arrangement DB --width 10 -F 1kN".split(),
+            "--ball-diameter",
+        ),  # fmt: skip
         (["7205BDB", "-F", "1kN", "--misalignment", "0.01"], "--misalignment"),
     ],
 )

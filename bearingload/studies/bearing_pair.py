@@ -83,6 +83,12 @@ def solve_bearing_pair(
     from bearingload.bearings.tilt import tilt_lever
     from bearingload.models.pair import solve_pair
 
+    if b.kind == "ball" and b.contact_angle is not None and not b.has_geometry:  # z and K only
+        raise InputError(
+            "ball_diameter",
+            "a bearing pair needs the ball geometry: give a bearing designation, or the ball "
+            "and pitch diameters",
+        )
     if b.kind != "ball" or not b.has_geometry or b.contact_angle is None:
         raise InputError(
             "arrangement",
