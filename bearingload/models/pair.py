@@ -455,7 +455,8 @@ def solve_pair(
     ball_diameter, pitch_diameter : array_like
         D_w and d_m. [mm]
     width : array_like
-        B of one bearing: their centres lie B/2 either side of the pair's centre. [mm]
+        B of one bearing, at least D_w: their centres lie B/2 either side of the pair's
+        centre. [mm]
     f_i, f_o : array_like, default 0.52, 0.53
         Groove conformities. [-]
     cage_angle : array_like, default 0
@@ -511,6 +512,14 @@ def solve_pair(
     shape = arrays[0].shape
     c = dict(zip(named, (a.ravel() for a in arrays), strict=True))
     c["cage_angle"] = np.mod(c["cage_angle"], 360.0)
+    narrow = c["width"] < c["ball_diameter"]
+    if np.any(narrow):  # no ring holds its balls so; the shaft's tilt then has no lever
+        i = int(np.argmax(narrow))
+        raise InputError(
+            "width",
+            f"must be at least the ball diameter D_w (a bearing is wider than its balls): "
+            f"B = {c['width'][i]:.6g} mm, D_w = {c['ball_diameter'][i]:.6g} mm",
+        )
     with np.errstate(all="ignore"):
         return _solve(z, kind, c, shape)
 
