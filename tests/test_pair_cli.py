@@ -120,6 +120,8 @@ def test_lift_off_is_warned(capsys):
             "--ball-diameter",
         ),  # fmt: skip
         (["7205BDB", "-F", "1kN", "--misalignment", "0.01"], "--misalignment"),
+        # a preload below the solver's scale: named '--load' and advised the radial solver
+        (["7205BDB", "-F", "0", "--preload", "1e-9N"], "--preload"),
     ],
 )
 def test_bad_input_is_one_error_line_naming_the_option(capsys, args, option):
@@ -175,3 +177,8 @@ def test_static_rating_gives_each_bearing_its_static_safety(capsys):
         assert doc["static_rating"] == 20000.0
         assert math.isclose(doc["static_safety"], 20000.0 / doc["static_equivalent_load"],
                             rel_tol=1e-9)  # fmt: skip
+
+
+def test_too_small_loads_do_not_send_a_pair_to_the_radial_solver(capsys):
+    code, _, err = run_entry(capsys, "solve", "7205BDB", "-F", "1e-9N")
+    assert code == 2 and "--load" in err and "pair solver" in err and "radial" not in err

@@ -577,7 +577,18 @@ def _solve(z: int, kind: str, c: dict, shape: tuple[int, ...]) -> PairDistributi
     f_ref = np.maximum(_comb._reference_force(fr, fa, mm, mc, geo.R_i), fp)
     if np.any(f_ref <= 0):
         raise InputError("radial_load", "give a radial load, an axial load, a moment or a preload")
-    _comb._check_scale(f_ref, k_ref, geo.A)
+    try:
+        _comb._check_scale(f_ref, k_ref, geo.A)
+    except InputError as exc:  # its advice (the radial solver) does not apply to a pair
+        if "too small" not in str(exc):
+            raise
+        f_min = float(np.max(k_ref * (geo.A / _comb.GEOMETRY_RATIO_MAX) ** 1.5))
+        raise InputError(
+            "preload" if np.any(fp >= f_ref) else exc.parameter,
+            f"the loads are too small for the pair solver (the largest of F_r, |F_a|, M/R_i and "
+            f"the preload is {float(np.min(f_ref)):.3g} N; it takes at least {f_min:.2g} N for "
+            "this bearing)",
+        ) from exc
     cos_, sin_, mirror = _comb._directions(z, c["cage_angle"])
     n = fr.size
     f = np.stack([fr, np.zeros(n), fa, mm / geo.R_i, mc / geo.R_i], axis=1) / f_ref[:, None]
