@@ -182,3 +182,12 @@ def test_static_rating_gives_each_bearing_its_static_safety(capsys):
 def test_too_small_loads_do_not_send_a_pair_to_the_radial_solver(capsys):
     code, _, err = run_entry(capsys, "solve", "7205BDB", "-F", "1e-9N")
     assert code == 2 and "--load" in err and "pair solver" in err and "radial" not in err
+
+
+def test_an_unloaded_bearing_has_no_largest_loaded_contact_angle(capsys):
+    # bearing 2, lifted off (no ball loaded), showed 'largest contact angle of a loaded ball
+    # 38.5331°' (the largest of its unloaded balls)
+    case = _json(capsys, "7205BDB", "--preload", "100N", "-F", "0", "-A", "3kN")["cases"][0]
+    loaded, lifted = case["bearings"]
+    assert lifted["loaded_balls"] == 0 and lifted["contact_angle_max"] is None
+    assert loaded["contact_angle_max"] == pytest.approx(max(loaded["contact_angles"]), rel=1e-9)

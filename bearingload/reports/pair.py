@@ -80,6 +80,9 @@ def pair_report(
     into its record as a single bearing's."""
     pair = pair_record(c)
     records = with_service([combined_values(b) for b in c.bearings], service)
+    for k in range(2):
+        if c.result.unloaded[k]:  # no loaded ball: no largest angle of one
+            records[k]["contact_angle_max"] = None
     if fmt == "json":
         return render([], "json", document=_document(c, pair, records))
     if fmt == "csv":
