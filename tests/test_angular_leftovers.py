@@ -210,3 +210,11 @@ def test_angular_tables_name_the_axial_origin_of_angular_contact(capsys, args):
     assert code == 0
     assert "centred rings" not in out
     assert "axial displacement from zero-load position" in out
+
+
+def test_sweep_refuses_a_contact_angle_without_denying_angular_designations(capsys):
+    # the refusal said 'an angular-contact bearing is solved by 'solve' only', while
+    # 'sweep 7205B ...' sweeps an angular-contact bearing
+    code, _, err = run_entry(capsys, "sweep", *HAND_25, "-F", "1kN", "-A", "1kN")
+    assert code == 2 and "--contact-angle" in err and "7205B" in err
+    assert "an angular-contact bearing is solved by 'solve' only" not in err
