@@ -234,6 +234,15 @@ def test_a_matched_pair_is_refused_not_solved_as_one_bearing(text):
     assert info.value.parameter == "bearing"
 
 
+@pytest.mark.parametrize("text", ["7205BDBL", "7205BDBX", "7205B/DFT"])
+def test_a_set_suffix_with_letters_not_read_is_refused_not_solved_as_one_bearing(text):
+    """NSK's 7205BDBL (DB, light preload) was read past as a maker suffix and solved as one
+    single-row 7205B, silently: DB/DF/DT followed by letters other than a preload class."""
+    with pytest.raises(InputError, match="is not read") as info:
+        resolve_bearing(text)
+    assert info.value.parameter == "bearing"
+
+
 @pytest.mark.parametrize("text", ["7205BECBP", "7205 BEP", "7205-B-TVP", "7205BEGA", "7205BTN"])
 def test_single_bearing_maker_suffixes_are_still_read(text):
     assert resolve_bearing(text).contact_angle == 40.0

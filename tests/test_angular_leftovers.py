@@ -173,3 +173,48 @@ def test_sweep_of_an_angular_designation_equals_solve_at_each_cage_angle(capsys,
             assert row[key] == pytest.approx(one[key], rel=1e-9), key
     code, out, err = run_entry(capsys, "sweep", name, "-F", "2kN", "-A", "1kN", "--steps", "3")
     assert "axial: from the zero-load position" in out
+
+
+HAND_25 = "-z 12 --ball-diameter 8.7 --pitch-diameter 38.5 --contact-angle 25".split()
+
+
+@pytest.mark.parametrize(
+    ("args", "kind"),
+    [
+        (["7205B"], "single-row angular-contact ball bearing, 40°"),
+        (HAND_25, "single-row angular-contact ball bearing, 25°"),
+        (["6205"], "deep-groove ball bearing"),
+    ],
+)
+def test_json_model_names_the_bearing_type_as_sweep_does(capsys, args, kind):
+    # solve's JSON called every combined case a 'deep-groove ball bearing', 7205B included
+    code, out, err = run_entry(capsys, "solve", *args, "-F", "500N", "-A", "1kN", "--format",
+                               "json", "--quiet")  # fmt: skip
+    assert code == 0, err
+    assert json.loads(out)["cases"][0]["model"] == f"3-D ring equilibrium, {kind} (ISO/TS 16281)"
+
+
+@pytest.mark.parametrize(
+    "args",
+    [
+        ["solve", "7205B", "-F", "2kN", "-A", "1kN"],
+        ["solve", "7205BDB", "--preload", "200N", "-F", "2kN", "-A", "1kN"],
+        ["sweep", "7205B", "-F", "2kN", "-A", "1kN", "--steps", "3"],
+    ],
+)
+def test_angular_tables_name_the_axial_origin_of_angular_contact(capsys, args):
+    # the row read 'axial displacement from centred rings' (the deep-groove origin), and the
+    # sweep's note 'from the centred rings (half the axial play included ...)', beside the note
+    # that the angular-contact axial displacement is measured from the zero-load position
+    code, out, _ = run_entry(capsys, *args)
+    assert code == 0
+    assert "centred rings" not in out
+    assert "axial displacement from zero-load position" in out
+
+
+def test_sweep_refuses_a_contact_angle_without_denying_angular_designations(capsys):
+    # the refusal said 'an angular-contact bearing is solved by 'solve' only', while
+    # 'sweep 7205B ...' sweeps an angular-contact bearing
+    code, _, err = run_entry(capsys, "sweep", *HAND_25, "-F", "1kN", "-A", "1kN")
+    assert code == 2 and "--contact-angle" in err and "7205B" in err
+    assert "an angular-contact bearing is solved by 'solve' only" not in err

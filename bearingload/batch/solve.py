@@ -490,7 +490,7 @@ def _solve_combined(
         tilt_radius=None if groove else given("_lever"), speed=given("speed", at_speed),
         ball_density=None if rho is None else rho * 1e-9,
     )  # fmt: skip
-    out = combined_columns(case) | _contacts(case.result, len(idx))
+    out = combined_columns(case) | _contacts(case.result, len(idx), b.contact_angle)
     loads = np.asarray(case.result.ball_loads, dtype=float).reshape(len(idx), -1)
     heaviest = np.argmax(loads, axis=-1)[:, None]
     angles = np.asarray(case.result.contact_angles, dtype=float).reshape(len(idx), -1)
@@ -498,13 +498,13 @@ def _solve_combined(
     return out | {"_bearing": b, "_load": out["equivalent_load"], "_angle": angle}
 
 
-def _contacts(res: Any, n: int) -> dict[str, Any]:
+def _contacts(res: Any, n: int, contact_angle: float | None) -> dict[str, Any]:
     """The json-only quantities of the ``n`` combined rows of ``res``, as solve's json names
     them (:func:`bearingload.reports.combined.contact_values`): ``model`` and each row's
     per-ball contact angles and loads, inner and outer."""
     from bearingload.reports.combined import contact_values
 
-    found = contact_values(res)
+    found = contact_values(res, contact_angle)
     out: dict[str, Any] = {"model": found.pop("model")}
     for key, value in found.items():
         out[key] = list(np.asarray(value, dtype=float).reshape(n, -1))

@@ -36,6 +36,8 @@ _ISO = re.compile(
 #: A matched pair or set after the contact-angle letter (NSK's 7205BDB, 7205BDF, 7205BDT; the
 #: /DB form; DBA ... DBD with a preload class): two bearings, not one.
 _PAIR = re.compile(r"D[BFT][A-D]?(?![A-Z])")
+#: DB, DF, DT followed by letters not read (NSK's DBL, a light preload): a set, not one bearing.
+_PAIR_LIKE = re.compile(r"D[BFT][A-Z]+")
 _GOST = re.compile(r"^(?:[^-\s]{1,6}\s*-\s*)?(?P<design>[346])6(?P<series>[1-4])(?P<bore>\d{2})$")
 
 
@@ -117,6 +119,8 @@ def split_pair(text: str) -> tuple[str, str | None]:
     norm = re.sub(r"\s+", " ", text.strip().upper())
     m = _ISO.match(norm)
     found = _PAIR.search(m.group("rest")) if m else None
+    if m is not None and found is None:
+        _refuse_unread_set(text, m)
     if m is None or found is None:
         return text, None
     if len(found.group(0)) > 2:
@@ -131,6 +135,20 @@ def split_pair(text: str) -> tuple[str, str | None]:
     single = rest[: found.start()] + rest[found.end() :]
     name = f"{m.group('series')}{m.group('bore')}{m.group('letter')}{single.rstrip(' /-')}"
     return name, found.group(0)
+
+
+def _refuse_unread_set(text: str, m: re.Match[str]) -> None:
+    """Refuse DB, DF or DT followed by letters that are not a preload class (NSK's ``DBL``, a
+    light preload): a set, which read past as a maker's suffix would be solved as one bearing."""
+    unread = _PAIR_LIKE.search(m.group("rest"))
+    if unread is not None:
+        raise InputError(
+            "bearing",
+            f"{text.strip()!r}: the suffix {unread.group(0)} is not read (a matched set is DB, "
+            "DF or DT, with a preload class A ... D at most): give the pair as "
+            f"{m.group('series')}{m.group('bore')}{m.group('letter')}{unread.group(0)[:2]} "
+            "with its preload force, or the single bearing without the suffix",
+        )
 
 
 @dataclass(frozen=True)
@@ -199,6 +217,8 @@ def find_angular(parsed: AngularDesignation, maker: str | None = None) -> Angula
         and series there are; (``maker``) when ``maker`` has no row for it.
     """
     m = _ISO.match(re.sub(r"\s+", " ", parsed.text.upper()))
+    if m and not _PAIR.search(m.group("rest")):
+        _refuse_unread_set(parsed.text, m)
     if m and _PAIR.search(m.group("rest")):
         raise InputError(
             "bearing",

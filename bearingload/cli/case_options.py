@@ -139,8 +139,8 @@ def _option(*decls: str, **attrs: Any) -> tuple[tuple[str, ...], dict[str, Any]]
 _FORCE, _MOMENT, _ANGLE = (units_help(k) for k in ("force", "moment", "angle"))
 MAKER_HELP = (
     "Whose ball set the designation uses where makers differ: NSK (default), NTN, SKF, GMN, "
-    "GOST, or a published test-rig set (CWRU, PRONOSTIA, PADERBORN); 'bearingload catalog show "
-    "X' lists the makers of X."
+    "GOST, KOYO (angular-contact rows; the default where NSK has none), or a published test-rig "
+    "set (CWRU, PRONOSTIA, PADERBORN); 'bearingload catalog show X' lists the makers of X."
 )
 
 #: Every case option: click parameter name -> (declarations, attributes), in help order;
@@ -699,6 +699,18 @@ class CaseOptions:
             )
         if self.quasi_static and self.speed is None:
             raise click.UsageError("Invalid value for '--quasi-static': it needs --speed")
+        if self.rotating == "outer" and self.speed is not None and not self.quasi_static:
+            raise click.UsageError(
+                "Invalid value for '--rotating': the ball dynamics at --speed are coded for the "
+                "inner ring turning (docs/speed.md); give --quasi-static for the static model "
+                "with the outer ring's lives"
+            )
+        if self.stiffness is not None and self.speed is not None and not self.quasi_static:
+            raise click.UsageError(
+                "Invalid value for '--stiffness': the ball dynamics at --speed need each "
+                "contact's Hertz stiffness from the ball geometry; leave out --stiffness, or "
+                "give --quasi-static for the static model"
+            )
         return {
             "speed": None if self.quasi_static else self.speed,
             "ball_density": None if self.ball_density is None else self.ball_density * 1e-9,

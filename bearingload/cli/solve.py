@@ -101,6 +101,9 @@ def solve(
     loads) is given wherever the ball geometry and C_r are known, radial load or not; --rotating
     (default inner) and --dynamic-rating feed the lives only and change no load.
 
+    At --speed a combined or angular-contact solve includes each ball's centrifugal force and
+    gyroscopic moment (docs/speed.md; --quasi-static: the static model); a pair refuses --speed.
+
     Lives as engineers use them (docs/life.md): --speed gives every life in hours; --reliability
     a_1 (ISO 281 Table 12); --viscosity (needs --speed) nu_1, kappa, a_ISO (ISO 281, with
     --contamination or --eC and C_u: --fatigue-load-limit or the estimate from C_0,
@@ -243,7 +246,8 @@ def _pair(
                 "loads; give --moment")  # fmt: skip
     case.refuse(DYNAMICS_PARAMS, "a bearing pair", "a pair is solved by the static model: "
                 "the ball dynamics at speed are coded for one bearing only")  # fmt: skip
-    case.refuse(SERVICE_PARAMS, "a bearing pair", "the lives in hours and the modified lives "
+    lives = tuple(p for p in SERVICE_PARAMS if p != "static_rating")  # C_0 gives each s0
+    case.refuse(lives, "a bearing pair", "the lives in hours and the modified lives "
                 "of a pair are not coded yet (it gives L10r and L10 in 10^6 revolutions)")  # fmt: skip
     why = "the design contact angle fixes the geometry of an angular-contact bearing"
     case.refuse(("clearance",), "a bearing pair", why + " (no clearance)")

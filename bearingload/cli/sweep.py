@@ -117,7 +117,8 @@ def sweep(
     case.refuse(
         ("contact_angle",),
         "sweep",
-        "an angular-contact bearing is solved by 'solve' only (docs/angular_contact.md)",
+        "a ring given by hand with its contact angle is solved by 'solve' only; sweep takes "
+        "an angular-contact designation (7205B; docs/angular_contact.md)",
     )
     case.refuse([n for n in SERVICE_PARAMS if n != "speed"], "sweep", SERVICE_REFUSAL)
     case.refuse(DYNAMICS_PARAMS, "sweep", "the sweep solves the static model (--speed gives "

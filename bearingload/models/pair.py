@@ -455,7 +455,8 @@ def solve_pair(
     ball_diameter, pitch_diameter : array_like
         D_w and d_m. [mm]
     width : array_like
-        B of one bearing: their centres lie B/2 either side of the pair's centre. [mm]
+        B of one bearing, at least D_w: their centres lie B/2 either side of the pair's
+        centre. [mm]
     f_i, f_o : array_like, default 0.52, 0.53
         Groove conformities. [-]
     cage_angle : array_like, default 0
@@ -511,6 +512,14 @@ def solve_pair(
     shape = arrays[0].shape
     c = dict(zip(named, (a.ravel() for a in arrays), strict=True))
     c["cage_angle"] = np.mod(c["cage_angle"], 360.0)
+    narrow = c["width"] < c["ball_diameter"]
+    if np.any(narrow):  # no ring holds its balls so; the shaft's tilt then has no lever
+        i = int(np.argmax(narrow))
+        raise InputError(
+            "width",
+            f"must be at least the ball diameter D_w (a bearing is wider than its balls): "
+            f"B = {c['width'][i]:.6g} mm, D_w = {c['ball_diameter'][i]:.6g} mm",
+        )
     with np.errstate(all="ignore"):
         return _solve(z, kind, c, shape)
 
@@ -568,7 +577,18 @@ def _solve(z: int, kind: str, c: dict, shape: tuple[int, ...]) -> PairDistributi
     f_ref = np.maximum(_comb._reference_force(fr, fa, mm, mc, geo.R_i), fp)
     if np.any(f_ref <= 0):
         raise InputError("radial_load", "give a radial load, an axial load, a moment or a preload")
-    _comb._check_scale(f_ref, k_ref, geo.A)
+    try:
+        _comb._check_scale(f_ref, k_ref, geo.A)
+    except InputError as exc:  # its advice (the radial solver) does not apply to a pair
+        if "too small" not in str(exc):
+            raise
+        f_min = float(np.max(k_ref * (geo.A / _comb.GEOMETRY_RATIO_MAX) ** 1.5))
+        raise InputError(
+            "preload" if np.any(fp >= f_ref) else exc.parameter,
+            f"the loads are too small for the pair solver (the largest of F_r, |F_a|, M/R_i and "
+            f"the preload is {float(np.min(f_ref)):.3g} N; it takes at least {f_min:.2g} N for "
+            "this bearing)",
+        ) from exc
     cos_, sin_, mirror = _comb._directions(z, c["cage_angle"])
     n = fr.size
     f = np.stack([fr, np.zeros(n), fa, mm / geo.R_i, mc / geo.R_i], axis=1) / f_ref[:, None]
@@ -584,6 +604,10 @@ def _solve(z: int, kind: str, c: dict, shape: tuple[int, ...]) -> PairDistributi
     sigma = np.array([1.0, 1.0 if kind == "DT" else -1.0])
     held = np.zeros((n, 5), dtype=bool)
     held[:, [1, 4]] = (mirror & (mc == 0))[:, None]  # y and theta_c 0 by symmetry, exactly
+    no_moment = (mm == 0) & (mc == 0)
+    held[:, [0, 1, 3, 4]] |= ((fr == 0) & no_moment)[:, None]  # the z-fold symmetry (z >= 3)
+    if kind != "DT":  # the bearings' mirror image across the pair's mid-plane
+        held[:, 2:] |= ((fa == 0) & no_moment)[:, None]
     pp = _Pair((prob, prob), sigma, lever / geo.R_i[:, None],
                np.stack([u_hi, u_hi], 1), np.stack([u_lo, u_lo], 1), f, held)  # fmt: skip
     vh, vl, res, its = _solve_stages(pp, _start(pp, z, geo, fp / f_ref), curve)
@@ -718,8 +742,11 @@ def _result(kind: str, pp: _Pair, geo: Any, answer: tuple[Any, ...], c: dict,
         gen, size = _ring.forces(p, lo)
         at = _ring.Point(st.balls[k], lo, gen, size, np.zeros(n), np.zeros(n, dtype=np.int64))
         tangent = _comb._tangent(p, geo, at, st.kappa[k], curve, mirrored)
-        given = {"radial_load": np.hypot(gen[:, 0], gen[:, 1]) * f_ref, "axial_load": gen[:, 2] * f_ref,
-                 "moment": gen[:, 3] * f_ref * radius, "clearance": np.zeros(n),
+        axisymmetric = pp.held[:, 0]  # no radial force nor moment on a bearing, exactly
+        given = {"radial_load": np.where(axisymmetric, 0.0, np.hypot(gen[:, 0], gen[:, 1]) * f_ref),
+                 "axial_load": gen[:, 2] * f_ref,
+                 "moment": np.where(axisymmetric, 0.0, gen[:, 3] * f_ref * radius),
+                 "clearance": np.zeros(n),
                  "cage_angle": c["cage_angle"]}  # fmt: skip
         out = (wh + wl, st.kappa[k], its, (st.balls[k], lo, gen), tangent)
         bearings.append(_comb._result(p, geo, out, shape, given, None))

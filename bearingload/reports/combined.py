@@ -114,6 +114,9 @@ ANGULAR_NOTE = (
     "P0 = max(F_r, 0.5 F_r + Y0 F_a)); coded for 15, 25, 30 and 40° only (L10 at 15° needs "
     "C_0: e and Y there depend on F_a/C_0)."
 )
+#: The label of ``axial`` for an angular-contact bearing (its origin: every ball at the design
+#: angle, not the centred rings).
+ANGULAR_LABELS = {"axial": "axial displacement from zero-load position"}
 #: What replaces :data:`STATIC_NOTE` for an angular-contact bearing.
 ANGULAR_STATIC_NOTE = (
     "Contact pressures: exact Hertz, every ball at its load and contact angle, the largest of "
@@ -212,9 +215,10 @@ def _summary(records: Sequence[dict[str, Any]], bearing: Any, dynamics: str | No
     if len({r["clearance"] for r in records}) > 1:
         keys.insert(0, "clearance")
     heads = ["value"] if len(records) == 1 else [f"G_r {r['clearance_pick']}" for r in records]
-    columns, rows = quantity_rows(keys, heads, records)
+    angular = records[0].get("contact_angle") is not None
+    columns, rows = quantity_rows(keys, heads, records, ANGULAR_LABELS if angular else None)
     notes = [*NOTES, STATIC_NOTE, *set_note(bearing)]
-    if records[0].get("contact_angle") is not None:
+    if angular:
         notes[1], notes[len(NOTES)] = ANGULAR_NOTE, ANGULAR_STATIC_NOTE
     if dynamics is not None:
         notes.append(DYNAMICS_NOTE.format(dynamics))
@@ -294,13 +298,14 @@ def contact_angle_shown(alpha: float, load: float) -> Any:
 
 
 #: The model of a combined-load case, as json names it (at speed the ball dynamics are added).
-MODEL = "3-D ring equilibrium, deep-groove ball bearing (ISO/TS 16281)"
-
-
-def contact_values(res: Any) -> dict[str, Any]:
-    """The ``model`` of a solved combined-load result (one case or many) and each ball's inner
-    and outer contact angle [°] and load [N], as json names them: at speed those of
+def contact_values(res: Any, contact_angle: float | None = None) -> dict[str, Any]:
+    """The ``model`` of a solved combined-load result (one case or many) of a bearing of the
+    design ``contact_angle`` [°] (None: deep groove) and each ball's inner and outer contact
+    angle [°] and load [N], as json names them: at speed those of
     :class:`bearingload.models.high_speed.HighSpeedDistribution`, else inner = outer."""
+    kind = ("deep-groove ball bearing" if contact_angle is None
+            else f"single-row angular-contact ball bearing, {contact_angle:g}°")  # fmt: skip
+    model = f"3-D ring equilibrium, {kind} (ISO/TS 16281)"
     dynamics = getattr(res, "model", None)  # at speed (models.high_speed)
     if dynamics is None:
         angles, loads = (res.contact_angles,) * 2, (res.ball_loads,) * 2
@@ -308,7 +313,7 @@ def contact_values(res: Any) -> dict[str, Any]:
         angles = (res.contact_angles_inner, res.contact_angles_outer)
         loads = (res.ball_loads_inner, res.ball_loads_outer)
     return {
-        "model": MODEL if dynamics is None else f"{MODEL}; {dynamics}",
+        "model": model if dynamics is None else f"{model}; {dynamics}",
         "contact_angles_inner": angles[0],
         "contact_angles_outer": angles[1],
         "ball_loads_inner": loads[0],
@@ -322,7 +327,7 @@ def _document(cases: Sequence[CombinedCase], records: Sequence[dict[str, Any]]) 
     docs = []
     for c, r in zip(cases, records, strict=True):
         res = c.result
-        found = contact_values(res)
+        found = contact_values(res, c.bearing.contact_angle)
         docs.append(
             dict(r)
             | {

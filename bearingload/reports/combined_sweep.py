@@ -16,7 +16,7 @@ from __future__ import annotations
 from dataclasses import asdict
 from typing import Any
 
-from bearingload.reports.combined import NOTES, tilt_text
+from bearingload.reports.combined import ANGULAR_LABELS, ANGULAR_NOTE, NOTES, tilt_text
 from bearingload.reports.quantities import QUANTITIES, units
 from bearingload.reports.render import Table, render
 from bearingload.reports.solve import column
@@ -142,15 +142,22 @@ def title(s: CombinedSweep) -> str:
 
 
 def _spread_table(s: CombinedSweep, context: str) -> Table:
+    import dataclasses
+
     from bearingload.reports.sweep import spread_table
 
+    angular = s.bearing.contact_angle is not None
     entries = []
     for key in _spread_keys(s):
         q = QUANTITIES[key]
+        if angular and key in ANGULAR_LABELS:
+            q = dataclasses.replace(q, label=ANGULAR_LABELS[key])
         sp = s.spread(key)
         assert sp is not None
         entries += [(q, sp, shown) for shown in [q.shown()] + ([q.also] if q.also else [])]
     notes = ["mean: over one period (the last position, equal to the first, left out).", *NOTES]
+    if angular:  # the axial origin: the zero-load position, not the centred rings
+        notes[2] = ANGULAR_NOTE
     return spread_table(f"Over one ball pitch ({title(s)})", entries, notes, context)
 
 

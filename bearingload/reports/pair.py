@@ -18,7 +18,7 @@ import dataclasses
 from collections.abc import Sequence
 from typing import Any
 
-from bearingload.reports.combined import MATRIX_UNITS, contact_angle_shown
+from bearingload.reports.combined import ANGULAR_LABELS, MATRIX_UNITS, contact_angle_shown
 from bearingload.reports.quantities import units
 from bearingload.reports.render import Column, Table, render
 from bearingload.reports.solve import column, quantity_rows, with_service
@@ -80,6 +80,9 @@ def pair_report(
     into its record as a single bearing's."""
     pair = pair_record(c)
     records = with_service([combined_values(b) for b in c.bearings], service)
+    for k in range(2):
+        if c.result.unloaded[k]:  # no loaded ball: no largest angle of one
+            records[k]["contact_angle_max"] = None
     if fmt == "json":
         return render([], "json", document=_document(c, pair, records))
     if fmt == "csv":
@@ -92,7 +95,7 @@ def pair_report(
     heads = ["pair", "bearing 1", "bearing 2"]
     rows_of = [pair, *records]
     keys = [k for k in SUMMARY_KEYS if any(r.get(k) is not None for r in rows_of)]
-    columns, rows = quantity_rows(keys, heads, rows_of)
+    columns, rows = quantity_rows(keys, heads, rows_of, ANGULAR_LABELS)
     tables += [Table(_title(pair), columns, rows, list(NOTES)), _balls_table(c)]
     return render(tables, fmt)
 

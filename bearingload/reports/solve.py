@@ -214,15 +214,18 @@ def service_notes(service: Sequence[Any] | None) -> list[str]:
 
 
 def quantity_rows(
-    keys: Sequence[str], heads: Sequence[str], records: Sequence[dict[str, Any]]
-) -> tuple[list[Column], list[dict[str, Any]]]:
+    keys: Sequence[str], heads: Sequence[str], records: Sequence[dict[str, Any]],
+    labels: dict[str, str] | None = None,
+) -> tuple[list[Column], list[dict[str, Any]]]:  # fmt: skip
     """quantity | one column per case | unit: each quantity in its display unit, and again in
-    its second unit where it has one (Q_max in kgf); '-' where a case does not give it."""
+    its second unit where it has one (Q_max in kgf); '-' where a case does not give it;
+    ``labels`` replaces the label of a key (the angular-contact axial origin)."""
     rows = []
     for key in keys:
         q = QUANTITIES[key]
+        label = (labels or {}).get(key, q.label)
         for unit, factor in [q.shown()] + ([q.also] if q.also else []):
-            row: dict[str, Any] = {"quantity": q.label, "unit": unit or ""}
+            row: dict[str, Any] = {"quantity": label, "unit": unit or ""}
             for h, r in zip(heads, records, strict=True):
                 v = r.get(key)
                 row[h] = "-" if v is None else (v * factor if q.digits else v)

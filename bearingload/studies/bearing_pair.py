@@ -83,6 +83,12 @@ def solve_bearing_pair(
     from bearingload.bearings.tilt import tilt_lever
     from bearingload.models.pair import solve_pair
 
+    if b.kind == "ball" and b.contact_angle is not None and not b.has_geometry:  # z and K only
+        raise InputError(
+            "ball_diameter",
+            "a bearing pair needs the ball geometry: give a bearing designation, or the ball "
+            "and pitch diameters",
+        )
     if b.kind != "ball" or not b.has_geometry or b.contact_angle is None:
         raise InputError(
             "arrangement",
@@ -98,22 +104,24 @@ def solve_bearing_pair(
         modulus=b.modulus, poisson=b.poisson,
         stiffness=b.stiffness if b.stiffness_given else None, tilt_radius=lever,
     )  # fmt: skip
-    return _pair_case(b, r, lever, rotating, dynamic_rating)
+    tilted = moment is not None or bool(moment_cross)  # else free to tilt: no tilt warning
+    return _pair_case(b, r, lever, rotating, dynamic_rating, tilted)
 
 
 def _pair_case(
-    b: ResolvedBearing, r: PairDistribution, lever: Any, rotating: str, dynamic_rating: Any
-) -> PairCase:
-    """Each bearing's lives and checks, the pair's lives and findings."""
+    b: ResolvedBearing, r: PairDistribution, lever: Any, rotating: str, dynamic_rating: Any,
+    tilted: bool,
+) -> PairCase:  # fmt: skip
+    """Each bearing's lives and checks, the pair's lives and findings; ``tilted``: a moment is
+    given, and each bearing's tilt is weighed as one bearing's under a moment (else the shaft
+    is free to tilt, as one bearing's ring under no moment, and no tilt is warned of)."""
     from bearingload.models.pair import pair_life
     from bearingload.studies.combined_bearing import _combined_case
 
     cases = []
     for k, rk in enumerate(r.bearings):
-        # no moment given to the checks: a bearing's tilt in a pair is the shaft's elastic
-        # tilt, which the pair carries, not a misalignment of shaft and housing
-        c = _combined_case(b, rk, rk.load, rk.axial_load, None, None, None, lever,
-                           rotating, dynamic_rating)  # fmt: skip
+        c = _combined_case(b, rk, rk.load, rk.axial_load, rk.moment if tilted else None, None,
+                           None, lever, rotating, dynamic_rating)  # fmt: skip
         if r.unloaded[k]:  # no ball loaded: no life, no equivalent load
             import dataclasses
 

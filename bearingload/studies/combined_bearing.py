@@ -142,6 +142,10 @@ def _combined_case(
         l10r = reference_lives(b, r, rotating, c_r)
         p_eq, life = basic_lives(b, c_r, load, axial_load)
     found = contact_pressures(b, r.ball_loads, r.contact_angles)
+    outer = getattr(r, "ball_loads_outer", None)  # at speed: each ball's outer contact apart
+    if found is not None and outer is not None:
+        angles = getattr(r, "contact_angles_outer", None)
+        found = (found[0], contact_pressures(b, outer, angles)[1])
     p_i = p_o = None
     if found is not None:
         p_i, p_o = np.max(found[0], axis=-1), np.max(found[1], axis=-1)
