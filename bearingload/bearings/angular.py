@@ -139,7 +139,17 @@ def split_pair(text: str) -> tuple[str, str | None]:
 
 def _refuse_unread_set(text: str, m: re.Match[str]) -> None:
     """Refuse DB, DF or DT followed by letters that are not a preload class (NSK's ``DBL``, a
-    light preload): a set, which read past as a maker's suffix would be solved as one bearing."""
+    light preload): a set, which read past as a maker's suffix would be solved as one bearing;
+    and a radial clearance class (``7205B/C3``), which an angular-contact bearing has not."""
+    clearance = re.search(r"C[2-5N](?![0-9])", m.group("rest"))
+    if clearance is not None:  # a radial clearance class: a deep-groove bearing's suffix
+        raise InputError(
+            "bearing",
+            f"{text.strip()!r}: the suffix {clearance.group(0)} is a radial clearance class, which "
+            "a single-row angular-contact bearing does not have (it is solved at its contact "
+            f"angle, without clearance): give {m.group('series')}{m.group('bore')}"
+            f"{m.group('letter')}",
+        )
     unread = _PAIR_LIKE.search(m.group("rest"))
     if unread is not None:
         raise InputError(

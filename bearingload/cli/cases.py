@@ -88,7 +88,21 @@ def resolve_bearings(case: CaseOptions, stiffness: float | None, **override: Any
     from bearingload.bearings.resolve import resolve_bearings as resolve
 
     arguments = case.bearing_arguments(stiffness) | override
-    return resolve(arguments.pop("designation"), **arguments)
+    found = resolve(arguments.pop("designation"), **arguments)
+    if "clearance_pick" in case.given and found[0].clearance_class is None:
+        raise click.UsageError(
+            "Invalid value for '--clearance-pick': it picks the min, mean or max of a clearance "
+            f"class (-G CN, C3 ... of a catalogue bearing); {_no_class(found[0])}, so it would "
+            "be ignored"
+        )
+    return found
+
+
+def _no_class(b: Any) -> str:
+    """Why the resolved bearing ``b`` has no clearance class to pick in."""
+    if b.contact_angle is not None:
+        return "an angular-contact bearing has no radial clearance"
+    return f"this case's clearance is one value, no class (G_r = {b.clearance * 1000:g} µm)"
 
 
 def bearing_context(b: Any) -> str:
