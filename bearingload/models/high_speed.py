@@ -68,6 +68,15 @@ from bearingload import validate
 from bearingload.constants import STEEL_MODULUS
 from bearingload.errors import ConvergenceError, InputError
 from bearingload.models import combined as _combined
+from bearingload.models._ball_dynamics import (
+    _H,
+    _line_start,
+    _power,
+    _Set,
+    _stiffness,
+    ball_terms,
+    solve_balls,
+)
 from bearingload.models.combined import CombinedDistribution
 
 __all__ = ["HighSpeedDistribution", "solve_high_speed", "STEEL_DENSITY", "MAX_SPEED_PITCH",
@@ -81,18 +90,10 @@ MAX_SPEED_PITCH = 2.0e6
 MODEL = "ball dynamics: centrifugal force and gyroscopic moment, outer-raceway control"
 #: Relative residual of the ring equilibrium (of the largest applied load). [-]
 TOLERANCE = 1e-12
-#: Relative residual of each ball's equations (of the sum of its force magnitudes). [-]
-BALL_TOLERANCE = 1e-13
 #: Largest ring residual accepted at the end. [-]
 ACCEPT = 1e-9
-#: Ring Newton steps per stiffness update, ball Newton steps per ring position, updates. [-]
+#: Ring Newton steps. [-]
 RING_ITERATIONS = 200
-BALL_ITERATIONS = 30
-STIFFNESS_UPDATES = 20
-#: Rounding of an approach over its length's (of the ball tolerance). [-]
-_ROUND = 16.0 * float(np.finfo(float).eps) / BALL_TOLERANCE
-#: Complex step. [-]
-_H = 1e-30
 #: N mm per kg mm^2/s^2 (forces from kg, mm, s). [-]
 _KG_MM = 1e-3
 
@@ -150,143 +151,6 @@ class HighSpeedDistribution(CombinedDistribution):
     centrifugal_forces: Any = None
     gyroscopic_moments: Any = None
     model: str = MODEL
-
-
-@dataclass
-class _Set:
-    """Constants of every ball (n, z) or per case (n, 1), physical units."""
-
-    ri: np.ndarray  # r'_i = (f_i - 1/2) D_w [mm]
-    ro: np.ndarray  # r'_o
-    dw: np.ndarray
-    dm: np.ndarray
-    omega: np.ndarray  # [rad/s]
-    mass: np.ndarray  # [kg]
-    ki: np.ndarray  # K_i at the Chebyshev nodes of cos(alpha) (n, 1, NODES) [N/mm^1.5]
-    ko: np.ndarray
-
-    def take(self, idx: np.ndarray) -> _Set:
-        return _Set(*(getattr(self, f.name)[idx] for f in dataclasses.fields(self)))
-
-
-def ball_terms(b: _Set, rho: Any, u: Any, do: Any, ao: Any) -> tuple[Any, ...]:  # complex-capable
-    """Every quantity of the balls at (rho, u) with the unknowns (delta_o, alpha_o).
-
-    Returns (g1, g2, Q_i, Q_o, sin a_i, cos a_i, F_c, M_g, omega_c, omega_R, beta, delta_i,
-    ring axial force, ring radial force) [N, mm, rad/s]; the ring forces are those the ball
-    puts on the inner ring's equilibrium (``Q_i sin a_i``, ``Q_i cos a_i``)."""
-    lo = b.ro + do
-    so, co = np.sin(ao), np.cos(ao)
-    e1 = u - lo * so
-    e2 = rho - lo * co
-    li = np.sqrt(e1 * e1 + e2 * e2)
-    di = li - b.ri
-    si, ci = e1 / li, e2 / li
-    qi = _stiffness(b.ki, ci) * _power(di)
-    qo = _stiffness(b.ko, co) * _power(do)
-    gamma = b.dw / b.dm
-    tb = so / (co + gamma)
-    beta = np.arctan(tb)
-    c_o = (co + tb * so) / (1.0 + gamma * co)
-    c_i = (ci + tb * si) / (1.0 - gamma * ci)
-    wc = b.omega * c_o / (c_o + c_i)
-    wr = b.omega / (gamma * np.cos(beta) * (c_o + c_i))
-    fc = 0.5 * b.mass * b.dm * wc * wc * _KG_MM
-    mg = 0.1 * b.mass * b.dw * b.dw * wr * wc * np.sin(beta) * _KG_MM
-    fr = 2.0 * mg / b.dw
-    g1 = qi * si - qo * so + fr * co
-    g2 = qi * ci - qo * co - fr * so + fc
-    return g1, g2, qi, qo, si, ci, fc, mg, wc, wr, beta, di, qi * si, qi * ci
-
-
-def _stiffness(nodes: np.ndarray, cos_alpha: Any) -> Any:
-    """K(cos alpha) from its values at the Chebyshev nodes (barycentric interpolation, a
-    rational function: complex-step safe). Below cos = 0.05 (a loose ball pointing across the
-    groove: no load) the value at 0.05. [N/mm^1.5]"""
-    c = np.where(np.real(cos_alpha) < 0.05, 0.05, cos_alpha)
-    terms = _NODE_W / ((2.0 * c - 1.0)[..., None] - _NODE_X)
-    return (terms * nodes).sum(-1) / terms.sum(-1)
-
-
-def _power(d: Any) -> Any:
-    """max(d, 0)^1.5, complex-step safe (0j ** 1.5 is NaN in numpy)."""
-    on = np.real(d) > 0
-    return np.where(on, np.where(on, d, 1.0) ** 1.5, 0.0)
-
-
-def _line_start(b: _Set, rho: np.ndarray, u: np.ndarray) -> tuple[np.ndarray, np.ndarray]:
-    """The static position: the ball on the line of its groove centres, the approach shared by
-    the contacts as their compliances, delta_o = w delta, w = K_o^-2/3 / (K_i^-2/3 + K_o^-2/3)."""
-    r = np.maximum(rho, 0.0)
-    d = np.hypot(r, u)
-    cos_a = r / np.where(d > 0, d, 1.0)
-    ci, co = _stiffness(b.ki, cos_a) ** (-2.0 / 3.0), _stiffness(b.ko, cos_a) ** (-2.0 / 3.0)
-    w = co / (ci + co)
-    return w * (d - b.ri - b.ro), np.arctan2(u, r)
-
-
-def _solve_balls(
-    b: _Set, rho: np.ndarray, u: np.ndarray, do: np.ndarray, ao: np.ndarray
-) -> tuple[np.ndarray, np.ndarray, np.ndarray]:
-    """Newton on every ball's two equations at the ring position (rho, u), from (do, ao).
-    Cases at speed 0 keep the static (line) position. Returns (do, ao, converged (n, z))."""
-    moving = np.broadcast_to(b.omega > 0, do.shape)
-    do, ao = do.copy(), ao.copy()
-    ok = ~moving
-    for _ in range(BALL_ITERATIONS):
-        t = ball_terms(b, rho, u, do, ao)
-        norm, ok = _ball_norm(b, t, do, moving)
-        if ok.all():
-            break
-        hd = _H * (b.ri + b.ro)
-        td = ball_terms(b, rho, u, do + 1j * hd, ao)
-        ta = ball_terms(b, rho, u, do, ao + 1j * _H)
-        j11, j21 = np.imag(td[0]) / hd, np.imag(td[1]) / hd
-        j12, j22 = np.imag(ta[0]) / _H, np.imag(ta[1]) / _H
-        det = j11 * j22 - j12 * j21
-        with np.errstate(all="ignore"):
-            sd = -(j22 * t[0] - j12 * t[1]) / det
-            sa = -(-j21 * t[0] + j11 * t[1]) / det
-        go = ~ok & np.isfinite(sd) & np.isfinite(sa)
-        sd, sa = np.where(go, sd, 0.0), np.where(go, sa, 0.0)
-        cut = np.minimum(1.0, 0.2 / np.maximum(np.abs(sa), 1e-300))  # the Newton direction kept
-        sd, sa = sd * cut, sa * cut
-        lam = np.ones_like(do)
-        pending = go.copy()
-        size = np.hypot(t[0], t[1])  # the line search compares the residual itself
-        for _ in range(12):  # backtracking: the step, halved until the residual falls
-            trial_d = np.where(do + lam * sd > 0.1 * do, do + lam * sd, 0.1 * do)
-            trial_a = ao + lam * sa
-            t2 = ball_terms(b, rho, u, trial_d, trial_a)
-            ok2 = _ball_norm(b, t2, trial_d, moving)[1]
-            n2 = np.hypot(t2[0], t2[1])
-            better = pending & ((n2 < (1.0 - 1e-4 * lam) * size) | ok2)
-            do, ao = np.where(better, trial_d, do), np.where(better, trial_a, ao)
-            pending &= ~better
-            if not pending.any():
-                break
-            lam = np.where(pending, 0.5 * lam, lam)
-        if pending.all():
-            break
-    t = ball_terms(b, rho, u, do, ao)
-    ok = _ball_norm(b, t, do, moving)[1]
-    return do, ao, ok
-
-
-def _ball_norm(
-    b: _Set, t: tuple[Any, ...], do: np.ndarray, moving: np.ndarray
-) -> tuple[np.ndarray, np.ndarray]:
-    """The balls' residual over their force size, and which balls are balanced (those at
-    speed 0 are, on their line)."""
-    g1, g2, qi, qo, fc, mg = t[0], t[1], t[2], t[3], t[6], t[7]
-    size = np.abs(qi) + np.abs(qo) + np.abs(fc) + 2.0 * np.abs(mg) / b.dw
-    # the rounding of the approaches, differences of lengths up to r' + delta
-    di = np.abs(t[11])
-    with np.errstate(all="ignore"):
-        size = size + _ROUND * np.nan_to_num(qi * (di + b.ri) / di + qo * (do + b.ro) / do)
-        norm = np.hypot(g1, g2) / size
-    norm = np.where(np.isfinite(norm), norm, np.inf)
-    return norm, ~moving | (norm <= BALL_TOLERANCE)
 
 
 def _ring_forces(
@@ -361,8 +225,6 @@ def _stiffness_nodes(geo: Any, e: np.ndarray, nu: np.ndarray) -> tuple[np.ndarra
     return np.stack(rows_i)[:, None, :], np.stack(rows_o)[:, None, :]
 
 
-_NODE_X = _combined._NODE_X
-_NODE_W = _combined._NODE_W
 _NODE_COS = _combined._NODE_COS
 _NODE_CACHE: dict[tuple[float, ...], tuple[np.ndarray, np.ndarray]] = {}
 
@@ -472,10 +334,60 @@ def solve_high_speed(
            else _combined._angular_geometry(dw, dm, fi, fo, alpha_d))  # fmt: skip
     geo = dataclasses.replace(geo, R_i=case_arrays["tilt_radius"])
     one_sided = np.full(dw.shape, contact_angle is not None)
+    static_kw = dict(ball_diameter=dw, pitch_diameter=dm, f_i=fi, f_o=fo, modulus=e,
+                     poisson=nu, cage_angle=flat["cage_angle"], moment_cross=flat["moment_cross"],
+                     tilt_radius=None if tilt_radius is None else case_arrays["tilt_radius"],
+                     moment=None if moment is None else flat["moment"],
+                     misalignment=flat.get("misalignment"))  # fmt: skip
+    case_arrays.update(
+        _dynamic_start(z, geo, flat, case_arrays, (e, nu, rho_b), static_kw, contact_angle)
+    )
     with np.errstate(all="ignore"):
         out = _solve(z, geo, flat, case_arrays, angles, (e, nu, rho_b), one_sided,
                      misalignment is not None)  # fmt: skip
     return _result(static, shape, z, geo, flat, density, out, one_sided, misalignment)
+
+
+def _dynamic_start(
+    z: int, geo: Any, flat: dict, pos: dict, material: tuple[np.ndarray, ...], static_kw: dict,
+    contact_angle: Any,
+) -> dict[str, np.ndarray]:  # fmt: skip
+    """The start of the ring Newton: the static answer of the bearing whose balls are pushed
+    out by their rigid-rolling centrifugal force (ring position, tilts [°]; ``u`` the axial
+    offset of the groove centres [mm]). A ball at speed sits ``delta_c = (F_c/K_o)^(2/3)``
+    further out in its outer groove; for the inner ring this is the inner groove centre moved
+    in by delta_c: a clearance larger by 2 delta_c (deep groove), ``cos alpha_0`` smaller by
+    delta_c/A (angular contact). Cases at speed 0, or whose shifted bearing the static model
+    refuses, keep the static answer. [mm]"""
+    shift = np.where(contact_angle is not None, geo.A * np.sin(geo.alpha0), 0.0)
+    out = {"u": pos["axial"] + shift}
+    moving = np.flatnonzero(flat["speed"] > 0)
+    if moving.size == 0:
+        return out
+    ki, ko = _stiffness_nodes(geo, *material[:2])
+    cos0 = np.cos(geo.alpha0)
+    omega = flat["speed"] * math.pi / 30.0
+    mass = material[2] * math.pi / 6.0 * geo.D_w**3
+    wc = 0.5 * omega * (1.0 - geo.D_w / geo.d_m * cos0)
+    fc = 0.5 * mass * geo.d_m * wc * wc * _KG_MM
+    delta_c = (fc / _stiffness(ko[:, 0, :], cos0)) ** (2.0 / 3.0)
+    kw = {k: (v if v is None else v[moving]) for k, v in static_kw.items()}
+    cos1 = np.maximum(cos0 - delta_c / geo.A, 1e-3)[moving]
+    if contact_angle is None:
+        kw["clearance"] = 2.0 * np.minimum(geo.g + delta_c, geo.A * (1.0 - 1e-6))[moving]
+    else:
+        kw["contact_angle"] = np.rad2deg(np.arccos(cos1))
+    try:
+        s = _combined.solve_combined(z, flat["radial_load"][moving], flat["axial_load"][moving],
+                                     **kw)  # fmt: skip
+    except (InputError, ConvergenceError):
+        return out
+    new_shift = geo.A[moving] * np.sqrt(1.0 - cos1**2) if contact_angle is not None else 0.0
+    for name in ("x", "y", "tilt", "tilt_cross"):
+        out[name] = pos[name].copy()
+        out[name][moving] = np.ravel(getattr(s, name))
+    out["u"][moving] = np.ravel(s.axial) + new_shift
+    return out
 
 
 @dataclass
@@ -523,7 +435,7 @@ def _evaluate(r: _Ring, v: np.ndarray, do: np.ndarray, ao: np.ndarray) -> _State
     fc = 0.125 * r.b.mass * r.b.dm * r.b.omega**2 * _KG_MM
     ao = np.where(moving & fresh & (do <= 0), 0.0, ao)
     do = np.where(moving, np.maximum(do, (fc / r.b.ko[..., -1]) ** (2.0 / 3.0)), do)
-    do, ao, ok = _solve_balls(r.b, rho, up, do, ao)
+    do, ao, ok = solve_balls(r.b, rho, up, do, ao)
     fa, fr, d, terms = _ring_forces(r.b, rho, u, do, ao, r.one_sided)
     zero, one = np.zeros_like(c), np.ones_like(c)
     arm_r = np.stack([c, s, zero, zero, zero], axis=1)  # (n, 5, z)
@@ -554,7 +466,7 @@ def _newton(r: _Ring, v: np.ndarray, do: np.ndarray, ao: np.ndarray) -> tuple[An
         jac = np.where(sub.held[:, :, None] | sub.held[:, None, :], 0.0, cur.jac)
         jac[:, np.arange(5), np.arange(5)] += sub.held
         res = np.where(sub.held, 0.0, sub.f - cur.gen)
-        step = np.linalg.solve(jac, res[..., None])[..., 0]
+        step = _ring_step(jac, res)
         step = np.where(np.isfinite(step), step, 0.0)
         lam = np.ones(todo.size)
         pending = np.arange(todo.size)
@@ -576,6 +488,15 @@ def _newton(r: _Ring, v: np.ndarray, do: np.ndarray, ao: np.ndarray) -> tuple[An
         stalled[pending] = True  # no step lowered the residual: its rounding
         todo = todo[~stalled & ~(st.merit[todo] <= TOLERANCE)]
     return v, st, its
+
+
+def _ring_step(jac: np.ndarray, res: np.ndarray) -> np.ndarray:
+    """The Newton step of every case; a singular tangent (no ball touching along a direction)
+    gives the least-squares step. [mm]"""
+    try:
+        return np.linalg.solve(jac, res[..., None])[..., 0]
+    except np.linalg.LinAlgError:
+        return (np.linalg.pinv(jac) @ res[..., None])[..., 0]
 
 
 def _take_state(st: _State, idx: np.ndarray) -> _State:
@@ -604,8 +525,7 @@ def _solve(
     held, _ = _combined._locks(z, mirror, (fr, fa, mm, mc), t_imp, imposed_tilt)
     f_ref = _combined._reference_force(fr, fa, mm, mc, rr)
     f = np.stack([fr, np.zeros(n), fa, mm / rr, mc / rr], axis=1)
-    shift = np.where(one_sided, geo.A * np.sin(geo.alpha0), 0.0)
-    v = np.stack([pos["x"], pos["y"], pos["axial"] + shift, rr * np.deg2rad(pos["tilt"]),
+    v = np.stack([pos["x"], pos["y"], pos["u"], rr * np.deg2rad(pos["tilt"]),
                   rr * np.deg2rad(pos["tilt_cross"])], axis=1)  # fmt: skip
     ki, ko = _stiffness_nodes(geo, e, nu)
     col = [(geo.f_i - 0.5) * geo.D_w, (geo.f_o - 0.5) * geo.D_w, geo.D_w, geo.d_m,
