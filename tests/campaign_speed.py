@@ -106,6 +106,7 @@ def main(n: int, seed: int) -> None:
     refused: dict[str, int] = {}
     worst_ring, worst_ball, slowest, most = 0.0, 0.0, (0.0, None), (0, None)
     worst_case: Any = None
+    worst_ball_case: Any = None
     start = time.perf_counter()
     for _ in range(n):
         case = random_case(rng)
@@ -144,7 +145,8 @@ def main(n: int, seed: int) -> None:
         ring = ring_residual(case, r)
         if ring > worst_ring:
             worst_ring, worst_case = ring, case
-        worst_ball = max(worst_ball, ball_residual(case, r))
+        if ball_residual(case, r) > worst_ball:
+            worst_ball, worst_ball_case = ball_residual(case, r), case
         if took > slowest[0]:
             slowest = (took, case)
         its = int(r.iterations)
@@ -155,7 +157,7 @@ def main(n: int, seed: int) -> None:
           f"refused by parameter {refused}")  # fmt: skip
     print(f"worst ring residual (plain sum, over the largest applied load) {worst_ring:.3g}: "
           f"{worst_case}")  # fmt: skip
-    print(f"worst ball residual (over its force magnitudes) {worst_ball:.3g}")
+    print(f"worst ball residual (over its force magnitudes) {worst_ball:.3g}: {worst_ball_case}")
     print(f"slowest case {slowest[0] * 1e3:.0f} ms: {slowest[1]}")
     print(f"most iterations (static + ring) {most[0]}: {most[1]}")
 

@@ -57,25 +57,28 @@ def ball_terms(b: _Set, rho: Any, u: Any, do: Any, ao: Any) -> tuple[Any, ...]: 
     ring axial force, ring radial force) [N, mm, rad/s]; the ring forces are those the ball
     puts on the inner ring's equilibrium (``Q_i sin a_i``, ``Q_i cos a_i``).
 
-    The kinematics take ``cos a_i`` at least 0: the inner raceway is the half of the inner
-    groove facing the ball set; a ball whose inner groove centre lies radially outward of its
-    own centre has no inner raceway to roll on (it is loose), and Jones's relations with
-    ``cos a_i = -1`` would give ``c_o + c_i = 0``, an infinite orbit speed."""
+    The inner raceway is the half of the inner groove facing the ball set (``cos a_i >= 0``):
+    the radial offset of the inner groove centre from the ball centre is taken at least 0, as
+    the static model takes the groove centres' radial offset (``max(rho, 0)``). Without it a
+    ball whose centre lies radially outward of its inner groove centre would touch the far side
+    of the groove circle, where the ring has no surface, and Jones's relations with ``cos a_i =
+    -1`` give ``c_o + c_i = 0``, an infinite orbit speed."""
     lo = b.ro + do
     so, co = np.sin(ao), np.cos(ao)
     e1 = u - lo * so
     e2 = rho - lo * co
+    e2 = np.where(np.real(e2) > 0.0, e2, 0.0 * e2)  # the inner raceway: cos a_i >= 0
     li = np.sqrt(e1 * e1 + e2 * e2)
     di = li - b.ri
-    si, ci = e1 / li, e2 / li
+    safe = np.where(np.real(li) > 0.0, li, 1.0)
+    si, ci = e1 / safe, e2 / safe
     qi = _stiffness(b.ki, ci) * _power(di)
     qo = _stiffness(b.ko, co) * _power(do)
     gamma = b.dw / b.dm
     tb = so / (co + gamma)
     beta = np.arctan(tb)
-    ck = np.where(np.real(ci) > 0.0, ci, 0.0)
     c_o = (co + tb * so) / (1.0 + gamma * co)
-    c_i = (ck + tb * si) / (1.0 - gamma * ck)
+    c_i = (ci + tb * si) / (1.0 - gamma * ci)
     wc = b.omega * c_o / (c_o + c_i)
     wr = b.omega / (gamma * np.cos(beta) * (c_o + c_i))
     fc = 0.5 * b.mass * b.dm * wc * wc * _KG_MM

@@ -402,6 +402,7 @@ class _Ring:
     f_ref: np.ndarray  # (n,) [N]
     held: np.ndarray  # (n, 5) bool
     one_sided: np.ndarray  # (n,) bool
+    length: np.ndarray  # A = (f_i + f_o - 1) D_w (n,) [mm]
 
     def take(self, idx: np.ndarray) -> _Ring:
         out = {f.name: getattr(self, f.name) for f in dataclasses.fields(self)}
@@ -468,6 +469,10 @@ def _newton(r: _Ring, v: np.ndarray, do: np.ndarray, ao: np.ndarray) -> tuple[An
         res = np.where(sub.held, 0.0, sub.f - cur.gen)
         step = _ring_step(jac, res)
         step = np.where(np.isfinite(step), step, 0.0)
+        # a trust region: no step longer than a tenth of the groove length A (a tangent nearly
+        # singular, a ball barely touching, would throw the ring out of the bearing)
+        longest = np.abs(step).max(axis=1)
+        step *= np.minimum(1.0, 0.1 * sub.length / np.maximum(longest, 1e-300))[:, None]
         lam = np.ones(todo.size)
         pending = np.arange(todo.size)
         for _ in range(20):
@@ -476,6 +481,8 @@ def _newton(r: _Ring, v: np.ndarray, do: np.ndarray, ao: np.ndarray) -> tuple[An
             better = (got.merit < (1.0 - 1e-4 * lam[pending]) * cur.merit[pending]) | (
                 got.merit <= TOLERANCE
             )
+            # no ball touching the inner ring: a plateau without tangent, never the answer
+            better &= np.any(got.terms[2] > 0, axis=1)
             rows = todo[pending[better]]
             v[rows] = trial[better]
             _put_state(st, rows, _take_state(got, np.flatnonzero(better)))
@@ -532,7 +539,7 @@ def _solve(
            flat["speed"] * math.pi / 30.0, dens * math.pi / 6.0 * geo.D_w**3]  # fmt: skip
     ri, ro, dwc, dmc, omega, mass = (a[:, None] for a in col)
     b = _Set(ri, ro, dwc, dmc, omega, mass, ki, ko)
-    ring = _Ring(b, c, s, geo.A - geo.g, f, f_ref, held, one_sided)
+    ring = _Ring(b, c, s, geo.A - geo.g, f, f_ref, held, one_sided, geo.A)
     nan = np.full((n, z), np.nan)
     v, st, total = _newton(ring, v, nan, nan)
     _check(st, total, flat, one_sided)
