@@ -92,8 +92,11 @@ MODEL = "ball dynamics: centrifugal force and gyroscopic moment, outer-raceway c
 TOLERANCE = 1e-12
 #: Largest ring residual accepted at the end. [-]
 ACCEPT = 1e-9
-#: Ring Newton steps. [-]
+#: Ring Newton steps; trial steps of each (the Newton step, then Levenberg-Marquardt). [-]
 RING_ITERATIONS = 200
+LM_TRIALS = 12
+#: Stages of the continuation in speed of a case the direct solve leaves unbalanced. [-]
+CONTINUATION_STAGES = 60
 #: N mm per kg mm^2/s^2 (forces from kg, mm, s). [-]
 _KG_MM = 1e-3
 
@@ -318,7 +321,7 @@ def solve_high_speed(
         given["misalignment"] = misalignment
     flat = {k: np.broadcast_to(np.asarray(v, dtype=float), shape).ravel()
             for k, v in given.items() if k != "balls"}  # fmt: skip
-    case_arrays = {
+    case_arrays: dict[str, Any] = {
         name: np.broadcast_to(np.asarray(getattr(static, name), dtype=float), shape).ravel()
         for name in ("x", "y", "axial", "tilt", "tilt_cross", "tilt_radius")
     }
@@ -339,8 +342,8 @@ def solve_high_speed(
                      tilt_radius=None if tilt_radius is None else case_arrays["tilt_radius"],
                      moment=None if moment is None else flat["moment"],
                      misalignment=flat.get("misalignment"))  # fmt: skip
-    case_arrays.update(
-        _dynamic_start(z, geo, flat, case_arrays, (e, nu, rho_b), static_kw, contact_angle)
+    case_arrays["start"] = _dynamic_start(
+        z, geo, flat, case_arrays, (e, nu, rho_b), static_kw, contact_angle
     )
     with np.errstate(all="ignore"):
         out = _solve(z, geo, flat, case_arrays, angles, (e, nu, rho_b), one_sided,
@@ -360,7 +363,8 @@ def _dynamic_start(
     delta_c/A (angular contact). Cases at speed 0, or whose shifted bearing the static model
     refuses, keep the static answer. [mm]"""
     shift = np.where(contact_angle is not None, geo.A * np.sin(geo.alpha0), 0.0)
-    out = {"u": pos["axial"] + shift}
+    out = {name: pos[name].copy() for name in ("x", "y", "tilt", "tilt_cross")}
+    out["u"] = pos["axial"] + shift
     moving = np.flatnonzero(flat["speed"] > 0)
     if moving.size == 0:
         return out
@@ -384,7 +388,6 @@ def _dynamic_start(
         return out
     new_shift = geo.A[moving] * np.sqrt(1.0 - cos1**2) if contact_angle is not None else 0.0
     for name in ("x", "y", "tilt", "tilt_cross"):
-        out[name] = pos[name].copy()
         out[name][moving] = np.ravel(getattr(s, name))
     out["u"][moving] = np.ravel(s.axial) + new_shift
     return out
@@ -453,10 +456,14 @@ def _evaluate(r: _Ring, v: np.ndarray, do: np.ndarray, ao: np.ndarray) -> _State
 
 
 def _newton(r: _Ring, v: np.ndarray, do: np.ndarray, ao: np.ndarray) -> tuple[Any, ...]:
-    """Damped Newton on the ring equilibrium, each case on its own. Returns (v, state,
+    """Newton on the ring equilibrium with a Levenberg-Marquardt safeguard, each case on its
+    own: the Newton step first, then steps of ``(J^T J + mu diag J^T J) s = J^T res`` with mu
+    growing (a tangent nearly singular - two balls alike carrying the axial force and the
+    moment - damped in its null direction instead of a step out of the bearing), each no longer
+    than a tenth of A; a step is taken when it lowers the residual's 2-norm and some ball
+    touches the inner ring. The balls start from the current ones. Returns (v, state,
     iterations (n,))."""
-    n = v.shape[0]
-    its = np.zeros(n, dtype=int)
+    its = np.zeros(v.shape[0], dtype=int)
     st = _evaluate(r, v, do, ao)
     todo = np.flatnonzero(~(st.merit <= TOLERANCE))
     for _ in range(RING_ITERATIONS):
@@ -467,18 +474,17 @@ def _newton(r: _Ring, v: np.ndarray, do: np.ndarray, ao: np.ndarray) -> tuple[An
         jac = np.where(sub.held[:, :, None] | sub.held[:, None, :], 0.0, cur.jac)
         jac[:, np.arange(5), np.arange(5)] += sub.held
         res = np.where(sub.held, 0.0, sub.f - cur.gen)
-        step = _ring_step(jac, res)
-        step = np.where(np.isfinite(step), step, 0.0)
-        # a trust region: no step longer than a tenth of the groove length A (a tangent nearly
-        # singular, a ball barely touching, would throw the ring out of the bearing)
-        longest = np.abs(step).max(axis=1)
-        step *= np.minimum(1.0, 0.1 * sub.length / np.maximum(longest, 1e-300))[:, None]
-        lam = np.ones(todo.size)
+        size = _norm2(sub, cur)
         pending = np.arange(todo.size)
-        for _ in range(20):
-            trial = v[todo[pending]] + lam[pending, None] * step[pending]
+        for k in range(LM_TRIALS):
+            step = _lm_step(jac[pending], res[pending], 0.0 if k == 0 else 1e-10 * 100.0**k)
+            longest = np.abs(step).max(axis=1)
+            step *= np.minimum(1.0, 0.1 * sub.length[pending] / np.maximum(longest, 1e-300))[
+                :, None
+            ]
+            trial = v[todo[pending]] + step
             got = _evaluate(sub.take(pending), trial, cur.do[pending], cur.ao[pending])
-            better = (got.merit < (1.0 - 1e-4 * lam[pending]) * cur.merit[pending]) | (
+            better = (_norm2(sub.take(pending), got) < (1.0 - 1e-4) * size[pending]) | (
                 got.merit <= TOLERANCE
             )
             # no ball touching the inner ring: a plateau without tangent, never the answer
@@ -489,7 +495,6 @@ def _newton(r: _Ring, v: np.ndarray, do: np.ndarray, ao: np.ndarray) -> tuple[An
             pending = pending[~better]
             if pending.size == 0:
                 break
-            lam[pending] *= 0.5
         its[todo] += 1
         stalled = np.zeros(todo.size, dtype=bool)
         stalled[pending] = True  # no step lowered the residual: its rounding
@@ -497,9 +502,29 @@ def _newton(r: _Ring, v: np.ndarray, do: np.ndarray, ao: np.ndarray) -> tuple[An
     return v, st, its
 
 
+def _norm2(r: _Ring, st: _State) -> np.ndarray:
+    """The 2-norm of the free residual over f_ref (inf: a ball unsolved). [-]"""
+    res = np.where(r.held, 0.0, r.f - st.gen)
+    return np.where(np.isfinite(st.merit), np.sqrt((res * res).sum(axis=1)) / r.f_ref, np.inf)
+
+
+def _lm_step(jac: np.ndarray, res: np.ndarray, mu: float) -> np.ndarray:
+    """The Newton step (mu = 0) or the Levenberg-Marquardt step of every case. [mm]"""
+    if mu == 0.0:
+        step = _ring_step(jac, res)
+    else:
+        jt = jac.transpose(0, 2, 1)
+        jtj = jt @ jac
+        diag = np.einsum("nii->ni", jtj)
+        diag = np.maximum(diag, 1e-12 * diag.max(axis=1, keepdims=True))
+        a = jtj + mu * diag[:, :, None] * np.eye(5)
+        step = _ring_step(a, (jt @ res[..., None])[..., 0])
+    return np.where(np.isfinite(step), step, 0.0)
+
+
 def _ring_step(jac: np.ndarray, res: np.ndarray) -> np.ndarray:
-    """The Newton step of every case; a singular tangent (no ball touching along a direction)
-    gives the least-squares step. [mm]"""
+    """The solution of jac step = res of every case; a singular tangent (no ball touching along
+    a direction) gives the least-squares step. [mm]"""
     try:
         return np.linalg.solve(jac, res[..., None])[..., 0]
     except np.linalg.LinAlgError:
@@ -532,8 +557,12 @@ def _solve(
     held, _ = _combined._locks(z, mirror, (fr, fa, mm, mc), t_imp, imposed_tilt)
     f_ref = _combined._reference_force(fr, fa, mm, mc, rr)
     f = np.stack([fr, np.zeros(n), fa, mm / rr, mc / rr], axis=1)
-    v = np.stack([pos["x"], pos["y"], pos["u"], rr * np.deg2rad(pos["tilt"]),
-                  rr * np.deg2rad(pos["tilt_cross"])], axis=1)  # fmt: skip
+    start = pos["start"]
+    v = np.stack([start["x"], start["y"], start["u"], rr * np.deg2rad(start["tilt"]),
+                  rr * np.deg2rad(start["tilt_cross"])], axis=1)  # fmt: skip
+    shift = np.where(one_sided, geo.A * np.sin(geo.alpha0), 0.0)
+    v_static = np.stack([pos["x"], pos["y"], pos["axial"] + shift, rr * np.deg2rad(pos["tilt"]),
+                         rr * np.deg2rad(pos["tilt_cross"])], axis=1)  # fmt: skip
     ki, ko = _stiffness_nodes(geo, e, nu)
     col = [(geo.f_i - 0.5) * geo.D_w, (geo.f_o - 0.5) * geo.D_w, geo.D_w, geo.d_m,
            flat["speed"] * math.pi / 30.0, dens * math.pi / 6.0 * geo.D_w**3]  # fmt: skip
@@ -542,8 +571,40 @@ def _solve(
     ring = _Ring(b, c, s, geo.A - geo.g, f, f_ref, held, one_sided, geo.A)
     nan = np.full((n, z), np.nan)
     v, st, total = _newton(ring, v, nan, nan)
+    for i in np.flatnonzero(~(st.merit <= ACCEPT)):
+        _continuation(ring, int(i), v, st, total, v_static[i])
     _check(st, total, flat, one_sided)
     return ring, v, st, total
+
+
+def _continuation(
+    ring: _Ring, i: int, v: np.ndarray, st: _State, its: np.ndarray, v_static: np.ndarray
+) -> None:
+    """Case i again, by continuation in the centrifugal and gyroscopic terms (both in omega^2):
+    from the static answer, the speed raised in stages of omega^2 (a quarter, halved on a
+    stage that does not converge, doubled after one that does), each started from the last
+    ring position and balls. The answer, if any, replaces case i's in v, st, its."""
+    one = ring.take(np.array([i]))
+    omega = one.b.omega
+    x, do = v_static[None, :].copy(), np.full((1, st.do.shape[1]), np.nan)
+    ao = do.copy()
+    done, step = 0.0, 0.25
+    for _ in range(CONTINUATION_STAGES):
+        frac = min(1.0, done + step)
+        stage = dataclasses.replace(one, b=dataclasses.replace(one.b, omega=omega * frac**0.5))
+        x1, st1, its1 = _newton(stage, x.copy(), do, ao)
+        its[i] += its1[0]
+        if st1.merit[0] <= (ACCEPT if frac == 1.0 else 1e-6):
+            done, x, do, ao = frac, x1, st1.do, st1.ao
+            if done == 1.0:
+                v[i] = x1[0]
+                _put_state(st, np.array([i]), st1)
+                return
+            step = min(2.0 * step, 1.0 - done)
+        else:
+            step *= 0.25
+            if step < 1e-6:
+                return
 
 
 def _rel(a: np.ndarray, b: np.ndarray) -> float:
