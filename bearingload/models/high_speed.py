@@ -92,9 +92,11 @@ MODEL = "ball dynamics: centrifugal force and gyroscopic moment, outer-raceway c
 TOLERANCE = 1e-12
 #: Largest ring residual accepted at the end. [-]
 ACCEPT = 1e-9
-#: Ring Newton steps; trial steps of each (the Newton step, then Levenberg-Marquardt). [-]
+#: Ring Newton steps; trial steps of each: the Newton step halved HALVINGS times, then
+#: Levenberg-Marquardt steps. [-]
 RING_ITERATIONS = 200
 LM_TRIALS = 12
+HALVINGS = 6
 #: Stages of the continuation in speed of a case the direct solve leaves unbalanced. [-]
 CONTINUATION_STAGES = 60
 #: N mm per kg mm^2/s^2 (forces from kg, mm, s). [-]
@@ -457,7 +459,7 @@ def _evaluate(r: _Ring, v: np.ndarray, do: np.ndarray, ao: np.ndarray) -> _State
 
 def _newton(r: _Ring, v: np.ndarray, do: np.ndarray, ao: np.ndarray) -> tuple[Any, ...]:
     """Newton on the ring equilibrium with a Levenberg-Marquardt safeguard, each case on its
-    own: the Newton step first, then steps of ``(J^T J + mu diag J^T J) s = J^T res`` with mu
+    own: the Newton step, halved, then steps of ``(J^T J + mu diag J^T J) s = J^T res`` with mu
     growing (a tangent nearly singular - two balls alike carrying the axial force and the
     moment - damped in its null direction instead of a step out of the bearing), each no longer
     than a tenth of A; a step is taken when it lowers the residual's 2-norm and some ball
@@ -477,7 +479,8 @@ def _newton(r: _Ring, v: np.ndarray, do: np.ndarray, ao: np.ndarray) -> tuple[An
         size = _norm2(sub, cur)
         pending = np.arange(todo.size)
         for k in range(LM_TRIALS):
-            step = _lm_step(jac[pending], res[pending], 0.0 if k == 0 else 1e-10 * 100.0**k)
+            lam, mu = (0.5**k, 0.0) if k < HALVINGS else (1.0, 1e-6 * 100.0 ** (k - HALVINGS))
+            step = lam * _lm_step(jac[pending], res[pending], mu)
             longest = np.abs(step).max(axis=1)
             step *= np.minimum(1.0, 0.1 * sub.length[pending] / np.maximum(longest, 1e-300))[
                 :, None
