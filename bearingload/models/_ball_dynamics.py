@@ -215,12 +215,12 @@ def _ball_newton(
             better = pending & ((n2 < (1.0 - 1e-4 * lam) * size) | ok2)
             better &= ~touching | (t2[11] > 0)
             do, ao = np.where(better, d2, do), np.where(better, a2, ao)
+            t = tuple(np.where(better, new, old) for new, old in zip(t2, t, strict=True))
+            ok = np.where(better, ok2, ok)
             pending &= ~better
             if not pending.any():
                 break
             lam = np.where(pending, 0.5 * lam, lam)
-        t = ball_terms(b, rho, u, do, ao)
-        ok = _ball_norm(b, t, do, moving)[1]
         if pending[go].all():
             break
     return do, ao, ok

@@ -15,8 +15,14 @@ Model (one ball ``j`` at ``phi_j``; the geometry, loads and conventions of
   as in the static model). The ball centre is no longer on the line joining them: it lies at
   ``(X_1, X_2) = (r'_o + delta_o)(sin alpha_o, cos alpha_o)`` (axial, radial) from the outer
   centre, ``r'_o = (f_o - 1/2) D_w``; the unknowns of each ball are ``delta_o`` and
-  ``alpha_o``. The inner contact follows: ``(u' - X_1, rho - X_2) = (r'_i + delta_i)(sin alpha_i,
-  cos alpha_i)``. ``Q_i = K_i max(delta_i, 0)^1.5``, ``Q_o = K_o max(delta_o, 0)^1.5``.
+  ``alpha_o``. The inner contact follows: ``(u' - X_1, max(rho - X_2, 0)) = (r'_i +
+  delta_i)(sin alpha_i, cos alpha_i)``. ``Q_i = K_i max(delta_i, 0)^1.5``, ``Q_o = K_o
+  max(delta_o, 0)^1.5``. The inner raceway is the half of the inner groove facing the balls
+  (``cos alpha_i >= 0``; the static model's ``max(rho, 0)``): a ball whose centre lies radially
+  outward of its inner groove centre touches the groove's side at most (at 90°), never the
+  far side of the groove circle, where the ring has no surface.
+* A ball without inner contact (loose) rests on the outer raceway: ``alpha_o = 0`` (then beta
+  = 0, no gyroscopic friction) and ``Q_o = F_c``.
 * Kinematics, outer-raceway control (Jones; Harris & Kotzalas vol. 2, ch. 2): the ball rolls
   without spinning on the outer raceway; with ``gamma = D_w/d_m`` and the inner ring at
   ``omega`` (outer ring still) the attitude angle is ``tan beta = sin alpha_o / (cos alpha_o +
@@ -44,10 +50,16 @@ Model (one ball ``j`` at ``phi_j``; the geometry, loads and conventions of
 * Not modelled: ring expansion, cage and lubricant forces, the inner contact's friction; the
   ring rotating is the inner one.
 
-Numerics. For given ring positions each ball's two equations are solved by Newton, all balls of
-all cases at once, with the Jacobians from the complex step (exact to rounding); the ring
-equilibrium by damped Newton on ``(x, y, a, R_i theta, R_i theta_c)``, the tangent of the ball
-forces by the implicit function theorem (the ball equations eliminated per ball). The components
+Numerics. For given ring positions each ball's two equations are solved by Newton on its centre
+(X_1, X_2), all balls of all cases at once, from the ball's last position, with the Jacobians
+from the complex step (exact to rounding); a ball left unbalanced is solved alone from its
+loose state (:mod:`bearingload.models._ball_dynamics`). The ring equilibrium: Newton on ``(x,
+y, a, R_i theta, R_i theta_c)`` from the static answer of the bearing whose balls are pushed out
+by their centrifugal approach, the tangent of the ball forces by the implicit function theorem
+(the ball equations eliminated per ball); the step halved, then Levenberg-Marquardt steps (a
+nearly singular tangent), none longer than A/10 or to a position where no ball touches the
+inner ring. A case left unbalanced is solved again by continuation in omega^2 from the static
+answer. The components
 the static model holds by symmetry are held (the speed terms keep those symmetries: ``M_g`` is
 odd in ``alpha_o``). A case stops when each applied component is balanced to ``TOLERANCE`` of
 the largest applied load and every ball to ``BALL_TOLERANCE`` of its forces; left above
@@ -186,8 +198,11 @@ def _ring_forces(
             # dF/dp - dF/dX (dg/dX)^-1 dg/dp
             dxp = [inv[k, 0] * d[0][c] + inv[k, 1] * d[1][c] for k in range(2)]
             total = d[r][c] - (d[r][0] * dxp[0] + d[r][1] * dxp[1])
-            static = _static_derivative(b, rho, up, r, c)
-            out[r - 2, c - 2] = np.where(moving, total, static) * chain
+            if moving.all():
+                out[r - 2, c - 2] = total * chain
+            else:
+                static = _static_derivative(b, rho, up, r, c)
+                out[r - 2, c - 2] = np.where(moving, total, static) * chain
     return t0[12], t0[13], out, t0
 
 
@@ -433,10 +448,11 @@ def _evaluate(r: _Ring, v: np.ndarray, do: np.ndarray, ao: np.ndarray) -> _State
     rho = r.base[:, None] + v[:, 0, None] * c + v[:, 1, None] * s
     u = v[:, 2, None] + v[:, 3, None] * c + v[:, 4, None] * s
     up = np.where(r.one_sided[:, None], np.maximum(u, 0.0), u)
-    line = _line_start(r.b, rho, up)
     moving = np.broadcast_to(r.b.omega > 0, do.shape)
     fresh = ~moving | ~np.isfinite(do)
-    do, ao = np.where(fresh, line[0], do), np.where(fresh, line[1], ao)
+    if fresh.any():
+        line = _line_start(r.b, rho, up)
+        do, ao = np.where(fresh, line[0], do), np.where(fresh, line[1], ao)
     # a ball at speed always touches its outer groove: start it pressed by about F_c
     fc = 0.125 * r.b.mass * r.b.dm * r.b.omega**2 * _KG_MM
     ao = np.where(moving & fresh & (do <= 0), 0.0, ao)
