@@ -54,8 +54,9 @@ Numerics. For given ring positions each ball's two equations are solved by Newto
 (X_1, X_2), all balls of all cases at once, from the ball's last position, with the Jacobians
 from the complex step (exact to rounding); a ball left unbalanced is solved alone from its
 loose state (:mod:`bearingload.models._ball_dynamics`). The ring equilibrium: Newton on ``(x,
-y, a, R_i theta, R_i theta_c)`` from the static answer of the bearing whose balls are pushed out
-by their centrifugal approach, the tangent of the ball forces by the implicit function theorem
+y, a, R_i theta, R_i theta_c)`` from the static answer (a case left unbalanced: again from the
+static answer of the bearing whose balls are pushed out by their centrifugal approach), the
+tangent of the ball forces by the implicit function theorem
 (the ball equations eliminated per ball); the step halved, then Levenberg-Marquardt steps (a
 nearly singular tangent), none longer than A/10 or to a position where no ball touches the
 inner ring. A case left unbalanced is solved again by continuation in omega^2 from the static
@@ -173,8 +174,9 @@ class HighSpeedDistribution(CombinedDistribution):
 def _ring_forces(
     b: _Set, rho: np.ndarray, u: np.ndarray, do: np.ndarray, ao: np.ndarray, one_sided: np.ndarray
 ) -> tuple[Any, ...]:
-    """The ball forces on the ring (axial, radial) (n, z) and their total derivatives by
-    (rho, u) with the ball equations eliminated: ((dFa/drho, dFa/du), (dFr/drho, dFr/du))."""
+    """The ball forces on the ring (axial, radial) (n, z), their total derivatives by (rho, u)
+    with the ball equations eliminated: ((dFa/drho, dFa/du), (dFr/drho, dFr/du)), the terms, and
+    each ball's (rho, u', d(do, ao)/drho, d(do, ao)/du') (n, z, 6)."""
     up = np.where(one_sided[:, None], np.maximum(u, 0.0), u)
     dup = np.where(one_sided[:, None], (u > 0).astype(float), 1.0)
     t0 = ball_terms(b, rho, up, do, ao)
@@ -193,6 +195,13 @@ def _ring_forces(
     with np.errstate(all="ignore"):
         inv = np.stack([[d[1][1], -d[0][1]], [-d[1][0], d[0][0]]]) / det
     out = np.zeros((2, 2) + do.shape)
+    # the ball's own sensitivity dX/dp = -(dg/dX)^-1 dg/dp (the next ring position's start)
+    sens = np.zeros(do.shape + (6,))
+    sens[..., 0], sens[..., 1] = rho, up
+    for c in (2, 3):
+        for k in range(2):
+            sens[..., 2 * c - 2 + k] = -(inv[k, 0] * d[0][c] + inv[k, 1] * d[1][c])
+    sens = np.where(np.isfinite(sens), sens, 0.0)
     for r in (2, 3):
         for c, chain in ((2, 1.0), (3, dup)):
             # dF/dp - dF/dX (dg/dX)^-1 dg/dp
@@ -203,7 +212,7 @@ def _ring_forces(
             else:
                 static = _static_derivative(b, rho, up, r, c)
                 out[r - 2, c - 2] = np.where(moving, total, static) * chain
-    return t0[12], t0[13], out, t0
+    return t0[12], t0[13], out, t0, sens
 
 
 def _static_derivative(b: _Set, rho: np.ndarray, up: np.ndarray, r: int, c: int) -> np.ndarray:
@@ -359,8 +368,8 @@ def solve_high_speed(
                      tilt_radius=None if tilt_radius is None else case_arrays["tilt_radius"],
                      moment=None if moment is None else flat["moment"],
                      misalignment=flat.get("misalignment"))  # fmt: skip
-    case_arrays["start"] = _dynamic_start(
-        z, geo, flat, case_arrays, (e, nu, rho_b), static_kw, contact_angle
+    case_arrays["shifted"] = lambda rows: _dynamic_start(
+        z, geo, flat, case_arrays, (e, nu, rho_b), static_kw, contact_angle, rows
     )
     with np.errstate(all="ignore"):
         out = _solve(z, geo, flat, case_arrays, angles, (e, nu, rho_b), one_sided,
@@ -370,9 +379,10 @@ def solve_high_speed(
 
 def _dynamic_start(
     z: int, geo: Any, flat: dict, pos: dict, material: tuple[np.ndarray, ...], static_kw: dict,
-    contact_angle: Any,
+    contact_angle: Any, rows: np.ndarray,
 ) -> dict[str, np.ndarray]:  # fmt: skip
-    """The start of the ring Newton: the static answer of the bearing whose balls are pushed
+    """The second start of the ring Newton (cases ``rows`` the static start leaves
+    unbalanced; light loads at speed): the static answer of the bearing whose balls are pushed
     out by their rigid-rolling centrifugal force (ring position, tilts [°]; ``u`` the axial
     offset of the groove centres [mm]). A ball at speed sits ``delta_c = (F_c/K_o)^(2/3)``
     further out in its outer groove; for the inner ring this is the inner groove centre moved
@@ -382,7 +392,7 @@ def _dynamic_start(
     shift = np.where(contact_angle is not None, geo.A * np.sin(geo.alpha0), 0.0)
     out = {name: pos[name].copy() for name in ("x", "y", "tilt", "tilt_cross")}
     out["u"] = pos["axial"] + shift
-    moving = np.flatnonzero(flat["speed"] > 0)
+    moving = rows[flat["speed"][rows] > 0]
     if moving.size == 0:
         return out
     ki, ko = _stiffness_nodes(geo, *material[:2])
@@ -440,14 +450,22 @@ class _State:
     jac: np.ndarray  # (n, 5, 5) d gen / d v
     merit: np.ndarray  # (n,) largest free residual over f_ref (inf: a ball unsolved)
     terms: tuple[np.ndarray, ...]
+    sens: np.ndarray  # (n, z, 6) each ball's rho, u', d(do, ao)/drho, d(do, ao)/du'
 
 
-def _evaluate(r: _Ring, v: np.ndarray, do: np.ndarray, ao: np.ndarray) -> _State:
-    """Solve every ball at the ring position v from (do, ao); the ring forces and tangent."""
+def _evaluate(
+    r: _Ring, v: np.ndarray, do: np.ndarray, ao: np.ndarray, sens: np.ndarray | None = None
+) -> _State:
+    """Solve every ball at the ring position v from (do, ao) (moved to first order by the
+    balls' sensitivities ``sens`` of a previous state); the ring forces and tangent."""
     c, s = r.c, r.s
     rho = r.base[:, None] + v[:, 0, None] * c + v[:, 1, None] * s
     u = v[:, 2, None] + v[:, 3, None] * c + v[:, 4, None] * s
     up = np.where(r.one_sided[:, None], np.maximum(u, 0.0), u)
+    if sens is not None:
+        dr, du = rho - sens[..., 0], up - sens[..., 1]
+        do = do + sens[..., 2] * dr + sens[..., 4] * du
+        ao = ao + sens[..., 3] * dr + sens[..., 5] * du
     moving = np.broadcast_to(r.b.omega > 0, do.shape)
     fresh = ~moving | ~np.isfinite(do)
     if fresh.any():
@@ -458,7 +476,7 @@ def _evaluate(r: _Ring, v: np.ndarray, do: np.ndarray, ao: np.ndarray) -> _State
     ao = np.where(moving & fresh & (do <= 0), 0.0, ao)
     do = np.where(moving, np.maximum(do, (fc / r.b.ko[..., -1]) ** (2.0 / 3.0)), do)
     do, ao, ok = solve_balls(r.b, rho, up, do, ao)
-    fa, fr, d, terms = _ring_forces(r.b, rho, u, do, ao, r.one_sided)
+    fa, fr, d, terms, sens = _ring_forces(r.b, rho, u, do, ao, r.one_sided)
     zero, one = np.zeros_like(c), np.ones_like(c)
     arm_r = np.stack([c, s, zero, zero, zero], axis=1)  # (n, 5, z)
     arm_a = np.stack([zero, zero, one, c, s], axis=1)
@@ -470,7 +488,7 @@ def _evaluate(r: _Ring, v: np.ndarray, do: np.ndarray, ao: np.ndarray) -> _State
     merit = np.abs(res).max(axis=1) / r.f_ref
     balls_ok = np.asarray(ok.all(axis=1))
     merit = np.where(balls_ok & np.isfinite(merit), merit, np.inf)
-    return _State(do, ao, balls_ok, gen, jac, merit, tuple(terms))
+    return _State(do, ao, balls_ok, gen, jac, merit, tuple(terms), sens)
 
 
 def _newton(r: _Ring, v: np.ndarray, do: np.ndarray, ao: np.ndarray) -> tuple[Any, ...]:
@@ -502,7 +520,8 @@ def _newton(r: _Ring, v: np.ndarray, do: np.ndarray, ao: np.ndarray) -> tuple[An
                 :, None
             ]
             trial = v[todo[pending]] + step
-            got = _evaluate(sub.take(pending), trial, cur.do[pending], cur.ao[pending])
+            got = _evaluate(sub.take(pending), trial, cur.do[pending], cur.ao[pending],
+                            cur.sens[pending])  # fmt: skip
             better = (_norm2(sub.take(pending), got) < (1.0 - 1e-4) * size[pending]) | (
                 got.merit <= TOLERANCE
             )
@@ -552,11 +571,11 @@ def _ring_step(jac: np.ndarray, res: np.ndarray) -> np.ndarray:
 
 def _take_state(st: _State, idx: np.ndarray) -> _State:
     return _State(st.do[idx], st.ao[idx], st.balls_ok[idx], st.gen[idx], st.jac[idx],
-                  st.merit[idx], tuple(t[idx] for t in st.terms))  # fmt: skip
+                  st.merit[idx], tuple(t[idx] for t in st.terms), st.sens[idx])  # fmt: skip
 
 
 def _put_state(st: _State, rows: np.ndarray, new: _State) -> None:
-    for name in ("do", "ao", "balls_ok", "gen", "jac", "merit"):
+    for name in ("do", "ao", "balls_ok", "gen", "jac", "merit", "sens"):
         getattr(st, name)[rows] = getattr(new, name)
     for mine, theirs in zip(st.terms, new.terms, strict=True):
         mine[rows] = theirs
@@ -576,9 +595,6 @@ def _solve(
     held, _ = _combined._locks(z, mirror, (fr, fa, mm, mc), t_imp, imposed_tilt)
     f_ref = _combined._reference_force(fr, fa, mm, mc, rr)
     f = np.stack([fr, np.zeros(n), fa, mm / rr, mc / rr], axis=1)
-    start = pos["start"]
-    v = np.stack([start["x"], start["y"], start["u"], rr * np.deg2rad(start["tilt"]),
-                  rr * np.deg2rad(start["tilt_cross"])], axis=1)  # fmt: skip
     shift = np.where(one_sided, geo.A * np.sin(geo.alpha0), 0.0)
     v_static = np.stack([pos["x"], pos["y"], pos["axial"] + shift, rr * np.deg2rad(pos["tilt"]),
                          rr * np.deg2rad(pos["tilt_cross"])], axis=1)  # fmt: skip
@@ -589,7 +605,17 @@ def _solve(
     b = _Set(ri, ro, dwc, dmc, omega, mass, ki, ko)
     ring = _Ring(b, c, s, geo.A - geo.g, f, f_ref, held, one_sided, geo.A)
     nan = np.full((n, z), np.nan)
-    v, st, total = _newton(ring, v, nan, nan)
+    v, st, total = _newton(ring, v_static.copy(), nan, nan)
+    bad = np.flatnonzero(~(st.merit <= ACCEPT))
+    if bad.size:
+        start = pos["shifted"](bad)
+        v2 = np.stack([start["x"], start["y"], start["u"], rr * np.deg2rad(start["tilt"]),
+                       rr * np.deg2rad(start["tilt_cross"])], axis=1)[bad]  # fmt: skip
+        v2, st2, its2 = _newton(ring.take(bad), v2, nan[bad], nan[bad])
+        total[bad] += its2
+        won = np.flatnonzero(st2.merit <= ACCEPT)
+        v[bad[won]] = v2[won]
+        _put_state(st, bad[won], _take_state(st2, won))
     for i in np.flatnonzero(~(st.merit <= ACCEPT)):
         _continuation(ring, int(i), v, st, total, v_static[i])
     _check(st, total, flat, one_sided)
