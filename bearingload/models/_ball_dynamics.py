@@ -67,7 +67,7 @@ def ball_terms(b: _Set, rho: Any, u: Any, do: Any, ao: Any) -> tuple[Any, ...]: 
     so, co = np.sin(ao), np.cos(ao)
     e1 = u - lo * so
     e2 = rho - lo * co
-    e2 = np.where(np.real(e2) > 0.0, e2, 0.0 * e2)  # the inner raceway: cos a_i >= 0
+    e2 = np.where(np.real(e2) > 0.0, e2, 0.0)  # the inner raceway: cos a_i >= 0
     li = np.sqrt(e1 * e1 + e2 * e2)
     di = li - b.ri
     safe = np.where(np.real(li) > 0.0, li, 1.0)
