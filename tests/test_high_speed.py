@@ -154,7 +154,8 @@ def test_named_radial_dominated_angular_cases_against_mpmath(fr, fa, n, alpha):
 #: radial load at 43 000 rpm with a large clearance (the static answer leaves no ball touching
 #: the inner ring at speed; a nearly singular tangent threw the ring out of the bearing), a
 #: radially loaded angular bearing whose axial force and moment two balls alike carry (the
-#: tangent nearly singular), 2 N on a 23.8 mm ball set at 18 000 rpm (Newton overshoots).
+#: tangent nearly singular), 2 N on a 23.8 mm ball set at 18 000 rpm (Newton overshoots; this
+#: one failed an intermediate version only, the first two the code before).
 CAMPAIGN = [
     (9, 4.759170937484783, 0.0, dict(ball_diameter=11.5, pitch_diameter=43.5,
      clearance=0.4238353970795515, cage_angle=310.16855840182177, speed=42991.15939178808)),
