@@ -111,7 +111,7 @@ RING_ITERATIONS = 200
 LM_TRIALS = 12
 HALVINGS = 6
 #: Stages of the continuation in speed of a case the direct solve leaves unbalanced. [-]
-CONTINUATION_STAGES = 60
+CONTINUATION_STAGES = 200
 #: N mm per kg mm^2/s^2 (forces from kg, mm, s). [-]
 _KG_MM = 1e-3
 
@@ -628,18 +628,22 @@ def _continuation(
     """Case i again, by continuation in the centrifugal and gyroscopic terms (both in omega^2):
     from the static answer, the speed raised in stages of omega^2 (a quarter, halved on a
     stage that does not converge, doubled after one that does), each started from the last
-    ring position and balls. The answer, if any, replaces case i's in v, st, its."""
+    balls and the ring position extrapolated from the last two stages (the balls move out with
+    the speed: from the last position alone the loaded ones can lose the inner ring). The
+    answer, if any, replaces case i's in v, st, its."""
     one = ring.take(np.array([i]))
     omega = one.b.omega
     x, do = v_static[None, :].copy(), np.full((1, st.do.shape[1]), np.nan)
-    ao = do.copy()
+    ao, rate = do.copy(), np.zeros_like(x)
     done, step = 0.0, 0.25
     for _ in range(CONTINUATION_STAGES):
         frac = min(1.0, done + step)
         stage = dataclasses.replace(one, b=dataclasses.replace(one.b, omega=omega * frac**0.5))
-        x1, st1, its1 = _newton(stage, x.copy(), do, ao)
+        x1, st1, its1 = _newton(stage, x + rate * (frac - done), do, ao)
         its[i] += its1[0]
         if st1.merit[0] <= (ACCEPT if frac == 1.0 else 1e-6):
+            if done > 0.0:
+                rate = (x1 - x) / (frac - done)
             done, x, do, ao = frac, x1, st1.do, st1.ao
             if done == 1.0:
                 v[i] = x1[0]
@@ -647,7 +651,7 @@ def _continuation(
                 return
             step = min(2.0 * step, 1.0 - done)
         else:
-            step *= 0.25
+            step *= 0.5
             if step < 1e-6:
                 return
 
