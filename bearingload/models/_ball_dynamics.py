@@ -137,31 +137,32 @@ def solve_balls(
     """Every ball's two equations at the ring position (rho, u) (n, z), from (do, ao). Cases
     at speed 0 keep the given (line) position. Returns (do, ao, converged (n, z)).
 
-    Newton from the given (warm) start; a ball it leaves unbalanced is solved alone: its loose
-    state (no inner contact; ``alpha_o = 0``, ``Q_o = F_c``: the friction ``2 M_g/D_w`` vanishes
-    with ``beta``), the answer when its inner approach is a gap there; otherwise Newton from
-    that state kept in inner contact (``delta_i > 0``), where the equations are smooth."""
-    moving = np.broadcast_to(b.omega > 0, do.shape)
-    do, ao, ok = _ball_newton(b, rho, u, do, ao, moving, BALL_ITERATIONS, False)
-    if ok.all():
-        return do, ao, ok
-    rows, cols = np.nonzero(~ok)
-    one = b.take(rows)
-    r1, u1 = rho[rows, cols][:, None], u[rows, cols][:, None]
-    live = np.ones((rows.size, 1), dtype=bool)
-    ld, loose_ok = _loose(one, r1, u1, live)
-    line = _line_start(one, r1, u1)
-    gap = np.real(ball_terms(one, r1, u1, ld, np.zeros_like(ld))[11]) <= 0.0
-    take = loose_ok & gap
-    start_d = np.where(loose_ok, ld, np.maximum(line[0], 1e-6 * one.ro))
-    start_a = np.where(loose_ok, 0.0, line[1])
-    d2, a2, ok2 = _ball_newton(one, r1, u1, start_d, start_a, live & ~take,
-                               FALLBACK_ITERATIONS, True)  # fmt: skip
-    d2, a2 = np.where(take, ld, d2), np.where(take, 0.0, a2)
-    do, ao, ok = do.copy(), ao.copy(), ok.copy()
-    do[rows, cols], ao[rows, cols] = d2[:, 0], a2[:, 0]
-    ok[rows, cols] = (take | ok2)[:, 0]
-    return do, ao, ok
+    Newton from the given (warm) start, each ball until it is balanced; a ball it leaves
+    unbalanced is solved alone: its loose state (no inner contact; ``alpha_o = 0``, ``Q_o =
+    F_c``: the friction ``2 M_g/D_w`` vanishes with ``beta``), the answer when its inner
+    approach is a gap there; otherwise Newton from that state kept in inner contact
+    (``delta_i > 0``), where the equations are smooth."""
+    shape = do.shape
+    one = b.take(np.repeat(np.arange(shape[0]), shape[1]))  # one ball a row (m, 1)
+    r1, u1 = rho.reshape(-1, 1), u.reshape(-1, 1)
+    moving = np.broadcast_to(b.omega > 0, shape).reshape(-1, 1)
+    do, ao, ok = _ball_newton(one, r1, u1, do.reshape(-1, 1), ao.reshape(-1, 1), moving,
+                              BALL_ITERATIONS, False)  # fmt: skip
+    if not ok.all():
+        bad = np.flatnonzero(~ok[:, 0])
+        one, r1, u1 = one.take(bad), r1[bad], u1[bad]
+        live = np.ones((bad.size, 1), dtype=bool)
+        ld, loose_ok = _loose(one, r1, u1, live)
+        line = _line_start(one, r1, u1)
+        gap = np.real(ball_terms(one, r1, u1, ld, np.zeros_like(ld))[11]) <= 0.0
+        take = loose_ok & gap
+        start_d = np.where(loose_ok, ld, np.maximum(line[0], 1e-6 * one.ro))
+        start_a = np.where(loose_ok, 0.0, line[1])
+        d2, a2, ok2 = _ball_newton(one, r1, u1, start_d, start_a, live & ~take,
+                                   FALLBACK_ITERATIONS, True)  # fmt: skip
+        do[bad], ao[bad] = np.where(take, ld, d2), np.where(take, 0.0, a2)
+        ok[bad] = take | ok2
+    return do.reshape(shape), ao.reshape(shape), ok.reshape(shape)
 
 
 def _ball_jacobian(
@@ -183,47 +184,67 @@ def _ball_newton(
     b: _Set, rho: np.ndarray, u: np.ndarray, do: np.ndarray, ao: np.ndarray,
     moving: np.ndarray, iterations: int, keep_contact: bool,
 ) -> tuple[np.ndarray, np.ndarray, np.ndarray]:  # fmt: skip
-    """Newton on the ball centre (X_1, X_2), the step halved until the residual falls (and,
-    with ``keep_contact``, the inner approach of a ball touching stays positive)."""
+    """Newton on the ball centre (X_1, X_2) of one ball a row (m, 1), each step on the balls
+    still unbalanced only, halved until the residual falls (and, with ``keep_contact``, the
+    inner approach of a ball touching stays positive)."""
     do, ao = do.copy(), ao.copy()
     t = ball_terms(b, rho, u, do, ao)
     ok = _ball_norm(b, t, do, moving)[1]
     touching = keep_contact & (t[11] > 0)
+    g1, g2 = t[0].copy(), t[1].copy()
     for _ in range(iterations):
-        if ok.all():
+        act = np.flatnonzero(~ok[:, 0])
+        if act.size == 0:
             break
-        a11, a12, a21, a22 = _ball_jacobian(b, rho, u, do, ao)
-        det = a11 * a22 - a12 * a21
-        with np.errstate(all="ignore"):
-            s1 = -(a22 * t[0] - a12 * t[1]) / det
-            s2 = -(-a21 * t[0] + a11 * t[1]) / det
-        go = ~ok & np.isfinite(s1) & np.isfinite(s2)
-        s1, s2 = np.where(go, s1, 0.0), np.where(go, s2, 0.0)
-        lo = b.ro + do
-        x1, x2 = lo * np.sin(ao), lo * np.cos(ao)
-        cut = np.minimum(1.0, 0.25 * b.ro / np.maximum(np.hypot(s1, s2), 1e-300))
-        s1, s2 = s1 * cut, s2 * cut
-        size = np.hypot(t[0], t[1])
-        lam = np.ones_like(do)
-        pending = go.copy()
-        for _ in range(HALVINGS):
-            y1, y2 = x1 + lam * s1, x2 + lam * s2
-            d2, a2 = np.hypot(y1, y2) - b.ro, np.arctan2(y1, y2)
-            t2 = ball_terms(b, rho, u, d2, a2)
-            ok2 = _ball_norm(b, t2, d2, moving)[1]
-            n2 = np.hypot(t2[0], t2[1])
-            better = pending & ((n2 < (1.0 - 1e-4 * lam) * size) | ok2)
-            better &= ~touching | (t2[11] > 0)
-            do, ao = np.where(better, d2, do), np.where(better, a2, ao)
-            t = tuple(np.where(better, new, old) for new, old in zip(t2, t, strict=True))
-            ok = np.where(better, ok2, ok)
-            pending &= ~better
-            if not pending.any():
-                break
-            lam = np.where(pending, 0.5 * lam, lam)
-        if pending[go].all():
+        d, a, ok_a, moved, h1, h2 = _ball_step(
+            b.take(act), rho[act], u[act], do[act], ao[act], moving[act], touching[act],
+            (g1[act], g2[act]),
+        )  # fmt: skip
+        do[act], ao[act], ok[act], g1[act], g2[act] = d, a, ok_a, h1, h2
+        if not moved.any():
             break
     return do, ao, ok
+
+
+def _ball_step(
+    b: _Set, rho: np.ndarray, u: np.ndarray, do: np.ndarray, ao: np.ndarray,
+    moving: np.ndarray, touching: np.ndarray, g: tuple[np.ndarray, np.ndarray],
+) -> tuple[np.ndarray, ...]:  # fmt: skip
+    """One Newton step of unbalanced balls whose residual is g, halved until the residual
+    falls. Returns (do, ao, balanced, moved, g1, g2)."""
+    t = g
+    a11, a12, a21, a22 = _ball_jacobian(b, rho, u, do, ao)
+    det = a11 * a22 - a12 * a21
+    with np.errstate(all="ignore"):
+        s1 = -(a22 * t[0] - a12 * t[1]) / det
+        s2 = -(-a21 * t[0] + a11 * t[1]) / det
+    go = np.isfinite(s1) & np.isfinite(s2)
+    s1, s2 = np.where(go, s1, 0.0), np.where(go, s2, 0.0)
+    lo = b.ro + do
+    x1, x2 = lo * np.sin(ao), lo * np.cos(ao)
+    cut = np.minimum(1.0, 0.25 * b.ro / np.maximum(np.hypot(s1, s2), 1e-300))
+    s1, s2 = s1 * cut, s2 * cut
+    size = np.hypot(t[0], t[1])
+    lam = np.ones_like(do)
+    pending = go.copy()
+    ok = np.zeros(do.shape, dtype=bool)
+    g1, g2 = t
+    for _ in range(HALVINGS):
+        y1, y2 = x1 + lam * s1, x2 + lam * s2
+        d2, a2 = np.hypot(y1, y2) - b.ro, np.arctan2(y1, y2)
+        t2 = ball_terms(b, rho, u, d2, a2)
+        ok2 = _ball_norm(b, t2, d2, moving)[1]
+        n2 = np.hypot(t2[0], t2[1])
+        better = pending & ((n2 < (1.0 - 1e-4 * lam) * size) | ok2)
+        better &= ~touching | (t2[11] > 0)
+        do, ao = np.where(better, d2, do), np.where(better, a2, ao)
+        g1, g2 = np.where(better, t2[0], g1), np.where(better, t2[1], g2)
+        ok = np.where(better, ok2, ok)
+        pending &= ~better
+        if not pending.any():
+            break
+        lam = np.where(pending, 0.5 * lam, lam)
+    return do, ao, ok, go & ~pending, g1, g2
 
 
 def _loose(
