@@ -51,7 +51,8 @@ Model (one ball ``j`` at ``phi_j``; the geometry, loads and conventions of
   ring rotating is the inner one.
 
 Numerics. For given ring positions each ball's two equations are solved by Newton on its centre
-(X_1, X_2), all balls of all cases at once, from the ball's last position, with the Jacobians
+(X_1, X_2), all balls of all cases at once (each until it is balanced), from the ball's last
+position moved to first order with the ring (its sensitivity), with the Jacobians
 from the complex step (exact to rounding); a ball left unbalanced is solved alone from its
 loose state (:mod:`bearingload.models._ball_dynamics`). The ring equilibrium: Newton on ``(x,
 y, a, R_i theta, R_i theta_c)`` from the static answer (a case left unbalanced: again from the
@@ -565,8 +566,14 @@ def _ring_step(jac: np.ndarray, res: np.ndarray) -> np.ndarray:
     a direction) gives the least-squares step. [mm]"""
     try:
         return np.linalg.solve(jac, res[..., None])[..., 0]
-    except np.linalg.LinAlgError:
-        return (np.linalg.pinv(jac) @ res[..., None])[..., 0]
+    except np.linalg.LinAlgError:  # case by case: no case's step depends on another's
+        out = np.empty_like(res)
+        for k in range(res.shape[0]):
+            try:
+                out[k] = np.linalg.solve(jac[k], res[k])
+            except np.linalg.LinAlgError:
+                out[k] = np.linalg.pinv(jac[k]) @ res[k]
+        return out
 
 
 def _take_state(st: _State, idx: np.ndarray) -> _State:
