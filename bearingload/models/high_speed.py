@@ -15,8 +15,14 @@ Model (one ball ``j`` at ``phi_j``; the geometry, loads and conventions of
   as in the static model). The ball centre is no longer on the line joining them: it lies at
   ``(X_1, X_2) = (r'_o + delta_o)(sin alpha_o, cos alpha_o)`` (axial, radial) from the outer
   centre, ``r'_o = (f_o - 1/2) D_w``; the unknowns of each ball are ``delta_o`` and
-  ``alpha_o``. The inner contact follows: ``(u' - X_1, rho - X_2) = (r'_i + delta_i)(sin alpha_i,
-  cos alpha_i)``. ``Q_i = K_i max(delta_i, 0)^1.5``, ``Q_o = K_o max(delta_o, 0)^1.5``.
+  ``alpha_o``. The inner contact follows: ``(u' - X_1, max(rho - X_2, 0)) = (r'_i +
+  delta_i)(sin alpha_i, cos alpha_i)``. ``Q_i = K_i max(delta_i, 0)^1.5``, ``Q_o = K_o
+  max(delta_o, 0)^1.5``. The inner raceway is the half of the inner groove facing the balls
+  (``cos alpha_i >= 0``; the static model's ``max(rho, 0)``): a ball whose centre lies radially
+  outward of its inner groove centre touches the groove's side at most (at 90°), never the
+  far side of the groove circle, where the ring has no surface.
+* A ball without inner contact (loose) rests on the outer raceway: ``alpha_o = 0`` (then beta
+  = 0, no gyroscopic friction) and ``Q_o = F_c``.
 * Kinematics, outer-raceway control (Jones; Harris & Kotzalas vol. 2, ch. 2): the ball rolls
   without spinning on the outer raceway; with ``gamma = D_w/d_m`` and the inner ring at
   ``omega`` (outer ring still) the attitude angle is ``tan beta = sin alpha_o / (cos alpha_o +
@@ -44,10 +50,18 @@ Model (one ball ``j`` at ``phi_j``; the geometry, loads and conventions of
 * Not modelled: ring expansion, cage and lubricant forces, the inner contact's friction; the
   ring rotating is the inner one.
 
-Numerics. For given ring positions each ball's two equations are solved by Newton, all balls of
-all cases at once, with the Jacobians from the complex step (exact to rounding); the ring
-equilibrium by damped Newton on ``(x, y, a, R_i theta, R_i theta_c)``, the tangent of the ball
-forces by the implicit function theorem (the ball equations eliminated per ball). The components
+Numerics. For given ring positions each ball's two equations are solved by Newton on its centre
+(X_1, X_2), all balls of all cases at once (each until it is balanced), from the ball's last
+position moved to first order with the ring (its sensitivity), with the Jacobians
+from the complex step (exact to rounding); a ball left unbalanced is solved alone from its
+loose state (:mod:`bearingload.models._ball_dynamics`). The ring equilibrium: Newton on ``(x,
+y, a, R_i theta, R_i theta_c)`` from the static answer (a case left unbalanced: again from the
+static answer of the bearing whose balls are pushed out by their centrifugal approach), the
+tangent of the ball forces by the implicit function theorem
+(the ball equations eliminated per ball); the step halved, then Levenberg-Marquardt steps (a
+nearly singular tangent), none longer than A/10 or to a position where no ball touches the
+inner ring. A case left unbalanced is solved again by continuation in omega^2 from the static
+answer. The components
 the static model holds by symmetry are held (the speed terms keep those symmetries: ``M_g`` is
 odd in ``alpha_o``). A case stops when each applied component is balanced to ``TOLERANCE`` of
 the largest applied load and every ball to ``BALL_TOLERANCE`` of its forces; left above
@@ -68,6 +82,15 @@ from bearingload import validate
 from bearingload.constants import STEEL_MODULUS
 from bearingload.errors import ConvergenceError, InputError
 from bearingload.models import combined as _combined
+from bearingload.models._ball_dynamics import (
+    _H,
+    _line_start,
+    _power,
+    _Set,
+    _stiffness,
+    ball_terms,
+    solve_balls,
+)
 from bearingload.models.combined import CombinedDistribution
 
 __all__ = ["HighSpeedDistribution", "solve_high_speed", "STEEL_DENSITY", "MAX_SPEED_PITCH",
@@ -81,18 +104,15 @@ MAX_SPEED_PITCH = 2.0e6
 MODEL = "ball dynamics: centrifugal force and gyroscopic moment, outer-raceway control"
 #: Relative residual of the ring equilibrium (of the largest applied load). [-]
 TOLERANCE = 1e-12
-#: Relative residual of each ball's equations (of the sum of its force magnitudes). [-]
-BALL_TOLERANCE = 1e-13
 #: Largest ring residual accepted at the end. [-]
 ACCEPT = 1e-9
-#: Ring Newton steps per stiffness update, ball Newton steps per ring position, updates. [-]
+#: Ring Newton steps; trial steps of each: the Newton step halved HALVINGS times, then
+#: Levenberg-Marquardt steps. [-]
 RING_ITERATIONS = 200
-BALL_ITERATIONS = 30
-STIFFNESS_UPDATES = 20
-#: Rounding of an approach over its length's (of the ball tolerance). [-]
-_ROUND = 16.0 * float(np.finfo(float).eps) / BALL_TOLERANCE
-#: Complex step. [-]
-_H = 1e-30
+LM_TRIALS = 12
+HALVINGS = 6
+#: Stages of the continuation in speed of a case the direct solve leaves unbalanced. [-]
+CONTINUATION_STAGES = 200
 #: N mm per kg mm^2/s^2 (forces from kg, mm, s). [-]
 _KG_MM = 1e-3
 
@@ -152,148 +172,12 @@ class HighSpeedDistribution(CombinedDistribution):
     model: str = MODEL
 
 
-@dataclass
-class _Set:
-    """Constants of every ball (n, z) or per case (n, 1), physical units."""
-
-    ri: np.ndarray  # r'_i = (f_i - 1/2) D_w [mm]
-    ro: np.ndarray  # r'_o
-    dw: np.ndarray
-    dm: np.ndarray
-    omega: np.ndarray  # [rad/s]
-    mass: np.ndarray  # [kg]
-    ki: np.ndarray  # K_i at the Chebyshev nodes of cos(alpha) (n, 1, NODES) [N/mm^1.5]
-    ko: np.ndarray
-
-    def take(self, idx: np.ndarray) -> _Set:
-        return _Set(*(getattr(self, f.name)[idx] for f in dataclasses.fields(self)))
-
-
-def ball_terms(b: _Set, rho: Any, u: Any, do: Any, ao: Any) -> tuple[Any, ...]:  # complex-capable
-    """Every quantity of the balls at (rho, u) with the unknowns (delta_o, alpha_o).
-
-    Returns (g1, g2, Q_i, Q_o, sin a_i, cos a_i, F_c, M_g, omega_c, omega_R, beta, delta_i,
-    ring axial force, ring radial force) [N, mm, rad/s]; the ring forces are those the ball
-    puts on the inner ring's equilibrium (``Q_i sin a_i``, ``Q_i cos a_i``)."""
-    lo = b.ro + do
-    so, co = np.sin(ao), np.cos(ao)
-    e1 = u - lo * so
-    e2 = rho - lo * co
-    li = np.sqrt(e1 * e1 + e2 * e2)
-    di = li - b.ri
-    si, ci = e1 / li, e2 / li
-    qi = _stiffness(b.ki, ci) * _power(di)
-    qo = _stiffness(b.ko, co) * _power(do)
-    gamma = b.dw / b.dm
-    tb = so / (co + gamma)
-    beta = np.arctan(tb)
-    c_o = (co + tb * so) / (1.0 + gamma * co)
-    c_i = (ci + tb * si) / (1.0 - gamma * ci)
-    wc = b.omega * c_o / (c_o + c_i)
-    wr = b.omega / (gamma * np.cos(beta) * (c_o + c_i))
-    fc = 0.5 * b.mass * b.dm * wc * wc * _KG_MM
-    mg = 0.1 * b.mass * b.dw * b.dw * wr * wc * np.sin(beta) * _KG_MM
-    fr = 2.0 * mg / b.dw
-    g1 = qi * si - qo * so + fr * co
-    g2 = qi * ci - qo * co - fr * so + fc
-    return g1, g2, qi, qo, si, ci, fc, mg, wc, wr, beta, di, qi * si, qi * ci
-
-
-def _stiffness(nodes: np.ndarray, cos_alpha: Any) -> Any:
-    """K(cos alpha) from its values at the Chebyshev nodes (barycentric interpolation, a
-    rational function: complex-step safe). Below cos = 0.05 (a loose ball pointing across the
-    groove: no load) the value at 0.05. [N/mm^1.5]"""
-    c = np.where(np.real(cos_alpha) < 0.05, 0.05, cos_alpha)
-    terms = _NODE_W / ((2.0 * c - 1.0)[..., None] - _NODE_X)
-    return (terms * nodes).sum(-1) / terms.sum(-1)
-
-
-def _power(d: Any) -> Any:
-    """max(d, 0)^1.5, complex-step safe (0j ** 1.5 is NaN in numpy)."""
-    on = np.real(d) > 0
-    return np.where(on, np.where(on, d, 1.0) ** 1.5, 0.0)
-
-
-def _line_start(b: _Set, rho: np.ndarray, u: np.ndarray) -> tuple[np.ndarray, np.ndarray]:
-    """The static position: the ball on the line of its groove centres, the approach shared by
-    the contacts as their compliances, delta_o = w delta, w = K_o^-2/3 / (K_i^-2/3 + K_o^-2/3)."""
-    r = np.maximum(rho, 0.0)
-    d = np.hypot(r, u)
-    cos_a = r / np.where(d > 0, d, 1.0)
-    ci, co = _stiffness(b.ki, cos_a) ** (-2.0 / 3.0), _stiffness(b.ko, cos_a) ** (-2.0 / 3.0)
-    w = co / (ci + co)
-    return w * (d - b.ri - b.ro), np.arctan2(u, r)
-
-
-def _solve_balls(
-    b: _Set, rho: np.ndarray, u: np.ndarray, do: np.ndarray, ao: np.ndarray
-) -> tuple[np.ndarray, np.ndarray, np.ndarray]:
-    """Newton on every ball's two equations at the ring position (rho, u), from (do, ao).
-    Cases at speed 0 keep the static (line) position. Returns (do, ao, converged (n, z))."""
-    moving = np.broadcast_to(b.omega > 0, do.shape)
-    do, ao = do.copy(), ao.copy()
-    ok = ~moving
-    for _ in range(BALL_ITERATIONS):
-        t = ball_terms(b, rho, u, do, ao)
-        norm, ok = _ball_norm(b, t, do, moving)
-        if ok.all():
-            break
-        hd = _H * (b.ri + b.ro)
-        td = ball_terms(b, rho, u, do + 1j * hd, ao)
-        ta = ball_terms(b, rho, u, do, ao + 1j * _H)
-        j11, j21 = np.imag(td[0]) / hd, np.imag(td[1]) / hd
-        j12, j22 = np.imag(ta[0]) / _H, np.imag(ta[1]) / _H
-        det = j11 * j22 - j12 * j21
-        with np.errstate(all="ignore"):
-            sd = -(j22 * t[0] - j12 * t[1]) / det
-            sa = -(-j21 * t[0] + j11 * t[1]) / det
-        go = ~ok & np.isfinite(sd) & np.isfinite(sa)
-        sd, sa = np.where(go, sd, 0.0), np.where(go, sa, 0.0)
-        cut = np.minimum(1.0, 0.2 / np.maximum(np.abs(sa), 1e-300))  # the Newton direction kept
-        sd, sa = sd * cut, sa * cut
-        lam = np.ones_like(do)
-        pending = go.copy()
-        size = np.hypot(t[0], t[1])  # the line search compares the residual itself
-        for _ in range(12):  # backtracking: the step, halved until the residual falls
-            trial_d = np.where(do + lam * sd > 0.1 * do, do + lam * sd, 0.1 * do)
-            trial_a = ao + lam * sa
-            t2 = ball_terms(b, rho, u, trial_d, trial_a)
-            ok2 = _ball_norm(b, t2, trial_d, moving)[1]
-            n2 = np.hypot(t2[0], t2[1])
-            better = pending & ((n2 < (1.0 - 1e-4 * lam) * size) | ok2)
-            do, ao = np.where(better, trial_d, do), np.where(better, trial_a, ao)
-            pending &= ~better
-            if not pending.any():
-                break
-            lam = np.where(pending, 0.5 * lam, lam)
-        if pending.all():
-            break
-    t = ball_terms(b, rho, u, do, ao)
-    ok = _ball_norm(b, t, do, moving)[1]
-    return do, ao, ok
-
-
-def _ball_norm(
-    b: _Set, t: tuple[Any, ...], do: np.ndarray, moving: np.ndarray
-) -> tuple[np.ndarray, np.ndarray]:
-    """The balls' residual over their force size, and which balls are balanced (those at
-    speed 0 are, on their line)."""
-    g1, g2, qi, qo, fc, mg = t[0], t[1], t[2], t[3], t[6], t[7]
-    size = np.abs(qi) + np.abs(qo) + np.abs(fc) + 2.0 * np.abs(mg) / b.dw
-    # the rounding of the approaches, differences of lengths up to r' + delta
-    di = np.abs(t[11])
-    with np.errstate(all="ignore"):
-        size = size + _ROUND * np.nan_to_num(qi * (di + b.ri) / di + qo * (do + b.ro) / do)
-        norm = np.hypot(g1, g2) / size
-    norm = np.where(np.isfinite(norm), norm, np.inf)
-    return norm, ~moving | (norm <= BALL_TOLERANCE)
-
-
 def _ring_forces(
     b: _Set, rho: np.ndarray, u: np.ndarray, do: np.ndarray, ao: np.ndarray, one_sided: np.ndarray
 ) -> tuple[Any, ...]:
-    """The ball forces on the ring (axial, radial) (n, z) and their total derivatives by
-    (rho, u) with the ball equations eliminated: ((dFa/drho, dFa/du), (dFr/drho, dFr/du))."""
+    """The ball forces on the ring (axial, radial) (n, z), their total derivatives by (rho, u)
+    with the ball equations eliminated: ((dFa/drho, dFa/du), (dFr/drho, dFr/du)), the terms, and
+    each ball's (rho, u', d(do, ao)/drho, d(do, ao)/du') (n, z, 6)."""
     up = np.where(one_sided[:, None], np.maximum(u, 0.0), u)
     dup = np.where(one_sided[:, None], (u > 0).astype(float), 1.0)
     t0 = ball_terms(b, rho, up, do, ao)
@@ -312,14 +196,24 @@ def _ring_forces(
     with np.errstate(all="ignore"):
         inv = np.stack([[d[1][1], -d[0][1]], [-d[1][0], d[0][0]]]) / det
     out = np.zeros((2, 2) + do.shape)
+    # the ball's own sensitivity dX/dp = -(dg/dX)^-1 dg/dp (the next ring position's start)
+    sens = np.zeros(do.shape + (6,))
+    sens[..., 0], sens[..., 1] = rho, up
+    for c in (2, 3):
+        for k in range(2):
+            sens[..., 2 * c - 2 + k] = -(inv[k, 0] * d[0][c] + inv[k, 1] * d[1][c])
+    sens = np.where(np.isfinite(sens), sens, 0.0)
     for r in (2, 3):
         for c, chain in ((2, 1.0), (3, dup)):
             # dF/dp - dF/dX (dg/dX)^-1 dg/dp
             dxp = [inv[k, 0] * d[0][c] + inv[k, 1] * d[1][c] for k in range(2)]
             total = d[r][c] - (d[r][0] * dxp[0] + d[r][1] * dxp[1])
-            static = _static_derivative(b, rho, up, r, c)
-            out[r - 2, c - 2] = np.where(moving, total, static) * chain
-    return t0[12], t0[13], out, t0
+            if moving.all():
+                out[r - 2, c - 2] = total * chain
+            else:
+                static = _static_derivative(b, rho, up, r, c)
+                out[r - 2, c - 2] = np.where(moving, total, static) * chain
+    return t0[12], t0[13], out, t0, sens
 
 
 def _static_derivative(b: _Set, rho: np.ndarray, up: np.ndarray, r: int, c: int) -> np.ndarray:
@@ -361,8 +255,6 @@ def _stiffness_nodes(geo: Any, e: np.ndarray, nu: np.ndarray) -> tuple[np.ndarra
     return np.stack(rows_i)[:, None, :], np.stack(rows_o)[:, None, :]
 
 
-_NODE_X = _combined._NODE_X
-_NODE_W = _combined._NODE_W
 _NODE_COS = _combined._NODE_COS
 _NODE_CACHE: dict[tuple[float, ...], tuple[np.ndarray, np.ndarray]] = {}
 
@@ -456,7 +348,7 @@ def solve_high_speed(
         given["misalignment"] = misalignment
     flat = {k: np.broadcast_to(np.asarray(v, dtype=float), shape).ravel()
             for k, v in given.items() if k != "balls"}  # fmt: skip
-    case_arrays = {
+    case_arrays: dict[str, Any] = {
         name: np.broadcast_to(np.asarray(getattr(static, name), dtype=float), shape).ravel()
         for name in ("x", "y", "axial", "tilt", "tilt_cross", "tilt_radius")
     }
@@ -472,10 +364,61 @@ def solve_high_speed(
            else _combined._angular_geometry(dw, dm, fi, fo, alpha_d))  # fmt: skip
     geo = dataclasses.replace(geo, R_i=case_arrays["tilt_radius"])
     one_sided = np.full(dw.shape, contact_angle is not None)
+    static_kw = dict(ball_diameter=dw, pitch_diameter=dm, f_i=fi, f_o=fo, modulus=e,
+                     poisson=nu, cage_angle=flat["cage_angle"], moment_cross=flat["moment_cross"],
+                     tilt_radius=None if tilt_radius is None else case_arrays["tilt_radius"],
+                     moment=None if moment is None else flat["moment"],
+                     misalignment=flat.get("misalignment"))  # fmt: skip
+    case_arrays["shifted"] = lambda rows: _dynamic_start(
+        z, geo, flat, case_arrays, (e, nu, rho_b), static_kw, contact_angle, rows
+    )
     with np.errstate(all="ignore"):
         out = _solve(z, geo, flat, case_arrays, angles, (e, nu, rho_b), one_sided,
                      misalignment is not None)  # fmt: skip
     return _result(static, shape, z, geo, flat, density, out, one_sided, misalignment)
+
+
+def _dynamic_start(
+    z: int, geo: Any, flat: dict, pos: dict, material: tuple[np.ndarray, ...], static_kw: dict,
+    contact_angle: Any, rows: np.ndarray,
+) -> dict[str, np.ndarray]:  # fmt: skip
+    """The second start of the ring Newton (cases ``rows`` the static start leaves
+    unbalanced; light loads at speed): the static answer of the bearing whose balls are pushed
+    out by their rigid-rolling centrifugal force (ring position, tilts [°]; ``u`` the axial
+    offset of the groove centres [mm]). A ball at speed sits ``delta_c = (F_c/K_o)^(2/3)``
+    further out in its outer groove; for the inner ring this is the inner groove centre moved
+    in by delta_c: a clearance larger by 2 delta_c (deep groove), ``cos alpha_0`` smaller by
+    delta_c/A (angular contact). Cases at speed 0, or whose shifted bearing the static model
+    refuses, keep the static answer. [mm]"""
+    shift = np.where(contact_angle is not None, geo.A * np.sin(geo.alpha0), 0.0)
+    out = {name: pos[name].copy() for name in ("x", "y", "tilt", "tilt_cross")}
+    out["u"] = pos["axial"] + shift
+    moving = rows[flat["speed"][rows] > 0]
+    if moving.size == 0:
+        return out
+    ki, ko = _stiffness_nodes(geo, *material[:2])
+    cos0 = np.cos(geo.alpha0)
+    omega = flat["speed"] * math.pi / 30.0
+    mass = material[2] * math.pi / 6.0 * geo.D_w**3
+    wc = 0.5 * omega * (1.0 - geo.D_w / geo.d_m * cos0)
+    fc = 0.5 * mass * geo.d_m * wc * wc * _KG_MM
+    delta_c = (fc / _stiffness(ko[:, 0, :], cos0)) ** (2.0 / 3.0)
+    kw = {k: (v if v is None else v[moving]) for k, v in static_kw.items()}
+    cos1 = np.maximum(cos0 - delta_c / geo.A, 1e-3)[moving]
+    if contact_angle is None:
+        kw["clearance"] = 2.0 * np.minimum(geo.g + delta_c, geo.A * (1.0 - 1e-6))[moving]
+    else:
+        kw["contact_angle"] = np.rad2deg(np.arccos(cos1))
+    try:
+        s = _combined.solve_combined(z, flat["radial_load"][moving], flat["axial_load"][moving],
+                                     **kw)  # fmt: skip
+    except (InputError, ConvergenceError):
+        return out
+    new_shift = geo.A[moving] * np.sqrt(1.0 - cos1**2) if contact_angle is not None else 0.0
+    for name in ("x", "y", "tilt", "tilt_cross"):
+        out[name][moving] = np.ravel(getattr(s, name))
+    out["u"][moving] = np.ravel(s.axial) + new_shift
+    return out
 
 
 @dataclass
@@ -490,6 +433,7 @@ class _Ring:
     f_ref: np.ndarray  # (n,) [N]
     held: np.ndarray  # (n, 5) bool
     one_sided: np.ndarray  # (n,) bool
+    length: np.ndarray  # A = (f_i + f_o - 1) D_w (n,) [mm]
 
     def take(self, idx: np.ndarray) -> _Ring:
         out = {f.name: getattr(self, f.name) for f in dataclasses.fields(self)}
@@ -507,24 +451,33 @@ class _State:
     jac: np.ndarray  # (n, 5, 5) d gen / d v
     merit: np.ndarray  # (n,) largest free residual over f_ref (inf: a ball unsolved)
     terms: tuple[np.ndarray, ...]
+    sens: np.ndarray  # (n, z, 6) each ball's rho, u', d(do, ao)/drho, d(do, ao)/du'
 
 
-def _evaluate(r: _Ring, v: np.ndarray, do: np.ndarray, ao: np.ndarray) -> _State:
-    """Solve every ball at the ring position v from (do, ao); the ring forces and tangent."""
+def _evaluate(
+    r: _Ring, v: np.ndarray, do: np.ndarray, ao: np.ndarray, sens: np.ndarray | None = None
+) -> _State:
+    """Solve every ball at the ring position v from (do, ao) (moved to first order by the
+    balls' sensitivities ``sens`` of a previous state); the ring forces and tangent."""
     c, s = r.c, r.s
     rho = r.base[:, None] + v[:, 0, None] * c + v[:, 1, None] * s
     u = v[:, 2, None] + v[:, 3, None] * c + v[:, 4, None] * s
     up = np.where(r.one_sided[:, None], np.maximum(u, 0.0), u)
-    line = _line_start(r.b, rho, up)
+    if sens is not None:
+        dr, du = rho - sens[..., 0], up - sens[..., 1]
+        do = do + sens[..., 2] * dr + sens[..., 4] * du
+        ao = ao + sens[..., 3] * dr + sens[..., 5] * du
     moving = np.broadcast_to(r.b.omega > 0, do.shape)
     fresh = ~moving | ~np.isfinite(do)
-    do, ao = np.where(fresh, line[0], do), np.where(fresh, line[1], ao)
+    if fresh.any():
+        line = _line_start(r.b, rho, up)
+        do, ao = np.where(fresh, line[0], do), np.where(fresh, line[1], ao)
     # a ball at speed always touches its outer groove: start it pressed by about F_c
     fc = 0.125 * r.b.mass * r.b.dm * r.b.omega**2 * _KG_MM
     ao = np.where(moving & fresh & (do <= 0), 0.0, ao)
     do = np.where(moving, np.maximum(do, (fc / r.b.ko[..., -1]) ** (2.0 / 3.0)), do)
-    do, ao, ok = _solve_balls(r.b, rho, up, do, ao)
-    fa, fr, d, terms = _ring_forces(r.b, rho, u, do, ao, r.one_sided)
+    do, ao, ok = solve_balls(r.b, rho, up, do, ao)
+    fa, fr, d, terms, sens = _ring_forces(r.b, rho, u, do, ao, r.one_sided)
     zero, one = np.zeros_like(c), np.ones_like(c)
     arm_r = np.stack([c, s, zero, zero, zero], axis=1)  # (n, 5, z)
     arm_a = np.stack([zero, zero, one, c, s], axis=1)
@@ -536,14 +489,18 @@ def _evaluate(r: _Ring, v: np.ndarray, do: np.ndarray, ao: np.ndarray) -> _State
     merit = np.abs(res).max(axis=1) / r.f_ref
     balls_ok = np.asarray(ok.all(axis=1))
     merit = np.where(balls_ok & np.isfinite(merit), merit, np.inf)
-    return _State(do, ao, balls_ok, gen, jac, merit, tuple(terms))
+    return _State(do, ao, balls_ok, gen, jac, merit, tuple(terms), sens)
 
 
 def _newton(r: _Ring, v: np.ndarray, do: np.ndarray, ao: np.ndarray) -> tuple[Any, ...]:
-    """Damped Newton on the ring equilibrium, each case on its own. Returns (v, state,
+    """Newton on the ring equilibrium with a Levenberg-Marquardt safeguard, each case on its
+    own: the Newton step, halved, then steps of ``(J^T J + mu diag J^T J) s = J^T res`` with mu
+    growing (a tangent nearly singular - two balls alike carrying the axial force and the
+    moment - damped in its null direction instead of a step out of the bearing), each no longer
+    than a tenth of A; a step is taken when it lowers the residual's 2-norm and some ball
+    touches the inner ring. The balls start from the current ones. Returns (v, state,
     iterations (n,))."""
-    n = v.shape[0]
-    its = np.zeros(n, dtype=int)
+    its = np.zeros(v.shape[0], dtype=int)
     st = _evaluate(r, v, do, ao)
     todo = np.flatnonzero(~(st.merit <= TOLERANCE))
     for _ in range(RING_ITERATIONS):
@@ -554,23 +511,29 @@ def _newton(r: _Ring, v: np.ndarray, do: np.ndarray, ao: np.ndarray) -> tuple[An
         jac = np.where(sub.held[:, :, None] | sub.held[:, None, :], 0.0, cur.jac)
         jac[:, np.arange(5), np.arange(5)] += sub.held
         res = np.where(sub.held, 0.0, sub.f - cur.gen)
-        step = np.linalg.solve(jac, res[..., None])[..., 0]
-        step = np.where(np.isfinite(step), step, 0.0)
-        lam = np.ones(todo.size)
+        size = _norm2(sub, cur)
         pending = np.arange(todo.size)
-        for _ in range(20):
-            trial = v[todo[pending]] + lam[pending, None] * step[pending]
-            got = _evaluate(sub.take(pending), trial, cur.do[pending], cur.ao[pending])
-            better = (got.merit < (1.0 - 1e-4 * lam[pending]) * cur.merit[pending]) | (
+        for k in range(LM_TRIALS):
+            lam, mu = (0.5**k, 0.0) if k < HALVINGS else (1.0, 1e-6 * 100.0 ** (k - HALVINGS))
+            step = lam * _lm_step(jac[pending], res[pending], mu)
+            longest = np.abs(step).max(axis=1)
+            step *= np.minimum(1.0, 0.1 * sub.length[pending] / np.maximum(longest, 1e-300))[
+                :, None
+            ]
+            trial = v[todo[pending]] + step
+            got = _evaluate(sub.take(pending), trial, cur.do[pending], cur.ao[pending],
+                            cur.sens[pending])  # fmt: skip
+            better = (_norm2(sub.take(pending), got) < (1.0 - 1e-4) * size[pending]) | (
                 got.merit <= TOLERANCE
             )
+            # no ball touching the inner ring: a plateau without tangent, never the answer
+            better &= np.any(got.terms[2] > 0, axis=1)
             rows = todo[pending[better]]
             v[rows] = trial[better]
             _put_state(st, rows, _take_state(got, np.flatnonzero(better)))
             pending = pending[~better]
             if pending.size == 0:
                 break
-            lam[pending] *= 0.5
         its[todo] += 1
         stalled = np.zeros(todo.size, dtype=bool)
         stalled[pending] = True  # no step lowered the residual: its rounding
@@ -578,13 +541,48 @@ def _newton(r: _Ring, v: np.ndarray, do: np.ndarray, ao: np.ndarray) -> tuple[An
     return v, st, its
 
 
+def _norm2(r: _Ring, st: _State) -> np.ndarray:
+    """The 2-norm of the free residual over f_ref (inf: a ball unsolved). [-]"""
+    res = np.where(r.held, 0.0, r.f - st.gen)
+    return np.where(np.isfinite(st.merit), np.sqrt((res * res).sum(axis=1)) / r.f_ref, np.inf)
+
+
+def _lm_step(jac: np.ndarray, res: np.ndarray, mu: float) -> np.ndarray:
+    """The Newton step (mu = 0) or the Levenberg-Marquardt step of every case. [mm]"""
+    if mu == 0.0:
+        step = _ring_step(jac, res)
+    else:
+        jt = jac.transpose(0, 2, 1)
+        jtj = jt @ jac
+        diag = np.einsum("nii->ni", jtj)
+        diag = np.maximum(diag, 1e-12 * diag.max(axis=1, keepdims=True))
+        a = jtj + mu * diag[:, :, None] * np.eye(5)
+        step = _ring_step(a, (jt @ res[..., None])[..., 0])
+    return np.where(np.isfinite(step), step, 0.0)
+
+
+def _ring_step(jac: np.ndarray, res: np.ndarray) -> np.ndarray:
+    """The solution of jac step = res of every case; a singular tangent (no ball touching along
+    a direction) gives the least-squares step. [mm]"""
+    try:
+        return np.linalg.solve(jac, res[..., None])[..., 0]
+    except np.linalg.LinAlgError:  # case by case: no case's step depends on another's
+        out = np.empty_like(res)
+        for k in range(res.shape[0]):
+            try:
+                out[k] = np.linalg.solve(jac[k], res[k])
+            except np.linalg.LinAlgError:
+                out[k] = np.linalg.pinv(jac[k]) @ res[k]
+        return out
+
+
 def _take_state(st: _State, idx: np.ndarray) -> _State:
     return _State(st.do[idx], st.ao[idx], st.balls_ok[idx], st.gen[idx], st.jac[idx],
-                  st.merit[idx], tuple(t[idx] for t in st.terms))  # fmt: skip
+                  st.merit[idx], tuple(t[idx] for t in st.terms), st.sens[idx])  # fmt: skip
 
 
 def _put_state(st: _State, rows: np.ndarray, new: _State) -> None:
-    for name in ("do", "ao", "balls_ok", "gen", "jac", "merit"):
+    for name in ("do", "ao", "balls_ok", "gen", "jac", "merit", "sens"):
         getattr(st, name)[rows] = getattr(new, name)
     for mine, theirs in zip(st.terms, new.terms, strict=True):
         mine[rows] = theirs
@@ -605,18 +603,64 @@ def _solve(
     f_ref = _combined._reference_force(fr, fa, mm, mc, rr)
     f = np.stack([fr, np.zeros(n), fa, mm / rr, mc / rr], axis=1)
     shift = np.where(one_sided, geo.A * np.sin(geo.alpha0), 0.0)
-    v = np.stack([pos["x"], pos["y"], pos["axial"] + shift, rr * np.deg2rad(pos["tilt"]),
-                  rr * np.deg2rad(pos["tilt_cross"])], axis=1)  # fmt: skip
+    v_static = np.stack([pos["x"], pos["y"], pos["axial"] + shift, rr * np.deg2rad(pos["tilt"]),
+                         rr * np.deg2rad(pos["tilt_cross"])], axis=1)  # fmt: skip
     ki, ko = _stiffness_nodes(geo, e, nu)
     col = [(geo.f_i - 0.5) * geo.D_w, (geo.f_o - 0.5) * geo.D_w, geo.D_w, geo.d_m,
            flat["speed"] * math.pi / 30.0, dens * math.pi / 6.0 * geo.D_w**3]  # fmt: skip
     ri, ro, dwc, dmc, omega, mass = (a[:, None] for a in col)
     b = _Set(ri, ro, dwc, dmc, omega, mass, ki, ko)
-    ring = _Ring(b, c, s, geo.A - geo.g, f, f_ref, held, one_sided)
+    ring = _Ring(b, c, s, geo.A - geo.g, f, f_ref, held, one_sided, geo.A)
     nan = np.full((n, z), np.nan)
-    v, st, total = _newton(ring, v, nan, nan)
+    v, st, total = _newton(ring, v_static.copy(), nan, nan)
+    bad = np.flatnonzero(~(st.merit <= ACCEPT))
+    if bad.size:
+        start = pos["shifted"](bad)
+        v2 = np.stack([start["x"], start["y"], start["u"], rr * np.deg2rad(start["tilt"]),
+                       rr * np.deg2rad(start["tilt_cross"])], axis=1)[bad]  # fmt: skip
+        v2, st2, its2 = _newton(ring.take(bad), v2, nan[bad], nan[bad])
+        total[bad] += its2
+        won = np.flatnonzero(st2.merit <= ACCEPT)
+        v[bad[won]] = v2[won]
+        _put_state(st, bad[won], _take_state(st2, won))
+    for i in np.flatnonzero(~(st.merit <= ACCEPT)):
+        _continuation(ring, int(i), v, st, total, v_static[i])
     _check(st, total, flat, one_sided)
     return ring, v, st, total
+
+
+def _continuation(
+    ring: _Ring, i: int, v: np.ndarray, st: _State, its: np.ndarray, v_static: np.ndarray
+) -> None:
+    """Case i again, by continuation in the centrifugal and gyroscopic terms (both in omega^2):
+    from the static answer, the speed raised in stages of omega^2 (a quarter, halved on a
+    stage that does not converge, doubled after one that does), each started from the last
+    balls and the ring position extrapolated from the last two stages (the balls move out with
+    the speed: from the last position alone the loaded ones can lose the inner ring). The
+    answer, if any, replaces case i's in v, st, its."""
+    one = ring.take(np.array([i]))
+    omega = one.b.omega
+    x, do = v_static[None, :].copy(), np.full((1, st.do.shape[1]), np.nan)
+    ao, rate = do.copy(), np.zeros_like(x)
+    done, step = 0.0, 0.25
+    for _ in range(CONTINUATION_STAGES):
+        frac = min(1.0, done + step)
+        stage = dataclasses.replace(one, b=dataclasses.replace(one.b, omega=omega * frac**0.5))
+        x1, st1, its1 = _newton(stage, x + rate * (frac - done), do, ao)
+        its[i] += its1[0]
+        if st1.merit[0] <= (ACCEPT if frac == 1.0 else 1e-6):
+            if done > 0.0:
+                rate = (x1 - x) / (frac - done)
+            done, x, do, ao = frac, x1, st1.do, st1.ao
+            if done == 1.0:
+                v[i] = x1[0]
+                _put_state(st, np.array([i]), st1)
+                return
+            step = min(2.0 * step, 1.0 - done)
+        else:
+            step *= 0.5
+            if step < 1e-6:
+                return
 
 
 def _rel(a: np.ndarray, b: np.ndarray) -> float:
