@@ -217,7 +217,7 @@ def test_a_given_stiffness_at_speed_is_refused_as_solve_refuses_it():
     solved = CliRunner().invoke(main, ["solve", "-z", "9", "--ball-diameter", "7.938",
                                        "--pitch-diameter", "38.5", "-K", "1e5", "-F", "1kN",
                                        "-A", "200N", "--speed", "3000"])  # fmt: skip
-    assert solved.exit_code == 2 and "Error: Invalid value for '--speed'" in solved.output
+    assert solved.exit_code == 2 and "Error: Invalid value for '--stiffness'" in solved.output
     assert skipped["reason"].startswith("speed: the ball dynamics need each contact's Hertz")
     assert "Hertz stiffness from the ball geometry" in solved.output
     quasi = _batch_json(_file([row | {"quasi_static": "true"}], (*head, "quasi_static")))
