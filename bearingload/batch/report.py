@@ -125,8 +125,10 @@ def _columns(header: Header) -> list[Column]:
 
 def held_keys(header: Header) -> tuple[str, ...]:
     """The keys beyond the columns that json, markdown and table hold for a file with
-    ``header`` (:data:`HELD_KEYS` for a combined-load file)."""
-    return HELD_KEYS if header.combined else ()
+    ``header`` (:data:`HELD_KEYS` for a combined-load file, and for a file of bearings with a
+    speed column, whose ball bearings at speed solve gives the ball dynamics)."""
+    at_speed = "speed" in header.names and header.has_bearing
+    return HELD_KEYS if header.combined or at_speed else ()
 
 
 def csv_head(columns: Sequence[Column]) -> str:

@@ -692,13 +692,7 @@ class CaseOptions:
         """The ball dynamics of :func:`bearingload.studies.combined_bearing.solve_combined_bearing`:
         the speed [rpm] (None: the static model, also under --quasi-static) and the ball density
         [kg/mm^3] (None: steel)."""
-        if self.ball_density is not None and (self.speed is None or self.quasi_static):
-            raise click.UsageError(
-                "Invalid value for '--ball-density': it enters the ball dynamics at --speed, "
-                "which --quasi-static or a missing --speed leave out"
-            )
-        if self.quasi_static and self.speed is None:
-            raise click.UsageError("Invalid value for '--quasi-static': it needs --speed")
+        self.check_dynamics_flags()
         if self.rotating == "outer" and self.speed is not None and not self.quasi_static:
             raise click.UsageError(
                 "Invalid value for '--rotating': the ball dynamics at --speed are coded for the "
@@ -715,6 +709,17 @@ class CaseOptions:
             "speed": None if self.quasi_static else self.speed,
             "ball_density": None if self.ball_density is None else self.ball_density * 1e-9,
         }
+
+    def check_dynamics_flags(self) -> None:
+        """Refuse --ball-density without the ball dynamics (no --speed, or --quasi-static) and
+        --quasi-static without --speed."""
+        if self.ball_density is not None and (self.speed is None or self.quasi_static):
+            raise click.UsageError(
+                "Invalid value for '--ball-density': it enters the ball dynamics at --speed, "
+                "which --quasi-static or a missing --speed leave out"
+            )
+        if self.quasi_static and self.speed is None:
+            raise click.UsageError("Invalid value for '--quasi-static': it needs --speed")
 
     def combined_arguments(self) -> dict[str, Any]:
         """The combined load as the keyword arguments of the combined studies
