@@ -49,7 +49,7 @@ TILT_PARAMS = ("tilt_radius",)
 SERVICE_PARAMS = ("static_rating", "speed", "reliability", "viscosity", "oil", "viscosity_40",
                   "viscosity_100", "viscosity_index", "temperature", "contamination", "e_c",
                   "fatigue_load_limit", "roughness", "pressure_viscosity")  # fmt: skip
-#: The options of the ball dynamics at --speed (solve's combined engine only).
+#: The options of the ball dynamics at --speed (solve's ball bearings: the combined engine).
 DYNAMICS_PARAMS = ("ball_density", "quasi_static")
 #: The options that give the operating viscosity from the oil (instead of --viscosity).
 OIL_PARAMS = ("oil", "viscosity_40", "viscosity_100", "viscosity_index", "temperature")
@@ -305,10 +305,11 @@ DECLARATIONS: dict[str, tuple[tuple[str, ...], dict[str, Any]]] = {
         "--speed",
         type=Quantity("speed", positive=True),
         help="Shaft speed n of the rotating ring: every life also in hours, L 10^6/(60 n); "
-        "needed for the rated viscosity. A combined or angular-contact solve includes each "
-        "ball's centrifugal force and gyroscopic moment (outer-raceway control, the inner ring "
-        "turning; docs/speed.md) unless --quasi-static. Units: rpm, r/min, rad/s, 1/s, Hz (bare number: rpm; "
-        "a bare number of 1e6 or more is refused).",
+        "needed for the rated viscosity. solve includes, for a ball bearing, each ball's "
+        "centrifugal force and gyroscopic moment (outer-raceway control, the inner ring "
+        "turning; the combined engine, F_a = 0 without a load option; docs/speed.md) unless "
+        "--quasi-static; roller bearings, sweep and table: the static model. Units: rpm, "
+        "r/min, rad/s, 1/s, Hz (bare number: rpm; a bare number of 1e6 or more is refused).",
     ),
     "ball_density": _option(
         "--ball-density",

@@ -101,8 +101,10 @@ def solve(
     loads) is given wherever the ball geometry and C_r are known, radial load or not; --rotating
     (default inner) and --dynamic-rating feed the lives only and change no load.
 
-    At --speed a combined or angular-contact solve includes each ball's centrifugal force and
-    gyroscopic moment (docs/speed.md; --quasi-static: the static model); a pair refuses --speed.
+    At --speed a ball bearing is solved with each ball's centrifugal force and gyroscopic
+    moment (docs/speed.md): by the combined engine, at F_a = 0 without a load option, the exact
+    model only; --quasi-static: the static model (the radial engine without a load option). A
+    roller bearing keeps the static radial engine; a pair refuses --speed.
 
     Lives as engineers use them (docs/life.md): --speed gives every life in hours; --reliability
     a_1 (ISO 281 Table 12); --viscosity (needs --speed) nu_1, kappa, a_ISO (ISO 281, with
@@ -174,8 +176,9 @@ def solve(
     from bearingload.bearings.angular import parse_angular
 
     angular = case.bearing is not None and parse_angular(case.bearing) is not None
-    # the load alone chooses the engine, never a life option; an angular-contact designation
-    # always takes the combined engine (its balls sit at the contact angle)
+    # the load chooses the engine, and --speed on a ball bearing (the ball dynamics: F_a = 0
+    # set above), never another life option; an angular-contact designation always takes the
+    # combined engine (its balls sit at the contact angle)
     if case.wants_combined or angular:
         if at_speed:
             _refuse_revolutions(
