@@ -70,8 +70,8 @@ def batch(
     only; ball_density (kg/m^3, bare numbers; default bearing steel 7850, silicon nitride
     about 3200) gives the ball mass. Both are refused without a speed, ball_density under
     quasi_static true or for a roller bearing (the static model at any speed). json adds to
-    each row of a file with a load or a speed column its model and, for the rows on the
-    combined engine, every ball's inner and outer contact angle and load
+    each row of a file with a load column, or a speed column and bearings, its model and, for
+    the rows on the combined engine, every ball's inner and outer contact angle and load
     (contact_angles_inner, contact_angles_outer, ball_loads_inner, ball_loads_outer).
 
     A bad row (a negative load, an unknown unit or bearing, z = 0, a line with the wrong
