@@ -78,6 +78,9 @@ ANSWER_KEYS = (
     "rating_life_hours",
     *SERVICE_KEYS,
 )
+#: Each ball's inner and outer contact (equal without the ball dynamics): json and csv names.
+CONTACT_KEYS = ("contact_angles_inner", "contact_angles_outer", "ball_loads_inner",
+                "ball_loads_outer")  # fmt: skip
 #: The units of the 5x5 ``stiffness_matrix`` (``units`` of a combined-load JSON document).
 MATRIX_UNITS = (
     "rows F_x, F_y, F_a [N], M, M_c [N mm]; columns x, y, axial [mm], tilt, tilt_cross [rad]: "
@@ -89,6 +92,7 @@ PER_BALL_KEYS = (
     "contact_angles",
     "ball_approaches",
     "ball_loads",
+    *CONTACT_KEYS,
 )
 NOTES = (
     "Outer ring fixed; F_r along the load line (ball angles from it), F_a towards +axial.",
@@ -195,8 +199,10 @@ def _per_ball_table(cases: Sequence[CombinedCase], records: Sequence[dict[str, A
     inputs = given_keys(records, INPUT_KEYS)
     rows = []
     for c, r in zip(cases, records, strict=True):
+        found = contact_values(c.result, c.bearing.contact_angle)
         for i, values in enumerate(_balls(c)):
-            per = dict(zip(PER_BALL_KEYS[1:], values, strict=True))
+            per = dict(zip(PER_BALL_KEYS[1:5], values, strict=True))
+            per |= {k: float(found[k][i]) for k in CONTACT_KEYS}
             rows.append(_blank(r, inputs) | {"ball": i + 1} | per)
     return Table("balls", [column(k, 1.5) for k in inputs + list(PER_BALL_KEYS)], rows)
 

@@ -149,7 +149,13 @@ def _document(c: PairCase, pair: dict[str, Any], records: list[dict[str, Any]]) 
 
 def _csv_table(c: PairCase, pair: dict[str, Any], records: list[dict[str, Any]],
                per_ball: bool) -> Table:  # fmt: skip
-    from bearingload.reports.combined import ANSWER_KEYS, INPUT_KEYS, PER_BALL_KEYS
+    from bearingload.reports.combined import (
+        ANSWER_KEYS,
+        CONTACT_KEYS,
+        INPUT_KEYS,
+        PER_BALL_KEYS,
+        contact_values,
+    )
 
     inputs = [k for k in PAIR_INPUTS if k not in ("load", "axial_load", "moment", "moment_cross")]
     applied = [f"pair_{k}" for k in ("load", "axial_load", "moment", "moment_cross")]
@@ -167,11 +173,13 @@ def _csv_table(c: PairCase, pair: dict[str, Any], records: list[dict[str, Any]],
             rows.append(base)
             continue
         res = b.result
+        found = contact_values(res, b.bearing.contact_angle)
         for j in range(len(res.ball_loads)):
             rows.append(base | {"ball": j + 1, "ball_angles": float(res.ball_angles[j]),
                                 "contact_angles": float(res.contact_angles[j]),
                                 "ball_approaches": float(res.ball_approaches[j]),
-                                "ball_loads": float(res.ball_loads[j])})  # fmt: skip
+                                "ball_loads": float(res.ball_loads[j])}
+                        | {k: float(found[k][j]) for k in CONTACT_KEYS})  # fmt: skip
     if per_ball:
         cols += [column(k) for k in PER_BALL_KEYS]
     keys = [col.key for col in cols]
