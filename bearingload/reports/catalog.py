@@ -202,8 +202,8 @@ def catalog_entry(designation: str, fmt: str, maker: str | None = None) -> str:
 def _speed_fields(grease: float | None, oil: float | None) -> list[tuple[str, str, Any, str]]:
     """The limiting speeds of a catalogue row as entry fields (``-`` where none was read)."""
     return [
-        ("limiting_speed_grease", "limiting speed, grease lubrication", _or_dash(grease), "rpm"),
-        ("limiting_speed_oil", "limiting speed, oil lubrication", _or_dash(oil), "rpm"),
+        ("limiting_speed_grease", "limiting speed, grease", _or_dash(grease), "rpm"),
+        ("limiting_speed_oil", "limiting speed, oil", _or_dash(oil), "rpm"),
     ]
 
 
