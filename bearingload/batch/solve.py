@@ -531,6 +531,7 @@ def with_service(parts: list[Part], cols: dict[str, list[Any]], bad: dict[int, s
         b = out.pop("_bearing", None)
         if b is None:
             continue
+        _speed_warnings(b, idx, out, cols.get("speed"))
         same = (b.kind, b.C, b.C0, b.pitch_diameter, b.ball_diameter, b.f_i, b.f_o, b.modulus,
                 b.poisson, b.roller_length)  # fmt: skip
         bases[same] = b
@@ -644,6 +645,21 @@ def _service_warnings(
         found = (clamp_kappa(k)[1] if k == k and not low <= k <= high else []) + common
         if found:
             warnings = parts[p][1]["warnings"]
+            row = list(warnings[j])
+            warnings[j] = tuple(row + [w for w in found if w not in row])
+
+
+def _speed_warnings(b: Any, idx: list[int], out: dict[str, Any], speeds: Any) -> None:
+    """Add to each row of a part the warning solve gives on its speed [r/min] above the limiting
+    speed the catalogue gives for bearing ``b`` (:func:`bearingload.bearings.checks.speed_findings`)."""
+    from bearingload.bearings.checks import speed_findings
+
+    if speeds is None or b.limiting_speeds is None:
+        return
+    warnings = out["warnings"]
+    for j, i in enumerate(idx):
+        found = speed_findings(speeds[i], b)
+        if found:
             row = list(warnings[j])
             warnings[j] = tuple(row + [w for w in found if w not in row])
 

@@ -22,6 +22,13 @@
   not more than the widest clearance class spans). Positive clearances below C2 min (0 to 3 µm
   at these bores) are not flagged.
 
+:func:`speed_findings` (solve, sweep and batch with a speed) adds one more: the **speed above
+the limiting speed** the catalogue gives for the bearing (a maker's printed figures, with grease
+and with oil lubrication; oil the higher): above the oil figure it is above both; between the
+two, above the grease figure only (no warning for oil lubrication then, which the sentence
+says). No warning where the catalogue gives no limiting speed (a ring given by hand, a row
+without them, a sealed bearing).
+
 Every threshold is a module constant; the CLI prints each finding as a ``Warning: ...`` line on
 stderr and JSON carries them as ``warnings``.
 
@@ -194,6 +201,41 @@ def static_safety(c0: float | None, p0: float) -> float | None:
     (4.0, None, None)
     """
     return c0 / p0 if c0 and p0 > 0 else None
+
+
+def speed_findings(speed: float | None, bearing: ResolvedBearing) -> list[str]:
+    """The warning on a shaft speed above the bearing's limiting speed; empty when the speed
+    is not above the grease figure, or none is given or known.
+
+    Parameters
+    ----------
+    speed : float or None
+        Shaft speed n of the rotating ring. [r/min]
+    bearing : ResolvedBearing
+        Its :attr:`~bearingload.bearings.resolved.ResolvedBearing.limiting_speeds` (grease,
+        oil [r/min] and their source) are read.
+
+    Returns
+    -------
+    list of str
+        Empty, or one sentence naming the speed, the limit passed and the source.
+    """
+    limits = bearing.limiting_speeds
+    if speed is None or limits is None or not speed > limits.grease:
+        return []
+    name = bearing.geometry.designation if bearing.geometry is not None else "the bearing"
+    cite = limits.source.split(" (", 1)[0]
+    if speed > limits.oil:
+        return [
+            f"the speed n = {speed:.6g} rpm is above the limiting speeds of {name} with oil "
+            f"lubrication, {limits.oil:.6g} rpm, and with grease, {limits.grease:.6g} rpm "
+            f"({cite})"
+        ]
+    return [
+        f"the speed n = {speed:.6g} rpm is above the limiting speed of {name} with grease "
+        f"lubrication, {limits.grease:.6g} rpm (with oil lubrication {limits.oil:.6g} rpm, "
+        f"which it does not exceed; {cite})"
+    ]
 
 
 def clearance_findings(bearing: ResolvedBearing) -> list[str]:

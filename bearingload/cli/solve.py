@@ -198,7 +198,7 @@ def solve(
             cases = _by_hand(methods, case, k_given)
         else:
             bearings = with_ratings(resolve_bearings(case, k_given), case)
-            cases = _radial(bearings, case, methods, revolutions)
+            cases = with_speed_warnings(_radial(bearings, case, methods, revolutions), case.speed)
             service = service_lives(case, [radial_basis(c) for c in cases])
         text = solve_report(
             cases, fmt, per_ball=per_ball, show_geometry=show_geometry, service=service
@@ -297,7 +297,7 @@ def _combined(
     from bearingload.cli.cases import combined_cases
     from bearingload.reports.combined import combined_report
 
-    cases = combined_cases(bearings, case)
+    cases = with_speed_warnings(combined_cases(bearings, case), case.speed)
     service = service_lives(case, [combined_basis(c) for c in cases])
     text = combined_report(
         cases, fmt, per_ball=per_ball, show_geometry=show_geometry, service=service
@@ -327,6 +327,23 @@ def service_lives(case: CaseOptions, bases: list[Any]) -> list[Any]:
 
     op = case.operating()
     return [service_values(op, b) for b in bases]
+
+
+def with_speed_warnings(cases: list[Any], speed: float | None) -> list[Any]:
+    """The solved cases (one each) with the warning on a --speed above the limiting speed the
+    catalogue gives for their bearing added to theirs
+    (:func:`bearingload.bearings.checks.speed_findings`): stderr and json both list it."""
+    import dataclasses
+
+    from bearingload.bearings.checks import speed_findings
+
+    if speed is None:
+        return cases
+    out = []
+    for c in cases:
+        new = [] if c.bearing is None else speed_findings(speed, c.bearing)
+        out.append(dataclasses.replace(c, warnings=(*c.warnings, *new)) if new else c)
+    return out
 
 
 def _service_warnings(service: list[Any] | None) -> list[str]:
