@@ -102,7 +102,8 @@ def solve(
     (default inner) and --dynamic-rating feed the lives only and change no load.
 
     At --speed a combined or angular-contact solve includes each ball's centrifugal force and
-    gyroscopic moment (docs/speed.md; --quasi-static: the static model); a pair refuses --speed.
+    gyroscopic moment (docs/speed.md; --quasi-static: the static model); a pair is solved by the
+    static model at any --speed (its ball dynamics are not coded), the speed giving its hours.
 
     Lives as engineers use them (docs/life.md): --speed gives every life in hours; --reliability
     a_1 (ISO 281 Table 12); --viscosity (needs --speed) nu_1, kappa, a_ISO (ISO 281, with
@@ -230,7 +231,7 @@ def _pair(
     """A pair of angular-contact ball bearings (--arrangement, or 7205BDB): (report, warnings)."""
     import dataclasses
 
-    from bearingload.cli.case_options import DYNAMICS_PARAMS, SERVICE_PARAMS
+    from bearingload.cli.case_options import DYNAMICS_PARAMS
     from bearingload.reports.pair import pair_report
     from bearingload.studies.bearing_pair import solve_bearing_pair
 
@@ -246,9 +247,6 @@ def _pair(
                 "loads; give --moment")  # fmt: skip
     case.refuse(DYNAMICS_PARAMS, "a bearing pair", "a pair is solved by the static model: "
                 "the ball dynamics at speed are coded for one bearing only")  # fmt: skip
-    lives = tuple(p for p in SERVICE_PARAMS if p != "static_rating")  # C_0 gives each s0
-    case.refuse(lives, "a bearing pair", "the lives in hours and the modified lives "
-                "of a pair are not coded yet (it gives L10r and L10 in 10^6 revolutions)")  # fmt: skip
     why = "the design contact angle fixes the geometry of an angular-contact bearing"
     case.refuse(("clearance",), "a bearing pair", why + " (no clearance)")
     b = with_ratings(resolve_bearings(case, k_given), case)[0]
@@ -267,9 +265,11 @@ def _pair(
         )
     pc = solve_bearing_pair(b, case.radial_load, case.axial_load or 0.0,
                             **case.pair_arguments(b.balls))  # fmt: skip
-    service = service_lives(case, [combined_basis(c) for c in pc.bearings])  # C_0, as one bearing
+    pc = with_speed_warnings([pc], case.speed)[0]  # the bearing's limiting speeds
+    # each bearing's service lives as one bearing's from its own loads; the pair's from them
+    service = service_lives(case, [combined_basis(c) for c in pc.bearings])
     text = pair_report(pc, fmt, per_ball=per_ball, show_geometry=show_geometry, service=service)
-    return text, list(pc.warnings)
+    return text, list(pc.warnings) + [w for w in _service_warnings(service) if w not in pc.warnings]
 
 
 def _radial(
