@@ -4,11 +4,12 @@
   the shaft in the pair's column, those each bearing carries in its own), then every ball's
   angle, contact angle and load in both bearings; the geometry only with ``show_geometry``.
 * ``json``: ``{"cases": [pair], "units", "bearing", "warnings"}``: the pair's keys (its inputs,
-  displacement, ``stiffness_matrix``, lift-off, lives) and ``bearings``, one object per bearing
+  displacement, ``stiffness_matrix``, lift-off, lives; with the service options its speed,
+  reliability, lives in hours and modified lives) and ``bearings``, one object per bearing
   with the keys of a single bearing's case (:mod:`bearingload.reports.combined`).
 * ``csv``: one rectangular table, one row per bearing (``bearing_number`` 1, 2): the bearing's
   keys of a single combined case, and the pair's values in every row under ``pair_...``
-  columns (``pair_x``, ``pair_stiffness_axial``, ...) beside the pair's inputs; with
+  columns (``pair_x``, ``pair_stiffness_axial``, ``pair_rating_life_hours``, ...) beside the pair's inputs; with
   ``per_ball`` one row per ball of each bearing.
 """
 
@@ -62,7 +63,9 @@ SPEED_NOTE = (
     "force and gyroscopic moment, are not coded); the speed gives the hours and nu_1 only."
 )
 #: The end of the JSON's ``model`` of a pair at --speed.
-STATIC_AT_SPEED = "; the static model at the speed given (the ball dynamics of a pair are not coded)"
+STATIC_AT_SPEED = (
+    "; the static model at the speed given (the ball dynamics of a pair are not coded)"
+)
 #: The note of a pair's modified lives.
 MODIFIED_NOTE = (
     "Pair modified lives: the same rule on the bearings' L_nm (L_nmr), an unloaded bearing "
@@ -96,7 +99,8 @@ def pair_report(
 ) -> str:  # fmt: skip
     """Render a solved pair in ``fmt`` (table, csv, markdown, json); ``service``: each
     bearing's service values (:class:`bearingload.bearings.service_life.ServiceLife`), merged
-    into its record as a single bearing's."""
+    into its record as a single bearing's, and the pair's from them (its lives in hours, its
+    modified lives: :func:`bearingload.studies.bearing_pair.pair_service_values`)."""
     pair = pair_record(c) | pair_service_values(c, service)
     records = with_service([combined_values(b) for b in c.bearings], service)
     for k in range(2):
