@@ -60,7 +60,8 @@ NOTES = (
 #: The note of a pair at --speed.
 SPEED_NOTE = (
     "Speed: a pair is solved by the static model (the ball dynamics of a pair, centrifugal "
-    "force and gyroscopic moment, are not coded); the speed gives the hours and nu_1 only."
+    "force and gyroscopic moment, are not coded); the speed enters the lives only (hours, "
+    "nu_1, the film)."
 )
 #: The end of the JSON's ``model`` of a pair at --speed.
 STATIC_AT_SPEED = (
