@@ -23,6 +23,7 @@ from typing import Any
 from bearingload.reports.quantities import SERVICE_KEYS, units
 from bearingload.reports.render import Column, Table, render
 from bearingload.reports.solve import (
+    case_warnings,
     column,
     given_keys,
     quantity_rows,
@@ -154,7 +155,7 @@ def combined_report(
     the lives of each case (:class:`bearingload.bearings.service_life.ServiceLife`)."""
     records = with_service([combined_values(c) for c in cases], service)
     if fmt == "json":
-        return render([], "json", document=_document(cases, records))
+        return render([], "json", document=_document(cases, records, service))
     if fmt == "csv":
         table = _per_ball_table(cases, records) if per_ball else _case_table(records)
         return render([table], "csv")
@@ -327,10 +328,16 @@ def contact_values(res: Any, contact_angle: float | None = None) -> dict[str, An
     }
 
 
-def _document(cases: Sequence[CombinedCase], records: Sequence[dict[str, Any]]) -> dict[str, Any]:
+def _document(
+    cases: Sequence[CombinedCase],
+    records: Sequence[dict[str, Any]],
+    service: Sequence[Any] | None = None,
+) -> dict[str, Any]:
     from bearingload.reports.bearing import geometry_document
 
-    docs = []
+    said = case_warnings([c.warnings for c in cases], service)
+
+    docs: list[dict[str, Any]] = []
     for c, r in zip(cases, records, strict=True):
         res = c.result
         found = contact_values(res, c.bearing.contact_angle)
@@ -347,7 +354,7 @@ def _document(cases: Sequence[CombinedCase], records: Sequence[dict[str, Any]]) 
                 "ball_loads_inner": found["ball_loads_inner"],
                 "ball_loads_outer": found["ball_loads_outer"],
                 "stiffness_matrix": res.stiffness_matrix.tolist(),
-                "warnings": list(c.warnings),
+                "warnings": said[len(docs)],
             }
         )
     keys = list(dict.fromkeys(k for d in docs for k in d))
@@ -355,5 +362,5 @@ def _document(cases: Sequence[CombinedCase], records: Sequence[dict[str, Any]]) 
         "cases": docs,
         "units": units(keys, 1.5) | {"stiffness_matrix": MATRIX_UNITS},
         "bearing": geometry_document(cases[0].bearing),
-        "warnings": list(dict.fromkeys(w for c in cases for w in c.warnings)),
+        "warnings": list(dict.fromkeys(w for x in said for w in x)),
     }

@@ -108,7 +108,7 @@ def pair_report(
         if c.result.unloaded[k]:  # no loaded ball: no largest angle of one
             records[k]["contact_angle_max"] = None
     if fmt == "json":
-        return render([], "json", document=_document(c, pair, records))
+        return render([], "json", document=_document(c, pair, records, service))
     if fmt == "csv":
         return render([_csv_table(c, pair, records, per_ball)], "csv")
     tables = []
@@ -153,24 +153,30 @@ def _balls_table(c: PairCase) -> Table:
                  "line; contact angle '-': the ball carries no load)", columns, rows)  # fmt: skip
 
 
-def _document(c: PairCase, pair: dict[str, Any], records: list[dict[str, Any]]) -> dict[str, Any]:
+def _document(
+    c: PairCase,
+    pair: dict[str, Any],
+    records: list[dict[str, Any]],
+    service: Sequence[Any] | None = None,
+) -> dict[str, Any]:
     from bearingload.reports.bearing import geometry_document
     from bearingload.reports.combined import _document as single_document
 
-    singles = single_document(list(c.bearings), records)
+    singles = single_document(list(c.bearings), records, service)
+    said = list(dict.fromkeys([*c.warnings, *singles["warnings"]]))
     doc = pair | {
         "model": "pair of angular-contact ball bearings on one rigid shaft (ISO/TS 16281 each)"
         + (STATIC_AT_SPEED if "speed" in pair else ""),
         "stiffness_matrix": c.result.stiffness_matrix.tolist(),
         "bearings": singles["cases"],
-        "warnings": list(c.warnings),
+        "warnings": said,
     }
     keys = list(dict.fromkeys([*doc, *(k for s in singles["cases"] for k in s)]))
     return {
         "cases": [doc],
         "units": units(keys, 1.5) | {"stiffness_matrix": MATRIX_UNITS},
         "bearing": geometry_document(c.bearing),
-        "warnings": list(c.warnings),
+        "warnings": said,
     }
 
 
