@@ -186,7 +186,7 @@ def solve(
             check_rotating(case, bearings[0], methods)
         text, found, figure = _combined(bearings, case, fmt, per_ball, show_geometry)
     else:
-        from bearingload.reports.solve import solve_report
+        from bearingload.reports.solve import printed_warnings, solve_report
         from bearingload.studies.loaded_bearing import collect_warnings
 
         refuse_tilt_radius(case)
@@ -204,7 +204,7 @@ def solve(
         text = solve_report(
             cases, fmt, per_ball=per_ball, show_geometry=show_geometry, service=service
         )
-        found = collect_warnings(cases) + _service_warnings(service)
+        found = printed_warnings(collect_warnings(cases), service)
         figure = functools.partial(_figure, "solve_figure", cases)
     if plot is not None:
         save_plot(figure, plot)  # the figure of this very solution, written whole
@@ -233,6 +233,7 @@ def _pair(
 
     from bearingload.cli.case_options import DYNAMICS_PARAMS
     from bearingload.reports.pair import pair_report
+    from bearingload.reports.solve import printed_warnings
     from bearingload.studies.bearing_pair import solve_bearing_pair
 
     if method != "exact":
@@ -269,7 +270,7 @@ def _pair(
     # each bearing's service lives as one bearing's from its own loads; the pair's from them
     service = service_lives(case, [combined_basis(c) for c in pc.bearings])
     text = pair_report(pc, fmt, per_ball=per_ball, show_geometry=show_geometry, service=service)
-    return text, list(pc.warnings) + [w for w in _service_warnings(service) if w not in pc.warnings]
+    return text, printed_warnings(pc.warnings, service)
 
 
 def _radial(
@@ -296,14 +297,14 @@ def _combined(
     """The combined-load engine on resolved bearings: (report, warnings, its figure)."""
     from bearingload.cli.cases import combined_cases
     from bearingload.reports.combined import combined_report
+    from bearingload.reports.solve import printed_warnings
 
     cases = with_speed_warnings(combined_cases(bearings, case), case.speed)
     service = service_lives(case, [combined_basis(c) for c in cases])
     text = combined_report(
         cases, fmt, per_ball=per_ball, show_geometry=show_geometry, service=service
     )
-    found = list(dict.fromkeys(w for c in cases for w in c.warnings))
-    found += [w for w in _service_warnings(service) if w not in found]
+    found = printed_warnings([w for c in cases for w in c.warnings], service)
     return text, found, functools.partial(_figure, "combined_loads_figure", cases)
 
 
@@ -344,10 +345,6 @@ def with_speed_warnings(cases: list[Any], speed: float | None) -> list[Any]:
         new = [] if c.bearing is None else speed_findings(speed, c.bearing)
         out.append(dataclasses.replace(c, warnings=(*c.warnings, *new)) if new else c)
     return out
-
-
-def _service_warnings(service: list[Any] | None) -> list[str]:
-    return list(dict.fromkeys(w for s in service or [] for w in s.warnings))
 
 
 def life_geometry(b: Any) -> dict[str, Any]:

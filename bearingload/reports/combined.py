@@ -26,6 +26,7 @@ from bearingload.reports.solve import (
     case_warnings,
     column,
     given_keys,
+    printed_warnings,
     quantity_rows,
     service_notes,
     set_note,
@@ -362,5 +363,5 @@ def _document(
         "cases": docs,
         "units": units(keys, 1.5) | {"stiffness_matrix": MATRIX_UNITS},
         "bearing": geometry_document(cases[0].bearing),
-        "warnings": list(dict.fromkeys(w for x in said for w in x)),
+        "warnings": printed_warnings([w for c in cases for w in c.warnings], service),
     }

@@ -215,6 +215,12 @@ def case_warnings(found: Sequence[Sequence[str]], service: Sequence[Any] | None)
     return [list(dict.fromkeys([*f, *w])) for f, w in zip(found, lives, strict=True)]
 
 
+def printed_warnings(found: Sequence[str], service: Sequence[Any] | None) -> list[str]:
+    """The warnings of several cases as the terminal prints them and json's document lists them:
+    ``found`` (the cases' own, labelled where there are several), then their lives', each once."""
+    return list(dict.fromkeys([*found, *(w for s in service or [] for w in s.warnings)]))
+
+
 def service_notes(service: Sequence[Any] | None) -> list[str]:
     """The notes of the service lives of several cases, each once."""
     return list(dict.fromkeys(n for s in service or [] for n in s.notes))
@@ -370,7 +376,7 @@ def _document(
     out: dict[str, Any] = {
         "cases": docs,
         "units": units(keys, exponent),
-        "warnings": list(dict.fromkeys([*collect_warnings(cases), *(w for x in said for w in x)])),
+        "warnings": printed_warnings(collect_warnings(cases), service),
     }
     if cases[0].bearing is not None:
         from bearingload.reports.bearing import geometry_document
