@@ -29,6 +29,7 @@ from bearingload.reports.solve import (
     service_notes,
     set_note,
     with_service,
+    with_service_warnings,
 )
 from bearingload.studies.combined_bearing import CombinedCase, combined_values
 
@@ -154,7 +155,8 @@ def combined_report(
     the lives of each case (:class:`bearingload.bearings.service_life.ServiceLife`)."""
     records = with_service([combined_values(c) for c in cases], service)
     if fmt == "json":
-        return render([], "json", document=_document(cases, records))
+        found = with_service_warnings(cases, service)
+        return render([], "json", document=_document(found, records))
     if fmt == "csv":
         table = _per_ball_table(cases, records) if per_ball else _case_table(records)
         return render([table], "csv")

@@ -101,7 +101,8 @@ def solve_report(
         records = with_relative_errors(records)
     exponent = float(cases[0].result.case.exponent)
     if fmt == "json":
-        return render([], "json", document=_document(cases, records, exponent))
+        found = with_service_warnings(cases, service)
+        return render([], "json", document=_document(found, records, exponent))
     if fmt == "csv":
         table = _per_ball_table(cases, records) if per_ball else _case_table(records)
         return render([table], "csv")
@@ -206,6 +207,19 @@ def with_service(
     if not service:
         return records
     return [r | s.values for r, s in zip(records, service, strict=True)]
+
+
+def with_service_warnings(cases: Sequence[Any], service: Sequence[Any] | None) -> list[Any]:
+    """The cases with the warnings of their service lives (kappa clamped, no C_u ...) added to
+    theirs, each once: the json lists what stderr prints."""
+    import dataclasses
+
+    if not service:
+        return list(cases)
+    return [
+        dataclasses.replace(c, warnings=tuple(dict.fromkeys((*c.warnings, *s.warnings))))
+        for c, s in zip(cases, service, strict=True)
+    ]
 
 
 def service_notes(service: Sequence[Any] | None) -> list[str]:
