@@ -116,6 +116,28 @@ def test_the_rule_at_both_limits():
     assert oil.endswith("grease, 21000 rpm (Koyo CAT. No. B2001RUS, 2008, p. 58)")
 
 
+def test_the_warning_shows_the_speed_above_the_limit_and_unit_rounding_is_at_it(capsys):
+    """A speed just above a limit is printed with the digits that show it above (13000.001 rpm
+    printed as 13000 read 'the speed n = 13000 rpm is above ... 13000 rpm'); a speed given in
+    another unit that is the limit to rounding (1361.356816555577 rad/s, 250 Hz, 500 pi rad/s) is
+    at it, not above."""
+    b = resolve_bearing("6205")  # grease 13 000, oil 15 000 rpm
+    (grease,) = speed_findings(13000.001, b)
+    assert grease.startswith("the speed n = 13000.001 rpm is above the limiting speed of 6205")
+    (oil,) = speed_findings(15000.00004, b)
+    assert oil.startswith("the speed n = 15000.00004 rpm is above the limiting speeds of 6205")
+    assert speed_findings(14000.0, b)[0].startswith("the speed n = 14000 rpm is above")
+    assert speed_findings(13000.0 * (1.0 + 2.0**-52), b) == []
+    assert "which it does not exceed" in speed_findings(15000.0 * (1.0 + 2.0**-52), b)[0]
+    for speed in ("1361.356816555577rad/s", "216.6666666666667Hz"):
+        code, _, err = run_entry(capsys, "solve", "6205", "-F", "2kN", "--speed", speed)
+        assert code == 0 and _warned(err) == [], speed
+    code, _, err = run_entry(
+        capsys, "solve", "6205", "-F", "2kN", "--speed", "1570.796326794897rad/s"
+    )
+    assert code == 0 and "which it does not exceed" in _warned(err)[0]
+
+
 def _warned(err: str) -> list[str]:
     return [line for line in err.splitlines() if "limiting speed" in line]
 
