@@ -54,7 +54,11 @@ class ClearanceList(click.ParamType):
 
 @click.command(context_settings=CONTEXT)
 @click.argument("name", type=click.Choice(TABLES))
-@case_options(bearing="option", defaults={"load": "1000"})
+@case_options(
+    bearing="option",
+    defaults={"load": "1000"},
+    hidden=DYNAMICS_PARAMS,
+)
 @click.option(
     "--z-max",
     type=click.IntRange(1, 1000),
