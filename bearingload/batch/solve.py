@@ -654,8 +654,8 @@ def _speed_warnings(b: Any, idx: list[int], out: dict[str, Any], speeds: Any) ->
     speed the catalogue gives for bearing ``b`` (:func:`bearingload.bearings.checks.speed_findings`)."""
     from bearingload.bearings.checks import speed_findings
 
-    if speeds is None or b.limiting_speeds is None:
-        return
+    if speeds is None or getattr(b.geometry, "open_limiting_speeds", None) is None:
+        return  # (a sealed bearing is warned above its open bearing's limits)
     warnings = out["warnings"]
     for j, i in enumerate(idx):
         found = speed_findings(speeds[i], b)
