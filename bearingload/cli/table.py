@@ -157,6 +157,10 @@ def table(
             "--z-max": (_given("z_max"), "it is one bearing, not a table over z"),
             "--method": (_given("method"), "the life comes from the exact 3-D model only"),
             "--clearance": (case.clearance is not None, "its rows are clearances (--clearances)"),
+            "--clearance-pick": (
+                "clearance_pick" in case.given,
+                "its rows are clearances (--clearances), no class to pick in",
+            ),
         }
         for option, (given, why) in refused.items():
             if given:
