@@ -319,3 +319,14 @@ def test_solve_json_lists_the_warnings_of_the_lives(cells, args):
     assert doc["cases"][0]["warnings"] == printed and doc["warnings"] == printed
     row = _json(_file([cells], "axial_load" in cells))["cases"][0]
     assert row["warnings"] == printed
+
+
+def test_table_life_json_lists_the_warnings_of_the_lives():
+    """table life's json lists the warning of the lives (kappa above 4) it prints on stderr
+    (its warnings were those of the load distribution only)."""
+    out = _run("table", "life", "-b", "6205", "-F", "1kN", "--speed", "5000", "--viscosity", "68",
+               "--format", "json")  # fmt: skip
+    assert out.exit_code == 0, out.output
+    printed = [w.removeprefix("Warning: ") for w in out.stderr.splitlines()]
+    assert any("kappa" in w for w in printed)
+    assert json.loads(out.stdout)["warnings"] == printed
