@@ -96,7 +96,9 @@ def test_no_limit_where_the_catalogue_gives_none(designation):
     """NSK's 40° rows and the GOST rows print none; a seal lowers the open bearing's limits;
     the roller rows have none; nor has a ring given by hand."""
     assert resolve_bearing(designation).limiting_speeds is None
-    assert speed_findings(1e6, resolve_bearing(designation)) == []
+    sealed = designation in ("6205-2RS1", "6205 LLU")  # warned above the open 6205's limit
+    assert len(speed_findings(1e6, resolve_bearing(designation))) == sealed
+    assert speed_findings(13000.0, resolve_bearing(designation)) == []
     assert (
         resolve_bearing(balls=9, ball_diameter=7.9375, pitch_diameter=38.5).limiting_speeds is None
     )
@@ -114,6 +116,28 @@ def test_the_rule_at_both_limits():
     (oil,) = speed_findings(28000.5, b)
     assert "above the limiting speeds of 7205C with oil lubrication, 28000 rpm, and with " in oil
     assert oil.endswith("grease, 21000 rpm (Koyo CAT. No. B2001RUS, 2008, p. 58)")
+
+
+def test_the_warning_shows_the_speed_above_the_limit_and_unit_rounding_is_at_it(capsys):
+    """A speed just above a limit is printed with the digits that show it above (13000.001 rpm
+    printed as 13000 read 'the speed n = 13000 rpm is above ... 13000 rpm'); a speed given in
+    another unit that is the limit to rounding (1361.356816555577 rad/s, 250 Hz, 500 pi rad/s) is
+    at it, not above."""
+    b = resolve_bearing("6205")  # grease 13 000, oil 15 000 rpm
+    (grease,) = speed_findings(13000.001, b)
+    assert grease.startswith("the speed n = 13000.001 rpm is above the limiting speed of 6205")
+    (oil,) = speed_findings(15000.00004, b)
+    assert oil.startswith("the speed n = 15000.00004 rpm is above the limiting speeds of 6205")
+    assert speed_findings(14000.0, b)[0].startswith("the speed n = 14000 rpm is above")
+    assert speed_findings(13000.0 * (1.0 + 2.0**-52), b) == []
+    assert "which it does not exceed" in speed_findings(15000.0 * (1.0 + 2.0**-52), b)[0]
+    for speed in ("1361.356816555577rad/s", "216.6666666666667Hz"):
+        code, _, err = run_entry(capsys, "solve", "6205", "-F", "2kN", "--speed", speed)
+        assert code == 0 and _warned(err) == [], speed
+    code, _, err = run_entry(
+        capsys, "solve", "6205", "-F", "2kN", "--speed", "1570.796326794897rad/s"
+    )
+    assert code == 0 and "which it does not exceed" in _warned(err)[0]
 
 
 def _warned(err: str) -> list[str]:
@@ -153,12 +177,47 @@ def test_solve_warns_for_an_angular_contact_bearing_and_not_for_one_without_data
     (line,) = _warned(err)
     assert "limiting speed of 7205C with grease lubrication, 21000 rpm" in line
     assert json.loads(out)["cases"][0]["warnings"] == [line.removeprefix("Warning: ")]
-    for args in (["7205B", "-A", "1kN"], ["205"], ["6205-2RS"],
+    for args in (["7205B", "-A", "1kN"], ["205"],
                  ["-z", "9", "--ball-diameter", "7.9375", "--pitch-diameter", "38.5"]):  # fmt: skip
         code, _, err = run_entry(capsys, "solve", *args, "-F", "2kN", "--speed", "1e5",
                                  "--quasi-static" if "-A" in args else "--reliability=90")  # fmt: skip
         assert code == 0, err
         assert _warned(err) == [], args
+
+
+def test_a_sealed_bearing_above_its_open_bearing_s_limit_is_warned(capsys):
+    """A seal lowers the open bearing's limits (Koyo p. 20), so a sealed 6205-2RS above the open
+    6205's grease figure (13 000 rpm) is above its own limit too: one warning, which says so
+    (there was none, even at 1e5 rpm); at or below it, where the sealed limit is not known, none.
+    Shields keep the open bearing's limits and warning."""
+    for args in (["6205-2RS", "-F", "2kN"], ["6205-2RS1/C3", "-F", "2kN", "-A", "500N",
+                 "--quasi-static"], ["6205 LLU", "-F", "2kN"]):  # fmt: skip
+        code, out, err = run_entry(capsys, "solve", *args, "--speed", "13001", "--format", "json")
+        assert code == 0, err
+        (line,) = _warned(err)
+        name = args[0]
+        assert line == (
+            f"Warning: the speed n = 13001 rpm is above the limiting speed of {name}: the open "
+            "6205's with grease lubrication is 13000 rpm (with oil 15000 rpm), and its seal "
+            "lowers it (Koyo CAT. No. B2001RUS, 2008, p. 9; sealed bearings p. 20)"
+        ), args
+        assert line.removeprefix("Warning: ") in json.loads(out)["cases"][0]["warnings"]
+        code, _, err = run_entry(capsys, "solve", *args, "--speed", "13000")
+        assert code == 0 and _warned(err) == [], args
+    code, _, err = run_entry(capsys, "sweep", "6205-2RS", "-F", "2kN", "--speed", "1e5",
+                             "--steps", "3")  # fmt: skip
+    assert code == 0 and len(_warned(err)) == 1
+    rows = "bearing,load,speed\n6205-2RS,2kN,13001\n6205-2RS,2kN,13000\n"
+    from click.testing import CliRunner
+
+    from bearingload.cli import main
+
+    found = CliRunner().invoke(main, ["batch", "-", "--format", "json"], input=rows)
+    doc = json.loads(found.stdout)
+    assert [len(c["warnings"]) for c in doc["cases"]] == [1, 0]
+    assert "above the limiting speed of 6205-2RS: the open 6205's" in doc["cases"][0]["warnings"][0]
+    code, _, err = run_entry(capsys, "solve", "6205ZZ", "-F", "2kN", "--speed", "13001")
+    assert "above the limiting speed of 6205 with grease lubrication" in _warned(err)[0]
 
 
 def test_batch_warns_on_each_row_above_its_limit(tmp_path):

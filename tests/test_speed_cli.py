@@ -80,3 +80,30 @@ def test_per_ball_csv_carries_the_inner_and_outer_contacts(capsys):
         got = [float(r[head.index(key)]) for r in rows[1:]]
         assert got == case[key], key
     assert case["ball_loads_outer"] != case["ball_loads_inner"]
+
+
+def test_help_of_speed_says_which_command_solves_the_ball_dynamics(capsys):
+    """--speed's help (one text for solve, sweep and table) says that solve includes the ball
+    dynamics and sweep and table solve the static model (it said 'a combined or angular-contact
+    solve includes' them in all three); table, which refuses --quasi-static and --ball-density,
+    does not list them (sweep already did not)."""
+
+    def options(command: str) -> dict[str, str]:
+        code, out, _ = run_entry(capsys, *command.split(), "--help")
+        assert code == 0
+        found: dict[str, str] = {}
+        for line in out.split("Options:", 1)[1].splitlines():
+            if line.startswith("  -"):  # an option's first line; its text goes on indented
+                name = next(w for w in line.split() if w.startswith("--")).rstrip(",")
+                found[name] = line
+            elif found:
+                found[name] += ("" if found[name].endswith("-") else " ") + line.strip()
+        return found
+
+    solve = options("solve")
+    assert "--quasi-static" in solve and "--ball-density" in solve
+    for command in ("solve", "sweep", "table k"):
+        found = options(command)
+        assert "'sweep' and 'table' solve the static model" in found["--speed"], command
+        if command != "solve":
+            assert "--quasi-static" not in found and "--ball-density" not in found, command

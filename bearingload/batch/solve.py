@@ -268,6 +268,8 @@ class BatchSolver:
                 if c_r is not None and not c_r > 0:
                     raise InputError("dynamic_rating", "must be greater than 0 N")
                 hit = resolve_bearing(v.get("bearing"), **args)
+                if "clearance_pick" in v and hit.clearance_class is None:  # as solve refuses it
+                    raise InputError("clearance_pick", _no_class_to_pick(hit))
                 hit = hit if c_r is None else hit.with_dynamic_rating(c_r)
                 hit = hit if c_0 is None else hit.with_static_rating(c_0)
             except BearingloadError as exc:
@@ -277,6 +279,17 @@ class BatchSolver:
         if isinstance(hit, BearingloadError):
             raise hit
         return hit
+
+
+def _no_class_to_pick(b: Any) -> str:
+    """Why a row's ``clearance_pick`` is refused: bearing ``b`` has no clearance class (solve's
+    reason for --clearance-pick, :func:`bearingload.cli.cases.resolve_bearings`)."""
+    why = ("an angular-contact bearing has no radial clearance" if b.contact_angle is not None
+           else f"this row's clearance is one value, no class (G_r = {b.clearance * 1000:g} µm)")  # fmt: skip
+    return (
+        "it picks the min, mean or max of a clearance class (a clearance cell CN, C3 ... of a "
+        f"catalogue bearing); {why}, so it would be ignored"
+    )
 
 
 def with_oil_viscosity(cols: dict[str, list[Any]], n: int, bad: dict[int, str]) -> None:
@@ -654,8 +667,8 @@ def _speed_warnings(b: Any, idx: list[int], out: dict[str, Any], speeds: Any) ->
     speed the catalogue gives for bearing ``b`` (:func:`bearingload.bearings.checks.speed_findings`)."""
     from bearingload.bearings.checks import speed_findings
 
-    if speeds is None or b.limiting_speeds is None:
-        return
+    if speeds is None or getattr(b.geometry, "open_limiting_speeds", None) is None:
+        return  # (a sealed bearing is warned above its open bearing's limits)
     warnings = out["warnings"]
     for j, i in enumerate(idx):
         found = speed_findings(speeds[i], b)

@@ -171,8 +171,16 @@ class BearingGeometry:
         """The limiting speeds of this bearing as designated, or None: none read, or a seal
         marked in the designation (the catalogue holds the open bearing's, which a seal lowers:
         :func:`sealed`)."""
+        if sealed(self.parsed.suffixes):
+            return None
+        return self.open_limiting_speeds
+
+    @property
+    def open_limiting_speeds(self) -> LimitingSpeeds | None:
+        """The limiting speeds of the row, those of the open bearing whatever seal the
+        designation marks (a sealed bearing's are lower: :func:`sealed`), or None: none read."""
         grease, oil = self.limiting_speed_grease, self.limiting_speed_oil
-        if grease is None or oil is None or sealed(self.parsed.suffixes):
+        if grease is None or oil is None:
             return None
         return LimitingSpeeds(grease, oil, self.limiting_speed_source)
 

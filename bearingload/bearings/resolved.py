@@ -115,7 +115,8 @@ class ResolvedBearing:
     @property
     def limiting_speeds(self) -> LimitingSpeeds | None:
         """The limiting speeds (grease, oil [r/min], source) of the catalogue row, None where
-        the catalogue gives none (a ring given by hand, a row without them, a sealed bearing):
+        the catalogue gives none (a ring given by hand, a row without them, a sealed bearing:
+        above its open bearing's ``geometry.open_limiting_speeds`` it is past its own limit):
         :attr:`bearingload.bearings.catalog.BearingGeometry.limiting_speeds`."""
         return getattr(self.geometry, "limiting_speeds", None)
 

@@ -213,7 +213,7 @@ def _speed_source(grease: float | None, source: str, is_sealed: bool) -> str:
         return "none read for this row (solve --speed gives no limiting-speed warning)"
     if is_sealed:
         return (f"{source}; those of the open bearing: a seal lowers them, so solve --speed "
-                "gives no limiting-speed warning for this sealed bearing")  # fmt: skip
+                "warns above them, where this sealed bearing's own limit is passed too")  # fmt: skip
     return source
 
 
