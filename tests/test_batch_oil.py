@@ -294,3 +294,39 @@ def test_parse_temperature():
         with pytest.raises(InputError, match="give the operating temperature") as exc:
             parse_temperature(text)
         assert hint in str(exc.value)
+
+
+@pytest.mark.parametrize(
+    "cells, args",
+    [
+        ({"bearing": "6205", "load": "1kN", "speed": "5000", "viscosity": "68"},
+         ["6205", "-F", "1kN", "--speed", "5000", "--viscosity", "68"]),
+        ({"bearing": "6205", "load": "1kN", "axial_load": "200N", "speed": "5000",
+          "viscosity_40": "68", "viscosity_index": "120", "temperature": "40"},
+         ["6205", "-F", "1kN", "-A", "200N", "--speed", "5000", "--viscosity-40", "68",
+          "--viscosity-index", "120", "--temperature", "40"]),
+    ],
+)  # fmt: skip
+def test_solve_json_lists_the_warnings_of_the_lives(cells, args):
+    """A warning of the lives (kappa above 4) is printed by solve on stderr, listed under the
+    case's and the document's ``warnings`` of solve's json, and under the batch row's: the
+    json of solve carried only the warnings of the load distribution."""
+    solved = _run("solve", *args, "--format", "json")
+    assert solved.exit_code == 0, solved.output
+    printed = [w.removeprefix("Warning: ") for w in solved.stderr.splitlines()]
+    assert any("kappa" in w for w in printed)
+    doc = json.loads(solved.stdout)
+    assert doc["cases"][0]["warnings"] == printed and doc["warnings"] == printed
+    row = _json(_file([cells], "axial_load" in cells))["cases"][0]
+    assert row["warnings"] == printed
+
+
+def test_table_life_json_lists_the_warnings_of_the_lives():
+    """table life's json lists the warning of the lives (kappa above 4) it prints on stderr
+    (its warnings were those of the load distribution only)."""
+    out = _run("table", "life", "-b", "6205", "-F", "1kN", "--speed", "5000", "--viscosity", "68",
+               "--format", "json")  # fmt: skip
+    assert out.exit_code == 0, out.output
+    printed = [w.removeprefix("Warning: ") for w in out.stderr.splitlines()]
+    assert any("kappa" in w for w in printed)
+    assert json.loads(out.stdout)["warnings"] == printed

@@ -81,7 +81,7 @@ def test_csv_is_plain() -> None:
     assert raw.endswith(b"\n")
     assert raw.splitlines()[0] == (
         b"designation,standard,d,D,B,ball_diameter,balls,pitch_diameter,C,C0,f0,f_i,f_o,"
-        b"source,notes"
+        b"source,notes,limiting_speed_grease,limiting_speed_oil,limiting_speed_source"
     )
 
 

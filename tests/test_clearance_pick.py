@@ -47,3 +47,47 @@ def test_a_clearance_suffix_on_an_angular_bearing_is_refused(capsys, designation
 def test_maker_suffixes_are_still_read_past(capsys, designation):
     code, _, err = run_entry(capsys, "solve", designation, "-F", "1kN", "-A", "1kN")
     assert code == 0, err
+
+
+def test_table_life_refuses_a_pick_its_rows_ignore(capsys):
+    """table life runs over its own clearances (--clearances): --clearance-pick printed the
+    same table as without it."""
+    code, out, err = run_entry(capsys, "table", "life", "-b", "6205", "-F", "1kN",
+                               "--clearance-pick", "max")  # fmt: skip
+    assert code == 2 and out == "", err
+    assert err == (
+        "Error: --clearance-pick cannot be used with table life: its rows are clearances "
+        "(--clearances), no class to pick in\n"
+    )
+
+
+def test_batch_refuses_a_pick_without_a_class_as_solve_does(capsys):
+    """A batch row whose clearance_pick has no class to pick in (a clearance given as a length,
+    an angular-contact bearing) is skipped with solve's reason: it was silently ignored (the
+    row written, clearance_pick blank); a row with a class still picks."""
+    import json
+
+    from click.testing import CliRunner
+
+    from bearingload.cli import main
+
+    rows = ("bearing,load,axial_load,clearance,clearance_pick\n6205,1kN,,10um,max\n"
+            "7205B,1kN,0,,max\n6205,1kN,,C3,max\n6205,1kN,200N,10um,min\n")  # fmt: skip
+    found = CliRunner().invoke(main, ["batch", "-", "--format", "json"], input=rows)
+    code, out, err = found.exit_code, found.stdout, found.stderr
+    assert code == 1
+    doc = json.loads(out)
+    assert [c["row"] for c in doc["cases"]] == [4]
+    assert doc["cases"][0]["clearance"] == pytest.approx(0.028)
+    skipped = [line for line in err.splitlines() if line.startswith("Warning: row")]
+    assert skipped == [
+        "Warning: row 2: clearance_pick: it picks the min, mean or max of a clearance class (a "
+        "clearance cell CN, C3 ... of a catalogue bearing); this row's clearance is one value, no "
+        "class (G_r = 10 µm), so it would be ignored",
+        "Warning: row 3: clearance_pick: it picks the min, mean or max of a clearance class (a "
+        "clearance cell CN, C3 ... of a catalogue bearing); an angular-contact bearing has no "
+        "radial clearance, so it would be ignored",
+        "Warning: row 5: clearance_pick: it picks the min, mean or max of a clearance class (a "
+        "clearance cell CN, C3 ... of a catalogue bearing); this row's clearance is one value, no "
+        "class (G_r = 10 µm), so it would be ignored",
+    ]

@@ -262,6 +262,17 @@ def test_refusals_name_the_speed():
         solve_high_speed(9, 1000.0, speed=1000.0, ball_density=7850.0, **DEEP)
 
 
+def test_the_speed_limit_refusal_gives_the_bearing_s_largest_speed():
+    """Just above n d_m = 2e6 mm/min the Error names the speed given and the largest this d_m
+    allows, in digits that tell them apart (it printed 'n = 51948.1 rpm', the limit rounded)."""
+    limit = MAX_SPEED_PITCH / 38.5  # 51948.05 rpm
+    solve_high_speed(9, 1000.0, 300.0, speed=limit, **DEEP)  # at the limit: solved
+    with pytest.raises(InputError) as err:
+        solve_high_speed(9, 1000.0, 300.0, speed=[1000.0, 51948.06], **DEEP)
+    assert "n = 51948.06 rpm with d_m = 38.5 mm" in str(err.value)
+    assert "at most 51948.05195 rpm" in str(err.value)
+
+
 def _solve_json(*args):
     import json
 

@@ -128,3 +128,23 @@ def test_postscript_plot_prints_nothing_on_the_terminal(tmp_path, extension):
     out = run_process("solve", *CASE, "--plot", str(path))
     assert out.returncode == 0 and out.stderr == ""
     assert path.read_bytes().startswith(b"%!PS")
+
+
+def test_solve_plot_at_speed_names_the_speed_and_the_inner_contacts(monkeypatch, tmp_path):
+    """solve --speed --plot draws each ball's inner contact (load and angle, as the ball table
+    shows them): its title says so, with the speed; it read as the static figure (the outer
+    loads, larger by the centrifugal force, are not those drawn)."""
+    figures = drawn(monkeypatch)
+    out = invoke("solve", "7205B", "-F", "1kN", "-A", "500N", "--speed", "20000", "--format",
+                 "json", "--plot", str(tmp_path / "p.png"))  # fmt: skip
+    assert out.exit_code == 0, out.output
+    (fig,) = figures
+    title = fig.get_axes()[0].get_title().replace("\n", " ")
+    assert "n = 20000 rpm, ball dynamics: the inner contacts" in title, title
+    heights = [p.get_height() for p in fig.get_axes()[0].patches]
+    case = json.loads(out.stdout)["cases"][0]
+    assert heights == pytest.approx(case["ball_loads_inner"], rel=1e-9, abs=1e-9)
+    figures.clear()
+    invoke("solve", "7205B", "-F", "1kN", "-A", "500N", "--speed", "20000", "--quasi-static",
+           "--plot", str(tmp_path / "q.png"))  # fmt: skip
+    assert "ball dynamics" not in figures[0].get_axes()[0].get_title().replace("\n", " ")

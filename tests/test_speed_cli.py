@@ -59,3 +59,51 @@ def test_outer_contact_pressure_is_that_of_the_outer_loads(capsys):
     assert abs(case["p_max_inner"] - p_i) <= 1e-8 * p_i
     code, out, _ = run_entry(capsys, "solve", "7205B", "-F", "0", "-A", "1kN", "--format", "json")
     assert case["p_max_outer"] > json.loads(out)["cases"][0]["p_max_outer"]
+
+
+def test_per_ball_csv_carries_the_inner_and_outer_contacts(capsys):
+    """--per-ball csv at speed has each ball's inner and outer contact angle and load, the json
+    arrays of the same names (they were in the json only); one rectangular table."""
+    import csv
+    import io
+
+    args = ("solve", "7205B", "-F", "1kN", "-A", "1kN", "--speed", "20000")
+    code, text, err = run_entry(capsys, *args, "--per-ball", "--format", "csv")
+    assert code == 0, err
+    rows = list(csv.reader(io.StringIO(text)))
+    assert len({len(r) for r in rows}) == 1 and len(rows) == 13
+    head = [h.split(" [")[0] for h in rows[0]]
+    code, doc, err = run_entry(capsys, *args, "--format", "json")
+    case = json.loads(doc)["cases"][0]
+    for key in ("contact_angles_inner", "contact_angles_outer", "ball_loads_inner",
+                "ball_loads_outer"):  # fmt: skip
+        got = [float(r[head.index(key)]) for r in rows[1:]]
+        assert got == case[key], key
+    assert case["ball_loads_outer"] != case["ball_loads_inner"]
+
+
+def test_help_of_speed_says_which_command_solves_the_ball_dynamics(capsys):
+    """--speed's help (one text for solve, sweep and table) says that solve includes the ball
+    dynamics and sweep and table solve the static model (it said 'a combined or angular-contact
+    solve includes' them in all three); table, which refuses --quasi-static and --ball-density,
+    does not list them (sweep already did not)."""
+
+    def options(command: str) -> dict[str, str]:
+        code, out, _ = run_entry(capsys, *command.split(), "--help")
+        assert code == 0
+        found: dict[str, str] = {}
+        for line in out.split("Options:", 1)[1].splitlines():
+            if line.startswith("  -"):  # an option's first line; its text goes on indented
+                name = next(w for w in line.split() if w.startswith("--")).rstrip(",")
+                found[name] = line
+            elif found:
+                found[name] += ("" if found[name].endswith("-") else " ") + line.strip()
+        return found
+
+    solve = options("solve")
+    assert "--quasi-static" in solve and "--ball-density" in solve
+    for command in ("solve", "sweep", "table k"):
+        found = options(command)
+        assert "'sweep' and 'table' solve the static model" in found["--speed"], command
+        if command != "solve":
+            assert "--quasi-static" not in found and "--ball-density" not in found, command

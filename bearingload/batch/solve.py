@@ -293,6 +293,8 @@ class BatchSolver:
                 if c_r is not None and not c_r > 0:
                     raise InputError("dynamic_rating", "must be greater than 0 N")
                 hit = resolve_bearing(v.get("bearing"), **args)
+                if "clearance_pick" in v and hit.clearance_class is None:  # as solve refuses it
+                    raise InputError("clearance_pick", _no_class_to_pick(hit))
                 hit = hit if c_r is None else hit.with_dynamic_rating(c_r)
                 hit = hit if c_0 is None else hit.with_static_rating(c_0)
             except BearingloadError as exc:
@@ -302,6 +304,17 @@ class BatchSolver:
         if isinstance(hit, BearingloadError):
             raise hit
         return hit
+
+
+def _no_class_to_pick(b: Any) -> str:
+    """Why a row's ``clearance_pick`` is refused: bearing ``b`` has no clearance class (solve's
+    reason for --clearance-pick, :func:`bearingload.cli.cases.resolve_bearings`)."""
+    why = ("an angular-contact bearing has no radial clearance" if b.contact_angle is not None
+           else f"this row's clearance is one value, no class (G_r = {b.clearance * 1000:g} µm)")  # fmt: skip
+    return (
+        "it picks the min, mean or max of a clearance class (a clearance cell CN, C3 ... of a "
+        f"catalogue bearing); {why}, so it would be ignored"
+    )
 
 
 def with_oil_viscosity(cols: dict[str, list[Any]], n: int, bad: dict[int, str]) -> None:
@@ -564,6 +577,7 @@ def with_service(parts: list[Part], cols: dict[str, list[Any]], bad: dict[int, s
         b = out.pop("_bearing", None)
         if b is None:
             continue
+        _speed_warnings(b, idx, out, cols.get("speed"))
         same = (b.kind, b.C, b.C0, b.pitch_diameter, b.ball_diameter, b.f_i, b.f_o, b.modulus,
                 b.poisson, b.roller_length)  # fmt: skip
         bases[same] = b
@@ -677,6 +691,21 @@ def _service_warnings(
         found = (clamp_kappa(k)[1] if k == k and not low <= k <= high else []) + common
         if found:
             warnings = parts[p][1]["warnings"]
+            row = list(warnings[j])
+            warnings[j] = tuple(row + [w for w in found if w not in row])
+
+
+def _speed_warnings(b: Any, idx: list[int], out: dict[str, Any], speeds: Any) -> None:
+    """Add to each row of a part the warning solve gives on its speed [r/min] above the limiting
+    speed the catalogue gives for bearing ``b`` (:func:`bearingload.bearings.checks.speed_findings`)."""
+    from bearingload.bearings.checks import speed_findings
+
+    if speeds is None or getattr(b.geometry, "open_limiting_speeds", None) is None:
+        return  # (a sealed bearing is warned above its open bearing's limits)
+    warnings = out["warnings"]
+    for j, i in enumerate(idx):
+        found = speed_findings(speeds[i], b)
+        if found:
             row = list(warnings[j])
             warnings[j] = tuple(row + [w for w in found if w not in row])
 

@@ -182,6 +182,11 @@ class AngularRow:
     confidence: str
     source: str
     notes: str
+    #: Limiting speeds with grease and oil lubrication as the maker prints them (None: not
+    #: read), and their source. [r/min]
+    limiting_speed_grease: float | None = None
+    limiting_speed_oil: float | None = None
+    limiting_speed_source: str = ""
 
 
 @lru_cache(maxsize=1)
@@ -207,6 +212,9 @@ def angular_rows() -> tuple[AngularRow, ...]:
             r["confidence"],
             r["source"],
             r["notes"],
+            float(r["limiting_speed_grease"]) if r["limiting_speed_grease"] else None,
+            float(r["limiting_speed_oil"]) if r["limiting_speed_oil"] else None,
+            r["limiting_speed_source"],
         )  # fmt: skip
         for r in read_rows("angular_contact.csv")
     )

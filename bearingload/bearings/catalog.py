@@ -54,6 +54,7 @@ from __future__ import annotations
 import dataclasses
 import functools
 import math
+import re
 from collections.abc import Container
 from dataclasses import dataclass
 
@@ -127,6 +128,11 @@ class BearingGeometry:
     only_maker : bool
         True when the ball set is that of the one maker who gives a set for this designation
         (``6408``: NTN), used without ``maker=`` because there is nothing to choose between.
+    limiting_speed_grease, limiting_speed_oil : float or None
+        The limiting speeds a maker prints for this designation, with grease and with oil
+        lubrication; None where none was read. [r/min]
+    limiting_speed_source : str
+        Where they come from (empty where none was read).
     """
 
     designation: str
@@ -151,11 +157,32 @@ class BearingGeometry:
     confidence: str | None = None
     makers: tuple[str, ...] = ()
     only_maker: bool = False
+    limiting_speed_grease: float | None = None
+    limiting_speed_oil: float | None = None
+    limiting_speed_source: str = ""
 
     @property
     def has_geometry(self) -> bool:
         """True when z, D_w and d_m are all known."""
         return None not in (self.balls, self.ball_diameter, self.pitch_diameter)
+
+    @property
+    def limiting_speeds(self) -> LimitingSpeeds | None:
+        """The limiting speeds of this bearing as designated, or None: none read, or a seal
+        marked in the designation (the catalogue holds the open bearing's, which a seal lowers:
+        :func:`sealed`)."""
+        if sealed(self.parsed.suffixes):
+            return None
+        return self.open_limiting_speeds
+
+    @property
+    def open_limiting_speeds(self) -> LimitingSpeeds | None:
+        """The limiting speeds of the row, those of the open bearing whatever seal the
+        designation marks (a sealed bearing's are lower: :func:`sealed`), or None: none read."""
+        grease, oil = self.limiting_speed_grease, self.limiting_speed_oil
+        if grease is None or oil is None:
+            return None
+        return LimitingSpeeds(grease, oil, self.limiting_speed_source)
 
     @property
     def series(self) -> str:
@@ -166,6 +193,32 @@ class BearingGeometry:
     def catalogue_series(self) -> str:
         """Series of the catalogue row (``"618"`` for a row looked up as ``6806``)."""
         return {"68": "618", "69": "619"}.get(self.parsed.series, self.parsed.series)
+
+
+@dataclass(frozen=True)
+class LimitingSpeeds:
+    """The limiting speeds a maker prints for one bearing: ``grease`` and ``oil`` lubrication
+    [r/min] (oil the higher), and their ``source``."""
+
+    grease: float
+    oil: float
+    source: str
+
+
+#: Suffixes of a sealed bearing (contact or non-contact seals: RS, 2RS, 2RS1, RSR, RZ, 2RZ, RU,
+#: RD, LLU, LLB, DDU, VV ...); shields (Z, ZZ, 2Z) are not seals. Koyo's table of sealed deep
+#: groove bearings (CAT. No. B2001RUS p. 20) prints the open bearing's grease limit for ZZ and
+#: lower ones for its seals, so the open bearing's limits are not those of a sealed one.
+_SEAL = re.compile(r"^(2?R[SDUZ]\w*|LL\w*|DD\w*|VV\w*|2?RSR\w*)$")
+
+
+def sealed(suffixes: tuple[str, ...]) -> bool:
+    """True when a designation's suffixes mark a seal (:data:`_SEAL`).
+
+    >>> sealed(("2RS1", "C3")), sealed(("ZZ",)), sealed(("C3",))
+    (True, False, False)
+    """
+    return any(_SEAL.match(s.upper()) for s in suffixes)
 
 
 def _float(text: str) -> float | None:
@@ -274,6 +327,9 @@ def _csv_row(rec: dict[str, str]) -> BearingGeometry:
         maker="GOST" if gost else None,
         method=("read" if "Kuzmenko" in rec["source"] else "D_w read, z derived") if gost else None,
         confidence="published" if gost else None,
+        limiting_speed_grease=_float(rec["limiting_speed_grease"]),
+        limiting_speed_oil=_float(rec["limiting_speed_oil"]),
+        limiting_speed_source=rec["limiting_speed_source"],
     )
 
 
@@ -400,6 +456,9 @@ def variant(designation: str, maker: str) -> BearingGeometry:
             parsed=row.parsed,
             makers=row.makers,
             source=f"GOST ball set ({g.method}) of GOST {g.designation}: {g.source}",
+            limiting_speed_grease=row.limiting_speed_grease,
+            limiting_speed_oil=row.limiting_speed_oil,
+            limiting_speed_source=row.limiting_speed_source,
         )
     for bs in ball_sets():
         if bs.designation == row.designation and bs.maker == key:

@@ -22,6 +22,14 @@
   not more than the widest clearance class spans). Positive clearances below C2 min (0 to 3 µm
   at these bores) are not flagged.
 
+:func:`speed_findings` (solve, sweep and batch with a speed) adds one more: the **speed above
+the limiting speed** the catalogue gives for the bearing (a maker's printed figures, with grease
+and with oil lubrication; oil the higher): above the oil figure it is above both; between the
+two, above the grease figure only (no warning for oil lubrication then, which the sentence
+says). No warning where the catalogue gives no limiting speed (a ring given by hand, a row
+without them). A sealed bearing (a seal lowers the open bearing's limits; its own are not read)
+is warned above the open bearing's grease figure, where it is above its own limit too.
+
 Every threshold is a module constant; the CLI prints each finding as a ``Warning: ...`` line on
 stderr and JSON carries them as ``warnings``.
 
@@ -34,6 +42,7 @@ stderr and JSON carries them as ``warnings``.
 
 from __future__ import annotations
 
+import math
 from typing import TYPE_CHECKING, Any
 
 import numpy as np
@@ -194,6 +203,79 @@ def static_safety(c0: float | None, p0: float) -> float | None:
     (4.0, None, None)
     """
     return c0 / p0 if c0 and p0 > 0 else None
+
+
+def speed_findings(speed: float | None, bearing: ResolvedBearing) -> list[str]:
+    """The warning on a shaft speed above the bearing's limiting speed; empty when the speed
+    is not above the grease figure, or none is given or known.
+
+    Parameters
+    ----------
+    speed : float or None
+        Shaft speed n of the rotating ring. [r/min]
+    bearing : ResolvedBearing
+        Its :attr:`~bearingload.bearings.resolved.ResolvedBearing.limiting_speeds` (grease,
+        oil [r/min] and their source) are read.
+
+    Returns
+    -------
+    list of str
+        Empty, or one sentence naming the speed, the limit passed and the source.
+    """
+    limits = bearing.limiting_speeds
+    if speed is not None and limits is None:
+        return _sealed_findings(speed, bearing)
+    if speed is None or limits is None or not _above(speed, limits.grease):
+        return []
+    name = bearing.geometry.designation if bearing.geometry is not None else "the bearing"
+    cite = limits.source.split(" (", 1)[0]
+    if _above(speed, limits.oil):
+        return [
+            f"the speed n = {_speed_text(speed, limits.oil)} rpm is above the limiting speeds of "
+            f"{name} with oil lubrication, {limits.oil:.6g} rpm, and with grease, "
+            f"{limits.grease:.6g} rpm ({cite})"
+        ]
+    return [
+        f"the speed n = {_speed_text(speed, limits.grease)} rpm is above the limiting speed of "
+        f"{name} with grease lubrication, {limits.grease:.6g} rpm (with oil lubrication "
+        f"{limits.oil:.6g} rpm, which it does not exceed; {cite})"
+    ]
+
+
+def _sealed_findings(speed: float, bearing: ResolvedBearing) -> list[str]:
+    """A sealed bearing (its limits not read; a seal lowers the open bearing's, Koyo CAT. No.
+    B2001RUS p. 20) above the open bearing's grease figure: above its own limit too."""
+    from bearingload.bearings.catalog import sealed
+
+    geo = bearing.geometry
+    limits = getattr(geo, "open_limiting_speeds", None)
+    if geo is None or limits is None or not sealed(geo.parsed.suffixes):
+        return []
+    if not _above(speed, limits.grease):
+        return []
+    cite = limits.source.split(" (", 1)[0]
+    return [
+        f"the speed n = {_speed_text(speed, limits.grease)} rpm is above the limiting speed of "
+        f"{geo.parsed.text}: the open {geo.designation}'s with grease lubrication is "
+        f"{limits.grease:.6g} rpm (with oil {limits.oil:.6g} rpm), and its seal lowers it "
+        f"({cite}; sealed bearings p. 20)"
+    ]
+
+
+def _above(speed: float, limit: float) -> bool:
+    """``speed`` above ``limit`` [r/min] by more than the rounding of a unit conversion (a limit
+    given in rad/s or Hz reads a few ulp off the printed figure: it is at the limit)."""
+    return speed > limit and not math.isclose(speed, limit, rel_tol=1e-12)
+
+
+def _speed_text(speed: float, limit: float) -> str:
+    """The speed [r/min] with 6 significant digits, more where 6 print it as the limit it
+    exceeds (13000.001 rpm above 13000 rpm)."""
+    for digits in range(6, 13):
+        text = f"{speed:.{digits}g}"
+        if float(text) > limit:
+            return text
+    return f"{speed:.12g}"
 
 
 def clearance_findings(bearing: ResolvedBearing) -> list[str]:

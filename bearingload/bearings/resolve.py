@@ -473,6 +473,8 @@ def _angular(
         row.designation, parsed.standard, row.d, row.D, row.B, dw, z, dm, row.C, row.C0, fi, fo,
         row.source, row.notes,
         name, f0=row.f0, overrides=overrides, maker=row.maker, method=row.method, confidence=row.confidence,
+        limiting_speed_grease=row.limiting_speed_grease, limiting_speed_oil=row.limiting_speed_oil,
+        limiting_speed_source=row.limiting_speed_source,
     )  # fmt: skip
     src = f"catalogue row {row.designation} ({row.maker}, {row.contact_angle:g}°): {row.source}"
     what = {k: "given" if k in overrides else f"catalogue ({row.method})" for k in set_}

@@ -11,7 +11,7 @@ import dataclasses
 from dataclasses import dataclass
 from typing import Any
 
-from bearingload.bearings.catalog import BearingGeometry
+from bearingload.bearings.catalog import BearingGeometry, LimitingSpeeds
 from bearingload.bearings.clearance import _NEEDS_BORE, PICKS, ClearanceSpec, clearance_range
 from bearingload.constants import STEEL_MODULUS, STEEL_POISSON
 from bearingload.errors import InputError
@@ -111,6 +111,14 @@ class ResolvedBearing:
     def has_geometry(self) -> bool:
         """True when D_w, d_m, f_i, f_o are known (Hertz pressures can be computed)."""
         return None not in (self.ball_diameter, self.pitch_diameter, self.f_i, self.f_o)
+
+    @property
+    def limiting_speeds(self) -> LimitingSpeeds | None:
+        """The limiting speeds (grease, oil [r/min], source) of the catalogue row, None where
+        the catalogue gives none (a ring given by hand, a row without them, a sealed bearing:
+        above its open bearing's ``geometry.open_limiting_speeds`` it is past its own limit):
+        :attr:`bearingload.bearings.catalog.BearingGeometry.limiting_speeds`."""
+        return getattr(self.geometry, "limiting_speeds", None)
 
     def with_clearance(self, pick: str) -> ResolvedBearing:
         """The same bearing at the ``min``, ``mean`` or ``max`` of its clearance class.

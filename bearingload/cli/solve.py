@@ -104,7 +104,8 @@ def solve(
     At --speed a ball bearing is solved with each ball's centrifugal force and gyroscopic
     moment (docs/speed.md): by the combined engine, at F_a = 0 without a load option, the exact
     model only; --quasi-static: the static model (the radial engine without a load option). A
-    roller bearing keeps the static radial engine; a pair refuses --speed.
+    roller bearing keeps the static radial engine; a pair is solved by the static model at
+    any --speed (its ball dynamics are not coded), the speed giving its hours.
 
     Lives as engineers use them (docs/life.md): --speed gives every life in hours; --reliability
     a_1 (ISO 281 Table 12); --viscosity (needs --speed) nu_1, kappa, a_ISO (ISO 281, with
@@ -201,7 +202,7 @@ def solve(
             check_rotating(case, bearings[0], methods)
         text, found, figure = _combined(bearings, case, fmt, per_ball, show_geometry)
     else:
-        from bearingload.reports.solve import solve_report
+        from bearingload.reports.solve import printed_warnings, solve_report
         from bearingload.studies.loaded_bearing import collect_warnings
 
         refuse_tilt_radius(case)
@@ -213,12 +214,12 @@ def solve(
             cases = _by_hand(methods, case, k_given)
         else:
             bearings = with_ratings(resolve_bearings(case, k_given), case)
-            cases = _radial(bearings, case, methods, revolutions)
+            cases = with_speed_warnings(_radial(bearings, case, methods, revolutions), case.speed)
             service = service_lives(case, [radial_basis(c) for c in cases])
         text = solve_report(
             cases, fmt, per_ball=per_ball, show_geometry=show_geometry, service=service
         )
-        found = collect_warnings(cases) + _service_warnings(service)
+        found = printed_warnings(collect_warnings(cases), service)
         figure = functools.partial(_figure, "solve_figure", cases)
     if plot is not None:
         save_plot(figure, plot)  # the figure of this very solution, written whole
@@ -278,8 +279,9 @@ def _pair(
     """A pair of angular-contact ball bearings (--arrangement, or 7205BDB): (report, warnings)."""
     import dataclasses
 
-    from bearingload.cli.case_options import DYNAMICS_PARAMS, SERVICE_PARAMS
+    from bearingload.cli.case_options import DYNAMICS_PARAMS
     from bearingload.reports.pair import pair_report
+    from bearingload.reports.solve import printed_warnings
     from bearingload.studies.bearing_pair import solve_bearing_pair
 
     if method != "exact":
@@ -294,9 +296,6 @@ def _pair(
                 "loads; give --moment")  # fmt: skip
     case.refuse(DYNAMICS_PARAMS, "a bearing pair", "a pair is solved by the static model: "
                 "the ball dynamics at speed are coded for one bearing only")  # fmt: skip
-    lives = tuple(p for p in SERVICE_PARAMS if p != "static_rating")  # C_0 gives each s0
-    case.refuse(lives, "a bearing pair", "the lives in hours and the modified lives "
-                "of a pair are not coded yet (it gives L10r and L10 in 10^6 revolutions)")  # fmt: skip
     why = "the design contact angle fixes the geometry of an angular-contact bearing"
     case.refuse(("clearance",), "a bearing pair", why + " (no clearance)")
     b = with_ratings(resolve_bearings(case, k_given), case)[0]
@@ -315,9 +314,11 @@ def _pair(
         )
     pc = solve_bearing_pair(b, case.radial_load, case.axial_load or 0.0,
                             **case.pair_arguments(b.balls))  # fmt: skip
-    service = service_lives(case, [combined_basis(c) for c in pc.bearings])  # C_0, as one bearing
+    pc = with_speed_warnings([pc], case.speed)[0]  # the bearing's limiting speeds
+    # each bearing's service lives as one bearing's from its own loads; the pair's from them
+    service = service_lives(case, [combined_basis(c) for c in pc.bearings])
     text = pair_report(pc, fmt, per_ball=per_ball, show_geometry=show_geometry, service=service)
-    return text, list(pc.warnings)
+    return text, printed_warnings(pc.warnings, service)
 
 
 def _radial(
@@ -344,14 +345,14 @@ def _combined(
     """The combined-load engine on resolved bearings: (report, warnings, its figure)."""
     from bearingload.cli.cases import combined_cases
     from bearingload.reports.combined import combined_report
+    from bearingload.reports.solve import printed_warnings
 
-    cases = combined_cases(bearings, case)
+    cases = with_speed_warnings(combined_cases(bearings, case), case.speed)
     service = service_lives(case, [combined_basis(c) for c in cases])
     text = combined_report(
         cases, fmt, per_ball=per_ball, show_geometry=show_geometry, service=service
     )
-    found = list(dict.fromkeys(w for c in cases for w in c.warnings))
-    found += [w for w in _service_warnings(service) if w not in found]
+    found = printed_warnings([w for c in cases for w in c.warnings], service)
     return text, found, functools.partial(_figure, "combined_loads_figure", cases)
 
 
@@ -377,8 +378,21 @@ def service_lives(case: CaseOptions, bases: list[Any]) -> list[Any]:
     return [service_values(op, b) for b in bases]
 
 
-def _service_warnings(service: list[Any] | None) -> list[str]:
-    return list(dict.fromkeys(w for s in service or [] for w in s.warnings))
+def with_speed_warnings(cases: list[Any], speed: float | None) -> list[Any]:
+    """The solved cases (one each) with the warning on a --speed above the limiting speed the
+    catalogue gives for their bearing added to theirs
+    (:func:`bearingload.bearings.checks.speed_findings`): stderr and json both list it."""
+    import dataclasses
+
+    from bearingload.bearings.checks import speed_findings
+
+    if speed is None:
+        return cases
+    out = []
+    for c in cases:
+        new = [] if c.bearing is None else speed_findings(speed, c.bearing)
+        out.append(dataclasses.replace(c, warnings=(*c.warnings, *new)) if new else c)
+    return out
 
 
 def life_geometry(b: Any) -> dict[str, Any]:

@@ -158,13 +158,14 @@ def sweep(
 
 def _bearing_checks(case: CaseOptions, result: Any) -> tuple[str, ...]:
     """The warnings solve gives on the bearing of the case (s0, C0, contact pressure, clearance),
-    at the heaviest ball load of the sweep ``result``."""
+    at the heaviest ball load of the sweep ``result``, and on --speed above its limiting speed."""
+    from bearingload.bearings.checks import speed_findings
     from bearingload.cli.cases import resolve_bearings
     from bearingload.cli.solve import with_ratings
     from bearingload.studies.sweep import bearing_checks
 
-    return bearing_checks(with_ratings(resolve_bearings(case, case.stiffness_value()), case)[0],
-                          result)  # fmt: skip
+    b = with_ratings(resolve_bearings(case, case.stiffness_value()), case)[0]
+    return bearing_checks(b, result) + tuple(speed_findings(case.speed, b))
 
 
 def _radial_lives(case: CaseOptions) -> tuple[Any, dict[str, Any]]:
@@ -211,7 +212,10 @@ def _combined(
     if case.speed is not None:
         import dataclasses
 
-        result = dataclasses.replace(result, speed=case.speed)
+        from bearingload.bearings.checks import speed_findings
+
+        found = (*result.warnings, *speed_findings(case.speed, b))
+        result = dataclasses.replace(result, speed=case.speed, warnings=found)
     text = combined_sweep_report(result, fmt, bearing_context(b))
     print_warnings(list(result.warnings), False)
     if plot is not None:

@@ -54,7 +54,11 @@ class ClearanceList(click.ParamType):
 
 @click.command(context_settings=CONTEXT)
 @click.argument("name", type=click.Choice(TABLES))
-@case_options(bearing="option", defaults={"load": "1000"})
+@case_options(
+    bearing="option",
+    defaults={"load": "1000"},
+    hidden=DYNAMICS_PARAMS,
+)
 @click.option(
     "--z-max",
     type=click.IntRange(1, 1000),
@@ -153,6 +157,10 @@ def table(
             "--z-max": (_given("z_max"), "it is one bearing, not a table over z"),
             "--method": (_given("method"), "the life comes from the exact 3-D model only"),
             "--clearance": (case.clearance is not None, "its rows are clearances (--clearances)"),
+            "--clearance-pick": (
+                "clearance_pick" in case.given,
+                "its rows are clearances (--clearances), no class to pick in",
+            ),
         }
         for option, (given, why) in refused.items():
             if given:

@@ -268,16 +268,29 @@ def _check_speed(speed: Any, density: Any, dm: Any) -> tuple[np.ndarray, np.ndar
         raise InputError(
             "ball_density", "must be in kg/mm^3 (steel 7.85e-6, silicon nitride 3.2e-6), below 1e-4"
         )
+    n_b, dm_b = np.broadcast_arrays(n, np.asarray(dm, dtype=float))
     with np.errstate(over="ignore"):
-        too_fast = n * np.asarray(dm, dtype=float) > MAX_SPEED_PITCH
+        too_fast = n_b * dm_b > MAX_SPEED_PITCH
     if np.any(too_fast):
+        first = np.flatnonzero(too_fast)[0]
+        given, pitch = float(n_b.flat[first]), float(dm_b.flat[first])
         raise InputError(
             "speed",
             f"n d_m must be at most {MAX_SPEED_PITCH:.0e} mm/min for the ball-dynamics model "
-            f"(n = {float(np.max(n)):.6g} rpm; beyond, ring expansion, cage and lubricant forces "
-            "it leaves out matter)",
+            f"(n = {_digits(given, MAX_SPEED_PITCH / pitch)} rpm with d_m = {pitch:.6g} mm: at "
+            f"most {MAX_SPEED_PITCH / pitch:.10g} rpm; beyond, ring expansion, cage "
+            "and lubricant forces it leaves out matter)",
         )
     return n, rho
+
+
+def _digits(value: float, other: float) -> str:
+    """``value`` with 6 significant digits, more where 6 do not tell it from ``other``."""
+    for digits in range(6, 13):
+        text, twin = f"{value:.{digits}g}", f"{other:.{digits}g}"
+        if text != twin:
+            return text
+    return f"{value:.12g}"
 
 
 def solve_high_speed(

@@ -7,7 +7,7 @@ from __future__ import annotations
 
 from typing import Any
 
-from bearingload.bearings.catalog import BearingGeometry, entries, find, variant
+from bearingload.bearings.catalog import BearingGeometry, entries, find, sealed, variant
 from bearingload.errors import InputError
 from bearingload.reports.render import Column, Table, render
 
@@ -123,9 +123,11 @@ def _angular_entry(designation: str, fmt: str, maker: str | None) -> str | None:
         ("maker", "ratings of maker", r.maker, ""),
         ("method", "ball set read/derived", r.method, ""),
         ("confidence", "ball set confidence", r.confidence, ""),
+        *_speed_fields(r.limiting_speed_grease, r.limiting_speed_oil),
     ]
     title = f"Angular-contact ball bearing {r.designation}, contact angle {r.contact_angle:g}°"
-    return _entry(title, fields, r.source, r.notes, fmt)
+    speeds = _speed_source(r.limiting_speed_grease, r.limiting_speed_source, False)
+    return _entry(title, fields, r.source, r.notes, fmt, speeds)
 
 
 def _row(b: BearingGeometry) -> dict[str, Any]:
@@ -190,8 +192,29 @@ def catalog_entry(designation: str, fmt: str, maker: str | None = None) -> str:
         ("method", "ball set read/derived", b.method or "-", ""),
         ("makers", "makers (--maker)", ", ".join(b.makers) or "-", ""),
         ("clearance_class", "clearance class marked", p.clearance_class or "none (CN)", ""),
+        *_speed_fields(b.limiting_speed_grease, b.limiting_speed_oil),
     ]
-    return _entry(f"Bearing {b.designation} ({b.standard})", fields, b.source, b.notes, fmt)
+    title = f"Bearing {b.designation} ({b.standard})"
+    speeds = _speed_source(b.limiting_speed_grease, b.limiting_speed_source, sealed(p.suffixes))
+    return _entry(title, fields, b.source, b.notes, fmt, speeds)
+
+
+def _speed_fields(grease: float | None, oil: float | None) -> list[tuple[str, str, Any, str]]:
+    """The limiting speeds of a catalogue row as entry fields (``-`` where none was read)."""
+    return [
+        ("limiting_speed_grease", "limiting speed, grease", _or_dash(grease), "rpm"),
+        ("limiting_speed_oil", "limiting speed, oil", _or_dash(oil), "rpm"),
+    ]
+
+
+def _speed_source(grease: float | None, source: str, is_sealed: bool) -> str:
+    """Where the limiting speeds come from, and whether solve warns on them."""
+    if grease is None:
+        return "none read for this row (solve --speed gives no limiting-speed warning)"
+    if is_sealed:
+        return (f"{source}; those of the open bearing: a seal lowers them, so solve --speed "
+                "warns above them, where this sealed bearing's own limit is passed too")  # fmt: skip
+    return source
 
 
 def _roller_entry(designation: str, fmt: str, maker: str | None) -> str:
@@ -221,12 +244,17 @@ def _roller_entry(designation: str, fmt: str, maker: str | None) -> str:
 
 
 def _entry(
-    title: str, fields: list[tuple[str, str, Any, str]], source: str, notes: str, fmt: str
-) -> str:
+    title: str, fields: list[tuple[str, str, Any, str]], source: str, notes: str, fmt: str,
+    speeds: str | None = None,
+) -> str:  # fmt: skip
+    """One entry: ``fields`` (key, label, value, unit), its source and notes, and where its
+    limiting speeds come from (``speeds``; None: the entry has none)."""
     if fmt == "json":
         doc: dict[str, Any] = {key: value for key, _, value, _ in fields}
         doc["source"] = source
         doc["notes"] = notes
+        if speeds is not None:
+            doc["limiting_speed_source"] = speeds
         doc["units"] = {key: unit for key, _, _, unit in fields if unit}
         return render([], "json", document=doc)
     table = Table(
@@ -237,7 +265,8 @@ def _entry(
             Column("unit", "unit", align="left"),
         ],
         rows=[{"quantity": label, "value": v, "unit": u} for _, label, v, u in fields],
-        notes=[f"source: {source}", f"notes: {notes or '-'}"],
+        notes=[f"source: {source}", f"notes: {notes or '-'}"]
+        + ([] if speeds is None else [f"limiting speeds: {speeds}"]),
     )
     return render([table], fmt)
 

@@ -23,8 +23,10 @@ from typing import Any
 from bearingload.reports.quantities import SERVICE_KEYS, units
 from bearingload.reports.render import Column, Table, render
 from bearingload.reports.solve import (
+    case_warnings,
     column,
     given_keys,
+    printed_warnings,
     quantity_rows,
     service_notes,
     set_note,
@@ -78,6 +80,9 @@ ANSWER_KEYS = (
     "rating_life_hours",
     *SERVICE_KEYS,
 )
+#: Each ball's inner and outer contact (equal without the ball dynamics): json and csv names.
+CONTACT_KEYS = ("contact_angles_inner", "contact_angles_outer", "ball_loads_inner",
+                "ball_loads_outer")  # fmt: skip
 #: The units of the 5x5 ``stiffness_matrix`` (``units`` of a combined-load JSON document).
 MATRIX_UNITS = (
     "rows F_x, F_y, F_a [N], M, M_c [N mm]; columns x, y, axial [mm], tilt, tilt_cross [rad]: "
@@ -89,6 +94,7 @@ PER_BALL_KEYS = (
     "contact_angles",
     "ball_approaches",
     "ball_loads",
+    *CONTACT_KEYS,
 )
 NOTES = (
     "Outer ring fixed; F_r along the load line (ball angles from it), F_a towards +axial.",
@@ -150,7 +156,7 @@ def combined_report(
     the lives of each case (:class:`bearingload.bearings.service_life.ServiceLife`)."""
     records = with_service([combined_values(c) for c in cases], service)
     if fmt == "json":
-        return render([], "json", document=_document(cases, records))
+        return render([], "json", document=_document(cases, records, service))
     if fmt == "csv":
         table = _per_ball_table(cases, records) if per_ball else _case_table(records)
         return render([table], "csv")
@@ -195,8 +201,10 @@ def _per_ball_table(cases: Sequence[CombinedCase], records: Sequence[dict[str, A
     inputs = given_keys(records, INPUT_KEYS)
     rows = []
     for c, r in zip(cases, records, strict=True):
+        found = contact_values(c.result, c.bearing.contact_angle)
         for i, values in enumerate(_balls(c)):
-            per = dict(zip(PER_BALL_KEYS[1:], values, strict=True))
+            per = dict(zip(PER_BALL_KEYS[1:5], values, strict=True))
+            per |= {k: float(found[k][i]) for k in CONTACT_KEYS}
             rows.append(_blank(r, inputs) | {"ball": i + 1} | per)
     return Table("balls", [column(k, 1.5) for k in inputs + list(PER_BALL_KEYS)], rows)
 
@@ -321,10 +329,16 @@ def contact_values(res: Any, contact_angle: float | None = None) -> dict[str, An
     }
 
 
-def _document(cases: Sequence[CombinedCase], records: Sequence[dict[str, Any]]) -> dict[str, Any]:
+def _document(
+    cases: Sequence[CombinedCase],
+    records: Sequence[dict[str, Any]],
+    service: Sequence[Any] | None = None,
+) -> dict[str, Any]:
     from bearingload.reports.bearing import geometry_document
 
-    docs = []
+    said = case_warnings([c.warnings for c in cases], service)
+
+    docs: list[dict[str, Any]] = []
     for c, r in zip(cases, records, strict=True):
         res = c.result
         found = contact_values(res, c.bearing.contact_angle)
@@ -341,7 +355,7 @@ def _document(cases: Sequence[CombinedCase], records: Sequence[dict[str, Any]]) 
                 "ball_loads_inner": found["ball_loads_inner"],
                 "ball_loads_outer": found["ball_loads_outer"],
                 "stiffness_matrix": res.stiffness_matrix.tolist(),
-                "warnings": list(c.warnings),
+                "warnings": said[len(docs)],
             }
         )
     keys = list(dict.fromkeys(k for d in docs for k in d))
@@ -349,5 +363,5 @@ def _document(cases: Sequence[CombinedCase], records: Sequence[dict[str, Any]]) 
         "cases": docs,
         "units": units(keys, 1.5) | {"stiffness_matrix": MATRIX_UNITS},
         "bearing": geometry_document(cases[0].bearing),
-        "warnings": list(dict.fromkeys(w for c in cases for w in c.warnings)),
+        "warnings": printed_warnings([w for c in cases for w in c.warnings], service),
     }

@@ -237,7 +237,9 @@ def life_document(t: LifeAgainstClearance, service: Sequence[Any] | None = None)
         "rows": body,
         "units": units([*conds, *body[0]], 1.5),
         "geometry": geometry_document(t.bearing),
-        "warnings": list(t.warnings),
+        "warnings": list(
+            dict.fromkeys([*t.warnings, *(w for s in service or [] for w in s.warnings)])
+        ),
     } | _static(service)
 
 

@@ -4,11 +4,12 @@
   the shaft in the pair's column, those each bearing carries in its own), then every ball's
   angle, contact angle and load in both bearings; the geometry only with ``show_geometry``.
 * ``json``: ``{"cases": [pair], "units", "bearing", "warnings"}``: the pair's keys (its inputs,
-  displacement, ``stiffness_matrix``, lift-off, lives) and ``bearings``, one object per bearing
+  displacement, ``stiffness_matrix``, lift-off, lives; with the service options its speed,
+  reliability, lives in hours and modified lives) and ``bearings``, one object per bearing
   with the keys of a single bearing's case (:mod:`bearingload.reports.combined`).
 * ``csv``: one rectangular table, one row per bearing (``bearing_number`` 1, 2): the bearing's
   keys of a single combined case, and the pair's values in every row under ``pair_...``
-  columns (``pair_x``, ``pair_stiffness_axial``, ...) beside the pair's inputs; with
+  columns (``pair_x``, ``pair_stiffness_axial``, ``pair_rating_life_hours``, ...) beside the pair's inputs; with
   ``per_ball`` one row per ball of each bearing.
 """
 
@@ -19,10 +20,10 @@ from collections.abc import Sequence
 from typing import Any
 
 from bearingload.reports.combined import ANGULAR_LABELS, MATRIX_UNITS, contact_angle_shown
-from bearingload.reports.quantities import units
+from bearingload.reports.quantities import SERVICE_KEYS, units
 from bearingload.reports.render import Column, Table, render
-from bearingload.reports.solve import column, quantity_rows, with_service
-from bearingload.studies.bearing_pair import ARRANGEMENT_NAMES, PairCase
+from bearingload.reports.solve import column, quantity_rows, service_notes, with_service
+from bearingload.studies.bearing_pair import ARRANGEMENT_NAMES, PairCase, pair_service_values
 from bearingload.studies.combined_bearing import combined_values
 
 #: The pair's inputs (every row of the csv, the JSON case).
@@ -32,12 +33,18 @@ PAIR_INPUTS = ("bearing", "arrangement", "balls", "load", "axial_load", "moment"
 PAIR_ANSWERS = ("x", "y", "axial", "tilt", "tilt_cross", "stiffness_radial", "stiffness_axial",
                 "stiffness_tilt", "lift_off_axial_load", "unloaded_bearings",
                 "reference_rating_life", "rating_life")  # fmt: skip
+#: The pair's service values (:func:`bearingload.studies.bearing_pair.pair_service_values`):
+#: ``pair_`` columns in the csv where given.
+PAIR_SERVICE = ("speed", "reliability", "reference_rating_life_hours", "rating_life_hours",
+                "modified_rating_life", "modified_rating_life_hours",
+                "modified_reference_rating_life", "modified_reference_rating_life_hours")  # fmt: skip
 #: The rows of the human summary (the pair's column shows what it has).
 SUMMARY_KEYS = ("load", "axial_load", "moment", "q_max", "loaded_balls", "p_max_inner",
                 "p_max_outer", "static_equivalent_load", "static_safety", "contact_angle_max",
                 "x", "y", "axial", "tilt", "tilt_cross", "stiffness_radial", "stiffness_axial",
                 "stiffness_tilt", "preload", "lift_off_axial_load", "unloaded_bearings",
-                "reference_rating_life", "equivalent_load", "rating_life")  # fmt: skip
+                "reference_rating_life", "reference_rating_life_hours", "equivalent_load",
+                "rating_life", "rating_life_hours", *SERVICE_KEYS)  # fmt: skip
 NOTES = (
     "The pair: the loads applied to the shaft at the pair's centre (x along F_r, +axial the "
     "thrust of bearing 1) and the shaft's displacement there; a bearing: the forces its balls "
@@ -49,6 +56,22 @@ NOTES = (
     "Pair lives: (L1^-e + L2^-e)^(-1/e), e = 10/9 (ISO/TS 16281 4.3's rule for the rings of a "
     "bearing; Lundberg-Palmgren system life); L10r from the ball loads, L10 from P = X F_r + Y "
     "F_a of each bearing (ISO 281 Table 3, single row).",
+)
+#: The note of a pair at --speed.
+SPEED_NOTE = (
+    "Speed: a pair is solved by the static model (the ball dynamics of a pair, centrifugal "
+    "force and gyroscopic moment, are not coded); the speed enters the lives only (hours, "
+    "nu_1, the film)."
+)
+#: The end of the JSON's ``model`` of a pair at --speed.
+STATIC_AT_SPEED = (
+    "; the static model at the speed given (the ball dynamics of a pair are not coded)"
+)
+#: The note of a pair's modified lives.
+MODIFIED_NOTE = (
+    "Pair modified lives: the same rule on the bearings' L_nm (L_nmr), an unloaded bearing "
+    "dropping out; the system rule (ISO/TS 16281, Lundberg-Palmgren) holds for Weibull lives of "
+    "one slope, so on the modified lives it is an approximation."
 )
 
 
@@ -77,14 +100,15 @@ def pair_report(
 ) -> str:  # fmt: skip
     """Render a solved pair in ``fmt`` (table, csv, markdown, json); ``service``: each
     bearing's service values (:class:`bearingload.bearings.service_life.ServiceLife`), merged
-    into its record as a single bearing's."""
-    pair = pair_record(c)
+    into its record as a single bearing's, and the pair's from them (its lives in hours, its
+    modified lives: :func:`bearingload.studies.bearing_pair.pair_service_values`)."""
+    pair = pair_record(c) | pair_service_values(c, service)
     records = with_service([combined_values(b) for b in c.bearings], service)
     for k in range(2):
         if c.result.unloaded[k]:  # no loaded ball: no largest angle of one
             records[k]["contact_angle_max"] = None
     if fmt == "json":
-        return render([], "json", document=_document(c, pair, records))
+        return render([], "json", document=_document(c, pair, records, service))
     if fmt == "csv":
         return render([_csv_table(c, pair, records, per_ball)], "csv")
     tables = []
@@ -96,7 +120,9 @@ def pair_report(
     rows_of = [pair, *records]
     keys = [k for k in SUMMARY_KEYS if any(r.get(k) is not None for r in rows_of)]
     columns, rows = quantity_rows(keys, heads, rows_of, ANGULAR_LABELS)
-    tables += [Table(_title(pair), columns, rows, list(NOTES)), _balls_table(c)]
+    notes = [*NOTES, *([SPEED_NOTE] if "speed" in pair else [])]
+    notes += [MODIFIED_NOTE] if any(k in pair for k in PAIR_SERVICE[4:]) else []
+    tables += [Table(_title(pair), columns, rows, notes + service_notes(service)), _balls_table(c)]
     return render(tables, fmt)
 
 
@@ -127,33 +153,46 @@ def _balls_table(c: PairCase) -> Table:
                  "line; contact angle '-': the ball carries no load)", columns, rows)  # fmt: skip
 
 
-def _document(c: PairCase, pair: dict[str, Any], records: list[dict[str, Any]]) -> dict[str, Any]:
+def _document(
+    c: PairCase,
+    pair: dict[str, Any],
+    records: list[dict[str, Any]],
+    service: Sequence[Any] | None = None,
+) -> dict[str, Any]:
     from bearingload.reports.bearing import geometry_document
     from bearingload.reports.combined import _document as single_document
 
-    singles = single_document(list(c.bearings), records)
+    singles = single_document(list(c.bearings), records, service)
+    said = list(dict.fromkeys([*c.warnings, *singles["warnings"]]))
     doc = pair | {
-        "model": "pair of angular-contact ball bearings on one rigid shaft (ISO/TS 16281 each)",
+        "model": "pair of angular-contact ball bearings on one rigid shaft (ISO/TS 16281 each)"
+        + (STATIC_AT_SPEED if "speed" in pair else ""),
         "stiffness_matrix": c.result.stiffness_matrix.tolist(),
         "bearings": singles["cases"],
-        "warnings": list(c.warnings),
+        "warnings": said,
     }
     keys = list(dict.fromkeys([*doc, *(k for s in singles["cases"] for k in s)]))
     return {
         "cases": [doc],
         "units": units(keys, 1.5) | {"stiffness_matrix": MATRIX_UNITS},
         "bearing": geometry_document(c.bearing),
-        "warnings": list(c.warnings),
+        "warnings": said,
     }
 
 
 def _csv_table(c: PairCase, pair: dict[str, Any], records: list[dict[str, Any]],
                per_ball: bool) -> Table:  # fmt: skip
-    from bearingload.reports.combined import ANSWER_KEYS, INPUT_KEYS, PER_BALL_KEYS
+    from bearingload.reports.combined import (
+        ANSWER_KEYS,
+        CONTACT_KEYS,
+        INPUT_KEYS,
+        PER_BALL_KEYS,
+        contact_values,
+    )
 
     inputs = [k for k in PAIR_INPUTS if k not in ("load", "axial_load", "moment", "moment_cross")]
     applied = [f"pair_{k}" for k in ("load", "axial_load", "moment", "moment_cross")]
-    answers = [f"pair_{k}" for k in PAIR_ANSWERS]
+    answers = [f"pair_{k}" for k in PAIR_ANSWERS + tuple(k for k in PAIR_SERVICE if k in pair)]
     own = [k for k in dict.fromkeys(INPUT_KEYS + ANSWER_KEYS)
            if k not in inputs and any(k in r for r in records)]  # fmt: skip
     cols = [column(k) for k in inputs]
@@ -167,11 +206,13 @@ def _csv_table(c: PairCase, pair: dict[str, Any], records: list[dict[str, Any]],
             rows.append(base)
             continue
         res = b.result
+        found = contact_values(res, b.bearing.contact_angle)
         for j in range(len(res.ball_loads)):
             rows.append(base | {"ball": j + 1, "ball_angles": float(res.ball_angles[j]),
                                 "contact_angles": float(res.contact_angles[j]),
                                 "ball_approaches": float(res.ball_approaches[j]),
-                                "ball_loads": float(res.ball_loads[j])})  # fmt: skip
+                                "ball_loads": float(res.ball_loads[j])}
+                        | {k: float(found[k][j]) for k in CONTACT_KEYS})  # fmt: skip
     if per_ball:
         cols += [column(k) for k in PER_BALL_KEYS]
     keys = [col.key for col in cols]

@@ -212,6 +212,9 @@ def combined_loads_figure(cases: Sequence[Any]) -> Any:
         f"F_a = {one(r.axial_load):.6g} N, G_r = {one(r.clearance) * 1e3:.6g} µm, "
         f"cage angle {one(r.cage_angle):.6g}°"
     )
+    speed = getattr(r, "speed", None)  # the ball dynamics: loads and angles drawn are the inner
+    if speed is not None:
+        title += f", n = {one(speed):.6g} rpm, ball dynamics: the inner contacts"
     return ball_loads_figure(drawn, title, alphas)
 
 

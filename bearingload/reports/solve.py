@@ -101,7 +101,7 @@ def solve_report(
         records = with_relative_errors(records)
     exponent = float(cases[0].result.case.exponent)
     if fmt == "json":
-        return render([], "json", document=_document(cases, records, exponent))
+        return render([], "json", document=_document(cases, records, exponent, service))
     if fmt == "csv":
         table = _per_ball_table(cases, records) if per_ball else _case_table(records)
         return render([table], "csv")
@@ -206,6 +206,19 @@ def with_service(
     if not service:
         return records
     return [r | s.values for r, s in zip(records, service, strict=True)]
+
+
+def case_warnings(found: Sequence[Sequence[str]], service: Sequence[Any] | None) -> list[list[str]]:
+    """Each case's warnings ``found`` followed by those of its service lives (a kappa outside
+    ISO 281's range ...), each once: json's ``warnings`` of the case, as the terminal prints them."""
+    lives = [[]] * len(found) if not service else [list(s.warnings) for s in service]
+    return [list(dict.fromkeys([*f, *w])) for f, w in zip(found, lives, strict=True)]
+
+
+def printed_warnings(found: Sequence[str], service: Sequence[Any] | None) -> list[str]:
+    """The warnings of several cases as the terminal prints them and json's document lists them:
+    ``found`` (the cases' own, labelled where there are several), then their lives', each once."""
+    return list(dict.fromkeys([*found, *(w for s in service or [] for w in s.warnings)]))
 
 
 def service_notes(service: Sequence[Any] | None) -> list[str]:
@@ -338,11 +351,15 @@ def _balls_human(cases: Sequence[LoadedCase], records: Sequence[dict[str, Any]])
 
 
 def _document(
-    cases: Sequence[LoadedCase], records: Sequence[dict[str, Any]], exponent: float
+    cases: Sequence[LoadedCase],
+    records: Sequence[dict[str, Any]],
+    exponent: float,
+    service: Sequence[Any] | None = None,
 ) -> dict[str, Any]:
     from bearingload.models.registry import METHODS
 
-    docs = []
+    said = case_warnings([c.warnings for c in cases], service)
+    docs: list[dict[str, Any]] = []
     for c, r in zip(cases, records, strict=True):
         doc = {k: v for k, v in r.items()}
         doc["model"] = METHODS[r["method"]].title
@@ -353,13 +370,13 @@ def _document(
             doc["ball_angles"] = model.ball_angles
             doc["ball_approaches"] = model.ball_approaches
             doc["ball_loads"] = model.ball_loads
-        doc["warnings"] = list(c.warnings)
+        doc["warnings"] = said[len(docs)]
         docs.append(doc)
     keys = list(dict.fromkeys(k for d in docs for k in d))
     out: dict[str, Any] = {
         "cases": docs,
         "units": units(keys, exponent),
-        "warnings": collect_warnings(cases),
+        "warnings": printed_warnings(collect_warnings(cases), service),
     }
     if cases[0].bearing is not None:
         from bearingload.reports.bearing import geometry_document

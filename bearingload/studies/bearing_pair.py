@@ -7,6 +7,7 @@ combined_bearing`) and the pair's lives combined (:func:`bearingload.models.pair
 from __future__ import annotations
 
 import math
+from collections.abc import Sequence
 from dataclasses import dataclass
 from typing import Any
 
@@ -154,3 +155,48 @@ def _combined(lives: list[Any], rule: Any) -> float | None:
         return None
     out = float(rule(float(lives[0]), float(lives[1])))
     return None if math.isinf(out) else out
+
+
+#: The modified lives of a bearing combined into the pair's by :func:`pair_service_values`.
+MODIFIED_LIVES = ("modified_rating_life", "modified_reference_rating_life")
+
+
+def pair_service_values(c: PairCase, service: Sequence[Any] | None) -> dict[str, float]:
+    """The pair's service values from each bearing's
+    (:class:`bearingload.bearings.service_life.ServiceLife`, one per bearing, as a single
+    bearing's solve gives them from that bearing's loads).
+
+    * ``speed``, ``reliability``: the operating conditions (both bearings'), where given;
+    * ``rating_life_hours``, ``reference_rating_life_hours``: the pair's L10 and L10r in hours,
+      L 10^6 / (60 n); [h]
+    * ``modified_rating_life``, ``modified_reference_rating_life`` (and ``..._hours``): the
+      bearings' L_nm (L_nmr) combined by the pair's rule
+      (:func:`bearingload.models.pair.pair_life`, e = 10/9), an unloaded bearing dropping out.
+      The rule is Lundberg-Palmgren's system life of Weibull lives of one slope; applied to the
+      modified lives (a_ISO a stress-based factor, a_1 of ISO 281 Table 12 drawn with another
+      slope) it is an approximation. None of them where a loaded bearing has none. [10^6 rev]
+
+    Keys without a value are left out (no speed: no hours; no viscosity: no modified life).
+    """
+    from bearingload.bearings.modified_life import life_hours
+    from bearingload.models.pair import pair_life
+
+    if not service:
+        return {}
+    given = [s.values for s in service]
+    out: dict[str, float] = {
+        k: float(given[0][k]) for k in ("speed", "reliability") if k in given[0]
+    }
+    for key in MODIFIED_LIVES:
+        if any(key in v for v in given):
+            lives = [math.inf if c.result.unloaded[k] else v.get(key) for k, v in enumerate(given)]
+            life = _combined(lives, pair_life)
+            if life is not None:
+                out[key] = life
+    speed = out.get("speed")
+    if speed is not None:
+        for key in ("rating_life", "reference_rating_life", *MODIFIED_LIVES):
+            life = out.get(key, getattr(c, key, None))
+            if life is not None:
+                out[f"{key}_hours"] = float(life_hours(life, speed))
+    return out
