@@ -88,8 +88,11 @@ def _equal_solve(cases: list[tuple[dict[str, str], list[str]]]) -> None:
         solved = _solve(args)
         assert solved.exit_code == 0, solved.output
         expected = _rows(solved.stdout)[0]
+        # a ball bearing at a speed in a file without a load column: solve's combined engine at
+        # F_a = 0 (the ball dynamics), filling the file's radial columns it shares
+        at_speed = "axial_load [N]" in expected and "axial_load [N]" not in row
         for key, value in expected.items():  # a file of bearings: stiffness in N/mm^m
-            if key not in row and value == "":
+            if key not in row and (value == "" or at_speed):
                 continue  # a column solve leaves blank that this file has not (epsilon)
             key_here = (
                 key if key in row or not key.startswith("stiffness [") else "stiffness [N/mm^m]"

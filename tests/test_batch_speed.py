@@ -18,7 +18,8 @@ HEAD = ("bearing", "load", "axial_load", "clearance", "speed", "quasi_static", "
 #: (batch cells, solve options) of one case each: deep groove with an axial load at speed (C3,
 #: rad/s), the 7205B of docs/speed.md at 20 000 rpm, ceramic balls, a row without a speed, a
 #: quasi_static row, an angular-contact designation without an axial load cell, and a radial row
-#: (no combined cell: the radial engine, as solve).
+#: of a ball bearing at a speed (no combined cell: the combined engine at F_a = 0 with the ball
+#: dynamics, as solve).
 CASES = [
     ({"bearing": "6205", "load": "1.4kN", "axial_load": "700N", "speed": "15000"},
      ["6205", "-F", "1.4kN", "-A", "700N", "--speed", "15000"]),
@@ -88,7 +89,7 @@ def test_every_row_equals_solve_json():
     for record, (_, args) in zip(doc["cases"], CASES, strict=True):
         expected = _solve_json(args)
         shared = [k for k in expected if k in record]
-        combined = "-A" in args
+        combined = "-A" in args or "--speed" in args
         assert ("q_max" in shared) and (set(HELD) <= set(shared) or not combined), args
         for key in shared:
             _close(record[key], expected[key], key)
@@ -99,12 +100,9 @@ def test_every_row_equals_solve_json():
 def test_the_speed_rows_are_the_ball_dynamics():
     """The rows at speed name the ball dynamics and carry different inner and outer contacts
     (the centrifugal force loads the outer ring); the quasi_static row and the row without a
-    speed are the static model (inner = outer), the radial row has no combined model."""
+    speed are the static model (inner = outer); the radial row at a speed has the dynamics too."""
     cases = _batch_json(_file([c for c, _ in CASES]))["cases"]
     for record, (cells, _) in zip(cases, CASES, strict=True):
-        if "axial_load" not in cells:
-            assert all(record[k] is None for k in HELD[1:]) and "Kurochkin" in record["model"]
-            continue
         dynamic = "speed" in cells and cells.get("quasi_static") != "true"
         assert ("ball dynamics" in record["model"]) == dynamic
         outer, inner = record["ball_loads_outer"], record["ball_loads_inner"]
@@ -171,10 +169,12 @@ REFUSED = [
      ["-A", "500N", "--speed", "3000", "--quasi-static", "--ball-density", "3200"]),
     ({"axial_load": "500N", "quasi_static": "true"}, "quasi_static: it needs a speed",
      ["-A", "500N", "--quasi-static"]),
-    ({"speed": "3000", "ball_density": "3200"}, "ball_density: not used by the radial solve",
-     ["--speed", "3000", "--ball-density", "3200"]),
-    ({"speed": "3000", "quasi_static": "TRUE"}, "quasi_static: not used by the radial solve",
-     ["--speed", "3000", "--quasi-static"]),
+    ({"speed": "3000", "quasi_static": "true", "ball_density": "3200"},
+     "ball_density: it enters the ball dynamics",
+     ["--speed", "3000", "--quasi-static", "--ball-density", "3200"]),
+    ({"ball_density": "3200"}, "ball_density: it enters the ball dynamics",
+     ["--ball-density", "3200"]),
+    ({"quasi_static": "TRUE"}, "quasi_static: it needs a speed", ["--quasi-static"]),
     ({"axial_load": "500N", "speed": "3000", "ball_density": "0"}, "ball_density: must be greater",
      ["-A", "500N", "--speed", "3000", "--ball-density", "0"]),
     ({"axial_load": "500N", "speed": "3000", "ball_density": "2e5"},

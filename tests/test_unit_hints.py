@@ -132,7 +132,8 @@ def test_a_unit_hint_names_a_unit_that_makes_the_number_plausible_or_none(capsys
     printed excludes the number refused."""
     import re
 
-    base = ["solve", "6205", "-F", "1kN", "--speed", "3000", "--viscosity", "20"]
+    # the static radial engine (--quasi-static), which takes --revolutions at a speed
+    base = ["solve", "6205", "-F", "1kN", "--speed", "3000", "--viscosity", "20", "--quasi-static"]
     code, out, err = run_entry(capsys, *base, option, bare)
     assert code == 2 and out == "" and err.count("\n") == 1, err
     low, high = map(

@@ -125,8 +125,10 @@ def _columns(header: Header) -> list[Column]:
 
 def held_keys(header: Header) -> tuple[str, ...]:
     """The keys beyond the columns that json, markdown and table hold for a file with
-    ``header`` (:data:`HELD_KEYS` for a combined-load file)."""
-    return HELD_KEYS if header.combined else ()
+    ``header`` (:data:`HELD_KEYS` for a combined-load file, and for a file of bearings with a
+    speed column, whose ball bearings at speed solve gives the ball dynamics)."""
+    at_speed = "speed" in header.names and header.has_bearing
+    return HELD_KEYS if header.combined or at_speed else ()
 
 
 def csv_head(columns: Sequence[Column]) -> str:
@@ -172,7 +174,8 @@ def held_report(
         for r in records
     ]
     columns = [Column(c.key, c.key, c.unit, c.digits, c.align) for c in columns]  # short heads
-    models = sorted({m for m in values.get("model", []) if m is not None and "; " in m})
+    dynamics = [m for m in values.get("model", []) if m is not None and "; ball dynamics" in m]
+    models = sorted(set(dynamics))  # not the radial engine's model, which has a '; ' too
     notes = [DYNAMICS_NOTE.format(m.split("; ", 1)[1]) for m in models]
     notes += [f"Row {r} skipped: {m}" for r, m in skipped]
     title = f"{len(records)} cases (row: the input file's row, the header is row 1)"

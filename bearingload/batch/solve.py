@@ -173,6 +173,8 @@ class BatchSolver:
             try:
                 if loads and (any(c[i] is not None for c in loads) or self._angular(cols, i)):
                     keys[i] = self._combined_key(cols, i)
+                elif geometry and self._at_speed(cols, i):
+                    keys[i] = self._combined_key(cols, i)
                 elif tilt is not None and tilt[i] is not None:
                     bad[i] = _TILT_ALONE
                 elif geometry and any(c[i] is not None for c in geometry):
@@ -190,6 +192,29 @@ class BatchSolver:
         engine with F_a = 0 when no axial load is given (a blank cell takes solve's default)."""
         v = self._row(cols, i)
         return any(k in v for k in _GEOMETRY) and self._bearing(v).contact_angle is not None
+
+    def _at_speed(self, cols: dict[str, list[Any]], i: int) -> bool:
+        """Whether radial row ``i`` (no load cell) is a ball bearing at a speed (quasi_static
+        not true), which solve gives the combined engine at F_a = 0 with the ball dynamics; its
+        method, revolutions and exponent cells checked as solve checks the options."""
+        v = self._row(cols, i)
+        if "speed" not in v or v.get("quasi_static", False) or not any(k in v for k in _GEOMETRY):
+            return False
+        b = self._bearing(v)
+        if b.kind != "ball":
+            return False
+        instead = ("the ball dynamics at a speed are solved by the combined engine at an axial "
+                   "load of 0 (as solve --speed); set quasi_static true for the static model")  # fmt: skip
+        if v.get("method", "exact") != "exact":
+            _check_method(v["method"])
+            raise InputError("method", f"{v['method']}: {instead}, which takes the other methods")
+        if "revolutions" in v:
+            raise InputError("revolutions", "sets the life of the allowable radial load, which "
+                             f"only the radial engine gives: {instead}")  # fmt: skip
+        if v.get("exponent", b.exponent) != b.exponent:
+            raise InputError("exponent", "a ball bearing (Hertz point contact) has m = 1.5; "
+                             "other exponents need balls and stiffness without a bearing")  # fmt: skip
+        return True
 
     def _row(self, cols: dict[str, list[Any]], i: int) -> dict[str, Any]:
         return {k: v[i] for k, v in cols.items() if v[i] is not None}
@@ -365,17 +390,25 @@ def _dynamics(v: dict[str, Any]) -> tuple[bool, bool]:
 def _refuse_radial_dynamics(
     cols: dict[str, list[Any]], keys: list[Any], n: int, bad: dict[int, str]
 ) -> None:
-    """A radial row (ring or bearing) with a ball_density or a quasi_static true cell is
-    refused, as solve refuses --ball-density and --quasi-static on the radial solve."""
+    """A radial row (ring or bearing) with a ball_density cell or a quasi_static true cell
+    without a speed is refused, as solve refuses them on the radial engine: a ball bearing
+    at a speed is the combined engine's, unless quasi_static true; a roller has no ball
+    dynamics."""
     given = [(c, cols[c]) for c in DYNAMICS_COLUMNS if c in cols]
     for i in range(n) if given else ():
         name = next((c for c, x in given if x[i] not in (None, False)), None)
         if name is None or i in bad or keys[i] is None or keys[i][0] == "combined":
             continue
-        keys[i] = None
-        bad[i] = (f"{name}: not used by the radial solve (a row without a cell in axial_load, "
-                  "moment, moment_cross, misalignment or contact_angle): the ball dynamics at "
-                  "a speed are solved by the combined engine (give an axial_load of 0)")  # fmt: skip
+        v = {c: cols[c][i] for c in ("speed", *DYNAMICS_COLUMNS) if c in cols}
+        try:
+            if keys[i][0] == "bearing" and keys[i][1].kind == "roller" and "ball_density" in v:
+                raise InputError("ball_density", "a roller bearing is solved by the static "
+                                 "model at any speed: the ball dynamics are coded for ball "
+                                 "bearings")  # fmt: skip
+            _dynamics({k: x for k, x in v.items() if x is not None})
+        except InputError as exc:
+            keys[i] = None
+            bad[i] = row_message(exc)
 
 
 def _check_life_cells(v: dict[str, Any], b: Any) -> None:

@@ -53,7 +53,8 @@ def batch(
     combined-load case of a deep-groove ball bearing (3-D ring equilibrium, ISO/TS 16281 L10r,
     ISO 281 L10; load may then be 0), with tilt_radius (groove, pitch or a length) the lever
     of its tilt; a row without such a cell is a radial case (an angular-contact bearing's, in
-    such a file, a combined one at F_a = 0, as solve). A file with one of these columns
+    such a file, a combined one at F_a = 0, as solve; so is a ball bearing's at a speed,
+    below). A file with one of these columns
     writes the columns solve writes with an axial load (a radial row of it fills those the two
     engines share), names a bearing or the ball geometry, and has no method, exponent or
     revolutions column. A tilt_radius cell without a combined load on its row is refused.
@@ -62,13 +63,15 @@ def batch(
     (static_rating, speed, reliability, viscosity, contamination, eC, fatigue_load_limit,
     roughness, pressure_viscosity; docs/batch.md); the oil may give the viscosity instead, by
     solve's rules: oil (an ISO grade, VG68) or viscosity_40, with temperature (bare: °C; K), and
-    viscosity_100 or viscosity_index (default 95). As 'solve --speed', a combined row with a
-    speed is solved with each ball's centrifugal force and gyroscopic moment (docs/speed.md):
-    quasi_static (true or false; blank: false) true keeps the static model, the speed then
-    giving the lives in hours only; ball_density (kg/m^3, bare numbers; default bearing steel
-    7850, silicon nitride about 3200) gives the ball mass. Both are refused without a speed,
-    ball_density under quasi_static true, and either on a radial row. json adds to each
-    combined row its model and every ball's inner and outer contact angle and load
+    viscosity_100 or viscosity_index (default 95). As 'solve --speed', a row of a ball
+    bearing with a speed is solved with each ball's centrifugal force and gyroscopic moment
+    (docs/speed.md; a radial row by the combined engine at F_a = 0): quasi_static (true or
+    false; blank: false) true keeps the static model, the speed then giving the lives in hours
+    only; ball_density (kg/m^3, bare numbers; default bearing steel 7850, silicon nitride
+    about 3200) gives the ball mass. Both are refused without a speed, ball_density under
+    quasi_static true or for a roller bearing (the static model at any speed). json adds to
+    each row of a file with a load column, or a speed column and bearings, its model and, for
+    the rows on the combined engine, every ball's inner and outer contact angle and load
     (contact_angles_inner, contact_angles_outer, ball_loads_inner, ball_loads_outer).
 
     A bad row (a negative load, an unknown unit or bearing, z = 0, a line with the wrong

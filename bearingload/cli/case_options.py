@@ -49,7 +49,7 @@ TILT_PARAMS = ("tilt_radius",)
 SERVICE_PARAMS = ("static_rating", "speed", "reliability", "viscosity", "oil", "viscosity_40",
                   "viscosity_100", "viscosity_index", "temperature", "contamination", "e_c",
                   "fatigue_load_limit", "roughness", "pressure_viscosity")  # fmt: skip
-#: The options of the ball dynamics at --speed (solve's combined engine only).
+#: The options of the ball dynamics at --speed (solve's ball bearings: the combined engine).
 DYNAMICS_PARAMS = ("ball_density", "quasi_static")
 #: The options that give the operating viscosity from the oil (instead of --viscosity).
 OIL_PARAMS = ("oil", "viscosity_40", "viscosity_100", "viscosity_index", "temperature")
@@ -305,11 +305,11 @@ DECLARATIONS: dict[str, tuple[tuple[str, ...], dict[str, Any]]] = {
         "--speed",
         type=Quantity("speed", positive=True),
         help="Shaft speed n of the rotating ring: every life also in hours, L 10^6/(60 n); "
-        "needed for the rated viscosity. In 'solve' a combined or angular-contact case includes "
-        "each ball's centrifugal force and gyroscopic moment (outer-raceway control, the inner "
-        "ring turning; docs/speed.md) unless --quasi-static; 'sweep' and 'table' solve the "
-        "static model. Units: rpm, r/min, rad/s, 1/s, Hz (bare number: rpm; a bare number of 1e6 "
-        "or more is refused).",
+        "needed for the rated viscosity. In 'solve' a ball bearing includes each ball's "
+        "centrifugal force and gyroscopic moment (outer-raceway control, the inner ring turning; "
+        "the combined engine, F_a = 0 without a load option; docs/speed.md) unless "
+        "--quasi-static; a roller bearing keeps the static model; 'sweep' and 'table' solve the "
+        "static model. Units: rpm, r/min, rad/s, 1/s, Hz (bare number: rpm; a bare number of 1e6 or more is refused).",
     ),
     "ball_density": _option(
         "--ball-density",
@@ -693,13 +693,7 @@ class CaseOptions:
         """The ball dynamics of :func:`bearingload.studies.combined_bearing.solve_combined_bearing`:
         the speed [rpm] (None: the static model, also under --quasi-static) and the ball density
         [kg/mm^3] (None: steel)."""
-        if self.ball_density is not None and (self.speed is None or self.quasi_static):
-            raise click.UsageError(
-                "Invalid value for '--ball-density': it enters the ball dynamics at --speed, "
-                "which --quasi-static or a missing --speed leave out"
-            )
-        if self.quasi_static and self.speed is None:
-            raise click.UsageError("Invalid value for '--quasi-static': it needs --speed")
+        self.check_dynamics_flags()
         if self.rotating == "outer" and self.speed is not None and not self.quasi_static:
             raise click.UsageError(
                 "Invalid value for '--rotating': the ball dynamics at --speed are coded for the "
@@ -716,6 +710,17 @@ class CaseOptions:
             "speed": None if self.quasi_static else self.speed,
             "ball_density": None if self.ball_density is None else self.ball_density * 1e-9,
         }
+
+    def check_dynamics_flags(self) -> None:
+        """Refuse --ball-density without the ball dynamics (no --speed, or --quasi-static) and
+        --quasi-static without --speed."""
+        if self.ball_density is not None and (self.speed is None or self.quasi_static):
+            raise click.UsageError(
+                "Invalid value for '--ball-density': it enters the ball dynamics at --speed, "
+                "which --quasi-static or a missing --speed leave out"
+            )
+        if self.quasi_static and self.speed is None:
+            raise click.UsageError("Invalid value for '--quasi-static': it needs --speed")
 
     def combined_arguments(self) -> dict[str, Any]:
         """The combined load as the keyword arguments of the combined studies

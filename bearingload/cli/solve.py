@@ -8,7 +8,7 @@ from typing import Any
 
 import click
 
-from bearingload.cli.case_options import DYNAMICS_PARAMS, CaseOptions, case_options
+from bearingload.cli.case_options import CaseOptions, case_options
 from bearingload.cli.cases import (
     check_rotating,
     refuse_tilt_radius,
@@ -101,9 +101,11 @@ def solve(
     loads) is given wherever the ball geometry and C_r are known, radial load or not; --rotating
     (default inner) and --dynamic-rating feed the lives only and change no load.
 
-    At --speed a combined or angular-contact solve includes each ball's centrifugal force and
-    gyroscopic moment (docs/speed.md; --quasi-static: the static model); a pair is solved by the
-    static model at any --speed (its ball dynamics are not coded), the speed giving its hours.
+    At --speed a ball bearing is solved with each ball's centrifugal force and gyroscopic
+    moment (docs/speed.md): by the combined engine, at F_a = 0 without a load option, the exact
+    model only; --quasi-static: the static model (the radial engine without a load option). A
+    roller bearing keeps the static radial engine; a pair is solved by the static model at
+    any --speed (its ball dynamics are not coded), the speed giving its hours.
 
     Lives as engineers use them (docs/life.md): --speed gives every life in hours; --reliability
     a_1 (ISO 281 Table 12); --viscosity (needs --speed) nu_1, kappa, a_ISO (ISO 281, with
@@ -149,7 +151,14 @@ def solve(
         raise click.UsageError(
             "Invalid value for '--revolutions': must be a number of revolutions > 0, got nan"
         )
+    case, at_speed = _radial_at_speed(case)
     methods = list_methods() if method == "all" else [method]
+    if at_speed and method != "exact":
+        raise click.UsageError(
+            f"Invalid value for '--method': at --speed the ball dynamics of a ball bearing are "
+            f"solved by the exact model only (the combined engine at F_a = 0); give "
+            f"--quasi-static for the static model, where --method {method} is allowed"
+        )
     if plot is not None:  # before any work
         check_plot(plot)
         if "exact" not in methods and not case.wants_combined:
@@ -168,9 +177,16 @@ def solve(
     from bearingload.bearings.angular import parse_angular
 
     angular = case.bearing is not None and parse_angular(case.bearing) is not None
-    # the load alone chooses the engine, never a life option; an angular-contact designation
-    # always takes the combined engine (its balls sit at the contact angle)
+    # the load chooses the engine, and --speed on a ball bearing (the ball dynamics: F_a = 0
+    # set above), never another life option; an angular-contact designation always takes the
+    # combined engine (its balls sit at the contact angle)
     if case.wants_combined or angular:
+        if at_speed:
+            _refuse_revolutions(
+                "the ball dynamics at --speed (a ball bearing is solved by the combined engine "
+                "at F_a = 0)",
+                "give --quasi-static for the static radial engine",
+            )
         _refuse_revolutions(
             "the combined engine (a load option, or an angular-contact bearing)",
             "it prints L10 = (C/P)^3 at P = X F_r + Y F_a and L10r instead",
@@ -190,8 +206,7 @@ def solve(
         from bearingload.studies.loaded_bearing import collect_warnings
 
         refuse_tilt_radius(case)
-        dynamics = "the ball dynamics at --speed are solved by the combined engine (give "
-        case.refuse(DYNAMICS_PARAMS, "the radial solve", dynamics + "--axial-load 0)")
+        _refuse_static_dynamics(case)
         service = None
         if case.by_hand:
             refuse_unused(case)
@@ -210,6 +225,39 @@ def solve(
         save_plot(figure, plot)  # the figure of this very solution, written whole
     emit(text, output)
     print_warnings(found, quiet)
+
+
+def _radial_at_speed(case: CaseOptions) -> tuple[CaseOptions, bool]:
+    """(the case, True) with F_a = 0 given where a radial case of a ball bearing (a BEARING or
+    the ball geometry, not an angular-contact designation) has --speed without --quasi-static:
+    the combined engine then solves it with the ball dynamics, as --axial-load 0 does
+    (docs/speed.md); otherwise (the case, False): rollers, --quasi-static, no speed, a pair."""
+    import dataclasses
+
+    from bearingload.bearings.designation import contact_exponent
+    from bearingload.constants import ROLLER_EXPONENT
+
+    if case.speed is None or case.quasi_static or case.wants_combined:
+        return case, False
+    if case.arrangement is not None or case.as_pair() is not None:
+        return case, False  # a pair: the static model at any speed, which gives its hours
+    if case.by_hand or contact_exponent(case.bearing) == ROLLER_EXPONENT:
+        return case, False  # --speed refused without the geometry; rollers: the radial engine
+    given = case.given | {"axial_load"}
+    return dataclasses.replace(case, axial_load=0.0, given=given), True
+
+
+def _refuse_static_dynamics(case: CaseOptions) -> None:
+    """--ball-density and --quasi-static on the radial engine: refused for a roller bearing
+    (no ball dynamics) and without a speed, --ball-density also under --quasi-static."""
+    from bearingload.bearings.designation import contact_exponent
+    from bearingload.constants import ROLLER_EXPONENT
+
+    if not case.by_hand and contact_exponent(case.bearing) == ROLLER_EXPONENT:
+        case.refuse(("ball_density",), f"a roller bearing ({case.bearing})", "the radial engine "
+                    "solves it by the static model at any speed: the ball dynamics at --speed "
+                    "are coded for ball bearings")  # fmt: skip
+    case.check_dynamics_flags()
 
 
 def _refuse_revolutions(where: str, instead: str) -> None:

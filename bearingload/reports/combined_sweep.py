@@ -144,7 +144,7 @@ def title(s: CombinedSweep) -> str:
 def _spread_table(s: CombinedSweep, context: str) -> Table:
     import dataclasses
 
-    from bearingload.reports.sweep import spread_table
+    from bearingload.reports.sweep import STATIC_AT_SPEED, spread_table
 
     angular = s.bearing.contact_angle is not None
     entries = []
@@ -158,6 +158,8 @@ def _spread_table(s: CombinedSweep, context: str) -> Table:
     notes = ["mean: over one period (the last position, equal to the first, left out).", *NOTES]
     if angular:  # the axial origin: the zero-load position, not the centred rings
         notes[2] = ANGULAR_NOTE
+    if s.speed is not None:
+        notes.append(STATIC_AT_SPEED)
     return spread_table(f"Over one ball pitch ({title(s)})", entries, notes, context)
 
 
@@ -233,6 +235,7 @@ def combined_sweep_json(s: CombinedSweep) -> dict[str, Any]:
     """The JSON document: inputs, ``steps``, ``rows``, ``summary``, ``units``, ``geometry`` (the
     bearing's, with the source of every value), ``warnings``."""
     from bearingload.reports.bearing import geometry_document
+    from bearingload.reports.sweep import static_at_speed
 
     summary: dict[str, Any] = {}
     for key in _spread_keys(s):
@@ -253,4 +256,4 @@ def combined_sweep_json(s: CombinedSweep) -> dict[str, Any]:
         "units": units(keys, 1.5),
         "geometry": geometry_document(s.bearing),
         "warnings": list(s.warnings),
-    }
+    } | static_at_speed(s.speed)

@@ -196,8 +196,17 @@ def life_table(
             columns.append(column(key))
     conds = conditions(t) | service_conditions(service)
     fixed = [] if human else [(column(k), "" if v is None else v) for k, v in conds.items()]
-    notes = _notes(t) + _service_notes(service) if human else []
+    static = list(_static(service).values())
+    notes = _notes(t) + _service_notes(service) + static if human else []
     return Table(title(t), columns, _rows(t, human, service), notes, fixed)
+
+
+def _static(service: Sequence[Any] | None) -> dict[str, str]:
+    """The note (json: key ``ball_dynamics``) that the table solves the static model, where a
+    speed was given."""
+    from bearingload.reports.sweep import static_at_speed
+
+    return static_at_speed(service[0].values.get("speed") if service else None)
 
 
 def _service_notes(service: Sequence[Any] | None) -> list[str]:
@@ -231,7 +240,7 @@ def life_document(t: LifeAgainstClearance, service: Sequence[Any] | None = None)
         "warnings": list(
             dict.fromkeys([*t.warnings, *(w for s in service or [] for w in s.warnings)])
         ),
-    }
+    } | _static(service)
 
 
 def life_vs_clearance_table() -> Table:

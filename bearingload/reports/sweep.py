@@ -53,10 +53,24 @@ def _fixed_lives(s: CageSweep) -> dict[str, Any]:
     return out
 
 
+#: The note of sweep and table life at a speed: they solve the static model (docs/speed.md).
+STATIC_AT_SPEED = (
+    "Ball dynamics left out: the static model (--speed gives the lives in hours only); "
+    "'bearingload solve' gives them (centrifugal force, gyroscopic moment; docs/speed.md)."
+)
+
+
+def static_at_speed(speed: float | None, balls: bool = True) -> dict[str, str]:
+    """The json key ``ball_dynamics`` (:data:`STATIC_AT_SPEED`) of a static report of ball
+    bearings at a ``speed``; none without a speed or for rollers (no ball dynamics)."""
+    return {"ball_dynamics": STATIC_AT_SPEED} if speed is not None and balls else {}
+
+
 def _life_notes(s: CageSweep) -> list[str]:
+    static = list(static_at_speed(s.speed, s.exponent == 1.5).values())
     if s.rotating is None:
-        return []
-    return [
+        return static
+    return static + [
         f"L10r: ISO/TS 16281:2008, 4.3, from the exact ball loads at each cage position, every "
         f"ball at the contact angle 0 (Q_ci, Q_ce from C; {s.rotating} ring rotating; "
         "--rotating), as solve gives it; L10: ISO 281 at P = F_r, the same at every position."
@@ -252,7 +266,7 @@ def sweep_json(s: CageSweep) -> dict[str, Any]:
         "summary": summary,
         "units": units(keys, s.exponent),
         "warnings": sweep_warnings(s),
-    }
+    } | static_at_speed(s.speed, s.exponent == 1.5)
 
 
 def sweep_warnings(s: CageSweep) -> list[str]:
