@@ -252,3 +252,18 @@ def test_catalog_show_prints_them_with_units():
     doc = json.loads(invoke("catalog", "show", "7205B", "--format", "json").output)
     assert doc["limiting_speed_grease"] == doc["limiting_speed_oil"] == "-"
     assert "none read" in doc["limiting_speed_source"]
+
+
+def test_table_life_warns_above_the_limit_as_solve_does(capsys):
+    """table life --speed above the catalogue's limit: the line solve prints, on stderr and in the
+    json's warnings (there was none); at the limit, none."""
+    code, out, err = run_entry(capsys, "table", "life", "-b", "6205", "-F", "1kN", "--speed",
+                               "20000", "--format", "json")  # fmt: skip
+    assert code == 0, err
+    (line,) = _warned(err)
+    assert "20000 rpm is above the limiting speeds of 6205 with oil lubrication, 15000" in line
+    assert json.loads(out)["warnings"] == [line.removeprefix("Warning: ")]
+    _, _, solved = run_entry(capsys, "solve", "6205", "-F", "1kN", "--speed", "20000")
+    assert _warned(solved) == [line]
+    code, _, err = run_entry(capsys, "table", "life", "-b", "6205", "-F", "1kN", "--speed", "13000")
+    assert code == 0 and _warned(err) == []

@@ -229,7 +229,11 @@ def _life(
     fmt: str,
     output: str | None,
 ) -> None:
-    """``table life``: resolve the bearing as solve does, solve every clearance, emit."""
+    """``table life``: resolve the bearing as solve does, solve every clearance, emit; a speed
+    above the catalogue's limiting speed warns, as in solve."""
+    import dataclasses
+
+    from bearingload.bearings.checks import speed_findings
     from bearingload.cli.cases import resolve_bearings
     from bearingload.cli.options import print_warnings
     from bearingload.reports.life_clearance import life_report
@@ -256,6 +260,8 @@ def _life(
             raise
         message = str(exc).split(": ", 1)[-1]
         raise click.UsageError(f"Invalid value for '--clearances': {message}") from exc
+    speed = [w for w in speed_findings(case.speed, b) if w not in result.warnings]
+    result = dataclasses.replace(result, warnings=(*result.warnings, *speed))
     service = _service(case, result)
     text = life_report(result, fmt, service)
     found = list(result.warnings)
