@@ -218,3 +218,13 @@ def test_sweep_refuses_a_contact_angle_without_denying_angular_designations(caps
     code, _, err = run_entry(capsys, "sweep", *HAND_25, "-F", "1kN", "-A", "1kN")
     assert code == 2 and "--contact-angle" in err and "7205B" in err
     assert "an angular-contact bearing is solved by 'solve' only" not in err
+
+
+@pytest.mark.parametrize("table", ["life", "k"])
+def test_table_refuses_a_contact_angle_without_denying_sweep_and_batch(capsys, table):
+    # the refusal said 'an angular-contact bearing is solved by 'solve' only', while 'sweep
+    # 7205B' and a batch row of 7205B solve one (its own designation refusal names all three)
+    code, _, err = run_entry(capsys, "table", table, *HAND_25, "-F", "1kN", "-A", "1kN")
+    assert code == 2 and err.startswith("Error: ") and "--contact-angle" in err
+    assert "an angular-contact bearing is solved by 'solve' only" not in err
+    assert "'sweep'" in err and "'batch'" in err

@@ -133,7 +133,9 @@ def table(
     case.refuse(
         ("contact_angle",),
         f"table {name}",
-        "an angular-contact bearing is solved by 'solve' only (docs/angular_contact.md)",
+        "a ring given by hand with its contact angle is solved by 'solve' only; an "
+        "angular-contact designation (7205B) by 'solve', 'sweep' and 'batch' "
+        "(docs/angular_contact.md)",
     )
     case.refuse(DYNAMICS_PARAMS, f"table {name}", DYNAMICS_REFUSAL)
     from bearingload.bearings.angular import parse_angular
