@@ -1,0 +1,56 @@
+"""Review of the late merges (a radial solve of a ball bearing at --speed through the ball
+dynamics, the limiting-speed warnings, --clearance-pick refusals): each test fails on the code
+before its fix."""
+
+from __future__ import annotations
+
+import json
+from typing import Any
+
+from .cli_helpers import run_entry
+
+
+def _error(capsys: Any, *args: str) -> str:
+    """The one ``Error:`` line of a refused command line (exit 2, nothing on stdout)."""
+    code, out, err = run_entry(capsys, *args)
+    lines = err.strip().splitlines()
+    assert code == 2 and out == "" and len(lines) == 1 and lines[0].startswith("Error:"), err
+    return lines[0]
+
+
+def _warnings(err: str) -> list[str]:
+    return [w.removeprefix("Warning: ") for w in err.splitlines() if w.startswith("Warning:")]
+
+
+def test_a_too_small_load_at_speed_names_quasi_static(capsys):
+    """solve 6205 -F 1e-9N --speed 3000 is refused by the combined solver the ball dynamics
+    use; its hint was 'the radial solver, without an axial load, takes any load' though no
+    axial load was given: it names --quasi-static, which solves the case. With -A 0 the old
+    hint stays (the user chose the combined engine)."""
+    line = _error(capsys, "solve", "6205", "-F", "1e-9N", "--speed", "3000")
+    assert "'--load'" in line and "--quasi-static" in line, line
+    assert "without an axial load" not in line
+    code, out, _ = run_entry(capsys, "solve", "6205", "-F", "1e-9N", "--speed", "3000",
+                             "--quasi-static", "--format", "json")  # fmt: skip
+    assert code == 0 and json.loads(out)["cases"][0]["load"] == 1e-9
+    line = _error(capsys, "solve", "6205", "-F", "1e-9N", "-A", "0", "--speed", "3000")
+    assert "the radial solver, without an axial load, takes any load" in line
+
+
+def test_a_too_small_batch_row_at_speed_names_quasi_static(capsys, tmp_path):
+    """The batch row's reason likewise names quasi_static for a radial row at a speed; a row
+    with an axial_load cell of 0 and an angular-contact row keep the solver's hint."""
+    path = tmp_path / "rows.csv"
+    path.write_text(
+        "bearing,load,axial_load,speed\n6205,1e-9,,3000\n6205,1e-9,0,3000\n7205B,1e-9,,3000\n"
+        "6205,1kN,,3000\n",
+        encoding="utf-8",
+    )
+    code, _, err = run_entry(capsys, "batch", str(path), "--format", "csv")
+    assert code == 1
+    reasons = {w.split(":", 1)[0]: w for w in _warnings(err) if w.startswith("row ")}
+    assert "quasi_static true gives the static radial engine" in reasons["row 2"]
+    for row in ("row 3", "row 4"):
+        assert "the radial solver, without an axial load, takes any load" in reasons[row]
+        assert "quasi_static" not in reasons[row]
+    assert "row 5" not in reasons
