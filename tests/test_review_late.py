@@ -54,3 +54,31 @@ def test_a_too_small_batch_row_at_speed_names_quasi_static(capsys, tmp_path):
         assert "the radial solver, without an axial load, takes any load" in reasons[row]
         assert "quasi_static" not in reasons[row]
     assert "row 5" not in reasons
+
+
+def test_table_life_warns_above_the_limiting_speed(capsys):
+    """table life -b 6205 --speed 1e5 printed no limiting-speed warning (solve, sweep and
+    batch do): it prints solve's line, json lists it, none at or below the limit."""
+    args = ("table", "life", "-b", "6205", "-F", "1kN")
+    for speed, bearing in (("1e5", "6205"), ("1400rad/s", "6205"), ("1e5", "6205-2RS")):
+        case = ("table", "life", "-b", bearing, "-F", "1kN", "--speed", speed)
+        code, _, err = run_entry(capsys, *case)
+        _, _, solved = run_entry(capsys, "solve", bearing, "-F", "1kN", "--speed", speed,
+                                 "--quasi-static")  # fmt: skip
+        assert code == 0 and _warnings(err) == _warnings(solved) and len(_warnings(err)) == 1
+        assert "limiting speed" in _warnings(err)[0]
+        code, out, err = run_entry(capsys, *case, "--format", "json")
+        assert json.loads(out)["warnings"] == _warnings(err)
+    for speed in ("13000", "1361.356816555577rad/s"):  # at the grease limit: no warning
+        code, _, err = run_entry(capsys, *args, "--speed", speed)
+        assert code == 0 and _warnings(err) == [], err
+
+
+def test_table_life_clearance_pick_range_is_refused_as_every_pick(capsys):
+    """table life --clearance-pick range said 'table life takes min, mean or max', which it
+    refuses too: it gets the one refusal of every pick."""
+    line = _error(capsys, "table", "life", "-b", "6205", "-F", "1kN", "--clearance-pick", "range")
+    assert line == _error(capsys, "table", "life", "-b", "6205", "-F", "1kN",
+                          "--clearance-pick", "max")  # fmt: skip
+    assert "takes min, mean or max" not in line
+    assert "takes min, mean or max" in _error(capsys, "table", "k", "--clearance-pick", "range")

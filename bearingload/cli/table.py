@@ -3,6 +3,7 @@ bearing's ISO/TS 16281 life against its clearance."""
 
 from __future__ import annotations
 
+import dataclasses
 from typing import Any
 
 import click
@@ -151,7 +152,6 @@ def table(
             + " (docs/angular_contact.md)"
         )
     k_given = case.stiffness_value()  # N/mm^m
-    refuse_range(case, f"table {name}")
     if name == "life":
         refused = {
             "--z-max": (_given("z_max"), "it is one bearing, not a table over z"),
@@ -169,6 +169,7 @@ def table(
             raise click.UsageError("Missing option '--load' / '-F': table life needs F_r (N)")
         _life(case, k_given, clearances, fmt, output)
         return
+    refuse_range(case, f"table {name}")  # table life refuses every pick (above)
     case.refuse(COMBINED_PARAMS, f"table {name}", RADIAL_ONLY)
     for option, value in (("--balls", case.balls), ("--clearances", clearances)):
         if value is not None:
@@ -256,6 +257,11 @@ def _life(
             raise
         message = str(exc).split(": ", 1)[-1]
         raise click.UsageError(f"Invalid value for '--clearances': {message}") from exc
+    if case.speed is not None:  # the limiting speed, as solve, sweep and batch warn on it
+        from bearingload.bearings.checks import speed_findings
+
+        more = [w for w in speed_findings(case.speed, b) if w not in result.warnings]
+        result = dataclasses.replace(result, warnings=(*result.warnings, *more))
     service = _service(case, result)
     text = life_report(result, fmt, service)
     found = list(result.warnings)
