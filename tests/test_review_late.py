@@ -82,3 +82,23 @@ def test_table_life_clearance_pick_range_is_refused_as_every_pick(capsys):
                           "--clearance-pick", "max")  # fmt: skip
     assert "takes min, mean or max" not in line
     assert "takes min, mean or max" in _error(capsys, "table", "k", "--clearance-pick", "range")
+
+
+def test_the_warnings_of_a_clearance_range_at_speed_name_their_pick(capsys):
+    """solve 6205 -F 30kN -G C3 --clearance-pick range --speed 20000 (the combined engine with
+    the ball dynamics) printed the contact pressure warning of each pick three times unlabelled;
+    the static radial solve of the same range labels them 'G_r min: ...'. They are labelled as
+    there, a warning every pick shares given once; json lists the printed lines; -A 0 too."""
+    case = ("solve", "6205", "-F", "30kN", "-G", "C3", "--clearance-pick", "range")
+    _, _, static = run_entry(capsys, *case, "--speed", "20000", "--quasi-static")
+    for extra in (("--speed", "20000"), ("-A", "0")):
+        code, _, err = run_entry(capsys, *case, *extra)
+        found = _warnings(err)
+        pressures = [w for w in found if "maximum contact pressure" in w]
+        assert code == 0 and len(pressures) == 3, err
+        assert [w.split(":", 1)[0] for w in pressures] == ["G_r min", "G_r mean", "G_r max"]
+        labels = [w.split(":", 1)[0] for w in _warnings(static) if "contact pressure" in w]
+        assert labels == ["G_r min", "G_r mean", "G_r max"]
+        assert len(set(found)) == len(found) and any(w.startswith("static safety") for w in found)
+        code, out, err = run_entry(capsys, *case, *extra, "--format", "json")
+        assert json.loads(out)["warnings"] == _warnings(err) == found

@@ -361,7 +361,7 @@ def _combined(
     """The combined-load engine on resolved bearings: (report, warnings, its figure);
     ``at_speed``: a radial case of a ball bearing solved with the ball dynamics at F_a = 0."""
     from bearingload.cli.cases import combined_cases
-    from bearingload.reports.combined import combined_report
+    from bearingload.reports.combined import collect_combined_warnings, combined_report
     from bearingload.reports.solve import printed_warnings
 
     try:
@@ -376,7 +376,7 @@ def _combined(
     text = combined_report(
         cases, fmt, per_ball=per_ball, show_geometry=show_geometry, service=service
     )
-    found = printed_warnings([w for c in cases for w in c.warnings], service)
+    found = printed_warnings(collect_combined_warnings(cases), service)
     return text, found, functools.partial(_figure, "combined_loads_figure", cases)
 
 
