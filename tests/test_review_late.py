@@ -7,6 +7,12 @@ from __future__ import annotations
 import json
 from typing import Any
 
+import pytest
+
+from bearingload.bearings.resolve import resolve_bearing
+from bearingload.errors import InputError
+from bearingload.studies.combined_bearing import solve_combined_bearing
+
 from .cli_helpers import run_entry
 
 
@@ -102,3 +108,28 @@ def test_the_warnings_of_a_clearance_range_at_speed_name_their_pick(capsys):
         assert len(set(found)) == len(found) and any(w.startswith("static safety") for w in found)
         code, out, err = run_entry(capsys, *case, *extra, "--format", "json")
         assert json.loads(out)["warnings"] == _warnings(err) == found
+
+
+def test_a_batch_row_at_speed_with_the_outer_ring_rotating_is_skipped(capsys, tmp_path):
+    """solve refuses --rotating outer with the ball dynamics (they are the inner ring's); a
+    batch row of a ball bearing with a speed and rotating outer was solved (the radial row by
+    the combined engine at F_a = 0, a combined row too), its L10r that of the outer ring. It is
+    skipped naming quasi_static; with quasi_static true it is solved as solve --quasi-static
+    solves it. The library refuses the pair of arguments too."""
+    path = tmp_path / "rows.csv"
+    path.write_text(
+        "bearing,load,axial_load,speed,rotating,quasi_static\n6205,1kN,,3000,outer,\n"
+        "6205,1kN,100,3000,outer,\n6205,1kN,,3000,outer,true\n",
+        encoding="utf-8",
+    )
+    code, out, err = run_entry(capsys, "batch", str(path), "--format", "json")
+    assert code == 1
+    reasons = [w for w in _warnings(err) if w.startswith(("row 2", "row 3"))]
+    assert len(reasons) == 2 and all("rotating: " in w and "quasi_static" in w for w in reasons)
+    (row,) = json.loads(out)["cases"]
+    _, solved, _ = run_entry(capsys, "solve", "6205", "-F", "1kN", "--speed", "3000",
+                             "--rotating", "outer", "--quasi-static", "--format", "json")  # fmt: skip
+    want = json.loads(solved)["cases"][0]
+    assert row["row"] == 4 and row["reference_rating_life"] == want["reference_rating_life"]
+    with pytest.raises(InputError, match="rotating"):
+        solve_combined_bearing([resolve_bearing("6205")], 1000.0, speed=3000.0, rotating="outer")

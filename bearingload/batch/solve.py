@@ -267,6 +267,10 @@ class BatchSolver:
         lever = cols["_lever"][i] = tilt_lever(v.get("tilt_radius"), b.pitch_diameter)
         tilts = (*(k in v for k in ("moment", "misalignment", "moment_cross")), lever is None)
         dynamics = _dynamics(v)
+        if dynamics[0] and v.get("rotating") == "outer":  # as solve refuses --rotating outer
+            raise InputError("rotating", "the ball dynamics at a speed are coded for the inner "
+                             "ring turning (docs/speed.md); set quasi_static true for the "
+                             "static model with the outer ring's lives")  # fmt: skip
         if dynamics[0] and b.stiffness_given:  # as the library refuses it, in the batch's words
             raise InputError("speed", "the ball dynamics need each contact's Hertz stiffness "
                              "from the ball geometry, not a given ball stiffness: leave the "
