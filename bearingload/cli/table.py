@@ -260,8 +260,8 @@ def _life(
     if case.speed is not None:  # the limiting speed, as solve, sweep and batch warn on it
         from bearingload.bearings.checks import speed_findings
 
-        more = [w for w in speed_findings(case.speed, b) if w not in result.warnings]
-        result = dataclasses.replace(result, warnings=(*result.warnings, *more))
+        limit = [w for w in speed_findings(case.speed, b) if w not in result.warnings]
+        result = dataclasses.replace(result, warnings=(*result.warnings, *limit))
     service = _service(case, result)
     text = life_report(result, fmt, service)
     found = list(result.warnings)
