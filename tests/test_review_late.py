@@ -133,3 +133,15 @@ def test_a_batch_row_at_speed_with_the_outer_ring_rotating_is_skipped(capsys, tm
     assert row["row"] == 4 and row["reference_rating_life"] == want["reference_rating_life"]
     with pytest.raises(InputError, match="rotating"):
         solve_combined_bearing([resolve_bearing("6205")], 1000.0, speed=3000.0, rotating="outer")
+
+
+def test_another_exponent_on_a_ball_geometry_does_not_blame_a_designation(capsys):
+    """solve -z 9 --ball-diameter ... --pitch-diameter ... -m 10/9 (at --speed too) was
+    refused with '... not a bearing designation', though none was given: it names the ball
+    geometry; a designation keeps its words."""
+    ring = ("-z", "9", "--ball-diameter", "7.938", "--pitch-diameter", "38.5", "-F", "1kN")
+    for extra in ((), ("--speed", "3000")):
+        line = _error(capsys, "solve", *ring, "-m", "10/9", *extra)
+        assert "'--exponent'" in line and line.endswith("not its ball geometry"), line
+    line = _error(capsys, "solve", "6205", "-F", "1kN", "-m", "10/9")
+    assert line.endswith("not a bearing designation"), line
