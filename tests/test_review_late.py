@@ -145,3 +145,24 @@ def test_another_exponent_on_a_ball_geometry_does_not_blame_a_designation(capsys
         assert "'--exponent'" in line and line.endswith("not its ball geometry"), line
     line = _error(capsys, "solve", "6205", "-F", "1kN", "-m", "10/9")
     assert line.endswith("not a bearing designation"), line
+
+
+def test_a_roller_row_quasi_static_with_a_blank_ball_density_is_solved(capsys, tmp_path):
+    """A roller bearing's row with quasi_static true was skipped ('ball_density: a roller
+    bearing ...') whenever the file had a ball_density column, its own cell blank: solve
+    NU205 --speed 3000 --quasi-static is accepted. The row equals solve's; a ball_density
+    given on a roller row is still refused."""
+    path = tmp_path / "rows.csv"
+    path.write_text(
+        "bearing,load,speed,quasi_static,ball_density\nNU205,1kN,3000,true,\n"
+        "NU205,1kN,3000,,3200\n",
+        encoding="utf-8",
+    )
+    code, out, err = run_entry(capsys, "batch", str(path), "--format", "json")
+    reasons = [w for w in _warnings(err) if w.startswith("row ")]
+    assert code == 1 and len(reasons) == 1 and reasons[0].startswith("row 3: ball_density: ")
+    (row,) = json.loads(out)["cases"]
+    _, solved, _ = run_entry(capsys, "solve", "NU205", "-F", "1kN", "--speed", "3000",
+                             "--quasi-static", "--format", "json")  # fmt: skip
+    want = json.loads(solved)["cases"][0]
+    assert row["row"] == 2 and row["q_max"] == want["q_max"] and row["speed"] == 3000.0

@@ -404,8 +404,9 @@ def _refuse_radial_dynamics(
         if name is None or i in bad or keys[i] is None or keys[i][0] == "combined":
             continue
         v = {c: cols[c][i] for c in ("speed", *DYNAMICS_COLUMNS) if c in cols}
+        roller = keys[i][0] == "bearing" and keys[i][1].kind == "roller"
         try:
-            if keys[i][0] == "bearing" and keys[i][1].kind == "roller" and "ball_density" in v:
+            if roller and v.get("ball_density") is not None:  # a blank cell is None
                 raise InputError("ball_density", "a roller bearing is solved by the static "
                                  "model at any speed: the ball dynamics are coded for ball "
                                  "bearings")  # fmt: skip
