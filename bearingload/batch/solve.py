@@ -36,7 +36,7 @@ from bearingload.batch.read import (
     row_message,
 )
 from bearingload.bearings.oil import OIL_INPUTS
-from bearingload.errors import BearingloadError, InputError
+from bearingload.errors import BearingloadError, ConvergenceError, InputError
 
 
 @dataclass
@@ -541,7 +541,7 @@ def _solve_combined(
             tilt_radius=None if groove else given("_lever"), speed=given("speed", at_speed),
             ball_density=None if rho is None else rho * 1e-9,
         )  # fmt: skip
-    except InputError as exc:
+    except (InputError, ConvergenceError) as exc:
         cells = [cols[c][i] for c in LOAD_COLUMNS if c in cols for i in idx]
         radial = at_speed and b.contact_angle is None and all(x is None for x in cells)
         hinted = _quasi_static_hint(exc) if radial else None
@@ -556,12 +556,16 @@ def _solve_combined(
     return out | {"_bearing": b, "_load": out["equivalent_load"], "_angle": angle}
 
 
-def _quasi_static_hint(exc: InputError) -> InputError | None:
+def _quasi_static_hint(exc: InputError | ConvergenceError) -> BearingloadError | None:
     """The combined solver's refusal of loads too small for it on radial rows at a speed (the
     ball dynamics at an axial load of 0): it named 'the radial solver, without an axial load',
-    which these rows are; quasi_static true is the way to it (as solve's --quasi-static)."""
+    which these rows are; quasi_static true is the way to it (as solve's --quasi-static). The
+    dynamics' non-convergence on such rows names the same way."""
     from bearingload.models.combined import RADIAL_TAKES_ANY_LOAD
 
+    if isinstance(exc, ConvergenceError):
+        return BearingloadError(f"{exc}; quasi_static true gives the static radial engine (the "
+                                "ball dynamics left out)")  # fmt: skip
     message = str(exc).split(": ", 1)[-1]
     if RADIAL_TAKES_ANY_LOAD not in message:
         return None

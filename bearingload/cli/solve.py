@@ -26,7 +26,7 @@ from bearingload.cli.options import (
     quiet_option,
 )
 from bearingload.cli.plot import ball_loads_plot_option, check_plot, save_plot
-from bearingload.errors import InputError
+from bearingload.errors import ConvergenceError, InputError
 from bearingload.units import plausible_ranges_help
 
 
@@ -248,6 +248,10 @@ def _radial_at_speed(case: CaseOptions) -> tuple[CaseOptions, bool]:
     return dataclasses.replace(case, axial_load=0.0, given=given), True
 
 
+#: What a radial solve of a ball bearing at --speed the ball dynamics cannot solve can do.
+QUASI_STATIC_WAY = "--quasi-static gives the static radial engine (the ball dynamics left out)"
+
+
 def _quasi_static_hint(exc: InputError) -> InputError | None:
     """The combined solver's refusal of loads too small for it, on a radial solve at --speed
     (the ball dynamics: F_a = 0 set, no axial load given): it named 'the radial solver, without
@@ -371,6 +375,10 @@ def _combined(
         if hinted is None:
             raise
         raise hinted from exc
+    except ConvergenceError as exc:  # a radial case at speed: the static engine solves it
+        if not at_speed:
+            raise
+        raise click.ClickException(f"{exc}; {QUASI_STATIC_WAY}") from exc
     cases = with_speed_warnings(solved, case.speed)
     service = service_lives(case, [combined_basis(c) for c in cases])
     text = combined_report(
