@@ -74,7 +74,7 @@ def test_sweep_takes_the_maker_of_solve():
         (("sweep", "306", "-F", "1kN", "-G", "C3", "--clearance-pick", "range"),
          "Invalid value for '--clearance-pick': 'range'"),
         (("table", "life", "-b", "6205", "-F", "1kN", "--clearance-pick", "range"),
-         "Invalid value for '--clearance-pick': 'range'"),
+         "--clearance-pick cannot be used with table life"),
         (("sweep", "-z", "8", "-K", "1e5", "-F", "1kN", "--maker", "SKF"), "--maker needs"),
         (("table", "k", "--maker", "SKF"), "--maker needs --bearing"),
         (("table", "k", "--moment-cross", "1Nm"), "--moment-cross cannot be used with table k"),

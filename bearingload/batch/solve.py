@@ -36,7 +36,7 @@ from bearingload.batch.read import (
     row_message,
 )
 from bearingload.bearings.oil import OIL_INPUTS
-from bearingload.errors import BearingloadError, InputError
+from bearingload.errors import BearingloadError, ConvergenceError, InputError
 
 
 @dataclass
@@ -267,6 +267,10 @@ class BatchSolver:
         lever = cols["_lever"][i] = tilt_lever(v.get("tilt_radius"), b.pitch_diameter)
         tilts = (*(k in v for k in ("moment", "misalignment", "moment_cross")), lever is None)
         dynamics = _dynamics(v)
+        if dynamics[0] and v.get("rotating") == "outer":  # as solve refuses --rotating outer
+            raise InputError("rotating", "the ball dynamics at a speed are coded for the inner "
+                             "ring turning (docs/speed.md); set quasi_static true for the "
+                             "static model with the outer ring's lives")  # fmt: skip
         if dynamics[0] and b.stiffness_given:  # as the library refuses it, in the batch's words
             raise InputError("speed", "the ball dynamics need each contact's Hertz stiffness "
                              "from the ball geometry, not a given ball stiffness: leave the "
@@ -400,8 +404,9 @@ def _refuse_radial_dynamics(
         if name is None or i in bad or keys[i] is None or keys[i][0] == "combined":
             continue
         v = {c: cols[c][i] for c in ("speed", *DYNAMICS_COLUMNS) if c in cols}
+        roller = keys[i][0] == "bearing" and keys[i][1].kind == "roller"
         try:
-            if keys[i][0] == "bearing" and keys[i][1].kind == "roller" and "ball_density" in v:
+            if roller and v.get("ball_density") is not None:  # a blank cell is None
                 raise InputError("ball_density", "a roller bearing is solved by the static "
                                  "model at any speed: the ball dynamics are coded for ball "
                                  "bearings")  # fmt: skip
@@ -527,21 +532,46 @@ def _solve_combined(
         return np.array(_take(cols, name, idx, default), dtype=float) if on else None
 
     rho = given("ball_density", density)  # [kg/m^3], as solve's --ball-density
-
-    (case,) = solve_combined_bearing(
-        [b], given("load"), given("axial_load", default=0.0),
-        cage_angle=_angles(_take(cols, "cage_angle", idx, 0.0), b.balls),
-        moment=given("moment", moment), misalignment=given("misalignment", misaligned),
-        rotating=rotating, dynamic_rating=c_r, moment_cross=given("moment_cross", cross),
-        tilt_radius=None if groove else given("_lever"), speed=given("speed", at_speed),
-        ball_density=None if rho is None else rho * 1e-9,
-    )  # fmt: skip
+    try:
+        (case,) = solve_combined_bearing(
+            [b], given("load"), given("axial_load", default=0.0),
+            cage_angle=_angles(_take(cols, "cage_angle", idx, 0.0), b.balls),
+            moment=given("moment", moment), misalignment=given("misalignment", misaligned),
+            rotating=rotating, dynamic_rating=c_r, moment_cross=given("moment_cross", cross),
+            tilt_radius=None if groove else given("_lever"), speed=given("speed", at_speed),
+            ball_density=None if rho is None else rho * 1e-9,
+        )  # fmt: skip
+    except (InputError, ConvergenceError) as exc:
+        cells = [cols[c][i] for c in LOAD_COLUMNS if c in cols for i in idx]
+        radial = at_speed and b.contact_angle is None and all(x is None for x in cells)
+        hinted = _quasi_static_hint(exc) if radial else None
+        if hinted is None:
+            raise
+        raise hinted from exc
     out = combined_columns(case) | _contacts(case.result, len(idx), b.contact_angle)
     loads = np.asarray(case.result.ball_loads, dtype=float).reshape(len(idx), -1)
     heaviest = np.argmax(loads, axis=-1)[:, None]
     angles = np.asarray(case.result.contact_angles, dtype=float).reshape(len(idx), -1)
     angle = np.take_along_axis(angles, heaviest, axis=-1)[:, 0]
     return out | {"_bearing": b, "_load": out["equivalent_load"], "_angle": angle}
+
+
+def _quasi_static_hint(exc: InputError | ConvergenceError) -> BearingloadError | None:
+    """The combined solver's refusal of loads too small for it on radial rows at a speed (the
+    ball dynamics at an axial load of 0): it named 'the radial solver, without an axial load',
+    which these rows are; quasi_static true is the way to it (as solve's --quasi-static). The
+    dynamics' non-convergence on such rows names the same way."""
+    from bearingload.models.combined import RADIAL_TAKES_ANY_LOAD
+
+    if isinstance(exc, ConvergenceError):
+        return BearingloadError(f"{exc}; quasi_static true gives the static radial engine (the "
+                                "ball dynamics left out)")  # fmt: skip
+    message = str(exc).split(": ", 1)[-1]
+    if RADIAL_TAKES_ANY_LOAD not in message:
+        return None
+    hint = ("at a speed a ball bearing is solved by the combined engine (the ball dynamics); "
+            "quasi_static true gives the static radial engine, which takes any load")  # fmt: skip
+    return InputError(exc.parameter, message.replace(RADIAL_TAKES_ANY_LOAD, hint))
 
 
 def _contacts(res: Any, n: int, contact_angle: float | None) -> dict[str, Any]:

@@ -192,10 +192,11 @@ def check_exponent(bearing: ResolvedBearing, exponent: float | None) -> None:
         (parameter ``exponent``) naming the contact and its m.
     """
     if exponent is not None and exponent != bearing.exponent:
+        given = "a bearing designation" if bearing.designation is not None else "its ball geometry"
         raise InputError(
             "exponent",
             f"{CONTACTS[bearing.kind]}; another exponent needs a ring given by its stiffness, "
-            "not a bearing designation",
+            f"not {given}",
         )
 
 

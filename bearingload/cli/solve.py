@@ -26,6 +26,7 @@ from bearingload.cli.options import (
     quiet_option,
 )
 from bearingload.cli.plot import ball_loads_plot_option, check_plot, save_plot
+from bearingload.errors import ConvergenceError, InputError
 from bearingload.units import plausible_ranges_help
 
 
@@ -200,7 +201,7 @@ def solve(
         bearings = with_ratings(resolve_bearings(case, k_given), case)
         if bearings[0].kind == "ball" and bearings[0].has_geometry:
             check_rotating(case, bearings[0], methods)
-        text, found, figure = _combined(bearings, case, fmt, per_ball, show_geometry)
+        text, found, figure = _combined(bearings, case, fmt, per_ball, show_geometry, at_speed)
     else:
         from bearingload.reports.solve import printed_warnings, solve_report
         from bearingload.studies.loaded_bearing import collect_warnings
@@ -245,6 +246,24 @@ def _radial_at_speed(case: CaseOptions) -> tuple[CaseOptions, bool]:
         return case, False  # --speed refused without the geometry; rollers: the radial engine
     given = case.given | {"axial_load"}
     return dataclasses.replace(case, axial_load=0.0, given=given), True
+
+
+#: What a radial solve of a ball bearing at --speed the ball dynamics cannot solve can do.
+QUASI_STATIC_WAY = "--quasi-static gives the static radial engine (the ball dynamics left out)"
+
+
+def _quasi_static_hint(exc: InputError) -> InputError | None:
+    """The combined solver's refusal of loads too small for it, on a radial solve at --speed
+    (the ball dynamics: F_a = 0 set, no axial load given): it named 'the radial solver, without
+    an axial load', which the user gave; --quasi-static is the way to it."""
+    from bearingload.models.combined import RADIAL_TAKES_ANY_LOAD
+
+    message = str(exc).split(": ", 1)[-1]
+    if RADIAL_TAKES_ANY_LOAD not in message:
+        return None
+    hint = ("at --speed a ball bearing is solved by the combined engine (the ball dynamics); "
+            "--quasi-static gives the static radial engine, which takes any load")  # fmt: skip
+    return InputError(exc.parameter, message.replace(RADIAL_TAKES_ANY_LOAD, hint))
 
 
 def _refuse_static_dynamics(case: CaseOptions) -> None:
@@ -340,19 +359,32 @@ def _radial(
 
 
 def _combined(
-    bearings: list[Any], case: CaseOptions, fmt: str, per_ball: bool, show_geometry: bool
-) -> tuple[str, list[str], Callable[[], Any]]:
-    """The combined-load engine on resolved bearings: (report, warnings, its figure)."""
+    bearings: list[Any], case: CaseOptions, fmt: str, per_ball: bool, show_geometry: bool,
+    at_speed: bool = False,
+) -> tuple[str, list[str], Callable[[], Any]]:  # fmt: skip
+    """The combined-load engine on resolved bearings: (report, warnings, its figure);
+    ``at_speed``: a radial case of a ball bearing solved with the ball dynamics at F_a = 0."""
     from bearingload.cli.cases import combined_cases
-    from bearingload.reports.combined import combined_report
+    from bearingload.reports.combined import collect_combined_warnings, combined_report
     from bearingload.reports.solve import printed_warnings
 
-    cases = with_speed_warnings(combined_cases(bearings, case), case.speed)
+    try:
+        solved = combined_cases(bearings, case)
+    except InputError as exc:
+        hinted = _quasi_static_hint(exc) if at_speed else None
+        if hinted is None:
+            raise
+        raise hinted from exc
+    except ConvergenceError as exc:  # a radial case at speed: the static engine solves it
+        if not at_speed:
+            raise
+        raise click.ClickException(f"{exc}; {QUASI_STATIC_WAY}") from exc
+    cases = with_speed_warnings(solved, case.speed)
     service = service_lives(case, [combined_basis(c) for c in cases])
     text = combined_report(
         cases, fmt, per_ball=per_ball, show_geometry=show_geometry, service=service
     )
-    found = printed_warnings([w for c in cases for w in c.warnings], service)
+    found = printed_warnings(collect_combined_warnings(cases), service)
     return text, found, functools.partial(_figure, "combined_loads_figure", cases)
 
 

@@ -3,6 +3,7 @@ bearing's ISO/TS 16281 life against its clearance."""
 
 from __future__ import annotations
 
+import dataclasses
 from typing import Any
 
 import click
@@ -153,7 +154,6 @@ def table(
             + " (docs/angular_contact.md)"
         )
     k_given = case.stiffness_value()  # N/mm^m
-    refuse_range(case, f"table {name}")
     if name == "life":
         refused = {
             "--z-max": (_given("z_max"), "it is one bearing, not a table over z"),
@@ -171,6 +171,7 @@ def table(
             raise click.UsageError("Missing option '--load' / '-F': table life needs F_r (N)")
         _life(case, k_given, clearances, fmt, output)
         return
+    refuse_range(case, f"table {name}")  # table life refuses every pick (above)
     case.refuse(COMBINED_PARAMS, f"table {name}", RADIAL_ONLY)
     for option, value in (("--balls", case.balls), ("--clearances", clearances)):
         if value is not None:
@@ -233,8 +234,6 @@ def _life(
 ) -> None:
     """``table life``: resolve the bearing as solve does, solve every clearance, emit; a speed
     above the catalogue's limiting speed warns, as in solve."""
-    import dataclasses
-
     from bearingload.bearings.checks import speed_findings
     from bearingload.cli.cases import resolve_bearings
     from bearingload.cli.options import print_warnings

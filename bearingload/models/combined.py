@@ -738,8 +738,14 @@ def _check_scale(f_ref: np.ndarray, k_ref: np.ndarray, big_a: np.ndarray) -> Non
             "radial_load",
             f"the loads are too small for the combined solver (the largest of F_r, |F_a| and "
             f"M/R_i is {float(np.min(f_ref)):.3g} N; it takes at least {f_min:.2g} N for this "
-            "bearing); the radial solver, without an axial load, takes any load",
+            f"bearing); {RADIAL_TAKES_ANY_LOAD}",
         )
+
+
+#: The end of the message refusing loads too small for the combined solver: where a radial load
+#: alone reaches this solver by the ball dynamics at a speed, the CLI and batch replace it by the
+#: option that gives the radial solver (--quasi-static, quasi_static true).
+RADIAL_TAKES_ANY_LOAD = "the radial solver, without an axial load, takes any load"
 
 
 #: Smallest groove-centre distance A over the one-ball approach (F/K)^(2/3) an angular-contact

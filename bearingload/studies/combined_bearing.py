@@ -100,10 +100,15 @@ def solve_combined_bearing(
     Raises
     ------
     InputError
-        ``ball_diameter`` when the geometry is unknown; the solver's own errors.
+        ``ball_diameter`` when the geometry is unknown; ``rotating`` "outer" with a speed (the
+        ball dynamics are those of the inner ring turning); the solver's own errors.
     """
     from bearingload.bearings.tilt import tilt_lever
 
+    if speed is not None and rotating == "outer":
+        raise InputError("rotating", "the ball dynamics at a speed are coded for the inner ring "
+                         "turning (docs/speed.md); the outer ring's lives are those of the "
+                         "static model (speed None)")  # fmt: skip
     out = []
     for b in bearings:
         lever = (tilt_radius if isinstance(tilt_radius, np.ndarray)
