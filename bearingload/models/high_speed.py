@@ -649,7 +649,9 @@ def _continuation(
     from the static answer, the speed raised in stages of omega^2 (a quarter, halved on a
     stage that does not converge, doubled after one that does), each started from the last
     balls and the ring position extrapolated from the last two stages (the balls move out with
-    the speed: from the last position alone the loaded ones can lose the inner ring). The
+    the speed: from the last position alone the loaded ones can lose the inner ring). A stage
+    converges when balanced to ACCEPT, as the last must: a stage stalled above it (a ring
+    nearly free across, on a plateau) passed on left the next stages on the plateau. The
     answer, if any, replaces case i's in v, st, its."""
     one = ring.take(np.array([i]))
     omega = one.b.omega
@@ -661,7 +663,7 @@ def _continuation(
         stage = dataclasses.replace(one, b=dataclasses.replace(one.b, omega=omega * frac**0.5))
         x1, st1, its1 = _newton(stage, x + rate * (frac - done), do, ao)
         its[i] += its1[0]
-        if st1.merit[0] <= (ACCEPT if frac == 1.0 else 1e-6):
+        if st1.merit[0] <= ACCEPT:
             if done > 0.0:
                 rate = (x1 - x) / (frac - done)
             done, x, do, ao = frac, x1, st1.do, st1.ao
