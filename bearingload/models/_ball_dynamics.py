@@ -47,7 +47,8 @@ class _Set:
     ko: np.ndarray
 
     def take(self, idx: np.ndarray) -> _Set:
-        return _Set(*(getattr(self, f.name)[idx] for f in dataclasses.fields(self)))
+        return _Set(self.ri[idx], self.ro[idx], self.dw[idx], self.dm[idx], self.omega[idx],
+                    self.mass[idx], self.ki[idx], self.ko[idx])  # fmt: skip
 
 
 def ball_terms(b: _Set, rho: Any, u: Any, do: Any, ao: Any) -> tuple[Any, ...]:  # complex-capable
@@ -220,31 +221,45 @@ def _ball_step(
         s2 = -(-a21 * t[0] + a11 * t[1]) / det
     go = np.isfinite(s1) & np.isfinite(s2)
     s1, s2 = np.where(go, s1, 0.0), np.where(go, s2, 0.0)
-    lo = b.ro + do
-    x1, x2 = lo * np.sin(ao), lo * np.cos(ao)
     cut = np.minimum(1.0, 0.25 * b.ro / np.maximum(np.hypot(s1, s2), 1e-300))
-    s1, s2 = s1 * cut, s2 * cut
-    size = np.hypot(t[0], t[1])
-    lam = np.ones_like(do)
-    pending = go.copy()
+    lo = b.ro + do
+    y0 = (lo * np.sin(ao), lo * np.cos(ao))
+    return _ball_search(b, rho, u, (do, ao), y0, (s1 * cut, s2 * cut), moving, touching, t, go)
+
+
+def _ball_search(
+    b: _Set, rho: np.ndarray, u: np.ndarray, x: tuple[np.ndarray, np.ndarray],
+    y0: tuple[np.ndarray, np.ndarray], s: tuple[np.ndarray, np.ndarray], moving: np.ndarray,
+    touching: np.ndarray, g: tuple[np.ndarray, np.ndarray], go: np.ndarray,
+) -> tuple[np.ndarray, ...]:  # fmt: skip
+    """The step s from the ball centres y0 (X_1, X_2), halved for each ball until its
+    residual falls below its size |g|, each trial on the balls still pending only (a ball's
+    trials depend on it alone). Returns (do, ao, balanced, moved, g1, g2)."""
+    do, ao = x[0].copy(), x[1].copy()
+    g1, g2 = g[0].copy(), g[1].copy()
+    size = np.hypot(g1, g2)
     ok = np.zeros(do.shape, dtype=bool)
-    g1, g2 = t
+    rows = np.flatnonzero(go)
+    lam = 1.0
     for _ in range(HALVINGS):
-        y1, y2 = x1 + lam * s1, x2 + lam * s2
-        d2, a2 = np.hypot(y1, y2) - b.ro, np.arctan2(y1, y2)
-        t2 = ball_terms(b, rho, u, d2, a2)
-        ok2 = _ball_norm(b, t2, d2, moving)[1]
-        n2 = np.hypot(t2[0], t2[1])
-        better = pending & ((n2 < (1.0 - 1e-4 * lam) * size) | ok2)
-        better &= ~touching | (t2[11] > 0)
-        do, ao = np.where(better, d2, do), np.where(better, a2, ao)
-        g1, g2 = np.where(better, t2[0], g1), np.where(better, t2[1], g2)
-        ok = np.where(better, ok2, ok)
-        pending &= ~better
-        if not pending.any():
+        if rows.size == 0:
             break
-        lam = np.where(pending, 0.5 * lam, lam)
-    return do, ao, ok, go & ~pending, g1, g2
+        every = rows.size == do.shape[0]  # no copies on the first trial of every ball
+        r, br = (slice(None), b) if every else (rows, b.take(rows))
+        y1, y2 = y0[0][r] + lam * s[0][r], y0[1][r] + lam * s[1][r]
+        d2, a2 = np.hypot(y1, y2) - br.ro, np.arctan2(y1, y2)
+        t2 = ball_terms(br, rho[r], u[r], d2, a2)
+        ok2 = _ball_norm(br, t2, d2, moving[r])[1]
+        better = (np.hypot(t2[0], t2[1]) < (1.0 - 1e-4 * lam) * size[r]) | ok2
+        better = (better & (~touching[r] | (t2[11] > 0)))[:, 0]
+        won = rows[better]
+        do[won], ao[won], ok[won] = d2[better], a2[better], ok2[better]
+        g1[won], g2[won] = t2[0][better], t2[1][better]
+        rows = rows[~better]
+        lam *= 0.5
+    moved = go.copy()
+    moved[rows] = False
+    return do, ao, ok, moved, g1, g2
 
 
 def _loose(
