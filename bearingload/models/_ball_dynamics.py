@@ -171,10 +171,10 @@ def _ball_jacobian(
 ) -> tuple[np.ndarray, ...]:
     """d(g1, g2)/d(X_1, X_2) (the ball centre, Cartesian) by the complex step in (do, ao)."""
     hd = _H * (b.ri + b.ro)
-    td = ball_terms(b, rho, u, do + 1j * hd, ao)
-    ta = ball_terms(b, rho, u, do, ao + 1j * _H)
-    j11, j21 = np.imag(td[0]) / hd, np.imag(td[1]) / hd
-    j12, j22 = np.imag(ta[0]) / _H, np.imag(ta[1]) / _H
+    # both steps in one call (stacked on a leading axis): half the calls on small arrays
+    g = ball_terms(b, rho, u, np.stack([do + 1j * hd, do + 0j]), np.stack([ao + 0j, ao + 1j * _H]))
+    j11, j21 = np.imag(g[0][0]) / hd, np.imag(g[1][0]) / hd
+    j12, j22 = np.imag(g[0][1]) / _H, np.imag(g[1][1]) / _H
     lo, so, co = b.ro + do, np.sin(ao), np.cos(ao)
     # d do/dX = (so, co), d ao/dX = (co, -so)/lo
     return (j11 * so + j12 * co / lo, j11 * co - j12 * so / lo,

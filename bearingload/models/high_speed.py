@@ -182,15 +182,13 @@ def _ring_forces(
     dup = np.where(one_sided[:, None], (u > 0).astype(float), 1.0)
     t0 = ball_terms(b, rho, up, do, ao)
     hd = hr = hu = _H * (b.ri + b.ro)  # a length of the problem (complex step: any tiny step)
-    cols = [
-        ball_terms(b, rho, up, do + 1j * hd, ao),
-        ball_terms(b, rho, up, do, ao + 1j * _H),
-        ball_terms(b, rho + 1j * hr, up, do, ao),
-        ball_terms(b, rho, up + 1j * hu, do, ao),
-    ]
+    # the four complex steps in one call, stacked on a leading axis (a quarter of the calls)
+    e = 1j * np.eye(4)[:, :, None, None]  # e[:, k]: step k only
+    cols = ball_terms(b, rho + hr * e[:, 2], up + hu * e[:, 3], do + hd * e[:, 0],
+                      ao + _H * e[:, 1])  # fmt: skip
     steps = (hd, _H, hr, hu)
     # rows: g1, g2, Fa, Fr; columns: do, ao, rho, u
-    d = [[np.imag(cols[k][r]) / steps[k] for k in range(4)] for r in (0, 1, 12, 13)]
+    d = [[np.imag(cols[r][k]) / steps[k] for k in range(4)] for r in (0, 1, 12, 13)]
     moving = np.broadcast_to(b.omega > 0, do.shape)
     det = d[0][0] * d[1][1] - d[0][1] * d[1][0]
     with np.errstate(all="ignore"):
