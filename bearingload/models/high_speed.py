@@ -413,7 +413,7 @@ def _dynamic_start(
     mass = material[2] * math.pi / 6.0 * geo.D_w**3
     wc = 0.5 * omega * (1.0 - geo.D_w / geo.d_m * cos0)
     fc = 0.5 * mass * geo.d_m * wc * wc * _KG_MM
-    delta_c = (fc / _stiffness(ko[:, 0, :], cos0)) ** (2.0 / 3.0)
+    delta_c = (fc / _stiffness(ko, cos0[:, None])[:, 0]) ** (2.0 / 3.0)
     kw = {k: (v if v is None else v[moving]) for k, v in static_kw.items()}
     cos1 = np.maximum(cos0 - delta_c / geo.A, 1e-3)[moving]
     if contact_angle is None:
