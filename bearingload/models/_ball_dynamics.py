@@ -97,19 +97,20 @@ def _stiffness(nodes: np.ndarray, cos_alpha: Any) -> Any:
     value at 0.05. A complex cos alpha is a complex step (a tiny imaginary part h): the answer
     K + i h dK/dcos, the derivative of the interpolant in real arithmetic (complex division
     cost five times as much on a batch). The sums over the nodes as matrix products (a sum
-    over a short last axis is slow). [N/mm^1.5]"""
+    over a short last axis is slow); one array (..., NODES) only, updated in place (on a
+    batch, fresh memory for each costs more than the arithmetic). [N/mm^1.5]"""
     re = np.real(cos_alpha)
     low = re < 0.05
-    diff = (2.0 * np.where(low, 0.05, re) - 1.0)[..., None] - _NODE_X
-    terms = _NODE_W / diff
+    terms = (2.0 * np.where(low, 0.05, re) - 1.0)[..., None] - _NODE_X  # x - x_k
+    np.divide(_NODE_W, terms, out=terms)  # w_k / (x - x_k)
     values = np.swapaxes(nodes, -1, -2)
     den = terms @ _ONES
     k = (terms @ values)[..., 0] / den
     if not np.iscomplexobj(cos_alpha):
         return k
-    terms = terms / diff  # -d terms/dx, x = 2 cos - 1
-    slope = 2.0 * (k * (terms @ _ONES) - (terms @ values)[..., 0]) / den
-    return k + 1j * np.where(low, 0.0, np.imag(cos_alpha)) * slope
+    np.square(terms, out=terms)  # w_k times -d/dx (w_k / (x - x_k))
+    slope = 2.0 * (k * (terms @ (1.0 / _NODE_W)) - (terms @ (values / _NODE_W[:, None]))[..., 0])
+    return k + 1j * np.where(low, 0.0, np.imag(cos_alpha)) * (slope / den)
 
 
 def _power(d: Any) -> Any:
