@@ -140,7 +140,8 @@ def _ball_norm(
     # the rounding of the approaches, differences of lengths up to r' + delta
     di = np.abs(t[11])
     with np.errstate(all="ignore"):
-        size = size + _ROUND * np.nan_to_num(qi * (di + b.ri) / di + qo * (do + b.ro) / do)
+        extra = qi * (di + b.ri) / di + qo * (do + b.ro) / do  # NaN at 0/0 (no contact)
+        size = size + _ROUND * np.where(np.isnan(extra), 0.0, extra)
         norm = np.hypot(g1, g2) / size
     norm = np.where(np.isfinite(norm), norm, np.inf)
     return norm, ~moving | (norm <= BALL_TOLERANCE)
@@ -208,12 +209,14 @@ def _ball_newton(
     touching = keep_contact & (t[11] > 0)
     g1, g2 = t[0].copy(), t[1].copy()
     for _ in range(iterations):
-        act = np.flatnonzero(~ok[:, 0])
+        act: Any = np.flatnonzero(~ok[:, 0])
         if act.size == 0:
             break
+        if act.size == do.shape[0]:  # every ball: no copies
+            act = slice(None)
         d, a, ok_a, moved, h1, h2 = _ball_step(
-            b.take(act), rho[act], u[act], do[act], ao[act], moving[act], touching[act],
-            (g1[act], g2[act]),
+            b if isinstance(act, slice) else b.take(act), rho[act], u[act], do[act], ao[act],
+            moving[act], touching[act], (g1[act], g2[act]),
         )  # fmt: skip
         do[act], ao[act], ok[act], g1[act], g2[act] = d, a, ok_a, h1, h2
         if not moved.any():
