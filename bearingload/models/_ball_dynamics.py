@@ -31,6 +31,7 @@ _H = 1e-30
 _KG_MM = 1e-3
 _NODE_X = _combined._NODE_X
 _NODE_W = _combined._NODE_W
+_ONES = np.ones(_NODE_X.size)
 
 
 @dataclass
@@ -47,7 +48,8 @@ class _Set:
     ko: np.ndarray
 
     def take(self, idx: np.ndarray) -> _Set:
-        return _Set(*(getattr(self, f.name)[idx] for f in dataclasses.fields(self)))
+        return _Set(self.ri[idx], self.ro[idx], self.dw[idx], self.dm[idx], self.omega[idx],
+                    self.mass[idx], self.ki[idx], self.ko[idx])  # fmt: skip
 
 
 def ball_terms(b: _Set, rho: Any, u: Any, do: Any, ao: Any) -> tuple[Any, ...]:  # complex-capable
@@ -90,12 +92,25 @@ def ball_terms(b: _Set, rho: Any, u: Any, do: Any, ao: Any) -> tuple[Any, ...]: 
 
 
 def _stiffness(nodes: np.ndarray, cos_alpha: Any) -> Any:
-    """K(cos alpha) from its values at the Chebyshev nodes (barycentric interpolation, a
-    rational function: complex-step safe). Below cos = 0.05 (a loose ball pointing across the
-    groove: no load) the value at 0.05. [N/mm^1.5]"""
-    c = np.where(np.real(cos_alpha) < 0.05, 0.05, cos_alpha)
-    terms = _NODE_W / ((2.0 * c - 1.0)[..., None] - _NODE_X)
-    return (terms * nodes).sum(-1) / terms.sum(-1)
+    """K(cos alpha) from its values ``nodes`` (n, 1, NODES) at the Chebyshev nodes (barycentric
+    interpolation). Below cos = 0.05 (a loose ball pointing across the groove: no load) the
+    value at 0.05. A complex cos alpha is a complex step (a tiny imaginary part h): the answer
+    K + i h dK/dcos, the derivative of the interpolant in real arithmetic (complex division
+    cost five times as much on a batch). The sums over the nodes as matrix products (a sum
+    over a short last axis is slow); one array (..., NODES) only, updated in place (on a
+    batch, fresh memory for each costs more than the arithmetic). [N/mm^1.5]"""
+    re = np.real(cos_alpha)
+    low = re < 0.05
+    terms = (2.0 * np.where(low, 0.05, re) - 1.0)[..., None] - _NODE_X  # x - x_k
+    np.divide(_NODE_W, terms, out=terms)  # w_k / (x - x_k)
+    values = np.swapaxes(nodes, -1, -2)
+    den = terms @ _ONES
+    k = (terms @ values)[..., 0] / den
+    if not np.iscomplexobj(cos_alpha):
+        return k
+    np.square(terms, out=terms)  # w_k times -d/dx (w_k / (x - x_k))
+    slope = 2.0 * (k * (terms @ (1.0 / _NODE_W)) - (terms @ (values / _NODE_W[:, None]))[..., 0])
+    return k + 1j * np.where(low, 0.0, np.imag(cos_alpha)) * (slope / den)
 
 
 def _power(d: Any) -> Any:
@@ -125,7 +140,8 @@ def _ball_norm(
     # the rounding of the approaches, differences of lengths up to r' + delta
     di = np.abs(t[11])
     with np.errstate(all="ignore"):
-        size = size + _ROUND * np.nan_to_num(qi * (di + b.ri) / di + qo * (do + b.ro) / do)
+        extra = qi * (di + b.ri) / di + qo * (do + b.ro) / do  # NaN at 0/0 (no contact)
+        size = size + _ROUND * np.where(np.isnan(extra), 0.0, extra)
         norm = np.hypot(g1, g2) / size
     norm = np.where(np.isfinite(norm), norm, np.inf)
     return norm, ~moving | (norm <= BALL_TOLERANCE)
@@ -170,10 +186,10 @@ def _ball_jacobian(
 ) -> tuple[np.ndarray, ...]:
     """d(g1, g2)/d(X_1, X_2) (the ball centre, Cartesian) by the complex step in (do, ao)."""
     hd = _H * (b.ri + b.ro)
-    td = ball_terms(b, rho, u, do + 1j * hd, ao)
-    ta = ball_terms(b, rho, u, do, ao + 1j * _H)
-    j11, j21 = np.imag(td[0]) / hd, np.imag(td[1]) / hd
-    j12, j22 = np.imag(ta[0]) / _H, np.imag(ta[1]) / _H
+    # both steps in one call (stacked on a leading axis): half the calls on small arrays
+    g = ball_terms(b, rho, u, np.stack([do + 1j * hd, do + 0j]), np.stack([ao + 0j, ao + 1j * _H]))
+    j11, j21 = np.imag(g[0][0]) / hd, np.imag(g[1][0]) / hd
+    j12, j22 = np.imag(g[0][1]) / _H, np.imag(g[1][1]) / _H
     lo, so, co = b.ro + do, np.sin(ao), np.cos(ao)
     # d do/dX = (so, co), d ao/dX = (co, -so)/lo
     return (j11 * so + j12 * co / lo, j11 * co - j12 * so / lo,
@@ -193,12 +209,14 @@ def _ball_newton(
     touching = keep_contact & (t[11] > 0)
     g1, g2 = t[0].copy(), t[1].copy()
     for _ in range(iterations):
-        act = np.flatnonzero(~ok[:, 0])
+        act: Any = np.flatnonzero(~ok[:, 0])
         if act.size == 0:
             break
+        if act.size == do.shape[0]:  # every ball: no copies
+            act = slice(None)
         d, a, ok_a, moved, h1, h2 = _ball_step(
-            b.take(act), rho[act], u[act], do[act], ao[act], moving[act], touching[act],
-            (g1[act], g2[act]),
+            b if isinstance(act, slice) else b.take(act), rho[act], u[act], do[act], ao[act],
+            moving[act], touching[act], (g1[act], g2[act]),
         )  # fmt: skip
         do[act], ao[act], ok[act], g1[act], g2[act] = d, a, ok_a, h1, h2
         if not moved.any():
@@ -220,31 +238,45 @@ def _ball_step(
         s2 = -(-a21 * t[0] + a11 * t[1]) / det
     go = np.isfinite(s1) & np.isfinite(s2)
     s1, s2 = np.where(go, s1, 0.0), np.where(go, s2, 0.0)
-    lo = b.ro + do
-    x1, x2 = lo * np.sin(ao), lo * np.cos(ao)
     cut = np.minimum(1.0, 0.25 * b.ro / np.maximum(np.hypot(s1, s2), 1e-300))
-    s1, s2 = s1 * cut, s2 * cut
-    size = np.hypot(t[0], t[1])
-    lam = np.ones_like(do)
-    pending = go.copy()
+    lo = b.ro + do
+    y0 = (lo * np.sin(ao), lo * np.cos(ao))
+    return _ball_search(b, rho, u, (do, ao), y0, (s1 * cut, s2 * cut), moving, touching, t, go)
+
+
+def _ball_search(
+    b: _Set, rho: np.ndarray, u: np.ndarray, x: tuple[np.ndarray, np.ndarray],
+    y0: tuple[np.ndarray, np.ndarray], s: tuple[np.ndarray, np.ndarray], moving: np.ndarray,
+    touching: np.ndarray, g: tuple[np.ndarray, np.ndarray], go: np.ndarray,
+) -> tuple[np.ndarray, ...]:  # fmt: skip
+    """The step s from the ball centres y0 (X_1, X_2), halved for each ball until its
+    residual falls below its size |g|, each trial on the balls still pending only (a ball's
+    trials depend on it alone). Returns (do, ao, balanced, moved, g1, g2)."""
+    do, ao = x[0].copy(), x[1].copy()
+    g1, g2 = g[0].copy(), g[1].copy()
+    size = np.hypot(g1, g2)
     ok = np.zeros(do.shape, dtype=bool)
-    g1, g2 = t
+    rows = np.flatnonzero(go)
+    lam = 1.0
     for _ in range(HALVINGS):
-        y1, y2 = x1 + lam * s1, x2 + lam * s2
-        d2, a2 = np.hypot(y1, y2) - b.ro, np.arctan2(y1, y2)
-        t2 = ball_terms(b, rho, u, d2, a2)
-        ok2 = _ball_norm(b, t2, d2, moving)[1]
-        n2 = np.hypot(t2[0], t2[1])
-        better = pending & ((n2 < (1.0 - 1e-4 * lam) * size) | ok2)
-        better &= ~touching | (t2[11] > 0)
-        do, ao = np.where(better, d2, do), np.where(better, a2, ao)
-        g1, g2 = np.where(better, t2[0], g1), np.where(better, t2[1], g2)
-        ok = np.where(better, ok2, ok)
-        pending &= ~better
-        if not pending.any():
+        if rows.size == 0:
             break
-        lam = np.where(pending, 0.5 * lam, lam)
-    return do, ao, ok, go & ~pending, g1, g2
+        every = rows.size == do.shape[0]  # no copies on the first trial of every ball
+        r, br = (slice(None), b) if every else (rows, b.take(rows))
+        y1, y2 = y0[0][r] + lam * s[0][r], y0[1][r] + lam * s[1][r]
+        d2, a2 = np.hypot(y1, y2) - br.ro, np.arctan2(y1, y2)
+        t2 = ball_terms(br, rho[r], u[r], d2, a2)
+        ok2 = _ball_norm(br, t2, d2, moving[r])[1]
+        better = (np.hypot(t2[0], t2[1]) < (1.0 - 1e-4 * lam) * size[r]) | ok2
+        better = (better & (~touching[r] | (t2[11] > 0)))[:, 0]
+        won = rows[better]
+        do[won], ao[won], ok[won] = d2[better], a2[better], ok2[better]
+        g1[won], g2[won] = t2[0][better], t2[1][better]
+        rows = rows[~better]
+        lam *= 0.5
+    moved = go.copy()
+    moved[rows] = False
+    return do, ao, ok, moved, g1, g2
 
 
 def _loose(
