@@ -457,3 +457,16 @@ def test_continuum_refuses_what_the_exact_model_refuses():
 
     with pytest.raises(InputError, match="one-ball approach"):
         solve_continuum(8, 1000.0, 1e200, clearance=-0.05)
+
+
+def test_heavy_preload_tiny_load_keeps_the_geometry():
+    """Hypothesis' example (z = 33, F = 1e-6 N, K = 363377, G_r = -0.125 mm, m = 1): every ball
+    loaded, x = 2F/(zK) exactly (linear contact), delta_max = x - e; delta_max came from the
+    force equation and was short of x - e by 1.7e-13 mm (2.7e-12 relative), beyond the
+    geometry's rounding. Q_max = K delta_max follows."""
+    z, load, k_ball, gr = 33, 1e-6, 363377.0, -0.125
+    r = solve_continuum(z, load, k_ball, gr, 1.0)
+    x = 2 * load / (z * k_ball)
+    assert float(r.x) == pytest.approx(x, rel=1e-13)
+    assert float(r.approach_max) == pytest.approx(x - gr / 2, rel=1e-15)
+    assert float(r.q_max) == pytest.approx(k_ball * (x - gr / 2), rel=1e-15)

@@ -359,6 +359,13 @@ def solve_continuum(
     d_max = x0 * d_rel
     x = d_max / (2.0 * eps)
     k = 1.0 / (z * j)
+    # under preload (e < 0) the geometry delta_max = x - e adds two positive terms: exact to
+    # rounding, while the force equation fixes x well but delta_max only to the solver's tolerance
+    # on log(eps) once eps is huge (a tiny load under heavy preload); Q_max = K delta_max^m follows
+    preload = e < 0
+    ratio = np.where(preload, (x - e) / d_max, 1.0)
+    d_max = np.where(preload, x - e, d_max)
+    k = k * ratio**m
     # dF/dx = z K delta_max^(m-1) [m J + eps (1 - 2 eps) J'] = F/delta_max [m + eps (1-2eps) J'/J]
     stiff = force / d_max * (m + eps * (1.0 - 2.0 * eps) * dj / j)
     zone = np.where(eps <= 1.0, 2.0 * np.arcsin(np.sqrt(np.minimum(eps, 1.0))), np.pi)
