@@ -29,6 +29,9 @@ COMMANDS = {
         "--stiffness", "4700kgf/mm^1.5", "--clearance", "20um",
     ],
     "solve 306 -F 1kN": [str(BIN / "bearingload"), "solve", "306", "-F", "1kN"],
+    "solve 6205 -F 1kN --speed 3000 (ball dynamics)": [
+        str(BIN / "bearingload"), "solve", "6205", "-F", "1kN", "--speed", "3000",
+    ],
     "table k": [str(BIN / "bearingload"), "table", "k"],
 }  # fmt: skip
 
