@@ -1,0 +1,66 @@
+"""Small findings of an independent review (overlapping balls, hints and labels at speed, speed
+units): each test fails on the code before its fix."""
+
+from __future__ import annotations
+
+import math
+from typing import Any
+
+import pytest
+
+from bearingload.bearings.resolve import resolve_bearing
+from bearingload.errors import InputError
+
+from .cli_helpers import run_entry
+
+
+def _error(capsys: Any, *args: str) -> str:
+    """The one ``Error:`` line of a refused command line (exit 2, nothing on stdout)."""
+    code, out, err = run_entry(capsys, *args)
+    lines = err.strip().splitlines()
+    assert code == 2 and out == "" and len(lines) == 1 and lines[0].startswith("Error:"), err
+    return lines[0]
+
+
+_OVERLAP = ("-z", "9", "--ball-diameter", "30", "--pitch-diameter", "38.5")
+
+
+@pytest.mark.parametrize(
+    "command",
+    [
+        ("solve", *_OVERLAP, "-F", "1kN"),
+        ("solve", *_OVERLAP, "-F", "1kN", "--speed", "3000"),
+        ("solve", *_OVERLAP, "-F", "1kN", "--speed", "3000", "--quasi-static"),
+        ("solve", *_OVERLAP, "-F", "1kN", "-A", "100N"),
+        ("solve", *_OVERLAP, "-F", "1kN", "--contact-angle", "25"),
+        ("sweep", *_OVERLAP, "-F", "1kN"),
+        ("table", "life", *_OVERLAP, "-F", "1kN"),
+    ],
+)
+def test_overlapping_balls_are_refused(capsys, command):
+    """9 balls of 30 mm on a 38.5 mm pitch circle overlap (adjacent centres are
+    d_m sin(pi/9) = 13.17 mm apart); every engine solved it. One Error line naming
+    --ball-diameter and the largest diameter allowed."""
+    line = _error(capsys, *command)
+    chord = 38.5 * math.sin(math.pi / 9)
+    assert "'--ball-diameter'" in line and f"{chord:.6g} mm" in line, line
+    assert "d_m sin(pi/z)" in line
+
+
+def test_overlapping_balls_refused_by_the_library_and_batch(capsys, tmp_path):
+    with pytest.raises(InputError) as exc:
+        resolve_bearing(balls=9, ball_diameter=30.0, pitch_diameter=38.5)
+    assert exc.value.parameter == "ball_diameter"
+    # the limit itself: touching balls (a full complement) are accepted, a hair more is not
+    chord = 38.5 * math.sin(math.pi / 9)
+    assert resolve_bearing(balls=9, ball_diameter=chord, pitch_diameter=38.5).balls == 9
+    with pytest.raises(InputError):
+        resolve_bearing(balls=9, ball_diameter=chord * (1 + 1e-9), pitch_diameter=38.5)
+    # one ball, and two balls below d_m, have no spacing rule to break
+    assert resolve_bearing(balls=1, ball_diameter=30.0, pitch_diameter=38.5).balls == 1
+    assert resolve_bearing(balls=2, ball_diameter=30.0, pitch_diameter=38.5).balls == 2
+    path = tmp_path / "cases.csv"
+    path.write_text("balls,ball_diameter,pitch_diameter,load\n9,30,38.5,1000\n9,12,38.5,1000\n")
+    code, out, err = run_entry(capsys, "batch", str(path), "--format", "csv")
+    assert "row 2: ball_diameter: 9 balls of 30 mm overlap" in err and code == 1, err
+    assert len(out.strip().splitlines()) == 2  # header and the good row
