@@ -64,3 +64,17 @@ def test_overlapping_balls_refused_by_the_library_and_batch(capsys, tmp_path):
     code, out, err = run_entry(capsys, "batch", str(path), "--format", "csv")
     assert "row 2: ball_diameter: 9 balls of 30 mm overlap" in err and code == 1, err
     assert len(out.strip().splitlines()) == 2  # header and the good row
+
+
+@pytest.mark.parametrize("extra", [(), ("--speed", "3000"), ("--speed", "3000", "--quasi-static")])
+def test_too_small_load_on_an_angular_bearing_names_no_radial_solver(capsys, extra):
+    """solve 7205B -F 1e-9N (at speed or not) advised 'the radial solver, without an axial
+    load, takes any load', which cannot solve an angular-contact bearing. The hint now says
+    the combined solver is the only one and gives the smallest load; that load (printed rounded
+    up) is solved statically."""
+    line = _error(capsys, "solve", "7205B", "-F", "1e-9N", *extra)
+    assert "radial solver" not in line and "radial engine" not in line, line
+    assert "angular-contact bearing is solved by this solver only" in line, line
+    smallest = line.split("it takes at least ")[1].split(" N")[0]
+    code, out, err = run_entry(capsys, "solve", "7205B", "-F", f"{smallest}N")
+    assert code == 0 and "Error" not in err, err
