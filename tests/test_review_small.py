@@ -78,3 +78,25 @@ def test_too_small_load_on_an_angular_bearing_names_no_radial_solver(capsys, ext
     smallest = line.split("it takes at least ")[1].split(" N")[0]
     code, out, err = run_entry(capsys, "solve", "7205B", "-F", f"{smallest}N")
     assert code == 0 and "Error" not in err, err
+
+
+def test_ball_density_is_reported_at_speed(capsys):
+    """--ball-density changed the answer but appeared nowhere in it: a ceramic-ball run could
+    not be told from a steel one. json has ball_density [kg/m^3] (the batch column's key and
+    unit), the terminal a row; a static solve has neither."""
+    import json
+
+    args = ("solve", "6205", "-F", "1kN", "--speed", "3000")
+    for extra, rho in (((), 7850.0), (("--ball-density", "3200"), 3200.0)):
+        code, out, err = run_entry(capsys, *args, *extra, "--format", "json")
+        assert code == 0, err
+        doc = json.loads(out)
+        assert doc["cases"][0]["ball_density"] == pytest.approx(rho, rel=1e-12)
+        assert doc["units"]["ball_density"] == "kg/m^3"
+        code, out, err = run_entry(capsys, *args, *extra)
+        row = [line for line in out.splitlines() if line.startswith("ball density")]
+        assert len(row) == 1 and row[0].split()[-2:] == [f"{rho:.2f}", "kg/m^3"], row
+    code, out, _ = run_entry(capsys, "solve", "6205", "-F", "1kN", "--format", "json")
+    assert "ball_density" not in out
+    code, out, _ = run_entry(capsys, *args, "--quasi-static")
+    assert code == 0 and "ball density" not in out

@@ -78,7 +78,9 @@ ANSWER_KEYS = (
     "equivalent_load",
     "rating_life",
     "rating_life_hours",
-    *SERVICE_KEYS,
+    *SERVICE_KEYS[:1],  # the shaft speed, then the ball density the ball dynamics used
+    "ball_density",
+    *SERVICE_KEYS[1:],
 )
 #: Each ball's inner and outer contact (equal without the ball dynamics): json and csv names.
 CONTACT_KEYS = ("contact_angles_inner", "contact_angles_outer", "ball_loads_inner",
