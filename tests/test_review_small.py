@@ -145,3 +145,26 @@ def test_speed_in_capitals_on_the_command_line_other_units_keep_their_case(capsy
         with pytest.raises(InputError):
             parse_quantity(text, kind)
     assert parse_quantity("1kN", "force") == 1000.0
+
+
+def test_batch_writes_the_ball_density_of_its_rows_at_speed(capsys, tmp_path):
+    """solve's csv at speed has ball_density [kg/m^3]: a combined-load file with a speed column
+    writes it too (the value used: the cell, else steel; blank where quasi_static is true), and
+    a file without a speed column has no such column."""
+    import csv
+    import io
+
+    path = tmp_path / "rows.csv"
+    path.write_text(
+        "bearing,load,axial_load,speed,ball_density,quasi_static\n"
+        "6205,1000,0,3000,3200,\n6205,1000,0,3000,,\n6205,1000,0,3000,,true\n",
+        encoding="utf-8",
+    )
+    code, out, err = run_entry(capsys, "batch", str(path), "--format", "csv")
+    assert code == 0, err
+    rows = list(csv.DictReader(io.StringIO(out)))
+    assert [float(r["ball_density [kg/m^3]"] or "nan") for r in rows[:2]] == [3200.0, 7850.0]
+    assert rows[2]["ball_density [kg/m^3]"] == ""
+    path.write_text("bearing,load,axial_load\n6205,1000,0\n", encoding="utf-8")
+    code, out, err = run_entry(capsys, "batch", str(path), "--format", "csv")
+    assert code == 0 and "ball_density" not in out, err
