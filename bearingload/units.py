@@ -162,6 +162,10 @@ def _check_plausible(value: float, kind: str, name: str, text: object) -> None:
     )
 
 
+#: Kinds whose unit names are read case-insensitively (RPM, R/MIN, Rad/s, hz): none of their
+#: names differ only in case. Not the others: mm and Mm, mN and MN would be one unit.
+CASE_FREE_KINDS = frozenset({"speed"})
+
 _NUMBER = re.compile(r"^\s*([+-]?(?:\d+\.?\d*|\.\d+)(?:[eE][+-]?\d+)?)\s*(.*?)\s*$")
 
 
@@ -212,6 +216,9 @@ def parse_quantity(text: str | float, kind: str, *, parameter: str | None = None
     if kind == "stiffness":
         return value * stiffness_factor(unit, None, parameter=name)
     lookup = {_canonical(u): f for u, f in units.items()}
+    if kind in CASE_FREE_KINDS:  # 3000RPM, 50hz: no two speed units differ only in case
+        lookup = {u.lower(): f for u, f in lookup.items()}
+        unit = unit.lower()
     if unit not in lookup:
         raise InputError(
             name,

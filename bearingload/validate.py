@@ -112,3 +112,34 @@ def _worst(arr: np.ndarray, bad: np.ndarray) -> str:
     """The first offending value, unrounded (shortest repr: 8.0000000001 stays 8.0000000001)."""
     v = float(np.asarray(arr)[np.asarray(bad)].flat[0])
     return repr(int(v)) if v.is_integer() and abs(v) < 1e16 else repr(v)
+
+
+def ball_spacing(balls: object, ball_diameter: object, pitch_diameter: object) -> None:
+    """Raise :class:`InputError` (``ball_diameter``) where adjacent balls would overlap.
+
+    z equally spaced balls on the pitch circle of diameter d_m have adjacent centres a chord
+    d_m sin(pi/z) apart, so balls of diameter D_w fit only if D_w <= d_m sin(pi/z) (touching
+    allowed, a full complement; to a relative 1e-12 of the chord for rounding). No rule for
+    z = 1. Source: plane geometry (the chord of the pitch circle between adjacent centres).
+
+    Parameters
+    ----------
+    balls : array_like
+        Number of balls z (whole numbers >= 1). [-]
+    ball_diameter, pitch_diameter : array_like
+        Ball diameter D_w and pitch diameter d_m, broadcast together. [mm]
+    """
+    z, dw, dm = np.broadcast_arrays(
+        *(np.asarray(v, dtype=float) for v in (balls, ball_diameter, pitch_diameter))
+    )
+    chord = dm * np.sin(np.pi / np.maximum(z, 1.0))
+    bad = (z >= 2) & ~(dw <= chord * (1.0 + 1e-12))
+    if np.any(bad):
+        i = np.flatnonzero(bad.ravel())[0]
+        n, d, p, c = (float(a.ravel()[i]) for a in (z, dw, dm, chord))
+        raise InputError(
+            "ball_diameter",
+            f"{n:.0f} balls of {d:g} mm overlap on a pitch circle of {p:g} mm: adjacent ball "
+            f"centres are d_m sin(pi/z) = {c:.6g} mm apart, so with z = {n:.0f} and d_m = {p:g} mm "
+            f"the ball diameter D_w must be at most {c:.6g} mm (or fewer balls)",
+        )

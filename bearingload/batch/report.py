@@ -53,7 +53,7 @@ COMBINED_KEYS = (
     "free_contact_angle", "axial_play", "x", "y", "axial", "tilt", "tilt_cross",
     "stiffness_radial", "stiffness_axial", "stiffness_tilt", "reference_rating_life",
     "reference_rating_life_hours", "dynamic_rating", "equivalent_load", "rating_life",
-    "rating_life_hours", *SERVICE_KEYS,
+    "rating_life_hours", *SERVICE_KEYS[:1], "ball_density", *SERVICE_KEYS[1:],
 )  # fmt: skip
 #: What the rows of a combined-load file carry beyond the columns, as solve's json names it:
 #: the model (the ball dynamics added at a speed) and each ball's inner and outer contact angle
@@ -71,7 +71,7 @@ DYNAMICS_NOTE = (
 #: The output columns each service input column can give (solve prints them when the option is
 #: given); a file without the column has none of them.
 SERVICE_OUTPUT = {
-    "speed": ("speed", "rating_life_hours", "reference_rating_life_hours",
+    "speed": ("speed", "ball_density", "rating_life_hours", "reference_rating_life_hours",
               "modified_rating_life_hours", "modified_reference_rating_life_hours"),
     "reliability": ("reliability", "reliability_factor"),
     "viscosity": ("viscosity", "rated_viscosity", "kappa", "contamination_factor",
@@ -105,7 +105,8 @@ def batch_columns(header: Header) -> list[Column]:
 
 
 def _columns(header: Header) -> list[Column]:
-    service = set(SERVICE_KEYS) | {"rating_life_hours", "reference_rating_life_hours"}
+    service = set(SERVICE_KEYS) | {"rating_life_hours", "reference_rating_life_hours",
+                                   "ball_density"}  # fmt: skip
     wanted = _service_outputs(header)
     if header.combined:  # the columns of solve's csv with an axial load, every one
         given = [k for k in COMBINED_KEYS if k not in _COMBINED_IF_GIVEN or k in header.names]

@@ -60,7 +60,7 @@ from bearingload.bearings.resolved import (
     resolve_clearance,
 )
 from bearingload.errors import InputError
-from bearingload.validate import finite_positive
+from bearingload.validate import ball_spacing, finite_positive
 
 
 def resolve_bearing(
@@ -322,6 +322,8 @@ def _ball_set(
         raise InputError("balls", "give the number of balls, or a bearing designation")
     if isinstance(balls, bool) or int(balls) != balls or balls < 1:
         raise InputError("balls", f"the number of balls must be a whole number >= 1, not {balls!r}")
+    if dw is not None and dm is not None:
+        ball_spacing(balls, dw, dm)
     fi = given["f_i"] if given["f_i"] is not None or dw is None else DEFAULT_F_I
     fo = given["f_o"] if given["f_o"] is not None or dw is None else DEFAULT_F_O
     if stiffness is None and (dw is None or dm is None):

@@ -570,7 +570,7 @@ def solve_combined(
     f_ref = _reference_force(fr, fa, mm, mc, geo.R_i)
     if np.any(f_ref <= 0):
         raise InputError("radial_load", "give a radial load, an axial load or a moment")
-    _check_scale(f_ref, k_ref, geo.A)
+    _check_scale(f_ref, k_ref, geo.A, angular is not None)
     if angular is not None:
         _check_angular_scale(f_ref, k_ref, geo.A, (fr, fa, np.hypot(mm, mc) / geo.R_i))
     t_imp = geo.R_i * np.deg2rad(tilt_deg)  # [mm]
@@ -717,9 +717,12 @@ def _reference_force(
     return f_ref
 
 
-def _check_scale(f_ref: np.ndarray, k_ref: np.ndarray, big_a: np.ndarray) -> None:
+def _check_scale(
+    f_ref: np.ndarray, k_ref: np.ndarray, big_a: np.ndarray, angular: bool = False
+) -> None:
     """Refuse loads so small against the groove geometry that the scaled problem loses its
-    digits (the radial solver, without an axial load, takes any ratio)."""
+    digits (the radial solver, without an axial load, takes any ratio; an angular-contact
+    bearing, ``angular``, has no other solver: the message gives the smallest load taken)."""
     with np.errstate(over="ignore", divide="ignore"):
         scale = (f_ref / k_ref) ** (2.0 / 3.0)
     if not np.all(scale <= 1e100):  # the radial engine's bound of the one-ball approach
@@ -734,11 +737,13 @@ def _check_scale(f_ref: np.ndarray, k_ref: np.ndarray, big_a: np.ndarray) -> Non
         f_min = float(
             np.max(k_ref * (np.broadcast_to(big_a, scale.shape) / GEOMETRY_RATIO_MAX) ** 1.5)
         )
+        step = 10.0 ** (math.floor(math.log10(f_min)) - 1)  # shown to 2 digits, rounded up
+        f_min = math.ceil(f_min / step * (1 - 1e-12)) * step
         raise InputError(
             "radial_load",
             f"the loads are too small for the combined solver (the largest of F_r, |F_a| and "
             f"M/R_i is {float(np.min(f_ref)):.3g} N; it takes at least {f_min:.2g} N for this "
-            f"bearing); {RADIAL_TAKES_ANY_LOAD}",
+            f"bearing); {ANGULAR_NO_OTHER_SOLVER if angular else RADIAL_TAKES_ANY_LOAD}",
         )
 
 
@@ -746,6 +751,13 @@ def _check_scale(f_ref: np.ndarray, k_ref: np.ndarray, big_a: np.ndarray) -> Non
 #: alone reaches this solver by the ball dynamics at a speed, the CLI and batch replace it by the
 #: option that gives the radial solver (--quasi-static, quasi_static true).
 RADIAL_TAKES_ANY_LOAD = "the radial solver, without an axial load, takes any load"
+
+#: Its end for an angular-contact bearing, which only the combined solver solves (the radial
+#: solver has no contact angle): the smallest load it takes is the advice.
+ANGULAR_NO_OTHER_SOLVER = (
+    "an angular-contact bearing is solved by this solver only (at any speed, quasi-static or "
+    "not): give at least that load"
+)
 
 
 #: Smallest groove-centre distance A over the one-ball approach (F/K)^(2/3) an angular-contact

@@ -78,7 +78,9 @@ ANSWER_KEYS = (
     "equivalent_load",
     "rating_life",
     "rating_life_hours",
-    *SERVICE_KEYS,
+    *SERVICE_KEYS[:1],  # the shaft speed, then the ball density the ball dynamics used
+    "ball_density",
+    *SERVICE_KEYS[1:],
 )
 #: Each ball's inner and outer contact (equal without the ball dynamics): json and csv names.
 CONTACT_KEYS = ("contact_angles_inner", "contact_angles_outer", "ball_loads_inner",
@@ -252,6 +254,7 @@ def _title(records: Sequence[dict[str, Any]]) -> str:
 
 def _balls_human(cases: Sequence[CombinedCase], records: Sequence[dict[str, Any]]) -> Table:
     per = [_balls(c) for c in cases]
+    dynamics = getattr(cases[0].result, "model", None) is not None  # the inner contacts shown
     columns = [column("ball"), Column("angle", "angle", "°", 6)]
     one = len(cases) == 1
     if one:
@@ -287,7 +290,7 @@ def _balls_human(cases: Sequence[CombinedCase], records: Sequence[dict[str, Any]
         "Ball loads (ball 1 at the cage angle; angles from the load line)",
         columns,
         rows,
-        [LOOSE_NOTE] if loose else [],
+        [(LOOSE_NOTE_AT_SPEED if dynamics else LOOSE_NOTE)] if loose else [],
     )
 
 
@@ -296,6 +299,14 @@ LOOSE_NOTE = (
     "Contact angle '-': the ball carries no load, so it has no contact angle (a ball whose "
     "groove centres have crossed is loose, not at the groove edge). csv and json keep the "
     "direction of its groove-centre line, atan2(u, max(rho, 0)): up to ±90° for a loose ball."
+)
+#: :data:`LOOSE_NOTE` with the ball dynamics at speed: the table shows the inner contacts, and
+#: a ball whose inner contact carries nothing is still pressed on the outer raceway by its
+#: centrifugal force (json: ball_loads_outer).
+LOOSE_NOTE_AT_SPEED = (
+    "Contact angle '-': the ball's inner contact carries no load, so it has no inner contact "
+    "angle; its outer contact still carries the centrifugal force (json: ball_loads_outer, "
+    "contact_angles_outer)."
 )
 
 

@@ -158,6 +158,7 @@ QUANTITIES: dict[str, Quantity] = {
         # lives as engineers use them (bearings.service_life: ISO 281, ISO/TS 16281, EHL film)
         Quantity("static_rating", "basic static load rating C_0", "N"),
         Quantity("speed", "shaft speed n", "rpm"),
+        Quantity("ball_density", "ball density rho (ball dynamics at speed)", "kg/m^3"),
         Quantity("rating_life_hours", "basic rating life L10h", "h"),
         Quantity("reference_rating_life_hours", "reference rating life L10rh", "h"),
         Quantity("reliability", "reliability", "%", 4),

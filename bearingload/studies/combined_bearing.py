@@ -451,8 +451,18 @@ def combined_columns(c: CombinedCase) -> dict[str, Any]:
         if sel is None or (isinstance(sel, list) and None in sel)
         else np.broadcast_to(np.asarray(sel, float), (n,)),
         "static_safety": listed(c.static_safety),
+        **_density(c.result, n),
         "warnings": [c.warnings] if n == 1 and np.ndim(c.result.q_max) == 0 else list(c.warnings),
     }
+
+
+def _density(r: CombinedDistribution, n: int) -> dict[str, Any]:
+    """``ball_density`` [kg/m^3] of the ball dynamics at speed (the result's kg/mm^3 times 1e9,
+    as solve's --ball-density and batch's ball_density take it); nothing for a static solve."""
+    density = getattr(r, "ball_density", None)
+    if density is None:
+        return {}
+    return {"ball_density": np.broadcast_to(np.asarray(density, dtype=float) * 1e9, (n,))}
 
 
 def case_columns(
