@@ -11,18 +11,21 @@ that load or the rounding level of the terms, computed here from the returned ba
 the balls' inner contact stiffnesses ``1.5 Q_i / delta_i`` (the force change over a rounding of
 the lengths near A that give the inner approach); each ball's two equations from its returned
 forces and angles (tests/campaign_speed.py's measure) to 1e-11 (the campaign's worst: 4e-12).
+A load whose rounding level is above 1e-5 of it is refused, naming the smallest load accepted.
 """
 
 from __future__ import annotations
 
 import json
 import math
+import re
 
 import numpy as np
 import pytest
 from click.testing import CliRunner
 
 from bearingload.cli import main
+from bearingload.errors import InputError
 from bearingload.models.high_speed import solve_high_speed
 from tests.campaign_speed import ball_residual
 
@@ -90,3 +93,18 @@ def test_the_terminal_calls_answer():
         r = solve_high_speed(z, fr, 0.0, speed=speed, clearance=clearance, **geometry)
         assert np.allclose(case["ball_loads_inner"], r.ball_loads_inner, rtol=1e-9, atol=0)
         assert np.allclose(case["ball_loads_outer"], r.ball_loads_outer, rtol=1e-9, atol=0)
+
+
+@pytest.mark.parametrize("fr, clearance, speed", [(1e-6, -0.010, 100.0), (8e-7, -0.050, 30000.0)])
+def test_a_load_below_the_rounding_of_the_ball_forces_is_refused(fr, clearance, speed):
+    """1e-6 N against 10 µm of preload (ball loads of 96 N), 8e-7 N against 50 µm (1100 N): the
+    rounding of the ball forces is more than 1e-5 of the load; refused, naming the load and the
+    smallest accepted, which is answered and balanced to its rounding."""
+    with pytest.raises(InputError, match="too small against the ball forces") as err:
+        solve_high_speed(9, fr, 0.0, speed=speed, clearance=clearance, **B6205)
+    assert err.value.parameter == "radial_load"
+    smallest = float(re.search(r"at least ([0-9.e+-]+) N", str(err.value)).group(1))
+    assert fr < smallest < 1e3 * fr
+    r = solve_high_speed(9, smallest, 0.0, speed=speed, clearance=clearance, **B6205)
+    off, level, across = ring_check(r, smallest, B6205)
+    assert off <= max(1e-12 * smallest, level) and across <= max(1e-12 * smallest, level)

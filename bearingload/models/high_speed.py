@@ -64,9 +64,12 @@ inner ring. A case left unbalanced is solved again by continuation in omega^2 fr
 answer. The components
 the static model holds by symmetry are held (the speed terms keep those symmetries: ``M_g`` is
 odd in ``alpha_o``). A case stops when each applied component is balanced to ``TOLERANCE`` of
-the largest applied load and every ball to ``BALL_TOLERANCE`` of its forces; left above
-``ACCEPT``, :class:`~bearingload.errors.ConvergenceError` names its inputs. At speed 0 the
-answer is the static one (no step is taken from it).
+the largest applied load and every ball to ``BALL_TOLERANCE`` of its forces, or when no step
+lowers the residual; it is accepted when each component is balanced to ``ACCEPT`` of the largest
+applied load or to the rounding level of its terms (:func:`_rounding`: a light load against a
+preload or the balls' centrifugal forces, as the static model measures a load against the
+rounding of its terms); otherwise :class:`~bearingload.errors.ConvergenceError` names its
+inputs. At speed 0 the answer is the static one (no step is taken from it).
 """
 
 from __future__ import annotations
@@ -110,6 +113,9 @@ ACCEPT = 1e-9
 #: (the static model's :data:`bearingload.models._combined_ring.ROUNDING`). [-]
 ROUNDING = 64.0 * float(np.finfo(float).eps)
 _EPS = float(np.finfo(float).eps)
+#: Largest rounding level of the ring forces (:func:`_rounding`) over the largest applied load
+#: solved; above it the load is refused (the answer balances it to about a tenth of that). [-]
+LEVEL_MAX = 1e-5
 #: Ring Newton steps; trial steps of each: the Newton step halved HALVINGS times, then
 #: Levenberg-Marquardt steps. [-]
 RING_ITERATIONS = 200
@@ -470,6 +476,7 @@ class _State:
     terms: tuple[np.ndarray, ...]
     sens: np.ndarray  # (n, z, 6) each ball's rho, u', d(do, ao)/drho, d(do, ao)/du'
     score: np.ndarray  # (n,) the residual over f_ref or, where larger, its rounding over ACCEPT
+    level: np.ndarray  # (n,) the largest rounding level (:func:`_rounding`) over f_ref
 
     @property
     def accepted(self) -> np.ndarray:
@@ -516,7 +523,8 @@ def _evaluate(
     balls_ok = np.asarray(ok.all(axis=1))
     merit = np.where(balls_ok & np.isfinite(merit), merit, np.inf)
     score = np.where(balls_ok & np.isfinite(score), score, np.inf)
-    return _State(do, ao, balls_ok, gen, jac, merit, tuple(terms), sens, score)
+    level = floor.max(axis=1) / r.f_ref
+    return _State(do, ao, balls_ok, gen, jac, merit, tuple(terms), sens, score, level)
 
 
 def _rounding(
@@ -624,11 +632,11 @@ def _ring_step(jac: np.ndarray, res: np.ndarray) -> np.ndarray:
 def _take_state(st: _State, idx: np.ndarray) -> _State:
     return _State(st.do[idx], st.ao[idx], st.balls_ok[idx], st.gen[idx], st.jac[idx],
                   st.merit[idx], tuple(t[idx] for t in st.terms), st.sens[idx],
-                  st.score[idx])  # fmt: skip
+                  st.score[idx], st.level[idx])  # fmt: skip
 
 
 def _put_state(st: _State, rows: np.ndarray, new: _State) -> None:
-    for name in ("do", "ao", "balls_ok", "gen", "jac", "merit", "sens", "score"):
+    for name in ("do", "ao", "balls_ok", "gen", "jac", "merit", "sens", "score", "level"):
         getattr(st, name)[rows] = getattr(new, name)
     for mine, theirs in zip(st.terms, new.terms, strict=True):
         mine[rows] = theirs
@@ -671,6 +679,7 @@ def _solve(
         _put_state(st, bad[won], _take_state(st2, won))
     for i in np.flatnonzero(~st.accepted):
         _continuation(ring, int(i), v, st, total, v_static[i])
+    _check_resolved(st, ring, flat)
     _check(st, total, flat, one_sided)
     return ring, v, st, total
 
@@ -709,6 +718,30 @@ def _continuation(
             step *= 0.5
             if step < 1e-6:
                 return
+
+
+def _check_resolved(st: _State, ring: _Ring, flat: dict) -> None:
+    """InputError where the rounding level of the ring forces at the end is above LEVEL_MAX of
+    the largest applied load (a load tiny against a preload or the balls' centrifugal forces:
+    the double cannot balance it to the digits given). The smallest load accepted: the level
+    grows at most as the load^(1/3) (the contact stiffness; constant under a preload), so
+    ``F (level/LEVEL_MAX)^1.5`` is resolved."""
+    level = np.where(np.isfinite(st.level), st.level, 0.0)
+    bad = np.flatnonzero(level > LEVEL_MAX)
+    if bad.size == 0:
+        return
+    i = int(bad[np.argmax(level[bad])])
+    f_min = float(ring.f_ref[i] * (level[i] / LEVEL_MAX) ** 1.5)
+    f_min = float(f"{f_min * 1.05:.2g}")  # two digits, rounded up
+    raise InputError(
+        "radial_load",
+        f"the loads are too small against the ball forces at this speed for the ball dynamics "
+        f"(the largest of F_r, |F_a| and M/R_i is {float(ring.f_ref[i]):.3g} N; the rounding of "
+        f"the ball forces on the ring is {level[i] * float(ring.f_ref[i]):.2g} N, more than "
+        f"{LEVEL_MAX:.0e} of it; it takes at least {f_min:.2g} N at speed "
+        f"{float(flat['speed'][i]):.6g} rpm and clearance {float(flat['clearance'][i]):.6g} mm "
+        f"for this bearing); {_combined.RADIAL_TAKES_ANY_LOAD}",
+    )
 
 
 def _rel(a: np.ndarray, b: np.ndarray) -> float:
