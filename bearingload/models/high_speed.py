@@ -69,7 +69,8 @@ lowers the residual; it is accepted when each component is balanced to ``ACCEPT`
 applied load or to the rounding level of its terms (:func:`_rounding`: a light load against a
 preload or the balls' centrifugal forces, as the static model measures a load against the
 rounding of its terms); otherwise :class:`~bearingload.errors.ConvergenceError` names its
-inputs. At speed 0 the answer is the static one (no step is taken from it).
+inputs. A load whose rounding level is above ``LEVEL_MAX`` of it is refused
+(:class:`~bearingload.errors.InputError`, naming the smallest load accepted). At speed 0 the answer is the static one (no step is taken from it).
 """
 
 from __future__ import annotations
