@@ -64,9 +64,13 @@ inner ring. A case left unbalanced is solved again by continuation in omega^2 fr
 answer. The components
 the static model holds by symmetry are held (the speed terms keep those symmetries: ``M_g`` is
 odd in ``alpha_o``). A case stops when each applied component is balanced to ``TOLERANCE`` of
-the largest applied load and every ball to ``BALL_TOLERANCE`` of its forces; left above
-``ACCEPT``, :class:`~bearingload.errors.ConvergenceError` names its inputs. At speed 0 the
-answer is the static one (no step is taken from it).
+the largest applied load and every ball to ``BALL_TOLERANCE`` of its forces, or when no step
+lowers the residual; it is accepted when each component is balanced to ``ACCEPT`` of the largest
+applied load or to the rounding level of its terms (:func:`_rounding`: a light load against a
+preload or the balls' centrifugal forces, as the static model measures a load against the
+rounding of its terms); otherwise :class:`~bearingload.errors.ConvergenceError` names its
+inputs. A load whose rounding level is above ``LEVEL_MAX`` of it is refused
+(:class:`~bearingload.errors.InputError`, naming the smallest load accepted). At speed 0 the answer is the static one (no step is taken from it).
 """
 
 from __future__ import annotations
@@ -106,6 +110,13 @@ MODEL = "ball dynamics: centrifugal force and gyroscopic moment, outer-raceway c
 TOLERANCE = 1e-12
 #: Largest ring residual accepted at the end. [-]
 ACCEPT = 1e-9
+#: A ring residual within this times the sum of the magnitudes of its terms is their rounding
+#: (the static model's :data:`bearingload.models._combined_ring.ROUNDING`). [-]
+ROUNDING = 64.0 * float(np.finfo(float).eps)
+_EPS = float(np.finfo(float).eps)
+#: Largest rounding level of the ring forces (:func:`_rounding`) over the largest applied load
+#: solved; above it the load is refused (the answer balances it to about a tenth of that). [-]
+LEVEL_MAX = 1e-5
 #: Ring Newton steps; trial steps of each: the Newton step halved HALVINGS times, then
 #: Levenberg-Marquardt steps. [-]
 RING_ITERATIONS = 200
@@ -465,6 +476,14 @@ class _State:
     merit: np.ndarray  # (n,) largest free residual over f_ref (inf: a ball unsolved)
     terms: tuple[np.ndarray, ...]
     sens: np.ndarray  # (n, z, 6) each ball's rho, u', d(do, ao)/drho, d(do, ao)/du'
+    score: np.ndarray  # (n,) the residual over f_ref or, where larger, its rounding over ACCEPT
+    level: np.ndarray  # (n,) the largest rounding level (:func:`_rounding`) over f_ref
+
+    @property
+    def accepted(self) -> np.ndarray:
+        """(n,) bool: every free component balanced to ACCEPT of the largest applied load or
+        to the rounding of its terms and of the ball positions (:func:`_rounding`)."""
+        return self.score <= ACCEPT
 
 
 def _evaluate(
@@ -500,9 +519,31 @@ def _evaluate(
     jac = np.einsum("nkz,nlz->nkl", arm_r, d_fr) + np.einsum("nkz,nlz->nkl", arm_a, d_fa)
     res = np.where(r.held, 0.0, r.f - gen)
     merit = np.abs(res).max(axis=1) / r.f_ref
+    floor = _rounding(arm_r, arm_a, fr, fa, d, np.abs(rho) + np.abs(up))
+    score = (np.abs(res) / np.maximum(r.f_ref[:, None], floor / ACCEPT)).max(axis=1)
     balls_ok = np.asarray(ok.all(axis=1))
     merit = np.where(balls_ok & np.isfinite(merit), merit, np.inf)
-    return _State(do, ao, balls_ok, gen, jac, merit, tuple(terms), sens)
+    score = np.where(balls_ok & np.isfinite(score), score, np.inf)
+    level = floor.max(axis=1) / r.f_ref
+    return _State(do, ao, balls_ok, gen, jac, merit, tuple(terms), sens, score, level)
+
+
+def _rounding(
+    arm_r: np.ndarray, arm_a: np.ndarray, fr: np.ndarray, fa: np.ndarray, d: np.ndarray,
+    length: np.ndarray,
+) -> np.ndarray:  # fmt: skip
+    """The rounding level of each generalised ring force (n, 5): ROUNDING times the sum of its
+    terms' magnitudes (as the static model, :mod:`bearingload.models._combined_ring`), plus the
+    force change over one rounding of each ball's groove-centre position (``rho``, ``u'``: lengths
+    near A held in one double; the inner approach, a difference of such lengths, is known to
+    eps A only) - the level a light load against a preload or the centrifugal forces cannot be
+    balanced below. [N]"""
+    terms = np.abs(arm_r) * np.abs(fr)[:, None, :] + np.abs(arm_a) * np.abs(fa)[:, None, :]
+    stiff_r = (np.abs(d[1, 0]) + np.abs(d[1, 1]))[:, None, :] * np.abs(arm_r)
+    stiff_a = (np.abs(d[0, 0]) + np.abs(d[0, 1]))[:, None, :] * np.abs(arm_a)
+    moved = (stiff_r + stiff_a) * (_EPS * length[:, None, :])
+    out = ROUNDING * terms.sum(-1) + moved.sum(-1)
+    return np.where(np.isfinite(out), out, 0.0)
 
 
 def _newton(r: _Ring, v: np.ndarray, do: np.ndarray, ao: np.ndarray) -> tuple[Any, ...]:
@@ -591,11 +632,12 @@ def _ring_step(jac: np.ndarray, res: np.ndarray) -> np.ndarray:
 
 def _take_state(st: _State, idx: np.ndarray) -> _State:
     return _State(st.do[idx], st.ao[idx], st.balls_ok[idx], st.gen[idx], st.jac[idx],
-                  st.merit[idx], tuple(t[idx] for t in st.terms), st.sens[idx])  # fmt: skip
+                  st.merit[idx], tuple(t[idx] for t in st.terms), st.sens[idx],
+                  st.score[idx], st.level[idx])  # fmt: skip
 
 
 def _put_state(st: _State, rows: np.ndarray, new: _State) -> None:
-    for name in ("do", "ao", "balls_ok", "gen", "jac", "merit", "sens"):
+    for name in ("do", "ao", "balls_ok", "gen", "jac", "merit", "sens", "score", "level"):
         getattr(st, name)[rows] = getattr(new, name)
     for mine, theirs in zip(st.terms, new.terms, strict=True):
         mine[rows] = theirs
@@ -626,18 +668,19 @@ def _solve(
     ring = _Ring(b, c, s, geo.A - geo.g, f, f_ref, held, one_sided, geo.A)
     nan = np.full((n, z), np.nan)
     v, st, total = _newton(ring, v_static.copy(), nan, nan)
-    bad = np.flatnonzero(~(st.merit <= ACCEPT))
+    bad = np.flatnonzero(~st.accepted)
     if bad.size:
         start = pos["shifted"](bad)
         v2 = np.stack([start["x"], start["y"], start["u"], rr * np.deg2rad(start["tilt"]),
                        rr * np.deg2rad(start["tilt_cross"])], axis=1)[bad]  # fmt: skip
         v2, st2, its2 = _newton(ring.take(bad), v2, nan[bad], nan[bad])
         total[bad] += its2
-        won = np.flatnonzero(st2.merit <= ACCEPT)
+        won = np.flatnonzero(st2.accepted)
         v[bad[won]] = v2[won]
         _put_state(st, bad[won], _take_state(st2, won))
-    for i in np.flatnonzero(~(st.merit <= ACCEPT)):
+    for i in np.flatnonzero(~st.accepted):
         _continuation(ring, int(i), v, st, total, v_static[i])
+    _check_resolved(st, ring, flat)
     _check(st, total, flat, one_sided)
     return ring, v, st, total
 
@@ -663,7 +706,7 @@ def _continuation(
         stage = dataclasses.replace(one, b=dataclasses.replace(one.b, omega=omega * frac**0.5))
         x1, st1, its1 = _newton(stage, x + rate * (frac - done), do, ao)
         its[i] += its1[0]
-        if st1.merit[0] <= ACCEPT:
+        if st1.accepted[0]:
             if done > 0.0:
                 rate = (x1 - x) / (frac - done)
             done, x, do, ao = frac, x1, st1.do, st1.ao
@@ -678,13 +721,37 @@ def _continuation(
                 return
 
 
+def _check_resolved(st: _State, ring: _Ring, flat: dict) -> None:
+    """InputError where the rounding level of the ring forces at the end is above LEVEL_MAX of
+    the largest applied load (a load tiny against a preload or the balls' centrifugal forces:
+    the double cannot balance it to the digits given). The smallest load accepted: the level
+    grows at most as the load^(1/3) (the contact stiffness; constant under a preload), so
+    ``F (level/LEVEL_MAX)^1.5`` is resolved."""
+    level = np.where(np.isfinite(st.level), st.level, 0.0)
+    bad = np.flatnonzero(level > LEVEL_MAX)
+    if bad.size == 0:
+        return
+    i = int(bad[np.argmax(level[bad])])
+    f_min = float(ring.f_ref[i] * (level[i] / LEVEL_MAX) ** 1.5)
+    f_min = float(f"{f_min * 1.05:.2g}")  # two digits, rounded up
+    raise InputError(
+        "radial_load",
+        f"the loads are too small against the ball forces at this speed for the ball dynamics "
+        f"(the largest of F_r, |F_a| and M/R_i is {float(ring.f_ref[i]):.3g} N; the rounding of "
+        f"the ball forces on the ring is {level[i] * float(ring.f_ref[i]):.2g} N, more than "
+        f"{LEVEL_MAX:.0e} of it; it takes at least {f_min:.2g} N at speed "
+        f"{float(flat['speed'][i]):.6g} rpm and clearance {float(flat['clearance'][i]):.6g} mm "
+        f"for this bearing); {_combined.RADIAL_TAKES_ANY_LOAD}",
+    )
+
+
 def _rel(a: np.ndarray, b: np.ndarray) -> float:
     return float(np.max(np.abs(a - b) / np.abs(b), initial=0.0))
 
 
 def _check(st: _State, its: np.ndarray, flat: dict, one_sided: np.ndarray) -> None:
     """ConvergenceError naming the inputs of the cases left unbalanced."""
-    bad = ~(st.merit <= ACCEPT)
+    bad = ~st.accepted
     if np.any(bad):
         known = st.merit[bad][np.isfinite(st.merit[bad])]
         raise ConvergenceError(
