@@ -68,7 +68,8 @@ the largest applied load and every ball to ``BALL_TOLERANCE`` of its forces, or 
 lowers the residual; it is accepted when each component is balanced to ``ACCEPT`` of the largest
 applied load or to the rounding level of its terms (:func:`_rounding`: a light load against a
 preload or the balls' centrifugal forces, as the static model measures a load against the
-rounding of its terms); otherwise :class:`~bearingload.errors.ConvergenceError` names its
+rounding of its terms) or, up to ``NOISE_MAX`` of that load, to the change of the ring forces over
+the balls' own residuals (each ball balanced to ``BALL_TOLERANCE`` of its forces); otherwise :class:`~bearingload.errors.ConvergenceError` names its
 inputs. A load whose rounding level is above ``LEVEL_MAX`` of it is refused
 (:class:`~bearingload.errors.InputError`, naming the smallest load accepted). At speed 0 the answer is the static one (no step is taken from it).
 """
@@ -117,6 +118,10 @@ _EPS = float(np.finfo(float).eps)
 #: Largest rounding level of the ring forces (:func:`_rounding`) over the largest applied load
 #: solved; above it the load is refused (the answer balances it to about a tenth of that). [-]
 LEVEL_MAX = 1e-5
+#: Largest ring residual accepted, over the largest applied load, where the balls' own residuals
+#: (each balanced to BALL_TOLERANCE of its forces) move the ring forces more than ACCEPT of it:
+#: a light load against the balls' centrifugal forces (a tenth of LEVEL_MAX). [-]
+NOISE_MAX = 1e-6
 #: Ring Newton steps; trial steps of each: the Newton step halved HALVINGS times, then
 #: Levenberg-Marquardt steps. [-]
 RING_ITERATIONS = 200
@@ -187,8 +192,10 @@ def _ring_forces(
     b: _Set, rho: np.ndarray, u: np.ndarray, do: np.ndarray, ao: np.ndarray, one_sided: np.ndarray
 ) -> tuple[Any, ...]:
     """The ball forces on the ring (axial, radial) (n, z), their total derivatives by (rho, u)
-    with the ball equations eliminated: ((dFa/drho, dFa/du), (dFr/drho, dFr/du)), the terms, and
-    each ball's (rho, u', d(do, ao)/drho, d(do, ao)/du') (n, z, 6)."""
+    with the ball equations eliminated: ((dFa/drho, dFa/du), (dFr/drho, dFr/du)), the terms,
+    each ball's (rho, u', d(do, ao)/drho, d(do, ao)/du') (n, z, 6), and the largest change of
+    its (Fa, Fr) per unit residual of its equations, ``|dF/dX (dg/dX)^-1|`` (2, n, z) (0 at
+    speed 0: no ball equations). [-]"""
     up = np.where(one_sided[:, None], np.maximum(u, 0.0), u)
     dup = np.where(one_sided[:, None], (u > 0).astype(float), 1.0)
     t0 = ball_terms(b, rho, up, do, ao)
@@ -222,7 +229,12 @@ def _ring_forces(
             else:
                 static = _static_derivative(b, rho, up, r, c)
                 out[r - 2, c - 2] = np.where(moving, total, static) * chain
-    return t0[12], t0[13], out, t0, sens
+    with np.errstate(all="ignore"):
+        gain = np.stack([np.abs(d[r][0] * inv[0, 0] + d[r][1] * inv[1, 0])
+                         + np.abs(d[r][0] * inv[0, 1] + d[r][1] * inv[1, 1])
+                         for r in (2, 3)])  # fmt: skip
+    gain = np.where(moving & np.isfinite(gain), gain, 0.0)
+    return t0[12], t0[13], out, t0, sens, gain
 
 
 def _static_derivative(b: _Set, rho: np.ndarray, up: np.ndarray, r: int, c: int) -> np.ndarray:
@@ -476,7 +488,8 @@ class _State:
     merit: np.ndarray  # (n,) largest free residual over f_ref (inf: a ball unsolved)
     terms: tuple[np.ndarray, ...]
     sens: np.ndarray  # (n, z, 6) each ball's rho, u', d(do, ao)/drho, d(do, ao)/du'
-    score: np.ndarray  # (n,) the residual over f_ref or, where larger, its rounding over ACCEPT
+    score: np.ndarray  # (n,) the residual over f_ref or, where larger, its rounding (or the
+    # balls' own residuals on it, up to NOISE_MAX of f_ref) over ACCEPT
     level: np.ndarray  # (n,) the largest rounding level (:func:`_rounding`) over f_ref
 
     @property
@@ -509,7 +522,7 @@ def _evaluate(
     ao = np.where(moving & fresh & (do <= 0), 0.0, ao)
     do = np.where(moving, np.maximum(do, (fc / r.b.ko[..., -1]) ** (2.0 / 3.0)), do)
     do, ao, ok = solve_balls(r.b, rho, up, do, ao)
-    fa, fr, d, terms, sens = _ring_forces(r.b, rho, u, do, ao, r.one_sided)
+    fa, fr, d, terms, sens, gain = _ring_forces(r.b, rho, u, do, ao, r.one_sided)
     zero, one = np.zeros_like(c), np.ones_like(c)
     arm_r = np.stack([c, s, zero, zero, zero], axis=1)  # (n, 5, z)
     arm_a = np.stack([zero, zero, one, c, s], axis=1)
@@ -520,7 +533,16 @@ def _evaluate(
     res = np.where(r.held, 0.0, r.f - gen)
     merit = np.abs(res).max(axis=1) / r.f_ref
     floor = _rounding(arm_r, arm_a, fr, fa, d, np.abs(rho) + np.abs(up))
-    score = (np.abs(res) / np.maximum(r.f_ref[:, None], floor / ACCEPT)).max(axis=1)
+    # each ball's own residual (its equations, balanced to BALL_TOLERANCE of its forces) moves
+    # its ring forces by gain: they are known to that only (a light load against the centrifugal
+    # forces); accepted up to NOISE_MAX of the load at most
+    g = gain * np.hypot(terms[0], terms[1])
+    noise = np.abs(arm_a) * g[0][:, None, :] + np.abs(arm_r) * g[1][:, None, :]
+    noise = np.minimum(np.where(np.isfinite(noise), noise, 0.0).sum(-1),
+                       NOISE_MAX * r.f_ref[:, None])  # fmt: skip
+    score = (np.abs(res) / np.maximum(r.f_ref[:, None], np.maximum(floor, noise) / ACCEPT)).max(
+        axis=1
+    )
     balls_ok = np.asarray(ok.all(axis=1))
     merit = np.where(balls_ok & np.isfinite(merit), merit, np.inf)
     score = np.where(balls_ok & np.isfinite(score), score, np.inf)
