@@ -2,6 +2,7 @@
 
 from __future__ import annotations
 
+import math
 from typing import Any
 
 import numpy as np
@@ -137,9 +138,12 @@ def ball_spacing(balls: object, ball_diameter: object, pitch_diameter: object) -
     if np.any(bad):
         i = np.flatnonzero(bad.ravel())[0]
         n, d, p, c = (float(a.ravel()[i]) for a in (z, dw, dm, chord))
+        k = next((k for k in range(6, 17) if f"{d:.{k}g}" != f"{c:.{k}g}"), 17)  # as they differ
+        step = 10.0 ** (math.floor(math.log10(c)) - k + 1)
+        most = math.floor(c / step) * step  # rounded down: itself accepted
         raise InputError(
             "ball_diameter",
-            f"{n:.0f} balls of {d:g} mm overlap on a pitch circle of {p:g} mm: adjacent ball "
-            f"centres are d_m sin(pi/z) = {c:.6g} mm apart, so with z = {n:.0f} and d_m = {p:g} mm "
-            f"the ball diameter D_w must be at most {c:.6g} mm (or fewer balls)",
+            f"{n:.0f} balls of {d:.{k}g} mm overlap on a pitch circle of {p:g} mm: adjacent ball "
+            f"centres are d_m sin(pi/z) = {c:.{k}g} mm apart, so with z = {n:.0f} and d_m = {p:g} "
+            f"mm the ball diameter D_w must be at most {most:.{k}g} mm (or fewer balls)",
         )

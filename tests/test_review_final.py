@@ -39,3 +39,24 @@ def test_light_axial_load_of_an_angular_contact_bearing_at_speed_is_answered(fa)
     out = CliRunner().invoke(main, ["solve", "7205B", "-F", "0", "-A", f"{fa}N", "--speed",
                                     "3000", "--format", "json"])  # fmt: skip
     assert out.exit_code == 0, out.output
+
+
+def test_overlap_refusal_shows_the_digits_that_differ_and_an_accepted_maximum(capsys):
+    """``solve -z 20 --ball-diameter 6.022728 --pitch-diameter 38.5 -F 1kN`` said '20 balls of
+    6.02273 mm overlap ... the ball diameter D_w must be at most 6.02273 mm': the given and the
+    largest diameter printed alike (6 digits), the largest rounded up (d_m sin(pi/20) =
+    6.0227269...). The digits now go as far as they differ, the largest rounded down: it is
+    accepted, and the given diameter is above it."""
+    import re
+
+    from tests.cli_helpers import run_entry
+
+    args = ["solve", "-z", "20", "--pitch-diameter", "38.5", "-F", "1kN"]
+    code, _, err = run_entry(capsys, *args, "--ball-diameter", "6.022728")
+    assert code != 0 and len(err.strip().splitlines()) == 1, err
+    given = re.search(r"20 balls of ([0-9.]+) mm overlap", err).group(1)
+    most = re.search(r"must be at most ([0-9.]+) mm", err).group(1)
+    assert float(given) == 6.022728 and float(most) < float(given), err
+    assert float(most) <= 38.5 * math.sin(math.pi / 20)
+    code, _, err = run_entry(capsys, *args, "--ball-diameter", most)
+    assert code == 0, err
