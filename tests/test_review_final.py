@@ -60,3 +60,16 @@ def test_overlap_refusal_shows_the_digits_that_differ_and_an_accepted_maximum(ca
     assert float(most) <= 38.5 * math.sin(math.pi / 20)
     code, _, err = run_entry(capsys, *args, "--ball-diameter", most)
     assert code == 0, err
+
+
+def test_table_life_conditions_give_the_speed_as_given(capsys):
+    """``table life --bearing 6205 -F 1kN --speed 12345`` printed 'shaft speed n = 1.234e+04
+    rpm' (4 digits: 12340, not the 12345 given; solve prints 12345); the conditions line now
+    keeps 6 digits, as solve's tables."""
+    from tests.cli_helpers import run_entry
+
+    code, out, err = run_entry(capsys, "table", "life", "--bearing", "6205", "-F", "1kN",
+                               "--speed", "12345", "--viscosity", "20.25")  # fmt: skip
+    assert code == 0, err
+    assert "shaft speed n = 12345 rpm" in out, out
+    assert "operating viscosity nu = 20.25 mm^2/s" in out, out

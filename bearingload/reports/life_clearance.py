@@ -220,7 +220,7 @@ def _service_notes(service: Sequence[Any] | None) -> list[str]:
     for key, value in conds.items():
         q = QUANTITIES[key]
         unit, factor = q.shown()
-        parts.append(f"{q.label} = {value * factor:.4g}{' ' + unit if unit != '-' else ''}")
+        parts.append(f"{q.label} = {value * factor:.6g}{' ' + unit if unit != '-' else ''}")
     return ["; ".join(parts) + "."] + service_notes(service)
 
 
