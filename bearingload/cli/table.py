@@ -3,7 +3,6 @@ bearing's ISO/TS 16281 life against its clearance."""
 
 from __future__ import annotations
 
-import dataclasses
 from typing import Any
 
 import click
@@ -234,10 +233,10 @@ def _life(
 ) -> None:
     """``table life``: resolve the bearing as solve does, solve every clearance, emit; a speed
     above the catalogue's limiting speed warns, as in solve."""
-    from bearingload.bearings.checks import speed_findings
     from bearingload.cli.cases import resolve_bearings
     from bearingload.cli.options import print_warnings
     from bearingload.reports.life_clearance import life_report
+    from bearingload.reports.solve import printed_warnings
     from bearingload.studies.life_clearance import life_against_clearance
 
     if case.bearing is None and case.ball_diameter is None:
@@ -245,7 +244,7 @@ def _life(
             "table life needs a bearing: --bearing, or --balls, --ball-diameter, "
             "--pitch-diameter and --dynamic-rating"
         )
-    from bearingload.cli.solve import with_ratings
+    from bearingload.cli.solve import with_ratings, with_speed_warnings
 
     b = with_ratings(resolve_bearings(case, k_given), case)[0]
     try:
@@ -261,14 +260,10 @@ def _life(
             raise
         message = str(exc).split(": ", 1)[-1]
         raise click.UsageError(f"Invalid value for '--clearances': {message}") from exc
-    speed = [w for w in speed_findings(case.speed, b) if w not in result.warnings]
-    result = dataclasses.replace(result, warnings=(*result.warnings, *speed))
+    (result,) = with_speed_warnings([result], case.speed)
     service = _service(case, result)
     text = life_report(result, fmt, service)
-    found = list(result.warnings)
-    more = dict.fromkeys(w for s in service or [] for w in s.warnings)
-    found += [w for w in more if w not in found]
-    print_warnings(found, False)
+    print_warnings(printed_warnings(result.warnings, service), False)
     emit(text, output)
 
 

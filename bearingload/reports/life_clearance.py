@@ -14,7 +14,7 @@ from typing import Any
 from bearingload.reports.combined import tilt_text
 from bearingload.reports.quantities import QUANTITIES, SERVICE_KEYS, units
 from bearingload.reports.render import Column, Table, render
-from bearingload.reports.solve import column
+from bearingload.reports.solve import column, printed_warnings
 from bearingload.studies.life_clearance import (
     AXIAL_LOAD,
     DESIGNATION,
@@ -237,9 +237,7 @@ def life_document(t: LifeAgainstClearance, service: Sequence[Any] | None = None)
         "rows": body,
         "units": units([*conds, *body[0]], 1.5),
         "geometry": geometry_document(t.bearing),
-        "warnings": list(
-            dict.fromkeys([*t.warnings, *(w for s in service or [] for w in s.warnings)])
-        ),
+        "warnings": printed_warnings(t.warnings, service),
     } | _static(service)
 
 
