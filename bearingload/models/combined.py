@@ -125,8 +125,31 @@ MAX_STIFFNESS_UPDATES = 40
 EPS = float(np.finfo(float).eps)
 
 
+class StiffnessViews:
+    """The diagonal terms of a result's 5×5 ``stiffness_matrix`` (x, y, axial, tilt,
+    tilt_cross) as engineers read them: a bearing's (:class:`CombinedDistribution`) or a
+    pair's (:class:`bearingload.models.pair.PairDistribution`)."""
+
+    stiffness_matrix: np.ndarray
+
+    @property
+    def stiffness_radial(self) -> Any:
+        """dF_x/dx, the radial stiffness along the load line. [N/mm]"""
+        return numerics.scalar_out(self.stiffness_matrix[..., 0, 0])
+
+    @property
+    def stiffness_axial(self) -> Any:
+        """dF_a/d(axial), the axial stiffness. [N/mm]"""
+        return numerics.scalar_out(self.stiffness_matrix[..., 2, 2])
+
+    @property
+    def stiffness_tilt(self) -> Any:
+        """dM/d(tilt), the tilting stiffness in the plane of the load. [N mm/rad]"""
+        return numerics.scalar_out(self.stiffness_matrix[..., 3, 3])
+
+
 @dataclass(frozen=True)
-class CombinedDistribution:
+class CombinedDistribution(StiffnessViews):
     """Solution of the combined-load equilibrium; arrays of the case shape, ball arrays (..., z).
 
     For one case given as scalars every case quantity is a Python ``float`` (``iterations`` an
@@ -209,21 +232,6 @@ class CombinedDistribution:
     def q_max(self) -> Any:
         """Load of the most heavily loaded ball. [N]"""
         return numerics.scalar_out(self.ball_loads.max(axis=-1))
-
-    @property
-    def stiffness_radial(self) -> Any:
-        """dF_x/dx, the radial stiffness along the load line. [N/mm]"""
-        return numerics.scalar_out(self.stiffness_matrix[..., 0, 0])
-
-    @property
-    def stiffness_axial(self) -> Any:
-        """dF_a/d(axial), the axial stiffness. [N/mm]"""
-        return numerics.scalar_out(self.stiffness_matrix[..., 2, 2])
-
-    @property
-    def stiffness_tilt(self) -> Any:
-        """dM/d(tilt), the tilting stiffness in the plane of the load. [N mm/rad]"""
-        return numerics.scalar_out(self.stiffness_matrix[..., 3, 3])
 
     @property
     def loaded_balls(self) -> Any:

@@ -54,7 +54,7 @@ from bearingload.errors import ConvergenceError, InputError
 from bearingload.models import _combined_ring as _ring
 from bearingload.models import combined as _comb
 from bearingload.models._combined_ring import ACCEPT, TOLERANCE, Problem
-from bearingload.models.combined import CombinedDistribution
+from bearingload.models.combined import CombinedDistribution, StiffnessViews
 
 __all__ = ["ARRANGEMENTS", "LIFE_EXPONENT", "PairDistribution", "solve_pair", "pair_life"]
 
@@ -74,7 +74,7 @@ HALVINGS = 50
 
 
 @dataclass(frozen=True)
-class PairDistribution:
+class PairDistribution(StiffnessViews):
     """Solution of a bearing pair; arrays of the case shape.
 
     Attributes
@@ -130,21 +130,6 @@ class PairDistribution:
     lift_off_axial_load: Any
     residual: Any
     iterations: Any
-
-    @property
-    def stiffness_radial(self) -> Any:
-        """dF_x/dx of the pair. [N/mm]"""
-        return numerics.scalar_out(self.stiffness_matrix[..., 0, 0])
-
-    @property
-    def stiffness_axial(self) -> Any:
-        """dF_a/d(axial) of the pair. [N/mm]"""
-        return numerics.scalar_out(self.stiffness_matrix[..., 2, 2])
-
-    @property
-    def stiffness_tilt(self) -> Any:
-        """dM/d(tilt) of the pair. [N mm/rad]"""
-        return numerics.scalar_out(self.stiffness_matrix[..., 3, 3])
 
 
 def pair_life(life_1: Any, life_2: Any, exponent: float = LIFE_EXPONENT) -> Any:
