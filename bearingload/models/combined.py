@@ -1076,6 +1076,23 @@ def _refuse_edge(case: int, ball: int, given: dict) -> None:
     )
 
 
+def tangent_weights(
+    p: Problem, b: _ring.Balls, lo: _ring.Loads, kappa: np.ndarray, slope: np.ndarray | None
+) -> tuple[np.ndarray, np.ndarray, np.ndarray | None]:
+    """Each ball's weights (w1, w2, w3) of :func:`bearingload.models._combined_ring.ball_tangent`
+    at its state: dQ/d(delta), Q/d where the normal turns, and, with the ``slope``
+    d(kappa)/d(cos alpha) of a Hertz stiffness curve, dQ/d(alpha)/d (None at a constant K);
+    scaled, as the ring's forces are."""
+    inside = _ring.turns(b.rho, b.u, p.one_sided)
+    d = np.where(b.d > 0, b.d, 1.0)
+    w1 = 1.5 * (1.0 + kappa) * lo.root
+    w2 = np.where(inside, lo.q / d, 0.0)
+    if slope is None:
+        return w1, w2, None
+    dq = slope * -lo.sa * lo.root**3  # dQ/d(alpha), scaled
+    return w1, w2, np.where(inside & (lo.root > 0), dq / d, 0.0)
+
+
 def _tangent(p: Problem, geo: _Geometry, point: _ring.Point, kappa: np.ndarray,
              curve: _StiffnessCurve | None, mirrored: np.ndarray) -> np.ndarray:  # fmt: skip
     """The stiffness matrix of every case at its equilibrium (n, 5, 5): d(generalised force)/
@@ -1091,15 +1108,8 @@ def _tangent(p: Problem, geo: _Geometry, point: _ring.Point, kappa: np.ndarray,
     case symmetric about the load line (``mirrored``: the balls and the loads) the couplings of
     (x, axial, tilt) with (y, tilt_cross) are 0, exactly rather than to rounding."""
     b, lo = point.b, point.lo
-    inside = _ring.turns(b.rho, b.u, p.one_sided)
-    d = np.where(b.d > 0, b.d, 1.0)
-    w1 = 1.5 * (1.0 + kappa) * lo.root
-    w2 = np.where(inside, lo.q / d, 0.0)
-    w3 = None
-    if curve is not None:
-        dq = curve.slope(lo.ca, lo.cam1) * -lo.sa * lo.root**3  # dQ/d(alpha), scaled
-        w3 = np.where(inside & (lo.root > 0), dq / d, 0.0)
-    t = _ring.ball_tangent(p.arms, lo.ca, lo.sa, w1, w2, w3)
+    slope = None if curve is None else curve.slope(lo.ca, lo.cam1)
+    t = _ring.ball_tangent(p.arms, lo.ca, lo.sa, *tangent_weights(p, b, lo, kappa, slope))
     lever = np.ones((p.f.shape[0], 5))
     lever[:, 3:] = geo.R_i[:, None]
     t *= (p.f_ref / p.scale)[:, None, None] * lever[:, :, None] * lever[:, None, :]

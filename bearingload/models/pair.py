@@ -262,20 +262,9 @@ def _jacobian(pp: _Pair, st: _State, curve: Any, rows: np.ndarray, symmetric: bo
     local = []
     for k in range(2):
         p, b, lo, kappa = pp.probs[k], st.balls[k], st.loads[k], st.kappa[k]
-        inside = _ring.turns(b.rho, b.u, p.one_sided)
-        d = np.where(b.d > 0, b.d, 1.0)
-        w1 = 1.5 * (1.0 + kappa) * lo.root
-        w2 = np.where(inside, lo.q / d, 0.0)
-        w3 = None
-        if curve is not None:
-            slope = _slope(curve, rows, lo)
-            w3 = np.where(inside & (lo.root > 0), slope * -lo.sa * lo.root**3 / d, 0.0)
-        g = _ring._times_arms(lo.ca, lo.sa, p.arms)  # (n, z, 5)
-        h = _ring._times_arms(-lo.sa, lo.ca, p.arms)
-        gt, ht = g.transpose(0, 2, 1), h.transpose(0, 2, 1)
-        t = (gt * w1[:, None, :]) @ g + (ht * w2[:, None, :]) @ h
-        if w3 is not None:
-            t += (gt * w3[:, None, :]) @ h
+        slope = None if curve is None else _slope(curve, rows, lo)
+        weights = _comb.tangent_weights(p, b, lo, kappa, slope)
+        t = _ring.ball_tangent(p.arms, lo.ca, lo.sa, *weights)
         if symmetric:
             t = 0.5 * (t + t.transpose(0, 2, 1))
         local.append(t)
