@@ -252,7 +252,7 @@ def continuum_load(
     loaded = d_max > 0
     eps = np.where(loaded, d_max / (2.0 * x), 0.5)
     j, _ = _jr(eps, m, NODES_FINAL, derivative=False)
-    force = np.where(loaded, z * k_ball * np.where(loaded, d_max, 1.0) ** m * j, 0.0)
+    force = np.where(loaded, z * k_ball * np.power(np.where(loaded, d_max, 1.0), m) * j, 0.0)
     return _scalar_or_array(force, x)
 
 
@@ -328,10 +328,10 @@ def solve_continuum(
     from bearingload.models.equilibrium import check_range
 
     with np.errstate(all="ignore"):  # the exact model's range: the same inputs refused alike
-        scale = (force / k_ball) ** (1.0 / m)
+        scale = np.power(force / k_ball, 1.0 / m)
         check_range(force, scale, e / scale, m, z)
     j0 = _integral_i(m) / np.pi
-    x0 = (force / (z * k_ball * j0)) ** (1.0 / m)
+    x0 = np.power(force / (z * k_ball * j0), 1.0 / m)
     eta = e / x0
     if not np.all(np.isfinite(eta)) or not np.all(np.isfinite(x0)) or np.any(x0 <= 0):
         bad = ~(np.isfinite(eta) & np.isfinite(x0) & (x0 > 0))
@@ -355,7 +355,7 @@ def solve_continuum(
     )
     eps = np.exp(y)
     j, dj = _jr(eps, m, nodes or NODES_FINAL, derivative=True)
-    d_rel = (j0 / j) ** (1.0 / m)  # delta_max / x0
+    d_rel = np.power(j0 / j, 1.0 / m)  # delta_max / x0
     d_max = x0 * d_rel
     x = d_max / (2.0 * eps)
     k = 1.0 / (z * j)
@@ -365,7 +365,7 @@ def solve_continuum(
     preload = e < 0
     ratio = np.where(preload, (x - e) / d_max, 1.0)
     d_max = np.where(preload, x - e, d_max)
-    k = k * ratio**m
+    k = k * np.power(ratio, m)
     # dF/dx = z K delta_max^(m-1) [m J + eps (1 - 2 eps) J'] = F/delta_max [m + eps (1-2eps) J'/J]
     stiff = force / d_max * (m + eps * (1.0 - 2.0 * eps) * dj / j)
     zone = np.where(eps <= 1.0, 2.0 * np.arcsin(np.sqrt(np.minimum(eps, 1.0))), np.pi)
@@ -417,6 +417,31 @@ def _nodes(n: int) -> tuple[np.ndarray, np.ndarray, np.ndarray, np.ndarray]:
     return s * s, c, weight, theta
 
 
+def _power(base: np.ndarray, exponent: np.ndarray) -> np.ndarray:
+    """``base ** exponent`` over the broadcast (cases, nodes) grid, both operands laid out whole.
+
+    numpy picks a different ``pow`` loop (vectorised or per element, rounding differently in the
+    last bit) by the memory layout of its operands; a broadcast exponent column gives one layout
+    for one case and another for many, so a case's bits would depend on the other cases of the
+    call. Both operands as contiguous arrays of the full shape take one loop for every case.
+    """
+    shape = np.broadcast_shapes(base.shape, exponent.shape)
+    return np.power(
+        np.ascontiguousarray(np.broadcast_to(base, shape)),
+        np.ascontiguousarray(np.broadcast_to(exponent, shape)),
+    )
+
+
+def _weighted_sum(values: np.ndarray, w: np.ndarray) -> np.ndarray:
+    """Each row of ``values`` times the weights ``w``, summed along the row.
+
+    Not ``values @ w``: a BLAS matrix-vector product blocks the rows differently for different
+    row counts, so one case's last bits would depend on the other cases of the call; an
+    elementwise product summed along each contiguous row rounds every row alike.
+    """
+    return np.sum(values * w, axis=-1)
+
+
 def _jr(
     eps: np.ndarray, m: np.ndarray, n: int, *, derivative: bool
 ) -> tuple[np.ndarray, np.ndarray]:
@@ -435,9 +460,14 @@ def _jr(
             ei, mi = e[inner], mm[inner]
             root = np.sqrt(c * c + (1.0 - ei) * s2)  # sqrt(1 - eps sin^2)
             common = (1.0 - 2.0 * ei * s2) / root
-            j[inner] = 2.0 * np.sqrt(ei[:, 0]) / np.pi * ((c ** (2.0 * mi + 1.0) * common) @ w)
+            j[inner] = (
+                2.0
+                * np.sqrt(ei[:, 0])
+                / np.pi
+                * _weighted_sum(_power(c, 2.0 * mi + 1.0) * common, w)
+            )
             if derivative:
-                val = (c ** (2.0 * mi - 1.0) * s2 * common) @ w
+                val = _weighted_sum(_power(c, 2.0 * mi - 1.0) * s2 * common, w)
                 dj[inner] = np.where(
                     ei[:, 0] > 0, 2.0 * mi[:, 0] / (np.pi * np.sqrt(ei[:, 0])) * val, np.inf
                 )
@@ -447,10 +477,10 @@ def _jr(
             a = s2 / eo
             log_base = np.log1p(-a)
             f = np.expm1(mo * log_base) * (1.0 - 2.0 * s2)
-            j[outer] = 2.0 / np.pi * (f @ w)
+            j[outer] = 2.0 / np.pi * _weighted_sum(f, w)
             if derivative:
                 g = np.exp((mo - 1.0) * log_base) * s2 * (1.0 - 2.0 * s2)
-                dj[outer] = 2.0 * mo[:, 0] / (np.pi * eo[:, 0] ** 2) * (g @ w)
+                dj[outer] = 2.0 * mo[:, 0] / (np.pi * eo[:, 0] ** 2) * _weighted_sum(g, w)
     return j.reshape(shape), dj.reshape(shape)
 
 
