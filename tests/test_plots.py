@@ -83,6 +83,18 @@ def test_solve_plot_figure_of_the_range(monkeypatch, tmp_path):
     heights = [p.get_height() for p in ax.patches]
     expected = [q for c in cases for q in c["ball_loads"]]  # the command's own solution
     assert heights == pytest.approx(expected, rel=1e-9, abs=1e-9)
+    # the title names every clearance drawn, not the middle one alone (it said G_r = 20.5 µm)
+    assert "G_r = 13, 20.5, 28 µm," in fig.get_axes()[0].get_title().replace("\n", " ")
+
+
+def test_combined_plot_title_names_every_clearance_of_a_range(monkeypatch, tmp_path):
+    figures = drawn(monkeypatch)
+    out = invoke("solve", "6205", "-F", "1.4kN", "-A", "700N", "-G", "C3", "--clearance-pick",
+                 "range", "--plot", str(tmp_path / "p.png"))  # fmt: skip
+    assert out.exit_code == 0, out.output
+    (fig,) = figures
+    title = fig.get_axes()[0].get_title().replace("\n", " ")
+    assert "G_r = 13, 20.5, 28 µm," in title, title
 
 
 def test_without_matplotlib_one_error_line_and_nothing_written(capsys, tmp_path, monkeypatch):

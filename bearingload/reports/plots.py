@@ -160,6 +160,11 @@ def ball_loads_figure(
     return fig
 
 
+def _clearances(values: Sequence[float]) -> str:
+    """``G_r = 20.5 µm`` for one case; ``G_r = 13, 20.5, 28 µm`` for the curves of a range."""
+    return "G_r = " + ", ".join(f"{g * 1e3:.6g}" for g in values) + " µm"
+
+
 def solve_figure(cases: Sequence[Any]) -> Any:
     """The ball loads of ``bearingload solve``'s own radial cases (LoadedCase of
     :mod:`bearingload.studies.loaded_bearing`): those of the exact model, one set per clearance
@@ -178,7 +183,8 @@ def solve_figure(cases: Sequence[Any]) -> Any:
         f"{_named(_designation(exact[0]))}Ball loads, exact ring equilibrium: "
         f"z = {int(case.balls)}, "
         f"F_r = {float(case.load):.6g} N, K = {float(case.stiffness):.6g} "
-        f"N/mm^{float(case.exponent):g}, G_r = {float(case.clearance) * 1e3:.6g} µm, "
+        f"N/mm^{float(case.exponent):g}, "
+        f"{_clearances([float(c.result.case.clearance) for c in exact])}, "
         f"cage angle {float(case.cage_angle):.6g}°"
     )
     return ball_loads_figure(drawn, title)
@@ -209,7 +215,8 @@ def combined_loads_figure(cases: Sequence[Any]) -> Any:
     title = (
         f"{_named(_designation(cases[0]))}Ball loads, 3-D ring equilibrium: z = {int(r.balls)}, "
         f"F_r = {one(r.load):.6g} N, "
-        f"F_a = {one(r.axial_load):.6g} N, G_r = {one(r.clearance) * 1e3:.6g} µm, "
+        f"F_a = {one(r.axial_load):.6g} N, "
+        f"{_clearances([one(c.result.clearance) for c in cases])}, "
         f"cage angle {one(r.cage_angle):.6g}°"
     )
     speed = getattr(r, "speed", None)  # the ball dynamics: loads and angles drawn are the inner
