@@ -32,8 +32,9 @@ def _warnings(err: str) -> list[str]:
 def test_a_too_small_load_at_speed_names_quasi_static(capsys):
     """solve 6205 -F 1e-9N --speed 3000 is refused by the combined solver the ball dynamics
     use; its hint was 'the radial solver, without an axial load, takes any load' though no
-    axial load was given: it names --quasi-static, which solves the case. With -A 0 the old
-    hint stays (the user chose the combined engine)."""
+    axial load was given: it names --quasi-static, which solves the case. With -A 0 it said the
+    same, though at a speed the radial path is the ball dynamics too: it names --quasi-static
+    without an axial load."""
     line = _error(capsys, "solve", "6205", "-F", "1e-9N", "--speed", "3000")
     assert "'--load'" in line and "--quasi-static" in line, line
     assert "without an axial load" not in line
@@ -41,12 +42,19 @@ def test_a_too_small_load_at_speed_names_quasi_static(capsys):
                              "--quasi-static", "--format", "json")  # fmt: skip
     assert code == 0 and json.loads(out)["cases"][0]["load"] == 1e-9
     line = _error(capsys, "solve", "6205", "-F", "1e-9N", "-A", "0", "--speed", "3000")
-    assert "the radial solver, without an axial load, takes any load" in line
+    assert "the radial solver, without an axial load" not in line, line
+    assert "--quasi-static without an axial load gives the static radial engine" in line, line
+    line = _error(capsys, "solve", "6205", "-F", "0", "-A", "1e-9N", "--speed", "3000")
+    assert "--quasi-static without an axial load gives the static radial engine" in line, line
+    # without a speed the radial engine is the way: the solver's own hint
+    line = _error(capsys, "solve", "6205", "-F", "1e-9N", "-A", "0")
+    assert "the radial solver, without an axial load, takes any load" in line, line
 
 
 def test_a_too_small_batch_row_at_speed_names_quasi_static(capsys, tmp_path):
-    """The batch row's reason likewise names quasi_static for a radial row at a speed; a row
-    with an axial_load cell of 0 and an angular-contact row keep the solver's hint."""
+    """The batch row's reason likewise names quasi_static for a radial row at a speed, and for a
+    row with an axial_load cell of 0 quasi_static with that cell blank; an angular-contact row
+    keeps the solver's hint."""
     path = tmp_path / "rows.csv"
     path.write_text(
         "bearing,load,axial_load,speed\n6205,1e-9,,3000\n6205,1e-9,0,3000\n7205B,1e-9,,3000\n"
@@ -57,12 +65,11 @@ def test_a_too_small_batch_row_at_speed_names_quasi_static(capsys, tmp_path):
     assert code == 1
     reasons = {w.split(":", 1)[0]: w for w in _warnings(err) if w.startswith("row ")}
     assert "quasi_static true gives the static radial engine" in reasons["row 2"]
-    assert "the radial solver, without an axial load, takes any load" in reasons["row 3"]
+    assert "quasi_static true with the axial_load and moment cells blank" in reasons["row 3"]
     # the angular-contact row: no radial solver can take it (tests/test_review_small.py)
     assert "angular-contact bearing is solved by this solver only" in reasons["row 4"]
     assert "radial solver" not in reasons["row 4"]
-    for row in ("row 3", "row 4"):
-        assert "quasi_static" not in reasons[row]
+    assert "quasi_static" not in reasons["row 4"]
     assert "row 5" not in reasons
 
 

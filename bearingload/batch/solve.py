@@ -543,8 +543,9 @@ def _solve_combined(
         )  # fmt: skip
     except (InputError, ConvergenceError) as exc:
         cells = [cols[c][i] for c in LOAD_COLUMNS if c in cols for i in idx]
-        radial = at_speed and b.contact_angle is None and all(x is None for x in cells)
-        hinted = _quasi_static_hint(exc) if radial else None
+        deep_groove = at_speed and b.contact_angle is None
+        radial = deep_groove and all(x is None for x in cells)
+        hinted = _quasi_static_hint(exc, radial) if deep_groove else None
         if hinted is None:
             raise
         raise hinted from exc
@@ -556,21 +557,28 @@ def _solve_combined(
     return out | {"_bearing": b, "_load": out["equivalent_load"], "_angle": angle}
 
 
-def _quasi_static_hint(exc: InputError | ConvergenceError) -> BearingloadError | None:
-    """The combined solver's refusal of loads too small for it on radial rows at a speed (the
-    ball dynamics at an axial load of 0): it named 'the radial solver, without an axial load',
-    which these rows are; quasi_static true is the way to it (as solve's --quasi-static). The
-    dynamics' non-convergence on such rows names the same way."""
+def _quasi_static_hint(
+    exc: InputError | ConvergenceError, radial: bool = True
+) -> BearingloadError | None:
+    """The combined solver's refusal of loads too small for it on deep-groove rows at a speed
+    (the ball dynamics): it named 'the radial solver, without an axial load', which at a speed
+    is the ball dynamics too; quasi_static true is the way to it (as solve's --quasi-static), on
+    a row with load cells beside the radial load (not ``radial``) with those cells left blank.
+    The dynamics' non-convergence on radial rows names the same way."""
     from bearingload.models.combined import RADIAL_TAKES_ANY_LOAD
 
     if isinstance(exc, ConvergenceError):
+        if not radial:
+            return None
         return BearingloadError(f"{exc}; quasi_static true gives the static radial engine (the "
                                 "ball dynamics left out)")  # fmt: skip
     message = str(exc).split(": ", 1)[-1]
     if RADIAL_TAKES_ANY_LOAD not in message:
         return None
-    hint = ("at a speed a ball bearing is solved by the combined engine (the ball dynamics); "
-            "quasi_static true gives the static radial engine, which takes any load")  # fmt: skip
+    way = ("quasi_static true gives the static radial engine, which takes any load" if radial
+           else "quasi_static true with the axial_load and moment cells blank gives the static "
+           "radial engine, which takes any load")  # fmt: skip
+    hint = f"at a speed a ball bearing is solved by the combined engine (the ball dynamics); {way}"
     return InputError(exc.parameter, message.replace(RADIAL_TAKES_ANY_LOAD, hint))
 
 

@@ -252,17 +252,20 @@ def _radial_at_speed(case: CaseOptions) -> tuple[CaseOptions, bool]:
 QUASI_STATIC_WAY = "--quasi-static gives the static radial engine (the ball dynamics left out)"
 
 
-def _quasi_static_hint(exc: InputError) -> InputError | None:
-    """The combined solver's refusal of loads too small for it, on a radial solve at --speed
-    (the ball dynamics: F_a = 0 set, no axial load given): it named 'the radial solver, without
-    an axial load', which the user gave; --quasi-static is the way to it."""
+def _quasi_static_hint(exc: InputError, radial: bool = True) -> InputError | None:
+    """The combined solver's refusal of loads too small for it, at --speed: it named 'the
+    radial solver, without an axial load', which at a speed is the ball dynamics too. On a radial
+    solve (``radial``: F_a = 0 set, no axial load given) --quasi-static is the way to the radial
+    engine; with an axial load given, --quasi-static and no axial load are."""
     from bearingload.models.combined import RADIAL_TAKES_ANY_LOAD
 
     message = str(exc).split(": ", 1)[-1]
     if RADIAL_TAKES_ANY_LOAD not in message:
         return None
-    hint = ("at --speed a ball bearing is solved by the combined engine (the ball dynamics); "
-            "--quasi-static gives the static radial engine, which takes any load")  # fmt: skip
+    way = ("--quasi-static gives the static radial engine, which takes any load" if radial
+           else "--quasi-static without an axial load gives the static radial engine, which "
+           "takes any load")  # fmt: skip
+    hint = f"at --speed a ball bearing is solved by the combined engine (the ball dynamics); {way}"
     return InputError(exc.parameter, message.replace(RADIAL_TAKES_ANY_LOAD, hint))
 
 
@@ -371,7 +374,8 @@ def _combined(
     try:
         solved = combined_cases(bearings, case)
     except InputError as exc:
-        hinted = _quasi_static_hint(exc) if at_speed else None
+        dynamics = case.speed is not None and not case.quasi_static
+        hinted = _quasi_static_hint(exc, radial=at_speed) if dynamics else None
         if hinted is None:
             raise
         raise hinted from exc
