@@ -13,7 +13,8 @@ Designations read (the contact angle from the suffix or the GOST type):
   (GOST 831-75, clause 2, as restated at ajdocs.ru/gsp/49821/2; the K, K6, K7 variants are not
   read).
 
-Rows: ``data/angular_contact.csv``, each with its source; a designation of one of these types
+Rows: ``data/angular_contact.csv``, each with its source (NSK's and Koyo's ISO-form rows; EPK's
+GOST 36xxx/46xxx/66xxx rows, General Catalogue 2011); a designation of one of these types
 without a row is refused, naming the rows there are (:func:`find_angular`).
 """
 
@@ -226,7 +227,7 @@ DEFAULT_ANGULAR_MAKER = "NSK"
 
 def find_angular(parsed: AngularDesignation, maker: str | None = None) -> AngularRow:
     """The catalogue row of ``parsed``: ``maker``'s, else NSK's where NSK has one, else the
-    one maker's with a row (Koyo's 15°, 30° and 40° rows, NSK's 40° BEA rows).
+    one maker's with a row (Koyo's 15°, 30° and 40° rows, NSK's 40° BEA rows, EPK's GOST rows).
 
     Raises
     ------
