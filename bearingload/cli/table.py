@@ -272,7 +272,8 @@ def _service(case: CaseOptions, t: Any) -> list[Any] | None:
     contact angle alpha_0 of the row for the film)."""
     from bearingload.bearings.service_life import LifeBasis
     from bearingload.cli.case_options import SERVICE_PARAMS
-    from bearingload.cli.solve import life_geometry, service_lives
+    from bearingload.cli.solve import service_lives
+    from bearingload.studies.life_basis import life_geometry
 
     bases = [
         LifeBasis(

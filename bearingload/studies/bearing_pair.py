@@ -6,6 +6,7 @@ combined_bearing`) and the pair's lives combined (:func:`bearingload.models.pair
 
 from __future__ import annotations
 
+import dataclasses
 import math
 from collections.abc import Sequence
 from dataclasses import dataclass
@@ -81,9 +82,59 @@ def solve_bearing_pair(
     cage_angle, moment, moment_cross, tilt_radius, rotating, dynamic_rating
         As :func:`bearingload.studies.combined_bearing.solve_combined_bearing`. [°, N mm, mm, N]
     """
+    return solve_bearing_pairs(
+        b, load, axial_load, arrangement=arrangement, preload=preload, width=width,
+        cage_angle=cage_angle, moment=moment, moment_cross=moment_cross,
+        tilt_radius=tilt_radius, rotating=rotating, dynamic_rating=dynamic_rating,
+    )[0]  # fmt: skip
+
+
+def solve_bearing_pairs(
+    b: ResolvedBearing,
+    load: Any,
+    axial_load: Any = 0.0,
+    *,
+    arrangement: str,
+    preload: Any = 0.0,
+    width: float | None = None,
+    cage_angle: Any = 0.0,
+    moment: Any = None,
+    moment_cross: Any = None,
+    tilt_radius: Any = None,
+    rotating: str = "inner",
+    dynamic_rating: float | None = None,
+) -> list[PairCase]:
+    """:func:`solve_bearing_pair` of several cases of one bearing ``b``, arrangement and width:
+    the loads, preloads, moments and cage angles as arrays (broadcast), solved by one call of
+    :func:`bearingload.models.pair.solve_pair` (each case on its own: a case alone gives the
+    same bits), then each case's lives and checks. ``moment`` None: no moment given (the shaft
+    free to tilt, no tilt warned of), as for one case. One :class:`PairCase` per case, flat."""
     from bearingload.bearings.tilt import tilt_lever
     from bearingload.models.pair import solve_pair
 
+    _check_pair_bearing(b)
+    lever = tilt_lever(tilt_radius, b.pitch_diameter)
+    r = solve_pair(
+        b.balls, load, axial_load, arrangement=arrangement, preload=preload,
+        contact_angle=b.contact_angle, ball_diameter=b.ball_diameter,
+        pitch_diameter=b.pitch_diameter, width=bearing_width(b, width), f_i=b.f_i, f_o=b.f_o,
+        cage_angle=cage_angle, moment=0.0 if moment is None else moment,
+        moment_cross=0.0 if moment_cross is None else moment_cross,
+        modulus=b.modulus, poisson=b.poisson,
+        stiffness=b.stiffness if b.stiffness_given else None, tilt_radius=lever,
+    )  # fmt: skip
+    n = int(np.size(r.x))
+    cross = np.broadcast_to(np.asarray(r.moment_cross, dtype=float), np.shape(r.x)).reshape(-1)
+    out = []
+    for i in range(n):
+        one = r if np.ndim(r.x) == 0 else _case_at(r, i, n)
+        tilted = moment is not None or bool(cross[i])  # else free to tilt: no tilt warning
+        out.append(_pair_case(b, one, lever, rotating, dynamic_rating, tilted))
+    return out
+
+
+def _check_pair_bearing(b: ResolvedBearing) -> None:
+    """Refuse a bearing that cannot be one of a pair."""
     if b.kind == "ball" and b.contact_angle is not None and not b.has_geometry:  # z and K only
         raise InputError(
             "ball_diameter",
@@ -96,17 +147,23 @@ def solve_bearing_pair(
             "a bearing pair is two angular-contact ball bearings: give an angular-contact "
             "designation (7205B) or a ring by hand with its contact angle",
         )
-    lever = tilt_lever(tilt_radius, b.pitch_diameter)
-    r = solve_pair(
-        b.balls, load, axial_load, arrangement=arrangement, preload=preload,
-        contact_angle=b.contact_angle, ball_diameter=b.ball_diameter,
-        pitch_diameter=b.pitch_diameter, width=bearing_width(b, width), f_i=b.f_i, f_o=b.f_o,
-        cage_angle=cage_angle, moment=moment or 0.0, moment_cross=moment_cross or 0.0,
-        modulus=b.modulus, poisson=b.poisson,
-        stiffness=b.stiffness if b.stiffness_given else None, tilt_radius=lever,
-    )  # fmt: skip
-    tilted = moment is not None or bool(moment_cross)  # else free to tilt: no tilt warning
-    return _pair_case(b, r, lever, rotating, dynamic_rating, tilted)
+
+
+def _case_at(r: Any, i: int, n: int) -> Any:
+    """Case ``i`` of the ``n`` flat cases of a solution (a pair's or a bearing's dataclass), as
+    a call of that case alone returns it: its case quantities Python numbers, its ball arrays
+    (z,), its matrices (5, 5)."""
+    from bearingload import numerics
+
+    out = {}
+    for f in dataclasses.fields(r):
+        v = getattr(r, f.name)
+        if isinstance(v, tuple):
+            v = tuple(_case_at(x, i, n) for x in v)
+        elif isinstance(v, np.ndarray) and v.ndim >= 1 and v.shape[0] == n:
+            v = numerics.scalar_out(v[i]) if v.ndim == 1 else v[i]
+        out[f.name] = v
+    return dataclasses.replace(r, **out)
 
 
 def _pair_case(
