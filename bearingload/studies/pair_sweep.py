@@ -126,3 +126,67 @@ def pair_sweep(
         )  # fmt: skip
     found = list(dict.fromkeys(w for c in cases for w in c.warnings))
     return PairSweep(bearing, tuple(cases), tuple(found))
+
+
+@dataclass(frozen=True)
+class LifeAgainstPreload:
+    """A bearing pair (DB or DF) at several preloads under one load: ``table life 7205BDB
+    --preloads ...``.
+
+    Attributes
+    ----------
+    bearing : ResolvedBearing
+        One bearing of the pair (both alike).
+    cases : tuple of PairCase
+        The pair solved at every preload, as ``solve 7205BDB --preload F_p`` solves it.
+    warnings : tuple of str
+        The findings of every row, each once, in order.
+    """
+
+    bearing: ResolvedBearing
+    cases: tuple[PairCase, ...]
+    warnings: tuple[str, ...] = ()
+
+    @property
+    def preloads(self) -> np.ndarray:
+        """F_p of every row. [N]"""
+        return np.array([float(c.result.preload) for c in self.cases])
+
+
+def life_against_preload(
+    bearing: ResolvedBearing,
+    load: float,
+    axial_load: float = 0.0,
+    *,
+    arrangement: str,
+    preloads: Any,
+    width: float | None = None,
+    cage_angle: float = 0.0,
+    moment: float | None = None,
+    moment_cross: float | None = None,
+    tilt_radius: Any = None,
+    rotating: str = "inner",
+    dynamic_rating: float | None = None,
+) -> LifeAgainstPreload:
+    """Solve the pair of two bearings ``bearing`` at every preload of ``preloads`` [N] (one
+    vectorised :func:`bearingload.models.pair.solve_pair` call; each row the pair ``solve``
+    gives at that preload). The other arguments are those of
+    :func:`bearingload.studies.bearing_pair.solve_bearing_pair`.
+
+    >>> from bearingload.bearings.resolve import resolve_bearing
+    >>> t = life_against_preload(resolve_bearing("7205B"), 1000.0, 200.0, arrangement="DB",
+    ...                          preloads=[0.0, 300.0])
+    >>> t.preloads.tolist()
+    [0.0, 300.0]
+    """
+    from bearingload.studies.bearing_pair import solve_bearing_pairs
+
+    fp = np.asarray(preloads, dtype=float).reshape(-1)
+    cases = solve_bearing_pairs(
+        bearing, np.full(fp.shape, float(load)), np.full(fp.shape, float(axial_load)),
+        arrangement=arrangement, preload=fp, width=width, cage_angle=cage_angle,
+        moment=moment, moment_cross=moment_cross, tilt_radius=tilt_radius, rotating=rotating,
+        dynamic_rating=dynamic_rating,
+    )  # fmt: skip
+    found = list(dict.fromkeys(w for c in cases for w in c.warnings))
+    return LifeAgainstPreload(bearing, tuple(cases), tuple(found))
