@@ -8,6 +8,7 @@ from __future__ import annotations
 import csv
 import json
 
+import pytest
 from click.testing import CliRunner
 
 from bearingload.cli import main
@@ -226,3 +227,34 @@ def test_a_call_that_fails_is_split_until_the_failing_row_stands_alone():
     assert [i for i, _ in solved] == [0, 2]
     assert list(bad) == [1]
     assert bad[1].startswith("axial_load: must be > 0 N for a tandem pair (DT)")
+
+
+def test_the_vectorised_call_gives_each_case_as_alone():
+    """solve_bearing_pairs on arrays (one tilt kind: the bearings' lives and checks on the
+    arrays; mixed: case by case) gives every case's records and warnings as a call alone: the
+    equilibrium bit for bit, L10r to its last bits (its sum over the balls runs on the arrays:
+    measured within 6e-16 relative, far below the csv's ten digits)."""
+    from bearingload.bearings.resolve import resolve_bearing
+    from bearingload.reports.pair import pair_records
+    from bearingload.studies.bearing_pair import solve_bearing_pair, solve_bearing_pairs
+
+    b = resolve_bearing("7205B")
+    loads, axial = [1000.0, 0.0, 2500.0], [200.0, 900.0, -300.0]
+    preload, cage = [300.0, 50.0, 0.0], [0.0, 7.0, 15.0]
+    for cross in ([0.0, 0.0, 0.0], [0.0, 2000.0, 0.0], [1500.0, 2000.0, 500.0]):
+        many = solve_bearing_pairs(b, loads, axial, arrangement="DB", preload=preload,
+                                   cage_angle=cage, moment_cross=cross)  # fmt: skip
+        for i, pc in enumerate(many):
+            one = solve_bearing_pair(b, loads[i], axial[i], arrangement="DB",
+                                     preload=preload[i], cage_angle=cage[i],
+                                     moment_cross=cross[i])  # fmt: skip
+            (pair, records), (pair1, records1) = pair_records(pc), pair_records(one)
+            for mine, theirs in [(pair, pair1), *zip(records, records1, strict=True)]:
+                assert mine.keys() == theirs.keys()
+                for key, value in mine.items():
+                    if key.startswith("reference_rating_life") and value is not None:
+                        assert value == pytest.approx(theirs[key], rel=2e-15, abs=0), key
+                    else:
+                        assert value == theirs[key], key
+            assert pc.warnings == one.warnings
+            assert pc.result.x == one.result.x and pc.result.axial == one.result.axial

@@ -125,12 +125,44 @@ def solve_bearing_pairs(
     )  # fmt: skip
     n = int(np.size(r.x))
     cross = np.broadcast_to(np.asarray(r.moment_cross, dtype=float), np.shape(r.x)).reshape(-1)
-    out = []
-    for i in range(n):
-        one = r if np.ndim(r.x) == 0 else _case_at(r, i, n)
-        tilted = moment is not None or bool(cross[i])  # else free to tilt: no tilt warning
-        out.append(_pair_case(b, one, lever, rotating, dynamic_rating, tilted))
-    return out
+    tilted = [moment is not None or bool(x) for x in cross]  # else free to tilt: no warning
+    if np.ndim(r.x) == 0 or len(set(tilted)) > 1:  # one case, or each case on its own
+        ones = [r if np.ndim(r.x) == 0 else _case_at(r, i, n) for i in range(n)]
+        return [_pair_case(b, one, _singles(b, one, lever, rotating, dynamic_rating, t), rotating)
+                for one, t in zip(ones, tilted, strict=True)]  # fmt: skip
+    every = _singles(b, r, lever, rotating, dynamic_rating, tilted[0])  # on the arrays, once
+    return [
+        _pair_case(b, _case_at(r, i, n), [_single_at(c, i, n) for c in every], rotating)
+        for i in range(n)
+    ]
+
+
+def _singles(b: ResolvedBearing, r: PairDistribution, lever: Any, rotating: str,
+             dynamic_rating: Any, tilted: bool) -> list[CombinedCase]:  # fmt: skip
+    """Each bearing of the case(s) ``r`` as a single combined case (its lives, pressures, P0,
+    s0, checks; arrays over the cases); ``tilted``: a moment is given, and each bearing's tilt
+    is weighed as one bearing's under a moment (else the shaft is free to tilt, as one bearing's
+    ring under no moment, and no tilt is warned of)."""
+    from bearingload.studies.combined_bearing import _combined_case
+
+    return [_combined_case(b, rk, rk.load, rk.axial_load, rk.moment if tilted else None, None,
+                           None, lever, rotating, dynamic_rating) for rk in r.bearings]  # fmt: skip
+
+
+def _single_at(c: CombinedCase, i: int, n: int) -> CombinedCase:
+    """Case ``i`` of the ``n`` cases of ``c``, as :func:`_singles` of that case alone gives it."""
+
+    def at(v: Any) -> Any:
+        return v if v is None else v[i] if isinstance(v, list) else float(np.reshape(v, -1)[i])
+
+    life = at(c.rating_life)
+    return dataclasses.replace(
+        c, result=_case_at(c.result, i, n), equivalent_load=at(c.equivalent_load),
+        rating_life=None if life is None or np.isnan(life) else life,
+        reference_rating_life=at(c.reference_rating_life), warnings=c.warnings[i],
+        p_max_inner=at(c.p_max_inner), p_max_outer=at(c.p_max_outer),
+        static_equivalent_load=at(c.static_equivalent_load), static_safety=at(c.static_safety),
+    )  # fmt: skip
 
 
 def _check_pair_bearing(b: ResolvedBearing) -> None:
@@ -167,22 +199,15 @@ def _case_at(r: Any, i: int, n: int) -> Any:
 
 
 def _pair_case(
-    b: ResolvedBearing, r: PairDistribution, lever: Any, rotating: str, dynamic_rating: Any,
-    tilted: bool,
-) -> PairCase:  # fmt: skip
-    """Each bearing's lives and checks, the pair's lives and findings; ``tilted``: a moment is
-    given, and each bearing's tilt is weighed as one bearing's under a moment (else the shaft
-    is free to tilt, as one bearing's ring under no moment, and no tilt is warned of)."""
+    b: ResolvedBearing, r: PairDistribution, singles: list[CombinedCase], rotating: str
+) -> PairCase:
+    """The pair's case of its solution ``r`` (one case) and each bearing's single case
+    (:func:`_singles`): an unloaded bearing without lives, the pair's lives and findings."""
     from bearingload.models.pair import pair_life
-    from bearingload.studies.combined_bearing import _combined_case
 
     cases = []
-    for k, rk in enumerate(r.bearings):
-        c = _combined_case(b, rk, rk.load, rk.axial_load, rk.moment if tilted else None, None,
-                           None, lever, rotating, dynamic_rating)  # fmt: skip
+    for k, c in enumerate(singles):
         if r.unloaded[k]:  # no ball loaded: no life, no equivalent load
-            import dataclasses
-
             c = dataclasses.replace(c, reference_rating_life=None, rating_life=None,
                                     equivalent_load=None)  # fmt: skip
         cases.append(c)
