@@ -86,7 +86,7 @@ def _entries(s: PairSweep) -> list[tuple[str, Quantity, int | None]]:
     for key in PAIR_KEYS:
         q = QUANTITIES[key]
         if s.values(key) is not None:
-            out.append((f"{ANGULAR_LABELS.get(key, q.label)} (pair)", q, None))
+            out.append((f"{ANGULAR_LABELS.get(key, q.label)}, pair", q, None))
     for key in BEARING_KEYS:
         q = QUANTITIES[key]
         out += [(f"{q.label}, bearing {k}", q, k) for k in (1, 2)]
