@@ -27,6 +27,7 @@ def _run(*args: str):
          "--moment-cross", "3Nm"],
         ["7205BDT", "-F", "1kN", "-A", "500N", "--rotating", "outer"],
         ["7205BDB", "-F", "500N", "-A", "2kN"],
+        [*PAIR, "--speed", "6000"],
     ],
 )  # fmt: skip
 def test_every_position_is_solves_pair_at_that_cage_angle(args):
@@ -88,9 +89,11 @@ def test_a_lifted_bearing_is_warned_once():
         ([*PAIR, "--plot", "p.png"],
          "Invalid value for '--plot': it draws one bearing's ripple, not a pair's; --format csv "
          "gives the pair at every cage position"),
-        ([*PAIR, "--speed", "3000"],
-         "--speed cannot be used with the sweep of a bearing pair: its lives in hours are not "
-         "yet given by sweep; 'bearingload solve' gives them at one cage angle"),
+        ([*PAIR, "--viscosity", "20cSt", "--speed", "3000"],
+         "--viscosity cannot be used with sweep: the sweep shows how the ring position, Q_max "
+         "and L10r (in hours with --speed) ripple over one ball pitch; C_0, a_1, a_ISO, the "
+         "modified lives and the film are those of the case: give the same options to "
+         "'bearingload solve' (or 'table life' against the clearance)"),
         ([*PAIR, "--clearance", "10um"],
          "--clearance cannot be used with a bearing pair: the design contact angle fixes the "
          "geometry of an angular-contact bearing (no clearance)"),
@@ -116,3 +119,21 @@ def test_what_a_pair_sweep_cannot_take_is_one_error_line(args, message):
     assert out.stdout == ""
     assert out.stderr.splitlines()[-1] == f"Error: {message}"
     assert "Traceback" not in out.stderr
+
+
+def test_speed_gives_the_pairs_l10r_in_hours_at_every_position():
+    doc = json.loads(_run("sweep", *PAIR, "--steps", "3", "--speed", "6000", "--format",
+                          "json").stdout)  # fmt: skip
+    for row in doc["rows"]:
+        assert row["speed"] == 6000.0
+        assert row["reference_rating_life_hours"] == pytest.approx(
+            row["reference_rating_life"] * 1e6 / (60 * 6000), rel=1e-9
+        )
+    hours = [r["reference_rating_life_hours"] for r in doc["rows"]]
+    assert doc["summary"]["reference_rating_life_hours"]["min"] == min(hours)
+    assert doc["model"].endswith("(the ball dynamics of a pair are not coded)")
+    text = _run("sweep", *PAIR, "--steps", "3", "--speed", "6000").stdout
+    assert (
+        "Speed: the pair is solved by the static model (the ball dynamics of a pair, centrifugal "
+        "force and gyroscopic moment, are not coded); the speed gives the lives in hours only."
+    ) in text.splitlines()

@@ -250,8 +250,6 @@ def _pair(case: CaseOptions, steps: int, plot: str | None, fmt: str, output: str
                 "give --moment")  # fmt: skip
     case.refuse(("clearance",), "a bearing pair", "the design contact angle fixes the geometry "
                 "of an angular-contact bearing (no clearance)")  # fmt: skip
-    case.refuse(("speed",), "the sweep of a bearing pair", "its lives in hours are not yet "
-                "given by sweep; 'bearingload solve' gives them at one cage angle")  # fmt: skip
     b = with_ratings(resolve_bearings(case, case.stiffness_value()), case)[0]
     if b.contact_angle is None:
         raise click.UsageError(
@@ -261,6 +259,13 @@ def _pair(case: CaseOptions, steps: int, plot: str | None, fmt: str, output: str
     args = case.pair_arguments(b.balls)
     del args["cage_angle"]
     result = pair_sweep(b, case.radial_load, case.axial_load or 0.0, steps=steps, **args)
+    if case.speed is not None:  # the lives in hours; the loads stay the static model's
+        import dataclasses
+
+        from bearingload.bearings.checks import speed_findings
+
+        found = (*result.warnings, *speed_findings(case.speed, b))
+        result = dataclasses.replace(result, speed=case.speed, warnings=found)
     text = pair_sweep_report(result, fmt, bearing_context(b))
     print_warnings(list(result.warnings), False)
     emit(text, output)

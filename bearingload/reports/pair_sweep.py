@@ -23,6 +23,8 @@ from bearingload.reports.pair import (
     OWN_KEYS,
     PAIR_ANSWERS,
     PAIR_INPUTS,
+    PAIR_SERVICE,
+    STATIC_AT_SPEED,
     csv_columns,
     csv_rows,
     pair_records,
@@ -39,6 +41,11 @@ NOTES = (
     "--cage-angle); the pair: the shaft's displacement at the pair's centre and its stiffness "
     "(docs/angular_contact.md); L10r: the pair's, (L1^-e + L2^-e)^(-1/e), e = 10/9.",
 )
+#: The note of a pair sweep at --speed.
+HOURS_NOTE = (
+    "Speed: the pair is solved by the static model (the ball dynamics of a pair, centrifugal "
+    "force and gyroscopic moment, are not coded); the speed gives the lives in hours only."
+)
 #: The per-position columns of the human table: (key, bearing or None, header).
 ROW_KEYS = (
     ("cage_angle", None, "cage angle"), ("x", None, "x"), ("y", None, "y"),
@@ -46,6 +53,7 @@ ROW_KEYS = (
     ("q_max", 2, "Q_max 2"), ("loaded_balls", 1, "loaded 1"), ("loaded_balls", 2, "loaded 2"),
     ("stiffness_radial", None, "k_r"), ("stiffness_axial", None, "k_a"),
     ("stiffness_tilt", None, "k_tilt"), ("reference_rating_life", None, "L10r"),
+    ("reference_rating_life_hours", None, "L10rh"),
 )  # fmt: skip
 
 
@@ -60,10 +68,11 @@ def pair_sweep_report(s: PairSweep, fmt: str, context: str = "") -> str:
 
 def _csv_table(s: Any) -> Table:
     """solve's csv of the pair of every row of ``s`` (its ``cases``: the cage positions of a
-    sweep, the preloads of table life), one table."""
-    records = [pair_records(c, _c0(c)) for c in s.cases]
+    sweep, the preloads of table life; its ``speed``, if any), one table."""
+    speed = getattr(s, "speed", None)
+    records = [pair_records(c, _c0(c, speed)) for c in s.cases]
     own = [k for k in OWN_KEYS if any(k in r for _, rs in records for r in rs)]
-    cols = csv_columns((), own)
+    cols = csv_columns(tuple(k for k in PAIR_SERVICE if k in records[0][0]), own)
     keys = [c.key for c in cols]
     rows = []
     for c, (pair, recs) in zip(s.cases, records, strict=True):
@@ -72,12 +81,13 @@ def _csv_table(s: Any) -> Table:
     return Table("sweep", cols, blank)
 
 
-def _c0(c: Any) -> list[Any]:
-    """Each bearing's C_0, as solve gives it without a service option."""
+def _c0(c: Any, speed: float | None = None) -> list[Any]:
+    """Each bearing's service values as solve gives them with ``--speed`` alone (C_0; with a
+    speed the lives in hours)."""
     from bearingload.bearings.service_life import Operating, service_values
     from bearingload.studies.life_basis import combined_basis
 
-    return [service_values(Operating(), combined_basis(b)) for b in c.bearings]
+    return [service_values(Operating(speed=speed), combined_basis(b)) for b in c.bearings]
 
 
 def _entries(s: PairSweep) -> list[tuple[str, Quantity, int | None]]:
@@ -101,7 +111,8 @@ def _spread_table(s: PairSweep, context: str) -> Table:
         sp = s.spread(q.key, k)
         assert sp is not None
         entries.append((dataclasses.replace(q, label=label), sp, q.shown()))
-    return spread_table(f"Over one ball pitch ({title(s)})", entries, list(NOTES), context)
+    notes = [*NOTES, *([HOURS_NOTE] if s.speed is not None else [])]
+    return spread_table(f"Over one ball pitch ({title(s)})", entries, notes, context)
 
 
 def title(s: PairSweep) -> str:
@@ -146,8 +157,8 @@ def pair_sweep_json(s: PairSweep) -> dict[str, Any]:
     solve's json at each position and ``bearings``), ``summary``, ``units``, ``warnings``."""
     rows = []
     for c in s.cases:
-        pair, recs = pair_records(c, _c0(c))
-        answers = {k: pair[k] for k in ("cage_angle", *PAIR_ANSWERS)}
+        pair, recs = pair_records(c, _c0(c, s.speed))
+        answers = {k: pair[k] for k in ("cage_angle", *PAIR_ANSWERS, *PAIR_SERVICE) if k in pair}
         rows.append(answers | {"bearings": recs})
     head = {k: v for k, v in pair_records(s.cases[0])[0].items()
             if k in PAIR_INPUTS and k != "cage_angle"}  # fmt: skip
@@ -160,7 +171,7 @@ def pair_sweep_json(s: PairSweep) -> dict[str, Any]:
     return {
         **head,
         "model": "pair of angular-contact ball bearings on one rigid shaft (ISO/TS 16281 each), "
-        "both cages at the cage angle",
+        "both cages at the cage angle" + (STATIC_AT_SPEED if s.speed is not None else ""),
         "steps": len(s.cases),
         "rows": rows,
         "summary": summary,

@@ -19,11 +19,11 @@ import numpy as np
 
 from bearingload.bearings.resolve import ResolvedBearing
 from bearingload.studies.bearing_pair import PairCase
-from bearingload.studies.sweep import DEFAULT_STEPS, Spread, cage_angles, spread_of
+from bearingload.studies.sweep import DEFAULT_STEPS, Spread, cage_angles, hours_at, spread_of
 
 #: The pair's per-position quantities a pair sweep summarises (keys of reports.quantities).
 PAIR_KEYS = ("x", "y", "axial", "tilt", "tilt_cross", "stiffness_radial", "stiffness_axial",
-             "stiffness_tilt", "reference_rating_life")  # fmt: skip
+             "stiffness_tilt", "reference_rating_life", "reference_rating_life_hours")  # fmt: skip
 #: Each bearing's per-position quantities a pair sweep summarises.
 BEARING_KEYS = ("q_max", "loaded_balls")
 #: Cage positions times balls solved per call (as a batch of pairs). [-]
@@ -44,11 +44,15 @@ class PairSweep:
         The pair solved at every cage position, as ``solve`` solves it at that cage angle.
     warnings : tuple of str
         The findings of every position, each once, in order.
+    speed : float or None
+        Shaft speed n for the pair's L10r in hours, L 10^6/(60 n) (the loads are the static
+        model's); None: not given. [r/min]
     """
 
     bearing: ResolvedBearing
     cases: tuple[PairCase, ...]
     warnings: tuple[str, ...] = ()
+    speed: float | None = None
 
     @property
     def balls(self) -> int:
@@ -64,6 +68,9 @@ class PairSweep:
         """The per-position values of the pair's ``key`` (:data:`PAIR_KEYS`), or of bearing
         ``bearing`` (1 or 2; :data:`BEARING_KEYS`); None where a position has none (L10r
         without C_r)."""
+        if key == "reference_rating_life_hours":
+            life = self.values("reference_rating_life")
+            return None if life is None else hours_at(life, self.speed)
         if bearing is None:
             got = [getattr(c, key) if key == "reference_rating_life" else getattr(c.result, key)
                    for c in self.cases]  # fmt: skip
