@@ -404,6 +404,20 @@ def with_ratings(bearings: list[Any], case: CaseOptions) -> list[Any]:
     return [b.with_static_rating(case.static_rating) for b in bearings]
 
 
+def pair_bearing(case: CaseOptions) -> Any:
+    """One bearing of the pair of ``sweep`` and ``table life`` (resolved, with its ratings);
+    refused unless it is an angular-contact designation."""
+    from bearingload.cli.cases import resolve_bearings
+
+    b = with_ratings(resolve_bearings(case, case.stiffness_value()), case)[0]
+    if b.contact_angle is None:
+        raise click.UsageError(
+            f"Invalid value for '--arrangement': a pair {case.arrangement} is two "
+            "angular-contact ball bearings; give an angular-contact designation (7205B, 7205BDB)"
+        )
+    return b
+
+
 def service_lives(case: CaseOptions, bases: list[Any]) -> list[Any]:
     """The lives the case's operating conditions make meaningful, one
     :class:`bearingload.bearings.service_life.ServiceLife` per basis: C_0 wherever it is known

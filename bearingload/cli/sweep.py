@@ -235,9 +235,9 @@ def _combined(
 def _pair(case: CaseOptions, steps: int, plot: str | None, fmt: str, output: str | None) -> None:
     """The sweep of a bearing pair (7205BDB, --arrangement): one vectorised pair solve over the
     pitch, then emit."""
-    from bearingload.cli.cases import bearing_context, resolve_bearings
+    from bearingload.cli.cases import bearing_context
     from bearingload.cli.options import print_warnings
-    from bearingload.cli.solve import with_ratings
+    from bearingload.cli.solve import pair_bearing
     from bearingload.reports.pair_sweep import pair_sweep_report
     from bearingload.studies.pair_sweep import pair_sweep
 
@@ -250,12 +250,7 @@ def _pair(case: CaseOptions, steps: int, plot: str | None, fmt: str, output: str
                 "give --moment")  # fmt: skip
     case.refuse(("clearance",), "a bearing pair", "the design contact angle fixes the geometry "
                 "of an angular-contact bearing (no clearance)")  # fmt: skip
-    b = with_ratings(resolve_bearings(case, case.stiffness_value()), case)[0]
-    if b.contact_angle is None:
-        raise click.UsageError(
-            f"Invalid value for '--arrangement': a pair {case.arrangement} is two "
-            "angular-contact ball bearings; give an angular-contact designation (7205B, 7205BDB)"
-        )
+    b = pair_bearing(case)
     args = case.pair_arguments(b.balls)
     del args["cage_angle"]
     result = pair_sweep(b, case.radial_load, case.axial_load or 0.0, steps=steps, **args)

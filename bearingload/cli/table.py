@@ -314,9 +314,8 @@ def _pair_life(
 ) -> None:
     """``table life`` of a bearing pair: L10r against the preload (``--preloads``), emit."""
     from bearingload.cli.case_options import SERVICE_PARAMS
-    from bearingload.cli.cases import resolve_bearings
     from bearingload.cli.options import print_warnings
-    from bearingload.cli.solve import with_ratings
+    from bearingload.cli.solve import pair_bearing
     from bearingload.reports.pair_sweep import preload_life_report
     from bearingload.studies.pair_sweep import life_against_preload
 
@@ -362,12 +361,7 @@ def _pair_life(
         )
     if "load" not in case.given:
         raise click.UsageError("Missing option '--load' / '-F': table life needs F_r (N)")
-    b = with_ratings(resolve_bearings(case, case.stiffness_value()), case)[0]
-    if b.contact_angle is None:
-        raise click.UsageError(
-            f"Invalid value for '--arrangement': a pair {case.arrangement} is two "
-            "angular-contact ball bearings; give an angular-contact designation (7205B, 7205BDB)"
-        )
+    b = pair_bearing(case)
     args = case.pair_arguments(b.balls)
     del args["preload"]
     try:
