@@ -256,8 +256,8 @@ def _check_pairs(names: list[str]) -> None:
         raise InputError(
             "columns",
             f"{life[0]}: the service lives of a pair (speed, viscosity, reliability ...) are "
-            "not yet given by batch; 'bearingload solve 7205BDB --preload ... --speed ...' "
-            "gives them for one pair",
+            "not yet given by batch; solve gives them for one pair (its preload and speed "
+            "options)",
         )
 
 
