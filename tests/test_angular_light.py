@@ -1,4 +1,4 @@
-"""Angular contact at light loads (issue 17): every load above the stated least load converges.
+"""Angular contact at light loads: every load above the stated least load converges.
 
 Before the continuation in the load (:func:`bearingload.models.combined._light_start`) a thrust
 of a few thousandths of the radial load, on a ring free to tilt, ended in a ConvergenceError
@@ -66,7 +66,7 @@ def _plain_loads(r, z: int, alpha0: float, dw: float, dm: float) -> None:
     np.testing.assert_allclose(np.asarray(r.contact_angles)[loaded], angle[loaded], atol=1e-6)
 
 
-def test_the_reproduction_of_issue_17_converges():
+def test_the_reported_light_case_converges():
     """9 balls at 25°, F_r = 2.93e-6 N, F_a/F_r = 0.004 (A/(F/K)^(2/3) = 8.2e6, below the
     stated 2e7): was 'did not converge after 2016 iterations (relative residual 70.4)'. The
     ball on the load line near 0°, the two far ones at 35° holding the tilt."""
@@ -138,3 +138,15 @@ def test_the_stated_least_load_solves():
     r = solve_combined(9, least, 0.004 * least, contact_angle=25, **RING)
     _plain_balance(r, least, 0.004 * least, 0.0)
     _plain_loads(r, 9, 25.0, 7.938, 38.5)
+
+
+def test_overlapping_balls_are_refused_by_the_library():
+    """As the command line and resolve_bearing do: z balls fit only if D_w <= d_m sin(180°/z)
+    (validate.ball_spacing); 20 balls of 11.5 mm on 43.5 mm overlap (at most 6.80489 mm)."""
+    with pytest.raises(InputError, match=r"^ball_diameter: 20 balls of 11\.5 mm overlap") as info:
+        solve_combined(20, 1000.0, ball_diameter=11.5, pitch_diameter=43.5)
+    assert "must be at most 6.80489 mm (or fewer balls)" in str(info.value)
+    with pytest.raises(InputError, match="^ball_diameter: 16 balls"):
+        solve_combined(16, 1000.0, 100.0, contact_angle=25, **RING)
+    r = solve_combined(15, 1000.0, 100.0, contact_angle=25, **RING)  # 15 fit: 8.005 mm apart
+    assert float(r.q_max) > 0

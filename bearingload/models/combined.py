@@ -473,7 +473,8 @@ def solve_combined(
     axial_load : array_like, default 0
         F_a (either sign). [N]
     ball_diameter, pitch_diameter : array_like
-        D_w and d_m. [mm]
+        D_w and d_m; the z balls must fit on the pitch circle, D_w <= d_m sin(180°/z)
+        (:func:`bearingload.validate.ball_spacing`, as the command line checks). [mm]
     f_i, f_o : array_like, default 0.52, 0.53
         Groove conformities r_i/D_w, r_o/D_w. [-]
     clearance : array_like, default 0
@@ -511,7 +512,8 @@ def solve_combined(
     Raises
     ------
     InputError
-        A parameter outside its domain, no load at all, both a moment and a misalignment; a
+        A parameter outside its domain (overlapping balls: ``ball_diameter``, with the largest
+        diameter that fits), no load at all, both a moment and a misalignment; a
         case whose equilibrium leaves a loaded ball at the groove edge (contact angle 90°).
     ConvergenceError
         No equilibrium reached (e.g. a load the balls cannot carry); the message names the
@@ -557,6 +559,7 @@ def solve_combined(
     flat = [a.ravel() for a in arrays]
     fr, fa, mm, tilt_deg, cage, e, nu, mc, dw, dm, fi, fo, gr, alpha_d = flat[:14]
     geo = _geometry(dw, dm, fi, fo, gr) if angular is None else _angular_geometry(dw, dm, fi, fo, alpha_d)  # fmt: skip
+    validate.ball_spacing(z, geo.D_w, geo.d_m)  # (z balls must fit on the pitch circle)
     if tilt_radius is not None:
         radius = validate.positive("tilt_radius", tilt_radius, "mm")
         geo = dataclasses.replace(geo, R_i=np.broadcast_to(radius, dw.shape).astype(float))
