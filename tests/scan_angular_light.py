@@ -1,4 +1,4 @@
-"""Grid scan of the angular-contact solver at light loads (issue 17; not part of the test suite).
+"""Grid scan of the angular-contact solver at light loads (not part of the test suite).
 
 Run: ``.venv/bin/python -m tests.scan_angular_light [base|wide] [cases]``.
 
