@@ -150,3 +150,15 @@ def test_overlapping_balls_are_refused_by_the_library():
         solve_combined(16, 1000.0, 100.0, contact_angle=25, **RING)
     r = solve_combined(15, 1000.0, 100.0, contact_angle=25, **RING)  # 15 fit: 8.005 mm apart
     assert float(r.q_max) > 0
+
+
+def test_a_light_case_in_a_batch_is_the_case_alone():
+    """The heavier stages of the continuation are solved per case: a light case gives the same
+    bits among heavier ones as alone."""
+    fr = np.array([2.92709e-6, 1e-3, 5.0, 1e-5, 100.0])
+    fa = fr * np.array([0.004, 0.003, 0.5, 0.01, 1e-3])
+    many = solve_combined(9, fr, fa, contact_angle=25, **RING)
+    for i in range(fr.size):
+        one = solve_combined(9, float(fr[i]), float(fa[i]), contact_angle=25, **RING)
+        assert np.array_equal(many.ball_loads[i], one.ball_loads)
+        assert float(many.x[i]) == float(one.x) and float(many.tilt[i]) == float(one.tilt)
