@@ -2,10 +2,11 @@
 of tests/campaign_combined.py, not part of the test suite).
 
 Run: ``.venv/bin/python -m tests.campaign_angular [cases] [seed]`` (default 10 000 cases, seed
-1). Each case alone: z 3..40, the four ball sets of the deep-groove campaign, a design contact
-angle 10 to 45°, F_r and F_a each 10 N to C_0r (log-uniform; C_0r of ISO 76 for the ball set at
-that angle), the ring free to tilt or (one in four) a moment either way up to 1e-2 F_a d_m, the
-cage at 0, half a pitch or anywhere.
+1). Each case alone: z 3..40, the four ball sets of the deep-groove campaign (d_m raised where
+z balls would overlap: the solver refuses them), a design contact angle 10 to 45°, F_r and F_a
+each 10 N to C_0r (log-uniform; C_0r of ISO 76 for the ball set at that angle), the ring free to
+tilt or (one in four) a moment either way up to 1e-2 F_a d_m, the cage at 0, half a pitch or
+anywhere.
 
 Printed: solved, refused (by reason), ConvergenceError, NaN; for F_r, F_a and M the largest
 residual over the applied value as the solver evaluates it and as a plain independent sum of
@@ -26,7 +27,7 @@ import numpy as np
 from bearingload.errors import ConvergenceError, InputError
 from bearingload.models import combined
 from bearingload.models.combined import solve_combined
-from tests.campaign_combined import BALL_SETS, NAMES
+from tests.campaign_combined import BALL_SETS, NAMES, fitting_pitch
 
 
 def static_rating(z: int, dw: float, dm: float, alpha: float) -> float:
@@ -37,6 +38,7 @@ def static_rating(z: int, dw: float, dm: float, alpha: float) -> float:
 def random_case(rng: np.random.Generator) -> dict[str, Any]:
     dw, dm = BALL_SETS[int(rng.integers(len(BALL_SETS)))]
     z = int(rng.integers(3, 41))
+    dm = fitting_pitch(z, dw, dm)
     alpha = float(rng.uniform(10.0, 45.0))
     c0 = static_rating(z, dw, dm, alpha)
     fr = float(10 ** rng.uniform(1.0, math.log10(c0)))

@@ -2,7 +2,8 @@
 is tests/test_combined_seams.py::test_random_campaign).
 
 Run: ``.venv/bin/python -m tests.campaign_combined [cases] [seed]`` (default 10 000 cases, seed
-1). Each case is solved alone: z 3..40, four ball sets (D_w 3 to 23.8 mm), loads from the
+1). Each case is solved alone: z 3..40, four ball sets (D_w 3 to 23.8 mm; d_m raised where z
+balls would overlap), loads from the
 smallest the solver accepts to 10^6 N, axial loads down to 1e-9 of the load, clearances from
 30 um of preload to the groove limit 2A (a fifth within 1e-6..1 of it), free tilt, a moment
 either way, a misalignment of 0 or up to 0.2°, a moment across the load line (one in five), the
@@ -33,9 +34,16 @@ BALL_SETS = [(7.938, 38.5), (11.5, 43.5), (23.812, 102.5), (3.0, 14.0)]
 NAMES = ("F_r", "F_y", "F_a", "M", "M_c")
 
 
+def fitting_pitch(z: int, dw: float, dm: float) -> float:
+    """d_m, or where z balls of D_w overlap on it the smallest pitch circle (to 0.1 %) they fit
+    on, D_w <= d_m sin(180°/z) (the solver refuses overlapping balls). [mm]"""
+    return max(dm, 1.001 * dw / math.sin(math.pi / z))
+
+
 def random_case(rng: np.random.Generator) -> dict[str, Any]:
     dw, dm = BALL_SETS[int(rng.integers(len(BALL_SETS)))]
     z = int(rng.integers(3, 41))
+    dm = fitting_pitch(z, dw, dm)
     big_a = 0.05 * dw
     f_min = float(ball_stiffness_at(0.0, dw, dm, 0.52, 0.53)) * (big_a / GEOMETRY_RATIO_MAX) ** 1.5
     scale = 10 ** rng.uniform(math.log10(f_min), 6)

@@ -277,11 +277,13 @@ def test_groove_geometry_and_axial_only_keep_the_scalar_contract():
 def test_radial_only_is_the_radial_engine(z, clearance, cage):
     """F_a = 0, no moment: a = 0, theta = 0, every contact angle 0 exactly, so the 3-D model is
     the radial engine with the Hertz K at contact angle 0 (not at the free contact angle alpha_0:
-    the balls of a radially loaded bearing stay in the groove bottom). Agreement: 1e-12."""
+    the balls of a radially loaded bearing stay in the groove bottom). Agreement: 1e-12. The
+    peer ring's balls (11.5 mm on 43.5 mm) fit 11 at most: 20 sit on a pitch circle of 80 mm."""
     cage_deg = {"0": 0.0, "half": 180.0 / z, "7": 7.0}[cage]
-    k0 = float(ball_stiffness(11.5, 43.5, 0.52, 0.53, 210000.0, 0.3).ball)
+    geometry = {**PEER, "pitch_diameter": 43.5 if z <= 11 else 80.0}
+    k0 = float(ball_stiffness(11.5, geometry["pitch_diameter"], 0.52, 0.53, 210000.0, 0.3).ball)
     radial = solve(z, 1500.0, k0, clearance, cage_deg)
-    r = solve_combined(z, 1500.0, 0.0, clearance=clearance, cage_angle=cage_deg, **PEER)
+    r = solve_combined(z, 1500.0, 0.0, clearance=clearance, cage_angle=cage_deg, **geometry)
     assert float(r.x) == pytest.approx(float(radial.x), rel=1e-12)
     assert float(r.y) == pytest.approx(float(radial.y), abs=1e-12 * float(radial.x))
     np.testing.assert_allclose(r.ball_loads, radial.ball_loads, rtol=0, atol=1e-12 * 1500)
@@ -364,7 +366,7 @@ def test_no_load_gives_infinite_life():
 # -------------------------------------------------------------------------------- robustness
 
 ROBUST = [
-    # z, F_r, F_a, G_r, cage
+    # z, F_r, F_a, G_r, cage (7.938 mm balls on 38.5 mm; 1000 of them on 3000 mm, where they fit)
     (7, 0.0, 1000.0, 0.0, 0.0),  # pure axial, zero clearance
     (7, 1e-6, 0.0, 0.3, 0.0),  # tiny load, huge clearance: one ball
     (8, 1e-6, 0.0, 0.3, 22.5),  # two balls
@@ -383,7 +385,7 @@ def test_extremes_satisfy_equilibrium(z, fr, fa, g, cage):
     with warnings.catch_warnings():
         warnings.simplefilter("error")
         r = solve_combined(z, fr, fa, clearance=g, cage_angle=cage, ball_diameter=7.938,
-                           pitch_diameter=38.5)  # fmt: skip
+                           pitch_diameter=3000.0 if z > 15 else 38.5)  # fmt: skip
     q = r.ball_loads
     al = np.radians(r.contact_angles)
     phi = np.radians(r.ball_angles)
@@ -465,6 +467,7 @@ def test_random_cases_converge_to_equilibrium(mode, z):
     11.5 mm, and two of 3 balls; the solver before the groove-edge rule returned them with a
     ball loaded at 92°, -100° and 107°)."""
     rng = np.random.default_rng(z * 31 + len(mode))
+    dm = 43.5 if z <= 11 else 90.0  # (23 balls of 11.5 mm fit on 90 mm, not on 43.5 mm)
     n = 40
     fr = np.where(rng.random(n) < 0.2, 0.0, 10 ** rng.uniform(-3, 5, n))
     fa = np.where(rng.random(n) < 0.3, 0.0, rng.choice([-1, 1], n) * 10 ** rng.uniform(-3, 5, n))
@@ -480,7 +483,7 @@ def test_random_cases_converge_to_equilibrium(mode, z):
     for i in range(n):  # the refused cases, one at a time
         try:
             solve_combined(z, fr[i], fa[i], clearance=g[i], cage_angle=cage[i], ball_diameter=11.5,
-                           pitch_diameter=43.5, **{k: v[i] for k, v in extra.items()})  # fmt: skip
+                           pitch_diameter=dm, **{k: v[i] for k, v in extra.items()})  # fmt: skip
         except InputError as exc:
             assert "to a contact angle of 90°, the edge of its groove" in str(exc)
             kept[i] = False
@@ -490,7 +493,7 @@ def test_random_cases_converge_to_equilibrium(mode, z):
     with warnings.catch_warnings():
         warnings.simplefilter("error")
         r = solve_combined(z, fr, fa, clearance=g, cage_angle=cage,
-                           ball_diameter=11.5, pitch_diameter=43.5, **extra)  # fmt: skip
+                           ball_diameter=11.5, pitch_diameter=dm, **extra)  # fmt: skip
     q, al, ph = r.ball_loads, np.radians(r.contact_angles), np.radians(r.ball_angles)
     assert np.all(np.abs(r.contact_angles[q > 0]) < 90.0)
     size = np.maximum(np.maximum(fr, np.abs(fa)), q.sum(-1))

@@ -33,6 +33,15 @@ from tests.test_combined import mp_ball_stiffness
 G6205 = {"ball_diameter": 7.938, "pitch_diameter": 38.5}  # the catalogue 6205 (NSK ball set)
 
 
+def fitting(z: int) -> dict[str, float]:
+    """The 6205's balls, on its pitch circle where z of them fit (z <= 15), else on the smallest
+    circle (to 0.1 %) where they do: D_w <= d_m sin(180°/z), as solve_combined requires."""
+    return {
+        "ball_diameter": 7.938,
+        "pitch_diameter": max(38.5, 1.001 * 7.938 / math.sin(math.pi / z)),
+    }
+
+
 def test_the_6205_geometry_is_the_catalogues():
     b = resolve_bearing("6205-C3")
     assert (b.balls, b.ball_diameter, b.pitch_diameter, b.f_i, b.f_o) == (
@@ -195,7 +204,7 @@ def test_radial_loads_up_to_overload_and_the_groove_limit_are_the_radial_engine(
     rng = np.random.default_rng(2024)
     for _ in range(40):
         z = int(rng.integers(3, 41))
-        dw, dm = 7.938, 38.5
+        dw, dm = fitting(z).values()
         big_a = float(groove_geometry(dw, dm, 0.52, 0.53)[0])
         g = float(rng.choice([rng.uniform(-0.03, 0.0), rng.uniform(0.0, 2 * big_a * 0.999)]))
         k0 = float(ball_stiffness_at(0.0, dw, dm, 0.52, 0.53))
@@ -406,19 +415,19 @@ def test_loads_from_the_smallest_accepted_up_converge():
     for _ in range(30):
         z = int(rng.integers(3, 20))
         big_a = 0.05 * 7.938
-        k0 = float(ball_stiffness_at(0.0, 7.938, 38.5, 0.52, 0.53))
+        k0 = float(ball_stiffness_at(0.0, 7.938, fitting(z)["pitch_diameter"], 0.52, 0.53))
         f_min = k0 * (big_a / GEOMETRY_RATIO_MAX) ** 1.5
         load = f_min * rng.uniform(1.0, 3.0)
         fr, fa = rng.choice([(load, 0.0), (0.0, load), (load, 0.3 * load), (0.2 * load, load)])
         tilt = [{}, {"moment": 5.0 * load}, {"misalignment": 0.01}][int(rng.integers(3))]
         g = rng.uniform(0.5, 1.99) * big_a
         try:
-            r = solve_combined(z, fr, fa, clearance=g, cage_angle=rng.uniform(0, 360), **G6205,
-                               **tilt)  # fmt: skip
+            r = solve_combined(z, fr, fa, clearance=g, cage_angle=rng.uniform(0, 360),
+                               **fitting(z), **tilt)  # fmt: skip
         except InputError as exc:
             assert "to a contact angle of 90°" in str(exc)
             continue
-        _assert_balanced(r, fr, fa, tilt.get("moment"), 0.0, 1e-10)
+        _assert_balanced(r, fr, fa, tilt.get("moment"), 0.0, 1e-10, fitting(z)["pitch_diameter"])
 
 
 def test_a_convergence_error_names_the_inputs_in_their_units(monkeypatch):
@@ -438,15 +447,16 @@ def test_a_convergence_error_names_the_inputs_in_their_units(monkeypatch):
 # ------------------------------------------------------------------------- random campaign
 
 
-def _assert_balanced(r, fr, fa, moment, moment_cross, tol):
+def _assert_balanced(r, fr, fa, moment, moment_cross, tol, dm=38.5):
     """Every applied component balanced to ``tol`` of itself, and each to 1e-12 of the sum of
     the magnitudes of its terms (the solver's criterion for one not applied, and the rounding
     of this plain sum under preload), from the returned ball loads and angles; one not applied
     also to 1e-13 of the largest load (its terms may be the rounding of ``u = a + t cos(phi)``
-    where an imposed tilt and the axial shift cancel at the loaded balls)."""
+    where an imposed tilt and the axial shift cancel at the loaded balls). ``dm``: the pitch
+    diameter of the 6205's balls (the moment's lever R_i = d_m/2 + 0.02 D_w cos(alpha_0))."""
     q = np.asarray(r.ball_loads)
     al, ph = np.radians(r.contact_angles), np.radians(r.ball_angles)
-    radius = 38.5 / 2 + 0.02 * 7.938 * np.cos(np.radians(np.asarray(r.free_contact_angle)))
+    radius = dm / 2 + 0.02 * 7.938 * np.cos(np.radians(np.asarray(r.free_contact_angle)))
     terms = [q * np.cos(al) * np.cos(ph), q * np.cos(al) * np.sin(ph), q * np.sin(al),
              radius[..., None] * q * np.sin(al) * np.cos(ph),
              radius[..., None] * q * np.sin(al) * np.sin(ph)]  # fmt: skip
@@ -485,7 +495,7 @@ def test_random_campaign():
             with warnings.catch_warnings():
                 warnings.simplefilter("error")
                 r = solve_combined(z, fr, fa, clearance=g, cage_angle=rng.uniform(0, 360),
-                                   **G6205, **tilt)  # fmt: skip
+                                   **fitting(z), **tilt)  # fmt: skip
         except InputError as exc:
             assert "to a contact angle of 90°" in str(exc) or "too small" in str(exc), str(exc)
             refused += 1
@@ -493,7 +503,8 @@ def test_random_campaign():
         solved += 1
         assert np.all(np.isfinite(r.ball_loads)) and np.all(np.isfinite(r.contact_angles))
         assert np.all(np.abs(r.contact_angles[r.ball_loads > 0]) < 90.0)
-        _assert_balanced(r, fr, fa, tilt.get("moment", 0.0 if not tilt else None), 0.0, 1e-11)
+        moment = tilt.get("moment", 0.0 if not tilt else None)
+        _assert_balanced(r, fr, fa, moment, 0.0, 1e-11, fitting(z)["pitch_diameter"])
     assert solved >= 250
 
 

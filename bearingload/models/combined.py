@@ -473,7 +473,8 @@ def solve_combined(
     axial_load : array_like, default 0
         F_a (either sign). [N]
     ball_diameter, pitch_diameter : array_like
-        D_w and d_m. [mm]
+        D_w and d_m; the z balls must fit on the pitch circle, D_w <= d_m sin(180°/z)
+        (:func:`bearingload.validate.ball_spacing`, as the command line checks). [mm]
     f_i, f_o : array_like, default 0.52, 0.53
         Groove conformities r_i/D_w, r_o/D_w. [-]
     clearance : array_like, default 0
@@ -511,7 +512,8 @@ def solve_combined(
     Raises
     ------
     InputError
-        A parameter outside its domain, no load at all, both a moment and a misalignment; a
+        A parameter outside its domain (overlapping balls: ``ball_diameter``, with the largest
+        diameter that fits), no load at all, both a moment and a misalignment; a
         case whose equilibrium leaves a loaded ball at the groove edge (contact angle 90°).
     ConvergenceError
         No equilibrium reached (e.g. a load the balls cannot carry); the message names the
@@ -557,6 +559,7 @@ def solve_combined(
     flat = [a.ravel() for a in arrays]
     fr, fa, mm, tilt_deg, cage, e, nu, mc, dw, dm, fi, fo, gr, alpha_d = flat[:14]
     geo = _geometry(dw, dm, fi, fo, gr) if angular is None else _angular_geometry(dw, dm, fi, fo, alpha_d)  # fmt: skip
+    validate.ball_spacing(z, geo.D_w, geo.d_m)  # (z balls must fit on the pitch circle)
     if tilt_radius is not None:
         radius = validate.positive("tilt_radius", tilt_radius, "mm")
         geo = dataclasses.replace(geo, R_i=np.broadcast_to(radius, dw.shape).astype(float))
@@ -886,6 +889,66 @@ def _start(p: Problem, geo: _Geometry, cage: np.ndarray) -> np.ndarray:
     return np.where(p.locked, 0.0, np.where(np.abs(v) < 1e30, single, v))
 
 
+#: An angular-contact case whose groove-centre distance A exceeds LIGHT_RATIO times its one-ball
+#: approach (F/K)^(2/3) starts from the answer of the same case at a heavier load, the ratio
+#: STAGE times smaller (but not below HEAVY_RATIO), itself so started while above LIGHT_RATIO:
+#: a continuation in the load (:func:`_light_start`). [-]
+LIGHT_RATIO = 1e3
+HEAVY_RATIO = 1e2
+STAGE = 3.0
+
+
+def _light_start(
+    p: Problem, geo: _Geometry, curve: _StiffnessCurve | None, v0: np.ndarray
+) -> np.ndarray:
+    """``v0`` (n, 5), with the start of the light angular-contact cases (ratio A/(F/K)^(2/3)
+    above LIGHT_RATIO) replaced by the answer of the same case (the same load directions,
+    misalignment and geometry) at a load STAGE^1.5 times heavier (the ratio STAGE times smaller,
+    not below HEAVY_RATIO), in the scaled units of ``p``; that case is started the same way
+    while its ratio is above LIGHT_RATIO.
+
+    Why: :func:`_start` puts the ring at the radial engine's x (the balls at the groove bottom,
+    the clearance 2A (1 - cos alpha_0) taken up) and at the axial closed form's a (the balls
+    near alpha_0): together they press the ball on the load line about sin^2(alpha_0)/2 of A
+    into its grooves (0.09 A at 25°). Where A is millions of approaches, Newton relieves that along x and stops with one
+    ball loaded, near alpha_0, while the answer (F_a/F_r small, the ring free to tilt: that
+    ball near 0°, the far ones at 30-60°, the ring tilted by 0.3 A) lies a large part of A
+    away: the ring must roll the ball down its groove, an arc of radius A at approaches of
+    about 1, and straight Newton steps (the matrix singular along the tilt with one ball
+    loaded) advance some tens of approaches each (a 9-ball ring at 25°, F_a/F_r = 0.004, A =
+    8e6 approaches: 2000 steps ended 0.28 A on, residual 70). A heavier load shortens the arc
+    in approaches; the answer's position in mm changes little with the load, so a stage of 3
+    starts within a few approaches. The start is the heavier case's answer as it is (rounded to
+    single precision, the far balls' approaches, 1e-2 at a ratio of 8e6, would be lost); it is
+    a function of the case alone (each case is solved alone), and whatever its residual, the
+    light case is solved and checked as any other."""
+    rows = np.flatnonzero(p.one_sided & (p.a_hat > LIGHT_RATIO))
+    if not rows.size:
+        return v0
+    sub = _geo_take(geo, rows)
+    ratio = np.maximum(p.a_hat[rows] / STAGE, HEAVY_RATIO)
+    f_ref = p.k_ref[rows] * (sub.A / ratio) ** 1.5
+    heavy = Problem.make(
+        p.z, (p.c[rows], p.s[rows]), (sub.A, sub.g), f=p.f[rows],
+        t_imp=p.t_imp[rows] * p.scale[rows], locked=p.locked[rows], imposed=p.imposed[rows],
+        f_ref=f_ref, k_ref=p.k_ref[rows], one_sided=p.one_sided[rows],
+    )  # fmt: skip
+    own = None if curve is None else _StiffnessCurve(curve.values[rows])
+    try:
+        vh, vl, *_ = _solve_with_stiffness(heavy, sub, own)
+    except ConvergenceError:  # (a start only: the standard one stays)
+        return v0
+    v = (vh + vl) * (heavy.scale / p.scale[rows])[:, None]
+    out = v0.copy()
+    out[rows] = np.where(p.locked[rows], 0.0, v)
+    return out
+
+
+def _geo_take(geo: _Geometry, rows: np.ndarray) -> _Geometry:
+    """The cases ``rows`` of a geometry."""
+    return _Geometry(*(getattr(geo, f.name)[rows] for f in dataclasses.fields(geo)))
+
+
 #: Chebyshev nodes of the stiffness curve (first kind) on [-1, 1], their barycentric weights
 #: and cos(alpha) at each. [-]
 _NODES = 24
@@ -985,7 +1048,7 @@ def _solve_with_stiffness(
     iterations, the point there: :func:`_ring.reference` at the position, the loads with
     kappa)."""
     cage = np.rad2deg(np.arctan2(p.s[:, 0], p.c[:, 0]))
-    vh, kappa, total = _fast.newton(p, _start(p, geo, cage), curve)
+    vh, kappa, total = _fast.newton(p, _light_start(p, geo, curve, _start(p, geo, cage)), curve)
     vl = np.zeros_like(vh)
     todo = np.arange(vh.shape[0])  # each case stops on its own: no case depends on the batch
     sub, start = p, None
