@@ -197,8 +197,7 @@ def test_a_header_a_pair_cannot_take_is_refused():
     for head, message in [
         ("bearing,arrangement,load,speed",
          "speed: the service lives of a pair (speed, viscosity, reliability ...) are not yet "
-         "given by batch; 'bearingload solve 7205BDB --preload ... --speed ...' gives them for "
-         "one pair"),
+         "given by batch; solve gives them for one pair (its preload and speed options)"),
         ("bearing,preload,load,clearance",
          "clearance: not used in a file of bearing pairs (preload): a pair is solved by the "
          "exact static model of its angular-contact bearings, no clearance (the contact angle "
