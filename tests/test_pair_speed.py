@@ -199,3 +199,61 @@ def test_a_case_left_unbalanced_is_a_convergence_error_naming_its_inputs(monkeyp
         solve_pair_high_speed(12, 1000.0, 300.0, speed=20000.0, preload=500.0, **B7205)
     text = str(err.value)
     assert "speed = 20000 rpm" in text and "radial_load = 1000 N" in text
+
+
+# the command line ---------------------------------------------------------------------------
+
+PAIR_CLI = ["solve", "7205BDB", "--preload", "500N", "-F", "1kN", "-A", "300N"]
+
+
+def _json(capsys, *args):
+    import json
+
+    from tests.cli_helpers import run_entry
+
+    code, out, err = run_entry(capsys, *args, "--format", "json", "--quiet")
+    assert code == 0, err
+    return json.loads(out)["cases"][0]
+
+
+def test_cli_pair_at_speed_is_the_library_pair_with_the_ball_dynamics(capsys):
+    case = _json(capsys, *PAIR_CLI, "--speed", "10000")
+    assert "ball dynamics" in case["model"] and case["speed"] == 10000.0
+    r = solve_pair_high_speed(12, 1000.0, 300.0, speed=10000.0, preload=500.0, **B7205)
+    for key in ("x", "axial", "tilt"):
+        assert case[key] == pytest.approx(float(getattr(r, key)), rel=1e-9), key
+    for doc, b in zip(case["bearings"], r.bearings, strict=True):
+        assert "ball dynamics" in doc["model"]
+        for key in ("ball_loads_inner", "ball_loads_outer", "contact_angles_inner",
+                    "contact_angles_outer"):  # fmt: skip
+            assert np.allclose(doc[key], getattr(b, key), rtol=1e-9), key
+        assert np.all(np.array(doc["ball_loads_outer"]) > np.array(doc["ball_loads_inner"]))
+
+
+def test_cli_quasi_static_is_the_static_pair(capsys):
+    static = _json(capsys, *PAIR_CLI)
+    quasi = _json(capsys, *PAIR_CLI, "--speed", "10000", "--quasi-static")
+    assert "static model" in quasi["model"] and "ball dynamics" not in quasi["model"]
+    for key in ("x", "axial", "tilt", "reference_rating_life", "rating_life"):
+        assert quasi[key] == static[key], key
+    for a, b in zip(quasi["bearings"], static["bearings"], strict=True):
+        assert a["ball_loads"] == b["ball_loads"] and a["ball_loads_outer"] == b["ball_loads"]
+
+
+def test_cli_table_says_the_ball_dynamics_are_included(capsys):
+    from tests.cli_helpers import run_entry
+
+    code, out, _ = run_entry(capsys, *PAIR_CLI, "--speed", "10000")
+    assert code == 0
+    assert "Speed: ball dynamics: centrifugal force and gyroscopic moment" in out
+    assert "in both bearings" in out and "not coded" not in out
+
+
+def test_cli_a_convergence_error_names_quasi_static(capsys, monkeypatch):
+    from tests.cli_helpers import run_entry
+
+    monkeypatch.setattr(pair_speed, "ITERATIONS", 0)
+    monkeypatch.setattr(pair_speed, "CONTINUATION_STAGES", 0)
+    code, out, err = run_entry(capsys, *PAIR_CLI, "--speed", "20000")
+    assert code == 1 and out == ""
+    assert "--quasi-static gives the static model" in err and "speed = 20000 rpm" in err

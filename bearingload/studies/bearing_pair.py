@@ -64,6 +64,8 @@ def solve_bearing_pair(
     tilt_radius: Any = None,
     rotating: str = "inner",
     dynamic_rating: float | None = None,
+    speed: float | None = None,
+    ball_density: float | None = None,
 ) -> PairCase:
     """Solve the pair of two bearings ``b`` (angular contact, with its ball geometry).
 
@@ -80,6 +82,10 @@ def solve_bearing_pair(
         B of one bearing; default the catalogue's. [mm]
     cage_angle, moment, moment_cross, tilt_radius, rotating, dynamic_rating
         As :func:`bearingload.studies.combined_bearing.solve_combined_bearing`. [°, N mm, mm, N]
+    speed, ball_density : float, optional
+        Shaft speed [rpm]: every ball's centrifugal force and gyroscopic moment are included
+        (:mod:`bearingload.models.pair_speed`); None: the static model. Ball density
+        [kg/mm^3], default bearing steel.
     """
     from bearingload.bearings.tilt import tilt_lever
     from bearingload.models.pair import solve_pair
@@ -97,16 +103,43 @@ def solve_bearing_pair(
             "designation (7205B) or a ring by hand with its contact angle",
         )
     lever = tilt_lever(tilt_radius, b.pitch_diameter)
-    r = solve_pair(
-        b.balls, load, axial_load, arrangement=arrangement, preload=preload,
+    common: dict[str, Any] = dict(
+        arrangement=arrangement, preload=preload,
         contact_angle=b.contact_angle, ball_diameter=b.ball_diameter,
         pitch_diameter=b.pitch_diameter, width=bearing_width(b, width), f_i=b.f_i, f_o=b.f_o,
         cage_angle=cage_angle, moment=moment or 0.0, moment_cross=moment_cross or 0.0,
-        modulus=b.modulus, poisson=b.poisson,
-        stiffness=b.stiffness if b.stiffness_given else None, tilt_radius=lever,
+        modulus=b.modulus, poisson=b.poisson, tilt_radius=lever,
     )  # fmt: skip
+    if speed is not None:  # the ball dynamics
+        r: PairDistribution = _pair_at_speed(b, load, axial_load, speed, ball_density, rotating,
+                                             common)  # fmt: skip
+    else:
+        r = solve_pair(b.balls, load, axial_load, **common,
+                       stiffness=b.stiffness if b.stiffness_given else None)  # fmt: skip
     tilted = moment is not None or bool(moment_cross)  # else free to tilt: no tilt warning
     return _pair_case(b, r, lever, rotating, dynamic_rating, tilted)
+
+
+def _pair_at_speed(
+    b: ResolvedBearing, load: float, axial_load: float, speed: float, density: float | None,
+    rotating: str, common: dict[str, Any],
+) -> PairDistribution:  # fmt: skip
+    """solve_bearing_pair with the ball dynamics (:func:`bearingload.models.pair_speed.
+    solve_pair_high_speed`): the inner rings turning, each contact's Hertz stiffness."""
+    from bearingload.models.high_speed import STEEL_DENSITY
+    from bearingload.models.pair_speed import solve_pair_high_speed
+
+    if rotating == "outer":
+        raise InputError("rotating", "the ball dynamics at a speed are coded for the inner ring "
+                         "turning (docs/speed.md); the outer ring's lives are those of the "
+                         "static model (speed None)")  # fmt: skip
+    if b.stiffness_given:
+        raise InputError("speed", "the ball dynamics need each contact's Hertz stiffness from the "
+                         "ball geometry, not a given ball stiffness: leave out the stiffness, or "
+                         "ask for the static model (speed None)")  # fmt: skip
+    density = STEEL_DENSITY if density is None else density
+    return solve_pair_high_speed(b.balls, load, axial_load, speed=speed, ball_density=density,
+                                 **common)  # fmt: skip
 
 
 def _pair_case(
