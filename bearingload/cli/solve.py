@@ -241,7 +241,7 @@ def _radial_at_speed(case: CaseOptions) -> tuple[CaseOptions, bool]:
     if case.speed is None or case.quasi_static or case.wants_combined:
         return case, False
     if case.arrangement is not None or case.as_pair() is not None:
-        return case, False  # a pair: the static model at any speed, which gives its hours
+        return case, False  # a pair: its own path (_pair), the ball dynamics of both bearings
     if case.by_hand or contact_exponent(case.bearing) == ROLLER_EXPONENT:
         return case, False  # --speed refused without the geometry; rollers: the radial engine
     given = case.given | {"axial_load"}

@@ -27,7 +27,9 @@ omega^2 from the static answer. The components held by a symmetry of the case ar
 static pair. A case stops when every applied component is balanced to ``TOLERANCE`` of the
 largest of the applied loads and the preload; it is accepted at ``ACCEPT`` of it or within the
 rounding level of the ball forces on the shaft (each bearing's :func:`bearingload.models.
-high_speed._rounding`, carried through the maps), as the single bearing accepts; otherwise
+high_speed._rounding`, carried through the maps) or, up to ``NOISE_MAX`` of that load, within
+the change of the shaft forces over the balls' own residuals, as the single bearing accepts;
+otherwise
 :class:`~bearingload.errors.ConvergenceError` names its inputs. At speed 0 the answer is the
 static pair's (its position, no step taken where it is balanced).
 """
@@ -130,8 +132,9 @@ class _State:
     gen: np.ndarray  # (n, 5) [N]
     jac: np.ndarray  # (n, 5, 5)
     merit: np.ndarray  # (n,) largest free residual over f_ref (inf: a ball unsolved)
-    score: np.ndarray  # (n,) the residual over f_ref or, where larger, its rounding over ACCEPT
-    level: np.ndarray  # (n,) the largest rounding level over f_ref
+    score: np.ndarray  # (n,) the residual over f_ref or, where larger, its rounding (or the
+    # balls' residuals on it) over ACCEPT (:func:`_rescore`; before it: the residual over f_ref)
+    level: np.ndarray  # (n,) the largest rounding level over f_ref (:func:`_rescore`)
 
     @property
     def accepted(self) -> np.ndarray:
@@ -159,12 +162,11 @@ def _local(sh: _Shaft, k: int, v: np.ndarray) -> np.ndarray:
 
 def _evaluate(sh: _Shaft, v: np.ndarray, balls: tuple[Any, ...]) -> _State:
     """Both bearings' balls at the shaft position v (from ``balls`` = (do, ao, sens) (n, 2, z)
-    each, sens None: fresh), the shaft's forces, tangent, residual and rounding level."""
+    each, sens None: fresh), the shaft's forces, tangent and residual."""
     do, ao, sens = balls
     parts = []
     gen = np.zeros_like(v)
     jac = np.zeros(v.shape + (5,))
-    floor = np.zeros_like(v)
     for k in range(2):
         m = sh.maps[:, k]
         p = _hs._evaluate(sh.rings[k], _local(sh, k, v), do[:, k], ao[:, k],
@@ -173,16 +175,49 @@ def _evaluate(sh: _Shaft, v: np.ndarray, balls: tuple[Any, ...]) -> _State:
         mt = m.transpose(0, 2, 1)
         gen += (mt @ p.gen[:, :, None])[:, :, 0]
         jac += mt @ p.jac @ m
-        # each local component's rounding (at most the bearing's largest) through |L_k^T|
-        level = np.where(np.isfinite(p.level), p.level, 0.0) * sh.f_ref
-        floor += np.abs(mt).sum(2) * level[:, None]
     ok = parts[0].balls_ok & parts[1].balls_ok
     res = np.where(sh.held, 0.0, sh.f - gen)
     merit = np.where(ok, np.abs(res).max(axis=1) / sh.f_ref, np.inf)
-    score = (np.abs(res) / np.maximum(sh.f_ref[:, None], floor / ACCEPT)).max(axis=1)
-    score = np.where(ok & np.isfinite(score), score, np.inf)
     merit = np.where(np.isfinite(merit), merit, np.inf)
-    return _State(parts, gen, jac, merit, score, floor.max(axis=1) / sh.f_ref)
+    # scored against ACCEPT alone here; the rounding level is weighed by _rescore
+    return _State(parts, gen, jac, merit, merit.copy(), np.zeros_like(merit))
+
+
+def _rescore(sh: _Shaft, v: np.ndarray, st: _State, rows: np.ndarray) -> None:
+    """Score the cases ``rows`` as the single bearing does: each shaft component against the
+    largest of ACCEPT of the load, its rounding level (each bearing's :func:`bearingload.models.
+    high_speed._rounding`: its terms' magnitudes and the ball forces' change over one rounding
+    of the groove-centre positions) and, up to NOISE_MAX of the load, the change of the forces
+    over the balls' own residuals (``|dF/dX (dg/dX)^-1|`` times each ball's residual), each
+    bearing's carried to the shaft through ``|L_k^T|``; also their rounding level."""
+    if rows.size == 0:
+        return
+    sub, cur = sh.take(rows), st.take(rows)
+    floor = np.zeros((rows.size, 5))
+    noise = np.zeros((rows.size, 5))
+    for k in range(2):
+        r, p = sub.rings[k], cur.parts[k]
+        local = _local(sub, k, v[rows])
+        rho = r.base[:, None] + local[:, 0, None] * r.c + local[:, 1, None] * r.s
+        u = local[:, 2, None] + local[:, 3, None] * r.c + local[:, 4, None] * r.s
+        fa, fr, d, terms, _, gain = _hs._ring_forces(r.b, rho, u, p.do, p.ao, r.one_sided)
+        zero, one = np.zeros_like(r.c), np.ones_like(r.c)
+        arm_r = np.stack([r.c, r.s, zero, zero, zero], axis=1)  # (n, 5, z)
+        arm_a = np.stack([zero, zero, one, r.c, r.s], axis=1)
+        up = np.maximum(u, 0.0)
+        mine = _hs._rounding(arm_r, arm_a, fr, fa, d, np.abs(rho) + up)
+        g = gain * np.hypot(terms[0], terms[1])
+        g = np.where(np.isfinite(g), g, 0.0)
+        own = (np.abs(arm_a) * g[0][:, None, :] + np.abs(arm_r) * g[1][:, None, :]).sum(-1)
+        back = np.abs(sub.maps[:, k].transpose(0, 2, 1))
+        floor += (back @ mine[:, :, None])[:, :, 0]
+        noise += (back @ np.where(np.isfinite(own), own, 0.0)[:, :, None])[:, :, 0]
+    noise = np.minimum(noise, _hs.NOISE_MAX * sub.f_ref[:, None])
+    res = np.where(sub.held, 0.0, sub.f - cur.gen)
+    allowed = np.maximum(sub.f_ref[:, None], np.maximum(floor, noise) / ACCEPT)
+    score = (np.abs(res) / allowed).max(axis=1)
+    st.score[rows] = np.where(np.isfinite(cur.merit), score, np.inf)
+    st.level[rows] = floor.max(axis=1) / sub.f_ref
 
 
 def _touching(st: _State) -> np.ndarray:
@@ -252,7 +287,9 @@ def _continuation(sh: _Shaft, i: int, v: np.ndarray, st: _State, its: np.ndarray
     done, step = 0.0, 0.25
     for _ in range(CONTINUATION_STAGES):
         frac = min(1.0, done + step)
-        x1, st1, its1 = _newton(one.at_speed(frac), x + rate * (frac - done), balls)
+        stage = one.at_speed(frac)
+        x1, st1, its1 = _newton(stage, x + rate * (frac - done), balls)
+        _rescore(stage, x1, st1, np.array([0]))
         its[i] += its1[0]
         if st1.accepted[0]:
             if done > 0.0:
@@ -396,6 +433,7 @@ def _solve(sh: _Shaft, v_static: np.ndarray, flat: dict) -> tuple[Any, ...]:
     n, z = v_static.shape[0], sh.rings[0].c.shape[1]
     nan = np.full((n, 2, z), np.nan)
     v, st, its = _newton(sh, v_static, (nan, nan, None))
+    _rescore(sh, v, st, np.arange(n))
     for left in np.flatnonzero(~st.accepted):
         _continuation(sh, int(left), v, st, its, v_static[left])
     level = np.where(np.isfinite(st.level), st.level, 0.0)
