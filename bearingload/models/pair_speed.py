@@ -440,8 +440,9 @@ def _solve(sh: _Shaft, v_static: np.ndarray, flat: dict) -> tuple[Any, ...]:
     small = np.flatnonzero(level > _hs.LEVEL_MAX)
     if small.size:
         i = int(small[np.argmax(level[small])])
+        sizes = {k: abs(float(flat[k][i])) for k in ("radial_load", "axial_load", "preload")}
         raise InputError(
-            "radial_load",
+            max(sizes, key=lambda k: sizes[k]),  # the largest load names the option
             f"the loads are too small against the ball forces at this speed for the ball "
             f"dynamics of the pair (the largest of F_r, |F_a|, M/R_i and the preload is "
             f"{float(sh.f_ref[i]):.3g} N; the rounding of the ball forces on the shaft is "
