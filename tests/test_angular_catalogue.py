@@ -162,7 +162,8 @@ def test_resolve_gives_the_row_at_its_angle_without_clearance():
 @pytest.mark.parametrize(
     ("text", "near"),
     [("7205AC", "no 25° row of series 72"), ("7005A5", "no 25° row of series 70"),
-     ("46205", "no 26° row"), ("36205", "no 12° row"), ("66205", "no 36° row"),
+     ("46205", "the 26° rows of series 2 are 46207, 46208,"),
+     ("66205", "the 36° rows of series 2 are 66211"), ("36405", "no 12° row of series 4"),
      ("7221B", "40° rows of series 72 are 7200B, 7201B,"), ("7321C", "7320C")],
 )  # fmt: skip
 def test_known_type_without_a_row_is_one_error_naming_the_rows(capsys, text, near):
@@ -216,7 +217,11 @@ def test_catalog_lists_and_shows_angular_rows(capsys):
     rows = json.loads(out)["rows"]
     assert [r["designation"] for r in rows] == [r.designation for r in angular_rows()]
     assert [r["designation"] for r in rows if r["maker"].startswith("NSK")] == list(NSK_BEA_40)
-    assert len(rows) == len(NSK_BEA_40) + len(KOYO_B2001)
+    epk = [r for r in rows if r["maker"].startswith("EPK")]  # GOST rows: test_angular_gost.py
+    assert len(epk) == 53 and len(rows) == len(NSK_BEA_40) + len(KOYO_B2001) + len(epk)
+    code, out, _ = run_entry(capsys, "catalog", "show", "36205", "--format", "json")
+    doc = json.loads(out)
+    assert doc["contact_angle"] == 12.0 and doc["maker"] == "EPK" and "2011" in doc["source"]
     code, out, _ = run_entry(capsys, "catalog", "show", "7205 BEP", "--format", "json")
     doc = json.loads(out)
     assert doc["contact_angle"] == 40.0 and doc["balls"] == 12 and doc["C"] == 16700.0

@@ -61,6 +61,9 @@ COLUMNS: dict[str, str] = {
     "pressure_viscosity": "number",
     "ball_density": "number",
     "quasi_static": "flag",
+    "arrangement": "text",
+    "preload": "force",
+    "width": "length",
 }
 #: The operating conditions of the lives (solve's options of the same names; ``eC`` is read as
 #: ``ec``): they feed the lives in hours, a_ISO, the modified lives and the film, never a load.
@@ -94,6 +97,13 @@ FLAGS = {"true": True, "false": False}
 #: as solve's load options choose its engine (``contact_angle``: an angular-contact ring given
 #: by its ball set, as solve's --contact-angle); the others are radial cases.
 LOAD_COLUMNS = ("axial_load", "moment", "moment_cross", "misalignment", "contact_angle")
+#: The columns of a bearing pair (solve's --arrangement, --preload, --width): a file with one of
+#: them is a file of pairs, every row a pair (``batch/pairs.py``).
+PAIR_COLUMNS = ("arrangement", "preload", "width")
+#: Columns a file of pairs cannot have (a pair takes no clearance, misalignment, method ...;
+#: its service lives and speed are solve's only, not yet the batch's).
+NOT_PAIRS = ("method", "revolutions", "exponent", "clearance", "clearance_pick", "misalignment",
+             "ball_density", "quasi_static")  # fmt: skip
 #: Columns that belong to the combined load (tilt_radius: the lever of its tilt).
 COMBINED_COLUMNS = (*LOAD_COLUMNS, "tilt_radius")
 #: Columns a file with combined-load columns cannot have: its combined rows are solved by the
@@ -131,6 +141,11 @@ class Header:
     def combined(self) -> bool:
         """True when rows may be combined-load cases (an axial load, moment ... column)."""
         return any(n in COMBINED_COLUMNS for n in self.names)
+
+    @property
+    def pairs(self) -> bool:
+        """True when every row is a bearing pair (an arrangement, preload or width column)."""
+        return any(n in PAIR_COLUMNS for n in self.names)
 
     @property
     def has_bearing(self) -> bool:
@@ -171,6 +186,7 @@ def read_header(fields: list[str]) -> Header:
             f"allowed: {', '.join(COLUMNS)}",
         )
     _check_combined(names)
+    _check_pairs(names)
     twice = sorted({n for n in names if names.count(n) > 1})
     if twice:
         raise InputError("columns", f"column(s) given twice: {', '.join(twice)}")
@@ -212,6 +228,36 @@ def _check_combined(names: list[str]) -> None:
             "columns",
             f"{refused[0]}: not used with the combined load ({combined[0]}): its rows are "
             "solved by the 3-D equilibrium of a ball bearing (m = 1.5), lives in 10^6 rev",
+        )
+
+
+def _check_pairs(names: list[str]) -> None:
+    """A file of pairs names its bearings (or ball geometry) and no column a pair cannot take."""
+    given = [n for n in names if n in PAIR_COLUMNS]
+    if not given:
+        return
+    if not any(n in ("bearing", "ball_diameter", "pitch_diameter") for n in names):
+        raise InputError(
+            "columns",
+            f"{given[0]}: a file of bearing pairs needs angular-contact ball bearings: add a "
+            "'bearing' column (7205B, 7205BDB) or 'ball_diameter', 'pitch_diameter' and "
+            "'contact_angle'",
+        )
+    refused = [n for n in names if n in NOT_PAIRS]
+    if refused:
+        raise InputError(
+            "columns",
+            f"{refused[0]}: not used in a file of bearing pairs ({given[0]}): a pair is solved "
+            "by the exact static model of its angular-contact bearings, no clearance (the "
+            "contact angle fixes the geometry), no misalignment (give the moment)",
+        )
+    life = [n for n in names if n in SERVICE_COLUMNS]
+    if life:
+        raise InputError(
+            "columns",
+            f"{life[0]}: the service lives of a pair (speed, viscosity, reliability ...) are "
+            "not yet given by batch; 'bearingload solve 7205BDB --preload ... --speed ...' "
+            "gives them for one pair",
         )
 
 

@@ -98,6 +98,10 @@ def _service_outputs(header: Header) -> set[str]:
 def batch_columns(header: Header) -> list[Column]:
     """The output columns for a file with ``header`` (its oil columns, as given, before the
     operating viscosity they give)."""
+    if header.pairs:
+        from bearingload.batch.pairs import pair_columns
+
+        return pair_columns(header)
     columns = _columns(header)
     oil = [column(k) for k in OIL_INPUTS if k in header.names]
     at = next((i for i, c in enumerate(columns) if c.key == "viscosity"), len(columns))
@@ -129,6 +133,8 @@ def held_keys(header: Header) -> tuple[str, ...]:
     ``header`` (:data:`HELD_KEYS` for a combined-load file, and for a file of bearings with a
     speed column, whose ball bearings at speed solve gives the ball dynamics)."""
     at_speed = "speed" in header.names and header.has_bearing
+    if header.pairs:
+        return ()
     return HELD_KEYS if header.combined or at_speed else ()
 
 

@@ -89,8 +89,13 @@ class BatchSolver:
                 else:
                     errors[number] = message
         cols, bad = self._columns(rows)
+        return self._solved(cols, numbers, errors, bad)
+
+    def _solved(self, cols: dict[str, list[Any]], numbers: list[int], errors: dict[int, str],
+                bad: dict[int, str]) -> Chunk:  # fmt: skip
+        """The block's rows, read into ``cols`` (``bad``: the rows that failed), solved."""
         groups: dict[tuple[Any, ...], list[int]] = {}
-        for i, key in enumerate(self._keys(cols, len(rows), bad)):
+        for i, key in enumerate(self._keys(cols, len(numbers), bad)):
             if key is not None:
                 groups.setdefault(key, []).append(i)
         parts: list[Part] = []
@@ -296,6 +301,8 @@ class BatchSolver:
             try:
                 if c_r is not None and not c_r > 0:
                     raise InputError("dynamic_rating", "must be greater than 0 N")
+                if not self.header.pairs:
+                    _refuse_pair(v.get("bearing"))
                 hit = resolve_bearing(v.get("bearing"), **args)
                 if "clearance_pick" in v and hit.clearance_class is None:  # as solve refuses it
                     raise InputError("clearance_pick", _no_class_to_pick(hit))
@@ -308,6 +315,22 @@ class BatchSolver:
         if isinstance(hit, BearingloadError):
             raise hit
         return hit
+
+
+def _refuse_pair(text: str | None) -> None:
+    """A matched pair (7205BDB) in a file without pair columns: its row is skipped, saying how a
+    file of pairs is written (its columns are those of a pair)."""
+    from bearingload.bearings.angular import split_pair
+
+    try:
+        kind = None if text is None else split_pair(text)[1]
+    except InputError:
+        return  # a maker's preload class ...: the resolver names it
+    if kind is not None:
+        raise InputError("bearing", f"{str(text).strip()!r} names a {kind} pair: a file of pairs has "
+                         "an 'arrangement' column (or 'preload', 'width'; every row of it a "
+                         "pair, written as solve writes a pair); here give the single bearing "
+                         "with the load it carries")  # fmt: skip
 
 
 def _no_class_to_pick(b: Any) -> str:

@@ -13,7 +13,8 @@ Designations read (the contact angle from the suffix or the GOST type):
   (GOST 831-75, clause 2, as restated at ajdocs.ru/gsp/49821/2; the K, K6, K7 variants are not
   read).
 
-Rows: ``data/angular_contact.csv``, each with its source; a designation of one of these types
+Rows: ``data/angular_contact.csv``, each with its source (NSK's and Koyo's ISO-form rows; EPK's
+GOST 36xxx/46xxx/66xxx rows, General Catalogue 2011); a designation of one of these types
 without a row is refused, naming the rows there are (:func:`find_angular`).
 """
 
@@ -226,7 +227,7 @@ DEFAULT_ANGULAR_MAKER = "NSK"
 
 def find_angular(parsed: AngularDesignation, maker: str | None = None) -> AngularRow:
     """The catalogue row of ``parsed``: ``maker``'s, else NSK's where NSK has one, else the
-    one maker's with a row (Koyo's 15°, 30° and 40° rows, NSK's 40° BEA rows).
+    one maker's with a row (Koyo's 15°, 30° and 40° rows, NSK's 40° BEA rows, EPK's GOST rows).
 
     Raises
     ------
@@ -260,18 +261,19 @@ def find_angular(parsed: AngularDesignation, maker: str | None = None) -> Angula
 
 def _no_row_message(parsed: AngularDesignation) -> str:
     """Why ``parsed`` has no row, with the rows of its contact angle and series there are."""
+    # ISO: the rows of the series (70, 72, 73) at the angle; GOST: of the type and series digit
+    # (46205: the 462xx rows)
+    width = 3 if parsed.standard == "GOST" else 2
     kin = sorted(
         {r.designation for r in angular_rows()
-         if r.contact_angle == parsed.contact_angle and r.designation[:2] == parsed.name[:2]}
+         if r.contact_angle == parsed.contact_angle and r.designation[:width] == parsed.name[:width]}
     )  # fmt: skip
-    if parsed.standard == "GOST" or not kin:
-        near = f"there is no {parsed.contact_angle:g}° row"
-        if parsed.standard == "ISO":
-            near += f" of series {parsed.series}"
+    if not kin:
+        near = f"there is no {parsed.contact_angle:g}° row of series {parsed.series}"
     else:
         near = f"the {parsed.contact_angle:g}° rows of series {parsed.series} are {', '.join(kin)}"
     return (
-        f"{parsed.text!r} is {parsed.what}, which has no catalogue row yet (no public source "
-        f"read for it); {near} (bearingload catalog --type angular lists every row), or give "
-        "the ring by hand with its contact angle"
+        f"{parsed.text!r} is {parsed.what}, which has no catalogue row (no public source read "
+        f"for it, or its printed ratings fit no ball set); {near} (bearingload catalog --type "
+        "angular lists every row), or give the ring by hand with its contact angle"
     )

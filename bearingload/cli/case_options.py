@@ -139,8 +139,9 @@ def _option(*decls: str, **attrs: Any) -> tuple[tuple[str, ...], dict[str, Any]]
 _FORCE, _MOMENT, _ANGLE = (units_help(k) for k in ("force", "moment", "angle"))
 MAKER_HELP = (
     "Whose ball set the designation uses where makers differ: NSK (default), NTN, SKF, GMN, "
-    "GOST, KOYO (angular-contact rows; the default where NSK has none), or a published test-rig "
-    "set (CWRU, PRONOSTIA, PADERBORN); 'bearingload catalog show X' lists the makers of X."
+    "GOST, KOYO, EPK (angular-contact rows; the default where NSK has none), or a published "
+    "test-rig set (CWRU, PRONOSTIA, PADERBORN); 'bearingload catalog show X' lists the makers "
+    "of X."
 )
 
 #: Every case option: click parameter name -> (declarations, attributes), in help order;

@@ -27,6 +27,7 @@ from bearingload.cli.options import (
 )
 from bearingload.cli.plot import ball_loads_plot_option, check_plot, save_plot
 from bearingload.errors import ConvergenceError, InputError
+from bearingload.studies.life_basis import combined_basis, radial_basis
 from bearingload.units import plausible_ranges_help
 
 
@@ -432,57 +433,6 @@ def with_speed_warnings(cases: list[Any], speed: float | None) -> list[Any]:
         new = [] if c.bearing is None else speed_findings(speed, c.bearing)
         out.append(dataclasses.replace(c, warnings=(*c.warnings, *new)) if new else c)
     return out
-
-
-def life_geometry(b: Any) -> dict[str, Any]:
-    """The bearing's part of a :class:`bearingload.bearings.service_life.LifeBasis`."""
-    return {
-        "kind": b.kind,
-        "C0": b.C0,
-        "pitch_diameter": b.pitch_diameter,
-        "ball_diameter": b.ball_diameter,
-        "f_i": b.f_i,
-        "f_o": b.f_o,
-        "modulus": b.modulus,
-        "poisson": b.poisson,
-        "roller_length": b.roller_length,
-    }
-
-
-def radial_basis(c: Any) -> Any:
-    """The life basis of a radial case (:class:`bearingload.studies.loaded_bearing.LoadedCase`):
-    P = F_r, contact angle 0."""
-    from bearingload.bearings.service_life import LifeBasis
-
-    b = c.bearing
-    return LifeBasis(
-        C=b.C,
-        equivalent_load=float(c.result.case.load),
-        rating_life=c.rating_life,
-        reference_rating_life=c.reference_rating_life,
-        q_max=None if c.result.q_max is None else float(c.result.q_max),
-        **life_geometry(b),
-    )
-
-
-def combined_basis(c: Any) -> Any:
-    """The life basis of a combined-load case: P = X F_r + Y F_a, the heaviest ball at its
-    contact angle."""
-    import numpy as np
-
-    from bearingload.bearings.service_life import LifeBasis
-
-    res = c.result
-    heaviest = int(np.argmax(res.ball_loads))
-    return LifeBasis(
-        C=c.dynamic_rating or c.bearing.C,
-        equivalent_load=c.equivalent_load,
-        rating_life=c.rating_life,
-        reference_rating_life=c.reference_rating_life,
-        q_max=float(res.ball_loads[heaviest]),
-        contact_angle=float(res.contact_angles[heaviest]),
-        **life_geometry(c.bearing),
-    )
 
 
 def _figure(name: str, cases: list[Any]) -> Any:

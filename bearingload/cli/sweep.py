@@ -35,6 +35,7 @@ SERVICE_REFUSAL = (
 @case_options(
     omit=("cage_angle",),
     hidden=[*(n for n in SERVICE_PARAMS if n != "speed"), *DYNAMICS_PARAMS],
+    pair=True,
 )
 @click.option(
     "--steps",
@@ -113,6 +114,8 @@ def sweep(
       bearingload sweep 6205 -F 1kN -A 300N --moment 5Nm --format json
       # a moment of 2 N m about the load line, the tilt at the pitch radius as MASTA
       bearingload sweep 6205 -F 1kN -A 300N --moment-cross 2Nm --tilt-radius pitch --steps 9
+      # a back-to-back pair of 7205B, 300 N preload: the shaft, each bearing's Q_max, stiffness
+      bearingload sweep 7205BDB --preload 300N -F 1kN -A 200N --steps 7
     """
     case.refuse(
         ("contact_angle",),
@@ -129,6 +132,10 @@ def sweep(
     if case.load is None:
         raise click.UsageError("Missing option '--load' / '-F' (or give --kurochkin-T).")
     refuse_range(case, "sweep")
+    pair = case.as_pair()
+    if pair is not None:
+        _pair(pair, steps, plot, fmt, output)
+        return
     if plot is not None:
         check_plot(plot)
     if case.wants_combined:  # the load alone chooses the engine, never a life option
@@ -222,6 +229,45 @@ def _combined(
         from bearingload.reports.plots import combined_sweep_figure
 
         save_plot(lambda: combined_sweep_figure(result, b.designation), plot)
+    emit(text, output)
+
+
+def _pair(case: CaseOptions, steps: int, plot: str | None, fmt: str, output: str | None) -> None:
+    """The sweep of a bearing pair (7205BDB, --arrangement): one vectorised pair solve over the
+    pitch, then emit."""
+    from bearingload.cli.cases import bearing_context, resolve_bearings
+    from bearingload.cli.options import print_warnings
+    from bearingload.cli.solve import with_ratings
+    from bearingload.reports.pair_sweep import pair_sweep_report
+    from bearingload.studies.pair_sweep import pair_sweep
+
+    if plot is not None:
+        raise click.UsageError(
+            "Invalid value for '--plot': it draws one bearing's ripple, not a pair's; "
+            "--format csv gives the pair at every cage position"
+        )
+    case.refuse(("misalignment",), "a bearing pair", "the shaft's tilt follows from the loads; "
+                "give --moment")  # fmt: skip
+    case.refuse(("clearance",), "a bearing pair", "the design contact angle fixes the geometry "
+                "of an angular-contact bearing (no clearance)")  # fmt: skip
+    b = with_ratings(resolve_bearings(case, case.stiffness_value()), case)[0]
+    if b.contact_angle is None:
+        raise click.UsageError(
+            f"Invalid value for '--arrangement': a pair {case.arrangement} is two "
+            "angular-contact ball bearings; give an angular-contact designation (7205B, 7205BDB)"
+        )
+    args = case.pair_arguments(b.balls)
+    del args["cage_angle"]
+    result = pair_sweep(b, case.radial_load, case.axial_load or 0.0, steps=steps, **args)
+    if case.speed is not None:  # the lives in hours; the loads stay the static model's
+        import dataclasses
+
+        from bearingload.bearings.checks import speed_findings
+
+        found = (*result.warnings, *speed_findings(case.speed, b))
+        result = dataclasses.replace(result, speed=case.speed, warnings=found)
+    text = pair_sweep_report(result, fmt, bearing_context(b))
+    print_warnings(list(result.warnings), False)
     emit(text, output)
 
 

@@ -52,12 +52,28 @@ class ClearanceList(click.ParamType):
         return out
 
 
+class ForceList(click.ParamType):
+    """Comma-separated forces (bare number: N), each read as ``--preload`` reads a force."""
+
+    name = "F1,F2,..."
+
+    def convert(self, value: Any, param: click.Parameter | None, ctx: click.Context | None) -> Any:
+        from bearingload.cli.options import Quantity
+
+        if isinstance(value, list):
+            return value
+        return [
+            Quantity("force").convert(item.strip(), param, ctx) for item in str(value).split(",")
+        ]
+
+
 @click.command(context_settings=CONTEXT)
 @click.argument("name", type=click.Choice(TABLES))
 @case_options(
     bearing="option",
     defaults={"load": "1000"},
-    hidden=DYNAMICS_PARAMS,
+    hidden=[*DYNAMICS_PARAMS, "preload"],  # a pair's table life runs over --preloads
+    pair=True,
 )
 @click.option(
     "--z-max",
@@ -73,6 +89,12 @@ class ClearanceList(click.ParamType):
     "preload), e.g. '-10um,0,10um,30um'. Default: -20 to 80 µm at a 25 mm bore, scaled by the "
     "bore's ISO 5753-1 C5 maximum.",
 )
+@click.option(
+    "--preloads",
+    type=ForceList(),
+    help="life of a bearing pair (--bearing 7205BDB, or --arrangement DB|DF): the rows' "
+    "preloads F_p, comma-separated forces (bare number: N), e.g. '0,100N,300N,1kN'.",
+)
 @method_option(
     "The model the table is computed with (see 'bearingload solve --help'); all: one table "
     "comparing every method with its error against the exact answer."
@@ -84,6 +106,7 @@ def table(
     case: CaseOptions,
     z_max: int,
     clearances: list[float] | None,
+    preloads: list[float] | None,
     method: str,
     fmt: str,
     output: str | None,
@@ -94,6 +117,7 @@ def table(
     NAME  k     Table 1 of Kuzmenko (2010): k = Q_max/F_r and loaded balls n
           kq    Table 2.2 of Kuzmenko & Sabadash (2014): K_Q = k z/2
           life  reference rating life L10r (ISO/TS 16281) against the radial clearance
+                (a pair of angular-contact bearings: against the preload)
 
     k, kq: by default the paper's conditions: zero clearance, a ball under the load. With
     --clearance the answer depends on load and stiffness, so give those too. They are radial
@@ -111,6 +135,12 @@ def table(
     also gives L10rh, P_ref, a_ISO, L_nmr and the film; what is the same in every row (kappa,
     e_C, C_u, L_nm) is among the conditions.
 
+    life of a pair of angular-contact bearings (--bearing 7205BDB, or 7205B with --arrangement
+    DB or DF; docs/angular_contact.md): per preload F_p (--preloads) each bearing's Q_max and
+    loaded balls, the pair's axial and radial stiffness, lift-off load, L10r and L10, as 'solve
+    7205BDB --preload F_p' gives them. A single angular-contact bearing has no table life: its
+    contact angle fixes its geometry, so it has no radial clearance to run over.
+
     \b
     Examples:
       bearingload table k
@@ -126,6 +156,8 @@ def table(
       bearingload table life -b 6205 -F 1.4kN --axial-load 700N --clearances -10um,0,10um,20um,40um
       # a hand-given ball set with its C_r, outer ring rotating, 2 mrad misalignment, csv
       bearingload table life -z 7 --ball-diameter 11.5 --pitch-diameter 43.5 -C 23.4kN -F 1kN --rotating outer --misalignment 2mrad --format csv
+      # a back-to-back pair of 7205B: L10r and stiffness against the preload
+      bearingload table life -b 7205BDB -F 1kN -A 200N --preloads 0,100N,300N,1kN
     """
     from bearingload.reports.render import render
     from bearingload.reports.tables import design_table
@@ -140,13 +172,18 @@ def table(
     case.refuse(DYNAMICS_PARAMS, f"table {name}", DYNAMICS_REFUSAL)
     from bearingload.bearings.angular import parse_angular
 
+    pair = case.as_pair()
+    if pair is not None or preloads is not None:
+        _pair_life(name, pair, preloads, clearances, fmt, output)
+        return
     if case.bearing is not None and parse_angular(case.bearing) is not None:  # as --contact-angle
         raise click.UsageError(
             f"Invalid value for '--bearing': {case.bearing.strip()!r} is an angular-contact "
             f"bearing, solved by 'solve', 'sweep' and 'batch', not by 'table {name}'"
             + (
-                " (its rows are radial clearances; the contact angle fixes an angular-contact "
-                "bearing's geometry)"
+                ": its rows are radial clearances, and the contact angle fixes an "
+                "angular-contact bearing's geometry (no clearance); for a pair, 'table life -b "
+                f"{case.bearing.strip()}DB --preloads 0,100N,300N' gives L10r against the preload"
                 if name == "life"
                 else ""
             )
@@ -267,12 +304,92 @@ def _life(
     emit(text, output)
 
 
+def _pair_life(
+    name: str,
+    case: CaseOptions | None,
+    preloads: list[float] | None,
+    clearances: list[float] | None,
+    fmt: str,
+    output: str | None,
+) -> None:
+    """``table life`` of a bearing pair: L10r against the preload (``--preloads``), emit."""
+    from bearingload.cli.case_options import SERVICE_PARAMS
+    from bearingload.cli.cases import resolve_bearings
+    from bearingload.cli.options import print_warnings
+    from bearingload.cli.solve import with_ratings
+    from bearingload.reports.pair_sweep import preload_life_report
+    from bearingload.studies.pair_sweep import life_against_preload
+
+    if case is None:
+        raise click.UsageError(
+            "--preloads cannot be used without a bearing pair: it gives the rows of table life "
+            "of a pair (--bearing 7205BDB, or --arrangement DB or DF)"
+        )
+    if name != "life":
+        raise click.UsageError(
+            f"a bearing pair (--arrangement, or a designation such as 7205BDB) cannot be used "
+            f"with table {name}: {RADIAL_ONLY}"
+        )
+    for option, given, why in (
+        ("--preload", case.preload is not None, "its rows are preloads (--preloads)"),
+        ("--clearances", clearances is not None, "a pair's rows are preloads (--preloads)"),
+        ("--z-max", _given("z_max"), "it is one pair, not a table over z"),
+        ("--method", _given("method"), "the life comes from the exact model only"),
+    ):
+        if given:
+            raise click.UsageError(f"{option} cannot be used with table life of a pair: {why}")
+    case.refuse(("misalignment",), "a bearing pair", "the shaft's tilt follows from the loads; "
+                "give --moment")  # fmt: skip
+    case.refuse(("clearance",), "a bearing pair", "the design contact angle fixes the geometry "
+                "of an angular-contact bearing (no clearance)")  # fmt: skip
+    case.refuse(SERVICE_PARAMS, "table life of a pair", "its service lives are not yet "
+                "tabulated; 'bearingload solve 7205BDB --preload ...' gives them for one preload")  # fmt: skip
+    if preloads is None:
+        raise click.UsageError(
+            "Missing option '--preloads': table life of a pair runs over the preload; give the "
+            "rows, e.g. --preloads 0,100N,300N,1kN"
+        )
+    negative = [p for p in preloads if not p >= 0]
+    if negative:
+        raise click.UsageError(
+            f"Invalid value for '--preloads': each must be 0 N or more (got {negative[0]:g} N)"
+        )
+    if (case.arrangement or "").upper() == "DT":
+        raise click.UsageError(
+            "Invalid value for '--arrangement': a tandem pair (DT) is not preloaded in itself "
+            "(it is preloaded against another bearing): table life of a pair runs over the "
+            "preload of DB or DF"
+        )
+    if "load" not in case.given:
+        raise click.UsageError("Missing option '--load' / '-F': table life needs F_r (N)")
+    b = with_ratings(resolve_bearings(case, case.stiffness_value()), case)[0]
+    if b.contact_angle is None:
+        raise click.UsageError(
+            f"Invalid value for '--arrangement': a pair {case.arrangement} is two "
+            "angular-contact ball bearings; give an angular-contact designation (7205B, 7205BDB)"
+        )
+    args = case.pair_arguments(b.balls)
+    del args["preload"]
+    try:
+        result = life_against_preload(b, case.radial_load, case.axial_load or 0.0,
+                                      preloads=preloads, **args)  # fmt: skip
+    except InputError as exc:
+        if exc.parameter != "preload":
+            raise
+        message = str(exc).split(": ", 1)[-1]
+        raise click.UsageError(f"Invalid value for '--preloads': {message}") from exc
+    text = preload_life_report(result, fmt)
+    print_warnings(list(result.warnings), False)
+    emit(text, output)
+
+
 def _service(case: CaseOptions, t: Any) -> list[Any] | None:
     """The lives of every row of a life-against-clearance table (the heaviest ball at the free
     contact angle alpha_0 of the row for the film)."""
     from bearingload.bearings.service_life import LifeBasis
     from bearingload.cli.case_options import SERVICE_PARAMS
-    from bearingload.cli.solve import life_geometry, service_lives
+    from bearingload.cli.solve import service_lives
+    from bearingload.studies.life_basis import life_geometry
 
     bases = [
         LifeBasis(

@@ -91,9 +91,10 @@ def angular_list(fmt: str, bore: float | None = None) -> str:
         notes=[
             f"{len(rows)} bearings; f_i = 0.52, f_o = 0.53 assumed (not printed by the source). "
             "Sources: bearingload catalog show DESIGNATION (where NSK and Koyo both have a row, "
-            "NSK's is used unless --maker KOYO). The 25° types (AC, A5) and GOST 36xxx, 46xxx, "
-            "66xxx are read but have no row yet: give the ring by hand with solve "
-            "--contact-angle (docs/angular_contact.md)."
+            "NSK's is used unless --maker KOYO). GOST 36xxx (12°), 46xxx (26°), 66xxx (36°): "
+            "EPK's rows where a ball set fits the printed ratings. The 25° types (AC, A5) are "
+            "read but have no row yet: give the ring by hand with solve --contact-angle "
+            "(docs/angular_contact.md)."
         ],
     )
     return render([table], fmt)

@@ -62,8 +62,9 @@ SPEED_NOTE = (
     "Speed: --quasi-static: the pair is solved by the static model (the ball dynamics left "
     "out); the speed enters the lives only (hours, nu_1, the film)."
 )
-#: The end of the JSON's ``model`` of a pair at --speed with --quasi-static.
-STATIC_AT_SPEED = "; the static model at the speed given (--quasi-static)"
+#: The end of the JSON's ``model`` of a pair solved by the static model at a speed (solve
+#: --quasi-static; sweep).
+STATIC_AT_SPEED = "; the static model at the speed given (the ball dynamics left out)"
 #: The note of a pair with the ball dynamics at --speed (the model's name filled in).
 DYNAMICS_NOTE = (
     "Speed: {} in both bearings (Jones 1960; Harris & Kotzalas; docs/speed.md): each ball has "
@@ -110,6 +111,20 @@ def pair_record(c: PairCase) -> dict[str, Any]:
     }  # fmt: skip
 
 
+def pair_records(
+    c: PairCase, service: Sequence[Any] | None = None
+) -> tuple[dict[str, Any], list[dict[str, Any]]]:
+    """The pair's values (with its service values) and each bearing's record, as every format
+    of :func:`pair_report` and ``batch`` show them; ``service``: each bearing's service values
+    (:class:`bearingload.bearings.service_life.ServiceLife`)."""
+    pair = pair_record(c) | pair_service_values(c, service)
+    records = with_service([combined_values(b) for b in c.bearings], service)
+    for k in range(2):
+        if c.result.unloaded[k]:  # no loaded ball: no largest angle of one
+            records[k]["contact_angle_max"] = None
+    return pair, records
+
+
 def pair_report(
     c: PairCase, fmt: str, *, per_ball: bool = False, show_geometry: bool = False,
     service: Sequence[Any] | None = None,
@@ -118,11 +133,7 @@ def pair_report(
     bearing's service values (:class:`bearingload.bearings.service_life.ServiceLife`), merged
     into its record as a single bearing's, and the pair's from them (its lives in hours, its
     modified lives: :func:`bearingload.studies.bearing_pair.pair_service_values`)."""
-    pair = pair_record(c) | pair_service_values(c, service)
-    records = with_service([combined_values(b) for b in c.bearings], service)
-    for k in range(2):
-        if c.result.unloaded[k]:  # no loaded ball: no largest angle of one
-            records[k]["contact_angle_max"] = None
+    pair, records = pair_records(c, service)
     if fmt == "json":
         return render([], "json", document=_document(c, pair, records, service))
     if fmt == "csv":
@@ -199,26 +210,54 @@ def _document(
 
 def _csv_table(c: PairCase, pair: dict[str, Any], records: list[dict[str, Any]],
                per_ball: bool) -> Table:  # fmt: skip
-    from bearingload.reports.combined import (
-        ANSWER_KEYS,
-        CONTACT_KEYS,
-        INPUT_KEYS,
-        PER_BALL_KEYS,
-        contact_values,
-    )
+    from bearingload.reports.combined import PER_BALL_KEYS
 
-    inputs = [k for k in PAIR_INPUTS if k not in ("load", "axial_load", "moment", "moment_cross")]
-    applied = [f"pair_{k}" for k in ("load", "axial_load", "moment", "moment_cross")]
-    answers = [f"pair_{k}" for k in PAIR_ANSWERS + tuple(k for k in PAIR_SERVICE if k in pair)]
-    own = [k for k in dict.fromkeys(INPUT_KEYS + ANSWER_KEYS)
-           if k not in inputs and any(k in r for r in records)]  # fmt: skip
-    cols = [column(k) for k in inputs]
-    cols += [_pair_column(k) for k in applied + answers] + [column("bearing_number")]
-    cols += [column(k) for k in own]
+    service = tuple(k for k in PAIR_SERVICE if k in pair)
+    cols = csv_columns(service, [k for k in OWN_KEYS if any(k in r for r in records)])
+    if per_ball:
+        cols += [column(k) for k in PER_BALL_KEYS]
+    rows = csv_rows(c, pair, records, [col.key for col in cols], per_ball)
+    return Table("pair", cols, rows)
+
+
+#: The csv columns of the pair's inputs (every row).
+CSV_INPUTS = tuple(k for k in PAIR_INPUTS
+                   if k not in ("load", "axial_load", "moment", "moment_cross"))  # fmt: skip
+#: The csv columns of the loads applied to the shaft.
+CSV_APPLIED = tuple(f"pair_{k}" for k in ("load", "axial_load", "moment", "moment_cross"))
+
+
+def _own_keys() -> tuple[str, ...]:
+    from bearingload.reports.combined import ANSWER_KEYS, INPUT_KEYS
+
+    return tuple(k for k in dict.fromkeys(INPUT_KEYS + ANSWER_KEYS) if k not in CSV_INPUTS)
+
+
+#: A bearing's own csv columns (those of a single bearing's case but the pair's inputs), in
+#: order; a table writes those its records have.
+OWN_KEYS = _own_keys()
+
+
+def csv_columns(service: Sequence[str], own: Sequence[str]) -> list[Column]:
+    """The csv columns of a pair: its inputs, the loads on the shaft, its answers and the
+    ``service`` values of :data:`PAIR_SERVICE` as ``pair_...``, ``bearing_number``, then each
+    bearing's ``own`` keys (a single bearing's). ``batch`` writes these for a file of pairs."""
+    answers = [f"pair_{k}" for k in (*PAIR_ANSWERS, *service)]
+    cols = [column(k) for k in CSV_INPUTS]
+    cols += [_pair_column(k) for k in (*CSV_APPLIED, *answers)] + [column("bearing_number")]
+    return cols + [column(k) for k in own]
+
+
+def csv_rows(c: PairCase, pair: dict[str, Any], records: list[dict[str, Any]],
+             keys: Sequence[str], per_ball: bool = False) -> list[dict[str, Any]]:  # fmt: skip
+    """The csv rows of a pair under ``keys`` (:func:`csv_columns`, with the per-ball keys when
+    ``per_ball``): one per bearing (``per_ball``: per ball of each bearing), '' where none."""
+    from bearingload.reports.combined import CONTACT_KEYS, contact_values
+
     rows = []
     for n, (b, rec) in enumerate(zip(c.bearings, records, strict=True), start=1):
-        base = {k: pair.get(k) for k in inputs} | {k: pair.get(k[5:]) for k in applied + answers}
-        base |= {"bearing_number": n} | {k: rec.get(k) for k in own}
+        base = {k: pair.get(k[5:]) if k.startswith("pair_") else rec.get(k) for k in keys}
+        base |= {k: pair.get(k) for k in CSV_INPUTS} | {"bearing_number": n}
         if not per_ball:
             rows.append(base)
             continue
@@ -230,11 +269,7 @@ def _csv_table(c: PairCase, pair: dict[str, Any], records: list[dict[str, Any]],
                                 "ball_approaches": float(res.ball_approaches[j]),
                                 "ball_loads": float(res.ball_loads[j])}
                         | {k: float(found[k][j]) for k in CONTACT_KEYS})  # fmt: skip
-    if per_ball:
-        cols += [column(k) for k in PER_BALL_KEYS]
-    keys = [col.key for col in cols]
-    blank = [{k: "" if r.get(k) is None else r[k] for k in keys} for r in rows]
-    return Table("pair", cols, blank)
+    return [{k: "" if r.get(k) is None else r[k] for k in keys} for r in rows]
 
 
 def _pair_column(key: str) -> Column:

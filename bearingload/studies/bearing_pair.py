@@ -6,6 +6,7 @@ combined_bearing`) and the pair's lives combined (:func:`bearingload.models.pair
 
 from __future__ import annotations
 
+import dataclasses
 import math
 from collections.abc import Sequence
 from dataclasses import dataclass
@@ -87,9 +88,101 @@ def solve_bearing_pair(
         (:mod:`bearingload.models.pair_speed`); None: the static model. Ball density
         [kg/mm^3], default bearing steel.
     """
+    return solve_bearing_pairs(
+        b, load, axial_load, arrangement=arrangement, preload=preload, width=width,
+        cage_angle=cage_angle, moment=moment, moment_cross=moment_cross,
+        tilt_radius=tilt_radius, rotating=rotating, dynamic_rating=dynamic_rating,
+        speed=speed, ball_density=ball_density,
+    )[0]  # fmt: skip
+
+
+def solve_bearing_pairs(
+    b: ResolvedBearing,
+    load: Any,
+    axial_load: Any = 0.0,
+    *,
+    arrangement: str,
+    preload: Any = 0.0,
+    width: float | None = None,
+    cage_angle: Any = 0.0,
+    moment: Any = None,
+    moment_cross: Any = None,
+    tilt_radius: Any = None,
+    rotating: str = "inner",
+    dynamic_rating: float | None = None,
+    speed: Any = None,
+    ball_density: Any = None,
+) -> list[PairCase]:
+    """:func:`solve_bearing_pair` of several cases of one bearing ``b``, arrangement and width:
+    the loads, preloads, moments and cage angles as arrays (broadcast), solved by one call of
+    :func:`bearingload.models.pair.solve_pair` (each case on its own: a case alone gives the
+    same bits), then each case's lives and checks. ``moment`` None: no moment given (the shaft
+    free to tilt, no tilt warned of), as for one case. ``speed`` (not None): the ball dynamics
+    (:func:`bearingload.models.pair_speed.solve_pair_high_speed`). One :class:`PairCase` per
+    case, flat."""
     from bearingload.bearings.tilt import tilt_lever
     from bearingload.models.pair import solve_pair
 
+    _check_pair_bearing(b)
+    lever = tilt_lever(tilt_radius, b.pitch_diameter)
+    common: dict[str, Any] = dict(
+        arrangement=arrangement, preload=preload,
+        contact_angle=b.contact_angle, ball_diameter=b.ball_diameter,
+        pitch_diameter=b.pitch_diameter, width=bearing_width(b, width), f_i=b.f_i, f_o=b.f_o,
+        cage_angle=cage_angle, moment=0.0 if moment is None else moment,
+        moment_cross=0.0 if moment_cross is None else moment_cross,
+        modulus=b.modulus, poisson=b.poisson, tilt_radius=lever,
+    )  # fmt: skip
+    if speed is not None:  # the ball dynamics
+        r: PairDistribution = _pair_at_speed(b, load, axial_load, speed, ball_density, rotating,
+                                             common)  # fmt: skip
+    else:
+        r = solve_pair(b.balls, load, axial_load, **common,
+                       stiffness=b.stiffness if b.stiffness_given else None)  # fmt: skip
+    n = int(np.size(r.x))
+    cross = np.broadcast_to(np.asarray(r.moment_cross, dtype=float), np.shape(r.x)).reshape(-1)
+    tilted = [moment is not None or bool(x) for x in cross]  # else free to tilt: no warning
+    if np.ndim(r.x) == 0 or len(set(tilted)) > 1:  # one case, or each case on its own
+        ones = [r if np.ndim(r.x) == 0 else _case_at(r, i, n) for i in range(n)]
+        return [_pair_case(b, one, _singles(b, one, lever, rotating, dynamic_rating, t), rotating)
+                for one, t in zip(ones, tilted, strict=True)]  # fmt: skip
+    every = _singles(b, r, lever, rotating, dynamic_rating, tilted[0])  # on the arrays, once
+    return [
+        _pair_case(b, _case_at(r, i, n), [_single_at(c, i, n) for c in every], rotating)
+        for i in range(n)
+    ]
+
+
+def _singles(b: ResolvedBearing, r: PairDistribution, lever: Any, rotating: str,
+             dynamic_rating: Any, tilted: bool) -> list[CombinedCase]:  # fmt: skip
+    """Each bearing of the case(s) ``r`` as a single combined case (its lives, pressures, P0,
+    s0, checks; arrays over the cases); ``tilted``: a moment is given, and each bearing's tilt
+    is weighed as one bearing's under a moment (else the shaft is free to tilt, as one bearing's
+    ring under no moment, and no tilt is warned of)."""
+    from bearingload.studies.combined_bearing import _combined_case
+
+    return [_combined_case(b, rk, rk.load, rk.axial_load, rk.moment if tilted else None, None,
+                           None, lever, rotating, dynamic_rating) for rk in r.bearings]  # fmt: skip
+
+
+def _single_at(c: CombinedCase, i: int, n: int) -> CombinedCase:
+    """Case ``i`` of the ``n`` cases of ``c``, as :func:`_singles` of that case alone gives it."""
+
+    def at(v: Any) -> Any:
+        return v if v is None else v[i] if isinstance(v, list) else float(np.reshape(v, -1)[i])
+
+    life = at(c.rating_life)
+    return dataclasses.replace(
+        c, result=_case_at(c.result, i, n), equivalent_load=at(c.equivalent_load),
+        rating_life=None if life is None or np.isnan(life) else life,
+        reference_rating_life=at(c.reference_rating_life), warnings=c.warnings[i],
+        p_max_inner=at(c.p_max_inner), p_max_outer=at(c.p_max_outer),
+        static_equivalent_load=at(c.static_equivalent_load), static_safety=at(c.static_safety),
+    )  # fmt: skip
+
+
+def _check_pair_bearing(b: ResolvedBearing) -> None:
+    """Refuse a bearing that cannot be one of a pair."""
     if b.kind == "ball" and b.contact_angle is not None and not b.has_geometry:  # z and K only
         raise InputError(
             "ball_diameter",
@@ -102,27 +195,28 @@ def solve_bearing_pair(
             "a bearing pair is two angular-contact ball bearings: give an angular-contact "
             "designation (7205B) or a ring by hand with its contact angle",
         )
-    lever = tilt_lever(tilt_radius, b.pitch_diameter)
-    common: dict[str, Any] = dict(
-        arrangement=arrangement, preload=preload,
-        contact_angle=b.contact_angle, ball_diameter=b.ball_diameter,
-        pitch_diameter=b.pitch_diameter, width=bearing_width(b, width), f_i=b.f_i, f_o=b.f_o,
-        cage_angle=cage_angle, moment=moment or 0.0, moment_cross=moment_cross or 0.0,
-        modulus=b.modulus, poisson=b.poisson, tilt_radius=lever,
-    )  # fmt: skip
-    if speed is not None:  # the ball dynamics
-        r: PairDistribution = _pair_at_speed(b, load, axial_load, speed, ball_density, rotating,
-                                             common)  # fmt: skip
-    else:
-        r = solve_pair(b.balls, load, axial_load, **common,
-                       stiffness=b.stiffness if b.stiffness_given else None)  # fmt: skip
-    tilted = moment is not None or bool(moment_cross)  # else free to tilt: no tilt warning
-    return _pair_case(b, r, lever, rotating, dynamic_rating, tilted)
+
+
+def _case_at(r: Any, i: int, n: int) -> Any:
+    """Case ``i`` of the ``n`` flat cases of a solution (a pair's or a bearing's dataclass), as
+    a call of that case alone returns it: its case quantities Python numbers, its ball arrays
+    (z,), its matrices (5, 5)."""
+    from bearingload import numerics
+
+    out = {}
+    for f in dataclasses.fields(r):
+        v = getattr(r, f.name)
+        if isinstance(v, tuple):
+            v = tuple(_case_at(x, i, n) for x in v)
+        elif isinstance(v, np.ndarray) and v.ndim >= 1 and v.shape[0] == n:
+            v = numerics.scalar_out(v[i]) if v.ndim == 1 else v[i]
+        out[f.name] = v
+    return dataclasses.replace(r, **out)
 
 
 def _pair_at_speed(
-    b: ResolvedBearing, load: float, axial_load: float, speed: float, density: float | None,
-    rotating: str, common: dict[str, Any],
+    b: ResolvedBearing, load: Any, axial_load: Any, speed: Any, density: Any, rotating: str,
+    common: dict[str, Any],
 ) -> PairDistribution:  # fmt: skip
     """solve_bearing_pair with the ball dynamics (:func:`bearingload.models.pair_speed.
     solve_pair_high_speed`): the inner rings turning, each contact's Hertz stiffness."""
@@ -143,22 +237,15 @@ def _pair_at_speed(
 
 
 def _pair_case(
-    b: ResolvedBearing, r: PairDistribution, lever: Any, rotating: str, dynamic_rating: Any,
-    tilted: bool,
-) -> PairCase:  # fmt: skip
-    """Each bearing's lives and checks, the pair's lives and findings; ``tilted``: a moment is
-    given, and each bearing's tilt is weighed as one bearing's under a moment (else the shaft
-    is free to tilt, as one bearing's ring under no moment, and no tilt is warned of)."""
+    b: ResolvedBearing, r: PairDistribution, singles: list[CombinedCase], rotating: str
+) -> PairCase:
+    """The pair's case of its solution ``r`` (one case) and each bearing's single case
+    (:func:`_singles`): an unloaded bearing without lives, the pair's lives and findings."""
     from bearingload.models.pair import pair_life
-    from bearingload.studies.combined_bearing import _combined_case
 
     cases = []
-    for k, rk in enumerate(r.bearings):
-        c = _combined_case(b, rk, rk.load, rk.axial_load, rk.moment if tilted else None, None,
-                           None, lever, rotating, dynamic_rating)  # fmt: skip
+    for k, c in enumerate(singles):
         if r.unloaded[k]:  # no ball loaded: no life, no equivalent load
-            import dataclasses
-
             c = dataclasses.replace(c, reference_rating_life=None, rating_life=None,
                                     equivalent_load=None)  # fmt: skip
         cases.append(c)

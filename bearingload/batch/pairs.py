@@ -1,0 +1,179 @@
+"""The rows of a file of bearing pairs (a column ``arrangement``, ``preload`` or ``width``: the
+options of ``solve 7205BDB --preload 500N`` ...).
+
+Each row is a pair of two identical angular-contact ball bearings (docs/angular_contact.md): its
+``bearing`` names one bearing (``7205B`` with an ``arrangement`` cell) or the pair
+(``7205BDB``, the arrangement cell blank or the same), or its ``contact_angle`` and ball set
+give the ring by hand. Rows of one bearing, arrangement, width, rotating ring, C_r and lever
+of the tilt, with or without a moment, are one call of
+:func:`bearingload.models.pair.solve_pair` on arrays (their loads, preloads, moments and cage
+angles), through :func:`bearingload.studies.bearing_pair.solve_bearing_pairs`, each case solved
+on its own; each row then writes solve's csv rows of the pair (one per bearing, ``bearing_number``
+1 and 2; :func:`bearingload.reports.pair.csv_rows`). A failing call is split in halves until the
+failing row stands alone, named; the others are written.
+"""
+
+from __future__ import annotations
+
+from typing import Any
+
+import numpy as np
+
+from bearingload.batch.read import Header, row_message
+from bearingload.batch.solve import (
+    BatchSolver,
+    Chunk,
+    _angles,
+    _check_rotating,
+    _hand_angular,
+    _take,
+)
+from bearingload.errors import BearingloadError, InputError
+
+#: Rows times balls solved per pair call (about as many contacts as a combined call).
+CALL_BALLS = 2**14
+
+
+class PairSolver(BatchSolver):
+    """Solve the blocks of a file of pairs: read as every file is, each row a pair, two output
+    rows per pair."""
+
+    def _solved(self, cols: dict[str, list[Any]], numbers: list[int], errors: dict[int, str],
+                bad: dict[int, str]) -> Chunk:  # fmt: skip
+        solved = solve_pairs(self, cols, len(numbers), bad)
+        out = Chunk()
+        out.rows, out.values = pair_values(pair_columns(self.header), solved, numbers)
+        errors |= {numbers[i]: message for i, message in bad.items()}
+        out.errors = sorted(errors.items())
+        return out
+
+
+def pair_columns(header: Header) -> list[Any]:
+    """The output columns of a file of pairs: ``row``, then those ``solve 7205BDB --format
+    csv`` writes (``moment_cross`` where the file has that column)."""
+    from bearingload.reports.pair import OWN_KEYS, csv_columns
+    from bearingload.reports.quantities import SERVICE_KEYS
+    from bearingload.reports.solve import column
+
+    unused = {*SERVICE_KEYS, "ball_density", "rating_life_hours", "reference_rating_life_hours"}
+    if "moment_cross" not in header.names:
+        unused.add("moment_cross")
+    return [column("row"), *csv_columns((), [k for k in OWN_KEYS if k not in unused])]
+
+
+def pair_key(solver: Any, v: dict[str, Any]) -> tuple[Any, ...]:
+    """The group of a row of cells ``v`` (blank cells left out): (resolved bearing,
+    arrangement, width, rotating ring, C_r, a moment given, the tilt radius), checked as solve
+    checks a pair's options."""
+    from bearingload.bearings.angular import split_pair
+
+    arrangement = v.get("arrangement")
+    if arrangement is not None:
+        arrangement = arrangement.strip().upper()
+        if arrangement not in ("DB", "DF", "DT"):
+            raise InputError("arrangement", f"{v['arrangement']!r}: give DB (back-to-back), DF "
+                             "(face-to-face) or DT (tandem)")  # fmt: skip
+    if "bearing" in v:
+        single, kind = split_pair(v["bearing"])
+        if kind is not None and arrangement not in (None, kind):
+            raise InputError("arrangement", f"{arrangement} contradicts the designation "
+                             f"{v['bearing'].strip()!r} (a {kind} pair)")  # fmt: skip
+        arrangement = arrangement or kind
+        v = v | {"bearing": single}
+    if arrangement is None:
+        raise InputError("arrangement", "missing: a file of pairs gives each row's arrangement "
+                         "(DB, DF or DT) or a designation with it (7205BDB)")  # fmt: skip
+    if not any(k in v for k in ("bearing", "ball_diameter", "pitch_diameter")):
+        raise InputError("bearing", "missing: a pair needs a bearing or its ball geometry")
+    b = solver._bearing(v)
+    if "contact_angle" in v:
+        b = _hand_angular(v, b)
+    if b.kind != "ball" or b.contact_angle is None:
+        raise InputError("arrangement", f"a pair {arrangement} is two angular-contact ball "
+                         "bearings: give an angular-contact designation (7205B, 7205BDB) or a "
+                         "ring by hand with its contact_angle")  # fmt: skip
+    _check_rotating(v, b, v.get("dynamic_rating"), "exact")
+    if "load" not in v:
+        raise InputError("load", "missing: every row needs a (radial) load, 0 allowed")
+    if not v["load"] >= 0:
+        raise InputError("load", f"must be 0 N or more (got {v['load']!r} N)")
+    if not v.get("preload", 0.0) >= 0:
+        raise InputError("preload", f"must be 0 N or more (got {v['preload']!r} N)")
+    tilted = "moment" in v or bool(v.get("moment_cross"))
+    return (b, arrangement, v.get("width"), v.get("rotating", "inner"), v.get("dynamic_rating"),
+            tilted, v.get("tilt_radius"))  # fmt: skip
+
+
+def solve_pairs(solver: Any, cols: dict[str, list[Any]], n: int,
+                bad: dict[int, str]) -> list[tuple[int, Any]]:  # fmt: skip
+    """Each good row's solved pair (row index, :class:`~bearingload.studies.bearing_pair.
+    PairCase`), in input order; a row that cannot be solved goes to ``bad``."""
+    groups: dict[tuple[Any, ...], list[int]] = {}
+    for i in range(n):
+        if i in bad:
+            continue
+        try:
+            key = pair_key(solver, {k: c[i] for k, c in cols.items() if c[i] is not None})
+        except BearingloadError as exc:
+            bad[i] = row_message(exc)
+            continue
+        groups.setdefault(key, []).append(i)
+    solved: list[tuple[int, Any]] = []
+    for key, idx in groups.items():
+        size = max(1, CALL_BALLS // int(key[0].balls))
+        for start in range(0, len(idx), size):
+            solved += _split(key, idx[start : start + size], cols, bad)
+    return sorted(solved, key=lambda s: s[0])
+
+
+def _split(key: tuple[Any, ...], idx: list[int], cols: dict[str, list[Any]],
+           bad: dict[int, str]) -> list[tuple[int, Any]]:  # fmt: skip
+    """The rows ``idx`` of one group in one call; if that fails, each half on its own."""
+    try:
+        with np.errstate(all="ignore"):
+            return list(zip(idx, _call(key, idx, cols), strict=True))
+    except (BearingloadError, ValueError, ArithmeticError) as exc:
+        if len(idx) == 1:
+            bad[idx[0]] = row_message(exc)
+            return []
+    half = len(idx) // 2
+    return _split(key, idx[:half], cols, bad) + _split(key, idx[half:], cols, bad)
+
+
+def _call(key: tuple[Any, ...], idx: list[int], cols: dict[str, list[Any]]) -> list[Any]:
+    """One vectorised pair solve of the rows ``idx`` of the group ``key``."""
+    from bearingload.studies.bearing_pair import solve_bearing_pairs
+
+    b, arrangement, width, rotating, c_r, tilted, lever = key
+    moment = np.array(_take(cols, "moment", idx, 0.0), dtype=float)
+    return solve_bearing_pairs(
+        b, np.array(_take(cols, "load", idx), dtype=float),
+        np.array(_take(cols, "axial_load", idx, 0.0), dtype=float), arrangement=arrangement,
+        preload=np.array(_take(cols, "preload", idx, 0.0), dtype=float), width=width,
+        cage_angle=_angles(_take(cols, "cage_angle", idx, 0.0), b.balls),
+        moment=moment if tilted else None,
+        moment_cross=np.array(_take(cols, "moment_cross", idx, 0.0), dtype=float),
+        tilt_radius=lever, rotating=rotating, dynamic_rating=c_r,
+    )  # fmt: skip
+
+
+def pair_values(columns: list[Any], solved: list[tuple[int, Any]],
+                numbers: list[int]) -> tuple[list[int], dict[str, list[Any]]]:  # fmt: skip
+    """The output rows of the solved pairs (two per pair: its row number twice) and each
+    column's values over them (None: blank); ``warnings`` on the first row of each pair."""
+    from bearingload.bearings.service_life import Operating, service_values
+    from bearingload.reports.pair import csv_rows, pair_records
+    from bearingload.studies.life_basis import combined_basis
+
+    keys = [c.key for c in columns if c.key != "row"]
+    rows: list[int] = []
+    values: dict[str, list[Any]] = {k: [] for k in [*keys, "warnings"]}
+    for i, pc in solved:  # C_0 of each bearing, as solve gives it without a service option
+        service = [service_values(Operating(), combined_basis(c)) for c in pc.bearings]
+        pair, records = pair_records(pc, service)
+        for j, out in enumerate(csv_rows(pc, pair, records, keys)):
+            rows.append(numbers[i])
+            for k in keys:
+                values[k].append(out[k])
+            values["warnings"].append(tuple(pc.warnings) if j == 0 else ())
+    return rows, values

@@ -1,0 +1,199 @@
+"""The turning cage in a pair of angular-contact ball bearings (DB, DF, DT): the pair's
+equilibrium over one ball pitch.
+
+The pair counterpart of :mod:`bearingload.studies.combined_sweep`: both bearings' cages turn
+together (ball 1 of each at the same cage angle, as ``solve 7205BDB --cage-angle``), and the
+``steps`` positions over one pitch ``360/z`` are solved by one vectorised call of
+:func:`bearingload.models.pair.solve_pair` per chunk
+(:func:`bearingload.studies.bearing_pair.solve_bearing_pairs`; each position's answer is the one
+``solve`` gives at that cage angle). Per position: the shaft's displacement, the pair's
+stiffness, each bearing's Q_max and loaded balls, and the pair's L10r.
+"""
+
+from __future__ import annotations
+
+from dataclasses import dataclass
+from typing import Any
+
+import numpy as np
+
+from bearingload.bearings.resolve import ResolvedBearing
+from bearingload.studies.bearing_pair import PairCase
+from bearingload.studies.sweep import DEFAULT_STEPS, Spread, cage_angles, hours_at, spread_of
+
+#: The pair's per-position quantities a pair sweep summarises (keys of reports.quantities).
+PAIR_KEYS = ("x", "y", "axial", "tilt", "tilt_cross", "stiffness_radial", "stiffness_axial",
+             "stiffness_tilt", "reference_rating_life", "reference_rating_life_hours")  # fmt: skip
+#: Each bearing's per-position quantities a pair sweep summarises.
+BEARING_KEYS = ("q_max", "loaded_balls")
+#: Cage positions times balls solved per call (as a batch of pairs). [-]
+CHUNK_BALLS = 2**14
+#: Quantities whose rounding noise is measured against the largest of their family.
+_FAMILIES = (("x", "y", "axial"), ("tilt", "tilt_cross"))
+
+
+@dataclass(frozen=True)
+class PairSweep:
+    """A bearing pair at cage positions over one ball pitch, both ends included.
+
+    Attributes
+    ----------
+    bearing : ResolvedBearing
+        One bearing of the pair (both alike).
+    cases : tuple of PairCase
+        The pair solved at every cage position, as ``solve`` solves it at that cage angle.
+    warnings : tuple of str
+        The findings of every position, each once, in order.
+    speed : float or None
+        Shaft speed n for the pair's L10r in hours, L 10^6/(60 n) (the loads are the static
+        model's); None: not given. [r/min]
+    """
+
+    bearing: ResolvedBearing
+    cases: tuple[PairCase, ...]
+    warnings: tuple[str, ...] = ()
+    speed: float | None = None
+
+    @property
+    def balls(self) -> int:
+        """Balls per bearing z. [-]"""
+        return int(self.bearing.balls)
+
+    @property
+    def cage_angle(self) -> np.ndarray:
+        """Angle of ball 1 from the load line at every position, 0 to 360/z. [°]"""
+        return np.array([float(c.bearings[0].result.cage_angle) for c in self.cases])
+
+    def values(self, key: str, bearing: int | None = None) -> np.ndarray | None:
+        """The per-position values of the pair's ``key`` (:data:`PAIR_KEYS`), or of bearing
+        ``bearing`` (1 or 2; :data:`BEARING_KEYS`); None where a position has none (L10r
+        without C_r)."""
+        if key == "reference_rating_life_hours":
+            life = self.values("reference_rating_life")
+            return None if life is None else hours_at(life, self.speed)
+        if bearing is None:
+            got = [getattr(c, key) if key == "reference_rating_life" else getattr(c.result, key)
+                   for c in self.cases]  # fmt: skip
+        else:
+            got = [getattr(c.bearings[bearing - 1].result, key) for c in self.cases]
+        if any(v is None for v in got):
+            return None
+        return np.asarray(got, dtype=float)
+
+    def spread(self, key: str, bearing: int | None = None) -> Spread | None:
+        """Min, mean, max and peak-to-peak of ``key`` over the pitch (None if not given); a
+        mean of a displacement (tilt) below 1e-12 of the largest of any axis is 0, as for one
+        bearing's sweep."""
+        v = self.values(key, bearing)
+        if v is None:
+            return None
+        family = next((f for f in _FAMILIES if key in f), (key,))
+        scale = max(float(np.max(np.abs(self.values(k, bearing)))) for k in family)  # type: ignore[arg-type]
+        return spread_of(v, scale)
+
+
+def pair_sweep(
+    bearing: ResolvedBearing,
+    load: float,
+    axial_load: float = 0.0,
+    *,
+    arrangement: str,
+    preload: float = 0.0,
+    width: float | None = None,
+    moment: float | None = None,
+    moment_cross: float | None = None,
+    tilt_radius: Any = None,
+    rotating: str = "inner",
+    dynamic_rating: float | None = None,
+    steps: Any = DEFAULT_STEPS,
+) -> PairSweep:
+    """Solve the pair of two bearings ``bearing`` at ``steps`` cage positions over one pitch.
+
+    The arguments are those of :func:`bearingload.studies.bearing_pair.solve_bearing_pair`
+    (the cage angle is what turns) and ``steps`` (2 to 1 000 000, both ends included).
+
+    >>> from bearingload.bearings.resolve import resolve_bearing
+    >>> s = pair_sweep(resolve_bearing("7205B"), 1000.0, 200.0, arrangement="DB",
+    ...                preload=300.0, steps=3)
+    >>> s.cage_angle.tolist()
+    [0.0, 15.0, 30.0]
+    """
+    from bearingload.studies.bearing_pair import solve_bearing_pairs
+
+    angles = cage_angles(int(bearing.balls), steps)
+    chunk = max(1, CHUNK_BALLS // int(bearing.balls))
+    cases: list[PairCase] = []
+    for i in range(0, angles.size, chunk):
+        part = angles[i : i + chunk]
+        cases += solve_bearing_pairs(
+            bearing, np.full(part.shape, float(load)), np.full(part.shape, float(axial_load)),
+            arrangement=arrangement, preload=preload, width=width, cage_angle=part,
+            moment=moment, moment_cross=moment_cross, tilt_radius=tilt_radius,
+            rotating=rotating, dynamic_rating=dynamic_rating,
+        )  # fmt: skip
+    found = list(dict.fromkeys(w for c in cases for w in c.warnings))
+    return PairSweep(bearing, tuple(cases), tuple(found))
+
+
+@dataclass(frozen=True)
+class LifeAgainstPreload:
+    """A bearing pair (DB or DF) at several preloads under one load: ``table life 7205BDB
+    --preloads ...``.
+
+    Attributes
+    ----------
+    bearing : ResolvedBearing
+        One bearing of the pair (both alike).
+    cases : tuple of PairCase
+        The pair solved at every preload, as ``solve 7205BDB --preload F_p`` solves it.
+    warnings : tuple of str
+        The findings of every row, each once, in order.
+    """
+
+    bearing: ResolvedBearing
+    cases: tuple[PairCase, ...]
+    warnings: tuple[str, ...] = ()
+
+    @property
+    def preloads(self) -> np.ndarray:
+        """F_p of every row. [N]"""
+        return np.array([float(c.result.preload) for c in self.cases])
+
+
+def life_against_preload(
+    bearing: ResolvedBearing,
+    load: float,
+    axial_load: float = 0.0,
+    *,
+    arrangement: str,
+    preloads: Any,
+    width: float | None = None,
+    cage_angle: float = 0.0,
+    moment: float | None = None,
+    moment_cross: float | None = None,
+    tilt_radius: Any = None,
+    rotating: str = "inner",
+    dynamic_rating: float | None = None,
+) -> LifeAgainstPreload:
+    """Solve the pair of two bearings ``bearing`` at every preload of ``preloads`` [N] (one
+    vectorised :func:`bearingload.models.pair.solve_pair` call; each row the pair ``solve``
+    gives at that preload). The other arguments are those of
+    :func:`bearingload.studies.bearing_pair.solve_bearing_pair`.
+
+    >>> from bearingload.bearings.resolve import resolve_bearing
+    >>> t = life_against_preload(resolve_bearing("7205B"), 1000.0, 200.0, arrangement="DB",
+    ...                          preloads=[0.0, 300.0])
+    >>> t.preloads.tolist()
+    [0.0, 300.0]
+    """
+    from bearingload.studies.bearing_pair import solve_bearing_pairs
+
+    fp = np.asarray(preloads, dtype=float).reshape(-1)
+    cases = solve_bearing_pairs(
+        bearing, np.full(fp.shape, float(load)), np.full(fp.shape, float(axial_load)),
+        arrangement=arrangement, preload=fp, width=width, cage_angle=cage_angle,
+        moment=moment, moment_cross=moment_cross, tilt_radius=tilt_radius, rotating=rotating,
+        dynamic_rating=dynamic_rating,
+    )  # fmt: skip
+    found = list(dict.fromkeys(w for c in cases for w in c.warnings))
+    return LifeAgainstPreload(bearing, tuple(cases), tuple(found))
