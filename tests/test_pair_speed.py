@@ -283,3 +283,27 @@ def test_cli_a_load_too_light_at_speed_names_quasi_static(capsys):
     assert code == 2 and out == "" and len(lines) == 1
     assert lines[0].startswith("Error:") and "--axial-load" in lines[0]
     assert "--quasi-static" in lines[0]
+
+
+def test_the_stiffness_matrix_at_speed_is_the_tangent_of_the_solve():
+    """The shaft's 5x5 matrix at speed (the ball equations eliminated; not symmetric): its
+    in-plane block (x, axial, tilt) inverted against central differences of the solve's
+    displacement over the applied F_r, F_a and M (1e-4 of the loads)."""
+    base = dict(speed=20000.0, preload=300.0, **B7205)
+    f0 = np.array([1000.0, 300.0, 2000.0])  # F_r, F_a [N], M [N mm]
+
+    def position(f):
+        r = solve_pair_high_speed(12, f[0], f[1], moment=f[2], **base)
+        return np.array([r.x, r.axial, np.deg2rad(r.tilt)]), r
+
+    _, r0 = position(f0)
+    plane = np.ix_([0, 2, 3], [0, 2, 3])
+    compliance = np.linalg.inv(np.asarray(r0.stiffness_matrix)[plane])
+    assert not np.allclose(r0.stiffness_matrix, np.transpose(r0.stiffness_matrix), rtol=1e-9)
+    steps = np.array([0.1, 0.1, 0.1 * float(r0.bearings[0].tilt_radius)])
+    for j in range(3):
+        e = np.zeros(3)
+        e[j] = steps[j]
+        column = (position(f0 + e)[0] - position(f0 - e)[0]) / (2 * steps[j])
+        scale = np.abs(compliance[:, j]).max()
+        assert np.max(np.abs(column - compliance[:, j])) <= 1e-5 * scale, j
