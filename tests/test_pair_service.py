@@ -1,8 +1,9 @@
 """The service lives of a bearing pair (``solve 7205BDB --speed ... --viscosity ...``): each
 bearing's values are a single bearing's from its own loads, the pair's hours are its L10 and
 L10r at the speed, its modified lives the bearings' combined by the system rule, an unloaded
-bearing dropping out; the ball dynamics stay refused. Before these were coded every service
-option but --static-rating was refused for a pair ('not coded yet')."""
+bearing dropping out. Before these were coded every service option but --static-rating was
+refused for a pair ('not coded yet'). At --speed the pair takes the ball dynamics
+(tests/test_pair_speed.py); --quasi-static the static pair."""
 
 from __future__ import annotations
 
@@ -45,15 +46,21 @@ def _system(a: float, b: float) -> float:
     return (a ** (-E) + b ** (-E)) ** (-1.0 / E)
 
 
-def test_each_bearing_has_the_service_values_of_its_single_bearing_solve(capsys):
+@pytest.mark.parametrize("static", [["--quasi-static"], []])
+def test_each_bearing_has_the_service_values_of_its_single_bearing_solve(capsys, static):
     # the loads each bearing carries (its F_r, F_a and moment, from the pair's JSON) solved as
-    # one bearing with the static model give the same ball loads, lives, a_ISO and film
-    case = _json(capsys, *PAIR, *SERVICE)["cases"][0]
+    # one bearing give the same ball loads, lives, a_ISO and film: with the static model
+    # (--quasi-static both), and with the ball dynamics (the pair's at speed, the single
+    # bearing's models.high_speed under its own loads)
+    case = _json(capsys, *PAIR, *SERVICE, *static)["cases"][0]
     for doc in case["bearings"]:
         assert doc["loaded_balls"] > 0
         single = _json(capsys, "7205B", "-F", f"{doc['load']!r}N", "-A",
                        f"{doc['axial_load']!r}N", "--moment", f"{doc['moment']!r}Nmm",
-                       "--quasi-static", *SERVICE)["cases"][0]  # fmt: skip
+                       *static, *SERVICE)["cases"][0]  # fmt: skip
+        for key in ("ball_loads_inner", "ball_loads_outer", "contact_angles_outer"):
+            assert np.allclose(doc[key], single[key], rtol=1e-7, atol=1e-9), key
+        assert doc["model"] == single["model"]
         mine = {k for k in LIFE_KEYS if doc.get(k) is not None}
         theirs = {k for k in LIFE_KEYS if single.get(k) is not None}
         assert mine == theirs and "modified_reference_rating_life_hours" in mine
@@ -99,9 +106,15 @@ def test_pair_hours_are_its_lives_at_the_speed(capsys):
         a, b = (doc[key] for doc in case["bearings"])
         assert case[key] == pytest.approx(_system(a, b), rel=1e-9)
     assert "modified_rating_life" not in case  # no viscosity, no modified life
-    assert "static model" in _json(capsys, *PAIR, "--speed", "1500")["cases"][0]["model"]
+    assert "ball dynamics" in case["model"] and "in both bearings" in case["model"]
+    static = _json(capsys, *PAIR, "--speed", "1500", "--quasi-static")["cases"][0]
+    assert static["model"].endswith(
+        "the static model at the speed given (the ball dynamics left out)"
+    )
     code, out, _ = run_entry(capsys, "solve", *PAIR, "--speed", "1500")
-    assert code == 0 and "the ball dynamics of a pair" in out and "basic rating life L10h" in out
+    assert code == 0 and "ball dynamics" in out and "basic rating life L10h" in out
+    code, out, _ = run_entry(capsys, "solve", *PAIR, "--speed", "1500", "--quasi-static")
+    assert code == 0 and "--quasi-static: the pair is solved by the static model" in out
 
 
 def test_pair_modified_lives_combine_the_bearings_by_the_system_rule(capsys):
@@ -116,8 +129,9 @@ def test_pair_modified_lives_combine_the_bearings_by_the_system_rule(capsys):
 
 
 def test_an_unloaded_bearing_drops_out_of_the_pair_lives(capsys):
+    # --quasi-static: at 3000 rpm the centrifugal forces load the lifted bearing again
     case = _json(capsys, "7205BDB", "--preload", "100N", "-F", "0", "-A", "3kN",
-                 *SERVICE)["cases"][0]  # fmt: skip
+                 *SERVICE, "--quasi-static")["cases"][0]  # fmt: skip
     loaded, lifted = case["bearings"]
     assert case["unloaded_bearings"] == "2" and lifted["loaded_balls"] == 0
     for key in ("rating_life", "reference_rating_life", "modified_rating_life",
@@ -144,8 +158,10 @@ def test_csv_carries_the_pair_service_columns(capsys):
 @pytest.mark.parametrize(
     ("args", "option"),
     [
-        (["--speed", "3000", "--ball-density", "7800"], "--ball-density"),
-        (["--speed", "3000", "--quasi-static"], "--quasi-static"),
+        (["--ball-density", "7800"], "--ball-density"),  # without --speed
+        (["--speed", "3000", "--quasi-static", "--ball-density", "7800"], "--ball-density"),
+        (["--quasi-static"], "--quasi-static"),
+        (["--speed", "3000", "--rotating", "outer"], "--rotating"),
         (["--viscosity", "20cSt"], "--viscosity"),  # nu_1 needs the speed
         (["--speed", "3000", "--contamination", "high"], "--contamination"),
     ],

@@ -106,8 +106,8 @@ def solve(
     At --speed a ball bearing is solved with each ball's centrifugal force and gyroscopic
     moment (docs/speed.md): by the combined engine, at F_a = 0 without a load option, the exact
     model only; --quasi-static: the static model (the radial engine without a load option). A
-    roller bearing keeps the static radial engine; a pair is solved by the static model at
-    any --speed (its ball dynamics are not coded), the speed giving its hours.
+    roller bearing keeps the static radial engine; a pair (7205BDB) takes them in both
+    bearings (--quasi-static: the static pair).
 
     Lives as engineers use them (docs/life.md): --speed gives every life in hours; --reliability
     a_1 (ISO 281 Table 12); --viscosity (needs --speed) nu_1, kappa, a_ISO (ISO 281, with
@@ -242,7 +242,7 @@ def _radial_at_speed(case: CaseOptions) -> tuple[CaseOptions, bool]:
     if case.speed is None or case.quasi_static or case.wants_combined:
         return case, False
     if case.arrangement is not None or case.as_pair() is not None:
-        return case, False  # a pair: the static model at any speed, which gives its hours
+        return case, False  # a pair: its own path (_pair), the ball dynamics of both bearings
     if case.by_hand or contact_exponent(case.bearing) == ROLLER_EXPONENT:
         return case, False  # --speed refused without the geometry; rollers: the radial engine
     given = case.given | {"axial_load"}
@@ -302,7 +302,6 @@ def _pair(
     """A pair of angular-contact ball bearings (--arrangement, or 7205BDB): (report, warnings)."""
     import dataclasses
 
-    from bearingload.cli.case_options import DYNAMICS_PARAMS
     from bearingload.reports.pair import pair_report
     from bearingload.reports.solve import printed_warnings
     from bearingload.studies.bearing_pair import solve_bearing_pair
@@ -317,8 +316,6 @@ def _pair(
         )
     case.refuse(("misalignment",), "a bearing pair", "the shaft's tilt follows from the "
                 "loads; give --moment")  # fmt: skip
-    case.refuse(DYNAMICS_PARAMS, "a bearing pair", "a pair is solved by the static model: "
-                "the ball dynamics at speed are coded for one bearing only")  # fmt: skip
     why = "the design contact angle fixes the geometry of an angular-contact bearing"
     case.refuse(("clearance",), "a bearing pair", why + " (no clearance)")
     b = with_ratings(resolve_bearings(case, k_given), case)[0]
@@ -335,8 +332,14 @@ def _pair(
             "angular-contact ball bearings; give an angular-contact designation (7205B, "
             "7205BDB) or a ring by hand with --contact-angle"
         )
-    pc = solve_bearing_pair(b, case.radial_load, case.axial_load or 0.0,
-                            **case.pair_arguments(b.balls))  # fmt: skip
+    dynamics = case.dynamics_arguments()  # at --speed the ball dynamics, unless --quasi-static
+    try:
+        pc = solve_bearing_pair(b, case.radial_load, case.axial_load or 0.0,
+                                **case.pair_arguments(b.balls), **dynamics)  # fmt: skip
+    except ConvergenceError as exc:
+        if dynamics["speed"] is None:
+            raise
+        raise click.ClickException(f"{exc}; --quasi-static gives the static model") from exc
     pc = with_speed_warnings([pc], case.speed)[0]  # the bearing's limiting speeds
     # each bearing's service lives as one bearing's from its own loads; the pair's from them
     service = service_lives(case, [combined_basis(c) for c in pc.bearings])

@@ -57,16 +57,33 @@ NOTES = (
     "bearing; Lundberg-Palmgren system life); L10r from the ball loads, L10 from P = X F_r + Y "
     "F_a of each bearing (ISO 281 Table 3, single row).",
 )
-#: The note of a pair at --speed.
+#: The note of a pair at --speed with --quasi-static.
 SPEED_NOTE = (
-    "Speed: a pair is solved by the static model (the ball dynamics of a pair, centrifugal "
-    "force and gyroscopic moment, are not coded); the speed enters the lives only (hours, "
-    "nu_1, the film)."
+    "Speed: --quasi-static: the pair is solved by the static model (the ball dynamics left "
+    "out); the speed enters the lives only (hours, nu_1, the film)."
 )
-#: The end of the JSON's ``model`` of a pair at --speed.
-STATIC_AT_SPEED = (
-    "; the static model at the speed given (the ball dynamics of a pair are not coded)"
+#: The end of the JSON's ``model`` of a pair solved by the static model at a speed (solve
+#: --quasi-static; sweep).
+STATIC_AT_SPEED = "; the static model at the speed given (the ball dynamics left out)"
+#: The note of a pair with the ball dynamics at --speed (the model's name filled in).
+DYNAMICS_NOTE = (
+    "Speed: {} in both bearings (Jones 1960; Harris & Kotzalas; docs/speed.md): each ball has "
+    "its own inner and outer contact angle and load (json: each bearing's "
+    "contact_angles_inner, contact_angles_outer, ball_loads_inner, ball_loads_outer); the ball "
+    "table shows the inner contacts; each bearing's L10r takes the inner loads for the inner "
+    "ring, the outer loads for the outer ring; preload and lift-off are those at rest."
 )
+
+
+def _speed_model(c: PairCase, pair: dict[str, Any]) -> tuple[str | None, str]:
+    """(the note under the table, the end of the JSON's ``model``) of a pair at --speed: the
+    ball dynamics (the result's ``model``) or the static model (--quasi-static)."""
+    dynamics = getattr(c.result, "model", None)
+    if dynamics is not None:
+        return DYNAMICS_NOTE.format(dynamics), f"; {dynamics} in both bearings"
+    return (SPEED_NOTE, STATIC_AT_SPEED) if "speed" in pair else (None, "")
+
+
 #: The note of a pair's modified lives.
 MODIFIED_NOTE = (
     "Pair modified lives: the same rule on the bearings' L_nm (L_nmr), an unloaded bearing "
@@ -130,7 +147,8 @@ def pair_report(
     rows_of = [pair, *records]
     keys = [k for k in SUMMARY_KEYS if any(r.get(k) is not None for r in rows_of)]
     columns, rows = quantity_rows(keys, heads, rows_of, ANGULAR_LABELS)
-    notes = [*NOTES, *([SPEED_NOTE] if "speed" in pair else [])]
+    speed_note = _speed_model(c, pair)[0]
+    notes = [*NOTES, *([speed_note] if speed_note else [])]
     notes += [MODIFIED_NOTE] if any(k in pair for k in PAIR_SERVICE[4:]) else []
     tables += [Table(_title(pair), columns, rows, notes + service_notes(service)), _balls_table(c)]
     return render(tables, fmt)
@@ -176,7 +194,7 @@ def _document(
     said = list(dict.fromkeys([*c.warnings, *singles["warnings"]]))
     doc = pair | {
         "model": "pair of angular-contact ball bearings on one rigid shaft (ISO/TS 16281 each)"
-        + (STATIC_AT_SPEED if "speed" in pair else ""),
+        + _speed_model(c, pair)[1],
         "stiffness_matrix": c.result.stiffness_matrix.tolist(),
         "bearings": singles["cases"],
         "warnings": said,

@@ -41,10 +41,11 @@ NOTES = (
     "--cage-angle); the pair: the shaft's displacement at the pair's centre and its stiffness "
     "(docs/angular_contact.md); L10r: the pair's, (L1^-e + L2^-e)^(-1/e), e = 10/9.",
 )
-#: The note of a pair sweep at --speed.
+#: The note of a pair sweep at --speed (as one bearing's sweep: the static model).
 HOURS_NOTE = (
-    "Speed: the pair is solved by the static model (the ball dynamics of a pair, centrifugal "
-    "force and gyroscopic moment, are not coded); the speed gives the lives in hours only."
+    "Speed: ball dynamics left out: the pair is solved by the static model (the speed gives the "
+    "lives in hours only); 'bearingload solve' gives them (centrifugal force, gyroscopic "
+    "moment; docs/speed.md)."
 )
 #: The per-position columns of the human table: (key, bearing or None, header).
 ROW_KEYS = (

@@ -65,6 +65,8 @@ def solve_bearing_pair(
     tilt_radius: Any = None,
     rotating: str = "inner",
     dynamic_rating: float | None = None,
+    speed: float | None = None,
+    ball_density: float | None = None,
 ) -> PairCase:
     """Solve the pair of two bearings ``b`` (angular contact, with its ball geometry).
 
@@ -81,11 +83,16 @@ def solve_bearing_pair(
         B of one bearing; default the catalogue's. [mm]
     cage_angle, moment, moment_cross, tilt_radius, rotating, dynamic_rating
         As :func:`bearingload.studies.combined_bearing.solve_combined_bearing`. [°, N mm, mm, N]
+    speed, ball_density : float, optional
+        Shaft speed [rpm]: every ball's centrifugal force and gyroscopic moment are included
+        (:mod:`bearingload.models.pair_speed`); None: the static model. Ball density
+        [kg/mm^3], default bearing steel.
     """
     return solve_bearing_pairs(
         b, load, axial_load, arrangement=arrangement, preload=preload, width=width,
         cage_angle=cage_angle, moment=moment, moment_cross=moment_cross,
         tilt_radius=tilt_radius, rotating=rotating, dynamic_rating=dynamic_rating,
+        speed=speed, ball_density=ball_density,
     )[0]  # fmt: skip
 
 
@@ -103,26 +110,35 @@ def solve_bearing_pairs(
     tilt_radius: Any = None,
     rotating: str = "inner",
     dynamic_rating: float | None = None,
+    speed: Any = None,
+    ball_density: Any = None,
 ) -> list[PairCase]:
     """:func:`solve_bearing_pair` of several cases of one bearing ``b``, arrangement and width:
     the loads, preloads, moments and cage angles as arrays (broadcast), solved by one call of
     :func:`bearingload.models.pair.solve_pair` (each case on its own: a case alone gives the
     same bits), then each case's lives and checks. ``moment`` None: no moment given (the shaft
-    free to tilt, no tilt warned of), as for one case. One :class:`PairCase` per case, flat."""
+    free to tilt, no tilt warned of), as for one case. ``speed`` (not None): the ball dynamics
+    (:func:`bearingload.models.pair_speed.solve_pair_high_speed`). One :class:`PairCase` per
+    case, flat."""
     from bearingload.bearings.tilt import tilt_lever
     from bearingload.models.pair import solve_pair
 
     _check_pair_bearing(b)
     lever = tilt_lever(tilt_radius, b.pitch_diameter)
-    r = solve_pair(
-        b.balls, load, axial_load, arrangement=arrangement, preload=preload,
+    common: dict[str, Any] = dict(
+        arrangement=arrangement, preload=preload,
         contact_angle=b.contact_angle, ball_diameter=b.ball_diameter,
         pitch_diameter=b.pitch_diameter, width=bearing_width(b, width), f_i=b.f_i, f_o=b.f_o,
         cage_angle=cage_angle, moment=0.0 if moment is None else moment,
         moment_cross=0.0 if moment_cross is None else moment_cross,
-        modulus=b.modulus, poisson=b.poisson,
-        stiffness=b.stiffness if b.stiffness_given else None, tilt_radius=lever,
+        modulus=b.modulus, poisson=b.poisson, tilt_radius=lever,
     )  # fmt: skip
+    if speed is not None:  # the ball dynamics
+        r: PairDistribution = _pair_at_speed(b, load, axial_load, speed, ball_density, rotating,
+                                             common)  # fmt: skip
+    else:
+        r = solve_pair(b.balls, load, axial_load, **common,
+                       stiffness=b.stiffness if b.stiffness_given else None)  # fmt: skip
     n = int(np.size(r.x))
     cross = np.broadcast_to(np.asarray(r.moment_cross, dtype=float), np.shape(r.x)).reshape(-1)
     tilted = [moment is not None or bool(x) for x in cross]  # else free to tilt: no warning
@@ -196,6 +212,28 @@ def _case_at(r: Any, i: int, n: int) -> Any:
             v = numerics.scalar_out(v[i]) if v.ndim == 1 else v[i]
         out[f.name] = v
     return dataclasses.replace(r, **out)
+
+
+def _pair_at_speed(
+    b: ResolvedBearing, load: Any, axial_load: Any, speed: Any, density: Any, rotating: str,
+    common: dict[str, Any],
+) -> PairDistribution:  # fmt: skip
+    """solve_bearing_pair with the ball dynamics (:func:`bearingload.models.pair_speed.
+    solve_pair_high_speed`): the inner rings turning, each contact's Hertz stiffness."""
+    from bearingload.models.high_speed import STEEL_DENSITY
+    from bearingload.models.pair_speed import solve_pair_high_speed
+
+    if rotating == "outer":
+        raise InputError("rotating", "the ball dynamics at a speed are coded for the inner ring "
+                         "turning (docs/speed.md); the outer ring's lives are those of the "
+                         "static model (speed None)")  # fmt: skip
+    if b.stiffness_given:
+        raise InputError("speed", "the ball dynamics need each contact's Hertz stiffness from the "
+                         "ball geometry, not a given ball stiffness: leave out the stiffness, or "
+                         "ask for the static model (speed None)")  # fmt: skip
+    density = STEEL_DENSITY if density is None else density
+    return solve_pair_high_speed(b.balls, load, axial_load, speed=speed, ball_density=density,
+                                 **common)  # fmt: skip
 
 
 def _pair_case(

@@ -1,0 +1,502 @@
+"""A pair of angular-contact ball bearings (DB, DF, DT) at speed: the rigid shaft of
+:mod:`bearingload.models.pair` with every ball of both bearings in dynamic equilibrium
+(centrifugal force and gyroscopic moment, outer-raceway control: Jones 1960; Harris & Kotzalas,
+*Rolling Bearing Analysis*, 5th ed., vol. 2 "Advanced Concepts of Bearing Technology", ch. 2-3),
+as :mod:`bearingload.models.high_speed` gives them for one bearing.
+
+Units: N, mm, kg, s (the shaft speed in rpm at the input, rad/s inside); ball density in kg/mm^3.
+
+Model:
+
+* The shaft (both inner rings) moves by ``v = (x, y, a, R_i theta, R_i theta_c)`` about the
+  pair's centre; bearing k sees its local position ``L_k v`` plus its preload offset (the maps,
+  arrangements, mirror ``sigma_k`` and preload of :mod:`bearingload.models.pair`: bearing 1 at
+  ``-B/2`` in DB and DT, at ``+B/2`` in DF; bearing 2 of DB/DF mirrored; each bearing ground to
+  carry F_p with no external load, at rest).
+* In its local frame each bearing is the one-sided angular-contact bearing of
+  :mod:`bearingload.models.high_speed`: each ball's centre from its two equations, inner and
+  outer contact angles and loads of its own, the inner ring sees the inner contacts only.
+* The pair's forces and tangent by virtual work: ``sum_k L_k^T f_k`` and ``sum_k L_k^T J_k L_k``
+  (``J_k`` the bearing's tangent with its ball equations eliminated; not symmetric at speed).
+
+Numerics: Newton on the shaft's five unknowns from the static pair's answer (the balls solved by
+:func:`bearingload.models.high_speed._evaluate` at each bearing's local position), the step
+halved, then Levenberg-Marquardt steps, none longer than A/10 nor to a position where no ball
+of the pair touches an inner ring; a case left unbalanced is solved again by continuation in
+omega^2 from the static answer. The components held by a symmetry of the case are those of the
+static pair. A case stops when every applied component is balanced to ``TOLERANCE`` of the
+largest of the applied loads and the preload; it is accepted at ``ACCEPT`` of it or within the
+rounding level of the ball forces on the shaft (each bearing's :func:`bearingload.models.
+high_speed._rounding`, carried through the maps) or, up to ``NOISE_MAX`` of that load, within
+the change of the shaft forces over the balls' own residuals, as the single bearing accepts;
+otherwise
+:class:`~bearingload.errors.ConvergenceError` names its inputs. At speed 0 the answer is the
+static pair's (its position, no step taken where it is balanced).
+"""
+
+from __future__ import annotations
+
+import dataclasses
+import math
+from dataclasses import dataclass
+from typing import Any
+
+import numpy as np
+
+from bearingload.constants import STEEL_MODULUS
+from bearingload.errors import ConvergenceError, InputError
+from bearingload.models import combined as _comb
+from bearingload.models import high_speed as _hs
+from bearingload.models._ball_dynamics import _Set
+from bearingload.models.pair import PairDistribution, solve_pair
+
+__all__ = ["PairHighSpeedDistribution", "solve_pair_high_speed", "MODEL"]
+
+#: The model, as the outputs name it.
+MODEL = _hs.MODEL
+#: Relative residual of the shaft equilibrium (of the largest applied load or the preload). [-]
+TOLERANCE = 1e-12
+#: Largest shaft residual accepted at the end (or the rounding level, when larger). [-]
+ACCEPT = 1e-9
+#: Shaft Newton steps; trial steps of each (halvings, then Levenberg-Marquardt). [-]
+ITERATIONS = 200
+LM_TRIALS = 12
+HALVINGS = 6
+#: Stages of the continuation in omega^2. [-]
+CONTINUATION_STAGES = 200
+
+_UNITS = {"radial_load": "N", "axial_load": "N", "moment": "N mm", "moment_cross": "N mm",
+          "preload": "N", "contact_angle": "°", "width": "mm", "cage_angle": "°",
+          "speed": "rpm"}  # fmt: skip
+
+
+@dataclass(frozen=True)
+class PairHighSpeedDistribution(PairDistribution):
+    """The pair's answer at speed: the fields of :class:`~bearingload.models.pair.
+    PairDistribution`, each of ``bearings`` a :class:`~bearingload.models.high_speed.
+    HighSpeedDistribution` in its own frame (``contact_angles_inner``/``_outer`` [°],
+    ``ball_loads_inner``/``_outer`` [N], each ball's F_c, M_g and speeds), and:
+
+    Attributes
+    ----------
+    speed : ndarray
+        Shaft (inner rings) speed n. [rpm]
+    ball_density : ndarray
+        [kg/mm^3]
+    model : str
+        :data:`MODEL`.
+
+    ``stiffness_matrix`` is the tangent of the shaft forces with the ball equations eliminated
+    (not symmetric at speed; at speed 0 the static pair's, its symmetric part); ``lift_off_axial_load`` and ``preload_offset`` are the pair's at
+    rest (the preload is ground in at rest). ``residual`` is the shaft's over the largest of the
+    applied loads and the preload.
+    """
+
+    speed: Any = None
+    ball_density: Any = None
+    model: str = MODEL
+
+
+@dataclass
+class _Shaft:
+    """The pair problem of n cases in physical units (tilts as R_i theta [mm])."""
+
+    rings: tuple[_hs._Ring, _hs._Ring]  # one per bearing, in its local frame (their f unused)
+    maps: np.ndarray  # (n, 2, 5, 5): local position per shaft position
+    offset: np.ndarray  # (n, 2, 5): local position at v = 0 (the preloaded groove centres)
+    f: np.ndarray  # (n, 5) applied [N]
+    f_ref: np.ndarray  # (n,) [N]
+    held: np.ndarray  # (n, 5) bool
+
+    def take(self, idx: np.ndarray) -> _Shaft:
+        if np.array_equal(idx, np.arange(self.f.shape[0])):
+            return self
+        rings = (self.rings[0].take(idx), self.rings[1].take(idx))
+        return _Shaft(rings, self.maps[idx], self.offset[idx], self.f[idx], self.f_ref[idx],
+                      self.held[idx])  # fmt: skip
+
+    def at_speed(self, fraction: float) -> _Shaft:
+        """The same shaft at omega times sqrt(fraction) (the speed terms times fraction)."""
+        rings = tuple(
+            dataclasses.replace(r, b=dataclasses.replace(r.b, omega=r.b.omega * fraction**0.5))
+            for r in self.rings
+        )
+        return dataclasses.replace(self, rings=(rings[0], rings[1]))
+
+
+@dataclass
+class _State:
+    """Both bearings' balls (high_speed's states, local) and the shaft's forces at v."""
+
+    parts: list[_hs._State]
+    gen: np.ndarray  # (n, 5) [N]
+    jac: np.ndarray  # (n, 5, 5)
+    merit: np.ndarray  # (n,) largest free residual over f_ref (inf: a ball unsolved)
+    score: np.ndarray  # (n,) the residual over f_ref or, where larger, its rounding (or the
+    # balls' residuals on it) over ACCEPT (:func:`_rescore`; before it: the residual over f_ref)
+    level: np.ndarray  # (n,) the largest rounding level over f_ref (:func:`_rescore`)
+
+    @property
+    def accepted(self) -> np.ndarray:
+        return self.score <= ACCEPT
+
+    def take(self, idx: np.ndarray) -> _State:
+        return _State([_hs._take_state(p, idx) for p in self.parts], self.gen[idx],
+                      self.jac[idx], self.merit[idx], self.score[idx], self.level[idx])  # fmt: skip
+
+    def put(self, rows: np.ndarray, new: _State) -> None:
+        for mine, theirs in zip(self.parts, new.parts, strict=True):
+            _hs._put_state(mine, rows, theirs)
+        for name in ("gen", "jac", "merit", "score", "level"):
+            getattr(self, name)[rows] = getattr(new, name)
+
+    def balls(self) -> tuple[np.ndarray, ...]:
+        """(do, ao, sens) of both bearings, stacked on axis 1."""
+        return tuple(np.stack([getattr(p, k) for p in self.parts], 1) for k in ("do", "ao", "sens"))
+
+
+def _local(sh: _Shaft, k: int, v: np.ndarray) -> np.ndarray:
+    """Bearing k's local position ``L_k v`` + its offset (n, 5). [mm]"""
+    return (sh.maps[:, k] @ v[:, :, None])[:, :, 0] + sh.offset[:, k]
+
+
+def _evaluate(sh: _Shaft, v: np.ndarray, balls: tuple[Any, ...]) -> _State:
+    """Both bearings' balls at the shaft position v (from ``balls`` = (do, ao, sens) (n, 2, z)
+    each, sens None: fresh), the shaft's forces, tangent and residual."""
+    do, ao, sens = balls
+    parts = []
+    gen = np.zeros_like(v)
+    jac = np.zeros(v.shape + (5,))
+    for k in range(2):
+        m = sh.maps[:, k]
+        p = _hs._evaluate(sh.rings[k], _local(sh, k, v), do[:, k], ao[:, k],
+                          None if sens is None else sens[:, k])  # fmt: skip
+        parts.append(p)
+        mt = m.transpose(0, 2, 1)
+        gen += (mt @ p.gen[:, :, None])[:, :, 0]
+        jac += mt @ p.jac @ m
+    ok = parts[0].balls_ok & parts[1].balls_ok
+    res = np.where(sh.held, 0.0, sh.f - gen)
+    merit = np.where(ok, np.abs(res).max(axis=1) / sh.f_ref, np.inf)
+    merit = np.where(np.isfinite(merit), merit, np.inf)
+    # scored against ACCEPT alone here; the rounding level is weighed by _rescore
+    return _State(parts, gen, jac, merit, merit.copy(), np.zeros_like(merit))
+
+
+def _rescore(sh: _Shaft, v: np.ndarray, st: _State, rows: np.ndarray) -> None:
+    """Score the cases ``rows`` as the single bearing does: each shaft component against the
+    largest of ACCEPT of the load, its rounding level (each bearing's :func:`bearingload.models.
+    high_speed._rounding`: its terms' magnitudes and the ball forces' change over one rounding
+    of the groove-centre positions) and, up to NOISE_MAX of the load, the change of the forces
+    over the balls' own residuals (``|dF/dX (dg/dX)^-1|`` times each ball's residual), each
+    bearing's carried to the shaft through ``|L_k^T|``; also their rounding level."""
+    if rows.size == 0:
+        return
+    sub, cur = sh.take(rows), st.take(rows)
+    floor = np.zeros((rows.size, 5))
+    noise = np.zeros((rows.size, 5))
+    for k in range(2):
+        r, p = sub.rings[k], cur.parts[k]
+        local = _local(sub, k, v[rows])
+        rho = r.base[:, None] + local[:, 0, None] * r.c + local[:, 1, None] * r.s
+        u = local[:, 2, None] + local[:, 3, None] * r.c + local[:, 4, None] * r.s
+        fa, fr, d, terms, _, gain = _hs._ring_forces(r.b, rho, u, p.do, p.ao, r.one_sided)
+        zero, one = np.zeros_like(r.c), np.ones_like(r.c)
+        arm_r = np.stack([r.c, r.s, zero, zero, zero], axis=1)  # (n, 5, z)
+        arm_a = np.stack([zero, zero, one, r.c, r.s], axis=1)
+        up = np.maximum(u, 0.0)
+        mine = _hs._rounding(arm_r, arm_a, fr, fa, d, np.abs(rho) + up)
+        g = gain * np.hypot(terms[0], terms[1])
+        g = np.where(np.isfinite(g), g, 0.0)
+        own = (np.abs(arm_a) * g[0][:, None, :] + np.abs(arm_r) * g[1][:, None, :]).sum(-1)
+        back = np.abs(sub.maps[:, k].transpose(0, 2, 1))
+        floor += (back @ mine[:, :, None])[:, :, 0]
+        noise += (back @ np.where(np.isfinite(own), own, 0.0)[:, :, None])[:, :, 0]
+    noise = np.minimum(noise, _hs.NOISE_MAX * sub.f_ref[:, None])
+    res = np.where(sub.held, 0.0, sub.f - cur.gen)
+    allowed = np.maximum(sub.f_ref[:, None], np.maximum(floor, noise) / ACCEPT)
+    score = (np.abs(res) / allowed).max(axis=1)
+    st.score[rows] = np.where(np.isfinite(cur.merit), score, np.inf)
+    st.level[rows] = floor.max(axis=1) / sub.f_ref
+
+
+def _touching(st: _State) -> np.ndarray:
+    """(n,) whether some ball of the pair touches an inner ring (Q_i > 0)."""
+    return np.any(st.parts[0].terms[2] > 0, axis=1) | np.any(st.parts[1].terms[2] > 0, axis=1)
+
+
+def _norm2(sh: _Shaft, st: _State) -> np.ndarray:
+    res = np.where(sh.held, 0.0, sh.f - st.gen)
+    return np.where(np.isfinite(st.merit), np.sqrt((res * res).sum(axis=1)) / sh.f_ref, np.inf)
+
+
+def _newton(sh: _Shaft, v: np.ndarray, balls: tuple[Any, ...]) -> tuple[Any, ...]:
+    """Newton on the shaft with the Levenberg-Marquardt safeguard of
+    :func:`bearingload.models.high_speed._newton`, each case on its own: (v, state, steps)."""
+    v = v.copy()
+    its = np.zeros(v.shape[0], dtype=int)
+    st = _evaluate(sh, v, balls)
+    todo = np.flatnonzero(~(st.merit <= TOLERANCE))
+    length = sh.rings[0].length
+    for _ in range(ITERATIONS):
+        if todo.size == 0:
+            break
+        sub, cur = sh.take(todo), st.take(todo)
+        jac = np.where(sub.held[:, :, None] | sub.held[:, None, :], 0.0, cur.jac)
+        jac[:, np.arange(5), np.arange(5)] += sub.held
+        res = np.where(sub.held, 0.0, sub.f - cur.gen)
+        size = _norm2(sub, cur)
+        do, ao, sens = cur.balls()
+        pending = np.arange(todo.size)
+        for k in range(LM_TRIALS):
+            lam, mu = (0.5**k, 0.0) if k < HALVINGS else (1.0, 1e-6 * 100.0 ** (k - HALVINGS))
+            step = lam * _hs._lm_step(jac[pending], res[pending], mu)
+            longest = np.abs(step).max(axis=1)
+            step *= np.minimum(1.0, 0.1 * length[todo[pending]] / np.maximum(longest, 1e-300))[
+                :, None
+            ]
+            trial = v[todo[pending]] + step
+            part = sub.take(pending)
+            got = _evaluate(part, trial, (do[pending], ao[pending], sens[pending]))
+            better = (_norm2(part, got) < (1.0 - 1e-4) * size[pending]) | (got.merit <= TOLERANCE)
+            better &= _touching(got)
+            rows = todo[pending[better]]
+            v[rows] = trial[better]
+            st.put(rows, got.take(np.flatnonzero(better)))
+            pending = pending[~better]
+            if pending.size == 0:
+                break
+        its[todo] += 1
+        stalled = np.zeros(todo.size, dtype=bool)
+        stalled[pending] = True  # no step lowered the residual: its rounding
+        todo = todo[~stalled & ~(st.merit[todo] <= TOLERANCE)]
+    return v, st, its
+
+
+def _continuation(sh: _Shaft, i: int, v: np.ndarray, st: _State, its: np.ndarray,
+                  v_static: np.ndarray) -> None:  # fmt: skip
+    """Case i again by continuation in omega^2 from the static answer (the stages of
+    :func:`bearingload.models.high_speed._continuation`: a quarter, halved on a stage not
+    accepted, doubled after one accepted; each from the last balls, the shaft extrapolated from
+    the last two stages). The answer, if any, replaces case i's in v, st, its."""
+    one = sh.take(np.array([i]))
+    z = one.rings[0].c.shape[1]
+    x = v_static[None, :].copy()
+    balls: tuple[Any, ...] = (np.full((1, 2, z), np.nan), np.full((1, 2, z), np.nan), None)
+    rate = np.zeros_like(x)
+    done, step = 0.0, 0.25
+    for _ in range(CONTINUATION_STAGES):
+        frac = min(1.0, done + step)
+        stage = one.at_speed(frac)
+        x1, st1, its1 = _newton(stage, x + rate * (frac - done), balls)
+        _rescore(stage, x1, st1, np.array([0]))
+        its[i] += its1[0]
+        if st1.accepted[0]:
+            if done > 0.0:
+                rate = (x1 - x) / (frac - done)
+            done, x, balls = frac, x1, st1.balls()
+            if done == 1.0:
+                v[i] = x1[0]
+                st.put(np.array([i]), st1)
+                return
+            step = min(2.0 * step, 1.0 - done)
+        else:
+            step *= 0.5
+            if step < 1e-6:
+                return
+
+
+def solve_pair_high_speed(
+    balls: int,
+    radial_load: Any,
+    axial_load: Any = 0.0,
+    *,
+    speed: Any,
+    ball_density: Any = _hs.STEEL_DENSITY,
+    arrangement: str = "DB",
+    preload: Any = 0.0,
+    contact_angle: Any,
+    ball_diameter: Any,
+    pitch_diameter: Any,
+    width: Any,
+    f_i: Any = 0.52,
+    f_o: Any = 0.53,
+    cage_angle: Any = 0.0,
+    moment: Any = 0.0,
+    moment_cross: Any = 0.0,
+    modulus: Any = STEEL_MODULUS,
+    poisson: Any = 0.3,
+    tilt_radius: Any = None,
+) -> PairHighSpeedDistribution:
+    """Equilibrium of the shaft in a pair of identical angular-contact ball bearings turning at
+    ``speed``, every ball with its centrifugal force and gyroscopic moment (module docstring).
+
+    Parameters as :func:`bearingload.models.pair.solve_pair` (a constant ``stiffness`` is not
+    taken: the two contacts of a ball need their own Hertz stiffness), and
+
+    speed : array_like
+        Shaft (inner rings) speed n, >= 0, n d_m <= 2e6 mm/min. [rpm]
+    ball_density : array_like, default steel 7.85e-6
+        Density of the balls. [kg/mm^3]
+
+    Raises
+    ------
+    InputError
+        As solve_pair; a speed or density outside its range; loads too small against the ball
+        forces at this speed to be balanced in doubles.
+    ConvergenceError
+        A case left unbalanced; the message names its inputs.
+
+    At speed the outer contacts carry the centrifugal force:
+
+    >>> r = solve_pair_high_speed(12, 1000.0, 300.0, speed=10000.0, preload=500.0,
+    ...                           contact_angle=40.0, ball_diameter=7.938, pitch_diameter=38.5,
+    ...                           width=15.0)
+    >>> bool((r.bearings[1].ball_loads_outer > r.bearings[1].ball_loads_inner).all())
+    True
+    """
+    n_rpm, density = _hs._check_speed(speed, ball_density, pitch_diameter)
+    wide = np.broadcast_shapes(np.shape(radial_load), n_rpm.shape, density.shape)
+    if wide != np.shape(radial_load):
+        radial_load = np.broadcast_to(np.asarray(radial_load, dtype=float), wide)
+    static = solve_pair(
+        balls, radial_load, axial_load, arrangement=arrangement, preload=preload,
+        contact_angle=contact_angle, ball_diameter=ball_diameter, pitch_diameter=pitch_diameter,
+        width=width, f_i=f_i, f_o=f_o, cage_angle=cage_angle, moment=moment,
+        moment_cross=moment_cross, modulus=modulus, poisson=poisson, tilt_radius=tilt_radius,
+    )  # fmt: skip
+    shape = np.shape(static.x)
+    given = dict(radial_load=radial_load, axial_load=axial_load, moment=moment,
+                 moment_cross=moment_cross, preload=preload, contact_angle=contact_angle,
+                 width=width, cage_angle=cage_angle, speed=n_rpm, ball_diameter=ball_diameter,
+                 pitch_diameter=pitch_diameter, f_i=f_i, f_o=f_o, modulus=modulus,
+                 poisson=poisson, ball_density=density)  # fmt: skip
+    flat = {k: np.broadcast_to(np.asarray(v, dtype=float), shape).ravel().copy()
+            for k, v in given.items()}  # fmt: skip
+    flat["cage_angle"] = np.mod(flat["cage_angle"], 360.0)
+    sh, geo, v_static = _setup(static, flat, shape)
+    with np.errstate(all="ignore"):
+        v, st, its = _solve(sh, v_static, flat)
+    return _result(static, sh, geo, flat, shape, (v, st, its))
+
+
+def _column(r: Any, name: str, shape: tuple[int, ...]) -> np.ndarray:
+    return np.broadcast_to(np.asarray(getattr(r, name), dtype=float), shape).ravel()
+
+
+def _setup(static: PairDistribution, c: dict, shape: tuple[int, ...]) -> tuple[Any, ...]:
+    """The shaft problem at the static pair's answer: (shaft, geometry, its position)."""
+    z = int(static.bearings[0].balls)
+    geo = _comb._angular_geometry(c["ball_diameter"], c["pitch_diameter"], c["f_i"], c["f_o"],
+                                  c["contact_angle"])  # fmt: skip
+    radius = _column(static.bearings[0], "tilt_radius", shape)
+    geo = dataclasses.replace(geo, R_i=radius)
+    n = radius.size
+    ki, ko = _hs._stiffness_nodes(geo, c["modulus"], c["poisson"])
+    col = [(geo.f_i - 0.5) * geo.D_w, (geo.f_o - 0.5) * geo.D_w, geo.D_w, geo.d_m,
+           c["speed"] * math.pi / 30.0, c["ball_density"] * math.pi / 6.0 * geo.D_w**3]  # fmt: skip
+    ri, ro, dw, dm, omega, mass = (a[:, None] for a in col)
+    b = _Set(ri, ro, dw, dm, omega, mass, ki, ko)
+    cos_, sin_, mirror = _comb._directions(z, c["cage_angle"])
+    fr, fa, mm, mc, fp = (c[k] for k in ("radial_load", "axial_load", "moment", "moment_cross",
+                                         "preload"))  # fmt: skip
+    f_ref = np.maximum(_comb._reference_force(fr, fa, mm, mc, radius), fp)
+    ring = _hs._Ring(b, cos_, sin_, geo.A - geo.g, np.zeros((n, 5)), f_ref,
+                     np.zeros((n, 5), dtype=bool), np.ones(n, dtype=bool), geo.A)  # fmt: skip
+    kind = static.arrangement
+    first = -0.5 if kind in ("DB", "DT") else 0.5
+    maps = np.zeros((n, 2, 5, 5))
+    for k, (zk, sigma) in enumerate(((first, 1.0), (-first, 1.0 if kind == "DT" else -1.0))):
+        maps[:, k, 0, 0] = maps[:, k, 1, 1] = 1.0
+        maps[:, k, 0, 3] = maps[:, k, 1, 4] = -zk * c["width"] / radius
+        for i in (2, 3, 4):
+            maps[:, k, i, i] = sigma
+    offset = np.zeros((n, 2, 5))
+    offset[:, :, 2] = (geo.A * np.sin(geo.alpha0) + _column(static, "preload_offset", shape))[
+        :, None
+    ]
+    held = np.zeros((n, 5), dtype=bool)
+    held[:, [1, 4]] = (mirror & (mc == 0))[:, None]  # the static pair's symmetries
+    no_moment = (mm == 0) & (mc == 0)
+    held[:, [0, 1, 3, 4]] |= ((fr == 0) & no_moment)[:, None]
+    if kind != "DT":
+        held[:, 2:] |= ((fa == 0) & no_moment)[:, None]
+    f = np.stack([fr, np.zeros(n), fa, mm / radius, mc / radius], axis=1)
+    sh = _Shaft((ring, ring), maps, offset, f, f_ref, held)
+    pos = [_column(static, k, shape) for k in ("x", "y", "axial", "tilt", "tilt_cross")]
+    v_static = np.stack(pos[:3] + [radius * np.deg2rad(t) for t in pos[3:]], axis=1)
+    return sh, geo, v_static
+
+
+def _solve(sh: _Shaft, v_static: np.ndarray, flat: dict) -> tuple[Any, ...]:
+    """Newton from the static answer; continuation for the cases left; the checks."""
+    n, z = v_static.shape[0], sh.rings[0].c.shape[1]
+    nan = np.full((n, 2, z), np.nan)
+    v, st, its = _newton(sh, v_static, (nan, nan, None))
+    _rescore(sh, v, st, np.arange(n))
+    for left in np.flatnonzero(~st.accepted):
+        _continuation(sh, int(left), v, st, its, v_static[left])
+    level = np.where(np.isfinite(st.level), st.level, 0.0)
+    small = np.flatnonzero(level > _hs.LEVEL_MAX)
+    if small.size:
+        i = int(small[np.argmax(level[small])])
+        sizes = {k: abs(float(flat[k][i])) for k in ("radial_load", "axial_load", "preload")}
+        raise InputError(
+            max(sizes, key=lambda k: sizes[k]),  # the largest load names the option
+            f"the loads are too small against the ball forces at this speed for the ball "
+            f"dynamics of the pair (the largest of F_r, |F_a|, M/R_i and the preload is "
+            f"{float(sh.f_ref[i]):.3g} N; the rounding of the ball forces on the shaft is "
+            f"{level[i] * float(sh.f_ref[i]):.2g} N, more than {_hs.LEVEL_MAX:.0e} of it); "
+            "--quasi-static gives the static model",
+        )
+    bad = ~st.accepted
+    if np.any(bad):
+        known = st.merit[bad][np.isfinite(st.merit[bad])]
+        raise ConvergenceError(
+            "bearing-pair shaft and ball-dynamics equilibrium", int(its[bad].max()),
+            float(known.max()) if known.size else math.nan,
+            {k: flat[k][bad] for k in _UNITS}, units=_UNITS,
+        )  # fmt: skip
+    return v, st, its
+
+
+def _result(static: PairDistribution, sh: _Shaft, geo: Any, flat: dict, shape: tuple[int, ...],
+            out: tuple[Any, ...]) -> PairHighSpeedDistribution:  # fmt: skip
+    """The static pair's fields with the shaft's position, each bearing at speed, the tangent."""
+    from bearingload import numerics
+
+    v, st, its = out
+    z = int(static.bearings[0].balls)
+    radius = geo.R_i
+    one_sided = np.ones(radius.size, dtype=bool)
+
+    def case(a: Any) -> Any:
+        return numerics.scalar_out(np.asarray(a, dtype=float).reshape(shape))
+
+    bearings = []
+    for k in range(2):
+        p = st.parts[k]
+        local = {"speed": flat["speed"], "moment": radius * p.gen[:, 3]}
+        r = _hs._result(static.bearings[k], shape, z, geo, local,
+                        flat["ball_density"].reshape(shape),
+                        (sh.rings[k], _local(sh, k, v), p, its), one_sided, None)  # fmt: skip
+        radial = np.where(sh.held[:, 0], 0.0, np.hypot(p.gen[:, 0], p.gen[:, 1]))
+        bearings.append(dataclasses.replace(r, load=case(radial), axial_load=case(p.gen[:, 2])))
+    lever = np.stack([np.ones_like(radius)] * 3 + [radius, radius], axis=1)
+    tangent = st.jac * lever[:, :, None] * lever[:, None, :]
+    # at speed 0 the static pair's matrix: its symmetric part (K's change with the angle gives
+    # the tangent an antisymmetric part of about 1e-5, which the static pair leaves out)
+    rest = (flat["speed"] == 0)[:, None, None]
+    tangent = np.where(rest, np.reshape(static.stiffness_matrix, tangent.shape), tangent)
+    unloaded = np.stack([np.all(st.parts[k].terms[2] == 0, axis=1) for k in range(2)], axis=1)
+    fields = {f.name: getattr(static, f.name) for f in dataclasses.fields(PairDistribution)}
+    fields.update(
+        bearings=(bearings[0], bearings[1]), x=case(v[:, 0]), y=case(v[:, 1]),
+        axial=case(v[:, 2]), tilt=case(np.rad2deg(v[:, 3] / radius)),
+        tilt_cross=case(np.rad2deg(v[:, 4] / radius)),
+        stiffness_matrix=tangent.reshape(shape + (5, 5)), unloaded=unloaded.reshape(shape + (2,)),
+        residual=case(st.merit),
+        iterations=case(np.asarray(static.iterations, dtype=float).ravel() + its),
+    )  # fmt: skip
+    return PairHighSpeedDistribution(**fields, speed=case(flat["speed"]),
+                                     ball_density=case(flat["ball_density"]))  # fmt: skip
