@@ -266,10 +266,11 @@ def test_a_light_load_against_the_centrifugal_forces_is_balanced_or_refused():
     1 N) is accepted within the change of the shaft forces over the balls' own residuals (it was
     a ConvergenceError at 2.4e-9 before that measure was carried to the pair); 1e-6 N on a DB
     pair at 20 000 rpm, whose rounding level is above 1e-5 of it, is refused naming the axial
-    load and --quasi-static (CLI: one Error line, exit 2)."""
+    load and the static model (solve_pair; the CLI names --quasi-static: one Error line, exit
+    2)."""
     r = solve_pair_high_speed(12, 0.0, 1e-5, speed=3000.0, arrangement="DT", **B7205)
     assert r.residual <= 1e-6
-    with pytest.raises(InputError, match="quasi-static") as err:
+    with pytest.raises(InputError, match=r"static model of the pair \(solve_pair\)") as err:
         solve_pair_high_speed(12, 0.0, 1e-6, speed=20000.0, **B7205)
     assert err.value.parameter == "axial_load"
 

@@ -340,6 +340,14 @@ def _pair(
         if dynamics["speed"] is None:
             raise
         raise click.ClickException(f"{exc}; --quasi-static gives the static model") from exc
+    except InputError as exc:  # too light for the ball dynamics: the library's way, our option
+        from bearingload.models.pair_speed import STATIC_WAY
+
+        if STATIC_WAY not in str(exc):
+            raise
+        message = str(exc).split(": ", 1)[-1].replace(STATIC_WAY, "--quasi-static gives the "
+                                                     "static model")  # fmt: skip
+        raise InputError(exc.parameter, message) from exc
     pc = with_speed_warnings([pc], case.speed)[0]  # the bearing's limiting speeds
     # each bearing's service lives as one bearing's from its own loads; the pair's from them
     service = service_lives(case, [combined_basis(c) for c in pc.bearings])

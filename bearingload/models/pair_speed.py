@@ -428,6 +428,11 @@ def _setup(static: PairDistribution, c: dict, shape: tuple[int, ...]) -> tuple[A
     return sh, geo, v_static
 
 
+#: The end of the refusal of loads too small for the pair's ball dynamics: the library's way
+#: out; the command line names its option (--quasi-static) instead.
+STATIC_WAY = "the static model of the pair (solve_pair) leaves the ball forces out"
+
+
 def _solve(sh: _Shaft, v_static: np.ndarray, flat: dict) -> tuple[Any, ...]:
     """Newton from the static answer; continuation for the cases left; the checks."""
     n, z = v_static.shape[0], sh.rings[0].c.shape[1]
@@ -447,7 +452,7 @@ def _solve(sh: _Shaft, v_static: np.ndarray, flat: dict) -> tuple[Any, ...]:
             f"dynamics of the pair (the largest of F_r, |F_a|, M/R_i and the preload is "
             f"{float(sh.f_ref[i]):.3g} N; the rounding of the ball forces on the shaft is "
             f"{level[i] * float(sh.f_ref[i]):.2g} N, more than {_hs.LEVEL_MAX:.0e} of it); "
-            "--quasi-static gives the static model",
+            f"{STATIC_WAY}",
         )
     bad = ~st.accepted
     if np.any(bad):
