@@ -160,3 +160,24 @@ def test_combined_inputs_beyond_the_numbers_are_one_error_line(args, message):
     done = run_process("solve", *args)  # a fresh interpreter shows numpy's warnings
     assert (done.returncode, done.stdout) == (2, ""), done.stderr
     assert done.stderr.count("\n") == 1 and done.stderr.startswith(f"Error: {message}"), done.stderr
+
+
+@pytest.mark.parametrize(
+    "loads, option",
+    [
+        (("-F", "0", "-A", "1e-9N"), "--axial-load"),
+        (("-F", "1e-9N", "-A", "0"), "--load"),
+        (("-F", "0", "--moment", "1e-9"), "--moment"),
+        (("-F", "0", "--moment-cross", "1e-9"), "--moment-cross"),
+        (("-F", "2e-9N", "-A", "1e-9N"), "--load"),
+    ],
+)
+def test_loads_too_small_name_the_largest_load(capsys, loads, option):
+    """The refusal of loads too small for the combined solver named '--load' whatever load was
+    given: solve 6205 -F 0 -A 1e-9N said "Invalid value for '--load'" for an axial load. It names
+    the option of the largest load (the moments over the tilt lever)."""
+    code, out, err = run_entry(capsys, "solve", "6205", *loads)
+    assert code == 2 and out == ""
+    assert err.startswith(f"Error: Invalid value for '{option}': the loads are too small"), err
+    with pytest.raises(InputError, match="^axial_load: the loads are too small"):
+        solve_combined(9, 0.0, 1e-9, **GEOMETRY)
