@@ -14,6 +14,11 @@ static answer (solve_combined, not timed) with every ball on its line. Cases: co
 ``solve_high_speed(13, F_r, F_a, speed=n, contact_angle=a0)`` on all cases at once (its static
 start included). The machine is shared: the two are timed in pairs, the ratio of each pair
 printed, and their median.
+
+The one case is timed 20 times (median), and so is its static start alone (``solve_combined`` on
+the same case, the floor of the one-case time: the dynamics start from its answer), and the
+dynamics' calls of the ball equations are counted. ``--profile`` prints cProfile's table of the
+one case (20 calls) instead of the batch comparison.
 """
 
 from __future__ import annotations
@@ -25,6 +30,7 @@ os.environ.setdefault("OPENBLAS_NUM_THREADS", "1")
 
 import math  # noqa: E402
 import statistics  # noqa: E402
+import sys  # noqa: E402
 import time  # noqa: E402
 
 import numpy as np  # noqa: E402
@@ -73,7 +79,52 @@ def fsolve_case(fr: float, fa: float, n: float, alpha: float) -> bool:
     return bool(np.max(np.abs(residual(w)[:3])) <= 1e-8 * max(fr, fa))
 
 
+def one_case() -> None:
+    hs.solve_high_speed(Z, 800.0, 1500.0, speed=20000.0, contact_angle=40.0, modulus=208000.0,
+                        **GEO)  # fmt: skip
+
+
+def one_case_report() -> None:
+    """The one case: its median time, its static start's, and its calls of the ball equations."""
+    from bearingload.models import _ball_dynamics
+
+    def median_ms(f: object, runs: int = 20) -> float:
+        times = []
+        for _ in range(runs):
+            t0 = time.perf_counter()
+            f()  # type: ignore[operator]
+            times.append(time.perf_counter() - t0)
+        return statistics.median(times) * 1e3
+
+    static = median_ms(lambda: solve_combined(Z, 800.0, 1500.0, contact_angle=40.0,
+                                              modulus=208000.0, **GEO))  # fmt: skip
+    total = median_ms(one_case)
+    calls, terms = [0], _ball_dynamics.ball_terms
+
+    def counted(*args: object) -> object:
+        calls[0] += 1
+        return terms(*args)  # type: ignore[arg-type]
+
+    hs.ball_terms = _ball_dynamics.ball_terms = counted  # type: ignore[assignment]
+    try:
+        one_case()
+    finally:
+        hs.ball_terms = _ball_dynamics.ball_terms = terms
+    print(f"one case at speed (7205-sized, 20 000 rpm): median {total:.2f} ms (target <= 5 ms); "
+          f"its static start alone {static:.2f} ms, the dynamics {calls[0]} calls of the ball "
+          "equations")  # fmt: skip
+
+
 def main() -> None:
+    one_case()
+    if "--profile" in sys.argv:
+        import cProfile
+        import pstats
+
+        prof = cProfile.Profile()
+        prof.runcall(lambda: [one_case() for _ in range(20)])
+        pstats.Stats(prof).sort_stats("tottime").print_stats(25)
+        return
     rng = np.random.default_rng(SEED)
     fr = rng.uniform(10.0, 5000.0, N_CASES)
     fa = rng.uniform(10.0, 5000.0, N_CASES)
@@ -81,14 +132,7 @@ def main() -> None:
     alpha = rng.uniform(10.0, 45.0, N_CASES)
     kw = dict(contact_angle=alpha, modulus=208000.0, **GEO)
     hs.solve_high_speed(Z, fr[:2], fa[:2], speed=n[:2], **dict(kw, contact_angle=alpha[:2]))
-    one = []
-    for _ in range(20):
-        t0 = time.perf_counter()
-        hs.solve_high_speed(Z, 800.0, 1500.0, speed=20000.0, contact_angle=40.0,
-                            modulus=208000.0, **GEO)  # fmt: skip
-        one.append(time.perf_counter() - t0)
-    print(f"one case at speed (7205-sized, 20 000 rpm): median {statistics.median(one) * 1e3:.2f} "
-          "ms (target <= 5 ms)")  # fmt: skip
+    one_case_report()
     t0 = time.perf_counter()
     for i in range(N_CASES):
         hs.solve_high_speed(Z, fr[i], fa[i], speed=n[i], **dict(kw, contact_angle=alpha[i]))

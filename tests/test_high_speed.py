@@ -11,6 +11,8 @@ the reported angles. The model's K follows the angles; frozen at the answer they
 
 from __future__ import annotations
 
+import math
+
 import mpmath as mp
 import numpy as np
 import pytest
@@ -187,6 +189,31 @@ def test_campaign_failures_solve_against_mpmath(z, fr, fa, kw):
                                   clearance=kw.get("clearance", 0.0))  # fmt: skip
     assert worst < 1e-9
     assert np.all(r.ball_loads_inner >= 0) and np.any(r.ball_loads_inner > 0)
+
+
+@pytest.mark.parametrize("fr, fa, kw", [
+    (261.11795218191924, 1.2864202201948614, dict(ball_diameter=23.812, pitch_diameter=102.5,
+     clearance=0.7194669336246642, cage_angle=45.0, speed=13629.03183207452)),
+    (4499.742997259838, 5.0175821360355926, dict(ball_diameter=23.812, pitch_diameter=102.5,
+     contact_angle=38.988586452707096, cage_angle=45.0, speed=16357.134143978346)),
+])  # fmt: skip
+def test_a_case_symmetric_about_the_load_line_is_balanced_across_it(fr, fa, kw):
+    """Campaign seed 2, cases 131 and 3340: 4 balls of 23.8 mm at 13 600 / 16 400 rpm, a large
+    clearance / 39° angular contact, the cage at half a pitch; the mirror balls 0 and 3 are
+    ill-conditioned. The y the symmetry holds at 0 was held at the static answer's 1e-14 mm and
+    moved by 1e-13 mm a step (LAPACK's solve of the held row), which put the mirror balls' inner
+    loads 4e-9 N / 2e-5 N apart: the plain sum across the load line was off by up to 8e-10 /
+    2.9e-9 of F_r. Now y is 0 exactly, the mirror balls carry the same loads, the sums balance
+    F_r, F_a and 0 across to 1e-12."""
+    r = solve_high_speed(4, fr, fa, **kw)
+    assert r.y == 0.0 and r.tilt_cross == 0.0
+    q, al = r.ball_loads_inner, np.radians(r.contact_angles_inner)
+    assert q[0] == q[3] and q[1] == q[2]
+    phi = np.radians(r.ball_angles)
+    sums = [math.fsum((q * np.cos(al) * np.cos(phi)).tolist()) - fr,
+            math.fsum((q * np.cos(al) * np.sin(phi)).tolist()),
+            math.fsum((q * np.sin(al)).tolist()) - fa]  # fmt: skip
+    assert max(abs(v) for v in sums) <= 1e-12 * fr
 
 
 def test_speed_zero_ring_past_the_groove_centre_is_the_static_answer():
