@@ -176,3 +176,6 @@ def test_gost_designation_with_a_suffix_names_the_plain_row(capsys, text, plain,
     code, out, err = run_entry(capsys, "solve", text, "-F", "1kN", "-A", "300N")
     assert code == 2 and out == "" and err.count("\n") == 1
     assert err.startswith("Error: Invalid value for 'BEARING': ") and words in err
+    code, out, err = run_entry(capsys, "catalog", "show", text)
+    assert code == 2 and out == "" and err.count("\n") == 1
+    assert err.startswith("Error: Invalid value for 'DESIGNATION': ") and words in err
