@@ -464,8 +464,8 @@ def combined_warnings(
             "only one ball carries the load: the result hangs on a single contact (large "
             "clearance or few elements); check the clearance"
             if alpha is None  # an angular-contact bearing has no clearance to check
-            else "only one ball carries the load: the result hangs on a single contact (a "
-            "thrust small against the radial load, or few balls); more thrust (a preload "
+            else "only one ball carries the load: the result hangs on a single contact (a light "
+            "thrust, or few balls); more thrust (a preload "
             "against another bearing) loads more balls"
         )
     if misalignment is not None:
