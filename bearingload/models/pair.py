@@ -629,13 +629,17 @@ def _preload_approach(
     x0 = np.cbrt(np.where(on, target, 1.0) / (z * sin0)) ** 2  # the angle kept: an upper bound
     f0 = np.log(thrust(x0)) - goal
     x1 = x0 * np.exp(-f0 / 1.5)
+    # A case stops for good at its first step below the last digit: had it gone on while
+    # another case of the call moved (x0 = x1, the slope then 1.5), it could take one more step
+    # of an ulp or two, and its bits would depend on the other cases of its call.
+    moving = on.copy()
     for _ in range(60):  # secant in log-log (a slope of 1.5 at a fixed angle, a little more)
         f1 = np.log(thrust(x1)) - goal
         step = np.log(x1) - np.log(x0)
         slope = np.where(step != 0, (f1 - f0) / np.where(step != 0, step, 1.0), 1.5)
         x2 = x1 * np.exp(-f1 / np.clip(slope, 1.0, 4.0))
-        x0, f0 = x1, f1
-        moving = on & (np.abs(x2 - x1) > 2e-16 * x1)
+        x0, f0 = np.where(moving, x1, x0), np.where(moving, f1, f0)
+        moving &= np.abs(x2 - x1) > 2e-16 * x1
         x1 = np.where(moving, x2, x1)
         if not moving.any():
             break
