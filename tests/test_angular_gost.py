@@ -151,3 +151,31 @@ def test_gost_type_without_a_row_names_the_rows_of_its_type(capsys):
     lines = err.strip().splitlines()
     assert code == 2 and out == "" and len(lines) == 1 and lines[0].startswith("Error:")
     assert "26°" in err and "46208" in err and "36205" not in err
+
+
+@pytest.mark.parametrize(
+    ("text", "plain", "words"),
+    [
+        ("36205K", "36205", "the suffix K is not read"),
+        ("36205 K6", "36205", "the suffix K6 is not read"),
+        ("66211K", "66211", "the suffix K is not read"),
+        ("46305DF", "46305", "give 46305 with the arrangement DF"),
+        ("36205DB", "36205", "give 36205 with the arrangement DB"),
+    ],
+)
+def test_gost_designation_with_a_suffix_names_the_plain_row(capsys, text, plain, words):
+    """36205K and 36205DB said 'an angular contact ball bearing ... which bearingload does not
+    model; it models single-row deep groove ... and cylindrical roller bearings' (false: 36205
+    is modelled), 66211K 'cannot read'; the refusal names the plain designation."""
+    with pytest.raises(Exception) as info:
+        resolve_bearing(text)
+    message = str(info.value)
+    assert getattr(info.value, "parameter", None) == "bearing"
+    assert "does not model" not in message and "--" not in message
+    assert words in message and plain in message
+    code, out, err = run_entry(capsys, "solve", text, "-F", "1kN", "-A", "300N")
+    assert code == 2 and out == "" and err.count("\n") == 1
+    assert err.startswith("Error: Invalid value for 'BEARING': ") and words in err
+    code, out, err = run_entry(capsys, "catalog", "show", text)
+    assert code == 2 and out == "" and err.count("\n") == 1
+    assert err.startswith("Error: Invalid value for 'DESIGNATION': ") and words in err

@@ -75,7 +75,6 @@ def test_every_row_writes_the_csv_rows_of_solve():
     assert len(lines) == 1 + 2 * len(CASES)
     for k, (_, options) in enumerate(CASES):
         solved = _solve_csv(options)
-        # moment_cross is a column of this file, and solve writes it where it is given
         head = [h for h in csv.reader([lines[0]])][0][1:]
         for j in (1, 2):
             got = dict(zip(head, next(csv.reader([lines[2 * k + j]]))[1:], strict=True))
@@ -95,6 +94,19 @@ def test_a_file_without_moment_cross_has_exactly_solves_header():
     solved = _solve_csv(CASES[0][1])
     assert lines[0] == "row," + solved[0]
     assert lines[1:3] == ["2," + line for line in solved[1:]]
+
+
+def test_a_file_with_moment_cross_has_exactly_solves_header():
+    """A file with a moment_cross column wrote a bearing's 'moment_cross [N mm]' column, blank
+    in every row, which solve 7205BDB --moment-cross does not write (the pair's cross moment is
+    pair_moment_cross): the header differed from solve's for the same pair."""
+    cross = next(c for c in CASES if "moment_cross" in c[0])
+    out = _batch(_file([CASES[0][0], cross[0]]), "--format", "csv")
+    assert out.exit_code == 0, out.stderr
+    lines = out.stdout.splitlines()
+    solved = _solve_csv(cross[1])
+    assert lines[0] == "row," + solved[0]
+    assert lines[3:5] == ["3," + line for line in solved[1:]]
 
 
 def test_a_row_alone_reversed_and_in_chunks_of_one_gives_the_same_bits():

@@ -114,7 +114,9 @@ def test_rollers_by_stiffness_and_exponent():
     [
         (("sweep", "-F", "1kN", "-K", "1e5"), "Error: Missing option '--balls' / '-z'"),
         (("sweep", "-z", "9", "-F", "1kN"), "Error: Missing option '--stiffness' / '-K'"),
-        ((*CASE, "--steps", "1"), "Error: Invalid value for '--steps': must be at least 2"),
+        ((*CASE, "--steps", "1"), "Error: Invalid value for '--steps': must be between 2 "),
+        # said 'must be between 1 and 1000000 (got 0)', and 1 is refused
+        ((*CASE, "--steps", "0"), "Error: Invalid value for '--steps': must be between 2 "),
         (
             ("sweep", "-z", "2", "-F", "1kN", "-K", "1e5"),
             "Error: Invalid value for '--balls': a sweep needs at least 3 balls",

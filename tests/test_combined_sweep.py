@@ -175,7 +175,7 @@ def test_plot_is_written(tmp_path):
          "Error: Invalid value for '--moment': give a moment or a misalignment"),
         (("6205", "-F", "0", "--rotating", "outer"), "Error: Invalid value for '--load'"),
         (("6205", "-F", "1kN", "-A", "1kN", "--steps", "1"),
-         "Error: Invalid value for '--steps': must be at least 2"),
+         "Error: Invalid value for '--steps': must be between 2 (both ends of the pitch) and"),
         (("6205", "-F", "1kN", "-A", "1 parsec"), "Error: Invalid value for '--axial-load'"),
     ],
 )  # fmt: skip

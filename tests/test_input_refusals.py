@@ -181,3 +181,28 @@ def test_loads_too_small_name_the_largest_load(capsys, loads, option):
     assert err.startswith(f"Error: Invalid value for '{option}': the loads are too small"), err
     with pytest.raises(InputError, match="^axial_load: the loads are too small"):
         solve_combined(9, 0.0, 1e-9, **GEOMETRY)
+
+
+@pytest.mark.parametrize(
+    "loads, option",
+    [
+        (("-F", "0", "-A", "1e-9N", "--preload", "0"), "--axial-load"),
+        (("-F", "1e-9N", "-A", "0", "--preload", "0"), "--load"),
+        (("-F", "0", "-A", "0", "--moment", "1e-9Nm", "--preload", "0"), "--moment"),
+        (("-F", "0", "-A", "0", "--preload", "1e-9N"), "--preload"),
+    ],
+)
+def test_loads_too_small_for_a_pair_name_the_largest_load(capsys, loads, option):
+    """The static pair's refusal of loads too small named radial_load ('--load') whatever load
+    was given (solve 7205BDB -F 0 -A 1e-9N --preload 0 said --load for an axial load), and
+    'preload' for every case of a call when one case's preload was its largest load."""
+    code, out, err = run_entry(capsys, "solve", "7205BDB", *loads)
+    assert code == 2 and out == "" and err.count("\n") == 1
+    assert err.startswith(f"Error: Invalid value for '{option}': the loads are too small"), err
+    from bearingload.models.pair import solve_pair
+
+    ring = {"contact_angle": 40.0, "ball_diameter": 7.9375, "pitch_diameter": 38.5, "width": 15.0}
+    with pytest.raises(InputError, match="^axial_load: the loads are too small"):
+        # case 0 is fine with its preload its largest load; case 1 is refused for its thrust
+        solve_pair(12, np.array([0.0, 0.0]), np.array([0.0, 1e-9]),
+                   preload=np.array([500.0, 0.0]), **ring)  # fmt: skip

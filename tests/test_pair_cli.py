@@ -191,3 +191,12 @@ def test_an_unloaded_bearing_has_no_largest_loaded_contact_angle(capsys):
     loaded, lifted = case["bearings"]
     assert lifted["loaded_balls"] == 0 and lifted["contact_angle_max"] is None
     assert loaded["contact_angle_max"] == pytest.approx(max(loaded["contact_angles"]), rel=1e-9)
+
+
+def test_one_loaded_ball_of_a_pair_does_not_ask_for_the_clearance(capsys):
+    """solve 7205BDT -F 1kN -A 200N warned 'bearing 1: only one ball carries the load ... (large
+    clearance or few elements); check the clearance': an angular-contact bearing has no
+    clearance (--clearance is refused); the warning names the thrust."""
+    code, _, err = run_entry(capsys, "solve", "7205BDT", "-F", "1kN", "-A", "200N")
+    assert code == 0 and "bearing 1: only one ball carries the load" in err
+    assert "clearance" not in err and "more thrust" in err

@@ -50,14 +50,15 @@ class PairSolver(BatchSolver):
 
 def pair_columns(header: Header) -> list[Any]:
     """The output columns of a file of pairs: ``row``, then those ``solve 7205BDB --format
-    csv`` writes (``moment_cross`` where the file has that column)."""
+    csv`` writes (the pair's cross moment in ``pair_moment_cross``; a bearing's record has no
+    ``moment_cross``, so its column, written when the file had one, was always blank)."""
     from bearingload.reports.pair import OWN_KEYS, csv_columns
     from bearingload.reports.quantities import SERVICE_KEYS
     from bearingload.reports.solve import column
 
-    unused = {*SERVICE_KEYS, "ball_density", "rating_life_hours", "reference_rating_life_hours"}
-    if "moment_cross" not in header.names:
-        unused.add("moment_cross")
+    del header  # every file of pairs writes the same columns
+    unused = {*SERVICE_KEYS, "ball_density", "rating_life_hours", "reference_rating_life_hours",
+              "moment_cross"}  # fmt: skip
     return [column("row"), *csv_columns((), [k for k in OWN_KEYS if k not in unused])]
 
 

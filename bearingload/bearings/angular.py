@@ -109,6 +109,42 @@ def parse_angular(text: str) -> AngularDesignation | None:
     return None
 
 
+#: A GOST 831 angular-contact designation followed by a suffix that is not read (EPK's K, K6,
+#: K7 variants, a pair suffix DB/DF/DT, a seal): the type is modelled, the suffix is not.
+_GOST_SUFFIXED = re.compile(
+    r"^(?P<body>(?:[^-\s]{1,6}\s*-\s*)?(?P<name>[346]6[1-4]\d{2}))\s*[-/]?\s*(?P<rest>[A-Z].*)$"
+)
+
+
+def refuse_gost_suffix(text: str) -> None:
+    """Refuse a GOST 831 angular-contact designation with a suffix that is not read
+    (``36205K``, ``46305DF``, ``66211K``), naming the plain designation: the type is modelled,
+    so the deep-groove parser's 'a type bearingload does not model' would be false.
+
+    >>> refuse_gost_suffix("36205")  # no suffix: nothing to refuse
+    """
+    m = _GOST_SUFFIXED.match(re.sub(r"\s+", " ", text.strip().upper()))
+    if m is None:
+        return
+    rest, name = m.group("rest").strip(), m.group("name")
+    if _PAIR.match(rest) or _PAIR_LIKE.match(rest):
+        why = (
+            f"the matched-pair suffix {rest} is read on the ISO form only (7205BDB); give "
+            f"{name} with the arrangement {rest[:2]} and its preload force"
+        )
+    else:
+        why = (
+            f"the suffix {rest} is not read (GOST 831's K, K6 and K7 variants print other "
+            f"ratings); give {name} for the plain type's row, or the ring by hand with its "
+            "contact angle"
+        )
+    raise InputError(
+        "bearing",
+        f"{text.strip()!r} is a single-row angular contact ball bearing (GOST 831 type "
+        f"{name[0]}6000: {GOST_TYPE_ANGLES[name[0]]:g}°): {why}",
+    )
+
+
 def split_pair(text: str) -> tuple[str, str | None]:
     """``text`` without the suffix of a matched pair (``7205BDB`` -> ``7205B``, "DB"), and the
     arrangement (None: no such suffix). A maker's preload class after it (``DBA`` ... ``DBD``)

@@ -463,6 +463,10 @@ def combined_warnings(
         out.append(
             "only one ball carries the load: the result hangs on a single contact (large "
             "clearance or few elements); check the clearance"
+            if alpha is None  # an angular-contact bearing has no clearance to check
+            else "only one ball carries the load: the result hangs on a single contact (a light "
+            "thrust, or few balls); more thrust (a preload "
+            "against another bearing) loads more balls"
         )
     if misalignment is not None:
         out.extend(misalignment_findings(misalignment, alpha is not None))

@@ -123,9 +123,11 @@ def resolve_bearing(
     given = {"balls": balls, "ball_diameter": ball_diameter, "pitch_diameter": pitch_diameter,
              "f_i": f_i, "f_o": f_o}  # fmt: skip
     if designation is not None:
-        from bearingload.bearings.angular import parse_angular
+        from bearingload.bearings.angular import parse_angular, refuse_gost_suffix
 
         angular = parse_angular(designation)
+        if angular is None:
+            refuse_gost_suffix(designation)
         if angular is not None:
             if spec is not None:
                 raise InputError(

@@ -551,14 +551,19 @@ def _solve(z: int, kind: str, c: dict, shape: tuple[int, ...]) -> PairDistributi
     f_ref = np.maximum(_comb._reference_force(fr, fa, mm, mc, geo.R_i), fp)
     if np.any(f_ref <= 0):
         raise InputError("radial_load", "give a radial load, an axial load, a moment or a preload")
+    loads = (fr, fa, mm, mc, geo.R_i)
     try:
-        _comb._check_scale(f_ref, k_ref, geo.A)
+        _comb._check_scale(f_ref, k_ref, geo.A, loads=loads)
     except InputError as exc:  # its advice (the radial solver) does not apply to a pair
         if "too small" not in str(exc):
             raise
         f_min = float(np.max(k_ref * (geo.A / _comb.GEOMETRY_RATIO_MAX) ** 1.5))
+        # the first case refused names the parameter of its largest load (not radial_load
+        # whatever was given, nor preload when another case's preload was its largest)
+        scale = (f_ref / k_ref) ** (2.0 / 3.0)
+        i = int(np.argmax(np.broadcast_to(geo.A, scale.shape) / scale > _comb.GEOMETRY_RATIO_MAX))
         raise InputError(
-            "preload" if np.any(fp >= f_ref) else exc.parameter,
+            "preload" if fp[i] >= f_ref[i] else exc.parameter,
             f"the loads are too small for the pair solver (the largest of F_r, |F_a|, M/R_i and "
             f"the preload is {float(np.min(f_ref)):.3g} N; it takes at least {f_min:.2g} N for "
             "this bearing)",
@@ -624,13 +629,17 @@ def _preload_approach(
     x0 = np.cbrt(np.where(on, target, 1.0) / (z * sin0)) ** 2  # the angle kept: an upper bound
     f0 = np.log(thrust(x0)) - goal
     x1 = x0 * np.exp(-f0 / 1.5)
+    # A case stops for good at its first step below the last digit: had it gone on while
+    # another case of the call moved (x0 = x1, the slope then 1.5), it could take one more step
+    # of an ulp or two, and its bits would depend on the other cases of its call.
+    moving = on.copy()
     for _ in range(60):  # secant in log-log (a slope of 1.5 at a fixed angle, a little more)
         f1 = np.log(thrust(x1)) - goal
         step = np.log(x1) - np.log(x0)
         slope = np.where(step != 0, (f1 - f0) / np.where(step != 0, step, 1.0), 1.5)
         x2 = x1 * np.exp(-f1 / np.clip(slope, 1.0, 4.0))
-        x0, f0 = x1, f1
-        moving = on & (np.abs(x2 - x1) > 2e-16 * x1)
+        x0, f0 = np.where(moving, x1, x0), np.where(moving, f1, f0)
+        moving &= np.abs(x2 - x1) > 2e-16 * x1
         x1 = np.where(moving, x2, x1)
         if not moving.any():
             break

@@ -102,10 +102,11 @@ def angular_list(fmt: str, bore: float | None = None) -> str:
 
 def _angular_entry(designation: str, fmt: str, maker: str | None) -> str | None:
     """The entry of an angular-contact designation, or None when ``designation`` is not one."""
-    from bearingload.bearings.angular import find_angular, parse_angular
+    from bearingload.bearings.angular import find_angular, parse_angular, refuse_gost_suffix
 
     parsed = parse_angular(designation)
     if parsed is None:
+        refuse_gost_suffix(designation)  # 36205K: the type is modelled, the suffix is not read
         return None
     r = find_angular(parsed, maker)  # as solve 7205B --maker
     fields: list[tuple[str, str, Any, str]] = [

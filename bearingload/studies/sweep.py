@@ -296,9 +296,12 @@ def cage_angles(balls: int, steps: Any = DEFAULT_STEPS) -> np.ndarray:
             "a sweep needs at least 3 balls: with 1 or 2 the ring has no equilibrium unless a "
             "ball sits on the load line",
         )
+    arr = validate.finite("steps", steps)
+    if np.any((arr < 2) | (arr > MAX_STEPS)):  # ball_count's range starts at 1: refused here
+        raise InputError(
+            "steps", f"must be between 2 (both ends of the pitch) and {MAX_STEPS} (got {steps})"
+        )
     n = _one_int("steps", validate.ball_count(steps, name="steps", maximum=MAX_STEPS))
-    if n < 2:
-        raise InputError("steps", "must be at least 2 (both ends of the pitch)")
     return np.linspace(0.0, 360.0 / balls, n)
 
 
