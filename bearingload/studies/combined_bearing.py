@@ -177,6 +177,8 @@ def _combined_case(
     levers = [None] * len(q) if lever is None else each(lever)
     said = [lever_warning(x, b.pitch_diameter) for x in levers]
     checks = tuple(c + (w,) if w else c for c, w in zip(checks, said, strict=True))
+    sides = groove_side_warnings(r, len(q))
+    checks = tuple(c + (w,) if w else c for c, w in zip(checks, sides, strict=True))
     if shape == ():
         p_eq = None if p_eq is None else float(p_eq)
         life = None if life is None or np.isnan(life) else float(life)
@@ -186,6 +188,27 @@ def _combined_case(
                             p0[0], s0[0], moment_cross)  # fmt: skip
     return CombinedCase(b, r, misalignment, rotating, c_r, p_eq, life, l10r, checks, p_i, p_o,
                         p0, s0, moment_cross)  # type: ignore[arg-type]  # fmt: skip
+
+
+def groove_side_warnings(r: Any, n: int) -> list[str | None]:
+    """Per case of ``r`` (``n`` cases): at a speed (the ball dynamics), the balls whose loaded
+    inner contact sits at 90°, on the side of the inner groove, which the model holds them on
+    (docs/speed.md, known limits); None where there is none, and always without a speed."""
+    if getattr(r, "speed", None) is None:
+        return [None] * n
+    angles = np.asarray(r.contact_angles_inner, dtype=float).reshape(n, -1)
+    loads = np.asarray(r.ball_loads_inner, dtype=float).reshape(n, -1)
+    out: list[str | None] = []
+    for side in (loads > 0) & (angles >= 90.0 - 1e-9):
+        balls = ", ".join(str(j + 1) for j in np.flatnonzero(side))
+        out.append(
+            None if not balls else
+            f"ball(s) {balls}: the loaded inner contact sits at 90°, on the side of the inner "
+            "groove, where the model holds the ball (a real ball rides onto the groove shoulder) "
+            "and takes its orbit speed and centrifugal force from Jones's relations at that "
+            "angle, which overstate them: the result is outside what the model describes"
+        )  # fmt: skip
+    return out
 
 
 def warned_tilt(
