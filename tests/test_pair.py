@@ -358,3 +358,15 @@ def test_a_case_among_others_gives_the_bits_of_the_case_alone_preload_secant():
             getattr(every, k)[i] == getattr(one, k)[0]
             for k in ("x", "y", "axial", "tilt", "tilt_cross")
         ), i
+
+
+def test_a_width_beyond_a_pair_is_refused_naming_the_limit():
+    """A width of 1e9 mm (7205-sized balls on 38.5 mm) ended in 'did not converge' (found by the
+    review); widths above WIDTH_MAX times d_m are refused naming it; at the limit it solves."""
+    from bearingload.models.pair import WIDTH_MAX
+
+    geo = {"contact_angle": 40.0, "ball_diameter": 7.9375, "pitch_diameter": 38.5}
+    with pytest.raises(InputError, match=r"^width: must be at most 1000 times the pitch diam"):
+        solve_pair(12, 1000.0, 300.0, preload=100.0, width=1e9, **geo)
+    r = solve_pair(12, 1000.0, 300.0, preload=100.0, width=WIDTH_MAX * 38.5, **geo)
+    assert np.isfinite(r.x) and r.residual <= 1e-12
