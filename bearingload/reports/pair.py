@@ -243,9 +243,9 @@ def csv_columns(service: Sequence[str], own: Sequence[str]) -> list[Column]:
     ``service`` values of :data:`PAIR_SERVICE` as ``pair_...``, ``bearing_number``, then each
     bearing's ``own`` keys (a single bearing's). ``batch`` writes these for a file of pairs."""
     answers = [f"pair_{k}" for k in (*PAIR_ANSWERS, *service)]
-    cols = [column(k) for k in CSV_INPUTS]
+    cols = [column(k, 1.5) for k in CSV_INPUTS]  # ball bearings: N/mm^1.5, as one bearing's
     cols += [_pair_column(k) for k in (*CSV_APPLIED, *answers)] + [column("bearing_number")]
-    return cols + [column(k) for k in own]
+    return cols + [column(k, 1.5) for k in own]
 
 
 def csv_rows(c: PairCase, pair: dict[str, Any], records: list[dict[str, Any]],
