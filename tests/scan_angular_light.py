@@ -1,6 +1,6 @@
 """Grid scan of the angular-contact solver at light loads (not part of the test suite).
 
-Run: ``.venv/bin/python -m tests.scan_angular_light [base|wide] [cases]``.
+Run: ``.venv/bin/python -m tests.scan_angular_light [base|wide|thrust] [cases]``.
 
 * ``base``: the scan of docs/angular_contact.md: 9 balls of 7.938 mm on 38.5 mm at 15°, 25°
   and 40°, F_r on a log grid from 1e-6 N to 1e3 N (14 values), F_a/F_r on a log grid from 1e-4
@@ -10,6 +10,10 @@ Run: ``.venv/bin/python -m tests.scan_angular_light [base|wide] [cases]``.
   to 10 (log-uniform), the ring free to tilt, under a moment (either way, up to 0.9 of what the
   one-way balls hold) or under a misalignment (±0.001 to 0.3°), the cage at 0, half a pitch or
   anywhere.
+* ``thrust`` (cases seeds 1 to n): normal loads with a small thrust: z 3 to 12, d_m 30 to 100
+  mm, D_w 0.3 to 0.95 of the largest that fits, α0 10 to 45°, F_r 10 N to 10 kN, F_a/F_r 1e-5 to
+  1e-1 (log-uniform), the cage anywhere, the ring free to tilt or (half the cases) under a
+  moment (either way, up to 0.9 of what the one-way balls hold).
 
 A case below the solver's least load is refused with that load in the message: it is then solved
 again at that load (all loads scaled together), which must solve. Printed: cases, solved,
@@ -66,6 +70,24 @@ def wide_case(rng: np.random.Generator) -> dict[str, Any]:
     return out
 
 
+def thrust_case(rng: np.random.Generator) -> dict[str, Any]:
+    """The ``thrust`` scan: z 3-12, α0 10-45°, F_r 10 N to 10 kN and F_a/F_r 1e-5 to 1e-1
+    (log-uniform), the cage anywhere, the ring free to tilt or (half the cases) under a moment."""
+    z = int(rng.integers(3, 13))
+    dm = float(rng.uniform(30.0, 100.0))
+    dw = min(dm * math.sin(math.pi / z) * float(rng.uniform(0.3, 0.95)), 0.3 * dm)
+    alpha = float(rng.uniform(10.0, 45.0))
+    fr = float(10 ** rng.uniform(1.0, 4.0))
+    fa = fr * float(10 ** rng.uniform(-5.0, -1.0))
+    out: dict[str, Any] = {"z": z, "dw": dw, "dm": dm, "alpha": alpha, "fr": fr, "fa": fa,
+                           "cage": float(rng.uniform(0.0, 360.0))}  # fmt: skip
+    if rng.random() < 0.5:
+        r_i = dm / 2.0 + 0.02 * dw * math.cos(math.radians(alpha))
+        most = 0.9 * fa * r_i * math.cos(math.pi / z)
+        out["moment"] = float(rng.choice([-1, 1]) * most * 10 ** rng.uniform(-4, 0))
+    return out
+
+
 def solve(case: dict[str, Any], factor: float = 1.0) -> Any:
     kw = {k: case[k] for k in ("moment", "misalignment") if k in case}
     if "moment" in kw:
@@ -94,7 +116,8 @@ def plain_excess(case: dict[str, Any], r: Any, factor: float) -> list[float]:
 
 
 def main(mode: str, n: int) -> None:
-    cases = base_cases() if mode == "base" else [wide_case(np.random.default_rng(1 + i))
+    maker = thrust_case if mode == "thrust" else wide_case
+    cases = base_cases() if mode == "base" else [maker(np.random.default_rng(1 + i))
                                                  for i in range(n)]  # fmt: skip
     seen: dict[str, Any] = {}
     original = combined._checked

@@ -596,7 +596,7 @@ def solve_combined(
     if misalignment is not None:  # the moment is then the reaction, not an input
         given["misalignment"] = tilt_deg
     with np.errstate(all="ignore"):
-        vh, vl, kappa, its, end = _solve_with_stiffness(problem, geo, curve)
+        vh, vl, kappa, its, end = _thrust_retry(problem, geo, curve)
         checked = _checked(problem, end, its, given)
         answer = (
             vh + vl,
@@ -960,6 +960,92 @@ def _light_start(
     return out
 
 
+#: An angular-contact case under F_r and a thrust F_a below THRUST_RATIO F_r whose first
+#: attempt does not converge is solved again by a continuation in the thrust
+#: (:func:`_thrust_retry`): from F_a = THRUST_RATIO F_r down to its own, each stage dividing
+#: the thrust by THRUST_STAGE, a stage that does not converge retried from the last one that
+#: did at the square root of its factor, down to a factor of THRUST_STAGE_MIN. [-]
+THRUST_RATIO = 0.1
+THRUST_STAGE = 3.0
+THRUST_STAGE_MIN = 1.01
+#: Stages of one case's continuation (those that converge and those that do not) before it is
+#: given up (its first answer, and ConvergenceError, kept). [-]
+THRUST_STAGES_MAX = 200
+
+
+def _thrust_retry(p: Problem, geo: _Geometry, curve: _StiffnessCurve | None) -> tuple:
+    """:func:`_solve_with_stiffness` of ``p``, with the angular-contact cases that did not
+    converge (residual above ACCEPT), under F_r and 0 < F_a < THRUST_RATIO F_r, solved
+    again by :func:`_thrust_path`, each alone; a case keeps its first answer (and so its
+    ConvergenceError) where that does not converge either. Only such cases are touched: a case
+    that converges at once keeps its bits, and a retried case's answer is a function of its own
+    inputs (the same alone or in any batch).
+
+    Why: with a thrust of some thousandths of F_r only two or three balls carry load, those on
+    the load side near 0°, one of them often at the kink of the one-sided contact (u_j = 0: no
+    stiffness along the groove on one side, a large one on the other), and the Newton matrix is
+    near-singular along a tilt. Where the start (:func:`_start`, then the double-precision Newton
+    stage) or a step lands the ring there, the regularised step along that tilt is enormous, is
+    capped to A (:func:`_ring.cap_step`), and the line search accepts some 1e-7 of it: the
+    residual falls by 1e-5 per step (or not at all, 70.4 being the ceiling of the measure), until
+    MAX_ITERATIONS. Which cases do so is a matter of chance: ``solve_combined(5, 2260.78,
+    2.9589, cage_angle=222.70, contact_angle=14.439, ball_diameter=11.5, pitch_diameter=43.5)``
+    did (the first Newton stage threw the ring to a tilt 3.6 times the answer's, three balls at
+    u_j < 0, the loads 30 times F_r), while 2.26 N and 4.5 N solve at once. At F_a =
+    THRUST_RATIO F_r more balls carry load and the standard start converges; each stage starts
+    from the answer of the one before, nearly the same ring position."""
+    out = _solve_with_stiffness(p, geo, curve)
+    vh, vl, kappa, total, end = out
+    res = _ring.residual(p, end.gen, end.size, p.imposed)
+    f0, f2 = p.f[:, 0], p.f[:, 2]
+    rows = np.flatnonzero(
+        ~(res <= ACCEPT) & p.one_sided & (f0 > 0) & (f2 > 0) & (f2 < THRUST_RATIO * f0)
+        & ~p.locked[:, 2]
+    )  # fmt: skip
+    for i in rows:
+        one = np.array([i])
+        own = None if curve is None else _StiffnessCurve(curve.values[one])
+        got = _thrust_path(p.take(one), _geo_take(geo, one), own)
+        if got is None:
+            continue
+        vh[i], vl[i], kappa[i], total[i] = got[0][0], got[1][0], got[2][0], total[i] + got[3][0]
+        end.put(one, got[4])
+    return vh, vl, kappa, total, end
+
+
+def _thrust_path(q: Problem, geo: _Geometry, curve: _StiffnessCurve | None) -> tuple | None:
+    """One case (``q`` of one row) solved by the continuation in the thrust of
+    :func:`_thrust_retry`: the answer (as :func:`_solve_with_stiffness`, the iterations of
+    every stage summed) at its own F_a, or None where a stage at THRUST_RATIO F_r, or one whose
+    factor fell below THRUST_STAGE_MIN, does not converge, or after THRUST_STAGES_MAX stages.
+    The thrust of a stage is the case's own times exp(e), e from log(THRUST_RATIO F_r / F_a)
+    down to exactly 0."""
+    want = q.f[0, 2]
+    e_next = math.log(THRUST_RATIO * q.f[0, 0] / want)
+    e_done, step = math.inf, math.log(THRUST_STAGE)
+    v0, its = None, 0
+    for _ in range(THRUST_STAGES_MAX):
+        f = q.f.copy()
+        f[0, 2] = want * math.exp(e_next)
+        stage = dataclasses.replace(q, f=f)
+        try:
+            got = _solve_with_stiffness(stage, geo, curve, v0)
+            ok = bool(_ring.residual(stage, got[4].gen, got[4].size, stage.imposed)[0] <= ACCEPT)
+            its += int(got[3][0])
+        except ConvergenceError:
+            ok = False
+        if ok and e_next == 0.0:
+            return got[0], got[1], got[2], np.array([its]), got[4]
+        if ok:
+            e_done, v0 = e_next, np.where(q.locked, 0.0, got[0] + got[1])
+        elif math.isinf(e_done) or step < math.log(THRUST_STAGE_MIN):
+            return None
+        else:
+            step /= 2.0
+        e_next = max(e_done - step, 0.0)
+    return None
+
+
 def _geo_take(geo: _Geometry, rows: np.ndarray) -> _Geometry:
     """The cases ``rows`` of a geometry."""
     return _Geometry(*(getattr(geo, f.name)[rows] for f in dataclasses.fields(geo)))
@@ -1056,15 +1142,21 @@ class _StiffnessCurve:
         return num / den + cos_m1 * dd_dc
 
 
+def _standard_start(p: Problem, geo: _Geometry, curve: _StiffnessCurve | None) -> np.ndarray:
+    """The start of every case: :func:`_start`, light angular-contact cases :func:`_light_start`."""
+    cage = np.rad2deg(np.arctan2(p.s[:, 0], p.c[:, 0]))
+    return _light_start(p, geo, curve, _start(p, geo, cage))
+
+
 def _solve_with_stiffness(
-    p: Problem, geo: _Geometry, curve: _StiffnessCurve | None
+    p: Problem, geo: _Geometry, curve: _StiffnessCurve | None, v0: np.ndarray | None = None
 ) -> tuple[np.ndarray, np.ndarray, np.ndarray, np.ndarray, _ring.Point]:
     """Minimise with frozen ball stiffnesses, update them to the contact angles, repeat until
     the update leaves the equilibrium (to the tolerance). Returns (v_hi, v_lo, kappa,
     iterations, the point there: :func:`_ring.reference` at the position, the loads with
-    kappa)."""
-    cage = np.rad2deg(np.arctan2(p.s[:, 0], p.c[:, 0]))
-    vh, kappa, total = _fast.newton(p, _light_start(p, geo, curve, _start(p, geo, cage)), curve)
+    kappa). ``v0``: the start (scaled units of ``p``), default :func:`_standard_start`."""
+    start0 = _standard_start(p, geo, curve) if v0 is None else v0
+    vh, kappa, total = _fast.newton(p, start0, curve)
     vl = np.zeros_like(vh)
     todo = np.arange(vh.shape[0])  # each case stops on its own: no case depends on the batch
     sub, start = p, None
