@@ -581,7 +581,7 @@ def solve_combined(
     f_ref = _reference_force(fr, fa, mm, mc, geo.R_i)
     if np.any(f_ref <= 0):
         raise InputError("radial_load", "give a radial load, an axial load or a moment")
-    _check_scale(f_ref, k_ref, geo.A, angular is not None, (fr, fa, mm, mc, geo.R_i))
+    _check_scale(f_ref, k_ref, geo.A, angular is not None, load_sizes(fr, fa, mm, mc, geo.R_i))
     if angular is not None:
         _check_angular_scale(f_ref, k_ref, geo.A, (fr, fa, np.hypot(mm, mc) / geo.R_i))
     t_imp = geo.R_i * np.deg2rad(tilt_deg)  # [mm]
@@ -733,13 +733,13 @@ def _check_scale(
     k_ref: np.ndarray,
     big_a: np.ndarray,
     angular: bool = False,
-    loads: tuple[np.ndarray, ...] | None = None,
+    sizes: dict[str, np.ndarray] | None = None,
 ) -> None:
     """Refuse loads so small against the groove geometry that the scaled problem loses its
     digits (the radial solver, without an axial load, takes any ratio; an angular-contact
     bearing, ``angular``, has no other solver: the message gives the smallest load taken).
-    ``loads`` (F_r, F_a, M, M_c [N, N mm] and the tilt lever [mm]) name the parameter of the
-    largest load of the first case refused; without them, ``radial_load``."""
+    ``sizes`` (:func:`load_sizes`, by parameter [N]) name the parameter of the largest load of
+    the first case refused (the first named among equals); without them, ``radial_load``."""
     with np.errstate(over="ignore", divide="ignore"):
         scale = (f_ref / k_ref) ** (2.0 / 3.0)
     if not np.all(scale <= 1e100):  # the radial engine's bound of the one-ball approach
@@ -757,21 +757,29 @@ def _check_scale(
         step = 10.0 ** (math.floor(math.log10(f_min)) - 1)  # shown to 2 digits, rounded up
         f_min = math.ceil(f_min / step * (1 - 1e-12)) * step
         raise InputError(
-            _largest_load(loads, int(np.argmax(bad))),
+            _largest_load(sizes, int(np.argmax(bad))),
             f"the loads are too small for the combined solver (the largest of F_r, |F_a| and "
             f"M/R_i is {float(np.min(f_ref)):.3g} N; it takes at least {f_min:.2g} N for this "
             f"bearing); {ANGULAR_NO_OTHER_SOLVER if angular else RADIAL_TAKES_ANY_LOAD}",
         )
 
 
-def _largest_load(loads: tuple[np.ndarray, ...] | None, i: int) -> str:
-    """The parameter of the largest of F_r, |F_a| and the moments over the lever in case ``i``."""
-    if loads is None:
+def load_sizes(
+    fr: np.ndarray, fa: np.ndarray, mm: np.ndarray, mc: np.ndarray, lever: np.ndarray
+) -> dict[str, np.ndarray]:
+    """The applied loads as forces by parameter: F_r, |F_a| and the moments over the tilt lever
+    (per case, flat). [N]"""
+    shape = np.shape(fr)
+    return {"radial_load": fr, "axial_load": np.abs(fa),
+            "moment": np.abs(mm) / np.broadcast_to(lever, shape),
+            "moment_cross": np.abs(mc) / np.broadcast_to(lever, shape)}  # fmt: skip
+
+
+def _largest_load(sizes: dict[str, np.ndarray] | None, i: int) -> str:
+    """The parameter of the largest of ``sizes`` in case ``i`` (the first named among equals)."""
+    if sizes is None:
         return "radial_load"
-    fr, fa, mm, mc, lever = (np.broadcast_to(v, np.shape(loads[0])).reshape(-1)[i] for v in loads)
-    sizes = {"radial_load": fr, "axial_load": abs(fa), "moment": abs(mm) / lever,
-             "moment_cross": abs(mc) / lever}  # fmt: skip
-    return max(sizes, key=lambda name: sizes[name])
+    return max(sizes, key=lambda name: float(np.reshape(sizes[name], -1)[i]))
 
 
 #: The end of the message refusing loads too small for the combined solver: where a radial load

@@ -566,19 +566,16 @@ def _solve(z: int, kind: str, c: dict, shape: tuple[int, ...]) -> PairDistributi
     f_ref = np.maximum(_comb._reference_force(fr, fa, mm, mc, geo.R_i), fp)
     if np.any(f_ref <= 0):
         raise InputError("radial_load", "give a radial load, an axial load, a moment or a preload")
-    loads = (fr, fa, mm, mc, geo.R_i)
+    # the first case refused names the parameter of its largest load, the preload among them
+    sizes = {"preload": fp} | _comb.load_sizes(fr, fa, mm, mc, geo.R_i)
     try:
-        _comb._check_scale(f_ref, k_ref, geo.A, loads=loads)
+        _comb._check_scale(f_ref, k_ref, geo.A, sizes=sizes)
     except InputError as exc:  # its advice (the radial solver) does not apply to a pair
         if "too small" not in str(exc):
             raise
         f_min = float(np.max(k_ref * (geo.A / _comb.GEOMETRY_RATIO_MAX) ** 1.5))
-        # the first case refused names the parameter of its largest load (not radial_load
-        # whatever was given, nor preload when another case's preload was its largest)
-        scale = (f_ref / k_ref) ** (2.0 / 3.0)
-        i = int(np.argmax(np.broadcast_to(geo.A, scale.shape) / scale > _comb.GEOMETRY_RATIO_MAX))
         raise InputError(
-            "preload" if fp[i] >= f_ref[i] else exc.parameter,
+            exc.parameter,
             f"the loads are too small for the pair solver (the largest of F_r, |F_a|, M/R_i and "
             f"the preload is {float(np.min(f_ref)):.3g} N; it takes at least {f_min:.2g} N for "
             "this bearing)",
