@@ -19,15 +19,14 @@ from __future__ import annotations
 import math
 import sys
 import time
-import warnings
 from typing import Any
 
 import numpy as np
 
-from bearingload.errors import ConvergenceError, InputError
 from bearingload.models.pair import solve_pair
 from tests.campaign_angular import static_rating
 from tests.campaign_combined import BALL_SETS
+from tests.campaign_tools import attempt
 
 
 def random_case(rng: np.random.Generator) -> dict[str, Any]:
@@ -75,17 +74,8 @@ def main(n: int, seed: int) -> None:
     start = time.perf_counter()
     for _ in range(n):
         case = random_case(rng)
-        try:
-            with warnings.catch_warnings():
-                warnings.simplefilter("error")
-                r = solve_pair(case["z"], case["fr"], case["fa"], **case["kw"])
-        except InputError as err:
-            counts["refused"] += 1
-            refused[err.parameter] = refused.get(err.parameter, 0) + 1
-            continue
-        except ConvergenceError as err:
-            counts["ConvergenceError"] += 1
-            print("ConvergenceError:", case, err)
+        r = attempt(solve_pair, case, counts, refused)
+        if r is None:
             continue
         arrays = [r.x, r.axial, r.tilt, r.residual, r.stiffness_matrix]
         arrays += [b.ball_loads for b in r.bearings] + [b.contact_angles for b in r.bearings]

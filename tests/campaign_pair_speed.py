@@ -19,14 +19,13 @@ from __future__ import annotations
 import math
 import sys
 import time
-import warnings
 from typing import Any
 
 import numpy as np
 
-from bearingload.errors import ConvergenceError, InputError
 from bearingload.models.pair_speed import solve_pair_high_speed
 from tests.campaign_pair import random_case as pair_case
+from tests.campaign_tools import attempt
 
 
 def random_case(rng: np.random.Generator) -> dict[str, Any]:
@@ -109,17 +108,8 @@ def main(n: int, seed: int) -> None:
     for _ in range(n):
         case = random_case(rng)
         t0 = time.perf_counter()
-        try:
-            with warnings.catch_warnings():
-                warnings.simplefilter("error")
-                r = solve_pair_high_speed(case["z"], case["fr"], case["fa"], **case["kw"])
-        except InputError as err:
-            counts["refused"] += 1
-            refused[err.parameter] = refused.get(err.parameter, 0) + 1
-            continue
-        except ConvergenceError as err:
-            counts["ConvergenceError"] += 1
-            print("ConvergenceError:", case, err)
+        r = attempt(solve_pair_high_speed, case, counts, refused)
+        if r is None:
             continue
         took = time.perf_counter() - t0
         if took > slowest[0]:

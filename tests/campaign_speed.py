@@ -23,15 +23,14 @@ from __future__ import annotations
 import math
 import sys
 import time
-import warnings
 from typing import Any
 
 import numpy as np
 
-from bearingload.errors import ConvergenceError, InputError
 from bearingload.models.high_speed import MAX_SPEED_PITCH, solve_high_speed
 from tests.campaign_angular import static_rating
 from tests.campaign_combined import BALL_SETS
+from tests.campaign_tools import attempt
 
 
 def random_case(rng: np.random.Generator) -> dict[str, Any]:
@@ -111,21 +110,8 @@ def main(n: int, seed: int) -> None:
     for _ in range(n):
         case = random_case(rng)
         t0 = time.perf_counter()
-        try:
-            with warnings.catch_warnings():
-                warnings.simplefilter("error")
-                r = solve_high_speed(case["z"], case["fr"], case["fa"], **case["kw"])
-        except InputError as err:
-            counts["refused"] += 1
-            refused[err.parameter] = refused.get(err.parameter, 0) + 1
-            continue
-        except ConvergenceError as err:
-            counts["ConvergenceError"] += 1
-            print("ConvergenceError:", case, err)
-            continue
-        except Exception as err:  # noqa: BLE001 (a campaign counts every failure)
-            counts["crash"] += 1
-            print("crash:", case, repr(err))
+        r = attempt(solve_high_speed, case, counts, refused)
+        if r is None:
             continue
         took = time.perf_counter() - t0
         arrays = [r.x, r.axial, r.tilt, r.ball_loads_inner, r.ball_loads_outer,
