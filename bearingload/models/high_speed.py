@@ -590,13 +590,7 @@ def _newton(r: _Ring, v: np.ndarray, do: np.ndarray, ao: np.ndarray) -> tuple[An
         size = _norm2(sub, cur)
         pending = np.arange(todo.size)
         for k in range(LM_TRIALS):
-            lam, mu = (0.5**k, 0.0) if k < HALVINGS else (1.0, 1e-6 * 100.0 ** (k - HALVINGS))
-            # a held component stays exactly where it is (LAPACK's solve moved it by 1e-13)
-            step = np.where(sub.held[pending], 0.0, lam * _lm_step(jac[pending], res[pending], mu))
-            longest = np.abs(step).max(axis=1)
-            step *= np.minimum(1.0, 0.1 * sub.length[pending] / np.maximum(longest, 1e-300))[
-                :, None
-            ]
+            step = trial_step(jac[pending], res[pending], sub.held[pending], sub.length[pending], k)
             trial = v[todo[pending]] + step
             got = _evaluate(sub.take(pending), trial, cur.do[pending], cur.ao[pending],
                             cur.sens[pending])  # fmt: skip
@@ -622,6 +616,19 @@ def _norm2(r: _Ring, st: _State) -> np.ndarray:
     """The 2-norm of the free residual over f_ref (inf: a ball unsolved). [-]"""
     res = np.where(r.held, 0.0, r.f - st.gen)
     return np.where(np.isfinite(st.merit), np.sqrt((res * res).sum(axis=1)) / r.f_ref, np.inf)
+
+
+def trial_step(
+    jac: np.ndarray, res: np.ndarray, held: np.ndarray, length: np.ndarray, k: int
+) -> np.ndarray:
+    """Trial ``k`` of the safeguarded Newton of the ring (or of a pair's shaft): the Newton step
+    halved k times up to HALVINGS, then Levenberg-Marquardt steps with mu growing; the components
+    ``held`` by a symmetry not moved (LAPACK's solve moved them by 1e-13); no longer than a tenth
+    of ``length`` (A). [mm]"""
+    lam, mu = (0.5**k, 0.0) if k < HALVINGS else (1.0, 1e-6 * 100.0 ** (k - HALVINGS))
+    step = np.where(held, 0.0, lam * _lm_step(jac, res, mu))
+    longest = np.abs(step).max(axis=1)
+    return step * np.minimum(1.0, 0.1 * length / np.maximum(longest, 1e-300))[:, None]
 
 
 def _lm_step(jac: np.ndarray, res: np.ndarray, mu: float) -> np.ndarray:

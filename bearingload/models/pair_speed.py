@@ -58,10 +58,8 @@ MODEL = _hs.MODEL
 TOLERANCE = 1e-12
 #: Largest shaft residual accepted at the end (or the rounding level, when larger). [-]
 ACCEPT = 1e-9
-#: Shaft Newton steps; trial steps of each (halvings, then Levenberg-Marquardt). [-]
+#: Shaft Newton steps (the trials of each: the single bearing's ring, high_speed.trial_step). [-]
 ITERATIONS = 200
-LM_TRIALS = 12
-HALVINGS = 6
 #: Stages of the continuation in omega^2. [-]
 CONTINUATION_STAGES = 200
 
@@ -248,14 +246,10 @@ def _newton(sh: _Shaft, v: np.ndarray, balls: tuple[Any, ...]) -> tuple[Any, ...
         size = _norm2(sub, cur)
         do, ao, sens = cur.balls()
         pending = np.arange(todo.size)
-        for k in range(LM_TRIALS):
-            lam, mu = (0.5**k, 0.0) if k < HALVINGS else (1.0, 1e-6 * 100.0 ** (k - HALVINGS))
-            step = lam * _hs._lm_step(jac[pending], res[pending], mu)
-            longest = np.abs(step).max(axis=1)
-            step *= np.minimum(1.0, 0.1 * length[todo[pending]] / np.maximum(longest, 1e-300))[
-                :, None
-            ]
-            trial = v[todo[pending]] + step
+        for k in range(_hs.LM_TRIALS):
+            rows = todo[pending]
+            trial = v[rows] + _hs.trial_step(jac[pending], res[pending], sub.held[pending],
+                                             length[rows], k)  # fmt: skip
             part = sub.take(pending)
             got = _evaluate(part, trial, (do[pending], ao[pending], sens[pending]))
             better = (_norm2(part, got) < (1.0 - 1e-4) * size[pending]) | (got.merit <= TOLERANCE)
