@@ -15,20 +15,23 @@ failing row stands alone, named; the others are written.
 
 from __future__ import annotations
 
+import dataclasses
 from typing import Any
 
 import numpy as np
 
-from bearingload.batch.read import Header, row_message
+from bearingload.batch.read import row_message
 from bearingload.batch.solve import (
     BatchSolver,
     Chunk,
     _angles,
     _check_rotating,
     _hand_angular,
+    _operating,
     _take,
+    dynamics_of,
 )
-from bearingload.errors import BearingloadError, InputError
+from bearingload.errors import BearingloadError, ConvergenceError, InputError
 
 #: Rows times balls solved per pair call (about as many contacts as a combined call).
 CALL_BALLS = 2**14
@@ -40,26 +43,31 @@ class PairSolver(BatchSolver):
 
     def _solved(self, cols: dict[str, list[Any]], numbers: list[int], errors: dict[int, str],
                 bad: dict[int, str]) -> Chunk:  # fmt: skip
+        from bearingload.bearings.oil import OIL_INPUTS
+
         solved = solve_pairs(self, cols, len(numbers), bad)
         out = Chunk()
-        out.rows, out.values = pair_values(pair_columns(self.header), solved, numbers)
+        keys = [c.key for c in pair_columns(None)] + [k for k in OIL_INPUTS if k in cols]
+        out.rows, out.values = pair_values(keys, solved, numbers, cols)
         errors |= {numbers[i]: message for i, message in bad.items()}
         out.errors = sorted(errors.items())
         return out
 
 
-def pair_columns(header: Header) -> list[Any]:
+def pair_columns(service: set[str] | None) -> list[Any]:
     """The output columns of a file of pairs: ``row``, then those ``solve 7205BDB --format
-    csv`` writes (the pair's cross moment in ``pair_moment_cross``; a bearing's record has no
-    ``moment_cross``, so its column, written when the file had one, was always blank)."""
-    from bearingload.reports.pair import OWN_KEYS, csv_columns
+    csv`` writes with the service options the file's columns give (``service``: the service
+    keys they make, :func:`bearingload.batch.report.batch_columns`; None: every one), the
+    pair's as ``pair_...`` (the pair's cross moment in ``pair_moment_cross``; a bearing's
+    record has no ``moment_cross``)."""
+    from bearingload.reports.pair import OWN_KEYS, PAIR_SERVICE, csv_columns
     from bearingload.reports.quantities import SERVICE_KEYS
     from bearingload.reports.solve import column
 
-    del header  # every file of pairs writes the same columns
-    unused = {*SERVICE_KEYS, "ball_density", "rating_life_hours", "reference_rating_life_hours",
-              "moment_cross"}  # fmt: skip
-    return [column("row"), *csv_columns((), [k for k in OWN_KEYS if k not in unused])]
+    unused = {*SERVICE_KEYS, "ball_density", "rating_life_hours", "reference_rating_life_hours"}
+    unused = {"moment_cross"} | (set() if service is None else unused - service)
+    pair = [k for k in PAIR_SERVICE if service is None or k in service]
+    return [column("row"), *csv_columns(pair, [k for k in OWN_KEYS if k not in unused])]
 
 
 def pair_key(solver: Any, v: dict[str, Any]) -> tuple[Any, ...]:
@@ -102,7 +110,7 @@ def pair_key(solver: Any, v: dict[str, Any]) -> tuple[Any, ...]:
         raise InputError("preload", f"must be 0 N or more (got {v['preload']!r} N)")
     tilted = "moment" in v or bool(v.get("moment_cross"))
     return (b, arrangement, v.get("width"), v.get("rotating", "inner"), v.get("dynamic_rating"),
-            tilted, v.get("tilt_radius"))  # fmt: skip
+            tilted, v.get("tilt_radius"), dynamics_of(v, b))  # fmt: skip
 
 
 def solve_pairs(solver: Any, cols: dict[str, list[Any]], n: int,
@@ -145,36 +153,86 @@ def _call(key: tuple[Any, ...], idx: list[int], cols: dict[str, list[Any]]) -> l
     """One vectorised pair solve of the rows ``idx`` of the group ``key``."""
     from bearingload.studies.bearing_pair import solve_bearing_pairs
 
-    b, arrangement, width, rotating, c_r, tilted, lever = key
+    b, arrangement, width, rotating, c_r, tilted, lever, (at_speed, density) = key
     moment = np.array(_take(cols, "moment", idx, 0.0), dtype=float)
-    return solve_bearing_pairs(
-        b, np.array(_take(cols, "load", idx), dtype=float),
-        np.array(_take(cols, "axial_load", idx, 0.0), dtype=float), arrangement=arrangement,
-        preload=np.array(_take(cols, "preload", idx, 0.0), dtype=float), width=width,
-        cage_angle=_angles(_take(cols, "cage_angle", idx, 0.0), b.balls),
-        moment=moment if tilted else None,
-        moment_cross=np.array(_take(cols, "moment_cross", idx, 0.0), dtype=float),
-        tilt_radius=lever, rotating=rotating, dynamic_rating=c_r,
-    )  # fmt: skip
+    dynamics: dict[str, Any] = {"speed": None, "ball_density": None}
+    if at_speed:  # the ball dynamics of both bearings (ball_density as --ball-density, kg/m^3)
+        dynamics["speed"] = np.array(_take(cols, "speed", idx), dtype=float)
+        if density:
+            dynamics["ball_density"] = np.array(_take(cols, "ball_density", idx), float) * 1e-9
+    try:
+        return solve_bearing_pairs(
+            b, np.array(_take(cols, "load", idx), dtype=float),
+            np.array(_take(cols, "axial_load", idx, 0.0), dtype=float), arrangement=arrangement,
+            preload=np.array(_take(cols, "preload", idx, 0.0), dtype=float), width=width,
+            cage_angle=_angles(_take(cols, "cage_angle", idx, 0.0), b.balls),
+            moment=moment if tilted else None,
+            moment_cross=np.array(_take(cols, "moment_cross", idx, 0.0), dtype=float),
+            tilt_radius=lever, rotating=rotating, dynamic_rating=c_r, **dynamics,
+        )  # fmt: skip
+    except (InputError, ConvergenceError) as exc:
+        hinted = _quasi_static_hint(exc) if at_speed else None
+        if hinted is None:
+            raise
+        raise hinted from exc
 
 
-def pair_values(columns: list[Any], solved: list[tuple[int, Any]],
-                numbers: list[int]) -> tuple[list[int], dict[str, list[Any]]]:  # fmt: skip
-    """The output rows of the solved pairs (two per pair: its row number twice) and each
-    column's values over them (None: blank); ``warnings`` on the first row of each pair."""
-    from bearingload.bearings.service_life import Operating, service_values
+def _quasi_static_hint(exc: InputError | ConvergenceError) -> BearingloadError | None:
+    """A pair at speed the ball dynamics leave unbalanced, or refuse as too light, with the way
+    out in the batch's words (solve names --quasi-static); None for another refusal."""
+    from bearingload.models.pair_speed import STATIC_WAY
+
+    way = "quasi_static true gives the static model of the pair"
+    if isinstance(exc, ConvergenceError):
+        return BearingloadError(f"{exc}; {way}")
+    if STATIC_WAY not in str(exc):
+        return None
+    return InputError(exc.parameter, str(exc).split(": ", 1)[-1].replace(STATIC_WAY, way))
+
+
+def pair_values(keys: list[str], solved: list[tuple[int, Any]], numbers: list[int],
+                cols: dict[str, list[Any]]) -> tuple[list[int], dict[str, list[Any]]]:  # fmt: skip
+    """The output rows of the solved pairs (two per pair: its row number twice) and the values
+    of the columns ``keys`` over them (None: blank), as solve gives the pair with the row's
+    service cells as its options: each bearing's lives from its own loads, the pair's from
+    them; ``warnings`` (the pair's, its speed's and its lives') on the first row of each pair;
+    each bearing's model and contacts (json: :data:`bearingload.batch.report.HELD_KEYS`), as a
+    combined file's rows."""
+    from bearingload.bearings.checks import speed_findings
+    from bearingload.bearings.oil import OIL_INPUTS
+    from bearingload.bearings.service_life import service_values
+    from bearingload.reports.combined import contact_values
     from bearingload.reports.pair import csv_rows, pair_records
+    from bearingload.reports.solve import printed_warnings
     from bearingload.studies.life_basis import combined_basis
 
-    keys = [c.key for c in columns if c.key != "row"]
+    keys = [k for k in keys if k != "row"]
+    oil = [k for k in keys if k in OIL_INPUTS]  # written as given (the viscosity is nu's)
     rows: list[int] = []
     values: dict[str, list[Any]] = {k: [] for k in [*keys, "warnings"]}
-    for i, pc in solved:  # C_0 of each bearing, as solve gives it without a service option
-        service = [service_values(Operating(), combined_basis(c)) for c in pc.bearings]
+    for i, pc in solved:
+        op = _row_operating(cols, i)
+        if op.speed is not None:  # above the catalogue's limiting speed, as solve warns
+            found = tuple(speed_findings(op.speed, pc.bearing))
+            pc = dataclasses.replace(pc, warnings=(*pc.warnings, *found))
+        service = [service_values(op, combined_basis(c)) for c in pc.bearings]
         pair, records = pair_records(pc, service)
         for j, out in enumerate(csv_rows(pc, pair, records, keys)):
             rows.append(numbers[i])
             for k in keys:
-                values[k].append(out[k])
-            values["warnings"].append(tuple(pc.warnings) if j == 0 else ())
+                values[k].append(cols[k][i] if k in oil else out[k])
+            said = printed_warnings(pc.warnings, service) if j == 0 else ()
+            values["warnings"].append(tuple(said))
+            held = contact_values(pc.bearings[j].result, pc.bearing.contact_angle)
+            for k, v in held.items():
+                values.setdefault(k, []).append(v)
     return rows, values
+
+
+def _row_operating(cols: dict[str, list[Any]], i: int) -> Any:
+    """Row ``i``'s operating conditions (:class:`bearingload.bearings.service_life.Operating`,
+    numbers as floats), as solve's options give them."""
+    op = _operating(cols, [i])
+    given = {f.name: getattr(op, f.name) for f in dataclasses.fields(op)}
+    return dataclasses.replace(op, **{k: float(v[0]) for k, v in given.items()
+                                      if isinstance(v, np.ndarray)})  # fmt: skip

@@ -100,10 +100,8 @@ LOAD_COLUMNS = ("axial_load", "moment", "moment_cross", "misalignment", "contact
 #: The columns of a bearing pair (solve's --arrangement, --preload, --width): a file with one of
 #: them is a file of pairs, every row a pair (``batch/pairs.py``).
 PAIR_COLUMNS = ("arrangement", "preload", "width")
-#: Columns a file of pairs cannot have (a pair takes no clearance, misalignment, method ...;
-#: its service lives and speed are solve's only, not yet the batch's).
-NOT_PAIRS = ("method", "revolutions", "exponent", "clearance", "clearance_pick", "misalignment",
-             "ball_density", "quasi_static")  # fmt: skip
+#: Columns a file of pairs cannot have (a pair takes no clearance, misalignment, method ...).
+NOT_PAIRS = ("method", "revolutions", "exponent", "clearance", "clearance_pick", "misalignment")
 #: Columns that belong to the combined load (tilt_radius: the lever of its tilt).
 COMBINED_COLUMNS = (*LOAD_COLUMNS, "tilt_radius")
 #: Columns a file with combined-load columns cannot have: its combined rows are solved by the
@@ -248,16 +246,8 @@ def _check_pairs(names: list[str]) -> None:
         raise InputError(
             "columns",
             f"{refused[0]}: not used in a file of bearing pairs ({given[0]}): a pair is solved "
-            "by the exact static model of its angular-contact bearings, no clearance (the "
-            "contact angle fixes the geometry), no misalignment (give the moment)",
-        )
-    life = [n for n in names if n in SERVICE_COLUMNS]
-    if life:
-        raise InputError(
-            "columns",
-            f"{life[0]}: the service lives of a pair (speed, viscosity, reliability ...) are "
-            "not yet given by batch; solve gives them for one pair (its preload and speed "
-            "options)",
+            "by the exact model of its angular-contact bearings, no clearance (the contact "
+            "angle fixes the geometry), no misalignment (give the moment)",
         )
 
 

@@ -101,8 +101,9 @@ def batch_columns(header: Header) -> list[Column]:
     if header.pairs:
         from bearingload.batch.pairs import pair_columns
 
-        return pair_columns(header)
-    columns = _columns(header)
+        columns = pair_columns(_service_outputs(header))
+    else:
+        columns = _columns(header)
     oil = [column(k) for k in OIL_INPUTS if k in header.names]
     at = next((i for i, c in enumerate(columns) if c.key == "viscosity"), len(columns))
     return columns[:at] + oil + columns[at:]
@@ -130,12 +131,11 @@ def _columns(header: Header) -> list[Column]:
 
 def held_keys(header: Header) -> tuple[str, ...]:
     """The keys beyond the columns that json, markdown and table hold for a file with
-    ``header`` (:data:`HELD_KEYS` for a combined-load file, and for a file of bearings with a
-    speed column, whose ball bearings at speed solve gives the ball dynamics)."""
+    ``header`` (:data:`HELD_KEYS` for a combined-load file or a file of pairs, and for a file
+    of bearings with a speed column, whose ball bearings at speed solve gives the ball
+    dynamics)."""
     at_speed = "speed" in header.names and header.has_bearing
-    if header.pairs:
-        return ()
-    return HELD_KEYS if header.combined or at_speed else ()
+    return HELD_KEYS if header.combined or header.pairs or at_speed else ()
 
 
 def csv_head(columns: Sequence[Column]) -> str:

@@ -271,16 +271,7 @@ class BatchSolver:
             raise InputError("load", f"must be 0 N or more (got {v['load']!r} N)")
         lever = cols["_lever"][i] = tilt_lever(v.get("tilt_radius"), b.pitch_diameter)
         tilts = (*(k in v for k in ("moment", "misalignment", "moment_cross")), lever is None)
-        dynamics = _dynamics(v)
-        if dynamics[0] and v.get("rotating") == "outer":  # as solve refuses --rotating outer
-            raise InputError("rotating", "the ball dynamics at a speed are coded for the inner "
-                             "ring turning (docs/speed.md); set quasi_static true for the "
-                             "static model with the outer ring's lives")  # fmt: skip
-        if dynamics[0] and b.stiffness_given:  # as the library refuses it, in the batch's words
-            raise InputError("speed", "the ball dynamics need each contact's Hertz stiffness "
-                             "from the ball geometry, not a given ball stiffness: leave the "
-                             "stiffness cell blank, or set quasi_static true (the static "
-                             "model)")  # fmt: skip
+        dynamics = dynamics_of(v, b)
         return ("combined", b, tilts, v.get("rotating", "inner"), v.get("dynamic_rating"), dynamics)
 
     def _bearing(self, v: dict[str, Any]) -> Any:
@@ -398,6 +389,23 @@ def _hand_angular(v: dict[str, Any], b: Any) -> Any:
             "of an angular-contact bearing",
         )
     return dataclasses.replace(b, contact_angle=float(alpha), clearance=0.0)
+
+
+def dynamics_of(v: dict[str, Any], b: Any) -> tuple[bool, bool]:
+    """:func:`_dynamics` of a row of bearing ``b`` (one bearing or a pair's), refused where the
+    ball dynamics cannot solve it, as solve refuses --rotating outer and a given stiffness at
+    --speed."""
+    dynamics = _dynamics(v)
+    if dynamics[0] and v.get("rotating") == "outer":  # as solve refuses --rotating outer
+        raise InputError("rotating", "the ball dynamics at a speed are coded for the inner "
+                         "ring turning (docs/speed.md); set quasi_static true for the "
+                         "static model with the outer ring's lives")  # fmt: skip
+    if dynamics[0] and b.stiffness_given:  # as the library refuses it, in the batch's words
+        raise InputError("speed", "the ball dynamics need each contact's Hertz stiffness "
+                         "from the ball geometry, not a given ball stiffness: leave the "
+                         "stiffness cell blank, or set quasi_static true (the static "
+                         "model)")  # fmt: skip
+    return dynamics
 
 
 def _dynamics(v: dict[str, Any]) -> tuple[bool, bool]:

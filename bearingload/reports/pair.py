@@ -22,7 +22,13 @@ from typing import Any
 from bearingload.reports.combined import ANGULAR_LABELS, MATRIX_UNITS, contact_angle_shown
 from bearingload.reports.quantities import SERVICE_KEYS, units
 from bearingload.reports.render import Column, Table, render
-from bearingload.reports.solve import column, quantity_rows, service_notes, with_service
+from bearingload.reports.solve import (
+    column,
+    printed_warnings,
+    quantity_rows,
+    service_notes,
+    with_service,
+)
 from bearingload.studies.bearing_pair import ARRANGEMENT_NAMES, PairCase, pair_service_values
 from bearingload.studies.combined_bearing import combined_values
 
@@ -191,7 +197,9 @@ def _document(
     from bearingload.reports.combined import _document as single_document
 
     singles = single_document(list(c.bearings), records, service)
-    said = list(dict.fromkeys([*c.warnings, *singles["warnings"]]))
+    # as the terminal prints them: the pair's and each bearing's labelled (each bearing's own
+    # object lists its own unlabelled), then their lives'; each once
+    said = printed_warnings(c.warnings, service)
     doc = pair | {
         "model": "pair of angular-contact ball bearings on one rigid shaft (ISO/TS 16281 each)"
         + _speed_model(c, pair)[1],
