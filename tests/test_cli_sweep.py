@@ -182,10 +182,12 @@ def test_life_inputs_alone_keep_the_radial_engine_and_give_its_lives():
     combined engine (another report; NU205 -C refused as 'a roller bearing'): input that only
     feeds the lives must not change the engine. The radial sweep now carries them: L10r at each
     cage position equal to solve's radial L10r there and to the combined sweep's (F_a = 0);
-    L10 and L10h the same at every position; the ball loads those of the plain sweep."""
+    L10 and L10h the same at every position; the ball loads those of the plain sweep. (The
+    speed with --quasi-static: without it a ball bearing at speed is swept with the ball
+    dynamics, as solve solves it; tests/test_sweep_speed.py.)"""
     base = ["6205", "-F", "1.4kN", "--steps", "5"]
     plain = _sweep_json(*base)
-    lives = _sweep_json(*base, "--rotating", "outer", "--speed", "3000")
+    lives = _sweep_json(*base, "--rotating", "outer", "--speed", "3000", "--quasi-static")
     assert "stiffness_matrix" in lives["rows"][0] and "axial" not in lives["rows"][0]
     for key in ("x", "y", "q_max", "stiffness_radial"):
         assert [r[key] for r in lives["rows"]] == [r[key] for r in plain["rows"]]
@@ -193,7 +195,8 @@ def test_life_inputs_alone_keep_the_radial_engine_and_give_its_lives():
     assert lives["summary"]["rating_life_hours"] == pytest.approx(1000.0e6 / (60 * 3000))
     assert lives["units"]["reference_rating_life"] == "10^6 rev"
     assert lives["units"]["reference_rating_life_hours"] == "h"
-    combined = _sweep_json(*base, "-A", "0", "--rotating", "outer", "--speed", "3000")
+    combined = _sweep_json(*base, "-A", "0", "--rotating", "outer", "--speed", "3000",
+                           "--quasi-static")  # fmt: skip
     for row, other in zip(lives["rows"], combined["rows"], strict=True):
         assert row["reference_rating_life"] == pytest.approx(
             other["reference_rating_life"], rel=1e-9
@@ -238,9 +241,8 @@ def test_sweep_warns_as_solve_warns_on_the_same_case(capsys, case):
     11 GPa contact pressure and a preload beyond the bound: sweep now gives solve's checks on
     the bearing (at the heaviest ball load of the pitch: at cage angle 0 in these cases, solve's)
     on stderr and in its JSON; only the one-loaded-ball finding names its cage angles. At a
-    speed sweep solves the static model: solve's --quasi-static."""
-    static = ["--quasi-static"] if "--speed" in case else []
-    code, _, solve_err = run_entry(capsys, "solve", *case, *static)
+    speed both solve the ball dynamics."""
+    code, _, solve_err = run_entry(capsys, "solve", *case)
     assert code == 0
     code, out, sweep_err = run_entry(capsys, "sweep", *case, "--format", "json")
     assert code == 0

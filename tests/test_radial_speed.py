@@ -1,7 +1,8 @@
 """``--speed`` on a plain radial solve: a ball bearing is solved with the ball dynamics (the
 combined engine at F_a = 0, exactly as ``--axial-load 0``) unless ``--quasi-static``, which gives
 the static radial engine; a roller bearing stays radial; batch follows solve row by row;
-sweep and table life stay static and say so (docs/speed.md)."""
+sweep --quasi-static and table life stay static and say so (docs/speed.md; sweep at speed:
+tests/test_sweep_speed.py)."""
 
 from __future__ import annotations
 
@@ -196,14 +197,15 @@ def test_a_radial_batch_row_at_speed_is_refused_as_solve_refuses_it():
     ],
 )
 def test_sweep_and_table_life_stay_static_and_say_so(args):
-    """At --speed the note (table, markdown) and the json key ball_dynamics say the static
+    """At --speed (sweep: with --quasi-static) the note (table, markdown) and the json key ball_dynamics say the static
     model was solved; without --speed neither; the numbers are those of the case without the
     speed (the static model)."""
     note = "Ball dynamics left out: the static model"
+    speed = ("--speed", "3000", *(("--quasi-static",) if args[0] == "sweep" else ()))
     for fmt in ("table", "markdown"):
-        assert note in _ok(*args, "--speed", "3000", "--format", fmt)
+        assert note in _ok(*args, *speed, "--format", fmt)
         assert note not in _ok(*args, "--format", fmt)
-    fast = json.loads(_ok(*args, "--speed", "3000", "--format", "json"))
+    fast = json.loads(_ok(*args, *speed, "--format", "json"))
     slow = json.loads(_ok(*args, "--format", "json"))
     assert fast["ball_dynamics"].startswith(note) and "ball_dynamics" not in slow
     for r, s in zip(fast["rows"], slow["rows"], strict=True):

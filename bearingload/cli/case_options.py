@@ -306,11 +306,11 @@ DECLARATIONS: dict[str, tuple[tuple[str, ...], dict[str, Any]]] = {
         "--speed",
         type=Quantity("speed", positive=True),
         help="Shaft speed n of the rotating ring: every life also in hours, L 10^6/(60 n); "
-        "needed for the rated viscosity. In 'solve' a ball bearing includes each ball's "
-        "centrifugal force and gyroscopic moment (outer-raceway control, the inner ring turning; "
-        "the combined engine, F_a = 0 without a load option; docs/speed.md) unless "
-        "--quasi-static; a roller bearing keeps the static model; 'sweep' and 'table' solve the "
-        "static model. Units: rpm, r/min, rad/s, 1/s, Hz (bare number: rpm; a bare number of 1e6 or more is refused).",
+        "needed for the rated viscosity. In 'solve' and 'sweep' a ball bearing includes each "
+        "ball's centrifugal force and gyroscopic moment (outer-raceway control, the inner ring "
+        "turning; the combined engine, F_a = 0 without a load option; docs/speed.md) unless "
+        "--quasi-static; a roller bearing (and a pair's sweep) keeps the static model; 'table' "
+        "solves the static model. Units: rpm, r/min, rad/s, 1/s, Hz (bare number: rpm; a bare number of 1e6 or more is refused).",
     ),
     "ball_density": _option(
         "--ball-density",

@@ -8,7 +8,6 @@ import click
 
 from bearingload.cli.case_options import (
     COMBINED_PARAMS,
-    DYNAMICS_PARAMS,
     SERVICE_PARAMS,
     CaseOptions,
     case_options,
@@ -34,7 +33,7 @@ SERVICE_REFUSAL = (
 @click.command(context_settings=CONTEXT)
 @case_options(
     omit=("cage_angle",),
-    hidden=[*(n for n in SERVICE_PARAMS if n != "speed"), *DYNAMICS_PARAMS],
+    hidden=[n for n in SERVICE_PARAMS if n != "speed"],
     pair=True,
 )
 @click.option(
@@ -93,8 +92,14 @@ def sweep(
     a misalignment is given; --tilt-radius sets the lever), Q_max and its ball, the loaded balls,
     the largest contact angle and the reference rating life L10r of the rotating ring (default
     inner); beside them ISO 281's (C_r/P)^3, the same at every position. Not for roller bearings
-    or --kurochkin-T. The life options alone (--dynamic-rating, --rotating, --speed) never
-    change the engine: the radial sweep adds L10r at each position (ball bearings) and L10.
+    or --kurochkin-T. The life options alone (--dynamic-rating, --rotating) never change the
+    engine: the radial sweep adds L10r at each position (ball bearings) and L10.
+
+    With --speed a ball bearing is swept as 'solve --speed' solves it: every position with the
+    ball dynamics (each ball's centrifugal force and gyroscopic moment, outer-raceway control;
+    a radial load on the 3-D engine at F_a = 0; --ball-density for ceramic balls), the lives
+    also in hours. --quasi-static keeps the static model (the speed then gives the hours only),
+    as do roller bearings and a bearing pair (7205BDB) for now.
 
     \b
     Examples:
@@ -114,6 +119,8 @@ def sweep(
       bearingload sweep 6205 -F 1kN -A 300N --moment 5Nm --format json
       # a moment of 2 N m about the load line, the tilt at the pitch radius as MASTA
       bearingload sweep 6205 -F 1kN -A 300N --moment-cross 2Nm --tilt-radius pitch --steps 9
+      # a 6205 at 10000 rpm: the ball dynamics at every cage position, L10r also in hours
+      bearingload sweep 6205 -F 1kN -A 300N --speed 10000 --steps 9
       # a back-to-back pair of 7205B, 300 N preload: the shaft, each bearing's Q_max, stiffness
       bearingload sweep 7205BDB --preload 300N -F 1kN -A 200N --steps 7
     """
@@ -124,8 +131,6 @@ def sweep(
         "an angular-contact designation (7205B; docs/angular_contact.md)",
     )
     case.refuse([n for n in SERVICE_PARAMS if n != "speed"], "sweep", SERVICE_REFUSAL)
-    case.refuse(DYNAMICS_PARAMS, "sweep", "the sweep solves the static model (--speed gives "
-                "L10rh); the ball dynamics at speed are solved by 'bearingload solve'")  # fmt: skip
     if kurochkin_t is not None:
         _kurochkin(case, kurochkin_t, steps, plot, fmt, output)
         return
@@ -134,12 +139,20 @@ def sweep(
     refuse_range(case, "sweep")
     pair = case.as_pair()
     if pair is not None:
+        pair.refuse(("ball_density",), "the sweep of a bearing pair", "it solves the static "
+                    "pair at any speed (the speed gives the hours); 'bearingload solve' gives "
+                    "the pair's ball dynamics")  # fmt: skip
+        pair.check_dynamics_flags()
         _pair(pair, steps, plot, fmt, output)
         return
     if plot is not None:
         check_plot(plot)
+    from bearingload.cli.solve import _radial_at_speed, _refuse_static_dynamics
+
+    _refuse_static_dynamics(case)
+    case, radial = _radial_at_speed(case)  # a radial ball bearing at speed: F_a = 0, dynamics
     if case.wants_combined:  # the load alone chooses the engine, never a life option
-        _combined(case, steps, plot, fmt, output)
+        _combined(case, steps, plot, fmt, output, radial)
         return
     refuse_tilt_radius(case)
     z, k, g_r, m, context = resolve_case(case)
@@ -205,22 +218,23 @@ def _radial_lives(case: CaseOptions) -> tuple[Any, dict[str, Any]]:
 
 
 def _combined(
-    case: CaseOptions, steps: int, plot: str | None, fmt: str, output: str | None
-) -> None:
-    """The sweep under a combined load: one vectorised 3-D solve over the pitch, then emit."""
+    case: CaseOptions, steps: int, plot: str | None, fmt: str, output: str | None,
+    radial: bool = False,
+) -> None:  # fmt: skip
+    """The sweep under a combined load: one vectorised 3-D solve over the pitch (at --speed the
+    ball dynamics, unless --quasi-static; ``radial``: a radial case at speed, F_a = 0 set),
+    then emit."""
+    import dataclasses
+
+    from bearingload.bearings.checks import speed_findings
     from bearingload.cli.cases import bearing_context, resolve_bearings
     from bearingload.cli.options import print_warnings
     from bearingload.cli.solve import with_ratings
     from bearingload.reports.combined_sweep import combined_sweep_report
-    from bearingload.studies.combined_sweep import combined_sweep
 
     b = with_ratings(resolve_bearings(case, case.stiffness_value()), case)[0]
-    result = combined_sweep(b, case.radial_load, steps=steps, **case.combined_arguments())
-    if case.speed is not None:
-        import dataclasses
-
-        from bearingload.bearings.checks import speed_findings
-
+    result = _combined_sweep(b, case, steps, radial)
+    if case.speed is not None:  # the hours (and the dynamics' speed); the limiting speed
         found = (*result.warnings, *speed_findings(case.speed, b))
         result = dataclasses.replace(result, speed=case.speed, warnings=found)
     text = combined_sweep_report(result, fmt, bearing_context(b))
@@ -230,6 +244,29 @@ def _combined(
 
         save_plot(lambda: combined_sweep_figure(result, b.designation), plot)
     emit(text, output)
+
+
+def _combined_sweep(b: Any, case: CaseOptions, steps: int, radial: bool) -> Any:
+    """:func:`bearingload.studies.combined_sweep.combined_sweep` of the case, a refusal of the
+    ball dynamics naming --quasi-static as solve's does."""
+    from bearingload.cli.solve import QUASI_STATIC_WAY, _quasi_static_hint
+    from bearingload.errors import ConvergenceError, InputError
+    from bearingload.studies.combined_sweep import combined_sweep
+
+    dynamics = case.dynamics_arguments()
+    try:
+        return combined_sweep(b, case.radial_load, steps=steps, **case.combined_arguments(),
+                              **dynamics)  # fmt: skip
+    except InputError as exc:
+        hinted = _quasi_static_hint(exc, radial) if dynamics["speed"] is not None else None
+        if hinted is None:
+            raise
+        raise hinted from exc
+    except ConvergenceError as exc:
+        if dynamics["speed"] is None:
+            raise
+        way = QUASI_STATIC_WAY if radial else "--quasi-static gives the static model"
+        raise click.ClickException(f"{exc}; {way}") from exc
 
 
 def _pair(case: CaseOptions, steps: int, plot: str | None, fmt: str, output: str | None) -> None:

@@ -158,7 +158,10 @@ def _spread_table(s: CombinedSweep, context: str) -> Table:
     notes = ["mean: over one period (the last position, equal to the first, left out).", *NOTES]
     if angular:  # the axial origin: the zero-load position, not the centred rings
         notes[2] = ANGULAR_NOTE
-    if s.speed is not None:
+    dynamics = _dynamics(s)
+    if dynamics is not None:
+        notes.append(DYNAMICS_NOTE.format(dynamics))
+    elif s.speed is not None:
         notes.append(STATIC_AT_SPEED)
     return spread_table(f"Over one ball pitch ({title(s)})", entries, notes, context)
 
@@ -213,10 +216,24 @@ def _axial_origin(s: CombinedSweep) -> str:
 
 
 def _model(s: CombinedSweep) -> str:
-    alpha = s.bearing.contact_angle
-    kind = ("deep-groove ball bearing" if alpha is None
-            else f"single-row angular-contact ball bearing, {alpha:g}°")  # fmt: skip
-    return f"3-D ring equilibrium, {kind} (ISO/TS 16281)"
+    """The model as solve's json names it (:func:`bearingload.reports.combined.contact_values`):
+    at a speed the ball dynamics added."""
+    from bearingload.reports.combined import contact_values
+
+    return str(contact_values(s.result, s.bearing.contact_angle)["model"])
+
+
+def _dynamics(s: CombinedSweep) -> str | None:
+    """The ball dynamics' model of a sweep at speed (None: the static model)."""
+    return getattr(s.result, "model", None)
+
+
+#: The note of a sweep with the ball dynamics (the model's name filled in).
+DYNAMICS_NOTE = (
+    "Speed: {} at every cage position (Jones 1960; Harris & Kotzalas; docs/speed.md): Q_max, its "
+    "ball, the loaded balls and alpha_max are the inner contacts'; L10r takes each ball's inner "
+    "load for the inner ring, its outer load for the outer ring."
+)
 
 
 def _csv_table(s: CombinedSweep) -> Table:
@@ -256,4 +273,4 @@ def combined_sweep_json(s: CombinedSweep) -> dict[str, Any]:
         "units": units(keys, 1.5),
         "geometry": geometry_document(s.bearing),
         "warnings": list(s.warnings),
-    } | static_at_speed(s.speed)
+    } | (static_at_speed(s.speed) if _dynamics(s) is None else {})

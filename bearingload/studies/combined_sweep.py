@@ -166,6 +166,8 @@ def combined_sweep(
     steps: Any = DEFAULT_STEPS,
     moment_cross: float | None = None,
     tilt_radius: str | float | None = None,
+    speed: float | None = None,
+    ball_density: float | None = None,
 ) -> CombinedSweep:
     """Solve a deep-groove ball bearing under a combined load at ``steps`` cage positions.
 
@@ -194,6 +196,11 @@ def combined_sweep(
         Moment about the load line (MASTA's M_x); None: not given (0). [N mm]
     tilt_radius : {"groove", "pitch"} or float, optional
         Lever of the tilt, see :mod:`bearingload.bearings.tilt`; None: groove. [mm]
+    speed, ball_density : float, optional
+        Inner ring speed [rpm]: every position solved with the ball dynamics of
+        :mod:`bearingload.models.high_speed` (each ball's centrifugal force and gyroscopic
+        moment, outer-raceway control), as ``solve --speed`` solves one; the lives also in
+        hours at it. Ball density [kg/mm^3], default steel. None: the static model.
 
     Returns
     -------
@@ -237,6 +244,8 @@ def combined_sweep(
                 misalignment=misalignment,
                 moment_cross=moment_cross,
                 tilt_radius=lever,
+                speed=speed,
+                ball_density=ball_density,
             )  # fmt: skip
             for i in range(0, angles.size, chunk)
         ]
@@ -247,6 +256,7 @@ def combined_sweep(
     heaviest = np.argmax(loads >= top * (1.0 - TIE), axis=1) + 1
     tilt = warned_tilt(r, moment, moment_cross, misalignment)
     found = combined_warnings(bearing, load, axial_load, float(np.max(r.q_max)), 2, tilt)
+    found += _groove_side(r, angles)
     one = np.asarray(r.loaded_balls) == 1
     if one.any() and bearing.balls > 1:
         found.append(
@@ -268,16 +278,36 @@ def combined_sweep(
         warnings=tuple(found),
         moment_cross=moment_cross,
         tilt_radius=lever,
+        speed=speed,
     )
 
 
+def _groove_side(r: CombinedDistribution, angles: np.ndarray) -> list[str]:
+    """At a speed, solve's warning on balls whose loaded inner contact sits at 90° (the
+    groove's side: :func:`bearingload.studies.combined_bearing.groove_side_warnings`), once,
+    with the cage angles where it holds. [°]"""
+    from bearingload.studies.combined_bearing import groove_side_warnings
+
+    sides = groove_side_warnings(r, angles.size)
+    at = [i for i, w in enumerate(sides) if w is not None]
+    if not at:
+        return []
+    why = str(sides[at[0]]).split("sits at 90°", 1)[1]
+    return [f"at {len(at)} of {angles.size} cage angles ({angles[at].min():.6g}° to "
+            f"{angles[at].max():.6g}°) the loaded inner contact of a ball sits at 90°{why}"]  # fmt: skip
+
+
 def _joined(parts: Sequence[CombinedDistribution]) -> CombinedDistribution:
-    """The solutions of consecutive chunks of cage positions as one (the one part as it is)."""
+    """The solutions of consecutive chunks of cage positions as one (the one part as it is;
+    at a speed, :class:`bearingload.models.high_speed.HighSpeedDistribution`'s fields too)."""
     if len(parts) == 1:
         return parts[0]
-    joined = {
-        f.name: np.concatenate([getattr(p, f.name) for p in parts])
-        for f in dataclasses.fields(CombinedDistribution)
-        if f.name != "balls"
+    kind = type(parts[0])
+    fixed = {"balls", "model"}
+    joined: dict[str, Any] = {
+        f.name: getattr(parts[0], f.name)
+        if f.name in fixed
+        else np.concatenate([getattr(p, f.name) for p in parts])
+        for f in dataclasses.fields(kind)
     }
-    return CombinedDistribution(balls=parts[0].balls, **joined)
+    return kind(**joined)
