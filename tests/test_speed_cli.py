@@ -130,3 +130,29 @@ def test_a_loaded_inner_contact_at_90_degrees_is_warned(capsys):
     )
     code, _, err = run_entry(capsys, "solve", "7205B", "-F", "1kN", "-A", "1kN", "--speed", "5000")
     assert code == 0 and "inner contact sits at 90°" not in err
+
+
+def test_a_speed_of_0_says_what_a_shaft_at_rest_is(capsys):
+    """--speed 0 was refused as 'must be greater than 0 rpm' alone: the user means a shaft at
+    rest, which is the case without --speed (the ball dynamics at 0 rpm are the static model,
+    tests/test_high_speed.py); the message says so (batch: a blank cell)."""
+    code, out, err = run_entry(capsys, "solve", "6205", "-F", "1kN", "--speed", "0")
+    assert code == 2 and out == ""
+    assert err.strip().splitlines()[-1] == (
+        "Error: Invalid value for '--speed': must be greater than 0 rpm (got 0): a shaft at rest "
+        "is the case without --speed: the static model (the answer of the ball dynamics at 0 "
+        "rpm), its lives in 10^6 revolutions, none in hours"
+    )
+    code, _, err = run_entry(capsys, "solve", "6205", "-F", "1kN", "--speed", "-5")
+    assert err.strip().splitlines()[-1].endswith("must be greater than 0 rpm (got -5)")
+    from click.testing import CliRunner
+
+    from bearingload.cli import main
+
+    batch = CliRunner().invoke(main, ["batch", "-", "--format", "csv"],
+                               input="bearing,load,speed\n6205,1kN,0\n")  # fmt: skip
+    assert batch.exit_code == 1
+    assert batch.stderr.splitlines()[0] == (
+        "Warning: row 2: speed: must be greater than 0 rpm, or blank for a shaft at rest: the "
+        "static model, its lives in 10^6 revolutions (got 0)"
+    )

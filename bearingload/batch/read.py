@@ -76,7 +76,8 @@ SERVICE_COLUMNS = ("speed", "reliability", "oil", "viscosity_40", "viscosity_100
 SERVICE_RANGES: dict[str, tuple[float, float, bool, str]] = {
     "static_rating": (0.0, float("inf"), False, "must be greater than 0 N"),
     "fatigue_load_limit": (0.0, float("inf"), False, "must be greater than 0 N"),
-    "speed": (0.0, float("inf"), False, "must be greater than 0 rpm"),
+    "speed": (0.0, float("inf"), False, "must be greater than 0 rpm, or blank for a shaft at "
+              "rest: the static model, its lives in 10^6 revolutions"),
     "viscosity": (0.0, float("inf"), False, "must be greater than 0 mm^2/s"),
     "viscosity_40": (0.0, float("inf"), False, "must be greater than 0 mm^2/s"),
     "viscosity_100": (0.0, float("inf"), False, "must be greater than 0 mm^2/s"),

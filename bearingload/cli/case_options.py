@@ -49,6 +49,9 @@ TILT_PARAMS = ("tilt_radius",)
 SERVICE_PARAMS = ("static_rating", "speed", "reliability", "viscosity", "oil", "viscosity_40",
                   "viscosity_100", "viscosity_index", "temperature", "contamination", "e_c",
                   "fatigue_load_limit", "roughness", "pressure_viscosity")  # fmt: skip
+#: What --speed 0 means (a shaft at rest) and how to ask for it.
+AT_REST = ("a shaft at rest is the case without --speed: the static model (the answer of the "
+           "ball dynamics at 0 rpm), its lives in 10^6 revolutions, none in hours")  # fmt: skip
 #: The options of the ball dynamics at --speed (solve's ball bearings: the combined engine).
 DYNAMICS_PARAMS = ("ball_density", "quasi_static")
 #: The options that give the operating viscosity from the oil (instead of --viscosity).
@@ -304,7 +307,7 @@ DECLARATIONS: dict[str, tuple[tuple[str, ...], dict[str, Any]]] = {
     ),
     "speed": _option(
         "--speed",
-        type=Quantity("speed", positive=True),
+        type=Quantity("speed", positive=True, at_zero=AT_REST),
         help="Shaft speed n of the rotating ring: every life also in hours, L 10^6/(60 n); "
         "needed for the rated viscosity. In 'solve' and 'sweep' a ball bearing includes each "
         "ball's centrifugal force and gyroscopic moment (outer-raceway control, the inner ring "

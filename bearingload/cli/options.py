@@ -17,9 +17,10 @@ CONTEXT = {"help_option_names": ["-h", "--help"], "max_content_width": 100}
 class Quantity(click.ParamType):
     """A number with an optional unit suffix, converted to the package's internal unit."""
 
-    def __init__(self, kind: str, *, positive: bool = False) -> None:
+    def __init__(self, kind: str, *, positive: bool = False, at_zero: str = "") -> None:
         self.kind = kind
         self.positive = positive
+        self.at_zero = at_zero  # what a user giving 0 means, and how to ask for it
         self.name = f"{kind} [{BASE_UNIT[kind]}]"
 
     def convert(
@@ -34,7 +35,9 @@ class Quantity(click.ParamType):
         if self.kind == "stiffness":
             return str(value)  # converted with the exponent by the command (stiffness_value)
         if self.positive and not number > 0:
-            self.fail(f"must be greater than 0 {BASE_UNIT[self.kind]} (got {value})", param, ctx)
+            hint = f": {self.at_zero}" if self.at_zero and number == 0 else ""
+            self.fail(f"must be greater than 0 {BASE_UNIT[self.kind]} (got {value}){hint}", param,
+                      ctx)  # fmt: skip
         return number
 
     def get_metavar(self, param: click.Parameter, ctx: click.Context | None = None) -> str:
