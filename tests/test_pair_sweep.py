@@ -28,6 +28,8 @@ def _run(*args: str):
         ["7205BDT", "-F", "1kN", "-A", "500N", "--rotating", "outer"],
         ["7205BDB", "-F", "500N", "-A", "2kN"],
         [*PAIR, "--speed", "6000"],
+        [*PAIR, "--speed", "20000", "--ball-density", "3200"],
+        [*PAIR, "--speed", "6000", "--quasi-static"],
     ],
 )  # fmt: skip
 def test_every_position_is_solves_pair_at_that_cage_angle(args):
@@ -40,9 +42,8 @@ def test_every_position_is_solves_pair_at_that_cage_angle(args):
         cells = dict(zip(next(csv.reader([lines[0]])), next(csv.reader([lines[1 + 2 * k]])),
                          strict=True))  # fmt: skip
         angles.append(cells["cage_angle [°]"])
-        static = ["--quasi-static"] if "--speed" in args else []  # the sweep's static model
-        solved = _run("solve", *args, *static, "--cage-angle", cells["cage_angle [°]"],
-                      "--format", "csv")  # fmt: skip
+        solved = _run("solve", *args, "--cage-angle", cells["cage_angle [°]"], "--format",
+                      "csv")  # fmt: skip
         assert solved.exit_code == 0
         assert solved.stdout.splitlines() == [lines[0], *lines[1 + 2 * k : 3 + 2 * k]]
     assert [float(a) for a in angles] == [0.0, 7.5, 15.0, 22.5, 30.0]
@@ -133,10 +134,11 @@ def test_speed_gives_the_pairs_l10r_in_hours_at_every_position():
         )
     hours = [r["reference_rating_life_hours"] for r in doc["rows"]]
     assert doc["summary"]["reference_rating_life_hours"]["min"] == min(hours)
-    assert doc["model"].endswith("the static model at the speed given (the ball dynamics left out)")
-    text = _run("sweep", *PAIR, "--steps", "3", "--speed", "6000").stdout
+    assert doc["model"].endswith("outer-raceway control in both bearings")  # the dynamics
+    quasi = ("sweep", *PAIR, "--steps", "3", "--speed", "6000", "--quasi-static")
+    model = json.loads(_run(*quasi, "--format", "json").stdout)["model"]
+    assert model.endswith("the static model at the speed given (the ball dynamics left out)")
     assert (
-        "Speed: ball dynamics left out: the pair is solved by the static model (the speed gives "
-        "the lives in hours only); 'bearingload solve' gives them (centrifugal force, gyroscopic "
-        "moment; docs/speed.md)."
-    ) in text.splitlines()
+        "Speed: --quasi-static: the pair is solved by the static model (the ball dynamics left "
+        "out); the speed gives the lives in hours only."
+    ) in _run(*quasi).stdout.splitlines()

@@ -117,11 +117,11 @@ def test_an_inner_contact_on_the_groove_side_is_warned_of(capsys):
         (("6205", "-F", "1kN", "--ball-density", "3200"),
          "Error: Invalid value for '--ball-density': it enters the ball dynamics at --speed, "
          "which --quasi-static or a missing --speed leave out"),
-        (("7205BDB", "--preload", "300N", "-F", "1kN", "--speed", "3000", "--ball-density",
-          "3200"),
-         "Error: --ball-density cannot be used with the sweep of a bearing pair: it solves the "
-         "static pair at any speed (the speed gives the hours); 'bearingload solve' gives the "
-         "pair's ball dynamics"),
+        (("7205BDB", "--preload", "300N", "-F", "1kN", "--ball-density", "3200"),
+         "Error: Invalid value for '--ball-density': it enters the ball dynamics at --speed, "
+         "which --quasi-static or a missing --speed leave out"),
+        (("7205BDB", "--preload", "0", "-F", "0", "-A", "1e-6N", "--speed", "30000"),
+         None),
         (("6205", "-F", "1kN", "--speed", "3000", "--rotating", "outer"),
          "Error: Invalid value for '--rotating': the ball dynamics at --speed are coded for the "
          "inner ring turning (docs/speed.md); give --quasi-static for the static model with the "
@@ -131,4 +131,27 @@ def test_an_inner_contact_on_the_groove_side_is_warned_of(capsys):
 def test_refusals_name_the_option_and_the_way(capsys, args, message):
     code, out, err = run_entry(capsys, "sweep", *args, "--steps", "3")
     assert code != 0 and out == ""
+    if message is None:  # as solve refuses the case, naming --quasi-static
+        code, _, said = run_entry(capsys, "solve", *args)
+        assert code != 0 and "--quasi-static gives the static model" in said
+        message = said.strip()
     assert err.strip().splitlines() == [message]
+
+
+def test_every_position_of_a_pair_is_solve_at_that_cage_angle():
+    """A pair at speed: both bearings' ball dynamics at every position (before: the static
+    pair, the speed giving the hours only), each position solve 7205BDB --cage-angle there."""
+    options = ("7205BDB", "--preload", "300N", "-F", "1kN", "-A", "200N", "--speed", "20000")
+    sweep = _json("sweep", *options, "--steps", "3")
+    assert sweep["model"].endswith("outer-raceway control in both bearings")
+    quasi = _json("sweep", *options, "--quasi-static", "--steps", "3")
+    assert "the static model at the speed given" in quasi["model"]
+    for row, static in zip(sweep["rows"], quasi["rows"], strict=True):
+        (case,) = _json("solve", *options, "--cage-angle", repr(row["cage_angle"]))["cases"]
+        for key in ("x", "axial", "tilt", "stiffness_radial", "reference_rating_life_hours"):
+            assert row[key] == pytest.approx(case[key], rel=1e-9), key
+        for k in (0, 1):
+            assert row["bearings"][k]["q_max"] == pytest.approx(
+                case["bearings"][k]["q_max"], rel=1e-9
+            )
+        assert row["x"] != static["x"]  # the dynamics move the shaft

@@ -312,7 +312,7 @@ DECLARATIONS: dict[str, tuple[tuple[str, ...], dict[str, Any]]] = {
         "needed for the rated viscosity. In 'solve' and 'sweep' a ball bearing includes each "
         "ball's centrifugal force and gyroscopic moment (outer-raceway control, the inner ring "
         "turning; the combined engine, F_a = 0 without a load option; docs/speed.md) unless "
-        "--quasi-static; a roller bearing (and a pair's sweep) keeps the static model; 'table' "
+        "--quasi-static (a pair: both bearings); a roller bearing keeps the static model; 'table' "
         "solves the static model. Units: rpm, r/min, rad/s, 1/s, Hz (bare number: rpm; a bare number of 1e6 or more is refused).",
     ),
     "ball_density": _option(

@@ -336,23 +336,29 @@ def _pair(
     try:
         pc = solve_bearing_pair(b, case.radial_load, case.axial_load or 0.0,
                                 **case.pair_arguments(b.balls), **dynamics)  # fmt: skip
-    except ConvergenceError as exc:
-        if dynamics["speed"] is None:
+    except (ConvergenceError, InputError) as exc:
+        hinted = pair_speed_hint(exc) if dynamics["speed"] is not None else None
+        if hinted is None:
             raise
-        raise click.ClickException(f"{exc}; --quasi-static gives the static model") from exc
-    except InputError as exc:  # too light for the ball dynamics: the library's way, our option
-        from bearingload.models.pair_speed import STATIC_WAY
-
-        if STATIC_WAY not in str(exc):
-            raise
-        message = str(exc).split(": ", 1)[-1].replace(STATIC_WAY, "--quasi-static gives the "
-                                                     "static model")  # fmt: skip
-        raise InputError(exc.parameter, message) from exc
+        raise hinted from exc
     pc = with_speed_warnings([pc], case.speed)[0]  # the bearing's limiting speeds
     # each bearing's service lives as one bearing's from its own loads; the pair's from them
     service = service_lives(case, [combined_basis(c) for c in pc.bearings])
     text = pair_report(pc, fmt, per_ball=per_ball, show_geometry=show_geometry, service=service)
     return text, printed_warnings(pc.warnings, service)
+
+
+def pair_speed_hint(exc: ConvergenceError | InputError) -> Exception | None:
+    """A pair at --speed the ball dynamics leave unbalanced, or refuse as too light (the
+    library's way out), with --quasi-static named; None for another refusal."""
+    from bearingload.models.pair_speed import STATIC_WAY
+
+    way = "--quasi-static gives the static model"
+    if isinstance(exc, ConvergenceError):
+        return click.ClickException(f"{exc}; {way}")
+    if STATIC_WAY not in str(exc):
+        return None
+    return InputError(exc.parameter, str(exc).split(": ", 1)[-1].replace(STATIC_WAY, way))
 
 
 def _radial(

@@ -98,8 +98,8 @@ def sweep(
     With --speed a ball bearing is swept as 'solve --speed' solves it: every position with the
     ball dynamics (each ball's centrifugal force and gyroscopic moment, outer-raceway control;
     a radial load on the 3-D engine at F_a = 0; --ball-density for ceramic balls), the lives
-    also in hours. --quasi-static keeps the static model (the speed then gives the hours only),
-    as do roller bearings and a bearing pair (7205BDB) for now.
+    also in hours; a pair (7205BDB): both bearings' ball dynamics. --quasi-static keeps the
+    static model (the speed then gives the hours only), as do roller bearings.
 
     \b
     Examples:
@@ -139,10 +139,6 @@ def sweep(
     refuse_range(case, "sweep")
     pair = case.as_pair()
     if pair is not None:
-        pair.refuse(("ball_density",), "the sweep of a bearing pair", "it solves the static "
-                    "pair at any speed (the speed gives the hours); 'bearingload solve' gives "
-                    "the pair's ball dynamics")  # fmt: skip
-        pair.check_dynamics_flags()
         _pair(pair, steps, plot, fmt, output)
         return
     if plot is not None:
@@ -274,7 +270,8 @@ def _pair(case: CaseOptions, steps: int, plot: str | None, fmt: str, output: str
     pitch, then emit."""
     from bearingload.cli.cases import bearing_context
     from bearingload.cli.options import print_warnings
-    from bearingload.cli.solve import pair_bearing
+    from bearingload.cli.solve import pair_bearing, pair_speed_hint
+    from bearingload.errors import ConvergenceError, InputError
     from bearingload.reports.pair_sweep import pair_sweep_report
     from bearingload.studies.pair_sweep import pair_sweep
 
@@ -290,8 +287,16 @@ def _pair(case: CaseOptions, steps: int, plot: str | None, fmt: str, output: str
     b = pair_bearing(case)
     args = case.pair_arguments(b.balls)
     del args["cage_angle"]
-    result = pair_sweep(b, case.radial_load, case.axial_load or 0.0, steps=steps, **args)
-    if case.speed is not None:  # the lives in hours; the loads stay the static model's
+    dynamics = case.dynamics_arguments()  # at --speed both bearings' ball dynamics
+    try:
+        result = pair_sweep(b, case.radial_load, case.axial_load or 0.0, steps=steps, **args,
+                            **dynamics)  # fmt: skip
+    except (ConvergenceError, InputError) as exc:
+        hinted = pair_speed_hint(exc) if dynamics["speed"] is not None else None
+        if hinted is None:
+            raise
+        raise hinted from exc
+    if case.speed is not None:  # the lives in hours (and the dynamics' speed); the limit
         import dataclasses
 
         from bearingload.bearings.checks import speed_findings

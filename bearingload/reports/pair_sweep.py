@@ -41,11 +41,10 @@ NOTES = (
     "--cage-angle); the pair: the shaft's displacement at the pair's centre and its stiffness "
     "(docs/angular_contact.md); L10r: the pair's, (L1^-e + L2^-e)^(-1/e), e = 10/9.",
 )
-#: The note of a pair sweep at --speed (as one bearing's sweep: the static model).
+#: The note of a pair sweep at --speed with --quasi-static (as one bearing's: the static model).
 HOURS_NOTE = (
-    "Speed: ball dynamics left out: the pair is solved by the static model (the speed gives the "
-    "lives in hours only); 'bearingload solve' gives them (centrifugal force, gyroscopic "
-    "moment; docs/speed.md)."
+    "Speed: --quasi-static: the pair is solved by the static model (the ball dynamics left "
+    "out); the speed gives the lives in hours only."
 )
 #: The per-position columns of the human table: (key, bearing or None, header).
 ROW_KEYS = (
@@ -112,8 +111,24 @@ def _spread_table(s: PairSweep, context: str) -> Table:
         sp = s.spread(q.key, k)
         assert sp is not None
         entries.append((dataclasses.replace(q, label=label), sp, q.shown()))
-    notes = [*NOTES, *([HOURS_NOTE] if s.speed is not None else [])]
+    notes = [*NOTES, *_speed_notes(s)]
     return spread_table(f"Over one ball pitch ({title(s)})", entries, notes, context)
+
+
+def _speed_notes(s: PairSweep) -> list[str]:
+    """The note of a pair sweep at a speed: the ball dynamics of both bearings, or the static
+    model (--quasi-static)."""
+    if s.dynamics is not None:
+        return [SWEEP_DYNAMICS_NOTE.format(s.dynamics)]
+    return [HOURS_NOTE] if s.speed is not None else []
+
+
+#: The note of a pair sweep with the ball dynamics (the model's name filled in).
+SWEEP_DYNAMICS_NOTE = (
+    "Speed: {} in both bearings at every cage position (Jones 1960; Harris & Kotzalas; "
+    "docs/speed.md): Q_max and the loaded balls are the inner contacts'; each bearing's L10r "
+    "takes the inner loads for the inner ring, the outer loads for the outer ring."
+)
 
 
 def title(s: PairSweep) -> str:
@@ -172,13 +187,20 @@ def pair_sweep_json(s: PairSweep) -> dict[str, Any]:
     return {
         **head,
         "model": "pair of angular-contact ball bearings on one rigid shaft (ISO/TS 16281 each), "
-        "both cages at the cage angle" + (STATIC_AT_SPEED if s.speed is not None else ""),
+        "both cages at the cage angle" + _model_end(s),
         "steps": len(s.cases),
         "rows": rows,
         "summary": summary,
         "units": units(list(dict.fromkeys(keys)), 1.5),
         "warnings": list(s.warnings),
     }
+
+
+def _model_end(s: PairSweep) -> str:
+    """The end of the json's ``model``: the ball dynamics, or the static model at a speed."""
+    if s.dynamics is not None:
+        return f"; {s.dynamics} in both bearings"
+    return STATIC_AT_SPEED if s.speed is not None else ""
 
 
 #: The columns of ``table life`` of a pair: (key, bearing or None, header).

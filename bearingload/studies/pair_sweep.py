@@ -45,8 +45,9 @@ class PairSweep:
     warnings : tuple of str
         The findings of every position, each once, in order.
     speed : float or None
-        Shaft speed n for the pair's L10r in hours, L 10^6/(60 n) (the loads are the static
-        model's); None: not given. [r/min]
+        Shaft speed n for the pair's L10r in hours, L 10^6/(60 n) (the loads are the ball
+        dynamics' where the cases carry them, :attr:`dynamics`, else the static model's); None:
+        not given. [r/min]
     """
 
     bearing: ResolvedBearing
@@ -63,6 +64,11 @@ class PairSweep:
     def cage_angle(self) -> np.ndarray:
         """Angle of ball 1 from the load line at every position, 0 to 360/z. [°]"""
         return np.array([float(c.bearings[0].result.cage_angle) for c in self.cases])
+
+    @property
+    def dynamics(self) -> str | None:
+        """The ball dynamics' model where the positions were solved with them, else None."""
+        return getattr(self.cases[0].result, "model", None)
 
     def values(self, key: str, bearing: int | None = None) -> np.ndarray | None:
         """The per-position values of the pair's ``key`` (:data:`PAIR_KEYS`), or of bearing
@@ -106,11 +112,15 @@ def pair_sweep(
     rotating: str = "inner",
     dynamic_rating: float | None = None,
     steps: Any = DEFAULT_STEPS,
+    speed: float | None = None,
+    ball_density: float | None = None,
 ) -> PairSweep:
     """Solve the pair of two bearings ``bearing`` at ``steps`` cage positions over one pitch.
 
     The arguments are those of :func:`bearingload.studies.bearing_pair.solve_bearing_pair`
-    (the cage angle is what turns) and ``steps`` (2 to 1 000 000, both ends included).
+    (the cage angle is what turns; ``speed`` [rpm]: every position with the ball dynamics of
+    both bearings, and the pair's L10r in hours at it; ``ball_density`` [kg/mm^3]) and
+    ``steps`` (2 to 1 000 000, both ends included).
 
     >>> from bearingload.bearings.resolve import resolve_bearing
     >>> s = pair_sweep(resolve_bearing("7205B"), 1000.0, 200.0, arrangement="DB",
@@ -129,10 +139,11 @@ def pair_sweep(
             bearing, np.full(part.shape, float(load)), np.full(part.shape, float(axial_load)),
             arrangement=arrangement, preload=preload, width=width, cage_angle=part,
             moment=moment, moment_cross=moment_cross, tilt_radius=tilt_radius,
-            rotating=rotating, dynamic_rating=dynamic_rating,
+            rotating=rotating, dynamic_rating=dynamic_rating, speed=speed,
+            ball_density=ball_density,
         )  # fmt: skip
     found = list(dict.fromkeys(w for c in cases for w in c.warnings))
-    return PairSweep(bearing, tuple(cases), tuple(found))
+    return PairSweep(bearing, tuple(cases), tuple(found), speed)
 
 
 @dataclass(frozen=True)
