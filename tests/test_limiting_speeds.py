@@ -205,7 +205,7 @@ def test_a_sealed_bearing_above_its_open_bearing_s_limit_is_warned(capsys):
         code, _, err = run_entry(capsys, "solve", *args, "--speed", "13000")
         assert code == 0 and _warned(err) == [], args
     code, _, err = run_entry(capsys, "sweep", "6205-2RS", "-F", "2kN", "--speed", "1e5",
-                             "--steps", "3")  # fmt: skip
+                             "--quasi-static", "--steps", "3")  # fmt: skip
     assert code == 0 and len(_warned(err)) == 1
     rows = "bearing,load,speed\n6205-2RS,2kN,13001\n6205-2RS,2kN,13000\n"
     from click.testing import CliRunner

@@ -308,3 +308,32 @@ def test_the_stiffness_matrix_at_speed_is_the_tangent_of_the_solve():
         column = (position(f0 + e)[0] - position(f0 - e)[0]) / (2 * steps[j])
         scale = np.abs(compliance[:, j]).max()
         assert np.max(np.abs(column - compliance[:, j])) <= 1e-5 * scale, j
+
+
+def test_the_preload_at_speed_is_each_bearings_thrust_with_no_external_load(capsys):
+    """preload_at_speed: the thrust each bearing of DB/DF carries with no external load at the
+    speed (the preload is ground in at rest: a rigidly preloaded pair carries more as the balls
+    are thrown out). At speed 0 it is the preload; at speed it is each bearing's thrust of a
+    solve under a thrust of 1e-3 N (the two bearings differ by that thrust, shared); it grows
+    with the speed; none for DT; in the json and csv at speed with the ball dynamics only."""
+    kw = dict(preload=300.0, **B7205)
+    rest = solve_pair_high_speed(12, 1000.0, 200.0, speed=0.0, **kw)
+    assert float(rest.preload_at_speed) == pytest.approx(300.0, rel=1e-12)
+    thrust = []
+    for n in (5000.0, 20000.0, 40000.0):
+        r = solve_pair_high_speed(12, 1000.0, 200.0, speed=n, **kw)
+        tiny = solve_pair_high_speed(12, 0.0, 1e-3, speed=n, **kw)
+        pair = [float(b.axial_load) for b in tiny.bearings]
+        assert float(r.preload_at_speed) == pytest.approx(0.5 * sum(pair), rel=1e-9)
+        assert pair[0] - pair[1] == pytest.approx(1e-3, rel=1e-3)
+        thrust.append(float(r.preload_at_speed))
+    assert 300.0 < thrust[0] < thrust[1] < thrust[2]
+    df = solve_pair_high_speed(12, 1000.0, -200.0, speed=20000.0, **dict(kw, arrangement="DF"))
+    assert float(df.preload_at_speed) > 300.0
+    dt = dict(B7205, arrangement="DT")
+    assert solve_pair_high_speed(12, 1000.0, 200.0, speed=5000.0, **dt).preload_at_speed is None
+    case = _json(capsys, *PAIR_CLI, "--speed", "20000")
+    r = solve_pair_high_speed(12, 1000.0, 300.0, speed=20000.0, preload=500.0, **B7205)
+    assert case["preload_at_speed"] == pytest.approx(float(r.preload_at_speed), rel=1e-9)
+    assert case["lift_off_axial_load"] == _json(capsys, *PAIR_CLI)["lift_off_axial_load"]
+    assert "preload_at_speed" not in _json(capsys, *PAIR_CLI, "--speed", "20000", "--quasi-static")

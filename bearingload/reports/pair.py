@@ -41,15 +41,17 @@ PAIR_ANSWERS = ("x", "y", "axial", "tilt", "tilt_cross", "stiffness_radial", "st
                 "reference_rating_life", "rating_life")  # fmt: skip
 #: The pair's service values (:func:`bearingload.studies.bearing_pair.pair_service_values`):
 #: ``pair_`` columns in the csv where given.
-PAIR_SERVICE = ("speed", "reliability", "reference_rating_life_hours", "rating_life_hours",
+PAIR_SERVICE = ("speed", "preload_at_speed", "reliability", "reference_rating_life_hours",
+                "rating_life_hours",
                 "modified_rating_life", "modified_rating_life_hours",
                 "modified_reference_rating_life", "modified_reference_rating_life_hours")  # fmt: skip
 #: The rows of the human summary (the pair's column shows what it has).
 SUMMARY_KEYS = ("load", "axial_load", "moment", "q_max", "loaded_balls", "p_max_inner",
                 "p_max_outer", "static_equivalent_load", "static_safety", "contact_angle_max",
                 "x", "y", "axial", "tilt", "tilt_cross", "stiffness_radial", "stiffness_axial",
-                "stiffness_tilt", "preload", "lift_off_axial_load", "unloaded_bearings",
-                "reference_rating_life", "reference_rating_life_hours", "equivalent_load",
+                "stiffness_tilt", "preload", "preload_at_speed", "lift_off_axial_load",
+                "unloaded_bearings", "reference_rating_life", "reference_rating_life_hours",
+                "equivalent_load",
                 "rating_life", "rating_life_hours", *SERVICE_KEYS)  # fmt: skip
 NOTES = (
     "The pair: the loads applied to the shaft at the pair's centre (x along F_r, +axial the "
@@ -77,7 +79,9 @@ DYNAMICS_NOTE = (
     "its own inner and outer contact angle and load (json: each bearing's "
     "contact_angles_inner, contact_angles_outer, ball_loads_inner, ball_loads_outer); the ball "
     "table shows the inner contacts; each bearing's L10r takes the inner loads for the inner "
-    "ring, the outer loads for the outer ring; preload and lift-off are those at rest."
+    "ring, the outer loads for the outer ring; the preload F_p is ground in at rest (at the "
+    "speed each bearing carries 'preload at the speed' with no external load); the lift-off is "
+    "the one at rest (docs/speed.md)."
 )
 
 
@@ -114,7 +118,13 @@ def pair_record(c: PairCase) -> dict[str, Any]:
         "lift_off_axial_load": r.lift_off_axial_load,
         "unloaded_bearings": ", ".join(unloaded) or "none",
         "reference_rating_life": c.reference_rating_life, "rating_life": c.rating_life,
-    }  # fmt: skip
+    } | _at_speed(r)  # fmt: skip
+
+
+def _at_speed(r: Any) -> dict[str, Any]:
+    """``preload_at_speed`` of a DB/DF pair solved with the ball dynamics (none otherwise)."""
+    thrust = getattr(r, "preload_at_speed", None)
+    return {} if thrust is None else {"preload_at_speed": thrust}
 
 
 def pair_records(
@@ -155,7 +165,7 @@ def pair_report(
     columns, rows = quantity_rows(keys, heads, rows_of, ANGULAR_LABELS)
     speed_note = _speed_model(c, pair)[0]
     notes = [*NOTES, *([speed_note] if speed_note else [])]
-    notes += [MODIFIED_NOTE] if any(k in pair for k in PAIR_SERVICE[4:]) else []
+    notes += [MODIFIED_NOTE] if any(k.startswith("modified_") for k in pair) else []
     tables += [Table(_title(pair), columns, rows, notes + service_notes(service)), _balls_table(c)]
     return render(tables, fmt)
 

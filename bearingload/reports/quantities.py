@@ -144,6 +144,7 @@ QUANTITIES: dict[str, Quantity] = {
         Quantity("width", "width B of one bearing", "mm"),
         Quantity("bearing_number", "bearing of the pair", "", None),
         Quantity("lift_off_axial_load", "lift-off: axial load unloading a bearing", "N"),
+        Quantity("preload_at_speed", "preload at the speed (each bearing, no external load)", "N"),
         Quantity("unloaded_bearings", "bearings carrying no load", "", None),
         Quantity("free_contact_angle", "free contact angle alpha_0", "°"),
         Quantity("axial_play", "axial play", "mm", display=_UM),

@@ -259,7 +259,7 @@ def _pair_case(
         lift = r.lift_off_axial_load
         when = ("" if lift is None else
                 f" (lift-off: at an axial load alone beyond {abs(lift):.6g} N for the preload "
-                f"{r.preload:.6g} N)")  # fmt: skip
+                f"{r.preload:.6g} N{', at rest' if getattr(r, 'speed', None) is not None else ''})")  # fmt: skip
         found.append(
             f"bearing {k + 1} of the {ARRANGEMENT_NAMES[r.arrangement]} pair carries no load"
             f"{when}: its balls may skid; raise the preload"
