@@ -13,7 +13,9 @@ up to the n d_m limit (a third of the cases in its top fifth); one in five silic
 Printed: solved, refused (by parameter), ConvergenceError, NaN, negative loads, balls touching
 the inner ring at 90° or beyond; the worst ring residual (an independent plain sum of the
 returned inner loads and angles against each applied component, over the largest applied load:
-the solver's own measure) and the worst ball residual (each ball's two equations from the
+the solver's own measure), the same over the components whose terms stay under 10^3 times the
+load (tests/campaign_combined.py's criterion) and how many components lie above 1e-12 with the
+least ratio of their terms to the load and the worst ball residual (each ball's two equations from the
 returned Q_i, Q_o, angles, F_c and M_g over the sum of their magnitudes); the total time, the
 slowest case and the most ring iterations.
 """
@@ -68,9 +70,12 @@ def random_case(rng: np.random.Generator) -> dict[str, Any]:
     return {"z": z, "fr": fr, "fa": fa, "kw": kw}
 
 
-def ring_residual(case: dict[str, Any], r: Any) -> float:
+def ring_residual(case: dict[str, Any], r: Any, light: list[float] | None = None) -> float:
     """The largest |applied - plain sum of the inner contacts| over the largest applied load (the
-    moment over the tilt lever; the moment not checked under a misalignment)."""
+    moment over the tilt lever; the moment not checked under a misalignment). ``light``: the
+    campaign's tally of the static campaign's criterion (its worst residual over the components
+    whose terms stay under 10^3 times the largest applied load, the count of components above
+    1e-12 and the smallest ratio of terms to load among them)."""
     q, al, ph = r.ball_loads_inner, np.radians(r.contact_angles_inner), np.radians(r.ball_angles)
     lever = float(r.tilt_radius)
     terms = [q * np.cos(al) * np.cos(ph), q * np.cos(al) * np.sin(ph), q * np.sin(al),
@@ -83,7 +88,14 @@ def ring_residual(case: dict[str, Any], r: Any) -> float:
         if i >= 3 and "misalignment" in kw:
             continue
         scale = 1.0 if i < 3 else lever
-        worst = max(worst, abs(math.fsum(t.tolist()) - w) / scale / f_ref)
+        res = abs(math.fsum(t.tolist()) - w) / scale / f_ref
+        worst = max(worst, res)
+        ratio = float(np.sum(np.abs(t))) / scale / f_ref  # the terms' size over the load
+        if light is not None and ratio <= 1e3:
+            light[0] = max(light[0], res)
+        if light is not None and res > 1e-12:
+            light[1] += 1
+            light[2] = min(light[2], ratio)
     return worst
 
 
@@ -106,6 +118,7 @@ def main(n: int, seed: int) -> None:
     worst_ring, worst_ball, slowest, most = 0.0, 0.0, (0.0, None), (0, None)
     worst_case: Any = None
     worst_ball_case: Any = None
+    light = [0.0, 0, math.inf]  # (worst under 10^3, count above 1e-12, their least ratio)
     start = time.perf_counter()
     for _ in range(n):
         case = random_case(rng)
@@ -128,7 +141,7 @@ def main(n: int, seed: int) -> None:
         counts["inner contact at 90 deg or beyond"] += int(
             np.any(np.abs(r.contact_angles_inner[touching]) >= 90.0)
         )
-        ring = ring_residual(case, r)
+        ring = ring_residual(case, r, light)
         if ring > worst_ring:
             worst_ring, worst_case = ring, case
         if ball_residual(case, r) > worst_ball:
@@ -143,6 +156,9 @@ def main(n: int, seed: int) -> None:
           f"refused by parameter {refused}")  # fmt: skip
     print(f"worst ring residual (plain sum, over the largest applied load) {worst_ring:.3g}: "
           f"{worst_case}")  # fmt: skip
+    print(f"components whose terms stay under 10^3 times the load: worst residual "
+          f"{light[0]:.3g}; components above 1e-12: {light[1]}, their terms at least "
+          f"{light[2]:.3g} times the load")  # fmt: skip
     print(f"worst ball residual (over its force magnitudes) {worst_ball:.3g}: {worst_ball_case}")
     print(f"slowest case {slowest[0] * 1e3:.0f} ms: {slowest[1]}")
     print(f"most iterations (static + ring) {most[0]}: {most[1]}")
