@@ -52,6 +52,10 @@ COMMANDS = {
     "table_life_6205_combined": "table life --bearing 6205 -F 1.4kN -A 700N",
     "table_life_peer": "table life -z 7 --ball-diameter 11.5 --pitch-diameter 43.5 --modulus "
     "210000 -C 23.4kN -F 1kN --clearances -5um,0,5um,10um,20um",
+    "table_life_6205_speed": "table life -b 6205 -F 1kN --speed 10000 --clearances "
+    "-10um,0,10um,40um",
+    "table_life_7205bdb_speed": "table life -b 7205BDB -F 1kN -A 200N --preloads 0,300N "
+    "--speed 10000",
     "catalog_bore_30": "catalog --bore 30",
     "catalog_show_306": "catalog show 306",
     "catalog_show_6208_skf": "catalog show 6208 --maker SKF",

@@ -105,9 +105,10 @@ def test_json_rows_and_the_table_show_solves_values_and_name_the_longest_life():
         ([*PAIR, "--preloads", "0,100N", "--clearances", "0,10um"],
          "--clearances cannot be used with table life of a pair: a pair's rows are preloads "
          "(--preloads)"),
-        ([*PAIR, "--preloads", "0,100N", "--speed", "3000"],
-         "--speed cannot be used with table life of a pair: its service lives are not yet "
-         "tabulated; 'bearingload solve 7205BDB --preload ...' gives them for one preload"),
+        ([*PAIR, "--preloads", "0,100N", "--speed", "3000", "--viscosity", "20cSt"],
+         "--viscosity cannot be used with table life of a pair: its service lives beyond the "
+         "hours are not yet tabulated; 'bearingload solve 7205BDB --preload ...' gives them for "
+         "one preload"),
         ([*PAIR, "--preloads", "0,100N", "--misalignment", "1mrad"],
          "--misalignment cannot be used with a bearing pair: the shaft's tilt follows from the "
          "loads; give --moment"),

@@ -193,15 +193,14 @@ def test_a_radial_batch_row_at_speed_is_refused_as_solve_refuses_it():
     [
         ("sweep", "6205", "-F", "1kN", "--steps", "3"),
         ("sweep", "6205", "-F", "1kN", "-A", "300N", "--steps", "3"),
-        ("table", "life", "-b", "6205", "-F", "1.4kN"),
     ],
 )
-def test_sweep_and_table_life_stay_static_and_say_so(args):
-    """At --speed (sweep: with --quasi-static) the note (table, markdown) and the json key ball_dynamics say the static
-    model was solved; without --speed neither; the numbers are those of the case without the
-    speed (the static model)."""
+def test_sweep_quasi_static_stays_static_and_says_so(args):
+    """At --speed with --quasi-static the note (table, markdown) and the json key ball_dynamics
+    say the static model was solved; without --speed neither; the numbers are those of the case
+    without the speed (the static model). (table life: tests/test_life_table_speed.py.)"""
     note = "Ball dynamics left out: the static model"
-    speed = ("--speed", "3000", *(("--quasi-static",) if args[0] == "sweep" else ()))
+    speed = ("--speed", "3000", "--quasi-static")
     for fmt in ("table", "markdown"):
         assert note in _ok(*args, *speed, "--format", fmt)
         assert note not in _ok(*args, "--format", fmt)

@@ -83,10 +83,10 @@ def test_per_ball_csv_carries_the_inner_and_outer_contacts(capsys):
 
 
 def test_help_of_speed_says_which_command_solves_the_ball_dynamics(capsys):
-    """--speed's help (one text for solve, sweep and table) says that solve and sweep include
-    the ball dynamics and table solves the static model (it said 'a combined or angular-contact
-    solve includes' them in all three); table, which refuses --quasi-static and --ball-density,
-    does not list them; solve and sweep do."""
+    """--speed's help (one text for solve, sweep and table) says that solve, sweep and table
+    life include the ball dynamics (it said 'a combined or angular-contact solve includes' them
+    in all three; then that sweep and table solve the static model); all three list
+    --quasi-static and --ball-density (table life takes them)."""
 
     def options(command: str) -> dict[str, str]:
         code, out, _ = run_entry(capsys, *command.split(), "--help")
@@ -100,14 +100,11 @@ def test_help_of_speed_says_which_command_solves_the_ball_dynamics(capsys):
                 found[name] += ("" if found[name].endswith("-") else " ") + line.strip()
         return found
 
-    for command in ("solve", "sweep"):
-        found = options(command)
-        assert "--quasi-static" in found and "--ball-density" in found, command
     for command in ("solve", "sweep", "table k"):
         found = options(command)
-        assert "In 'solve' and 'sweep' a ball bearing includes each ball's" in found["--speed"]
-        assert "'table' solves the static model" in found["--speed"], command
-    assert "--quasi-static" not in found and "--ball-density" not in found
+        assert "In 'solve', 'sweep' and 'table life' a ball bearing includes" in found["--speed"]
+        assert "solves the static model" not in found["--speed"], command
+        assert "--quasi-static" in found and "--ball-density" in found, command
 
 
 def test_a_loaded_inner_contact_at_90_degrees_is_warned(capsys):

@@ -309,11 +309,11 @@ DECLARATIONS: dict[str, tuple[tuple[str, ...], dict[str, Any]]] = {
         "--speed",
         type=Quantity("speed", positive=True, at_zero=AT_REST),
         help="Shaft speed n of the rotating ring: every life also in hours, L 10^6/(60 n); "
-        "needed for the rated viscosity. In 'solve' and 'sweep' a ball bearing includes each "
-        "ball's centrifugal force and gyroscopic moment (outer-raceway control, the inner ring "
-        "turning; the combined engine, F_a = 0 without a load option; docs/speed.md) unless "
-        "--quasi-static (a pair: both bearings); a roller bearing keeps the static model; 'table' "
-        "solves the static model. Units: rpm, r/min, rad/s, 1/s, Hz (bare number: rpm; a bare number of 1e6 or more is refused).",
+        "needed for the rated viscosity. In 'solve', 'sweep' and 'table life' a ball bearing "
+        "includes each ball's centrifugal force and gyroscopic moment (outer-raceway control, "
+        "the inner ring turning; the combined engine, F_a = 0 without a load option; "
+        "docs/speed.md) unless --quasi-static (a pair: both bearings); a roller bearing keeps "
+        "the static model. Units: rpm, r/min, rad/s, 1/s, Hz (bare number: rpm; a bare number of 1e6 or more is refused).",
     ),
     "ball_density": _option(
         "--ball-density",

@@ -16,13 +16,13 @@ from bearingload.cli.case_options import (
 )
 from bearingload.cli.cases import refuse_range
 from bearingload.cli.options import CONTEXT, emit, library_errors, method_option, output_options
-from bearingload.errors import InputError
+from bearingload.errors import ConvergenceError, InputError
 
 TABLES = ("k", "kq", "life")
-#: Why table refuses the options of the ball dynamics (its lives take --speed for hours only).
+#: Why table k and kq refuse the options of the ball dynamics.
 DYNAMICS_REFUSAL = (
-    "the tables solve the static model (--speed gives the lives in hours); the ball dynamics at "
-    "speed are solved by 'bearingload solve' (docs/speed.md)"
+    "table k and kq are the papers' static design tables (no speed); the ball dynamics at "
+    "--speed are solved by 'table life', 'solve' and 'sweep' (docs/speed.md)"
 )
 #: Why table k and kq refuse the combined-load options.
 RADIAL_ONLY = (
@@ -72,7 +72,7 @@ class ForceList(click.ParamType):
 @case_options(
     bearing="option",
     defaults={"load": "1000"},
-    hidden=[*DYNAMICS_PARAMS, "preload"],  # a pair's table life runs over --preloads
+    hidden=["preload"],  # a pair's table life runs over --preloads
     pair=True,
 )
 @click.option(
@@ -133,13 +133,17 @@ def table(
     TM-2012-217115: which clearance lives longest).
     With --speed, --viscosity and the other life options of 'solve' (docs/life.md) each row
     also gives L10rh, P_ref, a_ISO, L_nmr and the film; what is the same in every row (kappa,
-    e_C, C_u, L_nm) is among the conditions.
+    e_C, C_u, L_nm) is among the conditions. At --speed every row is solved as 'solve
+    --clearance G_r --speed' solves it: with each ball's centrifugal force and gyroscopic
+    moment (--ball-density; docs/speed.md), or with --quasi-static by the static model.
 
     life of a pair of angular-contact bearings (--bearing 7205BDB, or 7205B with --arrangement
     DB or DF; docs/angular_contact.md): per preload F_p (--preloads) each bearing's Q_max and
     loaded balls, the pair's axial and radial stiffness, lift-off load, L10r and L10, as 'solve
-    7205BDB --preload F_p' gives them. A single angular-contact bearing has no table life: its
-    contact angle fixes its geometry, so it has no radial clearance to run over.
+    7205BDB --preload F_p' gives them; at --speed with the ball dynamics of both bearings and
+    L10r also in hours (--quasi-static: the static pair). A single angular-contact bearing has
+    no table life: its contact angle fixes its geometry, so it has no radial clearance to run
+    over.
 
     \b
     Examples:
@@ -154,6 +158,8 @@ def table(
       # L10r of a 6205 against clearance at 1.4 kN, then with 700 N axial
       bearingload table life --bearing 6205 --load 1.4kN
       bearingload table life -b 6205 -F 1.4kN --axial-load 700N --clearances -10um,0,10um,20um,40um
+      # at 10000 rpm with the ball dynamics, ceramic balls (each row as solve --speed)
+      bearingload table life -b 6205 -F 1kN --speed 10000 --ball-density 3200
       # a hand-given ball set with its C_r, outer ring rotating, 2 mrad misalignment, csv
       bearingload table life -z 7 --ball-diameter 11.5 --pitch-diameter 43.5 -C 23.4kN -F 1kN --rotating outer --misalignment 2mrad --format csv
       # a back-to-back pair of 7205B: L10r and stiffness against the preload
@@ -169,7 +175,8 @@ def table(
         "angular-contact designation (7205B) by 'solve', 'sweep' and 'batch' "
         "(docs/angular_contact.md)",
     )
-    case.refuse(DYNAMICS_PARAMS, f"table {name}", DYNAMICS_REFUSAL)
+    if name != "life":
+        case.refuse(DYNAMICS_PARAMS, f"table {name}", DYNAMICS_REFUSAL)
     from bearingload.bearings.angular import parse_angular
 
     pair = case.as_pair()
@@ -284,6 +291,7 @@ def _life(
     from bearingload.cli.solve import with_ratings, with_speed_warnings
 
     b = with_ratings(resolve_bearings(case, k_given), case)[0]
+    dynamics = case.dynamics_arguments() if b.kind == "ball" else {}  # ball dynamics at speed
     try:
         result = life_against_clearance(
             b,
@@ -291,17 +299,42 @@ def _life(
             clearances=clearances,
             cage_angle=case.cage_angle_deg(b.balls),
             **case.combined_arguments(),
+            **dynamics,
         )
     except InputError as exc:
-        if exc.parameter != "clearance":
+        raise _life_input_error(exc, dynamics.get("speed") is not None) from exc
+    except ConvergenceError as exc:
+        if dynamics.get("speed") is None:
             raise
-        message = str(exc).split(": ", 1)[-1]
-        raise click.UsageError(f"Invalid value for '--clearances': {message}") from exc
+        raise click.ClickException(f"{exc}; {QUASI_STATIC_WAY}") from exc
     (result,) = with_speed_warnings([result], case.speed)
     service = _service(case, result)
     text = life_report(result, fmt, service)
     print_warnings(printed_warnings(result.warnings, service), False)
     emit(text, output)
+
+
+#: What a row the ball dynamics cannot solve can do.
+QUASI_STATIC_WAY = "--quasi-static gives the static model (the ball dynamics left out)"
+
+
+def _life_input_error(exc: InputError, dynamics: bool) -> Exception:
+    """The error of table life for the library's ``exc``: a bad clearance names --clearances;
+    the loads too small for the combined solver name no radial solver (table life has none: the
+    static rows are the combined solver's too); a speed the ball dynamics refuse (``dynamics``)
+    names --quasi-static; others as they are."""
+    from bearingload.models.combined import RADIAL_TAKES_ANY_LOAD
+
+    message = str(exc).split(": ", 1)[-1]
+    if exc.parameter == "clearance":
+        return click.UsageError(f"Invalid value for '--clearances': {message}")
+    if RADIAL_TAKES_ANY_LOAD in message:
+        way = ("table life solves every row by it, at any speed; 'bearingload solve' without an "
+               "axial load (at a speed with --quasi-static) takes any load")  # fmt: skip
+        return InputError(exc.parameter, message.replace(RADIAL_TAKES_ANY_LOAD, way))
+    if dynamics and exc.parameter == "speed":
+        return InputError(exc.parameter, f"{message}; {QUASI_STATIC_WAY}")
+    return exc
 
 
 def _pair_life(
@@ -315,9 +348,8 @@ def _pair_life(
     """``table life`` of a bearing pair: L10r against the preload (``--preloads``), emit."""
     from bearingload.cli.case_options import SERVICE_PARAMS
     from bearingload.cli.options import print_warnings
-    from bearingload.cli.solve import pair_bearing
-    from bearingload.reports.pair_sweep import preload_life_report
-    from bearingload.studies.pair_sweep import life_against_preload
+    from bearingload.cli.solve import pair_bearing, with_speed_warnings
+    from bearingload.reports.pair_life import preload_life_report
 
     if case is None:
         raise click.UsageError(
@@ -341,7 +373,8 @@ def _pair_life(
                 "give --moment")  # fmt: skip
     case.refuse(("clearance",), "a bearing pair", "the design contact angle fixes the geometry "
                 "of an angular-contact bearing (no clearance)")  # fmt: skip
-    case.refuse(SERVICE_PARAMS, "table life of a pair", "its service lives are not yet "
+    lives = tuple(p for p in SERVICE_PARAMS if p != "speed")  # --speed: the hours, the dynamics
+    case.refuse(lives, "table life of a pair", "its service lives beyond the hours are not yet "
                 "tabulated; 'bearingload solve 7205BDB --preload ...' gives them for one preload")  # fmt: skip
     if preloads is None:
         raise click.UsageError(
@@ -362,19 +395,40 @@ def _pair_life(
     if "load" not in case.given:
         raise click.UsageError("Missing option '--load' / '-F': table life needs F_r (N)")
     b = pair_bearing(case)
-    args = case.pair_arguments(b.balls)
-    del args["preload"]
-    try:
-        result = life_against_preload(b, case.radial_load, case.axial_load or 0.0,
-                                      preloads=preloads, **args)  # fmt: skip
-    except InputError as exc:
-        if exc.parameter != "preload":
-            raise
-        message = str(exc).split(": ", 1)[-1]
-        raise click.UsageError(f"Invalid value for '--preloads': {message}") from exc
-    text = preload_life_report(result, fmt)
+    result = _solve_pairs(case, b, preloads)
+    result = with_speed_warnings([result], case.speed)[0]  # the bearing's limiting speeds
+    text = preload_life_report(result, fmt, case.speed)
     print_warnings(list(result.warnings), False)
     emit(text, output)
+
+
+def _solve_pairs(case: CaseOptions, b: Any, preloads: list[float]) -> Any:
+    """The pair ``b`` of ``case`` at every preload [N], as solve solves each (at --speed the
+    ball dynamics of both bearings unless --quasi-static); the library's refusals in the words
+    of the command line."""
+    from bearingload.cli.solve import pair_speed_hint
+    from bearingload.models.pair_speed import STATIC_WAY
+    from bearingload.studies.pair_life import life_against_preload
+
+    args = case.pair_arguments(b.balls)
+    del args["preload"]
+    dynamics = case.dynamics_arguments()
+    try:
+        return life_against_preload(b, case.radial_load, case.axial_load or 0.0,
+                                    preloads=preloads, **args, **dynamics)  # fmt: skip
+    except (ConvergenceError, InputError) as exc:
+        # at speed: unbalanced, or too light for the ball dynamics, in solve's words
+        hinted = pair_speed_hint(exc) if dynamics["speed"] is not None else None
+        if hinted is not None:
+            raise hinted from exc
+        if not isinstance(exc, InputError):
+            raise
+        message = str(exc).split(": ", 1)[-1]
+        if exc.parameter == "preload" and STATIC_WAY not in message:
+            raise click.UsageError(f"Invalid value for '--preloads': {message}") from exc
+        if dynamics["speed"] is not None and exc.parameter == "speed":  # n d_m beyond the model
+            raise InputError(exc.parameter, f"{message}; {QUASI_STATIC_WAY}") from exc
+        raise
 
 
 def _service(case: CaseOptions, t: Any) -> list[Any] | None:

@@ -316,15 +316,21 @@ def contact_angle_shown(alpha: float, load: float) -> Any:
     return alpha if load > 0.0 else "-"
 
 
-#: The model of a combined-load case, as json names it (at speed the ball dynamics are added).
+def model_name(dynamics: str | None, contact_angle: float | None = None) -> str:
+    """The ``model`` of a combined-load case as json names it: the 3-D ring equilibrium of a
+    bearing of the design ``contact_angle`` [°] (None: deep groove), with ``dynamics`` (the
+    ball dynamics' ``model`` at speed, :mod:`bearingload.models.high_speed`) added."""
+    kind = ("deep-groove ball bearing" if contact_angle is None
+            else f"single-row angular-contact ball bearing, {contact_angle:g}°")  # fmt: skip
+    model = f"3-D ring equilibrium, {kind} (ISO/TS 16281)"
+    return model if dynamics is None else f"{model}; {dynamics}"
+
+
 def contact_values(res: Any, contact_angle: float | None = None) -> dict[str, Any]:
     """The ``model`` of a solved combined-load result (one case or many) of a bearing of the
     design ``contact_angle`` [°] (None: deep groove) and each ball's inner and outer contact
     angle [°] and load [N], as json names them: at speed those of
     :class:`bearingload.models.high_speed.HighSpeedDistribution`, else inner = outer."""
-    kind = ("deep-groove ball bearing" if contact_angle is None
-            else f"single-row angular-contact ball bearing, {contact_angle:g}°")  # fmt: skip
-    model = f"3-D ring equilibrium, {kind} (ISO/TS 16281)"
     dynamics = getattr(res, "model", None)  # at speed (models.high_speed)
     if dynamics is None:
         angles, loads = (res.contact_angles,) * 2, (res.ball_loads,) * 2
@@ -332,7 +338,7 @@ def contact_values(res: Any, contact_angle: float | None = None) -> dict[str, An
         angles = (res.contact_angles_inner, res.contact_angles_outer)
         loads = (res.ball_loads_inner, res.ball_loads_outer)
     return {
-        "model": model if dynamics is None else f"{model}; {dynamics}",
+        "model": model_name(dynamics, contact_angle),
         "contact_angles_inner": angles[0],
         "contact_angles_outer": angles[1],
         "ball_loads_inner": loads[0],

@@ -3,7 +3,10 @@
 The numbers come from :func:`bearingload.studies.life_clearance.life_against_clearance`; this
 module lays them out. One row per clearance; the bearing, loads and ratings are the table's
 conditions (the title for people, leading columns in csv, fields in json, with ``units`` and the
-``warnings`` of the checks). Human formats show G_r in µm, csv and json in mm.
+``warnings`` of the checks). Human formats show G_r in µm, csv and json in mm. At a speed the
+model is named: with the ball dynamics a note and the json key ``model`` (solve's), the ball
+density among the conditions; the static model (``--quasi-static``) a note and the json key
+``ball_dynamics``.
 """
 
 from __future__ import annotations
@@ -111,6 +114,13 @@ def conditions(t: LifeAgainstClearance) -> dict[str, Any]:
     }
 
 
+def all_conditions(t: LifeAgainstClearance, service: Sequence[Any] | None) -> dict[str, Any]:
+    """The table's conditions, those of the service lives and, with the ball dynamics, the
+    ball density [kg/m^3] (as solve's json and csv give it)."""
+    density = {} if t.ball_density is None else {"ball_density": t.ball_density * 1e9}
+    return conditions(t) | service_conditions(service) | density
+
+
 def _rows(
     t: LifeAgainstClearance, human: bool, service: Sequence[Any] | None = None
 ) -> list[dict[str, Any]]:
@@ -194,19 +204,44 @@ def life_table(
             columns.append(Column(key, header, q.shown()[0], digits))
         else:
             columns.append(column(key))
-    conds = conditions(t) | service_conditions(service)
+    conds = all_conditions(t, service)
     fixed = [] if human else [(column(k), "" if v is None else v) for k, v in conds.items()]
-    static = list(_static(service).values())
-    notes = _notes(t) + _service_notes(service) + static if human else []
+    notes = _notes(t) + _service_notes(service) + _speed_notes(t, service) if human else []
     return Table(title(t), columns, _rows(t, human, service), notes, fixed)
 
 
-def _static(service: Sequence[Any] | None) -> dict[str, str]:
-    """The note (json: key ``ball_dynamics``) that the table solves the static model, where a
-    speed was given."""
-    from bearingload.reports.sweep import static_at_speed
+#: The note of a table at --speed with --quasi-static (json: the key ``ball_dynamics``).
+QUASI_STATIC_NOTE = (
+    "Ball dynamics left out: the static model (--quasi-static; --speed gives the lives in hours "
+    "only); without --quasi-static every row is solved with each ball's centrifugal force and "
+    "gyroscopic moment, as 'bearingload solve --speed' (docs/speed.md)."
+)
+#: The note of a table with the ball dynamics at --speed (the model's name, the density).
+DYNAMICS_NOTE = (
+    "Speed: {} (Jones 1960; Harris & Kotzalas; docs/speed.md), balls of {:.6g} kg/m^3: every "
+    "row as 'bearingload solve --speed' solves it; alpha_0: at rest; n, alpha_max and Q_max: the "
+    "inner contacts'; L10r takes the inner loads for the inner ring, the outer loads for the "
+    "outer ring."
+)
 
-    return static_at_speed(service[0].values.get("speed") if service else None)
+
+def _speed_model(t: LifeAgainstClearance, service: Sequence[Any] | None) -> dict[str, str]:
+    """The json key naming the model at a speed: ``model`` (solve's name) with the ball
+    dynamics, ``ball_dynamics`` (:data:`QUASI_STATIC_NOTE`) for the static model; none
+    without a speed."""
+    from bearingload.reports.combined import model_name
+
+    if t.model is not None:
+        return {"model": model_name(t.model)}
+    speed = service[0].values.get("speed") if service else None
+    return {} if speed is None else {"ball_dynamics": QUASI_STATIC_NOTE}
+
+
+def _speed_notes(t: LifeAgainstClearance, service: Sequence[Any] | None) -> list[str]:
+    """The note naming the model at a speed (none without one)."""
+    if t.model is not None and t.ball_density is not None:
+        return [DYNAMICS_NOTE.format(t.model, t.ball_density * 1e9)]
+    return list(_speed_model(t, service).values())
 
 
 def _service_notes(service: Sequence[Any] | None) -> list[str]:
@@ -229,7 +264,7 @@ def life_document(t: LifeAgainstClearance, service: Sequence[Any] | None = None)
     the source of every value), ``warnings``."""
     from bearingload.reports.bearing import geometry_document
 
-    conds = conditions(t) | service_conditions(service)
+    conds = all_conditions(t, service)
     body = _rows(t, human=False, service=service)
     return {
         "title": title(t),
@@ -238,7 +273,7 @@ def life_document(t: LifeAgainstClearance, service: Sequence[Any] | None = None)
         "units": units([*conds, *body[0]], 1.5),
         "geometry": geometry_document(t.bearing),
         "warnings": printed_warnings(t.warnings, service),
-    } | _static(service)
+    } | _speed_model(t, service)
 
 
 def life_vs_clearance_table() -> Table:

@@ -9,7 +9,10 @@ moment or misalignment: the ISO/TS 16281:2008 life (clause 4.3) from the load di
 :func:`bearingload.models.combined.solve_combined` (exact Hertz stiffness at each contact angle,
 ring free to tilt unless a moment or misalignment is given), every clearance in one vectorised
 call. ISO 281's basic life (C_r/P)^3 with P = X F_r + Y F_a (normal clearance) does not see the
-clearance; it is given beside. ``bearingload table life`` prints it.
+clearance; it is given beside. At a ``speed`` every row is solved with the ball dynamics of
+:func:`bearingload.models.high_speed.solve_high_speed` instead (each ball's centrifugal force and
+gyroscopic moment, as ``solve --speed`` solves a ball bearing). ``bearingload table life``
+prints it.
 
 The committed table ``tables/life_vs_clearance_6205`` (:func:`life_vs_clearance`) is the
 same computation for the catalogue bearing 6205 (z = 9, D_w = 7.938 mm, d_m = 38.5 mm, groove
@@ -78,6 +81,12 @@ class LifeAgainstClearance:
     moment_cross, tilt_radius : float or None
         Moment applied about the load line [N mm] and the lever of the tilt [mm]; None: not
         given (0, and the solver's R_i).
+    model : str or None
+        The ball dynamics the rows were solved with at a speed (the result's ``model`` of
+        :mod:`bearingload.models.high_speed`); None: the static model.
+    speed, ball_density : float or None
+        Shaft speed [rpm] and ball density [kg/mm^3] of the ball dynamics; None: the static
+        model.
     """
 
     bearing: ResolvedBearing
@@ -100,6 +109,9 @@ class LifeAgainstClearance:
     warnings: tuple[str, ...] = ()
     moment_cross: float | None = None
     tilt_radius: float | None = None
+    model: str | None = None
+    speed: float | None = None
+    ball_density: float | None = None
 
 
 def default_clearances(bearing: ResolvedBearing) -> np.ndarray:
@@ -136,6 +148,8 @@ def life_against_clearance(
     dynamic_rating: float | None = None,
     moment_cross: float | None = None,
     tilt_radius: str | float | None = None,
+    speed: float | None = None,
+    ball_density: float | None = None,
 ) -> LifeAgainstClearance:
     """The ISO/TS 16281 life of ``bearing`` at a list of clearances, in one vectorised solve.
 
@@ -159,6 +173,10 @@ def life_against_clearance(
         Moment about the load line [N mm] and the lever of the tilt
         (:mod:`bearingload.bearings.tilt`), as :func:`bearingload.studies.combined_bearing.
         solve_combined_bearing` takes them.
+    speed, ball_density : float, optional
+        Inner ring speed [rpm]: every row with the ball dynamics (centrifugal force, gyroscopic
+        moment; :mod:`bearingload.models.high_speed`), as ``solve --speed``; ball density
+        [kg/mm^3], default bearing steel. None: the static model.
 
     Returns
     -------
@@ -167,8 +185,11 @@ def life_against_clearance(
     Raises
     ------
     InputError
-        ``dynamic_rating`` when C_r is unknown, ``clearance`` for an empty or non-finite list;
-        those of :func:`bearingload.studies.combined_bearing.solve_on_bearing`.
+        ``dynamic_rating`` when C_r is unknown, ``clearance`` for an empty or non-finite list,
+        ``rotating`` "outer" with a speed; those of
+        :func:`bearingload.studies.combined_bearing.solve_on_bearing`.
+    ConvergenceError
+        Where the ball dynamics leave a row unbalanced.
 
     Examples
     --------
@@ -189,6 +210,10 @@ def life_against_clearance(
         warned_tilt,
     )
 
+    if speed is not None and rotating == "outer":
+        raise InputError("rotating", "the ball dynamics at a speed are coded for the inner ring "
+                         "turning (docs/speed.md); the outer ring's lives are those of the "
+                         "static model (speed None)")  # fmt: skip
     if not (dynamic_rating or bearing.C):
         raise InputError(
             "dynamic_rating",
@@ -202,7 +227,8 @@ def life_against_clearance(
     lever = tilt_lever(tilt_radius, bearing.pitch_diameter)
     r = solve_on_bearing(bearing, load, axial_load, cage_angle=cage_angle, moment=moment,
                          misalignment=misalignment, clearance=with_zero,
-                         moment_cross=moment_cross, tilt_radius=lever)  # fmt: skip
+                         moment_cross=moment_cross, tilt_radius=lever, speed=speed,
+                         ball_density=ball_density)  # fmt: skip
     l10r, p_eq, life, c_r = life_figures(bearing, r, rotating, dynamic_rating)
     assert l10r is not None and c_r is not None
     zero = float(l10r[int(np.flatnonzero(with_zero == 0)[0])])
@@ -216,6 +242,7 @@ def life_against_clearance(
             f"only one ball carries the load at G_r = {at} µm: those rows hang on a single "
             "contact (large clearance or few elements)"
         )
+    found += _groove_side(r, g)
     return LifeAgainstClearance(
         bearing=bearing,
         load=float(load),
@@ -237,7 +264,35 @@ def life_against_clearance(
         warnings=tuple(found),
         moment_cross=moment_cross,
         tilt_radius=lever,
+        model=getattr(r, "model", None),
+        speed=None if speed is None else float(speed),
+        ball_density=_density(r),
     )
+
+
+def _density(r: Any) -> float | None:
+    """The ball density of the ball dynamics solved in ``r`` [kg/mm^3]; None: static."""
+    density = getattr(r, "ball_density", None)
+    return None if density is None else float(np.asarray(density).flat[0])
+
+
+def _groove_side(r: Any, g: np.ndarray) -> list[str]:
+    """At a speed, the rows of ``r`` (clearances ``g`` [mm] first) where a loaded inner contact
+    sits at 90° on the side of the inner groove (the ball dynamics' limit, as ``solve`` warns
+    it), one finding naming them; none for the static model."""
+    from bearingload.studies.combined_bearing import groove_side_warnings
+
+    sides = groove_side_warnings(r, np.size(r.q_max))[: g.size]
+    rows = [g[i] for i, w in enumerate(sides) if w is not None]
+    if not rows:
+        return []
+    at = ", ".join(f"{v * 1e3:.6g}" for v in rows)
+    return [
+        f"at G_r = {at} µm a loaded inner contact sits at 90°, on the side of the inner groove, "
+        "where the ball dynamics hold the ball (a real ball rides onto the groove shoulder) and "
+        "overstate its orbit speed and centrifugal force: those rows are outside what the "
+        "model describes"
+    ]
 
 
 def life_vs_clearance(

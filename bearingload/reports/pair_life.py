@@ -1,0 +1,155 @@
+"""The report of ``table life`` of a bearing pair (``table life 7205BDB --preloads ...``).
+
+* ``table`` / ``markdown``: one row per preload: each bearing's Q_max and loaded balls, the
+  pair's stiffness, lift-off load and lives (with ``--speed`` L10r in hours too).
+* ``csv``: solve's pair csv at every preload (one row per bearing, ``bearing_number`` 1 and 2,
+  the pair's values in ``pair_...`` columns): the same columns and values.
+* ``json``: the pair's inputs, ``model`` (solve's: at a speed the ball dynamics or the static
+  model named), ``rows`` (the pair's keys of solve's json and ``bearings``, each bearing's),
+  ``units``, ``warnings``.
+"""
+
+from __future__ import annotations
+
+from typing import Any
+
+from bearingload.reports.pair import (
+    OWN_KEYS,
+    PAIR_ANSWERS,
+    PAIR_INPUTS,
+    PAIR_SERVICE,
+    csv_columns,
+    csv_rows,
+    pair_records,
+)
+from bearingload.reports.quantities import QUANTITIES, units
+from bearingload.reports.render import Column, Table, render
+from bearingload.studies.bearing_pair import ARRANGEMENT_NAMES
+from bearingload.studies.pair_life import LifeAgainstPreload
+
+#: The columns of the human table: (key, bearing or None, header).
+PRELOAD_KEYS = (
+    ("preload", None, "F_p"), ("q_max", 1, "Q_max 1"), ("q_max", 2, "Q_max 2"),
+    ("loaded_balls", 1, "n 1"), ("loaded_balls", 2, "n 2"), ("stiffness_axial", None, "k_a"),
+    ("stiffness_radial", None, "k_r"), ("lift_off_axial_load", None, "lift-off"),
+    ("reference_rating_life", None, "L10r"), ("rating_life", None, "L10 ISO 281"),
+    ("reference_rating_life_hours", None, "L10rh"),
+)  # fmt: skip
+#: The note of the rows solved with the ball dynamics (the model's name and density filled in).
+DYNAMICS_NOTE = (
+    "Speed: {} in both bearings (Jones 1960; Harris & Kotzalas; docs/speed.md), balls of {:.6g} "
+    "kg/m^3: every row as 'bearingload solve --preload F_p --speed' solves it; Q_max k and n k: "
+    "the inner contacts'; each bearing's L10r takes the inner loads for the inner ring, the "
+    "outer loads for the outer ring; lift-off: at rest."
+)
+
+
+def preload_life_report(t: LifeAgainstPreload, fmt: str, speed: float | None = None) -> str:
+    """Render ``t`` in ``fmt`` (table, markdown, csv, json): one row per preload; ``speed``
+    [rpm]: the shaft speed of the lives in hours (solve's with ``--speed`` alone; the rows were
+    solved with the ball dynamics where ``t.model`` says so)."""
+    records = [pair_records(c, _c0(c, speed)) for c in t.cases]
+    if fmt == "csv":
+        return render([_csv_table(t, records)], "csv")
+    if fmt == "json":
+        return render([], "json", document=_json(t, records, speed))
+    hours = "reference_rating_life_hours"  # a column at a speed only
+    keys = [(k, b, h) for k, b, h in PRELOAD_KEYS if k != hours or hours in records[0][0]]
+    columns = []
+    for key, b, header in keys:
+        q = QUANTITIES[key]
+        columns.append(Column(f"{key}{b or ''}", header, q.shown()[0], q.digits))
+    rows = []
+    for pair, recs in records:
+        row: dict[str, Any] = {}
+        for key, b, _ in keys:
+            v = pair.get(key) if b is None else recs[b - 1].get(key)
+            row[f"{key}{b or ''}"] = "-" if v is None else v * QUANTITIES[key].shown()[1]
+        rows.append(row)
+    notes = _notes(t, records) + _speed_notes(t, records, speed)
+    return render([Table(_title(records[0][0], t), columns, rows, notes)], fmt)
+
+
+def _c0(c: Any, speed: float | None) -> list[Any]:
+    """Each bearing's service values as solve gives them with ``--speed`` alone (C_0; with a
+    speed the lives in hours)."""
+    from bearingload.bearings.service_life import Operating, service_values
+    from bearingload.studies.life_basis import combined_basis
+
+    return [service_values(Operating(speed=speed), combined_basis(b)) for b in c.bearings]
+
+
+def _csv_table(t: LifeAgainstPreload, records: list[Any]) -> Table:
+    """solve's csv of the pair at every preload, one table."""
+    own = [k for k in OWN_KEYS if any(k in r for _, rs in records for r in rs)]
+    cols = csv_columns(tuple(k for k in PAIR_SERVICE if k in records[0][0]), own)
+    keys = [c.key for c in cols]
+    rows = []
+    for c, (pair, recs) in zip(t.cases, records, strict=True):
+        rows += csv_rows(c, pair, recs, keys)
+    blank = [{k: "" if r[k] is None else r[k] for k in keys} for r in rows]
+    return Table("life against the preload", cols, blank)
+
+
+def _title(p: dict[str, Any], t: LifeAgainstPreload) -> str:
+    who = f"bearings {p['bearing']}, " if p["bearing"] != "given by hand" else ""
+    return (
+        f"Life against the preload: {who}pair {p['arrangement']} "
+        f"({ARRANGEMENT_NAMES[p['arrangement']]}), z = {t.bearing.balls} per bearing, F_r = "
+        f"{p['load']:.6g} N, F_a = {p['axial_load']:.6g} N, {p['rotating']} ring rotating"
+    )
+
+
+def _notes(t: LifeAgainstPreload, records: list[Any]) -> list[str]:
+    """The note under the table: what the rows are, and the preload of the longest L10r."""
+    notes = [
+        "F_p: the axial force each bearing carries with no external load (solve --preload); "
+        "Q_max k, n k: bearing k's heaviest ball load and loaded balls; k_a, k_r: the pair's "
+        "axial and radial stiffness; lift-off: the axial load alone that unloads a bearing; "
+        "L10r: the pair's (L1^-e + L2^-e)^(-1/e), e = 10/9, from the ball loads (ISO/TS "
+        "16281); L10: the same rule on each bearing's ISO 281 (C/P)^3.",
+    ]
+    lives = [pair.get("reference_rating_life") for pair, _ in records]
+    if all(v is not None for v in lives) and len(lives) > 1:
+        best = int(max(range(len(lives)), key=lambda i: lives[i]))
+        notes.append(
+            f"Among these rows the pair's L10r is longest at F_p = {t.preloads[best]:.6g} N "
+            f"({lives[best]:.6g} 10^6 rev): too little preload lets a bearing unload (its balls "
+            "may skid), too much loads both; the stiffness grows with the preload."
+        )
+    return notes
+
+
+def _speed_notes(t: LifeAgainstPreload, records: list[Any], speed: float | None) -> list[str]:
+    """The note naming the model at a speed: the ball dynamics, or the static model
+    (--quasi-static); none without a speed."""
+    from bearingload.reports.pair import SPEED_NOTE
+
+    if t.model is not None:
+        density = records[0][1][0].get("ball_density")
+        return [DYNAMICS_NOTE.format(t.model, density)]
+    return [] if speed is None else [SPEED_NOTE]
+
+
+def _json(t: LifeAgainstPreload, records: list[Any], speed: float | None) -> dict[str, Any]:
+    from bearingload.reports.pair import STATIC_AT_SPEED
+
+    rows = []
+    for pair, recs in records:
+        answers = {k: pair[k] for k in ("preload", *PAIR_ANSWERS)}
+        service = {k: v for k, v in pair.items() if k in PAIR_SERVICE}  # solve's, at a speed
+        rows.append(answers | service | {"bearings": recs})
+    head = {k: v for k, v in records[0][0].items() if k in PAIR_INPUTS and k != "preload"}
+    keys = [*head, *rows[0], *(k for r in rows[0]["bearings"] for k in r)]
+    model = "pair of angular-contact ball bearings on one rigid shaft (ISO/TS 16281 each)"
+    if t.model is not None:
+        model += f"; {t.model} in both bearings"
+    elif speed is not None:
+        model += STATIC_AT_SPEED
+    return {
+        **head,
+        "model": model,
+        "rows": rows,
+        "units": units(list(dict.fromkeys(keys)), 1.5),
+        "warnings": list(t.warnings),
+    }
