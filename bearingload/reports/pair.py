@@ -294,3 +294,25 @@ def _pair_column(key: str) -> Column:
     """The csv column of the pair's value of a quantity (``pair_x``)."""
     col = column(key[5:])
     return dataclasses.replace(col, key=key, header=f"pair: {col.header}")
+
+
+def speed_service(c: PairCase, speed: float | None = None) -> list[Any]:
+    """Each bearing's service values as solve gives them with ``--speed`` alone (C_0; with a
+    speed the lives in hours): the rows of a pair's sweep and table life."""
+    from bearingload.bearings.service_life import Operating, service_values
+    from bearingload.studies.life_basis import combined_basis
+
+    return [service_values(Operating(speed=speed), combined_basis(b)) for b in c.bearings]
+
+
+def pairs_csv(title: str, cases: Sequence[PairCase], records: list[Any]) -> Table:
+    """solve's csv of each pair of ``cases`` (:func:`pair_records` of each in ``records``), one
+    table: the rows of a pair's sweep (cage positions) and table life (preloads)."""
+    own = [k for k in OWN_KEYS if any(k in r for _, rs in records for r in rs)]
+    cols = csv_columns(tuple(k for k in PAIR_SERVICE if k in records[0][0]), own)
+    keys = [c.key for c in cols]
+    rows = []
+    for c, (pair, recs) in zip(cases, records, strict=True):
+        rows += csv_rows(c, pair, recs, keys)
+    blank = [{k: "" if r[k] is None else r[k] for k in keys} for r in rows]
+    return Table(title, cols, blank)

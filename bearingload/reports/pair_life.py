@@ -14,13 +14,12 @@ from __future__ import annotations
 from typing import Any
 
 from bearingload.reports.pair import (
-    OWN_KEYS,
     PAIR_ANSWERS,
     PAIR_INPUTS,
     PAIR_SERVICE,
-    csv_columns,
-    csv_rows,
     pair_records,
+    pairs_csv,
+    speed_service,
 )
 from bearingload.reports.quantities import QUANTITIES, units
 from bearingload.reports.render import Column, Table, render
@@ -29,7 +28,7 @@ from bearingload.studies.pair_life import LifeAgainstPreload
 
 #: The columns of the human table: (key, bearing or None, header).
 PRELOAD_KEYS = (
-    ("preload", None, "F_p"), ("q_max", 1, "Q_max 1"), ("q_max", 2, "Q_max 2"),
+    ("preload", None, "F_p"), ("preload_at_speed", None, "F_p at n"), ("q_max", 1, "Q_max 1"), ("q_max", 2, "Q_max 2"),
     ("loaded_balls", 1, "n 1"), ("loaded_balls", 2, "n 2"), ("stiffness_axial", None, "k_a"),
     ("stiffness_radial", None, "k_r"), ("lift_off_axial_load", None, "lift-off"),
     ("reference_rating_life", None, "L10r"), ("rating_life", None, "L10 ISO 281"),
@@ -48,13 +47,13 @@ def preload_life_report(t: LifeAgainstPreload, fmt: str, speed: float | None = N
     """Render ``t`` in ``fmt`` (table, markdown, csv, json): one row per preload; ``speed``
     [rpm]: the shaft speed of the lives in hours (solve's with ``--speed`` alone; the rows were
     solved with the ball dynamics where ``t.model`` says so)."""
-    records = [pair_records(c, _c0(c, speed)) for c in t.cases]
+    records = [pair_records(c, speed_service(c, speed)) for c in t.cases]
     if fmt == "csv":
-        return render([_csv_table(t, records)], "csv")
+        return render([pairs_csv("life against the preload", t.cases, records)], "csv")
     if fmt == "json":
         return render([], "json", document=_json(t, records, speed))
-    hours = "reference_rating_life_hours"  # a column at a speed only
-    keys = [(k, b, h) for k, b, h in PRELOAD_KEYS if k != hours or hours in records[0][0]]
+    at_speed = ("reference_rating_life_hours", "preload_at_speed")  # columns at a speed only
+    keys = [(k, b, h) for k, b, h in PRELOAD_KEYS if k not in at_speed or k in records[0][0]]
     columns = []
     for key, b, header in keys:
         q = QUANTITIES[key]
@@ -70,27 +69,6 @@ def preload_life_report(t: LifeAgainstPreload, fmt: str, speed: float | None = N
     return render([Table(_title(records[0][0], t), columns, rows, notes)], fmt)
 
 
-def _c0(c: Any, speed: float | None) -> list[Any]:
-    """Each bearing's service values as solve gives them with ``--speed`` alone (C_0; with a
-    speed the lives in hours)."""
-    from bearingload.bearings.service_life import Operating, service_values
-    from bearingload.studies.life_basis import combined_basis
-
-    return [service_values(Operating(speed=speed), combined_basis(b)) for b in c.bearings]
-
-
-def _csv_table(t: LifeAgainstPreload, records: list[Any]) -> Table:
-    """solve's csv of the pair at every preload, one table."""
-    own = [k for k in OWN_KEYS if any(k in r for _, rs in records for r in rs)]
-    cols = csv_columns(tuple(k for k in PAIR_SERVICE if k in records[0][0]), own)
-    keys = [c.key for c in cols]
-    rows = []
-    for c, (pair, recs) in zip(t.cases, records, strict=True):
-        rows += csv_rows(c, pair, recs, keys)
-    blank = [{k: "" if r[k] is None else r[k] for k in keys} for r in rows]
-    return Table("life against the preload", cols, blank)
-
-
 def _title(p: dict[str, Any], t: LifeAgainstPreload) -> str:
     who = f"bearings {p['bearing']}, " if p["bearing"] != "given by hand" else ""
     return (
@@ -102,10 +80,12 @@ def _title(p: dict[str, Any], t: LifeAgainstPreload) -> str:
 
 def _notes(t: LifeAgainstPreload, records: list[Any]) -> list[str]:
     """The note under the table: what the rows are, and the preload of the longest L10r."""
+    at_n = ("; F_p at n: the same at the speed, with the ball dynamics"
+            if "preload_at_speed" in records[0][0] else "")  # fmt: skip
     notes = [
-        "F_p: the axial force each bearing carries with no external load (solve --preload); "
-        "Q_max k, n k: bearing k's heaviest ball load and loaded balls; k_a, k_r: the pair's "
-        "axial and radial stiffness; lift-off: the axial load alone that unloads a bearing; "
+        f"F_p: the axial force each bearing carries with no external load (solve --preload), "
+        f"ground in at rest{at_n}; Q_max k, n k: bearing k's heaviest ball load and loaded "
+        "balls; k_a, k_r: the pair's axial and radial stiffness; lift-off: the axial load alone that unloads a bearing; "
         "L10r: the pair's (L1^-e + L2^-e)^(-1/e), e = 10/9, from the ball loads (ISO/TS "
         "16281); L10: the same rule on each bearing's ISO 281 (C/P)^3.",
     ]

@@ -20,14 +20,13 @@ from typing import Any
 from bearingload.reports.combined import ANGULAR_LABELS
 from bearingload.reports.pair import (
     CSV_INPUTS,
-    OWN_KEYS,
     PAIR_ANSWERS,
     PAIR_INPUTS,
     PAIR_SERVICE,
     STATIC_AT_SPEED,
-    csv_columns,
-    csv_rows,
     pair_records,
+    pairs_csv,
+    speed_service,
 )
 from bearingload.reports.quantities import QUANTITIES, Quantity, units
 from bearingload.reports.render import Column, Table, render
@@ -66,28 +65,11 @@ def pair_sweep_report(s: PairSweep, fmt: str, context: str = "") -> str:
     return render([_spread_table(s, context), _rows_table(s)], fmt)
 
 
-def _csv_table(s: Any) -> Table:
-    """solve's csv of the pair of every row of ``s`` (its ``cases``: the cage positions of a
-    sweep, the preloads of table life; its ``speed``, if any), one table."""
-    speed = getattr(s, "speed", None)
-    records = [pair_records(c, _c0(c, speed)) for c in s.cases]
-    own = [k for k in OWN_KEYS if any(k in r for _, rs in records for r in rs)]
-    cols = csv_columns(tuple(k for k in PAIR_SERVICE if k in records[0][0]), own)
-    keys = [c.key for c in cols]
-    rows = []
-    for c, (pair, recs) in zip(s.cases, records, strict=True):
-        rows += csv_rows(c, pair, recs, keys)
-    blank = [{k: "" if r[k] is None else r[k] for k in keys} for r in rows]
-    return Table("sweep", cols, blank)
-
-
-def _c0(c: Any, speed: float | None = None) -> list[Any]:
-    """Each bearing's service values as solve gives them with ``--speed`` alone (C_0; with a
-    speed the lives in hours)."""
-    from bearingload.bearings.service_life import Operating, service_values
-    from bearingload.studies.life_basis import combined_basis
-
-    return [service_values(Operating(speed=speed), combined_basis(b)) for b in c.bearings]
+def _csv_table(s: PairSweep) -> Table:
+    """solve's csv of the pair at every cage position (with its ``speed``, if any), one table."""
+    return pairs_csv(
+        "sweep", s.cases, [pair_records(c, speed_service(c, s.speed)) for c in s.cases]
+    )
 
 
 def _entries(s: PairSweep) -> list[tuple[str, Quantity, int | None]]:
@@ -173,7 +155,7 @@ def pair_sweep_json(s: PairSweep) -> dict[str, Any]:
     solve's json at each position and ``bearings``), ``summary``, ``units``, ``warnings``."""
     rows = []
     for c in s.cases:
-        pair, recs = pair_records(c, _c0(c, s.speed))
+        pair, recs = pair_records(c, speed_service(c, s.speed))
         answers = {k: pair[k] for k in ("cage_angle", *PAIR_ANSWERS, *PAIR_SERVICE) if k in pair}
         rows.append(answers | {"bearings": recs})
     head = {k: v for k, v in pair_records(s.cases[0])[0].items()
@@ -201,83 +183,3 @@ def _model_end(s: PairSweep) -> str:
     if s.dynamics is not None:
         return f"; {s.dynamics} in both bearings"
     return STATIC_AT_SPEED if s.speed is not None else ""
-
-
-#: The columns of ``table life`` of a pair: (key, bearing or None, header).
-PRELOAD_KEYS = (
-    ("preload", None, "F_p"), ("q_max", 1, "Q_max 1"), ("q_max", 2, "Q_max 2"),
-    ("loaded_balls", 1, "n 1"), ("loaded_balls", 2, "n 2"), ("stiffness_axial", None, "k_a"),
-    ("stiffness_radial", None, "k_r"), ("lift_off_axial_load", None, "lift-off"),
-    ("reference_rating_life", None, "L10r"), ("rating_life", None, "L10 ISO 281"),
-)  # fmt: skip
-
-
-def preload_life_report(t: Any, fmt: str) -> str:
-    """Render ``table life`` of a pair (:class:`bearingload.studies.pair_sweep.
-    LifeAgainstPreload`) in ``fmt``: one row per preload; csv: solve's pair csv at every
-    preload (one row per bearing); json: the pair's inputs, ``rows`` (the pair's keys of
-    solve's json and ``bearings``), ``units``, ``warnings``."""
-    if fmt == "csv":
-        return render([_csv_table(t)], "csv")
-    if fmt == "json":
-        return render([], "json", document=_preload_json(t))
-    records = [pair_records(c) for c in t.cases]
-    columns = []
-    for key, b, header in PRELOAD_KEYS:
-        q = QUANTITIES[key]
-        columns.append(Column(f"{key}{b or ''}", header, q.shown()[0], q.digits))
-    rows = []
-    for pair, recs in records:
-        row: dict[str, Any] = {}
-        for key, b, _ in PRELOAD_KEYS:
-            v = pair.get(key) if b is None else recs[b - 1].get(key)
-            row[f"{key}{b or ''}"] = "-" if v is None else v * QUANTITIES[key].shown()[1]
-        rows.append(row)
-    return render([Table(_preload_title(records[0][0], t), columns, rows,
-                         _preload_notes(t, records))], fmt)  # fmt: skip
-
-
-def _preload_title(p: dict[str, Any], t: Any) -> str:
-    who = f"bearings {p['bearing']}, " if p["bearing"] != "given by hand" else ""
-    return (
-        f"Life against the preload: {who}pair {p['arrangement']} "
-        f"({ARRANGEMENT_NAMES[p['arrangement']]}), z = {t.bearing.balls} per bearing, F_r = "
-        f"{p['load']:.6g} N, F_a = {p['axial_load']:.6g} N, {p['rotating']} ring rotating"
-    )
-
-
-def _preload_notes(t: Any, records: list[Any]) -> list[str]:
-    """The note under the table: what the rows are, and the preload of the longest L10r."""
-    notes = [
-        "F_p: the axial force each bearing carries with no external load (solve --preload); "
-        "Q_max k, n k: bearing k's heaviest ball load and loaded balls; k_a, k_r: the pair's "
-        "axial and radial stiffness; lift-off: the axial load alone that unloads a bearing; "
-        "L10r: the pair's (L1^-e + L2^-e)^(-1/e), e = 10/9, from the ball loads (ISO/TS "
-        "16281); L10: the same rule on each bearing's ISO 281 (C/P)^3.",
-    ]
-    lives = [pair.get("reference_rating_life") for pair, _ in records]
-    if all(v is not None for v in lives) and len(lives) > 1:
-        best = int(max(range(len(lives)), key=lambda i: lives[i]))
-        notes.append(
-            f"Among these rows the pair's L10r is longest at F_p = {t.preloads[best]:.6g} N "
-            f"({lives[best]:.6g} 10^6 rev): too little preload lets a bearing unload (its balls "
-            "may skid), too much loads both; the stiffness grows with the preload."
-        )
-    return notes
-
-
-def _preload_json(t: Any) -> dict[str, Any]:
-    rows = []
-    for c in t.cases:
-        pair, recs = pair_records(c, _c0(c))
-        rows.append({k: pair[k] for k in ("preload", *PAIR_ANSWERS)} | {"bearings": recs})
-    head = {k: v for k, v in pair_records(t.cases[0])[0].items()
-            if k in PAIR_INPUTS and k != "preload"}  # fmt: skip
-    keys = [*head, *rows[0], *(k for r in rows[0]["bearings"] for k in r)]
-    return {
-        **head,
-        "model": "pair of angular-contact ball bearings on one rigid shaft (ISO/TS 16281 each)",
-        "rows": rows,
-        "units": units(list(dict.fromkeys(keys)), 1.5),
-        "warnings": list(t.warnings),
-    }
