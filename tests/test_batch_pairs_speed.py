@@ -162,3 +162,16 @@ def test_outer_ring_turning_at_speed_is_refused_and_quasi_static_gives_its_lives
     lines = _rows(quasi.stdout)
     got = dict(zip(lines[0][1:], lines[1][1:], strict=True))
     assert {h: got[h] for h in solved[0]} == dict(zip(solved[0], solved[1], strict=True))
+
+
+def test_a_row_whose_lives_overflow_is_skipped_the_others_written():
+    """A speed so small that the life in hours overflows ended the whole file of pairs (exit 2,
+    the good rows lost); it is now that row's reason, as in a file of single bearings."""
+    text = ("bearing,load,axial_load,preload,speed\n7205BDB,1kN,300N,500N,10000\n"
+            "7205BDB,1kN,300N,500N,1e-307\n")  # fmt: skip
+    out = _batch(text, "--format", "csv")
+    assert out.exit_code == 1
+    assert [line.split(",", 1)[0] for line in out.stdout.splitlines()[1:]] == ["2", "2"]
+    assert out.stderr.splitlines()[0] == (
+        "Warning: row 3: speed: is so small that the life in hours L 10^6/(60 n) overflows"
+    )

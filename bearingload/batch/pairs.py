@@ -48,7 +48,7 @@ class PairSolver(BatchSolver):
         solved = solve_pairs(self, cols, len(numbers), bad)
         out = Chunk()
         keys = [c.key for c in pair_columns(None)] + [k for k in OIL_INPUTS if k in cols]
-        out.rows, out.values = pair_values(keys, solved, numbers, cols)
+        out.rows, out.values = pair_values(keys, solved, numbers, cols, bad)
         errors |= {numbers[i]: message for i, message in bad.items()}
         out.errors = sorted(errors.items())
         return out
@@ -191,13 +191,15 @@ def _quasi_static_hint(exc: InputError | ConvergenceError) -> BearingloadError |
 
 
 def pair_values(keys: list[str], solved: list[tuple[int, Any]], numbers: list[int],
-                cols: dict[str, list[Any]]) -> tuple[list[int], dict[str, list[Any]]]:  # fmt: skip
+                cols: dict[str, list[Any]],
+                bad: dict[int, str]) -> tuple[list[int], dict[str, list[Any]]]:  # fmt: skip
     """The output rows of the solved pairs (two per pair: its row number twice) and the values
     of the columns ``keys`` over them (None: blank), as solve gives the pair with the row's
     service cells as its options: each bearing's lives from its own loads, the pair's from
     them; ``warnings`` (the pair's, its speed's and its lives') on the first row of each pair;
     each bearing's model and contacts (json: :data:`bearingload.batch.report.HELD_KEYS`), as a
-    combined file's rows."""
+    combined file's rows. A row whose lives solve would refuse (a speed so small that its
+    life in hours overflows) goes to ``bad`` with its reason, the others are written."""
     from bearingload.bearings.checks import speed_findings
     from bearingload.bearings.oil import OIL_INPUTS
     from bearingload.bearings.service_life import service_values
@@ -215,8 +217,12 @@ def pair_values(keys: list[str], solved: list[tuple[int, Any]], numbers: list[in
         if op.speed is not None:  # above the catalogue's limiting speed, as solve warns
             found = tuple(speed_findings(op.speed, pc.bearing))
             pc = dataclasses.replace(pc, warnings=(*pc.warnings, *found))
-        service = [service_values(op, combined_basis(c)) for c in pc.bearings]
-        pair, records = pair_records(pc, service)
+        try:
+            service = [service_values(op, combined_basis(c)) for c in pc.bearings]
+            pair, records = pair_records(pc, service)
+        except BearingloadError as exc:
+            bad[i] = row_message(exc)
+            continue
         for j, out in enumerate(csv_rows(pc, pair, records, keys)):
             rows.append(numbers[i])
             for k in keys:

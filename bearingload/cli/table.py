@@ -432,8 +432,8 @@ def _solve_pairs(case: CaseOptions, b: Any, preloads: list[float]) -> Any:
 
 
 def _service(case: CaseOptions, t: Any) -> list[Any] | None:
-    """The lives of every row of a life-against-clearance table (the heaviest ball at the free
-    contact angle alpha_0 of the row for the film)."""
+    """The lives of every row of a life-against-clearance table (the heaviest ball at its
+    contact angle for the film, as solve takes it)."""
     from bearingload.bearings.service_life import LifeBasis
     from bearingload.cli.case_options import SERVICE_PARAMS
     from bearingload.cli.solve import service_lives
@@ -446,7 +446,7 @@ def _service(case: CaseOptions, t: Any) -> list[Any] | None:
             rating_life=t.rating_life,
             reference_rating_life=float(t.reference_rating_life[i]),
             q_max=float(t.q_max[i]),
-            contact_angle=float(t.free_contact_angle[i]),
+            contact_angle=float(t.heaviest_contact_angle[i]),
             **life_geometry(t.bearing),
         )
         for i in range(t.clearance.size)

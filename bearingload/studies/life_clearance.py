@@ -87,6 +87,8 @@ class LifeAgainstClearance:
     speed, ball_density : float or None
         Shaft speed [rpm] and ball density [kg/mm^3] of the ball dynamics; None: the static
         model.
+    heaviest_contact_angle : ndarray or None
+        Each row's contact angle of its heaviest ball (the film's, as solve's). [°]
     """
 
     bearing: ResolvedBearing
@@ -110,6 +112,7 @@ class LifeAgainstClearance:
     moment_cross: float | None = None
     tilt_radius: float | None = None
     model: str | None = None
+    heaviest_contact_angle: np.ndarray | None = None
     speed: float | None = None
     ball_density: float | None = None
 
@@ -267,7 +270,16 @@ def life_against_clearance(
         model=getattr(r, "model", None),
         speed=None if speed is None else float(speed),
         ball_density=_density(r),
+        heaviest_contact_angle=_heaviest_angle(r)[:n],
     )
+
+
+def _heaviest_angle(r: Any) -> np.ndarray:
+    """Each row's contact angle of its heaviest ball (of two equal, the first), the angle the
+    film takes, as solve takes it (:func:`bearingload.studies.life_basis.combined_basis`). [°]"""
+    loads = np.asarray(r.ball_loads, dtype=float)
+    heaviest = np.argmax(loads, axis=-1)[..., None]
+    return np.take_along_axis(np.asarray(r.contact_angles, dtype=float), heaviest, -1)[..., 0]
 
 
 def _density(r: Any) -> float | None:
