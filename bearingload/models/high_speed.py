@@ -656,30 +656,39 @@ def _coupled(r: _Ring, v: np.ndarray) -> tuple[np.ndarray, ...]:
     ao = np.where(do <= 0, 0.0, ao)
     do = np.maximum(do, (fc / r.b.ko[..., -1]) ** (2.0 / 3.0))
     arms = _arms(r)
-    cur = _coupled_residual(r, arms, v, do, ao)
+    cur = list(_coupled_residual(r, arms, v, do, ao))
     going = (r.b.omega[:, 0] > 0) & cur[-1]
     steps, damped = np.zeros(n, dtype=int), np.zeros(n, dtype=int)
     for _ in range(FAST_ITERATIONS):
-        going &= damped < FAST_DAMPED
-        going &= ~((cur[1] <= TOLERANCE) & (cur[2] <= BALL_TOLERANCE))
+        going &= (damped < FAST_DAMPED) & ~((cur[1] <= TOLERANCE) & (cur[2] <= BALL_TOLERANCE))
         rows = np.flatnonzero(going)
         if rows.size == 0:
             break
-        sub, sub_arms = r.take(rows), (arms[0][rows], arms[1][rows])
-        dv, y0, dy = _coupled_step(sub, sub_arms, v[rows], do[rows], ao[rows],
-                                   tuple(a[rows] for a in cur[0]))  # fmt: skip
+        sub, sub_arms, t = r, arms, cur[0]
+        if rows.size < n:  # (one case alone, always every case: no copies)
+            sub, sub_arms = r.take(rows), (arms[0][rows], arms[1][rows])
+            t = tuple(a[rows] for a in t)
+        dv, y0, dy = _coupled_step(sub, sub_arms, v[rows], do[rows], ao[rows], t)
         pending, lam = np.arange(rows.size), 1.0
         for _ in range(FAST_HALVINGS):
-            part = sub.take(pending)
+            every = pending.size == n
+            part, part_arms = (r, arms) if every else (
+                sub.take(pending), (sub_arms[0][pending], sub_arms[1][pending]))  # fmt: skip
             y1, y2 = y0[0][pending] + lam * dy[0][pending], y0[1][pending] + lam * dy[1][pending]
-            v2, do2 = v[rows[pending]] + lam * dv[pending], np.hypot(y1, y2) - part.b.ro
-            part_arms = (sub_arms[0][pending], sub_arms[1][pending])
-            got = _coupled_residual(part, part_arms, v2, do2, np.arctan2(y1, y2))
+            v2, do2, ao2 = (
+                v[rows[pending]] + lam * dv[pending],
+                np.hypot(y1, y2) - part.b.ro,
+                np.arctan2(y1, y2),
+            )
+            got = _coupled_residual(part, part_arms, v2, do2, ao2)
             better = got[-1] & (got[3] < (1.0 - 1e-4 * lam) * cur[3][rows[pending]])
             won = rows[pending[better]]
-            v[won], do[won], ao[won] = v2[better], do2[better], np.arctan2(y1, y2)[better]
-            for mine, theirs in zip(cur[0] + cur[1:], got[0] + got[1:], strict=True):
-                mine[won] = theirs[better]
+            if every and better.all():
+                v, do, ao, cur = v2, do2, ao2, list(got)
+            else:
+                v[won], do[won], ao[won] = v2[better], do2[better], ao2[better]
+                for mine, theirs in zip(cur[0] + tuple(cur[1:]), got[0] + got[1:], strict=True):
+                    mine[won] = theirs[better]
             steps[won] += 1
             damped[won] += lam < 1.0
             pending, lam = pending[~better], 0.5 * lam
