@@ -50,7 +50,10 @@ Model (one ball ``j`` at ``phi_j``; the geometry, loads and conventions of
 * Not modelled: ring expansion, cage and lubricant forces, the inner contact's friction; the
   ring rotating is the inner one.
 
-Numerics. For given ring positions each ball's two equations are solved by Newton on its centre
+Numerics. A first stage takes Newton steps on the ring and every ball together (the balls'
+2x2 blocks eliminated, :func:`_coupled`); a case it brings near balance goes on from there to
+the nested solver below, which decides (the others start it from the static answer). For given
+ring positions each ball's two equations are solved by Newton on its centre
 (X_1, X_2), all balls of all cases at once (each until it is balanced), from the ball's last
 position moved to first order with the ring (its sensitivity), with the Jacobians
 from the complex step (exact to rounding); a ball left unbalanced is solved alone from its
@@ -129,12 +132,15 @@ NOISE_MAX = 1e-6
 RING_ITERATIONS = 200
 LM_TRIALS = 12
 HALVINGS = 6
-#: Steps of the coupled first stage (:func:`_coupled`); a case it leaves within FAST_HAND_ON
-#: (ring, of the largest applied load; each ball, of its forces) goes on from its answer, the
-#: others from the static answer as before. [-]
+#: The coupled first stage (:func:`_coupled`): steps at most; trials of a step (the step and
+#: its halvings); halved steps after which a case stops; steps after which a case whose
+#: combined residual has not halved over the last three stops. A case it leaves within
+#: FAST_HAND_ON (ring, of the largest applied load; each ball, of its forces) goes on from its
+#: answer, the others from the static answer as before. [-]
 FAST_ITERATIONS = 12
 FAST_HALVINGS = 3
 FAST_DAMPED = 3
+FAST_SLOW = 3
 FAST_HAND_ON = 1e-6
 #: Stages of the continuation in speed of a case the direct solve leaves unbalanced. [-]
 CONTINUATION_STAGES = 200
@@ -643,11 +649,12 @@ def _coupled(r: _Ring, v: np.ndarray) -> tuple[np.ndarray, ...]:
     ball Newton step per ring step instead of every ball solved at every ring iterate. From the
     static answer ``v``, the balls on their lines pressed by about F_c (as :func:`_evaluate`
     starts them); each step halved until the combined residual (:func:`_coupled_residual`)
-    falls, each case until it is balanced (TOLERANCE, BALL_TOLERANCE), no step lowers its
-    residual, or for FAST_ITERATIONS steps; cases at speed 0 are not moved. It decides nothing:
-    the nested solver (:func:`_newton`) goes on from its answer. Returns (v, do, ao, handed_on
-    (n,) bool: balanced to FAST_HAND_ON, ring and balls, a ball touching the inner ring; steps
-    (n,)). [mm, rad]"""
+    falls. Each case until it is balanced (TOLERANCE, BALL_TOLERANCE), or no step lowers its
+    residual, or after FAST_DAMPED halved steps, or when its residual has not halved over three
+    steps (from the FAST_SLOW-th on), or after FAST_ITERATIONS steps; cases at speed 0 are not
+    moved. It decides nothing: the nested solver (:func:`_newton`) goes on from its answer.
+    Returns (v, do, ao, handed_on (n,) bool: balanced to FAST_HAND_ON, ring and balls, a ball
+    touching the inner ring; steps (n,)). [mm, rad]"""
     n = v.shape[0]
     v = v.copy()
     rho, _, up = _centres(r, v)
@@ -659,8 +666,11 @@ def _coupled(r: _Ring, v: np.ndarray) -> tuple[np.ndarray, ...]:
     cur = list(_coupled_residual(r, arms, v, do, ao))
     going = (r.b.omega[:, 0] > 0) & cur[-1]
     steps, damped = np.zeros(n, dtype=int), np.zeros(n, dtype=int)
+    past = [cur[3].copy()] * 3  # the combined residual at the last iterations
     for _ in range(FAST_ITERATIONS):
         going &= (damped < FAST_DAMPED) & ~((cur[1] <= TOLERANCE) & (cur[2] <= BALL_TOLERANCE))
+        going &= ~((steps >= FAST_SLOW) & (cur[3] > 0.5 * past[-3]))  # not halved in three
+        past.append(cur[3].copy())
         rows = np.flatnonzero(going)
         if rows.size == 0:
             break
