@@ -712,12 +712,20 @@ def _coupled(r: _Ring, v: np.ndarray) -> tuple[np.ndarray, ...]:
 def _coupled_residual(
     r: _Ring, arms: tuple[np.ndarray, np.ndarray], v: np.ndarray, do: np.ndarray, ao: np.ndarray
 ) -> tuple[Any, ...]:
-    """The residuals of the coupled stage at (v, do, ao): (the balls' terms (real), the ring
-    residual over f_ref, the largest ball residual over its forces, the combined 2-norm of the
-    free ring residual over f_ref and of every ball's over its forces (n,), whether all are
-    finite and some ball touches the inner ring (n,)). [-]"""
-    rho, u, up = _centres(r, v)
-    t = ball_terms(r.b, rho, up, do, ao)
+    """The residuals of the coupled stage at (v, do, ao): (the balls' terms (their real parts)
+    and, last, their partial derivatives (n, z, 4, 4) (rows g1, g2, Fa, Fr; columns do, ao,
+    rho, u'), the ring residual over f_ref, the largest ball residual over its forces, the
+    combined 2-norm of the free ring residual over f_ref and of every ball's over its forces
+    (n,), whether all are finite and some ball touches the inner ring (n,)). One call of the ball
+    equations: the four complex steps stacked (:func:`_ring_forces`), the terms from the real
+    part of the first (the derivatives are at hand when the trial is taken). [-]"""
+    rho, _, up = _centres(r, v)
+    h = _H * (r.b.ri + r.b.ro)
+    e = 1j * np.eye(4)[:, :, None, None]  # e[:, k]: step k only
+    cols = ball_terms(r.b, rho + h * e[:, 2], up + h * e[:, 3], do + h * e[:, 0], ao + _H * e[:, 1])
+    # d[row, col]: rows g1, g2, Fa, Fr; columns do, ao, rho, u'
+    d = np.stack([cols[k] for k in (0, 1, 12, 13)]).imag / np.stack([h, h * 0.0 + _H, h, h])
+    t = tuple(np.real(c[0]) for c in cols) + (d.transpose(2, 3, 0, 1),)
     arm_r, arm_a = arms
     gen = (arm_r * t[13][:, None, :] + arm_a * t[12][:, None, :]).sum(-1)
     res = np.where(r.held, 0.0, r.f - gen) / r.f_ref[:, None]
@@ -736,15 +744,11 @@ def _coupled_step(
     components not moved, no longer than A/10), each ball's step ``-(dg/dX)^-1 g`` plus its
     sensitivity times its groove centre's move, no longer than r'_o/4 and cut where it would
     press the ball into the inner ring by more than twice its inner approach or the approach
-    ``(F_c/K_i)^(2/3)`` (Newton's overshoot on ``delta^1.5`` near 0). The partial derivatives by
-    the complex step, the four in one call (:func:`_ring_forces`). Returns (dv (n, 5), the ball
-    centres (X_1, X_2) and their steps (n, z)). [mm]"""
+    ``(F_c/K_i)^(2/3)`` (Newton's overshoot on ``delta^1.5`` near 0). The partial derivatives
+    are the last of ``t`` (:func:`_coupled_residual`). Returns (dv (n, 5), the ball centres
+    (X_1, X_2) and their steps (n, z)). [mm]"""
     rho, u, up = _centres(r, v)
-    h = _H * (r.b.ri + r.b.ro)
-    e = 1j * np.eye(4)[:, :, None, None]  # e[:, k]: step k only
-    cols = ball_terms(r.b, rho + h * e[:, 2], up + h * e[:, 3], do + h * e[:, 0], ao + _H * e[:, 1])
-    # d[row, col]: rows g1, g2, Fa, Fr; columns do, ao, rho, u'
-    d = np.stack([cols[k] for k in (0, 1, 12, 13)]).imag / np.stack([h, h * 0.0 + _H, h, h])
+    d = t[14].transpose(2, 3, 0, 1)  # d[row, col]: rows g1, g2, Fa, Fr; columns do, ao, rho, u'
     det = d[0, 0] * d[1, 1] - d[0, 1] * d[1, 0]
     inv = np.stack([[d[1, 1], -d[0, 1]], [-d[1, 0], d[0, 0]]]) / det
     xg = inv[:, 0] * t[0] + inv[:, 1] * t[1]  # (dg/dX)^-1 g (2, n, z)
