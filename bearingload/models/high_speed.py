@@ -50,7 +50,10 @@ Model (one ball ``j`` at ``phi_j``; the geometry, loads and conventions of
 * Not modelled: ring expansion, cage and lubricant forces, the inner contact's friction; the
   ring rotating is the inner one.
 
-Numerics. For given ring positions each ball's two equations are solved by Newton on its centre
+Numerics. A first stage takes Newton steps on the ring and every ball together (the balls'
+2x2 blocks eliminated, :func:`_coupled`); a case it brings near balance goes on from there to
+the nested solver below, which decides (the others start it from the static answer). For given
+ring positions each ball's two equations are solved by Newton on its centre
 (X_1, X_2), all balls of all cases at once (each until it is balanced), from the ball's last
 position moved to first order with the ring (its sensitivity), with the Jacobians
 from the complex step (exact to rounding); a ball left unbalanced is solved alone from its
@@ -89,6 +92,8 @@ from bearingload.errors import ConvergenceError, InputError
 from bearingload.models import combined as _combined
 from bearingload.models._ball_dynamics import (
     _H,
+    BALL_TOLERANCE,
+    _ball_norm,
     _line_start,
     _power,
     _Set,
@@ -127,6 +132,16 @@ NOISE_MAX = 1e-6
 RING_ITERATIONS = 200
 LM_TRIALS = 12
 HALVINGS = 6
+#: The coupled first stage (:func:`_coupled`): steps at most; trials of a step (the step and
+#: its halvings); halved steps after which a case stops; steps after which a case whose
+#: combined residual has not halved over the last three stops. A case it leaves within
+#: FAST_HAND_ON (ring, of the largest applied load; each ball, of its forces) goes on from its
+#: answer, the others from the static answer as before. [-]
+FAST_ITERATIONS = 12
+FAST_HALVINGS = 3
+FAST_DAMPED = 3
+FAST_SLOW = 3
+FAST_HAND_ON = 1e-6
 #: Stages of the continuation in speed of a case the direct solve leaves unbalanced. [-]
 CONTINUATION_STAGES = 200
 #: N mm per kg mm^2/s^2 (forces from kg, mm, s). [-]
@@ -504,10 +519,7 @@ def _evaluate(
 ) -> _State:
     """Solve every ball at the ring position v from (do, ao) (moved to first order by the
     balls' sensitivities ``sens`` of a previous state); the ring forces and tangent."""
-    c, s = r.c, r.s
-    rho = r.base[:, None] + v[:, 0, None] * c + v[:, 1, None] * s
-    u = v[:, 2, None] + v[:, 3, None] * c + v[:, 4, None] * s
-    up = np.where(r.one_sided[:, None], np.maximum(u, 0.0), u)
+    rho, u, up = _centres(r, v)
     if sens is not None:
         dr, du = rho - sens[..., 0], up - sens[..., 1]
         do = do + sens[..., 2] * dr + sens[..., 4] * du
@@ -523,13 +535,7 @@ def _evaluate(
     do = np.where(moving, np.maximum(do, (fc / r.b.ko[..., -1]) ** (2.0 / 3.0)), do)
     do, ao, ok = solve_balls(r.b, rho, up, do, ao)
     fa, fr, d, terms, sens, gain = _ring_forces(r.b, rho, u, do, ao, r.one_sided)
-    zero, one = np.zeros_like(c), np.ones_like(c)
-    arm_r = np.stack([c, s, zero, zero, zero], axis=1)  # (n, 5, z)
-    arm_a = np.stack([zero, zero, one, c, s], axis=1)
-    gen = (arm_r * fr[:, None, :] + arm_a * fa[:, None, :]).sum(-1)
-    d_fr = d[1, 0][:, None, :] * arm_r + d[1, 1][:, None, :] * arm_a  # (n, 5 = l, z)
-    d_fa = d[0, 0][:, None, :] * arm_r + d[0, 1][:, None, :] * arm_a
-    jac = np.einsum("nkz,nlz->nkl", arm_r, d_fr) + np.einsum("nkz,nlz->nkl", arm_a, d_fa)
+    arm_r, arm_a, gen, jac = _assemble(r, fr, fa, d)
     res = np.where(r.held, 0.0, r.f - gen)
     merit = np.abs(res).max(axis=1) / r.f_ref
     floor = _rounding(arm_r, arm_a, fr, fa, d, np.abs(rho) + np.abs(up))
@@ -548,6 +554,31 @@ def _evaluate(
     score = np.where(balls_ok & np.isfinite(score), score, np.inf)
     level = floor.max(axis=1) / r.f_ref
     return _State(do, ao, balls_ok, gen, jac, merit, tuple(terms), sens, score, level)
+
+
+def _centres(r: _Ring, v: np.ndarray) -> tuple[np.ndarray, np.ndarray, np.ndarray]:
+    """Each ball's inner groove centre from its outer one at the ring position v: radial
+    ``rho``, axial ``u`` and ``u'`` (``max(u, 0)`` for angular contact) (n, z). [mm]"""
+    c, s = r.c, r.s
+    rho = r.base[:, None] + v[:, 0, None] * c + v[:, 1, None] * s
+    u = v[:, 2, None] + v[:, 3, None] * c + v[:, 4, None] * s
+    up = np.where(r.one_sided[:, None], np.maximum(u, 0.0), u)
+    return rho, u, up
+
+
+def _assemble(
+    r: _Ring, fr: np.ndarray, fa: np.ndarray, d: np.ndarray,
+    arms: tuple[np.ndarray, np.ndarray] | None = None,
+) -> tuple[np.ndarray, ...]:  # fmt: skip
+    """The arms of the balls' radial and axial forces (n, 5, z) (``arms``, if at hand: those of
+    :func:`_arms`), the generalised ring forces (n, 5) [N] and their tangent (n, 5, 5) [N/mm]
+    from the balls' forces (n, z) and their total derivatives ``d`` (:func:`_ring_forces`)."""
+    arm_r, arm_a = _arms(r) if arms is None else arms  # (n, 5, z)
+    gen = (arm_r * fr[:, None, :] + arm_a * fa[:, None, :]).sum(-1)
+    d_fr = d[1, 0][:, None, :] * arm_r + d[1, 1][:, None, :] * arm_a  # (n, 5 = l, z)
+    d_fa = d[0, 0][:, None, :] * arm_r + d[0, 1][:, None, :] * arm_a
+    jac = np.einsum("nkz,nlz->nkl", arm_r, d_fr) + np.einsum("nkz,nlz->nkl", arm_a, d_fa)
+    return arm_r, arm_a, gen, jac
 
 
 def _rounding(
@@ -610,6 +641,150 @@ def _newton(r: _Ring, v: np.ndarray, do: np.ndarray, ao: np.ndarray) -> tuple[An
         stalled[pending] = True  # no step lowered the residual: its rounding
         todo = todo[~stalled & ~(st.merit[todo] <= TOLERANCE)]
     return v, st, its
+
+
+def _coupled(r: _Ring, v: np.ndarray) -> tuple[np.ndarray, ...]:
+    """The fast first stage: Newton on the ring and every ball together (5 + 2z unknowns a
+    case), each ball's 2x2 block eliminated (the Schur complement, :func:`_coupled_step`): one
+    ball Newton step per ring step instead of every ball solved at every ring iterate. From the
+    static answer ``v``, the balls on their lines pressed by about F_c (as :func:`_evaluate`
+    starts them); each step halved until the combined residual (:func:`_coupled_residual`)
+    falls. Each case until it is balanced (TOLERANCE, BALL_TOLERANCE), or no step lowers its
+    residual, or after FAST_DAMPED halved steps, or when its residual has not halved over three
+    steps (from the FAST_SLOW-th on), or after FAST_ITERATIONS steps; cases at speed 0 are not
+    moved. It decides nothing: the nested solver (:func:`_newton`) goes on from its answer.
+    Returns (v, do, ao, handed_on (n,) bool: balanced to FAST_HAND_ON, ring and balls, a ball
+    touching the inner ring; steps (n,)). [mm, rad]"""
+    n = v.shape[0]
+    v = v.copy()
+    rho, _, up = _centres(r, v)
+    do, ao = _line_start(r.b, rho, up)
+    fc = 0.125 * r.b.mass * r.b.dm * r.b.omega**2 * _KG_MM
+    ao = np.where(do <= 0, 0.0, ao)
+    do = np.maximum(do, (fc / r.b.ko[..., -1]) ** (2.0 / 3.0))
+    arms = _arms(r)
+    cur = list(_coupled_residual(r, arms, v, do, ao))
+    going = (r.b.omega[:, 0] > 0) & cur[-1]
+    steps, damped = np.zeros(n, dtype=int), np.zeros(n, dtype=int)
+    past = [cur[3].copy()] * 3  # the combined residual at the last iterations
+    for _ in range(FAST_ITERATIONS):
+        going &= (damped < FAST_DAMPED) & ~((cur[1] <= TOLERANCE) & (cur[2] <= BALL_TOLERANCE))
+        going &= ~((steps >= FAST_SLOW) & (cur[3] > 0.5 * past[-3]))  # not halved in three
+        past.append(cur[3].copy())
+        rows = np.flatnonzero(going)
+        if rows.size == 0:
+            break
+        sub, sub_arms, t = r, arms, cur[0]
+        if rows.size < n:  # (one case alone, always every case: no copies)
+            sub, sub_arms = r.take(rows), (arms[0][rows], arms[1][rows])
+            t = tuple(a[rows] for a in t)
+        dv, y0, dy = _coupled_step(sub, sub_arms, v[rows], do[rows], ao[rows], t)
+        pending, lam = np.arange(rows.size), 1.0
+        for _ in range(FAST_HALVINGS):
+            every = pending.size == n
+            part, part_arms = (r, arms) if every else (
+                sub.take(pending), (sub_arms[0][pending], sub_arms[1][pending]))  # fmt: skip
+            y1, y2 = y0[0][pending] + lam * dy[0][pending], y0[1][pending] + lam * dy[1][pending]
+            v2, do2, ao2 = (
+                v[rows[pending]] + lam * dv[pending],
+                np.hypot(y1, y2) - part.b.ro,
+                np.arctan2(y1, y2),
+            )
+            got = _coupled_residual(part, part_arms, v2, do2, ao2)
+            better = got[-1] & (got[3] < (1.0 - 1e-4 * lam) * cur[3][rows[pending]])
+            won = rows[pending[better]]
+            if every and better.all():
+                v, do, ao, cur = v2, do2, ao2, list(got)
+            else:
+                v[won], do[won], ao[won] = v2[better], do2[better], ao2[better]
+                for mine, theirs in zip(cur[0] + tuple(cur[1:]), got[0] + got[1:], strict=True):
+                    mine[won] = theirs[better]
+            steps[won] += 1
+            damped[won] += lam < 1.0
+            pending, lam = pending[~better], 0.5 * lam
+            if pending.size == 0:
+                break
+        going[rows[pending]] = False  # no step lowered the residual
+    near = cur[-1] & (cur[1] <= FAST_HAND_ON) & (cur[2] <= FAST_HAND_ON)
+    return v, do, ao, near & (r.b.omega[:, 0] > 0), steps
+
+
+def _coupled_residual(
+    r: _Ring, arms: tuple[np.ndarray, np.ndarray], v: np.ndarray, do: np.ndarray, ao: np.ndarray
+) -> tuple[Any, ...]:
+    """The residuals of the coupled stage at (v, do, ao): (the balls' terms (their real parts)
+    and, last, their partial derivatives (n, z, 4, 4) (rows g1, g2, Fa, Fr; columns do, ao,
+    rho, u'), the ring residual over f_ref, the largest ball residual over its forces, the
+    combined 2-norm of the free ring residual over f_ref and of every ball's over its forces
+    (n,), whether all are finite and some ball touches the inner ring (n,)). One call of the ball
+    equations: the four complex steps stacked (:func:`_ring_forces`), the terms from the real
+    part of the first (the derivatives are at hand when the trial is taken). [-]"""
+    rho, _, up = _centres(r, v)
+    h = _H * (r.b.ri + r.b.ro)
+    e = 1j * np.eye(4)[:, :, None, None]  # e[:, k]: step k only
+    cols = ball_terms(r.b, rho + h * e[:, 2], up + h * e[:, 3], do + h * e[:, 0], ao + _H * e[:, 1])
+    # d[row, col]: rows g1, g2, Fa, Fr; columns do, ao, rho, u'
+    d = np.stack([cols[k] for k in (0, 1, 12, 13)]).imag / np.stack([h, h * 0.0 + _H, h, h])
+    t = tuple(np.real(c[0]) for c in cols) + (d.transpose(2, 3, 0, 1),)
+    arm_r, arm_a = arms
+    gen = (arm_r * t[13][:, None, :] + arm_a * t[12][:, None, :]).sum(-1)
+    res = np.where(r.held, 0.0, r.f - gen) / r.f_ref[:, None]
+    norm = _ball_norm(r.b, t, do, np.ones(do.shape, dtype=bool))[0]
+    combined = np.sqrt((res * res).sum(axis=1) + (norm * norm).sum(axis=1))
+    finite = np.isfinite(combined) & np.any(t[2] > 0, axis=1)
+    return t, np.abs(res).max(axis=1), norm.max(axis=1), combined, finite
+
+
+def _coupled_step(
+    r: _Ring, arms: tuple[np.ndarray, np.ndarray], v: np.ndarray, do: np.ndarray, ao: np.ndarray,
+    t: tuple[Any, ...],
+) -> tuple[Any, ...]:  # fmt: skip
+    """The coupled Newton step at (v, do, ao), the balls' terms ``t`` there: the ring step from
+    ``J dv = f - F + sum dF/dX (dg/dX)^-1 g`` (J the tangent with the balls eliminated, held
+    components not moved, no longer than A/10), each ball's step ``-(dg/dX)^-1 g`` plus its
+    sensitivity times its groove centre's move, no longer than r'_o/4 and cut where it would
+    press the ball into the inner ring by more than twice its inner approach or the approach
+    ``(F_c/K_i)^(2/3)`` (Newton's overshoot on ``delta^1.5`` near 0). The partial derivatives
+    are the last of ``t`` (:func:`_coupled_residual`). Returns (dv (n, 5), the ball centres
+    (X_1, X_2) and their steps (n, z)). [mm]"""
+    rho, u, up = _centres(r, v)
+    d = t[14].transpose(2, 3, 0, 1)  # d[row, col]: rows g1, g2, Fa, Fr; columns do, ao, rho, u'
+    det = d[0, 0] * d[1, 1] - d[0, 1] * d[1, 0]
+    inv = np.stack([[d[1, 1], -d[0, 1]], [-d[1, 0], d[0, 0]]]) / det
+    xg = inv[:, 0] * t[0] + inv[:, 1] * t[1]  # (dg/dX)^-1 g (2, n, z)
+    sens = -np.einsum("kmnz,mpnz->kpnz", inv, d[:2, 2:])  # dX/d(rho, u')
+    dup = np.where(r.one_sided[:, None], (u > 0).astype(float), 1.0)
+    tot = d[2:, 2:] + np.einsum("rknz,kpnz->rpnz", d[2:, :2], sens)
+    tot[:, 1] *= dup
+    arm_r, arm_a, gen, jac = _assemble(r, t[13], t[12], tot, arms)
+    corr = np.einsum("rknz,knz->rnz", d[2:, :2], xg)  # dF/dX (dg/dX)^-1 g (Fa, Fr)
+    rhs = r.f - gen + (arm_a * corr[0][:, None, :] + arm_r * corr[1][:, None, :]).sum(-1)
+    rhs = np.where(r.held | ~np.isfinite(rhs), 0.0, rhs)
+    jac = np.where(r.held[:, :, None] | r.held[:, None, :], 0.0, jac)
+    jac[:, np.arange(5), np.arange(5)] += r.held
+    dv = trial_step(jac, rhs, r.held, r.length, 0)
+    rho2, _, up2 = _centres(r, v + dv)
+    s = -xg + sens[:, 0] * (rho2 - rho) + sens[:, 1] * (up2 - up)  # d(do, ao)
+    lo, so, co = r.b.ro + do, np.sin(ao), np.cos(ao)
+    x1, x2 = so * s[0] + lo * co * s[1], co * s[0] - lo * so * s[1]  # the ball centre's step
+    cut = np.minimum(1.0, 0.25 * r.b.ro / np.maximum(np.hypot(x1, x2), 1e-300))
+    y0 = (lo * so, lo * co)
+    x1, x2 = np.where(np.isfinite(x1), x1 * cut, 0.0), np.where(np.isfinite(x2), x2 * cut, 0.0)
+    di0 = np.maximum(t[11], 0.0)
+    di1 = np.hypot(up2 - y0[0] - x1, np.maximum(rho2 - y0[1] - x2, 0.0)) - r.b.ri
+    fc = 0.125 * r.b.mass * r.b.dm * r.b.omega**2 * _KG_MM
+    bound = np.maximum(2.0 * di0, 2.0 * (fc / r.b.ki[..., -1]) ** (2.0 / 3.0))
+    kap = np.where(di1 > bound, (bound - di0) / np.where(di1 > bound, di1 - di0, 1.0), 1.0)
+    kap = np.clip(np.where(np.isfinite(kap), kap, 1.0), 0.0, 1.0)
+    return dv, y0, (x1 * kap, x2 * kap)
+
+
+def _arms(r: _Ring) -> tuple[np.ndarray, np.ndarray]:
+    """The arms of the balls' radial and axial forces in the generalised ring forces (n, 5,
+    z). [-]"""
+    c, s = r.c, r.s
+    zero, one = np.zeros_like(c), np.ones_like(c)
+    return np.stack([c, s, zero, zero, zero], axis=1), np.stack([zero, zero, one, c, s], axis=1)
 
 
 def _norm2(r: _Ring, st: _State) -> np.ndarray:
@@ -703,7 +878,7 @@ def _solve(
     b = _Set(ri, ro, dwc, dmc, omega, mass, ki, ko)
     ring = _Ring(b, c, s, geo.A - geo.g, f, f_ref, held, one_sided, geo.A)
     nan = np.full((n, z), np.nan)
-    v, st, total = _newton(ring, v_static.copy(), nan, nan)
+    v, st, total = _first_solve(ring, v_static, nan)
     bad = np.flatnonzero(~st.accepted)
     if bad.size:
         start = pos["shifted"](bad)
@@ -720,6 +895,25 @@ def _solve(
     _check_resolved(st, ring, flat)
     _check(st, total, flat, one_sided)
     return ring, v, st, total
+
+
+def _first_solve(r: _Ring, v_static: np.ndarray, nan: np.ndarray) -> tuple[Any, ...]:
+    """The nested Newton (:func:`_newton`) from the coupled stage's answer (:func:`_coupled`)
+    where it came within FAST_HAND_ON, from the static answer elsewhere and where the first
+    leaves a case unbalanced. Returns (v, state, iterations (n,))."""
+    fv, fdo, fao, handed, steps = _coupled(r, v_static)
+    v0 = np.where(handed[:, None], fv, v_static)
+    do0, ao0 = np.where(handed[:, None], fdo, nan), np.where(handed[:, None], fao, nan)
+    v, st, total = _newton(r, v0, do0, ao0)
+    total += steps
+    bad = np.flatnonzero(handed & ~st.accepted)
+    if bad.size:
+        v2, st2, its2 = _newton(r.take(bad), v_static[bad].copy(), nan[bad], nan[bad])
+        total[bad] += its2
+        won = np.flatnonzero(st2.accepted)
+        v[bad[won]] = v2[won]
+        _put_state(st, bad[won], _take_state(st2, won))
+    return v, st, total
 
 
 def _continuation(
