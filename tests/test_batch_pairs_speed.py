@@ -134,7 +134,8 @@ def test_cells_the_dynamics_cannot_take_skip_their_row_with_solves_reason():
         (dict(good, speed="90000"),
          "speed: n d_m must be at most 2e+06 mm/min for the ball-dynamics model (n = 90000 rpm "
          "with d_m = 38.5 mm: at most 51948.05195 rpm; beyond, ring expansion, cage and "
-         "lubricant forces it leaves out matter)"),
+         "lubricant forces it leaves out matter); quasi_static true gives the static model at "
+         "any speed (the lives in hours)"),
     ]  # fmt: skip
     out = _batch(_file([good, *(c for c, _ in bad)]), "--format", "csv")
     assert out.exit_code == 1

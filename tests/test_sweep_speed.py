@@ -122,6 +122,16 @@ def test_an_inner_contact_on_the_groove_side_is_warned_of(capsys):
          "which --quasi-static or a missing --speed leave out"),
         (("7205BDB", "--preload", "0", "-F", "0", "-A", "1e-6N", "--speed", "30000"),
          None),
+        (("6205", "-F", "1kN", "--speed", "51948.06"),
+         "Error: Invalid value for '--speed': n d_m must be at most 2e+06 mm/min for the "
+         "ball-dynamics model (n = 51948.06 rpm with d_m = 38.5 mm: at most 51948.05195 rpm; "
+         "beyond, ring expansion, cage and lubricant forces it leaves out matter); --quasi-static "
+         "gives the static model at any speed (the lives in hours)"),
+        (("7205BDB", "--preload", "300N", "-F", "1kN", "--speed", "51948.06"),
+         "Error: Invalid value for '--speed': n d_m must be at most 2e+06 mm/min for the "
+         "ball-dynamics model (n = 51948.06 rpm with d_m = 38.5 mm: at most 51948.05195 rpm; "
+         "beyond, ring expansion, cage and lubricant forces it leaves out matter); --quasi-static "
+         "gives the static model at any speed (the lives in hours)"),
         (("6205", "-F", "1kN", "--speed", "3000", "--rotating", "outer"),
          "Error: Invalid value for '--rotating': the ball dynamics at --speed are coded for the "
          "inner ring turning (docs/speed.md); give --quasi-static for the static model with the "

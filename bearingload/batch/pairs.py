@@ -22,6 +22,7 @@ import numpy as np
 
 from bearingload.batch.read import row_message
 from bearingload.batch.solve import (
+    FAST_WAY,
     BatchSolver,
     Chunk,
     _angles,
@@ -180,11 +181,14 @@ def _call(key: tuple[Any, ...], idx: list[int], cols: dict[str, list[Any]]) -> l
 def _quasi_static_hint(exc: InputError | ConvergenceError) -> BearingloadError | None:
     """A pair at speed the ball dynamics leave unbalanced, or refuse as too light, with the way
     out in the batch's words (solve names --quasi-static); None for another refusal."""
+    from bearingload.models.high_speed import too_fast
     from bearingload.models.pair_speed import STATIC_WAY
 
     way = "quasi_static true gives the static model of the pair"
     if isinstance(exc, ConvergenceError):
         return BearingloadError(f"{exc}; {way}")
+    if too_fast(exc):
+        return InputError(exc.parameter, f"{str(exc).split(': ', 1)[-1]}; {FAST_WAY}")
     if STATIC_WAY not in str(exc):
         return None
     return InputError(exc.parameter, str(exc).split(": ", 1)[-1].replace(STATIC_WAY, way))

@@ -555,6 +555,7 @@ def _solve_bearing(
 def _solve_combined(
     key: tuple[Any, ...], idx: list[int], cols: dict[str, list[Any]]
 ) -> dict[str, Any]:
+    from bearingload.models.high_speed import too_fast
     from bearingload.studies.combined_bearing import combined_columns, solve_combined_bearing
 
     _, b, (moment, misaligned, cross, groove), rotating, c_r, (at_speed, density) = key
@@ -577,6 +578,8 @@ def _solve_combined(
         deep_groove = at_speed and b.contact_angle is None
         radial = deep_groove and all(x is None for x in cells)
         hinted = _quasi_static_hint(exc, radial) if deep_groove else None
+        if at_speed and isinstance(exc, InputError) and too_fast(exc):
+            hinted = InputError(exc.parameter, f"{str(exc).split(': ', 1)[-1]}; {FAST_WAY}")
         if hinted is None:
             raise
         raise hinted from exc
@@ -586,6 +589,10 @@ def _solve_combined(
     angles = np.asarray(case.result.contact_angles, dtype=float).reshape(len(idx), -1)
     angle = np.take_along_axis(angles, heaviest, axis=-1)[:, 0]
     return out | {"_bearing": b, "_load": out["equivalent_load"], "_angle": angle}
+
+
+#: The way out of a speed beyond the ball dynamics' limit (n d_m), in the batch's words.
+FAST_WAY = "quasi_static true gives the static model at any speed (the lives in hours)"
 
 
 def _quasi_static_hint(

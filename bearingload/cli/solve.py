@@ -259,8 +259,11 @@ def _quasi_static_hint(exc: InputError, radial: bool = True) -> InputError | Non
     solve (``radial``: F_a = 0 set, no axial load given) --quasi-static is the way to the radial
     engine; with an axial load given, --quasi-static and no axial load are."""
     from bearingload.models.combined import RADIAL_TAKES_ANY_LOAD
+    from bearingload.models.high_speed import too_fast
 
     message = str(exc).split(": ", 1)[-1]
+    if too_fast(exc):
+        return InputError(exc.parameter, f"{message}; {STATIC_AT_ANY_SPEED}")
     if RADIAL_TAKES_ANY_LOAD not in message:
         return None
     way = ("--quasi-static gives the static radial engine, which takes any load" if radial
@@ -348,14 +351,21 @@ def _pair(
     return text, printed_warnings(pc.warnings, service)
 
 
+#: The way out of a speed beyond the ball dynamics' limit (n d_m).
+STATIC_AT_ANY_SPEED = "--quasi-static gives the static model at any speed (the lives in hours)"
+
+
 def pair_speed_hint(exc: ConvergenceError | InputError) -> Exception | None:
-    """A pair at --speed the ball dynamics leave unbalanced, or refuse as too light (the
-    library's way out), with --quasi-static named; None for another refusal."""
+    """A pair at --speed the ball dynamics leave unbalanced, refuse as too light (the library's
+    way out) or as too fast, with --quasi-static named; None for another refusal."""
+    from bearingload.models.high_speed import too_fast
     from bearingload.models.pair_speed import STATIC_WAY
 
     way = "--quasi-static gives the static model"
     if isinstance(exc, ConvergenceError):
         return click.ClickException(f"{exc}; {way}")
+    if too_fast(exc):
+        return InputError(exc.parameter, f"{str(exc).split(': ', 1)[-1]}; {STATIC_AT_ANY_SPEED}")
     if STATIC_WAY not in str(exc):
         return None
     return InputError(exc.parameter, str(exc).split(": ", 1)[-1].replace(STATIC_WAY, way))

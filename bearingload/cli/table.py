@@ -323,7 +323,9 @@ def _life_input_error(exc: InputError, dynamics: bool) -> Exception:
     the loads too small for the combined solver name no radial solver (table life has none: the
     static rows are the combined solver's too); a speed the ball dynamics refuse (``dynamics``)
     names --quasi-static; others as they are."""
+    from bearingload.cli.solve import STATIC_AT_ANY_SPEED
     from bearingload.models.combined import RADIAL_TAKES_ANY_LOAD
+    from bearingload.models.high_speed import too_fast
 
     message = str(exc).split(": ", 1)[-1]
     if exc.parameter == "clearance":
@@ -332,8 +334,8 @@ def _life_input_error(exc: InputError, dynamics: bool) -> Exception:
         way = ("table life solves every row by it, at any speed; 'bearingload solve' without an "
                "axial load (at a speed with --quasi-static) takes any load")  # fmt: skip
         return InputError(exc.parameter, message.replace(RADIAL_TAKES_ANY_LOAD, way))
-    if dynamics and exc.parameter == "speed":
-        return InputError(exc.parameter, f"{message}; {QUASI_STATIC_WAY}")
+    if dynamics and too_fast(exc):
+        return InputError(exc.parameter, f"{message}; {STATIC_AT_ANY_SPEED}")
     return exc
 
 
@@ -426,8 +428,6 @@ def _solve_pairs(case: CaseOptions, b: Any, preloads: list[float]) -> Any:
         message = str(exc).split(": ", 1)[-1]
         if exc.parameter == "preload" and STATIC_WAY not in message:
             raise click.UsageError(f"Invalid value for '--preloads': {message}") from exc
-        if dynamics["speed"] is not None and exc.parameter == "speed":  # n d_m beyond the model
-            raise InputError(exc.parameter, f"{message}; {QUASI_STATIC_WAY}") from exc
         raise
 
 

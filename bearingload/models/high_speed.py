@@ -110,6 +110,16 @@ __all__ = ["HighSpeedDistribution", "solve_high_speed", "STEEL_DENSITY", "MAX_SP
 STEEL_DENSITY = 7.85e-6
 #: Largest n d_m accepted (n the shaft speed [rpm], d_m [mm]). [mm/min]
 MAX_SPEED_PITCH = 2.0e6
+#: The words of the refusal of a speed beyond :data:`MAX_SPEED_PITCH` (the command line adds
+#: its way to the static model after them: :func:`too_fast`).
+TOO_FAST = "mm/min for the ball-dynamics model"
+
+
+def too_fast(exc: BaseException) -> bool:
+    """Whether ``exc`` is the refusal of a speed beyond :data:`MAX_SPEED_PITCH`."""
+    return isinstance(exc, InputError) and exc.parameter == "speed" and TOO_FAST in str(exc)
+
+
 #: The model, as the outputs name it.
 MODEL = "ball dynamics: centrifugal force and gyroscopic moment, outer-raceway control"
 #: Relative residual of the ring equilibrium (of the largest applied load). [-]
@@ -312,7 +322,7 @@ def _check_speed(speed: Any, density: Any, dm: Any) -> tuple[np.ndarray, np.ndar
         given, pitch = float(n_b.flat[first]), float(dm_b.flat[first])
         raise InputError(
             "speed",
-            f"n d_m must be at most {MAX_SPEED_PITCH:.0e} mm/min for the ball-dynamics model "
+            f"n d_m must be at most {MAX_SPEED_PITCH:.0e} {TOO_FAST} "
             f"(n = {_digits(given, MAX_SPEED_PITCH / pitch)} rpm with d_m = {pitch:.6g} mm: at "
             f"most {MAX_SPEED_PITCH / pitch:.10g} rpm; beyond, ring expansion, cage "
             "and lubricant forces it leaves out matter)",
