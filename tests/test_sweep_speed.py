@@ -165,3 +165,41 @@ def test_every_position_of_a_pair_is_solve_at_that_cage_angle():
                 case["bearings"][k]["q_max"], rel=1e-9
             )
         assert row["x"] != static["x"]  # the dynamics move the shaft
+
+
+def test_the_ball_density_and_the_static_note_are_said(capsys):
+    """Review: a sweep at speed gave no ball density anywhere (steel and ceramic looked alike);
+    --quasi-static's note said 'bearingload solve gives them' though sweep does."""
+    doc = _json("sweep", "6205", "-F", "1kN", "--speed", "10000", "--ball-density", "3200",
+                "--steps", "3")  # fmt: skip
+    assert doc["summary"]["ball_density"] == 3200.0 and doc["units"]["ball_density"] == "kg/m^3"
+    text = invoke("sweep", "6205", "-F", "1kN", "--speed", "10000", "--ball-density", "3200",
+                  "--steps", "3").stdout  # fmt: skip
+    assert "balls of 3200 kg/m^3" in text
+    quasi = _json("sweep", "6205", "-F", "1kN", "--speed", "10000", "--quasi-static", "--steps",
+                  "3")  # fmt: skip
+    assert "ball_density" not in quasi["summary"]
+    assert quasi["ball_dynamics"] == (
+        "Ball dynamics left out: the static model (--quasi-static; --speed gives the lives in "
+        "hours only); without --quasi-static a ball bearing is solved with each ball's "
+        "centrifugal force and gyroscopic moment, as 'bearingload solve --speed' solves it "
+        "(docs/speed.md)."
+    )
+
+
+def test_a_pairs_groove_side_warning_is_said_once_per_bearing_with_its_cage_angles(capsys):
+    """Review: a pair's sweep repeated the 90° warning of every position, each naming balls
+    without the cage angle; now once per bearing, as one bearing's sweep says it."""
+    code, out, err = run_entry(capsys, "sweep", "7205BDT", "-F", "2kN", "-A", "2kN", "--speed",
+                               "51000", "--steps", "3")  # fmt: skip
+    assert code == 0
+    side = [w for w in err.splitlines() if "90°" in w]
+    assert [w.split(" the loaded")[0] for w in side] == [
+        "Warning: bearing 1: at 3 of 3 cage angles (0° to 30°)",
+        "Warning: bearing 2: at 3 of 3 cage angles (0° to 30°)",
+    ]
+    assert "preload at the speed" not in out  # DT: no preload
+    code, out, _ = run_entry(capsys, "sweep", "7205BDB", "--preload", "300N", "-F", "1kN",
+                             "--speed", "20000", "--steps", "3")  # fmt: skip
+    assert "preload at the speed 666.898 N each bearing (F_p 300 N ground in at rest); " \
+           "lift-off 860.801 N at rest." in out  # fmt: skip

@@ -68,6 +68,13 @@ DYNAMICS_NOTE = (
     "columns give the inner contacts; L10r takes the inner loads for the inner ring, the outer "
     "loads for the outer ring."
 )
+#: The note of a file of pairs with rows at speed: what the pair's columns give there.
+PAIR_AT_SPEED_NOTE = (
+    "Pairs at a speed: preload the preload ground in at rest, pair_preload_at_speed each "
+    "bearing's thrust with no external load at the speed (ball dynamics), "
+    "pair_lift_off_axial_load the lift-off at rest (docs/speed.md); rows with quasi_static true: "
+    "the static pair, the speed giving the lives in hours only."
+)
 #: The output columns each service input column can give (solve prints them when the option is
 #: given); a file without the column has none of them.
 SERVICE_OUTPUT = {
@@ -185,6 +192,8 @@ def held_report(
     dynamics = [m for m in values.get("model", []) if m is not None and "; ball dynamics" in m]
     models = sorted(set(dynamics))  # not the radial engine's model, which has a '; ' too
     notes = [DYNAMICS_NOTE.format(m.split("; ", 1)[1]) for m in models]
+    if models and "pair_lift_off_axial_load" in keys:  # pairs at speed: what is at rest
+        notes.append(PAIR_AT_SPEED_NOTE)
     notes += [f"Row {r} skipped: {m}" for r, m in skipped]
     title = f"{len(records)} cases (row: the input file's row, the header is row 1)"
     return render([Table(title, columns, rows_out, notes)], fmt)

@@ -16,6 +16,8 @@ from __future__ import annotations
 from dataclasses import asdict
 from typing import Any
 
+import numpy as np
+
 from bearingload.reports.combined import ANGULAR_LABELS, ANGULAR_NOTE, NOTES, tilt_text
 from bearingload.reports.quantities import QUANTITIES, units
 from bearingload.reports.render import Table, render
@@ -102,13 +104,28 @@ def _spread_keys(s: CombinedSweep) -> list[str]:
 def fixed(s: CombinedSweep) -> dict[str, Any]:
     """The figures the cage does not change, under their quantity keys."""
     r = s.result
-    return {
-        "free_contact_angle": float(r.free_contact_angle[0]),
-        "axial_play": float(r.axial_play[0]),
-        "dynamic_rating": s.dynamic_rating,
-        "equivalent_load": s.equivalent_load,
-        "rating_life": s.rating_life,
-    } | ({} if s.speed is None else {"speed": s.speed, "rating_life_hours": s.hours(s.rating_life)})
+    return (
+        {
+            "free_contact_angle": float(r.free_contact_angle[0]),
+            "axial_play": float(r.axial_play[0]),
+            "dynamic_rating": s.dynamic_rating,
+            "equivalent_load": s.equivalent_load,
+            "rating_life": s.rating_life,
+        }
+        | (
+            {}
+            if s.speed is None
+            else {"speed": s.speed, "rating_life_hours": s.hours(s.rating_life)}
+        )
+        | _density(s)
+    )
+
+
+def _density(s: CombinedSweep) -> dict[str, float]:
+    """The ball density of the ball dynamics, as solve gives it (``ball_density`` [kg/m^3]);
+    none for the static model."""
+    density = getattr(s.result, "ball_density", None)
+    return {} if density is None else {"ball_density": float(np.ravel(density)[0]) * 1e9}
 
 
 def rows(s: CombinedSweep) -> list[dict[str, Any]]:
@@ -160,7 +177,7 @@ def _spread_table(s: CombinedSweep, context: str) -> Table:
         notes[2] = ANGULAR_NOTE
     dynamics = _dynamics(s)
     if dynamics is not None:
-        notes.append(DYNAMICS_NOTE.format(dynamics))
+        notes.append(DYNAMICS_NOTE.format(dynamics, _density(s)["ball_density"]))
     elif s.speed is not None:
         notes.append(STATIC_AT_SPEED)
     return spread_table(f"Over one ball pitch ({title(s)})", entries, notes, context)
@@ -230,9 +247,9 @@ def _dynamics(s: CombinedSweep) -> str | None:
 
 #: The note of a sweep with the ball dynamics (the model's name filled in).
 DYNAMICS_NOTE = (
-    "Speed: {} at every cage position (Jones 1960; Harris & Kotzalas; docs/speed.md): Q_max, its "
-    "ball, the loaded balls and alpha_max are the inner contacts'; L10r takes each ball's inner "
-    "load for the inner ring, its outer load for the outer ring."
+    "Speed: {} at every cage position (Jones 1960; Harris & Kotzalas; docs/speed.md), balls of "
+    "{:.6g} kg/m^3: Q_max, its ball, the loaded balls and alpha_max are the inner contacts'; L10r "
+    "takes each ball's inner load for the inner ring, its outer load for the outer ring."
 )
 
 

@@ -210,12 +210,6 @@ def life_table(
     return Table(title(t), columns, _rows(t, human, service), notes, fixed)
 
 
-#: The note of a table at --speed with --quasi-static (json: the key ``ball_dynamics``).
-QUASI_STATIC_NOTE = (
-    "Ball dynamics left out: the static model (--quasi-static; --speed gives the lives in hours "
-    "only); without --quasi-static every row is solved with each ball's centrifugal force and "
-    "gyroscopic moment, as 'bearingload solve --speed' (docs/speed.md)."
-)
 #: The note of a table with the ball dynamics at --speed (the model's name, the density).
 DYNAMICS_NOTE = (
     "Speed: {} (Jones 1960; Harris & Kotzalas; docs/speed.md), balls of {:.6g} kg/m^3: every "
@@ -227,14 +221,15 @@ DYNAMICS_NOTE = (
 
 def _speed_model(t: LifeAgainstClearance, service: Sequence[Any] | None) -> dict[str, str]:
     """The json key naming the model at a speed: ``model`` (solve's name) with the ball
-    dynamics, ``ball_dynamics`` (:data:`QUASI_STATIC_NOTE`) for the static model; none
+    dynamics, ``ball_dynamics`` (:data:`STATIC_AT_SPEED`) for the static model; none
     without a speed."""
     from bearingload.reports.combined import model_name
+    from bearingload.reports.sweep import STATIC_AT_SPEED
 
     if t.model is not None:
         return {"model": model_name(t.model)}
     speed = service[0].values.get("speed") if service else None
-    return {} if speed is None else {"ball_dynamics": QUASI_STATIC_NOTE}
+    return {} if speed is None else {"ball_dynamics": STATIC_AT_SPEED}
 
 
 def _speed_notes(t: LifeAgainstClearance, service: Sequence[Any] | None) -> list[str]:

@@ -70,6 +70,11 @@ SPEED_NOTE = (
     "Speed: --quasi-static: the pair is solved by the static model (the ball dynamics left "
     "out); the speed enters the lives only (hours, nu_1, the film)."
 )
+#: The note of a pair's sweep or table life at --speed with --quasi-static (the static model).
+HOURS_NOTE = (
+    "Speed: --quasi-static: the pair is solved by the static model (the ball dynamics left "
+    "out); the speed gives the lives in hours only."
+)
 #: The end of the JSON's ``model`` of a pair solved by the static model at a speed (solve
 #: --quasi-static; sweep).
 STATIC_AT_SPEED = "; the static model at the speed given (the ball dynamics left out)"

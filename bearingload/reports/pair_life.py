@@ -103,12 +103,12 @@ def _notes(t: LifeAgainstPreload, records: list[Any]) -> list[str]:
 def _speed_notes(t: LifeAgainstPreload, records: list[Any], speed: float | None) -> list[str]:
     """The note naming the model at a speed: the ball dynamics, or the static model
     (--quasi-static); none without a speed."""
-    from bearingload.reports.pair import SPEED_NOTE
+    from bearingload.reports.pair import HOURS_NOTE
 
     if t.model is not None:
         density = records[0][1][0].get("ball_density")
         return [DYNAMICS_NOTE.format(t.model, density)]
-    return [] if speed is None else [SPEED_NOTE]
+    return [] if speed is None else [HOURS_NOTE]
 
 
 def _json(t: LifeAgainstPreload, records: list[Any], speed: float | None) -> dict[str, Any]:

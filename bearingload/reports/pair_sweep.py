@@ -20,6 +20,7 @@ from typing import Any
 from bearingload.reports.combined import ANGULAR_LABELS
 from bearingload.reports.pair import (
     CSV_INPUTS,
+    HOURS_NOTE,
     PAIR_ANSWERS,
     PAIR_INPUTS,
     PAIR_SERVICE,
@@ -39,11 +40,6 @@ NOTES = (
     "Both bearings' cages at the same angle (ball 1 of each at the cage angle, as solve "
     "--cage-angle); the pair: the shaft's displacement at the pair's centre and its stiffness "
     "(docs/angular_contact.md); L10r: the pair's, (L1^-e + L2^-e)^(-1/e), e = 10/9.",
-)
-#: The note of a pair sweep at --speed with --quasi-static (as one bearing's: the static model).
-HOURS_NOTE = (
-    "Speed: --quasi-static: the pair is solved by the static model (the ball dynamics left "
-    "out); the speed gives the lives in hours only."
 )
 #: The per-position columns of the human table: (key, bearing or None, header).
 ROW_KEYS = (
@@ -101,15 +97,23 @@ def _speed_notes(s: PairSweep) -> list[str]:
     """The note of a pair sweep at a speed: the ball dynamics of both bearings, or the static
     model (--quasi-static)."""
     if s.dynamics is not None:
-        return [SWEEP_DYNAMICS_NOTE.format(s.dynamics)]
+        r = s.cases[0].result
+        rest = "" if r.lift_off_axial_load is None else (
+            f"; lift-off {abs(float(r.lift_off_axial_load)):.6g} N at rest")  # fmt: skip
+        thrust = getattr(r, "preload_at_speed", None)  # DB/DF at speed
+        held = "" if thrust is None else (
+            f"; preload at the speed {float(thrust):.6g} N each bearing (F_p "
+            f"{float(r.preload):.6g} N ground in at rest){rest}")  # fmt: skip
+        return [SWEEP_DYNAMICS_NOTE.format(s.dynamics) + held + "."]
     return [HOURS_NOTE] if s.speed is not None else []
 
 
-#: The note of a pair sweep with the ball dynamics (the model's name filled in).
+#: The note of a pair sweep with the ball dynamics (the model's name filled in; the preload at
+#: the speed and the lift-off at rest follow).
 SWEEP_DYNAMICS_NOTE = (
     "Speed: {} in both bearings at every cage position (Jones 1960; Harris & Kotzalas; "
     "docs/speed.md): Q_max and the loaded balls are the inner contacts'; each bearing's L10r "
-    "takes the inner loads for the inner ring, the outer loads for the outer ring."
+    "takes the inner loads for the inner ring, the outer loads for the outer ring"
 )
 
 

@@ -53,10 +53,12 @@ def _fixed_lives(s: CageSweep) -> dict[str, Any]:
     return out
 
 
-#: The note of sweep and table life at a speed: they solve the static model (docs/speed.md).
+#: The note of sweep and table life at a speed with --quasi-static: the static model
+#: (docs/speed.md).
 STATIC_AT_SPEED = (
-    "Ball dynamics left out: the static model (--speed gives the lives in hours only); "
-    "'bearingload solve' gives them (centrifugal force, gyroscopic moment; docs/speed.md)."
+    "Ball dynamics left out: the static model (--quasi-static; --speed gives the lives in hours "
+    "only); without --quasi-static a ball bearing is solved with each ball's centrifugal force "
+    "and gyroscopic moment, as 'bearingload solve --speed' solves it (docs/speed.md)."
 )
 
 
