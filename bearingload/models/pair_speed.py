@@ -83,7 +83,6 @@ class PairHighSpeedDistribution(PairDistribution):
         [kg/mm^3]
     model : str
         :data:`MODEL`.
-
     preload_at_speed : ndarray or None
         DB/DF: the thrust each bearing carries with no external load at the speed (the
         centrifugal forces raise it: the preload ``preload`` is ground in at rest); None for
@@ -92,8 +91,8 @@ class PairHighSpeedDistribution(PairDistribution):
     ``stiffness_matrix`` is the tangent of the shaft forces with the ball equations eliminated
     (not symmetric at speed; at speed 0 the static pair's, its symmetric part);
     ``lift_off_axial_load`` and ``preload_offset`` are the pair's at rest (:func:`_at_speed`
-    says why the lift-off is not given at the speed). ``residual`` is the shaft's over the largest of the applied loads and the
-    preload.
+    says why the lift-off is not given at the speed). ``residual`` is the shaft's over the
+    largest of the applied loads and the preload.
     """
 
     speed: Any = None
@@ -390,8 +389,9 @@ def _at_speed(static: PairDistribution, sh: _Shaft, shape: tuple[int, ...]) -> d
     The lift-off load stays the one at rest: at speed the model keeps the inner contacts of the
     bearing being unloaded far beyond it, the balls held between both rings by their
     centrifugal force and gyroscopic couple and riding up an inner groove without a shoulder
-    (7205BDB, 300 N, 1000 rpm: 2.0 N on bearing 2 at a thrust of 1 kN, 0.4 N at 10 kN, its inner
-    contact angles near 59°), so no finite thrust unloads it exactly."""
+    (``solve 7205BDB --preload 300N -F 0 --speed 1000``: 2.73 N on bearing 2 at a thrust of
+    1 kN, 0.56 N at 10 kN, its inner contact angle 57.8°), so no finite thrust unloads it
+    exactly (docs/speed.md)."""
     from bearingload import numerics
 
     if static.arrangement == "DT":
