@@ -26,6 +26,7 @@ class InputError(BearingloadError, ValueError):
 
     def __init__(self, parameter: str, message: str) -> None:
         self.parameter = parameter
+        self.message = message  # without the parameter's name (a caller rewording it)
         super().__init__(f"{parameter}: {message}")
 
 

@@ -274,7 +274,7 @@ def parse_cage_angle(text: str | float, *, parameter: str = "cage_angle") -> flo
     try:
         return parse_quantity(folded, "angle", parameter=parameter)
     except InputError as exc:
-        detail = str(exc).split(": ", 1)[-1]
+        detail = exc.message
         raise InputError(
             parameter, f"{detail}; or 'half' (half a pitch: the load between two balls)"
         ) from None

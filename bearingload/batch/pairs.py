@@ -188,10 +188,10 @@ def _quasi_static_hint(exc: InputError | ConvergenceError) -> BearingloadError |
     if isinstance(exc, ConvergenceError):
         return BearingloadError(f"{exc}; {way}")
     if too_fast(exc):
-        return InputError(exc.parameter, f"{str(exc).split(': ', 1)[-1]}; {FAST_WAY}")
+        return InputError(exc.parameter, f"{exc.message}; {FAST_WAY}")
     if STATIC_WAY not in str(exc):
         return None
-    return InputError(exc.parameter, str(exc).split(": ", 1)[-1].replace(STATIC_WAY, way))
+    return InputError(exc.parameter, exc.message.replace(STATIC_WAY, way))
 
 
 def pair_values(keys: list[str], solved: list[tuple[int, Any]], numbers: list[int],

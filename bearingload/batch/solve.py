@@ -579,7 +579,7 @@ def _solve_combined(
         radial = deep_groove and all(x is None for x in cells)
         hinted = _quasi_static_hint(exc, radial) if deep_groove else None
         if at_speed and isinstance(exc, InputError) and too_fast(exc):
-            hinted = InputError(exc.parameter, f"{str(exc).split(': ', 1)[-1]}; {FAST_WAY}")
+            hinted = InputError(exc.parameter, f"{exc.message}; {FAST_WAY}")
         if hinted is None:
             raise
         raise hinted from exc
@@ -610,7 +610,7 @@ def _quasi_static_hint(
             return None
         return BearingloadError(f"{exc}; quasi_static true gives the static radial engine (the "
                                 "ball dynamics left out)")  # fmt: skip
-    message = str(exc).split(": ", 1)[-1]
+    message = exc.message
     if RADIAL_TAKES_ANY_LOAD not in message:
         return None
     way = ("quasi_static true gives the static radial engine, which takes any load" if radial

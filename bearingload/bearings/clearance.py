@@ -332,7 +332,7 @@ def parse_clearance(text: str | float | None) -> ClearanceSpec | None:
             length=parse_quantity(text, "length", parameter="clearance"), text=text
         )
     except InputError as exc:
-        message = str(exc).split(": ", 1)[-1]
+        message = exc.message
         if "implausible" in message:
             group = (
                 f" (the GOST clearance group {text} is written G{text})"

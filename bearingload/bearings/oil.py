@@ -426,7 +426,7 @@ def _viscosity_100_of(nu_40: float, index: float, *, given: bool) -> float:
     except InputError as exc:
         if given or exc.parameter != "viscosity_index":
             raise
-        why = str(exc).split(": ", 1)[-1]
+        why = exc.message
         # below D2270_RISING_FROM no VI fixes nu_100: only nu_100 itself helps
         give = "'viscosity_100'" + (" or 'viscosity_index'" if nu_40 >= D2270_RISING_FROM else "")
         raise InputError(

@@ -88,7 +88,7 @@ class Clearance(click.ParamType):
         try:
             return parse_clearance(value)
         except InputError as exc:
-            self.fail(str(exc).split(": ", 1)[-1], param, ctx)
+            self.fail(exc.message, param, ctx)
 
 
 class Temperature(click.ParamType):
@@ -104,7 +104,7 @@ class Temperature(click.ParamType):
         try:
             return parse_temperature(value)
         except InputError as exc:
-            self.fail(str(exc).split(": ", 1)[-1], param, ctx)
+            self.fail(exc.message, param, ctx)
 
 
 class TiltRadius(click.ParamType):
@@ -118,7 +118,7 @@ class TiltRadius(click.ParamType):
         try:
             return parse_tilt_radius(value)
         except InputError as exc:
-            self.fail(str(exc).split(": ", 1)[-1], param, ctx)
+            self.fail(exc.message, param, ctx)
 
 
 class Arrangement(click.ParamType):

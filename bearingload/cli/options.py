@@ -31,7 +31,7 @@ class Quantity(click.ParamType):
         try:
             number = parse_quantity(value, self.kind, parameter=param.name if param else None)
         except InputError as exc:
-            self.fail(str(exc).split(": ", 1)[-1], param, ctx)
+            self.fail(exc.message, param, ctx)
         if self.kind == "stiffness":
             return str(value)  # converted with the exponent by the command (stiffness_value)
         if self.positive and not number > 0:
@@ -57,7 +57,7 @@ class CageAngle(click.ParamType):
         try:
             return parse_cage_angle(value)
         except InputError as exc:
-            self.fail(str(exc).split(": ", 1)[-1], param, ctx)
+            self.fail(exc.message, param, ctx)
 
 
 def units_help(kind: str) -> str:
@@ -156,7 +156,7 @@ def option_message(message: str) -> str:
 
 def usage_error(exc: InputError) -> click.UsageError:
     """The one ``Invalid value for '<option>': <message>`` of a library InputError."""
-    message = option_message(str(exc).split(": ", 1)[-1])
+    message = option_message(exc.message)
     return click.UsageError(f"Invalid value for '{option_name(exc.parameter)}': {message}")
 
 

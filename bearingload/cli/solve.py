@@ -261,7 +261,7 @@ def _quasi_static_hint(exc: InputError, radial: bool = True) -> InputError | Non
     from bearingload.models.combined import RADIAL_TAKES_ANY_LOAD
     from bearingload.models.high_speed import too_fast
 
-    message = str(exc).split(": ", 1)[-1]
+    message = exc.message
     if too_fast(exc):
         return InputError(exc.parameter, f"{message}; {STATIC_AT_ANY_SPEED}")
     if RADIAL_TAKES_ANY_LOAD not in message:
@@ -365,10 +365,10 @@ def pair_speed_hint(exc: ConvergenceError | InputError) -> Exception | None:
     if isinstance(exc, ConvergenceError):
         return click.ClickException(f"{exc}; {way}")
     if too_fast(exc):
-        return InputError(exc.parameter, f"{str(exc).split(': ', 1)[-1]}; {STATIC_AT_ANY_SPEED}")
+        return InputError(exc.parameter, f"{exc.message}; {STATIC_AT_ANY_SPEED}")
     if STATIC_WAY not in str(exc):
         return None
-    return InputError(exc.parameter, str(exc).split(": ", 1)[-1].replace(STATIC_WAY, way))
+    return InputError(exc.parameter, exc.message.replace(STATIC_WAY, way))
 
 
 def _radial(

@@ -327,7 +327,7 @@ def _life_input_error(exc: InputError, dynamics: bool) -> Exception:
     from bearingload.models.combined import RADIAL_TAKES_ANY_LOAD
     from bearingload.models.high_speed import too_fast
 
-    message = str(exc).split(": ", 1)[-1]
+    message = exc.message
     if exc.parameter == "clearance":
         return click.UsageError(f"Invalid value for '--clearances': {message}")
     if RADIAL_TAKES_ANY_LOAD in message:
@@ -425,7 +425,7 @@ def _solve_pairs(case: CaseOptions, b: Any, preloads: list[float]) -> Any:
             raise hinted from exc
         if not isinstance(exc, InputError):
             raise
-        message = str(exc).split(": ", 1)[-1]
+        message = exc.message
         if exc.parameter == "preload" and STATIC_WAY not in message:
             raise click.UsageError(f"Invalid value for '--preloads': {message}") from exc
         raise
