@@ -740,14 +740,14 @@ def _operating(cols: dict[str, list[Any]], rows: list[int]) -> Any:
 def _basis(b: Any, members: list[tuple[int, int]], gathered: Callable[..., np.ndarray]) -> Any:
     """The life basis of the rows ``members`` of bearing ``b`` (P, lives, Q_max, angle)."""
     from bearingload.bearings.service_life import LifeBasis
+    from bearingload.studies.life_basis import life_geometry
 
     return LifeBasis(
-        kind=b.kind, C=b.C, C0=b.C0, equivalent_load=gathered("_load", members),
+        C=b.C, equivalent_load=gathered("_load", members),
         rating_life=gathered("rating_life", members),
         reference_rating_life=gathered("reference_rating_life", members),
         q_max=gathered("q_max", members), contact_angle=gathered("_angle", members),
-        pitch_diameter=b.pitch_diameter, ball_diameter=b.ball_diameter, f_i=b.f_i, f_o=b.f_o,
-        modulus=b.modulus, poisson=b.poisson, roller_length=b.roller_length,
+        **life_geometry(b),
     )  # fmt: skip
 
 
