@@ -190,6 +190,16 @@ def _combined_case(
                         p0, s0, moment_cross)  # type: ignore[arg-type]  # fmt: skip
 
 
+#: The warning on a ball whose loaded inner contact sits on the groove's side at speed: what
+#: happens, and (after it) why the result is outside the model.
+GROOVE_SIDE = "the loaded inner contact sits at 90°"
+GROOVE_SIDE_WHY = (
+    ", on the side of the inner groove, where the model holds the ball (a real ball rides onto "
+    "the groove shoulder) and takes its orbit speed and centrifugal force from Jones's relations "
+    "at that angle, which overstate them: the result is outside what the model describes"
+)
+
+
 def groove_side_warnings(r: Any, n: int) -> list[str | None]:
     """Per case of ``r`` (``n`` cases): at a speed (the ball dynamics), the balls whose loaded
     inner contact sits at 90°, on the side of the inner groove, which the model holds them on
@@ -201,13 +211,7 @@ def groove_side_warnings(r: Any, n: int) -> list[str | None]:
     out: list[str | None] = []
     for side in (loads > 0) & (angles >= 90.0 - 1e-9):
         balls = ", ".join(str(j + 1) for j in np.flatnonzero(side))
-        out.append(
-            None if not balls else
-            f"ball(s) {balls}: the loaded inner contact sits at 90°, on the side of the inner "
-            "groove, where the model holds the ball (a real ball rides onto the groove shoulder) "
-            "and takes its orbit speed and centrifugal force from Jones's relations at that "
-            "angle, which overstate them: the result is outside what the model describes"
-        )  # fmt: skip
+        out.append(f"ball(s) {balls}: {GROOVE_SIDE}{GROOVE_SIDE_WHY}" if balls else None)
     return out
 
 

@@ -286,15 +286,14 @@ def _groove_side(r: CombinedDistribution, angles: np.ndarray) -> list[str]:
     """At a speed, solve's warning on balls whose loaded inner contact sits at 90° (the
     groove's side: :func:`bearingload.studies.combined_bearing.groove_side_warnings`), once,
     with the cage angles where it holds. [°]"""
-    from bearingload.studies.combined_bearing import groove_side_warnings
+    from bearingload.studies.combined_bearing import GROOVE_SIDE_WHY, groove_side_warnings
 
-    sides = groove_side_warnings(r, angles.size)
-    at = [i for i, w in enumerate(sides) if w is not None]
+    at = [i for i, w in enumerate(groove_side_warnings(r, angles.size)) if w is not None]
     if not at:
         return []
-    why = str(sides[at[0]]).split("sits at 90°", 1)[1]
     return [f"at {len(at)} of {angles.size} cage angles ({angles[at].min():.6g}° to "
-            f"{angles[at].max():.6g}°) the loaded inner contact of a ball sits at 90°{why}"]  # fmt: skip
+            f"{angles[at].max():.6g}°) the loaded inner contact of a ball sits at 90°"
+            f"{GROOVE_SIDE_WHY}"]  # fmt: skip
 
 
 def _joined(parts: Sequence[CombinedDistribution]) -> CombinedDistribution:

@@ -145,25 +145,22 @@ def pair_sweep(
     return PairSweep(bearing, tuple(cases), tuple(_findings(cases, angles)), speed)
 
 
-#: The words of the warning on a loaded inner contact on the groove's side (at speed).
-SIDE = "the loaded inner contact sits at 90°"
-
-
 def _findings(cases: list[PairCase], angles: np.ndarray) -> list[str]:
     """The findings of every position, each once, in order; the warning on balls whose loaded
     inner contact sits at 90° (it names the balls of one position) once per bearing, with the
     cage angles where it holds, as one bearing's sweep gives it. [°]"""
+    from bearingload.studies.combined_bearing import GROOVE_SIDE, GROOVE_SIDE_WHY
+
     found: list[str] = []
     at: dict[str, list[float]] = {}
-    why = ""
     for c, angle in zip(cases, angles.tolist(), strict=True):
         for w in c.warnings:
-            if SIDE in w and w.startswith("bearing "):
+            if GROOVE_SIDE in w and w.startswith("bearing "):
                 at.setdefault(w.split(":", 1)[0], []).append(angle)
-                why = w.split(SIDE, 1)[1]
             elif w not in found:
                 found.append(w)
     for who, where in sorted(at.items()):
         found.append(f"{who}: at {len(where)} of {len(cases)} cage angles ({min(where):.6g}° to "
-                     f"{max(where):.6g}°) the loaded inner contact of a ball sits at 90°{why}")  # fmt: skip
+                     f"{max(where):.6g}°) the loaded inner contact of a ball sits at 90°"
+                     f"{GROOVE_SIDE_WHY}")  # fmt: skip
     return found
