@@ -96,7 +96,7 @@ def _spread_table(s: PairSweep, context: str) -> Table:
 def _speed_notes(s: PairSweep) -> list[str]:
     """The note of a pair sweep at a speed: the ball dynamics of both bearings, or the static
     model (--quasi-static)."""
-    if s.dynamics is not None:
+    if s.model is not None:
         r = s.cases[0].result
         rest = "" if r.lift_off_axial_load is None else (
             f"; lift-off {abs(float(r.lift_off_axial_load)):.6g} N at rest")  # fmt: skip
@@ -104,7 +104,7 @@ def _speed_notes(s: PairSweep) -> list[str]:
         held = "" if thrust is None else (
             f"; preload at the speed {float(thrust):.6g} N each bearing (F_p "
             f"{float(r.preload):.6g} N ground in at rest){rest}")  # fmt: skip
-        return [SWEEP_DYNAMICS_NOTE.format(s.dynamics) + held + "."]
+        return [SWEEP_DYNAMICS_NOTE.format(s.model) + held + "."]
     return [HOURS_NOTE] if s.speed is not None else []
 
 
@@ -184,6 +184,6 @@ def pair_sweep_json(s: PairSweep) -> dict[str, Any]:
 
 def _model_end(s: PairSweep) -> str:
     """The end of the json's ``model``: the ball dynamics, or the static model at a speed."""
-    if s.dynamics is not None:
-        return f"; {s.dynamics} in both bearings"
+    if s.model is not None:
+        return f"; {s.model} in both bearings"
     return STATIC_AT_SPEED if s.speed is not None else ""

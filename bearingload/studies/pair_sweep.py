@@ -46,7 +46,7 @@ class PairSweep:
         The findings of every position, each once, in order.
     speed : float or None
         Shaft speed n for the pair's L10r in hours, L 10^6/(60 n) (the loads are the ball
-        dynamics' where the cases carry them, :attr:`dynamics`, else the static model's); None:
+        dynamics' where the cases carry them, :attr:`model`, else the static model's); None:
         not given. [r/min]
     """
 
@@ -66,8 +66,10 @@ class PairSweep:
         return np.array([float(c.bearings[0].result.cage_angle) for c in self.cases])
 
     @property
-    def dynamics(self) -> str | None:
-        """The ball dynamics' model where the positions were solved with them, else None."""
+    def model(self) -> str | None:
+        """The ball dynamics the positions were solved with (the result's ``model`` of
+        :mod:`bearingload.models.pair_speed`), as a pair's table life names it; None: the static
+        model."""
         return getattr(self.cases[0].result, "model", None)
 
     def values(self, key: str, bearing: int | None = None) -> np.ndarray | None:
