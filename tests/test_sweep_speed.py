@@ -203,3 +203,21 @@ def test_a_pairs_groove_side_warning_is_said_once_per_bearing_with_its_cage_angl
                              "--speed", "20000", "--steps", "3")  # fmt: skip
     assert "preload at the speed 666.898 N each bearing (F_p 300 N ground in at rest); " \
            "lift-off 860.801 N at rest." in out  # fmt: skip
+
+
+def test_the_sweep_figure_at_speed_names_the_speed_and_the_model():
+    """The figure of a sweep at speed said nothing of the speed: a user could not tell it from
+    the static one. Its title now ends with a line of n and '(ball dynamics)'; --quasi-static
+    with n only."""
+    import dataclasses
+
+    from bearingload.reports.plots import combined_sweep_figure
+
+    b = resolve_bearing("6205", clearance=0.0125)
+    fast = cs.combined_sweep(b, 1000.0, 300.0, steps=3, speed=10000.0)
+    title = combined_sweep_figure(fast, "6205").get_suptitle()
+    assert title.endswith("G_r = 12.5 µm\nn = 10000 rpm (ball dynamics)"), title
+    static = dataclasses.replace(cs.combined_sweep(b, 1000.0, 300.0, steps=3), speed=10000.0)
+    assert combined_sweep_figure(static, "6205").get_suptitle().endswith("µm\nn = 10000 rpm")
+    plain = cs.combined_sweep(b, 1000.0, 300.0, steps=3)
+    assert combined_sweep_figure(plain, "6205").get_suptitle().endswith("G_r = 12.5 µm")

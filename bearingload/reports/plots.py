@@ -103,7 +103,9 @@ def combined_sweep_figure(s: Any, name: str | None = None) -> Any:
     fig.suptitle(
         f"{_named(name)}Cage sweep over one pitch: z = {s.balls}, "
         f"F_r = {float(r.load[0]):.4g} N, "
-        f"F_a = {float(r.axial_load[0]):.4g} N, G_r = {float(r.clearance[0]) * 1e3:.4g} µm",
+        f"F_a = {float(r.axial_load[0]):.4g} N, G_r = {float(r.clearance[0]) * 1e3:.4g} µm"
+        + ("" if s.speed is None else f"\nn = {s.speed:.6g} rpm")
+        + (" (ball dynamics)" if getattr(r, "model", None) is not None else ""),
         fontsize="medium",
     )
     return fig
