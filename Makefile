@@ -1,15 +1,18 @@
 # bearingload: every target creates its own environment (.venv) from pyproject.toml.
 # The package is installed editable in compat mode (a path entry, no import hook) and compiled
 # to bytecode once, so a terminal calculation starts fast even where PYTHONDONTWRITEBYTECODE is set.
+# The install builds the compiled core (bearingload/models/_core.pyx, with Cython from PyPI, in
+# place); a change of a kernel source or of the build makes the next target build it again.
 PY ?= python3
 VENV := .venv
 BIN := $(VENV)/bin
 STAMP := $(VENV)/.installed
+CORE := setup.py bearingload/models/_core.pyx bearingload/models/_core.pxd
 
-.PHONY: run test lint tables golden docs bench clean
+.PHONY: run test lint tables golden docs bench checked core clean
 
-$(STAMP): pyproject.toml
-	$(PY) -m venv $(VENV)
+$(STAMP): pyproject.toml $(CORE)
+	test -x $(BIN)/python || $(PY) -m venv $(VENV)
 	$(BIN)/python -m pip install --quiet --upgrade pip
 	$(BIN)/python -m pip install --quiet -e '.[test,plot]' --config-settings editable_mode=compat \
 		|| $(BIN)/python -m pip install --quiet -e '.[test,plot]'  # a setuptools without compat mode
@@ -68,5 +71,15 @@ bench: $(STAMP)
 	$(BIN)/bearingload accuracy
 	$(BIN)/bearingload stability --size full
 
+## make checked: the compiled core rebuilt with bounds checks, AddressSanitizer and
+## UndefinedBehaviorSanitizer (for the campaigns: see docs/architecture.md); make core undoes it
+checked: $(STAMP)
+	BEARINGLOAD_CHECKED=1 $(BIN)/python -m pip install --quiet -e . --no-deps \
+		--config-settings editable_mode=compat
+
+core: $(STAMP)
+	$(BIN)/python -m pip install --quiet -e . --no-deps --config-settings editable_mode=compat
+
 clean:
 	rm -rf $(VENV) build *.egg-info .pytest_cache .mypy_cache .ruff_cache .hypothesis
+	rm -f bearingload/models/_core.c bearingload/models/_core.*.so

@@ -188,3 +188,43 @@ def test_no_function_is_over_80_lines_of_code():
                 if body and body[-1].end_lineno - body[0].lineno + 1 > 80:  # type: ignore[operator]
                     long.append(f"{path.name}:{node.name}")
     assert long == []
+
+
+def _kernel_functions() -> list[tuple[str, str, list[str]]]:
+    """(file, header, body lines without the docstring) of every top-level function of the
+    compiled core's sources (.pyx); the header joined over its lines."""
+    out = []
+    for path in sorted(PACKAGE.rglob("*.pyx")):
+        lines = path.read_text(encoding="utf-8").splitlines()
+        starts = [i for i, line in enumerate(lines) if line.startswith(("cdef ", "cpdef ", "def "))]
+        for i in starts:
+            if "(" not in lines[i]:  # a cdef variable, struct or enum
+                continue
+            top = (k for k in range(i + 1, len(lines)) if lines[k][:1] not in ("", " ", "#"))
+            end = next(top, len(lines))
+            j = i
+            while not lines[j].rstrip().endswith(":"):  # the header may run over lines
+                j += 1
+            body = [line for line in lines[j + 1 : end] if line.strip()]
+            if body and body[0].strip().startswith('"""'):
+                k = 0
+                while not (body[k].rstrip().endswith('"""') and (k or body[k].count('"""') == 2)):
+                    k += 1
+                body = body[k + 1 :]
+            out.append((path.name, " ".join(line.strip() for line in lines[i : j + 1]), body))
+    return out
+
+
+def test_kernel_sources_exist_and_their_functions_fit_in_80_lines():
+    functions = _kernel_functions()
+    assert len(functions) > 20  # (the parse finds the kernels)
+    long = [f"{name}:{head}" for name, head, body in functions if len(body) > 80]
+    assert long == []
+
+
+def test_every_kernel_touches_no_python_object():
+    """Every C-level function of the core is ``noexcept nogil`` (no Python object inside); the
+    Python boundary is its ``def`` functions alone."""
+    heads = [head for _, head, _ in _kernel_functions() if head.startswith("cdef ")]
+    assert len(heads) > 20
+    assert [head for head in heads if "noexcept nogil" not in head] == []

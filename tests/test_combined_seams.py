@@ -433,10 +433,10 @@ def test_loads_from_the_smallest_accepted_up_converge():
 def test_a_convergence_error_names_the_inputs_in_their_units(monkeypatch):
     """The ConvergenceError message printed internal arrays (f_hat, clearance_hat); it names
     the inputs of the failing cases in N, N mm and mm now, numbers only."""
-    from bearingload.models import _combined_fast, _combined_ring
+    from bearingload.models import _combined_ring
 
     monkeypatch.setattr(_combined_ring, "MAX_ITERATIONS", 1)
-    monkeypatch.setattr(_combined_fast, "STEPS", 0)  # (the first stage would solve them)
+    monkeypatch.setattr(_combined_ring, "FIRST_STAGE_STEPS", 0)  # (it would solve them)
     with pytest.raises(ConvergenceError) as info:
         solve_combined(9, np.array([1400.0, 20.0]), 700.0, clearance=0.3, **G6205)
     message = str(info.value)

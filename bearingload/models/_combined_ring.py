@@ -1,5 +1,7 @@
-"""Internals of the combined-load solver (:mod:`bearingload.models.combined`): the scaled problem,
-the ball geometry to the last digit, the ring forces in deviation form and the Newton minimiser.
+"""Internals of the combined-load solver (:mod:`bearingload.models.combined`) in numpy: the scaled
+problem, the ball geometry to the last digit and the ring forces in deviation form, for the
+set-up and the results of a solve and for the pair's solver. The Newton minimiser that solves
+it is the compiled core's (:mod:`bearingload.models._core`, the same formulas per case in C).
 
 Scaled units: lengths over ``s = (F/K)^(2/3)``, forces over ``F`` (the largest applied load).
 Unknowns ``v = (x, y, a, t, t_c)``, ``t = R_i theta / s``. Ball ``j`` at ``phi_j``
@@ -42,25 +44,19 @@ from typing import Any
 
 import numpy as np
 
-#: Relative residual of every applied component each case is driven below. [-]
-TOLERANCE = 1e-12
+# the tolerances are the compiled core's (one copy; its module says why each)
+from bearingload.models._core import (  # noqa: F401
+    FIRST_STAGE_STEPS,
+    FLOOR,
+    MAX_ITERATIONS,
+    ROUNDING,
+    STALL,
+    STALL_BELOW,
+    TOLERANCE,
+)
+
 #: Largest relative residual accepted at the end (above it the caller raises). [-]
 ACCEPT = 1e-8
-#: Newton iterations per stiffness update (a load near the smallest accepted with a clearance of
-#: about A takes up to some hundreds). [-]
-MAX_ITERATIONS = 2000
-#: A case near equilibrium (residual below STALL_BELOW) whose residual has not halved in STALL
-#: iterations has reached its rounding. [-]
-STALL = 12
-STALL_BELOW = 1e-9
-#: A residual within this times the sum of the magnitudes of its terms is their rounding. [-]
-#: 8 eps: the campaign (tests/campaign_combined.py, 3000 cases, seed 1) then balances every
-#: component whose terms stay below 1e3 times its load to <= 9.9e-13 of that load (64 eps
-#: allowed 3.2e-12 there), with the same cases solved, none failing, in the same time.
-ROUNDING = 8.0 * float(np.finfo(float).eps)
-#: A component without an applied load is measured against the rounding of its terms or, where
-#: those vanish with it at the answer, this times the largest applied load. [-]
-FLOOR = 1e-6
 #: Dekker's splitting constant 2^27 + 1 (exact products of doubles). [-]
 SPLITTER = 134217729.0
 #: The generalised-force columns (x, y, a, t, t_c).
@@ -235,33 +231,6 @@ def reference(p: Problem, vh: np.ndarray, vl: np.ndarray) -> Balls:
     return Balls(rho, ud, d, eps, up)
 
 
-def offset(p: Problem, ref: Balls, w: np.ndarray) -> tuple[Balls, np.ndarray, np.ndarray]:
-    """The balls after a (small) move ``w`` (n, 5) from ``ref``; also ``d - d_ref`` and
-    ``(d - d_ref) - (rho - rho_ref)``, both from the move itself (``d^2 - d_ref^2 = dr (rho_ref
-    + rho) + du (u_ref + u)``), so that a step far below the rounding of ``u_ref`` still counts.
-    """
-    dr = w[:, X, None] * p.c + w[:, Y, None] * p.s
-    du = w[:, AX, None] + w[:, T, None] * p.c + w[:, TC, None] * p.s
-    rho, u = ref.rho + dr, ref.u + du
-    rp, rp_ref = np.maximum(rho, 0.0), np.maximum(ref.rho, 0.0)
-    up, up_ref = u, ref.up
-    uu = du * (ref.u + u)
-    if p.one_sided.any():  # max(u, 0) where one-sided; the difference formula where both > 0
-        cut = p.one_sided[:, None]
-        up = np.where(cut, np.maximum(u, 0.0), u)
-        uu = np.where(cut & ~((u > 0) & (ref.u > 0)), up * up - up_ref * up_ref, uu)
-    d = np.hypot(rp, up)
-    both = (rho > 0) & (ref.rho > 0)
-    den = d + ref.d
-    den = np.where(den > 0, den, 1.0)
-    dd = (np.where(both, dr * (ref.rho + rho), rp * rp - rp_ref * rp_ref) + uu) / den
-    # d - rho = u^2 / (d + rho): the change of that is the part of dd not in dr
-    w_new = up * up / np.where(both, d + rho, 1.0)
-    w_ref = up_ref * up_ref / np.where(both, ref.d + ref.rho, 1.0)
-    ddr = np.where(both, (uu - dr * (w_ref + w_new)) / den, dd - dr)
-    return Balls(rho, u, d, ref.eps + dd, up), dd, ddr
-
-
 # ----------------------------------------------------------------------------------- forces
 
 
@@ -357,13 +326,6 @@ def residual_of(f: np.ndarray, gen: np.ndarray, size: np.ndarray, held: np.ndarr
     return np.max(np.abs(grad) / ref, axis=1)
 
 
-def hessian(p: Problem, b: Balls, lo: Loads, kappa: np.ndarray) -> np.ndarray:
-    """d(forces)/dv (n, 5, 5) with the held components decoupled (unit rows)."""
-    w1 = 1.5 * (1.0 + kappa) * lo.root
-    w2 = np.where(turns(b.rho, b.u, p.one_sided), lo.q / np.where(b.d > 0, b.d, 1.0), 0.0)
-    return hold(ball_tangent(p.arms, lo.ca, lo.sa, w1, w2), p.locked)
-
-
 def ball_tangent(
     arms: np.ndarray, ca: np.ndarray, sa: np.ndarray, w1: np.ndarray, w2: np.ndarray,
     w3: np.ndarray | None = None,
@@ -403,50 +365,14 @@ def turns(rho: np.ndarray, u: np.ndarray, one_sided: np.ndarray) -> np.ndarray:
     return inside
 
 
-def _excess(tau: np.ndarray, sig: np.ndarray) -> np.ndarray:
-    """(1 + tau)_+^2.5 - 1 - 2.5 tau without cancellation (sig = sqrt(1 + tau) - 1)."""
-    inside = -0.5 * sig * sig + 2.0 * tau * sig + tau * tau * (1.0 + sig)
-    return np.where(tau > -1.0, inside, -1.0 - 2.5 * tau)
-
-
-def energy_change(
-    p: Problem, kappa: np.ndarray, lr: Loads, lo: Loads, steps: tuple[np.ndarray, ...]
-) -> np.ndarray:
-    """Potential at a trial position less that at the reference, (n,); ``steps`` = (w,
-    d - d_ref, (d - d_ref) - (rho - rho_ref)) of the move (:func:`offset`). On the deviation
-    cases ``q_0 sum_j (rho_j - rho_ref,j)``, 0 around the ring, is left out of the sum, and the
-    rest is ``sum_j (1 + kappa_j) [q_0 (d_j - d_ref,j) + p^2.5/2.5 (X(tau_j) - X(tau_ref,j))]``
-    with ``X(tau) = (1 + tau)^2.5 - 1 - 2.5 tau``."""
-    w, dd, ddr = steps
-    dev = p.deviation
-    work = (p.f * w).sum(1)
-    deviation = np.zeros_like(work)
-    if dev.any():
-        pre = np.where(dev, p.pre, 1.0)
-        linear = lo.q0 * (ddr + kappa * dd).sum(1)
-        bend = ((1.0 + kappa) * (_excess(lo.tau, lo.sig) - _excess(lr.tau, lr.sig))).sum(1)
-        deviation = linear + pre * pre * np.sqrt(pre) / 2.5 * bend
-        if dev.all():
-            return deviation - work
-    # without preload: K/2.5 (delta^2.5 - delta_ref^2.5) = K delta_ref^2.5 (2.5 r + X(r))/2.5,
-    # r = dd/delta_ref, for a ball in contact at both positions (a difference otherwise)
-    pos_ref = lr.root * lr.root
-    both = (lr.root > 0) & (lo.root > 0)
-    r = dd / np.where(both, pos_ref, 1.0)
-    sig = r / (1.0 + np.sqrt(np.maximum(1.0 + r, 0.0)))
-    kd = lr.q * pos_ref  # K delta_ref^2.5
-    change = np.where(both, kd * (r + _excess(r, sig) / 2.5), (lo.q * lo.root**2 - kd) / 2.5)
-    return np.where(dev, deviation, change.sum(1)) - work
-
-
-# ------------------------------------------------------------------------------- the Newton
+# ----------------------------------------------------------------------------------- points
 
 
 @dataclass
 class Point:
     """The balls, loads, generalised forces, term sizes and residual at the positions of some
-    cases (the rows of every array), and how many steps they were carried along by
-    :func:`offset` since :func:`reference` computed them."""
+    cases (the rows of every array); ``age``: steps taken since :func:`reference` computed the
+    balls (0: fresh)."""
 
     b: Balls
     lo: Loads
@@ -476,271 +402,8 @@ class Point:
             getattr(self, name)[rows] = getattr(other, name)
 
 
-#: Steps a point is carried by the difference formulas before it is recomputed afresh. [-]
-REFRESH = 8
-
-
-def minimise(
-    p: Problem,
-    vh: np.ndarray,
-    vl: np.ndarray,
-    kappa: np.ndarray,
-    start: Point | None = None,
-    polish: bool = False,
-) -> tuple[np.ndarray, np.ndarray, np.ndarray, Point]:
-    """Damped Newton with an Armijo line search on the convex potential (stiffness ``1 +
-    kappa`` frozen): each case until every free component is within TOLERANCE (see
-    :func:`residual`) or its residual stops falling (rounding). The point a step reaches is
-    the line search's trial (:func:`offset` from the last); a case is recomputed afresh in
-    double-double (:func:`reference`) every REFRESH steps and before it counts as converged.
-    ``start``: the point at ``(vh, vl)`` if the caller has it (``Point.at`` of
-    :func:`reference` there, as computed here otherwise). Returns the position (hi, lo), the
-    iterations per case and the point there (fresh); the caller checks the residual."""
-    vh, vl = vh.copy(), vl.copy()
-    iterations = np.zeros(vh.shape[0], dtype=np.int64)
-    active = np.arange(vh.shape[0])
-    q, ka = p, kappa
-    pt = Point.at(q, ka, reference(q, vh, vl)) if start is None else start
-    best = np.full(active.size, np.inf)
-    stall = np.zeros(active.size, dtype=np.int64)
-    slow = np.zeros(active.size, dtype=bool)
-    ends: list[tuple[np.ndarray, Point, np.ndarray]] = []
-    for k in range(MAX_ITERATIONS):
-        old = np.flatnonzero(((pt.res <= TOLERANCE) & (pt.age > 0)) | (pt.age >= REFRESH))
-        if old.size == active.size:  # all of them: no copies
-            pt = Point.at(q, ka, reference(q, vh[active], vl[active]))
-        elif old.size:
-            sub = q.take(old)
-            pt.put(old, Point.at(sub, ka[old], reference(sub, vh[active[old]], vl[active[old]])))
-        better = (pt.res < 0.5 * best) | (pt.res > STALL_BELOW)
-        best = np.where(better, pt.res, best)
-        stall = np.where(better, 0, stall + 1)
-        stop = ((pt.res <= TOLERANCE) & (k > 0 or not polish)) | (stall >= STALL)
-        stop |= ~np.isfinite(pt.res)
-        if stop.all():  # (no step: the position and the point stay)
-            ends.append((active, pt, pt.age == 0))
-            break
-        grad = np.where(q.locked, 0.0, pt.gen - q.f)
-        step, hess = _newton_step(q, pt.b, pt.lo, ka, grad, stop)
-        before = pt.res.copy()  # the line search may change pt in place
-        moved, pt = _line_search(q, ka, pt, (step, hess), grad, slow)
-        slow = pt.res > 0.9 * before
-        still = ~np.any(moved != 0.0, axis=1)
-        stop |= still & (pt.age == 0)  # no step from a fresh point: rounding
-        if stop.any():
-            ends.append((active[stop], pt.take(np.flatnonzero(stop)), pt.age[stop] == 0))
-        pt.age[still] = REFRESH  # no step from a carried point: recompute it first
-        hi, lo_ = _two_sum(vh[active], moved)
-        vh[active], vl[active] = _fast(hi, lo_ + vl[active])
-        iterations[active[~stop]] += 1
-        keep = np.flatnonzero(~stop)
-        if not keep.size:
-            break
-        if keep.size < active.size:
-            active, q, ka, pt = active[keep], q.take(keep), ka[keep], pt.take(keep)
-            best, stall, slow = best[keep], stall[keep], slow[keep]
-    return vh, vl, iterations, _ended(p, kappa, vh, vl, ends)
-
-
-def _ended(
-    p: Problem, kappa: np.ndarray, vh: np.ndarray, vl: np.ndarray, ends: list[tuple[Any, ...]]
-) -> Point:
-    """The point of every case at its final position: where the minimisation stopped at a fresh
-    point (:func:`reference` there), that one; the others recomputed afresh."""
-    n = vh.shape[0]
-    fresh = np.zeros(n, dtype=bool)
-    if len(ends) == 1 and ends[0][0].size == n and ends[0][2].all():
-        rows, pt, _ = ends[0]
-        if np.array_equal(rows, np.arange(n)):
-            return pt
-    for rows, _, is_fresh in ends:
-        fresh[rows[is_fresh]] = True
-    redo = np.flatnonzero(~fresh)
-    if redo.size == n:
-        return Point.at(p, kappa, reference(p, vh, vl))
-    first = ends[0][1]
-    out = Point(
-        Balls(*(np.empty((n,) + getattr(first.b, k).shape[1:]) for k in _BALL_FIELDS)),
-        Loads(*(np.empty((n,) + getattr(first.lo, k).shape[1:]) for k in _LOAD_FIELDS)),
-        np.empty((n, 5)), np.empty((n, 5)), np.empty(n), np.zeros(n, dtype=np.int64),
-    )  # fmt: skip
-    for rows, pt, is_fresh in ends:
-        keep = np.flatnonzero(is_fresh)
-        out.put(rows[keep], pt.take(keep))
-    if redo.size:
-        sub = p.take(redo)
-        out.put(redo, Point.at(sub, kappa[redo], reference(sub, vh[redo], vl[redo])))
-    return out
-
-
-def _newton_step(
-    q: Problem, cur: Balls, lo: Loads, kappa: np.ndarray, grad: np.ndarray, stop: np.ndarray
-) -> tuple[np.ndarray, np.ndarray]:
-    """The Newton step (regularised) and the Hessian it solved; for a ring that touches no
-    ball, the step to the first contact (:func:`_to_contact`); 0 where the case has stopped."""
-    hess = hessian(q, cur, lo, kappa)
-    trace = np.trace(hess, axis1=1, axis2=2)
-    hess += (1e-13 * trace + 1e-300)[:, None, None] * np.eye(5)
-    step = cap_step(q, -np.linalg.solve(hess, grad[:, :, None])[:, :, 0])
-    loose = np.flatnonzero(~(trace > q.locked.sum(1)) & ~stop)  # no ball in contact
-    if loose.size:  # Newton has no curvature there: move along the load to the first contact
-        step[loose] = cap_step(
-            q, _to_contact(q.take(loose), cur.take(loose), _take_loads(lo, loose)), loose
-        )
-    return np.where(stop[:, None], 0.0, step), hess
-
-
-def cap_step(p: Problem, step: np.ndarray, rows: Any = slice(None)) -> np.ndarray:
-    """One-sided cases: the step shortened so that no axial part (a, t, t_c) exceeds A. A ball
-    at u_j < 0 has no stiffness along the groove, so with few balls in contact the Newton matrix
-    may be singular along a move that lifts the others further off (its regularised step then
-    goes 1e13 times the force out and takes thousands of steps to come back); an equilibrium
-    lies within a few A of any start (a loaded ball has |u_j| < A). Deep-groove cases: as is."""
-    one = p.one_sided[rows]
-    if not one.any():
-        return step
-    longest = np.max(np.abs(step[:, 2:]), axis=1)
-    a_hat = p.a_hat[rows]
-    shrink = np.where(one & (longest > a_hat), a_hat / np.where(longest > 0, longest, 1.0), 1.0)
-    return step * shrink[:, None]
-
-
 def _take_loads(lo: Loads, idx: np.ndarray) -> Loads:
     return Loads(*(getattr(lo, name)[idx] for name in _LOAD_FIELDS))
 
 
 _LOAD_FIELDS = ("ca", "sa", "cam1", "q", "dq", "root", "tau", "sig", "q0")
-
-
-def _line_search(
-    q: Problem,
-    kappa: np.ndarray,
-    pt: Point,
-    newton: tuple[np.ndarray, np.ndarray],
-    grad: np.ndarray,
-    slow: np.ndarray,
-) -> tuple[np.ndarray, Point]:
-    """The move (n, 5) and the point it reaches: ``t`` times the step, t = 1, then (if that fails and a ball not in
-    contact would be reached before) just past the first contact along the step, then halved,
-    until the potential falls (Armijo) or the residual halves. On the ``slow`` cases (the last
-    step took off less than a tenth of the residual), a trial that fails or does the same is
-    tried once more with a second-order correction (``-H^-1`` times the forces left at the
-    trial). ``pt`` may be changed in place.
-
-    The first contact matters along a direction the balls in contact do not resist (a ring
-    sliding in its clearance): the regularised Newton step there is a fixed length, and halving
-    it only would approach the next contact geometrically. The correction matters where the
-    path is an arc (a ring rolling a ball along its groove, radius A, about millions of elastic
-    approaches): a straight step leaves the arc by s^2/(2A), into the stiff direction.
-    """
-    step, hess = newton
-    slope = (grad * step).sum(1)
-    t = np.ones(step.shape[0])
-    moved = np.zeros_like(step)
-    res = pt.res.copy()
-    pending = np.flatnonzero(np.any(step != 0.0, axis=1))
-    for k in range(60):
-        if not pending.size:
-            break
-        part = _part(q, kappa, pt, pending)
-        w = t[pending, None] * step[pending]
-        drop_min = t[pending] * slope[pending]
-        ok, trial = _accept(part, w, drop_min, res[pending])
-        # corrected where the trial fails or leaves more than 90 % of the residual, again
-        retry = np.flatnonzero(slow[pending] & (~ok | (trial.res > 0.9 * res[pending])))
-        if retry.size:
-            sub = _part(*part, retry)
-            left = np.where(sub[0].locked, 0.0, trial.gen[retry] - sub[0].f)
-            fix = -np.linalg.solve(hess[pending[retry]], left[:, :, None])[:, :, 0]
-            fix = cap_step(sub[0], fix)
-            ok2, trial2 = _accept(sub, w[retry] + fix, drop_min[retry], res[pending[retry]], True)
-            better = ok2 & (~ok[retry] | (trial2.drop < trial.drop[retry]))
-            w[retry[better]] += fix[better]
-            ok[retry[better]] = True
-            trial.put(retry[better], trial2.take(np.flatnonzero(better)))
-        moved[pending[ok]] = w[ok]
-        if ok.all() and pending.size == step.shape[0]:
-            return moved, trial  # every case took its first trial: that is the new point
-        pt.put(pending[ok], trial.take(np.flatnonzero(ok)))
-        pending = pending[~ok]
-        if k == 0 and pending.size:  # just past the first contact along the step, or half
-            sub = _part(q, kappa, pt, pending)
-            t[pending] = np.minimum(0.5, _first_contact(sub[0], sub[2].b, sub[2].lo, step[pending]))
-        else:
-            t[pending] *= 0.5
-    return moved, pt
-
-
-Part = tuple[Problem, np.ndarray, Point]
-
-
-def _part(q: Problem, kappa: np.ndarray, pt: Point, rows: np.ndarray) -> Part:
-    """The cases ``rows`` of a problem, its stiffness and its point (all of them as they are)."""
-    if rows.size == q.f.shape[0]:
-        return q, kappa, pt
-    return q.take(rows), kappa[rows], pt.take(rows)
-
-
-@dataclass
-class _Trial(Point):
-    drop: np.ndarray = dataclasses.field(default_factory=lambda: np.zeros(0))
-
-    def take(self, rows: np.ndarray) -> _Trial:
-        p = Point.take(self, rows)
-        return _Trial(p.b, p.lo, p.gen, p.size, p.res, p.age, self.drop[rows])
-
-    def put(self, rows: np.ndarray, other: Point) -> None:
-        Point.put(self, rows, other)
-        if isinstance(other, _Trial):
-            self.drop[rows] = other.drop
-
-
-def _accept(
-    part: Part, w: np.ndarray, drop_min: np.ndarray, res: np.ndarray, need_drop: bool = False
-) -> tuple[Any, ...]:
-    """Whether the move ``w`` is taken (the residual halves, or the potential falls by 1e-4 of
-    ``drop_min``), and the point there with the change of the potential, ``drop`` (0 where not
-    needed: every residual halves, unless ``need_drop``)."""
-    q, kappa, pt = part
-    b, dd, ddr = offset(q, pt.b, w)
-    lt = loads(q, b, kappa)
-    gen, size = forces(q, lt)
-    left = residual(q, gen, size, q.locked)
-    ok = left < 0.5 * res
-    drop = np.zeros_like(left)  # (not needed where the residual halves)
-    if need_drop or not ok.all():
-        drop = energy_change(q, kappa, pt.lo, lt, (w, dd, ddr))
-        drop = np.where(np.isfinite(drop), drop, np.inf)
-        ok |= drop <= 1e-4 * drop_min
-    ok &= np.any(w != 0.0, axis=1)
-    return ok, _Trial(b, lt, gen, size, left, pt.age + 1, drop)
-
-
-def _first_contact(q: Problem, cur: Balls, lo: Loads, step: np.ndarray) -> np.ndarray:
-    """Per case, the step fraction (to first order, 1.001 times it) at which the first ball not
-    in contact would touch when moving along ``step``; 1 where none would before the full step."""
-    delta = q.pre[:, None] + cur.eps
-    dr = step[:, X, None] * q.c + step[:, Y, None] * q.s
-    du = step[:, AX, None] + step[:, T, None] * q.c + step[:, TC, None] * q.s
-    rate = lo.ca * dr + lo.sa * du  # d(delta_j)/dt
-    with np.errstate(divide="ignore", invalid="ignore"):
-        reach = np.where((rate > 0) & (delta < 0), -delta / rate, np.inf)
-    return np.minimum(1.001 * np.min(reach, axis=1), 1.0)
-
-
-def _to_contact(p: Problem, b: Balls, lo: Loads) -> np.ndarray:
-    """For rings that touch no ball: the step along the generalised load (the potential falls
-    along it while no ball is loaded) that brings the nearest ball, to first order, a little
-    into contact; zero where no ball comes nearer that way."""
-    delta = p.pre[:, None] + b.eps
-    direction = np.where(p.locked, 0.0, p.f)
-    direction /= np.maximum(np.linalg.norm(direction, axis=1, keepdims=True), 1e-300)
-    c, s, ca, sa = p.c, p.s, lo.ca, lo.sa
-    rate = (ca * c * direction[:, X, None] + ca * s * direction[:, Y, None]
-            + sa * direction[:, AX, None] + sa * c * direction[:, T, None]
-            + sa * s * direction[:, TC, None])  # fmt: skip
-    with np.errstate(divide="ignore", invalid="ignore"):
-        reach = np.where(rate > 0, -delta / rate, np.inf)
-    t = np.min(reach, axis=1)
-    t = np.where(np.isfinite(t), 1.001 * t + 1e-9, 0.0)
-    return direction * t[:, None]

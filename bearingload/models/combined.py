@@ -60,7 +60,7 @@ Angular contact (``contact_angle`` given)
 * Numerics: a ball at ``u_j < 0`` has no stiffness along its groove, so with few balls in
   contact the Newton matrix may be singular along a move that lifts the others further off;
   the axial parts of every step of a one-sided case are capped at ``A``
-  (:func:`bearingload.models._combined_ring.cap_step`). Deep-groove cases take none of these
+  (the compiled core's ``cap_step``). Deep-groove cases take none of these
   branches: their results are bit-identical to those before angular contact was added.
 
 Conventions
@@ -85,13 +85,14 @@ Numerics. With ``K`` frozen per ball, the equilibrium is the minimum of the conv
 ``sum K_j/2.5 max(delta_j, 0)^2.5 - F_r x - F_a a - M theta`` with ``delta_j = |(max(rho_j, 0),
 u_j)| - A`` (a norm of a convex, nondecreasing map of an affine function, minus a constant:
 convex, once differentiable; it equals the torus formula wherever a ball can touch). Lengths
-are scaled by ``(F/K)^(2/3)`` with ``F`` the largest applied load; damped Newton minimises it
-(:mod:`bearingload.models._combined_ring`: positions and ball approaches in double-double, the
-forces of a preloaded ring summed from the preloaded reference), started from where plain
-double-precision Newton steps (:mod:`bearingload.models._combined_fast`, the stiffness following
-the contact angles) take the radial engine's solution and the axial closed form; it measures
-and finishes every case itself, so the accuracy is its own. Then ``K_j`` is updated to the new contact angles
-and the minimisation repeated until the update leaves the equilibrium. Each case stops when
+are scaled by ``(F/K)^(2/3)`` with ``F`` the largest applied load. The compiled core
+(:mod:`bearingload.models._core`, one C call per case) minimises it by damped Newton (positions
+and ball approaches in double-double, the forces of a preloaded ring summed from the preloaded
+reference, as :mod:`bearingload.models._combined_ring` states them), started from where plain
+double-precision Newton steps (the stiffness following the contact angles) take the radial
+engine's solution and the axial closed form; it measures and finishes every case itself, so
+the accuracy is its own. Then ``K_j`` is updated to the new contact angles and the
+minimisation repeated until the update leaves the equilibrium. Each case stops when
 every applied component is balanced to 1e-12 of itself (or to the rounding of the sum it is,
 its terms much larger than it); a component held at 0 by a symmetry of the case is exactly 0.
 No case depends on the others of its call, nor on earlier calls: the Hertz set-up of a
@@ -113,7 +114,6 @@ import numpy as np
 from bearingload import numerics, validate
 from bearingload.constants import STEEL_MODULUS
 from bearingload.errors import ConvergenceError, InputError
-from bearingload.models import _combined_fast as _fast
 from bearingload.models import _combined_ring as _ring
 from bearingload.models._combined_ring import ACCEPT, MAX_ITERATIONS, TOLERANCE, Problem
 
@@ -596,14 +596,14 @@ def solve_combined(
     if misalignment is not None:  # the moment is then the reaction, not an input
         given["misalignment"] = tilt_deg
     with np.errstate(all="ignore"):
-        vh, vl, kappa, its, end = _thrust_retry(problem, geo, curve)
+        vh, vl, kappa, its, end, tangent = _thrust_retry(problem, geo, curve)
         checked = _checked(problem, end, its, given)
         answer = (
             vh + vl,
             kappa,
             its,
             checked,
-            _tangent(problem, geo, end, kappa, curve, mirror & (mc == 0)),
+            _stiffness_matrix(problem, geo, tangent, mirror & (mc == 0)),
         )
         return _result(problem, geo, answer, shape, given, misalignment)
 
@@ -877,42 +877,6 @@ def _locks(
     return held, fixed
 
 
-def _start(p: Problem, geo: _Geometry, cage: np.ndarray) -> np.ndarray:
-    """Radial engine for F_r alone, the axial closed form for F_a (or the moment) alone."""
-    from bearingload.models.equilibrium import solve
-
-    n = p.f.shape[0]
-    v = np.zeros((n, 5))
-    f = p.f * p.f_ref[:, None]  # [N]
-    # a load component below 1e-3 of the largest does not pick the start (a vanishing F_r beside
-    # a moment would otherwise start the tilt from the radial solution, far from the answer)
-    radial = p.f[:, 0] > 1e-3
-    if radial.any():
-        r = solve(p.z, f[radial, 0], p.k_ref[radial], 2.0 * geo.g[radial], cage[radial])
-        v[radial, 0] = r.x / p.scale[radial]
-        v[radial, 1] = r.y / p.scale[radial]
-    axial = np.abs(p.f[:, 2]) > 1e-3
-    if axial.any():
-        # bisected only until the single-precision start is fixed (the same start as the full
-        # axial_only gives, in half its steps)
-        fz = np.full(int(axial.sum()), float(p.z))
-        lo, hi, _ = _axial_bracket(
-            fz, np.abs(f[axial, 2]), p.k_ref[axial], geo.A[axial], geo.g[axial], p.scale[axial]
-        )
-        v[axial, 2] = np.sign(f[axial, 2]) * (0.5 * (lo + hi)) / p.scale[axial]
-    size = np.hypot(f[:, 3] * ~p.locked[:, 3], f[:, 4])
-    pure = (~radial) & (~axial) & (size > 0) & (p.t_imp == 0)
-    if pure.any():  # a moment alone: the ring tilts as if twice it were an axial load
-        u, _, _ = axial_only(p.z, 2.0 * size[pure], p.k_ref[pure], geo.A[pure], 2.0 * geo.g[pure])
-        for col in (3, 4):
-            v[pure, col] = u * f[pure, col] / size[pure] / p.scale[pure]
-    # the start only needs a few digits: rounded to single precision, it does not depend on
-    # the last bits the radial engine and the bisection leave, which may vary with the batch
-    with np.errstate(over="ignore"):
-        single = v.astype(np.float32).astype(float)
-    return np.where(p.locked, 0.0, np.where(np.abs(v) < 1e30, single, v))
-
-
 #: An angular-contact case whose groove-centre distance A exceeds LIGHT_RATIO times its one-ball
 #: approach (F/K)^(2/3) starts from the answer of the same case at a heavier load, the ratio
 #: STAGE times smaller (but not below HEAVY_RATIO), itself so started while above LIGHT_RATIO:
@@ -923,18 +887,19 @@ STAGE = 3.0
 
 
 def _light_start(
-    p: Problem, geo: _Geometry, curve: _StiffnessCurve | None, v0: np.ndarray
-) -> np.ndarray:
-    """``v0`` (n, 5), with the start of the light angular-contact cases (ratio A/(F/K)^(2/3)
-    above LIGHT_RATIO) replaced by the answer of the same case (the same load directions,
-    misalignment and geometry) at a load STAGE^1.5 times heavier (the ratio STAGE times smaller,
-    not below HEAVY_RATIO), in the scaled units of ``p``; that case is started the same way
-    while its ratio is above LIGHT_RATIO.
+    p: Problem, geo: _Geometry, curve: _StiffnessCurve | None
+) -> tuple[np.ndarray, np.ndarray]:
+    """The light angular-contact cases (ratio A/(F/K)^(2/3) above LIGHT_RATIO) and their starts
+    (rows, (rows, 5)): the answer of the same case (the same load directions, misalignment and
+    geometry) at a load STAGE^1.5 times heavier (the ratio STAGE times smaller, not below
+    HEAVY_RATIO), in the scaled units of ``p``; that case is started the same way while its
+    ratio is above LIGHT_RATIO. A case whose heavier one does not converge is left out (it keeps
+    the standard start).
 
-    Why: :func:`_start` puts the ring at the radial engine's x (the balls at the groove bottom,
-    the clearance 2A (1 - cos alpha_0) taken up) and at the axial closed form's a (the balls
-    near alpha_0): together they press the ball on the load line about sin^2(alpha_0)/2 of A
-    into its grooves (0.09 A at 25°). Where A is millions of approaches, Newton relieves that along x and stops with one
+    Why: the standard start (the core's ``standard_start``) puts the ring at the radial model's
+    x (the balls at the groove bottom, the clearance 2A (1 - cos alpha_0) taken up) and at the
+    axial closed form's a (the balls near alpha_0): together they press the ball on the load
+    line about sin^2(alpha_0)/2 of A into its grooves (0.09 A at 25°). Where A is millions of approaches, Newton relieves that along x and stops with one
     ball loaded, near alpha_0, while the answer (F_a/F_r small, the ring free to tilt: that
     ball near 0°, the far ones at 30-60°, the ring tilted by 0.3 A) lies a large part of A
     away: the ring must roll the ball down its groove, an arc of radius A at approaches of
@@ -948,7 +913,7 @@ def _light_start(
     light case is solved and checked as any other."""
     rows = np.flatnonzero(p.one_sided & (p.a_hat > LIGHT_RATIO))
     if not rows.size:
-        return v0
+        return rows, np.zeros((0, 5))
     sub = _geo_take(geo, rows)
     ratio = np.maximum(p.a_hat[rows] / STAGE, HEAVY_RATIO)
     f_ref = p.k_ref[rows] * (sub.A / ratio) ** 1.5
@@ -961,11 +926,9 @@ def _light_start(
     try:
         vh, vl, *_ = _solve_with_stiffness(heavy, sub, own)
     except ConvergenceError:  # (a start only: the standard one stays)
-        return v0
+        return rows[:0], np.zeros((0, 5))
     v = (vh + vl) * (heavy.scale / p.scale[rows])[:, None]
-    out = v0.copy()
-    out[rows] = np.where(p.locked[rows], 0.0, v)
-    return out
+    return rows, np.where(p.locked[rows], 0.0, v)
 
 
 #: An angular-contact case under F_r and a thrust F_a below THRUST_RATIO F_r whose first
@@ -992,9 +955,9 @@ def _thrust_retry(p: Problem, geo: _Geometry, curve: _StiffnessCurve | None) -> 
     Why: with a thrust of some thousandths of F_r only two or three balls carry load, those on
     the load side near 0°, one of them often at the kink of the one-sided contact (u_j = 0: no
     stiffness along the groove on one side, a large one on the other), and the Newton matrix is
-    near-singular along a tilt. Where the start (:func:`_start`, then the double-precision Newton
+    near-singular along a tilt. Where the start (the core's standard start, then the double-precision Newton
     stage) or a step lands the ring there, the regularised step along that tilt is enormous, is
-    capped to A (:func:`_ring.cap_step`), and the line search accepts some 1e-7 of it: the
+    capped to A (the core's ``cap_step``), and the line search accepts some 1e-7 of it: the
     residual falls by 1e-5 per step (or not at all, 70.4 being the ceiling of the measure), until
     MAX_ITERATIONS. Which cases do so is a matter of chance: ``solve_combined(5, 2260.78,
     2.9589, cage_angle=222.70, contact_angle=14.439, ball_diameter=11.5, pitch_diameter=43.5)``
@@ -1002,8 +965,7 @@ def _thrust_retry(p: Problem, geo: _Geometry, curve: _StiffnessCurve | None) -> 
     u_j < 0, the loads 30 times F_r), while 2.26 N and 4.5 N solve at once. At F_a =
     THRUST_RATIO F_r more balls carry load and the standard start converges; each stage starts
     from the answer of the one before, nearly the same ring position."""
-    out = _solve_with_stiffness(p, geo, curve)
-    vh, vl, kappa, total, end = out
+    vh, vl, kappa, total, end, tangent = _solve_with_stiffness(p, geo, curve)
     res = _ring.residual(p, end.gen, end.size, p.imposed)
     f0, f2 = p.f[:, 0], p.f[:, 2]
     rows = np.flatnonzero(
@@ -1018,7 +980,8 @@ def _thrust_retry(p: Problem, geo: _Geometry, curve: _StiffnessCurve | None) -> 
             continue
         vh[i], vl[i], kappa[i], total[i] = got[0][0], got[1][0], got[2][0], total[i] + got[3][0]
         end.put(one, got[4])
-    return vh, vl, kappa, total, end
+        tangent[i] = got[5][0]
+    return vh, vl, kappa, total, end, tangent
 
 
 def _thrust_path(q: Problem, geo: _Geometry, curve: _StiffnessCurve | None) -> tuple | None:
@@ -1043,7 +1006,7 @@ def _thrust_path(q: Problem, geo: _Geometry, curve: _StiffnessCurve | None) -> t
         except ConvergenceError:
             ok = False
         if ok and e_next == 0.0:
-            return got[0], got[1], got[2], np.array([its]), got[4]
+            return got[0], got[1], got[2], np.array([its]), got[4], got[5]
         if ok:
             e_done, v0 = e_next, np.where(q.locked, 0.0, got[0] + got[1])
         elif math.isinf(e_done) or step < math.log(THRUST_STAGE_MIN):
@@ -1150,49 +1113,42 @@ class _StiffnessCurve:
         return num / den + cos_m1 * dd_dc
 
 
-def _standard_start(p: Problem, geo: _Geometry, curve: _StiffnessCurve | None) -> np.ndarray:
-    """The start of every case: :func:`_start`, light angular-contact cases :func:`_light_start`."""
-    cage = np.rad2deg(np.arctan2(p.s[:, 0], p.c[:, 0]))
-    return _light_start(p, geo, curve, _start(p, geo, cage))
-
-
 def _solve_with_stiffness(
     p: Problem, geo: _Geometry, curve: _StiffnessCurve | None, v0: np.ndarray | None = None
-) -> tuple[np.ndarray, np.ndarray, np.ndarray, np.ndarray, _ring.Point]:
+) -> tuple[np.ndarray, np.ndarray, np.ndarray, np.ndarray, _ring.Point, np.ndarray]:
     """Minimise with frozen ball stiffnesses, update them to the contact angles, repeat until
-    the update leaves the equilibrium (to the tolerance). Returns (v_hi, v_lo, kappa,
-    iterations, the point there: :func:`_ring.reference` at the position, the loads with
-    kappa). ``v0``: the start (scaled units of ``p``), default :func:`_standard_start`."""
-    start0 = _standard_start(p, geo, curve) if v0 is None else v0
-    vh, kappa, total = _fast.newton(p, start0, curve)
-    vl = np.zeros_like(vh)
-    todo = np.arange(vh.shape[0])  # each case stops on its own: no case depends on the batch
-    sub, start = p, None
-    last: _ring.Point | None = None  # every case's point at its position, with its stiffness
-    for _ in range(MAX_STIFFNESS_UPDATES):
-        vh[todo], vl[todo], its, end = _ring.minimise(
-            sub, vh[todo], vl[todo], kappa[todo], start, polish=start is None
+    the update leaves the equilibrium (to the tolerance), each case in the compiled core
+    (:mod:`bearingload.models._core`). Returns (v_hi, v_lo, kappa, iterations, the point there:
+    the balls at the position, the loads with kappa; the tangent of the ring forces there,
+    scaled, (n, 5, 5)). ``v0``: the start (scaled units of
+    ``p``); default the core's standard start, light angular-contact cases :func:`_light_start`."""
+    from bearingload.models import _core
+
+    n = p.f.shape[0]
+    given = np.zeros(n, dtype=np.uint8)
+    start0 = np.zeros((n, 5))
+    if v0 is None:
+        rows, light = _light_start(p, geo, curve)
+        given[rows], start0[rows] = 1, light
+    else:
+        given[:], start0[:] = 1, v0
+    values = np.zeros((n, 0)) if curve is None else curve.values
+    vh, vl, kappa, total, status, balls, tangent = _core.solve(
+        np.ascontiguousarray(p.c, dtype=float), np.ascontiguousarray(p.s, dtype=float),
+        *(np.ascontiguousarray(a, dtype=float) for a in
+          (p.a_hat, p.pre, p.gap, p.b_hi, p.b_lo, p.t_imp, p.f)),
+        np.ascontiguousarray(p.locked, dtype=np.uint8),
+        np.ascontiguousarray(p.one_sided, dtype=np.uint8),
+        np.ascontiguousarray(values, dtype=float), _NODE_X, _NODE_W,
+        np.ascontiguousarray(start0, dtype=float), given,
+        max_iterations=_ring.MAX_ITERATIONS, first_stage_steps=_ring.FIRST_STAGE_STEPS,
+    )  # fmt: skip
+    if np.any(status != _core.Status.OK):
+        raise ConvergenceError(
+            "combined-load ball stiffness update", MAX_STIFFNESS_UPDATES, math.nan, {}
         )
-        total[todo] += its
-        if curve is None:
-            return vh, vl, kappa, total, end
-        b, lo = end.b, end.lo  # (fresh: reference() at the position)
-        k_new = np.where(lo.root > 0, curve(todo, lo.ca, lo.cam1), kappa[todo])
-        # the point the next minimisation starts from (the same position, the new stiffness)
-        start = _ring.Point.at(sub, k_new, b)
-        if last is None:
-            last = start
-        else:
-            last.put(todo, start)
-        kappa[todo] = k_new  # (a change of 1e-16 in kappa moves 1e6 times it under preload)
-        going = np.flatnonzero(start.res > np.maximum(_ring.TOLERANCE, end.res))
-        if going.size == 0:
-            return vh, vl, kappa, total, last
-        if going.size < todo.size:
-            todo, sub, start = todo[going], sub.take(going), start.take(going)
-    raise ConvergenceError(
-        "combined-load ball stiffness update", MAX_STIFFNESS_UPDATES, math.nan, {}
-    )
+    point = _ring.Point.at(p, kappa, _ring.Balls(*balls))
+    return vh, vl, kappa, total, point, tangent
 
 
 def _checked(p: Problem, end: _ring.Point, its: np.ndarray, given: dict) -> tuple[Any, ...]:
@@ -1289,6 +1245,12 @@ def _tangent(p: Problem, geo: _Geometry, point: _ring.Point, kappa: np.ndarray,
     b, lo = point.b, point.lo
     slope = None if curve is None else curve.slope(lo.ca, lo.cam1)
     t = _ring.ball_tangent(p.arms, lo.ca, lo.sa, *tangent_weights(p, b, lo, kappa, slope))
+    return _physical(p, geo, t, mirrored)
+
+
+def _physical(p: Problem, geo: _Geometry, t: np.ndarray, mirrored: np.ndarray) -> np.ndarray:
+    """The scaled tangent ``t`` (n, 5, 5, changed in place) in physical units, its symmetric
+    part, the couplings of the mirrored cases and those within rounding exactly 0."""
     lever = np.ones((p.f.shape[0], 5))
     lever[:, 3:] = geo.R_i[:, None]
     t *= (p.f_ref / p.scale)[:, None, None] * lever[:, :, None] * lever[:, None, :]
@@ -1306,6 +1268,14 @@ def _tangent(p: Problem, geo: _Geometry, point: _ring.Point, kappa: np.ndarray,
     diag = np.sqrt(np.abs(np.diagonal(t, axis1=1, axis2=2)))
     t[np.abs(t) <= (4.0 * p.arms.shape[2] * EPS) * diag[:, :, None] * diag[:, None, :]] = 0.0
     return t
+
+
+def _stiffness_matrix(
+    p: Problem, geo: _Geometry, tangent: np.ndarray, mirrored: np.ndarray
+) -> np.ndarray:
+    """The stiffness matrix of every case (n, 5, 5) from the core's tangent of the ring forces
+    (scaled): in physical units, its symmetric part, as :func:`_tangent` states it."""
+    return _physical(p, geo, tangent.copy(), mirrored)
 
 
 def _result(

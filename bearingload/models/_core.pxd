@@ -1,0 +1,59 @@
+# The compiled core's C structures (bearingload/models/_core.pyx): one case of the scaled
+# ball-bearing ring equilibrium, the state of its balls at one ring position, and a point of the
+# Newton iteration. Nothing here holds a Python object.
+
+cdef enum:
+    NODES = 24  # Chebyshev nodes of the Hertz stiffness curve K(alpha)/K_0 - 1
+
+ctypedef struct Limits:
+    # the tolerances and iteration limits of a call (the module constants of _core.pyx)
+    double tolerance, rounding, floor, stall_below, hand_on
+    int max_iterations, stall, refresh, max_updates, fast_steps, fast_halvings
+
+ctypedef struct Case:
+    # one case of the scaled problem (lengths over (F/K_0)^(2/3), forces over F); ball j at
+    # (c[j], s[j]) = (cos, sin) of its angle from the load line
+    int z
+    const double *c
+    const double *s
+    double a_hat        # A / scale, the groove-centre distance at contact
+    double pre          # preload approach p = max(-G_r/2, 0) / scale
+    double gap          # max(G_r/2, 0) / scale
+    double b_hi, b_lo   # B = A + p, double-double
+    double t_imp        # imposed tilt R_i theta / scale
+    double f[5]         # applied generalised forces (x, y, axial, tilt, tilt_cross)
+    int locked[5]       # components held (imposed tilt, or 0 by a symmetry)
+    int one_sided       # angular contact: a ball sees max(u, 0)
+    int deviation       # preloaded ring of z >= 2: forces summed from the preloaded reference
+    double q0           # p^1.5 on the deviation cases, else 0
+    const double *curve # K(alpha)/K_0 - 1 divided differences at the nodes, or NULL: constant K
+    const double *node_x
+    const double *node_w
+    Limits lim
+
+ctypedef struct Balls:
+    # every ball at one ring position (arrays of z)
+    double *rho   # radial separation of the groove centres
+    double *u     # axial separation
+    double *d     # |(max(rho, 0), u')|
+    double *eps   # d - B, to the last digits
+    double *up    # the axial separation the contact sees: u, or max(u, 0) one-sided
+
+ctypedef struct Loads:
+    double *ca
+    double *sa
+    double *cam1  # cos(alpha) - 1 without cancellation
+    double *q     # (1 + kappa) delta^1.5
+    double *dq    # q - q0
+    double *root  # sqrt(max(delta, 0))
+    double *tau   # (delta - p)/p on the deviation cases, else 0
+    double *sig   # sqrt(1 + tau) - 1
+
+ctypedef struct Point:
+    Balls b
+    Loads lo
+    double gen[5]   # generalised ball forces on the ring
+    double size[5]  # sum of the magnitudes of their terms
+    double res      # relative residual (see residual)
+    int age         # steps carried by the difference formulas since a fresh evaluation
+    double drop     # change of the potential from the point it was reached from

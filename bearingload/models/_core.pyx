@@ -1,0 +1,1129 @@
+# cython: language_level=3
+"""The compiled core of the ball-bearing ring equilibrium (C-level Cython).
+
+One case is one C call: the scaled problem of :mod:`bearingload.models._combined_ring` (its
+docstring gives the model, the scaled units and why each piece keeps its digits) solved by
+
+1. Newton in plain double precision, the ball stiffness following the contact angles, from the
+   caller's start until double precision stops resolving the forces (``fast_newton``);
+2. damped Newton with an Armijo line search on the convex potential, the ball stiffness frozen,
+   the ring position and the ball approaches in double-double (``minimise``);
+3. the stiffness updated to the contact angles and step 2 repeated until the update leaves the
+   equilibrium (``solve_case``).
+
+A batch is a C loop over cases, each case with its own work space: a case's answer is the same
+bits alone or in any batch. The kernels are ``noexcept nogil`` functions over the structs of
+``_core.pxd``; no Python object enters them. The Python wrapper (:func:`solve`) takes typed
+memoryviews, allocates the outputs and returns a status per case (``OK``, ``NOT_CONVERGED``:
+the stiffness updates ran out); the caller measures the residual and names the inputs.
+
+Double-double arithmetic needs every product rounded on its own: the build compiles this file
+with ``-ffp-contract=off`` (setup.py); the exact products use ``fma``.
+"""
+
+from libc.math cimport fabs, fma, hypot, isfinite, sqrt, INFINITY
+from libc.stdint cimport int64_t
+from libc.stdlib cimport free, malloc
+
+from bearingload.models._core cimport NODES, Balls, Case, Limits, Loads, Point
+
+import numpy as np
+
+#: Relative residual of every applied component each case is driven below. [-]
+TOLERANCE = 1e-12
+#: A residual within this times the sum of the magnitudes of its terms is their rounding: 8 eps
+#: (the campaign, tests/campaign_combined.py, balances every component whose terms stay below
+#: 1e3 times its load to <= 9.9e-13 of that load; 64 eps allowed 3.2e-12 there). [-]
+ROUNDING = 8.0 * 2.220446049250313e-16
+#: A component without an applied load is measured against the rounding of its terms or, where
+#: those vanish with it at the answer, this times the largest applied load. [-]
+FLOOR = 1e-6
+#: Newton iterations per stiffness update (a load near the smallest accepted with a clearance of
+#: about A takes up to some hundreds). [-]
+MAX_ITERATIONS = 2000
+#: A case near equilibrium (residual below STALL_BELOW) whose residual has not halved in STALL
+#: iterations has reached its rounding. [-]
+STALL = 12
+STALL_BELOW = 1e-9
+#: Steps a point is carried by the difference formulas before it is recomputed afresh. [-]
+REFRESH = 8
+#: Stiffness updates (each followed by a minimisation) before a case is given up. [-]
+MAX_STIFFNESS_UPDATES = 40
+#: Plain-double first stage: steps at most, halvings of a step, and the residual below which a
+#: case is handed on to the double-double stage (which finishes it). [-]
+FIRST_STAGE_STEPS = 16
+FIRST_STAGE_HALVINGS = 8
+HAND_ON = 1e-9
+
+cpdef enum Status:
+    OK = 0             # solved (the caller measures the residual)
+    NOT_CONVERGED = 1  # the stiffness updates ran out
+    NO_MEMORY = 2      # the work space of a case could not be allocated
+
+
+# ------------------------------------------------------------------ double-double pieces
+
+cdef inline void two_sum(double a, double b, double *s, double *e) noexcept nogil:
+    """a + b = s + e exactly (Knuth)."""
+    cdef double bb
+    s[0] = a + b
+    bb = s[0] - a
+    e[0] = (a - (s[0] - bb)) + (b - bb)
+
+
+cdef inline void quick(double s, double e, double *hi, double *lo) noexcept nogil:
+    """Renormalise s + e (|s| >= |e|)."""
+    hi[0] = s + e
+    lo[0] = e - (hi[0] - s)
+
+
+cdef inline void two_prod(double a, double b, double *p, double *e) noexcept nogil:
+    """a b = p + e exactly."""
+    p[0] = a * b
+    e[0] = fma(a, b, -p[0])
+
+
+cdef inline void dd_mul(double ah, double al, double bh, double bl,
+                        double *hi, double *lo) noexcept nogil:
+    cdef double p, e
+    two_prod(ah, bh, &p, &e)
+    quick(p, e + (ah * bl + al * bh), hi, lo)
+
+
+# ------------------------------------------------------------------------- the balls
+
+cdef inline double norm(double a, double b) noexcept nogil:
+    """|(a, b)|: the scaled lengths stay far inside the range where the squares neither overflow
+    nor underflow (the solver refuses loads beyond a ratio of 2e7 to the groove geometry)."""
+    return sqrt(a * a + b * b)
+
+
+cdef inline double curve_kappa(const Case *cs, double ca, double cam1) noexcept nogil:
+    """K(alpha)/K_0 - 1 = (c - 1) D(c), D the barycentric Chebyshev interpolant of the divided
+    difference at the nodes (bearingload.models.combined._StiffnessCurve); 0 at a constant K.
+    (Its 24 quotients are independent: faster than Clenshaw's serial recurrence.)"""
+    cdef double t, term, num = 0.0, den = 0.0
+    cdef int k
+    if cs.curve == NULL:
+        return 0.0
+    t = 2.0 * min(max(ca, 0.0), 1.0) - 1.0
+    for k in range(NODES):
+        term = cs.node_w[k] / (t - cs.node_x[k])
+        num += term * cs.curve[k]
+        den += term
+    return cam1 * num / den
+
+
+cdef inline double curve_slope(const Case *cs, double ca, double cam1) noexcept nogil:
+    """d(kappa)/d(cos alpha) of the interpolant: D + (c - 1) dD/dc, the barycentric quotient
+    differentiated term by term (bearingload.models.combined._StiffnessCurve.slope)."""
+    cdef double t, inv, term, num = 0.0, den = 0.0, d_num = 0.0, d_den = 0.0
+    cdef int k
+    t = 2.0 * min(max(ca, 0.0), 1.0) - 1.0
+    for k in range(NODES):
+        inv = 1.0 / (t - cs.node_x[k])
+        term = cs.node_w[k] * inv
+        num += term * cs.curve[k]
+        den += term
+        d_num -= term * inv * cs.curve[k]
+        d_den -= term * inv
+    return num / den + cam1 * 2.0 * (d_num * den - num * d_den) / (den * den)
+
+
+cdef void reference(const Case *cs, const double *vh, const double *vl, Balls b) noexcept nogil:
+    """Every ball at the position vh + vl in double-double arithmetic (_combined_ring.reference:
+    d^2 - B^2 = m (m + 2B) + u^2, m = rho - B)."""
+    cdef int j
+    cdef double c, s, p1, e1, p2, e2, r, e, m, e3, m_hi, m_lo, n_hi, n_lo
+    cdef double t_hi, t_lo, u1, f1, u2, f2, u, e4, u_hi, u_lo, ud
+    cdef double mn_hi, mn_lo, uu_hi, uu_lo, d2, rho, up, d, sign, edge
+    two_sum(vh[3], cs.t_imp, &t_hi, &t_lo)
+    for j in range(cs.z):
+        c = cs.c[j]
+        s = cs.s[j]
+        two_prod(vh[0], c, &p1, &e1)
+        two_prod(vh[1], s, &p2, &e2)
+        two_sum(p1, p2, &r, &e)
+        two_sum(r, -cs.gap, &m, &e3)
+        quick(m, e3 + e + e1 + e2 + vl[0] * c + vl[1] * s, &m_hi, &m_lo)
+        two_sum(m_hi, 2.0 * cs.b_hi, &n_hi, &e)
+        quick(n_hi, e + m_lo + 2.0 * cs.b_lo, &n_hi, &n_lo)
+        two_prod(t_hi, c, &u1, &f1)
+        two_prod(vh[4], s, &u2, &f2)
+        two_sum(vh[2], u1, &u, &e)
+        two_sum(u, u2, &u, &e4)
+        quick(u, e + e4 + f1 + f2 + vl[2] + (t_lo + vl[3]) * c + vl[4] * s, &u_hi, &u_lo)
+        ud = u_hi + u_lo
+        if cs.one_sided and u_hi < 0:
+            u_hi = 0.0
+            u_lo = 0.0
+        dd_mul(m_hi, m_lo, n_hi, n_lo, &mn_hi, &mn_lo)
+        dd_mul(u_hi, u_lo, u_hi, u_lo, &uu_hi, &uu_lo)
+        two_sum(mn_hi, uu_hi, &d2, &e)
+        d2 = d2 + (e + mn_lo + uu_lo)
+        two_sum(cs.b_hi, m_hi, &rho, &e)
+        rho = rho + (e + cs.b_lo + m_lo)
+        up = u_hi + u_lo
+        d = norm(max(rho, 0.0), up)
+        sign = -1.0 if u_hi < 0 else 1.0
+        two_sum(sign * u_hi, -cs.b_hi, &edge, &e)
+        edge = edge + (e + sign * u_lo - cs.b_lo)
+        b.rho[j] = rho
+        b.u[j] = ud
+        b.d[j] = d
+        b.eps[j] = d2 / (d + cs.b_hi) if rho > 0 else edge
+        b.up[j] = up
+
+
+cdef void offset(const Case *cs, Balls ref, const double *w, Balls b,
+                 double *dd, double *ddr) noexcept nogil:
+    """The balls after a small move w from ref, with d - d_ref and (d - d_ref) - (rho - rho_ref)
+    from the move itself (_combined_ring.offset)."""
+    cdef int j
+    cdef double dr, du, rho, u, rp, rp_ref, up, uu, d, den, w_new, w_ref, change
+    cdef bint both
+    for j in range(cs.z):
+        dr = w[0] * cs.c[j] + w[1] * cs.s[j]
+        du = w[2] + w[3] * cs.c[j] + w[4] * cs.s[j]
+        rho = ref.rho[j] + dr
+        u = ref.u[j] + du
+        rp = max(rho, 0.0)
+        rp_ref = max(ref.rho[j], 0.0)
+        up = u
+        uu = du * (ref.u[j] + u)
+        if cs.one_sided:
+            up = max(u, 0.0)
+            if not (u > 0 and ref.u[j] > 0):
+                uu = up * up - ref.up[j] * ref.up[j]
+        d = norm(rp, up)
+        both = rho > 0 and ref.rho[j] > 0
+        den = d + ref.d[j]
+        if not den > 0:
+            den = 1.0
+        change = ((dr * (ref.rho[j] + rho) if both else rp * rp - rp_ref * rp_ref) + uu) / den
+        if both:
+            w_new = up * up / (d + rho)
+            w_ref = ref.up[j] * ref.up[j] / (ref.d[j] + ref.rho[j])
+            ddr[j] = (uu - dr * (w_ref + w_new)) / den
+        else:
+            ddr[j] = change - dr
+        dd[j] = change
+        b.rho[j] = rho
+        b.u[j] = u
+        b.d[j] = d
+        b.eps[j] = ref.eps[j] + change
+        b.up[j] = up
+
+
+cdef void loads(const Case *cs, Balls b, const double *kappa, Loads lo) noexcept nogil:
+    """Ball loads (scaled, stiffness 1 + kappa) and directions (_combined_ring.loads)."""
+    cdef int j
+    cdef double rp, ca, sa, delta, pos, root, k, tau, sig
+    for j in range(cs.z):
+        rp = max(b.rho[j], 0.0)
+        if b.d[j] > 0:
+            ca = rp / b.d[j]
+            sa = b.up[j] / b.d[j]
+        else:
+            ca = 1.0
+            sa = 0.0
+        lo.ca[j] = ca
+        lo.sa[j] = sa
+        lo.cam1[j] = -sa * sa / (1.0 + ca) if b.rho[j] > 0 else ca - 1.0
+        delta = cs.pre + b.eps[j]
+        pos = delta if delta > 0 else 0.0
+        root = sqrt(pos)
+        k = 1.0 + kappa[j]
+        lo.root[j] = root
+        lo.q[j] = k * pos * root
+        if cs.deviation:
+            tau = b.eps[j] / cs.pre
+            sig = tau / (1.0 + sqrt(max(1.0 + tau, 0.0)))
+            lo.tau[j] = tau
+            lo.sig[j] = sig
+            lo.dq[j] = cs.q0 * ((k * (tau + sig + tau * sig) + kappa[j]) if delta > 0 else -1.0)
+        else:
+            lo.tau[j] = 0.0
+            lo.sig[j] = 0.0
+            lo.dq[j] = lo.q[j]
+
+
+cdef inline void add(double *sum, double *err, double x) noexcept nogil:
+    """A compensated running sum (Neumaier): sum + err."""
+    cdef double s, e
+    two_sum(sum[0], x, &s, &e)
+    sum[0] = s
+    err[0] += e
+
+
+cdef void forces(const Case *cs, Loads lo, double *gen, double *size) noexcept nogil:
+    """The generalised ball forces sum_j (q_j - q_0) g_j + q_0 sum_j g'_j, compensated, and the
+    sums of the magnitudes of their terms (_combined_ring.forces)."""
+    cdef int j, i
+    cdef double radial, axial, w_r, w_a, c, s
+    cdef double err[5]
+    for i in range(5):
+        gen[i] = 0.0
+        err[i] = 0.0
+        size[i] = 0.0
+    for j in range(cs.z):
+        c = cs.c[j]
+        s = cs.s[j]
+        radial = lo.dq[j] * lo.ca[j] + cs.q0 * lo.cam1[j]
+        axial = (lo.dq[j] + cs.q0) * lo.sa[j]
+        add(&gen[0], &err[0], radial * c)
+        add(&gen[1], &err[1], radial * s)
+        add(&gen[2], &err[2], axial)
+        add(&gen[3], &err[3], axial * c)
+        add(&gen[4], &err[4], axial * s)
+        w_r = fabs(lo.dq[j] * lo.ca[j]) + cs.q0 * fabs(lo.cam1[j])
+        w_a = (fabs(lo.dq[j]) + cs.q0) * fabs(lo.sa[j])
+        size[0] += w_r * fabs(c)
+        size[1] += w_r * fabs(s)
+        size[2] += w_a
+        size[3] += w_a * fabs(c)
+        size[4] += w_a * fabs(s)
+    for i in range(5):
+        gen[i] += err[i]
+
+
+cdef double residual(const Case *cs, const double *gen, const double *size) noexcept nogil:
+    """The largest residual of a free component over its applied load or, where larger, the
+    rounding level of its terms over TOLERANCE (a component without a load: at least FLOOR);
+    NaN if any is (_combined_ring.residual_of)."""
+    cdef int i
+    cdef double grad, ref, r, worst = 0.0
+    for i in range(5):
+        grad = 0.0 if cs.locked[i] else gen[i] - cs.f[i]
+        ref = max(fabs(cs.f[i]), (cs.lim.rounding / cs.lim.tolerance) * size[i])
+        if cs.f[i] == 0:
+            ref = max(ref, cs.lim.floor)
+        r = fabs(grad) / ref
+        if r != r:
+            return r
+        worst = max(worst, r)
+    return worst
+
+
+cdef void evaluate(const Case *cs, const double *kappa, Point *pt) noexcept nogil:
+    """Loads, forces and residual of the point's balls."""
+    loads(cs, pt.b, kappa, pt.lo)
+    forces(cs, pt.lo, pt.gen, pt.size)
+    pt.res = residual(cs, pt.gen, pt.size)
+
+
+cdef void fresh(const Case *cs, const double *vh, const double *vl, const double *kappa,
+                Point *pt) noexcept nogil:
+    """The point at vh + vl computed afresh in double-double."""
+    reference(cs, vh, vl, pt.b)
+    evaluate(cs, kappa, pt)
+    pt.age = 0
+
+
+# ----------------------------------------------------------------------- linear algebra
+
+cdef inline bint turns(const Case *cs, double rho, double u) noexcept nogil:
+    """Whether a ball's contact normal turns with the ring: groove centres not crossed and,
+    one-sided, u > 0."""
+    return rho > 0 and (not cs.one_sided or u > 0)
+
+
+cdef void tangent(const Case *cs, const double *ca, const double *sa, const double *w1,
+                  const double *w2, const double *w3, bint hold, double *hess) noexcept nogil:
+    """sum_j w1 g g^T + w2 h h^T (+ w3 g h^T where w3 is given), g = (ca c, ca s, sa, sa c,
+    sa s) the generalised direction of ball j's contact normal, h = that of the direction in
+    which it turns ((ca, sa) turned to (-sa, ca)): with w1 = dQ/d(delta), w2 = Q/d and w3 =
+    dQ/d(alpha)/d the tangent of the ring forces (_combined_ring.ball_tangent). ``hold``: the
+    locked components decoupled (unit rows and columns), as the Newton matrix has them."""
+    cdef int i, k, j
+    cdef double g[5]
+    cdef double h[5]
+    cdef double turn[25]
+    for i in range(25):
+        hess[i] = 0.0
+        turn[i] = 0.0
+    for j in range(cs.z):
+        g[0] = ca[j] * cs.c[j]
+        g[1] = ca[j] * cs.s[j]
+        g[2] = sa[j]
+        g[3] = sa[j] * cs.c[j]
+        g[4] = sa[j] * cs.s[j]
+        h[0] = -sa[j] * cs.c[j]
+        h[1] = -sa[j] * cs.s[j]
+        h[2] = ca[j]
+        h[3] = ca[j] * cs.c[j]
+        h[4] = ca[j] * cs.s[j]
+        for i in range(5):  # the symmetric part, its upper triangle
+            for k in range(i, 5):
+                hess[5 * i + k] += w1[j] * g[i] * g[k] + w2[j] * h[i] * h[k]
+        if w3 != NULL:
+            for i in range(5):
+                for k in range(5):
+                    turn[5 * i + k] += w3[j] * g[i] * h[k]
+    for i in range(5):
+        for k in range(i):
+            hess[5 * i + k] = hess[5 * k + i]
+    for i in range(25):
+        hess[i] += turn[i]
+    if hold:
+        for i in range(5):
+            if cs.locked[i]:
+                for k in range(5):
+                    hess[5 * i + k] = 0.0
+                    hess[5 * k + i] = 0.0
+                hess[6 * i] = 1.0
+
+
+cdef void solve5(const double *a, const double *b, double *x) noexcept nogil:
+    """x = a^-1 b for a 5x5 a (row-major), Gaussian elimination with partial pivoting; a
+    singular a gives non-finite x (the caller's residual then stops the case)."""
+    cdef double m[25]
+    cdef double r[5]
+    cdef int i, k, col, piv
+    cdef double t
+    for i in range(25):
+        m[i] = a[i]
+    for i in range(5):
+        r[i] = b[i]
+    for col in range(5):
+        piv = col
+        for i in range(col + 1, 5):
+            if fabs(m[5 * i + col]) > fabs(m[5 * piv + col]):
+                piv = i
+        if piv != col:
+            for k in range(5):
+                t = m[5 * col + k]
+                m[5 * col + k] = m[5 * piv + k]
+                m[5 * piv + k] = t
+            t = r[col]
+            r[col] = r[piv]
+            r[piv] = t
+        for i in range(col + 1, 5):
+            t = m[5 * i + col] / m[5 * col + col]
+            for k in range(col, 5):
+                m[5 * i + k] -= t * m[5 * col + k]
+            r[i] -= t * r[col]
+    for i in range(4, -1, -1):
+        t = r[i]
+        for k in range(i + 1, 5):
+            t -= m[5 * i + k] * x[k]
+        x[i] = t / m[6 * i]
+
+
+cdef void cap_step(const Case *cs, double *step) noexcept nogil:
+    """One-sided cases: the step shortened so that no axial part (a, t, t_c) exceeds A (a ball
+    at u < 0 has no stiffness along its groove; _combined_ring.cap_step)."""
+    cdef double longest = 0.0, shrink
+    cdef int i
+    if not cs.one_sided:
+        return
+    for i in range(2, 5):
+        longest = max(longest, fabs(step[i]))
+    if longest > cs.a_hat:
+        shrink = cs.a_hat / longest
+        for i in range(5):
+            step[i] *= shrink
+
+
+# ------------------------------------------------------------------- work space of a case
+
+cdef enum:
+    BALL_ARRAYS = 13  # the arrays of one Point: 5 of Balls, 8 of Loads
+
+cdef void point_on(double *block, int z, Point *pt) noexcept nogil:
+    """A Point whose ball arrays are the 13 z-blocks from block."""
+    pt.b.rho = block
+    pt.b.u = block + z
+    pt.b.d = block + 2 * z
+    pt.b.eps = block + 3 * z
+    pt.b.up = block + 4 * z
+    pt.lo.ca = block + 5 * z
+    pt.lo.sa = block + 6 * z
+    pt.lo.cam1 = block + 7 * z
+    pt.lo.q = block + 8 * z
+    pt.lo.dq = block + 9 * z
+    pt.lo.root = block + 10 * z
+    pt.lo.tau = block + 11 * z
+    pt.lo.sig = block + 12 * z
+
+
+cdef void copy_point(int z, const Point *src, Point *dst) noexcept nogil:
+    cdef int i
+    cdef double *a = src.b.rho
+    cdef double *b = dst.b.rho
+    for i in range(BALL_ARRAYS * z):
+        b[i] = a[i]
+    for i in range(5):
+        dst.gen[i] = src.gen[i]
+        dst.size[i] = src.size[i]
+    dst.res = src.res
+    dst.age = src.age
+    dst.drop = src.drop
+
+
+ctypedef struct Work:
+    Point pt       # the current point
+    Point trial    # a line-search trial
+    Point trial2   # its second-order correction
+    double *dd     # d - d_ref of a move, (z)
+    double *ddr    # (d - d_ref) - (rho - rho_ref)
+    double *dd2
+    double *ddr2
+    double *kappa  # the frozen stiffness deviations K_j/K_0 - 1
+    double *w1     # tangent weights
+    double *w2
+    double *block  # the memory of all of these
+
+
+cdef int work_open(int z, Work *wk) noexcept nogil:
+    cdef double *m = <double *> malloc((3 * BALL_ARRAYS + 9) * z * sizeof(double))
+    if m == NULL:
+        return 0
+    wk.block = m
+    point_on(m, z, &wk.pt)
+    point_on(m + BALL_ARRAYS * z, z, &wk.trial)
+    point_on(m + 2 * BALL_ARRAYS * z, z, &wk.trial2)
+    m += 3 * BALL_ARRAYS * z
+    wk.dd = m
+    wk.ddr = m + z
+    wk.dd2 = m + 2 * z
+    wk.ddr2 = m + 3 * z
+    wk.kappa = m + 4 * z
+    wk.w1 = m + 5 * z
+    wk.w2 = m + 6 * z
+    return 1
+
+
+# ---------------------------------------------------------------- the double-double Newton
+
+cdef inline double excess(double tau, double sig) noexcept nogil:
+    """(1 + tau)_+^2.5 - 1 - 2.5 tau without cancellation (sig = sqrt(1 + tau) - 1)."""
+    if tau > -1.0:
+        return -0.5 * sig * sig + 2.0 * tau * sig + tau * tau * (1.0 + sig)
+    return -1.0 - 2.5 * tau
+
+
+cdef double energy_change(const Case *cs, const double *kappa, const Point *ref,
+                          const Point *at, const double *w, const double *dd,
+                          const double *ddr) noexcept nogil:
+    """The potential at ``at`` less that at ``ref`` (_combined_ring.energy_change)."""
+    cdef int j, i
+    cdef double work = 0.0, linear = 0.0, bend = 0.0, total = 0.0, pre
+    cdef double pos_ref, r, sig, kd
+    for i in range(5):
+        work += cs.f[i] * w[i]
+    if cs.deviation:
+        pre = cs.pre
+        for j in range(cs.z):
+            linear += ddr[j] + kappa[j] * dd[j]
+            bend += (1.0 + kappa[j]) * (excess(at.lo.tau[j], at.lo.sig[j])
+                                        - excess(ref.lo.tau[j], ref.lo.sig[j]))
+        return cs.q0 * linear + pre * pre * sqrt(pre) / 2.5 * bend - work
+    for j in range(cs.z):
+        pos_ref = ref.lo.root[j] * ref.lo.root[j]
+        kd = ref.lo.q[j] * pos_ref
+        if ref.lo.root[j] > 0 and at.lo.root[j] > 0:
+            r = dd[j] / pos_ref
+            sig = r / (1.0 + sqrt(max(1.0 + r, 0.0)))
+            total += kd * (r + excess(r, sig) / 2.5)
+        else:
+            total += (at.lo.q[j] * at.lo.root[j] * at.lo.root[j] - kd) / 2.5
+    return total - work
+
+
+cdef double first_contact(const Case *cs, const Point *pt, const double *step) noexcept nogil:
+    """The step fraction (1.001 times, to first order) at which the first ball not in contact
+    would touch moving along step; 1 where none would before the full step."""
+    cdef int j
+    cdef double delta, dr, du, rate, reach = INFINITY
+    for j in range(cs.z):
+        delta = cs.pre + pt.b.eps[j]
+        dr = step[0] * cs.c[j] + step[1] * cs.s[j]
+        du = step[2] + step[3] * cs.c[j] + step[4] * cs.s[j]
+        rate = pt.lo.ca[j] * dr + pt.lo.sa[j] * du
+        if rate > 0 and delta < 0:
+            reach = min(reach, -delta / rate)
+    return min(1.001 * reach, 1.0)
+
+
+cdef void to_contact(const Case *cs, const Point *pt, double *step) noexcept nogil:
+    """For a ring that touches no ball: the step along the generalised load that brings the
+    nearest ball (to first order) a little into contact; 0 where none comes nearer."""
+    cdef int i, j
+    cdef double norm = 0.0, rate, delta, reach = INFINITY, t
+    cdef double direction[5]
+    for i in range(5):
+        direction[i] = 0.0 if cs.locked[i] else cs.f[i]
+        norm += direction[i] * direction[i]
+    norm = max(sqrt(norm), 1e-300)
+    for i in range(5):
+        direction[i] /= norm
+    for j in range(cs.z):
+        delta = cs.pre + pt.b.eps[j]
+        rate = (pt.lo.ca[j] * cs.c[j] * direction[0] + pt.lo.ca[j] * cs.s[j] * direction[1]
+                + pt.lo.sa[j] * direction[2] + pt.lo.sa[j] * cs.c[j] * direction[3]
+                + pt.lo.sa[j] * cs.s[j] * direction[4])
+        if rate > 0:
+            reach = min(reach, -delta / rate)
+    t = 1.001 * reach + 1e-9 if isfinite(reach) else 0.0
+    for i in range(5):
+        step[i] = direction[i] * t
+
+
+cdef void newton_step(const Case *cs, Work *wk, const double *grad, double *step,
+                      double *hess) noexcept nogil:
+    """The regularised Newton step and its matrix; for a ring touching no ball, the step to the
+    first contact."""
+    cdef int j, i, held = 0
+    cdef double trace = 0.0, reg
+    cdef double minus[5]
+    cdef Point *pt = &wk.pt
+    for j in range(cs.z):
+        wk.w1[j] = 1.5 * (1.0 + wk.kappa[j]) * pt.lo.root[j]
+        wk.w2[j] = 0.0
+        if turns(cs, pt.b.rho[j], pt.b.u[j]):
+            wk.w2[j] = pt.lo.q[j] / (pt.b.d[j] if pt.b.d[j] > 0 else 1.0)
+    tangent(cs, pt.lo.ca, pt.lo.sa, wk.w1, wk.w2, NULL, True, hess)
+    for i in range(5):
+        trace += hess[6 * i]
+        held += cs.locked[i]
+        minus[i] = -grad[i]
+    reg = 1e-13 * trace + 1e-300
+    for i in range(5):
+        hess[6 * i] += reg
+    solve5(hess, minus, step)
+    cap_step(cs, step)
+    if not trace > held:  # no ball in contact: move along the load to the first contact
+        to_contact(cs, pt, step)
+        cap_step(cs, step)
+
+
+cdef bint accept(const Case *cs, Work *wk, const double *w, double drop_min, double res,
+                 bint need_drop, Point *trial, double *dd, double *ddr) noexcept nogil:
+    """Whether the move w from the current point is taken (the residual halves, or the potential
+    falls by 1e-4 of drop_min); ``trial`` gets the point there."""
+    cdef bint ok, moves = False
+    cdef int i
+    offset(cs, wk.pt.b, w, trial.b, dd, ddr)
+    evaluate(cs, wk.kappa, trial)
+    trial.age = wk.pt.age + 1
+    trial.drop = 0.0
+    ok = trial.res < 0.5 * res
+    if need_drop or not ok:
+        trial.drop = energy_change(cs, wk.kappa, &wk.pt, trial, w, dd, ddr)
+        if not isfinite(trial.drop):
+            trial.drop = INFINITY
+        ok = ok or trial.drop <= 1e-4 * drop_min
+    for i in range(5):
+        moves = moves or w[i] != 0.0
+    return ok and moves
+
+
+cdef void swap(Point *a, Point *b) noexcept nogil:
+    cdef Point t = a[0]
+    a[0] = b[0]
+    b[0] = t
+
+
+cdef void line_search(const Case *cs, Work *wk, const double *step, const double *hess,
+                      const double *grad, bint slow, double *moved) noexcept nogil:
+    """The move along step that the Armijo search takes (t = 1; then just past the first
+    contact along the step, or half; then halved), tried once more with a second-order
+    correction where the case is slow (_combined_ring._line_search); 0 where none is
+    taken. The current point becomes the point reached."""
+    cdef double slope = 0.0, t = 1.0, res = wk.pt.res, drop_min
+    cdef double w[5]
+    cdef double w2[5]
+    cdef double left[5]
+    cdef double fix[5]
+    cdef bint ok, ok2, any_step = False
+    cdef int i, k
+    for i in range(5):
+        slope += grad[i] * step[i]
+        moved[i] = 0.0
+        any_step = any_step or step[i] != 0.0
+    if not any_step:
+        return
+    for k in range(60):
+        for i in range(5):
+            w[i] = t * step[i]
+        drop_min = t * slope
+        ok = accept(cs, wk, w, drop_min, res, False, &wk.trial, wk.dd, wk.ddr)
+        if slow and (not ok or wk.trial.res > 0.9 * res):
+            for i in range(5):
+                left[i] = 0.0 if cs.locked[i] else cs.f[i] - wk.trial.gen[i]
+            solve5(hess, left, fix)
+            cap_step(cs, fix)
+            for i in range(5):
+                w2[i] = w[i] + fix[i]
+            ok2 = accept(cs, wk, w2, drop_min, res, True, &wk.trial2, wk.dd2, wk.ddr2)
+            if ok2 and (not ok or wk.trial2.drop < wk.trial.drop):
+                for i in range(5):
+                    w[i] = w2[i]
+                ok = True
+                swap(&wk.trial, &wk.trial2)
+        if ok:
+            for i in range(5):
+                moved[i] = w[i]
+            swap(&wk.pt, &wk.trial)
+            return
+        if k == 0:
+            t = min(0.5, first_contact(cs, &wk.pt, step))
+        else:
+            t *= 0.5
+
+
+cdef int minimise(const Case *cs, Work *wk, double *vh, double *vl, bint have_start,
+                  bint polish) noexcept nogil:
+    """Damped Newton on the convex potential, the stiffness wk.kappa frozen, until every free
+    component is within TOLERANCE or the residual stops falling (rounding); the point is
+    recomputed afresh every REFRESH steps and at the end (_combined_ring.minimise). Returns
+    the steps taken; wk.pt is the point at the final position, fresh."""
+    cdef double best = INFINITY, before, hi, lo
+    cdef double grad[5]
+    cdef double step[5]
+    cdef double hess[25]
+    cdef double moved[5]
+    cdef int k, i, stall = 0, its = 0
+    cdef bint slow = False, still
+    cdef Point *pt = &wk.pt
+    if not have_start:
+        fresh(cs, vh, vl, wk.kappa, pt)
+    for k in range(cs.lim.max_iterations):
+        if (pt.res <= cs.lim.tolerance and pt.age > 0) or pt.age >= cs.lim.refresh:
+            fresh(cs, vh, vl, wk.kappa, pt)
+        if pt.res < 0.5 * best or pt.res > cs.lim.stall_below:
+            best = pt.res
+            stall = 0
+        else:
+            stall += 1
+        if ((pt.res <= cs.lim.tolerance and (k > 0 or not polish)) or stall >= cs.lim.stall
+                or not isfinite(pt.res)):
+            break
+        for i in range(5):
+            grad[i] = 0.0 if cs.locked[i] else pt.gen[i] - cs.f[i]
+        newton_step(cs, wk, grad, step, hess)
+        before = pt.res
+        line_search(cs, wk, step, hess, grad, slow, moved)
+        slow = pt.res > 0.9 * before
+        still = True
+        for i in range(5):
+            still = still and moved[i] == 0.0
+        if still and pt.age == 0:
+            break
+        if still:
+            pt.age = cs.lim.refresh
+        for i in range(5):
+            two_sum(vh[i], moved[i], &hi, &lo)
+            quick(hi, lo + vl[i], &vh[i], &vl[i])
+        its += 1
+    if pt.age != 0:
+        fresh(cs, vh, vl, wk.kappa, pt)
+    return its
+
+
+# ------------------------------------------------------------- the plain-double first stage
+
+ctypedef struct Fast:
+    # the balls at one position of the first stage (arrays of z) and what follows from them
+    double *ca
+    double *sa
+    double *rho
+    double *d
+    double *q
+    double *root
+    double *kappa
+    double grad[5]
+    double res
+    double energy
+
+
+cdef void fast_on(double *block, int z, Fast *st) noexcept nogil:
+    st.ca = block
+    st.sa = block + z
+    st.rho = block + 2 * z
+    st.d = block + 3 * z
+    st.q = block + 4 * z
+    st.root = block + 5 * z
+    st.kappa = block + 6 * z
+
+
+cdef void fast_state(const Case *cs, const double *v, Fast *st) noexcept nogil:
+    """The balls, forces, residual and potential at v in plain double precision, the stiffness
+    following the contact angles."""
+    cdef int j, i
+    cdef double rho, u, rp, d, safe, delta, gen[5], size[5], err[5], work = 0.0, energy = 0.0
+    cdef double qc, qs
+    for i in range(5):
+        gen[i] = 0.0
+        size[i] = 0.0
+        err[i] = 0.0
+    for j in range(cs.z):
+        rho = (cs.a_hat + cs.pre - cs.gap) + v[0] * cs.c[j]
+        rho += v[1] * cs.s[j]
+        u = (v[2] + (v[3] + cs.t_imp) * cs.c[j]) + v[4] * cs.s[j]
+        rp = max(rho, 0.0)
+        if cs.one_sided:
+            u = max(u, 0.0)
+        d = norm(rp, u)
+        safe = d if d > 0 else 1.0
+        st.ca[j] = rp / safe
+        st.sa[j] = u / safe
+        st.rho[j] = rho
+        st.d[j] = d
+        delta = max(d - cs.a_hat, 0.0)
+        st.root[j] = sqrt(delta)
+        st.kappa[j] = 0.0
+        if delta > 0:
+            st.kappa[j] = curve_kappa(cs, st.ca[j], -st.sa[j] * st.sa[j] / (1.0 + st.ca[j]))
+        st.q[j] = (1.0 + st.kappa[j]) * delta * st.root[j]
+        energy += st.q[j] * delta
+        qc = st.q[j] * st.ca[j]
+        qs = st.q[j] * st.sa[j]
+        add(&gen[0], &err[0], qc * cs.c[j])
+        add(&gen[1], &err[1], qc * cs.s[j])
+        add(&gen[2], &err[2], qs)
+        add(&gen[3], &err[3], qs * cs.c[j])
+        add(&gen[4], &err[4], qs * cs.s[j])
+        size[0] += fabs(qc * cs.c[j])
+        size[1] += fabs(qc * cs.s[j])
+        size[2] += fabs(qs)
+        size[3] += fabs(qs * cs.c[j])
+        size[4] += fabs(qs * cs.s[j])
+    for i in range(5):
+        gen[i] += err[i]
+        st.grad[i] = 0.0 if cs.locked[i] else gen[i] - cs.f[i]
+        if not cs.locked[i]:
+            work += cs.f[i] * v[i]
+    st.res = residual(cs, gen, size)
+    st.energy = energy / 2.5 - work
+
+
+cdef int fast_newton(const Case *cs, Work *wk, Fast *cur, Fast *trial, double *v) noexcept nogil:
+    """From the start v: Newton steps (the stiffness frozen in the matrix), halved until the
+    residual or the potential falls, until the residual is below HAND_ON or stops falling; v
+    and wk.kappa become the last position's. Returns the steps taken."""
+    cdef int steps = 0, n, h, i, j
+    cdef double slope, t, hess[25], step[5], minus[5], tv[5], trace
+    cdef bint loaded, took
+    cdef Fast swap_st
+    fast_state(cs, v, cur)
+    for n in range(cs.lim.fast_steps):
+        loaded = False
+        for j in range(cs.z):
+            loaded = loaded or cur.root[j] > 0
+        if not (cur.res > cs.lim.hand_on and isfinite(cur.res) and loaded):
+            break
+        for j in range(cs.z):
+            wk.w1[j] = 1.5 * (1.0 + cur.kappa[j]) * cur.root[j]
+            wk.w2[j] = cur.q[j] / (cur.d[j] if cur.d[j] > 0 else 1.0) if turns(
+                cs, cur.rho[j], cur.sa[j]) else 0.0
+        tangent(cs, cur.ca, cur.sa, wk.w1, wk.w2, NULL, True, hess)
+        trace = 0.0
+        for i in range(5):
+            trace += hess[6 * i]
+            minus[i] = -cur.grad[i]
+        for i in range(5):
+            hess[6 * i] += 1e-13 * trace
+        solve5(hess, minus, step)
+        cap_step(cs, step)
+        slope = 0.0
+        for i in range(5):
+            slope += cur.grad[i] * step[i]
+        t = 1.0
+        took = False
+        for h in range(cs.lim.fast_halvings):
+            for i in range(5):
+                tv[i] = v[i] + t * step[i]
+            fast_state(cs, tv, trial)
+            if trial.res < cur.res or trial.energy <= cur.energy + 1e-4 * t * slope:
+                took = True
+                break
+            t *= 0.5
+        if not took:
+            break
+        for i in range(5):
+            v[i] = tv[i]
+        steps += 1
+        swap_st = cur[0]
+        cur[0] = trial[0]
+        trial[0] = swap_st
+    for j in range(cs.z):
+        wk.kappa[j] = cur.kappa[j]
+    return steps
+
+
+cdef void stiffness(const Case *cs, Work *wk, double *out) noexcept nogil:
+    """The tangent of the ring forces at the current point (scaled, every component free):
+    d(generalised force)/d(displacement), with the stiffness's change with the contact angle
+    (w3) where K follows it (combined._tangent takes the symmetric part)."""
+    cdef int j
+    cdef Point *pt = &wk.pt
+    cdef double d
+    cdef double *w3 = wk.dd  # (free at the answer)
+    for j in range(cs.z):
+        d = pt.b.d[j] if pt.b.d[j] > 0 else 1.0
+        wk.w1[j] = 1.5 * (1.0 + wk.kappa[j]) * pt.lo.root[j]
+        wk.w2[j] = 0.0
+        w3[j] = 0.0
+        if turns(cs, pt.b.rho[j], pt.b.u[j]):
+            wk.w2[j] = pt.lo.q[j] / d
+            if cs.curve != NULL and pt.lo.root[j] > 0:
+                w3[j] = (curve_slope(cs, pt.lo.ca[j], pt.lo.cam1[j]) * -pt.lo.sa[j]
+                         * pt.lo.root[j] ** 3 / d)
+    tangent(cs, pt.lo.ca, pt.lo.sa, wk.w1, wk.w2, w3 if cs.curve != NULL else NULL, False, out)
+
+
+# ------------------------------------------------------------------------------ the start
+
+cdef void radial_gradient(const Case *cs, double x, double y, double g, double f0,
+                          double *out) noexcept nogil:
+    """The ring of constant stiffness under F_r alone (the radial model, contact angle 0):
+    out = (potential, dPhi/dx, dPhi/dy, d2/dx2, d2/dxdy, d2/dy2, balls loaded)."""
+    cdef int j
+    cdef double delta, root, q, h
+    for j in range(7):
+        out[j] = 0.0
+    for j in range(cs.z):
+        delta = x * cs.c[j] + y * cs.s[j] - g
+        if delta <= 0:
+            continue
+        root = sqrt(delta)
+        q = delta * root
+        h = 1.5 * root
+        out[0] += q * delta / 2.5
+        out[1] += q * cs.c[j]
+        out[2] += q * cs.s[j]
+        out[3] += h * cs.c[j] * cs.c[j]
+        out[4] += h * cs.c[j] * cs.s[j]
+        out[5] += h * cs.s[j] * cs.s[j]
+        out[6] += 1.0
+    out[0] -= f0 * x
+    out[1] -= f0
+
+
+cdef void radial_start(const Case *cs, double f0, double *v) noexcept nogil:
+    """(x, y) of the ring under the radial load f0 alone with the stiffness K_0 (scaled: K = 1)
+    and the gap per side g = gap - pre: damped Newton on the convex potential from where the
+    ball nearest the load line alone carries f0; y held where the case holds it."""
+    cdef double g = cs.gap - cs.pre, cmax = -1.0, x, y = 0.0, dx, dy, det, t, slope
+    cdef double now[7]
+    cdef double trial[7]
+    cdef int j, k, h
+    for j in range(cs.z):
+        cmax = max(cmax, cs.c[j])
+    x = (g + f0 ** (2.0 / 3.0)) / cmax
+    radial_gradient(cs, x, y, g, f0, now)
+    for k in range(100):
+        if now[6] == 0:  # (no ball loaded: back to the first contact plus one approach)
+            x = (g + f0 ** (2.0 / 3.0)) / cmax
+            radial_gradient(cs, x, y, g, f0, now)
+        det = now[3] * now[5] - now[4] * now[4]
+        if cs.locked[1] or not det > 1e-14 * now[3] * now[5]:
+            dx = -now[1] / now[3]
+            dy = 0.0
+        else:
+            dx = (-now[1] * now[5] + now[2] * now[4]) / det
+            dy = (-now[2] * now[3] + now[1] * now[4]) / det
+        if not (fabs(dx) > 1e-15 * fabs(x) or fabs(dy) > 1e-15 * fabs(x)):
+            break
+        slope = now[1] * dx + now[2] * dy
+        t = 1.0
+        for h in range(60):
+            radial_gradient(cs, x + t * dx, y + t * dy, g, f0, trial)
+            if trial[0] <= now[0] + 1e-4 * t * slope:
+                break
+            t *= 0.5
+        x += t * dx
+        y += t * dy
+        for j in range(7):
+            now[j] = trial[j]
+    v[0] = x
+    v[1] = y
+
+
+cdef double axial_offset(const Case *cs, double target, bint single) noexcept nogil:
+    """The axial offset u at which z balls alike, each carrying Q = (u/d) delta^1.5 axially,
+    carry ``target`` z in all (scaled: K = 1), by bisection: to 4e-16 of u or, ``single``,
+    until both ends round to the same single-precision number (the start needs no more; the
+    bisection of bearingload.models.combined.axial_only)."""
+    cdef double g = cs.gap - cs.pre, c = cs.a_hat - g, gap2 = g * (2.0 * cs.a_hat - g)
+    cdef double lo = sqrt(max(gap2, 0.0)), hi, mid, r = target ** (1.0 / 3.0)
+    cdef int k
+    hi = lo + r * r + sqrt(r * cs.a_hat) + 1e-300
+    for k in range(2000):
+        if not axial_excess(c, gap2, cs.a_hat, hi, target) < 0:
+            break
+        hi *= 2.0
+    for k in range(200):
+        if not hi - lo > 4e-16 * hi:
+            break
+        if single and <float> lo == <float> hi and hi < 1e30:
+            break
+        mid = 0.5 * (lo + hi)
+        if axial_excess(c, gap2, cs.a_hat, mid, target) < 0:
+            lo = mid
+        else:
+            hi = mid
+    return 0.5 * (lo + hi)
+
+
+cdef inline double axial_excess(double c, double gap2, double a, double u,
+                                double target) noexcept nogil:
+    """One ball's axial force at the offset u less its share of the thrust."""
+    cdef double d = hypot(c, u), approach = max((u * u - gap2) / (d + a), 0.0)
+    return approach * sqrt(approach) * (u / d) - target
+
+
+cdef void standard_start(const Case *cs, double *v) noexcept nogil:
+    """The radial model's (x, y) for F_r, the axial closed form's offset for F_a (a load
+    component below 1e-3 of the largest picks no start), for a moment alone the tilt the closed
+    form gives twice it; rounded to single precision (a start needs no more, and then does not
+    depend on the last bits of these solutions), the held components 0."""
+    cdef int i
+    cdef bint radial = cs.f[0] > 1e-3, axial = fabs(cs.f[2]) > 1e-3
+    cdef double size, u
+    for i in range(5):
+        v[i] = 0.0
+    if radial:
+        radial_start(cs, cs.f[0], v)
+    if axial:
+        v[2] = axial_offset(cs, fabs(cs.f[2]) / cs.z, True)
+        if cs.f[2] < 0:
+            v[2] = -v[2]
+    size = hypot(0.0 if cs.locked[3] else cs.f[3], cs.f[4])
+    if not radial and not axial and size > 0 and cs.t_imp == 0:
+        u = axial_offset(cs, 2.0 * size / cs.z, False)
+        v[3] = u * cs.f[3] / size
+        v[4] = u * cs.f[4] / size
+    for i in range(5):
+        if cs.locked[i]:
+            v[i] = 0.0
+        elif fabs(v[i]) < 1e30:
+            v[i] = <double> <float> v[i]
+
+
+# ---------------------------------------------------------------------------- one case
+
+cdef int solve_case(const Case *cs, const double *v0, bint given, double *vh, double *vl,
+                    int64_t *iterations, Work *wk) noexcept nogil:
+    """The first stage, then minimisations with the stiffness updated to the contact angles
+    until the update leaves the equilibrium (to the tolerance). Returns OK, NOT_CONVERGED (the
+    updates ran out) or NO_MEMORY; wk.pt is the point at the answer with wk.kappa."""
+    cdef Fast cur, trial
+    cdef double *fast_block = <double *> malloc(14 * cs.z * sizeof(double))
+    cdef int i, j, update
+    cdef double end_res
+    cdef Point *pt = &wk.pt
+    if fast_block == NULL:
+        return NO_MEMORY
+    fast_on(fast_block, cs.z, &cur)
+    fast_on(fast_block + 7 * cs.z, cs.z, &trial)
+    for i in range(5):
+        vh[i] = v0[i]
+        vl[i] = 0.0
+    if not given:
+        standard_start(cs, vh)
+    iterations[0] = fast_newton(cs, wk, &cur, &trial, vh)
+    free(fast_block)
+    for update in range(cs.lim.max_updates):
+        iterations[0] += minimise(cs, wk, vh, vl, update > 0, update == 0)
+        if cs.curve == NULL:
+            return OK
+        end_res = pt.res
+        for j in range(cs.z):
+            if pt.lo.root[j] > 0:
+                wk.kappa[j] = curve_kappa(cs, pt.lo.ca[j], pt.lo.cam1[j])
+        evaluate(cs, wk.kappa, pt)
+        if not pt.res > max(cs.lim.tolerance, end_res):
+            return OK
+    return NOT_CONVERGED
+
+
+# ------------------------------------------------------------------------ Python boundary
+
+def solve(const double[:, ::1] c, const double[:, ::1] s, const double[::1] a_hat,
+          const double[::1] pre, const double[::1] gap, const double[::1] b_hi,
+          const double[::1] b_lo, const double[::1] t_imp, const double[:, ::1] f,
+          const unsigned char[:, ::1] locked, const unsigned char[::1] one_sided,
+          const double[:, ::1] curve, const double[::1] node_x, const double[::1] node_w,
+          const double[:, ::1] v0, const unsigned char[::1] given, *,
+          int max_iterations=MAX_ITERATIONS,
+          int first_stage_steps=FIRST_STAGE_STEPS):
+    """Solve n cases of the scaled ring equilibrium (see the module docstring).
+
+    Arrays over the n cases (the scaled :class:`bearingload.models._combined_ring.Problem`):
+    ``c``, ``s`` (n, z); ``a_hat``, ``pre``, ``gap``, ``b_hi``, ``b_lo``, ``t_imp`` (n,); ``f``,
+    ``locked`` (uint8), ``v0`` (n, 5) the start where ``given`` (n,) uint8 is 1, else the
+    standard one (``standard_start``); ``one_sided`` (n,) uint8; ``curve`` (n, NODES)
+    the stiffness curve's values, or (n, 0) for a constant K; ``node_x``, ``node_w`` its nodes
+    and weights (NODES,). ``max_iterations`` (per stiffness update) and ``first_stage_steps``
+    default to the module's limits (lower ones make a test's case fail on purpose).
+
+    Returns (vh, vl, kappa, iterations, status, balls, tangent): the position in double-double
+    (n, 5) each, the stiffness deviations (n, z), the Newton steps (n,), the status per case
+    (n,), the balls at the answer, a (5, n, z) array of rho, u, d, eps, up, and the tangent of
+    the ring forces there (n, 5, 5), scaled, every component free (``stiffness``).
+    """
+    cdef Py_ssize_t n = c.shape[0], k
+    cdef int z = <int> c.shape[1], i
+    cdef bint has_curve = curve.shape[1] == NODES
+    vh_a = np.empty((n, 5))
+    vl_a = np.empty((n, 5))
+    kappa_a = np.empty((n, z))
+    its_a = np.empty(n, dtype=np.int64)
+    status_a = np.empty(n, dtype=np.int32)
+    balls_a = np.empty((5, n, z))
+    tangent_a = np.empty((n, 5, 5))
+    cdef double[:, ::1] vh = vh_a, vl = vl_a, kappa = kappa_a
+    cdef int64_t[::1] its = its_a
+    cdef int[::1] status = status_a
+    cdef double[:, :, ::1] balls = balls_a, tan = tangent_a
+    cdef Case cs
+    cdef Work wk
+    cs.lim.tolerance = TOLERANCE
+    cs.lim.rounding = ROUNDING
+    cs.lim.floor = FLOOR
+    cs.lim.stall_below = STALL_BELOW
+    cs.lim.hand_on = HAND_ON
+    cs.lim.max_iterations = max_iterations
+    cs.lim.stall = STALL
+    cs.lim.refresh = REFRESH
+    cs.lim.max_updates = MAX_STIFFNESS_UPDATES
+    cs.lim.fast_steps = first_stage_steps
+    cs.lim.fast_halvings = FIRST_STAGE_HALVINGS
+    with nogil:
+        for k in range(n):
+            cs.z = z
+            cs.c = &c[k, 0]
+            cs.s = &s[k, 0]
+            cs.a_hat = a_hat[k]
+            cs.pre = pre[k]
+            cs.gap = gap[k]
+            cs.b_hi = b_hi[k]
+            cs.b_lo = b_lo[k]
+            cs.t_imp = t_imp[k]
+            for i in range(5):
+                cs.f[i] = f[k, i]
+                cs.locked[i] = locked[k, i]
+            cs.one_sided = one_sided[k]
+            cs.deviation = cs.pre > 0 and z >= 2
+            cs.q0 = cs.pre * sqrt(cs.pre) if cs.deviation else 0.0
+            cs.curve = &curve[k, 0] if has_curve else NULL
+            cs.node_x = &node_x[0]
+            cs.node_w = &node_w[0]
+            if not work_open(z, &wk):
+                status[k] = NO_MEMORY
+                continue
+            status[k] = solve_case(&cs, &v0[k, 0], given[k], &vh[k, 0], &vl[k, 0], &its[k], &wk)
+            if status[k] != NO_MEMORY:
+                stiffness(&cs, &wk, &tan[k, 0, 0])
+            for i in range(z):
+                kappa[k, i] = wk.kappa[i]
+                balls[0, k, i] = wk.pt.b.rho[i]
+                balls[1, k, i] = wk.pt.b.u[i]
+                balls[2, k, i] = wk.pt.b.d[i]
+                balls[3, k, i] = wk.pt.b.eps[i]
+                balls[4, k, i] = wk.pt.b.up[i]
+            free(wk.block)
+    return vh_a, vl_a, kappa_a, its_a, status_a, balls_a, tangent_a
