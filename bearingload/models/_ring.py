@@ -40,6 +40,11 @@ MAX_ITERATIONS = 200
 POLISH = 1e-13
 #: Preloads |e|/s above this are solved from the centred ring (below, from the touching one). [-]
 PRELOAD_CENTRED = 1e-50
+#: Trials of a general ring's line search after which its step becomes the x part alone: where
+#: the loaded balls barely resist a move across the load line the Newton step there is huge,
+#: and halving the whole step takes x's part down with it (3 or 4 balls under preload, the cage
+#: 1e-11° off the load line: x stalled 5e-7 of the load off its equilibrium). [-]
+DECOUPLE = 12
 #: A cage angle within this of 0 or half pitch is symmetric: 4 ulps of 360°, the rounding of
 #: reducing an angle to one turn and one pitch. [°]
 SYMMETRY_SNAP_DEG = 4.0 * EPS * 360.0
@@ -486,11 +491,18 @@ def solve_xy(ring: Ring, e_hat: np.ndarray, m: np.ndarray, tol: float) -> tuple[
         t = np.ones(active.size)
         trial = state(ring, active, a + dx, b + dy, eh, mv)
         pending = ~_accept(trial, cur, t, slope, gnorm)
-        for _ in range(80):
+        for k in range(80):
             if not pending.any():
                 break
-            t = np.where(pending, 0.5 * t, t)
             sub = np.nonzero(pending)[0]
+            if k == 0:  # just past the first contact along the step, or half
+                reach = _first_contact(ring, active[sub], cur.delta[sub], dx[sub], dy[sub])
+                t[sub] = np.minimum(0.5, reach)
+            elif k == DECOUPLE:  # the x part alone (a huge y part held it back)
+                dx[sub], dy[sub], t[sub] = _x_step(_take(cur, sub)), 0.0, 1.0
+                slope[sub] = cur.gx[sub] * dx[sub]
+            else:
+                t = np.where(pending, 0.5 * t, t)
             part = state(ring, active[sub], a[sub] + t[sub] * dx[sub], b[sub] + t[sub] * dy[sub],
                          eh[sub], mv[sub])  # fmt: skip
             ok = _accept(part, _take(cur, sub), t[sub], slope[sub], gnorm[sub])
@@ -501,11 +513,9 @@ def solve_xy(ring: Ring, e_hat: np.ndarray, m: np.ndarray, tol: float) -> tuple[
         xi[active], eta[active] = na, nb
         iterations[active] += 1
         conv = np.hypot(trial.gx, trial.gy) <= tol * trial.size
-        if tol <= POLISH and conv.any():  # the last Newton step too (checked at the result)
-            fin = np.nonzero(conv)[0]
-            px, py = newton_step(_take(trial, fin))
-            xi[active[fin]] += px
-            eta[active[fin]] += py
+        if tol <= POLISH and conv.any():  # the last Newton step too, where it does not
+            fin = np.nonzero(conv)[0]  # raise the residual (across a flat valley it may jump)
+            _polish(ring, active[fin], _take(trial, fin), (xi, eta), (e_hat, m))
         keep = ~(conv | small)
         active, cur = active[keep], _take(trial, np.nonzero(keep)[0])
     else:
@@ -519,6 +529,55 @@ def solve_xy(ring: Ring, e_hat: np.ndarray, m: np.ndarray, tol: float) -> tuple[
     residual = np.hypot(final.gx, final.gy) / final.size
     check(residual, "ring equilibrium at a general cage angle", iterations, e_hat, m, tol)
     return xi, eta, iterations
+
+
+def _x_step(st: State) -> np.ndarray:
+    """The Newton step in x alone, y held (regularised as :func:`newton_step`)."""
+    with np.errstate(all="ignore"):
+        return -st.gx / (st.hxx + 1e-12 * (st.hxx + st.hyy) + 1e-300)
+
+
+def _polish(
+    ring: Ring,
+    idx: np.ndarray,
+    st: State,
+    position: tuple[np.ndarray, np.ndarray],
+    data: tuple[np.ndarray, np.ndarray],
+) -> None:
+    """One more Newton step from the converged state ``st`` of the cases ``idx``, taken (in
+    place in ``position``) where it does not raise the residual. Why: a ring whose loaded balls
+    barely resist a move across the load line (3 balls under preload, the cage 5e-12° off it)
+    converges to the tolerance on a flat valley, where a full Newton step jumps so far that a
+    ball lifted off comes into contact: 0.01 of the load left (solve(3, 1.0, 1.0,
+    clearance=-0.4, cage_angle=5e-12) raised ConvergenceError)."""
+    xi, eta = position
+    e_hat, m = data
+    px, py = newton_step(st)
+    nx, ny = xi[idx] + px, eta[idx] + py
+    new = state(ring, idx, nx, ny, e_hat[idx], m[idx])
+    better = np.hypot(new.gx, new.gy) / new.size <= np.hypot(st.gx, st.gy) / st.size
+    xi[idx[better]], eta[idx[better]] = nx[better], ny[better]
+
+
+def _first_contact(
+    ring: Ring, idx: np.ndarray, delta: np.ndarray, dx: np.ndarray, dy: np.ndarray
+) -> np.ndarray:
+    """Per case, the step fraction (1.001 times it, to first order) at which the first ball not
+    in contact (``delta`` < 0, per ball) would touch moving by ``(dx, dy)``; 1 where none would
+    before the full step. Why: where only the balls near the load line carry load and the ring
+    is near-symmetric (3 or 4 balls under preload, the cage 1e-9° off the load line), the
+    Newton step across the load line is huge (only the loaded balls' tiny transverse curvature
+    resists it) and halving it from 1 takes x's part down with it: the iteration stalled. The
+    equilibrium lies where the next ball touches, as the combined solver's search finds it."""
+    c, s = rows(ring.c, idx), rows(ring.s, idx)
+    a, b = dx, dy
+    if ring.turn is not None:
+        cp, sp, sign = (t[idx] for t in ring.turn)
+        a, b = cp * dx + sp * sign * dy, cp * sign * dy - sp * dx
+    rate = a[:, None] * c + b[:, None] * s
+    with np.errstate(divide="ignore", invalid="ignore"):
+        reach = np.where((rate > 0) & (delta < 0), -delta / rate, np.inf)
+    return np.minimum(1.001 * np.min(reach, axis=1), 1.0)
 
 
 def newton_step(st: State) -> tuple[np.ndarray, np.ndarray]:
@@ -543,14 +602,16 @@ _NO_BALLS = np.empty((0, 0))
 
 
 def _take(st: State, sel: np.ndarray) -> State:
-    """The cases ``sel`` of a state, per-case sums only: the iterations need no ball arrays."""
+    """The cases ``sel`` of a state, per-case sums and the ball approaches (the iterations need
+    no other ball arrays)."""
     case = {f: getattr(st, f)[sel] for f in _PER_CASE}
-    return State(**case, q=_NO_BALLS, dq=_NO_BALLS, delta=_NO_BALLS)
+    return State(**case, q=_NO_BALLS, dq=_NO_BALLS, delta=st.delta[sel])
 
 
 def _put(st: State, sel: np.ndarray, part: State) -> None:
     for f in _PER_CASE:
         getattr(st, f)[sel] = getattr(part, f)
+    st.delta[sel] = part.delta
 
 
 def check(

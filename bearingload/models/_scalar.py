@@ -329,13 +329,16 @@ def solve_one(*values: Any) -> Any:
     if z < 3 and kind != 0:
         return None
     pre = e_hat < -_ring.PRELOAD_CENTRED and z >= 2
-    if kind == 2:
-        ring = _general(z, frac, pre)
-        xi, eta, its = _solve_xy(ring, e_hat, m, pre, tol)
-    else:
-        ring = _symmetric(z, kind == 1, pre)
-        xi, its = _solve_x(ring, (z, kind == 1, pre), e_hat, m, pre, tol)
-        eta = 0.0
+    try:  # where this one stalls the vectorised path's search goes on (or names the case)
+        if kind == 2:
+            ring = _general(z, frac, pre)
+            xi, eta, its = _solve_xy(ring, e_hat, m, pre, tol)
+        else:
+            ring = _symmetric(z, kind == 1, pre)
+            xi, its = _solve_x(ring, (z, kind == 1, pre), e_hat, m, pre, tol)
+            eta = 0.0
+    except ConvergenceError:
+        return None
     q_hat, loaded, hxx, hxy, hyy, residual = _derived(ring, xi, eta, e_hat, m, pre, kind != 2)
     if not residual <= max(tol, 1e-11):
         return None  # not proven here: the vectorised path solves it (or says why not)

@@ -44,7 +44,7 @@ from typing import Any
 import numpy as np
 
 from bearingload import numerics, validate
-from bearingload.errors import InputError
+from bearingload.errors import ConvergenceError, InputError
 from bearingload.models import _ring, _scalar
 from bearingload.models._ring import (
     APPROACH_RANGE,
@@ -336,8 +336,37 @@ def solve(
         e_hat = (g / 2.0) / scale
     check_range(f, scale, e_hat, m, z)
     frac, kind = _cage_kind(z, cage, phi1_deg)
-    rows = _solve_groups(z, kind, frac, e_hat, m, tol)
+    try:
+        rows = _solve_groups(z, kind, frac, e_hat, m, tol)
+    except ConvergenceError as exc:
+        raise _in_user_terms(exc, e_hat, m, (z, f, kk, g, cage)) from None
     return _assemble(shape, z, f, kk, g, phi1_deg, m, scale, rows)
+
+
+def _in_user_terms(
+    exc: ConvergenceError, e_hat: np.ndarray, m: np.ndarray, inputs: tuple[np.ndarray, ...]
+) -> ConvergenceError:
+    """The engine's ConvergenceError (its cases named by the scaled clearance e_hat and the
+    exponent) as one naming the inputs of those cases: balls, load, stiffness, clearance, cage
+    angle and exponent."""
+    failing = np.zeros(e_hat.shape, dtype=bool)
+    for e0, m0 in zip(
+        np.ravel(exc.cases.get("e_hat", [])), np.ravel(exc.cases.get("exponent", [])), strict=True
+    ):
+        failing |= (e_hat == e0) & (m == m0)
+    if not failing.any():
+        return exc
+    z, f, kk, g, cage = inputs
+    cases = {
+        "balls": z[failing],
+        "load": f[failing],
+        "stiffness": kk[failing],
+        "clearance": g[failing],
+        "cage_angle": cage[failing],
+        "exponent": m[failing],
+    }
+    units = {"load": "N", "stiffness": "N/mm^m", "clearance": "mm", "cage_angle": "°"}
+    return ConvergenceError(exc.solver, exc.iterations, exc.residual, cases, units=units)
 
 
 _NAMES = ("balls", "load", "stiffness", "clearance", "cage_angle", "exponent")
