@@ -601,10 +601,15 @@ cdef void newton_step(const Case *cs, Work *wk, const double *grad, double *step
 cdef bint accept(const Case *cs, Work *wk, const double *w, double drop_min, double res,
                  bint need_drop, Point *trial, double *dd, double *ddr) noexcept nogil:
     """Whether the move w from the current point is taken (the residual halves, or the potential
-    falls by 1e-4 of drop_min); ``trial`` gets the point there."""
+    falls by 1e-4 of drop_min); ``trial`` gets the point there. A move that loses a ball's
+    approach (overflow: a correction step of a ring touching no ball, 1e300 long) is not taken,
+    though the potential, -F.w there, falls."""
     cdef bint ok, moves = False
     cdef int i
     offset(cs, wk.pt.b, w, trial.b, dd, ddr)
+    for i in range(cs.z):
+        if not isfinite(trial.b.eps[i]):
+            return False
     evaluate(cs, wk.kappa, trial)
     trial.age = wk.pt.age + 1
     trial.drop = 0.0
