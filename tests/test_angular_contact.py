@@ -133,9 +133,10 @@ def test_stiffness_matrix_matches_mpmath_jacobian(name):
         jac[:, k] = [float((a - b) / (2 * h)) for a, b in zip(fu, fd, strict=True)]
     sym = 0.5 * (jac + jac.T)
     scale = np.abs(sym).max()
-    # the matrix leaves out the antisymmetric part of dK/d(alpha) (see combined._tangent)
-    assert np.allclose(r.stiffness_matrix, sym, rtol=1e-6, atol=1e-7 * scale)
-    assert np.array_equal(r.stiffness_matrix, r.stiffness_matrix.T)
+    # the matrix is the true tangent (dK/d(alpha) included); its symmetric part beside it
+    assert np.allclose(r.stiffness_matrix, jac, rtol=1e-6, atol=1e-7 * scale)
+    assert np.allclose(r.stiffness_matrix_symmetric, sym, rtol=1e-6, atol=1e-7 * scale)
+    assert np.array_equal(r.stiffness_matrix_symmetric, r.stiffness_matrix_symmetric.T)
 
 
 def test_pure_thrust_closed_form():

@@ -86,25 +86,53 @@ def _mp_jacobian(case: dict, r, stiffness: float | None) -> np.ndarray:
 @pytest.mark.parametrize("name", list(CASES))
 @pytest.mark.parametrize("stiffness", [3.0e5, None], ids=["constant K", "Hertz K(alpha)"])
 def test_the_matrix_is_the_jacobian_of_the_ring_forces(name, stiffness):
-    """Constant K: the matrix is the mpmath Jacobian to 1e-12 of its largest entry (measured:
-    8e-16 to 1.1e-15). Hertz K(alpha): the Jacobian is not quite symmetric (the stiffness
-    changes with the contact angle); the matrix is its symmetric part to 1e-12 (measured: 1e-15
-    to 2.4e-15), and the part left out is below 1e-4 of the largest entry (measured: 6e-6 to
-    9e-6)."""
+    """The matrix is the mpmath Jacobian to 1e-12 of its largest entry, with a constant K and
+    with the Hertz K(alpha), whose change with the contact angle makes it not quite symmetric
+    (the skew part below 1e-4 of the largest entry; measured 6e-6 to 9e-6); its symmetric part
+    ``stiffness_matrix_symmetric`` is the Jacobian's to 1e-12."""
     case = CASES[name]
     r = solve_combined(9, stiffness=stiffness, **G6205, **case)
     jac = _mp_jacobian(case, r, stiffness)
     mat = np.asarray(r.stiffness_matrix)
-    assert np.array_equal(mat, mat.T)
+    half = np.asarray(r.stiffness_matrix_symmetric)
+    assert np.array_equal(half, half.T)
     # entries scaled to a common size: forces per mm, moments per rad over R_i
     scale = np.diag([1.0, 1.0, 1.0, 1.0 / r.tilt_radius, 1.0 / r.tilt_radius])
-    jac_s, mat_s = scale @ jac @ scale, scale @ mat @ scale
+    jac_s, mat_s, half_s = scale @ jac @ scale, scale @ mat @ scale, scale @ half @ scale
     size = np.abs(jac_s).max()
-    sym = 0.5 * (jac_s + jac_s.T)
-    assert np.abs(mat_s - sym).max() <= 1e-12 * size
+    assert np.abs(mat_s - jac_s).max() <= 1e-12 * size
+    assert np.abs(half_s - 0.5 * (jac_s + jac_s.T)).max() <= 1e-12 * size
     skew = np.abs(jac_s - jac_s.T).max() / 2
     assert skew <= (1e-12 if stiffness else 1e-4) * size
-    assert np.all(np.linalg.eigvalsh(mat_s) > 0)  # stable: every direction pushes back
+    if stiffness:
+        assert np.array_equal(mat, mat.T)
+    assert np.all(np.linalg.eigvalsh(half_s) > 0)  # stable: every direction pushes back
+
+
+def test_the_static_matrix_is_the_matrix_at_speed_zero():
+    """One tangent at rest and at speed: the static solve's matrix equals the ball dynamics' at
+    1e-3 rpm to 1e-9 of its largest entry, for one bearing and a preloaded pair (the static
+    matrix was the symmetric part: 4.8e-6 apart, and a pair's matrix jumped between 0 and
+    1e-3 rpm)."""
+    from bearingload.models.high_speed import solve_high_speed
+    from bearingload.models.pair import solve_pair
+    from bearingload.models.pair_speed import solve_pair_high_speed
+
+    one = dict(clearance=0.01, **G6205)
+    still = solve_combined(9, 3000.0, 500.0, **one).stiffness_matrix
+    slow = solve_high_speed(9, 3000.0, 500.0, speed=1e-3, **one).stiffness_matrix
+    assert np.abs(slow - still).max() <= 1e-9 * np.abs(still).max()
+    pair = dict(
+        preload=300.0,
+        moment=2000.0,
+        contact_angle=40.0,
+        ball_diameter=8.7312,
+        pitch_diameter=38.5,
+        width=15.0,
+    )
+    still = np.asarray(solve_pair(12, 1000.0, 300.0, **pair).stiffness_matrix)
+    slow = np.asarray(solve_pair_high_speed(12, 1000.0, 300.0, speed=1e-3, **pair).stiffness_matrix)
+    assert np.abs(slow - still).max() <= 1e-9 * np.abs(still).max()
 
 
 @pytest.mark.parametrize("name", list(CASES))

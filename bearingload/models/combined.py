@@ -147,6 +147,16 @@ class StiffnessViews:
         """dM/d(tilt), the tilting stiffness in the plane of the load. [N mm/rad]"""
         return numerics.scalar_out(self.stiffness_matrix[..., 3, 3])
 
+    @property
+    def stiffness_matrix_symmetric(self) -> np.ndarray:
+        """The symmetric part of ``stiffness_matrix``, ``(K + K^T)/2``, for a rotor code that
+        needs a symmetric bearing matrix. The matrix itself is the true tangent: with the Hertz
+        stiffness changing with the contact angle (and at speed, the ball dynamics) it is not
+        quite symmetric; the part this leaves out is about 1e-5 of the largest entry at rest
+        (docs/models.md). [N/mm, N/rad, N mm/mm, N mm/rad]"""
+        k = np.asarray(self.stiffness_matrix)
+        return 0.5 * (k + np.swapaxes(k, -1, -2))
+
 
 @dataclass(frozen=True)
 class CombinedDistribution(StiffnessViews):
@@ -196,10 +206,11 @@ class CombinedDistribution(StiffnessViews):
         The lever of the tilt used: the ``tilt_radius`` given, or R_i, the radius of the inner
         groove curvature centres (ISO/TS 16281). [mm]
     stiffness_matrix : ndarray (..., 5, 5)
-        The bearing's stiffness at the equilibrium, symmetric: d(F_x, F_y, F_a, M, M_c)/d(x, y,
-        axial, tilt, tilt_cross), forces [N] and moments [N mm] on the inner ring per
-        displacement [mm] and tilt [rad] of it (x along the load line, tilts in radians, as a
-        rotor model takes them). See ``stiffness_radial``, ``stiffness_axial``,
+        The bearing's stiffness at the equilibrium, the true tangent: d(F_x, F_y, F_a, M,
+        M_c)/d(x, y, axial, tilt, tilt_cross), forces [N] and moments [N mm] on the inner ring
+        per displacement [mm] and tilt [rad] of it (x along the load line, tilts in radians, as
+        a rotor model takes them); with the Hertz K(alpha) not quite symmetric (its symmetric
+        part: ``stiffness_matrix_symmetric``). See ``stiffness_radial``, ``stiffness_axial``,
         ``stiffness_tilt``. [N/mm, N/rad, N mm/mm, N mm/rad]
     iterations : ndarray of int
         Newton steps: those of the double-precision first stage and of the double-double
@@ -1237,9 +1248,9 @@ def _tangent(p: Problem, geo: _Geometry, point: _ring.Point, kappa: np.ndarray,
     Ball j carries ``Q_j = K(alpha_j) delta_j^1.5`` along its contact normal ``g_j``; its part
     of the matrix is ``dQ/d(delta) g g^T + Q/d h h^T + dQ/d(alpha) g h^T / d`` (``h`` the
     direction in which the normal turns, ``d`` the distance of the groove centres; the last term
-    from the stiffness's change with the contact angle, about 1e-5 of the matrix on a 6205). The matrix
-    returned is the symmetric part (that last term's antisymmetric part left out), the form a
-    rotor model takes; with a constant ``stiffness`` the tangent is symmetric as it is. In a
+    from the stiffness's change with the contact angle, about 1e-5 of the matrix on a 6205). The
+    matrix returned is that tangent, not quite symmetric (its symmetric part is the results'
+    ``stiffness_matrix_symmetric``); with a constant ``stiffness`` it is symmetric. In a
     case symmetric about the load line (``mirrored``: the balls and the loads) the couplings of
     (x, axial, tilt) with (y, tilt_cross) are 0, exactly rather than to rounding."""
     b, lo = point.b, point.lo
@@ -1249,12 +1260,11 @@ def _tangent(p: Problem, geo: _Geometry, point: _ring.Point, kappa: np.ndarray,
 
 
 def _physical(p: Problem, geo: _Geometry, t: np.ndarray, mirrored: np.ndarray) -> np.ndarray:
-    """The scaled tangent ``t`` (n, 5, 5, changed in place) in physical units, its symmetric
-    part, the couplings of the mirrored cases and those within rounding exactly 0."""
+    """The scaled tangent ``t`` (n, 5, 5, changed in place) in physical units, the couplings
+    of the mirrored cases and those within rounding exactly 0."""
     lever = np.ones((p.f.shape[0], 5))
     lever[:, 3:] = geo.R_i[:, None]
     t *= (p.f_ref / p.scale)[:, None, None] * lever[:, :, None] * lever[:, None, :]
-    t = 0.5 * (t + t.transpose(0, 2, 1))  # (exactly: the rounding of the products aside)
     along, across = np.array([0, 2, 3]), np.array([1, 4])
     t[np.ix_(mirrored, along, across)] = 0.0
     t[np.ix_(mirrored, across, along)] = 0.0
@@ -1274,7 +1284,7 @@ def _stiffness_matrix(
     p: Problem, geo: _Geometry, tangent: np.ndarray, mirrored: np.ndarray
 ) -> np.ndarray:
     """The stiffness matrix of every case (n, 5, 5) from the core's tangent of the ring forces
-    (scaled): in physical units, its symmetric part, as :func:`_tangent` states it."""
+    (scaled), in physical units, as :func:`_tangent` states it."""
     return _physical(p, geo, tangent.copy(), mirrored)
 
 

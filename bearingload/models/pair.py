@@ -98,7 +98,8 @@ class PairDistribution(StiffnessViews):
         The shaft's displacement at the pair's centre. [mm, °]
     stiffness_matrix : ndarray (..., 5, 5)
         d(F_x, F_y, F_a, M, M_c)/d(x, y, axial, tilt, tilt_cross) of the shaft at the pair's
-        centre, symmetric. [N/mm, N/rad, N mm/mm, N mm/rad]
+        centre, the true tangent (its symmetric part: ``stiffness_matrix_symmetric``). [N/mm,
+        N/rad, N mm/mm, N mm/rad]
     unloaded : ndarray (..., 2) of bool
         Whether each bearing carries no load.
     lift_off_axial_load : ndarray or None
@@ -749,7 +750,6 @@ def _result(kind: str, pp: _Pair, geo: Any, answer: tuple[Any, ...], c: dict,
         phys[:, 0, 3] *= radius
         phys[:, 1, 4] *= radius
         total += phys.transpose(0, 2, 1) @ tangent @ phys
-    total = 0.5 * (total + total.transpose(0, 2, 1))
     along, across = np.array([0, 2, 3]), np.array([1, 4])
     total[np.ix_(mirrored, along, across)] = 0.0
     total[np.ix_(mirrored, across, along)] = 0.0

@@ -514,8 +514,7 @@ def _result(static: PairDistribution, sh: _Shaft, geo: Any, flat: dict, shape: t
         bearings.append(dataclasses.replace(r, load=case(radial), axial_load=case(p.gen[:, 2])))
     lever = np.stack([np.ones_like(radius)] * 3 + [radius, radius], axis=1)
     tangent = st.jac * lever[:, :, None] * lever[:, None, :]
-    # at speed 0 the static pair's matrix: its symmetric part (K's change with the angle gives
-    # the tangent an antisymmetric part of about 1e-5, which the static pair leaves out)
+    # at speed 0 the static pair's matrix (the same tangent, from the static solve)
     rest = (flat["speed"] == 0)[:, None, None]
     tangent = np.where(rest, np.reshape(static.stiffness_matrix, tangent.shape), tangent)
     unloaded = np.stack([np.all(st.parts[k].terms[2] == 0, axis=1) for k in range(2)], axis=1)

@@ -90,6 +90,8 @@ MATRIX_UNITS = (
     "rows F_x, F_y, F_a [N], M, M_c [N mm]; columns x, y, axial [mm], tilt, tilt_cross [rad]: "
     "N/mm, N/rad, N mm/mm, N mm/rad"
 )
+#: The ``units`` entries of the two matrices: the true tangent and its symmetric part.
+MATRIX_KEYS = {"stiffness_matrix": MATRIX_UNITS, "stiffness_matrix_symmetric": MATRIX_UNITS}
 PER_BALL_KEYS = (
     "ball",
     "ball_angles",
@@ -372,13 +374,14 @@ def _document(
                 "ball_loads_inner": found["ball_loads_inner"],
                 "ball_loads_outer": found["ball_loads_outer"],
                 "stiffness_matrix": res.stiffness_matrix.tolist(),
+                "stiffness_matrix_symmetric": res.stiffness_matrix_symmetric.tolist(),
                 "warnings": said[len(docs)],
             }
         )
     keys = list(dict.fromkeys(k for d in docs for k in d))
     return {
         "cases": docs,
-        "units": units(keys, 1.5) | {"stiffness_matrix": MATRIX_UNITS},
+        "units": units(keys, 1.5) | MATRIX_KEYS,
         "bearing": geometry_document(cases[0].bearing),
         "warnings": printed_warnings(collect_combined_warnings(cases), service),
     }

@@ -19,7 +19,7 @@ import dataclasses
 from collections.abc import Sequence
 from typing import Any
 
-from bearingload.reports.combined import ANGULAR_LABELS, MATRIX_UNITS, contact_angle_shown
+from bearingload.reports.combined import ANGULAR_LABELS, MATRIX_KEYS, contact_angle_shown
 from bearingload.reports.quantities import SERVICE_KEYS, units
 from bearingload.reports.render import Column, Table, render
 from bearingload.reports.solve import (
@@ -219,13 +219,14 @@ def _document(
         "model": "pair of angular-contact ball bearings on one rigid shaft (ISO/TS 16281 each)"
         + _speed_model(c, pair)[1],
         "stiffness_matrix": c.result.stiffness_matrix.tolist(),
+        "stiffness_matrix_symmetric": c.result.stiffness_matrix_symmetric.tolist(),
         "bearings": singles["cases"],
         "warnings": said,
     }
     keys = list(dict.fromkeys([*doc, *(k for s in singles["cases"] for k in s)]))
     return {
         "cases": [doc],
-        "units": units(keys, 1.5) | {"stiffness_matrix": MATRIX_UNITS},
+        "units": units(keys, 1.5) | MATRIX_KEYS,
         "bearing": geometry_document(c.bearing),
         "warnings": said,
     }

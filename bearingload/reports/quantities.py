@@ -87,6 +87,7 @@ QUANTITIES: dict[str, Quantity] = {
         Quantity("stiffness_axial", "axial stiffness dF_a/d(axial)", "N/mm"),
         Quantity("stiffness_tilt", "tilting stiffness dM/d(tilt)", "N mm/rad"),
         Quantity("stiffness_matrix", "tangent stiffness matrix", "N/mm"),
+        Quantity("stiffness_matrix_symmetric", "symmetric part of the stiffness matrix", "N/mm"),
         Quantity("stiffness_xx", "tangent stiffness K_xx", "N/mm"),
         Quantity("stiffness_xy", "tangent stiffness K_xy", "N/mm"),
         Quantity("stiffness_yy", "tangent stiffness K_yy", "N/mm"),
