@@ -879,6 +879,23 @@ cdef void stiffness(const Case *cs, Work *wk, double *out) noexcept nogil:
     tangent(cs, pt.lo.ca, pt.lo.sa, wk.w1, wk.w2, w3 if cs.curve != NULL else NULL, False, out)
 
 
+cdef void holding(const Case *cs, Work *wk, double *out) noexcept nogil:
+    """The potential's Hessian at the current point (the stiffness frozen) from the balls whose
+    load exceeds the tolerance (1e-12 of the largest applied load): the stiffness of the balls
+    that determine the equilibrium, every component free. A null direction of it is one the
+    loads do not determine (combined._least_norm_tilt)."""
+    cdef int j
+    cdef Point *pt = &wk.pt
+    for j in range(cs.z):
+        wk.w1[j] = 0.0
+        wk.w2[j] = 0.0
+        if pt.lo.q[j] > cs.lim.tolerance:
+            wk.w1[j] = 1.5 * (1.0 + wk.kappa[j]) * pt.lo.root[j]
+            if turns(cs, pt.b.rho[j], pt.b.u[j]):
+                wk.w2[j] = pt.lo.q[j] / pt.b.d[j]
+    tangent(cs, pt.lo.ca, pt.lo.sa, wk.w1, wk.w2, NULL, False, out)
+
+
 # ------------------------------------------------------------------------------ the start
 
 cdef void radial_gradient(const Case *cs, double x, double y, double g, double f0,
@@ -1065,10 +1082,11 @@ def solve(const double[:, ::1] c, const double[:, ::1] s, const double[::1] a_ha
     and weights (NODES,). ``max_iterations`` (per stiffness update) and ``first_stage_steps``
     default to the module's limits (lower ones make a test's case fail on purpose).
 
-    Returns (vh, vl, kappa, iterations, status, balls, tangent): the position in double-double
-    (n, 5) each, the stiffness deviations (n, z), the Newton steps (n,), the status per case
-    (n,), the balls at the answer, a (5, n, z) array of rho, u, d, eps, up, and the tangent of
-    the ring forces there (n, 5, 5), scaled, every component free (``stiffness``).
+    Returns (vh, vl, kappa, iterations, status, balls, tangent, holding): the position in
+    double-double (n, 5) each, the stiffness deviations (n, z), the Newton steps (n,), the
+    status per case (n,), the balls at the answer, a (5, n, z) array of rho, u, d, eps, up, the
+    tangent of the ring forces there (n, 5, 5), scaled, every component free (``stiffness``),
+    and the Hessian of the balls that determine the equilibrium (``holding``).
     """
     cdef Py_ssize_t n = c.shape[0], k
     cdef int z = <int> c.shape[1], i
@@ -1080,10 +1098,11 @@ def solve(const double[:, ::1] c, const double[:, ::1] s, const double[::1] a_ha
     status_a = np.empty(n, dtype=np.int32)
     balls_a = np.empty((5, n, z))
     tangent_a = np.empty((n, 5, 5))
+    holding_a = np.empty((n, 5, 5))
     cdef double[:, ::1] vh = vh_a, vl = vl_a, kappa = kappa_a
     cdef int64_t[::1] its = its_a
     cdef int[::1] status = status_a
-    cdef double[:, :, ::1] balls = balls_a, tan = tangent_a
+    cdef double[:, :, ::1] balls = balls_a, tan = tangent_a, hold = holding_a
     cdef Case cs
     cdef Work wk
     cs.lim.tolerance = TOLERANCE
@@ -1123,6 +1142,7 @@ def solve(const double[:, ::1] c, const double[:, ::1] s, const double[::1] a_ha
             status[k] = solve_case(&cs, &v0[k, 0], given[k], &vh[k, 0], &vl[k, 0], &its[k], &wk)
             if status[k] != NO_MEMORY:
                 stiffness(&cs, &wk, &tan[k, 0, 0])
+                holding(&cs, &wk, &hold[k, 0, 0])
             for i in range(z):
                 kappa[k, i] = wk.kappa[i]
                 balls[0, k, i] = wk.pt.b.rho[i]
@@ -1131,4 +1151,4 @@ def solve(const double[:, ::1] c, const double[:, ::1] s, const double[::1] a_ha
                 balls[3, k, i] = wk.pt.b.eps[i]
                 balls[4, k, i] = wk.pt.b.up[i]
             free(wk.block)
-    return vh_a, vl_a, kappa_a, its_a, status_a, balls_a, tangent_a
+    return vh_a, vl_a, kappa_a, its_a, status_a, balls_a, tangent_a, holding_a

@@ -215,6 +215,9 @@ class CombinedDistribution(StiffnessViews):
     iterations : ndarray of int
         Newton steps: those of the double-precision first stage and of the double-double
         minimisations, summed over the stiffness updates. [-]
+    tilt_undetermined : ndarray of bool
+        The loads do not determine the ring's tilt: a range of tilts balances them (see
+        :func:`_least_norm_tilt`); the least of them is the one returned.
     """
 
     balls: int
@@ -238,6 +241,7 @@ class CombinedDistribution(StiffnessViews):
     tilt_radius: np.ndarray
     stiffness_matrix: np.ndarray
     iterations: np.ndarray
+    tilt_undetermined: np.ndarray
 
     @property
     def q_max(self) -> Any:
@@ -607,16 +611,103 @@ def solve_combined(
     if misalignment is not None:  # the moment is then the reaction, not an input
         given["misalignment"] = tilt_deg
     with np.errstate(all="ignore"):
-        vh, vl, kappa, its, end, tangent = _thrust_retry(problem, geo, curve)
+        vh, vl, kappa, its, end, tangent, undetermined = _equilibrium(problem, geo, curve)
         checked = _checked(problem, end, its, given)
         answer = (
             vh + vl,
             kappa,
             its,
             checked,
-            _stiffness_matrix(problem, geo, tangent, mirror & (mc == 0)),
+            _stiffness_matrix(problem, geo, tangent[0], mirror & (mc == 0)),
         )
-        return _result(problem, geo, answer, shape, given, misalignment)
+        return _result(problem, geo, answer, shape, given, misalignment, undetermined)
+
+
+def _equilibrium(p: Problem, geo: _Geometry, curve: _StiffnessCurve | None) -> tuple:
+    """Every case solved (:func:`_thrust_retry`), a tilt the loads do not determine taken at
+    its least (:func:`_least_norm_tilt`): as :func:`_solve_with_stiffness`, and which cases'
+    tilts are undetermined."""
+    vh, vl, kappa, its, end, tangent = _thrust_retry(p, geo, curve)
+    vh, vl, end, undetermined = _least_norm_tilt(p, (vh, vl), kappa, end, tangent[1])
+    return vh, vl, kappa, its, end, tangent, undetermined
+
+
+#: A free direction of the ring along which its stiffness (the frozen-K Hessian of the
+#: potential, scaled) is below FLAT times its largest is one the loads do not determine. [-]
+FLAT = 1e-12
+
+
+def _least_norm_tilt(
+    p: Problem, v: tuple[np.ndarray, np.ndarray], kappa: np.ndarray, end: _ring.Point,
+    holding: np.ndarray,
+) -> tuple[np.ndarray, np.ndarray, _ring.Point, np.ndarray]:
+    """The answers whose tilt the loads do not determine, moved to the least tilt of those that
+    balance them; and which cases those are (n,) bool.
+
+    Where the balls that carry load hold the ring along every direction but one tilt (an
+    angular-contact bearing of 4 balls under a thrust of 1e-3 F_r: two loaded balls opposite
+    each other, a third at 0° whose contact takes no axial part, the fourth loose), every tilt
+    about the line through the loaded balls, up to where a loose ball touches or the ball at
+    0° leaves the groove bottom, balances the loads: the one returned depended on the start
+    (-0.588° or -0.683° for loads 1e-5 apart). The valley is the null direction of the
+    potential's Hessian; its ends are where the first ball changes state along it (to first
+    order, within 1e-6 of the range). A ball carrying less than the tolerance (1e-12 of the
+    largest load) does not hold the ring: it bounds the valley as a loose one (the same case
+    at a thrust 1e-5 larger came back at the valley's end with a ball of 1.6e-15 N, -0.683°,
+    and no flat direction). The tilt returned is the least of the valley, kept only where the
+    equilibrium there is balanced to the tolerance."""
+    vh, vl = v
+    free = ~p.locked
+    hess = np.where(free[:, :, None] & free[:, None, :], holding, 0.0)
+    hess[:, range(5), range(5)] += np.where(free, 0.0, np.abs(hess).max(axis=(1, 2))[:, None])
+    lam, vec = np.linalg.eigh(hess)
+    flat = (lam[:, 0] <= FLAT * lam[:, -1]) & np.any(np.abs(vec[:, 3:, 0]) > 0.5, axis=1)
+    undetermined = flat & np.all(free[:, 3:], axis=1)
+    for i in np.flatnonzero(undetermined).tolist():
+        d = vec[i, :, 0] * free[i]
+        step = _least_tilt_step(p, i, end, vh[i] + vl[i], d) * d
+        one = np.array([i])
+        sub = p.take(one)
+        wh, wl = vh[one], vl[one]
+        for _ in range(4):  # the move, then Newton steps across the valley (not along it)
+            hi, lo = _ring._two_sum(wh, step[None, :])
+            wh, wl = _ring._fast(hi, lo + wl)
+            moved = _ring.Point.at(sub, kappa[one], _ring.reference(sub, wh, wl))
+            if moved.res[0] <= TOLERANCE:
+                vh[one], vl[one] = wh, wl
+                end.put(one, moved)
+                break
+            left = np.where(sub.locked[0], 0.0, moved.gen[0] - sub.f[0])
+            across = vec[i, :, 1:]
+            step = -across @ ((across.T @ left) / lam[i, 1:])
+    return vh, vl, end, undetermined
+
+
+def _least_tilt_step(p: Problem, i: int, end: _ring.Point, v: np.ndarray, d: np.ndarray) -> float:
+    """The move along the valley direction ``d`` (scaled, of case ``i`` at ``v``) to the least
+    tilt within the valley: its ends where a ball that does not hold the ring would touch (to
+    first order from its approach, which may be a rounding above 0) or a loaded one-sided ball
+    at the groove bottom (u <= 0) would leave it; 0 where the valley has no end both ways."""
+    c, s = p.c[i], p.s[i]
+    dr = d[0] * c + d[1] * s
+    du = d[2] + d[3] * c + d[4] * s
+    b, lo = end.b, end.lo
+    delta = p.pre[i] + b.eps[i]
+    rate = lo.ca[i] * dr + lo.sa[i] * du
+    holds = lo.q[i] > TOLERANCE
+    value = np.where(holds, b.u[i], delta)  # each ball's quantity kept <= 0
+    speed = np.where(holds, du, rate)
+    bound = ~holds | (p.one_sided[i] & (b.u[i] <= 0))
+    with np.errstate(divide="ignore", invalid="ignore"):
+        reach = np.where(bound & (speed != 0), -value / speed, np.nan)
+    upper = np.min(reach[bound & (speed > 0)], initial=np.inf)
+    lower = np.max(reach[bound & (speed < 0)], initial=-np.inf)
+    if not (np.isfinite(upper) and np.isfinite(lower)):
+        return 0.0
+    tilt = d[3:] @ d[3:]
+    best = -(v[3:] @ d[3:]) / tilt if tilt > 0 else 0.0
+    margin = 1e-6 * (upper - lower)
+    return float(np.clip(best, lower + margin, upper - margin))
 
 
 def _angular_geometry(dw: Any, dm: Any, fi: Any, fo: Any, alpha_deg: np.ndarray) -> _Geometry:
@@ -991,7 +1082,7 @@ def _thrust_retry(p: Problem, geo: _Geometry, curve: _StiffnessCurve | None) -> 
             continue
         vh[i], vl[i], kappa[i], total[i] = got[0][0], got[1][0], got[2][0], total[i] + got[3][0]
         end.put(one, got[4])
-        tangent[i] = got[5][0]
+        tangent[0][i], tangent[1][i] = got[5][0][0], got[5][1][0]
     return vh, vl, kappa, total, end, tangent
 
 
@@ -1126,12 +1217,12 @@ class _StiffnessCurve:
 
 def _solve_with_stiffness(
     p: Problem, geo: _Geometry, curve: _StiffnessCurve | None, v0: np.ndarray | None = None
-) -> tuple[np.ndarray, np.ndarray, np.ndarray, np.ndarray, _ring.Point, np.ndarray]:
+) -> tuple[Any, ...]:
     """Minimise with frozen ball stiffnesses, update them to the contact angles, repeat until
     the update leaves the equilibrium (to the tolerance), each case in the compiled core
     (:mod:`bearingload.models._core`). Returns (v_hi, v_lo, kappa, iterations, the point there:
-    the balls at the position, the loads with kappa; the tangent of the ring forces there,
-    scaled, (n, 5, 5)). ``v0``: the start (scaled units of
+    the balls at the position, the loads with kappa; the tangent of the ring forces there and
+    the Hessian of the balls that hold the ring, scaled, (n, 5, 5) each). ``v0``: the start (scaled units of
     ``p``); default the core's standard start, light angular-contact cases :func:`_light_start`."""
     from bearingload.models import _core
 
@@ -1144,7 +1235,7 @@ def _solve_with_stiffness(
     else:
         given[:], start0[:] = 1, v0
     values = np.zeros((n, 0)) if curve is None else curve.values
-    vh, vl, kappa, total, status, balls, tangent = _core.solve(
+    vh, vl, kappa, total, status, balls, tangent, holding = _core.solve(
         np.ascontiguousarray(p.c, dtype=float), np.ascontiguousarray(p.s, dtype=float),
         *(np.ascontiguousarray(a, dtype=float) for a in
           (p.a_hat, p.pre, p.gap, p.b_hi, p.b_lo, p.t_imp, p.f)),
@@ -1159,7 +1250,7 @@ def _solve_with_stiffness(
             "combined-load ball stiffness update", MAX_STIFFNESS_UPDATES, math.nan, {}
         )
     point = _ring.Point.at(p, kappa, _ring.Balls(*balls))
-    return vh, vl, kappa, total, point, tangent
+    return vh, vl, kappa, total, point, (tangent, holding)
 
 
 def _checked(p: Problem, end: _ring.Point, its: np.ndarray, given: dict) -> tuple[Any, ...]:
@@ -1295,8 +1386,10 @@ def _result(
     shape: tuple[int, ...],
     given: dict,
     misalignment: Any,
+    undetermined: np.ndarray | None = None,
 ) -> CombinedDistribution:
-    """Back to physical units and the case shape."""
+    """Back to physical units and the case shape; ``undetermined``: the cases whose tilt the
+    loads do not determine (default none)."""
     v, kappa, its, (b, lo, gen), tangent = answer
     q = p.f_ref[:, None] * lo.q
     t = v[:, 3] + p.t_imp
@@ -1334,4 +1427,7 @@ def _result(
         tilt_radius=case(geo.R_i),
         stiffness_matrix=tangent.reshape(shape + (5, 5)),
         iterations=case(its),
+        tilt_undetermined=np.zeros(shape, dtype=bool)
+        if undetermined is None
+        else undetermined.reshape(shape),
     )

@@ -179,6 +179,8 @@ def _combined_case(
     checks = tuple(c + (w,) if w else c for c, w in zip(checks, said, strict=True))
     sides = groove_side_warnings(r, len(q))
     checks = tuple(c + (w,) if w else c for c, w in zip(checks, sides, strict=True))
+    flat = np.reshape(r.tilt_undetermined, -1)
+    checks = tuple(c + (TILT_UNDETERMINED,) if f else c for c, f in zip(checks, flat, strict=True))
     if shape == ():
         p_eq = None if p_eq is None else float(p_eq)
         life = None if life is None or np.isnan(life) else float(life)
@@ -189,6 +191,14 @@ def _combined_case(
     return CombinedCase(b, r, misalignment, rotating, c_r, p_eq, life, l10r, checks, p_i, p_o,
                         p0, s0, moment_cross)  # type: ignore[arg-type]  # fmt: skip
 
+
+#: The warning on a ring whose tilt the loads do not determine (the solver's ``tilt_undetermined``).
+TILT_UNDETERMINED = (
+    "the loads do not determine the ring's tilt: a range of tilts balances them (the balls that "
+    "carry load leave one tilt free, as with a few balls of an angular-contact bearing under a "
+    "light thrust); the least tilt of the range is given, and the ball loads are the same at "
+    "every tilt of it"
+)
 
 #: The warning on a ball whose loaded inner contact sits on the groove's side at speed: what
 #: happens, and (after it) why the result is outside the model.
