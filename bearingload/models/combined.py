@@ -638,7 +638,10 @@ FLAT = 1e-12
 
 
 def _least_norm_tilt(
-    p: Problem, v: tuple[np.ndarray, np.ndarray], kappa: np.ndarray, end: _ring.Point,
+    p: Problem,
+    v: tuple[np.ndarray, np.ndarray],
+    kappa: np.ndarray,
+    end: _ring.Point,
     holding: np.ndarray,
 ) -> tuple[np.ndarray, np.ndarray, _ring.Point, np.ndarray]:
     """The answers whose tilt the loads do not determine, moved to the least tilt of those that
