@@ -31,6 +31,7 @@ COLUMNS: dict[str, str] = {
     "outer_conformity": "number",
     "modulus": "modulus",
     "poisson": "number",
+    "ball_material": "text",
     "clearance": "clearance",
     "clearance_pick": "pick",
     "cage_angle": "cage_angle",
@@ -110,7 +111,8 @@ COMBINED_COLUMNS = (*LOAD_COLUMNS, "tilt_radius")
 NOT_COMBINED = ("method", "revolutions", "exponent")
 #: Columns that make a row a bearing (resolved by bearings.resolve) rather than a bare ring.
 BEARING_COLUMNS = ("bearing", "ball_diameter", "pitch_diameter", "inner_conformity",
-                   "outer_conformity", "modulus", "poisson", "clearance_pick", "revolutions")  # fmt: skip
+                   "outer_conformity", "modulus", "poisson", "ball_material", "clearance_pick",
+                   "revolutions")  # fmt: skip
 #: Library parameter names -> the column of a batch file they come from: a skipped row's
 #: reason names the column the user wrote (as the command line names the option).
 _COLUMN_OF = {

@@ -61,7 +61,7 @@ LIFE_PARAMS = ("dynamic_rating", "rotating", *SERVICE_PARAMS)
 #: The combined-load options, in the order a refusal names the first one given.
 COMBINED_PARAMS = LOAD_PARAMS + TILT_PARAMS + LIFE_PARAMS
 #: The options only a bearing or its ball geometry uses, refused for a ring given by z and K.
-BEARING_ONLY = ("inner_conformity", "outer_conformity", "modulus", "poisson", "maker",
+BEARING_ONLY = ("inner_conformity", "outer_conformity", "modulus", "poisson", "ball_material", "maker",
                 "dynamic_rating", "rotating", *SERVICE_PARAMS)  # fmt: skip
 
 CLEARANCE_HELP = (
@@ -259,12 +259,24 @@ DECLARATIONS: dict[str, tuple[tuple[str, ...], dict[str, Any]]] = {
         "--modulus",
         type=Quantity("modulus"),
         library=("E1",),
-        help="Young's modulus E of balls and rings; default 208000 MPa (bearing steel). "
+        help="Young's modulus E of the rings (and of the balls unless --ball-material); default "
+        "208000 MPa (bearing steel). "
         f"Units: {units_help('modulus')} (bare number: MPa; "
         f"{plausible_ranges_help('modulus')}: 210 -> did you mean 210GPa?).",
     ),
     "poisson": _option(
-        "--poisson", type=float, library=("nu1",), help="Poisson's ratio nu; default 0.3."
+        "--poisson",
+        type=float,
+        library=("nu1",),
+        help="Poisson's ratio nu of the rings (and balls unless --ball-material); default 0.3.",
+    ),
+    "ball_material": _option(
+        "--ball-material",
+        help="Material of the balls: steel or si3n4 (silicon nitride, a hybrid bearing: E 310 "
+        "GPa, nu 0.26, 3200 kg/m^3, SKF). Its modulus and Poisson's ratio enter the Hertz "
+        "contact with the rings' (--modulus, --poisson stay the rings'), its density the ball "
+        "dynamics at --speed (--ball-density overrides it). Default: balls of the rings' "
+        "material. Example: solve 6205 -F 2kN --ball-material si3n4.",
     ),
     "maker": _option("--maker", help=MAKER_HELP),
     "cage_angle": _option(
@@ -319,7 +331,8 @@ DECLARATIONS: dict[str, tuple[tuple[str, ...], dict[str, Any]]] = {
         "--ball-density",
         type=click.FloatRange(min=0.0, min_open=True, max=1e5),
         help="Density of the balls in kg/m^3 for their centrifugal force and gyroscopic moment "
-        "at --speed (default bearing steel 7850; silicon nitride about 3200).",
+        "at --speed (default that of --ball-material, else bearing steel 7850; silicon "
+        "nitride about 3200).",
     ),
     "quasi_static": _option(
         "--quasi-static",
@@ -534,6 +547,7 @@ class CaseOptions:
     outer_conformity: float | None = None
     modulus: float | None = None
     poisson: float | None = None
+    ball_material: str | None = None
     maker: str | None = None
     cage_angle: float | str = 0.0
     exponent: float | None = None
@@ -643,6 +657,7 @@ class CaseOptions:
             "f_o": self.outer_conformity,
             "modulus": self.modulus,
             "poisson": self.poisson,
+            "ball_material": self.ball_material,
             "maker": self.maker,
             "stiffness": stiffness,
             "clearance": self.clearance,

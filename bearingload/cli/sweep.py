@@ -19,7 +19,7 @@ from bearingload.cli.plot import check_plot, save_plot
 #: The case options the dimensionless mode refuses (P = K = 1, the gap from T).
 KUROCHKIN_REFUSES = ("bearing", "load", "stiffness", "clearance", "plot", "ball_diameter",
                      "pitch_diameter", "inner_conformity", "outer_conformity", "modulus",
-                     "poisson", "maker", *COMBINED_PARAMS)  # fmt: skip
+                     "poisson", "ball_material", "maker", *COMBINED_PARAMS)  # fmt: skip
 
 #: Why sweep refuses the operating conditions of the modified lives (:data:`SERVICE_PARAMS`
 #: but --speed, which gives L10h and L10rh at every cage position).

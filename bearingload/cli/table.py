@@ -242,7 +242,7 @@ def table(
 
 
 #: The ball geometry and material options, which only a catalogue bearing's table takes.
-_GEOMETRY = ("inner_conformity", "outer_conformity", "modulus", "poisson")
+_GEOMETRY = ("inner_conformity", "outer_conformity", "modulus", "poisson", "ball_material")
 
 
 def _bearing_conditions(case: CaseOptions, k_given: float | None) -> Any:

@@ -310,7 +310,27 @@ def _notes(cases: Sequence[LoadedCase], records: Sequence[dict[str, Any]]) -> li
 
 
 def set_note(b: Any) -> list[str]:
-    """Where a catalogue bearing's ball (or roller) set comes from, in one line."""
+    """Where a catalogue bearing's ball (or roller) set comes from, in one line; and the balls'
+    material where one was given (a hybrid bearing)."""
+    return material_note(b) + _set_note(b)
+
+
+def material_note(b: Any) -> list[str]:
+    """The balls' material of ``b`` in one line, where --ball-material gave one."""
+    if getattr(b, "ball_material", None) is None:
+        return []
+    values = {p.key: p.value for p in b.provenance}
+    if "ball_modulus" not in values:
+        return []
+    return [
+        f"Balls: {values['ball_material']} (E = {values['ball_modulus']:.6g} MPa, nu = "
+        f"{values['ball_poisson']:.6g}, rho = {values['ball_material_density']:.6g} kg/m^3) on "
+        f"rings of E = {values['modulus']:.6g} MPa, nu = {values['poisson']:.6g}: contact "
+        f"modulus E* = {values['contact_modulus']:.6g} MPa (--ball-material)."
+    ]
+
+
+def _set_note(b: Any) -> list[str]:
     g = b.geometry
     if b.kind == "roller":
         z = next(p.source for p in b.provenance if p.key == "balls")

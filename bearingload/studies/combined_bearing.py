@@ -365,7 +365,8 @@ def _at_speed(
             "given ball stiffness: leave out the stiffness, or ask for the static model "
             "(speed None)",
         )
-    density = STEEL_DENSITY if density is None else density
+    if density is None:  # the balls' material (a hybrid's silicon nitride), else steel
+        density = STEEL_DENSITY if b.ball_density is None else b.ball_density
     return solve_high_speed(b.balls, load, axial_load, speed=speed, ball_density=density,
                             **common)  # fmt: skip
 
