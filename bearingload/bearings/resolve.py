@@ -53,6 +53,7 @@ from bearingload.bearings.clearance import (
 )
 from bearingload.bearings.materials import BallMaterial
 from bearingload.bearings.materials import ball_material as find_ball_material
+from bearingload.bearings.mounting import Mounting, check_mounting, mount
 from bearingload.bearings.resolved import (
     DEFAULT_MODULUS,
     DEFAULT_POISSON,
@@ -80,6 +81,12 @@ def resolve_bearing(
     clearance_pick: str = "mean",
     maker: str | None = None,
     ball_material: str | None = None,
+    shaft_fit: str | None = None,
+    housing_fit: str | None = None,
+    shaft_bore: float | None = None,
+    housing_diameter: float | None = None,
+    inner_ring_temperature: float | None = None,
+    outer_ring_temperature: float | None = None,
 ) -> ResolvedBearing:
     """Resolve a bearing for a calculation: geometry, K, G_r and the source of each.
 
@@ -113,6 +120,15 @@ def resolve_bearing(
         ``poisson`` become the equivalent pair of :func:`bearingload.contact.hertz.
         equivalent_material`), their density the ball dynamics at speed. None: the balls are
         of the rings' material (steel unless ``modulus``/``poisson`` say otherwise).
+    shaft_fit, housing_fit : str, optional
+        ISO 286 classes of the seats (``k5``, ``m6`` ...; ``H7``, ``N7`` ...): the bearing is
+        solved at its operating clearance (:mod:`bearingload.bearings.mounting`); its
+        ``clearance`` becomes that, ``mounting`` holds the unmounted one and the reductions.
+    shaft_bore, housing_diameter : float, optional
+        Bore d_0 of a hollow shaft and outside diameter D_h of the housing (none: solid shaft,
+        thick housing). [mm]
+    inner_ring_temperature, outer_ring_temperature : float, optional
+        The rings' temperatures in operation, both or neither (-60 to 250). [°C]
 
     Returns
     -------
@@ -126,13 +142,16 @@ def resolve_bearing(
         (``clearance``), bad modulus or Poisson's ratio.
     """
     _check_inputs(modulus, stiffness, ball_diameter, pitch_diameter, poisson, clearance_pick)
+    mounting = Mounting(shaft_fit, housing_fit, shaft_bore, housing_diameter,
+                        inner_ring_temperature, outer_ring_temperature)  # fmt: skip
+    check_mounting(mounting)
     spec = clearance if isinstance(clearance, ClearanceSpec) else parse_clearance(clearance)
     if designation is not None and _is_roller(designation):
         if ball_material is not None:
             raise InputError("ball_material", "a hybrid bearing is modelled for ball bearings "
                              "only: the roller contact is Palmgren's steel-on-steel law")  # fmt: skip
-        return _roller(designation, maker, balls, ball_diameter, pitch_diameter, modulus,
-                       poisson, stiffness, spec, clearance_pick)  # fmt: skip
+        return mount(_roller(designation, maker, balls, ball_diameter, pitch_diameter, modulus,
+                             poisson, stiffness, spec, clearance_pick), mounting)  # fmt: skip
     given = {"balls": balls, "ball_diameter": ball_diameter, "pitch_diameter": pitch_diameter,
              "f_i": f_i, "f_o": f_o}  # fmt: skip
     if designation is not None:
@@ -148,7 +167,8 @@ def resolve_bearing(
                     "an angular-contact bearing takes no clearance: the design contact angle "
                     "fixes its geometry",
                 )
-            return _angular(angular, given, modulus, poisson, stiffness, maker, ball_material)
+            b = _angular(angular, given, modulus, poisson, stiffness, maker, ball_material)
+            return mount(b, mounting)
     g = _ball_set(designation, maker, given, stiffness)
     prov = g.provenance + _ball_set_provenance(g, given)
     e = DEFAULT_MODULUS if modulus is None else float(modulus)
@@ -182,7 +202,7 @@ def resolve_bearing(
             Provenance("C", "dynamic load rating C", c, "N", _rating_source(geom, c)),
             Provenance("C0", "static load rating C0", c0, "N", _rating_source(geom, c0)),
         ]
-    return ResolvedBearing(
+    return mount(ResolvedBearing(
         designation=designation, geometry=geom, balls=g.z, ball_diameter=g.dw,
         pitch_diameter=g.dm, f_i=g.fi, f_o=g.fo, modulus=e, poisson=nu, stiffness=k,
         stiffness_inner=k_i, stiffness_outer=k_o, stiffness_given=stiffness is not None,
@@ -190,7 +210,7 @@ def resolve_bearing(
         C=c, C0=c0, provenance=tuple(prov), sources=tuple(sources),
         ball_material=None if material is None else material.name,
         ball_density=None if material is None else material.density * 1e-9,
-    )  # fmt: skip
+    ), mounting)  # fmt: skip
 
 
 def contact_pair(e: float, nu: float, balls: BallMaterial | None) -> tuple[float, float]:

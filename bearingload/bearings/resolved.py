@@ -118,6 +118,9 @@ class ResolvedBearing:
     contact_angle: float | None = None
     ball_material: str | None = None
     ball_density: float | None = None
+    #: The mounting (:class:`bearingload.bearings.mounting.MountedClearance`): where given,
+    #: ``clearance`` is the operating clearance and this holds the unmounted one. None: as bought.
+    mounting: Any = None
 
     @property
     def has_geometry(self) -> bool:
@@ -155,7 +158,14 @@ class ResolvedBearing:
             else p
             for p in self.provenance
         )
-        return dataclasses.replace(self, clearance=value, clearance_pick=pick, provenance=prov)
+        b = dataclasses.replace(
+            self, clearance=value, clearance_pick=pick, provenance=prov, mounting=None
+        )
+        if self.mounting is None:
+            return b
+        from bearingload.bearings.mounting import mount
+
+        return mount(b, self.mounting.mounting)
 
     def with_dynamic_rating(self, rating: float) -> ResolvedBearing:
         """The same bearing with its basic dynamic load rating C replaced by a given one. [N]"""

@@ -8,6 +8,8 @@ import click
 
 from bearingload.cli.case_options import (
     COMBINED_PARAMS,
+    MOUNTING_PARAMS,
+    MOUNTING_REFUSAL,
     SERVICE_PARAMS,
     CaseOptions,
     case_options,
@@ -131,6 +133,7 @@ def sweep(
         "an angular-contact designation (7205B; docs/angular_contact.md)",
     )
     case.refuse([n for n in SERVICE_PARAMS if n != "speed"], "sweep", SERVICE_REFUSAL)
+    case.refuse(MOUNTING_PARAMS, "sweep", MOUNTING_REFUSAL)
     if kurochkin_t is not None:
         _kurochkin(case, kurochkin_t, steps, plot, fmt, output)
         return

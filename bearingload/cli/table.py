@@ -10,6 +10,8 @@ import click
 from bearingload.cli.case_options import (
     COMBINED_PARAMS,
     DYNAMICS_PARAMS,
+    MOUNTING_PARAMS,
+    MOUNTING_REFUSAL,
     CaseOptions,
     Clearance,
     case_options,
@@ -175,6 +177,7 @@ def table(
         "angular-contact designation (7205B) by 'solve', 'sweep' and 'batch' "
         "(docs/angular_contact.md)",
     )
+    case.refuse(MOUNTING_PARAMS, f"table {name}", MOUNTING_REFUSAL)
     if name != "life":
         case.refuse(DYNAMICS_PARAMS, f"table {name}", DYNAMICS_REFUSAL)
     from bearingload.bearings.angular import parse_angular

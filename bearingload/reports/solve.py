@@ -21,6 +21,7 @@ from __future__ import annotations
 from collections.abc import Sequence
 from typing import Any
 
+from bearingload.bearings.mounting import RESULT_KEYS, mounting_notes
 from bearingload.reports.quantities import (
     QUANTITIES,
     SERVICE_KEYS,
@@ -73,6 +74,7 @@ ANSWER_KEYS = (
 #: The answer of solve's own report: :data:`ANSWER_KEYS` (batch's columns too) with the lives of
 #: :func:`bearingload.bearings.service_life.service_values` (C_0, hours, a_ISO, film) beside them.
 REPORT_KEYS = (
+    *RESULT_KEYS,  # a mounted bearing's operating clearance and its reductions
     *ANSWER_KEYS[: ANSWER_KEYS.index("static_safety") + 1],
     "static_rating",
     "rating_life",
@@ -302,7 +304,7 @@ def _notes(cases: Sequence[LoadedCase], records: Sequence[dict[str, Any]]) -> li
             "life L10 = (C/F_r)^(10/3) and allowable load C/L^(3/10) (ISO 281, p = 10/3)."
         )
     if b is not None:
-        notes += set_note(b)
+        notes += set_note(b) + mounting_notes(b)
         src = next((p.source for p in b.provenance if p.key == "clearance"), "")
         notes.append(f"G_r: {src}.")
         notes.append("--show-geometry lists the geometry used and the source of every value.")

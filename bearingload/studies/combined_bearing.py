@@ -20,6 +20,7 @@ from typing import TYPE_CHECKING, Any
 
 import numpy as np
 
+from bearingload.bearings.mounting import result_fields
 from bearingload.bearings.resolve import ResolvedBearing
 from bearingload.errors import InputError
 
@@ -529,6 +530,7 @@ def case_columns(
         "rotating": rotating,
         "stiffness": arr(b.stiffness),
         "clearance": arr(r.clearance),
+        **{k: arr(v) for k, v in result_fields(b).items()},
         "clearance_pick": b.clearance_pick,
         "cage_angle": arr(r.cage_angle),
         **({} if b.contact_angle is None else {"contact_angle": arr(b.contact_angle)}),
