@@ -106,3 +106,11 @@ def test_a_roller_bearing_and_a_ring_by_hand_refuse_a_ball_material():
     out = invoke("solve", "-z", "9", "-K", "1e5", "-F", "1kN", "--ball-material", "si3n4")
     assert out.exit_code == 2 and "--ball-material" in out.output
     assert math.isfinite(resolve_bearing("7205B", ball_material="si3n4").stiffness)
+
+
+def test_a_hybrid_pair_solves_with_the_hybrid_contact_and_prints_its_material():
+    out = invoke("solve", "7205BDB", "-F", "2kN", "-A", "500N", "--ball-material", "si3n4")
+    assert out.exit_code == 0, out.output
+    assert "Balls: silicon nitride Si3N4" in out.output
+    steel = invoke("solve", "7205BDB", "-F", "2kN", "-A", "500N")
+    assert "Balls:" not in steel.output and steel.output != out.output
