@@ -189,6 +189,8 @@ def test_hollow_shaft_and_thin_housing_take_less():
          "inner_ring_temperature", "-60 to 250 °C"),
         ({"inner_ring_temperature": 30.0}, "outer_ring_temperature", "together"),
         ({"shaft_fit": "k5", "shaft_bore": 30.0}, "shaft_bore", "less than the bearing's bore"),
+        ({"shaft_bore": 10.0}, "shaft_bore", "without one"),
+        ({"housing_diameter": 80.0}, "housing_diameter", "housing fit"),
     ],
 )  # fmt: skip
 def test_bad_mountings_are_refused_naming_what_is_allowed(kwargs, parameter, words):

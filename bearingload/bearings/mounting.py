@@ -173,7 +173,7 @@ def thermal_reduction(inner: float, outer: float, raceway: float) -> float:
 def check_mounting(m: Mounting) -> None:
     """Refuse what no bearing can be mounted with: a fit class not taken, one ring
     temperature without the other, a temperature outside -60 to 250 °C, a bore or diameter
-    that is not a positive length.
+    that is not a positive length, or given without its fit.
 
     Raises
     ------
@@ -191,6 +191,10 @@ def check_mounting(m: Mounting) -> None:
         value = getattr(m, name)
         if value is not None and not (math.isfinite(value) and value > 0.0):
             raise InputError(name, f"must be a length greater than 0 mm (got {value!r})")
+    for wall, fit in (("shaft_bore", "shaft_fit"), ("housing_diameter", "housing_fit")):
+        if getattr(m, wall) is not None and getattr(m, fit) is None:
+            raise InputError(wall, f"it changes what the {fit.replace('_', ' ')} takes; without "
+                             "one (a loose seat) it would be ignored")  # fmt: skip
     temps = ("inner_ring_temperature", "outer_ring_temperature")
     for name in temps:
         if getattr(m, name) is not None:
