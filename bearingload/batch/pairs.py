@@ -61,12 +61,14 @@ def pair_columns(service: set[str] | None) -> list[Any]:
     keys they make, :func:`bearingload.batch.report.batch_columns`; None: every one), the
     pair's as ``pair_...`` (the pair's cross moment in ``pair_moment_cross``; a bearing's
     record has no ``moment_cross``)."""
+    from bearingload.bearings.mounting import RESULT_KEYS
     from bearingload.reports.pair import OWN_KEYS, PAIR_SERVICE, csv_columns
     from bearingload.reports.quantities import SERVICE_KEYS
     from bearingload.reports.solve import column
 
     unused = {*SERVICE_KEYS, "ball_density", "rating_life_hours", "reference_rating_life_hours"}
-    unused = {"moment_cross"} | (set() if service is None else unused - service)
+    # a pair takes no mounting (bearings.mounting refuses it): no operating clearance
+    unused = {"moment_cross", *RESULT_KEYS} | (set() if service is None else unused - service)
     pair = [k for k in PAIR_SERVICE if service is None or k in service]
     return [column("row"), *csv_columns(pair, [k for k in OWN_KEYS if k not in unused])]
 

@@ -15,6 +15,7 @@ from collections.abc import Iterator, Sequence
 from dataclasses import dataclass, field
 from typing import Any, BinaryIO
 
+from bearingload.bearings.mounting import MOUNTING_PARAMS
 from bearingload.errors import InputError
 
 #: Rows read, solved and written at a time (memory stays flat however long the file).
@@ -31,6 +32,13 @@ COLUMNS: dict[str, str] = {
     "outer_conformity": "number",
     "modulus": "modulus",
     "poisson": "number",
+    "ball_material": "text",
+    "shaft_fit": "text",
+    "housing_fit": "text",
+    "shaft_bore": "length",
+    "housing_diameter": "length",
+    "inner_ring_temperature": "temperature",
+    "outer_ring_temperature": "temperature",
     "clearance": "clearance",
     "clearance_pick": "pick",
     "cage_angle": "cage_angle",
@@ -110,7 +118,8 @@ COMBINED_COLUMNS = (*LOAD_COLUMNS, "tilt_radius")
 NOT_COMBINED = ("method", "revolutions", "exponent")
 #: Columns that make a row a bearing (resolved by bearings.resolve) rather than a bare ring.
 BEARING_COLUMNS = ("bearing", "ball_diameter", "pitch_diameter", "inner_conformity",
-                   "outer_conformity", "modulus", "poisson", "clearance_pick", "revolutions")  # fmt: skip
+                   "outer_conformity", "modulus", "poisson", "ball_material", "clearance_pick",
+                   "revolutions", *MOUNTING_PARAMS)  # fmt: skip
 #: Library parameter names -> the column of a batch file they come from: a skipped row's
 #: reason names the column the user wrote (as the command line names the option).
 _COLUMN_OF = {

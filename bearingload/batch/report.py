@@ -18,6 +18,7 @@ from collections.abc import Sequence
 from typing import Any
 
 from bearingload.batch.read import Header
+from bearingload.bearings.mounting import MOUNTING_PARAMS, RESULT_KEYS
 from bearingload.bearings.oil import OIL_INPUTS
 from bearingload.reports.quantities import SERVICE_KEYS, units
 from bearingload.reports.render import Column, Table, csv_block, csv_header, render
@@ -48,8 +49,8 @@ _COMBINED_IF_GIVEN = ("moment_cross", "contact_angle")
 COMBINED_KEYS = (
     "bearing", "method", "balls", "load", "axial_load", "moment", "moment_cross",
     "misalignment", "contact_angle", "tilt_radius", "rotating", "stiffness", "clearance",
-    "clearance_pick", "cage_angle", "q_max", "loaded_balls", "p_max_inner", "p_max_outer",
-    "static_equivalent_load", "static_safety", "static_rating", "contact_angle_max",
+    "clearance_pick", "cage_angle", *RESULT_KEYS, "q_max", "loaded_balls", "p_max_inner",
+    "p_max_outer", "static_equivalent_load", "static_safety", "static_rating", "contact_angle_max",
     "free_contact_angle", "axial_play", "x", "y", "axial", "tilt", "tilt_cross",
     "stiffness_radial", "stiffness_axial", "stiffness_tilt", "reference_rating_life",
     "reference_rating_life_hours", "dynamic_rating", "equivalent_load", "rating_life",
@@ -120,6 +121,8 @@ def batch_columns(header: Header) -> list[Column]:
 def _columns(header: Header) -> list[Column]:
     service = set(SERVICE_KEYS) | {"rating_life_hours", "reference_rating_life_hours",
                                    "ball_density"}  # fmt: skip
+    if not any(n in header.names for n in MOUNTING_PARAMS):  # no mounting: as bought
+        service |= set(RESULT_KEYS)
     wanted = _service_outputs(header)
     if header.combined:  # the columns of solve's csv with an axial load, every one
         given = [k for k in COMBINED_KEYS if k not in _COMBINED_IF_GIVEN or k in header.names]

@@ -35,6 +35,7 @@ from bearingload.batch.read import (
     read_column,
     row_message,
 )
+from bearingload.bearings.mounting import MOUNTING_PARAMS
 from bearingload.bearings.oil import OIL_INPUTS
 from bearingload.errors import BearingloadError, ConvergenceError, InputError
 
@@ -53,7 +54,8 @@ class Chunk:
 #: Cells that make a row a bearing (resolved) rather than a ring given by z and K.
 _GEOMETRY = ("bearing", "ball_diameter", "pitch_diameter")
 #: Cells of a bearing that a ring given by z and K cannot use.
-_BEARING_ONLY = ("inner_conformity", "outer_conformity", "modulus", "poisson", "clearance_pick",
+_BEARING_ONLY = ("inner_conformity", "outer_conformity", "modulus", "poisson", "ball_material",
+                 *MOUNTING_PARAMS, "clearance_pick",
                  "revolutions", "rotating", "dynamic_rating", "static_rating",
                  *SERVICE_COLUMNS)  # fmt: skip
 _TILT_ALONE = (
@@ -281,7 +283,8 @@ class BatchSolver:
         args = {"balls": v.get("balls"), "ball_diameter": v.get("ball_diameter"),
                 "pitch_diameter": v.get("pitch_diameter"), "f_i": v.get("inner_conformity"),
                 "f_o": v.get("outer_conformity"), "modulus": v.get("modulus"),
-                "poisson": v.get("poisson"), "stiffness": v.get("stiffness"),
+                "poisson": v.get("poisson"), "ball_material": v.get("ball_material"),
+                "stiffness": v.get("stiffness"), **{n: v.get(n) for n in MOUNTING_PARAMS},
                 "clearance": v.get("clearance"), "clearance_pick": v.get("clearance_pick", "mean")}  # fmt: skip
         if args["balls"] is not None:
             args["balls"] = int(args["balls"])

@@ -279,6 +279,9 @@ def _speed_text(speed: float, limit: float) -> str:
 
 
 def clearance_findings(bearing: ResolvedBearing) -> list[str]:
+    mounted = bearing.mounting.warning() if bearing.mounting is not None else None
+    if mounted is not None:  # the preload of the mounting, named with its causes
+        return [mounted]
     if bearing.kind != "ball" or bearing.geometry is None:
         return []
     from bearingload.bearings.clearance import clearance_range

@@ -51,6 +51,9 @@ from bearingload.bearings.clearance import (
     parse_clearance,
     picks_of,
 )
+from bearingload.bearings.materials import BallMaterial
+from bearingload.bearings.materials import ball_material as find_ball_material
+from bearingload.bearings.mounting import Mounting, check_mounting, mount
 from bearingload.bearings.resolved import (
     DEFAULT_MODULUS,
     DEFAULT_POISSON,
@@ -77,6 +80,13 @@ def resolve_bearing(
     clearance: str | float | ClearanceSpec | None = None,
     clearance_pick: str = "mean",
     maker: str | None = None,
+    ball_material: str | None = None,
+    shaft_fit: str | None = None,
+    housing_fit: str | None = None,
+    shaft_bore: float | None = None,
+    housing_diameter: float | None = None,
+    inner_ring_temperature: float | None = None,
+    outer_ring_temperature: float | None = None,
 ) -> ResolvedBearing:
     """Resolve a bearing for a calculation: geometry, K, G_r and the source of each.
 
@@ -91,9 +101,10 @@ def resolve_bearing(
     f_i, f_o : float, optional
         Inner and outer groove conformity r / D_w. [-]
     modulus : float, optional
-        Young's modulus E of balls and rings; default 208 000. [MPa]
+        Young's modulus E of the rings (and of the balls without ``ball_material``); default
+        208 000. [MPa]
     poisson : float, optional
-        Poisson's ratio nu; default 0.3. [-]
+        Poisson's ratio nu of the rings (and balls, as ``modulus``); default 0.3. [-]
     stiffness : float, optional
         Ball stiffness K replacing the Hertz value. [N/mm^1.5]
     clearance : str, float or ClearanceSpec, optional
@@ -103,6 +114,21 @@ def resolve_bearing(
     maker : str, optional
         Whose ball set (``NSK`` default, ``NTN``, ``SKF``, ``GMN``, ``GOST`` ...), see
         :func:`bearingload.bearings.catalog.variant`.
+    ball_material : {"steel", "si3n4"}, optional
+        The balls' material (:mod:`bearingload.bearings.materials`): their modulus and
+        Poisson's ratio enter the Hertz contact with the rings' (the bearing's ``modulus`` and
+        ``poisson`` become the equivalent pair of :func:`bearingload.contact.hertz.
+        equivalent_material`), their density the ball dynamics at speed. None: the balls are
+        of the rings' material (steel unless ``modulus``/``poisson`` say otherwise).
+    shaft_fit, housing_fit : str, optional
+        ISO 286 classes of the seats (``k5``, ``m6`` ...; ``H7``, ``N7`` ...): the bearing is
+        solved at its operating clearance (:mod:`bearingload.bearings.mounting`); its
+        ``clearance`` becomes that, ``mounting`` holds the unmounted one and the reductions.
+    shaft_bore, housing_diameter : float, optional
+        Bore d_0 of a hollow shaft and outside diameter D_h of the housing (none: solid shaft,
+        thick housing). [mm]
+    inner_ring_temperature, outer_ring_temperature : float, optional
+        The rings' temperatures in operation, both or neither (-60 to 250). [°C]
 
     Returns
     -------
@@ -116,10 +142,16 @@ def resolve_bearing(
         (``clearance``), bad modulus or Poisson's ratio.
     """
     _check_inputs(modulus, stiffness, ball_diameter, pitch_diameter, poisson, clearance_pick)
+    mounting = Mounting(shaft_fit, housing_fit, shaft_bore, housing_diameter,
+                        inner_ring_temperature, outer_ring_temperature)  # fmt: skip
+    check_mounting(mounting)
     spec = clearance if isinstance(clearance, ClearanceSpec) else parse_clearance(clearance)
     if designation is not None and _is_roller(designation):
-        return _roller(designation, maker, balls, ball_diameter, pitch_diameter, modulus,
-                       poisson, stiffness, spec, clearance_pick)  # fmt: skip
+        if ball_material is not None:
+            raise InputError("ball_material", "a hybrid bearing is modelled for ball bearings "
+                             "only: the roller contact is Palmgren's steel-on-steel law")  # fmt: skip
+        return mount(_roller(designation, maker, balls, ball_diameter, pitch_diameter, modulus,
+                             poisson, stiffness, spec, clearance_pick), mounting)  # fmt: skip
     given = {"balls": balls, "ball_diameter": ball_diameter, "pitch_diameter": pitch_diameter,
              "f_i": f_i, "f_o": f_o}  # fmt: skip
     if designation is not None:
@@ -135,16 +167,19 @@ def resolve_bearing(
                     "an angular-contact bearing takes no clearance: the design contact angle "
                     "fixes its geometry",
                 )
-            return _angular(angular, given, modulus, poisson, stiffness, maker)
+            b = _angular(angular, given, modulus, poisson, stiffness, maker, ball_material)
+            return mount(b, mounting)
     g = _ball_set(designation, maker, given, stiffness)
     prov = g.provenance + _ball_set_provenance(g, given)
     e = DEFAULT_MODULUS if modulus is None else float(modulus)
     nu = DEFAULT_POISSON if poisson is None else float(poisson)
+    material = None if ball_material is None else find_ball_material(ball_material)
     k_i = k_o = k_hertz = None
     if g.dw is not None and g.dm is not None and g.fi is not None and g.fo is not None:
         from bearingload.contact.hertz import ball_stiffness
 
-        prov += _material_provenance(e, nu, modulus, poisson)
+        prov += _material_provenance(e, nu, modulus, poisson, material)
+        e, nu = contact_pair(e, nu, material)
         ks = ball_stiffness(g.dw, g.dm, g.fi, g.fo, e, nu)
         k_i, k_o, k_hertz = float(ks.inner), float(ks.outer), float(ks.ball)
         prov += [
@@ -167,13 +202,26 @@ def resolve_bearing(
             Provenance("C", "dynamic load rating C", c, "N", _rating_source(geom, c)),
             Provenance("C0", "static load rating C0", c0, "N", _rating_source(geom, c0)),
         ]
-    return ResolvedBearing(
+    return mount(ResolvedBearing(
         designation=designation, geometry=geom, balls=g.z, ball_diameter=g.dw,
         pitch_diameter=g.dm, f_i=g.fi, f_o=g.fo, modulus=e, poisson=nu, stiffness=k,
         stiffness_inner=k_i, stiffness_outer=k_o, stiffness_given=stiffness is not None,
         clearance=g_r, clearance_class=cls, clearance_range=rng, clearance_pick=pick,
         C=c, C0=c0, provenance=tuple(prov), sources=tuple(sources),
-    )  # fmt: skip
+        ball_material=None if material is None else material.name,
+        ball_density=None if material is None else material.density * 1e-9,
+    ), mounting)  # fmt: skip
+
+
+def contact_pair(e: float, nu: float, balls: BallMaterial | None) -> tuple[float, float]:
+    """The (modulus, poisson) the contacts use: the rings' (E, nu) where the balls are of
+    the rings' material (``balls`` None), else the equivalent pair of the hybrid contact
+    (:func:`bearingload.contact.hertz.equivalent_material`). [MPa], [-]"""
+    from bearingload.contact.hertz import equivalent_material
+
+    if balls is None:
+        return e, nu
+    return equivalent_material(e, nu, balls.modulus, balls.poisson)
 
 
 #: The contact of each kind of bearing, which gives its load-deflection exponent m of
@@ -379,14 +427,32 @@ def _ball_set_provenance(g: _BallSet, given: dict[str, Any]) -> list[Provenance]
 
 
 def _material_provenance(
-    e: float, nu: float, modulus: float | None, poisson: float | None
-) -> list[Provenance]:
+    e: float, nu: float, modulus: float | None, poisson: float | None,
+    balls: BallMaterial | None = None,
+) -> list[Provenance]:  # fmt: skip
     e_src = "given" if modulus is not None else "default: bearing steel (NSK 208 000 MPa)"
     nu_src = "given" if poisson is not None else "default: steel"
+    if balls is None:
+        return [
+            Provenance("modulus", "Young's modulus E", e, "MPa", e_src),
+            Provenance("poisson", "Poisson's ratio nu", nu, "", nu_src),
+        ]
+    from bearingload.contact.hertz import reduced_modulus
+
+    e_star = float(reduced_modulus(e, nu, balls.modulus, balls.poisson))
     return [
-        Provenance("modulus", "Young's modulus E", e, "MPa", e_src),
-        Provenance("poisson", "Poisson's ratio nu", nu, "", nu_src),
-    ]
+        Provenance("modulus", "Young's modulus E of the rings", e, "MPa", e_src),
+        Provenance("poisson", "Poisson's ratio nu of the rings", nu, "", nu_src),
+        Provenance("ball_material", "ball material", balls.title, "", "given (--ball-material)"),
+        Provenance("ball_modulus", "Young's modulus E of the balls", balls.modulus, "MPa",
+                   balls.source),
+        Provenance("ball_poisson", "Poisson's ratio nu of the balls", balls.poisson, "",
+                   balls.source),
+        Provenance("ball_material_density", "density of the balls", balls.density, "kg/m^3",
+                   balls.source),
+        Provenance("contact_modulus", "contact modulus E* (balls on rings)", e_star, "MPa",
+                   "1/E* = (1 - nu_r^2)/E_r + (1 - nu_b^2)/E_b"),
+    ]  # fmt: skip
 
 
 def _f_source(geom: BearingGeometry | None, field: str) -> str:
@@ -449,7 +515,7 @@ def _rating_source(geom: BearingGeometry, value: float | None) -> str:
 
 def _angular(
     parsed: Any, given: dict[str, Any], modulus: float | None, poisson: float | None,
-    stiffness: float | None, maker: str | None = None,
+    stiffness: float | None, maker: str | None = None, ball_material: str | None = None,
 ) -> ResolvedBearing:  # fmt: skip
     """An angular-contact bearing of the catalogue (:mod:`bearingload.bearings.angular`): its
     row, with the values given by hand replacing the row's, at its nominal contact angle, no
@@ -470,7 +536,8 @@ def _angular(
 
     check_geometry(row.d, row.D, z, dw, dm, fi, fo)  # values given by hand must fit the rings
     b = resolve_bearing(balls=z, ball_diameter=dw, pitch_diameter=dm, f_i=fi, f_o=fo,
-                        modulus=modulus, poisson=poisson, stiffness=stiffness)  # fmt: skip
+                        modulus=modulus, poisson=poisson, stiffness=stiffness,
+                        ball_material=ball_material)  # fmt: skip
     name = Designation(parsed.text, parsed.standard, parsed.series, parsed.bore_code, parsed.bore,
                        row.designation, row.designation if parsed.standard == "GOST" else None)  # fmt: skip
     overrides = tuple(k for k in set_ if given[k] is not None)

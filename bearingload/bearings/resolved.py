@@ -49,9 +49,13 @@ class ResolvedBearing:
     f_i, f_o : float or None
         Groove conformities r / D_w. [-]
     modulus : float
-        Young's modulus E of balls and rings. [MPa]
+        Young's modulus E of balls and rings; for a hybrid bearing (``ball_material``) the E of
+        the one material whose contact with itself has the balls-on-rings E*
+        (:func:`bearingload.contact.hertz.equivalent_material`), so every Hertz use of
+        (modulus, poisson) is exact; the rings' and balls' own values are in ``provenance``.
+        [MPa]
     poisson : float
-        Poisson's ratio nu. [-]
+        Poisson's ratio nu (of that equivalent material for a hybrid). [-]
     stiffness : float
         Ball stiffness K, both contacts in series, Q = K delta^1.5. [N/mm^1.5]
     stiffness_inner, stiffness_outer : float or None
@@ -74,6 +78,12 @@ class ResolvedBearing:
         Load-deflection exponent m of Q = K delta^m: 1.5 balls, 10/9 rollers. [-]
     roller_length : float or None
         Effective roller length L_we of a roller bearing. [mm]
+    ball_material : str or None
+        The balls' material given (``steel``, ``si3n4``; :mod:`bearingload.bearings.
+        materials`); None: the balls are of the rings' material.
+    ball_density : float or None
+        Density of the balls of ``ball_material`` for the ball dynamics (None: bearing
+        steel). [kg/mm^3]
     provenance : tuple of Provenance
         Every value above with its source, in display order.
     sources : tuple of str
@@ -106,6 +116,11 @@ class ResolvedBearing:
     roller_length: float | None = None
     #: Design contact angle alpha_0 of an angular-contact ball bearing (None: deep groove). [°]
     contact_angle: float | None = None
+    ball_material: str | None = None
+    ball_density: float | None = None
+    #: The mounting (:class:`bearingload.bearings.mounting.MountedClearance`): where given,
+    #: ``clearance`` is the operating clearance and this holds the unmounted one. None: as bought.
+    mounting: Any = None
 
     @property
     def has_geometry(self) -> bool:
@@ -143,7 +158,14 @@ class ResolvedBearing:
             else p
             for p in self.provenance
         )
-        return dataclasses.replace(self, clearance=value, clearance_pick=pick, provenance=prov)
+        b = dataclasses.replace(
+            self, clearance=value, clearance_pick=pick, provenance=prov, mounting=None
+        )
+        if self.mounting is None:
+            return b
+        from bearingload.bearings.mounting import mount
+
+        return mount(b, self.mounting.mounting)
 
     def with_dynamic_rating(self, rating: float) -> ResolvedBearing:
         """The same bearing with its basic dynamic load rating C replaced by a given one. [N]"""

@@ -41,8 +41,10 @@ def batch(
     CASES.csv ('-': standard input) names its columns like the options of 'solve': load
     (required), balls and stiffness, or bearing (a catalogue designation) and/or the ball
     geometry (ball_diameter, pitch_diameter, inner_conformity, outer_conformity, modulus,
-    poisson), clearance (a length or a class C2 CN C3 C4 C5) with clearance_pick (min, mean,
-    max), cage_angle (degrees or 'half'), exponent, method, revolutions. A missing column or
+    poisson, ball_material: steel or si3n4), the mounting (shaft_fit, housing_fit, shaft_bore,
+    housing_diameter, inner_ring_temperature, outer_ring_temperature: solve's options; the row
+    is solved at the operating clearance), clearance (a length or a class C2 CN C3 C4 C5)
+    with clearance_pick (min, mean, max), cage_angle (degrees or 'half'), exponent, method, revolutions. A missing column or
     an empty cell takes solve's default. A unit in the header (load [kN]) is the unit of the
     column's bare numbers; a number with its own unit (300kgf) keeps it. An unknown column is
     an error (exit 2).

@@ -25,6 +25,7 @@ from typing import Any
 
 import click
 
+from bearingload.bearings.mounting import MOUNTING_PARAMS
 from bearingload.cli.options import (
     CageAngle,
     Exponent,
@@ -60,8 +61,14 @@ OIL_PARAMS = ("oil", "viscosity_40", "viscosity_100", "viscosity_index", "temper
 LIFE_PARAMS = ("dynamic_rating", "rotating", *SERVICE_PARAMS)
 #: The combined-load options, in the order a refusal names the first one given.
 COMBINED_PARAMS = LOAD_PARAMS + TILT_PARAMS + LIFE_PARAMS
+#: Why sweep and table refuse the mounting options (solve and batch take them).
+MOUNTING_REFUSAL = (
+    "the operating clearance of a mounted bearing is solve's and batch's (docs/mounting.md); "
+    "'bearingload solve' prints it: give it here with -G"
+)
 #: The options only a bearing or its ball geometry uses, refused for a ring given by z and K.
-BEARING_ONLY = ("inner_conformity", "outer_conformity", "modulus", "poisson", "maker",
+BEARING_ONLY = ("inner_conformity", "outer_conformity", "modulus", "poisson", "ball_material",
+                *MOUNTING_PARAMS, "maker",
                 "dynamic_rating", "rotating", *SERVICE_PARAMS)  # fmt: skip
 
 CLEARANCE_HELP = (
@@ -230,6 +237,43 @@ DECLARATIONS: dict[str, tuple[tuple[str, ...], dict[str, Any]]] = {
         help="Where in a clearance class to take G_r; 'range' (solve): at min, mean and max, "
         "side by side.",
     ),
+    "shaft_fit": _option(
+        "--shaft-fit",
+        help="ISO 286 class of the shaft seat (j5 j6 k5 k6 m5 m6 n5 n6 p5 p6): with the bearing's "
+        "ISO 492 Normal bore tolerance it gives the inner ring's interference, which takes "
+        "clearance; the case is solved at the operating clearance (docs/mounting.md). Example: "
+        "solve 6205 -F 2kN -G C3 --shaft-fit k5 --inner-ring-temperature 50 "
+        "--outer-ring-temperature 40.",
+    ),
+    "housing_fit": _option(
+        "--housing-fit",
+        help="ISO 286 class of the housing bore (H6 H7 J7 K6 K7 M6 M7 N6 N7 P6 P7), against the "
+        "bearing's ISO 492 Normal outside diameter: an interference shrinks the outer raceway.",
+    ),
+    "shaft_bore": _option(
+        "--shaft-bore",
+        type=Quantity("length", positive=True),
+        help="Bore d_0 of a hollow shaft under --shaft-fit (default a solid shaft): a thinner "
+        "shaft lets the inner ring grow less. Bare number: mm.",
+    ),
+    "housing_diameter": _option(
+        "--housing-diameter",
+        type=Quantity("length", positive=True),
+        help="Outside diameter D_h of the housing wall under --housing-fit (default a housing "
+        "thick enough to count as infinite). Bare number: mm.",
+    ),
+    "inner_ring_temperature": _option(
+        "--inner-ring-temperature",
+        type=Temperature(),
+        help="Temperature of the inner ring (and balls) in operation, with "
+        "--outer-ring-temperature: a warmer inner ring takes clearance, alpha (t_i - t_o) E "
+        "(-60 to 250 °C; bare number: °C, K kelvin).",
+    ),
+    "outer_ring_temperature": _option(
+        "--outer-ring-temperature",
+        type=Temperature(),
+        help="Temperature of the outer ring in operation, with --inner-ring-temperature.",
+    ),
     "ball_diameter": _option(
         "--ball-diameter",
         type=Quantity("length"),
@@ -259,12 +303,24 @@ DECLARATIONS: dict[str, tuple[tuple[str, ...], dict[str, Any]]] = {
         "--modulus",
         type=Quantity("modulus"),
         library=("E1",),
-        help="Young's modulus E of balls and rings; default 208000 MPa (bearing steel). "
+        help="Young's modulus E of the rings (and of the balls unless --ball-material); default "
+        "208000 MPa (bearing steel). "
         f"Units: {units_help('modulus')} (bare number: MPa; "
         f"{plausible_ranges_help('modulus')}: 210 -> did you mean 210GPa?).",
     ),
     "poisson": _option(
-        "--poisson", type=float, library=("nu1",), help="Poisson's ratio nu; default 0.3."
+        "--poisson",
+        type=float,
+        library=("nu1",),
+        help="Poisson's ratio nu of the rings (and balls unless --ball-material); default 0.3.",
+    ),
+    "ball_material": _option(
+        "--ball-material",
+        help="Material of the balls: steel or si3n4 (silicon nitride, a hybrid bearing: E 310 "
+        "GPa, nu 0.26, 3200 kg/m^3, SKF). Its modulus and Poisson's ratio enter the Hertz "
+        "contact with the rings' (--modulus, --poisson stay the rings'), its density the ball "
+        "dynamics at --speed (--ball-density overrides it). Default: balls of the rings' "
+        "material. Example: solve 6205 -F 2kN --ball-material si3n4.",
     ),
     "maker": _option("--maker", help=MAKER_HELP),
     "cage_angle": _option(
@@ -319,7 +375,8 @@ DECLARATIONS: dict[str, tuple[tuple[str, ...], dict[str, Any]]] = {
         "--ball-density",
         type=click.FloatRange(min=0.0, min_open=True, max=1e5),
         help="Density of the balls in kg/m^3 for their centrifugal force and gyroscopic moment "
-        "at --speed (default bearing steel 7850; silicon nitride about 3200).",
+        "at --speed (default that of --ball-material, else bearing steel 7850; silicon "
+        "nitride about 3200).",
     ),
     "quasi_static": _option(
         "--quasi-static",
@@ -528,12 +585,19 @@ class CaseOptions:
     stiffness: str | None = None
     clearance: Any = None
     clearance_pick: str = "mean"
+    shaft_fit: str | None = None
+    housing_fit: str | None = None
+    shaft_bore: float | None = None
+    housing_diameter: float | None = None
+    inner_ring_temperature: float | None = None
+    outer_ring_temperature: float | None = None
     ball_diameter: float | None = None
     pitch_diameter: float | None = None
     inner_conformity: float | None = None
     outer_conformity: float | None = None
     modulus: float | None = None
     poisson: float | None = None
+    ball_material: str | None = None
     maker: str | None = None
     cage_angle: float | str = 0.0
     exponent: float | None = None
@@ -643,11 +707,13 @@ class CaseOptions:
             "f_o": self.outer_conformity,
             "modulus": self.modulus,
             "poisson": self.poisson,
+            "ball_material": self.ball_material,
             "maker": self.maker,
             "stiffness": stiffness,
             "clearance": self.clearance,
             "clearance_pick": self.clearance_pick,
             "exponent": self.exponent,
+            **{name: getattr(self, name) for name in MOUNTING_PARAMS},
         }
 
     def operating(self) -> Any:

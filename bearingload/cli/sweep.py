@@ -8,6 +8,8 @@ import click
 
 from bearingload.cli.case_options import (
     COMBINED_PARAMS,
+    MOUNTING_PARAMS,
+    MOUNTING_REFUSAL,
     SERVICE_PARAMS,
     CaseOptions,
     case_options,
@@ -19,7 +21,7 @@ from bearingload.cli.plot import check_plot, save_plot
 #: The case options the dimensionless mode refuses (P = K = 1, the gap from T).
 KUROCHKIN_REFUSES = ("bearing", "load", "stiffness", "clearance", "plot", "ball_diameter",
                      "pitch_diameter", "inner_conformity", "outer_conformity", "modulus",
-                     "poisson", "maker", *COMBINED_PARAMS)  # fmt: skip
+                     "poisson", "ball_material", "maker", *COMBINED_PARAMS)  # fmt: skip
 
 #: Why sweep refuses the operating conditions of the modified lives (:data:`SERVICE_PARAMS`
 #: but --speed, which gives L10h and L10rh at every cage position).
@@ -131,6 +133,7 @@ def sweep(
         "an angular-contact designation (7205B; docs/angular_contact.md)",
     )
     case.refuse([n for n in SERVICE_PARAMS if n != "speed"], "sweep", SERVICE_REFUSAL)
+    case.refuse(MOUNTING_PARAMS, "sweep", MOUNTING_REFUSAL)
     if kurochkin_t is not None:
         _kurochkin(case, kurochkin_t, steps, plot, fmt, output)
         return

@@ -10,6 +10,8 @@ import click
 from bearingload.cli.case_options import (
     COMBINED_PARAMS,
     DYNAMICS_PARAMS,
+    MOUNTING_PARAMS,
+    MOUNTING_REFUSAL,
     CaseOptions,
     Clearance,
     case_options,
@@ -175,6 +177,7 @@ def table(
         "angular-contact designation (7205B) by 'solve', 'sweep' and 'batch' "
         "(docs/angular_contact.md)",
     )
+    case.refuse(MOUNTING_PARAMS, f"table {name}", MOUNTING_REFUSAL)
     if name != "life":
         case.refuse(DYNAMICS_PARAMS, f"table {name}", DYNAMICS_REFUSAL)
     from bearingload.bearings.angular import parse_angular
@@ -242,7 +245,7 @@ def table(
 
 
 #: The ball geometry and material options, which only a catalogue bearing's table takes.
-_GEOMETRY = ("inner_conformity", "outer_conformity", "modulus", "poisson")
+_GEOMETRY = ("inner_conformity", "outer_conformity", "modulus", "poisson", "ball_material")
 
 
 def _bearing_conditions(case: CaseOptions, k_given: float | None) -> Any:

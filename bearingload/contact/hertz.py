@@ -200,6 +200,31 @@ def reduced_modulus(
     return scalar_out(1.0 / ((1.0 - n1**2) / e1 + (1.0 - n2**2) / e2))
 
 
+def equivalent_material(
+    ring_modulus: float, ring_poisson: float, ball_modulus: float, ball_poisson: float
+) -> tuple[float, float]:
+    """One material (E_eq, nu_eq) whose contact with itself has the E* of a ball of one
+    material on rings of another (a hybrid bearing: silicon-nitride balls, steel rings).
+
+    Hertz's contact depends on the two materials only through
+    1/E* = (1 - nu_r^2)/E_r + (1 - nu_b^2)/E_b (:func:`reduced_modulus`); a body of
+    (E_eq, nu_eq) against itself gives 1/E* = 2 (1 - nu_eq^2)/E_eq, so nu_eq = nu_r and
+    E_eq = 2 (1 - nu_r^2) E* give the same E*, exactly, to every function that takes a
+    (modulus, poisson) pair and uses it only through E* (the stiffness, the pressures, the
+    film's E' = 2 E*). Balls of the rings' own material return the rings' pair unchanged.
+
+    >>> e, nu = equivalent_material(208000.0, 0.3, 310000.0, 0.26)
+    >>> round(e), nu
+    (246521, 0.3)
+    >>> abs(reduced_modulus(e, nu) / reduced_modulus(208000.0, 0.3, 310000.0, 0.26) - 1) < 1e-15
+    True
+    """
+    if (ball_modulus, ball_poisson) == (ring_modulus, ring_poisson):
+        return float(ring_modulus), float(ring_poisson)
+    e_star = float(reduced_modulus(ring_modulus, ring_poisson, ball_modulus, ball_poisson))
+    return 2.0 * (1.0 - ring_poisson**2) * e_star, float(ring_poisson)
+
+
 def _contact_modulus(
     modulus: ArrayLike, poisson: ArrayLike, e_star: ArrayLike | None
 ) -> np.ndarray:

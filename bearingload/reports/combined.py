@@ -20,6 +20,7 @@ import dataclasses
 from collections.abc import Sequence
 from typing import Any
 
+from bearingload.bearings.mounting import RESULT_KEYS, mounting_notes
 from bearingload.reports.quantities import SERVICE_KEYS, units
 from bearingload.reports.render import Column, Table, render
 from bearingload.reports.solve import (
@@ -52,6 +53,7 @@ INPUT_KEYS = (
     "contact_angle",
 )
 ANSWER_KEYS = (
+    *RESULT_KEYS,  # a mounted bearing's operating clearance and its reductions
     "q_max",
     "loaded_balls",
     "p_max_inner",
@@ -229,7 +231,7 @@ def _summary(records: Sequence[dict[str, Any]], bearing: Any, dynamics: str | No
     heads = ["value"] if len(records) == 1 else [f"G_r {r['clearance_pick']}" for r in records]
     angular = records[0].get("contact_angle") is not None
     columns, rows = quantity_rows(keys, heads, records, ANGULAR_LABELS if angular else None)
-    notes = [*NOTES, STATIC_NOTE, *set_note(bearing)]
+    notes = [*NOTES, STATIC_NOTE, *set_note(bearing), *mounting_notes(bearing)]
     if angular:
         notes[1], notes[len(NOTES)] = ANGULAR_NOTE, ANGULAR_STATIC_NOTE
     if dynamics is not None:

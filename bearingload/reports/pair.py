@@ -24,6 +24,7 @@ from bearingload.reports.quantities import SERVICE_KEYS, units
 from bearingload.reports.render import Column, Table, render
 from bearingload.reports.solve import (
     column,
+    material_note,
     printed_warnings,
     quantity_rows,
     service_notes,
@@ -169,7 +170,7 @@ def pair_report(
     keys = [k for k in SUMMARY_KEYS if any(r.get(k) is not None for r in rows_of)]
     columns, rows = quantity_rows(keys, heads, rows_of, ANGULAR_LABELS)
     speed_note = _speed_model(c, pair)[0]
-    notes = [*NOTES, *([speed_note] if speed_note else [])]
+    notes = [*NOTES, *([speed_note] if speed_note else []), *material_note(c.bearing)]
     notes += [MODIFIED_NOTE] if any(k.startswith("modified_") for k in pair) else []
     tables += [Table(_title(pair), columns, rows, notes + service_notes(service)), _balls_table(c)]
     return render(tables, fmt)

@@ -71,6 +71,19 @@ QUANTITIES: dict[str, Quantity] = {
         Quantity("load", "radial load F_r", "N", also=("kgf", 1 / KGF)),
         Quantity("stiffness", "ball stiffness K", "N/mm^m"),
         Quantity("clearance", "radial clearance G_r", "mm", display=_UM),
+        Quantity("operating_clearance", "operating clearance G_op (solved)", "mm", display=_UM),
+        Quantity(
+            "clearance_reduction_inner_fit", "clearance taken by the shaft fit", "mm", display=_UM
+        ),
+        Quantity(
+            "clearance_reduction_outer_fit", "clearance taken by the housing fit", "mm", display=_UM
+        ),
+        Quantity(
+            "clearance_reduction_temperature",
+            "clearance taken by the temperatures",
+            "mm",
+            display=_UM,
+        ),
         Quantity("clearance_pick", "clearance pick", "", None),
         Quantity("cage_angle", "cage angle", "°"),
         Quantity("exponent", "load-deflection exponent m", "-"),

@@ -21,6 +21,7 @@ from __future__ import annotations
 from collections.abc import Sequence
 from typing import Any
 
+from bearingload.bearings.mounting import RESULT_KEYS, mounting_notes
 from bearingload.reports.quantities import (
     QUANTITIES,
     SERVICE_KEYS,
@@ -73,6 +74,7 @@ ANSWER_KEYS = (
 #: The answer of solve's own report: :data:`ANSWER_KEYS` (batch's columns too) with the lives of
 #: :func:`bearingload.bearings.service_life.service_values` (C_0, hours, a_ISO, film) beside them.
 REPORT_KEYS = (
+    *RESULT_KEYS,  # a mounted bearing's operating clearance and its reductions
     *ANSWER_KEYS[: ANSWER_KEYS.index("static_safety") + 1],
     "static_rating",
     "rating_life",
@@ -302,7 +304,7 @@ def _notes(cases: Sequence[LoadedCase], records: Sequence[dict[str, Any]]) -> li
             "life L10 = (C/F_r)^(10/3) and allowable load C/L^(3/10) (ISO 281, p = 10/3)."
         )
     if b is not None:
-        notes += set_note(b)
+        notes += set_note(b) + mounting_notes(b)
         src = next((p.source for p in b.provenance if p.key == "clearance"), "")
         notes.append(f"G_r: {src}.")
         notes.append("--show-geometry lists the geometry used and the source of every value.")
@@ -310,7 +312,27 @@ def _notes(cases: Sequence[LoadedCase], records: Sequence[dict[str, Any]]) -> li
 
 
 def set_note(b: Any) -> list[str]:
-    """Where a catalogue bearing's ball (or roller) set comes from, in one line."""
+    """Where a catalogue bearing's ball (or roller) set comes from, in one line; and the balls'
+    material where one was given (a hybrid bearing)."""
+    return material_note(b) + _set_note(b)
+
+
+def material_note(b: Any) -> list[str]:
+    """The balls' material of ``b`` in one line, where --ball-material gave one."""
+    if getattr(b, "ball_material", None) is None:
+        return []
+    values = {p.key: p.value for p in b.provenance}
+    if "ball_modulus" not in values:
+        return []
+    return [
+        f"Balls: {values['ball_material']} (E = {values['ball_modulus']:.6g} MPa, nu = "
+        f"{values['ball_poisson']:.6g}, rho = {values['ball_material_density']:.6g} kg/m^3) on "
+        f"rings of E = {values['modulus']:.6g} MPa, nu = {values['poisson']:.6g}: contact "
+        f"modulus E* = {values['contact_modulus']:.6g} MPa (--ball-material)."
+    ]
+
+
+def _set_note(b: Any) -> list[str]:
     g = b.geometry
     if b.kind == "roller":
         z = next(p.source for p in b.provenance if p.key == "balls")

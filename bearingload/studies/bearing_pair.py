@@ -231,7 +231,8 @@ def _pair_at_speed(
         raise InputError("speed", "the ball dynamics need each contact's Hertz stiffness from the "
                          "ball geometry, not a given ball stiffness: leave out the stiffness, or "
                          "ask for the static model (speed None)")  # fmt: skip
-    density = STEEL_DENSITY if density is None else density
+    if density is None:  # the balls' material (a hybrid's silicon nitride), else steel
+        density = STEEL_DENSITY if b.ball_density is None else b.ball_density
     return solve_pair_high_speed(b.balls, load, axial_load, speed=speed, ball_density=density,
                                  **common)  # fmt: skip
 

@@ -20,6 +20,7 @@ from typing import TYPE_CHECKING, Any
 
 import numpy as np
 
+from bearingload.bearings.mounting import result_fields
 from bearingload.bearings.resolve import ResolvedBearing
 from bearingload.errors import InputError
 
@@ -375,7 +376,8 @@ def _at_speed(
             "given ball stiffness: leave out the stiffness, or ask for the static model "
             "(speed None)",
         )
-    density = STEEL_DENSITY if density is None else density
+    if density is None:  # the balls' material (a hybrid's silicon nitride), else steel
+        density = STEEL_DENSITY if b.ball_density is None else b.ball_density
     return solve_high_speed(b.balls, load, axial_load, speed=speed, ball_density=density,
                             **common)  # fmt: skip
 
@@ -538,6 +540,7 @@ def case_columns(
         "rotating": rotating,
         "stiffness": arr(b.stiffness),
         "clearance": arr(r.clearance),
+        **{k: arr(v) for k, v in result_fields(b).items()},
         "clearance_pick": b.clearance_pick,
         "cage_angle": arr(r.cage_angle),
         **({} if b.contact_angle is None else {"contact_angle": arr(b.contact_angle)}),

@@ -20,6 +20,7 @@ from bearingload.bearings.life import (
     allowable_load,
     rating_life,
 )
+from bearingload.bearings.mounting import result_fields
 from bearingload.errors import InputError
 from bearingload.models.case import Case, Result, scalar
 from bearingload.models.registry import get_method
@@ -280,6 +281,7 @@ def case_columns(lc: LoadedCase) -> dict[str, Any]:
         else [lc.static_safety] * n,
         "reference_rating_life": col(lc.reference_rating_life),
         "rotating": lc.rotating,
+        **{k: col(v) for k, v in result_fields(b).items()},
     }
 
 
