@@ -28,6 +28,9 @@ from bearingload.errors import InputError
 
 #: ISO/maker contact-angle suffixes and the nominal angle each stands for. [°]
 ISO_SUFFIX_ANGLES: dict[str, float] = {"C": 15.0, "A5": 25.0, "AC": 25.0, "A": 30.0, "B": 40.0}
+#: The letter of a catalogue row's name where two letters name one angle: SKF's AC and NSK's A5
+#: are both 25°, and the 25° rows (NSK's) are named with A5 (``7205AC`` finds ``7205A5``).
+ROW_LETTERS: dict[str, str] = {"AC": "A5"}
 #: GOST 831-75 design digit (before the type digit 6) and the nominal angle. [°]
 GOST_TYPE_ANGLES: dict[str, float] = {"3": 12.0, "4": 26.0, "6": 36.0}
 
@@ -95,8 +98,8 @@ def parse_angular(text: str) -> AngularDesignation | None:
         alpha = ISO_SUFFIX_ANGLES[letter]
         what = (f"a single-row angular contact ball bearing (series {m.group('series')}, "
                 f"suffix {letter}: {alpha:g}°)")  # fmt: skip
-        bore = m.group("bore")
-        return AngularDesignation(raw, f"{m.group('series')}{bore}{letter}", "ISO",
+        bore, row_letter = m.group("bore"), ROW_LETTERS.get(letter, letter)
+        return AngularDesignation(raw, f"{m.group('series')}{bore}{row_letter}", "ISO",
                                   m.group("series"), bore, bore_from_code(bore), alpha, what)  # fmt: skip
     m = _GOST.match(norm)
     if m:
