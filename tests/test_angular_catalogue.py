@@ -236,7 +236,9 @@ def test_catalog_lists_and_shows_angular_rows(capsys):
     assert code == 2 and err.startswith("Error:") and "--type" in err
 
 
-@pytest.mark.parametrize("text", ["7205BDB", "7205BDF", "7205B/DT", "7205B DB", "7205AC/DBA"])
+@pytest.mark.parametrize(
+    "text", ["7205BDB", "7205BDF", "7205B/DT", "7205B DB", "7205AC/DBA", "7205BDBL", "7205CDFEL"]
+)
 def test_a_matched_pair_is_refused_not_solved_as_one_bearing(text):
     """NSK's 7205BDB (back-to-back), DF, DT and the /DB forms name two bearings: they were
     read past as maker suffixes and solved as one single-row 7205B."""
@@ -245,10 +247,11 @@ def test_a_matched_pair_is_refused_not_solved_as_one_bearing(text):
     assert info.value.parameter == "bearing"
 
 
-@pytest.mark.parametrize("text", ["7205BDBL", "7205BDBX", "7205B/DFT"])
+@pytest.mark.parametrize("text", ["7205BDBX", "7205B/DFT", "7205BDBLX"])
 def test_a_set_suffix_with_letters_not_read_is_refused_not_solved_as_one_bearing(text):
-    """NSK's 7205BDBL (DB, light preload) was read past as a maker suffix and solved as one
-    single-row 7205B, silently: DB/DF/DT followed by letters other than a preload class."""
+    """A set suffix followed by letters other than a preload class was read past as a maker
+    suffix and solved as one single-row 7205B, silently (7205BDBL, NSK's DB with a light
+    preload, is a pair with its class: test_preload_classes.py)."""
     with pytest.raises(InputError, match="is not read") as info:
         resolve_bearing(text)
     assert info.value.parameter == "bearing"
