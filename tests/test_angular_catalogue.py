@@ -167,8 +167,8 @@ def test_resolve_gives_the_row_at_its_angle_without_clearance():
 @pytest.mark.parametrize(
     ("text", "near"),
     [("7305AC", "no 25° row of series 73"), ("7305A5", "no 25° row of series 73"),
-     ("46205", "the 26° rows of series 2 are 46207, 46208,"),
-     ("66205", "the 36° rows of series 2 are 66211"), ("36405", "no 12° row of series 4"),
+     ("46202", "the 26° rows of series 2 are 46204, 46205, 46206, 46207,"),
+     ("66205", "the 36° rows of series 2 are 66203, 66211"), ("36405", "no 12° row of series 4"),
      ("7221B", "40° rows of series 72 are 7200B, 7201B,"), ("7321C", "7320C")],
 )  # fmt: skip
 def test_known_type_without_a_row_is_one_error_naming_the_rows(capsys, text, near):
@@ -224,7 +224,9 @@ def test_catalog_lists_and_shows_angular_rows(capsys):
     nsk = [*NSK_BEA_40, *NSK_PRECISION_A5]  # the 25° rows: test_angular_25deg.py
     assert [r["designation"] for r in rows if r["maker"].startswith("NSK")] == nsk
     epk = [r for r in rows if r["maker"].startswith("EPK")]  # GOST rows: test_angular_gost.py
-    assert len(epk) == 53 and len(rows) == len(nsk) + len(KOYO_B2001) + len(epk)
+    zap = [r for r in rows if r["maker"].startswith("ZAP")]  # test_angular_gost_table.py
+    assert len(epk) == 53 and len(zap) == 14
+    assert len(rows) == len(nsk) + len(KOYO_B2001) + len(epk) + len(zap)
     code, out, _ = run_entry(capsys, "catalog", "show", "36205", "--format", "json")
     doc = json.loads(out)
     assert doc["contact_angle"] == 12.0 and doc["maker"] == "EPK" and "2011" in doc["source"]

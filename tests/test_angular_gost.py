@@ -148,7 +148,7 @@ def test_solve_36205_equals_the_hand_given_ring_with_l10r_and_no_l10(capsys):
 
 
 def test_gost_type_without_a_row_names_the_rows_of_its_type(capsys):
-    code, out, err = run_entry(capsys, "solve", "46205", "-F", "2kN", "-A", "1kN")
+    code, out, err = run_entry(capsys, "solve", "46202", "-F", "2kN", "-A", "1kN")
     lines = err.strip().splitlines()
     assert code == 2 and out == "" and len(lines) == 1 and lines[0].startswith("Error:")
     assert "26°" in err and "46208" in err and "36205" not in err
