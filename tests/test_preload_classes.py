@@ -303,7 +303,8 @@ def test_sweep_takes_a_class(capsys):
     code, out, err = run_entry(
         capsys, "sweep", "7205CDBM", "-F", "1kN", "-A", "200N", "--steps", "3"
     )
-    assert code == 0 and err == "" and "200 N" in out
+    assert code == 0 and err == "" and "preload 200 N (NSK class M)" in out
+    assert "Preload: preload class M of a 7205C pair (15°), 200 N as ground" in out
 
 
 def test_batch_reads_a_class_cell_and_the_designations_class():
