@@ -154,7 +154,7 @@ def test_bad_rows_are_skipped_with_their_reason_the_others_written():
         "(tandem)",
         "Warning: row 6: preload: a tandem pair (DT) is not preloaded in itself: both bearings "
         "face the same way, so it is preloaded against another bearing; give 0, or use DB or DF",
-        "Warning: row 7: preload: must be 0 N or more (got -1.0 N)",
+        "Warning: row 7: preload: must be 0 N or more (got -1 N)",
         "Warning: row 8: load: missing: every row needs a (radial) load, 0 allowed",
         "Warning: row 10: axial_load: must be > 0 N for a tandem pair (DT): both bearings take "
         "thrust towards +axial only (a reversed load lifts every ball; with none the axial "

@@ -58,6 +58,9 @@ def test_every_limiting_speed_is_the_printed_one_and_none_is_invented(path):
             assert r["limiting_speed_grease"] == r["limiting_speed_oil"] == ""
             assert r["limiting_speed_source"] == ""
             continue
+        if path == "bearings.csv" and float(r["d"]) < 10:  # NSK's miniature tables, printed
+            assert r["limiting_speed_source"].startswith("NSK Rolling Bearings CAT. No. E1102e")
+            continue  # with the row (test_catalog_miniature.py checks them against the print)
         if path == "angular_contact.csv":
             _, _, _, _, _, grease, oil, page = KOYO_ANGULAR_SPEEDS[_koyo_name(r["designation"])]
         else:
@@ -66,7 +69,7 @@ def test_every_limiting_speed_is_the_printed_one_and_none_is_invented(path):
         assert (float(r["limiting_speed_grease"]), float(r["limiting_speed_oil"])) == (grease, oil)
         assert r["limiting_speed_source"].startswith(f"Koyo CAT. No. B2001RUS, 2008, p. {page} (")
         assert f"pdf page {page + 3})" in r["limiting_speed_source"]
-    assert len(have) == (183 if path == "angular_contact.csv" else 74)
+    assert len(have) == (183 if path == "angular_contact.csv" else 74 + 40)
 
 
 @pytest.mark.parametrize(

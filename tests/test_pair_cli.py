@@ -112,7 +112,8 @@ def test_lift_off_is_warned(capsys):
             ],
             "--width",
         ),  # fmt: skip
-        (["7205BDBC", "-F", "1kN"], "BEARING"),
+        # SKF's class C written in the designation: no SKF table, named with the preload
+        (["7205BDBC", "-F", "1kN"], "--preload"),
         # a ring by z and K with its contact angle: the refusal named --arrangement and asked
         # for 'a ring by hand with its contact angle', which was given
         (

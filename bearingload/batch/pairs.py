@@ -86,7 +86,7 @@ def pair_key(solver: Any, v: dict[str, Any]) -> tuple[Any, ...]:
             raise InputError("arrangement", f"{v['arrangement']!r}: give DB (back-to-back), DF "
                              "(face-to-face) or DT (tandem)")  # fmt: skip
     if "bearing" in v:
-        single, kind = split_pair(v["bearing"])
+        single, kind, _ = split_pair(v["bearing"])
         if kind is not None and arrangement not in (None, kind):
             raise InputError("arrangement", f"{arrangement} contradicts the designation "
                              f"{v['bearing'].strip()!r} (a {kind} pair)")  # fmt: skip
@@ -109,11 +109,26 @@ def pair_key(solver: Any, v: dict[str, Any]) -> tuple[Any, ...]:
         raise InputError("load", "missing: every row needs a (radial) load, 0 allowed")
     if not v["load"] >= 0:
         raise InputError("load", f"must be 0 N or more (got {v['load']!r} N)")
-    if not v.get("preload", 0.0) >= 0:
-        raise InputError("preload", f"must be 0 N or more (got {v['preload']!r} N)")
     tilted = "moment" in v or bool(v.get("moment_cross"))
     return (b, arrangement, v.get("width"), v.get("rotating", "inner"), v.get("dynamic_rating"),
             tilted, v.get("tilt_radius"), dynamics_of(v, b))  # fmt: skip
+
+
+def row_preload(v: dict[str, Any], b: Any) -> float:
+    """The preload F_p [N] of a row of cells ``v`` (blank cells left out) of a pair of ``b``:
+    its ``preload`` cell (a force, or a class resolved by
+    :func:`bearingload.bearings.preload.resolve_preload`), the class its designation carries
+    (7205CDBL), else 0."""
+    from bearingload.bearings.angular import split_pair
+    from bearingload.bearings.preload import resolve_preload
+
+    cls = split_pair(v["bearing"])[2] if "bearing" in v else None
+    cell = v.get("preload")
+    if cls is not None and cell not in (None, cls):
+        what = f"{v['bearing'].strip()!r} (preload class {cls})"
+        raise InputError("preload", f"{cell!r} contradicts the designation {what}")
+    value = cls if cell is None else cell
+    return 0.0 if value is None else resolve_preload(value, b).force
 
 
 def solve_pairs(solver: Any, cols: dict[str, list[Any]], n: int,
@@ -125,10 +140,13 @@ def solve_pairs(solver: Any, cols: dict[str, list[Any]], n: int,
         if i in bad:
             continue
         try:
-            key = pair_key(solver, {k: c[i] for k, c in cols.items() if c[i] is not None})
+            row = {k: c[i] for k, c in cols.items() if c[i] is not None}
+            key = pair_key(solver, row)
+            preload = row_preload(row, key[0])
         except BearingloadError as exc:
             bad[i] = row_message(exc)
             continue
+        cols.setdefault("preload", [None] * n)[i] = preload  # a class: its table's force
         groups.setdefault(key, []).append(i)
     solved: list[tuple[int, Any]] = []
     for key, idx in groups.items():

@@ -70,7 +70,7 @@ COLUMNS: dict[str, str] = {
     "ball_density": "number",
     "quasi_static": "flag",
     "arrangement": "text",
-    "preload": "force",
+    "preload": "preload",
     "width": "length",
 }
 #: The operating conditions of the lives (solve's options of the same names; ``eC`` is read as
@@ -215,7 +215,8 @@ def _without_blank_tail(fields: list[str]) -> list[str]:
 
 def unit_kind(kind: str) -> str:
     """The units.py kind of a column kind: a clearance is a length, a cage angle an angle."""
-    return {"clearance": "length", "cage_angle": "angle", "tilt_radius": "length"}.get(kind, kind)
+    kinds = {"clearance": "length", "cage_angle": "angle", "tilt_radius": "length"}
+    return (kinds | {"preload": "force"}).get(kind, kind)
 
 
 def _check_combined(names: list[str]) -> None:
@@ -497,6 +498,10 @@ class CellParser:
             if not self.unit:
                 return plain
             return plain * float(units.parse_cage_angle("1" + self.unit, parameter=name))
+        if kind == "preload" and plain is None:  # a class letter or a force with its unit
+            from bearingload.bearings.preload import parse_preload
+
+            return parse_preload(text, parameter=name)
         if kind == "clearance" and re.fullmatch(r"(?i)c[2-5n]|g[6-9]|cn|normal", text):
             from bearingload.bearings.clearance import parse_clearance
 

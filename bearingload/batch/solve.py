@@ -319,7 +319,7 @@ def _refuse_pair(text: str | None) -> None:
     try:
         kind = None if text is None else split_pair(text)[1]
     except InputError:
-        return  # a maker's preload class ...: the resolver names it
+        return  # a set suffix not read: the resolver names it
     if kind is not None:
         raise InputError("bearing", f"{str(text).strip()!r} names a {kind} pair: a file of pairs has "
                          "an 'arrangement' column (or 'preload', 'width'; every row of it a "

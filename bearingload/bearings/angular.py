@@ -28,6 +28,9 @@ from bearingload.errors import InputError
 
 #: ISO/maker contact-angle suffixes and the nominal angle each stands for. [°]
 ISO_SUFFIX_ANGLES: dict[str, float] = {"C": 15.0, "A5": 25.0, "AC": 25.0, "A": 30.0, "B": 40.0}
+#: The letter of a catalogue row's name where two letters name one angle: SKF's AC and NSK's A5
+#: are both 25°, and the 25° rows (NSK's) are named with A5 (``7205AC`` finds ``7205A5``).
+ROW_LETTERS: dict[str, str] = {"AC": "A5"}
 #: GOST 831-75 design digit (before the type digit 6) and the nominal angle. [°]
 GOST_TYPE_ANGLES: dict[str, float] = {"3": 12.0, "4": 26.0, "6": 36.0}
 
@@ -35,9 +38,10 @@ _ISO = re.compile(
     r"^(?P<series>7[023])(?P<bore>\d{2})\s*[-/]?\s*(?P<letter>A5|AC|A|B|C)(?P<rest>(?:[^0-9].*)?)$"
 )
 #: A matched pair or set after the contact-angle letter (NSK's 7205BDB, 7205BDF, 7205BDT; the
-#: /DB form; DBA ... DBD with a preload class): two bearings, not one.
-_PAIR = re.compile(r"D[BFT][A-D]?(?![A-Z])")
-#: DB, DF, DT followed by letters not read (NSK's DBL, a light preload): a set, not one bearing.
+#: /DB form), with the preload class the pair is sold at where one follows: NSK's EL, L, M, H
+#: (7205CDBL), SKF's A ... D (7205ACDBA), FAG's UL; an accuracy class may follow (DBLP4).
+_PAIR = re.compile(r"D[BFT](?:[\s/-]?(?P<cls>EL|UL|[LMHA-D])(?=$|[^A-Z]|P\d))?(?=$|[^A-Z]|P\d)")
+#: DB, DF, DT followed by letters not read: a set, not one bearing.
 _PAIR_LIKE = re.compile(r"D[BFT][A-Z]+")
 _GOST = re.compile(r"^(?:[^-\s]{1,6}\s*-\s*)?(?P<design>[346])6(?P<series>[1-4])(?P<bore>\d{2})$")
 
@@ -95,8 +99,8 @@ def parse_angular(text: str) -> AngularDesignation | None:
         alpha = ISO_SUFFIX_ANGLES[letter]
         what = (f"a single-row angular contact ball bearing (series {m.group('series')}, "
                 f"suffix {letter}: {alpha:g}°)")  # fmt: skip
-        bore = m.group("bore")
-        return AngularDesignation(raw, f"{m.group('series')}{bore}{letter}", "ISO",
+        bore, row_letter = m.group("bore"), ROW_LETTERS.get(letter, letter)
+        return AngularDesignation(raw, f"{m.group('series')}{bore}{row_letter}", "ISO",
                                   m.group("series"), bore, bore_from_code(bore), alpha, what)  # fmt: skip
     m = _GOST.match(norm)
     if m:
@@ -145,13 +149,15 @@ def refuse_gost_suffix(text: str) -> None:
     )
 
 
-def split_pair(text: str) -> tuple[str, str | None]:
-    """``text`` without the suffix of a matched pair (``7205BDB`` -> ``7205B``, "DB"), and the
-    arrangement (None: no such suffix). A maker's preload class after it (``DBA`` ... ``DBD``)
-    is refused: its force differs from maker to maker (give the force).
+def split_pair(text: str) -> tuple[str, str | None, str | None]:
+    """``text`` without the suffix of a matched pair (``7205BDB`` -> ``7205B``, "DB"), the
+    arrangement (None: no such suffix) and the preload class written after it (``7205CDBL``:
+    "L"; None: none), which :func:`bearingload.bearings.preload.resolve_preload` reads.
 
     >>> split_pair("7205BDB"), split_pair("7205B/DF"), split_pair("7205 BEP")
-    (('7205B', 'DB'), ('7205B', 'DF'), ('7205 BEP', None))
+    (('7205B', 'DB', None), ('7205B', 'DF', None), ('7205 BEP', None, None))
+    >>> split_pair("7205CDBL"), split_pair("7008A5 DBEL P4")
+    (('7205C', 'DB', 'L'), ('7008A5P4', 'DB', 'EL'))
     """
     norm = re.sub(r"\s+", " ", text.strip().upper())
     m = _ISO.match(norm)
@@ -159,19 +165,11 @@ def split_pair(text: str) -> tuple[str, str | None]:
     if m is not None and found is None:
         _refuse_unread_set(text, m)
     if m is None or found is None:
-        return text, None
-    if len(found.group(0)) > 2:
-        raise InputError(
-            "bearing",
-            f"{text.strip()!r}: the preload class {found.group(0)[2]} of a matched set is the "
-            "maker's (its force differs from maker to maker and is not coded): give the pair "
-            f"as {m.group('series')}{m.group('bore')}{m.group('letter')}{found.group(0)[:2]} "
-            "with its preload force",
-        )
+        return text, None, None
     rest = m.group("rest")
     single = rest[: found.start()] + rest[found.end() :]
-    name = f"{m.group('series')}{m.group('bore')}{m.group('letter')}{single.rstrip(' /-')}"
-    return name, found.group(0)
+    name = f"{m.group('series')}{m.group('bore')}{m.group('letter')}{single.strip(' /-')}"
+    return name, found.group(0)[:2], found.group("cls")
 
 
 def _refuse_unread_set(text: str, m: re.Match[str]) -> None:
@@ -192,7 +190,7 @@ def _refuse_unread_set(text: str, m: re.Match[str]) -> None:
         raise InputError(
             "bearing",
             f"{text.strip()!r}: the suffix {unread.group(0)} is not read (a matched set is DB, "
-            "DF or DT, with a preload class A ... D at most): give the pair as "
+            "DF or DT, with a preload class EL, L, M, H (A ... D, UL) at most): give the pair as "
             f"{m.group('series')}{m.group('bore')}{m.group('letter')}{unread.group(0)[:2]} "
             "with its preload force, or the single bearing without the suffix",
         )

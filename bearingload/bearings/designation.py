@@ -245,8 +245,8 @@ class Designation:
         """
         if self.kind == "roller":
             return f"NU{self.series[-1]}{self.bore_code}"
-        if self.standard == "ISO" and self.series in OLD_SERIES_NAMES:
-            return OLD_SERIES_NAMES[self.series] + self.bore_code
+        if self.standard == "ISO" and self.series in OLD_SERIES_NAMES and len(self.bore_code) == 2:
+            return OLD_SERIES_NAMES[self.series] + self.bore_code  # 688 (one-digit bore) stays
         return self.base
 
 

@@ -33,6 +33,7 @@ Units: N, mm.
 
 from __future__ import annotations
 
+import math
 from dataclasses import dataclass
 from typing import Any
 
@@ -124,8 +125,14 @@ def f_0(ball_diameter: ArrayLike, pitch_diameter: ArrayLike) -> Any:
     return scalar_out(np.interp(g, np.arange(41) / 100.0, F0_TABLE))
 
 
-def dynamic_rating(balls: ArrayLike, ball_diameter: ArrayLike, pitch_diameter: ArrayLike) -> Any:
-    """Basic dynamic radial load rating C_r of a deep groove ball bearing, ISO 281:2007 6.1.1.
+def dynamic_rating(
+    balls: ArrayLike,
+    ball_diameter: ArrayLike,
+    pitch_diameter: ArrayLike,
+    contact_angle: float = 0.0,
+) -> Any:
+    """Basic dynamic radial load rating C_r of a single-row radial ball bearing, ISO 281:2007
+    6.1.1 (Table 2's column covers deep groove and angular contact ball bearings alike).
 
     Parameters
     ----------
@@ -135,37 +142,50 @@ def dynamic_rating(balls: ArrayLike, ball_diameter: ArrayLike, pitch_diameter: A
         D_w. [mm]
     pitch_diameter : array_like
         d_m. [mm]
+    contact_angle : float
+        Nominal contact angle alpha; 0 for a deep groove ball bearing. [°]
 
     Returns
     -------
     float or ndarray
-        C_r = b_m f_c z^(2/3) D_w^1.8 (D_w <= 25.4 mm), 3.647 b_m f_c z^(2/3) D_w^1.4 above. [N]
+        C_r = b_m f_c (cos alpha)^0.7 z^(2/3) D_w^1.8 (D_w <= 25.4 mm), 3.647 b_m f_c
+        (cos alpha)^0.7 z^(2/3) D_w^1.4 above, f_c at gamma = D_w cos alpha / d_m. [N]
     """
     z = np.asarray(balls, dtype=float)
     dw = np.asarray(ball_diameter, dtype=float)
-    fc = np.asarray(f_c(dw, pitch_diameter))
+    cos_a = math.cos(math.radians(contact_angle))
+    fc = np.asarray(f_c(dw * cos_a, pitch_diameter))
     power = np.where(dw <= _INCH, dw**1.8, 3.647 * dw**1.4)
-    return scalar_out(B_M * fc * z ** (2.0 / 3.0) * power)
+    return scalar_out(B_M * fc * cos_a**0.7 * z ** (2.0 / 3.0) * power)
 
 
-def static_rating(balls: ArrayLike, ball_diameter: ArrayLike, pitch_diameter: ArrayLike) -> Any:
-    """Basic static radial load rating C_0r = f_0 z D_w^2 of a deep groove ball bearing. [N]
+def static_rating(
+    balls: ArrayLike,
+    ball_diameter: ArrayLike,
+    pitch_diameter: ArrayLike,
+    contact_angle: float = 0.0,
+) -> Any:
+    """Basic static radial load rating C_0r = f_0 z D_w^2 cos alpha of a single-row radial ball
+    bearing, f_0 at gamma = D_w cos alpha / d_m. [N]
 
-    ISO 76:2006 clause 6.1.1 with i = 1 and alpha = 0. Parameters as :func:`dynamic_rating`.
+    ISO 76:2006 clause 6.1.1 with i = 1. Parameters as :func:`dynamic_rating`.
     """
     z = np.asarray(balls, dtype=float)
     dw = np.asarray(ball_diameter, dtype=float)
-    return scalar_out(np.asarray(f_0(dw, pitch_diameter)) * z * dw**2)
+    cos_a = math.cos(math.radians(contact_angle))
+    return scalar_out(np.asarray(f_0(dw * cos_a, pitch_diameter)) * z * dw**2 * cos_a)
 
 
-def standard_ball_sizes() -> np.ndarray:
+def standard_ball_sizes(miniature: bool = False) -> np.ndarray:
     """Nominal ball sizes searched by the inversion (ISO 3290), sorted. [mm]
 
     Inch sizes 6/64" (3/32") to 128/64" (2") in 1/64" steps, and metric sizes 2.5 to 32 mm in
-    0.5 mm steps.
+    0.5 mm steps; ``miniature``: the same steps down to 1/64" and 0.5 mm (the balls of the
+    bearings with a bore below 10 mm, ISO 15's one-digit bore codes).
     """
-    inch = np.arange(6, 129) * _INCH / 64.0
-    metric = np.arange(5, 65) * 0.5
+    first_inch, first_metric = (1, 1) if miniature else (6, 5)
+    inch = np.arange(first_inch, 129) * _INCH / 64.0
+    metric = np.arange(first_metric, 65) * 0.5
     return np.unique(np.concatenate([inch, metric]))
 
 
@@ -198,6 +218,8 @@ def invert_ball_set(
     use_f0: bool = True,
     rating_factor: float | None = None,
     balls: range = range(5, 46),
+    contact_angle: float = 0.0,
+    miniature: bool = False,
 ) -> list[BallSetFit]:
     """Ball sets z x D_w that reproduce a catalogue's ratings, best first.
 
@@ -226,6 +248,11 @@ def invert_ball_set(
         k_0, see above. [-]
     balls : range
         Ball counts searched.
+    contact_angle : float
+        Nominal contact angle alpha of an angular-contact row (ISO 281 and ISO 76 at alpha,
+        gamma = D_w cos alpha / d_m); 0 for a deep groove ball bearing. [°]
+    miniature : bool
+        Search the ball sizes of :func:`standard_ball_sizes` down to 1/64" and 0.5 mm.
 
     Returns
     -------
@@ -236,19 +263,16 @@ def invert_ball_set(
     >>> best.balls, round(best.ball_diameter, 3)
     (9, 7.938)
     """
-    sizes = standard_ball_sizes()
+    sizes = standard_ball_sizes(miniature)
     z = np.array(list(balls), dtype=float)[:, None]
     dw = sizes[None, :]
-    ok = (
-        (z * dw < np.pi * pitch_diameter)
-        & (dw / pitch_diameter <= 0.40)
-        & (dw / pitch_diameter >= 0.01)
-    )
+    gamma = dw * math.cos(math.radians(contact_angle)) / pitch_diameter
+    ok = (z * dw < np.pi * pitch_diameter) & (gamma <= 0.40) & (gamma >= 0.01)
     zz, dd = np.broadcast_arrays(z, dw)
     zz, dd = zz[ok], dd[ok]
-    cr = np.asarray(dynamic_rating(zz, dd, pitch_diameter))
+    cr = np.asarray(dynamic_rating(zz, dd, pitch_diameter, contact_angle))
     if rating_factor is not None:
-        c0 = np.asarray(static_rating(zz, dd, pitch_diameter))
+        c0 = np.asarray(static_rating(zz, dd, pitch_diameter, contact_angle))
         score = np.maximum(np.abs(c0 / C0 - 1.0) / 0.01, np.abs(C / cr - rating_factor) / 0.02)
         score = score * 0.01
     elif f0 is not None:
@@ -257,7 +281,7 @@ def invert_ball_set(
             parts.append(np.abs(np.asarray(f_0(dd, pitch_diameter)) / f0 - 1.0))
         score = np.max(parts, axis=0)
     else:
-        c0 = np.asarray(static_rating(zz, dd, pitch_diameter))
+        c0 = np.asarray(static_rating(zz, dd, pitch_diameter, contact_angle))
         score = np.maximum(np.abs(cr / C - 1.0), np.abs(c0 / C0 - 1.0))
     order = np.argsort(score, kind="stable")
     return [BallSetFit(int(zz[i]), float(dd[i]), float(score[i])) for i in order]

@@ -31,6 +31,7 @@ from bearingload.cli.options import (
     Exponent,
     LibraryArgument,
     LibraryOption,
+    PreloadValue,
     Quantity,
     option_message,
     option_name,
@@ -475,9 +476,12 @@ PAIR_DECLARATIONS: dict[str, tuple[tuple[str, ...], dict[str, Any]]] = {
     ),
     "preload": _option(
         "--preload",
-        type=Quantity("force"),
+        type=PreloadValue(),
         help="Axial preload F_p of a DB or DF pair: the axial force each bearing carries with "
-        f"no external load (>= 0; default 0). Units: {_FORCE} (bare number: N).",
+        f"no external load (>= 0; default 0). Units: {_FORCE} (bare number: N). Or a preload "
+        "class as the pair is sold, EL | L | M | H (NSK's extra light ... heavy; the force of "
+        "the table of 70xx and 72xx at 15° and 25°, printed with its source), also as the "
+        "designation's suffix (7205CDBL). E.g. --preload 300N, --preload M.",
     ),
     "width": _option(
         "--width",
@@ -579,7 +583,7 @@ class CaseOptions:
     misalignment: float | None = None
     contact_angle: float | None = None
     arrangement: str | None = None
-    preload: float | None = None
+    preload: float | str | None = None
     width: float | None = None
     tilt_radius: str | float | None = None
     stiffness: str | None = None
@@ -818,14 +822,20 @@ class CaseOptions:
 
         case = self
         if self.bearing is not None:
-            single, kind = split_pair(self.bearing)
+            single, kind, cls = split_pair(self.bearing)
             if kind is not None:
                 if self.arrangement is not None and self.arrangement.upper() != kind:
                     raise click.UsageError(
                         f"Invalid value for '--arrangement': {self.arrangement} contradicts the "
                         f"designation {self.bearing.strip()!r} (a {kind} pair)"
                     )
-                case = dataclasses.replace(self, bearing=single, arrangement=kind)
+                if cls is not None and self.preload not in (None, cls):
+                    raise click.UsageError(
+                        f"Invalid value for '--preload': {self.preload} contradicts the "
+                        f"designation {self.bearing.strip()!r} (preload class {cls})"
+                    )
+                preload = cls or self.preload
+                case = dataclasses.replace(self, bearing=single, arrangement=kind, preload=preload)
         if case.arrangement is None:
             for name in ("preload", "width"):
                 if getattr(case, name) is not None:

@@ -44,6 +44,24 @@ class Quantity(click.ParamType):
         return f"{self.kind.upper()} [{BASE_UNIT[self.kind]}]"
 
 
+class PreloadValue(click.ParamType):
+    """A pair's preload: a force (bare number: N) or a preload class letter, read by
+    :func:`bearingload.bearings.preload.parse_preload`, as ``batch`` reads its ``preload``
+    column and the library its ``preload=``."""
+
+    name = "FORCE|EL|L|M|H"
+
+    def convert(self, value: Any, param: click.Parameter | None, ctx: click.Context | None) -> Any:
+        if isinstance(value, float):
+            return value
+        from bearingload.bearings.preload import parse_preload
+
+        try:
+            return parse_preload(value, parameter=param.name if param else "preload")
+        except InputError as exc:
+            self.fail(exc.message, param, ctx)
+
+
 class CageAngle(click.ParamType):
     """Cage angle: degrees by default, ``deg``, ``rad``, ``mrad``, or ``half`` for half a pitch
     (the load between two balls); read by :func:`bearingload.units.parse_cage_angle`, as

@@ -139,6 +139,8 @@ def solve(
       bearingload solve 6205 -F 1kN -A 500N --moment-cross 2Nm --tilt-radius pitch
       # a back-to-back pair of 7205B with 500 N preload (or 7205B --arrangement DB)
       bearingload solve 7205BDB --preload 500N -F 2kN -A 1kN
+      # a pair as bought: NSK's light preload class L of a 7205C pair (or --preload L)
+      bearingload solve 7205CDBL -F 1kN -A 200N
       # SKF's ball set of a 6208 instead of NSK's; a cylindrical roller bearing
       bearingload solve 6208 -F 5kN --maker SKF
       bearingload solve NU206 --load 5kN

@@ -19,6 +19,7 @@ import dataclasses
 from collections.abc import Sequence
 from typing import Any
 
+from bearingload.bearings.preload import Preload
 from bearingload.reports.combined import ANGULAR_LABELS, MATRIX_KEYS, contact_angle_shown
 from bearingload.reports.quantities import SERVICE_KEYS, units
 from bearingload.reports.render import Column, Table, render
@@ -172,16 +173,20 @@ def pair_report(
     speed_note = _speed_model(c, pair)[0]
     notes = [*NOTES, *([speed_note] if speed_note else []), *material_note(c.bearing)]
     notes += [MODIFIED_NOTE] if any(k.startswith("modified_") for k in pair) else []
-    tables += [Table(_title(pair), columns, rows, notes + service_notes(service)), _balls_table(c)]
+    notes += [] if c.preload_class is None else [f"Preload: {c.preload_class.source}."]
+    title = _title(pair, c.preload_class)
+    tables += [Table(title, columns, rows, notes + service_notes(service)), _balls_table(c)]
     return render(tables, fmt)
 
 
-def _title(p: dict[str, Any]) -> str:
+def _title(p: dict[str, Any], setting: Preload | None = None) -> str:
+    """The pair's title line; ``setting``: the preload class it was solved at (None: a force)."""
     who = f"Bearings {p['bearing']}, " if p["bearing"] != "given by hand" else ""
+    preload = f"{p['preload']:.6g} N" if setting is None else setting.text
     return (
         f"{who}pair {p['arrangement']} ({ARRANGEMENT_NAMES[p['arrangement']]}), z = "
         f"{p['balls']} per bearing, contact angle {p['contact_angle']:.6g}°, F_r = "
-        f"{p['load']:.6g} N, F_a = {p['axial_load']:.6g} N, preload {p['preload']:.6g} N, width "
+        f"{p['load']:.6g} N, F_a = {p['axial_load']:.6g} N, preload {preload}, width "
         f"B = {p['width']:.6g} mm, cage angle {p['cage_angle']:.6g}°, {p['rotating']} ring rotating"
     )
 

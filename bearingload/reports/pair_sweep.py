@@ -89,7 +89,12 @@ def _spread_table(s: PairSweep, context: str) -> Table:
         sp = s.spread(q.key, k)
         assert sp is not None
         entries.append((dataclasses.replace(q, label=label), sp, q.shown()))
-    notes = [*NOTES, *_speed_notes(s)]
+    setting = s.cases[0].preload_class
+    notes = [
+        *NOTES,
+        *_speed_notes(s),
+        *([] if setting is None else [f"Preload: {setting.source}."]),
+    ]
     return spread_table(f"Over one ball pitch ({title(s)})", entries, notes, context)
 
 
@@ -121,10 +126,12 @@ def title(s: PairSweep) -> str:
     """One line naming the sweep's inputs with units."""
     p = pair_records(s.cases[0])[0]
     who = f"bearings {p['bearing']}, " if p["bearing"] != "given by hand" else ""
+    setting = s.cases[0].preload_class
+    preload = f"{p['preload']:.6g} N" if setting is None else setting.text
     return (
         f"{who}pair {p['arrangement']} ({ARRANGEMENT_NAMES[p['arrangement']]}), z = {s.balls} "
         f"per bearing, F_r = {p['load']:.6g} N, F_a = {p['axial_load']:.6g} N, preload "
-        f"{p['preload']:.6g} N, {p['rotating']} ring rotating; cage angle 0 to "
+        f"{preload}, {p['rotating']} ring rotating; cage angle 0 to "
         f"{360 / s.balls:.6g}° in {len(s.cases)} positions"
     )
 

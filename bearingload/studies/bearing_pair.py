@@ -14,6 +14,7 @@ from typing import Any
 
 import numpy as np
 
+from bearingload.bearings.preload import Preload
 from bearingload.bearings.resolved import ResolvedBearing
 from bearingload.errors import InputError
 from bearingload.models.pair import PairDistribution
@@ -36,6 +37,8 @@ class PairCase:
     rating_life: float | None
     rotating: str
     warnings: tuple[str, ...]
+    #: The preload class the pair was solved at, its force and source (None: a force given).
+    preload_class: Preload | None = None
 
 
 def bearing_width(b: ResolvedBearing, width: float | None) -> float:
@@ -77,8 +80,9 @@ def solve_bearing_pair(
     load, axial_load : float
         F_r >= 0 and F_a on the shaft at the pair's centre. [N]
     arrangement : {"DB", "DF", "DT"}
-    preload : float
-        F_p, DB and DF. [N]
+    preload : float or str
+        F_p, DB and DF [N]; or a preload class (``"EL"``, ``"L"``, ``"M"``, ``"H"``), the force
+        of the bearing's class table (:func:`bearingload.bearings.preload.resolve_preload`).
     width : float, optional
         B of one bearing; default the catalogue's. [mm]
     cage_angle, moment, moment_cross, tilt_radius, rotating, dynamic_rating
@@ -119,7 +123,55 @@ def solve_bearing_pairs(
     same bits), then each case's lives and checks. ``moment`` None: no moment given (the shaft
     free to tilt, no tilt warned of), as for one case. ``speed`` (not None): the ball dynamics
     (:func:`bearingload.models.pair_speed.solve_pair_high_speed`). One :class:`PairCase` per
-    case, flat."""
+    case, flat. ``preload`` a class: every case at the force of the bearing's table, which the
+    cases' ``preload_class`` and the bearing's sources name."""
+    setting = None
+    if isinstance(preload, str):  # a class: the force of the bearing's table, with its source
+        from bearingload.bearings.preload import resolve_preload
+
+        _check_pair_bearing(b)
+        setting = resolve_preload(preload, b)
+        preload = setting.force
+        b = dataclasses.replace(b, sources=(*b.sources, f"preload: {setting.source}"))
+    cases = _solve_pairs(
+        b,
+        load,
+        axial_load,
+        arrangement=arrangement,
+        preload=preload,
+        width=width,
+        cage_angle=cage_angle,
+        moment=moment,
+        moment_cross=moment_cross,
+        tilt_radius=tilt_radius,
+        rotating=rotating,
+        dynamic_rating=dynamic_rating,
+        speed=speed,
+        ball_density=ball_density,
+    )
+    if setting is None:
+        return cases
+    return [dataclasses.replace(c, preload_class=setting) for c in cases]
+
+
+def _solve_pairs(
+    b: ResolvedBearing,
+    load: Any,
+    axial_load: Any,
+    *,
+    arrangement: str,
+    preload: Any,
+    width: float | None,
+    cage_angle: Any,
+    moment: Any,
+    moment_cross: Any,
+    tilt_radius: Any,
+    rotating: str,
+    dynamic_rating: float | None,
+    speed: Any,
+    ball_density: Any,
+) -> list[PairCase]:
+    """:func:`solve_bearing_pairs` with the preload a force [N]."""
     from bearingload.bearings.tilt import tilt_lever
     from bearingload.models.pair import solve_pair
 
