@@ -16,8 +16,12 @@ from bearingload.bearings.frequencies import defect_frequencies
 from bearingload.errors import InputError
 from tests.cli_helpers import run_entry
 
-KEYS = ("cage_frequency", "ball_pass_frequency_outer", "ball_pass_frequency_inner",
-        "ball_spin_frequency")  # fmt: skip
+KEYS = (
+    "cage_frequency",
+    "ball_pass_frequency_outer",
+    "ball_pass_frequency_inner",
+    "ball_spin_frequency",
+)
 
 # Case Western Reserve University Bearing Data Center, "Bearing Information" page
 # (engineering.case.edu/bearingdatacenter/bearing-information), SKF deep-groove bearings: z,
@@ -59,8 +63,10 @@ def _no_slip(z, dw, dm, n, a_i, a_o, rotating, outer_control):
     def equations(w_c, w_r, b):
         roll_o = w_r * dw / 2 * mpmath.cos(a_o - b) - (w_o - w_c) * r_o
         roll_i = -w_r * dw / 2 * mpmath.cos(a_i - b) - (w_i - w_c) * r_i
-        spin = w_r * mpmath.sin(a_o - b) - (w_o - w_c) * mpmath.sin(a_o) if outer_control else (
-            b - a_o)  # fmt: skip
+        if outer_control:
+            spin = w_r * mpmath.sin(a_o - b) - (w_o - w_c) * mpmath.sin(a_o)
+        else:
+            spin = b - a_o
         return roll_o, roll_i, spin
 
     w_c, w_r, _ = mpmath.findroot(equations, (w / 2, -w * dm / (2 * dw), a_o))
@@ -132,8 +138,16 @@ def _json(capsys, *args):
     return json.loads(out)
 
 
-HAND_6205 = ("-z", "9", "--ball-diameter", f"{0.3126 * 25.4}", "--pitch-diameter",
-             f"{1.537 * 25.4}", "-F", "1kN")  # fmt: skip
+HAND_6205 = (
+    "-z",
+    "9",
+    "--ball-diameter",
+    f"{0.3126 * 25.4}",
+    "--pitch-diameter",
+    f"{1.537 * 25.4}",
+    "-F",
+    "1kN",
+)
 
 
 @pytest.mark.parametrize("rotating", ["inner", "outer"])
@@ -171,10 +185,20 @@ def test_cli_ball_dynamics_take_the_heaviest_balls_two_angles_and_match_its_orbi
     for key in KEYS:
         assert case[key] == pytest.approx(want.values()[key], rel=1e-9), key
     # the model's own orbit and spin speed of that ball (its public result) agree
-    r = solve_high_speed(b.balls, 2000.0, 3000.0, speed=12000.0, ball_diameter=b.ball_diameter,
-                         pitch_diameter=b.pitch_diameter, f_i=b.f_i, f_o=b.f_o,
-                         contact_angle=b.contact_angle, modulus=b.modulus, poisson=b.poisson,
-                         tilt_radius=case["tilt_radius"])  # fmt: skip
+    r = solve_high_speed(
+        b.balls,
+        2000.0,
+        3000.0,
+        speed=12000.0,
+        ball_diameter=b.ball_diameter,
+        pitch_diameter=b.pitch_diameter,
+        f_i=b.f_i,
+        f_o=b.f_o,
+        contact_angle=b.contact_angle,
+        modulus=b.modulus,
+        poisson=b.poisson,
+        tilt_radius=case["tilt_radius"],
+    )
     k = _heaviest(r.ball_loads)
     assert k == h
     assert case["cage_frequency"] == pytest.approx(r.orbit_speeds[k] / (2 * math.pi), rel=1e-9)
@@ -188,19 +212,30 @@ def test_cli_pair_gives_each_bearing_its_own_frequencies(capsys, quasi):
     from bearingload.bearings.resolve import resolve_bearing
 
     extra = ("--quasi-static",) if quasi else ()
-    doc = _json(capsys, "7205BDB", "-F", "2kN", "-A", "1kN", "--preload", "500N", "--speed",
-                "10000", *extra)  # fmt: skip
+    doc = _json(
+        capsys, "7205BDB", "-F", "2kN", "-A", "1kN", "--preload", "500N", "--speed", "10000", *extra
+    )
     b = resolve_bearing("7205B")
     got = []
     for bearing in doc["cases"][0]["bearings"]:
         h = _heaviest(bearing["ball_loads"])
         if quasi:
-            want = defect_frequencies(b.balls, b.ball_diameter, b.pitch_diameter, 10000.0,
-                                      abs(bearing["contact_angles"][h]))  # fmt: skip
+            want = defect_frequencies(
+                b.balls,
+                b.ball_diameter,
+                b.pitch_diameter,
+                10000.0,
+                abs(bearing["contact_angles"][h]),
+            )
         else:
-            want = defect_frequencies(b.balls, b.ball_diameter, b.pitch_diameter, 10000.0,
-                                      bearing["contact_angles_inner"][h],
-                                      bearing["contact_angles_outer"][h])  # fmt: skip
+            want = defect_frequencies(
+                b.balls,
+                b.ball_diameter,
+                b.pitch_diameter,
+                10000.0,
+                bearing["contact_angles_inner"][h],
+                bearing["contact_angles_outer"][h],
+            )
         for key in KEYS:
             assert bearing[key] == pytest.approx(want.values()[key], rel=1e-9), key
         got.append(bearing["cage_frequency"])
@@ -210,7 +245,11 @@ def test_cli_pair_gives_each_bearing_its_own_frequencies(capsys, quasi):
 def test_cli_table_shows_the_frequencies_with_units(capsys):
     code, out, err = run_entry(capsys, "solve", *HAND_6205, "--speed", "1800", "--quasi-static")
     assert code == 0, err
-    for label in ("cage frequency FTF", "ball pass frequency, outer ring BPFO",
-                  "ball pass frequency, inner ring BPFI", "ball spin frequency BSF"):  # fmt: skip
+    for label in (
+        "cage frequency FTF",
+        "ball pass frequency, outer ring BPFO",
+        "ball pass frequency, inner ring BPFI",
+        "ball spin frequency BSF",
+    ):
         line = next(x for x in out.splitlines() if x.startswith(label))
         assert line.rstrip().endswith("Hz")

@@ -550,8 +550,13 @@ def _solve_bearing(
     (lc,) = with_reference_lives(cases, rotating)
     out = case_columns(lc) | {"warnings": list(lc.warnings), "model": METHODS[method].title}
     n = len(idx)
-    return out | {"_bearing": b, "_load": out["load"], "_angle": np.zeros(n),
-                  "_angle_outer": np.full(n, np.nan), "_rotating": rotating}  # fmt: skip
+    return out | {
+        "_bearing": b,
+        "_load": out["load"],
+        "_angle": np.zeros(n),
+        "_angle_outer": np.full(n, np.nan),
+        "_rotating": rotating,
+    }
 
 
 def _solve_combined(
@@ -591,10 +596,20 @@ def _solve_combined(
     angles = np.asarray(case.result.contact_angles, dtype=float).reshape(len(idx), -1)
     angle = np.take_along_axis(angles, heaviest, axis=-1)[:, 0]
     outer = getattr(case.result, "contact_angles_outer", None)  # the ball dynamics at speed
-    outer = (np.full(len(idx), np.nan) if outer is None else np.take_along_axis(
-        np.asarray(outer, dtype=float).reshape(len(idx), -1), heaviest, axis=-1)[:, 0])  # fmt: skip
-    return out | {"_bearing": b, "_load": out["equivalent_load"], "_angle": angle,
-                  "_angle_outer": outer, "_rotating": rotating}  # fmt: skip
+    outer = (
+        np.full(len(idx), np.nan)
+        if outer is None
+        else np.take_along_axis(
+            np.asarray(outer, dtype=float).reshape(len(idx), -1), heaviest, axis=-1
+        )[:, 0]
+    )
+    return out | {
+        "_bearing": b,
+        "_load": out["equivalent_load"],
+        "_angle": angle,
+        "_angle_outer": outer,
+        "_rotating": rotating,
+    }
 
 
 #: The way out of a speed beyond the ball dynamics' limit (n d_m), in the batch's words.

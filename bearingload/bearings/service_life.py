@@ -259,8 +259,9 @@ def _frequencies(speed: Any, b: LifeBasis) -> dict[str, Any]:
     outer = np.asarray(np.nan if b.contact_angle_outer is None else b.contact_angle_outer, float)
     two = known & np.isfinite(outer)
     if two.any():
-        both = defect_frequencies(*geometry, np.where(two, inner, 0.0), np.where(two, outer, 0.0),
-                                  b.rotating).values()  # fmt: skip
+        both = defect_frequencies(
+            *geometry, np.where(two, inner, 0.0), np.where(two, outer, 0.0), b.rotating
+        ).values()
         found = {k: np.where(two, both[k], v) for k, v in found.items()}
     return {k: _arr(np.where(known, v, np.nan)) for k, v in found.items()}
 
