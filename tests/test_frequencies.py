@@ -80,6 +80,7 @@ CASES = [  # z, D_w, d_m, n [rpm], alpha_i, alpha_o [°], rotating
     (9, 11.112, 53.5, 25000.0, 18.0, 11.5, "inner"),
     (25, 6.35, 61.0, 3000.0, 25.0, 21.0, "outer"),
     (7, 11.5, 43.5, 1000.0, 0.0, 0.0, "outer"),
+    (9, 7.94, 39.04, 3000.0, -0.0158, 0.012, "inner"),  # a deep-groove ball's, near 0° at speed
 ]
 
 
@@ -99,6 +100,21 @@ def test_one_angle_agrees_with_the_velocity_vectors(case):
     want = _no_slip(z, dw, dm, n, a_i, a_i, rotating, outer_control=False)
     for key, value in zip(KEYS, want, strict=True):
         assert got[key] == pytest.approx(value, rel=1e-12, abs=1e-9), key
+
+
+@pytest.mark.parametrize("case", CASES)
+def test_the_other_flank_is_the_mirror_image(case):
+    """A ball on the groove's other flank (a deep-groove ball under a thrust the other way, or
+    a hair below 0° under a radial load) has the frequencies of the mirrored angles."""
+    z, dw, dm, n, a_i, a_o, rotating = case
+    plus = defect_frequencies(z, dw, dm, n, a_i, a_o, rotating).values()
+    minus = defect_frequencies(z, dw, dm, n, -a_i, -a_o, rotating).values()
+    one = defect_frequencies(z, dw, dm, n, -a_i, rotating=rotating).values()
+    for key in KEYS:
+        assert minus[key] == pytest.approx(plus[key], rel=1e-14), key
+        assert one[key] == pytest.approx(
+            defect_frequencies(z, dw, dm, n, a_i, rotating=rotating).values()[key], rel=1e-14
+        )
 
 
 def test_equal_angles_give_the_one_angle_cage_and_the_rotating_ring_moves_the_cage():

@@ -99,8 +99,8 @@ def defect_frequencies(
     speed : array_like
         n >= 0 of the rotating ring, the other one still. [rpm]
     contact_angle : array_like
-        alpha of both contacts; with ``contact_angle_outer`` the inner contact's alpha_i, 0 to
-        90. [°]
+        alpha of both contacts; with ``contact_angle_outer`` the inner contact's alpha_i, -90 to
+        90 (negative: the groove's other flank). [°]
     contact_angle_outer : array_like, optional
         alpha_o: the two-angle kinematics under outer-raceway control. [°]
     rotating : {"inner", "outer"}
@@ -152,10 +152,12 @@ def _geometry(balls: int, ball_diameter: float, pitch_diameter: float) -> tuple[
 
 
 def _angle(name: str, value: ArrayLike) -> Any:
-    """A contact angle in radians, checked to lie in 0 to 90°."""
+    """A contact angle in radians, checked to lie in -90 to 90° (a negative angle: the ball on
+    the groove's other flank, the mirror image, as a deep-groove ball under a thrust the other
+    way)."""
     a = np.asarray(value, dtype=float)
-    if not np.all(np.isfinite(a) & (a >= 0) & (a <= 90)):
-        raise InputError(name, f"must lie between 0 and 90°; got {value!r}")
+    if not np.all(np.isfinite(a) & (np.abs(a) <= 90)):
+        raise InputError(name, f"must lie between -90 and 90°; got {value!r}")
     return np.deg2rad(a)
 
 

@@ -163,9 +163,7 @@ def angular_contact_tabulated(contact_angle: float) -> bool:
     """Whether ISO 281's X, Y of a single-row angular-contact ball bearing of this nominal
     contact angle are coded (15°, 20°, 25°, 30°, 35°, 40°, 45°; the table with its sources:
     :mod:`bearingload.bearings.angular_factors`). [°]"""
-    from bearingload.bearings.angular_factors import tabulated
-
-    return tabulated(contact_angle)
+    return angular_factors.tabulated(contact_angle)
 
 
 def equivalent_load_angular_contact(
