@@ -10,11 +10,25 @@ import math
 
 import pytest
 
-from bearingload.bearings.checks import static_equivalent_load_angular
-from bearingload.bearings.life import equivalent_load_angular_contact
+from bearingload.bearings.checks import (
+    static_equivalent_load_angular,
+    static_equivalent_load_angular_pair,
+)
+from bearingload.bearings.life import equivalent_load_angular_contact, equivalent_load_angular_pair
 from bearingload.errors import InputError
 
-from .fixtures.angular_factors import ROW_15, ROW_15_X, X0, XY_ROWS, Y0_ROWS
+from .fixtures.angular_factors import (
+    MISPRINTS,
+    PAIR_ROWS,
+    ROW_15,
+    ROW_15_PAIR_X2,
+    ROW_15_X,
+    X0,
+    X0_PAIR,
+    XY_ROWS,
+    Y0_PAIR_ROWS,
+    Y0_ROWS,
+)
 
 C0 = 14000.0  # N (any C0: the 15° row is read at F_a = r C0 / f0)
 
@@ -34,7 +48,7 @@ def test_fixed_rows_below_and_above_e(alpha):
 
 @pytest.mark.parametrize("knot", range(len(ROW_15)))
 def test_15_degree_row_at_its_knots_with_and_without_f0(knot):
-    r_f0, r_c0, e, y = ROW_15[knot]
+    r_f0, r_c0, e, y, _, _ = ROW_15[knot]
     f0 = 13.0
     fa = r_f0 * C0 / f0
     fr = fa / (e * 1.01)  # just beyond e: the X, Y branch
@@ -49,7 +63,7 @@ def test_15_degree_row_at_its_knots_with_and_without_f0(knot):
 
 @pytest.mark.parametrize("knot", range(len(ROW_15) - 1))
 def test_15_degree_row_interpolates_linearly_between_knots(knot):
-    (r0, _, e0, y0), (r1, _, e1, y1) = ROW_15[knot], ROW_15[knot + 1]
+    (r0, _, e0, y0, _, _), (r1, _, e1, y1, _, _) = ROW_15[knot], ROW_15[knot + 1]
     t = 0.3
     r, e, y = r0 + t * (r1 - r0), e0 + t * (e1 - e0), y0 + t * (y1 - y0)
     f0 = 12.0
@@ -62,7 +76,7 @@ def test_15_degree_row_interpolates_linearly_between_knots(knot):
 
 def test_15_degree_row_ends_held_outside_the_table():
     first, last = ROW_15[0], ROW_15[-1]
-    for r, (_, _, _, y) in ((0.01, first), (50.0, last)):
+    for r, (_, _, _, y, _, _) in ((0.01, first), (50.0, last)):
         fa = r * C0 / 13.0
         got = float(equivalent_load_angular_contact(1e-3 * fa, fa, 15.0, C0, 13.0))
         assert math.isclose(got, ROW_15_X * 1e-3 * fa + y * fa, rel_tol=1e-12)
@@ -75,17 +89,91 @@ def test_static_equivalent_load_each_angle(alpha):
         assert static_equivalent_load_angular(fr, fa, alpha) == max(fr, X0 * fr + y0 * fa)
 
 
-# ISO 281 Table 3's single-row angles whose rows no public restatement was found for
-# (docs/angular_contact.md), and angles between the rows (GOST's 12°, 26°, 36°): never guessed
-# from the nearest coded row.
-UNCODED_ANGLES = (5.0, 10.0, 12.0, 20.0, 26.0, 35.0, 36.0, 45.0)
+# Angles below the coded rows (ISO 281's 5° and 10° rows were found in no public source), between
+# them (GOST's 12°, 26°, 36°) and beyond: never guessed from the nearest coded row.
+UNCODED_ANGLES = (5.0, 10.0, 12.0, 26.0, 36.0, 50.0)
 
 
 @pytest.mark.parametrize("alpha", UNCODED_ANGLES)
-def test_untabulated_angles_give_nothing_or_refuse(alpha):
+def test_untabulated_angles_give_nothing_or_refuse_naming_the_covered_angles(alpha):
     assert static_equivalent_load_angular(1000.0, 1000.0, alpha) is None
-    with pytest.raises(InputError, match="contact_angle"):
-        equivalent_load_angular_contact(1000.0, 1000.0, alpha)
+    assert static_equivalent_load_angular_pair(1000.0, 1000.0, alpha) is None
+    for rule in (equivalent_load_angular_contact, equivalent_load_angular_pair):
+        with pytest.raises(InputError, match="contact_angle") as caught:
+            rule(1000.0, 1000.0, alpha)
+        assert "15, 20, 25, 30, 35, 40 and 45°" in str(caught.value)
+        assert f"got {alpha:g}°" in str(caught.value)
+
+
+@pytest.mark.parametrize("alpha", sorted(XY_ROWS))
+def test_single_rows_meet_at_e(alpha):
+    """Independent check of each transcribed row: P = F_r and P = X F_r + Y F_a meet at
+    F_a/F_r = e to the table's rounding (X + Y e = 1)."""
+    (e, x, y), _ = XY_ROWS[alpha]
+    assert abs(x + y * e - 1.0) < 0.011
+
+
+@pytest.mark.parametrize("alpha", sorted(PAIR_ROWS))
+def test_pair_rows_below_and_above_e(alpha):
+    (y1, x2, y2), _ = PAIR_ROWS[alpha]
+    (e, _, y), _ = XY_ROWS[alpha]
+    fr = 1000.0
+    below, above = fr * e * 0.5, fr * e * 1.5
+    got = float(equivalent_load_angular_pair(fr, below, alpha))
+    assert math.isclose(got, fr + y1 * below, rel_tol=1e-14)
+    if y2 is None:  # 45°: the one printed Y2 is a misprint, the branch refused
+        with pytest.raises(InputError, match="axial_load"):
+            equivalent_load_angular_pair(fr, above, alpha)
+        return
+    got = float(equivalent_load_angular_pair(fr, above, alpha))
+    assert math.isclose(got, x2 * fr + y2 * above, rel_tol=1e-14)
+    # the two branches meet at e (to the rounding): e = (1 - X2)/(Y2 - Y1)
+    assert abs((1.0 - x2) / (y2 - y1) - e) < 0.03 * e
+    # and Y2 is 1.62-1.63 times one bearing's Y at every angle
+    assert 1.60 < y2 / y < 1.65
+
+
+@pytest.mark.parametrize("misprint", MISPRINTS, ids=lambda m: f"{m[0]:g}-{m[1]}")
+def test_printed_values_not_taken_fail_the_checks_the_taken_ones_pass(misprint):
+    """Where sources disagree, the taken value meets the table's own consistency (the branches
+    meeting at e) and the rejected one does not (docs/angular_contact.md)."""
+    alpha, what, printed, _, taken = misprint
+    if what == "e":
+        (_, x, y), _ = XY_ROWS[alpha]
+        assert abs(x + y * taken - 1.0) < 0.011 and abs(x + y * printed - 1.0) > 0.03
+    elif alpha == 15.0:
+        _, _, e, _, y1, _ = ROW_15[2]
+        assert abs((1 - ROW_15_PAIR_X2) / (taken - y1) - e) < 0.01
+        assert abs((1 - ROW_15_PAIR_X2) / (printed - y1) - e) > 0.05
+    else:
+        (y1, x2, _), _ = PAIR_ROWS[alpha]
+        (e, _, _), _ = XY_ROWS[alpha]
+        assert abs((1 - x2) / (printed - y1) - e) > 0.2 * e
+
+
+@pytest.mark.parametrize("knot", range(len(ROW_15)))
+def test_15_degree_pair_at_its_knots(knot):
+    """The pair at 15°: i = 2 and C0r the pair's, so F_a = r C0r / (2 f0) reads knot r."""
+    r_f0, r_c0, e, _, y1, y2 = ROW_15[knot]
+    f0, c0_pair = 13.0, 2 * C0
+    fa = r_f0 * c0_pair / (2 * f0)
+    fr_beyond, fr_within = fa / (e * 1.01), fa / (e * 0.99)
+    got = float(equivalent_load_angular_pair(fr_beyond, fa, 15.0, c0_pair, f0))
+    assert math.isclose(got, ROW_15_PAIR_X2 * fr_beyond + y2 * fa, rel_tol=1e-12)
+    got = float(equivalent_load_angular_pair(fr_within, fa, 15.0, c0_pair, f0))
+    assert math.isclose(got, fr_within + y1 * fa, rel_tol=1e-12)
+    fa = r_c0 * c0_pair / 2  # without f0: i F_a / C0r
+    got = float(equivalent_load_angular_pair(fa / (e * 1.01), fa, 15.0, c0_pair))
+    assert math.isclose(got, ROW_15_PAIR_X2 * fa / (e * 1.01) + y2 * fa, rel_tol=1e-12)
+
+
+@pytest.mark.parametrize("alpha", sorted(Y0_PAIR_ROWS))
+def test_static_equivalent_load_of_the_pair_each_angle(alpha):
+    y0 = Y0_PAIR_ROWS[alpha]
+    assert math.isclose(y0, 2 * Y0_ROWS[alpha][0], rel_tol=1e-12)  # the pair's is twice one's
+    for fr, fa in ((1000.0, 0.0), (1000.0, 500.0), (0.0, 3000.0)):
+        got = static_equivalent_load_angular_pair(fr, fa, alpha)
+        assert math.isclose(got, X0_PAIR * fr + y0 * fa, rel_tol=1e-14)
 
 
 def test_15_degrees_needs_c0_and_a_thrust_is_not_negative():
@@ -100,7 +188,7 @@ HAND = ("solve", "--balls", "13", "--ball-diameter", "7.938", "--pitch-diameter"
         "--format", "json")  # fmt: skip
 
 
-@pytest.mark.parametrize("alpha", [15.0, 25.0, 30.0, 40.0])
+@pytest.mark.parametrize("alpha", [15.0, 20.0, 25.0, 30.0, 35.0, 40.0, 45.0])
 def test_cli_hand_ring_gives_l10_and_p0(capsys, alpha):
     from tests.cli_helpers import run_entry
 
@@ -111,7 +199,7 @@ def test_cli_hand_ring_gives_l10_and_p0(capsys, alpha):
     if alpha == 15.0:  # no f0 for a hand-given ring: the F_a/C0 column
         ratio = fa / 14000.0
         row = next(i for i in range(len(ROW_15) - 1) if ROW_15[i + 1][1] >= ratio)
-        (_, a0, _, y0), (_, a1, _, y1) = ROW_15[row], ROW_15[row + 1]
+        (_, a0, _, y0, _, _), (_, a1, _, y1, _, _) = ROW_15[row], ROW_15[row + 1]
         x, y = ROW_15_X, y0 + (ratio - a0) / (a1 - a0) * (y1 - y0)
     else:
         (_, x, y), _ = XY_ROWS[alpha]
@@ -123,7 +211,7 @@ def test_cli_hand_ring_gives_l10_and_p0(capsys, alpha):
     assert math.isclose(case["static_safety"], 14000.0 / p0, rel_tol=1e-9)
 
 
-@pytest.mark.parametrize("alpha", [20.0, 35.0, 45.0])
+@pytest.mark.parametrize("alpha", [12.0, 26.0, 36.0])
 def test_cli_untabulated_angle_leaves_l10_and_p0_empty(capsys, alpha):
     from tests.cli_helpers import run_entry
 

@@ -59,9 +59,18 @@ def test_a_ball_bearing_at_speed_is_solve_with_an_axial_load_of_0(case):
         assert np.all(outer[inner > 0] > inner[inner > 0])
 
 
+#: What a speed adds besides the hours: the defect frequencies (tests/test_frequencies.py).
+FREQUENCIES = (
+    "cage_frequency",
+    "ball_pass_frequency_outer",
+    "ball_pass_frequency_inner",
+    "ball_spin_frequency",
+)
+
+
 def test_quasi_static_is_the_static_radial_engine_bit_for_bit():
     """--quasi-static: the radial engine's answer, every key of the json without --speed equal
-    bit for bit, the hours at the speed added (L 10^6/(60 n))."""
+    bit for bit, the hours at the speed and the defect frequencies added (L 10^6/(60 n))."""
     static = json.loads(_ok("solve", "6205", "-F", "1kN", "--format", "json"))["cases"][0]
     quasi = json.loads(_ok("solve", "6205", "-F", "1kN", "--speed", "3000", "--quasi-static",
                            "--format", "json"))["cases"][0]  # fmt: skip
@@ -70,7 +79,7 @@ def test_quasi_static_is_the_static_radial_engine_bit_for_bit():
     for life in ("rating_life", "reference_rating_life"):
         assert quasi[f"{life}_hours"] == pytest.approx(static[life] * 1e6 / (60 * 3000), 1e-9)
     assert set(quasi) - set(static) == {"speed", "rating_life_hours",
-                                        "reference_rating_life_hours"}  # fmt: skip
+                                        "reference_rating_life_hours", *FREQUENCIES}  # fmt: skip
     # the closed-form methods with the static model
     text = _ok("solve", "6205", "-F", "1kN", "--speed", "3000", "--quasi-static", "--method", "all")
     assert "stribeck" in text.lower()

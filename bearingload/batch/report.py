@@ -79,7 +79,9 @@ PAIR_AT_SPEED_NOTE = (
 #: The output columns each service input column can give (solve prints them when the option is
 #: given); a file without the column has none of them.
 SERVICE_OUTPUT = {
-    "speed": ("speed", "preload_at_speed", "ball_density", "rating_life_hours",
+    "speed": ("speed", "preload_at_speed", "ball_density", "cage_frequency",
+              "ball_pass_frequency_outer", "ball_pass_frequency_inner", "ball_spin_frequency",
+              "rating_life_hours",
               "reference_rating_life_hours",
               "modified_rating_life_hours", "modified_reference_rating_life_hours"),
     "reliability": ("reliability", "reliability_factor"),

@@ -552,7 +552,14 @@ def _solve_bearing(
     cases = solve_bearing([b], load, cage, [method], revolutions)
     (lc,) = with_reference_lives(cases, rotating)
     out = case_columns(lc) | {"warnings": list(lc.warnings), "model": METHODS[method].title}
-    return out | {"_bearing": b, "_load": out["load"], "_angle": np.zeros(len(idx))}
+    n = len(idx)
+    return out | {
+        "_bearing": b,
+        "_load": out["load"],
+        "_angle": np.zeros(n),
+        "_angle_outer": np.full(n, np.nan),
+        "_rotating": rotating,
+    }
 
 
 def _solve_combined(
@@ -591,7 +598,21 @@ def _solve_combined(
     heaviest = np.argmax(loads, axis=-1)[:, None]
     angles = np.asarray(case.result.contact_angles, dtype=float).reshape(len(idx), -1)
     angle = np.take_along_axis(angles, heaviest, axis=-1)[:, 0]
-    return out | {"_bearing": b, "_load": out["equivalent_load"], "_angle": angle}
+    outer = getattr(case.result, "contact_angles_outer", None)  # the ball dynamics at speed
+    outer = (
+        np.full(len(idx), np.nan)
+        if outer is None
+        else np.take_along_axis(
+            np.asarray(outer, dtype=float).reshape(len(idx), -1), heaviest, axis=-1
+        )[:, 0]
+    )
+    return out | {
+        "_bearing": b,
+        "_load": out["equivalent_load"],
+        "_angle": angle,
+        "_angle_outer": outer,
+        "_rotating": rotating,
+    }
 
 
 #: The way out of a speed beyond the ball dynamics' limit (n d_m), in the batch's words.
@@ -654,6 +675,7 @@ def with_service(parts: list[Part], cols: dict[str, list[Any]], bad: dict[int, s
     bases: dict[tuple[Any, ...], Any] = {}
     for p, (idx, out) in enumerate(parts):
         b = out.pop("_bearing", None)
+        rotating = out.pop("_rotating", "inner")
         if b is None:
             continue
         _speed_warnings(b, idx, out, cols.get("speed"))
@@ -663,7 +685,7 @@ def with_service(parts: list[Part], cols: dict[str, list[Any]], bad: dict[int, s
         for j, i in enumerate(idx):
             given = tuple((c, cols[c][i] if c == "contamination" else True)
                           for c in present if cols[c][i] is not None)  # fmt: skip
-            groups.setdefault((same, given), []).append((p, j))
+            groups.setdefault((same, rotating, given), []).append((p, j))
     floats: dict[tuple[int, str], np.ndarray] = {}
 
     def gathered(key: str, members: list[tuple[int, int]]) -> np.ndarray:
@@ -673,11 +695,13 @@ def with_service(parts: list[Part], cols: dict[str, list[Any]], bad: dict[int, s
         return np.array([floats[p, key][j] for p, j in members], dtype=float)
 
     failed: dict[tuple[int, int], str] = {}
-    for (same, _), group in groups.items():
+    for (same, rotating, _), group in groups.items():
 
-        def call(members: list[tuple[int, int]], b: Any = bases[same]) -> dict[str, Any]:
+        def call(
+            members: list[tuple[int, int]], b: Any = bases[same], turning: str = rotating
+        ) -> dict[str, Any]:
             rows = [parts[p][0][j] for p, j in members]
-            return service_columns(_operating(cols, rows), _basis(b, members, gathered))
+            return service_columns(_operating(cols, rows), _basis(b, members, gathered, turning))
 
         for members, found in _bisected(group, call, failed):
             rows = [parts[p][0][j] for p, j in members]
@@ -691,6 +715,7 @@ def with_service(parts: list[Part], cols: dict[str, list[Any]], bad: dict[int, s
     for _, out in parts:
         out.pop("_load", None)
         out.pop("_angle", None)
+        out.pop("_angle_outer", None)
     for p in sorted({p for p, _ in failed}, reverse=True):
         idx, out = parts[p]
         for j in (j for q, j in failed if q == p):
@@ -740,8 +765,11 @@ def _operating(cols: dict[str, list[Any]], rows: list[int]) -> Any:
     )  # fmt: skip
 
 
-def _basis(b: Any, members: list[tuple[int, int]], gathered: Callable[..., np.ndarray]) -> Any:
-    """The life basis of the rows ``members`` of bearing ``b`` (P, lives, Q_max, angle)."""
+def _basis(
+    b: Any, members: list[tuple[int, int]], gathered: Callable[..., np.ndarray], rotating: str
+) -> Any:
+    """The life basis of the rows ``members`` of bearing ``b`` (P, lives, Q_max, the heaviest
+    ball's angles, the rotating ring)."""
     from bearingload.bearings.service_life import LifeBasis
     from bearingload.studies.life_basis import life_geometry
 
@@ -750,6 +778,7 @@ def _basis(b: Any, members: list[tuple[int, int]], gathered: Callable[..., np.nd
         rating_life=gathered("rating_life", members),
         reference_rating_life=gathered("reference_rating_life", members),
         q_max=gathered("q_max", members), contact_angle=gathered("_angle", members),
+        contact_angle_outer=gathered("_angle_outer", members), balls=b.balls, rotating=rotating,
         **life_geometry(b),
     )  # fmt: skip
 

@@ -167,32 +167,45 @@ def static_equivalent_load(radial_load: float, axial_load: float = 0.0) -> float
     return max(radial_load, X0_BALL * radial_load + Y0_BALL * abs(axial_load))
 
 
-#: ISO 76:2006, 7.1, single-row angular-contact ball bearings (single or tandem): X0 = 0.5 and
-#: Y0 by the nominal contact angle [°]. Sources (public restatements): JTEKT/Koyo technical
-#: section 3.1 (X0 0.5; 15° 0.46, 30° 0.33, 40° 0.26), LYC Bearing "Equivalent static load -
-#: angular contact ball bearings", Table 4 (P0 = 0.5 F_r + Y0 F_a with 15° 0.46, 25° 0.38,
-#: 40° 0.26), SKF/FAG product pages of 72xx B (Y0 0.26 at 40°). The standard's 20°, 35° and
-#: 45° values were not found in a public restatement: not coded.
-X0_ANGULAR = 0.5
-Y0_ANGULAR: dict[float, float] = {15.0: 0.46, 25.0: 0.38, 30.0: 0.33, 40.0: 0.26}
-
-
 def static_equivalent_load_angular(
     radial_load: float, axial_load: float, contact_angle: float
 ) -> float | None:
     """Static equivalent load P0 = max(X0 F_r + Y0 F_a, F_r) of a single-row angular-contact
-    ball bearing (ISO 76:2006, 7.1; :data:`Y0_ANGULAR`); None for a contact angle without a
-    coded Y0. [N]
+    ball bearing, single or tandem (ISO 76:2006, 7.1: X0 = 0.5, Y0 by the contact angle, the
+    table with its sources in :mod:`bearingload.bearings.angular_factors`); None for a contact
+    angle without a coded Y0. [N]
 
     >>> static_equivalent_load_angular(1000.0, 2000.0, 40.0)
     1020.0
-    >>> static_equivalent_load_angular(1000.0, 2000.0, 20.0) is None
+    >>> static_equivalent_load_angular(1000.0, 2000.0, 20.0)
+    1340.0
+    >>> static_equivalent_load_angular(1000.0, 2000.0, 26.0) is None
     True
     """
-    y0 = next((v for a, v in Y0_ANGULAR.items() if abs(a - contact_angle) < 1e-9), None)
+    from bearingload.bearings.angular_factors import X0_SINGLE, static_y0
+
+    y0 = static_y0(contact_angle)
     if y0 is None:
         return None
-    return max(radial_load, X0_ANGULAR * radial_load + y0 * abs(axial_load))
+    return max(radial_load, X0_SINGLE * radial_load + y0 * abs(axial_load))
+
+
+def static_equivalent_load_angular_pair(
+    radial_load: float, axial_load: float, contact_angle: float
+) -> float | None:
+    """Static equivalent load P0 = F_r + Y0 F_a of a back-to-back or face-to-face pair taken as
+    one bearing (ISO 76:2006, 7.1: X0 = 1, the pair's Y0, twice one bearing's); None for a
+    contact angle without a coded Y0. [N]
+
+    >>> static_equivalent_load_angular_pair(1000.0, 2000.0, 40.0)
+    2040.0
+    """
+    from bearingload.bearings.angular_factors import X0_PAIR, static_y0
+
+    y0 = static_y0(contact_angle, pair=True)
+    if y0 is None:
+        return None
+    return X0_PAIR * radial_load + y0 * abs(axial_load)
 
 
 def static_safety(c0: float | None, p0: float) -> float | None:

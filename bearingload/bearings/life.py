@@ -26,6 +26,7 @@ from typing import Any
 import numpy as np
 from numpy.typing import ArrayLike
 
+from bearingload.bearings import angular_factors
 from bearingload.constants import BALL_LIFE_EXPONENT, ROLLER_LIFE_EXPONENT  # noqa: E402,F401
 from bearingload.errors import InputError
 from bearingload.numerics import scalar_out
@@ -158,38 +159,11 @@ def equivalent_load_deep_groove(
     return scalar_out(np.asarray(p, dtype=float))
 
 
-#: ISO 281:2007, 5.2, Table 3, single-row angular-contact ball bearings (single bearing or
-#: tandem), F_a/F_r > e: contact angle [°] -> (e, X, Y); F_a/F_r <= e gives X = 1, Y = 0.
-#: Only the rows checked against a public restatement are coded, each with its source:
-#: 25°: LYC Bearing, "Equivalent dynamic load - angular contact ball bearings", Table 2
-#: (e 0.68, P = 0.41 F_r + 0.87 F_a); 30°: JTEKT/Koyo technical section 3.1 "Calculation of
-#: equivalent radial / axial load" (e 0.8, X 0.39, Y 0.76; NTN's catalogue prints the same);
-#: 40°: Koyo (e 1.14, X 0.35, Y 0.57), LYC Table 2 (the same) and NSK's BEA leaflet. The 20°,
-#: 35° and 45° rows of the standard were not found in a public restatement: not coded.
-ISO281_ANGULAR_FACTORS: dict[float, tuple[float, float, float]] = {
-    25.0: (0.68, 0.41, 0.87),
-    30.0: (0.80, 0.39, 0.76),
-    40.0: (1.14, 0.35, 0.57),
-}
-#: The 15° row depends on the axial load: X = 0.44 and e, Y interpolated linearly in
-#: i f0 F_a / C0r (i = 1 for a single bearing) as the standard's note says. Source: Koyo's
-#: technical section 3.1 (above): i f0 F_a/C0r 0.178, 0.357, 0.714, 1.07, 1.43, 2.14, 3.57,
-#: 5.35, with e 0.38 ... 0.56 and Y 1.47 ... 1.00; LYC's Table 3 prints the same e, Y against
-#: F_a/C0 (0.015 ... 0.44, the column of ISO 281:1990). Koyo's last row is misprinted (5.35
-#: twice, NSK prints 7.14); its e and Y equal those of 5.35 (0.56, 1.00), so beyond 5.35 the
-#: end row holds and the 7.14 knot changes nothing.
-ISO281_ANGULAR_15_F0FA_C0R = (0.178, 0.357, 0.714, 1.07, 1.43, 2.14, 3.57, 5.35)
-ISO281_ANGULAR_15_E = (0.38, 0.40, 0.43, 0.46, 0.47, 0.50, 0.55, 0.56)
-ISO281_ANGULAR_15_Y = (1.47, 1.40, 1.30, 1.23, 1.19, 1.12, 1.02, 1.00)
-ISO281_ANGULAR_15_X = 0.44
-#: The same 15° row against F_a/C0r (LYC Table 3; ISO 281:1990), used where f0 is not known.
-ISO281_ANGULAR_15_FA_C0R = (0.015, 0.029, 0.058, 0.087, 0.12, 0.17, 0.29, 0.44)
-
-
 def angular_contact_tabulated(contact_angle: float) -> bool:
     """Whether ISO 281's X, Y of a single-row angular-contact ball bearing of this nominal
-    contact angle are coded (15°, 25°, 30°, 40°; see :data:`ISO281_ANGULAR_FACTORS`). [°]"""
-    return any(abs(contact_angle - a) < 1e-9 for a in (15.0, *ISO281_ANGULAR_FACTORS))
+    contact angle are coded (15°, 20°, 25°, 30°, 35°, 40°, 45°; the table with its sources:
+    :mod:`bearingload.bearings.angular_factors`). [°]"""
+    return angular_factors.tabulated(contact_angle)
 
 
 def equivalent_load_angular_contact(
@@ -203,16 +177,16 @@ def equivalent_load_angular_contact(
     (single, or tandem). [N]
 
     ISO 281:2007, 5.2, Table 3: ``F_a/F_r <= e`` gives ``P = F_r``, else ``P = X F_r + Y F_a``
-    with the (e, X, Y) of :data:`ISO281_ANGULAR_FACTORS`; at 15° e and Y are interpolated
-    linearly in ``f0 F_a/C0r`` (or in ``F_a/C0r`` where f0 is not known), the end rows held
-    outside the table. F_a >= 0 is the thrust the bearing takes.
+    with the (e, X, Y) of :data:`bearingload.bearings.angular_factors.ANGULAR_FACTORS`; at 15°
+    e and Y are interpolated linearly in ``f0 F_a/C0r`` (or in ``F_a/C0r`` where f0 is not
+    known), the end rows held outside the table. F_a >= 0 is the thrust the bearing takes.
 
     Parameters
     ----------
     radial_load, axial_load : array_like
         F_r >= 0, F_a >= 0. [N]
     contact_angle : float
-        Nominal contact angle: 15, 25, 30 or 40. [°]
+        Nominal contact angle: 15, 20, 25, 30, 35, 40 or 45. [°]
     C0, f0 : float, optional
         Basic static radial load rating [N] and factor f0 [-]; C0 is needed at 15°.
 
@@ -220,29 +194,103 @@ def equivalent_load_angular_contact(
     1490.0
     >>> float(equivalent_load_angular_contact(1000.0, 1000.0, 40.0))
     1000.0
+    >>> float(equivalent_load_angular_contact(1000.0, 2000.0, 20.0))
+    2430.0
     """
+    fr, fa = _angular_loads(radial_load, axial_load)
+    if abs(contact_angle - 15.0) < 1e-9:
+        e, y, _, _ = _row_15(fa, C0, f0, 1)
+        return _two_branches(fr, fa, e, (1.0, 0.0), (angular_factors.ANGULAR_15_X, y))
+    row = angular_factors.fixed_row(contact_angle)
+    return _two_branches(fr, fa, row.e, (1.0, 0.0), (row.x, row.y))
+
+
+def equivalent_load_angular_pair(
+    radial_load: ArrayLike,
+    axial_load: ArrayLike,
+    contact_angle: float,
+    C0: float | None = None,
+    f0: float | None = None,
+) -> Any:
+    """Dynamic equivalent load of a back-to-back or face-to-face pair of single-row
+    angular-contact ball bearings taken as one bearing. [N]
+
+    ISO 281:2007, 5.2, Table 3 (the pair as one double-row bearing): ``F_a/F_r <= e`` gives
+    ``P = F_r + Y1 F_a``, else ``P = X2 F_r + Y2 F_a``
+    (:data:`bearingload.bearings.angular_factors.ANGULAR_FACTORS`). At 15° e, Y1 and Y2 are
+    interpolated linearly in ``i f0 F_a/C0r`` with i = 2 and C0r the pair's rating (twice one
+    bearing's, ISO 76), or in ``i F_a/C0r`` where f0 is not known. At 45° the second branch is
+    refused: its one printed Y2 is a misprint (:mod:`bearingload.bearings.angular_factors`).
+
+    Parameters
+    ----------
+    radial_load, axial_load : array_like
+        F_r >= 0 and F_a >= 0 on the pair. [N]
+    contact_angle : float
+        Nominal contact angle of both bearings: 15, 20, 25, 30, 35, 40 or 45. [°]
+    C0, f0 : float, optional
+        The pair's basic static radial load rating [N] and f0 [-]; C0 is needed at 15°.
+
+    >>> float(equivalent_load_angular_pair(1000.0, 500.0, 40.0))
+    1275.0
+    >>> float(equivalent_load_angular_pair(1000.0, 2000.0, 40.0))
+    2430.0
+    """
+    fr, fa = _angular_loads(radial_load, axial_load)
+    if abs(contact_angle - 15.0) < 1e-9:
+        e, _, y1, y2 = _row_15(fa, C0, f0, 2)
+        return _two_branches(fr, fa, e, (1.0, y1), (angular_factors.ANGULAR_15_PAIR_X2, y2))
+    row = angular_factors.fixed_row(contact_angle)
+    if row.pair_y2 is None:
+        with np.errstate(divide="ignore", invalid="ignore"):
+            beyond = np.any(np.where(fr > 0, fa > row.e * fr, fa > 0))
+        if beyond:
+            raise InputError(
+                "axial_load",
+                f"a pair at {contact_angle:g}° with F_a/F_r > e = {row.e:g} needs Y2, whose only "
+                "printed value (PBF) is a misprint (docs/angular_contact.md): not computed",
+            )
+        return _two_branches(fr, fa, row.e, (1.0, row.pair_y1), (1.0, row.pair_y1))
+    return _two_branches(fr, fa, row.e, (1.0, row.pair_y1), (row.pair_x2, row.pair_y2))
+
+
+def _angular_loads(radial_load: ArrayLike, axial_load: ArrayLike) -> tuple[Any, Any]:
+    """F_r, F_a as arrays, each finite and >= 0 (InputError naming the load otherwise)."""
     fr = np.asarray(radial_load, dtype=float)
     fa = np.asarray(axial_load, dtype=float)
     for name, v in (("radial_load", fr), ("axial_load", fa)):
         if not np.all(np.isfinite(v) & (v >= 0)):
             raise InputError(name, "must be a finite number >= 0 for an angular-contact bearing")
-    if not angular_contact_tabulated(contact_angle):
-        raise InputError(
-            "contact_angle",
-            f"ISO 281's X, Y are coded for 15, 25, 30 and 40°; got {contact_angle:g}°",
-        )
-    if abs(contact_angle - 15.0) < 1e-9:
-        c0 = finite_positive("C0", C0)
-        if f0 is None:
-            ratio, knots = fa / c0, ISO281_ANGULAR_15_FA_C0R
-        else:
-            ratio, knots = finite_positive("f0", f0) * fa / c0, ISO281_ANGULAR_15_F0FA_C0R
-        e = np.interp(ratio, knots, ISO281_ANGULAR_15_E)
-        x, y = ISO281_ANGULAR_15_X, np.interp(ratio, knots, ISO281_ANGULAR_15_Y)
+    return fr, fa
+
+
+def _row_15(fa: Any, C0: float | None, f0: float | None, rows: int) -> tuple[Any, ...]:
+    """e, Y, Y1, Y2 of the 15° row at the relative axial load ``i f0 F_a/C0r`` (or ``i F_a/C0r``
+    without f0), ``i = rows``, linearly interpolated, the end rows held outside."""
+    c0 = finite_positive("C0", C0)
+    if f0 is None:
+        ratio, knots = rows * fa / c0, angular_factors.ANGULAR_15_FA_C0R
     else:
-        key = min(ISO281_ANGULAR_FACTORS, key=lambda a: abs(a - contact_angle))
-        e, x, y = ISO281_ANGULAR_FACTORS[key]
+        ratio, knots = (
+            rows * finite_positive("f0", f0) * fa / c0,
+            angular_factors.ANGULAR_15_F0FA_C0R,
+        )
+    return tuple(
+        np.interp(ratio, knots, col)
+        for col in (
+            angular_factors.ANGULAR_15_E,
+            angular_factors.ANGULAR_15_Y,
+            angular_factors.ANGULAR_15_PAIR_Y1,
+            angular_factors.ANGULAR_15_PAIR_Y2,
+        )
+    )
+
+
+def _two_branches(
+    fr: Any, fa: Any, e: Any, within: tuple[Any, Any], beyond: tuple[Any, Any]
+) -> Any:
+    """``X F_r + Y F_a`` with (X, Y) = ``within`` for ``F_a/F_r <= e``, else ``beyond``. [N]"""
     with np.errstate(divide="ignore", invalid="ignore"):
         small = np.where(fr > 0, fa / np.where(fr > 0, fr, 1.0) <= e, fa == 0)
-    p = np.where(small, fr, x * fr + y * fa)
+    p = np.where(small, within[0] * fr + within[1] * fa, beyond[0] * fr + beyond[1] * fa)
     return scalar_out(np.asarray(p, dtype=float))

@@ -70,7 +70,10 @@ class Operating:
 class LifeBasis:
     """What one solved case (or the cases of one bearing) knows for its lives: ``kind``, the
     ratings and the geometry are the bearing's; ``equivalent_load``, the lives, ``q_max`` and
-    ``contact_angle`` a float, or an array over cases (NaN: none). [N, mm, MPa, °, 10^6 rev]"""
+    ``contact_angle`` a float, or an array over cases (NaN: none). ``contact_angle`` is the
+    heaviest ball's (its inner contact's at speed, ``contact_angle_outer`` its outer one there,
+    None: the same), ``balls`` the number of balls (None: no defect frequencies) and
+    ``rotating`` the ring turning at the speed. [N, mm, MPa, °, 10^6 rev]"""
 
     kind: str = "ball"
     C: float | None = None
@@ -87,6 +90,9 @@ class LifeBasis:
     roller_length: float | None = None
     q_max: Any = None
     contact_angle: Any = 0.0
+    balls: int | None = None
+    contact_angle_outer: Any = None
+    rotating: str = "inner"
 
 
 @dataclass
@@ -108,6 +114,8 @@ def service_values(op: Operating, b: LifeBasis) -> ServiceLife:
     out.values = {
         k: float(x) for k, x in columns.items() if np.ndim(x) == 0 and np.isfinite(float(x))
     }
+    if "cage_frequency" in out.values:
+        out.notes.append(frequency_note(b))
     if op.reliability is not None:
         out.notes.append(
             "a_1: ISO 281:2007 Table 12 (between its rows 0.95 (ln(100/R)/ln(100/90))^(2/3) "
@@ -172,6 +180,7 @@ def service_columns(op: Operating, b: LifeBasis) -> dict[str, Any]:
         v["static_rating"] = float(b.C0)
     if op.speed is not None:
         v["speed"] = _arr(op.speed)
+        v |= _frequencies(op.speed, b)
         for key in ("rating_life", "reference_rating_life"):
             life = getattr(b, key)
             if life is not None:
@@ -216,6 +225,44 @@ def _check_needs(op: Operating) -> None:
         )
     if op.contamination is not None and op.e_c is not None:
         raise InputError("e_c", "give a contamination level or e_C, not both (each gives e_C)")
+
+
+def frequency_note(b: LifeBasis) -> str:
+    """Where the defect frequencies come from: the heaviest ball's angle(s), the rotating ring
+    (the same words for every bearing of a pair)."""
+    angles = (
+        "its contact angle, pure rolling"
+        if b.contact_angle_outer is None
+        else "its inner and outer contact angles, outer-raceway control"
+    )
+    return (
+        f"FTF, BPFO, BPFI, BSF: kinematics of the heaviest ball at {angles} (Harris & Kotzalas; "
+        f"docs/speed.md), the {b.rotating} ring turning at n, the other still; no slip."
+    )
+
+
+def _frequencies(speed: Any, b: LifeBasis) -> dict[str, Any]:
+    """FTF, BPFO, BPFI and BSF of a ball bearing at its heaviest ball's contact angle(s)
+    (:func:`bearingload.bearings.frequencies.defect_frequencies`); none without the ball set.
+    Over many cases, a case with no outer angle (NaN: the static model) takes the one-angle
+    kinematics, a case with no angle at all (NaN) no frequencies. [Hz]"""
+    from bearingload.bearings.frequencies import defect_frequencies
+
+    if b.kind != "ball" or not (b.balls and b.ball_diameter and b.pitch_diameter):
+        return {}
+    geometry = (b.balls, b.ball_diameter, b.pitch_diameter, speed)
+    inner = np.asarray(b.contact_angle, dtype=float)
+    known = np.isfinite(inner)
+    one = defect_frequencies(*geometry, np.where(known, inner, 0.0), rotating=b.rotating)
+    found = one.values()
+    outer = np.asarray(np.nan if b.contact_angle_outer is None else b.contact_angle_outer, float)
+    two = known & np.isfinite(outer)
+    if two.any():
+        both = defect_frequencies(
+            *geometry, np.where(two, inner, 0.0), np.where(two, outer, 0.0), b.rotating
+        ).values()
+        found = {k: np.where(two, both[k], v) for k, v in found.items()}
+    return {k: _arr(np.where(known, v, np.nan)) for k, v in found.items()}
 
 
 def _arr(value: Any) -> Any:

@@ -352,7 +352,7 @@ DECLARATIONS: dict[str, tuple[tuple[str, ...], dict[str, Any]]] = {
         "--rotating",
         type=click.Choice(["inner", "outer"]),
         help="The ring that rotates relative to the load, for the reference rating life "
-        "L10r (default inner); changes no load.",
+        "L10r and, with --speed, the defect frequencies (default inner); changes no load.",
     ),
     "static_rating": _option(
         "--static-rating",

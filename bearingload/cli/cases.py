@@ -114,17 +114,20 @@ def bearing_context(b: Any) -> str:
 
 
 def check_rotating(case: CaseOptions, b: Any, methods: list[str]) -> None:
-    """Refuse --rotating where no reference rating life L10r is computed for it to select the
-    ring of: a roller bearing, no ball geometry, no C_r, or no exact ball loads."""
+    """Refuse --rotating where neither a reference rating life L10r (a roller bearing, no ball
+    geometry, no C_r, or no exact ball loads) nor defect frequencies (no --speed, no ball
+    geometry) are computed for it to select the ring of."""
     if case.rotating is None:
         return
+    if case.speed is not None and b.kind == "ball" and b.has_geometry:
+        return  # it names the ring of the defect frequencies at the speed
     from bearingload.studies.reference_life import rotating_refusal
 
     why = rotating_refusal(b, case.dynamic_rating, "exact" if "exact" in methods else methods[0])
     if why is not None:
         raise click.UsageError(
             "Invalid value for '--rotating': it names the rotating ring for the reference rating "
-            f"life L10r (ISO/TS 16281), and {why}"
+            f"life L10r (ISO/TS 16281) and, with --speed, the defect frequencies, and {why}"
         )
 
 

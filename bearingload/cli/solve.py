@@ -219,7 +219,7 @@ def solve(
         else:
             bearings = with_ratings(resolve_bearings(case, k_given), case)
             cases = with_speed_warnings(_radial(bearings, case, methods, revolutions), case.speed)
-            service = service_lives(case, [radial_basis(c) for c in cases])
+            service = service_lives(case, [radial_basis(c, case.rotating) for c in cases])
         text = solve_report(
             cases, fmt, per_ball=per_ball, show_geometry=show_geometry, service=service
         )

@@ -123,8 +123,8 @@ ANGULAR_NOTE = (
     "is measured from the zero-load position (every ball at the design angle). Without --moment "
     "or --misalignment the inner ring is free to tilt (M = 0). L10 and P0 at the nominal contact "
     "angle (ISO 281 Table 3: P = F_r for F_a/F_r <= e, else X F_r + Y F_a; ISO 76: "
-    "P0 = max(F_r, 0.5 F_r + Y0 F_a)); coded for 15, 25, 30 and 40° only (L10 at 15° needs "
-    "C_0: e and Y there depend on F_a/C_0)."
+    "P0 = max(F_r, 0.5 F_r + Y0 F_a)); coded for 15, 20, 25, 30, 35, 40 and 45° only, none "
+    "between them (L10 at 15° needs C_0: e and Y there depend on F_a/C_0)."
 )
 #: The label of ``axial`` for an angular-contact bearing (its origin: every ball at the design
 #: angle, not the centred rings).

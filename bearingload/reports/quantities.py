@@ -173,6 +173,11 @@ QUANTITIES: dict[str, Quantity] = {
         # lives as engineers use them (bearings.service_life: ISO 281, ISO/TS 16281, EHL film)
         Quantity("static_rating", "basic static load rating C_0", "N"),
         Quantity("speed", "shaft speed n", "rpm"),
+        # defect frequencies at the speed (bearings.frequencies), heaviest ball's contact angles
+        Quantity("cage_frequency", "cage frequency FTF", "Hz"),
+        Quantity("ball_pass_frequency_outer", "ball pass frequency, outer ring BPFO", "Hz"),
+        Quantity("ball_pass_frequency_inner", "ball pass frequency, inner ring BPFI", "Hz"),
+        Quantity("ball_spin_frequency", "ball spin frequency BSF", "Hz"),
         Quantity("ball_density", "ball density rho (ball dynamics at speed)", "kg/m^3"),
         Quantity("rating_life_hours", "basic rating life L10h", "h"),
         Quantity("reference_rating_life_hours", "reference rating life L10rh", "h"),
@@ -255,6 +260,10 @@ QUANTITIES: dict[str, Quantity] = {
 #: basic lives, in the order the reports show them.
 SERVICE_KEYS = (
     "speed",
+    "cage_frequency",
+    "ball_pass_frequency_outer",
+    "ball_pass_frequency_inner",
+    "ball_spin_frequency",
     "reliability",
     "reliability_factor",
     "viscosity",
