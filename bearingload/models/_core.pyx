@@ -926,9 +926,12 @@ cdef void radial_gradient(const Case *cs, double x, double y, double g, double f
 
 cdef void radial_start(const Case *cs, double f0, double *v) noexcept nogil:
     """(x, y) of the ring under the radial load f0 alone with the stiffness K_0 (scaled: K = 1)
-    and the gap per side g = gap - pre: damped Newton on the convex potential from where the
-    ball nearest the load line alone carries f0; y held where the case holds it."""
-    cdef double g = cs.gap - cs.pre, cmax = -1.0, x, y = 0.0, dx, dy, det, t, slope
+    and the gap per side g = gap - pre: damped Newton on the convex potential (regularised as
+    the radial engine's, so that a ring on one ball moves across the load line to the next),
+    from where the ball nearest the load line alone carries f0; y held where the case holds
+    it; until the forces balance to 1e-13 of f0 or the step stops moving the ring."""
+    cdef double g = cs.gap - cs.pre, cmax = -1.0, x, y = 0.0, dx, dy, det, t, slope, reg
+    cdef double a, d
     cdef double now[7]
     cdef double trial[7]
     cdef int j, k, h
@@ -936,22 +939,27 @@ cdef void radial_start(const Case *cs, double f0, double *v) noexcept nogil:
         cmax = max(cmax, cs.c[j])
     x = (g + f0 ** (2.0 / 3.0)) / cmax
     radial_gradient(cs, x, y, g, f0, now)
-    for k in range(100):
+    for k in range(200):
         if now[6] == 0:  # (no ball loaded: back to the first contact plus one approach)
             x = (g + f0 ** (2.0 / 3.0)) / cmax
             radial_gradient(cs, x, y, g, f0, now)
-        det = now[3] * now[5] - now[4] * now[4]
-        if cs.locked[1] or not det > 1e-14 * now[3] * now[5]:
-            dx = -now[1] / now[3]
+        if fabs(now[1]) <= 1e-13 * f0 and (cs.locked[1] or fabs(now[2]) <= 1e-13 * f0):
+            break
+        reg = 1e-12 * (now[3] + now[5]) + 1e-300
+        a = now[3] + reg
+        d = now[5] + reg
+        if cs.locked[1]:
+            dx = -now[1] / a
             dy = 0.0
         else:
-            dx = (-now[1] * now[5] + now[2] * now[4]) / det
-            dy = (-now[2] * now[3] + now[1] * now[4]) / det
-        if not (fabs(dx) > 1e-15 * fabs(x) or fabs(dy) > 1e-15 * fabs(x)):
+            det = a * d - now[4] * now[4]
+            dx = -(d * now[1] - now[4] * now[2]) / det
+            dy = -(a * now[2] - now[4] * now[1]) / det
+        if not (fabs(dx) > 1e-15 * (fabs(x) + fabs(y)) or fabs(dy) > 1e-15 * (fabs(x) + fabs(y))):
             break
         slope = now[1] * dx + now[2] * dy
         t = 1.0
-        for h in range(60):
+        for h in range(100):
             radial_gradient(cs, x + t * dx, y + t * dy, g, f0, trial)
             if trial[0] <= now[0] + 1e-4 * t * slope:
                 break

@@ -1,0 +1,67 @@
+"""Cases the compiled core's first versions failed where the numpy solver it replaced solved
+them (found by the seeded campaigns): each must solve, balanced.
+
+* The standard start for F_r: the core's own 2-D Newton on the radial model stopped at y = 0
+  where the ring rested on one ball (its matrix singular across the load line), short of the
+  radial engine's position: a 3-ball angular-contact case then ran 2007 steps to a residual of
+  563 (tests.campaign_speed 1000 1). The start is regularised as the radial engine's now.
+* A ring touching no ball at the start: the second-order correction of its line search is
+  1e300 long; the approaches overflowed to NaN, which counted as no contact, and the move was
+  taken (tests.campaign_combined 10000 1, two cases).
+"""
+
+from __future__ import annotations
+
+import numpy as np
+
+from bearingload.models.combined import solve_combined
+
+
+def _balanced(r, fr: float, fa: float, tol: float = 1e-10) -> None:
+    q = np.asarray(r.ball_loads)
+    al, ph = np.radians(r.contact_angles), np.radians(r.ball_angles)
+    size = max(fr, abs(fa), float(q.sum()) * 1e-3)
+    assert abs(float(np.sum(q * np.cos(al) * np.cos(ph))) - fr) <= tol * size
+    assert abs(float(np.sum(q * np.sin(al))) - fa) <= tol * size
+    assert np.all(np.isfinite(q)) and np.all(q >= 0)
+
+
+def test_a_radial_start_on_one_ball_moves_across_to_the_equilibrium():
+    fr, fa = 24.42751831817877, 3.0492195408853155
+    r = solve_combined(
+        3,
+        fr,
+        fa,
+        ball_diameter=23.812,
+        pitch_diameter=102.5,
+        contact_angle=21.417134937218357,
+        cage_angle=286.4198376859827,
+    )
+    _balanced(r, fr, fa)
+    assert int(r.iterations) < 100
+
+
+def test_a_ring_touching_no_ball_at_the_start_is_solved():
+    for z, fa, g, moment, cross in [
+        (
+            3,
+            -6.652022554627573e-09,
+            0.024529646004166954,
+            8.643019970619082e-08,
+            6.164842382796672e-4,
+        ),
+        (6, 3.745607474620071e-12, 0.08481520002944597, 0.0, 2.39538725799815e-05),
+    ]:
+        r = solve_combined(
+            z,
+            0.0,
+            fa,
+            clearance=g,
+            ball_diameter=3.0,
+            pitch_diameter=14.0,
+            moment=moment,
+            moment_cross=cross,
+        )
+        q = np.asarray(r.ball_loads)
+        assert np.all(np.isfinite(q)) and q.max() > 0
+        assert abs(float(r.axial)) < 1.0 and abs(float(r.tilt_cross)) < 10.0
