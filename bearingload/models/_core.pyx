@@ -896,6 +896,49 @@ cdef void holding(const Case *cs, Work *wk, double *out) noexcept nogil:
     tangent(cs, pt.lo.ca, pt.lo.sa, wk.w1, wk.w2, NULL, False, out)
 
 
+cdef bint maybe_flat(const Case *cs, const double *h) noexcept nogil:
+    """Whether the free block of the Hessian h may have a null direction (an eigenvalue below
+    1e-12 of the largest): a pivot of its Cholesky factorisation with diagonal pivoting below
+    1e-8 of its largest diagonal entry (the last pivot is at most 4^4 times the smallest
+    eigenvalue, the largest diagonal at least a fifth of the largest: every such matrix is
+    caught; the caller decides on the eigenvalues)."""
+    cdef double m[25]
+    cdef int idx[5]
+    cdef int n = 0, i, k, step, best, t
+    cdef double dmax = 0.0, piv
+    for i in range(5):
+        if not cs.locked[i]:
+            idx[n] = i
+            n += 1
+    for i in range(n):
+        for k in range(n):
+            m[5 * i + k] = h[5 * idx[i] + idx[k]]
+        dmax = max(dmax, m[6 * i])
+    if n == 0 or not dmax > 0:
+        return n > 0
+    for step in range(n):
+        best = step
+        for i in range(step + 1, n):
+            if m[6 * i] > m[6 * best]:
+                best = i
+        if not m[6 * best] > 1e-8 * dmax:
+            return True
+        if best != step:  # swap rows and columns step <-> best
+            for k in range(n):
+                piv = m[5 * step + k]
+                m[5 * step + k] = m[5 * best + k]
+                m[5 * best + k] = piv
+            for k in range(n):
+                piv = m[5 * k + step]
+                m[5 * k + step] = m[5 * k + best]
+                m[5 * k + best] = piv
+        piv = m[6 * step]
+        for i in range(step + 1, n):
+            for k in range(step + 1, n):
+                m[5 * i + k] -= m[5 * i + step] * m[5 * step + k] / piv
+    return False
+
+
 # ------------------------------------------------------------------------------ the start
 
 cdef void radial_gradient(const Case *cs, double x, double y, double g, double f0,
@@ -1090,27 +1133,37 @@ def solve(const double[:, ::1] c, const double[:, ::1] s, const double[::1] a_ha
     and weights (NODES,). ``max_iterations`` (per stiffness update) and ``first_stage_steps``
     default to the module's limits (lower ones make a test's case fail on purpose).
 
-    Returns (vh, vl, kappa, iterations, status, balls, tangent, holding): the position in
+    Returns (vh, vl, kappa, iterations, status, point, tangent, holding): the position in
     double-double (n, 5) each, the stiffness deviations (n, z), the Newton steps (n,), the
-    status per case (n,), the balls at the answer, a (5, n, z) array of rho, u, d, eps, up, the
-    tangent of the ring forces there (n, 5, 5), scaled, every component free (``stiffness``),
-    and the Hessian of the balls that determine the equilibrium (``holding``).
+    status per case (n,), the point at the answer (the balls and their loads, a (13, n, z)
+    array of rho, u, d, eps, up, ca, sa, cam1, q, dq, root, tau, sig; the generalised forces
+    and the sums of their terms' magnitudes (n, 5) each; the residual (n,)), the tangent of the
+    ring forces there (n, 5, 5), scaled, every component free (``stiffness``), and the Hessian
+    of the balls that determine the equilibrium (``holding``) with whether it may have a null
+    direction among the free components (``maybe_flat``, (n,) uint8).
     """
     cdef Py_ssize_t n = c.shape[0], k
-    cdef int z = <int> c.shape[1], i
+    cdef int z = <int> c.shape[1], i, j
     cdef bint has_curve = curve.shape[1] == NODES
     vh_a = np.empty((n, 5))
     vl_a = np.empty((n, 5))
     kappa_a = np.empty((n, z))
     its_a = np.empty(n, dtype=np.int64)
     status_a = np.empty(n, dtype=np.int32)
-    balls_a = np.empty((5, n, z))
+    balls_a = np.empty((BALL_ARRAYS, n, z))
+    gen_a = np.empty((n, 5))
+    size_a = np.empty((n, 5))
+    res_a = np.empty(n)
+    flat_a = np.zeros(n, dtype=np.uint8)
     tangent_a = np.empty((n, 5, 5))
     holding_a = np.empty((n, 5, 5))
     cdef double[:, ::1] vh = vh_a, vl = vl_a, kappa = kappa_a
     cdef int64_t[::1] its = its_a
     cdef int[::1] status = status_a
     cdef double[:, :, ::1] balls = balls_a, tan = tangent_a, hold = holding_a
+    cdef double[:, ::1] gen = gen_a, size = size_a
+    cdef double[::1] res = res_a
+    cdef unsigned char[::1] flat = flat_a
     cdef Case cs
     cdef Work wk
     cs.lim.tolerance = TOLERANCE
@@ -1151,12 +1204,16 @@ def solve(const double[:, ::1] c, const double[:, ::1] s, const double[::1] a_ha
             if status[k] != NO_MEMORY:
                 stiffness(&cs, &wk, &tan[k, 0, 0])
                 holding(&cs, &wk, &hold[k, 0, 0])
+                flat[k] = maybe_flat(&cs, &hold[k, 0, 0])
             for i in range(z):
                 kappa[k, i] = wk.kappa[i]
-                balls[0, k, i] = wk.pt.b.rho[i]
-                balls[1, k, i] = wk.pt.b.u[i]
-                balls[2, k, i] = wk.pt.b.d[i]
-                balls[3, k, i] = wk.pt.b.eps[i]
-                balls[4, k, i] = wk.pt.b.up[i]
+            for j in range(BALL_ARRAYS):
+                for i in range(z):
+                    balls[j, k, i] = wk.pt.b.rho[j * z + i]
+            for i in range(5):
+                gen[k, i] = wk.pt.gen[i]
+                size[k, i] = wk.pt.size[i]
+            res[k] = wk.pt.res
             free(wk.block)
-    return vh_a, vl_a, kappa_a, its_a, status_a, balls_a, tangent_a, holding_a
+    return (vh_a, vl_a, kappa_a, its_a, status_a, (balls_a, gen_a, size_a, res_a), tangent_a,
+            (holding_a, flat_a))

@@ -642,10 +642,11 @@ def _least_norm_tilt(
     v: tuple[np.ndarray, np.ndarray],
     kappa: np.ndarray,
     end: _ring.Point,
-    holding: np.ndarray,
+    held: tuple[np.ndarray, np.ndarray],
 ) -> tuple[np.ndarray, np.ndarray, _ring.Point, np.ndarray]:
     """The answers whose tilt the loads do not determine, moved to the least tilt of those that
-    balance them; and which cases those are (n,) bool.
+    balance them; and which cases those are (n,) bool. ``held``: the core's Hessian of the
+    balls that hold the ring (n, 5, 5) and whether it may have a null direction (n,).
 
     Where the balls that carry load hold the ring along every direction but one tilt (an
     angular-contact bearing of 4 balls under a thrust of 1e-3 F_r: two loaded balls opposite
@@ -660,14 +661,24 @@ def _least_norm_tilt(
     and no flat direction). The tilt returned is the least of the valley, kept only where the
     equilibrium there is balanced to the tolerance."""
     vh, vl = v
-    free = ~p.locked
-    hess = np.where(free[:, :, None] & free[:, None, :], holding, 0.0)
+    holding, maybe = held
+    undetermined = np.zeros(vh.shape[0], dtype=bool)
+    rows = np.flatnonzero(maybe & np.all(~p.locked[:, 3:], axis=1))
+    if not rows.size:
+        return vh, vl, end, undetermined
+    free = ~p.locked[rows]
+    hess = np.where(free[:, :, None] & free[:, None, :], holding[rows], 0.0)
     hess[:, range(5), range(5)] += np.where(free, 0.0, np.abs(hess).max(axis=(1, 2))[:, None])
     lam, vec = np.linalg.eigh(hess)
     flat = (lam[:, 0] <= FLAT * lam[:, -1]) & np.any(np.abs(vec[:, 3:, 0]) > 0.5, axis=1)
-    undetermined = flat & np.all(free[:, 3:], axis=1)
+    undetermined[rows] = flat
+    lam_of, vec_of = (
+        dict(zip(rows.tolist(), lam, strict=True)),
+        dict(zip(rows.tolist(), vec, strict=True)),
+    )
     for i in np.flatnonzero(undetermined).tolist():
-        d = vec[i, :, 0] * free[i]
+        lam_i, vec_i = lam_of[i], vec_of[i]
+        d = vec_i[:, 0] * ~p.locked[i]
         step = _least_tilt_step(p, i, end, vh[i] + vl[i], d) * d
         one = np.array([i])
         sub = p.take(one)
@@ -681,8 +692,8 @@ def _least_norm_tilt(
                 end.put(one, moved)
                 break
             left = np.where(sub.locked[0], 0.0, moved.gen[0] - sub.f[0])
-            across = vec[i, :, 1:]
-            step = -across @ ((across.T @ left) / lam[i, 1:])
+            across = vec_i[:, 1:]
+            step = -across @ ((across.T @ left) / lam_i[1:])
     return vh, vl, end, undetermined
 
 
@@ -1085,7 +1096,8 @@ def _thrust_retry(p: Problem, geo: _Geometry, curve: _StiffnessCurve | None) -> 
             continue
         vh[i], vl[i], kappa[i], total[i] = got[0][0], got[1][0], got[2][0], total[i] + got[3][0]
         end.put(one, got[4])
-        tangent[0][i], tangent[1][i] = got[5][0][0], got[5][1][0]
+        tangent[0][i] = got[5][0][0]
+        tangent[1][0][i], tangent[1][1][i] = got[5][1][0][0], got[5][1][1][0]
     return vh, vl, kappa, total, end, tangent
 
 
@@ -1238,7 +1250,7 @@ def _solve_with_stiffness(
     else:
         given[:], start0[:] = 1, v0
     values = np.zeros((n, 0)) if curve is None else curve.values
-    vh, vl, kappa, total, status, balls, tangent, holding = _core.solve(
+    vh, vl, kappa, total, status, at, tangent, holding = _core.solve(
         np.ascontiguousarray(p.c, dtype=float), np.ascontiguousarray(p.s, dtype=float),
         *(np.ascontiguousarray(a, dtype=float) for a in
           (p.a_hat, p.pre, p.gap, p.b_hi, p.b_lo, p.t_imp, p.f)),
@@ -1252,7 +1264,10 @@ def _solve_with_stiffness(
         raise ConvergenceError(
             "combined-load ball stiffness update", MAX_STIFFNESS_UPDATES, math.nan, {}
         )
-    point = _ring.Point.at(p, kappa, _ring.Balls(*balls))
+    balls, gen, size, res = at
+    q0 = np.where(p.deviation, p.pre * np.sqrt(p.pre), 0.0)
+    loads = _ring.Loads(*balls[5:], q0)  # type: ignore[call-arg]
+    point = _ring.Point(_ring.Balls(*balls[:5]), loads, gen, size, res, np.zeros(n, np.int64))
     return vh, vl, kappa, total, point, (tangent, holding)
 
 
