@@ -11,6 +11,10 @@ docstring gives the model, the scaled units and why each piece keeps its digits)
 3. the stiffness updated to the contact angles and step 2 repeated until the update leaves the
    equilibrium (``solve_case``).
 
+The preloaded pair of :mod:`bearingload.models.pair` (:func:`solve_pair`, the last section)
+reuses the ball kernels for each of its two bearings, with its own two-stage Newton over the
+shaft's position.
+
 A batch is a C loop over cases, each case with its own work space: a case's answer is the same
 bits alone or in any batch. The kernels are ``noexcept nogil`` functions over the structs of
 ``_core.pxd``; no Python object enters them. The Python wrapper (:func:`solve`) takes typed
@@ -24,6 +28,7 @@ with ``-ffp-contract=off`` (setup.py); the exact products use ``fma``.
 from libc.math cimport fabs, fma, hypot, isfinite, sqrt, INFINITY
 from libc.stdint cimport int64_t
 from libc.stdlib cimport free, malloc
+from libc.string cimport memset
 
 from bearingload.models._core cimport NODES, Balls, Case, Limits, Loads, Point
 
@@ -1160,13 +1165,19 @@ def solve(const double[:, ::1] c, const double[:, ::1] s, const double[::1] a_ha
 # position v = (x, y, a, t, t_c) (scaled, t = R_i theta / s) about the pair's centre; bearing k
 # sees the local position L_k v plus its axial preload offset (``pair_local``), its balls are
 # evaluated as one ring of the single bearing above (``reference``, ``loads``, ``forces``), the
-# pair's forces are sum_k L_k^T f_k and its tangent sum_k L_k^T K_k L_k. The Newton of the
-# second stage follows pair.py's formulas: the stiffness at each ball's angle in the forces and
-# the (non-symmetric) tangent, frozen in the potential of the line search.
+# pair's forces are sum_k L_k^T f_k and its tangent sum_k L_k^T K_k L_k. Damped Newton in plain
+# doubles (``lean_newton``), then with the balls in double-double (``pair_newton``): the stiffness
+# at each ball's angle in the forces and the (non-symmetric) tangent, frozen in the potential of
+# the line search.
 
 #: Newton steps of a case in the pair's double-double stage, and halvings of a step. [-]
 PAIR_MAX_STEPS = 400
 PAIR_HALVINGS = 50
+#: The plain-double first stage hands a case on at this residual, or after PAIR_FIRST_STEPS
+#: steps, or where its line search (PAIR_FIRST_HALVINGS halvings) finds no step. [-]
+PAIR_FIRST_STAGE = 1e-9
+PAIR_FIRST_STEPS = 60
+PAIR_FIRST_HALVINGS = 30
 
 ctypedef struct Pair:
     Case bear         # the balls of either bearing (its f and locked unused)
@@ -1175,8 +1186,11 @@ ctypedef struct Pair:
     double arm[2]     # -z_k / R_i: bearing k's radial move per unit of scaled tilt
     double off_hi[2]  # bearing k's axial preload offset, double-double
     double off_lo[2]
-    int max_steps
+    int max_steps       # the double-double stage: steps, halvings of a step
     int halvings
+    double first_stage  # the plain-double stage: hand-on residual, steps, halvings
+    int first_steps
+    int first_halvings
 
 ctypedef struct Side:
     Point pt        # the balls and loads of one bearing (gen, size: its local forces)
@@ -1189,9 +1203,33 @@ ctypedef struct PairState:
     double res      # residual of the pair's equilibrium
     double energy   # the balls' potential, the stiffness of ``kappa``
 
+cdef enum:
+    LEAN_ARRAYS = 8  # the arrays of one Lean
+
+
+ctypedef struct Lean:
+    # one bearing's balls at a position of the plain-double first stage (arrays of z)
+    double *ca
+    double *sa
+    double *rho
+    double *up
+    double *d
+    double *root
+    double *kappa
+    double *q
+
+ctypedef struct LeanState:
+    Lean side[2]
+    double gen[5]
+    double size[5]
+    double res
+    double energy   # the potential, the work of the applied forces included
+
 ctypedef struct PairWork:
     PairState cur
     PairState trial
+    LeanState lean
+    LeanState lean_trial
     double *w1      # tangent weights (z)
     double *w2
     double *w3
@@ -1200,7 +1238,8 @@ ctypedef struct PairWork:
 
 cdef int pair_open(int z, PairWork *wk) noexcept nogil:
     """The work space of one pair case (one block)."""
-    cdef double *m = <double *> malloc((4 * (BALL_ARRAYS + 1) + 3) * z * sizeof(double))
+    cdef double *m = <double *> malloc((4 * (BALL_ARRAYS + 1) + 4 * LEAN_ARRAYS + 3) * z
+                                       * sizeof(double))
     cdef int k
     cdef PairState *st
     if m == NULL:
@@ -1213,16 +1252,31 @@ cdef int pair_open(int z, PairWork *wk) noexcept nogil:
         st.side[0].kappa = m + 2 * BALL_ARRAYS * z
         st.side[1].kappa = m + (2 * BALL_ARRAYS + 1) * z
         m += 2 * (BALL_ARRAYS + 1) * z
+    for k in range(2):
+        lean_on(m, z, &wk.lean.side[k])
+        lean_on(m + LEAN_ARRAYS * z, z, &wk.lean_trial.side[k])
+        m += 2 * LEAN_ARRAYS * z
     wk.w1 = m
     wk.w2 = m + z
     wk.w3 = m + 2 * z
     return 1
 
 
+cdef void lean_on(double *block, int z, Lean *ln) noexcept nogil:
+    ln.ca = block
+    ln.sa = block + z
+    ln.rho = block + 2 * z
+    ln.up = block + 3 * z
+    ln.d = block + 4 * z
+    ln.root = block + 5 * z
+    ln.kappa = block + 6 * z
+    ln.q = block + 7 * z
+
+
 cdef void pair_local(const Pair *pr, int k, const double *vh, const double *vl, double *wh,
                      double *wl) noexcept nogil:
-    """Bearing k's local position L_k v + its axial offset, double-double (pair._local: the
-    lever's product exact, the sums carried)."""
+    """Bearing k's local position L_k v + its axial offset, double-double (the lever's
+    product exact, the sums carried; pair._local does the same in numpy for the results)."""
     cdef double s = pr.sigma[k], r = pr.arm[k], p, e, hi, e2
     cdef int i, t
     for i in range(2):
@@ -1239,7 +1293,7 @@ cdef void pair_local(const Pair *pr, int k, const double *vh, const double *vl, 
 
 cdef inline void lift(double s, double r, const double *f, double *out) noexcept nogil:
     """out += L_k^T f: a bearing's generalised forces f as the shaft's (its axial ones times
-    sigma_k = s, its radial ones also times the lever r in the tilts; pair._transposed)."""
+    sigma_k = s, its radial ones also times the lever r in the tilts)."""
     out[0] += f[0]
     out[1] += f[1]
     out[2] += s * f[2]
@@ -1262,7 +1316,7 @@ cdef double side_energy(const Case *cs, const Point *pt, const double *kappa) no
 cdef void pair_state(const Pair *pr, const double *vh, const double *vl,
                      const PairState *frozen, PairState *st, double *held_energy) noexcept nogil:
     """Both bearings at v = vh + vl, K at each ball's angle: the pair's forces, residual and
-    potential (pair._evaluate); with ``frozen``, also the potential with its stiffness in
+    potential; with ``frozen``, also the potential with its stiffness in
     ``held_energy``."""
     cdef const Case *cs = &pr.bear
     cdef double wh[5]
@@ -1296,17 +1350,42 @@ cdef void pair_state(const Pair *pr, const double *vh, const double *vl,
     st.res = residual(&pr.whole, st.gen, st.size)
 
 
+cdef void add_mapped(const Pair *pr, int k, const double *t, double *out) noexcept nogil:
+    """out += L_k^T t L_k: bearing k's local tangent t as the shaft's."""
+    cdef double tl[25]
+    cdef double lk[25]
+    cdef double acc
+    cdef int i, m, n
+    for i in range(25):
+        lk[i] = 0.0
+    lk[0] = 1.0
+    lk[6] = 1.0
+    lk[3] = pr.arm[k]
+    lk[9] = pr.arm[k]
+    for i in range(2, 5):
+        lk[6 * i] = pr.sigma[k]
+    for i in range(5):  # t L_k
+        for n in range(5):
+            acc = 0.0
+            for m in range(5):
+                acc += t[5 * i + m] * lk[5 * m + n]
+            tl[5 * i + n] = acc
+    for i in range(5):  # L_k^T (t L_k)
+        for n in range(5):
+            acc = 0.0
+            for m in range(5):
+                acc += lk[5 * m + i] * tl[5 * m + n]
+            out[5 * i + n] += acc
+
+
 cdef void pair_tangent(const Pair *pr, PairWork *wk, double *out) noexcept nogil:
     """The pair's tangent d(forces)/dv at the current state, sum_k L_k^T K_k L_k with each
-    bearing's true tangent K_k (the change of K with the angle included; pair._jacobian), the
-    held components decoupled (unit rows and columns)."""
+    bearing's true tangent K_k (the change of K with the angle included)."""
     cdef const Case *cs = &pr.bear
     cdef Point *pt
     cdef double t[25]
-    cdef double tl[25]
-    cdef double lk[25]
-    cdef double d, acc
-    cdef int k, j, i, m, n
+    cdef double d
+    cdef int k, j, i
     for i in range(25):
         out[i] = 0.0
     for k in range(2):
@@ -1323,48 +1402,25 @@ cdef void pair_tangent(const Pair *pr, PairWork *wk, double *out) noexcept nogil
                                 * pt.lo.root[j] ** 3 / d)
         tangent(cs, pt.lo.ca, pt.lo.sa, wk.w1, wk.w2, wk.w3 if cs.curve != NULL else NULL,
                 False, t)
-        for i in range(25):
-            lk[i] = 0.0
-        lk[0] = 1.0
-        lk[6] = 1.0
-        lk[3] = pr.arm[k]
-        lk[9] = pr.arm[k]
-        for i in range(2, 5):
-            lk[6 * i] = pr.sigma[k]
-        for i in range(5):  # t L_k
-            for n in range(5):
-                acc = 0.0
-                for m in range(5):
-                    acc += t[5 * i + m] * lk[5 * m + n]
-                tl[5 * i + n] = acc
-        for i in range(5):  # L_k^T (t L_k)
-            for n in range(5):
-                acc = 0.0
-                for m in range(5):
-                    acc += lk[5 * m + i] * tl[5 * m + n]
-                out[5 * i + n] += acc
-    for i in range(5):
-        if pr.whole.locked[i]:
-            for k in range(5):
-                out[5 * i + k] = 0.0
-                out[5 * k + i] = 0.0
-            out[6 * i] = 1.0
+        add_mapped(pr, k, t, out)
 
 
-cdef void pair_step(const Pair *pr, PairWork *wk, double *step) noexcept nogil:
-    """The Newton step on the pair's tangent, regularised; where it is not finite or no ball
-    is in contact, a move of length A against the gradient; every component within A
-    (pair._step)."""
-    cdef double jac[25]
-    cdef double grad[5]
+cdef void pair_move(const Pair *pr, double *jac, const double *grad,
+                    double *step) noexcept nogil:
+    """The Newton step on the pair's tangent ``jac`` (changed: the held components decoupled,
+    regularised); where it is not finite or no ball is in contact, a move of length A against
+    the gradient; every component within A."""
     cdef double minus[5]
     cdef double trace = 0.0, norm = 0.0, longest = 0.0, a_hat = pr.bear.a_hat
     cdef bint bad = False
-    cdef int i
+    cdef int i, k
     for i in range(5):
-        grad[i] = 0.0 if pr.whole.locked[i] else wk.cur.gen[i] - pr.whole.f[i]
         minus[i] = -grad[i]
-    pair_tangent(pr, wk, jac)
+        if pr.whole.locked[i]:
+            for k in range(5):
+                jac[5 * i + k] = 0.0
+                jac[5 * k + i] = 0.0
+            jac[6 * i] = 1.0
     for i in range(5):
         trace += jac[6 * i]
     for i in range(5):
@@ -1385,6 +1441,17 @@ cdef void pair_step(const Pair *pr, PairWork *wk, double *step) noexcept nogil:
             step[i] *= a_hat / longest
 
 
+cdef void pair_step(const Pair *pr, PairWork *wk, double *step) noexcept nogil:
+    """The Newton step of the double-double stage at the current state."""
+    cdef double jac[25]
+    cdef double grad[5]
+    cdef int i
+    for i in range(5):
+        grad[i] = 0.0 if pr.whole.locked[i] else wk.cur.gen[i] - pr.whole.f[i]
+    pair_tangent(pr, wk, jac)
+    pair_move(pr, jac, grad, step)
+
+
 cdef void swap_states(PairState *a, PairState *b) noexcept nogil:
     cdef PairState t = a[0]
     a[0] = b[0]
@@ -1394,8 +1461,8 @@ cdef void swap_states(PairState *a, PairState *b) noexcept nogil:
 cdef void pair_search(const Pair *pr, PairWork *wk, const double *vh, const double *vl,
                       const double *step, double *moved) noexcept nogil:
     """The move t step, t = 1, 1/2, ..., the first where the potential with the stiffness
-    frozen falls by 1e-4 of its slope (Armijo) or the residual halves; 0 where none does
-    (pair._line_search). The current state becomes the one reached."""
+    frozen falls by 1e-4 of its slope (Armijo) or the residual halves; 0 where none does. The
+    current state becomes the one reached."""
     cdef double slope = 0.0, t = 1.0, work, drop, held_energy
     cdef double w[5]
     cdef double th[5]
@@ -1428,7 +1495,7 @@ cdef void pair_search(const Pair *pr, PairWork *wk, const double *vh, const doub
 cdef int pair_newton(const Pair *pr, PairWork *wk, double *vh, double *vl,
                      double *res) noexcept nogil:
     """Damped Newton of one case from vh + vl until its residual is within TOLERANCE, it
-    stalls (rounding), or max_steps (pair._newton): vh, vl the position, res its residual.
+    stalls (rounding), or max_steps: vh, vl the position, res its residual.
     Returns the steps taken."""
     cdef double best = INFINITY, held_energy, hi, lo
     cdef double step[5]
@@ -1468,9 +1535,10 @@ def solve_pair(const double[:, ::1] c, const double[:, ::1] s, const double[::1]
                const double[:, ::1] f, const unsigned char[:, ::1] held,
                const double[:, ::1] curve, const double[::1] node_x, const double[::1] node_w,
                const double[:, ::1] v0, *, int max_steps=PAIR_MAX_STEPS,
-               int halvings=PAIR_HALVINGS):
-    """The double-double stage of n cases of the preloaded pair (bearingload.models.pair):
-    damped Newton from v0 (n, 5) over the shaft's position.
+               int halvings=PAIR_HALVINGS, int first_steps=PAIR_FIRST_STEPS):
+    """Solve n cases of the preloaded pair (bearingload.models.pair) from the start v0 (n, 5):
+    damped Newton over the shaft's position, first in plain doubles (``lean_newton``), then
+    with the balls in double-double (``pair_newton``).
 
     Arrays over the n cases: ``c``, ``s`` (n, z) the balls of either bearing (one-sided
     contacts); ``a_hat``, ``pre``, ``gap``, ``b_hi``, ``b_lo`` (n,) their scaled geometry;
@@ -1479,8 +1547,12 @@ def solve_pair(const double[:, ::1] c, const double[:, ::1] s, const double[::1]
     ``held`` (n, 5, uint8) the components held at 0, scaled; ``curve`` (n, NODES), or (n, 0)
     for a constant K, with its ``node_x``, ``node_w``.
 
+    ``max_steps``, ``halvings`` (the double-double stage) and ``first_steps`` (the first)
+    default to the module's limits.
+
     Returns (vh, vl, residual, steps, status, balls, kappa): the position in double-double
-    (n, 5) each, the residual before the last step (n,), the steps (n,), the status (n,), the
+    (n, 5) each, the residual before the last step (n,), the steps of both stages (n,), the
+    status (n,: OK, or NO_MEMORY), the
     balls of each bearing at the answer (5, 2, n, z: rho, u, d, eps, up) and their stiffness
     deviations (2, n, z).
     """
@@ -1503,6 +1575,7 @@ def solve_pair(const double[:, ::1] c, const double[:, ::1] s, const double[::1]
     cdef Pair pr
     cdef PairWork wk
     cdef Point *pt
+    memset(&pr, 0, sizeof(Pair))
     pr.bear.lim.tolerance = TOLERANCE
     pr.bear.lim.rounding = ROUNDING
     pr.bear.lim.floor = FLOOR
@@ -1511,6 +1584,9 @@ def solve_pair(const double[:, ::1] c, const double[:, ::1] s, const double[::1]
     pr.whole = pr.bear
     pr.max_steps = max_steps
     pr.halvings = halvings
+    pr.first_stage = PAIR_FIRST_STAGE
+    pr.first_steps = first_steps
+    pr.first_halvings = PAIR_FIRST_HALVINGS
     with nogil:
         for k in range(n):
             pair_case(&pr, k, z, &c[k, 0], &s[k, 0], a_hat[k], pre[k], gap[k], b_hi[k], b_lo[k])
@@ -1531,7 +1607,8 @@ def solve_pair(const double[:, ::1] c, const double[:, ::1] s, const double[::1]
                 status[k] = NO_MEMORY
                 res[k] = INFINITY
                 continue
-            its[k] = pair_newton(&pr, &wk, &vh[k, 0], &vl[k, 0], &res[k])
+            its[k] = lean_newton(&pr, &wk, &vh[k, 0])
+            its[k] += pair_newton(&pr, &wk, &vh[k, 0], &vl[k, 0], &res[k])
             status[k] = OK
             for b in range(2):
                 pt = &wk.cur.side[b].pt
@@ -1567,3 +1644,158 @@ cdef void pair_case(Pair *pr, Py_ssize_t k, int z, const double *c, const double
         pr.bear.f[i] = 0.0
         pr.bear.locked[i] = 0
     pr.whole.z = z
+
+
+# ------------------------------------------------------------ the pair's plain-double stage
+
+cdef void lean_side(const Case *cs, const double *w, Lean *ln, double *gen, double *size,
+                    double *energy) noexcept nogil:
+    """One bearing at the local position w in plain doubles, K at each ball's angle (pair.
+    _lean_state): its balls, its generalised forces (compensated), their terms' magnitudes and
+    sum_j Q_j delta_j."""
+    cdef int j, i
+    cdef double rho, u, up, rp, d, m, eps, safe, pos, cam1, qc, qs
+    cdef double err[5]
+    for i in range(5):
+        gen[i] = 0.0
+        size[i] = 0.0
+        err[i] = 0.0
+    energy[0] = 0.0
+    for j in range(cs.z):
+        rho = (cs.a_hat - cs.gap) + (w[0] * cs.c[j] + w[1] * cs.s[j])
+        u = w[2] + w[3] * cs.c[j] + w[4] * cs.s[j]
+        up = max(u, 0.0)
+        rp = max(rho, 0.0)
+        d = hypot(rp, up)
+        m = rho - cs.a_hat
+        eps = (m * (m + 2.0 * cs.a_hat) + up * up) / (d + cs.a_hat) if rho > 0 else up - cs.a_hat
+        safe = d if d > 0 else 1.0
+        ln.ca[j] = rp / safe if d > 0 else 1.0
+        ln.sa[j] = up / safe
+        ln.rho[j] = rho
+        ln.up[j] = up
+        ln.d[j] = d
+        pos = max(eps, 0.0)
+        ln.root[j] = sqrt(pos)
+        ln.kappa[j] = 0.0
+        if cs.curve != NULL:
+            cam1 = -ln.sa[j] * ln.sa[j] / (1.0 + ln.ca[j]) if rho > 0 else ln.ca[j] - 1.0
+            ln.kappa[j] = curve_kappa(cs, ln.ca[j], cam1)
+        ln.q[j] = (1.0 + ln.kappa[j]) * pos * ln.root[j]
+        energy[0] += ln.q[j] * pos
+        qc = ln.q[j] * ln.ca[j]
+        qs = ln.q[j] * ln.sa[j]
+        add(&gen[0], &err[0], qc * cs.c[j])
+        add(&gen[1], &err[1], qc * cs.s[j])
+        add(&gen[2], &err[2], qs)
+        add(&gen[3], &err[3], qs * cs.c[j])
+        add(&gen[4], &err[4], qs * cs.s[j])
+        size[0] += fabs(qc * cs.c[j])
+        size[1] += fabs(qc * cs.s[j])
+        size[2] += fabs(qs)
+        size[3] += fabs(qs * cs.c[j])
+        size[4] += fabs(qs * cs.s[j])
+    for i in range(5):
+        gen[i] += err[i]
+
+
+cdef void lean_state(const Pair *pr, const double *v, LeanState *st) noexcept nogil:
+    """The pair at v in plain doubles: each bearing at L_k v plus its offset, the pair's forces,
+    residual and potential."""
+    cdef double w[5]
+    cdef double gen[5]
+    cdef double size[5]
+    cdef double energy, total = 0.0, work = 0.0
+    cdef int k, i
+    for i in range(5):
+        st.gen[i] = 0.0
+        st.size[i] = 0.0
+    for k in range(2):
+        w[0] = v[0] + pr.arm[k] * v[3]
+        w[1] = v[1] + pr.arm[k] * v[4]
+        w[2] = (pr.off_hi[k] + pr.off_lo[k]) + pr.sigma[k] * v[2]
+        w[3] = pr.sigma[k] * v[3]
+        w[4] = pr.sigma[k] * v[4]
+        lean_side(&pr.bear, w, &st.side[k], gen, size, &energy)
+        lift(pr.sigma[k], pr.arm[k], gen, st.gen)
+        lift(fabs(pr.sigma[k]), fabs(pr.arm[k]), size, st.size)
+        total += energy
+    for i in range(5):
+        work += pr.whole.f[i] * v[i]
+    st.res = residual(&pr.whole, st.gen, st.size)
+    st.energy = total / 2.5 - work
+
+
+cdef void lean_step(const Pair *pr, PairWork *wk, double *step) noexcept nogil:
+    """The Newton step of the first stage: the pair's tangent at the lean state (with the
+    change of K with the angle), as pair_move takes it."""
+    cdef const Case *cs = &pr.bear
+    cdef Lean *ln
+    cdef double jac[25]
+    cdef double t[25]
+    cdef double grad[5]
+    cdef double safe
+    cdef bint turning
+    cdef int k, j, i
+    for i in range(25):
+        jac[i] = 0.0
+    for k in range(2):
+        ln = &wk.lean.side[k]
+        for j in range(cs.z):
+            safe = ln.d[j] if ln.d[j] > 0 else 1.0
+            turning = ln.rho[j] > 0 and ln.up[j] > 0
+            wk.w1[j] = 1.5 * (1.0 + ln.kappa[j]) * ln.root[j]
+            wk.w2[j] = ln.q[j] / safe if turning else 0.0
+            wk.w3[j] = 0.0
+            if cs.curve != NULL and turning and ln.root[j] > 0:
+                wk.w3[j] = (curve_slope(cs, ln.ca[j], -ln.sa[j] * ln.sa[j] / (1.0 + ln.ca[j]))
+                            * -ln.sa[j] * ln.root[j] ** 3 / safe)
+        tangent(cs, ln.ca, ln.sa, wk.w1, wk.w2, wk.w3 if cs.curve != NULL else NULL, False, t)
+        add_mapped(pr, k, t, jac)
+    for i in range(5):
+        grad[i] = 0.0 if pr.whole.locked[i] else wk.lean.gen[i] - pr.whole.f[i]
+    pair_move(pr, jac, grad, step)
+
+
+cdef void swap_lean(LeanState *a, LeanState *b) noexcept nogil:
+    cdef LeanState t = a[0]
+    a[0] = b[0]
+    b[0] = t
+
+
+cdef int lean_newton(const Pair *pr, PairWork *wk, double *v) noexcept nogil:
+    """The first stage from v: damped Newton in plain doubles until the residual is below
+    first_stage or first_steps steps; a step t = 1, 1/2, ... where the potential falls
+    (Armijo, 1e-4 of the slope) or the residual halves; a case whose search finds none is
+    handed on. Returns the steps taken (the failed search counted)."""
+    cdef double step[5]
+    cdef double trial[5]
+    cdef double slope, t
+    cdef int n, h, i, its = 0
+    cdef bint taken
+    lean_state(pr, v, &wk.lean)
+    for n in range(pr.first_steps):
+        if not wk.lean.res > pr.first_stage:
+            break
+        lean_step(pr, wk, step)
+        slope = 0.0
+        for i in range(5):
+            slope += (0.0 if pr.whole.locked[i] else wk.lean.gen[i] - pr.whole.f[i]) * step[i]
+        t = 1.0
+        taken = False
+        for h in range(pr.first_halvings):
+            for i in range(5):
+                trial[i] = v[i] + t * step[i]
+            lean_state(pr, trial, &wk.lean_trial)
+            if (wk.lean_trial.energy - wk.lean.energy <= 1e-4 * t * slope
+                    or wk.lean_trial.res < 0.5 * wk.lean.res):
+                taken = True
+                break
+            t *= 0.5
+        its += 1
+        if not taken:
+            break
+        for i in range(5):
+            v[i] = trial[i]
+        swap_lean(&wk.lean, &wk.lean_trial)
+    return its
