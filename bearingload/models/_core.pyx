@@ -11,6 +11,10 @@ docstring gives the model, the scaled units and why each piece keeps its digits)
 3. the stiffness updated to the contact angles and step 2 repeated until the update leaves the
    equilibrium (``solve_case``).
 
+The preloaded pair of :mod:`bearingload.models.pair` (:func:`solve_pair`, the last section)
+reuses the ball kernels for each of its two bearings, with its own two-stage Newton over the
+shaft's position.
+
 A batch is a C loop over cases, each case with its own work space: a case's answer is the same
 bits alone or in any batch. The kernels are ``noexcept nogil`` functions over the structs of
 ``_core.pxd``; no Python object enters them. The Python wrapper (:func:`solve`) takes typed
@@ -24,6 +28,7 @@ with ``-ffp-contract=off`` (setup.py); the exact products use ``fma``.
 from libc.math cimport fabs, fma, hypot, isfinite, sqrt, INFINITY
 from libc.stdint cimport int64_t
 from libc.stdlib cimport free, malloc
+from libc.string cimport memset
 
 from bearingload.models._core cimport NODES, Balls, Case, Limits, Loads, Point
 
@@ -54,6 +59,20 @@ MAX_STIFFNESS_UPDATES = 40
 FIRST_STAGE_STEPS = 16
 FIRST_STAGE_HALVINGS = 8
 HAND_ON = 1e-9
+
+# the limits above as C values, for the kernels (one source: the Python names)
+cdef Limits LIMITS
+LIMITS.tolerance = TOLERANCE
+LIMITS.rounding = ROUNDING
+LIMITS.floor = FLOOR
+LIMITS.stall_below = STALL_BELOW
+LIMITS.hand_on = HAND_ON
+LIMITS.max_iterations = MAX_ITERATIONS
+LIMITS.stall = STALL
+LIMITS.refresh = REFRESH
+LIMITS.max_updates = MAX_STIFFNESS_UPDATES
+LIMITS.fast_steps = FIRST_STAGE_STEPS
+LIMITS.fast_halvings = FIRST_STAGE_HALVINGS
 
 cpdef enum Status:
     OK = 0             # solved (the caller measures the residual)
@@ -1115,6 +1134,23 @@ cdef int solve_case(const Case *cs, const double *v0, bint given, double *vh, do
 
 # ------------------------------------------------------------------------ Python boundary
 
+cdef void store(const Work *wk, int z, double *kappa, double *balls, Py_ssize_t stride,
+                double *gen, double *size, double *res) noexcept nogil:
+    """A case's answer into the outputs: its stiffness deviations, the 13 ball arrays of its
+    point (``stride`` apart), the forces, their terms' sizes and the residual."""
+    cdef int i, j
+    for i in range(z):
+        kappa[i] = wk.kappa[i]
+    for j in range(BALL_ARRAYS):
+        for i in range(z):
+            balls[j * stride + i] = wk.pt.b.rho[j * z + i]
+    for i in range(5):
+        gen[i] = wk.pt.gen[i]
+        size[i] = wk.pt.size[i]
+    res[0] = wk.pt.res
+
+
+
 def solve(const double[:, ::1] c, const double[:, ::1] s, const double[::1] a_hat,
           const double[::1] pre, const double[::1] gap, const double[::1] b_hi,
           const double[::1] b_lo, const double[::1] t_imp, const double[:, ::1] f,
@@ -1143,7 +1179,7 @@ def solve(const double[:, ::1] c, const double[:, ::1] s, const double[::1] a_ha
     direction among the free components (``maybe_flat``, (n,) uint8).
     """
     cdef Py_ssize_t n = c.shape[0], k
-    cdef int z = <int> c.shape[1], i, j
+    cdef int z = <int> c.shape[1], i
     cdef bint has_curve = curve.shape[1] == NODES
     vh_a = np.empty((n, 5))
     vl_a = np.empty((n, 5))
@@ -1166,17 +1202,9 @@ def solve(const double[:, ::1] c, const double[:, ::1] s, const double[::1] a_ha
     cdef unsigned char[::1] flat = flat_a
     cdef Case cs
     cdef Work wk
-    cs.lim.tolerance = TOLERANCE
-    cs.lim.rounding = ROUNDING
-    cs.lim.floor = FLOOR
-    cs.lim.stall_below = STALL_BELOW
-    cs.lim.hand_on = HAND_ON
+    cs.lim = LIMITS
     cs.lim.max_iterations = max_iterations
-    cs.lim.stall = STALL
-    cs.lim.refresh = REFRESH
-    cs.lim.max_updates = MAX_STIFFNESS_UPDATES
     cs.lim.fast_steps = first_stage_steps
-    cs.lim.fast_halvings = FIRST_STAGE_HALVINGS
     with nogil:
         for k in range(n):
             cs.z = z
@@ -1205,15 +1233,645 @@ def solve(const double[:, ::1] c, const double[:, ::1] s, const double[::1] a_ha
                 stiffness(&cs, &wk, &tan[k, 0, 0])
                 holding(&cs, &wk, &hold[k, 0, 0])
                 flat[k] = maybe_flat(&cs, &hold[k, 0, 0])
-            for i in range(z):
-                kappa[k, i] = wk.kappa[i]
-            for j in range(BALL_ARRAYS):
-                for i in range(z):
-                    balls[j, k, i] = wk.pt.b.rho[j * z + i]
-            for i in range(5):
-                gen[k, i] = wk.pt.gen[i]
-                size[k, i] = wk.pt.size[i]
-            res[k] = wk.pt.res
+            store(&wk, z, &kappa[k, 0], &balls[0, k, 0], n * z, &gen[k, 0], &size[k, 0], &res[k])
             free(wk.block)
     return (vh_a, vl_a, kappa_a, its_a, status_a, (balls_a, gen_a, size_a, res_a), tangent_a,
             (holding_a, flat_a))
+
+
+# ----------------------------------------------------------------------- the preloaded pair
+#
+# Two bearings of the same balls on one rigid shaft (bearingload.models.pair): the shaft's
+# position v = (x, y, a, t, t_c) (scaled, t = R_i theta / s) about the pair's centre; bearing k
+# sees the local position L_k v plus its axial preload offset (``pair_local``), its balls are
+# evaluated as one ring of the single bearing above (``reference``, ``loads``, ``forces``), the
+# pair's forces are sum_k L_k^T f_k and its tangent sum_k L_k^T K_k L_k. Damped Newton in plain
+# doubles (``lean_newton``), then with the balls in double-double (``pair_newton``): the stiffness
+# at each ball's angle in the forces and the (non-symmetric) tangent, frozen in the potential of
+# the line search.
+
+#: Newton steps of a case in the pair's double-double stage, and halvings of a step. [-]
+PAIR_MAX_STEPS = 400
+PAIR_HALVINGS = 50
+#: The plain-double first stage hands a case on at this residual, or after PAIR_FIRST_STEPS
+#: steps, or where its line search (PAIR_FIRST_HALVINGS halvings) finds no step. [-]
+PAIR_FIRST_STAGE = 1e-9
+PAIR_FIRST_STEPS = 60
+PAIR_FIRST_HALVINGS = 30
+
+ctypedef struct Pair:
+    Case bear         # the balls of either bearing (its f and locked unused)
+    Case whole        # the pair's applied forces and held components (its residual)
+    double sigma[2]   # +1, or -1 where the bearing is mirrored
+    double arm[2]     # -z_k / R_i: bearing k's radial move per unit of scaled tilt
+    double off_hi[2]  # bearing k's axial preload offset, double-double
+    double off_lo[2]
+    int max_steps       # the double-double stage: steps, halvings of a step
+    int halvings
+    double first_stage  # the plain-double stage: hand-on residual, steps, halvings
+    int first_steps
+    int first_halvings
+
+ctypedef struct Side:
+    Point pt        # the balls and loads of one bearing (gen, size: its local forces)
+    double *kappa   # their stiffness deviations at their contact angles
+
+ctypedef struct PairState:
+    Side side[2]
+    double gen[5]   # the pair's generalised forces, scaled
+    double size[5]  # the magnitudes of their terms
+    double res      # residual of the pair's equilibrium
+    double energy   # the balls' potential, the stiffness of ``kappa``
+
+cdef enum:
+    LEAN_ARRAYS = 8  # the arrays of one Lean
+
+
+ctypedef struct Lean:
+    # one bearing's balls at a position of the plain-double first stage (arrays of z)
+    double *ca
+    double *sa
+    double *rho
+    double *up
+    double *d
+    double *root
+    double *kappa
+    double *q
+
+ctypedef struct LeanState:
+    Lean side[2]
+    double gen[5]
+    double size[5]
+    double res
+    double energy   # the potential, the work of the applied forces included
+
+ctypedef struct PairWork:
+    PairState cur
+    PairState trial
+    LeanState lean
+    LeanState lean_trial
+    double *w1      # tangent weights (z)
+    double *w2
+    double *w3
+    double *block
+
+
+cdef int pair_open(int z, PairWork *wk) noexcept nogil:
+    """The work space of one pair case (one block)."""
+    cdef double *m = <double *> malloc((4 * (BALL_ARRAYS + 1) + 4 * LEAN_ARRAYS + 3) * z
+                                       * sizeof(double))
+    cdef int k
+    cdef PairState *st
+    if m == NULL:
+        return 0
+    wk.block = m
+    for k in range(2):
+        st = &wk.cur if k == 0 else &wk.trial
+        point_on(m, z, &st.side[0].pt)
+        point_on(m + BALL_ARRAYS * z, z, &st.side[1].pt)
+        st.side[0].kappa = m + 2 * BALL_ARRAYS * z
+        st.side[1].kappa = m + (2 * BALL_ARRAYS + 1) * z
+        m += 2 * (BALL_ARRAYS + 1) * z
+    for k in range(2):
+        lean_on(m, z, &wk.lean.side[k])
+        lean_on(m + LEAN_ARRAYS * z, z, &wk.lean_trial.side[k])
+        m += 2 * LEAN_ARRAYS * z
+    wk.w1 = m
+    wk.w2 = m + z
+    wk.w3 = m + 2 * z
+    return 1
+
+
+cdef void lean_on(double *block, int z, Lean *ln) noexcept nogil:
+    ln.ca = block
+    ln.sa = block + z
+    ln.rho = block + 2 * z
+    ln.up = block + 3 * z
+    ln.d = block + 4 * z
+    ln.root = block + 5 * z
+    ln.kappa = block + 6 * z
+    ln.q = block + 7 * z
+
+
+cdef void pair_local(const Pair *pr, int k, const double *vh, const double *vl, double *wh,
+                     double *wl) noexcept nogil:
+    """Bearing k's local position L_k v + its axial offset, double-double (the lever's
+    product exact, the sums carried; pair._local does the same in numpy for the results)."""
+    cdef double s = pr.sigma[k], r = pr.arm[k], p, e, hi, e2
+    cdef int i, t
+    for i in range(2):
+        t = i + 3
+        two_prod(vh[t], r, &p, &e)
+        two_sum(vh[i], p, &hi, &e2)
+        quick(hi, e2 + e + vl[i] + r * vl[t], &wh[i], &wl[i])
+    two_sum(s * vh[2], pr.off_hi[k], &hi, &e2)
+    quick(hi, e2 + s * vl[2] + pr.off_lo[k], &wh[2], &wl[2])
+    for i in range(3, 5):
+        wh[i] = s * vh[i]
+        wl[i] = s * vl[i]
+
+
+cdef inline void lift(double s, double r, const double *f, double *out) noexcept nogil:
+    """out += L_k^T f: a bearing's generalised forces f as the shaft's (its axial ones times
+    sigma_k = s, its radial ones also times the lever r in the tilts)."""
+    out[0] += f[0]
+    out[1] += f[1]
+    out[2] += s * f[2]
+    out[3] += s * f[3] + r * f[0]
+    out[4] += s * f[4] + r * f[1]
+
+
+cdef double side_energy(const Case *cs, const Point *pt, const double *kappa) noexcept nogil:
+    """sum_j Q_j delta_j of one bearing with the stiffness deviations ``kappa``."""
+    cdef double total = 0.0, delta, pos, root
+    cdef int j
+    for j in range(cs.z):
+        delta = cs.pre + pt.b.eps[j]
+        pos = delta if delta > 0 else 0.0
+        root = pt.lo.root[j]
+        total += (1.0 + kappa[j]) * pos * root * root * root
+    return total
+
+
+cdef void pair_state(const Pair *pr, const double *vh, const double *vl,
+                     const PairState *frozen, PairState *st, double *held_energy) noexcept nogil:
+    """Both bearings at v = vh + vl, K at each ball's angle: the pair's forces, residual and
+    potential; with ``frozen``, also the potential with its stiffness in
+    ``held_energy``."""
+    cdef const Case *cs = &pr.bear
+    cdef double wh[5]
+    cdef double wl[5]
+    cdef int k, j, i
+    cdef Point *pt
+    cdef double *kappa
+    for i in range(5):
+        st.gen[i] = 0.0
+        st.size[i] = 0.0
+    st.energy = 0.0
+    held_energy[0] = 0.0
+    for k in range(2):
+        pt = &st.side[k].pt
+        kappa = st.side[k].kappa
+        pair_local(pr, k, vh, vl, wh, wl)
+        reference(cs, wh, wl, pt.b)
+        for j in range(cs.z):
+            kappa[j] = 0.0
+        if cs.curve != NULL:
+            loads(cs, pt.b, kappa, pt.lo)
+            for j in range(cs.z):
+                kappa[j] = curve_kappa(cs, pt.lo.ca[j], pt.lo.cam1[j])
+        loads(cs, pt.b, kappa, pt.lo)
+        forces(cs, pt.lo, pt.gen, pt.size)
+        lift(pr.sigma[k], pr.arm[k], pt.gen, st.gen)
+        lift(fabs(pr.sigma[k]), fabs(pr.arm[k]), pt.size, st.size)
+        st.energy += side_energy(cs, pt, kappa) / 2.5
+        if frozen != NULL:
+            held_energy[0] += side_energy(cs, pt, frozen.side[k].kappa) / 2.5
+    st.res = residual(&pr.whole, st.gen, st.size)
+
+
+cdef void add_mapped(const Pair *pr, int k, const double *t, double *out) noexcept nogil:
+    """out += L_k^T t L_k: bearing k's local tangent t as the shaft's."""
+    cdef double tl[25]
+    cdef double lk[25]
+    cdef double acc
+    cdef int i, m, n
+    for i in range(25):
+        lk[i] = 0.0
+    lk[0] = 1.0
+    lk[6] = 1.0
+    lk[3] = pr.arm[k]
+    lk[9] = pr.arm[k]
+    for i in range(2, 5):
+        lk[6 * i] = pr.sigma[k]
+    for i in range(5):  # t L_k
+        for n in range(5):
+            acc = 0.0
+            for m in range(5):
+                acc += t[5 * i + m] * lk[5 * m + n]
+            tl[5 * i + n] = acc
+    for i in range(5):  # L_k^T (t L_k)
+        for n in range(5):
+            acc = 0.0
+            for m in range(5):
+                acc += lk[5 * m + i] * tl[5 * m + n]
+            out[5 * i + n] += acc
+
+
+cdef void pair_tangent(const Pair *pr, PairWork *wk, double *out) noexcept nogil:
+    """The pair's tangent d(forces)/dv at the current state, sum_k L_k^T K_k L_k with each
+    bearing's true tangent K_k (the change of K with the angle included)."""
+    cdef const Case *cs = &pr.bear
+    cdef Point *pt
+    cdef double t[25]
+    cdef double d
+    cdef int k, j, i
+    for i in range(25):
+        out[i] = 0.0
+    for k in range(2):
+        pt = &wk.cur.side[k].pt
+        for j in range(cs.z):
+            d = pt.b.d[j] if pt.b.d[j] > 0 else 1.0
+            wk.w1[j] = 1.5 * (1.0 + wk.cur.side[k].kappa[j]) * pt.lo.root[j]
+            wk.w2[j] = 0.0
+            wk.w3[j] = 0.0
+            if turns(cs, pt.b.rho[j], pt.b.u[j]):
+                wk.w2[j] = pt.lo.q[j] / d
+                if cs.curve != NULL and pt.lo.root[j] > 0:
+                    wk.w3[j] = (curve_slope(cs, pt.lo.ca[j], pt.lo.cam1[j]) * -pt.lo.sa[j]
+                                * pt.lo.root[j] ** 3 / d)
+        tangent(cs, pt.lo.ca, pt.lo.sa, wk.w1, wk.w2, wk.w3 if cs.curve != NULL else NULL,
+                False, t)
+        add_mapped(pr, k, t, out)
+
+
+cdef void pair_move(const Pair *pr, double *jac, const double *grad,
+                    double *step) noexcept nogil:
+    """The Newton step on the pair's tangent ``jac`` (changed: the held components decoupled,
+    regularised); where it is not finite or no ball is in contact, a move of length A against
+    the gradient; every component within A."""
+    cdef double minus[5]
+    cdef double trace = 0.0, norm = 0.0, longest = 0.0, a_hat = pr.bear.a_hat
+    cdef bint bad = False
+    cdef int i, k
+    for i in range(5):
+        minus[i] = -grad[i]
+        if pr.whole.locked[i]:
+            for k in range(5):
+                jac[5 * i + k] = 0.0
+                jac[5 * k + i] = 0.0
+            jac[6 * i] = 1.0
+    for i in range(5):
+        trace += jac[6 * i]
+    for i in range(5):
+        jac[6 * i] += 1e-13 * fabs(trace) + 1e-300
+    solve5(jac, minus, step)
+    for i in range(5):
+        bad = bad or not isfinite(step[i])
+    if bad or not trace > 1e-200:
+        for i in range(5):
+            norm += grad[i] * grad[i]
+        norm = max(sqrt(norm), 1e-300)
+        for i in range(5):
+            step[i] = -grad[i] / norm * a_hat
+    for i in range(5):
+        longest = max(longest, fabs(step[i]))
+    if longest > a_hat:
+        for i in range(5):
+            step[i] *= a_hat / longest
+
+
+cdef void pair_step(const Pair *pr, PairWork *wk, double *step) noexcept nogil:
+    """The Newton step of the double-double stage at the current state."""
+    cdef double jac[25]
+    cdef double grad[5]
+    cdef int i
+    for i in range(5):
+        grad[i] = 0.0 if pr.whole.locked[i] else wk.cur.gen[i] - pr.whole.f[i]
+    pair_tangent(pr, wk, jac)
+    pair_move(pr, jac, grad, step)
+
+
+cdef void swap_states(PairState *a, PairState *b) noexcept nogil:
+    cdef PairState t = a[0]
+    a[0] = b[0]
+    b[0] = t
+
+
+cdef void pair_search(const Pair *pr, PairWork *wk, const double *vh, const double *vl,
+                      const double *step, double *moved) noexcept nogil:
+    """The move t step, t = 1, 1/2, ..., the first where the potential with the stiffness
+    frozen falls by 1e-4 of its slope (Armijo) or the residual halves; 0 where none does. The
+    current state becomes the one reached."""
+    cdef double slope = 0.0, t = 1.0, work, drop, held_energy
+    cdef double w[5]
+    cdef double th[5]
+    cdef double tl[5]
+    cdef bint finite
+    cdef int k, i
+    for i in range(5):
+        moved[i] = 0.0
+        if not pr.whole.locked[i]:
+            slope += (wk.cur.gen[i] - pr.whole.f[i]) * step[i]
+    for k in range(pr.halvings):
+        work = 0.0
+        finite = True
+        for i in range(5):
+            w[i] = t * step[i]
+            work += pr.whole.f[i] * w[i]
+            finite = finite and isfinite(w[i])
+            two_sum(vh[i], w[i], &th[i], &tl[i])
+            quick(th[i], tl[i] + vl[i], &th[i], &tl[i])
+        pair_state(pr, th, tl, &wk.cur, &wk.trial, &held_energy)
+        drop = held_energy - wk.cur.energy - work
+        if finite and (drop <= 1e-4 * t * slope or wk.trial.res < 0.5 * wk.cur.res):
+            for i in range(5):
+                moved[i] = w[i]
+            swap_states(&wk.cur, &wk.trial)
+            return
+        t *= 0.5
+
+
+cdef int pair_newton(const Pair *pr, PairWork *wk, double *vh, double *vl,
+                     double *res) noexcept nogil:
+    """Damped Newton of one case from vh + vl until its residual is within TOLERANCE, it
+    stalls (rounding), or max_steps: vh, vl the position, res its residual.
+    Returns the steps taken."""
+    cdef double best = INFINITY, held_energy, hi, lo
+    cdef double step[5]
+    cdef double moved[5]
+    cdef int n, i, stall = 0, its = 0
+    cdef bint still
+    pair_state(pr, vh, vl, NULL, &wk.cur, &held_energy)
+    res[0] = INFINITY
+    for n in range(pr.max_steps):
+        res[0] = wk.cur.res
+        if wk.cur.res < 0.5 * best or wk.cur.res > pr.bear.lim.stall_below:
+            best = wk.cur.res
+            stall = 0
+        else:
+            stall += 1
+        if (wk.cur.res <= pr.bear.lim.tolerance or stall >= pr.bear.lim.stall
+                or not isfinite(wk.cur.res)):
+            break
+        pair_step(pr, wk, step)
+        pair_search(pr, wk, vh, vl, step, moved)
+        still = True
+        for i in range(5):
+            still = still and moved[i] == 0.0
+        if still:
+            stall = pr.bear.lim.stall  # no step taken: rounding (or a failed search)
+        for i in range(5):
+            two_sum(vh[i], moved[i], &hi, &lo)
+            quick(hi, lo + vl[i], &vh[i], &vl[i])
+        its += 1
+    return its
+
+
+def solve_pair(const double[:, ::1] c, const double[:, ::1] s, const double[::1] a_hat,
+               const double[::1] pre, const double[::1] gap, const double[::1] b_hi,
+               const double[::1] b_lo, const double[::1] sigma, const double[:, ::1] arm,
+               const double[:, ::1] off_hi, const double[:, ::1] off_lo,
+               const double[:, ::1] f, const unsigned char[:, ::1] held,
+               const double[:, ::1] curve, const double[::1] node_x, const double[::1] node_w,
+               const double[:, ::1] v0, *, int max_steps=PAIR_MAX_STEPS,
+               int halvings=PAIR_HALVINGS, int first_steps=PAIR_FIRST_STEPS):
+    """Solve n cases of the preloaded pair (bearingload.models.pair) from the start v0 (n, 5):
+    damped Newton over the shaft's position, first in plain doubles (``lean_newton``), then
+    with the balls in double-double (``pair_newton``).
+
+    Arrays over the n cases: ``c``, ``s`` (n, z) the balls of either bearing (one-sided
+    contacts); ``a_hat``, ``pre``, ``gap``, ``b_hi``, ``b_lo`` (n,) their scaled geometry;
+    ``sigma`` (2,) +1 or -1 (a mirrored bearing); ``arm`` (n, 2) -z_k / R_i; ``off_hi``,
+    ``off_lo`` (n, 2) each bearing's axial preload offset; ``f`` (n, 5) the applied forces and
+    ``held`` (n, 5, uint8) the components held at 0, scaled; ``curve`` (n, NODES), or (n, 0)
+    for a constant K, with its ``node_x``, ``node_w``.
+
+    ``max_steps``, ``halvings`` (the double-double stage) and ``first_steps`` (the first)
+    default to the module's limits.
+
+    Returns (vh, vl, residual, steps, status, balls, kappa): the position in double-double
+    (n, 5) each, the residual before the last step (n,), the steps of both stages (n,), the
+    status (n,: OK, or NO_MEMORY), the
+    balls of each bearing at the answer (5, 2, n, z: rho, u, d, eps, up) and their stiffness
+    deviations (2, n, z).
+    """
+    cdef Py_ssize_t n = c.shape[0], k
+    cdef int z = <int> c.shape[1], i, b
+    cdef bint has_curve = curve.shape[1] == NODES
+    vh_a = np.empty((n, 5))
+    vl_a = np.empty((n, 5))
+    res_a = np.empty(n)
+    its_a = np.zeros(n, dtype=np.int64)
+    status_a = np.empty(n, dtype=np.int32)
+    balls_a = np.zeros((5, 2, n, z))
+    kappa_a = np.zeros((2, n, z))
+    cdef double[:, ::1] vh = vh_a, vl = vl_a
+    cdef double[::1] res = res_a
+    cdef int64_t[::1] its = its_a
+    cdef int[::1] status = status_a
+    cdef double[:, :, :, ::1] balls = balls_a
+    cdef double[:, :, ::1] kap = kappa_a
+    cdef Pair pr
+    cdef PairWork wk
+    cdef Point *pt
+    memset(&pr, 0, sizeof(Pair))
+    pr.bear.lim = LIMITS
+    pr.whole = pr.bear
+    pr.max_steps = max_steps
+    pr.halvings = halvings
+    pr.first_stage = PAIR_FIRST_STAGE
+    pr.first_steps = first_steps
+    pr.first_halvings = PAIR_FIRST_HALVINGS
+    with nogil:
+        for k in range(n):
+            pair_case(&pr, k, z, &c[k, 0], &s[k, 0], a_hat[k], pre[k], gap[k], b_hi[k], b_lo[k])
+            pr.bear.curve = &curve[k, 0] if has_curve else NULL
+            pr.bear.node_x = &node_x[0]
+            pr.bear.node_w = &node_w[0]
+            for b in range(2):
+                pr.sigma[b] = sigma[b]
+                pr.arm[b] = arm[k, b]
+                pr.off_hi[b] = off_hi[k, b]
+                pr.off_lo[b] = off_lo[k, b]
+            for i in range(5):
+                pr.whole.f[i] = f[k, i]
+                pr.whole.locked[i] = held[k, i]
+                vh[k, i] = v0[k, i]
+                vl[k, i] = 0.0
+            if not pair_open(z, &wk):
+                status[k] = NO_MEMORY
+                res[k] = INFINITY
+                continue
+            its[k] = lean_newton(&pr, &wk, &vh[k, 0])
+            its[k] += pair_newton(&pr, &wk, &vh[k, 0], &vl[k, 0], &res[k])
+            status[k] = OK
+            for b in range(2):
+                pt = &wk.cur.side[b].pt
+                for i in range(z):
+                    balls[0, b, k, i] = pt.b.rho[i]
+                    balls[1, b, k, i] = pt.b.u[i]
+                    balls[2, b, k, i] = pt.b.d[i]
+                    balls[3, b, k, i] = pt.b.eps[i]
+                    balls[4, b, k, i] = pt.b.up[i]
+                    kap[b, k, i] = wk.cur.side[b].kappa[i]
+            free(wk.block)
+    return vh_a, vl_a, res_a, its_a, status_a, balls_a, kappa_a
+
+
+cdef void pair_case(Pair *pr, Py_ssize_t k, int z, const double *c, const double *s,
+                    double a_hat, double pre, double gap, double b_hi,
+                    double b_lo) noexcept nogil:
+    """The balls of case k's bearings (one-sided contacts, no imposed tilt)."""
+    cdef int i
+    pr.bear.z = z
+    pr.bear.c = c
+    pr.bear.s = s
+    pr.bear.a_hat = a_hat
+    pr.bear.pre = pre
+    pr.bear.gap = gap
+    pr.bear.b_hi = b_hi
+    pr.bear.b_lo = b_lo
+    pr.bear.t_imp = 0.0
+    pr.bear.one_sided = 1
+    pr.bear.deviation = pre > 0 and z >= 2
+    pr.bear.q0 = pre * sqrt(pre) if pr.bear.deviation else 0.0
+    for i in range(5):
+        pr.bear.f[i] = 0.0
+        pr.bear.locked[i] = 0
+    pr.whole.z = z
+
+
+# ------------------------------------------------------------ the pair's plain-double stage
+
+cdef void lean_side(const Case *cs, const double *w, Lean *ln, double *gen, double *size,
+                    double *energy) noexcept nogil:
+    """One bearing at the local position w in plain doubles, K at each ball's angle (pair.
+    _lean_state): its balls, its generalised forces (compensated), their terms' magnitudes and
+    sum_j Q_j delta_j."""
+    cdef int j, i
+    cdef double rho, u, up, rp, d, m, eps, safe, pos, cam1, qc, qs
+    cdef double err[5]
+    for i in range(5):
+        gen[i] = 0.0
+        size[i] = 0.0
+        err[i] = 0.0
+    energy[0] = 0.0
+    for j in range(cs.z):
+        rho = (cs.a_hat - cs.gap) + (w[0] * cs.c[j] + w[1] * cs.s[j])
+        u = w[2] + w[3] * cs.c[j] + w[4] * cs.s[j]
+        up = max(u, 0.0)
+        rp = max(rho, 0.0)
+        d = hypot(rp, up)
+        m = rho - cs.a_hat
+        eps = (m * (m + 2.0 * cs.a_hat) + up * up) / (d + cs.a_hat) if rho > 0 else up - cs.a_hat
+        safe = d if d > 0 else 1.0
+        ln.ca[j] = rp / safe if d > 0 else 1.0
+        ln.sa[j] = up / safe
+        ln.rho[j] = rho
+        ln.up[j] = up
+        ln.d[j] = d
+        pos = max(eps, 0.0)
+        ln.root[j] = sqrt(pos)
+        ln.kappa[j] = 0.0
+        if cs.curve != NULL:
+            cam1 = -ln.sa[j] * ln.sa[j] / (1.0 + ln.ca[j]) if rho > 0 else ln.ca[j] - 1.0
+            ln.kappa[j] = curve_kappa(cs, ln.ca[j], cam1)
+        ln.q[j] = (1.0 + ln.kappa[j]) * pos * ln.root[j]
+        energy[0] += ln.q[j] * pos
+        qc = ln.q[j] * ln.ca[j]
+        qs = ln.q[j] * ln.sa[j]
+        add(&gen[0], &err[0], qc * cs.c[j])
+        add(&gen[1], &err[1], qc * cs.s[j])
+        add(&gen[2], &err[2], qs)
+        add(&gen[3], &err[3], qs * cs.c[j])
+        add(&gen[4], &err[4], qs * cs.s[j])
+        size[0] += fabs(qc * cs.c[j])
+        size[1] += fabs(qc * cs.s[j])
+        size[2] += fabs(qs)
+        size[3] += fabs(qs * cs.c[j])
+        size[4] += fabs(qs * cs.s[j])
+    for i in range(5):
+        gen[i] += err[i]
+
+
+cdef void lean_state(const Pair *pr, const double *v, LeanState *st) noexcept nogil:
+    """The pair at v in plain doubles: each bearing at L_k v plus its offset, the pair's forces,
+    residual and potential."""
+    cdef double w[5]
+    cdef double gen[5]
+    cdef double size[5]
+    cdef double energy, total = 0.0, work = 0.0
+    cdef int k, i
+    for i in range(5):
+        st.gen[i] = 0.0
+        st.size[i] = 0.0
+    for k in range(2):
+        w[0] = v[0] + pr.arm[k] * v[3]
+        w[1] = v[1] + pr.arm[k] * v[4]
+        w[2] = (pr.off_hi[k] + pr.off_lo[k]) + pr.sigma[k] * v[2]
+        w[3] = pr.sigma[k] * v[3]
+        w[4] = pr.sigma[k] * v[4]
+        lean_side(&pr.bear, w, &st.side[k], gen, size, &energy)
+        lift(pr.sigma[k], pr.arm[k], gen, st.gen)
+        lift(fabs(pr.sigma[k]), fabs(pr.arm[k]), size, st.size)
+        total += energy
+    for i in range(5):
+        work += pr.whole.f[i] * v[i]
+    st.res = residual(&pr.whole, st.gen, st.size)
+    st.energy = total / 2.5 - work
+
+
+cdef void lean_step(const Pair *pr, PairWork *wk, double *step) noexcept nogil:
+    """The Newton step of the first stage: the pair's tangent at the lean state (with the
+    change of K with the angle), as pair_move takes it."""
+    cdef const Case *cs = &pr.bear
+    cdef Lean *ln
+    cdef double jac[25]
+    cdef double t[25]
+    cdef double grad[5]
+    cdef double safe
+    cdef bint turning
+    cdef int k, j, i
+    for i in range(25):
+        jac[i] = 0.0
+    for k in range(2):
+        ln = &wk.lean.side[k]
+        for j in range(cs.z):
+            safe = ln.d[j] if ln.d[j] > 0 else 1.0
+            turning = ln.rho[j] > 0 and ln.up[j] > 0
+            wk.w1[j] = 1.5 * (1.0 + ln.kappa[j]) * ln.root[j]
+            wk.w2[j] = ln.q[j] / safe if turning else 0.0
+            wk.w3[j] = 0.0
+            if cs.curve != NULL and turning and ln.root[j] > 0:
+                wk.w3[j] = (curve_slope(cs, ln.ca[j], -ln.sa[j] * ln.sa[j] / (1.0 + ln.ca[j]))
+                            * -ln.sa[j] * ln.root[j] ** 3 / safe)
+        tangent(cs, ln.ca, ln.sa, wk.w1, wk.w2, wk.w3 if cs.curve != NULL else NULL, False, t)
+        add_mapped(pr, k, t, jac)
+    for i in range(5):
+        grad[i] = 0.0 if pr.whole.locked[i] else wk.lean.gen[i] - pr.whole.f[i]
+    pair_move(pr, jac, grad, step)
+
+
+cdef void swap_lean(LeanState *a, LeanState *b) noexcept nogil:
+    cdef LeanState t = a[0]
+    a[0] = b[0]
+    b[0] = t
+
+
+cdef int lean_newton(const Pair *pr, PairWork *wk, double *v) noexcept nogil:
+    """The first stage from v: damped Newton in plain doubles until the residual is below
+    first_stage or first_steps steps; a step t = 1, 1/2, ... where the potential falls
+    (Armijo, 1e-4 of the slope) or the residual halves; a case whose search finds none is
+    handed on. Returns the steps taken (the failed search counted)."""
+    cdef double step[5]
+    cdef double trial[5]
+    cdef double slope, t
+    cdef int n, h, i, its = 0
+    cdef bint taken
+    lean_state(pr, v, &wk.lean)
+    for n in range(pr.first_steps):
+        if not wk.lean.res > pr.first_stage:
+            break
+        lean_step(pr, wk, step)
+        slope = 0.0
+        for i in range(5):
+            slope += (0.0 if pr.whole.locked[i] else wk.lean.gen[i] - pr.whole.f[i]) * step[i]
+        t = 1.0
+        taken = False
+        for h in range(pr.first_halvings):
+            for i in range(5):
+                trial[i] = v[i] + t * step[i]
+            lean_state(pr, trial, &wk.lean_trial)
+            if (wk.lean_trial.energy - wk.lean.energy <= 1e-4 * t * slope
+                    or wk.lean_trial.res < 0.5 * wk.lean.res):
+                taken = True
+                break
+            t *= 0.5
+        its += 1
+        if not taken:
+            break
+        for i in range(5):
+            v[i] = trial[i]
+        swap_lean(&wk.lean, &wk.lean_trial)
+    return its

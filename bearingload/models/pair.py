@@ -29,19 +29,20 @@ commercial tools model a bearing set):
   ``2^1.5 F_p = 2.83 F_p``, the limit of a light preload; the contact angle growing under the
   load gives a little more: 2.885 F_p for a 7205B at F_p = 500 N).
 
-Numerics: damped Newton on the pair's five unknowns, each case alone (row-wise operations
-only). The balls of each bearing are evaluated by :mod:`bearingload.models._combined_ring` in
-double-double arithmetic at the local position (:func:`~bearingload.models._combined_ring.
-reference`), the step solves the pair's tangent (with the change of K with the angle), the line
-search takes a step where the potential (stiffness frozen) falls or the residual halves. A case
-stops when every component is balanced to 1e-12 of its load (or to the rounding of its terms),
-the measure of :func:`~bearingload.models._combined_ring.residual_of`; a case left above 1e-8
-raises :class:`~bearingload.errors.ConvergenceError` naming its inputs.
+Numerics: damped Newton on the pair's five unknowns, each case alone in the compiled core
+(:func:`bearingload.models._core.solve_pair`, a C loop over the cases): a first stage in plain
+doubles to a residual of 1e-9, then the balls of each bearing evaluated by the single bearing's
+kernels in double-double arithmetic at the local position, the step solving the pair's tangent
+(with the change of K with the angle), the line search taking a step where the potential
+(stiffness frozen) falls or the residual halves. A case stops when every component is balanced
+to 1e-12 of its load (or to the rounding of its terms), the measure of
+:func:`~bearingload.models._combined_ring.residual_of`; a case left above 1e-8 raises
+:class:`~bearingload.errors.ConvergenceError` naming its inputs. This module keeps the checks,
+the set-up (the preload approach and offset, the start) and the results.
 """
 
 from __future__ import annotations
 
-import dataclasses
 import math
 from dataclasses import dataclass
 from typing import Any
@@ -53,7 +54,7 @@ from bearingload.constants import STEEL_MODULUS
 from bearingload.errors import ConvergenceError, InputError
 from bearingload.models import _combined_ring as _ring
 from bearingload.models import combined as _comb
-from bearingload.models._combined_ring import ACCEPT, TOLERANCE, Problem
+from bearingload.models._combined_ring import ACCEPT, Problem
 from bearingload.models.combined import CombinedDistribution, StiffnessViews
 
 __all__ = ["ARRANGEMENTS", "LIFE_EXPONENT", "PairDistribution", "solve_pair", "pair_life"]
@@ -64,13 +65,6 @@ ARRANGEMENTS = ("DB", "DF", "DT")
 #: 16281:2008, 4.3 (the rings' lives, ``L = (L_i^-e + L_e^-e)^(-1/e)``, written there as the
 #: exponent -9/10 = -1/e) and ISO 281:2007's system rule (Lundberg-Palmgren). [-]
 LIFE_EXPONENT = 10.0 / 9.0
-#: Newton steps per case before ConvergenceError. [-]
-MAX_STEPS = 400
-#: The first stage (plain doubles) stops at this residual or after FIRST_STEPS steps. [-]
-FIRST_STAGE = 1e-9
-FIRST_STEPS = 60
-#: Halvings of a step in the line search. [-]
-HALVINGS = 50
 
 
 @dataclass(frozen=True)
@@ -163,12 +157,6 @@ class _Pair:
     f: np.ndarray  # (n, 5) applied, scaled
     held: np.ndarray  # (n, 5) bool: y and theta_c of a case symmetric about the load line, 0
 
-    def take(self, idx: np.ndarray) -> _Pair:
-        return _Pair(
-            (self.probs[0].take(idx), self.probs[1].take(idx)), self.sigma, self.lever[idx],
-            self.off_hi[idx], self.off_lo[idx], self.f[idx], self.held[idx],
-        )  # fmt: skip
-
     def maps(self) -> np.ndarray:
         """L_k (n, 2, 5, 5): local displacement per pair displacement (scaled, t = R_i theta)."""
         n = self.f.shape[0]
@@ -183,14 +171,11 @@ class _Pair:
 
 @dataclass
 class _State:
-    """The balls of both bearings at the positions of some cases, and the pair's forces."""
+    """The balls of both bearings at the answer: their geometry, stiffness and loads."""
 
     balls: list[_ring.Balls]
     kappa: list[np.ndarray]
     loads: list[_ring.Loads]
-    gen: np.ndarray  # (n, 5) pair, scaled
-    res: np.ndarray  # (n,)
-    energy: np.ndarray  # (n,) the balls' potential, stiffness as in ``loads``
 
 
 def _local(pp: _Pair, k: int, vh: np.ndarray, vl: np.ndarray) -> tuple[np.ndarray, np.ndarray]:
@@ -207,185 +192,48 @@ def _local(pp: _Pair, k: int, vh: np.ndarray, vl: np.ndarray) -> tuple[np.ndarra
     return wh, wl
 
 
-def _evaluate(pp: _Pair, rows: np.ndarray, vh: np.ndarray, vl: np.ndarray, curve: Any,
-              frozen: list[np.ndarray] | None = None) -> _State:  # fmt: skip
-    """Both bearings at ``v`` (the cases ``rows`` of the whole call, for the stiffness curve):
-    K at each ball's angle (``frozen``: these stiffnesses instead), the pair's forces and
-    residual."""
-    balls, kappas, loads = [], [], []
-    gen = np.zeros_like(vh)
-    size = np.zeros_like(vh)
-    energy = np.zeros(vh.shape[0])
-    for k in range(2):
-        p = pp.probs[k]
-        b = _ring.reference(p, *_local(pp, k, vh, vl))
-        zero = np.zeros_like(b.rho)
-        if frozen is not None:
-            kappa = frozen[k]
-        elif curve is None:
-            kappa = zero
-        else:
-            lo0 = _ring.loads(p, b, zero)
-            kappa = curve(rows, lo0.ca, lo0.cam1)
-        lo = _ring.loads(p, b, kappa)
-        g, sz = _ring.forces(p, lo)
-        gen += _transposed(pp, k, g)
-        size += _transposed(pp, k, sz, magnitude=True)
-        energy += (lo.q * lo.root * lo.root).sum(1) / 2.5
-        balls.append(b)
-        kappas.append(kappa)
-        loads.append(lo)
-    res = _ring.residual_of(pp.f, gen, size, pp.held)
-    return _State(balls, kappas, loads, gen, res, energy)
-
-
-def _transposed(pp: _Pair, k: int, f: np.ndarray, magnitude: bool = False) -> np.ndarray:
-    """``L_k^T f`` (n, 5): bearing k's generalised forces ``f`` as the pair's (its axial ones
-    times sigma_k, its radial ones also times the lever -z_k/R_i in the tilts); with
-    ``magnitude`` the sizes of the terms (every factor by its size)."""
-    s, r = float(pp.sigma[k]), -pp.lever[:, k]
-    if magnitude:
-        s, r = abs(s), np.abs(r)
-    out = np.empty_like(f)
-    out[:, :2] = f[:, :2]
-    out[:, 2:] = s * f[:, 2:]
-    out[:, 3] += r * f[:, 0]
-    out[:, 4] += r * f[:, 1]
-    return out
-
-
-def _jacobian(pp: _Pair, st: _State, curve: Any, rows: np.ndarray, symmetric: bool) -> Any:
-    """The pair's tangent d(forces)/dv (n, 5, 5), scaled, and each bearing's local one: ``w1 g
-    g^T + w2 h h^T (+ w3 g h^T``, the change of K with the angle, unless ``symmetric``: then
-    its symmetric part)."""
-    maps = pp.maps()
-    total = np.zeros((pp.f.shape[0], 5, 5))
-    local = []
-    for k in range(2):
-        p, b, lo, kappa = pp.probs[k], st.balls[k], st.loads[k], st.kappa[k]
-        slope = None if curve is None else _slope(curve, rows, lo)
-        weights = _comb.tangent_weights(p, b, lo, kappa, slope)
-        t = _ring.ball_tangent(p.arms, lo.ca, lo.sa, *weights)
-        if symmetric:
-            t = 0.5 * (t + t.transpose(0, 2, 1))
-        local.append(t)
-        total += maps[:, k].transpose(0, 2, 1) @ t @ maps[:, k]
-    return total, local
-
-
-def _slope(curve: Any, rows: np.ndarray, lo: _ring.Loads) -> np.ndarray:
-    """d(kappa)/d(cos alpha) of the cases ``rows`` of the curve."""
-    sub = _comb._StiffnessCurve(curve.values[rows])
-    return sub.slope(lo.ca, lo.cam1)
-
-
 def _dd_add(vh: np.ndarray, vl: np.ndarray, w: np.ndarray) -> tuple[np.ndarray, np.ndarray]:
     hi, lo = _ring._two_sum(vh, w)
     return _ring._fast(hi, lo + vl)
 
 
-def _step(pp: _Pair, st: _State, curve: Any, rows: np.ndarray) -> np.ndarray:
-    """The Newton step (n, 5) on the pair's tangent, regularised; where no ball is in contact,
-    a move along the load; every component within A (scaled) of the position."""
-    grad = np.where(pp.held, 0.0, st.gen - pp.f)
-    jac = _ring.hold(_jacobian(pp, st, curve, rows, symmetric=False)[0], pp.held)
-    trace = np.trace(jac, axis1=1, axis2=2)
-    jac += (1e-13 * np.abs(trace) + 1e-300)[:, None, None] * np.eye(5)
-    with np.errstate(all="ignore"):
-        step = -np.linalg.solve(jac, grad[:, :, None])[:, :, 0]
-    a_hat = pp.probs[0].a_hat
-    bad = ~np.all(np.isfinite(step), axis=1) | ~(trace > 1e-200)
-    if bad.any():
-        norm = np.maximum(np.linalg.norm(grad[bad], axis=1), 1e-300)
-        step[bad] = -grad[bad] / norm[:, None] * a_hat[bad, None]
-    longest = np.max(np.abs(step), axis=1)
-    shrink = np.where(longest > a_hat, a_hat / np.where(longest > 0, longest, 1.0), 1.0)
-    return step * shrink[:, None]
+def _solve_stages(pp: _Pair, v0: np.ndarray, curve: Any) -> tuple[Any, ...]:
+    """Every case solved from ``v0`` in the compiled core (:func:`bearingload.models._core.
+    solve_pair`: Newton in plain doubles to a residual of 1e-9, then with the balls in
+    double-double to the tolerance): (position hi, lo, residual, steps, the balls there)."""
+    from bearingload.models import _core
 
-
-def _solve_stages(pp: _Pair, v0: np.ndarray, curve: Any) -> tuple[np.ndarray, ...]:
-    """Newton in plain doubles until every case is balanced to FIRST_STAGE (or FIRST_STEPS
-    steps, :func:`_lean_newton`), then with the balls in double-double to the tolerance:
-    (position hi, lo, residual, steps)."""
-    vh, its = _lean_newton(pp, v0, curve)
-    vh, vl, res, more = _newton(pp, vh, np.zeros_like(vh), curve, TOLERANCE, MAX_STEPS)
-    return vh, vl, res, its + more
-
-
-def _newton(pp: _Pair, vh: np.ndarray, vl: np.ndarray, curve: Any, tol: float,
-            steps: int) -> tuple[np.ndarray, ...]:  # fmt: skip
-    """Damped Newton of every case from ``vh + vl`` (n, 5) until its residual is ``tol`` (or
-    it stalls, or ``steps`` steps): the position (hi, lo), the residual and the steps per case.
-    Row-wise throughout: no case depends on the others."""
-    n = vh.shape[0]
-    vh, vl = vh.copy(), vl.copy()
-    res = np.full(n, np.inf)
-    its = np.zeros(n, dtype=np.int64)
-    active = np.arange(n)
-    sub = pp
-    best = np.full(n, np.inf)
-    stall = np.zeros(n, dtype=np.int64)
-    st: _State | None = None
-    for _ in range(steps):
-        if st is None:
-            st = _evaluate(sub, active, vh[active], vl[active], curve)
-        res[active] = st.res
-        better = (st.res < 0.5 * best[active]) | (st.res > _ring.STALL_BELOW)
-        best[active] = np.where(better, st.res, best[active])
-        stall[active] = np.where(better, 0, stall[active] + 1)
-        done = (st.res <= tol) | (stall[active] >= _ring.STALL) | ~np.isfinite(st.res)
-        if not (~done).any():
-            break
-        if done.any():
-            keep = np.flatnonzero(~done)
-            active, sub = active[keep], sub.take(keep)
-            st = _take_state(st, keep)
-        step = _step(sub, st, curve, active)
-        moved, st = _line_search(sub, st, curve, active, (vh[active], vl[active]), step)
-        still = ~np.any(moved != 0.0, axis=1)
-        stall[active[still]] = _ring.STALL  # no step taken: rounding (or a failed search)
-        vh[active], vl[active] = _dd_add(vh[active], vl[active], moved)
-        its[active] += 1
-    return vh, vl, res, its
-
-
-def _take_state(st: _State, idx: np.ndarray) -> _State:
-    return _State(
-        [b.take(idx) for b in st.balls], [k[idx] for k in st.kappa],
-        [_ring._take_loads(lo, idx) for lo in st.loads], st.gen[idx], st.res[idx],
-        st.energy[idx],
-    )  # fmt: skip
-
-
-def _line_search(pp: _Pair, st: _State, curve: Any, rows: np.ndarray,
-                 at: tuple[np.ndarray, np.ndarray],
-                 step: np.ndarray) -> tuple[np.ndarray, _State | None]:  # fmt: skip
-    """The move (n, 5): ``t`` times the step, t = 1, 1/2, ..., the first where the potential
-    with the stiffness frozen falls by 1e-4 of its slope (Armijo) or the residual halves; 0
-    where none does. Also the state there when every case took its first trial (else None)."""
-    vh, vl = at
-    slope = (np.where(pp.held, 0.0, st.gen - pp.f) * step).sum(1)
-    t = np.ones(step.shape[0])
-    moved = np.zeros_like(step)
-    pending = np.arange(step.shape[0])
-    for k in range(HALVINGS):
-        if not pending.size:
-            break
-        part = pp.take(pending) if pending.size < step.shape[0] else pp
-        w = t[pending, None] * step[pending]
-        th, tl = _dd_add(vh[pending], vl[pending], w)
-        frozen = [k[pending] for k in st.kappa]
-        tr = _evaluate(part, rows[pending], th, tl, curve, frozen)
-        fresh = _evaluate(part, rows[pending], th, tl, curve) if curve is not None else tr
-        drop = tr.energy - st.energy[pending] - (part.f * w).sum(1)
-        ok = (drop <= 1e-4 * t[pending] * slope[pending]) | (fresh.res < 0.5 * st.res[pending])
-        ok &= np.all(np.isfinite(w), axis=1)
-        if k == 0 and ok.all():
-            return w, fresh  # every case at its first trial: that is the next state
-        moved[pending[ok]] = w[ok]
-        pending = pending[~ok]
-        t[pending] *= 0.5
-    return moved, None
+    p = pp.probs[0]
+    values = np.zeros((v0.shape[0], 0)) if curve is None else curve.values
+    floats = (
+        p.c,
+        p.s,
+        p.a_hat,
+        p.pre,
+        p.gap,
+        p.b_hi,
+        p.b_lo,
+        pp.sigma,
+        -pp.lever,
+        pp.off_hi,
+        pp.off_lo,
+        pp.f,
+    )
+    vh, vl, res, its, _, balls, kappa = _core.solve_pair(
+        *(np.ascontiguousarray(a, dtype=float) for a in floats),
+        np.ascontiguousarray(pp.held, dtype=np.uint8),
+        np.ascontiguousarray(values, dtype=float),
+        _comb._NODE_X,
+        _comb._NODE_W,
+        np.ascontiguousarray(v0, dtype=float),
+    )
+    sides = [_ring.Balls(*balls[:, k]) for k in range(2)]
+    st = _State(
+        sides,
+        [kappa[0], kappa[1]],
+        [_ring.loads(p, b, kp) for b, kp in zip(sides, kappa, strict=True)],
+    )
+    return vh, vl, res, its, st
 
 
 #: Largest width B of one bearing (the distance of the two bearings' centres) over the pitch
@@ -602,10 +450,9 @@ def _solve(z: int, kind: str, c: dict, shape: tuple[int, ...]) -> PairDistributi
         held[:, 2:] |= ((fa == 0) & no_moment)[:, None]
     pp = _Pair((prob, prob), sigma, lever / geo.R_i[:, None],
                np.stack([u_hi, u_hi], 1), np.stack([u_lo, u_lo], 1), f, held)  # fmt: skip
-    vh, vl, res, its = _solve_stages(pp, _start(pp, z, geo, fp / f_ref), curve)
+    vh, vl, res, its, st = _solve_stages(pp, _start(pp, z, geo, fp / f_ref), curve)
     given = {k: c[k] for k in _UNITS}
     _accepted(res, its, given)
-    st = _evaluate(pp, rows, vh, vl, curve)
     _check_edge(st, given)
     return _result(kind, pp, geo, (vh, vl, res, its, st), c, shape, curve, mirror & (mc == 0),
                    delta_p)  # fmt: skip
@@ -800,180 +647,3 @@ def _lift_off(pp: _Pair, geo: Any, curve: Any, delta_p: np.ndarray, c: dict) -> 
         kappa = curve(rows, ca[:, None], (-sa * sa / (1.0 + ca))[:, None])[:, 0]
     thrust = p.z * (1.0 + kappa) * delta**1.5 * sa * p.f_ref
     return np.where(c["axial_load"] < 0, -thrust, thrust)
-
-
-@dataclass(frozen=True)
-class _Lean:
-    """The first stage's pair in plain doubles, both bearings' balls side by side (n, 2z):
-    the arms of each ball's radial and axial separation in the pair's unknowns (n, 5, 2z)."""
-
-    radial: np.ndarray
-    axial: np.ndarray
-    rho0: np.ndarray  # (n, 1) A cos(alpha_0)... the radial separation at v = 0
-    u0: np.ndarray  # (n, 2z) the axial one (the preload offset included)
-    big_a: np.ndarray  # (n, 1)
-    f: np.ndarray
-    held: np.ndarray
-
-    @staticmethod
-    def of(pp: _Pair) -> _Lean:
-        p = pp.probs[0]
-        c, s = np.concatenate([p.c, p.c], 1), np.concatenate([p.s, p.s], 1)
-        z = p.c.shape[1]
-        r = np.repeat(-pp.lever, z, axis=1)  # (n, 2z)
-        sig = np.repeat(pp.sigma, z)[None, :] * np.ones_like(c)
-        zero = np.zeros_like(c)
-        radial = np.stack([c, s, zero, r * c, r * s], axis=1)
-        axial = np.stack([zero, zero, sig, sig * c, sig * s], axis=1)
-        u0 = np.repeat(pp.off_hi + pp.off_lo, z, axis=1)
-        return _Lean(radial, axial, (p.a_hat - p.gap)[:, None], u0, p.a_hat[:, None], pp.f,
-                     pp.held)  # fmt: skip
-
-    def take(self, idx: np.ndarray) -> _Lean:
-        return _Lean(*(getattr(self, k)[idx] for k in _LEAN_FIELDS))
-
-
-_LEAN_FIELDS = ("radial", "axial", "rho0", "u0", "big_a", "f", "held")
-
-
-@dataclass
-class _LeanState:
-    """The lean pair at the positions of some cases: residual, potential, forces and the pieces
-    of the tangent (arrays with the cases on the first axis)."""
-
-    res: np.ndarray
-    energy: np.ndarray
-    gen: np.ndarray
-    g: np.ndarray  # (n, 5, 2z) generalised direction of each ball's contact normal
-    ca: np.ndarray
-    sa: np.ndarray
-    rho: np.ndarray
-    up: np.ndarray
-    d: np.ndarray
-    root: np.ndarray
-    kappa: np.ndarray
-    q: np.ndarray
-
-    def take(self, idx: np.ndarray) -> _LeanState:
-        return _LeanState(*(getattr(self, k.name)[idx] for k in dataclasses.fields(self)))
-
-    def put(self, idx: np.ndarray, other: _LeanState) -> None:
-        for k in dataclasses.fields(self):
-            getattr(self, k.name)[idx] = getattr(other, k.name)
-
-
-def _lean_state(q: _Lean, v: np.ndarray, curve: Any, rows: np.ndarray) -> _LeanState:
-    """The lean pair at ``v`` (plain doubles; K at each ball's angle)."""
-    rho = q.rho0 + (v[:, None, :] @ q.radial)[:, 0]
-    u = q.u0 + (v[:, None, :] @ q.axial)[:, 0]
-    up, rp = np.maximum(u, 0.0), np.maximum(rho, 0.0)
-    d = np.hypot(rp, up)
-    m = rho - q.big_a
-    eps = np.where(rho > 0, (m * (m + 2.0 * q.big_a) + up * up) / (d + q.big_a), up - q.big_a)
-    safe = np.where(d > 0, d, 1.0)
-    ca, sa = np.where(d > 0, rp / safe, 1.0), up / safe
-    pos = np.maximum(eps, 0.0)
-    root = np.sqrt(pos)
-    kappa = np.zeros_like(rho)
-    if curve is not None:
-        kappa = curve(rows, ca, _cos_m1(rho, ca, sa))
-    load = (1.0 + kappa) * pos * root
-    g = q.radial * ca[:, None, :] + q.axial * sa[:, None, :]
-    gen = (g @ load[:, :, None])[:, :, 0]
-    size = (np.abs(g) @ load[:, :, None])[:, :, 0]
-    res = _ring.residual_of(q.f, gen, size, q.held)
-    energy = (load * pos).sum(1) / 2.5 - (q.f * v).sum(1)
-    return _LeanState(res, energy, gen, g, ca, sa, rho, up, d, root, kappa, load)
-
-
-def _cos_m1(rho: np.ndarray, ca: np.ndarray, sa: np.ndarray) -> np.ndarray:
-    """cos(alpha) - 1 without cancellation."""
-    return np.where(rho > 0, -sa * sa / (1.0 + ca), ca - 1.0)
-
-
-def _lean_step(q: _Lean, st: _LeanState, curve: Any, rows: np.ndarray) -> np.ndarray:
-    """The Newton step of the lean pair (its tangent, regularised; within A)."""
-    h = -q.radial * st.sa[:, None, :] + q.axial * st.ca[:, None, :]
-    w1 = 1.5 * (1.0 + st.kappa) * st.root
-    turning = (st.rho > 0) & (st.up > 0)
-    safe = np.where(st.d > 0, st.d, 1.0)
-    w2 = np.where(turning, st.q / safe, 0.0)
-    gt, ht = st.g.transpose(0, 2, 1), h.transpose(0, 2, 1)
-    jac = (st.g * w1[:, None, :]) @ gt + (h * w2[:, None, :]) @ ht
-    if curve is not None:
-        slope = _comb._StiffnessCurve(curve.values[rows]).slope(
-            st.ca, _cos_m1(st.rho, st.ca, st.sa)
-        )
-        w3 = np.where(turning & (st.root > 0), slope * -st.sa * st.root**3 / safe, 0.0)
-        jac += (st.g * w3[:, None, :]) @ ht
-    grad = np.where(q.held, 0.0, st.gen - q.f)
-    jac = _ring.hold(jac, q.held)
-    trace = np.trace(jac, axis1=1, axis2=2)
-    jac += (1e-13 * np.abs(trace) + 1e-300)[:, None, None] * np.eye(5)
-    with np.errstate(all="ignore"):
-        step = -np.linalg.solve(jac, grad[:, :, None])[:, :, 0]
-    big_a = q.big_a[:, 0]
-    bad = ~np.all(np.isfinite(step), axis=1) | ~(trace > 1e-200)
-    if bad.any():
-        norm = np.maximum(np.linalg.norm(grad[bad], axis=1), 1e-300)
-        step[bad] = -grad[bad] / norm[:, None] * big_a[bad, None]
-    longest = np.max(np.abs(step), axis=1)
-    shrink = np.where(longest > big_a, big_a / np.where(longest > 0, longest, 1.0), 1.0)
-    return step * shrink[:, None]
-
-
-def _lean_newton(pp: _Pair, v: np.ndarray, curve: Any) -> tuple[np.ndarray, np.ndarray]:
-    """The first stage: damped Newton in plain doubles until FIRST_STAGE or FIRST_STEPS steps,
-    each case on its own; a case whose line search finds no step is left to the second stage.
-    (position, steps)."""
-    v = v.copy()
-    its = np.zeros(v.shape[0], dtype=np.int64)
-    active = np.arange(v.shape[0])
-    q = _Lean.of(pp)
-    st = _lean_state(q, v, curve, active)
-    for _ in range(FIRST_STEPS):
-        going = np.flatnonzero(st.res > FIRST_STAGE)
-        if going.size < active.size:
-            active, q, st = active[going], q.take(going), st.take(going)
-        if not active.size:
-            break
-        step = _lean_step(q, st, curve, active)
-        taken, t, st = _lean_search(q, st, curve, active, v[active], step)
-        v[active] += np.where(taken[:, None], t[:, None] * step, 0.0)
-        its[active] += 1
-        if not taken.all():
-            keep = np.flatnonzero(taken)
-            active, q, st = active[keep], q.take(keep), st.take(keep)
-    return v, its
-
-
-def _lean_search(q: _Lean, st: _LeanState, curve: Any, rows: np.ndarray, v: np.ndarray,
-                 step: np.ndarray) -> tuple[np.ndarray, np.ndarray, _LeanState]:  # fmt: skip
-    """t = 1, 1/2, ... until the potential falls (Armijo, 1e-4 of the slope) or the residual
-    halves, each case on its own (only the cases still searching evaluated): (taken, t, the
-    state there; a case that found none keeps its own)."""
-    slope = (np.where(q.held, 0.0, st.gen - q.f) * step).sum(1)
-    n = step.shape[0]
-    t = np.ones(n)
-    taken = np.zeros(n, dtype=bool)
-    pending = np.arange(n)
-    new = st
-    for k in range(30):
-        sub = q if pending.size == n else q.take(pending)
-        trial = _lean_state(
-            sub, v[pending] + t[pending, None] * step[pending], curve, rows[pending]
-        )
-        ok = (trial.energy - st.energy[pending] <= 1e-4 * t[pending] * slope[pending]) | (
-            trial.res < 0.5 * st.res[pending]
-        )
-        if k == 0 and ok.all():
-            return np.ones(n, dtype=bool), t, trial
-        if k == 0:
-            new = st.take(np.arange(n))  # a copy to put the accepted trials in
-        new.put(pending[ok], trial.take(np.flatnonzero(ok)))
-        taken[pending[ok]] = True
-        pending = pending[~ok]
-        if not pending.size:
-            break
-        t[pending] *= 0.5
-    return taken, t, new
