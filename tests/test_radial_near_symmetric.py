@@ -68,3 +68,32 @@ def test_a_convergence_error_names_the_users_inputs(monkeypatch, cage):
     message = str(info.value)
     assert "load = 3000 N" in message and "clearance = 0.012 mm" in message
     assert "balls = 9" in message and "e_hat" not in message
+
+
+def test_a_case_converging_on_the_last_iteration_is_solved():
+    """The loop raised even when its last case converged on iteration MAX_ITERATIONS (200):
+    'for 0 cases: e_hat = none'."""
+    r = solve(3, 1000.0, 1e5, -1e-6, 3e-11, exponent=10 / 9)
+    _balanced(r, 1000.0)
+
+
+def test_a_convergence_error_names_only_the_cases_that_failed(monkeypatch):
+    """Cases were matched to the engine's failures by their scaled clearance and exponent:
+    three cases of one clearance were all named where one failed."""
+    from bearingload.errors import ConvergenceError
+    from bearingload.models import _ring
+
+    def second_fails(ring, e_hat, m, tol):  # the general-angle chunk: its first case fails
+        raise ConvergenceError(
+            "ring equilibrium at a general cage angle",
+            200,
+            1e-3,
+            {"e_hat": e_hat[:1], "exponent": m[:1], "rows": np.array([0])},
+        )
+
+    monkeypatch.setattr(_ring, "solve_xy", second_fails)
+    with pytest.raises(ConvergenceError) as info:
+        solve(9, [3000.0, 2000.0, 1000.0], 274869.0, 0.012, [0.0, 7.0, 0.0])
+    message = str(info.value)
+    assert "for the case" in message and "load = 2000 N" in message
+    assert "cage_angle = 7 °" in message and "3000" not in message

@@ -518,12 +518,13 @@ def solve_xy(ring: Ring, e_hat: np.ndarray, m: np.ndarray, tol: float) -> tuple[
             _polish(ring, active[fin], _take(trial, fin), (xi, eta), (e_hat, m))
         keep = ~(conv | small)
         active, cur = active[keep], _take(trial, np.nonzero(keep)[0])
-    else:
+    if active.size:  # (a case that converged on the last iteration is done)
+        final = state(ring, active, xi[active], eta[active], e_hat[active], m[active])
         raise ConvergenceError(
             "ring equilibrium at a general cage angle",
             MAX_ITERATIONS,
-            float("nan"),
-            {"e_hat": e_hat[active], "exponent": m[active]},
+            float(np.max(np.hypot(final.gx, final.gy) / final.size)),
+            {"e_hat": e_hat[active], "exponent": m[active], "rows": active},
         )
     final = state(ring, ALL, xi, eta, e_hat, m)
     residual = np.hypot(final.gx, final.gy) / final.size
@@ -634,7 +635,7 @@ def check(
             solver,
             int(iterations[bad].max()),
             float(np.max(np.where(np.isfinite(worst), worst, np.inf))),
-            {"e_hat": e_hat[bad], "exponent": m[bad]},
+            {"e_hat": e_hat[bad], "exponent": m[bad], "rows": np.flatnonzero(bad)},
         )
 
 

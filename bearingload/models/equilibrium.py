@@ -339,24 +339,16 @@ def solve(
     try:
         rows = _solve_groups(z, kind, frac, e_hat, m, tol)
     except ConvergenceError as exc:
-        raise _in_user_terms(exc, e_hat, m, (z, f, kk, g, cage)) from None
+        raise _in_user_terms(exc, (z, f, kk, g, cage, m)) from None
     return _assemble(shape, z, f, kk, g, phi1_deg, m, scale, rows)
 
 
-def _in_user_terms(
-    exc: ConvergenceError, e_hat: np.ndarray, m: np.ndarray, inputs: tuple[np.ndarray, ...]
-) -> ConvergenceError:
-    """The engine's ConvergenceError (its cases named by the scaled clearance e_hat and the
-    exponent) as one naming the inputs of those cases: balls, load, stiffness, clearance, cage
-    angle and exponent."""
-    failing = np.zeros(e_hat.shape, dtype=bool)
-    for e0, m0 in zip(
-        np.ravel(exc.cases.get("e_hat", [])), np.ravel(exc.cases.get("exponent", [])), strict=True
-    ):
-        failing |= (e_hat == e0) & (m == m0)
-    if not failing.any():
-        return exc
-    z, f, kk, g, cage = inputs
+def _in_user_terms(exc: ConvergenceError, inputs: tuple[np.ndarray, ...]) -> ConvergenceError:
+    """The engine's ConvergenceError (its cases named by their index in the call, ``case``) as
+    one naming the inputs of those cases: balls, load, stiffness, clearance, cage angle and
+    exponent."""
+    failing = np.asarray(exc.cases.get("case", []), dtype=np.intp)
+    z, f, kk, g, cage, m = inputs
     cases = {
         "balls": z[failing],
         "load": f[failing],
@@ -365,7 +357,9 @@ def _in_user_terms(
         "cage_angle": cage[failing],
         "exponent": m[failing],
     }
-    units = {"load": "N", "stiffness": "N/mm^m", "clearance": "mm", "cage_angle": "°"}
+    exponents = sorted(set(cases["exponent"].tolist()))
+    stiffness = f"N/mm^{exponents[0]:g}" if len(exponents) == 1 else "N/mm^m"
+    units = {"load": "N", "stiffness": stiffness, "clearance": "mm", "cage_angle": "°"}
     return ConvergenceError(exc.solver, exc.iterations, exc.residual, cases, units=units)
 
 
@@ -459,18 +453,38 @@ def _solve_groups(
         step = max(1, CHUNK_ELEMENTS // max(width, 1))
         for lo in range(int(start), int(end), step):
             part = slice(lo, min(lo + step, int(end)))
-            eh, mm = e_sorted[part], m_sorted[part]
-            if kd == 2:
-                ring = Ring.general(zz, frac_sorted[part], pre)
-                xi, eta, its = _ring.solve_xy(ring, eh, mm, tol)
-                _store(res[part], ring, xi, eta, its, eh, mm, tol)
-            else:
-                ring = Ring.symmetric(zz, kd == 1, pre)
-                xi, its = _ring.solve_x(ring, eh, mm, tol)
-                _store(res[part], ring, xi, None, its, eh, mm, tol)
+            try:
+                _solve_chunk(
+                    res[part], (zz, kd, pre), frac_sorted[part], e_sorted[part], m_sorted[part], tol
+                )
+            except ConvergenceError as exc:  # the failing cases, by their index in the call
+                rows = order[part][np.asarray(exc.cases["rows"], dtype=np.intp)]
+                raise ConvergenceError(
+                    exc.solver, exc.iterations, exc.residual, {"case": rows}
+                ) from None
     rows = np.empty_like(res)
     rows[order] = res  # back to the order of the cases, all columns at once
     return rows
+
+
+def _solve_chunk(
+    out: np.ndarray,
+    group: tuple[int, int, bool],
+    frac: np.ndarray,
+    eh: np.ndarray,
+    mm: np.ndarray,
+    tol: float,
+) -> None:
+    """Solve one chunk of a group (z, cage kind, preload) into its rows ``out``."""
+    zz, kd, pre = group
+    if kd == 2:
+        ring = Ring.general(zz, frac, pre)
+        xi, eta, its = _ring.solve_xy(ring, eh, mm, tol)
+        _store(out, ring, xi, eta, its, eh, mm, tol)
+    else:
+        ring = Ring.symmetric(zz, kd == 1, pre)
+        xi, its = _ring.solve_x(ring, eh, mm, tol)
+        _store(out, ring, xi, None, its, eh, mm, tol)
 
 
 def _store(
