@@ -65,3 +65,42 @@ def test_a_ring_touching_no_ball_at_the_start_is_solved():
         q = np.asarray(r.ball_loads)
         assert np.all(np.isfinite(q)) and q.max() > 0
         assert abs(float(r.axial)) < 1.0 and abs(float(r.tilt_cross)) < 10.0
+
+
+def test_a_case_whose_stiffness_updates_run_out_is_named(monkeypatch):
+    """The error named nobody ('relative residual nan'); it names the failing case's inputs,
+    and only that case of an array."""
+    from bearingload.errors import ConvergenceError
+    from bearingload.models import _core
+
+    real = _core.solve
+
+    def second_fails(*args, **kwargs):
+        out = list(real(*args, **kwargs))
+        if out[4].size == 3:
+            out[4] = out[4].copy()
+            out[4][1] = _core.Status.NOT_CONVERGED
+        return tuple(out)
+
+    monkeypatch.setattr(_core, "solve", second_fails)
+    try:
+        solve_combined(9, [1000.0, 2000.0, 3000.0], 300.0, ball_diameter=7.938, pitch_diameter=38.5)
+    except ConvergenceError as exc:
+        message = str(exc)
+    assert "radial_load = 2000 N" in message and "1000" not in message and "nan" not in message
+
+
+def test_a_cross_moment_an_angular_bearing_cannot_hold_is_refused_with_the_tilt_imposed():
+    import pytest
+
+    from bearingload.errors import InputError
+
+    kw = dict(ball_diameter=7.938, pitch_diameter=38.5, contact_angle=40.0)
+    with pytest.raises(InputError) as info:
+        solve_combined(12, 1000.0, 1.0, misalignment=0.0, moment_cross=500.0, **kw)
+    assert info.value.parameter == "moment_cross"
+    with pytest.raises(InputError) as info:
+        solve_combined(12, 1000.0, 1.0, moment_cross=500.0, **kw)
+    assert info.value.parameter == "moment_cross"
+    r = solve_combined(12, 1000.0, 500.0, misalignment=0.0, moment_cross=500.0, **kw)
+    assert np.all(np.asarray(r.ball_loads) >= 0)

@@ -96,3 +96,13 @@ def test_solve_warns_that_the_loads_do_not_determine_the_tilt():
     assert "Warning: the loads do not determine the ring's tilt" in result.output
     result = CliRunner().invoke(main, ["solve", "6205", "-F", "3kN", "-A", "1kN"])
     assert "do not determine" not in result.output
+
+
+def test_a_symmetric_cage_is_flagged_too():
+    """A cage at 0 holds the cross tilt by symmetry; the tilt in the plane of the load can
+    still be free (4 balls at 15°: -0.398973° or -0.398486° for thrusts 1e-6 apart, no word)."""
+    kw = dict(ball_diameter=9.184, pitch_diameter=34.69, contact_angle=15.0)
+    a = solve_combined(4, 3475.3, 3.4753, **kw)
+    b = solve_combined(4, 3475.3, 3.4753035, **kw)
+    assert bool(a.tilt_undetermined)
+    assert abs(a.tilt - b.tilt) <= 1e-5

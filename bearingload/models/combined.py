@@ -585,8 +585,8 @@ def solve_combined(
             "otherwise no equilibrium exists",
         )
     _check_few_balls(z, cage, fa, mm, mc, misalignment is not None)
-    if angular is not None and misalignment is None:
-        _check_one_sided_moment(z, cage, fa, mm, mc, geo.R_i)
+    if angular is not None:
+        _check_one_sided_moment(z, cage, fa, (mm, mc), geo.R_i, misalignment is not None)
     curve = None
     if k_given is None:
         k_ref, values = _hertz_setup(geo, e, nu)
@@ -611,7 +611,7 @@ def solve_combined(
     if misalignment is not None:  # the moment is then the reaction, not an input
         given["misalignment"] = tilt_deg
     with np.errstate(all="ignore"):
-        vh, vl, kappa, its, end, tangent, undetermined = _equilibrium(problem, geo, curve)
+        vh, vl, kappa, its, end, tangent, undetermined = _equilibrium(problem, geo, curve, given)
         checked = _checked(problem, end, its, given)
         answer = (
             vh + vl,
@@ -623,11 +623,18 @@ def solve_combined(
         return _result(problem, geo, answer, shape, given, misalignment, undetermined)
 
 
-def _equilibrium(p: Problem, geo: _Geometry, curve: _StiffnessCurve | None) -> tuple:
+def _equilibrium(p: Problem, geo: _Geometry, curve: _StiffnessCurve | None, given: dict) -> tuple:
     """Every case solved (:func:`_thrust_retry`), a tilt the loads do not determine taken at
     its least (:func:`_least_norm_tilt`): as :func:`_solve_with_stiffness`, and which cases'
-    tilts are undetermined."""
-    vh, vl, kappa, its, end, tangent = _thrust_retry(p, geo, curve)
+    tilts are undetermined. A case whose stiffness updates run out raises ConvergenceError
+    naming its inputs (``given``)."""
+    try:
+        vh, vl, kappa, its, end, tangent = _thrust_retry(p, geo, curve)
+    except ConvergenceError as exc:
+        rows = np.asarray(exc.cases["rows"])
+        raise ConvergenceError(
+            exc.solver, exc.iterations, exc.residual, _described(given, rows), units=_UNITS
+        ) from None
     vh, vl, end, undetermined = _least_norm_tilt(p, (vh, vl), kappa, end, tangent[1])
     return vh, vl, kappa, its, end, tangent, undetermined
 
@@ -663,7 +670,7 @@ def _least_norm_tilt(
     vh, vl = v
     holding, maybe = held
     undetermined = np.zeros(vh.shape[0], dtype=bool)
-    rows = np.flatnonzero(maybe & np.all(~p.locked[:, 3:], axis=1))
+    rows = np.flatnonzero(maybe & np.any(~p.locked[:, 3:], axis=1))
     if not rows.size:
         return vh, vl, end, undetermined
     free = ~p.locked[rows]
@@ -677,24 +684,44 @@ def _least_norm_tilt(
         dict(zip(rows.tolist(), vec, strict=True)),
     )
     for i in np.flatnonzero(undetermined).tolist():
-        lam_i, vec_i = lam_of[i], vec_of[i]
-        d = vec_i[:, 0] * ~p.locked[i]
-        step = _least_tilt_step(p, i, end, vh[i] + vl[i], d) * d
-        one = np.array([i])
-        sub = p.take(one)
-        wh, wl = vh[one], vl[one]
-        for _ in range(4):  # the move, then Newton steps across the valley (not along it)
-            hi, lo = _ring._two_sum(wh, step[None, :])
-            wh, wl = _ring._fast(hi, lo + wl)
-            moved = _ring.Point.at(sub, kappa[one], _ring.reference(sub, wh, wl))
-            if moved.res[0] <= TOLERANCE:
-                vh[one], vl[one] = wh, wl
-                end.put(one, moved)
+        d = vec_of[i][:, 0] * ~p.locked[i]
+        along = _least_tilt_step(p, i, end, vh[i] + vl[i], d)
+        for fraction in (1.0, 0.5, 0.25):  # (the valley's ends are first-order estimates)
+            if _move_along(p, i, (vh, vl), kappa, end, (lam_of[i], vec_of[i], fraction * along)):
                 break
-            left = np.where(sub.locked[0], 0.0, moved.gen[0] - sub.f[0])
-            across = vec_i[:, 1:]
-            step = -across @ ((across.T @ left) / lam_i[1:])
     return vh, vl, end, undetermined
+
+
+def _move_along(
+    p: Problem,
+    i: int,
+    v: tuple[np.ndarray, np.ndarray],
+    kappa: np.ndarray,
+    end: _ring.Point,
+    valley: tuple[np.ndarray, np.ndarray, float],
+) -> bool:
+    """Case ``i`` moved by ``s`` along the valley's direction (``valley`` = the Hessian's
+    eigenvalues, eigenvectors and ``s``), then by Newton steps across the valley (not along
+    it), in place in ``v`` and ``end``; False (nothing changed) where the equilibrium there is
+    not balanced to the tolerance within 4 steps."""
+    lam, vec, s = valley
+    vh, vl = v
+    one = np.array([i])
+    sub = p.take(one)
+    wh, wl = vh[one], vl[one]
+    step = s * vec[:, 0] * ~p.locked[i]
+    for _ in range(4):
+        hi, lo = _ring._two_sum(wh, step[None, :])
+        wh, wl = _ring._fast(hi, lo + wl)
+        moved = _ring.Point.at(sub, kappa[one], _ring.reference(sub, wh, wl))
+        if moved.res[0] <= TOLERANCE:
+            vh[one], vl[one] = wh, wl
+            end.put(one, moved)
+            return True
+        left = np.where(sub.locked[0], 0.0, moved.gen[0] - sub.f[0])
+        across = vec[:, 1:]
+        step = -across @ ((across.T @ left) / lam[1:])
+    return False
 
 
 def _least_tilt_step(p: Problem, i: int, end: _ring.Point, v: np.ndarray, d: np.ndarray) -> float:
@@ -758,9 +785,16 @@ def _angular(contact_angle: Any, fa: np.ndarray, clearance: Any) -> np.ndarray |
 
 
 def _check_one_sided_moment(
-    z: int, cage: np.ndarray, fa: np.ndarray, mm: np.ndarray, mc: np.ndarray, radius: np.ndarray
+    z: int,
+    cage: np.ndarray,
+    fa: np.ndarray,
+    moments: tuple[np.ndarray, np.ndarray],
+    radius: np.ndarray,
+    imposed: bool,
 ) -> None:
-    """Refuse a moment a single angular-contact bearing cannot hold with its ring free to tilt.
+    """Refuse a moment a single angular-contact bearing cannot hold with its ring free to tilt
+    (``imposed``: the tilt in the plane of the load imposed, its moment a reaction, the cross
+    tilt still free).
 
     Every ball pushes the ring axially one way only, ``Q_j sin(alpha_j) >= 0``, at the arm
     ``R_i (cos phi_j, sin phi_j)``: the thrust and the moments it makes, ``(F_a, M/R_i,
@@ -768,8 +802,14 @@ def _check_one_sided_moment(
     needs ``(M, M_c)/(F_a R_i)`` strictly inside the regular z-gon of the ball positions: on
     every edge, its component along the edge's normal (at ``phi_j + 180°/z``) below
     ``cos(180°/z)``. Outside, the balls on the far side would lift off and nothing holds the
-    tilt.
+    tilt. With the tilt imposed, some reaction M balances any ``M_c`` whose ratio lies strictly
+    within the z-gon's extent across the load line, ``min_j sin phi_j < M_c/(F_a R_i) <
+    max_j sin phi_j``; beyond it the cross tilt is held by nothing.
     """
+    mm, mc = moments
+    if imposed:
+        _check_one_sided_cross(z, cage, fa, mc, radius)
+        return
     tilting = (mm != 0) | (mc != 0)
     if not np.any(tilting):
         return
@@ -782,11 +822,34 @@ def _check_one_sided_moment(
         i = int(np.flatnonzero(bad)[0])
         limit = math.cos(half) * fa[i] * radius[i]
         raise InputError(
-            "moment",
+            "moment" if mm[i] != 0 else "moment_cross",
             f"an angular-contact bearing alone holds a moment only below about F_a R_i "
             f"cos(180°/z) = {limit:.4g} N mm here (F_a = {fa[i]:.4g} N, R_i = "
             f"{radius[i]:.4g} mm): its balls push the ring one way only, the far ones would "
             "lift off; raise the axial load or impose the tilt (misalignment)",
+        )
+
+
+def _check_one_sided_cross(
+    z: int, cage: np.ndarray, fa: np.ndarray, mc: np.ndarray, radius: np.ndarray
+) -> None:
+    """Refuse a moment across the load line that a single angular-contact bearing with its tilt
+    imposed cannot hold (:func:`_check_one_sided_moment`)."""
+    if not np.any(mc):
+        return
+    sines = np.sin(np.deg2rad(cage)[:, None] + 2.0 * math.pi * np.arange(z) / z)
+    with np.errstate(divide="ignore", invalid="ignore"):
+        ratio = mc / (fa * radius)
+        bad = (mc != 0) & ~((ratio < sines.max(axis=1)) & (ratio > sines.min(axis=1)))
+    if np.any(bad):
+        i = int(np.flatnonzero(bad)[0])
+        limit = float(np.max(np.abs(sines[i]))) * fa[i] * radius[i]
+        raise InputError(
+            "moment_cross",
+            f"with the tilt imposed, an angular-contact bearing alone holds a moment across the "
+            f"load line only below about {limit:.4g} N mm here (F_a = {fa[i]:.4g} N, R_i = "
+            f"{radius[i]:.4g} mm): its balls push the ring one way only, nothing holds the "
+            "cross tilt beyond; raise the axial load",
         )
 
 
@@ -1039,12 +1102,10 @@ def _light_start(
         f_ref=f_ref, k_ref=p.k_ref[rows], one_sided=p.one_sided[rows],
     )  # fmt: skip
     own = None if curve is None else _StiffnessCurve(curve.values[rows])
-    try:
-        vh, vl, *_ = _solve_with_stiffness(heavy, sub, own)
-    except ConvergenceError:  # (a start only: the standard one stays)
-        return rows[:0], np.zeros((0, 5))
+    vh, vl, *_, failed = _solve_with_stiffness(heavy, sub, own, strict=False)
     v = (vh + vl) * (heavy.scale / p.scale[rows])[:, None]
-    return rows, np.where(p.locked[rows], 0.0, v)
+    kept = ~failed  # (a start only: where the heavier case fails, the standard one stays)
+    return rows[kept], np.where(p.locked[rows], 0.0, v)[kept]
 
 
 #: An angular-contact case under F_r and a thrust F_a below THRUST_RATIO F_r whose first
@@ -1231,14 +1292,21 @@ class _StiffnessCurve:
 
 
 def _solve_with_stiffness(
-    p: Problem, geo: _Geometry, curve: _StiffnessCurve | None, v0: np.ndarray | None = None
+    p: Problem,
+    geo: _Geometry,
+    curve: _StiffnessCurve | None,
+    v0: np.ndarray | None = None,
+    strict: bool = True,
 ) -> tuple[Any, ...]:
     """Minimise with frozen ball stiffnesses, update them to the contact angles, repeat until
     the update leaves the equilibrium (to the tolerance), each case in the compiled core
     (:mod:`bearingload.models._core`). Returns (v_hi, v_lo, kappa, iterations, the point there:
     the balls at the position, the loads with kappa; the tangent of the ring forces there and
-    the Hessian of the balls that hold the ring, scaled, (n, 5, 5) each). ``v0``: the start (scaled units of
-    ``p``); default the core's standard start, light angular-contact cases :func:`_light_start`."""
+    the Hessian of the balls that hold the ring, scaled, (n, 5, 5) each). ``v0``: the start
+    (scaled units of ``p``); default the core's standard start, light angular-contact cases
+    :func:`_light_start`. ``strict``: a case whose stiffness updates ran out raises
+    ConvergenceError naming its row (``rows``); else the cases that failed (n,) bool come last,
+    each case's fate its own."""
     from bearingload.models import _core
 
     n = p.f.shape[0]
@@ -1260,14 +1328,20 @@ def _solve_with_stiffness(
         np.ascontiguousarray(start0, dtype=float), given,
         max_iterations=_ring.MAX_ITERATIONS, first_stage_steps=_ring.FIRST_STAGE_STEPS,
     )  # fmt: skip
-    if np.any(status != _core.Status.OK):
-        raise ConvergenceError(
-            "combined-load ball stiffness update", MAX_STIFFNESS_UPDATES, math.nan, {}
-        )
     balls, gen, size, res = at
+    failed = status != _core.Status.OK
+    if strict and np.any(failed):  # the cases by their rows: the caller names their inputs
+        raise ConvergenceError(
+            "combined-load ball stiffness update",
+            MAX_STIFFNESS_UPDATES,
+            float(np.max(res[failed])),
+            {"rows": np.flatnonzero(failed)},
+        )
     q0 = np.where(p.deviation, p.pre * np.sqrt(p.pre), 0.0)
     loads = _ring.Loads(*balls[5:], q0)  # type: ignore[call-arg]
     point = _ring.Point(_ring.Balls(*balls[:5]), loads, gen, size, res, np.zeros(n, np.int64))
+    if not strict:
+        return vh, vl, kappa, total, point, (tangent, holding), failed
     return vh, vl, kappa, total, point, (tangent, holding)
 
 

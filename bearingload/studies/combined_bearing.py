@@ -197,8 +197,8 @@ def _combined_case(
 TILT_UNDETERMINED = (
     "the loads do not determine the ring's tilt: a range of tilts balances them (the balls that "
     "carry load leave one tilt free, as with a few balls of an angular-contact bearing under a "
-    "light thrust); the least tilt of the range is given, and the ball loads are the same at "
-    "every tilt of it"
+    "light thrust); the tilt given is the least of the range (where the solver could not reach "
+    "it, one tilt of the range), and the ball loads are the same at every tilt of it"
 )
 
 #: The warning on a ball whose loaded inner contact sits on the groove's side at speed: what
