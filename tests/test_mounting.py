@@ -227,3 +227,14 @@ def test_batch_takes_the_mounting_columns_by_the_same_names(tmp_path):
     assert row["clearance"] == 0.0205
     assert row["operating_clearance"] == pytest.approx(b.clearance, rel=1e-9)
     assert "shaft_fit: unknown ISO 286 class 'k9'; allowed: j5" in out.stderr
+
+
+def test_the_library_takes_ring_temperatures_as_text():
+    """The library's temperatures as text ('70C') were checked but the raw text was used:
+    TypeError. They are read with their unit, as the command line reads them."""
+    from bearingload.bearings.resolve import resolve_bearing
+
+    temps = {"inner_ring_temperature": "70C", "outer_ring_temperature": "50"}
+    text = resolve_bearing("6205", shaft_fit="k5", **temps)
+    temps = {"inner_ring_temperature": 70.0, "outer_ring_temperature": 50.0}
+    assert text == resolve_bearing("6205", shaft_fit="k5", **temps)

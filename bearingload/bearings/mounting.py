@@ -170,10 +170,11 @@ def thermal_reduction(inner: float, outer: float, raceway: float) -> float:
     return STEEL_EXPANSION * (inner - outer) * raceway
 
 
-def check_mounting(m: Mounting) -> None:
+def check_mounting(m: Mounting) -> Mounting:
     """Refuse what no bearing can be mounted with: a fit class not taken, one ring
     temperature without the other, a temperature outside -60 to 250 °C, a bore or diameter
-    that is not a positive length, or given without its fit.
+    that is not a positive length, or given without its fit. Returns the mounting with its
+    temperatures as numbers [°C] (a library caller may give them as text: "70C").
 
     Raises
     ------
@@ -196,14 +197,17 @@ def check_mounting(m: Mounting) -> None:
             raise InputError(wall, f"it changes what the {fit.replace('_', ' ')} takes; without "
                              "one (a loose seat) it would be ignored")  # fmt: skip
     temps = ("inner_ring_temperature", "outer_ring_temperature")
-    for name in temps:
-        if getattr(m, name) is not None:
-            parse_temperature(getattr(m, name), parameter=name)
+    parsed = {
+        name: float(parse_temperature(getattr(m, name), parameter=name))
+        for name in temps
+        if getattr(m, name) is not None
+    }
     given = [n for n in temps if getattr(m, n) is not None]
     if len(given) == 1:
         other = temps[1 - temps.index(given[0])]
         raise InputError(other, "missing: the clearance changes with the difference of the "
                          "rings' temperatures, so give the inner and the outer one together")  # fmt: skip
+    return dataclasses.replace(m, **parsed)  # type: ignore[arg-type]
 
 
 def _geometry(b: Any) -> tuple[float, float, float, float]:
@@ -237,7 +241,7 @@ def mounted_clearance(b: Any, m: Mounting, clearance: float, pick: str) -> Mount
     """The operating clearance of bearing ``b`` (a :class:`bearingload.bearings.resolved.
     ResolvedBearing`) mounted as ``m`` from its unmounted ``clearance`` [mm] at ``pick``
     (min, mean, max). See the module for the formulas and sources."""
-    check_mounting(m)
+    m = check_mounting(m)
     d, D, F, E = _geometry(b)
     if m.shaft_bore is not None and not m.shaft_bore < d:
         raise InputError("shaft_bore", f"must be less than the bearing's bore d = {d:g} mm")

@@ -144,10 +144,10 @@ def resolve_bearing(
     _check_inputs(modulus, stiffness, ball_diameter, pitch_diameter, poisson, clearance_pick)
     mounting = Mounting(shaft_fit, housing_fit, shaft_bore, housing_diameter,
                         inner_ring_temperature, outer_ring_temperature)  # fmt: skip
-    check_mounting(mounting)
+    mounting = check_mounting(mounting)
     spec = clearance if isinstance(clearance, ClearanceSpec) else parse_clearance(clearance)
     if designation is not None and _is_roller(designation):
-        if ball_material is not None:
+        if ball_material is not None and str(ball_material).strip().lower() != "steel":
             raise InputError("ball_material", "a hybrid bearing is modelled for ball bearings "
                              "only: the roller contact is Palmgren's steel-on-steel law")  # fmt: skip
         return mount(_roller(designation, maker, balls, ball_diameter, pitch_diameter, modulus,
