@@ -64,3 +64,16 @@ def drawn(monkeypatch) -> list:
 
     monkeypatch.setattr(Figure, "savefig", recording)
     return figures
+
+
+def error_line(capsys, *args: str) -> str:
+    """The one ``Error:`` line of a refused command line (exit 2, nothing on stdout)."""
+    code, out, err = run_entry(capsys, *args)
+    lines = err.strip().splitlines()
+    assert code == 2 and out == "" and len(lines) == 1 and lines[0].startswith("Error:"), err
+    return lines[0]
+
+
+def warnings_of(err: str) -> list[str]:
+    """The ``Warning:`` lines of a command's stderr, without the prefix."""
+    return [w.removeprefix("Warning: ") for w in err.splitlines() if w.startswith("Warning:")]

@@ -273,3 +273,36 @@ def test_implausible_revolutions_are_refused_with_the_likely_unit(capsys):
     assert allowable[3] == pytest.approx(14000 / 0.1 ** (1 / 3))
     code, _, err = run_entry(capsys, *base, "--revolutions", "1e303Mrev")
     assert code == 2 and re.search(r"'1e303Mrev' overflows", err), err
+
+
+@pytest.mark.parametrize(
+    ("text", "rpm"),
+    [
+        ("3000RPM", 3000.0),
+        ("3000Rpm", 3000.0),
+        ("3000 R/MIN", 3000.0),
+        ("3000 1/MIN", 3000.0),
+        ("50hz", 3000.0),
+        ("50HZ", 3000.0),
+        ("100RAD/S", 3000.0 / math.pi),
+        ("50 1/S", 3000.0),
+    ],
+)
+def test_speed_units_are_read_in_any_case(text, rpm):
+    """--speed 3000RPM was refused (only lowercase rpm): speed unit names are read whatever
+    their case (none differs from another only in case)."""
+    from bearingload.units import parse_quantity
+
+    assert parse_quantity(text, "speed", parameter="speed") == pytest.approx(rpm, rel=1e-15)
+
+
+def test_speed_in_capitals_on_the_command_line_other_units_keep_their_case(capsys):
+    code, out, err = run_entry(capsys, "solve", "6205", "-F", "1kN", "--speed", "3000RPM")
+    assert code == 0 and "shaft speed n" in out, err
+    from bearingload.units import parse_quantity
+
+    # lengths and forces stay case-sensitive: mm vs Mm, mN vs MN must not become one unit
+    for text, kind in (("20UM", "length"), ("1KN", "force"), ("1MM", "length")):
+        with pytest.raises(InputError):
+            parse_quantity(text, kind)
+    assert parse_quantity("1kN", "force") == 1000.0
