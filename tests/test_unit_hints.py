@@ -306,3 +306,39 @@ def test_speed_in_capitals_on_the_command_line_other_units_keep_their_case(capsy
         with pytest.raises(InputError):
             parse_quantity(text, kind)
     assert parse_quantity("1kN", "force") == 1000.0
+
+
+@pytest.mark.parametrize(
+    ("option", "given", "meant"),
+    [
+        ("-F", "3KN", "3kN"),
+        ("-F", "3kn", "3kN"),
+        ("-F", "300kg", "300kgf"),
+        ("-F", "3000lb", "3000lbf"),
+        ("--moment", "5N.m", "5N*m"),
+        ("--clearance", "20UM", "20um"),
+    ],
+)
+def test_a_misspelt_unit_is_refused_with_the_unit_meant(capsys, option, given, meant):
+    """3KN, 3kn, 300kg, 3000lb, 5N.m were refused with the list of units alone: the one Error
+    line names the unit meant (never reads it: a kilogram is no force, and mm and Mm differ),
+    and the spelling suggested is accepted."""
+    base = ["solve", "6205", "-F", "3kN"]
+    code, out, err = run_entry(capsys, *base, option, given)
+    assert code == 2 and out == "" and err.count("\n") == 1, err
+    assert f"did you mean {meant}?" in err, err
+    assert run_entry(capsys, *base, option, meant)[0] == 0
+
+
+def test_a_temperature_in_fahrenheit_is_refused_with_its_celsius(capsys):
+    """--temperature 160F said only what is allowed: it names 71.11C, (160 - 32)/1.8 °C."""
+    oil = ("solve", "6205", "-F", "3kN", "--speed", "3000", "--oil", "VG68", "--temperature")
+    code, _, err = run_entry(capsys, *oil, "160F")
+    assert code == 2 and "did you mean 71.11C (160 °F)?" in err, err
+    assert run_entry(capsys, *oil, "71.11C")[0] == 0
+
+
+def test_a_unit_of_no_likeness_gets_no_suggestion():
+    with pytest.raises(InputError) as exc:
+        parse_quantity("3parsec", "force", parameter="load")
+    assert "did you mean" not in exc.value.message and "allowed: N, kN" in exc.value.message
