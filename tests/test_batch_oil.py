@@ -236,8 +236,9 @@ def test_an_oil_without_speed_or_bearing_is_refused_naming_its_column():
     out = _run("batch", "-", "--format", "csv", text=text)
     assert out.exit_code == 1
     errors = out.stderr.splitlines()
-    assert errors[0] == ("Warning: row 2: viscosity_40: needs the shaft speed (a speed cell) for "
-                         "the rated viscosity nu_1")  # fmt: skip
+    assert errors[0] == (
+        "Warning: row 2: viscosity_40: needs the shaft speed ('speed') for the rated viscosity nu_1"
+    )
     assert errors[1] == "Warning: row 3: speed: needs a bearing or a ball geometry"
     assert [r["row"] for r in csv.DictReader(io.StringIO(out.stdout))] == ["4"]
     assert _run("solve", "6205", "-F", "1kN", "--viscosity-40", "68", "--temperature",

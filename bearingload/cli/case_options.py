@@ -691,6 +691,11 @@ class CaseOptions:
             raise click.UsageError(f"{head} {names}: {why}") from exc
         except InputError as exc:
             raise usage_error(exc) from exc
+        given = next((n for n in OIL_PARAMS if oil[n] is not None), None)
+        if given is not None and self.speed is None:  # name the option typed, not --viscosity
+            from bearingload.bearings.lubrication import speed_needed
+
+            raise usage_error(speed_needed(given))
         return nu, None if note is None else option_message(note)
 
     def dynamics_arguments(self) -> dict[str, Any]:
