@@ -388,9 +388,8 @@ def _example(kind: str) -> str:
     return (examples | more).get(kind, "208GPa")
 
 
-_STIFFNESS_UNIT = re.compile(
-    r"^(?P<force>[A-Za-z]+)/(?P<length>[A-Za-zµμ]+)\^\(?(?P<num>\d+(?:\.\d*)?)(?:/(?P<den>\d+))?\)?$"
-)
+#: A stiffness unit F/L^e (a pattern text, compiled at its first use: most runs type none).
+_STIFFNESS_UNIT = r"^(?P<force>[A-Za-z]+)/(?P<length>[A-Za-zµμ]+)\^\(?(?P<num>\d+(?:\.\d*)?)(?:/(?P<den>\d+))?\)?$"
 
 
 def stiffness_factor(unit: str, exponent: float | None, *, parameter: str = "stiffness") -> float:
@@ -407,7 +406,7 @@ def stiffness_factor(unit: str, exponent: float | None, *, parameter: str = "sti
     """
     from bearingload.errors import InputError
 
-    match = _STIFFNESS_UNIT.match(_canonical(unit))
+    match = re.match(_STIFFNESS_UNIT, _canonical(unit))
     forces, lengths = UNITS["force"], UNITS["length"]
     if match is None or match["force"] not in forces or match["length"] not in lengths:
         raise InputError(
