@@ -169,6 +169,13 @@ CASE_FREE_KINDS = frozenset({"speed"})
 _NUMBER = re.compile(r"^\s*([+-]?(?:\d+\.?\d*|\.\d+)(?:[eE][+-]?\d+)?)\s*(.*?)\s*$")
 
 
+def is_bare(text: object) -> bool:
+    """True when ``text`` is a number written without a unit (``3``, ``3e3``), which is read in
+    the package's unit of its kind (:data:`BASE_UNIT`)."""
+    match = _NUMBER.match(str(text))
+    return match is not None and match.group(2) == ""
+
+
 def _canonical(unit: str) -> str:
     return unit.replace(" ", "").replace("**", "^").replace("(3/2)", "3/2")
 

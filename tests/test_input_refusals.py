@@ -167,8 +167,8 @@ def test_combined_inputs_beyond_the_numbers_are_one_error_line(args, message):
     [
         (("-F", "0", "-A", "1e-9N"), "--axial-load"),
         (("-F", "1e-9N", "-A", "0"), "--load"),
-        (("-F", "0", "--moment", "1e-9"), "--moment"),
-        (("-F", "0", "--moment-cross", "1e-9"), "--moment-cross"),
+        (("-F", "0", "--moment", "1e-9Nmm"), "--moment"),
+        (("-F", "0", "--moment-cross", "1e-9Nmm"), "--moment-cross"),
         (("-F", "2e-9N", "-A", "1e-9N"), "--load"),
     ],
 )

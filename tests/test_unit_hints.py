@@ -342,3 +342,41 @@ def test_a_unit_of_no_likeness_gets_no_suggestion():
     with pytest.raises(InputError) as exc:
         parse_quantity("3parsec", "force", parameter="load")
     assert "did you mean" not in exc.value.message and "allowed: N, kN" in exc.value.message
+
+
+@pytest.mark.parametrize(
+    ("args", "option", "meant"),
+    [
+        (("-F", "3000", "--moment", "5"), "--moment", "5Nm"),
+        (("-F", "3"), "--load", "3kN"),
+        (("-F", "3000", "-K", "4700"), "--stiffness", "4700kgf/mm^1.5"),
+    ],
+)
+def test_a_bare_number_implausible_for_the_bearing_names_its_unit(capsys, args, option, meant):
+    """Bare numbers that pass every fixed range were used as typed: solve 6205 -F 3000 --moment
+    5 as 5 N mm, -F 3 as 3 N (a hint about the clearance followed), -K 4700 replaced the 6205's
+    Hertz stiffness 274 869 N/mm^1.5 without a word. Judged against the bearing (C0 = 7850 N,
+    C0 d_m/2, its Hertz stiffness: bearings.plausible) they are refused naming the unit meant;
+    the number with its unit written is used as it is, and the unit suggested is accepted."""
+    from .cli_helpers import error_line
+
+    line = error_line(capsys, "solve", "6205", *args)
+    assert line.startswith(f"Error: Invalid value for '{option}': a bare "), line
+    assert f"did you mean {meant}?" in line, line
+    bare = args[-1]
+    base = {"--moment": "Nmm", "--load": "N", "--stiffness": "N/mm^1.5"}[option]
+    for written in (f"{bare}{base}", meant):
+        fixed = [*args[:-1], written]
+        assert run_entry(capsys, "solve", "6205", *fixed)[0] == 0, written
+    assert "274869" in line or option != "--stiffness"
+
+
+def test_bare_numbers_in_the_bearing_range_and_rings_by_hand_are_used():
+    """Plausible bare numbers pass, a ring by hand has no scale to judge by, and 0 is no load."""
+    for args in (
+        ["6205", "-F", "3000", "--moment", "5000"],
+        ["6205", "-F", "8", "-A", "0"],
+        ["6205", "-F", "3000", "-K", "274869"],
+        ["-z", "8", "-F", "3", "-K", "4700"],
+    ):
+        assert invoke("solve", *args).exit_code == 0, args

@@ -26,6 +26,7 @@ from typing import Any
 import click
 
 from bearingload.cli.options import (
+    BARE,
     CageAngle,
     Exponent,
     LibraryArgument,
@@ -556,6 +557,7 @@ class CaseOptions:
     roughness: float | None = None
     pressure_viscosity: float | None = None
     given: frozenset[str] = frozenset()
+    bare: frozenset[str] = frozenset()  # options typed as a bare number (no unit)
 
     @classmethod
     def of(cls, values: dict[str, Any]) -> CaseOptions:
@@ -571,7 +573,8 @@ class CaseOptions:
         values = {k: v for k, v in values.items() if v is not None}
         if "exponent" not in given:
             values.pop("exponent", None)
-        return cls(**values, given=given)
+        bare = frozenset(ctx.meta.get(BARE, ())) if ctx is not None else frozenset()
+        return cls(**values, given=given, bare=bare)
 
     @property
     def radial_load(self) -> float:
