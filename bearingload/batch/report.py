@@ -22,6 +22,7 @@ from bearingload.bearings.oil import OIL_INPUTS
 from bearingload.reports.quantities import SERVICE_KEYS, units
 from bearingload.reports.render import Column, Table, csv_block, csv_header, render
 from bearingload.reports.solve import INPUT_KEYS, REPORT_KEYS, column
+from bearingload.studies.combined_bearing import MATRIX_KEYS
 
 #: The most rows json, markdown and table hold in memory (csv is streamed without a limit).
 MAX_HELD_ROWS = 100_000
@@ -45,7 +46,7 @@ _BEARING_ONLY = (
 _COMBINED_IF_GIVEN = ("moment_cross", "contact_angle")
 #: The output columns of a combined-load file (those of ``solve --format csv`` with an axial
 #: load), after the row number.
-COMBINED_KEYS = (
+COMBINED_KEYS: tuple[str, ...] = (
     "bearing", "method", "balls", "load", "axial_load", "moment", "moment_cross",
     "misalignment", "contact_angle", "tilt_radius", "rotating", "stiffness", "clearance",
     "clearance_pick", "cage_angle", "q_max", "loaded_balls", "p_max_inner", "p_max_outer",
@@ -55,6 +56,8 @@ COMBINED_KEYS = (
     "reference_rating_life_hours", "dynamic_rating", "equivalent_load", "rating_life",
     "rating_life_hours", *SERVICE_KEYS[:1], "ball_density", *SERVICE_KEYS[1:],
 )  # fmt: skip
+#: ... then the entries of the 5x5 tangent stiffness matrix, as solve's csv writes them.
+COMBINED_KEYS += MATRIX_KEYS
 #: What the rows of a combined-load file carry beyond the columns, as solve's json names it:
 #: the model (the ball dynamics added at a speed) and each ball's inner and outer contact angle
 #: [°] and load [N] (json only; null for a radial row, whose model is the radial engine's).

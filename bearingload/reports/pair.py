@@ -30,7 +30,7 @@ from bearingload.reports.solve import (
     with_service,
 )
 from bearingload.studies.bearing_pair import ARRANGEMENT_NAMES, PairCase, pair_service_values
-from bearingload.studies.combined_bearing import combined_values
+from bearingload.studies.combined_bearing import MATRIX_KEYS, combined_values
 
 #: The pair's inputs (every row of the csv, the JSON case).
 PAIR_INPUTS = ("bearing", "arrangement", "balls", "load", "axial_load", "moment", "moment_cross",
@@ -139,7 +139,11 @@ def pair_records(
     of :func:`pair_report` and ``batch`` show them; ``service``: each bearing's service values
     (:class:`bearingload.bearings.service_life.ServiceLife`)."""
     pair = pair_record(c) | pair_service_values(c, service)
-    records = with_service([combined_values(b) for b in c.bearings], service)
+    # each bearing's record without its own matrix (the pair's is the shaft's: json, terminal)
+    singles = [
+        {k: v for k, v in combined_values(b).items() if k not in MATRIX_KEYS} for b in c.bearings
+    ]
+    records = with_service(singles, service)
     for k in range(2):
         if c.result.unloaded[k]:  # no loaded ball: no largest angle of one
             records[k]["contact_angle_max"] = None
@@ -171,7 +175,11 @@ def pair_report(
     speed_note = _speed_model(c, pair)[0]
     notes = [*NOTES, *([speed_note] if speed_note else [])]
     notes += [MODIFIED_NOTE] if any(k.startswith("modified_") for k in pair) else []
-    tables += [Table(_title(pair), columns, rows, notes + service_notes(service)), _balls_table(c)]
+    from bearingload.reports.combined import matrix_table
+
+    summary = Table(_title(pair), columns, rows, notes + service_notes(service))
+    shaft = matrix_table(c.result.stiffness_matrix, "tangent stiffness matrix of the shaft")
+    tables += [summary, shaft, _balls_table(c)]
     return render(tables, fmt)
 
 

@@ -433,6 +433,31 @@ def angular_equivalent_load(b: ResolvedBearing, fr: Any, fa: Any, f0: float | No
     return np.asarray(equivalent_load_angular_contact(fr, fa, alpha, b.C0, f0), dtype=float)
 
 
+#: The 5x5 tangent stiffness matrix of a combined-load case (json ``stiffness_matrix``, a list of
+#: rows): its rows, the forces and moments (name, unit), and its columns, the displacements and
+#: tilts (name, unit); entry i, j is d(row i)/d(column j).
+MATRIX_ROWS = (("F_x", "N"), ("F_y", "N"), ("F_a", "N"), ("M", "N mm"), ("M_c", "N mm"))
+MATRIX_COLUMNS = (("x", "mm"), ("y", "mm"), ("axial", "mm"), ("tilt", "rad"), ("tilt_cross", "rad"))
+
+
+def matrix_key(i: int, j: int) -> str:
+    """The csv column of entry (i, j) of ``stiffness_matrix`` (0-based, as json indexes it):
+    ``stiffness_matrix_23`` is json's ``stiffness_matrix[1][2]``, dF_y/d(axial)."""
+    return f"stiffness_matrix_{i + 1}{j + 1}"
+
+
+MATRIX_KEYS = tuple(
+    matrix_key(i, j) for i in range(len(MATRIX_ROWS)) for j in range(len(MATRIX_COLUMNS))
+)
+
+
+def matrix_columns(r: Any) -> dict[str, Any]:
+    """The entries of the cases' ``stiffness_matrix`` under :data:`MATRIX_KEYS`, each an array
+    over the cases (csv's and batch's columns; json keeps the matrix whole)."""
+    m = np.asarray(r.stiffness_matrix, dtype=float).reshape(-1, 5, 5)
+    return {matrix_key(i, j): m[:, i, j] for i in range(5) for j in range(5)}
+
+
 def combined_values(c: CombinedCase) -> dict[str, Any]:
     """Every quantity of one case under its key of :mod:`bearingload.reports.quantities`."""
     return {k: v if v is None or isinstance(v, str) else
@@ -461,16 +486,22 @@ def combined_columns(c: CombinedCase) -> dict[str, Any]:
         values = columns[key]
         if values is not None and np.isnan(values).any():
             columns[key] = listed(values)
-    return columns | {
-        "p_max_inner": listed(c.p_max_inner),
-        "p_max_outer": listed(c.p_max_outer),
-        "static_equivalent_load": listed(sel)
-        if sel is None or (isinstance(sel, list) and None in sel)
-        else np.broadcast_to(np.asarray(sel, float), (n,)),
-        "static_safety": listed(c.static_safety),
-        **_density(c.result, n),
-        "warnings": [c.warnings] if n == 1 and np.ndim(c.result.q_max) == 0 else list(c.warnings),
-    }
+    return (
+        columns
+        | matrix_columns(c.result)
+        | {
+            "p_max_inner": listed(c.p_max_inner),
+            "p_max_outer": listed(c.p_max_outer),
+            "static_equivalent_load": listed(sel)
+            if sel is None or (isinstance(sel, list) and None in sel)
+            else np.broadcast_to(np.asarray(sel, float), (n,)),
+            "static_safety": listed(c.static_safety),
+            **_density(c.result, n),
+            "warnings": [c.warnings]
+            if n == 1 and np.ndim(c.result.q_max) == 0
+            else list(c.warnings),
+        }
+    )
 
 
 def _density(r: CombinedDistribution, n: int) -> dict[str, Any]:
