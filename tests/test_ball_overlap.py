@@ -75,4 +75,6 @@ def test_overlapping_balls_refused_by_the_library_and_batch(capsys, tmp_path):
     path.write_text("balls,ball_diameter,pitch_diameter,load\n9,30,38.5,1000\n9,12,38.5,1000\n")
     code, out, err = run_entry(capsys, "batch", str(path), "--format", "csv")
     assert "row 2: ball_diameter: 9 balls of 30 mm overlap" in err and code == 1, err
-    assert len(out.strip().splitlines()) == 2  # header and the good row
+    lines = out.strip().splitlines()  # header, the skipped row with its reason, the good row
+    assert len(lines) == 3 and lines[1].startswith("2,") and "overlap" in lines[1]
+    assert lines[2].startswith("3,") and lines[2].endswith(",")

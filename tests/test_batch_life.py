@@ -12,7 +12,7 @@ from click.testing import CliRunner
 
 from bearingload.cli import main
 
-from .cli_helpers import besides_tilt
+from .cli_helpers import SolvedRows, besides_tilt
 
 #: (batch cells, solve options) of one case each: radial and combined rows, each with another
 #: subset of the life columns, units in the cells, a roller bearing, kappa above 4 and below 0.1.
@@ -62,7 +62,9 @@ def _file(cases: list[dict[str, str]], every_column: bool = False) -> str:
 
 
 def _batch(text: str, *args: str):
-    return CliRunner().invoke(main, ["batch", "-", *args], input=text, catch_exceptions=False)
+    return SolvedRows(
+        CliRunner().invoke(main, ["batch", "-", *args], input=text, catch_exceptions=False)
+    )
 
 
 def _rows(text: str) -> list[dict[str, str]]:

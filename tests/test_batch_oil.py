@@ -23,7 +23,7 @@ from bearingload.cli.case_options import OIL_PARAMS
 from bearingload.errors import InputError
 from bearingload.units import parse_temperature
 
-from .cli_helpers import run_entry
+from .cli_helpers import SolvedRows, run_entry
 
 #: (batch cells, solve options) of one case each: the oil by grade or nu_40, nu_100 given or
 #: from the VI (given or the default 95), temperatures in °C and K, units in the cells, a
@@ -79,7 +79,7 @@ def _file(cases: list[dict[str, str]], combined: bool) -> str:
 
 
 def _run(*args: str, text: str | None = None):
-    return CliRunner().invoke(main, list(args), input=text, catch_exceptions=False)
+    return SolvedRows(CliRunner().invoke(main, list(args), input=text, catch_exceptions=False))
 
 
 def _json(text: str) -> dict:

@@ -15,7 +15,7 @@ from click.testing import CliRunner
 
 from bearingload.cli import main
 
-from .cli_helpers import besides_tilt
+from .cli_helpers import SolvedRows, besides_tilt
 
 #: (batch cells, solve options): the dynamics with the lives in hours, reliability, a_ISO
 #: (viscosity, roughness), an oil at a temperature, ceramic balls, the static pair at a speed
@@ -58,7 +58,9 @@ def _file(cases: list[dict[str, str]], head: tuple[str, ...] = HEAD) -> str:
 
 
 def _batch(text: str, *args: str):
-    return CliRunner().invoke(main, ["batch", "-", *args], input=text, catch_exceptions=False)
+    return SolvedRows(
+        CliRunner().invoke(main, ["batch", "-", *args], input=text, catch_exceptions=False)
+    )
 
 
 def _solve(options: list[str], fmt: str) -> str:

@@ -159,6 +159,28 @@ def csv_rows(columns: Sequence[Column], rows: Sequence[int], values: dict[str, A
     return csv_block(columns, {"row": rows} | row_values(columns, len(rows), values))
 
 
+#: The last csv column: why a row was skipped (blank where it was solved); json lists the
+#: skipped rows under ``skipped``, table and markdown in the notes.
+SKIPPED = Column("skipped", "skipped: the reason", "", None, "left")
+
+
+def csv_chunk(
+    columns: Sequence[Column],
+    rows: Sequence[int],
+    values: dict[str, Any],
+    skipped: Sequence[tuple[int, str]],
+) -> str:
+    """The csv lines of one chunk in row order (``columns`` ending with :data:`SKIPPED`): each
+    solved row, and each skipped row with its number and its reason, its other cells blank."""
+    solved = csv_rows(columns, rows, values).splitlines(keepends=True) if len(rows) else []
+    numbers = [r for r, _ in skipped]
+    blank: dict[str, list[Any]] = {c.key: [None] * len(skipped) for c in columns}
+    blank |= {"row": numbers, "skipped": [m for _, m in skipped]}
+    refused = csv_block(columns, blank).splitlines(keepends=True) if skipped else []
+    lines = list(zip(rows, solved, strict=True)) + list(zip(numbers, refused, strict=True))
+    return "".join(line for _, line in sorted(lines, key=lambda pair: pair[0]))
+
+
 def row_values(columns: Sequence[Column], n: int, values: dict[str, Any]) -> dict[str, Any]:
     """The values of ``columns`` but the row number, blank (None) where the rows have none."""
     return {c.key: values.get(c.key, [None] * n) for c in columns if c.key != "row"}
