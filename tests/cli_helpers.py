@@ -99,21 +99,27 @@ def solved_csv(text: str) -> str:
     return "".join([head, *(row[:-1] + "\n" for row in rows if row.endswith(","))])
 
 
+def without_count(err: str) -> str:
+    """A batch run's stderr without its closing line (the rows solved and skipped, the
+    warnings)."""
+    import re
+
+    lines = err.splitlines(keepends=True)
+    if lines and re.match(r"\d+ of \d+ rows solved, ", lines[-1]):
+        lines = lines[:-1]
+    return "".join(lines)
+
+
 class SolvedRows:
     """A ``batch`` run as the tests of its solved rows read it: a csv without its skipped rows
     and without its last column (``skipped``), stderr without its closing count line. What
     those hold is tested apart (tests/test_batch_skipped.py)."""
 
     def __init__(self, result) -> None:
-        import re
-
         self.result = result
         self.exit_code = result.exit_code
         self.stdout = solved_csv(result.stdout)
-        err = result.stderr.splitlines(keepends=True)
-        if err and re.match(r"\d+ of \d+ rows solved, ", err[-1]):
-            err = err[:-1]
-        self.stderr = "".join(err)
+        self.stderr = without_count(result.stderr)
         self.output = self.stdout + self.stderr
 
     def __getattr__(self, name: str):
