@@ -22,7 +22,7 @@ from bearingload.bearings.oil import OIL_INPUTS
 from bearingload.reports.quantities import SERVICE_KEYS, units
 from bearingload.reports.render import Column, Table, csv_block, csv_header, render
 from bearingload.reports.solve import INPUT_KEYS, REPORT_KEYS, column
-from bearingload.studies.combined_bearing import MATRIX_KEYS
+from bearingload.studies.matrix import MATRIX_KEYS
 
 #: The most rows json, markdown and table hold in memory (csv is streamed without a limit).
 MAX_HELD_ROWS = 100_000

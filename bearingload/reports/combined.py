@@ -32,13 +32,8 @@ from bearingload.reports.solve import (
     set_note,
     with_service,
 )
-from bearingload.studies.combined_bearing import (
-    MATRIX_COLUMNS,
-    MATRIX_KEYS,
-    MATRIX_ROWS,
-    CombinedCase,
-    combined_values,
-)
+from bearingload.studies.combined_bearing import CombinedCase, combined_values
+from bearingload.studies.matrix import MATRIX_COLUMNS, MATRIX_KEYS, MATRIX_ROWS
 
 INPUT_KEYS = (
     "bearing",

@@ -30,7 +30,8 @@ from bearingload.reports.solve import (
     with_service,
 )
 from bearingload.studies.bearing_pair import ARRANGEMENT_NAMES, PairCase, pair_service_values
-from bearingload.studies.combined_bearing import MATRIX_KEYS, combined_values
+from bearingload.studies.combined_bearing import combined_values
+from bearingload.studies.matrix import MATRIX_KEYS
 
 #: The pair's inputs (every row of the csv, the JSON case).
 PAIR_INPUTS = ("bearing", "arrangement", "balls", "load", "axial_load", "moment", "moment_cross",

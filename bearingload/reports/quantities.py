@@ -262,7 +262,7 @@ SERVICE_KEYS = (
 
 
 def _matrix_quantities() -> list[Quantity]:
-    from bearingload.studies.combined_bearing import MATRIX_COLUMNS, MATRIX_ROWS, matrix_key
+    from bearingload.studies.matrix import MATRIX_COLUMNS, MATRIX_ROWS, matrix_key
 
     out = []
     for i, (force, f_unit) in enumerate(MATRIX_ROWS):

@@ -22,6 +22,7 @@ import numpy as np
 
 from bearingload.bearings.resolve import ResolvedBearing
 from bearingload.errors import InputError
+from bearingload.studies.matrix import matrix_columns
 
 if TYPE_CHECKING:  # the solver is imported where a case is solved
     from bearingload.models.combined import CombinedDistribution
@@ -431,31 +432,6 @@ def angular_equivalent_load(b: ResolvedBearing, fr: Any, fa: Any, f0: float | No
     if not angular_contact_tabulated(alpha) or (abs(alpha - 15.0) < 1e-9 and b.C0 is None):
         return None
     return np.asarray(equivalent_load_angular_contact(fr, fa, alpha, b.C0, f0), dtype=float)
-
-
-#: The 5x5 tangent stiffness matrix of a combined-load case (json ``stiffness_matrix``, a list of
-#: rows): its rows, the forces and moments (name, unit), and its columns, the displacements and
-#: tilts (name, unit); entry i, j is d(row i)/d(column j).
-MATRIX_ROWS = (("F_x", "N"), ("F_y", "N"), ("F_a", "N"), ("M", "N mm"), ("M_c", "N mm"))
-MATRIX_COLUMNS = (("x", "mm"), ("y", "mm"), ("axial", "mm"), ("tilt", "rad"), ("tilt_cross", "rad"))
-
-
-def matrix_key(i: int, j: int) -> str:
-    """The csv column of entry (i, j) of ``stiffness_matrix`` (0-based, as json indexes it):
-    ``stiffness_matrix_23`` is json's ``stiffness_matrix[1][2]``, dF_y/d(axial)."""
-    return f"stiffness_matrix_{i + 1}{j + 1}"
-
-
-MATRIX_KEYS = tuple(
-    matrix_key(i, j) for i in range(len(MATRIX_ROWS)) for j in range(len(MATRIX_COLUMNS))
-)
-
-
-def matrix_columns(r: Any) -> dict[str, Any]:
-    """The entries of the cases' ``stiffness_matrix`` under :data:`MATRIX_KEYS`, each an array
-    over the cases (csv's and batch's columns; json keeps the matrix whole)."""
-    m = np.asarray(r.stiffness_matrix, dtype=float).reshape(-1, 5, 5)
-    return {matrix_key(i, j): m[:, i, j] for i in range(5) for j in range(5)}
 
 
 def combined_values(c: CombinedCase) -> dict[str, Any]:
