@@ -169,8 +169,39 @@ CASE_FREE_KINDS = frozenset({"speed"})
 _NUMBER = re.compile(r"^\s*([+-]?(?:\d+\.?\d*|\.\d+)(?:[eE][+-]?\d+)?)\s*(.*?)\s*$")
 
 
+def is_bare(text: object) -> bool:
+    """True when ``text`` is a number written without a unit (``3``, ``3e3``), which is read in
+    the package's unit of its kind (:data:`BASE_UNIT`)."""
+    match = _NUMBER.match(str(text))
+    return match is not None and match.group(2) == ""
+
+
 def _canonical(unit: str) -> str:
     return unit.replace(" ", "").replace("**", "^").replace("(3/2)", "3/2")
+
+
+#: Spellings that name no unit but whose unit is plain, per kind: a mass for its weight, the
+#: pound for the pound-force. Suggested in the refusal, never read: 300kg is refused, naming
+#: 300kgf (a kilogram is no force; 1 kgf = 9.80665 N).
+UNIT_SLIPS: dict[str, dict[str, str]] = {
+    "force": {"kg": "kgf", "kgs": "kgf", "lb": "lbf", "lbs": "lbf"},
+    "moment": {"kgmm": "kgfmm", "kgf*mm": "kgfmm"},
+}
+
+
+def meant_unit(unit: str, kind: str) -> str | None:
+    """The unit of ``kind`` an unknown spelling most likely means, or None: a unit written in
+    another case (``KN``, ``kn``: kN), with a dot or a middle dot for the product (``N.m``:
+    N*m) or one of :data:`UNIT_SLIPS` (``kg``: kgf, ``lb``: lbf)."""
+    known = {_canonical(u): u for u in UNITS[kind]}
+    key = re.sub(r"[.·⋅]", "*", unit)
+    if key in known:
+        return known[key]
+    slips = UNIT_SLIPS.get(kind, {})
+    folded = [u for c, u in known.items() if c.casefold() == key.casefold()]
+    if len(set(folded)) == 1:
+        return folded[0]
+    return slips.get(key.casefold())
 
 
 def parse_quantity(text: str | float, kind: str, *, parameter: str | None = None) -> float:
@@ -201,12 +232,13 @@ def parse_quantity(text: str | float, kind: str, *, parameter: str | None = None
     name = parameter or kind
     units = UNITS[kind]
     if isinstance(text, (int, float)):
-        value, unit = float(text), ""
+        value, unit, written = float(text), "", ""
     else:
         match = _NUMBER.match(str(text))
         if match is None or re.match(r"^\s*[+-]?\d*,\d", str(text)):
             raise InputError(name, _unreadable(str(text), kind))
-        value, unit = float(match.group(1)), _canonical(match.group(2))
+        written = match.group(1)
+        value, unit = float(written), _canonical(match.group(2))
     if not math.isfinite(value):
         raise InputError(name, f"{text!r} is not a finite number")
     if unit == "":
@@ -220,9 +252,11 @@ def parse_quantity(text: str | float, kind: str, *, parameter: str | None = None
         lookup = {u.lower(): f for u, f in lookup.items()}
         unit = unit.lower()
     if unit not in lookup:
+        meant = meant_unit(unit, kind)
+        hint = f"did you mean {written}{meant}? " if meant else ""
         raise InputError(
             name,
-            f"unknown unit {unit!r} in {text!r}; allowed: {', '.join(units)} "
+            f"unknown unit {unit!r} in {text!r}; {hint}allowed: {', '.join(units)} "
             f"(a bare number is {BASE_UNIT[kind]})",
         )
     converted, base = value * lookup[unit], BASE_UNIT[kind]
@@ -320,6 +354,10 @@ def parse_temperature(text: str | float, *, parameter: str = "temperature") -> f
             if match and match.group(2) is None and low <= as_kelvin <= high
             else ""
         )
+        fahrenheit = re.fullmatch(r"\s*([-+]?[0-9.]+)\s*(°F|F|degF)\s*", str(text))
+        if fahrenheit and re.fullmatch(r"[-+]?\d+\.?\d*|[-+]?\.\d+", fahrenheit.group(1)):
+            degrees = (float(fahrenheit.group(1)) - 32.0) / 1.8
+            hint = f"; did you mean {degrees:.4g}C ({fahrenheit.group(1)} °F)?"
         raise InputError(
             parameter,
             f"{text!r}: give the operating temperature in °C (70, 70C) or K (343.15K), "
@@ -357,9 +395,8 @@ def _example(kind: str) -> str:
     return (examples | more).get(kind, "208GPa")
 
 
-_STIFFNESS_UNIT = re.compile(
-    r"^(?P<force>[A-Za-z]+)/(?P<length>[A-Za-zµμ]+)\^\(?(?P<num>\d+(?:\.\d*)?)(?:/(?P<den>\d+))?\)?$"
-)
+#: A stiffness unit F/L^e (a pattern text, compiled at its first use: most runs type none).
+_STIFFNESS_UNIT = r"^(?P<force>[A-Za-z]+)/(?P<length>[A-Za-zµμ]+)\^\(?(?P<num>\d+(?:\.\d*)?)(?:/(?P<den>\d+))?\)?$"
 
 
 def stiffness_factor(unit: str, exponent: float | None, *, parameter: str = "stiffness") -> float:
@@ -376,7 +413,7 @@ def stiffness_factor(unit: str, exponent: float | None, *, parameter: str = "sti
     """
     from bearingload.errors import InputError
 
-    match = _STIFFNESS_UNIT.match(_canonical(unit))
+    match = re.match(_STIFFNESS_UNIT, _canonical(unit))
     forces, lengths = UNITS["force"], UNITS["length"]
     if match is None or match["force"] not in forces or match["length"] not in lengths:
         raise InputError(

@@ -64,3 +64,63 @@ def drawn(monkeypatch) -> list:
 
     monkeypatch.setattr(Figure, "savefig", recording)
     return figures
+
+
+def error_line(capsys, *args: str) -> str:
+    """The one ``Error:`` line of a refused command line (exit 2, nothing on stdout)."""
+    code, out, err = run_entry(capsys, *args)
+    lines = err.strip().splitlines()
+    assert code == 2 and out == "" and len(lines) == 1 and lines[0].startswith("Error:"), err
+    return lines[0]
+
+
+def warnings_of(err: str) -> list[str]:
+    """The ``Warning:`` lines of a command's stderr, without the prefix."""
+    return [w.removeprefix("Warning: ") for w in err.splitlines() if w.startswith("Warning:")]
+
+
+def besides_tilt(err) -> list[str]:
+    """The lines of ``err`` (a text or a list of warnings) other than the warning on the inner
+    ring's tilt (bearings.checks.misalignment_findings), which every case whose ring tilts gives:
+    an angular-contact bearing under a radial load, free to tilt, does at any tilt."""
+    lines = err.splitlines() if isinstance(err, str) else list(err)
+    tilt = ("the inner ring tilts by", "a tilt of the inner ring of")
+    return [w for w in lines if not any(t in w for t in tilt)]
+
+
+def solved_csv(text: str) -> str:
+    """A batch csv without its skipped rows and its last column (``skipped``): the rows solved,
+    as before skipped rows were written; any other text as it is."""
+    lines = text.splitlines(keepends=True)
+    if not lines or not lines[0].rstrip("\r\n").endswith(",skipped"):
+        return text
+    head = lines[0].rstrip("\r\n").removesuffix(",skipped") + "\n"
+    rows = [line.rstrip("\r\n") for line in lines[1:]]
+    return "".join([head, *(row[:-1] + "\n" for row in rows if row.endswith(","))])
+
+
+def without_count(err: str) -> str:
+    """A batch run's stderr without its closing line (the rows solved and skipped, the
+    warnings)."""
+    import re
+
+    lines = err.splitlines(keepends=True)
+    if lines and re.match(r"\d+ of \d+ rows solved, ", lines[-1]):
+        lines = lines[:-1]
+    return "".join(lines)
+
+
+class SolvedRows:
+    """A ``batch`` run as the tests of its solved rows read it: a csv without its skipped rows
+    and without its last column (``skipped``), stderr without its closing count line. What
+    those hold is tested apart (tests/test_batch_skipped.py)."""
+
+    def __init__(self, result) -> None:
+        self.result = result
+        self.exit_code = result.exit_code
+        self.stdout = solved_csv(result.stdout)
+        self.stderr = without_count(result.stderr)
+        self.output = self.stdout + self.stderr
+
+    def __getattr__(self, name: str):
+        return getattr(self.result, name)

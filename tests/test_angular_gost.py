@@ -16,7 +16,7 @@ from bearingload.bearings.angular import AngularRow, angular_rows, parse_angular
 from bearingload.bearings.ratings import B_M, f_0, f_c, standard_ball_sizes
 from bearingload.bearings.resolve import resolve_bearing
 
-from .cli_helpers import run_entry
+from .cli_helpers import besides_tilt, run_entry
 from .fixtures.angular_factors import EPK_2011
 
 #: GOST 831-75 type digit -> nominal contact angle, as EPK's p. 279 prints it. [°]
@@ -130,7 +130,7 @@ def test_gost_designation_resolves_to_its_row_at_the_type_angle(text, alpha):
 def test_solve_36205_equals_the_hand_given_ring_with_l10r_and_no_l10(capsys):
     code, out, err = run_entry(capsys, "solve", "36205", "-F", "1kN", "-A", "500N",
                                "--format", "json")  # fmt: skip
-    assert code == 0 and err == ""
+    assert code == 0 and besides_tilt(err) == []
     case = json.loads(out)["cases"][0]
     row = _epk_rows()["36205"]
     code, out, _ = run_entry(

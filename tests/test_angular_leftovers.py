@@ -16,7 +16,7 @@ from bearingload.batch.read import COLUMNS, LOAD_COLUMNS
 from bearingload.errors import InputError
 from bearingload.models.combined import ANGULAR_RATIO_MIN, solve_combined
 
-from .cli_helpers import run_entry
+from .cli_helpers import besides_tilt, run_entry, solved_csv, without_count
 
 RING = {"ball_diameter": 8.7312, "pitch_diameter": 38.5}  # the 7205B row's ball set
 
@@ -93,7 +93,7 @@ def _batch(capsys, tmp_path, text: str) -> tuple[int, list[dict], str]:
     path = tmp_path / "cases.csv"
     path.write_text(text, encoding="utf-8")
     code, out, err = run_entry(capsys, "batch", str(path), "--format", "json")
-    return code, json.loads(out)["cases"], err
+    return code, json.loads(out)["cases"], without_count(err)
 
 
 _KEYS = ("q_max", "x", "axial", "tilt", "loaded_balls", "reference_rating_life", "rating_life",
@@ -111,7 +111,7 @@ def test_batch_contact_angle_rows_equal_solve(capsys, tmp_path):
         "balls,ball_diameter,pitch_diameter,load,axial_load,contact_angle,dynamic_rating\n"
         "13,7.938,38.5,2kN,1kN,40,16.7kN\n13,7.938,38.5,1kN,3kN,25,16.7kN\n"
         "13,7.938,38.5,2kN,,15,\n"))  # fmt: skip
-    assert code == 0 and err == "" and [r["row"] for r in rows] == [2, 3, 4]
+    assert code == 0 and besides_tilt(err) == [] and [r["row"] for r in rows] == [2, 3, 4]
     for r, (fr, fa, alpha, c) in zip(rows, [("2kN", "1kN", "40", True),
                                             ("1kN", "3kN", "25", True),
                                             ("2kN", "0", "15", False)], strict=True):  # fmt: skip
@@ -135,7 +135,7 @@ def test_batch_contact_angle_refusals_skip_the_row_with_its_reason(capsys, tmp_p
                     f"13,7.938,38.5,2kN,1kN,40,\n{cells}\n", encoding="utf-8")  # fmt: skip
     code, out, err = run_entry(capsys, "batch", str(path), "--format", "csv")
     assert code == 1 and f"row 3: {reason}" in err and "Traceback" not in err
-    assert [r["row"] for r in csv.DictReader(io.StringIO(out))] == ["2"]
+    assert [r["row"] for r in csv.DictReader(io.StringIO(solved_csv(out)))] == ["2"]
 
 
 def test_batch_refuses_a_contact_angle_beside_a_designation(capsys, tmp_path):
@@ -153,7 +153,7 @@ def _file(tmp_path, text: str):
 @pytest.mark.parametrize("name", ["7205B", "7205C", "7205A", "7305C", "7010B"])
 def test_batch_angular_designations_equal_solve(capsys, tmp_path, name):
     code, rows, err = _batch(capsys, tmp_path, f"bearing,load,axial_load\n{name},2kN,1.5kN\n")
-    assert code == 0 and err == ""
+    assert code == 0 and besides_tilt(err) == []
     one = _solve(capsys, name, "-F", "2kN", "-A", "1.5kN")
     for key in _KEYS:
         assert rows[0][key] == (None if one[key] is None else pytest.approx(one[key], rel=1e-9))
@@ -163,7 +163,7 @@ def test_batch_angular_designations_equal_solve(capsys, tmp_path, name):
 def test_sweep_of_an_angular_designation_equals_solve_at_each_cage_angle(capsys, name):
     code, out, err = run_entry(capsys, "sweep", name, "-F", "2kN", "-A", "1kN", "--steps", "3",
                                "--format", "json")  # fmt: skip
-    assert code == 0 and err == ""
+    assert code == 0 and besides_tilt(err) == []
     doc = json.loads(out)
     assert "angular-contact" in doc["model"]
     for row in doc["rows"]:

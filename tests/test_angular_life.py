@@ -17,6 +17,7 @@ from bearingload.bearings.checks import (
 from bearingload.bearings.life import equivalent_load_angular_contact, equivalent_load_angular_pair
 from bearingload.errors import InputError
 
+from .cli_helpers import besides_tilt
 from .fixtures.angular_factors import (
     MISPRINTS,
     PAIR_ROWS,
@@ -193,7 +194,7 @@ def test_cli_hand_ring_gives_l10_and_p0(capsys, alpha):
     from tests.cli_helpers import run_entry
 
     code, out, err = run_entry(capsys, *HAND, "--contact-angle", f"{alpha:g}")
-    assert code == 0 and err == ""
+    assert code == 0 and besides_tilt(err) == []
     case = json.loads(out)["cases"][0]
     fr, fa = 2000.0, 3000.0
     if alpha == 15.0:  # no f0 for a hand-given ring: the F_a/C0 column
@@ -216,7 +217,7 @@ def test_cli_untabulated_angle_leaves_l10_and_p0_empty(capsys, alpha):
     from tests.cli_helpers import run_entry
 
     code, out, err = run_entry(capsys, *HAND, "--contact-angle", f"{alpha:g}")
-    assert code == 0 and err == ""
+    assert code == 0 and besides_tilt(err) == []
     case = json.loads(out)["cases"][0]
     assert case["equivalent_load"] is None and case["rating_life"] is None
     assert case["static_equivalent_load"] is None and case["static_safety"] is None
@@ -230,6 +231,6 @@ def test_cli_15_degrees_without_c0_says_why_l10_is_missing(capsys):
 
     hand = [a for a in HAND[:-2] if a not in ("--static-rating", "14kN")]
     code, out, err = run_entry(capsys, *hand, "--contact-angle", "15")
-    assert code == 0 and err == ""
+    assert code == 0 and besides_tilt(err) == []
     assert "basic rating life L10" not in out and "static equivalent load P0" in out
     assert "L10 at 15° needs C_0" in out

@@ -228,3 +228,43 @@ def test_every_kernel_touches_no_python_object():
     heads = [head for _, head, _ in _kernel_functions() if head.startswith("cdef ")]
     assert len(heads) > 20
     assert [head for head in heads if "noexcept nogil" not in head] == []
+
+
+def test_a_plain_solve_compiles_no_pattern_it_does_not_use():
+    """solve 306 -F 1kN compiled at import the patterns of pairs (7205BDB), seals, designation
+    prefixes and suffixes and stiffness units, none of which a plain designation with a load in
+    N uses: they are compiled at their first use. A fresh interpreter records every pattern re
+    compiles while the command runs."""
+    import subprocess
+    import sys
+
+    from bearingload.bearings import angular, catalog, designation
+    from bearingload.units import _STIFFNESS_UNIT
+
+    record = (
+        "import re, sys\n"
+        "seen = []\n"
+        "compile = re._compile\n"
+        "def recording(pattern, flags):\n"
+        "    seen.append(pattern)\n"
+        "    return compile(pattern, flags)\n"
+        "re._compile = recording\n"
+        "from bearingload.cli import run\n"
+        "try:\n"
+        "    run(['solve', '306', '-F', '1kN'])\n"
+        "except SystemExit:\n"
+        "    pass\n"
+        "print(repr(seen), file=sys.stderr)\n"
+    )
+    done = subprocess.run([sys.executable, "-c", record], capture_output=True, text=True)
+    seen = eval(done.stderr.strip().splitlines()[-1])  # a list of pattern texts
+    unused = [
+        angular._PAIR,
+        angular._PAIR_LIKE,
+        catalog._SEAL,
+        designation._PREFIX,
+        designation._SUFFIX_TOKENS,
+        _STIFFNESS_UNIT,
+    ]
+    assert [p for p in unused if getattr(p, "pattern", p) in seen] == []
+    assert designation._ISO.pattern in seen  # the recording sees the patterns the run uses

@@ -15,7 +15,7 @@ from click.testing import CliRunner
 from bearingload.cli import main
 from bearingload.reports.render import Column, _machine_text, csv_block
 
-from .cli_helpers import run_entry
+from .cli_helpers import SolvedRows, run_entry, solved_csv
 
 SMALL = """\
 balls,load [kgf],stiffness,clearance,cage_angle
@@ -40,7 +40,9 @@ SMALL_MARKDOWN = """\
 
 
 def batch(*args: str, stdin: str | None = None):
-    return CliRunner().invoke(main, ["batch", *args], input=stdin, catch_exceptions=False)
+    return SolvedRows(
+        CliRunner().invoke(main, ["batch", *args], input=stdin, catch_exceptions=False)
+    )
 
 
 @pytest.fixture
@@ -136,14 +138,25 @@ def test_bad_rows_named_and_good_rows_written(capsys, tmp_path):
     p.write_text(BAD)
     code, out, err = run_entry(capsys, "batch", str(p), "--format", "csv")
     assert code == 1
-    assert [line.split(",")[0] for line in out.splitlines()] == ["row", "2", "7"]
+    # every row in the output, the skipped ones with their reason in the last column
+    assert [line.split(",")[0] for line in out.splitlines()] == [
+        "row",
+        "2",
+        "3",
+        "4",
+        "5",
+        "6",
+        "7",
+    ]
+    assert out.splitlines()[2].endswith(",load: must be greater than 0 N (got -5)")
     assert err.splitlines() == [
         "Warning: row 3: load: must be greater than 0 N (got -5)",
         "Warning: row 4: balls: must be between 1 and 100000 (got 0)",
         "Warning: row 5: clearance: unknown unit 'furlong' in '20furlong'; allowed: mm, um, µm, "
         "μm, in, m (a bare number is mm)",
         "Warning: row 6: malformed line: 3 cells, the header names 4 columns",
-        "Warning: 4 of 6 rows skipped (exit status 1)",
+        "2 of 6 rows solved, 4 skipped (exit status 1), 0 warnings; the output names each "
+        "skipped row and its reason",
     ]
 
 
@@ -174,11 +187,11 @@ def test_output_file_written_whole(small, tmp_path):
     target.write_text("old\n")
     out = batch(small, "--format", "csv", "-o", str(target))
     assert out.exit_code == 0 and out.stdout == ""
-    assert target.read_text() == SMALL_CSV
+    assert solved_csv(target.read_text()) == SMALL_CSV
     p = tmp_path / "bad.csv"
     p.write_text(BAD)
     batch(str(p), "--strict", "--format", "csv", "-o", str(target))
-    assert target.read_text() == SMALL_CSV  # a failed run leaves the old file as it was
+    assert solved_csv(target.read_text()) == SMALL_CSV  # a failed run leaves the old file as it was
 
 
 def _long_file(tmp_path, n=53):

@@ -12,6 +12,8 @@ from click.testing import CliRunner
 
 from bearingload.cli import main
 
+from .cli_helpers import SolvedRows, besides_tilt
+
 #: (batch cells, solve options) of one case each: radial and combined rows, each with another
 #: subset of the life columns, units in the cells, a roller bearing, kappa above 4 and below 0.1.
 CASES = [
@@ -60,7 +62,9 @@ def _file(cases: list[dict[str, str]], every_column: bool = False) -> str:
 
 
 def _batch(text: str, *args: str):
-    return CliRunner().invoke(main, ["batch", "-", *args], input=text, catch_exceptions=False)
+    return SolvedRows(
+        CliRunner().invoke(main, ["batch", "-", *args], input=text, catch_exceptions=False)
+    )
 
 
 def _rows(text: str) -> list[dict[str, str]]:
@@ -225,7 +229,7 @@ def test_a_speed_whose_hours_overflow_skips_its_row_only():
         text = f"{head}\n{cells},1e-310,20\n{good}{cells},1e-310,\n"
         out = _batch(text, "--format", "csv")
         assert out.exit_code == 1
-        errors = out.stderr.splitlines()
+        errors = besides_tilt(out.stderr)
         assert errors[0] == "Warning: row 2: speed: is so small that the life in hours " + (
             "L 10^6/(60 n) overflows"
         )

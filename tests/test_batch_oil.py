@@ -23,7 +23,7 @@ from bearingload.cli.case_options import OIL_PARAMS
 from bearingload.errors import InputError
 from bearingload.units import parse_temperature
 
-from .cli_helpers import run_entry
+from .cli_helpers import SolvedRows, run_entry
 
 #: (batch cells, solve options) of one case each: the oil by grade or nu_40, nu_100 given or
 #: from the VI (given or the default 95), temperatures in °C and K, units in the cells, a
@@ -79,7 +79,7 @@ def _file(cases: list[dict[str, str]], combined: bool) -> str:
 
 
 def _run(*args: str, text: str | None = None):
-    return CliRunner().invoke(main, list(args), input=text, catch_exceptions=False)
+    return SolvedRows(CliRunner().invoke(main, list(args), input=text, catch_exceptions=False))
 
 
 def _json(text: str) -> dict:
@@ -236,8 +236,9 @@ def test_an_oil_without_speed_or_bearing_is_refused_naming_its_column():
     out = _run("batch", "-", "--format", "csv", text=text)
     assert out.exit_code == 1
     errors = out.stderr.splitlines()
-    assert errors[0] == ("Warning: row 2: viscosity_40: needs the shaft speed (a speed cell) for "
-                         "the rated viscosity nu_1")  # fmt: skip
+    assert errors[0] == (
+        "Warning: row 2: viscosity_40: needs the shaft speed ('speed') for the rated viscosity nu_1"
+    )
     assert errors[1] == "Warning: row 3: speed: needs a bearing or a ball geometry"
     assert [r["row"] for r in csv.DictReader(io.StringIO(out.stdout))] == ["4"]
     assert _run("solve", "6205", "-F", "1kN", "--viscosity-40", "68", "--temperature",

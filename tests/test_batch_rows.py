@@ -9,13 +9,15 @@ from click.testing import CliRunner
 
 from bearingload.cli import main
 
+from .cli_helpers import SolvedRows
+
 
 def _run(*args: str, stdin: str | None = None):
     return CliRunner().invoke(main, list(args), input=stdin)
 
 
 def _batch(text: str, *args: str):
-    return _run("batch", "-", "--format", "csv", *args, stdin=text)
+    return SolvedRows(_run("batch", "-", "--format", "csv", *args, stdin=text))
 
 
 def _csv_values(text: str, line: int = 1) -> dict[str, str]:

@@ -12,7 +12,12 @@ from typing import Any
 import pytest
 from click.testing import CliRunner
 
+from bearingload.bearings.resolve import resolve_bearing
 from bearingload.cli import main
+from bearingload.errors import InputError
+from bearingload.studies.combined_bearing import solve_combined_bearing
+
+from .cli_helpers import run_entry, warnings_of
 
 HEAD = ("bearing", "load", "axial_load", "clearance", "speed", "quasi_static", "ball_density")
 #: (batch cells, solve options) of one case each: deep groove with an axial load at speed (C3,
@@ -247,3 +252,40 @@ def test_the_table_names_the_model_and_help_teaches_the_columns():
         assert word in text, word
     assert math.isfinite(json.loads(_batch(_file([CASES[3][0]]), "--format", "json").stdout)[
         "cases"][0]["q_max"])  # fmt: skip
+
+
+def test_a_batch_row_at_speed_with_the_outer_ring_rotating_is_skipped(capsys, tmp_path):
+    """solve refuses --rotating outer with the ball dynamics (they are the inner ring's); a
+    batch row of a ball bearing with a speed and rotating outer was solved (the radial row by
+    the combined engine at F_a = 0, a combined row too), its L10r that of the outer ring. It is
+    skipped naming quasi_static; with quasi_static true it is solved as solve --quasi-static
+    solves it. The library refuses the pair of arguments too."""
+    path = tmp_path / "rows.csv"
+    path.write_text(
+        "bearing,load,axial_load,speed,rotating,quasi_static\n6205,1kN,,3000,outer,\n"
+        "6205,1kN,100,3000,outer,\n6205,1kN,,3000,outer,true\n",
+        encoding="utf-8",
+    )
+    code, out, err = run_entry(capsys, "batch", str(path), "--format", "json")
+    assert code == 1
+    reasons = [w for w in warnings_of(err) if w.startswith(("row 2", "row 3"))]
+    assert len(reasons) == 2 and all("rotating: " in w and "quasi_static" in w for w in reasons)
+    (row,) = json.loads(out)["cases"]
+    _, solved, _ = run_entry(
+        capsys,
+        "solve",
+        "6205",
+        "-F",
+        "1kN",
+        "--speed",
+        "3000",
+        "--rotating",
+        "outer",
+        "--quasi-static",
+        "--format",
+        "json",
+    )
+    want = json.loads(solved)["cases"][0]
+    assert row["row"] == 4 and row["reference_rating_life"] == want["reference_rating_life"]
+    with pytest.raises(InputError, match="rotating"):
+        solve_combined_bearing([resolve_bearing("6205")], 1000.0, speed=3000.0, rotating="outer")

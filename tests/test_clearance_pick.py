@@ -4,9 +4,11 @@ and every angular-contact solve accepting it and printing the same answer)."""
 
 from __future__ import annotations
 
+import json
+
 import pytest
 
-from .cli_helpers import run_entry
+from .cli_helpers import error_line, run_entry, warnings_of
 
 
 @pytest.mark.parametrize(
@@ -91,3 +93,36 @@ def test_batch_refuses_a_pick_without_a_class_as_solve_does(capsys):
         "clearance cell CN, C3 ... of a catalogue bearing); this row's clearance is one value, no "
         "class (G_r = 10 µm), so it would be ignored",
     ]
+
+
+def test_table_life_clearance_pick_range_is_refused_as_every_pick(capsys):
+    """table life --clearance-pick range said 'table life takes min, mean or max', which it
+    refuses too: it gets the one refusal of every pick."""
+    line = error_line(
+        capsys, "table", "life", "-b", "6205", "-F", "1kN", "--clearance-pick", "range"
+    )
+    assert line == error_line(
+        capsys, "table", "life", "-b", "6205", "-F", "1kN", "--clearance-pick", "max"
+    )
+    assert "takes min, mean or max" not in line
+    assert "takes min, mean or max" in error_line(capsys, "table", "k", "--clearance-pick", "range")
+
+
+def test_the_warnings_of_a_clearance_range_at_speed_name_their_pick(capsys):
+    """solve 6205 -F 30kN -G C3 --clearance-pick range --speed 20000 (the combined engine with
+    the ball dynamics) printed the contact pressure warning of each pick three times unlabelled;
+    the static radial solve of the same range labels them 'G_r min: ...'. They are labelled as
+    there, a warning every pick shares given once; json lists the printed lines; -A 0 too."""
+    case = ("solve", "6205", "-F", "30kN", "-G", "C3", "--clearance-pick", "range")
+    _, _, static = run_entry(capsys, *case, "--speed", "20000", "--quasi-static")
+    for extra in (("--speed", "20000"), ("-A", "0")):
+        code, _, err = run_entry(capsys, *case, *extra)
+        found = warnings_of(err)
+        pressures = [w for w in found if "maximum contact pressure" in w]
+        assert code == 0 and len(pressures) == 3, err
+        assert [w.split(":", 1)[0] for w in pressures] == ["G_r min", "G_r mean", "G_r max"]
+        labels = [w.split(":", 1)[0] for w in warnings_of(static) if "contact pressure" in w]
+        assert labels == ["G_r min", "G_r mean", "G_r max"]
+        assert len(set(found)) == len(found) and any(w.startswith("static safety") for w in found)
+        code, out, err = run_entry(capsys, *case, *extra, "--format", "json")
+        assert json.loads(out)["warnings"] == warnings_of(err) == found

@@ -167,7 +167,7 @@ def test_the_default_tilt_lever_is_reported_as_a_number():
     the inner groove centres R_i = d_m/2 + (f_i - 1/2) D_w cos(alpha_0) is in the title and in
     the JSON as ``tilt_radius`` [mm], as a given lever is."""
     out = json.loads(
-        invoke("solve", "6205", "-F", "1.4kN", "-A", "700N", "--format", "json").output
+        invoke("solve", "6205", "-F", "1.4kN", "-A", "700N", "--format", "json").stdout
     )
     case = out["cases"][0] if "cases" in out else out
     lever = case["tilt_radius"]

@@ -199,3 +199,35 @@ def test_an_overflowing_tilting_stiffness_is_refused_not_zeroed(lever):
 
     with pytest.raises(InputError, match="tilt_radius"):
         solve_combined(9, 1400.0, 700.0, clearance=0.0125, tilt_radius=lever, **G6205)
+
+
+def test_the_stiffness_matrix_is_in_every_format_of_solve(capsys):
+    """The 5x5 tangent stiffness matrix of a combined case was in json only: csv has its 25
+    entries (stiffness_matrix_ij = json's stiffness_matrix[i-1][j-1], with their units), the
+    table and markdown a block of the matrix, each equal to json's at the printed digits; a
+    pair's terminal output shows the shaft's."""
+    import csv as csv_module
+    import io
+    import json as json_module
+
+    from .cli_helpers import run_entry
+
+    case = ("solve", "6205", "-F", "3kN", "-A", "1kN")
+    matrix = json_module.loads(run_entry(capsys, *case, "--format", "json")[1])["cases"][0][
+        "stiffness_matrix"
+    ]
+    (row,) = csv_module.DictReader(io.StringIO(run_entry(capsys, *case, "--format", "csv")[1]))
+    units = {"14": "N/rad", "41": "N mm/mm", "45": "N mm/rad", "22": "N/mm"}
+    for ij, unit in units.items():
+        assert (
+            float(row[f"stiffness_matrix_{ij} [{unit}]"]) == matrix[int(ij[0]) - 1][int(ij[1]) - 1]
+        )
+    assert sum(k.startswith("stiffness_matrix_") for k in row) == 25
+    for fmt in ("table", "markdown"):
+        out = run_entry(capsys, *case, "--format", fmt)[1]
+        assert "tangent stiffness matrix" in out
+        lines = [line for line in out.splitlines() if "M_c [N mm]" in line]
+        cells = [c for c in lines[0].replace("|", " ").split()[3:]]
+        assert [float(c) for c in cells] == pytest.approx(matrix[4], rel=1e-5, abs=1e-6)
+    out = run_entry(capsys, "solve", "7205BDB", "-F", "1kN", "-A", "300N")[1]
+    assert "tangent stiffness matrix of the shaft" in out

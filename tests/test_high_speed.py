@@ -314,7 +314,7 @@ def _solve_json(*args):
     out = invoke("solve", "7205B", "--load", "500", "--axial-load", "1000", *args,
                  "--format", "json")  # fmt: skip
     assert out.exit_code == 0, out.output
-    return json.loads(out.output)
+    return json.loads(out.stdout)
 
 
 def test_cli_speed_includes_the_ball_dynamics_and_the_life_takes_both_contacts():

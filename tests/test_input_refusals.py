@@ -10,7 +10,7 @@ import pytest
 from bearingload import InputError, ring_forces, solve
 from bearingload.models.combined import solve_combined
 
-from .cli_helpers import run_entry, run_process
+from .cli_helpers import error_line, run_entry, run_process
 
 GEOMETRY = {"ball_diameter": 7.938, "pitch_diameter": 38.5}
 
@@ -167,8 +167,8 @@ def test_combined_inputs_beyond_the_numbers_are_one_error_line(args, message):
     [
         (("-F", "0", "-A", "1e-9N"), "--axial-load"),
         (("-F", "1e-9N", "-A", "0"), "--load"),
-        (("-F", "0", "--moment", "1e-9"), "--moment"),
-        (("-F", "0", "--moment-cross", "1e-9"), "--moment-cross"),
+        (("-F", "0", "--moment", "1e-9Nmm"), "--moment"),
+        (("-F", "0", "--moment-cross", "1e-9Nmm"), "--moment-cross"),
         (("-F", "2e-9N", "-A", "1e-9N"), "--load"),
     ],
 )
@@ -206,3 +206,15 @@ def test_loads_too_small_for_a_pair_name_the_largest_load(capsys, loads, option)
         # case 0 is fine with its preload its largest load; case 1 is refused for its thrust
         solve_pair(12, np.array([0.0, 0.0]), np.array([0.0, 1e-9]),
                    preload=np.array([500.0, 0.0]), **ring)  # fmt: skip
+
+
+def test_another_exponent_on_a_ball_geometry_does_not_blame_a_designation(capsys):
+    """solve -z 9 --ball-diameter ... --pitch-diameter ... -m 10/9 (at --speed too) was
+    refused with '... not a bearing designation', though none was given: it names the ball
+    geometry; a designation keeps its words."""
+    ring = ("-z", "9", "--ball-diameter", "7.938", "--pitch-diameter", "38.5", "-F", "1kN")
+    for extra in ((), ("--speed", "3000")):
+        line = error_line(capsys, "solve", *ring, "-m", "10/9", *extra)
+        assert "'--exponent'" in line and line.endswith("not its ball geometry"), line
+    line = error_line(capsys, "solve", "6205", "-F", "1kN", "-m", "10/9")
+    assert line.endswith("not a bearing designation"), line

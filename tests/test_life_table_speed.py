@@ -234,3 +234,27 @@ def test_rows_on_the_side_of_the_inner_groove_are_named():
     for g, warned in (("0", False), ("150um", True), ("200um", True)):
         solved = _run("solve", *args, "--clearance", g)
         assert ("the loaded inner contact sits at 90°" in solved.stderr) == warned, g
+
+
+def test_table_life_conditions_give_the_speed_as_given(capsys):
+    """``table life --bearing 6205 -F 1kN --speed 12345`` printed 'shaft speed n = 1.234e+04
+    rpm' (4 digits: 12340, not the 12345 given; solve prints 12345); the conditions line now
+    keeps 6 digits, as solve's tables."""
+    from tests.cli_helpers import run_entry
+
+    code, out, err = run_entry(
+        capsys,
+        "table",
+        "life",
+        "--bearing",
+        "6205",
+        "-F",
+        "1kN",
+        "--speed",
+        "12345",
+        "--viscosity",
+        "20.25",
+    )
+    assert code == 0, err
+    assert "shaft speed n = 12345 rpm" in out, out
+    assert "operating viscosity nu = 20.25 mm^2/s" in out, out

@@ -346,3 +346,21 @@ def test_a_viscosity_walther_does_not_cover_is_named_for_its_temperature(
     assert f"the oil's viscosity at {celsius} °C to be 2 mm^2/s or more; got {got} mm^2/s" in str(
         info.value
     )
+
+
+@pytest.mark.parametrize(
+    ("given", "option"),
+    [(("--oil", "VG68"), "--oil"), (("--viscosity-40", "68"), "--viscosity-40")],
+)
+def test_an_oil_without_a_speed_names_the_option_typed(capsys, given, option):
+    """solve 6205 -F 3kN --oil VG68 --temperature 70 (no --speed) said --viscosity needs the
+    speed, an option not typed: the refusal names the oil option given; --viscosity alone keeps
+    its own name; the library and batch say the same (bearings.lubrication.speed_needed)."""
+    from .cli_helpers import error_line
+
+    base = ("solve", "6205", "-F", "3kN")
+    line = error_line(capsys, *base, *given, "--temperature", "70")
+    assert line.startswith(f"Error: Invalid value for '{option}': needs the shaft speed"), line
+    assert "--viscosity'" not in line
+    line = error_line(capsys, *base, "--viscosity", "20")
+    assert line.startswith("Error: Invalid value for '--viscosity': needs the shaft speed")

@@ -12,6 +12,8 @@ from click.testing import CliRunner
 
 from bearingload.cli import main
 
+from .cli_helpers import besides_tilt
+
 PAIR = ["7205BDB", "--preload", "300N", "-F", "1kN", "-A", "200N"]
 
 
@@ -74,7 +76,7 @@ def test_json_rows_are_solves_keys_and_the_summary_is_over_them():
     assert doc["summary"]["bearings"][1]["q_max"]["max"] == max(q2)
     assert doc["summary"]["bearings"][1]["q_max"]["mean"] == pytest.approx(sum(q2[:-1]) / 3)
     assert doc["units"]["stiffness_axial"] == "N/mm"
-    assert doc["warnings"] == []
+    assert besides_tilt(doc["warnings"]) == []
 
 
 def test_a_lifted_bearing_is_warned_once():

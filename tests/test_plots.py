@@ -107,7 +107,7 @@ def test_without_matplotlib_one_error_line_and_nothing_written(capsys, tmp_path,
             capsys, command, *CASE, "--plot", str(png), "--format", "csv", "-o", str(csv)
         )
         assert code == 1 and out == ""
-        assert err == "Error: --plot needs matplotlib: pip install 'bearingload[plot]'\n"
+        assert err == "Error: --plot needs matplotlib: pip install matplotlib\n"
         assert list(tmp_path.iterdir()) == []
 
 

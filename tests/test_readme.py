@@ -46,3 +46,16 @@ def test_console_example(page, command, expected, monkeypatch):
     got = [line.rstrip() for line in result.output.rstrip("\n").splitlines()]
     want = [line.rstrip() for line in expected.rstrip("\n").splitlines()]
     assert got == want
+
+
+def test_install_instructions_name_no_package_index():
+    """The README's CI step said 'pip install bearingload', a package no index serves: every
+    page installs from the repository (a checkout, or git+URL) or names matplotlib alone."""
+    from pathlib import Path
+
+    root = Path(__file__).resolve().parents[1]
+    pages = [README, *doc_pages(), *sorted((root / "bearingload").rglob("*.py"))]
+    from_index = re.compile(r"pip install\s+['\"]?bearingload(?!\s*@)")
+    found = [p.name for p in pages if from_index.search(p.read_text(encoding="utf-8"))]
+    assert found == []
+    assert "git+URL" in README.read_text(encoding="utf-8")

@@ -227,7 +227,9 @@ def _run(*args: str, stdin: str | None = None):
 
 
 def _batch(text: str, *args: str):
-    return _run("batch", "-", "--format", "csv", *args, stdin=text)
+    from .cli_helpers import SolvedRows
+
+    return SolvedRows(_run("batch", "-", "--format", "csv", *args, stdin=text))
 
 
 def test_a_roller_bearings_stiffness_is_read_in_its_own_unit():

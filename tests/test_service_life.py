@@ -533,5 +533,5 @@ def test_an_infinite_value_is_rendered_not_a_crash():
 def test_a_rating_beyond_any_bearing_is_refused(capsys, option):
     """--static-rating 1e300 with a tiny load overflowed s0 to infinity and ended in an internal
     error in --format json (the review's find); a rating above 1e9 N is refused."""
-    code, out, err = run_entry(capsys, "solve", "6205", "-F", "1e-12", option, "1e300")
+    code, out, err = run_entry(capsys, "solve", "6205", "-F", "1e-12N", option, "1e300")
     assert code == 2 and err.startswith(f"Error: Invalid value for '{option}': must lie between")

@@ -153,3 +153,23 @@ def test_a_speed_of_0_says_what_a_shaft_at_rest_is(capsys):
         "Warning: row 2: speed: must be greater than 0 rpm, or blank for a shaft at rest: the "
         "static model, its lives in 10^6 revolutions (got 0)"
     )
+
+
+def test_unloaded_ball_note_at_speed_names_the_inner_contact(capsys):
+    """At speed a '-' ball's outer contact carries its centrifugal force (json: ball_loads_outer
+    > 0 where ball_loads_inner is 0); the note said 'the ball carries no load'. It now says the
+    inner contact carries none; the static note is unchanged."""
+    import json
+
+    args = ("solve", "6205", "-F", "1kN")
+    code, out, _ = run_entry(capsys, *args, "--speed", "3000", "--format", "json")
+    case = json.loads(out)["cases"][0]
+    loose = [i for i, q in enumerate(case["ball_loads_inner"]) if q == 0.0]
+    assert loose and all(case["ball_loads_outer"][i] > 0.0 for i in loose)
+    code, out, _ = run_entry(capsys, *args, "--speed", "3000")
+    assert code == 0 and "the ball carries no load" not in out
+    assert "Contact angle '-': the ball's inner contact carries no load" in out
+    assert "outer contact still carries the centrifugal force" in out
+    code, out, _ = run_entry(capsys, *args, "-A", "0")
+    assert code == 0 and "Contact angle '-': the ball carries no load" in out
+    assert "inner contact" not in out

@@ -14,6 +14,7 @@ import pytest
 from hypothesis import given
 from hypothesis import strategies as st
 
+from bearingload.errors import InputError
 from bearingload.tables_ci import tableset
 from bearingload.tables_ci.cells import compare, numbers_agree
 from bearingload.tables_ci.manifest import (
@@ -211,6 +212,8 @@ def test_json_cells_are_named_by_row_and_key(tmp_path):
          "manifest.toml, entry 1 (\"x.md\"): format 'csv' does not fit the file's extension"),
         ('[[table]]\nfile = "../x.csv"\ncommand = "table k"\n',
          "manifest.toml, entry 1 (\"../x.csv\"): 'file' must be a file name in the folder"),
+        ('[[table]]\nfile = "a\\u0000b.csv"\ncommand = "table k"\n',
+         "manifest.toml, entry 1 (\"a\\x00b.csv\"): 'file' cannot hold a control character"),
         ('[[table]]\nfile = "x.csv"\ncommand = "table k"\nrtol = -1\n',
          "manifest.toml, entry 1 (\"x.csv\"): 'rtol' must be finite and >= 0"),
         ('[[table]]\nfile = "x.csv"\ncommand = "table k"\n[[table]]\nfile = "x.csv"\n'
@@ -451,3 +454,46 @@ def test_files_with_crlf_line_ends_agree_and_a_moved_cell_is_still_found(tmp_pat
     md.write_bytes(text.replace(first, "|".join(cells), 1).encode("utf-8"))
     code, out, _ = run_entry(capsys, "tables", "check", str(d))
     assert code == 1 and "1 cell differs" in out and "9.999" in out, out
+
+
+@pytest.mark.parametrize("value", ["inf", "nan", "-1"])
+@pytest.mark.parametrize("command", ["check", "update"])
+def test_a_tolerance_the_manifest_refuses_is_refused_on_the_command_line(
+    tmp_path, capsys, command, value
+):
+    """tables check --rtol inf (or nan) passed any change, while the manifest refuses such a
+    tolerance: the option, the manifest and the library take one rule (finite, >= 0)."""
+    d = folder(tmp_path, f"{K306}.csv")
+    scale_cell(d / f"{K306}.csv", 20, "k", 2.0)
+    before = (d / f"{K306}.csv").read_text(encoding="utf-8")
+    for option in ("--rtol", "--atol"):
+        code, out, err = run_entry(capsys, "tables", command, str(d), option, value)
+        assert (code, out) == (2, ""), err
+        assert err.startswith(f"Error: Invalid value for '{option}': must be finite and >= 0")
+    assert (d / f"{K306}.csv").read_text(encoding="utf-8") == before
+    code, _, err = run_entry(capsys, "tables", "add", str(d), "--rtol", value, "--", "table", "k")
+    assert code == 2 and "Invalid value for '--rtol'" in err, err
+    manifest = read_manifest(str(d))
+    with pytest.raises(InputError, match="rtol"):
+        tableset.compare_folder(manifest, {f"{K306}.csv": before}, rtol=float(value))
+
+
+@pytest.mark.parametrize("command", ["check", "update"])
+def test_a_listed_file_linked_out_of_the_folder_is_refused(tmp_path, capsys, command):
+    """tables update wrote through a symbolic link to a file outside the folder: a listed file
+    that links out of the folder is refused, naming it, and the file outside is left alone; a
+    link within the folder is followed."""
+    d = folder(tmp_path, f"{K306}.csv")
+    outside = tmp_path / "outside.csv"
+    outside.write_text("mine\n", encoding="utf-8")
+    (d / f"{K306}.csv").unlink()
+    (d / f"{K306}.csv").symlink_to(outside)
+    code, out, err = run_entry(capsys, "tables", command, str(d))
+    assert (code, out) == (2, "") and "symbolic link out of the folder" in err, err
+    assert f'entry 1 ("{K306}.csv")' in err and err.count("\n") == 1
+    assert outside.read_text(encoding="utf-8") == "mine\n"
+    (d / f"{K306}.csv").unlink()
+    shutil.copy(TABLES / f"{K306}.csv", d / ".real.csv")
+    (d / f"{K306}.csv").symlink_to(".real.csv")
+    code, _, err = run_entry(capsys, "tables", command, str(d))
+    assert code == 0, err

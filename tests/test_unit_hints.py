@@ -273,3 +273,110 @@ def test_implausible_revolutions_are_refused_with_the_likely_unit(capsys):
     assert allowable[3] == pytest.approx(14000 / 0.1 ** (1 / 3))
     code, _, err = run_entry(capsys, *base, "--revolutions", "1e303Mrev")
     assert code == 2 and re.search(r"'1e303Mrev' overflows", err), err
+
+
+@pytest.mark.parametrize(
+    ("text", "rpm"),
+    [
+        ("3000RPM", 3000.0),
+        ("3000Rpm", 3000.0),
+        ("3000 R/MIN", 3000.0),
+        ("3000 1/MIN", 3000.0),
+        ("50hz", 3000.0),
+        ("50HZ", 3000.0),
+        ("100RAD/S", 3000.0 / math.pi),
+        ("50 1/S", 3000.0),
+    ],
+)
+def test_speed_units_are_read_in_any_case(text, rpm):
+    """--speed 3000RPM was refused (only lowercase rpm): speed unit names are read whatever
+    their case (none differs from another only in case)."""
+    from bearingload.units import parse_quantity
+
+    assert parse_quantity(text, "speed", parameter="speed") == pytest.approx(rpm, rel=1e-15)
+
+
+def test_speed_in_capitals_on_the_command_line_other_units_keep_their_case(capsys):
+    code, out, err = run_entry(capsys, "solve", "6205", "-F", "1kN", "--speed", "3000RPM")
+    assert code == 0 and "shaft speed n" in out, err
+    from bearingload.units import parse_quantity
+
+    # lengths and forces stay case-sensitive: mm vs Mm, mN vs MN must not become one unit
+    for text, kind in (("20UM", "length"), ("1KN", "force"), ("1MM", "length")):
+        with pytest.raises(InputError):
+            parse_quantity(text, kind)
+    assert parse_quantity("1kN", "force") == 1000.0
+
+
+@pytest.mark.parametrize(
+    ("option", "given", "meant"),
+    [
+        ("-F", "3KN", "3kN"),
+        ("-F", "3kn", "3kN"),
+        ("-F", "300kg", "300kgf"),
+        ("-F", "3000lb", "3000lbf"),
+        ("--moment", "5N.m", "5N*m"),
+        ("--clearance", "20UM", "20um"),
+    ],
+)
+def test_a_misspelt_unit_is_refused_with_the_unit_meant(capsys, option, given, meant):
+    """3KN, 3kn, 300kg, 3000lb, 5N.m were refused with the list of units alone: the one Error
+    line names the unit meant (never reads it: a kilogram is no force, and mm and Mm differ),
+    and the spelling suggested is accepted."""
+    base = ["solve", "6205", "-F", "3kN"]
+    code, out, err = run_entry(capsys, *base, option, given)
+    assert code == 2 and out == "" and err.count("\n") == 1, err
+    assert f"did you mean {meant}?" in err, err
+    assert run_entry(capsys, *base, option, meant)[0] == 0
+
+
+def test_a_temperature_in_fahrenheit_is_refused_with_its_celsius(capsys):
+    """--temperature 160F said only what is allowed: it names 71.11C, (160 - 32)/1.8 °C."""
+    oil = ("solve", "6205", "-F", "3kN", "--speed", "3000", "--oil", "VG68", "--temperature")
+    code, _, err = run_entry(capsys, *oil, "160F")
+    assert code == 2 and "did you mean 71.11C (160 °F)?" in err, err
+    assert run_entry(capsys, *oil, "71.11C")[0] == 0
+
+
+def test_a_unit_of_no_likeness_gets_no_suggestion():
+    with pytest.raises(InputError) as exc:
+        parse_quantity("3parsec", "force", parameter="load")
+    assert "did you mean" not in exc.value.message and "allowed: N, kN" in exc.value.message
+
+
+@pytest.mark.parametrize(
+    ("args", "option", "meant"),
+    [
+        (("-F", "3000", "--moment", "5"), "--moment", "5Nm"),
+        (("-F", "3"), "--load", "3kN"),
+        (("-F", "3000", "-K", "4700"), "--stiffness", "4700kgf/mm^1.5"),
+    ],
+)
+def test_a_bare_number_implausible_for_the_bearing_names_its_unit(capsys, args, option, meant):
+    """Bare numbers that pass every fixed range were used as typed: solve 6205 -F 3000 --moment
+    5 as 5 N mm, -F 3 as 3 N (a hint about the clearance followed), -K 4700 replaced the 6205's
+    Hertz stiffness 274 869 N/mm^1.5 without a word. Judged against the bearing (C0 = 7850 N,
+    C0 d_m/2, its Hertz stiffness: bearings.plausible) they are refused naming the unit meant;
+    the number with its unit written is used as it is, and the unit suggested is accepted."""
+    from .cli_helpers import error_line
+
+    line = error_line(capsys, "solve", "6205", *args)
+    assert line.startswith(f"Error: Invalid value for '{option}': a bare "), line
+    assert f"did you mean {meant}?" in line, line
+    bare = args[-1]
+    base = {"--moment": "Nmm", "--load": "N", "--stiffness": "N/mm^1.5"}[option]
+    for written in (f"{bare}{base}", meant):
+        fixed = [*args[:-1], written]
+        assert run_entry(capsys, "solve", "6205", *fixed)[0] == 0, written
+    assert "274869" in line or option != "--stiffness"
+
+
+def test_bare_numbers_in_the_bearing_range_and_rings_by_hand_are_used():
+    """Plausible bare numbers pass, a ring by hand has no scale to judge by, and 0 is no load."""
+    for args in (
+        ["6205", "-F", "3000", "--moment", "5000"],
+        ["6205", "-F", "8", "-A", "0"],
+        ["6205", "-F", "3000", "-K", "274869"],
+        ["-z", "8", "-F", "3", "-K", "4700"],
+    ):
+        assert invoke("solve", *args).exit_code == 0, args

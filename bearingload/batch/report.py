@@ -23,6 +23,7 @@ from bearingload.bearings.oil import OIL_INPUTS
 from bearingload.reports.quantities import SERVICE_KEYS, units
 from bearingload.reports.render import Column, Table, csv_block, csv_header, render
 from bearingload.reports.solve import INPUT_KEYS, REPORT_KEYS, column
+from bearingload.studies.matrix import MATRIX_KEYS
 
 #: The most rows json, markdown and table hold in memory (csv is streamed without a limit).
 MAX_HELD_ROWS = 100_000
@@ -46,7 +47,7 @@ _BEARING_ONLY = (
 _COMBINED_IF_GIVEN = ("moment_cross", "contact_angle")
 #: The output columns of a combined-load file (those of ``solve --format csv`` with an axial
 #: load), after the row number.
-COMBINED_KEYS = (
+COMBINED_KEYS: tuple[str, ...] = (
     "bearing", "method", "balls", "load", "axial_load", "moment", "moment_cross",
     "misalignment", "contact_angle", "tilt_radius", "rotating", "stiffness", "clearance",
     "clearance_pick", "cage_angle", *RESULT_KEYS, "q_max", "loaded_balls", "p_max_inner",
@@ -56,6 +57,8 @@ COMBINED_KEYS = (
     "reference_rating_life_hours", "dynamic_rating", "equivalent_load", "rating_life",
     "rating_life_hours", *SERVICE_KEYS[:1], "ball_density", *SERVICE_KEYS[1:],
 )  # fmt: skip
+#: ... then the entries of the 5x5 tangent stiffness matrix, as solve's csv writes them.
+COMBINED_KEYS += MATRIX_KEYS
 #: What the rows of a combined-load file carry beyond the columns, as solve's json names it:
 #: the model (the ball dynamics added at a speed) and each ball's inner and outer contact angle
 #: [°] and load [N] (json only; null for a radial row, whose model is the radial engine's).
@@ -159,6 +162,28 @@ def csv_head(columns: Sequence[Column]) -> str:
 def csv_rows(columns: Sequence[Column], rows: Sequence[int], values: dict[str, Any]) -> str:
     """The csv lines of one solved chunk."""
     return csv_block(columns, {"row": rows} | row_values(columns, len(rows), values))
+
+
+#: The last csv column: why a row was skipped (blank where it was solved); json lists the
+#: skipped rows under ``skipped``, table and markdown in the notes.
+SKIPPED = Column("skipped", "skipped: the reason", "", None, "left")
+
+
+def csv_chunk(
+    columns: Sequence[Column],
+    rows: Sequence[int],
+    values: dict[str, Any],
+    skipped: Sequence[tuple[int, str]],
+) -> str:
+    """The csv lines of one chunk in row order (``columns`` ending with :data:`SKIPPED`): each
+    solved row, and each skipped row with its number and its reason, its other cells blank."""
+    solved = csv_rows(columns, rows, values).splitlines(keepends=True) if len(rows) else []
+    numbers = [r for r, _ in skipped]
+    blank: dict[str, list[Any]] = {c.key: [None] * len(skipped) for c in columns}
+    blank |= {"row": numbers, "skipped": [m for _, m in skipped]}
+    refused = csv_block(columns, blank).splitlines(keepends=True) if skipped else []
+    lines = list(zip(rows, solved, strict=True)) + list(zip(numbers, refused, strict=True))
+    return "".join(line for _, line in sorted(lines, key=lambda pair: pair[0]))
 
 
 def row_values(columns: Sequence[Column], n: int, values: dict[str, Any]) -> dict[str, Any]:

@@ -35,6 +35,7 @@ from bearingload.batch.read import (
     read_column,
     row_message,
 )
+from bearingload.bearings.lubrication import speed_needed
 from bearingload.bearings.mounting import MOUNTING_PARAMS
 from bearingload.bearings.oil import OIL_INPUTS
 from bearingload.errors import BearingloadError, ConvergenceError, InputError
@@ -364,7 +365,7 @@ def with_oil_viscosity(cols: dict[str, list[Any]], n: int, bad: dict[int, str]) 
                 seen[key] = (None, row_message(exc))
         value, why = seen[key]
         if why is None and speed[i] is None:
-            why = f"{first}: needs the shaft speed (a speed cell) for the rated viscosity nu_1"
+            why = row_message(speed_needed(first))
         if why is None:
             nu[i] = value
         else:

@@ -40,9 +40,10 @@ _ISO = re.compile(
 #: A matched pair or set after the contact-angle letter (NSK's 7205BDB, 7205BDF, 7205BDT; the
 #: /DB form), with the preload class the pair is sold at where one follows: NSK's EL, L, M, H
 #: (7205CDBL), SKF's A ... D (7205ACDBA), FAG's UL; an accuracy class may follow (DBLP4).
-_PAIR = re.compile(r"D[BFT](?:[\s/-]?(?P<cls>EL|UL|[LMHA-D])(?=$|[^A-Z]|P\d))?(?=$|[^A-Z]|P\d)")
+#: (These two are pattern texts, compiled by re at their first use: a plain bearing needs neither.)
+_PAIR = r"D[BFT](?:[\s/-]?(?P<cls>EL|UL|[LMHA-D])(?=$|[^A-Z]|P\d))?(?=$|[^A-Z]|P\d)"
 #: DB, DF, DT followed by letters not read: a set, not one bearing.
-_PAIR_LIKE = re.compile(r"D[BFT][A-Z]+")
+_PAIR_LIKE = r"D[BFT][A-Z]+"
 _GOST = re.compile(r"^(?:[^-\s]{1,6}\s*-\s*)?(?P<design>[346])6(?P<series>[1-4])(?P<bore>\d{2})$")
 
 
@@ -131,7 +132,7 @@ def refuse_gost_suffix(text: str) -> None:
     if m is None:
         return
     rest, name = m.group("rest").strip(), m.group("name")
-    if _PAIR.match(rest) or _PAIR_LIKE.match(rest):
+    if re.match(_PAIR, rest) or re.match(_PAIR_LIKE, rest):
         why = (
             f"the matched-pair suffix {rest} is read on the ISO form only (7205BDB); give "
             f"{name} with the arrangement {rest[:2]} and its preload force"
@@ -161,7 +162,7 @@ def split_pair(text: str) -> tuple[str, str | None, str | None]:
     """
     norm = re.sub(r"\s+", " ", text.strip().upper())
     m = _ISO.match(norm)
-    found = _PAIR.search(m.group("rest")) if m else None
+    found = re.search(_PAIR, m.group("rest")) if m else None
     if m is not None and found is None:
         _refuse_unread_set(text, m)
     if m is None or found is None:
@@ -185,7 +186,7 @@ def _refuse_unread_set(text: str, m: re.Match[str]) -> None:
             f"angle, without clearance): give {m.group('series')}{m.group('bore')}"
             f"{m.group('letter')}",
         )
-    unread = _PAIR_LIKE.search(m.group("rest"))
+    unread = re.search(_PAIR_LIKE, m.group("rest"))
     if unread is not None:
         raise InputError(
             "bearing",
@@ -270,9 +271,9 @@ def find_angular(parsed: AngularDesignation, maker: str | None = None) -> Angula
         and series there are; (``maker``) when ``maker`` has no row for it.
     """
     m = _ISO.match(re.sub(r"\s+", " ", parsed.text.upper()))
-    if m and not _PAIR.search(m.group("rest")):
+    if m and not re.search(_PAIR, m.group("rest")):
         _refuse_unread_set(parsed.text, m)
-    if m and _PAIR.search(m.group("rest")):
+    if m and re.search(_PAIR, m.group("rest")):
         raise InputError(
             "bearing",
             f"{parsed.text!r} names a matched pair or set of {parsed.name} (suffix DB "

@@ -209,7 +209,7 @@ class LimitingSpeeds:
 #: RD, LLU, LLB, DDU, VV ...); shields (Z, ZZ, 2Z) are not seals. Koyo's table of sealed deep
 #: groove bearings (CAT. No. B2001RUS p. 20) prints the open bearing's grease limit for ZZ and
 #: lower ones for its seals, so the open bearing's limits are not those of a sealed one.
-_SEAL = re.compile(r"^(2?R[SDUZ]\w*|LL\w*|DD\w*|VV\w*|2?RSR\w*)$")
+_SEAL = r"^(2?R[SDUZ]\w*|LL\w*|DD\w*|VV\w*|2?RSR\w*)$"  # compiled at first use
 
 
 def sealed(suffixes: tuple[str, ...]) -> bool:
@@ -218,7 +218,7 @@ def sealed(suffixes: tuple[str, ...]) -> bool:
     >>> sealed(("2RS1", "C3")), sealed(("ZZ",)), sealed(("C3",))
     (True, False, False)
     """
-    return any(_SEAL.match(s.upper()) for s in suffixes)
+    return any(re.match(_SEAL, s.upper()) for s in suffixes)
 
 
 def _float(text: str) -> float | None:

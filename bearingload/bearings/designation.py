@@ -165,12 +165,13 @@ _GOST = re.compile(
     r"(?:(?P<design>[1-9]\d?)0)?(?P<series>\d)(?P<bore>\d{2})"
     r"(?P<rest>(?:[^0-9].*)?)$"
 )
-_PREFIX = re.compile(
+#: Prefix and suffix patterns: texts compiled by re at their first use (a plain 306 has neither).
+_PREFIX = (
     r"^(?P<category>\d?[ABC])?"
     r"(?:(?P<friction>\d)?(?P<clearance>[0-9MH]))?"
     r"(?P<accuracy>[0245678T])$"
 )
-_SUFFIX_TOKENS = re.compile(
+_SUFFIX_TOKENS = (
     r"(?P<clearance>C[1-5N])(?![0-9])"
     r"|(?P<precision>P(?:6X|[0245-6]))(?P<pclr>[1-5])?(?![0-9])"
     r"|(?P<seal>2RS[1HR]?|RS[1HR]?|2RZ|RZ|2Z|ZZ|Z|2NSE|NSE|DDU|DD|LLU|LLB|LLH|LU|LB|VV|NR|N)"
@@ -283,7 +284,7 @@ def _refuse_unmodelled(raw: str, norm: str) -> None:
     ``6-``) names a bearing type of :data:`_UNMODELLED`."""
     bodies = [norm]
     m = re.match(r"^([^-\s]{1,6})\s*-\s*(\S.*)$", norm)
-    if m and _PREFIX.match(m.group(1)):
+    if m and re.match(_PREFIX, m.group(1)):
         bodies.append(m.group(2))
     for body in bodies:
         for pattern, what in _UNMODELLED:
@@ -314,7 +315,7 @@ def _parse_suffixes(text: str, rest: str) -> tuple[tuple[str, ...], str | None, 
     for chunk in re.split(r"[-/\s]+", rest.strip(" -/")):
         pos = 0
         while pos < len(chunk):
-            m = _SUFFIX_TOKENS.match(chunk, pos)
+            m = re.compile(_SUFFIX_TOKENS).match(chunk, pos)
             if m is None:
                 # An unknown token runs to the end of the chunk, except a trailing clearance
                 # code glued to it ("TN9C3").
@@ -406,7 +407,7 @@ def parse(text: str) -> Designation:
     group = None
     prefix = m.group("prefix")
     if prefix is not None:
-        p = _PREFIX.match(prefix)
+        p = re.match(_PREFIX, prefix)
         if p is None:
             raise _error(raw, f"prefix {prefix!r} is not '[friction][clearance group]accuracy'")
         group = p.group("clearance")

@@ -42,8 +42,18 @@ from typing import Any
 import numpy as np
 from numpy.typing import ArrayLike
 
+from bearingload.errors import InputError
 from bearingload.numerics import scalar_out
 from bearingload.validate import finite_positive
+
+
+def speed_needed(parameter: str) -> InputError:
+    """The refusal of an operating viscosity without a shaft speed, naming ``parameter``: the
+    viscosity, or the oil input that gives it (``oil``, ``viscosity_40`` ...), as the user typed
+    it. The rated viscosity nu_1 (:func:`rated_viscosity`), which kappa compares the viscosity
+    with, needs the speed. One message for solve's options, table life and batch's cells."""
+    return InputError(parameter, "needs the shaft speed ('speed') for the rated viscosity nu_1")
+
 
 #: Pressure-viscosity coefficient alpha of a mineral oil (default). [1/Pa]
 PRESSURE_VISCOSITY = 2.2e-8

@@ -276,7 +276,7 @@ def _arr(value: Any) -> Any:
 def _modified(op: Operating, b: LifeBasis, a1: Any, v: dict[str, Any]) -> None:
     """nu_1, kappa, e_C, C_u, a_ISO, the modified lives and the film, into ``v``."""
     if op.speed is None:
-        raise InputError("viscosity", "needs the shaft speed ('speed') for the rated viscosity")
+        raise lub.speed_needed("viscosity")
     if b.pitch_diameter is None:
         raise InputError("viscosity", "needs the pitch diameter (a bearing or 'pitch_diameter')")
     assert op.viscosity is not None

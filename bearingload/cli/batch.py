@@ -9,7 +9,7 @@ from typing import Any, BinaryIO
 
 import click
 
-from bearingload.cli.options import CONTEXT, library_errors, output_options
+from bearingload.cli.options import CONTEXT, library_errors, output_options, quiet_option
 
 #: Warnings shown on the terminal; json lists every row's warnings.
 MAX_WARNINGS_SHOWN = 20
@@ -30,9 +30,15 @@ MAX_WARNINGS_SHOWN = 20
     "Default: 10000.",
 )
 @output_options
+@quiet_option
 @library_errors
 def batch(
-    cases: BinaryIO, strict: bool, chunk_size: int | None, fmt: str, output: str | None
+    cases: BinaryIO,
+    strict: bool,
+    chunk_size: int | None,
+    fmt: str,
+    output: str | None,
+    quiet: bool,
 ) -> None:
     """Solve every case (row) of a csv file: one output row per case, in input order, with the
     input file's row number (the header is row 1), the inputs and the columns that
@@ -77,10 +83,12 @@ def batch(
     (contact_angles_inner, contact_angles_outer, ball_loads_inner, ball_loads_outer).
 
     A bad row (a negative load, an unknown unit or bearing, z = 0, a line with the wrong
-    number of cells, a line that is not UTF-8 text) is named on standard error with its row
-    number and the reason; the other rows are still solved and written, and the exit status is
-    1 when any row was skipped (0: every row solved; 2: bad command line or header, or a bad
-    row with --strict).
+    number of cells, a line that is not UTF-8 text) is skipped: the output keeps it with its
+    row number and the reason (csv: the last column, skipped; json: skipped; table and
+    markdown: the notes), standard error names it too; the other rows are still solved and
+    written, and the exit status is 1 when any row was skipped (0: every row solved; 2: bad
+    command line or header, or a bad row with --strict). A last line on standard error counts
+    the rows solved and skipped and the warnings; -q leaves that line alone.
 
     The rows that share a bearing (or ring), method and engine are solved together, chunk by
     chunk, by one vectorised call of the function solve uses for one case; each row's answer
@@ -103,9 +111,10 @@ def batch(
     from bearingload.batch.read import CHUNK_ROWS, read_cases
     from bearingload.batch.report import (
         MAX_HELD_ROWS,
+        SKIPPED,
         batch_columns,
+        csv_chunk,
         csv_head,
-        csv_rows,
         held_keys,
         row_values,
     )
@@ -131,7 +140,7 @@ def batch(
     progress = _Progress()
     with _Sink(output, strict) as sink:
         if fmt == "csv":
-            sink.write(csv_head(columns))
+            sink.write(csv_head([*columns, SKIPPED]))
         for block in blocks:
             total += len(block.numbers) + len(block.errors)
             part = solver.solve(block)
@@ -140,10 +149,9 @@ def batch(
                 row, message = part.errors[0]
                 raise click.UsageError(f"Invalid value in row {row}: {message}")
             skipped += part.errors
-            warned = _row_messages(part, warned, progress)
+            warned = _row_messages(part, warned, progress, quiet)
             if fmt == "csv":
-                if part.rows:
-                    sink.write(csv_rows(columns, part.rows, part.values))
+                sink.write(csv_chunk([*columns, SKIPPED], part.rows, part.values, part.errors))
             else:
                 held_rows += part.rows
                 if len(held_rows) > MAX_HELD_ROWS:
@@ -164,28 +172,41 @@ def batch(
             from bearingload.batch.report import held_report
 
             sink.write(held_report(columns, held_rows, held, skipped, fmt))
-    if warned > MAX_WARNINGS_SHOWN:
+    _summary(total, len(skipped), warned, quiet)
+    if skipped:
+        click.get_current_context().exit(1)
+
+
+def _summary(total: int, skipped: int, warned: int, quiet: bool) -> None:
+    """The last line on stderr: the rows solved and skipped and the warnings (said where there
+    were skipped rows or warnings), after the count of warnings not shown."""
+    if warned > MAX_WARNINGS_SHOWN and not quiet:
         click.echo(
             f"Warning: {warned - MAX_WARNINGS_SHOWN} more warnings not shown (--format json "
             "lists every row's warnings)",
             err=True,
         )
-    if skipped:
-        click.echo(f"Warning: {len(skipped)} of {total} rows skipped (exit status 1)", err=True)
-        click.get_current_context().exit(1)
+    if skipped or warned:
+        where = "; the output names each skipped row and its reason" if skipped else ""
+        status = " (exit status 1)" if skipped else ""
+        click.echo(
+            f"{total - skipped} of {total} rows solved, {skipped} skipped{status}, "
+            f"{warned} warning{'' if warned == 1 else 's'}{where}",
+            err=True,
+        )
 
 
-def _row_messages(part: Any, warned: int, progress: _Progress) -> int:
+def _row_messages(part: Any, warned: int, progress: _Progress, quiet: bool) -> int:
     """Print the chunk's skipped rows and the checks' warnings in row order (so that stderr
-    does not depend on --chunk-size), the warnings up to :data:`MAX_WARNINGS_SHOWN` in all;
-    return the number of warnings so far."""
+    does not depend on --chunk-size), the warnings up to :data:`MAX_WARNINGS_SHOWN` in all
+    (``quiet``: none of them); return the number of warnings so far."""
     found = part.values.get("warnings", [])
     messages = [(row, text, False) for row, text in part.errors]
     messages += [(part.rows[i], text, True)
                  for i in compress(range(len(found)), found) for text in found[i]]  # fmt: skip
     for row, text, warning in sorted(messages, key=lambda m: m[0]):  # stable: a row's order
         warned += warning
-        if not warning or warned <= MAX_WARNINGS_SHOWN:
+        if not quiet and (not warning or warned <= MAX_WARNINGS_SHOWN):
             progress.clear()
             click.echo(f"Warning: row {row}: {text}", err=True)
     return warned

@@ -27,6 +27,7 @@ import click
 
 from bearingload.bearings.mounting import MOUNTING_PARAMS
 from bearingload.cli.options import (
+    BARE,
     CageAngle,
     Exponent,
     LibraryArgument,
@@ -624,6 +625,7 @@ class CaseOptions:
     roughness: float | None = None
     pressure_viscosity: float | None = None
     given: frozenset[str] = frozenset()
+    bare: frozenset[str] = frozenset()  # options typed as a bare number (no unit)
 
     @classmethod
     def of(cls, values: dict[str, Any]) -> CaseOptions:
@@ -639,7 +641,8 @@ class CaseOptions:
         values = {k: v for k, v in values.items() if v is not None}
         if "exponent" not in given:
             values.pop("exponent", None)
-        return cls(**values, given=given)
+        bare = frozenset(ctx.meta.get(BARE, ())) if ctx is not None else frozenset()
+        return cls(**values, given=given, bare=bare)
 
     @property
     def radial_load(self) -> float:
@@ -761,6 +764,11 @@ class CaseOptions:
             raise click.UsageError(f"{head} {names}: {why}") from exc
         except InputError as exc:
             raise usage_error(exc) from exc
+        given = next((n for n in OIL_PARAMS if oil[n] is not None), None)
+        if given is not None and self.speed is None:  # name the option typed, not --viscosity
+            from bearingload.bearings.lubrication import speed_needed
+
+            raise usage_error(speed_needed(given))
         return nu, None if note is None else option_message(note)
 
     def dynamics_arguments(self) -> dict[str, Any]:

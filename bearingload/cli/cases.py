@@ -85,10 +85,13 @@ def resolve_bearings(case: CaseOptions, stiffness: float | None, **override: Any
     """The resolved bearing, or the same bearing at the min, mean and max of its class
     (--clearance-pick range): :func:`bearingload.bearings.resolve.resolve_bearings` of the
     case's arguments (``stiffness`` in N/mm^m; ``override`` replaces arguments)."""
+    from bearingload.bearings.plausible import BEARING_SCALE, refuse_implausible_bare
     from bearingload.bearings.resolve import resolve_bearings as resolve
 
     arguments = case.bearing_arguments(stiffness) | override
     found = resolve(arguments.pop("designation"), **arguments)
+    bare = {n: float(getattr(case, n)) for n in case.bare if n in BEARING_SCALE}
+    refuse_implausible_bare(found[0], bare)
     if "clearance_pick" in case.given and found[0].clearance_class is None:
         raise click.UsageError(
             "Invalid value for '--clearance-pick': it picks the min, mean or max of a clearance "

@@ -9,9 +9,11 @@ from typing import Any
 import click
 
 from bearingload.errors import BearingloadError, InputError
-from bearingload.units import BASE_UNIT, UNITS, parse_cage_angle, parse_quantity
+from bearingload.units import BASE_UNIT, UNITS, is_bare, parse_cage_angle, parse_quantity
 
 CONTEXT = {"help_option_names": ["-h", "--help"], "max_content_width": 100}
+#: Key of click's context meta: the names of the options given a bare number (no unit).
+BARE = "bearingload.bare"
 
 
 class Quantity(click.ParamType):
@@ -32,6 +34,8 @@ class Quantity(click.ParamType):
             number = parse_quantity(value, self.kind, parameter=param.name if param else None)
         except InputError as exc:
             self.fail(exc.message, param, ctx)
+        if ctx is not None and param is not None and is_bare(value):
+            ctx.meta.setdefault(BARE, set()).add(param.name)  # judged against the bearing later
         if self.kind == "stiffness":
             return str(value)  # converted with the exponent by the command (stiffness_value)
         if self.positive and not number > 0:

@@ -1,6 +1,6 @@
 """``--plot FILE`` of the commands: checks before any work, writing after, one error line.
 
-matplotlib is an optional extra (``pip install 'bearingload[plot]'``), imported only when a plot
+matplotlib is an optional extra (``pip install matplotlib``), imported only when a plot
 is asked for.
 """
 
@@ -71,5 +71,5 @@ def ball_loads_plot_option(command: Callable[..., Any]) -> Callable[..., Any]:
         type=click.Path(dir_okay=False),
         help="Also draw the ball loads around the ring that the command solved (exact model; "
         "with a combined load also every ball's contact angle) into FILE; its extension gives "
-        "the format (.png, .pdf, .svg ...). Needs matplotlib: pip install 'bearingload[plot]'.",
+        "the format (.png, .pdf, .svg ...). Needs matplotlib: pip install matplotlib.",
     )(command)

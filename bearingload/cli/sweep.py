@@ -50,7 +50,7 @@ SERVICE_REFUSAL = (
     "--plot",
     type=click.Path(dir_okay=False),
     help="Also draw x, y, Q_max and stiffness over the cage angle into FILE; its extension "
-    "gives the format (.png, .pdf, .svg ...). Needs matplotlib: pip install 'bearingload[plot]'.",
+    "gives the format (.png, .pdf, .svg ...). Needs matplotlib: pip install matplotlib.",
 )
 @click.option(
     "--kurochkin-T",

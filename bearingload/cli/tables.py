@@ -167,19 +167,39 @@ def _checked(directory: str) -> tuple[Manifest, Callable[[Entry], str]]:
     return manifest, producer(main, manifest)
 
 
+class Tolerance(click.ParamType):
+    """--rtol/--atol: a number the manifest would take (``tables_ci.manifest.tolerance``)."""
+
+    name = "float"
+
+    def convert(self, value: Any, param: click.Parameter | None, ctx: click.Context | None) -> Any:
+        from bearingload.errors import InputError
+        from bearingload.tables_ci.manifest import tolerance
+
+        try:
+            number = value if isinstance(value, float) else float(value)
+            return tolerance(param.name if param and param.name else "tolerance", number)
+        except ValueError as exc:
+            message = exc.message if isinstance(exc, InputError) else f"not a number: {value!r}"
+            self.fail(message, param, ctx)
+
+
+TOLERANCE = Tolerance()
+
+
 def _tolerance_options(func: Callable[..., Any]) -> Callable[..., Any]:
     from bearingload.tables_ci.tableset import ATOL, RTOL
 
     func = click.option(
         "--atol",
-        type=click.FloatRange(min=0.0),
+        type=TOLERANCE,
         default=ATOL,
         show_default=True,
         help="Absolute floor: numbers closer than this agree (zeros).",
     )(func)
     return click.option(
         "--rtol",
-        type=click.FloatRange(min=0.0),
+        type=TOLERANCE,
         default=RTOL,
         show_default=True,
         help="Relative tolerance of a number, |a - b| <= rtol max(|a|, |b|); an entry's own "
@@ -304,8 +324,8 @@ def _file_name(words: tuple[str, ...], fmt: str) -> str:
     type=click.Choice(["csv", "markdown", "json"]),
     help="The table's format. Default: from the file's extension, else csv.",
 )
-@click.option("--rtol", type=click.FloatRange(min=0.0), help="This file's relative tolerance.")
-@click.option("--atol", type=click.FloatRange(min=0.0), help="This file's absolute floor.")
+@click.option("--rtol", type=TOLERANCE, help="This file's relative tolerance (a number >= 0).")
+@click.option("--atol", type=TOLERANCE, help="This file's absolute floor (a number >= 0).")
 @manifest_errors
 def add(
     directory: str,

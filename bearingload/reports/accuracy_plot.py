@@ -36,7 +36,7 @@ def plot_work_precision(rows: list[dict[str, Any]], path: str) -> None:
         matplotlib.use("Agg")
         import matplotlib.pyplot as plt
     except ImportError:
-        raise InputError("plot", "needs matplotlib: pip install 'bearingload[plot]'") from None
+        raise InputError("plot", "needs matplotlib: pip install matplotlib") from None
     fig, axes = plt.subplots(1, 2, figsize=(12, 6), sharey=True)
     methods = list(dict.fromkeys(r["method"] for r in rows))
     for ax, timing, title in (

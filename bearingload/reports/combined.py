@@ -34,6 +34,7 @@ from bearingload.reports.solve import (
     with_service,
 )
 from bearingload.studies.combined_bearing import CombinedCase, combined_values
+from bearingload.studies.matrix import MATRIX_COLUMNS, MATRIX_KEYS, MATRIX_ROWS
 
 INPUT_KEYS = (
     "bearing",
@@ -93,7 +94,7 @@ MATRIX_UNITS = (
     "N/mm, N/rad, N mm/mm, N mm/rad"
 )
 #: The ``units`` entries of the two matrices: the true tangent and its symmetric part.
-MATRIX_KEYS = {"stiffness_matrix": MATRIX_UNITS, "stiffness_matrix_symmetric": MATRIX_UNITS}
+MATRIX_UNITS_OF = {"stiffness_matrix": MATRIX_UNITS, "stiffness_matrix_symmetric": MATRIX_UNITS}
 PER_BALL_KEYS = (
     "ball",
     "ball_angles",
@@ -173,7 +174,11 @@ def combined_report(
         tables.append(geometry_table(cases[0].bearing))
     summary = _summary(records, cases[0].bearing, getattr(cases[0].result, "model", None))
     summary = dataclasses.replace(summary, notes=[*summary.notes, *service_notes(service)])
-    tables += [summary, _balls_human(cases, records)]
+    tables.append(summary)
+    for c in cases:
+        pick = f" (G_r {c.bearing.clearance_pick})" if len(cases) > 1 else ""
+        tables.append(matrix_table(c.result.stiffness_matrix, f"tangent stiffness matrix{pick}"))
+    tables.append(_balls_human(cases, records))
     return render(tables, fmt)
 
 
@@ -186,8 +191,24 @@ def _blank(record: dict[str, Any], keys: Sequence[str]) -> dict[str, Any]:
 
 
 def _case_table(records: Sequence[dict[str, Any]]) -> Table:
-    keys = given_keys(records, tuple(dict.fromkeys(INPUT_KEYS + ANSWER_KEYS)))
+    keys = given_keys(records, tuple(dict.fromkeys(INPUT_KEYS + ANSWER_KEYS + MATRIX_KEYS)))
     return Table("cases", [column(k, 1.5) for k in keys], [_blank(r, keys) for r in records])
+
+
+def matrix_table(matrix: Any, title: str = "tangent stiffness matrix") -> Table:
+    """A 5x5 ``stiffness_matrix`` as people read it: a row per force or moment, a column per
+    displacement or tilt, each entry d(row)/d(column) in the units the row and column name."""
+    columns = [Column("row", "", align="left")]
+    columns += [Column(m, f"d/d({m}) [1/{u}]", "", 6) for m, u in MATRIX_COLUMNS]
+    moves = [m for m, _ in MATRIX_COLUMNS]
+    rows = []
+    for (force, unit), row in zip(MATRIX_ROWS, matrix, strict=True):
+        rows.append({"row": f"{force} [{unit}]"} | dict(zip(moves, map(float, row), strict=True)))
+    notes = [
+        "Entry: the change of the row's force or moment per unit of the column's motion "
+        f"({MATRIX_UNITS}); json: stiffness_matrix, csv: stiffness_matrix_11 ... _55."
+    ]
+    return Table(title, columns, rows, notes)
 
 
 def _balls(c: CombinedCase) -> list[tuple[float, float, float, float]]:
@@ -364,7 +385,7 @@ def _document(
         res = c.result
         found = contact_values(res, c.bearing.contact_angle)
         docs.append(
-            dict(r)
+            {k: v for k, v in r.items() if k not in MATRIX_KEYS}  # json: the matrix whole
             | {
                 "model": found["model"],
                 "ball_angles": res.ball_angles,
@@ -383,7 +404,7 @@ def _document(
     keys = list(dict.fromkeys(k for d in docs for k in d))
     return {
         "cases": docs,
-        "units": units(keys, 1.5) | MATRIX_KEYS,
+        "units": units(keys, 1.5) | MATRIX_UNITS_OF,
         "bearing": geometry_document(cases[0].bearing),
         "warnings": printed_warnings(collect_combined_warnings(cases), service),
     }

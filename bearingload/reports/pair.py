@@ -20,7 +20,7 @@ from collections.abc import Sequence
 from typing import Any
 
 from bearingload.bearings.preload import Preload
-from bearingload.reports.combined import ANGULAR_LABELS, MATRIX_KEYS, contact_angle_shown
+from bearingload.reports.combined import ANGULAR_LABELS, MATRIX_UNITS_OF, contact_angle_shown
 from bearingload.reports.quantities import SERVICE_KEYS, units
 from bearingload.reports.render import Column, Table, render
 from bearingload.reports.solve import (
@@ -33,6 +33,7 @@ from bearingload.reports.solve import (
 )
 from bearingload.studies.bearing_pair import ARRANGEMENT_NAMES, PairCase, pair_service_values
 from bearingload.studies.combined_bearing import combined_values
+from bearingload.studies.matrix import MATRIX_KEYS
 
 #: The pair's inputs (every row of the csv, the JSON case).
 PAIR_INPUTS = ("bearing", "arrangement", "balls", "load", "axial_load", "moment", "moment_cross",
@@ -141,7 +142,11 @@ def pair_records(
     of :func:`pair_report` and ``batch`` show them; ``service``: each bearing's service values
     (:class:`bearingload.bearings.service_life.ServiceLife`)."""
     pair = pair_record(c) | pair_service_values(c, service)
-    records = with_service([combined_values(b) for b in c.bearings], service)
+    # each bearing's record without its own matrix (the pair's is the shaft's: json, terminal)
+    singles = [
+        {k: v for k, v in combined_values(b).items() if k not in MATRIX_KEYS} for b in c.bearings
+    ]
+    records = with_service(singles, service)
     for k in range(2):
         if c.result.unloaded[k]:  # no loaded ball: no largest angle of one
             records[k]["contact_angle_max"] = None
@@ -173,9 +178,12 @@ def pair_report(
     speed_note = _speed_model(c, pair)[0]
     notes = [*NOTES, *([speed_note] if speed_note else []), *material_note(c.bearing)]
     notes += [MODIFIED_NOTE] if any(k.startswith("modified_") for k in pair) else []
+    from bearingload.reports.combined import matrix_table
+
     notes += [] if c.preload_class is None else [f"Preload: {c.preload_class.source}."]
-    title = _title(pair, c.preload_class)
-    tables += [Table(title, columns, rows, notes + service_notes(service)), _balls_table(c)]
+    summary = Table(_title(pair, c.preload_class), columns, rows, notes + service_notes(service))
+    shaft = matrix_table(c.result.stiffness_matrix, "tangent stiffness matrix of the shaft")
+    tables += [summary, shaft, _balls_table(c)]
     return render(tables, fmt)
 
 
@@ -232,7 +240,7 @@ def _document(
     keys = list(dict.fromkeys([*doc, *(k for s in singles["cases"] for k in s)]))
     return {
         "cases": [doc],
-        "units": units(keys, 1.5) | MATRIX_KEYS,
+        "units": units(keys, 1.5) | MATRIX_UNITS_OF,
         "bearing": geometry_document(c.bearing),
         "warnings": said,
     }

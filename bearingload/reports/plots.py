@@ -17,7 +17,7 @@ import numpy as np
 
 from bearingload.errors import BearingloadError
 
-INSTALL_HINT = "--plot needs matplotlib: pip install 'bearingload[plot]'"
+INSTALL_HINT = "--plot needs matplotlib: pip install matplotlib"
 
 
 class PlotUnavailable(BearingloadError):

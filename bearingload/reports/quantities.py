@@ -284,6 +284,20 @@ SERVICE_KEYS = (
 )
 
 
+def _matrix_quantities() -> list[Quantity]:
+    from bearingload.studies.matrix import MATRIX_COLUMNS, MATRIX_ROWS, matrix_key
+
+    out = []
+    for i, (force, f_unit) in enumerate(MATRIX_ROWS):
+        for j, (move, m_unit) in enumerate(MATRIX_COLUMNS):
+            label = f"stiffness d{force}/d({move})"
+            out.append(Quantity(matrix_key(i, j), label, f"{f_unit}/{m_unit}"))
+    return out
+
+
+QUANTITIES |= {q.key: q for q in _matrix_quantities()}
+
+
 def quantity(key: str) -> Quantity:
     """The quantity of ``key``; a KeyError names the known keys."""
     try:

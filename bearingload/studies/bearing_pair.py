@@ -192,29 +192,29 @@ def _solve_pairs(
         r = solve_pair(b.balls, load, axial_load, **common,
                        stiffness=b.stiffness if b.stiffness_given else None)  # fmt: skip
     n = int(np.size(r.x))
-    cross = np.broadcast_to(np.asarray(r.moment_cross, dtype=float), np.shape(r.x)).reshape(-1)
-    tilted = [moment is not None or bool(x) for x in cross]  # else free to tilt: no warning
-    if np.ndim(r.x) == 0 or len(set(tilted)) > 1:  # one case, or each case on its own
-        ones = [r if np.ndim(r.x) == 0 else _case_at(r, i, n) for i in range(n)]
-        return [_pair_case(b, one, _singles(b, one, lever, rotating, dynamic_rating, t), rotating)
-                for one, t in zip(ones, tilted, strict=True)]  # fmt: skip
-    every = _singles(b, r, lever, rotating, dynamic_rating, tilted[0])  # on the arrays, once
+    if np.ndim(r.x) == 0:  # one case
+        return [_pair_case(b, r, _singles(b, r, lever, rotating, dynamic_rating), rotating)]
+    every = _singles(b, r, lever, rotating, dynamic_rating)  # on the arrays, once
     return [
         _pair_case(b, _case_at(r, i, n), [_single_at(c, i, n) for c in every], rotating)
         for i in range(n)
     ]
 
 
-def _singles(b: ResolvedBearing, r: PairDistribution, lever: Any, rotating: str,
-             dynamic_rating: Any, tilted: bool) -> list[CombinedCase]:  # fmt: skip
+def _singles(
+    b: ResolvedBearing, r: PairDistribution, lever: Any, rotating: str, dynamic_rating: Any
+) -> list[CombinedCase]:
     """Each bearing of the case(s) ``r`` as a single combined case (its lives, pressures, P0,
-    s0, checks; arrays over the cases); ``tilted``: a moment is given, and each bearing's tilt
-    is weighed as one bearing's under a moment (else the shaft is free to tilt, as one bearing's
-    ring under no moment, and no tilt is warned of)."""
+    s0, checks; arrays over the cases); each bearing's tilt weighed as one bearing's is
+    (:func:`bearingload.studies.combined_bearing.warned_tilt`)."""
     from bearingload.studies.combined_bearing import _combined_case
 
-    return [_combined_case(b, rk, rk.load, rk.axial_load, rk.moment if tilted else None, None,
-                           None, lever, rotating, dynamic_rating) for rk in r.bearings]  # fmt: skip
+    return [
+        _combined_case(
+            b, rk, rk.load, rk.axial_load, rk.moment, None, None, lever, rotating, dynamic_rating
+        )
+        for rk in r.bearings
+    ]
 
 
 def _single_at(c: CombinedCase, i: int, n: int) -> CombinedCase:

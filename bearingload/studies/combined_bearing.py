@@ -23,6 +23,7 @@ import numpy as np
 from bearingload.bearings.mounting import result_fields
 from bearingload.bearings.resolve import ResolvedBearing
 from bearingload.errors import InputError
+from bearingload.studies.matrix import matrix_columns
 
 if TYPE_CHECKING:  # the solver is imported where a case is solved
     from bearingload.models.combined import CombinedDistribution
@@ -157,12 +158,7 @@ def _combined_case(
         p_i, p_o = np.max(found[0], axis=-1), np.max(found[1], axis=-1)
     fr, fa, q = each(load), each(axial_load), each(r.q_max)
     loaded = np.broadcast_to(r.loaded_balls, shape).ravel().tolist()
-    tilts = each(ring_tilt(r))
-    cross = [None] * len(q) if moment_cross is None else each(moment_cross)
-    tilted = [None] * len(q) if misalignment is None else each(misalignment)
-    warned = [
-        t if moment is not None or c else m for t, c, m in zip(tilts, cross, tilted, strict=True)
-    ]
+    warned = each(warned_tilt(r))  # the ring's tilt, whatever gives it
     inner = (
         [None] * len(q)
         if p_i is None or p_o is None
@@ -226,18 +222,13 @@ def groove_side_warnings(r: Any, n: int) -> list[str | None]:
     return out
 
 
-def warned_tilt(
-    r: CombinedDistribution,
-    moment: float | None,
-    moment_cross: float | None,
-    misalignment: float | None,
-) -> float | None:
-    """The tilt the checks weigh (:func:`bearingload.bearings.checks.combined_warnings`): the
-    largest tilt of the ring where a moment tilts it, the misalignment imposed alone, else
-    None (a ring free to tilt under no moment). [°]"""
-    if moment is not None or moment_cross:
-        return float(np.max(ring_tilt(r)))
-    return misalignment
+def warned_tilt(r: CombinedDistribution) -> Any:
+    """The tilt the checks weigh (:func:`bearingload.bearings.checks.combined_warnings`), the
+    one rule of every command: the inner ring's tilt, both axes together, whatever gives it
+    (a moment, an imposed misalignment, or a ring free to tilt under an eccentric load: the
+    tilt is the same with --moment 0 as without a moment). Each case's (an array of cases: an
+    array). [°]"""
+    return ring_tilt(r)
 
 
 def check_misalignment(misalignment: Any) -> None:
@@ -483,16 +474,22 @@ def combined_columns(c: CombinedCase) -> dict[str, Any]:
         values = columns[key]
         if values is not None and np.isnan(values).any():
             columns[key] = listed(values)
-    return columns | {
-        "p_max_inner": listed(c.p_max_inner),
-        "p_max_outer": listed(c.p_max_outer),
-        "static_equivalent_load": listed(sel)
-        if sel is None or (isinstance(sel, list) and None in sel)
-        else np.broadcast_to(np.asarray(sel, float), (n,)),
-        "static_safety": listed(c.static_safety),
-        **_density(c.result, n),
-        "warnings": [c.warnings] if n == 1 and np.ndim(c.result.q_max) == 0 else list(c.warnings),
-    }
+    return (
+        columns
+        | matrix_columns(c.result)
+        | {
+            "p_max_inner": listed(c.p_max_inner),
+            "p_max_outer": listed(c.p_max_outer),
+            "static_equivalent_load": listed(sel)
+            if sel is None or (isinstance(sel, list) and None in sel)
+            else np.broadcast_to(np.asarray(sel, float), (n,)),
+            "static_safety": listed(c.static_safety),
+            **_density(c.result, n),
+            "warnings": [c.warnings]
+            if n == 1 and np.ndim(c.result.q_max) == 0
+            else list(c.warnings),
+        }
+    )
 
 
 def _density(r: CombinedDistribution, n: int) -> dict[str, Any]:

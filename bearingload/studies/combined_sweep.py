@@ -254,7 +254,7 @@ def combined_sweep(
     loads = np.asarray(r.ball_loads)
     top = loads.max(axis=1, keepdims=True)
     heaviest = np.argmax(loads >= top * (1.0 - TIE), axis=1) + 1
-    tilt = warned_tilt(r, moment, moment_cross, misalignment)
+    tilt = float(np.max(warned_tilt(r)))
     found = combined_warnings(bearing, load, axial_load, float(np.max(r.q_max)), 2, tilt)
     found += _groove_side(r, angles)
     one = np.asarray(r.loaded_balls) == 1

@@ -236,7 +236,7 @@ def life_against_clearance(
     assert l10r is not None and c_r is not None
     zero = float(l10r[int(np.flatnonzero(with_zero == 0)[0])])
     n = g.size
-    tilt = warned_tilt(r, moment, moment_cross, misalignment)
+    tilt = float(np.max(warned_tilt(r)[:n]))
     found = combined_warnings(bearing, load, axial_load, float(np.max(r.q_max[:n])), 2, tilt)
     one = np.asarray(r.loaded_balls)[:n] == 1
     if one.any() and bearing.balls > 1:

@@ -24,7 +24,7 @@ from collections.abc import Sequence
 from dataclasses import dataclass
 from typing import Any
 
-from bearingload.errors import BearingloadError
+from bearingload.errors import BearingloadError, InputError
 
 #: The manifest's file name inside a folder of tables.
 MANIFEST = "manifest.toml"
@@ -129,7 +129,10 @@ def parse_manifest(text: str, directory: str) -> Manifest:
 
 def _entry(path: str, index: int, raw: dict[str, Any]) -> Entry:
     """One ``[[table]]`` entry, checked."""
-    where: Any = index if not isinstance(raw.get("file"), str) else f'{index} ("{raw["file"]}")'
+    # a control character in the name is shown escaped (the name is then refused)
+    where: Any = (
+        index if not isinstance(raw.get("file"), str) else f'{index} ("{_shown(raw["file"])}")'
+    )
     unknown = sorted(set(raw) - set(REQUIRED) - set(OPTIONAL))
     if unknown:
         allowed = ", ".join((*REQUIRED, *OPTIONAL))
@@ -151,10 +154,17 @@ def _entry(path: str, index: int, raw: dict[str, Any]) -> Entry:
                  **tolerances)  # fmt: skip
 
 
+def _shown(file: str) -> str:
+    """A file name as messages print it: control characters escaped."""
+    return "".join(c if 32 <= ord(c) != 127 else repr(c)[1:-1] for c in file)
+
+
 def check_file_name(file: str, path: str, where: Any) -> None:
     """A plain file name of the folder: no directory part, not hidden, not the manifest."""
     if os.path.basename(file) != file or file in (".", "..") or "\\" in file:
         raise ManifestError(path, f"'file' must be a file name in the folder (got {file!r})", where)
+    if any(ord(c) < 32 or ord(c) == 127 for c in file):
+        raise ManifestError(path, f"'file' cannot hold a control character (got {file!r})", where)
     if file.startswith(".") or file == MANIFEST:
         raise ManifestError(path, f"'file' cannot be {file!r} (hidden, or the manifest)", where)
 
@@ -165,14 +175,24 @@ def format_of(file: str) -> str | None:
     return next((f for f, e in FORMATS.items() if e == ext), None)
 
 
+def tolerance(key: str, value: Any) -> float:
+    """A tolerance (``rtol``, ``atol``) as a float: a finite number >= 0, whether a manifest
+    entry, ``tables check``/``update``/``add`` or a library call gives it (inf or nan would let
+    any change pass). Raises InputError naming ``key``."""
+    if isinstance(value, bool) or not isinstance(value, (int, float)):
+        raise InputError(key, f"must be a number (got {value!r})")
+    if not (math.isfinite(value) and value >= 0):
+        raise InputError(key, f"must be finite and >= 0 (got {value!r})")
+    return float(value)
+
+
 def _tolerance(path: str, where: Any, key: str, value: Any) -> float | None:
     if value is None:
         return None
-    if isinstance(value, bool) or not isinstance(value, (int, float)):
-        raise ManifestError(path, f"'{key}' must be a number (got {value!r})", where)
-    if not (math.isfinite(value) and value >= 0):
-        raise ManifestError(path, f"'{key}' must be finite and >= 0 (got {value!r})", where)
-    return float(value)
+    try:
+        return tolerance(key, value)
+    except InputError as exc:
+        raise ManifestError(path, f"'{key}' {exc.message}", where) from exc
 
 
 def command_words(command: str, path: str, where: Any) -> tuple[str, ...]:

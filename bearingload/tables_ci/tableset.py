@@ -11,7 +11,14 @@ from collections.abc import Callable, Sequence
 from dataclasses import dataclass, field
 
 from bearingload.tables_ci.cells import ABSENT, Cell, compare
-from bearingload.tables_ci.manifest import FORMATS, MANIFEST, Entry, Manifest
+from bearingload.tables_ci.manifest import (
+    FORMATS,
+    MANIFEST,
+    Entry,
+    Manifest,
+    ManifestError,
+    tolerance,
+)
 
 Produce = Callable[[Entry], str]
 
@@ -64,6 +71,19 @@ def unlisted(manifest: Manifest) -> list[str]:
     ]
 
 
+def listed_path(manifest: Manifest, entry: Entry) -> str:
+    """The path of a listed file, which must lie in the folder: a symbolic link leading out of
+    it is refused (check would compare, and update overwrite, a file elsewhere)."""
+    path = os.path.join(manifest.directory, entry.file)
+    if os.path.islink(path):
+        inside = os.path.realpath(manifest.directory)
+        if os.path.dirname(os.path.realpath(path)) != inside:
+            raise ManifestError(
+                manifest.path, f"'file' is a symbolic link out of the folder ({path})", entry
+            )
+    return path
+
+
 def _read(path: str) -> str | None:
     try:
         with open(path, encoding="utf-8", newline="") as fh:
@@ -76,9 +96,10 @@ def compare_folder(
     manifest: Manifest, texts: dict[str, str], rtol: float = RTOL, atol: float = ATOL
 ) -> list[FileState]:
     """How every listed file stands against its regenerated text, then the unlisted files."""
+    rtol, atol = tolerance("rtol", rtol), tolerance("atol", atol)
     states = []
     for entry in manifest.entries:
-        old = _read(os.path.join(manifest.directory, entry.file))
+        old = _read(listed_path(manifest, entry))
         new = texts[entry.file]
         if old is None:
             states.append(FileState(entry.file, "missing", changed=True))
