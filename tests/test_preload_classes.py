@@ -16,7 +16,7 @@ from bearingload.cli import main
 from bearingload.errors import InputError
 from bearingload.studies.bearing_pair import solve_bearing_pair
 
-from .cli_helpers import run_entry
+from .cli_helpers import besides_tilt, run_entry, solved_csv
 
 #: NSK Rolling Bearings CAT. No. E1102e, p. A99, Table 10.2 "Preloads for duplex angular contact
 #: ball bearings" (15°), as printed: bore codes 00 ... 20, (EL, L, M, H) [N]. Table 10.2.2,
@@ -251,7 +251,7 @@ def test_library_class_is_the_tables_force_and_says_so():
 
 def test_solve_with_a_class_is_solve_with_its_force_and_prints_both(capsys):
     code, out, err = run_entry(capsys, "solve", "7205CDBL", "-F", "1kN", "-A", "200N")
-    assert code == 0 and err == ""
+    assert code == 0 and besides_tilt(err) == []
     assert "preload 78 N (NSK class L)" in out.splitlines()[0]
     assert "Preload: preload class L of a 7205C pair (15°), 78 N as ground" in out
     _, by_force, _ = run_entry(
@@ -303,7 +303,7 @@ def test_sweep_takes_a_class(capsys):
     code, out, err = run_entry(
         capsys, "sweep", "7205CDBM", "-F", "1kN", "-A", "200N", "--steps", "3"
     )
-    assert code == 0 and err == "" and "preload 200 N (NSK class M)" in out
+    assert code == 0 and besides_tilt(err) == [] and "preload 200 N (NSK class M)" in out
     assert "Preload: preload class M of a 7205C pair (15°), 200 N as ground" in out
 
 
@@ -316,7 +316,7 @@ def test_batch_reads_a_class_cell_and_the_designations_class():
     out = CliRunner().invoke(
         main, ["batch", "-", "--format", "csv"], input=text, catch_exceptions=False
     )
-    lines = out.stdout.splitlines()
+    lines = solved_csv(out.stdout).splitlines()
     rows = [line.split(",", 1)[1] for line in lines[1:]]
     assert len(rows) == 6 and rows[0:2] == rows[2:4] == rows[4:6]
     assert "row 5: preload: the bearing 7205B (40°) has no preload-class table" in out.stderr
