@@ -275,35 +275,50 @@ cdef inline void add(double *sum, double *err, double x) noexcept nogil:
     err[0] += e
 
 
-cdef void forces(const Case *cs, Loads lo, double *gen, double *size) noexcept nogil:
-    """The generalised ball forces sum_j (q_j - q_0) g_j + q_0 sum_j g'_j, compensated, and the
-    sums of the magnitudes of their terms (_combined_ring.forces)."""
-    cdef int j, i
-    cdef double radial, axial, w_r, w_a, c, s
-    cdef double err[5]
+cdef inline void add_ball(const Case *cs, int j, double radial, double axial, double w_r,
+                          double w_a, double *gen, double *err, double *size) noexcept nogil:
+    """Ball j's radial and axial forces into the generalised forces (compensated: gen + err),
+    and the magnitudes w_r, w_a of its terms into their sizes."""
+    cdef double c = cs.c[j], s = cs.s[j]
+    add(&gen[0], &err[0], radial * c)
+    add(&gen[1], &err[1], radial * s)
+    add(&gen[2], &err[2], axial)
+    add(&gen[3], &err[3], axial * c)
+    add(&gen[4], &err[4], axial * s)
+    size[0] += w_r * fabs(c)
+    size[1] += w_r * fabs(s)
+    size[2] += w_a
+    size[3] += w_a * fabs(c)
+    size[4] += w_a * fabs(s)
+
+
+cdef inline void sums_open(double *gen, double *err, double *size) noexcept nogil:
+    cdef int i
     for i in range(5):
         gen[i] = 0.0
         err[i] = 0.0
         size[i] = 0.0
-    for j in range(cs.z):
-        c = cs.c[j]
-        s = cs.s[j]
-        radial = lo.dq[j] * lo.ca[j] + cs.q0 * lo.cam1[j]
-        axial = (lo.dq[j] + cs.q0) * lo.sa[j]
-        add(&gen[0], &err[0], radial * c)
-        add(&gen[1], &err[1], radial * s)
-        add(&gen[2], &err[2], axial)
-        add(&gen[3], &err[3], axial * c)
-        add(&gen[4], &err[4], axial * s)
-        w_r = fabs(lo.dq[j] * lo.ca[j]) + cs.q0 * fabs(lo.cam1[j])
-        w_a = (fabs(lo.dq[j]) + cs.q0) * fabs(lo.sa[j])
-        size[0] += w_r * fabs(c)
-        size[1] += w_r * fabs(s)
-        size[2] += w_a
-        size[3] += w_a * fabs(c)
-        size[4] += w_a * fabs(s)
+
+
+cdef inline void sums_close(double *gen, const double *err) noexcept nogil:
+    cdef int i
     for i in range(5):
         gen[i] += err[i]
+
+
+cdef void forces(const Case *cs, Loads lo, double *gen, double *size) noexcept nogil:
+    """The generalised ball forces sum_j (q_j - q_0) g_j + q_0 sum_j g'_j, compensated, and the
+    sums of the magnitudes of their terms (_combined_ring.forces)."""
+    cdef int j
+    cdef double radial, axial
+    cdef double err[5]
+    sums_open(gen, err, size)
+    for j in range(cs.z):
+        radial = lo.dq[j] * lo.ca[j] + cs.q0 * lo.cam1[j]
+        axial = (lo.dq[j] + cs.q0) * lo.sa[j]
+        add_ball(cs, j, radial, axial, fabs(lo.dq[j] * lo.ca[j]) + cs.q0 * fabs(lo.cam1[j]),
+                 (fabs(lo.dq[j]) + cs.q0) * fabs(lo.sa[j]), gen, err, size)
+    sums_close(gen, err)
 
 
 cdef double residual(const Case *cs, const double *gen, const double *size) noexcept nogil:
@@ -804,16 +819,7 @@ cdef void fast_state(const Case *cs, const double *v, Fast *st) noexcept nogil:
         energy += st.q[j] * delta
         qc = st.q[j] * st.ca[j]
         qs = st.q[j] * st.sa[j]
-        add(&gen[0], &err[0], qc * cs.c[j])
-        add(&gen[1], &err[1], qc * cs.s[j])
-        add(&gen[2], &err[2], qs)
-        add(&gen[3], &err[3], qs * cs.c[j])
-        add(&gen[4], &err[4], qs * cs.s[j])
-        size[0] += fabs(qc * cs.c[j])
-        size[1] += fabs(qc * cs.s[j])
-        size[2] += fabs(qs)
-        size[3] += fabs(qs * cs.c[j])
-        size[4] += fabs(qs * cs.s[j])
+        add_ball(cs, j, qc, qs, fabs(qc), fabs(qs), gen, err, size)
     for i in range(5):
         gen[i] += err[i]
         st.grad[i] = 0.0 if cs.locked[i] else gen[i] - cs.f[i]
@@ -1761,16 +1767,7 @@ cdef void lean_side(const Case *cs, const double *w, Lean *ln, double *gen, doub
         energy[0] += ln.q[j] * pos
         qc = ln.q[j] * ln.ca[j]
         qs = ln.q[j] * ln.sa[j]
-        add(&gen[0], &err[0], qc * cs.c[j])
-        add(&gen[1], &err[1], qc * cs.s[j])
-        add(&gen[2], &err[2], qs)
-        add(&gen[3], &err[3], qs * cs.c[j])
-        add(&gen[4], &err[4], qs * cs.s[j])
-        size[0] += fabs(qc * cs.c[j])
-        size[1] += fabs(qc * cs.s[j])
-        size[2] += fabs(qs)
-        size[3] += fabs(qs * cs.c[j])
-        size[4] += fabs(qs * cs.s[j])
+        add_ball(cs, j, qc, qs, fabs(qc), fabs(qs), gen, err, size)
     for i in range(5):
         gen[i] += err[i]
 
