@@ -14,6 +14,15 @@ def finite(name: str, value: object) -> np.ndarray:
     """Return ``value`` as a float array, raising :class:`InputError` on NaN or infinity, on
     text (units belong to the command line: the library takes N, mm, N/mm^m, degrees) and on
     booleans."""
+    if type(value) is float or type(value) is int:  # one plain number: no array machinery
+        try:
+            number = float(value)
+        except OverflowError:
+            raise InputError(
+                name, "must be a finite number (got an integer beyond 1.8e308)"
+            ) from None
+        if math.isfinite(number):
+            return np.array(number)
     raw = np.asarray(value)
     if isinstance(value, (bool, np.bool_)) or raw.dtype == bool:
         raise InputError(name, f"must be a number, not a boolean (got {value!r})")

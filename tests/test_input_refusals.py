@@ -218,3 +218,12 @@ def test_another_exponent_on_a_ball_geometry_does_not_blame_a_designation(capsys
         assert "'--exponent'" in line and line.endswith("not its ball geometry"), line
     line = error_line(capsys, "solve", "6205", "-F", "1kN", "-m", "10/9")
     assert line.endswith("not a bearing designation"), line
+
+
+def test_an_integer_beyond_the_largest_float_is_refused_in_one_line():
+    """10**400 as a load escaped as an OverflowError from numpy; it is an InputError."""
+    from bearingload.errors import InputError
+    from bearingload.validate import finite
+
+    with pytest.raises(InputError, match="beyond 1.8e308"):
+        finite("load", 10**400)
