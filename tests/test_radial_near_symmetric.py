@@ -97,3 +97,15 @@ def test_a_convergence_error_names_only_the_cases_that_failed(monkeypatch):
     message = str(info.value)
     assert "for the case" in message and "load = 2000 N" in message
     assert "cage_angle = 7 °" in message and "3000" not in message
+
+
+@pytest.mark.parametrize("cage", [30.0, 90.0, 10.0])
+def test_three_balls_with_one_at_ninety_degrees_solve_in_arrays(cage):
+    """A ball a rounding short of contact (delta = -7e-16, the ball at 90° to the load) bounded
+    the first-contact step to t = 1e-27, and an x step of rounding size stopped the search:
+    solve(3, 1000, 1e5, cage_angle=np.array([30.])) raised ConvergenceError (the one-case path
+    solved it), so did sweep -z 3 and table k --cage-angle 30."""
+    one = solve(3, 1000.0, 1e5, cage_angle=cage)
+    many = solve(3, 1000.0, 1e5, cage_angle=np.array([cage]))
+    assert abs(float(many.q_max[0]) - float(one.q_max)) <= 1e-12 * float(one.q_max)
+    _balanced(many[0], 1000.0)

@@ -498,9 +498,12 @@ def solve_xy(ring: Ring, e_hat: np.ndarray, m: np.ndarray, tol: float) -> tuple[
             if k == 0:  # just past the first contact along the step, or half
                 reach = _first_contact(ring, active[sub], cur.delta[sub], dx[sub], dy[sub])
                 t[sub] = np.minimum(0.5, reach)
-            elif k == DECOUPLE:  # the x part alone (a huge y part held it back)
-                dx[sub], dy[sub], t[sub] = _x_step(_take(cur, sub)), 0.0, 1.0
-                slope[sub] = cur.gx[sub] * dx[sub]
+            elif k == DECOUPLE:  # the x part alone, where x is out of balance (a huge y
+                off = np.abs(cur.gx[sub]) > POLISH * cur.size[sub]  # part held it back)
+                took, kept = sub[off], sub[~off]
+                dx[took], dy[took], t[took] = _x_step(_take(cur, took)), 0.0, 1.0
+                slope[took] = cur.gx[took] * dx[took]
+                t[kept] *= 0.5
             else:
                 t = np.where(pending, 0.5 * t, t)
             part = state(ring, active[sub], a[sub] + t[sub] * dx[sub], b[sub] + t[sub] * dy[sub],
@@ -576,8 +579,11 @@ def _first_contact(
         cp, sp, sign = (t[idx] for t in ring.turn)
         a, b = cp * dx + sp * sign * dy, cp * sign * dy - sp * dx
     rate = a[:, None] * c + b[:, None] * s
+    # a ball a rounding short of contact (3 balls, one at 90° to the load: delta = -7e-16) is in
+    # contact already: the next one bounds the step (else t = 1e-27, and the search stalls)
+    short = delta < -1e-12  # (scaled: 1e-12 of the one-ball approach)
     with np.errstate(divide="ignore", invalid="ignore"):
-        reach = np.where((rate > 0) & (delta < 0), -delta / rate, np.inf)
+        reach = np.where((rate > 0) & short, -delta / rate, np.inf)
     return np.minimum(1.001 * np.min(reach, axis=1), 1.0)
 
 
