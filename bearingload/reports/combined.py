@@ -195,9 +195,10 @@ def _case_table(records: Sequence[dict[str, Any]]) -> Table:
     return Table("cases", [column(k, 1.5) for k in keys], [_blank(r, keys) for r in records])
 
 
-def matrix_table(matrix: Any, title: str = "tangent stiffness matrix") -> Table:
+def matrix_table(matrix: Any, title: str = "tangent stiffness matrix", csv: bool = True) -> Table:
     """A 5x5 ``stiffness_matrix`` as people read it: a row per force or moment, a column per
-    displacement or tilt, each entry d(row)/d(column) in the units the row and column name."""
+    displacement or tilt, each entry d(row)/d(column) in the units the row and column name;
+    ``csv``: the output's csv carries it (a pair's csv rows are its bearings')."""
     columns = [Column("row", "", align="left")]
     columns += [Column(m, f"d/d({m}) [1/{u}]", "", 6) for m, u in MATRIX_COLUMNS]
     moves = [m for m, _ in MATRIX_COLUMNS]
@@ -206,7 +207,9 @@ def matrix_table(matrix: Any, title: str = "tangent stiffness matrix") -> Table:
         rows.append({"row": f"{force} [{unit}]"} | dict(zip(moves, map(float, row), strict=True)))
     notes = [
         "Entry: the change of the row's force or moment per unit of the column's motion "
-        f"({MATRIX_UNITS}); json: stiffness_matrix, csv: stiffness_matrix_11 ... _55."
+        f"({MATRIX_UNITS}); the true tangent, not quite symmetric (its symmetric part: json "
+        "stiffness_matrix_symmetric); json: stiffness_matrix"
+        + (", csv: stiffness_matrix_11 ... _55." if csv else ".")
     ]
     return Table(title, columns, rows, notes)
 

@@ -182,7 +182,7 @@ def pair_report(
 
     notes += [] if c.preload_class is None else [f"Preload: {c.preload_class.source}."]
     summary = Table(_title(pair, c.preload_class), columns, rows, notes + service_notes(service))
-    shaft = matrix_table(c.result.stiffness_matrix, "tangent stiffness matrix of the shaft")
+    shaft = matrix_table(c.result.stiffness_matrix, "tangent stiffness matrix of the shaft", False)
     tables += [summary, shaft, _balls_table(c)]
     return render(tables, fmt)
 
