@@ -41,6 +41,11 @@ def finite(name: str, value: object) -> np.ndarray:
     return arr
 
 
+def each_finite(**values: object) -> list[np.ndarray]:
+    """:func:`finite` of each named value, in the order given."""
+    return [finite(name, value) for name, value in values.items()]
+
+
 def require(name: str, value: object, rule: str, ok: Any) -> None:
     """Raise :class:`InputError` ``<name>: must be <rule>; got <value>`` unless every ``ok``."""
     if not np.all(ok):

@@ -227,3 +227,34 @@ def test_an_integer_beyond_the_largest_float_is_refused_in_one_line():
 
     with pytest.raises(InputError, match="beyond 1.8e308"):
         finite("load", 10**400)
+
+
+@pytest.mark.parametrize("name", ["ball_diameter", "pitch_diameter", "f_i", "f_o", "clearance"])
+def test_the_combined_solver_refuses_text_for_its_geometry(name):
+    """These five went to numpy unchecked: 'C3' raised numpy's ValueError and '0.01' was taken
+    as a number, where radial_load='1000' is refused; each is an InputError naming itself."""
+    from bearingload.errors import InputError
+    from bearingload.models.combined import solve_combined
+
+    kw = {"ball_diameter": 7.938, "pitch_diameter": 38.5} | {name: "0.01"}
+    with pytest.raises(InputError) as info:
+        solve_combined(9, 1000.0, 300.0, **kw)
+    assert info.value.parameter == name
+
+
+def test_the_pair_solver_refuses_text_for_its_geometry():
+    from bearingload.errors import InputError
+    from bearingload.models.pair import solve_pair
+
+    with pytest.raises(InputError) as info:
+        solve_pair(
+            12,
+            1000.0,
+            300.0,
+            preload=300.0,
+            contact_angle="40",
+            ball_diameter=8.7312,
+            pitch_diameter=38.5,
+            width=15.0,
+        )
+    assert info.value.parameter == "contact_angle"

@@ -558,6 +558,9 @@ def solve_combined(
     e = validate.positive("modulus", modulus, "MPa")
     nu = validate.finite("poisson", poisson)
     k_given = None if stiffness is None else validate.positive("stiffness", stiffness, "N/mm^1.5")
+    ball_diameter, pitch_diameter, f_i, f_o, clearance = validate.each_finite(
+        ball_diameter=ball_diameter, pitch_diameter=pitch_diameter, f_i=f_i, f_o=f_o,
+        clearance=clearance)  # fmt: skip
     validate.broadcast_shape(
         {"radial_load": fr, "axial_load": fa, "moment": mm, "misalignment": tilt_deg,
          "cage_angle": cage, "modulus": e, "poisson": nu, "moment_cross": mc,
@@ -566,7 +569,7 @@ def solve_combined(
     )  # fmt: skip
     arrays = np.broadcast_arrays(
         fr, fa, mm, tilt_deg, cage, e, nu, mc,
-        *(np.asarray(v, dtype=float) for v in (ball_diameter, pitch_diameter, f_i, f_o, clearance)),
+        ball_diameter, pitch_diameter, f_i, f_o, clearance,
         np.zeros(()) if angular is None else angular,
         *(() if k_given is None else (k_given,)),
     )  # fmt: skip
@@ -578,13 +581,7 @@ def solve_combined(
     if tilt_radius is not None:
         radius = validate.positive("tilt_radius", tilt_radius, "mm")
         geo = dataclasses.replace(geo, R_i=np.broadcast_to(radius, dw.shape).astype(float))
-    if z < 3 and np.any((np.mod(cage, 360.0 / z) != 0) & (fr > 0)):
-        raise InputError(
-            "cage_angle",
-            "with 1 or 2 balls a ball must sit on the load line (cage angle 0), "
-            "otherwise no equilibrium exists",
-        )
-    _check_few_balls(z, cage, fa, mm, mc, misalignment is not None)
+    _check_few_balls(z, cage, (fr, fa, mm, mc), misalignment is not None)
     if angular is not None:
         _check_one_sided_moment(z, cage, fa, (mm, mc), geo.R_i, misalignment is not None)
     curve = None
@@ -853,10 +850,9 @@ def _check_one_sided_cross(
         )
 
 
-def _check_few_balls(
-    z: int, cage: np.ndarray, fa: np.ndarray, mm: np.ndarray, mc: np.ndarray, locked: bool
-) -> None:
-    """Refuse the loads that 1 or 2 balls cannot hold with the ring free to tilt.
+def _check_few_balls(z: int, cage: np.ndarray, loads: tuple[np.ndarray, ...], locked: bool) -> None:
+    """Refuse the loads that 1 or 2 balls cannot hold with the ring free to tilt, and a radial
+    load (``loads`` = F_r, F_a, M, M_c) with no ball on the load line.
 
     One ball carries one force: a free tilt turns the ring about it under any axial load or
     moment, and nothing holds a moment about the ball's own line. Two balls (at the cage angle c
@@ -866,6 +862,13 @@ def _check_few_balls(
     """
     if z >= 3:
         return
+    fr, fa, mm, mc = loads
+    if np.any((np.mod(cage, 360.0 / z) != 0) & (fr > 0)):
+        raise InputError(
+            "cage_angle",
+            "with 1 or 2 balls a ball must sit on the load line (cage angle 0), "
+            "otherwise no equilibrium exists",
+        )
     c = np.deg2rad(cage)
     size = np.maximum(np.hypot(mm, mc), 1e-300)
     if z == 1:

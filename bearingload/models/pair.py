@@ -324,9 +324,12 @@ def solve_pair(
     fa = validate.finite("axial_load", axial_load)
     fp = validate.finite("preload", preload)
     _check_pair(kind, fa, fp, contact_angle)
-    named = {"radial_load": fr, "axial_load": fa, "preload": fp, "contact_angle": contact_angle,
-             "ball_diameter": ball_diameter, "pitch_diameter": pitch_diameter,
-             "width": validate.positive("width", width, "mm"), "f_i": f_i, "f_o": f_o,
+    named = {"radial_load": fr, "axial_load": fa, "preload": fp,
+             "contact_angle": validate.finite("contact_angle", contact_angle),
+             "ball_diameter": validate.finite("ball_diameter", ball_diameter),
+             "pitch_diameter": validate.finite("pitch_diameter", pitch_diameter),
+             "width": validate.positive("width", width, "mm"),
+             "f_i": validate.finite("f_i", f_i), "f_o": validate.finite("f_o", f_o),
              "cage_angle": validate.finite("cage_angle", cage_angle),
              "moment": validate.finite("moment", moment),
              "moment_cross": validate.finite("moment_cross", moment_cross),
