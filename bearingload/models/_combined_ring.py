@@ -50,8 +50,6 @@ from bearingload.models._core import (  # noqa: F401
     FLOOR,
     MAX_ITERATIONS,
     ROUNDING,
-    STALL,
-    STALL_BELOW,
     TOLERANCE,
 )
 

@@ -886,7 +886,7 @@ cdef int fast_newton(const Case *cs, Work *wk, Fast *cur, Fast *trial, double *v
 cdef void stiffness(const Case *cs, Work *wk, double *out) noexcept nogil:
     """The tangent of the ring forces at the current point (scaled, every component free):
     d(generalised force)/d(displacement), with the stiffness's change with the contact angle
-    (w3) where K follows it (combined._tangent takes the symmetric part)."""
+    (w3) where K follows it (combined._stiffness_matrix puts it in physical units)."""
     cdef int j
     cdef Point *pt = &wk.pt
     cdef double d
