@@ -16,18 +16,78 @@ class BearingloadError(Exception):
 class InputError(BearingloadError, ValueError):
     """A parameter is outside its allowed domain.
 
+    The fields say what is wrong and what to do; a caller rewording an error (the command line
+    naming an option, a plan offering another engine) works on the fields, never on the text.
+    Other inputs are named in quotes in ``message`` and ``way_out`` (``'speed'``), so that a
+    front door can write them as the user types them.
+
     Parameters
     ----------
     parameter : str
         Name of the offending parameter, as the user knows it (``load``, ``balls`` ...).
     message : str
         What was wrong and what is allowed.
+    way_out : str, optional
+        What the user can do instead, appended to the message after ``; ``.
+    reason : str, optional
+        A stable tag of the refusal (``"too_fast"``, ``"too_light"`` ...) a caller may act on.
     """
 
-    def __init__(self, parameter: str, message: str) -> None:
+    def __init__(
+        self,
+        parameter: str,
+        message: str,
+        *,
+        way_out: str | None = None,
+        reason: str | None = None,
+    ) -> None:
         self.parameter = parameter
-        self.message = message  # without the parameter's name (a caller rewording it)
-        super().__init__(f"{parameter}: {message}")
+        self.problem = message  # without the way out
+        self.way_out = way_out
+        self.reason = reason
+        self.message = message if way_out is None else f"{message}; {way_out}"
+        super().__init__(f"{parameter}: {self.message}")
+
+    def named(self, parameter: str) -> InputError:
+        """The same refusal naming its parameter as the caller calls it."""
+        new = type(self).__new__(type(self))
+        new.__dict__.update(self.__dict__)
+        new.parameter = parameter
+        Exception.__init__(new, f"{parameter}: {self.message}")
+        return new
+
+    def with_way_out(self, way_out: str) -> InputError:
+        """The same refusal with another way out."""
+        return InputError(self.parameter, self.problem, way_out=way_out, reason=self.reason)
+
+
+class ConflictError(InputError):
+    """A parameter that cannot be used with something else given: ``parameter`` cannot be used
+    with ``where`` (other inputs named in quotes), ``why``."""
+
+    def __init__(self, parameter: str, where: str, why: str) -> None:
+        self.where, self.why = where, why
+        super().__init__(parameter, f"cannot be used with {where}: {why}")
+
+
+class MissingError(InputError):
+    """A parameter that is required and was not given; ``message`` says what else would do."""
+
+    def __init__(self, parameter: str, message: str) -> None:
+        super().__init__(parameter, f"missing ({message})")
+        self.instead = message
+
+
+class UnusedError(InputError):
+    """Parameters given that the case would ignore: ``parameters`` need ``need``."""
+
+    def __init__(self, parameters: tuple[str, ...], need: str) -> None:
+        self.parameters, self.need = parameters, need
+        one = len(parameters) == 1
+        super().__init__(
+            parameters[0],
+            f"{'needs' if one else 'need'} {need} {'it' if one else 'they'} would be ignored",
+        )
 
 
 class ConvergenceError(BearingloadError, ArithmeticError):
@@ -56,11 +116,14 @@ class ConvergenceError(BearingloadError, ArithmeticError):
         residual: float,
         cases: dict[str, Any],
         units: dict[str, str] | None = None,
+        way_out: str | None = None,
     ) -> None:
         self.solver = solver
         self.iterations = iterations
         self.residual = residual
         self.cases = cases
+        self.units = units
+        self.way_out = way_out
         import numpy as np  # here: importing the errors must stay light (no numpy)
 
         count = max((int(np.size(v)) for v in cases.values()), default=1)
@@ -69,6 +132,13 @@ class ConvergenceError(BearingloadError, ArithmeticError):
         super().__init__(
             f"{solver} did not converge after {iterations} iterations "
             f"(relative residual {residual:.3g}){what}"
+            + ("" if way_out is None else f"; {way_out}")
+        )
+
+    def with_way_out(self, way_out: str) -> ConvergenceError:
+        """The same failure with what the user can do instead."""
+        return ConvergenceError(
+            self.solver, self.iterations, self.residual, self.cases, self.units, way_out
         )
 
 

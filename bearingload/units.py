@@ -142,6 +142,10 @@ def likely_unit(value: float, kind: str, name: str) -> str | None:
 _SIGNED = ("modulus", "speed", "viscosity", "revolutions")
 
 
+#: The reason of the refusal of a bare number implausible for its quantity.
+IMPLAUSIBLE = "implausible"
+
+
 def _check_plausible(value: float, kind: str, name: str, text: object) -> None:
     rule = PLAUSIBLE_BARE.get((kind, name)) or PLAUSIBLE_BARE.get((kind, None))
     if rule is None or rule[0] <= value < rule[1] or (kind in _SIGNED and value <= 0):
@@ -159,6 +163,7 @@ def _check_plausible(value: float, kind: str, name: str, text: object) -> None:
         f"a bare {text} is {value:g} {base}, implausible for {what} (bare numbers are {base}; "
         f"plausible {lowest} and below {high:g} {base}){hint} Write the unit to use the number "
         "as it is.",
+        reason=IMPLAUSIBLE,
     )
 
 

@@ -82,7 +82,7 @@ def test_an_angular_bearing_tilted_is_warned_without_the_deep_groove_limit(capsy
 
 def test_batch_contact_angle_column_is_the_cli_and_library_name():
     """The batch column, solve's option and the library parameter are spelt alike."""
-    from bearingload.cli.case_options import LOAD_PARAMS
+    from bearingload.plan.case import LOAD_PARAMS
 
     assert COLUMNS["contact_angle"] == "angle" and "contact_angle" in LOAD_COLUMNS
     assert "contact_angle" in LOAD_PARAMS  # solve --contact-angle

@@ -19,8 +19,8 @@ from bearingload.batch.read import Block, read_header
 from bearingload.batch.solve import BatchSolver
 from bearingload.bearings.oil import OIL_INPUTS, operating_viscosity, viscosity_100_of_index
 from bearingload.cli import main
-from bearingload.cli.case_options import OIL_PARAMS
 from bearingload.errors import InputError
+from bearingload.plan.case import OIL_PARAMS
 from bearingload.units import parse_temperature
 
 from .cli_helpers import SolvedRows, run_entry

@@ -42,7 +42,8 @@ def test_every_case_option_has_one_help_text_in_every_command():
     """solve, sweep and table declared --balls, --load, --stiffness, --clearance ... each on its
     own, with help texts that drifted apart (--balls '1 to' vs '3 to', --dynamic-rating's
     units); now one declaration serves all three."""
-    from bearingload.cli.case_options import DECLARATIONS, DYNAMICS_PARAMS, SERVICE_PARAMS
+    from bearingload.cli.case_options import DECLARATIONS
+    from bearingload.plan.case import DYNAMICS_PARAMS, SERVICE_PARAMS
 
     commands = {name: _params(name) for name in ("solve", "sweep", "table")}
     for name in DECLARATIONS:

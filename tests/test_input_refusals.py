@@ -67,9 +67,15 @@ def test_loads_too_small_for_the_combined_solver_are_refused(capsys):
 @pytest.mark.parametrize(
     "extra, message",
     [
-        (["--modulus", "210GPa"], "Error: --modulus needs a BEARING or the ball geometry"),
-        (["--clearance-pick", "range"], "Error: --clearance-pick needs a BEARING"),
-        (["--poisson", "0.3", "--maker", "SKF"], "Error: --poisson, --maker need a BEARING"),
+        (
+            ["--modulus", "210GPa"],
+            "Error: --modulus needs a bearing designation or the ball geometry",
+        ),
+        (["--clearance-pick", "range"], "Error: --clearance-pick needs a bearing designation"),
+        (
+            ["--poisson", "0.3", "--maker", "SKF"],
+            "Error: --poisson, --maker need a bearing designation",
+        ),
     ],
 )
 def test_options_a_hand_given_ring_would_ignore_are_refused(capsys, extra, message):
@@ -81,11 +87,11 @@ def test_options_a_hand_given_ring_would_ignore_are_refused(capsys, extra, messa
     "args, message",
     [
         (["solve", "-z", "8", "-F", "1kN", "-K", "1e5", "--clearance-pick", "mean"],
-         "Error: --clearance-pick needs a BEARING"),
+         "Error: --clearance-pick needs a bearing designation"),
         (["sweep", "-z", "8", "-F", "1kN", "-K", "1e5", "--modulus", "210GPa"],
-         "Error: --modulus needs a BEARING or the ball geometry"),
+         "Error: --modulus needs a bearing designation or the ball geometry"),
         (["sweep", "-z", "8", "-F", "1kN", "-K", "1e5", "--clearance-pick", "max"],
-         "Error: --clearance-pick needs a BEARING"),
+         "Error: --clearance-pick needs a bearing designation"),
         (["table", "k", "--clearance-pick", "min"], "Error: --clearance-pick needs --bearing"),
     ],
 )  # fmt: skip

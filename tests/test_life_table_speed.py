@@ -148,9 +148,9 @@ def test_every_pair_row_is_solves_pair_at_that_preload(speed):
         (["-b", "6205", "-F", "1kN", "--speed", "60000"], 2,
          "Invalid value for '--speed': n d_m must be at most 2e+06 mm/min"),
         (["-b", "6205", "-F", "1kN", "--speed", "10000", "--rotating", "outer"], 2,
-         "Invalid value for '--rotating': the ball dynamics at --speed are coded"),
+         "Invalid value for '--rotating': the ball dynamics at '--speed' are coded"),
         (["-b", "6205", "-F", "1kN", "--speed", "1000", "-K", "3e5"], 2,
-         "Invalid value for '--stiffness': the ball dynamics at --speed need"),
+         "Invalid value for '--stiffness': the ball dynamics at '--speed' need"),
         (["-b", *PAIR, "--preloads", "0,100N", "--speed", "60000"], 2,
          "Invalid value for '--speed': n d_m must be at most 2e+06 mm/min"),
         (["-b", "7205BDB", "-F", "1e-6N", "--preloads", "0,1e-6N", "--speed", "6000"], 2,
@@ -184,18 +184,18 @@ def test_rows_the_dynamics_leave_unbalanced_name_quasi_static(monkeypatch, pair)
     (line,) = out.stderr.splitlines()
     assert line.startswith("Error: ball-dynamics ring and ball equilibrium did not converge")
     way = "" if pair else " (the ball dynamics left out)"  # a pair: solve's words
-    assert line.endswith(f"; --quasi-static gives the static model{way}")
+    assert line.endswith(f"; '--quasi-static' gives the static model{way}")
 
 
 @pytest.mark.parametrize(
     ("args", "words"),
     [
         (["-b", "6205", "-F", "1kN", "--quasi-static"],
-         "Invalid value for '--quasi-static': it needs --speed"),
+         "Invalid value for '--quasi-static': it needs '--speed'"),
         (["-b", "6205", "-F", "1kN", "--speed", "1000", "--quasi-static", "--ball-density", "3e3"],
-         "Invalid value for '--ball-density': it enters the ball dynamics at --speed"),
+         "Invalid value for '--ball-density': it enters the ball dynamics at '--speed'"),
         (["-b", *PAIR, "--preloads", "0,1kN", "--ball-density", "3e3"],
-         "Invalid value for '--ball-density': it enters the ball dynamics at --speed"),
+         "Invalid value for '--ball-density': it enters the ball dynamics at '--speed'"),
         (["-b", "6205", "-F", "1e-7N", "--speed", "1000"],
          "Invalid value for '--load': the loads are too small for the combined solver"),
     ],

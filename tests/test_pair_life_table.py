@@ -96,7 +96,8 @@ def test_json_rows_and_the_table_show_solves_values_and_name_the_longest_life():
          "a pair (--bearing 7205BDB, or --arrangement DB or DF)"),
         (["-b", "6205", "--arrangement", "DB", "-F", "1kN", "--preloads", "0,1kN"],
          "Invalid value for '--arrangement': a pair DB is two angular-contact ball bearings; "
-         "give an angular-contact designation (7205B, 7205BDB)"),
+         "give an angular-contact designation (7205B, 7205BDB) or a ring by hand with "
+         "'--contact-angle'"),
         ([*PAIR, "--preloads", "0,-5N"],
          "Invalid value for '--preloads': each must be 0 N or more (got -5 N)"),
         ([*PAIR, "--preloads", "0,100N", "--preload", "100N"],
@@ -111,7 +112,7 @@ def test_json_rows_and_the_table_show_solves_values_and_name_the_longest_life():
          "one preload"),
         ([*PAIR, "--preloads", "0,100N", "--misalignment", "1mrad"],
          "--misalignment cannot be used with a bearing pair: the shaft's tilt follows from the "
-         "loads; give --moment"),
+         "loads; give '--moment'"),
     ],
 )  # fmt: skip
 def test_what_table_life_of_a_pair_cannot_take_is_one_error_line(args, message):

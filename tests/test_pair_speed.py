@@ -258,7 +258,7 @@ def test_cli_a_convergence_error_names_quasi_static(capsys, monkeypatch):
     monkeypatch.setattr(pair_speed, "CONTINUATION_STAGES", 0)
     code, out, err = run_entry(capsys, *PAIR_CLI, "--speed", "20000")
     assert code == 1 and out == ""
-    assert "--quasi-static gives the static model" in err and "speed = 20000 rpm" in err
+    assert "'--quasi-static' gives the static model" in err and "speed = 20000 rpm" in err
 
 
 def test_a_light_load_against_the_centrifugal_forces_is_balanced_or_refused():

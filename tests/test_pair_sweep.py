@@ -104,16 +104,17 @@ def test_a_lifted_bearing_is_warned_once():
          "geometry of an angular-contact bearing (no clearance)"),
         ([*PAIR, "--misalignment", "1mrad"],
          "--misalignment cannot be used with a bearing pair: the shaft's tilt follows from the "
-         "loads; give --moment"),
+         "loads; give '--moment'"),
         (["6205", "--arrangement", "DB", "-F", "1kN"],
          "Invalid value for '--arrangement': a pair DB is two angular-contact ball bearings; "
-         "give an angular-contact designation (7205B, 7205BDB)"),
+         "give an angular-contact designation (7205B, 7205BDB) or a ring by hand with "
+         "'--contact-angle'"),
         (["7205BDT", "--preload", "100N", "-F", "1kN", "-A", "1kN"],
          "Invalid value for '--preload': a tandem pair (DT) is not preloaded in itself: both "
          "bearings face the same way, so it is preloaded against another bearing; give 0, or "
          "use DB or DF"),
         (["7205B", "--preload", "100N", "-F", "1kN"],
-         "Invalid value for '--preload': it belongs to a bearing pair; give --arrangement DB, DF "
+         "Invalid value for '--preload': it belongs to a bearing pair; give '--arrangement' DB, DF "
          "or DT (or a designation with the suffix, 7205BDB); a single bearing is preloaded "
          "against another one"),
     ],

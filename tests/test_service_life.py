@@ -417,7 +417,7 @@ def test_kappa_beyond_four_warns_with_the_value_used():
 
 def test_a_ring_given_by_z_and_k_refuses_the_life_options():
     result = invoke("solve", "-z", "8", "-K", "4e5", "-F", "1kN", "--speed", "1000")
-    assert result.exit_code != 0 and "--speed needs a BEARING" in result.output
+    assert result.exit_code != 0 and "--speed needs a bearing designation" in result.output
 
 
 def test_roller_bearing_gets_line_contact_film_and_roller_constants():

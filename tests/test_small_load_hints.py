@@ -51,9 +51,9 @@ def test_a_too_small_load_at_speed_names_quasi_static(capsys):
     assert code == 0 and json.loads(out)["cases"][0]["load"] == 1e-9
     line = error_line(capsys, "solve", "6205", "-F", "1e-9N", "-A", "0", "--speed", "3000")
     assert "the radial solver, without an axial load" not in line, line
-    assert "--quasi-static without an axial load gives the static radial engine" in line, line
+    assert "'--quasi-static' without an axial load gives the static radial engine" in line, line
     line = error_line(capsys, "solve", "6205", "-F", "0", "-A", "1e-9N", "--speed", "3000")
-    assert "--quasi-static without an axial load gives the static radial engine" in line, line
+    assert "'--quasi-static' without an axial load gives the static radial engine" in line, line
     # without a speed the radial engine is the way: the solver's own hint
     line = error_line(capsys, "solve", "6205", "-F", "1e-9N", "-A", "0")
     assert "the radial solver, without an axial load, takes any load" in line, line

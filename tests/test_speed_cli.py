@@ -137,7 +137,7 @@ def test_a_speed_of_0_says_what_a_shaft_at_rest_is(capsys):
     assert code == 2 and out == ""
     assert err.strip().splitlines()[-1] == (
         "Error: Invalid value for '--speed': must be greater than 0 rpm (got 0): a shaft at rest "
-        "is the case without --speed: the static model (the answer of the ball dynamics at 0 "
+        "is the case without '--speed': the static model (the answer of the ball dynamics at 0 "
         "rpm), its lives in 10^6 revolutions, none in hours"
     )
     code, _, err = run_entry(capsys, "solve", "6205", "-F", "1kN", "--speed", "-5")

@@ -108,33 +108,33 @@ def test_an_inner_contact_on_the_groove_side_is_warned_of(capsys):
         (("6205", "-F", "1e-7N", "--speed", "10000"),
          "Error: Invalid value for '--load': the loads are too small for the combined solver (the "
          "largest of F_r, |F_a| and M/R_i is 1e-07 N; it takes at least 7.7e-07 N for this "
-         "bearing); at --speed a ball bearing is solved by the combined engine (the ball "
-         "dynamics); --quasi-static gives the static radial engine, which takes any load"),
+         "bearing); at '--speed' a ball bearing is solved by the combined engine (the ball "
+         "dynamics); '--quasi-static' gives the static radial engine, which takes any load"),
         (("NU205", "-F", "1kN", "--speed", "3000", "--ball-density", "3200"),
          "Error: --ball-density cannot be used with a roller bearing (NU205): the radial engine "
-         "solves it by the static model at any speed: the ball dynamics at --speed are coded "
+         "solves it by the static model at any speed: the ball dynamics at '--speed' are coded "
          "for ball bearings"),
         (("6205", "-F", "1kN", "--ball-density", "3200"),
-         "Error: Invalid value for '--ball-density': it enters the ball dynamics at --speed, "
-         "which --quasi-static or a missing --speed leave out"),
+         "Error: Invalid value for '--ball-density': it enters the ball dynamics at '--speed', "
+         "which '--quasi-static' or a missing '--speed' leave out"),
         (("7205BDB", "--preload", "300N", "-F", "1kN", "--ball-density", "3200"),
-         "Error: Invalid value for '--ball-density': it enters the ball dynamics at --speed, "
-         "which --quasi-static or a missing --speed leave out"),
+         "Error: Invalid value for '--ball-density': it enters the ball dynamics at '--speed', "
+         "which '--quasi-static' or a missing '--speed' leave out"),
         (("7205BDB", "--preload", "0", "-F", "0", "-A", "1e-6N", "--speed", "30000"),
          None),
         (("6205", "-F", "1kN", "--speed", "51948.06"),
          "Error: Invalid value for '--speed': n d_m must be at most 2e+06 mm/min for the "
          "ball-dynamics model (n = 51948.06 rpm with d_m = 38.5 mm: at most 51948.05195 rpm; "
-         "beyond, ring expansion, cage and lubricant forces it leaves out matter); --quasi-static "
+         "beyond, ring expansion, cage and lubricant forces it leaves out matter); '--quasi-static' "
          "gives the static model at any speed (the lives in hours)"),
         (("7205BDB", "--preload", "300N", "-F", "1kN", "--speed", "51948.06"),
          "Error: Invalid value for '--speed': n d_m must be at most 2e+06 mm/min for the "
          "ball-dynamics model (n = 51948.06 rpm with d_m = 38.5 mm: at most 51948.05195 rpm; "
-         "beyond, ring expansion, cage and lubricant forces it leaves out matter); --quasi-static "
+         "beyond, ring expansion, cage and lubricant forces it leaves out matter); '--quasi-static' "
          "gives the static model at any speed (the lives in hours)"),
         (("6205", "-F", "1kN", "--speed", "3000", "--rotating", "outer"),
-         "Error: Invalid value for '--rotating': the ball dynamics at --speed are coded for the "
-         "inner ring turning (docs/speed.md); give --quasi-static for the static model with the "
+         "Error: Invalid value for '--rotating': the ball dynamics at '--speed' are coded for the "
+         "inner ring turning (docs/speed.md); give '--quasi-static' for the static model with the "
          "outer ring's lives"),
     ],
 )  # fmt: skip
@@ -143,7 +143,7 @@ def test_refusals_name_the_option_and_the_way(capsys, args, message):
     assert code != 0 and out == ""
     if message is None:  # as solve refuses the case, naming --quasi-static
         code, _, said = run_entry(capsys, "solve", *args)
-        assert code != 0 and "--quasi-static gives the static model" in said
+        assert code != 0 and "'--quasi-static' gives the static model" in said
         message = said.strip()
     assert err.strip().splitlines() == [message]
 

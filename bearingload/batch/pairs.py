@@ -77,21 +77,19 @@ def pair_key(solver: Any, v: dict[str, Any]) -> tuple[Any, ...]:
     """The group of a row of cells ``v`` (blank cells left out): (resolved bearing,
     arrangement, width, rotating ring, C_r, a moment given, the tilt radius), checked as solve
     checks a pair's options."""
-    from bearingload.bearings.angular import split_pair
+    from bearingload.plan.case import pair_of
 
     arrangement = v.get("arrangement")
-    if arrangement is not None:
-        arrangement = arrangement.strip().upper()
-        if arrangement not in ("DB", "DF", "DT"):
-            raise InputError("arrangement", f"{v['arrangement']!r}: give DB (back-to-back), DF "
-                             "(face-to-face) or DT (tandem)")  # fmt: skip
+    if arrangement is not None and arrangement.strip().upper() not in ("DB", "DF", "DT"):
+        raise InputError(
+            "arrangement",
+            f"{v['arrangement']!r}: give DB (back-to-back), DF (face-to-face) or DT (tandem)",
+        )
     if "bearing" in v:
-        single, kind, _ = split_pair(v["bearing"])
-        if kind is not None and arrangement not in (None, kind):
-            raise InputError("arrangement", f"{arrangement} contradicts the designation "
-                             f"{v['bearing'].strip()!r} (a {kind} pair)")  # fmt: skip
-        arrangement = arrangement or kind
+        single, arrangement, _ = pair_of(v["bearing"], arrangement, None)
         v = v | {"bearing": single}
+    elif arrangement is not None:
+        arrangement = arrangement.strip().upper()
     if arrangement is None:
         raise InputError("arrangement", "missing: a file of pairs gives each row's arrangement "
                          "(DB, DF or DT) or a designation with it (7205BDB)")  # fmt: skip
@@ -119,15 +117,10 @@ def row_preload(v: dict[str, Any], b: Any) -> float:
     its ``preload`` cell (a force, or a class resolved by
     :func:`bearingload.bearings.preload.resolve_preload`), the class its designation carries
     (7205CDBL), else 0."""
-    from bearingload.bearings.angular import split_pair
     from bearingload.bearings.preload import resolve_preload
+    from bearingload.plan.case import pair_of
 
-    cls = split_pair(v["bearing"])[2] if "bearing" in v else None
-    cell = v.get("preload")
-    if cls is not None and cell not in (None, cls):
-        what = f"{v['bearing'].strip()!r} (preload class {cls})"
-        raise InputError("preload", f"{cell!r} contradicts the designation {what}")
-    value = cls if cell is None else cell
+    value = pair_of(v.get("bearing"), None, v.get("preload"))[2]
     return 0.0 if value is None else resolve_preload(value, b).force
 
 
@@ -201,17 +194,18 @@ def _call(key: tuple[Any, ...], idx: list[int], cols: dict[str, list[Any]]) -> l
 def _quasi_static_hint(exc: InputError | ConvergenceError) -> BearingloadError | None:
     """A pair at speed the ball dynamics leave unbalanced, or refuse as too light, with the way
     out in the batch's words (solve names --quasi-static); None for another refusal."""
+    from bearingload.models.combined import TOO_LIGHT
     from bearingload.models.high_speed import too_fast
     from bearingload.models.pair_speed import STATIC_WAY
 
     way = "quasi_static true gives the static model of the pair"
     if isinstance(exc, ConvergenceError):
-        return BearingloadError(f"{exc}; {way}")
+        return exc.with_way_out(way)
     if too_fast(exc):
-        return InputError(exc.parameter, f"{exc.message}; {FAST_WAY}")
-    if STATIC_WAY not in str(exc):
+        return exc.with_way_out(FAST_WAY)
+    if exc.reason != TOO_LIGHT or exc.way_out != STATIC_WAY:
         return None
-    return InputError(exc.parameter, exc.message.replace(STATIC_WAY, way))
+    return exc.with_way_out(way)
 
 
 def pair_values(keys: list[str], solved: list[tuple[int, Any]], numbers: list[int],

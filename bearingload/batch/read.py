@@ -379,7 +379,9 @@ def _where(exc: UnicodeDecodeError) -> str:
 def row_message(exc: Exception) -> str:
     """The reason a row is skipped, ``column: message``, from a library error."""
     column = _COLUMN_OF.get(getattr(exc, "parameter", ""))
-    return str(exc) if column is None else f"{column}: {str(exc).split(': ', 1)[-1]}"
+    if column is None:
+        return str(exc)
+    return f"{column}: {exc.message if isinstance(exc, InputError) else exc}"
 
 
 def read_column(

@@ -330,7 +330,7 @@ def _refuse_pair(text: str | None) -> None:
 
 def _no_class_to_pick(b: Any) -> str:
     """Why a row's ``clearance_pick`` is refused: bearing ``b`` has no clearance class (solve's
-    reason for --clearance-pick, :func:`bearingload.cli.cases.resolve_bearings`)."""
+    reason for --clearance-pick, :func:`bearingload.plan.bearing.resolve_bearings`)."""
     why = ("an angular-contact bearing has no radial clearance" if b.contact_angle is not None
            else f"this row's clearance is one value, no class (G_r = {b.clearance * 1000:g} µm)")  # fmt: skip
     return (
@@ -590,7 +590,7 @@ def _solve_combined(
         radial = deep_groove and all(x is None for x in cells)
         hinted = _quasi_static_hint(exc, radial) if deep_groove else None
         if at_speed and isinstance(exc, InputError) and too_fast(exc):
-            hinted = InputError(exc.parameter, f"{exc.message}; {FAST_WAY}")
+            hinted = exc.with_way_out(FAST_WAY)
         if hinted is None:
             raise
         raise hinted from exc
@@ -628,21 +628,21 @@ def _quasi_static_hint(
     is the ball dynamics too; quasi_static true is the way to it (as solve's --quasi-static), on
     a row with load cells beside the radial load (not ``radial``) with those cells left blank.
     The dynamics' non-convergence on radial rows names the same way."""
-    from bearingload.models.combined import RADIAL_TAKES_ANY_LOAD
+    from bearingload.models.combined import RADIAL_TAKES_ANY_LOAD, TOO_LIGHT
 
     if isinstance(exc, ConvergenceError):
         if not radial:
             return None
-        return BearingloadError(f"{exc}; quasi_static true gives the static radial engine (the "
-                                "ball dynamics left out)")  # fmt: skip
-    message = exc.message
-    if RADIAL_TAKES_ANY_LOAD not in message:
+        return exc.with_way_out(
+            "quasi_static true gives the static radial engine (the ball dynamics left out)"
+        )
+    if exc.reason != TOO_LIGHT or exc.way_out != RADIAL_TAKES_ANY_LOAD:
         return None
     way = ("quasi_static true gives the static radial engine, which takes any load" if radial
            else "quasi_static true with the axial_load and moment cells blank gives the static "
            "radial engine, which takes any load")  # fmt: skip
     hint = f"at a speed a ball bearing is solved by the combined engine (the ball dynamics); {way}"
-    return InputError(exc.parameter, message.replace(RADIAL_TAKES_ANY_LOAD, hint))
+    return exc.with_way_out(hint)
 
 
 def _contacts(res: Any, n: int, contact_angle: float | None) -> dict[str, Any]:

@@ -48,7 +48,7 @@ from dataclasses import dataclass
 
 from bearingload.constants import CLEARANCE_PICKS
 from bearingload.errors import InputError
-from bearingload.units import parse_quantity
+from bearingload.units import IMPLAUSIBLE, parse_quantity
 
 #: The ISO clearance classes the table gives, in increasing clearance.
 CLASSES: tuple[str, ...] = ("C2", "CN", "C3", "C4", "C5")
@@ -333,13 +333,13 @@ def parse_clearance(text: str | float | None) -> ClearanceSpec | None:
         )
     except InputError as exc:
         message = exc.message
-        if "implausible" in message:
+        if exc.reason == IMPLAUSIBLE:
             group = (
                 f" (the GOST clearance group {text} is written G{text})"
                 if text in ("6", "7", "8", "9")
                 else ""
             )
-            raise InputError("clearance", message + group) from None
+            raise InputError("clearance", message + group, reason=IMPLAUSIBLE) from None
         raise InputError(
             "clearance",
             f"{message}; or a clearance class C2, CN, C3, C4, C5 (GOST groups G6, G7, G8, G9)",

@@ -215,7 +215,7 @@ def _row_messages(part: Any, warned: int, progress: _Progress, quiet: bool) -> i
 def _header_message(exc: Exception) -> str:
     """'Invalid value for ...' of an error in the header line (a column's unit names it)."""
     if getattr(exc, "parameter", None) in ("CASES", "columns"):
-        return f"Invalid value for 'CASES.csv': {str(exc).split(': ', 1)[-1]}"
+        return f"Invalid value for 'CASES.csv': {getattr(exc, 'message', exc)}"
     return f"Invalid value for 'CASES.csv' header: {exc}"
 
 

@@ -3,15 +3,10 @@
 :func:`case_options` declares every option that describes the case (the bearing, its balls, the
 load, stiffness, clearance, geometry, material, cage angle, exponent and the combined load), each
 with its one help text; a command lists the few it does not take (``omit``). Click's values are
-converted once into a :class:`CaseOptions`, which the command receives as its ``case`` argument
-and which converts itself into the library's arguments (:meth:`CaseOptions.bearing_arguments`,
-:meth:`CaseOptions.combined_arguments`). Every option answers for the library's names of its
-parameter (:class:`bearingload.cli.options.LibraryOption`), so a library error names the option
-the user typed.
-
-The LOAD options (:data:`LOAD_PARAMS`: axial load, moment, cross moment, misalignment) choose the
-3-D combined engine; ``--tilt-radius`` only sets its lever; ``--dynamic-rating`` and
-``--rotating`` (:data:`LIFE_PARAMS`) feed only the lives and never change a ball load.
+converted once into the plan's :class:`~bearingload.plan.case.Case`, which the command receives
+as its ``case`` argument. Every option answers for the library's names of its parameter
+(:class:`bearingload.cli.options.LibraryOption`), so a library error names the option the user
+typed.
 
 Imports nothing heavy: the command line reads it at start-up.
 """
@@ -20,12 +15,10 @@ from __future__ import annotations
 
 import functools
 from collections.abc import Callable, Collection, Mapping
-from dataclasses import dataclass, fields
 from typing import Any
 
 import click
 
-from bearingload.bearings.mounting import MOUNTING_PARAMS
 from bearingload.cli.options import (
     BARE,
     CageAngle,
@@ -34,44 +27,14 @@ from bearingload.cli.options import (
     LibraryOption,
     PreloadValue,
     Quantity,
-    option_message,
-    option_name,
     units_help,
     usage_error,
 )
 from bearingload.constants import CONTAMINATION_LEVELS
 from bearingload.errors import InputError
+from bearingload.plan.case import AT_REST, CASE_FIELDS, Case
+from bearingload.plan.inputs import LIBRARY_NAMES
 from bearingload.units import plausible_ranges_help
-
-#: The load options: any of them given, the combined engine solves the case.
-LOAD_PARAMS = ("axial_load", "moment", "moment_cross", "misalignment", "contact_angle")
-#: The options of the combined engine that are not loads: the lever of the tilt.
-TILT_PARAMS = ("tilt_radius",)
-#: The operating conditions of the lives in hours, the modified life and the film
-#: (:class:`bearingload.bearings.service_life.Operating`); they change no load.
-SERVICE_PARAMS = ("static_rating", "speed", "reliability", "viscosity", "oil", "viscosity_40",
-                  "viscosity_100", "viscosity_index", "temperature", "contamination", "e_c",
-                  "fatigue_load_limit", "roughness", "pressure_viscosity")  # fmt: skip
-#: What --speed 0 means (a shaft at rest) and how to ask for it.
-AT_REST = ("a shaft at rest is the case without --speed: the static model (the answer of the "
-           "ball dynamics at 0 rpm), its lives in 10^6 revolutions, none in hours")  # fmt: skip
-#: The options of the ball dynamics at --speed (solve's ball bearings: the combined engine).
-DYNAMICS_PARAMS = ("ball_density", "quasi_static")
-#: The options that give the operating viscosity from the oil (instead of --viscosity).
-OIL_PARAMS = ("oil", "viscosity_40", "viscosity_100", "viscosity_index", "temperature")
-#: The options that feed only the lives.
-LIFE_PARAMS = ("dynamic_rating", "rotating", *SERVICE_PARAMS)
-#: The combined-load options, in the order a refusal names the first one given.
-COMBINED_PARAMS = LOAD_PARAMS + TILT_PARAMS + LIFE_PARAMS
-#: Why sweep and table refuse the mounting options (solve and batch take them).
-MOUNTING_REFUSAL = (
-    "the operating clearance of a mounted bearing is solve's and batch's (docs/mounting.md); "
-    "'bearingload solve' prints it: give it here with -G"
-)
-#: The options only a bearing or its ball geometry uses, refused for a ring given by z and K.
-BEARING_ONLY = ("inner_conformity", "outer_conformity", "modulus", "poisson", "ball_material",
-                *MOUNTING_PARAMS, "maker",
-                "dynamic_rating", "rotating", *SERVICE_PARAMS)  # fmt: skip
 
 CLEARANCE_HELP = (
     "Radial internal clearance G_r, total play (gap per side G_r/2; negative = preload): a length "
@@ -163,7 +126,6 @@ DECLARATIONS: dict[str, tuple[tuple[str, ...], dict[str, Any]]] = {
         "--balls",
         "-z",
         type=int,
-        library=("rollers",),
         help="Number of balls z (1 to 100000; a sweep: 3 or more): required for a ring given "
         "by hand, else it replaces the designation's.",
     ),
@@ -171,7 +133,6 @@ DECLARATIONS: dict[str, tuple[tuple[str, ...], dict[str, Any]]] = {
         "--load",
         "-F",
         type=Quantity("force"),
-        library=("radial_load",),
         help=f"Radial load F_r > 0 (>= 0 with an axial load or a moment). Units: {_FORCE} "
         "(bare number: N).",
     ),
@@ -227,15 +188,12 @@ DECLARATIONS: dict[str, tuple[tuple[str, ...], dict[str, Any]]] = {
         "N/mm^1.5, N/mm^(10/9) for a cylindrical roller bearing unless --exponent says "
         "otherwise).",
     ),
-    "clearance": _option(
-        "--clearance", "-G", type=Clearance(), library=("bore",), help=CLEARANCE_HELP
-    ),
+    "clearance": _option("--clearance", "-G", type=Clearance(), help=CLEARANCE_HELP),
     "clearance_pick": _option(
         "--clearance-pick",
         type=click.Choice(["min", "mean", "max", "range"]),
         default="mean",
         show_default=True,
-        library=("pick",),
         help="Where in a clearance class to take G_r; 'range' (solve): at min, mean and max, "
         "side by side.",
     ),
@@ -279,32 +237,27 @@ DECLARATIONS: dict[str, tuple[tuple[str, ...], dict[str, Any]]] = {
     "ball_diameter": _option(
         "--ball-diameter",
         type=Quantity("length"),
-        library=("D_w", "roller_diameter"),
         help="Ball diameter D_w, replacing the catalogue's. Bare number: mm.",
     ),
     "pitch_diameter": _option(
         "--pitch-diameter",
         type=Quantity("length"),
-        library=("d_m",),
         help="Pitch diameter d_m; default the catalogue's, else (d + D)/2. Bare number: mm.",
     ),
     "inner_conformity": _option(
         "--inner-conformity",
         type=float,
-        library=("f_i",),
         help="Inner groove conformity f_i = r_i/D_w, in (0.5, 1); default the catalogue's "
         "(0.52 when unknown).",
     ),
     "outer_conformity": _option(
         "--outer-conformity",
         type=float,
-        library=("f_o",),
         help="Outer groove conformity f_o = r_o/D_w; default the catalogue's (0.53 when unknown).",
     ),
     "modulus": _option(
         "--modulus",
         type=Quantity("modulus"),
-        library=("E1",),
         help="Young's modulus E of the rings (and of the balls unless --ball-material); default "
         "208000 MPa (bearing steel). "
         f"Units: {units_help('modulus')} (bare number: MPa; "
@@ -313,7 +266,6 @@ DECLARATIONS: dict[str, tuple[tuple[str, ...], dict[str, Any]]] = {
     "poisson": _option(
         "--poisson",
         type=float,
-        library=("nu1",),
         help="Poisson's ratio nu of the rings (and balls unless --ball-material); default 0.3.",
     ),
     "ball_material": _option(
@@ -358,7 +310,6 @@ DECLARATIONS: dict[str, tuple[tuple[str, ...], dict[str, Any]]] = {
     "static_rating": _option(
         "--static-rating",
         type=Quantity("force", positive=True),
-        library=("C0",),
         help="Basic static load rating C_0 for the static safety s0 = C0/P0 and ISO 281's "
         "estimate of C_u, replacing the catalogue's; changes no load. Units: "
         f"{_FORCE} (bare number: N).",
@@ -442,13 +393,11 @@ DECLARATIONS: dict[str, tuple[tuple[str, ...], dict[str, Any]]] = {
     "e_c": _option(
         "--eC",
         type=click.FloatRange(0.0, 1.0),
-        library=("eC",),
         help="Contamination factor e_C (0 to 1) instead of --contamination.",
     ),
     "fatigue_load_limit": _option(
         "--fatigue-load-limit",
         type=Quantity("force", positive=True),
-        library=("C_u",),
         help="Fatigue load limit C_u (the maker's); default ISO 281 Annex B's estimate from "
         f"C_0. Units: {_FORCE} (bare number: N).",
     ),
@@ -541,7 +490,7 @@ def case_options(
         def command(**kwargs: Any) -> Any:
             values = {name: kwargs.pop(name, None) for name in CASE_FIELDS}
             try:
-                case = CaseOptions.of(values)
+                case = read_case(values)
             except InputError as exc:
                 raise usage_error(exc) from exc
             return func(case=case, **kwargs)
@@ -551,6 +500,7 @@ def case_options(
                 attrs = attrs | {"default": (defaults or {})[name], "show_default": True}
             if name in hidden:
                 attrs = attrs | {"hidden": True}
+            attrs = attrs | {"library": LIBRARY_NAMES.get(name, ())}
             option = click.option(
                 *decls, name, cls=LibraryOption, required=name in required, **attrs
             )
@@ -565,312 +515,14 @@ def case_options(
     return decorate
 
 
-@dataclass(frozen=True)
-class CaseOptions:
-    """The case as the command line gave it, in the package's units (N, mm, N mm, °, MPa).
-
-    ``stiffness`` stays the text typed (its unit is checked against the exponent by
-    :meth:`stiffness_value`); ``exponent`` is None unless given (the bearing's own m: 10/9 for a
-    cylindrical roller bearing, else 1.5); ``given`` names the options given on the command
-    line (not left at a default).
-    """
-
-    bearing: str | None = None
-    balls: int | None = None
-    load: float | None = None
-    axial_load: float | None = None
-    moment: float | None = None
-    moment_cross: float | None = None
-    misalignment: float | None = None
-    contact_angle: float | None = None
-    arrangement: str | None = None
-    preload: float | str | None = None
-    width: float | None = None
-    tilt_radius: str | float | None = None
-    stiffness: str | None = None
-    clearance: Any = None
-    clearance_pick: str = "mean"
-    shaft_fit: str | None = None
-    housing_fit: str | None = None
-    shaft_bore: float | None = None
-    housing_diameter: float | None = None
-    inner_ring_temperature: float | None = None
-    outer_ring_temperature: float | None = None
-    ball_diameter: float | None = None
-    pitch_diameter: float | None = None
-    inner_conformity: float | None = None
-    outer_conformity: float | None = None
-    modulus: float | None = None
-    poisson: float | None = None
-    ball_material: str | None = None
-    maker: str | None = None
-    cage_angle: float | str = 0.0
-    exponent: float | None = None
-    dynamic_rating: float | None = None
-    rotating: str | None = None
-    static_rating: float | None = None
-    speed: float | None = None
-    ball_density: float | None = None
-    quasi_static: bool | None = None
-    reliability: float | None = None
-    viscosity: float | None = None
-    oil: str | None = None
-    viscosity_40: float | None = None
-    viscosity_100: float | None = None
-    viscosity_index: float | None = None
-    temperature: float | None = None
-    contamination: str | None = None
-    e_c: float | None = None
-    fatigue_load_limit: float | None = None
-    roughness: float | None = None
-    pressure_viscosity: float | None = None
-    given: frozenset[str] = frozenset()
-    bare: frozenset[str] = frozenset()  # options typed as a bare number (no unit)
-
-    @classmethod
-    def of(cls, values: dict[str, Any]) -> CaseOptions:
-        """The case of click's converted ``values`` (parameter name -> value; an omitted option
-        None), with the sources of the running command's parameters."""
-        ctx = click.get_current_context(silent=True)
-        default = (None, click.core.ParameterSource.DEFAULT)
-        given = frozenset(
-            name
-            for name in values
-            if ctx is not None and ctx.get_parameter_source(name) not in default
-        )
-        values = {k: v for k, v in values.items() if v is not None}
-        if "exponent" not in given:
-            values.pop("exponent", None)
-        bare = frozenset(ctx.meta.get(BARE, ())) if ctx is not None else frozenset()
-        return cls(**values, given=given, bare=bare)
-
-    @property
-    def radial_load(self) -> float:
-        """F_r, 0 where none is given (sweep --kurochkin-T; solve and table always have one). [N]"""
-        return 0.0 if self.load is None else self.load
-
-    @property
-    def by_hand(self) -> bool:
-        """True for a ring given by its balls and stiffness: no designation, no ball geometry."""
-        return self.bearing is None and self.ball_diameter is None and self.pitch_diameter is None
-
-    @property
-    def wants_combined(self) -> bool:
-        """True when a load option (:data:`LOAD_PARAMS`) was given: the load alone chooses the
-        engine; an angular-contact designation (``7205B``) always takes the combined engine,
-        its balls at the contact angle."""
-        if any(getattr(self, k) is not None for k in LOAD_PARAMS):
-            return True
-        from bearingload.bearings.angular import parse_angular
-
-        return self.bearing is not None and parse_angular(self.bearing) is not None
-
-    @property
-    def lives_given(self) -> bool:
-        """True when an option that feeds only the lives (:data:`LIFE_PARAMS`) was given."""
-        return any(getattr(self, k) is not None for k in LIFE_PARAMS)
-
-    def first_given(self, names: Collection[str]) -> str | None:
-        """The option (``--axial-load``) of the first of ``names`` with a value, else None."""
-        name = next((n for n in names if getattr(self, n) is not None), None)
-        return None if name is None else DECLARATIONS[name][0][0]
-
-    def refuse(self, names: Collection[str], where: str, why: str) -> None:
-        """One usage error naming the first of the options ``names`` given, ``where`` it was
-        given and ``why`` it is refused there."""
-        option = self.first_given(names)
-        if option is not None:
-            raise click.UsageError(f"{option} cannot be used with {where}: {why}")
-
-    def exponent_or(self, default: float = 1.5) -> float:
-        """The exponent given, else ``default``. [-]"""
-        return default if self.exponent is None else self.exponent
-
-    def stiffness_value(self) -> float | None:
-        """--stiffness in N/mm^m, its unit checked against the exponent m: the --exponent given,
-        else that of the designation's contact (:func:`bearingload.bearings.designation.
-        contact_exponent`: 10/9 for a cylindrical roller bearing, else 1.5)."""
-        from bearingload.bearings.designation import contact_exponent
-        from bearingload.units import parse_stiffness
-        from bearingload.validate import exponent as valid_exponent
-
-        m = self.exponent if self.exponent is not None else contact_exponent(self.bearing)
-        valid_exponent(m)  # the exponent's own error comes first, also without a stiffness
-        return None if self.stiffness is None else parse_stiffness(self.stiffness, m)
-
-    def cage_angle_deg(self, balls: int) -> float:
-        """The cage angle in degrees; ``"half"`` is half a pitch, 180/z. [°]"""
-        return 180.0 / balls if self.cage_angle == "half" else float(self.cage_angle)
-
-    def bearing_arguments(self, stiffness: float | None = None) -> dict[str, Any]:
-        """The keyword arguments of :func:`bearingload.bearings.resolve.resolve_bearings` (the
-        designation first), ``stiffness`` the converted --stiffness [N/mm^m]."""
-        return {
-            "designation": self.bearing,
-            "balls": self.balls,
-            "ball_diameter": self.ball_diameter,
-            "pitch_diameter": self.pitch_diameter,
-            "f_i": self.inner_conformity,
-            "f_o": self.outer_conformity,
-            "modulus": self.modulus,
-            "poisson": self.poisson,
-            "ball_material": self.ball_material,
-            "maker": self.maker,
-            "stiffness": stiffness,
-            "clearance": self.clearance,
-            "clearance_pick": self.clearance_pick,
-            "exponent": self.exponent,
-            **{name: getattr(self, name) for name in MOUNTING_PARAMS},
-        }
-
-    def operating(self) -> Any:
-        """The operating conditions of the lives
-        (:class:`bearingload.bearings.service_life.Operating`; alpha in 1/Pa)."""
-        from bearingload.bearings.service_life import Operating
-
-        alpha = None if self.pressure_viscosity is None else self.pressure_viscosity * 1e-9
-        viscosity, note = self.oil_viscosity()
-        return Operating(
-            speed=self.speed,
-            reliability=self.reliability,
-            viscosity=viscosity,
-            viscosity_note=note,
-            contamination=self.contamination,
-            e_c=self.e_c,
-            fatigue_load_limit=self.fatigue_load_limit,
-            roughness=self.roughness,
-            pressure_viscosity=alpha,
-        )
-
-    def oil_viscosity(self) -> tuple[float | None, str | None]:
-        """The operating viscosity [mm^2/s] and a note saying how, by the one rule of the oil
-        options and batch's columns (:func:`bearingload.bearings.oil.operating_viscosity`):
-        --viscosity, or that of the oil (--oil or --viscosity-40, --viscosity-100 or
-        --viscosity-index) at --temperature by ASTM D341."""
-        from bearingload.bearings.oil import OilInputError, operating_viscosity
-
-        oil = {n: getattr(self, n) for n in OIL_PARAMS}
-        try:
-            nu, note = operating_viscosity(self.viscosity, **oil)
-        except OilInputError as exc:
-            why = option_message(exc.why)
-            names = " / ".join(f"'{option_name(p)}'" for p in exc.parameters)
-            if exc.kind == "conflict":
-                assert exc.other is not None
-                first = option_name(exc.parameter)
-                raise click.UsageError(f"{first} cannot be used with {option_name(exc.other)}: "
-                                       f"{why}") from exc  # fmt: skip
-            head = "Missing option" if exc.kind == "missing" else "Invalid value for"
-            raise click.UsageError(f"{head} {names}: {why}") from exc
-        except InputError as exc:
-            raise usage_error(exc) from exc
-        given = next((n for n in OIL_PARAMS if oil[n] is not None), None)
-        if given is not None and self.speed is None:  # name the option typed, not --viscosity
-            from bearingload.bearings.lubrication import speed_needed
-
-            raise usage_error(speed_needed(given))
-        return nu, None if note is None else option_message(note)
-
-    def dynamics_arguments(self) -> dict[str, Any]:
-        """The ball dynamics of :func:`bearingload.studies.combined_bearing.solve_combined_bearing`:
-        the speed [rpm] (None: the static model, also under --quasi-static) and the ball density
-        [kg/mm^3] (None: steel)."""
-        self.check_dynamics_flags()
-        if self.rotating == "outer" and self.speed is not None and not self.quasi_static:
-            raise click.UsageError(
-                "Invalid value for '--rotating': the ball dynamics at --speed are coded for the "
-                "inner ring turning (docs/speed.md); give --quasi-static for the static model "
-                "with the outer ring's lives"
-            )
-        if self.stiffness is not None and self.speed is not None and not self.quasi_static:
-            raise click.UsageError(
-                "Invalid value for '--stiffness': the ball dynamics at --speed need each "
-                "contact's Hertz stiffness from the ball geometry; leave out --stiffness, or "
-                "give --quasi-static for the static model"
-            )
-        return {
-            "speed": None if self.quasi_static else self.speed,
-            "ball_density": None if self.ball_density is None else self.ball_density * 1e-9,
-        }
-
-    def check_dynamics_flags(self) -> None:
-        """Refuse --ball-density without the ball dynamics (no --speed, or --quasi-static) and
-        --quasi-static without --speed."""
-        if self.ball_density is not None and (self.speed is None or self.quasi_static):
-            raise click.UsageError(
-                "Invalid value for '--ball-density': it enters the ball dynamics at --speed, "
-                "which --quasi-static or a missing --speed leave out"
-            )
-        if self.quasi_static and self.speed is None:
-            raise click.UsageError("Invalid value for '--quasi-static': it needs --speed")
-
-    def combined_arguments(self) -> dict[str, Any]:
-        """The combined load as the keyword arguments of the combined studies
-        (:func:`bearingload.studies.combined_bearing.solve_combined_bearing`,
-        :func:`bearingload.studies.combined_sweep.combined_sweep`,
-        :func:`bearingload.studies.life_clearance.life_against_clearance`): F_a 0 when not
-        given, the inner ring rotating by default, the lever as given (None: groove)."""
-        return {
-            "axial_load": self.axial_load or 0.0,
-            "moment": self.moment,
-            "moment_cross": self.moment_cross,
-            "misalignment": self.misalignment,
-            "tilt_radius": self.tilt_radius,
-            "rotating": self.rotating or "inner",
-            "dynamic_rating": self.dynamic_rating,
-        }
-
-    def as_pair(self) -> CaseOptions | None:
-        """The case of a bearing pair (a designation's suffix, ``7205BDB``, read as the
-        arrangement and taken off the designation), or None for one bearing; a preload or a
-        width without a pair is refused."""
-        import dataclasses
-
-        from bearingload.bearings.angular import split_pair
-
-        case = self
-        if self.bearing is not None:
-            single, kind, cls = split_pair(self.bearing)
-            if kind is not None:
-                if self.arrangement is not None and self.arrangement.upper() != kind:
-                    raise click.UsageError(
-                        f"Invalid value for '--arrangement': {self.arrangement} contradicts the "
-                        f"designation {self.bearing.strip()!r} (a {kind} pair)"
-                    )
-                if cls is not None and self.preload not in (None, cls):
-                    raise click.UsageError(
-                        f"Invalid value for '--preload': {self.preload} contradicts the "
-                        f"designation {self.bearing.strip()!r} (preload class {cls})"
-                    )
-                preload = cls or self.preload
-                case = dataclasses.replace(self, bearing=single, arrangement=kind, preload=preload)
-        if case.arrangement is None:
-            for name in ("preload", "width"):
-                if getattr(case, name) is not None:
-                    raise click.UsageError(
-                        f"Invalid value for '--{name}': it belongs to a bearing pair; give "
-                        "--arrangement DB, DF or DT (or a designation with the suffix, "
-                        "7205BDB); a single bearing is preloaded against another one"
-                    )
-            return None
-        return case
-
-    def pair_arguments(self, balls: int) -> dict[str, Any]:
-        """The pair as the keyword arguments of
-        :func:`bearingload.studies.bearing_pair.solve_bearing_pair` (``balls``: z, for the cage
-        angle 'half'): the arrangement upper-cased, no preload 0."""
-        return {
-            "arrangement": (self.arrangement or "").upper(),
-            "preload": self.preload or 0.0,
-            "width": self.width,
-            "cage_angle": self.cage_angle_deg(balls),
-            "moment": self.moment,
-            "moment_cross": self.moment_cross,
-            "tilt_radius": self.tilt_radius,
-            "rotating": self.rotating or "inner",
-            "dynamic_rating": self.dynamic_rating,
-        }
-
-
-#: The parameters of :class:`CaseOptions` that come from the command line.
-CASE_FIELDS = tuple(f.name for f in fields(CaseOptions) if f.name != "given")
+def read_case(values: dict[str, Any]) -> Case:
+    """The case of click's converted ``values`` (parameter name -> value; an omitted option
+    None), with the options given on the command line (not left at a default) and those typed
+    as a bare number."""
+    ctx = click.get_current_context(silent=True)
+    default = (None, click.core.ParameterSource.DEFAULT)
+    given = frozenset(
+        name for name in values if ctx is not None and ctx.get_parameter_source(name) not in default
+    )
+    bare = frozenset(ctx.meta.get(BARE, ())) if ctx is not None else frozenset()
+    return Case.of(values, given=given, bare=bare)

@@ -27,7 +27,7 @@ def fit_errors(func: Callable[..., Any]) -> Callable[..., Any]:
             return func(*args, **kwargs)
         except InputError as exc:
             if path and exc.parameter.startswith(path):
-                message = str(exc)[len(exc.parameter) + 2 :]
+                message = exc.message
                 where = exc.parameter[len(path) :].strip()
                 text = f"{where}: {message}" if where else message
                 raise click.UsageError(f"Invalid value for 'FILE': {text}") from exc

@@ -39,7 +39,7 @@ class Quantity(click.ParamType):
         if self.kind == "stiffness":
             return str(value)  # converted with the exponent by the command (stiffness_value)
         if self.positive and not number > 0:
-            hint = f": {self.at_zero}" if self.at_zero and number == 0 else ""
+            hint = f": {option_message(self.at_zero)}" if self.at_zero and number == 0 else ""
             self.fail(f"must be greater than 0 {BASE_UNIT[self.kind]} (got {value}){hint}", param,
                       ctx)  # fmt: skip
         return number
@@ -176,10 +176,44 @@ def option_message(message: str) -> str:
     return re.sub(r"'([a-z_][a-z0-9_]*)'", swap, message)
 
 
+def _all_names(parameter: str) -> str:
+    """Every spelling of an option (``'--balls' / '-z'``), or the argument's name."""
+    param = _parameter(parameter)
+    if isinstance(param, click.Option):
+        return " / ".join(f"'{o}'" for o in param.opts)
+    return f"'{option_name(parameter)}'"
+
+
 def usage_error(exc: InputError) -> click.UsageError:
-    """The one ``Invalid value for '<option>': <message>`` of a library InputError."""
+    """The one usage error of a library InputError, from its fields: ``Invalid value for
+    '<option>': <message>``; ``<option> cannot be used with <where>: <why>`` for a conflict;
+    ``Missing option '<option>' (<instead>)``; the options a case would ignore."""
+    from bearingload.bearings.oil import OilInputError
+    from bearingload.errors import ConflictError, MissingError, UnusedError
+
+    option = option_name(exc.parameter)
+    if isinstance(exc, ConflictError):
+        where, why = option_message(exc.where), option_message(exc.why)
+        return click.UsageError(f"{option} cannot be used with {where}: {why}")
+    if isinstance(exc, MissingError):
+        return click.UsageError(
+            f"Missing option {_all_names(exc.parameter)} ({option_message(exc.instead)})"
+        )
+    if isinstance(exc, UnusedError):
+        names = ", ".join(option_name(n) for n in exc.parameters)
+        one = len(exc.parameters) == 1
+        verb, it = ("needs", "it") if one else ("need", "they")
+        return click.UsageError(f"{names} {verb} {option_message(exc.need)} {it} would be ignored")
+    if isinstance(exc, OilInputError):
+        why = option_message(exc.why)
+        if exc.kind == "conflict":
+            assert exc.other is not None
+            return click.UsageError(f"{option} cannot be used with {option_name(exc.other)}: {why}")
+        names = " / ".join(f"'{option_name(p)}'" for p in exc.parameters)
+        head = "Missing option" if exc.kind == "missing" else "Invalid value for"
+        return click.UsageError(f"{head} {names}: {why}")
     message = option_message(exc.message)
-    return click.UsageError(f"Invalid value for '{option_name(exc.parameter)}': {message}")
+    return click.UsageError(f"Invalid value for '{option}': {message}")
 
 
 def library_errors(func: Callable[..., Any]) -> Callable[..., Any]:
@@ -192,7 +226,7 @@ def library_errors(func: Callable[..., Any]) -> Callable[..., Any]:
         except InputError as exc:
             raise usage_error(exc) from exc
         except BearingloadError as exc:
-            raise click.ClickException(str(exc)) from exc
+            raise click.ClickException(option_message(str(exc))) from exc
 
     return wrapper
 

@@ -1,33 +1,27 @@
-"""``bearingload solve``: one case, every ball's load and a summary with units."""
+"""``bearingload solve``: one case, every ball's load and a summary with units.
+
+The command parses its options into a :class:`~bearingload.plan.case.Case`, hands it to the plan
+(:func:`bearingload.plan.solve.solve_case`: the engine, the refusals, the lives and warnings) and
+renders the :class:`~bearingload.plan.solution.Solution`."""
 
 from __future__ import annotations
 
-import functools
-from collections.abc import Callable
-from typing import Any
-
 import click
 
-from bearingload.cli.case_options import CaseOptions, case_options
-from bearingload.cli.cases import (
-    check_rotating,
-    refuse_tilt_radius,
-    refuse_unused,
-    resolve_bearings,
-)
+from bearingload.cli.case_options import case_options
 from bearingload.cli.options import (
     CONTEXT,
     Quantity,
     emit,
     library_errors,
     method_option,
+    option_message,
     output_options,
     print_warnings,
     quiet_option,
 )
 from bearingload.cli.plot import ball_loads_plot_option, check_plot, save_plot
-from bearingload.errors import ConvergenceError, InputError
-from bearingload.studies.life_basis import combined_basis, radial_basis
+from bearingload.plan.case import Case
 from bearingload.units import plausible_ranges_help
 
 
@@ -64,7 +58,7 @@ from bearingload.units import plausible_ranges_help
 @ball_loads_plot_option
 @library_errors
 def solve(
-    case: CaseOptions,
+    case: Case,
     revolutions: float,
     method: str,
     per_ball: bool,
@@ -149,347 +143,30 @@ def solve(
       # the ball loads and contact angles of this solution drawn into a PDF
       bearingload solve 6205 -F 5kN -A 2kN --plot loads.pdf
     """
-    from bearingload.models.registry import list_methods
+    from bearingload.plan.solve import solve_case
 
-    if not revolutions == revolutions:  # NaN passes click's range check
-        raise click.UsageError(
-            "Invalid value for '--revolutions': must be a number of revolutions > 0, got nan"
-        )
-    case, at_speed = _radial_at_speed(case)
-    methods = list_methods() if method == "all" else [method]
-    if at_speed and method != "exact":
-        raise click.UsageError(
-            f"Invalid value for '--method': at --speed the ball dynamics of a ball bearing are "
-            f"solved by the exact model only (the combined engine at F_a = 0); give "
-            f"--quasi-static for the static model, where --method {method} is allowed"
-        )
-    if plot is not None:  # before any work
+    given = click.get_current_context().get_parameter_source("revolutions")
+    life = revolutions if given not in (None, click.core.ParameterSource.DEFAULT) else None
+    if plot is not None:  # the file name before any work
         check_plot(plot)
-        if "exact" not in methods and not case.wants_combined:
-            raise click.UsageError(
-                f"Invalid value for '--plot': it draws the ball loads of the exact model; "
-                f"--method {method} gives none (use --method exact or all)"
-            )
-    k_given = case.stiffness_value()  # N/mm^m
-    pair = case.as_pair()
-    if pair is not None:
-        _refuse_revolutions("a bearing pair", "it prints L10r and L10 of the pair instead")
-        text, found = _pair(pair, k_given, method, plot, fmt, per_ball, show_geometry)
-        emit(text, output)
-        print_warnings(found, quiet)
-        return
-    from bearingload.bearings.angular import parse_angular
-
-    angular = case.bearing is not None and parse_angular(case.bearing) is not None
-    # the load chooses the engine, and --speed on a ball bearing (the ball dynamics: F_a = 0
-    # set above), never another life option; an angular-contact designation always takes the
-    # combined engine (its balls sit at the contact angle)
-    if case.wants_combined or angular:
-        if at_speed:
-            _refuse_revolutions(
-                "the ball dynamics at --speed (a ball bearing is solved by the combined engine "
-                "at F_a = 0)",
-                "give --quasi-static for the static radial engine",
-            )
-        _refuse_revolutions(
-            "the combined engine (a load option, or an angular-contact bearing)",
-            "it prints L10 = (C/P)^3 at P = X F_r + Y F_a and L10r instead",
-        )
-        if method != "exact":
-            what = (f"an angular-contact bearing ({case.bearing})" if angular else "the combined "
-                    "load (--axial-load, --moment, --moment-cross, --misalignment)")  # fmt: skip
-            raise click.UsageError(
-                f"Invalid value for '--method': {what} is solved by the exact model only"
-            )
-        bearings = with_ratings(resolve_bearings(case, k_given), case)
-        if bearings[0].kind == "ball" and bearings[0].has_geometry:
-            check_rotating(case, bearings[0], methods)
-        text, found, figure = _combined(bearings, case, fmt, per_ball, show_geometry, at_speed)
-    else:
-        from bearingload.reports.solve import printed_warnings, solve_report
-        from bearingload.studies.loaded_bearing import collect_warnings
-
-        refuse_tilt_radius(case)
-        _refuse_static_dynamics(case)
-        service = None
-        if case.by_hand:
-            refuse_unused(case)
-            _refuse_revolutions("a ring given by its balls and stiffness", "it has no C")
-            cases = _by_hand(methods, case, k_given)
-        else:
-            bearings = with_ratings(resolve_bearings(case, k_given), case)
-            cases = with_speed_warnings(_radial(bearings, case, methods, revolutions), case.speed)
-            service = service_lives(case, [radial_basis(c, case.rotating) for c in cases])
-        text = solve_report(
-            cases, fmt, per_ball=per_ball, show_geometry=show_geometry, service=service
-        )
-        found = printed_warnings(collect_warnings(cases), service)
-        figure = functools.partial(_figure, "solve_figure", cases)
+    solution = solve_case(case, method=method, revolutions=life, spell=option_message)
     if plot is not None:
-        save_plot(figure, plot)  # the figure of this very solution, written whole
+        _check_plot(solution.engine, method)
+    text = solution.report(fmt, per_ball=per_ball, show_geometry=show_geometry)
+    if plot is not None:
+        save_plot(solution.figure, plot)  # the figure of this very solution, written whole
     emit(text, output)
-    print_warnings(found, quiet)
+    print_warnings(solution.warnings, quiet)
 
 
-def _radial_at_speed(case: CaseOptions) -> tuple[CaseOptions, bool]:
-    """(the case, True) with F_a = 0 given where a radial case of a ball bearing (a BEARING or
-    the ball geometry, not an angular-contact designation) has --speed without --quasi-static:
-    the combined engine then solves it with the ball dynamics, as --axial-load 0 does
-    (docs/speed.md); otherwise (the case, False): rollers, --quasi-static, no speed, a pair."""
-    import dataclasses
-
-    from bearingload.bearings.designation import contact_exponent
-    from bearingload.constants import ROLLER_EXPONENT
-
-    if case.speed is None or case.quasi_static or case.wants_combined:
-        return case, False
-    if case.arrangement is not None or case.as_pair() is not None:
-        return case, False  # a pair: its own path (_pair), the ball dynamics of both bearings
-    if case.by_hand or contact_exponent(case.bearing) == ROLLER_EXPONENT:
-        return case, False  # --speed refused without the geometry; rollers: the radial engine
-    given = case.given | {"axial_load"}
-    return dataclasses.replace(case, axial_load=0.0, given=given), True
-
-
-#: What a radial solve of a ball bearing at --speed the ball dynamics cannot solve can do.
-QUASI_STATIC_WAY = "--quasi-static gives the static radial engine (the ball dynamics left out)"
-
-
-def _quasi_static_hint(exc: InputError, radial: bool = True) -> InputError | None:
-    """The combined solver's refusal of loads too small for it, at --speed: it named 'the
-    radial solver, without an axial load', which at a speed is the ball dynamics too. On a radial
-    solve (``radial``: F_a = 0 set, no axial load given) --quasi-static is the way to the radial
-    engine; with an axial load given, --quasi-static and no axial load are."""
-    from bearingload.models.combined import RADIAL_TAKES_ANY_LOAD
-    from bearingload.models.high_speed import too_fast
-
-    message = exc.message
-    if too_fast(exc):
-        return InputError(exc.parameter, f"{message}; {STATIC_AT_ANY_SPEED}")
-    if RADIAL_TAKES_ANY_LOAD not in message:
-        return None
-    way = ("--quasi-static gives the static radial engine, which takes any load" if radial
-           else "--quasi-static without an axial load gives the static radial engine, which "
-           "takes any load")  # fmt: skip
-    hint = f"at --speed a ball bearing is solved by the combined engine (the ball dynamics); {way}"
-    return InputError(exc.parameter, message.replace(RADIAL_TAKES_ANY_LOAD, hint))
-
-
-def _refuse_static_dynamics(case: CaseOptions) -> None:
-    """--ball-density and --quasi-static on the radial engine: refused for a roller bearing
-    (no ball dynamics) and without a speed, --ball-density also under --quasi-static."""
-    from bearingload.bearings.designation import contact_exponent
-    from bearingload.constants import ROLLER_EXPONENT
-
-    if not case.by_hand and contact_exponent(case.bearing) == ROLLER_EXPONENT:
-        case.refuse(("ball_density",), f"a roller bearing ({case.bearing})", "the radial engine "
-                    "solves it by the static model at any speed: the ball dynamics at --speed "
-                    "are coded for ball bearings")  # fmt: skip
-    case.check_dynamics_flags()
-
-
-def _refuse_revolutions(where: str, instead: str) -> None:
-    """Refuse a --revolutions given on the command line where no allowable load is printed: it
-    sets the life L of the radial engine's allowable load C/(L/10^6)^(1/3) of a bearing with C."""
-    ctx = click.get_current_context()
-    if ctx.get_parameter_source("revolutions") not in (None, click.core.ParameterSource.DEFAULT):
-        raise click.UsageError(
-            f"--revolutions cannot be used with {where}: it sets the life L of the allowable "
-            f"radial load C/(L/10^6)^(1/3), which only the radial engine prints for a bearing "
-            f"with a dynamic load rating C; {instead}"
-        )
-
-
-def _pair(
-    case: CaseOptions, k_given: float | None, method: str, plot: str | None, fmt: str,
-    per_ball: bool, show_geometry: bool,
-) -> tuple[str, list[str]]:  # fmt: skip
-    """A pair of angular-contact ball bearings (--arrangement, or 7205BDB): (report, warnings)."""
-    import dataclasses
-
-    from bearingload.reports.pair import pair_report
-    from bearingload.reports.solve import printed_warnings
-    from bearingload.studies.bearing_pair import solve_bearing_pair
-
-    if method != "exact":
-        raise click.UsageError(
-            "Invalid value for '--method': a bearing pair is solved by the exact model only"
-        )
-    if plot is not None:
+def _check_plot(engine: str, method: str) -> None:
+    """Refuse --plot where the solution has no ball loads of one bearing to draw."""
+    if engine == "pair":
         raise click.UsageError(
             "Invalid value for '--plot': it draws the ball loads of one bearing, not of a pair"
         )
-    case.refuse(("misalignment",), "a bearing pair", "the shaft's tilt follows from the "
-                "loads; give --moment")  # fmt: skip
-    why = "the design contact angle fixes the geometry of an angular-contact bearing"
-    case.refuse(("clearance",), "a bearing pair", why + " (no clearance)")
-    b = with_ratings(resolve_bearings(case, k_given), case)[0]
-    if case.contact_angle is not None:
-        if case.bearing is not None:
-            raise click.UsageError(
-                "--contact-angle cannot be used with a bearing designation: give the "
-                "angular-contact ring by hand (--balls, --ball-diameter, --pitch-diameter)"
-            )
-        b = dataclasses.replace(b, contact_angle=case.contact_angle, clearance=0.0)
-    if b.contact_angle is None:
+    if engine == "radial" and method not in ("exact", "all"):
         raise click.UsageError(
-            f"Invalid value for '--arrangement': a pair {case.arrangement} is two "
-            "angular-contact ball bearings; give an angular-contact designation (7205B, "
-            "7205BDB) or a ring by hand with --contact-angle"
+            f"Invalid value for '--plot': it draws the ball loads of the exact model; "
+            f"--method {method} gives none (use --method exact or all)"
         )
-    dynamics = case.dynamics_arguments()  # at --speed the ball dynamics, unless --quasi-static
-    try:
-        pc = solve_bearing_pair(b, case.radial_load, case.axial_load or 0.0,
-                                **case.pair_arguments(b.balls), **dynamics)  # fmt: skip
-    except (ConvergenceError, InputError) as exc:
-        hinted = pair_speed_hint(exc) if dynamics["speed"] is not None else None
-        if hinted is None:
-            raise
-        raise hinted from exc
-    pc = with_speed_warnings([pc], case.speed)[0]  # the bearing's limiting speeds
-    # each bearing's service lives as one bearing's from its own loads; the pair's from them
-    service = service_lives(case, [combined_basis(c) for c in pc.bearings])
-    text = pair_report(pc, fmt, per_ball=per_ball, show_geometry=show_geometry, service=service)
-    return text, printed_warnings(pc.warnings, service)
-
-
-#: The way out of a speed beyond the ball dynamics' limit (n d_m).
-STATIC_AT_ANY_SPEED = "--quasi-static gives the static model at any speed (the lives in hours)"
-
-
-def pair_speed_hint(exc: ConvergenceError | InputError) -> Exception | None:
-    """A pair at --speed the ball dynamics leave unbalanced, refuse as too light (the library's
-    way out) or as too fast, with --quasi-static named; None for another refusal."""
-    from bearingload.models.high_speed import too_fast
-    from bearingload.models.pair_speed import STATIC_WAY
-
-    way = "--quasi-static gives the static model"
-    if isinstance(exc, ConvergenceError):
-        return click.ClickException(f"{exc}; {way}")
-    if too_fast(exc):
-        return InputError(exc.parameter, f"{exc.message}; {STATIC_AT_ANY_SPEED}")
-    if STATIC_WAY not in str(exc):
-        return None
-    return InputError(exc.parameter, exc.message.replace(STATIC_WAY, way))
-
-
-def _radial(
-    bearings: list[Any], case: CaseOptions, methods: list[str], revolutions: float
-) -> list[Any]:
-    """The radial engine on resolved bearings: C replaced by --dynamic-rating, and L10r from the
-    exact ball loads for the ring --rotating names (default inner) where it can be computed."""
-    from bearingload.studies.loaded_bearing import solve_bearing
-    from bearingload.studies.reference_life import with_reference_lives
-
-    if case.dynamic_rating is not None:
-        bearings = [b.with_dynamic_rating(case.dynamic_rating) for b in bearings]
-    if not any(b.C for b in bearings):
-        _refuse_revolutions("a bearing without a dynamic load rating C", "give --dynamic-rating")
-    check_rotating(case, bearings[0], methods)
-    angle = case.cage_angle_deg(bearings[0].balls)
-    cases = solve_bearing(bearings, case.radial_load, angle, methods, revolutions)
-    return with_reference_lives(cases, case.rotating or "inner")
-
-
-def _combined(
-    bearings: list[Any], case: CaseOptions, fmt: str, per_ball: bool, show_geometry: bool,
-    at_speed: bool = False,
-) -> tuple[str, list[str], Callable[[], Any]]:  # fmt: skip
-    """The combined-load engine on resolved bearings: (report, warnings, its figure);
-    ``at_speed``: a radial case of a ball bearing solved with the ball dynamics at F_a = 0."""
-    from bearingload.cli.cases import combined_cases
-    from bearingload.reports.combined import collect_combined_warnings, combined_report
-    from bearingload.reports.solve import printed_warnings
-
-    try:
-        solved = combined_cases(bearings, case)
-    except InputError as exc:
-        dynamics = case.speed is not None and not case.quasi_static
-        hinted = _quasi_static_hint(exc, radial=at_speed) if dynamics else None
-        if hinted is None:
-            raise
-        raise hinted from exc
-    except ConvergenceError as exc:  # a radial case at speed: the static engine solves it
-        if not at_speed:
-            raise
-        raise click.ClickException(f"{exc}; {QUASI_STATIC_WAY}") from exc
-    cases = with_speed_warnings(solved, case.speed)
-    service = service_lives(case, [combined_basis(c) for c in cases])
-    text = combined_report(
-        cases, fmt, per_ball=per_ball, show_geometry=show_geometry, service=service
-    )
-    found = printed_warnings(collect_combined_warnings(cases), service)
-    return text, found, functools.partial(_figure, "combined_loads_figure", cases)
-
-
-def with_ratings(bearings: list[Any], case: CaseOptions) -> list[Any]:
-    """The resolved bearings with C_0 replaced by --static-rating where given; --dynamic-rating
-    checked for its range (the combined engines take it as an argument: 1e300 N overflowed its
-    L10, refused as a bad --load)."""
-    if case.dynamic_rating is not None:
-        bearings[0].with_dynamic_rating(case.dynamic_rating)
-    if case.static_rating is None:
-        return bearings
-    return [b.with_static_rating(case.static_rating) for b in bearings]
-
-
-def pair_bearing(case: CaseOptions) -> Any:
-    """One bearing of the pair of ``sweep`` and ``table life`` (resolved, with its ratings);
-    refused unless it is an angular-contact designation."""
-    from bearingload.cli.cases import resolve_bearings
-
-    b = with_ratings(resolve_bearings(case, case.stiffness_value()), case)[0]
-    if b.contact_angle is None:
-        raise click.UsageError(
-            f"Invalid value for '--arrangement': a pair {case.arrangement} is two "
-            "angular-contact ball bearings; give an angular-contact designation (7205B, 7205BDB)"
-        )
-    return b
-
-
-def service_lives(case: CaseOptions, bases: list[Any]) -> list[Any]:
-    """The lives the case's operating conditions make meaningful, one
-    :class:`bearingload.bearings.service_life.ServiceLife` per basis: C_0 wherever it is known
-    (catalogue or --static-rating), the rest as the options of
-    :data:`bearingload.cli.case_options.SERVICE_PARAMS` given make it meaningful."""
-    from bearingload.bearings.service_life import service_values
-
-    op = case.operating()
-    return [service_values(op, b) for b in bases]
-
-
-def with_speed_warnings(cases: list[Any], speed: float | None) -> list[Any]:
-    """The solved cases (one each) with the warning on a --speed above the limiting speed the
-    catalogue gives for their bearing added to theirs
-    (:func:`bearingload.bearings.checks.speed_findings`): stderr and json both list it."""
-    import dataclasses
-
-    from bearingload.bearings.checks import speed_findings
-
-    if speed is None:
-        return cases
-    out = []
-    for c in cases:
-        new = [] if c.bearing is None else speed_findings(speed, c.bearing)
-        out.append(dataclasses.replace(c, warnings=(*c.warnings, *new)) if new else c)
-    return out
-
-
-def _figure(name: str, cases: list[Any]) -> Any:
-    """The figure ``name`` of :mod:`bearingload.reports.plots` of the solved ``cases``
-    (imported only when a plot is drawn)."""
-    from bearingload.reports import plots
-
-    return getattr(plots, name)(cases)
-
-
-def _by_hand(methods: list[str], case: CaseOptions, k_given: float | None) -> list[Any]:
-    """The radial engine on a ring given by z and K."""
-    from bearingload.bearings.clearance import clearance_length
-    from bearingload.cli.cases import ring_by_hand
-    from bearingload.studies.loaded_bearing import solve_ring
-
-    z, k = ring_by_hand(case, k_given)
-    angle = case.cage_angle_deg(z)
-    g_r = clearance_length(case.clearance)
-    return solve_ring(methods, z, case.radial_load, k, g_r, angle, case.exponent_or(1.5))

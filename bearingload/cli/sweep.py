@@ -6,17 +6,12 @@ from typing import Any
 
 import click
 
-from bearingload.cli.case_options import (
-    COMBINED_PARAMS,
-    MOUNTING_PARAMS,
-    MOUNTING_REFUSAL,
-    SERVICE_PARAMS,
-    CaseOptions,
-    case_options,
-)
-from bearingload.cli.cases import refuse_range, refuse_tilt_radius, resolve_case
+from bearingload.bearings.mounting import MOUNTING_PARAMS
+from bearingload.cli.case_options import case_options
 from bearingload.cli.options import CONTEXT, LibraryOption, emit, library_errors, output_options
 from bearingload.cli.plot import check_plot, save_plot
+from bearingload.plan.bearing import refuse_range, refuse_tilt_radius, resolve_case
+from bearingload.plan.case import COMBINED_PARAMS, MOUNTING_REFUSAL, SERVICE_PARAMS, Case
 
 #: The case options the dimensionless mode refuses (P = K = 1, the gap from T).
 KUROCHKIN_REFUSES = ("bearing", "load", "stiffness", "clearance", "plot", "ball_diameter",
@@ -65,7 +60,7 @@ SERVICE_REFUSAL = (
 @output_options
 @library_errors
 def sweep(
-    case: CaseOptions,
+    case: Case,
     steps: int,
     plot: str | None,
     kurochkin_t: float | None,
@@ -146,10 +141,10 @@ def sweep(
         return
     if plot is not None:
         check_plot(plot)
-    from bearingload.cli.solve import _radial_at_speed, _refuse_static_dynamics
+    from bearingload.plan.solve import radial_at_speed, refuse_static_dynamics
 
-    _refuse_static_dynamics(case)
-    case, radial = _radial_at_speed(case)  # a radial ball bearing at speed: F_a = 0, dynamics
+    refuse_static_dynamics(case)
+    case, radial = radial_at_speed(case)  # a radial ball bearing at speed: F_a = 0, dynamics
     if case.wants_combined:  # the load alone chooses the engine, never a life option
         _combined(case, steps, plot, fmt, output, radial)
         return
@@ -175,19 +170,18 @@ def sweep(
     emit(text, output)
 
 
-def _bearing_checks(case: CaseOptions, result: Any) -> tuple[str, ...]:
+def _bearing_checks(case: Case, result: Any) -> tuple[str, ...]:
     """The warnings solve gives on the bearing of the case (s0, C0, contact pressure, clearance),
     at the heaviest ball load of the sweep ``result``, and on --speed above its limiting speed."""
     from bearingload.bearings.checks import speed_findings
-    from bearingload.cli.cases import resolve_bearings
-    from bearingload.cli.solve import with_ratings
+    from bearingload.plan.bearing import resolve_bearings, with_ratings
     from bearingload.studies.sweep import bearing_checks
 
     b = with_ratings(resolve_bearings(case, case.stiffness_value()), case)[0]
     return bearing_checks(b, result) + tuple(speed_findings(case.speed, b))
 
 
-def _radial_lives(case: CaseOptions) -> tuple[Any, dict[str, Any]]:
+def _radial_lives(case: Case) -> tuple[Any, dict[str, Any]]:
     """The lives of a radial sweep (--dynamic-rating, --rotating, --speed given, no load
     option): L10r at each cage position from the radial engine's ball loads, every ball at the
     contact angle 0, as solve's radial path gives it (a ball bearing with its geometry and C_r;
@@ -196,8 +190,7 @@ def _radial_lives(case: CaseOptions) -> tuple[Any, dict[str, Any]]:
     import functools
 
     from bearingload.bearings.life import BALL_LIFE_EXPONENT, ROLLER_LIFE_EXPONENT
-    from bearingload.cli.cases import check_rotating, resolve_bearings
-    from bearingload.cli.solve import with_ratings
+    from bearingload.plan.bearing import check_rotating, resolve_bearings, with_ratings
     from bearingload.studies.reference_life import ball_reference_life, has_reference_life
 
     b = with_ratings(resolve_bearings(case, case.stiffness_value()), case)[0]
@@ -217,7 +210,7 @@ def _radial_lives(case: CaseOptions) -> tuple[Any, dict[str, Any]]:
 
 
 def _combined(
-    case: CaseOptions, steps: int, plot: str | None, fmt: str, output: str | None,
+    case: Case, steps: int, plot: str | None, fmt: str, output: str | None,
     radial: bool = False,
 ) -> None:  # fmt: skip
     """The sweep under a combined load: one vectorised 3-D solve over the pitch (at --speed the
@@ -226,9 +219,8 @@ def _combined(
     import dataclasses
 
     from bearingload.bearings.checks import speed_findings
-    from bearingload.cli.cases import bearing_context, resolve_bearings
     from bearingload.cli.options import print_warnings
-    from bearingload.cli.solve import with_ratings
+    from bearingload.plan.bearing import bearing_context, resolve_bearings, with_ratings
     from bearingload.reports.combined_sweep import combined_sweep_report
 
     b = with_ratings(resolve_bearings(case, case.stiffness_value()), case)[0]
@@ -245,11 +237,11 @@ def _combined(
     emit(text, output)
 
 
-def _combined_sweep(b: Any, case: CaseOptions, steps: int, radial: bool) -> Any:
+def _combined_sweep(b: Any, case: Case, steps: int, radial: bool) -> Any:
     """:func:`bearingload.studies.combined_sweep.combined_sweep` of the case, a refusal of the
     ball dynamics naming --quasi-static as solve's does."""
-    from bearingload.cli.solve import QUASI_STATIC_WAY, _quasi_static_hint
     from bearingload.errors import ConvergenceError, InputError
+    from bearingload.plan.solve import QUASI_STATIC_WAY, STATIC_PAIR_WAY, speed_hint
     from bearingload.studies.combined_sweep import combined_sweep
 
     dynamics = case.dynamics_arguments()
@@ -257,24 +249,23 @@ def _combined_sweep(b: Any, case: CaseOptions, steps: int, radial: bool) -> Any:
         return combined_sweep(b, case.radial_load, steps=steps, **case.combined_arguments(),
                               **dynamics)  # fmt: skip
     except InputError as exc:
-        hinted = _quasi_static_hint(exc, radial) if dynamics["speed"] is not None else None
+        hinted = speed_hint(exc, radial) if dynamics["speed"] is not None else None
         if hinted is None:
             raise
         raise hinted from exc
     except ConvergenceError as exc:
         if dynamics["speed"] is None:
             raise
-        way = QUASI_STATIC_WAY if radial else "--quasi-static gives the static model"
-        raise click.ClickException(f"{exc}; {way}") from exc
+        raise exc.with_way_out(QUASI_STATIC_WAY if radial else STATIC_PAIR_WAY) from exc
 
 
-def _pair(case: CaseOptions, steps: int, plot: str | None, fmt: str, output: str | None) -> None:
+def _pair(case: Case, steps: int, plot: str | None, fmt: str, output: str | None) -> None:
     """The sweep of a bearing pair (7205BDB, --arrangement): one vectorised pair solve over the
     pitch, then emit."""
-    from bearingload.cli.cases import bearing_context
     from bearingload.cli.options import print_warnings
-    from bearingload.cli.solve import pair_bearing, pair_speed_hint
     from bearingload.errors import ConvergenceError, InputError
+    from bearingload.plan.bearing import bearing_context, pair_bearing
+    from bearingload.plan.solve import pair_speed_hint
     from bearingload.reports.pair_sweep import pair_sweep_report
     from bearingload.studies.pair_sweep import pair_sweep
 
@@ -283,10 +274,10 @@ def _pair(case: CaseOptions, steps: int, plot: str | None, fmt: str, output: str
             "Invalid value for '--plot': it draws one bearing's ripple, not a pair's; "
             "--format csv gives the pair at every cage position"
         )
-    case.refuse(("misalignment",), "a bearing pair", "the shaft's tilt follows from the loads; "
-                "give --moment")  # fmt: skip
-    case.refuse(("clearance",), "a bearing pair", "the design contact angle fixes the geometry "
-                "of an angular-contact bearing (no clearance)")  # fmt: skip
+    tilt = "the shaft's tilt follows from the loads; give 'moment'"
+    case.refuse(("misalignment",), "a bearing pair", tilt)
+    fixed = "the design contact angle fixes the geometry of an angular-contact bearing"
+    case.refuse(("clearance",), "a bearing pair", fixed + " (no clearance)")
     b = pair_bearing(case)
     args = case.pair_arguments(b.balls)
     del args["cage_angle"]
@@ -312,7 +303,7 @@ def _pair(case: CaseOptions, steps: int, plot: str | None, fmt: str, output: str
 
 
 def _kurochkin(
-    case: CaseOptions, t: float, steps: int, plot: str | None, fmt: str, output: str | None
+    case: Case, t: float, steps: int, plot: str | None, fmt: str, output: str | None
 ) -> None:
     """The dimensionless mode: refuse the options it does not use, then sweep and emit."""
     extra = [

@@ -7,18 +7,19 @@ from typing import Any
 
 import click
 
-from bearingload.cli.case_options import (
-    COMBINED_PARAMS,
-    DYNAMICS_PARAMS,
-    MOUNTING_PARAMS,
-    MOUNTING_REFUSAL,
-    CaseOptions,
-    Clearance,
-    case_options,
+from bearingload.bearings.mounting import MOUNTING_PARAMS
+from bearingload.cli.case_options import Clearance, case_options
+from bearingload.cli.options import (
+    CONTEXT,
+    emit,
+    library_errors,
+    method_option,
+    option_message,
+    output_options,
 )
-from bearingload.cli.cases import refuse_range
-from bearingload.cli.options import CONTEXT, emit, library_errors, method_option, output_options
 from bearingload.errors import ConvergenceError, InputError
+from bearingload.plan.bearing import refuse_range
+from bearingload.plan.case import COMBINED_PARAMS, DYNAMICS_PARAMS, MOUNTING_REFUSAL, Case
 
 TABLES = ("k", "kq", "life")
 #: Why table k and kq refuse the options of the ball dynamics.
@@ -105,7 +106,7 @@ class ForceList(click.ParamType):
 @library_errors
 def table(
     name: str,
-    case: CaseOptions,
+    case: Case,
     z_max: int,
     clearances: list[float] | None,
     preloads: list[float] | None,
@@ -233,7 +234,7 @@ def table(
         )
     else:
         from bearingload.bearings.clearance import clearance_length
-        from bearingload.cli.cases import refuse_unused
+        from bearingload.plan.bearing import refuse_unused
         from bearingload.studies.tables import Conditions
 
         refuse_unused(case, ("maker",), "--bearing (a class and a maker's ball set are a "
@@ -248,10 +249,10 @@ def table(
 _GEOMETRY = ("inner_conformity", "outer_conformity", "modulus", "poisson", "ball_material")
 
 
-def _bearing_conditions(case: CaseOptions, k_given: float | None) -> Any:
+def _bearing_conditions(case: Case, k_given: float | None) -> Any:
     """The conditions of a catalogue bearing's ball and raceways (Hertz K, its clearance)."""
     from bearingload.bearings.resolve import check_exponent
-    from bearingload.cli.cases import resolve_bearings
+    from bearingload.plan.bearing import resolve_bearings
     from bearingload.studies.tables import for_bearing
 
     clearance = case.clearance if case.clearance is not None else 0.0
@@ -272,7 +273,7 @@ def _given(param: str) -> bool:
 
 
 def _life(
-    case: CaseOptions,
+    case: Case,
     k_given: float | None,
     clearances: list[float] | None,
     fmt: str,
@@ -280,8 +281,8 @@ def _life(
 ) -> None:
     """``table life``: resolve the bearing as solve does, solve every clearance, emit; a speed
     above the catalogue's limiting speed warns, as in solve."""
-    from bearingload.cli.cases import resolve_bearings
     from bearingload.cli.options import print_warnings
+    from bearingload.plan.bearing import resolve_bearings
     from bearingload.reports.life_clearance import life_report
     from bearingload.reports.solve import printed_warnings
     from bearingload.studies.life_clearance import life_against_clearance
@@ -291,7 +292,8 @@ def _life(
             "table life needs a bearing: --bearing, or --balls, --ball-diameter, "
             "--pitch-diameter and --dynamic-rating"
         )
-    from bearingload.cli.solve import with_ratings, with_speed_warnings
+    from bearingload.plan.bearing import with_ratings
+    from bearingload.plan.solve import with_speed_warnings
 
     b = with_ratings(resolve_bearings(case, k_given), case)[0]
     dynamics = case.dynamics_arguments() if b.kind == "ball" else {}  # ball dynamics at speed
@@ -309,7 +311,7 @@ def _life(
     except ConvergenceError as exc:
         if dynamics.get("speed") is None:
             raise
-        raise click.ClickException(f"{exc}; {QUASI_STATIC_WAY}") from exc
+        raise exc.with_way_out(QUASI_STATIC_WAY) from exc
     (result,) = with_speed_warnings([result], case.speed)
     service = _service(case, result)
     text = life_report(result, fmt, service)
@@ -318,7 +320,7 @@ def _life(
 
 
 #: What a row the ball dynamics cannot solve can do.
-QUASI_STATIC_WAY = "--quasi-static gives the static model (the ball dynamics left out)"
+QUASI_STATIC_WAY = "'quasi_static' gives the static model (the ball dynamics left out)"
 
 
 def _life_input_error(exc: InputError, dynamics: bool) -> Exception:
@@ -326,34 +328,37 @@ def _life_input_error(exc: InputError, dynamics: bool) -> Exception:
     the loads too small for the combined solver name no radial solver (table life has none: the
     static rows are the combined solver's too); a speed the ball dynamics refuse (``dynamics``)
     names --quasi-static; others as they are."""
-    from bearingload.cli.solve import STATIC_AT_ANY_SPEED
-    from bearingload.models.combined import RADIAL_TAKES_ANY_LOAD
+    from bearingload.models.combined import RADIAL_TAKES_ANY_LOAD, TOO_LIGHT
     from bearingload.models.high_speed import too_fast
+    from bearingload.plan.solve import STATIC_AT_ANY_SPEED
 
-    message = exc.message
     if exc.parameter == "clearance":
+        message = option_message(exc.message)
         return click.UsageError(f"Invalid value for '--clearances': {message}")
-    if RADIAL_TAKES_ANY_LOAD in message:
-        way = ("table life solves every row by it, at any speed; 'bearingload solve' without an "
-               "axial load (at a speed with --quasi-static) takes any load")  # fmt: skip
-        return InputError(exc.parameter, message.replace(RADIAL_TAKES_ANY_LOAD, way))
+    if exc.reason == TOO_LIGHT and exc.way_out == RADIAL_TAKES_ANY_LOAD:
+        way = (
+            "table life solves every row by it, at any speed; 'bearingload solve' without an "
+            "axial load (at a speed with 'quasi_static') takes any load"
+        )
+        return exc.with_way_out(way)
     if dynamics and too_fast(exc):
-        return InputError(exc.parameter, f"{message}; {STATIC_AT_ANY_SPEED}")
+        return exc.with_way_out(STATIC_AT_ANY_SPEED)
     return exc
 
 
 def _pair_life(
     name: str,
-    case: CaseOptions | None,
+    case: Case | None,
     preloads: list[float] | None,
     clearances: list[float] | None,
     fmt: str,
     output: str | None,
 ) -> None:
     """``table life`` of a bearing pair: L10r against the preload (``--preloads``), emit."""
-    from bearingload.cli.case_options import SERVICE_PARAMS
     from bearingload.cli.options import print_warnings
-    from bearingload.cli.solve import pair_bearing, with_speed_warnings
+    from bearingload.plan.bearing import pair_bearing
+    from bearingload.plan.case import SERVICE_PARAMS
+    from bearingload.plan.solve import with_speed_warnings
     from bearingload.reports.pair_life import preload_life_report
 
     if case is None:
@@ -374,10 +379,10 @@ def _pair_life(
     ):
         if given:
             raise click.UsageError(f"{option} cannot be used with table life of a pair: {why}")
-    case.refuse(("misalignment",), "a bearing pair", "the shaft's tilt follows from the loads; "
-                "give --moment")  # fmt: skip
-    case.refuse(("clearance",), "a bearing pair", "the design contact angle fixes the geometry "
-                "of an angular-contact bearing (no clearance)")  # fmt: skip
+    tilt = "the shaft's tilt follows from the loads; give 'moment'"
+    case.refuse(("misalignment",), "a bearing pair", tilt)
+    fixed = "the design contact angle fixes the geometry of an angular-contact bearing"
+    case.refuse(("clearance",), "a bearing pair", fixed + " (no clearance)")
     lives = tuple(p for p in SERVICE_PARAMS if p != "speed")  # --speed: the hours, the dynamics
     case.refuse(lives, "table life of a pair", "its service lives beyond the hours are not yet "
                 "tabulated; 'bearingload solve 7205BDB --preload ...' gives them for one preload")  # fmt: skip
@@ -407,12 +412,12 @@ def _pair_life(
     emit(text, output)
 
 
-def _solve_pairs(case: CaseOptions, b: Any, preloads: list[float]) -> Any:
+def _solve_pairs(case: Case, b: Any, preloads: list[float]) -> Any:
     """The pair ``b`` of ``case`` at every preload [N], as solve solves each (at --speed the
     ball dynamics of both bearings unless --quasi-static); the library's refusals in the words
     of the command line."""
-    from bearingload.cli.solve import pair_speed_hint
     from bearingload.models.pair_speed import STATIC_WAY
+    from bearingload.plan.solve import pair_speed_hint
     from bearingload.studies.pair_life import life_against_preload
 
     args = case.pair_arguments(b.balls)
@@ -428,18 +433,18 @@ def _solve_pairs(case: CaseOptions, b: Any, preloads: list[float]) -> Any:
             raise hinted from exc
         if not isinstance(exc, InputError):
             raise
-        message = exc.message
-        if exc.parameter == "preload" and STATIC_WAY not in message:
+        if exc.parameter == "preload" and exc.way_out != STATIC_WAY:
+            message = option_message(exc.message)
             raise click.UsageError(f"Invalid value for '--preloads': {message}") from exc
         raise
 
 
-def _service(case: CaseOptions, t: Any) -> list[Any] | None:
+def _service(case: Case, t: Any) -> list[Any] | None:
     """The lives of every row of a life-against-clearance table (the heaviest ball at its
     contact angle for the film, as solve takes it)."""
     from bearingload.bearings.service_life import LifeBasis
-    from bearingload.cli.case_options import SERVICE_PARAMS
-    from bearingload.cli.solve import service_lives
+    from bearingload.plan.case import SERVICE_PARAMS
+    from bearingload.plan.solve import service_lives
     from bearingload.studies.life_basis import life_geometry
 
     bases = [
@@ -456,4 +461,4 @@ def _service(case: CaseOptions, t: Any) -> list[Any] | None:
     ]
     if all(getattr(case, n) is None for n in SERVICE_PARAMS):
         return None  # C_0 feeds no column of this table (no s0): only with a life option
-    return service_lives(case, bases)
+    return service_lives(case, bases, option_message)

@@ -942,7 +942,9 @@ def _check_scale(
             _largest_load(sizes, int(np.argmax(bad))),
             f"the loads are too small for the combined solver (the largest of F_r, |F_a| and "
             f"M/R_i is {float(np.min(f_ref)):.3g} N; it takes at least {f_min:.2g} N for this "
-            f"bearing); {ANGULAR_NO_OTHER_SOLVER if angular else RADIAL_TAKES_ANY_LOAD}",
+            "bearing)",
+            way_out=ANGULAR_NO_OTHER_SOLVER if angular else RADIAL_TAKES_ANY_LOAD,
+            reason=TOO_LIGHT,
         )
 
 
@@ -964,9 +966,11 @@ def _largest_load(sizes: dict[str, np.ndarray] | None, i: int) -> str:
     return max(sizes, key=lambda name: float(np.reshape(sizes[name], -1)[i]))
 
 
-#: The end of the message refusing loads too small for the combined solver: where a radial load
-#: alone reaches this solver by the ball dynamics at a speed, the CLI and batch replace it by the
-#: option that gives the radial solver (--quasi-static, quasi_static true).
+#: The reason of the refusal of loads too small for the combined solver (or the ball dynamics):
+#: the plan, which can solve the case by another engine, replaces its way out.
+TOO_LIGHT = "too_light"
+
+#: The way out of loads too small for the combined solver (the library's: the radial solver).
 RADIAL_TAKES_ANY_LOAD = "the radial solver, without an axial load, takes any load"
 
 #: Its end for an angular-contact bearing, which only the combined solver solves (the radial

@@ -115,9 +115,13 @@ MAX_SPEED_PITCH = 2.0e6
 TOO_FAST = "mm/min for the ball-dynamics model"
 
 
+#: The reason of the refusal of a speed beyond :data:`MAX_SPEED_PITCH`.
+TOO_FAST_REASON = "too_fast"
+
+
 def too_fast(exc: BaseException) -> bool:
     """Whether ``exc`` is the refusal of a speed beyond :data:`MAX_SPEED_PITCH`."""
-    return isinstance(exc, InputError) and exc.parameter == "speed" and TOO_FAST in str(exc)
+    return isinstance(exc, InputError) and exc.reason == TOO_FAST_REASON
 
 
 #: The model, as the outputs name it.
@@ -326,6 +330,7 @@ def _check_speed(speed: Any, density: Any, dm: Any) -> tuple[np.ndarray, np.ndar
             f"(n = {_digits(given, MAX_SPEED_PITCH / pitch)} rpm with d_m = {pitch:.6g} mm: at "
             f"most {MAX_SPEED_PITCH / pitch:.10g} rpm; beyond, ring expansion, cage "
             "and lubricant forces it leaves out matter)",
+            reason=TOO_FAST_REASON,
         )
     return n, rho
 
@@ -982,7 +987,9 @@ def _check_resolved(st: _State, ring: _Ring, flat: dict) -> None:
         f"the ball forces on the ring is {level[i] * float(ring.f_ref[i]):.2g} N, more than "
         f"{LEVEL_MAX:.0e} of it; it takes at least {f_min:.2g} N at speed "
         f"{float(flat['speed'][i]):.6g} rpm and clearance {float(flat['clearance'][i]):.6g} mm "
-        f"for this bearing); {_combined.RADIAL_TAKES_ANY_LOAD}",
+        f"for this bearing)",
+        way_out=_combined.RADIAL_TAKES_ANY_LOAD,
+        reason=_combined.TOO_LIGHT,
     )
 
 

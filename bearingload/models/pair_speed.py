@@ -476,8 +476,9 @@ def _solve(sh: _Shaft, v_static: np.ndarray, flat: dict) -> tuple[Any, ...]:
             f"the loads are too small against the ball forces at this speed for the ball "
             f"dynamics of the pair (the largest of F_r, |F_a|, M/R_i and the preload is "
             f"{float(sh.f_ref[i]):.3g} N; the rounding of the ball forces on the shaft is "
-            f"{level[i] * float(sh.f_ref[i]):.2g} N, more than {_hs.LEVEL_MAX:.0e} of it); "
-            f"{STATIC_WAY}",
+            f"{level[i] * float(sh.f_ref[i]):.2g} N, more than {_hs.LEVEL_MAX:.0e} of it)",
+            way_out=STATIC_WAY,
+            reason=_comb.TOO_LIGHT,
         )
     bad = ~st.accepted
     if np.any(bad):

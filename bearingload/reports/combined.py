@@ -163,7 +163,7 @@ def combined_report(
     the lives of each case (:class:`bearingload.bearings.service_life.ServiceLife`)."""
     records = with_service([combined_values(c) for c in cases], service)
     if fmt == "json":
-        return render([], "json", document=_document(cases, records, service))
+        return render([], "json", document=bearings_document(cases, records, service))
     if fmt == "csv":
         table = _per_ball_table(cases, records) if per_ball else _case_table(records)
         return render([table], "csv")
@@ -180,6 +180,14 @@ def combined_report(
         tables.append(matrix_table(c.result.stiffness_matrix, f"tangent stiffness matrix{pick}"))
     tables.append(_balls_human(cases, records))
     return render(tables, fmt)
+
+
+def combined_document(
+    cases: Sequence[CombinedCase], service: Sequence[Any] | None = None
+) -> dict[str, Any]:
+    """The json document of solved combined-load cases, before the json's rounding."""
+    records = with_service([combined_values(c) for c in cases], service)
+    return bearings_document(cases, records, service)
 
 
 def _present(records: Sequence[dict[str, Any]], keys: Sequence[str]) -> list[str]:
@@ -374,11 +382,13 @@ def contact_values(res: Any, contact_angle: float | None = None) -> dict[str, An
     }
 
 
-def _document(
+def bearings_document(
     cases: Sequence[CombinedCase],
     records: Sequence[dict[str, Any]],
     service: Sequence[Any] | None = None,
 ) -> dict[str, Any]:
+    """The json document of solved combined-load cases of their ``records`` (one bearing, or
+    each bearing of a pair), before the json's rounding."""
     from bearingload.reports.bearing import geometry_document
 
     said = case_warnings([c.warnings for c in cases], service)

@@ -187,6 +187,12 @@ def pair_report(
     return render(tables, fmt)
 
 
+def pair_document(c: PairCase, service: Sequence[Any] | None = None) -> dict[str, Any]:
+    """The json document of a solved pair, before the json's rounding."""
+    pair, records = pair_records(c, service)
+    return _document(c, pair, records, service)
+
+
 def _title(p: dict[str, Any], setting: Preload | None = None) -> str:
     """The pair's title line; ``setting``: the preload class it was solved at (None: a force)."""
     who = f"Bearings {p['bearing']}, " if p["bearing"] != "given by hand" else ""
@@ -223,9 +229,9 @@ def _document(
     service: Sequence[Any] | None = None,
 ) -> dict[str, Any]:
     from bearingload.reports.bearing import geometry_document
-    from bearingload.reports.combined import _document as single_document
+    from bearingload.reports.combined import bearings_document
 
-    singles = single_document(list(c.bearings), records, service)
+    singles = bearings_document(list(c.bearings), records, service)
     # as the terminal prints them: the pair's and each bearing's labelled (each bearing's own
     # object lists its own unlabelled), then their lives'; each once
     said = printed_warnings(c.warnings, service)

@@ -199,6 +199,18 @@ def _csv_cell(text: str) -> str:
     return text
 
 
+def plain_tree(obj: Any) -> Any:
+    """A document of dicts, lists, numpy arrays and scalars as plain Python values at full
+    precision (what :func:`render` writes as json, before its rounding to 10 digits)."""
+    if isinstance(obj, dict):
+        return {k: plain_tree(v) for k, v in obj.items()}
+    if isinstance(obj, (list, tuple)):
+        return [plain_tree(v) for v in obj]
+    if hasattr(obj, "tolist"):
+        return plain_tree(obj.tolist()) if getattr(obj, "ndim", 0) > 0 else obj.item()
+    return obj
+
+
 def _machine_tree(obj: Any) -> Any:
     if isinstance(obj, dict):
         return {k: _machine_tree(v) for k, v in obj.items()}

@@ -98,9 +98,7 @@ def solve_report(
     """Render solved cases in ``fmt`` (table, csv, markdown, json); ``service`` the lives of
     each case (:class:`bearingload.bearings.service_life.ServiceLife`), merged into its record
     and its notes into the summary's."""
-    records = with_service([case_values(c) for c in cases], service)
-    if len({r["method"] for r in records}) > 1 and any(r["method"] == "exact" for r in records):
-        records = with_relative_errors(records)
+    records = _records(cases, service)
     exponent = float(cases[0].result.case.exponent)
     if fmt == "json":
         return render([], "json", document=_document(cases, records, exponent, service))
@@ -116,6 +114,24 @@ def solve_report(
     if per_ball or any(c.result.method == "exact" for c in cases):
         tables.append(_balls_human(cases, records))
     return render([for_elements(t, exponent) for t in tables], fmt)  # rollers: 'roller loads'
+
+
+def _records(cases: Sequence[LoadedCase], service: Sequence[Any] | None) -> list[dict[str, Any]]:
+    """Each case's record with its service values; beside the exact model, every other
+    method's relative errors."""
+    records = with_service([case_values(c) for c in cases], service)
+    if len({r["method"] for r in records}) > 1 and any(r["method"] == "exact" for r in records):
+        records = with_relative_errors(records)
+    return records
+
+
+def solve_document(
+    cases: Sequence[LoadedCase], service: Sequence[Any] | None = None
+) -> dict[str, Any]:
+    """The json document of solved radial cases (``cases``, ``units``, ``warnings``, and the
+    ``bearing`` of a catalogue bearing), before the json's rounding."""
+    exponent = float(cases[0].result.case.exponent)
+    return _document(cases, _records(cases, service), exponent, service)
 
 
 def _present(records: Sequence[dict[str, Any]], keys: Sequence[str]) -> list[str]:

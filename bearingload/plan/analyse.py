@@ -1,0 +1,92 @@
+"""``analyse``: one library call from a designation (or a ring given by hand) and its loads to
+what ``bearingload solve`` prints: the loads of every ball, the stiffness, the lives."""
+
+from __future__ import annotations
+
+from typing import Any
+
+from bearingload.errors import InputError
+from bearingload.plan.solution import Solution
+
+
+def analyse(
+    bearing: str | None = None,
+    *,
+    method: str = "exact",
+    revolutions: float | str | None = None,
+    **options: Any,
+) -> Solution:
+    """Analyse one bearing as ``bearingload solve`` does, with the same decisions.
+
+    Parameters
+    ----------
+    bearing : str, optional
+        A catalogue designation (``"6205"``, ``"6306-2RS/C3"``, ``"7205BDB"``, ``"NU206"``); None
+        for a ring given by hand (``balls=`` with ``stiffness=`` or ``ball_diameter=`` and
+        ``pitch_diameter=``).
+    method : str
+        The radial engine's method: ``exact`` (default), ``continuum``, ``stribeck``,
+        ``palmgren`` or ``all``.
+    revolutions : float or str, optional
+        Life L of the radial engine's allowable load C/(L/10^6)^(1/3) [rev]; default 36e6.
+    **options
+        The options of ``bearingload solve`` by their snake_case names (``load``,
+        ``axial_load``, ``clearance``, ``speed``, ``preload``, ``viscosity`` ...): numbers in the
+        command line's default units (N, mm, N mm, °, rpm, mm^2/s, °C), or strings with units
+        (``load="1kN"``, ``clearance="C3"``, ``clearance="20um"``).
+
+    Returns
+    -------
+    Solution
+        ``to_dict()`` is what ``bearingload solve --format json`` prints (at full precision);
+        every key of a case is an attribute (``solution.q_max``); ``report(fmt)``
+        renders it as the command line does.
+
+    Raises
+    ------
+    InputError
+        An input outside its domain, or inputs that cannot be given together; ``parameter``
+        names the argument.
+    ConvergenceError
+        A solver did not converge (never expected inside the stated domain).
+
+    Examples
+    --------
+    >>> from bearingload import analyse
+    >>> s = analyse("6205", load="1.4kN", axial_load=700, clearance="C3")
+    >>> round(s.q_max, 1), s.engine
+    (889.6, 'combined')
+    """
+    try:
+        return _analyse(bearing, method, revolutions, options)
+    except InputError as exc:  # a model's name of an input, as the caller calls it
+        from bearingload.plan.inputs import argument_of
+
+        name = argument_of(exc.parameter)
+        if name == exc.parameter:
+            raise
+        raise exc.named(name) from None
+
+
+def _analyse(
+    bearing: str | None, method: str, revolutions: float | str | None, options: dict[str, Any]
+) -> Solution:
+    from bearingload.plan.case import Case
+    from bearingload.plan.inputs import read_inputs, text
+    from bearingload.plan.solve import solve_case
+    from bearingload.units import is_bare, parse_quantity
+
+    values = read_inputs(options)
+    if bearing is not None:
+        values["bearing"] = text(bearing, "bearing")
+    bare = {
+        n for n, v in options.items() if v is not None and not isinstance(v, bool) and is_bare(v)
+    }
+    life = (
+        None
+        if revolutions is None
+        else parse_quantity(revolutions, "revolutions", parameter="revolutions")
+    )
+    given = {n for n, v in values.items() if v is not None}
+    case = Case.of(values, given=given, bare=bare)
+    return solve_case(case, method=method, revolutions=life)

@@ -1,0 +1,327 @@
+"""The plan of one case: which engine solves it, what it refuses, and the lives and warnings of
+the answer, once for the library, the command line and batch.
+
+:func:`solve_case` takes a :class:`~bearingload.plan.case.Case` and returns a
+:class:`~bearingload.plan.solution.Solution`:
+
+* a pair (``7205BDB``, or an arrangement given) is solved by the pair's shaft equilibrium, with
+  the ball dynamics of both bearings at a speed (unless quasi-static);
+* a load beyond the radial one (axial load, moment, misalignment, a contact angle given) or an
+  angular-contact designation takes the combined engine; a radial case of a ball bearing at a
+  speed too (the ball dynamics at F_a = 0), unless quasi-static;
+* the rest, the radial engine (the exact ring equilibrium, or another method by name).
+
+Every refusal is a typed error (:mod:`bearingload.errors`) naming the input by its library name;
+where another engine would solve a refused case, its way out names the input that selects it.
+"""
+
+from __future__ import annotations
+
+import dataclasses
+import math
+from typing import Any
+
+from bearingload.errors import ConflictError, ConvergenceError, InputError
+from bearingload.plan.bearing import (
+    check_rotating,
+    pair_bearing,
+    refuse_tilt_radius,
+    refuse_unused,
+    resolve_bearings,
+    ring_by_hand,
+    with_contact_angle,
+    with_ratings,
+)
+from bearingload.plan.case import Case
+from bearingload.plan.solution import Solution
+
+#: The life of the allowable radial load C/(L/10^6)^(1/3) when none is given. [rev]
+DEFAULT_REVOLUTIONS = 36e6
+#: The way out of a radial case at speed the ball dynamics cannot solve.
+QUASI_STATIC_WAY = "'quasi_static' gives the static radial engine (the ball dynamics left out)"
+#: The way out of a speed beyond the ball dynamics' limit (n d_m).
+STATIC_AT_ANY_SPEED = "'quasi_static' gives the static model at any speed (the lives in hours)"
+#: The way out of a pair at speed the ball dynamics cannot solve.
+STATIC_PAIR_WAY = "'quasi_static' gives the static model"
+
+
+def solve_case(
+    case: Case,
+    *,
+    method: str = "exact",
+    revolutions: float | None = None,
+    spell: Any = str,
+) -> Solution:
+    """Solve one case by the engine its inputs choose, with its lives and warnings.
+
+    Parameters
+    ----------
+    case : Case
+        The inputs.
+    method : str
+        The radial engine's method (``exact``, ``continuum``, ``stribeck``, ``palmgren`` or
+        ``all``); the combined engine, pairs and the ball dynamics are exact only.
+    revolutions : float, optional
+        Life L [rev] of the radial engine's allowable load C/(L/10^6)^(1/3); None: 36e6, and
+        refused where no allowable load is computed only when given.
+    spell : callable
+        Writes the inputs a note names as the user typed them (the command line: its options).
+    """
+    from bearingload.models.registry import list_methods
+
+    _check_revolutions(revolutions)
+    case, at_speed = radial_at_speed(case)
+    methods = list_methods() if method == "all" else [method]
+    if at_speed and method != "exact":
+        raise InputError(
+            "method",
+            "at 'speed' the ball dynamics of a ball bearing are solved by the exact model only "
+            "(the combined engine at F_a = 0)",
+            way_out=f"give 'quasi_static' for the static model, where method {method} is allowed",
+        )
+    pair = case.as_pair()
+    if pair is not None:
+        _refuse_revolutions(revolutions, "a bearing pair", "it prints L10r and L10 of the pair")
+        return _pair(pair, method, spell)
+    if case.wants_combined:
+        return _combined(case, method, revolutions, at_speed, spell)
+    return _radial(case, methods, revolutions, spell)
+
+
+def _check_revolutions(revolutions: float | None) -> None:
+    if revolutions is not None and not (math.isfinite(revolutions) and revolutions > 0):
+        raise InputError("revolutions", f"must be a number of revolutions > 0, got {revolutions:g}")
+
+
+def radial_at_speed(case: Case) -> tuple[Case, bool]:
+    """(the case, True) with F_a = 0 given where a radial case of a ball bearing (a bearing or
+    the ball geometry, not an angular-contact designation) has a speed and is not quasi-static:
+    the combined engine then solves it with the ball dynamics (docs/speed.md); otherwise (the
+    case, False): rollers, quasi-static, no speed, a pair."""
+    from bearingload.bearings.designation import contact_exponent
+    from bearingload.constants import ROLLER_EXPONENT
+
+    if case.speed is None or case.quasi_static or case.wants_combined:
+        return case, False
+    if case.arrangement is not None or case.as_pair() is not None:
+        return case, False  # a pair: its own path, the ball dynamics of both bearings
+    if case.by_hand or contact_exponent(case.bearing) == ROLLER_EXPONENT:
+        return case, False  # speed refused without the geometry; rollers: the radial engine
+    given = case.given | {"axial_load"}
+    return dataclasses.replace(case, axial_load=0.0, given=given), True
+
+
+def _refuse_revolutions(revolutions: float | None, where: str, instead: str) -> None:
+    """Refuse a life ``revolutions`` given where no allowable load is computed."""
+    if revolutions is not None:
+        raise ConflictError(
+            "revolutions",
+            where,
+            "it sets the life L of the allowable radial load C/(L/10^6)^(1/3), which only the "
+            f"radial engine prints for a bearing with a dynamic load rating C; {instead}",
+        )
+
+
+def refuse_static_dynamics(case: Case) -> None:
+    """A ball density and quasi-static on the radial engine: refused for a roller bearing (no
+    ball dynamics) and without a speed, the ball density also when quasi-static."""
+    from bearingload.bearings.designation import contact_exponent
+    from bearingload.constants import ROLLER_EXPONENT
+
+    if not case.by_hand and contact_exponent(case.bearing) == ROLLER_EXPONENT:
+        case.refuse(
+            ("ball_density",),
+            f"a roller bearing ({case.bearing})",
+            "the radial engine solves it by the static model at any speed: the ball dynamics at "
+            "'speed' are coded for ball bearings",
+        )
+    case.check_dynamics_flags()
+
+
+def _radial(case: Case, methods: list[str], revolutions: float | None, spell: Any) -> Solution:
+    """The radial engine: a ring by hand, or the resolved bearings with their lives."""
+    refuse_tilt_radius(case)
+    refuse_static_dynamics(case)
+    k_given = case.stiffness_value()
+    service = None
+    life = DEFAULT_REVOLUTIONS if revolutions is None else revolutions
+    if case.by_hand:
+        refuse_unused(case)
+        _refuse_revolutions(revolutions, "a ring given by its balls and stiffness", "it has no C")
+        cases = _by_hand(methods, case, k_given)
+    else:
+        from bearingload.studies.life_basis import radial_basis
+        from bearingload.studies.loaded_bearing import solve_bearing
+        from bearingload.studies.reference_life import with_reference_lives
+
+        bearings = with_ratings(resolve_bearings(case, k_given), case)
+        if case.dynamic_rating is not None:
+            bearings = [b.with_dynamic_rating(case.dynamic_rating) for b in bearings]
+        if not any(b.C for b in bearings):
+            _refuse_revolutions(
+                revolutions, "a bearing without a dynamic load rating C", "give 'dynamic_rating'"
+            )
+        check_rotating(case, bearings[0], methods)
+        angle = case.cage_angle_deg(bearings[0].balls)
+        solved = solve_bearing(bearings, case.radial_load, angle, methods, life)
+        solved = with_reference_lives(solved, case.rotating or "inner")
+        cases = with_speed_warnings(solved, case.speed)
+        service = service_lives(case, [radial_basis(c, case.rotating) for c in cases], spell)
+    return Solution("radial", tuple(cases), None if service is None else tuple(service))
+
+
+def _by_hand(methods: list[str], case: Case, k_given: float | None) -> list[Any]:
+    """The radial engine on a ring given by z and K."""
+    from bearingload.bearings.clearance import clearance_length
+    from bearingload.studies.loaded_bearing import solve_ring
+
+    z, k = ring_by_hand(case, k_given)
+    angle = case.cage_angle_deg(z)
+    g_r = clearance_length(case.clearance)
+    return solve_ring(methods, z, case.radial_load, k, g_r, angle, case.exponent_or(1.5))
+
+
+def _combined(
+    case: Case, method: str, revolutions: float | None, at_speed: bool, spell: Any
+) -> Solution:
+    """The combined engine (a load beyond the radial one, an angular-contact bearing, or a
+    radial ball bearing at speed) on the resolved bearings."""
+    from bearingload.bearings.angular import parse_angular
+    from bearingload.studies.combined_bearing import solve_combined_bearing
+    from bearingload.studies.life_basis import combined_basis
+
+    angular = case.bearing is not None and parse_angular(case.bearing) is not None
+    if at_speed:
+        _refuse_revolutions(
+            revolutions,
+            "the ball dynamics at 'speed' (a ball bearing is solved by the combined engine at "
+            "F_a = 0)",
+            "give 'quasi_static' for the static radial engine",
+        )
+    _refuse_revolutions(
+        revolutions,
+        "the combined engine (a load beyond the radial one, or an angular-contact bearing)",
+        "it prints L10 = (C/P)^3 at P = X F_r + Y F_a and L10r instead",
+    )
+    if method != "exact":
+        what = (
+            f"an angular-contact bearing ({case.bearing})"
+            if angular
+            else "the combined load ('axial_load', 'moment', 'moment_cross', 'misalignment')"
+        )
+        raise InputError("method", f"{what} is solved by the exact model only")
+    bearings = with_ratings(resolve_bearings(case, case.stiffness_value()), case)
+    if bearings[0].kind == "ball" and bearings[0].has_geometry:
+        check_rotating(case, bearings[0], ["exact"])
+    bearings = with_contact_angle(bearings, case, "'contact_angle'")
+    dynamics = case.dynamics_arguments()
+    try:
+        solved = solve_combined_bearing(
+            bearings,
+            case.radial_load,
+            cage_angle=case.cage_angle_deg(bearings[0].balls),
+            **case.combined_arguments(),
+            **dynamics,
+        )
+    except InputError as exc:
+        hinted = speed_hint(exc, at_speed) if dynamics["speed"] is not None else None
+        if hinted is None:
+            raise
+        raise hinted from exc
+    except ConvergenceError as exc:  # a radial case at speed: the static engine solves it
+        if not at_speed:
+            raise
+        raise exc.with_way_out(QUASI_STATIC_WAY) from exc
+    cases = with_speed_warnings(solved, case.speed)
+    service = service_lives(case, [combined_basis(c) for c in cases], spell)
+    return Solution("combined", tuple(cases), tuple(service))
+
+
+def speed_hint(exc: InputError, radial: bool) -> InputError | None:
+    """A refusal of the ball dynamics with the way to the static engine: a speed too high, or
+    loads too light for the ball dynamics where the radial engine would take them (``radial``:
+    F_a = 0 was set for a radial case, no axial load given)."""
+    from bearingload.models.combined import RADIAL_TAKES_ANY_LOAD, TOO_LIGHT
+    from bearingload.models.high_speed import too_fast
+
+    if too_fast(exc):
+        return exc.with_way_out(STATIC_AT_ANY_SPEED)
+    if exc.reason != TOO_LIGHT or exc.way_out != RADIAL_TAKES_ANY_LOAD:
+        return None
+    way = (
+        "'quasi_static' gives the static radial engine, which takes any load"
+        if radial
+        else "'quasi_static' without an axial load gives the static radial engine, which takes "
+        "any load"
+    )
+    return exc.with_way_out(
+        f"at 'speed' a ball bearing is solved by the combined engine (the ball dynamics); {way}"
+    )
+
+
+def _pair(case: Case, method: str, spell: Any) -> Solution:
+    """A pair of angular-contact ball bearings (an arrangement, or 7205BDB)."""
+    from bearingload.studies.bearing_pair import solve_bearing_pair
+    from bearingload.studies.life_basis import combined_basis
+
+    if method != "exact":
+        raise InputError("method", "a bearing pair is solved by the exact model only")
+    tilt = "the shaft's tilt follows from the loads; give 'moment'"
+    case.refuse(("misalignment",), "a bearing pair", tilt)
+    why = "the design contact angle fixes the geometry of an angular-contact bearing"
+    case.refuse(("clearance",), "a bearing pair", why + " (no clearance)")
+    b = pair_bearing(case)
+    dynamics = case.dynamics_arguments()  # at a speed the ball dynamics, unless quasi-static
+    try:
+        arguments = case.pair_arguments(b.balls)
+        pc = solve_bearing_pair(
+            b, case.radial_load, case.axial_load or 0.0, **arguments, **dynamics
+        )
+    except (ConvergenceError, InputError) as exc:
+        hinted = pair_speed_hint(exc) if dynamics["speed"] is not None else None
+        if hinted is None:
+            raise
+        raise hinted from exc
+    pc = with_speed_warnings([pc], case.speed)[0]  # the bearing's limiting speeds
+    # each bearing's service lives as one bearing's from its own loads; the pair's from them
+    service = service_lives(case, [combined_basis(c) for c in pc.bearings], spell)
+    return Solution("pair", (pc,), tuple(service))
+
+
+def pair_speed_hint(exc: ConvergenceError | InputError) -> Exception | None:
+    """A pair at speed the ball dynamics leave unbalanced, refuse as too light (the library's
+    way out) or as too fast, with the way to the static model; None for another refusal."""
+    from bearingload.models.combined import TOO_LIGHT
+    from bearingload.models.high_speed import too_fast
+    from bearingload.models.pair_speed import STATIC_WAY
+
+    if isinstance(exc, ConvergenceError):
+        return exc.with_way_out(STATIC_PAIR_WAY)
+    if too_fast(exc):
+        return exc.with_way_out(STATIC_AT_ANY_SPEED)
+    if exc.reason != TOO_LIGHT or exc.way_out != STATIC_WAY:
+        return None
+    return exc.with_way_out(STATIC_PAIR_WAY)
+
+
+def service_lives(case: Case, bases: list[Any], spell: Any = str) -> list[Any]:
+    """The lives the case's operating conditions make meaningful, one
+    :class:`bearingload.bearings.service_life.ServiceLife` per basis."""
+    from bearingload.bearings.service_life import service_values
+
+    op = case.operating(spell)
+    return [service_values(op, b) for b in bases]
+
+
+def with_speed_warnings(cases: list[Any], speed: float | None) -> list[Any]:
+    """The solved cases with the warning on a speed above the limiting speed the catalogue
+    gives for their bearing added to theirs (:func:`bearingload.bearings.checks.speed_findings`)."""
+    from bearingload.bearings.checks import speed_findings
+
+    if speed is None:
+        return cases
+    out = []
+    for c in cases:
+        new = [] if c.bearing is None else speed_findings(speed, c.bearing)
+        out.append(dataclasses.replace(c, warnings=(*c.warnings, *new)) if new else c)
+    return out

@@ -1,0 +1,125 @@
+"""The library's one entry point ``analyse``: the same decisions and the same document as
+``bearingload solve --format json``, the same refusals, typed errors with fields."""
+
+from __future__ import annotations
+
+import json
+
+import pytest
+
+import bearingload
+from bearingload.errors import ConflictError, InputError, MissingError, UnusedError
+from bearingload.plan.analyse import analyse
+from bearingload.reports.render import render
+
+from .cli_helpers import invoke
+
+#: (solve's arguments, analyse's arguments) of the same case, one per engine and path.
+SAME_CASES = [
+    (["6205", "-F", "1.4kN", "-A", "700N", "-G", "C3"],
+     {"bearing": "6205", "load": "1.4kN", "axial_load": 700, "clearance": "C3"}),
+    (["-z", "8", "-F", "300kgf", "-K", "4700kgf/mm^1.5", "-G", "20um"],
+     {"balls": 8, "load": "300kgf", "stiffness": "4700kgf/mm^1.5", "clearance": "20um"}),
+    (["6306", "-F", "3kN", "-G", "C3", "--clearance-pick", "range"],
+     {"bearing": "6306", "load": 3000, "clearance": "C3", "clearance_pick": "range"}),
+    (["7205BDB", "--preload", "300N", "-F", "1kN", "-A", "500N", "--speed", "10000"],
+     {"bearing": "7205BDB", "preload": 300, "load": 1000, "axial_load": 500, "speed": 10000}),
+    (["6205", "-F", "1.4kN", "--speed", "3000", "--viscosity", "20cSt", "--reliability", "99"],
+     {"bearing": "6205", "load": 1400, "speed": 3000, "viscosity": 20, "reliability": 99}),
+    (["NU206", "-F", "5kN"], {"bearing": "NU206", "load": "5kN"}),
+]  # fmt: skip
+
+
+@pytest.mark.parametrize("cli, library", SAME_CASES)
+def test_analyse_gives_the_document_solve_prints_as_json(cli, library):
+    printed = invoke("solve", *cli, "--format", "json")
+    assert printed.exit_code == 0, printed.output
+    document = analyse(**library).to_dict()
+    assert render([], "json", document=document) == printed.stdout
+    assert set(document) >= {"cases", "units", "warnings"}
+
+
+def test_analyse_keeps_full_precision_where_json_rounds_to_ten_digits():
+    document = analyse("6205", load=1400, axial_load=700).to_dict()
+    q = document["cases"][0]["q_max"]
+    printed = json.loads(render([], "json", document=document))
+    assert isinstance(q, float) and printed["cases"][0]["q_max"] == float(f"{q:.10g}")
+
+
+def test_a_solution_has_every_key_of_its_cases_as_an_attribute():
+    one = analyse("6205", load="1.4kN", axial_load="700N")
+    case = one.to_dict()["cases"][0]
+    assert one.q_max == case["q_max"] and one.stiffness_matrix == case["stiffness_matrix"]
+    assert one.engine == "combined" and one.units["q_max"] == "N"
+    three = analyse("6306", load=3000, clearance="C3", clearance_pick="range")
+    assert len(three.q_max) == 3 and three.q_max[0] < three.q_max[2]
+    with pytest.raises(AttributeError, match="no quantity 'q_maximum'"):
+        _ = one.q_maximum
+
+
+def test_analyse_is_at_the_top_level_beside_the_solvers():
+    assert bearingload.analyse is analyse
+    for name in ("solve_pair", "solve_high_speed", "solve_pair_high_speed"):
+        assert callable(getattr(bearingload, name))
+
+
+def test_the_engine_follows_the_inputs_as_in_solve():
+    assert analyse("6306", load=3000).engine == "radial"
+    assert analyse("6306", load=3000, speed=1500).engine == "combined"  # the ball dynamics
+    assert analyse("6306", load=3000, speed=1500, quasi_static=True).engine == "radial"
+    assert analyse("7205B", load=1000).engine == "combined"
+    assert analyse("7205B", arrangement="DB", preload=300, load=1000).engine == "pair"
+
+
+def test_an_unknown_input_is_refused_naming_the_near_one():
+    with pytest.raises(InputError, match="did you mean 'load'") as caught:
+        analyse("6205", lod=1000)
+    assert caught.value.parameter == "lod"
+
+
+@pytest.mark.parametrize(
+    "options, parameter",
+    [
+        ({"load": "3 parsecs"}, "load"),
+        ({"load": 1000, "reliability": 80}, "reliability"),
+        ({"load": 1000, "rotating": "both"}, "rotating"),
+        ({"load": 1000, "e_c": 2}, "e_c"),
+        ({"load": 1000, "balls": 8.5}, "balls"),
+        ({"load": 1000, "quasi_static": True}, "quasi_static"),
+        ({"load": 1000, "contamination": "dusty"}, "contamination"),
+    ],
+)
+def test_analyse_refuses_what_solve_refuses_naming_the_argument(options, parameter):
+    with pytest.raises(InputError) as caught:
+        analyse("6205", **options)
+    assert caught.value.parameter == parameter
+
+
+def test_a_refusal_of_inputs_given_together_is_a_conflict_with_its_fields():
+    with pytest.raises(ConflictError) as caught:
+        analyse("7205BDB", load=1000, misalignment=0.1)
+    assert caught.value.parameter == "misalignment"
+    assert caught.value.where == "a bearing pair" and "'moment'" in caught.value.why
+
+
+def test_a_ring_by_hand_names_what_is_missing_and_what_it_would_ignore():
+    with pytest.raises(MissingError) as caught:
+        analyse(load=1000, stiffness=1e5)
+    assert caught.value.parameter == "balls"
+    with pytest.raises(UnusedError) as unused:
+        analyse(balls=8, load=1000, stiffness=1e5, poisson=0.3, maker="SKF")
+    assert unused.value.parameters == ("poisson", "maker")
+
+
+def test_the_way_out_of_a_refusal_at_speed_names_the_static_model_by_its_argument():
+    with pytest.raises(InputError) as caught:
+        analyse("6205", load=1000, speed=1e6)
+    assert caught.value.reason == "too_fast"
+    assert "'quasi_static'" in caught.value.way_out
+
+
+def test_a_refusal_by_a_model_names_the_argument_analyse_takes():
+    with pytest.raises(InputError) as caught:
+        analyse("6205", load=3000, axial_load=500, inner_conformity=52)
+    assert caught.value.parameter == "inner_conformity"
+    assert str(caught.value).startswith("inner_conformity: ")
