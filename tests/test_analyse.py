@@ -123,3 +123,17 @@ def test_a_refusal_by_a_model_names_the_argument_analyse_takes():
         analyse("6205", load=3000, axial_load=500, inner_conformity=52)
     assert caught.value.parameter == "inner_conformity"
     assert str(caught.value).startswith("inner_conformity: ")
+
+
+def test_a_radial_case_at_speed_keeps_the_radial_engines_load_factors():
+    """One report per bearing: with a speed the radial case moves to the ball dynamics and
+    keeps k = Q_max/F_r and K_Q = k z/2 from its inner contacts; near rest they are the radial
+    engine's."""
+    static = analyse("6306", load=3000, clearance="C3")
+    moving = analyse("6306", load=3000, clearance="C3", speed=1500)
+    slow = analyse("6306", load=3000, clearance="C3", speed=1e-3)
+    assert moving.engine == "combined" and static.engine == "radial"
+    assert moving.k == pytest.approx(max(moving.ball_loads_inner) / 3000, rel=1e-12)
+    assert moving.K_Q == pytest.approx(moving.k * 8 / 2, rel=1e-12)
+    assert slow.k == pytest.approx(static.k, rel=1e-9) and moving.k > static.k
+    assert "k" not in analyse("6306", load=3000, axial_load=100, speed=1500).to_dict()["cases"][0]

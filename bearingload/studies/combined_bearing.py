@@ -544,6 +544,7 @@ def case_columns(
         "free_contact_angle": arr(r.free_contact_angle),
         "axial_play": arr(r.axial_play),
         "q_max": arr(r.q_max),
+        **radial_factors(r, misalignment, moment_cross),
         "loaded_balls": arr(r.loaded_balls, np.int64),
         "x": arr(r.x),
         "y": arr(r.y),
@@ -559,6 +560,21 @@ def case_columns(
         "rating_life": arr(rating_life),
         "reference_rating_life": arr(reference_rating_life),
     }
+
+
+def radial_factors(r: CombinedDistribution, misalignment: Any, moment_cross: Any) -> dict[str, Any]:
+    """The radial engine's load factor k = Q_max/F_r and load concentration K_Q = k z/2 of a
+    radial load alone (no thrust, moment or misalignment; at a speed Q_max is the heaviest inner
+    contact's, which carries the shaft's load), so that a radial case keeps them on the combined
+    engine (the ball dynamics at a speed); nothing for another load."""
+    loads = [np.asarray(v, dtype=float) for v in (r.axial_load, r.moment)]
+    if moment_cross is not None:
+        loads.append(np.asarray(moment_cross, dtype=float))
+    f_r = np.asarray(r.load, dtype=float)
+    if misalignment is not None or any(np.any(v != 0) for v in loads) or np.any(f_r <= 0):
+        return {}
+    k = np.atleast_1d(np.asarray(r.q_max, dtype=float) / f_r)
+    return {"k": k, "K_Q": k * np.asarray(r.balls, dtype=float) / 2.0}
 
 
 def largest_loaded_angle(r: CombinedDistribution) -> Any:
