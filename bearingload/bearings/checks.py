@@ -302,7 +302,7 @@ def clearance_findings(bearing: ResolvedBearing) -> list[str]:
     bore = bearing.geometry.d
     try:
         c5_max = clearance_range(bore, "C5")[1]
-    except InputError:  # bore outside the ISO 5753-1 table
+    except InputError:  # bore outside the ISO 5753-1 table, or no C5 for it (d <= 6 mm)
         return []
     g_r = bearing.clearance
     um = 1e3

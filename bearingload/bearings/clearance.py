@@ -7,7 +7,8 @@ side is half of it (Delta = e = G_r / 2); this module returns G_r itself.
 
 The limits are those of ``data/clearance_deep_groove.csv``, copied from NSK's reproduction of
 the ISO 5753-1 table for deep groove ball bearings [1]_ and confirmed cell by cell for 6-140 mm
-by [2]_. Bore ranges are "over / incl": a bore of exactly 30 mm belongs to the 24-30 row.
+by [2]_; the row over 2.5 up to 6 mm (C2, CN, C3 only) from the makers' pages its source
+names. Bore ranges are "over / incl": a bore of exactly 30 mm belongs to the 24-30 row.
 
 The limits of cylindrical roller bearings with a cylindrical bore (``kind="roller"``) are those
 of ``data/clearance_cylindrical_roller.csv``, copied from the ISO 5753-1 table reproduced by [4]_
@@ -120,9 +121,10 @@ def table(kind: str = "ball") -> tuple[ClearanceRow, ...]:
         raise InputError("kind", f"unknown bearing kind {kind!r}; allowed: {', '.join(TABLES)}")
     rows = []
     for rec in read_rows(TABLES[kind][0]):
-        limits = {
+        limits = {  # a class the source does not give for the row is left out
             cls: (float(rec[f"{cls}_min"]) / 1000.0, float(rec[f"{cls}_max"]) / 1000.0)
             for cls in CLASSES
+            if rec[f"{cls}_min"] != ""
         }
         rows.append(
             ClearanceRow(float(rec["bore_over"]), float(rec["bore_incl"]), limits, rec["source"])
@@ -241,7 +243,15 @@ def clearance_range(bore: float, cls: str, kind: str = "ball") -> tuple[float, f
     InputError
         Bore outside the table, or unknown class.
     """
-    return _row(bore, kind).limits[parse_class(cls)]
+    row, name = _row(bore, kind), parse_class(cls)
+    if name not in row.limits:
+        raise InputError(
+            "clearance",
+            f"class {name} is not tabulated for a bore of {float(bore):g} mm (over "
+            f"{row.bore_over:g} up to {row.bore_incl:g} mm: {', '.join(row.limits)}); give "
+            "another class, or 'clearance' as a length",
+        )
+    return row.limits[name]
 
 
 def radial_clearance(bore: float, cls: str, pick: str = "mean", kind: str = "ball") -> float:
