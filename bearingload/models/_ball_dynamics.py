@@ -14,6 +14,7 @@ from typing import Any
 
 import numpy as np
 
+from bearingload.models import _core
 from bearingload.models import combined as _combined
 
 #: Relative residual of each ball's equations (of the sum of its force magnitudes). [-]
@@ -25,8 +26,6 @@ FALLBACK_ITERATIONS = 60
 HALVINGS = 30
 #: Rounding of an approach over its length's (of the ball tolerance). [-]
 _ROUND = 16.0 * float(np.finfo(float).eps) / BALL_TOLERANCE
-#: Complex step. [-]
-_H = 1e-30
 #: N mm per kg mm^2/s^2 (forces from kg, mm, s). [-]
 _KG_MM = 1e-3
 _NODE_X = _combined._NODE_X
@@ -52,12 +51,48 @@ class _Set:
                     self.mass[idx], self.ki[idx], self.ko[idx])  # fmt: skip
 
 
-def ball_terms(b: _Set, rho: Any, u: Any, do: Any, ao: Any) -> tuple[Any, ...]:  # complex-capable
+def _packed(b: _Set) -> tuple[np.ndarray, np.ndarray, np.ndarray]:
+    """The constants of ``b`` as the core takes them: (rows, 6) r'_i, r'_o, D_w, d_m, omega,
+    mass; K_i, K_o at the nodes (rows, NODES)."""
+    rows = b.ki.shape[0]
+    cols = [np.broadcast_to(a, (rows, 1))[:, 0] for a in (b.ri, b.ro, b.dw, b.dm, b.omega, b.mass)]
+    return (
+        np.ascontiguousarray(np.stack(cols, axis=1), dtype=float),
+        np.ascontiguousarray(b.ki.reshape(rows, -1), dtype=float),
+        np.ascontiguousarray(b.ko.reshape(rows, -1), dtype=float),
+    )
+
+
+def _core_balls(b: _Set, rho: Any, u: Any, do: Any, ao: Any, partials: bool) -> tuple[Any, ...]:
+    """The compiled ball evaluator (:func:`bearingload.models._core.speed_balls`) on the balls
+    (rows, z) (or one ball a row, (rows, 1)) of ``b``'s rows: (terms (14, rows, z), partials
+    (4, 4, rows, z) or None)."""
+    shape = np.broadcast_shapes(np.shape(rho), np.shape(u), np.shape(do), np.shape(ao))
+    flat = [
+        np.ascontiguousarray(np.broadcast_to(a, shape), dtype=float).reshape(-1)
+        for a in (rho, u, do, ao)
+    ]
+    rows = b.ki.shape[0]
+    row = np.broadcast_to(
+        np.arange(rows, dtype=np.int64).reshape((rows,) + (1,) * (len(shape) - 1)), shape
+    ).reshape(-1)
+    consts, ki, ko = _packed(b)
+    m = flat[0].size
+    terms = np.empty((14, m))
+    part = np.empty((16 if partials else 0, m))
+    _core.speed_balls(
+        *flat, np.ascontiguousarray(row), consts, ki, ko, _NODE_X, _NODE_W, terms, part
+    )
+    return terms.reshape((14,) + shape), part.reshape((4, 4) + shape) if partials else None
+
+
+def ball_terms(b: _Set, rho: Any, u: Any, do: Any, ao: Any) -> tuple[Any, ...]:
     """Every quantity of the balls at (rho, u) with the unknowns (delta_o, alpha_o).
 
     Returns (g1, g2, Q_i, Q_o, sin a_i, cos a_i, F_c, M_g, omega_c, omega_R, beta, delta_i,
     ring axial force, ring radial force) [N, mm, rad/s]; the ring forces are those the ball
-    puts on the inner ring's equilibrium (``Q_i sin a_i``, ``Q_i cos a_i``).
+    puts on the inner ring's equilibrium (``Q_i sin a_i``, ``Q_i cos a_i``). The compiled
+    evaluator (``ball_eval`` of :mod:`bearingload.models._core`).
 
     The inner raceway is the half of the inner groove facing the ball set (``cos a_i >= 0``):
     the radial offset of the inner groove centre from the ball centre is taken at least 0, as
@@ -65,58 +100,39 @@ def ball_terms(b: _Set, rho: Any, u: Any, do: Any, ao: Any) -> tuple[Any, ...]: 
     ball whose centre lies radially outward of its inner groove centre would touch the far side
     of the groove circle, where the ring has no surface, and Jones's relations with ``cos a_i =
     -1`` give ``c_o + c_i = 0``, an infinite orbit speed."""
-    lo = b.ro + do
-    so, co = np.sin(ao), np.cos(ao)
-    e1 = u - lo * so
-    e2 = rho - lo * co
-    e2 = np.where(np.real(e2) > 0.0, e2, 0.0)  # the inner raceway: cos a_i >= 0
-    li = np.sqrt(e1 * e1 + e2 * e2)
-    di = li - b.ri
-    safe = np.where(np.real(li) > 0.0, li, 1.0)
-    si, ci = e1 / safe, e2 / safe
-    qi = _stiffness(b.ki, ci) * _power(di)
-    qo = _stiffness(b.ko, co) * _power(do)
-    gamma = b.dw / b.dm
-    tb = so / (co + gamma)
-    beta = np.arctan(tb)
-    c_o = (co + tb * so) / (1.0 + gamma * co)
-    c_i = (ci + tb * si) / (1.0 - gamma * ci)
-    wc = b.omega * c_o / (c_o + c_i)
-    wr = b.omega / (gamma * np.cos(beta) * (c_o + c_i))
-    fc = 0.5 * b.mass * b.dm * wc * wc * _KG_MM
-    mg = 0.1 * b.mass * b.dw * b.dw * wr * wc * np.sin(beta) * _KG_MM
-    fr = 2.0 * mg / b.dw
-    g1 = qi * si - qo * so + fr * co
-    g2 = qi * ci - qo * co - fr * so + fc
-    return g1, g2, qi, qo, si, ci, fc, mg, wc, wr, beta, di, qi * si, qi * ci
+    return tuple(_core_balls(b, rho, u, do, ao, False)[0])
 
 
-def _stiffness(nodes: np.ndarray, cos_alpha: Any) -> Any:
+def ball_partials(b: _Set, rho: Any, u: Any, do: Any, ao: Any) -> tuple[tuple[Any, ...], Any]:
+    """:func:`ball_terms` and the derivatives of (g1, g2, F_a, F_r) (rows) by (delta_o, alpha_o,
+    rho, u') (columns), analytic (the chain rule in the core), (4, 4) + the balls' shape."""
+    terms, part = _core_balls(b, rho, u, do, ao, True)
+    return tuple(terms), part
+
+
+def static_partials(b: _Set, rho: Any, up: Any) -> np.ndarray:
+    """Balls at speed 0 (on their lines, K_i and K_o in series): (F_a, F_r, dF_a/drho, dF_a/du',
+    dF_r/drho, dF_r/du') (6,) + the balls' shape. [N, N/mm]"""
+    shape = np.broadcast_shapes(np.shape(rho), np.shape(up))
+    flat = [
+        np.ascontiguousarray(np.broadcast_to(a, shape), dtype=float).reshape(-1) for a in (rho, up)
+    ]
+    rows = b.ki.shape[0]
+    row = np.broadcast_to(
+        np.arange(rows, dtype=np.int64).reshape((rows,) + (1,) * (len(shape) - 1)), shape
+    ).reshape(-1)
+    out = np.empty((6, flat[0].size))
+    _core.static_balls(*flat, np.ascontiguousarray(row), *_packed(b), _NODE_X, _NODE_W, out)
+    return out.reshape((6,) + shape)
+
+
+def _stiffness(nodes: np.ndarray, cos_alpha: np.ndarray) -> np.ndarray:
     """K(cos alpha) from its values ``nodes`` (n, 1, NODES) at the Chebyshev nodes (barycentric
-    interpolation). Below cos = 0.05 (a loose ball pointing across the groove: no load) the
-    value at 0.05. A complex cos alpha is a complex step (a tiny imaginary part h): the answer
-    K + i h dK/dcos, the derivative of the interpolant in real arithmetic (complex division
-    cost five times as much on a batch). The sums over the nodes as matrix products (a sum
-    over a short last axis is slow); one array (..., NODES) only, updated in place (on a
-    batch, fresh memory for each costs more than the arithmetic). [N/mm^1.5]"""
-    re = np.real(cos_alpha)
-    low = re < 0.05
-    terms = (2.0 * np.where(low, 0.05, re) - 1.0)[..., None] - _NODE_X  # x - x_k
+    interpolation); below cos = 0.05 (a loose ball pointing across the groove: no load) the
+    value at 0.05. [N/mm^1.5]"""
+    terms = (2.0 * np.maximum(cos_alpha, 0.05) - 1.0)[..., None] - _NODE_X  # x - x_k
     np.divide(_NODE_W, terms, out=terms)  # w_k / (x - x_k)
-    values = np.swapaxes(nodes, -1, -2)
-    den = terms @ _ONES
-    k = (terms @ values)[..., 0] / den
-    if not np.iscomplexobj(cos_alpha):
-        return k
-    np.square(terms, out=terms)  # w_k times -d/dx (w_k / (x - x_k))
-    slope = 2.0 * (k * (terms @ (1.0 / _NODE_W)) - (terms @ (values / _NODE_W[:, None]))[..., 0])
-    return k + 1j * np.where(low, 0.0, np.imag(cos_alpha)) * (slope / den)
-
-
-def _power(d: Any) -> Any:
-    """max(d, 0)^1.5, complex-step safe (0j ** 1.5 is NaN in numpy)."""
-    on = np.real(d) > 0
-    return np.where(on, np.where(on, d, 1.0) ** 1.5, 0.0)
+    return (terms @ np.swapaxes(nodes, -1, -2))[..., 0] / (terms @ _ONES)
 
 
 def _line_start(b: _Set, rho: np.ndarray, u: np.ndarray) -> tuple[np.ndarray, np.ndarray]:
@@ -184,12 +200,10 @@ def solve_balls(
 def _ball_jacobian(
     b: _Set, rho: np.ndarray, u: np.ndarray, do: np.ndarray, ao: np.ndarray
 ) -> tuple[np.ndarray, ...]:
-    """d(g1, g2)/d(X_1, X_2) (the ball centre, Cartesian) by the complex step in (do, ao)."""
-    hd = _H * (b.ri + b.ro)
-    # both steps in one call (stacked on a leading axis): half the calls on small arrays
-    g = ball_terms(b, rho, u, np.stack([do + 1j * hd, do + 0j]), np.stack([ao + 0j, ao + 1j * _H]))
-    j11, j21 = np.imag(g[0][0]) / hd, np.imag(g[1][0]) / hd
-    j12, j22 = np.imag(g[0][1]) / _H, np.imag(g[1][1]) / _H
+    """d(g1, g2)/d(X_1, X_2) (the ball centre, Cartesian) from the analytic derivatives by
+    (do, ao)."""
+    d = ball_partials(b, rho, u, do, ao)[1]
+    j11, j12, j21, j22 = d[0, 0], d[0, 1], d[1, 0], d[1, 1]
     lo, so, co = b.ro + do, np.sin(ao), np.cos(ao)
     # d do/dX = (so, co), d ao/dX = (co, -so)/lo
     return (j11 * so + j12 * co / lo, j11 * co - j12 * so / lo,
@@ -292,12 +306,11 @@ def _loose(
     zero = np.zeros_like(do)
     ok = np.zeros(do.shape, dtype=bool)
     for _ in range(FALLBACK_ITERATIONS):
-        t = ball_terms(b, rho, u, do, zero)
+        t, d = ball_partials(b, rho, u, do, zero)
         ok = _ball_norm(b, t, do, live)[1]
         if ok.all():
             break
-        h = _H * (b.ri + b.ro)
-        slope = np.imag(ball_terms(b, rho, u, do + 1j * h, zero)[1]) / h
+        slope = d[1, 0]
         with np.errstate(all="ignore"):
             step = np.where(ok, 0.0, -t[1] / slope)
         step = np.where(np.isfinite(step), step, 0.0)

@@ -57,3 +57,20 @@ ctypedef struct Point:
     double res      # relative residual (see residual)
     int age         # steps carried by the difference formulas since a fresh evaluation
     double drop     # change of the potential from the point it was reached from
+
+# ------------------------------------------------------------------------ the balls at speed
+
+ctypedef struct Speed:
+    # the balls of one case at speed (bearingload.models.high_speed; N, mm, kg, s): r'_i, r'_o,
+    # D_w, d_m, the shaft speed [rad/s], the ball mass [kg], and K_i, K_o at the NODES Chebyshev
+    # nodes of cos(alpha) [N/mm^1.5] with the nodes' abscissae and barycentric weights
+    double ri, ro, dw, dm, omega, mass
+    const double *ki
+    const double *ko
+    const double *node_x
+    const double *node_w
+
+ctypedef struct Dual:
+    # a value and its derivatives by (delta_o, alpha_o, rho, u') of one ball
+    double v
+    double d[4]

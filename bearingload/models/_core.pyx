@@ -25,12 +25,12 @@ Double-double arithmetic needs every product rounded on its own: the build compi
 with ``-ffp-contract=off`` (setup.py); the exact products use ``fma``.
 """
 
-from libc.math cimport fabs, fma, hypot, isfinite, sqrt, INFINITY
+from libc.math cimport atan, cos, fabs, fma, hypot, isfinite, pow, sin, sqrt, INFINITY
 from libc.stdint cimport int64_t
 from libc.stdlib cimport free, malloc
 from libc.string cimport memset
 
-from bearingload.models._core cimport NODES, Balls, Case, Limits, Loads, Point
+from bearingload.models._core cimport NODES, Balls, Case, Dual, Limits, Loads, Point, Speed
 
 import numpy as np
 
@@ -1872,3 +1872,275 @@ cdef int lean_newton(const Pair *pr, PairWork *wk, double *v) noexcept nogil:
             v[i] = trial[i]
         swap_lean(&wk.lean, &wk.lean_trial)
     return its
+
+
+# ------------------------------------------------------------------------ the balls at speed
+#
+# One ball of bearingload.models.high_speed (Jones's outer-raceway control; the model is stated
+# there): its two equations (g1, g2), the forces it puts on the inner ring (F_a = Q_i sin a_i,
+# F_r = Q_i cos a_i) and their derivatives by (delta_o, alpha_o, rho, u'), in forward-mode dual
+# arithmetic: the chain rule applied term by term, exact to rounding.
+
+cdef enum:
+    # g1, g2, Q_i, Q_o, sin a_i, cos a_i, F_c, M_g, omega_c, omega_R, beta, delta_i, F_a, F_r
+    BALL_TERMS = 14
+    # rows g1, g2, F_a, F_r; columns delta_o, alpha_o, rho, u'
+    BALL_PARTIALS = 16
+
+#: N mm per kg mm^2/s^2 (forces from kg, mm, s). [-]
+cdef double KG_MM = 1e-3
+
+
+cdef inline Dual dual(double v) noexcept nogil:
+    cdef Dual r
+    r.v = v
+    r.d[0] = 0.0
+    r.d[1] = 0.0
+    r.d[2] = 0.0
+    r.d[3] = 0.0
+    return r
+
+
+cdef inline Dual variable(double v, int k) noexcept nogil:
+    cdef Dual r = dual(v)
+    r.d[k] = 1.0
+    return r
+
+
+cdef inline Dual d_add(Dual a, Dual b) noexcept nogil:
+    cdef int k
+    a.v = a.v + b.v
+    for k in range(4):
+        a.d[k] = a.d[k] + b.d[k]
+    return a
+
+
+cdef inline Dual d_sub(Dual a, Dual b) noexcept nogil:
+    cdef int k
+    a.v = a.v - b.v
+    for k in range(4):
+        a.d[k] = a.d[k] - b.d[k]
+    return a
+
+
+cdef inline Dual d_mul(Dual a, Dual b) noexcept nogil:
+    cdef Dual r
+    cdef int k
+    r.v = a.v * b.v
+    for k in range(4):
+        r.d[k] = a.d[k] * b.v + a.v * b.d[k]
+    return r
+
+
+cdef inline Dual d_div(Dual a, Dual b) noexcept nogil:
+    cdef Dual r
+    cdef int k
+    r.v = a.v / b.v
+    for k in range(4):
+        r.d[k] = (a.d[k] - r.v * b.d[k]) / b.v
+    return r
+
+
+cdef inline Dual d_scale(Dual a, double s) noexcept nogil:
+    """s a, the constant on the left (as the numpy expressions it replaces round)."""
+    cdef int k
+    a.v = s * a.v
+    for k in range(4):
+        a.d[k] = s * a.d[k]
+    return a
+
+
+cdef inline Dual d_chain(double v, double slope, Dual a) noexcept nogil:
+    """f(a) from its value v = f(a.v) and slope f'(a.v)."""
+    cdef Dual r
+    cdef int k
+    r.v = v
+    for k in range(4):
+        r.d[k] = slope * a.d[k]
+    return r
+
+
+cdef inline Dual d_sqrt(Dual a) noexcept nogil:
+    cdef double v = sqrt(a.v)
+    return d_chain(v, 0.5 / v if v > 0.0 else 0.0, a)
+
+
+cdef inline Dual d_pow(Dual a, double p) noexcept nogil:
+    """max(a, 0)^p."""
+    if a.v <= 0.0:
+        return dual(0.0)
+    return d_chain(pow(a.v, p), p * pow(a.v, p - 1.0), a)
+
+
+cdef Dual d_stiffness(const Speed *sp, const double *nodes, Dual c) noexcept nogil:
+    """K(cos alpha) from its values at the Chebyshev nodes (barycentric interpolation in x = 2c -
+    1); below c = 0.05 (a loose ball pointing across the groove: no load) the value at 0.05 and
+    no slope. [N/mm^1.5]"""
+    cdef double x = 2.0 * max(c.v, 0.05) - 1.0, t, num = 0.0, den = 0.0, d_num = 0.0, d_den = 0.0
+    cdef double k
+    cdef int i
+    for i in range(NODES):
+        t = sp.node_w[i] / (x - sp.node_x[i])
+        num += t * nodes[i]
+        den += t
+        d_num += t * t / sp.node_w[i] * nodes[i]
+        d_den += t * t / sp.node_w[i]
+    k = num / den
+    return d_chain(k, 2.0 * (k * d_den - d_num) / den if c.v >= 0.05 else 0.0, c)
+
+
+cdef void inner_contact(const Speed *sp, Dual rho, Dual u, Dual lo, Dual so, Dual co,
+                        Dual *si, Dual *ci, Dual *di) noexcept nogil:
+    """The inner contact of a ball whose centre is lo (sin, cos) alpha_o from the outer groove
+    centre: its angle (sin, cos) and approach. The inner raceway is the half of the groove
+    facing the ball (cos a_i >= 0: the radial offset taken at least 0)."""
+    cdef Dual e1 = d_sub(u, d_mul(lo, so)), e2 = d_sub(rho, d_mul(lo, co)), li
+    if not e2.v > 0.0:
+        e2 = dual(0.0)
+    li = d_sqrt(d_add(d_mul(e1, e1), d_mul(e2, e2)))
+    di[0] = d_sub(li, dual(sp.ri))
+    if li.v > 0.0:
+        si[0] = d_div(e1, li)
+        ci[0] = d_div(e2, li)
+    else:
+        si[0] = e1
+        ci[0] = e2
+
+
+cdef void ball_speeds(const Speed *sp, Dual so, Dual co, Dual si, Dual ci, Dual *wc, Dual *wr,
+                      Dual *beta) noexcept nogil:
+    """Outer-raceway control: the orbit speed omega_c, the ball's spin omega_R and its attitude
+    angle beta from the two contact angles. [rad/s, rad]"""
+    cdef double gamma = sp.dw / sp.dm
+    cdef Dual tb = d_div(so, d_add(co, dual(gamma))), c_o, c_i, total
+    beta[0] = d_chain(atan(tb.v), 1.0 / (1.0 + tb.v * tb.v), tb)
+    c_o = d_div(d_add(co, d_mul(tb, so)), d_add(dual(1.0), d_scale(co, gamma)))
+    c_i = d_div(d_add(ci, d_mul(tb, si)), d_sub(dual(1.0), d_scale(ci, gamma)))
+    total = d_add(c_o, c_i)
+    wc[0] = d_div(d_scale(c_o, sp.omega), total)
+    wr[0] = d_div(dual(sp.omega), d_mul(d_scale(d_chain(cos(beta.v), -sin(beta.v), beta[0]),
+                                                gamma), total))
+
+
+cdef void ball_eval(const Speed *sp, double rho_, double u_, double do_, double ao_, double *t,
+                    double *jac) noexcept nogil:
+    """One ball at the groove-centre offsets (rho, u') with its unknowns (delta_o, alpha_o):
+    the BALL_TERMS values ``t`` and, if ``jac`` is not NULL, the BALL_PARTIALS derivatives of
+    (g1, g2, F_a, F_r) by (delta_o, alpha_o, rho, u') (row-major)."""
+    cdef Dual do = variable(do_, 0), ao = variable(ao_, 1)
+    cdef Dual rho = variable(rho_, 2), u = variable(u_, 3)
+    cdef Dual lo = d_add(dual(sp.ro), do), so, co, si, ci, di, qi, qo, wc, wr, beta, sb
+    cdef Dual fc, mg, fr, g[4]
+    cdef int r, k
+    so = d_chain(sin(ao.v), cos(ao.v), ao)
+    co = d_chain(cos(ao.v), -sin(ao.v), ao)
+    inner_contact(sp, rho, u, lo, so, co, &si, &ci, &di)
+    qi = d_mul(d_stiffness(sp, sp.ki, ci), d_pow(di, 1.5))
+    qo = d_mul(d_stiffness(sp, sp.ko, co), d_pow(do, 1.5))
+    ball_speeds(sp, so, co, si, ci, &wc, &wr, &beta)
+    fc = d_scale(d_mul(d_scale(wc, 0.5 * sp.mass * sp.dm), wc), KG_MM)
+    sb = d_chain(sin(beta.v), cos(beta.v), beta)
+    mg = d_scale(d_mul(d_mul(d_scale(wr, 0.1 * sp.mass * sp.dw * sp.dw), wc), sb), KG_MM)
+    fr = d_scale(mg, 2.0 / sp.dw)
+    g[0] = d_add(d_sub(d_mul(qi, si), d_mul(qo, so)), d_mul(fr, co))
+    g[1] = d_add(d_sub(d_sub(d_mul(qi, ci), d_mul(qo, co)), d_mul(fr, so)), fc)
+    g[2] = d_mul(qi, si)
+    g[3] = d_mul(qi, ci)
+    t[0] = g[0].v
+    t[1] = g[1].v
+    t[2] = qi.v
+    t[3] = qo.v
+    t[4] = si.v
+    t[5] = ci.v
+    t[6] = fc.v
+    t[7] = mg.v
+    t[8] = wc.v
+    t[9] = wr.v
+    t[10] = beta.v
+    t[11] = di.v
+    t[12] = g[2].v
+    t[13] = g[3].v
+    if jac != NULL:
+        for r in range(4):
+            for k in range(4):
+                jac[4 * r + k] = g[r].d[k]
+
+
+cdef void static_eval(const Speed *sp, double rho_, double u_, double *f, double *jac) noexcept nogil:
+    """A ball at speed 0, on the line of its groove centres, K_i and K_o in series: its forces
+    on the ring (F_a, F_r) and their derivatives by (rho, u') (row-major 2 x 2)."""
+    cdef Dual rho = variable(rho_, 2), u = variable(u_, 3), rp, d, ca, k, q, fa, fr
+    cdef int r
+    rp = rho if rho.v > 0.0 else dual(0.0)
+    d = d_sqrt(d_add(d_mul(rp, rp), d_mul(u, u)))
+    ca = d_div(rp, d) if d.v > 0.0 else rp
+    k = d_pow(d_add(d_pow(d_stiffness(sp, sp.ki, ca), -2.0 / 3.0),
+                    d_pow(d_stiffness(sp, sp.ko, ca), -2.0 / 3.0)), -1.5)
+    q = d_mul(k, d_pow(d_sub(d, dual(sp.ri + sp.ro)), 1.5))
+    fa = d_div(d_mul(q, u), d)
+    fr = d_div(d_mul(q, rp), d)
+    f[0] = fa.v
+    f[1] = fr.v
+    for r in range(2):
+        jac[r] = fa.d[2 + r] if isfinite(fa.d[2 + r]) else 0.0
+        jac[2 + r] = fr.d[2 + r] if isfinite(fr.d[2 + r]) else 0.0
+
+
+cdef inline void speed_on(Speed *sp, const double *consts, const double *ki, const double *ko,
+                          const double *node_x, const double *node_w) noexcept nogil:
+    sp.ri = consts[0]
+    sp.ro = consts[1]
+    sp.dw = consts[2]
+    sp.dm = consts[3]
+    sp.omega = consts[4]
+    sp.mass = consts[5]
+    sp.ki = ki
+    sp.ko = ko
+    sp.node_x = node_x
+    sp.node_w = node_w
+
+
+def speed_balls(const double[::1] rho, const double[::1] u, const double[::1] do,
+                const double[::1] ao, const int64_t[::1] row, const double[:, ::1] consts,
+                const double[:, ::1] ki, const double[:, ::1] ko, const double[::1] node_x,
+                const double[::1] node_w, double[:, ::1] terms, double[:, ::1] partials):
+    """m balls at speed (``ball_eval``): ball i at (rho[i], u[i]) with (do[i], ao[i]), its case
+    ``row[i]`` (consts (cases, 6): r'_i, r'_o, D_w, d_m, omega, mass; ki, ko (cases, NODES)).
+    Writes terms (BALL_TERMS, m) and, if partials has BALL_PARTIALS rows, the derivatives."""
+    cdef Py_ssize_t m = rho.shape[0], i
+    cdef int k
+    cdef bint want = partials.shape[0] == BALL_PARTIALS
+    cdef double t[BALL_TERMS]
+    cdef double jac[BALL_PARTIALS]
+    cdef Speed sp
+    with nogil:
+        for i in range(m):
+            speed_on(&sp, &consts[row[i], 0], &ki[row[i], 0], &ko[row[i], 0], &node_x[0],
+                     &node_w[0])
+            ball_eval(&sp, rho[i], u[i], do[i], ao[i], t, jac if want else NULL)
+            for k in range(BALL_TERMS):
+                terms[k, i] = t[k]
+            if want:
+                for k in range(BALL_PARTIALS):
+                    partials[k, i] = jac[k]
+
+
+def static_balls(const double[::1] rho, const double[::1] u, const int64_t[::1] row,
+                 const double[:, ::1] consts, const double[:, ::1] ki, const double[:, ::1] ko,
+                 const double[::1] node_x, const double[::1] node_w, double[:, ::1] out):
+    """m balls at speed 0 (``static_eval``): out (6, m) = F_a, F_r, dF_a/drho, dF_a/du',
+    dF_r/drho, dF_r/du'."""
+    cdef Py_ssize_t m = rho.shape[0], i
+    cdef int k
+    cdef double f[2]
+    cdef double jac[4]
+    cdef Speed sp
+    with nogil:
+        for i in range(m):
+            speed_on(&sp, &consts[row[i], 0], &ki[row[i], 0], &ko[row[i], 0], &node_x[0],
+                     &node_w[0])
+            static_eval(&sp, rho[i], u[i], f, jac)
+            out[0, i] = f[0]
+            out[1, i] = f[1]
+            for k in range(4):
+                out[2 + k, i] = jac[k]

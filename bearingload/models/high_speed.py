@@ -56,7 +56,7 @@ the nested solver below, which decides (the others start it from the static answ
 ring positions each ball's two equations are solved by Newton on its centre
 (X_1, X_2), all balls of all cases at once (each until it is balanced), from the ball's last
 position moved to first order with the ring (its sensitivity), with the Jacobians
-from the complex step (exact to rounding); a ball left unbalanced is solved alone from its
+analytic (the compiled ball evaluator, :mod:`bearingload.models._core`); a ball left unbalanced is solved alone from its
 loose state (:mod:`bearingload.models._ball_dynamics`). The ring equilibrium: Newton on ``(x,
 y, a, R_i theta, R_i theta_c)`` from the static answer (a case left unbalanced: again from the
 static answer of the bearing whose balls are pushed out by their centrifugal approach), the
@@ -91,15 +91,14 @@ from bearingload.constants import STEEL_MODULUS
 from bearingload.errors import ConvergenceError, InputError
 from bearingload.models import combined as _combined
 from bearingload.models._ball_dynamics import (
-    _H,
     BALL_TOLERANCE,
     _ball_norm,
     _line_start,
-    _power,
     _Set,
     _stiffness,
-    ball_terms,
+    ball_partials,
     solve_balls,
+    static_partials,
 )
 from bearingload.models.combined import CombinedDistribution
 
@@ -223,15 +222,7 @@ def _ring_forces(
     speed 0: no ball equations). [-]"""
     up = np.where(one_sided[:, None], np.maximum(u, 0.0), u)
     dup = np.where(one_sided[:, None], (u > 0).astype(float), 1.0)
-    t0 = ball_terms(b, rho, up, do, ao)
-    hd = hr = hu = _H * (b.ri + b.ro)  # a length of the problem (complex step: any tiny step)
-    # the four complex steps in one call, stacked on a leading axis (a quarter of the calls)
-    e = 1j * np.eye(4)[:, :, None, None]  # e[:, k]: step k only
-    cols = ball_terms(b, rho + hr * e[:, 2], up + hu * e[:, 3], do + hd * e[:, 0],
-                      ao + _H * e[:, 1])  # fmt: skip
-    steps = (hd, _H, hr, hu)
-    # rows: g1, g2, Fa, Fr; columns: do, ao, rho, u
-    d = [[np.imag(cols[r][k]) / steps[k] for k in range(4)] for r in (0, 1, 12, 13)]
+    t0, d = ball_partials(b, rho, up, do, ao)  # rows: g1, g2, Fa, Fr; columns: do, ao, rho, u
     moving = np.broadcast_to(b.omega > 0, do.shape)
     det = d[0][0] * d[1][1] - d[0][1] * d[1][0]
     with np.errstate(all="ignore"):
@@ -264,19 +255,7 @@ def _ring_forces(
 
 def _static_derivative(b: _Set, rho: np.ndarray, up: np.ndarray, r: int, c: int) -> np.ndarray:
     """d(F_a or F_r)/d(rho or u) of a ball at speed 0 (on its line, K in series)."""
-    h = _H * (b.ri + b.ro)
-    rr = rho + 1j * h if c == 2 else rho + 0j
-    uu = up + 1j * h if c == 3 else up + 0j
-    rp = np.where(np.real(rr) > 0, rr, 0.0)
-    d = np.sqrt(rp * rp + uu * uu)
-    with np.errstate(all="ignore"):
-        cos_a = rp / np.where(np.real(d) > 0, d, 1.0)
-    k = (_stiffness(b.ki, cos_a) ** (-2.0 / 3.0) + _stiffness(b.ko, cos_a) ** (-2.0 / 3.0)) ** -1.5
-    delta = d - b.ri - b.ro
-    q = k * _power(delta)
-    with np.errstate(all="ignore"):
-        f = q * (uu if r == 2 else rp) / d
-    return np.nan_to_num(np.imag(f) / h)
+    return static_partials(b, rho, up)[2 + 2 * (r - 2) + (c - 2)]
 
 
 def _stiffness_nodes(geo: Any, e: np.ndarray, nu: np.ndarray) -> tuple[np.ndarray, np.ndarray]:
@@ -722,20 +701,14 @@ def _coupled(r: _Ring, v: np.ndarray) -> tuple[np.ndarray, ...]:
 def _coupled_residual(
     r: _Ring, arms: tuple[np.ndarray, np.ndarray], v: np.ndarray, do: np.ndarray, ao: np.ndarray
 ) -> tuple[Any, ...]:
-    """The residuals of the coupled stage at (v, do, ao): (the balls' terms (their real parts)
-    and, last, their partial derivatives (n, z, 4, 4) (rows g1, g2, Fa, Fr; columns do, ao,
+    """The residuals of the coupled stage at (v, do, ao): (the balls' terms and, last, their partial derivatives (n, z, 4, 4) (rows g1, g2, Fa, Fr; columns do, ao,
     rho, u'), the ring residual over f_ref, the largest ball residual over its forces, the
     combined 2-norm of the free ring residual over f_ref and of every ball's over its forces
     (n,), whether all are finite and some ball touches the inner ring (n,)). One call of the ball
-    equations: the four complex steps stacked (:func:`_ring_forces`), the terms from the real
-    part of the first (the derivatives are at hand when the trial is taken). [-]"""
+    evaluator with its analytic derivatives (at hand when the trial is taken). [-]"""
     rho, _, up = _centres(r, v)
-    h = _H * (r.b.ri + r.b.ro)
-    e = 1j * np.eye(4)[:, :, None, None]  # e[:, k]: step k only
-    cols = ball_terms(r.b, rho + h * e[:, 2], up + h * e[:, 3], do + h * e[:, 0], ao + _H * e[:, 1])
-    # d[row, col]: rows g1, g2, Fa, Fr; columns do, ao, rho, u'
-    d = np.stack([cols[k] for k in (0, 1, 12, 13)]).imag / np.stack([h, h * 0.0 + _H, h, h])
-    t = tuple(np.real(c[0]) for c in cols) + (d.transpose(2, 3, 0, 1),)
+    terms, d = ball_partials(r.b, rho, up, do, ao)  # d[row, col]: g1, g2, Fa, Fr; do, ao, rho, u'
+    t = terms + (d.transpose(2, 3, 0, 1),)
     arm_r, arm_a = arms
     gen = (arm_r * t[13][:, None, :] + arm_a * t[12][:, None, :]).sum(-1)
     res = np.where(r.held, 0.0, r.f - gen) / r.f_ref[:, None]
