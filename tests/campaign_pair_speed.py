@@ -73,7 +73,7 @@ def plain_shaft(case: dict[str, Any], r: Any) -> float:
 def ball_residual(r: Any, kw: dict[str, Any]) -> tuple[float, float]:
     """Each ball's axial and radial equations from the returned forces and angles: the largest
     over the sum of their terms' magnitudes, and the largest over the ball solver's tolerance
-    (bearingload.models._ball_dynamics._ball_norm: 1e-13 of those magnitudes plus the rounding
+    (the core's ball_norm, bearingload/models/_core.pyx: 1e-13 of those magnitudes plus the rounding
     of its approaches, 16 eps times each contact's load times its length r' + delta over its
     approach delta: a light ball's approach is a difference of lengths near r')."""
     dw = kw["ball_diameter"]

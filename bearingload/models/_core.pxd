@@ -74,3 +74,39 @@ ctypedef struct Dual:
     # a value and its derivatives by (delta_o, alpha_o, rho, u') of one ball
     double v
     double d[4]
+
+ctypedef struct SpeedLimits:
+    # the tolerances and limits of bearingload.models.high_speed (its module constants)
+    double tolerance, accept, rounding, noise_max, ball_tolerance, ball_round
+    int ring_iterations, trials, halvings, ball_iterations, fallback_iterations, ball_halvings
+    int stages
+
+ctypedef struct Ring:
+    # one bearing at speed in its own frame (physical units; tilts as R_i theta [mm]): ball j at
+    # (c[j], s[j]) = (cos, sin) of its angle; base = A - G_r/2; the applied generalised forces
+    # f, the largest applied load f_ref, the components held, A (length)
+    Speed sp
+    int z
+    const double *c
+    const double *s
+    double base, f_ref, length
+    double f[5]
+    int held[5]
+    int one_sided
+    SpeedLimits lim
+
+ctypedef struct Dyn:
+    # every ball of a bearing at speed and the ring's forces at one ring position
+    double *do      # delta_o (z)
+    double *ao      # alpha_o (z)
+    double *ok      # 1 where the ball is balanced (z)
+    double *terms   # BALL_TERMS a ball (ball-major)
+    double *sens    # 6 a ball: rho, u', d(delta_o, alpha_o)/drho, d(delta_o, alpha_o)/du'
+    double *tot     # 4 a ball: dF_a/drho, dF_a/du', dF_r/drho, dF_r/du' (its equations eliminated)
+    double *gain    # 2 a ball: |dF/dX (dg/dX)^-1| of F_a, F_r
+    double gen[5]   # generalised ring forces [N]
+    double jac[25]  # their tangent (row-major) [N/mm]
+    double floor[5] # rounding level of each [N]
+    double noise[5] # their change over the balls' own residuals [N]
+    double merit, score, level
+    int balls_ok, touching

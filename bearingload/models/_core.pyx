@@ -25,12 +25,14 @@ Double-double arithmetic needs every product rounded on its own: the build compi
 with ``-ffp-contract=off`` (setup.py); the exact products use ``fma``.
 """
 
-from libc.math cimport atan, cos, fabs, fma, hypot, isfinite, pow, sin, sqrt, INFINITY
+from libc.math cimport (atan, atan2, cos, fabs, fma, hypot, isfinite, isnan, pow, sin, sqrt,
+                        INFINITY, NAN)
 from libc.stdint cimport int64_t
 from libc.stdlib cimport free, malloc
 from libc.string cimport memset
 
-from bearingload.models._core cimport NODES, Balls, Case, Dual, Limits, Loads, Point, Speed
+from bearingload.models._core cimport (NODES, Balls, Case, Dual, Dyn, Limits, Loads, Point, Ring,
+                                      Speed, SpeedLimits)
 
 import numpy as np
 
@@ -1889,6 +1891,7 @@ cdef enum:
 
 #: N mm per kg mm^2/s^2 (forces from kg, mm, s). [-]
 cdef double KG_MM = 1e-3
+cdef double EPS = 2.220446049250313e-16
 
 
 cdef inline Dual dual(double v) noexcept nogil:
@@ -2030,7 +2033,8 @@ cdef void ball_eval(const Speed *sp, double rho_, double u_, double do_, double 
     cdef Dual do = variable(do_, 0), ao = variable(ao_, 1)
     cdef Dual rho = variable(rho_, 2), u = variable(u_, 3)
     cdef Dual lo = d_add(dual(sp.ro), do), so, co, si, ci, di, qi, qo, wc, wr, beta, sb
-    cdef Dual fc, mg, fr, g[4]
+    cdef Dual fc, mg, fr
+    cdef Dual g[4]
     cdef int r, k
     so = d_chain(sin(ao.v), cos(ao.v), ao)
     co = d_chain(cos(ao.v), -sin(ao.v), ao)
@@ -2125,22 +2129,693 @@ def speed_balls(const double[::1] rho, const double[::1] u, const double[::1] do
                     partials[k, i] = jac[k]
 
 
-def static_balls(const double[::1] rho, const double[::1] u, const int64_t[::1] row,
-                 const double[:, ::1] consts, const double[:, ::1] ki, const double[:, ::1] ko,
-                 const double[::1] node_x, const double[::1] node_w, double[:, ::1] out):
-    """m balls at speed 0 (``static_eval``): out (6, m) = F_a, F_r, dF_a/drho, dF_a/du',
-    dF_r/drho, dF_r/du'."""
-    cdef Py_ssize_t m = rho.shape[0], i
-    cdef int k
+# --------------------------------------------------------------------- one ball's equilibrium
+#
+# Each ball's two equations at a given ring position (bearingload.models.high_speed): Newton on
+# its centre (X_1, X_2) = (r'_o + delta_o)(sin, cos) alpha_o from the outer groove centre, the
+# step halved until the residual falls; a ball left unbalanced is solved from its loose state.
+
+cdef double ZERO_NODES[NODES]  # K_i of a ball without inner contact
+
+
+cdef double stiffness_at(const Speed *sp, const double *nodes, double c) noexcept nogil:
+    """K(cos alpha), the value of ``d_stiffness``. [N/mm^1.5]"""
+    cdef double x = 2.0 * max(c, 0.05) - 1.0, t, num = 0.0, den = 0.0
+    cdef int i
+    for i in range(NODES):
+        t = sp.node_w[i] / (x - sp.node_x[i])
+        num += t * nodes[i]
+        den += t
+    return num / den
+
+
+cdef double ball_norm(const Speed *sp, const double *t, double do, double round_) noexcept nogil:
+    """The ball's residual over the sum of its force magnitudes plus the rounding of its
+    approaches (differences of lengths up to r' + delta; ``round_`` times each contact's load
+    times its length over its approach); inf where not finite."""
+    cdef double di = fabs(t[11]), size, extra, out
+    size = fabs(t[2]) + fabs(t[3]) + fabs(t[6]) + 2.0 * fabs(t[7]) / sp.dw
+    extra = t[2] * (di + sp.ri) / di + t[3] * (do + sp.ro) / do
+    if isnan(extra):
+        extra = 0.0  # no contact: 0/0
+    out = hypot(t[0], t[1]) / (size + round_ * extra)
+    return out if isfinite(out) else INFINITY
+
+
+cdef void line_start(const Speed *sp, double rho, double u, double *do, double *ao) noexcept nogil:
+    """The static position: the ball on the line of its groove centres, the approach shared by
+    the contacts as their compliances."""
+    cdef double r = max(rho, 0.0), d, ca, ci, co
+    d = hypot(r, u)
+    ca = r / (d if d > 0.0 else 1.0)
+    ci = pow(stiffness_at(sp, sp.ki, ca), -2.0 / 3.0)
+    co = pow(stiffness_at(sp, sp.ko, ca), -2.0 / 3.0)
+    do[0] = co / (ci + co) * (d - sp.ri - sp.ro)
+    ao[0] = atan2(u, r)
+
+
+cdef bint ball_step(const Speed *sp, double rho, double u, double *x, double *t, bint touching,
+                    const SpeedLimits *lim) noexcept nogil:
+    """One Newton step of an unbalanced ball at x = (delta_o, alpha_o) whose terms are t (the
+    Jacobian in its centre's Cartesian coordinates), no longer than r'_o/4, halved until the
+    residual falls (a touching ball kept in inner contact). Updates x and t; whether it
+    moved. Sets t's balance in x[2] (1: balanced)."""
+    cdef double jac[BALL_PARTIALS]
+    cdef double t2[BALL_TERMS]
+    cdef double a11, a12, a21, a22, det, s1, s2, lo, so, co, cut, y1, y2, d2, a2, size
+    cdef double lam = 1.0
+    cdef bint ok2
+    cdef int h, k
+    ball_eval(sp, rho, u, x[0], x[1], t2, jac)
+    lo = sp.ro + x[0]
+    so = sin(x[1])
+    co = cos(x[1])
+    a11 = jac[0] * so + jac[1] * co / lo
+    a12 = jac[0] * co - jac[1] * so / lo
+    a21 = jac[4] * so + jac[5] * co / lo
+    a22 = jac[4] * co - jac[5] * so / lo
+    det = a11 * a22 - a12 * a21
+    s1 = -(a22 * t[0] - a12 * t[1]) / det
+    s2 = -(-a21 * t[0] + a11 * t[1]) / det
+    if not (isfinite(s1) and isfinite(s2)):
+        return False
+    cut = min(1.0, 0.25 * sp.ro / max(hypot(s1, s2), 1e-300))
+    size = hypot(t[0], t[1])
+    for h in range(lim.ball_halvings):
+        y1 = lo * so + lam * (s1 * cut)
+        y2 = lo * co + lam * (s2 * cut)
+        d2 = hypot(y1, y2) - sp.ro
+        a2 = atan2(y1, y2)
+        ball_eval(sp, rho, u, d2, a2, t2, NULL)
+        ok2 = ball_norm(sp, t2, d2, lim.ball_round) <= lim.ball_tolerance
+        if (hypot(t2[0], t2[1]) < (1.0 - 1e-4 * lam) * size or ok2) and (
+                not touching or t2[11] > 0.0):
+            x[0] = d2
+            x[1] = a2
+            x[2] = 1.0 if ok2 else 0.0
+            for k in range(BALL_TERMS):
+                t[k] = t2[k]
+            return True
+        lam *= 0.5
+    return False
+
+
+cdef bint ball_newton(const Speed *sp, double rho, double u, double *x, bint moving,
+                      int iterations, bint keep_contact, const SpeedLimits *lim) noexcept nogil:
+    """Newton on one ball from x = (delta_o, alpha_o) (``ball_step``); whether it is balanced
+    (a ball not moving is)."""
+    cdef double t[BALL_TERMS]
+    cdef bint touching
+    cdef int it
+    ball_eval(sp, rho, u, x[0], x[1], t, NULL)
+    x[2] = 1.0 if (not moving or ball_norm(sp, t, x[0], lim.ball_round) <= lim.ball_tolerance) else 0.0
+    touching = keep_contact and t[11] > 0.0
+    for it in range(iterations):
+        if x[2] != 0.0 or not ball_step(sp, rho, u, x, t, touching, lim):
+            break
+    return x[2] != 0.0
+
+
+cdef bint loose(const Speed *sp, double rho, double u, double *do, const SpeedLimits *lim) noexcept nogil:
+    """The ball without inner contact: alpha_o = 0 (no friction: beta = 0) and K_o
+    delta_o^1.5 = F_c, by Newton in delta_o from the rigid-rolling F_c; whether solved."""
+    cdef Speed bare = sp[0]
+    cdef double t[BALL_TERMS]
+    cdef double jac[BALL_PARTIALS]
+    cdef double fc = 0.125 * sp.mass * sp.dm * sp.omega * sp.omega * KG_MM, step
+    cdef bint ok = False
+    cdef int it
+    bare.ki = ZERO_NODES
+    do[0] = pow(fc / stiffness_at(sp, sp.ko, 1.0), 2.0 / 3.0)
+    for it in range(lim.fallback_iterations):
+        ball_eval(&bare, rho, u, do[0], 0.0, t, jac)
+        ok = ball_norm(&bare, t, do[0], lim.ball_round) <= lim.ball_tolerance
+        if ok:
+            break
+        step = -t[1] / jac[4]
+        if not isfinite(step):
+            step = 0.0
+        do[0] = do[0] + step if do[0] + step > 0.0 else 0.5 * do[0]
+    return ok and isfinite(do[0])
+
+
+cdef bint solve_ball(const Speed *sp, double rho, double u, double *x,
+                     const SpeedLimits *lim) noexcept nogil:
+    """One ball's equations at (rho, u') from x = (delta_o, alpha_o): Newton from x; if left
+    unbalanced, its loose state where its inner approach is a gap there, else Newton from that
+    state (or its line) kept in inner contact. Whether it is balanced."""
+    cdef double t[BALL_TERMS]
+    cdef double ld, line_d, line_a
+    cdef bint moving = sp.omega > 0.0, loose_ok
+    if ball_newton(sp, rho, u, x, moving, lim.ball_iterations, False, lim):
+        return True
+    loose_ok = loose(sp, rho, u, &ld, lim)
+    line_start(sp, rho, u, &line_d, &line_a)
+    ball_eval(sp, rho, u, ld, 0.0, t, NULL)
+    if loose_ok and t[11] <= 0.0:
+        x[0] = ld
+        x[1] = 0.0
+        x[2] = 1.0
+        return True
+    x[0] = ld if loose_ok else max(line_d, 1e-6 * sp.ro)
+    x[1] = 0.0 if loose_ok else line_a
+    return ball_newton(sp, rho, u, x, True, lim.fallback_iterations, True, lim)
+
+
+# ------------------------------------------------------------ the ring of one bearing at speed
+#
+# The inner ring's forces and tangent at a ring position v = (x, y, a, R_i theta, R_i theta_c)
+# with every ball solved (``evaluate``), each ball's equations eliminated from the tangent by the
+# implicit function theorem; its rounding level and the change over the balls' own residuals
+# (bearingload.models.high_speed: the acceptance rules).
+
+cdef enum:
+    DYN_PER_BALL = 29  # doubles a ball in a Dyn
+
+
+cdef void dyn_on(double *block, int z, Dyn *st) noexcept nogil:
+    st.do = block
+    st.ao = block + z
+    st.ok = block + 2 * z
+    st.terms = block + 3 * z
+    st.sens = block + (3 + BALL_TERMS) * z
+    st.tot = block + (9 + BALL_TERMS) * z
+    st.gain = block + (13 + BALL_TERMS) * z
+
+
+cdef void copy_dyn(int z, const Dyn *src, Dyn *dst) noexcept nogil:
+    cdef int i
+    for i in range(DYN_PER_BALL * z):
+        dst.do[i] = src.do[i]
+    for i in range(5):
+        dst.gen[i] = src.gen[i]
+        dst.floor[i] = src.floor[i]
+        dst.noise[i] = src.noise[i]
+    for i in range(25):
+        dst.jac[i] = src.jac[i]
+    dst.merit = src.merit
+    dst.score = src.score
+    dst.level = src.level
+    dst.balls_ok = src.balls_ok
+    dst.touching = src.touching
+
+
+cdef inline void centre(const Ring *rg, const double *v, int j, double *rho, double *u) noexcept nogil:
+    """Ball j's inner groove centre from its outer one: radial rho and axial u. [mm]"""
+    rho[0] = rg.base + v[0] * rg.c[j] + v[1] * rg.s[j]
+    u[0] = v[2] + v[3] * rg.c[j] + v[4] * rg.s[j]
+
+
+cdef void eliminate(const Ring *rg, double rho, double up, double dup, const double *d,
+                    double *sens, double *tot, double *gain) noexcept nogil:
+    """A ball's sensitivity dX/d(rho, u') = -(dg/dX)^-1 dg/dp, the total derivatives of its
+    ring forces (F_a, F_r) by (rho, u) with its equations eliminated (at speed 0 those of the
+    ball on its line, ``static_eval``), and the gain |dF/dX (dg/dX)^-1| of each."""
+    cdef double det = d[0] * d[5] - d[1] * d[4], inv[4]
     cdef double f[2]
-    cdef double jac[4]
-    cdef Speed sp
+    cdef double stat[4]
+    cdef double dx0, dx1, total
+    cdef bint moving = rg.sp.omega > 0.0
+    cdef int r, c, k
+    inv[0] = d[5] / det
+    inv[1] = -d[1] / det
+    inv[2] = -d[4] / det
+    inv[3] = d[0] / det
+    sens[0] = rho
+    sens[1] = up
+    for c in range(2):
+        for k in range(2):
+            total = -(inv[2 * k] * d[2 + c] + inv[2 * k + 1] * d[6 + c])
+            sens[2 + 2 * c + k] = total if isfinite(total) else 0.0
+    if not moving:
+        static_eval(&rg.sp, rho, up, f, stat)
+    for r in range(2):
+        for c in range(2):
+            dx0 = inv[0] * d[2 + c] + inv[1] * d[6 + c]
+            dx1 = inv[2] * d[2 + c] + inv[3] * d[6 + c]
+            total = d[4 * (2 + r) + 2 + c] - (d[4 * (2 + r)] * dx0 + d[4 * (2 + r) + 1] * dx1)
+            tot[2 * r + c] = (total if moving else stat[2 * r + c]) * (dup if c == 1 else 1.0)
+        total = (fabs(d[4 * (2 + r)] * inv[0] + d[4 * (2 + r) + 1] * inv[2])
+                 + fabs(d[4 * (2 + r)] * inv[1] + d[4 * (2 + r) + 1] * inv[3]))
+        gain[r] = total if moving and isfinite(total) else 0.0
+
+
+cdef void start_ball(const Ring *rg, double rho, double up, const double *prev,
+                     const double *sens, double *x) noexcept nogil:
+    """A ball's start at (rho, u'): its previous (delta_o, alpha_o) moved to first order by its
+    sensitivity (if any), else (or at speed 0) its line; at speed pressed by about F_c."""
+    cdef const Speed *sp = &rg.sp
+    cdef bint moving = sp.omega > 0.0, fresh
+    cdef double fc = 0.125 * sp.mass * sp.dm * sp.omega * sp.omega * KG_MM, dr, du
+    x[0] = prev[0]
+    x[1] = prev[1]
+    if sens != NULL:
+        dr = rho - sens[0]
+        du = up - sens[1]
+        x[0] = x[0] + sens[2] * dr + sens[4] * du
+        x[1] = x[1] + sens[3] * dr + sens[5] * du
+    fresh = not moving or not isfinite(x[0])
+    if fresh:
+        line_start(sp, rho, up, &x[0], &x[1])
+    if moving and fresh and x[0] <= 0.0:
+        x[1] = 0.0
+    if moving:
+        x[0] = max(x[0], pow(fc / sp.ko[NODES - 1], 2.0 / 3.0))
+
+
+cdef void add_ball_forces(const Ring *rg, int j, const double *t, const double *tot,
+                          Dyn *st) noexcept nogil:
+    """Ball j's ring forces (F_a, F_r) = (t[12], t[13]) into the generalised forces, their
+    tangent and the sums of the terms' magnitudes (``floor``, the rounding added later)."""
+    cdef double arm_r[5]
+    cdef double arm_a[5]
+    cdef int k, l
+    arm_r[0] = rg.c[j]
+    arm_r[1] = rg.s[j]
+    arm_a[3] = rg.c[j]
+    arm_a[4] = rg.s[j]
+    arm_r[2] = arm_r[3] = arm_r[4] = arm_a[0] = arm_a[1] = 0.0
+    arm_a[2] = 1.0
+    for k in range(5):
+        st.gen[k] += arm_r[k] * t[13] + arm_a[k] * t[12]
+        for l in range(5):
+            st.jac[5 * k + l] += (arm_r[k] * (tot[2] * arm_r[l] + tot[3] * arm_a[l])
+                                  + arm_a[k] * (tot[0] * arm_r[l] + tot[1] * arm_a[l]))
+
+
+
+cdef void add_levels(const Ring *rg, int j, const double *t, const double *tot,
+                     const double *gain, double length, double *moved, Dyn *st) noexcept nogil:
+    """Ball j's part of each component's rounding level: its terms' magnitudes (``floor``, the
+    ROUNDING factor applied in ``score``) and the force change over one rounding eps (|rho| +
+    |u'|) of its groove-centre position (``moved``); and of the change of the forces over the
+    ball's own residual (``noise``)."""
+    cdef double arm_r[5]
+    cdef double arm_a[5]
+    cdef double g = hypot(t[0], t[1]), own
+    cdef int k
+    arm_r[0] = fabs(rg.c[j])
+    arm_r[1] = fabs(rg.s[j])
+    arm_a[3] = arm_r[0]
+    arm_a[4] = arm_r[1]
+    arm_r[2] = arm_r[3] = arm_r[4] = arm_a[0] = arm_a[1] = 0.0
+    arm_a[2] = 1.0
+    for k in range(5):
+        st.floor[k] += arm_r[k] * fabs(t[13]) + arm_a[k] * fabs(t[12])
+        moved[k] += ((fabs(tot[2]) + fabs(tot[3])) * arm_r[k]
+                     + (fabs(tot[0]) + fabs(tot[1])) * arm_a[k]) * (EPS * length)
+        own = arm_a[k] * (gain[0] * g) + arm_r[k] * (gain[1] * g)
+        if isfinite(own):
+            st.noise[k] += own
+
+
+cdef void score(const Ring *rg, const double *moved, Dyn *st) noexcept nogil:
+    """The residual measures of a state whose forces, tangent and level sums are in: ``merit``
+    (the largest free residual over f_ref), ``score`` (each free residual against the largest
+    of ACCEPT f_ref, its rounding level and, up to NOISE_MAX f_ref, the change over the balls'
+    own residuals, over ACCEPT), ``level`` (the largest rounding level over f_ref); inf where
+    a ball is unsolved or a measure not finite."""
+    cdef double res, merit = 0.0, worst = 0.0, level = 0.0, noise
+    cdef int k
+    for k in range(5):
+        st.floor[k] = rg.lim.rounding * st.floor[k] + moved[k]
+        if not isfinite(st.floor[k]):
+            st.floor[k] = 0.0
+        res = 0.0 if rg.held[k] else fabs(rg.f[k] - st.gen[k])
+        noise = min(st.noise[k], rg.lim.noise_max * rg.f_ref)
+        merit = max(merit, res)
+        worst = max(worst, res / max(rg.f_ref, max(st.floor[k], noise) / rg.lim.accept))
+        level = max(level, st.floor[k])
+    st.merit = merit / rg.f_ref
+    st.score = worst
+    st.level = level / rg.f_ref
+    if not (st.balls_ok and isfinite(st.merit)):
+        st.merit = INFINITY
+    if not (st.balls_ok and isfinite(st.score)):
+        st.score = INFINITY
+
+
+cdef void speed_state(const Ring *rg, const double *v, const Dyn *prev, bint warm,
+                   Dyn *st) noexcept nogil:
+    """Every ball solved at the ring position v (from ``prev``'s balls, moved by their
+    sensitivities where ``warm``; NaN balls start on their lines), the ring's forces, tangent
+    and measures into ``st`` (which may be ``prev``)."""
+    cdef double t[BALL_TERMS]
+    cdef double d[BALL_PARTIALS]
+    cdef double moved[5]
+    cdef double x[3]
+    cdef double rho, u, up, dup
+    cdef int j, k
+    for k in range(5):
+        st.gen[k] = st.floor[k] = st.noise[k] = moved[k] = 0.0
+    for k in range(25):
+        st.jac[k] = 0.0
+    st.balls_ok = True
+    st.touching = False
+    for j in range(rg.z):
+        centre(rg, v, j, &rho, &u)
+        up = max(u, 0.0) if rg.one_sided else u
+        dup = (1.0 if u > 0.0 else 0.0) if rg.one_sided else 1.0
+        x[0] = prev.do[j]
+        x[1] = prev.ao[j]
+        start_ball(rg, rho, up, x, &prev.sens[6 * j] if warm else NULL, x)
+        st.ok[j] = 1.0 if solve_ball(&rg.sp, rho, up, x, &rg.lim) else 0.0
+        st.balls_ok = st.balls_ok and st.ok[j] != 0.0
+        st.do[j] = x[0]
+        st.ao[j] = x[1]
+        ball_eval(&rg.sp, rho, up, x[0], x[1], t, d)
+        for k in range(BALL_TERMS):
+            st.terms[BALL_TERMS * j + k] = t[k]
+        st.touching = st.touching or t[2] > 0.0
+        eliminate(rg, rho, up, dup, d, &st.sens[6 * j], &st.tot[4 * j], &st.gain[2 * j])
+        add_ball_forces(rg, j, t, &st.tot[4 * j], st)
+        add_levels(rg, j, t, &st.tot[4 * j], &st.gain[2 * j], fabs(rho) + fabs(up), moved, st)
+    score(rg, moved, st)
+
+
+# -------------------------------------------------------------- the ring Newton of a bearing
+
+cdef inline double norm2(const Ring *rg, const Dyn *st) noexcept nogil:
+    """The 2-norm of the free residual over f_ref (inf: a ball unsolved)."""
+    cdef double sum = 0.0, res
+    cdef int k
+    if not isfinite(st.merit):
+        return INFINITY
+    for k in range(5):
+        res = 0.0 if rg.held[k] else rg.f[k] - st.gen[k]
+        sum += res * res
+    return sqrt(sum) / rg.f_ref
+
+
+cdef void lm_step(const double *jac, const double *res, double mu, double *step) noexcept nogil:
+    """The Newton step (mu = 0) or the Levenberg-Marquardt step (J^T J + mu diag) s = J^T r; a
+    singular tangent (no ball touching along a direction) gives the damped least-squares step;
+    non-finite parts 0. [mm]"""
+    cdef double a[25]
+    cdef double b[5]
+    cdef double top = 0.0, lift
+    cdef int i, k, l
+    if mu == 0.0:
+        solve5(jac, res, step)
+        for i in range(5):
+            if not isfinite(step[i]):
+                lm_step(jac, res, 1e-14, step)
+                return
+        return
+    for k in range(5):
+        b[k] = 0.0
+        for i in range(5):
+            b[k] += jac[5 * i + k] * res[i]
+        for l in range(5):
+            a[5 * k + l] = 0.0
+            for i in range(5):
+                a[5 * k + l] += jac[5 * i + k] * jac[5 * i + l]
+        top = max(top, a[6 * k])
+    for k in range(5):
+        a[6 * k] += mu * max(a[6 * k], 1e-12 * top)
+    solve5(a, b, step)
+    for i in range(5):
+        if not isfinite(step[i]):
+            step[i] = 0.0
+
+
+cdef void trial_step(const double *jac, const double *res, const int *held, double length,
+                     int k, int halvings, double *step) noexcept nogil:
+    """Trial k of the safeguarded Newton (of the ring, or of a pair's shaft): the Newton step
+    halved k times up to ``halvings``, then Levenberg-Marquardt steps with mu growing 100-fold
+    from 1e-6; held components not moved; no longer than a tenth of ``length`` (A). [mm]"""
+    cdef double lam = 1.0, mu = 0.0, longest = 0.0, shrink
+    cdef int i
+    if k < halvings:
+        lam = pow(0.5, k)
+    else:
+        mu = 1e-6 * pow(100.0, k - halvings)
+    lm_step(jac, res, mu, step)
+    for i in range(5):
+        step[i] = 0.0 if held[i] else lam * step[i]
+        longest = max(longest, fabs(step[i]))
+    shrink = min(1.0, 0.1 * length / max(longest, 1e-300))
+    for i in range(5):
+        step[i] = step[i] * shrink
+
+
+cdef void held_system(const Ring *rg, const Dyn *st, double *jac, double *res) noexcept nogil:
+    """The Newton system at st: the tangent with held rows and columns replaced by the
+    identity's, the free residual f - gen (0 where held)."""
+    cdef int k, l
+    for k in range(5):
+        res[k] = 0.0 if rg.held[k] else rg.f[k] - st.gen[k]
+        for l in range(5):
+            jac[5 * k + l] = 0.0 if (rg.held[k] or rg.held[l]) else st.jac[5 * k + l]
+        if rg.held[k]:
+            jac[6 * k] = 1.0
+
+
+cdef void swap_dyn(Dyn *a, Dyn *b) noexcept nogil:
+    cdef Dyn t = a[0]
+    a[0] = b[0]
+    b[0] = t
+
+
+cdef int ring_newton(const Ring *rg, double *v, Dyn *cur, Dyn *trial) noexcept nogil:
+    """Newton on the ring position v from the balls in ``cur`` (not warm: NaN balls start on
+    their lines), each iteration the first of its trials (``trial_step``) that lowers the
+    residual's 2-norm (or balances the ring) with some ball touching the inner ring; until
+    balanced to the tolerance or no trial is taken. The answer in ``cur``; the iterations."""
+    cdef double jac[25]
+    cdef double res[5]
+    cdef double step[5]
+    cdef double vt[5]
+    cdef double size
+    cdef int its = 0, it, k, i
+    cdef bint found
+    speed_state(rg, v, cur, False, cur)
+    if cur.merit <= rg.lim.tolerance:
+        return 0
+    for it in range(rg.lim.ring_iterations):
+        held_system(rg, cur, jac, res)
+        size = norm2(rg, cur)
+        found = False
+        for k in range(rg.lim.trials):
+            trial_step(jac, res, rg.held, rg.length, k, rg.lim.halvings, step)
+            for i in range(5):
+                vt[i] = v[i] + step[i]
+            speed_state(rg, vt, cur, True, trial)
+            if ((norm2(rg, trial) < (1.0 - 1e-4) * size or trial.merit <= rg.lim.tolerance)
+                    and trial.touching):
+                for i in range(5):
+                    v[i] = vt[i]
+                swap_dyn(cur, trial)
+                found = True
+                break
+        its += 1
+        if not found or cur.merit <= rg.lim.tolerance:
+            break
+    return its
+
+
+cdef bint continuation(const Ring *rg, const double *v_static, double *v, Dyn *cur, Dyn *trial,
+                       Dyn *keep, int *its) noexcept nogil:
+    """The case by continuation in omega^2 (the centrifugal and gyroscopic terms) from the static
+    answer: stages of a quarter, halved on a stage not balanced to ACCEPT, doubled after one
+    that is, each from the last stage's balls and its ring position extrapolated from the last
+    two. Whether it reached the full speed (the answer in v, cur)."""
+    cdef Ring stage = rg[0]
+    cdef double x[5]
+    cdef double x1[5]
+    cdef double rate[5]
+    cdef double done = 0.0, step = 0.25, frac
+    cdef int i, n
+    for i in range(5):
+        x[i] = v_static[i]
+        rate[i] = 0.0
+    for i in range(rg.z):
+        keep.do[i] = keep.ao[i] = NAN
+    for n in range(rg.lim.stages):
+        frac = min(1.0, done + step)
+        stage.sp.omega = rg.sp.omega * sqrt(frac)
+        for i in range(5):
+            x1[i] = x[i] + rate[i] * (frac - done)
+        for i in range(rg.z):
+            cur.do[i] = keep.do[i]
+            cur.ao[i] = keep.ao[i]
+        its[0] += ring_newton(&stage, x1, cur, trial)
+        if cur.score <= rg.lim.accept:
+            for i in range(5):
+                if done > 0.0:
+                    rate[i] = (x1[i] - x[i]) / (frac - done)
+                x[i] = x1[i]
+            done = frac
+            copy_dyn(rg.z, cur, keep)
+            if done == 1.0:
+                for i in range(5):
+                    v[i] = x[i]
+                return True
+            step = min(2.0 * step, 1.0 - done)
+        else:
+            step *= 0.5
+            if step < 1e-6:
+                return False
+    return False
+
+
+# ------------------------------------------------------- Python boundary of a bearing at speed
+
+cdef void ring_on(Ring *rg, int z, const double *consts, const double *ki, const double *ko,
+                  const double *node_x, const double *node_w, const double *c, const double *s,
+                  const double *geo, const double *f, const unsigned char *held,
+                  const double *lim) noexcept nogil:
+    """One case's Ring from the rows of the boundary's arrays (see ``solve_speed``)."""
+    cdef int k
+    speed_on(&rg.sp, consts, ki, ko, node_x, node_w)
+    rg.z = z
+    rg.c = c
+    rg.s = s
+    rg.base = geo[0]
+    rg.f_ref = geo[1]
+    rg.length = geo[2]
+    rg.one_sided = geo[3] != 0.0
+    for k in range(5):
+        rg.f[k] = f[k]
+        rg.held[k] = held[k]
+    rg.lim.tolerance = lim[0]
+    rg.lim.accept = lim[1]
+    rg.lim.rounding = lim[2]
+    rg.lim.noise_max = lim[3]
+    rg.lim.ball_tolerance = lim[4]
+    rg.lim.ball_round = lim[5]
+    rg.lim.ring_iterations = <int> lim[6]
+    rg.lim.trials = <int> lim[7]
+    rg.lim.halvings = <int> lim[8]
+    rg.lim.ball_iterations = <int> lim[9]
+    rg.lim.fallback_iterations = <int> lim[10]
+    rg.lim.ball_halvings = <int> lim[11]
+    rg.lim.stages = <int> lim[12]
+
+
+cdef void store_dyn(const Dyn *st, int z, Py_ssize_t n, Py_ssize_t k, double *balls,
+                    double *terms, double *sens, double *ring) noexcept nogil:
+    """Case k's state into the outputs: balls (3, n, z) delta_o, alpha_o, balanced; terms
+    (BALL_TERMS, n, z); sens (n, z, 6); ring (n, 49): gen (5), jac (25), floor (5), noise (5),
+    merit, score, level, balls_ok, touching, and 4 left to the caller."""
+    cdef Py_ssize_t j, i
+    for j in range(z):
+        balls[k * z + j] = st.do[j]
+        balls[(n + k) * z + j] = st.ao[j]
+        balls[(2 * n + k) * z + j] = st.ok[j]
+        for i in range(BALL_TERMS):
+            terms[(i * n + k) * z + j] = st.terms[BALL_TERMS * j + i]
+        for i in range(6):
+            sens[(k * z + j) * 6 + i] = st.sens[6 * j + i]
+    for i in range(5):
+        ring[49 * k + i] = st.gen[i]
+        ring[49 * k + 30 + i] = st.floor[i]
+        ring[49 * k + 35 + i] = st.noise[i]
+    for i in range(25):
+        ring[49 * k + 5 + i] = st.jac[i]
+    ring[49 * k + 40] = st.merit
+    ring[49 * k + 41] = st.score
+    ring[49 * k + 42] = st.level
+    ring[49 * k + 43] = st.balls_ok
+    ring[49 * k + 44] = st.touching
+
+
+cdef double *dyn_open(int z, Dyn *a, Dyn *b, Dyn *c) noexcept nogil:
+    """Three states of z balls in one block (to free); NULL if out of memory."""
+    cdef double *block = <double *> malloc(3 * DYN_PER_BALL * z * sizeof(double) + 8)
+    if block != NULL:
+        dyn_on(block, z, a)
+        dyn_on(block + DYN_PER_BALL * z, z, b)
+        dyn_on(block + 2 * DYN_PER_BALL * z, z, c)
+    return block
+
+
+def solve_speed(const double[:, ::1] consts, const double[:, ::1] ki, const double[:, ::1] ko,
+                const double[::1] node_x, const double[::1] node_w, const double[:, ::1] c,
+                const double[:, ::1] s, const double[:, ::1] geo, const double[:, ::1] f,
+                const unsigned char[:, ::1] held, const double[::1] limits,
+                const double[:, ::1] v0, const double[:, ::1] v_static,
+                const unsigned char[::1] continued):
+    """n bearings at speed (bearingload.models.high_speed): for each, the ring Newton from v0
+    (n, 5), its balls on their lines; where left unbalanced and ``continued``, the continuation
+    in speed from v_static. Per case: consts (6), ki, ko (NODES) as ``speed_balls``; c, s (z);
+    geo (4): A - G_r/2, the largest applied load, A, one-sided; f (5), held (5, uint8); limits
+    (13): TOLERANCE, ACCEPT, ROUNDING, NOISE_MAX, BALL_TOLERANCE, the ball rounding factor,
+    RING_ITERATIONS, LM_TRIALS, HALVINGS, BALL_ITERATIONS, FALLBACK_ITERATIONS, ball HALVINGS,
+    CONTINUATION_STAGES. Returns (v (n, 5), balls, terms, sens, ring as ``store_dyn`` with
+    ring[:, 45] the iterations, ring[:, 46] 1 where accepted (score <= ACCEPT), ring[:, 47] 1
+    where out of memory)."""
+    cdef Py_ssize_t n = c.shape[0], k
+    cdef int z = <int> c.shape[1], its, i
+    v_a = np.array(v0, dtype=float, copy=True)
+    balls_a = np.empty((3, n, z))
+    terms_a = np.empty((BALL_TERMS, n, z))
+    sens_a = np.empty((n, z, 6))
+    ring_a = np.zeros((n, 49))
+    cdef double[:, ::1] v = v_a, ring = ring_a
+    cdef double[:, :, ::1] balls = balls_a, terms = terms_a, sens = sens_a
+    cdef Ring rg
+    cdef Dyn cur, trial, keep
+    cdef double *block
     with nogil:
-        for i in range(m):
-            speed_on(&sp, &consts[row[i], 0], &ki[row[i], 0], &ko[row[i], 0], &node_x[0],
-                     &node_w[0])
-            static_eval(&sp, rho[i], u[i], f, jac)
-            out[0, i] = f[0]
-            out[1, i] = f[1]
-            for k in range(4):
-                out[2 + k, i] = jac[k]
+        for k in range(n):
+            ring_on(&rg, z, &consts[k, 0], &ki[k, 0], &ko[k, 0], &node_x[0], &node_w[0],
+                    &c[k, 0], &s[k, 0], &geo[k, 0], &f[k, 0], &held[k, 0], &limits[0])
+            block = dyn_open(z, &cur, &trial, &keep)
+            if block == NULL:
+                ring[k, 47] = 1.0
+                continue
+            for i in range(z):
+                cur.do[i] = cur.ao[i] = NAN
+            its = ring_newton(&rg, &v[k, 0], &cur, &trial)
+            if not cur.score <= rg.lim.accept and continued[k]:
+                continuation(&rg, &v_static[k, 0], &v[k, 0], &cur, &trial, &keep, &its)
+            store_dyn(&cur, z, n, k, &balls[0, 0, 0], &terms[0, 0, 0], &sens[0, 0, 0],
+                      &ring[0, 0])
+            ring[k, 45] = its
+            ring[k, 46] = 1.0 if cur.score <= rg.lim.accept else 0.0
+            free(block)
+    return v_a, balls_a, terms_a, sens_a, ring_a
+
+
+def speed_state_at(const double[:, ::1] consts, const double[:, ::1] ki, const double[:, ::1] ko,
+                   const double[::1] node_x, const double[::1] node_w, const double[:, ::1] c,
+                   const double[:, ::1] s, const double[:, ::1] geo, const double[:, ::1] f,
+                   const unsigned char[:, ::1] held, const double[::1] limits,
+                   const double[:, ::1] v, const double[:, ::1] do, const double[:, ::1] ao,
+                   const double[:, :, ::1] sens0, bint warm):
+    """n bearings at speed at the ring positions v (n, 5), their balls solved from (do, ao)
+    (n, z) (moved by their sensitivities sens0 (n, z, 6) where ``warm``); the arguments as
+    ``solve_speed``. Returns (balls, terms, sens, ring) as ``store_dyn`` (ring[:, 47] 1 where out
+    of memory)."""
+    cdef Py_ssize_t n = c.shape[0], k
+    cdef int z = <int> c.shape[1], i
+    balls_a = np.empty((3, n, z))
+    terms_a = np.empty((BALL_TERMS, n, z))
+    sens_a = np.empty((n, z, 6))
+    ring_a = np.zeros((n, 49))
+    cdef double[:, ::1] ring = ring_a
+    cdef double[:, :, ::1] balls = balls_a, terms = terms_a, sens = sens_a
+    cdef Ring rg
+    cdef Dyn cur, trial, keep
+    cdef double *block
+    with nogil:
+        for k in range(n):
+            ring_on(&rg, z, &consts[k, 0], &ki[k, 0], &ko[k, 0], &node_x[0], &node_w[0],
+                    &c[k, 0], &s[k, 0], &geo[k, 0], &f[k, 0], &held[k, 0], &limits[0])
+            block = dyn_open(z, &cur, &trial, &keep)
+            if block == NULL:
+                ring[k, 47] = 1.0
+                continue
+            for i in range(z):
+                cur.do[i] = do[k, i]
+                cur.ao[i] = ao[k, i]
+            if warm:
+                for i in range(6 * z):
+                    cur.sens[i] = sens0[k, i // 6, i % 6]
+            speed_state(&rg, &v[k, 0], &cur, warm, &cur)
+            store_dyn(&cur, z, n, k, &balls[0, 0, 0], &terms[0, 0, 0], &sens[0, 0, 0],
+                      &ring[0, 0])
+            free(block)
+    return balls_a, terms_a, sens_a, ring_a
+

@@ -26,8 +26,8 @@ of the pair touches an inner ring; a case left unbalanced is solved again by con
 omega^2 from the static answer. The components held by a symmetry of the case are those of the
 static pair. A case stops when every applied component is balanced to ``TOLERANCE`` of the
 largest of the applied loads and the preload; it is accepted at ``ACCEPT`` of it or within the
-rounding level of the ball forces on the shaft (each bearing's :func:`bearingload.models.
-high_speed._rounding`, carried through the maps) or, up to ``NOISE_MAX`` of that load, within
+rounding level of the ball forces on the shaft (each bearing's, from the core's
+``speed_state``, carried through the maps) or, up to ``NOISE_MAX`` of that load, within
 the change of the shaft forces over the balls' own residuals, as the single bearing accepts;
 otherwise
 :class:`~bearingload.errors.ConvergenceError` names its inputs. At speed 0 the answer is the
@@ -47,7 +47,6 @@ from bearingload.constants import STEEL_MODULUS
 from bearingload.errors import ConvergenceError, InputError
 from bearingload.models import combined as _comb
 from bearingload.models import high_speed as _hs
-from bearingload.models._ball_dynamics import _Set
 from bearingload.models.pair import PairDistribution, solve_pair
 
 __all__ = ["PairHighSpeedDistribution", "solve_pair_high_speed", "MODEL"]
@@ -189,9 +188,9 @@ def _evaluate(sh: _Shaft, v: np.ndarray, balls: tuple[Any, ...]) -> _State:
 
 def _rescore(sh: _Shaft, v: np.ndarray, st: _State, rows: np.ndarray) -> None:
     """Score the cases ``rows`` as the single bearing does: each shaft component against the
-    largest of ACCEPT of the load, its rounding level (each bearing's :func:`bearingload.models.
-    high_speed._rounding`: its terms' magnitudes and the ball forces' change over one rounding
-    of the groove-centre positions) and, up to NOISE_MAX of the load, the change of the forces
+    largest of ACCEPT of the load, its rounding level (each bearing's, from the core's ``speed_state``:
+    its terms' magnitudes and the ball forces' change over one rounding of the groove-centre
+    positions) and, up to NOISE_MAX of the load, the change of the forces
     over the balls' own residuals (``|dF/dX (dg/dX)^-1|`` times each ball's residual), each
     bearing's carried to the shaft through ``|L_k^T|``; also their rounding level."""
     if rows.size == 0:
@@ -200,22 +199,10 @@ def _rescore(sh: _Shaft, v: np.ndarray, st: _State, rows: np.ndarray) -> None:
     floor = np.zeros((rows.size, 5))
     noise = np.zeros((rows.size, 5))
     for k in range(2):
-        r, p = sub.rings[k], cur.parts[k]
-        local = _local(sub, k, v[rows])
-        rho = r.base[:, None] + local[:, 0, None] * r.c + local[:, 1, None] * r.s
-        u = local[:, 2, None] + local[:, 3, None] * r.c + local[:, 4, None] * r.s
-        fa, fr, d, terms, _, gain = _hs._ring_forces(r.b, rho, u, p.do, p.ao, r.one_sided)
-        zero, one = np.zeros_like(r.c), np.ones_like(r.c)
-        arm_r = np.stack([r.c, r.s, zero, zero, zero], axis=1)  # (n, 5, z)
-        arm_a = np.stack([zero, zero, one, r.c, r.s], axis=1)
-        up = np.maximum(u, 0.0)
-        mine = _hs._rounding(arm_r, arm_a, fr, fa, d, np.abs(rho) + up)
-        g = gain * np.hypot(terms[0], terms[1])
-        g = np.where(np.isfinite(g), g, 0.0)
-        own = (np.abs(arm_a) * g[0][:, None, :] + np.abs(arm_r) * g[1][:, None, :]).sum(-1)
+        p = cur.parts[k]
         back = np.abs(sub.maps[:, k].transpose(0, 2, 1))
-        floor += (back @ mine[:, :, None])[:, :, 0]
-        noise += (back @ np.where(np.isfinite(own), own, 0.0)[:, :, None])[:, :, 0]
+        floor += (back @ p.floor[:, :, None])[:, :, 0]
+        noise += (back @ p.noise[:, :, None])[:, :, 0]
     noise = np.minimum(noise, _hs.NOISE_MAX * sub.f_ref[:, None])
     res = np.where(sub.held, 0.0, sub.f - cur.gen)
     allowed = np.maximum(sub.f_ref[:, None], np.maximum(floor, noise) / ACCEPT)
@@ -421,7 +408,7 @@ def _setup(static: PairDistribution, c: dict, shape: tuple[int, ...]) -> tuple[A
     col = [(geo.f_i - 0.5) * geo.D_w, (geo.f_o - 0.5) * geo.D_w, geo.D_w, geo.d_m,
            c["speed"] * math.pi / 30.0, c["ball_density"] * math.pi / 6.0 * geo.D_w**3]  # fmt: skip
     ri, ro, dw, dm, omega, mass = (a[:, None] for a in col)
-    b = _Set(ri, ro, dw, dm, omega, mass, ki, ko)
+    b = _hs._Set(ri, ro, dw, dm, omega, mass, ki, ko)
     cos_, sin_, mirror = _comb._directions(z, c["cage_angle"])
     fr, fa, mm, mc, fp = (c[k] for k in ("radial_load", "axial_load", "moment", "moment_cross",
                                          "preload"))  # fmt: skip
