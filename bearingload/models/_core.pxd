@@ -110,3 +110,23 @@ ctypedef struct Dyn:
     double noise[5] # their change over the balls' own residuals [N]
     double merit, score, level
     int balls_ok, touching
+
+ctypedef struct Shaft:
+    # a pair of bearings at speed on one rigid shaft (bearingload.models.pair_speed): each
+    # bearing the Ring ``ring`` (its f and held unused) at the local position L_k v + offset_k
+    Ring ring
+    double maps[50]    # L_1, L_2 (5 x 5 each, row-major)
+    double offset[10]
+    double f[5]
+    double f_ref
+    int held[5]
+    int iterations, stages
+
+ctypedef struct ShaftState:
+    Dyn part[2]
+    double gen[5]
+    double jac[25]
+    double floor[5]
+    double noise[5]
+    double merit, score, level
+    int touching

@@ -32,7 +32,7 @@ from libc.stdlib cimport free, malloc
 from libc.string cimport memset
 
 from bearingload.models._core cimport (NODES, Balls, Case, Dual, Dyn, Limits, Loads, Point, Ring,
-                                      Speed, SpeedLimits)
+                                      Shaft, ShaftState, Speed, SpeedLimits)
 
 import numpy as np
 
@@ -2819,3 +2819,272 @@ def speed_state_at(const double[:, ::1] consts, const double[:, ::1] ki, const d
             free(block)
     return balls_a, terms_a, sens_a, ring_a
 
+
+# --------------------------------------------------------------------- a pair's shaft at speed
+#
+# The rigid shaft of bearingload.models.pair_speed: its position v (x, y, a, R_i theta, R_i
+# theta_c) gives bearing k the local position L_k v + offset_k, where it is the bearing of the
+# sections above (``speed_state``); the shaft's forces sum_k L_k^T f_k, its tangent sum_k L_k^T
+# J_k L_k, each bearing's rounding level and noise carried through |L_k^T|.
+
+cdef void shaft_state(const Shaft *sh, const double *v, ShaftState *prev, bint warm,
+                      ShaftState *st) noexcept nogil:
+    """Both bearings at the shaft position v (their balls from ``prev``'s, which may be st),
+    the shaft's forces, tangent and measures into st."""
+    cdef double local[5]
+    cdef double res, worst = 0.0, merit = 0.0, level = 0.0, noise
+    cdef const double *m
+    cdef Dyn *p
+    cdef int k, i, j, l, q
+    for i in range(5):
+        st.gen[i] = st.floor[i] = st.noise[i] = 0.0
+    for i in range(25):
+        st.jac[i] = 0.0
+    st.touching = False
+    for k in range(2):
+        m = &sh.maps[25 * k]
+        for i in range(5):
+            local[i] = sh.offset[5 * k + i]
+            for l in range(5):
+                local[i] += m[5 * i + l] * v[l]
+        p = &st.part[k]
+        speed_state(&sh.ring, local, &prev.part[k], warm, p)
+        st.touching = st.touching or p.touching
+        for i in range(5):
+            for j in range(5):
+                st.gen[i] += m[5 * j + i] * p.gen[j]
+                st.floor[i] += fabs(m[5 * j + i]) * p.floor[j]
+                st.noise[i] += fabs(m[5 * j + i]) * p.noise[j]
+                for l in range(5):
+                    for q in range(5):
+                        st.jac[5 * i + l] += m[5 * j + i] * p.jac[5 * j + q] * m[5 * q + l]
+    for i in range(5):
+        res = 0.0 if sh.held[i] else fabs(sh.f[i] - st.gen[i])
+        noise = min(st.noise[i], sh.ring.lim.noise_max * sh.f_ref)
+        merit = max(merit, res)
+        worst = max(worst, res / max(sh.f_ref, max(st.floor[i], noise) / sh.ring.lim.accept))
+        level = max(level, st.floor[i])
+    st.merit = merit / sh.f_ref
+    if not (st.part[0].balls_ok and st.part[1].balls_ok and isfinite(st.merit)):
+        st.merit = INFINITY
+    st.score = worst if isfinite(st.merit) and isfinite(worst) else INFINITY
+    st.level = level / sh.f_ref
+
+
+cdef inline double shaft_norm2(const Shaft *sh, const ShaftState *st) noexcept nogil:
+    cdef double sum = 0.0, res
+    cdef int k
+    if not isfinite(st.merit):
+        return INFINITY
+    for k in range(5):
+        res = 0.0 if sh.held[k] else sh.f[k] - st.gen[k]
+        sum += res * res
+    return sqrt(sum) / sh.f_ref
+
+
+cdef void swap_shaft(ShaftState *a, ShaftState *b) noexcept nogil:
+    cdef ShaftState t = a[0]
+    a[0] = b[0]
+    b[0] = t
+
+
+cdef void copy_shaft(int z, const ShaftState *src, ShaftState *dst) noexcept nogil:
+    cdef int i
+    copy_dyn(z, &src.part[0], &dst.part[0])
+    copy_dyn(z, &src.part[1], &dst.part[1])
+    for i in range(5):
+        dst.gen[i] = src.gen[i]
+        dst.floor[i] = src.floor[i]
+        dst.noise[i] = src.noise[i]
+    for i in range(25):
+        dst.jac[i] = src.jac[i]
+    dst.merit = src.merit
+    dst.score = src.score
+    dst.level = src.level
+    dst.touching = src.touching
+
+
+cdef int shaft_newton(const Shaft *sh, double *v, ShaftState *cur, ShaftState *trial,
+                      bint warm) noexcept nogil:
+    """Newton on the shaft from the balls in ``cur`` (moved by their sensitivities where
+    ``warm``), with the trials of ``trial_step`` (as ``ring_newton``); the answer in cur, the
+    iterations returned."""
+    cdef double jac[25]
+    cdef double res[5]
+    cdef double step[5]
+    cdef double vt[5]
+    cdef double size
+    cdef int its = 0, it, k, i, l
+    cdef bint found
+    shaft_state(sh, v, cur, warm, cur)
+    if cur.merit <= sh.ring.lim.tolerance:
+        return 0
+    for it in range(sh.iterations):
+        for k in range(5):
+            res[k] = 0.0 if sh.held[k] else sh.f[k] - cur.gen[k]
+            for l in range(5):
+                jac[5 * k + l] = 0.0 if (sh.held[k] or sh.held[l]) else cur.jac[5 * k + l]
+            if sh.held[k]:
+                jac[6 * k] = 1.0
+        size = shaft_norm2(sh, cur)
+        found = False
+        for k in range(sh.ring.lim.trials):
+            trial_step(jac, res, sh.held, sh.ring.length, k, sh.ring.lim.halvings, step)
+            for i in range(5):
+                vt[i] = v[i] + step[i]
+            shaft_state(sh, vt, cur, True, trial)
+            if ((shaft_norm2(sh, trial) < (1.0 - 1e-4) * size
+                    or trial.merit <= sh.ring.lim.tolerance) and trial.touching):
+                for i in range(5):
+                    v[i] = vt[i]
+                swap_shaft(cur, trial)
+                found = True
+                break
+        its += 1
+        if not found or cur.merit <= sh.ring.lim.tolerance:
+            break
+    return its
+
+
+cdef bint shaft_continuation(const Shaft *sh, const double *v_static, double *v,
+                             ShaftState *cur, ShaftState *trial, ShaftState *keep,
+                             int *its) noexcept nogil:
+    """The pair by continuation in omega^2 from the static answer (the stages of
+    ``continuation``; each stage's balls warm from the last one's). Whether it reached the full
+    speed (the answer in v, cur)."""
+    cdef Shaft stage = sh[0]
+    cdef double x[5]
+    cdef double x1[5]
+    cdef double rate[5]
+    cdef double done = 0.0, step = 0.25, frac
+    cdef int i, n
+    for i in range(5):
+        x[i] = v_static[i]
+        rate[i] = 0.0
+    for n in range(sh.stages):
+        frac = min(1.0, done + step)
+        stage.ring.sp.omega = sh.ring.sp.omega * sqrt(frac)
+        for i in range(5):
+            x1[i] = x[i] + rate[i] * (frac - done)
+        if done > 0.0:
+            copy_shaft(sh.ring.z, keep, cur)
+        else:
+            for i in range(sh.ring.z):
+                cur.part[0].do[i] = cur.part[0].ao[i] = NAN
+                cur.part[1].do[i] = cur.part[1].ao[i] = NAN
+        its[0] += shaft_newton(&stage, x1, cur, trial, done > 0.0)
+        if cur.score <= sh.ring.lim.accept:
+            for i in range(5):
+                if done > 0.0:
+                    rate[i] = (x1[i] - x[i]) / (frac - done)
+                x[i] = x1[i]
+            done = frac
+            copy_shaft(sh.ring.z, cur, keep)
+            if done == 1.0:
+                for i in range(5):
+                    v[i] = x[i]
+                return True
+            step = min(2.0 * step, 1.0 - done)
+        else:
+            step *= 0.5
+            if step < 1e-6:
+                return False
+    return False
+
+
+cdef double *shafts_open(int z, ShaftState *states) noexcept nogil:
+    """Four shaft states of z balls a bearing in one block (to free); NULL if out of memory."""
+    cdef double *block = <double *> malloc(8 * DYN_PER_BALL * z * sizeof(double) + 8)
+    cdef int i
+    if block != NULL:
+        for i in range(8):
+            dyn_on(block + i * DYN_PER_BALL * z, z, &states[i // 2].part[i % 2])
+    return block
+
+
+cdef void shaft_on(Shaft *sh, const double *maps, const double *offset, const double *f,
+                   const unsigned char *held, const double *pair_limits) noexcept nogil:
+    """The shaft of one case (its Ring set apart by ``ring_on``)."""
+    cdef int i
+    for i in range(50):
+        sh.maps[i] = maps[i]
+    for i in range(10):
+        sh.offset[i] = offset[i]
+    for i in range(5):
+        sh.f[i] = f[i]
+        sh.held[i] = held[i]
+    sh.f_ref = sh.ring.f_ref
+    sh.iterations = <int> pair_limits[0]
+    sh.stages = <int> pair_limits[1]
+
+
+def solve_pair_speed(const double[:, ::1] consts, const double[:, ::1] ki,
+                     const double[:, ::1] ko, const double[::1] node_x, const double[::1] node_w,
+                     const double[:, ::1] c, const double[:, ::1] s, const double[:, ::1] geo,
+                     const double[:, ::1] ring_f, const unsigned char[:, ::1] ring_held,
+                     const double[::1] limits, const double[:, :, :, ::1] maps,
+                     const double[:, :, ::1] offset, const double[:, ::1] f,
+                     const unsigned char[:, ::1] held, const double[::1] pair_limits,
+                     const double[:, ::1] v0):
+    """n pairs at speed (bearingload.models.pair_speed): the shaft Newton from v0 (n, 5), the
+    balls on their lines; where left unbalanced, the continuation in speed from v0. Each
+    bearing's arguments as ``solve_speed`` (geo's largest load the pair's), maps (n, 2, 5, 5),
+    offset (n, 2, 5), the shaft's f (n, 5) and held (n, 5, uint8); pair_limits (2): ITERATIONS,
+    CONTINUATION_STAGES. Returns (v, bearings: two (balls, terms, sens, ring) as ``store_dyn``,
+    shaft (n, 40): gen (5), jac (25), floor (5), merit, score, level, iterations, accepted)."""
+    cdef Py_ssize_t n = c.shape[0], k
+    cdef int z = <int> c.shape[1], its, i, b
+    v_a = np.array(v0, dtype=float, copy=True)
+    parts = [(np.empty((3, n, z)), np.empty((BALL_TERMS, n, z)), np.empty((n, z, 6)),
+              np.zeros((n, 49))) for b in range(2)]
+    shaft_a = np.zeros((n, 40))
+    cdef double[:, ::1] v = v_a, out = shaft_a
+    cdef double[:, :, ::1] balls0 = parts[0][0], terms0 = parts[0][1], sens0 = parts[0][2]
+    cdef double[:, :, ::1] balls1 = parts[1][0], terms1 = parts[1][1], sens1 = parts[1][2]
+    cdef double[:, ::1] ring0 = parts[0][3], ring1 = parts[1][3]
+    cdef Shaft sh
+    cdef ShaftState st[4]
+    cdef ShaftState *res
+    cdef double *block
+    cdef double saved[5]
+    with nogil:
+        for k in range(n):
+            ring_on(&sh.ring, z, &consts[k, 0], &ki[k, 0], &ko[k, 0], &node_x[0], &node_w[0],
+                    &c[k, 0], &s[k, 0], &geo[k, 0], &ring_f[k, 0], &ring_held[k, 0], &limits[0])
+            shaft_on(&sh, &maps[k, 0, 0, 0], &offset[k, 0, 0], &f[k, 0], &held[k, 0],
+                     &pair_limits[0])
+            block = shafts_open(z, st)
+            if block == NULL:
+                ring0[k, 47] = 1.0
+                continue
+            for i in range(z):
+                st[0].part[0].do[i] = st[0].part[0].ao[i] = NAN
+                st[0].part[1].do[i] = st[0].part[1].ao[i] = NAN
+            its = shaft_newton(&sh, &v[k, 0], &st[0], &st[1], False)
+            res = &st[0]
+            if not st[0].score <= sh.ring.lim.accept:
+                copy_shaft(z, &st[0], &st[3])
+                for i in range(5):
+                    saved[i] = v[k, i]  # the Newton's answer, kept
+                if shaft_continuation(&sh, &v0[k, 0], &v[k, 0], &st[0], &st[1], &st[2], &its):
+                    res = &st[0]
+                else:
+                    res = &st[3]
+                    for i in range(5):
+                        v[k, i] = saved[i]
+            store_dyn(&res.part[0], z, n, k, &balls0[0, 0, 0], &terms0[0, 0, 0],
+                      &sens0[0, 0, 0], &ring0[0, 0])
+            store_dyn(&res.part[1], z, n, k, &balls1[0, 0, 0], &terms1[0, 0, 0],
+                      &sens1[0, 0, 0], &ring1[0, 0])
+            for i in range(5):
+                out[k, i] = res.gen[i]
+                out[k, 30 + i] = res.floor[i]
+            for i in range(25):
+                out[k, 5 + i] = res.jac[i]
+            out[k, 35] = res.merit
+            out[k, 36] = res.score
+            out[k, 37] = res.level
+            out[k, 38] = its
+            out[k, 39] = 1.0 if res.score <= sh.ring.lim.accept else 0.0
+            free(block)
+    return v_a, parts, shaft_a

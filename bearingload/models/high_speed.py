@@ -575,48 +575,6 @@ def _newton(
     return v, _state(tuple(rest)), rest[3][:, 45].astype(int)
 
 
-def trial_step(
-    jac: np.ndarray, res: np.ndarray, held: np.ndarray, length: np.ndarray, k: int
-) -> np.ndarray:
-    """Trial ``k`` of the safeguarded Newton of a pair's shaft: the Newton step halved k times
-    up to HALVINGS, then Levenberg-Marquardt steps with mu growing; the components ``held`` by a
-    symmetry not moved (LAPACK's solve moved them by 1e-13); no longer than a tenth of
-    ``length`` (A). [mm]"""
-    lam, mu = (0.5**k, 0.0) if k < HALVINGS else (1.0, 1e-6 * 100.0 ** (k - HALVINGS))
-    step = np.where(held, 0.0, lam * _lm_step(jac, res, mu))
-    longest = np.abs(step).max(axis=1)
-    return step * np.minimum(1.0, 0.1 * length / np.maximum(longest, 1e-300))[:, None]
-
-
-def _lm_step(jac: np.ndarray, res: np.ndarray, mu: float) -> np.ndarray:
-    """The Newton step (mu = 0) or the Levenberg-Marquardt step of every case. [mm]"""
-    if mu == 0.0:
-        step = _ring_step(jac, res)
-    else:
-        jt = jac.transpose(0, 2, 1)
-        jtj = jt @ jac
-        diag = np.einsum("nii->ni", jtj)
-        diag = np.maximum(diag, 1e-12 * diag.max(axis=1, keepdims=True))
-        a = jtj + mu * diag[:, :, None] * np.eye(5)
-        step = _ring_step(a, (jt @ res[..., None])[..., 0])
-    return np.where(np.isfinite(step), step, 0.0)
-
-
-def _ring_step(jac: np.ndarray, res: np.ndarray) -> np.ndarray:
-    """The solution of jac step = res of every case; a singular tangent (no ball touching along
-    a direction) gives the least-squares step. [mm]"""
-    try:
-        return np.linalg.solve(jac, res[..., None])[..., 0]
-    except np.linalg.LinAlgError:  # case by case: no case's step depends on another's
-        out = np.empty_like(res)
-        for k in range(res.shape[0]):
-            try:
-                out[k] = np.linalg.solve(jac[k], res[k])
-            except np.linalg.LinAlgError:
-                out[k] = np.linalg.pinv(jac[k]) @ res[k]
-        return out
-
-
 _STATE_ARRAYS = (
     "do",
     "ao",

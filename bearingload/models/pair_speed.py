@@ -19,8 +19,9 @@ Model:
 * The pair's forces and tangent by virtual work: ``sum_k L_k^T f_k`` and ``sum_k L_k^T J_k L_k``
   (``J_k`` the bearing's tangent with its ball equations eliminated; not symmetric at speed).
 
-Numerics: Newton on the shaft's five unknowns from the static pair's answer (the balls solved by
-:func:`bearingload.models.high_speed._evaluate` at each bearing's local position), the step
+Numerics, in the compiled core (:mod:`bearingload.models._core`, ``solve_pair_speed``: a C loop
+over the cases): Newton on the shaft's five unknowns from the static pair's answer (the balls
+solved by the single bearing's ``speed_state`` at each bearing's local position), the step
 halved, then Levenberg-Marquardt steps, none longer than A/10 nor to a position where no ball
 of the pair touches an inner ring; a case left unbalanced is solved again by continuation in
 omega^2 from the static answer. The components held by a symmetry of the case are those of the
@@ -45,6 +46,7 @@ import numpy as np
 
 from bearingload.constants import STEEL_MODULUS
 from bearingload.errors import ConvergenceError, InputError
+from bearingload.models import _core
 from bearingload.models import combined as _comb
 from bearingload.models import high_speed as _hs
 from bearingload.models.pair import PairDistribution, solve_pair
@@ -57,7 +59,7 @@ MODEL = _hs.MODEL
 TOLERANCE = 1e-12
 #: Largest shaft residual accepted at the end (or the rounding level, when larger). [-]
 ACCEPT = 1e-9
-#: Shaft Newton steps (the trials of each: the single bearing's ring, high_speed.trial_step). [-]
+#: Shaft Newton steps (the trials of each: the single bearing's, the core's trial_step). [-]
 ITERATIONS = 200
 #: Stages of the continuation in omega^2. [-]
 CONTINUATION_STAGES = 200
@@ -111,20 +113,22 @@ class _Shaft:
     f_ref: np.ndarray  # (n,) [N]
     held: np.ndarray  # (n, 5) bool
 
-    def take(self, idx: np.ndarray) -> _Shaft:
-        if np.array_equal(idx, np.arange(self.f.shape[0])):
-            return self
-        rings = (self.rings[0].take(idx), self.rings[1].take(idx))
-        return _Shaft(rings, self.maps[idx], self.offset[idx], self.f[idx], self.f_ref[idx],
-                      self.held[idx])  # fmt: skip
-
-    def at_speed(self, fraction: float) -> _Shaft:
-        """The same shaft at omega times sqrt(fraction) (the speed terms times fraction)."""
-        rings = tuple(
-            dataclasses.replace(r, b=dataclasses.replace(r.b, omega=r.b.omega * fraction**0.5))
-            for r in self.rings
+    def core(self) -> tuple[Any, ...]:
+        """The arguments of the core's :func:`~bearingload.models._core.solve_pair_speed`
+        (both bearings alike: the first ring's, the pair's tolerances and limits)."""
+        ring = self.rings[0].core()
+        limits = ring[-1].copy()
+        limits[:2] = TOLERANCE, ACCEPT
+        cont = np.ascontiguousarray
+        return (
+            *ring[:-1],
+            limits,
+            cont(self.maps, dtype=float),
+            cont(self.offset, dtype=float),
+            cont(self.f, dtype=float),
+            cont(self.held, dtype=np.uint8),
+            np.array([ITERATIONS, CONTINUATION_STAGES], dtype=float),
         )
-        return dataclasses.replace(self, rings=(rings[0], rings[1]))
 
 
 @dataclass
@@ -136,161 +140,17 @@ class _State:
     jac: np.ndarray  # (n, 5, 5)
     merit: np.ndarray  # (n,) largest free residual over f_ref (inf: a ball unsolved)
     score: np.ndarray  # (n,) the residual over f_ref or, where larger, its rounding (or the
-    # balls' residuals on it) over ACCEPT (:func:`_rescore`; before it: the residual over f_ref)
-    level: np.ndarray  # (n,) the largest rounding level over f_ref (:func:`_rescore`)
+    # balls' residuals on it) over ACCEPT
+    level: np.ndarray  # (n,) the largest rounding level over f_ref
 
     @property
     def accepted(self) -> np.ndarray:
         return self.score <= ACCEPT
 
-    def take(self, idx: np.ndarray) -> _State:
-        return _State([_hs._take_state(p, idx) for p in self.parts], self.gen[idx],
-                      self.jac[idx], self.merit[idx], self.score[idx], self.level[idx])  # fmt: skip
-
-    def put(self, rows: np.ndarray, new: _State) -> None:
-        for mine, theirs in zip(self.parts, new.parts, strict=True):
-            _hs._put_state(mine, rows, theirs)
-        for name in ("gen", "jac", "merit", "score", "level"):
-            getattr(self, name)[rows] = getattr(new, name)
-
-    def balls(self) -> tuple[np.ndarray, ...]:
-        """(do, ao, sens) of both bearings, stacked on axis 1."""
-        return tuple(np.stack([getattr(p, k) for p in self.parts], 1) for k in ("do", "ao", "sens"))
-
 
 def _local(sh: _Shaft, k: int, v: np.ndarray) -> np.ndarray:
     """Bearing k's local position ``L_k v`` + its offset (n, 5). [mm]"""
     return (sh.maps[:, k] @ v[:, :, None])[:, :, 0] + sh.offset[:, k]
-
-
-def _evaluate(sh: _Shaft, v: np.ndarray, balls: tuple[Any, ...]) -> _State:
-    """Both bearings' balls at the shaft position v (from ``balls`` = (do, ao, sens) (n, 2, z)
-    each, sens None: fresh), the shaft's forces, tangent and residual."""
-    do, ao, sens = balls
-    parts = []
-    gen = np.zeros_like(v)
-    jac = np.zeros(v.shape + (5,))
-    for k in range(2):
-        m = sh.maps[:, k]
-        p = _hs._evaluate(sh.rings[k], _local(sh, k, v), do[:, k], ao[:, k],
-                          None if sens is None else sens[:, k])  # fmt: skip
-        parts.append(p)
-        mt = m.transpose(0, 2, 1)
-        gen += (mt @ p.gen[:, :, None])[:, :, 0]
-        jac += mt @ p.jac @ m
-    ok = parts[0].balls_ok & parts[1].balls_ok
-    res = np.where(sh.held, 0.0, sh.f - gen)
-    merit = np.where(ok, np.abs(res).max(axis=1) / sh.f_ref, np.inf)
-    merit = np.where(np.isfinite(merit), merit, np.inf)
-    # scored against ACCEPT alone here; the rounding level is weighed by _rescore
-    return _State(parts, gen, jac, merit, merit.copy(), np.zeros_like(merit))
-
-
-def _rescore(sh: _Shaft, v: np.ndarray, st: _State, rows: np.ndarray) -> None:
-    """Score the cases ``rows`` as the single bearing does: each shaft component against the
-    largest of ACCEPT of the load, its rounding level (each bearing's, from the core's ``speed_state``:
-    its terms' magnitudes and the ball forces' change over one rounding of the groove-centre
-    positions) and, up to NOISE_MAX of the load, the change of the forces
-    over the balls' own residuals (``|dF/dX (dg/dX)^-1|`` times each ball's residual), each
-    bearing's carried to the shaft through ``|L_k^T|``; also their rounding level."""
-    if rows.size == 0:
-        return
-    sub, cur = sh.take(rows), st.take(rows)
-    floor = np.zeros((rows.size, 5))
-    noise = np.zeros((rows.size, 5))
-    for k in range(2):
-        p = cur.parts[k]
-        back = np.abs(sub.maps[:, k].transpose(0, 2, 1))
-        floor += (back @ p.floor[:, :, None])[:, :, 0]
-        noise += (back @ p.noise[:, :, None])[:, :, 0]
-    noise = np.minimum(noise, _hs.NOISE_MAX * sub.f_ref[:, None])
-    res = np.where(sub.held, 0.0, sub.f - cur.gen)
-    allowed = np.maximum(sub.f_ref[:, None], np.maximum(floor, noise) / ACCEPT)
-    score = (np.abs(res) / allowed).max(axis=1)
-    st.score[rows] = np.where(np.isfinite(cur.merit), score, np.inf)
-    st.level[rows] = floor.max(axis=1) / sub.f_ref
-
-
-def _touching(st: _State) -> np.ndarray:
-    """(n,) whether some ball of the pair touches an inner ring (Q_i > 0)."""
-    return np.any(st.parts[0].terms[2] > 0, axis=1) | np.any(st.parts[1].terms[2] > 0, axis=1)
-
-
-def _norm2(sh: _Shaft, st: _State) -> np.ndarray:
-    res = np.where(sh.held, 0.0, sh.f - st.gen)
-    return np.where(np.isfinite(st.merit), np.sqrt((res * res).sum(axis=1)) / sh.f_ref, np.inf)
-
-
-def _newton(sh: _Shaft, v: np.ndarray, balls: tuple[Any, ...]) -> tuple[Any, ...]:
-    """Newton on the shaft with the Levenberg-Marquardt safeguard of
-    :func:`bearingload.models.high_speed._newton`, each case on its own: (v, state, steps)."""
-    v = v.copy()
-    its = np.zeros(v.shape[0], dtype=int)
-    st = _evaluate(sh, v, balls)
-    todo = np.flatnonzero(~(st.merit <= TOLERANCE))
-    length = sh.rings[0].length
-    for _ in range(ITERATIONS):
-        if todo.size == 0:
-            break
-        sub, cur = sh.take(todo), st.take(todo)
-        jac = np.where(sub.held[:, :, None] | sub.held[:, None, :], 0.0, cur.jac)
-        jac[:, np.arange(5), np.arange(5)] += sub.held
-        res = np.where(sub.held, 0.0, sub.f - cur.gen)
-        size = _norm2(sub, cur)
-        do, ao, sens = cur.balls()
-        pending = np.arange(todo.size)
-        for k in range(_hs.LM_TRIALS):
-            rows = todo[pending]
-            trial = v[rows] + _hs.trial_step(jac[pending], res[pending], sub.held[pending],
-                                             length[rows], k)  # fmt: skip
-            part = sub.take(pending)
-            got = _evaluate(part, trial, (do[pending], ao[pending], sens[pending]))
-            better = (_norm2(part, got) < (1.0 - 1e-4) * size[pending]) | (got.merit <= TOLERANCE)
-            better &= _touching(got)
-            rows = todo[pending[better]]
-            v[rows] = trial[better]
-            st.put(rows, got.take(np.flatnonzero(better)))
-            pending = pending[~better]
-            if pending.size == 0:
-                break
-        its[todo] += 1
-        stalled = np.zeros(todo.size, dtype=bool)
-        stalled[pending] = True  # no step lowered the residual: its rounding
-        todo = todo[~stalled & ~(st.merit[todo] <= TOLERANCE)]
-    return v, st, its
-
-
-def _continuation(sh: _Shaft, i: int, v: np.ndarray, st: _State, its: np.ndarray,
-                  v_static: np.ndarray) -> None:  # fmt: skip
-    """Case i again by continuation in omega^2 from the static answer (the stages of
-    :func:`bearingload.models.high_speed._continuation`: a quarter, halved on a stage not
-    accepted, doubled after one accepted; each from the last balls, the shaft extrapolated from
-    the last two stages). The answer, if any, replaces case i's in v, st, its."""
-    one = sh.take(np.array([i]))
-    z = one.rings[0].c.shape[1]
-    x = v_static[None, :].copy()
-    balls: tuple[Any, ...] = (np.full((1, 2, z), np.nan), np.full((1, 2, z), np.nan), None)
-    rate = np.zeros_like(x)
-    done, step = 0.0, 0.25
-    for _ in range(CONTINUATION_STAGES):
-        frac = min(1.0, done + step)
-        stage = one.at_speed(frac)
-        x1, st1, its1 = _newton(stage, x + rate * (frac - done), balls)
-        _rescore(stage, x1, st1, np.array([0]))
-        its[i] += its1[0]
-        if st1.accepted[0]:
-            if done > 0.0:
-                rate = (x1 - x) / (frac - done)
-            done, x, balls = frac, x1, st1.balls()
-            if done == 1.0:
-                v[i] = x1[0]
-                st.put(np.array([i]), st1)
-                return
-            step = min(2.0 * step, 1.0 - done)
-        else:
-            step *= 0.5
-            if step < 1e-6:
-                return
 
 
 def solve_pair_high_speed(
@@ -384,11 +244,11 @@ def _at_speed(static: PairDistribution, sh: _Shaft, shape: tuple[int, ...]) -> d
     if static.arrangement == "DT":
         return {}
     n, z = sh.f.shape[0], sh.rings[0].c.shape[1]
-    nan = np.full((n, 2, z), np.nan)
-    rest = _evaluate(sh, np.zeros((n, 5)), (nan, nan, None))
-    if not np.all(rest.parts[0].balls_ok & rest.parts[1].balls_ok):
+    nan, zero = np.full((n, z), np.nan), np.zeros((n, 5))
+    rest = [_hs._evaluate(sh.rings[k], _local(sh, k, zero), nan, nan) for k in range(2)]
+    if not np.all(rest[0].balls_ok & rest[1].balls_ok):
         raise ConvergenceError("preload of the pair at speed", 0, math.nan, {})
-    thrust = np.asarray(rest.parts[0].gen[:, 2], dtype=float).reshape(shape)
+    thrust = np.asarray(rest[0].gen[:, 2], dtype=float).reshape(shape)
     return {"preload_at_speed": numerics.scalar_out(thrust)}
 
 
@@ -446,13 +306,18 @@ STATIC_WAY = "the static model of the pair (solve_pair) leaves the ball forces o
 
 
 def _solve(sh: _Shaft, v_static: np.ndarray, flat: dict) -> tuple[Any, ...]:
-    """Newton from the static answer; continuation for the cases left; the checks."""
-    n, z = v_static.shape[0], sh.rings[0].c.shape[1]
-    nan = np.full((n, 2, z), np.nan)
-    v, st, its = _newton(sh, v_static, (nan, nan, None))
-    _rescore(sh, v, st, np.arange(n))
-    for left in np.flatnonzero(~st.accepted):
-        _continuation(sh, int(left), v, st, its, v_static[left])
+    """The core's solve (``solve_pair_speed``: Newton from the static answer, continuation for
+    the cases left); the checks."""
+    v, parts, out = _core.solve_pair_speed(*sh.core(), np.ascontiguousarray(v_static, dtype=float))
+    st = _State(
+        [_hs._state(tuple(p)) for p in parts],
+        out[:, :5].copy(),
+        out[:, 5:30].reshape(-1, 5, 5),
+        out[:, 35].copy(),
+        out[:, 36].copy(),
+        out[:, 37].copy(),
+    )
+    its = out[:, 38].astype(int)
     level = np.where(np.isfinite(st.level), st.level, 0.0)
     small = np.flatnonzero(level > _hs.LEVEL_MAX)
     if small.size:
