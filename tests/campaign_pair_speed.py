@@ -36,7 +36,7 @@ def random_case(rng: np.random.Generator) -> dict[str, Any]:
     case["kw"]["speed"] = float(top * (rng.uniform(0.8, 1.0) if rng.random() < 1 / 3
                                        else rng.uniform(0.0, 1.0)))  # fmt: skip
     if rng.random() < 0.2:
-        case["kw"]["ball_density"] = 3.2e-6
+        case["kw"]["ball_density"] = 3200.0
     return case
 
 

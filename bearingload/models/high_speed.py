@@ -3,7 +3,7 @@ control (Jones 1960; Harris & Kotzalas, *Rolling Bearing Analysis*, 5th ed., vol
 Concepts of Bearing Technology", ch. 2 "Bearing component motions and speeds" and ch. 3 "High-speed
 operation: ball and roller dynamics").
 
-Units: N, mm, kg, s (the shaft speed in rpm at the input, rad/s inside); ball density in kg/mm^3
+Units: N, mm, kg, s (the shaft speed in rpm at the input, rad/s inside); ball density in kg/m^3
 (bearing steel 7.85e-6; silicon nitride 3.2e-6).
 
 Model (one ball ``j`` at ``phi_j``; the geometry, loads and conventions of
@@ -95,8 +95,10 @@ from bearingload.models.combined import CombinedDistribution
 __all__ = ["HighSpeedDistribution", "solve_high_speed", "STEEL_DENSITY", "MAX_SPEED_PITCH",
            "MODEL"]  # fmt: skip
 
-#: Bearing steel (100Cr6) density. [kg/mm^3]
-STEEL_DENSITY = 7.85e-6
+#: Bearing steel (100Cr6) density. [kg/m^3]
+STEEL_DENSITY = 7850.0
+#: mm^3 per m^3: a density in kg/m^3 over this is in kg/mm^3. [-]
+_MM3 = 1e9
 #: Largest n d_m accepted (n the shaft speed [rpm], d_m [mm]). [mm/min]
 MAX_SPEED_PITCH = 2.0e6
 #: The words of the refusal of a speed beyond :data:`MAX_SPEED_PITCH` (the command line adds
@@ -159,7 +161,7 @@ class HighSpeedDistribution(CombinedDistribution):
     speed : ndarray
         Shaft (inner ring) speed n. [rpm]
     ball_density : ndarray
-        [kg/mm^3]
+        [kg/m^3]
     contact_angles_inner, contact_angles_outer : ndarray (..., z)
         alpha_i, alpha_o. [°]
     ball_loads_inner, ball_loads_outer : ndarray (..., z)
@@ -271,10 +273,11 @@ def _check_speed(speed: Any, density: Any, dm: Any) -> tuple[np.ndarray, np.ndar
     n = validate.finite("speed", speed)
     if np.any(n < 0):
         raise InputError("speed", "must be >= 0 rpm (the inner ring's speed)")
-    rho = validate.positive("ball_density", density, "kg/mm^3")
-    if np.any(rho > 1e-4):
+    rho = validate.positive("ball_density", density, "kg/m^3")
+    if np.any((rho < 1.0) | (rho > 1e5)):
         raise InputError(
-            "ball_density", "must be in kg/mm^3 (steel 7.85e-6, silicon nitride 3.2e-6), below 1e-4"
+            "ball_density",
+            "must be in kg/m^3 (steel 7850, silicon nitride 3200), between 1 and 1e5",
         )
     n_b, dm_b = np.broadcast_arrays(n, np.asarray(dm, dtype=float))
     with np.errstate(over="ignore"):
@@ -331,7 +334,7 @@ def solve_high_speed(
     speed : array_like
         Shaft speed n of the inner ring, >= 0, n d_m <= :data:`MAX_SPEED_PITCH`. [rpm]
     ball_density : array_like, default :data:`STEEL_DENSITY`
-        Density of the balls. [kg/mm^3]
+        Density of the balls. [kg/m^3]
 
     Raises
     ------
@@ -420,7 +423,7 @@ def _dynamic_start(
     ki, ko = _stiffness_nodes(geo, *material[:2])
     cos0 = np.cos(geo.alpha0)
     omega = flat["speed"] * math.pi / 30.0
-    mass = material[2] * math.pi / 6.0 * geo.D_w**3
+    mass = material[2] / _MM3 * math.pi / 6.0 * geo.D_w**3
     wc = 0.5 * omega * (1.0 - geo.D_w / geo.d_m * cos0)
     fc = 0.5 * mass * geo.d_m * wc * wc * _KG_MM
     delta_c = (fc / _stiffness(ko, cos0[:, None])[:, 0]) ** (2.0 / 3.0)
@@ -629,7 +632,7 @@ def _solve(
     v_static = np.where(zero, 0.0, v_static)
     ki, ko = _stiffness_nodes(geo, e, nu)
     col = [(geo.f_i - 0.5) * geo.D_w, (geo.f_o - 0.5) * geo.D_w, geo.D_w, geo.d_m,
-           flat["speed"] * math.pi / 30.0, dens * math.pi / 6.0 * geo.D_w**3]  # fmt: skip
+           flat["speed"] * math.pi / 30.0, dens / _MM3 * math.pi / 6.0 * geo.D_w**3]  # fmt: skip
     ri, ro, dwc, dmc, omega, mass = (a[:, None] for a in col)
     b = _Set(ri, ro, dwc, dmc, omega, mass, ki, ko)
     ring = _Ring(b, c, s, geo.A - geo.g, f, f_ref, held, one_sided, geo.A)

@@ -4,7 +4,7 @@
 *Rolling Bearing Analysis*, 5th ed., vol. 2 "Advanced Concepts of Bearing Technology", ch. 2-3),
 as :mod:`bearingload.models.high_speed` gives them for one bearing.
 
-Units: N, mm, kg, s (the shaft speed in rpm at the input, rad/s inside); ball density in kg/mm^3.
+Units: N, mm, kg, s (the shaft speed in rpm at the input, rad/s inside); ball density in kg/m^3.
 
 Model:
 
@@ -81,7 +81,7 @@ class PairHighSpeedDistribution(PairDistribution):
     speed : ndarray
         Shaft (inner rings) speed n. [rpm]
     ball_density : ndarray
-        [kg/mm^3]
+        [kg/m^3]
     model : str
         :data:`MODEL`.
     preload_at_speed : ndarray or None
@@ -183,8 +183,8 @@ def solve_pair_high_speed(
 
     speed : array_like
         Shaft (inner rings) speed n, >= 0, n d_m <= 2e6 mm/min. [rpm]
-    ball_density : array_like, default steel 7.85e-6
-        Density of the balls. [kg/mm^3]
+    ball_density : array_like, default steel 7850
+        Density of the balls. [kg/m^3]
 
     Raises
     ------
@@ -266,7 +266,7 @@ def _setup(static: PairDistribution, c: dict, shape: tuple[int, ...]) -> tuple[A
     n = radius.size
     ki, ko = _hs._stiffness_nodes(geo, c["modulus"], c["poisson"])
     col = [(geo.f_i - 0.5) * geo.D_w, (geo.f_o - 0.5) * geo.D_w, geo.D_w, geo.d_m,
-           c["speed"] * math.pi / 30.0, c["ball_density"] * math.pi / 6.0 * geo.D_w**3]  # fmt: skip
+           c["speed"] * math.pi / 30.0, c["ball_density"] / 1e9 * math.pi / 6.0 * geo.D_w**3]  # fmt: skip
     ri, ro, dw, dm, omega, mass = (a[:, None] for a in col)
     b = _hs._Set(ri, ro, dw, dm, omega, mass, ki, ko)
     cos_, sin_, mirror = _comb._directions(z, c["cage_angle"])
