@@ -78,20 +78,16 @@ ctypedef struct Dual:
 ctypedef struct SpeedLimits:
     # the tolerances and limits of bearingload.models.high_speed (its module constants)
     double tolerance, accept, rounding, noise_max, ball_tolerance, ball_round
-    int ring_iterations, trials, halvings, ball_iterations, fallback_iterations, ball_halvings
-    int stages
+    int trials, halvings, ball_iterations, fallback_iterations, ball_halvings
 
 ctypedef struct Ring:
     # one bearing at speed in its own frame (physical units; tilts as R_i theta [mm]): ball j at
-    # (c[j], s[j]) = (cos, sin) of its angle; base = A - G_r/2; the applied generalised forces
-    # f, the largest applied load f_ref, the components held, A (length)
+    # (c[j], s[j]) = (cos, sin) of its angle; base = A - G_r/2; A (length)
     Speed sp
     int z
     const double *c
     const double *s
-    double base, f_ref, length
-    double f[5]
-    int held[5]
+    double base, length
     int one_sided
     SpeedLimits lim
 
@@ -108,19 +104,19 @@ ctypedef struct Dyn:
     double jac[25]  # their tangent (row-major) [N/mm]
     double floor[5] # rounding level of each [N]
     double noise[5] # their change over the balls' own residuals [N]
-    double merit, score, level
     int balls_ok, touching
 
 ctypedef struct Shaft:
-    # a pair of bearings at speed on one rigid shaft (bearingload.models.pair_speed): each
-    # bearing the Ring ``ring`` (its f and held unused) at the local position L_k v + offset_k
+    # one bearing (parts 1: L = I, offset 0) or a pair on one rigid shaft (parts 2,
+    # bearingload.models.pair_speed): bearing k the Ring ``ring`` at L_k v + offset_k
     Ring ring
+    int parts
     double maps[50]    # L_1, L_2 (5 x 5 each, row-major)
     double offset[10]
-    double f[5]
-    double f_ref
-    int held[5]
-    int iterations, stages
+    double f[5]        # applied generalised forces [N]
+    double f_ref       # the largest applied load (and preload) [N]
+    int held[5]        # components held by a symmetry or an imposed tilt
+    int iterations, stages, warm_stages
 
 ctypedef struct ShaftState:
     Dyn part[2]

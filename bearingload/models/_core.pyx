@@ -2285,9 +2285,9 @@ cdef bint solve_ball(const Speed *sp, double rho, double u, double *x,
 # ------------------------------------------------------------ the ring of one bearing at speed
 #
 # The inner ring's forces and tangent at a ring position v = (x, y, a, R_i theta, R_i theta_c)
-# with every ball solved (``evaluate``), each ball's equations eliminated from the tangent by the
-# implicit function theorem; its rounding level and the change over the balls' own residuals
-# (bearingload.models.high_speed: the acceptance rules).
+# with every ball solved (``speed_state``), each ball's equations eliminated from the tangent by
+# the implicit function theorem; the rounding level of each force and its change over the
+# balls' own residuals (bearingload.models.high_speed: the acceptance rules).
 
 cdef enum:
     DYN_PER_BALL = 29  # doubles a ball in a Dyn
@@ -2313,9 +2313,6 @@ cdef void copy_dyn(int z, const Dyn *src, Dyn *dst) noexcept nogil:
         dst.noise[i] = src.noise[i]
     for i in range(25):
         dst.jac[i] = src.jac[i]
-    dst.merit = src.merit
-    dst.score = src.score
-    dst.level = src.level
     dst.balls_ok = src.balls_ok
     dst.touching = src.touching
 
@@ -2429,37 +2426,12 @@ cdef void add_levels(const Ring *rg, int j, const double *t, const double *tot,
             st.noise[k] += own
 
 
-cdef void score(const Ring *rg, const double *moved, Dyn *st) noexcept nogil:
-    """The residual measures of a state whose forces, tangent and level sums are in: ``merit``
-    (the largest free residual over f_ref), ``score`` (each free residual against the largest
-    of ACCEPT f_ref, its rounding level and, up to NOISE_MAX f_ref, the change over the balls'
-    own residuals, over ACCEPT), ``level`` (the largest rounding level over f_ref); inf where
-    a ball is unsolved or a measure not finite."""
-    cdef double res, merit = 0.0, worst = 0.0, level = 0.0, noise
-    cdef int k
-    for k in range(5):
-        st.floor[k] = rg.lim.rounding * st.floor[k] + moved[k]
-        if not isfinite(st.floor[k]):
-            st.floor[k] = 0.0
-        res = 0.0 if rg.held[k] else fabs(rg.f[k] - st.gen[k])
-        noise = min(st.noise[k], rg.lim.noise_max * rg.f_ref)
-        merit = max(merit, res)
-        worst = max(worst, res / max(rg.f_ref, max(st.floor[k], noise) / rg.lim.accept))
-        level = max(level, st.floor[k])
-    st.merit = merit / rg.f_ref
-    st.score = worst
-    st.level = level / rg.f_ref
-    if not (st.balls_ok and isfinite(st.merit)):
-        st.merit = INFINITY
-    if not (st.balls_ok and isfinite(st.score)):
-        st.score = INFINITY
-
-
 cdef void speed_state(const Ring *rg, const double *v, const Dyn *prev, bint warm,
-                   Dyn *st) noexcept nogil:
+                      Dyn *st) noexcept nogil:
     """Every ball solved at the ring position v (from ``prev``'s balls, moved by their
-    sensitivities where ``warm``; NaN balls start on their lines), the ring's forces, tangent
-    and measures into ``st`` (which may be ``prev``)."""
+    sensitivities where ``warm``; NaN balls start on their lines), the ring's forces, tangent,
+    rounding level (ROUNDING times the terms' magnitudes plus ``moved``) and noise into ``st``
+    (which may be ``prev``)."""
     cdef double t[BALL_TERMS]
     cdef double d[BALL_PARTIALS]
     cdef double moved[5]
@@ -2490,22 +2462,19 @@ cdef void speed_state(const Ring *rg, const double *v, const Dyn *prev, bint war
         eliminate(rg, rho, up, dup, d, &st.sens[6 * j], &st.tot[4 * j], &st.gain[2 * j])
         add_ball_forces(rg, j, t, &st.tot[4 * j], st)
         add_levels(rg, j, t, &st.tot[4 * j], &st.gain[2 * j], fabs(rho) + fabs(up), moved, st)
-    score(rg, moved, st)
-
-
-# -------------------------------------------------------------- the ring Newton of a bearing
-
-cdef inline double norm2(const Ring *rg, const Dyn *st) noexcept nogil:
-    """The 2-norm of the free residual over f_ref (inf: a ball unsolved)."""
-    cdef double sum = 0.0, res
-    cdef int k
-    if not isfinite(st.merit):
-        return INFINITY
     for k in range(5):
-        res = 0.0 if rg.held[k] else rg.f[k] - st.gen[k]
-        sum += res * res
-    return sqrt(sum) / rg.f_ref
+        st.floor[k] = rg.lim.rounding * st.floor[k] + moved[k]
+        if not isfinite(st.floor[k]):
+            st.floor[k] = 0.0
 
+
+# ------------------------------------------------------------------- the shaft's damped Newton
+#
+# One bearing, or the rigid shaft of a pair (bearingload.models.pair_speed): the position v
+# (x, y, a, R_i theta, R_i theta_c) gives bearing k the local position L_k v + offset_k (one
+# bearing: L = I, offset 0), where ``speed_state`` solves its balls; the forces sum_k L_k^T f_k,
+# the tangent sum_k L_k^T J_k L_k, each bearing's rounding level and noise carried through
+# |L_k^T|. One damped Newton (``shaft_newton``) and one continuation in speed for both.
 
 cdef void lm_step(const double *jac, const double *res, double mu, double *step) noexcept nogil:
     """The Newton step (mu = 0) or the Levenberg-Marquardt step (J^T J + mu diag) s = J^T r; a
@@ -2559,280 +2528,34 @@ cdef void trial_step(const double *jac, const double *res, const int *held, doub
         step[i] = step[i] * shrink
 
 
-cdef void held_system(const Ring *rg, const Dyn *st, double *jac, double *res) noexcept nogil:
-    """The Newton system at st: the tangent with held rows and columns replaced by the
-    identity's, the free residual f - gen (0 where held)."""
-    cdef int k, l
-    for k in range(5):
-        res[k] = 0.0 if rg.held[k] else rg.f[k] - st.gen[k]
-        for l in range(5):
-            jac[5 * k + l] = 0.0 if (rg.held[k] or rg.held[l]) else st.jac[5 * k + l]
-        if rg.held[k]:
-            jac[6 * k] = 1.0
-
-
-cdef void swap_dyn(Dyn *a, Dyn *b) noexcept nogil:
-    cdef Dyn t = a[0]
-    a[0] = b[0]
-    b[0] = t
-
-
-cdef int ring_newton(const Ring *rg, double *v, Dyn *cur, Dyn *trial) noexcept nogil:
-    """Newton on the ring position v from the balls in ``cur`` (not warm: NaN balls start on
-    their lines), each iteration the first of its trials (``trial_step``) that lowers the
-    residual's 2-norm (or balances the ring) with some ball touching the inner ring; until
-    balanced to the tolerance or no trial is taken. The answer in ``cur``; the iterations."""
-    cdef double jac[25]
-    cdef double res[5]
-    cdef double step[5]
-    cdef double vt[5]
-    cdef double size
-    cdef int its = 0, it, k, i
-    cdef bint found
-    speed_state(rg, v, cur, False, cur)
-    if cur.merit <= rg.lim.tolerance:
-        return 0
-    for it in range(rg.lim.ring_iterations):
-        held_system(rg, cur, jac, res)
-        size = norm2(rg, cur)
-        found = False
-        for k in range(rg.lim.trials):
-            trial_step(jac, res, rg.held, rg.length, k, rg.lim.halvings, step)
-            for i in range(5):
-                vt[i] = v[i] + step[i]
-            speed_state(rg, vt, cur, True, trial)
-            if ((norm2(rg, trial) < (1.0 - 1e-4) * size or trial.merit <= rg.lim.tolerance)
-                    and trial.touching):
-                for i in range(5):
-                    v[i] = vt[i]
-                swap_dyn(cur, trial)
-                found = True
-                break
-        its += 1
-        if not found or cur.merit <= rg.lim.tolerance:
-            break
-    return its
-
-
-cdef bint continuation(const Ring *rg, const double *v_static, double *v, Dyn *cur, Dyn *trial,
-                       Dyn *keep, int *its) noexcept nogil:
-    """The case by continuation in omega^2 (the centrifugal and gyroscopic terms) from the static
-    answer: stages of a quarter, halved on a stage not balanced to ACCEPT, doubled after one
-    that is, each from the last stage's balls and its ring position extrapolated from the last
-    two. Whether it reached the full speed (the answer in v, cur)."""
-    cdef Ring stage = rg[0]
-    cdef double x[5]
-    cdef double x1[5]
-    cdef double rate[5]
-    cdef double done = 0.0, step = 0.25, frac
-    cdef int i, n
+cdef void shaft_measures(const Shaft *sh, ShaftState *st) noexcept nogil:
+    """``merit`` (the largest free residual over f_ref), ``score`` (each free residual against
+    the largest of ACCEPT f_ref, its rounding level and, up to NOISE_MAX f_ref, its change over
+    the balls' own residuals, over ACCEPT) and ``level`` (the largest rounding level over
+    f_ref); inf where a ball is unsolved or a measure not finite."""
+    cdef double res, worst = 0.0, merit = 0.0, level = 0.0, noise
+    cdef bint ok = True
+    cdef int i
+    for i in range(sh.parts):
+        ok = ok and st.part[i].balls_ok
     for i in range(5):
-        x[i] = v_static[i]
-        rate[i] = 0.0
-    for i in range(rg.z):
-        keep.do[i] = keep.ao[i] = NAN
-    for n in range(rg.lim.stages):
-        frac = min(1.0, done + step)
-        stage.sp.omega = rg.sp.omega * sqrt(frac)
-        for i in range(5):
-            x1[i] = x[i] + rate[i] * (frac - done)
-        for i in range(rg.z):
-            cur.do[i] = keep.do[i]
-            cur.ao[i] = keep.ao[i]
-        its[0] += ring_newton(&stage, x1, cur, trial)
-        if cur.score <= rg.lim.accept:
-            for i in range(5):
-                if done > 0.0:
-                    rate[i] = (x1[i] - x[i]) / (frac - done)
-                x[i] = x1[i]
-            done = frac
-            copy_dyn(rg.z, cur, keep)
-            if done == 1.0:
-                for i in range(5):
-                    v[i] = x[i]
-                return True
-            step = min(2.0 * step, 1.0 - done)
-        else:
-            step *= 0.5
-            if step < 1e-6:
-                return False
-    return False
+        res = 0.0 if sh.held[i] else fabs(sh.f[i] - st.gen[i])
+        noise = min(st.noise[i], sh.ring.lim.noise_max * sh.f_ref)
+        merit = max(merit, res)
+        worst = max(worst, res / max(sh.f_ref, max(st.floor[i], noise) / sh.ring.lim.accept))
+        level = max(level, st.floor[i])
+    st.merit = merit / sh.f_ref
+    if not (ok and isfinite(st.merit)):
+        st.merit = INFINITY
+    st.score = worst if isfinite(st.merit) and isfinite(worst) else INFINITY
+    st.level = level / sh.f_ref
 
-
-# ------------------------------------------------------- Python boundary of a bearing at speed
-
-cdef void ring_on(Ring *rg, int z, const double *consts, const double *ki, const double *ko,
-                  const double *node_x, const double *node_w, const double *c, const double *s,
-                  const double *geo, const double *f, const unsigned char *held,
-                  const double *lim) noexcept nogil:
-    """One case's Ring from the rows of the boundary's arrays (see ``solve_speed``)."""
-    cdef int k
-    speed_on(&rg.sp, consts, ki, ko, node_x, node_w)
-    rg.z = z
-    rg.c = c
-    rg.s = s
-    rg.base = geo[0]
-    rg.f_ref = geo[1]
-    rg.length = geo[2]
-    rg.one_sided = geo[3] != 0.0
-    for k in range(5):
-        rg.f[k] = f[k]
-        rg.held[k] = held[k]
-    rg.lim.tolerance = lim[0]
-    rg.lim.accept = lim[1]
-    rg.lim.rounding = lim[2]
-    rg.lim.noise_max = lim[3]
-    rg.lim.ball_tolerance = lim[4]
-    rg.lim.ball_round = lim[5]
-    rg.lim.ring_iterations = <int> lim[6]
-    rg.lim.trials = <int> lim[7]
-    rg.lim.halvings = <int> lim[8]
-    rg.lim.ball_iterations = <int> lim[9]
-    rg.lim.fallback_iterations = <int> lim[10]
-    rg.lim.ball_halvings = <int> lim[11]
-    rg.lim.stages = <int> lim[12]
-
-
-cdef void store_dyn(const Dyn *st, int z, Py_ssize_t n, Py_ssize_t k, double *balls,
-                    double *terms, double *sens, double *ring) noexcept nogil:
-    """Case k's state into the outputs: balls (3, n, z) delta_o, alpha_o, balanced; terms
-    (BALL_TERMS, n, z); sens (n, z, 6); ring (n, 49): gen (5), jac (25), floor (5), noise (5),
-    merit, score, level, balls_ok, touching, and 4 left to the caller."""
-    cdef Py_ssize_t j, i
-    for j in range(z):
-        balls[k * z + j] = st.do[j]
-        balls[(n + k) * z + j] = st.ao[j]
-        balls[(2 * n + k) * z + j] = st.ok[j]
-        for i in range(BALL_TERMS):
-            terms[(i * n + k) * z + j] = st.terms[BALL_TERMS * j + i]
-        for i in range(6):
-            sens[(k * z + j) * 6 + i] = st.sens[6 * j + i]
-    for i in range(5):
-        ring[49 * k + i] = st.gen[i]
-        ring[49 * k + 30 + i] = st.floor[i]
-        ring[49 * k + 35 + i] = st.noise[i]
-    for i in range(25):
-        ring[49 * k + 5 + i] = st.jac[i]
-    ring[49 * k + 40] = st.merit
-    ring[49 * k + 41] = st.score
-    ring[49 * k + 42] = st.level
-    ring[49 * k + 43] = st.balls_ok
-    ring[49 * k + 44] = st.touching
-
-
-cdef double *dyn_open(int z, Dyn *a, Dyn *b, Dyn *c) noexcept nogil:
-    """Three states of z balls in one block (to free); NULL if out of memory."""
-    cdef double *block = <double *> malloc(3 * DYN_PER_BALL * z * sizeof(double) + 8)
-    if block != NULL:
-        dyn_on(block, z, a)
-        dyn_on(block + DYN_PER_BALL * z, z, b)
-        dyn_on(block + 2 * DYN_PER_BALL * z, z, c)
-    return block
-
-
-def solve_speed(const double[:, ::1] consts, const double[:, ::1] ki, const double[:, ::1] ko,
-                const double[::1] node_x, const double[::1] node_w, const double[:, ::1] c,
-                const double[:, ::1] s, const double[:, ::1] geo, const double[:, ::1] f,
-                const unsigned char[:, ::1] held, const double[::1] limits,
-                const double[:, ::1] v0, const double[:, ::1] v_static,
-                const unsigned char[::1] continued):
-    """n bearings at speed (bearingload.models.high_speed): for each, the ring Newton from v0
-    (n, 5), its balls on their lines; where left unbalanced and ``continued``, the continuation
-    in speed from v_static. Per case: consts (6), ki, ko (NODES) as ``speed_balls``; c, s (z);
-    geo (4): A - G_r/2, the largest applied load, A, one-sided; f (5), held (5, uint8); limits
-    (13): TOLERANCE, ACCEPT, ROUNDING, NOISE_MAX, BALL_TOLERANCE, the ball rounding factor,
-    RING_ITERATIONS, LM_TRIALS, HALVINGS, BALL_ITERATIONS, FALLBACK_ITERATIONS, ball HALVINGS,
-    CONTINUATION_STAGES. Returns (v (n, 5), balls, terms, sens, ring as ``store_dyn`` with
-    ring[:, 45] the iterations, ring[:, 46] 1 where accepted (score <= ACCEPT), ring[:, 47] 1
-    where out of memory)."""
-    cdef Py_ssize_t n = c.shape[0], k
-    cdef int z = <int> c.shape[1], its, i
-    v_a = np.array(v0, dtype=float, copy=True)
-    balls_a = np.empty((3, n, z))
-    terms_a = np.empty((BALL_TERMS, n, z))
-    sens_a = np.empty((n, z, 6))
-    ring_a = np.zeros((n, 49))
-    cdef double[:, ::1] v = v_a, ring = ring_a
-    cdef double[:, :, ::1] balls = balls_a, terms = terms_a, sens = sens_a
-    cdef Ring rg
-    cdef Dyn cur, trial, keep
-    cdef double *block
-    with nogil:
-        for k in range(n):
-            ring_on(&rg, z, &consts[k, 0], &ki[k, 0], &ko[k, 0], &node_x[0], &node_w[0],
-                    &c[k, 0], &s[k, 0], &geo[k, 0], &f[k, 0], &held[k, 0], &limits[0])
-            block = dyn_open(z, &cur, &trial, &keep)
-            if block == NULL:
-                ring[k, 47] = 1.0
-                continue
-            for i in range(z):
-                cur.do[i] = cur.ao[i] = NAN
-            its = ring_newton(&rg, &v[k, 0], &cur, &trial)
-            if not cur.score <= rg.lim.accept and continued[k]:
-                continuation(&rg, &v_static[k, 0], &v[k, 0], &cur, &trial, &keep, &its)
-            store_dyn(&cur, z, n, k, &balls[0, 0, 0], &terms[0, 0, 0], &sens[0, 0, 0],
-                      &ring[0, 0])
-            ring[k, 45] = its
-            ring[k, 46] = 1.0 if cur.score <= rg.lim.accept else 0.0
-            free(block)
-    return v_a, balls_a, terms_a, sens_a, ring_a
-
-
-def speed_state_at(const double[:, ::1] consts, const double[:, ::1] ki, const double[:, ::1] ko,
-                   const double[::1] node_x, const double[::1] node_w, const double[:, ::1] c,
-                   const double[:, ::1] s, const double[:, ::1] geo, const double[:, ::1] f,
-                   const unsigned char[:, ::1] held, const double[::1] limits,
-                   const double[:, ::1] v, const double[:, ::1] do, const double[:, ::1] ao,
-                   const double[:, :, ::1] sens0, bint warm):
-    """n bearings at speed at the ring positions v (n, 5), their balls solved from (do, ao)
-    (n, z) (moved by their sensitivities sens0 (n, z, 6) where ``warm``); the arguments as
-    ``solve_speed``. Returns (balls, terms, sens, ring) as ``store_dyn`` (ring[:, 47] 1 where out
-    of memory)."""
-    cdef Py_ssize_t n = c.shape[0], k
-    cdef int z = <int> c.shape[1], i
-    balls_a = np.empty((3, n, z))
-    terms_a = np.empty((BALL_TERMS, n, z))
-    sens_a = np.empty((n, z, 6))
-    ring_a = np.zeros((n, 49))
-    cdef double[:, ::1] ring = ring_a
-    cdef double[:, :, ::1] balls = balls_a, terms = terms_a, sens = sens_a
-    cdef Ring rg
-    cdef Dyn cur, trial, keep
-    cdef double *block
-    with nogil:
-        for k in range(n):
-            ring_on(&rg, z, &consts[k, 0], &ki[k, 0], &ko[k, 0], &node_x[0], &node_w[0],
-                    &c[k, 0], &s[k, 0], &geo[k, 0], &f[k, 0], &held[k, 0], &limits[0])
-            block = dyn_open(z, &cur, &trial, &keep)
-            if block == NULL:
-                ring[k, 47] = 1.0
-                continue
-            for i in range(z):
-                cur.do[i] = do[k, i]
-                cur.ao[i] = ao[k, i]
-            if warm:
-                for i in range(6 * z):
-                    cur.sens[i] = sens0[k, i // 6, i % 6]
-            speed_state(&rg, &v[k, 0], &cur, warm, &cur)
-            store_dyn(&cur, z, n, k, &balls[0, 0, 0], &terms[0, 0, 0], &sens[0, 0, 0],
-                      &ring[0, 0])
-            free(block)
-    return balls_a, terms_a, sens_a, ring_a
-
-
-# --------------------------------------------------------------------- a pair's shaft at speed
-#
-# The rigid shaft of bearingload.models.pair_speed: its position v (x, y, a, R_i theta, R_i
-# theta_c) gives bearing k the local position L_k v + offset_k, where it is the bearing of the
-# sections above (``speed_state``); the shaft's forces sum_k L_k^T f_k, its tangent sum_k L_k^T
-# J_k L_k, each bearing's rounding level and noise carried through |L_k^T|.
 
 cdef void shaft_state(const Shaft *sh, const double *v, ShaftState *prev, bint warm,
                       ShaftState *st) noexcept nogil:
-    """Both bearings at the shaft position v (their balls from ``prev``'s, which may be st),
-    the shaft's forces, tangent and measures into st."""
+    """Every bearing at the position v (their balls from ``prev``'s, which may be st), the
+    forces, tangent and measures into st."""
     cdef double local[5]
-    cdef double res, worst = 0.0, merit = 0.0, level = 0.0, noise
     cdef const double *m
     cdef Dyn *p
     cdef int k, i, j, l, q
@@ -2841,7 +2564,7 @@ cdef void shaft_state(const Shaft *sh, const double *v, ShaftState *prev, bint w
     for i in range(25):
         st.jac[i] = 0.0
     st.touching = False
-    for k in range(2):
+    for k in range(sh.parts):
         m = &sh.maps[25 * k]
         for i in range(5):
             local[i] = sh.offset[5 * k + i]
@@ -2858,20 +2581,11 @@ cdef void shaft_state(const Shaft *sh, const double *v, ShaftState *prev, bint w
                 for l in range(5):
                     for q in range(5):
                         st.jac[5 * i + l] += m[5 * j + i] * p.jac[5 * j + q] * m[5 * q + l]
-    for i in range(5):
-        res = 0.0 if sh.held[i] else fabs(sh.f[i] - st.gen[i])
-        noise = min(st.noise[i], sh.ring.lim.noise_max * sh.f_ref)
-        merit = max(merit, res)
-        worst = max(worst, res / max(sh.f_ref, max(st.floor[i], noise) / sh.ring.lim.accept))
-        level = max(level, st.floor[i])
-    st.merit = merit / sh.f_ref
-    if not (st.part[0].balls_ok and st.part[1].balls_ok and isfinite(st.merit)):
-        st.merit = INFINITY
-    st.score = worst if isfinite(st.merit) and isfinite(worst) else INFINITY
-    st.level = level / sh.f_ref
+    shaft_measures(sh, st)
 
 
 cdef inline double shaft_norm2(const Shaft *sh, const ShaftState *st) noexcept nogil:
+    """The 2-norm of the free residual over f_ref (inf: a ball unsolved)."""
     cdef double sum = 0.0, res
     cdef int k
     if not isfinite(st.merit):
@@ -2888,10 +2602,10 @@ cdef void swap_shaft(ShaftState *a, ShaftState *b) noexcept nogil:
     b[0] = t
 
 
-cdef void copy_shaft(int z, const ShaftState *src, ShaftState *dst) noexcept nogil:
+cdef void copy_shaft(const Shaft *sh, const ShaftState *src, ShaftState *dst) noexcept nogil:
     cdef int i
-    copy_dyn(z, &src.part[0], &dst.part[0])
-    copy_dyn(z, &src.part[1], &dst.part[1])
+    for i in range(sh.parts):
+        copy_dyn(sh.ring.z, &src.part[i], &dst.part[i])
     for i in range(5):
         dst.gen[i] = src.gen[i]
         dst.floor[i] = src.floor[i]
@@ -2904,28 +2618,38 @@ cdef void copy_shaft(int z, const ShaftState *src, ShaftState *dst) noexcept nog
     dst.touching = src.touching
 
 
+cdef void held_system(const Shaft *sh, const ShaftState *st, double *jac,
+                      double *res) noexcept nogil:
+    """The Newton system at st: the tangent with held rows and columns replaced by the
+    identity's, the free residual f - gen (0 where held)."""
+    cdef int k, l
+    for k in range(5):
+        res[k] = 0.0 if sh.held[k] else sh.f[k] - st.gen[k]
+        for l in range(5):
+            jac[5 * k + l] = 0.0 if (sh.held[k] or sh.held[l]) else st.jac[5 * k + l]
+        if sh.held[k]:
+            jac[6 * k] = 1.0
+
+
 cdef int shaft_newton(const Shaft *sh, double *v, ShaftState *cur, ShaftState *trial,
                       bint warm) noexcept nogil:
-    """Newton on the shaft from the balls in ``cur`` (moved by their sensitivities where
-    ``warm``), with the trials of ``trial_step`` (as ``ring_newton``); the answer in cur, the
-    iterations returned."""
+    """Damped Newton on v from the balls in ``cur`` (moved by their sensitivities where
+    ``warm``; NaN balls start on their lines): each iteration the first of its trials
+    (``trial_step``) that lowers the residual's 2-norm (or balances it) with some ball touching
+    an inner ring; until balanced to the tolerance or no trial is taken. The answer in cur; the
+    iterations."""
     cdef double jac[25]
     cdef double res[5]
     cdef double step[5]
     cdef double vt[5]
     cdef double size
-    cdef int its = 0, it, k, i, l
+    cdef int its = 0, it, k, i
     cdef bint found
     shaft_state(sh, v, cur, warm, cur)
     if cur.merit <= sh.ring.lim.tolerance:
         return 0
     for it in range(sh.iterations):
-        for k in range(5):
-            res[k] = 0.0 if sh.held[k] else sh.f[k] - cur.gen[k]
-            for l in range(5):
-                jac[5 * k + l] = 0.0 if (sh.held[k] or sh.held[l]) else cur.jac[5 * k + l]
-            if sh.held[k]:
-                jac[6 * k] = 1.0
+        held_system(sh, cur, jac, res)
         size = shaft_norm2(sh, cur)
         found = False
         for k in range(sh.ring.lim.trials):
@@ -2949,9 +2673,11 @@ cdef int shaft_newton(const Shaft *sh, double *v, ShaftState *cur, ShaftState *t
 cdef bint shaft_continuation(const Shaft *sh, const double *v_static, double *v,
                              ShaftState *cur, ShaftState *trial, ShaftState *keep,
                              int *its) noexcept nogil:
-    """The pair by continuation in omega^2 from the static answer (the stages of
-    ``continuation``; each stage's balls warm from the last one's). Whether it reached the full
-    speed (the answer in v, cur)."""
+    """The case by continuation in omega^2 (the centrifugal and gyroscopic terms) from the
+    static answer: stages of a quarter, halved on a stage not accepted (ACCEPT), doubled after
+    one that is, each from the last stage's balls (warm where ``sh.warm_stages``) and its
+    position extrapolated from the last two. Whether it reached the full speed (the answer in
+    v, cur)."""
     cdef Shaft stage = sh[0]
     cdef double x[5]
     cdef double x1[5]
@@ -2967,19 +2693,19 @@ cdef bint shaft_continuation(const Shaft *sh, const double *v_static, double *v,
         for i in range(5):
             x1[i] = x[i] + rate[i] * (frac - done)
         if done > 0.0:
-            copy_shaft(sh.ring.z, keep, cur)
+            copy_shaft(sh, keep, cur)
         else:
-            for i in range(sh.ring.z):
-                cur.part[0].do[i] = cur.part[0].ao[i] = NAN
-                cur.part[1].do[i] = cur.part[1].ao[i] = NAN
-        its[0] += shaft_newton(&stage, x1, cur, trial, done > 0.0)
+            for i in range(sh.parts * sh.ring.z):
+                cur.part[i // sh.ring.z].do[i % sh.ring.z] = NAN
+                cur.part[i // sh.ring.z].ao[i % sh.ring.z] = NAN
+        its[0] += shaft_newton(&stage, x1, cur, trial, done > 0.0 and sh.warm_stages)
         if cur.score <= sh.ring.lim.accept:
             for i in range(5):
                 if done > 0.0:
                     rate[i] = (x1[i] - x[i]) / (frac - done)
                 x[i] = x1[i]
             done = frac
-            copy_shaft(sh.ring.z, cur, keep)
+            copy_shaft(sh, cur, keep)
             if done == 1.0:
                 for i in range(5):
                     v[i] = x[i]
@@ -2992,8 +2718,78 @@ cdef bint shaft_continuation(const Shaft *sh, const double *v_static, double *v,
     return False
 
 
+# ----------------------------------------------------------------------------- Python boundary
+
+cdef void ring_on(Ring *rg, int z, const double *consts, const double *ki, const double *ko,
+                  const double *node_x, const double *node_w, const double *c, const double *s,
+                  const double *geo, const double *lim) noexcept nogil:
+    """One case's Ring from the rows of the boundary's arrays (see ``solve_speed``)."""
+    speed_on(&rg.sp, consts, ki, ko, node_x, node_w)
+    rg.z = z
+    rg.c = c
+    rg.s = s
+    rg.base = geo[0]
+    rg.length = geo[2]
+    rg.one_sided = geo[3] != 0.0
+    rg.lim.tolerance = lim[0]
+    rg.lim.accept = lim[1]
+    rg.lim.rounding = lim[2]
+    rg.lim.noise_max = lim[3]
+    rg.lim.ball_tolerance = lim[4]
+    rg.lim.ball_round = lim[5]
+    rg.lim.trials = <int> lim[6]
+    rg.lim.halvings = <int> lim[7]
+    rg.lim.ball_iterations = <int> lim[8]
+    rg.lim.fallback_iterations = <int> lim[9]
+    rg.lim.ball_halvings = <int> lim[10]
+
+
+cdef void shaft_on(Shaft *sh, int parts, const double *maps, const double *offset,
+                   const double *f, const unsigned char *held, double f_ref,
+                   const double *shaft_limits) noexcept nogil:
+    """The shaft of one case (its Ring set apart by ``ring_on``)."""
+    cdef int i
+    sh.parts = parts
+    for i in range(25 * parts):
+        sh.maps[i] = maps[i]
+    for i in range(5 * parts):
+        sh.offset[i] = offset[i]
+    for i in range(5):
+        sh.f[i] = f[i]
+        sh.held[i] = held[i]
+    sh.f_ref = f_ref
+    sh.iterations = <int> shaft_limits[0]
+    sh.stages = <int> shaft_limits[1]
+    sh.warm_stages = shaft_limits[2] != 0.0
+
+
+cdef void store_dyn(const Dyn *st, int z, Py_ssize_t n, Py_ssize_t k, double *balls,
+                    double *terms, double *sens, double *ring) noexcept nogil:
+    """Case k's bearing into the outputs: balls (3, n, z) delta_o, alpha_o, balanced; terms
+    (BALL_TERMS, n, z); sens (n, z, 6); ring (n, 42): gen (5), jac (25), floor (5), noise (5),
+    balls_ok, touching."""
+    cdef Py_ssize_t j, i
+    for j in range(z):
+        balls[k * z + j] = st.do[j]
+        balls[(n + k) * z + j] = st.ao[j]
+        balls[(2 * n + k) * z + j] = st.ok[j]
+        for i in range(BALL_TERMS):
+            terms[(i * n + k) * z + j] = st.terms[BALL_TERMS * j + i]
+        for i in range(6):
+            sens[(k * z + j) * 6 + i] = st.sens[6 * j + i]
+    for i in range(5):
+        ring[42 * k + i] = st.gen[i]
+        ring[42 * k + 30 + i] = st.floor[i]
+        ring[42 * k + 35 + i] = st.noise[i]
+    for i in range(25):
+        ring[42 * k + 5 + i] = st.jac[i]
+    ring[42 * k + 40] = st.balls_ok
+    ring[42 * k + 41] = st.touching
+
+
 cdef double *shafts_open(int z, ShaftState *states) noexcept nogil:
-    """Four shaft states of z balls a bearing in one block (to free); NULL if out of memory."""
+    """Four shaft states of two bearings of z balls in one block (to free); NULL if out of
+    memory."""
     cdef double *block = <double *> malloc(8 * DYN_PER_BALL * z * sizeof(double) + 8)
     cdef int i
     if block != NULL:
@@ -3002,89 +2798,113 @@ cdef double *shafts_open(int z, ShaftState *states) noexcept nogil:
     return block
 
 
-cdef void shaft_on(Shaft *sh, const double *maps, const double *offset, const double *f,
-                   const unsigned char *held, const double *pair_limits) noexcept nogil:
-    """The shaft of one case (its Ring set apart by ``ring_on``)."""
-    cdef int i
-    for i in range(50):
-        sh.maps[i] = maps[i]
-    for i in range(10):
-        sh.offset[i] = offset[i]
+cdef int shaft_case(Shaft *sh, double *v, const double *v_static, bint continued,
+                    ShaftState *st) noexcept nogil:
+    """One case: the Newton from v, the balls on their lines; where left unbalanced and
+    ``continued``, the continuation from v_static, its answer taken where it reaches the full
+    speed. The answer in v and st[0]; the iterations."""
+    cdef double saved[5]
+    cdef int its, i
+    for i in range(sh.parts * sh.ring.z):
+        st[0].part[i // sh.ring.z].do[i % sh.ring.z] = NAN
+        st[0].part[i // sh.ring.z].ao[i % sh.ring.z] = NAN
+    its = shaft_newton(sh, v, &st[0], &st[1], False)
+    if st[0].score <= sh.ring.lim.accept or not continued:
+        return its
+    copy_shaft(sh, &st[0], &st[3])
     for i in range(5):
-        sh.f[i] = f[i]
-        sh.held[i] = held[i]
-    sh.f_ref = sh.ring.f_ref
-    sh.iterations = <int> pair_limits[0]
-    sh.stages = <int> pair_limits[1]
+        saved[i] = v[i]
+    if not shaft_continuation(sh, v_static, v, &st[0], &st[1], &st[2], &its):
+        copy_shaft(sh, &st[3], &st[0])
+        for i in range(5):
+            v[i] = saved[i]
+    return its
 
 
-def solve_pair_speed(const double[:, ::1] consts, const double[:, ::1] ki,
-                     const double[:, ::1] ko, const double[::1] node_x, const double[::1] node_w,
-                     const double[:, ::1] c, const double[:, ::1] s, const double[:, ::1] geo,
-                     const double[:, ::1] ring_f, const unsigned char[:, ::1] ring_held,
-                     const double[::1] limits, const double[:, :, :, ::1] maps,
-                     const double[:, :, ::1] offset, const double[:, ::1] f,
-                     const unsigned char[:, ::1] held, const double[::1] pair_limits,
-                     const double[:, ::1] v0):
-    """n pairs at speed (bearingload.models.pair_speed): the shaft Newton from v0 (n, 5), the
-    balls on their lines; where left unbalanced, the continuation in speed from v0. Each
-    bearing's arguments as ``solve_speed`` (geo's largest load the pair's), maps (n, 2, 5, 5),
-    offset (n, 2, 5), the shaft's f (n, 5) and held (n, 5, uint8); pair_limits (2): ITERATIONS,
-    CONTINUATION_STAGES. Returns (v, bearings: two (balls, terms, sens, ring) as ``store_dyn``,
-    shaft (n, 40): gen (5), jac (25), floor (5), merit, score, level, iterations, accepted)."""
+cdef void store_case(const Shaft *sh, const ShaftState *st, Py_ssize_t n, Py_ssize_t k,
+                     double **outs, double *out) noexcept nogil:
+    """Case k's answer: each bearing's by ``store_dyn`` into outs (balls, terms, sens, ring of
+    bearing 1, then of bearing 2); out (n, 45): gen (5), jac (25), floor (5), merit, score,
+    level (35-37); 38-39 left to the caller."""
+    cdef int i
+    for i in range(sh.parts):
+        store_dyn(&st.part[i], sh.ring.z, n, k, outs[4 * i], outs[4 * i + 1], outs[4 * i + 2],
+                  outs[4 * i + 3])
+    for i in range(5):
+        out[45 * k + i] = st.gen[i]
+        out[45 * k + 30 + i] = st.floor[i]
+    for i in range(25):
+        out[45 * k + 5 + i] = st.jac[i]
+    out[45 * k + 35] = st.merit
+    out[45 * k + 36] = st.score
+    out[45 * k + 37] = st.level
+
+
+cdef void at_rest(Shaft *sh, ShaftState *st, double *out) noexcept nogil:
+    """The shaft centred (v = 0), every ball solved from its line: bearing 1's thrust, and 1
+    where every ball of both is balanced (out[0], out[1])."""
+    cdef double zero[5]
+    cdef int i
+    for i in range(5):
+        zero[i] = 0.0
+    for i in range(sh.parts * sh.ring.z):
+        st.part[i // sh.ring.z].do[i % sh.ring.z] = NAN
+        st.part[i // sh.ring.z].ao[i % sh.ring.z] = NAN
+    shaft_state(sh, zero, st, False, st)
+    out[0] = st.part[0].gen[2]
+    out[1] = 1.0 if st.part[0].balls_ok and st.part[sh.parts - 1].balls_ok else 0.0
+
+
+def solve_speed(const double[:, ::1] consts, const double[:, ::1] ki, const double[:, ::1] ko,
+                const double[::1] node_x, const double[::1] node_w, const double[:, ::1] c,
+                const double[:, ::1] s, const double[:, ::1] geo, const double[::1] limits,
+                const double[:, :, :, ::1] maps, const double[:, :, ::1] offset,
+                const double[:, ::1] f, const unsigned char[:, ::1] held,
+                const double[::1] shaft_limits, const double[:, ::1] v0,
+                const double[:, ::1] v_static, const unsigned char[::1] continued):
+    """n cases at speed, one bearing (maps (n, 1, 5, 5) the identity, offset 0) or a pair's
+    shaft (maps (n, 2, 5, 5), offset (n, 2, 5)): ``shaft_case`` from v0 (n, 5), the continuation
+    from v_static where ``continued``. Per case: consts (6), ki, ko (NODES) as ``speed_balls``;
+    c, s (z); geo (4): A - G_r/2, the largest applied load (and preload), A, one-sided; f (5),
+    held (5, uint8); limits (11): TOLERANCE, ACCEPT, ROUNDING, NOISE_MAX, BALL_TOLERANCE, the
+    ball rounding factor, LM_TRIALS, HALVINGS, BALL_ITERATIONS, FALLBACK_ITERATIONS, the ball
+    halvings; shaft_limits (4): Newton iterations, continuation stages, 1: each stage's balls
+    warm, 1: the state at rest too (``at_rest``). Returns (v, bearings: (balls, terms, sens,
+    ring) of each as ``store_dyn``, out (n, 45) as ``store_case`` with out[:, 38] the
+    iterations, 39 accepted, 40-41 ``at_rest``, 42 out of memory)."""
     cdef Py_ssize_t n = c.shape[0], k
-    cdef int z = <int> c.shape[1], its, i, b
+    cdef int z = <int> c.shape[1], parts = <int> maps.shape[1], i
     v_a = np.array(v0, dtype=float, copy=True)
-    parts = [(np.empty((3, n, z)), np.empty((BALL_TERMS, n, z)), np.empty((n, z, 6)),
-              np.zeros((n, 49))) for b in range(2)]
-    shaft_a = np.zeros((n, 40))
-    cdef double[:, ::1] v = v_a, out = shaft_a
-    cdef double[:, :, ::1] balls0 = parts[0][0], terms0 = parts[0][1], sens0 = parts[0][2]
-    cdef double[:, :, ::1] balls1 = parts[1][0], terms1 = parts[1][1], sens1 = parts[1][2]
-    cdef double[:, ::1] ring0 = parts[0][3], ring1 = parts[1][3]
+    bearings = [(np.empty((3, n, z)), np.empty((BALL_TERMS, n, z)), np.empty((n, z, 6)),
+                 np.zeros((n, 42))) for i in range(parts)]
+    out_a = np.zeros((n, 45))
+    cdef double[:, ::1] v = v_a, out = out_a
+    cdef double *outs[8]
+    cdef double[:, :, ::1] arr3
+    cdef double[:, ::1] arr2
+    for i in range(parts):
+        for k in range(3):
+            arr3 = bearings[i][k]
+            outs[4 * i + k] = &arr3[0, 0, 0]
+        arr2 = bearings[i][3]
+        outs[4 * i + 3] = &arr2[0, 0]
     cdef Shaft sh
     cdef ShaftState st[4]
-    cdef ShaftState *res
     cdef double *block
-    cdef double saved[5]
     with nogil:
         for k in range(n):
             ring_on(&sh.ring, z, &consts[k, 0], &ki[k, 0], &ko[k, 0], &node_x[0], &node_w[0],
-                    &c[k, 0], &s[k, 0], &geo[k, 0], &ring_f[k, 0], &ring_held[k, 0], &limits[0])
-            shaft_on(&sh, &maps[k, 0, 0, 0], &offset[k, 0, 0], &f[k, 0], &held[k, 0],
-                     &pair_limits[0])
+                    &c[k, 0], &s[k, 0], &geo[k, 0], &limits[0])
+            shaft_on(&sh, parts, &maps[k, 0, 0, 0], &offset[k, 0, 0], &f[k, 0], &held[k, 0],
+                     geo[k, 1], &shaft_limits[0])
             block = shafts_open(z, st)
             if block == NULL:
-                ring0[k, 47] = 1.0
+                out[k, 42] = 1.0
                 continue
-            for i in range(z):
-                st[0].part[0].do[i] = st[0].part[0].ao[i] = NAN
-                st[0].part[1].do[i] = st[0].part[1].ao[i] = NAN
-            its = shaft_newton(&sh, &v[k, 0], &st[0], &st[1], False)
-            res = &st[0]
-            if not st[0].score <= sh.ring.lim.accept:
-                copy_shaft(z, &st[0], &st[3])
-                for i in range(5):
-                    saved[i] = v[k, i]  # the Newton's answer, kept
-                if shaft_continuation(&sh, &v0[k, 0], &v[k, 0], &st[0], &st[1], &st[2], &its):
-                    res = &st[0]
-                else:
-                    res = &st[3]
-                    for i in range(5):
-                        v[k, i] = saved[i]
-            store_dyn(&res.part[0], z, n, k, &balls0[0, 0, 0], &terms0[0, 0, 0],
-                      &sens0[0, 0, 0], &ring0[0, 0])
-            store_dyn(&res.part[1], z, n, k, &balls1[0, 0, 0], &terms1[0, 0, 0],
-                      &sens1[0, 0, 0], &ring1[0, 0])
-            for i in range(5):
-                out[k, i] = res.gen[i]
-                out[k, 30 + i] = res.floor[i]
-            for i in range(25):
-                out[k, 5 + i] = res.jac[i]
-            out[k, 35] = res.merit
-            out[k, 36] = res.score
-            out[k, 37] = res.level
-            out[k, 38] = its
-            out[k, 39] = 1.0 if res.score <= sh.ring.lim.accept else 0.0
+            out[k, 38] = shaft_case(&sh, &v[k, 0], &v_static[k, 0], continued[k], st)
+            out[k, 39] = 1.0 if st[0].score <= sh.ring.lim.accept else 0.0
+            store_case(&sh, &st[0], n, k, outs, &out[0, 0])
+            if shaft_limits[3] != 0.0:
+                at_rest(&sh, &st[1], &out[k, 40])
             free(block)
-    return v_a, parts, shaft_a
+    return v_a, bearings, out_a

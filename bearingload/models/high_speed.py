@@ -467,7 +467,7 @@ class _Ring:
 
     def core(self) -> tuple[Any, ...]:
         """The arguments of the core's :func:`~bearingload.models._core.solve_speed` that
-        describe the cases, and the limits (this module's constants)."""
+        describe each case's bearing, and the limits (this module's constants)."""
         n = self.f.shape[0]
         geo = np.stack([self.base, self.f_ref, self.length, self.one_sided.astype(float)], axis=1)
         limits = [
@@ -477,13 +477,11 @@ class _Ring:
             NOISE_MAX,
             BALL_TOLERANCE,
             _ROUND,
-            RING_ITERATIONS,
             LM_TRIALS,
             HALVINGS,
             BALL_ITERATIONS,
             FALLBACK_ITERATIONS,
             BALL_HALVINGS,
-            CONTINUATION_STAGES,
         ]
         cont = np.ascontiguousarray
         return (
@@ -493,8 +491,6 @@ class _Ring:
             cont(self.c, dtype=float),
             cont(np.broadcast_to(self.s, (n, self.c.shape[1])), dtype=float),
             cont(geo, dtype=float),
-            cont(self.f, dtype=float),
-            cont(self.held, dtype=np.uint8),
             np.array(limits, dtype=float),
         )
 
@@ -524,58 +520,68 @@ class _State:
         return self.score <= ACCEPT
 
 
-def _state(out: tuple[np.ndarray, ...]) -> _State:
-    """A :class:`_State` from the core's (balls, terms, sens, ring) (``store_dyn``)."""
-    balls, terms, sens, ring = out
-    if np.any(ring[:, 47]):
-        raise MemoryError("the ball dynamics' work space")
+def _state(part: tuple[np.ndarray, ...], out: np.ndarray) -> _State:
+    """A bearing's :class:`_State` from the core's (balls, terms, sens, ring) (``store_dyn``),
+    the measures of its case (merit, score, level) from ``out`` (``store_case``)."""
+    balls, terms, sens, ring = part
     n = ring.shape[0]
     return _State(
         balls[0],
         balls[1],
-        ring[:, 43] != 0,
+        ring[:, 40] != 0,
         ring[:, :5].copy(),
         ring[:, 5:30].reshape(n, 5, 5),
-        ring[:, 40].copy(),
+        out[:, 35].copy(),
         tuple(terms),
         sens,
-        ring[:, 41].copy(),
-        ring[:, 42].copy(),
+        out[:, 36].copy(),
+        out[:, 37].copy(),
         ring[:, 30:35].copy(),
         ring[:, 35:40].copy(),
     )
 
 
-def _evaluate(
-    r: _Ring, v: np.ndarray, do: np.ndarray, ao: np.ndarray, sens: np.ndarray | None = None
-) -> _State:
-    """Solve every ball at the ring position v from (do, ao) (moved to first order by the
-    balls' sensitivities ``sens`` of a previous state; NaN: from its line); the ring forces,
-    tangent and measures (the core's ``speed_state``)."""
+def core_solve(
+    r: _Ring, shaft: tuple[np.ndarray, ...], limits: list[int], v0: np.ndarray,
+    v_static: np.ndarray, continued: bool,
+) -> tuple[np.ndarray, list[_State], np.ndarray]:  # fmt: skip
+    """The core's solve (``solve_speed``) of n cases of bearings ``r``: one bearing, or a pair's
+    shaft, ``shaft`` = (maps (n, k, 5, 5), offset (n, k, 5), f (n, 5), held (n, 5)) and its
+    ``limits`` (iterations, stages, warm stages, the state at rest); the Newton from v0, where
+    left unbalanced and ``continued`` the continuation from v_static. Returns (v, each
+    bearing's state, the core's out (n, 45): out[:, 38] the iterations, 39 accepted, 40-41 the
+    state at rest)."""
+    n = v0.shape[0]
+    flags = np.full(n, 1 if continued else 0, dtype=np.uint8)
     cont = np.ascontiguousarray
-    warm = sens is not None
-    sens0 = cont(sens, dtype=float) if warm else np.zeros((v.shape[0], do.shape[1], 6))
-    out = _core.speed_state_at(
-        *r.core(), cont(v, dtype=float), cont(do, dtype=float), cont(ao, dtype=float), sens0, warm
+    maps, offset, f, held = shaft
+    v, parts, out = _core.solve_speed(
+        *r.core(),
+        cont(maps, dtype=float),
+        cont(offset, dtype=float),
+        cont(f, dtype=float),
+        cont(held, dtype=np.uint8),
+        np.array(limits, dtype=float),
+        cont(v0, dtype=float),
+        cont(v_static, dtype=float),
+        flags,
     )
-    return _state(out)
+    if np.any(out[:, 42]):
+        raise MemoryError("the ball dynamics' work space")
+    return v, [_state(p, out) for p in parts], out
 
 
 def _newton(
     r: _Ring, v0: np.ndarray, v_static: np.ndarray, continued: bool
 ) -> tuple[np.ndarray, _State, np.ndarray]:
-    """The core's solve of every case (``solve_speed``): the ring Newton from v0, the balls on
-    their lines; where left unbalanced and ``continued``, the continuation in speed from
-    v_static. Returns (v, state, iterations (n,))."""
+    """Every case of the bearings ``r`` by the core: the ring Newton from v0, the balls on their
+    lines; where left unbalanced and ``continued``, the continuation in speed from v_static.
+    Returns (v, state, iterations (n,))."""
     n = v0.shape[0]
-    flags = np.full(n, 1 if continued else 0, dtype=np.uint8)
-    v, *rest = _core.solve_speed(
-        *r.core(),
-        np.ascontiguousarray(v0, dtype=float),
-        np.ascontiguousarray(v_static, dtype=float),
-        flags,
-    )
-    return v, _state(tuple(rest)), rest[3][:, 45].astype(int)
+    one = (np.broadcast_to(np.eye(5), (n, 1, 5, 5)), np.zeros((n, 1, 5)), r.f, r.held)
+    limits = [RING_ITERATIONS, CONTINUATION_STAGES, 0, 0]
+    v, parts, out = core_solve(r, one, limits, v0, v_static, continued)
+    return v, parts[0], out[:, 38].astype(int)
 
 
 _STATE_ARRAYS = (

@@ -46,7 +46,6 @@ import numpy as np
 
 from bearingload.constants import STEEL_MODULUS
 from bearingload.errors import ConvergenceError, InputError
-from bearingload.models import _core
 from bearingload.models import combined as _comb
 from bearingload.models import high_speed as _hs
 from bearingload.models.pair import PairDistribution, solve_pair
@@ -56,9 +55,9 @@ __all__ = ["PairHighSpeedDistribution", "solve_pair_high_speed", "MODEL"]
 #: The model, as the outputs name it.
 MODEL = _hs.MODEL
 #: Relative residual of the shaft equilibrium (of the largest applied load or the preload). [-]
-TOLERANCE = 1e-12
+TOLERANCE = _hs.TOLERANCE
 #: Largest shaft residual accepted at the end (or the rounding level, when larger). [-]
-ACCEPT = 1e-9
+ACCEPT = _hs.ACCEPT
 #: Shaft Newton steps (the trials of each: the single bearing's, the core's trial_step). [-]
 ITERATIONS = 200
 #: Stages of the continuation in omega^2. [-]
@@ -112,23 +111,6 @@ class _Shaft:
     f: np.ndarray  # (n, 5) applied [N]
     f_ref: np.ndarray  # (n,) [N]
     held: np.ndarray  # (n, 5) bool
-
-    def core(self) -> tuple[Any, ...]:
-        """The arguments of the core's :func:`~bearingload.models._core.solve_pair_speed`
-        (both bearings alike: the first ring's, the pair's tolerances and limits)."""
-        ring = self.rings[0].core()
-        limits = ring[-1].copy()
-        limits[:2] = TOLERANCE, ACCEPT
-        cont = np.ascontiguousarray
-        return (
-            *ring[:-1],
-            limits,
-            cont(self.maps, dtype=float),
-            cont(self.offset, dtype=float),
-            cont(self.f, dtype=float),
-            cont(self.held, dtype=np.uint8),
-            np.array([ITERATIONS, CONTINUATION_STAGES], dtype=float),
-        )
 
 
 @dataclass
@@ -223,15 +205,16 @@ def solve_pair_high_speed(
     flat["cage_angle"] = np.mod(flat["cage_angle"], 360.0)
     sh, geo, v_static = _setup(static, flat, shape)
     with np.errstate(all="ignore"):
-        v, st, its = _solve(sh, v_static, flat)
-        extra = _at_speed(static, sh, shape)
+        v, st, its, rest = _solve(sh, v_static, flat, static.arrangement != "DT")
+        extra = _at_speed(static, rest, shape)
     return dataclasses.replace(_result(static, sh, geo, flat, shape, (v, st, its)), **extra)
 
 
-def _at_speed(static: PairDistribution, sh: _Shaft, shape: tuple[int, ...]) -> dict[str, Any]:
+def _at_speed(static: PairDistribution, rest: np.ndarray, shape: tuple[int, ...]) -> dict[str, Any]:
     """``preload_at_speed`` of a DB/DF pair: each bearing's thrust at the shaft's centred
     position (with no external load the mirrored pair keeps the shaft there at any speed, each
-    ball solved at that speed); none for DT. [N]
+    ball solved at that speed: ``rest`` (n, 2), bearing 1's thrust there and whether every
+    ball is balanced, from the core's ``at_rest``); none for DT. [N]
 
     The lift-off load stays the one at rest: at speed the model keeps the inner contacts of the
     bearing being unloaded far beyond it, the balls held between both rings by their
@@ -243,12 +226,9 @@ def _at_speed(static: PairDistribution, sh: _Shaft, shape: tuple[int, ...]) -> d
 
     if static.arrangement == "DT":
         return {}
-    n, z = sh.f.shape[0], sh.rings[0].c.shape[1]
-    nan, zero = np.full((n, z), np.nan), np.zeros((n, 5))
-    rest = [_hs._evaluate(sh.rings[k], _local(sh, k, zero), nan, nan) for k in range(2)]
-    if not np.all(rest[0].balls_ok & rest[1].balls_ok):
+    if not np.all(rest[:, 1]):
         raise ConvergenceError("preload of the pair at speed", 0, math.nan, {})
-    thrust = np.asarray(rest[0].gen[:, 2], dtype=float).reshape(shape)
+    thrust = np.asarray(rest[:, 0], dtype=float).reshape(shape)
     return {"preload_at_speed": numerics.scalar_out(thrust)}
 
 
@@ -305,12 +285,14 @@ def _setup(static: PairDistribution, c: dict, shape: tuple[int, ...]) -> tuple[A
 STATIC_WAY = "the static model of the pair (solve_pair) leaves the ball forces out"
 
 
-def _solve(sh: _Shaft, v_static: np.ndarray, flat: dict) -> tuple[Any, ...]:
-    """The core's solve (``solve_pair_speed``: Newton from the static answer, continuation for
-    the cases left); the checks."""
-    v, parts, out = _core.solve_pair_speed(*sh.core(), np.ascontiguousarray(v_static, dtype=float))
+def _solve(sh: _Shaft, v_static: np.ndarray, flat: dict, rest: bool) -> tuple[Any, ...]:
+    """The core's solve (Newton from the static answer, continuation for the cases left; with
+    ``rest`` the shaft centred too); the checks. Returns (v, state, iterations, rest (n, 2))."""
+    shaft = (sh.maps, sh.offset, sh.f, sh.held)
+    limits = [ITERATIONS, CONTINUATION_STAGES, 1, 1 if rest else 0]
+    v, parts, out = _hs.core_solve(sh.rings[0], shaft, limits, v_static, v_static, True)
     st = _State(
-        [_hs._state(tuple(p)) for p in parts],
+        parts,
         out[:, :5].copy(),
         out[:, 5:30].reshape(-1, 5, 5),
         out[:, 35].copy(),
@@ -339,7 +321,7 @@ def _solve(sh: _Shaft, v_static: np.ndarray, flat: dict) -> tuple[Any, ...]:
             float(known.max()) if known.size else math.nan,
             {k: flat[k][bad] for k in _UNITS}, units=_UNITS,
         )  # fmt: skip
-    return v, st, its
+    return v, st, its, out[:, 40:42]
 
 
 def _result(static: PairDistribution, sh: _Shaft, geo: Any, flat: dict, shape: tuple[int, ...],
