@@ -173,7 +173,7 @@ def _call(key: tuple[Any, ...], idx: list[int], cols: dict[str, list[Any]]) -> l
     if at_speed:  # the ball dynamics of both bearings (ball_density as --ball-density, kg/m^3)
         dynamics["speed"] = np.array(_take(cols, "speed", idx), dtype=float)
         if density:
-            dynamics["ball_density"] = np.array(_take(cols, "ball_density", idx), float) * 1e-9
+            dynamics["ball_density"] = np.array(_take(cols, "ball_density", idx), float)
     try:
         return solve_bearing_pairs(
             b, np.array(_take(cols, "load", idx), dtype=float),

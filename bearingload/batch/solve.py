@@ -582,7 +582,7 @@ def _solve_combined(
             moment=given("moment", moment), misalignment=given("misalignment", misaligned),
             rotating=rotating, dynamic_rating=c_r, moment_cross=given("moment_cross", cross),
             tilt_radius=None if groove else given("_lever"), speed=given("speed", at_speed),
-            ball_density=None if rho is None else rho * 1e-9,
+            ball_density=rho,
         )  # fmt: skip
     except (InputError, ConvergenceError) as exc:
         cells = [cols[c][i] for c in LOAD_COLUMNS if c in cols for i in idx]

@@ -83,7 +83,7 @@ class ResolvedBearing:
         materials`); None: the balls are of the rings' material.
     ball_density : float or None
         Density of the balls of ``ball_material`` for the ball dynamics (None: bearing
-        steel). [kg/mm^3]
+        steel). [kg/m^3]
     provenance : tuple of Provenance
         Every value above with its source, in display order.
     sources : tuple of str

@@ -271,7 +271,7 @@ class Case:
     def dynamics_arguments(self) -> dict[str, Any]:
         """The ball dynamics of :func:`bearingload.studies.combined_bearing.solve_combined_bearing`:
         the speed [rpm] (None: the static model, also under --quasi-static) and the ball density
-        [kg/mm^3] (None: steel)."""
+        [kg/m^3] (None: steel)."""
         self.check_dynamics_flags()
         if self.rotating == "outer" and self.speed is not None and not self.quasi_static:
             raise InputError(
@@ -288,7 +288,7 @@ class Case:
             )
         return {
             "speed": None if self.quasi_static else self.speed,
-            "ball_density": None if self.ball_density is None else self.ball_density * 1e-9,
+            "ball_density": self.ball_density,
         }
 
     def check_dynamics_flags(self) -> None:

@@ -97,7 +97,7 @@ def solve_combined_bearing(
     speed, ball_density : float, optional
         Shaft speed [rpm] of the inner ring: the balls' centrifugal force and gyroscopic
         moment are included (:mod:`bearingload.models.high_speed`); None: the static model.
-        Ball density [kg/mm^3], default bearing steel.
+        Ball density [kg/m^3], default bearing steel.
 
     Raises
     ------
@@ -292,7 +292,7 @@ def solve_on_bearing(
         R_i. [mm]
     speed, ball_density : float, optional
         Inner ring speed [rpm]: the ball dynamics of :mod:`bearingload.models.high_speed`
-        (outer-raceway control) are included; ball density [kg/mm^3], default steel.
+        (outer-raceway control) are included; ball density [kg/m^3], default steel.
 
     Raises
     ------
@@ -493,12 +493,12 @@ def combined_columns(c: CombinedCase) -> dict[str, Any]:
 
 
 def _density(r: CombinedDistribution, n: int) -> dict[str, Any]:
-    """``ball_density`` [kg/m^3] of the ball dynamics at speed (the result's kg/mm^3 times 1e9,
-    as solve's --ball-density and batch's ball_density take it); nothing for a static solve."""
+    """``ball_density`` [kg/m^3] of the ball dynamics at speed (the result's, as solve's
+    --ball-density and batch's ball_density take it); nothing for a static solve."""
     density = getattr(r, "ball_density", None)
     if density is None:
         return {}
-    return {"ball_density": np.broadcast_to(np.asarray(density, dtype=float) * 1e9, (n,))}
+    return {"ball_density": np.broadcast_to(np.asarray(density, dtype=float), (n,))}
 
 
 def case_columns(

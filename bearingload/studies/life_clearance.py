@@ -85,7 +85,7 @@ class LifeAgainstClearance:
         The ball dynamics the rows were solved with at a speed (the result's ``model`` of
         :mod:`bearingload.models.high_speed`); None: the static model.
     speed, ball_density : float or None
-        Shaft speed [rpm] and ball density [kg/mm^3] of the ball dynamics; None: the static
+        Shaft speed [rpm] and ball density [kg/m^3] of the ball dynamics; None: the static
         model.
     heaviest_contact_angle : ndarray or None
         Each row's contact angle of its heaviest ball (the film's, as solve's). [°]
@@ -179,7 +179,7 @@ def life_against_clearance(
     speed, ball_density : float, optional
         Inner ring speed [rpm]: every row with the ball dynamics (centrifugal force, gyroscopic
         moment; :mod:`bearingload.models.high_speed`), as ``solve --speed``; ball density
-        [kg/mm^3], default bearing steel. None: the static model.
+        [kg/m^3], default bearing steel. None: the static model.
 
     Returns
     -------
@@ -283,7 +283,7 @@ def _heaviest_angle(r: Any) -> np.ndarray:
 
 
 def _density(r: Any) -> float | None:
-    """The ball density of the ball dynamics solved in ``r`` [kg/mm^3]; None: static."""
+    """The ball density of the ball dynamics solved in ``r`` [kg/m^3]; None: static."""
     density = getattr(r, "ball_density", None)
     return None if density is None else float(np.asarray(density).flat[0])
 
