@@ -186,3 +186,12 @@ def test_gost_group_gives_iso_limits() -> None:
 )
 def test_looks_like_class(text: str, is_class: bool) -> None:
     assert looks_like_class(text) is is_class
+
+
+def test_table_life_has_default_rows_for_the_smallest_bores() -> None:
+    """The rows of table life scale with the largest class at the bore: C3 up to 6 mm."""
+    from bearingload.bearings.resolve import resolve_bearing
+    from bearingload.studies.life_clearance import default_clearances
+
+    rows = default_clearances(resolve_bearing("625"))
+    assert rows.size > 5 and rows.max() == pytest.approx(rows.max()) and rows.max() < 0.1

@@ -194,16 +194,15 @@ def _call(key: tuple[Any, ...], idx: list[int], cols: dict[str, list[Any]]) -> l
 def _quasi_static_hint(exc: InputError | ConvergenceError) -> BearingloadError | None:
     """A pair at speed the ball dynamics leave unbalanced, or refuse as too light, with the way
     out in the batch's words (solve names --quasi-static); None for another refusal."""
-    from bearingload.models.combined import TOO_LIGHT
     from bearingload.models.high_speed import too_fast
-    from bearingload.models.pair_speed import STATIC_WAY
+    from bearingload.models.pair_speed import TOO_LIGHT_PAIR
 
     way = "quasi_static true gives the static model of the pair"
     if isinstance(exc, ConvergenceError):
         return exc.with_way_out(way)
     if too_fast(exc):
         return exc.with_way_out(FAST_WAY)
-    if exc.reason != TOO_LIGHT or exc.way_out != STATIC_WAY:
+    if exc.reason != TOO_LIGHT_PAIR:
         return None
     return exc.with_way_out(way)
 

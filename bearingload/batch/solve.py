@@ -628,7 +628,7 @@ def _quasi_static_hint(
     is the ball dynamics too; quasi_static true is the way to it (as solve's --quasi-static), on
     a row with load cells beside the radial load (not ``radial``) with those cells left blank.
     The dynamics' non-convergence on radial rows names the same way."""
-    from bearingload.models.combined import RADIAL_TAKES_ANY_LOAD, TOO_LIGHT
+    from bearingload.models.combined import TOO_LIGHT
 
     if isinstance(exc, ConvergenceError):
         if not radial:
@@ -636,7 +636,7 @@ def _quasi_static_hint(
         return exc.with_way_out(
             "quasi_static true gives the static radial engine (the ball dynamics left out)"
         )
-    if exc.reason != TOO_LIGHT or exc.way_out != RADIAL_TAKES_ANY_LOAD:
+    if exc.reason != TOO_LIGHT:
         return None
     way = ("quasi_static true gives the static radial engine, which takes any load" if radial
            else "quasi_static true with the axial_load and moment cells blank gives the static "

@@ -254,6 +254,21 @@ def clearance_range(bore: float, cls: str, kind: str = "ball") -> tuple[float, f
     return row.limits[name]
 
 
+def largest_class(bore: float, kind: str = "ball") -> tuple[str, float]:
+    """The largest class tabulated at ``bore`` [mm] and its upper limit G_r [mm] (C5, or C3
+    where the row over 2.5 up to 6 mm stops)."""
+    row = _row(bore, kind)
+    name = [c for c in CLASSES if c in row.limits][-1]
+    return name, row.limits[name][1]
+
+
+def table_name(bore: float, kind: str = "ball") -> str:
+    """What the row of ``bore`` reproduces: ``ISO 5753-1`` for the rows copied from a maker's
+    reproduction of the standard, ``makers' tables`` for the row over 2.5 up to 6 mm, read from
+    makers' pages only (its source in the data file)."""
+    return "ISO 5753-1" if "ISO 5753-1 values" in _row(bore, kind).source else "makers' tables"
+
+
 def radial_clearance(bore: float, cls: str, pick: str = "mean", kind: str = "ball") -> float:
     """Radial internal clearance G_r of a class, at its lower limit, middle or upper limit.
 
@@ -342,18 +357,13 @@ def parse_clearance(text: str | float | None) -> ClearanceSpec | None:
             length=parse_quantity(text, "length", parameter="clearance"), text=text
         )
     except InputError as exc:
-        message = exc.message
         if exc.reason == IMPLAUSIBLE:
-            group = (
-                f" (the GOST clearance group {text} is written G{text})"
-                if text in ("6", "7", "8", "9")
-                else ""
-            )
-            raise InputError("clearance", message + group, reason=IMPLAUSIBLE) from None
-        raise InputError(
-            "clearance",
-            f"{message}; or a clearance class C2, CN, C3, C4, C5 (GOST groups G6, G7, G8, G9)",
-        ) from None
+            group = f"the GOST clearance group {text} is written G{text}"
+            if text not in ("6", "7", "8", "9"):
+                raise
+            raise InputError("clearance", f"{exc.problem} ({group})", reason=IMPLAUSIBLE) from None
+        way = "or a clearance class C2, CN, C3, C4, C5 (GOST groups G6, G7, G8, G9)"
+        raise InputError("clearance", exc.problem, way_out=way, reason=exc.reason) from None
 
 
 def clearance_length(spec: ClearanceSpec | None) -> float:

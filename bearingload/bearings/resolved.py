@@ -231,8 +231,10 @@ def resolve_clearance(
         raise InputError("clearance", _NEEDS_BORE.format(spec.text if spec else cls))
     low, high = clearance_range(bore, cls, kind)
     value = {"min": low, "mean": 0.5 * (low + high), "max": high}[pick]
+    from bearingload.bearings.clearance import table_name
+
     source = (
-        f"{how}; ISO 5753-1{'' if kind == 'ball' else ' (cylindrical roller bearings)'} {cls} "
+        f"{how}; {table_name(bore, kind)}{'' if kind == 'ball' else ' (cylindrical roller bearings)'} {cls} "
         f"{low * 1e3:g}-{high * 1e3:g} µm at d = {bore:g} mm, {pick} "
         "(clearance table)"
     )

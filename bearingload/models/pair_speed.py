@@ -283,6 +283,8 @@ def _setup(static: PairDistribution, c: dict, shape: tuple[int, ...]) -> tuple[A
 #: The end of the refusal of loads too small for the pair's ball dynamics: the library's way
 #: out; the command line names its option (--quasi-static) instead.
 STATIC_WAY = "the static model of the pair (solve_pair) leaves the ball forces out"
+#: The reason of that refusal, on which a caller offering the static pair acts.
+TOO_LIGHT_PAIR = "too_light_pair_dynamics"
 
 
 def _solve(sh: _Shaft, v_static: np.ndarray, flat: dict, rest: bool) -> tuple[Any, ...]:
@@ -312,7 +314,7 @@ def _solve(sh: _Shaft, v_static: np.ndarray, flat: dict, rest: bool) -> tuple[An
             f"{float(sh.f_ref[i]):.3g} N; the rounding of the ball forces on the shaft is "
             f"{level[i] * float(sh.f_ref[i]):.2g} N, more than {_hs.LEVEL_MAX:.0e} of it)",
             way_out=STATIC_WAY,
-            reason=_comb.TOO_LIGHT,
+            reason=TOO_LIGHT_PAIR,
         )
     bad = ~st.accepted
     if np.any(bad):

@@ -57,7 +57,7 @@ COMBINED_PARAMS = LOAD_PARAMS + TILT_PARAMS + LIFE_PARAMS
 #: Why sweep and table refuse the mounting options (solve and batch take them).
 MOUNTING_REFUSAL = (
     "the operating clearance of a mounted bearing is solve's and batch's (docs/mounting.md); "
-    "'bearingload solve' prints it: give it here as 'clearance'"
+    "'bearingload solve' prints it (operating_clearance): give that length here"
 )
 #: The options only a bearing or its ball geometry uses, refused for a ring given by z and K.
 BEARING_ONLY = (

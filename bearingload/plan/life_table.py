@@ -40,7 +40,7 @@ def life_against_clearance_case(
             **dynamics,
         )
     except InputError as exc:
-        raise _row_error(exc, dynamics.get("speed") is not None) from exc
+        raise _row_error(exc, dynamics.get("speed") is not None, clearances is not None) from exc
     except ConvergenceError as exc:
         if dynamics.get("speed") is None:
             raise
@@ -49,16 +49,16 @@ def life_against_clearance_case(
     return result, _service(case, result, spell)
 
 
-def _row_error(exc: InputError, dynamics: bool) -> InputError:
-    """The refusal of a row: a bad clearance names the rows (``clearances``); the loads too
+def _row_error(exc: InputError, dynamics: bool, rows_given: bool) -> InputError:
+    """The refusal of a row: a bad clearance of the rows given names them (``clearances``); the loads too
     small for the combined solver name no radial solver (table life has none: the static rows
     are the combined solver's too); a speed the ball dynamics refuse names quasi-static."""
-    from bearingload.models.combined import RADIAL_TAKES_ANY_LOAD, TOO_LIGHT
+    from bearingload.models.combined import TOO_LIGHT
     from bearingload.models.high_speed import too_fast
 
-    if exc.parameter == "clearance":
+    if exc.parameter == "clearance" and rows_given:
         return exc.named("clearances")
-    if exc.reason == TOO_LIGHT and exc.way_out == RADIAL_TAKES_ANY_LOAD:
+    if exc.reason == TOO_LIGHT:
         return exc.with_way_out(
             "table life solves every row by it, at any speed; 'bearingload solve' without an "
             "axial load (at a speed with 'quasi_static') takes any load"
@@ -94,7 +94,7 @@ def _service(case: Case, t: Any, spell: Any) -> list[Any] | None:
 def life_against_preload_case(case: Case, preloads: list[float]) -> Any:
     """The :class:`~bearingload.studies.pair_life.LifeAgainstPreload` of the case's pair over
     ``preloads`` [N], each row as solve solves the pair at that preload."""
-    from bearingload.models.pair_speed import STATIC_WAY
+    from bearingload.models.pair_speed import TOO_LIGHT_PAIR
     from bearingload.studies.pair_life import life_against_preload
 
     tilt = "the shaft's tilt follows from the loads; give 'moment'"
@@ -130,7 +130,11 @@ def life_against_preload_case(case: Case, preloads: list[float]) -> Any:
         hinted = pair_speed_hint(exc) if dynamics["speed"] is not None else None
         if hinted is not None:
             raise hinted from exc
-        if isinstance(exc, InputError) and exc.parameter == "preload" and exc.way_out != STATIC_WAY:
+        if (
+            isinstance(exc, InputError)
+            and exc.parameter == "preload"
+            and exc.reason != TOO_LIGHT_PAIR
+        ):
             raise exc.named("preloads") from exc
         raise
     return with_speed_warnings([result], case.speed)[0]  # the bearing's limiting speeds

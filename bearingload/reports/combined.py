@@ -258,6 +258,10 @@ DYNAMICS_NOTE = (
 )
 
 
+#: How a radial load alone on the combined engine gives the radial engine's k and K_Q.
+RADIAL_FACTORS_NOTE = (
+    "k = Q_max/F_r and K_Q = k z/2 as the radial engine gives them (a radial load alone)."
+)
 #: How a radial load alone at speed gives the radial engine's k and K_Q.
 RADIAL_AT_SPEED_NOTE = (
     "k = Q_max/F_r and K_Q = k z/2 as the radial engine gives them, from the inner contacts, "
@@ -280,8 +284,8 @@ def _summary(records: Sequence[dict[str, Any]], bearing: Any, dynamics: str | No
         notes[1], notes[len(NOTES)] = ANGULAR_NOTE, ANGULAR_STATIC_NOTE
     if dynamics is not None:
         notes.append(DYNAMICS_NOTE.format(dynamics))
-        if "k" in keys:
-            notes.append(RADIAL_AT_SPEED_NOTE)
+    if "k" in keys:
+        notes.append(RADIAL_AT_SPEED_NOTE if dynamics is not None else RADIAL_FACTORS_NOTE)
     return Table(_title(records), columns, rows, notes)
 
 

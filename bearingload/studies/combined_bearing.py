@@ -544,7 +544,7 @@ def case_columns(
         "free_contact_angle": arr(r.free_contact_angle),
         "axial_play": arr(r.axial_play),
         "q_max": arr(r.q_max),
-        **radial_factors(r, misalignment, moment_cross),
+        **({} if b.contact_angle is not None else radial_factors(r, misalignment, moment_cross)),
         "loaded_balls": arr(r.loaded_balls, np.int64),
         "x": arr(r.x),
         "y": arr(r.y),
@@ -564,9 +564,10 @@ def case_columns(
 
 def radial_factors(r: CombinedDistribution, misalignment: Any, moment_cross: Any) -> dict[str, Any]:
     """The radial engine's load factor k = Q_max/F_r and load concentration K_Q = k z/2 of a
-    radial load alone (no thrust, moment or misalignment; at a speed Q_max is the heaviest inner
-    contact's, which carries the shaft's load), so that a radial case keeps them on the combined
-    engine (the ball dynamics at a speed); nothing for another load."""
+    deep-groove bearing under a radial load alone (no thrust, moment or misalignment; at a speed
+    Q_max is the heaviest inner contact's, which carries the shaft's load), so that a radial case
+    keeps them on the combined engine (the ball dynamics at a speed, or a thrust of 0 given);
+    nothing for another load."""
     loads = [np.asarray(v, dtype=float) for v in (r.axial_load, r.moment)]
     if moment_cross is not None:
         loads.append(np.asarray(moment_cross, dtype=float))

@@ -118,13 +118,14 @@ class LifeAgainstClearance:
 
 
 def default_clearances(bearing: ResolvedBearing) -> np.ndarray:
-    """The rows' clearances for ``bearing``: :data:`CLEARANCES_UM` scaled by the C5 maximum of
-    ISO 5753-1 at its bore over that at 25 mm, to 0.1 um. [mm]
+    """The rows' clearances for ``bearing``: :data:`CLEARANCES_UM` scaled by the largest class's
+    maximum of ISO 5753-1 at its bore (C5; C3 up to a 6 mm bore) over the C5 maximum at 25 mm,
+    to 0.1 um. [mm]
 
     A hand-given ball set has no bore: it is taken as d_m - 1.5 D_w (6205: 26.6 mm for 25 mm;
     6305 and 306 within 3 mm), clamped to the bores of the clearance table (6 to 400 mm).
     """
-    from bearingload.bearings.clearance import clearance_range, table
+    from bearingload.bearings.clearance import largest_class, table
 
     rows = table()
     if bearing.geometry is not None:
@@ -133,7 +134,7 @@ def default_clearances(bearing: ResolvedBearing) -> np.ndarray:
         assert bearing.pitch_diameter is not None and bearing.ball_diameter is not None
         bore = bearing.pitch_diameter - 1.5 * bearing.ball_diameter
     bore = min(max(bore, rows[0].bore_over + 1e-9), rows[-1].bore_incl)
-    scale = clearance_range(bore, "C5")[1] / REFERENCE_C5_MAX
+    scale = largest_class(bore)[1] / REFERENCE_C5_MAX
     values = np.round(np.asarray(CLEARANCES_UM, dtype=float) * scale, 1)
     return np.unique(values) * 1e-3
 
