@@ -22,6 +22,7 @@ LAYERS = {
     "bearingload": 0,  # the package's own __init__ (lazy public names, no static import)
     "errors": 0,
     "constants": 0,
+    "lazy_dataclass": 0,  # dataclasses.dataclass, the comparison and text methods built on use
     "units": 1,
     "validate": 1,
     "numerics": 1,

@@ -21,10 +21,10 @@ without a row is refused, naming the rows there are (:func:`find_angular`).
 from __future__ import annotations
 
 import re
-from dataclasses import dataclass
 from functools import lru_cache
 
 from bearingload.errors import InputError
+from bearingload.lazy_dataclass import dataclass
 
 #: ISO/maker contact-angle suffixes and the nominal angle each stands for. [°]
 ISO_SUFFIX_ANGLES: dict[str, float] = {"C": 15.0, "A5": 25.0, "AC": 25.0, "A": 30.0, "B": 40.0}

@@ -56,10 +56,10 @@ import functools
 import math
 import re
 from collections.abc import Container
-from dataclasses import dataclass
 
 from bearingload.bearings.designation import Designation, UnmodelledBearing, parse
 from bearingload.errors import InputError
+from bearingload.lazy_dataclass import dataclass
 
 #: Default inner-groove conformity r_i / D_w (ISO/TS 16281 convention). [-]
 DEFAULT_F_I = 0.52

@@ -45,10 +45,10 @@ from __future__ import annotations
 
 import functools
 import re
-from dataclasses import dataclass
 
 from bearingload.constants import CLEARANCE_PICKS
 from bearingload.errors import InputError
+from bearingload.lazy_dataclass import dataclass
 from bearingload.units import IMPLAUSIBLE, parse_quantity
 
 #: The ISO clearance classes the table gives, in increasing clearance.

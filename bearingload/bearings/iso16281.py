@@ -31,14 +31,16 @@ The dynamic equivalent reference load is P_ref = C_r / L10r^(1/3).
 
 from __future__ import annotations
 
-from typing import Any
+from typing import TYPE_CHECKING, Any
 
 import numpy as np
-from numpy.typing import ArrayLike
 
 from bearingload import validate
 from bearingload.errors import InputError
 from bearingload.numerics import scalar_out
+
+if TYPE_CHECKING:
+    from numpy.typing import ArrayLike
 
 #: Which ring rotates relative to the load: the values ``rotating`` accepts.
 ROTATING = ("inner", "outer")

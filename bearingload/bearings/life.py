@@ -21,16 +21,18 @@ Units: C and P in any one force unit (the result is in the same unit); life in
 
 from __future__ import annotations
 
-from typing import Any
+from typing import TYPE_CHECKING, Any
 
 import numpy as np
-from numpy.typing import ArrayLike
 
 from bearingload.bearings import angular_factors
 from bearingload.constants import BALL_LIFE_EXPONENT, ROLLER_LIFE_EXPONENT  # noqa: E402,F401
 from bearingload.errors import InputError
 from bearingload.numerics import scalar_out
 from bearingload.validate import finite_positive
+
+if TYPE_CHECKING:
+    from numpy.typing import ArrayLike
 
 
 def rating_life(C: ArrayLike, P: ArrayLike, exponent: ArrayLike = BALL_LIFE_EXPONENT) -> Any:

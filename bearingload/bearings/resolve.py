@@ -34,7 +34,6 @@ from __future__ import annotations
 
 import math
 import re
-from dataclasses import dataclass
 from typing import Any
 
 from bearingload.bearings.catalog import (
@@ -63,6 +62,7 @@ from bearingload.bearings.resolved import (
     resolve_clearance,
 )
 from bearingload.errors import InputError
+from bearingload.lazy_dataclass import dataclass
 from bearingload.validate import ball_spacing, finite_positive
 
 

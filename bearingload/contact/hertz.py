@@ -44,16 +44,18 @@ with the exact solution.
 from __future__ import annotations
 
 import math
-from typing import Any, NamedTuple
+from typing import TYPE_CHECKING, Any, NamedTuple
 
 import numpy as np
-from numpy.typing import ArrayLike
 
 from bearingload import validate
 from bearingload.constants import BALL_EXPONENT, ROLLER_EXPONENT, STEEL_MODULUS, STEEL_POISSON
 from bearingload.contact import _hertz_scalar
 from bearingload.errors import ConvergenceError
 from bearingload.numerics import elliptic_integrals, scalar_out
+
+if TYPE_CHECKING:
+    from numpy.typing import ArrayLike
 
 #: Young's modulus and Poisson's ratio of bearing steel (bearingload.constants). [MPa], [-]
 E_STEEL = STEEL_MODULUS

@@ -9,7 +9,6 @@ from __future__ import annotations
 import dataclasses
 import math
 from collections.abc import Sequence
-from dataclasses import dataclass
 from typing import Any
 
 import numpy as np
@@ -17,6 +16,7 @@ import numpy as np
 from bearingload.bearings.preload import Preload
 from bearingload.bearings.resolved import ResolvedBearing
 from bearingload.errors import InputError
+from bearingload.lazy_dataclass import dataclass
 from bearingload.models.pair import PairDistribution
 from bearingload.studies.combined_bearing import CombinedCase
 

@@ -15,7 +15,6 @@ without an axial load).
 from __future__ import annotations
 
 from collections.abc import Sequence
-from dataclasses import dataclass
 from typing import TYPE_CHECKING, Any
 
 import numpy as np
@@ -23,6 +22,7 @@ import numpy as np
 from bearingload.bearings.mounting import result_fields
 from bearingload.bearings.resolve import ResolvedBearing
 from bearingload.errors import InputError
+from bearingload.lazy_dataclass import dataclass
 from bearingload.studies.matrix import matrix_columns
 
 if TYPE_CHECKING:  # the solver is imported where a case is solved
