@@ -320,11 +320,23 @@ def picks_of(pick: str) -> tuple[str, ...]:
 
 @dataclass(frozen=True)
 class ClearanceSpec:
-    """A clearance as typed: a length G_r [mm] or a clearance class."""
+    """A clearance as typed: a length G_r [mm] or a clearance class.
+
+    Raises
+    ------
+    InputError
+        (parameter ``clearance``) a length that is not a finite number (NaN, infinity, text).
+    """
 
     length: float | None = None
     cls: str | None = None
     text: str = ""
+
+    def __post_init__(self) -> None:
+        if self.length is not None:
+            from bearingload.validate import finite
+
+            finite("clearance", self.length)
 
 
 def parse_clearance(text: str | float | None) -> ClearanceSpec | None:

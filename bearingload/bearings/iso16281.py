@@ -85,10 +85,8 @@ def contact_ratings(
     z = validate.ball_count(balls).astype(float)
     dw = validate.positive("ball_diameter", ball_diameter, "mm")
     dpw = validate.positive("pitch_diameter", pitch_diameter, "mm")
-    fi = validate.finite("f_i", f_i)
-    fo = validate.finite("f_o", f_o)
-    if np.any(fi <= 0.5) or np.any(fo <= 0.5):
-        raise InputError("f_i", "groove conformities must be greater than 0.5")
+    fi = validate.conformity("f_i", f_i)
+    fo = validate.conformity("f_o", f_o)
     alpha = np.deg2rad(validate.finite("contact_angle", contact_angle))
     cos_a = np.cos(alpha)
     if np.any(cos_a <= 0):

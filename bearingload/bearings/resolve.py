@@ -63,7 +63,7 @@ from bearingload.bearings.resolved import (
 )
 from bearingload.errors import InputError
 from bearingload.lazy_dataclass import dataclass
-from bearingload.validate import ball_spacing, finite_positive
+from bearingload.validate import ball_spacing, conformity, finite_positive
 
 
 def resolve_bearing(
@@ -93,7 +93,8 @@ def resolve_bearing(
     Parameters
     ----------
     designation : str, optional
-        Catalogue designation (``306``, ``6306-2RS/C3``, ``75-313``).
+        Catalogue designation (``306``, ``6306-2RS/C3``, ``75-313``); a number is read as its
+        text (``6205``), as :func:`bearingload.bearings.catalog.lookup` reads it.
     balls : int, optional
         Number of balls z (required without a designation).
     ball_diameter, pitch_diameter : float, optional
@@ -141,6 +142,8 @@ def resolve_bearing(
         ``pitch_diameter``, ``f_i``, ``f_o``), missing inputs, a clearance class without a bore
         (``clearance``), bad modulus or Poisson's ratio.
     """
+    if designation is not None and not isinstance(designation, str):
+        designation = str(designation)  # 6205 read as "6205", as catalog.lookup reads it
     _check_inputs(modulus, stiffness, ball_diameter, pitch_diameter, poisson, clearance_pick)
     mounting = Mounting(shaft_fit, housing_fit, shaft_bore, housing_diameter,
                         inner_ring_temperature, outer_ring_temperature)  # fmt: skip
@@ -374,6 +377,9 @@ def _ball_set(
         raise InputError("balls", f"the number of balls must be a whole number >= 1, not {balls!r}")
     if dw is not None and dm is not None:
         ball_spacing(balls, dw, dm)
+    for name in ("f_i", "f_o"):  # the ring's rule, whether or not a Hertz stiffness follows
+        if given[name] is not None:
+            conformity(name, given[name])
     fi = given["f_i"] if given["f_i"] is not None or dw is None else DEFAULT_F_I
     fo = given["f_o"] if given["f_o"] is not None or dw is None else DEFAULT_F_O
     if stiffness is None and (dw is None or dm is None):
