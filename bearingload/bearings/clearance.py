@@ -389,11 +389,12 @@ def clearance_length(spec: ClearanceSpec | None) -> float:
     if spec is None:
         return 0.0
     if spec.length is None:
-        raise InputError("clearance", _NEEDS_BORE.format(spec.text))
+        raise InputError("clearance", NEEDS_BORE.format(spec.text))
     return spec.length
 
 
-_NEEDS_BORE = (
+#: The refusal of a clearance class where no bore resolves it ({}: the class as typed).
+NEEDS_BORE = (
     "a clearance class ({}) is resolved by the bore; give a bearing designation, or "
     "'clearance' as a length, e.g. 20um"
 )

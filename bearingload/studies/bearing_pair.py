@@ -207,10 +207,10 @@ def _singles(
     """Each bearing of the case(s) ``r`` as a single combined case (its lives, pressures, P0,
     s0, checks; arrays over the cases); each bearing's tilt weighed as one bearing's is
     (:func:`bearingload.studies.combined_bearing.warned_tilt`)."""
-    from bearingload.studies.combined_bearing import _combined_case
+    from bearingload.studies.combined_bearing import combined_case
 
     return [
-        _combined_case(
+        combined_case(
             b, rk, rk.load, rk.axial_load, rk.moment, None, None, lever, rotating, dynamic_rating
         )
         for rk in r.bearings
