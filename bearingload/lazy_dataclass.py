@@ -1,18 +1,22 @@
-"""``dataclass``: :func:`dataclasses.dataclass` that builds ``__repr__``, ``__eq__``, ``__hash__``
-and the order methods when one of them is first looked up, not when the class is defined.
+"""``dataclass``: :func:`dataclasses.dataclass` that builds a class's methods when the class is
+first used, and its comparison and text methods when one of them is first looked up.
 
-A terminal command imports some thirty dataclasses and compares, hashes or prints few of
-them; :mod:`dataclasses` compiles every method it adds from source text, and that is most of
-what a dataclass costs at import. This decorator takes the same arguments and gives the same
-class: ``__init__`` (and a frozen class's ``__setattr__`` and ``__delattr__``), the fields,
-``__match_args__`` and ``__dataclass_params__`` at once, as :mod:`dataclasses` does; the
-comparison and text methods are the ones :mod:`dataclasses` builds, built by it for a twin of
-the class with the same fields when the class first needs one (those methods name no class:
-they read ``self.__class__``). A class it cannot treat so (``slots=True``, a dataclass base, one
-of those methods of its own, ``order`` without ``eq``) goes to :func:`dataclasses.dataclass`
-as it is.
+A terminal command imports some thirty dataclasses, creates instances of two thirds of them
+and compares, hashes or prints few; :mod:`dataclasses` compiles every method it adds from
+source text, and that is most of what a dataclass costs at import. This decorator takes the
+same arguments and gives the same class, built in two steps by :mod:`dataclasses` itself:
 
-Type checkers see :func:`dataclasses.dataclass` itself.
+1. at the first instance (or the first look at its fields, ``__init__``, a frozen class's
+   ``__setattr__`` and ``__delattr__``, ``__match_args__`` or ``__dataclass_params__``):
+   those, as :mod:`dataclasses` builds them (a class with a ``field(...)`` default is built so
+   at once, its class attribute then being the default as :mod:`dataclasses` leaves it);
+2. at the first look at ``__repr__``, ``__eq__``, ``__hash__`` or an order method: all of
+   these, built by :mod:`dataclasses` for a twin of the class with the same fields (these
+   methods name no class: they read ``self.__class__``).
+
+A class it cannot treat so (``slots=True``, a dataclass base, no docstring, one of those methods
+of its own, ``order`` without ``eq``) goes to :func:`dataclasses.dataclass` as it is. Type
+checkers see :func:`dataclasses.dataclass` itself.
 """
 
 from __future__ import annotations
@@ -20,7 +24,7 @@ from __future__ import annotations
 import dataclasses
 from typing import TYPE_CHECKING, Any
 
-#: The methods built on first use, each with the option that asks for it.
+#: The methods of step 2, each with the option that asks for it.
 DEFERRED = {
     "__repr__": "repr",
     "__eq__": "eq",
@@ -32,10 +36,21 @@ DEFERRED = {
 }
 #: The options of those methods, with the defaults of :func:`dataclasses.dataclass`.
 METHOD_OPTIONS = {"repr": True, "eq": True, "order": False, "unsafe_hash": False}
+#: What step 1 puts in the class, each with the option that asks for it (None: always).
+FIRST_STEP = {
+    "__init__": "init",
+    "__setattr__": "frozen",
+    "__delattr__": "frozen",
+    "__match_args__": "match_args",
+    "__dataclass_fields__": None,
+    "__dataclass_params__": None,
+}
+#: The defaults of the options of step 1, as :func:`dataclasses.dataclass` has them.
+FIRST_OPTIONS = {"init": True, "frozen": False, "match_args": True}
 
 
 class Deferred:
-    """Stands in a class's dict for a method not built yet; the first lookup builds them all."""
+    """Stands in a class's dict for what is not built yet; the first lookup builds it."""
 
     def __init__(self, name: str, cls: type, options: dict[str, Any]) -> None:
         self.name = name
@@ -43,18 +58,38 @@ class Deferred:
         self.options = options
 
     def __get__(self, obj: object, owner: type | None = None) -> Any:
-        build_deferred(self.cls, self.options)
+        if self.name in DEFERRED:
+            build_deferred(self.cls, self.options)
+        else:
+            build_class(self.cls, self.options)
         return getattr(obj if obj is not None else owner or self.cls, self.name)
 
 
+def build_class(cls: type, options: dict[str, Any]) -> None:
+    """Step 1: :func:`dataclasses.dataclass` with ``options`` but none of the methods of step
+    2 (their stand-ins stay), then the ``__dataclass_params__`` of ``options`` themselves."""
+    built = cls.__dict__.get("__dataclass_fields__")
+    if built is not None and not isinstance(built, Deferred):
+        return
+    for name in FIRST_STEP:
+        if isinstance(cls.__dict__.get(name), Deferred):
+            delattr(cls, name)
+    dataclasses.dataclass(
+        cls, **{**options, "repr": False, "eq": False, "order": False, "unsafe_hash": False}
+    )
+    params = cls.__dataclass_params__  # type: ignore[attr-defined]
+    for option, value in METHOD_OPTIONS.items():  # the options asked for, not those used here
+        setattr(params, option, options.get(option, value))
+
+
 def build_deferred(cls: type, options: dict[str, Any]) -> None:
-    """Put in place of the stand-ins of ``cls`` the methods :mod:`dataclasses` builds with
-    ``options`` (``repr``, ``eq``, ``order``, ``unsafe_hash``, ``frozen``) for a class of its
-    fields; where it builds none, remove the stand-in (the method is inherited)."""
+    """Step 2: put in place of the stand-ins of ``cls`` the methods :mod:`dataclasses` builds
+    with ``options`` for a class of its fields; where it builds none, remove the stand-in (the
+    method is inherited)."""
     waiting = [n for n in DEFERRED if isinstance(cls.__dict__.get(n), Deferred)]
     if not waiting:
         return
-    fields = dataclasses.fields(cls)
+    fields = dataclasses.fields(cls)  # step 1 first, if not done
     body: dict[str, Any] = {
         "__module__": cls.__module__,
         "__qualname__": cls.__qualname__,
@@ -62,7 +97,10 @@ def build_deferred(cls: type, options: dict[str, Any]) -> None:
     }
     for f in fields:
         body[f.name] = dataclasses.field(repr=f.repr, hash=f.hash, compare=f.compare)
-    twin: type = dataclasses.dataclass(type(cls.__name__, (), body), init=False, **options)
+    later = {k: options.get(k, v) for k, v in METHOD_OPTIONS.items()}
+    twin: type = dataclasses.dataclass(
+        type(cls.__name__, (), body), init=False, frozen=options.get("frozen", False), **later
+    )
     for name in waiting:
         if name in twin.__dict__:
             setattr(cls, name, twin.__dict__[name])
@@ -72,23 +110,26 @@ def build_deferred(cls: type, options: dict[str, Any]) -> None:
 
 def _lazy(cls: type, options: dict[str, Any]) -> type:
     methods = {k: options.get(k, v) for k, v in METHOD_OPTIONS.items()}
+    first = {k: options.get(k, v) for k, v in FIRST_OPTIONS.items()}
+    own = cls.__dict__
     if (
         options.get("slots")
+        or not own.get("__doc__")
         or (methods["order"] and not methods["eq"])
-        or any(name in cls.__dict__ for name in DEFERRED)
+        or any(name in own for name in DEFERRED)
+        or (first["frozen"] and ("__setattr__" in own or "__delattr__" in own))
         or any(hasattr(base, "__dataclass_fields__") for base in cls.__mro__[1:])
     ):
         return dataclasses.dataclass(cls, **options)
-    dataclasses.dataclass(
-        cls, **{**options, "repr": False, "eq": False, "order": False, "unsafe_hash": False}
-    )
-    params = cls.__dataclass_params__  # type: ignore[attr-defined]
-    for option, value in methods.items():  # the options asked for, not those of the light pass
-        setattr(params, option, value)
-    later = {**methods, "frozen": options.get("frozen", False)}
-    for name, option in DEFERRED.items():
-        if methods[option] or (name == "__hash__" and methods["unsafe_hash"]):
-            setattr(cls, name, Deferred(name, cls, later))
+    for name, asked in DEFERRED.items():
+        if methods[asked] or (name == "__hash__" and methods["unsafe_hash"]):
+            setattr(cls, name, Deferred(name, cls, options))
+    if any(isinstance(v, dataclasses.Field) for v in own.values()):
+        build_class(cls, options)  # a field(...) default: the class attribute changes at once
+        return cls
+    for name, step in FIRST_STEP.items():
+        if (step is None or first[step]) and name not in own:
+            setattr(cls, name, Deferred(name, cls, options))
     return cls
 
 
@@ -97,7 +138,8 @@ if TYPE_CHECKING:
 else:
 
     def dataclass(cls=None, /, **options):
-        """:func:`dataclasses.dataclass`, its comparison and text methods built on first use."""
+        """:func:`dataclasses.dataclass`, built on first use (step 1) and its comparison and
+        text methods on their first use (step 2)."""
         if cls is None:
             return lambda c: _lazy(c, options)
         return _lazy(cls, options)

@@ -35,13 +35,46 @@ OPTIONS = [{}, {"frozen": True}, {"order": True}, {"eq": False}, {"unsafe_hash":
 
 
 def test_the_comparison_and_text_methods_wait_for_their_first_use():
-    _, cls = twins(frozen=True)
+    _, cls = twins(frozen=True)  # a field(...) default: __init__ is built at once
     assert isinstance(vars(cls)["__repr__"], lazy_dataclass.Deferred)
     assert isinstance(vars(cls)["__eq__"], lazy_dataclass.Deferred)
-    assert inspect.isfunction(vars(cls)["__init__"])  # built at once
+    assert inspect.isfunction(vars(cls)["__init__"])
     assert cls(1.0) == cls(1.0)
     assert inspect.isfunction(vars(cls)["__repr__"])
     assert inspect.isfunction(vars(cls)["__eq__"])
+
+
+def test_a_class_is_built_at_its_first_instance():
+    @lazy(frozen=True)
+    class Plain:
+        """Plain defaults only."""
+
+        x: float
+        label: str = "p"
+
+    assert isinstance(vars(Plain)["__init__"], lazy_dataclass.Deferred)
+    assert isinstance(vars(Plain)["__setattr__"], lazy_dataclass.Deferred)
+    p = Plain(1.0)
+    assert inspect.isfunction(vars(Plain)["__init__"])
+    assert isinstance(vars(Plain)["__repr__"], lazy_dataclass.Deferred)  # not asked for yet
+    with pytest.raises(dataclasses.FrozenInstanceError):
+        p.x = 2.0
+    assert Plain.label == "p"
+    assert repr(p).endswith("Plain(x=1.0, label='p')")
+
+
+def test_a_class_not_yet_built_answers_as_a_dataclass():
+    @lazy
+    class Unused:
+        """Never instantiated before the questions."""
+
+        x: int
+        y: int = 2
+
+    assert dataclasses.is_dataclass(Unused)
+    assert [f.name for f in dataclasses.fields(Unused)] == ["x", "y"]
+    assert str(inspect.signature(Unused)) == "(x: 'int', y: 'int' = 2) -> None"
+    assert Unused.__match_args__ == ("x", "y")
 
 
 @pytest.mark.parametrize("options", OPTIONS, ids=str)

@@ -34,7 +34,7 @@ from __future__ import annotations
 
 import math
 import re
-from typing import Any
+from typing import TYPE_CHECKING, Any
 
 from bearingload.bearings.catalog import (
     DEFAULT_F_I,
@@ -50,8 +50,6 @@ from bearingload.bearings.clearance import (
     parse_clearance,
     picks_of,
 )
-from bearingload.bearings.materials import BallMaterial
-from bearingload.bearings.materials import ball_material as find_ball_material
 from bearingload.bearings.mounting import Mounting, check_mounting, mount
 from bearingload.bearings.resolved import (
     DEFAULT_MODULUS,
@@ -64,6 +62,9 @@ from bearingload.bearings.resolved import (
 from bearingload.errors import InputError
 from bearingload.lazy_dataclass import dataclass
 from bearingload.validate import ball_spacing, conformity, finite_positive
+
+if TYPE_CHECKING:
+    from bearingload.bearings.materials import BallMaterial
 
 
 def resolve_bearing(
@@ -176,7 +177,11 @@ def resolve_bearing(
     prov = g.provenance + _ball_set_provenance(g, given)
     e = DEFAULT_MODULUS if modulus is None else float(modulus)
     nu = DEFAULT_POISSON if poisson is None else float(poisson)
-    material = None if ball_material is None else find_ball_material(ball_material)
+    material = None
+    if ball_material is not None:
+        from bearingload.bearings.materials import ball_material as find_ball_material
+
+        material = find_ball_material(ball_material)
     k_i = k_o = k_hertz = None
     if g.dw is not None and g.dm is not None and g.fi is not None and g.fo is not None:
         from bearingload.contact.hertz import ball_stiffness
