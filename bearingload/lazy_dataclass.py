@@ -16,12 +16,15 @@ same arguments and gives the same class, built in two steps by :mod:`dataclasses
 
 A class it cannot treat so (``slots=True``, a dataclass base, no docstring, one of those methods
 of its own, ``order`` without ``eq``) goes to :func:`dataclasses.dataclass` as it is. Type
-checkers see :func:`dataclasses.dataclass` itself.
+checkers see :func:`dataclasses.dataclass` itself. Each step runs once, under a lock; a thread
+that creates the first instance of a class while another thread is building it may still find
+no ``__init__`` for that moment (the package starts no threads).
 """
 
 from __future__ import annotations
 
 import dataclasses
+from _thread import RLock
 from typing import TYPE_CHECKING, Any
 
 #: The methods of step 2, each with the option that asks for it.
@@ -47,6 +50,8 @@ FIRST_STEP = {
 }
 #: The defaults of the options of step 1, as :func:`dataclasses.dataclass` has them.
 FIRST_OPTIONS = {"init": True, "frozen": False, "match_args": True}
+#: Held while a step runs (re-entered: step 2 runs step 1 first).
+_BUILDING = RLock()
 
 
 class Deferred:
@@ -58,10 +63,11 @@ class Deferred:
         self.options = options
 
     def __get__(self, obj: object, owner: type | None = None) -> Any:
-        if self.name in DEFERRED:
-            build_deferred(self.cls, self.options)
-        else:
-            build_class(self.cls, self.options)
+        with _BUILDING:
+            if self.name in DEFERRED:
+                build_deferred(self.cls, self.options)
+            else:
+                build_class(self.cls, self.options)
         return getattr(obj if obj is not None else owner or self.cls, self.name)
 
 
