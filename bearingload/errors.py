@@ -47,6 +47,9 @@ class InputError(BearingloadError, ValueError):
         What the user can do instead, appended to the message after ``; ``.
     reason : str, optional
         A stable tag of the refusal (``"too_fast"``, ``"too_light"`` ...) a caller may act on.
+    element : str, optional
+        Of an array input, the first offending element and its value (``[3] = -1 N``): the
+        text reads ``radial_load[3] = -1 N: must be >= 0 N``; empty for one number.
     """
 
     def __init__(
@@ -56,13 +59,15 @@ class InputError(BearingloadError, ValueError):
         *,
         way_out: str | None = None,
         reason: str | None = None,
+        element: str = "",
     ) -> None:
         self.parameter = parameter
         self.problem = message  # without the way out
         self.way_out = way_out
         self.reason = reason
+        self.element = element
         self.message = message if way_out is None else f"{message}; {way_out}"
-        super().__init__(f"{parameter}: {self.message}")
+        super().__init__(f"{parameter}{element}: {self.message}")
 
     def named(self, parameter: str) -> InputError:
         """The same refusal (its kind and fields) naming its parameter as the caller calls it."""
@@ -70,7 +75,7 @@ class InputError(BearingloadError, ValueError):
         new.parameter = parameter
         if isinstance(getattr(new, "parameters", None), tuple):
             new.parameters = (parameter, *new.parameters[1:])
-        Exception.__init__(new, f"{parameter}: {new.message}")
+        Exception.__init__(new, f"{parameter}{new.element}: {new.message}")
         return new
 
     def with_way_out(self, way_out: str) -> InputError:
@@ -78,7 +83,7 @@ class InputError(BearingloadError, ValueError):
         new = self._copy()
         new.way_out = way_out
         new.message = f"{new.problem}; {way_out}"
-        Exception.__init__(new, f"{new.parameter}: {new.message}")
+        Exception.__init__(new, f"{new.parameter}{new.element}: {new.message}")
         return new
 
 

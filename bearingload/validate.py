@@ -25,7 +25,11 @@ def finite(name: str, value: object) -> np.ndarray:
             return np.array(number)
     raw = np.asarray(value)
     if isinstance(value, (bool, np.bool_)) or raw.dtype == bool:
-        raise InputError(name, f"must be a number, not a boolean (got {value!r})")
+        raise InputError(
+            name,
+            f"must be a number, not a boolean (got {value!r})",
+            element=element(raw, np.ones(raw.shape, dtype=bool)),
+        )
     try:
         if raw.dtype.kind in "USO" and any(isinstance(v, (str, bytes)) for v in raw.flat):
             raise ValueError  # numpy would read "1000" as 1000.0, and "1 kN" not at all
@@ -35,9 +39,14 @@ def finite(name: str, value: object) -> np.ndarray:
             name,
             f"must be a number (got {value!r}); the library takes N, mm, N/mm^m and degrees "
             "(bearingload.units.parse_quantity reads text with a unit)",
+            element=element(raw, _not_numbers(raw)),
         ) from None
     if not np.all(np.isfinite(arr)):
-        raise InputError(name, "must be a finite number (got NaN or infinity)")
+        raise InputError(
+            name,
+            "must be a finite number (got NaN or infinity)",
+            element=element(arr, ~np.isfinite(arr)),
+        )
     return arr
 
 
@@ -49,7 +58,9 @@ def each_finite(**values: object) -> list[np.ndarray]:
 def require(name: str, value: object, rule: str, ok: Any) -> None:
     """Raise :class:`InputError` ``<name>: must be <rule>; got <value>`` unless every ``ok``."""
     if not np.all(ok):
-        raise InputError(name, f"must be {rule}; got {value!r}")
+        raise InputError(
+            name, f"must be {rule}; got {value!r}", element=element(value, np.logical_not(ok))
+        )
 
 
 def positive_number(name: str, value: object) -> np.ndarray:
@@ -70,7 +81,44 @@ def positive(name: str, value: object, unit: str) -> np.ndarray:
     """Return ``value`` as a float array, raising unless every element is finite and > 0."""
     arr = finite(name, value)
     if np.any(arr <= 0):
-        raise InputError(name, f"must be greater than 0 {unit} (got {_worst(arr, arr <= 0)})")
+        raise InputError(
+            name,
+            f"must be greater than 0 {unit} (got {_worst(arr, arr <= 0)})",
+            element=element(arr, arr <= 0, unit),
+        )
+    return arr
+
+
+def at_least(name: str, value: object, lowest: float, unit: str) -> np.ndarray:
+    """Return ``value`` as a float array, raising unless every element is finite and
+    >= ``lowest`` [``unit``] (``radial_load: must be >= 0 N``)."""
+    arr = finite(name, value)
+    if np.any(arr < lowest):
+        raise InputError(
+            name, f"must be >= {lowest:g} {unit}", element=element(arr, arr < lowest, unit)
+        )
+    return arr
+
+
+#: Groove conformity f = r/D_w, inner (``f_i``) or outer (``f_o``): the groove's radius r lies
+#: between the ball's radius (f = 0.5: no room to roll) and its diameter (f = 1), both
+#: excluded. The one rule of the command line, the catalogue and every model. [-]
+CONFORMITY_RANGE = (0.5, 1.0)
+
+
+def conformity(name: str, value: object) -> np.ndarray:
+    """Return a groove conformity ``value`` (``f_i``, ``f_o``) as a float array, raising unless
+    every element lies in :data:`CONFORMITY_RANGE` (excluded ends)."""
+    arr = finite(name, value)
+    low, high = CONFORMITY_RANGE
+    bad = ~((arr > low) & (arr < high))
+    if np.any(bad):
+        raise InputError(
+            name,
+            f"groove conformity r/D_w must lie in ({low:g}, {high:g}), the groove radius between "
+            f"the ball's radius and its diameter; got {_worst(arr, bad)}",
+            element=element(arr, bad),
+        )
     return arr
 
 
@@ -79,7 +127,11 @@ def finite_positive(name: str, value: object) -> np.ndarray:
     arr = np.asarray(value, dtype=float)
     good = np.isfinite(arr) & (arr > 0)
     if not np.all(good):  # the first offending value, not the repr of an array
-        raise InputError(name, f"must be a finite number greater than 0; got {_worst(arr, ~good)}")
+        raise InputError(
+            name,
+            f"must be a finite number greater than 0; got {_worst(arr, ~good)}",
+            element=element(arr, ~good),
+        )
     return arr
 
 
@@ -87,10 +139,17 @@ def ball_count(value: object, *, name: str = "balls", maximum: int = 100_000) ->
     """Return the number of balls as an int array; each must be a whole number 1 <= z <= maximum."""
     arr = finite(name, value)
     if np.any(arr != np.round(arr)):
-        raise InputError(name, f"must be a whole number (got {_worst(arr, arr != np.round(arr))})")
+        bad = arr != np.round(arr)
+        raise InputError(
+            name, f"must be a whole number (got {_worst(arr, bad)})", element=element(arr, bad)
+        )
     if np.any(arr < 1) or np.any(arr > maximum):
         bad = (arr < 1) | (arr > maximum)
-        raise InputError(name, f"must be between 1 and {maximum} (got {_worst(arr, bad)})")
+        raise InputError(
+            name,
+            f"must be between 1 and {maximum} (got {_worst(arr, bad)})",
+            element=element(arr, bad),
+        )
     return arr.astype(np.int64)
 
 
@@ -102,6 +161,7 @@ def exponent(value: object, *, name: str = "exponent") -> np.ndarray:
         raise InputError(
             name,
             f"must be between 1 and 3 (1.5 for balls, 10/9 for rollers; got {_worst(arr, bad)})",
+            element=element(arr, bad),
         )
     return arr
 
@@ -125,8 +185,42 @@ def broadcast_shape(arrays: dict[str, Any]) -> tuple[int, ...]:
 
 def _worst(arr: np.ndarray, bad: np.ndarray) -> str:
     """The first offending value, unrounded (shortest repr: 8.0000000001 stays 8.0000000001)."""
-    v = float(np.asarray(arr)[np.asarray(bad)].flat[0])
+    return _shown(np.asarray(arr)[np.asarray(bad)].flat[0])
+
+
+def _shown(value: Any) -> str:
+    """One value as a message shows it: a whole number without ``.0``, else its shortest repr."""
+    item = value.item() if isinstance(value, np.generic) else value
+    if isinstance(item, bool) or not isinstance(item, (int, float)):
+        return repr(item)
+    v = float(item)
     return repr(int(v)) if v.is_integer() and abs(v) < 1e16 else repr(v)
+
+
+def element(value: object, bad: Any, unit: str = "") -> str:
+    """``[3] = -1 N``: the index and value of the first element of an array input where ``bad``
+    holds, for :class:`InputError` (``radial_load[3] = -1 N: must be >= 0 N``); empty for one
+    number (an array of one too), or where ``bad`` is not of the input's shape (the input
+    broadcast with others).
+    Computed only on the way to an error: a valid input pays nothing for it."""
+    arr = np.asarray(value)
+    flags = np.asarray(bad)
+    if arr.size < 2 or flags.shape != arr.shape or not flags.any():
+        return ""
+    index = np.unravel_index(int(np.flatnonzero(flags)[0]), arr.shape)
+    where = ", ".join(str(int(i)) for i in index)
+    return f"[{where}] = {_shown(arr[index])}" + (f" {unit}" if unit else "")
+
+
+def _not_numbers(raw: np.ndarray) -> np.ndarray:
+    """Where an array holds an element that is not a number (text, None, an object)."""
+    out = np.zeros(raw.shape, dtype=bool)
+    for i, v in np.ndenumerate(raw):
+        try:
+            out[i] = isinstance(v, (str, bytes)) or float(v) is None  # float() refuses the rest
+        except (TypeError, ValueError):
+            out[i] = True
+    return out
 
 
 def ball_spacing(balls: object, ball_diameter: object, pitch_diameter: object) -> None:

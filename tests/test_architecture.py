@@ -22,6 +22,7 @@ LAYERS = {
     "bearingload": 0,  # the package's own __init__ (lazy public names, no static import)
     "errors": 0,
     "constants": 0,
+    "lazy_dataclass": 0,  # dataclasses.dataclass, the comparison and text methods built on use
     "units": 1,
     "validate": 1,
     "numerics": 1,
@@ -361,3 +362,130 @@ def test_the_message_check_finds_a_splice():
         "    raise InputError('a', exc.problem, way_out='w')\n"
     )
     assert _message_reads(ast.parse(source)) == [4, 6, 8, 10, 11, 12, 13]
+
+
+def _is_private(name: str) -> bool:
+    return name.startswith("_") and not (name.startswith("__") and name.endswith("__"))
+
+
+def _is_module(name: str, modules: dict[str, tuple[Path, bool]]) -> bool:
+    """A module of the package: a Python file, a package or a compiled one (``models._core``)."""
+    if name in modules:
+        return True
+    *parent, last = name.split(".")
+    folder = PACKAGE.parent.joinpath(*parent)
+    return (folder / f"{last}.pyx").exists() or any(folder.glob(f"{last}.*.so"))
+
+
+def private_reads() -> set[tuple[str, str]]:
+    """(module, ``other_module._name``): every read of a private name of another module of the
+    package, by ``from other import _name`` or by ``alias._name`` where ``alias`` is a module
+    of the package (imported as such anywhere in the file, ``import a.b as m``, ``from a
+    import b``, ``from a import b as m``). Private modules (``_core``, ``_ring``) are modules,
+    not names read: importing them is not counted; dunder names are not private."""
+    modules = _modules()
+    found: set[tuple[str, str]] = set()
+    for name, (path, is_package) in modules.items():
+        base = name.split(".") if is_package else name.split(".")[:-1]
+        tree = ast.parse(path.read_text(encoding="utf-8"))
+        aliases: dict[str, str] = {}  # a local name -> the module of the package it binds
+        for node in ast.walk(tree):
+            if isinstance(node, ast.Import):
+                for a in node.names:
+                    if a.asname and _is_module(a.name, modules):
+                        aliases[a.asname] = a.name
+                    elif _is_module(a.name, modules):
+                        aliases[a.name.split(".")[0]] = a.name.split(".")[0]
+            elif isinstance(node, ast.ImportFrom):
+                parent = base[: len(base) - node.level + 1] if node.level else []
+                module = ".".join(parent + ([node.module] if node.module else []))
+                if module.split(".")[0] != "bearingload":
+                    continue
+                for a in node.names:
+                    full = f"{module}.{a.name}"
+                    if _is_module(full, modules):
+                        aliases[a.asname or a.name] = full
+                    elif _is_private(a.name) and module != name:
+                        found.add((name, full))
+        for node in ast.walk(tree):
+            if not (isinstance(node, ast.Attribute) and _is_private(node.attr)):
+                continue
+            value, dotted = node.value, []
+            while isinstance(value, ast.Attribute):
+                dotted.insert(0, value.attr)
+                value = value.value
+            if isinstance(value, ast.Name) and value.id in aliases:
+                owner = ".".join([aliases[value.id], *dotted])
+                if owner != name and _is_module(owner, modules):
+                    found.add((name, f"{owner}.{node.attr}"))
+    return found
+
+
+#: Reads of another module's private names still to be removed (the aim is none): the
+#: models/, batch/ and cli/ ones, left to the rewrites of those parts. (reading module, name
+#: read). The list may only shrink: a new read fails the first test below, a read removed fails
+#: the second until its entry goes too.
+KNOWN_PRIVATE_READS = {
+    ("batch.pairs", "batch.solve._angles"),
+    ("batch.pairs", "batch.solve._check_rotating"),
+    ("batch.pairs", "batch.solve._hand_angular"),
+    ("batch.pairs", "batch.solve._operating"),
+    ("batch.pairs", "batch.solve._take"),
+    ("models.combined", "models._combined_ring._fast"),
+    ("models.combined", "models._combined_ring._two_sum"),
+    ("models.high_speed", "models.combined._NODE_COS"),
+    ("models.high_speed", "models.combined._NODE_W"),
+    ("models.high_speed", "models.combined._NODE_X"),
+    ("models.high_speed", "models.combined._angular_geometry"),
+    ("models.high_speed", "models.combined._directions"),
+    ("models.high_speed", "models.combined._geometry"),
+    ("models.high_speed", "models.combined._locks"),
+    ("models.high_speed", "models.combined._reference_force"),
+    ("models.pair", "models._combined_ring._fast"),
+    ("models.pair", "models._combined_ring._two_prod"),
+    ("models.pair", "models._combined_ring._two_sum"),
+    ("models.pair", "models.combined._NODE_W"),
+    ("models.pair", "models.combined._NODE_X"),
+    ("models.pair", "models.combined._StiffnessCurve"),
+    ("models.pair", "models.combined._angular_geometry"),
+    ("models.pair", "models.combined._check_scale"),
+    ("models.pair", "models.combined._directions"),
+    ("models.pair", "models.combined._hertz_setup"),
+    ("models.pair", "models.combined._reference_force"),
+    ("models.pair", "models.combined._result"),
+    ("models.pair", "models.combined._tangent"),
+    ("models.pair_speed", "models.combined._angular_geometry"),
+    ("models.pair_speed", "models.combined._directions"),
+    ("models.pair_speed", "models.combined._reference_force"),
+    ("models.pair_speed", "models.high_speed._Ring"),
+    ("models.pair_speed", "models.high_speed._Set"),
+    ("models.pair_speed", "models.high_speed._State"),
+    ("models.pair_speed", "models.high_speed._check_speed"),
+    ("models.pair_speed", "models.high_speed._result"),
+    ("models.pair_speed", "models.high_speed._stiffness_nodes"),
+}
+
+
+def _short(read: tuple[str, str]) -> tuple[str, str]:
+    return read[0].removeprefix("bearingload."), read[1].removeprefix("bearingload.")
+
+
+def test_no_module_reads_another_modules_private_names():
+    """A name that starts with ``_`` belongs to its module: another module that needs it needs
+    a public name (or the function it is used by)."""
+    new = sorted(_short(r) for r in private_reads())
+    assert [r for r in new if r not in KNOWN_PRIVATE_READS] == []
+
+
+def test_the_known_private_reads_are_all_still_there():
+    """The list of known reads only shrinks: one removed from the code goes from the list."""
+    now = {_short(r) for r in private_reads()}
+    assert sorted(KNOWN_PRIVATE_READS - now) == []
+
+
+def test_the_private_read_walk_sees_both_forms():
+    """``from module import _name`` and ``module_alias._name`` (pair.py reads combined's set-up
+    through ``from bearingload.models import combined as _comb``)."""
+    reads = {_short(r) for r in private_reads()}
+    assert ("models.pair", "models.combined._hertz_setup") in reads  # alias._name
+    assert ("batch.pairs", "batch.solve._take") in reads  # from ... import _name

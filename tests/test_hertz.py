@@ -400,9 +400,10 @@ def test_conformity_close_to_half_stays_accurate():
         (lambda: ball_stiffness(12.3, -51.0, 0.515, 0.52), "pitch_diameter: must be positive"),
         (lambda: ball_stiffness(12.3, 12.3, 0.515, 0.52), "ball_diameter: must be smaller than"),
         (lambda: ball_stiffness(60.0, 51.0, 0.515, 0.52), "ball_diameter: must be smaller than"),
-        (lambda: ball_stiffness(12.3, 51.0, 0.5, 0.52), "f_i: must be greater than 0.5"),
-        (lambda: ball_stiffness(12.3, 51.0, 0.515, 0.45), "f_o: must be greater than 0.5"),
-        (lambda: ball_stiffness(12.3, 51.0, [0.515, 0.4], 0.52), "f_i: must be greater"),
+        (lambda: ball_stiffness(12.3, 51.0, 0.5, 0.52), r"f_i: groove .* lie in \(0.5, 1\)"),
+        (lambda: ball_stiffness(12.3, 51.0, 0.515, 0.45), r"f_o: groove .* lie in \(0.5, 1\)"),
+        (lambda: ball_stiffness(12.3, 51.0, [0.515, 0.4], 0.52), r"f_i\[1\] = 0.4: groove"),
+        (lambda: ball_stiffness(12.3, 51.0, 0.515, 1.0), r"f_o: groove .* got 1$"),
         (
             lambda: ball_stiffness(float("nan"), 51.0, 0.515, 0.52),
             "ball_diameter: must be a finite",

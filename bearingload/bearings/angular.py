@@ -21,10 +21,10 @@ without a row is refused, naming the rows there are (:func:`find_angular`).
 from __future__ import annotations
 
 import re
-from dataclasses import dataclass
 from functools import lru_cache
 
 from bearingload.errors import InputError
+from bearingload.lazy_dataclass import dataclass
 
 #: ISO/maker contact-angle suffixes and the nominal angle each stands for. [°]
 ISO_SUFFIX_ANGLES: dict[str, float] = {"C": 15.0, "A5": 25.0, "AC": 25.0, "A": 30.0, "B": 40.0}
@@ -34,7 +34,9 @@ ROW_LETTERS: dict[str, str] = {"AC": "A5"}
 #: GOST 831-75 design digit (before the type digit 6) and the nominal angle. [°]
 GOST_TYPE_ANGLES: dict[str, float] = {"3": 12.0, "4": 26.0, "6": 36.0}
 
-_ISO = re.compile(
+#: The forms read, as pattern texts compiled at their first use by :func:`_match`, which a text
+#: that cannot match (a deep-groove ``306``) does not reach: ISO ``7205B``, its series first.
+_ISO = (
     r"^(?P<series>7[023])(?P<bore>\d{2})\s*[-/]?\s*(?P<letter>A5|AC|A|B|C)(?P<rest>(?:[^0-9].*)?)$"
 )
 #: A matched pair or set after the contact-angle letter (NSK's 7205BDB, 7205BDF, 7205BDT; the
@@ -44,7 +46,18 @@ _ISO = re.compile(
 _PAIR = r"D[BFT](?:[\s/-]?(?P<cls>EL|UL|[LMHA-D])(?=$|[^A-Z]|P\d))?(?=$|[^A-Z]|P\d)"
 #: DB, DF, DT followed by letters not read: a set, not one bearing.
 _PAIR_LIKE = r"D[BFT][A-Z]+"
-_GOST = re.compile(r"^(?:[^-\s]{1,6}\s*-\s*)?(?P<design>[346])6(?P<series>[1-4])(?P<bore>\d{2})$")
+#: GOST 831 ``46205``: the type digit 6 fourth from the end.
+_GOST = r"^(?:[^-\s]{1,6}\s*-\s*)?(?P<design>[346])6(?P<series>[1-4])(?P<bore>\d{2})$"
+
+
+def _match(pattern: str, norm: str) -> re.Match[str] | None:
+    """``re.match(pattern, norm)`` for the patterns above, skipped (None) where the text cannot
+    match: an ISO form starts with 7, a GOST form has the type digit 6 fourth from its end."""
+    if pattern is _ISO and not norm.startswith("7"):
+        return None
+    if pattern is _GOST and norm[-4:-3] != "6":
+        return None
+    return re.match(pattern, norm)
 
 
 @dataclass(frozen=True)
@@ -94,7 +107,7 @@ def parse_angular(text: str) -> AngularDesignation | None:
 
     raw = text.strip()
     norm = re.sub(r"\s+", " ", raw.upper())
-    m = _ISO.match(norm)
+    m = _match(_ISO, norm)
     if m:
         letter = m.group("letter")
         alpha = ISO_SUFFIX_ANGLES[letter]
@@ -103,7 +116,7 @@ def parse_angular(text: str) -> AngularDesignation | None:
         bore, row_letter = m.group("bore"), ROW_LETTERS.get(letter, letter)
         return AngularDesignation(raw, f"{m.group('series')}{bore}{row_letter}", "ISO",
                                   m.group("series"), bore, bore_from_code(bore), alpha, what)  # fmt: skip
-    m = _GOST.match(norm)
+    m = _match(_GOST, norm)
     if m:
         design, series, bore = m.group("design"), m.group("series"), m.group("bore")
         alpha = GOST_TYPE_ANGLES[design]
@@ -116,7 +129,7 @@ def parse_angular(text: str) -> AngularDesignation | None:
 
 #: A GOST 831 angular-contact designation followed by a suffix that is not read (EPK's K, K6,
 #: K7 variants, a pair suffix DB/DF/DT, a seal): the type is modelled, the suffix is not.
-_GOST_SUFFIXED = re.compile(
+_GOST_SUFFIXED = (
     r"^(?P<body>(?:[^-\s]{1,6}\s*-\s*)?(?P<name>[346]6[1-4]\d{2}))\s*[-/]?\s*(?P<rest>[A-Z].*)$"
 )
 
@@ -128,7 +141,8 @@ def refuse_gost_suffix(text: str) -> None:
 
     >>> refuse_gost_suffix("36205")  # no suffix: nothing to refuse
     """
-    m = _GOST_SUFFIXED.match(re.sub(r"\s+", " ", text.strip().upper()))
+    norm = re.sub(r"\s+", " ", text.strip().upper())
+    m = re.match(_GOST_SUFFIXED, norm) if len(norm) > 5 else None  # 5 digits and a suffix
     if m is None:
         return
     rest, name = m.group("rest").strip(), m.group("name")
@@ -161,7 +175,7 @@ def split_pair(text: str) -> tuple[str, str | None, str | None]:
     (('7205C', 'DB', 'L'), ('7008A5P4', 'DB', 'EL'))
     """
     norm = re.sub(r"\s+", " ", text.strip().upper())
-    m = _ISO.match(norm)
+    m = _match(_ISO, norm)
     found = re.search(_PAIR, m.group("rest")) if m else None
     if m is not None and found is None:
         _refuse_unread_set(text, m)
@@ -270,7 +284,7 @@ def find_angular(parsed: AngularDesignation, maker: str | None = None) -> Angula
         (``bearing``) when there is no row: names the type and the rows of that contact angle
         and series there are; (``maker``) when ``maker`` has no row for it.
     """
-    m = _ISO.match(re.sub(r"\s+", " ", parsed.text.upper()))
+    m = _match(_ISO, re.sub(r"\s+", " ", parsed.text.upper()))
     if m and not re.search(_PAIR, m.group("rest")):
         _refuse_unread_set(parsed.text, m)
     if m and re.search(_PAIR, m.group("rest")):

@@ -42,9 +42,8 @@ contact angles.
 
 from __future__ import annotations
 
-from dataclasses import dataclass
-
 from bearingload.errors import InputError
+from bearingload.lazy_dataclass import dataclass
 
 
 @dataclass(frozen=True)

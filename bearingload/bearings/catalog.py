@@ -56,10 +56,10 @@ import functools
 import math
 import re
 from collections.abc import Container
-from dataclasses import dataclass
 
 from bearingload.bearings.designation import Designation, UnmodelledBearing, parse
 from bearingload.errors import InputError
+from bearingload.lazy_dataclass import dataclass
 
 #: Default inner-groove conformity r_i / D_w (ISO/TS 16281 convention). [-]
 DEFAULT_F_I = 0.52
@@ -616,7 +616,8 @@ def check_geometry(
     InputError
         Naming the offending parameter: z not a positive integer; D_w <= 0 or
         D_w >= (D - d) / 2; d_m outside (d, D) or the balls not fitting on the ring; adjacent balls
-        overlapping (D_w >= d_m sin(pi / z)); f outside (0.5, 1).
+        overlapping (D_w >= d_m sin(pi / z)); f outside (0.5, 1)
+        (:func:`bearingload.validate.conformity`).
     """
     if isinstance(balls, bool) or not float(balls).is_integer() or balls < 1:
         raise InputError("balls", f"the number of balls must be a whole number >= 1, not {balls!r}")
@@ -641,9 +642,10 @@ def check_geometry(
             f"{pitch_diameter:g} mm (need Dw < d_m sin(pi/z) = "
             f"{pitch_diameter * math.sin(math.pi / balls):.4g} mm)",
         )
-    for name, f in (("f_i", f_i), ("f_o", f_o)):
-        if not 0.5 < f < 1.0:
-            raise InputError(name, f"groove conformity r/Dw must lie in (0.5, 1), not {f!r}")
+    from bearingload.validate import conformity  # the one rule (numpy: only when checked)
+
+    conformity("f_i", f_i)
+    conformity("f_o", f_o)
 
 
 def lookup(

@@ -45,10 +45,10 @@ from __future__ import annotations
 
 import functools
 import re
-from dataclasses import dataclass
 
 from bearingload.constants import CLEARANCE_PICKS
 from bearingload.errors import InputError
+from bearingload.lazy_dataclass import dataclass
 from bearingload.units import IMPLAUSIBLE, parse_quantity
 
 #: The ISO clearance classes the table gives, in increasing clearance.
@@ -320,11 +320,23 @@ def picks_of(pick: str) -> tuple[str, ...]:
 
 @dataclass(frozen=True)
 class ClearanceSpec:
-    """A clearance as typed: a length G_r [mm] or a clearance class."""
+    """A clearance as typed: a length G_r [mm] or a clearance class.
+
+    Raises
+    ------
+    InputError
+        (parameter ``clearance``) a length that is not a finite number (NaN, infinity, text).
+    """
 
     length: float | None = None
     cls: str | None = None
     text: str = ""
+
+    def __post_init__(self) -> None:
+        if self.length is not None:
+            from bearingload.validate import finite
+
+            finite("clearance", self.length)
 
 
 def parse_clearance(text: str | float | None) -> ClearanceSpec | None:
@@ -377,11 +389,12 @@ def clearance_length(spec: ClearanceSpec | None) -> float:
     if spec is None:
         return 0.0
     if spec.length is None:
-        raise InputError("clearance", _NEEDS_BORE.format(spec.text))
+        raise InputError("clearance", NEEDS_BORE.format(spec.text))
     return spec.length
 
 
-_NEEDS_BORE = (
+#: The refusal of a clearance class where no bore resolves it ({}: the class as typed).
+NEEDS_BORE = (
     "a clearance class ({}) is resolved by the bore; give a bearing designation, or "
     "'clearance' as a length, e.g. 20um"
 )

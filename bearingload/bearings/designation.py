@@ -55,9 +55,9 @@ References
 from __future__ import annotations
 
 import re
-from dataclasses import dataclass
 
 from bearingload.errors import InputError
+from bearingload.lazy_dataclass import dataclass
 
 #: Bore codes with a special bore diameter; every other code means d = 5 x code. [mm]
 SPECIAL_BORES: dict[str, float] = {"00": 10.0, "01": 12.0, "02": 15.0, "03": 17.0}

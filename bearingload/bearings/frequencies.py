@@ -44,14 +44,16 @@ BPFO 3.5848, FTF 0.39828, 2 BSF 4.7135 times the shaft frequency).
 
 from __future__ import annotations
 
-from dataclasses import dataclass
-from typing import Any
+from typing import TYPE_CHECKING, Any
 
 import numpy as np
-from numpy.typing import ArrayLike
 
 from bearingload.errors import InputError
+from bearingload.lazy_dataclass import dataclass
 from bearingload.validate import finite_positive
+
+if TYPE_CHECKING:
+    from numpy.typing import ArrayLike
 
 #: The rings a bearing may turn (the other one still). [-]
 ROTATING_RINGS = ("inner", "outer")

@@ -31,14 +31,16 @@ The dynamic equivalent reference load is P_ref = C_r / L10r^(1/3).
 
 from __future__ import annotations
 
-from typing import Any
+from typing import TYPE_CHECKING, Any
 
 import numpy as np
-from numpy.typing import ArrayLike
 
 from bearingload import validate
 from bearingload.errors import InputError
 from bearingload.numerics import scalar_out
+
+if TYPE_CHECKING:
+    from numpy.typing import ArrayLike
 
 #: Which ring rotates relative to the load: the values ``rotating`` accepts.
 ROTATING = ("inner", "outer")
@@ -83,10 +85,8 @@ def contact_ratings(
     z = validate.ball_count(balls).astype(float)
     dw = validate.positive("ball_diameter", ball_diameter, "mm")
     dpw = validate.positive("pitch_diameter", pitch_diameter, "mm")
-    fi = validate.finite("f_i", f_i)
-    fo = validate.finite("f_o", f_o)
-    if np.any(fi <= 0.5) or np.any(fo <= 0.5):
-        raise InputError("f_i", "groove conformities must be greater than 0.5")
+    fi = validate.conformity("f_i", f_i)
+    fo = validate.conformity("f_o", f_o)
     alpha = np.deg2rad(validate.finite("contact_angle", contact_angle))
     cos_a = np.cos(alpha)
     if np.any(cos_a <= 0):

@@ -21,16 +21,17 @@ Units: C and P in any one force unit (the result is in the same unit); life in
 
 from __future__ import annotations
 
-from typing import Any
+from typing import TYPE_CHECKING, Any
 
 import numpy as np
-from numpy.typing import ArrayLike
 
-from bearingload.bearings import angular_factors
 from bearingload.constants import BALL_LIFE_EXPONENT, ROLLER_LIFE_EXPONENT  # noqa: E402,F401
 from bearingload.errors import InputError
 from bearingload.numerics import scalar_out
 from bearingload.validate import finite_positive
+
+if TYPE_CHECKING:
+    from numpy.typing import ArrayLike
 
 
 def rating_life(C: ArrayLike, P: ArrayLike, exponent: ArrayLike = BALL_LIFE_EXPONENT) -> Any:
@@ -163,6 +164,8 @@ def angular_contact_tabulated(contact_angle: float) -> bool:
     """Whether ISO 281's X, Y of a single-row angular-contact ball bearing of this nominal
     contact angle are coded (15°, 20°, 25°, 30°, 35°, 40°, 45°; the table with its sources:
     :mod:`bearingload.bearings.angular_factors`). [°]"""
+    from bearingload.bearings import angular_factors  # angular bearings only
+
     return angular_factors.tabulated(contact_angle)
 
 
@@ -197,6 +200,8 @@ def equivalent_load_angular_contact(
     >>> float(equivalent_load_angular_contact(1000.0, 2000.0, 20.0))
     2430.0
     """
+    from bearingload.bearings import angular_factors  # angular bearings only
+
     fr, fa = _angular_loads(radial_load, axial_load)
     if abs(contact_angle - 15.0) < 1e-9:
         e, y, _, _ = _row_15(fa, C0, f0, 1)
@@ -236,6 +241,8 @@ def equivalent_load_angular_pair(
     >>> float(equivalent_load_angular_pair(1000.0, 2000.0, 40.0))
     2430.0
     """
+    from bearingload.bearings import angular_factors  # angular bearings only
+
     fr, fa = _angular_loads(radial_load, axial_load)
     if abs(contact_angle - 15.0) < 1e-9:
         e, _, y1, y2 = _row_15(fa, C0, f0, 2)
@@ -267,6 +274,8 @@ def _angular_loads(radial_load: ArrayLike, axial_load: ArrayLike) -> tuple[Any, 
 def _row_15(fa: Any, C0: float | None, f0: float | None, rows: int) -> tuple[Any, ...]:
     """e, Y, Y1, Y2 of the 15° row at the relative axial load ``i f0 F_a/C0r`` (or ``i F_a/C0r``
     without f0), ``i = rows``, linearly interpolated, the end rows held outside."""
+    from bearingload.bearings import angular_factors  # angular bearings only
+
     c0 = finite_positive("C0", C0)
     if f0 is None:
         ratio, knots = rows * fa / c0, angular_factors.ANGULAR_15_FA_C0R

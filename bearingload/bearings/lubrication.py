@@ -37,14 +37,16 @@ the pressure-viscosity coefficient alpha of a mineral oil is about 2e-8 Pa^-1
 
 from __future__ import annotations
 
-from typing import Any
+from typing import TYPE_CHECKING, Any
 
 import numpy as np
-from numpy.typing import ArrayLike
 
 from bearingload.errors import InputError
 from bearingload.numerics import scalar_out
 from bearingload.validate import finite_positive
+
+if TYPE_CHECKING:
+    from numpy.typing import ArrayLike
 
 
 def speed_needed(parameter: str) -> InputError:

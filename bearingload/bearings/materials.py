@@ -18,10 +18,9 @@ Sources:
 
 from __future__ import annotations
 
-from dataclasses import dataclass
-
 from bearingload.constants import STEEL_MODULUS, STEEL_POISSON
 from bearingload.errors import InputError
+from bearingload.lazy_dataclass import dataclass
 
 __all__ = ["BALL_MATERIALS", "BallMaterial", "ball_material"]
 

@@ -50,14 +50,16 @@ that give L10r, which P_ref sums up).
 
 from __future__ import annotations
 
-from typing import Any
+from typing import TYPE_CHECKING, Any
 
 import numpy as np
-from numpy.typing import ArrayLike
 
 from bearingload.errors import InputError
 from bearingload.numerics import scalar_out
 from bearingload.validate import finite_positive
+
+if TYPE_CHECKING:
+    from numpy.typing import ArrayLike
 
 #: ISO 281:2007 Table 12: reliability [%] -> a_1 [-].
 RELIABILITY_TABLE: dict[float, float] = {

@@ -33,11 +33,10 @@ from __future__ import annotations
 
 import dataclasses
 import math
-from dataclasses import dataclass
 from typing import Any
 
-from bearingload.bearings.tolerances import fit_limits, ring_limits
 from bearingload.errors import InputError
+from bearingload.lazy_dataclass import dataclass
 
 __all__ = [
     "MOUNTING_PARAMS",
@@ -181,12 +180,16 @@ def check_mounting(m: Mounting) -> Mounting:
     InputError
         Naming the parameter (:data:`MOUNTING_PARAMS`).
     """
-    from bearingload.bearings.tolerances import HOUSING_CLASSES, SHAFT_CLASSES
     from bearingload.units import parse_temperature
 
-    for name, allowed in (("shaft_fit", SHAFT_CLASSES), ("housing_fit", HOUSING_CLASSES)):
+    for name in ("shaft_fit", "housing_fit"):
         fit = getattr(m, name)
-        if fit is not None and str(fit).strip() not in allowed:
+        if fit is None:
+            continue
+        from bearingload.bearings.tolerances import HOUSING_CLASSES, SHAFT_CLASSES
+
+        allowed = SHAFT_CLASSES if name == "shaft_fit" else HOUSING_CLASSES
+        if str(fit).strip() not in allowed:
             raise InputError(name, f"unknown ISO 286 class {fit!r}; allowed: {' '.join(allowed)}")
     for name in ("shaft_bore", "housing_diameter"):
         value = getattr(m, name)
@@ -248,6 +251,8 @@ def mounted_clearance(b: Any, m: Mounting, clearance: float, pick: str) -> Mount
     if m.housing_diameter is not None and not m.housing_diameter > D:
         raise InputError("housing_diameter", f"must exceed the bearing's outside diameter D = "
                          f"{D:g} mm")  # fmt: skip
+    from bearingload.bearings.tolerances import fit_limits, ring_limits  # only with a fit
+
     sources: list[str] = []
     i_in = i_out = 0.0
     if m.shaft_fit is not None:

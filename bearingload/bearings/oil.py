@@ -39,13 +39,15 @@ from __future__ import annotations
 
 import functools
 import re
-from typing import Any
+from typing import TYPE_CHECKING, Any
 
 import numpy as np
-from numpy.typing import ArrayLike
 
 from bearingload.errors import InputError
 from bearingload.numerics import scalar_out
+
+if TYPE_CHECKING:
+    from numpy.typing import ArrayLike
 
 #: ISO 3448 grades: VG number -> mid-point kinematic viscosity at 40 °C. [mm^2/s]
 ISO_VG: dict[int, float] = {

@@ -23,11 +23,11 @@ is refused, naming the series that have one; so are the letters of a maker witho
 from __future__ import annotations
 
 import re
-from dataclasses import dataclass
 from functools import lru_cache
 from typing import Any
 
 from bearingload.errors import InputError
+from bearingload.lazy_dataclass import dataclass
 
 #: The classes with a table, in order of force, and the maker whose letters they are.
 CLASSES: tuple[str, ...] = ("EL", "L", "M", "H")

@@ -34,14 +34,16 @@ Units: N, mm.
 from __future__ import annotations
 
 import math
-from dataclasses import dataclass
-from typing import Any
+from typing import TYPE_CHECKING, Any
 
 import numpy as np
-from numpy.typing import ArrayLike
 
 from bearingload.errors import InputError
+from bearingload.lazy_dataclass import dataclass
 from bearingload.numerics import scalar_out
+
+if TYPE_CHECKING:
+    from numpy.typing import ArrayLike
 
 #: ISO 281:2007 Table 1: b_m of radial ball bearings (deep groove, angular contact). [-]
 B_M = 1.3

@@ -34,8 +34,7 @@ from __future__ import annotations
 
 import math
 import re
-from dataclasses import dataclass
-from typing import Any
+from typing import TYPE_CHECKING, Any
 
 from bearingload.bearings.catalog import (
     DEFAULT_F_I,
@@ -51,8 +50,6 @@ from bearingload.bearings.clearance import (
     parse_clearance,
     picks_of,
 )
-from bearingload.bearings.materials import BallMaterial
-from bearingload.bearings.materials import ball_material as find_ball_material
 from bearingload.bearings.mounting import Mounting, check_mounting, mount
 from bearingload.bearings.resolved import (
     DEFAULT_MODULUS,
@@ -63,7 +60,11 @@ from bearingload.bearings.resolved import (
     resolve_clearance,
 )
 from bearingload.errors import InputError
-from bearingload.validate import ball_spacing, finite_positive
+from bearingload.lazy_dataclass import dataclass
+from bearingload.validate import ball_spacing, conformity, finite_positive
+
+if TYPE_CHECKING:
+    from bearingload.bearings.materials import BallMaterial
 
 
 def resolve_bearing(
@@ -93,7 +94,8 @@ def resolve_bearing(
     Parameters
     ----------
     designation : str, optional
-        Catalogue designation (``306``, ``6306-2RS/C3``, ``75-313``).
+        Catalogue designation (``306``, ``6306-2RS/C3``, ``75-313``); a number is read as its
+        text (``6205``), as :func:`bearingload.bearings.catalog.lookup` reads it.
     balls : int, optional
         Number of balls z (required without a designation).
     ball_diameter, pitch_diameter : float, optional
@@ -141,6 +143,8 @@ def resolve_bearing(
         ``pitch_diameter``, ``f_i``, ``f_o``), missing inputs, a clearance class without a bore
         (``clearance``), bad modulus or Poisson's ratio.
     """
+    if designation is not None and not isinstance(designation, str):
+        designation = str(designation)  # 6205 read as "6205", as catalog.lookup reads it
     _check_inputs(modulus, stiffness, ball_diameter, pitch_diameter, poisson, clearance_pick)
     mounting = Mounting(shaft_fit, housing_fit, shaft_bore, housing_diameter,
                         inner_ring_temperature, outer_ring_temperature)  # fmt: skip
@@ -173,7 +177,11 @@ def resolve_bearing(
     prov = g.provenance + _ball_set_provenance(g, given)
     e = DEFAULT_MODULUS if modulus is None else float(modulus)
     nu = DEFAULT_POISSON if poisson is None else float(poisson)
-    material = None if ball_material is None else find_ball_material(ball_material)
+    material = None
+    if ball_material is not None:
+        from bearingload.bearings.materials import ball_material as find_ball_material
+
+        material = find_ball_material(ball_material)
     k_i = k_o = k_hertz = None
     if g.dw is not None and g.dm is not None and g.fi is not None and g.fo is not None:
         from bearingload.contact.hertz import ball_stiffness
@@ -374,6 +382,9 @@ def _ball_set(
         raise InputError("balls", f"the number of balls must be a whole number >= 1, not {balls!r}")
     if dw is not None and dm is not None:
         ball_spacing(balls, dw, dm)
+    for name in ("f_i", "f_o"):  # the ring's rule, whether or not a Hertz stiffness follows
+        if given[name] is not None:
+            conformity(name, given[name])
     fi = given["f_i"] if given["f_i"] is not None or dw is None else DEFAULT_F_I
     fo = given["f_o"] if given["f_o"] is not None or dw is None else DEFAULT_F_O
     if stiffness is None and (dw is None or dm is None):

@@ -8,13 +8,13 @@ Shared by :mod:`bearingload.bearings.resolve` (ball bearings) and
 from __future__ import annotations
 
 import dataclasses
-from dataclasses import dataclass
 from typing import Any
 
 from bearingload.bearings.catalog import BearingGeometry, LimitingSpeeds
-from bearingload.bearings.clearance import _NEEDS_BORE, PICKS, ClearanceSpec, clearance_range
+from bearingload.bearings.clearance import NEEDS_BORE, PICKS, ClearanceSpec, clearance_range
 from bearingload.constants import STEEL_MODULUS, STEEL_POISSON
 from bearingload.errors import InputError
+from bearingload.lazy_dataclass import dataclass
 
 #: Young's modulus and Poisson's ratio used when none is given (bearingload.constants). [MPa], [-]
 DEFAULT_MODULUS = STEEL_MODULUS
@@ -228,7 +228,7 @@ def resolve_clearance(
         cls = spec.cls or "CN"
         how = f"class {cls}"
     if bore is None:
-        raise InputError("clearance", _NEEDS_BORE.format(spec.text if spec else cls))
+        raise InputError("clearance", NEEDS_BORE.format(spec.text if spec else cls))
     low, high = clearance_range(bore, cls, kind)
     value = {"min": low, "mean": 0.5 * (low + high), "max": high}[pick]
     from bearingload.bearings.clearance import table_name

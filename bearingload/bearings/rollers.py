@@ -34,17 +34,19 @@ from __future__ import annotations
 import dataclasses
 import functools
 import math
-from dataclasses import dataclass
-from typing import Any
+from typing import TYPE_CHECKING, Any
 
 import numpy as np
-from numpy.typing import ArrayLike
 
 from bearingload.bearings._data import read_rows
 from bearingload.bearings.designation import Designation, parse
 from bearingload.constants import STEEL_MODULUS, STEEL_POISSON
 from bearingload.errors import InputError
+from bearingload.lazy_dataclass import dataclass
 from bearingload.numerics import scalar_out
+
+if TYPE_CHECKING:
+    from numpy.typing import ArrayLike
 
 #: L_we/D_w of the derived roller counts: mean of the published NU204, NU205, NU206. [-]
 LENGTH_RATIO = 1.017

@@ -11,7 +11,7 @@ without a speed, no a_ISO without a viscosity. The formulas are those of
 
 from __future__ import annotations
 
-from dataclasses import dataclass, field
+from dataclasses import field
 from typing import Any
 
 import numpy as np
@@ -20,6 +20,7 @@ from bearingload.bearings import lubrication as lub
 from bearingload.bearings import modified_life as ml
 from bearingload.constants import BALL_LIFE_EXPONENT, ROLLER_LIFE_EXPONENT
 from bearingload.errors import InputError
+from bearingload.lazy_dataclass import dataclass
 
 
 @dataclass(frozen=True)

@@ -17,10 +17,10 @@ Deviations in µm from the nominal size; positive = larger.
 from __future__ import annotations
 
 import functools
-from dataclasses import dataclass
 
 from bearingload.bearings._data import read_rows
 from bearingload.errors import InputError
+from bearingload.lazy_dataclass import dataclass
 
 __all__ = ["SHAFT_CLASSES", "HOUSING_CLASSES", "Limits", "fit_limits", "ring_limits"]
 

@@ -44,16 +44,18 @@ with the exact solution.
 from __future__ import annotations
 
 import math
-from typing import Any, NamedTuple
+from typing import TYPE_CHECKING, Any, NamedTuple
 
 import numpy as np
-from numpy.typing import ArrayLike
 
 from bearingload import validate
 from bearingload.constants import BALL_EXPONENT, ROLLER_EXPONENT, STEEL_MODULUS, STEEL_POISSON
 from bearingload.contact import _hertz_scalar
 from bearingload.errors import ConvergenceError
 from bearingload.numerics import elliptic_integrals, scalar_out
+
+if TYPE_CHECKING:
+    from numpy.typing import ArrayLike
 
 #: Young's modulus and Poisson's ratio of bearing steel (bearingload.constants). [MPa], [-]
 E_STEEL = STEEL_MODULUS
@@ -516,7 +518,8 @@ def ball_raceway_curvatures(
     pitch_diameter : array_like
         Pitch diameter d_m, greater than D_w. [mm]
     f_i, f_o : array_like
-        Groove conformities r_i/D_w and r_o/D_w, greater than 0.5. [-]
+        Groove conformities r_i/D_w and r_o/D_w, in (0.5, 1) (:func:`bearingload.validate.
+        conformity`). [-]
 
     >>> c = ball_raceway_curvatures(12.3, 51.0, 0.515, 0.515)
     >>> round(float(c.inner_x + c.inner_y), 4)
@@ -525,12 +528,8 @@ def ball_raceway_curvatures(
     dw = validate.positive_number("ball_diameter", ball_diameter)
     dm = validate.positive_number("pitch_diameter", pitch_diameter)
     validate.require("ball_diameter", ball_diameter, "smaller than the pitch diameter", dw < dm)
-    fi = validate.finite("f_i", f_i)
-    fo = validate.finite("f_o", f_o)
-    for name, f, raw in (("f_i", fi, f_i), ("f_o", fo, f_o)):
-        validate.require(
-            name, raw, "greater than 0.5 (groove radius larger than the ball radius)", f > 0.5
-        )
+    fi = validate.conformity("f_i", f_i)
+    fo = validate.conformity("f_o", f_o)
     # the forms below avoid the cancellations 2/D - 1/(f D) and 2/D -/+ 2/(d_m -/+ D)
     return RacewayCurvatures(
         inner_x=scalar_out(2.0 * dm / (dw * (dm - dw))),
@@ -610,7 +609,8 @@ def _ball_stiffness_scalar(
     if plain is None:
         return None
     dw, dm, fi, fo, e, n, es_given = plain
-    if not (0 < dw < dm and fi > 0.5 and fo > 0.5):
+    low, high = validate.CONFORMITY_RANGE  # outside: the array path says why
+    if not (0 < dw < dm and low < fi < high and low < fo < high):
         return None
     es = _scalar_modulus(e, n) if e_star is None else (es_given if es_given > 0 else None)
     inner = (2.0 * dm / (dw * (dm - dw)), (2.0 * fi - 1.0) / (fi * dw))

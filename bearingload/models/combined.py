@@ -309,9 +309,7 @@ def _geometry(dw: Any, dm: Any, fi: Any, fo: Any, clearance: Any) -> _Geometry:
     g = validate.finite("clearance", clearance) / 2.0
     if np.any(dw >= dm):
         raise InputError("ball_diameter", "must be smaller than the pitch diameter")
-    for name, f in (("f_i", fi), ("f_o", fo)):
-        if np.any(f <= 0.5):
-            raise InputError(name, "must be greater than 0.5 (groove radius above ball radius)")
+    fi, fo = validate.conformity("f_i", fi), validate.conformity("f_o", fo)
     A = (fi + fo - 1.0) * dw
     if np.any(g >= A):
         raise InputError(
@@ -546,9 +544,7 @@ def solve_combined(
         raise InputError("balls", "must be one number per call (group the cases by z)")
     if moment is not None and misalignment is not None:
         raise InputError("moment", "give a moment or a misalignment, not both")
-    fr = validate.finite("radial_load", radial_load)
-    if np.any(fr < 0):
-        raise InputError("radial_load", "must be >= 0 N")
+    fr = validate.at_least("radial_load", radial_load, 0.0, "N")
     fa = validate.finite("axial_load", axial_load)
     angular = _angular(contact_angle, fa, clearance)
     mm = validate.finite("moment", 0.0 if moment is None else moment)
@@ -558,9 +554,10 @@ def solve_combined(
     e = validate.positive("modulus", modulus, "MPa")
     nu = validate.finite("poisson", poisson)
     k_given = None if stiffness is None else validate.positive("stiffness", stiffness, "N/mm^1.5")
-    ball_diameter, pitch_diameter, f_i, f_o, clearance = validate.each_finite(
-        ball_diameter=ball_diameter, pitch_diameter=pitch_diameter, f_i=f_i, f_o=f_o,
-        clearance=clearance)  # fmt: skip
+    ball_diameter, pitch_diameter, clearance = validate.each_finite(
+        ball_diameter=ball_diameter, pitch_diameter=pitch_diameter, clearance=clearance
+    )
+    f_i, f_o = validate.conformity("f_i", f_i), validate.conformity("f_o", f_o)
     validate.broadcast_shape(
         {"radial_load": fr, "axial_load": fa, "moment": mm, "misalignment": tilt_deg,
          "cage_angle": cage, "modulus": e, "poisson": nu, "moment_cross": mc,

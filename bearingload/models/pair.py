@@ -318,9 +318,7 @@ def solve_pair(
             "must be at least 3 per bearing of a pair: 1 or 2 balls leave the shaft free to "
             "turn about their line (a real bearing has many more)",
         )
-    fr = validate.finite("radial_load", radial_load)
-    if np.any(fr < 0):
-        raise InputError("radial_load", "must be >= 0 N")
+    fr = validate.at_least("radial_load", radial_load, 0.0, "N")
     fa = validate.finite("axial_load", axial_load)
     fp = validate.finite("preload", preload)
     _check_pair(kind, fa, fp, contact_angle)
@@ -329,7 +327,7 @@ def solve_pair(
              "ball_diameter": validate.finite("ball_diameter", ball_diameter),
              "pitch_diameter": validate.finite("pitch_diameter", pitch_diameter),
              "width": validate.positive("width", width, "mm"),
-             "f_i": validate.finite("f_i", f_i), "f_o": validate.finite("f_o", f_o),
+             "f_i": validate.conformity("f_i", f_i), "f_o": validate.conformity("f_o", f_o),
              "cage_angle": validate.finite("cage_angle", cage_angle),
              "moment": validate.finite("moment", moment),
              "moment_cross": validate.finite("moment_cross", moment_cross),

@@ -31,13 +31,13 @@ Definitions used here (Kurochkin 1973, §1):
 from __future__ import annotations
 
 import math
-from dataclasses import dataclass
 from typing import Any
 
 import numpy as np
 
 from bearingload import validate
 from bearingload.errors import InputError
+from bearingload.lazy_dataclass import dataclass
 from bearingload.models.equilibrium import solve
 
 #: Gauss-Legendre nodes per smooth piece of the half pitch (see the module docstring). [-]

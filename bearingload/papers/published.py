@@ -31,10 +31,12 @@ Importing this module imports no numpy.
 from __future__ import annotations
 
 import csv
-from dataclasses import dataclass, field
+from dataclasses import field
 from functools import cache
 from importlib import resources
 from typing import Any
+
+from bearingload.lazy_dataclass import dataclass
 
 #: Paper key (the ``source`` column) -> full citation.
 SOURCES = {

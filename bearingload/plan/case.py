@@ -13,11 +13,12 @@ Imports nothing heavy: the command line reads it at start-up.
 from __future__ import annotations
 
 from collections.abc import Callable, Collection
-from dataclasses import dataclass, fields
+from dataclasses import fields
 from typing import Any
 
 from bearingload.bearings.mounting import MOUNTING_PARAMS
 from bearingload.errors import ConflictError, InputError
+from bearingload.lazy_dataclass import dataclass
 
 #: The load options: any of them given, the combined engine solves the case.
 LOAD_PARAMS = ("axial_load", "moment", "moment_cross", "misalignment", "contact_angle")

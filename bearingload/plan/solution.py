@@ -5,8 +5,9 @@ names, and rendered in any format of the command line (:meth:`Solution.report`).
 from __future__ import annotations
 
 import functools
-from dataclasses import dataclass
 from typing import Any
+
+from bearingload.lazy_dataclass import dataclass
 
 #: The engines of :attr:`Solution.engine`.
 ENGINES = ("radial", "combined", "pair")

@@ -39,10 +39,11 @@ import csv
 import os
 import time
 from collections.abc import Callable
-from dataclasses import dataclass
 from typing import Any
 
 import numpy as np
+
+from bearingload.lazy_dataclass import dataclass
 
 REFERENCE_FILE = os.path.join(os.path.dirname(__file__), "data", "accuracy_reference.csv")
 COMBINED_REFERENCE_FILE = os.path.join(

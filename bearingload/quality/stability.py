@@ -35,12 +35,13 @@ from __future__ import annotations
 import math
 import warnings
 from collections.abc import Callable
-from dataclasses import dataclass, field
+from dataclasses import field
 from typing import Any
 
 import numpy as np
 
 from bearingload.errors import InputError
+from bearingload.lazy_dataclass import dataclass
 
 SIZES = ("quick", "full")
 

@@ -38,12 +38,12 @@ import re
 import warnings
 from collections import Counter
 from collections.abc import Callable
-from dataclasses import dataclass
 from typing import Any
 
 import numpy as np
 
 from bearingload.errors import ConvergenceError, InputError
+from bearingload.lazy_dataclass import dataclass
 
 #: The bearing of every family: a deep-groove ball bearing of the 6305 size. [mm], [-]
 GEOMETRY = {"ball_diameter": 11.5, "pitch_diameter": 43.5, "f_i": 0.52, "f_o": 0.53}

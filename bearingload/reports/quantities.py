@@ -12,10 +12,10 @@ column stem (``q_max [N]``). Imports nothing heavy: the command line reads it at
 from __future__ import annotations
 
 from collections.abc import Iterable
-from dataclasses import dataclass
 from typing import Any
 
 from bearingload.constants import KGF, ROLLER_EXPONENT
+from bearingload.lazy_dataclass import dataclass
 
 
 @dataclass(frozen=True)

@@ -12,8 +12,9 @@ from __future__ import annotations
 import math
 import os
 from collections.abc import Sequence
-from dataclasses import dataclass
 from typing import Any
+
+from bearingload.lazy_dataclass import dataclass
 
 FORMATS = ("table", "csv", "markdown", "json")
 MACHINE_DIGITS = 10

@@ -9,7 +9,6 @@ from __future__ import annotations
 import dataclasses
 import math
 from collections.abc import Sequence
-from dataclasses import dataclass
 from typing import Any
 
 import numpy as np
@@ -17,6 +16,7 @@ import numpy as np
 from bearingload.bearings.preload import Preload
 from bearingload.bearings.resolved import ResolvedBearing
 from bearingload.errors import InputError
+from bearingload.lazy_dataclass import dataclass
 from bearingload.models.pair import PairDistribution
 from bearingload.studies.combined_bearing import CombinedCase
 
@@ -207,10 +207,10 @@ def _singles(
     """Each bearing of the case(s) ``r`` as a single combined case (its lives, pressures, P0,
     s0, checks; arrays over the cases); each bearing's tilt weighed as one bearing's is
     (:func:`bearingload.studies.combined_bearing.warned_tilt`)."""
-    from bearingload.studies.combined_bearing import _combined_case
+    from bearingload.studies.combined_bearing import combined_case
 
     return [
-        _combined_case(
+        combined_case(
             b, rk, rk.load, rk.axial_load, rk.moment, None, None, lever, rotating, dynamic_rating
         )
         for rk in r.bearings

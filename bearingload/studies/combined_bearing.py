@@ -15,7 +15,6 @@ without an axial load).
 from __future__ import annotations
 
 from collections.abc import Sequence
-from dataclasses import dataclass
 from typing import TYPE_CHECKING, Any
 
 import numpy as np
@@ -23,6 +22,7 @@ import numpy as np
 from bearingload.bearings.mounting import result_fields
 from bearingload.bearings.resolve import ResolvedBearing
 from bearingload.errors import InputError
+from bearingload.lazy_dataclass import dataclass
 from bearingload.studies.matrix import matrix_columns
 
 if TYPE_CHECKING:  # the solver is imported where a case is solved
@@ -118,12 +118,12 @@ def solve_combined_bearing(
         r = solve_on_bearing(b, load, axial_load, cage_angle=cage_angle, moment=moment,
                              misalignment=misalignment, moment_cross=moment_cross,
                              tilt_radius=lever, speed=speed, ball_density=ball_density)  # fmt: skip
-        out.append(_combined_case(b, r, load, axial_load, moment, misalignment, moment_cross,
+        out.append(combined_case(b, r, load, axial_load, moment, misalignment, moment_cross,
                                   lever, rotating, dynamic_rating))  # fmt: skip
     return out
 
 
-def _combined_case(
+def combined_case(
     b: ResolvedBearing, r: CombinedDistribution, load: Any, axial_load: Any, moment: Any,
     misalignment: Any, moment_cross: Any, lever: Any, rotating: str, dynamic_rating: Any,
 ) -> CombinedCase:  # fmt: skip

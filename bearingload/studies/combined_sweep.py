@@ -15,13 +15,13 @@ from __future__ import annotations
 
 import dataclasses
 from collections.abc import Sequence
-from dataclasses import dataclass
 from typing import Any
 
 import numpy as np
 
 from bearingload.bearings.resolve import ResolvedBearing
 from bearingload.errors import InputError
+from bearingload.lazy_dataclass import dataclass
 from bearingload.models.combined import CombinedDistribution
 from bearingload.studies.sweep import DEFAULT_STEPS, Spread, cage_angles, hours_at, spread_of
 

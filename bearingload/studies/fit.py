@@ -35,12 +35,12 @@ import io
 import math
 import os
 import warnings
-from dataclasses import dataclass
 from typing import Any, NamedTuple
 
 import numpy as np
 
 from bearingload.errors import ConvergenceError, InputError
+from bearingload.lazy_dataclass import dataclass
 from bearingload.units import parse_quantity
 
 #: Fitting methods accepted by :func:`fit_power_law`, with a one-line description.

@@ -11,13 +11,14 @@ bearing. :mod:`bearingload.reports.fit` renders it.
 from __future__ import annotations
 
 import math
-from dataclasses import dataclass, field
+from dataclasses import field
 from typing import Any
 
 import numpy as np
 
 from bearingload.constants import BALL_EXPONENT
 from bearingload.errors import InputError
+from bearingload.lazy_dataclass import dataclass
 from bearingload.units import UNITS, parse_quantity
 
 #: Exponent of the Hertz point contact, Q = K delta^(3/2): the exponent of the whole

@@ -22,12 +22,12 @@ inner ring rotating, under F_r = 1400 N alone and with F_a = 700 N, side by side
 
 from __future__ import annotations
 
-from dataclasses import dataclass
 from typing import TYPE_CHECKING, Any
 
 import numpy as np
 
 from bearingload.errors import InputError
+from bearingload.lazy_dataclass import dataclass
 
 if TYPE_CHECKING:
     from bearingload.bearings.resolve import ResolvedBearing

@@ -8,7 +8,6 @@ clearance (a class taken at its min, mean and max gives three). The reports only
 from __future__ import annotations
 
 from collections.abc import Sequence
-from dataclasses import dataclass
 from types import SimpleNamespace
 from typing import TYPE_CHECKING, Any
 
@@ -22,6 +21,7 @@ from bearingload.bearings.life import (
 )
 from bearingload.bearings.mounting import result_fields
 from bearingload.errors import InputError
+from bearingload.lazy_dataclass import dataclass
 from bearingload.models.case import Case, Result, scalar
 from bearingload.models.registry import get_method
 

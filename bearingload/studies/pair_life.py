@@ -9,12 +9,12 @@ vectorised call of :func:`bearingload.studies.bearing_pair.solve_bearing_pairs` 
 
 from __future__ import annotations
 
-from dataclasses import dataclass
 from typing import Any
 
 import numpy as np
 
 from bearingload.bearings.resolve import ResolvedBearing
+from bearingload.lazy_dataclass import dataclass
 from bearingload.studies.bearing_pair import PairCase
 
 

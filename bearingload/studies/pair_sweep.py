@@ -12,12 +12,12 @@ stiffness, each bearing's Q_max and loaded balls, and the pair's L10r.
 
 from __future__ import annotations
 
-from dataclasses import dataclass
 from typing import Any
 
 import numpy as np
 
 from bearingload.bearings.resolve import ResolvedBearing
+from bearingload.lazy_dataclass import dataclass
 from bearingload.studies.bearing_pair import PairCase
 from bearingload.studies.sweep import DEFAULT_STEPS, Spread, cage_angles, hours_at, spread_of
 

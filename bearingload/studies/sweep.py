@@ -12,13 +12,13 @@ radial load on the inner ring along +x, angles from the load line, ball 1 at the
 from __future__ import annotations
 
 from collections.abc import Callable
-from dataclasses import dataclass
 from typing import Any
 
 import numpy as np
 
 from bearingload import validate
 from bearingload.errors import InputError
+from bearingload.lazy_dataclass import dataclass
 from bearingload.models.equilibrium import LoadDistribution, ball_approaches, solve
 
 #: Cage positions over one pitch when none are asked for (both ends included). [-]

@@ -16,11 +16,11 @@ Hertz stiffness of that geometry (about 4.0e5 N/mm^1.5), not the paper's 4700 kg
 from __future__ import annotations
 
 from collections.abc import Sequence
-from dataclasses import dataclass
 from typing import TYPE_CHECKING, Any
 
 import numpy as np
 
+from bearingload.lazy_dataclass import dataclass
 from bearingload.models.case import Case, Result
 from bearingload.models.registry import get_method
 from bearingload.units import KGF

@@ -16,8 +16,9 @@ text is identical. A missing or extra row, column or key is a difference of its 
 from __future__ import annotations
 
 import math
-from dataclasses import dataclass
 from typing import Any
+
+from bearingload.lazy_dataclass import dataclass
 
 #: How a difference shows the side that has no such cell.
 ABSENT = "(absent)"

@@ -21,10 +21,10 @@ import math
 import os
 import sys
 from collections.abc import Sequence
-from dataclasses import dataclass
 from typing import Any
 
 from bearingload.errors import BearingloadError, InputError
+from bearingload.lazy_dataclass import dataclass
 
 #: The manifest's file name inside a folder of tables.
 MANIFEST = "manifest.toml"

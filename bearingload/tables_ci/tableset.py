@@ -8,8 +8,9 @@ from __future__ import annotations
 
 import os
 from collections.abc import Callable, Sequence
-from dataclasses import dataclass, field
+from dataclasses import field
 
+from bearingload.lazy_dataclass import dataclass
 from bearingload.tables_ci.cells import ABSENT, Cell, compare
 from bearingload.tables_ci.manifest import (
     FORMATS,

@@ -1,0 +1,151 @@
+"""``dataclass``: :func:`dataclasses.dataclass` that builds a class's methods when the class is
+first used, and its comparison and text methods when one of them is first looked up.
+
+A terminal command imports some thirty dataclasses, creates instances of two thirds of them
+and compares, hashes or prints few; :mod:`dataclasses` compiles every method it adds from
+source text, and that is most of what a dataclass costs at import. This decorator takes the
+same arguments and gives the same class, built in two steps by :mod:`dataclasses` itself:
+
+1. at the first instance (or the first look at its fields, ``__init__``, a frozen class's
+   ``__setattr__`` and ``__delattr__``, ``__match_args__`` or ``__dataclass_params__``):
+   those, as :mod:`dataclasses` builds them (a class with a ``field(...)`` default is built so
+   at once, its class attribute then being the default as :mod:`dataclasses` leaves it);
+2. at the first look at ``__repr__``, ``__eq__``, ``__hash__`` or an order method: all of
+   these, built by :mod:`dataclasses` for a twin of the class with the same fields (these
+   methods name no class: they read ``self.__class__``).
+
+A class it cannot treat so (``slots=True``, a dataclass base, no docstring, one of those methods
+of its own, ``order`` without ``eq``) goes to :func:`dataclasses.dataclass` as it is. Type
+checkers see :func:`dataclasses.dataclass` itself. Each step runs once, under a lock; a thread
+that creates the first instance of a class while another thread is building it may still find
+no ``__init__`` for that moment (the package starts no threads).
+"""
+
+from __future__ import annotations
+
+import dataclasses
+from _thread import RLock
+from typing import TYPE_CHECKING, Any
+
+#: The methods of step 2, each with the option that asks for it.
+DEFERRED = {
+    "__repr__": "repr",
+    "__eq__": "eq",
+    "__hash__": "eq",  # eq: None or a hash of the fields, as dataclasses decides
+    "__lt__": "order",
+    "__le__": "order",
+    "__gt__": "order",
+    "__ge__": "order",
+}
+#: The options of those methods, with the defaults of :func:`dataclasses.dataclass`.
+METHOD_OPTIONS = {"repr": True, "eq": True, "order": False, "unsafe_hash": False}
+#: What step 1 puts in the class, each with the option that asks for it (None: always).
+FIRST_STEP = {
+    "__init__": "init",
+    "__setattr__": "frozen",
+    "__delattr__": "frozen",
+    "__match_args__": "match_args",
+    "__dataclass_fields__": None,
+    "__dataclass_params__": None,
+}
+#: The defaults of the options of step 1, as :func:`dataclasses.dataclass` has them.
+FIRST_OPTIONS = {"init": True, "frozen": False, "match_args": True}
+#: Held while a step runs (re-entered: step 2 runs step 1 first).
+_BUILDING = RLock()
+
+
+class Deferred:
+    """Stands in a class's dict for what is not built yet; the first lookup builds it."""
+
+    def __init__(self, name: str, cls: type, options: dict[str, Any]) -> None:
+        self.name = name
+        self.cls = cls
+        self.options = options
+
+    def __get__(self, obj: object, owner: type | None = None) -> Any:
+        with _BUILDING:
+            if self.name in DEFERRED:
+                build_deferred(self.cls, self.options)
+            else:
+                build_class(self.cls, self.options)
+        return getattr(obj if obj is not None else owner or self.cls, self.name)
+
+
+def build_class(cls: type, options: dict[str, Any]) -> None:
+    """Step 1: :func:`dataclasses.dataclass` with ``options`` but none of the methods of step
+    2 (their stand-ins stay), then the ``__dataclass_params__`` of ``options`` themselves."""
+    built = cls.__dict__.get("__dataclass_fields__")
+    if built is not None and not isinstance(built, Deferred):
+        return
+    for name in FIRST_STEP:
+        if isinstance(cls.__dict__.get(name), Deferred):
+            delattr(cls, name)
+    dataclasses.dataclass(
+        cls, **{**options, "repr": False, "eq": False, "order": False, "unsafe_hash": False}
+    )
+    params = cls.__dataclass_params__  # type: ignore[attr-defined]
+    for option, value in METHOD_OPTIONS.items():  # the options asked for, not those used here
+        setattr(params, option, options.get(option, value))
+
+
+def build_deferred(cls: type, options: dict[str, Any]) -> None:
+    """Step 2: put in place of the stand-ins of ``cls`` the methods :mod:`dataclasses` builds
+    with ``options`` for a class of its fields; where it builds none, remove the stand-in (the
+    method is inherited)."""
+    waiting = [n for n in DEFERRED if isinstance(cls.__dict__.get(n), Deferred)]
+    if not waiting:
+        return
+    fields = dataclasses.fields(cls)  # step 1 first, if not done
+    body: dict[str, Any] = {
+        "__module__": cls.__module__,
+        "__qualname__": cls.__qualname__,
+        "__annotations__": {f.name: f.type for f in fields},
+    }
+    for f in fields:
+        body[f.name] = dataclasses.field(repr=f.repr, hash=f.hash, compare=f.compare)
+    later = {k: options.get(k, v) for k, v in METHOD_OPTIONS.items()}
+    twin: type = dataclasses.dataclass(
+        type(cls.__name__, (), body), init=False, frozen=options.get("frozen", False), **later
+    )
+    for name in waiting:
+        if name in twin.__dict__:
+            setattr(cls, name, twin.__dict__[name])
+        else:
+            delattr(cls, name)
+
+
+def _lazy(cls: type, options: dict[str, Any]) -> type:
+    methods = {k: options.get(k, v) for k, v in METHOD_OPTIONS.items()}
+    first = {k: options.get(k, v) for k, v in FIRST_OPTIONS.items()}
+    own = cls.__dict__
+    if (
+        options.get("slots")
+        or not own.get("__doc__")
+        or (methods["order"] and not methods["eq"])
+        or any(name in own for name in DEFERRED)
+        or (first["frozen"] and ("__setattr__" in own or "__delattr__" in own))
+        or any(hasattr(base, "__dataclass_fields__") for base in cls.__mro__[1:])
+    ):
+        return dataclasses.dataclass(cls, **options)
+    for name, asked in DEFERRED.items():
+        if methods[asked] or (name == "__hash__" and methods["unsafe_hash"]):
+            setattr(cls, name, Deferred(name, cls, options))
+    if any(isinstance(v, dataclasses.Field) for v in own.values()):
+        build_class(cls, options)  # a field(...) default: the class attribute changes at once
+        return cls
+    for name, step in FIRST_STEP.items():
+        if (step is None or first[step]) and name not in own:
+            setattr(cls, name, Deferred(name, cls, options))
+    return cls
+
+
+if TYPE_CHECKING:
+    from dataclasses import dataclass as dataclass
+else:
+
+    def dataclass(cls=None, /, **options):
+        """:func:`dataclasses.dataclass`, built on first use (step 1) and its comparison and
+        text methods on their first use (step 2)."""
+        if cls is None:
+            return lambda c: _lazy(c, options)
+        return _lazy(cls, options)
