@@ -22,15 +22,21 @@ os.environ.setdefault("OPENBLAS_NUM_THREADS", "1")
 
 import math  # noqa: E402
 import statistics  # noqa: E402
+import sys  # noqa: E402
 import time  # noqa: E402
 
 import numpy as np  # noqa: E402
+
+sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
+
+from bench_combined import baseline_per_case, interleaved  # noqa: E402
 
 from bearingload.models.combined import solve_combined  # noqa: E402
 
 Z, K = 13, 7.0e5
 GEO = {"ball_diameter": 7.938, "pitch_diameter": 38.5, "f_i": 0.52, "f_o": 0.53}
 N_CASES, PAIRS, SEED = 300, 5, 20261124
+N_ONE = 100
 
 
 def fsolve_case(fr: float, fa: float, alpha: float) -> tuple[np.ndarray, bool]:
@@ -67,8 +73,25 @@ def cases(rng: np.random.Generator) -> tuple[np.ndarray, ...]:
     return fr, fa, alpha
 
 
+def one_call(fr: np.ndarray, fa: np.ndarray, alpha: np.ndarray) -> None:
+    """One case per call (Hertz default) against the per-case baseline of bench_combined."""
+    few = [(float(fr[i]), float(fa[i]), float(alpha[i])) for i in range(N_ONE)]
+    base = baseline_per_case()
+
+    def calls() -> None:
+        for a, b, angle in few:
+            solve_combined(Z, a, b, contact_angle=angle, **GEO)
+
+    per = interleaved({"one": calls})["one"] / N_ONE
+    print(
+        f"one call, angular contact, Hertz K(alpha): {per * 1e6:.1f} us ({per / base:.2f} x the "
+        f"bench_combined fsolve time per case, {base * 1e6:.1f} us; target <= 0.1)"
+    )
+
+
 def main() -> None:
     fr, fa, alpha = cases(np.random.default_rng(SEED))
+    one_call(fr, fa, alpha)
     ref = [fsolve_case(fr[i], fa[i], alpha[i]) for i in range(N_CASES)]  # imports scipy
     vec = solve_combined(Z, fr, fa, contact_angle=alpha, stiffness=K, **GEO)
     ok = np.array([good for _, good in ref])

@@ -13,6 +13,10 @@ Jacobian, xtol 1e-13, started at the rigid-ring estimate. Cases: DB, DF, DT in t
 F_r 10 N-C_0r, F_a 10 N-C_0r (DB/DF either sign), a preload (DB/DF) 0.1 % to 10 % of C_0r. The
 vectorised call is ``solve_pair`` on all the cases of one arrangement at once (1000 each). The machine is
 shared: the two are timed in pairs, the ratio of each pair printed, and their median.
+
+One call: ``solve_pair`` on one preloaded DB case at a time (Hertz default, the first N_ONE
+cases), per call, over the per-case baseline of ``bench_combined.py`` (fsolve on a 6205
+deep-groove bearing, constant K) measured in the same run; target at most 0.2.
 """
 
 from __future__ import annotations
@@ -24,9 +28,14 @@ os.environ.setdefault("OPENBLAS_NUM_THREADS", "1")
 
 import math  # noqa: E402
 import statistics  # noqa: E402
+import sys  # noqa: E402
 import time  # noqa: E402
 
 import numpy as np  # noqa: E402
+
+sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
+
+from bench_combined import baseline_per_case, interleaved  # noqa: E402
 
 from bearingload.models.pair import solve_pair  # noqa: E402
 
@@ -34,6 +43,7 @@ Z, K, WIDTH = 12, 7.0e5, 15.0
 GEO = {"ball_diameter": 8.7312, "pitch_diameter": 38.5, "f_i": 0.52, "f_o": 0.53}
 N_CASES, PAIRS, SEED = 1000, 3, 20261124
 KINDS = ("DB", "DF", "DT")
+N_ONE = 100
 
 
 def fsolve_case(
@@ -109,9 +119,28 @@ def vectorised(
                       stiffness=K, **GEO)  # fmt: skip
 
 
+def one_call(fr: np.ndarray, fa: np.ndarray, fp: np.ndarray, alpha: np.ndarray) -> None:
+    """One preloaded DB case per call (Hertz default) against the baseline of bench_combined."""
+    few = [(float(fr[i]), float(fa[i]), float(fp[i]), float(alpha[i])) for i in range(N_ONE)]
+    base = baseline_per_case()
+
+    def calls() -> None:
+        for a, b, p, angle in few:
+            solve_pair(
+                Z, a, b, arrangement="DB", preload=p, contact_angle=angle, width=WIDTH, **GEO
+            )
+
+    per = interleaved({"one": calls})["one"] / N_ONE
+    print(
+        f"one call, DB pair, Hertz K(alpha): {per * 1e6:.1f} us ({per / base:.2f} x the "
+        f"bench_combined fsolve time per case, {base * 1e6:.1f} us; target <= 0.2)"
+    )
+
+
 def main() -> None:
     rng = np.random.default_rng(SEED)
     sets = {kind: cases(rng, kind) for kind in KINDS}
+    one_call(*sets["DB"])
     for kind, (fr, fa, fp, alpha) in sets.items():
         ref = [fsolve_case(kind, fr[i], fa[i], fp[i], alpha[i]) for i in range(N_CASES)]
         vec = vectorised(kind, fr, fa, fp, alpha)
