@@ -25,8 +25,8 @@ Double-double arithmetic needs every product rounded on its own: the build compi
 with ``-ffp-contract=off`` (setup.py); the exact products use ``fma``.
 """
 
-from libc.math cimport (atan, atan2, cos, fabs, fma, hypot, isfinite, isnan, pow, sin, sqrt,
-                        INFINITY, NAN)
+from libc.math cimport (atan, atan2, cos, exp, expm1, fabs, fma, hypot, isfinite, isnan, log,
+                        log1p, pow, sin, sqrt, INFINITY, NAN)
 from libc.stdint cimport int64_t
 from libc.stdlib cimport free, malloc
 from libc.string cimport memset
@@ -149,6 +149,188 @@ cdef inline double curve_slope(const Case *cs, double ca, double cam1) noexcept 
         d_num -= term * inv * cs.curve[k]
         d_den -= term * inv
     return num / den + cam1 * 2.0 * (d_num * den - num * d_den) / (den * den)
+
+
+# ------------------------------------------------------- the Hertz stiffness curve's nodes
+#
+# K(alpha) of both contacts in series at the nodes of the curve, for one geometry: the formulas
+# of the scalar path of bearingload.contact.hertz.ball_stiffness (its _hertz_scalar: the
+# ellipticity by Newton from a fitted start on the AGM's elliptic integrals of
+# bearingload.numerics.elliptic_integrals, the contact stiffness, both in series), in its order,
+# one node at a time. Inputs hertz.py refuses (a curvature ratio beyond 1e15, Poisson's ratio
+# outside (-1, 0.5]) or an ellipticity not settled come back as a status: the caller lets
+# hertz.py say why.
+
+from bearingload.contact._hertz_scalar import START_CHEBYSHEV
+
+# the limits of hertz.py and numerics.py: Newton steps, AGM steps, the largest ratio of
+# curvature sums; the fitted start's Chebyshev coefficients and the log1p(ln 1e15) it scales by
+cdef enum:
+    HERTZ_STEPS = 30
+    AGM_STEPS = 60
+    START_TERMS = 17
+cdef double HERTZ_EPS = 2.220446049250313e-16
+cdef double HERTZ_MAX_RATIO = 1e15
+cdef double PI = 3.141592653589793
+cdef double START[START_TERMS]
+START[:] = START_CHEBYSHEV
+cdef double START_LOG_MAX = log1p(log(1e15))
+
+
+cdef void elliptic(double t, double *ell) noexcept nogil:
+    """``ell`` = K, E, (E - pK)/m, (K - E)/m, m, p at ``kappa = e^t > 1``, ``p = 1/kappa^2 =
+    1 - m``, by the AGM (numerics.elliptic_integrals: A&S 17.6, sums of positive terms)."""
+    cdef double p = exp(-2.0 * t), m = -expm1(-2.0 * t)
+    cdef double a = 1.0, b = sqrt(p), c2 = m, rest = 0.0, weight = 0.5, small = 1e-17 * m
+    cdef double a_next, c, term, total, k_int
+    cdef int i
+    for i in range(AGM_STEPS):
+        a_next = 0.5 * (a + b)
+        c = c2 / (4.0 * a_next)
+        b = sqrt(a * b)
+        a = a_next
+        c2 = c * c
+        weight += weight
+        term = weight * c2
+        rest = rest + term
+        if term <= small:
+            break
+    k_int = PI / (2.0 * a)
+    total = 0.5 + rest / m
+    ell[0] = k_int
+    ell[3] = k_int * total
+    ell[1] = k_int - m * ell[3]
+    ell[2] = k_int * (1.0 - total) if p > 0.5 else (ell[1] - p * k_int) / m
+    ell[4] = m
+    ell[5] = p
+
+
+cdef double ellipticity_residual(double t, double target, double *ell,
+                                 double *slope) noexcept nogil:
+    """ln(B/A) at ``ln kappa = t`` less ``target``, its derivative in t into ``slope`` and the
+    elliptic integrals there into ``ell`` (_hertz_scalar._residual)."""
+    cdef double k_int, e_int, n, d, m, p, dk, de, dn, dd
+    elliptic(t, ell)
+    k_int, e_int, n, d, m, p = ell[0], ell[1], ell[2], ell[3], ell[4], ell[5]
+    dk = n / (2.0 * p) * 2.0 * p
+    de = -d / 2.0 * 2.0 * p
+    dn = ((de + 2.0 * p * k_int - p * dk) - n * 2.0 * p) / m
+    dd = ((dk - de) - d * 2.0 * p) / m
+    slope[0] = dn / n - dd / d + 2.0
+    return log(n / d) + 2.0 * t - target
+
+
+cdef double ellipticity_start(double target) noexcept nogil:
+    """The fitted start ``t ~ L g(u)`` (Clenshaw's recurrence; _hertz_scalar.start)."""
+    cdef double u = 2.0 * log1p(target) / START_LOG_MAX - 1.0, u2, b1 = 0.0, b2 = 0.0, b0
+    cdef int i
+    u2 = u + u
+    for i in range(START_TERMS - 1, 0, -1):
+        b0 = u2 * b1 - b2 + START[i]
+        b2 = b1
+        b1 = b0
+    return target * (u * b1 - b2 + START[0])
+
+
+cdef int log_kappa(double target, double *out) noexcept nogil:
+    """``out`` = t = ln kappa for ``ln(B/A) = target > 0``, K and E there, by Newton from the
+    fitted start (_hertz_scalar.log_kappa, which says why each rule); 0 where it did not
+    settle."""
+    cdef double t = min(ellipticity_start(target), target), previous = INFINITY
+    cdef double ell[6]
+    cdef double f, df, step, new
+    cdef int i
+    for i in range(HERTZ_STEPS):
+        f = ellipticity_residual(t, target, ell, &df)
+        if t < 0.01:
+            df = 1.5 + 0.046875 * t * t
+        step = f / df
+        if fabs(step) <= 1e-9 * t and fabs(step) <= 1e-3 * previous:
+            out[0], out[1], out[2] = t - step, ell[0] - ell[2] * step, ell[1] + ell[5] * ell[3] * step
+            return 1
+        new = min(max(t - step, 0.5 * t), target)
+        if fabs(new - t) <= 4 * HERTZ_EPS * t or fabs(step) >= previous:
+            out[0], out[1], out[2] = t, ell[0], ell[1]
+            return 1
+        previous = fabs(step)
+        t = new
+    return 0
+
+
+cdef int contact_stiffness(double rho_x, double rho_y, double e_star,
+                           double *k) noexcept nogil:
+    """K of one point contact, (4 sqrt 2 / 3) E* / (delta*^1.5 sqrt(sum rho))
+    (_hertz_scalar.stiffness); 0 where hertz.py would refuse or not settle."""
+    cdef double small = min(rho_x, rho_y), large = max(rho_x, rho_y), d_star = 1.0
+    cdef double got[3]
+    if not (small > 0 and large <= HERTZ_MAX_RATIO * small):
+        return 0
+    if rho_x != rho_y:
+        if not log_kappa(log(large) - log(small), got):
+            return 0
+        d_star = 2.0 * got[1] / PI * pow(PI / (2.0 * exp(2.0 * got[0]) * got[2]), 1.0 / 3.0)
+    k[0] = 4.0 * sqrt(2.0) / 3.0 * e_star / (pow(d_star, 1.5) * sqrt(rho_x + rho_y))
+    return 1
+
+
+cdef int ball_stiffness(double dw, double dm, double fi, double fo, double e_star,
+                        double *k) noexcept nogil:
+    """K of a ball, its inner and outer contacts in series (hertz.ball_stiffness)."""
+    cdef double k_i, k_o
+    if not contact_stiffness(2.0 * dm / (dw * (dm - dw)), (2.0 * fi - 1.0) / (fi * dw),
+                             e_star, &k_i):
+        return 0
+    if not contact_stiffness(2.0 * dm / (dw * (dm + dw)), (2.0 * fo - 1.0) / (fo * dw),
+                             e_star, &k_o):
+        return 0
+    k[0] = pow(pow(k_i, -1.0 / 1.5) + pow(k_o, -1.0 / 1.5), -1.5)
+    return 1
+
+
+cdef int hertz_curve(const double *geo, const double *node_x, double *k0,
+                     double *values) noexcept nogil:
+    """K_0 = K(alpha = 0) and the divided differences ``(K(c)/K_0 - 1)/(c - 1)`` at the nodes
+    ``c = (x + 1)/2`` of one geometry ``geo`` = (D_w, d_m, f_i, f_o, E, nu)
+    (combined._hertz_setup); 0 where hertz.py would refuse or not converge."""
+    cdef double nu = geo[5], e_star, c, k
+    cdef int i
+    if not (nu > -1.0 and nu <= 0.5):
+        return 0
+    e_star = 1.0 / ((1.0 - nu * nu) / geo[4] + (1.0 - nu * nu) / geo[4])
+    if not ball_stiffness(geo[0], geo[1], geo[2], geo[3], e_star, k0):
+        return 0
+    for i in range(NODES):
+        c = (node_x[i] + 1.0) / 2.0
+        if not ball_stiffness(geo[0], geo[1] / c, geo[2], geo[3], e_star, &k):
+            return 0
+        values[i] = (k / k0[0] - 1.0) / (c - 1.0)
+    return 1
+
+
+def hertz_curves(const double[:, ::1] geometry, const double[::1] node_x):
+    """K_0 (n,) and the stiffness curve's values (n, NODES) of every case's geometry (n, 6):
+    D_w, d_m, f_i, f_o, E, nu (``hertz_curve``), and which cases hertz.py would refuse (n,)
+    uint8. A case of the same geometry as the one before it takes its values (the same bits)."""
+    cdef Py_ssize_t n = geometry.shape[0], k, i
+    k0_a = np.empty(n)
+    values_a = np.empty((n, NODES))
+    bad_a = np.zeros(n, dtype=np.uint8)
+    cdef double[::1] k0 = k0_a
+    cdef double[:, ::1] values = values_a
+    cdef unsigned char[::1] bad = bad_a
+    cdef bint same
+    with nogil:
+        for k in range(n):
+            same = k > 0 and not bad[k - 1]
+            for i in range(6):
+                same = same and geometry[k, i] == geometry[k - 1, i]
+            if same:
+                k0[k] = k0[k - 1]
+                for i in range(NODES):
+                    values[k, i] = values[k - 1, i]
+            else:
+                bad[k] = not hertz_curve(&geometry[k, 0], &node_x[0], &k0[k], &values[k, 0])
+    return k0_a, values_a, bad_a
 
 
 cdef void reference(const Case *cs, const double *vh, const double *vl, Balls b) noexcept nogil:

@@ -96,16 +96,14 @@ minimisation repeated until the update leaves the equilibrium. Each case stops w
 every applied component is balanced to 1e-12 of itself (or to the rounding of the sum it is,
 its terms much larger than it); a component held at 0 by a symmetry of the case is exactly 0.
 No case depends on the others of its call, nor on earlier calls: the Hertz set-up of a
-geometry (K_0 and the stiffness curve's nodes) is kept across calls (an LRU of
-``SETUP_CACHE_SIZE`` geometries), and holds exactly what would be computed. Cases left above 1e-8 raise
-:class:`~bearingload.errors.ConvergenceError`, naming their inputs.
+geometry (K_0 and the stiffness curve's nodes) is computed per case in the core. Cases left
+above 1e-8 raise :class:`~bearingload.errors.ConvergenceError`, naming their inputs.
 """
 
 from __future__ import annotations
 
 import dataclasses
 import math
-from collections import OrderedDict
 from dataclasses import dataclass
 from typing import Any
 
@@ -1213,49 +1211,30 @@ _NODE_THETA = (2.0 * np.arange(_NODES) + 1.0) * np.pi / (2.0 * _NODES)
 _NODE_X = np.cos(_NODE_THETA)
 _NODE_W = np.where(np.arange(_NODES) % 2 == 0, 1.0, -1.0) * np.sin(_NODE_THETA)
 _NODE_COS = (_NODE_X + 1.0) / 2.0
-#: Distinct geometries (D_w, d_m, f_i, f_o, E, nu) whose Hertz set-up is kept across calls, the
-#: least recently used dropped first: an optimiser or a rotor time-stepper calls with the same
-#: bearing thousands of times, and the set-up (25 exact Hertz evaluations, each solving the
-#: ellipticity equation) costs more than a solve. [-]
+#: Distinct geometries whose Hertz set-up the speed model (:mod:`bearingload.models.high_speed`)
+#: keeps across calls, the least recently used dropped first. [-]
 SETUP_CACHE_SIZE = 256
-_SETUP: OrderedDict[tuple[float, ...], tuple[float, np.ndarray]] = OrderedDict()
 
 
 def _hertz_setup(geo: _Geometry, e: np.ndarray, nu: np.ndarray) -> tuple[np.ndarray, np.ndarray]:
     """Per case, K_0 = K(alpha = 0) [N/mm^1.5] (n,) and the divided differences ``D(c) = (K(c)/
-    K_0 - 1)/(c - 1)`` at the nodes of :class:`_StiffnessCurve` (n, NODES): one Hertz evaluation
-    (:func:`bearingload.contact.hertz.ball_stiffness`, element by element, so an entry does not
-    depend on the geometries computed with it) of the nodes and c = 1 per distinct geometry not
-    in the cache. The cache holds exactly what would be computed: it changes no bit."""
+    K_0 - 1)/(c - 1)`` at the nodes of :class:`_StiffnessCurve` (n, NODES), in the compiled core
+    (``hertz_curves``: the scalar path of :func:`bearingload.contact.hertz.ball_stiffness`, the
+    same bits, per case; a case of the geometry of the case before it takes its values). A
+    geometry the core cannot set up goes through the vectorised path of ``ball_stiffness``,
+    which refuses it with the reason (or, where only the core's Newton did not settle, sets it
+    up)."""
     from bearingload.contact.hertz import ball_stiffness
+    from bearingload.models import _core
 
     params = np.stack([geo.D_w, geo.d_m, geo.f_i, geo.f_o, e, nu], axis=1)
-    if params.shape[0] == 1:
-        uniq, inv = params, np.zeros(1, dtype=np.intp)
-    else:
-        uniq, inverse = np.unique(params, axis=0, return_inverse=True)
-        inv = inverse.reshape(-1)
-    keys = [tuple(row) for row in uniq.tolist()]
-    missing = [i for i, key in enumerate(keys) if key not in _SETUP]
-    found = {}
-    if missing:
-        dw, dm, fi, fo, ee, nn = (uniq[missing, i, None] for i in range(6))
-        at = np.append(_NODE_COS, 1.0)  # the nodes and cos(alpha) = 1, in one Hertz evaluation
-        k_all = ball_stiffness(dw, dm / at, fi, fo, ee, nn).ball  # (geometries, nodes + 1)
-        k_c, k_1 = k_all[:, :-1], k_all[:, -1:]
-        d = (k_c / k_1 - 1.0) / (_NODE_COS - 1.0)
-        for row, i in enumerate(missing):
-            found[keys[i]] = (float(k_1[row, 0]), d[row])
-    rows = []
-    for key in keys:
-        entry = found.get(key) or _SETUP[key]
-        _SETUP[key] = entry
-        _SETUP.move_to_end(key)
-        rows.append(entry)
-    while len(_SETUP) > SETUP_CACHE_SIZE:
-        _SETUP.popitem(last=False)
-    k0 = np.array([r[0] for r in rows])[inv]
-    return k0, np.stack([r[1] for r in rows])[inv]
+    k0, values, bad = _core.hertz_curves(params, _NODE_X)
+    at = np.append(_NODE_COS, 1.0)  # the nodes and cos(alpha) = 1
+    for i in np.flatnonzero(bad).tolist():
+        dw, dm, fi, fo, ee, nn = params[i]
+        k = ball_stiffness(dw, dm / at, fi, fo, ee, nn).ball
+        k0[i], values[i] = k[-1], (k[:-1] / k[-1] - 1.0) / (_NODE_COS - 1.0)
+    return k0, values
 
 
 class _StiffnessCurve:
