@@ -453,7 +453,6 @@ KNOWN_PRIVATE_READS = {
     ("models.pair", "models.combined._hertz_setup"),
     ("models.pair", "models.combined._reference_force"),
     ("models.pair", "models.combined._result"),
-    ("models.pair", "models.combined._tangent"),
     ("models.pair_speed", "models.combined._angular_geometry"),
     ("models.pair_speed", "models.combined._directions"),
     ("models.pair_speed", "models.combined._reference_force"),

@@ -286,15 +286,6 @@ def forces(p: Problem, lo: Loads) -> tuple[np.ndarray, np.ndarray]:
     return gen, sum_arms(w_r, w_a, np.abs(p.arms))
 
 
-def _times_arms(radial: np.ndarray, axial: np.ndarray, arms: np.ndarray) -> np.ndarray:
-    """``(radial c, radial s, axial, axial c, axial s)`` per ball, (n, z, 5) contiguous."""
-    terms = np.empty(arms.shape)
-    terms[:, :2] = radial[:, None]
-    terms[:, 2:] = axial[:, None]
-    terms *= arms
-    return np.ascontiguousarray(terms.transpose(0, 2, 1))
-
-
 def sum_arms(radial: np.ndarray, axial: np.ndarray, arms: np.ndarray) -> np.ndarray:
     """``sum_j (radial_j c_j, radial_j s_j, axial_j, axial_j c_j, axial_j s_j)`` (n, 5), the
     products formed in one array (the same sums, term by term, as five apart)."""
@@ -322,45 +313,6 @@ def residual_of(f: np.ndarray, gen: np.ndarray, size: np.ndarray, held: np.ndarr
     ref = np.maximum(np.abs(f), (ROUNDING / TOLERANCE) * size)
     ref = np.where(f == 0, np.maximum(ref, FLOOR), ref)
     return np.max(np.abs(grad) / ref, axis=1)
-
-
-def ball_tangent(
-    arms: np.ndarray, ca: np.ndarray, sa: np.ndarray, w1: np.ndarray, w2: np.ndarray,
-    w3: np.ndarray | None = None,
-) -> np.ndarray:  # fmt: skip
-    """``sum_j w1 g g^T + w2 h h^T (+ w3 g h^T)`` (n, 5, 5): ``g_j`` the generalised direction of
-    ball j's contact normal ``(ca c, ca s, sa, sa c, sa s)``, ``h_j`` the direction in which it
-    turns (``ca``, ``sa`` replaced by ``-sa``, ``ca``); ``arms`` (n, 5, z) of :class:`Problem`.
-    With ``w1 = dQ/d(delta)``, ``w2 = Q/d`` and ``w3 = dQ/d(alpha)/d`` the tangent of the ring
-    forces."""
-    g = _times_arms(ca, sa, arms)
-    h = _times_arms(-sa, ca, arms)
-    # one stacked product (n, 5, 2z) @ (n, 2z, 5): a three-operand einsum is 4-5 times slower
-    both = np.concatenate((g, h), axis=1)
-    weighted = np.concatenate((g * w1[:, :, None], h * w2[:, :, None]), axis=1)
-    t = weighted.transpose(0, 2, 1) @ both
-    if w3 is not None:
-        t += (g * w3[:, :, None]).transpose(0, 2, 1) @ h
-    return t
-
-
-def hold(hess: np.ndarray, locked: np.ndarray) -> np.ndarray:
-    """``hess`` (n, 5, 5) with the ``locked`` components (n, 5) decoupled: unit rows and
-    columns (in place)."""
-    free = ~locked
-    hess *= free[:, :, None] & free[:, None, :]
-    hess += np.eye(5) * locked[:, None, :]
-    return hess
-
-
-def turns(rho: np.ndarray, u: np.ndarray, one_sided: np.ndarray) -> np.ndarray:
-    """Balls whose contact normal turns with the ring (n, z): groove centres not crossed and,
-    one-sided (``one_sided`` (n,)), ``u_j > 0`` (at ``u_j <= 0`` the ball sits at 0° whatever
-    ``u_j``: no curvature across the groove)."""
-    inside = rho > 0
-    if one_sided.any():
-        inside &= ~one_sided[:, None] | (u > 0)
-    return inside
 
 
 # ----------------------------------------------------------------------------------- points

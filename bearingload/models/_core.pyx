@@ -137,7 +137,7 @@ cdef inline double curve_kappa(const Case *cs, double ca, double cam1) noexcept 
 
 cdef inline double curve_slope(const Case *cs, double ca, double cam1) noexcept nogil:
     """d(kappa)/d(cos alpha) of the interpolant: D + (c - 1) dD/dc, the barycentric quotient
-    differentiated term by term (bearingload.models.combined._StiffnessCurve.slope)."""
+    differentiated term by term."""
     cdef double t, inv, term, num = 0.0, den = 0.0, d_num = 0.0, d_den = 0.0
     cdef int k
     t = 2.0 * min(max(ca, 0.0), 1.0) - 1.0
@@ -551,7 +551,7 @@ cdef void tangent(const Case *cs, const double *ca, const double *sa, const doub
     """sum_j w1 g g^T + w2 h h^T (+ w3 g h^T where w3 is given), g = (ca c, ca s, sa, sa c,
     sa s) the generalised direction of ball j's contact normal, h = that of the direction in
     which it turns ((ca, sa) turned to (-sa, ca)): with w1 = dQ/d(delta), w2 = Q/d and w3 =
-    dQ/d(alpha)/d the tangent of the ring forces (_combined_ring.ball_tangent). ``hold``: the
+    dQ/d(alpha)/d the tangent of the ring forces. ``hold``: the
     locked components decoupled (unit rows and columns), as the Newton matrix has them."""
     cdef int i, k, j
     cdef double g[5]
@@ -1648,30 +1648,36 @@ cdef void add_mapped(const Pair *pr, int k, const double *t, double *out) noexce
             out[5 * i + n] += acc
 
 
+cdef void side_tangent(const Pair *pr, PairWork *wk, int k, double *t) noexcept nogil:
+    """Bearing k's true tangent at the current state (the change of K with the angle
+    included), in its local coordinates, scaled."""
+    cdef const Case *cs = &pr.bear
+    cdef Point *pt = &wk.cur.side[k].pt
+    cdef double d
+    cdef int j
+    for j in range(cs.z):
+        d = pt.b.d[j] if pt.b.d[j] > 0 else 1.0
+        wk.w1[j] = 1.5 * (1.0 + wk.cur.side[k].kappa[j]) * pt.lo.root[j]
+        wk.w2[j] = 0.0
+        wk.w3[j] = 0.0
+        if turns(cs, pt.b.rho[j], pt.b.u[j]):
+            wk.w2[j] = pt.lo.q[j] / d
+            if cs.curve != NULL and pt.lo.root[j] > 0:
+                wk.w3[j] = (curve_slope(cs, pt.lo.ca[j], pt.lo.cam1[j]) * -pt.lo.sa[j]
+                            * pt.lo.root[j] ** 3 / d)
+    tangent(cs, pt.lo.ca, pt.lo.sa, wk.w1, wk.w2, wk.w3 if cs.curve != NULL else NULL,
+            False, t)
+
+
 cdef void pair_tangent(const Pair *pr, PairWork *wk, double *out) noexcept nogil:
     """The pair's tangent d(forces)/dv at the current state, sum_k L_k^T K_k L_k with each
-    bearing's true tangent K_k (the change of K with the angle included)."""
-    cdef const Case *cs = &pr.bear
-    cdef Point *pt
+    bearing's true tangent K_k (``side_tangent``)."""
     cdef double t[25]
-    cdef double d
-    cdef int k, j, i
+    cdef int k, i
     for i in range(25):
         out[i] = 0.0
     for k in range(2):
-        pt = &wk.cur.side[k].pt
-        for j in range(cs.z):
-            d = pt.b.d[j] if pt.b.d[j] > 0 else 1.0
-            wk.w1[j] = 1.5 * (1.0 + wk.cur.side[k].kappa[j]) * pt.lo.root[j]
-            wk.w2[j] = 0.0
-            wk.w3[j] = 0.0
-            if turns(cs, pt.b.rho[j], pt.b.u[j]):
-                wk.w2[j] = pt.lo.q[j] / d
-                if cs.curve != NULL and pt.lo.root[j] > 0:
-                    wk.w3[j] = (curve_slope(cs, pt.lo.ca[j], pt.lo.cam1[j]) * -pt.lo.sa[j]
-                                * pt.lo.root[j] ** 3 / d)
-        tangent(cs, pt.lo.ca, pt.lo.sa, wk.w1, wk.w2, wk.w3 if cs.curve != NULL else NULL,
-                False, t)
+        side_tangent(pr, wk, k, t)
         add_mapped(pr, k, t, out)
 
 
@@ -1798,6 +1804,50 @@ cdef int pair_newton(const Pair *pr, PairWork *wk, double *vh, double *vl,
     return its
 
 
+cdef void axial_position(Case *cs, double delta, double *hi, double *lo) noexcept nogil:
+    """The axial position (double-double) at which every ball of the one-sided bearing ``cs``
+    is at the approach ``delta`` with no radial move: the closed form, then 4 Newton steps on
+    the double-double approach of ``reference`` (every ball alike: one ball on the load line)."""
+    cdef double vh[5]
+    cdef double vl[5]
+    cdef double rho, u, d, eps, up, sa, sum_, err
+    cdef double one = 1.0, zero = 0.0
+    cdef Balls b
+    cdef int i
+    b.rho, b.u, b.d, b.eps, b.up = &rho, &u, &d, &eps, &up
+    cs.z, cs.c, cs.s, cs.t_imp, cs.one_sided = 1, &one, &zero, 0.0, 1
+    for i in range(5):
+        vh[i] = 0.0
+        vl[i] = 0.0
+    hi[0] = sqrt(cs.gap * (2.0 * cs.a_hat - cs.gap) + delta * (2.0 * cs.a_hat + delta))
+    lo[0] = 0.0
+    for i in range(4):
+        vh[2] = hi[0]
+        vl[2] = lo[0]
+        reference(cs, vh, vl, b)
+        sa = up / (d if d > 0 else 1.0)
+        two_sum(hi[0], (delta - eps) / (sa if sa > 0 else 1.0), &sum_, &err)
+        quick(sum_, err + lo[0], hi, lo)
+
+
+def axial_at(const double[::1] a_hat, const double[::1] gap, const double[::1] b_hi,
+             const double[::1] b_lo, const double[::1] delta):
+    """The local axial position (hi, lo) (n,) each at which every ball of a one-sided bearing
+    (scaled: ``a_hat``, ``gap``, ``b_hi``, ``b_lo`` (n,) as :func:`solve_pair` takes them) is
+    at the approach ``delta`` (n,) with no radial move (``axial_position``)."""
+    cdef Py_ssize_t n = a_hat.shape[0], k
+    hi_a = np.empty(n)
+    lo_a = np.empty(n)
+    cdef double[::1] hi = hi_a, lo = lo_a
+    cdef Case cs
+    memset(&cs, 0, sizeof(Case))
+    with nogil:
+        for k in range(n):
+            cs.a_hat, cs.gap, cs.b_hi, cs.b_lo = a_hat[k], gap[k], b_hi[k], b_lo[k]
+            axial_position(&cs, delta[k], &hi[k], &lo[k])
+    return hi_a, lo_a
+
+
 def solve_pair(const double[:, ::1] c, const double[:, ::1] s, const double[::1] a_hat,
                const double[::1] pre, const double[::1] gap, const double[::1] b_hi,
                const double[::1] b_lo, const double[::1] sigma, const double[:, ::1] arm,
@@ -1820,11 +1870,11 @@ def solve_pair(const double[:, ::1] c, const double[:, ::1] s, const double[::1]
     ``max_steps``, ``halvings`` (the double-double stage) and ``first_steps`` (the first)
     default to the module's limits.
 
-    Returns (vh, vl, residual, steps, status, balls, kappa): the position in double-double
-    (n, 5) each, the residual before the last step (n,), the steps of both stages (n,), the
-    status (n,: OK, or NO_MEMORY), the
-    balls of each bearing at the answer (5, 2, n, z: rho, u, d, eps, up) and their stiffness
-    deviations (2, n, z).
+    Returns (vh, vl, residual, steps, status, balls, kappa, tangents): the position in
+    double-double (n, 5) each, the residual before the last step (n,), the steps of both
+    stages (n,), the status (n,: OK, or NO_MEMORY), the balls of each bearing at the answer
+    (5, 2, n, z: rho, u, d, eps, up), their stiffness deviations (2, n, z) and each bearing's
+    true tangent there in its local coordinates, scaled (2, n, 5, 5: ``side_tangent``).
     """
     cdef Py_ssize_t n = c.shape[0], k
     cdef int z = <int> c.shape[1], i, b
@@ -1836,6 +1886,8 @@ def solve_pair(const double[:, ::1] c, const double[:, ::1] s, const double[::1]
     status_a = np.empty(n, dtype=np.int32)
     balls_a = np.zeros((5, 2, n, z))
     kappa_a = np.zeros((2, n, z))
+    tangents_a = np.zeros((2, n, 5, 5))
+    cdef double[:, :, :, ::1] tangents = tangents_a
     cdef double[:, ::1] vh = vh_a, vl = vl_a
     cdef double[::1] res = res_a
     cdef int64_t[::1] its = its_a
@@ -1885,8 +1937,9 @@ def solve_pair(const double[:, ::1] c, const double[:, ::1] s, const double[::1]
                     balls[3, b, k, i] = pt.b.eps[i]
                     balls[4, b, k, i] = pt.b.up[i]
                     kap[b, k, i] = wk.cur.side[b].kappa[i]
+                side_tangent(&pr, &wk, b, &tangents[b, k, 0, 0])
             free(wk.block)
-    return vh_a, vl_a, res_a, its_a, status_a, balls_a, kappa_a
+    return vh_a, vl_a, res_a, its_a, status_a, balls_a, kappa_a, tangents_a
 
 
 cdef void pair_case(Pair *pr, Py_ssize_t k, int z, const double *c, const double *s,

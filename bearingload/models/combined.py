@@ -610,7 +610,7 @@ def solve_combined(
             kappa,
             its,
             checked,
-            _stiffness_matrix(problem, geo, tangent[0], mirror & (mc == 0)),
+            physical_tangent(problem, geo, tangent[0], mirror & (mc == 0)),
         )
         return _result(problem, geo, answer, shape, given, misalignment, undetermined)
 
@@ -1263,18 +1263,6 @@ class _StiffnessCurve:
         terms = self.w / (t[..., None] - self.x)  # t is never a node: no node is 0 or 1
         return cos_m1 * (terms * self.values[idx][:, None, :]).sum(-1) / terms.sum(-1)
 
-    def slope(self, cos_alpha: np.ndarray, cos_m1: np.ndarray) -> np.ndarray:
-        """d(kappa)/d(cos alpha) of every case (n, z), the derivative of the interpolant:
-        ``D + (c - 1) dD/dc`` with the barycentric quotient differentiated term by term."""
-        t = 2.0 * np.clip(cos_alpha, 0.0, 1.0) - 1.0
-        inv = 1.0 / (t[..., None] - self.x)
-        terms = self.w * inv
-        f = self.values[:, None, :]
-        num, den = (terms * f).sum(-1), terms.sum(-1)
-        d_num, d_den = -(terms * inv * f).sum(-1), -(terms * inv).sum(-1)
-        dd_dc = 2.0 * (d_num * den - num * d_den) / (den * den)
-        return num / den + cos_m1 * dd_dc
-
 
 def _solve_with_stiffness(
     p: Problem,
@@ -1390,43 +1378,6 @@ def _refuse_edge(case: int, ball: int, given: dict) -> None:
     )
 
 
-def tangent_weights(
-    p: Problem, b: _ring.Balls, lo: _ring.Loads, kappa: np.ndarray, slope: np.ndarray | None
-) -> tuple[np.ndarray, np.ndarray, np.ndarray | None]:
-    """Each ball's weights (w1, w2, w3) of :func:`bearingload.models._combined_ring.ball_tangent`
-    at its state: dQ/d(delta), Q/d where the normal turns, and, with the ``slope``
-    d(kappa)/d(cos alpha) of a Hertz stiffness curve, dQ/d(alpha)/d (None at a constant K);
-    scaled, as the ring's forces are."""
-    inside = _ring.turns(b.rho, b.u, p.one_sided)
-    d = np.where(b.d > 0, b.d, 1.0)
-    w1 = 1.5 * (1.0 + kappa) * lo.root
-    w2 = np.where(inside, lo.q / d, 0.0)
-    if slope is None:
-        return w1, w2, None
-    dq = slope * -lo.sa * lo.root**3  # dQ/d(alpha), scaled
-    return w1, w2, np.where(inside & (lo.root > 0), dq / d, 0.0)
-
-
-def _tangent(p: Problem, geo: _Geometry, point: _ring.Point, kappa: np.ndarray,
-             curve: _StiffnessCurve | None, mirrored: np.ndarray) -> np.ndarray:  # fmt: skip
-    """The stiffness matrix of every case at its equilibrium (n, 5, 5): d(generalised force)/
-    d(displacement), rows (F_x, F_y, F_a [N], M, M_c [N mm]), columns (x, y, axial [mm], tilt,
-    tilt_cross [rad]), every component free (the held ones too: holding them is the solver's).
-
-    Ball j carries ``Q_j = K(alpha_j) delta_j^1.5`` along its contact normal ``g_j``; its part
-    of the matrix is ``dQ/d(delta) g g^T + Q/d h h^T + dQ/d(alpha) g h^T / d`` (``h`` the
-    direction in which the normal turns, ``d`` the distance of the groove centres; the last term
-    from the stiffness's change with the contact angle, about 1e-5 of the matrix on a 6205). The
-    matrix returned is that tangent, not quite symmetric (its symmetric part is the results'
-    ``stiffness_matrix_symmetric``); with a constant ``stiffness`` it is symmetric. In a
-    case symmetric about the load line (``mirrored``: the balls and the loads) the couplings of
-    (x, axial, tilt) with (y, tilt_cross) are 0, exactly rather than to rounding."""
-    b, lo = point.b, point.lo
-    slope = None if curve is None else curve.slope(lo.ca, lo.cam1)
-    t = _ring.ball_tangent(p.arms, lo.ca, lo.sa, *tangent_weights(p, b, lo, kappa, slope))
-    return _physical(p, geo, t, mirrored)
-
-
 def _physical(p: Problem, geo: _Geometry, t: np.ndarray, mirrored: np.ndarray) -> np.ndarray:
     """The scaled tangent ``t`` (n, 5, 5, changed in place) in physical units, the couplings
     of the mirrored cases and those within rounding exactly 0."""
@@ -1448,11 +1399,22 @@ def _physical(p: Problem, geo: _Geometry, t: np.ndarray, mirrored: np.ndarray) -
     return t
 
 
-def _stiffness_matrix(
+def physical_tangent(
     p: Problem, geo: _Geometry, tangent: np.ndarray, mirrored: np.ndarray
 ) -> np.ndarray:
     """The stiffness matrix of every case (n, 5, 5) from the core's tangent of the ring forces
-    (scaled), in physical units, as :func:`_tangent` states it."""
+    (scaled, ``tangent`` (n, 5, 5)), in physical units: d(generalised force)/d(displacement),
+    rows (F_x, F_y, F_a [N], M, M_c [N mm]), columns (x, y, axial [mm], tilt, tilt_cross
+    [rad]), every component free (the held ones too: holding them is the solver's).
+
+    Ball j carries ``Q_j = K(alpha_j) delta_j^1.5`` along its contact normal ``g_j``; its part
+    of the matrix is ``dQ/d(delta) g g^T + Q/d h h^T + dQ/d(alpha) g h^T / d`` (``h`` the
+    direction in which the normal turns, ``d`` the distance of the groove centres; the last term
+    from the stiffness's change with the contact angle, about 1e-5 of the matrix on a 6205). The
+    matrix returned is that tangent, not quite symmetric (its symmetric part is the results'
+    ``stiffness_matrix_symmetric``); with a constant ``stiffness`` it is symmetric. In a
+    case symmetric about the load line (``mirrored``: the balls and the loads) the couplings of
+    (x, axial, tilt) with (y, tilt_cross) are 0, exactly rather than to rounding."""
     return _physical(p, geo, tangent.copy(), mirrored)
 
 

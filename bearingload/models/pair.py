@@ -176,6 +176,7 @@ class _State:
     balls: list[_ring.Balls]
     kappa: list[np.ndarray]
     loads: list[_ring.Loads]
+    tangents: np.ndarray  # each bearing's true tangent, local and scaled (2, n, 5, 5)
 
 
 def _local(pp: _Pair, k: int, vh: np.ndarray, vl: np.ndarray) -> tuple[np.ndarray, np.ndarray]:
@@ -190,11 +191,6 @@ def _local(pp: _Pair, k: int, vh: np.ndarray, vl: np.ndarray) -> tuple[np.ndarra
     wh[:, 2], wl[:, 2] = _ring._fast(hi, e2 + s * vl[:, 2] + pp.off_lo[:, k])
     wh[:, 3:], wl[:, 3:] = s * vh[:, 3:], s * vl[:, 3:]
     return wh, wl
-
-
-def _dd_add(vh: np.ndarray, vl: np.ndarray, w: np.ndarray) -> tuple[np.ndarray, np.ndarray]:
-    hi, lo = _ring._two_sum(vh, w)
-    return _ring._fast(hi, lo + vl)
 
 
 def _solve_stages(pp: _Pair, v0: np.ndarray, curve: Any) -> tuple[Any, ...]:
@@ -219,7 +215,7 @@ def _solve_stages(pp: _Pair, v0: np.ndarray, curve: Any) -> tuple[Any, ...]:
         pp.off_lo,
         pp.f,
     )
-    vh, vl, res, its, _, balls, kappa = _core.solve_pair(
+    vh, vl, res, its, _, balls, kappa, tangents = _core.solve_pair(
         *(np.ascontiguousarray(a, dtype=float) for a in floats),
         np.ascontiguousarray(pp.held, dtype=np.uint8),
         np.ascontiguousarray(values, dtype=float),
@@ -232,6 +228,7 @@ def _solve_stages(pp: _Pair, v0: np.ndarray, curve: Any) -> tuple[Any, ...]:
         sides,
         [kappa[0], kappa[1]],
         [_ring.loads(p, b, kp) for b, kp in zip(sides, kappa, strict=True)],
+        tangents,
     )
     return vh, vl, res, its, st
 
@@ -401,6 +398,8 @@ _UNITS = {"radial_load": "N", "axial_load": "N", "moment": "N mm", "moment_cross
 
 def _solve(z: int, kind: str, c: dict, shape: tuple[int, ...]) -> PairDistribution:
     """The pair of the flat, checked cases ``c``."""
+    from bearingload.models import _core
+
     geo = _comb._angular_geometry(c["ball_diameter"], c["pitch_diameter"], c["f_i"], c["f_o"],
                                   c["contact_angle"])  # fmt: skip
     if "tilt_radius" in c:
@@ -439,7 +438,7 @@ def _solve(z: int, kind: str, c: dict, shape: tuple[int, ...]) -> PairDistributi
                         one_sided=np.ones(n, dtype=bool))  # fmt: skip
     rows = np.arange(n)
     delta_p = _preload_approach(z, fp / f_ref, prob, curve, rows)
-    u_hi, u_lo = _axial_at(prob, delta_p)
+    u_hi, u_lo = _core.axial_at(prob.a_hat, prob.gap, prob.b_hi, prob.b_lo, delta_p)
     first = -0.5 if kind in ("DB", "DT") else 0.5
     lever = np.array([first, -first]) * c["width"][:, None]
     sigma = np.array([1.0, 1.0 if kind == "DT" else -1.0])
@@ -507,24 +506,6 @@ def _preload_approach(
     return np.where(on, x1, 0.0)
 
 
-def _axial_at(p: Problem, delta: np.ndarray) -> tuple[np.ndarray, np.ndarray]:
-    """The local axial position (scaled, double-double) at which every ball of a bearing is at
-    the approach ``delta`` with no radial move: the closed form, then Newton steps on the
-    double-double approach of :func:`~bearingload.models._combined_ring.reference`."""
-    big_a, gap = p.a_hat, p.gap
-    hi = np.sqrt(gap * (2.0 * big_a - gap) + delta * (2.0 * big_a + delta))
-    lo = np.zeros_like(hi)
-    v = np.zeros((hi.size, 5))
-    for _ in range(4):
-        vh, vl = v.copy(), v.copy()
-        vh[:, 2], vl[:, 2] = hi, lo
-        b = _ring.reference(p, vh, vl)
-        eps = b.eps[:, 0]
-        sa = b.up[:, 0] / np.where(b.d[:, 0] > 0, b.d[:, 0], 1.0)
-        hi, lo = _dd_add(hi, lo, (delta - eps) / np.where(sa > 0, sa, 1.0))
-    return hi, lo
-
-
 def _start(pp: _Pair, z: int, geo: Any, pre: np.ndarray) -> np.ndarray:
     """A start: the shares of the loads a rigid ring would give (Stribeck's 5 for the radial
     load), or the preloaded position where the preload is the larger."""
@@ -584,8 +565,7 @@ def _result(kind: str, pp: _Pair, geo: Any, answer: tuple[Any, ...], c: dict,
         wh, wl = _local(pp, k, vh, vl)
         lo = st.loads[k]
         gen, size = _ring.forces(p, lo)
-        at = _ring.Point(st.balls[k], lo, gen, size, np.zeros(n), np.zeros(n, dtype=np.int64))
-        tangent = _comb._tangent(p, geo, at, st.kappa[k], curve, mirrored)
+        tangent = _comb.physical_tangent(p, geo, st.tangents[k], mirrored)
         axisymmetric = pp.held[:, 0]  # no radial force nor moment on a bearing, exactly
         given = {"radial_load": np.where(axisymmetric, 0.0, np.hypot(gen[:, 0], gen[:, 1]) * f_ref),
                  "axial_load": gen[:, 2] * f_ref,
