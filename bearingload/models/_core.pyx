@@ -25,7 +25,7 @@ Double-double arithmetic needs every product rounded on its own: the build compi
 with ``-ffp-contract=off`` (setup.py); the exact products use ``fma``.
 """
 
-from libc.math cimport (atan, atan2, cos, exp, expm1, fabs, fma, hypot, isfinite, isnan, log,
+from libc.math cimport (atan, atan2, cbrt, cos, exp, expm1, fabs, fma, hypot, isfinite, isnan, log,
                         log1p, pow, sin, sqrt, INFINITY, NAN)
 from libc.stdint cimport int64_t
 from libc.stdlib cimport free, malloc
@@ -1546,7 +1546,7 @@ cdef void lean_on(double *block, int z, Lean *ln) noexcept nogil:
 cdef void pair_local(const Pair *pr, int k, const double *vh, const double *vl, double *wh,
                      double *wl) noexcept nogil:
     """Bearing k's local position L_k v + its axial offset, double-double (the lever's
-    product exact, the sums carried; pair._local does the same in numpy for the results)."""
+    product exact, the sums carried)."""
     cdef double s = pr.sigma[k], r = pr.arm[k], p, e, hi, e2
     cdef int i, t
     for i in range(2):
@@ -1804,6 +1804,68 @@ cdef int pair_newton(const Pair *pr, PairWork *wk, double *vh, double *vl,
     return its
 
 
+cdef double preload_thrust(const Case *cs, double delta) noexcept nogil:
+    """The thrust (scaled) of the one-sided bearing ``cs`` with every ball at the approach
+    ``delta`` and no radial move: ``z K(alpha) delta^1.5 sin(alpha)``, ``cos(alpha) =
+    A cos(alpha_0)/(A + delta)``."""
+    cdef double d = cs.a_hat + delta, sa, ca, kappa = 0.0
+    # sin^2 = (d^2 - cc^2)/d^2, with d^2 - cc^2 = gap (2A - gap) + delta (2A + delta)
+    sa = sqrt(cs.gap * (2.0 * cs.a_hat - cs.gap) + delta * (2.0 * cs.a_hat + delta)) / d
+    if cs.curve != NULL:
+        ca = (cs.a_hat - cs.gap) / d
+        kappa = curve_kappa(cs, ca, -sa * sa / (1.0 + ca))
+    return cs.z * (1.0 + kappa) * pow(delta, 1.5) * sa
+
+
+cdef double preload_delta(const Case *cs, double target) noexcept nogil:
+    """The approach of every ball of the bearing ``cs`` carrying the thrust ``target > 0``
+    (scaled) alone, by secant steps in log-log to the last digit (Harris & Kotzalas §8.3): from
+    the approach at the free angle (an upper bound), the slope 1.5 of a fixed angle first and
+    within [1, 4] after; stopped at the first step below the last digit."""
+    cdef double goal = log(target), sin0, x0, x1, x2, f0, f1, step, slope, root
+    cdef int i
+    sin0 = sqrt(cs.gap * (2.0 * cs.a_hat - cs.gap)) / cs.a_hat
+    root = cbrt(target / (cs.z * sin0))
+    x0 = root * root
+    f0 = log(preload_thrust(cs, x0)) - goal
+    x1 = x0 * exp(-f0 / 1.5)
+    for i in range(60):
+        f1 = log(preload_thrust(cs, x1)) - goal
+        step = log(x1) - log(x0)
+        slope = (f1 - f0) / step if step != 0 else 1.5
+        x2 = x1 * exp(-f1 / min(max(slope, 1.0), 4.0))
+        x0, f0 = x1, f1
+        if not fabs(x2 - x1) > 2e-16 * x1:
+            break
+        x1 = x2
+    return x1
+
+
+def preload_approach(int z, const double[::1] target, const double[::1] a_hat,
+                     const double[::1] gap, const double[:, ::1] curve,
+                     const double[::1] node_x, const double[::1] node_w):
+    """The approach delta_p (scaled) of every ball of a one-sided bearing of z balls carrying
+    the thrust ``target`` (n,, scaled) alone (``preload_delta``); 0 where the target is not
+    positive. ``a_hat``, ``gap`` (n,) as :func:`solve_pair` takes them; ``curve`` (n, NODES)
+    the stiffness curve, or (n, 0) for a constant K, with its ``node_x``, ``node_w``."""
+    cdef Py_ssize_t n = target.shape[0], k
+    cdef bint has_curve = curve.shape[1] == NODES
+    delta_a = np.zeros(n)
+    cdef double[::1] delta = delta_a
+    cdef Case cs
+    memset(&cs, 0, sizeof(Case))
+    cs.z = z
+    cs.node_x = &node_x[0]
+    cs.node_w = &node_w[0]
+    with nogil:
+        for k in range(n):
+            if target[k] > 0:
+                cs.a_hat, cs.gap = a_hat[k], gap[k]
+                cs.curve = &curve[k, 0] if has_curve else NULL
+                delta[k] = preload_delta(&cs, target[k])
+    return delta_a
+
+
 cdef void axial_position(Case *cs, double delta, double *hi, double *lo) noexcept nogil:
     """The axial position (double-double) at which every ball of the one-sided bearing ``cs``
     is at the approach ``delta`` with no radial move: the closed form, then 4 Newton steps on
@@ -1870,11 +1932,12 @@ def solve_pair(const double[:, ::1] c, const double[:, ::1] s, const double[::1]
     ``max_steps``, ``halvings`` (the double-double stage) and ``first_steps`` (the first)
     default to the module's limits.
 
-    Returns (vh, vl, residual, steps, status, balls, kappa, tangents): the position in
+    Returns (vh, vl, residual, steps, status, balls, kappa, tangents, local): the position in
     double-double (n, 5) each, the residual before the last step (n,), the steps of both
     stages (n,), the status (n,: OK, or NO_MEMORY), the balls of each bearing at the answer
-    (5, 2, n, z: rho, u, d, eps, up), their stiffness deviations (2, n, z) and each bearing's
-    true tangent there in its local coordinates, scaled (2, n, 5, 5: ``side_tangent``).
+    (5, 2, n, z: rho, u, d, eps, up), their stiffness deviations (2, n, z), each bearing's
+    true tangent there in its local coordinates, scaled (2, n, 5, 5: ``side_tangent``), and
+    its local position (2, n, 5: ``pair_local``, the double-double summed).
     """
     cdef Py_ssize_t n = c.shape[0], k
     cdef int z = <int> c.shape[1], i, b
@@ -1887,7 +1950,11 @@ def solve_pair(const double[:, ::1] c, const double[:, ::1] s, const double[::1]
     balls_a = np.zeros((5, 2, n, z))
     kappa_a = np.zeros((2, n, z))
     tangents_a = np.zeros((2, n, 5, 5))
+    local_a = np.zeros((2, n, 5))
     cdef double[:, :, :, ::1] tangents = tangents_a
+    cdef double[:, :, ::1] local = local_a
+    cdef double wh[5]
+    cdef double wl[5]
     cdef double[:, ::1] vh = vh_a, vl = vl_a
     cdef double[::1] res = res_a
     cdef int64_t[::1] its = its_a
@@ -1938,8 +2005,11 @@ def solve_pair(const double[:, ::1] c, const double[:, ::1] s, const double[::1]
                     balls[4, b, k, i] = pt.b.up[i]
                     kap[b, k, i] = wk.cur.side[b].kappa[i]
                 side_tangent(&pr, &wk, b, &tangents[b, k, 0, 0])
+                pair_local(&pr, b, &vh[k, 0], &vl[k, 0], wh, wl)
+                for i in range(5):
+                    local[b, k, i] = wh[i] + wl[i]
             free(wk.block)
-    return vh_a, vl_a, res_a, its_a, status_a, balls_a, kappa_a, tangents_a
+    return vh_a, vl_a, res_a, its_a, status_a, balls_a, kappa_a, tangents_a, local_a
 
 
 cdef void pair_case(Pair *pr, Py_ssize_t k, int z, const double *c, const double *s,

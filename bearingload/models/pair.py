@@ -177,20 +177,7 @@ class _State:
     kappa: list[np.ndarray]
     loads: list[_ring.Loads]
     tangents: np.ndarray  # each bearing's true tangent, local and scaled (2, n, 5, 5)
-
-
-def _local(pp: _Pair, k: int, vh: np.ndarray, vl: np.ndarray) -> tuple[np.ndarray, np.ndarray]:
-    """Bearing k's local position ``L_k v`` + its axial offset, double-double (n, 5) each."""
-    s, r = float(pp.sigma[k]), -pp.lever[:, k]
-    wh, wl = np.empty_like(vh), np.empty_like(vl)
-    for i, t in ((0, 3), (1, 4)):  # x - (z_k/R_i) t: the product exact, the sum carried
-        p, e = _ring._two_prod(vh[:, t], r)
-        hi, e2 = _ring._two_sum(vh[:, i], p)
-        wh[:, i], wl[:, i] = _ring._fast(hi, e2 + e + vl[:, i] + r * vl[:, t])
-    hi, e2 = _ring._two_sum(s * vh[:, 2], pp.off_hi[:, k])
-    wh[:, 2], wl[:, 2] = _ring._fast(hi, e2 + s * vl[:, 2] + pp.off_lo[:, k])
-    wh[:, 3:], wl[:, 3:] = s * vh[:, 3:], s * vl[:, 3:]
-    return wh, wl
+    local: np.ndarray  # each bearing's local position, scaled (2, n, 5)
 
 
 def _solve_stages(pp: _Pair, v0: np.ndarray, curve: Any) -> tuple[Any, ...]:
@@ -215,7 +202,7 @@ def _solve_stages(pp: _Pair, v0: np.ndarray, curve: Any) -> tuple[Any, ...]:
         pp.off_lo,
         pp.f,
     )
-    vh, vl, res, its, _, balls, kappa, tangents = _core.solve_pair(
+    vh, vl, res, its, _, balls, kappa, tangents, local = _core.solve_pair(
         *(np.ascontiguousarray(a, dtype=float) for a in floats),
         np.ascontiguousarray(pp.held, dtype=np.uint8),
         np.ascontiguousarray(values, dtype=float),
@@ -229,6 +216,7 @@ def _solve_stages(pp: _Pair, v0: np.ndarray, curve: Any) -> tuple[Any, ...]:
         [kappa[0], kappa[1]],
         [_ring.loads(p, b, kp) for b, kp in zip(sides, kappa, strict=True)],
         tangents,
+        local,
     )
     return vh, vl, res, its, st
 
@@ -436,8 +424,10 @@ def _solve(z: int, kind: str, c: dict, shape: tuple[int, ...]) -> PairDistributi
                         t_imp=np.zeros(n), locked=np.zeros((n, 5), dtype=bool),
                         imposed=np.zeros((n, 5), dtype=bool), f_ref=f_ref, k_ref=k_ref,
                         one_sided=np.ones(n, dtype=bool))  # fmt: skip
-    rows = np.arange(n)
-    delta_p = _preload_approach(z, fp / f_ref, prob, curve, rows)
+    nodes = (np.zeros((n, 0)), np.zeros(1), np.zeros(1))  # a constant K: no curve
+    if curve is not None:
+        nodes = (curve.values, curve.x, curve.w)
+    delta_p = _core.preload_approach(z, fp / f_ref, prob.a_hat, prob.gap, *nodes)
     u_hi, u_lo = _core.axial_at(prob.a_hat, prob.gap, prob.b_hi, prob.b_lo, delta_p)
     first = -0.5 if kind in ("DB", "DT") else 0.5
     lever = np.array([first, -first]) * c["width"][:, None]
@@ -462,48 +452,6 @@ def _replace_radius(geo: Any, radius: np.ndarray) -> Any:
     import dataclasses
 
     return dataclasses.replace(geo, R_i=np.broadcast_to(radius, geo.D_w.shape).astype(float))
-
-
-def _preload_approach(
-    z: int, target: np.ndarray, p: Problem, curve: Any, rows: np.ndarray
-) -> np.ndarray:
-    """The approach delta_p (scaled) of every ball of a bearing carrying the thrust ``target``
-    (scaled) alone: ``z K(alpha) delta^1.5 sin(alpha) = F_p`` with ``cos(alpha) = A cos(alpha_0)
-    /(A + delta)`` (Harris & Kotzalas §8.3), by secant steps in log-log to the last digit; 0 without preload."""
-    big_a, gap = p.a_hat, p.gap
-    cc = big_a - gap  # A cos(alpha_0)
-
-    def thrust(delta: np.ndarray) -> np.ndarray:
-        d = big_a + delta
-        # sin^2 = (d^2 - cc^2)/d^2, with d^2 - cc^2 = gap (2A - gap) + delta (2A + delta)
-        sa = np.sqrt(gap * (2.0 * big_a - gap) + delta * (2.0 * big_a + delta)) / d
-        kappa = 0.0
-        if curve is not None:
-            ca = cc / d
-            kappa = curve(rows, ca[:, None], (-sa * sa / (1.0 + ca))[:, None])[:, 0]
-        return z * (1.0 + kappa) * delta**1.5 * sa
-
-    on = target > 0
-    goal = np.log(np.where(on, target, 1.0))
-    sin0 = np.sqrt(gap * (2.0 * big_a - gap)) / big_a
-    x0 = np.cbrt(np.where(on, target, 1.0) / (z * sin0)) ** 2  # the angle kept: an upper bound
-    f0 = np.log(thrust(x0)) - goal
-    x1 = x0 * np.exp(-f0 / 1.5)
-    # A case stops for good at its first step below the last digit: had it gone on while
-    # another case of the call moved (x0 = x1, the slope then 1.5), it could take one more step
-    # of an ulp or two, and its bits would depend on the other cases of its call.
-    moving = on.copy()
-    for _ in range(60):  # secant in log-log (a slope of 1.5 at a fixed angle, a little more)
-        f1 = np.log(thrust(x1)) - goal
-        step = np.log(x1) - np.log(x0)
-        slope = np.where(step != 0, (f1 - f0) / np.where(step != 0, step, 1.0), 1.5)
-        x2 = x1 * np.exp(-f1 / np.clip(slope, 1.0, 4.0))
-        x0, f0 = np.where(moving, x1, x0), np.where(moving, f1, f0)
-        moving &= np.abs(x2 - x1) > 2e-16 * x1
-        x1 = np.where(moving, x2, x1)
-        if not moving.any():
-            break
-    return np.where(on, x1, 0.0)
 
 
 def _start(pp: _Pair, z: int, geo: Any, pre: np.ndarray) -> np.ndarray:
@@ -562,7 +510,6 @@ def _result(kind: str, pp: _Pair, geo: Any, answer: tuple[Any, ...], c: dict,
     bearings = []
     total = np.zeros((n, 5, 5))
     for k in range(2):
-        wh, wl = _local(pp, k, vh, vl)
         lo = st.loads[k]
         gen, size = _ring.forces(p, lo)
         tangent = _comb.physical_tangent(p, geo, st.tangents[k], mirrored)
@@ -572,7 +519,7 @@ def _result(kind: str, pp: _Pair, geo: Any, answer: tuple[Any, ...], c: dict,
                  "moment": np.where(axisymmetric, 0.0, gen[:, 3] * f_ref * radius),
                  "clearance": np.zeros(n),
                  "cage_angle": c["cage_angle"]}  # fmt: skip
-        out = (wh + wl, st.kappa[k], its, (st.balls[k], lo, gen), tangent)
+        out = (st.local[k], st.kappa[k], its, (st.balls[k], lo, gen), tangent)
         bearings.append(_comb._result(p, geo, out, shape, given, None))
         phys = maps[:, k].copy()
         phys[:, 0, 3] *= radius
