@@ -1067,25 +1067,72 @@ cdef int fast_newton(const Case *cs, Work *wk, Fast *cur, Fast *trial, double *v
     return steps
 
 
-cdef void stiffness(const Case *cs, Work *wk, double *out) noexcept nogil:
-    """The tangent of the ring forces at the current point (scaled, every component free):
-    d(generalised force)/d(displacement), with the stiffness's change with the contact angle
-    (w3) where K follows it (combined._stiffness_matrix puts it in physical units)."""
+cdef void true_tangent(const Case *cs, Point *pt, const double *kappa, double *w1, double *w2,
+                       double *w3, double *out) noexcept nogil:
+    """The tangent of the ring forces at the point ``pt`` with the stiffness deviations
+    ``kappa`` (scaled, every component free): d(generalised force)/d(displacement), with the
+    stiffness's change with the contact angle (w3) where K follows it; ``w1``, ``w2``, ``w3``
+    work arrays of z (``physical`` puts it in physical units)."""
     cdef int j
-    cdef Point *pt = &wk.pt
     cdef double d
-    cdef double *w3 = wk.dd  # (free at the answer)
     for j in range(cs.z):
         d = pt.b.d[j] if pt.b.d[j] > 0 else 1.0
-        wk.w1[j] = 1.5 * (1.0 + wk.kappa[j]) * pt.lo.root[j]
-        wk.w2[j] = 0.0
+        w1[j] = 1.5 * (1.0 + kappa[j]) * pt.lo.root[j]
+        w2[j] = 0.0
         w3[j] = 0.0
         if turns(cs, pt.b.rho[j], pt.b.u[j]):
-            wk.w2[j] = pt.lo.q[j] / d
+            w2[j] = pt.lo.q[j] / d
             if cs.curve != NULL and pt.lo.root[j] > 0:
                 w3[j] = (curve_slope(cs, pt.lo.ca[j], pt.lo.cam1[j]) * -pt.lo.sa[j]
                          * pt.lo.root[j] ** 3 / d)
-    tangent(cs, pt.lo.ca, pt.lo.sa, wk.w1, wk.w2, w3 if cs.curve != NULL else NULL, False, out)
+    tangent(cs, pt.lo.ca, pt.lo.sa, w1, w2, w3 if cs.curve != NULL else NULL, False, out)
+
+
+cdef void stiffness(const Case *cs, Work *wk, double *out) noexcept nogil:
+    """The true tangent at the current point of a solve (``true_tangent``)."""
+    true_tangent(cs, &wk.pt, wk.kappa, wk.w1, wk.w2, wk.dd, out)  # (wk.dd free at the answer)
+
+
+cdef bint physical_case(double *t, double factor, double radius, bint mirrored,
+                        int z) noexcept nogil:
+    """One case's scaled tangent ``t`` (5 x 5, in place) in physical units: times ``factor``
+    = F/s and the tilt lever ``radius`` on the tilt rows and columns; the couplings of
+    (x, axial, tilt) with (y, tilt_cross) 0 where the case is ``mirrored``; an entry within
+    the rounding of its sum over the z balls (``|K_ab| <= 4 z eps sqrt(K_aa K_bb)``) 0. False
+    (the rounding left alone) where an entry overflows."""
+    cdef double lever[5]
+    cdef double diag[5]
+    cdef double small = 4.0 * z * 2.220446049250313e-16
+    cdef int i, k
+    for i in range(5):
+        lever[i] = radius if i >= 3 else 1.0
+    for i in range(5):
+        for k in range(5):
+            t[5 * i + k] *= factor * lever[i] * lever[k]
+            if mirrored and (i == 1 or i == 4) != (k == 1 or k == 4):
+                t[5 * i + k] = 0.0
+    for i in range(25):
+        if not isfinite(t[i]):
+            return False
+    for i in range(5):
+        diag[i] = sqrt(fabs(t[6 * i]))
+    for i in range(25):
+        if fabs(t[i]) <= small * diag[i // 5] * diag[i % 5]:
+            t[i] = 0.0
+    return True
+
+
+def physical(double[:, :, ::1] t, const double[::1] factor, const double[::1] radius,
+             const unsigned char[::1] mirrored, int z):
+    """The scaled tangents ``t`` (n, 5, 5, in place) in physical units (``physical_case``);
+    returns the cases where an entry overflows (n,) uint8."""
+    cdef Py_ssize_t n = t.shape[0], k
+    bad_a = np.zeros(n, dtype=np.uint8)
+    cdef unsigned char[::1] bad = bad_a
+    with nogil:
+        for k in range(n):
+            bad[k] = not physical_case(&t[k, 0, 0], factor[k], radius[k], mirrored[k], z)
+    return bad_a
 
 
 cdef void holding(const Case *cs, Work *wk, double *out) noexcept nogil:
@@ -1649,24 +1696,8 @@ cdef void add_mapped(const Pair *pr, int k, const double *t, double *out) noexce
 
 
 cdef void side_tangent(const Pair *pr, PairWork *wk, int k, double *t) noexcept nogil:
-    """Bearing k's true tangent at the current state (the change of K with the angle
-    included), in its local coordinates, scaled."""
-    cdef const Case *cs = &pr.bear
-    cdef Point *pt = &wk.cur.side[k].pt
-    cdef double d
-    cdef int j
-    for j in range(cs.z):
-        d = pt.b.d[j] if pt.b.d[j] > 0 else 1.0
-        wk.w1[j] = 1.5 * (1.0 + wk.cur.side[k].kappa[j]) * pt.lo.root[j]
-        wk.w2[j] = 0.0
-        wk.w3[j] = 0.0
-        if turns(cs, pt.b.rho[j], pt.b.u[j]):
-            wk.w2[j] = pt.lo.q[j] / d
-            if cs.curve != NULL and pt.lo.root[j] > 0:
-                wk.w3[j] = (curve_slope(cs, pt.lo.ca[j], pt.lo.cam1[j]) * -pt.lo.sa[j]
-                            * pt.lo.root[j] ** 3 / d)
-    tangent(cs, pt.lo.ca, pt.lo.sa, wk.w1, wk.w2, wk.w3 if cs.curve != NULL else NULL,
-            False, t)
+    """Bearing k's true tangent at the current state, local and scaled (``true_tangent``)."""
+    true_tangent(&pr.bear, &wk.cur.side[k].pt, wk.cur.side[k].kappa, wk.w1, wk.w2, wk.w3, t)
 
 
 cdef void pair_tangent(const Pair *pr, PairWork *wk, double *out) noexcept nogil:

@@ -1380,22 +1380,17 @@ def _refuse_edge(case: int, ball: int, given: dict) -> None:
 
 def _physical(p: Problem, geo: _Geometry, t: np.ndarray, mirrored: np.ndarray) -> np.ndarray:
     """The scaled tangent ``t`` (n, 5, 5, changed in place) in physical units, the couplings
-    of the mirrored cases and those within rounding exactly 0."""
-    lever = np.ones((p.f.shape[0], 5))
-    lever[:, 3:] = geo.R_i[:, None]
-    t *= (p.f_ref / p.scale)[:, None, None] * lever[:, :, None] * lever[:, None, :]
-    along, across = np.array([0, 2, 3]), np.array([1, 4])
-    t[np.ix_(mirrored, along, across)] = 0.0
-    t[np.ix_(mirrored, across, along)] = 0.0
-    if not np.all(np.isfinite(t)):  # a lever of 1e300 mm: its square times K overflows
+    of the mirrored cases and those within the rounding of their sums over the balls exactly 0
+    (the core's ``physical``: ``|K_ab| <= sqrt(K_aa K_bb)`` for this positive semi-definite
+    matrix, so a coupling below 4 z eps of that does not follow the order of the summation)."""
+    from bearingload.models import _core
+
+    radius = np.ascontiguousarray(geo.R_i, dtype=float)
+    if _core.physical(t, p.f_ref / p.scale, radius, mirrored.view(np.uint8), p.z).any():
+        # a lever of 1e300 mm: its square times K overflows
         raise InputError(
             "tilt_radius", "is so large that the tilting stiffness (lever^2 K) overflows"
         )
-    # a coupling within the rounding of its sum over the balls (|K_ab| <= sqrt(K_aa K_bb) for
-    # this positive semi-definite matrix) is 0: it does not follow the order of the summation
-    # (after the overflow check: an infinite diagonal would make the threshold infinite)
-    diag = np.sqrt(np.abs(np.diagonal(t, axis1=1, axis2=2)))
-    t[np.abs(t) <= (4.0 * p.arms.shape[2] * EPS) * diag[:, :, None] * diag[:, None, :]] = 0.0
     return t
 
 
