@@ -25,8 +25,8 @@ Double-double arithmetic needs every product rounded on its own: the build compi
 with ``-ffp-contract=off`` (setup.py); the exact products use ``fma``.
 """
 
-from libc.math cimport (atan, atan2, cbrt, cos, exp, expm1, fabs, fma, hypot, isfinite, isnan, log,
-                        log1p, pow, sin, sqrt, INFINITY, NAN)
+from libc.math cimport (atan, atan2, cbrt, copysign, cos, exp, expm1, fabs, fma, fmod, hypot,
+                        isfinite, isnan, log, log1p, pow, rint, sin, sqrt, INFINITY, NAN)
 from libc.stdint cimport int64_t
 from libc.stdlib cimport free, malloc
 from libc.string cimport memset
@@ -1370,6 +1370,55 @@ cdef int solve_case(const Case *cs, const double *v0, bint given, double *vh, do
 
 
 # ------------------------------------------------------------------------ Python boundary
+
+cdef inline double floor_mod(double a, double b) noexcept nogil:
+    """a mod b with the sign of b, numpy's ``mod`` of doubles."""
+    cdef double m = fmod(a, b)
+    if m == 0:
+        return copysign(0.0, b)
+    if (b < 0) != (m < 0):
+        m += b
+    return m
+
+
+cdef bint ball_directions(int z, double cage, double snap, double *c, double *s) noexcept nogil:
+    """cos and sin of every ball's angle (ball j at ``cage + 360° j/z``), and whether the case
+    is symmetric about the load line (the cage within ``snap`` of 0 or half a pitch): then the
+    directions exactly mirrored, ball j at (k_j / z) turns, k_j = j + first + (0 or 1/2), the
+    angle folded onto [0, 180°] before its cosine is taken (combined._directions says why)."""
+    cdef double pitch = 360.0 / z, frac, first, k, folded, rad = cage * (PI / 180.0)
+    cdef bint half, mirror
+    cdef int j
+    frac = floor_mod(fmod(fabs(cage), 360.0), pitch)
+    half = fabs(frac - pitch / 2.0) <= snap
+    mirror = frac <= snap or frac >= pitch - snap or half
+    first = rint((cage - 0.5 * pitch * half) / pitch)
+    for j in range(z):
+        if mirror:
+            k = floor_mod(j + first + 0.5 * half, z)
+            folded = 2.0 * PI * min(k, z - k) / z
+            c[j] = cos(folded)
+            s[j] = (1.0 if k <= z / 2.0 else -1.0) * sin(folded)
+        else:
+            c[j] = cos(rad + 2.0 * PI * j / z)
+            s[j] = sin(rad + 2.0 * PI * j / z)
+    return mirror
+
+
+def directions(int z, const double[::1] cage, double snap):
+    """cos and sin of every ball's angle (n, z) each and which cases are symmetric about the
+    load line (n,) bool, for the cage angles ``cage`` (n,) [°] (``ball_directions``)."""
+    cdef Py_ssize_t n = cage.shape[0], k
+    c_a = np.empty((n, z))
+    s_a = np.empty((n, z))
+    mirror_a = np.empty(n, dtype=bool)
+    cdef double[:, ::1] c = c_a, s = s_a
+    cdef unsigned char[::1] mirror = mirror_a.view(np.uint8)
+    with nogil:
+        for k in range(n):
+            mirror[k] = ball_directions(z, cage[k], snap, &c[k, 0], &s[k, 0])
+    return c_a, s_a, mirror_a
+
 
 cdef void store(const Work *wk, int z, double *kappa, double *balls, Py_ssize_t stride,
                 double *gen, double *size, double *res) noexcept nogil:

@@ -1009,29 +1009,18 @@ def _check_angular_scale(
 
 def _directions(z: int, cage: np.ndarray) -> tuple[np.ndarray, np.ndarray, np.ndarray]:
     """cos and sin of every ball's angle (n, z), and which cases are symmetric about the load
-    line (n,): a cage at 0 or half a pitch, within the radial engine's snap (rounding).
+    line (n,): a cage at 0 or half a pitch, within the radial engine's snap (rounding); the
+    compiled core's ``directions``.
 
     The directions of a symmetric case are exactly mirrored (the angle folded onto [0, 180°]
     before its cosine is taken, as the radial engine does): cos(phi_j) and cos(-phi_j) computed
     apart differ in their last bit, which at a clearance of millions of elastic approaches
     unbalances the mirror balls' loads by 1e-5, against a y held at 0 by the symmetry.
     """
+    from bearingload.models import _core
     from bearingload.models._ring import SYMMETRY_SNAP_DEG
 
-    pitch = 360.0 / z
-    j = np.arange(z)
-    frac = np.mod(np.fmod(np.abs(cage), 360.0), pitch)
-    snap = SYMMETRY_SNAP_DEG
-    half = np.abs(frac - pitch / 2.0) <= snap
-    mirror = (frac <= snap) | (frac >= pitch - snap) | half
-    phi = np.deg2rad(cage)[:, None] + 2.0 * np.pi * j / z
-    c, s = np.cos(phi), np.sin(phi)
-    if mirror.any():  # ball j at (k_j / z) turns, k_j = j + first + (0 or 1/2)
-        first = np.round((cage[mirror] - 0.5 * pitch * half[mirror]) / pitch)
-        k = np.mod(j + first[:, None] + 0.5 * half[mirror, None], z)
-        folded = 2.0 * np.pi * np.minimum(k, z - k) / z
-        c[mirror], s[mirror] = np.cos(folded), np.where(k <= z / 2.0, 1.0, -1.0) * np.sin(folded)
-    return c, s, mirror
+    return _core.directions(z, np.ascontiguousarray(cage, dtype=float), SYMMETRY_SNAP_DEG)
 
 
 def _locks(
