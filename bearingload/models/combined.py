@@ -305,11 +305,11 @@ def _geometry(dw: Any, dm: Any, fi: Any, fo: Any, clearance: Any) -> _Geometry:
     fi = validate.finite("f_i", fi)
     fo = validate.finite("f_o", fo)
     g = validate.finite("clearance", clearance) / 2.0
-    if np.any(dw >= dm):
+    if (dw >= dm).any():
         raise InputError("ball_diameter", "must be smaller than the pitch diameter")
     fi, fo = validate.conformity("f_i", fi), validate.conformity("f_o", fo)
     A = (fi + fo - 1.0) * dw
-    if np.any(g >= A):
+    if (g >= A).any():
         raise InputError(
             "clearance",
             "must be smaller than 2 (f_i + f_o - 1) D_w, the clearance at which the ball "
@@ -586,7 +586,7 @@ def solve_combined(
     else:
         k_ref = flat[14]
     f_ref = _reference_force(fr, fa, mm, mc, geo.R_i)
-    if np.any(f_ref <= 0):
+    if (f_ref <= 0).any():
         raise InputError("radial_load", "give a radial load, an axial load or a moment")
     _check_scale(f_ref, k_ref, geo.A, angular is not None, load_sizes(fr, fa, mm, mc, geo.R_i))
     if angular is not None:
@@ -758,15 +758,15 @@ def _angular(contact_angle: Any, fa: np.ndarray, clearance: Any) -> np.ndarray |
     if contact_angle is None:
         return None
     alpha = validate.finite("contact_angle", contact_angle)
-    if np.any((alpha < 0) | (alpha > 60)):
+    if ((alpha < 0) | (alpha > 60)).any():
         raise InputError("contact_angle", "must be from 0 to 60°")
-    if np.any(validate.finite("clearance", clearance) != 0):
+    if (validate.finite("clearance", clearance) != 0).any():
         raise InputError(
             "clearance",
             "must be 0 with a contact angle: the design contact angle fixes the geometry of an "
             "angular-contact bearing",
         )
-    if np.any(fa < 0):
+    if (fa < 0).any():
         raise InputError(
             "axial_load",
             "must be >= 0 N for an angular-contact bearing: its balls take thrust one way only "
@@ -803,14 +803,14 @@ def _check_one_sided_moment(
         _check_one_sided_cross(z, cage, fa, mc, radius)
         return
     tilting = (mm != 0) | (mc != 0)
-    if not np.any(tilting):
+    if not tilting.any():
         return
     half = math.pi / z
     normals = np.deg2rad(cage)[:, None] + 2.0 * math.pi * np.arange(z) / z + half
     with np.errstate(divide="ignore", invalid="ignore"):
         reach = (mm[:, None] * np.cos(normals) + mc[:, None] * np.sin(normals)).max(axis=1)
         bad = tilting & ~(reach < math.cos(half) * fa * radius)
-    if np.any(bad):
+    if bad.any():
         i = int(np.flatnonzero(bad)[0])
         limit = math.cos(half) * fa[i] * radius[i]
         raise InputError(
@@ -827,13 +827,13 @@ def _check_one_sided_cross(
 ) -> None:
     """Refuse a moment across the load line that a single angular-contact bearing with its tilt
     imposed cannot hold (:func:`_check_one_sided_moment`)."""
-    if not np.any(mc):
+    if not mc.any():
         return
     sines = np.sin(np.deg2rad(cage)[:, None] + 2.0 * math.pi * np.arange(z) / z)
     with np.errstate(divide="ignore", invalid="ignore"):
         ratio = mc / (fa * radius)
         bad = (mc != 0) & ~((ratio < sines.max(axis=1)) & (ratio > sines.min(axis=1)))
-    if np.any(bad):
+    if bad.any():
         i = int(np.flatnonzero(bad)[0])
         limit = float(np.max(np.abs(sines[i]))) * fa[i] * radius[i]
         raise InputError(
@@ -897,7 +897,7 @@ def _reference_force(
     """The largest of F_r, |F_a| and the moments over the tilt lever, per case. [N]"""
     with np.errstate(over="ignore"):  # a moment over a lever of 1e-300 mm: refused
         f_ref = np.maximum(np.maximum(fr, np.abs(fa)), np.hypot(mm, mc) / lever)
-    if not np.all(np.isfinite(f_ref)):
+    if not np.isfinite(f_ref).all():
         raise InputError(
             "moment" if np.any(mm) else "moment_cross",
             "over the tilt lever (tilt_radius) it is a force beyond the largest number",
@@ -919,7 +919,7 @@ def _check_scale(
     the first case refused (the first named among equals); without them, ``radial_load``."""
     with np.errstate(over="ignore", divide="ignore"):
         scale = (f_ref / k_ref) ** (2.0 / 3.0)
-    if not np.all(scale <= 1e100):  # the radial engine's bound of the one-ball approach
+    if not (scale <= 1e100).all():  # the radial engine's bound of the one-ball approach
         raise InputError(
             "radial_load",
             f"the loads and the ball stiffness give a one-ball approach (F/K)^(2/3) = "
@@ -927,7 +927,7 @@ def _check_scale(
             "the modulus and the tilt lever",
         )
     bad = np.broadcast_to(big_a, scale.shape) / scale > GEOMETRY_RATIO_MAX
-    if np.any(bad):
+    if bad.any():
         f_min = float(
             np.max(k_ref * (np.broadcast_to(big_a, scale.shape) / GEOMETRY_RATIO_MAX) ** 1.5)
         )
@@ -993,7 +993,7 @@ def _check_angular_scale(
     a = np.broadcast_to(big_a, f_ref.shape)
     with np.errstate(over="ignore", divide="ignore"):
         bad = a / (f_ref / k_ref) ** (2.0 / 3.0) < ANGULAR_RATIO_MIN
-    if np.any(bad):
+    if bad.any():
         i = int(np.argmax(bad))
         f_max = float(k_ref[i] * (a[i] / ANGULAR_RATIO_MIN) ** 1.5)
         which = int(np.argmax([np.broadcast_to(v, f_ref.shape)[i] for v in loads]))
@@ -1292,7 +1292,7 @@ def _solve_with_stiffness(
     )  # fmt: skip
     balls, gen, size, res = at
     failed = status != _core.Status.OK
-    if strict and np.any(failed):  # the cases by their rows: the caller names their inputs
+    if strict and failed.any():  # the cases by their rows: the caller names their inputs
         raise ConvergenceError(
             "combined-load ball stiffness update",
             MAX_STIFFNESS_UPDATES,
@@ -1315,7 +1315,7 @@ def _checked(p: Problem, end: _ring.Point, its: np.ndarray, given: dict) -> tupl
     b, lo, gen, size = end.b, end.lo, end.gen, end.size
     res = _ring.residual(p, gen, size, p.imposed)
     bad = ~(res <= ACCEPT)
-    if np.any(bad):
+    if bad.any():
         known = res[bad][~np.isnan(res[bad])]  # nanmax of all-NaN would warn on the terminal
         raise ConvergenceError(
             "combined-load ring equilibrium",
@@ -1327,7 +1327,7 @@ def _checked(p: Problem, end: _ring.Point, its: np.ndarray, given: dict) -> tupl
     # crossed groove centres, or a contact angle that rounds to 90° (a minimum may sit at the
     # edge: there the potential's curvature across the groove ends)
     edge = (lo.root > 0) & ((b.rho <= 0) | (np.rad2deg(np.arctan2(np.abs(lo.sa), lo.ca)) >= 90.0))
-    if np.any(edge):
+    if edge.any():
         case, ball = (int(i[0]) for i in np.nonzero(edge))
         _refuse_edge(case, ball, given)
     return b, lo, gen
