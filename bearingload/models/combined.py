@@ -104,6 +104,7 @@ from __future__ import annotations
 
 import dataclasses
 import math
+from collections.abc import Callable
 from dataclasses import dataclass
 from typing import Any
 
@@ -588,13 +589,17 @@ def solve_combined(
     f_ref = _reference_force(fr, fa, mm, mc, geo.R_i)
     if (f_ref <= 0).any():
         raise InputError("radial_load", "give a radial load, an axial load or a moment")
-    _check_scale(f_ref, k_ref, geo.A, angular is not None, load_sizes(fr, fa, mm, mc, geo.R_i))
+    _check_scale(
+        f_ref, k_ref, geo.A, angular is not None, lambda: load_sizes(fr, fa, mm, mc, geo.R_i)
+    )
     if angular is not None:
         _check_angular_scale(f_ref, k_ref, geo.A, (fr, fa, np.hypot(mm, mc) / geo.R_i))
     t_imp = geo.R_i * np.deg2rad(tilt_deg)  # [mm]
     c, s, mirror = _directions(z, cage)
     held, imposed = _locks(z, mirror, (fr, fa, mm, mc), t_imp, misalignment is not None)
-    f = np.stack([fr, np.zeros_like(fr), fa, mm / geo.R_i, mc / geo.R_i], axis=1) / f_ref[:, None]
+    f = np.zeros((fr.shape[0], 5))
+    f[:, 0], f[:, 2], f[:, 3], f[:, 4] = fr, fa, mm / geo.R_i, mc / geo.R_i
+    f /= f_ref[:, None]
     one_sided = np.full(fr.shape, angular is not None)
     problem = Problem.make(z, (c, s), (geo.A, geo.g), f=f, t_imp=t_imp, locked=held,
                            imposed=imposed, f_ref=f_ref, k_ref=k_ref, one_sided=one_sided)  # fmt: skip
@@ -910,13 +915,14 @@ def _check_scale(
     k_ref: np.ndarray,
     big_a: np.ndarray,
     angular: bool = False,
-    sizes: dict[str, np.ndarray] | None = None,
+    sizes: Callable[[], dict[str, np.ndarray]] | None = None,
 ) -> None:
     """Refuse loads so small against the groove geometry that the scaled problem loses its
     digits (the radial solver, without an axial load, takes any ratio; an angular-contact
     bearing, ``angular``, has no other solver: the message gives the smallest load taken).
-    ``sizes`` (:func:`load_sizes`, by parameter [N]) name the parameter of the largest load of
-    the first case refused (the first named among equals); without them, ``radial_load``."""
+    ``sizes`` (called on a refusal: :func:`load_sizes`, by parameter [N]) name the parameter of
+    the largest load of the first case refused (the first named among equals); without them,
+    ``radial_load``."""
     with np.errstate(over="ignore", divide="ignore"):
         scale = (f_ref / k_ref) ** (2.0 / 3.0)
     if not (scale <= 1e100).all():  # the radial engine's bound of the one-ball approach
@@ -934,7 +940,7 @@ def _check_scale(
         step = 10.0 ** (math.floor(math.log10(f_min)) - 1)  # shown to 2 digits, rounded up
         f_min = math.ceil(f_min / step * (1 - 1e-12)) * step
         raise InputError(
-            _largest_load(sizes, int(np.argmax(bad))),
+            _largest_load(None if sizes is None else sizes(), int(np.argmax(bad))),
             f"the loads are too small for the combined solver (the largest of F_r, |F_a| and "
             f"M/R_i is {float(np.min(f_ref)):.3g} N; it takes at least {f_min:.2g} N for this "
             "bearing)",
@@ -1136,6 +1142,8 @@ def _thrust_retry(p: Problem, geo: _Geometry, curve: _StiffnessCurve | None) -> 
     THRUST_RATIO F_r more balls carry load and the standard start converges; each stage starts
     from the answer of the one before, nearly the same ring position."""
     vh, vl, kappa, total, end, tangent = _solve_with_stiffness(p, geo, curve)
+    if not p.one_sided.any():
+        return vh, vl, kappa, total, end, tangent
     res = _ring.residual(p, end.gen, end.size, p.imposed)
     f0, f2 = p.f[:, 0], p.f[:, 2]
     rows = np.flatnonzero(
@@ -1216,12 +1224,13 @@ def _hertz_setup(geo: _Geometry, e: np.ndarray, nu: np.ndarray) -> tuple[np.ndar
     from bearingload.contact.hertz import ball_stiffness
     from bearingload.models import _core
 
-    params = np.stack([geo.D_w, geo.d_m, geo.f_i, geo.f_o, e, nu], axis=1)
+    params = np.empty((geo.D_w.shape[0], 6))
+    for i, column in enumerate((geo.D_w, geo.d_m, geo.f_i, geo.f_o, e, nu)):
+        params[:, i] = column
     k0, values, bad = _core.hertz_curves(params, _NODE_X)
-    at = np.append(_NODE_COS, 1.0)  # the nodes and cos(alpha) = 1
     for i in np.flatnonzero(bad).tolist():
         dw, dm, fi, fo, ee, nn = params[i]
-        k = ball_stiffness(dw, dm / at, fi, fo, ee, nn).ball
+        k = ball_stiffness(dw, dm / np.append(_NODE_COS, 1.0), fi, fo, ee, nn).ball
         k0[i], values[i] = k[-1], (k[:-1] / k[-1] - 1.0) / (_NODE_COS - 1.0)
     return k0, values
 
@@ -1421,7 +1430,7 @@ def _result(
     z = p.z
 
     def case(a: np.ndarray) -> Any:
-        return numerics.scalar_out(np.asarray(a).reshape(shape))
+        return np.asarray(a).reshape(shape) if shape else a.item()
 
     def ball(a: np.ndarray) -> np.ndarray:
         return a.reshape(shape + (z,))

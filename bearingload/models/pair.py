@@ -403,8 +403,11 @@ def _solve(z: int, kind: str, c: dict, shape: tuple[int, ...]) -> PairDistributi
     f_ref = np.maximum(_comb._reference_force(fr, fa, mm, mc, geo.R_i), fp)
     if np.any(f_ref <= 0):
         raise InputError("radial_load", "give a radial load, an axial load, a moment or a preload")
+
     # the first case refused names the parameter of its largest load, the preload among them
-    sizes = {"preload": fp} | _comb.load_sizes(fr, fa, mm, mc, geo.R_i)
+    def sizes() -> dict[str, np.ndarray]:
+        return {"preload": fp} | _comb.load_sizes(fr, fa, mm, mc, geo.R_i)
+
     try:
         _comb._check_scale(f_ref, k_ref, geo.A, sizes=sizes)
     except InputError as exc:  # its advice (the radial solver) does not apply to a pair
