@@ -291,7 +291,11 @@ def groove_geometry(
     >>> round(float(A), 4), round(float(a0), 4), round(float(sa), 5)
     (0.575, 7.5614, 0.15133)
     """
-    geo = _geometry(ball_diameter, pitch_diameter, f_i, f_o, clearance)
+    geo = _geometry(
+        validate.positive("ball_diameter", ball_diameter, "mm"),
+        validate.positive("pitch_diameter", pitch_diameter, "mm"),
+        *validate.each_finite(f_i=f_i, f_o=f_o, clearance=clearance),
+    )
     play = 2.0 * geo.A * np.sin(geo.alpha0)
     return (
         numerics.scalar_out(geo.A),
@@ -301,11 +305,12 @@ def groove_geometry(
 
 
 def _geometry(dw: Any, dm: Any, fi: Any, fo: Any, clearance: Any) -> _Geometry:
-    dw = validate.positive("ball_diameter", dw, "mm")
-    dm = validate.positive("pitch_diameter", dm, "mm")
-    fi = validate.finite("f_i", fi)
-    fo = validate.finite("f_o", fo)
-    g = validate.finite("clearance", clearance) / 2.0
+    """The geometry of finite arrays (:func:`bearingload.validate.finite`), refused where it
+    is not one of a deep-groove ball bearing."""
+    for name, value in (("ball_diameter", dw), ("pitch_diameter", dm)):
+        if not (value > 0).all():
+            validate.positive(name, value, "mm")  # (raises, naming the value)
+    g = clearance / 2.0
     if (dw >= dm).any():
         raise InputError("ball_diameter", "must be smaller than the pitch diameter")
     fi, fo = validate.conformity("f_i", fi), validate.conformity("f_o", fo)
@@ -751,7 +756,7 @@ def _least_tilt_step(p: Problem, i: int, end: _ring.Point, v: np.ndarray, d: np.
 def _angular_geometry(dw: Any, dm: Any, fi: Any, fo: Any, alpha_deg: np.ndarray) -> _Geometry:
     """The deep-groove geometry whose free contact angle is the design angle alpha_0 [°]:
     ``G_r = 2A (1 - cos alpha_0) = 4A sin^2(alpha_0/2)``, alpha_0 kept as given."""
-    big_a = (validate.finite("f_i", fi) + validate.finite("f_o", fo) - 1.0) * dw
+    big_a = (fi + fo - 1.0) * dw
     geo = _geometry(dw, dm, fi, fo, 4.0 * big_a * np.sin(np.deg2rad(alpha_deg) / 2.0) ** 2)
     alpha0 = np.deg2rad(alpha_deg)  # as given, not through the arcsine
     return dataclasses.replace(geo, alpha0=alpha0, R_i=dm / 2.0 + (fi - 0.5) * dw * np.cos(alpha0))
