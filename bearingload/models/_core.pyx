@@ -2012,11 +2012,12 @@ def solve_pair(const double[:, ::1] c, const double[:, ::1] s, const double[::1]
     ``max_steps``, ``halvings`` (the double-double stage) and ``first_steps`` (the first)
     default to the module's limits.
 
-    Returns (vh, vl, residual, steps, status, balls, kappa, tangents, local): the position in
-    double-double (n, 5) each, the residual before the last step (n,), the steps of both
-    stages (n,), the status (n,: OK, or NO_MEMORY), the balls of each bearing at the answer
-    (5, 2, n, z: rho, u, d, eps, up), their stiffness deviations (2, n, z), each bearing's
-    true tangent there in its local coordinates, scaled (2, n, 5, 5: ``side_tangent``), and
+    Returns (vh, vl, residual, steps, status, balls, kappa, gen, tangents, local): the
+    position in double-double (n, 5) each, the residual before the last step (n,), the steps
+    of both stages (n,), the status (n,: OK, or NO_MEMORY), the balls of each bearing at the
+    answer and their loads (13, 2, n, z: rho, u, d, eps, up, ca, sa, cam1, q, dq, root, tau,
+    sig), their stiffness deviations (2, n, z), each bearing's generalised forces in its local
+    coordinates (2, n, 5), its true tangent there, scaled (2, n, 5, 5: ``side_tangent``), and
     its local position (2, n, 5: ``pair_local``, the double-double summed).
     """
     cdef Py_ssize_t n = c.shape[0], k
@@ -2027,12 +2028,13 @@ def solve_pair(const double[:, ::1] c, const double[:, ::1] s, const double[::1]
     res_a = np.empty(n)
     its_a = np.zeros(n, dtype=np.int64)
     status_a = np.empty(n, dtype=np.int32)
-    balls_a = np.zeros((5, 2, n, z))
+    balls_a = np.zeros((BALL_ARRAYS, 2, n, z))
     kappa_a = np.zeros((2, n, z))
+    gen_a = np.zeros((2, n, 5))
     tangents_a = np.zeros((2, n, 5, 5))
     local_a = np.zeros((2, n, 5))
     cdef double[:, :, :, ::1] tangents = tangents_a
-    cdef double[:, :, ::1] local = local_a
+    cdef double[:, :, ::1] local = local_a, gen = gen_a
     cdef double wh[5]
     cdef double wl[5]
     cdef double[:, ::1] vh = vh_a, vl = vl_a
@@ -2077,19 +2079,17 @@ def solve_pair(const double[:, ::1] c, const double[:, ::1] s, const double[::1]
             status[k] = OK
             for b in range(2):
                 pt = &wk.cur.side[b].pt
+                for i in range(BALL_ARRAYS * z):  # the point's 13 arrays, one block
+                    balls[i // z, b, k, i % z] = pt.b.rho[i]
                 for i in range(z):
-                    balls[0, b, k, i] = pt.b.rho[i]
-                    balls[1, b, k, i] = pt.b.u[i]
-                    balls[2, b, k, i] = pt.b.d[i]
-                    balls[3, b, k, i] = pt.b.eps[i]
-                    balls[4, b, k, i] = pt.b.up[i]
                     kap[b, k, i] = wk.cur.side[b].kappa[i]
                 side_tangent(&pr, &wk, b, &tangents[b, k, 0, 0])
                 pair_local(&pr, b, &vh[k, 0], &vl[k, 0], wh, wl)
                 for i in range(5):
                     local[b, k, i] = wh[i] + wl[i]
+                    gen[b, k, i] = pt.gen[i]
             free(wk.block)
-    return vh_a, vl_a, res_a, its_a, status_a, balls_a, kappa_a, tangents_a, local_a
+    return vh_a, vl_a, res_a, its_a, status_a, balls_a, kappa_a, gen_a, tangents_a, local_a
 
 
 cdef void pair_case(Pair *pr, Py_ssize_t k, int z, const double *c, const double *s,

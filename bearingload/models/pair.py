@@ -176,6 +176,7 @@ class _State:
     balls: list[_ring.Balls]
     kappa: list[np.ndarray]
     loads: list[_ring.Loads]
+    gen: np.ndarray  # each bearing's generalised forces, local and scaled (2, n, 5)
     tangents: np.ndarray  # each bearing's true tangent, local and scaled (2, n, 5, 5)
     local: np.ndarray  # each bearing's local position, scaled (2, n, 5)
 
@@ -183,7 +184,8 @@ class _State:
 def _solve_stages(pp: _Pair, v0: np.ndarray, curve: Any) -> tuple[Any, ...]:
     """Every case solved from ``v0`` in the compiled core (:func:`bearingload.models._core.
     solve_pair`: Newton in plain doubles to a residual of 1e-9, then with the balls in
-    double-double to the tolerance): (position hi, lo, residual, steps, the balls there)."""
+    double-double to the tolerance): (position hi, lo, residual, steps, the balls, their loads
+    and forces there)."""
     from bearingload.models import _core
 
     p = pp.probs[0]
@@ -202,7 +204,7 @@ def _solve_stages(pp: _Pair, v0: np.ndarray, curve: Any) -> tuple[Any, ...]:
         pp.off_lo,
         pp.f,
     )
-    vh, vl, res, its, _, balls, kappa, tangents, local = _core.solve_pair(
+    vh, vl, res, its, _, balls, kappa, gen, tangents, local = _core.solve_pair(
         *(np.ascontiguousarray(a, dtype=float) for a in floats),
         np.ascontiguousarray(pp.held, dtype=np.uint8),
         np.ascontiguousarray(values, dtype=float),
@@ -210,11 +212,12 @@ def _solve_stages(pp: _Pair, v0: np.ndarray, curve: Any) -> tuple[Any, ...]:
         _comb._NODE_W,
         np.ascontiguousarray(v0, dtype=float),
     )
-    sides = [_ring.Balls(*balls[:, k]) for k in range(2)]
+    q0 = np.where(p.deviation, p.pre * np.sqrt(p.pre), 0.0)
     st = _State(
-        sides,
+        [_ring.Balls(*balls[:5, k]) for k in range(2)],
         [kappa[0], kappa[1]],
-        [_ring.loads(p, b, kp) for b, kp in zip(sides, kappa, strict=True)],
+        [_ring.Loads(*balls[5:, k], q0) for k in range(2)],  # type: ignore[call-arg]
+        gen,
         tangents,
         local,
     )
@@ -513,8 +516,7 @@ def _result(kind: str, pp: _Pair, geo: Any, answer: tuple[Any, ...], c: dict,
     bearings = []
     total = np.zeros((n, 5, 5))
     for k in range(2):
-        lo = st.loads[k]
-        gen, size = _ring.forces(p, lo)
+        lo, gen = st.loads[k], st.gen[k]
         tangent = _comb.physical_tangent(p, geo, st.tangents[k], mirrored)
         axisymmetric = pp.held[:, 0]  # no radial force nor moment on a bearing, exactly
         given = {"radial_load": np.where(axisymmetric, 0.0, np.hypot(gen[:, 0], gen[:, 1]) * f_ref),
