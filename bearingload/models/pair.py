@@ -331,7 +331,7 @@ def solve_pair(
     c = dict(zip(named, (a.ravel() for a in arrays), strict=True))
     c["cage_angle"] = np.mod(c["cage_angle"], 360.0)
     narrow = c["width"] < c["ball_diameter"]
-    if np.any(narrow):  # no ring holds its balls so; the shaft's tilt then has no lever
+    if narrow.any():  # no ring holds its balls so; the shaft's tilt then has no lever
         i = int(np.argmax(narrow))
         raise InputError(
             "width",
@@ -339,7 +339,7 @@ def solve_pair(
             f"B = {c['width'][i]:.6g} mm, D_w = {c['ball_diameter'][i]:.6g} mm",
         )
     wide = c["width"] > WIDTH_MAX * c["pitch_diameter"]
-    if np.any(wide):  # a shaft between two supports, not a pair (a width of 1e9 mm diverged)
+    if wide.any():  # a shaft between two supports, not a pair (a width of 1e9 mm diverged)
         i = int(np.argmax(wide))
         raise InputError(
             "width",
@@ -364,17 +364,17 @@ def _arrangement(arrangement: Any) -> str:
 def _check_pair(kind: str, fa: np.ndarray, fp: np.ndarray, contact_angle: Any) -> None:
     """Refuse what a pair of this arrangement cannot take."""
     alpha = validate.finite("contact_angle", contact_angle)
-    if np.any((alpha <= 0) | (alpha > 60)):
+    if ((alpha <= 0) | (alpha > 60)).any():
         raise InputError("contact_angle", "must be above 0 and at most 60° for a bearing pair")
-    if np.any(fp < 0):
+    if (fp < 0).any():
         raise InputError("preload", "must be >= 0 N")
-    if kind == "DT" and np.any(fp > 0):
+    if kind == "DT" and (fp > 0).any():
         raise InputError(
             "preload",
             "a tandem pair (DT) is not preloaded in itself: both bearings face the same way, "
             "so it is preloaded against another bearing; give 0, or use DB or DF",
         )
-    if kind == "DT" and np.any(fa <= 0):
+    if kind == "DT" and (fa <= 0).any():
         raise InputError(
             "axial_load",
             "must be > 0 N for a tandem pair (DT): both bearings take thrust towards +axial only "
@@ -404,7 +404,7 @@ def _solve(z: int, kind: str, c: dict, shape: tuple[int, ...]) -> PairDistributi
     fr, fa, mm, mc, fp = (c[k] for k in ("radial_load", "axial_load", "moment", "moment_cross",
                                          "preload"))  # fmt: skip
     f_ref = np.maximum(_comb._reference_force(fr, fa, mm, mc, geo.R_i), fp)
-    if np.any(f_ref <= 0):
+    if (f_ref <= 0).any():
         raise InputError("radial_load", "give a radial load, an axial load, a moment or a preload")
 
     # the first case refused names the parameter of its largest load, the preload among them
@@ -476,7 +476,7 @@ def _start(pp: _Pair, z: int, geo: Any, pre: np.ndarray) -> np.ndarray:
 
 def _accepted(res: np.ndarray, its: np.ndarray, given: dict) -> None:
     bad = ~(res <= ACCEPT)
-    if np.any(bad):
+    if bad.any():
         known = res[bad][np.isfinite(res[bad])]
         cases = {k: v[bad] for k, v in given.items()}
         raise ConvergenceError(
@@ -492,7 +492,7 @@ def _check_edge(st: _State, given: dict) -> None:
         edge = (lo.root > 0) & (
             (b.rho <= 0) | (np.rad2deg(np.arctan2(np.abs(lo.sa), lo.ca)) >= 90.0)
         )
-        if np.any(edge):
+        if edge.any():
             from bearingload.errors import format_cases
 
             case = int(np.nonzero(edge)[0][0])
@@ -537,7 +537,7 @@ def _result(kind: str, pp: _Pair, geo: Any, answer: tuple[Any, ...], c: dict,
     v = vh + vl
 
     def case(a: Any) -> Any:
-        return numerics.scalar_out(np.asarray(a).reshape(shape))
+        return np.asarray(a).reshape(shape) if shape else np.asarray(a).item()
 
     lift = None if kind == "DT" else case(_lift_off(pp, geo, curve, delta_p, c))
     return PairDistribution(
