@@ -562,20 +562,11 @@ def solve_combined(
         ball_diameter=ball_diameter, pitch_diameter=pitch_diameter, clearance=clearance
     )
     f_i, f_o = validate.conformity("f_i", f_i), validate.conformity("f_o", f_o)
-    validate.broadcast_shape(
-        {"radial_load": fr, "axial_load": fa, "moment": mm, "misalignment": tilt_deg,
-         "cage_angle": cage, "modulus": e, "poisson": nu, "moment_cross": mc,
-         "ball_diameter": ball_diameter, "pitch_diameter": pitch_diameter, "f_i": f_i,
-         "f_o": f_o, "clearance": clearance, "contact_angle": angular}
-    )  # fmt: skip
-    arrays = np.broadcast_arrays(
-        fr, fa, mm, tilt_deg, cage, e, nu, mc,
-        ball_diameter, pitch_diameter, f_i, f_o, clearance,
-        np.zeros(()) if angular is None else angular,
-        *(() if k_given is None else (k_given,)),
-    )  # fmt: skip
-    shape = arrays[0].shape
-    flat = [a.ravel() for a in arrays]
+    named = dict(radial_load=fr, axial_load=fa, moment=mm, misalignment=tilt_deg, cage_angle=cage)
+    named |= dict(modulus=e, poisson=nu, moment_cross=mc, ball_diameter=ball_diameter)
+    named |= dict(pitch_diameter=pitch_diameter, f_i=f_i, f_o=f_o, clearance=clearance)
+    named["contact_angle"] = np.zeros(()) if angular is None else angular
+    shape, flat = _cases(named | ({} if k_given is None else {"stiffness": k_given}))
     fr, fa, mm, tilt_deg, cage, e, nu, mc, dw, dm, fi, fo, gr, alpha_d = flat[:14]
     geo = _geometry(dw, dm, fi, fo, gr) if angular is None else _angular_geometry(dw, dm, fi, fo, alpha_d)  # fmt: skip
     validate.ball_spacing(z, geo.D_w, geo.d_m)  # (z balls must fit on the pitch circle)
@@ -623,6 +614,18 @@ def solve_combined(
             physical_tangent(problem, geo, tangent[0], mirror & (mc == 0)),
         )
         return _result(problem, geo, answer, shape, given, misalignment, undetermined)
+
+
+def _cases(named: dict[str, np.ndarray]) -> tuple[tuple[int, ...], list[np.ndarray]]:
+    """The case shape the named inputs broadcast to (:func:`bearingload.validate.
+    broadcast_shape` names those that do not fit) and each input flat over the cases; one case
+    (every input a number) as arrays of one element, without numpy's broadcasting."""
+    values = list(named.values())
+    if all(v.ndim == 0 for v in values):
+        return (), [v.reshape(1) for v in values]
+    validate.broadcast_shape(named)
+    arrays = np.broadcast_arrays(*values)
+    return arrays[0].shape, [a.ravel() for a in arrays]
 
 
 def _equilibrium(p: Problem, geo: _Geometry, curve: _StiffnessCurve | None, given: dict) -> tuple:
@@ -1290,7 +1293,8 @@ def _solve_with_stiffness(
     start0 = np.zeros((n, 5))
     if v0 is None:
         rows, light = _light_start(p, geo, curve)
-        given[rows], start0[rows] = 1, light
+        if rows.size:
+            given[rows], start0[rows] = 1, light
     else:
         given[:], start0[:] = 1, v0
     values = np.zeros((n, 0)) if curve is None else curve.values
