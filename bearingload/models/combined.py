@@ -1055,12 +1055,18 @@ def _locks(
     no_tilt = (mm == 0) & (mc == 0) & (t_imp == 0)
     held = np.zeros((n, 5), dtype=bool)
     held[:, 3] = imposed
-    held[:, [1, 4]] |= (mirror & (mc == 0))[:, None]
-    held[:, 2:] |= ((fa == 0) & no_tilt)[:, None]
-    held[:, [0, 1, 3, 4]] |= ((fr == 0) & no_tilt & (z >= 2))[:, None]
-    fixed = np.zeros((n, 5), dtype=bool)
-    fixed[:, 3] = imposed
-    return held, fixed
+    held |= (mirror & (mc == 0))[:, None] & _ACROSS
+    held |= ((fa == 0) & no_tilt)[:, None] & _AXIAL
+    held |= ((fr == 0) & no_tilt & (z >= 2))[:, None] & _RADIAL
+    return held, (held & _TILT) if imposed else np.zeros((n, 5), dtype=bool)
+
+
+#: The components (x, y, a, t, t_c) held by each symmetry of :func:`_locks`: about the load
+#: line, across the mid-plane, the z-fold one; and the tilt. [-]
+_ACROSS = np.array([False, True, False, False, True])
+_AXIAL = np.array([False, False, True, True, True])
+_RADIAL = np.array([True, True, False, True, True])
+_TILT = np.array([False, False, False, True, False])
 
 
 #: An angular-contact case whose groove-centre distance A exceeds LIGHT_RATIO times its one-ball
