@@ -543,9 +543,7 @@ def solve_combined(
     >>> round(float(r.x) * 1e3, 4), float(r.axial), float(r.contact_angles.max())
     (15.1102, 0.0, 0.0)
     """
-    z = int(validate.ball_count(balls, maximum=1000).reshape(-1)[0])
-    if np.size(balls) != 1:
-        raise InputError("balls", "must be one number per call (group the cases by z)")
+    z = call_balls(balls)
     if moment is not None and misalignment is not None:
         raise InputError("moment", "give a moment or a misalignment, not both")
     fr = validate.at_least("radial_load", radial_load, 0.0, "N")
@@ -614,6 +612,17 @@ def solve_combined(
             physical_tangent(problem, geo, tangent[0], mirror & (mc == 0)),
         )
         return _result(problem, geo, answer, shape, given, misalignment, undetermined)
+
+
+def call_balls(balls: Any) -> int:
+    """The ball count z of one call of a solver: one whole number from 1 to 1000
+    (:func:`bearingload.validate.ball_count` refuses any other)."""
+    if type(balls) is int and 1 <= balls <= 1000:  # a plain number: no array machinery
+        return balls
+    z = int(validate.ball_count(balls, maximum=1000).reshape(-1)[0])
+    if np.size(balls) != 1:
+        raise InputError("balls", "must be one number per call (group the cases by z)")
+    return z
 
 
 def _cases(named: dict[str, np.ndarray]) -> tuple[tuple[int, ...], list[np.ndarray]]:

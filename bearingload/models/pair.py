@@ -297,9 +297,7 @@ def solve_pair(
     [500.0, 500.0]
     """
     kind = _arrangement(arrangement)
-    z = int(validate.ball_count(balls, maximum=1000).reshape(-1)[0])
-    if np.size(balls) != 1:
-        raise InputError("balls", "must be one number per call (group the cases by z)")
+    z = _comb.call_balls(balls)
     if z < 3:
         raise InputError(
             "balls",
