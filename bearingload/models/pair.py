@@ -423,7 +423,9 @@ def _solve(z: int, kind: str, c: dict, shape: tuple[int, ...]) -> PairDistributi
         ) from exc
     cos_, sin_, mirror = _comb._directions(z, c["cage_angle"])
     n = fr.size
-    f = np.stack([fr, np.zeros(n), fa, mm / geo.R_i, mc / geo.R_i], axis=1) / f_ref[:, None]
+    f = np.zeros((n, 5))
+    f[:, 0], f[:, 2], f[:, 3], f[:, 4] = fr, fa, mm / geo.R_i, mc / geo.R_i
+    f /= f_ref[:, None]
     prob = Problem.make(z, (cos_, sin_), (geo.A, geo.g), f=np.zeros((n, 5)),
                         t_imp=np.zeros(n), locked=np.zeros((n, 5), dtype=bool),
                         imposed=np.zeros((n, 5), dtype=bool), f_ref=f_ref, k_ref=k_ref,
@@ -436,14 +438,15 @@ def _solve(z: int, kind: str, c: dict, shape: tuple[int, ...]) -> PairDistributi
     first = -0.5 if kind in ("DB", "DT") else 0.5
     lever = np.array([first, -first]) * c["width"][:, None]
     sigma = np.array([1.0, 1.0 if kind == "DT" else -1.0])
-    held = np.zeros((n, 5), dtype=bool)
-    held[:, [1, 4]] = (mirror & (mc == 0))[:, None]  # y and theta_c 0 by symmetry, exactly
+    # y and theta_c 0 by symmetry, exactly; the z-fold symmetry (z >= 3); the bearings' mirror
+    # image across the pair's mid-plane (not DT's)
+    held = (mirror & (mc == 0))[:, None] & np.array([False, True, False, False, True])
     no_moment = (mm == 0) & (mc == 0)
-    held[:, [0, 1, 3, 4]] |= ((fr == 0) & no_moment)[:, None]  # the z-fold symmetry (z >= 3)
-    if kind != "DT":  # the bearings' mirror image across the pair's mid-plane
-        held[:, 2:] |= ((fa == 0) & no_moment)[:, None]
-    pp = _Pair((prob, prob), sigma, lever / geo.R_i[:, None],
-               np.stack([u_hi, u_hi], 1), np.stack([u_lo, u_lo], 1), f, held)  # fmt: skip
+    held |= ((fr == 0) & no_moment)[:, None] & np.array([True, True, False, True, True])
+    if kind != "DT":
+        held |= ((fa == 0) & no_moment)[:, None] & np.array([False, False, True, True, True])
+    offsets = (u_hi[:, None].repeat(2, axis=1), u_lo[:, None].repeat(2, axis=1))
+    pp = _Pair((prob, prob), sigma, lever / geo.R_i[:, None], *offsets, f, held)
     vh, vl, res, its, st = _solve_stages(pp, _start(pp, z, geo, fp / f_ref), curve)
     given = {k: c[k] for k in _UNITS}
     _accepted(res, its, given)
