@@ -313,7 +313,10 @@ def _geometry(dw: Any, dm: Any, fi: Any, fo: Any, clearance: Any) -> _Geometry:
     g = clearance / 2.0
     if (dw >= dm).any():
         raise InputError("ball_diameter", "must be smaller than the pitch diameter")
-    fi, fo = validate.conformity("f_i", fi), validate.conformity("f_o", fo)
+    low, high = validate.CONFORMITY_RANGE
+    for name, f in (("f_i", fi), ("f_o", fo)):
+        if not ((f > low) & (f < high)).all():
+            validate.conformity(name, f)  # (raises, naming the value)
     A = (fi + fo - 1.0) * dw
     if (g >= A).any():
         raise InputError(
