@@ -29,9 +29,9 @@ from typing import Any
 
 import numpy as np
 
+import bearingload.models._core as _core
 from bearingload import validate
 from bearingload.errors import InputError
-from bearingload.models import _core
 
 
 @dataclass(frozen=True)
