@@ -7,7 +7,8 @@ PY ?= python3
 VENV := .venv
 BIN := $(VENV)/bin
 STAMP := $(VENV)/.installed
-CORE := setup.py bearingload/models/_core.pyx bearingload/models/_core.pxd
+CORE := setup.py bearingload/models/_core.pyx bearingload/models/_core.pxd \
+	bearingload/models/_radial.pxi
 
 .PHONY: run test lint tables golden docs bench checked core clean
 

@@ -194,9 +194,10 @@ def test_no_function_is_over_80_lines_of_code():
 
 def _kernel_functions() -> list[tuple[str, str, list[str]]]:
     """(file, header, body lines without the docstring) of every top-level function of the
-    compiled core's sources (.pyx); the header joined over its lines."""
+    compiled core's sources (.pyx and the .pxi files they include); the header joined over
+    its lines."""
     out = []
-    for path in sorted(PACKAGE.rglob("*.pyx")):
+    for path in sorted([*PACKAGE.rglob("*.pyx"), *PACKAGE.rglob("*.pxi")]):
         lines = path.read_text(encoding="utf-8").splitlines()
         starts = [i for i, line in enumerate(lines) if line.startswith(("cdef ", "cpdef ", "def "))]
         for i in starts:

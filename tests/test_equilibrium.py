@@ -286,48 +286,6 @@ def test_general_cage_angles_in_one_array_call_against_mpmath(z):
         assert int(one.loaded_balls) == int(r.loaded_balls[j])
 
 
-@pytest.mark.parametrize("z", [3, 5, 9, 40, 1000])
-@pytest.mark.parametrize("preload", [False, True])
-@pytest.mark.parametrize("nearest", ["ball 1", "ball z"])
-def test_turned_ring_forces_equal_the_load_frame_forces(z, preload, nearest):
-    """The general ring's forces and Jacobian evaluated in the frame of the ball nearest the
-    load line (of the mirror image when that is ball z) and turned back equal the load-frame
-    sums with per-case cosines (also a small K_yy beside a large K_xx: few balls loaded, z up
-    to 1000)."""
-    from bearingload.models import _ring
-
-    rng = np.random.default_rng(z)
-    n = 500
-    frac = rng.uniform(0.0, 0.5, n) if nearest == "ball 1" else rng.uniform(0.5, 1.0, n)
-    frac[0] = 0.5 if nearest == "ball 1" else np.nextafter(0.5, 1.0)  # the boundary
-    if preload:
-        e = -(10 ** rng.uniform(-2, 2, n))
-    else:
-        e = np.where(rng.random(n) < 0.2, 0.0, 10 ** rng.uniform(-3, 6, n))
-    m = rng.choice([1.5, 10 / 9], n)
-    ring = _ring.Ring.general(z, frac, preload)
-    xi, eta, _ = _ring.solve_xy(ring, e, m, 1e-13)
-    # Neither frame is exact: the approach of a ball, a small difference under a large
-    # clearance, and dq = m delta^(m-1) of a ball that barely touches magnify the rounding of
-    # the moves (different in the two frames) beyond eps. At the solution (the balls straddling
-    # the load line both carry) each entry to 1e-11 of its own size (a turn error of eps times
-    # the trace would leave a small K_yy wrong by far more); away from it (a line-search
-    # point), to 1e-12 of the trace.
-    for a, b, strict in ((xi, eta, True), (1.3 * xi, eta - 0.1 * xi, False)):
-        turned = _ring.state(ring, _ring.ALL, a, b, e, m)
-        plain = _ring.state(ring.in_load_frame(), _ring.ALL, a, b, e, m)
-        for name in ("gx", "gy"):
-            diff = np.abs(getattr(turned, name) - getattr(plain, name))
-            assert np.all(diff <= 1e-13 * plain.size), name
-        trace = plain.hxx + plain.hyy
-        for name in ("hxx", "hyy", "hxy"):
-            ref = getattr(plain, name)
-            own = np.sqrt(plain.hxx * plain.hyy) if name == "hxy" else np.abs(ref)
-            bound = 1e-11 * own if strict else 1e-12 * trace
-            assert np.all(np.abs(getattr(turned, name) - ref) <= bound), name
-        assert np.all(np.abs(turned.size - plain.size) <= 1e-13 * plain.size)
-
-
 # ---------------------------------------------------------------------------------------------
 # properties over the whole domain
 # ---------------------------------------------------------------------------------------------

@@ -60,14 +60,15 @@ def test_near_symmetric_preloaded_rings_solve_one_case_and_in_arrays(z, exponent
 def test_a_convergence_error_names_the_users_inputs(monkeypatch, cage):
     """The engine's error named its scaled clearance e_hat; it names the case's inputs."""
     from bearingload.errors import ConvergenceError
-    from bearingload.models import _ring
+    from bearingload.models import equilibrium
 
-    monkeypatch.setattr(_ring, "MAX_ITERATIONS", 1)
+    monkeypatch.setattr(equilibrium, "MAX_ITERATIONS", 1)
     with pytest.raises(ConvergenceError) as info:
         solve(9, 3000.0, 274869.0, 0.012, cage)
     message = str(info.value)
     assert "load = 3000 N" in message and "clearance = 0.012 mm" in message
     assert "balls = 9" in message and "e_hat" not in message
+    assert "nan" not in message
 
 
 def test_a_case_converging_on_the_last_iteration_is_solved():
@@ -79,21 +80,18 @@ def test_a_case_converging_on_the_last_iteration_is_solved():
 
 def test_a_convergence_error_names_only_the_cases_that_failed(monkeypatch):
     """Cases were matched to the engine's failures by their scaled clearance and exponent:
-    three cases of one clearance were all named where one failed."""
+    three cases of one clearance were all named where one failed. With two iterations the
+    symmetric cases (one) solve and the general one (three) fails, in one batch."""
     from bearingload.errors import ConvergenceError
-    from bearingload.models import _ring
+    from bearingload.models import equilibrium
 
-    def second_fails(ring, e_hat, m, tol):  # the general-angle chunk: its first case fails
-        raise ConvergenceError(
-            "ring equilibrium at a general cage angle",
-            200,
-            1e-3,
-            {"e_hat": e_hat[:1], "exponent": m[:1], "rows": np.array([0])},
-        )
-
-    monkeypatch.setattr(_ring, "solve_xy", second_fails)
+    loads = [3000.0, 2000.0, 1000.0]
+    cages = [0.0, 7.0, 0.0]
+    assert solve(9, 2000.0, 274869.0, 0.0, 7.0).iterations > 2
+    assert max(solve(9, np.array(loads), 274869.0, 0.0).iterations) <= 2
+    monkeypatch.setattr(equilibrium, "MAX_ITERATIONS", 2)
     with pytest.raises(ConvergenceError) as info:
-        solve(9, [3000.0, 2000.0, 1000.0], 274869.0, 0.012, [0.0, 7.0, 0.0])
+        solve(9, loads, 274869.0, 0.0, cages)
     message = str(info.value)
     assert "for the case" in message and "load = 2000 N" in message
     assert "cage_angle = 7 °" in message and "3000" not in message
@@ -109,3 +107,22 @@ def test_three_balls_with_one_at_ninety_degrees_solve_in_arrays(cage):
     many = solve(3, 1000.0, 1e5, cage_angle=np.array([cage]))
     assert abs(float(many.q_max[0]) - float(one.q_max)) <= 1e-12 * float(one.q_max)
     _balanced(many[0], 1000.0)
+
+
+def test_few_balls_with_a_stiff_exponent_solve_at_any_cage_angle():
+    """3 balls, m = 3, the cage 2.1° off the load line: after twelve halvings the line search
+    took the step in x alone (x a rounding off balance), while y stayed a tenth of the load
+    out of balance: ConvergenceError ('relative residual 0.0368'); 221 of 20 000 random cases
+    of 3 to 7 balls and m from 2 to 3 failed so. The x step is taken only where x is the more
+    out of balance."""
+    _balanced(solve(3, 1.0, 1.0, 0.0, -2.11076, 3.0), 1.0)
+    rng = np.random.default_rng(1)
+    n = 2000
+    z = rng.integers(3, 8, n)
+    gap = np.where(rng.random(n) < 0.5, 10 ** rng.uniform(-6, 0, n), -(10 ** rng.uniform(-7, 0, n)))
+    clearance = np.where(rng.random(n) < 0.3, 0.0, gap)
+    cage = rng.uniform(-400.0, 400.0, n)
+    m = rng.choice([3.0, 2.5, 2.0], n)
+    r = solve(z, 1.0, 1.0, clearance, cage, m)
+    for i in range(0, n, 7):
+        _balanced(r[i], 1.0)

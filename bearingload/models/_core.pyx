@@ -82,6 +82,10 @@ cpdef enum Status:
     NO_MEMORY = 2      # the work space of a case could not be allocated
 
 
+# the radial engine (the ring of a radial bearing: its forward problem and its equilibrium)
+include "_radial.pxi"
+
+
 # ------------------------------------------------------------------ double-double pieces
 
 cdef inline void two_sum(double a, double b, double *s, double *e) noexcept nogil:

@@ -14,15 +14,18 @@ Kuzmenko 2010, §1-3). Conventions:
   ``(x, y)`` minimises the convex potential ``sum K/(m+1) max(delta_i, 0)^(m+1) - F_r x``.
 
 Numerics. Lengths are scaled by ``s = (F_r/K)^(1/m)``, the approach one ball would have under the
-whole load, so every case is solved at unit load (internals in :mod:`bearingload.models._ring`).
+whole load, so every case is solved at unit load (the ring tables in
+:mod:`bearingload.models._ring`, the solver in the compiled core, ``models/_radial.pxi``).
 With a clearance the unknown is the displacement from the position where the balls nearest the
 load line just touch, so a huge clearance with a small load loses no digits; under preload it is
 the displacement from the centred ring, with the ball forces summed as ``p^m ((1 + t)^m - 1)``
 (the ``p^m`` cancel exactly around the ring), so a heavy preload loses none either. Cages at 0 or
 half pitch are symmetric (``y = 0``): one unknown, bracketed Newton over half the ring; any other
-cage angle: damped Newton in two unknowns, evaluated in the frame of the ball nearest the load
-line (one table of ball angles for all cases of a z). One case alone goes through a pure-Python path
-(:mod:`bearingload.models._scalar`) with the same equations.
+cage angle: damped Newton in two unknowns with an Armijo line search (the ball directions turned
+per case from one table of a z by the angle of the ball nearest the load line). The core solves a
+batch as a C loop over its cases, each from its own data; one case given as numbers is a batch
+of one (``_core.radial_one``, the same kernel), so its answer is the same bits alone or in any
+batch.
 
 Near-symmetric cage angles. A cage angle counts as symmetric (0 or half pitch) only when it is
 within the rounding of its reduction to one turn and one pitch: 4 ulps of 360°, 3.2e-13°. Any
@@ -43,15 +46,14 @@ from typing import Any
 
 import numpy as np
 
+import bearingload.models._core as _core
 from bearingload import numerics, validate
 from bearingload.errors import ConvergenceError, InputError
-from bearingload.models import _ring, _scalar
+from bearingload.models import _ring
 from bearingload.models._ring import (
     APPROACH_RANGE,
     CLEARANCE_RATIO_MAX,
-    MAX_ITERATIONS,
     RESULT_RANGE,
-    Ring,
     gap_factor,
     snapped_cos,
     snapped_sin,
@@ -59,10 +61,10 @@ from bearingload.models._ring import (
 
 #: Relative equilibrium residual the solver drives every case below. [-]
 TOLERANCE = 1e-13
+#: Iteration cap of every Newton loop; reaching it raises ConvergenceError (read per call).
+MAX_ITERATIONS = _ring.MAX_ITERATIONS
 #: A cage angle within this of 0 or half pitch is symmetric (rounding; see the module notes). [°]
 SYMMETRY_SNAP_DEG = _ring.SYMMETRY_SNAP_DEG
-#: Most elements (cases x balls) one vectorised step holds; larger batches go in chunks. [-]
-CHUNK_ELEMENTS = 1 << 18
 __all__ = ["LoadDistribution", "solve", "MAX_ITERATIONS", "TOLERANCE"]
 
 
@@ -322,8 +324,9 @@ def solve(
     (0.5432, 3)
     """
     tol = _tolerance(tolerance)
-    if _scalar.is_one_case(balls, load, stiffness, clearance, cage_angle, exponent):
-        one = _scalar.solve_one(balls, load, stiffness, clearance, cage_angle, exponent, tol)
+    plain = _plain(balls, load, stiffness, clearance, cage_angle, exponent)
+    if plain is not None:
+        one = _solve_one(plain, tol)
         if one is not None:
             return OneCase.of(one)
     inputs = _validated(balls, load, stiffness, clearance, cage_angle, exponent)
@@ -337,10 +340,99 @@ def solve(
     check_range(f, scale, e_hat, m, z)
     frac, kind = _cage_kind(z, cage, phi1_deg)
     try:
-        rows = _solve_groups(z, kind, frac, e_hat, m, tol)
+        rows = _solve_groups(z, kind, frac, e_hat, (f / kk, g, m), tol)
     except ConvergenceError as exc:
         raise _in_user_terms(exc, (z, f, kk, g, cage, m)) from None
-    return _assemble(shape, z, f, kk, g, phi1_deg, m, scale, rows)
+    # the core's scale: the same bits as for the case alone
+    return _assemble(shape, z, f, kk, g, phi1_deg, m, rows[:, _COL["scale"]], rows)
+
+
+_NUMBER = (int, float, np.integer, np.floating)
+
+
+def _plain(*values: Any) -> tuple[Any, ...] | None:
+    """The six inputs as Python numbers when each is a plain real scalar inside the solver's
+    range with room to spare, else None (the vectorised path checks it, or says why not)."""
+    for v in values:
+        kind = type(v)
+        if kind is not float and kind is not int:
+            if not isinstance(v, _NUMBER) or isinstance(v, (bool, np.bool_)):
+                return None
+    try:
+        z, f, k, g, cage, m = (float(v) for v in values)
+        finite = all(math.isfinite(v) for v in (f, k, g, cage))
+        if not (finite and z == int(z) and 1 <= z <= 100_000 and f > 0 and k > 0 and 1 <= m <= 3):
+            return None
+        scale = (f / k) ** (1.0 / m)
+        e_hat = (g / 2.0) / scale
+    except (TypeError, ValueError, OverflowError, ZeroDivisionError):
+        return None
+    # inside every bound of check_range with room to spare
+    if not (-1.0 <= e_hat <= 1e90 and 1e-90 <= scale <= 1e90 and 1e-250 <= f <= 1e250):
+        return None
+    if not 1e-250 <= f / scale <= 1e250:
+        return None
+    return int(z), f, k, g, cage, m, scale, e_hat
+
+
+def _solve_one(plain: tuple[Any, ...], tol: float) -> dict[str, Any] | None:
+    """One case through the core (its kernel, a batch of one): the fields of its ``OneCase``,
+    or None where it is not proven (the vectorised path names the case)."""
+    z, f, k, g, cage, m, _, e_hat = plain
+    phi1_deg = cage % 360.0
+    pitch_deg = 360.0 / z
+    frac = (phi1_deg % pitch_deg) / pitch_deg
+    mirror = (math.fmod(abs(cage), 360.0) % pitch_deg) / pitch_deg
+    snap = SYMMETRY_SNAP_DEG / pitch_deg
+    kind = 0 if (mirror <= snap or mirror >= 1.0 - snap) else 1 if abs(mirror - 0.5) <= snap else 2
+    if z < 3 and kind != 0:
+        return None
+    pre = e_hat < -_ring.PRELOAD_CENTRED and z >= 2
+    tables = _ring.tables(z, kind, pre)
+    row = _core.radial_one(*tables, frac, f / k, g, m, tol, MAX_ITERATIONS, _ring.POLISH)
+    xi, eta, its, q_hat, loaded, hxx, hxy, hyy, residual, status, scale = row[:11]
+    if status != 0 or not residual <= max(tol, 1e-11):
+        return None
+    x0, y0, mu, h = _reference(row[11:], z, kind, pre)
+    e = g / 2.0
+    x, y = e * x0 + xi * scale, e * y0 + eta * scale
+    # the load zone as _load_zone (numpy's hypot, tan and arcsin: the same bits as an array)
+    r = float(np.hypot(x, y))
+    if e > 0:
+        r2_e2 = (e * float(np.tan(h))) ** 2 + 2.0 * e * scale * (x0 * xi + y0 * eta)
+        one_minus = max(r2_e2 + (scale * xi) ** 2 + (scale * eta) ** 2, 0.0) / (r * (r + e))
+    else:
+        one_minus = 1.0 - e / r
+    zone = math.degrees(2.0 * float(np.arcsin(math.sqrt(min(max(one_minus, 0.0), 2.0) / 2.0))))
+    kn = f / scale
+    return {
+        "balls": z,
+        "load": f,
+        "stiffness": k,
+        "clearance": g,
+        "cage_angle": phi1_deg,
+        "exponent": m,
+        "x": x,
+        "y": y,
+        "q_max": q_hat * f,
+        "loaded_balls": round(loaded),
+        "load_zone": zone,
+        "stiffness_matrix": [[hxx * kn, hxy * kn], [hxy * kn, hyy * kn]],
+        "iterations": int(its),
+        "offset": [xi * scale, eta * scale],
+        "reference": [mu, h],
+    }
+
+
+def _reference(geo: Any, z: int, kind: int, pre: bool) -> tuple[Any, Any, Any, float]:
+    """(x0, y0, mu, h) of a case: the reference position over e (0 under preload), the angle
+    ``mu`` of the reference and the half-angle ``h`` of its straddling balls; ``geo`` the
+    core's (x0, y0, mu) of a general ring (arrays of a group, or one case's numbers)."""
+    if kind == 2:
+        h = math.pi / z
+        return (0.0, 0.0, geo[2], h) if pre else (geo[0], geo[1], geo[2], h)
+    h = math.pi / z if kind == 1 else 0.0
+    return 0.0 if pre else 1.0 / math.cos(h), 0.0, 0.0, h
 
 
 def _in_user_terms(exc: ConvergenceError, inputs: tuple[np.ndarray, ...]) -> ConvergenceError:
@@ -423,93 +515,103 @@ def _cage_kind(
 _COL = {
     name: i
     for i, name in enumerate(
-        ("xi", "eta", "x0", "y0", "q_hat", "loaded", "hxx", "hxy", "hyy", "mu", "h", "iterations")
+        (
+            "xi",
+            "eta",
+            "x0",
+            "y0",
+            "q_hat",
+            "loaded",
+            "hxx",
+            "hxy",
+            "hyy",
+            "mu",
+            "h",
+            "iterations",
+            "scale",
+        )
     )
 }
 
 
 def _solve_groups(
-    z: np.ndarray, kind: np.ndarray, frac: np.ndarray, e_hat: np.ndarray, m: np.ndarray, tol: float
+    z: np.ndarray,
+    kind: np.ndarray,
+    frac: np.ndarray,
+    e_hat: np.ndarray,
+    data: tuple[np.ndarray, ...],
+    tol: float,
 ) -> np.ndarray:
-    """Solve every case, one group of cases per (z, cage kind, preload), in bounded chunks.
+    """Solve every case, one core call per (z, cage kind, preload) sharing its ring's tables;
+    ``data``: F_r/K, G_r and m per case (the core scales them, as for one case alone).
 
-    Returns one row per case (columns ``_COL``) in the order of the cases.
+    Returns one row per case (columns ``_COL``) in the order of the cases; raises
+    ConvergenceError naming the failing cases by their index in the call (``case``).
     """
     n = z.size
-    res = np.zeros((n, len(_COL)))
     # the centred formulation for a preload of any consequence; a preload below 1e-50 of the
     # elastic approach costs no digits in the reference formulation (and p^m would underflow)
     preload = (e_hat < -_ring.PRELOAD_CENTRED) & (z >= 2)
-    # ... and per exponent kind: 3/2 takes a square root, any other m a power (same per case)
-    keys = ((z.astype(np.int64) * 3 + kind) * 2 + preload) * 2 + (m == 1.5)
-    # small keys sort by radix in numpy (int16): 6x faster than a comparison sort of int64
-    order = np.argsort(keys.astype(np.int16) if keys.max() < 2**15 else keys, kind="stable")
-    group_keys, starts = np.unique(keys[order], return_index=True)
+    keys = (z.astype(np.int64) * 3 + kind) * 2 + preload
+    if keys.min() == keys.max():  # one group (one case, or a sweep of one bearing)
+        order, group_keys, starts = None, keys[:1], np.zeros(1, dtype=np.intp)
+    else:  # small keys sort by radix in numpy (int16): 6x faster than a comparison sort
+        order = np.argsort(keys.astype(np.int16) if keys.max() < 2**15 else keys, kind="stable")
+        group_keys, starts = np.unique(keys[order], return_index=True)
+        frac, data = frac[order], tuple(a[order] for a in data)
     ends = np.append(starts[1:], n)
-    e_sorted, m_sorted, frac_sorted = e_hat[order], m[order], frac[order]
-    for key, start, end in zip(group_keys, starts, ends, strict=True):
-        zz, kd, pre = int(key // 12), int(key // 4 % 3), bool(key // 2 % 2)
-        width = zz if kd == 2 else len(Ring.symmetric(zz, kd == 1, pre).c)
-        step = max(1, CHUNK_ELEMENTS // max(width, 1))
-        for lo in range(int(start), int(end), step):
-            part = slice(lo, min(lo + step, int(end)))
-            try:
-                _solve_chunk(
-                    res[part], (zz, kd, pre), frac_sorted[part], e_sorted[part], m_sorted[part], tol
-                )
-            except ConvergenceError as exc:  # the failing cases, by their index in the call
-                rows = order[part][np.asarray(exc.cases["rows"], dtype=np.intp)]
-                raise ConvergenceError(
-                    exc.solver, exc.iterations, exc.residual, {"case": rows}
-                ) from None
-    rows = np.empty_like(res)
-    rows[order] = res  # back to the order of the cases, all columns at once
-    return rows
-
-
-def _solve_chunk(
-    out: np.ndarray,
-    group: tuple[int, int, bool],
-    frac: np.ndarray,
-    eh: np.ndarray,
-    mm: np.ndarray,
-    tol: float,
-) -> None:
-    """Solve one chunk of a group (z, cage kind, preload) into its rows ``out``."""
-    zz, kd, pre = group
-    if kd == 2:
-        ring = Ring.general(zz, frac, pre)
-        xi, eta, its = _ring.solve_xy(ring, eh, mm, tol)
-        _store(out, ring, xi, eta, its, eh, mm, tol)
-    else:
-        ring = Ring.symmetric(zz, kd == 1, pre)
-        xi, its = _ring.solve_x(ring, eh, mm, tol)
-        _store(out, ring, xi, None, its, eh, mm, tol)
+    res = np.empty((n, len(_COL)))
+    bad = []
+    for key, start, end in zip(group_keys.tolist(), starts.tolist(), ends.tolist(), strict=True):
+        part = slice(start, end)
+        zz, kd, pre = key // 6, key // 2 % 3, bool(key % 2)
+        rows, geo = _core.radial(
+            *_ring.tables(zz, kd, pre),
+            frac[part],
+            *(a[part] for a in data),
+            tol,
+            MAX_ITERATIONS,
+            _ring.POLISH,
+        )
+        failed = (rows[:, 9] != 0) | ~(rows[:, 8] <= max(tol, 1e-11))
+        if failed.any():
+            bad.append((start + np.flatnonzero(failed), rows[failed]))
+        _store(res[part], rows, geo, zz, kd, pre)
+    if bad:
+        failing = np.concatenate([b[0] for b in bad])
+        worst = np.concatenate([b[1] for b in bad])
+        raise ConvergenceError(
+            "ring equilibrium",
+            int(worst[:, 2].max()),
+            float(np.max(np.where(np.isfinite(worst[:, 8]), worst[:, 8], np.inf))),
+            {"case": failing if order is None else order[failing]},
+        )
+    if order is None:
+        return res
+    out = np.empty_like(res)
+    out[order] = res  # back to the order of the cases, all columns at once
+    return out
 
 
 def _store(
-    rows: np.ndarray,
-    ring: Ring,
-    xi: np.ndarray,
-    eta: np.ndarray | None,
-    iterations: np.ndarray,
-    e_hat: np.ndarray,
-    m: np.ndarray,
-    tol: float,
+    out: np.ndarray, rows: np.ndarray, geo: np.ndarray, z: int, kind: int, pre: bool
 ) -> None:
-    """Write one chunk's solution and the quantities derived from it into its rows."""
+    """One group's core rows (and a general ring's reference) into the columns ``_COL``."""
     col = _COL
-    q_hat, loaded, hxx, hxy, hyy, residual = _ring.derived(ring, xi, eta, e_hat, m)
-    # the residual at the very point returned (after any last Newton step) is the proof
-    _ring.check(residual, "ring equilibrium", iterations, e_hat, m, tol)
-    rows[:, col["xi"]] = xi
-    rows[:, col["eta"]] = 0.0 if eta is None else eta
-    rows[:, col["x0"]], rows[:, col["y0"]] = ring.x0, ring.y0
-    rows[:, col["mu"]], rows[:, col["h"]] = ring.mu, ring.h
-    rows[:, col["iterations"]] = iterations
-    rows[:, col["q_hat"]] = q_hat
-    rows[:, col["loaded"]] = np.rint(loaded)
-    rows[:, col["hxx"]], rows[:, col["hxy"]], rows[:, col["hyy"]] = hxx, hxy, hyy
+    for name, i in (
+        ("xi", 0),
+        ("eta", 1),
+        ("iterations", 2),
+        ("q_hat", 3),
+        ("hxx", 5),
+        ("hxy", 6),
+        ("hyy", 7),
+        ("scale", 10),
+    ):
+        out[:, col[name]] = rows[:, i]
+    out[:, col["loaded"]] = np.rint(rows[:, 4])
+    x0, y0, mu, h = _reference(geo.T, z, kind, pre)
+    out[:, col["x0"]], out[:, col["y0"]], out[:, col["mu"]], out[:, col["h"]] = x0, y0, mu, h
 
 
 def _assemble(

@@ -29,11 +29,9 @@ from typing import Any
 
 import numpy as np
 
+import bearingload.models._core as _core
 from bearingload import validate
 from bearingload.errors import InputError
-
-#: Cases evaluated per block: small enough that the (block, z) work arrays stay in cache.
-BLOCK = 4096
 
 
 @dataclass(frozen=True)
@@ -127,24 +125,11 @@ def ring_forces(
     shape = validate.broadcast_shape(
         {"x": xs, "y": ys, "stiffness": kk, "clearance": e, "cage_angle": phi1, "exponent": m}
     )
-    n = int(np.prod(shape))
-    # x and y per case; a parameter shared by every case stays one value (length 1), so the
-    # sums run on ball arrays shared by the whole block
-    args = [np.broadcast_to(a, shape).ravel() for a in (xs, ys)]
-    args += [a.reshape(1) if a.ndim == 0 else np.broadcast_to(a, shape).ravel()
-             for a in (kk, e, phi1, m)]  # fmt: skip
-    shared = [a.size == 1 for a in args[2:]]
-    fx, fy = np.empty(n), np.empty(n)
-    matrix = np.empty((n, 2, 2))
-    loads = np.empty((n, nz))
-    loaded = np.empty(n, dtype=np.int64)
-    with np.errstate(over="ignore", invalid="ignore"):
-        for start in range(0, n, BLOCK):
-            part = slice(start, min(start + BLOCK, n))
-            block = [a if s else a[part] for a, s in zip(args[2:], shared, strict=True)]
-            k_b, e_b, phi1_b, m_b = block
-            _block(nz, args[0][part], args[1][part], k_b, e_b, phi1_b, m_b,
-                   fx[part], fy[part], matrix[part], loads[part], loaded[part])  # fmt: skip
+    # broadcast views (a parameter shared by every case is one value read again, no copy)
+    flat = [np.broadcast_to(a, shape).reshape(-1) for a in (xs, ys, kk, e, phi1, m)]
+    out, loads, loaded = _core.ring_forces(nz, *flat)
+    fx, fy = out[:, 0], out[:, 1]
+    matrix = out[:, [2, 3, 3, 4]].reshape(-1, 2, 2)
     if not (np.all(np.isfinite(fx)) and np.all(np.isfinite(matrix))):
         raise InputError(
             "x",
@@ -160,70 +145,3 @@ def ring_forces(
         loads.reshape(shape + (nz,)),
         loaded.reshape(shape),
     )
-
-
-def _snapped(a: np.ndarray) -> np.ndarray:
-    """``a`` with entries below 1e-14 in size set to zero (cos and sin of multiples of 90°)."""
-    return np.where(np.abs(a) < 1e-14, 0.0, a)
-
-
-def _block(
-    z: int,
-    x: np.ndarray,
-    y: np.ndarray,
-    k: np.ndarray,
-    e: np.ndarray,
-    phi1: np.ndarray,
-    m: np.ndarray,
-    fx: np.ndarray,
-    fy: np.ndarray,
-    matrix: np.ndarray,
-    loads: np.ndarray,
-    loaded: np.ndarray,
-) -> None:
-    """Evaluate one block of cases into the given output slices.
-
-    ``k, e, phi1, m`` are either per case (length of ``x``) or one shared value (length 1).
-    The sums run in the cage's frame (ball 1 on its first axis), where every case shares the
-    ball directions ``(cos a_j, sin a_j)``, ``a_j = 360 j/z``: the displacement is turned into
-    it, the force and stiffness turned back (``F = R F'``, ``K = R K' R^T``). A cage angle per
-    case then costs what one shared angle does, and a case gives the same bits alone or in a
-    batch. cos/sin below 1e-14 in size are snapped to zero, as the engine does, so that a ball
-    at 90° sits there exactly.
-    """
-    pitch = np.deg2rad(360.0 * np.arange(z) / z)
-    ca, sa = _snapped(np.cos(pitch)), _snapped(np.sin(pitch))
-    rad = np.deg2rad(phi1)  # reduced to [0, 360) degrees by the caller
-    c1, s1 = _snapped(np.cos(rad)), _snapped(np.sin(rad))
-    xr, yr = x * c1 + y * s1, y * c1 - x * s1  # the displacement in the cage's frame
-    delta = loads  # work in the output array: approach, then load
-    np.multiply(xr[:, None], ca, out=delta)
-    delta += yr[:, None] * sa
-    delta -= e[:, None]
-    mask = delta > 0.0
-    loaded[:] = np.count_nonzero(mask, axis=1)
-    np.maximum(delta, 0.0, out=delta)
-    if m.size == 1 and m[0] == 1.5:
-        slope = np.sqrt(delta)
-        delta *= slope  # delta^1.5
-        slope *= 1.5
-    else:
-        mm = m[:, None]
-        slope = np.where(mask, delta ** (mm - 1.0), 0.0)  # zero where unloaded: no 0**0
-        delta *= slope
-        slope *= mm
-    if k.size == 1:
-        delta *= k[0]
-        slope *= k[0]
-    else:
-        delta *= k[:, None]
-        slope *= k[:, None]
-    q = delta
-    gx, gy = q @ ca, q @ sa
-    hxx, hxy, hyy = slope @ (ca * ca), slope @ (ca * sa), slope @ (sa * sa)
-    cc, cs, ss = c1 * c1, c1 * s1, s1 * s1
-    fx[:] = c1 * gx - s1 * gy
-    fy[:] = s1 * gx + c1 * gy
-    matrix[:, 0, 0] = cc * hxx - 2.0 * cs * hxy + ss * hyy
-    matrix[:, 1, 1] = ss * hxx + 2.0 * cs * hxy + cc * hyy
-    matrix[:, 0, 1] = matrix[:, 1, 0] = cs * (hxx - hyy) + (cc - ss) * hxy
