@@ -178,6 +178,13 @@ def combined_case(
     checks = tuple(c + (w,) if w else c for c, w in zip(checks, sides, strict=True))
     flat = np.reshape(r.tilt_undetermined, -1)
     checks = tuple(c + (TILT_UNDETERMINED,) if f else c for c, f in zip(checks, flat, strict=True))
+    left = getattr(r, "thrust_neglected", None)
+    if left is not None:
+        flat = np.reshape(left, -1)
+        checks = tuple(
+            c + (thrust_neglected_warning(fa[i], fr[i]),) if flat[i] else c
+            for i, c in enumerate(checks)
+        )
     if shape == ():
         p_eq = None if p_eq is None else float(p_eq)
         life = None if life is None or np.isnan(life) else float(life)
@@ -196,6 +203,16 @@ TILT_UNDETERMINED = (
     "light thrust); the tilt given is the least of the range (where the solver could not reach "
     "it, one tilt of the range), and the ball loads are the same at every tilt of it"
 )
+
+
+def thrust_neglected_warning(axial_load: float, radial_load: float) -> str:
+    """The warning on a thrust the solver left out (the solver's ``thrust_neglected``)."""
+    return (
+        f"the thrust F_a = {abs(axial_load):.3g} N is below 1e-12 of the largest load "
+        f"({radial_load:.6g} N) and beyond what the ring's axial position resolves here: the "
+        f"case is solved without it, the thrust its balance error ({abs(axial_load):.3g} N)"
+    )
+
 
 #: The warning on a ball whose loaded inner contact sits on the groove's side at speed: what
 #: happens, and (after it) why the result is outside the model.

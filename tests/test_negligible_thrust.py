@@ -1,0 +1,47 @@
+"""A thrust too small to matter: the combined solver answers continuously down to F_a = 0,
+solving a case it cannot balance with a thrust below 1e-12 of the largest load as its neighbour
+without it, and saying so."""
+
+from __future__ import annotations
+
+import numpy as np
+import pytest
+
+from bearingload import solve_combined
+from bearingload.models.combined import NEGLIGIBLE_THRUST
+
+#: A 6205 with a huge clearance: one ball carries F_r = 1 kN; its axial position resolved
+#: 1e-11 N of thrust, not 1e-12 N (a ConvergenceError before).
+ONE_BALL = {"ball_diameter": 7.938, "pitch_diameter": 38.5, "clearance": 0.2}
+
+
+def test_a_sweep_of_the_thrust_down_to_zero_has_no_hole():
+    thrusts = np.array([0.0, 1e-15, 1e-14, 1e-13, 1e-12, 1e-11, 1e-10, 1e-6, 1.0])
+    r = solve_combined(9, 1000.0, thrusts, **ONE_BALL)
+    assert np.all(np.isfinite(r.q_max)) and np.allclose(r.q_max[:-1], 1000.0, rtol=1e-9)
+    neglected = np.asarray(r.thrust_neglected)
+    assert not neglected[0] and not neglected[5:].any()  # 0 is no thrust; 1e-11 N balances
+    assert neglected[1:5].all()
+
+
+def test_only_a_thrust_below_the_tolerance_of_the_largest_load_is_left_out():
+    assert NEGLIGIBLE_THRUST == 1e-12
+    r = solve_combined(9, 1000.0, 1e-12, **ONE_BALL)
+    assert bool(r.thrust_neglected)
+    assert not solve_combined(9, 1000.0, 1e-11, **ONE_BALL).thrust_neglected
+    assert not solve_combined(9, 1000.0, 300.0, **ONE_BALL).thrust_neglected
+
+
+def test_the_thrust_left_out_is_said_with_its_size(capsys):
+    from .cli_helpers import run_entry
+
+    code, out, err = run_entry(capsys, "solve", "6205", "-F", "1kN", "-A", "1e-12N", "-G", "0.2")
+    assert code == 0 and "heaviest ball load" in out
+    assert "the thrust F_a = 1e-12 N is below 1e-12 of the largest load" in err
+
+
+@pytest.mark.parametrize("thrust", [1e-13, 1e-12])
+def test_a_case_alone_and_in_a_batch_agree(thrust):
+    alone = solve_combined(9, 1000.0, thrust, **ONE_BALL)
+    batch = solve_combined(9, 1000.0, np.array([300.0, thrust, 1e-14]), **ONE_BALL)
+    assert alone.q_max == batch.q_max[1] and alone.x == batch.x[1]
