@@ -151,11 +151,10 @@ def test_bad_rows_are_skipped_with_their_reason_the_others_written():
     assert besides_tilt(out.stderr) == [
         "Warning: row 2: arrangement: missing: a file of pairs gives each row's arrangement "
         "(DB, DF or DT) or a designation with it (7205BDB)",
-        "Warning: row 3: arrangement: a pair DB is two angular-contact ball bearings: give an "
-        "angular-contact designation (7205B, 7205BDB) or a ring by hand with its contact_angle",
+        "Warning: row 3: arrangement: a pair DB is two angular-contact ball bearings; give an "
+        "angular-contact designation (7205B, 7205BDB) or a ring by hand with 'contact_angle'",
         "Warning: row 4: arrangement: DT contradicts the designation '7205BDB' (a DB pair)",
-        "Warning: row 5: arrangement: 'XX': give DB (back-to-back), DF (face-to-face) or DT "
-        "(tandem)",
+        "Warning: row 5: arrangement: 'XX' is not one of DB, DF, DT",
         "Warning: row 6: preload: a tandem pair (DT) is not preloaded in itself: both bearings "
         "face the same way, so it is preloaded against another bearing; give 0, or use DB or DF",
         "Warning: row 7: preload: must be 0 N or more (got -1 N)",

@@ -22,15 +22,13 @@ import numpy as np
 
 from bearingload.batch.read import row_message
 from bearingload.batch.solve import (
-    FAST_WAY,
     BatchSolver,
     Chunk,
     _angles,
-    _check_rotating,
-    _hand_angular,
     _operating,
     _take,
-    dynamics_of,
+    row_case,
+    with_oil_viscosity,
 )
 from bearingload.errors import BearingloadError, ConvergenceError, InputError
 
@@ -46,6 +44,7 @@ class PairSolver(BatchSolver):
                 bad: dict[int, str]) -> Chunk:  # fmt: skip
         from bearingload.bearings.oil import OIL_INPUTS
 
+        with_oil_viscosity(cols, [i for i in range(len(numbers)) if i not in bad], bad)
         solved = solve_pairs(self, cols, len(numbers), bad)
         out = Chunk()
         keys = [c.key for c in pair_columns(None)] + [k for k in OIL_INPUTS if k in cols]
@@ -75,41 +74,44 @@ def pair_columns(service: set[str] | None) -> list[Any]:
 
 def pair_key(solver: Any, v: dict[str, Any]) -> tuple[Any, ...]:
     """The group of a row of cells ``v`` (blank cells left out): (resolved bearing,
-    arrangement, width, rotating ring, C_r, a moment given, the tilt radius), checked as solve
-    checks a pair's options."""
-    from bearingload.plan.case import pair_of
+    arrangement, width, rotating ring, C_r, a moment given, the tilt radius, the ball
+    dynamics), planned once for the rows of the same plan; its load and bare numbers checked."""
+    from bearingload.batch.solve import _check_load
 
-    arrangement = v.get("arrangement")
-    if arrangement is not None and arrangement.strip().upper() not in ("DB", "DF", "DT"):
-        raise InputError(
-            "arrangement",
-            f"{v['arrangement']!r}: give DB (back-to-back), DF (face-to-face) or DT (tandem)",
-        )
-    if "bearing" in v:
-        single, arrangement, _ = pair_of(v["bearing"], arrangement, None)
-        v = v | {"bearing": single}
-    elif arrangement is not None:
-        arrangement = arrangement.strip().upper()
-    if arrangement is None:
+    b, *key = solver._planned(v, _pair_plan)
+    _check_load(v)
+    tilted = "moment" in v or bool(v.get("moment_cross"))
+    return (b, *key[:4], tilted, *key[4:])
+
+
+def _pair_plan(v: dict[str, Any]) -> tuple[Any, ...]:
+    """The group of a row of cells ``v`` but whether a moment is given, by the plan's rules for
+    a pair (:meth:`~bearingload.plan.case.Case.as_pair`, :func:`~bearingload.plan.bearing.
+    pair_bearing`)."""
+    from bearingload.plan.bearing import check_rotating, pair_bearing
+    from bearingload.plan.inputs import READERS
+
+    if "arrangement" in v:
+        v = v | {"arrangement": READERS["arrangement"](v["arrangement"], "arrangement")}
+    pair = row_case(v).as_pair()
+    if pair is None:
         raise InputError("arrangement", "missing: a file of pairs gives each row's arrangement "
                          "(DB, DF or DT) or a designation with it (7205BDB)")  # fmt: skip
-    if not any(k in v for k in ("bearing", "ball_diameter", "pitch_diameter")):
+    if pair.by_hand:
         raise InputError("bearing", "missing: a pair needs a bearing or its ball geometry")
-    b = solver._bearing(v)
-    if "contact_angle" in v:
-        b = _hand_angular(v, b)
-    if b.kind != "ball" or b.contact_angle is None:
-        raise InputError("arrangement", f"a pair {arrangement} is two angular-contact ball "
-                         "bearings: give an angular-contact designation (7205B, 7205BDB) or a "
-                         "ring by hand with its contact_angle")  # fmt: skip
-    _check_rotating(v, b, v.get("dynamic_rating"), "exact")
-    if "load" not in v:
-        raise InputError("load", "missing: every row needs a (radial) load, 0 allowed")
-    if not v["load"] >= 0:
-        raise InputError("load", f"must be 0 N or more (got {v['load']!r} N)")
-    tilted = "moment" in v or bool(v.get("moment_cross"))
-    return (b, arrangement, v.get("width"), v.get("rotating", "inner"), v.get("dynamic_rating"),
-            tilted, v.get("tilt_radius"), dynamics_of(v, b))  # fmt: skip
+    b = pair_bearing(pair)
+    check_rotating(pair, b, ["exact"], str)
+    dynamics = pair.dynamics_arguments()["speed"] is not None, pair.ball_density is not None
+    rotating = pair.rotating or "inner"
+    return (
+        b,
+        pair.arrangement,
+        pair.width,
+        rotating,
+        pair.dynamic_rating,
+        pair.tilt_radius,
+        dynamics,
+    )
 
 
 def row_preload(v: dict[str, Any], b: Any) -> float:
@@ -135,6 +137,7 @@ def solve_pairs(solver: Any, cols: dict[str, list[Any]], n: int,
         try:
             row = {k: c[i] for k, c in cols.items() if c[i] is not None}
             key = pair_key(solver, row)
+            solver.refuse_bare(row, i, key[0])
             preload = row_preload(row, key[0])
         except BearingloadError as exc:
             bad[i] = row_message(exc)
@@ -185,27 +188,12 @@ def _call(key: tuple[Any, ...], idx: list[int], cols: dict[str, list[Any]]) -> l
             tilt_radius=lever, rotating=rotating, dynamic_rating=c_r, **dynamics,
         )  # fmt: skip
     except (InputError, ConvergenceError) as exc:
-        hinted = _quasi_static_hint(exc) if at_speed else None
+        from bearingload.plan.solve import pair_speed_hint
+
+        hinted = pair_speed_hint(exc) if at_speed else None
         if hinted is None:
             raise
         raise hinted from exc
-
-
-def _quasi_static_hint(exc: InputError | ConvergenceError) -> BearingloadError | None:
-    """A pair at speed the ball dynamics leave unbalanced, or refuse as too light, with the way
-    out in the batch's words (solve names --quasi-static); None for another refusal."""
-    from bearingload.models.combined import TOO_LIGHT
-    from bearingload.models.high_speed import too_fast
-    from bearingload.models.pair_speed import STATIC_WAY
-
-    way = "quasi_static true gives the static model of the pair"
-    if isinstance(exc, ConvergenceError):
-        return exc.with_way_out(way)
-    if too_fast(exc):
-        return exc.with_way_out(FAST_WAY)
-    if exc.reason != TOO_LIGHT or exc.way_out != STATIC_WAY:
-        return None
-    return exc.with_way_out(way)
 
 
 def pair_values(keys: list[str], solved: list[tuple[int, Any]], numbers: list[int],

@@ -16,7 +16,7 @@ from dataclasses import dataclass, field
 from typing import Any, BinaryIO
 
 from bearingload.bearings.mounting import MOUNTING_PARAMS
-from bearingload.errors import InputError
+from bearingload.errors import InputError, UnusedError
 
 #: Rows read, solved and written at a time (memory stays flat however long the file).
 CHUNK_ROWS = 10_000
@@ -131,6 +131,7 @@ _COLUMN_OF = {
     "pick": "clearance_pick",
     "bore": "clearance",
     "eC": "ec",
+    "e_c": "eC",
 }
 _HEADER = re.compile(r"^\s*([^\[\]]*?)\s*(?:\[\s*([^\]]*?)\s*\])?\s*$")
 
@@ -377,11 +378,13 @@ def _where(exc: UnicodeDecodeError) -> str:
 
 
 def row_message(exc: Exception) -> str:
-    """The reason a row is skipped, ``column: message``, from a library error."""
-    column = _COLUMN_OF.get(getattr(exc, "parameter", ""))
-    if column is None:
+    """The reason a row is skipped, ``column: message``, from a library error's fields (the
+    columns of inputs a case would ignore, or of an oil's inputs refused together, all named)."""
+    if not isinstance(exc, InputError):
         return str(exc)
-    return f"{column}: {exc.message if isinstance(exc, InputError) else exc}"
+    names = getattr(exc, "parameters", None) or (exc.parameter,)
+    joint = ", " if isinstance(exc, UnusedError) else " / "
+    return f"{joint.join(_COLUMN_OF.get(n, n) for n in names)}: {exc.message}"
 
 
 def read_column(

@@ -69,26 +69,22 @@ def solve_case(
     """
     from bearingload.models.registry import list_methods
 
-    _check_revolutions(revolutions)
+    check_revolutions(revolutions)
     case, at_speed = radial_at_speed(case)
     methods = list_methods() if method == "all" else [method]
-    if at_speed and method != "exact":
-        raise InputError(
-            "method",
-            "at 'speed' the ball dynamics of a ball bearing are solved by the exact model only "
-            "(the combined engine at F_a = 0)",
-            way_out=f"give 'quasi_static' for the static model, where method {method} is allowed",
-        )
+    if at_speed:
+        refuse_radial_options(method, revolutions)
     pair = case.as_pair()
     if pair is not None:
-        _refuse_revolutions(revolutions, "a bearing pair", "it prints L10r and L10 of the pair")
+        refuse_revolutions(revolutions, "a bearing pair", "it prints L10r and L10 of the pair")
         return _pair(pair, method, spell)
     if case.wants_combined:
         return _combined(case, method, revolutions, at_speed, spell)
     return _radial(case, methods, revolutions, spell)
 
 
-def _check_revolutions(revolutions: float | None) -> None:
+def check_revolutions(revolutions: float | None) -> None:
+    """Refuse a life ``revolutions`` of the allowable load that is not a number > 0."""
     if revolutions is not None and not (math.isfinite(revolutions) and revolutions > 0):
         raise InputError("revolutions", f"must be a number of revolutions > 0, got {revolutions:g}")
 
@@ -111,7 +107,25 @@ def radial_at_speed(case: Case) -> tuple[Case, bool]:
     return dataclasses.replace(case, axial_load=0.0, given=given), True
 
 
-def _refuse_revolutions(revolutions: float | None, where: str, instead: str) -> None:
+def refuse_radial_options(method: str, revolutions: float | None) -> None:
+    """Refuse, for a radial case of a ball bearing at a speed (the ball dynamics, by the combined
+    engine at F_a = 0), a method other than exact and a life ``revolutions`` of the allowable
+    load, which only the static radial engine takes."""
+    if method != "exact":
+        raise InputError(
+            "method",
+            "at 'speed' the ball dynamics of a ball bearing are solved by the exact model only "
+            "(the combined engine at F_a = 0)",
+            way_out=f"give 'quasi_static' for the static model, where method {method} is allowed",
+        )
+    refuse_revolutions(
+        revolutions,
+        "the ball dynamics at 'speed' (a ball bearing is solved by the combined engine at F_a = 0)",
+        "give 'quasi_static' for the static radial engine",
+    )
+
+
+def refuse_revolutions(revolutions: float | None, where: str, instead: str) -> None:
     """Refuse a life ``revolutions`` given where no allowable load is computed."""
     if revolutions is not None:
         raise ConflictError(
@@ -147,7 +161,7 @@ def _radial(case: Case, methods: list[str], revolutions: float | None, spell: An
     life = DEFAULT_REVOLUTIONS if revolutions is None else revolutions
     if case.by_hand:
         refuse_unused(case)
-        _refuse_revolutions(revolutions, "a ring given by its balls and stiffness", "it has no C")
+        refuse_revolutions(revolutions, "a ring given by its balls and stiffness", "it has no C")
         cases = _by_hand(methods, case, k_given)
     else:
         from bearingload.studies.life_basis import radial_basis
@@ -158,7 +172,7 @@ def _radial(case: Case, methods: list[str], revolutions: float | None, spell: An
         if case.dynamic_rating is not None:
             bearings = [b.with_dynamic_rating(case.dynamic_rating) for b in bearings]
         if not any(b.C for b in bearings):
-            _refuse_revolutions(
+            refuse_revolutions(
                 revolutions, "a bearing without a dynamic load rating C", "give 'dynamic_rating'"
             )
         check_rotating(case, bearings[0], methods)
@@ -191,14 +205,7 @@ def _combined(
     from bearingload.studies.life_basis import combined_basis
 
     angular = case.bearing is not None and parse_angular(case.bearing) is not None
-    if at_speed:
-        _refuse_revolutions(
-            revolutions,
-            "the ball dynamics at 'speed' (a ball bearing is solved by the combined engine at "
-            "F_a = 0)",
-            "give 'quasi_static' for the static radial engine",
-        )
-    _refuse_revolutions(
+    refuse_revolutions(
         revolutions,
         "the combined engine (a load beyond the radial one, or an angular-contact bearing)",
         "it prints L10 = (C/P)^3 at P = X F_r + Y F_a and L10r instead",
