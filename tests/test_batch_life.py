@@ -159,10 +159,10 @@ def test_bad_life_cells_are_named_rows():
     assert out.exit_code == 1
     errors = out.stderr.splitlines()
     assert errors[0].startswith("Warning: row 2: viscosity: needs the shaft speed")
-    assert errors[1].startswith("Warning: row 3: reliability: must lie between 90 and 99.95")
-    assert errors[2].startswith("Warning: row 4: eC: e_C must lie between 0 and 1")
+    assert errors[1].startswith("Warning: row 3: reliability: must be in [90, 99.95]")
+    assert errors[2].startswith("Warning: row 4: eC: must be in [0, 1]")
     assert errors[3].startswith("Warning: row 5: contamination: unknown level 'dirty'")
-    assert errors[4].startswith("Warning: row 6: pressure_viscosity: must lie between 1 and 100")
+    assert errors[4].startswith("Warning: row 6: pressure_viscosity: must be in [1, 100]")
     assert errors[5].startswith("Warning: row 7: roughness: a bare 0.2 is 0.2 mm, implausible")
     assert errors[6].startswith("Warning: row 8: speed: must be greater than 0 rpm")
     assert [r["row"] for r in _rows(out.stdout)] == ["9"]

@@ -15,19 +15,18 @@ failing row stands alone, named; the others are written.
 
 from __future__ import annotations
 
-import dataclasses
 from typing import Any
 
 import numpy as np
 
-from bearingload.batch.read import row_message
+from bearingload.batch.read import SERVICE_COLUMNS, row_message
 from bearingload.batch.solve import (
     BatchSolver,
     Chunk,
-    _angles,
-    _operating,
-    _take,
+    cage_angles,
+    check_load,
     row_case,
+    taken,
     with_oil_viscosity,
 )
 from bearingload.errors import BearingloadError, ConvergenceError, InputError
@@ -76,10 +75,8 @@ def pair_key(solver: Any, v: dict[str, Any]) -> tuple[Any, ...]:
     """The group of a row of cells ``v`` (blank cells left out): (resolved bearing,
     arrangement, width, rotating ring, C_r, a moment given, the tilt radius, the ball
     dynamics), planned once for the rows of the same plan; its load and bare numbers checked."""
-    from bearingload.batch.solve import _check_load
-
-    b, *key = solver._planned(v, _pair_plan)
-    _check_load(v)
+    b, *key = solver.planned(v, _pair_plan)
+    check_load(v)
     tilted = "moment" in v or bool(v.get("moment_cross"))
     return (b, *key[:4], tilted, *key[4:])
 
@@ -171,20 +168,20 @@ def _call(key: tuple[Any, ...], idx: list[int], cols: dict[str, list[Any]]) -> l
     from bearingload.studies.bearing_pair import solve_bearing_pairs
 
     b, arrangement, width, rotating, c_r, tilted, lever, (at_speed, density) = key
-    moment = np.array(_take(cols, "moment", idx, 0.0), dtype=float)
+    moment = np.array(taken(cols, "moment", idx, 0.0), dtype=float)
     dynamics: dict[str, Any] = {"speed": None, "ball_density": None}
     if at_speed:  # the ball dynamics of both bearings (ball_density as --ball-density, kg/m^3)
-        dynamics["speed"] = np.array(_take(cols, "speed", idx), dtype=float)
+        dynamics["speed"] = np.array(taken(cols, "speed", idx), dtype=float)
         if density:
-            dynamics["ball_density"] = np.array(_take(cols, "ball_density", idx), float) * 1e-9
+            dynamics["ball_density"] = np.array(taken(cols, "ball_density", idx), float) * 1e-9
     try:
         return solve_bearing_pairs(
-            b, np.array(_take(cols, "load", idx), dtype=float),
-            np.array(_take(cols, "axial_load", idx, 0.0), dtype=float), arrangement=arrangement,
-            preload=np.array(_take(cols, "preload", idx, 0.0), dtype=float), width=width,
-            cage_angle=_angles(_take(cols, "cage_angle", idx, 0.0), b.balls),
+            b, np.array(taken(cols, "load", idx), dtype=float),
+            np.array(taken(cols, "axial_load", idx, 0.0), dtype=float), arrangement=arrangement,
+            preload=np.array(taken(cols, "preload", idx, 0.0), dtype=float), width=width,
+            cage_angle=cage_angles(taken(cols, "cage_angle", idx, 0.0), b.balls),
             moment=moment if tilted else None,
-            moment_cross=np.array(_take(cols, "moment_cross", idx, 0.0), dtype=float),
+            moment_cross=np.array(taken(cols, "moment_cross", idx, 0.0), dtype=float),
             tilt_radius=lever, rotating=rotating, dynamic_rating=c_r, **dynamics,
         )  # fmt: skip
     except (InputError, ConvergenceError) as exc:
@@ -196,19 +193,24 @@ def _call(key: tuple[Any, ...], idx: list[int], cols: dict[str, list[Any]]) -> l
         raise hinted from exc
 
 
-def pair_values(keys: list[str], solved: list[tuple[int, Any]], numbers: list[int],
-                cols: dict[str, list[Any]],
-                bad: dict[int, str]) -> tuple[list[int], dict[str, list[Any]]]:  # fmt: skip
+def pair_values(
+    keys: list[str],
+    solved: list[tuple[int, Any]],
+    numbers: list[int],
+    cols: dict[str, list[Any]],
+    bad: dict[int, str],
+) -> tuple[list[int], dict[str, list[Any]]]:
     """The output rows of the solved pairs (two per pair: its row number twice) and the values
     of the columns ``keys`` over them (None: blank), as solve gives the pair with the row's
-    service cells as its options: each bearing's lives from its own loads, the pair's from
-    them; ``warnings`` (the pair's, its speed's and its lives') on the first row of each pair;
-    each bearing's model and contacts (json: :data:`bearingload.batch.report.HELD_KEYS`), as a
-    combined file's rows. A row whose lives solve would refuse (a speed so small that its
-    life in hours overflows) goes to ``bad`` with its reason, the others are written."""
-    from bearingload.bearings.checks import speed_findings
+    service cells as its options (the plan's :func:`~bearingload.plan.solve.with_speed_warnings`
+    and :func:`~bearingload.plan.solve.service_lives`: each bearing's lives from its own loads,
+    the pair's from them); ``warnings`` (the pair's, its speed's and its lives') on the first
+    row of each pair; each bearing's model and contacts (json:
+    :data:`bearingload.batch.report.HELD_KEYS`), as a combined file's rows. A row whose lives
+    solve would refuse (a speed so small that its life in hours overflows) goes to ``bad`` with
+    its reason, the others are written."""
     from bearingload.bearings.oil import OIL_INPUTS
-    from bearingload.bearings.service_life import service_values
+    from bearingload.plan.solve import service_lives, with_speed_warnings
     from bearingload.reports.combined import contact_values
     from bearingload.reports.pair import csv_rows, pair_records
     from bearingload.reports.solve import printed_warnings
@@ -216,15 +218,14 @@ def pair_values(keys: list[str], solved: list[tuple[int, Any]], numbers: list[in
 
     keys = [k for k in keys if k != "row"]
     oil = [k for k in keys if k in OIL_INPUTS]  # written as given (the viscosity is nu's)
+    service_cells = [c for c in SERVICE_COLUMNS if c in cols and c not in OIL_INPUTS]
     rows: list[int] = []
     values: dict[str, list[Any]] = {k: [] for k in [*keys, "warnings"]}
     for i, pc in solved:
-        op = _row_operating(cols, i)
-        if op.speed is not None:  # above the catalogue's limiting speed, as solve warns
-            found = tuple(speed_findings(op.speed, pc.bearing))
-            pc = dataclasses.replace(pc, warnings=(*pc.warnings, *found))
+        case = row_case({c: cols[c][i] for c in service_cells if cols[c][i] is not None})
+        pc = with_speed_warnings([pc], case.speed)[0]
         try:
-            service = [service_values(op, combined_basis(c)) for c in pc.bearings]
+            service = service_lives(case, [combined_basis(c) for c in pc.bearings])
             pair, records = pair_records(pc, service)
         except BearingloadError as exc:
             bad[i] = row_message(exc)
@@ -239,12 +240,3 @@ def pair_values(keys: list[str], solved: list[tuple[int, Any]], numbers: list[in
             for k, v in held.items():
                 values.setdefault(k, []).append(v)
     return rows, values
-
-
-def _row_operating(cols: dict[str, list[Any]], i: int) -> Any:
-    """Row ``i``'s operating conditions (:class:`bearingload.bearings.service_life.Operating`,
-    numbers as floats), as solve's options give them."""
-    op = _operating(cols, [i])
-    given = {f.name: getattr(op, f.name) for f in dataclasses.fields(op)}
-    return dataclasses.replace(op, **{k: float(v[0]) for k, v in given.items()
-                                      if isinstance(v, np.ndarray)})  # fmt: skip

@@ -79,27 +79,6 @@ COLUMNS: dict[str, str] = {
 SERVICE_COLUMNS = ("speed", "reliability", "oil", "viscosity_40", "viscosity_100",
                    "viscosity_index", "temperature", "viscosity", "contamination", "ec",
                    "fatigue_load_limit", "roughness", "pressure_viscosity")  # fmt: skip
-#: The ranges of the service columns' values, as the command line's options check them:
-#: column -> (low, high, closed at low, what the range is).
-SERVICE_RANGES: dict[str, tuple[float, float, bool, str]] = {
-    "static_rating": (0.0, float("inf"), False, "must be greater than 0 N"),
-    "fatigue_load_limit": (0.0, float("inf"), False, "must be greater than 0 N"),
-    "speed": (0.0, float("inf"), False, "must be greater than 0 rpm, or blank for a shaft at "
-              "rest: the static model, its lives in 10^6 revolutions"),
-    "viscosity": (0.0, float("inf"), False, "must be greater than 0 mm^2/s"),
-    "viscosity_40": (0.0, float("inf"), False, "must be greater than 0 mm^2/s"),
-    "viscosity_100": (0.0, float("inf"), False, "must be greater than 0 mm^2/s"),
-    "roughness": (0.0, float("inf"), False, "must be greater than 0 mm"),
-    "reliability": (90.0, 99.95, True, "must lie between 90 and 99.95 % (ISO 281 Table 12)"),
-    "ec": (0.0, 1.0, True, "e_C must lie between 0 and 1"),
-    "pressure_viscosity": (1.0, 100.0, True, "must lie between 1 and 100 1/GPa"),
-    "ball_density": (0.0, 1e5, False, "must be greater than 0 and at most 100000 kg/m^3 "
-                     "(bearing steel 7850, silicon nitride about 3200)"),
-}  # fmt: skip
-#: The ball dynamics at a speed (solve's --ball-density, --quasi-static): a combined row with a
-#: speed is solved with each ball's centrifugal force and gyroscopic moment unless quasi_static
-#: is true; ball_density in kg/m^3 (bare numbers, as the option).
-DYNAMICS_COLUMNS = ("ball_density", "quasi_static")
 #: The words of a flag column (case-insensitive; csv output writes True and False).
 FLAGS = {"true": True, "false": False}
 #: The load columns: a row with a cell in one of them is a combined-load case (3-D equilibrium),

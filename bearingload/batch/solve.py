@@ -25,7 +25,6 @@ import numpy as np
 from bearingload.batch.read import (
     LOAD_COLUMNS,
     SERVICE_COLUMNS,
-    SERVICE_RANGES,
     Block,
     CellParser,
     Header,
@@ -182,7 +181,7 @@ class BatchSolver:
                 m = [
                     x if x is not None else 1.5 if m is None else m[i] for i, x in enumerate(values)
                 ]
-            if name in SERVICE_RANGES:
+            if name in RANGED:
                 _check_range(name, values, bad)
         self.bare = {
             n: [is_bare(t) for t in texts[n]]
@@ -216,15 +215,15 @@ class BatchSolver:
         """Row ``i``'s group (None: a ring given by z and K), planned once for every row of the
         same cells but their values of :data:`_PER_ROW`; its load and bare numbers checked."""
         v = {k: c[i] for k, c in cols.items() if c[i] is not None and k != "_lever"}
-        hit = self._planned(v, self._plan)
+        hit = self.planned(v, self._plan)
         key, cols["_lever"][i] = hit
         if key is None:
             return None
-        _check_load(v, key[0] == "combined")
+        check_load(v, key[0] == "combined")
         self.refuse_bare(v, i, key[1])
         return key
 
-    def _planned(self, v: dict[str, Any], plan: Callable[[dict[str, Any]], Any]) -> Any:
+    def planned(self, v: dict[str, Any], plan: Callable[[dict[str, Any]], Any]) -> Any:
         """``plan(v)``, or its refusal raised, kept for the rows of the same plan."""
         marker = tuple((k, True if k in _PER_ROW else x) for k, x in v.items())
         hit = self.plans.get(marker)
@@ -310,7 +309,7 @@ class BatchSolver:
         return b if case.dynamic_rating is None else b.with_dynamic_rating(case.dynamic_rating)
 
 
-def _check_load(v: dict[str, Any], combined: bool = True) -> None:
+def check_load(v: dict[str, Any], combined: bool = True) -> None:
     """Every row has a load (a combined row's radial one 0 or more)."""
     if "load" not in v:
         what = "a (radial) load, 0 allowed" if combined else "a load"
@@ -412,14 +411,14 @@ def _ring_checks(v: dict[str, Any]) -> None:
         raise InputError("load", "missing: every row needs a load")
 
 
-def _take(cols: dict[str, list[Any]], name: str, idx: list[int], default: Any = None) -> list[Any]:
+def taken(cols: dict[str, list[Any]], name: str, idx: list[int], default: Any = None) -> list[Any]:
     column = cols.get(name)
     if column is None:
         return [default] * len(idx)
     return [default if column[i] is None else column[i] for i in idx]
 
 
-def _angles(given: list[Any], balls: Any) -> np.ndarray:
+def cage_angles(given: list[Any], balls: Any) -> np.ndarray:
     """Cage angles [°]: 'half' is half the pitch 180/z."""
     z = np.broadcast_to(np.asarray(balls, dtype=float), (len(given),))
     half = np.array([a == "half" for a in given], dtype=bool)
@@ -433,14 +432,14 @@ def _solve_rings(
     from bearingload.bearings.clearance import clearance_length
     from bearingload.studies.loaded_bearing import case_columns, solve_ring
 
-    balls = np.array(_take(cols, "balls", idx), dtype=float)
+    balls = np.array(taken(cols, "balls", idx), dtype=float)
     clearance = [g if isinstance(g, float) else clearance_length(g)
-                 for g in _take(cols, "clearance", idx, 0.0)]  # fmt: skip
-    (lc,) = solve_ring([key[1]], balls, np.array(_take(cols, "load", idx), dtype=float),
-                       np.array(_take(cols, "stiffness", idx), dtype=float),
+                 for g in taken(cols, "clearance", idx, 0.0)]  # fmt: skip
+    (lc,) = solve_ring([key[1]], balls, np.array(taken(cols, "load", idx), dtype=float),
+                       np.array(taken(cols, "stiffness", idx), dtype=float),
                        np.array(clearance, dtype=float),
-                       _angles(_take(cols, "cage_angle", idx, 0.0), balls),
-                       np.array(_take(cols, "exponent", idx, 1.5), dtype=float))  # fmt: skip
+                       cage_angles(taken(cols, "cage_angle", idx, 0.0), balls),
+                       np.array(taken(cols, "exponent", idx, 1.5), dtype=float))  # fmt: skip
     return case_columns(lc) | {"warnings": list(lc.warnings)}
 
 
@@ -452,9 +451,9 @@ def _solve_bearing(
     from bearingload.studies.reference_life import with_reference_lives
 
     _, b, method, rotating = key
-    load = np.array(_take(cols, "load", idx), dtype=float)
-    cage = _angles(_take(cols, "cage_angle", idx, 0.0), b.balls)
-    revolutions = np.array(_take(cols, "revolutions", idx, DEFAULT_REVOLUTIONS), dtype=float)
+    load = np.array(taken(cols, "load", idx), dtype=float)
+    cage = cage_angles(taken(cols, "cage_angle", idx, 0.0), b.balls)
+    revolutions = np.array(taken(cols, "revolutions", idx, DEFAULT_REVOLUTIONS), dtype=float)
     cases = solve_bearing([b], load, cage, [method], revolutions)
     (lc,) = with_reference_lives(cases, rotating)
     out = case_columns(lc) | {"warnings": list(lc.warnings), "model": METHODS[method].title}
@@ -476,13 +475,13 @@ def _solve_combined(
     _, b, (moment, misaligned, cross, groove), rotating, c_r, (at_speed, density) = key
 
     def given(name: str, on: bool = True, default: Any = None) -> Any:
-        return np.array(_take(cols, name, idx, default), dtype=float) if on else None
+        return np.array(taken(cols, name, idx, default), dtype=float) if on else None
 
     rho = given("ball_density", density)  # [kg/m^3], as solve's --ball-density
     try:
         (case,) = solve_combined_bearing(
             [b], given("load"), given("axial_load", default=0.0),
-            cage_angle=_angles(_take(cols, "cage_angle", idx, 0.0), b.balls),
+            cage_angle=cage_angles(taken(cols, "cage_angle", idx, 0.0), b.balls),
             moment=given("moment", moment), misalignment=given("misalignment", misaligned),
             rotating=rotating, dynamic_rating=c_r, moment_cross=given("moment_cross", cross),
             tilt_radius=None if groove else given("_lever"), speed=given("speed", at_speed),
@@ -680,17 +679,19 @@ def _service_warnings(
 
 def _speed_warnings(b: Any, idx: list[int], out: dict[str, Any], speeds: Any) -> None:
     """Add to each row of a part the warning solve gives on its speed [r/min] above the limiting
-    speed the catalogue gives for bearing ``b`` (:func:`bearingload.bearings.checks.speed_findings`)."""
-    from bearingload.bearings.checks import speed_findings
+    speed the catalogue gives for bearing ``b`` (:func:`bearingload.plan.solve.speed_warnings`,
+    each distinct speed once)."""
+    from bearingload.plan.solve import speed_warnings
 
-    if speeds is None or getattr(b.geometry, "open_limiting_speeds", None) is None:
-        return  # (a sealed bearing is warned above its open bearing's limits)
+    if speeds is None:
+        return
     warnings = out["warnings"]
+    found: dict[Any, Any] = {}
     for j, i in enumerate(idx):
-        found = speed_findings(speeds[i], b)
-        if found:
-            row = list(warnings[j])
-            warnings[j] = tuple(row + [w for w in found if w not in row])
+        if speeds[i] not in found:
+            found[speeds[i]] = speed_warnings((), speeds[i], b)
+        if found[speeds[i]]:
+            warnings[j] = speed_warnings(tuple(warnings[j]), speeds[i], b)
 
 
 def _floats(value: Any, n: int) -> np.ndarray:
@@ -702,16 +703,29 @@ def _floats(value: Any, n: int) -> np.ndarray:
     return np.broadcast_to(np.asarray(value, dtype=float), (n,))
 
 
+#: The columns whose values are checked against their input's range when read.
+RANGED = (
+    *("static_rating", "fatigue_load_limit", "speed", "viscosity", "viscosity_40"),
+    *("viscosity_100", "roughness", "reliability", "ec", "pressure_viscosity", "ball_density"),
+)
+
+
 def _check_range(name: str, values: list[Any], bad: dict[int, str]) -> None:
-    """Rows whose cell of a service column lies outside its range (:data:`SERVICE_RANGES`)."""
-    low, high, closed, why = SERVICE_RANGES[name]
-    for i, x in enumerate(values):
-        if (
-            x is not None
-            and not ((low <= x) if closed else (low < x))
-            or (x is not None and x > high)
-        ):
-            bad.setdefault(i, f"{'eC' if name == 'ec' else name}: {why} (got {x:g})")
+    """Rows whose cell lies outside its input's range, refused by the input's reader
+    (:data:`bearingload.plan.inputs.READERS`, the library's and solve's range and words)."""
+    from bearingload.plan.inputs import READERS
+
+    name = "e_c" if name == "ec" else name
+    read = READERS[name]
+    low, high, low_open = getattr(read, "range", (0.0, float("inf"), True))
+    v = np.array([np.nan if x is None else x for x in values], dtype=float)
+    inside = ((v > low) if low_open else (v >= low)) & (v <= high)
+    for i in np.flatnonzero(~inside & ~np.isnan(v)).tolist():
+        x = values[i]
+        try:
+            read(format(x, "g") if float(format(x, "g")) == x else repr(x), name)
+        except InputError as exc:
+            bad.setdefault(i, row_message(exc))
 
 
 Engine = Callable[[tuple[Any, ...], list[int], dict[str, list[Any]]], dict[str, Any]]

@@ -322,13 +322,21 @@ def service_lives(case: Case, bases: list[Any], spell: Any = str) -> list[Any]:
 
 def with_speed_warnings(cases: list[Any], speed: float | None) -> list[Any]:
     """The solved cases with the warning on a speed above the limiting speed the catalogue
-    gives for their bearing added to theirs (:func:`bearingload.bearings.checks.speed_findings`)."""
-    from bearingload.bearings.checks import speed_findings
-
-    if speed is None:
-        return cases
+    gives for their bearing added to theirs (:func:`speed_warnings`)."""
     out = []
     for c in cases:
-        new = [] if c.bearing is None else speed_findings(speed, c.bearing)
-        out.append(dataclasses.replace(c, warnings=(*c.warnings, *new)) if new else c)
+        found = speed_warnings(c.warnings, speed, c.bearing)
+        out.append(c if found is c.warnings else dataclasses.replace(c, warnings=found))
     return out
+
+
+def speed_warnings(warnings: Any, speed: float | None, bearing: Any) -> Any:
+    """``warnings`` (a tuple) with the warning on a ``speed`` [rpm] above the limiting speed the
+    catalogue gives for ``bearing`` added once (:func:`bearingload.bearings.checks.
+    speed_findings`); ``warnings`` itself where there is none."""
+    from bearingload.bearings.checks import speed_findings
+
+    if speed is None or bearing is None:
+        return warnings
+    new = [w for w in speed_findings(speed, bearing) if w not in warnings]
+    return (*warnings, *new) if new else warnings
