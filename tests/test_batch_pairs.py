@@ -276,3 +276,20 @@ def test_the_vectorised_call_gives_each_case_as_alone():
                         assert value == theirs[key], key
             assert pc.warnings == one.warnings
             assert pc.result.x == one.result.x and pc.result.axial == one.result.axial
+
+
+def test_a_preload_contradicting_the_designations_class_is_refused_in_any_row_order():
+    """A row's plan is kept for the rows that differ from it only in their numbers; a preload
+    is no such number: the class the designation carries (7205CDBL) refuses a force beside it
+    whichever row comes first."""
+    head = "bearing,load,axial_load,preload\n"
+    good, bad = "7205CDBL,1kN,300N,L\n", "7205CDBL,1kN,300N,500N\n"
+    for rows, refused in (((good, bad), "3"), ((bad, good), "2")):
+        found = CliRunner().invoke(
+            main, ["batch", "-", "--format", "json"], input=head + "".join(rows)
+        )
+        doc = json.loads(found.stdout)
+        ((skipped),) = doc["skipped"]
+        assert str(skipped["row"]) == refused
+        assert skipped["reason"].startswith("preload: 500 N contradicts the designation")
+        assert len(doc["cases"]) == 2  # the good row's two bearings

@@ -257,3 +257,15 @@ def test_a_bare_number_implausible_for_the_rows_bearing_skips_the_row_as_solve_r
     assert [line.split(",", 1)[0] for line in out.stdout.splitlines()[1:]] == ["6", "7"]
     header = _batch("bearing,load [N]\n6205,3\n")
     assert header.exit_code == 0 and "bare" not in header.stderr
+
+
+def test_the_clearance_pick_range_is_refused_with_the_plans_reason():
+    """'range' solves three clearances side by side, which is solve's: a batch row (one output
+    row per case) is skipped with the plan's reason, as sweep and table refuse it."""
+    out = _batch("bearing,load,clearance,clearance_pick\n6205,1kN,C3,range\n6205,1kN,C3,max\n")
+    assert out.exit_code == 1
+    assert out.stderr.splitlines()[0] == (
+        "Warning: row 2: clearance_pick: 'range' (min, mean and max side by side) is solve's; "
+        "batch takes min, mean or max"
+    )
+    assert [line.split(",", 1)[0] for line in out.stdout.splitlines()[1:]] == ["3"]

@@ -557,6 +557,12 @@ def _exponent(text: str) -> float:
 
 
 def _choice(name: str, text: str) -> str:
+    """A clearance pick: min, mean or max (the pick 'range' refused by the plan's rule)."""
+    from bearingload.plan.bearing import refuse_range
+    from bearingload.plan.case import Case
+
+    if text == "range":
+        refuse_range(Case(clearance_pick=text), "batch")
     if text not in ("min", "mean", "max"):
         raise InputError(name, f"unknown pick {text!r}; allowed: min, mean, max")
     return text

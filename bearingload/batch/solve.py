@@ -71,7 +71,7 @@ _GEOMETRY = ("bearing", "ball_diameter", "pitch_diameter")
 #: are given: a row's plan is kept for rows that differ from it only in their values.
 _PER_ROW = (
     *("load", "axial_load", "moment", "moment_cross", "misalignment", "cage_angle"),
-    *("speed", "ball_density", "preload", *SERVICE_COLUMNS[1:]),
+    *("speed", "ball_density", *SERVICE_COLUMNS[1:]),
 )
 #: Columns that are no input of a case: the radial engine's method and life.
 _NOT_CASE = ("method", "revolutions")
