@@ -83,15 +83,16 @@ def pair_key(solver: Any, v: dict[str, Any]) -> tuple[Any, ...]:
 
 def _pair_plan(v: dict[str, Any]) -> tuple[Any, ...]:
     """The group of a row of cells ``v`` but whether a moment is given, by the plan's rules for
-    a pair (:meth:`~bearingload.plan.case.Case.as_pair`, :func:`~bearingload.plan.bearing.
+    a pair (:func:`~bearingload.plan.solve.engine_of`, :func:`~bearingload.plan.bearing.
     pair_bearing`)."""
     from bearingload.plan.bearing import check_rotating, pair_bearing
     from bearingload.plan.inputs import READERS
+    from bearingload.plan.solve import engine_of
 
     if "arrangement" in v:
         v = v | {"arrangement": READERS["arrangement"](v["arrangement"], "arrangement")}
-    pair = row_case(v).as_pair()
-    if pair is None:
+    pair, engine, _ = engine_of(row_case(v))
+    if engine != "pair":
         raise InputError("arrangement", "missing: a file of pairs gives each row's arrangement "
                          "(DB, DF or DT) or a designation with it (7205BDB)")  # fmt: skip
     if pair.by_hand:

@@ -46,7 +46,7 @@ from bearingload.plan.case import Case
 from bearingload.plan.solve import (
     QUASI_STATIC_WAY,
     check_revolutions,
-    radial_at_speed,
+    engine_of,
     refuse_radial_options,
     refuse_revolutions,
     refuse_static_dynamics,
@@ -259,15 +259,18 @@ class BatchSolver:
                 )
             refuse_tilt_radius(case)
             return None, None
-        angular = case.wants_combined and not loads  # a file without load columns: radial
-        case, at_speed = radial_at_speed(case)
-        at_speed = at_speed or angular and case.speed is not None and not case.quasi_static
-        if at_speed:
-            refuse_radial_options(v.get("method", "exact"), v.get("revolutions"))
-        if at_speed or loads and case.wants_combined:
+        method, revolutions = v.get("method", "exact"), v.get("revolutions")
+        if not self.header.pairs:
+            _refuse_pair(case.bearing)
+        case, engine, at_speed = engine_of(case, method, revolutions)
+        if engine == "combined" and not loads:  # an angular designation: radial at rest
+            at_speed = case.speed is not None and not case.quasi_static
+            if at_speed:
+                refuse_radial_options(method, revolutions)
+        if at_speed or loads and engine == "combined":
             return self._combined_key(case)
         refuse_tilt_radius(case)
-        return self._bearing_key(case, v.get("method", "exact"), v.get("revolutions")), None
+        return self._bearing_key(case, method, revolutions), None
 
     def _bearing_key(self, case: Case, method: str, revolutions: Any) -> tuple[Any, ...]:
         """A radial row of a bearing: its resolved bearing (C_r replaced by a dynamic_rating
@@ -300,10 +303,7 @@ class BatchSolver:
         return key, lever
 
     def bearing(self, case: Case) -> Any:
-        """The resolved bearing of a row's case, its ratings replaced by those given (a matched
-        pair, 7205BDB, refused in a file without pair columns)."""
-        if not self.header.pairs:
-            _refuse_pair(case.bearing)
+        """The resolved bearing of a row's case, its ratings replaced by those given."""
         stiffness = None if case.stiffness is None else float(case.stiffness)
         b = with_ratings(resolve_bearings(case, stiffness), case)[0]
         return b if case.dynamic_rating is None else b.with_dynamic_rating(case.dynamic_rating)

@@ -70,17 +70,31 @@ def solve_case(
     from bearingload.models.registry import list_methods
 
     check_revolutions(revolutions)
-    case, at_speed = radial_at_speed(case)
+    case, engine, at_speed = engine_of(case, method, revolutions)
     methods = list_methods() if method == "all" else [method]
+    if engine == "pair":
+        refuse_revolutions(revolutions, "a bearing pair", "it prints L10r and L10 of the pair")
+        return _pair(case, method, spell)
+    if engine == "combined":
+        return _combined(case, method, revolutions, at_speed, spell)
+    return _radial(case, methods, revolutions, spell)
+
+
+def engine_of(
+    case: Case, method: str = "exact", revolutions: float | None = None
+) -> tuple[Case, str, bool]:
+    """(the case as its engine solves it, the engine: ``"pair"``, ``"combined"`` or
+    ``"radial"``, whether a radial case of a ball bearing is solved at its speed by the ball
+    dynamics: the combined engine at F_a = 0, :func:`radial_at_speed`); such a case's method
+    other than exact and life ``revolutions`` refused (:func:`refuse_radial_options`). The one
+    engine choice of solve, the library and batch."""
+    case, at_speed = radial_at_speed(case)
     if at_speed:
         refuse_radial_options(method, revolutions)
     pair = case.as_pair()
     if pair is not None:
-        refuse_revolutions(revolutions, "a bearing pair", "it prints L10r and L10 of the pair")
-        return _pair(pair, method, spell)
-    if case.wants_combined:
-        return _combined(case, method, revolutions, at_speed, spell)
-    return _radial(case, methods, revolutions, spell)
+        return pair, "pair", False
+    return case, "combined" if case.wants_combined else "radial", at_speed
 
 
 def check_revolutions(revolutions: float | None) -> None:
