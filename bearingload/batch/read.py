@@ -99,19 +99,6 @@ NOT_COMBINED = ("method", "revolutions", "exponent")
 BEARING_COLUMNS = ("bearing", "ball_diameter", "pitch_diameter", "inner_conformity",
                    "outer_conformity", "modulus", "poisson", "ball_material", "clearance_pick",
                    "revolutions", *MOUNTING_PARAMS)  # fmt: skip
-#: Library parameter names -> the column of a batch file they come from: a skipped row's
-#: reason names the column the user wrote (as the command line names the option).
-_COLUMN_OF = {
-    "radial_load": "load",
-    "rollers": "balls",
-    "roller_diameter": "ball_diameter",
-    "f_i": "inner_conformity",
-    "f_o": "outer_conformity",
-    "pick": "clearance_pick",
-    "bore": "clearance",
-    "eC": "ec",
-    "e_c": "eC",
-}
 _HEADER = re.compile(r"^\s*([^\[\]]*?)\s*(?:\[\s*([^\]]*?)\s*\])?\s*$")
 
 
@@ -358,12 +345,16 @@ def _where(exc: UnicodeDecodeError) -> str:
 
 def row_message(exc: Exception) -> str:
     """The reason a row is skipped, ``column: message``, from a library error's fields (the
-    columns of inputs a case would ignore, or of an oil's inputs refused together, all named)."""
+    columns of inputs a case would ignore, or of an oil's inputs refused together, all named;
+    a model's name of an input, ``f_i``, as its column: :func:`bearingload.plan.inputs.
+    argument_of`)."""
     if not isinstance(exc, InputError):
         return str(exc)
-    names = getattr(exc, "parameters", None) or (exc.parameter,)
+    from bearingload.plan.inputs import argument_of
+
+    names = [argument_of(n) for n in getattr(exc, "parameters", None) or (exc.parameter,)]
     joint = ", " if isinstance(exc, UnusedError) else " / "
-    return f"{joint.join(_COLUMN_OF.get(n, n) for n in names)}: {exc.message}"
+    return f"{joint.join('eC' if n == 'e_c' else n for n in names)}: {exc.message}"
 
 
 def read_column(
