@@ -10,7 +10,23 @@ from typing import Any
 
 
 class BearingloadError(Exception):
-    """Base class of every error this package raises on purpose."""
+    """Base class of every error this package raises on purpose. Its errors copy and pickle
+    with their fields (a worker process hands them back whole)."""
+
+    def __reduce__(self) -> tuple[Any, ...]:
+        return (_restore, (type(self), dict(self.__dict__), self.args))
+
+    def _copy(self) -> Any:
+        """The same error, its fields copied (a caller then changes some)."""
+        return _restore(type(self), dict(self.__dict__), self.args)
+
+
+def _restore(cls: type[Exception], state: dict[str, Any], args: tuple[Any, ...]) -> Any:
+    """An error of ``cls`` with the fields ``state`` and the exception arguments ``args``."""
+    error = cls.__new__(cls)
+    error.__dict__.update(state)
+    Exception.__init__(error, *args)
+    return error
 
 
 class InputError(BearingloadError, ValueError):
@@ -49,16 +65,21 @@ class InputError(BearingloadError, ValueError):
         super().__init__(f"{parameter}: {self.message}")
 
     def named(self, parameter: str) -> InputError:
-        """The same refusal naming its parameter as the caller calls it."""
-        new = type(self).__new__(type(self))
-        new.__dict__.update(self.__dict__)
+        """The same refusal (its kind and fields) naming its parameter as the caller calls it."""
+        new = self._copy()
         new.parameter = parameter
-        Exception.__init__(new, f"{parameter}: {self.message}")
+        if isinstance(getattr(new, "parameters", None), tuple):
+            new.parameters = (parameter, *new.parameters[1:])
+        Exception.__init__(new, f"{parameter}: {new.message}")
         return new
 
     def with_way_out(self, way_out: str) -> InputError:
-        """The same refusal with another way out."""
-        return InputError(self.parameter, self.problem, way_out=way_out, reason=self.reason)
+        """The same refusal (its kind and fields) with another way out."""
+        new = self._copy()
+        new.way_out = way_out
+        new.message = f"{new.problem}; {way_out}"
+        Exception.__init__(new, f"{new.parameter}: {new.message}")
+        return new
 
 
 class ConflictError(InputError):

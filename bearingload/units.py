@@ -313,10 +313,8 @@ def parse_cage_angle(text: str | float, *, parameter: str = "cage_angle") -> flo
     try:
         return parse_quantity(folded, "angle", parameter=parameter)
     except InputError as exc:
-        detail = exc.message
-        raise InputError(
-            parameter, f"{detail}; or 'half' (half a pitch: the load between two balls)"
-        ) from None
+        way = "or 'half' (half a pitch: the load between two balls)"
+        raise InputError(parameter, exc.problem, way_out=way, reason=exc.reason) from None
 
 
 #: The units of a temperature: a bare number and these three are degrees Celsius, ``K`` kelvin.

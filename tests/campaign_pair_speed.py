@@ -36,7 +36,7 @@ def random_case(rng: np.random.Generator) -> dict[str, Any]:
     case["kw"]["speed"] = float(top * (rng.uniform(0.8, 1.0) if rng.random() < 1 / 3
                                        else rng.uniform(0.0, 1.0)))  # fmt: skip
     if rng.random() < 0.2:
-        case["kw"]["ball_density"] = 3.2e-6
+        case["kw"]["ball_density"] = 3200.0
     return case
 
 
@@ -73,7 +73,7 @@ def plain_shaft(case: dict[str, Any], r: Any) -> float:
 def ball_residual(r: Any, kw: dict[str, Any]) -> tuple[float, float]:
     """Each ball's axial and radial equations from the returned forces and angles: the largest
     over the sum of their terms' magnitudes, and the largest over the ball solver's tolerance
-    (bearingload.models._ball_dynamics._ball_norm: 1e-13 of those magnitudes plus the rounding
+    (the core's ball_norm, bearingload/models/_core.pyx: 1e-13 of those magnitudes plus the rounding
     of its approaches, 16 eps times each contact's load times its length r' + delta over its
     approach delta: a light ball's approach is a difference of lengths near r')."""
     dw = kw["ball_diameter"]

@@ -66,7 +66,7 @@ def random_case(rng: np.random.Generator) -> dict[str, Any]:
         0.0 if v < 0.1 else float(top * (rng.uniform(0.8, 1.0) if v < 0.4 else rng.random()))
     )
     if rng.random() < 0.2:
-        kw["ball_density"] = 3.2e-6
+        kw["ball_density"] = 3200.0
     return {"z": z, "fr": fr, "fa": fa, "kw": kw}
 
 

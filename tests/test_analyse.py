@@ -113,7 +113,7 @@ def test_a_ring_by_hand_names_what_is_missing_and_what_it_would_ignore():
 
 def test_the_way_out_of_a_refusal_at_speed_names_the_static_model_by_its_argument():
     with pytest.raises(InputError) as caught:
-        analyse("6205", load=1000, speed=1e6)
+        analyse("6205", load=1000, speed="1e6rpm")
     assert caught.value.reason == "too_fast"
     assert "'quasi_static'" in caught.value.way_out
 
@@ -123,3 +123,81 @@ def test_a_refusal_by_a_model_names_the_argument_analyse_takes():
         analyse("6205", load=3000, axial_load=500, inner_conformity=52)
     assert caught.value.parameter == "inner_conformity"
     assert str(caught.value).startswith("inner_conformity: ")
+
+
+def test_a_radial_case_at_speed_keeps_the_radial_engines_load_factors():
+    """One report per bearing: with a speed the radial case moves to the ball dynamics and
+    keeps k = Q_max/F_r and K_Q = k z/2 from its inner contacts; near rest they are the radial
+    engine's."""
+    static = analyse("6306", load=3000, clearance="C3")
+    moving = analyse("6306", load=3000, clearance="C3", speed=1500)
+    slow = analyse("6306", load=3000, clearance="C3", speed=1e-3)
+    assert moving.engine == "combined" and static.engine == "radial"
+    assert moving.k == pytest.approx(max(moving.ball_loads_inner) / 3000, rel=1e-12)
+    assert moving.K_Q == pytest.approx(moving.k * 8 / 2, rel=1e-12)
+    assert slow.k == pytest.approx(static.k, rel=1e-9) and moving.k > static.k
+    assert "k" not in analyse("6306", load=3000, axial_load=100, speed=1500).to_dict()["cases"][0]
+
+
+@pytest.mark.parametrize(
+    "options, parameter, words",
+    [
+        ({"load": 3000, "modulus": 210}, "modulus", "implausible"),
+        ({"load": 3000, "clearance": 2}, "clearance", "did you mean 2um"),
+        ({"load": 1000, "speed": 3000, "viscosity": 6.8e-5}, "viscosity", "implausible"),
+        ({"load": 1000, "revolutions": True}, "revolutions", "must be a number"),
+        ({"load": 10**400}, "load", "too large"),
+        ({"load": float("nan")}, "load", "finite"),
+        ({"load": [1000.0, 2000.0]}, "load", "must be a number"),
+        ({"load": 1000, "method": "bogus"}, "method", "unknown method 'bogus'"),
+        ({"load": 1000, "speed": 3000, "method": "bogus"}, "method", "unknown method"),
+        ({"load": 1000, "maker": ""}, "maker", "must not be empty"),
+    ],
+)
+def test_analyse_reads_numbers_as_the_command_line_reads_bare_ones(options, parameter, words):
+    """A number is read as a bare number of solve's option: its plausibility for the quantity
+    is judged the same way; bools, huge integers, NaN and sequences are refused by name."""
+    with pytest.raises(InputError, match=words) as caught:
+        analyse("6205", **options)
+    assert caught.value.parameter == parameter
+
+
+def test_analyse_takes_numpy_scalars_and_refuses_arrays():
+    import numpy as np
+
+    one = analyse("6205", load=1000.0).q_max
+    assert analyse("6205", load=np.int64(1000)).q_max == one
+    assert analyse("6205", load=np.float32(1000.0)).q_max == one
+    with pytest.raises(InputError, match="one case: give a number, not an array"):
+        analyse("6205", load=np.array([1000.0, 2000.0]))
+
+
+def test_analyse_needs_the_radial_load_as_solve_does():
+    for bearing, options in (("7205B", {"axial_load": 100}), ("6205", {})):
+        with pytest.raises(MissingError) as caught:
+            analyse(bearing, **options)
+        assert caught.value.parameter == "load"
+
+
+def test_an_error_keeps_its_kind_and_fields_when_reworded_or_pickled():
+    import pickle
+
+    from bearingload.errors import ConvergenceError
+
+    conflict = ConflictError("moment", "a pair", "why").with_way_out("give 'misalignment'")
+    assert isinstance(conflict, ConflictError) and conflict.where == "a pair"
+    assert conflict.way_out == "give 'misalignment'" and conflict.problem.endswith("why")
+    unused = UnusedError(("f_i", "maker"), "a bearing").named("inner_conformity")
+    assert unused.parameters == ("inner_conformity", "maker")
+    for error in (conflict, unused, MissingError("load", "F_r"),
+                  ConvergenceError("ring", 3, 0.5, {"load": 1.0}, {"load": "N"})):  # fmt: skip
+        again = pickle.loads(pickle.dumps(error))
+        assert type(again) is type(error) and str(again) == str(error)
+        assert again.__dict__.keys() == error.__dict__.keys()
+
+
+def test_a_solution_compares_by_identity_and_draws_only_ball_loads():
+    a = analyse("6205", load=1000)
+    assert a != analyse("6205", load=1000) and a == a and hash(a) == hash(a)
+    with pytest.raises(ValueError, match="exact model"):
+        analyse("6205", load=1000, method="palmgren").figure()

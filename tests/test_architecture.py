@@ -277,41 +277,62 @@ def test_a_plain_solve_compiles_no_pattern_it_does_not_use():
 READS_MESSAGES = {"quality/stability.py", "quality/stability_combined.py"}
 
 
-def _message_reads(tree: ast.AST) -> list[int]:
-    """Lines where the text of a caught exception (``str(exc)``, ``exc.message``) is searched,
-    split, cut or replaced: control flow or rewording by message text."""
-    import ast
+#: Methods that search, cut or rewrite a text.
+_TEXT_METHODS = {
+    "split", "rsplit", "replace", "partition", "rpartition", "startswith", "endswith",
+    "removeprefix", "removesuffix", "find", "rfind", "index", "rindex", "count", "strip",
+    "lstrip", "rstrip", "splitlines",
+}  # fmt: skip
 
+
+def _message_reads(tree: ast.AST) -> list[int]:
+    """Lines where the text of a caught exception (``str(exc)``, ``repr(exc)``, ``f"{exc}"``,
+    ``exc.args``, ``exc.message``, ``exc.problem``, ``exc.way_out``, or a name bound to one of
+    them) is compared, searched, split, cut, replaced or matched by a regular expression:
+    control flow or rewording by message text. Reading a field whole (to show it, or to build
+    a new error of it) is not flagged."""
     caught = {h.name for h in ast.walk(tree) if isinstance(h, ast.ExceptHandler) and h.name}
+    texts: set[str] = set()
 
     def is_text(node: ast.AST) -> bool:
-        if isinstance(node, ast.Call) and getattr(node.func, "id", None) == "str" and node.args:
-            return getattr(node.args[0], "id", None) in caught
+        if isinstance(node, ast.Name):
+            return node.id in texts
+        if isinstance(node, ast.Call) and getattr(node.func, "id", None) in ("str", "repr"):
+            return bool(node.args) and getattr(node.args[0], "id", None) in caught
+        if isinstance(node, ast.JoinedStr):
+            return any(
+                isinstance(v, ast.FormattedValue) and getattr(v.value, "id", None) in caught
+                for v in node.values
+            )
+        if isinstance(node, ast.Subscript):
+            return is_text(node.value)
         return (
             isinstance(node, ast.Attribute)
-            and node.attr == "message"
+            and node.attr in ("message", "problem", "way_out", "args")
             and getattr(node.value, "id", None) in caught
         )
 
+    for node in ast.walk(tree):  # names bound to an exception's text
+        if isinstance(node, ast.Assign) and is_text(node.value):
+            texts.update(t.id for t in node.targets if isinstance(t, ast.Name))
     lines = []
     for node in ast.walk(tree):
-        if isinstance(node, ast.Compare) and any(
-            isinstance(o, (ast.In, ast.NotIn)) for o in node.ops
-        ):
-            if any(is_text(c) for c in node.comparators):
+        if isinstance(node, ast.Compare):
+            sides = [node.left, *node.comparators]
+            if any(is_text(c) for c in sides) and not all(
+                isinstance(o, (ast.Is, ast.IsNot)) for o in node.ops
+            ):
                 lines.append(node.lineno)
-        elif isinstance(node, ast.Attribute) and node.attr in (
-            "split",
-            "replace",
-            "partition",
-            "startswith",
-            "endswith",
-        ):
+        elif isinstance(node, ast.Attribute) and node.attr in _TEXT_METHODS:
             if is_text(node.value):
                 lines.append(node.lineno)
         elif isinstance(node, ast.Subscript) and is_text(node.value):
             lines.append(node.lineno)
-    return lines
+        elif isinstance(node, ast.Call) and getattr(node.func, "value", None) is not None:
+            regex = getattr(node.func.value, "id", None) == "re"
+            if regex and any(is_text(a) for a in node.args):
+                lines.append(node.lineno)
+    return sorted(set(lines))
 
 
 def test_no_module_decides_or_rewords_by_an_exception_text():
@@ -330,10 +351,13 @@ def test_no_module_decides_or_rewords_by_an_exception_text():
 
 
 def test_the_message_check_finds_a_splice():
-    import ast
-
-    tree = ast.parse(
+    source = (
         "try:\n    f()\nexcept ValueError as exc:\n    if 'small' in str(exc):\n        pass\n"
         "    text = exc.message.replace('a', 'b')\n"
+        "    t = str(exc)\n    if 'x' in t:\n        pass\n"
+        "    re.search('y', repr(exc))\n    f'{exc}'.split(':')\n"
+        "    exc.args[0].removeprefix('bearing: ')\n    if exc.way_out == WAY:\n        pass\n"
+        "    if exc.way_out is None:\n        pass\n"
+        "    raise InputError('a', exc.problem, way_out='w')\n"
     )
-    assert _message_reads(tree) == [4, 6]
+    assert _message_reads(ast.parse(source)) == [4, 6, 8, 10, 11, 12, 13]

@@ -76,11 +76,11 @@ def test_the_ball_dynamics_take_the_materials_density_unless_ball_density_is_giv
 
     b = resolve_bearing("6205", ball_material="si3n4")
     r = solve_combined_bearing([b], 1000.0, 200.0, speed=10000.0)[0].result
-    assert float(np.ravel(r.ball_density)[0]) == pytest.approx(3200e-9)
-    r = solve_combined_bearing([b], 1000.0, 200.0, speed=10000.0, ball_density=5e-6)[0].result
-    assert float(np.ravel(r.ball_density)[0]) == pytest.approx(5e-6)
+    assert float(np.ravel(r.ball_density)[0]) == pytest.approx(3200.0)
+    r = solve_combined_bearing([b], 1000.0, 200.0, speed=10000.0, ball_density=5000.0)[0].result
+    assert float(np.ravel(r.ball_density)[0]) == pytest.approx(5000.0)
     steel = solve_combined_bearing([resolve_bearing("6205")], 1000.0, 200.0, speed=10000.0)
-    assert float(np.ravel(steel[0].result.ball_density)[0]) == pytest.approx(7.85e-6)
+    assert float(np.ravel(steel[0].result.ball_density)[0]) == pytest.approx(7850.0)
 
 
 def test_unknown_material_lists_the_known_in_library_cli_and_batch(tmp_path):

@@ -352,7 +352,7 @@ def test_a_rotating_cell_solve_refuses_is_a_skipped_row():
     lines = out.stderr.splitlines()
     assert lines[0].startswith("Warning: row 2: rotating: it names the rotating ring")
     assert "ball bearings only" in lines[0]
-    assert lines[1].startswith("Warning: row 3: rotating: ") and "give dynamic_rating" in lines[1]
+    assert lines[1].startswith("Warning: row 3: rotating: ") and "give 'dynamic_rating'" in lines[1]
 
 
 def test_a_lever_far_from_the_pitch_radius_is_warned_on_its_own_row():

@@ -85,7 +85,7 @@ def test_plot_refuses_jpg_where_pillow_cannot_write_it(capsys, tmp_path, monkeyp
 def test_plot_of_a_method_without_ball_loads_is_refused_before_any_work(capsys, tmp_path):
     code, out, err = run_entry(capsys, *("solve", "6205", "-F", "5kN", "--method", "stribeck"),
                                "--plot", str(tmp_path / "x.png"))  # fmt: skip
-    assert code == 2 and out == "" and "--method stribeck gives none" in err
+    assert code == 2 and out == "" and "'--method' stribeck gives none" in err
     assert list(tmp_path.iterdir()) == []
 
 
@@ -196,11 +196,11 @@ def test_dynamic_rating_replaces_c_on_the_radial_path():
     ("args", "message"),
     [
         (("-z", "10", "--ball-diameter", "11.5", "--pitch-diameter", "43.5", "-F", "500",
-          "--rotating", "inner"), "give --dynamic-rating"),
+          "--rotating", "inner"), "give '--dynamic-rating'"),
         (("NU206", "-F", "5kN", "--rotating", "outer"), "ball bearings only"),
         (("-z", "8", "-K", "1e5", "-F", "1kN", "--rotating", "outer"), "would be ignored"),
         (("6205", "-F", "1kN", "--method", "stribeck", "--rotating", "outer"),
-         "--method stribeck gives none"),
+         "'--method' stribeck gives none"),
     ],
 )  # fmt: skip
 def test_rotating_without_a_reference_life_is_refused(capsys, args, message):

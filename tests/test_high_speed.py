@@ -281,7 +281,7 @@ def test_batch_equals_one_by_one_and_ceramic_balls_lighter():
         assert np.array_equal(one.ball_loads_outer, r.ball_loads_outer[i])
     steel = r.centrifugal_forces[2]
     ceramic = solve_high_speed(13, 500.0, 1200.0, speed=20000.0, contact_angle=25.0,
-                               ball_density=3.2e-6, **ANGULAR).centrifugal_forces  # fmt: skip
+                               ball_density=3200.0, **ANGULAR).centrifugal_forces  # fmt: skip
     assert np.all(ceramic < 0.5 * steel)
 
 
@@ -292,7 +292,7 @@ def test_refusals_name_the_speed():
     with pytest.raises(InputError, match="speed"):
         solve_high_speed(9, 1000.0, speed=-1.0, **DEEP)
     with pytest.raises(InputError, match="ball_density"):
-        solve_high_speed(9, 1000.0, speed=1000.0, ball_density=7850.0, **DEEP)
+        solve_high_speed(9, 1000.0, speed=1000.0, ball_density=7.85e-6, **DEEP)  # kg/mm^3
 
 
 def test_the_speed_limit_refusal_gives_the_bearing_s_largest_speed():

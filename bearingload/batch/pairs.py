@@ -98,7 +98,7 @@ def _pair_plan(v: dict[str, Any]) -> tuple[Any, ...]:
     if pair.by_hand:
         raise InputError("bearing", "missing: a pair needs a bearing or its ball geometry")
     b = pair_bearing(pair)
-    check_rotating(pair, b, ["exact"], str)
+    check_rotating(pair, b, ["exact"])
     dynamics = pair.dynamics_arguments()["speed"] is not None, pair.ball_density is not None
     rotating = pair.rotating or "inner"
     return (
@@ -174,7 +174,7 @@ def _call(key: tuple[Any, ...], idx: list[int], cols: dict[str, list[Any]]) -> l
     if at_speed:  # the ball dynamics of both bearings (ball_density as --ball-density, kg/m^3)
         dynamics["speed"] = np.array(taken(cols, "speed", idx), dtype=float)
         if density:
-            dynamics["ball_density"] = np.array(taken(cols, "ball_density", idx), float) * 1e-9
+            dynamics["ball_density"] = np.array(taken(cols, "ball_density", idx), float)
     try:
         return solve_bearing_pairs(
             b, np.array(taken(cols, "load", idx), dtype=float),

@@ -283,7 +283,7 @@ class BatchSolver:
             refuse_revolutions(
                 revolutions, "a bearing without a dynamic load rating C", "give 'dynamic_rating'"
             )
-        check_rotating(case, b, [method], str)
+        check_rotating(case, b, [method])
         return ("bearing", b, method, case.rotating or "inner")
 
     def _combined_key(self, case: Case) -> tuple[tuple[Any, ...], float | None]:
@@ -293,7 +293,7 @@ class BatchSolver:
 
         b = self.bearing(case)
         if b.kind == "ball" and b.has_geometry:
-            check_rotating(case, b, ["exact"], str)
+            check_rotating(case, b, ["exact"])
         b = with_contact_angle([b], case, "'contact_angle'")[0]
         lever = tilt_lever(case.tilt_radius, b.pitch_diameter)
         given = (case.moment, case.misalignment, case.moment_cross)
@@ -470,6 +470,7 @@ def _solve_bearing(
 def _solve_combined(
     key: tuple[Any, ...], idx: list[int], cols: dict[str, list[Any]]
 ) -> dict[str, Any]:
+    from bearingload.models.high_speed import too_fast
     from bearingload.studies.combined_bearing import combined_columns, solve_combined_bearing
 
     _, b, (moment, misaligned, cross, groove), rotating, c_r, (at_speed, density) = key
@@ -485,13 +486,14 @@ def _solve_combined(
             moment=given("moment", moment), misalignment=given("misalignment", misaligned),
             rotating=rotating, dynamic_rating=c_r, moment_cross=given("moment_cross", cross),
             tilt_radius=None if groove else given("_lever"), speed=given("speed", at_speed),
-            ball_density=None if rho is None else rho * 1e-9,
+            ball_density=rho,
         )  # fmt: skip
     except (InputError, ConvergenceError) as exc:  # a radial row at speed: no load cell
         cells = [cols[c][i] for c in LOAD_COLUMNS if c in cols for i in idx]
         radial = b.contact_angle is None and all(x is None for x in cells)
         hinted: BearingloadError | None = None
-        if at_speed and isinstance(exc, InputError):
+        deep_groove = b.contact_angle is None  # an angular-contact row: the solver's words
+        if at_speed and isinstance(exc, InputError) and (deep_groove or too_fast(exc)):
             hinted = speed_hint(exc, radial)
         elif at_speed and radial:
             hinted = exc.with_way_out(QUASI_STATIC_WAY)

@@ -558,9 +558,7 @@ def find(designation: str) -> BearingGeometry:
     except UnmodelledBearing:
         raise  # another bearing type: no geometry given by hand makes it a deep-groove one
     except InputError as exc:
-        raise InputError(
-            "bearing", f"{exc.args[0].removeprefix('bearing: ')}; or {_BY_HAND}"
-        ) from None
+        raise InputError("bearing", exc.problem, way_out=f"or {_BY_HAND}") from None
     if parsed.kind == "roller":
         raise InputError(
             "bearing",

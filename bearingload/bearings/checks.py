@@ -297,26 +297,27 @@ def clearance_findings(bearing: ResolvedBearing) -> list[str]:
         return [mounted]
     if bearing.kind != "ball" or bearing.geometry is None:
         return []
-    from bearingload.bearings.clearance import clearance_range
+    from bearingload.bearings.clearance import largest_class, table_name
 
     bore = bearing.geometry.d
     try:
-        c5_max = clearance_range(bore, "C5")[1]
-    except InputError:  # bore outside the ISO 5753-1 table
+        name, c5_max = largest_class(bore)
+    except InputError:  # bore outside the clearance table
         return []
     g_r = bearing.clearance
     um = 1e3
+    where = table_name(bore)
     if g_r > c5_max:
         return [
-            f"radial clearance G_r = {g_r * um:.4g} µm is above the largest class of ISO 5753-1 "
-            f"(C5 max {c5_max * um:.4g} µm at d = {bore:g} mm): no deep groove ball bearing of "
-            "this bore has so much play"
+            f"radial clearance G_r = {g_r * um:.4g} µm is above the largest class of {where} "
+            f"({name} max {c5_max * um:.4g} µm at d = {bore:g} mm): no deep groove ball bearing "
+            "of this bore has so much play"
         ]
     bound = PRELOAD_BOUND_FACTOR * c5_max
     if g_r < -bound:
         return [
-            f"preload G_r = {g_r * um:.4g} µm is deeper than {bound * um:.4g} µm (the C5 "
-            f"maximum of ISO 5753-1 at d = {bore:g} mm, this package's bound): check the fits"
+            f"preload G_r = {g_r * um:.4g} µm is deeper than {bound * um:.4g} µm (the {name} "
+            f"maximum of {where} at d = {bore:g} mm, this package's bound): check the fits"
         ]
     return []
 

@@ -7,7 +7,8 @@ side is half of it (Delta = e = G_r / 2); this module returns G_r itself.
 
 The limits are those of ``data/clearance_deep_groove.csv``, copied from NSK's reproduction of
 the ISO 5753-1 table for deep groove ball bearings [1]_ and confirmed cell by cell for 6-140 mm
-by [2]_. Bore ranges are "over / incl": a bore of exactly 30 mm belongs to the 24-30 row.
+by [2]_; the row over 2.5 up to 6 mm (C2, CN, C3 only) from the makers' pages its source
+names. Bore ranges are "over / incl": a bore of exactly 30 mm belongs to the 24-30 row.
 
 The limits of cylindrical roller bearings with a cylindrical bore (``kind="roller"``) are those
 of ``data/clearance_cylindrical_roller.csv``, copied from the ISO 5753-1 table reproduced by [4]_
@@ -120,9 +121,10 @@ def table(kind: str = "ball") -> tuple[ClearanceRow, ...]:
         raise InputError("kind", f"unknown bearing kind {kind!r}; allowed: {', '.join(TABLES)}")
     rows = []
     for rec in read_rows(TABLES[kind][0]):
-        limits = {
+        limits = {  # a class the source does not give for the row is left out
             cls: (float(rec[f"{cls}_min"]) / 1000.0, float(rec[f"{cls}_max"]) / 1000.0)
             for cls in CLASSES
+            if rec[f"{cls}_min"] != ""
         }
         rows.append(
             ClearanceRow(float(rec["bore_over"]), float(rec["bore_incl"]), limits, rec["source"])
@@ -241,7 +243,30 @@ def clearance_range(bore: float, cls: str, kind: str = "ball") -> tuple[float, f
     InputError
         Bore outside the table, or unknown class.
     """
-    return _row(bore, kind).limits[parse_class(cls)]
+    row, name = _row(bore, kind), parse_class(cls)
+    if name not in row.limits:
+        raise InputError(
+            "clearance",
+            f"class {name} is not tabulated for a bore of {float(bore):g} mm (over "
+            f"{row.bore_over:g} up to {row.bore_incl:g} mm: {', '.join(row.limits)}); give "
+            "another class, or 'clearance' as a length",
+        )
+    return row.limits[name]
+
+
+def largest_class(bore: float, kind: str = "ball") -> tuple[str, float]:
+    """The largest class tabulated at ``bore`` [mm] and its upper limit G_r [mm] (C5, or C3
+    where the row over 2.5 up to 6 mm stops)."""
+    row = _row(bore, kind)
+    name = [c for c in CLASSES if c in row.limits][-1]
+    return name, row.limits[name][1]
+
+
+def table_name(bore: float, kind: str = "ball") -> str:
+    """What the row of ``bore`` reproduces: ``ISO 5753-1`` for the rows copied from a maker's
+    reproduction of the standard, ``makers' tables`` for the row over 2.5 up to 6 mm, read from
+    makers' pages only (its source in the data file)."""
+    return "ISO 5753-1" if "ISO 5753-1 values" in _row(bore, kind).source else "makers' tables"
 
 
 def radial_clearance(bore: float, cls: str, pick: str = "mean", kind: str = "ball") -> float:
@@ -332,18 +357,13 @@ def parse_clearance(text: str | float | None) -> ClearanceSpec | None:
             length=parse_quantity(text, "length", parameter="clearance"), text=text
         )
     except InputError as exc:
-        message = exc.message
         if exc.reason == IMPLAUSIBLE:
-            group = (
-                f" (the GOST clearance group {text} is written G{text})"
-                if text in ("6", "7", "8", "9")
-                else ""
-            )
-            raise InputError("clearance", message + group, reason=IMPLAUSIBLE) from None
-        raise InputError(
-            "clearance",
-            f"{message}; or a clearance class C2, CN, C3, C4, C5 (GOST groups G6, G7, G8, G9)",
-        ) from None
+            group = f"the GOST clearance group {text} is written G{text}"
+            if text not in ("6", "7", "8", "9"):
+                raise
+            raise InputError("clearance", f"{exc.problem} ({group})", reason=IMPLAUSIBLE) from None
+        way = "or a clearance class C2, CN, C3, C4, C5 (GOST groups G6, G7, G8, G9)"
+        raise InputError("clearance", exc.problem, way_out=way, reason=exc.reason) from None
 
 
 def clearance_length(spec: ClearanceSpec | None) -> float:

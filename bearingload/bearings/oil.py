@@ -426,11 +426,11 @@ def _viscosity_100_of(nu_40: float, index: float, *, given: bool) -> float:
     except InputError as exc:
         if given or exc.parameter != "viscosity_index":
             raise
-        why = exc.message
+        why = exc.problem
         # below D2270_RISING_FROM no VI fixes nu_100: only nu_100 itself helps
         give = "'viscosity_100'" + (" or 'viscosity_index'" if nu_40 >= D2270_RISING_FROM else "")
         raise InputError(
             "viscosity_index",
-            f"the default VI {index:g} (a mineral oil) does not fit this oil: {why}; give its "
-            f"{give}",
+            f"the default VI {index:g} (a mineral oil) does not fit this oil: {why}",
+            way_out=f"give its {give}",
         ) from exc

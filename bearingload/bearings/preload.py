@@ -76,9 +76,8 @@ def parse_preload(value: Any, *, parameter: str = "preload") -> float | str:
     try:
         force = parse_quantity(value, "force", parameter=parameter)
     except InputError as exc:
-        raise InputError(
-            parameter, f"{exc.message}; or a preload class: {' | '.join(CLASSES)}"
-        ) from None
+        way = f"or a preload class: {' | '.join(CLASSES)}"
+        raise InputError(parameter, exc.problem, way_out=way, reason=exc.reason) from None
     if not force >= 0:
         raise InputError(parameter, f"must be 0 N or more (got {force:g} N)")
     return force

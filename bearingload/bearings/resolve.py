@@ -209,7 +209,7 @@ def resolve_bearing(
         clearance=g_r, clearance_class=cls, clearance_range=rng, clearance_pick=pick,
         C=c, C0=c0, provenance=tuple(prov), sources=tuple(sources),
         ball_material=None if material is None else material.name,
-        ball_density=None if material is None else material.density * 1e-9,
+        ball_density=None if material is None else material.density,
     ), mounting)  # fmt: skip
 
 

@@ -83,7 +83,7 @@ class ResolvedBearing:
         materials`); None: the balls are of the rings' material.
     ball_density : float or None
         Density of the balls of ``ball_material`` for the ball dynamics (None: bearing
-        steel). [kg/mm^3]
+        steel). [kg/m^3]
     provenance : tuple of Provenance
         Every value above with its source, in display order.
     sources : tuple of str
@@ -231,8 +231,10 @@ def resolve_clearance(
         raise InputError("clearance", _NEEDS_BORE.format(spec.text if spec else cls))
     low, high = clearance_range(bore, cls, kind)
     value = {"min": low, "mean": 0.5 * (low + high), "max": high}[pick]
+    from bearingload.bearings.clearance import table_name
+
     source = (
-        f"{how}; ISO 5753-1{'' if kind == 'ball' else ' (cylindrical roller bearings)'} {cls} "
+        f"{how}; {table_name(bore, kind)}{'' if kind == 'ball' else ' (cylindrical roller bearings)'} {cls} "
         f"{low * 1e3:g}-{high * 1e3:g} µm at d = {bore:g} mm, {pick} "
         "(clearance table)"
     )

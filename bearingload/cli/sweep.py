@@ -2,16 +2,15 @@
 
 from __future__ import annotations
 
-from typing import Any
-
 import click
 
 from bearingload.bearings.mounting import MOUNTING_PARAMS
 from bearingload.cli.case_options import case_options
 from bearingload.cli.options import CONTEXT, LibraryOption, emit, library_errors, output_options
 from bearingload.cli.plot import check_plot, save_plot
-from bearingload.plan.bearing import refuse_range, refuse_tilt_radius, resolve_case
+from bearingload.plan.bearing import refuse_range
 from bearingload.plan.case import COMBINED_PARAMS, MOUNTING_REFUSAL, SERVICE_PARAMS, Case
+from bearingload.plan.sweep import Swept, sweep_case
 
 #: The case options the dimensionless mode refuses (P = K = 1, the gap from T).
 KUROCHKIN_REFUSES = ("bearing", "load", "stiffness", "clearance", "plot", "ball_diameter",
@@ -135,170 +134,42 @@ def sweep(
     if case.load is None:
         raise click.UsageError("Missing option '--load' / '-F' (or give --kurochkin-T).")
     refuse_range(case, "sweep")
-    pair = case.as_pair()
-    if pair is not None:
-        _pair(pair, steps, plot, fmt, output)
-        return
-    if plot is not None:
-        check_plot(plot)
-    from bearingload.plan.solve import radial_at_speed, refuse_static_dynamics
-
-    refuse_static_dynamics(case)
-    case, radial = radial_at_speed(case)  # a radial ball bearing at speed: F_a = 0, dynamics
-    if case.wants_combined:  # the load alone chooses the engine, never a life option
-        _combined(case, steps, plot, fmt, output, radial)
-        return
-    refuse_tilt_radius(case)
-    z, k, g_r, m, context = resolve_case(case)
-    import dataclasses
-
-    from bearingload.reports.sweep import sweep_report, sweep_warnings
-    from bearingload.studies.sweep import sweep as run_sweep
-
-    life, lives = _radial_lives(case) if case.lives_given else (None, {})
-    result = run_sweep(z, case.radial_load, k, g_r, m, steps, life=life)
-    result = dataclasses.replace(result, **lives)
-    if not case.by_hand:  # solve's checks on the bearing, as solve makes them
-        result = dataclasses.replace(result, warnings=_bearing_checks(case, result))
-    text = sweep_report(result, fmt, context)
-    for warning in sweep_warnings(result):
-        click.echo(f"Warning: {warning}", err=True)
-    if plot is not None:
-        from bearingload.reports.plots import sweep_figure
-
-        save_plot(lambda: sweep_figure(result, case.bearing), plot)
-    emit(text, output)
-
-
-def _bearing_checks(case: Case, result: Any) -> tuple[str, ...]:
-    """The warnings solve gives on the bearing of the case (s0, C0, contact pressure, clearance),
-    at the heaviest ball load of the sweep ``result``, and on --speed above its limiting speed."""
-    from bearingload.bearings.checks import speed_findings
-    from bearingload.plan.bearing import resolve_bearings, with_ratings
-    from bearingload.studies.sweep import bearing_checks
-
-    b = with_ratings(resolve_bearings(case, case.stiffness_value()), case)[0]
-    return bearing_checks(b, result) + tuple(speed_findings(case.speed, b))
-
-
-def _radial_lives(case: Case) -> tuple[Any, dict[str, Any]]:
-    """The lives of a radial sweep (--dynamic-rating, --rotating, --speed given, no load
-    option): L10r at each cage position from the radial engine's ball loads, every ball at the
-    contact angle 0, as solve's radial path gives it (a ball bearing with its geometry and C_r;
-    --rotating refused where none is computed, as solve refuses it); ISO 281's L10 where C_r is
-    known; hours with --speed. (the ``life`` of the sweep, the fields of its result)"""
-    import functools
-
-    from bearingload.bearings.life import BALL_LIFE_EXPONENT, ROLLER_LIFE_EXPONENT
-    from bearingload.plan.bearing import check_rotating, resolve_bearings, with_ratings
-    from bearingload.studies.reference_life import ball_reference_life, has_reference_life
-
-    b = with_ratings(resolve_bearings(case, case.stiffness_value()), case)[0]
-    check_rotating(case, b, ["exact"])
-    c_r = case.dynamic_rating or b.C or None
-    rotating = case.rotating or "inner"
-    life = None
-    if c_r is not None and has_reference_life(b, c_r):
-        life = functools.partial(ball_reference_life, b, rotating=rotating, c_r=float(c_r))
-    exponent = ROLLER_LIFE_EXPONENT if b.kind == "roller" else BALL_LIFE_EXPONENT
-    return life, {
-        "dynamic_rating": None if c_r is None else float(c_r),
-        "life_exponent": exponent,
-        "rotating": None if life is None else rotating,
-        "speed": case.speed,
-    }
-
-
-def _combined(
-    case: Case, steps: int, plot: str | None, fmt: str, output: str | None,
-    radial: bool = False,
-) -> None:  # fmt: skip
-    """The sweep under a combined load: one vectorised 3-D solve over the pitch (at --speed the
-    ball dynamics, unless --quasi-static; ``radial``: a radial case at speed, F_a = 0 set),
-    then emit."""
-    import dataclasses
-
-    from bearingload.bearings.checks import speed_findings
-    from bearingload.cli.options import print_warnings
-    from bearingload.plan.bearing import bearing_context, resolve_bearings, with_ratings
-    from bearingload.reports.combined_sweep import combined_sweep_report
-
-    b = with_ratings(resolve_bearings(case, case.stiffness_value()), case)[0]
-    result = _combined_sweep(b, case, steps, radial)
-    if case.speed is not None:  # the hours (and the dynamics' speed); the limiting speed
-        found = (*result.warnings, *speed_findings(case.speed, b))
-        result = dataclasses.replace(result, speed=case.speed, warnings=found)
-    text = combined_sweep_report(result, fmt, bearing_context(b))
-    print_warnings(list(result.warnings), False)
-    if plot is not None:
-        from bearingload.reports.plots import combined_sweep_figure
-
-        save_plot(lambda: combined_sweep_figure(result, b.designation), plot)
-    emit(text, output)
-
-
-def _combined_sweep(b: Any, case: Case, steps: int, radial: bool) -> Any:
-    """:func:`bearingload.studies.combined_sweep.combined_sweep` of the case, a refusal of the
-    ball dynamics naming --quasi-static as solve's does."""
-    from bearingload.errors import ConvergenceError, InputError
-    from bearingload.plan.solve import QUASI_STATIC_WAY, STATIC_PAIR_WAY, speed_hint
-    from bearingload.studies.combined_sweep import combined_sweep
-
-    dynamics = case.dynamics_arguments()
-    try:
-        return combined_sweep(b, case.radial_load, steps=steps, **case.combined_arguments(),
-                              **dynamics)  # fmt: skip
-    except InputError as exc:
-        hinted = speed_hint(exc, radial) if dynamics["speed"] is not None else None
-        if hinted is None:
-            raise
-        raise hinted from exc
-    except ConvergenceError as exc:
-        if dynamics["speed"] is None:
-            raise
-        raise exc.with_way_out(QUASI_STATIC_WAY if radial else STATIC_PAIR_WAY) from exc
-
-
-def _pair(case: Case, steps: int, plot: str | None, fmt: str, output: str | None) -> None:
-    """The sweep of a bearing pair (7205BDB, --arrangement): one vectorised pair solve over the
-    pitch, then emit."""
-    from bearingload.cli.options import print_warnings
-    from bearingload.errors import ConvergenceError, InputError
-    from bearingload.plan.bearing import bearing_context, pair_bearing
-    from bearingload.plan.solve import pair_speed_hint
-    from bearingload.reports.pair_sweep import pair_sweep_report
-    from bearingload.studies.pair_sweep import pair_sweep
-
-    if plot is not None:
+    if plot is not None and case.as_pair() is not None:
         raise click.UsageError(
             "Invalid value for '--plot': it draws one bearing's ripple, not a pair's; "
             "--format csv gives the pair at every cage position"
         )
-    tilt = "the shaft's tilt follows from the loads; give 'moment'"
-    case.refuse(("misalignment",), "a bearing pair", tilt)
-    fixed = "the design contact angle fixes the geometry of an angular-contact bearing"
-    case.refuse(("clearance",), "a bearing pair", fixed + " (no clearance)")
-    b = pair_bearing(case)
-    args = case.pair_arguments(b.balls)
-    del args["cage_angle"]
-    dynamics = case.dynamics_arguments()  # at --speed both bearings' ball dynamics
-    try:
-        result = pair_sweep(b, case.radial_load, case.axial_load or 0.0, steps=steps, **args,
-                            **dynamics)  # fmt: skip
-    except (ConvergenceError, InputError) as exc:
-        hinted = pair_speed_hint(exc) if dynamics["speed"] is not None else None
-        if hinted is None:
-            raise
-        raise hinted from exc
-    if case.speed is not None:  # the lives in hours (and the dynamics' speed); the limit
-        import dataclasses
+    if plot is not None:
+        check_plot(plot)
+    swept = sweep_case(case, steps)
+    _emit(swept, plot, fmt, output)
 
-        from bearingload.bearings.checks import speed_findings
 
-        found = (*result.warnings, *speed_findings(case.speed, b))
-        result = dataclasses.replace(result, speed=case.speed, warnings=found)
-    text = pair_sweep_report(result, fmt, bearing_context(b))
-    print_warnings(list(result.warnings), False)
+def _emit(swept: Swept, plot: str | None, fmt: str, output: str | None) -> None:
+    """Render a solved sweep, print its warnings, draw its plot, write it."""
+    from bearingload.cli.options import print_warnings
+
+    result = swept.result
+    if swept.engine == "pair":
+        from bearingload.reports.pair_sweep import pair_sweep_report
+
+        text = pair_sweep_report(result, fmt, swept.context)
+        print_warnings(list(result.warnings), False)
+    elif swept.engine == "combined":
+        from bearingload.reports.combined_sweep import combined_sweep_report
+
+        text = combined_sweep_report(result, fmt, swept.context)
+        print_warnings(list(result.warnings), False)
+    else:
+        from bearingload.reports.sweep import sweep_report, sweep_warnings
+
+        text = sweep_report(result, fmt, swept.context)
+        print_warnings(list(sweep_warnings(result)), False)
+    if plot is not None:
+        from bearingload.reports import plots
+
+        draw = plots.combined_sweep_figure if swept.engine == "combined" else plots.sweep_figure
+        save_plot(lambda: draw(result, swept.designation), plot)
     emit(text, output)
 
 

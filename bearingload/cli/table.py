@@ -17,7 +17,6 @@ from bearingload.cli.options import (
     option_message,
     output_options,
 )
-from bearingload.errors import ConvergenceError, InputError
 from bearingload.plan.bearing import refuse_range
 from bearingload.plan.case import COMBINED_PARAMS, DYNAMICS_PARAMS, MOUNTING_REFUSAL, Case
 
@@ -216,7 +215,7 @@ def table(
                 raise click.UsageError(f"{option} cannot be used with table life: {why}")
         if "load" not in case.given:
             raise click.UsageError("Missing option '--load' / '-F': table life needs F_r (N)")
-        _life(case, k_given, clearances, fmt, output)
+        _life(case, clearances, fmt, output)
         return
     refuse_range(case, f"table {name}")  # table life refuses every pick (above)
     case.refuse(COMBINED_PARAMS, f"table {name}", RADIAL_ONLY)
@@ -274,7 +273,6 @@ def _given(param: str) -> bool:
 
 def _life(
     case: Case,
-    k_given: float | None,
     clearances: list[float] | None,
     fmt: str,
     output: str | None,
@@ -282,68 +280,20 @@ def _life(
     """``table life``: resolve the bearing as solve does, solve every clearance, emit; a speed
     above the catalogue's limiting speed warns, as in solve."""
     from bearingload.cli.options import print_warnings
-    from bearingload.plan.bearing import resolve_bearings
     from bearingload.reports.life_clearance import life_report
     from bearingload.reports.solve import printed_warnings
-    from bearingload.studies.life_clearance import life_against_clearance
 
     if case.bearing is None and case.ball_diameter is None:
         raise click.UsageError(
             "table life needs a bearing: --bearing, or --balls, --ball-diameter, "
             "--pitch-diameter and --dynamic-rating"
         )
-    from bearingload.plan.bearing import with_ratings
-    from bearingload.plan.solve import with_speed_warnings
+    from bearingload.plan.life_table import life_against_clearance_case
 
-    b = with_ratings(resolve_bearings(case, k_given), case)[0]
-    dynamics = case.dynamics_arguments() if b.kind == "ball" else {}  # ball dynamics at speed
-    try:
-        result = life_against_clearance(
-            b,
-            case.radial_load,
-            clearances=clearances,
-            cage_angle=case.cage_angle_deg(b.balls),
-            **case.combined_arguments(),
-            **dynamics,
-        )
-    except InputError as exc:
-        raise _life_input_error(exc, dynamics.get("speed") is not None) from exc
-    except ConvergenceError as exc:
-        if dynamics.get("speed") is None:
-            raise
-        raise exc.with_way_out(QUASI_STATIC_WAY) from exc
-    (result,) = with_speed_warnings([result], case.speed)
-    service = _service(case, result)
+    result, service = life_against_clearance_case(case, clearances, option_message)
     text = life_report(result, fmt, service)
     print_warnings(printed_warnings(result.warnings, service), False)
     emit(text, output)
-
-
-#: What a row the ball dynamics cannot solve can do.
-QUASI_STATIC_WAY = "'quasi_static' gives the static model (the ball dynamics left out)"
-
-
-def _life_input_error(exc: InputError, dynamics: bool) -> Exception:
-    """The error of table life for the library's ``exc``: a bad clearance names --clearances;
-    the loads too small for the combined solver name no radial solver (table life has none: the
-    static rows are the combined solver's too); a speed the ball dynamics refuse (``dynamics``)
-    names --quasi-static; others as they are."""
-    from bearingload.models.combined import RADIAL_TAKES_ANY_LOAD, TOO_LIGHT
-    from bearingload.models.high_speed import too_fast
-    from bearingload.plan.solve import STATIC_AT_ANY_SPEED
-
-    if exc.parameter == "clearance":
-        message = option_message(exc.message)
-        return click.UsageError(f"Invalid value for '--clearances': {message}")
-    if exc.reason == TOO_LIGHT and exc.way_out == RADIAL_TAKES_ANY_LOAD:
-        way = (
-            "table life solves every row by it, at any speed; 'bearingload solve' without an "
-            "axial load (at a speed with 'quasi_static') takes any load"
-        )
-        return exc.with_way_out(way)
-    if dynamics and too_fast(exc):
-        return exc.with_way_out(STATIC_AT_ANY_SPEED)
-    return exc
 
 
 def _pair_life(
@@ -356,9 +306,7 @@ def _pair_life(
 ) -> None:
     """``table life`` of a bearing pair: L10r against the preload (``--preloads``), emit."""
     from bearingload.cli.options import print_warnings
-    from bearingload.plan.bearing import pair_bearing
-    from bearingload.plan.case import SERVICE_PARAMS
-    from bearingload.plan.solve import with_speed_warnings
+    from bearingload.plan.life_table import life_against_preload_case
     from bearingload.reports.pair_life import preload_life_report
 
     if case is None:
@@ -379,86 +327,14 @@ def _pair_life(
     ):
         if given:
             raise click.UsageError(f"{option} cannot be used with table life of a pair: {why}")
-    tilt = "the shaft's tilt follows from the loads; give 'moment'"
-    case.refuse(("misalignment",), "a bearing pair", tilt)
-    fixed = "the design contact angle fixes the geometry of an angular-contact bearing"
-    case.refuse(("clearance",), "a bearing pair", fixed + " (no clearance)")
-    lives = tuple(p for p in SERVICE_PARAMS if p != "speed")  # --speed: the hours, the dynamics
-    case.refuse(lives, "table life of a pair", "its service lives beyond the hours are not yet "
-                "tabulated; 'bearingload solve 7205BDB --preload ...' gives them for one preload")  # fmt: skip
     if preloads is None:
         raise click.UsageError(
             "Missing option '--preloads': table life of a pair runs over the preload; give the "
             "rows, e.g. --preloads 0,100N,300N,1kN"
         )
-    negative = [p for p in preloads if not p >= 0]
-    if negative:
-        raise click.UsageError(
-            f"Invalid value for '--preloads': each must be 0 N or more (got {negative[0]:g} N)"
-        )
-    if (case.arrangement or "").upper() == "DT":
-        raise click.UsageError(
-            "Invalid value for '--arrangement': a tandem pair (DT) is not preloaded in itself "
-            "(it is preloaded against another bearing): table life of a pair runs over the "
-            "preload of DB or DF"
-        )
     if "load" not in case.given:
         raise click.UsageError("Missing option '--load' / '-F': table life needs F_r (N)")
-    b = pair_bearing(case)
-    result = _solve_pairs(case, b, preloads)
-    result = with_speed_warnings([result], case.speed)[0]  # the bearing's limiting speeds
+    result = life_against_preload_case(case, preloads)
     text = preload_life_report(result, fmt, case.speed)
     print_warnings(list(result.warnings), False)
     emit(text, output)
-
-
-def _solve_pairs(case: Case, b: Any, preloads: list[float]) -> Any:
-    """The pair ``b`` of ``case`` at every preload [N], as solve solves each (at --speed the
-    ball dynamics of both bearings unless --quasi-static); the library's refusals in the words
-    of the command line."""
-    from bearingload.models.pair_speed import STATIC_WAY
-    from bearingload.plan.solve import pair_speed_hint
-    from bearingload.studies.pair_life import life_against_preload
-
-    args = case.pair_arguments(b.balls)
-    del args["preload"]
-    dynamics = case.dynamics_arguments()
-    try:
-        return life_against_preload(b, case.radial_load, case.axial_load or 0.0,
-                                    preloads=preloads, **args, **dynamics)  # fmt: skip
-    except (ConvergenceError, InputError) as exc:
-        # at speed: unbalanced, or too light for the ball dynamics, in solve's words
-        hinted = pair_speed_hint(exc) if dynamics["speed"] is not None else None
-        if hinted is not None:
-            raise hinted from exc
-        if not isinstance(exc, InputError):
-            raise
-        if exc.parameter == "preload" and exc.way_out != STATIC_WAY:
-            message = option_message(exc.message)
-            raise click.UsageError(f"Invalid value for '--preloads': {message}") from exc
-        raise
-
-
-def _service(case: Case, t: Any) -> list[Any] | None:
-    """The lives of every row of a life-against-clearance table (the heaviest ball at its
-    contact angle for the film, as solve takes it)."""
-    from bearingload.bearings.service_life import LifeBasis
-    from bearingload.plan.case import SERVICE_PARAMS
-    from bearingload.plan.solve import service_lives
-    from bearingload.studies.life_basis import life_geometry
-
-    bases = [
-        LifeBasis(
-            C=t.dynamic_rating,
-            equivalent_load=t.equivalent_load,
-            rating_life=t.rating_life,
-            reference_rating_life=float(t.reference_rating_life[i]),
-            q_max=float(t.q_max[i]),
-            contact_angle=float(t.heaviest_contact_angle[i]),
-            **life_geometry(t.bearing),
-        )
-        for i in range(t.clearance.size)
-    ]
-    if all(getattr(case, n) is None for n in SERVICE_PARAMS):
-        return None  # C_0 feeds no column of this table (no s0): only with a life option
-    return service_lives(case, bases, option_message)

@@ -57,3 +57,72 @@ ctypedef struct Point:
     double res      # relative residual (see residual)
     int age         # steps carried by the difference formulas since a fresh evaluation
     double drop     # change of the potential from the point it was reached from
+
+# ------------------------------------------------------------------------ the balls at speed
+
+ctypedef struct Speed:
+    # the balls of one case at speed (bearingload.models.high_speed; N, mm, kg, s): r'_i, r'_o,
+    # D_w, d_m, the shaft speed [rad/s], the ball mass [kg], and K_i, K_o at the NODES Chebyshev
+    # nodes of cos(alpha) [N/mm^1.5] with the nodes' abscissae and barycentric weights
+    double ri, ro, dw, dm, omega, mass
+    const double *ki
+    const double *ko
+    const double *node_x
+    const double *node_w
+
+ctypedef struct Dual:
+    # a value and its derivatives by (delta_o, alpha_o, rho, u') of one ball
+    double v
+    double d[4]
+
+ctypedef struct SpeedLimits:
+    # the tolerances and limits of bearingload.models.high_speed (its module constants)
+    double tolerance, accept, rounding, noise_max, ball_tolerance, ball_round
+    int trials, halvings, ball_iterations, fallback_iterations, ball_halvings
+
+ctypedef struct Ring:
+    # one bearing at speed in its own frame (physical units; tilts as R_i theta [mm]): ball j at
+    # (c[j], s[j]) = (cos, sin) of its angle; base = A - G_r/2; A (length)
+    Speed sp
+    int z
+    const double *c
+    const double *s
+    double base, length
+    int one_sided
+    SpeedLimits lim
+
+ctypedef struct Dyn:
+    # every ball of a bearing at speed and the ring's forces at one ring position
+    double *do      # delta_o (z)
+    double *ao      # alpha_o (z)
+    double *ok      # 1 where the ball is balanced (z)
+    double *terms   # BALL_TERMS a ball (ball-major)
+    double *sens    # 6 a ball: rho, u', d(delta_o, alpha_o)/drho, d(delta_o, alpha_o)/du'
+    double *tot     # 4 a ball: dF_a/drho, dF_a/du', dF_r/drho, dF_r/du' (its equations eliminated)
+    double *gain    # 2 a ball: |dF/dX (dg/dX)^-1| of F_a, F_r
+    double gen[5]   # generalised ring forces [N]
+    double jac[25]  # their tangent (row-major) [N/mm]
+    double floor[5] # rounding level of each [N]
+    double noise[5] # their change over the balls' own residuals [N]
+    int balls_ok, touching
+
+ctypedef struct Shaft:
+    # one bearing (parts 1: L = I, offset 0) or a pair on one rigid shaft (parts 2,
+    # bearingload.models.pair_speed): bearing k the Ring ``ring`` at L_k v + offset_k
+    Ring ring
+    int parts
+    double maps[50]    # L_1, L_2 (5 x 5 each, row-major)
+    double offset[10]
+    double f[5]        # applied generalised forces [N]
+    double f_ref       # the largest applied load (and preload) [N]
+    int held[5]        # components held by a symmetry or an imposed tilt
+    int iterations, stages, warm_stages
+
+ctypedef struct ShaftState:
+    Dyn part[2]
+    double gen[5]
+    double jac[25]
+    double floor[5]
+    double noise[5]
+    double merit, score, level
+    int touching

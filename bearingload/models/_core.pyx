@@ -25,12 +25,14 @@ Double-double arithmetic needs every product rounded on its own: the build compi
 with ``-ffp-contract=off`` (setup.py); the exact products use ``fma``.
 """
 
-from libc.math cimport fabs, fma, hypot, isfinite, sqrt, INFINITY
+from libc.math cimport (atan, atan2, cos, fabs, fma, hypot, isfinite, isnan, pow, sin, sqrt,
+                        INFINITY, NAN)
 from libc.stdint cimport int64_t
 from libc.stdlib cimport free, malloc
 from libc.string cimport memset
 
-from bearingload.models._core cimport NODES, Balls, Case, Limits, Loads, Point
+from bearingload.models._core cimport (NODES, Balls, Case, Dual, Dyn, Limits, Loads, Point, Ring,
+                                      Shaft, ShaftState, Speed, SpeedLimits)
 
 import numpy as np
 
@@ -1872,3 +1874,1037 @@ cdef int lean_newton(const Pair *pr, PairWork *wk, double *v) noexcept nogil:
             v[i] = trial[i]
         swap_lean(&wk.lean, &wk.lean_trial)
     return its
+
+
+# ------------------------------------------------------------------------ the balls at speed
+#
+# One ball of bearingload.models.high_speed (Jones's outer-raceway control; the model is stated
+# there): its two equations (g1, g2), the forces it puts on the inner ring (F_a = Q_i sin a_i,
+# F_r = Q_i cos a_i) and their derivatives by (delta_o, alpha_o, rho, u'), in forward-mode dual
+# arithmetic: the chain rule applied term by term, exact to rounding.
+
+cdef enum:
+    # g1, g2, Q_i, Q_o, sin a_i, cos a_i, F_c, M_g, omega_c, omega_R, beta, delta_i, F_a, F_r
+    BALL_TERMS = 14
+    # rows g1, g2, F_a, F_r; columns delta_o, alpha_o, rho, u'
+    BALL_PARTIALS = 16
+
+#: N mm per kg mm^2/s^2 (forces from kg, mm, s). [-]
+cdef double KG_MM = 1e-3
+cdef double EPS = 2.220446049250313e-16
+
+
+cdef inline Dual dual(double v) noexcept nogil:
+    cdef Dual r
+    r.v = v
+    r.d[0] = 0.0
+    r.d[1] = 0.0
+    r.d[2] = 0.0
+    r.d[3] = 0.0
+    return r
+
+
+cdef inline Dual variable(double v, int k) noexcept nogil:
+    cdef Dual r = dual(v)
+    r.d[k] = 1.0
+    return r
+
+
+cdef inline Dual d_add(Dual a, Dual b) noexcept nogil:
+    cdef int k
+    a.v = a.v + b.v
+    for k in range(4):
+        a.d[k] = a.d[k] + b.d[k]
+    return a
+
+
+cdef inline Dual d_sub(Dual a, Dual b) noexcept nogil:
+    cdef int k
+    a.v = a.v - b.v
+    for k in range(4):
+        a.d[k] = a.d[k] - b.d[k]
+    return a
+
+
+cdef inline Dual d_mul(Dual a, Dual b) noexcept nogil:
+    cdef Dual r
+    cdef int k
+    r.v = a.v * b.v
+    for k in range(4):
+        r.d[k] = a.d[k] * b.v + a.v * b.d[k]
+    return r
+
+
+cdef inline Dual d_div(Dual a, Dual b) noexcept nogil:
+    cdef Dual r
+    cdef int k
+    r.v = a.v / b.v
+    for k in range(4):
+        r.d[k] = (a.d[k] - r.v * b.d[k]) / b.v
+    return r
+
+
+cdef inline Dual d_scale(Dual a, double s) noexcept nogil:
+    """s a, the constant on the left (as the numpy expressions it replaces round)."""
+    cdef int k
+    a.v = s * a.v
+    for k in range(4):
+        a.d[k] = s * a.d[k]
+    return a
+
+
+cdef inline Dual d_chain(double v, double slope, Dual a) noexcept nogil:
+    """f(a) from its value v = f(a.v) and slope f'(a.v)."""
+    cdef Dual r
+    cdef int k
+    r.v = v
+    for k in range(4):
+        r.d[k] = slope * a.d[k]
+    return r
+
+
+cdef inline Dual d_sqrt(Dual a) noexcept nogil:
+    cdef double v = sqrt(a.v)
+    return d_chain(v, 0.5 / v if v > 0.0 else 0.0, a)
+
+
+cdef inline Dual d_pow(Dual a, double p) noexcept nogil:
+    """max(a, 0)^p."""
+    if a.v <= 0.0:
+        return dual(0.0)
+    return d_chain(pow(a.v, p), p * pow(a.v, p - 1.0), a)
+
+
+cdef Dual d_stiffness(const Speed *sp, const double *nodes, Dual c) noexcept nogil:
+    """K(cos alpha) from its values at the Chebyshev nodes (barycentric interpolation in x = 2c -
+    1); below c = 0.05 (a loose ball pointing across the groove: no load) the value at 0.05 and
+    no slope. [N/mm^1.5]"""
+    cdef double x = 2.0 * max(c.v, 0.05) - 1.0, t, num = 0.0, den = 0.0, d_num = 0.0, d_den = 0.0
+    cdef double k
+    cdef int i
+    for i in range(NODES):
+        t = sp.node_w[i] / (x - sp.node_x[i])
+        num += t * nodes[i]
+        den += t
+        d_num += t * t / sp.node_w[i] * nodes[i]
+        d_den += t * t / sp.node_w[i]
+    k = num / den
+    return d_chain(k, 2.0 * (k * d_den - d_num) / den if c.v >= 0.05 else 0.0, c)
+
+
+cdef void inner_contact(const Speed *sp, Dual rho, Dual u, Dual lo, Dual so, Dual co,
+                        Dual *si, Dual *ci, Dual *di) noexcept nogil:
+    """The inner contact of a ball whose centre is lo (sin, cos) alpha_o from the outer groove
+    centre: its angle (sin, cos) and approach. The inner raceway is the half of the groove
+    facing the ball (cos a_i >= 0: the radial offset taken at least 0)."""
+    cdef Dual e1 = d_sub(u, d_mul(lo, so)), e2 = d_sub(rho, d_mul(lo, co)), li
+    if not e2.v > 0.0:
+        e2 = dual(0.0)
+    li = d_sqrt(d_add(d_mul(e1, e1), d_mul(e2, e2)))
+    di[0] = d_sub(li, dual(sp.ri))
+    if li.v > 0.0:
+        si[0] = d_div(e1, li)
+        ci[0] = d_div(e2, li)
+    else:
+        si[0] = e1
+        ci[0] = e2
+
+
+cdef void ball_speeds(const Speed *sp, Dual so, Dual co, Dual si, Dual ci, Dual *wc, Dual *wr,
+                      Dual *beta) noexcept nogil:
+    """Outer-raceway control: the orbit speed omega_c, the ball's spin omega_R and its attitude
+    angle beta from the two contact angles. [rad/s, rad]"""
+    cdef double gamma = sp.dw / sp.dm
+    cdef Dual tb = d_div(so, d_add(co, dual(gamma))), c_o, c_i, total
+    beta[0] = d_chain(atan(tb.v), 1.0 / (1.0 + tb.v * tb.v), tb)
+    c_o = d_div(d_add(co, d_mul(tb, so)), d_add(dual(1.0), d_scale(co, gamma)))
+    c_i = d_div(d_add(ci, d_mul(tb, si)), d_sub(dual(1.0), d_scale(ci, gamma)))
+    total = d_add(c_o, c_i)
+    wc[0] = d_div(d_scale(c_o, sp.omega), total)
+    wr[0] = d_div(dual(sp.omega), d_mul(d_scale(d_chain(cos(beta.v), -sin(beta.v), beta[0]),
+                                                gamma), total))
+
+
+cdef void ball_eval(const Speed *sp, double rho_, double u_, double do_, double ao_, double *t,
+                    double *jac) noexcept nogil:
+    """One ball at the groove-centre offsets (rho, u') with its unknowns (delta_o, alpha_o):
+    the BALL_TERMS values ``t`` and, if ``jac`` is not NULL, the BALL_PARTIALS derivatives of
+    (g1, g2, F_a, F_r) by (delta_o, alpha_o, rho, u') (row-major)."""
+    cdef Dual do = variable(do_, 0), ao = variable(ao_, 1)
+    cdef Dual rho = variable(rho_, 2), u = variable(u_, 3)
+    cdef Dual lo = d_add(dual(sp.ro), do), so, co, si, ci, di, qi, qo, wc, wr, beta, sb
+    cdef Dual fc, mg, fr
+    cdef Dual g[4]
+    cdef int r, k
+    so = d_chain(sin(ao.v), cos(ao.v), ao)
+    co = d_chain(cos(ao.v), -sin(ao.v), ao)
+    inner_contact(sp, rho, u, lo, so, co, &si, &ci, &di)
+    qi = d_mul(d_stiffness(sp, sp.ki, ci), d_pow(di, 1.5))
+    qo = d_mul(d_stiffness(sp, sp.ko, co), d_pow(do, 1.5))
+    ball_speeds(sp, so, co, si, ci, &wc, &wr, &beta)
+    fc = d_scale(d_mul(d_scale(wc, 0.5 * sp.mass * sp.dm), wc), KG_MM)
+    sb = d_chain(sin(beta.v), cos(beta.v), beta)
+    mg = d_scale(d_mul(d_mul(d_scale(wr, 0.1 * sp.mass * sp.dw * sp.dw), wc), sb), KG_MM)
+    fr = d_scale(mg, 2.0 / sp.dw)
+    g[0] = d_add(d_sub(d_mul(qi, si), d_mul(qo, so)), d_mul(fr, co))
+    g[1] = d_add(d_sub(d_sub(d_mul(qi, ci), d_mul(qo, co)), d_mul(fr, so)), fc)
+    g[2] = d_mul(qi, si)
+    g[3] = d_mul(qi, ci)
+    t[0] = g[0].v
+    t[1] = g[1].v
+    t[2] = qi.v
+    t[3] = qo.v
+    t[4] = si.v
+    t[5] = ci.v
+    t[6] = fc.v
+    t[7] = mg.v
+    t[8] = wc.v
+    t[9] = wr.v
+    t[10] = beta.v
+    t[11] = di.v
+    t[12] = g[2].v
+    t[13] = g[3].v
+    if jac != NULL:
+        for r in range(4):
+            for k in range(4):
+                jac[4 * r + k] = g[r].d[k]
+
+
+cdef void static_eval(const Speed *sp, double rho_, double u_, double *f, double *jac) noexcept nogil:
+    """A ball at speed 0, on the line of its groove centres, K_i and K_o in series: its forces
+    on the ring (F_a, F_r) and their derivatives by (rho, u') (row-major 2 x 2)."""
+    cdef Dual rho = variable(rho_, 2), u = variable(u_, 3), rp, d, ca, k, q, fa, fr
+    cdef int r
+    rp = rho if rho.v > 0.0 else dual(0.0)
+    d = d_sqrt(d_add(d_mul(rp, rp), d_mul(u, u)))
+    ca = d_div(rp, d) if d.v > 0.0 else rp
+    k = d_pow(d_add(d_pow(d_stiffness(sp, sp.ki, ca), -2.0 / 3.0),
+                    d_pow(d_stiffness(sp, sp.ko, ca), -2.0 / 3.0)), -1.5)
+    q = d_mul(k, d_pow(d_sub(d, dual(sp.ri + sp.ro)), 1.5))
+    fa = d_div(d_mul(q, u), d)
+    fr = d_div(d_mul(q, rp), d)
+    f[0] = fa.v
+    f[1] = fr.v
+    for r in range(2):
+        jac[r] = fa.d[2 + r] if isfinite(fa.d[2 + r]) else 0.0
+        jac[2 + r] = fr.d[2 + r] if isfinite(fr.d[2 + r]) else 0.0
+
+
+cdef inline void speed_on(Speed *sp, const double *consts, const double *ki, const double *ko,
+                          const double *node_x, const double *node_w) noexcept nogil:
+    sp.ri = consts[0]
+    sp.ro = consts[1]
+    sp.dw = consts[2]
+    sp.dm = consts[3]
+    sp.omega = consts[4]
+    sp.mass = consts[5]
+    sp.ki = ki
+    sp.ko = ko
+    sp.node_x = node_x
+    sp.node_w = node_w
+
+
+def speed_balls(const double[::1] rho, const double[::1] u, const double[::1] do,
+                const double[::1] ao, const int64_t[::1] row, const double[:, ::1] consts,
+                const double[:, ::1] ki, const double[:, ::1] ko, const double[::1] node_x,
+                const double[::1] node_w, double[:, ::1] terms, double[:, ::1] partials):
+    """m balls at speed (``ball_eval``): ball i at (rho[i], u[i]) with (do[i], ao[i]), its case
+    ``row[i]`` (consts (cases, 6): r'_i, r'_o, D_w, d_m, omega, mass; ki, ko (cases, NODES)).
+    Writes terms (BALL_TERMS, m) and, if partials has BALL_PARTIALS rows, the derivatives."""
+    cdef Py_ssize_t m = rho.shape[0], i
+    cdef int k
+    cdef bint want = partials.shape[0] == BALL_PARTIALS
+    cdef double t[BALL_TERMS]
+    cdef double jac[BALL_PARTIALS]
+    cdef Speed sp
+    with nogil:
+        for i in range(m):
+            speed_on(&sp, &consts[row[i], 0], &ki[row[i], 0], &ko[row[i], 0], &node_x[0],
+                     &node_w[0])
+            ball_eval(&sp, rho[i], u[i], do[i], ao[i], t, jac if want else NULL)
+            for k in range(BALL_TERMS):
+                terms[k, i] = t[k]
+            if want:
+                for k in range(BALL_PARTIALS):
+                    partials[k, i] = jac[k]
+
+
+# --------------------------------------------------------------------- one ball's equilibrium
+#
+# Each ball's two equations at a given ring position (bearingload.models.high_speed): Newton on
+# its centre (X_1, X_2) = (r'_o + delta_o)(sin, cos) alpha_o from the outer groove centre, the
+# step halved until the residual falls; a ball left unbalanced is solved from its loose state.
+
+cdef double ZERO_NODES[NODES]  # K_i of a ball without inner contact
+
+
+cdef double stiffness_at(const Speed *sp, const double *nodes, double c) noexcept nogil:
+    """K(cos alpha), the value of ``d_stiffness``. [N/mm^1.5]"""
+    cdef double x = 2.0 * max(c, 0.05) - 1.0, t, num = 0.0, den = 0.0
+    cdef int i
+    for i in range(NODES):
+        t = sp.node_w[i] / (x - sp.node_x[i])
+        num += t * nodes[i]
+        den += t
+    return num / den
+
+
+cdef double ball_norm(const Speed *sp, const double *t, double do, double round_) noexcept nogil:
+    """The ball's residual over the sum of its force magnitudes plus the rounding of its
+    approaches (differences of lengths up to r' + delta; ``round_`` times each contact's load
+    times its length over its approach); inf where not finite."""
+    cdef double di = fabs(t[11]), size, extra, out
+    size = fabs(t[2]) + fabs(t[3]) + fabs(t[6]) + 2.0 * fabs(t[7]) / sp.dw
+    extra = t[2] * (di + sp.ri) / di + t[3] * (do + sp.ro) / do
+    if isnan(extra):
+        extra = 0.0  # no contact: 0/0
+    out = hypot(t[0], t[1]) / (size + round_ * extra)
+    return out if isfinite(out) else INFINITY
+
+
+cdef void line_start(const Speed *sp, double rho, double u, double *do, double *ao) noexcept nogil:
+    """The static position: the ball on the line of its groove centres, the approach shared by
+    the contacts as their compliances."""
+    cdef double r = max(rho, 0.0), d, ca, ci, co
+    d = hypot(r, u)
+    ca = r / (d if d > 0.0 else 1.0)
+    ci = pow(stiffness_at(sp, sp.ki, ca), -2.0 / 3.0)
+    co = pow(stiffness_at(sp, sp.ko, ca), -2.0 / 3.0)
+    do[0] = co / (ci + co) * (d - sp.ri - sp.ro)
+    ao[0] = atan2(u, r)
+
+
+cdef bint ball_step(const Speed *sp, double rho, double u, double *x, double *t, bint touching,
+                    const SpeedLimits *lim) noexcept nogil:
+    """One Newton step of an unbalanced ball at x = (delta_o, alpha_o) whose terms are t (the
+    Jacobian in its centre's Cartesian coordinates), no longer than r'_o/4, halved until the
+    residual falls (a touching ball kept in inner contact). Updates x and t; whether it
+    moved. Sets t's balance in x[2] (1: balanced)."""
+    cdef double jac[BALL_PARTIALS]
+    cdef double t2[BALL_TERMS]
+    cdef double a11, a12, a21, a22, det, s1, s2, lo, so, co, cut, y1, y2, d2, a2, size
+    cdef double lam = 1.0
+    cdef bint ok2
+    cdef int h, k
+    ball_eval(sp, rho, u, x[0], x[1], t2, jac)
+    lo = sp.ro + x[0]
+    so = sin(x[1])
+    co = cos(x[1])
+    a11 = jac[0] * so + jac[1] * co / lo
+    a12 = jac[0] * co - jac[1] * so / lo
+    a21 = jac[4] * so + jac[5] * co / lo
+    a22 = jac[4] * co - jac[5] * so / lo
+    det = a11 * a22 - a12 * a21
+    s1 = -(a22 * t[0] - a12 * t[1]) / det
+    s2 = -(-a21 * t[0] + a11 * t[1]) / det
+    if not (isfinite(s1) and isfinite(s2)):
+        return False
+    cut = min(1.0, 0.25 * sp.ro / max(hypot(s1, s2), 1e-300))
+    size = hypot(t[0], t[1])
+    for h in range(lim.ball_halvings):
+        y1 = lo * so + lam * (s1 * cut)
+        y2 = lo * co + lam * (s2 * cut)
+        d2 = hypot(y1, y2) - sp.ro
+        a2 = atan2(y1, y2)
+        ball_eval(sp, rho, u, d2, a2, t2, NULL)
+        ok2 = ball_norm(sp, t2, d2, lim.ball_round) <= lim.ball_tolerance
+        if (hypot(t2[0], t2[1]) < (1.0 - 1e-4 * lam) * size or ok2) and (
+                not touching or t2[11] > 0.0):
+            x[0] = d2
+            x[1] = a2
+            x[2] = 1.0 if ok2 else 0.0
+            for k in range(BALL_TERMS):
+                t[k] = t2[k]
+            return True
+        lam *= 0.5
+    return False
+
+
+cdef bint ball_newton(const Speed *sp, double rho, double u, double *x, bint moving,
+                      int iterations, bint keep_contact, const SpeedLimits *lim) noexcept nogil:
+    """Newton on one ball from x = (delta_o, alpha_o) (``ball_step``); whether it is balanced
+    (a ball not moving is)."""
+    cdef double t[BALL_TERMS]
+    cdef bint touching
+    cdef int it
+    ball_eval(sp, rho, u, x[0], x[1], t, NULL)
+    x[2] = 1.0 if (not moving or ball_norm(sp, t, x[0], lim.ball_round) <= lim.ball_tolerance) else 0.0
+    touching = keep_contact and t[11] > 0.0
+    for it in range(iterations):
+        if x[2] != 0.0 or not ball_step(sp, rho, u, x, t, touching, lim):
+            break
+    return x[2] != 0.0
+
+
+cdef bint loose(const Speed *sp, double rho, double u, double *do, const SpeedLimits *lim) noexcept nogil:
+    """The ball without inner contact: alpha_o = 0 (no friction: beta = 0) and K_o
+    delta_o^1.5 = F_c, by Newton in delta_o from the rigid-rolling F_c; whether solved."""
+    cdef Speed bare = sp[0]
+    cdef double t[BALL_TERMS]
+    cdef double jac[BALL_PARTIALS]
+    cdef double fc = 0.125 * sp.mass * sp.dm * sp.omega * sp.omega * KG_MM, step
+    cdef bint ok = False
+    cdef int it
+    bare.ki = ZERO_NODES
+    do[0] = pow(fc / stiffness_at(sp, sp.ko, 1.0), 2.0 / 3.0)
+    for it in range(lim.fallback_iterations):
+        ball_eval(&bare, rho, u, do[0], 0.0, t, jac)
+        ok = ball_norm(&bare, t, do[0], lim.ball_round) <= lim.ball_tolerance
+        if ok:
+            break
+        step = -t[1] / jac[4]
+        if not isfinite(step):
+            step = 0.0
+        do[0] = do[0] + step if do[0] + step > 0.0 else 0.5 * do[0]
+    return ok and isfinite(do[0])
+
+
+cdef bint solve_ball(const Speed *sp, double rho, double u, double *x,
+                     const SpeedLimits *lim) noexcept nogil:
+    """One ball's equations at (rho, u') from x = (delta_o, alpha_o): Newton from x; if left
+    unbalanced, its loose state where its inner approach is a gap there, else Newton from that
+    state (or its line) kept in inner contact. Whether it is balanced."""
+    cdef double t[BALL_TERMS]
+    cdef double ld, line_d, line_a
+    cdef bint moving = sp.omega > 0.0, loose_ok
+    if ball_newton(sp, rho, u, x, moving, lim.ball_iterations, False, lim):
+        return True
+    loose_ok = loose(sp, rho, u, &ld, lim)
+    line_start(sp, rho, u, &line_d, &line_a)
+    ball_eval(sp, rho, u, ld, 0.0, t, NULL)
+    if loose_ok and t[11] <= 0.0:
+        x[0] = ld
+        x[1] = 0.0
+        x[2] = 1.0
+        return True
+    x[0] = ld if loose_ok else max(line_d, 1e-6 * sp.ro)
+    x[1] = 0.0 if loose_ok else line_a
+    return ball_newton(sp, rho, u, x, True, lim.fallback_iterations, True, lim)
+
+
+# ------------------------------------------------------------ the ring of one bearing at speed
+#
+# The inner ring's forces and tangent at a ring position v = (x, y, a, R_i theta, R_i theta_c)
+# with every ball solved (``speed_state``), each ball's equations eliminated from the tangent by
+# the implicit function theorem; the rounding level of each force and its change over the
+# balls' own residuals (bearingload.models.high_speed: the acceptance rules).
+
+cdef enum:
+    DYN_PER_BALL = 29  # doubles a ball in a Dyn
+
+
+cdef void dyn_on(double *block, int z, Dyn *st) noexcept nogil:
+    st.do = block
+    st.ao = block + z
+    st.ok = block + 2 * z
+    st.terms = block + 3 * z
+    st.sens = block + (3 + BALL_TERMS) * z
+    st.tot = block + (9 + BALL_TERMS) * z
+    st.gain = block + (13 + BALL_TERMS) * z
+
+
+cdef void copy_dyn(int z, const Dyn *src, Dyn *dst) noexcept nogil:
+    cdef int i
+    for i in range(DYN_PER_BALL * z):
+        dst.do[i] = src.do[i]
+    for i in range(5):
+        dst.gen[i] = src.gen[i]
+        dst.floor[i] = src.floor[i]
+        dst.noise[i] = src.noise[i]
+    for i in range(25):
+        dst.jac[i] = src.jac[i]
+    dst.balls_ok = src.balls_ok
+    dst.touching = src.touching
+
+
+cdef inline void centre(const Ring *rg, const double *v, int j, double *rho, double *u) noexcept nogil:
+    """Ball j's inner groove centre from its outer one: radial rho and axial u. [mm]"""
+    rho[0] = rg.base + v[0] * rg.c[j] + v[1] * rg.s[j]
+    u[0] = v[2] + v[3] * rg.c[j] + v[4] * rg.s[j]
+
+
+cdef void eliminate(const Ring *rg, double rho, double up, double dup, const double *d,
+                    double *sens, double *tot, double *gain) noexcept nogil:
+    """A ball's sensitivity dX/d(rho, u') = -(dg/dX)^-1 dg/dp, the total derivatives of its
+    ring forces (F_a, F_r) by (rho, u) with its equations eliminated (at speed 0 those of the
+    ball on its line, ``static_eval``), and the gain |dF/dX (dg/dX)^-1| of each."""
+    cdef double det = d[0] * d[5] - d[1] * d[4], inv[4]
+    cdef double f[2]
+    cdef double stat[4]
+    cdef double dx0, dx1, total
+    cdef bint moving = rg.sp.omega > 0.0
+    cdef int r, c, k
+    inv[0] = d[5] / det
+    inv[1] = -d[1] / det
+    inv[2] = -d[4] / det
+    inv[3] = d[0] / det
+    sens[0] = rho
+    sens[1] = up
+    for c in range(2):
+        for k in range(2):
+            total = -(inv[2 * k] * d[2 + c] + inv[2 * k + 1] * d[6 + c])
+            sens[2 + 2 * c + k] = total if isfinite(total) else 0.0
+    if not moving:
+        static_eval(&rg.sp, rho, up, f, stat)
+    for r in range(2):
+        for c in range(2):
+            dx0 = inv[0] * d[2 + c] + inv[1] * d[6 + c]
+            dx1 = inv[2] * d[2 + c] + inv[3] * d[6 + c]
+            total = d[4 * (2 + r) + 2 + c] - (d[4 * (2 + r)] * dx0 + d[4 * (2 + r) + 1] * dx1)
+            tot[2 * r + c] = (total if moving else stat[2 * r + c]) * (dup if c == 1 else 1.0)
+        total = (fabs(d[4 * (2 + r)] * inv[0] + d[4 * (2 + r) + 1] * inv[2])
+                 + fabs(d[4 * (2 + r)] * inv[1] + d[4 * (2 + r) + 1] * inv[3]))
+        gain[r] = total if moving and isfinite(total) else 0.0
+
+
+cdef void start_ball(const Ring *rg, double rho, double up, const double *prev,
+                     const double *sens, double *x) noexcept nogil:
+    """A ball's start at (rho, u'): its previous (delta_o, alpha_o) moved to first order by its
+    sensitivity (if any), else (or at speed 0) its line; at speed pressed by about F_c."""
+    cdef const Speed *sp = &rg.sp
+    cdef bint moving = sp.omega > 0.0, fresh
+    cdef double fc = 0.125 * sp.mass * sp.dm * sp.omega * sp.omega * KG_MM, dr, du
+    x[0] = prev[0]
+    x[1] = prev[1]
+    if sens != NULL:
+        dr = rho - sens[0]
+        du = up - sens[1]
+        x[0] = x[0] + sens[2] * dr + sens[4] * du
+        x[1] = x[1] + sens[3] * dr + sens[5] * du
+    fresh = not moving or not isfinite(x[0])
+    if fresh:
+        line_start(sp, rho, up, &x[0], &x[1])
+    if moving and fresh and x[0] <= 0.0:
+        x[1] = 0.0
+    if moving:
+        x[0] = max(x[0], pow(fc / sp.ko[NODES - 1], 2.0 / 3.0))
+
+
+cdef void add_ball_forces(const Ring *rg, int j, const double *t, const double *tot,
+                          Dyn *st) noexcept nogil:
+    """Ball j's ring forces (F_a, F_r) = (t[12], t[13]) into the generalised forces, their
+    tangent and the sums of the terms' magnitudes (``floor``, the rounding added later)."""
+    cdef double arm_r[5]
+    cdef double arm_a[5]
+    cdef int k, l
+    arm_r[0] = rg.c[j]
+    arm_r[1] = rg.s[j]
+    arm_a[3] = rg.c[j]
+    arm_a[4] = rg.s[j]
+    arm_r[2] = arm_r[3] = arm_r[4] = arm_a[0] = arm_a[1] = 0.0
+    arm_a[2] = 1.0
+    for k in range(5):
+        st.gen[k] += arm_r[k] * t[13] + arm_a[k] * t[12]
+        for l in range(5):
+            st.jac[5 * k + l] += (arm_r[k] * (tot[2] * arm_r[l] + tot[3] * arm_a[l])
+                                  + arm_a[k] * (tot[0] * arm_r[l] + tot[1] * arm_a[l]))
+
+
+
+cdef void add_levels(const Ring *rg, int j, const double *t, const double *tot,
+                     const double *gain, double length, double *moved, Dyn *st) noexcept nogil:
+    """Ball j's part of each component's rounding level: its terms' magnitudes (``floor``, the
+    ROUNDING factor applied in ``score``) and the force change over one rounding eps (|rho| +
+    |u'|) of its groove-centre position (``moved``); and of the change of the forces over the
+    ball's own residual (``noise``)."""
+    cdef double arm_r[5]
+    cdef double arm_a[5]
+    cdef double g = hypot(t[0], t[1]), own
+    cdef int k
+    arm_r[0] = fabs(rg.c[j])
+    arm_r[1] = fabs(rg.s[j])
+    arm_a[3] = arm_r[0]
+    arm_a[4] = arm_r[1]
+    arm_r[2] = arm_r[3] = arm_r[4] = arm_a[0] = arm_a[1] = 0.0
+    arm_a[2] = 1.0
+    for k in range(5):
+        st.floor[k] += arm_r[k] * fabs(t[13]) + arm_a[k] * fabs(t[12])
+        moved[k] += ((fabs(tot[2]) + fabs(tot[3])) * arm_r[k]
+                     + (fabs(tot[0]) + fabs(tot[1])) * arm_a[k]) * (EPS * length)
+        own = arm_a[k] * (gain[0] * g) + arm_r[k] * (gain[1] * g)
+        if isfinite(own):
+            st.noise[k] += own
+
+
+cdef void speed_state(const Ring *rg, const double *v, const Dyn *prev, bint warm,
+                      Dyn *st) noexcept nogil:
+    """Every ball solved at the ring position v (from ``prev``'s balls, moved by their
+    sensitivities where ``warm``; NaN balls start on their lines), the ring's forces, tangent,
+    rounding level (ROUNDING times the terms' magnitudes plus ``moved``) and noise into ``st``
+    (which may be ``prev``)."""
+    cdef double t[BALL_TERMS]
+    cdef double d[BALL_PARTIALS]
+    cdef double moved[5]
+    cdef double x[3]
+    cdef double rho, u, up, dup
+    cdef int j, k
+    for k in range(5):
+        st.gen[k] = st.floor[k] = st.noise[k] = moved[k] = 0.0
+    for k in range(25):
+        st.jac[k] = 0.0
+    st.balls_ok = True
+    st.touching = False
+    for j in range(rg.z):
+        centre(rg, v, j, &rho, &u)
+        up = max(u, 0.0) if rg.one_sided else u
+        dup = (1.0 if u > 0.0 else 0.0) if rg.one_sided else 1.0
+        x[0] = prev.do[j]
+        x[1] = prev.ao[j]
+        start_ball(rg, rho, up, x, &prev.sens[6 * j] if warm else NULL, x)
+        st.ok[j] = 1.0 if solve_ball(&rg.sp, rho, up, x, &rg.lim) else 0.0
+        st.balls_ok = st.balls_ok and st.ok[j] != 0.0
+        st.do[j] = x[0]
+        st.ao[j] = x[1]
+        ball_eval(&rg.sp, rho, up, x[0], x[1], t, d)
+        for k in range(BALL_TERMS):
+            st.terms[BALL_TERMS * j + k] = t[k]
+        st.touching = st.touching or t[2] > 0.0
+        eliminate(rg, rho, up, dup, d, &st.sens[6 * j], &st.tot[4 * j], &st.gain[2 * j])
+        add_ball_forces(rg, j, t, &st.tot[4 * j], st)
+        add_levels(rg, j, t, &st.tot[4 * j], &st.gain[2 * j], fabs(rho) + fabs(up), moved, st)
+    for k in range(5):
+        st.floor[k] = rg.lim.rounding * st.floor[k] + moved[k]
+        if not isfinite(st.floor[k]):
+            st.floor[k] = 0.0
+
+
+# ------------------------------------------------------------------- the shaft's damped Newton
+#
+# One bearing, or the rigid shaft of a pair (bearingload.models.pair_speed): the position v
+# (x, y, a, R_i theta, R_i theta_c) gives bearing k the local position L_k v + offset_k (one
+# bearing: L = I, offset 0), where ``speed_state`` solves its balls; the forces sum_k L_k^T f_k,
+# the tangent sum_k L_k^T J_k L_k, each bearing's rounding level and noise carried through
+# |L_k^T|. One damped Newton (``shaft_newton``) and one continuation in speed for both.
+
+cdef void lm_step(const double *jac, const double *res, double mu, double *step) noexcept nogil:
+    """The Newton step (mu = 0) or the Levenberg-Marquardt step (J^T J + mu diag) s = J^T r; a
+    singular tangent (no ball touching along a direction) gives the damped least-squares step;
+    non-finite parts 0. [mm]"""
+    cdef double a[25]
+    cdef double b[5]
+    cdef double top = 0.0, lift
+    cdef int i, k, l
+    if mu == 0.0:
+        solve5(jac, res, step)
+        for i in range(5):
+            if not isfinite(step[i]):
+                lm_step(jac, res, 1e-14, step)
+                return
+        return
+    for k in range(5):
+        b[k] = 0.0
+        for i in range(5):
+            b[k] += jac[5 * i + k] * res[i]
+        for l in range(5):
+            a[5 * k + l] = 0.0
+            for i in range(5):
+                a[5 * k + l] += jac[5 * i + k] * jac[5 * i + l]
+        top = max(top, a[6 * k])
+    for k in range(5):
+        a[6 * k] += mu * max(a[6 * k], 1e-12 * top)
+    solve5(a, b, step)
+    for i in range(5):
+        if not isfinite(step[i]):
+            step[i] = 0.0
+
+
+cdef void trial_step(const double *jac, const double *res, const int *held, double length,
+                     int k, int halvings, double *step) noexcept nogil:
+    """Trial k of the safeguarded Newton (of the ring, or of a pair's shaft): the Newton step
+    halved k times up to ``halvings``, then Levenberg-Marquardt steps with mu growing 100-fold
+    from 1e-6; held components not moved; no longer than a tenth of ``length`` (A). [mm]"""
+    cdef double lam = 1.0, mu = 0.0, longest = 0.0, shrink
+    cdef int i
+    if k < halvings:
+        lam = pow(0.5, k)
+    else:
+        mu = 1e-6 * pow(100.0, k - halvings)
+    lm_step(jac, res, mu, step)
+    for i in range(5):
+        step[i] = 0.0 if held[i] else lam * step[i]
+        longest = max(longest, fabs(step[i]))
+    shrink = min(1.0, 0.1 * length / max(longest, 1e-300))
+    for i in range(5):
+        step[i] = step[i] * shrink
+
+
+cdef void shaft_measures(const Shaft *sh, ShaftState *st) noexcept nogil:
+    """``merit`` (the largest free residual over f_ref), ``score`` (each free residual against
+    the largest of ACCEPT f_ref, its rounding level and, up to NOISE_MAX f_ref, its change over
+    the balls' own residuals, over ACCEPT) and ``level`` (the largest rounding level over
+    f_ref); inf where a ball is unsolved or a measure not finite."""
+    cdef double res, worst = 0.0, merit = 0.0, level = 0.0, noise
+    cdef bint ok = True
+    cdef int i
+    for i in range(sh.parts):
+        ok = ok and st.part[i].balls_ok
+    for i in range(5):
+        res = 0.0 if sh.held[i] else fabs(sh.f[i] - st.gen[i])
+        noise = min(st.noise[i], sh.ring.lim.noise_max * sh.f_ref)
+        merit = max(merit, res)
+        worst = max(worst, res / max(sh.f_ref, max(st.floor[i], noise) / sh.ring.lim.accept))
+        level = max(level, st.floor[i])
+    st.merit = merit / sh.f_ref
+    if not (ok and isfinite(st.merit)):
+        st.merit = INFINITY
+    st.score = worst if isfinite(st.merit) and isfinite(worst) else INFINITY
+    st.level = level / sh.f_ref
+
+
+cdef void shaft_state(const Shaft *sh, const double *v, ShaftState *prev, bint warm,
+                      ShaftState *st) noexcept nogil:
+    """Every bearing at the position v (their balls from ``prev``'s, which may be st), the
+    forces, tangent and measures into st."""
+    cdef double local[5]
+    cdef const double *m
+    cdef Dyn *p
+    cdef int k, i, j, l, q
+    for i in range(5):
+        st.gen[i] = st.floor[i] = st.noise[i] = 0.0
+    for i in range(25):
+        st.jac[i] = 0.0
+    st.touching = False
+    for k in range(sh.parts):
+        m = &sh.maps[25 * k]
+        for i in range(5):
+            local[i] = sh.offset[5 * k + i]
+            for l in range(5):
+                local[i] += m[5 * i + l] * v[l]
+        p = &st.part[k]
+        speed_state(&sh.ring, local, &prev.part[k], warm, p)
+        st.touching = st.touching or p.touching
+        for i in range(5):
+            for j in range(5):
+                st.gen[i] += m[5 * j + i] * p.gen[j]
+                st.floor[i] += fabs(m[5 * j + i]) * p.floor[j]
+                st.noise[i] += fabs(m[5 * j + i]) * p.noise[j]
+                for l in range(5):
+                    for q in range(5):
+                        st.jac[5 * i + l] += m[5 * j + i] * p.jac[5 * j + q] * m[5 * q + l]
+    shaft_measures(sh, st)
+
+
+cdef inline double shaft_norm2(const Shaft *sh, const ShaftState *st) noexcept nogil:
+    """The 2-norm of the free residual over f_ref (inf: a ball unsolved)."""
+    cdef double sum = 0.0, res
+    cdef int k
+    if not isfinite(st.merit):
+        return INFINITY
+    for k in range(5):
+        res = 0.0 if sh.held[k] else sh.f[k] - st.gen[k]
+        sum += res * res
+    return sqrt(sum) / sh.f_ref
+
+
+cdef void swap_shaft(ShaftState *a, ShaftState *b) noexcept nogil:
+    cdef ShaftState t = a[0]
+    a[0] = b[0]
+    b[0] = t
+
+
+cdef void copy_shaft(const Shaft *sh, const ShaftState *src, ShaftState *dst) noexcept nogil:
+    cdef int i
+    for i in range(sh.parts):
+        copy_dyn(sh.ring.z, &src.part[i], &dst.part[i])
+    for i in range(5):
+        dst.gen[i] = src.gen[i]
+        dst.floor[i] = src.floor[i]
+        dst.noise[i] = src.noise[i]
+    for i in range(25):
+        dst.jac[i] = src.jac[i]
+    dst.merit = src.merit
+    dst.score = src.score
+    dst.level = src.level
+    dst.touching = src.touching
+
+
+cdef void held_system(const Shaft *sh, const ShaftState *st, double *jac,
+                      double *res) noexcept nogil:
+    """The Newton system at st: the tangent with held rows and columns replaced by the
+    identity's, the free residual f - gen (0 where held)."""
+    cdef int k, l
+    for k in range(5):
+        res[k] = 0.0 if sh.held[k] else sh.f[k] - st.gen[k]
+        for l in range(5):
+            jac[5 * k + l] = 0.0 if (sh.held[k] or sh.held[l]) else st.jac[5 * k + l]
+        if sh.held[k]:
+            jac[6 * k] = 1.0
+
+
+cdef int shaft_newton(const Shaft *sh, double *v, ShaftState *cur, ShaftState *trial,
+                      bint warm) noexcept nogil:
+    """Damped Newton on v from the balls in ``cur`` (moved by their sensitivities where
+    ``warm``; NaN balls start on their lines): each iteration the first of its trials
+    (``trial_step``) that lowers the residual's 2-norm (or balances it) with some ball touching
+    an inner ring; until balanced to the tolerance or no trial is taken. The answer in cur; the
+    iterations."""
+    cdef double jac[25]
+    cdef double res[5]
+    cdef double step[5]
+    cdef double vt[5]
+    cdef double size
+    cdef int its = 0, it, k, i
+    cdef bint found
+    shaft_state(sh, v, cur, warm, cur)
+    if cur.merit <= sh.ring.lim.tolerance:
+        return 0
+    for it in range(sh.iterations):
+        held_system(sh, cur, jac, res)
+        size = shaft_norm2(sh, cur)
+        found = False
+        for k in range(sh.ring.lim.trials):
+            trial_step(jac, res, sh.held, sh.ring.length, k, sh.ring.lim.halvings, step)
+            for i in range(5):
+                vt[i] = v[i] + step[i]
+            shaft_state(sh, vt, cur, True, trial)
+            if ((shaft_norm2(sh, trial) < (1.0 - 1e-4) * size
+                    or trial.merit <= sh.ring.lim.tolerance) and trial.touching):
+                for i in range(5):
+                    v[i] = vt[i]
+                swap_shaft(cur, trial)
+                found = True
+                break
+        its += 1
+        if not found or cur.merit <= sh.ring.lim.tolerance:
+            break
+    return its
+
+
+cdef bint shaft_continuation(const Shaft *sh, const double *v_static, double *v,
+                             ShaftState *cur, ShaftState *trial, ShaftState *keep,
+                             int *its) noexcept nogil:
+    """The case by continuation in omega^2 (the centrifugal and gyroscopic terms) from the
+    static answer: stages of a quarter, halved on a stage not accepted (ACCEPT), doubled after
+    one that is, each from the last stage's balls (warm where ``sh.warm_stages``) and its
+    position extrapolated from the last two. Whether it reached the full speed (the answer in
+    v, cur)."""
+    cdef Shaft stage = sh[0]
+    cdef double x[5]
+    cdef double x1[5]
+    cdef double rate[5]
+    cdef double done = 0.0, step = 0.25, frac
+    cdef int i, n
+    for i in range(5):
+        x[i] = v_static[i]
+        rate[i] = 0.0
+    for n in range(sh.stages):
+        frac = min(1.0, done + step)
+        stage.ring.sp.omega = sh.ring.sp.omega * sqrt(frac)
+        for i in range(5):
+            x1[i] = x[i] + rate[i] * (frac - done)
+        if done > 0.0:
+            copy_shaft(sh, keep, cur)
+        else:
+            for i in range(sh.parts * sh.ring.z):
+                cur.part[i // sh.ring.z].do[i % sh.ring.z] = NAN
+                cur.part[i // sh.ring.z].ao[i % sh.ring.z] = NAN
+        its[0] += shaft_newton(&stage, x1, cur, trial, done > 0.0 and sh.warm_stages)
+        if cur.score <= sh.ring.lim.accept:
+            for i in range(5):
+                if done > 0.0:
+                    rate[i] = (x1[i] - x[i]) / (frac - done)
+                x[i] = x1[i]
+            done = frac
+            copy_shaft(sh, cur, keep)
+            if done == 1.0:
+                for i in range(5):
+                    v[i] = x[i]
+                return True
+            step = min(2.0 * step, 1.0 - done)
+        else:
+            step *= 0.5
+            if step < 1e-6:
+                return False
+    return False
+
+
+# ----------------------------------------------------------------------------- Python boundary
+
+cdef void ring_on(Ring *rg, int z, const double *consts, const double *ki, const double *ko,
+                  const double *node_x, const double *node_w, const double *c, const double *s,
+                  const double *geo, const double *lim) noexcept nogil:
+    """One case's Ring from the rows of the boundary's arrays (see ``solve_speed``)."""
+    speed_on(&rg.sp, consts, ki, ko, node_x, node_w)
+    rg.z = z
+    rg.c = c
+    rg.s = s
+    rg.base = geo[0]
+    rg.length = geo[2]
+    rg.one_sided = geo[3] != 0.0
+    rg.lim.tolerance = lim[0]
+    rg.lim.accept = lim[1]
+    rg.lim.rounding = lim[2]
+    rg.lim.noise_max = lim[3]
+    rg.lim.ball_tolerance = lim[4]
+    rg.lim.ball_round = lim[5]
+    rg.lim.trials = <int> lim[6]
+    rg.lim.halvings = <int> lim[7]
+    rg.lim.ball_iterations = <int> lim[8]
+    rg.lim.fallback_iterations = <int> lim[9]
+    rg.lim.ball_halvings = <int> lim[10]
+
+
+cdef void shaft_on(Shaft *sh, int parts, const double *maps, const double *offset,
+                   const double *f, const unsigned char *held, double f_ref,
+                   const double *shaft_limits) noexcept nogil:
+    """The shaft of one case (its Ring set apart by ``ring_on``)."""
+    cdef int i
+    sh.parts = parts
+    for i in range(25 * parts):
+        sh.maps[i] = maps[i]
+    for i in range(5 * parts):
+        sh.offset[i] = offset[i]
+    for i in range(5):
+        sh.f[i] = f[i]
+        sh.held[i] = held[i]
+    sh.f_ref = f_ref
+    sh.iterations = <int> shaft_limits[0]
+    sh.stages = <int> shaft_limits[1]
+    sh.warm_stages = shaft_limits[2] != 0.0
+
+
+cdef void store_dyn(const Dyn *st, int z, Py_ssize_t n, Py_ssize_t k, double *balls,
+                    double *terms, double *sens, double *ring) noexcept nogil:
+    """Case k's bearing into the outputs: balls (3, n, z) delta_o, alpha_o, balanced; terms
+    (BALL_TERMS, n, z); sens (n, z, 6); ring (n, 42): gen (5), jac (25), floor (5), noise (5),
+    balls_ok, touching."""
+    cdef Py_ssize_t j, i
+    for j in range(z):
+        balls[k * z + j] = st.do[j]
+        balls[(n + k) * z + j] = st.ao[j]
+        balls[(2 * n + k) * z + j] = st.ok[j]
+        for i in range(BALL_TERMS):
+            terms[(i * n + k) * z + j] = st.terms[BALL_TERMS * j + i]
+        for i in range(6):
+            sens[(k * z + j) * 6 + i] = st.sens[6 * j + i]
+    for i in range(5):
+        ring[42 * k + i] = st.gen[i]
+        ring[42 * k + 30 + i] = st.floor[i]
+        ring[42 * k + 35 + i] = st.noise[i]
+    for i in range(25):
+        ring[42 * k + 5 + i] = st.jac[i]
+    ring[42 * k + 40] = st.balls_ok
+    ring[42 * k + 41] = st.touching
+
+
+cdef double *shafts_open(int z, ShaftState *states) noexcept nogil:
+    """Four shaft states of two bearings of z balls in one block (to free); NULL if out of
+    memory."""
+    cdef double *block = <double *> malloc(8 * DYN_PER_BALL * z * sizeof(double) + 8)
+    cdef int i
+    if block != NULL:
+        for i in range(8):
+            dyn_on(block + i * DYN_PER_BALL * z, z, &states[i // 2].part[i % 2])
+    return block
+
+
+cdef int shaft_case(Shaft *sh, double *v, const double *v_static, bint continued,
+                    ShaftState *st) noexcept nogil:
+    """One case: the Newton from v, the balls on their lines; where left unbalanced and
+    ``continued``, the continuation from v_static, its answer taken where it reaches the full
+    speed. The answer in v and st[0]; the iterations."""
+    cdef double saved[5]
+    cdef int its, i
+    for i in range(sh.parts * sh.ring.z):
+        st[0].part[i // sh.ring.z].do[i % sh.ring.z] = NAN
+        st[0].part[i // sh.ring.z].ao[i % sh.ring.z] = NAN
+    its = shaft_newton(sh, v, &st[0], &st[1], False)
+    if st[0].score <= sh.ring.lim.accept or not continued:
+        return its
+    copy_shaft(sh, &st[0], &st[3])
+    for i in range(5):
+        saved[i] = v[i]
+    if not shaft_continuation(sh, v_static, v, &st[0], &st[1], &st[2], &its):
+        copy_shaft(sh, &st[3], &st[0])
+        for i in range(5):
+            v[i] = saved[i]
+    return its
+
+
+cdef void store_case(const Shaft *sh, const ShaftState *st, Py_ssize_t n, Py_ssize_t k,
+                     double **outs, double *out) noexcept nogil:
+    """Case k's answer: each bearing's by ``store_dyn`` into outs (balls, terms, sens, ring of
+    bearing 1, then of bearing 2); out (n, 45): gen (5), jac (25), floor (5), merit, score,
+    level (35-37); 38-39 left to the caller."""
+    cdef int i
+    for i in range(sh.parts):
+        store_dyn(&st.part[i], sh.ring.z, n, k, outs[4 * i], outs[4 * i + 1], outs[4 * i + 2],
+                  outs[4 * i + 3])
+    for i in range(5):
+        out[45 * k + i] = st.gen[i]
+        out[45 * k + 30 + i] = st.floor[i]
+    for i in range(25):
+        out[45 * k + 5 + i] = st.jac[i]
+    out[45 * k + 35] = st.merit
+    out[45 * k + 36] = st.score
+    out[45 * k + 37] = st.level
+
+
+cdef void at_rest(Shaft *sh, ShaftState *st, double *out) noexcept nogil:
+    """The shaft centred (v = 0), every ball solved from its line: bearing 1's thrust, and 1
+    where every ball of both is balanced (out[0], out[1])."""
+    cdef double zero[5]
+    cdef int i
+    for i in range(5):
+        zero[i] = 0.0
+    for i in range(sh.parts * sh.ring.z):
+        st.part[i // sh.ring.z].do[i % sh.ring.z] = NAN
+        st.part[i // sh.ring.z].ao[i % sh.ring.z] = NAN
+    shaft_state(sh, zero, st, False, st)
+    out[0] = st.part[0].gen[2]
+    out[1] = 1.0 if st.part[0].balls_ok and st.part[sh.parts - 1].balls_ok else 0.0
+
+
+def solve_speed(const double[:, ::1] consts, const double[:, ::1] ki, const double[:, ::1] ko,
+                const double[::1] node_x, const double[::1] node_w, const double[:, ::1] c,
+                const double[:, ::1] s, const double[:, ::1] geo, const double[::1] limits,
+                const double[:, :, :, ::1] maps, const double[:, :, ::1] offset,
+                const double[:, ::1] f, const unsigned char[:, ::1] held,
+                const double[::1] shaft_limits, const double[:, ::1] v0,
+                const double[:, ::1] v_static, const unsigned char[::1] continued):
+    """n cases at speed, one bearing (maps (n, 1, 5, 5) the identity, offset 0) or a pair's
+    shaft (maps (n, 2, 5, 5), offset (n, 2, 5)): ``shaft_case`` from v0 (n, 5), the continuation
+    from v_static where ``continued``. Per case: consts (6), ki, ko (NODES) as ``speed_balls``;
+    c, s (z); geo (4): A - G_r/2, the largest applied load (and preload), A, one-sided; f (5),
+    held (5, uint8); limits (11): TOLERANCE, ACCEPT, ROUNDING, NOISE_MAX, BALL_TOLERANCE, the
+    ball rounding factor, LM_TRIALS, HALVINGS, BALL_ITERATIONS, FALLBACK_ITERATIONS, the ball
+    halvings; shaft_limits (4): Newton iterations, continuation stages, 1: each stage's balls
+    warm, 1: the state at rest too (``at_rest``). Returns (v, bearings: (balls, terms, sens,
+    ring) of each as ``store_dyn``, out (n, 45) as ``store_case`` with out[:, 38] the
+    iterations, 39 accepted, 40-41 ``at_rest``, 42 out of memory)."""
+    cdef Py_ssize_t n = c.shape[0], k
+    cdef int z = <int> c.shape[1], parts = <int> maps.shape[1], i
+    v_a = np.array(v0, dtype=float, copy=True)
+    bearings = [(np.empty((3, n, z)), np.empty((BALL_TERMS, n, z)), np.empty((n, z, 6)),
+                 np.zeros((n, 42))) for i in range(parts)]
+    out_a = np.zeros((n, 45))
+    cdef double[:, ::1] v = v_a, out = out_a
+    cdef double *outs[8]
+    cdef double[:, :, ::1] arr3
+    cdef double[:, ::1] arr2
+    for i in range(parts):
+        for k in range(3):
+            arr3 = bearings[i][k]
+            outs[4 * i + k] = &arr3[0, 0, 0]
+        arr2 = bearings[i][3]
+        outs[4 * i + 3] = &arr2[0, 0]
+    cdef Shaft sh
+    cdef ShaftState st[4]
+    cdef double *block
+    with nogil:
+        for k in range(n):
+            ring_on(&sh.ring, z, &consts[k, 0], &ki[k, 0], &ko[k, 0], &node_x[0], &node_w[0],
+                    &c[k, 0], &s[k, 0], &geo[k, 0], &limits[0])
+            shaft_on(&sh, parts, &maps[k, 0, 0, 0], &offset[k, 0, 0], &f[k, 0], &held[k, 0],
+                     geo[k, 1], &shaft_limits[0])
+            block = shafts_open(z, st)
+            if block == NULL:
+                out[k, 42] = 1.0
+                continue
+            out[k, 38] = shaft_case(&sh, &v[k, 0], &v_static[k, 0], continued[k], st)
+            out[k, 39] = 1.0 if st[0].score <= sh.ring.lim.accept else 0.0
+            store_case(&sh, &st[0], n, k, outs, &out[0, 0])
+            if shaft_limits[3] != 0.0:
+                at_rest(&sh, &st[1], &out[k, 40])
+            free(block)
+    return v_a, bearings, out_a

@@ -944,7 +944,7 @@ def _check_scale(
             f"M/R_i is {float(np.min(f_ref)):.3g} N; it takes at least {f_min:.2g} N for this "
             "bearing)",
             way_out=ANGULAR_NO_OTHER_SOLVER if angular else RADIAL_TAKES_ANY_LOAD,
-            reason=TOO_LIGHT,
+            reason=TOO_LIGHT_ANGULAR if angular else TOO_LIGHT,
         )
 
 
@@ -969,6 +969,8 @@ def _largest_load(sizes: dict[str, np.ndarray] | None, i: int) -> str:
 #: The reason of the refusal of loads too small for the combined solver (or the ball dynamics):
 #: the plan, which can solve the case by another engine, replaces its way out.
 TOO_LIGHT = "too_light"
+#: The reason of the same refusal for an angular-contact bearing, which no other solver takes.
+TOO_LIGHT_ANGULAR = "too_light_angular"
 
 #: The way out of loads too small for the combined solver (the library's: the radial solver).
 RADIAL_TAKES_ANY_LOAD = "the radial solver, without an axial load, takes any load"

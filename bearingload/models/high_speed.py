@@ -3,7 +3,7 @@ control (Jones 1960; Harris & Kotzalas, *Rolling Bearing Analysis*, 5th ed., vol
 Concepts of Bearing Technology", ch. 2 "Bearing component motions and speeds" and ch. 3 "High-speed
 operation: ball and roller dynamics").
 
-Units: N, mm, kg, s (the shaft speed in rpm at the input, rad/s inside); ball density in kg/mm^3
+Units: N, mm, kg, s (the shaft speed in rpm at the input, rad/s inside); ball density in kg/m^3
 (bearing steel 7.85e-6; silicon nitride 3.2e-6).
 
 Model (one ball ``j`` at ``phi_j``; the geometry, loads and conventions of
@@ -50,31 +50,30 @@ Model (one ball ``j`` at ``phi_j``; the geometry, loads and conventions of
 * Not modelled: ring expansion, cage and lubricant forces, the inner contact's friction; the
   ring rotating is the inner one.
 
-Numerics. A first stage takes Newton steps on the ring and every ball together (the balls'
-2x2 blocks eliminated, :func:`_coupled`); a case it brings near balance goes on from there to
-the nested solver below, which decides (the others start it from the static answer). For given
-ring positions each ball's two equations are solved by Newton on its centre
-(X_1, X_2), all balls of all cases at once (each until it is balanced), from the ball's last
-position moved to first order with the ring (its sensitivity), with the Jacobians
-from the complex step (exact to rounding); a ball left unbalanced is solved alone from its
-loose state (:mod:`bearingload.models._ball_dynamics`). The ring equilibrium: Newton on ``(x,
-y, a, R_i theta, R_i theta_c)`` from the static answer (a case left unbalanced: again from the
-static answer of the bearing whose balls are pushed out by their centrifugal approach), the
-tangent of the ball forces by the implicit function theorem
-(the ball equations eliminated per ball); the step halved, then Levenberg-Marquardt steps (a
-nearly singular tangent), none longer than A/10 or to a position where no ball touches the
-inner ring. A case left unbalanced is solved again by continuation in omega^2 from the static
-answer. The components
-the static model holds by symmetry are held (the speed terms keep those symmetries: ``M_g`` is
-odd in ``alpha_o``). A case stops when each applied component is balanced to ``TOLERANCE`` of
-the largest applied load and every ball to ``BALL_TOLERANCE`` of its forces, or when no step
-lowers the residual; it is accepted when each component is balanced to ``ACCEPT`` of the largest
-applied load or to the rounding level of its terms (:func:`_rounding`: a light load against a
-preload or the balls' centrifugal forces, as the static model measures a load against the
-rounding of its terms) or, up to ``NOISE_MAX`` of that load, to the change of the ring forces over
-the balls' own residuals (each ball balanced to ``BALL_TOLERANCE`` of its forces); otherwise :class:`~bearingload.errors.ConvergenceError` names its
-inputs. A load whose rounding level is above ``LEVEL_MAX`` of it is refused
-(:class:`~bearingload.errors.InputError`, naming the smallest load accepted). At speed 0 the answer is the static one (no step is taken from it).
+Numerics, in the compiled core (:mod:`bearingload.models._core`, the sections at speed: a C loop
+over the cases, one case's answer the same bits alone or in any batch). Each ball's two
+equations and their derivatives come from one evaluator (``ball_eval``: analytic, forward-mode
+dual arithmetic). For a given ring position each ball is solved by Newton on its centre (X_1,
+X_2) from its last position moved to first order with the ring (its sensitivity), the step
+halved until its residual falls; a ball left unbalanced is solved from its loose state
+(``solve_ball``). The ring equilibrium: one damped Newton on ``(x, y, a, R_i theta, R_i
+theta_c)`` from the static answer (a case left unbalanced: again from the static answer of the
+bearing whose balls are pushed out by their centrifugal approach, :func:`_dynamic_start`), the
+tangent of the ball forces by the implicit function theorem (the ball equations eliminated per
+ball); the step halved, then Levenberg-Marquardt steps (a nearly singular tangent), none longer
+than A/10 or to a position where no ball touches the inner ring. A case left unbalanced is
+solved again by continuation in omega^2 from the static answer. The components the static model
+holds by symmetry are held (the speed terms keep those symmetries: ``M_g`` is odd in
+``alpha_o``). A case stops when each applied component is balanced to ``TOLERANCE`` of the
+largest applied load and every ball to ``BALL_TOLERANCE`` of its forces, or when no step lowers
+the residual; it is accepted when each component is balanced to ``ACCEPT`` of the largest
+applied load or to the rounding level of its terms (ROUNDING times their magnitudes plus the
+force change over one rounding of each ball's groove-centre position: a light load against a
+preload or the balls' centrifugal forces) or, up to ``NOISE_MAX`` of that load, to the change of
+the ring forces over the balls' own residuals; otherwise
+:class:`~bearingload.errors.ConvergenceError` names its inputs. A load whose rounding level is
+above ``LEVEL_MAX`` of it is refused (:class:`~bearingload.errors.InputError`, naming the
+smallest load accepted). At speed 0 the answer is the static one (no step is taken from it).
 """
 
 from __future__ import annotations
@@ -89,25 +88,17 @@ import numpy as np
 from bearingload import validate
 from bearingload.constants import STEEL_MODULUS
 from bearingload.errors import ConvergenceError, InputError
+from bearingload.models import _core
 from bearingload.models import combined as _combined
-from bearingload.models._ball_dynamics import (
-    _H,
-    BALL_TOLERANCE,
-    _ball_norm,
-    _line_start,
-    _power,
-    _Set,
-    _stiffness,
-    ball_terms,
-    solve_balls,
-)
 from bearingload.models.combined import CombinedDistribution
 
 __all__ = ["HighSpeedDistribution", "solve_high_speed", "STEEL_DENSITY", "MAX_SPEED_PITCH",
            "MODEL"]  # fmt: skip
 
-#: Bearing steel (100Cr6) density. [kg/mm^3]
-STEEL_DENSITY = 7.85e-6
+#: Bearing steel (100Cr6) density. [kg/m^3]
+STEEL_DENSITY = 7850.0
+#: mm^3 per m^3: a density in kg/m^3 over this is in kg/mm^3. [-]
+_MM3 = 1e9
 #: Largest n d_m accepted (n the shaft speed [rpm], d_m [mm]). [mm/min]
 MAX_SPEED_PITCH = 2.0e6
 #: The words of the refusal of a speed beyond :data:`MAX_SPEED_PITCH` (the command line adds
@@ -134,7 +125,7 @@ ACCEPT = 1e-9
 #: (the static model's :data:`bearingload.models._combined_ring.ROUNDING`). [-]
 ROUNDING = 64.0 * float(np.finfo(float).eps)
 _EPS = float(np.finfo(float).eps)
-#: Largest rounding level of the ring forces (:func:`_rounding`) over the largest applied load
+#: Largest rounding level of the ring forces (the core's ``score``) over the largest applied load
 #: solved; above it the load is refused (the answer balances it to about a tenth of that). [-]
 LEVEL_MAX = 1e-5
 #: Largest ring residual accepted, over the largest applied load, where the balls' own residuals
@@ -146,16 +137,15 @@ NOISE_MAX = 1e-6
 RING_ITERATIONS = 200
 LM_TRIALS = 12
 HALVINGS = 6
-#: The coupled first stage (:func:`_coupled`): steps at most; trials of a step (the step and
-#: its halvings); halved steps after which a case stops; steps after which a case whose
-#: combined residual has not halved over the last three stops. A case it leaves within
-#: FAST_HAND_ON (ring, of the largest applied load; each ball, of its forces) goes on from its
-#: answer, the others from the static answer as before. [-]
-FAST_ITERATIONS = 12
-FAST_HALVINGS = 3
-FAST_DAMPED = 3
-FAST_SLOW = 3
-FAST_HAND_ON = 1e-6
+#: Relative residual of each ball's equations (of the sum of its force magnitudes). [-]
+BALL_TOLERANCE = 1e-13
+#: Newton steps of a ball from its warm start, and from the loose / touching starts; halvings
+#: of a ball's Newton step. [-]
+BALL_ITERATIONS = 12
+FALLBACK_ITERATIONS = 60
+BALL_HALVINGS = 30
+#: Rounding of an approach over its length's (of the ball tolerance). [-]
+_ROUND = 16.0 * _EPS / BALL_TOLERANCE
 #: Stages of the continuation in speed of a case the direct solve leaves unbalanced. [-]
 CONTINUATION_STAGES = 200
 #: N mm per kg mm^2/s^2 (forces from kg, mm, s). [-]
@@ -175,7 +165,7 @@ class HighSpeedDistribution(CombinedDistribution):
     speed : ndarray
         Shaft (inner ring) speed n. [rpm]
     ball_density : ndarray
-        [kg/mm^3]
+        [kg/m^3]
     contact_angles_inner, contact_angles_outer : ndarray (..., z)
         alpha_i, alpha_o. [°]
     ball_loads_inner, ball_loads_outer : ndarray (..., z)
@@ -217,70 +207,42 @@ class HighSpeedDistribution(CombinedDistribution):
     model: str = MODEL
 
 
-def _ring_forces(
-    b: _Set, rho: np.ndarray, u: np.ndarray, do: np.ndarray, ao: np.ndarray, one_sided: np.ndarray
-) -> tuple[Any, ...]:
-    """The ball forces on the ring (axial, radial) (n, z), their total derivatives by (rho, u)
-    with the ball equations eliminated: ((dFa/drho, dFa/du), (dFr/drho, dFr/du)), the terms,
-    each ball's (rho, u', d(do, ao)/drho, d(do, ao)/du') (n, z, 6), and the largest change of
-    its (Fa, Fr) per unit residual of its equations, ``|dF/dX (dg/dX)^-1|`` (2, n, z) (0 at
-    speed 0: no ball equations). [-]"""
-    up = np.where(one_sided[:, None], np.maximum(u, 0.0), u)
-    dup = np.where(one_sided[:, None], (u > 0).astype(float), 1.0)
-    t0 = ball_terms(b, rho, up, do, ao)
-    hd = hr = hu = _H * (b.ri + b.ro)  # a length of the problem (complex step: any tiny step)
-    # the four complex steps in one call, stacked on a leading axis (a quarter of the calls)
-    e = 1j * np.eye(4)[:, :, None, None]  # e[:, k]: step k only
-    cols = ball_terms(b, rho + hr * e[:, 2], up + hu * e[:, 3], do + hd * e[:, 0],
-                      ao + _H * e[:, 1])  # fmt: skip
-    steps = (hd, _H, hr, hu)
-    # rows: g1, g2, Fa, Fr; columns: do, ao, rho, u
-    d = [[np.imag(cols[r][k]) / steps[k] for k in range(4)] for r in (0, 1, 12, 13)]
-    moving = np.broadcast_to(b.omega > 0, do.shape)
-    det = d[0][0] * d[1][1] - d[0][1] * d[1][0]
-    with np.errstate(all="ignore"):
-        inv = np.stack([[d[1][1], -d[0][1]], [-d[1][0], d[0][0]]]) / det
-    out = np.zeros((2, 2) + do.shape)
-    # the ball's own sensitivity dX/dp = -(dg/dX)^-1 dg/dp (the next ring position's start)
-    sens = np.zeros(do.shape + (6,))
-    sens[..., 0], sens[..., 1] = rho, up
-    for c in (2, 3):
-        for k in range(2):
-            sens[..., 2 * c - 2 + k] = -(inv[k, 0] * d[0][c] + inv[k, 1] * d[1][c])
-    sens = np.where(np.isfinite(sens), sens, 0.0)
-    for r in (2, 3):
-        for c, chain in ((2, 1.0), (3, dup)):
-            # dF/dp - dF/dX (dg/dX)^-1 dg/dp
-            dxp = [inv[k, 0] * d[0][c] + inv[k, 1] * d[1][c] for k in range(2)]
-            total = d[r][c] - (d[r][0] * dxp[0] + d[r][1] * dxp[1])
-            if moving.all():
-                out[r - 2, c - 2] = total * chain
-            else:
-                static = _static_derivative(b, rho, up, r, c)
-                out[r - 2, c - 2] = np.where(moving, total, static) * chain
-    with np.errstate(all="ignore"):
-        gain = np.stack([np.abs(d[r][0] * inv[0, 0] + d[r][1] * inv[1, 0])
-                         + np.abs(d[r][0] * inv[0, 1] + d[r][1] * inv[1, 1])
-                         for r in (2, 3)])  # fmt: skip
-    gain = np.where(moving & np.isfinite(gain), gain, 0.0)
-    return t0[12], t0[13], out, t0, sens, gain
+@dataclass
+class _Set:
+    """Constants of every ball per case (n, 1), physical units."""
+
+    ri: np.ndarray  # r'_i = (f_i - 1/2) D_w [mm]
+    ro: np.ndarray  # r'_o
+    dw: np.ndarray
+    dm: np.ndarray
+    omega: np.ndarray  # [rad/s]
+    mass: np.ndarray  # [kg]
+    ki: np.ndarray  # K_i at the Chebyshev nodes of cos(alpha) (n, 1, NODES) [N/mm^1.5]
+    ko: np.ndarray
+
+    def take(self, idx: np.ndarray) -> _Set:
+        return _Set(*(getattr(self, f.name)[idx] for f in dataclasses.fields(self)))
 
 
-def _static_derivative(b: _Set, rho: np.ndarray, up: np.ndarray, r: int, c: int) -> np.ndarray:
-    """d(F_a or F_r)/d(rho or u) of a ball at speed 0 (on its line, K in series)."""
-    h = _H * (b.ri + b.ro)
-    rr = rho + 1j * h if c == 2 else rho + 0j
-    uu = up + 1j * h if c == 3 else up + 0j
-    rp = np.where(np.real(rr) > 0, rr, 0.0)
-    d = np.sqrt(rp * rp + uu * uu)
-    with np.errstate(all="ignore"):
-        cos_a = rp / np.where(np.real(d) > 0, d, 1.0)
-    k = (_stiffness(b.ki, cos_a) ** (-2.0 / 3.0) + _stiffness(b.ko, cos_a) ** (-2.0 / 3.0)) ** -1.5
-    delta = d - b.ri - b.ro
-    q = k * _power(delta)
-    with np.errstate(all="ignore"):
-        f = q * (uu if r == 2 else rp) / d
-    return np.nan_to_num(np.imag(f) / h)
+def _packed(b: _Set) -> tuple[np.ndarray, np.ndarray, np.ndarray]:
+    """The constants of ``b`` as the core takes them: (n, 6) r'_i, r'_o, D_w, d_m, omega,
+    mass; K_i, K_o at the nodes (n, NODES)."""
+    rows = b.ki.shape[0]
+    cols = [np.broadcast_to(a, (rows, 1))[:, 0] for a in (b.ri, b.ro, b.dw, b.dm, b.omega, b.mass)]
+    return (
+        np.ascontiguousarray(np.stack(cols, axis=1), dtype=float),
+        np.ascontiguousarray(b.ki.reshape(rows, -1), dtype=float),
+        np.ascontiguousarray(b.ko.reshape(rows, -1), dtype=float),
+    )
+
+
+def _stiffness(nodes: np.ndarray, cos_alpha: np.ndarray) -> np.ndarray:
+    """K(cos alpha) from its values ``nodes`` (n, 1, NODES) at the Chebyshev nodes (barycentric
+    interpolation, as the core's ``stiffness_at``); below cos = 0.05 (a loose ball pointing
+    across the groove: no load) the value at 0.05. [N/mm^1.5]"""
+    terms = (2.0 * np.maximum(cos_alpha, 0.05) - 1.0)[..., None] - _NODE_X  # x - x_k
+    np.divide(_NODE_W, terms, out=terms)  # w_k / (x - x_k)
+    return (terms @ np.swapaxes(nodes, -1, -2))[..., 0] / terms.sum(axis=-1)
 
 
 def _stiffness_nodes(geo: Any, e: np.ndarray, nu: np.ndarray) -> tuple[np.ndarray, np.ndarray]:
@@ -306,6 +268,8 @@ def _stiffness_nodes(geo: Any, e: np.ndarray, nu: np.ndarray) -> tuple[np.ndarra
 
 
 _NODE_COS = _combined._NODE_COS
+_NODE_X = _combined._NODE_X
+_NODE_W = _combined._NODE_W
 _NODE_CACHE: dict[tuple[float, ...], tuple[np.ndarray, np.ndarray]] = {}
 
 
@@ -313,10 +277,11 @@ def _check_speed(speed: Any, density: Any, dm: Any) -> tuple[np.ndarray, np.ndar
     n = validate.finite("speed", speed)
     if np.any(n < 0):
         raise InputError("speed", "must be >= 0 rpm (the inner ring's speed)")
-    rho = validate.positive("ball_density", density, "kg/mm^3")
-    if np.any(rho > 1e-4):
+    rho = validate.positive("ball_density", density, "kg/m^3")
+    if np.any((rho < 1.0) | (rho > 1e5)):
         raise InputError(
-            "ball_density", "must be in kg/mm^3 (steel 7.85e-6, silicon nitride 3.2e-6), below 1e-4"
+            "ball_density",
+            "must be in kg/m^3 (steel 7850, silicon nitride 3200), between 1 and 1e5",
         )
     n_b, dm_b = np.broadcast_arrays(n, np.asarray(dm, dtype=float))
     with np.errstate(over="ignore"):
@@ -374,7 +339,7 @@ def solve_high_speed(
     speed : array_like
         Shaft speed n of the inner ring, >= 0, n d_m <= :data:`MAX_SPEED_PITCH`. [rpm]
     ball_density : array_like, default :data:`STEEL_DENSITY`
-        Density of the balls. [kg/mm^3]
+        Density of the balls. [kg/m^3]
 
     Raises
     ------
@@ -463,7 +428,7 @@ def _dynamic_start(
     ki, ko = _stiffness_nodes(geo, *material[:2])
     cos0 = np.cos(geo.alpha0)
     omega = flat["speed"] * math.pi / 30.0
-    mass = material[2] * math.pi / 6.0 * geo.D_w**3
+    mass = material[2] / _MM3 * math.pi / 6.0 * geo.D_w**3
     wc = 0.5 * omega * (1.0 - geo.D_w / geo.d_m * cos0)
     fc = 0.5 * mass * geo.d_m * wc * wc * _KG_MM
     delta_c = (fc / _stiffness(ko, cos0[:, None])[:, 0]) ** (2.0 / 3.0)
@@ -505,6 +470,35 @@ class _Ring:
         out = {f.name: getattr(self, f.name) for f in dataclasses.fields(self)}
         return _Ring(out.pop("b").take(idx), **{k: v[idx] for k, v in out.items()})
 
+    def core(self) -> tuple[Any, ...]:
+        """The arguments of the core's :func:`~bearingload.models._core.solve_speed` that
+        describe each case's bearing, and the limits (this module's constants)."""
+        n = self.f.shape[0]
+        geo = np.stack([self.base, self.f_ref, self.length, self.one_sided.astype(float)], axis=1)
+        limits = [
+            TOLERANCE,
+            ACCEPT,
+            ROUNDING,
+            NOISE_MAX,
+            BALL_TOLERANCE,
+            _ROUND,
+            LM_TRIALS,
+            HALVINGS,
+            BALL_ITERATIONS,
+            FALLBACK_ITERATIONS,
+            BALL_HALVINGS,
+        ]
+        cont = np.ascontiguousarray
+        return (
+            *_packed(self.b),
+            _NODE_X,
+            _NODE_W,
+            cont(self.c, dtype=float),
+            cont(np.broadcast_to(self.s, (n, self.c.shape[1])), dtype=float),
+            cont(geo, dtype=float),
+            np.array(limits, dtype=float),
+        )
+
 
 @dataclass
 class _State:
@@ -520,344 +514,103 @@ class _State:
     sens: np.ndarray  # (n, z, 6) each ball's rho, u', d(do, ao)/drho, d(do, ao)/du'
     score: np.ndarray  # (n,) the residual over f_ref or, where larger, its rounding (or the
     # balls' own residuals on it, up to NOISE_MAX of f_ref) over ACCEPT
-    level: np.ndarray  # (n,) the largest rounding level (:func:`_rounding`) over f_ref
+    level: np.ndarray  # (n,) the largest rounding level over f_ref
+    floor: np.ndarray  # (n, 5) the rounding level of each component [N]
+    noise: np.ndarray  # (n, 5) its change over the balls' own residuals (not capped) [N]
 
     @property
     def accepted(self) -> np.ndarray:
         """(n,) bool: every free component balanced to ACCEPT of the largest applied load or
-        to the rounding of its terms and of the ball positions (:func:`_rounding`)."""
+        to the rounding of its terms and of the ball positions."""
         return self.score <= ACCEPT
 
 
-def _evaluate(
-    r: _Ring, v: np.ndarray, do: np.ndarray, ao: np.ndarray, sens: np.ndarray | None = None
-) -> _State:
-    """Solve every ball at the ring position v from (do, ao) (moved to first order by the
-    balls' sensitivities ``sens`` of a previous state); the ring forces and tangent."""
-    rho, u, up = _centres(r, v)
-    if sens is not None:
-        dr, du = rho - sens[..., 0], up - sens[..., 1]
-        do = do + sens[..., 2] * dr + sens[..., 4] * du
-        ao = ao + sens[..., 3] * dr + sens[..., 5] * du
-    moving = np.broadcast_to(r.b.omega > 0, do.shape)
-    fresh = ~moving | ~np.isfinite(do)
-    if fresh.any():
-        line = _line_start(r.b, rho, up)
-        do, ao = np.where(fresh, line[0], do), np.where(fresh, line[1], ao)
-    # a ball at speed always touches its outer groove: start it pressed by about F_c
-    fc = 0.125 * r.b.mass * r.b.dm * r.b.omega**2 * _KG_MM
-    ao = np.where(moving & fresh & (do <= 0), 0.0, ao)
-    do = np.where(moving, np.maximum(do, (fc / r.b.ko[..., -1]) ** (2.0 / 3.0)), do)
-    do, ao, ok = solve_balls(r.b, rho, up, do, ao)
-    fa, fr, d, terms, sens, gain = _ring_forces(r.b, rho, u, do, ao, r.one_sided)
-    arm_r, arm_a, gen, jac = _assemble(r, fr, fa, d)
-    res = np.where(r.held, 0.0, r.f - gen)
-    merit = np.abs(res).max(axis=1) / r.f_ref
-    floor = _rounding(arm_r, arm_a, fr, fa, d, np.abs(rho) + np.abs(up))
-    # each ball's own residual (its equations, balanced to BALL_TOLERANCE of its forces) moves
-    # its ring forces by gain: they are known to that only (a light load against the centrifugal
-    # forces); accepted up to NOISE_MAX of the load at most
-    g = gain * np.hypot(terms[0], terms[1])
-    noise = np.abs(arm_a) * g[0][:, None, :] + np.abs(arm_r) * g[1][:, None, :]
-    noise = np.minimum(np.where(np.isfinite(noise), noise, 0.0).sum(-1),
-                       NOISE_MAX * r.f_ref[:, None])  # fmt: skip
-    score = (np.abs(res) / np.maximum(r.f_ref[:, None], np.maximum(floor, noise) / ACCEPT)).max(
-        axis=1
+def _state(part: tuple[np.ndarray, ...], out: np.ndarray) -> _State:
+    """A bearing's :class:`_State` from the core's (balls, terms, sens, ring) (``store_dyn``),
+    the measures of its case (merit, score, level) from ``out`` (``store_case``)."""
+    balls, terms, sens, ring = part
+    n = ring.shape[0]
+    return _State(
+        balls[0],
+        balls[1],
+        ring[:, 40] != 0,
+        ring[:, :5].copy(),
+        ring[:, 5:30].reshape(n, 5, 5),
+        out[:, 35].copy(),
+        tuple(terms),
+        sens,
+        out[:, 36].copy(),
+        out[:, 37].copy(),
+        ring[:, 30:35].copy(),
+        ring[:, 35:40].copy(),
     )
-    balls_ok = np.asarray(ok.all(axis=1))
-    merit = np.where(balls_ok & np.isfinite(merit), merit, np.inf)
-    score = np.where(balls_ok & np.isfinite(score), score, np.inf)
-    level = floor.max(axis=1) / r.f_ref
-    return _State(do, ao, balls_ok, gen, jac, merit, tuple(terms), sens, score, level)
 
 
-def _centres(r: _Ring, v: np.ndarray) -> tuple[np.ndarray, np.ndarray, np.ndarray]:
-    """Each ball's inner groove centre from its outer one at the ring position v: radial
-    ``rho``, axial ``u`` and ``u'`` (``max(u, 0)`` for angular contact) (n, z). [mm]"""
-    c, s = r.c, r.s
-    rho = r.base[:, None] + v[:, 0, None] * c + v[:, 1, None] * s
-    u = v[:, 2, None] + v[:, 3, None] * c + v[:, 4, None] * s
-    up = np.where(r.one_sided[:, None], np.maximum(u, 0.0), u)
-    return rho, u, up
+def core_solve(
+    r: _Ring, shaft: tuple[np.ndarray, ...], limits: list[int], v0: np.ndarray,
+    v_static: np.ndarray, continued: bool,
+) -> tuple[np.ndarray, list[_State], np.ndarray]:  # fmt: skip
+    """The core's solve (``solve_speed``) of n cases of bearings ``r``: one bearing, or a pair's
+    shaft, ``shaft`` = (maps (n, k, 5, 5), offset (n, k, 5), f (n, 5), held (n, 5)) and its
+    ``limits`` (iterations, stages, warm stages, the state at rest); the Newton from v0, where
+    left unbalanced and ``continued`` the continuation from v_static. Returns (v, each
+    bearing's state, the core's out (n, 45): out[:, 38] the iterations, 39 accepted, 40-41 the
+    state at rest)."""
+    n = v0.shape[0]
+    flags = np.full(n, 1 if continued else 0, dtype=np.uint8)
+    cont = np.ascontiguousarray
+    maps, offset, f, held = shaft
+    v, parts, out = _core.solve_speed(
+        *r.core(),
+        cont(maps, dtype=float),
+        cont(offset, dtype=float),
+        cont(f, dtype=float),
+        cont(held, dtype=np.uint8),
+        np.array(limits, dtype=float),
+        cont(v0, dtype=float),
+        cont(v_static, dtype=float),
+        flags,
+    )
+    if np.any(out[:, 42]):
+        raise MemoryError("the ball dynamics' work space")
+    return v, [_state(p, out) for p in parts], out
 
 
-def _assemble(
-    r: _Ring, fr: np.ndarray, fa: np.ndarray, d: np.ndarray,
-    arms: tuple[np.ndarray, np.ndarray] | None = None,
-) -> tuple[np.ndarray, ...]:  # fmt: skip
-    """The arms of the balls' radial and axial forces (n, 5, z) (``arms``, if at hand: those of
-    :func:`_arms`), the generalised ring forces (n, 5) [N] and their tangent (n, 5, 5) [N/mm]
-    from the balls' forces (n, z) and their total derivatives ``d`` (:func:`_ring_forces`)."""
-    arm_r, arm_a = _arms(r) if arms is None else arms  # (n, 5, z)
-    gen = (arm_r * fr[:, None, :] + arm_a * fa[:, None, :]).sum(-1)
-    d_fr = d[1, 0][:, None, :] * arm_r + d[1, 1][:, None, :] * arm_a  # (n, 5 = l, z)
-    d_fa = d[0, 0][:, None, :] * arm_r + d[0, 1][:, None, :] * arm_a
-    jac = np.einsum("nkz,nlz->nkl", arm_r, d_fr) + np.einsum("nkz,nlz->nkl", arm_a, d_fa)
-    return arm_r, arm_a, gen, jac
+def _newton(
+    r: _Ring, v0: np.ndarray, v_static: np.ndarray, continued: bool
+) -> tuple[np.ndarray, _State, np.ndarray]:
+    """Every case of the bearings ``r`` by the core: the ring Newton from v0, the balls on their
+    lines; where left unbalanced and ``continued``, the continuation in speed from v_static.
+    Returns (v, state, iterations (n,))."""
+    n = v0.shape[0]
+    one = (np.broadcast_to(np.eye(5), (n, 1, 5, 5)), np.zeros((n, 1, 5)), r.f, r.held)
+    limits = [RING_ITERATIONS, CONTINUATION_STAGES, 0, 0]
+    v, parts, out = core_solve(r, one, limits, v0, v_static, continued)
+    return v, parts[0], out[:, 38].astype(int)
 
 
-def _rounding(
-    arm_r: np.ndarray, arm_a: np.ndarray, fr: np.ndarray, fa: np.ndarray, d: np.ndarray,
-    length: np.ndarray,
-) -> np.ndarray:  # fmt: skip
-    """The rounding level of each generalised ring force (n, 5): ROUNDING times the sum of its
-    terms' magnitudes (as the static model, :mod:`bearingload.models._combined_ring`), plus the
-    force change over one rounding of each ball's groove-centre position (``rho``, ``u'``: lengths
-    near A held in one double; the inner approach, a difference of such lengths, is known to
-    eps A only) - the level a light load against a preload or the centrifugal forces cannot be
-    balanced below. [N]"""
-    terms = np.abs(arm_r) * np.abs(fr)[:, None, :] + np.abs(arm_a) * np.abs(fa)[:, None, :]
-    stiff_r = (np.abs(d[1, 0]) + np.abs(d[1, 1]))[:, None, :] * np.abs(arm_r)
-    stiff_a = (np.abs(d[0, 0]) + np.abs(d[0, 1]))[:, None, :] * np.abs(arm_a)
-    moved = (stiff_r + stiff_a) * (_EPS * length[:, None, :])
-    out = ROUNDING * terms.sum(-1) + moved.sum(-1)
-    return np.where(np.isfinite(out), out, 0.0)
-
-
-def _newton(r: _Ring, v: np.ndarray, do: np.ndarray, ao: np.ndarray) -> tuple[Any, ...]:
-    """Newton on the ring equilibrium with a Levenberg-Marquardt safeguard, each case on its
-    own: the Newton step, halved, then steps of ``(J^T J + mu diag J^T J) s = J^T res`` with mu
-    growing (a tangent nearly singular - two balls alike carrying the axial force and the
-    moment - damped in its null direction instead of a step out of the bearing), each no longer
-    than a tenth of A; a step is taken when it lowers the residual's 2-norm and some ball
-    touches the inner ring. The balls start from the current ones. Returns (v, state,
-    iterations (n,))."""
-    its = np.zeros(v.shape[0], dtype=int)
-    st = _evaluate(r, v, do, ao)
-    todo = np.flatnonzero(~(st.merit <= TOLERANCE))
-    for _ in range(RING_ITERATIONS):
-        if todo.size == 0:
-            break
-        sub = r.take(todo)
-        cur = _take_state(st, todo)
-        jac = np.where(sub.held[:, :, None] | sub.held[:, None, :], 0.0, cur.jac)
-        jac[:, np.arange(5), np.arange(5)] += sub.held
-        res = np.where(sub.held, 0.0, sub.f - cur.gen)
-        size = _norm2(sub, cur)
-        pending = np.arange(todo.size)
-        for k in range(LM_TRIALS):
-            step = trial_step(jac[pending], res[pending], sub.held[pending], sub.length[pending], k)
-            trial = v[todo[pending]] + step
-            got = _evaluate(sub.take(pending), trial, cur.do[pending], cur.ao[pending],
-                            cur.sens[pending])  # fmt: skip
-            better = (_norm2(sub.take(pending), got) < (1.0 - 1e-4) * size[pending]) | (
-                got.merit <= TOLERANCE
-            )
-            # no ball touching the inner ring: a plateau without tangent, never the answer
-            better &= np.any(got.terms[2] > 0, axis=1)
-            rows = todo[pending[better]]
-            v[rows] = trial[better]
-            _put_state(st, rows, _take_state(got, np.flatnonzero(better)))
-            pending = pending[~better]
-            if pending.size == 0:
-                break
-        its[todo] += 1
-        stalled = np.zeros(todo.size, dtype=bool)
-        stalled[pending] = True  # no step lowered the residual: its rounding
-        todo = todo[~stalled & ~(st.merit[todo] <= TOLERANCE)]
-    return v, st, its
-
-
-def _coupled(r: _Ring, v: np.ndarray) -> tuple[np.ndarray, ...]:
-    """The fast first stage: Newton on the ring and every ball together (5 + 2z unknowns a
-    case), each ball's 2x2 block eliminated (the Schur complement, :func:`_coupled_step`): one
-    ball Newton step per ring step instead of every ball solved at every ring iterate. From the
-    static answer ``v``, the balls on their lines pressed by about F_c (as :func:`_evaluate`
-    starts them); each step halved until the combined residual (:func:`_coupled_residual`)
-    falls. Each case until it is balanced (TOLERANCE, BALL_TOLERANCE), or no step lowers its
-    residual, or after FAST_DAMPED halved steps, or when its residual has not halved over three
-    steps (from the FAST_SLOW-th on), or after FAST_ITERATIONS steps; cases at speed 0 are not
-    moved. It decides nothing: the nested solver (:func:`_newton`) goes on from its answer.
-    Returns (v, do, ao, handed_on (n,) bool: balanced to FAST_HAND_ON, ring and balls, a ball
-    touching the inner ring; steps (n,)). [mm, rad]"""
-    n = v.shape[0]
-    v = v.copy()
-    rho, _, up = _centres(r, v)
-    do, ao = _line_start(r.b, rho, up)
-    fc = 0.125 * r.b.mass * r.b.dm * r.b.omega**2 * _KG_MM
-    ao = np.where(do <= 0, 0.0, ao)
-    do = np.maximum(do, (fc / r.b.ko[..., -1]) ** (2.0 / 3.0))
-    arms = _arms(r)
-    cur = list(_coupled_residual(r, arms, v, do, ao))
-    going = (r.b.omega[:, 0] > 0) & cur[-1]
-    steps, damped = np.zeros(n, dtype=int), np.zeros(n, dtype=int)
-    past = [cur[3].copy()] * 3  # the combined residual at the last iterations
-    for _ in range(FAST_ITERATIONS):
-        going &= (damped < FAST_DAMPED) & ~((cur[1] <= TOLERANCE) & (cur[2] <= BALL_TOLERANCE))
-        going &= ~((steps >= FAST_SLOW) & (cur[3] > 0.5 * past[-3]))  # not halved in three
-        past.append(cur[3].copy())
-        rows = np.flatnonzero(going)
-        if rows.size == 0:
-            break
-        sub, sub_arms, t = r, arms, cur[0]
-        if rows.size < n:  # (one case alone, always every case: no copies)
-            sub, sub_arms = r.take(rows), (arms[0][rows], arms[1][rows])
-            t = tuple(a[rows] for a in t)
-        dv, y0, dy = _coupled_step(sub, sub_arms, v[rows], do[rows], ao[rows], t)
-        pending, lam = np.arange(rows.size), 1.0
-        for _ in range(FAST_HALVINGS):
-            every = pending.size == n
-            part, part_arms = (r, arms) if every else (
-                sub.take(pending), (sub_arms[0][pending], sub_arms[1][pending]))  # fmt: skip
-            y1, y2 = y0[0][pending] + lam * dy[0][pending], y0[1][pending] + lam * dy[1][pending]
-            v2, do2, ao2 = (
-                v[rows[pending]] + lam * dv[pending],
-                np.hypot(y1, y2) - part.b.ro,
-                np.arctan2(y1, y2),
-            )
-            got = _coupled_residual(part, part_arms, v2, do2, ao2)
-            better = got[-1] & (got[3] < (1.0 - 1e-4 * lam) * cur[3][rows[pending]])
-            won = rows[pending[better]]
-            if every and better.all():
-                v, do, ao, cur = v2, do2, ao2, list(got)
-            else:
-                v[won], do[won], ao[won] = v2[better], do2[better], ao2[better]
-                for mine, theirs in zip(cur[0] + tuple(cur[1:]), got[0] + got[1:], strict=True):
-                    mine[won] = theirs[better]
-            steps[won] += 1
-            damped[won] += lam < 1.0
-            pending, lam = pending[~better], 0.5 * lam
-            if pending.size == 0:
-                break
-        going[rows[pending]] = False  # no step lowered the residual
-    near = cur[-1] & (cur[1] <= FAST_HAND_ON) & (cur[2] <= FAST_HAND_ON)
-    return v, do, ao, near & (r.b.omega[:, 0] > 0), steps
-
-
-def _coupled_residual(
-    r: _Ring, arms: tuple[np.ndarray, np.ndarray], v: np.ndarray, do: np.ndarray, ao: np.ndarray
-) -> tuple[Any, ...]:
-    """The residuals of the coupled stage at (v, do, ao): (the balls' terms (their real parts)
-    and, last, their partial derivatives (n, z, 4, 4) (rows g1, g2, Fa, Fr; columns do, ao,
-    rho, u'), the ring residual over f_ref, the largest ball residual over its forces, the
-    combined 2-norm of the free ring residual over f_ref and of every ball's over its forces
-    (n,), whether all are finite and some ball touches the inner ring (n,)). One call of the ball
-    equations: the four complex steps stacked (:func:`_ring_forces`), the terms from the real
-    part of the first (the derivatives are at hand when the trial is taken). [-]"""
-    rho, _, up = _centres(r, v)
-    h = _H * (r.b.ri + r.b.ro)
-    e = 1j * np.eye(4)[:, :, None, None]  # e[:, k]: step k only
-    cols = ball_terms(r.b, rho + h * e[:, 2], up + h * e[:, 3], do + h * e[:, 0], ao + _H * e[:, 1])
-    # d[row, col]: rows g1, g2, Fa, Fr; columns do, ao, rho, u'
-    d = np.stack([cols[k] for k in (0, 1, 12, 13)]).imag / np.stack([h, h * 0.0 + _H, h, h])
-    t = tuple(np.real(c[0]) for c in cols) + (d.transpose(2, 3, 0, 1),)
-    arm_r, arm_a = arms
-    gen = (arm_r * t[13][:, None, :] + arm_a * t[12][:, None, :]).sum(-1)
-    res = np.where(r.held, 0.0, r.f - gen) / r.f_ref[:, None]
-    norm = _ball_norm(r.b, t, do, np.ones(do.shape, dtype=bool))[0]
-    combined = np.sqrt((res * res).sum(axis=1) + (norm * norm).sum(axis=1))
-    finite = np.isfinite(combined) & np.any(t[2] > 0, axis=1)
-    return t, np.abs(res).max(axis=1), norm.max(axis=1), combined, finite
-
-
-def _coupled_step(
-    r: _Ring, arms: tuple[np.ndarray, np.ndarray], v: np.ndarray, do: np.ndarray, ao: np.ndarray,
-    t: tuple[Any, ...],
-) -> tuple[Any, ...]:  # fmt: skip
-    """The coupled Newton step at (v, do, ao), the balls' terms ``t`` there: the ring step from
-    ``J dv = f - F + sum dF/dX (dg/dX)^-1 g`` (J the tangent with the balls eliminated, held
-    components not moved, no longer than A/10), each ball's step ``-(dg/dX)^-1 g`` plus its
-    sensitivity times its groove centre's move, no longer than r'_o/4 and cut where it would
-    press the ball into the inner ring by more than twice its inner approach or the approach
-    ``(F_c/K_i)^(2/3)`` (Newton's overshoot on ``delta^1.5`` near 0). The partial derivatives
-    are the last of ``t`` (:func:`_coupled_residual`). Returns (dv (n, 5), the ball centres
-    (X_1, X_2) and their steps (n, z)). [mm]"""
-    rho, u, up = _centres(r, v)
-    d = t[14].transpose(2, 3, 0, 1)  # d[row, col]: rows g1, g2, Fa, Fr; columns do, ao, rho, u'
-    det = d[0, 0] * d[1, 1] - d[0, 1] * d[1, 0]
-    inv = np.stack([[d[1, 1], -d[0, 1]], [-d[1, 0], d[0, 0]]]) / det
-    xg = inv[:, 0] * t[0] + inv[:, 1] * t[1]  # (dg/dX)^-1 g (2, n, z)
-    sens = -np.einsum("kmnz,mpnz->kpnz", inv, d[:2, 2:])  # dX/d(rho, u')
-    dup = np.where(r.one_sided[:, None], (u > 0).astype(float), 1.0)
-    tot = d[2:, 2:] + np.einsum("rknz,kpnz->rpnz", d[2:, :2], sens)
-    tot[:, 1] *= dup
-    arm_r, arm_a, gen, jac = _assemble(r, t[13], t[12], tot, arms)
-    corr = np.einsum("rknz,knz->rnz", d[2:, :2], xg)  # dF/dX (dg/dX)^-1 g (Fa, Fr)
-    rhs = r.f - gen + (arm_a * corr[0][:, None, :] + arm_r * corr[1][:, None, :]).sum(-1)
-    rhs = np.where(r.held | ~np.isfinite(rhs), 0.0, rhs)
-    jac = np.where(r.held[:, :, None] | r.held[:, None, :], 0.0, jac)
-    jac[:, np.arange(5), np.arange(5)] += r.held
-    dv = trial_step(jac, rhs, r.held, r.length, 0)
-    rho2, _, up2 = _centres(r, v + dv)
-    s = -xg + sens[:, 0] * (rho2 - rho) + sens[:, 1] * (up2 - up)  # d(do, ao)
-    lo, so, co = r.b.ro + do, np.sin(ao), np.cos(ao)
-    x1, x2 = so * s[0] + lo * co * s[1], co * s[0] - lo * so * s[1]  # the ball centre's step
-    cut = np.minimum(1.0, 0.25 * r.b.ro / np.maximum(np.hypot(x1, x2), 1e-300))
-    y0 = (lo * so, lo * co)
-    x1, x2 = np.where(np.isfinite(x1), x1 * cut, 0.0), np.where(np.isfinite(x2), x2 * cut, 0.0)
-    di0 = np.maximum(t[11], 0.0)
-    di1 = np.hypot(up2 - y0[0] - x1, np.maximum(rho2 - y0[1] - x2, 0.0)) - r.b.ri
-    fc = 0.125 * r.b.mass * r.b.dm * r.b.omega**2 * _KG_MM
-    bound = np.maximum(2.0 * di0, 2.0 * (fc / r.b.ki[..., -1]) ** (2.0 / 3.0))
-    kap = np.where(di1 > bound, (bound - di0) / np.where(di1 > bound, di1 - di0, 1.0), 1.0)
-    kap = np.clip(np.where(np.isfinite(kap), kap, 1.0), 0.0, 1.0)
-    return dv, y0, (x1 * kap, x2 * kap)
-
-
-def _arms(r: _Ring) -> tuple[np.ndarray, np.ndarray]:
-    """The arms of the balls' radial and axial forces in the generalised ring forces (n, 5,
-    z). [-]"""
-    c, s = r.c, r.s
-    zero, one = np.zeros_like(c), np.ones_like(c)
-    return np.stack([c, s, zero, zero, zero], axis=1), np.stack([zero, zero, one, c, s], axis=1)
-
-
-def _norm2(r: _Ring, st: _State) -> np.ndarray:
-    """The 2-norm of the free residual over f_ref (inf: a ball unsolved). [-]"""
-    res = np.where(r.held, 0.0, r.f - st.gen)
-    return np.where(np.isfinite(st.merit), np.sqrt((res * res).sum(axis=1)) / r.f_ref, np.inf)
-
-
-def trial_step(
-    jac: np.ndarray, res: np.ndarray, held: np.ndarray, length: np.ndarray, k: int
-) -> np.ndarray:
-    """Trial ``k`` of the safeguarded Newton of the ring (or of a pair's shaft): the Newton step
-    halved k times up to HALVINGS, then Levenberg-Marquardt steps with mu growing; the components
-    ``held`` by a symmetry not moved (LAPACK's solve moved them by 1e-13); no longer than a tenth
-    of ``length`` (A). [mm]"""
-    lam, mu = (0.5**k, 0.0) if k < HALVINGS else (1.0, 1e-6 * 100.0 ** (k - HALVINGS))
-    step = np.where(held, 0.0, lam * _lm_step(jac, res, mu))
-    longest = np.abs(step).max(axis=1)
-    return step * np.minimum(1.0, 0.1 * length / np.maximum(longest, 1e-300))[:, None]
-
-
-def _lm_step(jac: np.ndarray, res: np.ndarray, mu: float) -> np.ndarray:
-    """The Newton step (mu = 0) or the Levenberg-Marquardt step of every case. [mm]"""
-    if mu == 0.0:
-        step = _ring_step(jac, res)
-    else:
-        jt = jac.transpose(0, 2, 1)
-        jtj = jt @ jac
-        diag = np.einsum("nii->ni", jtj)
-        diag = np.maximum(diag, 1e-12 * diag.max(axis=1, keepdims=True))
-        a = jtj + mu * diag[:, :, None] * np.eye(5)
-        step = _ring_step(a, (jt @ res[..., None])[..., 0])
-    return np.where(np.isfinite(step), step, 0.0)
-
-
-def _ring_step(jac: np.ndarray, res: np.ndarray) -> np.ndarray:
-    """The solution of jac step = res of every case; a singular tangent (no ball touching along
-    a direction) gives the least-squares step. [mm]"""
-    try:
-        return np.linalg.solve(jac, res[..., None])[..., 0]
-    except np.linalg.LinAlgError:  # case by case: no case's step depends on another's
-        out = np.empty_like(res)
-        for k in range(res.shape[0]):
-            try:
-                out[k] = np.linalg.solve(jac[k], res[k])
-            except np.linalg.LinAlgError:
-                out[k] = np.linalg.pinv(jac[k]) @ res[k]
-        return out
+_STATE_ARRAYS = (
+    "do",
+    "ao",
+    "balls_ok",
+    "gen",
+    "jac",
+    "merit",
+    "sens",
+    "score",
+    "level",
+    "floor",
+    "noise",
+)
 
 
 def _take_state(st: _State, idx: np.ndarray) -> _State:
-    return _State(st.do[idx], st.ao[idx], st.balls_ok[idx], st.gen[idx], st.jac[idx],
-                  st.merit[idx], tuple(t[idx] for t in st.terms), st.sens[idx],
-                  st.score[idx], st.level[idx])  # fmt: skip
+    out = {name: getattr(st, name)[idx] for name in _STATE_ARRAYS}
+    return _State(terms=tuple(t[idx] for t in st.terms), **out)
 
 
 def _put_state(st: _State, rows: np.ndarray, new: _State) -> None:
-    for name in ("do", "ao", "balls_ok", "gen", "jac", "merit", "sens", "score", "level"):
+    for name in _STATE_ARRAYS:
         getattr(st, name)[rows] = getattr(new, name)
     for mine, theirs in zip(st.terms, new.terms, strict=True):
         mine[rows] = theirs
@@ -867,7 +620,9 @@ def _solve(
     z: int, geo: Any, flat: dict, pos: dict, angles: np.ndarray, material: tuple[np.ndarray, ...],
     one_sided: np.ndarray, imposed_tilt: bool,
 ) -> tuple[Any, ...]:  # fmt: skip
-    """Set up the ring problem at the static answer and solve it with the stiffness updates."""
+    """Set up the ring problem at the static answer and solve it in the core: from the static
+    answer; a case left unbalanced again from the shifted start (:func:`_dynamic_start`), then
+    by the continuation in speed."""
     e, nu, dens = material
     n = geo.D_w.shape[0]
     c, s, mirror = _combined._directions(z, np.mod(flat["cage_angle"], 360.0))
@@ -888,83 +643,25 @@ def _solve(
     v_static = np.where(zero, 0.0, v_static)
     ki, ko = _stiffness_nodes(geo, e, nu)
     col = [(geo.f_i - 0.5) * geo.D_w, (geo.f_o - 0.5) * geo.D_w, geo.D_w, geo.d_m,
-           flat["speed"] * math.pi / 30.0, dens * math.pi / 6.0 * geo.D_w**3]  # fmt: skip
+           flat["speed"] * math.pi / 30.0, dens / _MM3 * math.pi / 6.0 * geo.D_w**3]  # fmt: skip
     ri, ro, dwc, dmc, omega, mass = (a[:, None] for a in col)
     b = _Set(ri, ro, dwc, dmc, omega, mass, ki, ko)
     ring = _Ring(b, c, s, geo.A - geo.g, f, f_ref, held, one_sided, geo.A)
-    nan = np.full((n, z), np.nan)
-    v, st, total = _first_solve(ring, v_static, nan)
+    v, st, total = _newton(ring, v_static, v_static, False)
     bad = np.flatnonzero(~st.accepted)
     if bad.size:
         start = pos["shifted"](bad)
         v2 = np.stack([start["x"], start["y"], start["u"], rr * np.deg2rad(start["tilt"]),
                        rr * np.deg2rad(start["tilt_cross"])], axis=1)[bad]  # fmt: skip
         v2 = np.where(zero[bad], 0.0, v2)
-        v2, st2, its2 = _newton(ring.take(bad), v2, nan[bad], nan[bad])
+        v2, st2, its2 = _newton(ring.take(bad), v2, v_static[bad], True)
         total[bad] += its2
         won = np.flatnonzero(st2.accepted)
         v[bad[won]] = v2[won]
         _put_state(st, bad[won], _take_state(st2, won))
-    for i in np.flatnonzero(~st.accepted):
-        _continuation(ring, int(i), v, st, total, v_static[i])
     _check_resolved(st, ring, flat)
     _check(st, total, flat, one_sided)
     return ring, v, st, total
-
-
-def _first_solve(r: _Ring, v_static: np.ndarray, nan: np.ndarray) -> tuple[Any, ...]:
-    """The nested Newton (:func:`_newton`) from the coupled stage's answer (:func:`_coupled`)
-    where it came within FAST_HAND_ON, from the static answer elsewhere and where the first
-    leaves a case unbalanced. Returns (v, state, iterations (n,))."""
-    fv, fdo, fao, handed, steps = _coupled(r, v_static)
-    v0 = np.where(handed[:, None], fv, v_static)
-    do0, ao0 = np.where(handed[:, None], fdo, nan), np.where(handed[:, None], fao, nan)
-    v, st, total = _newton(r, v0, do0, ao0)
-    total += steps
-    bad = np.flatnonzero(handed & ~st.accepted)
-    if bad.size:
-        v2, st2, its2 = _newton(r.take(bad), v_static[bad].copy(), nan[bad], nan[bad])
-        total[bad] += its2
-        won = np.flatnonzero(st2.accepted)
-        v[bad[won]] = v2[won]
-        _put_state(st, bad[won], _take_state(st2, won))
-    return v, st, total
-
-
-def _continuation(
-    ring: _Ring, i: int, v: np.ndarray, st: _State, its: np.ndarray, v_static: np.ndarray
-) -> None:
-    """Case i again, by continuation in the centrifugal and gyroscopic terms (both in omega^2):
-    from the static answer, the speed raised in stages of omega^2 (a quarter, halved on a
-    stage that does not converge, doubled after one that does), each started from the last
-    balls and the ring position extrapolated from the last two stages (the balls move out with
-    the speed: from the last position alone the loaded ones can lose the inner ring). A stage
-    converges when balanced to ACCEPT, as the last must: a stage stalled above it (a ring
-    nearly free across, on a plateau) passed on left the next stages on the plateau. The
-    answer, if any, replaces case i's in v, st, its."""
-    one = ring.take(np.array([i]))
-    omega = one.b.omega
-    x, do = v_static[None, :].copy(), np.full((1, st.do.shape[1]), np.nan)
-    ao, rate = do.copy(), np.zeros_like(x)
-    done, step = 0.0, 0.25
-    for _ in range(CONTINUATION_STAGES):
-        frac = min(1.0, done + step)
-        stage = dataclasses.replace(one, b=dataclasses.replace(one.b, omega=omega * frac**0.5))
-        x1, st1, its1 = _newton(stage, x + rate * (frac - done), do, ao)
-        its[i] += its1[0]
-        if st1.accepted[0]:
-            if done > 0.0:
-                rate = (x1 - x) / (frac - done)
-            done, x, do, ao = frac, x1, st1.do, st1.ao
-            if done == 1.0:
-                v[i] = x1[0]
-                _put_state(st, np.array([i]), st1)
-                return
-            step = min(2.0 * step, 1.0 - done)
-        else:
-            step *= 0.5
-            if step < 1e-6:
-                return
 
 
 def _check_resolved(st: _State, ring: _Ring, flat: dict) -> None:

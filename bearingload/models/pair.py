@@ -423,7 +423,7 @@ def _solve(z: int, kind: str, c: dict, shape: tuple[int, ...]) -> PairDistributi
     try:
         _comb._check_scale(f_ref, k_ref, geo.A, sizes=sizes)
     except InputError as exc:  # its advice (the radial solver) does not apply to a pair
-        if exc.reason != _comb.TOO_LIGHT:
+        if exc.reason not in (_comb.TOO_LIGHT, _comb.TOO_LIGHT_ANGULAR):
             raise
         f_min = float(np.max(k_ref * (geo.A / _comb.GEOMETRY_RATIO_MAX) ** 1.5))
         raise InputError(

@@ -4,7 +4,7 @@
 *Rolling Bearing Analysis*, 5th ed., vol. 2 "Advanced Concepts of Bearing Technology", ch. 2-3),
 as :mod:`bearingload.models.high_speed` gives them for one bearing.
 
-Units: N, mm, kg, s (the shaft speed in rpm at the input, rad/s inside); ball density in kg/mm^3.
+Units: N, mm, kg, s (the shaft speed in rpm at the input, rad/s inside); ball density in kg/m^3.
 
 Model:
 
@@ -19,15 +19,16 @@ Model:
 * The pair's forces and tangent by virtual work: ``sum_k L_k^T f_k`` and ``sum_k L_k^T J_k L_k``
   (``J_k`` the bearing's tangent with its ball equations eliminated; not symmetric at speed).
 
-Numerics: Newton on the shaft's five unknowns from the static pair's answer (the balls solved by
-:func:`bearingload.models.high_speed._evaluate` at each bearing's local position), the step
+Numerics, in the compiled core (:mod:`bearingload.models._core`, ``solve_pair_speed``: a C loop
+over the cases): Newton on the shaft's five unknowns from the static pair's answer (the balls
+solved by the single bearing's ``speed_state`` at each bearing's local position), the step
 halved, then Levenberg-Marquardt steps, none longer than A/10 nor to a position where no ball
 of the pair touches an inner ring; a case left unbalanced is solved again by continuation in
 omega^2 from the static answer. The components held by a symmetry of the case are those of the
 static pair. A case stops when every applied component is balanced to ``TOLERANCE`` of the
 largest of the applied loads and the preload; it is accepted at ``ACCEPT`` of it or within the
-rounding level of the ball forces on the shaft (each bearing's :func:`bearingload.models.
-high_speed._rounding`, carried through the maps) or, up to ``NOISE_MAX`` of that load, within
+rounding level of the ball forces on the shaft (each bearing's, from the core's
+``speed_state``, carried through the maps) or, up to ``NOISE_MAX`` of that load, within
 the change of the shaft forces over the balls' own residuals, as the single bearing accepts;
 otherwise
 :class:`~bearingload.errors.ConvergenceError` names its inputs. At speed 0 the answer is the
@@ -47,7 +48,6 @@ from bearingload.constants import STEEL_MODULUS
 from bearingload.errors import ConvergenceError, InputError
 from bearingload.models import combined as _comb
 from bearingload.models import high_speed as _hs
-from bearingload.models._ball_dynamics import _Set
 from bearingload.models.pair import PairDistribution, solve_pair
 
 __all__ = ["PairHighSpeedDistribution", "solve_pair_high_speed", "MODEL"]
@@ -55,10 +55,10 @@ __all__ = ["PairHighSpeedDistribution", "solve_pair_high_speed", "MODEL"]
 #: The model, as the outputs name it.
 MODEL = _hs.MODEL
 #: Relative residual of the shaft equilibrium (of the largest applied load or the preload). [-]
-TOLERANCE = 1e-12
+TOLERANCE = _hs.TOLERANCE
 #: Largest shaft residual accepted at the end (or the rounding level, when larger). [-]
-ACCEPT = 1e-9
-#: Shaft Newton steps (the trials of each: the single bearing's ring, high_speed.trial_step). [-]
+ACCEPT = _hs.ACCEPT
+#: Shaft Newton steps (the trials of each: the single bearing's, the core's trial_step). [-]
 ITERATIONS = 200
 #: Stages of the continuation in omega^2. [-]
 CONTINUATION_STAGES = 200
@@ -80,7 +80,7 @@ class PairHighSpeedDistribution(PairDistribution):
     speed : ndarray
         Shaft (inner rings) speed n. [rpm]
     ball_density : ndarray
-        [kg/mm^3]
+        [kg/m^3]
     model : str
         :data:`MODEL`.
     preload_at_speed : ndarray or None
@@ -112,21 +112,6 @@ class _Shaft:
     f_ref: np.ndarray  # (n,) [N]
     held: np.ndarray  # (n, 5) bool
 
-    def take(self, idx: np.ndarray) -> _Shaft:
-        if np.array_equal(idx, np.arange(self.f.shape[0])):
-            return self
-        rings = (self.rings[0].take(idx), self.rings[1].take(idx))
-        return _Shaft(rings, self.maps[idx], self.offset[idx], self.f[idx], self.f_ref[idx],
-                      self.held[idx])  # fmt: skip
-
-    def at_speed(self, fraction: float) -> _Shaft:
-        """The same shaft at omega times sqrt(fraction) (the speed terms times fraction)."""
-        rings = tuple(
-            dataclasses.replace(r, b=dataclasses.replace(r.b, omega=r.b.omega * fraction**0.5))
-            for r in self.rings
-        )
-        return dataclasses.replace(self, rings=(rings[0], rings[1]))
-
 
 @dataclass
 class _State:
@@ -137,173 +122,17 @@ class _State:
     jac: np.ndarray  # (n, 5, 5)
     merit: np.ndarray  # (n,) largest free residual over f_ref (inf: a ball unsolved)
     score: np.ndarray  # (n,) the residual over f_ref or, where larger, its rounding (or the
-    # balls' residuals on it) over ACCEPT (:func:`_rescore`; before it: the residual over f_ref)
-    level: np.ndarray  # (n,) the largest rounding level over f_ref (:func:`_rescore`)
+    # balls' residuals on it) over ACCEPT
+    level: np.ndarray  # (n,) the largest rounding level over f_ref
 
     @property
     def accepted(self) -> np.ndarray:
         return self.score <= ACCEPT
 
-    def take(self, idx: np.ndarray) -> _State:
-        return _State([_hs._take_state(p, idx) for p in self.parts], self.gen[idx],
-                      self.jac[idx], self.merit[idx], self.score[idx], self.level[idx])  # fmt: skip
-
-    def put(self, rows: np.ndarray, new: _State) -> None:
-        for mine, theirs in zip(self.parts, new.parts, strict=True):
-            _hs._put_state(mine, rows, theirs)
-        for name in ("gen", "jac", "merit", "score", "level"):
-            getattr(self, name)[rows] = getattr(new, name)
-
-    def balls(self) -> tuple[np.ndarray, ...]:
-        """(do, ao, sens) of both bearings, stacked on axis 1."""
-        return tuple(np.stack([getattr(p, k) for p in self.parts], 1) for k in ("do", "ao", "sens"))
-
 
 def _local(sh: _Shaft, k: int, v: np.ndarray) -> np.ndarray:
     """Bearing k's local position ``L_k v`` + its offset (n, 5). [mm]"""
     return (sh.maps[:, k] @ v[:, :, None])[:, :, 0] + sh.offset[:, k]
-
-
-def _evaluate(sh: _Shaft, v: np.ndarray, balls: tuple[Any, ...]) -> _State:
-    """Both bearings' balls at the shaft position v (from ``balls`` = (do, ao, sens) (n, 2, z)
-    each, sens None: fresh), the shaft's forces, tangent and residual."""
-    do, ao, sens = balls
-    parts = []
-    gen = np.zeros_like(v)
-    jac = np.zeros(v.shape + (5,))
-    for k in range(2):
-        m = sh.maps[:, k]
-        p = _hs._evaluate(sh.rings[k], _local(sh, k, v), do[:, k], ao[:, k],
-                          None if sens is None else sens[:, k])  # fmt: skip
-        parts.append(p)
-        mt = m.transpose(0, 2, 1)
-        gen += (mt @ p.gen[:, :, None])[:, :, 0]
-        jac += mt @ p.jac @ m
-    ok = parts[0].balls_ok & parts[1].balls_ok
-    res = np.where(sh.held, 0.0, sh.f - gen)
-    merit = np.where(ok, np.abs(res).max(axis=1) / sh.f_ref, np.inf)
-    merit = np.where(np.isfinite(merit), merit, np.inf)
-    # scored against ACCEPT alone here; the rounding level is weighed by _rescore
-    return _State(parts, gen, jac, merit, merit.copy(), np.zeros_like(merit))
-
-
-def _rescore(sh: _Shaft, v: np.ndarray, st: _State, rows: np.ndarray) -> None:
-    """Score the cases ``rows`` as the single bearing does: each shaft component against the
-    largest of ACCEPT of the load, its rounding level (each bearing's :func:`bearingload.models.
-    high_speed._rounding`: its terms' magnitudes and the ball forces' change over one rounding
-    of the groove-centre positions) and, up to NOISE_MAX of the load, the change of the forces
-    over the balls' own residuals (``|dF/dX (dg/dX)^-1|`` times each ball's residual), each
-    bearing's carried to the shaft through ``|L_k^T|``; also their rounding level."""
-    if rows.size == 0:
-        return
-    sub, cur = sh.take(rows), st.take(rows)
-    floor = np.zeros((rows.size, 5))
-    noise = np.zeros((rows.size, 5))
-    for k in range(2):
-        r, p = sub.rings[k], cur.parts[k]
-        local = _local(sub, k, v[rows])
-        rho = r.base[:, None] + local[:, 0, None] * r.c + local[:, 1, None] * r.s
-        u = local[:, 2, None] + local[:, 3, None] * r.c + local[:, 4, None] * r.s
-        fa, fr, d, terms, _, gain = _hs._ring_forces(r.b, rho, u, p.do, p.ao, r.one_sided)
-        zero, one = np.zeros_like(r.c), np.ones_like(r.c)
-        arm_r = np.stack([r.c, r.s, zero, zero, zero], axis=1)  # (n, 5, z)
-        arm_a = np.stack([zero, zero, one, r.c, r.s], axis=1)
-        up = np.maximum(u, 0.0)
-        mine = _hs._rounding(arm_r, arm_a, fr, fa, d, np.abs(rho) + up)
-        g = gain * np.hypot(terms[0], terms[1])
-        g = np.where(np.isfinite(g), g, 0.0)
-        own = (np.abs(arm_a) * g[0][:, None, :] + np.abs(arm_r) * g[1][:, None, :]).sum(-1)
-        back = np.abs(sub.maps[:, k].transpose(0, 2, 1))
-        floor += (back @ mine[:, :, None])[:, :, 0]
-        noise += (back @ np.where(np.isfinite(own), own, 0.0)[:, :, None])[:, :, 0]
-    noise = np.minimum(noise, _hs.NOISE_MAX * sub.f_ref[:, None])
-    res = np.where(sub.held, 0.0, sub.f - cur.gen)
-    allowed = np.maximum(sub.f_ref[:, None], np.maximum(floor, noise) / ACCEPT)
-    score = (np.abs(res) / allowed).max(axis=1)
-    st.score[rows] = np.where(np.isfinite(cur.merit), score, np.inf)
-    st.level[rows] = floor.max(axis=1) / sub.f_ref
-
-
-def _touching(st: _State) -> np.ndarray:
-    """(n,) whether some ball of the pair touches an inner ring (Q_i > 0)."""
-    return np.any(st.parts[0].terms[2] > 0, axis=1) | np.any(st.parts[1].terms[2] > 0, axis=1)
-
-
-def _norm2(sh: _Shaft, st: _State) -> np.ndarray:
-    res = np.where(sh.held, 0.0, sh.f - st.gen)
-    return np.where(np.isfinite(st.merit), np.sqrt((res * res).sum(axis=1)) / sh.f_ref, np.inf)
-
-
-def _newton(sh: _Shaft, v: np.ndarray, balls: tuple[Any, ...]) -> tuple[Any, ...]:
-    """Newton on the shaft with the Levenberg-Marquardt safeguard of
-    :func:`bearingload.models.high_speed._newton`, each case on its own: (v, state, steps)."""
-    v = v.copy()
-    its = np.zeros(v.shape[0], dtype=int)
-    st = _evaluate(sh, v, balls)
-    todo = np.flatnonzero(~(st.merit <= TOLERANCE))
-    length = sh.rings[0].length
-    for _ in range(ITERATIONS):
-        if todo.size == 0:
-            break
-        sub, cur = sh.take(todo), st.take(todo)
-        jac = np.where(sub.held[:, :, None] | sub.held[:, None, :], 0.0, cur.jac)
-        jac[:, np.arange(5), np.arange(5)] += sub.held
-        res = np.where(sub.held, 0.0, sub.f - cur.gen)
-        size = _norm2(sub, cur)
-        do, ao, sens = cur.balls()
-        pending = np.arange(todo.size)
-        for k in range(_hs.LM_TRIALS):
-            rows = todo[pending]
-            trial = v[rows] + _hs.trial_step(jac[pending], res[pending], sub.held[pending],
-                                             length[rows], k)  # fmt: skip
-            part = sub.take(pending)
-            got = _evaluate(part, trial, (do[pending], ao[pending], sens[pending]))
-            better = (_norm2(part, got) < (1.0 - 1e-4) * size[pending]) | (got.merit <= TOLERANCE)
-            better &= _touching(got)
-            rows = todo[pending[better]]
-            v[rows] = trial[better]
-            st.put(rows, got.take(np.flatnonzero(better)))
-            pending = pending[~better]
-            if pending.size == 0:
-                break
-        its[todo] += 1
-        stalled = np.zeros(todo.size, dtype=bool)
-        stalled[pending] = True  # no step lowered the residual: its rounding
-        todo = todo[~stalled & ~(st.merit[todo] <= TOLERANCE)]
-    return v, st, its
-
-
-def _continuation(sh: _Shaft, i: int, v: np.ndarray, st: _State, its: np.ndarray,
-                  v_static: np.ndarray) -> None:  # fmt: skip
-    """Case i again by continuation in omega^2 from the static answer (the stages of
-    :func:`bearingload.models.high_speed._continuation`: a quarter, halved on a stage not
-    accepted, doubled after one accepted; each from the last balls, the shaft extrapolated from
-    the last two stages). The answer, if any, replaces case i's in v, st, its."""
-    one = sh.take(np.array([i]))
-    z = one.rings[0].c.shape[1]
-    x = v_static[None, :].copy()
-    balls: tuple[Any, ...] = (np.full((1, 2, z), np.nan), np.full((1, 2, z), np.nan), None)
-    rate = np.zeros_like(x)
-    done, step = 0.0, 0.25
-    for _ in range(CONTINUATION_STAGES):
-        frac = min(1.0, done + step)
-        stage = one.at_speed(frac)
-        x1, st1, its1 = _newton(stage, x + rate * (frac - done), balls)
-        _rescore(stage, x1, st1, np.array([0]))
-        its[i] += its1[0]
-        if st1.accepted[0]:
-            if done > 0.0:
-                rate = (x1 - x) / (frac - done)
-            done, x, balls = frac, x1, st1.balls()
-            if done == 1.0:
-                v[i] = x1[0]
-                st.put(np.array([i]), st1)
-                return
-            step = min(2.0 * step, 1.0 - done)
-        else:
-            step *= 0.5
-            if step < 1e-6:
-                return
 
 
 def solve_pair_high_speed(
@@ -336,8 +165,8 @@ def solve_pair_high_speed(
 
     speed : array_like
         Shaft (inner rings) speed n, >= 0, n d_m <= 2e6 mm/min. [rpm]
-    ball_density : array_like, default steel 7.85e-6
-        Density of the balls. [kg/mm^3]
+    ball_density : array_like, default steel 7850
+        Density of the balls. [kg/m^3]
 
     Raises
     ------
@@ -376,15 +205,16 @@ def solve_pair_high_speed(
     flat["cage_angle"] = np.mod(flat["cage_angle"], 360.0)
     sh, geo, v_static = _setup(static, flat, shape)
     with np.errstate(all="ignore"):
-        v, st, its = _solve(sh, v_static, flat)
-        extra = _at_speed(static, sh, shape)
+        v, st, its, rest = _solve(sh, v_static, flat, static.arrangement != "DT")
+        extra = _at_speed(static, rest, shape)
     return dataclasses.replace(_result(static, sh, geo, flat, shape, (v, st, its)), **extra)
 
 
-def _at_speed(static: PairDistribution, sh: _Shaft, shape: tuple[int, ...]) -> dict[str, Any]:
+def _at_speed(static: PairDistribution, rest: np.ndarray, shape: tuple[int, ...]) -> dict[str, Any]:
     """``preload_at_speed`` of a DB/DF pair: each bearing's thrust at the shaft's centred
     position (with no external load the mirrored pair keeps the shaft there at any speed, each
-    ball solved at that speed); none for DT. [N]
+    ball solved at that speed: ``rest`` (n, 2), bearing 1's thrust there and whether every
+    ball is balanced, from the core's ``at_rest``); none for DT. [N]
 
     The lift-off load stays the one at rest: at speed the model keeps the inner contacts of the
     bearing being unloaded far beyond it, the balls held between both rings by their
@@ -396,12 +226,9 @@ def _at_speed(static: PairDistribution, sh: _Shaft, shape: tuple[int, ...]) -> d
 
     if static.arrangement == "DT":
         return {}
-    n, z = sh.f.shape[0], sh.rings[0].c.shape[1]
-    nan = np.full((n, 2, z), np.nan)
-    rest = _evaluate(sh, np.zeros((n, 5)), (nan, nan, None))
-    if not np.all(rest.parts[0].balls_ok & rest.parts[1].balls_ok):
+    if not np.all(rest[:, 1]):
         raise ConvergenceError("preload of the pair at speed", 0, math.nan, {})
-    thrust = np.asarray(rest.parts[0].gen[:, 2], dtype=float).reshape(shape)
+    thrust = np.asarray(rest[:, 0], dtype=float).reshape(shape)
     return {"preload_at_speed": numerics.scalar_out(thrust)}
 
 
@@ -419,9 +246,9 @@ def _setup(static: PairDistribution, c: dict, shape: tuple[int, ...]) -> tuple[A
     n = radius.size
     ki, ko = _hs._stiffness_nodes(geo, c["modulus"], c["poisson"])
     col = [(geo.f_i - 0.5) * geo.D_w, (geo.f_o - 0.5) * geo.D_w, geo.D_w, geo.d_m,
-           c["speed"] * math.pi / 30.0, c["ball_density"] * math.pi / 6.0 * geo.D_w**3]  # fmt: skip
+           c["speed"] * math.pi / 30.0, c["ball_density"] / 1e9 * math.pi / 6.0 * geo.D_w**3]  # fmt: skip
     ri, ro, dw, dm, omega, mass = (a[:, None] for a in col)
-    b = _Set(ri, ro, dw, dm, omega, mass, ki, ko)
+    b = _hs._Set(ri, ro, dw, dm, omega, mass, ki, ko)
     cos_, sin_, mirror = _comb._directions(z, c["cage_angle"])
     fr, fa, mm, mc, fp = (c[k] for k in ("radial_load", "axial_load", "moment", "moment_cross",
                                          "preload"))  # fmt: skip
@@ -456,16 +283,25 @@ def _setup(static: PairDistribution, c: dict, shape: tuple[int, ...]) -> tuple[A
 #: The end of the refusal of loads too small for the pair's ball dynamics: the library's way
 #: out; the command line names its option (--quasi-static) instead.
 STATIC_WAY = "the static model of the pair (solve_pair) leaves the ball forces out"
+#: The reason of that refusal, on which a caller offering the static pair acts.
+TOO_LIGHT_PAIR = "too_light_pair_dynamics"
 
 
-def _solve(sh: _Shaft, v_static: np.ndarray, flat: dict) -> tuple[Any, ...]:
-    """Newton from the static answer; continuation for the cases left; the checks."""
-    n, z = v_static.shape[0], sh.rings[0].c.shape[1]
-    nan = np.full((n, 2, z), np.nan)
-    v, st, its = _newton(sh, v_static, (nan, nan, None))
-    _rescore(sh, v, st, np.arange(n))
-    for left in np.flatnonzero(~st.accepted):
-        _continuation(sh, int(left), v, st, its, v_static[left])
+def _solve(sh: _Shaft, v_static: np.ndarray, flat: dict, rest: bool) -> tuple[Any, ...]:
+    """The core's solve (Newton from the static answer, continuation for the cases left; with
+    ``rest`` the shaft centred too); the checks. Returns (v, state, iterations, rest (n, 2))."""
+    shaft = (sh.maps, sh.offset, sh.f, sh.held)
+    limits = [ITERATIONS, CONTINUATION_STAGES, 1, 1 if rest else 0]
+    v, parts, out = _hs.core_solve(sh.rings[0], shaft, limits, v_static, v_static, True)
+    st = _State(
+        parts,
+        out[:, :5].copy(),
+        out[:, 5:30].reshape(-1, 5, 5),
+        out[:, 35].copy(),
+        out[:, 36].copy(),
+        out[:, 37].copy(),
+    )
+    its = out[:, 38].astype(int)
     level = np.where(np.isfinite(st.level), st.level, 0.0)
     small = np.flatnonzero(level > _hs.LEVEL_MAX)
     if small.size:
@@ -478,7 +314,7 @@ def _solve(sh: _Shaft, v_static: np.ndarray, flat: dict) -> tuple[Any, ...]:
             f"{float(sh.f_ref[i]):.3g} N; the rounding of the ball forces on the shaft is "
             f"{level[i] * float(sh.f_ref[i]):.2g} N, more than {_hs.LEVEL_MAX:.0e} of it)",
             way_out=STATIC_WAY,
-            reason=_comb.TOO_LIGHT,
+            reason=TOO_LIGHT_PAIR,
         )
     bad = ~st.accepted
     if np.any(bad):
@@ -488,7 +324,7 @@ def _solve(sh: _Shaft, v_static: np.ndarray, flat: dict) -> tuple[Any, ...]:
             float(known.max()) if known.size else math.nan,
             {k: flat[k][bad] for k in _UNITS}, units=_UNITS,
         )  # fmt: skip
-    return v, st, its
+    return v, st, its, out[:, 40:42]
 
 
 def _result(static: PairDistribution, sh: _Shaft, geo: Any, flat: dict, shape: tuple[int, ...],

@@ -71,22 +71,22 @@ def analyse(
 def _analyse(
     bearing: str | None, method: str, revolutions: float | str | None, options: dict[str, Any]
 ) -> Solution:
+    from bearingload.errors import MissingError
     from bearingload.plan.case import Case
-    from bearingload.plan.inputs import read_inputs, text
+    from bearingload.plan.inputs import quantity, read_inputs, text
     from bearingload.plan.solve import solve_case
-    from bearingload.units import is_bare, parse_quantity
+    from bearingload.units import is_bare
 
     values = read_inputs(options)
+    if values.get("load") is None:  # as solve requires --load
+        raise MissingError("load", "the radial load F_r; 0 with an axial load or a moment")
     if bearing is not None:
         values["bearing"] = text(bearing, "bearing")
     bare = {
         n for n, v in options.items() if v is not None and not isinstance(v, bool) and is_bare(v)
     }
-    life = (
-        None
-        if revolutions is None
-        else parse_quantity(revolutions, "revolutions", parameter="revolutions")
-    )
+    revolutions_of = quantity("revolutions", positive=True)
+    life = None if revolutions is None else revolutions_of(revolutions, "revolutions")
     given = {n for n, v in values.items() if v is not None}
     case = Case.of(values, given=given, bare=bare)
     return solve_case(case, method=method, revolutions=life)

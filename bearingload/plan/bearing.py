@@ -4,7 +4,7 @@ would ignore, refused."""
 
 from __future__ import annotations
 
-from collections.abc import Callable, Collection
+from collections.abc import Collection
 from typing import Any
 
 from bearingload.errors import ConflictError, InputError, MissingError, UnusedError
@@ -112,45 +112,17 @@ def bearing_context(b: Any) -> str:
     return f"z and K ({k_src}) of {label}; G_r: {g_src}."
 
 
-def option_words(name: str) -> str:
-    """An input as the command line's ``solve`` writes it (``dynamic_rating`` ->
-    ``--dynamic-rating``, ``bearing`` -> ``BEARING``): the default spelling of the reasons of
-    :func:`rotating_refusal`."""
-    return "BEARING" if name == "bearing" else "--" + name.replace("_", "-")
-
-
-def rotating_refusal(
-    b: Any, dynamic_rating: float | None, method: str, spell: Callable[[str], str] = option_words
-) -> str | None:
-    """Why a rotating ring cannot be named for ``b`` solved by ``method`` (no L10r is computed
-    for it to select the ring of), or None: a roller bearing, no ball geometry, no C_r, or no
-    exact ball loads; ``spell`` writes the inputs named as the front door takes them."""
-    if b.kind != "ball":
-        return f"L10r is computed for ball bearings only ({b.designation} is a {b.kind} bearing)"
-    if not b.has_geometry:
-        return (
-            f"L10r needs the ball geometry (a {spell('bearing')}, or {spell('ball_diameter')} "
-            f"and {spell('pitch_diameter')})"
-        )
-    if not (dynamic_rating or b.C):
-        return f"L10r needs the dynamic load rating C_r: give {spell('dynamic_rating')}"
-    if method != "exact":
-        return f"L10r needs the exact ball loads ({spell('method')} {method} gives none)"
-    return None
-
-
-def check_rotating(
-    case: Case, b: Any, methods: list[str], spell: Callable[[str], str] = option_words
-) -> None:
+def check_rotating(case: Case, b: Any, methods: list[str]) -> None:
     """Refuse a rotating ring named where neither a reference rating life L10r (a roller
-    bearing, no ball geometry, no C_r, or no exact ball loads: :func:`rotating_refusal`) nor
-    defect frequencies (no speed, no ball geometry) are computed for it to select the ring of."""
+    bearing, no ball geometry, no C_r, or no exact ball loads) nor defect frequencies (no speed,
+    no ball geometry) are computed for it to select the ring of."""
     if case.rotating is None:
         return
     if case.speed is not None and b.kind == "ball" and b.has_geometry:
         return  # it names the ring of the defect frequencies at the speed
-    method = "exact" if "exact" in methods else methods[0]
-    why = rotating_refusal(b, case.dynamic_rating, method, spell)
+    from bearingload.studies.reference_life import rotating_refusal
+
+    why = rotating_refusal(b, case.dynamic_rating, "exact" if "exact" in methods else methods[0])
     if why is not None:
         raise InputError(
             "rotating",

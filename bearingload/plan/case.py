@@ -57,7 +57,7 @@ COMBINED_PARAMS = LOAD_PARAMS + TILT_PARAMS + LIFE_PARAMS
 #: Why sweep and table refuse the mounting options (solve and batch take them).
 MOUNTING_REFUSAL = (
     "the operating clearance of a mounted bearing is solve's and batch's (docs/mounting.md); "
-    "'bearingload solve' prints it: give it here as 'clearance'"
+    "'bearingload solve' prints it (operating_clearance): give that length here"
 )
 #: The options only a bearing or its ball geometry uses, refused for a ring given by z and K.
 BEARING_ONLY = (
@@ -271,7 +271,7 @@ class Case:
     def dynamics_arguments(self) -> dict[str, Any]:
         """The ball dynamics of :func:`bearingload.studies.combined_bearing.solve_combined_bearing`:
         the speed [rpm] (None: the static model, also under --quasi-static) and the ball density
-        [kg/mm^3] (None: steel)."""
+        [kg/m^3] (None: steel)."""
         self.check_dynamics_flags()
         if self.rotating == "outer" and self.speed is not None and not self.quasi_static:
             raise InputError(
@@ -288,7 +288,7 @@ class Case:
             )
         return {
             "speed": None if self.quasi_static else self.speed,
-            "ball_density": None if self.ball_density is None else self.ball_density * 1e-9,
+            "ball_density": self.ball_density,
         }
 
     def check_dynamics_flags(self) -> None:

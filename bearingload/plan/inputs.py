@@ -19,13 +19,15 @@ Reader = Callable[[Any, str], Any]
 
 
 def quantity(kind: str, *, positive: bool = False, at_zero: str = "") -> Reader:
-    """A number with an optional unit of ``kind`` (:func:`bearingload.units.parse_quantity`);
-    ``at_zero``: what a 0 given means and how to ask for it (the command line's words)."""
+    """A number with an optional unit of ``kind`` (:func:`bearingload.units.parse_quantity`); a
+    number given without a unit is read as the command line reads a bare number, its
+    plausibility for the quantity checked the same way; ``at_zero``: what a 0 given means and
+    how to ask for it (the command line's words)."""
 
     def read(value: Any, name: str) -> float:
         from bearingload.units import BASE_UNIT, parse_quantity
 
-        number = parse_quantity(_text_or_number(value, name), kind, parameter=name)
+        number = parse_quantity(_as_text(value, name), kind, parameter=name)
         if positive and not number > 0:
             hint = f": {at_zero}" if at_zero and number == 0 else ""
             raise InputError(name, f"must be greater than 0 {BASE_UNIT[kind]} (got {value}){hint}")
@@ -65,17 +67,20 @@ def choice(*allowed: str, case: str | None = None) -> Reader:
 
 
 def text(value: Any, name: str) -> str:
-    """A text as given (a designation, a fit class, an oil grade, a maker)."""
+    """A text as given (a designation, a fit class, an oil grade, a maker), not empty."""
     if not isinstance(value, str):
         raise InputError(name, f"must be a text, got {value!r}")
+    if not value.strip():
+        raise InputError(name, "must not be empty")
     return value
 
 
 def count(value: Any, name: str) -> int:
     """A whole number (the balls)."""
-    if isinstance(value, bool) or not float(_float(value, name)).is_integer():
+    number = _float(value, name)
+    if not number.is_integer():
         raise InputError(name, f"must be a whole number, got {value!r}")
-    return int(_float(value, name))
+    return int(number)
 
 
 def flag(value: Any, name: str) -> bool:
@@ -87,14 +92,14 @@ def flag(value: Any, name: str) -> bool:
 
 def stiffness(value: Any, name: str) -> str:
     """The stiffness as written: its unit is checked against the exponent later."""
-    return _text_or_number(value, name) if isinstance(value, str) else repr(_float(value, name))
+    return _as_text(value, name)
 
 
 def _reader(module: str, function: str) -> Reader:
     def read(value: Any, name: str) -> Any:
         import importlib
 
-        return getattr(importlib.import_module(module), function)(_text_or_number(value, name))
+        return getattr(importlib.import_module(module), function)(_as_text(value, name))
 
     return read
 
@@ -104,7 +109,7 @@ def _named(module: str, function: str) -> Reader:
         import importlib
 
         parse = getattr(importlib.import_module(module), function)
-        return parse(_text_or_number(value, name), parameter=name)
+        return parse(_as_text(value, name), parameter=name)
 
     return read
 
@@ -123,18 +128,36 @@ def exponent(value: Any, name: str) -> float:
 
 
 def _float(value: Any, name: str) -> float:
-    if isinstance(value, bool):
+    """A real number given as a Python or numpy scalar (or its text), finite."""
+    import math
+    import numbers
+
+    if isinstance(value, str):
+        try:
+            number = float(value)
+        except ValueError:
+            raise InputError(name, f"must be a number, got {value!r}") from None
+    elif isinstance(value, numbers.Real) and not isinstance(value, bool):
+        try:
+            number = float(value)
+        except OverflowError:
+            raise InputError(name, "is too large for a number of this package") from None
+    elif getattr(value, "shape", None) is not None:
+        raise InputError(name, "analyse takes one case: give a number, not an array")
+    else:
         raise InputError(name, f"must be a number, got {value!r}")
-    try:
-        return float(value)
-    except (TypeError, ValueError):
-        raise InputError(name, f"must be a number, got {value!r}") from None
+    if not math.isfinite(number):
+        raise InputError(name, f"must be a finite number, got {number}")
+    return number
 
 
-def _text_or_number(value: Any, name: str) -> Any:
-    if isinstance(value, bool) or not isinstance(value, (str, int, float)):
-        raise InputError(name, f"must be a number or a text with a unit, got {value!r}")
-    return value
+def _as_text(value: Any, name: str) -> str:
+    """The text the command line would read for ``value``: a string as it is, a number (a
+    Python or numpy scalar) as the bare number it is."""
+    if isinstance(value, str):
+        return value
+    number = _float(value, name)
+    return str(int(number)) if number.is_integer() and abs(number) < 1e16 else repr(number)
 
 
 #: Every input of a case by its library name -> its reader.

@@ -12,7 +12,7 @@ from typing import Any
 ENGINES = ("radial", "combined", "pair")
 
 
-@dataclass(frozen=True)
+@dataclass(frozen=True, eq=False)
 class Solution:
     """The solved cases of one analysis.
 
@@ -26,9 +26,11 @@ class Solution:
     service : tuple or None
         The service lives of each case, or of each bearing of a pair (None: a ring by hand).
 
-    Every key of a case of :meth:`to_dict` is an attribute too: ``solution.max_ball_load`` is
-    ``solution.to_dict()["cases"][0]["max_ball_load"]`` for one case, the list of the cases'
-    values for several.
+    Every key of a case of :meth:`to_dict` is an attribute too: ``solution.q_max`` is
+    ``solution.to_dict()["cases"][0]["q_max"]`` for one case, the list of the cases' values for
+    several; but ``engine``, ``cases``, ``service``, ``warnings`` and ``units`` are the
+    solution's own (the cases' warnings are ``to_dict()["cases"][i]["warnings"]``). Two
+    solutions compare by identity.
     """
 
     engine: str
@@ -118,5 +120,9 @@ class Solution:
 
         if self.engine == "pair":
             raise ValueError("the figure draws the ball loads of one bearing, not of a pair")
+        if self.engine == "radial" and all(c.result.method != "exact" for c in self.cases):
+            raise ValueError(
+                "the figure draws the ball loads of the exact model; this method has none"
+            )
         draw = plots.combined_loads_figure if self.engine == "combined" else plots.solve_figure
         return draw(list(self.cases))

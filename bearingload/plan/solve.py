@@ -70,6 +70,9 @@ def solve_case(
     from bearingload.models.registry import list_methods
 
     check_revolutions(revolutions)
+    allowed = (*list_methods(), "all")
+    if method not in allowed:
+        raise InputError("method", f"unknown method {method!r}; allowed: {', '.join(allowed)}")
     case, engine, at_speed = engine_of(case, method, revolutions)
     methods = list_methods() if method == "all" else [method]
     if engine == "pair":
@@ -130,7 +133,7 @@ def refuse_radial_options(method: str, revolutions: float | None) -> None:
             "method",
             "at 'speed' the ball dynamics of a ball bearing are solved by the exact model only "
             "(the combined engine at F_a = 0)",
-            way_out=f"give 'quasi_static' for the static model, where method {method} is allowed",
+            way_out=f"give 'quasi_static' for the static model, where 'method' {method} is allowed",
         )
     refuse_revolutions(
         revolutions,
@@ -262,12 +265,12 @@ def speed_hint(exc: InputError, radial: bool) -> InputError | None:
     """A refusal of the ball dynamics with the way to the static engine: a speed too high, or
     loads too light for the ball dynamics where the radial engine would take them (``radial``:
     F_a = 0 was set for a radial case, no axial load given)."""
-    from bearingload.models.combined import RADIAL_TAKES_ANY_LOAD, TOO_LIGHT
+    from bearingload.models.combined import TOO_LIGHT
     from bearingload.models.high_speed import too_fast
 
     if too_fast(exc):
         return exc.with_way_out(STATIC_AT_ANY_SPEED)
-    if exc.reason != TOO_LIGHT or exc.way_out != RADIAL_TAKES_ANY_LOAD:
+    if exc.reason != TOO_LIGHT:
         return None
     way = (
         "'quasi_static' gives the static radial engine, which takes any load"
@@ -312,15 +315,14 @@ def _pair(case: Case, method: str, spell: Any) -> Solution:
 def pair_speed_hint(exc: ConvergenceError | InputError) -> Exception | None:
     """A pair at speed the ball dynamics leave unbalanced, refuse as too light (the library's
     way out) or as too fast, with the way to the static model; None for another refusal."""
-    from bearingload.models.combined import TOO_LIGHT
     from bearingload.models.high_speed import too_fast
-    from bearingload.models.pair_speed import STATIC_WAY
+    from bearingload.models.pair_speed import TOO_LIGHT_PAIR
 
     if isinstance(exc, ConvergenceError):
         return exc.with_way_out(STATIC_PAIR_WAY)
     if too_fast(exc):
         return exc.with_way_out(STATIC_AT_ANY_SPEED)
-    if exc.reason != TOO_LIGHT or exc.way_out != STATIC_WAY:
+    if exc.reason != TOO_LIGHT_PAIR:
         return None
     return exc.with_way_out(STATIC_PAIR_WAY)
 

@@ -56,6 +56,8 @@ INPUT_KEYS = (
 ANSWER_KEYS = (
     *RESULT_KEYS,  # a mounted bearing's operating clearance and its reductions
     "q_max",
+    "k",
+    "K_Q",
     "loaded_balls",
     "p_max_inner",
     "p_max_outer",
@@ -256,6 +258,20 @@ DYNAMICS_NOTE = (
 )
 
 
+#: How a radial load alone on the combined engine gives the radial engine's k and K_Q.
+RADIAL_FACTORS_NOTE = (
+    "k = Q_max/F_r and K_Q = k z/2 as the radial engine gives them (a radial load alone)."
+)
+#: How a radial load alone at speed gives the radial engine's k and K_Q.
+RADIAL_AT_SPEED_NOTE = (
+    "k = Q_max/F_r and K_Q = k z/2 as the radial engine gives them, from the inner contacts, "
+    "which carry the shaft's load (the outer ones also carry each ball's centrifugal force); "
+    "the static model's load zone (the arc where the ring's displacement closes the "
+    "clearance) has no counterpart when every ball presses the outer ring: balls carrying "
+    "load counts the loaded inner contacts."
+)
+
+
 def _summary(records: Sequence[dict[str, Any]], bearing: Any, dynamics: str | None = None) -> Table:
     keys = _present(records, ANSWER_KEYS)
     if len({r["clearance"] for r in records}) > 1:
@@ -268,6 +284,8 @@ def _summary(records: Sequence[dict[str, Any]], bearing: Any, dynamics: str | No
         notes[1], notes[len(NOTES)] = ANGULAR_NOTE, ANGULAR_STATIC_NOTE
     if dynamics is not None:
         notes.append(DYNAMICS_NOTE.format(dynamics))
+    if "k" in keys:
+        notes.append(RADIAL_AT_SPEED_NOTE if dynamics is not None else RADIAL_FACTORS_NOTE)
     return Table(_title(records), columns, rows, notes)
 
 

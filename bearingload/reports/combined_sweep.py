@@ -125,7 +125,7 @@ def _density(s: CombinedSweep) -> dict[str, float]:
     """The ball density of the ball dynamics, as solve gives it (``ball_density`` [kg/m^3]);
     none for the static model."""
     density = getattr(s.result, "ball_density", None)
-    return {} if density is None else {"ball_density": float(np.ravel(density)[0]) * 1e9}
+    return {} if density is None else {"ball_density": float(np.ravel(density)[0])}
 
 
 def rows(s: CombinedSweep) -> list[dict[str, Any]]:

@@ -117,7 +117,7 @@ def conditions(t: LifeAgainstClearance) -> dict[str, Any]:
 def all_conditions(t: LifeAgainstClearance, service: Sequence[Any] | None) -> dict[str, Any]:
     """The table's conditions, those of the service lives and, with the ball dynamics, the
     ball density [kg/m^3] (as solve's json and csv give it)."""
-    density = {} if t.ball_density is None else {"ball_density": t.ball_density * 1e9}
+    density = {} if t.ball_density is None else {"ball_density": t.ball_density}
     return conditions(t) | service_conditions(service) | density
 
 
@@ -235,7 +235,7 @@ def _speed_model(t: LifeAgainstClearance, service: Sequence[Any] | None) -> dict
 def _speed_notes(t: LifeAgainstClearance, service: Sequence[Any] | None) -> list[str]:
     """The note naming the model at a speed (none without one)."""
     if t.model is not None and t.ball_density is not None:
-        return [DYNAMICS_NOTE.format(t.model, t.ball_density * 1e9)]
+        return [DYNAMICS_NOTE.format(t.model, t.ball_density)]
     return list(_speed_model(t, service).values())
 
 

@@ -274,7 +274,9 @@ CSV_APPLIED = tuple(f"pair_{k}" for k in ("load", "axial_load", "moment", "momen
 def _own_keys() -> tuple[str, ...]:
     from bearingload.reports.combined import ANSWER_KEYS, INPUT_KEYS
 
-    return tuple(k for k in dict.fromkeys(INPUT_KEYS + ANSWER_KEYS) if k not in CSV_INPUTS)
+    radial = ("k", "K_Q")  # a radial load alone on one bearing: never a pair's bearing
+    keys = dict.fromkeys(INPUT_KEYS + ANSWER_KEYS)
+    return tuple(k for k in keys if k not in CSV_INPUTS and k not in radial)
 
 
 #: A bearing's own csv columns (those of a single bearing's case but the pair's inputs), in

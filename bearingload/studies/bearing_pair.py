@@ -90,7 +90,7 @@ def solve_bearing_pair(
     speed, ball_density : float, optional
         Shaft speed [rpm]: every ball's centrifugal force and gyroscopic moment are included
         (:mod:`bearingload.models.pair_speed`); None: the static model. Ball density
-        [kg/mm^3], default bearing steel.
+        [kg/m^3], default bearing steel.
     """
     return solve_bearing_pairs(
         b, load, axial_load, arrangement=arrangement, preload=preload, width=width,

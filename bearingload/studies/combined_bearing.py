@@ -97,7 +97,7 @@ def solve_combined_bearing(
     speed, ball_density : float, optional
         Shaft speed [rpm] of the inner ring: the balls' centrifugal force and gyroscopic
         moment are included (:mod:`bearingload.models.high_speed`); None: the static model.
-        Ball density [kg/mm^3], default bearing steel.
+        Ball density [kg/m^3], default bearing steel.
 
     Raises
     ------
@@ -292,7 +292,7 @@ def solve_on_bearing(
         R_i. [mm]
     speed, ball_density : float, optional
         Inner ring speed [rpm]: the ball dynamics of :mod:`bearingload.models.high_speed`
-        (outer-raceway control) are included; ball density [kg/mm^3], default steel.
+        (outer-raceway control) are included; ball density [kg/m^3], default steel.
 
     Raises
     ------
@@ -493,12 +493,12 @@ def combined_columns(c: CombinedCase) -> dict[str, Any]:
 
 
 def _density(r: CombinedDistribution, n: int) -> dict[str, Any]:
-    """``ball_density`` [kg/m^3] of the ball dynamics at speed (the result's kg/mm^3 times 1e9,
-    as solve's --ball-density and batch's ball_density take it); nothing for a static solve."""
+    """``ball_density`` [kg/m^3] of the ball dynamics at speed (the result's, as solve's
+    --ball-density and batch's ball_density take it); nothing for a static solve."""
     density = getattr(r, "ball_density", None)
     if density is None:
         return {}
-    return {"ball_density": np.broadcast_to(np.asarray(density, dtype=float) * 1e9, (n,))}
+    return {"ball_density": np.broadcast_to(np.asarray(density, dtype=float), (n,))}
 
 
 def case_columns(
@@ -544,6 +544,7 @@ def case_columns(
         "free_contact_angle": arr(r.free_contact_angle),
         "axial_play": arr(r.axial_play),
         "q_max": arr(r.q_max),
+        **({} if b.contact_angle is not None else radial_factors(r, misalignment, moment_cross)),
         "loaded_balls": arr(r.loaded_balls, np.int64),
         "x": arr(r.x),
         "y": arr(r.y),
@@ -559,6 +560,22 @@ def case_columns(
         "rating_life": arr(rating_life),
         "reference_rating_life": arr(reference_rating_life),
     }
+
+
+def radial_factors(r: CombinedDistribution, misalignment: Any, moment_cross: Any) -> dict[str, Any]:
+    """The radial engine's load factor k = Q_max/F_r and load concentration K_Q = k z/2 of a
+    deep-groove bearing under a radial load alone (no thrust, moment or misalignment; at a speed
+    Q_max is the heaviest inner contact's, which carries the shaft's load), so that a radial case
+    keeps them on the combined engine (the ball dynamics at a speed, or a thrust of 0 given);
+    nothing for another load."""
+    loads = [np.asarray(v, dtype=float) for v in (r.axial_load, r.moment)]
+    if moment_cross is not None:
+        loads.append(np.asarray(moment_cross, dtype=float))
+    f_r = np.asarray(r.load, dtype=float)
+    if misalignment is not None or any(np.any(v != 0) for v in loads) or np.any(f_r <= 0):
+        return {}
+    k = np.atleast_1d(np.asarray(r.q_max, dtype=float) / f_r)
+    return {"k": k, "K_Q": k * np.asarray(r.balls, dtype=float) / 2.0}
 
 
 def largest_loaded_angle(r: CombinedDistribution) -> Any:

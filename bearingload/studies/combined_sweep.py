@@ -200,7 +200,7 @@ def combined_sweep(
         Inner ring speed [rpm]: every position solved with the ball dynamics of
         :mod:`bearingload.models.high_speed` (each ball's centrifugal force and gyroscopic
         moment, outer-raceway control), as ``solve --speed`` solves one; the lives also in
-        hours at it. Ball density [kg/mm^3], default steel. None: the static model.
+        hours at it. Ball density [kg/m^3], default steel. None: the static model.
 
     Returns
     -------

@@ -85,7 +85,7 @@ class LifeAgainstClearance:
         The ball dynamics the rows were solved with at a speed (the result's ``model`` of
         :mod:`bearingload.models.high_speed`); None: the static model.
     speed, ball_density : float or None
-        Shaft speed [rpm] and ball density [kg/mm^3] of the ball dynamics; None: the static
+        Shaft speed [rpm] and ball density [kg/m^3] of the ball dynamics; None: the static
         model.
     heaviest_contact_angle : ndarray or None
         Each row's contact angle of its heaviest ball (the film's, as solve's). [°]
@@ -118,13 +118,14 @@ class LifeAgainstClearance:
 
 
 def default_clearances(bearing: ResolvedBearing) -> np.ndarray:
-    """The rows' clearances for ``bearing``: :data:`CLEARANCES_UM` scaled by the C5 maximum of
-    ISO 5753-1 at its bore over that at 25 mm, to 0.1 um. [mm]
+    """The rows' clearances for ``bearing``: :data:`CLEARANCES_UM` scaled by the largest class's
+    maximum of ISO 5753-1 at its bore (C5; C3 up to a 6 mm bore) over the C5 maximum at 25 mm,
+    to 0.1 um. [mm]
 
     A hand-given ball set has no bore: it is taken as d_m - 1.5 D_w (6205: 26.6 mm for 25 mm;
     6305 and 306 within 3 mm), clamped to the bores of the clearance table (6 to 400 mm).
     """
-    from bearingload.bearings.clearance import clearance_range, table
+    from bearingload.bearings.clearance import largest_class, table
 
     rows = table()
     if bearing.geometry is not None:
@@ -133,7 +134,7 @@ def default_clearances(bearing: ResolvedBearing) -> np.ndarray:
         assert bearing.pitch_diameter is not None and bearing.ball_diameter is not None
         bore = bearing.pitch_diameter - 1.5 * bearing.ball_diameter
     bore = min(max(bore, rows[0].bore_over + 1e-9), rows[-1].bore_incl)
-    scale = clearance_range(bore, "C5")[1] / REFERENCE_C5_MAX
+    scale = largest_class(bore)[1] / REFERENCE_C5_MAX
     values = np.round(np.asarray(CLEARANCES_UM, dtype=float) * scale, 1)
     return np.unique(values) * 1e-3
 
@@ -179,7 +180,7 @@ def life_against_clearance(
     speed, ball_density : float, optional
         Inner ring speed [rpm]: every row with the ball dynamics (centrifugal force, gyroscopic
         moment; :mod:`bearingload.models.high_speed`), as ``solve --speed``; ball density
-        [kg/mm^3], default bearing steel. None: the static model.
+        [kg/m^3], default bearing steel. None: the static model.
 
     Returns
     -------
@@ -283,7 +284,7 @@ def _heaviest_angle(r: Any) -> np.ndarray:
 
 
 def _density(r: Any) -> float | None:
-    """The ball density of the ball dynamics solved in ``r`` [kg/mm^3]; None: static."""
+    """The ball density of the ball dynamics solved in ``r`` [kg/m^3]; None: static."""
     density = getattr(r, "ball_density", None)
     return None if density is None else float(np.asarray(density).flat[0])
 

@@ -67,7 +67,7 @@ def life_against_preload(
 ) -> LifeAgainstPreload:
     """Solve the pair of two bearings ``bearing`` at every preload of ``preloads`` [N] in one
     vectorised call; each row the pair ``solve`` gives at that preload. ``speed`` [rpm] (not
-    None): with the ball dynamics of both bearings, ``ball_density`` [kg/mm^3] (None: bearing
+    None): with the ball dynamics of both bearings, ``ball_density`` [kg/m^3] (None: bearing
     steel). The other arguments are those of
     :func:`bearingload.studies.bearing_pair.solve_bearing_pair`.
 

@@ -121,7 +121,7 @@ def pair_sweep(
 
     The arguments are those of :func:`bearingload.studies.bearing_pair.solve_bearing_pair`
     (the cage angle is what turns; ``speed`` [rpm]: every position with the ball dynamics of
-    both bearings, and the pair's L10r in hours at it; ``ball_density`` [kg/mm^3]) and
+    both bearings, and the pair's L10r in hours at it; ``ball_density`` [kg/m^3]) and
     ``steps`` (2 to 1 000 000, both ends included).
 
     >>> from bearingload.bearings.resolve import resolve_bearing

@@ -46,11 +46,11 @@ def rotating_refusal(b: ResolvedBearing, dynamic_rating: float | None, method: s
     if b.kind != "ball":
         return f"L10r is computed for ball bearings only ({b.designation} is a {b.kind} bearing)"
     if not b.has_geometry:
-        return "L10r needs the ball geometry (a BEARING, or --ball-diameter and --pitch-diameter)"
+        return "L10r needs the ball geometry (a bearing, or 'ball_diameter' and 'pitch_diameter')"
     if not (dynamic_rating or b.C):
-        return "L10r needs the dynamic load rating C_r: give --dynamic-rating"
+        return "L10r needs the dynamic load rating C_r: give 'dynamic_rating'"
     if method != "exact":
-        return f"L10r needs the exact ball loads (--method {method} gives none)"
+        return f"L10r needs the exact ball loads ('method' {method} gives none)"
     return None
 
 
