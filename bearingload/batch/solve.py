@@ -432,14 +432,22 @@ def _solve_rings(
     from bearingload.bearings.clearance import clearance_length
     from bearingload.studies.loaded_bearing import case_columns, solve_ring
 
-    balls = np.array(taken(cols, "balls", idx), dtype=float)
-    clearance = [g if isinstance(g, float) else clearance_length(g)
-                 for g in taken(cols, "clearance", idx, 0.0)]  # fmt: skip
-    (lc,) = solve_ring([key[1]], balls, np.array(taken(cols, "load", idx), dtype=float),
-                       np.array(taken(cols, "stiffness", idx), dtype=float),
-                       np.array(clearance, dtype=float),
-                       cage_angles(taken(cols, "cage_angle", idx, 0.0), balls),
-                       np.array(taken(cols, "exponent", idx, 1.5), dtype=float))  # fmt: skip
+    def floats(name: str, default: Any = None) -> np.ndarray:
+        return np.array(taken(cols, name, idx, default), dtype=float)
+
+    balls = floats("balls")
+    given = taken(cols, "clearance", idx, 0.0)
+    clearance = [g if isinstance(g, float) else clearance_length(g) for g in given]
+    angles = cage_angles(taken(cols, "cage_angle", idx, 0.0), balls)
+    (lc,) = solve_ring(
+        [key[1]],
+        balls,
+        floats("load"),
+        floats("stiffness"),
+        np.array(clearance, dtype=float),
+        angles,
+        floats("exponent", 1.5),
+    )
     return case_columns(lc) | {"warnings": list(lc.warnings)}
 
 
