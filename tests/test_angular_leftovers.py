@@ -127,7 +127,7 @@ def test_batch_contact_angle_rows_equal_solve(capsys, tmp_path):
     ("cells", "reason"),
     [("13,7.938,38.5,2kN,1kN,70,", "contact_angle: must be from 0 to 60°"),
      ("13,7.938,38.5,2kN,-1kN,40,", "axial_load: must be >= 0 N for an angular-contact"),
-     ("13,7.938,38.5,2kN,1kN,40,10um", "clearance: must be blank with a contact_angle")],
+     ("13,7.938,38.5,2kN,1kN,40,10um", "clearance: cannot be used with 'contact_angle'")],
 )  # fmt: skip
 def test_batch_contact_angle_refusals_skip_the_row_with_its_reason(capsys, tmp_path, cells, reason):
     path = tmp_path / "cases.csv"

@@ -285,7 +285,7 @@ def test_a_tilt_radius_without_a_combined_load_is_refused_for_its_row():
     assert [r["row"] for r in _rows(out.stdout)] == ["2", "4", "5"]
     lines = [x for x in out.stderr.splitlines() if "row 3" in x]
     assert len(lines) == 1 and f"row 3: tilt_radius: {reason}" in lines[0], out.stderr
-    assert "(axial_load, moment, moment_cross, misalignment) tilts the ring" in lines[0]
+    assert "('axial_load', 'moment', 'moment_cross', 'misalignment') tilts the ring" in lines[0]
     strict = _batch(text, "--format", "csv", "--strict")
     assert strict.exit_code == 2 and "tilt_radius" in strict.stderr
 

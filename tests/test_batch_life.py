@@ -159,10 +159,10 @@ def test_bad_life_cells_are_named_rows():
     assert out.exit_code == 1
     errors = out.stderr.splitlines()
     assert errors[0].startswith("Warning: row 2: viscosity: needs the shaft speed")
-    assert errors[1].startswith("Warning: row 3: reliability: must lie between 90 and 99.95")
-    assert errors[2].startswith("Warning: row 4: eC: e_C must lie between 0 and 1")
+    assert errors[1].startswith("Warning: row 3: reliability: must be in [90, 99.95]")
+    assert errors[2].startswith("Warning: row 4: eC: must be in [0, 1]")
     assert errors[3].startswith("Warning: row 5: contamination: unknown level 'dirty'")
-    assert errors[4].startswith("Warning: row 6: pressure_viscosity: must lie between 1 and 100")
+    assert errors[4].startswith("Warning: row 6: pressure_viscosity: must be in [1, 100]")
     assert errors[5].startswith("Warning: row 7: roughness: a bare 0.2 is 0.2 mm, implausible")
     assert errors[6].startswith("Warning: row 8: speed: must be greater than 0 rpm")
     assert [r["row"] for r in _rows(out.stdout)] == ["9"]
@@ -187,7 +187,7 @@ def test_life_cells_solve_refuses_skip_their_row_only():
     errors = out.stderr.splitlines()
     for row, name in enumerate(("eC", "contamination", "fatigue_load_limit", "roughness"), 2):
         assert errors[row - 2].startswith(f"Warning: row {row}: {name}: feeds the modified life")
-    assert errors[4].startswith("Warning: row 6: eC: give a contamination level or eC, not both")
+    assert errors[4].startswith("Warning: row 6: eC: give a contamination level or e_C, not both")
     assert errors[5].startswith("Warning: row 7: roughness: must lie between 1e-07 and 0.1 mm")
     assert errors[6].startswith("Warning: row 8: roughness: must lie between 1e-07 and 0.1 mm")
     assert [r["row"] for r in _rows(out.stdout)] == ["9"]
@@ -209,14 +209,14 @@ def test_pressure_viscosity_without_a_viscosity_is_refused_as_in_solve():
     text = "bearing,load,speed,viscosity,pressure_viscosity\n6205,1kN,3000,,5\n6205,1kN,3000,20,5\n"
     out = _batch(text, "--format", "csv")
     assert out.exit_code == 1
-    assert out.stderr.startswith("Warning: row 2: pressure_viscosity: feeds the modified life")
+    assert out.stderr.startswith("Warning: row 2: pressure_viscosity: feeds the film, which needs")
     assert [r["row"] for r in _rows(out.stdout)] == ["3"]
 
 
 def test_a_ring_by_hand_refuses_life_cells():
     out = _batch("balls,stiffness,load,speed\n8,1e5,1kN,3000\n", "--format", "csv")
     assert out.exit_code == 1
-    assert "speed: needs a bearing or a ball geometry" in out.stderr
+    assert "speed: needs a bearing designation or the ball geometry" in out.stderr
 
 
 def test_a_speed_whose_hours_overflow_skips_its_row_only():

@@ -239,7 +239,11 @@ def test_an_oil_without_speed_or_bearing_is_refused_naming_its_column():
     assert errors[0] == (
         "Warning: row 2: viscosity_40: needs the shaft speed ('speed') for the rated viscosity nu_1"
     )
-    assert errors[1] == "Warning: row 3: speed: needs a bearing or a ball geometry"
+    assert errors[1] == (
+        "Warning: row 3: speed, viscosity_40, temperature: need a bearing designation or the "
+        "ball geometry ('ball_diameter' and 'pitch_diameter'): with 'balls' and 'stiffness' "
+        "alone they would be ignored"
+    )
     assert [r["row"] for r in csv.DictReader(io.StringIO(out.stdout))] == ["4"]
     assert _run("solve", "6205", "-F", "1kN", "--viscosity-40", "68", "--temperature",
                 "70").exit_code == 2  # fmt: skip

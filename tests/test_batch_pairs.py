@@ -151,11 +151,10 @@ def test_bad_rows_are_skipped_with_their_reason_the_others_written():
     assert besides_tilt(out.stderr) == [
         "Warning: row 2: arrangement: missing: a file of pairs gives each row's arrangement "
         "(DB, DF or DT) or a designation with it (7205BDB)",
-        "Warning: row 3: arrangement: a pair DB is two angular-contact ball bearings: give an "
-        "angular-contact designation (7205B, 7205BDB) or a ring by hand with its contact_angle",
+        "Warning: row 3: arrangement: a pair DB is two angular-contact ball bearings; give an "
+        "angular-contact designation (7205B, 7205BDB) or a ring by hand with 'contact_angle'",
         "Warning: row 4: arrangement: DT contradicts the designation '7205BDB' (a DB pair)",
-        "Warning: row 5: arrangement: 'XX': give DB (back-to-back), DF (face-to-face) or DT "
-        "(tandem)",
+        "Warning: row 5: arrangement: 'XX' is not one of DB, DF, DT",
         "Warning: row 6: preload: a tandem pair (DT) is not preloaded in itself: both bearings "
         "face the same way, so it is preloaded against another bearing; give 0, or use DB or DF",
         "Warning: row 7: preload: must be 0 N or more (got -1 N)",
@@ -277,3 +276,20 @@ def test_the_vectorised_call_gives_each_case_as_alone():
                         assert value == theirs[key], key
             assert pc.warnings == one.warnings
             assert pc.result.x == one.result.x and pc.result.axial == one.result.axial
+
+
+def test_a_preload_contradicting_the_designations_class_is_refused_in_any_row_order():
+    """A row's plan is kept for the rows that differ from it only in their numbers; a preload
+    is no such number: the class the designation carries (7205CDBL) refuses a force beside it
+    whichever row comes first."""
+    head = "bearing,load,axial_load,preload\n"
+    good, bad = "7205CDBL,1kN,300N,L\n", "7205CDBL,1kN,300N,500N\n"
+    for rows, refused in (((good, bad), "3"), ((bad, good), "2")):
+        found = CliRunner().invoke(
+            main, ["batch", "-", "--format", "json"], input=head + "".join(rows)
+        )
+        doc = json.loads(found.stdout)
+        ((skipped),) = doc["skipped"]
+        assert str(skipped["row"]) == refused
+        assert skipped["reason"].startswith("preload: 500 N contradicts the designation")
+        assert len(doc["cases"]) == 2  # the good row's two bearings

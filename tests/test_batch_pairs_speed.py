@@ -130,15 +130,14 @@ def test_cells_the_dynamics_cannot_take_skip_their_row_with_solves_reason():
     good = CASES[0][0]
     bad = [
         (dict(good, speed="", viscosity="", reliability="", roughness="", ball_density="3200"),
-         "ball_density: it enters the ball dynamics at a speed, which quasi_static true or a "
-         "missing speed leave out"),
+         "ball_density: it enters the ball dynamics at 'speed', which 'quasi_static' or a "
+         "missing 'speed' leave out"),
         (dict(good, speed="", viscosity="", reliability="", roughness="", quasi_static="true"),
-         "quasi_static: it needs a speed (true: the static model at that speed, which then "
-         "gives the lives in hours only)"),
+         "quasi_static: it needs 'speed'"),
         (dict(good, speed="90000"),
          "speed: n d_m must be at most 2e+06 mm/min for the ball-dynamics model (n = 90000 rpm "
          "with d_m = 38.5 mm: at most 51948.05195 rpm; beyond, ring expansion, cage and "
-         "lubricant forces it leaves out matter); quasi_static true gives the static model at "
+         "lubricant forces it leaves out matter); 'quasi_static' gives the static model at "
          "any speed (the lives in hours)"),
     ]  # fmt: skip
     out = _batch(_file([good, *(c for c, _ in bad)]), "--format", "csv")
@@ -156,8 +155,8 @@ def test_outer_ring_turning_at_speed_is_refused_and_quasi_static_gives_its_lives
     out = _batch(_file([cells], head), "--format", "csv")
     assert out.exit_code == 1
     assert out.stderr.splitlines()[0] == (
-        "Warning: row 2: rotating: the ball dynamics at a speed are coded for the inner ring "
-        "turning (docs/speed.md); set quasi_static true for the static model with the outer "
+        "Warning: row 2: rotating: the ball dynamics at 'speed' are coded for the inner ring "
+        "turning (docs/speed.md); give 'quasi_static' for the static model with the outer "
         "ring's lives"
     )
     quasi = _batch(_file([dict(cells, quasi_static="true")], head), "--format", "csv")

@@ -236,3 +236,36 @@ def test_a_revolutions_cell_is_read_as_solve_reads_revolutions():
         out = _run("batch", "-", "--format", "json", stdin=text)
         assert out.exit_code == 0, out.output
         assert json.loads(out.stdout)["cases"][0]["allowable_load"] == want
+
+
+def test_a_bare_number_implausible_for_the_rows_bearing_skips_the_row_as_solve_refuses_it():
+    """A bare load, axial load, moment or ball stiffness is judged against the row's bearing
+    (bearings.plausible, solve's rule for its options): the row is skipped with solve's reason;
+    the same number with a unit, in the cell or the header, is used as it is."""
+    text = (
+        "bearing,load,axial_load,moment,stiffness\n6205,3,,,\n6205,3kN,5,,\n6205,3kN,1kN,5,\n"
+        "6205,3kN,,,4700\n6205,3N,,,\n6205,3kN,0,0,\n"
+    )
+    out = _batch(text)
+    said = [line for line in out.stderr.splitlines() if "bare" in line]
+    for row, name in enumerate(("load", "axial_load", "moment", "stiffness"), start=2):
+        (line,) = [s for s in said if s.startswith(f"Warning: row {row}: {name}: a bare ")]
+        option = "--" + name.replace("_", "-")
+        cells = {"load": "3", "axial_load": "5", "moment": "5", "stiffness": "4700"}
+        solved = _run("solve", "6205", "-F", "3kN", option, cells[name])
+        assert solved.exit_code == 2 and line.split(": ", 3)[3] in solved.output, solved.output
+    assert [line.split(",", 1)[0] for line in out.stdout.splitlines()[1:]] == ["6", "7"]
+    header = _batch("bearing,load [N]\n6205,3\n")
+    assert header.exit_code == 0 and "bare" not in header.stderr
+
+
+def test_the_clearance_pick_range_is_refused_with_the_plans_reason():
+    """'range' solves three clearances side by side, which is solve's: a batch row (one output
+    row per case) is skipped with the plan's reason, as sweep and table refuse it."""
+    out = _batch("bearing,load,clearance,clearance_pick\n6205,1kN,C3,range\n6205,1kN,C3,max\n")
+    assert out.exit_code == 1
+    assert out.stderr.splitlines()[0] == (
+        "Warning: row 2: clearance_pick: 'range' (min, mean and max side by side) is solve's; "
+        "batch takes min, mean or max"
+    )
+    assert [line.split(",", 1)[0] for line in out.stdout.splitlines()[1:]] == ["3"]

@@ -172,18 +172,18 @@ REFUSED = [
     ({"axial_load": "500N", "speed": "3000", "quasi_static": "true", "ball_density": "3200"},
      "ball_density: it enters the ball dynamics",
      ["-A", "500N", "--speed", "3000", "--quasi-static", "--ball-density", "3200"]),
-    ({"axial_load": "500N", "quasi_static": "true"}, "quasi_static: it needs a speed",
+    ({"axial_load": "500N", "quasi_static": "true"}, "quasi_static: it needs 'speed'",
      ["-A", "500N", "--quasi-static"]),
     ({"speed": "3000", "quasi_static": "true", "ball_density": "3200"},
      "ball_density: it enters the ball dynamics",
      ["--speed", "3000", "--quasi-static", "--ball-density", "3200"]),
     ({"ball_density": "3200"}, "ball_density: it enters the ball dynamics",
      ["--ball-density", "3200"]),
-    ({"quasi_static": "TRUE"}, "quasi_static: it needs a speed", ["--quasi-static"]),
-    ({"axial_load": "500N", "speed": "3000", "ball_density": "0"}, "ball_density: must be greater",
+    ({"quasi_static": "TRUE"}, "quasi_static: it needs 'speed'", ["--quasi-static"]),
+    ({"axial_load": "500N", "speed": "3000", "ball_density": "0"}, "ball_density: must be in (0, 100000]",
      ["-A", "500N", "--speed", "3000", "--ball-density", "0"]),
     ({"axial_load": "500N", "speed": "3000", "ball_density": "2e5"},
-     "ball_density: must be greater", ["-A", "500N", "--speed", "3000", "--ball-density", "2e5"]),
+     "ball_density: must be in (0, 100000]", ["-A", "500N", "--speed", "3000", "--ball-density", "2e5"]),
     ({"axial_load": "500N", "speed": "3000", "ball_density": "3.2g/cm^3"},
      "ball_density: cannot read", ["-A", "500N", "--speed", "3000", "--ball-density", "3.2g/cm^3"]),
     ({"axial_load": "500N", "speed": "3000", "quasi_static": "1"}, "quasi_static: cannot read",
@@ -223,7 +223,9 @@ def test_a_given_stiffness_at_speed_is_refused_as_solve_refuses_it():
                                        "--pitch-diameter", "38.5", "-K", "1e5", "-F", "1kN",
                                        "-A", "200N", "--speed", "3000"])  # fmt: skip
     assert solved.exit_code == 2 and "Error: Invalid value for '--stiffness'" in solved.output
-    assert skipped["reason"].startswith("speed: the ball dynamics need each contact's Hertz")
+    assert skipped["reason"].startswith(
+        "stiffness: the ball dynamics at 'speed' need each contact's Hertz"
+    )
     assert "Hertz stiffness from the ball geometry" in solved.output
     quasi = _batch_json(_file([row | {"quasi_static": "true"}], (*head, "quasi_static")))
     assert quasi["skipped"] == [] and len(quasi["cases"]) == 1  # as solve --quasi-static

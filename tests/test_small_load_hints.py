@@ -65,15 +65,15 @@ def test_a_too_small_batch_row_at_speed_names_quasi_static(capsys, tmp_path):
     keeps the solver's hint."""
     path = tmp_path / "rows.csv"
     path.write_text(
-        "bearing,load,axial_load,speed\n6205,1e-9,,3000\n6205,1e-9,0,3000\n7205B,1e-9,,3000\n"
+        "bearing,load,axial_load,speed\n6205,1e-9N,,3000\n6205,1e-9N,0,3000\n7205B,1e-9N,,3000\n"
         "6205,1kN,,3000\n",
         encoding="utf-8",
     )
     code, _, err = run_entry(capsys, "batch", str(path), "--format", "csv")
     assert code == 1
     reasons = {w.split(":", 1)[0]: w for w in warnings_of(err) if w.startswith("row ")}
-    assert "quasi_static true gives the static radial engine" in reasons["row 2"]
-    assert "quasi_static true with the axial_load and moment cells blank" in reasons["row 3"]
+    assert "'quasi_static' gives the static radial engine" in reasons["row 2"]
+    assert "'quasi_static' without an axial load gives the static radial" in reasons["row 3"]
     # the angular-contact row: no radial solver can take it (as solve refuses it above)
     assert "angular-contact bearing is solved by this solver only" in reasons["row 4"]
     assert "radial solver" not in reasons["row 4"]
@@ -117,6 +117,6 @@ def test_a_radial_case_the_dynamics_cannot_balance_names_quasi_static(
     ((row, reason),) = [(s["row"], s["reason"]) for s in doc["skipped"]]
     assert code == 1 and row == 2 and "did not converge" in reason
     assert reason.endswith(
-        "quasi_static true gives the static radial engine (the ball dynamics left out)"
+        "'quasi_static' gives the static radial engine (the ball dynamics left out)"
     )
     assert [r["row"] for r in doc["cases"]] == [3]

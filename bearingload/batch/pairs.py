@@ -15,22 +15,19 @@ failing row stands alone, named; the others are written.
 
 from __future__ import annotations
 
-import dataclasses
 from typing import Any
 
 import numpy as np
 
-from bearingload.batch.read import row_message
+from bearingload.batch.read import SERVICE_COLUMNS, row_message
 from bearingload.batch.solve import (
-    FAST_WAY,
     BatchSolver,
     Chunk,
-    _angles,
-    _check_rotating,
-    _hand_angular,
-    _operating,
-    _take,
-    dynamics_of,
+    cage_angles,
+    check_load,
+    row_case,
+    taken,
+    with_oil_viscosity,
 )
 from bearingload.errors import BearingloadError, ConvergenceError, InputError
 
@@ -46,6 +43,7 @@ class PairSolver(BatchSolver):
                 bad: dict[int, str]) -> Chunk:  # fmt: skip
         from bearingload.bearings.oil import OIL_INPUTS
 
+        with_oil_viscosity(cols, [i for i in range(len(numbers)) if i not in bad], bad)
         solved = solve_pairs(self, cols, len(numbers), bad)
         out = Chunk()
         keys = [c.key for c in pair_columns(None)] + [k for k in OIL_INPUTS if k in cols]
@@ -75,41 +73,43 @@ def pair_columns(service: set[str] | None) -> list[Any]:
 
 def pair_key(solver: Any, v: dict[str, Any]) -> tuple[Any, ...]:
     """The group of a row of cells ``v`` (blank cells left out): (resolved bearing,
-    arrangement, width, rotating ring, C_r, a moment given, the tilt radius), checked as solve
-    checks a pair's options."""
-    from bearingload.plan.case import pair_of
+    arrangement, width, rotating ring, C_r, a moment given, the tilt radius, the ball
+    dynamics), planned once for the rows of the same plan; its load and bare numbers checked."""
+    b, *key = solver.planned(v, _pair_plan)
+    check_load(v)
+    tilted = "moment" in v or bool(v.get("moment_cross"))
+    return (b, *key[:4], tilted, *key[4:])
 
-    arrangement = v.get("arrangement")
-    if arrangement is not None and arrangement.strip().upper() not in ("DB", "DF", "DT"):
-        raise InputError(
-            "arrangement",
-            f"{v['arrangement']!r}: give DB (back-to-back), DF (face-to-face) or DT (tandem)",
-        )
-    if "bearing" in v:
-        single, arrangement, _ = pair_of(v["bearing"], arrangement, None)
-        v = v | {"bearing": single}
-    elif arrangement is not None:
-        arrangement = arrangement.strip().upper()
-    if arrangement is None:
+
+def _pair_plan(v: dict[str, Any]) -> tuple[Any, ...]:
+    """The group of a row of cells ``v`` but whether a moment is given, by the plan's rules for
+    a pair (:func:`~bearingload.plan.solve.engine_of`, :func:`~bearingload.plan.bearing.
+    pair_bearing`)."""
+    from bearingload.plan.bearing import check_rotating, pair_bearing
+    from bearingload.plan.inputs import READERS
+    from bearingload.plan.solve import engine_of
+
+    if "arrangement" in v:
+        v = v | {"arrangement": READERS["arrangement"](v["arrangement"], "arrangement")}
+    pair, engine, _ = engine_of(row_case(v))
+    if engine != "pair":
         raise InputError("arrangement", "missing: a file of pairs gives each row's arrangement "
                          "(DB, DF or DT) or a designation with it (7205BDB)")  # fmt: skip
-    if not any(k in v for k in ("bearing", "ball_diameter", "pitch_diameter")):
+    if pair.by_hand:
         raise InputError("bearing", "missing: a pair needs a bearing or its ball geometry")
-    b = solver._bearing(v)
-    if "contact_angle" in v:
-        b = _hand_angular(v, b)
-    if b.kind != "ball" or b.contact_angle is None:
-        raise InputError("arrangement", f"a pair {arrangement} is two angular-contact ball "
-                         "bearings: give an angular-contact designation (7205B, 7205BDB) or a "
-                         "ring by hand with its contact_angle")  # fmt: skip
-    _check_rotating(v, b, v.get("dynamic_rating"), "exact")
-    if "load" not in v:
-        raise InputError("load", "missing: every row needs a (radial) load, 0 allowed")
-    if not v["load"] >= 0:
-        raise InputError("load", f"must be 0 N or more (got {v['load']!r} N)")
-    tilted = "moment" in v or bool(v.get("moment_cross"))
-    return (b, arrangement, v.get("width"), v.get("rotating", "inner"), v.get("dynamic_rating"),
-            tilted, v.get("tilt_radius"), dynamics_of(v, b))  # fmt: skip
+    b = pair_bearing(pair)
+    check_rotating(pair, b, ["exact"])
+    dynamics = pair.dynamics_arguments()["speed"] is not None, pair.ball_density is not None
+    rotating = pair.rotating or "inner"
+    return (
+        b,
+        pair.arrangement,
+        pair.width,
+        rotating,
+        pair.dynamic_rating,
+        pair.tilt_radius,
+        dynamics,
+    )
 
 
 def row_preload(v: dict[str, Any], b: Any) -> float:
@@ -135,6 +135,7 @@ def solve_pairs(solver: Any, cols: dict[str, list[Any]], n: int,
         try:
             row = {k: c[i] for k, c in cols.items() if c[i] is not None}
             key = pair_key(solver, row)
+            solver.refuse_bare(row, i, key[0])
             preload = row_preload(row, key[0])
         except BearingloadError as exc:
             bad[i] = row_message(exc)
@@ -168,58 +169,49 @@ def _call(key: tuple[Any, ...], idx: list[int], cols: dict[str, list[Any]]) -> l
     from bearingload.studies.bearing_pair import solve_bearing_pairs
 
     b, arrangement, width, rotating, c_r, tilted, lever, (at_speed, density) = key
-    moment = np.array(_take(cols, "moment", idx, 0.0), dtype=float)
+    moment = np.array(taken(cols, "moment", idx, 0.0), dtype=float)
     dynamics: dict[str, Any] = {"speed": None, "ball_density": None}
     if at_speed:  # the ball dynamics of both bearings (ball_density as --ball-density, kg/m^3)
-        dynamics["speed"] = np.array(_take(cols, "speed", idx), dtype=float)
+        dynamics["speed"] = np.array(taken(cols, "speed", idx), dtype=float)
         if density:
-            dynamics["ball_density"] = np.array(_take(cols, "ball_density", idx), float)
+            dynamics["ball_density"] = np.array(taken(cols, "ball_density", idx), float)
     try:
         return solve_bearing_pairs(
-            b, np.array(_take(cols, "load", idx), dtype=float),
-            np.array(_take(cols, "axial_load", idx, 0.0), dtype=float), arrangement=arrangement,
-            preload=np.array(_take(cols, "preload", idx, 0.0), dtype=float), width=width,
-            cage_angle=_angles(_take(cols, "cage_angle", idx, 0.0), b.balls),
+            b, np.array(taken(cols, "load", idx), dtype=float),
+            np.array(taken(cols, "axial_load", idx, 0.0), dtype=float), arrangement=arrangement,
+            preload=np.array(taken(cols, "preload", idx, 0.0), dtype=float), width=width,
+            cage_angle=cage_angles(taken(cols, "cage_angle", idx, 0.0), b.balls),
             moment=moment if tilted else None,
-            moment_cross=np.array(_take(cols, "moment_cross", idx, 0.0), dtype=float),
+            moment_cross=np.array(taken(cols, "moment_cross", idx, 0.0), dtype=float),
             tilt_radius=lever, rotating=rotating, dynamic_rating=c_r, **dynamics,
         )  # fmt: skip
     except (InputError, ConvergenceError) as exc:
-        hinted = _quasi_static_hint(exc) if at_speed else None
+        from bearingload.plan.solve import pair_speed_hint
+
+        hinted = pair_speed_hint(exc) if at_speed else None
         if hinted is None:
             raise
         raise hinted from exc
 
 
-def _quasi_static_hint(exc: InputError | ConvergenceError) -> BearingloadError | None:
-    """A pair at speed the ball dynamics leave unbalanced, or refuse as too light, with the way
-    out in the batch's words (solve names --quasi-static); None for another refusal."""
-    from bearingload.models.high_speed import too_fast
-    from bearingload.models.pair_speed import TOO_LIGHT_PAIR
-
-    way = "quasi_static true gives the static model of the pair"
-    if isinstance(exc, ConvergenceError):
-        return exc.with_way_out(way)
-    if too_fast(exc):
-        return exc.with_way_out(FAST_WAY)
-    if exc.reason != TOO_LIGHT_PAIR:
-        return None
-    return exc.with_way_out(way)
-
-
-def pair_values(keys: list[str], solved: list[tuple[int, Any]], numbers: list[int],
-                cols: dict[str, list[Any]],
-                bad: dict[int, str]) -> tuple[list[int], dict[str, list[Any]]]:  # fmt: skip
+def pair_values(
+    keys: list[str],
+    solved: list[tuple[int, Any]],
+    numbers: list[int],
+    cols: dict[str, list[Any]],
+    bad: dict[int, str],
+) -> tuple[list[int], dict[str, list[Any]]]:
     """The output rows of the solved pairs (two per pair: its row number twice) and the values
     of the columns ``keys`` over them (None: blank), as solve gives the pair with the row's
-    service cells as its options: each bearing's lives from its own loads, the pair's from
-    them; ``warnings`` (the pair's, its speed's and its lives') on the first row of each pair;
-    each bearing's model and contacts (json: :data:`bearingload.batch.report.HELD_KEYS`), as a
-    combined file's rows. A row whose lives solve would refuse (a speed so small that its
-    life in hours overflows) goes to ``bad`` with its reason, the others are written."""
-    from bearingload.bearings.checks import speed_findings
+    service cells as its options (the plan's :func:`~bearingload.plan.solve.with_speed_warnings`
+    and :func:`~bearingload.plan.solve.service_lives`: each bearing's lives from its own loads,
+    the pair's from them); ``warnings`` (the pair's, its speed's and its lives') on the first
+    row of each pair; each bearing's model and contacts (json:
+    :data:`bearingload.batch.report.HELD_KEYS`), as a combined file's rows. A row whose lives
+    solve would refuse (a speed so small that its life in hours overflows) goes to ``bad`` with
+    its reason, the others are written."""
     from bearingload.bearings.oil import OIL_INPUTS
-    from bearingload.bearings.service_life import service_values
+    from bearingload.plan.solve import service_lives, with_speed_warnings
     from bearingload.reports.combined import contact_values
     from bearingload.reports.pair import csv_rows, pair_records
     from bearingload.reports.solve import printed_warnings
@@ -227,15 +219,14 @@ def pair_values(keys: list[str], solved: list[tuple[int, Any]], numbers: list[in
 
     keys = [k for k in keys if k != "row"]
     oil = [k for k in keys if k in OIL_INPUTS]  # written as given (the viscosity is nu's)
+    service_cells = [c for c in SERVICE_COLUMNS if c in cols and c not in OIL_INPUTS]
     rows: list[int] = []
     values: dict[str, list[Any]] = {k: [] for k in [*keys, "warnings"]}
     for i, pc in solved:
-        op = _row_operating(cols, i)
-        if op.speed is not None:  # above the catalogue's limiting speed, as solve warns
-            found = tuple(speed_findings(op.speed, pc.bearing))
-            pc = dataclasses.replace(pc, warnings=(*pc.warnings, *found))
+        case = row_case({c: cols[c][i] for c in service_cells if cols[c][i] is not None})
+        pc = with_speed_warnings([pc], case.speed)[0]
         try:
-            service = [service_values(op, combined_basis(c)) for c in pc.bearings]
+            service = service_lives(case, [combined_basis(c) for c in pc.bearings])
             pair, records = pair_records(pc, service)
         except BearingloadError as exc:
             bad[i] = row_message(exc)
@@ -250,12 +241,3 @@ def pair_values(keys: list[str], solved: list[tuple[int, Any]], numbers: list[in
             for k, v in held.items():
                 values.setdefault(k, []).append(v)
     return rows, values
-
-
-def _row_operating(cols: dict[str, list[Any]], i: int) -> Any:
-    """Row ``i``'s operating conditions (:class:`bearingload.bearings.service_life.Operating`,
-    numbers as floats), as solve's options give them."""
-    op = _operating(cols, [i])
-    given = {f.name: getattr(op, f.name) for f in dataclasses.fields(op)}
-    return dataclasses.replace(op, **{k: float(v[0]) for k, v in given.items()
-                                      if isinstance(v, np.ndarray)})  # fmt: skip

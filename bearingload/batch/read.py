@@ -16,7 +16,7 @@ from dataclasses import dataclass, field
 from typing import Any, BinaryIO
 
 from bearingload.bearings.mounting import MOUNTING_PARAMS
-from bearingload.errors import InputError
+from bearingload.errors import InputError, UnusedError
 
 #: Rows read, solved and written at a time (memory stays flat however long the file).
 CHUNK_ROWS = 10_000
@@ -79,27 +79,6 @@ COLUMNS: dict[str, str] = {
 SERVICE_COLUMNS = ("speed", "reliability", "oil", "viscosity_40", "viscosity_100",
                    "viscosity_index", "temperature", "viscosity", "contamination", "ec",
                    "fatigue_load_limit", "roughness", "pressure_viscosity")  # fmt: skip
-#: The ranges of the service columns' values, as the command line's options check them:
-#: column -> (low, high, closed at low, what the range is).
-SERVICE_RANGES: dict[str, tuple[float, float, bool, str]] = {
-    "static_rating": (0.0, float("inf"), False, "must be greater than 0 N"),
-    "fatigue_load_limit": (0.0, float("inf"), False, "must be greater than 0 N"),
-    "speed": (0.0, float("inf"), False, "must be greater than 0 rpm, or blank for a shaft at "
-              "rest: the static model, its lives in 10^6 revolutions"),
-    "viscosity": (0.0, float("inf"), False, "must be greater than 0 mm^2/s"),
-    "viscosity_40": (0.0, float("inf"), False, "must be greater than 0 mm^2/s"),
-    "viscosity_100": (0.0, float("inf"), False, "must be greater than 0 mm^2/s"),
-    "roughness": (0.0, float("inf"), False, "must be greater than 0 mm"),
-    "reliability": (90.0, 99.95, True, "must lie between 90 and 99.95 % (ISO 281 Table 12)"),
-    "ec": (0.0, 1.0, True, "e_C must lie between 0 and 1"),
-    "pressure_viscosity": (1.0, 100.0, True, "must lie between 1 and 100 1/GPa"),
-    "ball_density": (0.0, 1e5, False, "must be greater than 0 and at most 100000 kg/m^3 "
-                     "(bearing steel 7850, silicon nitride about 3200)"),
-}  # fmt: skip
-#: The ball dynamics at a speed (solve's --ball-density, --quasi-static): a combined row with a
-#: speed is solved with each ball's centrifugal force and gyroscopic moment unless quasi_static
-#: is true; ball_density in kg/m^3 (bare numbers, as the option).
-DYNAMICS_COLUMNS = ("ball_density", "quasi_static")
 #: The words of a flag column (case-insensitive; csv output writes True and False).
 FLAGS = {"true": True, "false": False}
 #: The load columns: a row with a cell in one of them is a combined-load case (3-D equilibrium),
@@ -120,18 +99,6 @@ NOT_COMBINED = ("method", "revolutions", "exponent")
 BEARING_COLUMNS = ("bearing", "ball_diameter", "pitch_diameter", "inner_conformity",
                    "outer_conformity", "modulus", "poisson", "ball_material", "clearance_pick",
                    "revolutions", *MOUNTING_PARAMS)  # fmt: skip
-#: Library parameter names -> the column of a batch file they come from: a skipped row's
-#: reason names the column the user wrote (as the command line names the option).
-_COLUMN_OF = {
-    "radial_load": "load",
-    "rollers": "balls",
-    "roller_diameter": "ball_diameter",
-    "f_i": "inner_conformity",
-    "f_o": "outer_conformity",
-    "pick": "clearance_pick",
-    "bore": "clearance",
-    "eC": "ec",
-}
 _HEADER = re.compile(r"^\s*([^\[\]]*?)\s*(?:\[\s*([^\]]*?)\s*\])?\s*$")
 
 
@@ -377,11 +344,17 @@ def _where(exc: UnicodeDecodeError) -> str:
 
 
 def row_message(exc: Exception) -> str:
-    """The reason a row is skipped, ``column: message``, from a library error."""
-    column = _COLUMN_OF.get(getattr(exc, "parameter", ""))
-    if column is None:
+    """The reason a row is skipped, ``column: message``, from a library error's fields (the
+    columns of inputs a case would ignore, or of an oil's inputs refused together, all named;
+    a model's name of an input, ``f_i``, as its column: :func:`bearingload.plan.inputs.
+    argument_of`)."""
+    if not isinstance(exc, InputError):
         return str(exc)
-    return f"{column}: {exc.message if isinstance(exc, InputError) else exc}"
+    from bearingload.plan.inputs import argument_of
+
+    names = [argument_of(n) for n in getattr(exc, "parameters", None) or (exc.parameter,)]
+    joint = ", " if isinstance(exc, UnusedError) else " / "
+    return f"{joint.join('eC' if n == 'e_c' else n for n in names)}: {exc.message}"
 
 
 def read_column(
@@ -575,6 +548,12 @@ def _exponent(text: str) -> float:
 
 
 def _choice(name: str, text: str) -> str:
+    """A clearance pick: min, mean or max (the pick 'range' refused by the plan's rule)."""
+    from bearingload.plan.bearing import refuse_range
+    from bearingload.plan.case import Case
+
+    if text == "range":
+        refuse_range(Case(clearance_pick=text), "batch")
     if text not in ("min", "mean", "max"):
         raise InputError(name, f"unknown pick {text!r}; allowed: min, mean, max")
     return text

@@ -1,8 +1,7 @@
-"""Solving the rows of a block: each row by the engine ``solve`` would choose for it.
+"""Solving the rows of a block: each row a :class:`~bearingload.plan.case.Case` of its cells,
+planned by the plan's functions (:mod:`bearingload.plan`: the engine, the refusals, the ways
+out), then solved in groups.
 
-The load alone chooses a row's engine, as for ``solve``: a cell in a load column (axial_load,
-moment, moment_cross, misalignment) makes it a combined-load case of a deep-groove ball bearing
-(3-D ring equilibrium); otherwise it is a radial case, a ring given by z and K or a bearing.
 Rows that share what a vectorised call shares are solved together, by the functions ``solve``
 calls for one case, given arrays: a ring's rows of one method by
 :func:`bearingload.studies.loaded_bearing.solve_ring`; a bearing's rows of one method and
@@ -10,14 +9,13 @@ rotating ring by :func:`~bearingload.studies.loaded_bearing.solve_bearing` and
 :func:`~bearingload.studies.reference_life.with_reference_lives`; a bearing's combined rows of
 one kind of tilt, rotating ring and C_r by
 :func:`bearingload.studies.combined_bearing.solve_combined_bearing` (their loads, moments and
-cage angles as arrays). The per-row checks are those of :mod:`bearingload.bearings.checks`.
-Every engine solves each case on its own, so a row's answer depends on its own cells only.
-Should a call fail, its rows are split in halves until the failing row stands alone, named.
+cage angles as arrays). Every engine solves each case on its own, so a row's answer depends on
+its own cells only. Should a call fail, its rows are split in halves until the failing row
+stands alone, named.
 """
 
 from __future__ import annotations
 
-import re
 from collections.abc import Callable, Sequence
 from dataclasses import dataclass, field
 from typing import Any
@@ -25,20 +23,35 @@ from typing import Any
 import numpy as np
 
 from bearingload.batch.read import (
-    DYNAMICS_COLUMNS,
     LOAD_COLUMNS,
     SERVICE_COLUMNS,
-    SERVICE_RANGES,
     Block,
     CellParser,
     Header,
     read_column,
     row_message,
 )
-from bearingload.bearings.lubrication import speed_needed
-from bearingload.bearings.mounting import MOUNTING_PARAMS
 from bearingload.bearings.oil import OIL_INPUTS
 from bearingload.errors import BearingloadError, ConvergenceError, InputError
+from bearingload.plan.bearing import (
+    check_rotating,
+    refuse_tilt_radius,
+    refuse_unused,
+    resolve_bearings,
+    ring_by_hand,
+    with_contact_angle,
+    with_ratings,
+)
+from bearingload.plan.case import Case
+from bearingload.plan.solve import (
+    QUASI_STATIC_WAY,
+    check_revolutions,
+    engine_of,
+    refuse_radial_options,
+    refuse_revolutions,
+    refuse_static_dynamics,
+    speed_hint,
+)
 
 
 @dataclass
@@ -54,28 +67,40 @@ class Chunk:
 
 #: Cells that make a row a bearing (resolved) rather than a ring given by z and K.
 _GEOMETRY = ("bearing", "ball_diameter", "pitch_diameter")
-#: Cells of a bearing that a ring given by z and K cannot use.
-_BEARING_ONLY = ("inner_conformity", "outer_conformity", "modulus", "poisson", "ball_material",
-                 *MOUNTING_PARAMS, "clearance_pick",
-                 "revolutions", "rotating", "dynamic_rating", "static_rating",
-                 *SERVICE_COLUMNS)  # fmt: skip
-_TILT_ALONE = (
-    "tilt_radius: it is the lever of the inner ring's tilt, and only the combined load "
-    "(axial_load, moment, moment_cross, misalignment) tilts the ring"
+#: Columns whose values differ from row to row and whose plan depends only on whether they
+#: are given: a row's plan is kept for rows that differ from it only in their values.
+_PER_ROW = (
+    *("load", "axial_load", "moment", "moment_cross", "misalignment", "cage_angle"),
+    *("speed", "ball_density", *SERVICE_COLUMNS[1:]),
 )
+#: Columns that are no input of a case: the radial engine's method and life.
+_NOT_CASE = ("method", "revolutions")
 #: Rows times balls solved per combined call (about 30 MB of solver work arrays).
 CALL_BALLS = 2**15
 
 Part = tuple[list[int], dict[str, Any]]
 
 
+def row_case(v: dict[str, Any]) -> Case:
+    """The :class:`~bearingload.plan.case.Case` of a row's cells ``v`` (blank cells left out;
+    ``stiffness`` in N/mm^m, kept as its text)."""
+    values = {"e_c" if k == "ec" else k: x for k, x in v.items() if k not in _NOT_CASE}
+    if "stiffness" in values:
+        values["stiffness"] = repr(float(values["stiffness"]))
+    if "balls" in values:
+        values["balls"] = int(values["balls"])
+    return Case.of(values)
+
+
 class BatchSolver:
-    """Solve the blocks of one case file; resolved bearings are kept from block to block."""
+    """Solve the blocks of one case file; each distinct plan of a row (its resolved bearing and
+    group, or its refusal) is kept from block to block."""
 
     def __init__(self, header: Header) -> None:
         self.header = header
         self.parsers = {n: CellParser(n, header.units.get(n)) for n in header.names}
-        self.bearings: dict[tuple[Any, ...], Any] = {}
+        self.plans: dict[tuple[Any, ...], Any] = {}
+        self.bare: dict[str, list[bool]] = {}
 
     def solve(self, block: Block) -> Chunk:
         """Solve one block of rows."""
@@ -97,9 +122,11 @@ class BatchSolver:
     def _solved(self, cols: dict[str, list[Any]], numbers: list[int], errors: dict[int, str],
                 bad: dict[int, str]) -> Chunk:  # fmt: skip
         """The block's rows, read into ``cols`` (``bad``: the rows that failed), solved."""
+        keys = self._keys(cols, len(numbers), bad)
+        with_oil_viscosity(cols, [i for i, key in enumerate(keys) if key is not None], bad)
         groups: dict[tuple[Any, ...], list[int]] = {}
-        for i, key in enumerate(self._keys(cols, len(numbers), bad)):
-            if key is not None:
+        for i, key in enumerate(keys):
+            if key is not None and i not in bad:
                 groups.setdefault(key, []).append(i)
         parts: list[Part] = []
         for key, idx in groups.items():
@@ -130,7 +157,11 @@ class BatchSolver:
 
     def _columns(self, rows: list[list[str]]) -> tuple[dict[str, list[Any]], dict[int, str]]:
         """Every column's values (None: blank) and each failing row's first error: the exponent
-        first (a stiffness unit depends on it), then in file order."""
+        first (a stiffness unit depends on it), then in file order. ``self.bare``: whether each
+        cell of a column judged against the bearing's size was written without a unit."""
+        from bearingload.bearings.plausible import BEARING_SCALE
+        from bearingload.units import is_bare
+
         names = self.header.names
         texts = dict(zip(names, zip(*rows, strict=True), strict=True)) if rows else {}
         cols: dict[str, list[Any]] = {}
@@ -150,166 +181,141 @@ class BatchSolver:
                 m = [
                     x if x is not None else 1.5 if m is None else m[i] for i, x in enumerate(values)
                 ]
-            if name in SERVICE_RANGES:
+            if name in RANGED:
                 _check_range(name, values, bad)
-        with_oil_viscosity(cols, len(rows), bad)
-        if "viscosity" in cols:  # nu_1 needs the speed, as solve's --viscosity needs --speed
-            speed = cols.get("speed", [None] * len(rows))
-            for i, nu in enumerate(cols["viscosity"]):
-                if nu is not None and speed[i] is None:
-                    bad.setdefault(i, "viscosity: needs the shaft speed (a speed cell) for the "
-                                   "rated viscosity nu_1")  # fmt: skip
-        _check_needs(cols, len(rows), bad)
+        self.bare = {
+            n: [is_bare(t) for t in texts[n]]
+            for n in BEARING_SCALE
+            if n in texts and n not in self.header.units and self.header.has_bearing
+        }
         return cols, bad
 
     def _keys(self, cols: dict[str, list[Any]], n: int, bad: dict[int, str]) -> list[Any]:
         """Each row's group: ("ring", method), ("bearing", resolved bearing, method, rotating)
         or ("combined", ...); a row that cannot be solved goes to ``bad``."""
         keys: list[Any] = [None] * n
-        rows = n
         cols["_lever"] = [None] * n  # a combined row's lever of the tilt [mm]
-        loads = [cols[c] for c in LOAD_COLUMNS if c in cols]
-        geometry = [cols[c] for c in _GEOMETRY if c in cols]
-        tilt = cols.get("tilt_radius")
-        rings = []
-        if not (loads or geometry or tilt):  # rings given by z and K only
-            rings = [i for i in range(n) if i not in bad]
-            n = 0
-        for i in range(n):
-            if i in bad:
-                continue
-            try:
-                if loads and (any(c[i] is not None for c in loads) or self._angular(cols, i)):
-                    keys[i] = self._combined_key(cols, i)
-                elif geometry and self._at_speed(cols, i):
-                    keys[i] = self._combined_key(cols, i)
-                elif tilt is not None and tilt[i] is not None:
-                    bad[i] = _TILT_ALONE
-                elif geometry and any(c[i] is not None for c in geometry):
-                    keys[i] = self._bearing_key(cols, i)
-                else:
+        rings = [i for i in range(n) if i not in bad]
+        if any(c in cols for c in (*LOAD_COLUMNS, *_GEOMETRY, "tilt_radius")):
+            rings = []
+            for i in range(n):
+                if i in bad:
+                    continue
+                try:
+                    keys[i] = self._key(cols, i)
+                except BearingloadError as exc:
+                    bad[i] = row_message(exc)
+                    continue
+                if keys[i] is None:
                     rings.append(i)
-            except BearingloadError as exc:
-                bad[i] = row_message(exc)
         _ring_keys(cols, rings, keys, bad)
-        _refuse_radial_dynamics(cols, keys, rows, bad)
         return keys
 
-    def _angular(self, cols: dict[str, list[Any]], i: int) -> bool:
-        """Whether row ``i`` names an angular-contact bearing, which solve gives the combined
-        engine with F_a = 0 when no axial load is given (a blank cell takes solve's default)."""
-        v = self._row(cols, i)
-        return any(k in v for k in _GEOMETRY) and self._bearing(v).contact_angle is not None
+    def _key(self, cols: dict[str, list[Any]], i: int) -> tuple[Any, ...] | None:
+        """Row ``i``'s group (None: a ring given by z and K), planned once for every row of the
+        same cells but their values of :data:`_PER_ROW`; its load and bare numbers checked."""
+        v = {k: c[i] for k, c in cols.items() if c[i] is not None and k != "_lever"}
+        hit = self.planned(v, self._plan)
+        key, cols["_lever"][i] = hit
+        if key is None:
+            return None
+        check_load(v, key[0] == "combined")
+        self.refuse_bare(v, i, key[1])
+        return key
 
-    def _at_speed(self, cols: dict[str, list[Any]], i: int) -> bool:
-        """Whether radial row ``i`` (no load cell) is a ball bearing at a speed (quasi_static
-        not true), which solve gives the combined engine at F_a = 0 with the ball dynamics; its
-        method, revolutions and exponent cells checked as solve checks the options."""
-        v = self._row(cols, i)
-        if "speed" not in v or v.get("quasi_static", False) or not any(k in v for k in _GEOMETRY):
-            return False
-        b = self._bearing(v)
-        if b.kind != "ball":
-            return False
-        instead = ("the ball dynamics at a speed are solved by the combined engine at an axial "
-                   "load of 0 (as solve --speed); set quasi_static true for the static model")  # fmt: skip
-        if v.get("method", "exact") != "exact":
-            _check_method(v["method"])
-            raise InputError("method", f"{v['method']}: {instead}, which takes the other methods")
-        if "revolutions" in v:
-            raise InputError("revolutions", "sets the life of the allowable radial load, which "
-                             f"only the radial engine gives: {instead}")  # fmt: skip
-        if v.get("exponent", b.exponent) != b.exponent:
-            raise InputError("exponent", "a ball bearing (Hertz point contact) has m = 1.5; "
-                             "other exponents need balls and stiffness without a bearing")  # fmt: skip
-        return True
-
-    def _row(self, cols: dict[str, list[Any]], i: int) -> dict[str, Any]:
-        return {k: v[i] for k, v in cols.items() if v[i] is not None}
-
-    def _bearing_key(self, cols: dict[str, list[Any]], i: int) -> tuple[Any, ...]:
-        """A radial row of a bearing: its resolved bearing (C_r replaced by a dynamic_rating
-        cell), method and rotating ring, checked as solve checks them."""
-        v = self._row(cols, i)
-        method = v.get("method", "exact")
-        _check_method(method)
-        b = self._bearing(v)
-        c_r = v.get("dynamic_rating")
-        if v.get("exponent", b.exponent) != b.exponent:  # a blank cell: the bearing's m
-            contact = ("a roller bearing (line contact) has m = 10/9" if b.kind == "roller"
-                       else "a ball bearing (Hertz point contact) has m = 1.5")  # fmt: skip
-            raise InputError("exponent", f"{contact}; other exponents need balls and stiffness "
-                             "without a bearing")  # fmt: skip
-        _check_rotating(v, b, c_r, method)
-        _check_life_cells(v, b)
-        if "load" not in v:
-            raise InputError("load", "missing: every row needs a load")
-        if not v.get("revolutions", 1.0) > 0:
-            raise InputError(
-                "revolutions", f"must be greater than 0 rev (got {v['revolutions']:g})"
-            )
-        if "revolutions" in v and not b.C:  # no allowable load C/L^(1/p): solve refuses it
-            raise InputError("revolutions", "sets the life of the allowable load, which needs "
-                             "a dynamic load rating C: give a dynamic_rating (or a bearing)")  # fmt: skip
-        return ("bearing", b, method, v.get("rotating", "inner"))
-
-    def _combined_key(self, cols: dict[str, list[Any]], i: int) -> tuple[Any, ...]:
-        """A combined-load row: its resolved bearing and what its call shares (the kind of tilt,
-        the rotating ring, C_r), checked as solve checks them."""
-        from bearingload.bearings.tilt import tilt_lever
-
-        v = self._row(cols, i)
-        if not any(k in v for k in _GEOMETRY):
-            raise InputError(
-                "bearing", "missing: the combined load needs a bearing or its ball geometry"
-            )
-        b = self._bearing(v)
-        if "contact_angle" in v:
-            b = _hand_angular(v, b)
-        _check_rotating(v, b, v.get("dynamic_rating"), "exact")
-        _check_life_cells(v, b)
-        if "load" not in v:
-            raise InputError("load", "missing: every row needs a (radial) load, 0 allowed")
-        if not v["load"] >= 0:
-            raise InputError("load", f"must be 0 N or more (got {v['load']!r} N)")
-        lever = cols["_lever"][i] = tilt_lever(v.get("tilt_radius"), b.pitch_diameter)
-        tilts = (*(k in v for k in ("moment", "misalignment", "moment_cross")), lever is None)
-        dynamics = dynamics_of(v, b)
-        return ("combined", b, tilts, v.get("rotating", "inner"), v.get("dynamic_rating"), dynamics)
-
-    def _bearing(self, v: dict[str, Any]) -> Any:
-        """The resolved bearing of a row's cells, resolved once per distinct cells."""
-        from bearingload.bearings.resolve import resolve_bearing
-
-        args = {"balls": v.get("balls"), "ball_diameter": v.get("ball_diameter"),
-                "pitch_diameter": v.get("pitch_diameter"), "f_i": v.get("inner_conformity"),
-                "f_o": v.get("outer_conformity"), "modulus": v.get("modulus"),
-                "poisson": v.get("poisson"), "ball_material": v.get("ball_material"),
-                "stiffness": v.get("stiffness"), **{n: v.get(n) for n in MOUNTING_PARAMS},
-                "clearance": v.get("clearance"), "clearance_pick": v.get("clearance_pick", "mean")}  # fmt: skip
-        if args["balls"] is not None:
-            args["balls"] = int(args["balls"])
-        c_r, c_0 = v.get("dynamic_rating"), v.get("static_rating")
-        key = (v.get("bearing"), c_r, c_0, *args.values())  # floats, text, frozen ClearanceSpec
-        hit = self.bearings.get(key)
+    def planned(self, v: dict[str, Any], plan: Callable[[dict[str, Any]], Any]) -> Any:
+        """``plan(v)``, or its refusal raised, kept for the rows of the same plan."""
+        marker = tuple((k, True if k in _PER_ROW else x) for k, x in v.items())
+        hit = self.plans.get(marker)
         if hit is None:
             try:
-                if c_r is not None and not c_r > 0:
-                    raise InputError("dynamic_rating", "must be greater than 0 N")
-                if not self.header.pairs:
-                    _refuse_pair(v.get("bearing"))
-                hit = resolve_bearing(v.get("bearing"), **args)
-                if "clearance_pick" in v and hit.clearance_class is None:  # as solve refuses it
-                    raise InputError("clearance_pick", _no_class_to_pick(hit))
-                hit = hit if c_r is None else hit.with_dynamic_rating(c_r)
-                hit = hit if c_0 is None else hit.with_static_rating(c_0)
+                hit = plan(v)
             except BearingloadError as exc:
                 hit = exc
-            if len(self.bearings) < 10_000:
-                self.bearings[key] = hit
+            if len(self.plans) < 10_000:
+                self.plans[marker] = hit
         if isinstance(hit, BearingloadError):
             raise hit
         return hit
+
+    def refuse_bare(self, v: dict[str, Any], i: int, b: Any) -> None:
+        """Refuse a bare number of row ``i`` implausible for its bearing ``b``
+        (:func:`bearingload.bearings.plausible.refuse_implausible_bare`, solve's rule)."""
+        from bearingload.bearings.plausible import refuse_implausible_bare
+
+        bare = {n: float(v[n]) for n, flags in self.bare.items() if n in v and flags[i]}
+        if bare:
+            refuse_implausible_bare(b, bare)
+
+    def _plan(self, v: dict[str, Any]) -> tuple[tuple[Any, ...] | None, float | None]:
+        """(the group, the lever of the tilt [mm]) of a row of cells ``v``, by the plan's rules
+        for its case: the engine, the refusals; (None, None) for a ring given by z and K."""
+        case = row_case(v)
+        loads = any(c in self.header.names for c in LOAD_COLUMNS)
+        if case.by_hand:
+            if loads and case.first_given(LOAD_COLUMNS) is not None:
+                raise InputError(
+                    "bearing", "missing: the combined load needs a bearing or its ball geometry"
+                )
+            refuse_tilt_radius(case)
+            return None, None
+        method, revolutions = v.get("method", "exact"), v.get("revolutions")
+        if not self.header.pairs:
+            _refuse_pair(case.bearing)
+        case, engine, at_speed = engine_of(case, method, revolutions)
+        if engine == "combined" and not loads:  # an angular designation: radial at rest
+            at_speed = case.speed is not None and not case.quasi_static
+            if at_speed:
+                refuse_radial_options(method, revolutions)
+        if at_speed or loads and engine == "combined":
+            return self._combined_key(case)
+        refuse_tilt_radius(case)
+        return self._bearing_key(case, method, revolutions), None
+
+    def _bearing_key(self, case: Case, method: str, revolutions: Any) -> tuple[Any, ...]:
+        """A radial row of a bearing: its resolved bearing (C_r replaced by a dynamic_rating
+        cell), method and rotating ring, checked as solve checks them."""
+        _check_method(method)
+        refuse_static_dynamics(case)
+        b = self.bearing(case)
+        check_revolutions(revolutions)
+        if not b.C:
+            refuse_revolutions(
+                revolutions, "a bearing without a dynamic load rating C", "give 'dynamic_rating'"
+            )
+        check_rotating(case, b, [method])
+        return ("bearing", b, method, case.rotating or "inner")
+
+    def _combined_key(self, case: Case) -> tuple[tuple[Any, ...], float | None]:
+        """A combined-load row: its resolved bearing and what its call shares (the kind of tilt,
+        the rotating ring, C_r, the ball dynamics), checked as solve checks them; the lever."""
+        from bearingload.bearings.tilt import tilt_lever
+
+        b = self.bearing(case)
+        if b.kind == "ball" and b.has_geometry:
+            check_rotating(case, b, ["exact"])
+        b = with_contact_angle([b], case, "'contact_angle'")[0]
+        lever = tilt_lever(case.tilt_radius, b.pitch_diameter)
+        given = (case.moment, case.misalignment, case.moment_cross)
+        tilts = (*(x is not None for x in given), lever is None)
+        dynamics = (case.dynamics_arguments()["speed"] is not None, case.ball_density is not None)
+        key = ("combined", b, tilts, case.rotating or "inner", case.dynamic_rating, dynamics)
+        return key, lever
+
+    def bearing(self, case: Case) -> Any:
+        """The resolved bearing of a row's case, its ratings replaced by those given."""
+        stiffness = None if case.stiffness is None else float(case.stiffness)
+        b = with_ratings(resolve_bearings(case, stiffness), case)[0]
+        return b if case.dynamic_rating is None else b.with_dynamic_rating(case.dynamic_rating)
+
+
+def check_load(v: dict[str, Any], combined: bool = True) -> None:
+    """Every row has a load (a combined row's radial one 0 or more)."""
+    if "load" not in v:
+        what = "a (radial) load, 0 allowed" if combined else "a load"
+        raise InputError("load", f"missing: every row needs {what}")
+    if combined and not v["load"] >= 0:
+        raise InputError("load", f"must be 0 N or more (got {v['load']!r} N)")
 
 
 def _refuse_pair(text: str | None) -> None:
@@ -328,193 +334,91 @@ def _refuse_pair(text: str | None) -> None:
                          "with the load it carries")  # fmt: skip
 
 
-def _no_class_to_pick(b: Any) -> str:
-    """Why a row's ``clearance_pick`` is refused: bearing ``b`` has no clearance class (solve's
-    reason for --clearance-pick, :func:`bearingload.plan.bearing.resolve_bearings`)."""
-    why = ("an angular-contact bearing has no radial clearance" if b.contact_angle is not None
-           else f"this row's clearance is one value, no class (G_r = {b.clearance * 1000:g} µm)")  # fmt: skip
-    return (
-        "it picks the min, mean or max of a clearance class (a clearance cell CN, C3 ... of a "
-        f"catalogue bearing); {why}, so it would be ignored"
-    )
-
-
-def with_oil_viscosity(cols: dict[str, list[Any]], n: int, bad: dict[int, str]) -> None:
-    """The operating viscosity of each row with an oil cell (:data:`OIL_INPUTS`) into its
-    ``viscosity`` cell, by solve's one rule (:func:`bearingload.bearings.oil.operating_viscosity`,
-    each row on its own, each distinct oil once); a row it refuses, or whose viscosity would
-    have no speed for nu_1, goes to ``bad`` naming the column."""
-    from bearingload.bearings.oil import operating_viscosity
-
+def with_oil_viscosity(cols: dict[str, list[Any]], rows: list[int], bad: dict[int, str]) -> None:
+    """The operating viscosity of each of ``rows`` with an oil cell (:data:`OIL_INPUTS`) into
+    its ``viscosity`` cell, by solve's one rule (:meth:`bearingload.plan.case.Case.
+    oil_viscosity`, each row on its own, each distinct oil once); a row it refuses goes to
+    ``bad``."""
     present = [c for c in OIL_INPUTS if c in cols]
     if not present:
         return
+    n = len(cols["load"])
     nu = cols.setdefault("viscosity", [None] * n)
     speed = cols.get("speed", [None] * n)
     seen: dict[tuple[Any, ...], tuple[float | None, str | None]] = {}
-    for i in range(n):
+    for i in rows:
         oil = {c: cols[c][i] for c in present}
-        first = next((c for c in present if oil[c] is not None), None)
-        if i in bad or first is None:
+        if i in bad or all(x is None for x in oil.values()):
             continue
-        key = (nu[i], *oil.values())
+        key = (nu[i], speed[i] is None, *oil.values())
         if key not in seen:
             try:
-                seen[key] = (operating_viscosity(nu[i], **oil)[0], None)
+                case = Case(viscosity=nu[i], speed=speed[i], **oil)
+                seen[key] = (case.oil_viscosity()[0], None)
             except InputError as exc:
                 seen[key] = (None, row_message(exc))
         value, why = seen[key]
-        if why is None and speed[i] is None:
-            why = row_message(speed_needed(first))
         if why is None:
             nu[i] = value
         else:
             bad[i] = why
 
 
-def _hand_angular(v: dict[str, Any], b: Any) -> Any:
-    """The angular-contact ring of a row's ball set and ``contact_angle`` cell, checked as
-    solve's --contact-angle is: 0 to 60°, no designation, no clearance."""
-    import dataclasses
-
-    alpha = v["contact_angle"]
-    if not 0.0 <= alpha <= 60.0:
-        raise InputError("contact_angle", f"must be from 0 to 60° (got {alpha:.10g}°)")
-    if "bearing" in v:
-        raise InputError(
-            "contact_angle",
-            "cannot be used with a bearing designation (the designation gives the angle): give "
-            "the angular-contact ring by its ball set (ball_diameter, pitch_diameter, balls)",
-        )
-    if v.get("clearance") is not None:
-        raise InputError(
-            "clearance",
-            "must be blank with a contact_angle: the design contact angle fixes the geometry "
-            "of an angular-contact bearing",
-        )
-    return dataclasses.replace(b, contact_angle=float(alpha), clearance=0.0)
-
-
-def dynamics_of(v: dict[str, Any], b: Any) -> tuple[bool, bool]:
-    """:func:`_dynamics` of a row of bearing ``b`` (one bearing or a pair's), refused where the
-    ball dynamics cannot solve it, as solve refuses --rotating outer and a given stiffness at
-    --speed."""
-    dynamics = _dynamics(v)
-    if dynamics[0] and v.get("rotating") == "outer":  # as solve refuses --rotating outer
-        raise InputError("rotating", "the ball dynamics at a speed are coded for the inner "
-                         "ring turning (docs/speed.md); set quasi_static true for the "
-                         "static model with the outer ring's lives")  # fmt: skip
-    if dynamics[0] and b.stiffness_given:  # as the library refuses it, in the batch's words
-        raise InputError("speed", "the ball dynamics need each contact's Hertz stiffness "
-                         "from the ball geometry, not a given ball stiffness: leave the "
-                         "stiffness cell blank, or set quasi_static true (the static "
-                         "model)")  # fmt: skip
-    return dynamics
-
-
-def _dynamics(v: dict[str, Any]) -> tuple[bool, bool]:
-    """(solved with the ball dynamics, with a ball_density cell) of a combined row, its
-    ball_density and quasi_static cells checked as solve checks --ball-density and
-    --quasi-static: the dynamics need a speed, and quasi_static true leaves them out."""
-    quasi = v.get("quasi_static", False)
-    if "ball_density" in v and ("speed" not in v or quasi):
-        raise InputError("ball_density", "it enters the ball dynamics at a speed, which "
-                         "quasi_static true or a missing speed leave out")  # fmt: skip
-    if quasi and "speed" not in v:
-        raise InputError("quasi_static", "it needs a speed (true: the static model at that "
-                         "speed, which then gives the lives in hours only)")  # fmt: skip
-    return "speed" in v and not quasi, "ball_density" in v
-
-
-def _refuse_radial_dynamics(
-    cols: dict[str, list[Any]], keys: list[Any], n: int, bad: dict[int, str]
-) -> None:
-    """A radial row (ring or bearing) with a ball_density cell or a quasi_static true cell
-    without a speed is refused, as solve refuses them on the radial engine: a ball bearing
-    at a speed is the combined engine's, unless quasi_static true; a roller has no ball
-    dynamics."""
-    given = [(c, cols[c]) for c in DYNAMICS_COLUMNS if c in cols]
-    for i in range(n) if given else ():
-        name = next((c for c, x in given if x[i] not in (None, False)), None)
-        if name is None or i in bad or keys[i] is None or keys[i][0] == "combined":
-            continue
-        v = {c: cols[c][i] for c in ("speed", *DYNAMICS_COLUMNS) if c in cols}
-        roller = keys[i][0] == "bearing" and keys[i][1].kind == "roller"
-        try:
-            if roller and v.get("ball_density") is not None:  # a blank cell is None
-                raise InputError("ball_density", "a roller bearing is solved by the static "
-                                 "model at any speed: the ball dynamics are coded for ball "
-                                 "bearings")  # fmt: skip
-            _dynamics({k: x for k, x in v.items() if x is not None})
-        except InputError as exc:
-            keys[i] = None
-            bad[i] = row_message(exc)
-
-
-def _check_life_cells(v: dict[str, Any], b: Any) -> None:
-    """A viscosity needs the pitch diameter for nu_1, as solve's --viscosity does."""
-    if "viscosity" in v and b.pitch_diameter is None:
-        raise InputError(
-            "viscosity", "needs the pitch diameter (a bearing with its ball set or pitch_diameter)"
-        )
-
-
-def _check_rotating(v: dict[str, Any], b: Any, c_r: Any, method: str) -> None:
-    """A rotating cell where no L10r is computed is refused, as solve refuses --rotating."""
-    from bearingload.studies.reference_life import rotating_refusal
-
-    if "rotating" in v and (why := rotating_refusal(b, c_r, method)) is not None:
-        why = re.sub(r"--([a-z-]+)", lambda m: m.group(1).replace("-", "_"), why)
-        raise InputError("rotating", "it names the rotating ring for the reference rating "
-                         f"life L10r (ISO/TS 16281), and {why.replace('a BEARING', 'a bearing')}")  # fmt: skip
-
-
 def _check_method(name: str) -> None:
     from bearingload.models.registry import METHODS, get_method
 
-    if name not in METHODS:
+    if name != "exact" and name not in METHODS:
         get_method(name)  # raises, naming the methods there are
+
+
+#: Columns a ring given by z and K may have beside its inputs; any other refuses its row.
+_RING_COLUMNS = ("balls", "load", "stiffness", "clearance", "cage_angle", "exponent", "method")
 
 
 def _ring_keys(
     cols: dict[str, list[Any]], idx: list[int], keys: list[Any], bad: dict[int, str]
 ) -> None:
-    """The group of each radial row of a ring given by z and K, ("ring", method): it has both, a
-    load, a known method and no cell of a bearing (a row's first error goes to ``bad``)."""
-    from bearingload.models.registry import METHODS, get_method
-
+    """The group of each radial row of a ring given by z and K, ("ring", method); a row the
+    plan refuses (:func:`_ring_checks`) goes to ``bad``, checked only where some row has a cell
+    a ring does not take or lacks one it needs."""
     methods = ["exact" if m is None else m for m in cols["method"]] if "method" in cols else None
-    for name in {} if methods is None else set(methods) - set(METHODS):
-        try:
-            get_method(name)
-        except InputError as exc:
-            for i in idx:
-                if methods is not None and methods[i] == name:
-                    bad.setdefault(i, row_message(exc))
-    found = [(k, "needs a bearing or a ball geometry") for k in _BEARING_ONLY if k in cols]
-    found += [
-        (k, "missing (give balls and stiffness, or a bearing)") for k in ("balls", "stiffness")
-    ]
-    found += [("load", "missing: every row needs a load")]
-    for name, why in found:
-        column = cols.get(name, [None] * len(keys))
-        blank = name not in _BEARING_ONLY
-        if (None in column) if blank else (column.count(None) < len(column)):  # some row fails
-            for i in idx:
-                if (column[i] is None) == blank:
-                    bad.setdefault(i, f"{name}: {why}")
+    given = [c for c in cols if c not in _RING_COLUMNS and c[0] != "_"]
+    odd = any(cols[c].count(None) < len(cols[c]) for c in given)
+    odd = odd or any(c not in cols or None in cols[c] for c in ("balls", "load", "stiffness"))
     for i in idx:
-        keys[i] = None if i in bad else ("ring", "exact" if methods is None else methods[i])
+        try:
+            if methods is not None:
+                _check_method(methods[i])
+            if odd:
+                _ring_checks({k: c[i] for k, c in cols.items() if c[i] is not None})
+        except BearingloadError as exc:
+            bad[i] = row_message(exc)
+            continue
+        keys[i] = ("ring", "exact" if methods is None else methods[i])
 
 
-def _take(cols: dict[str, list[Any]], name: str, idx: list[int], default: Any = None) -> list[Any]:
+def _ring_checks(v: dict[str, Any]) -> None:
+    """A ring given by z and K as solve checks it: no ball dynamics, no input of a bearing, no
+    life of an allowable load, both z and K, a load."""
+    case = row_case({k: x for k, x in v.items() if k[0] != "_"})
+    refuse_static_dynamics(case)
+    refuse_unused(case)
+    refuse_revolutions(
+        v.get("revolutions"), "a ring given by its balls and stiffness", "it has no C"
+    )
+    ring_by_hand(case, None if case.stiffness is None else float(case.stiffness))
+    if "load" not in v:
+        raise InputError("load", "missing: every row needs a load")
+
+
+def taken(cols: dict[str, list[Any]], name: str, idx: list[int], default: Any = None) -> list[Any]:
     column = cols.get(name)
     if column is None:
         return [default] * len(idx)
     return [default if column[i] is None else column[i] for i in idx]
 
 
-def _angles(given: list[Any], balls: Any) -> np.ndarray:
+def cage_angles(given: list[Any], balls: Any) -> np.ndarray:
     """Cage angles [°]: 'half' is half the pitch 180/z."""
     z = np.broadcast_to(np.asarray(balls, dtype=float), (len(given),))
     half = np.array([a == "half" for a in given], dtype=bool)
@@ -528,14 +432,22 @@ def _solve_rings(
     from bearingload.bearings.clearance import clearance_length
     from bearingload.studies.loaded_bearing import case_columns, solve_ring
 
-    balls = np.array(_take(cols, "balls", idx), dtype=float)
-    clearance = [g if isinstance(g, float) else clearance_length(g)
-                 for g in _take(cols, "clearance", idx, 0.0)]  # fmt: skip
-    (lc,) = solve_ring([key[1]], balls, np.array(_take(cols, "load", idx), dtype=float),
-                       np.array(_take(cols, "stiffness", idx), dtype=float),
-                       np.array(clearance, dtype=float),
-                       _angles(_take(cols, "cage_angle", idx, 0.0), balls),
-                       np.array(_take(cols, "exponent", idx, 1.5), dtype=float))  # fmt: skip
+    def floats(name: str, default: Any = None) -> np.ndarray:
+        return np.array(taken(cols, name, idx, default), dtype=float)
+
+    balls = floats("balls")
+    given = taken(cols, "clearance", idx, 0.0)
+    clearance = [g if isinstance(g, float) else clearance_length(g) for g in given]
+    angles = cage_angles(taken(cols, "cage_angle", idx, 0.0), balls)
+    (lc,) = solve_ring(
+        [key[1]],
+        balls,
+        floats("load"),
+        floats("stiffness"),
+        np.array(clearance, dtype=float),
+        angles,
+        floats("exponent", 1.5),
+    )
     return case_columns(lc) | {"warnings": list(lc.warnings)}
 
 
@@ -547,9 +459,9 @@ def _solve_bearing(
     from bearingload.studies.reference_life import with_reference_lives
 
     _, b, method, rotating = key
-    load = np.array(_take(cols, "load", idx), dtype=float)
-    cage = _angles(_take(cols, "cage_angle", idx, 0.0), b.balls)
-    revolutions = np.array(_take(cols, "revolutions", idx, DEFAULT_REVOLUTIONS), dtype=float)
+    load = np.array(taken(cols, "load", idx), dtype=float)
+    cage = cage_angles(taken(cols, "cage_angle", idx, 0.0), b.balls)
+    revolutions = np.array(taken(cols, "revolutions", idx, DEFAULT_REVOLUTIONS), dtype=float)
     cases = solve_bearing([b], load, cage, [method], revolutions)
     (lc,) = with_reference_lives(cases, rotating)
     out = case_columns(lc) | {"warnings": list(lc.warnings), "model": METHODS[method].title}
@@ -572,25 +484,27 @@ def _solve_combined(
     _, b, (moment, misaligned, cross, groove), rotating, c_r, (at_speed, density) = key
 
     def given(name: str, on: bool = True, default: Any = None) -> Any:
-        return np.array(_take(cols, name, idx, default), dtype=float) if on else None
+        return np.array(taken(cols, name, idx, default), dtype=float) if on else None
 
     rho = given("ball_density", density)  # [kg/m^3], as solve's --ball-density
     try:
         (case,) = solve_combined_bearing(
             [b], given("load"), given("axial_load", default=0.0),
-            cage_angle=_angles(_take(cols, "cage_angle", idx, 0.0), b.balls),
+            cage_angle=cage_angles(taken(cols, "cage_angle", idx, 0.0), b.balls),
             moment=given("moment", moment), misalignment=given("misalignment", misaligned),
             rotating=rotating, dynamic_rating=c_r, moment_cross=given("moment_cross", cross),
             tilt_radius=None if groove else given("_lever"), speed=given("speed", at_speed),
             ball_density=rho,
         )  # fmt: skip
-    except (InputError, ConvergenceError) as exc:
+    except (InputError, ConvergenceError) as exc:  # a radial row at speed: no load cell
         cells = [cols[c][i] for c in LOAD_COLUMNS if c in cols for i in idx]
-        deep_groove = at_speed and b.contact_angle is None
-        radial = deep_groove and all(x is None for x in cells)
-        hinted = _quasi_static_hint(exc, radial) if deep_groove else None
-        if at_speed and isinstance(exc, InputError) and too_fast(exc):
-            hinted = exc.with_way_out(FAST_WAY)
+        radial = b.contact_angle is None and all(x is None for x in cells)
+        hinted: BearingloadError | None = None
+        deep_groove = b.contact_angle is None  # an angular-contact row: the solver's words
+        if at_speed and isinstance(exc, InputError) and (deep_groove or too_fast(exc)):
+            hinted = speed_hint(exc, radial)
+        elif at_speed and radial:
+            hinted = exc.with_way_out(QUASI_STATIC_WAY)
         if hinted is None:
             raise
         raise hinted from exc
@@ -614,35 +528,6 @@ def _solve_combined(
         "_angle_outer": outer,
         "_rotating": rotating,
     }
-
-
-#: The way out of a speed beyond the ball dynamics' limit (n d_m), in the batch's words.
-FAST_WAY = "quasi_static true gives the static model at any speed (the lives in hours)"
-
-
-def _quasi_static_hint(
-    exc: InputError | ConvergenceError, radial: bool = True
-) -> BearingloadError | None:
-    """The combined solver's refusal of loads too small for it on deep-groove rows at a speed
-    (the ball dynamics): it named 'the radial solver, without an axial load', which at a speed
-    is the ball dynamics too; quasi_static true is the way to it (as solve's --quasi-static), on
-    a row with load cells beside the radial load (not ``radial``) with those cells left blank.
-    The dynamics' non-convergence on radial rows names the same way."""
-    from bearingload.models.combined import TOO_LIGHT
-
-    if isinstance(exc, ConvergenceError):
-        if not radial:
-            return None
-        return exc.with_way_out(
-            "quasi_static true gives the static radial engine (the ball dynamics left out)"
-        )
-    if exc.reason != TOO_LIGHT:
-        return None
-    way = ("quasi_static true gives the static radial engine, which takes any load" if radial
-           else "quasi_static true with the axial_load and moment cells blank gives the static "
-           "radial engine, which takes any load")  # fmt: skip
-    hint = f"at a speed a ball bearing is solved by the combined engine (the ball dynamics); {way}"
-    return exc.with_way_out(hint)
 
 
 def _contacts(res: Any, n: int, contact_angle: float | None) -> dict[str, Any]:
@@ -749,21 +634,19 @@ def _bisected(
 
 
 def _operating(cols: dict[str, list[Any]], rows: list[int]) -> Any:
-    """The operating conditions of ``rows`` (which give the same life cells) as arrays."""
-    from bearingload.bearings.service_life import Operating
+    """The operating conditions of ``rows`` (which give the same life cells) as arrays, as
+    solve's case gives them (:meth:`bearingload.plan.case.Case.operating`; the viscosity is the
+    oil's where an oil is given)."""
 
-    def given(c: str, scale: float = 1.0) -> Any:
+    def given(c: str) -> Any:
         if c not in cols or cols[c][rows[0]] is None:
             return None
-        return np.array([cols[c][i] for i in rows], dtype=float) * scale
+        if c == "contamination":
+            return cols[c][rows[0]]
+        return np.array([cols[c][i] for i in rows], dtype=float)
 
-    alpha = given("pressure_viscosity", 1e-9)
-    return Operating(
-        speed=given("speed"), reliability=given("reliability"), viscosity=given("viscosity"),
-        contamination=cols["contamination"][rows[0]] if "contamination" in cols else None,
-        e_c=given("ec"), fatigue_load_limit=given("fatigue_load_limit"),
-        roughness=given("roughness"), pressure_viscosity=alpha,
-    )  # fmt: skip
+    names = [c for c in SERVICE_COLUMNS if c not in OIL_INPUTS]
+    return Case(**{"e_c" if c == "ec" else c: given(c) for c in names}).operating()
 
 
 def _basis(
@@ -806,17 +689,19 @@ def _service_warnings(
 
 def _speed_warnings(b: Any, idx: list[int], out: dict[str, Any], speeds: Any) -> None:
     """Add to each row of a part the warning solve gives on its speed [r/min] above the limiting
-    speed the catalogue gives for bearing ``b`` (:func:`bearingload.bearings.checks.speed_findings`)."""
-    from bearingload.bearings.checks import speed_findings
+    speed the catalogue gives for bearing ``b`` (:func:`bearingload.plan.solve.speed_warnings`,
+    each distinct speed once)."""
+    from bearingload.plan.solve import speed_warnings
 
-    if speeds is None or getattr(b.geometry, "open_limiting_speeds", None) is None:
-        return  # (a sealed bearing is warned above its open bearing's limits)
+    if speeds is None:
+        return
     warnings = out["warnings"]
+    found: dict[Any, Any] = {}
     for j, i in enumerate(idx):
-        found = speed_findings(speeds[i], b)
-        if found:
-            row = list(warnings[j])
-            warnings[j] = tuple(row + [w for w in found if w not in row])
+        if speeds[i] not in found:
+            found[speeds[i]] = speed_warnings((), speeds[i], b)
+        if found[speeds[i]]:
+            warnings[j] = speed_warnings(tuple(warnings[j]), speeds[i], b)
 
 
 def _floats(value: Any, n: int) -> np.ndarray:
@@ -828,44 +713,29 @@ def _floats(value: Any, n: int) -> np.ndarray:
     return np.broadcast_to(np.asarray(value, dtype=float), (n,))
 
 
-#: The batch column of a library parameter, where the two are spelled apart. [-]
-_CELL_OF = {"e_c": "ec"}
-
-
-def _check_needs(cols: dict[str, list[Any]], n: int, bad: dict[int, str]) -> None:
-    """Rows that solve would refuse by :func:`bearingload.bearings.service_life._check_needs`,
-    refused row by row (that check is for a whole call: it ended the batch): a cell of
-    :data:`~bearingload.bearings.service_life.NEED_VISCOSITY` without a viscosity, a contamination level with eC, a roughness
-    outside :data:`bearingload.bearings.service_life.ROUGHNESS`."""
-    from bearingload.bearings.service_life import NEED_VISCOSITY, ROUGHNESS
-
-    need = [_CELL_OF.get(name, name) for name in NEED_VISCOSITY]
-    none: list[Any] = [None] * n
-    nu, level, ec, rough = (cols.get(c, none) for c in ("viscosity", "contamination", "ec",
-                                                         "roughness"))  # fmt: skip
-    for i in range(n):
-        given = [c for c in need if cols.get(c, none)[i] is not None]
-        if given and nu[i] is None:
-            bad.setdefault(i, f"{'eC' if given[0] == 'ec' else given[0]}: feeds the modified "
-                           "life (a_ISO) or the film, which need the operating viscosity (a "
-                           "viscosity cell, with a speed): without it, it would be ignored")  # fmt: skip
-        elif level[i] is not None and ec[i] is not None:
-            bad.setdefault(i, "eC: give a contamination level or eC, not both (each gives e_C)")
-        elif rough[i] is not None and not ROUGHNESS[0] <= rough[i] <= ROUGHNESS[1]:
-            bad.setdefault(i, f"roughness: must lie between {ROUGHNESS[0]:g} and "
-                           f"{ROUGHNESS[1]:g} mm (0.1 nm to 100 um; got {rough[i]:g} mm)")  # fmt: skip
+#: The columns whose values are checked against their input's range when read.
+RANGED = (
+    *("static_rating", "fatigue_load_limit", "speed", "viscosity", "viscosity_40"),
+    *("viscosity_100", "roughness", "reliability", "ec", "pressure_viscosity", "ball_density"),
+)
 
 
 def _check_range(name: str, values: list[Any], bad: dict[int, str]) -> None:
-    """Rows whose cell of a service column lies outside its range (:data:`SERVICE_RANGES`)."""
-    low, high, closed, why = SERVICE_RANGES[name]
-    for i, x in enumerate(values):
-        if (
-            x is not None
-            and not ((low <= x) if closed else (low < x))
-            or (x is not None and x > high)
-        ):
-            bad.setdefault(i, f"{'eC' if name == 'ec' else name}: {why} (got {x:g})")
+    """Rows whose cell lies outside its input's range, refused by the input's reader
+    (:data:`bearingload.plan.inputs.READERS`, the library's and solve's range and words)."""
+    from bearingload.plan.inputs import READERS
+
+    name = "e_c" if name == "ec" else name
+    read = READERS[name]
+    low, high, low_open = getattr(read, "range", (0.0, float("inf"), True))
+    v = np.array([np.nan if x is None else x for x in values], dtype=float)
+    inside = ((v > low) if low_open else (v >= low)) & (v <= high)
+    for i in np.flatnonzero(~inside & ~np.isnan(v)).tolist():
+        x = values[i]
+        try:
+            read(format(x, "g") if float(format(x, "g")) == x else repr(x), name)
+        except InputError as exc:
+            bad.setdefault(i, row_message(exc))
 
 
 Engine = Callable[[tuple[Any, ...], list[int], dict[str, list[Any]]], dict[str, Any]]

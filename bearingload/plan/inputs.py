@@ -13,21 +13,24 @@ from typing import Any
 
 from bearingload.constants import CONTAMINATION_LEVELS
 from bearingload.errors import InputError
+from bearingload.plan.case import AT_REST
 
 Reader = Callable[[Any, str], Any]
 
 
-def quantity(kind: str, *, positive: bool = False) -> Reader:
+def quantity(kind: str, *, positive: bool = False, at_zero: str = "") -> Reader:
     """A number with an optional unit of ``kind`` (:func:`bearingload.units.parse_quantity`); a
     number given without a unit is read as the command line reads a bare number, its
-    plausibility for the quantity checked the same way."""
+    plausibility for the quantity checked the same way; ``at_zero``: what a 0 given means and
+    how to ask for it (the command line's words)."""
 
     def read(value: Any, name: str) -> float:
         from bearingload.units import BASE_UNIT, parse_quantity
 
         number = parse_quantity(_as_text(value, name), kind, parameter=name)
         if positive and not number > 0:
-            raise InputError(name, f"must be greater than 0 {BASE_UNIT[kind]} (got {value})")
+            hint = f": {at_zero}" if at_zero and number == 0 else ""
+            raise InputError(name, f"must be greater than 0 {BASE_UNIT[kind]} (got {value}){hint}")
         return number
 
     read.kind, read.positive = kind, positive  # type: ignore[attr-defined]
@@ -192,7 +195,7 @@ READERS: dict[str, Reader] = {
     "dynamic_rating": quantity("force", positive=True),
     "rotating": choice("inner", "outer"),
     "static_rating": quantity("force", positive=True),
-    "speed": quantity("speed", positive=True),
+    "speed": quantity("speed", positive=True, at_zero=AT_REST),
     "ball_density": number_in(0.0, 1e5, low_open=True),
     "quasi_static": flag,
     "reliability": number_in(90.0, 99.95),

@@ -69,29 +69,39 @@ def solve_case(
     """
     from bearingload.models.registry import list_methods
 
-    _check_revolutions(revolutions)
+    check_revolutions(revolutions)
     allowed = (*list_methods(), "all")
     if method not in allowed:
         raise InputError("method", f"unknown method {method!r}; allowed: {', '.join(allowed)}")
-    case, at_speed = radial_at_speed(case)
+    case, engine, at_speed = engine_of(case, method, revolutions)
     methods = list_methods() if method == "all" else [method]
-    if at_speed and method != "exact":
-        raise InputError(
-            "method",
-            "at 'speed' the ball dynamics of a ball bearing are solved by the exact model only "
-            "(the combined engine at F_a = 0)",
-            way_out=f"give 'quasi_static' for the static model, where 'method' {method} is allowed",
-        )
-    pair = case.as_pair()
-    if pair is not None:
-        _refuse_revolutions(revolutions, "a bearing pair", "it prints L10r and L10 of the pair")
-        return _pair(pair, method, spell)
-    if case.wants_combined:
+    if engine == "pair":
+        refuse_revolutions(revolutions, "a bearing pair", "it prints L10r and L10 of the pair")
+        return _pair(case, method, spell)
+    if engine == "combined":
         return _combined(case, method, revolutions, at_speed, spell)
     return _radial(case, methods, revolutions, spell)
 
 
-def _check_revolutions(revolutions: float | None) -> None:
+def engine_of(
+    case: Case, method: str = "exact", revolutions: float | None = None
+) -> tuple[Case, str, bool]:
+    """(the case as its engine solves it, the engine: ``"pair"``, ``"combined"`` or
+    ``"radial"``, whether a radial case of a ball bearing is solved at its speed by the ball
+    dynamics: the combined engine at F_a = 0, :func:`radial_at_speed`); such a case's method
+    other than exact and life ``revolutions`` refused (:func:`refuse_radial_options`). The one
+    engine choice of solve, the library and batch."""
+    case, at_speed = radial_at_speed(case)
+    if at_speed:
+        refuse_radial_options(method, revolutions)
+    pair = case.as_pair()
+    if pair is not None:
+        return pair, "pair", False
+    return case, "combined" if case.wants_combined else "radial", at_speed
+
+
+def check_revolutions(revolutions: float | None) -> None:
+    """Refuse a life ``revolutions`` of the allowable load that is not a number > 0."""
     if revolutions is not None and not (math.isfinite(revolutions) and revolutions > 0):
         raise InputError("revolutions", f"must be a number of revolutions > 0, got {revolutions:g}")
 
@@ -114,7 +124,25 @@ def radial_at_speed(case: Case) -> tuple[Case, bool]:
     return dataclasses.replace(case, axial_load=0.0, given=given), True
 
 
-def _refuse_revolutions(revolutions: float | None, where: str, instead: str) -> None:
+def refuse_radial_options(method: str, revolutions: float | None) -> None:
+    """Refuse, for a radial case of a ball bearing at a speed (the ball dynamics, by the combined
+    engine at F_a = 0), a method other than exact and a life ``revolutions`` of the allowable
+    load, which only the static radial engine takes."""
+    if method != "exact":
+        raise InputError(
+            "method",
+            "at 'speed' the ball dynamics of a ball bearing are solved by the exact model only "
+            "(the combined engine at F_a = 0)",
+            way_out=f"give 'quasi_static' for the static model, where 'method' {method} is allowed",
+        )
+    refuse_revolutions(
+        revolutions,
+        "the ball dynamics at 'speed' (a ball bearing is solved by the combined engine at F_a = 0)",
+        "give 'quasi_static' for the static radial engine",
+    )
+
+
+def refuse_revolutions(revolutions: float | None, where: str, instead: str) -> None:
     """Refuse a life ``revolutions`` given where no allowable load is computed."""
     if revolutions is not None:
         raise ConflictError(
@@ -150,7 +178,7 @@ def _radial(case: Case, methods: list[str], revolutions: float | None, spell: An
     life = DEFAULT_REVOLUTIONS if revolutions is None else revolutions
     if case.by_hand:
         refuse_unused(case)
-        _refuse_revolutions(revolutions, "a ring given by its balls and stiffness", "it has no C")
+        refuse_revolutions(revolutions, "a ring given by its balls and stiffness", "it has no C")
         cases = _by_hand(methods, case, k_given)
     else:
         from bearingload.studies.life_basis import radial_basis
@@ -161,7 +189,7 @@ def _radial(case: Case, methods: list[str], revolutions: float | None, spell: An
         if case.dynamic_rating is not None:
             bearings = [b.with_dynamic_rating(case.dynamic_rating) for b in bearings]
         if not any(b.C for b in bearings):
-            _refuse_revolutions(
+            refuse_revolutions(
                 revolutions, "a bearing without a dynamic load rating C", "give 'dynamic_rating'"
             )
         check_rotating(case, bearings[0], methods)
@@ -194,14 +222,7 @@ def _combined(
     from bearingload.studies.life_basis import combined_basis
 
     angular = case.bearing is not None and parse_angular(case.bearing) is not None
-    if at_speed:
-        _refuse_revolutions(
-            revolutions,
-            "the ball dynamics at 'speed' (a ball bearing is solved by the combined engine at "
-            "F_a = 0)",
-            "give 'quasi_static' for the static radial engine",
-        )
-    _refuse_revolutions(
+    refuse_revolutions(
         revolutions,
         "the combined engine (a load beyond the radial one, or an angular-contact bearing)",
         "it prints L10 = (C/P)^3 at P = X F_r + Y F_a and L10r instead",
@@ -317,13 +338,21 @@ def service_lives(case: Case, bases: list[Any], spell: Any = str) -> list[Any]:
 
 def with_speed_warnings(cases: list[Any], speed: float | None) -> list[Any]:
     """The solved cases with the warning on a speed above the limiting speed the catalogue
-    gives for their bearing added to theirs (:func:`bearingload.bearings.checks.speed_findings`)."""
-    from bearingload.bearings.checks import speed_findings
-
-    if speed is None:
-        return cases
+    gives for their bearing added to theirs (:func:`speed_warnings`)."""
     out = []
     for c in cases:
-        new = [] if c.bearing is None else speed_findings(speed, c.bearing)
-        out.append(dataclasses.replace(c, warnings=(*c.warnings, *new)) if new else c)
+        found = speed_warnings(c.warnings, speed, c.bearing)
+        out.append(c if found is c.warnings else dataclasses.replace(c, warnings=found))
     return out
+
+
+def speed_warnings(warnings: Any, speed: float | None, bearing: Any) -> Any:
+    """``warnings`` (a tuple) with the warning on a ``speed`` [rpm] above the limiting speed the
+    catalogue gives for ``bearing`` added once (:func:`bearingload.bearings.checks.
+    speed_findings`); ``warnings`` itself where there is none."""
+    from bearingload.bearings.checks import speed_findings
+
+    if speed is None or bearing is None:
+        return warnings
+    new = [w for w in speed_findings(speed, bearing) if w not in warnings]
+    return (*warnings, *new) if new else warnings
