@@ -271,12 +271,16 @@ CSV_INPUTS = tuple(k for k in PAIR_INPUTS
 CSV_APPLIED = tuple(f"pair_{k}" for k in ("load", "axial_load", "moment", "moment_cross"))
 
 
+#: A radial load alone on one bearing's factors (k, K_Q): never a pair's bearing's (json keeps
+#: them as a single bearing's keys, null; csv leaves their columns out).
+RADIAL_KEYS = ("k", "K_Q")
+
+
 def _own_keys() -> tuple[str, ...]:
     from bearingload.reports.combined import ANSWER_KEYS, INPUT_KEYS
 
-    radial = ("k", "K_Q")  # a radial load alone on one bearing: never a pair's bearing
     keys = dict.fromkeys(INPUT_KEYS + ANSWER_KEYS)
-    return tuple(k for k in keys if k not in CSV_INPUTS and k not in radial)
+    return tuple(k for k in keys if k not in CSV_INPUTS and k not in RADIAL_KEYS)
 
 
 #: A bearing's own csv columns (those of a single bearing's case but the pair's inputs), in

@@ -561,7 +561,7 @@ def case_columns(
         "free_contact_angle": arr(r.free_contact_angle),
         "axial_play": arr(r.axial_play),
         "q_max": arr(r.q_max),
-        **({} if b.contact_angle is not None else radial_factors(r, misalignment, moment_cross)),
+        **radial_factors(r, misalignment, moment_cross, b.contact_angle is None),
         "loaded_balls": arr(r.loaded_balls, np.int64),
         "x": arr(r.x),
         "y": arr(r.y),
@@ -579,20 +579,30 @@ def case_columns(
     }
 
 
-def radial_factors(r: CombinedDistribution, misalignment: Any, moment_cross: Any) -> dict[str, Any]:
+def radial_factors(
+    r: CombinedDistribution, misalignment: Any, moment_cross: Any, deep_groove: bool = True
+) -> dict[str, Any]:
     """The radial engine's load factor k = Q_max/F_r and load concentration K_Q = k z/2 of a
     deep-groove bearing under a radial load alone (no thrust, moment or misalignment; at a speed
     Q_max is the heaviest inner contact's, which carries the shaft's load), so that a radial case
-    keeps them on the combined engine (the ball dynamics at a speed, or a thrust of 0 given);
-    nothing for another load."""
-    loads = [np.asarray(v, dtype=float) for v in (r.axial_load, r.moment)]
-    if moment_cross is not None:
-        loads.append(np.asarray(moment_cross, dtype=float))
-    f_r = np.asarray(r.load, dtype=float)
-    if misalignment is not None or any(np.any(v != 0) for v in loads) or np.any(f_r <= 0):
-        return {}
-    k = np.atleast_1d(np.asarray(r.q_max, dtype=float) / f_r)
-    return {"k": k, "K_Q": k * np.asarray(r.balls, dtype=float) / 2.0}
+    keeps them on the combined engine (the ball dynamics at a speed, or a thrust of 0 given):
+    arrays over the cases, or lists with None for a case under another load (every key of a
+    combined case is there, its value None where it has none: csv and batch keep one header)."""
+    f_r = np.atleast_1d(np.asarray(r.load, dtype=float))
+    alone = (f_r > 0) & deep_groove
+    for value in (r.axial_load, r.moment, moment_cross, misalignment):
+        if value is not None:  # (a batch's group: NaN where a row does not give it)
+            given = np.broadcast_to(np.asarray(value, dtype=float), f_r.shape)
+            alone = alone & ((given == 0) | np.isnan(given))
+    with np.errstate(divide="ignore", invalid="ignore"):
+        k = np.atleast_1d(np.asarray(r.q_max, dtype=float)) / f_r
+    k_q = k * float(r.balls) / 2.0
+    if alone.all():
+        return {"k": k, "K_Q": k_q}
+    return {
+        "k": [float(v) if a else None for v, a in zip(k, alone, strict=True)],
+        "K_Q": [float(v) if a else None for v, a in zip(k_q, alone, strict=True)],
+    }
 
 
 def largest_loaded_angle(r: CombinedDistribution) -> Any:
