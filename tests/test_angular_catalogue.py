@@ -17,6 +17,7 @@ from bearingload.errors import InputError
 
 from .cli_helpers import besides_tilt, run_entry
 from .fixtures.angular_factors import DESIGNATION_ANGLES, KOYO_B2001, NSK_BEA_40
+from .fixtures.nsk_precision_79 import NSK_PRECISION_79
 from .fixtures.nsk_precision_a5 import NSK_PRECISION_A5
 
 
@@ -221,7 +222,8 @@ def test_catalog_lists_and_shows_angular_rows(capsys):
     assert code == 0 and err == ""
     rows = json.loads(out)["rows"]
     assert [r["designation"] for r in rows] == [r.designation for r in angular_rows()]
-    nsk = [*NSK_BEA_40, *NSK_PRECISION_A5]  # the 25° rows: test_angular_25deg.py
+    # the 25° rows: test_angular_25deg.py; the 79 series: test_angular_79.py
+    nsk = [*NSK_BEA_40, *NSK_PRECISION_A5, *NSK_PRECISION_79]
     assert [r["designation"] for r in rows if r["maker"].startswith("NSK")] == nsk
     epk = [r for r in rows if r["maker"].startswith("EPK")]  # GOST rows: test_angular_gost.py
     zap = [r for r in rows if r["maker"].startswith("ZAP")]  # test_angular_gost_table.py

@@ -52,7 +52,11 @@ def _iso_ratings(z: int, dw: float, dm: float, alpha: float) -> tuple[float, flo
 def _ranges() -> tuple[float, float, float, float]:
     """D_w / ((D - d)/2) and the fill z D_w / (pi d_m) over the NSK 40° (BEA) and Koyo angular
     sets, those there were when the EPK rows were derived (NSK's 25° rows came later)."""
-    rows = [r for r in angular_rows() if r.maker in ("NSK", "KOYO") and r.contact_angle != 25.0]
+    rows = [
+        r
+        for r in angular_rows()
+        if r.maker in ("NSK", "KOYO") and r.contact_angle != 25.0 and r.designation[:2] != "79"
+    ]
     ratio = [r.ball_diameter / ((r.D - r.d) / 2) for r in rows]
     fill = [r.balls * r.ball_diameter / (math.pi * r.pitch_diameter) for r in rows]
     return min(ratio), max(ratio), min(fill), max(fill)

@@ -161,7 +161,7 @@ def _rows() -> list[dict[str, str]]:
 
 def test_every_row_has_a_source_and_rising_classes():
     rows = _rows()
-    assert len(rows) == 118  # 70 C and A5: 32 each; 72 C and A5: 27 each
+    assert len(rows) == 182  # 70 C and A5: 32 each; 72 C and A5: 27 each; 79 C and A5: 32 each
     for r in rows:
         assert "NSK" in r["source"] and r["maker"] == "NSK"
         forces = [float(r[c]) for c in ("EL", "L", "M", "H")]
@@ -222,7 +222,8 @@ def test_an_unreadable_preload_is_refused_naming_the_classes(text):
     ],
 )
 def test_a_class_without_a_table_is_refused_naming_the_series_with_one(name, value, words):
-    with pytest.raises(InputError, match="tabulated for 70xx at 15° and 25°, 72xx") as info:
+    tables = "tabulated for 70xx at 15° and 25°, 72xx at 15° and 25°, 79xx at 15° and 25° "
+    with pytest.raises(InputError, match=tables) as info:
         resolve_preload(value, resolve_bearing(name))
     assert words in info.value.message and info.value.parameter == "preload"
 

@@ -2,10 +2,10 @@
 
 Designations read (the contact angle from the suffix or the GOST type):
 
-* ISO/maker form ``70xx``, ``72xx``, ``73xx`` with a contact-angle suffix: ``C`` 15°, ``A5``
-  and ``AC`` 25°, ``A`` 30°, ``B`` 40° (NSK's angular-contact section: "a contact angle of 30°
-  (Symbol A) or 40° (Symbol B)", C 15°, A5 25°; SKF's AC 25° and B 40°, SKF's older A 30° as a
-  maker's page restates SKF's text). Maker suffixes after the letter (``7205 BEP``,
+* ISO/maker form ``79xx``, ``70xx``, ``72xx``, ``73xx`` with a contact-angle suffix: ``C``
+  15°, ``A5`` and ``AC`` 25°, ``A`` 30°, ``B`` 40° (NSK's angular-contact section: "a contact
+  angle of 30° (Symbol A) or 40° (Symbol B)", C 15°, A5 25°; SKF's AC 25° and B 40°, SKF's older
+  A 30° as a maker's page restates SKF's text). Maker suffixes after the letter (``7205 BEP``,
   ``7205BECBP``, ``7205-B-TVP``, ``7205ACD``) are read past, but a matched pair or set
   (``7205BDB``, ``7205B/DF``, ``7205BDT``) is refused. A plain ``7205`` is not read:
   Nachi's plain 72xx is 30°, while GOST 3189 reads 7205 as a tapered roller bearing.
@@ -13,9 +13,9 @@ Designations read (the contact angle from the suffix or the GOST type):
   (GOST 831-75, clause 2, as restated at ajdocs.ru/gsp/49821/2; the K, K6, K7 variants are not
   read).
 
-Rows: ``data/angular_contact.csv``, each with its source (NSK's and Koyo's ISO-form rows; EPK's
-GOST 36xxx/46xxx/66xxx rows, General Catalogue 2011); a designation of one of these types
-without a row is refused, naming the rows there are (:func:`find_angular`).
+Rows: ``data/angular_contact.csv``, each with its source (NSK's and Koyo's ISO-form rows, the
+79 series NSK's only; EPK's GOST 36xxx/46xxx/66xxx rows, General Catalogue 2011); a designation
+of one of these types without a row is refused, naming the rows there are (:func:`find_angular`).
 """
 
 from __future__ import annotations
@@ -37,7 +37,7 @@ GOST_TYPE_ANGLES: dict[str, float] = {"3": 12.0, "4": 26.0, "6": 36.0}
 #: The forms read, as pattern texts compiled at their first use by :func:`_match`, which a text
 #: that cannot match (a deep-groove ``306``) does not reach: ISO ``7205B``, its series first.
 _ISO = (
-    r"^(?P<series>7[023])(?P<bore>\d{2})\s*[-/]?\s*(?P<letter>A5|AC|A|B|C)(?P<rest>(?:[^0-9].*)?)$"
+    r"^(?P<series>7[0239])(?P<bore>\d{2})\s*[-/]?\s*(?P<letter>A5|AC|A|B|C)(?P<rest>(?:[^0-9].*)?)$"
 )
 #: A matched pair or set after the contact-angle letter (NSK's 7205BDB, 7205BDF, 7205BDT; the
 #: /DB form), with the preload class the pair is sold at where one follows: NSK's EL, L, M, H
@@ -73,7 +73,7 @@ class AngularDesignation:
     standard : str
         ``"ISO"`` or ``"GOST"``.
     series : str
-        ``"70"``, ``"72"``, ``"73"``; GOST: the series digit.
+        ``"79"``, ``"70"``, ``"72"``, ``"73"``; GOST: the series digit.
     bore_code : str
         Two digits.
     bore : float
@@ -310,7 +310,7 @@ def find_angular(parsed: AngularDesignation, maker: str | None = None) -> Angula
 
 def _no_row_message(parsed: AngularDesignation) -> str:
     """Why ``parsed`` has no row, with the rows of its contact angle and series there are."""
-    # ISO: the rows of the series (70, 72, 73) at the angle; GOST: of the type and series digit
+    # ISO: the rows of the series (79, 70, 72, 73) at the angle; GOST: of the type and series digit
     # (46205: the 462xx rows)
     width = 3 if parsed.standard == "GOST" else 2
     kin = sorted(

@@ -8,7 +8,7 @@ reading of a preload, for ``--preload``, a batch file's ``preload`` cell and the
 force of its table by :func:`resolve_preload`.
 
 Tables (``data/preload_classes.csv``, a source on every row): NSK's preloads of DB and DF pairs of
-the 70 and 72 series at 15° (``C``) and 25° (``A5``), by bore code. The 15° rows of bore codes 00
+the 79, 70 and 72 series at 15° (``C``) and 25° (``A5``), by bore code. The 15° rows of bore codes 00
 to 20 are also in NSK's general catalogue (CAT. No. E1102e, Table 10.2), with the same values.
 The table of the bearing's series, bore and contact angle is used whichever maker's row gives the
 ratings (Koyo's 7205C takes NSK's class forces of a 7205C pair), and said so. A class of a

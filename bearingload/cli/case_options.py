@@ -430,8 +430,8 @@ PAIR_DECLARATIONS: dict[str, tuple[tuple[str, ...], dict[str, Any]]] = {
         help="Axial preload F_p of a DB or DF pair: the axial force each bearing carries with "
         f"no external load (>= 0; default 0). Units: {_FORCE} (bare number: N). Or a preload "
         "class as the pair is sold, EL | L | M | H (NSK's extra light ... heavy; the force of "
-        "the table of 70xx and 72xx at 15° and 25°, printed with its source), also as the "
-        "designation's suffix (7205CDBL). E.g. --preload 300N, --preload M.",
+        "the table of 79xx, 70xx and 72xx at 15° and 25°, printed with its source), also as "
+        "the designation's suffix (7205CDBL). E.g. --preload 300N, --preload M.",
     ),
     "width": _option(
         "--width",

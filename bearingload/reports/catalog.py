@@ -93,9 +93,9 @@ def angular_list(fmt: str, bore: float | None = None) -> str:
             "Sources: bearingload catalog show DESIGNATION (where NSK and Koyo both have a row, "
             "NSK's is used unless --maker KOYO). GOST 36xxx (12°), 46xxx (26°), 66xxx (36°): "
             "EPK's rows where a ball set fits the printed ratings (ZAP's for sizes EPK does not "
-            "print, and 46205). 25° (AC, A5): NSK's 70 and 72 "
-            "rows (7205AC finds 7205A5); none of the 73 series: give the ring by hand with solve "
-            "--contact-angle (docs/angular_contact.md)."
+            "print, and 46205). 25° (AC, A5): NSK's 79, 70 and 72 rows (7205AC finds 7205A5); "
+            "none of the 73 series: give the ring by hand with solve --contact-angle "
+            "(docs/angular_contact.md). The 79 series (15° and 25°): NSK's rows only."
         ],
     )
     return render([table], fmt)
