@@ -462,7 +462,8 @@ def case_options(
     hidden: Collection[str] = (),
     pair: bool = False,
 ) -> Callable[[Callable[..., Any]], Callable[..., Any]]:
-    """Declare the case options on a command and hand it one :class:`CaseOptions` as ``case``.
+    """Declare the case options on a command and hand it one plan
+    :class:`~bearingload.plan.case.Case` as ``case``.
 
     Parameters
     ----------
