@@ -201,3 +201,26 @@ def test_a_solution_compares_by_identity_and_draws_only_ball_loads():
     assert a != analyse("6205", load=1000) and a == a and hash(a) == hash(a)
     with pytest.raises(ValueError, match="exact model"):
         analyse("6205", load=1000, method="palmgren").figure()
+
+
+def test_every_option_of_solve_is_read_by_the_plan_with_the_same_quantity_and_range():
+    """One rule book: each case option of the command line has a reader of the same name in
+    plan/inputs.py, a Quantity option the same kind and positivity, a range option the same
+    bounds, a choice the same choices."""
+    import click
+
+    from bearingload.cli.case_options import DECLARATIONS, PAIR_DECLARATIONS
+    from bearingload.cli.options import Quantity
+    from bearingload.plan.inputs import READERS
+
+    declared = DECLARATIONS | PAIR_DECLARATIONS
+    assert set(declared) == set(READERS)
+    for name, (_, attrs) in declared.items():
+        kind, reader = attrs.get("type"), READERS[name]
+        if isinstance(kind, Quantity) and kind.kind != "stiffness":
+            assert (reader.kind, reader.positive) == (kind.kind, kind.positive), name
+        elif isinstance(kind, click.FloatRange):
+            low_open = bool(kind.min_open)
+            assert reader.range == (kind.min, kind.max, low_open), name
+        elif isinstance(kind, click.Choice):
+            assert set(reader.choices) == set(kind.choices), name
