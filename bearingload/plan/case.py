@@ -13,7 +13,6 @@ Imports nothing heavy: the command line reads it at start-up.
 from __future__ import annotations
 
 from collections.abc import Callable, Collection
-from dataclasses import fields
 from typing import Any
 
 from bearingload.bearings.mounting import MOUNTING_PARAMS
@@ -388,4 +387,5 @@ def pair_of(
 
 
 #: The inputs of a :class:`Case` (its fields but the bookkeeping of what was given).
-CASE_FIELDS = tuple(f.name for f in fields(Case) if f.name not in ("given", "bare"))
+#: (read from the class's annotations: the class is built at its first use, not at import)
+CASE_FIELDS = tuple(n for n in Case.__annotations__ if n not in ("given", "bare"))
