@@ -1,6 +1,7 @@
-"""A thrust too small to matter: the combined solver answers continuously down to F_a = 0,
+"""A thrust too small to matter: the combined solver answers continuously as F_a goes to 0,
 solving a case it cannot balance with a thrust below 1e-12 of the largest load as its neighbour
-without it, and saying so."""
+at that share of the load (the limit of a thrust going to 0: any thrust pushes the ring across
+its axial play), and saying so."""
 
 from __future__ import annotations
 
@@ -22,6 +23,9 @@ def test_a_sweep_of_the_thrust_down_to_zero_has_no_hole():
     neglected = np.asarray(r.thrust_neglected)
     assert not neglected[0] and not neglected[5:].any()  # 0 is no thrust; 1e-11 N balances
     assert neglected[1:5].all()
+    # the limit of a thrust going to 0: the ring pushed across its axial play, as at 1e-11 N
+    assert np.allclose(r.axial[1:7], r.axial[5], rtol=1e-9) and r.axial[5] > 0.1
+    assert np.allclose(r.tilt[1:7], r.tilt[5], rtol=1e-9)
 
 
 def test_only_a_thrust_below_the_tolerance_of_the_largest_load_is_left_out():
@@ -38,6 +42,7 @@ def test_the_thrust_left_out_is_said_with_its_size(capsys):
     code, out, err = run_entry(capsys, "solve", "6205", "-F", "1kN", "-A", "1e-12N", "-G", "0.2")
     assert code == 0 and "heaviest ball load" in out
     assert "the thrust F_a = 1e-12 N is below 1e-12 of the largest load" in err
+    assert "solved with a thrust of 1e-12 of that load" in err
 
 
 @pytest.mark.parametrize("thrust", [1e-13, 1e-12])

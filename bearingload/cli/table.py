@@ -320,7 +320,12 @@ def _pair_life(
             f"with table {name}: {RADIAL_ONLY}"
         )
     for option, given, why in (
-        ("--preload", case.preload is not None, "its rows are preloads (--preloads)"),
+        ("--preload", "preload" in case.given, "its rows are preloads (--preloads)"),
+        (
+            f"the designation's preload class {case.preload}",
+            "preload" not in case.given and case.preload is not None,
+            "its rows are preloads (--preloads); give the designation without the class",
+        ),
         ("--clearances", clearances is not None, "a pair's rows are preloads (--preloads)"),
         ("--z-max", _given("z_max"), "it is one pair, not a table over z"),
         ("--method", _given("method"), "the life comes from the exact model only"),

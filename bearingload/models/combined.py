@@ -219,7 +219,8 @@ class CombinedDistribution(StiffnessViews):
         :func:`_least_norm_tilt`); the least of them is the one returned.
     thrust_neglected : ndarray of bool or None
         The thrust, below :data:`NEGLIGIBLE_THRUST` of the largest load, was beyond what the
-        ring's axial position resolves: the case is its neighbour without it, the thrust its
+        ring's axial position resolves: the case is its neighbour with that share of the
+        largest load as its thrust (the limit of a thrust going to 0), the difference its
         error.
     """
 
@@ -1198,15 +1199,18 @@ def _thrust_retry(p: Problem, geo: _Geometry, curve: _StiffnessCurve | None) -> 
 #: A thrust below this share of the largest applied load (the equilibrium's tolerance) may be
 #: beyond what the ring's axial position resolves: a 6205 at G_r = 0.2 mm with one ball
 #: loaded under F_r = 1 kN balances 1e-11 N of thrust, not 1e-12 N. A case the solver cannot
-#: balance with such a thrust is solved as its neighbour without it, the thrust left as its
-#: error, so that a sweep of the thrust down to 0 has no hole. [-]
+#: balance with such a thrust is solved as its neighbour with this share of the largest load
+#: as its thrust (the same sign), the difference left as its error: the limit of a thrust
+#: going to 0, not the case without one (a thrust, however small, pushes the ring across its
+#: axial play). [-]
 NEGLIGIBLE_THRUST = 1e-12
 
 
 def _neglect_thrust(p: Problem, geo: _Geometry, curve: _StiffnessCurve | None, got: tuple) -> Any:
     """The cases of ``got`` (as :func:`_thrust_retry` returns them, updated in place) left
     unbalanced with a thrust below :data:`NEGLIGIBLE_THRUST` of their largest load, solved
-    each alone without it (``p.f`` then holds 0 for it); which cases those are (n,) bool."""
+    each alone with that share as its thrust (``p.f`` then holds it); which cases those are
+    (n,) bool."""
     vh, vl, kappa, total, end, tangent = got
     neglected = np.zeros(vh.shape[0], dtype=bool)
     f2 = p.f[:, 2]
@@ -1217,7 +1221,7 @@ def _neglect_thrust(p: Problem, geo: _Geometry, curve: _StiffnessCurve | None, g
     for i in np.flatnonzero(small & ~(res <= ACCEPT)).tolist():
         one = np.array([i])
         q = p.take(one)
-        q.f[:, 2] = 0.0
+        q.f[:, 2] = np.copysign(NEGLIGIBLE_THRUST, f2[i])
         own = None if curve is None else _StiffnessCurve(curve.values[one])
         again = _solve_with_stiffness(q, _geo_take(geo, one), own)
         vh[i], vl[i], kappa[i], total[i] = (
@@ -1229,7 +1233,7 @@ def _neglect_thrust(p: Problem, geo: _Geometry, curve: _StiffnessCurve | None, g
         end.put(one, again[4])
         tangent[0][i] = again[5][0][0]
         tangent[1][0][i], tangent[1][1][i] = again[5][1][0][0], again[5][1][1][0]
-        p.f[i, 2] = 0.0
+        p.f[i, 2] = q.f[0, 2]
         neglected[i] = True
     return neglected
 

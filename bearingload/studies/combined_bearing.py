@@ -210,7 +210,9 @@ def thrust_neglected_warning(axial_load: float, radial_load: float) -> str:
     return (
         f"the thrust F_a = {abs(axial_load):.3g} N is below 1e-12 of the largest load "
         f"({radial_load:.6g} N) and beyond what the ring's axial position resolves here: the "
-        f"case is solved without it, the thrust its balance error ({abs(axial_load):.3g} N)"
+        "case is solved with a thrust of 1e-12 of that load (the limit of a thrust going to 0; "
+        "a thrust, however small, pushes the ring across its axial play), the difference its "
+        "balance error"
     )
 
 
