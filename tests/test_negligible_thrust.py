@@ -50,3 +50,14 @@ def test_a_case_alone_and_in_a_batch_agree(thrust):
     alone = solve_combined(9, 1000.0, thrust, **ONE_BALL)
     batch = solve_combined(9, 1000.0, np.array([300.0, thrust, 1e-14]), **ONE_BALL)
     assert alone.q_max == batch.q_max[1] and alone.x == batch.x[1]
+
+
+def test_the_flags_and_counts_of_a_result_at_speed_keep_their_types():
+    """A result at speed keeps the static answer's flags as bools and its counts as integers,
+    so that they index and count as the static result's do."""
+    from bearingload import solve_high_speed
+
+    r = solve_high_speed(9, np.array([1000.0, 2000.0]), 0.0, speed=3000, clearance=0.01,
+                         ball_diameter=7.938, pitch_diameter=38.5)  # fmt: skip
+    assert r.tilt_undetermined.dtype == bool and r.thrust_neglected.dtype == bool
+    assert r.iterations.dtype.kind == "i" and r.tilt[r.thrust_neglected].size == 0

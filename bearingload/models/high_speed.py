@@ -718,8 +718,8 @@ def _result(
     g1, g2, qi, qo, si, ci, fc, mg, wc, wr, beta, di = st.terms[:12]
     rr = geo.R_i
 
-    def case(a: Any) -> Any:
-        a = np.asarray(a, dtype=float)
+    def case(a: Any, dtype: Any = float) -> Any:
+        a = np.asarray(a, dtype=dtype)
         return numerics.scalar_out(
             a.reshape(shape) if a.size == math.prod(shape) else np.broadcast_to(a, shape).copy()
         )
@@ -732,8 +732,9 @@ def _result(
         if isinstance(value, np.ndarray) or isinstance(value, float):
             tail = np.shape(value)[len(np.shape(static.x)) :]
             fields[name] = np.broadcast_to(value, shape + tail).copy()
-            if not tail:
-                fields[name] = case(fields[name])
+            if not tail:  # the static answer's flags stay bools, its counts integers
+                kind = np.asarray(value).dtype
+                fields[name] = case(fields[name], kind if kind.kind in "biu" else float)
     ai = np.rad2deg(np.arctan2(si, ci))
     ao = np.rad2deg(st.ao)
 
@@ -748,7 +749,7 @@ def _result(
         moment=case(moment),
         contact_angles=ball(ai), ball_loads=ball(qi), ball_stiffnesses=ball(_stiffness(ring.b.ki, ci)),
         ball_approaches=ball(di + st.do), stiffness_matrix=tangent.reshape(shape + (5, 5)),
-        iterations=case(np.asarray(fields["iterations"]).ravel() + its),
+        iterations=case(np.asarray(fields["iterations"]).ravel() + its, np.int64),
     )  # fmt: skip
     return HighSpeedDistribution(
         **fields,

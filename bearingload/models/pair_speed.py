@@ -337,8 +337,8 @@ def _result(static: PairDistribution, sh: _Shaft, geo: Any, flat: dict, shape: t
     radius = geo.R_i
     one_sided = np.ones(radius.size, dtype=bool)
 
-    def case(a: Any) -> Any:
-        return numerics.scalar_out(np.asarray(a, dtype=float).reshape(shape))
+    def case(a: Any, dtype: Any = float) -> Any:
+        return numerics.scalar_out(np.asarray(a, dtype=dtype).reshape(shape))
 
     bearings = []
     for k in range(2):
@@ -362,7 +362,7 @@ def _result(static: PairDistribution, sh: _Shaft, geo: Any, flat: dict, shape: t
         tilt_cross=case(np.rad2deg(v[:, 4] / radius)),
         stiffness_matrix=tangent.reshape(shape + (5, 5)), unloaded=unloaded.reshape(shape + (2,)),
         residual=case(st.merit),
-        iterations=case(np.asarray(static.iterations, dtype=float).ravel() + its),
+        iterations=case(np.asarray(static.iterations).ravel() + its, np.int64),
     )  # fmt: skip
     return PairHighSpeedDistribution(**fields, speed=case(flat["speed"]),
                                      ball_density=case(flat["ball_density"]))  # fmt: skip
