@@ -218,8 +218,10 @@ def against_fsolve() -> None:
     print(f"  fsolve, one case                          : {per['fsolve'] * 1e6:9.1f} us")
     for kind, label in [*kinds.items(), ("new geometry", "Hertz, new geom.")]:
         ratio = per[f"scalar {kind}"] / per["fsolve"]
-        print(f"  solve_combined, one case, {label:16s}: {per[f'scalar {kind}'] * 1e6:9.1f} us"
-              f"  ({ratio:5.2f} x the fsolve time; target <= 0.1)")  # fmt: skip
+        print(
+            f"  solve_combined, one case, {label:16s}: {per[f'scalar {kind}'] * 1e6:9.1f} us"
+            f"  ({ratio:5.2f} x the fsolve time; target <= 0.1)"
+        )
     for kind, label in kinds.items():
         speed = per["fsolve"] / per[f"vector {kind}"]
         print(f"  {N_VECTOR:,} cases in one call, {label:16s}: {per[f'vector {kind}'] * 1e6:9.1f}"

@@ -16,18 +16,28 @@ from .cli_helpers import invoke
 
 #: (solve's arguments, analyse's arguments) of the same case, one per engine and path.
 SAME_CASES = [
-    (["6205", "-F", "1.4kN", "-A", "700N", "-G", "C3"],
-     {"bearing": "6205", "load": "1.4kN", "axial_load": 700, "clearance": "C3"}),
-    (["-z", "8", "-F", "300kgf", "-K", "4700kgf/mm^1.5", "-G", "20um"],
-     {"balls": 8, "load": "300kgf", "stiffness": "4700kgf/mm^1.5", "clearance": "20um"}),
-    (["6306", "-F", "3kN", "-G", "C3", "--clearance-pick", "range"],
-     {"bearing": "6306", "load": 3000, "clearance": "C3", "clearance_pick": "range"}),
-    (["7205BDB", "--preload", "300N", "-F", "1kN", "-A", "500N", "--speed", "10000"],
-     {"bearing": "7205BDB", "preload": 300, "load": 1000, "axial_load": 500, "speed": 10000}),
-    (["6205", "-F", "1.4kN", "--speed", "3000", "--viscosity", "20cSt", "--reliability", "99"],
-     {"bearing": "6205", "load": 1400, "speed": 3000, "viscosity": 20, "reliability": 99}),
+    (
+        ["6205", "-F", "1.4kN", "-A", "700N", "-G", "C3"],
+        {"bearing": "6205", "load": "1.4kN", "axial_load": 700, "clearance": "C3"},
+    ),
+    (
+        ["-z", "8", "-F", "300kgf", "-K", "4700kgf/mm^1.5", "-G", "20um"],
+        {"balls": 8, "load": "300kgf", "stiffness": "4700kgf/mm^1.5", "clearance": "20um"},
+    ),
+    (
+        ["6306", "-F", "3kN", "-G", "C3", "--clearance-pick", "range"],
+        {"bearing": "6306", "load": 3000, "clearance": "C3", "clearance_pick": "range"},
+    ),
+    (
+        ["7205BDB", "--preload", "300N", "-F", "1kN", "-A", "500N", "--speed", "10000"],
+        {"bearing": "7205BDB", "preload": 300, "load": 1000, "axial_load": 500, "speed": 10000},
+    ),
+    (
+        ["6205", "-F", "1.4kN", "--speed", "3000", "--viscosity", "20cSt", "--reliability", "99"],
+        {"bearing": "6205", "load": 1400, "speed": 3000, "viscosity": 20, "reliability": 99},
+    ),
     (["NU206", "-F", "5kN"], {"bearing": "NU206", "load": "5kN"}),
-]  # fmt: skip
+]
 
 
 @pytest.mark.parametrize("cli, library", SAME_CASES)
@@ -189,8 +199,12 @@ def test_an_error_keeps_its_kind_and_fields_when_reworded_or_pickled():
     assert conflict.way_out == "give 'misalignment'" and conflict.problem.endswith("why")
     unused = UnusedError(("f_i", "maker"), "a bearing").named("inner_conformity")
     assert unused.parameters == ("inner_conformity", "maker")
-    for error in (conflict, unused, MissingError("load", "F_r"),
-                  ConvergenceError("ring", 3, 0.5, {"load": 1.0}, {"load": "N"})):  # fmt: skip
+    for error in (
+        conflict,
+        unused,
+        MissingError("load", "F_r"),
+        ConvergenceError("ring", 3, 0.5, {"load": 1.0}, {"load": "N"}),
+    ):
         again = pickle.loads(pickle.dumps(error))
         assert type(again) is type(error) and str(again) == str(error)
         assert again.__dict__.keys() == error.__dict__.keys()

@@ -281,10 +281,25 @@ READS_MESSAGES = {"quality/stability.py", "quality/stability_combined.py"}
 
 #: Methods that search, cut or rewrite a text.
 _TEXT_METHODS = {
-    "split", "rsplit", "replace", "partition", "rpartition", "startswith", "endswith",
-    "removeprefix", "removesuffix", "find", "rfind", "index", "rindex", "count", "strip",
-    "lstrip", "rstrip", "splitlines",
-}  # fmt: skip
+    "split",
+    "rsplit",
+    "replace",
+    "partition",
+    "rpartition",
+    "startswith",
+    "endswith",
+    "removeprefix",
+    "removesuffix",
+    "find",
+    "rfind",
+    "index",
+    "rindex",
+    "count",
+    "strip",
+    "lstrip",
+    "rstrip",
+    "splitlines",
+}
 
 
 def _message_reads(tree: ast.AST) -> list[int]:

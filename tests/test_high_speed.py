@@ -280,8 +280,9 @@ def test_batch_equals_one_by_one_and_ceramic_balls_lighter():
         one = solve_high_speed(13, 500.0, 1200.0, speed=speed, contact_angle=25.0, **ANGULAR)
         assert np.array_equal(one.ball_loads_outer, r.ball_loads_outer[i])
     steel = r.centrifugal_forces[2]
-    ceramic = solve_high_speed(13, 500.0, 1200.0, speed=20000.0, contact_angle=25.0,
-                               ball_density=3200.0, **ANGULAR).centrifugal_forces  # fmt: skip
+    ceramic = solve_high_speed(
+        13, 500.0, 1200.0, speed=20000.0, contact_angle=25.0, ball_density=3200.0, **ANGULAR
+    ).centrifugal_forces
     assert np.all(ceramic < 0.5 * steel)
 
 

@@ -30,8 +30,15 @@ def twins(**options):
     return dataclasses.dataclass(**options)(body()), lazy(**options)(body())
 
 
-OPTIONS = [{}, {"frozen": True}, {"order": True}, {"eq": False}, {"unsafe_hash": True},
-           {"frozen": True, "order": True}, {"repr": False}]  # fmt: skip
+OPTIONS = [
+    {},
+    {"frozen": True},
+    {"order": True},
+    {"eq": False},
+    {"unsafe_hash": True},
+    {"frozen": True, "order": True},
+    {"repr": False},
+]
 
 
 def test_the_comparison_and_text_methods_wait_for_their_first_use():

@@ -14,6 +14,8 @@ from bearingload.models.combined import NEGLIGIBLE_THRUST
 #: A 6205 with a huge clearance: one ball carries F_r = 1 kN; its axial position resolved
 #: 1e-11 N of thrust, not 1e-12 N (a ConvergenceError before).
 ONE_BALL = {"ball_diameter": 7.938, "pitch_diameter": 38.5, "clearance": 0.2}
+#: The 6205's ball set alone.
+GEOMETRY = {"ball_diameter": 7.938, "pitch_diameter": 38.5}
 
 
 def test_a_sweep_of_the_thrust_down_to_zero_has_no_hole():
@@ -57,7 +59,7 @@ def test_the_flags_and_counts_of_a_result_at_speed_keep_their_types():
     so that they index and count as the static result's do."""
     from bearingload import solve_high_speed
 
-    r = solve_high_speed(9, np.array([1000.0, 2000.0]), 0.0, speed=3000, clearance=0.01,
-                         ball_diameter=7.938, pitch_diameter=38.5)  # fmt: skip
+    loads = np.array([1000.0, 2000.0])
+    r = solve_high_speed(9, loads, 0.0, speed=3000, clearance=0.01, **GEOMETRY)
     assert r.tilt_undetermined.dtype == bool and r.thrust_neglected.dtype == bool
     assert r.iterations.dtype.kind == "i" and r.tilt[r.thrust_neglected].size == 0

@@ -28,8 +28,17 @@ def _balls(n: int, seed: int) -> tuple[np.ndarray, ...]:
     a = float(geo.A[0])
     omega = rng.uniform(0.0, 30000.0, n) * math.pi / 30.0
     mass = 7.85e-6 * math.pi / 6.0 * 7.938**3
-    consts = np.stack([np.full(n, 0.02 * 7.938), np.full(n, 0.03 * 7.938), np.full(n, 7.938),
-                       np.full(n, 38.5), omega, np.full(n, mass)], axis=1)  # fmt: skip
+    consts = np.stack(
+        [
+            np.full(n, 0.02 * 7.938),
+            np.full(n, 0.03 * 7.938),
+            np.full(n, 7.938),
+            np.full(n, 38.5),
+            omega,
+            np.full(n, mass),
+        ],
+        axis=1,
+    )
     rho = a * math.cos(math.radians(40.0)) + rng.uniform(-0.01, 0.03, n)
     u = a * math.sin(math.radians(40.0)) + rng.uniform(-0.01, 0.03, n)
     do = rng.uniform(1e-4, 0.01, n)

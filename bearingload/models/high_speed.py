@@ -547,9 +547,13 @@ def _state(part: tuple[np.ndarray, ...], out: np.ndarray) -> _State:
 
 
 def core_solve(
-    r: _Ring, shaft: tuple[np.ndarray, ...], limits: list[int], v0: np.ndarray,
-    v_static: np.ndarray, continued: bool,
-) -> tuple[np.ndarray, list[_State], np.ndarray]:  # fmt: skip
+    r: _Ring,
+    shaft: tuple[np.ndarray, ...],
+    limits: list[int],
+    v0: np.ndarray,
+    v_static: np.ndarray,
+    continued: bool,
+) -> tuple[np.ndarray, list[_State], np.ndarray]:
     """The core's solve (``solve_speed``) of n cases of bearings ``r``: one bearing, or a pair's
     shaft, ``shaft`` = (maps (n, k, 5, 5), offset (n, k, 5), f (n, 5), held (n, 5)) and its
     ``limits`` (iterations, stages, warm stages, the state at rest); the Newton from v0, where
@@ -642,8 +646,14 @@ def _solve(
     zero[:, 2] = False
     v_static = np.where(zero, 0.0, v_static)
     ki, ko = _stiffness_nodes(geo, e, nu)
-    col = [(geo.f_i - 0.5) * geo.D_w, (geo.f_o - 0.5) * geo.D_w, geo.D_w, geo.d_m,
-           flat["speed"] * math.pi / 30.0, dens / _MM3 * math.pi / 6.0 * geo.D_w**3]  # fmt: skip
+    col = [
+        (geo.f_i - 0.5) * geo.D_w,
+        (geo.f_o - 0.5) * geo.D_w,
+        geo.D_w,
+        geo.d_m,
+        flat["speed"] * math.pi / 30.0,
+        dens / _MM3 * math.pi / 6.0 * geo.D_w**3,
+    ]
     ri, ro, dwc, dmc, omega, mass = (a[:, None] for a in col)
     b = _Set(ri, ro, dwc, dmc, omega, mass, ki, ko)
     ring = _Ring(b, c, s, geo.A - geo.g, f, f_ref, held, one_sided, geo.A)

@@ -245,8 +245,14 @@ def _setup(static: PairDistribution, c: dict, shape: tuple[int, ...]) -> tuple[A
     geo = dataclasses.replace(geo, R_i=radius)
     n = radius.size
     ki, ko = _hs._stiffness_nodes(geo, c["modulus"], c["poisson"])
-    col = [(geo.f_i - 0.5) * geo.D_w, (geo.f_o - 0.5) * geo.D_w, geo.D_w, geo.d_m,
-           c["speed"] * math.pi / 30.0, c["ball_density"] / 1e9 * math.pi / 6.0 * geo.D_w**3]  # fmt: skip
+    col = [
+        (geo.f_i - 0.5) * geo.D_w,
+        (geo.f_o - 0.5) * geo.D_w,
+        geo.D_w,
+        geo.d_m,
+        c["speed"] * math.pi / 30.0,
+        c["ball_density"] / 1e9 * math.pi / 6.0 * geo.D_w**3,
+    ]
     ri, ro, dw, dm, omega, mass = (a[:, None] for a in col)
     b = _hs._Set(ri, ro, dw, dm, omega, mass, ki, ko)
     cos_, sin_, mirror = _comb._directions(z, c["cage_angle"])
