@@ -238,3 +238,14 @@ def test_every_option_of_solve_is_read_by_the_plan_with_the_same_quantity_and_ra
             assert reader.range == (kind.min, kind.max, low_open), name
         elif isinstance(kind, click.Choice):
             assert set(reader.choices) == set(kind.choices), name
+
+
+@pytest.mark.parametrize("designation", ["foo", "79005CDB"])
+def test_an_unreadable_designation_beside_a_preload_is_refused_as_a_designation(designation):
+    """The designation's own error comes first, not the pair's ('a preload belongs to a pair'),
+    which assumed a bearing it could not read."""
+    with pytest.raises(InputError, match="cannot read") as caught:
+        analyse(designation, load=1000, axial_load=200, preload="M")
+    assert caught.value.parameter == "bearing"
+    with pytest.raises(InputError, match="belongs to a bearing pair"):
+        analyse("6205", load=1000, axial_load=200, preload="M")

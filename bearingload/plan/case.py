@@ -327,6 +327,8 @@ class Case:
 
         single, arrangement, preload = pair_of(self.bearing, self.arrangement, self.preload)
         if arrangement is None:
+            if self.preload is not None or self.width is not None:
+                _readable(self.bearing)  # a designation not read: that error, not the pair's
             for name in ("preload", "width"):
                 if getattr(self, name) is not None:
                     raise InputError(
@@ -353,6 +355,16 @@ class Case:
             "rotating": self.rotating or "inner",
             "dynamic_rating": self.dynamic_rating,
         }
+
+
+def _readable(bearing: str | None) -> None:
+    """Refuse a designation that is neither an angular-contact one nor one the catalogue reads
+    (its own error, :func:`bearingload.bearings.designation.parse`)."""
+    from bearingload.bearings.angular import parse_angular
+    from bearingload.bearings.designation import parse
+
+    if bearing is not None and parse_angular(bearing) is None:
+        parse(bearing)
 
 
 def pair_of(
