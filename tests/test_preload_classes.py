@@ -222,7 +222,10 @@ def test_an_unreadable_preload_is_refused_naming_the_classes(text):
     ],
 )
 def test_a_class_without_a_table_is_refused_naming_the_series_with_one(name, value, words):
-    tables = "tabulated for 70xx at 15° and 25°, 72xx at 15° and 25°, 79xx at 15° and 25° "
+    tables = (
+        r"tabulated for 70xx at 15° and 25° \(bore codes 00-40\), 72xx at 15° and 25° "
+        r"\(bore codes 00-30\), 79xx at 15° and 25° \(bore codes 00-40\) "
+    )
     with pytest.raises(InputError, match=tables) as info:
         resolve_preload(value, resolve_bearing(name))
     assert words in info.value.message and info.value.parameter == "preload"

@@ -105,12 +105,16 @@ def _table() -> dict[tuple[str, float, str], _Row]:
 
 
 def tabulated() -> str:
-    """The series and angles that have a class table, in words (for messages)."""
+    """The series, angles and bore codes that have a class table, in words (for messages)."""
     angles: dict[str, set[float]] = {}
+    codes: dict[str, set[str]] = {}
     for r in _table().values():
         angles.setdefault(r.series, set()).add(r.contact_angle)
+        codes.setdefault(r.series, set()).add(r.bore_code)
     return ", ".join(
-        f"{s}xx at {' and '.join(f'{a:g}°' for a in sorted(angles[s]))}" for s in sorted(angles)
+        f"{s}xx at {' and '.join(f'{a:g}°' for a in sorted(angles[s]))} "
+        f"(bore codes {min(codes[s])}-{max(codes[s])})"
+        for s in sorted(angles)
     )
 
 
