@@ -126,3 +126,24 @@ def test_few_balls_with_a_stiff_exponent_solve_at_any_cage_angle():
     r = solve(z, 1.0, 1.0, clearance, cage, m)
     for i in range(0, n, 7):
         _balanced(r[i], 1.0)
+
+
+def test_a_ring_just_off_symmetry_the_newton_cannot_balance_is_answered_as_symmetric():
+    """3 balls, exponent 10/9, a preload of 3.2e-9 mm and the cage 3e-11° off the load line
+    stalled at a relative residual of 1.2e-10: within 1e-9° of symmetry such a case is answered
+    with the symmetric ring, alone and among other cases."""
+    import numpy as np
+
+    from bearingload import solve
+    from bearingload.models.equilibrium import NEAR_SYMMETRIC_DEG
+
+    args = (3, 1.0, 1e5, -3.1622776601683795e-09)
+    symmetric = solve(*args, cage_angle=0.0, exponent=10 / 9)
+    near = solve(*args, cage_angle=3e-11, exponent=10 / 9)
+    assert NEAR_SYMMETRIC_DEG == 1e-9 and near.y == 0.0
+    assert near.x == symmetric.x and near.q_max == symmetric.q_max
+    mixed = solve(
+        3, np.array([1.0, 1.0]), 1e5, args[3], cage_angle=np.array([3e-11, 7.0]), exponent=10 / 9
+    )
+    assert mixed.x[0] == near.x
+    assert mixed.x[1] == solve(*args, cage_angle=7.0, exponent=10 / 9).x
