@@ -1184,17 +1184,33 @@ def _thrust_retry(p: Problem, geo: _Geometry, curve: _StiffnessCurve | None) -> 
         ~(res <= ACCEPT) & p.one_sided & (f0 > 0) & (f2 > 0) & (f2 < THRUST_RATIO * f0)
         & ~p.locked[:, 2]
     )  # fmt: skip
-    for i in rows:
+    for i in rows.tolist():
         one = np.array([i])
         own = None if curve is None else _StiffnessCurve(curve.values[one])
         got = _thrust_path(p.take(one), _geo_take(geo, one), own)
         if got is None:
             continue
-        vh[i], vl[i], kappa[i], total[i] = got[0][0], got[1][0], got[2][0], total[i] + got[3][0]
-        end.put(one, got[4])
-        tangent[0][i] = got[5][0][0]
-        tangent[1][0][i], tangent[1][1][i] = got[5][1][0][0], got[5][1][1][0]
+        _put_row((vh, vl, kappa, total, end, tangent), i, got)
     return vh, vl, kappa, total, end, tangent
+
+
+def _put_row(got: tuple, i: int, again: tuple) -> None:
+    """Case ``i`` of the answers ``got`` (as :func:`_solve_with_stiffness` returns them,
+    updated in place) replaced by ``again``, the answer of that case solved alone; its
+    iterations added to those already spent."""
+    vh, vl, kappa, total, end, tangent = got
+    vh[i], vl[i], kappa[i], total[i] = again[0][0], again[1][0], again[2][0], total[i] + again[3][0]
+    end.put(np.array([i]), again[4])
+    tangent[0][i] = again[5][0][0]
+    tangent[1][0][i], tangent[1][1][i] = again[5][1][0][0], again[5][1][1][0]
+
+
+def _solve_row(q: Problem, geo: _Geometry, curve: _StiffnessCurve | None, i: int) -> tuple:
+    """Case ``i``'s problem ``q`` (one row, changed by the caller) solved alone with its own
+    geometry and stiffness curve (:func:`_solve_with_stiffness`)."""
+    one = np.array([i])
+    own = None if curve is None else _StiffnessCurve(curve.values[one])
+    return _solve_with_stiffness(q, _geo_take(geo, one), own)
 
 
 #: A thrust below this share of the largest applied load (the equilibrium's tolerance) may be
@@ -1212,28 +1228,17 @@ def _neglect_thrust(p: Problem, geo: _Geometry, curve: _StiffnessCurve | None, g
     unbalanced with a thrust below :data:`NEGLIGIBLE_THRUST` of their largest load, solved
     each alone with that share as its thrust (``p.f`` then holds it); which cases those are
     (n,) bool."""
-    vh, vl, kappa, total, end, tangent = got
-    neglected = np.zeros(vh.shape[0], dtype=bool)
+    neglected = np.zeros(p.f.shape[0], dtype=bool)
     f2 = p.f[:, 2]
     small = (f2 != 0) & (np.abs(f2) < NEGLIGIBLE_THRUST) & ~p.locked[:, 2]
     if not small.any():
         return neglected
+    end = got[4]
     res = _ring.residual(p, end.gen, end.size, p.imposed)
     for i in np.flatnonzero(small & ~(res <= ACCEPT)).tolist():
-        one = np.array([i])
-        q = p.take(one)
+        q = p.take(np.array([i]))
         q.f[:, 2] = np.copysign(NEGLIGIBLE_THRUST, f2[i])
-        own = None if curve is None else _StiffnessCurve(curve.values[one])
-        again = _solve_with_stiffness(q, _geo_take(geo, one), own)
-        vh[i], vl[i], kappa[i], total[i] = (
-            again[0][0],
-            again[1][0],
-            again[2][0],
-            total[i] + again[3][0],
-        )
-        end.put(one, again[4])
-        tangent[0][i] = again[5][0][0]
-        tangent[1][0][i], tangent[1][1][i] = again[5][1][0][0], again[5][1][1][0]
+        _put_row(got, i, _solve_row(q, geo, curve, i))
         p.f[i, 2] = q.f[0, 2]
         neglected[i] = True
     return neglected
@@ -1255,7 +1260,7 @@ def _near_symmetric(
     solved each alone with the balls at the symmetric position (``p`` then holds it)."""
     from bearingload.models import _core
 
-    vh, vl, kappa, total, end, tangent = got
+    end = got[4]
     res = _ring.residual(p, end.gen, end.size, p.imposed)
     rows = np.flatnonzero(~(res <= ACCEPT) & (p.f[:, 4] == 0) & ~p.imposed.any(axis=1))
     for i in rows.tolist():
@@ -1263,20 +1268,9 @@ def _near_symmetric(
         c, s, mirror = _core.directions(p.z, np.ascontiguousarray(cage[one]), NEAR_SYMMETRIC_DEG)
         if not mirror[0]:
             continue
-        q = p.take(one)
-        q = dataclasses.replace(q, c=c, s=s)
+        q = dataclasses.replace(p.take(one), c=c, s=s)
         q.locked[0, 1] = q.locked[0, 4] = True  # y and the tilt across: 0 by the symmetry
-        own = None if curve is None else _StiffnessCurve(curve.values[one])
-        again = _solve_with_stiffness(q, _geo_take(geo, one), own)
-        vh[i], vl[i], kappa[i], total[i] = (
-            again[0][0],
-            again[1][0],
-            again[2][0],
-            total[i] + again[3][0],
-        )
-        end.put(one, again[4])
-        tangent[0][i] = again[5][0][0]
-        tangent[1][0][i], tangent[1][1][i] = again[5][1][0][0], again[5][1][1][0]
+        _put_row(got, i, _solve_row(q, geo, curve, i))
         p.c[i], p.s[i], p.locked[i] = c[0], s[0], q.locked[0]
 
 
