@@ -159,13 +159,11 @@ class _Pair:
 
     def maps(self) -> np.ndarray:
         """L_k (n, 2, 5, 5): local displacement per pair displacement (scaled, t = R_i theta)."""
-        n = self.f.shape[0]
-        m = np.zeros((n, 2, 5, 5))
-        for k in range(2):
-            m[:, k, 0, 0] = m[:, k, 1, 1] = 1.0
-            m[:, k, 0, 3] = m[:, k, 1, 4] = -self.lever[:, k]
-            for i in (2, 3, 4):
-                m[:, k, i, i] = self.sigma[k]
+        diagonal = np.ones((2, 5))
+        diagonal[:, 2:] = self.sigma[:, None]
+        m = np.zeros((self.f.shape[0], 2, 5, 5))
+        m[:, :, range(5), range(5)] = diagonal
+        m[:, :, 0, 3] = m[:, :, 1, 4] = -self.lever
         return m
 
 
@@ -304,29 +302,20 @@ def solve_pair(
             "must be at least 3 per bearing of a pair: 1 or 2 balls leave the shaft free to "
             "turn about their line (a real bearing has many more)",
         )
-    fr = validate.at_least("radial_load", radial_load, 0.0, "N")
-    fa = validate.finite("axial_load", axial_load)
-    fp = validate.finite("preload", preload)
-    _check_pair(kind, fa, fp, contact_angle)
-    named = {"radial_load": fr, "axial_load": fa, "preload": fp,
-             "contact_angle": validate.finite("contact_angle", contact_angle),
-             "ball_diameter": validate.finite("ball_diameter", ball_diameter),
-             "pitch_diameter": validate.finite("pitch_diameter", pitch_diameter),
-             "width": validate.positive("width", width, "mm"),
-             "f_i": validate.conformity("f_i", f_i), "f_o": validate.conformity("f_o", f_o),
-             "cage_angle": validate.finite("cage_angle", cage_angle),
-             "moment": validate.finite("moment", moment),
-             "moment_cross": validate.finite("moment_cross", moment_cross),
-             "modulus": validate.positive("modulus", modulus, "MPa"),
-             "poisson": validate.finite("poisson", poisson)}  # fmt: skip
+    named = {"radial_load": radial_load, "axial_load": axial_load, "preload": preload,
+             "contact_angle": contact_angle, "ball_diameter": ball_diameter,
+             "pitch_diameter": pitch_diameter, "width": width, "f_i": f_i, "f_o": f_o,
+             "cage_angle": cage_angle, "moment": moment, "moment_cross": moment_cross,
+             "modulus": modulus, "poisson": poisson}  # fmt: skip
     if stiffness is not None:
-        named["stiffness"] = validate.positive("stiffness", stiffness, "N/mm^1.5")
+        named["stiffness"] = stiffness
     if tilt_radius is not None:
-        named["tilt_radius"] = validate.positive("tilt_radius", tilt_radius, "mm")
-    validate.broadcast_shape(named)
-    arrays = np.broadcast_arrays(*(np.asarray(v, dtype=float) for v in named.values()))
-    shape = arrays[0].shape
-    c = dict(zip(named, (a.ravel() for a in arrays), strict=True))
+        named["tilt_radius"] = tilt_radius
+    if _plain(kind, named):  # one case of plain numbers, every check passed
+        shape: tuple[int, ...] = ()
+        c = dict(zip(named, np.array(list(named.values()))[:, None], strict=True))
+    else:
+        shape, c = _checked(kind, named)
     c["cage_angle"] = np.mod(c["cage_angle"], 360.0)
     narrow = c["width"] < c["ball_diameter"]
     if narrow.any():  # no ring holds its balls so; the shaft's tilt then has no lever
@@ -357,6 +346,47 @@ def _arrangement(arrangement: Any) -> str:
             f"must be DB (back-to-back), DF (face-to-face) or DT (tandem), not {arrangement!r}",
         )
     return kind
+
+
+def _plain(kind: str, named: dict[str, Any]) -> bool:
+    """Whether every value is a plain float that passes every check of :func:`_checked` (a case
+    that does not is checked there, which names what it refuses)."""
+    if not all(type(v) is float and math.isfinite(v) for v in named.values()):
+        return False
+    low, high = validate.CONFORMITY_RANGE
+    fa, fp = named["axial_load"], named["preload"]
+    return (
+        named["radial_load"] >= 0.0
+        and 0.0 < named["contact_angle"] <= 60.0
+        and fp >= 0.0
+        and (kind != "DT" or (fp == 0.0 and fa > 0.0))
+        and named["width"] > 0.0
+        and low < named["f_i"] < high
+        and low < named["f_o"] < high
+        and named["modulus"] > 0.0
+        and named.get("stiffness", 1.0) > 0.0
+        and named.get("tilt_radius", 1.0) > 0.0
+    )
+
+
+def _checked(kind: str, named: dict[str, Any]) -> tuple[tuple[int, ...], dict[str, np.ndarray]]:
+    """The values ``named`` checked, broadcast together: (the case shape, each flat)."""
+    fr = validate.at_least("radial_load", named["radial_load"], 0.0, "N")
+    fa = validate.finite("axial_load", named["axial_load"])
+    fp = validate.finite("preload", named["preload"])
+    _check_pair(kind, fa, fp, named["contact_angle"])
+    units = {"width": "mm", "modulus": "MPa", "stiffness": "N/mm^1.5", "tilt_radius": "mm"}
+    arrays = {"radial_load": fr, "axial_load": fa, "preload": fp}
+    for name, value in named.items():
+        if name in units:
+            arrays[name] = validate.positive(name, value, units[name])
+        elif name in ("f_i", "f_o"):
+            arrays[name] = validate.conformity(name, value)
+        elif name not in arrays:
+            arrays[name] = validate.finite(name, value)
+    validate.broadcast_shape(arrays)
+    flat = np.broadcast_arrays(*(np.asarray(v, dtype=float) for v in arrays.values()))
+    return flat[0].shape, dict(zip(arrays, (a.ravel() for a in flat), strict=True))
 
 
 def _check_pair(kind: str, fa: np.ndarray, fp: np.ndarray, contact_angle: Any) -> None:
@@ -397,7 +427,7 @@ def _solve(z: int, kind: str, c: dict, shape: tuple[int, ...]) -> PairDistributi
     if "stiffness" in c:
         k_ref = c["stiffness"]
     else:
-        k_ref, values = _comb._hertz_setup(geo, c["modulus"], c["poisson"])
+        k_ref, values = _hertz(geo, c["modulus"], c["poisson"])
         curve = _comb._StiffnessCurve(values)
     fr, fa, mm, mc, fp = (c[k] for k in ("radial_load", "axial_load", "moment", "moment_cross",
                                          "preload"))  # fmt: skip
@@ -455,6 +485,32 @@ def _solve(z: int, kind: str, c: dict, shape: tuple[int, ...]) -> PairDistributi
                    delta_p)  # fmt: skip
 
 
+def _hertz(geo: Any, e: np.ndarray, nu: np.ndarray) -> tuple[np.ndarray, np.ndarray]:
+    """K_0 and the stiffness curve's values of every case (the combined model's set-up), those
+    of the geometries set up before from a cache (the cache changes no bit: each case's set-up
+    is its own)."""
+    keys = list(
+        zip(*(a.tolist() for a in (geo.D_w, geo.d_m, geo.f_i, geo.f_o, e, nu)), strict=True)
+    )
+    if any(key not in _HERTZ_CACHE for key in keys):
+        k0, values = _comb._hertz_setup(geo, e, nu)
+        for i, key in enumerate(keys):
+            row = (k0[i : i + 1].copy(), values[i : i + 1].copy())
+            for a in row:
+                a.setflags(write=False)
+            _HERTZ_CACHE[key] = row
+            while len(_HERTZ_CACHE) > _comb.SETUP_CACHE_SIZE:
+                _HERTZ_CACHE.pop(next(iter(_HERTZ_CACHE)))
+        return k0, values
+    if len(keys) == 1:
+        return _HERTZ_CACHE[keys[0]]
+    rows = [_HERTZ_CACHE[key] for key in keys]
+    return np.concatenate([r[0] for r in rows]), np.concatenate([r[1] for r in rows])
+
+
+_HERTZ_CACHE: dict[tuple[float, ...], tuple[np.ndarray, np.ndarray]] = {}
+
+
 def _replace_radius(geo: Any, radius: np.ndarray) -> Any:
     import dataclasses
 
@@ -505,6 +561,12 @@ def _check_edge(st: _State, given: dict) -> None:
             )
 
 
+#: The couplings of (x, axial, tilt) with (y, tilt_cross): 0 in a case symmetric about the
+#: load line.
+_COUPLING = np.zeros((5, 5), dtype=bool)
+_COUPLING[np.ix_([0, 2, 3], [1, 4])] = _COUPLING[np.ix_([1, 4], [0, 2, 3])] = True
+
+
 def _result(kind: str, pp: _Pair, geo: Any, answer: tuple[Any, ...], c: dict,
             shape: tuple[int, ...], curve: Any, mirrored: np.ndarray,
             delta_p: np.ndarray) -> PairDistribution:  # fmt: skip
@@ -531,10 +593,10 @@ def _result(kind: str, pp: _Pair, geo: Any, answer: tuple[Any, ...], c: dict,
         phys[:, 0, 3] *= radius
         phys[:, 1, 4] *= radius
         total += phys.transpose(0, 2, 1) @ tangent @ phys
-    along, across = np.array([0, 2, 3]), np.array([1, 4])
-    total[np.ix_(mirrored, along, across)] = 0.0
-    total[np.ix_(mirrored, across, along)] = 0.0
-    unloaded = np.stack([np.all(st.loads[k].q == 0, axis=1) for k in range(2)], axis=1)
+    total[mirrored[:, None, None] & _COUPLING] = 0.0
+    unloaded = np.empty((n, 2), dtype=bool)
+    for k in range(2):
+        unloaded[:, k] = ~st.loads[k].q.any(axis=1)
     v = vh + vl
 
     def case(a: Any) -> Any:
