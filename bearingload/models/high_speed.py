@@ -568,7 +568,7 @@ def core_solve(
     cont = np.ascontiguousarray
     b = r.b
     v, parts, out = _core.solve_speed(
-        b.consts, cont(b.ki.reshape(b.ki.shape[0], -1)), cont(b.ko.reshape(b.ko.shape[0], -1)),
+        b.consts, cont(b.ki[:, 0]), cont(b.ko[:, 0]),
         _NODE_X, _NODE_W, r.c, r.s, r.geo, _limits(), *(cont(a) for a in shaft), limits,
         cont(v0, dtype=float), cont(v_static, dtype=float), flags,
     )  # fmt: skip
@@ -768,6 +768,7 @@ def bearing_result(
     shift = np.where(one_sided, geo.A * np.sin(geo.alpha0), 0.0)
     moment = rr * st.gen[:, 3] if misalignment is not None else flat["moment"]
     offset = ring.b.ro + st.do
+    cos_o, sin_o = np.cos(st.ao), np.sin(st.ao)
     return HighSpeedDistribution(
         **{name: _kept(getattr(static, name)) for name in _KEPT},
         x=case(v[:, 0]), y=case(v[:, 1]), axial=case(v[:, 2] - shift),
@@ -776,13 +777,13 @@ def bearing_result(
         ball_stiffnesses=ball(stiffness(ring.b.ki, ci)), ball_approaches=ball(di + st.do),
         stiffness_matrix=tangent.reshape(shape + (5, 5)),
         iterations=case(np.ravel(static.iterations) + its),
-        speed=case(flat["speed"]), ball_density=case(np.broadcast_to(density, shape).ravel()),
+        speed=case(flat["speed"]), ball_density=_kept(np.broadcast_to(density, shape)),
         contact_angles_inner=ball(ai), contact_angles_outer=ball(np.rad2deg(st.ao)),
         ball_loads_inner=ball(qi), ball_loads_outer=ball(qo),
-        ball_stiffnesses_outer=ball(stiffness(ring.b.ko, np.cos(st.ao))),
+        ball_stiffnesses_outer=ball(stiffness(ring.b.ko, cos_o)),
         approaches_inner=ball(di), approaches_outer=ball(st.do),
-        ball_offsets_axial=ball(offset * np.sin(st.ao)),
-        ball_offsets_radial=ball(offset * np.cos(st.ao)), orbit_speeds=ball(wc),
+        ball_offsets_axial=ball(offset * sin_o),
+        ball_offsets_radial=ball(offset * cos_o), orbit_speeds=ball(wc),
         spin_speeds=ball(wr), attitude_angles=ball(np.rad2deg(beta)),
         centrifugal_forces=ball(fc), gyroscopic_moments=ball(mg),
     )  # fmt: skip
