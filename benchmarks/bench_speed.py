@@ -76,11 +76,13 @@ def fsolve_case(fr: float, fa: float, n: float, alpha: float) -> bool:
     dw, dm, fi, fo = (np.array([GEO[k]]) for k in ("ball_diameter", "pitch_diameter", "f_i",
                                                     "f_o"))  # fmt: skip
     geo = _angular_geometry(dw, dm, fi, fo, np.array([alpha]))
-    balls = hs.ball_set(geo, np.array([208000.0]), np.array([0.3]), np.array([n]),
-                        np.array([7850.0]))  # fmt: skip
+    balls = hs.ball_set(
+        geo, np.array([208000.0]), np.array([0.3]), np.array([n]), np.array([7850.0])
+    )
     names = ("ri", "ro", "dw", "dm", "omega", "mass")
-    b = SimpleNamespace(ki=balls.ki, ko=balls.ko,
-                        **{k: balls.consts[:, i : i + 1] for i, k in enumerate(names)})  # fmt: skip
+    b = SimpleNamespace(
+        ki=balls.ki, ko=balls.ko, **{k: balls.consts[:, i : i + 1] for i, k in enumerate(names)}
+    )
     c = np.cos(2.0 * np.pi * np.arange(Z) / Z)[None, :]
     big_a, g, r_i = geo.A[0], geo.g[0], geo.R_i[0]
     s = solve_combined(Z, fr, fa, contact_angle=alpha, modulus=208000.0, **GEO)

@@ -227,8 +227,9 @@ class BallSet:
         return BallSet(self.consts[idx], self.ki[idx], self.ko[idx])
 
 
-def ball_set(geo: Any, modulus: np.ndarray, poisson: np.ndarray, speed: np.ndarray,
-             density: np.ndarray) -> BallSet:  # fmt: skip
+def ball_set(
+    geo: Any, modulus: np.ndarray, poisson: np.ndarray, speed: np.ndarray, density: np.ndarray
+) -> BallSet:
     """The balls of every case of the geometry ``geo`` (flat, n) turning at ``speed`` [rpm],
     of ``density`` [kg/m^3], with the Hertz stiffness of ``modulus``, ``poisson``."""
     ki, ko = stiffness_nodes(geo, modulus, poisson)
@@ -264,8 +265,10 @@ def stiffness_nodes(geo: Any, e: np.ndarray, nu: np.ndarray) -> tuple[np.ndarray
         if key not in _NODE_CACHE:
             dw, dm, fi, fo, ee, nn = key
             k = ball_stiffness(dw, dm / _NODE_COS, fi, fo, ee, nn)
-            rows = (np.array(k.inner, float).reshape(1, 1, -1),
-                    np.array(k.outer, float).reshape(1, 1, -1))  # fmt: skip
+            rows = (
+                np.array(k.inner, float).reshape(1, 1, -1),
+                np.array(k.outer, float).reshape(1, 1, -1),
+            )
             for row in rows:
                 row.setflags(write=False)
             _NODE_CACHE[key] = rows
@@ -375,8 +378,9 @@ def solve_high_speed(
     """
     n_rpm, density = check_speed(speed, ball_density, pitch_diameter)
     if n_rpm.ndim or density.ndim or np.ndim(radial_load):
-        validate.broadcast_shape({"radial_load": radial_load, "speed": n_rpm,
-                                  "ball_density": density})  # fmt: skip
+        validate.broadcast_shape(
+            {"radial_load": radial_load, "speed": n_rpm, "ball_density": density}
+        )
         wide = np.broadcast_shapes(np.shape(radial_load), n_rpm.shape, density.shape)
         if wide != np.shape(radial_load):
             radial_load = np.broadcast_to(np.asarray(radial_load, dtype=float), wide)
@@ -395,9 +399,19 @@ def solve_high_speed(
     if misalignment is not None:
         given["misalignment"] = misalignment
     at_rest = ("x", "y", "axial", "tilt", "tilt_cross", "tilt_radius")
-    columns = flat_columns(shape, *given.values(), *(getattr(static, k) for k in at_rest),
-                           ball_diameter, pitch_diameter, f_i, f_o, modulus, poisson, density,
-                           0.0 if contact_angle is None else contact_angle)  # fmt: skip
+    columns = flat_columns(
+        shape,
+        *given.values(),
+        *(getattr(static, k) for k in at_rest),
+        ball_diameter,
+        pitch_diameter,
+        f_i,
+        f_o,
+        modulus,
+        poisson,
+        density,
+        0.0 if contact_angle is None else contact_angle,
+    )
     flat = dict(zip(given, columns, strict=False))
     case_arrays: dict[str, Any] = dict(zip(at_rest, columns[len(given) :], strict=False))
     dw, dm, fi, fo, e, nu, rho_b, alpha_d = columns[len(given) + len(at_rest) :]
@@ -490,8 +504,13 @@ class Ring:
         return Ring(self.b.take(idx), self.c[idx], self.s[idx], self.geo[idx])
 
 
-def ring(b: BallSet, directions: tuple[np.ndarray, np.ndarray], geo: Any, f_ref: np.ndarray,
-         one_sided: np.ndarray) -> Ring:  # fmt: skip
+def ring(
+    b: BallSet,
+    directions: tuple[np.ndarray, np.ndarray],
+    geo: Any,
+    f_ref: np.ndarray,
+    one_sided: np.ndarray,
+) -> Ring:
     """The :class:`Ring` of the balls ``b`` at the ``directions`` (cos, sin (n, z)) in the
     bearings ``geo`` (flat), ``f_ref`` the largest applied load [N]."""
     cols = np.empty((4, f_ref.shape[0]))
@@ -500,8 +519,12 @@ def ring(b: BallSet, directions: tuple[np.ndarray, np.ndarray], geo: Any, f_ref:
     cols[2] = geo.A
     cols[3] = one_sided
     c, s = directions
-    return Ring(b, np.ascontiguousarray(c, dtype=float), np.ascontiguousarray(s, dtype=float),
-                np.ascontiguousarray(cols.T))  # fmt: skip
+    return Ring(
+        b,
+        np.ascontiguousarray(c, dtype=float),
+        np.ascontiguousarray(s, dtype=float),
+        np.ascontiguousarray(cols.T),
+    )
 
 
 @dataclass
@@ -568,10 +591,21 @@ def core_solve(
     cont = np.ascontiguousarray
     b = r.b
     v, parts, out = _core.solve_speed(
-        b.consts, cont(b.ki[:, 0]), cont(b.ko[:, 0]),
-        _NODE_X, _NODE_W, r.c, r.s, r.geo, _limits(), *(cont(a) for a in shaft), limits,
-        cont(v0, dtype=float), cont(v_static, dtype=float), flags,
-    )  # fmt: skip
+        b.consts,
+        cont(b.ki[:, 0]),
+        cont(b.ko[:, 0]),
+        _NODE_X,
+        _NODE_W,
+        r.c,
+        r.s,
+        r.geo,
+        _limits(),
+        *(cont(a) for a in shaft),
+        limits,
+        cont(v0, dtype=float),
+        cont(v_static, dtype=float),
+        flags,
+    )
     if out[:, 42].any():
         raise MemoryError("the ball dynamics' work space")
     return v, [_state(p, out) for p in parts], out
@@ -599,9 +633,13 @@ def _limits() -> np.ndarray:
 
 
 def _newton(
-    r: Ring, f: np.ndarray, held: np.ndarray, v0: np.ndarray, v_static: np.ndarray,
+    r: Ring,
+    f: np.ndarray,
+    held: np.ndarray,
+    v0: np.ndarray,
+    v_static: np.ndarray,
     continued: bool,
-) -> tuple[np.ndarray, BallState, np.ndarray]:  # fmt: skip
+) -> tuple[np.ndarray, BallState, np.ndarray]:
     """Every case of the bearings ``r`` under ``f`` (n, 5) [N], ``held`` (n, 5) by the core: the
     ring Newton from v0, the balls on their lines; where left unbalanced and ``continued``, the
     continuation in speed from v_static. Returns (v, state, iterations (n,))."""
@@ -730,9 +768,22 @@ def _check(st: BallState, its: np.ndarray, flat: dict) -> None:
 
 
 #: The fields of the static answer the answer at speed replaces.
-_MOVED = frozenset(("x", "y", "axial", "tilt", "tilt_cross", "moment", "contact_angles",
-                    "ball_loads", "ball_stiffnesses", "ball_approaches", "stiffness_matrix",
-                    "iterations"))  # fmt: skip
+_MOVED = frozenset(
+    (
+        "x",
+        "y",
+        "axial",
+        "tilt",
+        "tilt_cross",
+        "moment",
+        "contact_angles",
+        "ball_loads",
+        "ball_stiffnesses",
+        "ball_approaches",
+        "stiffness_matrix",
+        "iterations",
+    )
+)
 _KEPT = tuple(f.name for f in dataclasses.fields(CombinedDistribution) if f.name not in _MOVED)
 
 

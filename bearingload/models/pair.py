@@ -57,7 +57,17 @@ from bearingload.models import combined as _comb
 from bearingload.models._combined_ring import ACCEPT, Problem
 from bearingload.models.combined import CombinedDistribution, StiffnessViews
 
-__all__ = ["ARRANGEMENTS", "LIFE_EXPONENT", "PairDistribution", "solve_pair", "pair_life"]
+__all__ = [
+    "ARRANGEMENTS",
+    "LIFE_EXPONENT",
+    "PairDistribution",
+    "solve_pair",
+    "pair_life",
+    "signs",
+    "levers",
+    "shaft_maps",
+    "held_components",
+]
 
 #: The arrangements: back-to-back, face-to-face, tandem.
 ARRANGEMENTS = ("DB", "DF", "DT")
@@ -159,12 +169,46 @@ class _Pair:
 
     def maps(self) -> np.ndarray:
         """L_k (n, 2, 5, 5): local displacement per pair displacement (scaled, t = R_i theta)."""
-        diagonal = np.ones((2, 5))
-        diagonal[:, 2:] = self.sigma[:, None]
-        m = np.zeros((self.f.shape[0], 2, 5, 5))
-        m[:, :, range(5), range(5)] = diagonal
-        m[:, :, 0, 3] = m[:, :, 1, 4] = -self.lever
-        return m
+        return shaft_maps(self.sigma, self.lever)
+
+
+def signs(kind: str) -> np.ndarray:
+    """sigma_k (2,): +1, or -1 for bearing 2 of DB and DF, mirrored."""
+    return np.array([1.0, 1.0 if kind == "DT" else -1.0])
+
+
+def levers(kind: str, width: np.ndarray, radius: np.ndarray) -> np.ndarray:
+    """z_k / R_i (n, 2): each bearing's centre from the pair's, over the tilt lever ``radius``;
+    bearing 1 at -B/2 in DB and DT, at +B/2 in DF (``width`` B)."""
+    first = -0.5 if kind in ("DB", "DT") else 0.5
+    return np.array([first, -first]) * width[:, None] / radius[:, None]
+
+
+def shaft_maps(sigma: np.ndarray, lever: np.ndarray) -> np.ndarray:
+    """L_k (n, 2, 5, 5): each bearing's local displacement per shaft displacement (x, y, a,
+    t, t_c), t the tilt times the lever; ``sigma`` (2,) +1, or -1 for a mirrored bearing;
+    ``lever`` (n, 2) z_k over the tilt lever (:func:`levers`)."""
+    diagonal = np.ones((2, 5))
+    diagonal[:, 2:] = sigma[:, None]
+    m = np.zeros((lever.shape[0], 2, 5, 5))
+    m[:, :, range(5), range(5)] = diagonal
+    m[:, :, 0, 3] = m[:, :, 1, 4] = -lever
+    return m
+
+
+def held_components(kind: str, mirror: np.ndarray, loads: tuple[np.ndarray, ...]) -> np.ndarray:
+    """(n, 5) bool: the components of the shaft's (x, y, a, t, t_c) 0 by a symmetry of the case,
+    exactly: y and t_c where the balls are symmetric about the load line (``mirror``) and no
+    moment acts across it; the z-fold symmetry (z >= 3) without a radial load or moment; the
+    bearings' mirror image across the pair's mid-plane (not DT's) without a thrust or moment.
+    ``loads`` = (F_r, F_a, M, M_c) (n,) each."""
+    fr, fa, mm, mc = loads
+    held = (mirror & (mc == 0))[:, None] & np.array([False, True, False, False, True])
+    no_moment = (mm == 0) & (mc == 0)
+    held |= ((fr == 0) & no_moment)[:, None] & np.array([True, True, False, True, True])
+    if kind != "DT":
+        held |= ((fa == 0) & no_moment)[:, None] & np.array([False, False, True, True, True])
+    return held
 
 
 @dataclass
@@ -302,11 +346,22 @@ def solve_pair(
             "must be at least 3 per bearing of a pair: 1 or 2 balls leave the shaft free to "
             "turn about their line (a real bearing has many more)",
         )
-    named = {"radial_load": radial_load, "axial_load": axial_load, "preload": preload,
-             "contact_angle": contact_angle, "ball_diameter": ball_diameter,
-             "pitch_diameter": pitch_diameter, "width": width, "f_i": f_i, "f_o": f_o,
-             "cage_angle": cage_angle, "moment": moment, "moment_cross": moment_cross,
-             "modulus": modulus, "poisson": poisson}  # fmt: skip
+    named = {
+        "radial_load": radial_load,
+        "axial_load": axial_load,
+        "preload": preload,
+        "contact_angle": contact_angle,
+        "ball_diameter": ball_diameter,
+        "pitch_diameter": pitch_diameter,
+        "width": width,
+        "f_i": f_i,
+        "f_o": f_o,
+        "cage_angle": cage_angle,
+        "moment": moment,
+        "moment_cross": moment_cross,
+        "modulus": modulus,
+        "poisson": poisson,
+    }
     if stiffness is not None:
         named["stiffness"] = stiffness
     if tilt_radius is not None:
@@ -465,18 +520,9 @@ def _solve(z: int, kind: str, c: dict, shape: tuple[int, ...]) -> PairDistributi
         nodes = (curve.values, curve.x, curve.w)
     delta_p = _core.preload_approach(z, fp / f_ref, prob.a_hat, prob.gap, *nodes)
     u_hi, u_lo = _core.axial_at(prob.a_hat, prob.gap, prob.b_hi, prob.b_lo, delta_p)
-    first = -0.5 if kind in ("DB", "DT") else 0.5
-    lever = np.array([first, -first]) * c["width"][:, None]
-    sigma = np.array([1.0, 1.0 if kind == "DT" else -1.0])
-    # y and theta_c 0 by symmetry, exactly; the z-fold symmetry (z >= 3); the bearings' mirror
-    # image across the pair's mid-plane (not DT's)
-    held = (mirror & (mc == 0))[:, None] & np.array([False, True, False, False, True])
-    no_moment = (mm == 0) & (mc == 0)
-    held |= ((fr == 0) & no_moment)[:, None] & np.array([True, True, False, True, True])
-    if kind != "DT":
-        held |= ((fa == 0) & no_moment)[:, None] & np.array([False, False, True, True, True])
+    held = held_components(kind, mirror, (fr, fa, mm, mc))
     offsets = (u_hi[:, None].repeat(2, axis=1), u_lo[:, None].repeat(2, axis=1))
-    pp = _Pair((prob, prob), sigma, lever / geo.R_i[:, None], *offsets, f, held)
+    pp = _Pair((prob, prob), signs(kind), levers(kind, c["width"], geo.R_i), *offsets, f, held)
     vh, vl, res, its, st = _solve_stages(pp, _start(pp, z, geo, fp / f_ref), curve)
     given = {k: c[k] for k in _UNITS}
     _accepted(res, its, given)

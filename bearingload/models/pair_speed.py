@@ -48,7 +48,14 @@ from bearingload.constants import STEEL_MODULUS
 from bearingload.errors import ConvergenceError, InputError
 from bearingload.models import combined as _comb
 from bearingload.models import high_speed as _hs
-from bearingload.models.pair import PairDistribution, solve_pair
+from bearingload.models.pair import (
+    PairDistribution,
+    held_components,
+    levers,
+    shaft_maps,
+    signs,
+    solve_pair,
+)
 
 __all__ = ["PairHighSpeedDistribution", "solve_pair_high_speed", "MODEL"]
 
@@ -251,23 +258,11 @@ def _setup(static: PairDistribution, c: dict, shape: tuple[int, ...]) -> tuple[A
     f_ref = np.maximum(_comb._reference_force(fr, fa, mm, mc, radius), fp)
     ring = _hs.ring(b, (cos_, sin_), geo, f_ref, np.ones(n, dtype=bool))
     kind = static.arrangement
-    first = -0.5 if kind in ("DB", "DT") else 0.5
-    maps = np.zeros((n, 2, 5, 5))
-    for k, (zk, sigma) in enumerate(((first, 1.0), (-first, 1.0 if kind == "DT" else -1.0))):
-        maps[:, k, 0, 0] = maps[:, k, 1, 1] = 1.0
-        maps[:, k, 0, 3] = maps[:, k, 1, 4] = -zk * c["width"] / radius
-        for i in (2, 3, 4):
-            maps[:, k, i, i] = sigma
+    maps = shaft_maps(signs(kind), levers(kind, c["width"], radius))
     offset = np.zeros((n, 2, 5))
-    offset[:, :, 2] = (geo.A * np.sin(geo.alpha0) + _column(static, "preload_offset", shape))[
-        :, None
-    ]
-    held = np.zeros((n, 5), dtype=bool)
-    held[:, [1, 4]] = (mirror & (mc == 0))[:, None]  # the static pair's symmetries
-    no_moment = (mm == 0) & (mc == 0)
-    held[:, [0, 1, 3, 4]] |= ((fr == 0) & no_moment)[:, None]
-    if kind != "DT":
-        held[:, 2:] |= ((fa == 0) & no_moment)[:, None]
+    at_rest = geo.A * np.sin(geo.alpha0) + _column(static, "preload_offset", shape)
+    offset[:, :, 2] = at_rest[:, None]
+    held = held_components(kind, mirror, (fr, fa, mm, mc))  # the static pair's symmetries
     f = np.stack([fr, np.zeros(n), fa, mm / radius, mc / radius], axis=1)
     sh = _Shaft(ring, maps, offset, f, f_ref, held)
     pos = [_column(static, k, shape) for k in ("x", "y", "axial", "tilt", "tilt_cross")]
@@ -339,9 +334,17 @@ def _result(static: PairDistribution, sh: _Shaft, geo: Any, flat: dict, shape: t
     for k in range(2):
         p = st.parts[k]
         local = {"speed": flat["speed"], "moment": radius * p.gen[:, 3]}
-        r = _hs.bearing_result(static.bearings[k], shape, z, geo, local,
-                               flat["ball_density"].reshape(shape),
-                               (sh.ring, _local(sh, k, v), p, its), one_sided, None)  # fmt: skip
+        r = _hs.bearing_result(
+            static.bearings[k],
+            shape,
+            z,
+            geo,
+            local,
+            flat["ball_density"].reshape(shape),
+            (sh.ring, _local(sh, k, v), p, its),
+            one_sided,
+            None,
+        )
         radial = np.where(sh.held[:, 0], 0.0, np.hypot(p.gen[:, 0], p.gen[:, 1]))
         bearings.append(dataclasses.replace(r, load=case(radial), axial_load=case(p.gen[:, 2])))
     lever = np.stack([np.ones_like(radius)] * 3 + [radius, radius], axis=1)
