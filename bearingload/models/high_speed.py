@@ -653,19 +653,7 @@ def _newton(
 
 
 _EYE = np.eye(5)
-_STATE_ARRAYS = (
-    "do",
-    "ao",
-    "balls_ok",
-    "gen",
-    "jac",
-    "merit",
-    "sens",
-    "score",
-    "level",
-    "floor",
-    "noise",
-)
+_STATE_ARRAYS = tuple(f.name for f in dataclasses.fields(BallState) if f.name != "terms")
 
 
 def _take_state(st: BallState, idx: np.ndarray) -> BallState:

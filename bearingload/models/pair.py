@@ -162,8 +162,7 @@ class _Pair:
     probs: tuple[Problem, Problem]
     sigma: np.ndarray  # (2,) +1 or -1
     lever: np.ndarray  # (n, 2) z_k / R_i
-    off_hi: np.ndarray  # (n, 2) local axial offset (scaled), double-double
-    off_lo: np.ndarray
+    preload: np.ndarray  # (n,) F_p, scaled
     f: np.ndarray  # (n, 5) applied, scaled
     held: np.ndarray  # (n, 5) bool: y and theta_c of a case symmetric about the load line, 0
 
@@ -227,43 +226,33 @@ def _solve_stages(pp: _Pair, v0: np.ndarray, curve: Any) -> tuple[Any, ...]:
     """Every case solved from ``v0`` in the compiled core (:func:`bearingload.models._core.
     solve_pair`: Newton in plain doubles to a residual of 1e-9, then with the balls in
     double-double to the tolerance): (position hi, lo, residual, steps, the balls, their loads
-    and forces there)."""
+    and forces there, the preload approach)."""
     from bearingload.models import _core
 
     p = pp.probs[0]
     values = np.zeros((v0.shape[0], 0)) if curve is None else curve.values
-    floats = (
-        p.c,
-        p.s,
-        p.a_hat,
-        p.pre,
-        p.gap,
-        p.b_hi,
-        p.b_lo,
-        pp.sigma,
-        -pp.lever,
-        pp.off_hi,
-        pp.off_lo,
-        pp.f,
-    )
-    vh, vl, res, its, _, balls, kappa, gen, tangents, local = _core.solve_pair(
-        *(np.ascontiguousarray(a, dtype=float) for a in floats),
-        np.ascontiguousarray(pp.held, dtype=np.uint8),
-        np.ascontiguousarray(values, dtype=float),
+    balls_in = (p.c, p.s, p.a_hat, p.pre, p.gap, p.b_hi, p.b_lo)
+    shaft = (pp.sigma, -pp.lever, pp.preload, pp.f)
+    cont = np.ascontiguousarray
+    vh, vl, res, its, _, balls, kappa, gen, tangents, local, delta_p = _core.solve_pair(
+        *(cont(a, dtype=float) for a in balls_in + shaft),
+        cont(pp.held, dtype=np.uint8),
+        cont(values, dtype=float),
         _comb._NODE_X,
         _comb._NODE_W,
-        np.ascontiguousarray(v0, dtype=float),
+        cont(v0, dtype=float),
     )
     q0 = np.where(p.deviation, p.pre * np.sqrt(p.pre), 0.0)
+    loads = [_ring.Loads(*balls[5:, k], q0) for k in range(2)]  # type: ignore[call-arg]
     st = _State(
         [_ring.Balls(*balls[:5, k]) for k in range(2)],
         [kappa[0], kappa[1]],
-        [_ring.Loads(*balls[5:, k], q0) for k in range(2)],  # type: ignore[call-arg]
+        loads,
         gen,
         tangents,
         local,
     )
-    return vh, vl, res, its, st
+    return vh, vl, res, its, st, delta_p
 
 
 #: Largest width B of one bearing (the distance of the two bearings' centres) over the pitch
@@ -410,17 +399,15 @@ def _plain(kind: str, named: dict[str, Any]) -> bool:
         return False
     low, high = validate.CONFORMITY_RANGE
     fa, fp = named["axial_load"], named["preload"]
+    positive = ("width", "modulus", "stiffness", "tilt_radius")
     return (
         named["radial_load"] >= 0.0
         and 0.0 < named["contact_angle"] <= 60.0
         and fp >= 0.0
         and (kind != "DT" or (fp == 0.0 and fa > 0.0))
-        and named["width"] > 0.0
         and low < named["f_i"] < high
         and low < named["f_o"] < high
-        and named["modulus"] > 0.0
-        and named.get("stiffness", 1.0) > 0.0
-        and named.get("tilt_radius", 1.0) > 0.0
+        and all(named.get(k, 1.0) > 0.0 for k in positive)
     )
 
 
@@ -472,8 +459,6 @@ _UNITS = {"radial_load": "N", "axial_load": "N", "moment": "N mm", "moment_cross
 
 def _solve(z: int, kind: str, c: dict, shape: tuple[int, ...]) -> PairDistribution:
     """The pair of the flat, checked cases ``c``."""
-    from bearingload.models import _core
-
     geo = _comb._angular_geometry(c["ball_diameter"], c["pitch_diameter"], c["f_i"], c["f_o"],
                                   c["contact_angle"])  # fmt: skip
     if "tilt_radius" in c:
@@ -515,15 +500,9 @@ def _solve(z: int, kind: str, c: dict, shape: tuple[int, ...]) -> PairDistributi
                         t_imp=np.zeros(n), locked=np.zeros((n, 5), dtype=bool),
                         imposed=np.zeros((n, 5), dtype=bool), f_ref=f_ref, k_ref=k_ref,
                         one_sided=np.ones(n, dtype=bool))  # fmt: skip
-    nodes = (np.zeros((n, 0)), np.zeros(1), np.zeros(1))  # a constant K: no curve
-    if curve is not None:
-        nodes = (curve.values, curve.x, curve.w)
-    delta_p = _core.preload_approach(z, fp / f_ref, prob.a_hat, prob.gap, *nodes)
-    u_hi, u_lo = _core.axial_at(prob.a_hat, prob.gap, prob.b_hi, prob.b_lo, delta_p)
     held = held_components(kind, mirror, (fr, fa, mm, mc))
-    offsets = (u_hi[:, None].repeat(2, axis=1), u_lo[:, None].repeat(2, axis=1))
-    pp = _Pair((prob, prob), signs(kind), levers(kind, c["width"], geo.R_i), *offsets, f, held)
-    vh, vl, res, its, st = _solve_stages(pp, _start(pp, z, geo, fp / f_ref), curve)
+    pp = _Pair((prob, prob), signs(kind), levers(kind, c["width"], geo.R_i), fp / f_ref, f, held)
+    vh, vl, res, its, st, delta_p = _solve_stages(pp, _start(pp, z, geo, pp.preload), curve)
     given = {k: c[k] for k in _UNITS}
     _accepted(res, its, given)
     _check_edge(st, given)
