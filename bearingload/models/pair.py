@@ -157,18 +157,14 @@ def pair_life(life_1: Any, life_2: Any, exponent: float = LIFE_EXPONENT) -> Any:
 
 @dataclass(frozen=True)
 class _Pair:
-    """The scaled pair problem of n cases: one Problem per bearing (the same balls), the maps."""
+    """The scaled pair problem of n cases: the balls, the maps' signs and levers, the loads."""
 
-    probs: tuple[Problem, Problem]
+    prob: Problem  # the balls of either bearing
     sigma: np.ndarray  # (2,) +1 or -1
     lever: np.ndarray  # (n, 2) z_k / R_i
     preload: np.ndarray  # (n,) F_p, scaled
     f: np.ndarray  # (n, 5) applied, scaled
     held: np.ndarray  # (n, 5) bool: y and theta_c of a case symmetric about the load line, 0
-
-    def maps(self) -> np.ndarray:
-        """L_k (n, 2, 5, 5): local displacement per pair displacement (scaled, t = R_i theta)."""
-        return shaft_maps(self.sigma, self.lever)
 
 
 def signs(kind: str) -> np.ndarray:
@@ -229,7 +225,7 @@ def _solve_stages(pp: _Pair, v0: np.ndarray, curve: Any) -> tuple[Any, ...]:
     and forces there, the preload approach)."""
     from bearingload.models import _core
 
-    p = pp.probs[0]
+    p = pp.prob
     values = np.zeros((v0.shape[0], 0)) if curve is None else curve.values
     balls_in = (p.c, p.s, p.a_hat, p.pre, p.gap, p.b_hi, p.b_lo)
     shaft = (pp.sigma, -pp.lever, pp.preload, pp.f)
@@ -501,7 +497,7 @@ def _solve(z: int, kind: str, c: dict, shape: tuple[int, ...]) -> PairDistributi
                         imposed=np.zeros((n, 5), dtype=bool), f_ref=f_ref, k_ref=k_ref,
                         one_sided=np.ones(n, dtype=bool))  # fmt: skip
     held = held_components(kind, mirror, (fr, fa, mm, mc))
-    pp = _Pair((prob, prob), signs(kind), levers(kind, c["width"], geo.R_i), fp / f_ref, f, held)
+    pp = _Pair(prob, signs(kind), levers(kind, c["width"], geo.R_i), fp / f_ref, f, held)
     vh, vl, res, its, st, delta_p = _solve_stages(pp, _start(pp, z, geo, pp.preload), curve)
     given = {k: c[k] for k in _UNITS}
     _accepted(res, its, given)
@@ -597,10 +593,10 @@ def _result(kind: str, pp: _Pair, geo: Any, answer: tuple[Any, ...], c: dict,
             delta_p: np.ndarray) -> PairDistribution:  # fmt: skip
     """Back to physical units: each bearing as a CombinedDistribution, the pair's values."""
     vh, vl, res, its, st = answer
-    p = pp.probs[0]
+    p = pp.prob
     scale, f_ref, radius = p.scale, p.f_ref, geo.R_i
     n = vh.shape[0]
-    maps = pp.maps()
+    maps = shaft_maps(pp.sigma, pp.lever * radius[:, None])  # physical: tilts in radians
     bearings = []
     total = np.zeros((n, 5, 5))
     for k in range(2):
@@ -614,10 +610,7 @@ def _result(kind: str, pp: _Pair, geo: Any, answer: tuple[Any, ...], c: dict,
                  "cage_angle": c["cage_angle"]}  # fmt: skip
         out = (st.local[k], st.kappa[k], its, (st.balls[k], lo, gen), tangent)
         bearings.append(_comb._result(p, geo, out, shape, given, None))
-        phys = maps[:, k].copy()
-        phys[:, 0, 3] *= radius
-        phys[:, 1, 4] *= radius
-        total += phys.transpose(0, 2, 1) @ tangent @ phys
+        total += maps[:, k].transpose(0, 2, 1) @ tangent @ maps[:, k]
     total[mirrored[:, None, None] & _COUPLING] = 0.0
     unloaded = np.empty((n, 2), dtype=bool)
     for k in range(2):
@@ -627,12 +620,13 @@ def _result(kind: str, pp: _Pair, geo: Any, answer: tuple[Any, ...], c: dict,
     def case(a: Any) -> Any:
         return np.asarray(a).reshape(shape) if shape else np.asarray(a).item()
 
-    lift = None if kind == "DT" else case(_lift_off(pp, geo, curve, delta_p, c))
+    offset = _offset(p, delta_p)
+    lift = None if kind == "DT" else case(_lift_off(pp, curve, offset, c))
     return PairDistribution(
         arrangement=kind, bearings=(bearings[0], bearings[1]),
         load=case(c["radial_load"]), axial_load=case(c["axial_load"]), moment=case(c["moment"]),
         moment_cross=case(c["moment_cross"]), preload=case(c["preload"]),
-        preload_offset=case(_offset(p, delta_p) * scale), width=case(c["width"]),
+        preload_offset=case(offset * scale), width=case(c["width"]),
         x=case(v[:, 0] * scale), y=case(v[:, 1] * scale), axial=case(v[:, 2] * scale),
         tilt=case(np.rad2deg(v[:, 3] * scale / radius)),
         tilt_cross=case(np.rad2deg(v[:, 4] * scale / radius)),
@@ -650,14 +644,15 @@ def _offset(p: Problem, delta: np.ndarray) -> np.ndarray:
     return delta * (2.0 * big_a + delta) / (up + u0)
 
 
-def _lift_off(pp: _Pair, geo: Any, curve: Any, delta_p: np.ndarray, c: dict) -> np.ndarray:
+def _lift_off(pp: _Pair, curve: Any, offset: np.ndarray, c: dict) -> np.ndarray:
     """The external axial load alone at which one bearing of a preloaded DB/DF pair carries
-    nothing: the other then sits at twice the preload offset from its zero-load position. [N]"""
-    p = pp.probs[0]
+    nothing: the other then sits at twice the preload ``offset`` (:func:`_offset`) from its
+    zero-load position. [N]"""
+    p = pp.prob
     big_a, gap = p.a_hat, p.gap
     u0 = np.sqrt(gap * (2.0 * big_a - gap))
     cc = big_a - gap
-    w = 2.0 * _offset(p, delta_p)
+    w = 2.0 * offset
     u = u0 + w
     d = np.hypot(cc, u)
     delta = w * (2.0 * u0 + w) / (d + big_a)
