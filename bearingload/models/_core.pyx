@@ -669,20 +669,6 @@ cdef void point_on(double *block, int z, Point *pt) noexcept nogil:
     pt.lo.sig = block + 12 * z
 
 
-cdef void copy_point(int z, const Point *src, Point *dst) noexcept nogil:
-    cdef int i
-    cdef double *a = src.b.rho
-    cdef double *b = dst.b.rho
-    for i in range(BALL_ARRAYS * z):
-        b[i] = a[i]
-    for i in range(5):
-        dst.gen[i] = src.gen[i]
-        dst.size[i] = src.size[i]
-    dst.res = src.res
-    dst.age = src.age
-    dst.drop = src.drop
-
-
 ctypedef struct Work:
     Point pt       # the current point
     Point trial    # a line-search trial
@@ -1956,8 +1942,7 @@ def solve_pair(const double[:, ::1] c, const double[:, ::1] s, const double[::1]
                const double[::1] b_lo, const double[::1] sigma, const double[:, ::1] arm,
                const double[::1] preload, const double[:, ::1] f, const unsigned char[:, ::1] held,
                const double[:, ::1] curve, const double[::1] node_x, const double[::1] node_w,
-               const double[:, ::1] v0, *, int max_steps=PAIR_MAX_STEPS,
-               int halvings=PAIR_HALVINGS, int first_steps=PAIR_FIRST_STEPS):
+               const double[:, ::1] v0):
     """Solve n cases of the preloaded pair (bearingload.models.pair) from the start v0 (n, 5):
     damped Newton over the shaft's position, first in plain doubles (``lean_newton``), then
     with the balls in double-double (``pair_newton``).
@@ -1967,12 +1952,9 @@ def solve_pair(const double[:, ::1] c, const double[:, ::1] s, const double[::1]
     ``sigma`` (2,) +1 or -1 (a mirrored bearing); ``arm`` (n, 2) -z_k / R_i; ``preload`` (n,)
     the thrust each bearing carries with no external load (its approach ``preload_delta``, 0
     where not positive; both bearings at the axial offset of ``axial_position`` with every ball
-    at that approach); ``f`` (n, 5) the applied forces and
-    ``held`` (n, 5, uint8) the components held at 0, scaled; ``curve`` (n, NODES), or (n, 0)
-    for a constant K, with its ``node_x``, ``node_w``.
-
-    ``max_steps``, ``halvings`` (the double-double stage) and ``first_steps`` (the first)
-    default to the module's limits.
+    at that approach); ``f`` (n, 5) the applied forces and ``held`` (n, 5, uint8) the
+    components held at 0, scaled; ``curve`` (n, NODES), or (n, 0)
+    for a constant K, with its ``node_x``, ``node_w``; the limits are the module's.
 
     Returns (vh, vl, residual, steps, status, balls, kappa, gen, tangents, local, delta_p): the
     position in double-double (n, 5) each, the residual before the last step (n,), the steps
@@ -2014,10 +1996,10 @@ def solve_pair(const double[:, ::1] c, const double[:, ::1] s, const double[::1]
     memset(&pr, 0, sizeof(Pair))
     pr.bear.lim = LIMITS
     pr.whole = pr.bear
-    pr.max_steps = max_steps
-    pr.halvings = halvings
+    pr.max_steps = PAIR_MAX_STEPS
+    pr.halvings = PAIR_HALVINGS
     pr.first_stage = PAIR_FIRST_STAGE
-    pr.first_steps = first_steps
+    pr.first_steps = PAIR_FIRST_STEPS
     pr.first_halvings = PAIR_FIRST_HALVINGS
     with nogil:
         for k in range(n):

@@ -614,22 +614,9 @@ def core_solve(
 def _limits() -> np.ndarray:
     """The limits of the core's solve_speed: this module's constants at the call, in its
     order."""
-    return np.array(
-        [
-            TOLERANCE,
-            ACCEPT,
-            ROUNDING,
-            NOISE_MAX,
-            BALL_TOLERANCE,
-            _ROUND,
-            LM_TRIALS,
-            HALVINGS,
-            BALL_ITERATIONS,
-            FALLBACK_ITERATIONS,
-            BALL_HALVINGS,
-        ],
-        dtype=float,
-    )
+    tolerances = [TOLERANCE, ACCEPT, ROUNDING, NOISE_MAX, BALL_TOLERANCE, _ROUND]
+    counts = [LM_TRIALS, HALVINGS, BALL_ITERATIONS, FALLBACK_ITERATIONS, BALL_HALVINGS]
+    return np.array(tolerances + counts, dtype=float)
 
 
 def _newton(

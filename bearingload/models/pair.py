@@ -228,26 +228,15 @@ def _solve_stages(pp: _Pair, v0: np.ndarray, curve: Any) -> tuple[Any, ...]:
     p = pp.prob
     values = np.zeros((v0.shape[0], 0)) if curve is None else curve.values
     balls_in = (p.c, p.s, p.a_hat, p.pre, p.gap, p.b_hi, p.b_lo)
-    shaft = (pp.sigma, -pp.lever, pp.preload, pp.f)
     cont = np.ascontiguousarray
-    vh, vl, res, its, _, balls, kappa, gen, tangents, local, delta_p = _core.solve_pair(
-        *(cont(a, dtype=float) for a in balls_in + shaft),
-        cont(pp.held, dtype=np.uint8),
-        cont(values, dtype=float),
-        _comb._NODE_X,
-        _comb._NODE_W,
-        cont(v0, dtype=float),
-    )
+    args = [cont(a, dtype=float) for a in balls_in + (pp.sigma, -pp.lever, pp.preload, pp.f)]
+    args += [cont(pp.held, dtype=np.uint8), cont(values, dtype=float), _comb._NODE_X]
+    out = _core.solve_pair(*args, _comb._NODE_W, cont(v0, dtype=float))
+    vh, vl, res, its, _, balls, kappa, gen, tangents, local, delta_p = out
     q0 = np.where(p.deviation, p.pre * np.sqrt(p.pre), 0.0)
     loads = [_ring.Loads(*balls[5:, k], q0) for k in range(2)]  # type: ignore[call-arg]
-    st = _State(
-        [_ring.Balls(*balls[:5, k]) for k in range(2)],
-        [kappa[0], kappa[1]],
-        loads,
-        gen,
-        tangents,
-        local,
-    )
+    ball_sets = [_ring.Balls(*balls[:5, k]) for k in range(2)]
+    st = _State(ball_sets, list(kappa), loads, gen, tangents, local)
     return vh, vl, res, its, st, delta_p
 
 
