@@ -773,10 +773,11 @@ def _kept(value: Any) -> Any:
 def bearing_result(
     static: CombinedDistribution, shape: tuple[int, ...], z: int, geo: Any, flat: dict,
     density: np.ndarray, out: tuple[Any, ...], one_sided: np.ndarray, misalignment: Any,
+    **given: Any,
 ) -> HighSpeedDistribution:  # fmt: skip
     """The answer at speed of one bearing (n cases of the ``shape``): the static answer's fields
-    with the dynamic ring position, balls and tangent; ``out`` = (ring, v, state, iterations)
-    of the core's solve, ``flat`` the cases' ``speed`` and ``moment`` (n,)."""
+    (or those ``given``) with the dynamic ring position, balls and tangent; ``out`` = (ring, v,
+    state, iterations) of the core's solve, ``flat`` the cases' ``speed`` and ``moment`` (n,)."""
     ring, v, st, its = out
     g1, g2, qi, qo, si, ci, fc, mg, wc, wr, beta, di = st.terms[:12]
     rr = geo.R_i
@@ -796,7 +797,7 @@ def bearing_result(
     offset = ring.b.ro + st.do
     cos_o, sin_o = np.cos(st.ao), np.sin(st.ao)
     return HighSpeedDistribution(
-        **{name: _kept(getattr(static, name)) for name in _KEPT},
+        **({name: _kept(getattr(static, name)) for name in _KEPT} | given),
         x=case(v[:, 0]), y=case(v[:, 1]), axial=case(v[:, 2] - shift),
         tilt=case(np.rad2deg(v[:, 3] / rr)), tilt_cross=case(np.rad2deg(v[:, 4] / rr)),
         moment=case(moment), contact_angles=ball(ai), ball_loads=ball(qi),

@@ -207,14 +207,13 @@ def solve_pair_high_speed(
                  width=width, cage_angle=cage_angle, speed=n_rpm, ball_diameter=ball_diameter,
                  pitch_diameter=pitch_diameter, f_i=f_i, f_o=f_o, modulus=modulus,
                  poisson=poisson, ball_density=density)  # fmt: skip
-    flat = {k: np.broadcast_to(np.asarray(v, dtype=float), shape).ravel().copy()
-            for k, v in given.items()}  # fmt: skip
+    flat = dict(zip(given, _hs.flat_columns(shape, *given.values()), strict=True))
     flat["cage_angle"] = np.mod(flat["cage_angle"], 360.0)
     sh, geo, v_static = _setup(static, flat, shape)
     with np.errstate(all="ignore"):
         v, st, its, rest = _solve(sh, v_static, flat, static.arrangement != "DT")
         extra = _at_speed(static, rest, shape)
-    return dataclasses.replace(_result(static, sh, geo, flat, shape, (v, st, its)), **extra)
+    return _result(static, sh, geo, flat, shape, (v, st, its), extra)
 
 
 def _at_speed(static: PairDistribution, rest: np.ndarray, shape: tuple[int, ...]) -> dict[str, Any]:
@@ -318,8 +317,9 @@ def _solve(sh: _Shaft, v_static: np.ndarray, flat: dict, rest: bool) -> tuple[An
 
 
 def _result(static: PairDistribution, sh: _Shaft, geo: Any, flat: dict, shape: tuple[int, ...],
-            out: tuple[Any, ...]) -> PairHighSpeedDistribution:  # fmt: skip
-    """The static pair's fields with the shaft's position, each bearing at speed, the tangent."""
+            out: tuple[Any, ...], extra: dict[str, Any]) -> PairHighSpeedDistribution:  # fmt: skip
+    """The static pair's fields with the shaft's position, each bearing at speed, the tangent,
+    and the ``extra`` fields."""
     from bearingload import numerics
 
     v, st, its = out
@@ -334,19 +334,24 @@ def _result(static: PairDistribution, sh: _Shaft, geo: Any, flat: dict, shape: t
     for k in range(2):
         p = st.parts[k]
         local = {"speed": flat["speed"], "moment": radius * p.gen[:, 3]}
-        r = _hs.bearing_result(
-            static.bearings[k],
-            shape,
-            z,
-            geo,
-            local,
-            flat["ball_density"].reshape(shape),
-            (sh.ring, _local(sh, k, v), p, its),
-            one_sided,
-            None,
-        )
         radial = np.where(sh.held[:, 0], 0.0, np.hypot(p.gen[:, 0], p.gen[:, 1]))
-        bearings.append(dataclasses.replace(r, load=case(radial), axial_load=case(p.gen[:, 2])))
+        answer = (sh.ring, _local(sh, k, v), p, its)
+        density = flat["ball_density"].reshape(shape)
+        bearings.append(
+            _hs.bearing_result(
+                static.bearings[k],
+                shape,
+                z,
+                geo,
+                local,
+                density,
+                answer,
+                one_sided,
+                None,
+                load=case(radial),
+                axial_load=case(p.gen[:, 2]),
+            )
+        )
     lever = np.stack([np.ones_like(radius)] * 3 + [radius, radius], axis=1)
     tangent = st.jac * lever[:, :, None] * lever[:, None, :]
     # at speed 0 the static pair's matrix (the same tangent, from the static solve)
@@ -363,4 +368,4 @@ def _result(static: PairDistribution, sh: _Shaft, geo: Any, flat: dict, shape: t
         iterations=case(np.asarray(static.iterations).ravel() + its, np.int64),
     )  # fmt: skip
     return PairHighSpeedDistribution(**fields, speed=case(flat["speed"]),
-                                     ball_density=case(flat["ball_density"]))  # fmt: skip
+                                     ball_density=case(flat["ball_density"]), **extra)  # fmt: skip
