@@ -218,11 +218,6 @@ class BallSet:
     ki: np.ndarray
     ko: np.ndarray
 
-    @property
-    def ro(self) -> np.ndarray:
-        """r'_o (n, 1). [mm]"""
-        return self.consts[:, 1:2]
-
     def take(self, idx: np.ndarray) -> BallSet:
         return BallSet(self.consts[idx], self.ki[idx], self.ko[idx])
 
@@ -265,13 +260,10 @@ def stiffness_nodes(geo: Any, e: np.ndarray, nu: np.ndarray) -> tuple[np.ndarray
         if key not in _NODE_CACHE:
             dw, dm, fi, fo, ee, nn = key
             k = ball_stiffness(dw, dm / _NODE_COS, fi, fo, ee, nn)
-            rows = (
-                np.array(k.inner, float).reshape(1, 1, -1),
-                np.array(k.outer, float).reshape(1, 1, -1),
-            )
+            rows = tuple(np.array(r, float).reshape(1, 1, -1) for r in (k.inner, k.outer))
             for row in rows:
                 row.setflags(write=False)
-            _NODE_CACHE[key] = rows
+            _NODE_CACHE[key] = (rows[0], rows[1])
             while len(_NODE_CACHE) > _combined.SETUP_CACHE_SIZE:
                 _NODE_CACHE.pop(next(iter(_NODE_CACHE)))
         k_i, k_o = _NODE_CACHE[key]
@@ -794,7 +786,7 @@ def bearing_result(
     tangent = st.jac * lever[:, :, None] * lever[:, None, :]
     shift = np.where(one_sided, geo.A * np.sin(geo.alpha0), 0.0)
     moment = rr * st.gen[:, 3] if misalignment is not None else flat["moment"]
-    offset = ring.b.ro + st.do
+    offset = ring.b.consts[:, 1:2] + st.do  # r'_o + delta_o
     cos_o, sin_o = np.cos(st.ao), np.sin(st.ao)
     return HighSpeedDistribution(
         **({name: _kept(getattr(static, name)) for name in _KEPT} | given),
