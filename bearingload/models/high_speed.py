@@ -260,24 +260,19 @@ def stiffness_nodes(geo: Any, e: np.ndarray, nu: np.ndarray) -> tuple[np.ndarray
         if key not in _NODE_CACHE:
             dw, dm, fi, fo, ee, nn = key
             k = ball_stiffness(dw, dm / _NODE_COS, fi, fo, ee, nn)
-            rows = tuple(np.array(r, float).reshape(1, 1, -1) for r in (k.inner, k.outer))
-            for row in rows:
-                row.setflags(write=False)
-            _NODE_CACHE[key] = (rows[0], rows[1])
+            _NODE_CACHE[key] = (np.asarray(k.inner, float), np.asarray(k.outer, float))
             while len(_NODE_CACHE) > _combined.SETUP_CACHE_SIZE:
                 _NODE_CACHE.pop(next(iter(_NODE_CACHE)))
         k_i, k_o = _NODE_CACHE[key]
         rows_i.append(k_i)
         rows_o.append(k_o)
-    if len(rows_i) == 1:  # one case: the cached rows themselves (read only)
-        return rows_i[0], rows_o[0]
-    return np.concatenate(rows_i), np.concatenate(rows_o)
+    return np.stack(rows_i)[:, None, :], np.stack(rows_o)[:, None, :]
 
 
 _NODE_COS = _combined._NODE_COS
 _NODE_X = _combined._NODE_X
 _NODE_W = _combined._NODE_W
-_NODE_CACHE: dict[tuple[float, ...], tuple[np.ndarray, np.ndarray]] = {}  # (1, 1, NODES) each
+_NODE_CACHE: dict[tuple[float, ...], tuple[np.ndarray, np.ndarray]] = {}
 
 
 def check_speed(speed: Any, density: Any, dm: Any) -> tuple[np.ndarray, np.ndarray]:

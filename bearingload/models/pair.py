@@ -43,6 +43,7 @@ the set-up (the preload approach and offset, the start) and the results.
 
 from __future__ import annotations
 
+import dataclasses
 import math
 from dataclasses import dataclass
 from typing import Any
@@ -447,7 +448,7 @@ def _solve(z: int, kind: str, c: dict, shape: tuple[int, ...]) -> PairDistributi
     geo = _comb._angular_geometry(c["ball_diameter"], c["pitch_diameter"], c["f_i"], c["f_o"],
                                   c["contact_angle"])  # fmt: skip
     if "tilt_radius" in c:
-        geo = _replace_radius(geo, c["tilt_radius"])
+        geo = dataclasses.replace(geo, R_i=c["tilt_radius"].astype(float))
     curve = None
     if "stiffness" in c:
         k_ref = c["stiffness"]
@@ -499,32 +500,20 @@ def _hertz(geo: Any, e: np.ndarray, nu: np.ndarray) -> tuple[np.ndarray, np.ndar
     """K_0 and the stiffness curve's values of every case (the combined model's set-up), those
     of the geometries set up before from a cache (the cache changes no bit: each case's set-up
     is its own)."""
-    keys = list(
-        zip(*(a.tolist() for a in (geo.D_w, geo.d_m, geo.f_i, geo.f_o, e, nu)), strict=True)
-    )
-    if any(key not in _HERTZ_CACHE for key in keys):
-        k0, values = _comb._hertz_setup(geo, e, nu)
-        for i, key in enumerate(keys):
-            row = (k0[i : i + 1].copy(), values[i : i + 1].copy())
-            for a in row:
-                a.setflags(write=False)
-            _HERTZ_CACHE[key] = row
-            while len(_HERTZ_CACHE) > _comb.SETUP_CACHE_SIZE:
-                _HERTZ_CACHE.pop(next(iter(_HERTZ_CACHE)))
-        return k0, values
-    if len(keys) == 1:
-        return _HERTZ_CACHE[keys[0]]
-    rows = [_HERTZ_CACHE[key] for key in keys]
-    return np.concatenate([r[0] for r in rows]), np.concatenate([r[1] for r in rows])
+    columns = (geo.D_w, geo.d_m, geo.f_i, geo.f_o, e, nu)
+    keys = list(zip(*(a.tolist() for a in columns), strict=True))
+    if all(key in _HERTZ_CACHE for key in keys):
+        rows = [_HERTZ_CACHE[key] for key in keys]
+        return np.array([r[0] for r in rows]), np.stack([r[1] for r in rows])
+    k0, values = _comb._hertz_setup(geo, e, nu)
+    for i, key in enumerate(keys):
+        _HERTZ_CACHE[key] = (float(k0[i]), values[i].copy())
+        while len(_HERTZ_CACHE) > _comb.SETUP_CACHE_SIZE:
+            _HERTZ_CACHE.pop(next(iter(_HERTZ_CACHE)))
+    return k0, values
 
 
-_HERTZ_CACHE: dict[tuple[float, ...], tuple[np.ndarray, np.ndarray]] = {}
-
-
-def _replace_radius(geo: Any, radius: np.ndarray) -> Any:
-    import dataclasses
-
-    return dataclasses.replace(geo, R_i=np.broadcast_to(radius, geo.D_w.shape).astype(float))
+_HERTZ_CACHE: dict[tuple[float, ...], tuple[float, np.ndarray]] = {}
 
 
 def _start(pp: _Pair, z: int, geo: Any, pre: np.ndarray) -> np.ndarray:
