@@ -783,21 +783,21 @@ def bearing_result(
     moment = rr * st.gen[:, 3] if misalignment is not None else flat["moment"]
     offset = ring.b.consts[:, 1:2] + st.do  # r'_o + delta_o
     cos_o, sin_o = np.cos(st.ao), np.sin(st.ao)
-    return HighSpeedDistribution(
-        **({name: _kept(getattr(static, name)) for name in _KEPT} | given),
-        x=case(v[:, 0]), y=case(v[:, 1]), axial=case(v[:, 2] - shift),
-        tilt=case(np.rad2deg(v[:, 3] / rr)), tilt_cross=case(np.rad2deg(v[:, 4] / rr)),
-        moment=case(moment), contact_angles=ball(ai), ball_loads=ball(qi),
-        ball_stiffnesses=ball(stiffness(ring.b.ki, ci)), ball_approaches=ball(di + st.do),
-        stiffness_matrix=tangent.reshape(shape + (5, 5)),
-        iterations=case(np.ravel(static.iterations) + its),
-        speed=case(flat["speed"]), ball_density=_kept(np.broadcast_to(density, shape)),
-        contact_angles_inner=ball(ai), contact_angles_outer=ball(np.rad2deg(st.ao)),
-        ball_loads_inner=ball(qi), ball_loads_outer=ball(qo),
-        ball_stiffnesses_outer=ball(stiffness(ring.b.ko, cos_o)),
-        approaches_inner=ball(di), approaches_outer=ball(st.do),
-        ball_offsets_axial=ball(offset * sin_o),
-        ball_offsets_radial=ball(offset * cos_o), orbit_speeds=ball(wc),
-        spin_speeds=ball(wr), attitude_angles=ball(np.rad2deg(beta)),
-        centrifugal_forces=ball(fc), gyroscopic_moments=ball(mg),
-    )  # fmt: skip
+    fields = {name: _kept(getattr(static, name)) for name in _KEPT} | given
+    fields.update(x=case(v[:, 0]), y=case(v[:, 1]), axial=case(v[:, 2] - shift))
+    fields.update(tilt=case(np.rad2deg(v[:, 3] / rr)), tilt_cross=case(np.rad2deg(v[:, 4] / rr)))
+    fields.update(moment=case(moment), contact_angles=ball(ai), ball_loads=ball(qi))
+    fields.update(ball_stiffnesses=ball(stiffness(ring.b.ki, ci)), ball_approaches=ball(di + st.do))
+    fields.update(stiffness_matrix=tangent.reshape(shape + (5, 5)))
+    fields.update(iterations=case(np.ravel(static.iterations) + its), speed=case(flat["speed"]))
+    fields.update(ball_density=_kept(np.broadcast_to(density, shape)))
+    fields.update(contact_angles_inner=ball(ai), contact_angles_outer=ball(np.rad2deg(st.ao)))
+    fields.update(ball_loads_inner=ball(qi), ball_loads_outer=ball(qo))
+    fields.update(ball_stiffnesses_outer=ball(stiffness(ring.b.ko, cos_o)))
+    fields.update(approaches_inner=ball(di), approaches_outer=ball(st.do))
+    fields.update(ball_offsets_axial=ball(offset * sin_o), ball_offsets_radial=ball(offset * cos_o))
+    fields.update(
+        orbit_speeds=ball(wc), spin_speeds=ball(wr), attitude_angles=ball(np.rad2deg(beta))
+    )
+    fields.update(centrifugal_forces=ball(fc), gyroscopic_moments=ball(mg))
+    return HighSpeedDistribution(**fields)

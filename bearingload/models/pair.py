@@ -321,22 +321,12 @@ def solve_pair(
             "must be at least 3 per bearing of a pair: 1 or 2 balls leave the shaft free to "
             "turn about their line (a real bearing has many more)",
         )
-    named = {
-        "radial_load": radial_load,
-        "axial_load": axial_load,
-        "preload": preload,
-        "contact_angle": contact_angle,
-        "ball_diameter": ball_diameter,
-        "pitch_diameter": pitch_diameter,
-        "width": width,
-        "f_i": f_i,
-        "f_o": f_o,
-        "cage_angle": cage_angle,
-        "moment": moment,
-        "moment_cross": moment_cross,
-        "modulus": modulus,
-        "poisson": poisson,
-    }
+    # every parameter by name, in the order the checks take them
+    named = dict(radial_load=radial_load, axial_load=axial_load, preload=preload)
+    named |= dict(contact_angle=contact_angle, ball_diameter=ball_diameter)
+    named |= dict(pitch_diameter=pitch_diameter, width=width, f_i=f_i, f_o=f_o)
+    named |= dict(cage_angle=cage_angle, moment=moment, moment_cross=moment_cross)
+    named |= dict(modulus=modulus, poisson=poisson)
     if stiffness is not None:
         named["stiffness"] = stiffness
     if tilt_radius is not None:

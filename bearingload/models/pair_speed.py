@@ -213,7 +213,7 @@ def solve_pair_high_speed(
     with np.errstate(all="ignore"):
         v, st, its, rest = _solve(sh, v_static, flat, static.arrangement != "DT")
         extra = _at_speed(static, rest, shape)
-    return _result(static, sh, geo, flat, shape, (v, st, its), extra)
+    return _result(static, sh, geo, flat, shape, (v, st, its, extra))
 
 
 def _at_speed(static: PairDistribution, rest: np.ndarray, shape: tuple[int, ...]) -> dict[str, Any]:
@@ -317,12 +317,12 @@ def _solve(sh: _Shaft, v_static: np.ndarray, flat: dict, rest: bool) -> tuple[An
 
 
 def _result(static: PairDistribution, sh: _Shaft, geo: Any, flat: dict, shape: tuple[int, ...],
-            out: tuple[Any, ...], extra: dict[str, Any]) -> PairHighSpeedDistribution:  # fmt: skip
-    """The static pair's fields with the shaft's position, each bearing at speed, the tangent,
-    and the ``extra`` fields."""
+            out: tuple[Any, ...]) -> PairHighSpeedDistribution:  # fmt: skip
+    """The static pair's fields with the shaft's position, each bearing at speed, the tangent;
+    ``out`` = (v, state, iterations, the extra fields)."""
     from bearingload import numerics
 
-    v, st, its = out
+    v, st, its, extra = out
     z = int(static.bearings[0].balls)
     radius = geo.R_i
     one_sided = np.ones(radius.size, dtype=bool)
@@ -367,5 +367,5 @@ def _result(static: PairDistribution, sh: _Shaft, geo: Any, flat: dict, shape: t
         residual=case(st.merit),
         iterations=case(np.asarray(static.iterations).ravel() + its, np.int64),
     )  # fmt: skip
-    return PairHighSpeedDistribution(**fields, speed=case(flat["speed"]),
-                                     ball_density=case(flat["ball_density"]), **extra)  # fmt: skip
+    fields.update(speed=case(flat["speed"]), ball_density=case(flat["ball_density"]), **extra)
+    return PairHighSpeedDistribution(**fields)
