@@ -228,14 +228,9 @@ def ball_set(
     """The balls of every case of the geometry ``geo`` (flat, n) turning at ``speed`` [rpm],
     of ``density`` [kg/m^3], with the Hertz stiffness of ``modulus``, ``poisson``."""
     ki, ko = stiffness_nodes(geo, modulus, poisson)
-    consts = np.empty((6, geo.D_w.shape[0]))
-    consts[0] = (geo.f_i - 0.5) * geo.D_w
-    consts[1] = (geo.f_o - 0.5) * geo.D_w
-    consts[2] = geo.D_w
-    consts[3] = geo.d_m
-    consts[4] = speed * math.pi / 30.0
-    consts[5] = density / _MM3 * math.pi / 6.0 * geo.D_w**3
-    return BallSet(np.ascontiguousarray(consts.T), ki, ko)
+    radii = [(geo.f_i - 0.5) * geo.D_w, (geo.f_o - 0.5) * geo.D_w, geo.D_w, geo.d_m]
+    mass = density / _MM3 * math.pi / 6.0 * geo.D_w**3
+    return BallSet(np.stack(radii + [speed * math.pi / 30.0, mass], axis=1), ki, ko)
 
 
 def stiffness(nodes: np.ndarray, cos_alpha: np.ndarray) -> np.ndarray:
@@ -491,27 +486,11 @@ class Ring:
         return Ring(self.b.take(idx), self.c[idx], self.s[idx], self.geo[idx])
 
 
-def ring(
-    b: BallSet,
-    directions: tuple[np.ndarray, np.ndarray],
-    geo: Any,
-    f_ref: np.ndarray,
-    one_sided: np.ndarray,
-) -> Ring:
+def ring(b: BallSet, directions: tuple, geo: Any, f_ref: np.ndarray, one_sided: np.ndarray) -> Ring:
     """The :class:`Ring` of the balls ``b`` at the ``directions`` (cos, sin (n, z)) in the
     bearings ``geo`` (flat), ``f_ref`` the largest applied load [N]."""
-    cols = np.empty((4, f_ref.shape[0]))
-    cols[0] = geo.A - geo.g
-    cols[1] = f_ref
-    cols[2] = geo.A
-    cols[3] = one_sided
-    c, s = directions
-    return Ring(
-        b,
-        np.ascontiguousarray(c, dtype=float),
-        np.ascontiguousarray(s, dtype=float),
-        np.ascontiguousarray(cols.T),
-    )
+    c, s = (np.ascontiguousarray(a, dtype=float) for a in directions)
+    return Ring(b, c, s, np.stack([geo.A - geo.g, f_ref, geo.A, one_sided.astype(float)], axis=1))
 
 
 @dataclass
@@ -577,22 +556,9 @@ def core_solve(
     flags = np.full(v0.shape[0], 1 if continued else 0, dtype=np.uint8)
     cont = np.ascontiguousarray
     b = r.b
-    v, parts, out = _core.solve_speed(
-        b.consts,
-        cont(b.ki[:, 0]),
-        cont(b.ko[:, 0]),
-        _NODE_X,
-        _NODE_W,
-        r.c,
-        r.s,
-        r.geo,
-        _limits(),
-        *(cont(a) for a in shaft),
-        limits,
-        cont(v0, dtype=float),
-        cont(v_static, dtype=float),
-        flags,
-    )
+    args = [b.consts, cont(b.ki[:, 0]), cont(b.ko[:, 0]), _NODE_X, _NODE_W, r.c, r.s, r.geo]
+    args += [_limits(), *(cont(a) for a in shaft), limits, cont(v0, dtype=float)]
+    v, parts, out = _core.solve_speed(*args, cont(v_static, dtype=float), flags)
     if out[:, 42].any():
         raise MemoryError("the ball dynamics' work space")
     return v, [_state(p, out) for p in parts], out
@@ -730,22 +696,8 @@ def _check(st: BallState, its: np.ndarray, flat: dict) -> None:
 
 
 #: The fields of the static answer the answer at speed replaces.
-_MOVED = frozenset(
-    (
-        "x",
-        "y",
-        "axial",
-        "tilt",
-        "tilt_cross",
-        "moment",
-        "contact_angles",
-        "ball_loads",
-        "ball_stiffnesses",
-        "ball_approaches",
-        "stiffness_matrix",
-        "iterations",
-    )
-)
+_MOVED = set("x y axial tilt tilt_cross moment contact_angles ball_loads".split())
+_MOVED |= set("ball_stiffnesses ball_approaches stiffness_matrix iterations".split())
 _KEPT = tuple(f.name for f in dataclasses.fields(CombinedDistribution) if f.name not in _MOVED)
 
 

@@ -376,15 +376,10 @@ def _plain(kind: str, named: dict[str, Any]) -> bool:
     low, high = validate.CONFORMITY_RANGE
     fa, fp = named["axial_load"], named["preload"]
     positive = ("width", "modulus", "stiffness", "tilt_radius")
-    return (
-        named["radial_load"] >= 0.0
-        and 0.0 < named["contact_angle"] <= 60.0
-        and fp >= 0.0
-        and (kind != "DT" or (fp == 0.0 and fa > 0.0))
-        and low < named["f_i"] < high
-        and low < named["f_o"] < high
-        and all(named.get(k, 1.0) > 0.0 for k in positive)
-    )
+    ok = named["radial_load"] >= 0.0 and 0.0 < named["contact_angle"] <= 60.0 and fp >= 0.0
+    ok = ok and (kind != "DT" or (fp == 0.0 and fa > 0.0))
+    ok = ok and low < named["f_i"] < high and low < named["f_o"] < high
+    return ok and all(named.get(k, 1.0) > 0.0 for k in positive)
 
 
 def _checked(kind: str, named: dict[str, Any]) -> tuple[tuple[int, ...], dict[str, np.ndarray]]:
