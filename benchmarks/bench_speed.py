@@ -33,6 +33,7 @@ import math  # noqa: E402
 import statistics  # noqa: E402
 import sys  # noqa: E402
 import time  # noqa: E402
+from types import SimpleNamespace  # noqa: E402
 from typing import Any  # noqa: E402
 
 import numpy as np  # noqa: E402
@@ -54,8 +55,8 @@ def ball_equations(
     e1, e2 = u - lo * so, np.maximum(rho - lo * co, 0.0)
     li = np.hypot(e1, e2)
     si, ci = e1 / li, e2 / li
-    qi = hs._stiffness(b.ki, ci) * np.maximum(li - b.ri, 0.0) ** 1.5
-    qo = hs._stiffness(b.ko, co) * np.maximum(do, 0.0) ** 1.5
+    qi = hs.stiffness(b.ki, ci) * np.maximum(li - b.ri, 0.0) ** 1.5
+    qo = hs.stiffness(b.ko, co) * np.maximum(do, 0.0) ** 1.5
     gamma = b.dw / b.dm
     tb = so / (co + gamma)
     beta = np.arctan(tb)
@@ -75,10 +76,13 @@ def fsolve_case(fr: float, fa: float, n: float, alpha: float) -> bool:
     dw, dm, fi, fo = (np.array([GEO[k]]) for k in ("ball_diameter", "pitch_diameter", "f_i",
                                                     "f_o"))  # fmt: skip
     geo = _angular_geometry(dw, dm, fi, fo, np.array([alpha]))
-    ki, ko = hs._stiffness_nodes(geo, np.array([208000.0]), np.array([0.3]))
-    b = hs._Set((fi - 0.5)[:, None] * dw[:, None], (fo - 0.5)[:, None] * dw[:, None],
-                dw[:, None], dm[:, None], np.array([[n * math.pi / 30.0]]),
-                7.85e-6 * math.pi / 6.0 * dw[:, None] ** 3, ki, ko)  # fmt: skip
+    balls = hs.ball_set(
+        geo, np.array([208000.0]), np.array([0.3]), np.array([n]), np.array([7850.0])
+    )
+    names = ("ri", "ro", "dw", "dm", "omega", "mass")
+    b = SimpleNamespace(
+        ki=balls.ki, ko=balls.ko, **{k: balls.consts[:, i : i + 1] for i, k in enumerate(names)}
+    )
     c = np.cos(2.0 * np.pi * np.arange(Z) / Z)[None, :]
     big_a, g, r_i = geo.A[0], geo.g[0], geo.R_i[0]
     s = solve_combined(Z, fr, fa, contact_angle=alpha, modulus=208000.0, **GEO)
@@ -93,7 +97,7 @@ def fsolve_case(fr: float, fa: float, n: float, alpha: float) -> bool:
     # each ball on its line, the approach shared by the contacts as their compliances
     d0 = np.hypot(np.maximum(rho0, 0.0), u0)
     cos0 = np.maximum(rho0, 0.0) / d0
-    ci, co = (hs._stiffness(k, cos0) ** (-2.0 / 3.0) for k in (b.ki, b.ko))
+    ci, co = (hs.stiffness(k, cos0) ** (-2.0 / 3.0) for k in (b.ki, b.ko))
     do0 = np.maximum(co / (ci + co) * (d0 - b.ri - b.ro), 1e-6)
     ao0 = np.arctan2(u0, np.maximum(rho0, 0.0))
 

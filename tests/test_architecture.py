@@ -464,12 +464,6 @@ KNOWN_PRIVATE_READS = {
     ("models.pair_speed", "models.combined._angular_geometry"),
     ("models.pair_speed", "models.combined._directions"),
     ("models.pair_speed", "models.combined._reference_force"),
-    ("models.pair_speed", "models.high_speed._Ring"),
-    ("models.pair_speed", "models.high_speed._Set"),
-    ("models.pair_speed", "models.high_speed._State"),
-    ("models.pair_speed", "models.high_speed._check_speed"),
-    ("models.pair_speed", "models.high_speed._result"),
-    ("models.pair_speed", "models.high_speed._stiffness_nodes"),
 }
 
 

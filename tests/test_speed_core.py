@@ -24,7 +24,7 @@ def _balls(n: int, seed: int) -> tuple[np.ndarray, ...]:
     rng = np.random.default_rng(seed)
     one = np.ones(1)
     geo = _angular_geometry(7.938 * one, 38.5 * one, 0.52 * one, 0.53 * one, 40.0 * one)
-    ki, ko = high_speed._stiffness_nodes(geo, 208000.0 * one, 0.3 * one)
+    ki, ko = high_speed.stiffness_nodes(geo, 208000.0 * one, 0.3 * one)
     a = float(geo.A[0])
     omega = rng.uniform(0.0, 30000.0, n) * math.pi / 30.0
     mass = 7.85e-6 * math.pi / 6.0 * 7.938**3

@@ -669,20 +669,6 @@ cdef void point_on(double *block, int z, Point *pt) noexcept nogil:
     pt.lo.sig = block + 12 * z
 
 
-cdef void copy_point(int z, const Point *src, Point *dst) noexcept nogil:
-    cdef int i
-    cdef double *a = src.b.rho
-    cdef double *b = dst.b.rho
-    for i in range(BALL_ARRAYS * z):
-        b[i] = a[i]
-    for i in range(5):
-        dst.gen[i] = src.gen[i]
-        dst.size[i] = src.size[i]
-    dst.res = src.res
-    dst.age = src.age
-    dst.drop = src.drop
-
-
 ctypedef struct Work:
     Point pt       # the current point
     Point trial    # a line-search trial
@@ -1925,31 +1911,6 @@ cdef double preload_delta(const Case *cs, double target) noexcept nogil:
     return x1
 
 
-def preload_approach(int z, const double[::1] target, const double[::1] a_hat,
-                     const double[::1] gap, const double[:, ::1] curve,
-                     const double[::1] node_x, const double[::1] node_w):
-    """The approach delta_p (scaled) of every ball of a one-sided bearing of z balls carrying
-    the thrust ``target`` (n,, scaled) alone (``preload_delta``); 0 where the target is not
-    positive. ``a_hat``, ``gap`` (n,) as :func:`solve_pair` takes them; ``curve`` (n, NODES)
-    the stiffness curve, or (n, 0) for a constant K, with its ``node_x``, ``node_w``."""
-    cdef Py_ssize_t n = target.shape[0], k
-    cdef bint has_curve = curve.shape[1] == NODES
-    delta_a = np.zeros(n)
-    cdef double[::1] delta = delta_a
-    cdef Case cs
-    memset(&cs, 0, sizeof(Case))
-    cs.z = z
-    cs.node_x = &node_x[0]
-    cs.node_w = &node_w[0]
-    with nogil:
-        for k in range(n):
-            if target[k] > 0:
-                cs.a_hat, cs.gap = a_hat[k], gap[k]
-                cs.curve = &curve[k, 0] if has_curve else NULL
-                delta[k] = preload_delta(&cs, target[k])
-    return delta_a
-
-
 cdef void axial_position(Case *cs, double delta, double *hi, double *lo) noexcept nogil:
     """The axial position (double-double) at which every ball of the one-sided bearing ``cs``
     is at the approach ``delta`` with no radial move: the closed form, then 4 Newton steps on
@@ -1976,53 +1937,33 @@ cdef void axial_position(Case *cs, double delta, double *hi, double *lo) noexcep
         quick(sum_, err + lo[0], hi, lo)
 
 
-def axial_at(const double[::1] a_hat, const double[::1] gap, const double[::1] b_hi,
-             const double[::1] b_lo, const double[::1] delta):
-    """The local axial position (hi, lo) (n,) each at which every ball of a one-sided bearing
-    (scaled: ``a_hat``, ``gap``, ``b_hi``, ``b_lo`` (n,) as :func:`solve_pair` takes them) is
-    at the approach ``delta`` (n,) with no radial move (``axial_position``)."""
-    cdef Py_ssize_t n = a_hat.shape[0], k
-    hi_a = np.empty(n)
-    lo_a = np.empty(n)
-    cdef double[::1] hi = hi_a, lo = lo_a
-    cdef Case cs
-    memset(&cs, 0, sizeof(Case))
-    with nogil:
-        for k in range(n):
-            cs.a_hat, cs.gap, cs.b_hi, cs.b_lo = a_hat[k], gap[k], b_hi[k], b_lo[k]
-            axial_position(&cs, delta[k], &hi[k], &lo[k])
-    return hi_a, lo_a
-
-
 def solve_pair(const double[:, ::1] c, const double[:, ::1] s, const double[::1] a_hat,
                const double[::1] pre, const double[::1] gap, const double[::1] b_hi,
                const double[::1] b_lo, const double[::1] sigma, const double[:, ::1] arm,
-               const double[:, ::1] off_hi, const double[:, ::1] off_lo,
-               const double[:, ::1] f, const unsigned char[:, ::1] held,
+               const double[::1] preload, const double[:, ::1] f, const unsigned char[:, ::1] held,
                const double[:, ::1] curve, const double[::1] node_x, const double[::1] node_w,
-               const double[:, ::1] v0, *, int max_steps=PAIR_MAX_STEPS,
-               int halvings=PAIR_HALVINGS, int first_steps=PAIR_FIRST_STEPS):
+               const double[:, ::1] v0):
     """Solve n cases of the preloaded pair (bearingload.models.pair) from the start v0 (n, 5):
     damped Newton over the shaft's position, first in plain doubles (``lean_newton``), then
     with the balls in double-double (``pair_newton``).
 
     Arrays over the n cases: ``c``, ``s`` (n, z) the balls of either bearing (one-sided
     contacts); ``a_hat``, ``pre``, ``gap``, ``b_hi``, ``b_lo`` (n,) their scaled geometry;
-    ``sigma`` (2,) +1 or -1 (a mirrored bearing); ``arm`` (n, 2) -z_k / R_i; ``off_hi``,
-    ``off_lo`` (n, 2) each bearing's axial preload offset; ``f`` (n, 5) the applied forces and
-    ``held`` (n, 5, uint8) the components held at 0, scaled; ``curve`` (n, NODES), or (n, 0)
-    for a constant K, with its ``node_x``, ``node_w``.
+    ``sigma`` (2,) +1 or -1 (a mirrored bearing); ``arm`` (n, 2) -z_k / R_i; ``preload`` (n,)
+    the thrust each bearing carries with no external load (its approach ``preload_delta``, 0
+    where not positive; both bearings at the axial offset of ``axial_position`` with every ball
+    at that approach); ``f`` (n, 5) the applied forces and ``held`` (n, 5, uint8) the
+    components held at 0, scaled; ``curve`` (n, NODES), or (n, 0)
+    for a constant K, with its ``node_x``, ``node_w``; the limits are the module's.
 
-    ``max_steps``, ``halvings`` (the double-double stage) and ``first_steps`` (the first)
-    default to the module's limits.
-
-    Returns (vh, vl, residual, steps, status, balls, kappa, gen, tangents, local): the
+    Returns (vh, vl, residual, steps, status, balls, kappa, gen, tangents, local, delta_p): the
     position in double-double (n, 5) each, the residual before the last step (n,), the steps
     of both stages (n,), the status (n,: OK, or NO_MEMORY), the balls of each bearing at the
     answer and their loads (13, 2, n, z: rho, u, d, eps, up, ca, sa, cam1, q, dq, root, tau,
     sig), their stiffness deviations (2, n, z), each bearing's generalised forces in its local
     coordinates (2, n, 5), its true tangent there, scaled (2, n, 5, 5: ``side_tangent``), and
-    its local position (2, n, 5: ``pair_local``, the double-double summed).
+    its local position (2, n, 5: ``pair_local``, the double-double summed), the preload
+    approach (n,).
     """
     cdef Py_ssize_t n = c.shape[0], k
     cdef int z = <int> c.shape[1], i, b
@@ -2037,6 +1978,8 @@ def solve_pair(const double[:, ::1] c, const double[:, ::1] s, const double[::1]
     gen_a = np.zeros((2, n, 5))
     tangents_a = np.zeros((2, n, 5, 5))
     local_a = np.zeros((2, n, 5))
+    delta_a = np.zeros(n)
+    cdef double[::1] delta = delta_a
     cdef double[:, :, :, ::1] tangents = tangents_a
     cdef double[:, :, ::1] local = local_a, gen = gen_a
     cdef double wh[5]
@@ -2053,10 +1996,10 @@ def solve_pair(const double[:, ::1] c, const double[:, ::1] s, const double[::1]
     memset(&pr, 0, sizeof(Pair))
     pr.bear.lim = LIMITS
     pr.whole = pr.bear
-    pr.max_steps = max_steps
-    pr.halvings = halvings
+    pr.max_steps = PAIR_MAX_STEPS
+    pr.halvings = PAIR_HALVINGS
     pr.first_stage = PAIR_FIRST_STAGE
-    pr.first_steps = first_steps
+    pr.first_steps = PAIR_FIRST_STEPS
     pr.first_halvings = PAIR_FIRST_HALVINGS
     with nogil:
         for k in range(n):
@@ -2064,11 +2007,12 @@ def solve_pair(const double[:, ::1] c, const double[:, ::1] s, const double[::1]
             pr.bear.curve = &curve[k, 0] if has_curve else NULL
             pr.bear.node_x = &node_x[0]
             pr.bear.node_w = &node_w[0]
+            preload_offset(&pr.bear, preload[k], &delta[k], &pr.off_hi[0], &pr.off_lo[0])
             for b in range(2):
                 pr.sigma[b] = sigma[b]
                 pr.arm[b] = arm[k, b]
-                pr.off_hi[b] = off_hi[k, b]
-                pr.off_lo[b] = off_lo[k, b]
+                pr.off_hi[b] = pr.off_hi[0]
+                pr.off_lo[b] = pr.off_lo[0]
             for i in range(5):
                 pr.whole.f[i] = f[k, i]
                 pr.whole.locked[i] = held[k, i]
@@ -2093,7 +2037,24 @@ def solve_pair(const double[:, ::1] c, const double[:, ::1] s, const double[::1]
                     local[b, k, i] = wh[i] + wl[i]
                     gen[b, k, i] = pt.gen[i]
             free(wk.block)
-    return vh_a, vl_a, res_a, its_a, status_a, balls_a, kappa_a, gen_a, tangents_a, local_a
+    return (vh_a, vl_a, res_a, its_a, status_a, balls_a, kappa_a, gen_a, tangents_a, local_a,
+            delta_a)
+
+
+cdef void preload_offset(const Case *bear, double target, double *delta, double *hi,
+                         double *lo) noexcept nogil:
+    """The approach ``delta`` of every ball of the bearing ``bear`` carrying the thrust ``target``
+    (scaled; 0 where not positive: ``preload_delta``) and the axial position (hi, lo) there
+    (``axial_position``)."""
+    cdef Case one
+    memset(&one, 0, sizeof(Case))
+    one.z = bear.z
+    one.node_x = bear.node_x
+    one.node_w = bear.node_w
+    one.a_hat, one.gap, one.b_hi, one.b_lo = bear.a_hat, bear.gap, bear.b_hi, bear.b_lo
+    one.curve = bear.curve
+    delta[0] = preload_delta(&one, target) if target > 0 else 0.0
+    axial_position(&one, delta[0], hi, lo)
 
 
 cdef void pair_case(Pair *pr, Py_ssize_t k, int z, const double *c, const double *s,

@@ -208,35 +208,32 @@ class HighSpeedDistribution(CombinedDistribution):
 
 
 @dataclass
-class _Set:
-    """Constants of every ball per case (n, 1), physical units."""
+class BallSet:
+    """Constants of every ball per case, physical units: ``consts`` (n, 6) r'_i = (f_i - 1/2)
+    D_w, r'_o, D_w, d_m [mm], the shaft speed omega [rad/s], the ball mass [kg] (the core's
+    layout); ``ki``, ``ko`` K_i and K_o at the Chebyshev nodes of cos(alpha) (n, 1, NODES)
+    [N/mm^1.5]."""
 
-    ri: np.ndarray  # r'_i = (f_i - 1/2) D_w [mm]
-    ro: np.ndarray  # r'_o
-    dw: np.ndarray
-    dm: np.ndarray
-    omega: np.ndarray  # [rad/s]
-    mass: np.ndarray  # [kg]
-    ki: np.ndarray  # K_i at the Chebyshev nodes of cos(alpha) (n, 1, NODES) [N/mm^1.5]
+    consts: np.ndarray
+    ki: np.ndarray
     ko: np.ndarray
 
-    def take(self, idx: np.ndarray) -> _Set:
-        return _Set(*(getattr(self, f.name)[idx] for f in dataclasses.fields(self)))
+    def take(self, idx: np.ndarray) -> BallSet:
+        return BallSet(self.consts[idx], self.ki[idx], self.ko[idx])
 
 
-def _packed(b: _Set) -> tuple[np.ndarray, np.ndarray, np.ndarray]:
-    """The constants of ``b`` as the core takes them: (n, 6) r'_i, r'_o, D_w, d_m, omega,
-    mass; K_i, K_o at the nodes (n, NODES)."""
-    rows = b.ki.shape[0]
-    cols = [np.broadcast_to(a, (rows, 1))[:, 0] for a in (b.ri, b.ro, b.dw, b.dm, b.omega, b.mass)]
-    return (
-        np.ascontiguousarray(np.stack(cols, axis=1), dtype=float),
-        np.ascontiguousarray(b.ki.reshape(rows, -1), dtype=float),
-        np.ascontiguousarray(b.ko.reshape(rows, -1), dtype=float),
-    )
+def ball_set(
+    geo: Any, modulus: np.ndarray, poisson: np.ndarray, speed: np.ndarray, density: np.ndarray
+) -> BallSet:
+    """The balls of every case of the geometry ``geo`` (flat, n) turning at ``speed`` [rpm],
+    of ``density`` [kg/m^3], with the Hertz stiffness of ``modulus``, ``poisson``."""
+    ki, ko = stiffness_nodes(geo, modulus, poisson)
+    radii = [(geo.f_i - 0.5) * geo.D_w, (geo.f_o - 0.5) * geo.D_w, geo.D_w, geo.d_m]
+    mass = density / _MM3 * math.pi / 6.0 * geo.D_w**3
+    return BallSet(np.stack(radii + [speed * math.pi / 30.0, mass], axis=1), ki, ko)
 
 
-def _stiffness(nodes: np.ndarray, cos_alpha: np.ndarray) -> np.ndarray:
+def stiffness(nodes: np.ndarray, cos_alpha: np.ndarray) -> np.ndarray:
     """K(cos alpha) from its values ``nodes`` (n, 1, NODES) at the Chebyshev nodes (barycentric
     interpolation, as the core's ``stiffness_at``); below cos = 0.05 (a loose ball pointing
     across the groove: no load) the value at 0.05. [N/mm^1.5]"""
@@ -245,16 +242,16 @@ def _stiffness(nodes: np.ndarray, cos_alpha: np.ndarray) -> np.ndarray:
     return (terms @ np.swapaxes(nodes, -1, -2))[..., 0] / terms.sum(axis=-1)
 
 
-def _stiffness_nodes(geo: Any, e: np.ndarray, nu: np.ndarray) -> tuple[np.ndarray, np.ndarray]:
+def stiffness_nodes(geo: Any, e: np.ndarray, nu: np.ndarray) -> tuple[np.ndarray, np.ndarray]:
     """K_i and K_o of every case at the Chebyshev nodes of cos(alpha) (n, 1, NODES): exact
     Hertz (:func:`bearingload.contact.hertz.ball_stiffness` at the pitch diameter
     d_m / cos alpha, the static model's curvature rule), once per distinct geometry (cached,
     the cache changes no bit). [N/mm^1.5]"""
     from bearingload.contact.hertz import ball_stiffness
 
-    params = np.stack([geo.D_w, geo.d_m, geo.f_i, geo.f_o, e, nu], axis=1)
+    columns = (geo.D_w, geo.d_m, geo.f_i, geo.f_o, e, nu)
     rows_i, rows_o = [], []
-    for key in map(tuple, params.tolist()):
+    for key in zip(*(a.tolist() for a in columns), strict=True):
         if key not in _NODE_CACHE:
             dw, dm, fi, fo, ee, nn = key
             k = ball_stiffness(dw, dm / _NODE_COS, fi, fo, ee, nn)
@@ -273,7 +270,13 @@ _NODE_W = _combined._NODE_W
 _NODE_CACHE: dict[tuple[float, ...], tuple[np.ndarray, np.ndarray]] = {}
 
 
-def _check_speed(speed: Any, density: Any, dm: Any) -> tuple[np.ndarray, np.ndarray]:
+def check_speed(speed: Any, density: Any, dm: Any) -> tuple[np.ndarray, np.ndarray]:
+    """The shaft ``speed`` [rpm] and ball ``density`` [kg/m^3] as float arrays, refused
+    (:class:`~bearingload.errors.InputError`) outside their ranges: a speed of 0 or more,
+    n d_m at most :data:`MAX_SPEED_PITCH` with the pitch diameters ``dm`` [mm]."""
+    if type(speed) is float and type(density) is float and type(dm) is float:
+        if 0.0 <= speed and 1.0 <= density <= 1e5 and speed * dm <= MAX_SPEED_PITCH:
+            return np.array(speed), np.array(density)  # one plain case in range
     n = validate.finite("speed", speed)
     if np.any(n < 0):
         raise InputError("speed", "must be >= 0 rpm (the inner ring's speed)")
@@ -355,12 +358,14 @@ def solve_high_speed(
     >>> bool((r.ball_loads_outer > r.ball_loads_inner).all())
     True
     """
-    n_rpm, density = _check_speed(speed, ball_density, pitch_diameter)
-    validate.broadcast_shape({"radial_load": radial_load, "speed": n_rpm,
-                              "ball_density": density})  # fmt: skip
-    wide = np.broadcast_shapes(np.shape(radial_load), n_rpm.shape, density.shape)
-    if wide != np.shape(radial_load):
-        radial_load = np.broadcast_to(np.asarray(radial_load, dtype=float), wide)
+    n_rpm, density = check_speed(speed, ball_density, pitch_diameter)
+    if n_rpm.ndim or density.ndim or np.ndim(radial_load):
+        validate.broadcast_shape(
+            {"radial_load": radial_load, "speed": n_rpm, "ball_density": density}
+        )
+        wide = np.broadcast_shapes(np.shape(radial_load), n_rpm.shape, density.shape)
+        if wide != np.shape(radial_load):
+            radial_load = np.broadcast_to(np.asarray(radial_load, dtype=float), wide)
     static = _combined.solve_combined(
         balls, radial_load, axial_load, ball_diameter=ball_diameter,
         pitch_diameter=pitch_diameter, f_i=f_i, f_o=f_o, clearance=clearance,
@@ -370,25 +375,28 @@ def solve_high_speed(
     )  # fmt: skip
     shape = np.shape(static.x)
     z = static.balls
-    given = {"balls": z, "radial_load": radial_load, "axial_load": axial_load,
+    given = {"radial_load": radial_load, "axial_load": axial_load,
              "moment": 0.0 if moment is None else moment, "moment_cross": moment_cross,
              "clearance": clearance, "cage_angle": cage_angle, "speed": n_rpm}  # fmt: skip
     if misalignment is not None:
         given["misalignment"] = misalignment
-    flat = {k: np.broadcast_to(np.asarray(v, dtype=float), shape).ravel()
-            for k, v in given.items() if k != "balls"}  # fmt: skip
-    case_arrays: dict[str, Any] = {
-        name: np.broadcast_to(np.asarray(getattr(static, name), dtype=float), shape).ravel()
-        for name in ("x", "y", "axial", "tilt", "tilt_cross", "tilt_radius")
-    }
-    angles = np.broadcast_to(static.contact_angles, shape + (z,)).reshape(-1, z)
-    d = np.broadcast_arrays(
-        *(np.asarray(v, dtype=float) for v in (ball_diameter, pitch_diameter, f_i, f_o,
-                                               modulus, poisson, density)),
-        np.zeros(()) if contact_angle is None else np.asarray(contact_angle, dtype=float),
-        np.zeros(shape),
-    )  # fmt: skip
-    dw, dm, fi, fo, e, nu, rho_b, alpha_d = (np.broadcast_to(a, shape).ravel() for a in d[:8])
+    at_rest = ("x", "y", "axial", "tilt", "tilt_cross", "tilt_radius")
+    columns = flat_columns(
+        shape,
+        *given.values(),
+        *(getattr(static, k) for k in at_rest),
+        ball_diameter,
+        pitch_diameter,
+        f_i,
+        f_o,
+        modulus,
+        poisson,
+        density,
+        0.0 if contact_angle is None else contact_angle,
+    )
+    flat = dict(zip(given, columns, strict=False))
+    case_arrays: dict[str, Any] = dict(zip(at_rest, columns[len(given) :], strict=False))
+    dw, dm, fi, fo, e, nu, rho_b, alpha_d = columns[len(given) + len(at_rest) :]
     geo = (_combined._geometry(dw, dm, fi, fo, flat["clearance"]) if contact_angle is None
            else _combined._angular_geometry(dw, dm, fi, fo, alpha_d))  # fmt: skip
     geo = dataclasses.replace(geo, R_i=case_arrays["tilt_radius"])
@@ -402,9 +410,18 @@ def solve_high_speed(
         z, geo, flat, case_arrays, (e, nu, rho_b), static_kw, contact_angle, rows
     )
     with np.errstate(all="ignore"):
-        out = _solve(z, geo, flat, case_arrays, angles, (e, nu, rho_b), one_sided,
+        out = _solve(z, geo, flat, case_arrays, (e, nu, rho_b), one_sided,
                      misalignment is not None)  # fmt: skip
-    return _result(static, shape, z, geo, flat, density, out, one_sided, misalignment)
+    return bearing_result(static, shape, z, geo, flat, density, out, one_sided, misalignment)
+
+
+def flat_columns(shape: tuple[int, ...], *values: Any) -> list[np.ndarray]:
+    """Each of ``values`` (numbers or arrays that broadcast to the case ``shape``) as a flat
+    float array (n,): the rows of one array."""
+    rows = np.empty((len(values),) + shape)
+    for i, value in enumerate(values):
+        rows[i] = value
+    return list(rows.reshape(len(values), -1))
 
 
 def _dynamic_start(
@@ -425,13 +442,13 @@ def _dynamic_start(
     moving = rows[flat["speed"][rows] > 0]
     if moving.size == 0:
         return out
-    ki, ko = _stiffness_nodes(geo, *material[:2])
+    ki, ko = stiffness_nodes(geo, *material[:2])
     cos0 = np.cos(geo.alpha0)
     omega = flat["speed"] * math.pi / 30.0
     mass = material[2] / _MM3 * math.pi / 6.0 * geo.D_w**3
     wc = 0.5 * omega * (1.0 - geo.D_w / geo.d_m * cos0)
     fc = 0.5 * mass * geo.d_m * wc * wc * _KG_MM
-    delta_c = (fc / _stiffness(ko, cos0[:, None])[:, 0]) ** (2.0 / 3.0)
+    delta_c = (fc / stiffness(ko, cos0[:, None])[:, 0]) ** (2.0 / 3.0)
     kw = {k: (v if v is None else v[moving]) for k, v in static_kw.items()}
     cos1 = np.maximum(cos0 - delta_c / geo.A, 1e-3)[moving]
     if contact_angle is None:
@@ -451,57 +468,33 @@ def _dynamic_start(
 
 
 @dataclass
-class _Ring:
-    """The ring problem of n cases (physical units; tilts as R_i theta [mm])."""
+class Ring:
+    """The bearings of n cases at speed, each in its own frame, as the core's
+    :func:`~bearingload.models._core.solve_speed` takes them (physical units)."""
 
-    b: _Set
+    b: BallSet
     c: np.ndarray  # cos phi_j (n, z)
     s: np.ndarray
-    base: np.ndarray  # A - G_r/2 (n,)
-    f: np.ndarray  # applied generalised forces (n, 5) [N]
-    f_ref: np.ndarray  # (n,) [N]
-    held: np.ndarray  # (n, 5) bool
-    one_sided: np.ndarray  # (n,) bool
-    length: np.ndarray  # A = (f_i + f_o - 1) D_w (n,) [mm]
+    geo: np.ndarray  # (n, 4): A - G_r/2 [mm], f_ref [N], A [mm], 1.0 where one-sided
 
-    def take(self, idx: np.ndarray) -> _Ring:
-        if np.array_equal(idx, np.arange(self.f.shape[0])):
-            return self  # every case in order (one case alone, always): the same arrays, read only
-        out = {f.name: getattr(self, f.name) for f in dataclasses.fields(self)}
-        return _Ring(out.pop("b").take(idx), **{k: v[idx] for k, v in out.items()})
+    @property
+    def f_ref(self) -> np.ndarray:
+        """The largest applied load of each case (n,). [N]"""
+        return self.geo[:, 1]
 
-    def core(self) -> tuple[Any, ...]:
-        """The arguments of the core's :func:`~bearingload.models._core.solve_speed` that
-        describe each case's bearing, and the limits (this module's constants)."""
-        n = self.f.shape[0]
-        geo = np.stack([self.base, self.f_ref, self.length, self.one_sided.astype(float)], axis=1)
-        limits = [
-            TOLERANCE,
-            ACCEPT,
-            ROUNDING,
-            NOISE_MAX,
-            BALL_TOLERANCE,
-            _ROUND,
-            LM_TRIALS,
-            HALVINGS,
-            BALL_ITERATIONS,
-            FALLBACK_ITERATIONS,
-            BALL_HALVINGS,
-        ]
-        cont = np.ascontiguousarray
-        return (
-            *_packed(self.b),
-            _NODE_X,
-            _NODE_W,
-            cont(self.c, dtype=float),
-            cont(np.broadcast_to(self.s, (n, self.c.shape[1])), dtype=float),
-            cont(geo, dtype=float),
-            np.array(limits, dtype=float),
-        )
+    def take(self, idx: np.ndarray) -> Ring:
+        return Ring(self.b.take(idx), self.c[idx], self.s[idx], self.geo[idx])
+
+
+def ring(b: BallSet, directions: tuple, geo: Any, f_ref: np.ndarray, one_sided: np.ndarray) -> Ring:
+    """The :class:`Ring` of the balls ``b`` at the ``directions`` (cos, sin (n, z)) in the
+    bearings ``geo`` (flat), ``f_ref`` the largest applied load [N]."""
+    c, s = (np.ascontiguousarray(a, dtype=float) for a in directions)
+    return Ring(b, c, s, np.stack([geo.A - geo.g, f_ref, geo.A, one_sided.astype(float)], axis=1))
 
 
 @dataclass
-class _State:
+class BallState:
     """Every ball and the ring's forces at a position v (n, 5)."""
 
     do: np.ndarray
@@ -525,12 +518,12 @@ class _State:
         return self.score <= ACCEPT
 
 
-def _state(part: tuple[np.ndarray, ...], out: np.ndarray) -> _State:
-    """A bearing's :class:`_State` from the core's (balls, terms, sens, ring) (``store_dyn``),
+def _state(part: tuple[np.ndarray, ...], out: np.ndarray) -> BallState:
+    """A bearing's :class:`BallState` from the core's (balls, terms, sens, ring) (``store_dyn``),
     the measures of its case (merit, score, level) from ``out`` (``store_case``)."""
     balls, terms, sens, ring = part
     n = ring.shape[0]
-    return _State(
+    return BallState(
         balls[0],
         balls[1],
         ring[:, 40] != 0,
@@ -547,73 +540,68 @@ def _state(part: tuple[np.ndarray, ...], out: np.ndarray) -> _State:
 
 
 def core_solve(
-    r: _Ring,
+    r: Ring,
     shaft: tuple[np.ndarray, ...],
-    limits: list[int],
+    limits: np.ndarray,
     v0: np.ndarray,
     v_static: np.ndarray,
     continued: bool,
-) -> tuple[np.ndarray, list[_State], np.ndarray]:
+) -> tuple[np.ndarray, list[BallState], np.ndarray]:
     """The core's solve (``solve_speed``) of n cases of bearings ``r``: one bearing, or a pair's
-    shaft, ``shaft`` = (maps (n, k, 5, 5), offset (n, k, 5), f (n, 5), held (n, 5)) and its
-    ``limits`` (iterations, stages, warm stages, the state at rest); the Newton from v0, where
-    left unbalanced and ``continued`` the continuation from v_static. Returns (v, each
+    shaft, ``shaft`` = (maps (n, k, 5, 5), offset (n, k, 5), f (n, 5), held (n, 5) uint8) and
+    its ``limits`` (4,: iterations, stages, warm stages, the state at rest); the Newton from v0,
+    where left unbalanced and ``continued`` the continuation from v_static. Returns (v, each
     bearing's state, the core's out (n, 45): out[:, 38] the iterations, 39 accepted, 40-41 the
     state at rest)."""
-    n = v0.shape[0]
-    flags = np.full(n, 1 if continued else 0, dtype=np.uint8)
+    flags = np.full(v0.shape[0], 1 if continued else 0, dtype=np.uint8)
     cont = np.ascontiguousarray
-    maps, offset, f, held = shaft
-    v, parts, out = _core.solve_speed(
-        *r.core(),
-        cont(maps, dtype=float),
-        cont(offset, dtype=float),
-        cont(f, dtype=float),
-        cont(held, dtype=np.uint8),
-        np.array(limits, dtype=float),
-        cont(v0, dtype=float),
-        cont(v_static, dtype=float),
-        flags,
-    )
-    if np.any(out[:, 42]):
+    b = r.b
+    args = [b.consts, cont(b.ki[:, 0]), cont(b.ko[:, 0]), _NODE_X, _NODE_W, r.c, r.s, r.geo]
+    args += [_limits(), *(cont(a) for a in shaft), limits, cont(v0, dtype=float)]
+    v, parts, out = _core.solve_speed(*args, cont(v_static, dtype=float), flags)
+    if out[:, 42].any():
         raise MemoryError("the ball dynamics' work space")
     return v, [_state(p, out) for p in parts], out
 
 
+def _limits() -> np.ndarray:
+    """The limits of the core's solve_speed: this module's constants at the call, in its
+    order."""
+    tolerances = [TOLERANCE, ACCEPT, ROUNDING, NOISE_MAX, BALL_TOLERANCE, _ROUND]
+    counts = [LM_TRIALS, HALVINGS, BALL_ITERATIONS, FALLBACK_ITERATIONS, BALL_HALVINGS]
+    return np.array(tolerances + counts, dtype=float)
+
+
 def _newton(
-    r: _Ring, v0: np.ndarray, v_static: np.ndarray, continued: bool
-) -> tuple[np.ndarray, _State, np.ndarray]:
-    """Every case of the bearings ``r`` by the core: the ring Newton from v0, the balls on their
-    lines; where left unbalanced and ``continued``, the continuation in speed from v_static.
-    Returns (v, state, iterations (n,))."""
+    r: Ring,
+    f: np.ndarray,
+    held: np.ndarray,
+    v0: np.ndarray,
+    v_static: np.ndarray,
+    continued: bool,
+) -> tuple[np.ndarray, BallState, np.ndarray]:
+    """Every case of the bearings ``r`` under ``f`` (n, 5) [N], ``held`` (n, 5) by the core: the
+    ring Newton from v0, the balls on their lines; where left unbalanced and ``continued``, the
+    continuation in speed from v_static. Returns (v, state, iterations (n,))."""
     n = v0.shape[0]
-    one = (np.broadcast_to(np.eye(5), (n, 1, 5, 5)), np.zeros((n, 1, 5)), r.f, r.held)
-    limits = [RING_ITERATIONS, CONTINUATION_STAGES, 0, 0]
+    maps = np.zeros((n, 1, 5, 5))
+    maps[:, 0] = _EYE
+    one = (maps, np.zeros((n, 1, 5)), f, held.view(np.uint8))
+    limits = np.array([RING_ITERATIONS, CONTINUATION_STAGES, 0, 0], dtype=float)
     v, parts, out = core_solve(r, one, limits, v0, v_static, continued)
     return v, parts[0], out[:, 38].astype(int)
 
 
-_STATE_ARRAYS = (
-    "do",
-    "ao",
-    "balls_ok",
-    "gen",
-    "jac",
-    "merit",
-    "sens",
-    "score",
-    "level",
-    "floor",
-    "noise",
-)
+_EYE = np.eye(5)
+_STATE_ARRAYS = tuple(f.name for f in dataclasses.fields(BallState) if f.name != "terms")
 
 
-def _take_state(st: _State, idx: np.ndarray) -> _State:
+def _take_state(st: BallState, idx: np.ndarray) -> BallState:
     out = {name: getattr(st, name)[idx] for name in _STATE_ARRAYS}
-    return _State(terms=tuple(t[idx] for t in st.terms), **out)
+    return BallState(terms=tuple(t[idx] for t in st.terms), **out)
 
 
-def _put_state(st: _State, rows: np.ndarray, new: _State) -> None:
+def _put_state(st: BallState, rows: np.ndarray, new: BallState) -> None:
     for name in _STATE_ARRAYS:
         getattr(st, name)[rows] = getattr(new, name)
     for mine, theirs in zip(st.terms, new.terms, strict=True):
@@ -621,21 +609,21 @@ def _put_state(st: _State, rows: np.ndarray, new: _State) -> None:
 
 
 def _solve(
-    z: int, geo: Any, flat: dict, pos: dict, angles: np.ndarray, material: tuple[np.ndarray, ...],
+    z: int, geo: Any, flat: dict, pos: dict, material: tuple[np.ndarray, ...],
     one_sided: np.ndarray, imposed_tilt: bool,
 ) -> tuple[Any, ...]:  # fmt: skip
     """Set up the ring problem at the static answer and solve it in the core: from the static
     answer; a case left unbalanced again from the shifted start (:func:`_dynamic_start`), then
     by the continuation in speed."""
-    e, nu, dens = material
     n = geo.D_w.shape[0]
     c, s, mirror = _combined._directions(z, np.mod(flat["cage_angle"], 360.0))
     fr, fa, mm, mc = (flat[k] for k in ("radial_load", "axial_load", "moment", "moment_cross"))
     rr = geo.R_i
-    t_imp = rr * np.deg2rad(flat.get("misalignment", np.zeros(n)))
+    t_imp = rr * np.deg2rad(flat["misalignment"]) if imposed_tilt else np.zeros(n)
     held, fixed = _combined._locks(z, mirror, (fr, fa, mm, mc), t_imp, imposed_tilt)
     f_ref = _combined._reference_force(fr, fa, mm, mc, rr)
-    f = np.stack([fr, np.zeros(n), fa, mm / rr, mc / rr], axis=1)
+    f = np.zeros((n, 5))
+    f[:, 0], f[:, 2], f[:, 3], f[:, 4] = fr, fa, mm / rr, mc / rr
     shift = np.where(one_sided, geo.A * np.sin(geo.alpha0), 0.0)
     v_static = np.stack([pos["x"], pos["y"], pos["axial"] + shift, rr * np.deg2rad(pos["tilt"]),
                          rr * np.deg2rad(pos["tilt_cross"])], axis=1)  # fmt: skip
@@ -644,37 +632,27 @@ def _solve(
     # an unbalance across the load line the held y never sees); at speed 0 the static answer
     zero = held & ~fixed & (flat["speed"] > 0)[:, None]
     zero[:, 2] = False
-    v_static = np.where(zero, 0.0, v_static)
-    ki, ko = _stiffness_nodes(geo, e, nu)
-    col = [
-        (geo.f_i - 0.5) * geo.D_w,
-        (geo.f_o - 0.5) * geo.D_w,
-        geo.D_w,
-        geo.d_m,
-        flat["speed"] * math.pi / 30.0,
-        dens / _MM3 * math.pi / 6.0 * geo.D_w**3,
-    ]
-    ri, ro, dwc, dmc, omega, mass = (a[:, None] for a in col)
-    b = _Set(ri, ro, dwc, dmc, omega, mass, ki, ko)
-    ring = _Ring(b, c, s, geo.A - geo.g, f, f_ref, held, one_sided, geo.A)
-    v, st, total = _newton(ring, v_static, v_static, False)
+    v_static[zero] = 0.0
+    b = ball_set(geo, material[0], material[1], flat["speed"], material[2])
+    bearings = ring(b, (c, s), geo, f_ref, one_sided)
+    v, st, total = _newton(bearings, f, held, v_static, v_static, False)
     bad = np.flatnonzero(~st.accepted)
     if bad.size:
         start = pos["shifted"](bad)
         v2 = np.stack([start["x"], start["y"], start["u"], rr * np.deg2rad(start["tilt"]),
                        rr * np.deg2rad(start["tilt_cross"])], axis=1)[bad]  # fmt: skip
         v2 = np.where(zero[bad], 0.0, v2)
-        v2, st2, its2 = _newton(ring.take(bad), v2, v_static[bad], True)
+        v2, st2, its2 = _newton(bearings.take(bad), f[bad], held[bad], v2, v_static[bad], True)
         total[bad] += its2
         won = np.flatnonzero(st2.accepted)
         v[bad[won]] = v2[won]
         _put_state(st, bad[won], _take_state(st2, won))
-    _check_resolved(st, ring, flat)
-    _check(st, total, flat, one_sided)
-    return ring, v, st, total
+    _check_resolved(st, bearings, flat)
+    _check(st, total, flat)
+    return bearings, v, st, total
 
 
-def _check_resolved(st: _State, ring: _Ring, flat: dict) -> None:
+def _check_resolved(st: BallState, ring: Ring, flat: dict) -> None:
     """InputError where the rounding level of the ring forces at the end is above LEVEL_MAX of
     the largest applied load (a load tiny against a preload or the balls' centrifugal forces:
     the double cannot balance it to the digits given). The smallest load accepted: the level
@@ -704,7 +682,7 @@ def _rel(a: np.ndarray, b: np.ndarray) -> float:
     return float(np.max(np.abs(a - b) / np.abs(b), initial=0.0))
 
 
-def _check(st: _State, its: np.ndarray, flat: dict, one_sided: np.ndarray) -> None:
+def _check(st: BallState, its: np.ndarray, flat: dict) -> None:
     """ConvergenceError naming the inputs of the cases left unbalanced."""
     bad = ~st.accepted
     if np.any(bad):
@@ -717,66 +695,61 @@ def _check(st: _State, its: np.ndarray, flat: dict, one_sided: np.ndarray) -> No
         )
 
 
-def _result(
+#: The fields of the static answer the answer at speed replaces.
+_MOVED = set("x y axial tilt tilt_cross moment contact_angles ball_loads".split())
+_MOVED |= set("ball_stiffnesses ball_approaches stiffness_matrix iterations".split())
+_KEPT = tuple(f.name for f in dataclasses.fields(CombinedDistribution) if f.name not in _MOVED)
+
+
+def _kept(value: Any) -> Any:
+    """A field of the static answer in the answer at speed: its own copy of an array, a Python
+    scalar for one case (the flags bools, the counts integers)."""
+    if isinstance(value, (np.ndarray, np.generic)):
+        return value.item() if value.ndim == 0 else value.copy()
+    return value
+
+
+def bearing_result(
     static: CombinedDistribution, shape: tuple[int, ...], z: int, geo: Any, flat: dict,
     density: np.ndarray, out: tuple[Any, ...], one_sided: np.ndarray, misalignment: Any,
+    **given: Any,
 ) -> HighSpeedDistribution:  # fmt: skip
-    """The static answer's fields with the dynamic ring position, balls and tangent."""
-    from bearingload import numerics
-
+    """The answer at speed of one bearing (n cases of the ``shape``): the static answer's fields
+    (or those ``given``) with the dynamic ring position, balls and tangent; ``out`` = (ring, v,
+    state, iterations) of the core's solve, ``flat`` the cases' ``speed`` and ``moment`` (n,)."""
     ring, v, st, its = out
     g1, g2, qi, qo, si, ci, fc, mg, wc, wr, beta, di = st.terms[:12]
     rr = geo.R_i
 
-    def case(a: Any, dtype: Any = float) -> Any:
-        a = np.asarray(a, dtype=dtype)
-        return numerics.scalar_out(
-            a.reshape(shape) if a.size == math.prod(shape) else np.broadcast_to(a, shape).copy()
-        )
+    def case(a: Any) -> Any:
+        return a.item() if not shape else a.reshape(shape)
 
     def ball(a: Any) -> np.ndarray:
-        return np.asarray(a, dtype=float).reshape(shape + (z,))
+        return a.reshape(shape + (z,))
 
-    fields = {f.name: getattr(static, f.name) for f in dataclasses.fields(CombinedDistribution)}
-    for name, value in fields.items():
-        if isinstance(value, np.ndarray) or isinstance(value, float):
-            tail = np.shape(value)[len(np.shape(static.x)) :]
-            fields[name] = np.broadcast_to(value, shape + tail).copy()
-            if not tail:  # the static answer's flags stay bools, its counts integers
-                kind = np.asarray(value).dtype
-                fields[name] = case(fields[name], kind if kind.kind in "biu" else float)
     ai = np.rad2deg(np.arctan2(si, ci))
-    ao = np.rad2deg(st.ao)
-
-    lever = np.stack([np.ones_like(rr)] * 3 + [rr, rr], axis=1)
+    lever = np.ones((rr.shape[0], 5))
+    lever[:, 3] = lever[:, 4] = rr
     tangent = st.jac * lever[:, :, None] * lever[:, None, :]
-
     shift = np.where(one_sided, geo.A * np.sin(geo.alpha0), 0.0)
     moment = rr * st.gen[:, 3] if misalignment is not None else flat["moment"]
+    offset = ring.b.consts[:, 1:2] + st.do  # r'_o + delta_o
+    cos_o, sin_o = np.cos(st.ao), np.sin(st.ao)
+    fields = {name: _kept(getattr(static, name)) for name in _KEPT} | given
+    fields.update(x=case(v[:, 0]), y=case(v[:, 1]), axial=case(v[:, 2] - shift))
+    fields.update(tilt=case(np.rad2deg(v[:, 3] / rr)), tilt_cross=case(np.rad2deg(v[:, 4] / rr)))
+    fields.update(moment=case(moment), contact_angles=ball(ai), ball_loads=ball(qi))
+    fields.update(ball_stiffnesses=ball(stiffness(ring.b.ki, ci)), ball_approaches=ball(di + st.do))
+    fields.update(stiffness_matrix=tangent.reshape(shape + (5, 5)))
+    fields.update(iterations=case(np.ravel(static.iterations) + its), speed=case(flat["speed"]))
+    fields.update(ball_density=_kept(np.broadcast_to(density, shape)))
+    fields.update(contact_angles_inner=ball(ai), contact_angles_outer=ball(np.rad2deg(st.ao)))
+    fields.update(ball_loads_inner=ball(qi), ball_loads_outer=ball(qo))
+    fields.update(ball_stiffnesses_outer=ball(stiffness(ring.b.ko, cos_o)))
+    fields.update(approaches_inner=ball(di), approaches_outer=ball(st.do))
+    fields.update(ball_offsets_axial=ball(offset * sin_o), ball_offsets_radial=ball(offset * cos_o))
     fields.update(
-        x=case(v[:, 0]), y=case(v[:, 1]), axial=case(v[:, 2] - shift),
-        tilt=case(np.rad2deg(v[:, 3] / rr)), tilt_cross=case(np.rad2deg(v[:, 4] / rr)),
-        moment=case(moment),
-        contact_angles=ball(ai), ball_loads=ball(qi), ball_stiffnesses=ball(_stiffness(ring.b.ki, ci)),
-        ball_approaches=ball(di + st.do), stiffness_matrix=tangent.reshape(shape + (5, 5)),
-        iterations=case(np.asarray(fields["iterations"]).ravel() + its, np.int64),
-    )  # fmt: skip
-    return HighSpeedDistribution(
-        **fields,
-        speed=case(flat["speed"]),
-        ball_density=case(np.broadcast_to(density, shape)),
-        contact_angles_inner=ball(ai),
-        contact_angles_outer=ball(ao),
-        ball_loads_inner=ball(qi),
-        ball_loads_outer=ball(qo),
-        ball_stiffnesses_outer=ball(_stiffness(ring.b.ko, np.cos(st.ao))),
-        approaches_inner=ball(di),
-        approaches_outer=ball(st.do),
-        ball_offsets_axial=ball((ring.b.ro + st.do) * np.sin(st.ao)),
-        ball_offsets_radial=ball((ring.b.ro + st.do) * np.cos(st.ao)),
-        orbit_speeds=ball(wc),
-        spin_speeds=ball(wr),
-        attitude_angles=ball(np.rad2deg(beta)),
-        centrifugal_forces=ball(fc),
-        gyroscopic_moments=ball(mg),
+        orbit_speeds=ball(wc), spin_speeds=ball(wr), attitude_angles=ball(np.rad2deg(beta))
     )
+    fields.update(centrifugal_forces=ball(fc), gyroscopic_moments=ball(mg))
+    return HighSpeedDistribution(**fields)

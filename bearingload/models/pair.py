@@ -43,6 +43,7 @@ the set-up (the preload approach and offset, the start) and the results.
 
 from __future__ import annotations
 
+import dataclasses
 import math
 from dataclasses import dataclass
 from typing import Any
@@ -57,7 +58,17 @@ from bearingload.models import combined as _comb
 from bearingload.models._combined_ring import ACCEPT, Problem
 from bearingload.models.combined import CombinedDistribution, StiffnessViews
 
-__all__ = ["ARRANGEMENTS", "LIFE_EXPONENT", "PairDistribution", "solve_pair", "pair_life"]
+__all__ = [
+    "ARRANGEMENTS",
+    "LIFE_EXPONENT",
+    "PairDistribution",
+    "solve_pair",
+    "pair_life",
+    "signs",
+    "levers",
+    "shaft_maps",
+    "held_components",
+]
 
 #: The arrangements: back-to-back, face-to-face, tandem.
 ARRANGEMENTS = ("DB", "DF", "DT")
@@ -147,26 +158,53 @@ def pair_life(life_1: Any, life_2: Any, exponent: float = LIFE_EXPONENT) -> Any:
 
 @dataclass(frozen=True)
 class _Pair:
-    """The scaled pair problem of n cases: one Problem per bearing (the same balls), the maps."""
+    """The scaled pair problem of n cases: the balls, the maps' signs and levers, the loads."""
 
-    probs: tuple[Problem, Problem]
+    prob: Problem  # the balls of either bearing
     sigma: np.ndarray  # (2,) +1 or -1
     lever: np.ndarray  # (n, 2) z_k / R_i
-    off_hi: np.ndarray  # (n, 2) local axial offset (scaled), double-double
-    off_lo: np.ndarray
+    preload: np.ndarray  # (n,) F_p, scaled
     f: np.ndarray  # (n, 5) applied, scaled
     held: np.ndarray  # (n, 5) bool: y and theta_c of a case symmetric about the load line, 0
 
-    def maps(self) -> np.ndarray:
-        """L_k (n, 2, 5, 5): local displacement per pair displacement (scaled, t = R_i theta)."""
-        n = self.f.shape[0]
-        m = np.zeros((n, 2, 5, 5))
-        for k in range(2):
-            m[:, k, 0, 0] = m[:, k, 1, 1] = 1.0
-            m[:, k, 0, 3] = m[:, k, 1, 4] = -self.lever[:, k]
-            for i in (2, 3, 4):
-                m[:, k, i, i] = self.sigma[k]
-        return m
+
+def signs(kind: str) -> np.ndarray:
+    """sigma_k (2,): +1, or -1 for bearing 2 of DB and DF, mirrored."""
+    return np.array([1.0, 1.0 if kind == "DT" else -1.0])
+
+
+def levers(kind: str, width: np.ndarray, radius: np.ndarray) -> np.ndarray:
+    """z_k / R_i (n, 2): each bearing's centre from the pair's, over the tilt lever ``radius``;
+    bearing 1 at -B/2 in DB and DT, at +B/2 in DF (``width`` B)."""
+    first = -0.5 if kind in ("DB", "DT") else 0.5
+    return np.array([first, -first]) * width[:, None] / radius[:, None]
+
+
+def shaft_maps(sigma: np.ndarray, lever: np.ndarray) -> np.ndarray:
+    """L_k (n, 2, 5, 5): each bearing's local displacement per shaft displacement (x, y, a,
+    t, t_c), t the tilt times the lever; ``sigma`` (2,) +1, or -1 for a mirrored bearing;
+    ``lever`` (n, 2) z_k over the tilt lever (:func:`levers`)."""
+    diagonal = np.ones((2, 5))
+    diagonal[:, 2:] = sigma[:, None]
+    m = np.zeros((lever.shape[0], 2, 5, 5))
+    m[:, :, range(5), range(5)] = diagonal
+    m[:, :, 0, 3] = m[:, :, 1, 4] = -lever
+    return m
+
+
+def held_components(kind: str, mirror: np.ndarray, loads: tuple[np.ndarray, ...]) -> np.ndarray:
+    """(n, 5) bool: the components of the shaft's (x, y, a, t, t_c) 0 by a symmetry of the case,
+    exactly: y and t_c where the balls are symmetric about the load line (``mirror``) and no
+    moment acts across it; the z-fold symmetry (z >= 3) without a radial load or moment; the
+    bearings' mirror image across the pair's mid-plane (not DT's) without a thrust or moment.
+    ``loads`` = (F_r, F_a, M, M_c) (n,) each."""
+    fr, fa, mm, mc = loads
+    held = (mirror & (mc == 0))[:, None] & np.array([False, True, False, False, True])
+    no_moment = (mm == 0) & (mc == 0)
+    held |= ((fr == 0) & no_moment)[:, None] & np.array([True, True, False, True, True])
+    if kind != "DT":
+        held |= ((fa == 0) & no_moment)[:, None] & np.array([False, False, True, True, True])
+    return held
 
 
 @dataclass
@@ -185,43 +223,22 @@ def _solve_stages(pp: _Pair, v0: np.ndarray, curve: Any) -> tuple[Any, ...]:
     """Every case solved from ``v0`` in the compiled core (:func:`bearingload.models._core.
     solve_pair`: Newton in plain doubles to a residual of 1e-9, then with the balls in
     double-double to the tolerance): (position hi, lo, residual, steps, the balls, their loads
-    and forces there)."""
+    and forces there, the preload approach)."""
     from bearingload.models import _core
 
-    p = pp.probs[0]
+    p = pp.prob
     values = np.zeros((v0.shape[0], 0)) if curve is None else curve.values
-    floats = (
-        p.c,
-        p.s,
-        p.a_hat,
-        p.pre,
-        p.gap,
-        p.b_hi,
-        p.b_lo,
-        pp.sigma,
-        -pp.lever,
-        pp.off_hi,
-        pp.off_lo,
-        pp.f,
-    )
-    vh, vl, res, its, _, balls, kappa, gen, tangents, local = _core.solve_pair(
-        *(np.ascontiguousarray(a, dtype=float) for a in floats),
-        np.ascontiguousarray(pp.held, dtype=np.uint8),
-        np.ascontiguousarray(values, dtype=float),
-        _comb._NODE_X,
-        _comb._NODE_W,
-        np.ascontiguousarray(v0, dtype=float),
-    )
+    balls_in = (p.c, p.s, p.a_hat, p.pre, p.gap, p.b_hi, p.b_lo)
+    cont = np.ascontiguousarray
+    args = [cont(a, dtype=float) for a in balls_in + (pp.sigma, -pp.lever, pp.preload, pp.f)]
+    args += [cont(pp.held, dtype=np.uint8), cont(values, dtype=float), _comb._NODE_X]
+    out = _core.solve_pair(*args, _comb._NODE_W, cont(v0, dtype=float))
+    vh, vl, res, its, _, balls, kappa, gen, tangents, local, delta_p = out
     q0 = np.where(p.deviation, p.pre * np.sqrt(p.pre), 0.0)
-    st = _State(
-        [_ring.Balls(*balls[:5, k]) for k in range(2)],
-        [kappa[0], kappa[1]],
-        [_ring.Loads(*balls[5:, k], q0) for k in range(2)],  # type: ignore[call-arg]
-        gen,
-        tangents,
-        local,
-    )
-    return vh, vl, res, its, st
+    loads = [_ring.Loads(*balls[5:, k], q0) for k in range(2)]  # type: ignore[call-arg]
+    ball_sets = [_ring.Balls(*balls[:5, k]) for k in range(2)]
+    st = _State(ball_sets, list(kappa), loads, gen, tangents, local)
+    return vh, vl, res, its, st, delta_p
 
 
 #: Largest width B of one bearing (the distance of the two bearings' centres) over the pitch
@@ -304,29 +321,21 @@ def solve_pair(
             "must be at least 3 per bearing of a pair: 1 or 2 balls leave the shaft free to "
             "turn about their line (a real bearing has many more)",
         )
-    fr = validate.at_least("radial_load", radial_load, 0.0, "N")
-    fa = validate.finite("axial_load", axial_load)
-    fp = validate.finite("preload", preload)
-    _check_pair(kind, fa, fp, contact_angle)
-    named = {"radial_load": fr, "axial_load": fa, "preload": fp,
-             "contact_angle": validate.finite("contact_angle", contact_angle),
-             "ball_diameter": validate.finite("ball_diameter", ball_diameter),
-             "pitch_diameter": validate.finite("pitch_diameter", pitch_diameter),
-             "width": validate.positive("width", width, "mm"),
-             "f_i": validate.conformity("f_i", f_i), "f_o": validate.conformity("f_o", f_o),
-             "cage_angle": validate.finite("cage_angle", cage_angle),
-             "moment": validate.finite("moment", moment),
-             "moment_cross": validate.finite("moment_cross", moment_cross),
-             "modulus": validate.positive("modulus", modulus, "MPa"),
-             "poisson": validate.finite("poisson", poisson)}  # fmt: skip
+    # every parameter by name, in the order the checks take them
+    named = dict(radial_load=radial_load, axial_load=axial_load, preload=preload)
+    named |= dict(contact_angle=contact_angle, ball_diameter=ball_diameter)
+    named |= dict(pitch_diameter=pitch_diameter, width=width, f_i=f_i, f_o=f_o)
+    named |= dict(cage_angle=cage_angle, moment=moment, moment_cross=moment_cross)
+    named |= dict(modulus=modulus, poisson=poisson)
     if stiffness is not None:
-        named["stiffness"] = validate.positive("stiffness", stiffness, "N/mm^1.5")
+        named["stiffness"] = stiffness
     if tilt_radius is not None:
-        named["tilt_radius"] = validate.positive("tilt_radius", tilt_radius, "mm")
-    validate.broadcast_shape(named)
-    arrays = np.broadcast_arrays(*(np.asarray(v, dtype=float) for v in named.values()))
-    shape = arrays[0].shape
-    c = dict(zip(named, (a.ravel() for a in arrays), strict=True))
+        named["tilt_radius"] = tilt_radius
+    if _plain(kind, named):  # one case of plain numbers, every check passed
+        shape: tuple[int, ...] = ()
+        c = dict(zip(named, np.array(list(named.values()))[:, None], strict=True))
+    else:
+        shape, c = _checked(kind, named)
     c["cage_angle"] = np.mod(c["cage_angle"], 360.0)
     narrow = c["width"] < c["ball_diameter"]
     if narrow.any():  # no ring holds its balls so; the shaft's tilt then has no lever
@@ -359,6 +368,40 @@ def _arrangement(arrangement: Any) -> str:
     return kind
 
 
+def _plain(kind: str, named: dict[str, Any]) -> bool:
+    """Whether every value is a plain float that passes every check of :func:`_checked` (a case
+    that does not is checked there, which names what it refuses)."""
+    if not all(type(v) is float and math.isfinite(v) for v in named.values()):
+        return False
+    low, high = validate.CONFORMITY_RANGE
+    fa, fp = named["axial_load"], named["preload"]
+    positive = ("width", "modulus", "stiffness", "tilt_radius")
+    ok = named["radial_load"] >= 0.0 and 0.0 < named["contact_angle"] <= 60.0 and fp >= 0.0
+    ok = ok and (kind != "DT" or (fp == 0.0 and fa > 0.0))
+    ok = ok and low < named["f_i"] < high and low < named["f_o"] < high
+    return ok and all(named.get(k, 1.0) > 0.0 for k in positive)
+
+
+def _checked(kind: str, named: dict[str, Any]) -> tuple[tuple[int, ...], dict[str, np.ndarray]]:
+    """The values ``named`` checked, broadcast together: (the case shape, each flat)."""
+    fr = validate.at_least("radial_load", named["radial_load"], 0.0, "N")
+    fa = validate.finite("axial_load", named["axial_load"])
+    fp = validate.finite("preload", named["preload"])
+    _check_pair(kind, fa, fp, named["contact_angle"])
+    units = {"width": "mm", "modulus": "MPa", "stiffness": "N/mm^1.5", "tilt_radius": "mm"}
+    arrays = {"radial_load": fr, "axial_load": fa, "preload": fp}
+    for name, value in named.items():
+        if name in units:
+            arrays[name] = validate.positive(name, value, units[name])
+        elif name in ("f_i", "f_o"):
+            arrays[name] = validate.conformity(name, value)
+        elif name not in arrays:
+            arrays[name] = validate.finite(name, value)
+    validate.broadcast_shape(arrays)
+    flat = np.broadcast_arrays(*(np.asarray(v, dtype=float) for v in arrays.values()))
+    return flat[0].shape, dict(zip(arrays, (a.ravel() for a in flat), strict=True))
+
+
 def _check_pair(kind: str, fa: np.ndarray, fp: np.ndarray, contact_angle: Any) -> None:
     """Refuse what a pair of this arrangement cannot take."""
     alpha = validate.finite("contact_angle", contact_angle)
@@ -387,17 +430,15 @@ _UNITS = {"radial_load": "N", "axial_load": "N", "moment": "N mm", "moment_cross
 
 def _solve(z: int, kind: str, c: dict, shape: tuple[int, ...]) -> PairDistribution:
     """The pair of the flat, checked cases ``c``."""
-    from bearingload.models import _core
-
     geo = _comb._angular_geometry(c["ball_diameter"], c["pitch_diameter"], c["f_i"], c["f_o"],
                                   c["contact_angle"])  # fmt: skip
     if "tilt_radius" in c:
-        geo = _replace_radius(geo, c["tilt_radius"])
+        geo = dataclasses.replace(geo, R_i=c["tilt_radius"].astype(float))
     curve = None
     if "stiffness" in c:
         k_ref = c["stiffness"]
     else:
-        k_ref, values = _comb._hertz_setup(geo, c["modulus"], c["poisson"])
+        k_ref, values = _hertz(geo, c["modulus"], c["poisson"])
         curve = _comb._StiffnessCurve(values)
     fr, fa, mm, mc, fp = (c[k] for k in ("radial_load", "axial_load", "moment", "moment_cross",
                                          "preload"))  # fmt: skip
@@ -430,24 +471,9 @@ def _solve(z: int, kind: str, c: dict, shape: tuple[int, ...]) -> PairDistributi
                         t_imp=np.zeros(n), locked=np.zeros((n, 5), dtype=bool),
                         imposed=np.zeros((n, 5), dtype=bool), f_ref=f_ref, k_ref=k_ref,
                         one_sided=np.ones(n, dtype=bool))  # fmt: skip
-    nodes = (np.zeros((n, 0)), np.zeros(1), np.zeros(1))  # a constant K: no curve
-    if curve is not None:
-        nodes = (curve.values, curve.x, curve.w)
-    delta_p = _core.preload_approach(z, fp / f_ref, prob.a_hat, prob.gap, *nodes)
-    u_hi, u_lo = _core.axial_at(prob.a_hat, prob.gap, prob.b_hi, prob.b_lo, delta_p)
-    first = -0.5 if kind in ("DB", "DT") else 0.5
-    lever = np.array([first, -first]) * c["width"][:, None]
-    sigma = np.array([1.0, 1.0 if kind == "DT" else -1.0])
-    # y and theta_c 0 by symmetry, exactly; the z-fold symmetry (z >= 3); the bearings' mirror
-    # image across the pair's mid-plane (not DT's)
-    held = (mirror & (mc == 0))[:, None] & np.array([False, True, False, False, True])
-    no_moment = (mm == 0) & (mc == 0)
-    held |= ((fr == 0) & no_moment)[:, None] & np.array([True, True, False, True, True])
-    if kind != "DT":
-        held |= ((fa == 0) & no_moment)[:, None] & np.array([False, False, True, True, True])
-    offsets = (u_hi[:, None].repeat(2, axis=1), u_lo[:, None].repeat(2, axis=1))
-    pp = _Pair((prob, prob), sigma, lever / geo.R_i[:, None], *offsets, f, held)
-    vh, vl, res, its, st = _solve_stages(pp, _start(pp, z, geo, fp / f_ref), curve)
+    held = held_components(kind, mirror, (fr, fa, mm, mc))
+    pp = _Pair(prob, signs(kind), levers(kind, c["width"], geo.R_i), fp / f_ref, f, held)
+    vh, vl, res, its, st, delta_p = _solve_stages(pp, _start(pp, z, geo, pp.preload), curve)
     given = {k: c[k] for k in _UNITS}
     _accepted(res, its, given)
     _check_edge(st, given)
@@ -455,10 +481,24 @@ def _solve(z: int, kind: str, c: dict, shape: tuple[int, ...]) -> PairDistributi
                    delta_p)  # fmt: skip
 
 
-def _replace_radius(geo: Any, radius: np.ndarray) -> Any:
-    import dataclasses
+def _hertz(geo: Any, e: np.ndarray, nu: np.ndarray) -> tuple[np.ndarray, np.ndarray]:
+    """K_0 and the stiffness curve's values of every case (the combined model's set-up), those
+    of the geometries set up before from a cache (the cache changes no bit: each case's set-up
+    is its own)."""
+    columns = (geo.D_w, geo.d_m, geo.f_i, geo.f_o, e, nu)
+    keys = list(zip(*(a.tolist() for a in columns), strict=True))
+    if all(key in _HERTZ_CACHE for key in keys):
+        rows = [_HERTZ_CACHE[key] for key in keys]
+        return np.array([r[0] for r in rows]), np.stack([r[1] for r in rows])
+    k0, values = _comb._hertz_setup(geo, e, nu)
+    for i, key in enumerate(keys):
+        _HERTZ_CACHE[key] = (float(k0[i]), values[i].copy())
+        while len(_HERTZ_CACHE) > _comb.SETUP_CACHE_SIZE:
+            _HERTZ_CACHE.pop(next(iter(_HERTZ_CACHE)))
+    return k0, values
 
-    return dataclasses.replace(geo, R_i=np.broadcast_to(radius, geo.D_w.shape).astype(float))
+
+_HERTZ_CACHE: dict[tuple[float, ...], tuple[float, np.ndarray]] = {}
 
 
 def _start(pp: _Pair, z: int, geo: Any, pre: np.ndarray) -> np.ndarray:
@@ -505,15 +545,21 @@ def _check_edge(st: _State, given: dict) -> None:
             )
 
 
+#: The couplings of (x, axial, tilt) with (y, tilt_cross): 0 in a case symmetric about the
+#: load line.
+_COUPLING = np.zeros((5, 5), dtype=bool)
+_COUPLING[np.ix_([0, 2, 3], [1, 4])] = _COUPLING[np.ix_([1, 4], [0, 2, 3])] = True
+
+
 def _result(kind: str, pp: _Pair, geo: Any, answer: tuple[Any, ...], c: dict,
             shape: tuple[int, ...], curve: Any, mirrored: np.ndarray,
             delta_p: np.ndarray) -> PairDistribution:  # fmt: skip
     """Back to physical units: each bearing as a CombinedDistribution, the pair's values."""
     vh, vl, res, its, st = answer
-    p = pp.probs[0]
+    p = pp.prob
     scale, f_ref, radius = p.scale, p.f_ref, geo.R_i
     n = vh.shape[0]
-    maps = pp.maps()
+    maps = shaft_maps(pp.sigma, pp.lever * radius[:, None])  # physical: tilts in radians
     bearings = []
     total = np.zeros((n, 5, 5))
     for k in range(2):
@@ -527,25 +573,23 @@ def _result(kind: str, pp: _Pair, geo: Any, answer: tuple[Any, ...], c: dict,
                  "cage_angle": c["cage_angle"]}  # fmt: skip
         out = (st.local[k], st.kappa[k], its, (st.balls[k], lo, gen), tangent)
         bearings.append(_comb._result(p, geo, out, shape, given, None))
-        phys = maps[:, k].copy()
-        phys[:, 0, 3] *= radius
-        phys[:, 1, 4] *= radius
-        total += phys.transpose(0, 2, 1) @ tangent @ phys
-    along, across = np.array([0, 2, 3]), np.array([1, 4])
-    total[np.ix_(mirrored, along, across)] = 0.0
-    total[np.ix_(mirrored, across, along)] = 0.0
-    unloaded = np.stack([np.all(st.loads[k].q == 0, axis=1) for k in range(2)], axis=1)
+        total += maps[:, k].transpose(0, 2, 1) @ tangent @ maps[:, k]
+    total[mirrored[:, None, None] & _COUPLING] = 0.0
+    unloaded = np.empty((n, 2), dtype=bool)
+    for k in range(2):
+        unloaded[:, k] = ~st.loads[k].q.any(axis=1)
     v = vh + vl
 
     def case(a: Any) -> Any:
         return np.asarray(a).reshape(shape) if shape else np.asarray(a).item()
 
-    lift = None if kind == "DT" else case(_lift_off(pp, geo, curve, delta_p, c))
+    offset = _offset(p, delta_p)
+    lift = None if kind == "DT" else case(_lift_off(pp, curve, offset, c))
     return PairDistribution(
         arrangement=kind, bearings=(bearings[0], bearings[1]),
         load=case(c["radial_load"]), axial_load=case(c["axial_load"]), moment=case(c["moment"]),
         moment_cross=case(c["moment_cross"]), preload=case(c["preload"]),
-        preload_offset=case(_offset(p, delta_p) * scale), width=case(c["width"]),
+        preload_offset=case(offset * scale), width=case(c["width"]),
         x=case(v[:, 0] * scale), y=case(v[:, 1] * scale), axial=case(v[:, 2] * scale),
         tilt=case(np.rad2deg(v[:, 3] * scale / radius)),
         tilt_cross=case(np.rad2deg(v[:, 4] * scale / radius)),
@@ -563,14 +607,15 @@ def _offset(p: Problem, delta: np.ndarray) -> np.ndarray:
     return delta * (2.0 * big_a + delta) / (up + u0)
 
 
-def _lift_off(pp: _Pair, geo: Any, curve: Any, delta_p: np.ndarray, c: dict) -> np.ndarray:
+def _lift_off(pp: _Pair, curve: Any, offset: np.ndarray, c: dict) -> np.ndarray:
     """The external axial load alone at which one bearing of a preloaded DB/DF pair carries
-    nothing: the other then sits at twice the preload offset from its zero-load position. [N]"""
-    p = pp.probs[0]
+    nothing: the other then sits at twice the preload ``offset`` (:func:`_offset`) from its
+    zero-load position. [N]"""
+    p = pp.prob
     big_a, gap = p.a_hat, p.gap
     u0 = np.sqrt(gap * (2.0 * big_a - gap))
     cc = big_a - gap
-    w = 2.0 * _offset(p, delta_p)
+    w = 2.0 * offset
     u = u0 + w
     d = np.hypot(cc, u)
     delta = w * (2.0 * u0 + w) / (d + big_a)

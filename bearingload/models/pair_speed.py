@@ -48,7 +48,14 @@ from bearingload.constants import STEEL_MODULUS
 from bearingload.errors import ConvergenceError, InputError
 from bearingload.models import combined as _comb
 from bearingload.models import high_speed as _hs
-from bearingload.models.pair import PairDistribution, solve_pair
+from bearingload.models.pair import (
+    PairDistribution,
+    held_components,
+    levers,
+    shaft_maps,
+    signs,
+    solve_pair,
+)
 
 __all__ = ["PairHighSpeedDistribution", "solve_pair_high_speed", "MODEL"]
 
@@ -105,7 +112,7 @@ class PairHighSpeedDistribution(PairDistribution):
 class _Shaft:
     """The pair problem of n cases in physical units (tilts as R_i theta [mm])."""
 
-    rings: tuple[_hs._Ring, _hs._Ring]  # one per bearing, in its local frame (their f unused)
+    ring: _hs.Ring  # either bearing, in its local frame
     maps: np.ndarray  # (n, 2, 5, 5): local position per shaft position
     offset: np.ndarray  # (n, 2, 5): local position at v = 0 (the preloaded groove centres)
     f: np.ndarray  # (n, 5) applied [N]
@@ -117,7 +124,7 @@ class _Shaft:
 class _State:
     """Both bearings' balls (high_speed's states, local) and the shaft's forces at v."""
 
-    parts: list[_hs._State]
+    parts: list[_hs.BallState]
     gen: np.ndarray  # (n, 5) [N]
     jac: np.ndarray  # (n, 5, 5)
     merit: np.ndarray  # (n,) largest free residual over f_ref (inf: a ball unsolved)
@@ -184,7 +191,7 @@ def solve_pair_high_speed(
     >>> bool((r.bearings[1].ball_loads_outer > r.bearings[1].ball_loads_inner).all())
     True
     """
-    n_rpm, density = _hs._check_speed(speed, ball_density, pitch_diameter)
+    n_rpm, density = _hs.check_speed(speed, ball_density, pitch_diameter)
     wide = np.broadcast_shapes(np.shape(radial_load), n_rpm.shape, density.shape)
     if wide != np.shape(radial_load):
         radial_load = np.broadcast_to(np.asarray(radial_load, dtype=float), wide)
@@ -200,14 +207,13 @@ def solve_pair_high_speed(
                  width=width, cage_angle=cage_angle, speed=n_rpm, ball_diameter=ball_diameter,
                  pitch_diameter=pitch_diameter, f_i=f_i, f_o=f_o, modulus=modulus,
                  poisson=poisson, ball_density=density)  # fmt: skip
-    flat = {k: np.broadcast_to(np.asarray(v, dtype=float), shape).ravel().copy()
-            for k, v in given.items()}  # fmt: skip
+    flat = dict(zip(given, _hs.flat_columns(shape, *given.values()), strict=True))
     flat["cage_angle"] = np.mod(flat["cage_angle"], 360.0)
     sh, geo, v_static = _setup(static, flat, shape)
     with np.errstate(all="ignore"):
         v, st, its, rest = _solve(sh, v_static, flat, static.arrangement != "DT")
         extra = _at_speed(static, rest, shape)
-    return dataclasses.replace(_result(static, sh, geo, flat, shape, (v, st, its)), **extra)
+    return _result(static, sh, geo, flat, shape, (v, st, its, extra))
 
 
 def _at_speed(static: PairDistribution, rest: np.ndarray, shape: tuple[int, ...]) -> dict[str, Any]:
@@ -244,43 +250,20 @@ def _setup(static: PairDistribution, c: dict, shape: tuple[int, ...]) -> tuple[A
     radius = _column(static.bearings[0], "tilt_radius", shape)
     geo = dataclasses.replace(geo, R_i=radius)
     n = radius.size
-    ki, ko = _hs._stiffness_nodes(geo, c["modulus"], c["poisson"])
-    col = [
-        (geo.f_i - 0.5) * geo.D_w,
-        (geo.f_o - 0.5) * geo.D_w,
-        geo.D_w,
-        geo.d_m,
-        c["speed"] * math.pi / 30.0,
-        c["ball_density"] / 1e9 * math.pi / 6.0 * geo.D_w**3,
-    ]
-    ri, ro, dw, dm, omega, mass = (a[:, None] for a in col)
-    b = _hs._Set(ri, ro, dw, dm, omega, mass, ki, ko)
+    b = _hs.ball_set(geo, c["modulus"], c["poisson"], c["speed"], c["ball_density"])
     cos_, sin_, mirror = _comb._directions(z, c["cage_angle"])
     fr, fa, mm, mc, fp = (c[k] for k in ("radial_load", "axial_load", "moment", "moment_cross",
                                          "preload"))  # fmt: skip
     f_ref = np.maximum(_comb._reference_force(fr, fa, mm, mc, radius), fp)
-    ring = _hs._Ring(b, cos_, sin_, geo.A - geo.g, np.zeros((n, 5)), f_ref,
-                     np.zeros((n, 5), dtype=bool), np.ones(n, dtype=bool), geo.A)  # fmt: skip
+    ring = _hs.ring(b, (cos_, sin_), geo, f_ref, np.ones(n, dtype=bool))
     kind = static.arrangement
-    first = -0.5 if kind in ("DB", "DT") else 0.5
-    maps = np.zeros((n, 2, 5, 5))
-    for k, (zk, sigma) in enumerate(((first, 1.0), (-first, 1.0 if kind == "DT" else -1.0))):
-        maps[:, k, 0, 0] = maps[:, k, 1, 1] = 1.0
-        maps[:, k, 0, 3] = maps[:, k, 1, 4] = -zk * c["width"] / radius
-        for i in (2, 3, 4):
-            maps[:, k, i, i] = sigma
+    maps = shaft_maps(signs(kind), levers(kind, c["width"], radius))
     offset = np.zeros((n, 2, 5))
-    offset[:, :, 2] = (geo.A * np.sin(geo.alpha0) + _column(static, "preload_offset", shape))[
-        :, None
-    ]
-    held = np.zeros((n, 5), dtype=bool)
-    held[:, [1, 4]] = (mirror & (mc == 0))[:, None]  # the static pair's symmetries
-    no_moment = (mm == 0) & (mc == 0)
-    held[:, [0, 1, 3, 4]] |= ((fr == 0) & no_moment)[:, None]
-    if kind != "DT":
-        held[:, 2:] |= ((fa == 0) & no_moment)[:, None]
+    at_rest = geo.A * np.sin(geo.alpha0) + _column(static, "preload_offset", shape)
+    offset[:, :, 2] = at_rest[:, None]
+    held = held_components(kind, mirror, (fr, fa, mm, mc))  # the static pair's symmetries
     f = np.stack([fr, np.zeros(n), fa, mm / radius, mc / radius], axis=1)
-    sh = _Shaft((ring, ring), maps, offset, f, f_ref, held)
+    sh = _Shaft(ring, maps, offset, f, f_ref, held)
     pos = [_column(static, k, shape) for k in ("x", "y", "axial", "tilt", "tilt_cross")]
     v_static = np.stack(pos[:3] + [radius * np.deg2rad(t) for t in pos[3:]], axis=1)
     return sh, geo, v_static
@@ -296,9 +279,9 @@ TOO_LIGHT_PAIR = "too_light_pair_dynamics"
 def _solve(sh: _Shaft, v_static: np.ndarray, flat: dict, rest: bool) -> tuple[Any, ...]:
     """The core's solve (Newton from the static answer, continuation for the cases left; with
     ``rest`` the shaft centred too); the checks. Returns (v, state, iterations, rest (n, 2))."""
-    shaft = (sh.maps, sh.offset, sh.f, sh.held)
-    limits = [ITERATIONS, CONTINUATION_STAGES, 1, 1 if rest else 0]
-    v, parts, out = _hs.core_solve(sh.rings[0], shaft, limits, v_static, v_static, True)
+    shaft = (sh.maps, sh.offset, sh.f, sh.held.view(np.uint8))
+    limits = np.array([ITERATIONS, CONTINUATION_STAGES, 1, 1 if rest else 0], dtype=float)
+    v, parts, out = _hs.core_solve(sh.ring, shaft, limits, v_static, v_static, True)
     st = _State(
         parts,
         out[:, :5].copy(),
@@ -335,10 +318,11 @@ def _solve(sh: _Shaft, v_static: np.ndarray, flat: dict, rest: bool) -> tuple[An
 
 def _result(static: PairDistribution, sh: _Shaft, geo: Any, flat: dict, shape: tuple[int, ...],
             out: tuple[Any, ...]) -> PairHighSpeedDistribution:  # fmt: skip
-    """The static pair's fields with the shaft's position, each bearing at speed, the tangent."""
+    """The static pair's fields with the shaft's position, each bearing at speed, the tangent;
+    ``out`` = (v, state, iterations, the extra fields)."""
     from bearingload import numerics
 
-    v, st, its = out
+    v, st, its, extra = out
     z = int(static.bearings[0].balls)
     radius = geo.R_i
     one_sided = np.ones(radius.size, dtype=bool)
@@ -350,11 +334,24 @@ def _result(static: PairDistribution, sh: _Shaft, geo: Any, flat: dict, shape: t
     for k in range(2):
         p = st.parts[k]
         local = {"speed": flat["speed"], "moment": radius * p.gen[:, 3]}
-        r = _hs._result(static.bearings[k], shape, z, geo, local,
-                        flat["ball_density"].reshape(shape),
-                        (sh.rings[k], _local(sh, k, v), p, its), one_sided, None)  # fmt: skip
         radial = np.where(sh.held[:, 0], 0.0, np.hypot(p.gen[:, 0], p.gen[:, 1]))
-        bearings.append(dataclasses.replace(r, load=case(radial), axial_load=case(p.gen[:, 2])))
+        answer = (sh.ring, _local(sh, k, v), p, its)
+        density = flat["ball_density"].reshape(shape)
+        bearings.append(
+            _hs.bearing_result(
+                static.bearings[k],
+                shape,
+                z,
+                geo,
+                local,
+                density,
+                answer,
+                one_sided,
+                None,
+                load=case(radial),
+                axial_load=case(p.gen[:, 2]),
+            )
+        )
     lever = np.stack([np.ones_like(radius)] * 3 + [radius, radius], axis=1)
     tangent = st.jac * lever[:, :, None] * lever[:, None, :]
     # at speed 0 the static pair's matrix (the same tangent, from the static solve)
@@ -370,5 +367,5 @@ def _result(static: PairDistribution, sh: _Shaft, geo: Any, flat: dict, shape: t
         residual=case(st.merit),
         iterations=case(np.asarray(static.iterations).ravel() + its, np.int64),
     )  # fmt: skip
-    return PairHighSpeedDistribution(**fields, speed=case(flat["speed"]),
-                                     ball_density=case(flat["ball_density"]))  # fmt: skip
+    fields.update(speed=case(flat["speed"]), ball_density=case(flat["ball_density"]), **extra)
+    return PairHighSpeedDistribution(**fields)
