@@ -442,28 +442,6 @@ def private_reads(modules: dict[str, tuple[Path, bool]] | None = None) -> set[tu
 #: read). The list may only shrink: a new read fails the first test below, a read removed fails
 #: the second until its entry goes too.
 KNOWN_PRIVATE_READS = {
-    ("models.combined", "models._combined_ring._fast"),
-    ("models.combined", "models._combined_ring._two_sum"),
-    ("models.high_speed", "models.combined._NODE_COS"),
-    ("models.high_speed", "models.combined._NODE_W"),
-    ("models.high_speed", "models.combined._NODE_X"),
-    ("models.high_speed", "models.combined._angular_geometry"),
-    ("models.high_speed", "models.combined._directions"),
-    ("models.high_speed", "models.combined._geometry"),
-    ("models.high_speed", "models.combined._locks"),
-    ("models.high_speed", "models.combined._reference_force"),
-    ("models.pair", "models.combined._NODE_W"),
-    ("models.pair", "models.combined._NODE_X"),
-    ("models.pair", "models.combined._StiffnessCurve"),
-    ("models.pair", "models.combined._angular_geometry"),
-    ("models.pair", "models.combined._check_scale"),
-    ("models.pair", "models.combined._directions"),
-    ("models.pair", "models.combined._hertz_setup"),
-    ("models.pair", "models.combined._reference_force"),
-    ("models.pair", "models.combined._result"),
-    ("models.pair_speed", "models.combined._angular_geometry"),
-    ("models.pair_speed", "models.combined._directions"),
-    ("models.pair_speed", "models.combined._reference_force"),
     ("models.pair_speed", "models.high_speed._Ring"),
     ("models.pair_speed", "models.high_speed._Set"),
     ("models.pair_speed", "models.high_speed._State"),
@@ -491,10 +469,10 @@ def test_the_known_private_reads_are_all_still_there():
 
 
 def test_the_private_read_walk_sees_both_forms(tmp_path):
-    """``from module import _name`` and ``module_alias._name`` (pair.py reads combined's set-up
-    through ``from bearingload.models import combined as _comb``)."""
+    """``from module import _name`` and ``module_alias._name`` (pair_speed.py reads the speed model's ring
+    through ``from bearingload.models import high_speed as _hs``)."""
     reads = {_short(r) for r in private_reads()}
-    assert ("models.pair", "models.combined._hertz_setup") in reads  # alias._name
+    assert ("models.pair_speed", "models.high_speed._Ring") in reads  # alias._name
     (tmp_path / "a.py").write_text("_hidden = 1\n", encoding="utf-8")
     (tmp_path / "b.py").write_text("from bearingload.x.a import _hidden\n", encoding="utf-8")
     modules = {

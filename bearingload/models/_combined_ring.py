@@ -64,14 +64,14 @@ X, Y, AX, T, TC = range(5)
 # ------------------------------------------------------------------------ double-double pieces
 
 
-def _two_sum(a: Any, b: Any) -> tuple[Any, Any]:
+def two_sum(a: Any, b: Any) -> tuple[Any, Any]:
     """a + b as an unevaluated sum s + e, exactly (Knuth)."""
     s = a + b
     bb = s - a
     return s, (a - (s - bb)) + (b - bb)
 
 
-def _fast(s: Any, e: Any) -> tuple[Any, Any]:
+def fast_two_sum(s: Any, e: Any) -> tuple[Any, Any]:
     """Renormalise s + e (|s| >= |e|) to a double-double."""
     hi = s + e
     return hi, e - (hi - s)
@@ -93,7 +93,7 @@ def _two_prod(a: Any, b: Any, bs: tuple[Any, Any] | None = None) -> tuple[Any, A
 
 def _dd_mul(ah: Any, al: Any, bh: Any, bl: Any) -> tuple[Any, Any]:
     p, e = _two_prod(ah, bh)
-    return _fast(p, e + (ah * bl + al * bh))
+    return fast_two_sum(p, e + (ah * bl + al * bh))
 
 
 # ------------------------------------------------------------------------------- the problem
@@ -133,7 +133,7 @@ class Problem:
         s = np.where(np.abs(s) < 1e-15, 0.0, s)
         a_hat = big_a / scale
         pre = np.maximum(-g, 0.0) / scale
-        b_hi, b_lo = _two_sum(a_hat, pre)
+        b_hi, b_lo = two_sum(a_hat, pre)
         t_imp = rest.pop("t_imp") / scale
         rest.setdefault("one_sided", np.zeros(np.shape(scale), dtype=bool))
         return Problem(z, c, s, scale, a_hat, pre, np.maximum(g, 0.0) / scale, b_hi, b_lo,
@@ -196,34 +196,34 @@ def reference(p: Problem, vh: np.ndarray, vl: np.ndarray) -> Balls:
     col = [(vh[:, i, None], vl[:, i, None]) for i in range(5)]
     r1 = _two_prod(col[X][0], p.c, (c_hi, c_lo))
     r2 = _two_prod(col[Y][0], p.s, (s_hi, s_lo))
-    r, e = _two_sum(r1[0], r2[0])
-    m, e2 = _two_sum(r, -p.gap[:, None])
-    m_hi, m_lo = _fast(m, e2 + e + r1[1] + r2[1] + col[X][1] * p.c + col[Y][1] * p.s)
-    n_hi, e = _two_sum(m_hi, 2.0 * p.b_hi[:, None])
-    n_hi, n_lo = _fast(n_hi, e + m_lo + 2.0 * p.b_lo[:, None])
-    t_hi, t_lo = _two_sum(col[T][0], p.t_imp[:, None])
+    r, e = two_sum(r1[0], r2[0])
+    m, e2 = two_sum(r, -p.gap[:, None])
+    m_hi, m_lo = fast_two_sum(m, e2 + e + r1[1] + r2[1] + col[X][1] * p.c + col[Y][1] * p.s)
+    n_hi, e = two_sum(m_hi, 2.0 * p.b_hi[:, None])
+    n_hi, n_lo = fast_two_sum(n_hi, e + m_lo + 2.0 * p.b_lo[:, None])
+    t_hi, t_lo = two_sum(col[T][0], p.t_imp[:, None])
     u1 = _two_prod(t_hi, p.c, (c_hi, c_lo))
     u2 = _two_prod(col[TC][0], p.s, (s_hi, s_lo))
-    u, e = _two_sum(col[AX][0], u1[0])
-    u, e2 = _two_sum(u, u2[0])
+    u, e = two_sum(col[AX][0], u1[0])
+    u, e2 = two_sum(u, u2[0])
     tail = e + e2 + u1[1] + u2[1] + col[AX][1] + (t_lo + col[T][1]) * p.c + col[TC][1] * p.s
-    u_hi, u_lo = _fast(u, tail)
+    u_hi, u_lo = fast_two_sum(u, tail)
     ud = u_hi + u_lo
     if p.one_sided.any():  # angular contact: the ball sees max(u, 0) (module notes)
         cut = p.one_sided[:, None] & (u_hi < 0)
         u_hi, u_lo = np.where(cut, 0.0, u_hi), np.where(cut, 0.0, u_lo)
     mn = _dd_mul(m_hi, m_lo, n_hi, n_lo)
     uu = _dd_mul(u_hi, u_lo, u_hi, u_lo)
-    d2, e = _two_sum(mn[0], uu[0])
+    d2, e = two_sum(mn[0], uu[0])
     d2 = d2 + (e + mn[1] + uu[1])
-    rho, e = _two_sum(p.b_hi[:, None], m_hi)
+    rho, e = two_sum(p.b_hi[:, None], m_hi)
     rho = rho + (e + p.b_lo[:, None] + m_lo)
     up = u_hi + u_lo
     d = np.hypot(np.maximum(rho, 0.0), up)
     b = p.b_hi[:, None]
     # at the groove edge (rho <= 0) d = |u|: |u| - B from the double-double u, not from ud
     sign = np.where(u_hi < 0, -1.0, 1.0)
-    edge, e = _two_sum(sign * u_hi, -b)
+    edge, e = two_sum(sign * u_hi, -b)
     edge = edge + (e + sign * u_lo - p.b_lo[:, None])
     eps = np.where(rho > 0, d2 / (d + b), edge)
     return Balls(rho, ud, d, eps, up)

@@ -125,7 +125,7 @@ cdef inline double norm(double a, double b) noexcept nogil:
 
 cdef inline double curve_kappa(const Case *cs, double ca, double cam1) noexcept nogil:
     """K(alpha)/K_0 - 1 = (c - 1) D(c), D the barycentric Chebyshev interpolant of the divided
-    difference at the nodes (bearingload.models.combined._StiffnessCurve); 0 at a constant K.
+    difference at the nodes (bearingload.models.combined.StiffnessCurve); 0 at a constant K.
     (Its 24 quotients are independent: faster than Clenshaw's serial recurrence.)"""
     cdef double t, term, num = 0.0, den = 0.0
     cdef int k
@@ -295,7 +295,7 @@ cdef int hertz_curve(const double *geo, const double *node_x, double *k0,
                      double *values) noexcept nogil:
     """K_0 = K(alpha = 0) and the divided differences ``(K(c)/K_0 - 1)/(c - 1)`` at the nodes
     ``c = (x + 1)/2`` of one geometry ``geo`` = (D_w, d_m, f_i, f_o, E, nu)
-    (combined._hertz_setup); 0 where hertz.py would refuse or not converge."""
+    (combined.hertz_setup); 0 where hertz.py would refuse or not converge."""
     cdef double nu = geo[5], e_star, c, k
     cdef int i
     if not (nu > -1.0 and nu <= 0.5):
@@ -1389,7 +1389,7 @@ cdef bint ball_directions(int z, double cage, double snap, double *c, double *s)
     """cos and sin of every ball's angle (ball j at ``cage + 360° j/z``), and whether the case
     is symmetric about the load line (the cage within ``snap`` of 0 or half a pitch): then the
     directions exactly mirrored, ball j at (k_j / z) turns, k_j = j + first + (0 or 1/2), the
-    angle folded onto [0, 180°] before its cosine is taken (combined._directions says why)."""
+    angle folded onto [0, 180°] before its cosine is taken (combined.ball_directions says why)."""
     cdef double pitch = 360.0 / z, frac, first, k, folded, rad = cage * (PI / 180.0)
     cdef bint half, mirror
     cdef int j

@@ -297,7 +297,7 @@ def groove_geometry(
     >>> round(float(A), 4), round(float(a0), 4), round(float(sa), 5)
     (0.575, 7.5614, 0.15133)
     """
-    geo = _geometry(
+    geo = ring_geometry(
         validate.positive("ball_diameter", ball_diameter, "mm"),
         validate.positive("pitch_diameter", pitch_diameter, "mm"),
         *validate.each_finite(f_i=f_i, f_o=f_o, clearance=clearance),
@@ -310,7 +310,7 @@ def groove_geometry(
     )
 
 
-def _geometry(dw: Any, dm: Any, fi: Any, fo: Any, clearance: Any) -> _Geometry:
+def ring_geometry(dw: Any, dm: Any, fi: Any, fo: Any, clearance: Any) -> _Geometry:
     """The geometry of finite arrays (:func:`bearingload.validate.finite`), refused where it
     is not one of a deep-groove ball bearing."""
     for name, value in (("ball_diameter", dw), ("pitch_diameter", dm)):
@@ -575,7 +575,7 @@ def solve_combined(
     named["contact_angle"] = np.zeros(()) if angular is None else angular
     shape, flat = _cases(named | ({} if k_given is None else {"stiffness": k_given}))
     fr, fa, mm, tilt_deg, cage, e, nu, mc, dw, dm, fi, fo, gr, alpha_d = flat[:14]
-    geo = _geometry(dw, dm, fi, fo, gr) if angular is None else _angular_geometry(dw, dm, fi, fo, alpha_d)  # fmt: skip
+    geo = ring_geometry(dw, dm, fi, fo, gr) if angular is None else angular_geometry(dw, dm, fi, fo, alpha_d)  # fmt: skip
     validate.ball_spacing(z, geo.D_w, geo.d_m)  # (z balls must fit on the pitch circle)
     if tilt_radius is not None:
         radius = validate.positive("tilt_radius", tilt_radius, "mm")
@@ -585,21 +585,21 @@ def solve_combined(
         _check_one_sided_moment(z, cage, fa, (mm, mc), geo.R_i, misalignment is not None)
     curve = None
     if k_given is None:
-        k_ref, values = _hertz_setup(geo, e, nu)
-        curve = _StiffnessCurve(values)
+        k_ref, values = hertz_setup(geo, e, nu)
+        curve = StiffnessCurve(values)
     else:
         k_ref = flat[14]
-    f_ref = _reference_force(fr, fa, mm, mc, geo.R_i)
+    f_ref = reference_force(fr, fa, mm, mc, geo.R_i)
     if (f_ref <= 0).any():
         raise InputError("radial_load", "give a radial load, an axial load or a moment")
-    _check_scale(
+    check_scale(
         f_ref, k_ref, geo.A, angular is not None, lambda: load_sizes(fr, fa, mm, mc, geo.R_i)
     )
     if angular is not None:
         _check_angular_scale(f_ref, k_ref, geo.A, (fr, fa, np.hypot(mm, mc) / geo.R_i))
     t_imp = geo.R_i * np.deg2rad(tilt_deg)  # [mm]
-    c, s, mirror = _directions(z, cage)
-    held, imposed = _locks(z, mirror, (fr, fa, mm, mc), t_imp, misalignment is not None)
+    c, s, mirror = ball_directions(z, cage)
+    held, imposed = symmetry_locks(z, mirror, (fr, fa, mm, mc), t_imp, misalignment is not None)
     f = np.zeros((fr.shape[0], 5))
     f[:, 0], f[:, 2], f[:, 3], f[:, 4] = fr, fa, mm / geo.R_i, mc / geo.R_i
     f /= f_ref[:, None]
@@ -620,7 +620,7 @@ def solve_combined(
             checked,
             physical_tangent(problem, geo, tangent[0], mirror & (mc == 0)),
         )
-        return _result(problem, geo, answer, shape, given, misalignment, flags)
+        return distribution(problem, geo, answer, shape, given, misalignment, flags)
 
 
 def call_balls(balls: Any) -> int:
@@ -646,7 +646,7 @@ def _cases(named: dict[str, np.ndarray]) -> tuple[tuple[int, ...], list[np.ndarr
     return arrays[0].shape, [a.ravel() for a in arrays]
 
 
-def _equilibrium(p: Problem, geo: _Geometry, curve: _StiffnessCurve | None, given: dict) -> tuple:
+def _equilibrium(p: Problem, geo: _Geometry, curve: StiffnessCurve | None, given: dict) -> tuple:
     """Every case solved (:func:`_thrust_retry`), a tilt the loads do not determine taken at
     its least (:func:`_least_norm_tilt`): as :func:`_solve_with_stiffness`, and which cases'
     tilts are undetermined. A case whose stiffness updates run out raises ConvergenceError
@@ -736,8 +736,8 @@ def _move_along(
     wh, wl = vh[one], vl[one]
     step = s * vec[:, 0] * ~p.locked[i]
     for _ in range(4):
-        hi, lo = _ring._two_sum(wh, step[None, :])
-        wh, wl = _ring._fast(hi, lo + wl)
+        hi, lo = _ring.two_sum(wh, step[None, :])
+        wh, wl = _ring.fast_two_sum(hi, lo + wl)
         moved = _ring.Point.at(sub, kappa[one], _ring.reference(sub, wh, wl))
         if moved.res[0] <= TOLERANCE:
             vh[one], vl[one] = wh, wl
@@ -776,11 +776,11 @@ def _least_tilt_step(p: Problem, i: int, end: _ring.Point, v: np.ndarray, d: np.
     return float(np.clip(best, lower + margin, upper - margin))
 
 
-def _angular_geometry(dw: Any, dm: Any, fi: Any, fo: Any, alpha_deg: np.ndarray) -> _Geometry:
+def angular_geometry(dw: Any, dm: Any, fi: Any, fo: Any, alpha_deg: np.ndarray) -> _Geometry:
     """The deep-groove geometry whose free contact angle is the design angle alpha_0 [°]:
     ``G_r = 2A (1 - cos alpha_0) = 4A sin^2(alpha_0/2)``, alpha_0 kept as given."""
     big_a = (fi + fo - 1.0) * dw
-    geo = _geometry(dw, dm, fi, fo, 4.0 * big_a * np.sin(np.deg2rad(alpha_deg) / 2.0) ** 2)
+    geo = ring_geometry(dw, dm, fi, fo, 4.0 * big_a * np.sin(np.deg2rad(alpha_deg) / 2.0) ** 2)
     alpha0 = np.deg2rad(alpha_deg)  # as given, not through the arcsine
     return dataclasses.replace(geo, alpha0=alpha0, R_i=dm / 2.0 + (fi - 0.5) * dw * np.cos(alpha0))
 
@@ -924,7 +924,7 @@ def _check_few_balls(z: int, cage: np.ndarray, loads: tuple[np.ndarray, ...], lo
 GEOMETRY_RATIO_MAX = 2e7
 
 
-def _reference_force(
+def reference_force(
     fr: np.ndarray, fa: np.ndarray, mm: np.ndarray, mc: np.ndarray, lever: np.ndarray
 ) -> np.ndarray:
     """The largest of F_r, |F_a| and the moments over the tilt lever, per case. [N]"""
@@ -938,7 +938,7 @@ def _reference_force(
     return f_ref
 
 
-def _check_scale(
+def check_scale(
     f_ref: np.ndarray,
     k_ref: np.ndarray,
     big_a: np.ndarray,
@@ -1041,7 +1041,7 @@ def _check_angular_scale(
         )
 
 
-def _directions(z: int, cage: np.ndarray) -> tuple[np.ndarray, np.ndarray, np.ndarray]:
+def ball_directions(z: int, cage: np.ndarray) -> tuple[np.ndarray, np.ndarray, np.ndarray]:
     """cos and sin of every ball's angle (n, z), and which cases are symmetric about the load
     line (n,): a cage at 0 or half a pitch, within the radial engine's snap (rounding); the
     compiled core's ``directions``.
@@ -1057,7 +1057,7 @@ def _directions(z: int, cage: np.ndarray) -> tuple[np.ndarray, np.ndarray, np.nd
     return _core.directions(z, np.ascontiguousarray(cage, dtype=float), SYMMETRY_SNAP_DEG)
 
 
-def _locks(
+def symmetry_locks(
     z: int, mirror: np.ndarray, loads: tuple[np.ndarray, ...], t_imp: np.ndarray, imposed: bool
 ) -> tuple[np.ndarray, np.ndarray]:
     """Which of (x, y, a, t, t_c) each case holds: (held (n, 5), imposed (n, 5)).
@@ -1081,7 +1081,7 @@ def _locks(
     return held, (held & _TILT) if imposed else np.zeros((n, 5), dtype=bool)
 
 
-#: The components (x, y, a, t, t_c) held by each symmetry of :func:`_locks`: about the load
+#: The components (x, y, a, t, t_c) held by each symmetry of :func:`symmetry_locks`: about the load
 #: line, across the mid-plane, the z-fold one; and the tilt. [-]
 _ACROSS = np.array([False, True, False, False, True])
 _AXIAL = np.array([False, False, True, True, True])
@@ -1099,7 +1099,7 @@ STAGE = 3.0
 
 
 def _light_start(
-    p: Problem, geo: _Geometry, curve: _StiffnessCurve | None
+    p: Problem, geo: _Geometry, curve: StiffnessCurve | None
 ) -> tuple[np.ndarray, np.ndarray]:
     """The light angular-contact cases (ratio A/(F/K)^(2/3) above LIGHT_RATIO) and their starts
     (rows, (rows, 5)): the answer of the same case (the same load directions, misalignment and
@@ -1134,7 +1134,7 @@ def _light_start(
         t_imp=p.t_imp[rows] * p.scale[rows], locked=p.locked[rows], imposed=p.imposed[rows],
         f_ref=f_ref, k_ref=p.k_ref[rows], one_sided=p.one_sided[rows],
     )  # fmt: skip
-    own = None if curve is None else _StiffnessCurve(curve.values[rows])
+    own = None if curve is None else StiffnessCurve(curve.values[rows])
     vh, vl, *_, failed = _solve_with_stiffness(heavy, sub, own, strict=False)
     v = (vh + vl) * (heavy.scale / p.scale[rows])[:, None]
     kept = ~failed  # (a start only: where the heavier case fails, the standard one stays)
@@ -1154,7 +1154,7 @@ THRUST_STAGE_MIN = 1.01
 THRUST_STAGES_MAX = 200
 
 
-def _thrust_retry(p: Problem, geo: _Geometry, curve: _StiffnessCurve | None) -> tuple:
+def _thrust_retry(p: Problem, geo: _Geometry, curve: StiffnessCurve | None) -> tuple:
     """:func:`_solve_with_stiffness` of ``p``, with the angular-contact cases that did not
     converge (residual above ACCEPT), under F_r and 0 < F_a < THRUST_RATIO F_r, solved
     again by :func:`_thrust_path`, each alone; a case keeps its first answer (and so its
@@ -1186,7 +1186,7 @@ def _thrust_retry(p: Problem, geo: _Geometry, curve: _StiffnessCurve | None) -> 
     )  # fmt: skip
     for i in rows.tolist():
         one = np.array([i])
-        own = None if curve is None else _StiffnessCurve(curve.values[one])
+        own = None if curve is None else StiffnessCurve(curve.values[one])
         got = _thrust_path(p.take(one), _geo_take(geo, one), own)
         if got is None:
             continue
@@ -1205,11 +1205,11 @@ def _put_row(got: tuple, i: int, again: tuple) -> None:
     tangent[1][0][i], tangent[1][1][i] = again[5][1][0][0], again[5][1][1][0]
 
 
-def _solve_row(q: Problem, geo: _Geometry, curve: _StiffnessCurve | None, i: int) -> tuple:
+def _solve_row(q: Problem, geo: _Geometry, curve: StiffnessCurve | None, i: int) -> tuple:
     """Case ``i``'s problem ``q`` (one row, changed by the caller) solved alone with its own
     geometry and stiffness curve (:func:`_solve_with_stiffness`)."""
     one = np.array([i])
-    own = None if curve is None else _StiffnessCurve(curve.values[one])
+    own = None if curve is None else StiffnessCurve(curve.values[one])
     return _solve_with_stiffness(q, _geo_take(geo, one), own)
 
 
@@ -1223,7 +1223,7 @@ def _solve_row(q: Problem, geo: _Geometry, curve: _StiffnessCurve | None, i: int
 NEGLIGIBLE_THRUST = 1e-12
 
 
-def _neglect_thrust(p: Problem, geo: _Geometry, curve: _StiffnessCurve | None, got: tuple) -> Any:
+def _neglect_thrust(p: Problem, geo: _Geometry, curve: StiffnessCurve | None, got: tuple) -> Any:
     """The cases of ``got`` (as :func:`_thrust_retry` returns them, updated in place) left
     unbalanced with a thrust below :data:`NEGLIGIBLE_THRUST` of their largest load, solved
     each alone with that share as its thrust (``p.f`` then holds it); which cases those are
@@ -1253,7 +1253,7 @@ NEAR_SYMMETRIC_DEG = 1e-9
 
 
 def _near_symmetric(
-    p: Problem, geo: _Geometry, curve: _StiffnessCurve | None, got: tuple, cage: np.ndarray
+    p: Problem, geo: _Geometry, curve: StiffnessCurve | None, got: tuple, cage: np.ndarray
 ) -> None:
     """The cases of ``got`` (updated in place) left unbalanced with a cage within
     :data:`NEAR_SYMMETRIC_DEG` of a symmetric position and no moment across the load line,
@@ -1274,7 +1274,7 @@ def _near_symmetric(
         p.c[i], p.s[i], p.locked[i] = c[0], s[0], q.locked[0]
 
 
-def _thrust_path(q: Problem, geo: _Geometry, curve: _StiffnessCurve | None) -> tuple | None:
+def _thrust_path(q: Problem, geo: _Geometry, curve: StiffnessCurve | None) -> tuple | None:
     """One case (``q`` of one row) solved by the continuation in the thrust of
     :func:`_thrust_retry`: the answer (as :func:`_solve_with_stiffness`, the iterations of
     every stage summed) at its own F_a, or None where a stage at THRUST_RATIO F_r, or one whose
@@ -1314,19 +1314,19 @@ def _geo_take(geo: _Geometry, rows: np.ndarray) -> _Geometry:
 
 #: Chebyshev nodes of the stiffness curve (first kind) on [-1, 1], their barycentric weights
 #: and cos(alpha) at each. [-]
-_NODES = 24
-_NODE_THETA = (2.0 * np.arange(_NODES) + 1.0) * np.pi / (2.0 * _NODES)
-_NODE_X = np.cos(_NODE_THETA)
-_NODE_W = np.where(np.arange(_NODES) % 2 == 0, 1.0, -1.0) * np.sin(_NODE_THETA)
-_NODE_COS = (_NODE_X + 1.0) / 2.0
+NODES = 24
+NODE_THETA = (2.0 * np.arange(NODES) + 1.0) * np.pi / (2.0 * NODES)
+NODE_X = np.cos(NODE_THETA)
+NODE_W = np.where(np.arange(NODES) % 2 == 0, 1.0, -1.0) * np.sin(NODE_THETA)
+NODE_COS = (NODE_X + 1.0) / 2.0
 #: Distinct geometries whose Hertz set-up the speed model (:mod:`bearingload.models.high_speed`)
 #: keeps across calls, the least recently used dropped first. [-]
 SETUP_CACHE_SIZE = 256
 
 
-def _hertz_setup(geo: _Geometry, e: np.ndarray, nu: np.ndarray) -> tuple[np.ndarray, np.ndarray]:
+def hertz_setup(geo: _Geometry, e: np.ndarray, nu: np.ndarray) -> tuple[np.ndarray, np.ndarray]:
     """Per case, K_0 = K(alpha = 0) [N/mm^1.5] (n,) and the divided differences ``D(c) = (K(c)/
-    K_0 - 1)/(c - 1)`` at the nodes of :class:`_StiffnessCurve` (n, NODES), in the compiled core
+    K_0 - 1)/(c - 1)`` at the nodes of :class:`StiffnessCurve` (n, NODES), in the compiled core
     (``hertz_curves``: the scalar path of :func:`bearingload.contact.hertz.ball_stiffness`, the
     same bits, per case; a case of the geometry of the case before it takes its values). A
     geometry the core cannot set up goes through the vectorised path of ``ball_stiffness``,
@@ -1338,15 +1338,15 @@ def _hertz_setup(geo: _Geometry, e: np.ndarray, nu: np.ndarray) -> tuple[np.ndar
     params = np.empty((geo.D_w.shape[0], 6))
     for i, column in enumerate((geo.D_w, geo.d_m, geo.f_i, geo.f_o, e, nu)):
         params[:, i] = column
-    k0, values, bad = _core.hertz_curves(params, _NODE_X)
+    k0, values, bad = _core.hertz_curves(params, NODE_X)
     for i in np.flatnonzero(bad).tolist():
         dw, dm, fi, fo, ee, nn = params[i]
-        k = ball_stiffness(dw, dm / np.append(_NODE_COS, 1.0), fi, fo, ee, nn).ball
-        k0[i], values[i] = k[-1], (k[:-1] / k[-1] - 1.0) / (_NODE_COS - 1.0)
+        k = ball_stiffness(dw, dm / np.append(NODE_COS, 1.0), fi, fo, ee, nn).ball
+        k0[i], values[i] = k[-1], (k[:-1] / k[-1] - 1.0) / (NODE_COS - 1.0)
     return k0, values
 
 
-class _StiffnessCurve:
+class StiffnessCurve:
     """K(alpha)/K_0 - 1 of each case's geometry, from a Chebyshev interpolant in cos(alpha).
 
     ``K`` depends on the angle only through ``c = cos(alpha)`` in the curvature sums, smoothly
@@ -1358,12 +1358,12 @@ class _StiffnessCurve:
     against :func:`ball_stiffness_at`. One Hertz evaluation per node and distinct geometry.
     """
 
-    NODES = _NODES
+    NODES = NODES
 
     def __init__(self, values: np.ndarray) -> None:
-        """``values``: D at the nodes over each case's K_0, (n, NODES) (:func:`_hertz_setup`)."""
-        self.x = _NODE_X
-        self.w = _NODE_W
+        """``values``: D at the nodes over each case's K_0, (n, NODES) (:func:`hertz_setup`)."""
+        self.x = NODE_X
+        self.w = NODE_W
         self.values = values
 
     def __call__(self, idx: np.ndarray, cos_alpha: np.ndarray, cos_m1: np.ndarray) -> np.ndarray:
@@ -1376,7 +1376,7 @@ class _StiffnessCurve:
 def _solve_with_stiffness(
     p: Problem,
     geo: _Geometry,
-    curve: _StiffnessCurve | None,
+    curve: StiffnessCurve | None,
     v0: np.ndarray | None = None,
     strict: bool = True,
 ) -> tuple[Any, ...]:
@@ -1407,7 +1407,7 @@ def _solve_with_stiffness(
           (p.a_hat, p.pre, p.gap, p.b_hi, p.b_lo, p.t_imp, p.f)),
         np.ascontiguousarray(p.locked, dtype=np.uint8),
         np.ascontiguousarray(p.one_sided, dtype=np.uint8),
-        np.ascontiguousarray(values, dtype=float), _NODE_X, _NODE_W,
+        np.ascontiguousarray(values, dtype=float), NODE_X, NODE_W,
         np.ascontiguousarray(start0, dtype=float), given,
         max_iterations=_ring.MAX_ITERATIONS, first_stage_steps=_ring.FIRST_STAGE_STEPS,
     )  # fmt: skip
@@ -1523,7 +1523,7 @@ def physical_tangent(
     return _physical(p, geo, tangent.copy(), mirrored)
 
 
-def _result(
+def distribution(
     p: Problem,
     geo: _Geometry,
     answer: tuple[Any, ...],

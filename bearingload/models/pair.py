@@ -208,8 +208,8 @@ def _solve_stages(pp: _Pair, v0: np.ndarray, curve: Any) -> tuple[Any, ...]:
         *(np.ascontiguousarray(a, dtype=float) for a in floats),
         np.ascontiguousarray(pp.held, dtype=np.uint8),
         np.ascontiguousarray(values, dtype=float),
-        _comb._NODE_X,
-        _comb._NODE_W,
+        _comb.NODE_X,
+        _comb.NODE_W,
         np.ascontiguousarray(v0, dtype=float),
     )
     q0 = np.where(p.deviation, p.pre * np.sqrt(p.pre), 0.0)
@@ -389,7 +389,7 @@ def _solve(z: int, kind: str, c: dict, shape: tuple[int, ...]) -> PairDistributi
     """The pair of the flat, checked cases ``c``."""
     from bearingload.models import _core
 
-    geo = _comb._angular_geometry(c["ball_diameter"], c["pitch_diameter"], c["f_i"], c["f_o"],
+    geo = _comb.angular_geometry(c["ball_diameter"], c["pitch_diameter"], c["f_i"], c["f_o"],
                                   c["contact_angle"])  # fmt: skip
     if "tilt_radius" in c:
         geo = _replace_radius(geo, c["tilt_radius"])
@@ -397,11 +397,11 @@ def _solve(z: int, kind: str, c: dict, shape: tuple[int, ...]) -> PairDistributi
     if "stiffness" in c:
         k_ref = c["stiffness"]
     else:
-        k_ref, values = _comb._hertz_setup(geo, c["modulus"], c["poisson"])
-        curve = _comb._StiffnessCurve(values)
+        k_ref, values = _comb.hertz_setup(geo, c["modulus"], c["poisson"])
+        curve = _comb.StiffnessCurve(values)
     fr, fa, mm, mc, fp = (c[k] for k in ("radial_load", "axial_load", "moment", "moment_cross",
                                          "preload"))  # fmt: skip
-    f_ref = np.maximum(_comb._reference_force(fr, fa, mm, mc, geo.R_i), fp)
+    f_ref = np.maximum(_comb.reference_force(fr, fa, mm, mc, geo.R_i), fp)
     if (f_ref <= 0).any():
         raise InputError("radial_load", "give a radial load, an axial load, a moment or a preload")
 
@@ -410,7 +410,7 @@ def _solve(z: int, kind: str, c: dict, shape: tuple[int, ...]) -> PairDistributi
         return {"preload": fp} | _comb.load_sizes(fr, fa, mm, mc, geo.R_i)
 
     try:
-        _comb._check_scale(f_ref, k_ref, geo.A, sizes=sizes)
+        _comb.check_scale(f_ref, k_ref, geo.A, sizes=sizes)
     except InputError as exc:  # its advice (the radial solver) does not apply to a pair
         if exc.reason not in (_comb.TOO_LIGHT, _comb.TOO_LIGHT_ANGULAR):
             raise
@@ -421,7 +421,7 @@ def _solve(z: int, kind: str, c: dict, shape: tuple[int, ...]) -> PairDistributi
             f"the preload is {float(np.min(f_ref)):.3g} N; it takes at least {f_min:.2g} N for "
             "this bearing)",
         ) from exc
-    cos_, sin_, mirror = _comb._directions(z, c["cage_angle"])
+    cos_, sin_, mirror = _comb.ball_directions(z, c["cage_angle"])
     n = fr.size
     f = np.zeros((n, 5))
     f[:, 0], f[:, 2], f[:, 3], f[:, 4] = fr, fa, mm / geo.R_i, mc / geo.R_i
@@ -526,7 +526,7 @@ def _result(kind: str, pp: _Pair, geo: Any, answer: tuple[Any, ...], c: dict,
                  "clearance": np.zeros(n),
                  "cage_angle": c["cage_angle"]}  # fmt: skip
         out = (st.local[k], st.kappa[k], its, (st.balls[k], lo, gen), tangent)
-        bearings.append(_comb._result(p, geo, out, shape, given, None))
+        bearings.append(_comb.distribution(p, geo, out, shape, given, None))
         phys = maps[:, k].copy()
         phys[:, 0, 3] *= radius
         phys[:, 1, 4] *= radius

@@ -239,7 +239,7 @@ def _column(r: Any, name: str, shape: tuple[int, ...]) -> np.ndarray:
 def _setup(static: PairDistribution, c: dict, shape: tuple[int, ...]) -> tuple[Any, ...]:
     """The shaft problem at the static pair's answer: (shaft, geometry, its position)."""
     z = int(static.bearings[0].balls)
-    geo = _comb._angular_geometry(c["ball_diameter"], c["pitch_diameter"], c["f_i"], c["f_o"],
+    geo = _comb.angular_geometry(c["ball_diameter"], c["pitch_diameter"], c["f_i"], c["f_o"],
                                   c["contact_angle"])  # fmt: skip
     radius = _column(static.bearings[0], "tilt_radius", shape)
     geo = dataclasses.replace(geo, R_i=radius)
@@ -255,10 +255,10 @@ def _setup(static: PairDistribution, c: dict, shape: tuple[int, ...]) -> tuple[A
     ]
     ri, ro, dw, dm, omega, mass = (a[:, None] for a in col)
     b = _hs._Set(ri, ro, dw, dm, omega, mass, ki, ko)
-    cos_, sin_, mirror = _comb._directions(z, c["cage_angle"])
+    cos_, sin_, mirror = _comb.ball_directions(z, c["cage_angle"])
     fr, fa, mm, mc, fp = (c[k] for k in ("radial_load", "axial_load", "moment", "moment_cross",
                                          "preload"))  # fmt: skip
-    f_ref = np.maximum(_comb._reference_force(fr, fa, mm, mc, radius), fp)
+    f_ref = np.maximum(_comb.reference_force(fr, fa, mm, mc, radius), fp)
     ring = _hs._Ring(b, cos_, sin_, geo.A - geo.g, np.zeros((n, 5)), f_ref,
                      np.zeros((n, 5), dtype=bool), np.ones(n, dtype=bool), geo.A)  # fmt: skip
     kind = static.arrangement
