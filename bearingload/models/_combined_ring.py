@@ -51,8 +51,11 @@ from bearingload.models._core import (  # noqa: F401
     MAX_ITERATIONS,
     ROUNDING,
     TOLERANCE,
+    Status,
 )
 
+#: The status of a case the core solved. [-]
+OK = int(Status.OK)
 #: Largest relative residual accepted at the end (above it the caller raises). [-]
 ACCEPT = 1e-8
 #: Dekker's splitting constant 2^27 + 1 (exact products of doubles). [-]
@@ -312,7 +315,7 @@ def residual_of(f: np.ndarray, gen: np.ndarray, size: np.ndarray, held: np.ndarr
     grad = np.where(held, 0.0, gen - f)
     ref = np.maximum(np.abs(f), (ROUNDING / TOLERANCE) * size)
     ref = np.where(f == 0, np.maximum(ref, FLOOR), ref)
-    return np.max(np.abs(grad) / ref, axis=1)
+    return np.maximum.reduce(np.abs(grad) / ref, axis=1)
 
 
 # ----------------------------------------------------------------------------------- points

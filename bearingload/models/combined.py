@@ -331,7 +331,7 @@ def ring_geometry(dw: Any, dm: Any, fi: Any, fo: Any, clearance: Any) -> _Geomet
             "would leave the grooves axially",
         )
     # cos(alpha0) = 1 - g/A; alpha0 = 2 asin(sqrt(g/(2A))) keeps the digits of a small g
-    alpha0 = 2.0 * np.arcsin(np.sqrt(np.clip(g / (2.0 * A), 0.0, 1.0)))
+    alpha0 = 2.0 * np.arcsin(np.sqrt(np.where(g > 0, g / (2.0 * A), 0.0)))  # (g < A here)
     R_i = dm / 2.0 + (fi - 0.5) * dw * np.cos(alpha0)
     return _Geometry(dw, dm, fi, fo, A, g, alpha0, R_i)
 
@@ -652,9 +652,13 @@ def _equilibrium(p: Problem, geo: _Geometry, curve: StiffnessCurve | None, given
     tilts are undetermined. A case whose stiffness updates run out raises ConvergenceError
     naming its inputs (``given``)."""
     try:
-        vh, vl, kappa, its, end, tangent = _thrust_retry(p, geo, curve)
-        neglected = _neglect_thrust(p, geo, curve, (vh, vl, kappa, its, end, tangent))
-        _near_symmetric(p, geo, curve, (vh, vl, kappa, its, end, tangent), given["cage_angle"])
+        got = _solve_with_stiffness(p, geo, curve)
+        neglected = np.zeros(p.f.shape[0], dtype=bool)
+        if not (_ring.residual(p, got[4].gen, got[4].size, p.imposed) <= ACCEPT).all():
+            got = _thrust_retry(p, geo, curve, got)  # (each retry needs an unbalanced case)
+            neglected = _neglect_thrust(p, geo, curve, got)
+            _near_symmetric(p, geo, curve, got, given["cage_angle"])
+        vh, vl, kappa, its, end, tangent = got
     except ConvergenceError as exc:
         rows = np.asarray(exc.cases["rows"])
         raise ConvergenceError(
@@ -1123,6 +1127,8 @@ def _light_start(
     single precision, the far balls' approaches, 1e-2 at a ratio of 8e6, would be lost); it is
     a function of the case alone (each case is solved alone), and whatever its residual, the
     light case is solved and checked as any other."""
+    if not p.one_sided.any():
+        return np.zeros(0, dtype=np.int64), np.zeros((0, 5))
     rows = np.flatnonzero(p.one_sided & (p.a_hat > LIGHT_RATIO))
     if not rows.size:
         return rows, np.zeros((0, 5))
@@ -1154,8 +1160,8 @@ THRUST_STAGE_MIN = 1.01
 THRUST_STAGES_MAX = 200
 
 
-def _thrust_retry(p: Problem, geo: _Geometry, curve: StiffnessCurve | None) -> tuple:
-    """:func:`_solve_with_stiffness` of ``p``, with the angular-contact cases that did not
+def _thrust_retry(p: Problem, geo: _Geometry, curve: StiffnessCurve | None, got: tuple) -> tuple:
+    """``got``, :func:`_solve_with_stiffness` of ``p``, with the angular-contact cases that did not
     converge (residual above ACCEPT), under F_r and 0 < F_a < THRUST_RATIO F_r, solved
     again by :func:`_thrust_path`, each alone; a case keeps its first answer (and so its
     ConvergenceError) where that does not converge either. Only such cases are touched: a case
@@ -1175,7 +1181,7 @@ def _thrust_retry(p: Problem, geo: _Geometry, curve: StiffnessCurve | None) -> t
     u_j < 0, the loads 30 times F_r), while 2.26 N and 4.5 N solve at once. At F_a =
     THRUST_RATIO F_r more balls carry load and the standard start converges; each stage starts
     from the answer of the one before, nearly the same ring position."""
-    vh, vl, kappa, total, end, tangent = _solve_with_stiffness(p, geo, curve)
+    vh, vl, kappa, total, end, tangent = got
     if not p.one_sided.any():
         return vh, vl, kappa, total, end, tangent
     res = _ring.residual(p, end.gen, end.size, p.imposed)
@@ -1187,10 +1193,9 @@ def _thrust_retry(p: Problem, geo: _Geometry, curve: StiffnessCurve | None) -> t
     for i in rows.tolist():
         one = np.array([i])
         own = None if curve is None else StiffnessCurve(curve.values[one])
-        got = _thrust_path(p.take(one), _geo_take(geo, one), own)
-        if got is None:
-            continue
-        _put_row((vh, vl, kappa, total, end, tangent), i, got)
+        again = _thrust_path(p.take(one), _geo_take(geo, one), own)
+        if again is not None:
+            _put_row((vh, vl, kappa, total, end, tangent), i, again)
     return vh, vl, kappa, total, end, tangent
 
 
@@ -1412,7 +1417,7 @@ def _solve_with_stiffness(
         max_iterations=_ring.MAX_ITERATIONS, first_stage_steps=_ring.FIRST_STAGE_STEPS,
     )  # fmt: skip
     balls, gen, size, res = at
-    failed = status != _core.Status.OK
+    failed = status != _ring.OK
     if strict and failed.any():  # the cases by their rows: the caller names their inputs
         raise ConvergenceError(
             "combined-load ball stiffness update",
