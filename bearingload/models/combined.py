@@ -103,6 +103,7 @@ above 1e-8 raise :class:`~bearingload.errors.ConvergenceError`, naming their inp
 from __future__ import annotations
 
 import dataclasses
+import functools
 import math
 from collections.abc import Callable
 from dataclasses import dataclass
@@ -699,6 +700,8 @@ def _least_norm_tilt(
     vh, vl = v
     holding, maybe = held
     undetermined = np.zeros(vh.shape[0], dtype=bool)
+    if not maybe.any():
+        return vh, vl, end, undetermined
     rows = np.flatnonzero(maybe & np.any(~p.locked[:, 3:], axis=1))
     if not rows.size:
         return vh, vl, end, undetermined
@@ -964,11 +967,10 @@ def check_scale(
             f"{float(np.max(scale)):.3g} mm, beyond 1e100 mm; check the units of the loads, "
             "the modulus and the tilt lever",
         )
-    bad = np.broadcast_to(big_a, scale.shape) / scale > GEOMETRY_RATIO_MAX
+    a = big_a if np.shape(big_a) == scale.shape else np.broadcast_to(big_a, scale.shape)
+    bad = a / scale > GEOMETRY_RATIO_MAX
     if bad.any():
-        f_min = float(
-            np.max(k_ref * (np.broadcast_to(big_a, scale.shape) / GEOMETRY_RATIO_MAX) ** 1.5)
-        )
+        f_min = float(np.max(k_ref * (a / GEOMETRY_RATIO_MAX) ** 1.5))
         step = 10.0 ** (math.floor(math.log10(f_min)) - 1)  # shown to 2 digits, rounded up
         f_min = math.ceil(f_min / step * (1 - 1e-12)) * step
         raise InputError(
@@ -1028,7 +1030,7 @@ def _check_angular_scale(
 ) -> None:
     """Refuse loads so large against an angular-contact bearing's groove geometry A that its
     one-sided equilibrium is not solved reliably (see :data:`ANGULAR_RATIO_MIN`)."""
-    a = np.broadcast_to(big_a, f_ref.shape)
+    a = big_a if np.shape(big_a) == f_ref.shape else np.broadcast_to(big_a, f_ref.shape)
     with np.errstate(over="ignore", divide="ignore"):
         bad = a / (f_ref / k_ref) ** (2.0 / 3.0) < ANGULAR_RATIO_MIN
     if bad.any():
@@ -1077,20 +1079,15 @@ def symmetry_locks(
     fr, fa, mm, mc = loads
     n = fr.shape[0]
     no_tilt = (mm == 0) & (mc == 0) & (t_imp == 0)
-    held = np.zeros((n, 5), dtype=bool)
-    held[:, 3] = imposed
-    held |= (mirror & (mc == 0))[:, None] & _ACROSS
-    held |= ((fa == 0) & no_tilt)[:, None] & _AXIAL
-    held |= ((fr == 0) & no_tilt & (z >= 2))[:, None] & _RADIAL
-    return held, (held & _TILT) if imposed else np.zeros((n, 5), dtype=bool)
-
-
-#: The components (x, y, a, t, t_c) held by each symmetry of :func:`symmetry_locks`: about the load
-#: line, across the mid-plane, the z-fold one; and the tilt. [-]
-_ACROSS = np.array([False, True, False, False, True])
-_AXIAL = np.array([False, False, True, True, True])
-_RADIAL = np.array([True, True, False, True, True])
-_TILT = np.array([False, False, False, True, False])
+    across, axial = mirror & (mc == 0), (fa == 0) & no_tilt
+    radial = (fr == 0) & no_tilt if z >= 2 else np.zeros(n, dtype=bool)
+    held = np.empty((n, 5), dtype=bool)
+    held[:, 0], held[:, 1], held[:, 2] = radial, across | radial, axial
+    held[:, 3], held[:, 4] = (axial | radial) | imposed, across | axial | radial
+    fixed = np.zeros((n, 5), dtype=bool)
+    if imposed:
+        fixed[:, 3] = True
+    return held, fixed
 
 
 #: An angular-contact case whose groove-centre distance A exceeds LIGHT_RATIO times its one-ball
@@ -1425,7 +1422,7 @@ def _solve_with_stiffness(
             float(np.max(res[failed])),
             {"rows": np.flatnonzero(failed)},
         )
-    q0 = np.where(p.deviation, p.pre * np.sqrt(p.pre), 0.0)
+    q0 = p.pre * np.sqrt(p.pre) if p.z >= 2 else np.zeros(n)  # (p^1.5 = 0 without preload)
     loads = _ring.Loads(*balls[5:], q0)  # type: ignore[call-arg]
     point = _ring.Point(_ring.Balls(*balls[:5]), loads, gen, size, res, np.zeros(n, np.int64))
     if not strict:
@@ -1528,6 +1525,14 @@ def physical_tangent(
     return _physical(p, geo, tangent.copy(), mirrored)
 
 
+@functools.lru_cache(maxsize=64)
+def _pitch_angles(z: int) -> np.ndarray:
+    """360 j/z [°] for the balls j of a ring of ``z`` (read only)."""
+    angles = 360.0 * np.arange(z) / z
+    angles.flags.writeable = False
+    return angles
+
+
 def distribution(
     p: Problem,
     geo: _Geometry,
@@ -1554,7 +1559,7 @@ def distribution(
         return a.reshape(shape + (z,))
 
     cage = given["cage_angle"]
-    phi = np.mod(cage[:, None] + 360.0 * np.arange(z) / z, 360.0)
+    phi = np.mod(cage[:, None] + _pitch_angles(z), 360.0)
     return CombinedDistribution(
         balls=z,
         load=case(given["radial_load"]),
