@@ -45,6 +45,7 @@ from typing import Any
 import numpy as np
 
 # the tolerances are the compiled core's (one copy; its module says why each)
+from bearingload.models import _core
 from bearingload.models._core import (  # noqa: F401
     FIRST_STAGE_STEPS,
     FLOOR,
@@ -102,6 +103,14 @@ def _dd_mul(ah: Any, al: Any, bh: Any, bl: Any) -> tuple[Any, Any]:
 # ------------------------------------------------------------------------------- the problem
 
 
+def _cases_of(value: Any, scale: np.ndarray) -> np.ndarray:
+    """``value`` (one per case, or one for all) as a contiguous float array of the cases (n,)."""
+    arr = np.ascontiguousarray(value, dtype=float)
+    return (
+        arr if arr.shape == scale.shape else np.ascontiguousarray(np.broadcast_to(arr, scale.shape))
+    )
+
+
 @dataclass(frozen=True)
 class Problem:
     """The scaled problem of n cases (every array has the cases on its first axis)."""
@@ -129,18 +138,13 @@ class Problem:
         """``directions`` = cos, sin of the ball angles (n, z); ``lengths`` = (A, G_r/2) [mm];
         ``rest``: f, t_imp [mm], locked, imposed, f_ref, k_ref, optionally one_sided (n,) bool
         (default none: deep groove; the scale s = (F/K)^(2/3) follows)."""
-        big_a, g = lengths
         scale = (rest["f_ref"] / rest["k_ref"]) ** (2.0 / 3.0)
-        c, s = directions
-        c = np.where(np.abs(c) < 1e-15, 0.0, c)
-        s = np.where(np.abs(s) < 1e-15, 0.0, s)
-        a_hat = big_a / scale
-        pre = np.maximum(-g, 0.0) / scale
-        b_hi, b_lo = two_sum(a_hat, pre)
-        t_imp = rest.pop("t_imp") / scale
+        c, s, (a_hat, pre, gap, b_hi, b_lo, t_imp) = _core.scaled_problem(
+            *(np.ascontiguousarray(v, dtype=float) for v in directions),
+            *(_cases_of(v, scale) for v in (*lengths, scale, rest.pop("t_imp"))),
+        )
         rest.setdefault("one_sided", np.zeros(np.shape(scale), dtype=bool))
-        return Problem(z, c, s, scale, a_hat, pre, np.maximum(g, 0.0) / scale, b_hi, b_lo,
-                       t_imp=t_imp, **rest)  # fmt: skip
+        return Problem(z, c, s, scale, a_hat, pre, gap, b_hi, b_lo, t_imp=t_imp, **rest)
 
     def take(self, idx: np.ndarray) -> Problem:
         """The cases ``idx`` only."""
@@ -312,10 +316,10 @@ def residual(p: Problem, gen: np.ndarray, size: np.ndarray, held: np.ndarray) ->
 def residual_of(f: np.ndarray, gen: np.ndarray, size: np.ndarray, held: np.ndarray) -> np.ndarray:
     """:func:`residual` of the applied forces ``f`` (n, 5) (the cases of a problem, taken or
     not)."""
-    grad = np.where(held, 0.0, gen - f)
-    ref = np.maximum(np.abs(f), (ROUNDING / TOLERANCE) * size)
-    ref = np.where(f == 0, np.maximum(ref, FLOOR), ref)
-    return np.maximum.reduce(np.abs(grad) / ref, axis=1)
+    return _core.residuals(
+        *(np.ascontiguousarray(v, dtype=float) for v in (f, gen, size)),
+        np.ascontiguousarray(held, dtype=np.uint8),
+    )
 
 
 # ----------------------------------------------------------------------------------- points

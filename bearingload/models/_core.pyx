@@ -1424,6 +1424,72 @@ def directions(int z, const double[::1] cage, double snap):
     return c_a, s_a, mirror_a
 
 
+def scaled_problem(const double[:, ::1] c, const double[:, ::1] s, const double[::1] big_a,
+                   const double[::1] g, const double[::1] scale, const double[::1] t_imp):
+    """The scaled problem of n cases (_combined_ring.Problem.make): the ball directions ``c``,
+    ``s`` (n, z) with those below 1e-15 made 0, and A, p = max(-g, 0), max(g, 0), B = A + p in
+    double-double (Knuth's two-sum) and the imposed tilt ``t_imp``, each over ``scale`` (n,)."""
+    cdef Py_ssize_t n = c.shape[0], z = c.shape[1], k, j
+    c_a, s_a = np.empty((n, z)), np.empty((n, z))
+    out_a = np.empty((6, n))
+    cdef double[:, ::1] c2 = c_a, s2 = s_a, out = out_a
+    cdef double a, p, hi, bb
+    with nogil:
+        for k in range(n):
+            for j in range(z):
+                c2[k, j] = 0.0 if fabs(c[k, j]) < 1e-15 else c[k, j]
+                s2[k, j] = 0.0 if fabs(s[k, j]) < 1e-15 else s[k, j]
+            a = big_a[k] / scale[k]
+            p = (-g[k] if -g[k] > 0.0 else 0.0) / scale[k]
+            hi = a + p
+            bb = hi - a
+            out[0, k], out[1, k], out[2, k] = a, p, (g[k] if g[k] > 0.0 else 0.0) / scale[k]
+            out[3, k], out[4, k] = hi, (a - (hi - bb)) + (p - bb)
+            out[5, k] = t_imp[k] / scale[k]
+    return c_a, s_a, out_a
+
+
+def locks(int z, const unsigned char[::1] mirror, const double[::1] fr, const double[::1] fa,
+          const double[::1] mm, const double[::1] mc, const double[::1] t_imp, bint imposed):
+    """Which of (x, y, a, t, t_c) each of n cases holds (combined.symmetry_locks says why):
+    (held, fixed) (n, 5) bool each; ``mirror`` (n,) uint8, the loads and the imposed tilt (n,)."""
+    cdef Py_ssize_t n = fr.shape[0], k
+    held_a = np.empty((n, 5), dtype=np.uint8)
+    fixed_a = np.zeros((n, 5), dtype=np.uint8)
+    cdef unsigned char[:, ::1] held = held_a, fixed = fixed_a
+    cdef bint no_tilt, across, axial, radial
+    with nogil:
+        for k in range(n):
+            no_tilt = mm[k] == 0 and mc[k] == 0 and t_imp[k] == 0
+            across = mirror[k] and mc[k] == 0
+            axial = fa[k] == 0 and no_tilt
+            radial = fr[k] == 0 and no_tilt and z >= 2
+            held[k, 0], held[k, 1], held[k, 2] = radial, across or radial, axial
+            held[k, 3], held[k, 4] = axial or radial or imposed, across or axial or radial
+            fixed[k, 3] = imposed
+    return held_a.view(bool), fixed_a.view(bool)
+
+
+def residuals(const double[:, ::1] f, const double[:, ::1] gen, const double[:, ::1] size,
+              const unsigned char[:, ::1] held):
+    """Per case (n,), the largest residual of the forces ``gen`` against the applied ``f`` of
+    a component not ``held``, over its load or its terms' rounding level (``size``), at least
+    FLOOR without a load; NaN if any is (``residual``; _combined_ring.residual_of)."""
+    cdef Py_ssize_t n = f.shape[0], k
+    cdef int i
+    out_a = np.empty(n)
+    cdef double[::1] out = out_a
+    cdef Case cs
+    cs.lim = LIMITS
+    with nogil:
+        for k in range(n):
+            for i in range(5):
+                cs.f[i] = f[k, i]
+                cs.locked[i] = held[k, i]
+            out[k] = residual(&cs, &gen[k, 0], &size[k, 0])
+    return out_a
+
+
 cdef void store(const Work *wk, int z, double *kappa, double *balls, Py_ssize_t stride,
                 double *gen, double *size, double *res) noexcept nogil:
     """A case's answer into the outputs: its stiffness deviations, the 13 ball arrays of its

@@ -313,28 +313,43 @@ def groove_geometry(
 
 def ring_geometry(dw: Any, dm: Any, fi: Any, fo: Any, clearance: Any) -> _Geometry:
     """The geometry of finite arrays (:func:`bearingload.validate.finite`), refused where it
-    is not one of a deep-groove ball bearing."""
-    for name, value in (("ball_diameter", dw), ("pitch_diameter", dm)):
-        if not (value > 0).all():
-            validate.positive(name, value, "mm")  # (raises, naming the value)
+    is not one of a deep-groove ball bearing (one case: checked as floats)."""
     g = clearance / 2.0
-    if (dw >= dm).any():
-        raise InputError("ball_diameter", "must be smaller than the pitch diameter")
-    low, high = validate.CONFORMITY_RANGE
-    for name, f in (("f_i", fi), ("f_o", fo)):
-        if not ((f > low) & (f < high)).all():
-            validate.conformity(name, f)  # (raises, naming the value)
     A = (fi + fo - 1.0) * dw
-    if (g >= A).any():
+    each = (dw, dm, fi, fo, g, A)
+    if A.size == dm.size == g.size == 1:
+        each = tuple(v.item() for v in each)
+    fits = _fits(*each)
+    if not (fits if isinstance(fits, bool) else fits.all()):
+        _refuse_geometry(dw, dm, fi, fo, g >= A)
+    # cos(alpha0) = 1 - g/A; alpha0 = 2 asin(sqrt(g/(2A))) keeps the digits of a small g
+    alpha0 = 2.0 * np.arcsin(np.sqrt(np.where(g > 0, g / (2.0 * A), 0.0)))  # (g < A here)
+    R_i = dm / 2.0 + (fi - 0.5) * dw * np.cos(alpha0)
+    return _Geometry(dw, dm, fi, fo, A, g, alpha0, R_i)
+
+
+def _fits(dw: Any, dm: Any, fi: Any, fo: Any, g: Any, big_a: Any) -> Any:
+    """Where the groove geometry is one of a deep-groove ball bearing (floats or arrays)."""
+    low, high = validate.CONFORMITY_RANGE
+    conform = (fi > low) & (fi < high) & (fo > low) & (fo < high)
+    return (dw > 0) & (dm > 0) & (dw < dm) & conform & (g < big_a)
+
+
+def _refuse_geometry(dw: Any, dm: Any, fi: Any, fo: Any, out: Any) -> None:
+    """InputError naming the first parameter of a geometry that does not fit (:func:`_fits`);
+    ``out``: where the clearance is too large."""
+    for name, value in (("ball_diameter", dw), ("pitch_diameter", dm)):
+        validate.positive(name, value, "mm")
+    if np.any(dw >= dm):
+        raise InputError("ball_diameter", "must be smaller than the pitch diameter")
+    validate.conformity("f_i", fi)
+    validate.conformity("f_o", fo)
+    if np.any(out):
         raise InputError(
             "clearance",
             "must be smaller than 2 (f_i + f_o - 1) D_w, the clearance at which the ball "
             "would leave the grooves axially",
         )
-    # cos(alpha0) = 1 - g/A; alpha0 = 2 asin(sqrt(g/(2A))) keeps the digits of a small g
-    alpha0 = 2.0 * np.arcsin(np.sqrt(np.where(g > 0, g / (2.0 * A), 0.0)))  # (g < A here)
-    R_i = dm / 2.0 + (fi - 0.5) * dw * np.cos(alpha0)
-    return _Geometry(dw, dm, fi, fo, A, g, alpha0, R_i)
 
 
 def ball_stiffness_at(
@@ -1076,18 +1091,10 @@ def symmetry_locks(
     a radial load, moment or tilt (the ring's z-fold symmetry, z >= 2). The potential is convex
     and has the symmetry, so a minimum with these components 0 exists.
     """
-    fr, fa, mm, mc = loads
-    n = fr.shape[0]
-    no_tilt = (mm == 0) & (mc == 0) & (t_imp == 0)
-    across, axial = mirror & (mc == 0), (fa == 0) & no_tilt
-    radial = (fr == 0) & no_tilt if z >= 2 else np.zeros(n, dtype=bool)
-    held = np.empty((n, 5), dtype=bool)
-    held[:, 0], held[:, 1], held[:, 2] = radial, across | radial, axial
-    held[:, 3], held[:, 4] = (axial | radial) | imposed, across | axial | radial
-    fixed = np.zeros((n, 5), dtype=bool)
-    if imposed:
-        fixed[:, 3] = True
-    return held, fixed
+    from bearingload.models import _core
+
+    each = (np.ascontiguousarray(v, dtype=float) for v in (*loads, t_imp))
+    return _core.locks(z, np.ascontiguousarray(mirror, dtype=np.uint8), *each, imposed)
 
 
 #: An angular-contact case whose groove-centre distance A exceeds LIGHT_RATIO times its one-ball
@@ -1547,7 +1554,17 @@ def distribution(
     undetermined, neglected = (None, None) if flags is None else flags
     v, kappa, its, (b, lo, gen), tangent = answer
     q = p.f_ref[:, None] * lo.q
-    t = v[:, 3] + p.t_imp
+    w = v.copy()  # x, y, a, t, t_c [mm], the tilts then over the lever [rad]
+    w[:, 3] += p.t_imp
+    w *= p.scale[:, None]
+    w[:, 3:] /= geo.R_i[:, None]
+    sin0 = np.sin(geo.alpha0)
+    play, axial = 2.0 * geo.A * sin0, w[:, 2]
+    if p.one_sided.any():  # measured from the zero-load position, no play
+        play, axial = (
+            np.where(p.one_sided, 0.0, play),
+            axial - np.where(p.one_sided, geo.A * sin0, 0.0),
+        )
     mm = given["moment"]
     moment = geo.R_i * p.f_ref * gen[:, 3] if misalignment is not None else mm
     z = p.z
@@ -1568,12 +1585,12 @@ def distribution(
         clearance=case(given["clearance"]),
         cage_angle=case(cage),
         free_contact_angle=case(np.rad2deg(geo.alpha0)),
-        axial_play=case(np.where(p.one_sided, 0.0, 2.0 * geo.A * np.sin(geo.alpha0))),
-        x=case(v[:, 0] * p.scale),
-        y=case(v[:, 1] * p.scale),
-        axial=case(v[:, 2] * p.scale - np.where(p.one_sided, geo.A * np.sin(geo.alpha0), 0.0)),
-        tilt=case(np.rad2deg(t * p.scale / geo.R_i)),
-        tilt_cross=case(np.rad2deg(v[:, 4] * p.scale / geo.R_i)),
+        axial_play=case(play),
+        x=case(w[:, 0]),
+        y=case(w[:, 1]),
+        axial=case(axial),
+        tilt=case(np.rad2deg(w[:, 3])),
+        tilt_cross=case(np.rad2deg(w[:, 4])),
         ball_angles=ball(phi),
         contact_angles=ball(np.rad2deg(np.arctan2(lo.sa, lo.ca))),
         ball_approaches=ball((p.pre[:, None] + b.eps) * p.scale[:, None]),
