@@ -96,7 +96,8 @@ minimisation repeated until the update leaves the equilibrium. Each case stops w
 every applied component is balanced to 1e-12 of itself (or to the rounding of the sum it is,
 its terms much larger than it); a component held at 0 by a symmetry of the case is exactly 0.
 No case depends on the others of its call, nor on earlier calls: the Hertz set-up of a
-geometry (K_0 and the stiffness curve's nodes) is computed per case in the core. Cases left
+geometry (K_0 and the stiffness curve's nodes) is computed per case in the core (a one-case
+call takes it from the last SETUP_CACHE_SIZE geometries so solved, the same bits). Cases left
 above 1e-8 raise :class:`~bearingload.errors.ConvergenceError`, naming their inputs.
 """
 
@@ -311,9 +312,12 @@ def groove_geometry(
     )
 
 
-def ring_geometry(dw: Any, dm: Any, fi: Any, fo: Any, clearance: Any) -> _Geometry:
+def ring_geometry(
+    dw: Any, dm: Any, fi: Any, fo: Any, clearance: Any, alpha0: Any = None
+) -> _Geometry:
     """The geometry of finite arrays (:func:`bearingload.validate.finite`), refused where it
-    is not one of a deep-groove ball bearing (one case: checked as floats)."""
+    is not one of a deep-groove ball bearing (one case: checked as floats); ``alpha0``: the
+    free contact angle [rad] as given (:func:`angular_geometry`), not that of the clearance."""
     g = clearance / 2.0
     A = (fi + fo - 1.0) * dw
     each = (dw, dm, fi, fo, g, A)
@@ -322,8 +326,8 @@ def ring_geometry(dw: Any, dm: Any, fi: Any, fo: Any, clearance: Any) -> _Geomet
     fits = _fits(*each)
     if not (fits if isinstance(fits, bool) else fits.all()):
         _refuse_geometry(dw, dm, fi, fo, g >= A)
-    # cos(alpha0) = 1 - g/A; alpha0 = 2 asin(sqrt(g/(2A))) keeps the digits of a small g
-    alpha0 = 2.0 * np.arcsin(np.sqrt(np.where(g > 0, g / (2.0 * A), 0.0)))  # (g < A here)
+    if alpha0 is None:  # cos(alpha0) = 1 - g/A; 2 asin(sqrt(g/(2A))) keeps a small g's digits
+        alpha0 = 2.0 * np.arcsin(np.sqrt(np.where(g > 0, g / (2.0 * A), 0.0)))  # (g < A here)
     R_i = dm / 2.0 + (fi - 0.5) * dw * np.cos(alpha0)
     return _Geometry(dw, dm, fi, fo, A, g, alpha0, R_i)
 
@@ -802,9 +806,8 @@ def angular_geometry(dw: Any, dm: Any, fi: Any, fo: Any, alpha_deg: np.ndarray) 
     """The deep-groove geometry whose free contact angle is the design angle alpha_0 [°]:
     ``G_r = 2A (1 - cos alpha_0) = 4A sin^2(alpha_0/2)``, alpha_0 kept as given."""
     big_a = (fi + fo - 1.0) * dw
-    geo = ring_geometry(dw, dm, fi, fo, 4.0 * big_a * np.sin(np.deg2rad(alpha_deg) / 2.0) ** 2)
     alpha0 = np.deg2rad(alpha_deg)  # as given, not through the arcsine
-    return dataclasses.replace(geo, alpha0=alpha0, R_i=dm / 2.0 + (fi - 0.5) * dw * np.cos(alpha0))
+    return ring_geometry(dw, dm, fi, fo, 4.0 * big_a * np.sin(alpha0 / 2.0) ** 2, alpha0)
 
 
 def _angular(contact_angle: Any, fa: np.ndarray, clearance: Any) -> np.ndarray | None:
@@ -1329,8 +1332,11 @@ NODE_X = np.cos(NODE_THETA)
 NODE_W = np.where(np.arange(NODES) % 2 == 0, 1.0, -1.0) * np.sin(NODE_THETA)
 NODE_COS = (NODE_X + 1.0) / 2.0
 #: Distinct geometries whose Hertz set-up the speed model (:mod:`bearingload.models.high_speed`)
-#: keeps across calls, the least recently used dropped first. [-]
+#: and :func:`hertz_setup` of one case keep across calls, the oldest dropped first. [-]
 SETUP_CACHE_SIZE = 256
+#: :func:`hertz_setup` of the last one-case calls, by their six parameters' bits: the values
+#: the core gives that geometry every time, kept so a call on a known bearing skips them.
+_SETUP_CACHE: dict[bytes, tuple[np.ndarray, np.ndarray]] = {}
 
 
 def hertz_setup(geo: _Geometry, e: np.ndarray, nu: np.ndarray) -> tuple[np.ndarray, np.ndarray]:
@@ -1347,11 +1353,18 @@ def hertz_setup(geo: _Geometry, e: np.ndarray, nu: np.ndarray) -> tuple[np.ndarr
     params = np.empty((geo.D_w.shape[0], 6))
     for i, column in enumerate((geo.D_w, geo.d_m, geo.f_i, geo.f_o, e, nu)):
         params[:, i] = column
+    key = params.tobytes() if params.shape[0] == 1 else None
+    if key in _SETUP_CACHE:
+        return tuple(a.copy() for a in _SETUP_CACHE[key])
     k0, values, bad = _core.hertz_curves(params, NODE_X)
     for i in np.flatnonzero(bad).tolist():
         dw, dm, fi, fo, ee, nn = params[i]
         k = ball_stiffness(dw, dm / np.append(NODE_COS, 1.0), fi, fo, ee, nn).ball
         k0[i], values[i] = k[-1], (k[:-1] / k[-1] - 1.0) / (NODE_COS - 1.0)
+    if key is not None:
+        _SETUP_CACHE[key] = (k0.copy(), values.copy())
+        while len(_SETUP_CACHE) > SETUP_CACHE_SIZE:
+            _SETUP_CACHE.pop(next(iter(_SETUP_CACHE)))  # the oldest first
     return k0, values
 
 
