@@ -178,14 +178,6 @@ class Balls:
     eps: np.ndarray  # d - B, to the last digits
     up: np.ndarray  # u' = the axial separation the contact sees: u, or max(u, 0) one-sided
 
-    def take(self, idx: np.ndarray) -> Balls:
-        return Balls(*(getattr(self, k)[idx] for k in _BALL_FIELDS))
-
-    def put(self, mask: np.ndarray, other: Balls) -> Balls:
-        """These balls, with the rows ``mask`` from ``other``."""
-        m = mask[:, None]
-        return Balls(*(np.where(m, getattr(other, k), getattr(self, k)) for k in _BALL_FIELDS))
-
 
 _BALL_FIELDS = ("rho", "u", "d", "eps", "up")
 
@@ -345,10 +337,6 @@ class Point:
         res = residual(q, gen, size, q.locked)
         return Point(b, lo, gen, size, res, np.full(res.shape, age, dtype=np.int64))
 
-    def take(self, rows: np.ndarray) -> Point:
-        return Point(self.b.take(rows), _take_loads(self.lo, rows), self.gen[rows],
-                     self.size[rows], self.res[rows], self.age[rows])  # fmt: skip
-
     def put(self, rows: np.ndarray, other: Point) -> None:
         """Overwrite the rows ``rows`` with ``other`` (in place)."""
         for name in _BALL_FIELDS:
@@ -357,10 +345,6 @@ class Point:
             getattr(self.lo, name)[rows] = getattr(other.lo, name)
         for name in ("gen", "size", "res", "age"):
             getattr(self, name)[rows] = getattr(other, name)
-
-
-def _take_loads(lo: Loads, idx: np.ndarray) -> Loads:
-    return Loads(*(getattr(lo, name)[idx] for name in _LOAD_FIELDS))
 
 
 _LOAD_FIELDS = ("ca", "sa", "cam1", "q", "dq", "root", "tau", "sig", "q0")

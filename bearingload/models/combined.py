@@ -104,7 +104,6 @@ above 1e-8 raise :class:`~bearingload.errors.ConvergenceError`, naming their inp
 from __future__ import annotations
 
 import dataclasses
-import functools
 import math
 from collections.abc import Callable
 from dataclasses import dataclass
@@ -433,25 +432,6 @@ def axial_only(
     validate.broadcast_shape({"axial_load": f, "stiffness": k, "A": big_a, "clearance": g})
     z, f, k, big_a, g = np.broadcast_arrays(z, f, k, big_a, g)
     c = big_a - g  # radial distance of the groove centres
-    lo, hi, approach = _axial_bracket(z, f, k, big_a, g)
-    u = 0.5 * (lo + hi)
-    return (
-        numerics.scalar_out(u),
-        numerics.scalar_out(np.rad2deg(np.arctan2(u, c))),
-        numerics.scalar_out(k * approach(u) ** 1.5),
-    )
-
-
-def _axial_bracket(
-    z: np.ndarray, f: np.ndarray, k: np.ndarray, big_a: np.ndarray, g: np.ndarray,
-    scale: np.ndarray | None = None,
-) -> tuple[np.ndarray, np.ndarray, Any]:  # fmt: skip
-    """Bisection of :func:`axial_only` (arrays of one shape, ``g`` = G_r/2): the bracket (lo,
-    hi) of the axial offset u [mm], each case stopped on its own when it is 4e-16 of u wide or,
-    given ``scale``, when u/scale rounds to the same single-precision number at both ends (then
-    so does the midpoint the full bisection would give: rounding is monotone), and the approach
-    as a function of u."""
-    c = big_a - g  # radial distance of the groove centres
     gap2 = g * (2.0 * big_a - g)  # A^2 - c^2: u^2 at first contact (negative under preload)
     u0 = np.sqrt(np.maximum(gap2, 0.0))
     target = f / (z * k)
@@ -469,19 +449,20 @@ def _axial_bracket(
         if not short.any():
             break
         hi = np.where(short, 2.0 * hi, hi)
-    for _ in range(200):
-        open_ = hi - lo > 4e-16 * hi  # each case stops on its own
-        if scale is not None:
-            top = hi / scale
-            single = (lo / scale).astype(np.float32) == top.astype(np.float32)
-            open_ &= ~(single & (top < 1e30))
+    for _ in range(200):  # bisection, each case stopped when 4e-16 of u wide
+        open_ = hi - lo > 4e-16 * hi
         if not open_.any():
             break
         mid = 0.5 * (lo + hi)
         below = excess(mid) < 0
         lo = np.where(open_ & below, mid, lo)
         hi = np.where(open_ & ~below, mid, hi)
-    return lo, hi, approach
+    u = 0.5 * (lo + hi)
+    return (
+        numerics.scalar_out(u),
+        numerics.scalar_out(np.rad2deg(np.arctan2(u, c))),
+        numerics.scalar_out(k * approach(u) ** 1.5),
+    )
 
 
 def solve_combined(
@@ -1510,22 +1491,6 @@ def _refuse_edge(case: int, ball: int, given: dict) -> None:
     )
 
 
-def _physical(p: Problem, geo: _Geometry, t: np.ndarray, mirrored: np.ndarray) -> np.ndarray:
-    """The scaled tangent ``t`` (n, 5, 5, changed in place) in physical units, the couplings
-    of the mirrored cases and those within the rounding of their sums over the balls exactly 0
-    (the core's ``physical``: ``|K_ab| <= sqrt(K_aa K_bb)`` for this positive semi-definite
-    matrix, so a coupling below 4 z eps of that does not follow the order of the summation)."""
-    from bearingload.models import _core
-
-    radius = np.ascontiguousarray(geo.R_i, dtype=float)
-    if _core.physical(t, p.f_ref / p.scale, radius, mirrored.view(np.uint8), p.z).any():
-        # a lever of 1e300 mm: its square times K overflows
-        raise InputError(
-            "tilt_radius", "is so large that the tilting stiffness (lever^2 K) overflows"
-        )
-    return t
-
-
 def physical_tangent(
     p: Problem, geo: _Geometry, tangent: np.ndarray, mirrored: np.ndarray
 ) -> np.ndarray:
@@ -1541,16 +1506,19 @@ def physical_tangent(
     matrix returned is that tangent, not quite symmetric (its symmetric part is the results'
     ``stiffness_matrix_symmetric``); with a constant ``stiffness`` it is symmetric. In a
     case symmetric about the load line (``mirrored``: the balls and the loads) the couplings of
-    (x, axial, tilt) with (y, tilt_cross) are 0, exactly rather than to rounding."""
-    return _physical(p, geo, tangent.copy(), mirrored)
+    (x, axial, tilt) with (y, tilt_cross) are 0, exactly rather than to rounding, as are the
+    couplings within the rounding of their sums over the balls (the core's ``physical``:
+    ``|K_ab| <= sqrt(K_aa K_bb)`` for this positive semi-definite matrix, so a coupling below 4
+    z eps of that does not follow the order of the summation)."""
+    from bearingload.models import _core
 
-
-@functools.lru_cache(maxsize=64)
-def _pitch_angles(z: int) -> np.ndarray:
-    """360 j/z [°] for the balls j of a ring of ``z`` (read only)."""
-    angles = 360.0 * np.arange(z) / z
-    angles.flags.writeable = False
-    return angles
+    t, radius = tangent.copy(), np.ascontiguousarray(geo.R_i, dtype=float)
+    if _core.physical(t, p.f_ref / p.scale, radius, mirrored.view(np.uint8), p.z).any():
+        # a lever of 1e300 mm: its square times K overflows
+        raise InputError(
+            "tilt_radius", "is so large that the tilting stiffness (lever^2 K) overflows"
+        )
+    return t
 
 
 def distribution(
@@ -1589,7 +1557,7 @@ def distribution(
         return a.reshape(shape + (z,))
 
     cage = given["cage_angle"]
-    phi = np.mod(cage[:, None] + _pitch_angles(z), 360.0)
+    phi = np.mod(cage[:, None] + 360.0 * np.arange(z) / z, 360.0)
     return CombinedDistribution(
         balls=z,
         load=case(given["radial_load"]),
