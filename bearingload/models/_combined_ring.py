@@ -148,13 +148,8 @@ class Problem:
 
     def take(self, idx: np.ndarray) -> Problem:
         """The cases ``idx`` only."""
-        out = {}
-        for field in dataclasses.fields(self):
-            value = getattr(self, field.name)
-            if isinstance(value, np.ndarray):
-                value = value[idx]
-            out[field.name] = value
-        return Problem(**out)
+        items = ((f.name, getattr(self, f.name)) for f in dataclasses.fields(self))
+        return Problem(**{k: v[idx] if isinstance(v, np.ndarray) else v for k, v in items})
 
     @functools.cached_property
     def arms(self) -> np.ndarray:
@@ -263,9 +258,6 @@ def loads(p: Problem, b: Balls, kappa: np.ndarray) -> Loads:
     q = k * pos * root
     dev = p.deviation
     q0 = np.where(dev, p.pre * np.sqrt(p.pre), 0.0)
-    if not dev.any():  # no preload in this call: the deviations are the loads
-        zero = np.zeros_like(q)
-        return Loads(ca, sa, cam1, q, q, root, zero, zero, q0)
     tau = np.where(dev[:, None], b.eps / np.where(pre > 0, pre, 1.0), 0.0)
     sig = tau / (1.0 + np.sqrt(np.maximum(1.0 + tau, 0.0)))
     change = q0[:, None] * np.where(touch, k * (tau + sig + tau * sig) + kappa, -1.0)
@@ -320,22 +312,20 @@ def residual_of(f: np.ndarray, gen: np.ndarray, size: np.ndarray, held: np.ndarr
 @dataclass
 class Point:
     """The balls, loads, generalised forces, term sizes and residual at the positions of some
-    cases (the rows of every array); ``age``: steps taken since :func:`reference` computed the
-    balls (0: fresh)."""
+    cases (the rows of every array)."""
 
     b: Balls
     lo: Loads
     gen: np.ndarray
     size: np.ndarray
     res: np.ndarray
-    age: np.ndarray
 
     @staticmethod
-    def at(q: Problem, kappa: np.ndarray, b: Balls, age: int = 0) -> Point:
+    def at(q: Problem, kappa: np.ndarray, b: Balls) -> Point:
         lo = loads(q, b, kappa)
         gen, size = forces(q, lo)
         res = residual(q, gen, size, q.locked)
-        return Point(b, lo, gen, size, res, np.full(res.shape, age, dtype=np.int64))
+        return Point(b, lo, gen, size, res)
 
     def put(self, rows: np.ndarray, other: Point) -> None:
         """Overwrite the rows ``rows`` with ``other`` (in place)."""
@@ -343,7 +333,7 @@ class Point:
             getattr(self.b, name)[rows] = getattr(other.b, name)
         for name in _LOAD_FIELDS:
             getattr(self.lo, name)[rows] = getattr(other.lo, name)
-        for name in ("gen", "size", "res", "age"):
+        for name in ("gen", "size", "res"):
             getattr(self, name)[rows] = getattr(other, name)
 
 

@@ -669,20 +669,6 @@ cdef void point_on(double *block, int z, Point *pt) noexcept nogil:
     pt.lo.sig = block + 12 * z
 
 
-cdef void copy_point(int z, const Point *src, Point *dst) noexcept nogil:
-    cdef int i
-    cdef double *a = src.b.rho
-    cdef double *b = dst.b.rho
-    for i in range(BALL_ARRAYS * z):
-        b[i] = a[i]
-    for i in range(5):
-        dst.gen[i] = src.gen[i]
-        dst.size[i] = src.size[i]
-    dst.res = src.res
-    dst.age = src.age
-    dst.drop = src.drop
-
-
 ctypedef struct Work:
     Point pt       # the current point
     Point trial    # a line-search trial

@@ -1425,7 +1425,7 @@ def _solve_with_stiffness(
         )
     q0 = p.pre * np.sqrt(p.pre) if p.z >= 2 else np.zeros(n)  # (p^1.5 = 0 without preload)
     loads = _ring.Loads(*balls[5:], q0)  # type: ignore[call-arg]
-    point = _ring.Point(_ring.Balls(*balls[:5]), loads, gen, size, res, np.zeros(n, np.int64))
+    point = _ring.Point(_ring.Balls(*balls[:5]), loads, gen, size, res)
     if not strict:
         return vh, vl, kappa, total, point, (tangent, holding), failed
     return vh, vl, kappa, total, point, (tangent, holding)
