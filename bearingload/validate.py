@@ -258,6 +258,9 @@ def ball_spacing(balls: object, ball_diameter: object, pitch_diameter: object) -
         Ball diameter D_w and pitch diameter d_m, broadcast together. [mm]
     """
     z, dw, dm = (np.asarray(v, dtype=float) for v in (balls, ball_diameter, pitch_diameter))
+    if type(balls) is int and balls >= 2:  # one count: its chord's factor as one number
+        if (dw <= dm * np.sin(np.pi / balls) * (1.0 + 1e-12)).all():
+            return
     chord = dm * np.sin(np.pi / np.maximum(z, 1.0))
     bad = (z >= 2) & ~(dw <= chord * (1.0 + 1e-12))
     if bad.any():  # (broadcast only on the way to the message)

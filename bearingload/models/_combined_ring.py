@@ -111,7 +111,7 @@ def _cases_of(value: Any, scale: np.ndarray) -> np.ndarray:
     )
 
 
-@dataclass(frozen=True)
+@dataclass
 class Problem:
     """The scaled problem of n cases (every array has the cases on its first axis)."""
 

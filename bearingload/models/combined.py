@@ -1450,10 +1450,12 @@ def _checked(p: Problem, end: _ring.Point, its: np.ndarray, given: dict) -> tupl
         )
     # crossed groove centres, or a contact angle that rounds to 90° (a minimum may sit at the
     # edge: there the potential's curvature across the groove ends)
-    edge = (lo.root > 0) & ((b.rho <= 0) | (np.rad2deg(np.arctan2(np.abs(lo.sa), lo.ca)) >= 90.0))
-    if edge.any():
-        case, ball = (int(i[0]) for i in np.nonzero(edge))
-        _refuse_edge(case, ball, given)
+    near = (lo.root > 0) & ((b.rho <= 0) | (lo.ca < 1e-8))  # (elsewhere below 90° - 5e-7°)
+    if near.any():
+        edge = near & ((b.rho <= 0) | (np.rad2deg(np.arctan2(np.abs(lo.sa), lo.ca)) >= 90.0))
+        if edge.any():
+            case, ball = (int(i[0]) for i in np.nonzero(edge))
+            _refuse_edge(case, ball, given)
     return b, lo, gen
 
 
