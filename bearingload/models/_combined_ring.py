@@ -103,14 +103,6 @@ def _dd_mul(ah: Any, al: Any, bh: Any, bl: Any) -> tuple[Any, Any]:
 # ------------------------------------------------------------------------------- the problem
 
 
-def _cases_of(value: Any, scale: np.ndarray) -> np.ndarray:
-    """``value`` (one per case, or one for all) as a contiguous float array of the cases (n,)."""
-    arr = np.ascontiguousarray(value, dtype=float)
-    return (
-        arr if arr.shape == scale.shape else np.ascontiguousarray(np.broadcast_to(arr, scale.shape))
-    )
-
-
 @dataclass
 class Problem:
     """The scaled problem of n cases (every array has the cases on its first axis)."""
@@ -141,7 +133,7 @@ class Problem:
         scale = (rest["f_ref"] / rest["k_ref"]) ** (2.0 / 3.0)
         c, s, (a_hat, pre, gap, b_hi, b_lo, t_imp) = _core.scaled_problem(
             *(np.ascontiguousarray(v, dtype=float) for v in directions),
-            *(_cases_of(v, scale) for v in (*lengths, scale, rest.pop("t_imp"))),
+            *(np.ascontiguousarray(v, dtype=float) for v in (*lengths, scale, rest.pop("t_imp"))),
         )
         rest.setdefault("one_sided", np.zeros(np.shape(scale), dtype=bool))
         return Problem(z, c, s, scale, a_hat, pre, gap, b_hi, b_lo, t_imp=t_imp, **rest)
@@ -287,19 +279,14 @@ def sum_arms(radial: np.ndarray, axial: np.ndarray, arms: np.ndarray) -> np.ndar
     return np.add.reduce(terms, axis=2)
 
 
-def residual(p: Problem, gen: np.ndarray, size: np.ndarray, held: np.ndarray) -> np.ndarray:
-    """Per case, the largest residual of a component not ``held`` (n, 5), each over its applied
-    load or, where larger, the rounding level of its terms (ROUNDING times the sum of their
-    magnitudes) over TOLERANCE: so at most TOLERANCE means each component balanced to 1e-12 of
-    its load, or to the rounding of the sum it is (its terms 100 times the load, say, under an
-    imposed tilt). A component without an applied load is also measured against FLOOR times
-    the largest load (1 scaled): its terms may vanish at the answer with its residual. [-]"""
-    return residual_of(p.f, gen, size, held)
-
-
 def residual_of(f: np.ndarray, gen: np.ndarray, size: np.ndarray, held: np.ndarray) -> np.ndarray:
-    """:func:`residual` of the applied forces ``f`` (n, 5) (the cases of a problem, taken or
-    not)."""
+    """Per case, the largest residual of the forces ``gen`` against the applied ``f`` (n, 5)
+    of a component not ``held``, each over its applied load or, where larger, the rounding
+    level of its terms (ROUNDING times the sum of their magnitudes ``size``) over TOLERANCE: so
+    at most TOLERANCE means each component balanced to 1e-12 of its load, or to the rounding of
+    the sum it is (its terms 100 times the load, say, under an imposed tilt). A component
+    without an applied load is also measured against FLOOR times the largest load (1 scaled):
+    its terms may vanish at the answer with its residual. [-]"""
     return _core.residuals(
         *(np.ascontiguousarray(v, dtype=float) for v in (f, gen, size)),
         np.ascontiguousarray(held, dtype=np.uint8),
@@ -324,7 +311,7 @@ class Point:
     def at(q: Problem, kappa: np.ndarray, b: Balls) -> Point:
         lo = loads(q, b, kappa)
         gen, size = forces(q, lo)
-        res = residual(q, gen, size, q.locked)
+        res = residual_of(q.f, gen, size, q.locked)
         return Point(b, lo, gen, size, res)
 
     def put(self, rows: np.ndarray, other: Point) -> None:

@@ -1435,27 +1435,6 @@ def scaled_problem(const double[:, ::1] c, const double[:, ::1] s, const double[
     return c_a, s_a, out_a
 
 
-def locks(int z, const unsigned char[::1] mirror, const double[::1] fr, const double[::1] fa,
-          const double[::1] mm, const double[::1] mc, const double[::1] t_imp, bint imposed):
-    """Which of (x, y, a, t, t_c) each of n cases holds (combined.symmetry_locks says why):
-    (held, fixed) (n, 5) bool each; ``mirror`` (n,) uint8, the loads and the imposed tilt (n,)."""
-    cdef Py_ssize_t n = fr.shape[0], k
-    held_a = np.empty((n, 5), dtype=np.uint8)
-    fixed_a = np.zeros((n, 5), dtype=np.uint8)
-    cdef unsigned char[:, ::1] held = held_a, fixed = fixed_a
-    cdef bint no_tilt, across, axial, radial
-    with nogil:
-        for k in range(n):
-            no_tilt = mm[k] == 0 and mc[k] == 0 and t_imp[k] == 0
-            across = mirror[k] and mc[k] == 0
-            axial = fa[k] == 0 and no_tilt
-            radial = fr[k] == 0 and no_tilt and z >= 2
-            held[k, 0], held[k, 1], held[k, 2] = radial, across or radial, axial
-            held[k, 3], held[k, 4] = axial or radial or imposed, across or axial or radial
-            fixed[k, 3] = imposed
-    return held_a.view(bool), fixed_a.view(bool)
-
-
 def residuals(const double[:, ::1] f, const double[:, ::1] gen, const double[:, ::1] size,
               const unsigned char[:, ::1] held):
     """Per case (n,), the largest residual of the forces ``gen`` against the applied ``f`` of
@@ -1523,18 +1502,10 @@ def solve(const double[:, ::1] c, const double[:, ::1] s, const double[::1] a_ha
     cdef Py_ssize_t n = c.shape[0], k
     cdef int z = <int> c.shape[1], i
     cdef bint has_curve = curve.shape[1] == NODES
-    vh_a = np.empty((n, 5))
-    vl_a = np.empty((n, 5))
-    kappa_a = np.empty((n, z))
-    its_a = np.empty(n, dtype=np.int64)
-    status_a = np.empty(n, dtype=np.int32)
-    balls_a = np.empty((BALL_ARRAYS, n, z))
-    gen_a = np.empty((n, 5))
-    size_a = np.empty((n, 5))
-    res_a = np.empty(n)
-    flat_a = np.zeros(n, dtype=np.uint8)
-    tangent_a = np.empty((n, 5, 5))
-    holding_a = np.empty((n, 5, 5))
+    vh_a, vl_a, gen_a, size_a = (np.empty((n, 5)) for _ in range(4))
+    kappa_a, balls_a, res_a = np.empty((n, z)), np.empty((BALL_ARRAYS, n, z)), np.empty(n)
+    its_a, status_a = np.empty(n, dtype=np.int64), np.empty(n, dtype=np.int32)
+    tangent_a, holding_a, flat_a = np.empty((n, 5, 5)), np.empty((n, 5, 5)), np.zeros(n, np.uint8)
     cdef double[:, ::1] vh = vh_a, vl = vl_a, kappa = kappa_a
     cdef int64_t[::1] its = its_a
     cdef int[::1] status = status_a
@@ -1549,24 +1520,16 @@ def solve(const double[:, ::1] c, const double[:, ::1] s, const double[::1] a_ha
     cs.lim.fast_steps = first_stage_steps
     with nogil:
         for k in range(n):
-            cs.z = z
-            cs.c = &c[k, 0]
-            cs.s = &s[k, 0]
-            cs.a_hat = a_hat[k]
-            cs.pre = pre[k]
-            cs.gap = gap[k]
-            cs.b_hi = b_hi[k]
-            cs.b_lo = b_lo[k]
-            cs.t_imp = t_imp[k]
+            cs.z, cs.c, cs.s, cs.one_sided = z, &c[k, 0], &s[k, 0], one_sided[k]
+            cs.a_hat, cs.pre, cs.gap, cs.t_imp = a_hat[k], pre[k], gap[k], t_imp[k]
+            cs.b_hi, cs.b_lo = b_hi[k], b_lo[k]
             for i in range(5):
                 cs.f[i] = f[k, i]
                 cs.locked[i] = locked[k, i]
-            cs.one_sided = one_sided[k]
             cs.deviation = cs.pre > 0 and z >= 2
             cs.q0 = cs.pre * sqrt(cs.pre) if cs.deviation else 0.0
             cs.curve = &curve[k, 0] if has_curve else NULL
-            cs.node_x = &node_x[0]
-            cs.node_w = &node_w[0]
+            cs.node_x, cs.node_w = &node_x[0], &node_w[0]
             if not work_open(z, &wk):
                 status[k] = NO_MEMORY
                 continue

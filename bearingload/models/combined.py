@@ -121,8 +121,6 @@ __all__ = ["CombinedDistribution", "solve_combined", "axial_only", "groove_geome
            "ball_stiffness_at", "TOLERANCE", "ACCEPT", "MAX_ITERATIONS"]  # fmt: skip
 #: Stiffness updates (each followed by a minimisation) before ConvergenceError. [-]
 MAX_STIFFNESS_UPDATES = 40
-#: Machine epsilon of a double. [-]
-EPS = float(np.finfo(float).eps)
 
 
 class StiffnessViews:
@@ -319,10 +317,12 @@ def ring_geometry(
     free contact angle [rad] as given (:func:`angular_geometry`), not that of the clearance."""
     g = clearance / 2.0
     A = (fi + fo - 1.0) * dw
-    each = (dw, dm, fi, fo, g, A)
+    d_w, d_m, f_i, f_o, gap, big_a = (dw, dm, fi, fo, g, A)
     if A.size == dm.size == g.size == 1:
-        each = tuple(v.item() for v in each)
-    fits = _fits(*each)
+        d_w, d_m, f_i, f_o, gap, big_a = (v.item() for v in (dw, dm, fi, fo, g, A))
+    low, high = validate.CONFORMITY_RANGE
+    conform = (f_i > low) & (f_i < high) & (f_o > low) & (f_o < high)
+    fits = (d_w > 0) & (d_m > 0) & (d_w < d_m) & conform & (gap < big_a)
     if not (fits if isinstance(fits, bool) else fits.all()):
         _refuse_geometry(dw, dm, fi, fo, g >= A)
     if alpha0 is None:  # cos(alpha0) = 1 - g/A; 2 asin(sqrt(g/(2A))) keeps a small g's digits
@@ -331,16 +331,9 @@ def ring_geometry(
     return _Geometry(dw, dm, fi, fo, A, g, alpha0, R_i)
 
 
-def _fits(dw: Any, dm: Any, fi: Any, fo: Any, g: Any, big_a: Any) -> Any:
-    """Where the groove geometry is one of a deep-groove ball bearing (floats or arrays)."""
-    low, high = validate.CONFORMITY_RANGE
-    conform = (fi > low) & (fi < high) & (fo > low) & (fo < high)
-    return (dw > 0) & (dm > 0) & (dw < dm) & conform & (g < big_a)
-
-
 def _refuse_geometry(dw: Any, dm: Any, fi: Any, fo: Any, out: Any) -> None:
-    """InputError naming the first parameter of a geometry that does not fit (:func:`_fits`);
-    ``out``: where the clearance is too large."""
+    """InputError naming the first parameter of a geometry that does not fit
+    (:func:`ring_geometry`); ``out``: where the clearance is too large."""
     for name, value in (("ball_diameter", dw), ("pitch_diameter", dm)):
         validate.positive(name, value, "mm")
     if np.any(dw >= dm):
@@ -655,7 +648,7 @@ def _equilibrium(p: Problem, geo: _Geometry, curve: StiffnessCurve | None, given
     try:
         got = _solve_with_stiffness(p, geo, curve)
         neglected = np.zeros(p.f.shape[0], dtype=bool)
-        if not (_ring.residual(p, got[4].gen, got[4].size, p.imposed) <= ACCEPT).all():
+        if not (_ring.residual_of(p.f, got[4].gen, got[4].size, p.imposed) <= ACCEPT).all():
             got = _thrust_retry(p, geo, curve, got)  # (each retry needs an unbalanced case)
             neglected = _neglect_thrust(p, geo, curve, got)
             _near_symmetric(p, geo, curve, got, given["cage_angle"])
@@ -1075,10 +1068,17 @@ def symmetry_locks(
     a radial load, moment or tilt (the ring's z-fold symmetry, z >= 2). The potential is convex
     and has the symmetry, so a minimum with these components 0 exists.
     """
-    from bearingload.models import _core
-
-    each = (np.ascontiguousarray(v, dtype=float) for v in (*loads, t_imp))
-    return _core.locks(z, np.ascontiguousarray(mirror, dtype=np.uint8), *each, imposed)
+    fr, fa, mm, mc = loads
+    n = fr.shape[0]
+    no_tilt = (mm == 0) & (mc == 0) & (t_imp == 0)
+    across, axial = mirror & (mc == 0), (fa == 0) & no_tilt
+    radial = (fr == 0) & no_tilt if z >= 2 else np.zeros(n, dtype=bool)
+    held = np.empty((n, 5), dtype=bool)
+    held[:, 0], held[:, 1], held[:, 2] = radial, across | radial, axial
+    held[:, 3], held[:, 4] = (axial | radial) | imposed, across | axial | radial
+    fixed = np.zeros((n, 5), dtype=bool)
+    fixed[:, 3] = imposed
+    return held, fixed
 
 
 #: An angular-contact case whose groove-centre distance A exceeds LIGHT_RATIO times its one-ball
@@ -1172,7 +1172,7 @@ def _thrust_retry(p: Problem, geo: _Geometry, curve: StiffnessCurve | None, got:
     vh, vl, kappa, total, end, tangent = got
     if not p.one_sided.any():
         return vh, vl, kappa, total, end, tangent
-    res = _ring.residual(p, end.gen, end.size, p.imposed)
+    res = _ring.residual_of(p.f, end.gen, end.size, p.imposed)
     f0, f2 = p.f[:, 0], p.f[:, 2]
     rows = np.flatnonzero(
         ~(res <= ACCEPT) & p.one_sided & (f0 > 0) & (f2 > 0) & (f2 < THRUST_RATIO * f0)
@@ -1227,7 +1227,7 @@ def _neglect_thrust(p: Problem, geo: _Geometry, curve: StiffnessCurve | None, go
     if not small.any():
         return neglected
     end = got[4]
-    res = _ring.residual(p, end.gen, end.size, p.imposed)
+    res = _ring.residual_of(p.f, end.gen, end.size, p.imposed)
     for i in np.flatnonzero(small & ~(res <= ACCEPT)).tolist():
         q = p.take(np.array([i]))
         q.f[:, 2] = np.copysign(NEGLIGIBLE_THRUST, f2[i])
@@ -1254,7 +1254,7 @@ def _near_symmetric(
     from bearingload.models import _core
 
     end = got[4]
-    res = _ring.residual(p, end.gen, end.size, p.imposed)
+    res = _ring.residual_of(p.f, end.gen, end.size, p.imposed)
     rows = np.flatnonzero(~(res <= ACCEPT) & (p.f[:, 4] == 0) & ~p.imposed.any(axis=1))
     for i in rows.tolist():
         one = np.array([i])
@@ -1284,7 +1284,9 @@ def _thrust_path(q: Problem, geo: _Geometry, curve: StiffnessCurve | None) -> tu
         stage = dataclasses.replace(q, f=f)
         try:
             got = _solve_with_stiffness(stage, geo, curve, v0)
-            ok = bool(_ring.residual(stage, got[4].gen, got[4].size, stage.imposed)[0] <= ACCEPT)
+            ok = bool(
+                _ring.residual_of(stage.f, got[4].gen, got[4].size, stage.imposed)[0] <= ACCEPT
+            )
             its += int(got[3][0])
         except ConvergenceError:
             ok = False
@@ -1361,8 +1363,6 @@ class StiffnessCurve:
     against :func:`ball_stiffness_at`. One Hertz evaluation per node and distinct geometry.
     """
 
-    NODES = NODES
-
     def __init__(self, values: np.ndarray) -> None:
         """``values``: D at the nodes over each case's K_0, (n, NODES) (:func:`hertz_setup`)."""
         self.x = NODE_X
@@ -1437,7 +1437,7 @@ def _checked(p: Problem, end: _ring.Point, its: np.ndarray, given: dict) -> tupl
     sits at the groove edge (its groove centres crossed, or its contact angle 90° to the
     digits of a double). ``end``: the point at the answer (:func:`_solve_with_stiffness`)."""
     b, lo, gen, size = end.b, end.lo, end.gen, end.size
-    res = _ring.residual(p, gen, size, p.imposed)
+    res = _ring.residual_of(p.f, gen, size, p.imposed)
     bad = ~(res <= ACCEPT)
     if bad.any():
         known = res[bad][~np.isnan(res[bad])]  # nanmax of all-NaN would warn on the terminal
