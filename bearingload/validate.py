@@ -14,15 +14,11 @@ def finite(name: str, value: object) -> np.ndarray:
     """Return ``value`` as a float array, raising :class:`InputError` on NaN or infinity, on
     text (units belong to the command line: the library takes N, mm, N/mm^m, degrees) and on
     booleans."""
-    if type(value) is float or type(value) is int:  # one plain number: no array machinery
-        try:
-            number = float(value)
-        except OverflowError:
-            raise InputError(
-                name, "must be a finite number (got an integer beyond 1.8e308)"
-            ) from None
-        if math.isfinite(number):
-            return np.array(number)
+    number = plain(value)
+    if number is not None:
+        return np.array(number)
+    if type(value) is int:
+        raise InputError(name, "must be a finite number (got an integer beyond 1.8e308)")
     raw = np.asarray(value)
     if isinstance(value, (bool, np.bool_)) or raw.dtype == bool:
         raise InputError(
@@ -48,6 +44,20 @@ def finite(name: str, value: object) -> np.ndarray:
             element=element(arr, ~np.isfinite(arr)),
         )
     return arr
+
+
+def plain(value: object) -> float | None:
+    """One plain Python number (``float`` or ``int``, not a bool) that is finite, as a float;
+    None for anything else, which the array checks then take (and refuse with the reason). Each
+    rule below checks such a number as a float first: no array machinery for one case."""
+    if type(value) is float or type(value) is int:
+        try:
+            number = float(value)
+        except OverflowError:
+            return None
+        if math.isfinite(number):
+            return number
+    return None
 
 
 def each_finite(**values: object) -> list[np.ndarray]:
@@ -79,6 +89,9 @@ def non_negative(name: str, value: object) -> np.ndarray:
 
 def positive(name: str, value: object, unit: str) -> np.ndarray:
     """Return ``value`` as a float array, raising unless every element is finite and > 0."""
+    number = plain(value)
+    if number is not None and number > 0:
+        return np.array(number)
     arr = finite(name, value)
     if np.any(arr <= 0):
         raise InputError(
@@ -92,6 +105,9 @@ def positive(name: str, value: object, unit: str) -> np.ndarray:
 def at_least(name: str, value: object, lowest: float, unit: str) -> np.ndarray:
     """Return ``value`` as a float array, raising unless every element is finite and
     >= ``lowest`` [``unit``] (``radial_load: must be >= 0 N``)."""
+    number = plain(value)
+    if number is not None and number >= lowest:
+        return np.array(number)
     arr = finite(name, value)
     if np.any(arr < lowest):
         raise InputError(
@@ -109,8 +125,11 @@ CONFORMITY_RANGE = (0.5, 1.0)
 def conformity(name: str, value: object) -> np.ndarray:
     """Return a groove conformity ``value`` (``f_i``, ``f_o``) as a float array, raising unless
     every element lies in :data:`CONFORMITY_RANGE` (excluded ends)."""
-    arr = finite(name, value)
     low, high = CONFORMITY_RANGE
+    number = plain(value)
+    if number is not None and low < number < high:
+        return np.array(number)
+    arr = finite(name, value)
     bad = ~((arr > low) & (arr < high))
     if np.any(bad):
         raise InputError(
@@ -238,12 +257,14 @@ def ball_spacing(balls: object, ball_diameter: object, pitch_diameter: object) -
     ball_diameter, pitch_diameter : array_like
         Ball diameter D_w and pitch diameter d_m, broadcast together. [mm]
     """
-    z, dw, dm = np.broadcast_arrays(
-        *(np.asarray(v, dtype=float) for v in (balls, ball_diameter, pitch_diameter))
-    )
+    z, dw, dm = (np.asarray(v, dtype=float) for v in (balls, ball_diameter, pitch_diameter))
+    if type(balls) is int and balls >= 2:  # one count: its chord's factor as one number
+        if (dw <= dm * np.sin(np.pi / balls) * (1.0 + 1e-12)).all():
+            return
     chord = dm * np.sin(np.pi / np.maximum(z, 1.0))
     bad = (z >= 2) & ~(dw <= chord * (1.0 + 1e-12))
-    if np.any(bad):
+    if bad.any():  # (broadcast only on the way to the message)
+        z, dw, dm, chord, bad = np.broadcast_arrays(z, dw, dm, chord, bad)
         i = np.flatnonzero(bad.ravel())[0]
         n, d, p, c = (float(a.ravel()[i]) for a in (z, dw, dm, chord))
         k = next((k for k in range(6, 17) if f"{d:.{k}g}" != f"{c:.{k}g}"), 17)  # as they differ

@@ -39,7 +39,7 @@ from typing import Any  # noqa: E402
 import numpy as np  # noqa: E402
 
 from bearingload.models import high_speed as hs  # noqa: E402
-from bearingload.models.combined import _angular_geometry, solve_combined  # noqa: E402
+from bearingload.models.combined import angular_geometry, solve_combined  # noqa: E402
 
 Z = 13
 GEO = {"ball_diameter": 7.938, "pitch_diameter": 38.5, "f_i": 0.52, "f_o": 0.53}
@@ -75,7 +75,7 @@ def fsolve_case(fr: float, fa: float, n: float, alpha: float) -> bool:
 
     dw, dm, fi, fo = (np.array([GEO[k]]) for k in ("ball_diameter", "pitch_diameter", "f_i",
                                                     "f_o"))  # fmt: skip
-    geo = _angular_geometry(dw, dm, fi, fo, np.array([alpha]))
+    geo = angular_geometry(dw, dm, fi, fo, np.array([alpha]))
     balls = hs.ball_set(
         geo, np.array([208000.0]), np.array([0.3]), np.array([n]), np.array([7850.0])
     )

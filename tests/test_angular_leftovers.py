@@ -45,12 +45,12 @@ def test_loads_that_did_not_converge_are_refused(alpha, fr, fa):
 def test_a_thrust_just_below_the_bound_is_solved_and_balanced(alpha):
     """Pure thrust at half the largest load taken, K_ref (A / ratio)^1.5: every ball equal, F_a
     balanced; twice the bound is refused."""
-    from bearingload.models.combined import _angular_geometry, _hertz_setup
+    from bearingload.models.combined import angular_geometry, hertz_setup
 
     one = np.ones(1)
-    geo = _angular_geometry(RING["ball_diameter"] * one, RING["pitch_diameter"] * one,
+    geo = angular_geometry(RING["ball_diameter"] * one, RING["pitch_diameter"] * one,
                             0.52 * one, 0.53 * one, alpha * one)  # fmt: skip
-    k_ref, _ = _hertz_setup(geo, 208000.0 * one, 0.3 * one)
+    k_ref, _ = hertz_setup(geo, 208000.0 * one, 0.3 * one)
     f_max = float(k_ref[0] * (geo.A[0] / ANGULAR_RATIO_MIN) ** 1.5)
     r = solve_combined(12, 0.0, 0.5 * f_max, contact_angle=alpha, **RING)
     q = np.asarray(r.ball_loads).ravel()

@@ -398,7 +398,7 @@ def test_a_small_displacement_is_not_rounded_to_zero():
 
 
 def test_the_reported_case_near_the_smallest_load_converges():
-    """z 8, F_a 9.18e-7 N, G_r 0.676 mm (1.19 times the smallest load _check_scale stated) raised
+    """z 8, F_a 9.18e-7 N, G_r 0.676 mm (1.19 times the smallest load check_scale stated) raised
     ConvergenceError and printed internal arrays."""
     r = solve_combined(8, 0.0, 9.182186775280478e-07, clearance=0.6762990302229736, **G6205)
     q, al = r.ball_loads, np.radians(r.contact_angles)

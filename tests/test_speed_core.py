@@ -12,7 +12,7 @@ import pytest
 
 from bearingload.errors import ConvergenceError
 from bearingload.models import _core, high_speed
-from bearingload.models.combined import _NODE_W, _NODE_X, _angular_geometry
+from bearingload.models.combined import NODE_W, NODE_X, angular_geometry
 from bearingload.models.high_speed import solve_high_speed
 
 GEO = {"ball_diameter": 7.938, "pitch_diameter": 38.5}
@@ -23,7 +23,7 @@ def _balls(n: int, seed: int) -> tuple[np.ndarray, ...]:
     consts, ki, ko)."""
     rng = np.random.default_rng(seed)
     one = np.ones(1)
-    geo = _angular_geometry(7.938 * one, 38.5 * one, 0.52 * one, 0.53 * one, 40.0 * one)
+    geo = angular_geometry(7.938 * one, 38.5 * one, 0.52 * one, 0.53 * one, 40.0 * one)
     ki, ko = high_speed.stiffness_nodes(geo, 208000.0 * one, 0.3 * one)
     a = float(geo.A[0])
     omega = rng.uniform(0.0, 30000.0, n) * math.pi / 30.0
@@ -51,7 +51,7 @@ def _balls(n: int, seed: int) -> tuple[np.ndarray, ...]:
 def _terms(rho, u, do, ao, rest, partials: bool) -> tuple[np.ndarray, np.ndarray]:
     n = rho.size
     terms, part = np.empty((14, n)), np.empty((16 if partials else 0, n))
-    _core.speed_balls(rho, u, do, ao, *rest, _NODE_X, _NODE_W, terms, part)
+    _core.speed_balls(rho, u, do, ao, *rest, NODE_X, NODE_W, terms, part)
     return terms, part
 
 

@@ -45,14 +45,18 @@ from typing import Any
 import numpy as np
 
 # the tolerances are the compiled core's (one copy; its module says why each)
+from bearingload.models import _core
 from bearingload.models._core import (  # noqa: F401
     FIRST_STAGE_STEPS,
     FLOOR,
     MAX_ITERATIONS,
     ROUNDING,
     TOLERANCE,
+    Status,
 )
 
+#: The status of a case the core solved. [-]
+OK = int(Status.OK)
 #: Largest relative residual accepted at the end (above it the caller raises). [-]
 ACCEPT = 1e-8
 #: Dekker's splitting constant 2^27 + 1 (exact products of doubles). [-]
@@ -64,14 +68,14 @@ X, Y, AX, T, TC = range(5)
 # ------------------------------------------------------------------------ double-double pieces
 
 
-def _two_sum(a: Any, b: Any) -> tuple[Any, Any]:
+def two_sum(a: Any, b: Any) -> tuple[Any, Any]:
     """a + b as an unevaluated sum s + e, exactly (Knuth)."""
     s = a + b
     bb = s - a
     return s, (a - (s - bb)) + (b - bb)
 
 
-def _fast(s: Any, e: Any) -> tuple[Any, Any]:
+def fast_two_sum(s: Any, e: Any) -> tuple[Any, Any]:
     """Renormalise s + e (|s| >= |e|) to a double-double."""
     hi = s + e
     return hi, e - (hi - s)
@@ -93,13 +97,13 @@ def _two_prod(a: Any, b: Any, bs: tuple[Any, Any] | None = None) -> tuple[Any, A
 
 def _dd_mul(ah: Any, al: Any, bh: Any, bl: Any) -> tuple[Any, Any]:
     p, e = _two_prod(ah, bh)
-    return _fast(p, e + (ah * bl + al * bh))
+    return fast_two_sum(p, e + (ah * bl + al * bh))
 
 
 # ------------------------------------------------------------------------------- the problem
 
 
-@dataclass(frozen=True)
+@dataclass
 class Problem:
     """The scaled problem of n cases (every array has the cases on its first axis)."""
 
@@ -126,28 +130,18 @@ class Problem:
         """``directions`` = cos, sin of the ball angles (n, z); ``lengths`` = (A, G_r/2) [mm];
         ``rest``: f, t_imp [mm], locked, imposed, f_ref, k_ref, optionally one_sided (n,) bool
         (default none: deep groove; the scale s = (F/K)^(2/3) follows)."""
-        big_a, g = lengths
         scale = (rest["f_ref"] / rest["k_ref"]) ** (2.0 / 3.0)
-        c, s = directions
-        c = np.where(np.abs(c) < 1e-15, 0.0, c)
-        s = np.where(np.abs(s) < 1e-15, 0.0, s)
-        a_hat = big_a / scale
-        pre = np.maximum(-g, 0.0) / scale
-        b_hi, b_lo = _two_sum(a_hat, pre)
-        t_imp = rest.pop("t_imp") / scale
+        c, s, (a_hat, pre, gap, b_hi, b_lo, t_imp) = _core.scaled_problem(
+            *(np.ascontiguousarray(v, dtype=float) for v in directions),
+            *(np.ascontiguousarray(v, dtype=float) for v in (*lengths, scale, rest.pop("t_imp"))),
+        )
         rest.setdefault("one_sided", np.zeros(np.shape(scale), dtype=bool))
-        return Problem(z, c, s, scale, a_hat, pre, np.maximum(g, 0.0) / scale, b_hi, b_lo,
-                       t_imp=t_imp, **rest)  # fmt: skip
+        return Problem(z, c, s, scale, a_hat, pre, gap, b_hi, b_lo, t_imp=t_imp, **rest)
 
     def take(self, idx: np.ndarray) -> Problem:
         """The cases ``idx`` only."""
-        out = {}
-        for field in dataclasses.fields(self):
-            value = getattr(self, field.name)
-            if isinstance(value, np.ndarray):
-                value = value[idx]
-            out[field.name] = value
-        return Problem(**out)
+        items = ((f.name, getattr(self, f.name)) for f in dataclasses.fields(self))
+        return Problem(**{k: v[idx] if isinstance(v, np.ndarray) else v for k, v in items})
 
     @functools.cached_property
     def arms(self) -> np.ndarray:
@@ -171,14 +165,6 @@ class Balls:
     eps: np.ndarray  # d - B, to the last digits
     up: np.ndarray  # u' = the axial separation the contact sees: u, or max(u, 0) one-sided
 
-    def take(self, idx: np.ndarray) -> Balls:
-        return Balls(*(getattr(self, k)[idx] for k in _BALL_FIELDS))
-
-    def put(self, mask: np.ndarray, other: Balls) -> Balls:
-        """These balls, with the rows ``mask`` from ``other``."""
-        m = mask[:, None]
-        return Balls(*(np.where(m, getattr(other, k), getattr(self, k)) for k in _BALL_FIELDS))
-
 
 _BALL_FIELDS = ("rho", "u", "d", "eps", "up")
 
@@ -196,34 +182,34 @@ def reference(p: Problem, vh: np.ndarray, vl: np.ndarray) -> Balls:
     col = [(vh[:, i, None], vl[:, i, None]) for i in range(5)]
     r1 = _two_prod(col[X][0], p.c, (c_hi, c_lo))
     r2 = _two_prod(col[Y][0], p.s, (s_hi, s_lo))
-    r, e = _two_sum(r1[0], r2[0])
-    m, e2 = _two_sum(r, -p.gap[:, None])
-    m_hi, m_lo = _fast(m, e2 + e + r1[1] + r2[1] + col[X][1] * p.c + col[Y][1] * p.s)
-    n_hi, e = _two_sum(m_hi, 2.0 * p.b_hi[:, None])
-    n_hi, n_lo = _fast(n_hi, e + m_lo + 2.0 * p.b_lo[:, None])
-    t_hi, t_lo = _two_sum(col[T][0], p.t_imp[:, None])
+    r, e = two_sum(r1[0], r2[0])
+    m, e2 = two_sum(r, -p.gap[:, None])
+    m_hi, m_lo = fast_two_sum(m, e2 + e + r1[1] + r2[1] + col[X][1] * p.c + col[Y][1] * p.s)
+    n_hi, e = two_sum(m_hi, 2.0 * p.b_hi[:, None])
+    n_hi, n_lo = fast_two_sum(n_hi, e + m_lo + 2.0 * p.b_lo[:, None])
+    t_hi, t_lo = two_sum(col[T][0], p.t_imp[:, None])
     u1 = _two_prod(t_hi, p.c, (c_hi, c_lo))
     u2 = _two_prod(col[TC][0], p.s, (s_hi, s_lo))
-    u, e = _two_sum(col[AX][0], u1[0])
-    u, e2 = _two_sum(u, u2[0])
+    u, e = two_sum(col[AX][0], u1[0])
+    u, e2 = two_sum(u, u2[0])
     tail = e + e2 + u1[1] + u2[1] + col[AX][1] + (t_lo + col[T][1]) * p.c + col[TC][1] * p.s
-    u_hi, u_lo = _fast(u, tail)
+    u_hi, u_lo = fast_two_sum(u, tail)
     ud = u_hi + u_lo
     if p.one_sided.any():  # angular contact: the ball sees max(u, 0) (module notes)
         cut = p.one_sided[:, None] & (u_hi < 0)
         u_hi, u_lo = np.where(cut, 0.0, u_hi), np.where(cut, 0.0, u_lo)
     mn = _dd_mul(m_hi, m_lo, n_hi, n_lo)
     uu = _dd_mul(u_hi, u_lo, u_hi, u_lo)
-    d2, e = _two_sum(mn[0], uu[0])
+    d2, e = two_sum(mn[0], uu[0])
     d2 = d2 + (e + mn[1] + uu[1])
-    rho, e = _two_sum(p.b_hi[:, None], m_hi)
+    rho, e = two_sum(p.b_hi[:, None], m_hi)
     rho = rho + (e + p.b_lo[:, None] + m_lo)
     up = u_hi + u_lo
     d = np.hypot(np.maximum(rho, 0.0), up)
     b = p.b_hi[:, None]
     # at the groove edge (rho <= 0) d = |u|: |u| - B from the double-double u, not from ud
     sign = np.where(u_hi < 0, -1.0, 1.0)
-    edge, e = _two_sum(sign * u_hi, -b)
+    edge, e = two_sum(sign * u_hi, -b)
     edge = edge + (e + sign * u_lo - p.b_lo[:, None])
     eps = np.where(rho > 0, d2 / (d + b), edge)
     return Balls(rho, ud, d, eps, up)
@@ -264,9 +250,6 @@ def loads(p: Problem, b: Balls, kappa: np.ndarray) -> Loads:
     q = k * pos * root
     dev = p.deviation
     q0 = np.where(dev, p.pre * np.sqrt(p.pre), 0.0)
-    if not dev.any():  # no preload in this call: the deviations are the loads
-        zero = np.zeros_like(q)
-        return Loads(ca, sa, cam1, q, q, root, zero, zero, q0)
     tau = np.where(dev[:, None], b.eps / np.where(pre > 0, pre, 1.0), 0.0)
     sig = tau / (1.0 + np.sqrt(np.maximum(1.0 + tau, 0.0)))
     change = q0[:, None] * np.where(touch, k * (tau + sig + tau * sig) + kappa, -1.0)
@@ -296,23 +279,18 @@ def sum_arms(radial: np.ndarray, axial: np.ndarray, arms: np.ndarray) -> np.ndar
     return np.add.reduce(terms, axis=2)
 
 
-def residual(p: Problem, gen: np.ndarray, size: np.ndarray, held: np.ndarray) -> np.ndarray:
-    """Per case, the largest residual of a component not ``held`` (n, 5), each over its applied
-    load or, where larger, the rounding level of its terms (ROUNDING times the sum of their
-    magnitudes) over TOLERANCE: so at most TOLERANCE means each component balanced to 1e-12 of
-    its load, or to the rounding of the sum it is (its terms 100 times the load, say, under an
-    imposed tilt). A component without an applied load is also measured against FLOOR times
-    the largest load (1 scaled): its terms may vanish at the answer with its residual. [-]"""
-    return residual_of(p.f, gen, size, held)
-
-
 def residual_of(f: np.ndarray, gen: np.ndarray, size: np.ndarray, held: np.ndarray) -> np.ndarray:
-    """:func:`residual` of the applied forces ``f`` (n, 5) (the cases of a problem, taken or
-    not)."""
-    grad = np.where(held, 0.0, gen - f)
-    ref = np.maximum(np.abs(f), (ROUNDING / TOLERANCE) * size)
-    ref = np.where(f == 0, np.maximum(ref, FLOOR), ref)
-    return np.max(np.abs(grad) / ref, axis=1)
+    """Per case, the largest residual of the forces ``gen`` against the applied ``f`` (n, 5)
+    of a component not ``held``, each over its applied load or, where larger, the rounding
+    level of its terms (ROUNDING times the sum of their magnitudes ``size``) over TOLERANCE: so
+    at most TOLERANCE means each component balanced to 1e-12 of its load, or to the rounding of
+    the sum it is (its terms 100 times the load, say, under an imposed tilt). A component
+    without an applied load is also measured against FLOOR times the largest load (1 scaled):
+    its terms may vanish at the answer with its residual. [-]"""
+    return _core.residuals(
+        *(np.ascontiguousarray(v, dtype=float) for v in (f, gen, size)),
+        np.ascontiguousarray(held, dtype=np.uint8),
+    )
 
 
 # ----------------------------------------------------------------------------------- points
@@ -321,26 +299,20 @@ def residual_of(f: np.ndarray, gen: np.ndarray, size: np.ndarray, held: np.ndarr
 @dataclass
 class Point:
     """The balls, loads, generalised forces, term sizes and residual at the positions of some
-    cases (the rows of every array); ``age``: steps taken since :func:`reference` computed the
-    balls (0: fresh)."""
+    cases (the rows of every array)."""
 
     b: Balls
     lo: Loads
     gen: np.ndarray
     size: np.ndarray
     res: np.ndarray
-    age: np.ndarray
 
     @staticmethod
-    def at(q: Problem, kappa: np.ndarray, b: Balls, age: int = 0) -> Point:
+    def at(q: Problem, kappa: np.ndarray, b: Balls) -> Point:
         lo = loads(q, b, kappa)
         gen, size = forces(q, lo)
-        res = residual(q, gen, size, q.locked)
-        return Point(b, lo, gen, size, res, np.full(res.shape, age, dtype=np.int64))
-
-    def take(self, rows: np.ndarray) -> Point:
-        return Point(self.b.take(rows), _take_loads(self.lo, rows), self.gen[rows],
-                     self.size[rows], self.res[rows], self.age[rows])  # fmt: skip
+        res = residual_of(q.f, gen, size, q.locked)
+        return Point(b, lo, gen, size, res)
 
     def put(self, rows: np.ndarray, other: Point) -> None:
         """Overwrite the rows ``rows`` with ``other`` (in place)."""
@@ -348,12 +320,8 @@ class Point:
             getattr(self.b, name)[rows] = getattr(other.b, name)
         for name in _LOAD_FIELDS:
             getattr(self.lo, name)[rows] = getattr(other.lo, name)
-        for name in ("gen", "size", "res", "age"):
+        for name in ("gen", "size", "res"):
             getattr(self, name)[rows] = getattr(other, name)
-
-
-def _take_loads(lo: Loads, idx: np.ndarray) -> Loads:
-    return Loads(*(getattr(lo, name)[idx] for name in _LOAD_FIELDS))
 
 
 _LOAD_FIELDS = ("ca", "sa", "cam1", "q", "dq", "root", "tau", "sig", "q0")

@@ -125,7 +125,7 @@ cdef inline double norm(double a, double b) noexcept nogil:
 
 cdef inline double curve_kappa(const Case *cs, double ca, double cam1) noexcept nogil:
     """K(alpha)/K_0 - 1 = (c - 1) D(c), D the barycentric Chebyshev interpolant of the divided
-    difference at the nodes (bearingload.models.combined._StiffnessCurve); 0 at a constant K.
+    difference at the nodes (bearingload.models.combined.StiffnessCurve); 0 at a constant K.
     (Its 24 quotients are independent: faster than Clenshaw's serial recurrence.)"""
     cdef double t, term, num = 0.0, den = 0.0
     cdef int k
@@ -295,7 +295,7 @@ cdef int hertz_curve(const double *geo, const double *node_x, double *k0,
                      double *values) noexcept nogil:
     """K_0 = K(alpha = 0) and the divided differences ``(K(c)/K_0 - 1)/(c - 1)`` at the nodes
     ``c = (x + 1)/2`` of one geometry ``geo`` = (D_w, d_m, f_i, f_o, E, nu)
-    (combined._hertz_setup); 0 where hertz.py would refuse or not converge."""
+    (combined.hertz_setup); 0 where hertz.py would refuse or not converge."""
     cdef double nu = geo[5], e_star, c, k
     cdef int i
     if not (nu > -1.0 and nu <= 0.5):
@@ -1375,7 +1375,7 @@ cdef bint ball_directions(int z, double cage, double snap, double *c, double *s)
     """cos and sin of every ball's angle (ball j at ``cage + 360° j/z``), and whether the case
     is symmetric about the load line (the cage within ``snap`` of 0 or half a pitch): then the
     directions exactly mirrored, ball j at (k_j / z) turns, k_j = j + first + (0 or 1/2), the
-    angle folded onto [0, 180°] before its cosine is taken (combined._directions says why)."""
+    angle folded onto [0, 180°] before its cosine is taken (combined.ball_directions says why)."""
     cdef double pitch = 360.0 / z, frac, first, k, folded, rad = cage * (PI / 180.0)
     cdef bint half, mirror
     cdef int j
@@ -1408,6 +1408,51 @@ def directions(int z, const double[::1] cage, double snap):
         for k in range(n):
             mirror[k] = ball_directions(z, cage[k], snap, &c[k, 0], &s[k, 0])
     return c_a, s_a, mirror_a
+
+
+def scaled_problem(const double[:, ::1] c, const double[:, ::1] s, const double[::1] big_a,
+                   const double[::1] g, const double[::1] scale, const double[::1] t_imp):
+    """The scaled problem of n cases (_combined_ring.Problem.make): the ball directions ``c``,
+    ``s`` (n, z) with those below 1e-15 made 0, and A, p = max(-g, 0), max(g, 0), B = A + p in
+    double-double (Knuth's two-sum) and the imposed tilt ``t_imp``, each over ``scale`` (n,)."""
+    cdef Py_ssize_t n = c.shape[0], z = c.shape[1], k, j
+    c_a, s_a = np.empty((n, z)), np.empty((n, z))
+    out_a = np.empty((6, n))
+    cdef double[:, ::1] c2 = c_a, s2 = s_a, out = out_a
+    cdef double a, p, hi, bb
+    with nogil:
+        for k in range(n):
+            for j in range(z):
+                c2[k, j] = 0.0 if fabs(c[k, j]) < 1e-15 else c[k, j]
+                s2[k, j] = 0.0 if fabs(s[k, j]) < 1e-15 else s[k, j]
+            a = big_a[k] / scale[k]
+            p = (-g[k] if -g[k] > 0.0 else 0.0) / scale[k]
+            hi = a + p
+            bb = hi - a
+            out[0, k], out[1, k], out[2, k] = a, p, (g[k] if g[k] > 0.0 else 0.0) / scale[k]
+            out[3, k], out[4, k] = hi, (a - (hi - bb)) + (p - bb)
+            out[5, k] = t_imp[k] / scale[k]
+    return c_a, s_a, out_a
+
+
+def residuals(const double[:, ::1] f, const double[:, ::1] gen, const double[:, ::1] size,
+              const unsigned char[:, ::1] held):
+    """Per case (n,), the largest residual of the forces ``gen`` against the applied ``f`` of
+    a component not ``held``, over its load or its terms' rounding level (``size``), at least
+    FLOOR without a load; NaN if any is (``residual``; _combined_ring.residual_of)."""
+    cdef Py_ssize_t n = f.shape[0], k
+    cdef int i
+    out_a = np.empty(n)
+    cdef double[::1] out = out_a
+    cdef Case cs
+    cs.lim = LIMITS
+    with nogil:
+        for k in range(n):
+            for i in range(5):
+                cs.f[i] = f[k, i]
+                cs.locked[i] = held[k, i]
+            out[k] = residual(&cs, &gen[k, 0], &size[k, 0])
+    return out_a
 
 
 cdef void store(const Work *wk, int z, double *kappa, double *balls, Py_ssize_t stride,
@@ -1457,18 +1502,10 @@ def solve(const double[:, ::1] c, const double[:, ::1] s, const double[::1] a_ha
     cdef Py_ssize_t n = c.shape[0], k
     cdef int z = <int> c.shape[1], i
     cdef bint has_curve = curve.shape[1] == NODES
-    vh_a = np.empty((n, 5))
-    vl_a = np.empty((n, 5))
-    kappa_a = np.empty((n, z))
-    its_a = np.empty(n, dtype=np.int64)
-    status_a = np.empty(n, dtype=np.int32)
-    balls_a = np.empty((BALL_ARRAYS, n, z))
-    gen_a = np.empty((n, 5))
-    size_a = np.empty((n, 5))
-    res_a = np.empty(n)
-    flat_a = np.zeros(n, dtype=np.uint8)
-    tangent_a = np.empty((n, 5, 5))
-    holding_a = np.empty((n, 5, 5))
+    vh_a, vl_a, gen_a, size_a = (np.empty((n, 5)) for _ in range(4))
+    kappa_a, balls_a, res_a = np.empty((n, z)), np.empty((BALL_ARRAYS, n, z)), np.empty(n)
+    its_a, status_a = np.empty(n, dtype=np.int64), np.empty(n, dtype=np.int32)
+    tangent_a, holding_a, flat_a = np.empty((n, 5, 5)), np.empty((n, 5, 5)), np.zeros(n, np.uint8)
     cdef double[:, ::1] vh = vh_a, vl = vl_a, kappa = kappa_a
     cdef int64_t[::1] its = its_a
     cdef int[::1] status = status_a
@@ -1483,24 +1520,16 @@ def solve(const double[:, ::1] c, const double[:, ::1] s, const double[::1] a_ha
     cs.lim.fast_steps = first_stage_steps
     with nogil:
         for k in range(n):
-            cs.z = z
-            cs.c = &c[k, 0]
-            cs.s = &s[k, 0]
-            cs.a_hat = a_hat[k]
-            cs.pre = pre[k]
-            cs.gap = gap[k]
-            cs.b_hi = b_hi[k]
-            cs.b_lo = b_lo[k]
-            cs.t_imp = t_imp[k]
+            cs.z, cs.c, cs.s, cs.one_sided = z, &c[k, 0], &s[k, 0], one_sided[k]
+            cs.a_hat, cs.pre, cs.gap, cs.t_imp = a_hat[k], pre[k], gap[k], t_imp[k]
+            cs.b_hi, cs.b_lo = b_hi[k], b_lo[k]
             for i in range(5):
                 cs.f[i] = f[k, i]
                 cs.locked[i] = locked[k, i]
-            cs.one_sided = one_sided[k]
             cs.deviation = cs.pre > 0 and z >= 2
             cs.q0 = cs.pre * sqrt(cs.pre) if cs.deviation else 0.0
             cs.curve = &curve[k, 0] if has_curve else NULL
-            cs.node_x = &node_x[0]
-            cs.node_w = &node_w[0]
+            cs.node_x, cs.node_w = &node_x[0], &node_w[0]
             if not work_open(z, &wk):
                 status[k] = NO_MEMORY
                 continue

@@ -96,7 +96,8 @@ minimisation repeated until the update leaves the equilibrium. Each case stops w
 every applied component is balanced to 1e-12 of itself (or to the rounding of the sum it is,
 its terms much larger than it); a component held at 0 by a symmetry of the case is exactly 0.
 No case depends on the others of its call, nor on earlier calls: the Hertz set-up of a
-geometry (K_0 and the stiffness curve's nodes) is computed per case in the core. Cases left
+geometry (K_0 and the stiffness curve's nodes) is computed per case in the core (a one-case
+call takes it from the last SETUP_CACHE_SIZE geometries so solved, the same bits). Cases left
 above 1e-8 raise :class:`~bearingload.errors.ConvergenceError`, naming their inputs.
 """
 
@@ -120,8 +121,6 @@ __all__ = ["CombinedDistribution", "solve_combined", "axial_only", "groove_geome
            "ball_stiffness_at", "TOLERANCE", "ACCEPT", "MAX_ITERATIONS"]  # fmt: skip
 #: Stiffness updates (each followed by a minimisation) before ConvergenceError. [-]
 MAX_STIFFNESS_UPDATES = 40
-#: Machine epsilon of a double. [-]
-EPS = float(np.finfo(float).eps)
 
 
 class StiffnessViews:
@@ -297,7 +296,7 @@ def groove_geometry(
     >>> round(float(A), 4), round(float(a0), 4), round(float(sa), 5)
     (0.575, 7.5614, 0.15133)
     """
-    geo = _geometry(
+    geo = ring_geometry(
         validate.positive("ball_diameter", ball_diameter, "mm"),
         validate.positive("pitch_diameter", pitch_diameter, "mm"),
         *validate.each_finite(f_i=f_i, f_o=f_o, clearance=clearance),
@@ -310,30 +309,43 @@ def groove_geometry(
     )
 
 
-def _geometry(dw: Any, dm: Any, fi: Any, fo: Any, clearance: Any) -> _Geometry:
+def ring_geometry(
+    dw: Any, dm: Any, fi: Any, fo: Any, clearance: Any, alpha0: Any = None
+) -> _Geometry:
     """The geometry of finite arrays (:func:`bearingload.validate.finite`), refused where it
-    is not one of a deep-groove ball bearing."""
-    for name, value in (("ball_diameter", dw), ("pitch_diameter", dm)):
-        if not (value > 0).all():
-            validate.positive(name, value, "mm")  # (raises, naming the value)
+    is not one of a deep-groove ball bearing (one case: checked as floats); ``alpha0``: the
+    free contact angle [rad] as given (:func:`angular_geometry`), not that of the clearance."""
     g = clearance / 2.0
-    if (dw >= dm).any():
-        raise InputError("ball_diameter", "must be smaller than the pitch diameter")
-    low, high = validate.CONFORMITY_RANGE
-    for name, f in (("f_i", fi), ("f_o", fo)):
-        if not ((f > low) & (f < high)).all():
-            validate.conformity(name, f)  # (raises, naming the value)
     A = (fi + fo - 1.0) * dw
-    if (g >= A).any():
+    d_w, d_m, f_i, f_o, gap, big_a = (dw, dm, fi, fo, g, A)
+    if A.size == dm.size == g.size == 1:
+        d_w, d_m, f_i, f_o, gap, big_a = (v.item() for v in (dw, dm, fi, fo, g, A))
+    low, high = validate.CONFORMITY_RANGE
+    conform = (f_i > low) & (f_i < high) & (f_o > low) & (f_o < high)
+    fits = (d_w > 0) & (d_m > 0) & (d_w < d_m) & conform & (gap < big_a)
+    if not (fits if isinstance(fits, bool) else fits.all()):
+        _refuse_geometry(dw, dm, fi, fo, g >= A)
+    if alpha0 is None:  # cos(alpha0) = 1 - g/A; 2 asin(sqrt(g/(2A))) keeps a small g's digits
+        alpha0 = 2.0 * np.arcsin(np.sqrt(np.where(g > 0, g / (2.0 * A), 0.0)))  # (g < A here)
+    R_i = dm / 2.0 + (fi - 0.5) * dw * np.cos(alpha0)
+    return _Geometry(dw, dm, fi, fo, A, g, alpha0, R_i)
+
+
+def _refuse_geometry(dw: Any, dm: Any, fi: Any, fo: Any, out: Any) -> None:
+    """InputError naming the first parameter of a geometry that does not fit
+    (:func:`ring_geometry`); ``out``: where the clearance is too large."""
+    for name, value in (("ball_diameter", dw), ("pitch_diameter", dm)):
+        validate.positive(name, value, "mm")
+    if np.any(dw >= dm):
+        raise InputError("ball_diameter", "must be smaller than the pitch diameter")
+    validate.conformity("f_i", fi)
+    validate.conformity("f_o", fo)
+    if np.any(out):
         raise InputError(
             "clearance",
             "must be smaller than 2 (f_i + f_o - 1) D_w, the clearance at which the ball "
             "would leave the grooves axially",
         )
-    # cos(alpha0) = 1 - g/A; alpha0 = 2 asin(sqrt(g/(2A))) keeps the digits of a small g
-    alpha0 = 2.0 * np.arcsin(np.sqrt(np.clip(g / (2.0 * A), 0.0, 1.0)))
-    R_i = dm / 2.0 + (fi - 0.5) * dw * np.cos(alpha0)
-    return _Geometry(dw, dm, fi, fo, A, g, alpha0, R_i)
 
 
 def ball_stiffness_at(
@@ -413,25 +425,6 @@ def axial_only(
     validate.broadcast_shape({"axial_load": f, "stiffness": k, "A": big_a, "clearance": g})
     z, f, k, big_a, g = np.broadcast_arrays(z, f, k, big_a, g)
     c = big_a - g  # radial distance of the groove centres
-    lo, hi, approach = _axial_bracket(z, f, k, big_a, g)
-    u = 0.5 * (lo + hi)
-    return (
-        numerics.scalar_out(u),
-        numerics.scalar_out(np.rad2deg(np.arctan2(u, c))),
-        numerics.scalar_out(k * approach(u) ** 1.5),
-    )
-
-
-def _axial_bracket(
-    z: np.ndarray, f: np.ndarray, k: np.ndarray, big_a: np.ndarray, g: np.ndarray,
-    scale: np.ndarray | None = None,
-) -> tuple[np.ndarray, np.ndarray, Any]:  # fmt: skip
-    """Bisection of :func:`axial_only` (arrays of one shape, ``g`` = G_r/2): the bracket (lo,
-    hi) of the axial offset u [mm], each case stopped on its own when it is 4e-16 of u wide or,
-    given ``scale``, when u/scale rounds to the same single-precision number at both ends (then
-    so does the midpoint the full bisection would give: rounding is monotone), and the approach
-    as a function of u."""
-    c = big_a - g  # radial distance of the groove centres
     gap2 = g * (2.0 * big_a - g)  # A^2 - c^2: u^2 at first contact (negative under preload)
     u0 = np.sqrt(np.maximum(gap2, 0.0))
     target = f / (z * k)
@@ -449,19 +442,20 @@ def _axial_bracket(
         if not short.any():
             break
         hi = np.where(short, 2.0 * hi, hi)
-    for _ in range(200):
-        open_ = hi - lo > 4e-16 * hi  # each case stops on its own
-        if scale is not None:
-            top = hi / scale
-            single = (lo / scale).astype(np.float32) == top.astype(np.float32)
-            open_ &= ~(single & (top < 1e30))
+    for _ in range(200):  # bisection, each case stopped when 4e-16 of u wide
+        open_ = hi - lo > 4e-16 * hi
         if not open_.any():
             break
         mid = 0.5 * (lo + hi)
         below = excess(mid) < 0
         lo = np.where(open_ & below, mid, lo)
         hi = np.where(open_ & ~below, mid, hi)
-    return lo, hi, approach
+    u = 0.5 * (lo + hi)
+    return (
+        numerics.scalar_out(u),
+        numerics.scalar_out(np.rad2deg(np.arctan2(u, c))),
+        numerics.scalar_out(k * approach(u) ** 1.5),
+    )
 
 
 def solve_combined(
@@ -575,7 +569,7 @@ def solve_combined(
     named["contact_angle"] = np.zeros(()) if angular is None else angular
     shape, flat = _cases(named | ({} if k_given is None else {"stiffness": k_given}))
     fr, fa, mm, tilt_deg, cage, e, nu, mc, dw, dm, fi, fo, gr, alpha_d = flat[:14]
-    geo = _geometry(dw, dm, fi, fo, gr) if angular is None else _angular_geometry(dw, dm, fi, fo, alpha_d)  # fmt: skip
+    geo = ring_geometry(dw, dm, fi, fo, gr) if angular is None else angular_geometry(dw, dm, fi, fo, alpha_d)  # fmt: skip
     validate.ball_spacing(z, geo.D_w, geo.d_m)  # (z balls must fit on the pitch circle)
     if tilt_radius is not None:
         radius = validate.positive("tilt_radius", tilt_radius, "mm")
@@ -585,21 +579,21 @@ def solve_combined(
         _check_one_sided_moment(z, cage, fa, (mm, mc), geo.R_i, misalignment is not None)
     curve = None
     if k_given is None:
-        k_ref, values = _hertz_setup(geo, e, nu)
-        curve = _StiffnessCurve(values)
+        k_ref, values = hertz_setup(geo, e, nu)
+        curve = StiffnessCurve(values)
     else:
         k_ref = flat[14]
-    f_ref = _reference_force(fr, fa, mm, mc, geo.R_i)
+    f_ref = reference_force(fr, fa, mm, mc, geo.R_i)
     if (f_ref <= 0).any():
         raise InputError("radial_load", "give a radial load, an axial load or a moment")
-    _check_scale(
+    check_scale(
         f_ref, k_ref, geo.A, angular is not None, lambda: load_sizes(fr, fa, mm, mc, geo.R_i)
     )
     if angular is not None:
         _check_angular_scale(f_ref, k_ref, geo.A, (fr, fa, np.hypot(mm, mc) / geo.R_i))
     t_imp = geo.R_i * np.deg2rad(tilt_deg)  # [mm]
-    c, s, mirror = _directions(z, cage)
-    held, imposed = _locks(z, mirror, (fr, fa, mm, mc), t_imp, misalignment is not None)
+    c, s, mirror = ball_directions(z, cage)
+    held, imposed = symmetry_locks(z, mirror, (fr, fa, mm, mc), t_imp, misalignment is not None)
     f = np.zeros((fr.shape[0], 5))
     f[:, 0], f[:, 2], f[:, 3], f[:, 4] = fr, fa, mm / geo.R_i, mc / geo.R_i
     f /= f_ref[:, None]
@@ -620,7 +614,7 @@ def solve_combined(
             checked,
             physical_tangent(problem, geo, tangent[0], mirror & (mc == 0)),
         )
-        return _result(problem, geo, answer, shape, given, misalignment, flags)
+        return distribution(problem, geo, answer, shape, given, misalignment, flags)
 
 
 def call_balls(balls: Any) -> int:
@@ -646,15 +640,19 @@ def _cases(named: dict[str, np.ndarray]) -> tuple[tuple[int, ...], list[np.ndarr
     return arrays[0].shape, [a.ravel() for a in arrays]
 
 
-def _equilibrium(p: Problem, geo: _Geometry, curve: _StiffnessCurve | None, given: dict) -> tuple:
+def _equilibrium(p: Problem, geo: _Geometry, curve: StiffnessCurve | None, given: dict) -> tuple:
     """Every case solved (:func:`_thrust_retry`), a tilt the loads do not determine taken at
     its least (:func:`_least_norm_tilt`): as :func:`_solve_with_stiffness`, and which cases'
     tilts are undetermined. A case whose stiffness updates run out raises ConvergenceError
     naming its inputs (``given``)."""
     try:
-        vh, vl, kappa, its, end, tangent = _thrust_retry(p, geo, curve)
-        neglected = _neglect_thrust(p, geo, curve, (vh, vl, kappa, its, end, tangent))
-        _near_symmetric(p, geo, curve, (vh, vl, kappa, its, end, tangent), given["cage_angle"])
+        got = _solve_with_stiffness(p, geo, curve)
+        neglected = np.zeros(p.f.shape[0], dtype=bool)
+        if not (_ring.residual_of(p.f, got[4].gen, got[4].size, p.imposed) <= ACCEPT).all():
+            got = _thrust_retry(p, geo, curve, got)  # (each retry needs an unbalanced case)
+            neglected = _neglect_thrust(p, geo, curve, got)
+            _near_symmetric(p, geo, curve, got, given["cage_angle"])
+        vh, vl, kappa, its, end, tangent = got
     except ConvergenceError as exc:
         rows = np.asarray(exc.cases["rows"])
         raise ConvergenceError(
@@ -695,6 +693,8 @@ def _least_norm_tilt(
     vh, vl = v
     holding, maybe = held
     undetermined = np.zeros(vh.shape[0], dtype=bool)
+    if not maybe.any():
+        return vh, vl, end, undetermined
     rows = np.flatnonzero(maybe & np.any(~p.locked[:, 3:], axis=1))
     if not rows.size:
         return vh, vl, end, undetermined
@@ -736,8 +736,8 @@ def _move_along(
     wh, wl = vh[one], vl[one]
     step = s * vec[:, 0] * ~p.locked[i]
     for _ in range(4):
-        hi, lo = _ring._two_sum(wh, step[None, :])
-        wh, wl = _ring._fast(hi, lo + wl)
+        hi, lo = _ring.two_sum(wh, step[None, :])
+        wh, wl = _ring.fast_two_sum(hi, lo + wl)
         moved = _ring.Point.at(sub, kappa[one], _ring.reference(sub, wh, wl))
         if moved.res[0] <= TOLERANCE:
             vh[one], vl[one] = wh, wl
@@ -776,13 +776,12 @@ def _least_tilt_step(p: Problem, i: int, end: _ring.Point, v: np.ndarray, d: np.
     return float(np.clip(best, lower + margin, upper - margin))
 
 
-def _angular_geometry(dw: Any, dm: Any, fi: Any, fo: Any, alpha_deg: np.ndarray) -> _Geometry:
+def angular_geometry(dw: Any, dm: Any, fi: Any, fo: Any, alpha_deg: np.ndarray) -> _Geometry:
     """The deep-groove geometry whose free contact angle is the design angle alpha_0 [°]:
     ``G_r = 2A (1 - cos alpha_0) = 4A sin^2(alpha_0/2)``, alpha_0 kept as given."""
     big_a = (fi + fo - 1.0) * dw
-    geo = _geometry(dw, dm, fi, fo, 4.0 * big_a * np.sin(np.deg2rad(alpha_deg) / 2.0) ** 2)
     alpha0 = np.deg2rad(alpha_deg)  # as given, not through the arcsine
-    return dataclasses.replace(geo, alpha0=alpha0, R_i=dm / 2.0 + (fi - 0.5) * dw * np.cos(alpha0))
+    return ring_geometry(dw, dm, fi, fo, 4.0 * big_a * np.sin(alpha0 / 2.0) ** 2, alpha0)
 
 
 def _angular(contact_angle: Any, fa: np.ndarray, clearance: Any) -> np.ndarray | None:
@@ -924,7 +923,7 @@ def _check_few_balls(z: int, cage: np.ndarray, loads: tuple[np.ndarray, ...], lo
 GEOMETRY_RATIO_MAX = 2e7
 
 
-def _reference_force(
+def reference_force(
     fr: np.ndarray, fa: np.ndarray, mm: np.ndarray, mc: np.ndarray, lever: np.ndarray
 ) -> np.ndarray:
     """The largest of F_r, |F_a| and the moments over the tilt lever, per case. [N]"""
@@ -938,7 +937,7 @@ def _reference_force(
     return f_ref
 
 
-def _check_scale(
+def check_scale(
     f_ref: np.ndarray,
     k_ref: np.ndarray,
     big_a: np.ndarray,
@@ -960,11 +959,10 @@ def _check_scale(
             f"{float(np.max(scale)):.3g} mm, beyond 1e100 mm; check the units of the loads, "
             "the modulus and the tilt lever",
         )
-    bad = np.broadcast_to(big_a, scale.shape) / scale > GEOMETRY_RATIO_MAX
+    a = big_a if np.shape(big_a) == scale.shape else np.broadcast_to(big_a, scale.shape)
+    bad = a / scale > GEOMETRY_RATIO_MAX
     if bad.any():
-        f_min = float(
-            np.max(k_ref * (np.broadcast_to(big_a, scale.shape) / GEOMETRY_RATIO_MAX) ** 1.5)
-        )
+        f_min = float(np.max(k_ref * (a / GEOMETRY_RATIO_MAX) ** 1.5))
         step = 10.0 ** (math.floor(math.log10(f_min)) - 1)  # shown to 2 digits, rounded up
         f_min = math.ceil(f_min / step * (1 - 1e-12)) * step
         raise InputError(
@@ -1024,7 +1022,7 @@ def _check_angular_scale(
 ) -> None:
     """Refuse loads so large against an angular-contact bearing's groove geometry A that its
     one-sided equilibrium is not solved reliably (see :data:`ANGULAR_RATIO_MIN`)."""
-    a = np.broadcast_to(big_a, f_ref.shape)
+    a = big_a if np.shape(big_a) == f_ref.shape else np.broadcast_to(big_a, f_ref.shape)
     with np.errstate(over="ignore", divide="ignore"):
         bad = a / (f_ref / k_ref) ** (2.0 / 3.0) < ANGULAR_RATIO_MIN
     if bad.any():
@@ -1041,7 +1039,7 @@ def _check_angular_scale(
         )
 
 
-def _directions(z: int, cage: np.ndarray) -> tuple[np.ndarray, np.ndarray, np.ndarray]:
+def ball_directions(z: int, cage: np.ndarray) -> tuple[np.ndarray, np.ndarray, np.ndarray]:
     """cos and sin of every ball's angle (n, z), and which cases are symmetric about the load
     line (n,): a cage at 0 or half a pitch, within the radial engine's snap (rounding); the
     compiled core's ``directions``.
@@ -1057,7 +1055,7 @@ def _directions(z: int, cage: np.ndarray) -> tuple[np.ndarray, np.ndarray, np.nd
     return _core.directions(z, np.ascontiguousarray(cage, dtype=float), SYMMETRY_SNAP_DEG)
 
 
-def _locks(
+def symmetry_locks(
     z: int, mirror: np.ndarray, loads: tuple[np.ndarray, ...], t_imp: np.ndarray, imposed: bool
 ) -> tuple[np.ndarray, np.ndarray]:
     """Which of (x, y, a, t, t_c) each case holds: (held (n, 5), imposed (n, 5)).
@@ -1073,20 +1071,14 @@ def _locks(
     fr, fa, mm, mc = loads
     n = fr.shape[0]
     no_tilt = (mm == 0) & (mc == 0) & (t_imp == 0)
-    held = np.zeros((n, 5), dtype=bool)
-    held[:, 3] = imposed
-    held |= (mirror & (mc == 0))[:, None] & _ACROSS
-    held |= ((fa == 0) & no_tilt)[:, None] & _AXIAL
-    held |= ((fr == 0) & no_tilt & (z >= 2))[:, None] & _RADIAL
-    return held, (held & _TILT) if imposed else np.zeros((n, 5), dtype=bool)
-
-
-#: The components (x, y, a, t, t_c) held by each symmetry of :func:`_locks`: about the load
-#: line, across the mid-plane, the z-fold one; and the tilt. [-]
-_ACROSS = np.array([False, True, False, False, True])
-_AXIAL = np.array([False, False, True, True, True])
-_RADIAL = np.array([True, True, False, True, True])
-_TILT = np.array([False, False, False, True, False])
+    across, axial = mirror & (mc == 0), (fa == 0) & no_tilt
+    radial = (fr == 0) & no_tilt if z >= 2 else np.zeros(n, dtype=bool)
+    held = np.empty((n, 5), dtype=bool)
+    held[:, 0], held[:, 1], held[:, 2] = radial, across | radial, axial
+    held[:, 3], held[:, 4] = (axial | radial) | imposed, across | axial | radial
+    fixed = np.zeros((n, 5), dtype=bool)
+    fixed[:, 3] = imposed
+    return held, fixed
 
 
 #: An angular-contact case whose groove-centre distance A exceeds LIGHT_RATIO times its one-ball
@@ -1099,7 +1091,7 @@ STAGE = 3.0
 
 
 def _light_start(
-    p: Problem, geo: _Geometry, curve: _StiffnessCurve | None
+    p: Problem, geo: _Geometry, curve: StiffnessCurve | None
 ) -> tuple[np.ndarray, np.ndarray]:
     """The light angular-contact cases (ratio A/(F/K)^(2/3) above LIGHT_RATIO) and their starts
     (rows, (rows, 5)): the answer of the same case (the same load directions, misalignment and
@@ -1123,6 +1115,8 @@ def _light_start(
     single precision, the far balls' approaches, 1e-2 at a ratio of 8e6, would be lost); it is
     a function of the case alone (each case is solved alone), and whatever its residual, the
     light case is solved and checked as any other."""
+    if not p.one_sided.any():
+        return np.zeros(0, dtype=np.int64), np.zeros((0, 5))
     rows = np.flatnonzero(p.one_sided & (p.a_hat > LIGHT_RATIO))
     if not rows.size:
         return rows, np.zeros((0, 5))
@@ -1134,7 +1128,7 @@ def _light_start(
         t_imp=p.t_imp[rows] * p.scale[rows], locked=p.locked[rows], imposed=p.imposed[rows],
         f_ref=f_ref, k_ref=p.k_ref[rows], one_sided=p.one_sided[rows],
     )  # fmt: skip
-    own = None if curve is None else _StiffnessCurve(curve.values[rows])
+    own = None if curve is None else StiffnessCurve(curve.values[rows])
     vh, vl, *_, failed = _solve_with_stiffness(heavy, sub, own, strict=False)
     v = (vh + vl) * (heavy.scale / p.scale[rows])[:, None]
     kept = ~failed  # (a start only: where the heavier case fails, the standard one stays)
@@ -1154,8 +1148,8 @@ THRUST_STAGE_MIN = 1.01
 THRUST_STAGES_MAX = 200
 
 
-def _thrust_retry(p: Problem, geo: _Geometry, curve: _StiffnessCurve | None) -> tuple:
-    """:func:`_solve_with_stiffness` of ``p``, with the angular-contact cases that did not
+def _thrust_retry(p: Problem, geo: _Geometry, curve: StiffnessCurve | None, got: tuple) -> tuple:
+    """``got``, :func:`_solve_with_stiffness` of ``p``, with the angular-contact cases that did not
     converge (residual above ACCEPT), under F_r and 0 < F_a < THRUST_RATIO F_r, solved
     again by :func:`_thrust_path`, each alone; a case keeps its first answer (and so its
     ConvergenceError) where that does not converge either. Only such cases are touched: a case
@@ -1175,10 +1169,10 @@ def _thrust_retry(p: Problem, geo: _Geometry, curve: _StiffnessCurve | None) -> 
     u_j < 0, the loads 30 times F_r), while 2.26 N and 4.5 N solve at once. At F_a =
     THRUST_RATIO F_r more balls carry load and the standard start converges; each stage starts
     from the answer of the one before, nearly the same ring position."""
-    vh, vl, kappa, total, end, tangent = _solve_with_stiffness(p, geo, curve)
+    vh, vl, kappa, total, end, tangent = got
     if not p.one_sided.any():
         return vh, vl, kappa, total, end, tangent
-    res = _ring.residual(p, end.gen, end.size, p.imposed)
+    res = _ring.residual_of(p.f, end.gen, end.size, p.imposed)
     f0, f2 = p.f[:, 0], p.f[:, 2]
     rows = np.flatnonzero(
         ~(res <= ACCEPT) & p.one_sided & (f0 > 0) & (f2 > 0) & (f2 < THRUST_RATIO * f0)
@@ -1186,11 +1180,10 @@ def _thrust_retry(p: Problem, geo: _Geometry, curve: _StiffnessCurve | None) -> 
     )  # fmt: skip
     for i in rows.tolist():
         one = np.array([i])
-        own = None if curve is None else _StiffnessCurve(curve.values[one])
-        got = _thrust_path(p.take(one), _geo_take(geo, one), own)
-        if got is None:
-            continue
-        _put_row((vh, vl, kappa, total, end, tangent), i, got)
+        own = None if curve is None else StiffnessCurve(curve.values[one])
+        again = _thrust_path(p.take(one), _geo_take(geo, one), own)
+        if again is not None:
+            _put_row((vh, vl, kappa, total, end, tangent), i, again)
     return vh, vl, kappa, total, end, tangent
 
 
@@ -1205,11 +1198,11 @@ def _put_row(got: tuple, i: int, again: tuple) -> None:
     tangent[1][0][i], tangent[1][1][i] = again[5][1][0][0], again[5][1][1][0]
 
 
-def _solve_row(q: Problem, geo: _Geometry, curve: _StiffnessCurve | None, i: int) -> tuple:
+def _solve_row(q: Problem, geo: _Geometry, curve: StiffnessCurve | None, i: int) -> tuple:
     """Case ``i``'s problem ``q`` (one row, changed by the caller) solved alone with its own
     geometry and stiffness curve (:func:`_solve_with_stiffness`)."""
     one = np.array([i])
-    own = None if curve is None else _StiffnessCurve(curve.values[one])
+    own = None if curve is None else StiffnessCurve(curve.values[one])
     return _solve_with_stiffness(q, _geo_take(geo, one), own)
 
 
@@ -1223,7 +1216,7 @@ def _solve_row(q: Problem, geo: _Geometry, curve: _StiffnessCurve | None, i: int
 NEGLIGIBLE_THRUST = 1e-12
 
 
-def _neglect_thrust(p: Problem, geo: _Geometry, curve: _StiffnessCurve | None, got: tuple) -> Any:
+def _neglect_thrust(p: Problem, geo: _Geometry, curve: StiffnessCurve | None, got: tuple) -> Any:
     """The cases of ``got`` (as :func:`_thrust_retry` returns them, updated in place) left
     unbalanced with a thrust below :data:`NEGLIGIBLE_THRUST` of their largest load, solved
     each alone with that share as its thrust (``p.f`` then holds it); which cases those are
@@ -1234,7 +1227,7 @@ def _neglect_thrust(p: Problem, geo: _Geometry, curve: _StiffnessCurve | None, g
     if not small.any():
         return neglected
     end = got[4]
-    res = _ring.residual(p, end.gen, end.size, p.imposed)
+    res = _ring.residual_of(p.f, end.gen, end.size, p.imposed)
     for i in np.flatnonzero(small & ~(res <= ACCEPT)).tolist():
         q = p.take(np.array([i]))
         q.f[:, 2] = np.copysign(NEGLIGIBLE_THRUST, f2[i])
@@ -1253,7 +1246,7 @@ NEAR_SYMMETRIC_DEG = 1e-9
 
 
 def _near_symmetric(
-    p: Problem, geo: _Geometry, curve: _StiffnessCurve | None, got: tuple, cage: np.ndarray
+    p: Problem, geo: _Geometry, curve: StiffnessCurve | None, got: tuple, cage: np.ndarray
 ) -> None:
     """The cases of ``got`` (updated in place) left unbalanced with a cage within
     :data:`NEAR_SYMMETRIC_DEG` of a symmetric position and no moment across the load line,
@@ -1261,7 +1254,7 @@ def _near_symmetric(
     from bearingload.models import _core
 
     end = got[4]
-    res = _ring.residual(p, end.gen, end.size, p.imposed)
+    res = _ring.residual_of(p.f, end.gen, end.size, p.imposed)
     rows = np.flatnonzero(~(res <= ACCEPT) & (p.f[:, 4] == 0) & ~p.imposed.any(axis=1))
     for i in rows.tolist():
         one = np.array([i])
@@ -1274,7 +1267,7 @@ def _near_symmetric(
         p.c[i], p.s[i], p.locked[i] = c[0], s[0], q.locked[0]
 
 
-def _thrust_path(q: Problem, geo: _Geometry, curve: _StiffnessCurve | None) -> tuple | None:
+def _thrust_path(q: Problem, geo: _Geometry, curve: StiffnessCurve | None) -> tuple | None:
     """One case (``q`` of one row) solved by the continuation in the thrust of
     :func:`_thrust_retry`: the answer (as :func:`_solve_with_stiffness`, the iterations of
     every stage summed) at its own F_a, or None where a stage at THRUST_RATIO F_r, or one whose
@@ -1291,7 +1284,9 @@ def _thrust_path(q: Problem, geo: _Geometry, curve: _StiffnessCurve | None) -> t
         stage = dataclasses.replace(q, f=f)
         try:
             got = _solve_with_stiffness(stage, geo, curve, v0)
-            ok = bool(_ring.residual(stage, got[4].gen, got[4].size, stage.imposed)[0] <= ACCEPT)
+            ok = bool(
+                _ring.residual_of(stage.f, got[4].gen, got[4].size, stage.imposed)[0] <= ACCEPT
+            )
             its += int(got[3][0])
         except ConvergenceError:
             ok = False
@@ -1314,19 +1309,22 @@ def _geo_take(geo: _Geometry, rows: np.ndarray) -> _Geometry:
 
 #: Chebyshev nodes of the stiffness curve (first kind) on [-1, 1], their barycentric weights
 #: and cos(alpha) at each. [-]
-_NODES = 24
-_NODE_THETA = (2.0 * np.arange(_NODES) + 1.0) * np.pi / (2.0 * _NODES)
-_NODE_X = np.cos(_NODE_THETA)
-_NODE_W = np.where(np.arange(_NODES) % 2 == 0, 1.0, -1.0) * np.sin(_NODE_THETA)
-_NODE_COS = (_NODE_X + 1.0) / 2.0
+NODES = 24
+NODE_THETA = (2.0 * np.arange(NODES) + 1.0) * np.pi / (2.0 * NODES)
+NODE_X = np.cos(NODE_THETA)
+NODE_W = np.where(np.arange(NODES) % 2 == 0, 1.0, -1.0) * np.sin(NODE_THETA)
+NODE_COS = (NODE_X + 1.0) / 2.0
 #: Distinct geometries whose Hertz set-up the speed model (:mod:`bearingload.models.high_speed`)
-#: keeps across calls, the least recently used dropped first. [-]
+#: and :func:`hertz_setup` of one case keep across calls, the oldest dropped first. [-]
 SETUP_CACHE_SIZE = 256
+#: :func:`hertz_setup` of the last one-case calls, by their six parameters' bits: the values
+#: the core gives that geometry every time, kept so a call on a known bearing skips them.
+_SETUP_CACHE: dict[bytes, tuple[np.ndarray, np.ndarray]] = {}
 
 
-def _hertz_setup(geo: _Geometry, e: np.ndarray, nu: np.ndarray) -> tuple[np.ndarray, np.ndarray]:
+def hertz_setup(geo: _Geometry, e: np.ndarray, nu: np.ndarray) -> tuple[np.ndarray, np.ndarray]:
     """Per case, K_0 = K(alpha = 0) [N/mm^1.5] (n,) and the divided differences ``D(c) = (K(c)/
-    K_0 - 1)/(c - 1)`` at the nodes of :class:`_StiffnessCurve` (n, NODES), in the compiled core
+    K_0 - 1)/(c - 1)`` at the nodes of :class:`StiffnessCurve` (n, NODES), in the compiled core
     (``hertz_curves``: the scalar path of :func:`bearingload.contact.hertz.ball_stiffness`, the
     same bits, per case; a case of the geometry of the case before it takes its values). A
     geometry the core cannot set up goes through the vectorised path of ``ball_stiffness``,
@@ -1338,15 +1336,22 @@ def _hertz_setup(geo: _Geometry, e: np.ndarray, nu: np.ndarray) -> tuple[np.ndar
     params = np.empty((geo.D_w.shape[0], 6))
     for i, column in enumerate((geo.D_w, geo.d_m, geo.f_i, geo.f_o, e, nu)):
         params[:, i] = column
-    k0, values, bad = _core.hertz_curves(params, _NODE_X)
+    key = params.tobytes() if params.shape[0] == 1 else None
+    if key in _SETUP_CACHE:
+        return tuple(a.copy() for a in _SETUP_CACHE[key])
+    k0, values, bad = _core.hertz_curves(params, NODE_X)
     for i in np.flatnonzero(bad).tolist():
         dw, dm, fi, fo, ee, nn = params[i]
-        k = ball_stiffness(dw, dm / np.append(_NODE_COS, 1.0), fi, fo, ee, nn).ball
-        k0[i], values[i] = k[-1], (k[:-1] / k[-1] - 1.0) / (_NODE_COS - 1.0)
+        k = ball_stiffness(dw, dm / np.append(NODE_COS, 1.0), fi, fo, ee, nn).ball
+        k0[i], values[i] = k[-1], (k[:-1] / k[-1] - 1.0) / (NODE_COS - 1.0)
+    if key is not None:
+        _SETUP_CACHE[key] = (k0.copy(), values.copy())
+        while len(_SETUP_CACHE) > SETUP_CACHE_SIZE:
+            _SETUP_CACHE.pop(next(iter(_SETUP_CACHE)))  # the oldest first
     return k0, values
 
 
-class _StiffnessCurve:
+class StiffnessCurve:
     """K(alpha)/K_0 - 1 of each case's geometry, from a Chebyshev interpolant in cos(alpha).
 
     ``K`` depends on the angle only through ``c = cos(alpha)`` in the curvature sums, smoothly
@@ -1358,12 +1363,10 @@ class _StiffnessCurve:
     against :func:`ball_stiffness_at`. One Hertz evaluation per node and distinct geometry.
     """
 
-    NODES = _NODES
-
     def __init__(self, values: np.ndarray) -> None:
-        """``values``: D at the nodes over each case's K_0, (n, NODES) (:func:`_hertz_setup`)."""
-        self.x = _NODE_X
-        self.w = _NODE_W
+        """``values``: D at the nodes over each case's K_0, (n, NODES) (:func:`hertz_setup`)."""
+        self.x = NODE_X
+        self.w = NODE_W
         self.values = values
 
     def __call__(self, idx: np.ndarray, cos_alpha: np.ndarray, cos_m1: np.ndarray) -> np.ndarray:
@@ -1376,7 +1379,7 @@ class _StiffnessCurve:
 def _solve_with_stiffness(
     p: Problem,
     geo: _Geometry,
-    curve: _StiffnessCurve | None,
+    curve: StiffnessCurve | None,
     v0: np.ndarray | None = None,
     strict: bool = True,
 ) -> tuple[Any, ...]:
@@ -1407,12 +1410,12 @@ def _solve_with_stiffness(
           (p.a_hat, p.pre, p.gap, p.b_hi, p.b_lo, p.t_imp, p.f)),
         np.ascontiguousarray(p.locked, dtype=np.uint8),
         np.ascontiguousarray(p.one_sided, dtype=np.uint8),
-        np.ascontiguousarray(values, dtype=float), _NODE_X, _NODE_W,
+        np.ascontiguousarray(values, dtype=float), NODE_X, NODE_W,
         np.ascontiguousarray(start0, dtype=float), given,
         max_iterations=_ring.MAX_ITERATIONS, first_stage_steps=_ring.FIRST_STAGE_STEPS,
     )  # fmt: skip
     balls, gen, size, res = at
-    failed = status != _core.Status.OK
+    failed = status != _ring.OK
     if strict and failed.any():  # the cases by their rows: the caller names their inputs
         raise ConvergenceError(
             "combined-load ball stiffness update",
@@ -1420,9 +1423,9 @@ def _solve_with_stiffness(
             float(np.max(res[failed])),
             {"rows": np.flatnonzero(failed)},
         )
-    q0 = np.where(p.deviation, p.pre * np.sqrt(p.pre), 0.0)
+    q0 = p.pre * np.sqrt(p.pre) if p.z >= 2 else np.zeros(n)  # (p^1.5 = 0 without preload)
     loads = _ring.Loads(*balls[5:], q0)  # type: ignore[call-arg]
-    point = _ring.Point(_ring.Balls(*balls[:5]), loads, gen, size, res, np.zeros(n, np.int64))
+    point = _ring.Point(_ring.Balls(*balls[:5]), loads, gen, size, res)
     if not strict:
         return vh, vl, kappa, total, point, (tangent, holding), failed
     return vh, vl, kappa, total, point, (tangent, holding)
@@ -1434,7 +1437,7 @@ def _checked(p: Problem, end: _ring.Point, its: np.ndarray, given: dict) -> tupl
     sits at the groove edge (its groove centres crossed, or its contact angle 90° to the
     digits of a double). ``end``: the point at the answer (:func:`_solve_with_stiffness`)."""
     b, lo, gen, size = end.b, end.lo, end.gen, end.size
-    res = _ring.residual(p, gen, size, p.imposed)
+    res = _ring.residual_of(p.f, gen, size, p.imposed)
     bad = ~(res <= ACCEPT)
     if bad.any():
         known = res[bad][~np.isnan(res[bad])]  # nanmax of all-NaN would warn on the terminal
@@ -1447,10 +1450,12 @@ def _checked(p: Problem, end: _ring.Point, its: np.ndarray, given: dict) -> tupl
         )
     # crossed groove centres, or a contact angle that rounds to 90° (a minimum may sit at the
     # edge: there the potential's curvature across the groove ends)
-    edge = (lo.root > 0) & ((b.rho <= 0) | (np.rad2deg(np.arctan2(np.abs(lo.sa), lo.ca)) >= 90.0))
-    if edge.any():
-        case, ball = (int(i[0]) for i in np.nonzero(edge))
-        _refuse_edge(case, ball, given)
+    near = (lo.root > 0) & ((b.rho <= 0) | (lo.ca < 1e-8))  # (elsewhere below 90° - 5e-7°)
+    if near.any():
+        edge = near & ((b.rho <= 0) | (np.rad2deg(np.arctan2(np.abs(lo.sa), lo.ca)) >= 90.0))
+        if edge.any():
+            case, ball = (int(i[0]) for i in np.nonzero(edge))
+            _refuse_edge(case, ball, given)
     return b, lo, gen
 
 
@@ -1488,22 +1493,6 @@ def _refuse_edge(case: int, ball: int, given: dict) -> None:
     )
 
 
-def _physical(p: Problem, geo: _Geometry, t: np.ndarray, mirrored: np.ndarray) -> np.ndarray:
-    """The scaled tangent ``t`` (n, 5, 5, changed in place) in physical units, the couplings
-    of the mirrored cases and those within the rounding of their sums over the balls exactly 0
-    (the core's ``physical``: ``|K_ab| <= sqrt(K_aa K_bb)`` for this positive semi-definite
-    matrix, so a coupling below 4 z eps of that does not follow the order of the summation)."""
-    from bearingload.models import _core
-
-    radius = np.ascontiguousarray(geo.R_i, dtype=float)
-    if _core.physical(t, p.f_ref / p.scale, radius, mirrored.view(np.uint8), p.z).any():
-        # a lever of 1e300 mm: its square times K overflows
-        raise InputError(
-            "tilt_radius", "is so large that the tilting stiffness (lever^2 K) overflows"
-        )
-    return t
-
-
 def physical_tangent(
     p: Problem, geo: _Geometry, tangent: np.ndarray, mirrored: np.ndarray
 ) -> np.ndarray:
@@ -1519,11 +1508,22 @@ def physical_tangent(
     matrix returned is that tangent, not quite symmetric (its symmetric part is the results'
     ``stiffness_matrix_symmetric``); with a constant ``stiffness`` it is symmetric. In a
     case symmetric about the load line (``mirrored``: the balls and the loads) the couplings of
-    (x, axial, tilt) with (y, tilt_cross) are 0, exactly rather than to rounding."""
-    return _physical(p, geo, tangent.copy(), mirrored)
+    (x, axial, tilt) with (y, tilt_cross) are 0, exactly rather than to rounding, as are the
+    couplings within the rounding of their sums over the balls (the core's ``physical``:
+    ``|K_ab| <= sqrt(K_aa K_bb)`` for this positive semi-definite matrix, so a coupling below 4
+    z eps of that does not follow the order of the summation)."""
+    from bearingload.models import _core
+
+    t, radius = tangent.copy(), np.ascontiguousarray(geo.R_i, dtype=float)
+    if _core.physical(t, p.f_ref / p.scale, radius, mirrored.view(np.uint8), p.z).any():
+        # a lever of 1e300 mm: its square times K overflows
+        raise InputError(
+            "tilt_radius", "is so large that the tilting stiffness (lever^2 K) overflows"
+        )
+    return t
 
 
-def _result(
+def distribution(
     p: Problem,
     geo: _Geometry,
     answer: tuple[Any, ...],
@@ -1537,7 +1537,17 @@ def _result(
     undetermined, neglected = (None, None) if flags is None else flags
     v, kappa, its, (b, lo, gen), tangent = answer
     q = p.f_ref[:, None] * lo.q
-    t = v[:, 3] + p.t_imp
+    w = v.copy()  # x, y, a, t, t_c [mm], the tilts then over the lever [rad]
+    w[:, 3] += p.t_imp
+    w *= p.scale[:, None]
+    w[:, 3:] /= geo.R_i[:, None]
+    sin0 = np.sin(geo.alpha0)
+    play, axial = 2.0 * geo.A * sin0, w[:, 2]
+    if p.one_sided.any():  # measured from the zero-load position, no play
+        play, axial = (
+            np.where(p.one_sided, 0.0, play),
+            axial - np.where(p.one_sided, geo.A * sin0, 0.0),
+        )
     mm = given["moment"]
     moment = geo.R_i * p.f_ref * gen[:, 3] if misalignment is not None else mm
     z = p.z
@@ -1558,12 +1568,12 @@ def _result(
         clearance=case(given["clearance"]),
         cage_angle=case(cage),
         free_contact_angle=case(np.rad2deg(geo.alpha0)),
-        axial_play=case(np.where(p.one_sided, 0.0, 2.0 * geo.A * np.sin(geo.alpha0))),
-        x=case(v[:, 0] * p.scale),
-        y=case(v[:, 1] * p.scale),
-        axial=case(v[:, 2] * p.scale - np.where(p.one_sided, geo.A * np.sin(geo.alpha0), 0.0)),
-        tilt=case(np.rad2deg(t * p.scale / geo.R_i)),
-        tilt_cross=case(np.rad2deg(v[:, 4] * p.scale / geo.R_i)),
+        axial_play=case(play),
+        x=case(w[:, 0]),
+        y=case(w[:, 1]),
+        axial=case(axial),
+        tilt=case(np.rad2deg(w[:, 3])),
+        tilt_cross=case(np.rad2deg(w[:, 4])),
         ball_angles=ball(phi),
         contact_angles=ball(np.rad2deg(np.arctan2(lo.sa, lo.ca))),
         ball_approaches=ball((p.pre[:, None] + b.eps) * p.scale[:, None]),

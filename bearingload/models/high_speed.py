@@ -264,9 +264,9 @@ def stiffness_nodes(geo: Any, e: np.ndarray, nu: np.ndarray) -> tuple[np.ndarray
     return np.stack(rows_i)[:, None, :], np.stack(rows_o)[:, None, :]
 
 
-_NODE_COS = _combined._NODE_COS
-_NODE_X = _combined._NODE_X
-_NODE_W = _combined._NODE_W
+_NODE_COS = _combined.NODE_COS
+_NODE_X = _combined.NODE_X
+_NODE_W = _combined.NODE_W
 _NODE_CACHE: dict[tuple[float, ...], tuple[np.ndarray, np.ndarray]] = {}
 
 
@@ -397,8 +397,8 @@ def solve_high_speed(
     flat = dict(zip(given, columns, strict=False))
     case_arrays: dict[str, Any] = dict(zip(at_rest, columns[len(given) :], strict=False))
     dw, dm, fi, fo, e, nu, rho_b, alpha_d = columns[len(given) + len(at_rest) :]
-    geo = (_combined._geometry(dw, dm, fi, fo, flat["clearance"]) if contact_angle is None
-           else _combined._angular_geometry(dw, dm, fi, fo, alpha_d))  # fmt: skip
+    geo = (_combined.ring_geometry(dw, dm, fi, fo, flat["clearance"]) if contact_angle is None
+           else _combined.angular_geometry(dw, dm, fi, fo, alpha_d))  # fmt: skip
     geo = dataclasses.replace(geo, R_i=case_arrays["tilt_radius"])
     one_sided = np.full(dw.shape, contact_angle is not None)
     static_kw = dict(ball_diameter=dw, pitch_diameter=dm, f_i=fi, f_o=fo, modulus=e,
@@ -616,12 +616,12 @@ def _solve(
     answer; a case left unbalanced again from the shifted start (:func:`_dynamic_start`), then
     by the continuation in speed."""
     n = geo.D_w.shape[0]
-    c, s, mirror = _combined._directions(z, np.mod(flat["cage_angle"], 360.0))
+    c, s, mirror = _combined.ball_directions(z, np.mod(flat["cage_angle"], 360.0))
     fr, fa, mm, mc = (flat[k] for k in ("radial_load", "axial_load", "moment", "moment_cross"))
     rr = geo.R_i
     t_imp = rr * np.deg2rad(flat["misalignment"]) if imposed_tilt else np.zeros(n)
-    held, fixed = _combined._locks(z, mirror, (fr, fa, mm, mc), t_imp, imposed_tilt)
-    f_ref = _combined._reference_force(fr, fa, mm, mc, rr)
+    held, fixed = _combined.symmetry_locks(z, mirror, (fr, fa, mm, mc), t_imp, imposed_tilt)
+    f_ref = _combined.reference_force(fr, fa, mm, mc, rr)
     f = np.zeros((n, 5))
     f[:, 0], f[:, 2], f[:, 3], f[:, 4] = fr, fa, mm / rr, mc / rr
     shift = np.where(one_sided, geo.A * np.sin(geo.alpha0), 0.0)

@@ -231,8 +231,8 @@ def _solve_stages(pp: _Pair, v0: np.ndarray, curve: Any) -> tuple[Any, ...]:
     balls_in = (p.c, p.s, p.a_hat, p.pre, p.gap, p.b_hi, p.b_lo)
     cont = np.ascontiguousarray
     args = [cont(a, dtype=float) for a in balls_in + (pp.sigma, -pp.lever, pp.preload, pp.f)]
-    args += [cont(pp.held, dtype=np.uint8), cont(values, dtype=float), _comb._NODE_X]
-    out = _core.solve_pair(*args, _comb._NODE_W, cont(v0, dtype=float))
+    args += [cont(pp.held, dtype=np.uint8), cont(values, dtype=float), _comb.NODE_X]
+    out = _core.solve_pair(*args, _comb.NODE_W, cont(v0, dtype=float))
     vh, vl, res, its, _, balls, kappa, gen, tangents, local, delta_p = out
     q0 = np.where(p.deviation, p.pre * np.sqrt(p.pre), 0.0)
     loads = [_ring.Loads(*balls[5:, k], q0) for k in range(2)]  # type: ignore[call-arg]
@@ -430,7 +430,7 @@ _UNITS = {"radial_load": "N", "axial_load": "N", "moment": "N mm", "moment_cross
 
 def _solve(z: int, kind: str, c: dict, shape: tuple[int, ...]) -> PairDistribution:
     """The pair of the flat, checked cases ``c``."""
-    geo = _comb._angular_geometry(c["ball_diameter"], c["pitch_diameter"], c["f_i"], c["f_o"],
+    geo = _comb.angular_geometry(c["ball_diameter"], c["pitch_diameter"], c["f_i"], c["f_o"],
                                   c["contact_angle"])  # fmt: skip
     if "tilt_radius" in c:
         geo = dataclasses.replace(geo, R_i=c["tilt_radius"].astype(float))
@@ -439,10 +439,10 @@ def _solve(z: int, kind: str, c: dict, shape: tuple[int, ...]) -> PairDistributi
         k_ref = c["stiffness"]
     else:
         k_ref, values = _hertz(geo, c["modulus"], c["poisson"])
-        curve = _comb._StiffnessCurve(values)
+        curve = _comb.StiffnessCurve(values)
     fr, fa, mm, mc, fp = (c[k] for k in ("radial_load", "axial_load", "moment", "moment_cross",
                                          "preload"))  # fmt: skip
-    f_ref = np.maximum(_comb._reference_force(fr, fa, mm, mc, geo.R_i), fp)
+    f_ref = np.maximum(_comb.reference_force(fr, fa, mm, mc, geo.R_i), fp)
     if (f_ref <= 0).any():
         raise InputError("radial_load", "give a radial load, an axial load, a moment or a preload")
 
@@ -451,7 +451,7 @@ def _solve(z: int, kind: str, c: dict, shape: tuple[int, ...]) -> PairDistributi
         return {"preload": fp} | _comb.load_sizes(fr, fa, mm, mc, geo.R_i)
 
     try:
-        _comb._check_scale(f_ref, k_ref, geo.A, sizes=sizes)
+        _comb.check_scale(f_ref, k_ref, geo.A, sizes=sizes)
     except InputError as exc:  # its advice (the radial solver) does not apply to a pair
         if exc.reason not in (_comb.TOO_LIGHT, _comb.TOO_LIGHT_ANGULAR):
             raise
@@ -462,7 +462,7 @@ def _solve(z: int, kind: str, c: dict, shape: tuple[int, ...]) -> PairDistributi
             f"the preload is {float(np.min(f_ref)):.3g} N; it takes at least {f_min:.2g} N for "
             "this bearing)",
         ) from exc
-    cos_, sin_, mirror = _comb._directions(z, c["cage_angle"])
+    cos_, sin_, mirror = _comb.ball_directions(z, c["cage_angle"])
     n = fr.size
     f = np.zeros((n, 5))
     f[:, 0], f[:, 2], f[:, 3], f[:, 4] = fr, fa, mm / geo.R_i, mc / geo.R_i
@@ -490,7 +490,7 @@ def _hertz(geo: Any, e: np.ndarray, nu: np.ndarray) -> tuple[np.ndarray, np.ndar
     if all(key in _HERTZ_CACHE for key in keys):
         rows = [_HERTZ_CACHE[key] for key in keys]
         return np.array([r[0] for r in rows]), np.stack([r[1] for r in rows])
-    k0, values = _comb._hertz_setup(geo, e, nu)
+    k0, values = _comb.hertz_setup(geo, e, nu)
     for i, key in enumerate(keys):
         _HERTZ_CACHE[key] = (float(k0[i]), values[i].copy())
         while len(_HERTZ_CACHE) > _comb.SETUP_CACHE_SIZE:
@@ -572,7 +572,7 @@ def _result(kind: str, pp: _Pair, geo: Any, answer: tuple[Any, ...], c: dict,
                  "clearance": np.zeros(n),
                  "cage_angle": c["cage_angle"]}  # fmt: skip
         out = (st.local[k], st.kappa[k], its, (st.balls[k], lo, gen), tangent)
-        bearings.append(_comb._result(p, geo, out, shape, given, None))
+        bearings.append(_comb.distribution(p, geo, out, shape, given, None))
         total += maps[:, k].transpose(0, 2, 1) @ tangent @ maps[:, k]
     total[mirrored[:, None, None] & _COUPLING] = 0.0
     unloaded = np.empty((n, 2), dtype=bool)

@@ -245,16 +245,16 @@ def _column(r: Any, name: str, shape: tuple[int, ...]) -> np.ndarray:
 def _setup(static: PairDistribution, c: dict, shape: tuple[int, ...]) -> tuple[Any, ...]:
     """The shaft problem at the static pair's answer: (shaft, geometry, its position)."""
     z = int(static.bearings[0].balls)
-    geo = _comb._angular_geometry(c["ball_diameter"], c["pitch_diameter"], c["f_i"], c["f_o"],
+    geo = _comb.angular_geometry(c["ball_diameter"], c["pitch_diameter"], c["f_i"], c["f_o"],
                                   c["contact_angle"])  # fmt: skip
     radius = _column(static.bearings[0], "tilt_radius", shape)
     geo = dataclasses.replace(geo, R_i=radius)
     n = radius.size
     b = _hs.ball_set(geo, c["modulus"], c["poisson"], c["speed"], c["ball_density"])
-    cos_, sin_, mirror = _comb._directions(z, c["cage_angle"])
+    cos_, sin_, mirror = _comb.ball_directions(z, c["cage_angle"])
     fr, fa, mm, mc, fp = (c[k] for k in ("radial_load", "axial_load", "moment", "moment_cross",
                                          "preload"))  # fmt: skip
-    f_ref = np.maximum(_comb._reference_force(fr, fa, mm, mc, radius), fp)
+    f_ref = np.maximum(_comb.reference_force(fr, fa, mm, mc, radius), fp)
     ring = _hs.ring(b, (cos_, sin_), geo, f_ref, np.ones(n, dtype=bool))
     kind = static.arrangement
     maps = shaft_maps(signs(kind), levers(kind, c["width"], radius))
