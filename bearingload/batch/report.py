@@ -134,6 +134,8 @@ def _columns(header: Header) -> list[Column]:
         given = [k for k in given if k not in service or k in wanted]
         return [column(k, 1.5) for k in ("row", *given)]
     answer = [k for k in REPORT_KEYS if k != "relative_error"]
+    at = answer.index("speed") + 1  # a ball bearing's row at speed: the ball dynamics' density
+    answer = [*answer[:at], "ball_density", *answer[at:]]
     answer = [k for k in answer if k not in service or k in wanted]
     keys = ["row", *INPUT_KEYS, *answer, "valid"]
     if not header.has_bearing:

@@ -85,9 +85,10 @@ def batch(
     A bad row (a negative load, an unknown unit or bearing, z = 0, a line with the wrong
     number of cells, a line that is not UTF-8 text) is skipped: the output keeps it with its
     row number and the reason (csv: the last column, skipped; json: skipped; table and
-    markdown: the notes), standard error names it too; the other rows are still solved and
-    written, and the exit status is 1 when any row was skipped (0: every row solved; 2: bad
-    command line or header, or a bad row with --strict). A last line on standard error counts
+    markdown: the notes), standard error names it too ('Skipped: row N: reason', apart from
+    the warnings of the solved rows); the other rows are still solved and written, and the
+    exit status is 1 when any row was skipped (0: every row solved; 2: bad command line or
+    header, or a bad row with --strict). A last line on standard error counts
     the rows solved and skipped and the warnings; -q leaves that line alone.
 
     The rows that share a bearing (or ring), method and engine are solved together, chunk by
@@ -197,9 +198,10 @@ def _summary(total: int, skipped: int, warned: int, quiet: bool) -> None:
 
 
 def _row_messages(part: Any, warned: int, progress: _Progress, quiet: bool) -> int:
-    """Print the chunk's skipped rows and the checks' warnings in row order (so that stderr
-    does not depend on --chunk-size), the warnings up to :data:`MAX_WARNINGS_SHOWN` in all
-    (``quiet``: none of them); return the number of warnings so far."""
+    """Print the chunk's skipped rows (``Skipped: row N: reason``) and the checks' warnings
+    (``Warning: row N: ...``) in row order (so that stderr does not depend on --chunk-size),
+    the warnings up to :data:`MAX_WARNINGS_SHOWN` in all (``quiet``: none of them); return the
+    number of warnings so far."""
     found = part.values.get("warnings", [])
     messages = [(row, text, False) for row, text in part.errors]
     messages += [(part.rows[i], text, True)
@@ -208,7 +210,7 @@ def _row_messages(part: Any, warned: int, progress: _Progress, quiet: bool) -> i
         warned += warning
         if not quiet and (not warning or warned <= MAX_WARNINGS_SHOWN):
             progress.clear()
-            click.echo(f"Warning: row {row}: {text}", err=True)
+            click.echo(f"{'Warning' if warning else 'Skipped'}: row {row}: {text}", err=True)
     return warned
 
 
