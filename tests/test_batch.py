@@ -153,7 +153,8 @@ def test_bad_rows_named_and_good_rows_written(capsys, tmp_path):
         "Skipped: row 3: load: must be greater than 0 N (got -5)",
         "Skipped: row 4: balls: must be between 1 and 100000 (got 0)",
         "Skipped: row 5: clearance: unknown unit 'furlong' in '20furlong'; allowed: mm, um, µm, "
-        "μm, in, m (a bare number is mm)",
+        "μm, in, m (a bare number is mm); or a clearance class C2, CN, C3, C4, C5 (GOST groups "
+        "G6, G7, G8, G9)",
         "Skipped: row 6: malformed line: 3 cells, the header names 4 columns",
         "2 of 6 rows solved, 4 skipped (exit status 1), 0 warnings; the output names each "
         "skipped row and its reason",

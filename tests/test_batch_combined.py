@@ -101,7 +101,7 @@ def test_bad_rows_are_named_and_the_others_solved():
     assert [r["row"] for r in _rows(out.stdout)] == ["9"]
     named = [line.split(":", 2)[1].strip() for line in out.stderr.splitlines()[:7]]
     assert named == [f"row {i}" for i in range(2, 9)]
-    assert "unknown ring 'sideways'" in out.stderr
+    assert "'sideways' is not one of inner, outer" in out.stderr
     assert "NU206 is a roller bearing" in out.stderr
     assert "load: must be 0 N or more" in out.stderr
     assert "must be within ±2°" in out.stderr

@@ -161,7 +161,7 @@ def test_bad_life_cells_are_named_rows():
     assert errors[0].startswith("Skipped: row 2: viscosity: needs the shaft speed")
     assert errors[1].startswith("Skipped: row 3: reliability: must be in [90, 99.95]")
     assert errors[2].startswith("Skipped: row 4: eC: must be in [0, 1]")
-    assert errors[3].startswith("Skipped: row 5: contamination: unknown level 'dirty'")
+    assert errors[3].startswith("Skipped: row 5: contamination: 'dirty' is not one of")
     assert errors[4].startswith("Skipped: row 6: pressure_viscosity: must be in [1, 100]")
     assert errors[5].startswith("Skipped: row 7: roughness: a bare 0.2 is 0.2 mm, implausible")
     assert errors[6].startswith("Skipped: row 8: speed: must be greater than 0 rpm")

@@ -234,17 +234,16 @@ def test_a_header_a_pair_cannot_take_is_refused():
 
 
 def test_a_call_that_fails_is_split_until_the_failing_row_stands_alone():
-    from bearingload.batch.pairs import PairSolver, solve_pairs
-    from bearingload.batch.read import read_header
+    from bearingload.plan.many import Planner
+    from bearingload.plan.many_pairs import solve_pair_cases
 
-    solver = PairSolver(read_header(["bearing", "arrangement", "load", "axial_load"]))
+    planner = Planner(["bearing", "arrangement", "load", "axial_load"])
     cols = {"bearing": ["7205BDT"] * 3, "arrangement": [None] * 3,
             "load": [1000.0, 1000.0, 500.0], "axial_load": [100.0, 0.0, 200.0]}  # fmt: skip
-    bad: dict[int, str] = {}
-    solved = solve_pairs(solver, cols, 3, bad)  # one group: the library refuses the call
-    assert [i for i, _ in solved] == [0, 2]
-    assert list(bad) == [1]
-    assert bad[1].startswith("axial_load: must be > 0 N for a tandem pair (DT)")
+    solved = solve_pair_cases(planner, cols, 3, {})  # one group: the library refuses the call
+    assert solved.rows == [0, 2]
+    assert list(solved.errors) == [1]
+    assert str(solved.errors[1]).startswith("axial_load: must be > 0 N for a tandem pair (DT)")
 
 
 def test_the_vectorised_call_gives_each_case_as_alone():

@@ -147,7 +147,7 @@ def test_a_row_with_two_errors_names_the_same_one_whatever_the_chunk():
     text = "load,balls,cage_angle\n-5,9.5,0\n300kgf,,-400\n"
     out = {c: _batch(text, "--chunk-size", c).stderr for c in ("1", "2")}
     assert out["1"] == out["2"]
-    assert out["1"].startswith("Skipped: row 2: balls: must be a whole number (got 9.5)")
+    assert out["1"].startswith("Skipped: row 2: balls: must be a whole number, got '9.5'")
 
 
 def test_batch_reads_a_roller_rows_stiffness_in_its_own_unit_beside_an_exponent_column():

@@ -185,7 +185,7 @@ REFUSED = [
     ({"axial_load": "500N", "speed": "3000", "ball_density": "2e5"},
      "ball_density: must be in (0, 100000]", ["-A", "500N", "--speed", "3000", "--ball-density", "2e5"]),
     ({"axial_load": "500N", "speed": "3000", "ball_density": "3.2g/cm^3"},
-     "ball_density: cannot read", ["-A", "500N", "--speed", "3000", "--ball-density", "3.2g/cm^3"]),
+     "ball_density: must be a number, got", ["-A", "500N", "--speed", "3000", "--ball-density", "3.2g/cm^3"]),
     ({"axial_load": "500N", "speed": "3000", "quasi_static": "1"}, "quasi_static: cannot read",
      ["-A", "500N", "--speed", "3000", "--quasi-static", "1"]),
     ({"axial_load": "500N", "speed": "60000"}, "speed: n d_m must be at most",

@@ -130,10 +130,6 @@ def batch(
         raise click.UsageError(_header_message(exc)) from exc
     columns = batch_columns(header)
     solver = BatchSolver(header)
-    if header.pairs:
-        from bearingload.batch.pairs import PairSolver
-
-        solver = PairSolver(header)
     held: dict[str, list[Any]] = {c.key: [] for c in columns if c.key != "row"}
     held_rows: list[int] = []
     skipped: list[tuple[int, str]] = []
