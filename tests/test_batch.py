@@ -578,3 +578,20 @@ def test_bare_number_blocks_and_parsed_blocks_agree(tmp_path):
     assert cases(a.stdout) == cases(b.stdout)
     numbers = [int(line.split(",")[0]) for line in b.stdout.splitlines()[1:]]
     assert numbers == [*range(2, 6), *range(7, 43)]
+
+
+def test_a_maker_column_is_solve_maker():
+    """Every input of a case is a column (the readers of plan.inputs): a ``maker`` cell picks
+    that maker's ball set as ``solve --maker`` does (GMN's 6205 has another Hertz stiffness
+    than NSK's); a maker without a ball set for the bearing is a skipped row naming it."""
+    out = batch("-", "--format", "json", stdin="bearing,maker,load\n6205,GMN,1kN\n6205,,1kN\n")
+    cases = json.loads(out.stdout)["cases"]
+    for case, maker in zip(cases, ("GMN", "NSK"), strict=True):
+        alone = CliRunner().invoke(
+            main, ["solve", "6205", "--maker", maker, "-F", "1kN", "--format", "json"]
+        )
+        expected = json.loads(alone.output)["cases"][0]
+        assert (case["stiffness"], case["q_max"]) == (expected["stiffness"], expected["q_max"])
+    assert cases[0]["stiffness"] != cases[1]["stiffness"]
+    out = batch("-", "--format", "csv", stdin="bearing,maker,load\n6205,skf,1kN\n")
+    assert out.exit_code == 1 and "Skipped: row 2: maker: no skf ball set for 6205" in out.stderr

@@ -114,8 +114,8 @@ def read_header(fields: list[str]) -> Header:
             f"unknown column(s) {', '.join(repr(n) for n in unknown)}; "
             f"allowed: {', '.join(COLUMNS)}",
         )
-    _check_combined(names)
-    _check_pairs(names)
+    for kind in _FILE_KINDS:
+        _check_file(names, *kind)
     twice = sorted({n for n in names if names.count(n) > 1})
     if twice:
         raise InputError("columns", f"column(s) given twice: {', '.join(twice)}")
@@ -156,47 +156,42 @@ def unit_kind(column: str) -> str | None:
 _REVOLUTIONS = quantity("revolutions")
 
 
-def _check_combined(names: list[str]) -> None:
-    """A file with combined-load columns names its bearings (or ball geometry) and no
-    radial-only column."""
-    combined = [n for n in names if n in COMBINED_COLUMNS]
-    if not combined:
-        return
-    if not any(n in ("bearing", "ball_diameter", "pitch_diameter") for n in names):
-        raise InputError(
-            "columns",
-            f"{combined[0]}: the combined load needs deep-groove ball bearings: add a 'bearing' "
-            "column (a designation) or 'ball_diameter' and 'pitch_diameter'",
-        )
-    refused = [n for n in names if n in NOT_COMBINED]
-    if refused:
-        raise InputError(
-            "columns",
-            f"{refused[0]}: not used with the combined load ({combined[0]}): its rows are "
-            "solved by the 3-D equilibrium of a ball bearing (m = 1.5), lives in 10^6 rev",
-        )
-
-
-def _check_pairs(names: list[str]) -> None:
-    """A file of pairs names its bearings (or ball geometry) and no column a pair cannot take."""
-    given = [n for n in names if n in PAIR_COLUMNS]
+def _check_file(
+    names: list[str], kinds: Sequence[str], needs: str, refused: Sequence[str], why: str
+) -> None:
+    """A file with a column of ``kinds`` (combined loads, pairs) names its bearings or ball
+    geometry (else: ``needs``) and has no column of ``refused`` (``why``, the first of ``kinds``
+    given in its braces)."""
+    given = [n for n in names if n in kinds]
     if not given:
         return
     if not any(n in ("bearing", "ball_diameter", "pitch_diameter") for n in names):
-        raise InputError(
-            "columns",
-            f"{given[0]}: a file of bearing pairs needs angular-contact ball bearings: add a "
-            "'bearing' column (7205B, 7205BDB) or 'ball_diameter', 'pitch_diameter' and "
-            "'contact_angle'",
-        )
-    refused = [n for n in names if n in NOT_PAIRS]
-    if refused:
-        raise InputError(
-            "columns",
-            f"{refused[0]}: not used in a file of bearing pairs ({given[0]}): a pair is solved "
-            "by the exact model of its angular-contact bearings, no clearance (the contact "
-            "angle fixes the geometry), no misalignment (give the moment)",
-        )
+        raise InputError("columns", f"{given[0]}: {needs}")
+    bad = [n for n in names if n in refused]
+    if bad:
+        raise InputError("columns", f"{bad[0]}: not used {why.format(given[0])}")
+
+
+#: (columns, what they need, columns refused beside them, why) of a combined file, of pairs.
+_FILE_KINDS = (
+    (
+        COMBINED_COLUMNS,
+        "the combined load needs deep-groove ball bearings: add a 'bearing' column (a "
+        "designation) or 'ball_diameter' and 'pitch_diameter'",
+        NOT_COMBINED,
+        "with the combined load ({}): its rows are solved by the 3-D equilibrium of a ball "
+        "bearing (m = 1.5), lives in 10^6 rev",
+    ),
+    (
+        PAIR_COLUMNS,
+        "a file of bearing pairs needs angular-contact ball bearings: add a 'bearing' column "
+        "(7205B, 7205BDB) or 'ball_diameter', 'pitch_diameter' and 'contact_angle'",
+        NOT_PAIRS,
+        "in a file of bearing pairs ({}): a pair is solved by the exact model of its "
+        "angular-contact bearings, no clearance (the contact angle fixes the geometry), no "
+        "misalignment (give the moment)",
+    ),
+)
 
 
 def _check_header_unit(name: str, unit: str) -> None:

@@ -170,8 +170,8 @@ def _row_messages(part: Any, warned: int, progress: _Progress, quiet: bool) -> i
     number of warnings so far."""
     found = part.values.get("warnings", [])
     messages = [(row, text, False) for row, text in part.errors]
-    messages += [(part.rows[i], text, True)
-                 for i in compress(range(len(found)), found) for text in found[i]]  # fmt: skip
+    for i in compress(range(len(found)), found):
+        messages += [(part.rows[i], text, True) for text in found[i]]
     for row, text, warning in sorted(messages, key=lambda m: m[0]):  # stable: a row's order
         warned += warning
         if not quiet and (not warning or warned <= MAX_WARNINGS_SHOWN):
@@ -194,29 +194,23 @@ class _Sink:
 
     def __init__(self, output: str | None, strict: bool) -> None:
         self.output = None if output in (None, "-") else output
-        self.spool = strict and self.output is None
         self.failed = False
+        self.fh: Any = None
+        if self.output is None and strict:
+            import tempfile
+
+            self.fh = tempfile.TemporaryFile("w+", encoding="utf-8", newline="\n")
 
     def __enter__(self) -> _Sink:
         if self.output is not None:
             from bearingload.reports.render import atomic_file
 
-            self.atomic: Any = atomic_file(self.output)
-            try:
-                self.fh = self.atomic.__enter__()
-            except OSError as exc:
-                raise click.UsageError(
-                    f"Invalid value for '-o' / '--output': cannot write {self.output!r}: "
-                    f"{exc.strerror}"
-                ) from exc
-        elif self.spool:
-            import tempfile
-
-            self.fh = tempfile.TemporaryFile("w+", encoding="utf-8", newline="\n")
+            self.atomic = atomic_file(self.output)
+            self.fh = self._writing(self.atomic.__enter__)
         return self
 
     def write(self, text: str) -> None:
-        if self.output is None and not self.spool:
+        if self.fh is None:
             click.echo(text, nl=False)
         else:
             self.fh.write(text)
@@ -227,19 +221,22 @@ class _Sink:
     def __exit__(self, kind: Any, exc: Any, tb: Any) -> None:
         bad = kind is not None or self.failed
         if self.output is not None:
-            try:
-                self.atomic.__exit__(RuntimeError if bad else None, None, None)
-            except OSError as error:
-                raise click.UsageError(
-                    f"Invalid value for '-o' / '--output': cannot write {self.output!r}: "
-                    f"{error.strerror}"
-                ) from error
-        elif self.spool:
+            self._writing(lambda: self.atomic.__exit__(RuntimeError if bad else None, None, None))
+        elif self.fh is not None:
             if not bad:
                 self.fh.seek(0)
                 while block := self.fh.read(1 << 20):
                     click.echo(block, nl=False)
             self.fh.close()
+
+    def _writing(self, call: Any) -> Any:
+        """``call()``, an OSError said as a bad ``-o``."""
+        try:
+            return call()
+        except OSError as exc:
+            raise click.UsageError(
+                f"Invalid value for '-o' / '--output': cannot write {self.output!r}: {exc.strerror}"
+            ) from exc
 
 
 class _Progress:
