@@ -4,6 +4,7 @@ The main entry points, importable from here (each is loaded on first use, so tha
 calculation does not pay for the whole package at start-up)::
 
     from bearingload import analyse            # a designation and its loads: what solve prints
+    from bearingload import analyse_many       # many cases at once, on arrays (batch's way)
     from bearingload import solve              # exact ring equilibrium, degrees in and out
     from bearingload import ring_forces        # the forward problem: force for a displacement
     from bearingload import solve_continuum    # the continuum model (Kuzmenko 2010, §4-5)
@@ -23,6 +24,7 @@ __version__ = "0.1.0"
 #: public name -> module that defines it
 _API = {
     "analyse": "bearingload.plan.analyse",
+    "analyse_many": "bearingload.plan.many_cases",
     "Solution": "bearingload.plan.solution",
     "solve": "bearingload.models.equilibrium",
     "LoadDistribution": "bearingload.models.equilibrium",

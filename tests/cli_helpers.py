@@ -79,6 +79,11 @@ def warnings_of(err: str) -> list[str]:
     return [w.removeprefix("Warning: ") for w in err.splitlines() if w.startswith("Warning:")]
 
 
+def skipped_of(err: str) -> list[str]:
+    """The ``Skipped:`` lines of a batch run's stderr (its skipped rows), without the prefix."""
+    return [w.removeprefix("Skipped: ") for w in err.splitlines() if w.startswith("Skipped:")]
+
+
 def besides_tilt(err) -> list[str]:
     """The lines of ``err`` (a text or a list of warnings) other than the warning on the inner
     ring's tilt (bearings.checks.misalignment_findings), which every case whose ring tilts gives:

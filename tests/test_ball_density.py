@@ -7,7 +7,7 @@ import json
 
 import pytest
 
-from .cli_helpers import run_entry, warnings_of
+from .cli_helpers import run_entry, skipped_of
 
 
 def test_ball_density_is_reported_at_speed(capsys):
@@ -67,7 +67,7 @@ def test_a_roller_row_quasi_static_with_a_blank_ball_density_is_solved(capsys, t
         encoding="utf-8",
     )
     code, out, err = run_entry(capsys, "batch", str(path), "--format", "json")
-    reasons = [w for w in warnings_of(err) if w.startswith("row ")]
+    reasons = skipped_of(err)
     assert code == 1 and len(reasons) == 1 and reasons[0].startswith("row 3: ball_density: ")
     (row,) = json.loads(out)["cases"]
     _, solved, _ = run_entry(

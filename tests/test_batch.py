@@ -150,11 +150,12 @@ def test_bad_rows_named_and_good_rows_written(capsys, tmp_path):
     ]
     assert out.splitlines()[2].endswith(",load: must be greater than 0 N (got -5)")
     assert err.splitlines() == [
-        "Warning: row 3: load: must be greater than 0 N (got -5)",
-        "Warning: row 4: balls: must be between 1 and 100000 (got 0)",
-        "Warning: row 5: clearance: unknown unit 'furlong' in '20furlong'; allowed: mm, um, µm, "
-        "μm, in, m (a bare number is mm)",
-        "Warning: row 6: malformed line: 3 cells, the header names 4 columns",
+        "Skipped: row 3: load: must be greater than 0 N (got -5)",
+        "Skipped: row 4: balls: must be between 1 and 100000 (got 0)",
+        "Skipped: row 5: clearance: unknown unit 'furlong' in '20furlong'; allowed: mm, um, µm, "
+        "μm, in, m (a bare number is mm); or a clearance class C2, CN, C3, C4, C5 (GOST groups "
+        "G6, G7, G8, G9)",
+        "Skipped: row 6: malformed line: 3 cells, the header names 4 columns",
         "2 of 6 rows solved, 4 skipped (exit status 1), 0 warnings; the output names each "
         "skipped row and its reason",
     ]
@@ -165,7 +166,7 @@ def test_unknown_bearing_named(tmp_path):
     p.write_text("bearing,load\n306,300kgf\n9999,300kgf\n")
     out = batch(str(p), "--format", "csv")
     assert out.exit_code == 1
-    assert out.stderr.startswith("Warning: row 3: bearing: cannot read '9999'")
+    assert out.stderr.startswith("Skipped: row 3: bearing: cannot read '9999'")
     assert [line.split(",")[0] for line in out.stdout.splitlines()] == ["row", "2"]
 
 
@@ -398,7 +399,7 @@ def test_a_row_that_breaks_the_vectorised_solve_is_named_alone(tmp_path):
     p.write_text("balls,load,stiffness,cage_angle\n8,1kN,1e5,0\n2,1kN,1e5,45\n9,1kN,1e5,17\n")
     out = batch(str(p), "--format", "csv")
     assert out.exit_code == 1
-    assert out.stderr.splitlines()[0].startswith("Warning: row 3: cage_angle: with 1 or 2 balls")
+    assert out.stderr.splitlines()[0].startswith("Skipped: row 3: cage_angle: with 1 or 2 balls")
     rows = out.stdout.splitlines()
     assert [r.split(",")[0] for r in rows] == ["row", "2", "4"]
     alone = tmp_path / "a.csv"
@@ -483,7 +484,7 @@ def test_a_line_not_utf8_is_a_bad_row_named_by_its_number(tmp_path):
         assert out.exit_code == 1
         assert [line.split(",")[0] for line in out.stdout.splitlines()] == ["row", "2", "4"]
         assert out.stderr.splitlines()[0] == (
-            "Warning: row 3: not UTF-8 text (invalid start byte at byte 10 of the line)"
+            "Skipped: row 3: not UTF-8 text (invalid start byte at byte 10 of the line)"
         )
 
 
@@ -577,3 +578,20 @@ def test_bare_number_blocks_and_parsed_blocks_agree(tmp_path):
     assert cases(a.stdout) == cases(b.stdout)
     numbers = [int(line.split(",")[0]) for line in b.stdout.splitlines()[1:]]
     assert numbers == [*range(2, 6), *range(7, 43)]
+
+
+def test_a_maker_column_is_solve_maker():
+    """Every input of a case is a column (the readers of plan.inputs): a ``maker`` cell picks
+    that maker's ball set as ``solve --maker`` does (GMN's 6205 has another Hertz stiffness
+    than NSK's); a maker without a ball set for the bearing is a skipped row naming it."""
+    out = batch("-", "--format", "json", stdin="bearing,maker,load\n6205,GMN,1kN\n6205,,1kN\n")
+    cases = json.loads(out.stdout)["cases"]
+    for case, maker in zip(cases, ("GMN", "NSK"), strict=True):
+        alone = CliRunner().invoke(
+            main, ["solve", "6205", "--maker", maker, "-F", "1kN", "--format", "json"]
+        )
+        expected = json.loads(alone.output)["cases"][0]
+        assert (case["stiffness"], case["q_max"]) == (expected["stiffness"], expected["q_max"])
+    assert cases[0]["stiffness"] != cases[1]["stiffness"]
+    out = batch("-", "--format", "csv", stdin="bearing,maker,load\n6205,skf,1kN\n")
+    assert out.exit_code == 1 and "Skipped: row 2: maker: no skf ball set for 6205" in out.stderr

@@ -158,13 +158,13 @@ def test_bad_life_cells_are_named_rows():
     out = _batch(text, "--format", "csv")
     assert out.exit_code == 1
     errors = out.stderr.splitlines()
-    assert errors[0].startswith("Warning: row 2: viscosity: needs the shaft speed")
-    assert errors[1].startswith("Warning: row 3: reliability: must be in [90, 99.95]")
-    assert errors[2].startswith("Warning: row 4: eC: must be in [0, 1]")
-    assert errors[3].startswith("Warning: row 5: contamination: unknown level 'dirty'")
-    assert errors[4].startswith("Warning: row 6: pressure_viscosity: must be in [1, 100]")
-    assert errors[5].startswith("Warning: row 7: roughness: a bare 0.2 is 0.2 mm, implausible")
-    assert errors[6].startswith("Warning: row 8: speed: must be greater than 0 rpm")
+    assert errors[0].startswith("Skipped: row 2: viscosity: needs the shaft speed")
+    assert errors[1].startswith("Skipped: row 3: reliability: must be in [90, 99.95]")
+    assert errors[2].startswith("Skipped: row 4: eC: must be in [0, 1]")
+    assert errors[3].startswith("Skipped: row 5: contamination: 'dirty' is not one of")
+    assert errors[4].startswith("Skipped: row 6: pressure_viscosity: must be in [1, 100]")
+    assert errors[5].startswith("Skipped: row 7: roughness: a bare 0.2 is 0.2 mm, implausible")
+    assert errors[6].startswith("Skipped: row 8: speed: must be greater than 0 rpm")
     assert [r["row"] for r in _rows(out.stdout)] == ["9"]
 
 
@@ -186,10 +186,10 @@ def test_life_cells_solve_refuses_skip_their_row_only():
     assert out.exit_code == 1
     errors = out.stderr.splitlines()
     for row, name in enumerate(("eC", "contamination", "fatigue_load_limit", "roughness"), 2):
-        assert errors[row - 2].startswith(f"Warning: row {row}: {name}: feeds the modified life")
-    assert errors[4].startswith("Warning: row 6: eC: give a contamination level or e_C, not both")
-    assert errors[5].startswith("Warning: row 7: roughness: must lie between 1e-07 and 0.1 mm")
-    assert errors[6].startswith("Warning: row 8: roughness: must lie between 1e-07 and 0.1 mm")
+        assert errors[row - 2].startswith(f"Skipped: row {row}: {name}: feeds the modified life")
+    assert errors[4].startswith("Skipped: row 6: eC: give a contamination level or e_C, not both")
+    assert errors[5].startswith("Skipped: row 7: roughness: must lie between 1e-07 and 0.1 mm")
+    assert errors[6].startswith("Skipped: row 8: roughness: must lie between 1e-07 and 0.1 mm")
     assert [r["row"] for r in _rows(out.stdout)] == ["9"]
     for cells in (
         "--eC 0.5",
@@ -209,7 +209,7 @@ def test_pressure_viscosity_without_a_viscosity_is_refused_as_in_solve():
     text = "bearing,load,speed,viscosity,pressure_viscosity\n6205,1kN,3000,,5\n6205,1kN,3000,20,5\n"
     out = _batch(text, "--format", "csv")
     assert out.exit_code == 1
-    assert out.stderr.startswith("Warning: row 2: pressure_viscosity: feeds the film, which needs")
+    assert out.stderr.startswith("Skipped: row 2: pressure_viscosity: feeds the film, which needs")
     assert [r["row"] for r in _rows(out.stdout)] == ["3"]
 
 
@@ -230,10 +230,10 @@ def test_a_speed_whose_hours_overflow_skips_its_row_only():
         out = _batch(text, "--format", "csv")
         assert out.exit_code == 1
         errors = besides_tilt(out.stderr)
-        assert errors[0] == "Warning: row 2: speed: is so small that the life in hours " + (
+        assert errors[0] == "Skipped: row 2: speed: is so small that the life in hours " + (
             "L 10^6/(60 n) overflows"
         )
-        assert errors[1].startswith("Warning: row 5: speed: is so small")
+        assert errors[1].startswith("Skipped: row 5: speed: is so small")
         assert _solve(["6205", "-F", "1kN", "--speed", "1e-310"]).exit_code == 2
         alone = _rows(_batch(f"{head}\n{good}", "--format", "csv").stdout)
         got = _rows(out.stdout)

@@ -237,10 +237,10 @@ def test_an_oil_without_speed_or_bearing_is_refused_naming_its_column():
     assert out.exit_code == 1
     errors = out.stderr.splitlines()
     assert errors[0] == (
-        "Warning: row 2: viscosity_40: needs the shaft speed ('speed') for the rated viscosity nu_1"
+        "Skipped: row 2: viscosity_40: needs the shaft speed ('speed') for the rated viscosity nu_1"
     )
     assert errors[1] == (
-        "Warning: row 3: speed, viscosity_40, temperature: need a bearing designation or the "
+        "Skipped: row 3: speed, viscosity_40, temperature: need a bearing designation or the "
         "ball geometry ('ball_diameter' and 'pitch_diameter'): with 'balls' and 'stiffness' "
         "alone they would be ignored"
     )

@@ -149,20 +149,20 @@ def test_bad_rows_are_skipped_with_their_reason_the_others_written():
     assert out.exit_code == 1
     assert [line.split(",", 1)[0] for line in out.stdout.splitlines()[1:]] == ["9", "9"]
     assert besides_tilt(out.stderr) == [
-        "Warning: row 2: arrangement: missing: a file of pairs gives each row's arrangement "
+        "Skipped: row 2: arrangement: missing: a file of pairs gives each row's arrangement "
         "(DB, DF or DT) or a designation with it (7205BDB)",
-        "Warning: row 3: arrangement: a pair DB is two angular-contact ball bearings; give an "
+        "Skipped: row 3: arrangement: a pair DB is two angular-contact ball bearings; give an "
         "angular-contact designation (7205B, 7205BDB) or a ring by hand with 'contact_angle'",
-        "Warning: row 4: arrangement: DT contradicts the designation '7205BDB' (a DB pair)",
-        "Warning: row 5: arrangement: 'XX' is not one of DB, DF, DT",
-        "Warning: row 6: preload: a tandem pair (DT) is not preloaded in itself: both bearings "
+        "Skipped: row 4: arrangement: DT contradicts the designation '7205BDB' (a DB pair)",
+        "Skipped: row 5: arrangement: 'XX' is not one of DB, DF, DT",
+        "Skipped: row 6: preload: a tandem pair (DT) is not preloaded in itself: both bearings "
         "face the same way, so it is preloaded against another bearing; give 0, or use DB or DF",
-        "Warning: row 7: preload: must be 0 N or more (got -1 N)",
-        "Warning: row 8: load: missing: every row needs a (radial) load, 0 allowed",
-        "Warning: row 10: axial_load: must be > 0 N for a tandem pair (DT): both bearings take "
+        "Skipped: row 7: preload: must be 0 N or more (got -1 N)",
+        "Skipped: row 8: load: missing: every row needs a (radial) load, 0 allowed",
+        "Skipped: row 10: axial_load: must be > 0 N for a tandem pair (DT): both bearings take "
         "thrust towards +axial only (a reversed load lifts every ball; with none the axial "
         "position is held by another bearing)",
-        "Warning: row 11: width: a bearing pair needs the width B of one bearing (the axial "
+        "Skipped: row 11: width: a bearing pair needs the width B of one bearing (the axial "
         "distance of the two bearings' centres): give it (e.g. 15mm) or a catalogue designation "
         "that has it",
     ]
@@ -209,7 +209,7 @@ def test_a_pair_in_a_file_without_pair_columns_names_the_way():
     assert out.exit_code == 1
     assert [line.split(",", 1)[0] for line in out.stdout.splitlines()[1:]] == ["3"]
     assert out.stderr.splitlines()[0] == (
-        "Warning: row 2: bearing: '7205BDB' names a DB pair: a file of pairs has an "
+        "Skipped: row 2: bearing: '7205BDB' names a DB pair: a file of pairs has an "
         "'arrangement' column (or 'preload', 'width'; every row of it a pair, written as solve "
         "writes a pair); here give the single bearing with the load it carries"
     )
@@ -234,17 +234,16 @@ def test_a_header_a_pair_cannot_take_is_refused():
 
 
 def test_a_call_that_fails_is_split_until_the_failing_row_stands_alone():
-    from bearingload.batch.pairs import PairSolver, solve_pairs
-    from bearingload.batch.read import read_header
+    from bearingload.plan.many import Planner
+    from bearingload.plan.many_pairs import solve_pair_cases
 
-    solver = PairSolver(read_header(["bearing", "arrangement", "load", "axial_load"]))
+    planner = Planner(["bearing", "arrangement", "load", "axial_load"])
     cols = {"bearing": ["7205BDT"] * 3, "arrangement": [None] * 3,
             "load": [1000.0, 1000.0, 500.0], "axial_load": [100.0, 0.0, 200.0]}  # fmt: skip
-    bad: dict[int, str] = {}
-    solved = solve_pairs(solver, cols, 3, bad)  # one group: the library refuses the call
-    assert [i for i, _ in solved] == [0, 2]
-    assert list(bad) == [1]
-    assert bad[1].startswith("axial_load: must be > 0 N for a tandem pair (DT)")
+    solved = solve_pair_cases(planner, cols, 3, {})  # one group: the library refuses the call
+    assert solved.rows == [0, 2]
+    assert list(solved.errors) == [1]
+    assert str(solved.errors[1]).startswith("axial_load: must be > 0 N for a tandem pair (DT)")
 
 
 def test_the_vectorised_call_gives_each_case_as_alone():

@@ -145,7 +145,7 @@ def test_cells_the_dynamics_cannot_take_skip_their_row_with_solves_reason():
     assert [line.split(",", 1)[0] for line in out.stdout.splitlines()[1:]] == ["2", "2"]
     said = out.stderr.splitlines()
     for r, (_, reason) in enumerate(bad, start=3):
-        assert f"Warning: row {r}: {reason}" in said
+        assert f"Skipped: row {r}: {reason}" in said
 
 
 def test_outer_ring_turning_at_speed_is_refused_and_quasi_static_gives_its_lives():
@@ -155,7 +155,7 @@ def test_outer_ring_turning_at_speed_is_refused_and_quasi_static_gives_its_lives
     out = _batch(_file([cells], head), "--format", "csv")
     assert out.exit_code == 1
     assert out.stderr.splitlines()[0] == (
-        "Warning: row 2: rotating: the ball dynamics at 'speed' are coded for the inner ring "
+        "Skipped: row 2: rotating: the ball dynamics at 'speed' are coded for the inner ring "
         "turning (docs/speed.md); give 'quasi_static' for the static model with the outer "
         "ring's lives"
     )
@@ -177,5 +177,5 @@ def test_a_row_whose_lives_overflow_is_skipped_the_others_written():
     assert out.exit_code == 1
     assert [line.split(",", 1)[0] for line in out.stdout.splitlines()[1:]] == ["2", "2"]
     assert besides_tilt(out.stderr)[0] == (
-        "Warning: row 3: speed: is so small that the life in hours L 10^6/(60 n) overflows"
+        "Skipped: row 3: speed: is so small that the life in hours L 10^6/(60 n) overflows"
     )

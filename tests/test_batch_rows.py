@@ -55,7 +55,7 @@ def test_an_exponent_column_of_bare_numbers_is_read():
     for chunk in ("1", "100"):
         r = _batch(mixed, "--chunk-size", chunk)
         assert r.exit_code == 1, r.output
-        assert r.stderr.startswith("Warning: row 2: stiffness: the unit 'N/mm^(10/9)'")
+        assert r.stderr.startswith("Skipped: row 2: stiffness: the unit 'N/mm^(10/9)'")
         assert [line.split(",")[0] for line in r.stdout.splitlines()[1:]] == ["3"]
 
 
@@ -81,7 +81,7 @@ def test_a_skipped_row_names_the_column_not_the_library_parameter():
     r = _batch("bearing,load,axial_load\n6205,0,0\n6205,1kN,0\n")
     assert r.exit_code == 1
     assert r.stderr.startswith(
-        "Warning: row 2: load: give a radial load, an axial load or a moment"
+        "Skipped: row 2: load: give a radial load, an axial load or a moment"
     )
 
 
@@ -94,7 +94,7 @@ def test_a_quote_never_closed_is_named_where_it_opens(chunk):
     r = _batch(text, "--chunk-size", chunk)
     assert r.exit_code == 1
     assert r.stderr.startswith(
-        "Warning: row 3: a quote opened in this row is never closed: rows 3 to 5 (the end of "
+        "Skipped: row 3: a quote opened in this row is never closed: rows 3 to 5 (the end of "
         "the file) were read as one cell"
     )
     assert [line.split(",")[0] for line in r.stdout.splitlines()[1:]] == ["2"]
@@ -110,7 +110,7 @@ def test_an_empty_load_cell_says_the_load_is_missing():
     missing: every row needs a load'. Both now say the latter."""
     for text in ("balls,load,stiffness\n8,,46000\n", "bearing,load\n306,\n"):
         r = _batch(text)
-        assert r.stderr.startswith("Warning: row 2: load: missing: every row needs a load\n")
+        assert r.stderr.startswith("Skipped: row 2: load: missing: every row needs a load\n")
 
 
 @pytest.mark.parametrize("chunk", ["1", "100"])
@@ -125,7 +125,7 @@ def test_a_row_failing_alone_in_its_method_or_chunk_is_named_not_fatal(chunk):
     ):
         r = _batch(text, "--chunk-size", chunk)
         assert r.exit_code == 1, r.output
-        assert r.stderr.startswith("Warning: row 2: load: ")
+        assert r.stderr.startswith("Skipped: row 2: load: ")
         assert [line.split(",")[0] for line in r.stdout.splitlines()[1:]] == ["3"]
 
 
@@ -147,7 +147,7 @@ def test_a_row_with_two_errors_names_the_same_one_whatever_the_chunk():
     text = "load,balls,cage_angle\n-5,9.5,0\n300kgf,,-400\n"
     out = {c: _batch(text, "--chunk-size", c).stderr for c in ("1", "2")}
     assert out["1"] == out["2"]
-    assert out["1"].startswith("Warning: row 2: balls: must be a whole number (got 9.5)")
+    assert out["1"].startswith("Skipped: row 2: balls: must be a whole number, got '9.5'")
 
 
 def test_batch_reads_a_roller_rows_stiffness_in_its_own_unit_beside_an_exponent_column():
@@ -168,7 +168,7 @@ def test_batch_reads_a_roller_rows_stiffness_in_its_own_unit_beside_an_exponent_
         r = _batch(text, "--chunk-size", chunk)
         assert r.exit_code == 1, r.output
         assert [line.split(",")[0] for line in r.stdout.splitlines()[1:]] == ["2", "4"]
-        assert r.stderr.startswith("Warning: row 3: stiffness: the unit 'kgf/mm^1.5'")
+        assert r.stderr.startswith("Skipped: row 3: stiffness: the unit 'kgf/mm^1.5'")
         assert _csv_values(r.stdout)["q_max [N]"] == _csv_values(solved.stdout)["q_max [N]"]
 
 
@@ -187,7 +187,7 @@ def test_a_trailing_comma_in_the_header_is_an_empty_column_that_rows_may_leave_e
                     "--chunk-size", chunk)  # fmt: skip
     assert filled.exit_code == 1
     assert filled.stderr.startswith(
-        "Warning: row 3: a value ('7') in a column the header gives no name (after its last "
+        "Skipped: row 3: a value ('7') in a column the header gives no name (after its last "
         "column 'clearance')"
     )
     assert [line.split(",")[0] for line in filled.stdout.splitlines()[1:]] == ["2"]
@@ -213,7 +213,7 @@ def test_a_revolutions_cell_of_a_ball_set_without_c_skips_its_row_as_solve_refus
     head = "balls,ball_diameter,pitch_diameter,load,dynamic_rating,revolutions\n"
     r = _batch(head + "9,7.938,38.5,1000,,1e6\n9,7.938,38.5,1000,14kN,1e6\n")
     assert r.exit_code == 1, r.output
-    assert r.stderr.startswith("Warning: row 2: revolutions: "), r.stderr
+    assert r.stderr.startswith("Skipped: row 2: revolutions: "), r.stderr
     assert "dynamic_rating" in r.stderr.splitlines()[0]
     rows = _csv_values(r.stdout)
     assert rows["row"] == "3" and float(rows["allowable_load [N]"]) == pytest.approx(14000.0)
@@ -249,7 +249,7 @@ def test_a_bare_number_implausible_for_the_rows_bearing_skips_the_row_as_solve_r
     out = _batch(text)
     said = [line for line in out.stderr.splitlines() if "bare" in line]
     for row, name in enumerate(("load", "axial_load", "moment", "stiffness"), start=2):
-        (line,) = [s for s in said if s.startswith(f"Warning: row {row}: {name}: a bare ")]
+        (line,) = [s for s in said if s.startswith(f"Skipped: row {row}: {name}: a bare ")]
         option = "--" + name.replace("_", "-")
         cells = {"load": "3", "axial_load": "5", "moment": "5", "stiffness": "4700"}
         solved = _run("solve", "6205", "-F", "3kN", option, cells[name])
@@ -265,7 +265,7 @@ def test_the_clearance_pick_range_is_refused_with_the_plans_reason():
     out = _batch("bearing,load,clearance,clearance_pick\n6205,1kN,C3,range\n6205,1kN,C3,max\n")
     assert out.exit_code == 1
     assert out.stderr.splitlines()[0] == (
-        "Warning: row 2: clearance_pick: 'range' (min, mean and max side by side) is solve's; "
+        "Skipped: row 2: clearance_pick: 'range' (min, mean and max side by side) is solve's; "
         "batch takes min, mean or max"
     )
     assert [line.split(",", 1)[0] for line in out.stdout.splitlines()[1:]] == ["3"]

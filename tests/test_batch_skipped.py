@@ -1,6 +1,7 @@
 """``batch``'s skipped rows and its closing line: a skipped row is in the output (csv: its number
 and its reason in the last column, ``skipped``; json: ``skipped``; table and markdown: the
-notes), standard error ends on one line counting the rows solved and skipped and the
+notes), standard error names it on a ``Skipped:`` line apart from the ``Warning:`` lines of
+the solved rows and ends on one line counting the rows solved and skipped and the
 warnings, and ``-q`` leaves that line alone. Before, skip reasons and advisories shared one
 ``Warning:`` stream that a long file cut short ('3616 more warnings not shown'), and a csv
 held the solved rows only."""
@@ -57,8 +58,30 @@ def test_quiet_keeps_the_closing_line_only(capsys, tmp_path):
         "2 of 4 rows solved, 2 skipped (exit status 1), 1 warning; the output names each "
         "skipped row and its reason"
     ]
+
+
+def test_stderr_says_skipped_rows_apart_from_the_warnings(capsys, tmp_path):
+    """A skipped row is a ``Skipped:`` line, a solved row's advisory a ``Warning:`` line: the
+    closing line's count of warnings counts the ``Warning:`` lines."""
     code, _, err = _batch(capsys, tmp_path, "--format", "csv")
-    assert sum(line.startswith("Warning: row ") for line in err.splitlines()) == 3
+    lines = err.splitlines()
+    assert lines[:2] == [
+        "Skipped: row 3: balls: must be between 1 and 100000 (got 0)",
+        "Skipped: row 4: load: must be greater than 0 N (got -5)",
+    ]
+    assert lines[2].startswith("Warning: row 5: ")
+    assert sum(line.startswith("Warning: ") for line in lines) == 1
+
+
+def test_a_file_of_skipped_rows_only_counts_no_warning(capsys, tmp_path):
+    path = tmp_path / "bad.csv"
+    path.write_text("balls,stiffness,load\n0,1e5,1000\n8,1e5,-5\n", encoding="utf-8")
+    code, _, err = run_entry(capsys, "batch", str(path), "--format", "csv")
+    assert code == 1 and not any(line.startswith("Warning:") for line in err.splitlines())
+    assert err.splitlines()[-1] == (
+        "0 of 2 rows solved, 2 skipped (exit status 1), 0 warnings; the output names each "
+        "skipped row and its reason"
+    )
 
 
 def test_a_file_solved_whole_without_warnings_says_nothing(capsys, tmp_path):

@@ -81,15 +81,15 @@ def test_batch_refuses_a_pick_without_a_class_as_solve_does(capsys):
     doc = json.loads(out)
     assert [c["row"] for c in doc["cases"]] == [4]
     assert doc["cases"][0]["clearance"] == pytest.approx(0.028)
-    skipped = [line for line in err.splitlines() if line.startswith("Warning: row")]
+    skipped = [line for line in err.splitlines() if line.startswith("Skipped: row")]
     assert skipped == [
-        "Warning: row 2: clearance_pick: it picks the min, mean or max of a clearance class ('clear"
+        "Skipped: row 2: clearance_pick: it picks the min, mean or max of a clearance class ('clear"
         "ance' CN, C3 ... of a catalogue bearing); this case's clearance is one value, no "
         "class (G_r = 10 µm), so it would be ignored",
-        "Warning: row 3: clearance_pick: it picks the min, mean or max of a clearance class ('clear"
+        "Skipped: row 3: clearance_pick: it picks the min, mean or max of a clearance class ('clear"
         "ance' CN, C3 ... of a catalogue bearing); an angular-contact bearing has no "
         "radial clearance, so it would be ignored",
-        "Warning: row 5: clearance_pick: it picks the min, mean or max of a clearance class ('clear"
+        "Skipped: row 5: clearance_pick: it picks the min, mean or max of a clearance class ('clear"
         "ance' CN, C3 ... of a catalogue bearing); this case's clearance is one value, no "
         "class (G_r = 10 µm), so it would be ignored",
     ]

@@ -269,5 +269,5 @@ def test_an_explicit_exponent_of_1_5_is_refused_for_a_roller_bearing():
     assert _run("solve", "306", "-F", "5kN", "--exponent", "1.5").exit_code == 0
     r = _batch("bearing,load,exponent\nNU204,5kN,1.5\n306,5kN,1.5\nNU204,5kN,\n")
     assert r.exit_code == 1, r.output
-    assert r.stderr.startswith("Warning: row 2: exponent: a roller bearing (line contact)")
+    assert r.stderr.startswith("Skipped: row 2: exponent: a roller bearing (line contact)")
     assert [line.split(",")[0] for line in r.stdout.splitlines()[1:]] == ["3", "4"]

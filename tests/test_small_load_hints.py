@@ -10,7 +10,7 @@ from typing import Any
 import numpy as np
 import pytest
 
-from .cli_helpers import error_line, run_entry, warnings_of
+from .cli_helpers import error_line, run_entry, skipped_of
 
 
 @pytest.mark.parametrize("extra", [(), ("--speed", "3000"), ("--speed", "3000", "--quasi-static")])
@@ -71,7 +71,7 @@ def test_a_too_small_batch_row_at_speed_names_quasi_static(capsys, tmp_path):
     )
     code, _, err = run_entry(capsys, "batch", str(path), "--format", "csv")
     assert code == 1
-    reasons = {w.split(":", 1)[0]: w for w in warnings_of(err) if w.startswith("row ")}
+    reasons = {w.split(":", 1)[0]: w for w in skipped_of(err)}
     assert "'quasi_static' gives the static radial engine" in reasons["row 2"]
     assert "'quasi_static' without an axial load gives the static radial" in reasons["row 3"]
     # the angular-contact row: no radial solver can take it (as solve refuses it above)

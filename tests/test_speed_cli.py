@@ -150,7 +150,7 @@ def test_a_speed_of_0_says_what_a_shaft_at_rest_is(capsys):
                                input="bearing,load,speed\n6205,1kN,0\n")  # fmt: skip
     assert batch.exit_code == 1
     assert batch.stderr.splitlines()[0] == (
-        "Warning: row 2: speed: must be greater than 0 rpm (got 0): a shaft at rest is the case "
+        "Skipped: row 2: speed: must be greater than 0 rpm (got 0): a shaft at rest is the case "
         "without 'speed': the static model (the answer of the ball dynamics at 0 rpm), its lives "
         "in 10^6 revolutions, none in hours"
     )

@@ -2,9 +2,10 @@
 
 Columns are named like the options of ``bearingload solve`` (``load``, ``clearance``,
 ``ball_diameter`` ...); a unit in the header (``load [kN]``) is the unit of the column's bare
-numbers, a unit in a cell (``300kgf``) is that cell's own. One reader turns a column of cells
-into values (:func:`read_column`): bare numbers at once by numpy, any other cell by the parser
-of its kind (:class:`CellParser`), each distinct text once.
+numbers, a unit in a cell (``300kgf``) is that cell's own. Each cell is read by its input's
+reader, the library's (:data:`bearingload.plan.inputs.READERS`: the same units, ranges and
+messages), a column at a time (:func:`read_column`): bare numbers the reader takes as they are
+at once by numpy, any other cell once per distinct text.
 """
 
 from __future__ import annotations
@@ -17,77 +18,22 @@ from typing import Any, BinaryIO
 
 from bearingload.bearings.mounting import MOUNTING_PARAMS
 from bearingload.errors import InputError, UnusedError
+from bearingload.plan.case import LOAD_PARAMS
+from bearingload.plan.inputs import READERS, Reader, quantity, text
+from bearingload.plan.many import PAIR_PARAMS
 
 #: Rows read, solved and written at a time (memory stays flat however long the file).
 CHUNK_ROWS = 10_000
-#: Accepted columns -> kind of value (a units.py kind, or how the cell is read).
-COLUMNS: dict[str, str] = {
-    "bearing": "text",
-    "balls": "count",
-    "load": "force",
-    "stiffness": "stiffness",
-    "ball_diameter": "length",
-    "pitch_diameter": "length",
-    "inner_conformity": "number",
-    "outer_conformity": "number",
-    "modulus": "modulus",
-    "poisson": "number",
-    "ball_material": "text",
-    "shaft_fit": "text",
-    "housing_fit": "text",
-    "shaft_bore": "length",
-    "housing_diameter": "length",
-    "inner_ring_temperature": "temperature",
-    "outer_ring_temperature": "temperature",
-    "clearance": "clearance",
-    "clearance_pick": "pick",
-    "cage_angle": "cage_angle",
-    "exponent": "exponent",
-    "method": "text",
-    "revolutions": "revolutions",
-    "axial_load": "force",
-    "moment": "moment",
-    "moment_cross": "moment",
-    "misalignment": "angle",
-    "contact_angle": "angle",
-    "tilt_radius": "tilt_radius",
-    "dynamic_rating": "force",
-    "rotating": "ring",
-    "static_rating": "force",
-    "speed": "speed",
-    "reliability": "number",
-    "viscosity": "viscosity",
-    "oil": "text",
-    "viscosity_40": "viscosity",
-    "viscosity_100": "viscosity",
-    "viscosity_index": "number",
-    "temperature": "temperature",
-    "contamination": "level",
-    "ec": "number",
-    "fatigue_load_limit": "force",
-    "roughness": "length",
-    "pressure_viscosity": "number",
-    "ball_density": "number",
-    "quasi_static": "flag",
-    "arrangement": "text",
-    "preload": "preload",
-    "width": "length",
-}
-#: The operating conditions of the lives (solve's options of the same names; ``eC`` is read as
-#: ``ec``): they feed the lives in hours, a_ISO, the modified lives and the film, never a load.
-#: The oil columns (``bearings.oil.OIL_INPUTS``) give the viscosity instead of ``viscosity``.
-SERVICE_COLUMNS = ("speed", "reliability", "oil", "viscosity_40", "viscosity_100",
-                   "viscosity_index", "temperature", "viscosity", "contamination", "ec",
-                   "fatigue_load_limit", "roughness", "pressure_viscosity")  # fmt: skip
+#: Accepted columns: the inputs of a case (:data:`bearingload.plan.inputs.READERS`; ``eC`` read
+#: as ``ec``), the bearing, and the radial engine's method and life.
+COLUMNS = tuple(["bearing", *("ec" if n == "e_c" else n for n in READERS), "method", "revolutions"])
 #: The words of a flag column (case-insensitive; csv output writes True and False).
 FLAGS = {"true": True, "false": False}
 #: The load columns: a row with a cell in one of them is a combined-load case (3-D equilibrium),
-#: as solve's load options choose its engine (``contact_angle``: an angular-contact ring given
-#: by its ball set, as solve's --contact-angle); the others are radial cases.
-LOAD_COLUMNS = ("axial_load", "moment", "moment_cross", "misalignment", "contact_angle")
-#: The columns of a bearing pair (solve's --arrangement, --preload, --width): a file with one of
-#: them is a file of pairs, every row a pair (``batch/pairs.py``).
-PAIR_COLUMNS = ("arrangement", "preload", "width")
+#: as solve's load options choose its engine.
+LOAD_COLUMNS = LOAD_PARAMS
+#: The columns of a bearing pair: a file with one of them is a file of pairs, every row a pair.
+PAIR_COLUMNS = PAIR_PARAMS
 #: Columns a file of pairs cannot have (a pair takes no clearance, misalignment, method ...).
 NOT_PAIRS = ("method", "revolutions", "exponent", "clearance", "clearance_pick", "misalignment")
 #: Columns that belong to the combined load (tilt_radius: the lever of its tilt).
@@ -96,9 +42,17 @@ COMBINED_COLUMNS = (*LOAD_COLUMNS, "tilt_radius")
 #: 3-D equilibrium (m = 1.5), their lives in 10^6 revolutions.
 NOT_COMBINED = ("method", "revolutions", "exponent")
 #: Columns that make a row a bearing (resolved by bearings.resolve) rather than a bare ring.
-BEARING_COLUMNS = ("bearing", "ball_diameter", "pitch_diameter", "inner_conformity",
-                   "outer_conformity", "modulus", "poisson", "ball_material", "clearance_pick",
-                   "revolutions", *MOUNTING_PARAMS)  # fmt: skip
+BEARING_COLUMNS = (
+    *("bearing", "ball_diameter", "pitch_diameter", "inner_conformity", "outer_conformity"),
+    *("modulus", "poisson", "ball_material", "clearance_pick", "revolutions", *MOUNTING_PARAMS),
+)
+#: The kind of unit of the columns whose reader is no plain quantity (a header unit's kind).
+UNIT_KINDS = {
+    **dict.fromkeys(("clearance", "tilt_radius"), "length"),
+    **dict.fromkeys(("inner_ring_temperature", "outer_ring_temperature"), "temperature"),
+    **{"temperature": "temperature", "stiffness": "stiffness", "preload": "force"},
+    **{"cage_angle": "cage_angle", "revolutions": "revolutions"},
+}
 _HEADER = re.compile(r"^\s*([^\[\]]*?)\s*(?:\[\s*([^\]]*?)\s*\])?\s*$")
 
 
@@ -160,8 +114,8 @@ def read_header(fields: list[str]) -> Header:
             f"unknown column(s) {', '.join(repr(n) for n in unknown)}; "
             f"allowed: {', '.join(COLUMNS)}",
         )
-    _check_combined(names)
-    _check_pairs(names)
+    for kind in _FILE_KINDS:
+        _check_file(names, *kind)
     twice = sorted({n for n in names if names.count(n) > 1})
     if twice:
         raise InputError("columns", f"column(s) given twice: {', '.join(twice)}")
@@ -180,70 +134,79 @@ def _without_blank_tail(fields: list[str]) -> list[str]:
     return fields[:end]
 
 
-def unit_kind(kind: str) -> str:
-    """The units.py kind of a column kind: a clearance is a length, a cage angle an angle."""
-    kinds = {"clearance": "length", "cage_angle": "angle", "tilt_radius": "length"}
-    return (kinds | {"preload": "force"}).get(kind, kind)
+def library_name(column: str) -> str:
+    """The input a column gives (``ec``: ``e_c``)."""
+    return "e_c" if column == "ec" else column
 
 
-def _check_combined(names: list[str]) -> None:
-    """A file with combined-load columns names its bearings (or ball geometry) and no
-    radial-only column."""
-    combined = [n for n in names if n in COMBINED_COLUMNS]
-    if not combined:
-        return
-    if not any(n in ("bearing", "ball_diameter", "pitch_diameter") for n in names):
-        raise InputError(
-            "columns",
-            f"{combined[0]}: the combined load needs deep-groove ball bearings: add a 'bearing' "
-            "column (a designation) or 'ball_diameter' and 'pitch_diameter'",
-        )
-    refused = [n for n in names if n in NOT_COMBINED]
-    if refused:
-        raise InputError(
-            "columns",
-            f"{refused[0]}: not used with the combined load ({combined[0]}): its rows are "
-            "solved by the 3-D equilibrium of a ball bearing (m = 1.5), lives in 10^6 rev",
-        )
+def reader(column: str) -> Reader:
+    """The reader of a column's cells: its input's (:data:`bearingload.plan.inputs.READERS`)."""
+    if column in ("bearing", "method"):
+        return text
+    if column == "revolutions":
+        return _REVOLUTIONS
+    return READERS[library_name(column)]
 
 
-def _check_pairs(names: list[str]) -> None:
-    """A file of pairs names its bearings (or ball geometry) and no column a pair cannot take."""
-    given = [n for n in names if n in PAIR_COLUMNS]
+def unit_kind(column: str) -> str | None:
+    """The kind of unit of a column's numbers (:data:`bearingload.units.UNITS`), or None."""
+    return UNIT_KINDS.get(column) or getattr(reader(column), "kind", None)
+
+
+_REVOLUTIONS = quantity("revolutions")
+
+
+def _check_file(
+    names: list[str], kinds: Sequence[str], needs: str, refused: Sequence[str], why: str
+) -> None:
+    """A file with a column of ``kinds`` (combined loads, pairs) names its bearings or ball
+    geometry (else: ``needs``) and has no column of ``refused`` (``why``, the first of ``kinds``
+    given in its braces)."""
+    given = [n for n in names if n in kinds]
     if not given:
         return
     if not any(n in ("bearing", "ball_diameter", "pitch_diameter") for n in names):
-        raise InputError(
-            "columns",
-            f"{given[0]}: a file of bearing pairs needs angular-contact ball bearings: add a "
-            "'bearing' column (7205B, 7205BDB) or 'ball_diameter', 'pitch_diameter' and "
-            "'contact_angle'",
-        )
-    refused = [n for n in names if n in NOT_PAIRS]
-    if refused:
-        raise InputError(
-            "columns",
-            f"{refused[0]}: not used in a file of bearing pairs ({given[0]}): a pair is solved "
-            "by the exact model of its angular-contact bearings, no clearance (the contact "
-            "angle fixes the geometry), no misalignment (give the moment)",
-        )
+        raise InputError("columns", f"{given[0]}: {needs}")
+    bad = [n for n in names if n in refused]
+    if bad:
+        raise InputError("columns", f"{bad[0]}: not used {why.format(given[0])}")
+
+
+#: (columns, what they need, columns refused beside them, why) of a combined file, of pairs.
+_FILE_KINDS = (
+    (
+        COMBINED_COLUMNS,
+        "the combined load needs deep-groove ball bearings: add a 'bearing' column (a "
+        "designation) or 'ball_diameter' and 'pitch_diameter'",
+        NOT_COMBINED,
+        "with the combined load ({}): its rows are solved by the 3-D equilibrium of a ball "
+        "bearing (m = 1.5), lives in 10^6 rev",
+    ),
+    (
+        PAIR_COLUMNS,
+        "a file of bearing pairs needs angular-contact ball bearings: add a 'bearing' column "
+        "(7205B, 7205BDB) or 'ball_diameter', 'pitch_diameter' and 'contact_angle'",
+        NOT_PAIRS,
+        "in a file of bearing pairs ({}): a pair is solved by the exact model of its "
+        "angular-contact bearings, no clearance (the contact angle fixes the geometry), no "
+        "misalignment (give the moment)",
+    ),
+)
 
 
 def _check_header_unit(name: str, unit: str) -> None:
-    from bearingload.units import UNITS, parse_quantity, stiffness_factor
+    from bearingload.units import TEMPERATURE_UNITS, UNITS, parse_quantity, stiffness_factor
 
-    kind = unit_kind(COLUMNS[name])
+    kind, where = unit_kind(name), f"{name} [{unit}]"
     if kind == "temperature":
-        from bearingload.units import TEMPERATURE_UNITS
-
         if unit not in TEMPERATURE_UNITS:
-            raise InputError(f"{name} [{unit}]", f"allowed units: {', '.join(TEMPERATURE_UNITS)}")
+            raise InputError(where, f"allowed units: {', '.join(TEMPERATURE_UNITS)}")
     elif kind == "stiffness":
-        stiffness_factor(unit, None, parameter=f"{name} [{unit}]")
-    elif kind in UNITS:
-        parse_quantity("1" + unit, kind, parameter=f"{name} [{unit}]")
+        stiffness_factor(unit, None, parameter=where)
+    elif kind in UNITS or kind == "cage_angle":
+        parse_quantity("1" + unit, "angle" if kind == "cage_angle" else kind, parameter=where)
     else:
-        raise InputError(f"{name} [{unit}]", "this column takes no unit")
+        raise InputError(where, "this column takes no unit")
 
 
 @dataclass
@@ -358,27 +321,27 @@ def row_message(exc: Exception) -> str:
 
 
 def read_column(
-    parser: CellParser, texts: Sequence[str], exponents: Sequence[float] | None = None
+    name: str, unit: str | None, texts: Sequence[str], exponents: Sequence[float] | None = None
 ) -> tuple[list[Any], dict[int, str]]:
-    """The values of one column's cells in package units (None: a blank cell) and the reasons
-    of the cells that cannot be read (index -> ``column: reason``). ``exponents``: each row's
-    m, which a stiffness unit needs (default 1.5).
+    """The values of one column's cells read by its input's reader (:func:`reader`; a bare
+    number with the header's ``unit`` as if written with it), None for a blank cell, and the
+    reasons of the cells that cannot be read (index -> ``column: reason``). ``exponents``: each
+    row's m, which a stiffness unit needs (default 1.5).
 
-    A column of bare numbers is read by numpy at once (a header unit scales it); otherwise, or
-    when some number is implausible without a unit, each distinct cell text is parsed once."""
-    fast = parser.bare_numbers(texts, exponents)
+    A column of bare numbers each reader would take as it is is read by numpy at once;
+    otherwise each distinct cell text is read once."""
+    fast = _bare_numbers(name, unit, texts, exponents)
     if fast is not None:
         return fast, {}
     values: list[Any] = []
     bad: dict[int, str] = {}
     seen: dict[tuple[str, float], tuple[bool, Any]] = {}
-    for i, text in enumerate(texts):
-        key = (text, 1.5 if exponents is None else exponents[i])
+    for i, cell in enumerate(texts):
+        key = (cell, 1.5 if exponents is None else exponents[i])
         hit = seen.get(key)
         if hit is None:
-            t = text.strip()
             try:
-                hit = seen[key] = (True, parser.parse(t, key[1]) if t else None)
+                hit = seen[key] = (True, _cell(name, unit, cell.strip(), key[1]))
             except InputError as exc:
                 hit = seen[key] = (False, row_message(exc))
         if not hit[0]:
@@ -387,108 +350,93 @@ def read_column(
     return values, bad
 
 
-class CellParser:
-    """Parse the cells of one column: ``parse(text)`` returns the value in the package unit, or
-    raises :class:`InputError` named after the column."""
+def _cell(name: str, unit: str | None, cell: str, exponent: float) -> Any:
+    """One cell's value (None: blank) by its input's reader, in the package's units."""
+    from bearingload import units
 
-    def __init__(self, name: str, unit: str | None) -> None:
-        self.name = name
-        self.kind = COLUMNS[name]
-        self.unit = unit
+    if not cell:
+        return None
+    lib = library_name(name)
+    if "_" in cell and _is_number(cell):  # numbers as the command line reads them: no '1_000'
+        raise InputError(name, f"cannot read {cell!r} as a number")
+    if name == "quasi_static":  # a word of the csv file: true or false
+        if cell.lower() not in FLAGS:
+            raise InputError(name, f"cannot read {cell!r}; allowed: true, false (or blank: false)")
+        return FLAGS[cell.lower()]
+    if unit and units.is_bare(cell):
+        cell += unit if name != "stiffness" else ""
+        if name == "stiffness":
+            return float(cell) * units.stiffness_factor(unit, exponent, parameter=name)
+    value = reader(name)(cell, lib)
+    if name == "stiffness":
+        return units.parse_stiffness(value, exponent, parameter=name)
+    if name == "clearance_pick":
+        from bearingload.plan.bearing import refuse_range
+        from bearingload.plan.case import Case
 
-    def bare_numbers(self, texts: Sequence[str], m: Sequence[float] | None) -> list[Any] | None:
-        """Every cell a bare number (no unit, word or blank), read at once and in package units
-        as :meth:`parse` reads each; None when some cell needs :meth:`parse` (also to be named:
-        a fraction of a ball, a number implausible without a unit, infinity)."""
-        import numpy as np
+        refuse_range(Case(clearance_pick=value), "batch")
+    return value
 
-        words = ("text", "pick", "ring", "level", "exponent", "tilt_radius", "flag", "temperature")
-        if not texts or self.kind in words:
+
+def _is_number(cell: str) -> bool:
+    try:
+        float(cell)
+    except ValueError:
+        return False
+    return True
+
+
+def _bare_numbers(
+    name: str, unit: str | None, texts: Sequence[str], m: Sequence[float] | None
+) -> list[Any] | None:
+    """Every cell a bare number its reader takes as it is, read at once in package units; None
+    when some cell needs :func:`_cell` (also to be named: out of range, a fraction of a ball, a
+    number implausible without a unit, infinity)."""
+    import numpy as np
+
+    from bearingload import units
+
+    read, kind = reader(name), unit_kind(name)
+    numeric = kind not in (None, "temperature") or hasattr(read, "range") or name in _NUMBERS
+    if not texts or not numeric or name == "tilt_radius" or "_" in "".join(texts):
+        return None  # numpy reads '1_000' as Python does; the readers refuse it
+    try:
+        v = np.array(texts, dtype=float)
+    except ValueError:
+        return None
+    if not np.all(np.isfinite(v)) or not _taken(name, read, kind, v, unit):
+        return None
+    if not unit:
+        return v.tolist()
+    if kind == "stiffness":
+        exponents = np.full(v.size, 1.5) if m is None else np.asarray(m, dtype=float)
+        try:  # a unit of another exponent: the reader names the row
+            factor = {e: units.stiffness_factor(unit, e) for e in set(exponents.tolist())}
+        except InputError:
             return None
-        if "_" in "".join(texts):  # numpy reads '1_000' as Python does; the parser refuses it
-            return None
-        try:
-            v = np.array(texts, dtype=float)
-        except ValueError:
-            return None
-        if not np.all(np.isfinite(v)) or (self.kind == "count" and np.any(v != np.round(v))):
-            return None
-        if self.kind in ("count", "number"):
-            return v.tolist()
-        if not self.unit:
-            return None if _implausible(self.name, self.kind, v) else v.tolist()
-        from bearingload import units
+        return (v * np.array([factor[e] for e in exponents.tolist()])).tolist()
+    if kind == "cage_angle":
+        return (v * float(units.parse_cage_angle("1" + unit))).tolist()
+    return (v * units.parse_quantity("1" + unit, str(kind))).tolist()
 
-        if self.kind == "stiffness":
-            exponents = np.full(v.size, 1.5) if m is None else np.asarray(m, dtype=float)
-            try:  # a unit of another exponent: the parser names the row
-                factor = {e: units.stiffness_factor(self.unit, e, parameter=self.name)
-                          for e in set(exponents.tolist())}  # fmt: skip
-            except InputError:
-                return None
-            return (v * np.array([factor[e] for e in exponents.tolist()])).tolist()
-        if self.kind == "cage_angle":
-            return (v * float(units.parse_cage_angle("1" + self.unit))).tolist()
-        return (v * units.parse_quantity("1" + self.unit, unit_kind(self.kind))).tolist()
 
-    def parse(self, text: str, exponent: float = 1.5) -> Any:
-        from bearingload import units
+#: Columns of plain numbers (no unit, no range).
+_NUMBERS = ("balls", "inner_conformity", "outer_conformity", "poisson", "viscosity_index")
 
-        kind, name = self.kind, self.name
-        if kind in ("text", "pick"):
-            return _choice(name, text) if kind == "pick" else text
-        if kind == "level":
-            from bearingload.constants import CONTAMINATION_LEVELS
 
-            if text not in CONTAMINATION_LEVELS:
-                raise InputError(
-                    name, f"unknown level {text!r}; allowed: {', '.join(CONTAMINATION_LEVELS)}"
-                )
-            return text
-        if kind == "flag":
-            if text.lower() not in FLAGS:
-                raise InputError(
-                    name, f"cannot read {text!r}; allowed: true, false (or blank: false)"
-                )
-            return FLAGS[text.lower()]
-        if kind == "ring":
-            if text not in ("inner", "outer"):
-                raise InputError(name, f"unknown ring {text!r}; allowed: inner, outer")
-            return text
-        if kind in ("number", "count"):
-            return _number(name, text, whole=kind == "count")
-        if kind == "exponent":
-            return _exponent(text)
-        plain = _plain(name, text)
-        if kind == "temperature":  # °C, K with a unit: the one reading of --temperature
-            suffix = self.unit if self.unit and plain is not None else ""
-            return units.parse_temperature(text + suffix, parameter=name)
-        if kind == "tilt_radius":  # groove, pitch or a length, as --tilt-radius reads it
-            from bearingload.bearings.tilt import parse_tilt_radius
+def _taken(name: str, read: Any, kind: str | None, v: Any, unit: str | None) -> bool:
+    """Whether the reader takes each of the bare numbers ``v`` as it is."""
+    import numpy as np
 
-            return parse_tilt_radius(text + (self.unit if self.unit and plain is not None else ""))
-        if kind == "cage_angle":  # the one reading of solve, sweep and table
-            if plain is None:
-                return units.parse_cage_angle(text, parameter=name)
-            if not self.unit:
-                return plain
-            return plain * float(units.parse_cage_angle("1" + self.unit, parameter=name))
-        if kind == "preload" and plain is None:  # a class letter or a force with its unit
-            from bearingload.bearings.preload import parse_preload
-
-            return parse_preload(text, parameter=name)
-        if kind == "clearance" and re.fullmatch(r"(?i)c[2-5n]|g[6-9]|cn|normal", text):
-            from bearingload.bearings.clearance import parse_clearance
-
-            return parse_clearance(text)
-        if kind == "stiffness":
-            if plain is not None and self.unit:
-                return plain * units.stiffness_factor(self.unit, exponent, parameter=name)
-            return units.parse_stiffness(text, exponent, parameter=name)
-        if plain is not None and self.unit:
-            return plain * units.parse_quantity("1" + self.unit, unit_kind(kind), parameter=name)
-        # a bare number: refused when implausible for its quantity, as on the command line
-        return units.parse_quantity(text, unit_kind(kind), parameter=name)
+    low, high, low_open = getattr(read, "range", (-np.inf, np.inf, False))
+    ok = (v > low if low_open else v >= low) & (v <= high)
+    if getattr(read, "positive", False):
+        ok &= v > 0
+    if name == "preload":
+        ok &= v >= 0
+    if name == "balls":
+        ok &= v == np.round(v)
+    return bool(np.all(ok)) and (bool(unit) or kind is None or not _implausible(name, kind, v))
 
 
 def _implausible(name: str, kind: str, values: Any) -> bool:
@@ -498,62 +446,9 @@ def _implausible(name: str, kind: str, values: Any) -> bool:
 
     from bearingload.units import PLAUSIBLE_BARE
 
-    kind = unit_kind(kind)
+    kind = "angle" if kind == "cage_angle" else kind
     rule = PLAUSIBLE_BARE.get((kind, name)) or PLAUSIBLE_BARE.get((kind, None))
     if rule is None:
         return False
     low, high, _ = rule
     return bool(np.any((values < low) | (values >= high)))
-
-
-def _float(text: str) -> float:
-    """``float(text)`` without the underscores Python allows ('1_000'): the command line's
-    unit parser refuses them, and so must every cell."""
-    if "_" in text:
-        raise ValueError(text)
-    return float(text)
-
-
-def _plain(name: str, text: str) -> float | None:
-    """A bare finite number, or None (then the unit parser reads the text)."""
-    try:
-        v = _float(text)
-    except ValueError:
-        return None
-    if v != v or v in (float("inf"), float("-inf")):
-        raise InputError(name, f"{text!r} is not a finite number")
-    return v
-
-
-def _number(name: str, text: str, *, whole: bool) -> float:
-    try:
-        v = _float(text)
-    except ValueError:
-        raise InputError(name, f"cannot read {text!r} as a number") from None
-    if v != v or v in (float("inf"), float("-inf")):
-        raise InputError(name, f"{text!r} is not a finite number")
-    if whole and v != round(v):
-        raise InputError(name, f"must be a whole number (got {text})")
-    return v
-
-
-def _exponent(text: str) -> float:
-    num, slash, den = text.partition("/")
-    try:
-        return _float(num) / _float(den) if slash else _float(text)
-    except (ValueError, ZeroDivisionError):
-        raise InputError(
-            "exponent", f"{text!r} is neither a number nor a fraction like 10/9"
-        ) from None
-
-
-def _choice(name: str, text: str) -> str:
-    """A clearance pick: min, mean or max (the pick 'range' refused by the plan's rule)."""
-    from bearingload.plan.bearing import refuse_range
-    from bearingload.plan.case import Case
-
-    if text == "range":
-        refuse_range(Case(clearance_pick=text), "batch")
-    if text not in ("min", "mean", "max"):
-        raise InputError(name, f"unknown pick {text!r}; allowed: min, mean, max")
-    return text

@@ -20,8 +20,10 @@ from typing import Any
 from bearingload.batch.read import Header
 from bearingload.bearings.mounting import MOUNTING_PARAMS, RESULT_KEYS
 from bearingload.bearings.oil import OIL_INPUTS
+from bearingload.reports.combined import ANSWER_KEYS as COMBINED_ANSWERS
+from bearingload.reports.combined import INPUT_KEYS as COMBINED_INPUTS
 from bearingload.reports.quantities import SERVICE_KEYS, units
-from bearingload.reports.render import Column, Table, csv_block, csv_header, render
+from bearingload.reports.render import Column, Table, csv_block, render
 from bearingload.reports.solve import INPUT_KEYS, REPORT_KEYS, column
 from bearingload.studies.matrix import MATRIX_KEYS
 
@@ -45,20 +47,12 @@ _BEARING_ONLY = (
 #: Columns of a combined-load file written only when the file has them (as solve writes them
 #: only when given).
 _COMBINED_IF_GIVEN = ("moment_cross", "contact_angle")
-#: The output columns of a combined-load file (those of ``solve --format csv`` with an axial
-#: load), after the row number.
-COMBINED_KEYS: tuple[str, ...] = (
-    "bearing", "method", "balls", "load", "axial_load", "moment", "moment_cross",
-    "misalignment", "contact_angle", "tilt_radius", "rotating", "stiffness", "clearance",
-    "clearance_pick", "cage_angle", *RESULT_KEYS, "q_max", "k", "K_Q", "loaded_balls", "p_max_inner",
-    "p_max_outer", "static_equivalent_load", "static_safety", "static_rating", "contact_angle_max",
-    "free_contact_angle", "axial_play", "x", "y", "axial", "tilt", "tilt_cross",
-    "stiffness_radial", "stiffness_axial", "stiffness_tilt", "reference_rating_life",
-    "reference_rating_life_hours", "dynamic_rating", "equivalent_load", "rating_life",
-    "rating_life_hours", *SERVICE_KEYS[:1], "ball_density", *SERVICE_KEYS[1:],
-)  # fmt: skip
-#: ... then the entries of the 5x5 tangent stiffness matrix, as solve's csv writes them.
-COMBINED_KEYS += MATRIX_KEYS
+#: The output columns of a combined-load file, after the row number: those of ``solve --format
+#: csv`` with an axial load (:mod:`bearingload.reports.combined`; the contact angle, an input,
+#: after the misalignment), then the entries of the 5x5 tangent stiffness matrix.
+_INPUTS = [k for k in COMBINED_INPUTS if k != "contact_angle"]
+_INPUTS.insert(_INPUTS.index("misalignment") + 1, "contact_angle")
+COMBINED_KEYS = (*_INPUTS, *(k for k in COMBINED_ANSWERS if k not in _INPUTS), *MATRIX_KEYS)
 #: What the rows of a combined-load file carry beyond the columns, as solve's json names it:
 #: the model (the ball dynamics added at a speed) and each ball's inner and outer contact angle
 #: [°] and load [N] (json only; null for a radial row, whose model is the radial engine's).
@@ -134,6 +128,8 @@ def _columns(header: Header) -> list[Column]:
         given = [k for k in given if k not in service or k in wanted]
         return [column(k, 1.5) for k in ("row", *given)]
     answer = [k for k in REPORT_KEYS if k != "relative_error"]
+    at = answer.index("speed") + 1  # a ball bearing's row at speed: the ball dynamics' density
+    answer = [*answer[:at], "ball_density", *answer[at:]]
     answer = [k for k in answer if k not in service or k in wanted]
     keys = ["row", *INPUT_KEYS, *answer, "valid"]
     if not header.has_bearing:
@@ -152,11 +148,6 @@ def held_keys(header: Header) -> tuple[str, ...]:
     dynamics)."""
     at_speed = "speed" in header.names and header.has_bearing
     return HELD_KEYS if header.combined or header.pairs or at_speed else ()
-
-
-def csv_head(columns: Sequence[Column]) -> str:
-    """The csv header line."""
-    return csv_header(columns)
 
 
 def csv_rows(columns: Sequence[Column], rows: Sequence[int], values: dict[str, Any]) -> str:
@@ -189,6 +180,36 @@ def csv_chunk(
 def row_values(columns: Sequence[Column], n: int, values: dict[str, Any]) -> dict[str, Any]:
     """The values of ``columns`` but the row number, blank (None) where the rows have none."""
     return {c.key: values.get(c.key, [None] * n) for c in columns if c.key != "row"}
+
+
+class Held:
+    """The solved rows of a file that json, markdown and table hold (at most ``limit``)."""
+
+    def __init__(self, header: Header, columns: list[Column]) -> None:
+        self.columns, self.extra = columns, held_keys(header)
+        self.rows: list[int] = []
+        self.values: dict[str, list[Any]] = {c.key: [] for c in columns if c.key != "row"}
+
+    def add(self, part: Any) -> bool:
+        """Hold a chunk's solved rows: each column's, the warnings, json's model and per-ball
+        contacts (as solve's json); False beyond :attr:`limit` rows."""
+        self.rows += part.rows
+        n = len(part.rows)
+        values = row_values(self.columns, n, part.values)
+        values["warnings"] = part.values.get("warnings", [()] * n)
+        values |= {k: part.values.get(k, [None] * n) for k in self.extra}
+        for k, v in values.items():
+            self.values.setdefault(k, []).extend(v.tolist() if hasattr(v, "tolist") else v)
+        return len(self.rows) <= self.limit
+
+    @property
+    def limit(self) -> int:
+        """:data:`MAX_HELD_ROWS`."""
+        return MAX_HELD_ROWS
+
+    def report(self, skipped: Sequence[tuple[int, str]], fmt: str) -> str:
+        """The whole report in ``fmt`` (json, markdown, table)."""
+        return held_report(self.columns, self.rows, self.values, skipped, fmt)
 
 
 def held_report(

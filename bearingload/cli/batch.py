@@ -42,58 +42,48 @@ def batch(
 ) -> None:
     """Solve every case (row) of a csv file: one output row per case, in input order, with the
     input file's row number (the header is row 1), the inputs and the columns that
-    'bearingload solve --format csv' writes for one case.
+    'bearingload solve --format csv' writes for one case (docs/batch.md).
 
-    CASES.csv ('-': standard input) names its columns like the options of 'solve': load
-    (required), balls and stiffness, or bearing (a catalogue designation) and/or the ball
-    geometry (ball_diameter, pitch_diameter, inner_conformity, outer_conformity, modulus,
-    poisson, ball_material: steel or si3n4), the mounting (shaft_fit, housing_fit, shaft_bore,
-    housing_diameter, inner_ring_temperature, outer_ring_temperature: solve's options; the row
-    is solved at the operating clearance), clearance (a length or a class C2 CN C3 C4 C5)
-    with clearance_pick (min, mean, max), cage_angle (degrees or 'half'), exponent, method, revolutions. A missing column or
-    an empty cell takes solve's default. A unit in the header (load [kN]) is the unit of the
-    column's bare numbers; a number with its own unit (300kgf) keeps it. An unknown column is
-    an error (exit 2).
+    CASES.csv ('-': standard input) names its columns like the options of 'solve', each cell
+    read as solve reads the option: load (required), balls and stiffness, or bearing (a
+    catalogue designation) and/or the ball geometry (ball_diameter, pitch_diameter,
+    inner_conformity, outer_conformity, modulus, poisson, ball_material: steel or si3n4), the
+    mounting (shaft_fit, housing_fit, shaft_bore, housing_diameter, inner_ring_temperature,
+    outer_ring_temperature), clearance (a length or a class C2 CN C3 C4 C5) with clearance_pick
+    (min, mean, max), cage_angle (degrees or 'half'), exponent, method, revolutions. A missing
+    column or an empty cell takes solve's default. A unit in the header (load [kN]) is the unit
+    of the column's bare numbers; a number with its own unit (300kgf) keeps it. An unknown
+    column is an error (exit 2).
 
-    dynamic_rating (C_r replacing the catalogue's) and rotating (inner, outer: the ring of the
-    reference rating life L10r) feed the lives only. As for 'solve', the load alone chooses a
-    row's engine: a cell in axial_load, moment, moment_cross or misalignment makes the row a
-    combined-load case of a deep-groove ball bearing (3-D ring equilibrium, ISO/TS 16281 L10r,
-    ISO 281 L10; load may then be 0), with tilt_radius (groove, pitch or a length) the lever
-    of its tilt; a row without such a cell is a radial case (an angular-contact bearing's, in
-    such a file, a combined one at F_a = 0, as solve; so is a ball bearing's at a speed,
-    below). A file with one of these columns
-    writes the columns solve writes with an axial load (a radial row of it fills those the two
-    engines share), names a bearing or the ball geometry, and has no method, exponent or
-    revolutions column. A tilt_radius cell without a combined load on its row is refused.
+    As for 'solve', the load alone chooses a row's engine: a cell in axial_load, moment,
+    moment_cross or misalignment makes the row a combined-load case (3-D ring equilibrium,
+    ISO/TS 16281 L10r, ISO 281 L10; load may then be 0), with tilt_radius (groove, pitch or a
+    length) the lever of its tilt. A file with one of these columns writes the columns solve
+    writes with an axial load, names a bearing or the ball geometry, and has no method,
+    exponent or revolutions column. A column arrangement, preload or width makes every row a
+    bearing pair (two output rows, as solve 7205BDB).
 
-    The operating conditions of the lives are columns named like solve's options
+    dynamic_rating and rotating feed the lives only, as do the operating conditions
     (static_rating, speed, reliability, viscosity, contamination, eC, fatigue_load_limit,
-    roughness, pressure_viscosity; docs/batch.md); the oil may give the viscosity instead, by
-    solve's rules: oil (an ISO grade, VG68) or viscosity_40, with temperature (bare: °C; K), and
-    viscosity_100 or viscosity_index (default 95). As 'solve --speed', a row of a ball
-    bearing with a speed is solved with each ball's centrifugal force and gyroscopic moment
-    (docs/speed.md; a radial row by the combined engine at F_a = 0): quasi_static (true or
-    false; blank: false) true keeps the static model, the speed then giving the lives in hours
-    only; ball_density (kg/m^3, bare numbers; default bearing steel 7850, silicon nitride
-    about 3200) gives the ball mass. Both are refused without a speed, ball_density under
-    quasi_static true or for a roller bearing (the static model at any speed). json adds to
-    each row of a file with a load column, or a speed column and bearings, its model and, for
-    the rows on the combined engine, every ball's inner and outer contact angle and load
-    (contact_angles_inner, contact_angles_outer, ball_loads_inner, ball_loads_outer).
+    roughness, pressure_viscosity; or the oil: oil or viscosity_40 with temperature, and
+    viscosity_100 or viscosity_index). A row of a ball bearing with a speed is solved with the
+    ball dynamics (docs/speed.md): quasi_static (true or false; blank: false) true keeps the
+    static model; ball_density (kg/m^3, bare numbers; default bearing steel 7850) gives the
+    ball mass. json adds to such rows their model and every ball's inner and outer contact
+    angle and load (contact_angles_inner, contact_angles_outer, ball_loads_inner,
+    ball_loads_outer).
 
-    A bad row (a negative load, an unknown unit or bearing, z = 0, a line with the wrong
-    number of cells, a line that is not UTF-8 text) is skipped: the output keeps it with its
-    row number and the reason (csv: the last column, skipped; json: skipped; table and
-    markdown: the notes), standard error names it too; the other rows are still solved and
-    written, and the exit status is 1 when any row was skipped (0: every row solved; 2: bad
-    command line or header, or a bad row with --strict). A last line on standard error counts
-    the rows solved and skipped and the warnings; -q leaves that line alone.
+    A bad row (a negative load, an unknown unit or bearing, a line with the wrong number of
+    cells or not UTF-8 text) is skipped: the output keeps it with its row number and reason
+    (csv: the last column, skipped; json: skipped; table and markdown: the notes) and standard
+    error names it ('Skipped: row N: reason', apart from the warnings of the solved rows); the
+    exit status is then 1 (2: a bad command line or header, or a bad row with --strict). A last
+    line on standard error counts the rows solved and skipped and the warnings; -q leaves that
+    line alone.
 
-    The rows that share a bearing (or ring), method and engine are solved together, chunk by
-    chunk, by one vectorised call of the function solve uses for one case; each row's answer
-    depends on its own cells only. csv is streamed (any number of rows, -o written whole at
-    the end); json, markdown and table hold every row and refuse files over 100000 rows.
+    Rows that share a bearing and an engine are solved together, chunk by chunk, by one
+    vectorised call; each row's answer depends on its own cells only. csv is streamed (-o
+    written whole at the end); json, markdown and table hold every row (at most 100000).
 
     \b
     Examples:
@@ -109,17 +99,10 @@ def batch(
       bearingload batch examples/speed_cases.csv --format json
     """
     from bearingload.batch.read import CHUNK_ROWS, read_cases
-    from bearingload.batch.report import (
-        MAX_HELD_ROWS,
-        SKIPPED,
-        batch_columns,
-        csv_chunk,
-        csv_head,
-        held_keys,
-        row_values,
-    )
+    from bearingload.batch.report import SKIPPED, Held, batch_columns, csv_chunk
     from bearingload.batch.solve import BatchSolver
     from bearingload.errors import InputError
+    from bearingload.reports.render import csv_header
 
     if output == "":
         raise click.UsageError("Invalid value for '-o' / '--output': the file name is empty")
@@ -127,20 +110,14 @@ def batch(
         header, blocks = read_cases(cases, chunk_size or CHUNK_ROWS)
     except InputError as exc:
         raise click.UsageError(_header_message(exc)) from exc
-    columns = batch_columns(header)
-    solver = BatchSolver(header)
-    if header.pairs:
-        from bearingload.batch.pairs import PairSolver
-
-        solver = PairSolver(header)
-    held: dict[str, list[Any]] = {c.key: [] for c in columns if c.key != "row"}
-    held_rows: list[int] = []
+    columns, solver = batch_columns(header), BatchSolver(header)
+    held = Held(header, columns)
     skipped: list[tuple[int, str]] = []
     warned = total = 0
     progress = _Progress()
     with _Sink(output, strict) as sink:
         if fmt == "csv":
-            sink.write(csv_head([*columns, SKIPPED]))
+            sink.write(csv_header([*columns, SKIPPED]))
         for block in blocks:
             total += len(block.numbers) + len(block.errors)
             part = solver.solve(block)
@@ -152,26 +129,16 @@ def batch(
             warned = _row_messages(part, warned, progress, quiet)
             if fmt == "csv":
                 sink.write(csv_chunk([*columns, SKIPPED], part.rows, part.values, part.errors))
-            else:
-                held_rows += part.rows
-                if len(held_rows) > MAX_HELD_ROWS:
-                    sink.fail()
-                    raise click.UsageError(
-                        f"Invalid value for '--format': {fmt} holds every row and takes at most "
-                        f"{MAX_HELD_ROWS} rows; write --format csv for longer files"
-                    )
-                values = row_values(columns, len(part.rows), part.values)
-                values["warnings"] = part.values.get("warnings", [()] * len(part.rows))
-                for k in held_keys(header):  # json: the model and per-ball contacts, as solve
-                    values[k] = part.values.get(k, [None] * len(part.rows))
-                for k, v in values.items():
-                    held.setdefault(k, []).extend(v.tolist() if hasattr(v, "tolist") else v)
+            elif not held.add(part):
+                sink.fail()
+                raise click.UsageError(
+                    f"Invalid value for '--format': {fmt} holds every row and takes at most "
+                    f"{held.limit} rows; write --format csv for longer files"
+                )
             progress.update(total)
         progress.clear()
         if fmt != "csv":
-            from bearingload.batch.report import held_report
-
-            sink.write(held_report(columns, held_rows, held, skipped, fmt))
+            sink.write(held.report(skipped, fmt))
     _summary(total, len(skipped), warned, quiet)
     if skipped:
         click.get_current_context().exit(1)
@@ -197,18 +164,19 @@ def _summary(total: int, skipped: int, warned: int, quiet: bool) -> None:
 
 
 def _row_messages(part: Any, warned: int, progress: _Progress, quiet: bool) -> int:
-    """Print the chunk's skipped rows and the checks' warnings in row order (so that stderr
-    does not depend on --chunk-size), the warnings up to :data:`MAX_WARNINGS_SHOWN` in all
-    (``quiet``: none of them); return the number of warnings so far."""
+    """Print the chunk's skipped rows (``Skipped: row N: reason``) and the checks' warnings
+    (``Warning: row N: ...``) in row order (so that stderr does not depend on --chunk-size),
+    the warnings up to :data:`MAX_WARNINGS_SHOWN` in all (``quiet``: none of them); return the
+    number of warnings so far."""
     found = part.values.get("warnings", [])
     messages = [(row, text, False) for row, text in part.errors]
-    messages += [(part.rows[i], text, True)
-                 for i in compress(range(len(found)), found) for text in found[i]]  # fmt: skip
+    for i in compress(range(len(found)), found):
+        messages += [(part.rows[i], text, True) for text in found[i]]
     for row, text, warning in sorted(messages, key=lambda m: m[0]):  # stable: a row's order
         warned += warning
         if not quiet and (not warning or warned <= MAX_WARNINGS_SHOWN):
             progress.clear()
-            click.echo(f"Warning: row {row}: {text}", err=True)
+            click.echo(f"{'Warning' if warning else 'Skipped'}: row {row}: {text}", err=True)
     return warned
 
 
@@ -226,29 +194,23 @@ class _Sink:
 
     def __init__(self, output: str | None, strict: bool) -> None:
         self.output = None if output in (None, "-") else output
-        self.spool = strict and self.output is None
         self.failed = False
+        self.fh: Any = None
+        if self.output is None and strict:
+            import tempfile
+
+            self.fh = tempfile.TemporaryFile("w+", encoding="utf-8", newline="\n")
 
     def __enter__(self) -> _Sink:
         if self.output is not None:
             from bearingload.reports.render import atomic_file
 
-            self.atomic: Any = atomic_file(self.output)
-            try:
-                self.fh = self.atomic.__enter__()
-            except OSError as exc:
-                raise click.UsageError(
-                    f"Invalid value for '-o' / '--output': cannot write {self.output!r}: "
-                    f"{exc.strerror}"
-                ) from exc
-        elif self.spool:
-            import tempfile
-
-            self.fh = tempfile.TemporaryFile("w+", encoding="utf-8", newline="\n")
+            self.atomic = atomic_file(self.output)
+            self.fh = self._writing(self.atomic.__enter__)
         return self
 
     def write(self, text: str) -> None:
-        if self.output is None and not self.spool:
+        if self.fh is None:
             click.echo(text, nl=False)
         else:
             self.fh.write(text)
@@ -259,19 +221,22 @@ class _Sink:
     def __exit__(self, kind: Any, exc: Any, tb: Any) -> None:
         bad = kind is not None or self.failed
         if self.output is not None:
-            try:
-                self.atomic.__exit__(RuntimeError if bad else None, None, None)
-            except OSError as error:
-                raise click.UsageError(
-                    f"Invalid value for '-o' / '--output': cannot write {self.output!r}: "
-                    f"{error.strerror}"
-                ) from error
-        elif self.spool:
+            self._writing(lambda: self.atomic.__exit__(RuntimeError if bad else None, None, None))
+        elif self.fh is not None:
             if not bad:
                 self.fh.seek(0)
                 while block := self.fh.read(1 << 20):
                     click.echo(block, nl=False)
             self.fh.close()
+
+    def _writing(self, call: Any) -> Any:
+        """``call()``, an OSError said as a bad ``-o``."""
+        try:
+            return call()
+        except OSError as exc:
+            raise click.UsageError(
+                f"Invalid value for '-o' / '--output': cannot write {self.output!r}: {exc.strerror}"
+            ) from exc
 
 
 class _Progress:
