@@ -41,7 +41,6 @@ the problem, not of the solver.
 from __future__ import annotations
 
 import math
-from dataclasses import dataclass
 from typing import Any
 
 import numpy as np
@@ -49,6 +48,7 @@ import numpy as np
 import bearingload.models._core as _core
 from bearingload import numerics, validate
 from bearingload.errors import ConvergenceError, InputError
+from bearingload.lazy_dataclass import dataclass
 from bearingload.models import _ring
 from bearingload.models._ring import (
     APPROACH_RANGE,
