@@ -79,7 +79,7 @@ def test_sweep_takes_the_maker_of_solve():
         (("table", "life", "-b", "6205", "-F", "1kN", "--clearance-pick", "range"),
          "--clearance-pick cannot be used with table life"),
         (("sweep", "-z", "8", "-K", "1e5", "-F", "1kN", "--maker", "SKF"), "--maker needs"),
-        (("table", "k", "--maker", "SKF"), "--maker needs --bearing"),
+        (("table", "k", "--maker", "SKF"), "--maker needs '--bearing'"),
         (("table", "k", "--moment-cross", "1Nm"), "--moment-cross cannot be used with table k"),
         (("table", "kq", "--tilt-radius", "pitch"), "--tilt-radius cannot be used with table kq"),
         (("sweep", "-z", "7", "--kurochkin-T", "0.5", "--moment-cross", "1"),
