@@ -294,3 +294,23 @@ def test_batch_columns_moment_cross_and_tilt_radius_are_the_options(tmp_path):
     plain.write_text("bearing,load,axial_load\n6205,1kN,500N\n", encoding="utf-8")
     head = invoke("batch", str(plain), "--format", "csv").stdout.splitlines()[0]
     assert "moment_cross" not in head and "tilt_radius [mm]" in head  # (the lever used)
+
+
+@pytest.mark.parametrize(
+    ("args", "refused", "named"),
+    [
+        (("solve", "load", "-F", "1kN"), "cannot read 'load' as a bearing designation",
+         "by hand: '--balls', '--ball-diameter'"),
+        (("solve", "balls", "-F", "1kN"), "cannot read 'balls' as a bearing designation",
+         "by hand: '--balls', '--ball-diameter'"),
+        (("solve", "6205", "-F", "1kN", "--speed", "3000", "--oil", "balls", "--temperature",
+          "70"), "Invalid value for '--oil': unknown ISO 3448 grade 'balls'", "VG68"),
+    ],
+)  # fmt: skip
+def test_a_value_typed_that_is_a_parameter_name_is_quoted_as_typed(capsys, args, refused, named):
+    """The library quotes the inputs it names and the value it refuses alike; the command line
+    writes the names as options and leaves the value the user typed as it was typed."""
+    code, out, err = run_entry(capsys, *args)
+    assert code == 2 and out == ""
+    assert refused in err
+    assert named in err
