@@ -314,3 +314,29 @@ def test_a_value_typed_that_is_a_parameter_name_is_quoted_as_typed(capsys, args,
     assert code == 2 and out == ""
     assert refused in err
     assert named in err
+
+
+@pytest.mark.parametrize(
+    ("args", "message"),
+    [
+        (("solve", "-z", "8", "--ball-diameter", "10", "-F", "1kN"),
+         "Missing option '--pitch-diameter' (the ball geometry needs it beside "
+         "'--ball-diameter'; or give the ball stiffness '--stiffness' instead)"),
+        (("solve", "--ball-diameter", "10", "--pitch-diameter", "40", "-F", "1kN"),
+         "Missing option '--balls' / '-z' (the number of balls z; or give a 'BEARING' "
+         "designation)"),
+        (("solve", "6205", "-F", "1kN", "--speed", "3000", "--temperature", "70"),
+         "Missing option '--oil' / '--viscosity-40': give the oil by its ISO 3448 grade"),
+        (("solve", "6205", "-F", "1kN", "--oil", "VG68", "--temperature", "70"),
+         "Invalid value for '--oil': needs the shaft speed ('--speed')"),
+        (("table", "life", "-z", "7", "--ball-diameter", "11.5", "-F", "1kN"),
+         "Missing option '--pitch-diameter'"),
+    ],
+)  # fmt: skip
+def test_a_missing_input_is_named_as_the_user_can_type_it(capsys, args, message):
+    """A refusal for what is missing names that option, never one the user gave no reason to
+    (--stiffness when half of the ball geometry is given, --viscosity beside an oil)."""
+    code, out, err = run_entry(capsys, *args)
+    assert code == 2 and out == ""
+    assert err.startswith(f"Error: {message}"), err
+    assert "'--viscosity'" not in err
