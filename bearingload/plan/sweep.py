@@ -26,6 +26,7 @@ from bearingload.plan.solve import (
     radial_at_speed,
     refuse_static_dynamics,
     speed_hint,
+    with_solver_findings,
 )
 
 
@@ -118,6 +119,7 @@ def _combined(case: Case, steps: int, radial: bool) -> Swept:
         if dynamics["speed"] is None:
             raise
         raise exc.with_way_out(QUASI_STATIC_WAY if radial else STATIC_PAIR_WAY) from exc
+    result = with_solver_findings(result, result.result, case.axial_load or 0.0, case.radial_load)
     if case.speed is not None:  # the hours (and the dynamics' speed); the limiting speed
         found = (*result.warnings, *speed_findings(case.speed, b))
         result = dataclasses.replace(result, speed=case.speed, warnings=found)
