@@ -203,3 +203,24 @@ def test_revolutions_where_no_allowable_load_is_printed_is_refused(args, where, 
     assert run_entry(capsys, "solve", *args)[0] == 0
     code, out, _ = run_entry(capsys, "solve", "6205", "-F", "1kN", "--revolutions", "1e8")
     assert code == 0 and "100.000  10^6 rev" in out
+
+
+def test_stiffness_matrix_is_the_5x5_of_every_engine():
+    """json's ``stiffness_matrix`` has one layout and meaning, d(F_x, F_y, F_a, M, M_c)/d(x,
+    y, axial, tilt, tilt_cross): the radial engine gives its x, y block and null for what it
+    does not determine (it holds the ring axially, untilted); the 3-D solve of the same case
+    (-A 0) gives every entry, its x, y block the radial one."""
+    import json
+
+    from .cli_helpers import invoke
+
+    docs = [json.loads(invoke("solve", "6205", "-F", "1kN", *extra, "--format", "json").output)
+            for extra in ((), ("-A", "0"))]  # fmt: skip
+    radial, full = (d["cases"][0]["stiffness_matrix"] for d in docs)
+    assert len(radial) == len(full) == 5 and all(len(r) == 5 for r in radial + full)
+    assert [[v is None for v in r] for r in radial] == [[i > 1 or j > 1 for j in range(5)]
+                                                        for i in range(5)]  # fmt: skip
+    for i in range(2):
+        for j in range(2):
+            assert radial[i][j] == pytest.approx(full[i][j], rel=1e-9, abs=1e-6)
+    assert docs[0]["units"]["stiffness_matrix"] == docs[1]["units"]["stiffness_matrix"]
