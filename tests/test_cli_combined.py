@@ -224,3 +224,25 @@ def test_stiffness_matrix_is_the_5x5_of_every_engine():
         for j in range(2):
             assert radial[i][j] == pytest.approx(full[i][j], rel=1e-9, abs=1e-6)
     assert docs[0]["units"]["stiffness_matrix"] == docs[1]["units"]["stiffness_matrix"]
+
+
+def test_a_failure_names_the_inputs_as_typed(monkeypatch, capsys):
+    """A ConvergenceError names its case's inputs by the options the user typed and the cage
+    angle as given (the solver reduces -10° to 350°); the library's plan by its argument names
+    (load, not the solver's radial_load)."""
+    import bearingload.models.combined as combined
+    from bearingload import analyse
+    from bearingload.errors import ConvergenceError
+
+    from .cli_helpers import run_entry
+
+    monkeypatch.setattr(combined, "ACCEPT", -1.0)  # no residual is accepted: every case fails
+    code, out, err = run_entry(capsys, "solve", "6205", "-F", "1kN", "-A", "100N",
+                               "--cage-angle", "-10")  # fmt: skip
+    assert code == 1 and out == ""
+    assert "for the case --balls = 9, --load = 1000 N, --axial-load = 100 N" in err
+    assert "--cage-angle = -10 °" in err and "350" not in err and "radial_load" not in err
+    with pytest.raises(ConvergenceError) as info:
+        analyse("6205", load=1000, axial_load=100, cage_angle=-10)
+    assert set(info.value.cases) >= {"load", "axial_load", "cage_angle"}
+    assert "radial_load" not in info.value.cases and info.value.cases["cage_angle"] == -10

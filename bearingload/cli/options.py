@@ -239,9 +239,22 @@ def library_errors(func: Callable[..., Any]) -> Callable[..., Any]:
         except InputError as exc:
             raise usage_error(exc) from exc
         except BearingloadError as exc:
-            raise click.ClickException(option_message(str(exc))) from exc
+            raise click.ClickException(_failure(exc)) from exc
 
     return wrapper
+
+
+def _failure(exc: BearingloadError) -> str:
+    """The line of a failure of the computation: a ConvergenceError names its cases' inputs by
+    the options the user types (``--load = 1000 N``)."""
+    from bearingload.errors import ConvergenceError
+
+    if not isinstance(exc, ConvergenceError):
+        return option_message(str(exc))
+    cases = {option_name(k): v for k, v in exc.cases.items()}
+    units = {option_name(k): u for k, u in (exc.units or {}).items()}
+    way = None if exc.way_out is None else option_message(exc.way_out)
+    return str(ConvergenceError(exc.solver, exc.iterations, exc.residual, cases, units, way))
 
 
 class Exponent(click.ParamType):

@@ -73,14 +73,37 @@ def solve_case(
     allowed = (*list_methods(), "all")
     if method not in allowed:
         raise InputError("method", f"unknown method {method!r}; allowed: {', '.join(allowed)}")
+    given = case
     case, engine, at_speed = engine_of(case, method, revolutions)
     methods = list_methods() if method == "all" else [method]
-    if engine == "pair":
-        refuse_revolutions(revolutions, "a bearing pair", "it prints L10r and L10 of the pair")
-        return _pair(case, method, spell)
-    if engine == "combined":
-        return _combined(case, method, revolutions, at_speed, spell)
-    return _radial(case, methods, revolutions, spell)
+    try:
+        if engine == "pair":
+            refuse_revolutions(revolutions, "a bearing pair", "it prints L10r and L10 of the pair")
+            return _pair(case, method, spell)
+        if engine == "combined":
+            return _combined(case, method, revolutions, at_speed, spell)
+        return _radial(case, methods, revolutions, spell)
+    except ConvergenceError as exc:
+        raise in_case_terms(exc, given) from exc
+
+
+def in_case_terms(exc: ConvergenceError, case: Case) -> ConvergenceError:
+    """The solver's ConvergenceError naming the inputs of its cases as the case names them:
+    the library's argument names (``radial_load`` -> ``load``, :func:`bearingload.plan.inputs.
+    argument_of`) and the cage angle as given (``half``, or -10° that the solver reduced to
+    350°) where the cases were solved at that one cage angle."""
+    import numpy as np
+
+    from bearingload.plan.inputs import argument_of
+
+    cases = {argument_of(k): v for k, v in exc.cases.items()}
+    units = {argument_of(k): u for k, u in (exc.units or {}).items()}
+    cage = np.asarray(cases.get("cage_angle", []), dtype=float).reshape(-1)
+    if cage.size and np.all(cage == cage[0]):  # one cage angle: the case's own, as given
+        cases["cage_angle"] = case.cage_angle
+        if case.cage_angle == "half":
+            units.pop("cage_angle", None)
+    return ConvergenceError(exc.solver, exc.iterations, exc.residual, cases, units, exc.way_out)
 
 
 def engine_of(

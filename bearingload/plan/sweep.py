@@ -22,6 +22,7 @@ from bearingload.plan.case import Case
 from bearingload.plan.solve import (
     QUASI_STATIC_WAY,
     STATIC_PAIR_WAY,
+    in_case_terms,
     pair_speed_hint,
     radial_at_speed,
     refuse_static_dynamics,
@@ -42,7 +43,15 @@ class Swept:
 
 
 def sweep_case(case: Case, steps: int) -> Swept:
-    """Sweep the case over one ball pitch by the engine its inputs choose."""
+    """Sweep the case over one ball pitch by the engine its inputs choose; a failure names the
+    inputs as the case does (:func:`bearingload.plan.solve.in_case_terms`)."""
+    try:
+        return _swept(case, steps)
+    except ConvergenceError as exc:
+        raise in_case_terms(exc, case) from exc
+
+
+def _swept(case: Case, steps: int) -> Swept:
     pair = case.as_pair()
     if pair is not None:
         return _pair(pair, steps)

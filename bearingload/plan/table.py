@@ -8,8 +8,15 @@ from __future__ import annotations
 from typing import Any, NamedTuple
 
 from bearingload.bearings.mounting import MOUNTING_PARAMS
-from bearingload.errors import ConflictError, InputError, MissingError, UnusedError
+from bearingload.errors import (
+    ConflictError,
+    ConvergenceError,
+    InputError,
+    MissingError,
+    UnusedError,
+)
 from bearingload.plan.case import COMBINED_PARAMS, DYNAMICS_PARAMS, MOUNTING_REFUSAL, Case
+from bearingload.plan.solve import in_case_terms
 
 #: The tables: k and kq over z (Kuzmenko 2010, Kuzmenko & Sabadash 2014), life over G_r.
 TABLES = ("k", "kq", "life")
@@ -82,11 +89,14 @@ def table_case(
     if name != "life":
         case.refuse(DYNAMICS_PARAMS, where, DYNAMICS_REFUSAL)
     pair = case.as_pair()
-    if pair is not None or preloads is not None:
-        return _pair_life(name, pair, z_max, method, clearances, preloads)
-    _refuse_angular(name, case)
-    if name == "life":
-        return _life(case, z_max, method, clearances, spell)
+    try:
+        if pair is not None or preloads is not None:
+            return _pair_life(name, pair, z_max, method, clearances, preloads)
+        _refuse_angular(name, case)
+        if name == "life":
+            return _life(case, z_max, method, clearances, spell)
+    except ConvergenceError as exc:
+        raise in_case_terms(exc, case) from exc
     return Tabled("design", _design(name, case, clearances))
 
 
