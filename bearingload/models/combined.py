@@ -297,10 +297,13 @@ def groove_geometry(
     >>> round(float(A), 4), round(float(a0), 4), round(float(sa), 5)
     (0.575, 7.5614, 0.15133)
     """
+    fi, fo, gr = validate.each_finite(f_i=f_i, f_o=f_o, clearance=clearance)
     geo = _geometry(
         validate.positive("ball_diameter", ball_diameter, "mm"),
         validate.positive("pitch_diameter", pitch_diameter, "mm"),
-        *validate.each_finite(f_i=f_i, f_o=f_o, clearance=clearance),
+        fi,
+        fo,
+        gr,
     )
     play = 2.0 * geo.A * np.sin(geo.alpha0)
     return (
@@ -310,15 +313,23 @@ def groove_geometry(
     )
 
 
-def _geometry(dw: Any, dm: Any, fi: Any, fo: Any, clearance: Any) -> _Geometry:
+def _no_element(name: str, bad: Any, unit: str = "") -> str:
+    return ""
+
+
+def _geometry(
+    dw: Any, dm: Any, fi: Any, fo: Any, clearance: Any, at: Callable[..., str] = _no_element
+) -> _Geometry:
     """The geometry of finite arrays (:func:`bearingload.validate.finite`), refused where it
-    is not one of a deep-groove ball bearing."""
+    is not one of a deep-groove ball bearing; ``at(name, bad, unit)`` names the input's element
+    of the first case refused (``clearance[1] = 5 mm``)."""
     for name, value in (("ball_diameter", dw), ("pitch_diameter", dm)):
         if not (value > 0).all():
             validate.positive(name, value, "mm")  # (raises, naming the value)
     g = clearance / 2.0
     if (dw >= dm).any():
-        raise InputError("ball_diameter", "must be smaller than the pitch diameter")
+        raise InputError("ball_diameter", "must be smaller than the pitch diameter",
+                         element=at("ball_diameter", dw >= dm, "mm"))  # fmt: skip
     low, high = validate.CONFORMITY_RANGE
     for name, f in (("f_i", fi), ("f_o", fo)):
         if not ((f > low) & (f < high)).all():
@@ -329,6 +340,7 @@ def _geometry(dw: Any, dm: Any, fi: Any, fo: Any, clearance: Any) -> _Geometry:
             "clearance",
             "must be smaller than 2 (f_i + f_o - 1) D_w, the clearance at which the ball "
             "would leave the grooves axially",
+            element=at("clearance", g >= A, "mm"),
         )
     # cos(alpha0) = 1 - g/A; alpha0 = 2 asin(sqrt(g/(2A))) keeps the digits of a small g
     alpha0 = 2.0 * np.arcsin(np.sqrt(np.clip(g / (2.0 * A), 0.0, 1.0)))
@@ -575,7 +587,11 @@ def solve_combined(
     named["contact_angle"] = np.zeros(()) if angular is None else angular
     shape, flat = _cases(named | ({} if k_given is None else {"stiffness": k_given}))
     fr, fa, mm, tilt_deg, cage, e, nu, mc, dw, dm, fi, fo, gr, alpha_d = flat[:14]
-    geo = _geometry(dw, dm, fi, fo, gr) if angular is None else _angular_geometry(dw, dm, fi, fo, alpha_d)  # fmt: skip
+
+    def at(name: str, bad: Any, unit: str = "") -> str:  # the input's element of a bad case
+        return validate.element_at(named[name], bad, shape, unit)
+
+    geo = _geometry(dw, dm, fi, fo, gr, at) if angular is None else _angular_geometry(dw, dm, fi, fo, alpha_d)  # fmt: skip
     validate.ball_spacing(z, geo.D_w, geo.d_m)  # (z balls must fit on the pitch circle)
     if tilt_radius is not None:
         radius = validate.positive("tilt_radius", tilt_radius, "mm")
@@ -591,7 +607,8 @@ def solve_combined(
         k_ref = flat[14]
     f_ref = _reference_force(fr, fa, mm, mc, geo.R_i)
     if (f_ref <= 0).any():
-        raise InputError("radial_load", "give a radial load, an axial load or a moment")
+        raise InputError("radial_load", "give a radial load, an axial load or a moment",
+                         element=at("radial_load", f_ref <= 0, "N"))  # fmt: skip
     _check_scale(
         f_ref, k_ref, geo.A, angular is not None, lambda: load_sizes(fr, fa, mm, mc, geo.R_i)
     )
@@ -792,12 +809,15 @@ def _angular(contact_angle: Any, fa: np.ndarray, clearance: Any) -> np.ndarray |
         return None
     alpha = validate.finite("contact_angle", contact_angle)
     if ((alpha < 0) | (alpha > 60)).any():
-        raise InputError("contact_angle", "must be from 0 to 60°")
-    if (validate.finite("clearance", clearance) != 0).any():
+        raise InputError("contact_angle", "must be from 0 to 60°",
+                         element=validate.element(alpha, (alpha < 0) | (alpha > 60), "°"))  # fmt: skip
+    gr = validate.finite("clearance", clearance)
+    if (gr != 0).any():
         raise InputError(
             "clearance",
             "must be 0 with a contact angle: the design contact angle fixes the geometry of an "
             "angular-contact bearing",
+            element=validate.element(gr, gr != 0, "mm"),
         )
     if (fa < 0).any():
         raise InputError(
@@ -805,6 +825,7 @@ def _angular(contact_angle: Any, fa: np.ndarray, clearance: Any) -> np.ndarray |
             "must be >= 0 N for an angular-contact bearing: its balls take thrust one way only "
             "(a reversed load lifts every ball off its groove; mount the bearing the other way "
             "round, or give the load to its partner)",
+            element=validate.element(fa, fa < 0, "N"),
         )
     return alpha
 
