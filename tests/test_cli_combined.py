@@ -246,3 +246,39 @@ def test_a_failure_names_the_inputs_as_typed(monkeypatch, capsys):
         analyse("6205", load=1000, axial_load=100, cage_angle=-10)
     assert set(info.value.cases) >= {"load", "axial_load", "cage_angle"}
     assert "radial_load" not in info.value.cases and info.value.cases["cage_angle"] == -10
+
+
+def test_a_radial_case_solved_in_3d_keeps_the_load_zone_row(capsys):
+    """solve -A 0 (the 3-D engine) prints the load zone half-angle the same case prints
+    without -A: one report per bearing."""
+    from .cli_helpers import run_entry
+
+    rows = []
+    for extra in ((), ("-A", "0")):
+        code, out, _ = run_entry(capsys, "solve", "6205", "-F", "1kN", *extra)
+        assert code == 0
+        rows.append(next(line for line in out.splitlines() if "load zone half-angle" in line))
+    assert rows[0].split()[-2:] == rows[1].split()[-2:] == ["73.4720", "°"]
+
+
+@pytest.mark.parametrize("clearance", [0.0125, 0.05, 0.0, -0.005])
+def test_the_3d_load_zone_is_the_radial_engines_under_a_radial_load(clearance):
+    """Under a radial load alone the 3-D kinematics close the clearance where x cos(phi) >
+    G_r/2: the zone is arccos(G_r/(2x)) (Harris & Kotzalas's load zone), 90° at zero clearance,
+    beyond 90° under a preload, as the radial engine gives it."""
+    import math
+
+    from bearingload import solve
+    from bearingload.models.combined import load_zone
+
+    dw, f = 7.938, (0.52, 0.53)
+    r = solve_combined(9, 1000.0, 0.0, ball_diameter=dw, pitch_diameter=38.5, f_i=f[0],
+                       f_o=f[1], clearance=clearance)  # fmt: skip
+    zone = load_zone(r, (sum(f) - 1.0) * dw)
+    radial = solve(9, 1000.0, float(r.ball_stiffnesses[0]), clearance=clearance)
+    assert zone == pytest.approx(float(radial.load_zone), rel=1e-12)
+    if clearance >= 0:
+        assert zone == pytest.approx(math.degrees(math.acos(clearance / 2 / r.x)), rel=1e-12)
+    thrust = solve_combined(9, 1000.0, 100.0, ball_diameter=dw, pitch_diameter=38.5,
+                            clearance=clearance)  # fmt: skip
+    assert zone < load_zone(thrust, (sum(f) - 1.0) * dw) <= 180.0  # a thrust widens it

@@ -50,8 +50,8 @@ _COMBINED_IF_GIVEN = ("moment_cross", "contact_angle")
 COMBINED_KEYS: tuple[str, ...] = (
     "bearing", "method", "balls", "load", "axial_load", "moment", "moment_cross",
     "misalignment", "contact_angle", "tilt_radius", "rotating", "stiffness", "clearance",
-    "clearance_pick", "cage_angle", *RESULT_KEYS, "q_max", "k", "K_Q", "loaded_balls", "p_max_inner",
-    "p_max_outer", "static_equivalent_load", "static_safety", "static_rating", "contact_angle_max",
+    "clearance_pick", "cage_angle", *RESULT_KEYS, "q_max", "k", "K_Q", "loaded_balls", "load_zone",
+    "p_max_inner", "p_max_outer", "static_equivalent_load", "static_safety", "static_rating", "contact_angle_max",
     "free_contact_angle", "axial_play", "x", "y", "axial", "tilt", "tilt_cross",
     "stiffness_radial", "stiffness_axial", "stiffness_tilt", "reference_rating_life",
     "reference_rating_life_hours", "dynamic_rating", "equivalent_load", "rating_life",

@@ -640,6 +640,60 @@ def solve_combined(
         return _result(problem, geo, answer, shape, given, misalignment, flags)
 
 
+#: Positions per revolution at which :func:`load_zone` first looks for the zone's ends. [-]
+ZONE_GRID = 1440
+
+
+def load_zone(r: CombinedDistribution, big_a: Any, one_sided: bool = False) -> Any:
+    """The load zone half-angle of every case of the static solution ``r``: half the angle of
+    the arc of positions where a ball would carry load, by the kinematics of the module notes
+    (the balls' own): loaded where ``rho > 0`` and ``|(rho, u')| > A``. Under a radial load
+    alone it is the radial engine's ``arccos(G_r / (2 |(x, y)|))``; 180 where every position
+    is loaded (a thrust, a preload). ``big_a`` = A = (f_i + f_o - 1) D_w [mm]; ``one_sided``:
+    an angular-contact bearing (``u' = max(u, 0)``, its geometry from the design angle).
+
+    The ends of the zone are found on :data:`ZONE_GRID` positions and the balls' own, then to
+    the last digits by bisection. [°]"""
+    shape = np.shape(r.q_max)
+    case = [np.broadcast_to(np.asarray(v, dtype=float), shape).reshape(-1, 1)
+            for v in (r.x, r.y, r.axial, r.tilt, r.tilt_cross, r.tilt_radius, r.clearance,
+                      r.free_contact_angle, big_a)]  # fmt: skip
+    x, y, axial, tilt, tilt_c, lever, g_r, alpha0, a = case
+    alpha0 = np.deg2rad(alpha0)
+    rho0 = np.where(one_sided, a * np.cos(alpha0), a - g_r / 2.0)
+    u0 = axial + np.where(one_sided, a * np.sin(alpha0), 0.0)
+    t, tc = lever * np.deg2rad(tilt), lever * np.deg2rad(tilt_c)
+
+    def h(phi: np.ndarray, i: Any = slice(None)) -> np.ndarray:  # > 0: a ball there is loaded
+        c, s = np.cos(phi), np.sin(phi)
+        rho = rho0[i] + x[i] * c + y[i] * s
+        u = u0[i] + t[i] * c + tc[i] * s
+        u = np.maximum(u, 0.0) if one_sided else u
+        return np.minimum(np.hypot(np.maximum(rho, 0.0), u) - a[i], rho)
+
+    balls = np.deg2rad(np.asarray(r.ball_angles, dtype=float).reshape(len(x), -1))
+    grid = np.broadcast_to(
+        np.linspace(0.0, 2.0 * np.pi, ZONE_GRID, endpoint=False), (len(x), ZONE_GRID)
+    )
+    phi = np.sort(np.concatenate([grid, np.mod(balls, 2.0 * np.pi)], axis=1), axis=1)
+    nxt = np.concatenate([phi[:, 1:], phi[:, :1] + 2.0 * np.pi], axis=1)
+    on = h(phi) > 0
+    on_next = np.roll(on, -1, axis=1)
+    rows, cols = np.nonzero(on != on_next)
+    lo, hi = phi[rows, cols], nxt[rows, cols]
+    start_on = on[rows, cols]
+    for _ in range(60):  # the end of the zone between the two positions, to the last digits
+        mid = 0.5 * (lo + hi)
+        same = (h(mid[:, None], rows)[:, 0] > 0) == start_on
+        lo, hi = np.where(same, mid, lo), np.where(same, hi, mid)
+    end = 0.5 * (lo + hi)
+    length = np.where(on & on_next, nxt - phi, 0.0).sum(axis=1)
+    part = np.where(start_on, end - phi[rows, cols], nxt[rows, cols] - end)
+    np.add.at(length, rows, part)
+    zone = np.rad2deg(length / 2.0).reshape(shape)
+    return zone[()] if zone.ndim == 0 else zone
+
+
 def call_balls(balls: Any) -> int:
     """The ball count z of one call of a solver: one whole number from 1 to 1000
     (:func:`bearingload.validate.ball_count` refuses any other)."""

@@ -59,6 +59,7 @@ ANSWER_KEYS = (
     "k",
     "K_Q",
     "loaded_balls",
+    "load_zone",
     "p_max_inner",
     "p_max_outer",
     "static_equivalent_load",
