@@ -231,6 +231,22 @@ def element(value: object, bad: Any, unit: str = "") -> str:
     return f"[{where}] = {_shown(arr[index])}" + (f" {unit}" if unit else "")
 
 
+def element_at(value: object, bad: Any, shape: tuple[int, ...], unit: str = "") -> str:
+    """:func:`element` of an input broadcast with others to the case ``shape``: ``bad`` holds
+    over the cases (of ``shape``, or flat); the input's own element of the first bad case, by
+    its own index (``clearance[1] = 5 mm`` of a clearance given as ``[0.01, 5]`` beside one
+    load); empty for one number."""
+    arr = np.asarray(value)
+    flags = np.asarray(bad).reshape(-1)
+    if arr.size < 2 or not flags.any() or flags.size != int(np.prod(shape)):
+        return ""
+    case = np.unravel_index(int(np.flatnonzero(flags)[0]), shape)
+    own = tuple(0 if n == 1 else int(i) for i, n in zip(case[len(case) - arr.ndim :], arr.shape,
+                                                          strict=True))  # fmt: skip
+    where = ", ".join(str(i) for i in own)
+    return f"[{where}] = {_shown(arr[own])}" + (f" {unit}" if unit else "")
+
+
 def _not_numbers(raw: np.ndarray) -> np.ndarray:
     """Where an array holds an element that is not a number (text, None, an object)."""
     out = np.zeros(raw.shape, dtype=bool)

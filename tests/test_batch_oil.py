@@ -166,6 +166,7 @@ def _as_columns(line: str) -> str:
     text = line.removeprefix("Error: ")
     text = re.sub(r"--([a-z0-9-]+)", lambda m: m.group(1).replace("-", "_"), text)
     text = re.sub(r"^Missing option '([a-z0-9_]+)': ", r"\1: missing: ", text)
+    text = re.sub(r"^Missing option '([a-z0-9_]+)' / '([a-z0-9_]+)': ", r"\1 / \2: missing: ", text)
     text = re.sub(r"^Invalid value for '([a-z0-9_]+)' / '([a-z0-9_]+)': ", r"\1 / \2: ", text)
     text = re.sub(r"^Invalid value for '([a-z0-9_]+)': ", r"\1: ", text)
     return re.sub(r"^([a-z0-9_]+) cannot be used with ([a-z0-9_]+): ",

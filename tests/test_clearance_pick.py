@@ -59,7 +59,7 @@ def test_table_life_refuses_a_pick_its_rows_ignore(capsys):
     assert code == 2 and out == "", err
     assert err == (
         "Error: --clearance-pick cannot be used with table life: its rows are clearances "
-        "(--clearances), no class to pick in\n"
+        "('--clearances'), no class to pick in\n"
     )
 
 

@@ -193,7 +193,7 @@ def test_catalog_show_with_sources():
         (["solve", "-F", "1kN", "-K", "1e5"], "Missing option '--balls'"),
         (["solve", "-z", "8", "-F", "1kN"], "Missing option '--stiffness'"),
         (["catalog", "--standard", "DIN"], "Invalid value for '--standard': unknown standard 'DIN'"),
-        (["table", "k", "--modulus", "200GPa"], "need --bearing"),
+        (["table", "k", "--modulus", "200GPa"], "--modulus needs a '--bearing'"),
     ],
 )  # fmt: skip
 def test_errors_are_one_line_exit_2(capsys, args, message):

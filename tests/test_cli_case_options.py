@@ -79,7 +79,7 @@ def test_sweep_takes_the_maker_of_solve():
         (("table", "life", "-b", "6205", "-F", "1kN", "--clearance-pick", "range"),
          "--clearance-pick cannot be used with table life"),
         (("sweep", "-z", "8", "-K", "1e5", "-F", "1kN", "--maker", "SKF"), "--maker needs"),
-        (("table", "k", "--maker", "SKF"), "--maker needs --bearing"),
+        (("table", "k", "--maker", "SKF"), "--maker needs '--bearing'"),
         (("table", "k", "--moment-cross", "1Nm"), "--moment-cross cannot be used with table k"),
         (("table", "kq", "--tilt-radius", "pitch"), "--tilt-radius cannot be used with table kq"),
         (("sweep", "-z", "7", "--kurochkin-T", "0.5", "--moment-cross", "1"),
@@ -294,3 +294,49 @@ def test_batch_columns_moment_cross_and_tilt_radius_are_the_options(tmp_path):
     plain.write_text("bearing,load,axial_load\n6205,1kN,500N\n", encoding="utf-8")
     head = invoke("batch", str(plain), "--format", "csv").stdout.splitlines()[0]
     assert "moment_cross" not in head and "tilt_radius [mm]" in head  # (the lever used)
+
+
+@pytest.mark.parametrize(
+    ("args", "refused", "named"),
+    [
+        (("solve", "load", "-F", "1kN"), "cannot read 'load' as a bearing designation",
+         "by hand: '--balls', '--ball-diameter'"),
+        (("solve", "balls", "-F", "1kN"), "cannot read 'balls' as a bearing designation",
+         "by hand: '--balls', '--ball-diameter'"),
+        (("solve", "6205", "-F", "1kN", "--speed", "3000", "--oil", "balls", "--temperature",
+          "70"), "Invalid value for '--oil': unknown ISO 3448 grade 'balls'", "VG68"),
+    ],
+)  # fmt: skip
+def test_a_value_typed_that_is_a_parameter_name_is_quoted_as_typed(capsys, args, refused, named):
+    """The library quotes the inputs it names and the value it refuses alike; the command line
+    writes the names as options and leaves the value the user typed as it was typed."""
+    code, out, err = run_entry(capsys, *args)
+    assert code == 2 and out == ""
+    assert refused in err
+    assert named in err
+
+
+@pytest.mark.parametrize(
+    ("args", "message"),
+    [
+        (("solve", "-z", "8", "--ball-diameter", "10", "-F", "1kN"),
+         "Missing option '--pitch-diameter' (the ball geometry needs it beside "
+         "'--ball-diameter'; or give the ball stiffness '--stiffness' instead)"),
+        (("solve", "--ball-diameter", "10", "--pitch-diameter", "40", "-F", "1kN"),
+         "Missing option '--balls' / '-z' (the number of balls z; or give a 'BEARING' "
+         "designation)"),
+        (("solve", "6205", "-F", "1kN", "--speed", "3000", "--temperature", "70"),
+         "Missing option '--oil' / '--viscosity-40': give the oil by its ISO 3448 grade"),
+        (("solve", "6205", "-F", "1kN", "--oil", "VG68", "--temperature", "70"),
+         "Invalid value for '--oil': needs the shaft speed ('--speed')"),
+        (("table", "life", "-z", "7", "--ball-diameter", "11.5", "-F", "1kN"),
+         "Missing option '--pitch-diameter'"),
+    ],
+)  # fmt: skip
+def test_a_missing_input_is_named_as_the_user_can_type_it(capsys, args, message):
+    """A refusal for what is missing names that option, never one the user gave no reason to
+    (--stiffness when half of the ball geometry is given, --viscosity beside an oil)."""
+    code, out, err = run_entry(capsys, *args)
+    assert code == 2 and out == ""
+    assert err.startswith(f"Error: {message}"), err
+    assert "'--viscosity'" not in err

@@ -203,3 +203,82 @@ def test_revolutions_where_no_allowable_load_is_printed_is_refused(args, where, 
     assert run_entry(capsys, "solve", *args)[0] == 0
     code, out, _ = run_entry(capsys, "solve", "6205", "-F", "1kN", "--revolutions", "1e8")
     assert code == 0 and "100.000  10^6 rev" in out
+
+
+def test_stiffness_matrix_is_the_5x5_of_every_engine():
+    """json's ``stiffness_matrix`` has one layout and meaning, d(F_x, F_y, F_a, M, M_c)/d(x,
+    y, axial, tilt, tilt_cross): the radial engine gives its x, y block and null for what it
+    does not determine (it holds the ring axially, untilted); the 3-D solve of the same case
+    (-A 0) gives every entry, its x, y block the radial one."""
+    import json
+
+    from .cli_helpers import invoke
+
+    docs = [json.loads(invoke("solve", "6205", "-F", "1kN", *extra, "--format", "json").output)
+            for extra in ((), ("-A", "0"))]  # fmt: skip
+    radial, full = (d["cases"][0]["stiffness_matrix"] for d in docs)
+    assert len(radial) == len(full) == 5 and all(len(r) == 5 for r in radial + full)
+    assert [[v is None for v in r] for r in radial] == [[i > 1 or j > 1 for j in range(5)]
+                                                        for i in range(5)]  # fmt: skip
+    for i in range(2):
+        for j in range(2):
+            assert radial[i][j] == pytest.approx(full[i][j], rel=1e-9, abs=1e-6)
+    assert docs[0]["units"]["stiffness_matrix"] == docs[1]["units"]["stiffness_matrix"]
+
+
+def test_a_failure_names_the_inputs_as_typed(monkeypatch, capsys):
+    """A ConvergenceError names its case's inputs by the options the user typed and the cage
+    angle as given (the solver reduces -10° to 350°); the library's plan by its argument names
+    (load, not the solver's radial_load)."""
+    import bearingload.models.combined as combined
+    from bearingload import analyse
+    from bearingload.errors import ConvergenceError
+
+    from .cli_helpers import run_entry
+
+    monkeypatch.setattr(combined, "ACCEPT", -1.0)  # no residual is accepted: every case fails
+    code, out, err = run_entry(capsys, "solve", "6205", "-F", "1kN", "-A", "100N",
+                               "--cage-angle", "-10")  # fmt: skip
+    assert code == 1 and out == ""
+    assert "for the case --balls = 9, --load = 1000 N, --axial-load = 100 N" in err
+    assert "--cage-angle = -10 °" in err and "350" not in err and "radial_load" not in err
+    with pytest.raises(ConvergenceError) as info:
+        analyse("6205", load=1000, axial_load=100, cage_angle=-10)
+    assert set(info.value.cases) >= {"load", "axial_load", "cage_angle"}
+    assert "radial_load" not in info.value.cases and info.value.cases["cage_angle"] == -10
+
+
+def test_a_radial_case_solved_in_3d_keeps_the_load_zone_row(capsys):
+    """solve -A 0 (the 3-D engine) prints the load zone half-angle the same case prints
+    without -A: one report per bearing."""
+    from .cli_helpers import run_entry
+
+    rows = []
+    for extra in ((), ("-A", "0")):
+        code, out, _ = run_entry(capsys, "solve", "6205", "-F", "1kN", *extra)
+        assert code == 0
+        rows.append(next(line for line in out.splitlines() if "load zone half-angle" in line))
+    assert rows[0].split()[-2:] == rows[1].split()[-2:] == ["73.4720", "°"]
+
+
+@pytest.mark.parametrize("clearance", [0.0125, 0.05, 0.0, -0.005])
+def test_the_3d_load_zone_is_the_radial_engines_under_a_radial_load(clearance):
+    """Under a radial load alone the 3-D kinematics close the clearance where x cos(phi) >
+    G_r/2: the zone is arccos(G_r/(2x)) (Harris & Kotzalas's load zone), 90° at zero clearance,
+    beyond 90° under a preload, as the radial engine gives it."""
+    import math
+
+    from bearingload import solve
+    from bearingload.models.combined import load_zone
+
+    dw, f = 7.938, (0.52, 0.53)
+    r = solve_combined(9, 1000.0, 0.0, ball_diameter=dw, pitch_diameter=38.5, f_i=f[0],
+                       f_o=f[1], clearance=clearance)  # fmt: skip
+    zone = load_zone(r, (sum(f) - 1.0) * dw)
+    radial = solve(9, 1000.0, float(r.ball_stiffnesses[0]), clearance=clearance)
+    assert zone == pytest.approx(float(radial.load_zone), rel=1e-12)
+    if clearance >= 0:
+        assert zone == pytest.approx(math.degrees(math.acos(clearance / 2 / r.x)), rel=1e-12)
+    thrust = solve_combined(9, 1000.0, 100.0, ball_diameter=dw, pitch_diameter=38.5,
+                            clearance=clearance)  # fmt: skip
+    assert zone < load_zone(thrust, (sum(f) - 1.0) * dw) <= 180.0  # a thrust widens it

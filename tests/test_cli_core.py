@@ -215,6 +215,29 @@ def test_terminal_calculation_imports_no_scipy():
     assert r.stdout.strip().splitlines()[-1] == "False False"
 
 
+def test_console_command_runs_no_garbage_collection_in_a_terminal_calculation():
+    """Start-up: the cyclic collector found nothing to free in solve 306 and traversed every
+    module, class and option built so far a dozen times (several ms); a long batch still runs
+    it (bearingload.cli.GC_ALLOCATIONS)."""
+    code = (
+        "import gc, sys\n"
+        "from bearingload.cli import run\n"
+        "runs = []\n"
+        "gc.callbacks.append(lambda phase, info: runs.append(phase))\n"
+        "sys.argv = ['bearingload', 'solve', '306', '-F', '1kN', '--format', 'json']\n"
+        "try:\n"
+        "    run()\n"
+        "except SystemExit:\n"
+        "    pass\n"
+        "print(runs.count('start'), file=sys.stderr)\n"
+    )
+    r = subprocess.run(
+        [sys.executable, "-c", code], capture_output=True, text=True, timeout=60, env=os.environ
+    )
+    assert r.returncode == 0, r.stderr
+    assert r.stderr.strip().splitlines()[-1] == "0"
+
+
 @pytest.mark.parametrize(
     "args, absent",
     [
@@ -223,7 +246,10 @@ def test_terminal_calculation_imports_no_scipy():
             ["solve", "-z", "8", "-F", "300kgf", "-K", "4700kgf/mm^1.5", "-G", "20um"],
             ["numpy.ma", "importlib.resources", "bearingload.bearings.catalog"],
         ),
-        (["solve", "306", "-F", "300kgf"], ["numpy.ma", "importlib.resources"]),
+        (
+            ["solve", "306", "-F", "300kgf"],
+            ["numpy.ma", "importlib.resources", "bearingload.bearings.oil"],
+        ),
     ],
 )
 def test_terminal_calculation_skips_modules_it_does_not_need(args, absent):

@@ -92,7 +92,7 @@ def test_options_a_hand_given_ring_would_ignore_are_refused(capsys, extra, messa
          "Error: --modulus needs a bearing designation or the ball geometry"),
         (["sweep", "-z", "8", "-F", "1kN", "-K", "1e5", "--clearance-pick", "max"],
          "Error: --clearance-pick needs a bearing designation"),
-        (["table", "k", "--clearance-pick", "min"], "Error: --clearance-pick needs --bearing"),
+        (["table", "k", "--clearance-pick", "min"], "Error: --clearance-pick needs '--bearing'"),
     ],
 )  # fmt: skip
 def test_sweep_and_table_refuse_what_a_hand_given_ring_would_ignore(capsys, args, message):

@@ -121,7 +121,7 @@ def test_hand_geometry_with_a_rating():
         (("table", "k", "--misalignment", "0.1"), "'table life', 'solve' or 'sweep'"),
         (("table", "k", "--clearances", "0,10um"), "Error: --clearances cannot be used with"),
         (("table", "life", "-b", "6205"), "Error: Missing option '--load' / '-F'"),
-        (("table", "life", "-F", "1kN"), "Error: table life needs a bearing"),
+        (("table", "life", "-F", "1kN"), "Error: Missing option '--bearing' / '-b' (table life needs a bearing"),
         (("table", "life", "-b", "6205", "-F", "1kN", "-G", "10um"),
          "Error: --clearance cannot be used with table life"),
         (("table", "life", "-b", "6205", "-F", "1kN", "--method", "all"),

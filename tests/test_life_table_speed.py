@@ -213,7 +213,7 @@ def test_table_k_refuses_the_dynamics():
     assert out.exit_code == 2
     assert out.stderr.splitlines()[-1] == (
         "Error: --quasi-static cannot be used with table k: table k and kq are the papers' "
-        "static design tables (no speed); the ball dynamics at --speed are solved by 'table "
+        "static design tables (no speed); the ball dynamics at '--speed' are solved by 'table "
         "life', 'solve' and 'sweep' (docs/speed.md)"
     )
 

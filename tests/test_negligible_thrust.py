@@ -47,6 +47,23 @@ def test_the_thrust_left_out_is_said_with_its_size(capsys):
     assert "solved with a thrust of 1e-12 of that load" in err
 
 
+@pytest.mark.parametrize(
+    "args",
+    [
+        ("sweep", "6205", "-F", "1kN", "-A", "1e-12N", "-G", "0.2", "--steps", "3"),
+        ("table", "life", "-b", "6205", "-F", "1kN", "-A", "1e-12N", "--clearances", "0.2"),
+    ],
+)
+def test_sweep_and_table_life_say_the_thrust_left_out_as_solve_does(capsys, args):
+    from .cli_helpers import run_entry
+
+    code, out, err = run_entry(capsys, *args)
+    assert code == 0 and out
+    said = [w for w in err.splitlines() if "the thrust F_a = 1e-12 N is below" in w]
+    assert len(said) == 1, err
+    assert "the loads do not determine the ring's tilt" in err
+
+
 @pytest.mark.parametrize("thrust", [1e-13, 1e-12])
 def test_a_case_alone_and_in_a_batch_agree(thrust):
     alone = solve_combined(9, 1000.0, thrust, **ONE_BALL)

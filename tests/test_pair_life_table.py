@@ -85,15 +85,15 @@ def test_json_rows_and_the_table_show_solves_values_and_name_the_longest_life():
          "for a pair, 'table life -b 7205BDB --preloads 0,100N,300N' gives L10r against the "
          "preload (docs/angular_contact.md)"),
         (PAIR,
-         "Missing option '--preloads': table life of a pair runs over the preload; give the "
-         "rows, e.g. --preloads 0,100N,300N,1kN"),
+         "Missing option '--preloads' (table life of a pair runs over the preload; give the "
+         "rows, e.g. '--preloads' 0,100N,300N,1kN)"),
         (["-b", "7205BDT", "-F", "1kN", "-A", "1kN", "--preloads", "0,100N"],
          "Invalid value for '--arrangement': a tandem pair (DT) is not preloaded in itself (it "
          "is preloaded against another bearing): table life of a pair runs over the preload of "
          "DB or DF"),
         (["-b", "6205", "-F", "1kN", "--preloads", "0,1kN"],
-         "--preloads cannot be used without a bearing pair: it gives the rows of table life of "
-         "a pair (--bearing 7205BDB, or --arrangement DB or DF)"),
+         "--preloads needs a bearing pair ('--bearing' 7205BDB, or '--arrangement' DB or DF), "
+         "whose table life runs over them; without one it would be ignored"),
         (["-b", "6205", "--arrangement", "DB", "-F", "1kN", "--preloads", "0,1kN"],
          "Invalid value for '--arrangement': a pair DB is two angular-contact ball bearings; "
          "give an angular-contact designation (7205B, 7205BDB) or a ring by hand with "
@@ -102,10 +102,10 @@ def test_json_rows_and_the_table_show_solves_values_and_name_the_longest_life():
          "Invalid value for '--preloads': each must be 0 N or more (got -5 N)"),
         ([*PAIR, "--preloads", "0,100N", "--preload", "100N"],
          "--preload cannot be used with table life of a pair: its rows are preloads "
-         "(--preloads)"),
+         "('--preloads')"),
         ([*PAIR, "--preloads", "0,100N", "--clearances", "0,10um"],
          "--clearances cannot be used with table life of a pair: a pair's rows are preloads "
-         "(--preloads)"),
+         "('--preloads')"),
         ([*PAIR, "--preloads", "0,100N", "--speed", "3000", "--viscosity", "20cSt"],
          "--viscosity cannot be used with table life of a pair: its service lives beyond the "
          "hours are not yet tabulated; 'bearingload solve 7205BDB --preload ...' gives them for "
@@ -126,6 +126,6 @@ def test_table_k_refuses_a_pair():
     out = _run("table", "k", "-b", "7205BDB")
     assert out.exit_code == 2
     assert out.stderr.splitlines()[-1].startswith(
-        "Error: a bearing pair (--arrangement, or a designation such as 7205BDB) cannot be used "
-        "with table k: table k and kq are the papers' radial"
+        "Error: --bearing cannot be used with table k: a bearing pair has no table over z; "
+        "table k and kq are the papers' radial"
     )

@@ -558,7 +558,8 @@ def find(designation: str) -> BearingGeometry:
     except UnmodelledBearing:
         raise  # another bearing type: no geometry given by hand makes it a deep-groove one
     except InputError as exc:
-        raise InputError("bearing", exc.problem, way_out=f"or {_BY_HAND}") from None
+        ways = f"or {_BY_HAND}" if exc.way_out is None else f"{exc.way_out}; or {_BY_HAND}"
+        raise InputError("bearing", exc.problem, way_out=ways) from None
     if parsed.kind == "roller":
         raise InputError(
             "bearing",

@@ -301,7 +301,8 @@ def _error(text: str, why: str = "") -> InputError:
     reason = f" ({why})" if why else ""
     return InputError(
         "bearing",
-        f"cannot read {text!r} as a bearing designation{reason}; accepted: {ACCEPTED_FORMS}",
+        f"cannot read {text!r} as a bearing designation{reason}",
+        way_out=f"accepted: {ACCEPTED_FORMS}",
     )
 
 

@@ -331,7 +331,8 @@ class OilInputError(InputError):
     ----------
     kind : str
         ``"conflict"``: ``parameter`` cannot be used with ``other``; ``"missing"``:
-        ``parameter`` is needed; ``"choice"``: one of ``parameters`` is needed, not both.
+        ``parameter`` (of several ``parameters``: one of them) is needed; ``"choice"``: one of
+        ``parameters`` is needed, not both, and both are given.
     parameters : tuple of str
         The inputs named (``parameter`` is the first).
     other : str or None
@@ -387,8 +388,8 @@ def operating_viscosity(
             why = "give the viscosity at the operating temperature, or the oil and its temperature"
             raise OilInputError("conflict", (first,), why, other="viscosity")
         return viscosity, None
-    if (oil is None) == (viscosity_40 is None):
-        raise OilInputError("choice", ("oil", "viscosity_40"), (
+    if (oil is None) == (viscosity_40 is None):  # neither given: missing; both: a conflict
+        raise OilInputError("missing" if oil is None else "choice", ("oil", "viscosity_40"), (
             "give the oil by its ISO 3448 grade ('oil' VG68) or by its viscosity at 40 °C "
             "('viscosity_40'), one of the two, with 'temperature'"))  # fmt: skip
     if temperature is None:

@@ -59,7 +59,7 @@ from bearingload.bearings.resolved import (
     clearance_row_source,
     resolve_clearance,
 )
-from bearingload.errors import InputError
+from bearingload.errors import InputError, MissingError
 from bearingload.lazy_dataclass import dataclass
 from bearingload.validate import ball_spacing, conformity, finite_positive
 
@@ -377,7 +377,7 @@ def _ball_set(
                         geom.f_i, geom.f_o, geom.d, sources, prov)  # fmt: skip
     balls, dw, dm = given["balls"], given["ball_diameter"], given["pitch_diameter"]
     if balls is None:
-        raise InputError("balls", "give the number of balls, or a bearing designation")
+        raise MissingError("balls", "the number of balls z; or give a 'bearing' designation")
     if isinstance(balls, bool) or int(balls) != balls or balls < 1:
         raise InputError("balls", f"the number of balls must be a whole number >= 1, not {balls!r}")
     if dw is not None and dm is not None:
@@ -388,12 +388,23 @@ def _ball_set(
     fi = given["f_i"] if given["f_i"] is not None or dw is None else DEFAULT_F_I
     fo = given["f_o"] if given["f_o"] is not None or dw is None else DEFAULT_F_O
     if stiffness is None and (dw is None or dm is None):
-        raise InputError(
-            "stiffness",
-            "give the ball stiffness, or the ball geometry ('ball_diameter' and "
-            "'pitch_diameter'), or a bearing designation",
-        )
+        raise _missing_stiffness(dw, dm)
     return _BallSet(None, int(balls), dw, dm, fi, fo, hand_bore, sources, [])
+
+
+def _missing_stiffness(dw: float | None, dm: float | None) -> MissingError:
+    """The ball stiffness is needed, or the ball geometry: the refusal names the half of the
+    geometry not given, else the stiffness."""
+    if dw is None and dm is None:
+        return MissingError(
+            "stiffness",
+            "the ball stiffness; or give the ball geometry ('ball_diameter' and "
+            "'pitch_diameter'), or a 'bearing' designation",
+        )
+    given, missing = ("ball_diameter", "pitch_diameter") if dm is None else (
+        "pitch_diameter", "ball_diameter")  # fmt: skip
+    return MissingError(missing, f"the ball geometry needs it beside '{given}'; or give the "
+                        "ball stiffness 'stiffness' instead")  # fmt: skip
 
 
 def only_maker_text(geom: BearingGeometry) -> str:

@@ -164,13 +164,14 @@ def option_name(parameter: str) -> str:
     return parameter if param is None else _shown(param)
 
 
-def option_message(message: str) -> str:
+def option_message(message: str, keep: str | None = None) -> str:
     """A library message with every quoted parameter name ('ball_diameter') of the running
-    command written as the option the user types ('--ball-diameter')."""
+    command written as the option the user types ('--ball-diameter'); a quoted ``keep`` (the
+    value the user gave, 'load' as a designation) stays as it is."""
     import re
 
     def swap(match: re.Match[str]) -> str:
-        param = _parameter(match.group(1))
+        param = None if match.group(1) == keep else _parameter(match.group(1))
         return match.group(0) if param is None else f"'{_shown(param)}'"
 
     return re.sub(r"'([a-z_][a-z0-9_]*)'", swap, message)
@@ -192,28 +193,40 @@ def usage_error(exc: InputError) -> click.UsageError:
     from bearingload.errors import ConflictError, MissingError, UnusedError
 
     option = option_name(exc.parameter)
+    spell = functools.partial(option_message, keep=_typed(exc.parameter))  # its value as typed
     if isinstance(exc, ConflictError):
-        where, why = option_message(exc.where), option_message(exc.why)
+        where, why = spell(exc.where), spell(exc.why)
         return click.UsageError(f"{option} cannot be used with {where}: {why}")
     if isinstance(exc, MissingError):
         return click.UsageError(
-            f"Missing option {_all_names(exc.parameter)} ({option_message(exc.instead)})"
+            f"Missing option {_all_names(exc.parameter)} ({spell(exc.instead)})"
         )
     if isinstance(exc, UnusedError):
         names = ", ".join(option_name(n) for n in exc.parameters)
         one = len(exc.parameters) == 1
         verb, it = ("needs", "it") if one else ("need", "they")
-        return click.UsageError(f"{names} {verb} {option_message(exc.need)} {it} would be ignored")
+        return click.UsageError(f"{names} {verb} {spell(exc.need)} {it} would be ignored")
     if isinstance(exc, OilInputError):
-        why = option_message(exc.why)
+        why = spell(exc.why)
         if exc.kind == "conflict":
             assert exc.other is not None
             return click.UsageError(f"{option} cannot be used with {option_name(exc.other)}: {why}")
         names = " / ".join(f"'{option_name(p)}'" for p in exc.parameters)
         head = "Missing option" if exc.kind == "missing" else "Invalid value for"
         return click.UsageError(f"{head} {names}: {why}")
-    message = option_message(exc.message)
+    message = spell(exc.problem)  # the value refused; the way out names only inputs
+    if exc.way_out is not None:
+        message += f"; {option_message(exc.way_out)}"
     return click.UsageError(f"Invalid value for '{option}': {message}")
+
+
+def _typed(parameter: str) -> str | None:
+    """The text the user gave the parameter the library calls ``parameter`` (a designation, an
+    oil grade), which a refusal of it quotes; None for a number or nothing given."""
+    param = _parameter(parameter)
+    ctx = click.get_current_context(silent=True)
+    value = None if param is None or ctx is None else ctx.params.get(param.name or "")
+    return value.strip() if isinstance(value, str) else None
 
 
 def library_errors(func: Callable[..., Any]) -> Callable[..., Any]:
@@ -226,9 +239,22 @@ def library_errors(func: Callable[..., Any]) -> Callable[..., Any]:
         except InputError as exc:
             raise usage_error(exc) from exc
         except BearingloadError as exc:
-            raise click.ClickException(option_message(str(exc))) from exc
+            raise click.ClickException(_failure(exc)) from exc
 
     return wrapper
+
+
+def _failure(exc: BearingloadError) -> str:
+    """The line of a failure of the computation: a ConvergenceError names its cases' inputs by
+    the options the user types (``--load = 1000 N``)."""
+    from bearingload.errors import ConvergenceError
+
+    if not isinstance(exc, ConvergenceError):
+        return option_message(str(exc))
+    cases = {option_name(k): v for k, v in exc.cases.items()}
+    units = {option_name(k): u for k, u in (exc.units or {}).items()}
+    way = None if exc.way_out is None else option_message(exc.way_out)
+    return str(ConvergenceError(exc.solver, exc.iterations, exc.residual, cases, units, way))
 
 
 class Exponent(click.ParamType):

@@ -7,7 +7,6 @@ from typing import Any
 
 import click
 
-from bearingload.bearings.mounting import MOUNTING_PARAMS
 from bearingload.cli.case_options import Clearance, case_options
 from bearingload.cli.options import (
     CONTEXT,
@@ -17,21 +16,8 @@ from bearingload.cli.options import (
     option_message,
     output_options,
 )
-from bearingload.plan.bearing import refuse_range
-from bearingload.plan.case import COMBINED_PARAMS, DYNAMICS_PARAMS, MOUNTING_REFUSAL, Case
-
-TABLES = ("k", "kq", "life")
-#: Why table k and kq refuse the options of the ball dynamics.
-DYNAMICS_REFUSAL = (
-    "table k and kq are the papers' static design tables (no speed); the ball dynamics at "
-    "--speed are solved by 'table life', 'solve' and 'sweep' (docs/speed.md)"
-)
-#: Why table k and kq refuse the combined-load options.
-RADIAL_ONLY = (
-    "table k and kq are the papers' radial, dimensionless design tables (k = Q_max/F_r over "
-    "z; no axial load, no tilt, no life); for a combined load or the life use 'table life', "
-    "'solve' or 'sweep'"
-)
+from bearingload.plan.case import Case
+from bearingload.plan.table import TABLES
 
 
 class ClearanceList(click.ParamType):
@@ -167,102 +153,18 @@ def table(
       # a back-to-back pair of 7205B: L10r and stiffness against the preload
       bearingload table life -b 7205BDB -F 1kN -A 200N --preloads 0,100N,300N,1kN
     """
-    from bearingload.reports.render import render
-    from bearingload.reports.tables import design_table
+    from bearingload.plan.table import table_case
 
-    case.refuse(
-        ("contact_angle",),
-        f"table {name}",
-        "a ring given by hand with its contact angle is solved by 'solve' only; an "
-        "angular-contact designation (7205B) by 'solve', 'sweep' and 'batch' "
-        "(docs/angular_contact.md)",
+    tabled = table_case(
+        name,
+        case,
+        z_max=z_max if _given("z_max") else None,
+        method=method if _given("method") else None,
+        clearances=clearances,
+        preloads=preloads,
+        spell=option_message,
     )
-    case.refuse(MOUNTING_PARAMS, f"table {name}", MOUNTING_REFUSAL)
-    if name != "life":
-        case.refuse(DYNAMICS_PARAMS, f"table {name}", DYNAMICS_REFUSAL)
-    from bearingload.bearings.angular import parse_angular
-
-    pair = case.as_pair()
-    if pair is not None or preloads is not None:
-        _pair_life(name, pair, preloads, clearances, fmt, output)
-        return
-    if case.bearing is not None and parse_angular(case.bearing) is not None:  # as --contact-angle
-        raise click.UsageError(
-            f"Invalid value for '--bearing': {case.bearing.strip()!r} is an angular-contact "
-            f"bearing, solved by 'solve', 'sweep' and 'batch', not by 'table {name}'"
-            + (
-                ": its rows are radial clearances, and the contact angle fixes an "
-                "angular-contact bearing's geometry (no clearance); for a pair, 'table life -b "
-                f"{case.bearing.strip()}DB --preloads 0,100N,300N' gives L10r against the preload"
-                if name == "life"
-                else ""
-            )
-            + " (docs/angular_contact.md)"
-        )
-    k_given = case.stiffness_value()  # N/mm^m
-    if name == "life":
-        refused = {
-            "--z-max": (_given("z_max"), "it is one bearing, not a table over z"),
-            "--method": (_given("method"), "the life comes from the exact 3-D model only"),
-            "--clearance": (case.clearance is not None, "its rows are clearances (--clearances)"),
-            "--clearance-pick": (
-                "clearance_pick" in case.given,
-                "its rows are clearances (--clearances), no class to pick in",
-            ),
-        }
-        for option, (given, why) in refused.items():
-            if given:
-                raise click.UsageError(f"{option} cannot be used with table life: {why}")
-        if "load" not in case.given:
-            raise click.UsageError("Missing option '--load' / '-F': table life needs F_r (N)")
-        _life(case, clearances, fmt, output)
-        return
-    refuse_range(case, f"table {name}")  # table life refuses every pick (above)
-    case.refuse(COMBINED_PARAMS, f"table {name}", RADIAL_ONLY)
-    for option, value in (("--balls", case.balls), ("--clearances", clearances)):
-        if value is not None:
-            raise click.UsageError(
-                f"{option} cannot be used with table {name}: it is an option of table life "
-                "(table k and kq run over z = 1..--z-max at one clearance)"
-            )
-    if case.bearing is not None:
-        cond = _bearing_conditions(case, k_given)
-    elif not case.by_hand or any(getattr(case, n) is not None for n in _GEOMETRY):
-        raise click.UsageError(
-            "the geometry and material options (--ball-diameter ... --poisson) need --bearing"
-        )
-    else:
-        from bearingload.bearings.clearance import clearance_length
-        from bearingload.plan.bearing import refuse_unused
-        from bearingload.studies.tables import Conditions
-
-        refuse_unused(case, ("maker",), "--bearing (a class and a maker's ball set are a "
-                      "catalogue bearing's); without one")  # fmt: skip
-        k = 1e5 if k_given is None else k_given
-        cond = Conditions(case.radial_load, k, clearance_length(case.clearance), case.cage_angle,
-                          case.exponent_or(1.5))  # fmt: skip
-    emit(render([design_table(name, z_max, cond, method)], fmt), output)
-
-
-#: The ball geometry and material options, which only a catalogue bearing's table takes.
-_GEOMETRY = ("inner_conformity", "outer_conformity", "modulus", "poisson", "ball_material")
-
-
-def _bearing_conditions(case: Case, k_given: float | None) -> Any:
-    """The conditions of a catalogue bearing's ball and raceways (Hertz K, its clearance)."""
-    from bearingload.bearings.resolve import check_exponent
-    from bearingload.plan.bearing import resolve_bearings
-    from bearingload.studies.tables import for_bearing
-
-    clearance = case.clearance if case.clearance is not None else 0.0
-    resolved = resolve_bearings(case, k_given, clearance=clearance, exponent=None)[0]
-    if resolved.kind != "ball":
-        raise click.UsageError(
-            "Invalid value for '--bearing': the tables take ball bearings; for a roller "
-            "bearing use 'bearingload solve' or --exponent 10/9 with --stiffness"
-        )
-    check_exponent(resolved, case.exponent)
-    return for_bearing(resolved, case.radial_load, case.cage_angle)
+    emit(_report(name, tabled, fmt, case.speed, z_max, method), output)
 
 
 def _given(param: str) -> bool:
@@ -271,75 +173,24 @@ def _given(param: str) -> bool:
     return source is not None and source.name != "DEFAULT"
 
 
-def _life(
-    case: Case,
-    clearances: list[float] | None,
-    fmt: str,
-    output: str | None,
-) -> None:
-    """``table life``: resolve the bearing as solve does, solve every clearance, emit; a speed
-    above the catalogue's limiting speed warns, as in solve."""
+def _report(name: str, tabled: Any, fmt: str, speed: float | None, z_max: int, method: str) -> str:
+    """The text of a planned table; the warnings of a table life printed on stderr."""
     from bearingload.cli.options import print_warnings
+
+    if tabled.kind == "design":
+        from bearingload.reports.render import render
+        from bearingload.reports.tables import design_table
+
+        return render([design_table(name, z_max, tabled.result, method)], fmt)
+    if tabled.kind == "pair":
+        from bearingload.reports.pair_life import preload_life_report
+
+        text = preload_life_report(tabled.result, fmt, speed)
+        print_warnings(list(tabled.result.warnings), False)
+        return text
     from bearingload.reports.life_clearance import life_report
     from bearingload.reports.solve import printed_warnings
 
-    if case.bearing is None and case.ball_diameter is None:
-        raise click.UsageError(
-            "table life needs a bearing: --bearing, or --balls, --ball-diameter, "
-            "--pitch-diameter and --dynamic-rating"
-        )
-    from bearingload.plan.life_table import life_against_clearance_case
-
-    result, service = life_against_clearance_case(case, clearances, option_message)
-    text = life_report(result, fmt, service)
-    print_warnings(printed_warnings(result.warnings, service), False)
-    emit(text, output)
-
-
-def _pair_life(
-    name: str,
-    case: Case | None,
-    preloads: list[float] | None,
-    clearances: list[float] | None,
-    fmt: str,
-    output: str | None,
-) -> None:
-    """``table life`` of a bearing pair: L10r against the preload (``--preloads``), emit."""
-    from bearingload.cli.options import print_warnings
-    from bearingload.plan.life_table import life_against_preload_case
-    from bearingload.reports.pair_life import preload_life_report
-
-    if case is None:
-        raise click.UsageError(
-            "--preloads cannot be used without a bearing pair: it gives the rows of table life "
-            "of a pair (--bearing 7205BDB, or --arrangement DB or DF)"
-        )
-    if name != "life":
-        raise click.UsageError(
-            f"a bearing pair (--arrangement, or a designation such as 7205BDB) cannot be used "
-            f"with table {name}: {RADIAL_ONLY}"
-        )
-    for option, given, why in (
-        ("--preload", "preload" in case.given, "its rows are preloads (--preloads)"),
-        (
-            f"the designation's preload class {case.preload}",
-            "preload" not in case.given and case.preload is not None,
-            "its rows are preloads (--preloads); give the designation without the class",
-        ),
-        ("--clearances", clearances is not None, "a pair's rows are preloads (--preloads)"),
-        ("--z-max", _given("z_max"), "it is one pair, not a table over z"),
-        ("--method", _given("method"), "the life comes from the exact model only"),
-    ):
-        if given:
-            raise click.UsageError(f"{option} cannot be used with table life of a pair: {why}")
-    if preloads is None:
-        raise click.UsageError(
-            "Missing option '--preloads': table life of a pair runs over the preload; give the "
-            "rows, e.g. --preloads 0,100N,300N,1kN"
-        )
-    if "load" not in case.given:
-        raise click.UsageError("Missing option '--load' / '-F': table life needs F_r (N)")
-    result = life_against_preload_case(case, preloads)
-    text = preload_life_report(result, fmt, case.speed)
-    print_warnings(list(result.warnings), False)
-    emit(text, output)
+    text = life_report(tabled.result, fmt, tabled.service)
+    print_warnings(printed_warnings(tabled.result.warnings, tabled.service), False)
+    return text

@@ -8,12 +8,13 @@ Scalar inputs give Python scalars; array inputs give arrays of the broadcast sha
 
 from __future__ import annotations
 
-from dataclasses import dataclass, fields
+from dataclasses import fields
 from typing import Any
 
 import numpy as np
 
 from bearingload import numerics, validate
+from bearingload.lazy_dataclass import dataclass
 from bearingload.validate import broadcast_shape
 
 #: The inputs of a case, in the order of every model's signature.

@@ -296,10 +296,13 @@ def groove_geometry(
     >>> round(float(A), 4), round(float(a0), 4), round(float(sa), 5)
     (0.575, 7.5614, 0.15133)
     """
+    fi, fo, gr = validate.each_finite(f_i=f_i, f_o=f_o, clearance=clearance)
     geo = ring_geometry(
         validate.positive("ball_diameter", ball_diameter, "mm"),
         validate.positive("pitch_diameter", pitch_diameter, "mm"),
-        *validate.each_finite(f_i=f_i, f_o=f_o, clearance=clearance),
+        fi,
+        fo,
+        gr,
     )
     play = 2.0 * geo.A * np.sin(geo.alpha0)
     return (
@@ -309,12 +312,24 @@ def groove_geometry(
     )
 
 
+def _no_element(name: str, bad: Any, unit: str = "") -> str:
+    return ""
+
+
 def ring_geometry(
-    dw: Any, dm: Any, fi: Any, fo: Any, clearance: Any, alpha0: Any = None
+    dw: Any,
+    dm: Any,
+    fi: Any,
+    fo: Any,
+    clearance: Any,
+    alpha0: Any = None,
+    at: Callable[..., str] = _no_element,
 ) -> _Geometry:
     """The geometry of finite arrays (:func:`bearingload.validate.finite`), refused where it
     is not one of a deep-groove ball bearing (one case: checked as floats); ``alpha0``: the
-    free contact angle [rad] as given (:func:`angular_geometry`), not that of the clearance."""
+    free contact angle [rad] as given (:func:`angular_geometry`), not that of the clearance;
+    ``at(name, bad, unit)`` names the input's element of the first case refused
+    (``clearance[1] = 5 mm``)."""
     g = clearance / 2.0
     A = (fi + fo - 1.0) * dw
     d_w, d_m, f_i, f_o, gap, big_a = (dw, dm, fi, fo, g, A)
@@ -324,20 +339,25 @@ def ring_geometry(
     conform = (f_i > low) & (f_i < high) & (f_o > low) & (f_o < high)
     fits = (d_w > 0) & (d_m > 0) & (d_w < d_m) & conform & (gap < big_a)
     if not (fits if isinstance(fits, bool) else fits.all()):
-        _refuse_geometry(dw, dm, fi, fo, g >= A)
+        _refuse_geometry(dw, dm, fi, fo, g >= A, at)
     if alpha0 is None:  # cos(alpha0) = 1 - g/A; 2 asin(sqrt(g/(2A))) keeps a small g's digits
         alpha0 = 2.0 * np.arcsin(np.sqrt(np.where(g > 0, g / (2.0 * A), 0.0)))  # (g < A here)
     R_i = dm / 2.0 + (fi - 0.5) * dw * np.cos(alpha0)
     return _Geometry(dw, dm, fi, fo, A, g, alpha0, R_i)
 
 
-def _refuse_geometry(dw: Any, dm: Any, fi: Any, fo: Any, out: Any) -> None:
+def _refuse_geometry(dw: Any, dm: Any, fi: Any, fo: Any, out: Any, at: Callable[..., str]) -> None:
     """InputError naming the first parameter of a geometry that does not fit
-    (:func:`ring_geometry`); ``out``: where the clearance is too large."""
+    (:func:`ring_geometry`) and, by ``at``, its element; ``out``: where the clearance is too
+    large."""
     for name, value in (("ball_diameter", dw), ("pitch_diameter", dm)):
         validate.positive(name, value, "mm")
     if np.any(dw >= dm):
-        raise InputError("ball_diameter", "must be smaller than the pitch diameter")
+        raise InputError(
+            "ball_diameter",
+            "must be smaller than the pitch diameter",
+            element=at("ball_diameter", dw >= dm, "mm"),
+        )
     validate.conformity("f_i", fi)
     validate.conformity("f_o", fo)
     if np.any(out):
@@ -345,6 +365,7 @@ def _refuse_geometry(dw: Any, dm: Any, fi: Any, fo: Any, out: Any) -> None:
             "clearance",
             "must be smaller than 2 (f_i + f_o - 1) D_w, the clearance at which the ball "
             "would leave the grooves axially",
+            element=at("clearance", out, "mm"),
         )
 
 
@@ -569,7 +590,14 @@ def solve_combined(
     named["contact_angle"] = np.zeros(()) if angular is None else angular
     shape, flat = _cases(named | ({} if k_given is None else {"stiffness": k_given}))
     fr, fa, mm, tilt_deg, cage, e, nu, mc, dw, dm, fi, fo, gr, alpha_d = flat[:14]
-    geo = ring_geometry(dw, dm, fi, fo, gr) if angular is None else angular_geometry(dw, dm, fi, fo, alpha_d)  # fmt: skip
+
+    def at(name: str, bad: Any, unit: str = "") -> str:  # the input's element of a bad case
+        return validate.element_at(named[name], bad, shape, unit)
+
+    if angular is None:
+        geo = ring_geometry(dw, dm, fi, fo, gr, at=at)
+    else:
+        geo = angular_geometry(dw, dm, fi, fo, alpha_d)
     validate.ball_spacing(z, geo.D_w, geo.d_m)  # (z balls must fit on the pitch circle)
     if tilt_radius is not None:
         radius = validate.positive("tilt_radius", tilt_radius, "mm")
@@ -585,7 +613,11 @@ def solve_combined(
         k_ref = flat[14]
     f_ref = reference_force(fr, fa, mm, mc, geo.R_i)
     if (f_ref <= 0).any():
-        raise InputError("radial_load", "give a radial load, an axial load or a moment")
+        raise InputError(
+            "radial_load",
+            "give a radial load, an axial load or a moment",
+            element=at("radial_load", f_ref <= 0, "N"),
+        )
     check_scale(
         f_ref, k_ref, geo.A, angular is not None, lambda: load_sizes(fr, fa, mm, mc, geo.R_i)
     )
@@ -615,6 +647,77 @@ def solve_combined(
             physical_tangent(problem, geo, tangent[0], mirror & (mc == 0)),
         )
         return distribution(problem, geo, answer, shape, given, misalignment, flags)
+
+
+#: Positions per revolution at which :func:`load_zone` first looks for the zone's ends, beside
+#: the balls' own: an arc of the zone narrower than their spacing (0.5°) that holds no ball
+#: is not seen. [-]
+ZONE_GRID = 720
+
+
+def load_zone(r: CombinedDistribution, big_a: Any, one_sided: bool = False) -> Any:
+    """The load zone half-angle of every case of the static solution ``r``: half the angle of
+    the arc of positions where a ball would carry load, by the kinematics of the module notes
+    (the balls' own): loaded where ``rho > 0`` and ``|(rho, u')| > A``. Under a radial load
+    alone it is the radial engine's ``arccos(G_r / (2 |(x, y)|))``; 180 where every position
+    is loaded (a thrust, a preload). ``big_a`` = A = (f_i + f_o - 1) D_w [mm]; ``one_sided``:
+    an angular-contact bearing (``u' = max(u, 0)``, its geometry from the design angle).
+
+    The ends of the zone are found on :data:`ZONE_GRID` positions and the balls' own, then to
+    the last digits by bisection, :data:`ZONE_BLOCK` cases at a time; an arc narrower than
+    0.5° that holds no ball is not seen. [°]"""
+    shape = np.shape(r.q_max)
+    case = [np.broadcast_to(np.asarray(v, dtype=float), shape).reshape(-1, 1)
+            for v in (r.x, r.y, r.axial, r.tilt, r.tilt_cross, r.tilt_radius, r.clearance,
+                      r.free_contact_angle, big_a)]  # fmt: skip
+    x, y, axial, tilt, tilt_c, lever, g_r, alpha0, a = case
+    alpha0 = np.deg2rad(alpha0)
+    rho0 = np.where(one_sided, a * np.cos(alpha0), a - g_r / 2.0)
+    u0 = axial + np.where(one_sided, a * np.sin(alpha0), 0.0)
+    t, tc = lever * np.deg2rad(tilt), lever * np.deg2rad(tilt_c)
+    balls = np.mod(np.deg2rad(np.asarray(r.ball_angles, dtype=float).reshape(len(x), -1)),
+                   2.0 * np.pi)  # fmt: skip
+    zone = np.empty(len(x))
+    for at in range(0, len(x), ZONE_BLOCK):
+        block = slice(at, at + ZONE_BLOCK)
+        kinematics = (rho0[block], x[block], y[block], u0[block], t[block], tc[block], a[block])
+        zone[block] = _zone_length(kinematics, balls[block], one_sided)
+    out = np.rad2deg(zone / 2.0).reshape(shape)
+    return out[()] if out.ndim == 0 else out
+
+
+#: Cases :func:`load_zone` treats at once (its positions: about 730 per case). [-]
+ZONE_BLOCK = 256
+
+
+def _zone_length(kinematics: tuple[np.ndarray, ...], balls: np.ndarray, one_sided: bool) -> Any:
+    """The angle [rad] of the loaded arc of each case of a block (:func:`load_zone`)."""
+    rho0, x, y, u0, t, tc, a = kinematics
+
+    def h(phi: np.ndarray, i: Any = slice(None)) -> np.ndarray:  # > 0: a ball there is loaded
+        c, s = np.cos(phi), np.sin(phi)
+        rho = rho0[i] + x[i] * c + y[i] * s
+        u = u0[i] + t[i] * c + tc[i] * s
+        u = np.maximum(u, 0.0) if one_sided else u
+        return np.minimum(np.hypot(np.maximum(rho, 0.0), u) - a[i], rho)
+
+    n = len(x)
+    grid = np.broadcast_to(np.linspace(0.0, 2.0 * np.pi, ZONE_GRID, endpoint=False), (n, ZONE_GRID))
+    phi = np.sort(np.concatenate([grid, balls], axis=1), axis=1)
+    nxt = np.concatenate([phi[:, 1:], phi[:, :1] + 2.0 * np.pi], axis=1)
+    on = h(phi) > 0
+    on_next = np.roll(on, -1, axis=1)
+    rows, cols = np.nonzero(on != on_next)
+    lo, hi = phi[rows, cols], nxt[rows, cols]
+    start_on = on[rows, cols]
+    for _ in range(60):  # the end of the zone between the two positions, to the last digits
+        mid = 0.5 * (lo + hi)
+        same = (h(mid[:, None], rows)[:, 0] > 0) == start_on
+        lo, hi = np.where(same, mid, lo), np.where(same, hi, mid)
+    end = 0.5 * (lo + hi)
+    length = np.where(on & on_next, nxt - phi, 0.0).sum(axis=1)
+    np.add.at(length, rows, np.where(start_on, end - phi[rows, cols], nxt[rows, cols] - end))
+    return length
 
 
 def call_balls(balls: Any) -> int:
@@ -791,12 +894,15 @@ def _angular(contact_angle: Any, fa: np.ndarray, clearance: Any) -> np.ndarray |
         return None
     alpha = validate.finite("contact_angle", contact_angle)
     if ((alpha < 0) | (alpha > 60)).any():
-        raise InputError("contact_angle", "must be from 0 to 60°")
-    if (validate.finite("clearance", clearance) != 0).any():
+        raise InputError("contact_angle", "must be from 0 to 60°",
+                         element=validate.element(alpha, (alpha < 0) | (alpha > 60), "°"))  # fmt: skip
+    gr = validate.finite("clearance", clearance)
+    if (gr != 0).any():
         raise InputError(
             "clearance",
             "must be 0 with a contact angle: the design contact angle fixes the geometry of an "
             "angular-contact bearing",
+            element=validate.element(gr, gr != 0, "mm"),
         )
     if (fa < 0).any():
         raise InputError(
@@ -804,6 +910,7 @@ def _angular(contact_angle: Any, fa: np.ndarray, clearance: Any) -> np.ndarray |
             "must be >= 0 N for an angular-contact bearing: its balls take thrust one way only "
             "(a reversed load lifts every ball off its groove; mount the bearing the other way "
             "round, or give the load to its partner)",
+            element=validate.element(fa, fa < 0, "N"),
         )
     return alpha
 

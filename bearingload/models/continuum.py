@@ -329,7 +329,7 @@ def solve_continuum(
 
     with np.errstate(all="ignore"):  # the exact model's range: the same inputs refused alike
         scale = np.power(force / k_ball, 1.0 / m)
-        check_range(force, scale, e / scale, m, z)
+        check_range(force, scale, e / scale, m, z, ({"load": load, "clearance": clearance}, shape))
     j0 = _integral_i(m) / np.pi
     x0 = np.power(force / (z * k_ball * j0), 1.0 / m)
     eta = e / x0

@@ -41,7 +41,6 @@ the problem, not of the solver.
 from __future__ import annotations
 
 import math
-from dataclasses import dataclass
 from typing import Any
 
 import numpy as np
@@ -49,6 +48,7 @@ import numpy as np
 import bearingload.models._core as _core
 from bearingload import numerics, validate
 from bearingload.errors import ConvergenceError, InputError
+from bearingload.lazy_dataclass import dataclass
 from bearingload.models import _ring
 from bearingload.models._ring import (
     APPROACH_RANGE,
@@ -342,7 +342,8 @@ def solve(
     with np.errstate(all="ignore"):
         scale = (f / kk) ** (1.0 / m)  # approach of one ball carrying the whole load [mm]
         e_hat = (g / 2.0) / scale
-    check_range(f, scale, e_hat, m, z)
+    given = {"load": load, "clearance": clearance}
+    check_range(f, scale, e_hat, m, z, (given, shape))
     frac, kind = _cage_kind(z, cage, phi1_deg)
     try:
         rows = _solve_groups(z, kind, frac, e_hat, (f / kk, g, m), tol)
@@ -725,11 +726,21 @@ def _tolerance(value: Any) -> float:
 
 
 def check_range(
-    f: np.ndarray, scale: np.ndarray, e_hat: np.ndarray, m: np.ndarray, z: np.ndarray
+    f: np.ndarray,
+    scale: np.ndarray,
+    e_hat: np.ndarray,
+    m: np.ndarray,
+    z: np.ndarray,
+    given: tuple[dict[str, Any], tuple[int, ...]] | None = None,
 ) -> None:
     """Reject finite inputs whose scaled problem or results would leave double precision
     (``scale`` = (F/K)^(1/m) [mm], ``e_hat`` = (G_r/2)/scale [-]); the continuum model uses the
-    same range."""
+    same range. ``given``: the inputs as given (name -> value) and the case shape, so that a
+    refusal names the input's element of the first case refused (``load[2] = 1e-30 N``)."""
+
+    def at(name: str, bad: np.ndarray, unit: str) -> str:
+        return "" if given is None else validate.element_at(given[0][name], bad, given[1], unit)
+
     lo, hi = APPROACH_RANGE
     bad = ~((scale >= lo) & (scale <= hi))
     if np.any(bad):
@@ -738,6 +749,7 @@ def check_range(
             f"load and stiffness give a one-ball approach (F_r/K)^(1/m) = "
             f"{_first(scale, bad)} mm, outside the {lo:g} to {hi:g} mm the "
             "solver resolves; check the units of the load and the stiffness",
+            element=at("load", bad, "N"),
         )
     bad = ~(np.abs(e_hat) <= CLEARANCE_RATIO_MAX)
     if np.any(bad):
@@ -745,6 +757,7 @@ def check_range(
             "clearance",
             f"must be at most {CLEARANCE_RATIO_MAX:g} times the one-ball approach "
             f"(F_r/K)^(1/m) in size (got {_first(e_hat, bad)} times); check its unit",
+            element=at("clearance", bad, "mm"),
         )
     r_lo, r_hi = (math.log10(v) for v in RESULT_RANGE)
     with np.errstate(all="ignore"):
@@ -758,6 +771,7 @@ def check_range(
             f"a preload of {_first(e_hat, bad)} times the one-ball approach loads the balls with "
             f"about 1e{_first(log_q, bad, '.0f')} N, beyond the {RESULT_RANGE[1]:g} N a double "
             "holds; reduce the preload (check its unit)",
+            element=at("clearance", bad, "mm"),
         )
     bad = ~((log_k <= r_hi) & (np.log10(f / scale) >= r_lo) & (np.log10(f) >= r_lo))
     if np.any(bad):
@@ -766,6 +780,7 @@ def check_range(
             f"load and stiffness give a bearing stiffness of about 1e{_first(log_k, bad, '.0f')} "
             f"N/mm, outside the {RESULT_RANGE[0]:g} to {RESULT_RANGE[1]:g} a double resolves; "
             "check the units of the load, the stiffness and the clearance",
+            element=at("load", bad, "N"),
         )
 
 

@@ -279,12 +279,14 @@ def check_speed(speed: Any, density: Any, dm: Any) -> tuple[np.ndarray, np.ndarr
             return np.array(speed), np.array(density)  # one plain case in range
     n = validate.finite("speed", speed)
     if np.any(n < 0):
-        raise InputError("speed", "must be >= 0 rpm (the inner ring's speed)")
+        raise InputError("speed", "must be >= 0 rpm (the inner ring's speed)",
+                         element=validate.element(n, n < 0, "rpm"))  # fmt: skip
     rho = validate.positive("ball_density", density, "kg/m^3")
     if np.any((rho < 1.0) | (rho > 1e5)):
         raise InputError(
             "ball_density",
             "must be in kg/m^3 (steel 7850, silicon nitride 3200), between 1 and 1e5",
+            element=validate.element(rho, (rho < 1.0) | (rho > 1e5), "kg/m^3"),
         )
     n_b, dm_b = np.broadcast_arrays(n, np.asarray(dm, dtype=float))
     with np.errstate(over="ignore"):
@@ -299,6 +301,7 @@ def check_speed(speed: Any, density: Any, dm: Any) -> tuple[np.ndarray, np.ndarr
             f"most {MAX_SPEED_PITCH / pitch:.10g} rpm; beyond, ring expansion, cage "
             "and lubricant forces it leaves out matter)",
             reason=TOO_FAST_REASON,
+            element=validate.element_at(n, too_fast, too_fast.shape, "rpm"),
         )
     return n, rho
 

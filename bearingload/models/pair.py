@@ -344,6 +344,7 @@ def solve_pair(
             "width",
             f"must be at least the ball diameter D_w (a bearing is wider than its balls): "
             f"B = {c['width'][i]:.6g} mm, D_w = {c['ball_diameter'][i]:.6g} mm",
+            element=validate.element_at(named["width"], narrow, shape, "mm"),
         )
     wide = c["width"] > WIDTH_MAX * c["pitch_diameter"]
     if wide.any():  # a shaft between two supports, not a pair (a width of 1e9 mm diverged)
@@ -353,6 +354,7 @@ def solve_pair(
             f"must be at most {WIDTH_MAX:g} times the pitch diameter d_m (two bearings that far "
             "apart are two supports of a shaft, not one pair): B = "
             f"{c['width'][i]:.6g} mm, d_m = {c['pitch_diameter'][i]:.6g} mm",
+            element=validate.element_at(named["width"], wide, shape, "mm"),
         )
     with np.errstate(all="ignore"):
         return _solve(z, kind, c, shape)
@@ -406,14 +408,16 @@ def _check_pair(kind: str, fa: np.ndarray, fp: np.ndarray, contact_angle: Any) -
     """Refuse what a pair of this arrangement cannot take."""
     alpha = validate.finite("contact_angle", contact_angle)
     if ((alpha <= 0) | (alpha > 60)).any():
-        raise InputError("contact_angle", "must be above 0 and at most 60° for a bearing pair")
+        raise InputError("contact_angle", "must be above 0 and at most 60° for a bearing pair",
+                         element=validate.element(alpha, (alpha <= 0) | (alpha > 60), "°"))  # fmt: skip
     if (fp < 0).any():
-        raise InputError("preload", "must be >= 0 N")
+        raise InputError("preload", "must be >= 0 N", element=validate.element(fp, fp < 0, "N"))
     if kind == "DT" and (fp > 0).any():
         raise InputError(
             "preload",
             "a tandem pair (DT) is not preloaded in itself: both bearings face the same way, "
             "so it is preloaded against another bearing; give 0, or use DB or DF",
+            element=validate.element(fp, fp > 0, "N"),
         )
     if kind == "DT" and (fa <= 0).any():
         raise InputError(
@@ -421,6 +425,7 @@ def _check_pair(kind: str, fa: np.ndarray, fp: np.ndarray, contact_angle: Any) -
             "must be > 0 N for a tandem pair (DT): both bearings take thrust towards +axial only "
             "(a reversed load lifts every ball; with none the axial position is held by "
             "another bearing)",
+            element=validate.element(fa, fa <= 0, "N"),
         )
 
 

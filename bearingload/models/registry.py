@@ -41,10 +41,10 @@ from __future__ import annotations
 
 import functools
 from collections.abc import Callable
-from dataclasses import dataclass
 from typing import Any
 
 from bearingload.errors import InputError
+from bearingload.lazy_dataclass import dataclass
 
 #: The default method of :func:`compute` and of ``bearingload solve``.
 DEFAULT_METHOD = "exact"

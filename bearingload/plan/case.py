@@ -257,9 +257,11 @@ class Case:
         options and batch's columns (:func:`bearingload.bearings.oil.operating_viscosity`):
         --viscosity, or that of the oil (--oil or --viscosity-40, --viscosity-100 or
         --viscosity-index) at --temperature by ASTM D341."""
+        oil = {n: getattr(self, n) for n in OIL_PARAMS}
+        if all(v is None for v in oil.values()):
+            return self.viscosity, None  # no oil: the viscosity given, if any
         from bearingload.bearings.oil import operating_viscosity
 
-        oil = {n: getattr(self, n) for n in OIL_PARAMS}
         nu, note = operating_viscosity(self.viscosity, **oil)
         given = next((n for n in OIL_PARAMS if oil[n] is not None), None)
         if given is not None and self.speed is None:  # name the input given, not viscosity

@@ -13,6 +13,7 @@ from bearingload.plan.solve import (
     STATIC_AT_ANY_SPEED,
     pair_speed_hint,
     service_lives,
+    with_solver_findings,
     with_speed_warnings,
 )
 
@@ -45,6 +46,7 @@ def life_against_clearance_case(
         if dynamics.get("speed") is None:
             raise
         raise exc.with_way_out(QUASI_STATIC_WAY) from exc
+    result = with_solver_findings(result, result, case.axial_load or 0.0, case.radial_load)
     (result,) = with_speed_warnings([result], case.speed)
     return result, _service(case, result, spell)
 

@@ -73,14 +73,37 @@ def solve_case(
     allowed = (*list_methods(), "all")
     if method not in allowed:
         raise InputError("method", f"unknown method {method!r}; allowed: {', '.join(allowed)}")
+    given = case
     case, engine, at_speed = engine_of(case, method, revolutions)
     methods = list_methods() if method == "all" else [method]
-    if engine == "pair":
-        refuse_revolutions(revolutions, "a bearing pair", "it prints L10r and L10 of the pair")
-        return _pair(case, method, spell)
-    if engine == "combined":
-        return _combined(case, method, revolutions, at_speed, spell)
-    return _radial(case, methods, revolutions, spell)
+    try:
+        if engine == "pair":
+            refuse_revolutions(revolutions, "a bearing pair", "it prints L10r and L10 of the pair")
+            return _pair(case, method, spell)
+        if engine == "combined":
+            return _combined(case, method, revolutions, at_speed, spell)
+        return _radial(case, methods, revolutions, spell)
+    except ConvergenceError as exc:
+        raise in_case_terms(exc, given) from exc
+
+
+def in_case_terms(exc: ConvergenceError, case: Case) -> ConvergenceError:
+    """The solver's ConvergenceError naming the inputs of its cases as the case names them:
+    the library's argument names (``radial_load`` -> ``load``, :func:`bearingload.plan.inputs.
+    argument_of`) and the cage angle as given (``half``, or -10° that the solver reduced to
+    350°) where the cases were solved at that one cage angle."""
+    import numpy as np
+
+    from bearingload.plan.inputs import argument_of
+
+    cases = {argument_of(k): v for k, v in exc.cases.items()}
+    units = {argument_of(k): u for k, u in (exc.units or {}).items()}
+    cage = np.asarray(cases.get("cage_angle", []), dtype=float).reshape(-1)
+    if cage.size and np.all(cage == cage[0]):  # one cage angle: the case's own, as given
+        cases["cage_angle"] = case.cage_angle
+        if case.cage_angle == "half":
+            units.pop("cage_angle", None)
+    return ConvergenceError(exc.solver, exc.iterations, exc.residual, cases, units, exc.way_out)
 
 
 def engine_of(
@@ -344,6 +367,24 @@ def with_speed_warnings(cases: list[Any], speed: float | None) -> list[Any]:
         found = speed_warnings(c.warnings, speed, c.bearing)
         out.append(c if found is c.warnings else dataclasses.replace(c, warnings=found))
     return out
+
+
+def with_solver_findings(result: Any, flags: Any, axial_load: float, radial_load: float) -> Any:
+    """``result`` (a study's answer with its ``warnings``) with the warnings on what the
+    combined solver did in any of its cases (``flags``: the solver's ``thrust_neglected`` and
+    ``tilt_undetermined``, None where it gives none) added once each, in solve's words: a thrust
+    it left out, a tilt the loads do not determine; ``result`` itself where there is none."""
+    import numpy as np
+
+    from bearingload.studies.combined_bearing import TILT_UNDETERMINED, thrust_neglected_warning
+
+    found = list(result.warnings)
+    if np.any(getattr(flags, "tilt_undetermined", None)):
+        found.append(TILT_UNDETERMINED)
+    if np.any(getattr(flags, "thrust_neglected", None)):
+        found.append(thrust_neglected_warning(axial_load, radial_load))
+    new = tuple(w for w in dict.fromkeys(found) if w not in result.warnings)
+    return dataclasses.replace(result, warnings=(*result.warnings, *new)) if new else result
 
 
 def speed_warnings(warnings: Any, speed: float | None, bearing: Any) -> Any:

@@ -22,10 +22,12 @@ from bearingload.plan.case import Case
 from bearingload.plan.solve import (
     QUASI_STATIC_WAY,
     STATIC_PAIR_WAY,
+    in_case_terms,
     pair_speed_hint,
     radial_at_speed,
     refuse_static_dynamics,
     speed_hint,
+    with_solver_findings,
 )
 
 
@@ -41,7 +43,15 @@ class Swept:
 
 
 def sweep_case(case: Case, steps: int) -> Swept:
-    """Sweep the case over one ball pitch by the engine its inputs choose."""
+    """Sweep the case over one ball pitch by the engine its inputs choose; a failure names the
+    inputs as the case does (:func:`bearingload.plan.solve.in_case_terms`)."""
+    try:
+        return _swept(case, steps)
+    except ConvergenceError as exc:
+        raise in_case_terms(exc, case) from exc
+
+
+def _swept(case: Case, steps: int) -> Swept:
     pair = case.as_pair()
     if pair is not None:
         return _pair(pair, steps)
@@ -118,6 +128,7 @@ def _combined(case: Case, steps: int, radial: bool) -> Swept:
         if dynamics["speed"] is None:
             raise
         raise exc.with_way_out(QUASI_STATIC_WAY if radial else STATIC_PAIR_WAY) from exc
+    result = with_solver_findings(result, result.result, case.axial_load or 0.0, case.radial_load)
     if case.speed is not None:  # the hours (and the dynamics' speed); the limiting speed
         found = (*result.warnings, *speed_findings(case.speed, b))
         result = dataclasses.replace(result, speed=case.speed, warnings=found)

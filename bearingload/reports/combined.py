@@ -21,7 +21,7 @@ from collections.abc import Sequence
 from typing import Any
 
 from bearingload.bearings.mounting import RESULT_KEYS, mounting_notes
-from bearingload.reports.quantities import SERVICE_KEYS, units
+from bearingload.reports.quantities import MATRIX_UNITS, SERVICE_KEYS, units
 from bearingload.reports.render import Column, Table, render
 from bearingload.reports.solve import (
     case_warnings,
@@ -59,6 +59,7 @@ ANSWER_KEYS = (
     "k",
     "K_Q",
     "loaded_balls",
+    "load_zone",
     "p_max_inner",
     "p_max_outer",
     "static_equivalent_load",
@@ -90,11 +91,6 @@ ANSWER_KEYS = (
 #: Each ball's inner and outer contact (equal without the ball dynamics): json and csv names.
 CONTACT_KEYS = ("contact_angles_inner", "contact_angles_outer", "ball_loads_inner",
                 "ball_loads_outer")  # fmt: skip
-#: The units of the 5x5 ``stiffness_matrix`` (``units`` of a combined-load JSON document).
-MATRIX_UNITS = (
-    "rows F_x, F_y, F_a [N], M, M_c [N mm]; columns x, y, axial [mm], tilt, tilt_cross [rad]: "
-    "N/mm, N/rad, N mm/mm, N mm/rad"
-)
 #: The ``units`` entries of the two matrices: the true tangent and its symmetric part.
 MATRIX_UNITS_OF = {"stiffness_matrix": MATRIX_UNITS, "stiffness_matrix_symmetric": MATRIX_UNITS}
 PER_BALL_KEYS = (

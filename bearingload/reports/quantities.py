@@ -284,6 +284,13 @@ SERVICE_KEYS = (
 )
 
 
+#: The units of the 5x5 ``stiffness_matrix`` (json's ``units`` of it in every engine's document).
+MATRIX_UNITS = (
+    "rows F_x, F_y, F_a [N], M, M_c [N mm]; columns x, y, axial [mm], tilt, tilt_cross [rad]: "
+    "N/mm, N/rad, N mm/mm, N mm/rad"
+)
+
+
 def _matrix_quantities() -> list[Quantity]:
     from bearingload.studies.matrix import MATRIX_COLUMNS, MATRIX_ROWS, matrix_key
 

@@ -23,6 +23,7 @@ from typing import Any
 
 from bearingload.bearings.mounting import RESULT_KEYS, mounting_notes
 from bearingload.reports.quantities import (
+    MATRIX_UNITS,
     QUANTITIES,
     SERVICE_KEYS,
     element_words,
@@ -388,6 +389,11 @@ def _balls_human(cases: Sequence[LoadedCase], records: Sequence[dict[str, Any]])
     return Table("Ball loads (ball 1 at the cage angle; angles from the load line)", columns, rows)
 
 
+def _matrix_units(keys: Sequence[str]) -> dict[str, str]:
+    """The ``units`` of the 5x5 ``stiffness_matrix`` where the document has one."""
+    return {"stiffness_matrix": MATRIX_UNITS} if "stiffness_matrix" in keys else {}
+
+
 def _document(
     cases: Sequence[LoadedCase],
     records: Sequence[dict[str, Any]],
@@ -404,7 +410,9 @@ def _document(
         doc["ignores"] = list(METHODS[r["method"]].ignores)
         if c.result.method == "exact":
             model = c.result.model
-            doc["stiffness_matrix"] = model.stiffness_matrix.tolist()
+            from bearingload.studies.matrix import radial_matrix
+
+            doc["stiffness_matrix"] = radial_matrix(model.stiffness_matrix)
             doc["ball_angles"] = model.ball_angles
             doc["ball_approaches"] = model.ball_approaches
             doc["ball_loads"] = model.ball_loads
@@ -413,7 +421,7 @@ def _document(
     keys = list(dict.fromkeys(k for d in docs for k in d))
     out: dict[str, Any] = {
         "cases": docs,
-        "units": units(keys, exponent),
+        "units": units(keys, exponent) | _matrix_units(keys),
         "warnings": printed_warnings(collect_warnings(cases), service),
     }
     if cases[0].bearing is not None:

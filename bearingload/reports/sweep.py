@@ -10,8 +10,9 @@ from __future__ import annotations
 from dataclasses import asdict
 from typing import Any
 
-from bearingload.reports.quantities import QUANTITIES, for_elements, units
+from bearingload.reports.quantities import MATRIX_UNITS, QUANTITIES, for_elements, units
 from bearingload.reports.render import Column, Table, render
+from bearingload.studies.matrix import radial_matrix
 from bearingload.studies.sweep import CageSweep
 from bearingload.units import KGF
 
@@ -243,7 +244,7 @@ def _json_rows(s: CageSweep) -> list[dict[str, Any]]:
             "q_max": float(s.q_max[i]),
             "q_max_ball": int(s.q_max_ball[i]),
             "loaded_balls": int(s.loaded_balls[i]),
-            "stiffness_matrix": s.stiffness_matrix[i].tolist(),
+            "stiffness_matrix": radial_matrix(s.stiffness_matrix[i]),
             "stiffness_radial": float(s.stiffness_radial[i]),
         }
         for i in range(s.cage_angle.size)
@@ -266,7 +267,7 @@ def sweep_json(s: CageSweep) -> dict[str, Any]:
         "steps": int(s.cage_angle.size),
         "rows": rows,
         "summary": summary,
-        "units": units(keys, s.exponent),
+        "units": units(keys, s.exponent) | {"stiffness_matrix": MATRIX_UNITS},
         "warnings": sweep_warnings(s),
     } | static_at_speed(s.speed, s.exponent == 1.5)
 

@@ -565,6 +565,7 @@ def case_columns(
         "q_max": arr(r.q_max),
         **radial_factors(r, misalignment, moment_cross, b.contact_angle is None),
         "loaded_balls": arr(r.loaded_balls, np.int64),
+        "load_zone": _zone(b, r),
         "x": arr(r.x),
         "y": arr(r.y),
         "axial": arr(r.axial),
@@ -605,6 +606,19 @@ def radial_factors(
         "k": [float(v) if a else None for v, a in zip(k, alone, strict=True)],
         "K_Q": [float(v) if a else None for v, a in zip(k_q, alone, strict=True)],
     }
+
+
+def _zone(b: ResolvedBearing, r: CombinedDistribution) -> Any:
+    """The load zone half-angle of every case (:func:`bearingload.models.combined.load_zone`),
+    as the radial engine gives it; a list of None at a speed, where the ball dynamics move the
+    contacts off the groove-centre line the zone is drawn from. [°]"""
+    from bearingload.models.combined import load_zone
+    from bearingload.models.high_speed import HighSpeedDistribution
+
+    if isinstance(r, HighSpeedDistribution) or None in (b.f_i, b.f_o, b.ball_diameter):
+        return [None] * int(np.size(r.q_max))
+    big_a = (float(b.f_i) + float(b.f_o) - 1.0) * float(b.ball_diameter)  # type: ignore[arg-type]
+    return np.atleast_1d(load_zone(r, big_a, one_sided=b.contact_angle is not None))
 
 
 def largest_loaded_angle(r: CombinedDistribution) -> Any:

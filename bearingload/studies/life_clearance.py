@@ -89,6 +89,9 @@ class LifeAgainstClearance:
         model.
     heaviest_contact_angle : ndarray or None
         Each row's contact angle of its heaviest ball (the film's, as solve's). [°]
+    thrust_neglected, tilt_undetermined : ndarray of bool or None
+        The solver's flags of each row (:class:`~bearingload.models.combined.
+        CombinedDistribution`): a thrust it left out, a tilt the loads do not determine.
     """
 
     bearing: ResolvedBearing
@@ -115,6 +118,13 @@ class LifeAgainstClearance:
     heaviest_contact_angle: np.ndarray | None = None
     speed: float | None = None
     ball_density: float | None = None
+    thrust_neglected: np.ndarray | None = None
+    tilt_undetermined: np.ndarray | None = None
+
+
+def _rows(flags: Any, n: int) -> np.ndarray | None:
+    """The solver's flags of the first ``n`` rows (bools), None where it gives none."""
+    return None if flags is None else np.asarray(flags, dtype=bool).reshape(-1)[:n]
 
 
 def default_clearances(bearing: ResolvedBearing) -> np.ndarray:
@@ -272,6 +282,8 @@ def life_against_clearance(
         speed=None if speed is None else float(speed),
         ball_density=_density(r),
         heaviest_contact_angle=_heaviest_angle(r)[:n],
+        thrust_neglected=_rows(getattr(r, "thrust_neglected", None), n),
+        tilt_undetermined=_rows(getattr(r, "tilt_undetermined", None), n),
     )
 
 

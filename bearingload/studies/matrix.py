@@ -32,3 +32,17 @@ def matrix_columns(r: Any) -> dict[str, Any]:
 
     m = np.asarray(r.stiffness_matrix, dtype=float).reshape(-1, 5, 5)
     return {matrix_key(i, j): m[:, i, j] for i in range(5) for j in range(5)}
+
+
+def radial_matrix(k: Any) -> list[list[float | None]]:
+    """The radial engine's 2x2 ``d(F_x, F_y)/d(x, y)`` [N/mm] in the place it has in the 5x5
+    ``stiffness_matrix`` (json's one layout for every engine), the entries of the axial
+    displacement and the tilts ``None``: the radial engine holds the ring axially and untilted,
+    so it does not determine them (a load option, ``axial_load`` 0, solves them)."""
+    import numpy as np
+
+    block = np.asarray(k, dtype=float).reshape(2, 2)
+    size = len(MATRIX_ROWS)
+    return [
+        [float(block[i, j]) if i < 2 and j < 2 else None for j in range(size)] for i in range(size)
+    ]
