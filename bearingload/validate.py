@@ -241,8 +241,10 @@ def element_at(value: object, bad: Any, shape: tuple[int, ...], unit: str = "") 
     if arr.size < 2 or not flags.any() or flags.size != int(np.prod(shape)):
         return ""
     case = np.unravel_index(int(np.flatnonzero(flags)[0]), shape)
-    own = tuple(0 if n == 1 else int(i) for i, n in zip(case[len(case) - arr.ndim :], arr.shape,
-                                                          strict=True))  # fmt: skip
+    own = tuple(
+        0 if n == 1 else int(i)
+        for i, n in zip(case[len(case) - arr.ndim :], arr.shape, strict=True)
+    )
     where = ", ".join(str(i) for i in own)
     return f"[{where}] = {_shown(arr[own])}" + (f" {unit}" if unit else "")
 

@@ -299,14 +299,34 @@ def test_batch_columns_moment_cross_and_tilt_radius_are_the_options(tmp_path):
 @pytest.mark.parametrize(
     ("args", "refused", "named"),
     [
-        (("solve", "load", "-F", "1kN"), "cannot read 'load' as a bearing designation",
-         "by hand: '--balls', '--ball-diameter'"),
-        (("solve", "balls", "-F", "1kN"), "cannot read 'balls' as a bearing designation",
-         "by hand: '--balls', '--ball-diameter'"),
-        (("solve", "6205", "-F", "1kN", "--speed", "3000", "--oil", "balls", "--temperature",
-          "70"), "Invalid value for '--oil': unknown ISO 3448 grade 'balls'", "VG68"),
+        (
+            ("solve", "load", "-F", "1kN"),
+            "cannot read 'load' as a bearing designation",
+            "by hand: '--balls', '--ball-diameter'",
+        ),
+        (
+            ("solve", "balls", "-F", "1kN"),
+            "cannot read 'balls' as a bearing designation",
+            "by hand: '--balls', '--ball-diameter'",
+        ),
+        (
+            (
+                "solve",
+                "6205",
+                "-F",
+                "1kN",
+                "--speed",
+                "3000",
+                "--oil",
+                "balls",
+                "--temperature",
+                "70",
+            ),
+            "Invalid value for '--oil': unknown ISO 3448 grade 'balls'",
+            "VG68",
+        ),
     ],
-)  # fmt: skip
+)
 def test_a_value_typed_that_is_a_parameter_name_is_quoted_as_typed(capsys, args, refused, named):
     """The library quotes the inputs it names and the value it refuses alike; the command line
     writes the names as options and leaves the value the user typed as it was typed."""
@@ -319,20 +339,30 @@ def test_a_value_typed_that_is_a_parameter_name_is_quoted_as_typed(capsys, args,
 @pytest.mark.parametrize(
     ("args", "message"),
     [
-        (("solve", "-z", "8", "--ball-diameter", "10", "-F", "1kN"),
-         "Missing option '--pitch-diameter' (the ball geometry needs it beside "
-         "'--ball-diameter'; or give the ball stiffness '--stiffness' instead)"),
-        (("solve", "--ball-diameter", "10", "--pitch-diameter", "40", "-F", "1kN"),
-         "Missing option '--balls' / '-z' (the number of balls z; or give a 'BEARING' "
-         "designation)"),
-        (("solve", "6205", "-F", "1kN", "--speed", "3000", "--temperature", "70"),
-         "Missing option '--oil' / '--viscosity-40': give the oil by its ISO 3448 grade"),
-        (("solve", "6205", "-F", "1kN", "--oil", "VG68", "--temperature", "70"),
-         "Invalid value for '--oil': needs the shaft speed ('--speed')"),
-        (("table", "life", "-z", "7", "--ball-diameter", "11.5", "-F", "1kN"),
-         "Missing option '--pitch-diameter'"),
+        (
+            ("solve", "-z", "8", "--ball-diameter", "10", "-F", "1kN"),
+            "Missing option '--pitch-diameter' (the ball geometry needs it beside "
+            "'--ball-diameter'; or give the ball stiffness '--stiffness' instead)",
+        ),
+        (
+            ("solve", "--ball-diameter", "10", "--pitch-diameter", "40", "-F", "1kN"),
+            "Missing option '--balls' / '-z' (the number of balls z; or give a 'BEARING' "
+            "designation)",
+        ),
+        (
+            ("solve", "6205", "-F", "1kN", "--speed", "3000", "--temperature", "70"),
+            "Missing option '--oil' / '--viscosity-40': give the oil by its ISO 3448 grade",
+        ),
+        (
+            ("solve", "6205", "-F", "1kN", "--oil", "VG68", "--temperature", "70"),
+            "Invalid value for '--oil': needs the shaft speed ('--speed')",
+        ),
+        (
+            ("table", "life", "-z", "7", "--ball-diameter", "11.5", "-F", "1kN"),
+            "Missing option '--pitch-diameter'",
+        ),
     ],
-)  # fmt: skip
+)
 def test_a_missing_input_is_named_as_the_user_can_type_it(capsys, args, message):
     """A refusal for what is missing names that option, never one the user gave no reason to
     (--stiffness when half of the ball geometry is given, --viscosity beside an oil)."""

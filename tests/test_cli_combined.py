@@ -214,12 +214,15 @@ def test_stiffness_matrix_is_the_5x5_of_every_engine():
 
     from .cli_helpers import invoke
 
-    docs = [json.loads(invoke("solve", "6205", "-F", "1kN", *extra, "--format", "json").output)
-            for extra in ((), ("-A", "0"))]  # fmt: skip
+    docs = [
+        json.loads(invoke("solve", "6205", "-F", "1kN", *extra, "--format", "json").output)
+        for extra in ((), ("-A", "0"))
+    ]
     radial, full = (d["cases"][0]["stiffness_matrix"] for d in docs)
     assert len(radial) == len(full) == 5 and all(len(r) == 5 for r in radial + full)
-    assert [[v is None for v in r] for r in radial] == [[i > 1 or j > 1 for j in range(5)]
-                                                        for i in range(5)]  # fmt: skip
+    assert [[v is None for v in r] for r in radial] == [
+        [i > 1 or j > 1 for j in range(5)] for i in range(5)
+    ]
     for i in range(2):
         for j in range(2):
             assert radial[i][j] == pytest.approx(full[i][j], rel=1e-9, abs=1e-6)
@@ -237,8 +240,9 @@ def test_a_failure_names_the_inputs_as_typed(monkeypatch, capsys):
     from .cli_helpers import run_entry
 
     monkeypatch.setattr(combined, "ACCEPT", -1.0)  # no residual is accepted: every case fails
-    code, out, err = run_entry(capsys, "solve", "6205", "-F", "1kN", "-A", "100N",
-                               "--cage-angle", "-10")  # fmt: skip
+    code, out, err = run_entry(
+        capsys, "solve", "6205", "-F", "1kN", "-A", "100N", "--cage-angle", "-10"
+    )
     assert code == 1 and out == ""
     assert "for the case --balls = 9, --load = 1000 N, --axial-load = 100 N" in err
     assert "--cage-angle = -10 °" in err and "350" not in err and "radial_load" not in err
@@ -272,13 +276,22 @@ def test_the_3d_load_zone_is_the_radial_engines_under_a_radial_load(clearance):
     from bearingload.models.combined import load_zone
 
     dw, f = 7.938, (0.52, 0.53)
-    r = solve_combined(9, 1000.0, 0.0, ball_diameter=dw, pitch_diameter=38.5, f_i=f[0],
-                       f_o=f[1], clearance=clearance)  # fmt: skip
+    r = solve_combined(
+        9,
+        1000.0,
+        0.0,
+        ball_diameter=dw,
+        pitch_diameter=38.5,
+        f_i=f[0],
+        f_o=f[1],
+        clearance=clearance,
+    )
     zone = load_zone(r, (sum(f) - 1.0) * dw)
     radial = solve(9, 1000.0, float(r.ball_stiffnesses[0]), clearance=clearance)
     assert zone == pytest.approx(float(radial.load_zone), rel=1e-12)
     if clearance >= 0:
         assert zone == pytest.approx(math.degrees(math.acos(clearance / 2 / r.x)), rel=1e-12)
-    thrust = solve_combined(9, 1000.0, 100.0, ball_diameter=dw, pitch_diameter=38.5,
-                            clearance=clearance)  # fmt: skip
+    thrust = solve_combined(
+        9, 1000.0, 100.0, ball_diameter=dw, pitch_diameter=38.5, clearance=clearance
+    )
     assert zone < load_zone(thrust, (sum(f) - 1.0) * dw) <= 180.0  # a thrust widens it

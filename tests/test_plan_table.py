@@ -19,8 +19,13 @@ def _case(**values):
     [
         ("life", {"bearing": "6205", "load": 1000.0}, {"method": "all"}, ConflictError, "method"),
         ("life", {"bearing": "6205", "load": 1000.0}, {"z_max": 12}, ConflictError, "z_max"),
-        ("life", {"bearing": "6205", "load": 1000.0, "clearance": 0.01}, {}, ConflictError,
-         "clearance"),
+        (
+            "life",
+            {"bearing": "6205", "load": 1000.0, "clearance": 0.01},
+            {},
+            ConflictError,
+            "clearance",
+        ),
         ("life", {"bearing": "6205"}, {}, MissingError, "load"),
         ("life", {"load": 1000.0}, {}, MissingError, "bearing"),
         ("k", {"load": 1000.0, "balls": 8}, {}, ConflictError, "balls"),
@@ -29,13 +34,17 @@ def _case(**values):
         ("k", {"load": 1000.0, "bearing": "NU206"}, {}, InputError, "bearing"),
         ("k", {"load": 1000.0, "bearing": "7205B"}, {}, InputError, "bearing"),
         ("k", {"load": 1000.0, "bearing": "7205BDB"}, {}, ConflictError, "bearing"),
-        ("life", {"load": 1000.0, "bearing": "6205"}, {"preloads": [0.0]}, UnusedError,
-         "preloads"),
+        ("life", {"load": 1000.0, "bearing": "6205"}, {"preloads": [0.0]}, UnusedError, "preloads"),
         ("life", {"load": 1000.0, "bearing": "7205BDB"}, {}, MissingError, "preloads"),
-        ("life", {"load": 1000.0, "bearing": "7205BDB"}, {"preloads": [0.0], "method": "exact"},
-         ConflictError, "method"),
+        (
+            "life",
+            {"load": 1000.0, "bearing": "7205BDB"},
+            {"preloads": [0.0], "method": "exact"},
+            ConflictError,
+            "method",
+        ),
     ],
-)  # fmt: skip
+)
 def test_table_refusals_are_typed_errors_of_the_plan(name, values, options, kind, parameter):
     with pytest.raises(kind) as info:
         table_case(name, _case(**values), **options)

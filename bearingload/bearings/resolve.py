@@ -401,10 +401,14 @@ def _missing_stiffness(dw: float | None, dm: float | None) -> MissingError:
             "the ball stiffness; or give the ball geometry ('ball_diameter' and "
             "'pitch_diameter'), or a 'bearing' designation",
         )
-    given, missing = ("ball_diameter", "pitch_diameter") if dm is None else (
-        "pitch_diameter", "ball_diameter")  # fmt: skip
-    return MissingError(missing, f"the ball geometry needs it beside '{given}'; or give the "
-                        "ball stiffness 'stiffness' instead")  # fmt: skip
+    given, missing = (
+        ("ball_diameter", "pitch_diameter") if dm is None else ("pitch_diameter", "ball_diameter")
+    )
+    return MissingError(
+        missing,
+        f"the ball geometry needs it beside '{given}'; or give the "
+        "ball stiffness 'stiffness' instead",
+    )
 
 
 def only_maker_text(geom: BearingGeometry) -> str:

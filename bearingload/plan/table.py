@@ -148,11 +148,19 @@ def _ring_conditions(case: Case, k_given: float | None) -> Any:
     geometry = tuple(n for n in GEOMETRY if getattr(case, n) is not None)
     if geometry:
         raise UnusedError(geometry, "a 'bearing' (its ball and raceways); without one")
-    refuse_unused(case, ("maker",), "'bearing' (a class and a maker's ball set are a "
-                  "catalogue bearing's); without one")  # fmt: skip
+    refuse_unused(
+        case,
+        ("maker",),
+        "'bearing' (a class and a maker's ball set are a catalogue bearing's); without one",
+    )
     k = 1e5 if k_given is None else k_given
-    return Conditions(case.radial_load, k, clearance_length(case.clearance), case.cage_angle,
-                      case.exponent_or(1.5))  # fmt: skip
+    return Conditions(
+        case.radial_load,
+        k,
+        clearance_length(case.clearance),
+        case.cage_angle,
+        case.exponent_or(1.5),
+    )
 
 
 def _bearing_conditions(case: Case, k_given: float | None) -> Any:
@@ -217,8 +225,9 @@ def _pair_life(
         )
     if name != "life":
         param = "arrangement" if "arrangement" in case.given else "bearing"
-        raise ConflictError(param, f"table {name}", f"a bearing pair has no table over z; "
-                            f"{RADIAL_ONLY}")  # fmt: skip
+        raise ConflictError(
+            param, f"table {name}", f"a bearing pair has no table over z; {RADIAL_ONLY}"
+        )
     rows = "its rows are preloads ('preloads')"
     for param, given, why in (
         ("preload", "preload" in case.given, rows),
