@@ -461,3 +461,47 @@ def test_the_private_read_walk_sees_both_forms(tmp_path):
         ("bearingload.x.b", "bearingload.x.a._hidden"),
         ("bearingload.x.c", "bearingload.x.a._hidden"),
     }
+
+
+#: What computes service lives: the plan calls it, the reports only render its answers.
+LIFE_COMPUTERS = (
+    "bearingload.bearings.service_life",
+    "bearingload.bearings.modified_life",
+    "bearingload.studies.life_basis",
+)
+#: Names of other modules that compute lives.
+LIFE_FUNCTIONS = ("pair_lives", "pair_service_values", "service_values", "service_lives")
+
+
+def life_computations(package: Path) -> list[str]:
+    """``module: what`` of every import in ``package`` of a module or function that computes
+    service lives (:data:`LIFE_COMPUTERS`, :data:`LIFE_FUNCTIONS`)."""
+    found = []
+    for path in sorted(package.rglob("*.py")):
+        for node in ast.walk(ast.parse(path.read_text(encoding="utf-8"))):
+            if isinstance(node, ast.ImportFrom) and node.module:
+                names = [a.name for a in node.names]
+                if node.module in LIFE_COMPUTERS:
+                    found.append(f"{path.name}: {node.module}")
+                found += [f"{path.name}: {n}" for n in names if n in LIFE_FUNCTIONS]
+            elif isinstance(node, ast.Import):
+                found += [f"{path.name}: {a.name}" for a in node.names if a.name in LIFE_COMPUTERS]
+    return found
+
+
+def test_reports_compute_no_lives():
+    """Lives (one bearing's, each bearing's of a pair and the pair's) come from the plan; the
+    reports render them."""
+    assert life_computations(PACKAGE / "reports") == []
+
+
+def test_the_life_walk_sees_an_import(tmp_path):
+    (tmp_path / "r.py").write_text(
+        "from bearingload.studies.bearing_pair import pair_lives\n"
+        "import bearingload.bearings.service_life\n",
+        encoding="utf-8",
+    )
+    assert life_computations(tmp_path) == [
+        "r.py: pair_lives",
+        "r.py: bearingload.bearings.service_life",
+    ]

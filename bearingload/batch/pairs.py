@@ -46,10 +46,10 @@ def pair_rows(
     oil = [k for k in OIL_INPUTS if k in header.names]  # written as given (nu is the oil's)
     rows: list[int] = []
     values: dict[str, list[Any]] = {k: [] for k in [*keys, *oil, "warnings"]}
-    solved = many.values.get("pair", []), many.values.get("service", [])
-    for i, pc, service in zip(many.rows, *solved, strict=True):
+    solved = many.values.get("pair", []), many.values.get("lives", [])
+    for i, pc, lives in zip(many.rows, *solved, strict=True):
         try:
-            pair, records = pair_records(pc, service)
+            pair, records = pair_records(pc, lives)
         except BearingloadError as exc:
             errors[numbers[i]] = row_message(exc)
             continue
@@ -60,7 +60,7 @@ def pair_rows(
             for k in oil:
                 values[k].append(cols[k][i])
             values["warnings"].append(
-                tuple(printed_warnings(pc.warnings, service) if j == 0 else ())
+                tuple(printed_warnings(pc.warnings, lives.bearings) if j == 0 else ())
             )
             held = contact_values(pc.bearings[j].result, pc.bearing.contact_angle)
             for k, v in held.items():

@@ -153,7 +153,7 @@ def _emit(swept: Swept, plot: str | None, fmt: str, output: str | None) -> None:
     if swept.engine == "pair":
         from bearingload.reports.pair_sweep import pair_sweep_report
 
-        text = pair_sweep_report(result, fmt, swept.context)
+        text = pair_sweep_report(result, fmt, swept.lives, swept.context)
         print_warnings(list(result.warnings), False)
     elif swept.engine == "combined":
         from bearingload.reports.combined_sweep import combined_sweep_report

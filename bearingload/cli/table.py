@@ -185,7 +185,7 @@ def _report(name: str, tabled: Any, fmt: str, speed: float | None, z_max: int, m
     if tabled.kind == "pair":
         from bearingload.reports.pair_life import preload_life_report
 
-        text = preload_life_report(tabled.result, fmt, speed)
+        text = preload_life_report(tabled.result, fmt, tabled.service, speed)
         print_warnings(list(tabled.result.warnings), False)
         return text
     from bearingload.reports.life_clearance import life_report

@@ -31,8 +31,8 @@ def analyse_many(cases: Sequence[Mapping[str, Any]]) -> Many:
     -------
     Many
         ``rows`` the indices of the cases solved; ``values`` the columns of
-        ``bearingload batch`` over them (of a pair: ``pair``, the solved pairs, and ``service``,
-        their lives); ``errors`` the refusal of each case not solved, by index.
+        ``bearingload batch`` over them (of a pair: ``pair``, the solved pairs, and ``lives``,
+        their :class:`~bearingload.studies.bearing_pair.PairLives`); ``errors`` the refusal of each case not solved, by index.
 
     Examples
     --------

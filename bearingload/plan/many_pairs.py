@@ -40,7 +40,8 @@ def solve_pair_cases(
 ) -> Many:
     """The ``n`` pairs of ``cols`` but those in ``bad``: ``rows`` the pairs solved, ``values``
     ``pair`` (:class:`~bearingload.studies.bearing_pair.PairCase`, the limiting speed's
-    warnings added) and ``service`` (each bearing's lives) over them."""
+    warnings added) and ``lives`` (:class:`~bearingload.studies.bearing_pair.PairLives`) over
+    them."""
     planner.bare = planner.bare if bare is None else bare
     with_oil_viscosity(cols, [i for i in range(n) if i not in bad], bad)
     groups: dict[tuple[Any, ...], list[int]] = {}
@@ -66,29 +67,31 @@ def solve_pair_cases(
     out = Many()
     for i, pc in sorted(solved, key=lambda s: s[0]):
         try:
-            pc, service = _lives(pc, cols, i)
+            pc, lives = _lives(pc, cols, i)
         except BearingloadError as exc:
             bad[i] = exc
             continue
         out.rows.append(i)
         out.values.setdefault("pair", []).append(pc)
-        out.values.setdefault("service", []).append(service)
+        out.values.setdefault("lives", []).append(lives)
     out.errors = dict(bad)
     return out
 
 
-def _lives(pc: Any, cols: dict[str, list[Any]], i: int) -> tuple[Any, list[Any]]:
-    """The pair with its limiting speed's warnings, and each bearing's lives from its own
-    loads, as solve gives them for the pair."""
+def _lives(pc: Any, cols: dict[str, list[Any]], i: int) -> tuple[Any, Any]:
+    """The pair with its limiting speed's warnings, and its lives: each bearing's from its own
+    loads and the pair's from them, as solve gives them for the pair
+    (:class:`bearingload.studies.bearing_pair.PairLives`)."""
     from bearingload.bearings.oil import OIL_INPUTS
     from bearingload.plan.many_lives import SERVICE
     from bearingload.plan.solve import service_lives, with_speed_warnings
+    from bearingload.studies.bearing_pair import pair_lives
     from bearingload.studies.life_basis import combined_basis
 
     given = [c for c in SERVICE if c in cols and c not in OIL_INPUTS]
     case = case_of({c: cols[c][i] for c in given if cols[c][i] is not None})
     pc = with_speed_warnings([pc], case.speed)[0]
-    return pc, service_lives(case, [combined_basis(c) for c in pc.bearings])
+    return pc, pair_lives(pc, service_lives(case, [combined_basis(c) for c in pc.bearings]))
 
 
 def _pair_key(planner: Any, v: dict[str, Any]) -> tuple[Any, ...]:

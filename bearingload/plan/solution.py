@@ -26,6 +26,9 @@ class Solution:
         pair: its one :class:`bearingload.studies.bearing_pair.PairCase`).
     service : tuple or None
         The service lives of each case, or of each bearing of a pair (None: a ring by hand).
+    pair_lives : PairLives or None
+        A pair's: its bearings' service lives and the pair's from them
+        (:class:`bearingload.studies.bearing_pair.PairLives`); None for one bearing.
 
     Every key of a case of :meth:`to_dict` is an attribute too: ``solution.q_max`` is
     ``solution.to_dict()["cases"][0]["q_max"]`` for one case, the list of the cases' values for
@@ -37,6 +40,7 @@ class Solution:
     engine: str
     cases: tuple[Any, ...]
     service: tuple[Any, ...] | None = None
+    pair_lives: Any = None
 
     @functools.cached_property
     def _document(self) -> dict[str, Any]:
@@ -45,7 +49,7 @@ class Solution:
         if self.engine == "pair":
             from bearingload.reports.pair import pair_document
 
-            return dict(plain_tree(pair_document(self.cases[0], self.service)))
+            return dict(plain_tree(pair_document(self.cases[0], self.pair_lives)))
         if self.engine == "combined":
             from bearingload.reports.combined import combined_document
 
@@ -98,15 +102,12 @@ class Solution:
         """The solution rendered as ``bearingload solve`` prints it: ``fmt`` one of table, csv,
         markdown, json; ``per_ball``: csv one row per ball; ``show_geometry``: the geometry
         used, with the source of every value."""
-        options: dict[str, Any] = {
-            "per_ball": per_ball,
-            "show_geometry": show_geometry,
-            "service": self.service,
-        }
+        options: dict[str, Any] = {"per_ball": per_ball, "show_geometry": show_geometry}
         if self.engine == "pair":
             from bearingload.reports.pair import pair_report
 
-            return pair_report(self.cases[0], fmt, **options)
+            return pair_report(self.cases[0], fmt, **options, lives=self.pair_lives)
+        options["service"] = self.service
         if self.engine == "combined":
             from bearingload.reports.combined import combined_report
 

@@ -19,6 +19,7 @@ from __future__ import annotations
 
 import dataclasses
 import math
+from collections.abc import Sequence
 from typing import Any
 
 from bearingload.errors import ConflictError, ConvergenceError, InputError
@@ -308,7 +309,7 @@ def speed_hint(exc: InputError, radial: bool) -> InputError | None:
 
 def _pair(case: Case, method: str, spell: Any) -> Solution:
     """A pair of angular-contact ball bearings (an arrangement, or 7205BDB)."""
-    from bearingload.studies.bearing_pair import solve_bearing_pair
+    from bearingload.studies.bearing_pair import pair_lives, solve_bearing_pair
     from bearingload.studies.life_basis import combined_basis
 
     if method != "exact":
@@ -332,7 +333,7 @@ def _pair(case: Case, method: str, spell: Any) -> Solution:
     pc = with_speed_warnings([pc], case.speed)[0]  # the bearing's limiting speeds
     # each bearing's service lives as one bearing's from its own loads; the pair's from them
     service = service_lives(case, [combined_basis(c) for c in pc.bearings], spell)
-    return Solution("pair", (pc,), tuple(service))
+    return Solution("pair", (pc,), tuple(service), pair_lives(pc, service))
 
 
 def pair_speed_hint(exc: ConvergenceError | InputError) -> Exception | None:
@@ -357,6 +358,20 @@ def service_lives(case: Case, bases: list[Any], spell: Any = str) -> list[Any]:
 
     op = case.operating(spell)
     return [service_values(op, b) for b in bases]
+
+
+def speed_pair_lives(cases: Sequence[Any], speed: float | None) -> tuple[Any, ...]:
+    """The service values of each solved pair of ``cases`` as solve gives them with ``speed``
+    [rpm] alone (C_0; with a speed the lives in hours): the rows of a pair's sweep and table
+    life (:class:`bearingload.studies.bearing_pair.PairLives`)."""
+    from bearingload.bearings.service_life import Operating, service_values
+    from bearingload.studies.bearing_pair import pair_lives
+    from bearingload.studies.life_basis import combined_basis
+
+    op = Operating(speed=speed)
+    return tuple(
+        pair_lives(c, [service_values(op, combined_basis(b)) for b in c.bearings]) for c in cases
+    )
 
 
 def with_speed_warnings(cases: list[Any], speed: float | None) -> list[Any]:

@@ -27,6 +27,7 @@ from bearingload.plan.solve import (
     radial_at_speed,
     refuse_static_dynamics,
     speed_hint,
+    speed_pair_lives,
     with_solver_findings,
 )
 
@@ -34,12 +35,15 @@ from bearingload.plan.solve import (
 @dataclasses.dataclass(frozen=True)
 class Swept:
     """A solved sweep: ``engine`` (radial, combined, pair), the study's ``result``, the note
-    naming where z, K and G_r come from (``context``) and the bearing's designation."""
+    naming where z, K and G_r come from (``context``), the bearing's designation and, for a
+    pair, the service values of each position (:class:`bearingload.studies.bearing_pair.
+    PairLives`)."""
 
     engine: str
     result: Any
     context: str
     designation: str | None = None
+    lives: tuple[Any, ...] = ()
 
 
 def sweep_case(case: Case, steps: int) -> Swept:
@@ -161,4 +165,5 @@ def _pair(case: Case, steps: int) -> Swept:
     if case.speed is not None:  # the lives in hours (and the dynamics' speed); the limit
         found = (*result.warnings, *speed_findings(case.speed, b))
         result = dataclasses.replace(result, speed=case.speed, warnings=found)
-    return Swept("pair", result, bearing_context(b), b.designation)
+    lives = speed_pair_lives(result.cases, case.speed)
+    return Swept("pair", result, bearing_context(b), b.designation, lives)

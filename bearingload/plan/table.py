@@ -47,7 +47,8 @@ class Tabled(NamedTuple):
     """A planned or solved table: ``kind`` (``design``: table k or kq, ``result`` the
     :class:`~bearingload.studies.tables.Conditions` its rows are computed under; ``life``: one
     bearing over its clearance, ``service`` its rows' service lives or None; ``pair``: a pair
-    over its preload) and the study's ``result``."""
+    over its preload, ``service`` its rows' :class:`bearingload.studies.bearing_pair.
+    PairLives`) and the study's ``result``."""
 
     kind: str
     result: Any
@@ -216,6 +217,7 @@ def _pair_life(
 ) -> Tabled:
     """Table life of a bearing pair: its rows are preloads."""
     from bearingload.plan.life_table import life_against_preload_case
+    from bearingload.plan.solve import speed_pair_lives
 
     if case is None:
         raise UnusedError(
@@ -250,4 +252,5 @@ def _pair_life(
         )
     if "load" not in case.given:
         raise MissingError("load", "table life needs F_r (N)")
-    return Tabled("pair", life_against_preload_case(case, preloads))
+    result = life_against_preload_case(case, preloads)
+    return Tabled("pair", result, speed_pair_lives(result.cases, case.speed))

@@ -31,7 +31,7 @@ from bearingload.reports.solve import (
     service_notes,
     with_service,
 )
-from bearingload.studies.bearing_pair import ARRANGEMENT_NAMES, PairCase, pair_service_values
+from bearingload.studies.bearing_pair import ARRANGEMENT_NAMES, PairCase, PairLives
 from bearingload.studies.combined_bearing import combined_values
 from bearingload.studies.matrix import MATRIX_KEYS
 
@@ -136,12 +136,14 @@ def _at_speed(r: Any) -> dict[str, Any]:
 
 
 def pair_records(
-    c: PairCase, service: Sequence[Any] | None = None
+    c: PairCase, lives: PairLives | None = None
 ) -> tuple[dict[str, Any], list[dict[str, Any]]]:
     """The pair's values (with its service values) and each bearing's record, as every format
-    of :func:`pair_report` and ``batch`` show them; ``service``: each bearing's service values
-    (:class:`bearingload.bearings.service_life.ServiceLife`)."""
-    pair = pair_record(c) | pair_service_values(c, service)
+    of :func:`pair_report` and ``batch`` show them; ``lives``: the pair's and each bearing's
+    service values as the plan gives them (:class:`bearingload.studies.bearing_pair.
+    PairLives`)."""
+    service = None if lives is None else lives.bearings
+    pair = pair_record(c) | ({} if lives is None else lives.pair)
     # each bearing's record without its own matrix (the pair's is the shaft's: json, terminal)
     singles = [
         {k: v for k, v in combined_values(b).items() if k not in MATRIX_KEYS} for b in c.bearings
@@ -155,13 +157,14 @@ def pair_records(
 
 def pair_report(
     c: PairCase, fmt: str, *, per_ball: bool = False, show_geometry: bool = False,
-    service: Sequence[Any] | None = None,
+    lives: PairLives | None = None,
 ) -> str:  # fmt: skip
-    """Render a solved pair in ``fmt`` (table, csv, markdown, json); ``service``: each
-    bearing's service values (:class:`bearingload.bearings.service_life.ServiceLife`), merged
-    into its record as a single bearing's, and the pair's from them (its lives in hours, its
-    modified lives: :func:`bearingload.studies.bearing_pair.pair_service_values`)."""
-    pair, records = pair_records(c, service)
+    """Render a solved pair in ``fmt`` (table, csv, markdown, json); ``lives``: each bearing's
+    service values, merged into its record as a single bearing's, and the pair's from them
+    (its lives in hours, its modified lives), as the plan gives them
+    (:class:`bearingload.studies.bearing_pair.PairLives`)."""
+    pair, records = pair_records(c, lives)
+    service = None if lives is None else lives.bearings
     if fmt == "json":
         return render([], "json", document=_document(c, pair, records, service))
     if fmt == "csv":
@@ -187,10 +190,11 @@ def pair_report(
     return render(tables, fmt)
 
 
-def pair_document(c: PairCase, service: Sequence[Any] | None = None) -> dict[str, Any]:
-    """The json document of a solved pair, before the json's rounding."""
-    pair, records = pair_records(c, service)
-    return _document(c, pair, records, service)
+def pair_document(c: PairCase, lives: PairLives | None = None) -> dict[str, Any]:
+    """The json document of a solved pair, before the json's rounding (``lives``: as in
+    :func:`pair_report`)."""
+    pair, records = pair_records(c, lives)
+    return _document(c, pair, records, None if lives is None else lives.bearings)
 
 
 def _title(p: dict[str, Any], setting: Preload | None = None) -> str:
@@ -326,15 +330,6 @@ def _pair_column(key: str) -> Column:
     """The csv column of the pair's value of a quantity (``pair_x``)."""
     col = column(key[5:])
     return dataclasses.replace(col, key=key, header=f"pair: {col.header}")
-
-
-def speed_service(c: PairCase, speed: float | None = None) -> list[Any]:
-    """Each bearing's service values as solve gives them with ``--speed`` alone (C_0; with a
-    speed the lives in hours): the rows of a pair's sweep and table life."""
-    from bearingload.bearings.service_life import Operating, service_values
-    from bearingload.studies.life_basis import combined_basis
-
-    return [service_values(Operating(speed=speed), combined_basis(b)) for b in c.bearings]
 
 
 def pairs_csv(title: str, cases: Sequence[PairCase], records: list[Any]) -> Table:

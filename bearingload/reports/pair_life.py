@@ -11,6 +11,7 @@
 
 from __future__ import annotations
 
+from collections.abc import Sequence
 from typing import Any
 
 from bearingload.reports.pair import (
@@ -19,11 +20,10 @@ from bearingload.reports.pair import (
     PAIR_SERVICE,
     pair_records,
     pairs_csv,
-    speed_service,
 )
 from bearingload.reports.quantities import QUANTITIES, units
 from bearingload.reports.render import Column, Table, render
-from bearingload.studies.bearing_pair import ARRANGEMENT_NAMES
+from bearingload.studies.bearing_pair import ARRANGEMENT_NAMES, PairLives
 from bearingload.studies.pair_life import LifeAgainstPreload
 
 #: The columns of the human table: (key, bearing or None, header).
@@ -43,11 +43,15 @@ DYNAMICS_NOTE = (
 )
 
 
-def preload_life_report(t: LifeAgainstPreload, fmt: str, speed: float | None = None) -> str:
-    """Render ``t`` in ``fmt`` (table, markdown, csv, json): one row per preload; ``speed``
-    [rpm]: the shaft speed of the lives in hours (solve's with ``--speed`` alone; the rows were
+def preload_life_report(
+    t: LifeAgainstPreload, fmt: str, lives: Sequence[PairLives], speed: float | None = None
+) -> str:
+    """Render ``t`` in ``fmt`` (table, markdown, csv, json): one row per preload, ``lives`` its
+    service values as the plan gives them (:class:`bearingload.studies.bearing_pair.
+    PairLives`); ``speed`` [rpm]: the shaft speed of the lives in hours (solve's with
+    ``--speed`` alone; the rows were
     solved with the ball dynamics where ``t.model`` says so)."""
-    records = [pair_records(c, speed_service(c, speed)) for c in t.cases]
+    records = [pair_records(c, life) for c, life in zip(t.cases, lives, strict=True)]
     if fmt == "csv":
         return render([pairs_csv("life against the preload", t.cases, records)], "csv")
     if fmt == "json":

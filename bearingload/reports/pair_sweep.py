@@ -14,6 +14,7 @@
 from __future__ import annotations
 
 import dataclasses
+from collections.abc import Sequence
 from dataclasses import asdict
 from typing import Any
 
@@ -27,11 +28,10 @@ from bearingload.reports.pair import (
     STATIC_AT_SPEED,
     pair_records,
     pairs_csv,
-    speed_service,
 )
 from bearingload.reports.quantities import QUANTITIES, Quantity, units
 from bearingload.reports.render import Column, Table, render
-from bearingload.studies.bearing_pair import ARRANGEMENT_NAMES
+from bearingload.studies.bearing_pair import ARRANGEMENT_NAMES, PairLives
 from bearingload.studies.pair_sweep import BEARING_KEYS, PAIR_KEYS, PairSweep
 
 #: The note under a pair sweep.
@@ -52,20 +52,21 @@ ROW_KEYS = (
 )  # fmt: skip
 
 
-def pair_sweep_report(s: PairSweep, fmt: str, context: str = "") -> str:
-    """Render a pair sweep in ``fmt``; ``context`` (the bearing and its sources) is noted."""
+def pair_sweep_report(s: PairSweep, fmt: str, lives: Sequence[PairLives], context: str = "") -> str:
+    """Render a pair sweep in ``fmt``, ``lives`` the service values of its positions as the
+    plan gives them (:class:`bearingload.studies.bearing_pair.PairLives`); ``context`` (the
+    bearing and its sources) is noted."""
     if fmt == "json":
-        return render([], "json", document=pair_sweep_json(s))
+        return render([], "json", document=pair_sweep_json(s, lives))
     if fmt == "csv":
-        return render([_csv_table(s)], "csv")
+        return render([_csv_table(s, lives)], "csv")
     return render([_spread_table(s, context), _rows_table(s)], fmt)
 
 
-def _csv_table(s: PairSweep) -> Table:
+def _csv_table(s: PairSweep, lives: Sequence[PairLives]) -> Table:
     """solve's csv of the pair at every cage position (with its ``speed``, if any), one table."""
-    return pairs_csv(
-        "sweep", s.cases, [pair_records(c, speed_service(c, s.speed)) for c in s.cases]
-    )
+    records = [pair_records(c, life) for c, life in zip(s.cases, lives, strict=True)]
+    return pairs_csv("sweep", s.cases, records)
 
 
 def _entries(s: PairSweep) -> list[tuple[str, Quantity, int | None]]:
@@ -161,12 +162,12 @@ def _rows_table(s: PairSweep) -> Table:
     )  # fmt: skip
 
 
-def pair_sweep_json(s: PairSweep) -> dict[str, Any]:
+def pair_sweep_json(s: PairSweep, lives: Sequence[PairLives]) -> dict[str, Any]:
     """The JSON document: the pair's inputs, ``model``, ``steps``, ``rows`` (the pair's keys of
     solve's json at each position and ``bearings``), ``summary``, ``units``, ``warnings``."""
     rows = []
-    for c in s.cases:
-        pair, recs = pair_records(c, speed_service(c, s.speed))
+    for c, life in zip(s.cases, lives, strict=True):
+        pair, recs = pair_records(c, life)
         answers = {k: pair[k] for k in ("cage_angle", *PAIR_ANSWERS, *PAIR_SERVICE) if k in pair}
         rows.append(answers | {"bearings": recs})
     head = {k: v for k, v in pair_records(s.cases[0])[0].items()

@@ -330,6 +330,22 @@ def _combined(lives: list[Any], rule: Any) -> float | None:
     return None if math.isinf(out) else out
 
 
+@dataclass(frozen=True)
+class PairLives:
+    """A pair's service values: ``bearings``, each bearing's
+    (:class:`bearingload.bearings.service_life.ServiceLife`, as a single bearing's solve gives
+    them from that bearing's loads; empty for a ring by hand), and ``pair``, the pair's from
+    them (:func:`pair_service_values`)."""
+
+    bearings: tuple[Any, ...]
+    pair: dict[str, float]
+
+
+def pair_lives(c: PairCase, service: Sequence[Any] | None) -> PairLives:
+    """The :class:`PairLives` of the solved pair ``c`` from its bearings' ``service``."""
+    return PairLives(tuple(service or ()), pair_service_values(c, service))
+
+
 #: The modified lives of a bearing combined into the pair's by :func:`pair_service_values`.
 MODIFIED_LIVES = ("modified_rating_life", "modified_reference_rating_life")
 
