@@ -2865,6 +2865,10 @@ cdef void speed_state(const Ring *rg, const double *v, const Dyn *prev, bint war
 # the tangent sum_k L_k^T J_k L_k, each bearing's rounding level and noise carried through
 # |L_k^T|. One damped Newton (``shaft_newton``) and one continuation in speed for both.
 
+#: Steps to a first contact (``contact_step``) in a row, without a Newton step between. [-]
+cdef int CONTACT_STEPS = 8
+
+
 cdef void lm_step(const double *jac, const double *res, double mu, double *step) noexcept nogil:
     """The Newton step (mu = 0) or the Levenberg-Marquardt step (J^T J + mu diag) s = J^T r; a
     singular tangent (no ball touching along a direction) gives the damped least-squares step;
@@ -2915,6 +2919,83 @@ cdef void trial_step(const double *jac, const double *res, const int *held, doub
     shrink = min(1.0, 0.1 * length / max(longest, 1e-300))
     for i in range(5):
         step[i] = step[i] * shrink
+
+
+cdef double contact_reach(const Ring *rg, const Dyn *st, const double *d,
+                          double load) noexcept nogil:
+    """How far along the direction d (a bearing's own frame) its nearest ball without inner
+    contact comes into it, to first order (its groove-centre offsets moved, its centre held),
+    pressed to carry about ``load`` there; inf where none comes nearer. [-]"""
+    cdef const double *t
+    cdef double reach = INFINITY, dr, du, rate, press
+    cdef int j
+    for j in range(rg.z):
+        t = &st.terms[BALL_TERMS * j]
+        if not t[11] < 0.0:
+            continue
+        dr = d[0] * rg.c[j] + d[1] * rg.s[j]
+        du = d[2] + d[3] * rg.c[j] + d[4] * rg.s[j]
+        if rg.one_sided and st.sens[6 * j + 1] <= 0.0:
+            du = max(du, 0.0)  # u' = max(u, 0): the ball at u <= 0 moves once u turns positive
+        rate = t[5] * dr + t[4] * du
+        if rate > 0.0:
+            press = pow(load / stiffness_at(&rg.sp, rg.sp.ki, t[5]), 2.0 / 3.0)
+            reach = min(reach, (press - t[11]) / rate)
+    return reach
+
+
+cdef bint contact_step(const Shaft *sh, const ShaftState *cur, const double *jac,
+                       const double *res, double *step) noexcept nogil:
+    """The step that brings the nearest ball without inner contact into it (to first order,
+    pressed to carry about the residual): along the regularised Newton step (J + 1e-13 tr|J|)
+    s = r of the held system. Where the tangent is singular along the residual (no ball
+    touching the inner ring; or the balls touching cannot balance it, as one ball under a light
+    thrust, whose F_a and M/R_i are equal, the others held off by their centrifugal forces) the
+    plain Newton and Levenberg-Marquardt steps have no part along it, and this one mostly that
+    part. No longer than A. Whether there is such a step. [mm]"""
+    cdef double a[25]
+    cdef double d[5]
+    cdef double local[5]
+    cdef double trace = 0.0, size = 0.0, load = 0.0, reach = INFINITY
+    cdef const double *m
+    cdef int i, k, l
+    for i in range(25):
+        a[i] = jac[i]
+    for i in range(5):
+        if not sh.held[i]:
+            trace += fabs(jac[6 * i])
+        load += res[i] * res[i]
+    for i in range(5):
+        if not sh.held[i]:
+            a[6 * i] += 1e-13 * trace + 1e-300
+    solve5(a, res, d)
+    for i in range(5):
+        if sh.held[i] or not isfinite(d[i]):
+            d[i] = 0.0
+        size = max(size, fabs(d[i]))
+    if not size > 0.0:
+        return False
+    for i in range(5):
+        d[i] /= size  # (the largest part 1, against overflow)
+    size = 0.0
+    for i in range(5):
+        size += d[i] * d[i]
+    size = sqrt(size)
+    for i in range(5):
+        d[i] /= size
+    for k in range(sh.parts):
+        m = &sh.maps[25 * k]
+        for i in range(5):
+            local[i] = 0.0
+            for l in range(5):
+                local[i] += m[5 * i + l] * d[l]
+        reach = min(reach, contact_reach(&sh.ring, &cur.part[k], local, sqrt(load)))
+    if not isfinite(reach):
+        return False
+    reach = min(reach, sh.ring.length)
+    for i in range(5):
+        step[i] = reach * d[i]
+    return True
 
 
 cdef void shaft_measures(const Shaft *sh, ShaftState *st) noexcept nogil:
@@ -3032,7 +3113,7 @@ cdef int shaft_newton(const Shaft *sh, double *v, ShaftState *cur, ShaftState *t
     cdef double step[5]
     cdef double vt[5]
     cdef double size
-    cdef int its = 0, it, k, i
+    cdef int its = 0, it, k, i, contacts = 0
     cdef bint found
     shaft_state(sh, v, cur, warm, cur)
     if cur.merit <= sh.ring.lim.tolerance:
@@ -3052,7 +3133,21 @@ cdef int shaft_newton(const Shaft *sh, double *v, ShaftState *cur, ShaftState *t
                     v[i] = vt[i]
                 swap_shaft(cur, trial)
                 found = True
+                contacts = 0
                 break
+            if k + 1 == sh.ring.lim.halvings and contacts < CONTACT_STEPS and contact_step(
+                    sh, cur, jac, res, step):
+                # the Newton step halved finds nothing: a ball to bring into contact first
+                for i in range(5):
+                    vt[i] = v[i] + step[i]
+                shaft_state(sh, vt, cur, True, trial)
+                if trial.touching and shaft_norm2(sh, trial) < 4.0 * size:
+                    for i in range(5):
+                        v[i] = vt[i]
+                    swap_shaft(cur, trial)
+                    found = True
+                    contacts += 1
+                    break
         its += 1
         if not found or cur.merit <= sh.ring.lim.tolerance:
             break
