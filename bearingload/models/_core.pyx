@@ -217,6 +217,19 @@ cdef void elliptic(double t, double *ell) noexcept nogil:
     ell[5] = p
 
 
+def elliptic_values(const double[::1] t):
+    """(n, 6): K, E, (E - pK)/m, (K - E)/m, m, p of ``elliptic`` at each t > 0 (the core's copy
+    of numerics.elliptic_integrals' float path, which numerics, a layer below the models,
+    cannot import; a test holds the two to the bit)."""
+    cdef Py_ssize_t n = t.shape[0], i
+    out_a = np.empty((n, 6))
+    cdef double[:, ::1] out = out_a
+    with nogil:
+        for i in range(n):
+            elliptic(t[i], &out[i, 0])
+    return out_a
+
+
 cdef double ellipticity_residual(double t, double target, double *ell,
                                  double *slope) noexcept nogil:
     """ln(B/A) at ``ln kappa = t`` less ``target``, its derivative in t into ``slope`` and the
