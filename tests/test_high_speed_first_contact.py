@@ -7,10 +7,11 @@ y free), or one (F_r 100 N, F_a 1e-4 N at 40°, 50 000 rpm), whose F_a and M/R_i
 that a thrust without moment needs a ball across the ring. The tangent of the ring forces is
 then singular along the residual: the Newton and Levenberg-Marquardt steps have no part along
 it, and each such case ended on a ConvergenceError (relative residual 1, 5e-7; 18 of the 1872
-cases of ``python -m tests.scan_speed_light``). Checked independently: each applied component
-as a plain sum of the returned inner loads and angles (tests/campaign_speed.py's measure, over
-the largest applied load) to 1e-8 (a light load is balanced to the rounding of the ball forces,
-up to NOISE_MAX of it: 3e-9 here), every ball's two equations to 1e-11.
+cases of ``python -m tests.scan_speed_light``, 139 of its 1000 ``wide`` cases; 0 and 23
+since). Checked independently: each applied component as a plain sum of the returned inner
+loads and angles (tests/campaign_speed.py's measure, over the largest applied load) to 1e-8
+(a light load is balanced to the rounding of the ball forces, up to NOISE_MAX of it: 3e-9
+here), every ball's two equations to 1e-11.
 """
 
 from __future__ import annotations
@@ -49,6 +50,25 @@ def test_balls_held_off_by_their_centrifugal_force_are_brought_into_contact(
     assert np.all(r.ball_loads_inner >= 0) and np.any(r.ball_loads_inner > 0)
     if fa > 0:  # the thrust without moment: a second ball across the ring touches
         assert np.count_nonzero(r.ball_loads_inner) >= 2
+
+
+#: Deep-groove cases of ``python -m tests.scan_speed_light wide`` (G_r 0, the cage at 0): a
+#: thrust of 2e-4 and 1e-5 of F_r on one loaded ball; the balls across the ring touch only
+#: by a move across their contact lines, along which their approach grows with its square.
+WIDE = [
+    (12, 2.4481682580729187e-05, 4.563355170685561e-09, 12473.215503671898),
+    (5, 2.7185121812098905e-05, 2.2724601162934224e-10, 16297.031636807655),
+]
+
+
+@pytest.mark.parametrize("z, fr, fa, speed", WIDE)
+def test_a_light_thrust_on_a_deep_groove_bearing_at_speed_is_balanced(z, fr, fa, speed):
+    kw = dict(ball_diameter=23.812, pitch_diameter=102.5, clearance=0.0, speed=speed)
+    r = solve_high_speed(z, fr, fa, **kw)
+    case = {"z": z, "fr": fr, "fa": fa, "kw": kw}
+    assert ring_residual(case, r) <= 1e-8
+    assert ball_residual(case, r) <= 1e-11
+    assert np.count_nonzero(r.ball_loads_inner) >= 2
 
 
 def test_a_cage_just_off_symmetry_gives_the_symmetric_answer():

@@ -2952,10 +2952,13 @@ cdef void trial_step(const double *jac, const double *res, const int *held, doub
 cdef double contact_reach(const Ring *rg, const Dyn *st, const double *d,
                           double load) noexcept nogil:
     """How far along the direction d (a bearing's own frame) its nearest ball without inner
-    contact comes into it, to first order (its groove-centre offsets moved, its centre held),
-    pressed to carry about ``load`` there; inf where none comes nearer. [-]"""
+    contact comes into it, pressed to carry about ``load``: the ring's move t where the inner
+    groove centre, moved by t (d_rho, d_u') from the ball's centre (held), lies r'_i + the
+    pressed approach from it (a quadratic in t: a loose ball's approach grows with the square
+    of a move across its contact line, as a thrust on a ball loose at 0°); inf where none comes
+    nearer. [-]"""
     cdef const double *t
-    cdef double reach = INFINITY, dr, du, rate, press
+    cdef double reach = INFINITY, dr, du, press, li, e1, e2, a, b, gap, q, move
     cdef int j
     for j in range(rg.z):
         t = &st.terms[BALL_TERMS * j]
@@ -2965,10 +2968,17 @@ cdef double contact_reach(const Ring *rg, const Dyn *st, const double *d,
         du = d[2] + d[3] * rg.c[j] + d[4] * rg.s[j]
         if rg.one_sided and st.sens[6 * j + 1] <= 0.0:
             du = max(du, 0.0)  # u' = max(u, 0): the ball at u <= 0 moves once u turns positive
-        rate = t[5] * dr + t[4] * du
-        if rate > 0.0:
-            press = pow(load / stiffness_at(&rg.sp, rg.sp.ki, t[5]), 2.0 / 3.0)
-            reach = min(reach, (press - t[11]) / rate)
+        li = t[11] + rg.sp.ri
+        e1 = li * t[4]
+        e2 = li * t[5]
+        press = pow(load / stiffness_at(&rg.sp, rg.sp.ki, t[5]), 2.0 / 3.0)
+        a = du * du + dr * dr
+        b = e1 * du + e2 * dr
+        gap = (rg.sp.ri + press) * (rg.sp.ri + press) - li * li
+        q = sqrt(b * b + a * gap)
+        move = gap / (b + q) if b >= 0.0 else (q - b) / a
+        if move > 0.0 and isfinite(move):
+            reach = min(reach, move)
     return reach
 
 
