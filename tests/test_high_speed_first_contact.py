@@ -7,7 +7,7 @@ y free), or one (F_r 100 N, F_a 1e-4 N at 40°, 50 000 rpm), whose F_a and M/R_i
 that a thrust without moment needs a ball across the ring. The tangent of the ring forces is
 then singular along the residual: the Newton and Levenberg-Marquardt steps have no part along
 it, and each such case ended on a ConvergenceError (relative residual 1, 5e-7; 18 of the 1872
-cases of ``python -m tests.scan_speed_light``, 139 of its 1000 ``wide`` cases; 0 and 23
+cases of ``python -m tests.scan_speed_light``, 139 of its 1000 ``wide`` cases; 0 and 15
 since). Checked independently: each applied component as a plain sum of the returned inner
 loads and angles (tests/campaign_speed.py's measure, over the largest applied load) to 1e-8
 (a light load is balanced to the rounding of the ball forces, up to NOISE_MAX of it: 3e-9
