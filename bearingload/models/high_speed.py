@@ -60,8 +60,10 @@ halved until its residual falls; a ball left unbalanced is solved from its loose
 theta_c)`` from the static answer (a case left unbalanced: again from the static answer of the
 bearing whose balls are pushed out by their centrifugal approach, :func:`_dynamic_start`), the
 tangent of the ball forces by the implicit function theorem (the ball equations eliminated per
-ball); the step halved, then Levenberg-Marquardt steps (a nearly singular tangent), none longer
-than A/10 or to a position where no ball touches the inner ring. A case left unbalanced is
+ball); the step halved, then the step to the first contact of a ball held off the inner ring
+(a tangent singular along the residual: docs/speed.md), then Levenberg-Marquardt steps (a
+nearly singular tangent), none longer than A/10 or to a position where no ball touches the
+inner ring. A case left unbalanced is
 solved again by continuation in omega^2 from the static answer. The components the static model
 holds by symmetry are held (the speed terms keep those symmetries: ``M_g`` is odd in
 ``alpha_o``). A case stops when each applied component is balanced to ``TOLERANCE`` of the
@@ -660,8 +662,9 @@ def _check_resolved(st: BallState, ring: Ring, flat: dict) -> None:
     the largest applied load (a load tiny against a preload or the balls' centrifugal forces:
     the double cannot balance it to the digits given). The smallest load accepted: the level
     grows at most as the load^(1/3) (the contact stiffness; constant under a preload), so
-    ``F (level/LEVEL_MAX)^1.5`` is resolved."""
-    level = np.where(np.isfinite(st.level), st.level, 0.0)
+    ``F (level/LEVEL_MAX)^1.5`` is resolved. Not at speed 0: there the static solver (in
+    double-double) has answered, and refused what it does not resolve."""
+    level = np.where(np.isfinite(st.level) & (flat["speed"] > 0), st.level, 0.0)
     bad = np.flatnonzero(level > LEVEL_MAX)
     if bad.size == 0:
         return
