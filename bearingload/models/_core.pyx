@@ -338,7 +338,7 @@ def hertz_curves(const double[:, ::1] geometry, const double[::1] node_x):
 
 
 cdef void reference(const Case *cs, const double *vh, const double *vl, Balls b) noexcept nogil:
-    """Every ball at the position vh + vl in double-double arithmetic (_combined_ring.reference:
+    """Every ball at the position vh + vl in double-double arithmetic (_combined_ring's notes:
     d^2 - B^2 = m (m + 2B) + u^2, m = rho - B)."""
     cdef int j
     cdef double c, s, p1, e1, p2, e2, r, e, m, e3, m_hi, m_lo, n_hi, n_lo
@@ -385,7 +385,7 @@ cdef void reference(const Case *cs, const double *vh, const double *vl, Balls b)
 cdef void offset(const Case *cs, Balls ref, const double *w, Balls b,
                  double *dd, double *ddr) noexcept nogil:
     """The balls after a small move w from ref, with d - d_ref and (d - d_ref) - (rho - rho_ref)
-    from the move itself (_combined_ring.offset)."""
+    from the move itself (_combined_ring's notes)."""
     cdef int j
     cdef double dr, du, rho, u, rp, rp_ref, up, uu, d, den, w_new, w_ref, change
     cdef bint both
@@ -423,7 +423,7 @@ cdef void offset(const Case *cs, Balls ref, const double *w, Balls b,
 
 
 cdef void loads(const Case *cs, Balls b, const double *kappa, Loads lo) noexcept nogil:
-    """Ball loads (scaled, stiffness 1 + kappa) and directions (_combined_ring.loads)."""
+    """Ball loads (scaled, stiffness 1 + kappa) and directions (_combined_ring's notes)."""
     cdef int j
     cdef double rp, ca, sa, delta, pos, root, k, tau, sig
     for j in range(cs.z):
@@ -496,7 +496,7 @@ cdef inline void sums_close(double *gen, const double *err) noexcept nogil:
 
 cdef void forces(const Case *cs, Loads lo, double *gen, double *size) noexcept nogil:
     """The generalised ball forces sum_j (q_j - q_0) g_j + q_0 sum_j g'_j, compensated, and the
-    sums of the magnitudes of their terms (_combined_ring.forces)."""
+    sums of the magnitudes of their terms (_combined_ring's notes)."""
     cdef int j
     cdef double radial, axial
     cdef double err[5]
@@ -3287,3 +3287,62 @@ def solve_speed(const double[:, ::1] consts, const double[:, ::1] ki, const doub
                 at_rest(&sh, &st[1], &out[k, 40])
             free(block)
     return v_a, bearings, out_a
+
+
+# ------------------------------------------------- the combined solver's set-up and results
+#
+# The Python side of bearingload.models.combined checks the inputs (bearingload.validate) and
+# refuses what does not fit; the arithmetic of a call, before and after ``solve``, is here: one
+# C loop over the cases for the whole batch, so a case's bits are the same alone or in a batch.
+
+cdef void case_at(Case *cs, int z, const double *c, const double *s, const double *scalars,
+                  const double *f, const unsigned char *locked, int one_sided) noexcept nogil:
+    """``cs`` the case of the ball directions ``c``, ``s`` (z), ``scalars`` = (a_hat, pre, gap,
+    b_hi, b_lo, t_imp), the forces ``f`` and held components ``locked`` (5), constant K."""
+    cdef int i
+    cs.lim = LIMITS
+    cs.z, cs.c, cs.s, cs.one_sided = z, c, s, one_sided
+    cs.a_hat, cs.pre, cs.gap = scalars[0], scalars[1], scalars[2]
+    cs.b_hi, cs.b_lo, cs.t_imp = scalars[3], scalars[4], scalars[5]
+    for i in range(5):
+        cs.f[i] = f[i]
+        cs.locked[i] = locked[i]
+    cs.deviation = cs.pre > 0 and z >= 2
+    cs.q0 = cs.pre * sqrt(cs.pre) if cs.deviation else 0.0
+    cs.curve = NULL
+
+
+def points(const double[:, ::1] c, const double[:, ::1] s, const double[:, ::1] scalars,
+           const double[:, ::1] f, const unsigned char[:, ::1] locked,
+           const unsigned char[::1] one_sided, const double[:, ::1] vh, const double[:, ::1] vl,
+           const double[:, ::1] kappa):
+    """Every ball of n cases at the positions ``vh + vl`` (n, 5) in double-double, their loads
+    with the stiffness deviations ``kappa`` (n, z), the forces and the residual (``fresh``):
+    ``scalars`` (n, 6) = a_hat, pre, gap, b_hi, b_lo, t_imp; returns the (13, n, z) ball arrays
+    (as ``solve``'s point), the forces and their terms' sizes (n, 5) each, the residual (n,)."""
+    cdef Py_ssize_t n = c.shape[0], k
+    cdef int z = <int> c.shape[1], i, j
+    balls_a, gen_a, size_a, res_a = np.empty((BALL_ARRAYS, n, z)), np.empty((n, 5)), \
+        np.empty((n, 5)), np.empty(n)
+    cdef double[:, :, ::1] balls = balls_a
+    cdef double[:, ::1] gen = gen_a, size = size_a
+    cdef double[::1] res = res_a
+    cdef Case cs
+    cdef Point pt
+    cdef double *block = <double *> malloc(BALL_ARRAYS * z * sizeof(double))
+    if block == NULL:
+        raise MemoryError()
+    point_on(block, z, &pt)
+    with nogil:
+        for k in range(n):
+            case_at(&cs, z, &c[k, 0], &s[k, 0], &scalars[k, 0], &f[k, 0], &locked[k, 0],
+                    one_sided[k])
+            fresh(&cs, &vh[k, 0], &vl[k, 0], &kappa[k, 0], &pt)
+            for i in range(BALL_ARRAYS):
+                for j in range(z):
+                    balls[i, k, j] = block[i * z + j]
+            for i in range(5):
+                gen[k, i], size[k, i] = pt.gen[i], pt.size[i]
+            res[k] = pt.res
+    free(block)
+    return balls_a, gen_a, size_a, res_a

@@ -738,7 +738,7 @@ def _move_along(
     for _ in range(4):
         hi, lo = _ring.two_sum(wh, step[None, :])
         wh, wl = _ring.fast_two_sum(hi, lo + wl)
-        moved = _ring.Point.at(sub, kappa[one], _ring.reference(sub, wh, wl))
+        moved = _ring.Point.at(sub, kappa[one], wh, wl)
         if moved.res[0] <= TOLERANCE:
             vh[one], vl[one] = wh, wl
             end.put(one, moved)
