@@ -3346,3 +3346,88 @@ def points(const double[:, ::1] c, const double[:, ::1] s, const double[:, ::1] 
             res[k] = pt.res
     free(block)
     return balls_a, gen_a, size_a, res_a
+
+
+cpdef enum SetupStatus:
+    SET_UP = 0        # the case's scaled problem is set up
+    LOAD_OVERFLOW = 1 # a moment over its lever beyond the largest double
+    NO_LOAD = 2       # no load at all
+    SCALE_HUGE = 3    # the one-ball approach (F/K)^(2/3) beyond 1e100 mm
+    TOO_LIGHT = 4     # A over the approach beyond the combined solver's ratio
+    TOO_HEAVY = 5     # an angular-contact case's A over the approach below its ratio
+
+
+cdef int problem_case(int z, const double *load, double cage, const double *length,
+                      double k_ref, bint angular, bint imposed, const double *limits,
+                      double *c, double *s, unsigned char *mirror, unsigned char *held,
+                      double *f, double *out) noexcept nogil:
+    """One case of ``combined_problem``; returns its SetupStatus (every output set all the
+    same)."""
+    cdef double fr = load[0], fa = load[1], mm = load[2], mc = load[3]
+    cdef double big_a = length[0], g = length[1], radius = length[2]
+    cdef double f_ref, scale, t_imp, a, p, hi, bb
+    cdef bint no_tilt, across, axial, radial
+    cdef int j, status = SET_UP
+    f_ref = max(max(fr, fabs(fa)), hypot(mm, mc) / radius)
+    scale = pow(f_ref / k_ref, 2.0 / 3.0)
+    if not isfinite(f_ref):
+        status = LOAD_OVERFLOW
+    elif not f_ref > 0:
+        status = NO_LOAD
+    elif not scale <= 1e100:
+        status = SCALE_HUGE
+    elif big_a / scale > limits[1]:
+        status = TOO_LIGHT
+    elif angular and big_a / scale < limits[2]:
+        status = TOO_HEAVY
+    t_imp = radius * (load[4] * (PI / 180.0))
+    mirror[0] = ball_directions(z, cage, limits[0], c, s)
+    for j in range(z):
+        c[j] = 0.0 if fabs(c[j]) < 1e-15 else c[j]
+        s[j] = 0.0 if fabs(s[j]) < 1e-15 else s[j]
+    no_tilt = mm == 0 and mc == 0 and t_imp == 0
+    across = mirror[0] and mc == 0
+    axial = fa == 0 and no_tilt
+    radial = fr == 0 and no_tilt and z >= 2
+    held[0], held[1], held[2] = radial, across or radial, axial
+    held[3], held[4] = axial or radial or imposed, across or axial or radial
+    f[0], f[1], f[2] = fr / f_ref, 0.0 / f_ref, fa / f_ref
+    f[3], f[4] = (mm / radius) / f_ref, (mc / radius) / f_ref
+    a = big_a / scale
+    p = (-g if -g > 0.0 else 0.0) / scale
+    hi = a + p
+    bb = hi - a
+    out[0], out[1], out[2], out[3] = scale, a, p, (g if g > 0.0 else 0.0) / scale
+    out[4], out[5], out[6], out[7] = hi, (a - (hi - bb)) + (p - bb), t_imp / scale, f_ref
+    return status
+
+
+def combined_problem(int z, const double[:, ::1] loads, const double[::1] cage,
+                     const double[:, ::1] lengths, const double[::1] k_ref, bint angular,
+                     bint imposed, const double[::1] limits):
+    """The scaled problem of n cases of the combined solver from their loads (n, 5) = F_r,
+    F_a, M, M_c [N, N mm], the imposed tilt [°]; the cage angles (n,) [°]; the lengths (n, 3)
+    = A, G_r/2, the tilt lever R_i [mm]; K_0 (n,) [N/mm^1.5]; ``angular`` (one-sided contact),
+    ``imposed`` (the tilt held at the given one); ``limits`` = the symmetry snap [°], the
+    largest and (angular contact) smallest A over (F/K_0)^(2/3).
+
+    Per case: F = max(F_r, |F_a|, |(M, M_c)|/R_i), s = (F/K_0)^(2/3), the ball directions
+    (``ball_directions``, below 1e-15 made 0) and whether the case is mirrored, the components
+    held (combined.symmetry_locks states the symmetries), the applied forces over F, and s,
+    A/s, p, max(g, 0)/s, B = A + p in double-double, the imposed tilt R_i theta/s, F (8, n).
+    Returns (status (n,) int8 (SetupStatus: the caller refuses), c, s, mirror, held, f, those
+    8 rows)."""
+    cdef Py_ssize_t n = loads.shape[0], k
+    status_a, mirror_a = np.empty(n, dtype=np.int8), np.empty(n, dtype=bool)
+    c_a, s_a, held_a = np.empty((n, z)), np.empty((n, z)), np.empty((n, 5), dtype=bool)
+    f_a, out_a = np.empty((n, 5)), np.empty((n, 8))
+    cdef signed char[::1] status = status_a
+    cdef unsigned char[::1] mirror = mirror_a.view(np.uint8)
+    cdef unsigned char[:, ::1] held = held_a.view(np.uint8)
+    cdef double[:, ::1] c = c_a, s = s_a, f = f_a, out = out_a
+    with nogil:
+        for k in range(n):
+            status[k] = problem_case(z, &loads[k, 0], cage[k], &lengths[k, 0], k_ref[k],
+                                     angular, imposed, &limits[0], &c[k, 0], &s[k, 0],
+                                     &mirror[k], &held[k, 0], &f[k, 0], &out[k, 0])
+    return status_a, c_a, s_a, mirror_a, held_a, f_a, out_a.T

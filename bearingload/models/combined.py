@@ -583,23 +583,8 @@ def solve_combined(
         curve = StiffnessCurve(values)
     else:
         k_ref = flat[14]
-    f_ref = reference_force(fr, fa, mm, mc, geo.R_i)
-    if (f_ref <= 0).any():
-        raise InputError("radial_load", "give a radial load, an axial load or a moment")
-    check_scale(
-        f_ref, k_ref, geo.A, angular is not None, lambda: load_sizes(fr, fa, mm, mc, geo.R_i)
-    )
-    if angular is not None:
-        _check_angular_scale(f_ref, k_ref, geo.A, (fr, fa, np.hypot(mm, mc) / geo.R_i))
-    t_imp = geo.R_i * np.deg2rad(tilt_deg)  # [mm]
-    c, s, mirror = ball_directions(z, cage)
-    held, imposed = symmetry_locks(z, mirror, (fr, fa, mm, mc), t_imp, misalignment is not None)
-    f = np.zeros((fr.shape[0], 5))
-    f[:, 0], f[:, 2], f[:, 3], f[:, 4] = fr, fa, mm / geo.R_i, mc / geo.R_i
-    f /= f_ref[:, None]
-    one_sided = np.full(fr.shape, angular is not None)
-    problem = Problem.make(z, (c, s), (geo.A, geo.g), f=f, t_imp=t_imp, locked=held,
-                           imposed=imposed, f_ref=f_ref, k_ref=k_ref, one_sided=one_sided)  # fmt: skip
+    loads = (fr, fa, mm, mc, tilt_deg)
+    problem, mirror = _problem(z, loads, cage, geo, k_ref, (angular, misalignment))
     given = {"balls": z, "radial_load": fr, "axial_load": fa, "moment": mm, "moment_cross": mc,
              "clearance": gr, "cage_angle": cage}  # fmt: skip
     if misalignment is not None:  # the moment is then the reaction, not an input
@@ -615,6 +600,54 @@ def solve_combined(
             physical_tangent(problem, geo, tangent[0], mirror & (mc == 0)),
         )
         return distribution(problem, geo, answer, shape, given, misalignment, flags)
+
+
+def _problem(
+    z: int,
+    loads: tuple[np.ndarray, ...],
+    cage: np.ndarray,
+    geo: _Geometry,
+    k_ref: np.ndarray,
+    given: tuple[Any, Any],
+) -> tuple[Problem, np.ndarray]:
+    """The scaled problem of the cases (the compiled core's ``combined_problem``: the largest
+    load, the scale, the ball directions, the symmetry locks, the forces) and which cases are
+    mirrored about the load line; the loads (F_r, F_a, M, M_c, misalignment [°]) refused as
+    :func:`reference_force`, :func:`check_scale` and :func:`_check_angular_scale` state.
+    ``given``: the contact angle and the misalignment as given (None: not given)."""
+    from bearingload.models import _core
+    from bearingload.models._ring import SYMMETRY_SNAP_DEG
+
+    angular, imposed = (v is not None for v in given)
+    n = cage.shape[0]
+    lengths = np.empty((n, 3))
+    lengths[:, 0], lengths[:, 1], lengths[:, 2] = geo.A, geo.g, geo.R_i
+    limits = np.array([SYMMETRY_SNAP_DEG, GEOMETRY_RATIO_MAX, ANGULAR_RATIO_MIN])
+    k_ref = np.ascontiguousarray(k_ref, dtype=float)
+    status, c, s, mirror, held, f, out = _core.combined_problem(
+        z, np.stack(loads, axis=1), cage, lengths, k_ref, angular, imposed, limits
+    )
+    if status.any():
+        _refuse_loads(loads, geo, k_ref, angular)
+    fixed = np.zeros((n, 5), dtype=bool)
+    fixed[:, 3] = imposed
+    scale, a_hat, pre, gap, b_hi, b_lo, t_imp, f_ref = out
+    scaled = (scale, a_hat, pre, gap, b_hi, b_lo, f, t_imp, held, fixed, f_ref, k_ref)
+    return Problem(z, c, s, *scaled, np.full(n, angular)), mirror
+
+
+def _refuse_loads(
+    loads: tuple[np.ndarray, ...], geo: _Geometry, k_ref: np.ndarray, angular: bool
+) -> None:
+    """InputError on the loads the core's ``combined_problem`` flagged (no load, a moment over
+    its lever beyond the largest number, loads too small or, angular contact, too large)."""
+    fr, fa, mm, mc = loads[:4]
+    f_ref = reference_force(fr, fa, mm, mc, geo.R_i)
+    if (f_ref <= 0).any():
+        raise InputError("radial_load", "give a radial load, an axial load or a moment")
+    check_scale(f_ref, k_ref, geo.A, angular, lambda: load_sizes(fr, fa, mm, mc, geo.R_i))
+    if angular:
+        _check_angular_scale(f_ref, k_ref, geo.A, (fr, fa, np.hypot(mm, mc) / geo.R_i))
 
 
 def call_balls(balls: Any) -> int:
