@@ -3431,3 +3431,47 @@ def combined_problem(int z, const double[:, ::1] loads, const double[::1] cage,
                                      angular, imposed, &limits[0], &c[k, 0], &s[k, 0],
                                      &mirror[k], &held[k, 0], &f[k, 0], &out[k, 0])
     return status_a, c_a, s_a, mirror_a, held_a, f_a, out_a.T
+
+
+def combined_result(const double[:, ::1] v, const double[:, ::1] case_in,
+                    const double[:, ::1] gen, const double[:, ::1] sa,
+                    const double[:, ::1] ca, const double[:, ::1] eps, const double[:, ::1] q,
+                    const double[:, ::1] kappa, bint imposed):
+    """The answers of n cases of the combined solver in physical units: the scaled position
+    ``v`` (n, 5) and ``case_in`` (11, n) = the imposed tilt t_imp, the scale s, the tilt lever
+    R_i, the free contact angle [rad], A, one-sided (1/0), F, the moment given [N mm], the cage
+    angle [°], the preload approach p, K_0; the scaled forces ``gen`` (n, 5); the balls' sin and
+    cos of the contact angle, approach less p, scaled load, stiffness deviation (n, z) each;
+    ``imposed``: the tilt imposed, the moment is the tilt's reaction R_i F gen_t.
+
+    Returns the case rows (8, n) = x, y, axial (from the centred rings, or for one-sided
+    contact from the zero-load position), tilt, tilt_cross [°], free contact angle [°], axial
+    play (0 one-sided), moment; and the ball rows (5, n, z) = phi_j [°], contact angle [°],
+    approach [mm], stiffness [N/mm^1.5], load [N]."""
+    cdef Py_ssize_t n = v.shape[0], k
+    cdef int z = <int> sa.shape[1], j
+    cases_a, balls_a = np.empty((8, n)), np.empty((5, n, z))
+    cdef double[:, ::1] out = cases_a
+    cdef double[:, :, ::1] ball = balls_a
+    cdef double w[5]
+    cdef double sc, lever, sin0, deg = 180.0 / PI
+    with nogil:
+        for k in range(n):
+            sc, lever = case_in[1, k], case_in[2, k]
+            for j in range(5):
+                w[j] = v[k, j] * sc
+            w[3] = (v[k, 3] + case_in[0, k]) * sc
+            sin0 = sin(case_in[3, k])
+            out[0, k], out[1, k] = w[0], w[1]
+            out[2, k] = w[2] - (case_in[4, k] * sin0 if case_in[5, k] else 0.0)
+            out[3, k], out[4, k] = (w[3] / lever) * deg, (w[4] / lever) * deg
+            out[5, k] = case_in[3, k] * deg
+            out[6, k] = 0.0 if case_in[5, k] else 2.0 * case_in[4, k] * sin0
+            out[7, k] = lever * case_in[6, k] * gen[k, 3] if imposed else case_in[7, k]
+            for j in range(z):
+                ball[0, k, j] = floor_mod(case_in[8, k] + 360.0 * j / z, 360.0)
+                ball[1, k, j] = atan2(sa[k, j], ca[k, j]) * deg
+                ball[2, k, j] = (case_in[9, k] + eps[k, j]) * sc
+                ball[3, k, j] = (1.0 + kappa[k, j]) * case_in[10, k]
+                ball[4, k, j] = case_in[6, k] * q[k, j]
+    return cases_a, balls_a

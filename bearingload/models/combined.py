@@ -1567,23 +1567,22 @@ def distribution(
 ) -> CombinedDistribution:
     """Back to physical units and the case shape; ``flags``: the cases whose tilt the loads do
     not determine and those whose negligible thrust was left out (default none)."""
+    from bearingload.models import _core
+
     undetermined, neglected = (None, None) if flags is None else flags
     v, kappa, its, (b, lo, gen), tangent = answer
-    q = p.f_ref[:, None] * lo.q
-    w = v.copy()  # x, y, a, t, t_c [mm], the tilts then over the lever [rad]
-    w[:, 3] += p.t_imp
-    w *= p.scale[:, None]
-    w[:, 3:] /= geo.R_i[:, None]
-    sin0 = np.sin(geo.alpha0)
-    play, axial = 2.0 * geo.A * sin0, w[:, 2]
-    if p.one_sided.any():  # measured from the zero-load position, no play
-        play, axial = (
-            np.where(p.one_sided, 0.0, play),
-            axial - np.where(p.one_sided, geo.A * sin0, 0.0),
-        )
-    mm = given["moment"]
-    moment = geo.R_i * p.f_ref * gen[:, 3] if misalignment is not None else mm
-    z = p.z
+    n, z = kappa.shape
+    case_in = np.empty((11, n))
+    case_in[:5] = p.t_imp, p.scale, geo.R_i, geo.alpha0, geo.A
+    case_in[5:] = p.one_sided, p.f_ref, given["moment"], given["cage_angle"], p.pre, p.k_ref
+    rows, per_ball = _core.combined_result(
+        np.ascontiguousarray(v),
+        case_in,
+        *(np.ascontiguousarray(a) for a in (gen, lo.sa, lo.ca, b.eps, lo.q, kappa)),
+        misalignment is not None,
+    )
+    x, y, axial, tilt, tilt_cross, alpha0, play, moment = rows
+    phi, alpha, approach, k_ball, q = per_ball
 
     def case(a: np.ndarray) -> Any:
         return np.asarray(a).reshape(shape) if shape else a.item()
@@ -1591,26 +1590,24 @@ def distribution(
     def ball(a: np.ndarray) -> np.ndarray:
         return a.reshape(shape + (z,))
 
-    cage = given["cage_angle"]
-    phi = np.mod(cage[:, None] + 360.0 * np.arange(z) / z, 360.0)
     return CombinedDistribution(
         balls=z,
         load=case(given["radial_load"]),
         axial_load=case(given["axial_load"]),
         moment=case(moment),
         clearance=case(given["clearance"]),
-        cage_angle=case(cage),
-        free_contact_angle=case(np.rad2deg(geo.alpha0)),
+        cage_angle=case(given["cage_angle"]),
+        free_contact_angle=case(alpha0),
         axial_play=case(play),
-        x=case(w[:, 0]),
-        y=case(w[:, 1]),
+        x=case(x),
+        y=case(y),
         axial=case(axial),
-        tilt=case(np.rad2deg(w[:, 3])),
-        tilt_cross=case(np.rad2deg(w[:, 4])),
+        tilt=case(tilt),
+        tilt_cross=case(tilt_cross),
         ball_angles=ball(phi),
-        contact_angles=ball(np.rad2deg(np.arctan2(lo.sa, lo.ca))),
-        ball_approaches=ball((p.pre[:, None] + b.eps) * p.scale[:, None]),
-        ball_stiffnesses=ball((1.0 + kappa) * p.k_ref[:, None]),
+        contact_angles=ball(alpha),
+        ball_approaches=ball(approach),
+        ball_stiffnesses=ball(k_ball),
         ball_loads=ball(q),
         tilt_radius=case(geo.R_i),
         stiffness_matrix=tangent.reshape(shape + (5, 5)),
