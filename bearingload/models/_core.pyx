@@ -25,7 +25,7 @@ Double-double arithmetic needs every product rounded on its own: the build compi
 with ``-ffp-contract=off`` (setup.py); the exact products use ``fma``.
 """
 
-from libc.math cimport (atan, atan2, cbrt, copysign, cos, exp, expm1, fabs, fma, fmod, hypot,
+from libc.math cimport (asin, atan, atan2, cbrt, copysign, cos, exp, expm1, fabs, fma, fmod, hypot,
                         isfinite, isnan, log, log1p, pow, rint, sin, sqrt, INFINITY, NAN)
 from libc.stdint cimport int64_t
 from libc.stdlib cimport free, malloc
@@ -3475,3 +3475,33 @@ def combined_result(const double[:, ::1] v, const double[:, ::1] case_in,
                 ball[3, k, j] = (1.0 + kappa[k, j]) * case_in[10, k]
                 ball[4, k, j] = case_in[6, k] * q[k, j]
     return cases_a, balls_a
+
+
+def groove(const double[:, ::1] given, bint angular, double low, double high):
+    """The ring geometry of n deep-groove (or, ``angular``, angular-contact) cases from
+    ``given`` (5, n) = D_w, d_m, f_i, f_o [mm, -], and G_r [mm] or (``angular``) the design
+    contact angle [°]: returns (5, n) = A = (f_i + f_o - 1) D_w, g = G_r/2 (angular contact:
+    G_r = 4 A sin^2(alpha_0/2)), the free contact angle alpha_0 [rad] (deep groove: 2
+    asin(sqrt(g/(2A))), 0 without clearance; angular contact: as given), R_i = d_m/2 + (f_i -
+    1/2) D_w cos(alpha_0), and 1 where the case fits (D_w, d_m > 0, D_w < d_m, the
+    conformities inside (low, high), g < A), else 0 (combined.ring_geometry refuses it)."""
+    cdef Py_ssize_t n = given.shape[1], k
+    out_a = np.empty((5, n))
+    cdef double[:, ::1] out = out_a
+    cdef double dw, dm, fi, fo, big_a, g, alpha0, half
+    with nogil:
+        for k in range(n):
+            dw, dm, fi, fo = given[0, k], given[1, k], given[2, k], given[3, k]
+            big_a = (fi + fo - 1.0) * dw
+            if angular:
+                alpha0 = given[4, k] * (PI / 180.0)
+                half = sin(alpha0 / 2.0)
+                g = 4.0 * big_a * (half * half) / 2.0
+            else:
+                g = given[4, k] / 2.0
+                alpha0 = 2.0 * asin(sqrt(g / (2.0 * big_a))) if g > 0 else 0.0
+            out[0, k], out[1, k], out[2, k] = big_a, g, alpha0
+            out[3, k] = dm / 2.0 + (fi - 0.5) * dw * cos(alpha0)
+            out[4, k] = (dw > 0 and dm > 0 and dw < dm and fi > low and fi < high and
+                         fo > low and fo < high and g < big_a)
+    return out_a

@@ -296,11 +296,10 @@ def groove_geometry(
     >>> round(float(A), 4), round(float(a0), 4), round(float(sa), 5)
     (0.575, 7.5614, 0.15133)
     """
-    geo = ring_geometry(
-        validate.positive("ball_diameter", ball_diameter, "mm"),
-        validate.positive("pitch_diameter", pitch_diameter, "mm"),
-        *validate.each_finite(f_i=f_i, f_o=f_o, clearance=clearance),
-    )
+    dw = validate.positive("ball_diameter", ball_diameter, "mm")
+    dm = validate.positive("pitch_diameter", pitch_diameter, "mm")
+    fi, fo, gr = validate.each_finite(f_i=f_i, f_o=f_o, clearance=clearance)
+    geo = ring_geometry(dw, dm, fi, fo, gr)
     play = 2.0 * geo.A * np.sin(geo.alpha0)
     return (
         numerics.scalar_out(geo.A),
@@ -310,25 +309,26 @@ def groove_geometry(
 
 
 def ring_geometry(
-    dw: Any, dm: Any, fi: Any, fo: Any, clearance: Any, alpha0: Any = None
+    dw: Any, dm: Any, fi: Any, fo: Any, clearance: Any, angular: bool = False
 ) -> _Geometry:
-    """The geometry of finite arrays (:func:`bearingload.validate.finite`), refused where it
-    is not one of a deep-groove ball bearing (one case: checked as floats); ``alpha0``: the
-    free contact angle [rad] as given (:func:`angular_geometry`), not that of the clearance."""
-    g = clearance / 2.0
-    A = (fi + fo - 1.0) * dw
-    d_w, d_m, f_i, f_o, gap, big_a = (dw, dm, fi, fo, g, A)
-    if A.size == dm.size == g.size == 1:
-        d_w, d_m, f_i, f_o, gap, big_a = (v.item() for v in (dw, dm, fi, fo, g, A))
-    low, high = validate.CONFORMITY_RANGE
-    conform = (f_i > low) & (f_i < high) & (f_o > low) & (f_o < high)
-    fits = (d_w > 0) & (d_m > 0) & (d_w < d_m) & conform & (gap < big_a)
-    if not (fits if isinstance(fits, bool) else fits.all()):
-        _refuse_geometry(dw, dm, fi, fo, g >= A)
-    if alpha0 is None:  # cos(alpha0) = 1 - g/A; 2 asin(sqrt(g/(2A))) keeps a small g's digits
-        alpha0 = 2.0 * np.arcsin(np.sqrt(np.where(g > 0, g / (2.0 * A), 0.0)))  # (g < A here)
-    R_i = dm / 2.0 + (fi - 0.5) * dw * np.cos(alpha0)
-    return _Geometry(dw, dm, fi, fo, A, g, alpha0, R_i)
+    """The geometry of finite arrays (:func:`bearingload.validate.finite`, broadcast together),
+    refused where it is not one of a deep-groove ball bearing; ``angular``: ``clearance`` is the
+    design contact angle alpha_0 [°] of an angular-contact bearing (:func:`angular_geometry`).
+    The arithmetic is the compiled core's ``groove``, one loop over the cases."""
+    from bearingload.models import _core
+
+    columns: tuple[np.ndarray, ...] = (dw, dm, fi, fo, clearance)
+    shape = columns[0].shape
+    if any(v.shape != shape for v in columns) or len(shape) != 1:
+        shape = np.broadcast_shapes(*(v.shape for v in columns))
+        columns = tuple(np.broadcast_to(v, shape).reshape(-1) for v in columns)
+    big_a, g, alpha0, r_i, fits = _core.groove(
+        np.array(columns, dtype=float).reshape(5, -1), angular, *validate.CONFORMITY_RANGE
+    )
+    if not fits.all():
+        _refuse_geometry(dw, dm, fi, fo, (g >= big_a).reshape(shape))
+    cut = tuple(a.reshape(shape) for a in (big_a, g, alpha0, r_i))
+    return _Geometry(dw, dm, fi, fo, *cut)
 
 
 def _refuse_geometry(dw: Any, dm: Any, fi: Any, fo: Any, out: Any) -> None:
@@ -569,7 +569,7 @@ def solve_combined(
     named["contact_angle"] = np.zeros(()) if angular is None else angular
     shape, flat = _cases(named | ({} if k_given is None else {"stiffness": k_given}))
     fr, fa, mm, tilt_deg, cage, e, nu, mc, dw, dm, fi, fo, gr, alpha_d = flat[:14]
-    geo = ring_geometry(dw, dm, fi, fo, gr) if angular is None else angular_geometry(dw, dm, fi, fo, alpha_d)  # fmt: skip
+    geo = ring_geometry(dw, dm, fi, fo, gr if angular is None else alpha_d, angular is not None)
     validate.ball_spacing(z, geo.D_w, geo.d_m)  # (z balls must fit on the pitch circle)
     if tilt_radius is not None:
         radius = validate.positive("tilt_radius", tilt_radius, "mm")
@@ -812,9 +812,7 @@ def _least_tilt_step(p: Problem, i: int, end: _ring.Point, v: np.ndarray, d: np.
 def angular_geometry(dw: Any, dm: Any, fi: Any, fo: Any, alpha_deg: np.ndarray) -> _Geometry:
     """The deep-groove geometry whose free contact angle is the design angle alpha_0 [°]:
     ``G_r = 2A (1 - cos alpha_0) = 4A sin^2(alpha_0/2)``, alpha_0 kept as given."""
-    big_a = (fi + fo - 1.0) * dw
-    alpha0 = np.deg2rad(alpha_deg)  # as given, not through the arcsine
-    return ring_geometry(dw, dm, fi, fo, 4.0 * big_a * np.sin(alpha0 / 2.0) ** 2, alpha0)
+    return ring_geometry(dw, dm, fi, fo, alpha_deg, angular=True)
 
 
 def _angular(contact_angle: Any, fa: np.ndarray, clearance: Any) -> np.ndarray | None:
