@@ -3359,12 +3359,13 @@ cpdef enum SetupStatus:
 
 cdef int problem_case(int z, const double *load, double cage, const double *length,
                       double k_ref, bint angular, bint imposed, const double *limits,
-                      double *c, double *s, unsigned char *mirror, unsigned char *held,
-                      double *f, double *out) noexcept nogil:
-    """One case of ``combined_problem``; returns its SetupStatus (every output set all the
+                      Py_ssize_t n, double *c, double *s, unsigned char *mirror,
+                      unsigned char *held, double *f, double *out) noexcept nogil:
+    """One case of ``combined_problem``: ``load`` and ``length`` its columns (``n`` apart),
+    ``out`` its column of the 8 rows; returns its SetupStatus (every output set all the
     same)."""
-    cdef double fr = load[0], fa = load[1], mm = load[2], mc = load[3]
-    cdef double big_a = length[0], g = length[1], radius = length[2]
+    cdef double fr = load[0], fa = load[n], mm = load[2 * n], mc = load[3 * n]
+    cdef double big_a = length[0], g = length[n], radius = length[2 * n]
     cdef double f_ref, scale, t_imp, a, p, hi, bb
     cdef bint no_tilt, across, axial, radial
     cdef int j, status = SET_UP
@@ -3380,7 +3381,7 @@ cdef int problem_case(int z, const double *load, double cage, const double *leng
         status = TOO_LIGHT
     elif angular and big_a / scale < limits[2]:
         status = TOO_HEAVY
-    t_imp = radius * (load[4] * (PI / 180.0))
+    t_imp = radius * (load[4 * n] * (PI / 180.0))
     mirror[0] = ball_directions(z, cage, limits[0], c, s)
     for j in range(z):
         c[j] = 0.0 if fabs(c[j]) < 1e-15 else c[j]
@@ -3397,16 +3398,17 @@ cdef int problem_case(int z, const double *load, double cage, const double *leng
     p = (-g if -g > 0.0 else 0.0) / scale
     hi = a + p
     bb = hi - a
-    out[0], out[1], out[2], out[3] = scale, a, p, (g if g > 0.0 else 0.0) / scale
-    out[4], out[5], out[6], out[7] = hi, (a - (hi - bb)) + (p - bb), t_imp / scale, f_ref
+    out[0], out[n], out[2 * n], out[3 * n] = scale, a, p, (g if g > 0.0 else 0.0) / scale
+    out[4 * n], out[5 * n] = hi, (a - (hi - bb)) + (p - bb)
+    out[6 * n], out[7 * n] = t_imp / scale, f_ref
     return status
 
 
 def combined_problem(int z, const double[:, ::1] loads, const double[::1] cage,
                      const double[:, ::1] lengths, const double[::1] k_ref, bint angular,
                      bint imposed, const double[::1] limits):
-    """The scaled problem of n cases of the combined solver from their loads (n, 5) = F_r,
-    F_a, M, M_c [N, N mm], the imposed tilt [°]; the cage angles (n,) [°]; the lengths (n, 3)
+    """The scaled problem of n cases of the combined solver from their loads (5, n) = F_r,
+    F_a, M, M_c [N, N mm], the imposed tilt [°]; the cage angles (n,) [°]; the lengths (3, n)
     = A, G_r/2, the tilt lever R_i [mm]; K_0 (n,) [N/mm^1.5]; ``angular`` (one-sided contact),
     ``imposed`` (the tilt held at the given one); ``limits`` = the symmetry snap [°], the
     largest and (angular contact) smallest A over (F/K_0)^(2/3).
@@ -3417,20 +3419,20 @@ def combined_problem(int z, const double[:, ::1] loads, const double[::1] cage,
     A/s, p, max(g, 0)/s, B = A + p in double-double, the imposed tilt R_i theta/s, F (8, n).
     Returns (status (n,) int8 (SetupStatus: the caller refuses), c, s, mirror, held, f, those
     8 rows)."""
-    cdef Py_ssize_t n = loads.shape[0], k
+    cdef Py_ssize_t n = loads.shape[1], k
     status_a, mirror_a = np.empty(n, dtype=np.int8), np.empty(n, dtype=bool)
     c_a, s_a, held_a = np.empty((n, z)), np.empty((n, z)), np.empty((n, 5), dtype=bool)
-    f_a, out_a = np.empty((n, 5)), np.empty((n, 8))
+    f_a, out_a = np.empty((n, 5)), np.empty((8, n))
     cdef signed char[::1] status = status_a
     cdef unsigned char[::1] mirror = mirror_a.view(np.uint8)
     cdef unsigned char[:, ::1] held = held_a.view(np.uint8)
     cdef double[:, ::1] c = c_a, s = s_a, f = f_a, out = out_a
     with nogil:
         for k in range(n):
-            status[k] = problem_case(z, &loads[k, 0], cage[k], &lengths[k, 0], k_ref[k],
-                                     angular, imposed, &limits[0], &c[k, 0], &s[k, 0],
-                                     &mirror[k], &held[k, 0], &f[k, 0], &out[k, 0])
-    return status_a, c_a, s_a, mirror_a, held_a, f_a, out_a.T
+            status[k] = problem_case(z, &loads[0, k], cage[k], &lengths[0, k], k_ref[k],
+                                     angular, imposed, &limits[0], n, &c[k, 0], &s[k, 0],
+                                     &mirror[k], &held[k, 0], &f[k, 0], &out[0, k])
+    return status_a, c_a, s_a, mirror_a, held_a, f_a, out_a
 
 
 def combined_result(const double[:, ::1] v, const double[:, ::1] case_in,

@@ -620,12 +620,11 @@ def _problem(
 
     angular, imposed = (v is not None for v in given)
     n = cage.shape[0]
-    lengths = np.empty((n, 3))
-    lengths[:, 0], lengths[:, 1], lengths[:, 2] = geo.A, geo.g, geo.R_i
+    lengths = np.array((geo.A, geo.g, geo.R_i), dtype=float)
     limits = np.array([SYMMETRY_SNAP_DEG, GEOMETRY_RATIO_MAX, ANGULAR_RATIO_MIN])
     k_ref = np.ascontiguousarray(k_ref, dtype=float)
     status, c, s, mirror, held, f, out = _core.combined_problem(
-        z, np.stack(loads, axis=1), cage, lengths, k_ref, angular, imposed, limits
+        z, np.array(loads, dtype=float), cage, lengths, k_ref, angular, imposed, limits
     )
     if status.any():
         _refuse_loads(loads, geo, k_ref, angular)
