@@ -1363,9 +1363,7 @@ def hertz_setup(geo: _Geometry, e: np.ndarray, nu: np.ndarray) -> tuple[np.ndarr
     from bearingload.contact.hertz import ball_stiffness
     from bearingload.models import _core
 
-    params = np.empty((geo.D_w.shape[0], 6))
-    for i, column in enumerate((geo.D_w, geo.d_m, geo.f_i, geo.f_o, e, nu)):
-        params[:, i] = column
+    params = np.array((geo.D_w, geo.d_m, geo.f_i, geo.f_o, e, nu), dtype=float).T.copy()
     key = params.tobytes() if params.shape[0] == 1 else None
     if key in _SETUP_CACHE:
         return tuple(a.copy() for a in _SETUP_CACHE[key])
@@ -1568,10 +1566,12 @@ def distribution(
 
     undetermined, neglected = (None, None) if flags is None else flags
     v, kappa, its, (b, lo, gen), tangent = answer
-    n, z = kappa.shape
-    case_in = np.empty((11, n))
-    case_in[:5] = p.t_imp, p.scale, geo.R_i, geo.alpha0, geo.A
-    case_in[5:] = p.one_sided, p.f_ref, given["moment"], given["cage_angle"], p.pre, p.k_ref
+    z = kappa.shape[1]
+    case_in = np.array(
+        (p.t_imp, p.scale, geo.R_i, geo.alpha0, geo.A, p.one_sided, p.f_ref)
+        + (given["moment"], given["cage_angle"], p.pre, p.k_ref),
+        dtype=float,
+    )
     rows, per_ball = _core.combined_result(
         np.ascontiguousarray(v),
         case_in,
