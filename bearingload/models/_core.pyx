@@ -3357,6 +3357,31 @@ cpdef enum SetupStatus:
     TOO_HEAVY = 5     # an angular-contact case's A over the approach below its ratio
 
 
+cdef void symmetry_locks(int z, bint mirror, double fr, double fa, double mm, double mc,
+                         double t_imp, bint imposed, unsigned char *held) noexcept nogil:
+    """Which of (x, y, a, t, t_c) a case holds (``held``, 5): the tilt where imposed, and the
+    components 0 by a symmetry of the case (combined.symmetry_locks states them)."""
+    cdef bint no_tilt = mm == 0 and mc == 0 and t_imp == 0
+    cdef bint across = mirror and mc == 0
+    cdef bint axial = fa == 0 and no_tilt
+    cdef bint radial = fr == 0 and no_tilt and z >= 2
+    held[0], held[1], held[2] = radial, across or radial, axial
+    held[3], held[4] = axial or radial or imposed, across or axial or radial
+
+
+def locks(int z, const unsigned char[::1] mirror, const double[:, ::1] loads, bint imposed):
+    """``symmetry_locks`` of n cases: ``mirror`` (n,) uint8, ``loads`` (5, n) = F_r, F_a, M,
+    M_c, the imposed tilt; returns held (n, 5) bool."""
+    cdef Py_ssize_t n = mirror.shape[0], k
+    held_a = np.empty((n, 5), dtype=bool)
+    cdef unsigned char[:, ::1] held = held_a.view(np.uint8)
+    with nogil:
+        for k in range(n):
+            symmetry_locks(z, mirror[k], loads[0, k], loads[1, k], loads[2, k], loads[3, k],
+                           loads[4, k], imposed, &held[k, 0])
+    return held_a
+
+
 cdef int problem_case(int z, const double *load, double cage, const double *length,
                       double k_ref, bint angular, bint imposed, const double *limits,
                       Py_ssize_t n, double *c, double *s, unsigned char *mirror,
@@ -3367,7 +3392,6 @@ cdef int problem_case(int z, const double *load, double cage, const double *leng
     cdef double fr = load[0], fa = load[n], mm = load[2 * n], mc = load[3 * n]
     cdef double big_a = length[0], g = length[n], radius = length[2 * n]
     cdef double f_ref, scale, t_imp, a, p, hi, bb
-    cdef bint no_tilt, across, axial, radial
     cdef int j, status = SET_UP
     f_ref = max(max(fr, fabs(fa)), hypot(mm, mc) / radius)
     scale = pow(f_ref / k_ref, 2.0 / 3.0)
@@ -3386,12 +3410,7 @@ cdef int problem_case(int z, const double *load, double cage, const double *leng
     for j in range(z):
         c[j] = 0.0 if fabs(c[j]) < 1e-15 else c[j]
         s[j] = 0.0 if fabs(s[j]) < 1e-15 else s[j]
-    no_tilt = mm == 0 and mc == 0 and t_imp == 0
-    across = mirror[0] and mc == 0
-    axial = fa == 0 and no_tilt
-    radial = fr == 0 and no_tilt and z >= 2
-    held[0], held[1], held[2] = radial, across or radial, axial
-    held[3], held[4] = axial or radial or imposed, across or axial or radial
+    symmetry_locks(z, mirror[0], fr, fa, mm, mc, t_imp, imposed, held)
     f[0], f[1], f[2] = fr / f_ref, 0.0 / f_ref, fa / f_ref
     f[3], f[4] = (mm / radius) / f_ref, (mc / radius) / f_ref
     a = big_a / scale

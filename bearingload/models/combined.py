@@ -1096,17 +1096,14 @@ def symmetry_locks(
     engine's snap) and no moment acts across it; ``a``, ``t``, ``t_c`` without an axial load,
     moment or tilt (the mirror image across the mid-plane); ``x``, ``y``, ``t``, ``t_c`` without
     a radial load, moment or tilt (the ring's z-fold symmetry, z >= 2). The potential is convex
-    and has the symmetry, so a minimum with these components 0 exists.
+    and has the symmetry, so a minimum with these components 0 exists. The rule is the compiled
+    core's (``symmetry_locks``, also of :func:`solve_combined`'s set-up).
     """
-    fr, fa, mm, mc = loads
-    n = fr.shape[0]
-    no_tilt = (mm == 0) & (mc == 0) & (t_imp == 0)
-    across, axial = mirror & (mc == 0), (fa == 0) & no_tilt
-    radial = (fr == 0) & no_tilt if z >= 2 else np.zeros(n, dtype=bool)
-    held = np.empty((n, 5), dtype=bool)
-    held[:, 0], held[:, 1], held[:, 2] = radial, across | radial, axial
-    held[:, 3], held[:, 4] = (axial | radial) | imposed, across | axial | radial
-    fixed = np.zeros((n, 5), dtype=bool)
+    from bearingload.models import _core
+
+    rows = np.array((*loads, t_imp), dtype=float)
+    held = _core.locks(z, np.ascontiguousarray(mirror, dtype=np.uint8), rows, imposed)
+    fixed = np.zeros(held.shape, dtype=bool)
     fixed[:, 3] = imposed
     return held, fixed
 
