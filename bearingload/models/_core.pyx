@@ -3526,3 +3526,37 @@ def groove(const double[:, ::1] given, bint angular, double low, double high):
             out[4, k] = (dw > 0 and dm > 0 and dw < dm and fi > low and fi < high and
                          fo > low and fo < high and g < big_a)
     return out_a
+
+
+def pair_lift_off(int z, const double[::1] a_hat, const double[::1] gap,
+                  const double[::1] delta_p, const double[::1] f_ref, const double[:, ::1] curve,
+                  const double[::1] node_x, const double[::1] node_w):
+    """A preloaded pair's preload offset and lift-off thrust, n cases (bearingload.models.pair):
+    from a bearing's scaled A/s and max(g, 0)/s (n,) and its preload approach ``delta_p`` (n,),
+    the axial approach from the zero-load position to every ball at it, ``u_p - u_0 = delta
+    (2A + delta)/(u_p + u_0)`` (without cancellation; u_0^2 = g (2A - g)), and the external
+    thrust at which the other bearing carries nothing, this one at twice that offset: z (1 +
+    kappa) delta^1.5 sin(alpha) F [N] (``f_ref`` F (n,) [N]; ``curve`` (n, NODES) the stiffness
+    curve's values, or (n, 0): a constant K). Returns (offset (n,), thrust (n,))."""
+    cdef Py_ssize_t n = a_hat.shape[0], k
+    offset_a, thrust_a = np.empty(n), np.empty(n)
+    cdef double[::1] offset = offset_a, thrust = thrust_a
+    cdef double big_a, u0, up, dp, cc, w, u, d, delta, ca, sa, kappa
+    cdef Case cs
+    cs.node_x, cs.node_w = &node_x[0], &node_w[0]
+    with nogil:
+        for k in range(n):
+            big_a, dp = a_hat[k], delta_p[k]
+            u0 = sqrt(gap[k] * (2.0 * big_a - gap[k]))
+            up = sqrt(u0 * u0 + dp * (2.0 * big_a + dp))
+            offset[k] = dp * (2.0 * big_a + dp) / (up + u0)
+            cc = big_a - gap[k]
+            w = 2.0 * offset[k]
+            u = u0 + w
+            d = hypot(cc, u)
+            delta = w * (2.0 * u0 + w) / (d + big_a)
+            ca, sa = cc / d, u / d
+            cs.curve = &curve[k, 0] if curve.shape[1] == NODES else NULL
+            kappa = curve_kappa(&cs, ca, -sa * sa / (1.0 + ca))
+            thrust[k] = z * (1.0 + kappa) * pow(delta, 1.5) * sa * f_ref[k]
+    return offset_a, thrust_a

@@ -1385,20 +1385,14 @@ class StiffnessCurve:
     kind (inside (0, 1)), so that ``kappa = (c - 1) D(c)`` with ``c - 1 = -sin^2/(1 + cos)`` keeps
     its digits at a contact angle of 1e-13 rad (heavy preload, tiny axial load: the forces are
     summed from the deviations, :mod:`bearingload.models._combined_ring`). The tests check it
-    against :func:`ball_stiffness_at`. One Hertz evaluation per node and distinct geometry.
+    against :func:`ball_stiffness_at`. One Hertz evaluation per node and distinct geometry. The
+    interpolant is evaluated in the compiled core (``curve_kappa``, the barycentric formula at
+    the nodes NODE_X with the weights NODE_W).
     """
 
     def __init__(self, values: np.ndarray) -> None:
         """``values``: D at the nodes over each case's K_0, (n, NODES) (:func:`hertz_setup`)."""
-        self.x = NODE_X
-        self.w = NODE_W
         self.values = values
-
-    def __call__(self, idx: np.ndarray, cos_alpha: np.ndarray, cos_m1: np.ndarray) -> np.ndarray:
-        """kappa of the cases ``idx`` (shape (len(idx), z)) from cos(alpha) and cos(alpha) - 1."""
-        t = 2.0 * np.clip(cos_alpha, 0.0, 1.0) - 1.0
-        terms = self.w / (t[..., None] - self.x)  # t is never a node: no node is 0 or 1
-        return cos_m1 * (terms * self.values[idx][:, None, :]).sum(-1) / terms.sum(-1)
 
 
 def _solve_with_stiffness(

@@ -583,8 +583,8 @@ def _result(kind: str, pp: _Pair, geo: Any, answer: tuple[Any, ...], c: dict,
     def case(a: Any) -> Any:
         return np.asarray(a).reshape(shape) if shape else np.asarray(a).item()
 
-    offset = _offset(p, delta_p)
-    lift = None if kind == "DT" else case(_lift_off(pp, curve, offset, c))
+    offset, thrust = _lift_off(pp, curve, delta_p)
+    lift = None if kind == "DT" else case(np.where(c["axial_load"] < 0, -thrust, thrust))
     return PairDistribution(
         arrangement=kind, bearings=(bearings[0], bearings[1]),
         load=case(c["radial_load"]), axial_load=case(c["axial_load"]), moment=case(c["moment"]),
@@ -598,31 +598,16 @@ def _result(kind: str, pp: _Pair, geo: Any, answer: tuple[Any, ...], c: dict,
     )  # fmt: skip
 
 
-def _offset(p: Problem, delta: np.ndarray) -> np.ndarray:
+def _lift_off(pp: _Pair, curve: Any, delta: np.ndarray) -> tuple[np.ndarray, np.ndarray]:
     """The axial approach of a bearing from its zero-load position to every ball at ``delta``
-    (scaled): ``u_p - u_0 = delta (2A + delta)/(u_p + u_0)``, without cancellation."""
-    big_a, gap = p.a_hat, p.gap
-    u0 = np.sqrt(gap * (2.0 * big_a - gap))
-    up = np.sqrt(u0 * u0 + delta * (2.0 * big_a + delta))
-    return delta * (2.0 * big_a + delta) / (up + u0)
+    (scaled), ``u_p - u_0 = delta (2A + delta)/(u_p + u_0)`` without cancellation, and the
+    external axial load alone at which one bearing of a preloaded DB/DF pair carries nothing
+    (the other then at twice that offset from its zero-load position) [N], its magnitude: the
+    compiled core's ``pair_lift_off``."""
+    from bearingload.models import _core
 
-
-def _lift_off(pp: _Pair, curve: Any, offset: np.ndarray, c: dict) -> np.ndarray:
-    """The external axial load alone at which one bearing of a preloaded DB/DF pair carries
-    nothing: the other then sits at twice the preload ``offset`` (:func:`_offset`) from its
-    zero-load position. [N]"""
     p = pp.prob
-    big_a, gap = p.a_hat, p.gap
-    u0 = np.sqrt(gap * (2.0 * big_a - gap))
-    cc = big_a - gap
-    w = 2.0 * offset
-    u = u0 + w
-    d = np.hypot(cc, u)
-    delta = w * (2.0 * u0 + w) / (d + big_a)
-    ca, sa = cc / d, u / d
-    kappa = 0.0
-    if curve is not None:
-        rows = np.arange(ca.size)
-        kappa = curve(rows, ca[:, None], (-sa * sa / (1.0 + ca))[:, None])[:, 0]
-    thrust = p.z * (1.0 + kappa) * delta**1.5 * sa * p.f_ref
-    return np.where(c["axial_load"] < 0, -thrust, thrust)
+    values = np.zeros((delta.shape[0], 0)) if curve is None else curve.values
+    cont = np.ascontiguousarray
+    rows = (cont(a, dtype=float) for a in (p.a_hat, p.gap, delta, p.f_ref, values))
+    return _core.pair_lift_off(p.z, *rows, _comb.NODE_X, _comb.NODE_W)
