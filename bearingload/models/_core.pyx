@@ -3393,7 +3393,7 @@ cdef int problem_case(int z, const double *load, double cage, const double *leng
     cdef double big_a = length[0], g = length[n], radius = length[2 * n]
     cdef double f_ref, scale, t_imp, a, p, hi, bb
     cdef int j, status = SET_UP
-    f_ref = max(max(fr, fabs(fa)), hypot(mm, mc) / radius)
+    f_ref = max(max(max(fr, fabs(fa)), hypot(mm, mc) / radius), load[5 * n])
     scale = pow(f_ref / k_ref, 2.0 / 3.0)
     if not isfinite(f_ref):
         status = LOAD_OVERFLOW
@@ -3426,13 +3426,14 @@ cdef int problem_case(int z, const double *load, double cage, const double *leng
 def combined_problem(int z, const double[:, ::1] loads, const double[::1] cage,
                      const double[:, ::1] lengths, const double[::1] k_ref, bint angular,
                      bint imposed, const double[::1] limits):
-    """The scaled problem of n cases of the combined solver from their loads (5, n) = F_r,
-    F_a, M, M_c [N, N mm], the imposed tilt [°]; the cage angles (n,) [°]; the lengths (3, n)
+    """The scaled problem of n cases of the combined solver from their loads (6, n) = F_r,
+    F_a, M, M_c [N, N mm], the imposed tilt [°] and a force F is at least (a pair's preload,
+    else 0) [N]; the cage angles (n,) [°]; the lengths (3, n)
     = A, G_r/2, the tilt lever R_i [mm]; K_0 (n,) [N/mm^1.5]; ``angular`` (one-sided contact),
     ``imposed`` (the tilt held at the given one); ``limits`` = the symmetry snap [°], the
     largest and (angular contact) smallest A over (F/K_0)^(2/3).
 
-    Per case: F = max(F_r, |F_a|, |(M, M_c)|/R_i), s = (F/K_0)^(2/3), the ball directions
+    Per case: F = max(F_r, |F_a|, |(M, M_c)|/R_i, that force), s = (F/K_0)^(2/3), the ball directions
     (``ball_directions``, below 1e-15 made 0) and whether the case is mirrored, the components
     held (combined.symmetry_locks states the symmetries), the applied forces over F, and s,
     A/s, p, max(g, 0)/s, B = A + p in double-double, the imposed tilt R_i theta/s, F (8, n).

@@ -623,8 +623,10 @@ def _problem(
     lengths = np.array((geo.A, geo.g, geo.R_i), dtype=float)
     limits = np.array([SYMMETRY_SNAP_DEG, GEOMETRY_RATIO_MAX, ANGULAR_RATIO_MIN])
     k_ref = np.ascontiguousarray(k_ref, dtype=float)
+    rows = np.zeros((6, n))
+    rows[:5] = loads
     status, c, s, mirror, held, f, out = _core.combined_problem(
-        z, np.array(loads, dtype=float), cage, lengths, k_ref, angular, imposed, limits
+        z, rows, cage, lengths, k_ref, angular, imposed, limits
     )
     if status.any():
         _refuse_loads(loads, geo, k_ref, angular)

@@ -442,6 +442,48 @@ def _solve(z: int, kind: str, c: dict, shape: tuple[int, ...]) -> PairDistributi
         curve = _comb.StiffnessCurve(values)
     fr, fa, mm, mc, fp = (c[k] for k in ("radial_load", "axial_load", "moment", "moment_cross",
                                          "preload"))  # fmt: skip
+    prob, f, mirror = _scaled(z, c, geo, k_ref)
+    held = held_components(kind, mirror, (fr, fa, mm, mc))
+    pp = _Pair(prob, signs(kind), levers(kind, c["width"], geo.R_i), fp / prob.f_ref, f, held)
+    vh, vl, res, its, st, delta_p = _solve_stages(pp, _start(pp, z, geo, pp.preload), curve)
+    given = {k: c[k] for k in _UNITS}
+    _accepted(res, its, given)
+    _check_edge(st, given)
+    return _result(kind, pp, geo, (vh, vl, res, its, st), c, shape, curve, mirror & (mc == 0),
+                   delta_p)  # fmt: skip
+
+
+def _scaled(z: int, c: dict, geo: Any, k_ref: np.ndarray) -> tuple[Problem, np.ndarray, Any]:
+    """The scaled problem of the bearings' balls, the applied forces over the largest load or
+    the preload (n, 5) and which cases are mirrored about the load line: the compiled core's
+    ``combined_problem`` (one loop over the cases); the loads it flags refused by
+    :func:`_refuse_scale`."""
+    from bearingload.models import _core
+    from bearingload.models._ring import SYMMETRY_SNAP_DEG
+
+    names = ("radial_load", "axial_load", "moment", "moment_cross", "preload")
+    n = c["preload"].shape[0]
+    rows = np.zeros((6, n))
+    rows[:4], rows[5] = [c[k] for k in names[:4]], c["preload"]
+    lengths = np.array((geo.A, geo.g, geo.R_i), dtype=float)
+    limits = np.array([SYMMETRY_SNAP_DEG, _comb.GEOMETRY_RATIO_MAX, 0.0])
+    k_ref = np.ascontiguousarray(k_ref, dtype=float)
+    cage = np.ascontiguousarray(c["cage_angle"], dtype=float)
+    status, cos_, sin_, mirror, _, f, out = _core.combined_problem(
+        z, rows, cage, lengths, k_ref, False, False, limits
+    )
+    if status.any():
+        _refuse_scale(geo, k_ref, *(c[k] for k in names))
+    scale, a_hat, pre, gap, b_hi, b_lo, t_imp, f_ref = out
+    none = np.zeros((n, 5), dtype=bool)
+    scaled = (scale, a_hat, pre, gap, b_hi, b_lo, np.zeros((n, 5)), t_imp, none, none)
+    return Problem(z, cos_, sin_, *scaled, f_ref, k_ref, np.ones(n, dtype=bool)), f, mirror
+
+
+def _refuse_scale(geo: Any, k_ref: np.ndarray, *loads: np.ndarray) -> None:
+    """InputError on the loads of a pair the core flags: none at all, or too small for the
+    groove geometry (the combined model's check, its advice replaced)."""
+    fr, fa, mm, mc, fp = loads
     f_ref = np.maximum(_comb.reference_force(fr, fa, mm, mc, geo.R_i), fp)
     if (f_ref <= 0).any():
         raise InputError("radial_load", "give a radial load, an axial load, a moment or a preload")
@@ -462,23 +504,6 @@ def _solve(z: int, kind: str, c: dict, shape: tuple[int, ...]) -> PairDistributi
             f"the preload is {float(np.min(f_ref)):.3g} N; it takes at least {f_min:.2g} N for "
             "this bearing)",
         ) from exc
-    cos_, sin_, mirror = _comb.ball_directions(z, c["cage_angle"])
-    n = fr.size
-    f = np.zeros((n, 5))
-    f[:, 0], f[:, 2], f[:, 3], f[:, 4] = fr, fa, mm / geo.R_i, mc / geo.R_i
-    f /= f_ref[:, None]
-    prob = Problem.make(z, (cos_, sin_), (geo.A, geo.g), f=np.zeros((n, 5)),
-                        t_imp=np.zeros(n), locked=np.zeros((n, 5), dtype=bool),
-                        imposed=np.zeros((n, 5), dtype=bool), f_ref=f_ref, k_ref=k_ref,
-                        one_sided=np.ones(n, dtype=bool))  # fmt: skip
-    held = held_components(kind, mirror, (fr, fa, mm, mc))
-    pp = _Pair(prob, signs(kind), levers(kind, c["width"], geo.R_i), fp / f_ref, f, held)
-    vh, vl, res, its, st, delta_p = _solve_stages(pp, _start(pp, z, geo, pp.preload), curve)
-    given = {k: c[k] for k in _UNITS}
-    _accepted(res, its, given)
-    _check_edge(st, given)
-    return _result(kind, pp, geo, (vh, vl, res, its, st), c, shape, curve, mirror & (mc == 0),
-                   delta_p)  # fmt: skip
 
 
 def _hertz(geo: Any, e: np.ndarray, nu: np.ndarray) -> tuple[np.ndarray, np.ndarray]:
