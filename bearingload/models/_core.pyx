@@ -3503,8 +3503,9 @@ def groove(const double[:, ::1] given, bint angular, double low, double high):
     """The ring geometry of n deep-groove (or, ``angular``, angular-contact) cases from
     ``given`` (5, n) = D_w, d_m, f_i, f_o [mm, -], and G_r [mm] or (``angular``) the design
     contact angle [°]: returns (5, n) = A = (f_i + f_o - 1) D_w, g = G_r/2 (angular contact:
-    G_r = 4 A sin^2(alpha_0/2)), the free contact angle alpha_0 [rad] (deep groove: 2
-    asin(sqrt(g/(2A))), 0 without clearance; angular contact: as given), R_i = d_m/2 + (f_i -
+    G_r = 4 A sin^2(alpha_0/2)), the free contact angle alpha_0 [rad] (deep groove: cos(alpha_0)
+    = 1 - g/A as 2 asin(sqrt(g/(2A))), which keeps a small g's digits, 0 without clearance;
+    angular contact: as given, not through the arcsine), R_i = d_m/2 + (f_i -
     1/2) D_w cos(alpha_0), and 1 where the case fits (D_w, d_m > 0, D_w < d_m, the
     conformities inside (low, high), g < A), else 0 (combined.ring_geometry refuses it)."""
     cdef Py_ssize_t n = given.shape[1], k
