@@ -1,7 +1,8 @@
-"""Internals of the combined-load solver (:mod:`bearingload.models.combined`) in numpy: the scaled
-problem, the ball geometry to the last digit and the ring forces in deviation form, for the
-set-up and the results of a solve and for the pair's solver. The Newton minimiser that solves
-it is the compiled core's (:mod:`bearingload.models._core`, the same formulas per case in C).
+"""Internals of the combined-load solver (:mod:`bearingload.models.combined`): the scaled problem
+and the balls at a ring position as the compiled core (:mod:`bearingload.models._core`, one C
+call per case) computes them, for the set-up and the results of a solve and for the pair's
+solver; the core's kernels evaluate the ball geometry to the last digit and the ring forces in
+deviation form, with the formulas this docstring states.
 
 Scaled units: lengths over ``s = (F/K)^(2/3)``, forces over ``F`` (the largest applied load).
 Unknowns ``v = (x, y, a, t, t_c)``, ``t = R_i theta / s``. Ball ``j`` at ``phi_j``
@@ -12,10 +13,10 @@ Why each piece keeps its digits:
 
 * Position. The state is a pair ``(hi, lo)`` per unknown (a double-double): with a clearance of
   up to 2A, ``x`` is up to ``2e7`` elastic approaches, and one double resolves it only to
-  ``eps |x|``, a force error of about 1e-9 of the load. :func:`reference` evaluates every ball
+  ``eps |x|``, a force error of about 1e-9 of the load. The core's ``reference`` evaluates every ball
   at such a point in double-double arithmetic (Dekker's exact products), so the approach
   ``d - B`` (``B = A + p``, ``p`` the preload approach) comes out to about ``eps`` of itself
-  however large the lengths it is the difference of; :func:`offset` moves from there by a small
+  however large the lengths it is the difference of; its ``offset`` moves from there by a small
   step (a line-search trial) with the difference formulas, which lose nothing either.
 * Preload. Every ball carries ``q_0 = p^1.5`` at the centred ring, and ``sum_j q_0 (c_j, s_j)``
   is exactly 0 around a ring of ``z >= 2`` equally spaced balls. The forces are summed as
@@ -38,7 +39,6 @@ Every operation is row-wise (one case per row), so no case depends on the others
 from __future__ import annotations
 
 import dataclasses
-import functools
 from dataclasses import dataclass
 from typing import Any
 
@@ -59,10 +59,6 @@ from bearingload.models._core import (  # noqa: F401
 OK = int(Status.OK)
 #: Largest relative residual accepted at the end (above it the caller raises). [-]
 ACCEPT = 1e-8
-#: Dekker's splitting constant 2^27 + 1 (exact products of doubles). [-]
-SPLITTER = 134217729.0
-#: The generalised-force columns (x, y, a, t, t_c).
-X, Y, AX, T, TC = range(5)
 
 
 # ------------------------------------------------------------------------ double-double pieces
@@ -79,25 +75,6 @@ def fast_two_sum(s: Any, e: Any) -> tuple[Any, Any]:
     """Renormalise s + e (|s| >= |e|) to a double-double."""
     hi = s + e
     return hi, e - (hi - s)
-
-
-def _split(a: Any) -> tuple[Any, Any]:
-    t = SPLITTER * a
-    hi = t - (t - a)
-    return hi, a - hi
-
-
-def _two_prod(a: Any, b: Any, bs: tuple[Any, Any] | None = None) -> tuple[Any, Any]:
-    """a b as p + e, exactly (Dekker); ``bs``: the split of ``b`` if known."""
-    p = a * b
-    ah, al = _split(a)
-    bh, bl = _split(b) if bs is None else bs
-    return p, ((ah * bh - p) + ah * bl + al * bh) + al * bl
-
-
-def _dd_mul(ah: Any, al: Any, bh: Any, bl: Any) -> tuple[Any, Any]:
-    p, e = _two_prod(ah, bh)
-    return fast_two_sum(p, e + (ah * bl + al * bh))
 
 
 # ------------------------------------------------------------------------------- the problem
@@ -143,12 +120,6 @@ class Problem:
         items = ((f.name, getattr(self, f.name)) for f in dataclasses.fields(self))
         return Problem(**{k: v[idx] if isinstance(v, np.ndarray) else v for k, v in items})
 
-    @functools.cached_property
-    def arms(self) -> np.ndarray:
-        """The factors of the ball forces in the generalised ones, ``(c, s, 1, c, s)`` per ball
-        (n, 5, z)."""
-        return np.stack([self.c, self.s, np.ones_like(self.c), self.c, self.s], axis=1)
-
     @property
     def deviation(self) -> np.ndarray:
         """Cases whose forces are summed from the preloaded reference, (n,) bool."""
@@ -169,52 +140,6 @@ class Balls:
 _BALL_FIELDS = ("rho", "u", "d", "eps", "up")
 
 
-def reference(p: Problem, vh: np.ndarray, vl: np.ndarray) -> Balls:
-    """Every ball at the position ``vh + vl`` (n, 5), in double-double arithmetic.
-
-    ``d^2 - B^2 = m (m + 2B) + u^2`` with ``m = rho - B = x c + y s - max(G_r/2, 0)``: with the
-    products exact and the sums carried, the approach keeps its digits when ``x`` and ``a`` are
-    millions of times the approach (a clearance near 2A), and the result is a function of the
-    position alone.
-    """
-    c_hi, c_lo = _split(p.c)
-    s_hi, s_lo = _split(p.s)
-    col = [(vh[:, i, None], vl[:, i, None]) for i in range(5)]
-    r1 = _two_prod(col[X][0], p.c, (c_hi, c_lo))
-    r2 = _two_prod(col[Y][0], p.s, (s_hi, s_lo))
-    r, e = two_sum(r1[0], r2[0])
-    m, e2 = two_sum(r, -p.gap[:, None])
-    m_hi, m_lo = fast_two_sum(m, e2 + e + r1[1] + r2[1] + col[X][1] * p.c + col[Y][1] * p.s)
-    n_hi, e = two_sum(m_hi, 2.0 * p.b_hi[:, None])
-    n_hi, n_lo = fast_two_sum(n_hi, e + m_lo + 2.0 * p.b_lo[:, None])
-    t_hi, t_lo = two_sum(col[T][0], p.t_imp[:, None])
-    u1 = _two_prod(t_hi, p.c, (c_hi, c_lo))
-    u2 = _two_prod(col[TC][0], p.s, (s_hi, s_lo))
-    u, e = two_sum(col[AX][0], u1[0])
-    u, e2 = two_sum(u, u2[0])
-    tail = e + e2 + u1[1] + u2[1] + col[AX][1] + (t_lo + col[T][1]) * p.c + col[TC][1] * p.s
-    u_hi, u_lo = fast_two_sum(u, tail)
-    ud = u_hi + u_lo
-    if p.one_sided.any():  # angular contact: the ball sees max(u, 0) (module notes)
-        cut = p.one_sided[:, None] & (u_hi < 0)
-        u_hi, u_lo = np.where(cut, 0.0, u_hi), np.where(cut, 0.0, u_lo)
-    mn = _dd_mul(m_hi, m_lo, n_hi, n_lo)
-    uu = _dd_mul(u_hi, u_lo, u_hi, u_lo)
-    d2, e = two_sum(mn[0], uu[0])
-    d2 = d2 + (e + mn[1] + uu[1])
-    rho, e = two_sum(p.b_hi[:, None], m_hi)
-    rho = rho + (e + p.b_lo[:, None] + m_lo)
-    up = u_hi + u_lo
-    d = np.hypot(np.maximum(rho, 0.0), up)
-    b = p.b_hi[:, None]
-    # at the groove edge (rho <= 0) d = |u|: |u| - B from the double-double u, not from ud
-    sign = np.where(u_hi < 0, -1.0, 1.0)
-    edge, e = two_sum(sign * u_hi, -b)
-    edge = edge + (e + sign * u_lo - p.b_lo[:, None])
-    eps = np.where(rho > 0, d2 / (d + b), edge)
-    return Balls(rho, ud, d, eps, up)
-
-
 # ----------------------------------------------------------------------------------- forces
 
 
@@ -231,52 +156,6 @@ class Loads:
     tau: np.ndarray  # (delta - p)/p on the deviation cases, else 0
     sig: np.ndarray  # sqrt(1 + tau) - 1
     q0: np.ndarray  # p^1.5 on the deviation cases, else 0
-
-
-def loads(p: Problem, b: Balls, kappa: np.ndarray) -> Loads:
-    """Ball loads (scaled, frozen stiffness ``1 + kappa``) and their directions."""
-    rp = np.maximum(b.rho, 0.0)
-    pos_d = b.d > 0
-    safe = np.where(pos_d, b.d, 1.0)
-    ca = np.where(pos_d, rp / safe, 1.0)
-    sa = np.where(pos_d, b.up / safe, 0.0)
-    cam1 = np.where(b.rho > 0, -sa * sa / (1.0 + ca), ca - 1.0)
-    pre = p.pre[:, None]
-    delta = pre + b.eps
-    touch = delta > 0
-    pos = np.where(touch, delta, 0.0)
-    root = np.sqrt(pos)
-    k = 1.0 + kappa
-    q = k * pos * root
-    dev = p.deviation
-    q0 = np.where(dev, p.pre * np.sqrt(p.pre), 0.0)
-    tau = np.where(dev[:, None], b.eps / np.where(pre > 0, pre, 1.0), 0.0)
-    sig = tau / (1.0 + np.sqrt(np.maximum(1.0 + tau, 0.0)))
-    change = q0[:, None] * np.where(touch, k * (tau + sig + tau * sig) + kappa, -1.0)
-    return Loads(ca, sa, cam1, q, np.where(dev[:, None], change, q), root, tau, sig, q0)
-
-
-def forces(p: Problem, lo: Loads) -> tuple[np.ndarray, np.ndarray]:
-    """The generalised ball forces on the ring, ``sum_j (q_j - q_0) g_j + q_0 sum_j g'_j`` (see
-    the module notes), and the sum of the magnitudes of the terms of each (its rounding level
-    over eps), (n, 5) each."""
-    q0 = lo.q0[:, None]
-    radial = lo.dq * lo.ca + q0 * lo.cam1
-    axial = (lo.dq + q0) * lo.sa
-    gen = sum_arms(radial, axial, p.arms)
-    w_r = np.abs(lo.dq * lo.ca) + q0 * np.abs(lo.cam1)
-    w_a = (np.abs(lo.dq) + q0) * np.abs(lo.sa)
-    return gen, sum_arms(w_r, w_a, np.abs(p.arms))
-
-
-def sum_arms(radial: np.ndarray, axial: np.ndarray, arms: np.ndarray) -> np.ndarray:
-    """``sum_j (radial_j c_j, radial_j s_j, axial_j, axial_j c_j, axial_j s_j)`` (n, 5), the
-    products formed in one array (the same sums, term by term, as five apart)."""
-    terms = np.empty(arms.shape)
-    terms[:, :2] = radial[:, None]
-    terms[:, 2:] = axial[:, None]
-    terms *= arms
-    return np.add.reduce(terms, axis=2)
 
 
 def residual_of(f: np.ndarray, gen: np.ndarray, size: np.ndarray, held: np.ndarray) -> np.ndarray:
@@ -308,11 +187,19 @@ class Point:
     res: np.ndarray
 
     @staticmethod
-    def at(q: Problem, kappa: np.ndarray, b: Balls) -> Point:
-        lo = loads(q, b, kappa)
-        gen, size = forces(q, lo)
-        res = residual_of(q.f, gen, size, q.locked)
-        return Point(b, lo, gen, size, res)
+    def at(q: Problem, kappa: np.ndarray, vh: np.ndarray, vl: np.ndarray) -> Point:
+        """The point of the cases of ``q`` at ``vh + vl`` (n, 5), the stiffness deviations
+        ``kappa`` (n, z): the compiled core's ``points`` (its ``reference``, ``loads`` and
+        ``forces``, the same kernels as the solve's)."""
+        scalars = np.stack([q.a_hat, q.pre, q.gap, q.b_hi, q.b_lo, q.t_imp], axis=1)
+        balls, gen, size, res = _core.points(
+            *(np.ascontiguousarray(v, dtype=float) for v in (q.c, q.s, scalars, q.f)),
+            np.ascontiguousarray(q.locked, dtype=np.uint8),
+            np.ascontiguousarray(q.one_sided, dtype=np.uint8),
+            *(np.ascontiguousarray(v, dtype=float) for v in (vh, vl, kappa)),
+        )
+        q0 = np.where(q.deviation, q.pre * np.sqrt(q.pre), 0.0)
+        return Point(Balls(*balls[:5]), Loads(*balls[5:], q0), gen, size, res)  # type: ignore[call-arg]
 
     def put(self, rows: np.ndarray, other: Point) -> None:
         """Overwrite the rows ``rows`` with ``other`` (in place)."""

@@ -25,7 +25,7 @@ Double-double arithmetic needs every product rounded on its own: the build compi
 with ``-ffp-contract=off`` (setup.py); the exact products use ``fma``.
 """
 
-from libc.math cimport (atan, atan2, cbrt, copysign, cos, exp, expm1, fabs, fma, fmod, hypot,
+from libc.math cimport (asin, atan, atan2, cbrt, copysign, cos, exp, expm1, fabs, fma, fmod, hypot,
                         isfinite, isnan, log, log1p, pow, rint, sin, sqrt, INFINITY, NAN)
 from libc.stdint cimport int64_t
 from libc.stdlib cimport free, malloc
@@ -359,7 +359,7 @@ def hertz_curves(const double[:, ::1] geometry, const double[::1] node_x):
 
 
 cdef void reference(const Case *cs, const double *vh, const double *vl, Balls b) noexcept nogil:
-    """Every ball at the position vh + vl in double-double arithmetic (_combined_ring.reference:
+    """Every ball at the position vh + vl in double-double arithmetic (_combined_ring's notes:
     d^2 - B^2 = m (m + 2B) + u^2, m = rho - B)."""
     cdef int j
     cdef double c, s, p1, e1, p2, e2, r, e, m, e3, m_hi, m_lo, n_hi, n_lo
@@ -406,7 +406,7 @@ cdef void reference(const Case *cs, const double *vh, const double *vl, Balls b)
 cdef void offset(const Case *cs, Balls ref, const double *w, Balls b,
                  double *dd, double *ddr) noexcept nogil:
     """The balls after a small move w from ref, with d - d_ref and (d - d_ref) - (rho - rho_ref)
-    from the move itself (_combined_ring.offset)."""
+    from the move itself (_combined_ring's notes)."""
     cdef int j
     cdef double dr, du, rho, u, rp, rp_ref, up, uu, d, den, w_new, w_ref, change
     cdef bint both
@@ -444,7 +444,7 @@ cdef void offset(const Case *cs, Balls ref, const double *w, Balls b,
 
 
 cdef void loads(const Case *cs, Balls b, const double *kappa, Loads lo) noexcept nogil:
-    """Ball loads (scaled, stiffness 1 + kappa) and directions (_combined_ring.loads)."""
+    """Ball loads (scaled, stiffness 1 + kappa) and directions (_combined_ring's notes)."""
     cdef int j
     cdef double rp, ca, sa, delta, pos, root, k, tau, sig
     for j in range(cs.z):
@@ -517,7 +517,7 @@ cdef inline void sums_close(double *gen, const double *err) noexcept nogil:
 
 cdef void forces(const Case *cs, Loads lo, double *gen, double *size) noexcept nogil:
     """The generalised ball forces sum_j (q_j - q_0) g_j + q_0 sum_j g'_j, compensated, and the
-    sums of the magnitudes of their terms (_combined_ring.forces)."""
+    sums of the magnitudes of their terms (_combined_ring's notes)."""
     cdef int j
     cdef double radial, axial
     cdef double err[5]
@@ -3425,3 +3425,278 @@ def solve_speed(const double[:, ::1] consts, const double[:, ::1] ki, const doub
                 at_rest(&sh, &st[1], &out[k, 40])
             free(block)
     return v_a, bearings, out_a
+
+
+# ------------------------------------------------- the combined solver's set-up and results
+#
+# The Python side of bearingload.models.combined checks the inputs (bearingload.validate) and
+# refuses what does not fit; the arithmetic of a call, before and after ``solve``, is here: one
+# C loop over the cases for the whole batch, so a case's bits are the same alone or in a batch.
+
+cdef void case_at(Case *cs, int z, const double *c, const double *s, const double *scalars,
+                  const double *f, const unsigned char *locked, int one_sided) noexcept nogil:
+    """``cs`` the case of the ball directions ``c``, ``s`` (z), ``scalars`` = (a_hat, pre, gap,
+    b_hi, b_lo, t_imp), the forces ``f`` and held components ``locked`` (5), constant K."""
+    cdef int i
+    cs.lim = LIMITS
+    cs.z, cs.c, cs.s, cs.one_sided = z, c, s, one_sided
+    cs.a_hat, cs.pre, cs.gap = scalars[0], scalars[1], scalars[2]
+    cs.b_hi, cs.b_lo, cs.t_imp = scalars[3], scalars[4], scalars[5]
+    for i in range(5):
+        cs.f[i] = f[i]
+        cs.locked[i] = locked[i]
+    cs.deviation = cs.pre > 0 and z >= 2
+    cs.q0 = cs.pre * sqrt(cs.pre) if cs.deviation else 0.0
+    cs.curve = NULL
+
+
+def points(const double[:, ::1] c, const double[:, ::1] s, const double[:, ::1] scalars,
+           const double[:, ::1] f, const unsigned char[:, ::1] locked,
+           const unsigned char[::1] one_sided, const double[:, ::1] vh, const double[:, ::1] vl,
+           const double[:, ::1] kappa):
+    """Every ball of n cases at the positions ``vh + vl`` (n, 5) in double-double, their loads
+    with the stiffness deviations ``kappa`` (n, z), the forces and the residual (``fresh``):
+    ``scalars`` (n, 6) = a_hat, pre, gap, b_hi, b_lo, t_imp; returns the (13, n, z) ball arrays
+    (as ``solve``'s point), the forces and their terms' sizes (n, 5) each, the residual (n,)."""
+    cdef Py_ssize_t n = c.shape[0], k
+    cdef int z = <int> c.shape[1], i, j
+    balls_a, gen_a, size_a, res_a = np.empty((BALL_ARRAYS, n, z)), np.empty((n, 5)), \
+        np.empty((n, 5)), np.empty(n)
+    cdef double[:, :, ::1] balls = balls_a
+    cdef double[:, ::1] gen = gen_a, size = size_a
+    cdef double[::1] res = res_a
+    cdef Case cs
+    cdef Point pt
+    cdef double *block = <double *> malloc(BALL_ARRAYS * z * sizeof(double))
+    if block == NULL:
+        raise MemoryError()
+    point_on(block, z, &pt)
+    with nogil:
+        for k in range(n):
+            case_at(&cs, z, &c[k, 0], &s[k, 0], &scalars[k, 0], &f[k, 0], &locked[k, 0],
+                    one_sided[k])
+            fresh(&cs, &vh[k, 0], &vl[k, 0], &kappa[k, 0], &pt)
+            for i in range(BALL_ARRAYS):
+                for j in range(z):
+                    balls[i, k, j] = block[i * z + j]
+            for i in range(5):
+                gen[k, i], size[k, i] = pt.gen[i], pt.size[i]
+            res[k] = pt.res
+    free(block)
+    return balls_a, gen_a, size_a, res_a
+
+
+cpdef enum SetupStatus:
+    SET_UP = 0        # the case's scaled problem is set up
+    LOAD_OVERFLOW = 1 # a moment over its lever beyond the largest double
+    NO_LOAD = 2       # no load at all
+    SCALE_HUGE = 3    # the one-ball approach (F/K)^(2/3) beyond 1e100 mm
+    TOO_LIGHT = 4     # A over the approach beyond the combined solver's ratio
+    TOO_HEAVY = 5     # an angular-contact case's A over the approach below its ratio
+
+
+cdef void symmetry_locks(int z, bint mirror, double fr, double fa, double mm, double mc,
+                         double t_imp, bint imposed, unsigned char *held) noexcept nogil:
+    """Which of (x, y, a, t, t_c) a case holds (``held``, 5): the tilt where imposed, and the
+    components 0 by a symmetry of the case (combined.symmetry_locks states them)."""
+    cdef bint no_tilt = mm == 0 and mc == 0 and t_imp == 0
+    cdef bint across = mirror and mc == 0
+    cdef bint axial = fa == 0 and no_tilt
+    cdef bint radial = fr == 0 and no_tilt and z >= 2
+    held[0], held[1], held[2] = radial, across or radial, axial
+    held[3], held[4] = axial or radial or imposed, across or axial or radial
+
+
+def locks(int z, const unsigned char[::1] mirror, const double[:, ::1] loads, bint imposed):
+    """``symmetry_locks`` of n cases: ``mirror`` (n,) uint8, ``loads`` (5, n) = F_r, F_a, M,
+    M_c, the imposed tilt; returns held (n, 5) bool."""
+    cdef Py_ssize_t n = mirror.shape[0], k
+    held_a = np.empty((n, 5), dtype=bool)
+    cdef unsigned char[:, ::1] held = held_a.view(np.uint8)
+    with nogil:
+        for k in range(n):
+            symmetry_locks(z, mirror[k], loads[0, k], loads[1, k], loads[2, k], loads[3, k],
+                           loads[4, k], imposed, &held[k, 0])
+    return held_a
+
+
+cdef int problem_case(int z, const double *load, double cage, const double *length,
+                      double k_ref, bint angular, bint imposed, const double *limits,
+                      Py_ssize_t n, double *c, double *s, unsigned char *mirror,
+                      unsigned char *held, double *f, double *out) noexcept nogil:
+    """One case of ``combined_problem``: ``load`` and ``length`` its columns (``n`` apart),
+    ``out`` its column of the 8 rows; returns its SetupStatus (every output set all the
+    same)."""
+    cdef double fr = load[0], fa = load[n], mm = load[2 * n], mc = load[3 * n]
+    cdef double big_a = length[0], g = length[n], radius = length[2 * n]
+    cdef double f_ref, scale, t_imp, a, p, hi, bb
+    cdef int j, status = SET_UP
+    f_ref = max(max(max(fr, fabs(fa)), hypot(mm, mc) / radius), load[5 * n])
+    scale = pow(f_ref / k_ref, 2.0 / 3.0)
+    if not isfinite(f_ref):
+        status = LOAD_OVERFLOW
+    elif not f_ref > 0:
+        status = NO_LOAD
+    elif not scale <= 1e100:
+        status = SCALE_HUGE
+    elif big_a / scale > limits[1]:
+        status = TOO_LIGHT
+    elif angular and big_a / scale < limits[2]:
+        status = TOO_HEAVY
+    t_imp = radius * (load[4 * n] * (PI / 180.0))
+    mirror[0] = ball_directions(z, cage, limits[0], c, s)
+    for j in range(z):
+        c[j] = 0.0 if fabs(c[j]) < 1e-15 else c[j]
+        s[j] = 0.0 if fabs(s[j]) < 1e-15 else s[j]
+    symmetry_locks(z, mirror[0], fr, fa, mm, mc, t_imp, imposed, held)
+    f[0], f[1], f[2] = fr / f_ref, 0.0 / f_ref, fa / f_ref
+    f[3], f[4] = (mm / radius) / f_ref, (mc / radius) / f_ref
+    a = big_a / scale
+    p = (-g if -g > 0.0 else 0.0) / scale
+    hi = a + p
+    bb = hi - a
+    out[0], out[n], out[2 * n], out[3 * n] = scale, a, p, (g if g > 0.0 else 0.0) / scale
+    out[4 * n], out[5 * n] = hi, (a - (hi - bb)) + (p - bb)
+    out[6 * n], out[7 * n] = t_imp / scale, f_ref
+    return status
+
+
+def combined_problem(int z, const double[:, ::1] loads, const double[::1] cage,
+                     const double[:, ::1] lengths, const double[::1] k_ref, bint angular,
+                     bint imposed, const double[::1] limits):
+    """The scaled problem of n cases of the combined solver from their loads (6, n) = F_r,
+    F_a, M, M_c [N, N mm], the imposed tilt [°] and a force F is at least (a pair's preload,
+    else 0) [N]; the cage angles (n,) [°]; the lengths (3, n)
+    = A, G_r/2, the tilt lever R_i [mm]; K_0 (n,) [N/mm^1.5]; ``angular`` (one-sided contact),
+    ``imposed`` (the tilt held at the given one); ``limits`` = the symmetry snap [°], the
+    largest and (angular contact) smallest A over (F/K_0)^(2/3).
+
+    Per case: F = max(F_r, |F_a|, |(M, M_c)|/R_i, that force), s = (F/K_0)^(2/3), the ball directions
+    (``ball_directions``, below 1e-15 made 0) and whether the case is mirrored, the components
+    held (combined.symmetry_locks states the symmetries), the applied forces over F, and s,
+    A/s, p, max(g, 0)/s, B = A + p in double-double, the imposed tilt R_i theta/s, F (8, n).
+    Returns (status (n,) int8 (SetupStatus: the caller refuses), c, s, mirror, held, f, those
+    8 rows)."""
+    cdef Py_ssize_t n = loads.shape[1], k
+    status_a, mirror_a = np.empty(n, dtype=np.int8), np.empty(n, dtype=bool)
+    c_a, s_a, held_a = np.empty((n, z)), np.empty((n, z)), np.empty((n, 5), dtype=bool)
+    f_a, out_a = np.empty((n, 5)), np.empty((8, n))
+    cdef signed char[::1] status = status_a
+    cdef unsigned char[::1] mirror = mirror_a.view(np.uint8)
+    cdef unsigned char[:, ::1] held = held_a.view(np.uint8)
+    cdef double[:, ::1] c = c_a, s = s_a, f = f_a, out = out_a
+    with nogil:
+        for k in range(n):
+            status[k] = problem_case(z, &loads[0, k], cage[k], &lengths[0, k], k_ref[k],
+                                     angular, imposed, &limits[0], n, &c[k, 0], &s[k, 0],
+                                     &mirror[k], &held[k, 0], &f[k, 0], &out[0, k])
+    return status_a, c_a, s_a, mirror_a, held_a, f_a, out_a
+
+
+def combined_result(const double[:, ::1] v, const double[:, ::1] case_in,
+                    const double[:, ::1] gen, const double[:, ::1] sa,
+                    const double[:, ::1] ca, const double[:, ::1] eps, const double[:, ::1] q,
+                    const double[:, ::1] kappa, bint imposed):
+    """The answers of n cases of the combined solver in physical units: the scaled position
+    ``v`` (n, 5) and ``case_in`` (11, n) = the imposed tilt t_imp, the scale s, the tilt lever
+    R_i, the free contact angle [rad], A, one-sided (1/0), F, the moment given [N mm], the cage
+    angle [°], the preload approach p, K_0; the scaled forces ``gen`` (n, 5); the balls' sin and
+    cos of the contact angle, approach less p, scaled load, stiffness deviation (n, z) each;
+    ``imposed``: the tilt imposed, the moment is the tilt's reaction R_i F gen_t.
+
+    Returns the case rows (8, n) = x, y, axial (from the centred rings, or for one-sided
+    contact from the zero-load position), tilt, tilt_cross [°], free contact angle [°], axial
+    play (0 one-sided), moment; and the ball rows (5, n, z) = phi_j [°], contact angle [°],
+    approach [mm], stiffness [N/mm^1.5], load [N]."""
+    cdef Py_ssize_t n = v.shape[0], k
+    cdef int z = <int> sa.shape[1], j
+    cases_a, balls_a = np.empty((8, n)), np.empty((5, n, z))
+    cdef double[:, ::1] out = cases_a
+    cdef double[:, :, ::1] ball = balls_a
+    cdef double w[5]
+    cdef double sc, lever, sin0, deg = 180.0 / PI
+    with nogil:
+        for k in range(n):
+            sc, lever = case_in[1, k], case_in[2, k]
+            for j in range(5):
+                w[j] = v[k, j] * sc
+            w[3] = (v[k, 3] + case_in[0, k]) * sc
+            sin0 = sin(case_in[3, k])
+            out[0, k], out[1, k] = w[0], w[1]
+            out[2, k] = w[2] - (case_in[4, k] * sin0 if case_in[5, k] else 0.0)
+            out[3, k], out[4, k] = (w[3] / lever) * deg, (w[4] / lever) * deg
+            out[5, k] = case_in[3, k] * deg
+            out[6, k] = 0.0 if case_in[5, k] else 2.0 * case_in[4, k] * sin0
+            out[7, k] = lever * case_in[6, k] * gen[k, 3] if imposed else case_in[7, k]
+            for j in range(z):
+                ball[0, k, j] = floor_mod(case_in[8, k] + 360.0 * j / z, 360.0)
+                ball[1, k, j] = atan2(sa[k, j], ca[k, j]) * deg
+                ball[2, k, j] = (case_in[9, k] + eps[k, j]) * sc
+                ball[3, k, j] = (1.0 + kappa[k, j]) * case_in[10, k]
+                ball[4, k, j] = case_in[6, k] * q[k, j]
+    return cases_a, balls_a
+
+
+def groove(const double[:, ::1] given, bint angular, double low, double high):
+    """The ring geometry of n deep-groove (or, ``angular``, angular-contact) cases from
+    ``given`` (5, n) = D_w, d_m, f_i, f_o [mm, -], and G_r [mm] or (``angular``) the design
+    contact angle [°]: returns (5, n) = A = (f_i + f_o - 1) D_w, g = G_r/2 (angular contact:
+    G_r = 4 A sin^2(alpha_0/2)), the free contact angle alpha_0 [rad] (deep groove: cos(alpha_0)
+    = 1 - g/A as 2 asin(sqrt(g/(2A))), which keeps a small g's digits, 0 without clearance;
+    angular contact: as given, not through the arcsine), R_i = d_m/2 + (f_i -
+    1/2) D_w cos(alpha_0), and 1 where the case fits (D_w, d_m > 0, D_w < d_m, the
+    conformities inside (low, high), g < A), else 0 (combined.ring_geometry refuses it)."""
+    cdef Py_ssize_t n = given.shape[1], k
+    out_a = np.empty((5, n))
+    cdef double[:, ::1] out = out_a
+    cdef double dw, dm, fi, fo, big_a, g, alpha0, half
+    with nogil:
+        for k in range(n):
+            dw, dm, fi, fo = given[0, k], given[1, k], given[2, k], given[3, k]
+            big_a = (fi + fo - 1.0) * dw
+            if angular:
+                alpha0 = given[4, k] * (PI / 180.0)
+                half = sin(alpha0 / 2.0)
+                g = 4.0 * big_a * (half * half) / 2.0
+            else:
+                g = given[4, k] / 2.0
+                alpha0 = 2.0 * asin(sqrt(g / (2.0 * big_a))) if g > 0 else 0.0
+            out[0, k], out[1, k], out[2, k] = big_a, g, alpha0
+            out[3, k] = dm / 2.0 + (fi - 0.5) * dw * cos(alpha0)
+            out[4, k] = (dw > 0 and dm > 0 and dw < dm and fi > low and fi < high and
+                         fo > low and fo < high and g < big_a)
+    return out_a
+
+
+def pair_lift_off(int z, const double[::1] a_hat, const double[::1] gap,
+                  const double[::1] delta_p, const double[::1] f_ref, const double[:, ::1] curve,
+                  const double[::1] node_x, const double[::1] node_w):
+    """A preloaded pair's preload offset and lift-off thrust, n cases (bearingload.models.pair):
+    from a bearing's scaled A/s and max(g, 0)/s (n,) and its preload approach ``delta_p`` (n,),
+    the axial approach from the zero-load position to every ball at it, ``u_p - u_0 = delta
+    (2A + delta)/(u_p + u_0)`` (without cancellation; u_0^2 = g (2A - g)), and the external
+    thrust at which the other bearing carries nothing, this one at twice that offset: z (1 +
+    kappa) delta^1.5 sin(alpha) F [N] (``f_ref`` F (n,) [N]; ``curve`` (n, NODES) the stiffness
+    curve's values, or (n, 0): a constant K). Returns (offset (n,), thrust (n,))."""
+    cdef Py_ssize_t n = a_hat.shape[0], k
+    offset_a, thrust_a = np.empty(n), np.empty(n)
+    cdef double[::1] offset = offset_a, thrust = thrust_a
+    cdef double big_a, u0, up, dp, cc, w, u, d, delta, ca, sa, kappa
+    cdef Case cs
+    cs.node_x, cs.node_w = &node_x[0], &node_w[0]
+    with nogil:
+        for k in range(n):
+            big_a, dp = a_hat[k], delta_p[k]
+            u0 = sqrt(gap[k] * (2.0 * big_a - gap[k]))
+            up = sqrt(u0 * u0 + dp * (2.0 * big_a + dp))
+            offset[k] = dp * (2.0 * big_a + dp) / (up + u0)
+            cc = big_a - gap[k]
+            w = 2.0 * offset[k]
+            u = u0 + w
+            d = hypot(cc, u)
+            delta = w * (2.0 * u0 + w) / (d + big_a)
+            ca, sa = cc / d, u / d
+            cs.curve = &curve[k, 0] if curve.shape[1] == NODES else NULL
+            kappa = curve_kappa(&cs, ca, -sa * sa / (1.0 + ca))
+            thrust[k] = z * (1.0 + kappa) * pow(delta, 1.5) * sa * f_ref[k]
+    return offset_a, thrust_a

@@ -296,14 +296,10 @@ def groove_geometry(
     >>> round(float(A), 4), round(float(a0), 4), round(float(sa), 5)
     (0.575, 7.5614, 0.15133)
     """
+    dw = validate.positive("ball_diameter", ball_diameter, "mm")
+    dm = validate.positive("pitch_diameter", pitch_diameter, "mm")
     fi, fo, gr = validate.each_finite(f_i=f_i, f_o=f_o, clearance=clearance)
-    geo = ring_geometry(
-        validate.positive("ball_diameter", ball_diameter, "mm"),
-        validate.positive("pitch_diameter", pitch_diameter, "mm"),
-        fi,
-        fo,
-        gr,
-    )
+    geo = ring_geometry(dw, dm, fi, fo, gr)
     play = 2.0 * geo.A * np.sin(geo.alpha0)
     return (
         numerics.scalar_out(geo.A),
@@ -322,28 +318,28 @@ def ring_geometry(
     fi: Any,
     fo: Any,
     clearance: Any,
-    alpha0: Any = None,
+    angular: bool = False,
     at: Callable[..., str] = _no_element,
 ) -> _Geometry:
-    """The geometry of finite arrays (:func:`bearingload.validate.finite`), refused where it
-    is not one of a deep-groove ball bearing (one case: checked as floats); ``alpha0``: the
-    free contact angle [rad] as given (:func:`angular_geometry`), not that of the clearance;
-    ``at(name, bad, unit)`` names the input's element of the first case refused
-    (``clearance[1] = 5 mm``)."""
-    g = clearance / 2.0
-    A = (fi + fo - 1.0) * dw
-    d_w, d_m, f_i, f_o, gap, big_a = (dw, dm, fi, fo, g, A)
-    if A.size == dm.size == g.size == 1:
-        d_w, d_m, f_i, f_o, gap, big_a = (v.item() for v in (dw, dm, fi, fo, g, A))
-    low, high = validate.CONFORMITY_RANGE
-    conform = (f_i > low) & (f_i < high) & (f_o > low) & (f_o < high)
-    fits = (d_w > 0) & (d_m > 0) & (d_w < d_m) & conform & (gap < big_a)
-    if not (fits if isinstance(fits, bool) else fits.all()):
-        _refuse_geometry(dw, dm, fi, fo, g >= A, at)
-    if alpha0 is None:  # cos(alpha0) = 1 - g/A; 2 asin(sqrt(g/(2A))) keeps a small g's digits
-        alpha0 = 2.0 * np.arcsin(np.sqrt(np.where(g > 0, g / (2.0 * A), 0.0)))  # (g < A here)
-    R_i = dm / 2.0 + (fi - 0.5) * dw * np.cos(alpha0)
-    return _Geometry(dw, dm, fi, fo, A, g, alpha0, R_i)
+    """The geometry of finite arrays (:func:`bearingload.validate.finite`, broadcast together),
+    refused where it is not one of a deep-groove ball bearing; ``angular``: ``clearance`` is the
+    design contact angle alpha_0 [°] of an angular-contact bearing (:func:`angular_geometry`).
+    The arithmetic is the compiled core's ``groove``, one loop over the cases; ``at(name, bad,
+    unit)`` names the input's element of the first case refused (``clearance[1] = 5 mm``)."""
+    from bearingload.models import _core
+
+    columns: tuple[np.ndarray, ...] = (dw, dm, fi, fo, clearance)
+    shape = columns[0].shape
+    if any(v.shape != shape for v in columns) or len(shape) != 1:
+        shape = np.broadcast_shapes(*(v.shape for v in columns))
+        columns = tuple(np.broadcast_to(v, shape).reshape(-1) for v in columns)
+    big_a, g, alpha0, r_i, fits = _core.groove(
+        np.array(columns, dtype=float).reshape(5, -1), angular, *validate.CONFORMITY_RANGE
+    )
+    if not fits.all():
+        _refuse_geometry(dw, dm, fi, fo, (g >= big_a).reshape(shape), at)
+    cut = tuple(a.reshape(shape) for a in (big_a, g, alpha0, r_i))
+    return _Geometry(dw, dm, fi, fo, *cut)
 
 
 def _refuse_geometry(dw: Any, dm: Any, fi: Any, fo: Any, out: Any, at: Callable[..., str]) -> None:
@@ -594,10 +590,8 @@ def solve_combined(
     def at(name: str, bad: Any, unit: str = "") -> str:  # the input's element of a bad case
         return validate.element_at(named[name], bad, shape, unit)
 
-    if angular is None:
-        geo = ring_geometry(dw, dm, fi, fo, gr, at=at)
-    else:
-        geo = angular_geometry(dw, dm, fi, fo, alpha_d)
+    alpha_or_gap = gr if angular is None else alpha_d
+    geo = ring_geometry(dw, dm, fi, fo, alpha_or_gap, angular is not None, at)
     validate.ball_spacing(z, geo.D_w, geo.d_m)  # (z balls must fit on the pitch circle)
     if tilt_radius is not None:
         radius = validate.positive("tilt_radius", tilt_radius, "mm")
@@ -611,27 +605,8 @@ def solve_combined(
         curve = StiffnessCurve(values)
     else:
         k_ref = flat[14]
-    f_ref = reference_force(fr, fa, mm, mc, geo.R_i)
-    if (f_ref <= 0).any():
-        raise InputError(
-            "radial_load",
-            "give a radial load, an axial load or a moment",
-            element=at("radial_load", f_ref <= 0, "N"),
-        )
-    check_scale(
-        f_ref, k_ref, geo.A, angular is not None, lambda: load_sizes(fr, fa, mm, mc, geo.R_i)
-    )
-    if angular is not None:
-        _check_angular_scale(f_ref, k_ref, geo.A, (fr, fa, np.hypot(mm, mc) / geo.R_i))
-    t_imp = geo.R_i * np.deg2rad(tilt_deg)  # [mm]
-    c, s, mirror = ball_directions(z, cage)
-    held, imposed = symmetry_locks(z, mirror, (fr, fa, mm, mc), t_imp, misalignment is not None)
-    f = np.zeros((fr.shape[0], 5))
-    f[:, 0], f[:, 2], f[:, 3], f[:, 4] = fr, fa, mm / geo.R_i, mc / geo.R_i
-    f /= f_ref[:, None]
-    one_sided = np.full(fr.shape, angular is not None)
-    problem = Problem.make(z, (c, s), (geo.A, geo.g), f=f, t_imp=t_imp, locked=held,
-                           imposed=imposed, f_ref=f_ref, k_ref=k_ref, one_sided=one_sided)  # fmt: skip
+    loads = (fr, fa, mm, mc, tilt_deg)
+    problem, mirror = _problem(z, loads, cage, geo, k_ref, (angular, misalignment), at)
     given = {"balls": z, "radial_load": fr, "axial_load": fa, "moment": mm, "moment_cross": mc,
              "clearance": gr, "cage_angle": cage}  # fmt: skip
     if misalignment is not None:  # the moment is then the reaction, not an input
@@ -718,6 +693,65 @@ def _zone_length(kinematics: tuple[np.ndarray, ...], balls: np.ndarray, one_side
     length = np.where(on & on_next, nxt - phi, 0.0).sum(axis=1)
     np.add.at(length, rows, np.where(start_on, end - phi[rows, cols], nxt[rows, cols] - end))
     return length
+
+
+def _problem(
+    z: int,
+    loads: tuple[np.ndarray, ...],
+    cage: np.ndarray,
+    geo: _Geometry,
+    k_ref: np.ndarray,
+    given: tuple[Any, Any],
+    at: Callable[..., str] = _no_element,
+) -> tuple[Problem, np.ndarray]:
+    """The scaled problem of the cases (the compiled core's ``combined_problem``: the largest
+    load, the scale, the ball directions, the symmetry locks, the forces) and which cases are
+    mirrored about the load line; the loads (F_r, F_a, M, M_c, misalignment [°]) refused as
+    :func:`reference_force`, :func:`check_scale` and :func:`_check_angular_scale` state.
+    ``given``: the contact angle and the misalignment as given (None: not given); ``at``
+    names the element of a refused case (:func:`ring_geometry`)."""
+    from bearingload.models import _core
+    from bearingload.models._ring import SYMMETRY_SNAP_DEG
+
+    angular, imposed = (v is not None for v in given)
+    n = cage.shape[0]
+    lengths = np.array((geo.A, geo.g, geo.R_i), dtype=float)
+    limits = np.array([SYMMETRY_SNAP_DEG, GEOMETRY_RATIO_MAX, ANGULAR_RATIO_MIN])
+    k_ref = np.ascontiguousarray(k_ref, dtype=float)
+    rows = np.zeros((6, n))
+    rows[:5] = loads
+    status, c, s, mirror, held, f, out = _core.combined_problem(
+        z, rows, cage, lengths, k_ref, angular, imposed, limits
+    )
+    if status.any():
+        _refuse_loads(loads, geo, k_ref, angular, at)
+    fixed = np.zeros((n, 5), dtype=bool)
+    fixed[:, 3] = imposed
+    scale, a_hat, pre, gap, b_hi, b_lo, t_imp, f_ref = out
+    scaled = (scale, a_hat, pre, gap, b_hi, b_lo, f, t_imp, held, fixed, f_ref, k_ref)
+    return Problem(z, c, s, *scaled, np.full(n, angular)), mirror
+
+
+def _refuse_loads(
+    loads: tuple[np.ndarray, ...],
+    geo: _Geometry,
+    k_ref: np.ndarray,
+    angular: bool,
+    at: Callable[..., str],
+) -> None:
+    """InputError on the loads the core's ``combined_problem`` flagged (no load, a moment over
+    its lever beyond the largest number, loads too small or, angular contact, too large)."""
+    fr, fa, mm, mc = loads[:4]
+    f_ref = reference_force(fr, fa, mm, mc, geo.R_i)
+    if (f_ref <= 0).any():
+        raise InputError(
+            "radial_load",
+            "give a radial load, an axial load or a moment",
+            element=at("radial_load", f_ref <= 0, "N"),
+        )
+    check_scale(f_ref, k_ref, geo.A, angular, lambda: load_sizes(fr, fa, mm, mc, geo.R_i))
+    if angular:
+        _check_angular_scale(f_ref, k_ref, geo.A, (fr, fa, np.hypot(mm, mc) / geo.R_i))
 
 
 def call_balls(balls: Any) -> int:
@@ -873,7 +907,7 @@ def _valley_point(
     for _ in range(4):
         hi, lo = _ring.two_sum(wh, step[None, :])
         wh, wl = _ring.fast_two_sum(hi, lo + wl)
-        moved = _ring.Point.at(sub, kappa[one], _ring.reference(sub, wh, wl))
+        moved = _ring.Point.at(sub, kappa[one], wh, wl)
         if moved.res[0] <= TOLERANCE:
             return wh, wl, moved
         left = np.where(sub.locked[0], 0.0, moved.gen[0] - sub.f[0])
@@ -912,9 +946,7 @@ def _least_tilt_step(p: Problem, i: int, end: _ring.Point, v: np.ndarray, d: np.
 def angular_geometry(dw: Any, dm: Any, fi: Any, fo: Any, alpha_deg: np.ndarray) -> _Geometry:
     """The deep-groove geometry whose free contact angle is the design angle alpha_0 [°]:
     ``G_r = 2A (1 - cos alpha_0) = 4A sin^2(alpha_0/2)``, alpha_0 kept as given."""
-    big_a = (fi + fo - 1.0) * dw
-    alpha0 = np.deg2rad(alpha_deg)  # as given, not through the arcsine
-    return ring_geometry(dw, dm, fi, fo, 4.0 * big_a * np.sin(alpha0 / 2.0) ** 2, alpha0)
+    return ring_geometry(dw, dm, fi, fo, alpha_deg, angular=True)
 
 
 def _angular(contact_angle: Any, fa: np.ndarray, clearance: Any) -> np.ndarray | None:
@@ -1203,17 +1235,14 @@ def symmetry_locks(
     engine's snap) and no moment acts across it; ``a``, ``t``, ``t_c`` without an axial load,
     moment or tilt (the mirror image across the mid-plane); ``x``, ``y``, ``t``, ``t_c`` without
     a radial load, moment or tilt (the ring's z-fold symmetry, z >= 2). The potential is convex
-    and has the symmetry, so a minimum with these components 0 exists.
+    and has the symmetry, so a minimum with these components 0 exists. The rule is the compiled
+    core's (``symmetry_locks``, also of :func:`solve_combined`'s set-up).
     """
-    fr, fa, mm, mc = loads
-    n = fr.shape[0]
-    no_tilt = (mm == 0) & (mc == 0) & (t_imp == 0)
-    across, axial = mirror & (mc == 0), (fa == 0) & no_tilt
-    radial = (fr == 0) & no_tilt if z >= 2 else np.zeros(n, dtype=bool)
-    held = np.empty((n, 5), dtype=bool)
-    held[:, 0], held[:, 1], held[:, 2] = radial, across | radial, axial
-    held[:, 3], held[:, 4] = (axial | radial) | imposed, across | axial | radial
-    fixed = np.zeros((n, 5), dtype=bool)
+    from bearingload.models import _core
+
+    rows = np.array((*loads, t_imp), dtype=float)
+    held = _core.locks(z, np.ascontiguousarray(mirror, dtype=np.uint8), rows, imposed)
+    fixed = np.zeros(held.shape, dtype=bool)
     fixed[:, 3] = imposed
     return held, fixed
 
@@ -1470,9 +1499,7 @@ def hertz_setup(geo: _Geometry, e: np.ndarray, nu: np.ndarray) -> tuple[np.ndarr
     from bearingload.contact.hertz import ball_stiffness
     from bearingload.models import _core
 
-    params = np.empty((geo.D_w.shape[0], 6))
-    for i, column in enumerate((geo.D_w, geo.d_m, geo.f_i, geo.f_o, e, nu)):
-        params[:, i] = column
+    params = np.array((geo.D_w, geo.d_m, geo.f_i, geo.f_o, e, nu), dtype=float).T.copy()
     key = params.tobytes() if params.shape[0] == 1 else None
     if key in _SETUP_CACHE:
         return tuple(a.copy() for a in _SETUP_CACHE[key])
@@ -1497,20 +1524,14 @@ class StiffnessCurve:
     kind (inside (0, 1)), so that ``kappa = (c - 1) D(c)`` with ``c - 1 = -sin^2/(1 + cos)`` keeps
     its digits at a contact angle of 1e-13 rad (heavy preload, tiny axial load: the forces are
     summed from the deviations, :mod:`bearingload.models._combined_ring`). The tests check it
-    against :func:`ball_stiffness_at`. One Hertz evaluation per node and distinct geometry.
+    against :func:`ball_stiffness_at`. One Hertz evaluation per node and distinct geometry. The
+    interpolant is evaluated in the compiled core (``curve_kappa``, the barycentric formula at
+    the nodes NODE_X with the weights NODE_W).
     """
 
     def __init__(self, values: np.ndarray) -> None:
         """``values``: D at the nodes over each case's K_0, (n, NODES) (:func:`hertz_setup`)."""
-        self.x = NODE_X
-        self.w = NODE_W
         self.values = values
-
-    def __call__(self, idx: np.ndarray, cos_alpha: np.ndarray, cos_m1: np.ndarray) -> np.ndarray:
-        """kappa of the cases ``idx`` (shape (len(idx), z)) from cos(alpha) and cos(alpha) - 1."""
-        t = 2.0 * np.clip(cos_alpha, 0.0, 1.0) - 1.0
-        terms = self.w / (t[..., None] - self.x)  # t is never a node: no node is 0 or 1
-        return cos_m1 * (terms * self.values[idx][:, None, :]).sum(-1) / terms.sum(-1)
 
 
 def _solve_with_stiffness(
@@ -1671,23 +1692,24 @@ def distribution(
 ) -> CombinedDistribution:
     """Back to physical units and the case shape; ``flags``: the cases whose tilt the loads do
     not determine and those whose negligible thrust was left out (default none)."""
+    from bearingload.models import _core
+
     undetermined, neglected = (None, None) if flags is None else flags
     v, kappa, its, (b, lo, gen), tangent = answer
-    q = p.f_ref[:, None] * lo.q
-    w = v.copy()  # x, y, a, t, t_c [mm], the tilts then over the lever [rad]
-    w[:, 3] += p.t_imp
-    w *= p.scale[:, None]
-    w[:, 3:] /= geo.R_i[:, None]
-    sin0 = np.sin(geo.alpha0)
-    play, axial = 2.0 * geo.A * sin0, w[:, 2]
-    if p.one_sided.any():  # measured from the zero-load position, no play
-        play, axial = (
-            np.where(p.one_sided, 0.0, play),
-            axial - np.where(p.one_sided, geo.A * sin0, 0.0),
-        )
-    mm = given["moment"]
-    moment = geo.R_i * p.f_ref * gen[:, 3] if misalignment is not None else mm
-    z = p.z
+    z = kappa.shape[1]
+    case_in = np.array(
+        (p.t_imp, p.scale, geo.R_i, geo.alpha0, geo.A, p.one_sided, p.f_ref)
+        + (given["moment"], given["cage_angle"], p.pre, p.k_ref),
+        dtype=float,
+    )
+    rows, per_ball = _core.combined_result(
+        np.ascontiguousarray(v),
+        case_in,
+        *(np.ascontiguousarray(a) for a in (gen, lo.sa, lo.ca, b.eps, lo.q, kappa)),
+        misalignment is not None,
+    )
+    x, y, axial, tilt, tilt_cross, alpha0, play, moment = rows
+    phi, alpha, approach, k_ball, q = per_ball
 
     def case(a: np.ndarray) -> Any:
         return np.asarray(a).reshape(shape) if shape else a.item()
@@ -1695,26 +1717,24 @@ def distribution(
     def ball(a: np.ndarray) -> np.ndarray:
         return a.reshape(shape + (z,))
 
-    cage = given["cage_angle"]
-    phi = np.mod(cage[:, None] + 360.0 * np.arange(z) / z, 360.0)
     return CombinedDistribution(
         balls=z,
         load=case(given["radial_load"]),
         axial_load=case(given["axial_load"]),
         moment=case(moment),
         clearance=case(given["clearance"]),
-        cage_angle=case(cage),
-        free_contact_angle=case(np.rad2deg(geo.alpha0)),
+        cage_angle=case(given["cage_angle"]),
+        free_contact_angle=case(alpha0),
         axial_play=case(play),
-        x=case(w[:, 0]),
-        y=case(w[:, 1]),
+        x=case(x),
+        y=case(y),
         axial=case(axial),
-        tilt=case(np.rad2deg(w[:, 3])),
-        tilt_cross=case(np.rad2deg(w[:, 4])),
+        tilt=case(tilt),
+        tilt_cross=case(tilt_cross),
         ball_angles=ball(phi),
-        contact_angles=ball(np.rad2deg(np.arctan2(lo.sa, lo.ca))),
-        ball_approaches=ball((p.pre[:, None] + b.eps) * p.scale[:, None]),
-        ball_stiffnesses=ball((1.0 + kappa) * p.k_ref[:, None]),
+        contact_angles=ball(alpha),
+        ball_approaches=ball(approach),
+        ball_stiffnesses=ball(k_ball),
         ball_loads=ball(q),
         tilt_radius=case(geo.R_i),
         stiffness_matrix=tangent.reshape(shape + (5, 5)),

@@ -447,6 +447,48 @@ def _solve(z: int, kind: str, c: dict, shape: tuple[int, ...]) -> PairDistributi
         curve = _comb.StiffnessCurve(values)
     fr, fa, mm, mc, fp = (c[k] for k in ("radial_load", "axial_load", "moment", "moment_cross",
                                          "preload"))  # fmt: skip
+    prob, f, mirror = _scaled(z, c, geo, k_ref)
+    held = held_components(kind, mirror, (fr, fa, mm, mc))
+    pp = _Pair(prob, signs(kind), levers(kind, c["width"], geo.R_i), fp / prob.f_ref, f, held)
+    vh, vl, res, its, st, delta_p = _solve_stages(pp, _start(pp, z, geo, pp.preload), curve)
+    given = {k: c[k] for k in _UNITS}
+    _accepted(res, its, given)
+    _check_edge(st, given)
+    return _result(kind, pp, geo, (vh, vl, res, its, st), c, shape, curve, mirror & (mc == 0),
+                   delta_p)  # fmt: skip
+
+
+def _scaled(z: int, c: dict, geo: Any, k_ref: np.ndarray) -> tuple[Problem, np.ndarray, Any]:
+    """The scaled problem of the bearings' balls, the applied forces over the largest load or
+    the preload (n, 5) and which cases are mirrored about the load line: the compiled core's
+    ``combined_problem`` (one loop over the cases); the loads it flags refused by
+    :func:`_refuse_scale`."""
+    from bearingload.models import _core
+    from bearingload.models._ring import SYMMETRY_SNAP_DEG
+
+    names = ("radial_load", "axial_load", "moment", "moment_cross", "preload")
+    n = c["preload"].shape[0]
+    rows = np.zeros((6, n))
+    rows[:4], rows[5] = [c[k] for k in names[:4]], c["preload"]
+    lengths = np.array((geo.A, geo.g, geo.R_i), dtype=float)
+    limits = np.array([SYMMETRY_SNAP_DEG, _comb.GEOMETRY_RATIO_MAX, 0.0])
+    k_ref = np.ascontiguousarray(k_ref, dtype=float)
+    cage = np.ascontiguousarray(c["cage_angle"], dtype=float)
+    status, cos_, sin_, mirror, _, f, out = _core.combined_problem(
+        z, rows, cage, lengths, k_ref, False, False, limits
+    )
+    if status.any():
+        _refuse_scale(geo, k_ref, *(c[k] for k in names))
+    scale, a_hat, pre, gap, b_hi, b_lo, t_imp, f_ref = out
+    none = np.zeros((n, 5), dtype=bool)
+    scaled = (scale, a_hat, pre, gap, b_hi, b_lo, np.zeros((n, 5)), t_imp, none, none)
+    return Problem(z, cos_, sin_, *scaled, f_ref, k_ref, np.ones(n, dtype=bool)), f, mirror
+
+
+def _refuse_scale(geo: Any, k_ref: np.ndarray, *loads: np.ndarray) -> None:
+    """InputError on the loads of a pair the core flags: none at all, or too small for the
+    groove geometry (the combined model's check, its advice replaced)."""
+    fr, fa, mm, mc, fp = loads
     f_ref = np.maximum(_comb.reference_force(fr, fa, mm, mc, geo.R_i), fp)
     if (f_ref <= 0).any():
         raise InputError("radial_load", "give a radial load, an axial load, a moment or a preload")
@@ -467,23 +509,6 @@ def _solve(z: int, kind: str, c: dict, shape: tuple[int, ...]) -> PairDistributi
             f"the preload is {float(np.min(f_ref)):.3g} N; it takes at least {f_min:.2g} N for "
             "this bearing)",
         ) from exc
-    cos_, sin_, mirror = _comb.ball_directions(z, c["cage_angle"])
-    n = fr.size
-    f = np.zeros((n, 5))
-    f[:, 0], f[:, 2], f[:, 3], f[:, 4] = fr, fa, mm / geo.R_i, mc / geo.R_i
-    f /= f_ref[:, None]
-    prob = Problem.make(z, (cos_, sin_), (geo.A, geo.g), f=np.zeros((n, 5)),
-                        t_imp=np.zeros(n), locked=np.zeros((n, 5), dtype=bool),
-                        imposed=np.zeros((n, 5), dtype=bool), f_ref=f_ref, k_ref=k_ref,
-                        one_sided=np.ones(n, dtype=bool))  # fmt: skip
-    held = held_components(kind, mirror, (fr, fa, mm, mc))
-    pp = _Pair(prob, signs(kind), levers(kind, c["width"], geo.R_i), fp / f_ref, f, held)
-    vh, vl, res, its, st, delta_p = _solve_stages(pp, _start(pp, z, geo, pp.preload), curve)
-    given = {k: c[k] for k in _UNITS}
-    _accepted(res, its, given)
-    _check_edge(st, given)
-    return _result(kind, pp, geo, (vh, vl, res, its, st), c, shape, curve, mirror & (mc == 0),
-                   delta_p)  # fmt: skip
 
 
 def _hertz(geo: Any, e: np.ndarray, nu: np.ndarray) -> tuple[np.ndarray, np.ndarray]:
@@ -588,8 +613,8 @@ def _result(kind: str, pp: _Pair, geo: Any, answer: tuple[Any, ...], c: dict,
     def case(a: Any) -> Any:
         return np.asarray(a).reshape(shape) if shape else np.asarray(a).item()
 
-    offset = _offset(p, delta_p)
-    lift = None if kind == "DT" else case(_lift_off(pp, curve, offset, c))
+    offset, thrust = _lift_off(pp, curve, delta_p)
+    lift = None if kind == "DT" else case(np.where(c["axial_load"] < 0, -thrust, thrust))
     return PairDistribution(
         arrangement=kind, bearings=(bearings[0], bearings[1]),
         load=case(c["radial_load"]), axial_load=case(c["axial_load"]), moment=case(c["moment"]),
@@ -603,31 +628,16 @@ def _result(kind: str, pp: _Pair, geo: Any, answer: tuple[Any, ...], c: dict,
     )  # fmt: skip
 
 
-def _offset(p: Problem, delta: np.ndarray) -> np.ndarray:
+def _lift_off(pp: _Pair, curve: Any, delta: np.ndarray) -> tuple[np.ndarray, np.ndarray]:
     """The axial approach of a bearing from its zero-load position to every ball at ``delta``
-    (scaled): ``u_p - u_0 = delta (2A + delta)/(u_p + u_0)``, without cancellation."""
-    big_a, gap = p.a_hat, p.gap
-    u0 = np.sqrt(gap * (2.0 * big_a - gap))
-    up = np.sqrt(u0 * u0 + delta * (2.0 * big_a + delta))
-    return delta * (2.0 * big_a + delta) / (up + u0)
+    (scaled), ``u_p - u_0 = delta (2A + delta)/(u_p + u_0)`` without cancellation, and the
+    external axial load alone at which one bearing of a preloaded DB/DF pair carries nothing
+    (the other then at twice that offset from its zero-load position) [N], its magnitude: the
+    compiled core's ``pair_lift_off``."""
+    from bearingload.models import _core
 
-
-def _lift_off(pp: _Pair, curve: Any, offset: np.ndarray, c: dict) -> np.ndarray:
-    """The external axial load alone at which one bearing of a preloaded DB/DF pair carries
-    nothing: the other then sits at twice the preload ``offset`` (:func:`_offset`) from its
-    zero-load position. [N]"""
     p = pp.prob
-    big_a, gap = p.a_hat, p.gap
-    u0 = np.sqrt(gap * (2.0 * big_a - gap))
-    cc = big_a - gap
-    w = 2.0 * offset
-    u = u0 + w
-    d = np.hypot(cc, u)
-    delta = w * (2.0 * u0 + w) / (d + big_a)
-    ca, sa = cc / d, u / d
-    kappa = 0.0
-    if curve is not None:
-        rows = np.arange(ca.size)
-        kappa = curve(rows, ca[:, None], (-sa * sa / (1.0 + ca))[:, None])[:, 0]
-    thrust = p.z * (1.0 + kappa) * delta**1.5 * sa * p.f_ref
-    return np.where(c["axial_load"] < 0, -thrust, thrust)
+    values = np.zeros((delta.shape[0], 0)) if curve is None else curve.values
+    cont = np.ascontiguousarray
+    rows = (cont(a, dtype=float) for a in (p.a_hat, p.gap, delta, p.f_ref, values))
+    return _core.pair_lift_off(p.z, *rows, _comb.NODE_X, _comb.NODE_W)
