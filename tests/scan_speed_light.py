@@ -72,8 +72,9 @@ def main(mode: str, n: int) -> None:
         grid = [wide_case(np.random.default_rng(1 + i)) for i in range(n)]
     else:
         grid = cases((0.0,) if mode == "zero" else (1000.0, 30000.0, 50000.0))
-    counts = dict.fromkeys(("solved", "refused", "ConvergenceError", "other", "NaN/negative",
-                            "static differs"), 0)  # fmt: skip
+    counts = dict.fromkeys(
+        ("solved", "refused", "ConvergenceError", "other", "NaN/negative", "static differs"), 0
+    )
     started = time.perf_counter()
     for c in grid:
         static = None

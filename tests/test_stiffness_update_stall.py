@@ -43,8 +43,23 @@ def test_a_stall_along_a_free_direction_ends_the_stiffness_updates():
 
 
 def test_the_terminal_call_answers():
-    args = ["solve", "-z", "40", "--ball-diameter", "2.87", "--pitch-diameter", "38.5",
-            "-F", "0.47N", "-A", "0.00087N", "-G", "83um", "--cage-angle", "1e-12"]  # fmt: skip
+    args = [
+        "solve",
+        "-z",
+        "40",
+        "--ball-diameter",
+        "2.87",
+        "--pitch-diameter",
+        "38.5",
+        "-F",
+        "0.47N",
+        "-A",
+        "0.00087N",
+        "-G",
+        "83um",
+        "--cage-angle",
+        "1e-12",
+    ]
     out = CliRunner().invoke(main, args)
     assert out.exit_code == 0, out.output
     assert "balls carrying load" in out.output

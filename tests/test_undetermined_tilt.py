@@ -110,9 +110,13 @@ def test_a_symmetric_cage_is_flagged_too():
 
 #: 7205B as the catalogue resolves it (NSK 40°, 12 balls of 8.7312 mm on 38.5 mm, 0.52/0.53).
 B7205B = dict(
-    ball_diameter=8.7312, pitch_diameter=38.5, f_i=0.52, f_o=0.53, modulus=208000.0,
+    ball_diameter=8.7312,
+    pitch_diameter=38.5,
+    f_i=0.52,
+    f_o=0.53,
+    modulus=208000.0,
     contact_angle=40.0,
-)  # fmt: skip
+)
 
 
 def test_a_curved_valley_is_followed_to_its_least_tilt():

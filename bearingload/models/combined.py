@@ -642,16 +642,28 @@ def load_zone(r: CombinedDistribution, big_a: Any, one_sided: bool = False) -> A
     the last digits by bisection, :data:`ZONE_BLOCK` cases at a time; an arc narrower than
     0.5° that holds no ball is not seen. [°]"""
     shape = np.shape(r.q_max)
-    case = [np.broadcast_to(np.asarray(v, dtype=float), shape).reshape(-1, 1)
-            for v in (r.x, r.y, r.axial, r.tilt, r.tilt_cross, r.tilt_radius, r.clearance,
-                      r.free_contact_angle, big_a)]  # fmt: skip
+    case = [
+        np.broadcast_to(np.asarray(v, dtype=float), shape).reshape(-1, 1)
+        for v in (
+            r.x,
+            r.y,
+            r.axial,
+            r.tilt,
+            r.tilt_cross,
+            r.tilt_radius,
+            r.clearance,
+            r.free_contact_angle,
+            big_a,
+        )
+    ]
     x, y, axial, tilt, tilt_c, lever, g_r, alpha0, a = case
     alpha0 = np.deg2rad(alpha0)
     rho0 = np.where(one_sided, a * np.cos(alpha0), a - g_r / 2.0)
     u0 = axial + np.where(one_sided, a * np.sin(alpha0), 0.0)
     t, tc = lever * np.deg2rad(tilt), lever * np.deg2rad(tilt_c)
-    balls = np.mod(np.deg2rad(np.asarray(r.ball_angles, dtype=float).reshape(len(x), -1)),
-                   2.0 * np.pi)  # fmt: skip
+    balls = np.mod(
+        np.deg2rad(np.asarray(r.ball_angles, dtype=float).reshape(len(x), -1)), 2.0 * np.pi
+    )
     zone = np.empty(len(x))
     for at in range(0, len(x), ZONE_BLOCK):
         block = slice(at, at + ZONE_BLOCK)
@@ -956,8 +968,11 @@ def _angular(contact_angle: Any, fa: np.ndarray, clearance: Any) -> np.ndarray |
         return None
     alpha = validate.finite("contact_angle", contact_angle)
     if ((alpha < 0) | (alpha > 60)).any():
-        raise InputError("contact_angle", "must be from 0 to 60°",
-                         element=validate.element(alpha, (alpha < 0) | (alpha > 60), "°"))  # fmt: skip
+        raise InputError(
+            "contact_angle",
+            "must be from 0 to 60°",
+            element=validate.element(alpha, (alpha < 0) | (alpha > 60), "°"),
+        )
     gr = validate.finite("clearance", clearance)
     if (gr != 0).any():
         raise InputError(

@@ -281,8 +281,11 @@ def check_speed(speed: Any, density: Any, dm: Any) -> tuple[np.ndarray, np.ndarr
             return np.array(speed), np.array(density)  # one plain case in range
     n = validate.finite("speed", speed)
     if np.any(n < 0):
-        raise InputError("speed", "must be >= 0 rpm (the inner ring's speed)",
-                         element=validate.element(n, n < 0, "rpm"))  # fmt: skip
+        raise InputError(
+            "speed",
+            "must be >= 0 rpm (the inner ring's speed)",
+            element=validate.element(n, n < 0, "rpm"),
+        )
     rho = validate.positive("ball_density", density, "kg/m^3")
     if np.any((rho < 1.0) | (rho > 1e5)):
         raise InputError(
@@ -402,8 +405,11 @@ def solve_high_speed(
     flat = dict(zip(given, columns, strict=False))
     case_arrays: dict[str, Any] = dict(zip(at_rest, columns[len(given) :], strict=False))
     dw, dm, fi, fo, e, nu, rho_b, alpha_d = columns[len(given) + len(at_rest) :]
-    geo = (_combined.ring_geometry(dw, dm, fi, fo, flat["clearance"]) if contact_angle is None
-           else _combined.angular_geometry(dw, dm, fi, fo, alpha_d))  # fmt: skip
+    geo = (
+        _combined.ring_geometry(dw, dm, fi, fo, flat["clearance"])
+        if contact_angle is None
+        else _combined.angular_geometry(dw, dm, fi, fo, alpha_d)
+    )
     geo = dataclasses.replace(geo, R_i=case_arrays["tilt_radius"])
     one_sided = np.full(dw.shape, contact_angle is not None)
     static_kw = dict(ball_diameter=dw, pitch_diameter=dm, f_i=fi, f_o=fo, modulus=e,

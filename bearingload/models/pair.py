@@ -408,8 +408,11 @@ def _check_pair(kind: str, fa: np.ndarray, fp: np.ndarray, contact_angle: Any) -
     """Refuse what a pair of this arrangement cannot take."""
     alpha = validate.finite("contact_angle", contact_angle)
     if ((alpha <= 0) | (alpha > 60)).any():
-        raise InputError("contact_angle", "must be above 0 and at most 60° for a bearing pair",
-                         element=validate.element(alpha, (alpha <= 0) | (alpha > 60), "°"))  # fmt: skip
+        raise InputError(
+            "contact_angle",
+            "must be above 0 and at most 60° for a bearing pair",
+            element=validate.element(alpha, (alpha <= 0) | (alpha > 60), "°"),
+        )
     if (fp < 0).any():
         raise InputError("preload", "must be >= 0 N", element=validate.element(fp, fp < 0, "N"))
     if kind == "DT" and (fp > 0).any():
@@ -454,8 +457,9 @@ def _solve(z: int, kind: str, c: dict, shape: tuple[int, ...]) -> PairDistributi
     given = {k: c[k] for k in _UNITS}
     _accepted(res, its, given)
     _check_edge(st, given)
-    return _result(kind, pp, geo, (vh, vl, res, its, st), c, shape, curve, mirror & (mc == 0),
-                   delta_p)  # fmt: skip
+    return _result(
+        kind, pp, geo, (vh, vl, res, its, st), c, shape, curve, mirror & (mc == 0), delta_p
+    )
 
 
 def _scaled(z: int, c: dict, geo: Any, k_ref: np.ndarray) -> tuple[Problem, np.ndarray, Any]:
