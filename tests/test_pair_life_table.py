@@ -88,6 +88,15 @@ def test_json_rows_and_the_table_show_solves_values_and_name_the_longest_life():
          "Missing option '--preloads' (table life of a pair runs over the preload; give the "
          "rows, e.g. '--preloads' 0,100N,300N,1kN)"),
         (["-b", "7205BDT", "-F", "1kN", "-A", "1kN", "--preloads", "0,100N"],
+         "Invalid value for '--bearing': a tandem pair (DT) is not preloaded in itself (it "
+         "is preloaded against another bearing): table life of a pair runs over the preload of "
+         "DB or DF"),
+        # a tandem pair is refused before the rows are asked for: no preload would do
+        (["-b", "7205BDT", "-F", "1kN", "-A", "100N"],
+         "Invalid value for '--bearing': a tandem pair (DT) is not preloaded in itself (it "
+         "is preloaded against another bearing): table life of a pair runs over the preload of "
+         "DB or DF"),
+        (["-b", "7205B", "--arrangement", "DT", "-F", "1kN", "-A", "100N"],
          "Invalid value for '--arrangement': a tandem pair (DT) is not preloaded in itself (it "
          "is preloaded against another bearing): table life of a pair runs over the preload of "
          "DB or DF"),

@@ -631,8 +631,9 @@ ZONE_GRID = 720
 
 
 def load_zone(r: CombinedDistribution, big_a: Any, one_sided: bool = False) -> Any:
-    """The load zone half-angle of every case of the static solution ``r``: half the angle of
-    the arc of positions where a ball would carry load, by the kinematics of the module notes
+    """The load zone half-angle of every case of the static solution ``r``: half the total
+    angle of the positions where a ball would carry load (the arcs summed where a moment makes
+    two), by the kinematics of the module notes
     (the balls' own): loaded where ``rho > 0`` and ``|(rho, u')| > A``. Under a radial load
     alone it is the radial engine's ``arccos(G_r / (2 |(x, y)|))``; 180 where every position
     is loaded (a thrust, a preload). ``big_a`` = A = (f_i + f_o - 1) D_w [mm]; ``one_sided``:

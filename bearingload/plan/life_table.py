@@ -113,12 +113,6 @@ def life_against_preload_case(case: Case, preloads: list[float]) -> Any:
     negative = [p for p in preloads if not p >= 0]
     if negative:
         raise InputError("preloads", f"each must be 0 N or more (got {negative[0]:g} N)")
-    if (case.arrangement or "").upper() == "DT":
-        raise InputError(
-            "arrangement",
-            "a tandem pair (DT) is not preloaded in itself (it is preloaded against another "
-            "bearing): table life of a pair runs over the preload of DB or DF",
-        )
     b = pair_bearing(case)
     args = case.pair_arguments(b.balls)
     del args["preload"]

@@ -88,11 +88,12 @@ def solve_case(
         raise in_case_terms(exc, given) from exc
 
 
-def in_case_terms(exc: ConvergenceError, case: Case) -> ConvergenceError:
+def in_case_terms(exc: ConvergenceError, case: Case, cage_given: bool = True) -> ConvergenceError:
     """The solver's ConvergenceError naming the inputs of its cases as the case names them:
     the library's argument names (``radial_load`` -> ``load``, :func:`bearingload.plan.inputs.
-    argument_of`) and the cage angle as given (``half``, or -10° that the solver reduced to
-    350°) where the cases were solved at that one cage angle."""
+    argument_of`) and, with ``cage_given``, the cage angle as given (``half``, or -10° that the
+    solver reduced to 350°) where the cases were solved at that one cage angle (a sweep's cases
+    are solved at other cage angles than its case's: ``cage_given`` False keeps the solver's)."""
     import numpy as np
 
     from bearingload.plan.inputs import argument_of
@@ -100,7 +101,7 @@ def in_case_terms(exc: ConvergenceError, case: Case) -> ConvergenceError:
     cases = {argument_of(k): v for k, v in exc.cases.items()}
     units = {argument_of(k): u for k, u in (exc.units or {}).items()}
     cage = np.asarray(cases.get("cage_angle", []), dtype=float).reshape(-1)
-    if cage.size and np.all(cage == cage[0]):  # one cage angle: the case's own, as given
+    if cage_given and cage.size and np.all(cage == cage[0]):  # the case's own, as given
         cases["cage_angle"] = case.cage_angle
         if case.cage_angle == "half":
             units.pop("cage_angle", None)

@@ -52,7 +52,7 @@ def sweep_case(case: Case, steps: int) -> Swept:
     try:
         return _swept(case, steps)
     except ConvergenceError as exc:
-        raise in_case_terms(exc, case) from exc
+        raise in_case_terms(exc, case, cage_given=False) from exc
 
 
 def _swept(case: Case, steps: int) -> Swept:

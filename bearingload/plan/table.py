@@ -244,6 +244,13 @@ def _pair_life(
     ):
         if given:
             raise ConflictError(param, "table life of a pair", why)
+    if (case.arrangement or "").upper() == "DT":  # before the rows: no preload would do
+        param = "arrangement" if "arrangement" in case.given else "bearing"
+        raise InputError(
+            param,
+            "a tandem pair (DT) is not preloaded in itself (it is preloaded against another "
+            "bearing): table life of a pair runs over the preload of DB or DF",
+        )
     if preloads is None:
         raise MissingError(
             "preloads",

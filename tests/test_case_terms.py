@@ -1,0 +1,25 @@
+"""The failure of a solve or a sweep names the inputs as the case names them
+(:func:`bearingload.plan.solve.in_case_terms`)."""
+
+from bearingload.errors import ConvergenceError
+from bearingload.plan.case import Case
+from bearingload.plan.solve import in_case_terms
+
+
+def _failure(cage: list[float]) -> ConvergenceError:
+    cases = {"radial_load": [100.0] * len(cage), "cage_angle": cage}
+    return ConvergenceError("combined", 50, 1e-8, cases, {"radial_load": "N", "cage_angle": "°"})
+
+
+def test_a_solve_names_its_cage_angle_as_given():
+    case = Case.of({"load": 100.0, "cage_angle": -10.0})
+    out = in_case_terms(_failure([350.0]), case)
+    assert out.cases["load"] == [100.0]
+    assert out.cases["cage_angle"] == -10.0
+
+
+def test_a_sweep_names_the_cage_angle_it_failed_at():
+    """A sweep solves other cage angles than its case's (0): the failing one is named."""
+    case = Case.of({"load": 100.0})
+    out = in_case_terms(_failure([15.0]), case, cage_given=False)
+    assert list(out.cases["cage_angle"]) == [15.0]
