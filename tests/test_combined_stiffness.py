@@ -231,3 +231,17 @@ def test_the_stiffness_matrix_is_in_every_format_of_solve(capsys):
         assert [float(c) for c in cells] == pytest.approx(matrix[4], rel=1e-5, abs=1e-6)
     out = run_entry(capsys, "solve", "7205BDB", "-F", "1kN", "-A", "300N")[1]
     assert "tangent stiffness matrix of the shaft" in out
+
+
+def test_radial_stiffness_is_one_quantity_in_both_engines():
+    """stiffness_radial is dF_r/dx with F_y held at zero in the radial engine and in the 3-D
+    one: off the symmetric cage (K_xy != 0) the same case with '-A 0' gives the same number
+    (it gave K_xx, 0.18 % stiffer, before)."""
+    import bearingload
+
+    radial = bearingload.analyse("6205", load="1kN", clearance="C3", cage_angle=5)
+    combined = bearingload.analyse("6205", load="1kN", clearance="C3", cage_angle=5, axial_load=0)
+    assert (radial.engine, combined.engine) == ("radial", "combined")
+    assert combined.stiffness_radial == pytest.approx(radial.stiffness_radial, rel=1e-9)
+    kxx = combined.stiffness_matrix[0][0]
+    assert kxx > combined.stiffness_radial * 1.001

@@ -132,8 +132,15 @@ class StiffnessViews:
 
     @property
     def stiffness_radial(self) -> Any:
-        """dF_x/dx, the radial stiffness along the load line. [N/mm]"""
-        return numerics.scalar_out(self.stiffness_matrix[..., 0, 0])
+        """dF_x/dx with the transverse force F_y held at zero (the ring free across the load
+        line, its other displacements held), as the radial engine gives it: the Schur
+        complement ``K_xx - K_xy K_yx / K_yy``; ``K_xx`` where nothing stiffens y
+        (``K_yy = 0``). [N/mm]"""
+        k = self.stiffness_matrix
+        kxx, kxy, kyx, kyy = k[..., 0, 0], k[..., 0, 1], k[..., 1, 0], k[..., 1, 1]
+        with np.errstate(divide="ignore", invalid="ignore"):
+            ratio = np.where(kyy > 0, kyx / np.where(kyy > 0, kyy, 1.0), 0.0)
+        return numerics.scalar_out(kxx - kxy * ratio)
 
     @property
     def stiffness_axial(self) -> Any:
