@@ -130,6 +130,11 @@ _EPS = float(np.finfo(float).eps)
 #: Largest rounding level of the ring forces (the core's ``score``) over the largest applied load
 #: solved; above it the load is refused (the answer balances it to about a tenth of that). [-]
 LEVEL_MAX = 1e-5
+#: A free direction of the ring (one no symmetry or misalignment holds) whose stiffness, the
+#: diagonal entry of the tangent in consistent units (the tilts as R_i times their angle: N/mm),
+#: is at most this times the largest diagonal entry is one the loads do not determine: a range
+#: of positions balances them (one ball loaded on the load line leaves y free). [-]
+SINGULAR = 1e-9
 #: Largest ring residual accepted, over the largest applied load, where the balls' own residuals
 #: (each balanced to BALL_TOLERANCE of its forces) move the ring forces more than ACCEPT of it:
 #: a light load against the balls' centrifugal forces (a tenth of LEVEL_MAX). [-]
@@ -186,6 +191,10 @@ class HighSpeedDistribution(CombinedDistribution):
         F_c. [N]
     gyroscopic_moments : ndarray (..., z)
         M_g. [N mm]
+    displacement_undetermined : ndarray of bool
+        The loads do not determine the ring's position in a free direction (its stiffness there
+        at most :data:`SINGULAR` of the largest, :func:`undetermined`): a range of positions
+        balances them; the one given is where the solver stopped.
     model : str
         :data:`MODEL`.
     """
@@ -206,6 +215,7 @@ class HighSpeedDistribution(CombinedDistribution):
     attitude_angles: Any = None
     centrifugal_forces: Any = None
     gyroscopic_moments: Any = None
+    displacement_undetermined: Any = None
     model: str = MODEL
 
 
@@ -660,7 +670,15 @@ def _solve(
         _put_state(st, bad[won], _take_state(st2, won))
     _check_resolved(st, bearings, flat)
     _check(st, total, flat)
-    return bearings, v, st, total
+    return bearings, v, st, total, undetermined(st.jac, held)
+
+
+def undetermined(jac: np.ndarray, held: np.ndarray) -> np.ndarray:
+    """(n,) bool: a direction of the ring not ``held`` (n, 5) whose stiffness, the diagonal of
+    the tangent ``jac`` (n, 5, 5) in consistent units, is at most SINGULAR of its largest."""
+    k = np.abs(np.diagonal(jac, axis1=1, axis2=2))
+    top = k.max(axis=1, initial=0.0)[:, None]
+    return np.any(~held.astype(bool) & (k <= SINGULAR * top) & (top > 0), axis=1)
 
 
 def _check_resolved(st: BallState, ring: Ring, flat: dict) -> None:
@@ -728,8 +746,8 @@ def bearing_result(
 ) -> HighSpeedDistribution:  # fmt: skip
     """The answer at speed of one bearing (n cases of the ``shape``): the static answer's fields
     (or those ``given``) with the dynamic ring position, balls and tangent; ``out`` = (ring, v,
-    state, iterations) of the core's solve, ``flat`` the cases' ``speed`` and ``moment`` (n,)."""
-    ring, v, st, its = out
+    state, iterations, undetermined (n,) bool) of the core's solve, ``flat`` the cases' ``speed`` and ``moment`` (n,)."""
+    ring, v, st, its, loose = out
     g1, g2, qi, qo, si, ci, fc, mg, wc, wr, beta, di = st.terms[:12]
     rr = geo.R_i
 
@@ -764,4 +782,5 @@ def bearing_result(
         orbit_speeds=ball(wc), spin_speeds=ball(wr), attitude_angles=ball(np.rad2deg(beta))
     )
     fields.update(centrifugal_forces=ball(fc), gyroscopic_moments=ball(mg))
+    fields.update(displacement_undetermined=case(loose))
     return HighSpeedDistribution(**fields)

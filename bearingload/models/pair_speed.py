@@ -335,7 +335,8 @@ def _result(static: PairDistribution, sh: _Shaft, geo: Any, flat: dict, shape: t
         p = st.parts[k]
         local = {"speed": flat["speed"], "moment": radius * p.gen[:, 3]}
         radial = np.where(sh.held[:, 0], 0.0, np.hypot(p.gen[:, 0], p.gen[:, 1]))
-        answer = (sh.ring, _local(sh, k, v), p, its)
+        # each bearing's own position is the shaft's: what the loads leave free is the pair's
+        answer = (sh.ring, _local(sh, k, v), p, its, np.zeros(radius.size, dtype=bool))
         density = flat["ball_density"].reshape(shape)
         bearings.append(
             _hs.bearing_result(

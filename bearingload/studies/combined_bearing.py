@@ -178,6 +178,12 @@ def combined_case(
     checks = tuple(c + (w,) if w else c for c, w in zip(checks, sides, strict=True))
     flat = np.reshape(r.tilt_undetermined, -1)
     checks = tuple(c + (TILT_UNDETERMINED,) if f else c for c, f in zip(checks, flat, strict=True))
+    loose = getattr(r, "displacement_undetermined", None)
+    if loose is not None:
+        flat = np.reshape(loose, -1)
+        checks = tuple(
+            c + (POSITION_UNDETERMINED,) if f else c for c, f in zip(checks, flat, strict=True)
+        )
     left = getattr(r, "thrust_neglected", None)
     if left is not None:
         flat = np.reshape(left, -1)
@@ -202,6 +208,17 @@ TILT_UNDETERMINED = (
     "carry load leave one tilt free, as with a few balls of an angular-contact bearing under a "
     "light thrust); the tilt given is the least of the range (where the solver could not reach "
     "it, one tilt of the range), and the ball loads are the same at every tilt of it"
+)
+
+
+#: The warning on a ring at speed with a free direction of no stiffness (the solver's
+#: ``displacement_undetermined``).
+POSITION_UNDETERMINED = (
+    "the loads do not determine the ring's position in one direction: its stiffness there is "
+    "about 0 (at most 1e-9 of the largest in the stiffness matrix), so a range of positions "
+    "balances them (as one loaded ball on the load line leaves y free); the displacement given "
+    "is one of the range, where the solver stopped, and a cage angle a little off may give "
+    "another"
 )
 
 
