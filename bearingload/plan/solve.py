@@ -71,9 +71,7 @@ def solve_case(
     from bearingload.models.registry import list_methods
 
     check_revolutions(revolutions)
-    allowed = (*list_methods(), "all")
-    if method not in allowed:
-        raise InputError("method", f"unknown method {method!r}; allowed: {', '.join(allowed)}")
+    check_method(method)
     given = case
     case, engine, at_speed = engine_of(case, method, revolutions)
     methods = list_methods() if method == "all" else [method]
@@ -86,6 +84,15 @@ def solve_case(
         return _radial(case, methods, revolutions, spell)
     except ConvergenceError as exc:
         raise in_case_terms(exc, given) from exc
+
+
+def check_method(method: Any) -> None:
+    """Refuse a ``method`` that is neither a registered one nor ``all``."""
+    from bearingload.models.registry import list_methods
+
+    allowed = (*list_methods(), "all")
+    if method not in allowed:
+        raise InputError("method", f"unknown method {method!r}; allowed: {', '.join(allowed)}")
 
 
 def in_case_terms(exc: ConvergenceError, case: Case) -> ConvergenceError:
