@@ -99,7 +99,8 @@ def _pair_key(planner: Any, v: dict[str, Any]) -> tuple[Any, ...]:
     ring, C_r, a moment given, the tilt radius, the ball dynamics), planned once for the cases
     of the same plan; its load checked."""
     b, *key = planner.planned(v, _pair_plan)
-    check_load(v)
+    if not planner.per_case:
+        check_load(v)
     tilted = "moment" in v or bool(v.get("moment_cross"))
     return (b, *key[:4], tilted, *key[4:])
 
