@@ -154,6 +154,10 @@ REFUSED = [
     {"bearing": "6205", "load": "1kN", "method": 3},
     {"balls": 8, "stiffness": 1e5, "load": 1000, "axial_load": 100},
     {"balls": 8, "stiffness": 1e5},
+    {"bearing": "7205BDB", "load": "1kN", "method": "stribeck"},
+    {"bearing": "7205BDB", "load": "1kN", "revolutions": 1e6},
+    {"bearing": "7205B", "arrangement": "DB", "load": "1kN", "clearance": "C3"},
+    {"bearing": "7205BDB", "load": "1kN", "misalignment": 0.05},
 ]
 
 
