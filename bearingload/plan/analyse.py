@@ -60,21 +60,40 @@ def analyse(
     try:
         return _analyse(bearing, method, revolutions, options)
     except InputError as exc:  # a model's name of an input, as the caller calls it
-        from bearingload.plan.inputs import argument_of
-
-        name = argument_of(exc.parameter)
-        if name == exc.parameter:
+        called = as_called(exc)
+        if called is exc:
             raise
-        raise exc.named(name) from None
+        raise called from None
 
 
-def _analyse(
-    bearing: str | None, method: str, revolutions: float | str | None, options: dict[str, Any]
-) -> Solution:
+def as_called(exc: Exception, case: Any = None) -> Exception:
+    """The error ``exc`` as :func:`analyse` raises it: an input a model names by its own name
+    named by its argument (``radial_load`` -> ``load``, :func:`bearingload.plan.inputs.
+    argument_of`); a :class:`~bearingload.errors.ConvergenceError` of the
+    :class:`~bearingload.plan.case.Case` ``case`` naming its inputs as the case does
+    (:func:`bearingload.plan.solve.in_case_terms`); ``exc`` itself where nothing changes."""
+    from bearingload.errors import ConvergenceError
+    from bearingload.plan.inputs import argument_of
+
+    if isinstance(exc, InputError):
+        name = argument_of(exc.parameter)
+        return exc if name == exc.parameter else exc.named(name)
+    if isinstance(exc, ConvergenceError) and case is not None:
+        from bearingload.plan.solve import in_case_terms
+
+        return in_case_terms(exc, case)
+    return exc
+
+
+def read_arguments(
+    bearing: Any, revolutions: Any, options: dict[str, Any]
+) -> tuple[dict[str, Any], set[str], float | None]:
+    """(the inputs of a case, None where not given; the names of those given as bare numbers;
+    the life ``revolutions`` [rev] or None) read from :func:`analyse`'s arguments: each option
+    by its reader (:data:`bearingload.plan.inputs.READERS`), the load required as solve
+    requires ``--load``."""
     from bearingload.errors import MissingError
-    from bearingload.plan.case import Case
     from bearingload.plan.inputs import quantity, read_inputs, text
-    from bearingload.plan.solve import solve_case
     from bearingload.units import is_bare
 
     values = read_inputs(options)
@@ -87,6 +106,16 @@ def _analyse(
     }
     revolutions_of = quantity("revolutions", positive=True)
     life = None if revolutions is None else revolutions_of(revolutions, "revolutions")
+    return values, bare, life
+
+
+def _analyse(
+    bearing: str | None, method: str, revolutions: float | str | None, options: dict[str, Any]
+) -> Solution:
+    from bearingload.plan.case import Case
+    from bearingload.plan.solve import solve_case
+
+    values, bare, life = read_arguments(bearing, revolutions, options)
     given = {n for n, v in values.items() if v is not None}
     case = Case.of(values, given=given, bare=bare)
     return solve_case(case, method=method, revolutions=life)

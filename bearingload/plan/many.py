@@ -46,7 +46,8 @@ from bearingload.plan.solve import (
     speed_hint,
 )
 
-#: The inputs of a bearing pair: one of them given, every case is a pair.
+#: The inputs of a bearing pair: a column of one, every row of a file is a pair (a case of
+#: the library given one is a pair).
 PAIR_PARAMS = ("arrangement", "preload", "width")
 #: Inputs that make a case a bearing (resolved) rather than a ring given by z and K.
 _GEOMETRY = ("bearing", "ball_diameter", "pitch_diameter")
@@ -66,7 +67,8 @@ Part = tuple[list[int], dict[str, Any]]
 @dataclass
 class Many:
     """Solved cases: the ``rows`` solved (indices of the cases, in input order), their
-    ``values`` (key -> array or list over ``rows``, None where not given; ``warnings``: one
+    ``values`` (key -> array or list aligned with ``rows``, None where not given or where a
+    quantity does not apply to a row's kind, a pair's or a single bearing's; ``warnings``: one
     tuple per case) and the ``errors`` of the cases not solved (index -> the refusal)."""
 
     rows: list[int] = field(default_factory=list)
@@ -88,11 +90,21 @@ def case_of(v: Mapping[str, Any]) -> Case:
 class Planner:
     """Plans and solves many cases whose inputs are among ``names``; each distinct plan of a
     case (its resolved bearing and group, or its refusal) is kept from call to call. Cases of
-    pairs (``pairs``) are solved by :func:`bearingload.plan.many_pairs.solve_pair_cases`."""
+    pairs (``pairs``) are solved by :func:`bearingload.plan.many_pairs.solve_pair_cases`.
 
-    def __init__(self, names: Collection[str]) -> None:
+    A file's cases (batch) are planned by its columns: with a column of a load beyond the
+    radial one (``loads``) an angular-contact designation's rows take the combined engine,
+    without one the radial engine at rest; each row's load is checked by :func:`check_load`.
+    ``per_case`` cases (the library's) are planned by their own inputs only, as
+    :func:`~bearingload.plan.solve.engine_of` plans one: an angular-contact designation always
+    takes the combined engine, as does a ring given by hand with a load beyond the radial one
+    (which the combined engine refuses), and the load is left to the reader of the arguments
+    (:func:`bearingload.plan.analyse.read_arguments`) and the solvers, as for one case."""
+
+    def __init__(self, names: Collection[str], *, per_case: bool = False) -> None:
         self.names = frozenset(names)
-        self.loads = any(n in LOAD_PARAMS for n in self.names)
+        self.per_case = per_case
+        self.loads = per_case or any(n in LOAD_PARAMS for n in self.names)
         self.pairs = any(n in PAIR_PARAMS for n in self.names)
         self.plans: dict[tuple[Any, ...], Any] = {}
         self.bare: dict[str, list[bool]] = {}
@@ -121,7 +133,7 @@ class Planner:
         with_service(parts, cols, bad)
         for idx, out in parts:  # the oil's inputs, as given (the viscosity is nu's)
             out |= {c: [cols[c][i] for i in idx] for c in OIL_INPUTS if c in cols}
-        many = _merged(parts)
+        many = merged(parts)
         many.errors = dict(bad)
         return many
 
@@ -154,7 +166,8 @@ class Planner:
         key, cols["_lever"][i] = self.planned(v, self._plan)
         if key is None:
             return None
-        check_load(v, key[0] == "combined")
+        if not self.per_case:
+            check_load(v, key[0] == "combined")
         self.refuse_bare(v, i, key[1])
         return key
 
@@ -186,8 +199,9 @@ class Planner:
         """(the group, the lever of the tilt [mm]) of a case of inputs ``v``, by the plan's
         rules: the engine, the refusals; (None, None) for a ring given by z and K."""
         case = case_of(v)
-        if case.by_hand:
-            if self.loads and case.first_given(LOAD_PARAMS) is not None:
+        combined = self.loads and case.first_given(LOAD_PARAMS) is not None
+        if case.by_hand and not (combined and self.per_case):
+            if combined:
                 raise InputError(
                     "bearing", "missing: the combined load needs a bearing or its ball geometry"
                 )
@@ -537,9 +551,10 @@ def split(
     return split(call, key, idx[:half], cols, bad) + split(call, key, idx[half:], cols, bad)
 
 
-def _merged(parts: Sequence[Part]) -> Many:
-    """The cases of ``parts`` in input order, each value over them (an array where every part
-    gives one of one kind, else a list with None where a part has none)."""
+def merged(parts: Sequence[Part]) -> Many:
+    """The cases of ``parts`` (``(indices, values over them)``, the parts' indices disjoint)
+    in input order, each value over them (an array where every part gives one of one kind,
+    else a list with None where a part has none)."""
     out = Many()
     if not parts:
         return out

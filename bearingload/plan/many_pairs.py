@@ -13,6 +13,7 @@ moments and cage angles), each case solved on its own; each pair's lives then as
 
 from __future__ import annotations
 
+from functools import partial
 from typing import Any
 
 from bearingload.errors import BearingloadError, ConvergenceError, InputError
@@ -98,20 +99,25 @@ def _pair_key(planner: Any, v: dict[str, Any]) -> tuple[Any, ...]:
     """The group of a case of inputs ``v``: (resolved bearing, arrangement, width, rotating
     ring, C_r, a moment given, the tilt radius, the ball dynamics), planned once for the cases
     of the same plan; its load checked."""
-    b, *key = planner.planned(v, _pair_plan)
-    check_load(v)
+    b, *key = planner.planned(v, partial(_pair_plan, per_case=planner.per_case))
+    if not planner.per_case:
+        check_load(v)
     tilted = "moment" in v or bool(v.get("moment_cross"))
     return (b, *key[:4], tilted, *key[4:])
 
 
-def _pair_plan(v: dict[str, Any]) -> tuple[Any, ...]:
+def _pair_plan(v: dict[str, Any], per_case: bool = False) -> tuple[Any, ...]:
     """The group of a case of inputs ``v`` but whether a moment is given, by the plan's rules
     for a pair (:func:`~bearingload.plan.solve.engine_of`, :func:`~bearingload.plan.bearing.
-    pair_bearing`)."""
+    pair_bearing`); a ``per_case`` case's (the library's) options of a single bearing refused
+    as solve refuses them (:func:`~bearingload.plan.solve.refuse_pair_options`; a file of
+    pairs has no column of them)."""
     from bearingload.plan.bearing import check_rotating, pair_bearing
-    from bearingload.plan.solve import engine_of
+    from bearingload.plan.solve import engine_of, refuse_pair_options
 
     pair, engine, _ = engine_of(case_of(v))
+    if per_case and engine == "pair":
+        refuse_pair_options(pair, v.get("method", "exact"), v.get("revolutions"))
     if engine != "pair":
         raise InputError(
             "arrangement",

@@ -71,21 +71,28 @@ def solve_case(
     from bearingload.models.registry import list_methods
 
     check_revolutions(revolutions)
-    allowed = (*list_methods(), "all")
-    if method not in allowed:
-        raise InputError("method", f"unknown method {method!r}; allowed: {', '.join(allowed)}")
+    check_method(method)
     given = case
     case, engine, at_speed = engine_of(case, method, revolutions)
     methods = list_methods() if method == "all" else [method]
     try:
         if engine == "pair":
-            refuse_revolutions(revolutions, "a bearing pair", "it prints L10r and L10 of the pair")
-            return _pair(case, method, spell)
+            refuse_pair_options(case, method, revolutions)
+            return _pair(case, spell)
         if engine == "combined":
             return _combined(case, method, revolutions, at_speed, spell)
         return _radial(case, methods, revolutions, spell)
     except ConvergenceError as exc:
         raise in_case_terms(exc, given) from exc
+
+
+def check_method(method: Any) -> None:
+    """Refuse a ``method`` that is neither a registered one nor ``all``."""
+    from bearingload.models.registry import list_methods
+
+    allowed = (*list_methods(), "all")
+    if method not in allowed:
+        raise InputError("method", f"unknown method {method!r}; allowed: {', '.join(allowed)}")
 
 
 def in_case_terms(exc: ConvergenceError, case: Case, cage_given: bool = True) -> ConvergenceError:
@@ -308,17 +315,24 @@ def speed_hint(exc: InputError, radial: bool) -> InputError | None:
     )
 
 
-def _pair(case: Case, method: str, spell: Any) -> Solution:
-    """A pair of angular-contact ball bearings (an arrangement, or 7205BDB)."""
-    from bearingload.studies.bearing_pair import pair_lives, solve_bearing_pair
-    from bearingload.studies.life_basis import combined_basis
-
+def refuse_pair_options(case: Case, method: str, revolutions: float | None) -> None:
+    """Refuse for a pair (``case``, as :func:`engine_of` gives it) what it does not take: a life
+    of the allowable radial load, a method other than exact, a misalignment, a clearance."""
+    refuse_revolutions(revolutions, "a bearing pair", "it prints L10r and L10 of the pair")
     if method != "exact":
         raise InputError("method", "a bearing pair is solved by the exact model only")
     tilt = "the shaft's tilt follows from the loads; give 'moment'"
     case.refuse(("misalignment",), "a bearing pair", tilt)
     why = "the design contact angle fixes the geometry of an angular-contact bearing"
     case.refuse(("clearance",), "a bearing pair", why + " (no clearance)")
+
+
+def _pair(case: Case, spell: Any) -> Solution:
+    """A pair of angular-contact ball bearings (an arrangement, or 7205BDB), its options
+    checked (:func:`refuse_pair_options`)."""
+    from bearingload.studies.bearing_pair import pair_lives, solve_bearing_pair
+    from bearingload.studies.life_basis import combined_basis
+
     b = pair_bearing(case)
     dynamics = case.dynamics_arguments()  # at a speed the ball dynamics, unless quasi-static
     try:
