@@ -214,3 +214,22 @@ def scalar_out(value: Any) -> Any:
         return value
     arr = np.asarray(value)
     return arr.item() if arr.ndim == 0 else arr
+
+
+#: A transverse stiffness K_yy at most this fraction of K_xx leaves y free: the loads do not
+#: determine it, and :func:`radial_stiffness` gives K_xx (as the speed model's free-direction
+#: test, :data:`bearingload.models.high_speed.SINGULAR`). [-]
+FREE_TRANSVERSE = 1e-9
+
+
+def radial_stiffness(kxx: Any, kxy: Any, kyx: Any, kyy: Any) -> Any:
+    """The radial stiffness dF_x/dx with the transverse force F_y held at zero, the Schur
+    complement ``K_xx - K_xy K_yx / K_yy`` of a ring's tangent, elementwise; ``K_xx`` where
+    nothing stiffens y (``K_yy`` at most :data:`FREE_TRANSVERSE` of ``|K_xx|``, one ball on the
+    load line: y is free, and the complement of a rounding-level K_yy would cancel K_xx). [N/mm]
+    """
+    kxx, kxy, kyx, kyy = (np.asarray(v, dtype=float) for v in (kxx, kxy, kyx, kyy))
+    stiff = kyy > FREE_TRANSVERSE * np.abs(kxx)
+    with np.errstate(divide="ignore", invalid="ignore"):
+        ratio = np.where(stiff, kyx / np.where(stiff, kyy, 1.0), 0.0)
+    return scalar_out(kxx - kxy * ratio)

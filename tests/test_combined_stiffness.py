@@ -245,3 +245,44 @@ def test_radial_stiffness_is_one_quantity_in_both_engines():
     assert combined.stiffness_radial == pytest.approx(radial.stiffness_radial, rel=1e-9)
     kxx = combined.stiffness_matrix[0][0]
     assert kxx > combined.stiffness_radial * 1.001
+
+
+def test_radial_stiffness_with_y_left_free_is_k_xx():
+    """One ball on the load line leaves y free: a rounding-level K_yy (5e-23 against K_xx
+    1.7e4) must not cancel K_xx in the Schur complement (it printed 0 or -3.6e-12 N/mm)."""
+    from bearingload.numerics import radial_stiffness
+
+    assert radial_stiffness(16706.9, 9e-10, 9e-10, 5e-23) == 16706.9
+    assert radial_stiffness(4.0, 1.0, 1.0, 2.0) == 3.5
+    from bearingload.models.high_speed import solve_high_speed
+
+    r = solve_high_speed(
+        9,
+        10.0,
+        ball_diameter=7.938,
+        pitch_diameter=38.5,
+        clearance=0.05,
+        speed=20000.0,
+        cage_angle=1e-11,
+    )
+    at_zero = solve_high_speed(
+        9, 10.0, ball_diameter=7.938, pitch_diameter=38.5, clearance=0.05, speed=20000.0
+    )
+    assert float(r.stiffness_radial) == pytest.approx(float(at_zero.stiffness_radial), rel=1e-6)
+
+
+def test_the_core_decides_a_load_too_small():
+    """At the limit numpy's power and libm's pow may judge a load apart: the core's flag is the
+    decision, the Python check only words it (this case was solved silently)."""
+    from bearingload.errors import InputError
+    from bearingload.models.combined import solve_combined
+
+    with pytest.raises(InputError, match="too small for the combined solver"):
+        solve_combined(
+            9,
+            1.844013100972762e-08,
+            ball_diameter=6.015005001667222,
+            pitch_diameter=38.5,
+            clearance=0.0,
+            stiffness=1e4,
+        )

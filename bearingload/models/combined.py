@@ -135,12 +135,9 @@ class StiffnessViews:
         """dF_x/dx with the transverse force F_y held at zero (the ring free across the load
         line, its other displacements held), as the radial engine gives it: the Schur
         complement ``K_xx - K_xy K_yx / K_yy``; ``K_xx`` where nothing stiffens y
-        (``K_yy = 0``). [N/mm]"""
+        (:func:`bearingload.numerics.radial_stiffness`). [N/mm]"""
         k = self.stiffness_matrix
-        kxx, kxy, kyx, kyy = k[..., 0, 0], k[..., 0, 1], k[..., 1, 0], k[..., 1, 1]
-        with np.errstate(divide="ignore", invalid="ignore"):
-            ratio = np.where(kyy > 0, kyx / np.where(kyy > 0, kyy, 1.0), 0.0)
-        return numerics.scalar_out(kxx - kxy * ratio)
+        return numerics.radial_stiffness(k[..., 0, 0], k[..., 0, 1], k[..., 1, 0], k[..., 1, 1])
 
     @property
     def stiffness_axial(self) -> Any:
@@ -744,7 +741,7 @@ def _problem(
         z, rows, cage, lengths, k_ref, angular, imposed, limits
     )
     if status.any():
-        _refuse_loads(loads, geo, k_ref, angular, at)
+        _refuse_loads(loads, geo, k_ref, angular, at, status)
     fixed = np.zeros((n, 5), dtype=bool)
     fixed[:, 3] = imposed
     scale, a_hat, pre, gap, b_hi, b_lo, t_imp, f_ref = out
@@ -758,9 +755,13 @@ def _refuse_loads(
     k_ref: np.ndarray,
     angular: bool,
     at: Callable[..., str],
+    status: np.ndarray,
 ) -> None:
-    """InputError on the loads the core's ``combined_problem`` flagged (no load, a moment over
-    its lever beyond the largest number, loads too small or, angular contact, too large)."""
+    """InputError on the loads the core's ``combined_problem`` flagged (``status``: no load, a
+    moment over its lever beyond the largest number, loads too small or, angular contact, too
+    large); the core's flags decide, these checks word the refusal."""
+    from bearingload.models import _core
+
     fr, fa, mm, mc = loads[:4]
     f_ref = reference_force(fr, fa, mm, mc, geo.R_i)
     if (f_ref <= 0).any():
@@ -769,9 +770,13 @@ def _refuse_loads(
             "give a radial load, an axial load or a moment",
             element=at("radial_load", f_ref <= 0, "N"),
         )
-    check_scale(f_ref, k_ref, geo.A, angular, lambda: load_sizes(fr, fa, mm, mc, geo.R_i))
+    sizes = lambda: load_sizes(fr, fa, mm, mc, geo.R_i)  # noqa: E731
+    check_scale(f_ref, k_ref, geo.A, angular, sizes, status == _core.SetupStatus.TOO_LIGHT)
     if angular:
-        _check_angular_scale(f_ref, k_ref, geo.A, (fr, fa, np.hypot(mm, mc) / geo.R_i))
+        moment = np.hypot(mm, mc) / geo.R_i
+        _check_angular_scale(
+            f_ref, k_ref, geo.A, (fr, fa, moment), status == _core.SetupStatus.TOO_HEAVY
+        )
 
 
 def call_balls(balls: Any) -> int:
@@ -1135,13 +1140,15 @@ def check_scale(
     big_a: np.ndarray,
     angular: bool = False,
     sizes: Callable[[], dict[str, np.ndarray]] | None = None,
+    flagged: Any = False,
 ) -> None:
     """Refuse loads so small against the groove geometry that the scaled problem loses its
     digits (the radial solver, without an axial load, takes any ratio; an angular-contact
     bearing, ``angular``, has no other solver: the message gives the smallest load taken).
     ``sizes`` (called on a refusal: :func:`load_sizes`, by parameter [N]) name the parameter of
     the largest load of the first case refused (the first named among equals); without them,
-    ``radial_load``."""
+    ``radial_load``. ``flagged``: the cases the compiled core judged too light (its scale by
+    libm's pow may differ from numpy's in the last bit at the limit: the core decides)."""
     with np.errstate(over="ignore", divide="ignore"):
         scale = (f_ref / k_ref) ** (2.0 / 3.0)
     if not (scale <= 1e100).all():  # the radial engine's bound of the one-ball approach
@@ -1152,7 +1159,7 @@ def check_scale(
             "the modulus and the tilt lever",
         )
     a = big_a if np.shape(big_a) == scale.shape else np.broadcast_to(big_a, scale.shape)
-    bad = a / scale > GEOMETRY_RATIO_MAX
+    bad = (a / scale > GEOMETRY_RATIO_MAX) | flagged
     if bad.any():
         f_min = float(np.max(k_ref * (a / GEOMETRY_RATIO_MAX) ** 1.5))
         step = 10.0 ** (math.floor(math.log10(f_min)) - 1)  # shown to 2 digits, rounded up
@@ -1210,13 +1217,18 @@ ANGULAR_RATIO_MIN = 1e-4
 
 
 def _check_angular_scale(
-    f_ref: np.ndarray, k_ref: np.ndarray, big_a: np.ndarray, loads: tuple[np.ndarray, ...]
+    f_ref: np.ndarray,
+    k_ref: np.ndarray,
+    big_a: np.ndarray,
+    loads: tuple[np.ndarray, ...],
+    flagged: Any = False,
 ) -> None:
     """Refuse loads so large against an angular-contact bearing's groove geometry A that its
-    one-sided equilibrium is not solved reliably (see :data:`ANGULAR_RATIO_MIN`)."""
+    one-sided equilibrium is not solved reliably (see :data:`ANGULAR_RATIO_MIN`); ``flagged``:
+    the cases the compiled core judged so (as :func:`check_scale`)."""
     a = big_a if np.shape(big_a) == f_ref.shape else np.broadcast_to(big_a, f_ref.shape)
     with np.errstate(over="ignore", divide="ignore"):
-        bad = a / (f_ref / k_ref) ** (2.0 / 3.0) < ANGULAR_RATIO_MIN
+        bad = (a / (f_ref / k_ref) ** (2.0 / 3.0) < ANGULAR_RATIO_MIN) | flagged
     if bad.any():
         i = int(np.argmax(bad))
         f_max = float(k_ref[i] * (a[i] / ANGULAR_RATIO_MIN) ** 1.5)

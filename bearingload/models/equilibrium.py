@@ -144,15 +144,11 @@ class LoadDistribution:
         """Tangent radial stiffness ``dF_r/dx`` with the transverse force held at zero. [N/mm]
 
         The Schur complement ``K_xx - K_xy (K_xy/K_yy)`` (no squared term, so neither overflow
-        nor underflow); where only one ball carries (``K_yy = 0``, no transverse stiffness) it is
-        ``K_xx``.
+        nor underflow); where only one ball carries (``K_yy`` about 0, no transverse stiffness)
+        it is ``K_xx`` (:func:`bearingload.numerics.radial_stiffness`).
         """
-        kxx = self.stiffness_matrix[..., 0, 0]
-        kxy = self.stiffness_matrix[..., 0, 1]
-        kyy = self.stiffness_matrix[..., 1, 1]
-        with np.errstate(divide="ignore", invalid="ignore"):
-            ratio = np.where(kyy > 0, kxy / np.where(kyy > 0, kyy, 1.0), 0.0)
-        return numerics.scalar_out(kxx - kxy * ratio)
+        k = self.stiffness_matrix
+        return numerics.radial_stiffness(k[..., 0, 0], k[..., 0, 1], k[..., 1, 0], k[..., 1, 1])
 
     @property
     def ball_angles(self) -> np.ndarray:

@@ -482,16 +482,17 @@ def _scaled(z: int, c: dict, geo: Any, k_ref: np.ndarray) -> tuple[Problem, np.n
         z, rows, cage, lengths, k_ref, False, False, limits
     )
     if status.any():
-        _refuse_scale(geo, k_ref, *(c[k] for k in names))
+        _refuse_scale(geo, k_ref, status == _core.SetupStatus.TOO_LIGHT, *(c[k] for k in names))
     scale, a_hat, pre, gap, b_hi, b_lo, t_imp, f_ref = out
     none = np.zeros((n, 5), dtype=bool)
     scaled = (scale, a_hat, pre, gap, b_hi, b_lo, np.zeros((n, 5)), t_imp, none, none)
     return Problem(z, cos_, sin_, *scaled, f_ref, k_ref, np.ones(n, dtype=bool)), f, mirror
 
 
-def _refuse_scale(geo: Any, k_ref: np.ndarray, *loads: np.ndarray) -> None:
+def _refuse_scale(geo: Any, k_ref: np.ndarray, flagged: np.ndarray, *loads: np.ndarray) -> None:
     """InputError on the loads of a pair the core flags: none at all, or too small for the
-    groove geometry (the combined model's check, its advice replaced)."""
+    groove geometry (``flagged``: the core decides; the combined model's check words it, its
+    advice replaced)."""
     fr, fa, mm, mc, fp = loads
     f_ref = np.maximum(_comb.reference_force(fr, fa, mm, mc, geo.R_i), fp)
     if (f_ref <= 0).any():
@@ -502,7 +503,7 @@ def _refuse_scale(geo: Any, k_ref: np.ndarray, *loads: np.ndarray) -> None:
         return {"preload": fp} | _comb.load_sizes(fr, fa, mm, mc, geo.R_i)
 
     try:
-        _comb.check_scale(f_ref, k_ref, geo.A, sizes=sizes)
+        _comb.check_scale(f_ref, k_ref, geo.A, sizes=sizes, flagged=flagged)
     except InputError as exc:  # its advice (the radial solver) does not apply to a pair
         if exc.reason not in (_comb.TOO_LIGHT, _comb.TOO_LIGHT_ANGULAR):
             raise
