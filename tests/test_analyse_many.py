@@ -200,7 +200,16 @@ def test_a_case_that_does_not_converge_is_named_by_its_arguments_as_analyse_name
 def test_a_case_that_is_no_mapping_is_refused_by_its_index_and_any_iterable_is_taken():
     many = analyse_many([SINGLE, "6205"])
     assert many.rows == [0] and isinstance(many.errors[1], InputError)
-    assert str(many.errors[1]) == "cases[1]: must be a mapping of analyse's arguments"
+    assert (
+        str(many.errors[1]) == "cases[1]: must be a mapping of analyse's arguments, by their names"
+    )
     assert analyse_many(c for c in [SINGLE, SINGLE]).rows == [0, 1]
     with pytest.raises(InputError, match="^cases: "):
         analyse_many(SINGLE)
+
+
+def test_a_case_keyed_by_no_name_is_refused_by_its_index():
+    """A key that is no text is refused for its case; the other cases are solved."""
+    many = analyse_many([{"bearing": "6205", "load": "1kN"}, {1: 2, "bearing": "6205"}])
+    assert many.rows == [0]
+    assert many.errors[1].parameter == "cases" and "[1]" in str(many.errors[1])

@@ -60,3 +60,12 @@ def test_the_command_line_warns_where_the_loads_leave_a_direction_free(capsys, a
     assert code == 0 and f"Warning: {POSITION_UNDETERMINED}" in err
     code, _, err = run_entry(capsys, "solve", *args, "--cage-angle", "1e-9")
     assert code == 0 and POSITION_UNDETERMINED not in err
+
+
+def test_table_life_warns_as_solve_where_a_direction_is_free(capsys):
+    """table life's rows at speed carry the solver's free-direction flag, as solve's case does."""
+    ring = ("-z", "9", "--ball-diameter", "7.938", "--pitch-diameter", "38.5")
+    load = ("-F", "20N", "-A", "0", "--speed", "15000", "--cage-angle", "1e-12")
+    args = ("table", "life", *ring, "--dynamic-rating", "14kN", *load, "--clearances", "50um")
+    code, _, err = run_entry(capsys, *args)
+    assert code == 0 and f"Warning: {POSITION_UNDETERMINED}" in err

@@ -55,7 +55,7 @@ def analyse_many(cases: Iterable[Mapping[str, Any]]) -> Many:
     ------
     InputError
         ``cases`` a single mapping, or not iterable; a case that is no mapping is refused in
-        ``errors`` (``cases[1]: must be a mapping of analyse's arguments``).
+        ``errors`` (``cases[1]: must be a mapping of analyse's arguments, by their names``).
 
     Examples
     --------
@@ -73,8 +73,8 @@ def analyse_many(cases: Iterable[Mapping[str, Any]]) -> Many:
     pairs: list[int] = []
     singles: list[int] = []
     for i, given in enumerate(cases):
-        if not isinstance(given, Mapping):
-            why = "must be a mapping of analyse's arguments"
+        if not isinstance(given, Mapping) or not all(isinstance(k, str) for k in given):
+            why = "must be a mapping of analyse's arguments, by their names"
             errors[i] = InputError("cases", why, element=f"[{i}]")
             continue
         try:

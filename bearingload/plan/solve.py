@@ -401,16 +401,23 @@ def with_speed_warnings(cases: list[Any], speed: float | None) -> list[Any]:
 
 def with_solver_findings(result: Any, flags: Any, axial_load: float, radial_load: float) -> Any:
     """``result`` (a study's answer with its ``warnings``) with the warnings on what the
-    combined solver did in any of its cases (``flags``: the solver's ``thrust_neglected`` and
-    ``tilt_undetermined``, None where it gives none) added once each, in solve's words: a thrust
-    it left out, a tilt the loads do not determine; ``result`` itself where there is none."""
+    combined solver did in any of its cases (``flags``: the solver's ``thrust_neglected``,
+    ``tilt_undetermined`` and, at speed, ``displacement_undetermined``, None where it gives
+    none) added once each, in solve's words: a thrust it left out, a tilt or a position the
+    loads do not determine; ``result`` itself where there is none."""
     import numpy as np
 
-    from bearingload.studies.combined_bearing import TILT_UNDETERMINED, thrust_neglected_warning
+    from bearingload.studies.combined_bearing import (
+        POSITION_UNDETERMINED,
+        TILT_UNDETERMINED,
+        thrust_neglected_warning,
+    )
 
     found = list(result.warnings)
     if np.any(getattr(flags, "tilt_undetermined", None)):
         found.append(TILT_UNDETERMINED)
+    if np.any(getattr(flags, "displacement_undetermined", None)):
+        found.append(POSITION_UNDETERMINED)
     if np.any(getattr(flags, "thrust_neglected", None)):
         found.append(thrust_neglected_warning(axial_load, radial_load))
     new = tuple(w for w in dict.fromkeys(found) if w not in result.warnings)

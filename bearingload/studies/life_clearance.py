@@ -89,9 +89,10 @@ class LifeAgainstClearance:
         model.
     heaviest_contact_angle : ndarray or None
         Each row's contact angle of its heaviest ball (the film's, as solve's). [°]
-    thrust_neglected, tilt_undetermined : ndarray of bool or None
+    thrust_neglected, tilt_undetermined, displacement_undetermined : ndarray of bool or None
         The solver's flags of each row (:class:`~bearingload.models.combined.
-        CombinedDistribution`): a thrust it left out, a tilt the loads do not determine.
+        CombinedDistribution`): a thrust it left out, a tilt the loads do not determine, at
+        speed a position they do not determine.
     """
 
     bearing: ResolvedBearing
@@ -120,6 +121,7 @@ class LifeAgainstClearance:
     ball_density: float | None = None
     thrust_neglected: np.ndarray | None = None
     tilt_undetermined: np.ndarray | None = None
+    displacement_undetermined: np.ndarray | None = None
 
 
 def _rows(flags: Any, n: int) -> np.ndarray | None:
@@ -284,6 +286,7 @@ def life_against_clearance(
         heaviest_contact_angle=_heaviest_angle(r)[:n],
         thrust_neglected=_rows(getattr(r, "thrust_neglected", None), n),
         tilt_undetermined=_rows(getattr(r, "tilt_undetermined", None), n),
+        displacement_undetermined=_rows(getattr(r, "displacement_undetermined", None), n),
     )
 
 
