@@ -213,3 +213,20 @@ def test_a_case_keyed_by_no_name_is_refused_by_its_index():
     many = analyse_many([{"bearing": "6205", "load": "1kN"}, {1: 2, "bearing": "6205"}])
     assert many.rows == [0]
     assert many.errors[1].parameter == "cases" and "[1]" in str(many.errors[1])
+
+
+@pytest.mark.parametrize(
+    "case",
+    [
+        {"bearing": "7205BDB", "load": "1kN", "preload": "300N", "method": "all"},
+        {"bearing": "7205BDB", "load": "1kN", "preload": "300N", "clearance_pick": "range"},
+        {"bearing": "6205", "load": "1kN", "method": None},
+    ],
+)
+def test_a_pair_or_a_method_is_refused_in_analyses_words(case):
+    """A pair's own refusals come before those of the one-call arrays; a method given as None
+    is refused as analyse refuses it."""
+    with pytest.raises(InputError) as alone:
+        analyse(**case)
+    many = analyse_many([case])
+    assert many.rows == [] and str(many.errors[0]) == str(alone.value)

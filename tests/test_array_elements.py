@@ -68,3 +68,11 @@ def test_every_limit_names_the_first_bad_element(call, named):
     with pytest.raises(InputError) as info:
         call()
     assert str(info.value).startswith(f"{named}: "), str(info.value)
+
+
+def test_a_pair_without_a_load_names_its_case():
+    from bearingload.models.pair import solve_pair
+
+    geometry = {"contact_angle": 40, "ball_diameter": 7.938, "pitch_diameter": 38.5}
+    with pytest.raises(InputError, match=r"^radial_load\[1\] = 0 N: give a radial load"):
+        solve_pair(12, [1000, 0], [300, 0], width=15, **geometry)

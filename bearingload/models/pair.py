@@ -496,7 +496,11 @@ def _refuse_scale(geo: Any, k_ref: np.ndarray, flagged: np.ndarray, *loads: np.n
     fr, fa, mm, mc, fp = loads
     f_ref = np.maximum(_comb.reference_force(fr, fa, mm, mc, geo.R_i), fp)
     if (f_ref <= 0).any():
-        raise InputError("radial_load", "give a radial load, an axial load, a moment or a preload")
+        raise InputError(
+            "radial_load",
+            "give a radial load, an axial load, a moment or a preload",
+            element=validate.element(fr, f_ref <= 0, "N"),
+        )
 
     # the first case refused names the parameter of its largest load, the preload among them
     def sizes() -> dict[str, np.ndarray]:

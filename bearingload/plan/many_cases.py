@@ -143,9 +143,10 @@ def _read_case(given: Mapping[str, Any]) -> Read:
     values = {k: v for k, v in values.items() if v is not None}
     case = Case.of(values)
     method = given.get("method")
-    if method is not None:
+    pair = _is_pair(case)  # a pair's own refusals (the exact model only ...) come first
+    if "method" in given:
         check_method(method)
-        if method == "all":
+        if method == "all" and not pair:
             raise InputError(
                 "method",
                 "'all' (every method side by side) is analyse's; analyse_many takes one method "
@@ -154,7 +155,8 @@ def _read_case(given: Mapping[str, Any]) -> Read:
         values["method"] = method
     if life is not None:
         values["revolutions"] = life
-    refuse_range(case, "analyse_many")
+    if not pair:
+        refuse_range(case, "analyse_many")
     if "stiffness" in values:
         values["stiffness"] = case.stiffness_value()
     return values, sorted(n for n in bare if n in BEARING_SCALE), case
