@@ -200,6 +200,13 @@ def test_committed_tables_match_the_code():
     assert r.output.startswith("28 listed files of ")
 
 
+def _python(code: str) -> subprocess.CompletedProcess:
+    """``code`` run by a fresh interpreter (the test's environment), its output captured."""
+    return subprocess.run(
+        [sys.executable, "-c", code], capture_output=True, text=True, timeout=60, env=os.environ
+    )
+
+
 def test_terminal_calculation_imports_no_scipy():
     code = (
         "import sys\n"
@@ -208,9 +215,7 @@ def test_terminal_calculation_imports_no_scipy():
         "main.main(args=['solve', '-z', '8', '-F', '1', '-K', '1'], standalone_mode=False)\n"
         "print('scipy' in sys.modules, 'tabulate' in sys.modules)\n"
     )
-    r = subprocess.run(
-        [sys.executable, "-c", code], capture_output=True, text=True, timeout=60, env=os.environ
-    )
+    r = _python(code)
     assert r.returncode == 0, r.stderr
     assert r.stdout.strip().splitlines()[-1] == "False False"
 
@@ -231,9 +236,7 @@ def test_console_command_runs_no_garbage_collection_in_a_terminal_calculation():
         "    pass\n"
         "print(runs.count('start'), file=sys.stderr)\n"
     )
-    r = subprocess.run(
-        [sys.executable, "-c", code], capture_output=True, text=True, timeout=60, env=os.environ
-    )
+    r = _python(code)
     assert r.returncode == 0, r.stderr
     assert r.stderr.strip().splitlines()[-1] == "0"
 
@@ -261,8 +264,6 @@ def test_terminal_calculation_skips_modules_it_does_not_need(args, absent):
         f"main.main(args={args!r}, standalone_mode=False)\n"
         f"print(sorted(m for m in {absent!r} if m in sys.modules))\n"
     )
-    r = subprocess.run(
-        [sys.executable, "-c", code], capture_output=True, text=True, timeout=60, env=os.environ
-    )
+    r = _python(code)
     assert r.returncode == 0, r.stderr
     assert r.stdout.strip().splitlines()[-1] == "[]"
