@@ -23,3 +23,11 @@ def test_a_sweep_names_the_cage_angle_it_failed_at():
     case = Case.of({"load": 100.0})
     out = in_case_terms(_failure([15.0]), case, cage_given=False)
     assert list(out.cases["cage_angle"]) == [15.0]
+
+
+def test_a_failure_names_only_the_inputs_the_user_gave():
+    """The solver's defaults (a moment of 0, a clearance of 0 it filled in) are not named."""
+    cases = {"radial_load": [100.0], "moment": [0.0], "clearance": [0.0], "cage_angle": [0.0]}
+    exc = ConvergenceError("combined", 50, 1e-8, cases, {"radial_load": "N", "moment": "N mm"})
+    out = in_case_terms(exc, Case.of({"load": 100.0}))
+    assert out.cases == {"load": [100.0]} and out.units == {"load": "N"}

@@ -98,15 +98,19 @@ def check_method(method: Any) -> None:
 def in_case_terms(exc: ConvergenceError, case: Case, cage_given: bool = True) -> ConvergenceError:
     """The solver's ConvergenceError naming the inputs of its cases as the case names them:
     the library's argument names (``radial_load`` -> ``load``, :func:`bearingload.plan.inputs.
-    argument_of`) and, with ``cage_given``, the cage angle as given (``half``, or -10° that the
+    argument_of`), those the user gave only (not the defaults the solver filled in), and, with
+    ``cage_given``, the cage angle as given (``half``, or -10° that the
     solver reduced to 350°) where the cases were solved at that one cage angle (a sweep's cases
     are solved at other cage angles than its case's: ``cage_given`` False keeps the solver's)."""
     import numpy as np
 
     from bearingload.plan.inputs import argument_of
 
-    cases = {argument_of(k): v for k, v in exc.cases.items()}
-    units = {argument_of(k): u for k, u in (exc.units or {}).items()}
+    named = {argument_of(k): v for k, v in exc.cases.items()}
+    # the inputs the user gave, none the solver filled in; a sweep's cage angle where it failed
+    typed = [k for k in named if k in case.given or (k == "cage_angle" and not cage_given)]
+    cases = {k: named[k] for k in typed or named}
+    units = {argument_of(k): u for k, u in (exc.units or {}).items() if argument_of(k) in cases}
     cage = np.asarray(cases.get("cage_angle", []), dtype=float).reshape(-1)
     if cage_given and cage.size and np.all(cage == cage[0]):  # the case's own, as given
         cases["cage_angle"] = case.cage_angle
