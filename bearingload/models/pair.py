@@ -436,8 +436,13 @@ _UNITS = {"radial_load": "N", "axial_load": "N", "moment": "N mm", "moment_cross
           "preload": "N", "contact_angle": "°", "width": "mm", "cage_angle": "°"}  # fmt: skip
 
 
-def _solve(z: int, kind: str, c: dict, shape: tuple[int, ...]) -> PairDistribution:
-    """The pair of the flat, checked cases ``c``."""
+def _solve(
+    z: int, kind: str, c: dict, shape: tuple[int, ...], snap: bool = True
+) -> PairDistribution:
+    """The pair of the flat, checked cases ``c``; with ``snap``, the cases left unbalanced with
+    a cage within :data:`~bearingload.models.combined.NEAR_SYMMETRIC_DEG` of a symmetric
+    position and no moment across the load line solved at that position, as the single
+    bearing solves them (the cages of the answer are then that position)."""
     geo = _comb.angular_geometry(c["ball_diameter"], c["pitch_diameter"], c["f_i"], c["f_o"],
                                   c["contact_angle"])  # fmt: skip
     if "tilt_radius" in c:
@@ -455,6 +460,11 @@ def _solve(z: int, kind: str, c: dict, shape: tuple[int, ...]) -> PairDistributi
     pp = _Pair(prob, signs(kind), levers(kind, c["width"], geo.R_i), fp / prob.f_ref, f, held)
     vh, vl, res, its, st, delta_p = _solve_stages(pp, _start(pp, z, geo, pp.preload), curve)
     given = {k: c[k] for k in _UNITS}
+    near = _near_symmetric(z, c["cage_angle"], mc) & ~(res <= ACCEPT) if snap else None
+    if near is not None and near.any():
+        return _solve(
+            z, kind, c | {"cage_angle": _symmetric(z, c["cage_angle"], near)}, shape, False
+        )
     _accepted(res, its, given)
     _check_edge(st, given)
     return _result(
@@ -552,6 +562,20 @@ def _start(pp: _Pair, z: int, geo: Any, pre: np.ndarray) -> np.ndarray:
     v[:, 0] = np.cbrt(2.5 * f[:, 0] / (z * ca)) ** 2 / ca
     light = pre >= np.max(np.abs(f), axis=1)
     return np.where(light[:, None], 0.0, v)
+
+
+def _near_symmetric(z: int, cage: np.ndarray, mc: np.ndarray) -> np.ndarray:
+    """Which cases have a cage [°] within NEAR_SYMMETRIC_DEG of a symmetric position (a multiple
+    of half the ball pitch) and no moment across the load line."""
+    half = 180.0 / z
+    off = np.abs(cage - np.round(cage / half) * half)
+    return (off <= _comb.NEAR_SYMMETRIC_DEG) & (mc == 0)
+
+
+def _symmetric(z: int, cage: np.ndarray, rows: np.ndarray) -> np.ndarray:
+    """``cage`` [°] with the ``rows`` moved to their nearest symmetric position."""
+    half = 180.0 / z
+    return np.where(rows, np.round(cage / half) * half, cage)
 
 
 def _accepted(res: np.ndarray, its: np.ndarray, given: dict) -> None:
