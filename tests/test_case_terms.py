@@ -31,3 +31,19 @@ def test_a_failure_names_only_the_inputs_the_user_gave():
     exc = ConvergenceError("combined", 50, 1e-8, cases, {"radial_load": "N", "moment": "N mm"})
     out = in_case_terms(exc, Case.of({"load": 100.0}))
     assert out.cases == {"load": [100.0]} and out.units == {"load": "N"}
+
+
+def test_a_failure_at_speed_gives_the_units_of_its_inputs():
+    """The ball dynamics' failure names its inputs with units, as the static solvers' do."""
+    from types import SimpleNamespace
+
+    import numpy as np
+    import pytest
+
+    from bearingload.models import high_speed
+
+    state = SimpleNamespace(accepted=np.array([False]), merit=np.array([1e-8]))
+    flat = {"radial_load": np.array([100.0]), "speed": np.array([3000.0])}
+    with pytest.raises(ConvergenceError) as info:
+        high_speed._check(state, np.array([551]), flat)
+    assert info.value.units["radial_load"] == "N" and info.value.units["speed"] == "rpm"

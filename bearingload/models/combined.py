@@ -818,7 +818,7 @@ def _equilibrium(p: Problem, geo: _Geometry, curve: StiffnessCurve | None, given
     except ConvergenceError as exc:
         rows = np.asarray(exc.cases["rows"])
         raise ConvergenceError(
-            exc.solver, exc.iterations, exc.residual, _described(given, rows), units=_UNITS
+            exc.solver, exc.iterations, exc.residual, _described(given, rows), units=INPUT_UNITS
         ) from None
     vh, vl, end, undetermined = _least_norm_tilt(p, (vh, vl), kappa, end, tangent[1])
     return vh, vl, kappa, its, end, tangent, (undetermined, neglected)
@@ -1639,7 +1639,7 @@ def _checked(p: Problem, end: _ring.Point, its: np.ndarray, given: dict) -> tupl
             int(its[bad].max()),
             float(known.max()) if known.size else math.nan,
             _described(given, bad),
-            units=_UNITS,
+            units=INPUT_UNITS,
         )
     # crossed groove centres, or a contact angle that rounds to 90° (a minimum may sit at the
     # edge: there the potential's curvature across the groove ends)
@@ -1662,8 +1662,21 @@ def _described(given: dict, rows: np.ndarray) -> dict:
     return out
 
 
-_UNITS = {"radial_load": "N", "axial_load": "N", "moment": "N mm", "moment_cross": "N mm",
-          "misalignment": "°", "clearance": "mm", "cage_angle": "°"}  # fmt: skip
+#: The unit of every input a solver names in a refusal or a failure (one table for the
+#: combined, pair and speed solvers).
+INPUT_UNITS = {
+    "radial_load": "N",
+    "axial_load": "N",
+    "moment": "N mm",
+    "moment_cross": "N mm",
+    "misalignment": "°",
+    "clearance": "mm",
+    "cage_angle": "°",
+    "preload": "N",
+    "contact_angle": "°",
+    "width": "mm",
+    "speed": "rpm",
+}
 
 
 def _refuse_edge(case: int, ball: int, given: dict) -> None:
@@ -1682,7 +1695,7 @@ def _refuse_edge(case: int, ball: int, given: dict) -> None:
         f"the loads and the clearance drive ball {ball + 1} to a contact angle of 90°, the "
         "edge of its groove (the centres of its two grooves cross): it would ride over the "
         "groove shoulder, which the model does not describe; lower the axial load, moment or "
-        f"tilt, or the clearance ({format_cases(one, _UNITS)})",
+        f"tilt, or the clearance ({format_cases(one, INPUT_UNITS)})",
     )
 
 

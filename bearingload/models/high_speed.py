@@ -722,6 +722,7 @@ def _check(st: BallState, its: np.ndarray, flat: dict) -> None:
             int(its[bad].max()),
             float(known.max()) if known.size else math.nan,
             {k: v[bad] for k, v in flat.items()},
+            units=_combined.INPUT_UNITS,
         )
 
 

@@ -432,8 +432,17 @@ def _check_pair(kind: str, fa: np.ndarray, fp: np.ndarray, contact_angle: Any) -
         )
 
 
-_UNITS = {"radial_load": "N", "axial_load": "N", "moment": "N mm", "moment_cross": "N mm",
-          "preload": "N", "contact_angle": "°", "width": "mm", "cage_angle": "°"}  # fmt: skip
+#: The inputs a pair's refusal or failure names (their units: combined.INPUT_UNITS).
+NAMED = (
+    "radial_load",
+    "axial_load",
+    "moment",
+    "moment_cross",
+    "preload",
+    "contact_angle",
+    "width",
+    "cage_angle",
+)
 
 
 def _solve(
@@ -459,7 +468,7 @@ def _solve(
     held = held_components(kind, mirror, (fr, fa, mm, mc))
     pp = _Pair(prob, signs(kind), levers(kind, c["width"], geo.R_i), fp / prob.f_ref, f, held)
     vh, vl, res, its, st, delta_p = _solve_stages(pp, _start(pp, z, geo, pp.preload), curve)
-    given = {k: c[k] for k in _UNITS}
+    given = {k: c[k] for k in NAMED}
     near = _near_symmetric(z, c["cage_angle"], mc) & ~(res <= ACCEPT) if snap else None
     if near is not None and near.any():
         return _solve(
@@ -585,7 +594,7 @@ def _accepted(res: np.ndarray, its: np.ndarray, given: dict) -> None:
         cases = {k: v[bad] for k, v in given.items()}
         raise ConvergenceError(
             "bearing-pair shaft equilibrium", int(its[bad].max()),
-            float(known.max()) if known.size else math.nan, cases, units=_UNITS,
+            float(known.max()) if known.size else math.nan, cases, units=_comb.INPUT_UNITS,
         )  # fmt: skip
 
 
@@ -604,7 +613,7 @@ def _check_edge(st: _State, given: dict) -> None:
             raise InputError(
                 "axial_load",
                 f"the loads drive a ball of bearing {k + 1} to a contact angle of 90°, the edge of "
-                f"its groove, which the model does not describe ({format_cases(one, _UNITS)})",
+                f"its groove, which the model does not describe ({format_cases(one, _comb.INPUT_UNITS)})",
             )
 
 

@@ -48,6 +48,7 @@ from bearingload.constants import STEEL_MODULUS
 from bearingload.errors import ConvergenceError, InputError
 from bearingload.models import combined as _comb
 from bearingload.models import high_speed as _hs
+from bearingload.models.pair import NAMED as NAMED_AT_REST
 from bearingload.models.pair import (
     PairDistribution,
     held_components,
@@ -70,9 +71,8 @@ ITERATIONS = 200
 #: Stages of the continuation in omega^2. [-]
 CONTINUATION_STAGES = 200
 
-_UNITS = {"radial_load": "N", "axial_load": "N", "moment": "N mm", "moment_cross": "N mm",
-          "preload": "N", "contact_angle": "°", "width": "mm", "cage_angle": "°",
-          "speed": "rpm"}  # fmt: skip
+#: The inputs a failure of a pair at speed names (their units: combined.INPUT_UNITS).
+NAMED = (*NAMED_AT_REST, "speed")
 
 
 @dataclass(frozen=True)
@@ -311,7 +311,7 @@ def _solve(sh: _Shaft, v_static: np.ndarray, flat: dict, rest: bool) -> tuple[An
         raise ConvergenceError(
             "bearing-pair shaft and ball-dynamics equilibrium", int(its[bad].max()),
             float(known.max()) if known.size else math.nan,
-            {k: flat[k][bad] for k in _UNITS}, units=_UNITS,
+            {k: flat[k][bad] for k in NAMED}, units=_comb.INPUT_UNITS,
         )  # fmt: skip
     return v, st, its, out[:, 40:42]
 
