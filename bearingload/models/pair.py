@@ -469,7 +469,10 @@ def _solve(
     pp = _Pair(prob, signs(kind), levers(kind, c["width"], geo.R_i), fp / prob.f_ref, f, held)
     vh, vl, res, its, st, delta_p = _solve_stages(pp, _start(pp, z, geo, pp.preload), curve)
     given = {k: c[k] for k in NAMED}
-    near = _near_symmetric(z, c["cage_angle"], mc) & ~(res <= ACCEPT) if snap else None
+    unbalanced = ~(res <= ACCEPT)
+    near = (
+        _near_symmetric(z, c["cage_angle"], mc) & unbalanced if snap and unbalanced.any() else None
+    )
     if near is not None and near.any():
         return _solve(
             z, kind, c | {"cage_angle": _symmetric(z, c["cage_angle"], near)}, shape, False
