@@ -577,11 +577,12 @@ def _start(pp: _Pair, z: int, geo: Any, pre: np.ndarray) -> np.ndarray:
 
 
 def _near_symmetric(z: int, cage: np.ndarray, mc: np.ndarray) -> np.ndarray:
-    """Which cases have a cage [°] within NEAR_SYMMETRIC_DEG of a symmetric position (a multiple
-    of half the ball pitch) and no moment across the load line."""
-    half = 180.0 / z
-    off = np.abs(cage - np.round(cage / half) * half)
-    return (off <= _comb.NEAR_SYMMETRIC_DEG) & (mc == 0)
+    """Which cases have a cage [°] within NEAR_SYMMETRIC_DEG of a symmetric position and no
+    moment across the load line (the core's symmetry rule, ``directions``, at that snap)."""
+    from bearingload.models import _core
+
+    near = _core.directions(z, np.ascontiguousarray(cage, dtype=float), _comb.NEAR_SYMMETRIC_DEG)
+    return near[2] & (mc == 0)
 
 
 def _symmetric(z: int, cage: np.ndarray, rows: np.ndarray) -> np.ndarray:
