@@ -460,7 +460,7 @@ def _solve(
     if "stiffness" in c:
         k_ref = c["stiffness"]
     else:
-        k_ref, values = _hertz(geo, c["modulus"], c["poisson"])
+        k_ref, values = _comb.hertz_setup(geo, c["modulus"], c["poisson"])
         curve = _comb.StiffnessCurve(values)
     fr, fa, mm, mc, fp = (c[k] for k in ("radial_load", "axial_load", "moment", "moment_cross",
                                          "preload"))  # fmt: skip
@@ -540,26 +540,6 @@ def _refuse_scale(geo: Any, k_ref: np.ndarray, flagged: np.ndarray, *loads: np.n
             f"the preload is {float(np.min(f_ref)):.3g} N; it takes at least {f_min:.2g} N for "
             "this bearing)",
         ) from exc
-
-
-def _hertz(geo: Any, e: np.ndarray, nu: np.ndarray) -> tuple[np.ndarray, np.ndarray]:
-    """K_0 and the stiffness curve's values of every case (the combined model's set-up), those
-    of the geometries set up before from a cache (the cache changes no bit: each case's set-up
-    is its own)."""
-    columns = (geo.D_w, geo.d_m, geo.f_i, geo.f_o, e, nu)
-    keys = list(zip(*(a.tolist() for a in columns), strict=True))
-    if all(key in _HERTZ_CACHE for key in keys):
-        rows = [_HERTZ_CACHE[key] for key in keys]
-        return np.array([r[0] for r in rows]), np.stack([r[1] for r in rows])
-    k0, values = _comb.hertz_setup(geo, e, nu)
-    for i, key in enumerate(keys):
-        _HERTZ_CACHE[key] = (float(k0[i]), values[i].copy())
-        while len(_HERTZ_CACHE) > _comb.SETUP_CACHE_SIZE:
-            _HERTZ_CACHE.pop(next(iter(_HERTZ_CACHE)))
-    return k0, values
-
-
-_HERTZ_CACHE: dict[tuple[float, ...], tuple[float, np.ndarray]] = {}
 
 
 def _start(pp: _Pair, z: int, geo: Any, pre: np.ndarray) -> np.ndarray:
