@@ -8,7 +8,7 @@ VENV := .venv
 BIN := $(VENV)/bin
 STAMP := $(VENV)/.installed
 CORE := setup.py bearingload/models/_core.pyx bearingload/models/_core.pxd \
-	bearingload/models/_radial.pxi
+	bearingload/models/_radial.pxi bearingload/_elliptic.pyx bearingload/_elliptic.pxd
 
 .PHONY: run test lint tables golden docs bench checked core clean
 
@@ -83,4 +83,5 @@ core: $(STAMP)
 
 clean:
 	rm -rf $(VENV) build *.egg-info .pytest_cache .mypy_cache .ruff_cache .hypothesis
-	rm -f bearingload/models/_core.c bearingload/models/_core.*.so
+	rm -f bearingload/models/_core.c bearingload/models/_core.*.so bearingload/_elliptic.c \
+		bearingload/_elliptic.*.so

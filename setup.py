@@ -1,4 +1,5 @@
-"""Build of bearingload's compiled core (bearingload/models/_core.pyx); everything else is in
+"""Build of bearingload's compiled core (bearingload/models/_core.pyx) and of the elliptic
+integrals it shares with bearingload.numerics (bearingload/_elliptic.pyx); everything else is in
 pyproject.toml.
 
 The flags are stated once here: -O2 and -ffp-contract=off (the core's double-double arithmetic
@@ -17,16 +18,19 @@ CHECKED = os.environ.get("BEARINGLOAD_CHECKED") == "1"
 FLAGS = ["-O2", "-ffp-contract=off", "-fno-fast-math"]
 SANITIZE = ["-fsanitize=address,undefined", "-fno-omit-frame-pointer", "-g"] if CHECKED else []
 
-core = Extension(
-    "bearingload.models._core",
-    ["bearingload/models/_core.pyx"],
-    extra_compile_args=FLAGS + SANITIZE,
-    extra_link_args=SANITIZE,
-)
+extensions = [
+    Extension(
+        name,
+        [name.replace(".", "/") + ".pyx"],
+        extra_compile_args=FLAGS + SANITIZE,
+        extra_link_args=SANITIZE,
+    )
+    for name in ("bearingload._elliptic", "bearingload.models._core")
+]
 
 setup(
     ext_modules=cythonize(
-        [core],
+        extensions,
         language_level=3,
         compiler_directives={
             "boundscheck": CHECKED,

@@ -11,23 +11,23 @@ arithmetic-geometric mean, and the scalar contract of the public functions.
   Tests check it against ``scipy.optimize.brentq`` on the project's own functions.
 * :func:`elliptic_integrals`: K, E, ``(E - pK)/m`` and ``(K - E)/m`` at the ellipticity
   ``kappa = e^t`` of a Hertz contact, by the AGM (Abramowitz & Stegun 17.6), for one contact (a
-  float: pure Python, the fast path of a single call) or many (an array, element by element),
-  with the same operations in the same order in both cases (numpy's ``exp`` and ``expm1`` may
-  round the last bit otherwise than the C library's: 7 % and 1.6 % of t from 1e-9 to 40, numpy
-  2.4, so an element may differ from the float path by an ulp). The compiled core holds a copy
-  of the float path (``_core.elliptic``, for the Hertz stiffness curve in C; this layer cannot
-  import the models' core): ``tests/test_numerics.py`` holds the two to the bit.
+  float) or many (an array, element by element). The AGM is one C function
+  (``bearingload/_elliptic.pyx``, a compiled module of this layer), which the models' compiled
+  core uses too for the Hertz stiffness curve. Only ``p = e^(-2t)`` and ``m = 1 - p`` differ
+  between a float and an array: numpy's ``exp`` and ``expm1`` may round the last bit otherwise
+  than the C library's (7 % and 1.6 % of t from 1e-9 to 40, numpy 2.4), so an element may differ
+  from the float path by an ulp.
 * :func:`scalar_out`: a case given as scalars gives Python numbers, as arrays gives arrays.
 """
 
 from __future__ import annotations
 
-import math
 from collections.abc import Callable
 from typing import Any
 
 import numpy as np
 
+from bearingload import _elliptic
 from bearingload.errors import ConvergenceError
 
 #: Evaluations at the most: enough to halve any double-precision bracket to its last bit.
@@ -102,10 +102,6 @@ def bracketed_root(
     return a if abs(fa) < abs(fb) else b
 
 
-#: Steps of the AGM at the most (it converges quadratically: 6 steps reach m = 1 - 1e-300).
-AGM_STEPS = 60
-
-
 def elliptic_integrals(t: Any) -> tuple[Any, Any, Any, Any, Any, Any]:
     """``(K, E, (E - pK)/m, (K - E)/m, m, p)`` at ``kappa = e^t`` (``p = 1/kappa^2``, ``m = 1 - p``).
 
@@ -123,80 +119,21 @@ def elliptic_integrals(t: Any) -> tuple[Any, Any, Any, Any, Any, Any]:
     ``K = pi / (2 AGM(1, sqrt p))`` and ``(K - E)/m = K (1/2 + sum_(n>=1) 2^(n-1) c_n^2 / m)``
     with ``c_(n+1) = c_n^2 / (4 a_(n+1))`` (Abramowitz & Stegun 17.6), summed from positive terms
     so that neither the circle (``m -> 0``, where ``K - E`` cancels) nor a long ellipse
-    (``m -> 1``) loses precision; ``(E - pK)/m`` near the circle as ``K (1/2 - sum ...)``. Each
-    element of an array stops at its own step (the finished ones leave the iteration), so its
-    value does not depend on the others and is that of the float path up to numpy's rounding of
-    ``exp`` and ``expm1``.
+    (``m -> 1``) loses precision; ``(E - pK)/m`` near the circle as ``K (1/2 - sum ...)``. The
+    AGM runs in C (``bearingload._elliptic``, the compiled core's too), each element stopping at
+    its own step, so its value does not depend on the others; ``p`` and ``m`` of an array come
+    from numpy's ``exp`` and ``expm1``, those of a float from the C library's.
 
     >>> k_int, e_int, *_ = elliptic_integrals(0.5)
     >>> round(k_int, 12), round(e_int, 12)
     (1.985871804956, 1.280760067829)
     """
-    scalar = isinstance(t, float)
-    sqrt: Callable[[Any], Any]
-    if scalar:
-        p, m, sqrt = math.exp(-2.0 * t), -math.expm1(-2.0 * t), math.sqrt
-    else:
-        t = np.asarray(t, dtype=float)
-        p, m, sqrt = np.exp(-2.0 * t), -np.expm1(-2.0 * t), np.sqrt
-    a_end, rest_end = _agm_sums(p, m, sqrt, scalar)
-    k_int = math.pi / (2.0 * a_end)
-    if scalar:
-        total = 0.5 + rest_end / m  # sum over n >= 0 of 2^(n-1) c_n^2 / m
-    else:  # the circle (m = 0): rest_end = 0, total = 1/2
-        total = 0.5 + rest_end / np.where(m > 0, m, 1.0)
-    d = k_int * total  # (K - E)/m
-    e_int = k_int - m * d
-    # (E - pK)/m: near the circle as K (1/2 - sum_{n>=1} 2^(n-1) c_n^2/m), else directly
-    if scalar:
-        n = k_int * (1.0 - total) if p > 0.5 else (e_int - p * k_int) / m
-    else:
-        n = np.where(
-            p > 0.5, k_int * (1.0 - total), (e_int - p * k_int) / np.where(p > 0.5, 1.0, m)
-        )
+    if isinstance(t, float):
+        return _elliptic.at(t)
+    t = np.asarray(t, dtype=float)
+    p, m = np.exp(-2.0 * t), -np.expm1(-2.0 * t)
+    k_int, e_int, n, d = (v[()] for v in _elliptic.of_arrays(p, m))
     return k_int, e_int, n, d, m, p
-
-
-def _agm_sums(p: Any, m: Any, sqrt: Callable, scalar: bool) -> tuple[Any, Any]:
-    """The AGM's limit ``a_N`` and ``sum_(n>=1) 2^(n-1) c_n^2`` from ``a_0 = 1``, ``b_0 = sqrt p``,
-    ``c_0^2 = m``; stopped where the term is below ``1e-17 m`` (then also ``a - b = 2 c_(n+1)``
-    is at rounding level). An array runs element-wise: finished elements leave the iteration."""
-    a: Any
-    b: Any
-    c2: Any
-    rest: Any
-    a, b, c2, rest, weight = 1.0, sqrt(p), m, 0.0, 0.5
-    if scalar:
-        small = 1e-17 * m
-    else:
-        a_end, rest_end = np.ones_like(m), np.zeros_like(m)
-        where = np.flatnonzero(m > 0)  # the elements still iterating
-        a, b, c2, rest = (np.ravel(v)[where] for v in (np.ones_like(m), b, m, rest_end))
-        small = 1e-17 * c2
-    for _ in range(AGM_STEPS):
-        a_next = 0.5 * (a + b)
-        c = c2 / (4.0 * a_next)  # c_(n+1) = c_n^2 / (4 a_(n+1)), no cancellation
-        b = sqrt(a * b)
-        a = a_next
-        c2 = c * c
-        weight += weight
-        term = weight * c2
-        rest = rest + term
-        if scalar:
-            if term <= small:
-                break
-            continue
-        done = term <= small
-        if done.any():
-            a_end.flat[where[done]], rest_end.flat[where[done]] = a[done], rest[done]
-            going = ~done
-            a, b, c2, rest, small, where = (v[going] for v in (a, b, c2, rest, small, where))
-            if where.size == 0:
-                break
-    if scalar:
-        return a, rest
-    a_end.flat[where], rest_end.flat[where] = a, rest  # none left unless AGM_STEPS ran out
-    return a_end, rest_end
 
 
 def scalar_out(value: Any) -> Any:

@@ -110,17 +110,26 @@ def test_bracketed_root_does_not_return_a_far_bracket_end_silently():
     assert abs(bracketed_root(lambda x: math.atan(x - 1.0), 0.0, 1e6) - 1.0) <= 4e-12
 
 
-def test_the_core_s_elliptic_integrals_are_the_float_path_to_the_bit():
-    """The compiled core's AGM (``_core.elliptic``, the Hertz stiffness curve's) is a copy of
-    numerics.elliptic_integrals' float path (numerics cannot import the models' core): the six
-    values agree to the bit at 20 000 t from 1e-9 to 40 (log-uniform) and at the ends."""
+def test_a_float_and_an_array_take_the_one_agm():
+    """The AGM is one C function (``bearingload/_elliptic.pyx``, the compiled core's Hertz
+    stiffness curve's too): given the float path's p and m (the C library's ``exp`` and
+    ``expm1``), the array path's values are the float path's to the bit, at 20 000 t from 1e-9
+    to 40 (log-uniform) and at the ends."""
     import numpy as np
 
-    from bearingload.models import _core
+    from bearingload import _elliptic
     from bearingload.numerics import elliptic_integrals
 
     rng = np.random.default_rng(1)
     ts = np.concatenate([10 ** rng.uniform(-9.0, 1.6, 20000), [1e-300, 1e-20, 1e-12, 40.0]])
-    core = _core.elliptic_values(ts)
-    for t, row in zip(ts.tolist(), core, strict=True):
-        assert tuple(row.tolist()) == elliptic_integrals(t), t
+    p = np.array([math.exp(-2.0 * t) for t in ts.tolist()])
+    m = np.array([-math.expm1(-2.0 * t) for t in ts.tolist()])
+    rows = zip(
+        ts.tolist(),
+        *(v.tolist() for v in _elliptic.of_arrays(p, m)),
+        m.tolist(),
+        p.tolist(),
+        strict=True,
+    )
+    for t, *values in rows:
+        assert tuple(values) == elliptic_integrals(t), t

@@ -31,6 +31,7 @@ from libc.stdint cimport int64_t
 from libc.stdlib cimport free, malloc
 from libc.string cimport memset
 
+from bearingload._elliptic cimport elliptic
 from bearingload.models._core cimport (NODES, Balls, Case, Dual, Dyn, Limits, Loads, Point, Ring,
                                       Shaft, ShaftState, Speed, SpeedLimits)
 
@@ -167,19 +168,18 @@ cdef inline double curve_slope(const Case *cs, double ca, double cam1) noexcept 
 #
 # K(alpha) of both contacts in series at the nodes of the curve, for one geometry: the formulas
 # of the scalar path of bearingload.contact.hertz.ball_stiffness (its _hertz_scalar: the
-# ellipticity by Newton from a fitted start on the AGM's elliptic integrals of
-# bearingload.numerics.elliptic_integrals, the contact stiffness, both in series), in its order,
-# one node at a time. Inputs hertz.py refuses (a curvature ratio beyond 1e15, Poisson's ratio
+# ellipticity by Newton from a fitted start on the AGM's elliptic integrals, ``elliptic`` of
+# bearingload/_elliptic.pyx, the one C copy of numerics.elliptic_integrals; the contact
+# stiffness, both in series), in its order, one node at a time. Inputs hertz.py refuses (a curvature ratio beyond 1e15, Poisson's ratio
 # outside (-1, 0.5]) or an ellipticity not settled come back as a status: the caller lets
 # hertz.py say why.
 
 from bearingload.contact._hertz_scalar import START_CHEBYSHEV
 
-# the limits of hertz.py and numerics.py: Newton steps, AGM steps, the largest ratio of
-# curvature sums; the fitted start's Chebyshev coefficients and the log1p(ln 1e15) it scales by
+# the limits of hertz.py: Newton steps, the largest ratio of curvature sums; the fitted start's
+# Chebyshev coefficients and the log1p(ln 1e15) it scales by
 cdef enum:
     HERTZ_STEPS = 30
-    AGM_STEPS = 60
     START_TERMS = 17
 cdef double HERTZ_EPS = 2.220446049250313e-16
 cdef double HERTZ_MAX_RATIO = 1e15
@@ -187,47 +187,6 @@ cdef double PI = 3.141592653589793
 cdef double START[START_TERMS]
 START[:] = START_CHEBYSHEV
 cdef double START_LOG_MAX = log1p(log(1e15))
-
-
-cdef void elliptic(double t, double *ell) noexcept nogil:
-    """``ell`` = K, E, (E - pK)/m, (K - E)/m, m, p at ``kappa = e^t > 1``, ``p = 1/kappa^2 =
-    1 - m``, by the AGM (numerics.elliptic_integrals: A&S 17.6, sums of positive terms)."""
-    cdef double p = exp(-2.0 * t), m = -expm1(-2.0 * t)
-    cdef double a = 1.0, b = sqrt(p), c2 = m, rest = 0.0, weight = 0.5, small = 1e-17 * m
-    cdef double a_next, c, term, total, k_int
-    cdef int i
-    for i in range(AGM_STEPS):
-        a_next = 0.5 * (a + b)
-        c = c2 / (4.0 * a_next)
-        b = sqrt(a * b)
-        a = a_next
-        c2 = c * c
-        weight += weight
-        term = weight * c2
-        rest = rest + term
-        if term <= small:
-            break
-    k_int = PI / (2.0 * a)
-    total = 0.5 + rest / m
-    ell[0] = k_int
-    ell[3] = k_int * total
-    ell[1] = k_int - m * ell[3]
-    ell[2] = k_int * (1.0 - total) if p > 0.5 else (ell[1] - p * k_int) / m
-    ell[4] = m
-    ell[5] = p
-
-
-def elliptic_values(const double[::1] t):
-    """(n, 6): K, E, (E - pK)/m, (K - E)/m, m, p of ``elliptic`` at each t > 0 (the core's copy
-    of numerics.elliptic_integrals' float path, which numerics, a layer below the models,
-    cannot import; a test holds the two to the bit)."""
-    cdef Py_ssize_t n = t.shape[0], i
-    out_a = np.empty((n, 6))
-    cdef double[:, ::1] out = out_a
-    with nogil:
-        for i in range(n):
-            elliptic(t[i], &out[i, 0])
-    return out_a
 
 
 cdef double ellipticity_residual(double t, double target, double *ell,
