@@ -29,7 +29,7 @@ from libc.math cimport (asin, atan, atan2, cbrt, copysign, cos, exp, expm1, fabs
                         isfinite, isnan, log, log1p, pow, rint, sin, sqrt, INFINITY, NAN)
 from libc.stdint cimport int64_t
 from libc.stdlib cimport free, malloc
-from libc.string cimport memset
+from libc.string cimport memcpy, memset
 
 from bearingload._elliptic cimport elliptic
 from bearingload.models._core cimport (NODES, Balls, Case, Dual, Dyn, Limits, Loads, Point, Ring,
@@ -2670,17 +2670,12 @@ cdef void dyn_on(double *block, int z, Dyn *st) noexcept nogil:
 
 
 cdef void copy_dyn(int z, const Dyn *src, Dyn *dst) noexcept nogil:
-    cdef int i
-    for i in range(DYN_PER_BALL * z):
-        dst.do[i] = src.do[i]
-    for i in range(5):
-        dst.gen[i] = src.gen[i]
-        dst.floor[i] = src.floor[i]
-        dst.noise[i] = src.noise[i]
-    for i in range(25):
-        dst.jac[i] = src.jac[i]
-    dst.balls_ok = src.balls_ok
-    dst.touching = src.touching
+    """dst = src, each on its own block (``dyn_on``): the block's balls copied whole, the struct
+    assigned, and dst's pointers put back on its block."""
+    cdef double *block = dst.do
+    memcpy(block, src.do, DYN_PER_BALL * z * sizeof(double))
+    dst[0] = src[0]
+    dyn_on(block, z, dst)
 
 
 cdef inline void centre(const Ring *rg, const double *v, int j, double *rho, double *u) noexcept nogil:
@@ -3065,19 +3060,15 @@ cdef void swap_shaft(ShaftState *a, ShaftState *b) noexcept nogil:
 
 
 cdef void copy_shaft(const Shaft *sh, const ShaftState *src, ShaftState *dst) noexcept nogil:
+    """dst = src: the struct assigned with dst's own bearings kept, then each bearing of the
+    shaft by ``copy_dyn``."""
+    cdef Dyn part[2]
     cdef int i
+    part[0], part[1] = dst.part[0], dst.part[1]
+    dst[0] = src[0]
+    dst.part[0], dst.part[1] = part[0], part[1]
     for i in range(sh.parts):
         copy_dyn(sh.ring.z, &src.part[i], &dst.part[i])
-    for i in range(5):
-        dst.gen[i] = src.gen[i]
-        dst.floor[i] = src.floor[i]
-        dst.noise[i] = src.noise[i]
-    for i in range(25):
-        dst.jac[i] = src.jac[i]
-    dst.merit = src.merit
-    dst.score = src.score
-    dst.level = src.level
-    dst.touching = src.touching
 
 
 cdef void held_system(const Shaft *sh, const ShaftState *st, double *jac,
