@@ -22,8 +22,9 @@ from bearingload.bearings.life import (
 from bearingload.bearings.mounting import result_fields
 from bearingload.errors import InputError
 from bearingload.lazy_dataclass import dataclass
-from bearingload.models.case import Case, Result, scalar
+from bearingload.models.case import Case, Result
 from bearingload.models.registry import get_method
+from bearingload.numerics import scalar_out
 
 if TYPE_CHECKING:  # the catalogue is imported only where a bearing is resolved
     from bearingload.bearings.resolve import ResolvedBearing
@@ -170,8 +171,8 @@ def _with_bearing(r: Result, b: ResolvedBearing, load: Any, revolutions: Any) ->
     life = allow = revs = None
     if b.C:
         p = ROLLER_LIFE_EXPONENT if b.kind == "roller" else BALL_LIFE_EXPONENT
-        life = scalar(rating_life(b.C, load, p))
-        allow = scalar(allowable_load(b.C, np.asarray(revolutions) / 1e6, p))
+        life = scalar_out(rating_life(b.C, load, p))
+        allow = scalar_out(allowable_load(b.C, np.asarray(revolutions) / 1e6, p))
         revs = revolutions
     shape = r.case.shape
     loads = np.broadcast_to(load, shape).ravel().tolist()
