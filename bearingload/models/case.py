@@ -13,8 +13,9 @@ from typing import Any
 
 import numpy as np
 
-from bearingload import numerics, validate
+from bearingload import validate
 from bearingload.lazy_dataclass import dataclass
+from bearingload.numerics import scalar_out
 from bearingload.validate import broadcast_shape
 
 #: The inputs of a case, in the order of every model's signature.
@@ -67,21 +68,30 @@ class Case:
         """Check every input (:class:`~bearingload.errors.InputError` names the parameter) and
         find their broadcast shape; each input kept as a Python scalar when given as one (the
         scalar contract, :func:`bearingload.numerics.scalar_out`)."""
-        arrays = (
-            validate.ball_count(balls),
-            validate.positive("load", load, "N"),
-            validate.positive("stiffness", stiffness, "N/mm^m"),
-            validate.finite("clearance", clearance),
-            np.mod(validate.finite("cage_angle", cage_angle), 360.0),
-            validate.exponent(exponent),
-        )
+        arrays = checked(balls, load, stiffness, clearance, cage_angle, exponent)
+        arrays[4] = np.mod(arrays[4], 360.0)
         shape = broadcast_shape(dict(zip(INPUTS, arrays, strict=True)))
-        balls, load, stiffness, clearance, cage_angle, exponent = (scalar(a) for a in arrays)
+        balls, load, stiffness, clearance, cage_angle, exponent = (scalar_out(a) for a in arrays)
         return cls(balls, load, stiffness, clearance, cage_angle, exponent, shape)
 
     def inputs(self, names: tuple[str, ...] = INPUTS) -> dict[str, Any]:
         """The inputs named ``names`` as keyword arguments (Python scalars for one case)."""
-        return {name: scalar(getattr(self, name)) for name in names}
+        return {name: scalar_out(getattr(self, name)) for name in names}
+
+
+def checked(
+    balls: Any, load: Any, stiffness: Any, clearance: Any, cage_angle: Any, exponent: Any
+) -> list[np.ndarray]:
+    """The six case inputs checked in the order of :data:`INPUTS` (an
+    :class:`~bearingload.errors.InputError` names the first refused), as arrays, not broadcast."""
+    return [
+        validate.ball_count(balls),
+        validate.positive("load", load, "N"),
+        validate.positive("stiffness", stiffness, "N/mm^m"),
+        validate.finite("clearance", clearance),
+        validate.finite("cage_angle", cage_angle),
+        validate.exponent(exponent),
+    ]
 
 
 @dataclass(frozen=True)
@@ -136,16 +146,10 @@ class Result:
     @property
     def K_Q(self) -> Any:
         """Load-concentration factor ``K_Q = Q_max/(F_r/(z/2)) = k z/2`` (Kuzmenko & Sabadash 2014). [-]"""
-        return scalar(np.asarray(self.k) * self.case.balls / 2.0)
+        return scalar_out(np.asarray(self.k) * self.case.balls / 2.0)
 
 
 #: The quantities a :class:`Result` may carry, besides ``method``, ``case`` and ``model``.
 RESULT_QUANTITIES = tuple(
     f.name for f in fields(Result) if f.name not in ("method", "case", "model", "valid")
 )
-
-
-def scalar(value: Any) -> Any:
-    """A Python int/float/bool for a 0-d array, the array otherwise
-    (:func:`bearingload.numerics.scalar_out`)."""
-    return numerics.scalar_out(value)

@@ -68,6 +68,7 @@ import numpy as np
 
 from bearingload import validate
 from bearingload.errors import ConvergenceError, InputError
+from bearingload.numerics import scalar_out
 
 #: Gauss-Legendre order used inside the solver iterations (J_r to ~3e-14). [-]
 NODES_SOLVER = 48
@@ -87,7 +88,7 @@ class ContinuumResult:
     """Solution of the continuum model for one case or an array of cases.
 
     Every attribute is a numpy array of the broadcast input shape; for one case given as
-    scalars, a Python ``int`` or ``float`` (the 2x2 and per-ball arrays stay arrays).
+    scalars, a Python ``int`` or ``float``.
 
     Attributes
     ----------
@@ -146,7 +147,7 @@ def zero_clearance_integral(exponent: Any = 1.5) -> Any:
     0.718884
     """
     m = validate.exponent(exponent)
-    return _scalar_or_array(_integral_i(m), m)
+    return scalar_out(_integral_i(m))
 
 
 def zero_clearance_k(balls: Any, exponent: Any = 1.5) -> Any:
@@ -177,7 +178,7 @@ def zero_clearance_k(balls: Any, exponent: Any = 1.5) -> Any:
     z = validate.ball_count(balls)
     m = validate.exponent(exponent)
     z, m = np.broadcast_arrays(z, m)
-    return _scalar_or_array(np.pi / (z * _integral_i(m)), z)
+    return scalar_out(np.pi / (z * _integral_i(m)))
 
 
 def load_zone_integral(epsilon: Any, exponent: Any = 1.5) -> Any:
@@ -213,7 +214,7 @@ def load_zone_integral(epsilon: Any, exponent: Any = 1.5) -> Any:
     m = validate.exponent(exponent)
     eps_b, m_b = np.broadcast_arrays(eps, m)
     j, _ = _jr(eps_b, m_b, NODES_FINAL, derivative=False)
-    return _scalar_or_array(j, eps_b)
+    return scalar_out(j)
 
 
 def continuum_load(
@@ -253,7 +254,7 @@ def continuum_load(
     eps = np.where(loaded, d_max / (2.0 * x), 0.5)
     j, _ = _jr(eps, m, NODES_FINAL, derivative=False)
     force = np.where(loaded, z * k_ball * np.power(np.where(loaded, d_max, 1.0), m) * j, 0.0)
-    return _scalar_or_array(force, x)
+    return scalar_out(force)
 
 
 def solve_continuum(
@@ -387,22 +388,17 @@ def solve_continuum(
 
 def _shaped(values: Any, shape: tuple[int, ...]) -> Any:
     """``values`` in the case shape; a Python scalar for one scalar case."""
-    arr = np.asarray(values).reshape(shape)
-    return arr.item() if shape == () else arr
+    return scalar_out(np.asarray(values).reshape(shape))
 
 
-def _scalar_or_array(values: np.ndarray, like: Any) -> Any:
-    """Return a Python float for 0-d input, else the array."""
-    if np.ndim(like) == 0:
-        return float(values)
-    return values
+#: ln Gamma elementwise (math.lgamma, as numpy has none). [-]
+_lgamma = np.vectorize(math.lgamma, otypes=[float])
 
 
 def _integral_i(m: np.ndarray) -> np.ndarray:
     """I_m = sqrt(pi) Gamma((m+2)/2) / (2 Gamma((m+3)/2)), elementwise."""
     m = np.asarray(m, dtype=float)
-    lg = np.vectorize(math.lgamma, otypes=[float])
-    return 0.5 * math.sqrt(math.pi) * np.exp(lg((m + 2.0) / 2.0) - lg((m + 3.0) / 2.0))
+    return 0.5 * math.sqrt(math.pi) * np.exp(_lgamma((m + 2.0) / 2.0) - _lgamma((m + 3.0) / 2.0))
 
 
 @lru_cache(maxsize=8)
@@ -517,8 +513,7 @@ def _residual(
 def _initial_guess(eta: np.ndarray, m: np.ndarray, j0: np.ndarray) -> np.ndarray:
     """ln(eps) from the asymptotes eps -> 0 (large clearance) and eps -> inf (large preload)."""
     # eps -> 0: J ~ c1 sqrt(eps), c1 = Gamma(m+1)/(sqrt(pi) Gamma(m+3/2))
-    lg = np.vectorize(math.lgamma, otypes=[float])
-    log_c1 = lg(m + 1.0) - lg(m + 1.5) - 0.5 * math.log(math.pi)
+    log_c1 = _lgamma(m + 1.0) - _lgamma(m + 1.5) - 0.5 * math.log(math.pi)
     with np.errstate(divide="ignore"):
         log_eta = np.log(np.abs(eta))
     y_clear = ((np.log(j0) - log_c1) / m - math.log(2.0) - log_eta) / (1.0 + 0.5 / m)

@@ -58,6 +58,7 @@ from bearingload.models._ring import (
     snapped_cos,
     snapped_sin,
 )
+from bearingload.models.case import INPUTS, checked
 
 #: Relative equilibrium residual the solver drives every case below. [-]
 TOLERANCE = 1e-13
@@ -153,12 +154,7 @@ class LoadDistribution:
     @property
     def ball_angles(self) -> np.ndarray:
         """Angles ``phi_i`` of balls 1..z from the load line, in [0, 360), for one case. [°]"""
-        return np.rad2deg(self._ball_angles_rad())
-
-    def _ball_angles_rad(self) -> np.ndarray:
-        z = int(self._one(self.balls))
-        phi1 = np.deg2rad(float(self._one(self.cage_angle)))
-        return np.mod(phi1 + 2.0 * np.pi * np.arange(z) / z, 2 * np.pi)
+        return np.rad2deg(_ball_phi(int(self._one(self.balls)), float(self._one(self.cage_angle))))
 
     @property
     def ball_approaches(self) -> np.ndarray:
@@ -194,8 +190,6 @@ class LoadDistribution:
     def __getitem__(self, index: Any) -> LoadDistribution:
         """The distribution of the cases selected by ``index`` (numpy indexing of the case shape)."""
         fields = {name: getattr(self, name)[index] for name in self.__dataclass_fields__}
-        for name in ("stiffness_matrix", "offset", "reference"):
-            fields[name] = getattr(self, name)[index]
         return LoadDistribution(**fields)
 
 
@@ -217,7 +211,7 @@ def ball_approaches(
     larger than the elastic approach costs no digits; under preload (e < 0, z >= 2) as
     ``x cos phi_i + y sin phi_i - e`` from the centred ring.
     """
-    phi = np.mod(np.deg2rad(cage_angle) + 2.0 * np.pi * np.arange(z) / z, 2 * np.pi)
+    phi = _ball_phi(z, cage_angle)
     e = np.asarray(clearance) / 2.0
     cos, sin = snapped_cos(phi), snapped_sin(phi)
     mu = reference[..., :1]
@@ -226,6 +220,12 @@ def ball_approaches(
     with np.errstate(all="ignore"):  # the branch not taken may see a gap factor of a preload
         free = dx * cos + dy * sin - e * gap_factor(phi - mu, h)
         return np.where((e < 0) & (z >= 2), x * cos + y * sin - e, free)
+
+
+def _ball_phi(z: int, cage_angle: Any) -> np.ndarray:
+    """Angles of balls 1..z from the load line in [0, 2 pi), ball 1 at ``cage_angle`` [°] (a
+    number, or a column of cases). [rad]"""
+    return np.mod(np.deg2rad(cage_angle) + 2.0 * np.pi * np.arange(z) / z, 2 * np.pi)
 
 
 def _lazy_field(name: str) -> property:
@@ -467,25 +467,14 @@ def _in_user_terms(exc: ConvergenceError, inputs: tuple[np.ndarray, ...]) -> Con
     return ConvergenceError(exc.solver, exc.iterations, exc.residual, cases, units=units)
 
 
-_NAMES = ("balls", "load", "stiffness", "clearance", "cage_angle", "exponent")
-
-
 def _validated(*values: Any) -> list[np.ndarray]:
     """The six inputs checked, reduced (cage angle to [0, 360) in degrees) and broadcast."""
-    balls, load, stiffness, clearance, cage_angle, exponent = values
-    arrays = [
-        validate.ball_count(balls),
-        validate.positive("load", load, "N"),
-        validate.positive("stiffness", stiffness, "N/mm^m"),
-        validate.finite("clearance", clearance),
-        validate.finite("cage_angle", cage_angle),
-        validate.exponent(exponent),
-    ]
-    for name, arr in zip(_NAMES, arrays, strict=True):
+    arrays = checked(*values)
+    for name, arr in zip(INPUTS, arrays, strict=True):
         if arr.size == 0:
             raise InputError(name, f"is an empty array (shape {arr.shape}); give at least one case")
     shape: tuple[int, ...] = ()
-    for name, arr in zip(_NAMES, arrays, strict=True):
+    for name, arr in zip(INPUTS, arrays, strict=True):
         try:
             shape = np.broadcast_shapes(shape, arr.shape)
         except ValueError:
@@ -523,27 +512,11 @@ def _cage_kind(
     return frac, kind
 
 
-#: Columns of the per-case result rows of :func:`_solve_groups`.
-_COL = {
-    name: i
-    for i, name in enumerate(
-        (
-            "xi",
-            "eta",
-            "x0",
-            "y0",
-            "q_hat",
-            "loaded",
-            "hxx",
-            "hxy",
-            "hyy",
-            "mu",
-            "h",
-            "iterations",
-            "scale",
-        )
-    )
-}
+#: Columns of the per-case result rows of :func:`_solve_groups`: the core's row
+#: (``_core.radial``: scaled offset, iterations, scaled Q_max, loaded balls, scaled tangent,
+#: residual, status, scale), then the reference of :func:`_reference` (x0, y0, mu, h).
+_CORE_ROW = "xi eta iterations q_hat loaded hxx hxy hyy residual status scale".split()
+_COL = {name: i for i, name in enumerate([*_CORE_ROW, "x0", "y0", "mu", "h"])}
 
 
 def _solve_groups(
@@ -585,17 +558,21 @@ def _solve_groups(
             MAX_ITERATIONS,
             _ring.POLISH,
         )
-        failed = (rows[:, 9] != 0) | ~(rows[:, 8] <= max(tol, 1e-11))
+        failed = (rows[:, _COL["status"]] != 0) | ~(rows[:, _COL["residual"]] <= max(tol, 1e-11))
         if failed.any():
             bad.append((start + np.flatnonzero(failed), rows[failed]))
-        _store(res[part], rows, geo, zz, kd, pre)
+        res[part, : len(_CORE_ROW)] = rows
+        res[part, _COL["loaded"]] = np.rint(rows[:, _COL["loaded"]])
+        for i, value in enumerate(_reference(geo.T, zz, kd, pre), len(_CORE_ROW)):
+            res[part, i] = value
     if bad:
         failing = np.concatenate([b[0] for b in bad])
         worst = np.concatenate([b[1] for b in bad])
+        residual = worst[:, _COL["residual"]]
         raise ConvergenceError(
             "ring equilibrium",
-            int(worst[:, 2].max()),
-            float(np.max(np.where(np.isfinite(worst[:, 8]), worst[:, 8], np.inf))),
+            int(worst[:, _COL["iterations"]].max()),
+            float(np.max(np.where(np.isfinite(residual), residual, np.inf))),
             {"case": failing if order is None else order[failing]},
         )
     if order is None:
@@ -603,27 +580,6 @@ def _solve_groups(
     out = np.empty_like(res)
     out[order] = res  # back to the order of the cases, all columns at once
     return out
-
-
-def _store(
-    out: np.ndarray, rows: np.ndarray, geo: np.ndarray, z: int, kind: int, pre: bool
-) -> None:
-    """One group's core rows (and a general ring's reference) into the columns ``_COL``."""
-    col = _COL
-    for name, i in (
-        ("xi", 0),
-        ("eta", 1),
-        ("iterations", 2),
-        ("q_hat", 3),
-        ("hxx", 5),
-        ("hxy", 6),
-        ("hyy", 7),
-        ("scale", 10),
-    ):
-        out[:, col[name]] = rows[:, i]
-    out[:, col["loaded"]] = np.rint(rows[:, 4])
-    x0, y0, mu, h = _reference(geo.T, z, kind, pre)
-    out[:, col["x0"]], out[:, col["y0"]], out[:, col["mu"]], out[:, col["h"]] = x0, y0, mu, h
 
 
 def _assemble(

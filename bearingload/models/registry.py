@@ -108,19 +108,20 @@ class Method:
 
         import numpy as np
 
-        from bearingload.models.case import RESULT_QUANTITIES, Result, scalar
+        from bearingload.models.case import RESULT_QUANTITIES, Result
+        from bearingload.numerics import scalar_out
 
         params = _parameters(self.module, self.function)
         out = self.model()(**{k: v for k, v in case.inputs().items() if k in params})
         values = {}
         for name in RESULT_QUANTITIES:
             v = getattr(out, name, None)
-            values[name] = None if v is None else scalar(np.broadcast_to(v, case.shape).copy())
+            values[name] = None if v is None else scalar_out(np.broadcast_to(v, case.shape).copy())
         result = Result(self.name, case, model=out, **values)
         if self.is_valid is None:
             return result
         valid = np.broadcast_to(self.is_valid(case, result), case.shape)
-        return dataclasses.replace(result, valid=scalar(valid.copy()))
+        return dataclasses.replace(result, valid=scalar_out(valid.copy()))
 
 
 @functools.cache
@@ -225,18 +226,10 @@ def compute(
     ----------
     method : {'exact', 'continuum', 'stribeck', 'palmgren'}
         Name of the method (see :func:`list_methods`).
-    balls : int or array_like
-        Number of balls ``z``. [-]
-    load : float or array_like
-        Radial load ``F_r > 0``. [N]
-    stiffness : float or array_like
-        Ball stiffness ``K`` of both contacts in series, ``Q = K delta^m``. [N/mm^m]
-    clearance : float or array_like, default 0
-        Radial internal clearance ``G_r`` (total play; negative = preload). [mm]
-    cage_angle : float or array_like, default 0
-        Angle of ball 1 from the load line. [°]
-    exponent : float or array_like, default 1.5
-        Load-deflection exponent ``m``. [-]
+    balls, load, stiffness, clearance, cage_angle, exponent : int, float or array_like
+        The case, checked once as a :class:`~bearingload.models.case.Case` (its attributes give
+        each input's meaning, range and unit: N, mm, N/mm^m, °); by default no clearance, cage
+        angle 0 and exponent 1.5.
 
     Returns
     -------
@@ -280,6 +273,6 @@ def relative_error(result: Any, reference: Any) -> Any:
     """``Q_max / Q_max,reference - 1`` (the same as the ratio of the ``k``). [-]"""
     import numpy as np
 
-    from bearingload.models.case import scalar
+    from bearingload.numerics import scalar_out
 
-    return scalar(np.asarray(result.q_max) / np.asarray(reference.q_max) - 1.0)
+    return scalar_out(np.asarray(result.q_max) / np.asarray(reference.q_max) - 1.0)
