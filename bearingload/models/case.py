@@ -8,7 +8,9 @@ Scalar inputs give Python scalars; array inputs give arrays of the broadcast sha
 
 from __future__ import annotations
 
+from collections.abc import Callable
 from dataclasses import fields
+from functools import partial
 from typing import Any
 
 import numpy as np
@@ -68,7 +70,14 @@ class Case:
         """Check every input (:class:`~bearingload.errors.InputError` names the parameter) and
         find their broadcast shape; each input kept as a Python scalar when given as one (the
         scalar contract, :func:`bearingload.numerics.scalar_out`)."""
-        arrays = checked(balls, load, stiffness, clearance, cage_angle, exponent)
+        arrays = checked(
+            balls=balls,
+            load=load,
+            stiffness=stiffness,
+            clearance=clearance,
+            cage_angle=cage_angle,
+            exponent=exponent,
+        )
         arrays[4] = np.mod(arrays[4], 360.0)
         shape = broadcast_shape(dict(zip(INPUTS, arrays, strict=True)))
         balls, load, stiffness, clearance, cage_angle, exponent = (scalar_out(a) for a in arrays)
@@ -79,19 +88,22 @@ class Case:
         return {name: scalar_out(getattr(self, name)) for name in names}
 
 
-def checked(
-    balls: Any, load: Any, stiffness: Any, clearance: Any, cage_angle: Any, exponent: Any
-) -> list[np.ndarray]:
-    """The six case inputs checked in the order of :data:`INPUTS` (an
-    :class:`~bearingload.errors.InputError` names the first refused), as arrays, not broadcast."""
-    return [
-        validate.ball_count(balls),
-        validate.positive("load", load, "N"),
-        validate.positive("stiffness", stiffness, "N/mm^m"),
-        validate.finite("clearance", clearance),
-        validate.finite("cage_angle", cage_angle),
-        validate.exponent(exponent),
-    ]
+#: The rule of each case input (:mod:`bearingload.validate`), by name.
+_RULES: dict[str, Callable[[Any], np.ndarray]] = {
+    "balls": validate.ball_count,
+    "load": partial(validate.positive, "load", unit="N"),
+    "stiffness": partial(validate.positive, "stiffness", unit="N/mm^m"),
+    "clearance": partial(validate.finite, "clearance"),
+    "cage_angle": partial(validate.finite, "cage_angle"),
+    "exponent": validate.exponent,
+}
+
+
+def checked(**inputs: Any) -> list[np.ndarray]:
+    """The case inputs given by name (any of :data:`INPUTS`), each checked by its rule in the
+    order given (an :class:`~bearingload.errors.InputError` names the first refused), as
+    arrays, not broadcast."""
+    return [_RULES[name](value) for name, value in inputs.items()]
 
 
 @dataclass(frozen=True)

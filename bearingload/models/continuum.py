@@ -68,6 +68,7 @@ import numpy as np
 
 from bearingload import validate
 from bearingload.errors import ConvergenceError, InputError
+from bearingload.models.case import checked
 from bearingload.numerics import scalar_out
 
 #: Gauss-Legendre order used inside the solver iterations (J_r to ~3e-14). [-]
@@ -312,11 +313,10 @@ def solve_continuum(
     >>> round(float(r.k), 4), round(float(r.q_max / 9.80665), 1)
     (0.5625, 168.8)
     """
-    z = validate.ball_count(balls).astype(float)
-    force = validate.positive("load", load, "N")
-    k_ball = validate.positive("stiffness", stiffness, "N/mm^m")
-    e = validate.finite("clearance", clearance) / 2.0
-    m = validate.exponent(exponent)
+    z, force, k_ball, g, m = checked(
+        balls=balls, load=load, stiffness=stiffness, clearance=clearance, exponent=exponent
+    )
+    z, e = z.astype(float), g / 2.0
     if nodes is not None and not (isinstance(nodes, int) and 1 <= nodes <= 1000):
         raise InputError("nodes", f"must be a whole number from 1 to 1000, got {nodes!r}")
     shape = validate.broadcast_shape(

@@ -469,7 +469,7 @@ def _in_user_terms(exc: ConvergenceError, inputs: tuple[np.ndarray, ...]) -> Con
 
 def _validated(*values: Any) -> list[np.ndarray]:
     """The six inputs checked, reduced (cage angle to [0, 360) in degrees) and broadcast."""
-    arrays = checked(*values)
+    arrays = checked(**dict(zip(INPUTS, values, strict=True)))
     for name, arr in zip(INPUTS, arrays, strict=True):
         if arr.size == 0:
             raise InputError(name, f"is an empty array (shape {arr.shape}); give at least one case")

@@ -29,6 +29,7 @@ import numpy as np
 
 from bearingload import validate
 from bearingload.errors import InputError
+from bearingload.models.case import checked
 from bearingload.numerics import scalar_out
 
 #: Load-zone parameters of the printed table, steps of 0.1. [-]
@@ -220,11 +221,8 @@ def load_zone_table_k(balls: Any, load: Any, stiffness: Any, clearance: Any = 0.
     >>> round(load_zone_table_k(8, 1000.0, 1e5).k * 8, 4)  # 1/0.2288
     4.3706
     """
-    z = validate.ball_count(balls).astype(float)
-    f = validate.positive("load", load, "N")
-    kk = validate.positive("stiffness", stiffness, "N/mm^m")
-    g = validate.finite("clearance", clearance)
-    z, f, kk, g = np.broadcast_arrays(z, f, kk, g)
+    z, f, kk, g = checked(balls=balls, load=load, stiffness=stiffness, clearance=clearance)
+    z, f, kk, g = np.broadcast_arrays(z.astype(float), f, kk, g)
     e = g / 2.0
     with np.errstate(divide="ignore", over="ignore"):
         target = f / (z * kk * np.abs(e) ** 1.5)
