@@ -468,7 +468,7 @@ def _in_user_terms(exc: ConvergenceError, inputs: tuple[np.ndarray, ...]) -> Con
 
 
 def _validated(*values: Any) -> list[np.ndarray]:
-    """The six inputs checked, reduced (cage angle to [0, 360) in degrees) and broadcast."""
+    """The six inputs checked (none empty) and broadcast to one shape."""
     arrays = checked(**dict(zip(INPUTS, values, strict=True)))
     for name, arr in zip(INPUTS, arrays, strict=True):
         if arr.size == 0:
@@ -606,10 +606,8 @@ def _assemble(
     matrix[:, 0, 1] = matrix[:, 1, 0] = rows[:, _COL["hxy"]] * to_n_mm
     matrix[:, 1, 1] = rows[:, _COL["hyy"]] * to_n_mm
 
-    def shaped(a: np.ndarray) -> Any:
-        if shape == ():  # one case: Python scalars, as the one-case path gives
-            return a.reshape(()).item()
-        return a.reshape(shape)
+    def shaped(a: np.ndarray) -> Any:  # one case: Python scalars, as the one-case path gives
+        return numerics.scalar_out(a.reshape(shape))
 
     return LoadDistribution(
         balls=shaped(z),
