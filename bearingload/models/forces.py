@@ -32,6 +32,7 @@ import numpy as np
 import bearingload.models._core as _core
 from bearingload import validate
 from bearingload.errors import InputError
+from bearingload.models.case import checked
 
 
 @dataclass(frozen=True)
@@ -118,10 +119,10 @@ def ring_forces(
         z = z.flat[0]
     nz = int(z)
     xs, ys = validate.finite("x", x), validate.finite("y", y)
-    kk = validate.positive("stiffness", stiffness, "N/mm^m")
-    e = validate.finite("clearance", clearance) / 2.0
-    phi1 = np.mod(validate.finite("cage_angle", cage_angle), 360.0)
-    m = validate.exponent(exponent)
+    kk, g, cage, m = checked(
+        stiffness=stiffness, clearance=clearance, cage_angle=cage_angle, exponent=exponent
+    )
+    e, phi1 = g / 2.0, np.mod(cage, 360.0)
     shape = validate.broadcast_shape(
         {"x": xs, "y": ys, "stiffness": kk, "clearance": e, "cage_angle": phi1, "exponent": m}
     )

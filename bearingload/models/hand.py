@@ -116,12 +116,9 @@ def kuzmenko2010_trial(
     >>> round(r.angle, 1), round(r.q_max, 1)
     (85.1, 164.7)
     """
-    z = validate.ball_count(balls)
-    f = validate.positive("load", load, "N")
-    kk = validate.positive("stiffness", stiffness, "N/mm^m")
-    g = validate.positive("clearance", clearance, "mm")
-    cage = validate.finite("cage_angle", cage_angle)
-    m = validate.exponent(exponent)
+    z, f, kk = checked(balls=balls, load=load, stiffness=stiffness)
+    g = validate.positive("clearance", clearance, "mm")  # the procedure needs a gap
+    cage, m = checked(cage_angle=cage_angle, exponent=exponent)
     if not (isinstance(step, (int, float)) and 0 < step <= 10):
         raise InputError("step", f"must be a number of degrees in (0, 10], got {step!r}")
     if rounding not in ("nearest", "up"):
