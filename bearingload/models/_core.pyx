@@ -170,9 +170,9 @@ cdef inline double curve_slope(const Case *cs, double ca, double cam1) noexcept 
 # of the scalar path of bearingload.contact.hertz.ball_stiffness (its _hertz_scalar: the
 # ellipticity by Newton from a fitted start on the AGM's elliptic integrals, ``elliptic`` of
 # bearingload/_elliptic.pyx, the one C copy of numerics.elliptic_integrals; the contact
-# stiffness, both in series), in its order, one node at a time. Inputs hertz.py refuses (a curvature ratio beyond 1e15, Poisson's ratio
-# outside (-1, 0.5]) or an ellipticity not settled come back as a status: the caller lets
-# hertz.py say why.
+# stiffness, both in series), in its order, one node at a time. Inputs hertz.py refuses (a
+# curvature ratio beyond 1e15, Poisson's ratio outside (-1, 0.5]) or an ellipticity not
+# settled come back as a status: the caller lets hertz.py say why.
 
 from bearingload.contact._hertz_scalar import START_CHEBYSHEV
 
