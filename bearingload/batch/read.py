@@ -223,7 +223,7 @@ def read_cases(stream: BinaryIO, size: int = CHUNK_ROWS) -> tuple[Header, Iterat
     """The header of a csv file read as bytes (row 1), and its blocks of up to ``size`` rows.
 
     The rows are read by the ``csv`` module (a quoted cell may hold commas and line breaks; a
-    record's row number is that of its last line). Each line is decoded as UTF-8 on its own (a
+    record's row number is that of its first line). Each line is decoded as UTF-8 on its own (a
     byte order mark before the header is dropped): a line that is not UTF-8 is a bad row named
     by its number, not the end of the file. Blank lines are skipped (they still count as rows).
 
@@ -248,18 +248,17 @@ def _blocks(lines: Iterator[bytes], size: int) -> Iterator[Block]:
             break
         except csv.Error:
             cells = ["\0"]  # unreadable: a cell count that never fits
-        row = reader.line_num + 1
-        if row > last + 1 and sum(quotes.pop(r, 0) for r in range(last + 1, row + 1)) % 2:
-            start = last + 1  # an odd count: the reader took every line to the end into a cell
+        start, row = last + 1, reader.line_num + 1  # a record's first and last lines
+        if row > start and sum(quotes.pop(r, 0) for r in range(start, row + 1)) % 2:
             errors[start] = (f"a quote opened in this row is never closed: rows {start} to {row} "
                              "(the end of the file) were read as one cell")  # fmt: skip
-            cells = []
+            cells = []  # an odd count: the reader took every line to the end into a cell
         quotes.pop(row, None)
         last = row
         block.errors |= errors
         errors.clear()
         if cells:
-            block.numbers.append(row)
+            block.numbers.append(start)
             block.cells.append(cells)
         if len(block.numbers) + len(block.errors) >= size:
             yield block
