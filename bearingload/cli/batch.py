@@ -78,8 +78,8 @@ def batch(
     (csv: the last column, skipped; json: skipped; table and markdown: the notes) and standard
     error names it ('Skipped: row N: reason', apart from the warnings of the solved rows); the
     exit status is then 1 (2: a bad command line or header, or a bad row with --strict). A last
-    line on standard error counts the rows solved and skipped and the warnings; -q leaves that
-    line alone.
+    line on standard error counts the rows solved and skipped and the warnings (where a row was
+    skipped or warned, or the file has no data rows); -q leaves that line alone.
 
     Rows that share a bearing and an engine are solved together, chunk by chunk, by one
     vectorised call; each row's answer depends on its own cells only. csv is streamed (-o
@@ -146,15 +146,16 @@ def batch(
 
 def _summary(total: int, skipped: int, warned: int, quiet: bool) -> None:
     """The last line on stderr: the rows solved and skipped and the warnings (said where there
-    were skipped rows or warnings), after the count of warnings not shown."""
+    were skipped rows or warnings, or no rows), after the count of warnings not shown."""
     if warned > MAX_WARNINGS_SHOWN and not quiet:
         click.echo(
             f"Warning: {warned - MAX_WARNINGS_SHOWN} more warnings not shown (--format json "
             "lists every row's warnings)",
             err=True,
         )
-    if skipped or warned:
+    if skipped or warned or not total:
         where = "; the output names each skipped row and its reason" if skipped else ""
+        where = where if total else "; the file has no data rows"
         status = " (exit status 1)" if skipped else ""
         click.echo(
             f"{total - skipped} of {total} rows solved, {skipped} skipped{status}, "
