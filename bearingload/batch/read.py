@@ -19,8 +19,8 @@ from typing import Any, BinaryIO
 from bearingload.bearings.mounting import MOUNTING_PARAMS
 from bearingload.errors import InputError, UnusedError
 from bearingload.plan.case import LOAD_PARAMS
-from bearingload.plan.inputs import READERS, Reader, quantity, text
-from bearingload.plan.many import PAIR_PARAMS
+from bearingload.plan.inputs import READERS, Reader, count, quantity, text
+from bearingload.plan.many import GEOMETRY, PAIR_PARAMS
 
 #: Rows read, solved and written at a time (memory stays flat however long the file).
 CHUNK_ROWS = 10_000
@@ -29,22 +29,13 @@ CHUNK_ROWS = 10_000
 COLUMNS = tuple(["bearing", *("ec" if n == "e_c" else n for n in READERS), "method", "revolutions"])
 #: The words of a flag column (case-insensitive; csv output writes True and False).
 FLAGS = {"true": True, "false": False}
-#: The load columns: a row with a cell in one of them is a combined-load case (3-D equilibrium),
-#: as solve's load options choose its engine.
-LOAD_COLUMNS = LOAD_PARAMS
-#: The columns of a bearing pair: a file with one of them is a file of pairs, every row a pair.
-PAIR_COLUMNS = PAIR_PARAMS
-#: Columns a file of pairs cannot have (a pair takes no clearance, misalignment, method ...).
-NOT_PAIRS = ("method", "revolutions", "exponent", "clearance", "clearance_pick", "misalignment")
-#: Columns that belong to the combined load (tilt_radius: the lever of its tilt).
-COMBINED_COLUMNS = (*LOAD_COLUMNS, "tilt_radius")
-#: Columns a file with combined-load columns cannot have: its combined rows are solved by the
-#: 3-D equilibrium (m = 1.5), their lives in 10^6 revolutions.
-NOT_COMBINED = ("method", "revolutions", "exponent")
+#: Columns of the combined load (the plan's load inputs, a row with a cell in one of them is a
+#: combined-load case, as solve's load options choose its engine; tilt_radius: their lever).
+COMBINED_COLUMNS = (*LOAD_PARAMS, "tilt_radius")
 #: Columns that make a row a bearing (resolved by bearings.resolve) rather than a bare ring.
 BEARING_COLUMNS = (
-    *("bearing", "ball_diameter", "pitch_diameter", "inner_conformity", "outer_conformity"),
-    *("modulus", "poisson", "ball_material", "clearance_pick", "revolutions", *MOUNTING_PARAMS),
+    *(*GEOMETRY, "inner_conformity", "outer_conformity", "modulus", "poisson", "ball_material"),
+    *("clearance_pick", "revolutions", *MOUNTING_PARAMS),
 )
 #: The kind of unit of the columns whose reader is no plain quantity (a header unit's kind).
 UNIT_KINDS = {
@@ -60,26 +51,14 @@ _HEADER = re.compile(r"^\s*([^\[\]]*?)\s*(?:\[\s*([^\]]*?)\s*\])?\s*$")
 class Header:
     """The columns of a batch file: ``names`` in file order and each one's header ``units``;
     ``blank_tail`` empty header cells after the last name (a spreadsheet's trailing comma), whose
-    cells a row may have and must leave empty."""
+    cells a row may have and must leave empty; what kind of rows the columns make."""
 
     names: tuple[str, ...]
     units: dict[str, str]
     blank_tail: int = 0
-
-    @property
-    def combined(self) -> bool:
-        """True when rows may be combined-load cases (an axial load, moment ... column)."""
-        return any(n in COMBINED_COLUMNS for n in self.names)
-
-    @property
-    def pairs(self) -> bool:
-        """True when every row is a bearing pair (an arrangement, preload or width column)."""
-        return any(n in PAIR_COLUMNS for n in self.names)
-
-    @property
-    def has_bearing(self) -> bool:
-        """True when some column can make a row a catalogue or geometry bearing."""
-        return any(n in BEARING_COLUMNS for n in self.names)
+    combined: bool = False  # rows may be combined-load cases (an axial load, moment ... column)
+    pairs: bool = False  # every row is a bearing pair (an arrangement, preload or width column)
+    has_bearing: bool = False  # some column can make a row a catalogue or geometry bearing
 
 
 def read_header(fields: list[str]) -> Header:
@@ -91,10 +70,11 @@ def read_header(fields: list[str]) -> Header:
         (parameter ``columns``) naming unknown, duplicated or not-yet-supported columns, a
         missing ``load``, or a header unit that does not fit its column.
     """
-    blank_tail = len(fields) - len(_without_blank_tail(fields))
-    fields = fields[: len(fields) - blank_tail]
+    blank_tail = 0  # empty cells at the end (``balls,load,``), a column at least left
+    while len(fields) - blank_tail > 1 and not fields[-1 - blank_tail].strip():
+        blank_tail += 1
     names, units = [], {}
-    for raw in fields:
+    for raw in fields[: len(fields) - blank_tail]:
         match = _HEADER.match(raw)
         name = (match.group(1) if match else raw).strip().lower().replace("-", "_")
         name = name.replace(" ", "_")
@@ -123,15 +103,9 @@ def read_header(fields: list[str]) -> Header:
         raise InputError("columns", "the column 'load' is required")
     for name, unit in units.items():
         _check_header_unit(name, unit)
-    return Header(tuple(names), units, blank_tail)
-
-
-def _without_blank_tail(fields: list[str]) -> list[str]:
-    """The header cells without the empty ones at its end (``balls,load,`` -> balls, load)."""
-    end = len(fields)
-    while end > 1 and not fields[end - 1].strip():
-        end -= 1
-    return fields[:end]
+    given = set(names).intersection
+    kinds = (COMBINED_COLUMNS, PAIR_PARAMS, BEARING_COLUMNS)
+    return Header(tuple(names), units, blank_tail, *(bool(given(k)) for k in kinds))
 
 
 def library_name(column: str) -> str:
@@ -165,7 +139,7 @@ def _check_file(
     given = [n for n in names if n in kinds]
     if not given:
         return
-    if not any(n in ("bearing", "ball_diameter", "pitch_diameter") for n in names):
+    if not any(n in GEOMETRY for n in names):
         raise InputError("columns", f"{given[0]}: {needs}")
     bad = [n for n in names if n in refused]
     if bad:
@@ -178,15 +152,15 @@ _FILE_KINDS = (
         COMBINED_COLUMNS,
         "the combined load needs deep-groove ball bearings: add a 'bearing' column (a "
         "designation) or 'ball_diameter' and 'pitch_diameter'",
-        NOT_COMBINED,
+        ("method", "revolutions", "exponent"),
         "with the combined load ({}): its rows are solved by the 3-D equilibrium of a ball "
         "bearing (m = 1.5), lives in 10^6 rev",
     ),
     (
-        PAIR_COLUMNS,
+        PAIR_PARAMS,
         "a file of bearing pairs needs angular-contact ball bearings: add a 'bearing' column "
         "(7205B, 7205BDB) or 'ball_diameter', 'pitch_diameter' and 'contact_angle'",
-        NOT_PAIRS,
+        ("method", "revolutions", "exponent", "clearance", "clearance_pick", "misalignment"),
         "in a file of bearing pairs ({}): a pair is solved by the exact model of its "
         "angular-contact bearings, no clearance (the contact angle fixes the geometry), no "
         "misalignment (give the moment)",
@@ -239,22 +213,15 @@ def read_cases(stream: BinaryIO, size: int = CHUNK_ROWS) -> tuple[Header, Iterat
 def _blocks(lines: Iterator[bytes], size: int) -> Iterator[Block]:
     errors: dict[int, str] = {}
     quotes: dict[int, int] = {}  # row -> quote characters, of the lines that have any
-    reader = csv.reader(_decoded(lines, errors, quotes))
+    records = csv.reader(_decoded(lines, errors, quotes))
     block, last = Block(), 1
-    while True:
-        try:
-            cells = next(reader)
-        except StopIteration:
-            break
-        except csv.Error:
-            cells = ["\0"]  # unreadable: a cell count that never fits
-        start, row = last + 1, reader.line_num + 1  # a record's first and last lines
-        if row > start and sum(quotes.pop(r, 0) for r in range(start, row + 1)) % 2:
-            errors[start] = (f"a quote opened in this row is never closed: rows {start} to {row} "
+    while (cells := _record(records)) is not None:
+        start, last = last + 1, records.line_num + 1  # the record's first and last lines
+        if last > start and sum(quotes.pop(r, 0) for r in range(start, last + 1)) % 2:
+            errors[start] = (f"a quote opened in this row is never closed: rows {start} to {last} "
                              "(the end of the file) were read as one cell")  # fmt: skip
             cells = []  # an odd count: the reader took every line to the end into a cell
-        quotes.pop(row, None)
-        last = row
+        quotes.pop(last, None)
         block.errors |= errors
         errors.clear()
         if cells:
@@ -266,6 +233,14 @@ def _blocks(lines: Iterator[bytes], size: int) -> Iterator[Block]:
     block.errors |= errors
     if block.numbers or block.errors:
         yield block
+
+
+def _record(records: Any) -> list[str] | None:
+    """The next record's cells (None: the end; an unreadable one a cell count that never fits)."""
+    try:
+        return next(records, None)
+    except csv.Error:
+        return ["\0"]
 
 
 def _header(first: bytes | None) -> Header:
@@ -388,9 +363,10 @@ def _is_number(cell: str) -> bool:
 def _bare_numbers(
     name: str, unit: str | None, texts: Sequence[str], m: Sequence[float] | None
 ) -> list[Any] | None:
-    """Every cell a bare number its reader takes as it is, read at once in package units; None
-    when some cell needs :func:`_cell` (also to be named: out of range, a fraction of a ball, a
-    number implausible without a unit, infinity)."""
+    """Every cell a bare number, read at once in package units; None when some cell needs
+    :func:`_cell`. The reader's checks of a number are ranges (and a whole number of balls,
+    checked here): where it takes the smallest and the largest cell (of each exponent m), as
+    :func:`_cell` reads them, it takes every one, with the value read here."""
     import numpy as np
 
     from bearingload import units
@@ -403,16 +379,19 @@ def _bare_numbers(
         v = np.array(texts, dtype=float)
     except ValueError:
         return None
-    if not np.all(np.isfinite(v)) or not _taken(name, read, kind, v, unit):
+    if not np.all(np.isfinite(v)) or read is count and not np.all(v == np.round(v)):
+        return None
+    exponents = np.full(v.size, 1.5) if m is None else np.asarray(m, dtype=float)
+    groups = [np.flatnonzero(exponents == e) for e in set(exponents.tolist())]
+    try:  # the ends of each group as the reader takes them (or names them: then cell by cell)
+        for i in {int(g[end(v[g])]) for g in groups for end in (np.argmin, np.argmax)}:
+            _cell(name, unit, texts[i].strip(), float(exponents[i]))
+    except InputError:
         return None
     if not unit:
         return v.tolist()
     if kind == "stiffness":
-        exponents = np.full(v.size, 1.5) if m is None else np.asarray(m, dtype=float)
-        try:  # a unit of another exponent: the reader names the row
-            factor = {e: units.stiffness_factor(unit, e) for e in set(exponents.tolist())}
-        except InputError:
-            return None
+        factor = {e: units.stiffness_factor(unit, e) for e in set(exponents.tolist())}
         return (v * np.array([factor[e] for e in exponents.tolist()])).tolist()
     if kind == "cage_angle":
         return (v * float(units.parse_cage_angle("1" + unit))).tolist()
@@ -421,33 +400,3 @@ def _bare_numbers(
 
 #: Columns of plain numbers (no unit, no range).
 _NUMBERS = ("balls", "inner_conformity", "outer_conformity", "poisson", "viscosity_index")
-
-
-def _taken(name: str, read: Any, kind: str | None, v: Any, unit: str | None) -> bool:
-    """Whether the reader takes each of the bare numbers ``v`` as it is."""
-    import numpy as np
-
-    low, high, low_open = getattr(read, "range", (-np.inf, np.inf, False))
-    ok = (v > low if low_open else v >= low) & (v <= high)
-    if getattr(read, "positive", False):
-        ok &= v > 0
-    if name == "preload":
-        ok &= v >= 0
-    if name == "balls":
-        ok &= v == np.round(v)
-    return bool(np.all(ok)) and (bool(unit) or kind is None or not _implausible(name, kind, v))
-
-
-def _implausible(name: str, kind: str, values: Any) -> bool:
-    """Whether some bare number lies outside the plausible range of its quantity
-    (:data:`bearingload.units.PLAUSIBLE_BARE`)."""
-    import numpy as np
-
-    from bearingload.units import PLAUSIBLE_BARE
-
-    kind = "angle" if kind == "cage_angle" else kind
-    rule = PLAUSIBLE_BARE.get((kind, name)) or PLAUSIBLE_BARE.get((kind, None))
-    if rule is None:
-        return False
-    low, high, _ = rule
-    return bool(np.any((values < low) | (values >= high)))
