@@ -2,8 +2,10 @@
 
 from __future__ import annotations
 
+import contextlib
 import sys
 import time
+from collections.abc import Callable, Iterator
 from itertools import compress
 from typing import Any, BinaryIO
 
@@ -98,8 +100,8 @@ def batch(
       # a speed column: the ball dynamics (quasi_static, ball_density), per-ball contacts in json
       bearingload batch examples/speed_cases.csv --format json
     """
+    from bearingload.batch import report
     from bearingload.batch.read import CHUNK_ROWS, read_cases
-    from bearingload.batch.report import SKIPPED, Held, batch_columns, csv_chunk
     from bearingload.batch.solve import BatchSolver
     from bearingload.errors import InputError
     from bearingload.reports.render import csv_header
@@ -110,35 +112,34 @@ def batch(
         header, blocks = read_cases(cases, chunk_size or CHUNK_ROWS)
     except InputError as exc:
         raise click.UsageError(_header_message(exc)) from exc
-    columns, solver = batch_columns(header), BatchSolver(header)
-    held = Held(header, columns)
+    columns, solver = report.batch_columns(header), BatchSolver(header)
+    written = [*columns, report.SKIPPED]  # csv's
+    held = report.Held(header, columns)
     skipped: list[tuple[int, str]] = []
     warned = total = 0
     progress = _Progress()
-    with _Sink(output, strict) as sink:
+    with _sink(output, strict) as write:
         if fmt == "csv":
-            sink.write(csv_header([*columns, SKIPPED]))
+            write(csv_header(written))
         for block in blocks:
             total += len(block.numbers) + len(block.errors)
             part = solver.solve(block)
             if part.errors and strict:
-                sink.fail()
                 row, message = part.errors[0]
                 raise click.UsageError(f"Invalid value in row {row}: {message}")
             skipped += part.errors
             warned = _row_messages(part, warned, progress, quiet)
             if fmt == "csv":
-                sink.write(csv_chunk([*columns, SKIPPED], part.rows, part.values, part.errors))
+                write(report.csv_chunk(written, part.rows, part.values, part.errors))
             elif not held.add(part):
-                sink.fail()
                 raise click.UsageError(
                     f"Invalid value for '--format': {fmt} holds every row and takes at most "
-                    f"{held.limit} rows; write --format csv for longer files"
+                    f"{report.MAX_HELD_ROWS} rows; write --format csv for longer files"
                 )
             progress.update(total)
         progress.clear()
         if fmt != "csv":
-            sink.write(held.report(skipped, fmt))
+            write(held.report(skipped, fmt))
     _summary(total, len(skipped), warned, quiet)
     if skipped:
         click.get_current_context().exit(1)
@@ -188,56 +189,43 @@ def _header_message(exc: Exception) -> str:
     return f"Invalid value for 'CASES.csv' header: {exc}"
 
 
-class _Sink:
-    """Where the report goes: a temporary file renamed over ``-o FILE`` at the end, a spool
-    copied to standard output at the end (``--strict``: nothing is written before the last row
-    is known to be good), or standard output chunk by chunk."""
+@contextlib.contextmanager
+def _sink(output: str | None, strict: bool) -> Iterator[Callable[[str], Any]]:
+    """Where the report goes, ``write(text)``: a temporary file renamed over ``-o FILE`` at the
+    end, a spool copied to standard output at the end (``--strict``: nothing is written before
+    the last row is known to be good), or standard output chunk by chunk. An error inside the
+    block writes nothing (the file is left as it was)."""
+    if output not in (None, "-"):
+        from bearingload.reports.render import atomic_file
 
-    def __init__(self, output: str | None, strict: bool) -> None:
-        self.output = None if output in (None, "-") else output
-        self.failed = False
-        self.fh: Any = None
-        if self.output is None and strict:
-            import tempfile
-
-            self.fh = tempfile.TemporaryFile("w+", encoding="utf-8", newline="\n")
-
-    def __enter__(self) -> _Sink:
-        if self.output is not None:
-            from bearingload.reports.render import atomic_file
-
-            self.atomic = atomic_file(self.output)
-            self.fh = self._writing(self.atomic.__enter__)
-        return self
-
-    def write(self, text: str) -> None:
-        if self.fh is None:
-            click.echo(text, nl=False)
-        else:
-            self.fh.write(text)
-
-    def fail(self) -> None:
-        self.failed = True
-
-    def __exit__(self, kind: Any, exc: Any, tb: Any) -> None:
-        bad = kind is not None or self.failed
-        if self.output is not None:
-            self._writing(lambda: self.atomic.__exit__(RuntimeError if bad else None, None, None))
-        elif self.fh is not None:
-            if not bad:
-                self.fh.seek(0)
-                while block := self.fh.read(1 << 20):
-                    click.echo(block, nl=False)
-            self.fh.close()
-
-    def _writing(self, call: Any) -> Any:
-        """``call()``, an OSError said as a bad ``-o``."""
+        target = atomic_file(output)
+        fh = _writing(output, target.__enter__)
         try:
-            return call()
-        except OSError as exc:
-            raise click.UsageError(
-                f"Invalid value for '-o' / '--output': cannot write {self.output!r}: {exc.strerror}"
-            ) from exc
+            yield fh.write
+        except BaseException:
+            _writing(output, lambda: target.__exit__(RuntimeError, None, None))
+            raise
+        _writing(output, lambda: target.__exit__(None, None, None))
+    elif strict:
+        import tempfile
+
+        with tempfile.TemporaryFile("w+", encoding="utf-8", newline="\n") as spool:
+            yield spool.write
+            spool.seek(0)
+            while block := spool.read(1 << 20):
+                click.echo(block, nl=False)
+    else:
+        yield lambda text: click.echo(text, nl=False)
+
+
+def _writing(output: str, call: Callable[[], Any]) -> Any:
+    """``call()``, an OSError said as a bad ``-o``."""
+    try:
+        return call()
+    except OSError as exc:
+        raise click.UsageError(
+            f"Invalid value for '-o' / '--output': cannot write {output!r}: {exc.strerror}"
+        ) from exc
 
 
 class _Progress:
