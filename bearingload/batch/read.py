@@ -366,10 +366,9 @@ def _bare_numbers(
     """Every cell a bare number, read at once in package units; None when some cell needs
     :func:`_cell`. The reader's checks of a number are ranges (and a whole number of balls,
     checked here): where it takes the smallest and the largest cell (of each exponent m), as
-    :func:`_cell` reads them, it takes every one, with the value read here."""
+    :func:`_cell` reads them, it takes every one; a header unit scales each by the value
+    :func:`_cell` reads for a 1."""
     import numpy as np
-
-    from bearingload import units
 
     read, kind = reader(name), unit_kind(name)
     numeric = kind not in (None, "temperature") or hasattr(read, "range") or name in _NUMBERS
@@ -381,21 +380,18 @@ def _bare_numbers(
         return None
     if not np.all(np.isfinite(v)) or read is count and not np.all(v == np.round(v)):
         return None
-    exponents = np.full(v.size, 1.5) if m is None else np.asarray(m, dtype=float)
-    groups = [np.flatnonzero(exponents == e) for e in set(exponents.tolist())]
-    try:  # the ends of each group as the reader takes them (or names them: then cell by cell)
+    ms = [1.5] * v.size if m is None else list(m)
+    groups = [np.flatnonzero(np.asarray(ms) == e) for e in set(ms)]
+    try:  # the reader names a bad end: then cell by cell, each named
         for i in {int(g[end(v[g])]) for g in groups for end in (np.argmin, np.argmax)}:
-            _cell(name, unit, texts[i].strip(), float(exponents[i]))
+            _cell(name, unit, texts[i].strip(), ms[i])
+        one = {e: _cell(name, unit, "1", e) for e in set(ms)} if unit else {}
+        one = {e: getattr(x, "length", x) for e, x in one.items()}  # a clearance's length
     except InputError:
         return None
     if not unit:
         return v.tolist()
-    if kind == "stiffness":
-        factor = {e: units.stiffness_factor(unit, e) for e in set(exponents.tolist())}
-        return (v * np.array([factor[e] for e in exponents.tolist()])).tolist()
-    if kind == "cage_angle":
-        return (v * float(units.parse_cage_angle("1" + unit))).tolist()
-    return (v * units.parse_quantity("1" + unit, str(kind))).tolist()
+    return (v * (one[ms[0]] if len(one) == 1 else np.array([one[e] for e in ms]))).tolist()
 
 
 #: Columns of plain numbers (no unit, no range).
