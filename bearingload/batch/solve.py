@@ -45,12 +45,14 @@ class BatchSolver:
                 else:
                     errors[number] = message
         cols, bad, bare = self._columns(rows)
-        many = self.planner.solve(cols, len(numbers), bad, bare)
         if self.header.pairs:
             from bearingload.batch.pairs import pair_rows
+            from bearingload.plan.many_pairs import solve_pair_cases
 
+            many = solve_pair_cases(self.planner, cols, len(numbers), bad, bare)
             solved, values = pair_rows(self.header, many, numbers, cols, errors)
         else:
+            many = self.planner.solve(cols, len(numbers), bad, bare)
             solved, values = [numbers[i] for i in many.rows], many.values
         for i, why in many.errors.items():
             errors[numbers[i]] = why if isinstance(why, str) else row_message(why)

@@ -89,8 +89,8 @@ def case_of(v: Mapping[str, Any]) -> Case:
 
 class Planner:
     """Plans and solves many cases whose inputs are among ``names``; each distinct plan of a
-    case (its resolved bearing and group, or its refusal) is kept from call to call. Every case
-    is a pair where ``pairs`` says so (None: where ``names`` has an input of a pair).
+    case (its resolved bearing and group, or its refusal) is kept from call to call. Cases of
+    pairs (``pairs``) are solved by :func:`bearingload.plan.many_pairs.solve_pair_cases`.
 
     A file's cases (batch) are planned by its columns: with a column of a load beyond the
     radial one (``loads``) an angular-contact designation's rows take the combined engine,
@@ -101,13 +101,11 @@ class Planner:
     (which the combined engine refuses), and the load is left to the reader of the arguments
     (:func:`bearingload.plan.analyse.read_arguments`) and the solvers, as for one case."""
 
-    def __init__(
-        self, names: Collection[str], *, per_case: bool = False, pairs: bool | None = None
-    ) -> None:
+    def __init__(self, names: Collection[str], *, per_case: bool = False) -> None:
         self.names = frozenset(names)
         self.per_case = per_case
         self.loads = per_case or any(n in LOAD_PARAMS for n in self.names)
-        self.pairs = any(n in PAIR_PARAMS for n in self.names) if pairs is None else pairs
+        self.pairs = any(n in PAIR_PARAMS for n in self.names)
         self.plans: dict[tuple[Any, ...], Any] = {}
         self.bare: dict[str, list[bool]] = {}
 
@@ -119,13 +117,8 @@ class Planner:
         bare: dict[str, list[bool]] | None = None,
     ) -> Many:
         """Solve the ``n`` cases of ``cols`` but those in ``bad`` (index -> why not), whose
-        inputs in ``bare`` (name -> per case) were bare numbers, judged by the bearing's size;
-        cases of pairs by :func:`bearingload.plan.many_pairs.solve_pair_cases`."""
+        inputs in ``bare`` (name -> per case) were bare numbers, judged by the bearing's size."""
         self.bare = bare or {}
-        if self.pairs:
-            from bearingload.plan.many_pairs import solve_pair_cases
-
-            return solve_pair_cases(self, cols, n, bad, bare)
         keys = self._keys(cols, n, bad)
         with_oil_viscosity(cols, [i for i, key in enumerate(keys) if key is not None], bad)
         groups: dict[tuple[Any, ...], list[int]] = {}

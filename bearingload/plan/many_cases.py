@@ -117,7 +117,13 @@ def _solve_group(idx: list[int], read: dict[int, Read], *, pairs: bool) -> Many:
     for j, i in enumerate(idx):
         for k in read[i][1]:
             bare.setdefault(k, [False] * len(idx))[j] = True
-    solved = Planner(names, per_case=True, pairs=pairs).solve(cols, len(idx), {}, bare)
+    planner = Planner(names, per_case=True)
+    if pairs:
+        from bearingload.plan.many_pairs import solve_pair_cases
+
+        solved = solve_pair_cases(planner, cols, len(idx), {}, bare)
+    else:
+        solved = planner.solve(cols, len(idx), {}, bare)
     errors = {idx[j]: as_called(exc, read[idx[j]][2]) for j, exc in solved.errors.items()}
     return Many([idx[j] for j in solved.rows], solved.values, errors)
 
