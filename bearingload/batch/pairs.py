@@ -8,25 +8,8 @@ from __future__ import annotations
 from typing import Any
 
 from bearingload.batch.read import row_message
+from bearingload.batch.report import pair_columns
 from bearingload.errors import BearingloadError
-
-
-def pair_columns(service: set[str] | None) -> list[Any]:
-    """The output columns of a file of pairs: ``row``, then those ``solve 7205BDB --format
-    csv`` writes with the service options the file's columns give (``service``: the service
-    keys they make, :func:`bearingload.batch.report.batch_columns`; None: every one), the
-    pair's as ``pair_...`` (the pair's cross moment in ``pair_moment_cross``; a bearing's
-    record has no ``moment_cross``)."""
-    from bearingload.bearings.mounting import RESULT_KEYS
-    from bearingload.reports.pair import OWN_KEYS, PAIR_SERVICE, csv_columns
-    from bearingload.reports.quantities import SERVICE_KEYS
-    from bearingload.reports.solve import column
-
-    unused = {*SERVICE_KEYS, "ball_density", "rating_life_hours", "reference_rating_life_hours"}
-    # a pair takes no mounting (bearings.mounting refuses it): no operating clearance
-    unused = {"moment_cross", *RESULT_KEYS} | (set() if service is None else unused - service)
-    pair = [k for k in PAIR_SERVICE if service is None or k in service]
-    return [column("row"), *csv_columns(pair, [k for k in OWN_KEYS if k not in unused])]
 
 
 def pair_rows(
@@ -53,16 +36,11 @@ def pair_rows(
         except BearingloadError as exc:
             errors[numbers[i]] = row_message(exc)
             continue
+        warned = tuple(printed_warnings(pc.warnings, lives.bearings))
         for j, row in enumerate(csv_rows(pc, pair, records, keys)):
             rows.append(numbers[i])
-            for k in keys:
-                values[k].append(row[k])
-            for k in oil:
-                values[k].append(cols[k][i])
-            values["warnings"].append(
-                tuple(printed_warnings(pc.warnings, lives.bearings) if j == 0 else ())
-            )
-            held = contact_values(pc.bearings[j].result, pc.bearing.contact_angle)
-            for k, v in held.items():
+            row |= {k: cols[k][i] for k in oil} | {"warnings": () if j else warned}
+            row |= contact_values(pc.bearings[j].result, pc.bearing.contact_angle)
+            for k, v in row.items():
                 values.setdefault(k, []).append(v)
     return rows, values

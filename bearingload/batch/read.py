@@ -1,11 +1,6 @@
-"""Reading a csv file of cases: the header, chunks of rows by the ``csv`` module, the cells.
-
-Columns are named like the options of ``bearingload solve`` (``load``, ``clearance``,
-``ball_diameter`` ...); a unit in the header (``load [kN]``) is the unit of the column's bare
-numbers, a unit in a cell (``300kgf``) is that cell's own. Each cell is read by its input's
-reader, the library's (:data:`bearingload.plan.inputs.READERS`: the same units, ranges and
-messages), a column at a time (:func:`read_column`): bare numbers the reader takes as they are
-at once by numpy, any other cell once per distinct text.
+"""Reading a csv file of cases (docs/batch.md): the header, chunks of rows by the ``csv``
+module, the cells, each by its input's reader (:data:`bearingload.plan.inputs.READERS`: the
+units, ranges and messages of solve's options), a column at a time (:func:`read_column`).
 """
 
 from __future__ import annotations
@@ -194,18 +189,10 @@ class Block:
 
 
 def read_cases(stream: BinaryIO, size: int = CHUNK_ROWS) -> tuple[Header, Iterator[Block]]:
-    """The header of a csv file read as bytes (row 1), and its blocks of up to ``size`` rows.
-
-    The rows are read by the ``csv`` module (a quoted cell may hold commas and line breaks; a
-    record's row number is that of its first line). Each line is decoded as UTF-8 on its own (a
-    byte order mark before the header is dropped): a line that is not UTF-8 is a bad row named
-    by its number, not the end of the file. Blank lines are skipped (they still count as rows).
-
-    Raises
-    ------
-    InputError
-        (parameter ``CASES`` or ``columns``) for a header that cannot be read.
-    """
+    """The header of a csv file read as bytes (row 1), and its blocks of up to ``size`` rows:
+    a record's row number is that of its first line, blank lines count; each line is decoded
+    as UTF-8 on its own (a line that is not is a bad row). Raises InputError (``CASES`` or
+    ``columns``) for a header that cannot be read."""
     lines = iter(stream)
     return _header(next(lines, None)), _blocks(lines, size)
 
@@ -300,28 +287,21 @@ def read_column(
     """The values of one column's cells read by its input's reader (:func:`reader`; a bare
     number with the header's ``unit`` as if written with it), None for a blank cell, and the
     reasons of the cells that cannot be read (index -> ``column: reason``). ``exponents``: each
-    row's m, which a stiffness unit needs (default 1.5).
-
-    A column of bare numbers each reader would take as it is is read by numpy at once;
-    otherwise each distinct cell text is read once."""
+    row's m, which a stiffness unit needs (default 1.5). A column of bare numbers is read by
+    numpy at once (:func:`_bare_numbers`), any other each distinct cell text once."""
     fast = _bare_numbers(name, unit, texts, exponents)
     if fast is not None:
         return fast, {}
-    values: list[Any] = []
-    bad: dict[int, str] = {}
-    seen: dict[tuple[str, float], tuple[bool, Any]] = {}
-    for i, cell in enumerate(texts):
-        key = (cell, 1.5 if exponents is None else exponents[i])
-        hit = seen.get(key)
-        if hit is None:
+    keys = list(zip(texts, [1.5] * len(texts) if exponents is None else exponents, strict=True))
+    seen: dict[tuple[str, float], tuple[Any, str | None]] = {}
+    for key in keys:
+        if key not in seen:
             try:
-                hit = seen[key] = (True, _cell(name, unit, cell.strip(), key[1]))
+                seen[key] = (_cell(name, unit, key[0].strip(), key[1]), None)
             except InputError as exc:
-                hit = seen[key] = (False, row_message(exc))
-        if not hit[0]:
-            bad[i] = hit[1]
-        values.append(hit[1] if hit[0] else None)
-    return values, bad
+                seen[key] = (None, row_message(exc))
+    read = [seen[key] for key in keys]
+    return [v for v, _ in read], {i: why for i, (_, why) in enumerate(read) if why is not None}
 
 
 def _cell(name: str, unit: str | None, cell: str, exponent: float) -> Any:

@@ -1,12 +1,7 @@
-"""The report of ``bearingload batch``: one row per solved case, the columns of ``solve``.
-
-The columns are ``row`` (the input file's row, header = 1) and then those ``bearingload solve
---format csv`` writes for one case (:data:`bearingload.reports.solve.INPUT_KEYS` and
-``REPORT_KEYS``; with a combined-load column those it writes with an axial load, of which a
-row without a load cell, solved by the radial engine, fills the columns the two engines
-share). They are fixed by the file's header, so that every chunk of a long file has the same
-columns: a column of :data:`NEEDS` only where the header gives one of each of its groups of
-input columns, as solve prints a quantity only when its option is given.
+"""The report of ``bearingload batch``: ``row`` (the input file's row, header = 1), then the
+columns ``solve --format csv`` writes for one case (with a combined-load column, those it
+writes with an axial load), fixed by the header (:data:`NEEDS`) so that every chunk of a long
+file has the same columns.
 """
 
 from __future__ import annotations
@@ -101,21 +96,24 @@ def batch_columns(header: Header) -> list[Column]:
     mixed = not header.combined and ("exponent" in header.names or header.has_bearing)
     columns = [column(k, None if mixed else 1.5) for k in ("row", *keys)]
     if header.pairs:
-        from bearingload.batch.pairs import pair_columns
-
         columns = pair_columns(written)
     oil = [column(k) for k in OIL_INPUTS if k in header.names]
     at = next((i for i, c in enumerate(columns) if c.key == "viscosity"), len(columns))
     return columns[:at] + oil + columns[at:]
 
 
-def held_keys(header: Header) -> tuple[str, ...]:
-    """The keys beyond the columns that json, markdown and table hold for a file with
-    ``header`` (:data:`HELD_KEYS` for a combined-load file or a file of pairs, and for a file
-    of bearings with a speed column, whose ball bearings at speed solve gives the ball
-    dynamics)."""
-    at_speed = "speed" in header.names and header.has_bearing
-    return HELD_KEYS if header.combined or header.pairs or at_speed else ()
+def pair_columns(written: set[str] | None) -> list[Column]:
+    """The output columns of a file of pairs: ``row``, then those ``solve 7205BDB --format
+    csv`` writes, of :data:`NEEDS` those the file's columns give
+    (``written``; None: every one), the pair's as ``pair_...`` (the pair's cross moment in
+    ``pair_moment_cross``; a bearing's record has no ``moment_cross``, a pair no mounting)."""
+    from bearingload.reports.pair import OWN_KEYS, PAIR_SERVICE, csv_columns
+
+    kept = [
+        k for k in (*PAIR_SERVICE, *OWN_KEYS) if written is None or k in written or k not in NEEDS
+    ]
+    own = [k for k in OWN_KEYS if k in kept and k not in ("moment_cross", *RESULT_KEYS)]
+    return [column("row"), *csv_columns([k for k in PAIR_SERVICE if k in kept], own)]
 
 
 def csv_chunk(
@@ -145,10 +143,13 @@ def row_values(columns: Sequence[Column], n: int, values: dict[str, Any]) -> dic
 
 class Held:
     """The solved rows of a file that json, markdown and table hold (at most
-    :data:`MAX_HELD_ROWS`)."""
+    :data:`MAX_HELD_ROWS`), with :data:`HELD_KEYS` for a file of combined loads, of pairs, or
+    of bearings with a speed column (whose ball bearings at speed have the ball dynamics)."""
 
     def __init__(self, header: Header, columns: list[Column]) -> None:
-        self.columns, self.extra = columns, held_keys(header)
+        at_speed = "speed" in header.names and header.has_bearing  # ball bearings: dynamics
+        self.columns = columns
+        self.extra = HELD_KEYS if header.combined or header.pairs or at_speed else ()
         self.rows: list[int] = []
         self.values: dict[str, list[Any]] = {c.key: [] for c in columns if c.key != "row"}
 

@@ -35,12 +35,7 @@ MAX_WARNINGS_SHOWN = 20
 @quiet_option
 @library_errors
 def batch(
-    cases: BinaryIO,
-    strict: bool,
-    chunk_size: int | None,
-    fmt: str,
-    output: str | None,
-    quiet: bool,
+    cases: BinaryIO, strict: bool, chunk_size: int | None, fmt: str, output: str | None, quiet: bool
 ) -> None:
     """Solve every case (row) of a csv file: one output row per case, in input order, with the
     input file's row number (the header is row 1), the inputs and the columns that
@@ -110,8 +105,10 @@ def batch(
         raise click.UsageError("Invalid value for '-o' / '--output': the file name is empty")
     try:
         header, blocks = read_cases(cases, chunk_size or CHUNK_ROWS)
-    except InputError as exc:
-        raise click.UsageError(_header_message(exc)) from exc
+    except InputError as exc:  # a column's unit is named with it ('load [kN]: ...')
+        own = exc.parameter in ("CASES", "columns")
+        where, message = ("", exc.message) if own else (" header", str(exc))
+        raise click.UsageError(f"Invalid value for 'CASES.csv'{where}: {message}") from exc
     columns, solver = report.batch_columns(header), BatchSolver(header)
     written = [*columns, report.SKIPPED]  # csv's
     held = report.Held(header, columns)
@@ -180,13 +177,6 @@ def _row_messages(part: Any, warned: int, progress: _Progress, quiet: bool) -> i
             progress.clear()
             click.echo(f"{'Warning' if warning else 'Skipped'}: row {row}: {text}", err=True)
     return warned
-
-
-def _header_message(exc: Exception) -> str:
-    """'Invalid value for ...' of an error in the header line (a column's unit names it)."""
-    if getattr(exc, "parameter", None) in ("CASES", "columns"):
-        return f"Invalid value for 'CASES.csv': {getattr(exc, 'message', exc)}"
-    return f"Invalid value for 'CASES.csv' header: {exc}"
 
 
 @contextlib.contextmanager
