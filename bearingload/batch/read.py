@@ -32,13 +32,6 @@ BEARING_COLUMNS = (
     *(*GEOMETRY, "inner_conformity", "outer_conformity", "modulus", "poisson", "ball_material"),
     *("clearance_pick", "revolutions", *MOUNTING_PARAMS),
 )
-#: The kind of unit of the columns whose reader is no plain quantity (a header unit's kind).
-UNIT_KINDS = {
-    **dict.fromkeys(("clearance", "tilt_radius"), "length"),
-    **dict.fromkeys(("inner_ring_temperature", "outer_ring_temperature"), "temperature"),
-    **{"temperature": "temperature", "stiffness": "stiffness", "preload": "force"},
-    **{"cage_angle": "cage_angle", "revolutions": "revolutions"},
-}
 _HEADER = re.compile(r"^\s*([^\[\]]*?)\s*(?:\[\s*([^\]]*?)\s*\])?\s*$")
 
 
@@ -117,11 +110,6 @@ def reader(column: str) -> Reader:
     return READERS[library_name(column)]
 
 
-def unit_kind(column: str) -> str | None:
-    """The kind of unit of a column's numbers (:data:`bearingload.units.UNITS`), or None."""
-    return UNIT_KINDS.get(column) or getattr(reader(column), "kind", None)
-
-
 _REVOLUTIONS = quantity("revolutions")
 
 
@@ -166,14 +154,14 @@ _FILE_KINDS = (
 def _check_header_unit(name: str, unit: str) -> None:
     from bearingload.units import TEMPERATURE_UNITS, UNITS, parse_quantity, stiffness_factor
 
-    kind, where = unit_kind(name), f"{name} [{unit}]"
+    kind, where = getattr(reader(name), "kind", None), f"{name} [{unit}]"  # its unit's kind
     if kind == "temperature":
         if unit not in TEMPERATURE_UNITS:
             raise InputError(where, f"allowed units: {', '.join(TEMPERATURE_UNITS)}")
     elif kind == "stiffness":
         stiffness_factor(unit, None, parameter=where)
-    elif kind in UNITS or kind == "cage_angle":
-        parse_quantity("1" + unit, "angle" if kind == "cage_angle" else kind, parameter=where)
+    elif kind in UNITS:
+        parse_quantity("1" + unit, kind, parameter=where)
     else:
         raise InputError(where, "this column takes no unit")
 
@@ -350,7 +338,8 @@ def _bare_numbers(
     :func:`_cell` reads for a 1."""
     import numpy as np
 
-    read, kind = reader(name), unit_kind(name)
+    read = reader(name)
+    kind = getattr(read, "kind", None)
     numeric = kind not in (None, "temperature") or hasattr(read, "range") or name in _NUMBERS
     if not texts or not numeric or name == "tilt_radius" or "_" in "".join(texts):
         return None  # numpy reads '1_000' as Python does; the readers refuse it
