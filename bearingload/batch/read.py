@@ -22,8 +22,6 @@ CHUNK_ROWS = 10_000
 #: Accepted columns: the inputs of a case (:data:`bearingload.plan.inputs.READERS`; ``eC`` read
 #: as ``ec``), the bearing, and the radial engine's method and life.
 COLUMNS = tuple(["bearing", *("ec" if n == "e_c" else n for n in READERS), "method", "revolutions"])
-#: The words of a flag column (case-insensitive; csv output writes True and False).
-FLAGS = {"true": True, "false": False}
 #: Columns of the combined load (the plan's load inputs, a row with a cell in one of them is a
 #: combined-load case, as solve's load options choose its engine; tilt_radius: their lever).
 COMBINED_COLUMNS = (*LOAD_PARAMS, "tilt_radius")
@@ -50,38 +48,29 @@ class Header:
 
 
 def read_header(fields: list[str]) -> Header:
-    """The header row: column names (``-`` or spaces read as ``_``) and their ``[unit]``.
-
-    Raises
-    ------
-    InputError
-        (parameter ``columns``) naming unknown, duplicated or not-yet-supported columns, a
-        missing ``load``, or a header unit that does not fit its column.
-    """
+    """The header row: column names (``-`` or spaces read as ``_``) and their ``[unit]``;
+    InputError (``columns``) for an unknown, unnamed or duplicated column, a missing ``load``,
+    a file of columns that cannot go together, or a header unit that does not fit its column."""
     blank_tail = 0  # empty cells at the end (``balls,load,``), a column at least left
     while len(fields) - blank_tail > 1 and not fields[-1 - blank_tail].strip():
         blank_tail += 1
     names, units = [], {}
     for raw in fields[: len(fields) - blank_tail]:
         match = _HEADER.match(raw)
-        name = (match.group(1) if match else raw).strip().lower().replace("-", "_")
-        name = name.replace(" ", "_")
-        names.append(name)
-        if match and match.group(2):
-            units[name] = match.group(2)
+        names.append(
+            (match[1] if match else raw).strip().lower().replace("-", "_").replace(" ", "_")
+        )
+        if match and match[2]:
+            units[names[-1]] = match[2]
     if "" in names:
         raise InputError(
             "columns",
             f"the header's column {names.index('') + 1} has no name (only empty columns at the "
             "end of the header are allowed, and their cells must be empty)",
         )
-    unknown = [n for n in names if n not in COLUMNS]
+    unknown = ", ".join(repr(n) for n in names if n not in COLUMNS)
     if unknown:
-        raise InputError(
-            "columns",
-            f"unknown column(s) {', '.join(repr(n) for n in unknown)}; "
-            f"allowed: {', '.join(COLUMNS)}",
-        )
+        raise InputError("columns", f"unknown column(s) {unknown}; allowed: {', '.join(COLUMNS)}")
     for kind in _FILE_KINDS:
         _check_file(names, *kind)
     twice = sorted({n for n in names if names.count(n) > 1})
@@ -103,14 +92,11 @@ def library_name(column: str) -> str:
 
 def reader(column: str) -> Reader:
     """The reader of a column's cells: its input's (:data:`bearingload.plan.inputs.READERS`)."""
-    if column in ("bearing", "method"):
-        return text
-    if column == "revolutions":
-        return _REVOLUTIONS
-    return READERS[library_name(column)]
+    return _READERS.get(column) or READERS[library_name(column)]
 
 
-_REVOLUTIONS = quantity("revolutions")
+#: The readers of the columns that are no input of a case.
+_READERS = {"bearing": text, "method": text, "revolutions": quantity("revolutions")}
 
 
 def _check_file(
@@ -119,13 +105,10 @@ def _check_file(
     """A file with a column of ``kinds`` (combined loads, pairs) names its bearings or ball
     geometry (else: ``needs``) and has no column of ``refused`` (``why``, the first of ``kinds``
     given in its braces)."""
-    given = [n for n in names if n in kinds]
-    if not given:
-        return
-    if not any(n in GEOMETRY for n in names):
+    given, bad = [n for n in names if n in kinds], [n for n in names if n in refused]
+    if given and not any(n in GEOMETRY for n in names):
         raise InputError("columns", f"{given[0]}: {needs}")
-    bad = [n for n in names if n in refused]
-    if bad:
+    if given and bad:
         raise InputError("columns", f"{bad[0]}: not used {why.format(given[0])}")
 
 
@@ -193,9 +176,11 @@ def _blocks(lines: Iterator[bytes], size: int) -> Iterator[Block]:
     while (cells := _record(records)) is not None:
         start, last = last + 1, records.line_num + 1  # the record's first and last lines
         if last > start and sum(quotes.pop(r, 0) for r in range(start, last + 1)) % 2:
-            errors[start] = (f"a quote opened in this row is never closed: rows {start} to {last} "
-                             "(the end of the file) were read as one cell")  # fmt: skip
             cells = []  # an odd count: the reader took every line to the end into a cell
+            errors[start] = (
+                f"a quote opened in this row is never closed: rows {start} to {last} (the end "
+                "of the file) were read as one cell"
+            )
         quotes.pop(last, None)
         block.errors |= errors
         errors.clear()
@@ -237,9 +222,8 @@ def _header(first: bytes | None) -> Header:
 
 
 def _decoded(lines: Iterator[bytes], errors: dict[int, str], quotes: dict[int, int]) -> Any:
-    """The text of each line after the header (row 2 on); a line that is not UTF-8 goes to
-    ``errors`` and reads as a blank line. Lines with quote characters are counted in
-    ``quotes``."""
+    """The text of each line after the header (row 2 on), its quote characters counted in
+    ``quotes``; a line that is not UTF-8 goes to ``errors`` and reads as a blank line."""
     for row, raw in enumerate(lines, start=2):
         try:
             text = raw.decode("utf-8")
@@ -256,10 +240,8 @@ def _where(exc: UnicodeDecodeError) -> str:
 
 
 def row_message(exc: Exception) -> str:
-    """The reason a row is skipped, ``column: message``, from a library error's fields (the
-    columns of inputs a case would ignore, or of an oil's inputs refused together, all named;
-    a model's name of an input, ``f_i``, as its column: :func:`bearingload.plan.inputs.
-    argument_of`)."""
+    """The reason a row is skipped, ``column: message``, every column of a refusal named, a
+    model's name of an input (``f_i``) as its column (:func:`~.plan.inputs.argument_of`)."""
     if not isinstance(exc, InputError):
         return str(exc)
     from bearingload.plan.inputs import argument_of
@@ -301,14 +283,14 @@ def _cell(name: str, unit: str | None, cell: str, exponent: float) -> Any:
     lib = library_name(name)
     if "_" in cell and _is_number(cell):  # numbers as the command line reads them: no '1_000'
         raise InputError(name, f"cannot read {cell!r} as a number")
-    if name == "quasi_static":  # a word of the csv file: true or false
-        if cell.lower() not in FLAGS:
+    if name == "quasi_static":  # a word of the csv file (any case; csv output writes True)
+        if cell.lower() not in ("true", "false"):
             raise InputError(name, f"cannot read {cell!r}; allowed: true, false (or blank: false)")
-        return FLAGS[cell.lower()]
-    if unit and units.is_bare(cell):
-        cell += unit if name != "stiffness" else ""
+        return cell.lower() == "true"
+    if unit and units.is_bare(cell):  # the header's unit, a stiffness's of this exponent
         if name == "stiffness":
             return float(cell) * units.stiffness_factor(unit, exponent, parameter=name)
+        cell += unit
     value = reader(name)(cell, lib)
     if name == "stiffness":
         return units.parse_stiffness(value, exponent, parameter=name)

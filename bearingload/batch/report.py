@@ -116,6 +116,41 @@ def pair_columns(written: set[str] | None) -> list[Column]:
     return [column("row"), *csv_columns([k for k in PAIR_SERVICE if k in kept], own)]
 
 
+def pair_rows(
+    header: Any, many: Any, numbers: list[int], cols: dict[str, list[Any]], errors: dict[int, str]
+) -> tuple[list[int], dict[str, list[Any]]]:
+    """The output rows of the pairs solved by the plan (:mod:`bearingload.plan.many_pairs`):
+    solve's csv rows of each (:func:`bearingload.reports.pair.csv_rows`, one per bearing, its
+    row number twice) with the row's oil cells, ``warnings`` (the pair's, its speed's and its
+    lives') on the first, each bearing's model and contacts (:data:`HELD_KEYS`). A pair whose
+    records solve would refuse is a skipped row with its reason (in ``errors``)."""
+    from bearingload.batch.read import row_message
+    from bearingload.errors import BearingloadError
+    from bearingload.reports.combined import contact_values
+    from bearingload.reports.pair import csv_rows, pair_records
+    from bearingload.reports.solve import printed_warnings
+
+    keys = [c.key for c in pair_columns(None) if c.key != "row"]
+    oil = [k for k in OIL_INPUTS if k in header.names]  # written as given (nu is the oil's)
+    rows: list[int] = []
+    values: dict[str, list[Any]] = {k: [] for k in [*keys, *oil, "warnings"]}
+    solved = many.values.get("pair", []), many.values.get("lives", [])
+    for i, pc, lives in zip(many.rows, *solved, strict=True):
+        try:
+            pair, records = pair_records(pc, lives)
+        except BearingloadError as exc:
+            errors[numbers[i]] = row_message(exc)
+            continue
+        warned = tuple(printed_warnings(pc.warnings, lives.bearings))
+        for j, row in enumerate(csv_rows(pc, pair, records, keys)):
+            rows.append(numbers[i])
+            row |= {k: cols[k][i] for k in oil} | {"warnings": () if j else warned}
+            row |= contact_values(pc.bearings[j].result, pc.bearing.contact_angle)
+            for k, v in row.items():
+                values.setdefault(k, []).append(v)
+    return rows, values
+
+
 def csv_chunk(
     columns: Sequence[Column],
     rows: Sequence[int],
@@ -125,13 +160,12 @@ def csv_chunk(
     """The csv lines of one chunk in row order (``columns`` ending with :data:`SKIPPED`): each
     solved row, and each skipped row with its number and its reason, its other cells blank."""
     solved = {"row": rows} | row_values(columns, len(rows), values)
-    numbers = [r for r, _ in skipped]
-    blank: dict[str, list[Any]] = {c.key: [None] * len(skipped) for c in columns}
-    blank |= {"row": numbers, "skipped": [m for _, m in skipped]}
+    blank: dict[str, Any] = {c.key: [None] * len(skipped) for c in columns}
+    blank |= {"row": [r for r, _ in skipped], "skipped": [m for _, m in skipped]}
     lines = [
         (r, line)
-        for numbers, block in ((rows, solved), (numbers, blank))
-        for r, line in zip(numbers, csv_block(columns, block).splitlines(True), strict=True)
+        for block in (solved, blank)
+        for r, line in zip(block["row"], csv_block(columns, block).splitlines(True), strict=True)
     ]
     return "".join(line for _, line in sorted(lines, key=lambda pair: pair[0]))
 

@@ -46,7 +46,7 @@ class BatchSolver:
                     errors[number] = message
         cols, bad, bare = self._columns(rows)
         if self.header.pairs:
-            from bearingload.batch.pairs import pair_rows
+            from bearingload.batch.report import pair_rows
             from bearingload.plan.many_pairs import solve_pair_cases
 
             many = solve_pair_cases(self.planner, cols, len(numbers), bad, bare)

@@ -222,9 +222,7 @@ class _Progress:
     """Rows done, on standard error when it is a terminal and the run has taken over a second."""
 
     def __init__(self) -> None:
-        self.start = time.monotonic()
-        self.tty = sys.stderr.isatty()
-        self.shown = False
+        self.start, self.tty, self.shown = time.monotonic(), sys.stderr.isatty(), False
 
     def update(self, rows: int) -> None:
         if self.tty and time.monotonic() - self.start > 1.0:
