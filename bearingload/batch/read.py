@@ -22,8 +22,7 @@ CHUNK_ROWS = 10_000
 #: Accepted columns: the inputs of a case (:data:`bearingload.plan.inputs.READERS`; ``eC`` read
 #: as ``ec``), the bearing, and the radial engine's method and life.
 COLUMNS = tuple(["bearing", *("ec" if n == "e_c" else n for n in READERS), "method", "revolutions"])
-#: Columns of the combined load (the plan's load inputs, a row with a cell in one of them is a
-#: combined-load case, as solve's load options choose its engine; tilt_radius: their lever).
+#: Columns of the combined load (a cell in one makes its row a combined case) and their lever.
 COMBINED_COLUMNS = (*LOAD_PARAMS, "tilt_radius")
 #: Columns that make a row a bearing (resolved by bearings.resolve) rather than a bare ring.
 BEARING_COLUMNS = (
@@ -102,9 +101,8 @@ _READERS = {"bearing": text, "method": text, "revolutions": quantity("revolution
 def _check_file(
     names: list[str], kinds: Sequence[str], needs: str, refused: Sequence[str], why: str
 ) -> None:
-    """A file with a column of ``kinds`` (combined loads, pairs) names its bearings or ball
-    geometry (else: ``needs``) and has no column of ``refused`` (``why``, the first of ``kinds``
-    given in its braces)."""
+    """A file with a column of ``kinds`` names its bearings or ball geometry (else: ``needs``)
+    and has no column of ``refused`` (``why``, the first of ``kinds`` given in its braces)."""
     given, bad = [n for n in names if n in kinds], [n for n in names if n in refused]
     if given and not any(n in GEOMETRY for n in names):
         raise InputError("columns", f"{given[0]}: {needs}")
@@ -151,8 +149,7 @@ def _check_header_unit(name: str, unit: str) -> None:
 
 @dataclass
 class Block:
-    """One chunk of data rows as read: their row numbers (the header is row 1), their cells,
-    and the rows that could not be read (row number -> reason)."""
+    """A chunk of data rows as read: row numbers, cells, rows not read (number -> reason)."""
 
     numbers: list[int] = field(default_factory=list)
     cells: list[list[str]] = field(default_factory=list)

@@ -22,9 +22,8 @@ from bearingload.studies.matrix import MATRIX_KEYS
 
 #: The most rows json, markdown and table hold in memory (csv is streamed without a limit).
 MAX_HELD_ROWS = 100_000
-#: The output columns of a combined-load file, after the row number: those of ``solve --format
-#: csv`` with an axial load (:mod:`bearingload.reports.combined`; the contact angle, an input,
-#: after the misalignment), then the entries of the 5x5 tangent stiffness matrix.
+#: The output columns of a combined-load file: solve's csv with an axial load (the contact
+#: angle, an input, after the misalignment), then the 5x5 tangent stiffness matrix.
 _INPUTS = [k for k in COMBINED_INPUTS if k != "contact_angle"]
 _INPUTS.insert(_INPUTS.index("misalignment") + 1, "contact_angle")
 COMBINED_KEYS = (*_INPUTS, *(k for k in COMBINED_ANSWERS if k not in _INPUTS), *MATRIX_KEYS)
@@ -34,11 +33,10 @@ _RADIAL.insert(_RADIAL.index("speed") + 1, "ball_density")
 RADIAL_KEYS = (*INPUT_KEYS, *_RADIAL, "valid")
 _VISCOSITY = ("viscosity", *OIL_INPUTS)  # the oil gives the viscosity
 _LIFE = (BEARING_COLUMNS,)  # the lives are a bearing's
-_BY_SPEED = tuple(
+_BY_SPEED = (
     "speed preload_at_speed ball_density cage_frequency ball_pass_frequency_outer "
-    "ball_pass_frequency_inner ball_spin_frequency rating_life_hours reference_rating_life_hours "
-    "".split()
-)
+    "ball_pass_frequency_inner ball_spin_frequency rating_life_hours reference_rating_life_hours"
+).split()
 _BY_VISCOSITY = tuple(
     "viscosity rated_viscosity kappa contamination_factor fatigue_load_limit a_iso "
     "modified_rating_life modified_rating_life_hours reference_equivalent_load a_iso_reference "
@@ -62,9 +60,8 @@ NEEDS: dict[str, tuple[Sequence[str], ...]] = {
     **{k: ((k,),) for k in ("moment_cross", "contact_angle")},
     "epsilon": (("method",),),
 }
-#: What the rows of a combined-load file carry beyond the columns, as solve's json names it:
-#: the model (the ball dynamics added at a speed) and each ball's inner and outer contact angle
-#: [°] and load [N] (json only; null for a radial row, whose model is the radial engine's).
+#: What json adds to a row of the combined engine, as solve's json names it: the model and each
+#: ball's inner and outer contact angle [°] and load [N] (null for a radial row).
 HELD_KEYS = ("model", *CONTACT_KEYS)
 #: The note of a table or markdown report with rows solved with the ball dynamics.
 DYNAMICS_NOTE = (
@@ -81,8 +78,7 @@ PAIR_AT_SPEED_NOTE = (
     "pair_lift_off_axial_load the lift-off at rest (docs/speed.md); rows with quasi_static true: "
     "the static pair, the speed giving the lives in hours only."
 )
-#: The last csv column: why a row was skipped (blank where it was solved); json lists the
-#: skipped rows under ``skipped``, table and markdown in the notes.
+#: The last csv column: why a row was skipped (json: ``skipped``; table, markdown: the notes).
 SKIPPED = Column("skipped", "skipped: the reason", "", None, "left")
 
 

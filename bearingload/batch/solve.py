@@ -1,8 +1,6 @@
-"""Solving the rows of a block: the cells of each column read by :mod:`bearingload.batch.read`
-into the inputs of the cases, solved by the plan's many cases at once
-(:class:`bearingload.plan.many.Planner`: each row planned as ``solve`` plans its case, the rows
-that share a bearing and an engine solved together on arrays); each refusal is a skipped row
-with its reason, ``column: message``."""
+"""Solving the rows of a block: each column read by :mod:`bearingload.batch.read`, the cases
+solved by the plan of many cases (:class:`bearingload.plan.many.Planner`, as solve plans one);
+each refusal a skipped row with its reason, ``column: message``."""
 
 from __future__ import annotations
 
@@ -15,9 +13,8 @@ from bearingload.plan.many import Planner
 
 @dataclass
 class Chunk:
-    """The answer for one block: the solved ``rows`` (row numbers, in input order), their
-    ``values`` (quantity key -> array or list over ``rows``; None where not given, and
-    ``warnings``: one tuple per row), and the skipped rows (row number, reason)."""
+    """The answer for one block: the solved ``rows`` (row numbers), their ``values`` (key ->
+    array or list over them; ``warnings`` a tuple each) and the skipped rows (number, reason)."""
 
     rows: list[int] = field(default_factory=list)
     values: dict[str, Any] = field(default_factory=dict)

@@ -110,8 +110,7 @@ def batch(
         where, message = ("", exc.message) if own else (" header", str(exc))
         raise click.UsageError(f"Invalid value for 'CASES.csv'{where}: {message}") from exc
     columns, solver = report.batch_columns(header), BatchSolver(header)
-    written = [*columns, report.SKIPPED]  # csv's
-    held = report.Held(header, columns)
+    written, held = [*columns, report.SKIPPED], report.Held(header, columns)  # csv's; the others'
     skipped: list[tuple[int, str]] = []
     warned = total = 0
     progress = _Progress()
@@ -163,10 +162,9 @@ def _summary(total: int, skipped: int, warned: int, quiet: bool) -> None:
 
 
 def _row_messages(part: Any, warned: int, progress: _Progress, quiet: bool) -> int:
-    """Print the chunk's skipped rows (``Skipped: row N: reason``) and the checks' warnings
-    (``Warning: row N: ...``) in row order (so that stderr does not depend on --chunk-size),
-    the warnings up to :data:`MAX_WARNINGS_SHOWN` in all (``quiet``: none of them); return the
-    number of warnings so far."""
+    """Print the chunk's ``Skipped: row N: reason`` and ``Warning: row N: ...`` lines in row
+    order (stderr does not depend on --chunk-size), at most :data:`MAX_WARNINGS_SHOWN` warnings
+    in all (``quiet``: no line); return the number of warnings so far."""
     found = part.values.get("warnings", [])
     messages = [(row, text, False) for row, text in part.errors]
     for i in compress(range(len(found)), found):
@@ -181,21 +179,14 @@ def _row_messages(part: Any, warned: int, progress: _Progress, quiet: bool) -> i
 
 @contextlib.contextmanager
 def _sink(output: str | None, strict: bool) -> Iterator[Callable[[str], Any]]:
-    """Where the report goes, ``write(text)``: a temporary file renamed over ``-o FILE`` at the
-    end, a spool copied to standard output at the end (``--strict``: nothing is written before
-    the last row is known to be good), or standard output chunk by chunk. An error inside the
-    block writes nothing (the file is left as it was)."""
+    """``write(text)`` of the report: to ``-o FILE`` (atomic_file), to a spool copied to
+    standard output at the end (``--strict``), or to standard output chunk by chunk; an error
+    inside the block writes nothing (a file is left as it was)."""
     if output not in (None, "-"):
         from bearingload.reports.render import atomic_file
 
-        target = atomic_file(output)
-        fh = _writing(output, target.__enter__)
-        try:
+        with _writing(output), atomic_file(output) as fh:
             yield fh.write
-        except BaseException:
-            _writing(output, lambda: target.__exit__(RuntimeError, None, None))
-            raise
-        _writing(output, lambda: target.__exit__(None, None, None))
     elif strict:
         import tempfile
 
@@ -208,10 +199,11 @@ def _sink(output: str | None, strict: bool) -> Iterator[Callable[[str], Any]]:
         yield lambda text: click.echo(text, nl=False)
 
 
-def _writing(output: str, call: Callable[[], Any]) -> Any:
-    """``call()``, an OSError said as a bad ``-o``."""
+@contextlib.contextmanager
+def _writing(output: str) -> Iterator[None]:
+    """An OSError of the file ``output`` said as a bad ``-o``."""
     try:
-        return call()
+        yield
     except OSError as exc:
         raise click.UsageError(
             f"Invalid value for '-o' / '--output': cannot write {output!r}: {exc.strerror}"
