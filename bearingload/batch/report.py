@@ -86,7 +86,7 @@ def batch_columns(header: Header) -> list[Column]:
     """The output columns for a file with ``header`` (its oil columns, as given, before the
     operating viscosity they give)."""
     written = {k for k, needs in NEEDS.items() if all(set(header.names) & set(g) for g in needs)}
-    keys = COMBINED_KEYS if header.combined else RADIAL_KEYS
+    keys: Sequence[str] = COMBINED_KEYS if header.combined else RADIAL_KEYS
     keys = [k for k in keys if k not in NEEDS or k in written]
     # rows of roller bearings (m = 10/9) or an exponent column mix exponents: N/mm^m then
     mixed = not header.combined and ("exponent" in header.names or header.has_bearing)
