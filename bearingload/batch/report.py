@@ -91,8 +91,7 @@ def batch_columns(header: Header) -> list[Column]:
     # rows of roller bearings (m = 10/9) or an exponent column mix exponents: N/mm^m then
     mixed = not header.combined and ("exponent" in header.names or header.has_bearing)
     columns = [column(k, None if mixed else 1.5) for k in ("row", *keys)]
-    if header.pairs:
-        columns = pair_columns(written)
+    columns = pair_columns(written) if header.pairs else columns
     oil = [column(k) for k in OIL_INPUTS if k in header.names]
     at = next((i for i, c in enumerate(columns) if c.key == "viscosity"), len(columns))
     return columns[:at] + oil + columns[at:]
@@ -100,9 +99,9 @@ def batch_columns(header: Header) -> list[Column]:
 
 def pair_columns(written: set[str] | None) -> list[Column]:
     """The output columns of a file of pairs: ``row``, then those ``solve 7205BDB --format
-    csv`` writes, of :data:`NEEDS` those the file's columns give
-    (``written``; None: every one), the pair's as ``pair_...`` (the pair's cross moment in
-    ``pair_moment_cross``; a bearing's record has no ``moment_cross``, a pair no mounting)."""
+    csv`` writes, of :data:`NEEDS` those in ``written`` (None: every one), the pair's as
+    ``pair_...`` (its cross moment ``pair_moment_cross``; a bearing has no ``moment_cross``, a
+    pair no mounting)."""
     from bearingload.reports.pair import OWN_KEYS, PAIR_SERVICE, csv_columns
 
     kept = [
@@ -203,9 +202,8 @@ class Held:
         held = [k for k in HELD_KEYS if k in values]
         if fmt == "json":
             for i, record in enumerate(records):
-                record |= {k: values[k][i] for k in held} | {
-                    "warnings": list(values["warnings"][i])
-                }
+                record |= {k: values[k][i] for k in held}
+                record["warnings"] = list(values["warnings"][i])
             doc = {
                 "cases": records,
                 "skipped": [{"row": r, "reason": m} for r, m in skipped],
