@@ -12,9 +12,10 @@ import json
 import numpy as np
 import pytest
 
-from bearingload.batch.read import COLUMNS, LOAD_COLUMNS
+from bearingload.batch.read import COLUMNS
 from bearingload.errors import InputError
 from bearingload.models.combined import ANGULAR_RATIO_MIN, solve_combined
+from bearingload.plan.case import LOAD_PARAMS as LOAD_COLUMNS
 
 from .cli_helpers import besides_tilt, run_entry, solved_csv, without_count
 

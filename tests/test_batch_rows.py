@@ -4,6 +4,9 @@ failing alone, the order of the warnings, a roller row's stiffness)."""
 
 from __future__ import annotations
 
+import csv
+import io
+
 import pytest
 from click.testing import CliRunner
 
@@ -98,10 +101,22 @@ def test_a_quote_never_closed_is_named_where_it_opens(chunk):
         "the file) were read as one cell"
     )
     assert [line.split(",")[0] for line in r.stdout.splitlines()[1:]] == ["2"]
-    closed = 'balls,load,stiffness\n8,"10\n00",46000\n8,"2000",46000\n'  # closed: as before
-    r = _batch(closed, "--chunk-size", chunk)
-    assert "row 3: load: unknown unit '00'" in r.stderr
-    assert [line.split(",")[0] for line in r.stdout.splitlines()[1:]] == ["4"]
+
+
+@pytest.mark.parametrize("chunk", ["1", "2", "100"])
+def test_a_record_over_several_lines_is_named_by_its_first_line(chunk):
+    """A quoted cell holding a line break makes one record of two lines. It was named by its
+    LAST line (row 3 below), where an engineer looking for it in an editor or a spreadsheet
+    finds the next case; it is named by the line where it starts, and the rows after it keep
+    their line numbers (docs/batch.md)."""
+    bad = 'balls,load,stiffness\n8,"10\n00",46000\n8,"2000",46000\n'
+    r = _batch(bad, "--chunk-size", chunk)
+    assert r.stderr.startswith("Skipped: row 2: load: unknown unit '00'")
+    assert [row[0] for row in list(csv.reader(io.StringIO(r.result.stdout)))[1:]] == ["2", "4"]
+    good = 'balls,load,stiffness\n8,1000,46000\n8,1000,"46000\n"\n\n8,2000,46000\n'
+    r = _batch(good, "--chunk-size", chunk)  # a solved record of lines 3-4, a blank line 5
+    assert r.exit_code == 0, r.stderr
+    assert [row[0] for row in list(csv.reader(io.StringIO(r.result.stdout)))[1:]] == ["2", "3", "6"]
 
 
 def test_an_empty_load_cell_says_the_load_is_missing():

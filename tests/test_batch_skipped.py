@@ -89,3 +89,24 @@ def test_a_file_solved_whole_without_warnings_says_nothing(capsys, tmp_path):
     path.write_text("balls,stiffness,load\n8,1e5,1000\n", encoding="utf-8")
     code, out, err = run_entry(capsys, "batch", str(path), "--format", "csv")
     assert code == 0 and err == "" and out.splitlines()[0].endswith(",skipped")
+
+
+def test_a_header_only_file_says_it_solved_no_row_with_or_without_quiet(capsys, tmp_path):
+    """A file with its header and no data row wrote an empty report and said nothing, as if
+    every row had been solved; it ends on the closing line, -q or not (the line -q keeps),
+    with exit status 0."""
+    path = tmp_path / "empty.csv"
+    path.write_text("balls,stiffness,load\n\n", encoding="utf-8")
+    line = "0 of 0 rows solved, 0 skipped, 0 warnings; the file has no data rows"
+    for quiet in ((), ("-q",)):
+        code, out, err = run_entry(capsys, "batch", str(path), "--format", "csv", *quiet)
+        assert code == 0 and out.splitlines()[0].endswith(",skipped") and len(out.splitlines()) == 1
+        assert err.splitlines() == [line]
+
+
+def test_quiet_changes_the_warning_lines_only_never_the_closing_line(capsys, tmp_path):
+    """-q leaves out the Skipped: and Warning: lines; the closing line is the same with it and
+    without it, and so are the output and the exit status."""
+    loud = _batch(capsys, tmp_path, "--format", "csv")
+    quiet = _batch(capsys, tmp_path, "--format", "csv", "-q")
+    assert quiet[:2] == loud[:2] and quiet[2].splitlines() == loud[2].splitlines()[-1:]

@@ -16,7 +16,12 @@ import pytest
 from bearingload.bearings import lubrication as lub
 from bearingload.bearings import modified_life as ml
 from bearingload.bearings.life import rating_life
-from bearingload.bearings.service_life import LifeBasis, Operating, service_values
+from bearingload.bearings.service_life import (
+    LifeBasis,
+    Operating,
+    life_warnings,
+    service_values,
+)
 from bearingload.constants import CONTAMINATION_LEVELS
 from bearingload.errors import InputError
 
@@ -343,6 +348,30 @@ def test_no_a_iso_without_c_u_and_a_warning_says_why():
     out = service_values(Operating(speed=3000.0, viscosity=20.0), basis)
     assert "a_iso" not in out.values and "kappa" in out.values
     assert "C_u" in out.warnings[0]
+
+
+def test_the_warnings_of_many_cases_are_each_cases_own():
+    """life_warnings over an array of cases (batch) gives each case the warnings service_values
+    gives it alone (solve), in the same order: kappa out of range, then C_u missing."""
+    viscosities = [0.5, 20.0, 900.0]
+    for c0 in (None, 7800.0):
+        basis = LifeBasis(
+            kind="ball",
+            C=14000.0,
+            C0=c0,
+            equivalent_load=1400.0,
+            rating_life=1000.0,
+            pitch_diameter=38.5,
+        )
+        op = Operating(speed=3000.0, viscosity=np.array(viscosities))
+        kappa = np.array(viscosities) / lub.rated_viscosity(3000.0, 38.5)
+        many = life_warnings(op, basis, kappa)
+        alone = [
+            service_values(Operating(speed=3000.0, viscosity=v), basis).warnings
+            for v in viscosities
+        ]
+        assert many == alone
+        assert [len(w) for w in alone] == ([2, 1, 2] if c0 is None else [1, 0, 1])
 
 
 # --- the command line --------------------------------------------------------------------------

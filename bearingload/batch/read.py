@@ -1,11 +1,6 @@
-"""Reading a csv file of cases: the header, chunks of rows by the ``csv`` module, the cells.
-
-Columns are named like the options of ``bearingload solve`` (``load``, ``clearance``,
-``ball_diameter`` ...); a unit in the header (``load [kN]``) is the unit of the column's bare
-numbers, a unit in a cell (``300kgf``) is that cell's own. Each cell is read by its input's
-reader, the library's (:data:`bearingload.plan.inputs.READERS`: the same units, ranges and
-messages), a column at a time (:func:`read_column`): bare numbers the reader takes as they are
-at once by numpy, any other cell once per distinct text.
+"""Reading a csv file of cases (docs/batch.md): the header, chunks of rows by the ``csv``
+module, the cells, each by its input's reader (:data:`bearingload.plan.inputs.READERS`: the
+units, ranges and messages of solve's options), a column at a time (:func:`read_column`).
 """
 
 from __future__ import annotations
@@ -19,40 +14,21 @@ from typing import Any, BinaryIO
 from bearingload.bearings.mounting import MOUNTING_PARAMS
 from bearingload.errors import InputError, UnusedError
 from bearingload.plan.case import LOAD_PARAMS
-from bearingload.plan.inputs import READERS, Reader, quantity, text
-from bearingload.plan.many import PAIR_PARAMS
+from bearingload.plan.inputs import READERS, Reader, count, quantity, text
+from bearingload.plan.many import GEOMETRY, PAIR_PARAMS
 
 #: Rows read, solved and written at a time (memory stays flat however long the file).
 CHUNK_ROWS = 10_000
 #: Accepted columns: the inputs of a case (:data:`bearingload.plan.inputs.READERS`; ``eC`` read
 #: as ``ec``), the bearing, and the radial engine's method and life.
 COLUMNS = tuple(["bearing", *("ec" if n == "e_c" else n for n in READERS), "method", "revolutions"])
-#: The words of a flag column (case-insensitive; csv output writes True and False).
-FLAGS = {"true": True, "false": False}
-#: The load columns: a row with a cell in one of them is a combined-load case (3-D equilibrium),
-#: as solve's load options choose its engine.
-LOAD_COLUMNS = LOAD_PARAMS
-#: The columns of a bearing pair: a file with one of them is a file of pairs, every row a pair.
-PAIR_COLUMNS = PAIR_PARAMS
-#: Columns a file of pairs cannot have (a pair takes no clearance, misalignment, method ...).
-NOT_PAIRS = ("method", "revolutions", "exponent", "clearance", "clearance_pick", "misalignment")
-#: Columns that belong to the combined load (tilt_radius: the lever of its tilt).
-COMBINED_COLUMNS = (*LOAD_COLUMNS, "tilt_radius")
-#: Columns a file with combined-load columns cannot have: its combined rows are solved by the
-#: 3-D equilibrium (m = 1.5), their lives in 10^6 revolutions.
-NOT_COMBINED = ("method", "revolutions", "exponent")
+#: Columns of the combined load (a cell in one makes its row a combined case) and their lever.
+COMBINED_COLUMNS = (*LOAD_PARAMS, "tilt_radius")
 #: Columns that make a row a bearing (resolved by bearings.resolve) rather than a bare ring.
 BEARING_COLUMNS = (
-    *("bearing", "ball_diameter", "pitch_diameter", "inner_conformity", "outer_conformity"),
-    *("modulus", "poisson", "ball_material", "clearance_pick", "revolutions", *MOUNTING_PARAMS),
+    *(*GEOMETRY, "inner_conformity", "outer_conformity", "modulus", "poisson", "ball_material"),
+    *("clearance_pick", "revolutions", *MOUNTING_PARAMS),
 )
-#: The kind of unit of the columns whose reader is no plain quantity (a header unit's kind).
-UNIT_KINDS = {
-    **dict.fromkeys(("clearance", "tilt_radius"), "length"),
-    **dict.fromkeys(("inner_ring_temperature", "outer_ring_temperature"), "temperature"),
-    **{"temperature": "temperature", "stiffness": "stiffness", "preload": "force"},
-    **{"cage_angle": "cage_angle", "revolutions": "revolutions"},
-}
 _HEADER = re.compile(r"^\s*([^\[\]]*?)\s*(?:\[\s*([^\]]*?)\s*\])?\s*$")
 
 
@@ -60,60 +36,40 @@ _HEADER = re.compile(r"^\s*([^\[\]]*?)\s*(?:\[\s*([^\]]*?)\s*\])?\s*$")
 class Header:
     """The columns of a batch file: ``names`` in file order and each one's header ``units``;
     ``blank_tail`` empty header cells after the last name (a spreadsheet's trailing comma), whose
-    cells a row may have and must leave empty."""
+    cells a row may have and must leave empty; what kind of rows the columns make."""
 
     names: tuple[str, ...]
     units: dict[str, str]
     blank_tail: int = 0
-
-    @property
-    def combined(self) -> bool:
-        """True when rows may be combined-load cases (an axial load, moment ... column)."""
-        return any(n in COMBINED_COLUMNS for n in self.names)
-
-    @property
-    def pairs(self) -> bool:
-        """True when every row is a bearing pair (an arrangement, preload or width column)."""
-        return any(n in PAIR_COLUMNS for n in self.names)
-
-    @property
-    def has_bearing(self) -> bool:
-        """True when some column can make a row a catalogue or geometry bearing."""
-        return any(n in BEARING_COLUMNS for n in self.names)
+    combined: bool = False  # rows may be combined-load cases (an axial load, moment ... column)
+    pairs: bool = False  # every row is a bearing pair (an arrangement, preload or width column)
+    has_bearing: bool = False  # some column can make a row a catalogue or geometry bearing
 
 
 def read_header(fields: list[str]) -> Header:
-    """The header row: column names (``-`` or spaces read as ``_``) and their ``[unit]``.
-
-    Raises
-    ------
-    InputError
-        (parameter ``columns``) naming unknown, duplicated or not-yet-supported columns, a
-        missing ``load``, or a header unit that does not fit its column.
-    """
-    blank_tail = len(fields) - len(_without_blank_tail(fields))
-    fields = fields[: len(fields) - blank_tail]
+    """The header row: column names (``-`` or spaces read as ``_``) and their ``[unit]``;
+    InputError (``columns``) for an unknown, unnamed or duplicated column, a missing ``load``,
+    a file of columns that cannot go together, or a header unit that does not fit its column."""
+    blank_tail = 0  # empty cells at the end (``balls,load,``), a column at least left
+    while len(fields) - blank_tail > 1 and not fields[-1 - blank_tail].strip():
+        blank_tail += 1
     names, units = [], {}
-    for raw in fields:
+    for raw in fields[: len(fields) - blank_tail]:
         match = _HEADER.match(raw)
-        name = (match.group(1) if match else raw).strip().lower().replace("-", "_")
-        name = name.replace(" ", "_")
-        names.append(name)
-        if match and match.group(2):
-            units[name] = match.group(2)
+        names.append(
+            (match[1] if match else raw).strip().lower().replace("-", "_").replace(" ", "_")
+        )
+        if match and match[2]:
+            units[names[-1]] = match[2]
     if "" in names:
         raise InputError(
             "columns",
             f"the header's column {names.index('') + 1} has no name (only empty columns at the "
             "end of the header are allowed, and their cells must be empty)",
         )
-    unknown = [n for n in names if n not in COLUMNS]
+    unknown = ", ".join(repr(n) for n in names if n not in COLUMNS)
     if unknown:
-        raise InputError(
-            "columns",
-            f"unknown column(s) {', '.join(repr(n) for n in unknown)}; "
-            f"allowed: {', '.join(COLUMNS)}",
-        )
+        raise InputError("columns", f"unknown column(s) {unknown}; allowed: {', '.join(COLUMNS)}")
     for kind in _FILE_KINDS:
         _check_file(names, *kind)
     twice = sorted({n for n in names if names.count(n) > 1})
@@ -123,15 +79,9 @@ def read_header(fields: list[str]) -> Header:
         raise InputError("columns", "the column 'load' is required")
     for name, unit in units.items():
         _check_header_unit(name, unit)
-    return Header(tuple(names), units, blank_tail)
-
-
-def _without_blank_tail(fields: list[str]) -> list[str]:
-    """The header cells without the empty ones at its end (``balls,load,`` -> balls, load)."""
-    end = len(fields)
-    while end > 1 and not fields[end - 1].strip():
-        end -= 1
-    return fields[:end]
+    given = set(names).intersection
+    kinds = (COMBINED_COLUMNS, PAIR_PARAMS, BEARING_COLUMNS)
+    return Header(tuple(names), units, blank_tail, *(bool(given(k)) for k in kinds))
 
 
 def library_name(column: str) -> str:
@@ -141,34 +91,22 @@ def library_name(column: str) -> str:
 
 def reader(column: str) -> Reader:
     """The reader of a column's cells: its input's (:data:`bearingload.plan.inputs.READERS`)."""
-    if column in ("bearing", "method"):
-        return text
-    if column == "revolutions":
-        return _REVOLUTIONS
-    return READERS[library_name(column)]
+    return _READERS.get(column) or READERS[library_name(column)]
 
 
-def unit_kind(column: str) -> str | None:
-    """The kind of unit of a column's numbers (:data:`bearingload.units.UNITS`), or None."""
-    return UNIT_KINDS.get(column) or getattr(reader(column), "kind", None)
-
-
-_REVOLUTIONS = quantity("revolutions")
+#: The readers of the columns that are no input of a case.
+_READERS = {"bearing": text, "method": text, "revolutions": quantity("revolutions")}
 
 
 def _check_file(
     names: list[str], kinds: Sequence[str], needs: str, refused: Sequence[str], why: str
 ) -> None:
-    """A file with a column of ``kinds`` (combined loads, pairs) names its bearings or ball
-    geometry (else: ``needs``) and has no column of ``refused`` (``why``, the first of ``kinds``
-    given in its braces)."""
-    given = [n for n in names if n in kinds]
-    if not given:
-        return
-    if not any(n in ("bearing", "ball_diameter", "pitch_diameter") for n in names):
+    """A file with a column of ``kinds`` names its bearings or ball geometry (else: ``needs``)
+    and has no column of ``refused`` (``why``, the first of ``kinds`` given in its braces)."""
+    given, bad = [n for n in names if n in kinds], [n for n in names if n in refused]
+    if given and not any(n in GEOMETRY for n in names):
         raise InputError("columns", f"{given[0]}: {needs}")
-    bad = [n for n in names if n in refused]
-    if bad:
+    if given and bad:
         raise InputError("columns", f"{bad[0]}: not used {why.format(given[0])}")
 
 
@@ -178,15 +116,15 @@ _FILE_KINDS = (
         COMBINED_COLUMNS,
         "the combined load needs deep-groove ball bearings: add a 'bearing' column (a "
         "designation) or 'ball_diameter' and 'pitch_diameter'",
-        NOT_COMBINED,
+        ("method", "revolutions", "exponent"),
         "with the combined load ({}): its rows are solved by the 3-D equilibrium of a ball "
         "bearing (m = 1.5), lives in 10^6 rev",
     ),
     (
-        PAIR_COLUMNS,
+        PAIR_PARAMS,
         "a file of bearing pairs needs angular-contact ball bearings: add a 'bearing' column "
         "(7205B, 7205BDB) or 'ball_diameter', 'pitch_diameter' and 'contact_angle'",
-        NOT_PAIRS,
+        ("method", "revolutions", "exponent", "clearance", "clearance_pick", "misalignment"),
         "in a file of bearing pairs ({}): a pair is solved by the exact model of its "
         "angular-contact bearings, no clearance (the contact angle fixes the geometry), no "
         "misalignment (give the moment)",
@@ -197,22 +135,21 @@ _FILE_KINDS = (
 def _check_header_unit(name: str, unit: str) -> None:
     from bearingload.units import TEMPERATURE_UNITS, UNITS, parse_quantity, stiffness_factor
 
-    kind, where = unit_kind(name), f"{name} [{unit}]"
+    kind, where = getattr(reader(name), "kind", None), f"{name} [{unit}]"  # its unit's kind
     if kind == "temperature":
         if unit not in TEMPERATURE_UNITS:
             raise InputError(where, f"allowed units: {', '.join(TEMPERATURE_UNITS)}")
     elif kind == "stiffness":
         stiffness_factor(unit, None, parameter=where)
-    elif kind in UNITS or kind == "cage_angle":
-        parse_quantity("1" + unit, "angle" if kind == "cage_angle" else kind, parameter=where)
+    elif kind in UNITS:
+        parse_quantity("1" + unit, kind, parameter=where)
     else:
         raise InputError(where, "this column takes no unit")
 
 
 @dataclass
 class Block:
-    """One chunk of data rows as read: their row numbers (the header is row 1), their cells,
-    and the rows that could not be read (row number -> reason)."""
+    """A chunk of data rows as read: row numbers, cells, rows not read (number -> reason)."""
 
     numbers: list[int] = field(default_factory=list)
     cells: list[list[str]] = field(default_factory=list)
@@ -220,18 +157,10 @@ class Block:
 
 
 def read_cases(stream: BinaryIO, size: int = CHUNK_ROWS) -> tuple[Header, Iterator[Block]]:
-    """The header of a csv file read as bytes (row 1), and its blocks of up to ``size`` rows.
-
-    The rows are read by the ``csv`` module (a quoted cell may hold commas and line breaks; a
-    record's row number is that of its last line). Each line is decoded as UTF-8 on its own (a
-    byte order mark before the header is dropped): a line that is not UTF-8 is a bad row named
-    by its number, not the end of the file. Blank lines are skipped (they still count as rows).
-
-    Raises
-    ------
-    InputError
-        (parameter ``CASES`` or ``columns``) for a header that cannot be read.
-    """
+    """The header of a csv file read as bytes (row 1), and its blocks of up to ``size`` rows:
+    a record's row number is that of its first line, blank lines count; each line is decoded
+    as UTF-8 on its own (a line that is not is a bad row). Raises InputError (``CASES`` or
+    ``columns``) for a header that cannot be read."""
     lines = iter(stream)
     return _header(next(lines, None)), _blocks(lines, size)
 
@@ -239,27 +168,21 @@ def read_cases(stream: BinaryIO, size: int = CHUNK_ROWS) -> tuple[Header, Iterat
 def _blocks(lines: Iterator[bytes], size: int) -> Iterator[Block]:
     errors: dict[int, str] = {}
     quotes: dict[int, int] = {}  # row -> quote characters, of the lines that have any
-    reader = csv.reader(_decoded(lines, errors, quotes))
+    records = csv.reader(_decoded(lines, errors, quotes))
     block, last = Block(), 1
-    while True:
-        try:
-            cells = next(reader)
-        except StopIteration:
-            break
-        except csv.Error:
-            cells = ["\0"]  # unreadable: a cell count that never fits
-        row = reader.line_num + 1
-        if row > last + 1 and sum(quotes.pop(r, 0) for r in range(last + 1, row + 1)) % 2:
-            start = last + 1  # an odd count: the reader took every line to the end into a cell
-            errors[start] = (f"a quote opened in this row is never closed: rows {start} to {row} "
-                             "(the end of the file) were read as one cell")  # fmt: skip
-            cells = []
-        quotes.pop(row, None)
-        last = row
+    while (cells := _record(records)) is not None:
+        start, last = last + 1, records.line_num + 1  # the record's first and last lines
+        if last > start and sum(quotes.pop(r, 0) for r in range(start, last + 1)) % 2:
+            cells = []  # an odd count: the reader took every line to the end into a cell
+            errors[start] = (
+                f"a quote opened in this row is never closed: rows {start} to {last} (the end "
+                "of the file) were read as one cell"
+            )
+        quotes.pop(last, None)
         block.errors |= errors
         errors.clear()
         if cells:
-            block.numbers.append(row)
+            block.numbers.append(start)
             block.cells.append(cells)
         if len(block.numbers) + len(block.errors) >= size:
             yield block
@@ -267,6 +190,14 @@ def _blocks(lines: Iterator[bytes], size: int) -> Iterator[Block]:
     block.errors |= errors
     if block.numbers or block.errors:
         yield block
+
+
+def _record(records: Any) -> list[str] | None:
+    """The next record's cells (None: the end; an unreadable one a cell count that never fits)."""
+    try:
+        return next(records, None)
+    except csv.Error:
+        return ["\0"]
 
 
 def _header(first: bytes | None) -> Header:
@@ -288,9 +219,8 @@ def _header(first: bytes | None) -> Header:
 
 
 def _decoded(lines: Iterator[bytes], errors: dict[int, str], quotes: dict[int, int]) -> Any:
-    """The text of each line after the header (row 2 on); a line that is not UTF-8 goes to
-    ``errors`` and reads as a blank line. Lines with quote characters are counted in
-    ``quotes``."""
+    """The text of each line after the header (row 2 on), its quote characters counted in
+    ``quotes``; a line that is not UTF-8 goes to ``errors`` and reads as a blank line."""
     for row, raw in enumerate(lines, start=2):
         try:
             text = raw.decode("utf-8")
@@ -307,10 +237,8 @@ def _where(exc: UnicodeDecodeError) -> str:
 
 
 def row_message(exc: Exception) -> str:
-    """The reason a row is skipped, ``column: message``, from a library error's fields (the
-    columns of inputs a case would ignore, or of an oil's inputs refused together, all named;
-    a model's name of an input, ``f_i``, as its column: :func:`bearingload.plan.inputs.
-    argument_of`)."""
+    """The reason a row is skipped, ``column: message``, every column of a refusal named, a
+    model's name of an input (``f_i``) as its column (:func:`~.plan.inputs.argument_of`)."""
     if not isinstance(exc, InputError):
         return str(exc)
     from bearingload.plan.inputs import argument_of
@@ -326,28 +254,21 @@ def read_column(
     """The values of one column's cells read by its input's reader (:func:`reader`; a bare
     number with the header's ``unit`` as if written with it), None for a blank cell, and the
     reasons of the cells that cannot be read (index -> ``column: reason``). ``exponents``: each
-    row's m, which a stiffness unit needs (default 1.5).
-
-    A column of bare numbers each reader would take as it is is read by numpy at once;
-    otherwise each distinct cell text is read once."""
+    row's m, which a stiffness unit needs (default 1.5). A column of bare numbers is read by
+    numpy at once (:func:`_bare_numbers`), any other each distinct cell text once."""
     fast = _bare_numbers(name, unit, texts, exponents)
     if fast is not None:
         return fast, {}
-    values: list[Any] = []
-    bad: dict[int, str] = {}
-    seen: dict[tuple[str, float], tuple[bool, Any]] = {}
-    for i, cell in enumerate(texts):
-        key = (cell, 1.5 if exponents is None else exponents[i])
-        hit = seen.get(key)
-        if hit is None:
+    keys = list(zip(texts, [1.5] * len(texts) if exponents is None else exponents, strict=True))
+    seen: dict[tuple[str, float], tuple[Any, str | None]] = {}
+    for key in keys:
+        if key not in seen:
             try:
-                hit = seen[key] = (True, _cell(name, unit, cell.strip(), key[1]))
+                seen[key] = (_cell(name, unit, key[0].strip(), key[1]), None)
             except InputError as exc:
-                hit = seen[key] = (False, row_message(exc))
-        if not hit[0]:
-            bad[i] = hit[1]
-        values.append(hit[1] if hit[0] else None)
-    return values, bad
+                seen[key] = (None, row_message(exc))
+    read = [seen[key] for key in keys]
+    return [v for v, _ in read], {i: why for i, (_, why) in enumerate(read) if why is not None}
 
 
 def _cell(name: str, unit: str | None, cell: str, exponent: float) -> Any:
@@ -359,14 +280,14 @@ def _cell(name: str, unit: str | None, cell: str, exponent: float) -> Any:
     lib = library_name(name)
     if "_" in cell and _is_number(cell):  # numbers as the command line reads them: no '1_000'
         raise InputError(name, f"cannot read {cell!r} as a number")
-    if name == "quasi_static":  # a word of the csv file: true or false
-        if cell.lower() not in FLAGS:
+    if name == "quasi_static":  # a word of the csv file (any case; csv output writes True)
+        if cell.lower() not in ("true", "false"):
             raise InputError(name, f"cannot read {cell!r}; allowed: true, false (or blank: false)")
-        return FLAGS[cell.lower()]
-    if unit and units.is_bare(cell):
-        cell += unit if name != "stiffness" else ""
+        return cell.lower() == "true"
+    if unit and units.is_bare(cell):  # the header's unit, a stiffness's of this exponent
         if name == "stiffness":
             return float(cell) * units.stiffness_factor(unit, exponent, parameter=name)
+        cell += unit
     value = reader(name)(cell, lib)
     if name == "stiffness":
         return units.parse_stiffness(value, exponent, parameter=name)
@@ -389,14 +310,15 @@ def _is_number(cell: str) -> bool:
 def _bare_numbers(
     name: str, unit: str | None, texts: Sequence[str], m: Sequence[float] | None
 ) -> list[Any] | None:
-    """Every cell a bare number its reader takes as it is, read at once in package units; None
-    when some cell needs :func:`_cell` (also to be named: out of range, a fraction of a ball, a
-    number implausible without a unit, infinity)."""
+    """Every cell a bare number, read at once in package units; None when some cell needs
+    :func:`_cell`. The reader's checks of a number are ranges (and a whole number of balls,
+    checked here): where it takes the smallest and the largest cell (of each exponent m), as
+    :func:`_cell` reads them, it takes every one; a header unit scales each by the value
+    :func:`_cell` reads for a 1."""
     import numpy as np
 
-    from bearingload import units
-
-    read, kind = reader(name), unit_kind(name)
+    read = reader(name)
+    kind = getattr(read, "kind", None)
     numeric = kind not in (None, "temperature") or hasattr(read, "range") or name in _NUMBERS
     if not texts or not numeric or name == "tilt_radius" or "_" in "".join(texts):
         return None  # numpy reads '1_000' as Python does; the readers refuse it
@@ -404,51 +326,21 @@ def _bare_numbers(
         v = np.array(texts, dtype=float)
     except ValueError:
         return None
-    if not np.all(np.isfinite(v)) or not _taken(name, read, kind, v, unit):
+    if not np.all(np.isfinite(v)) or read is count and not np.all(v == np.round(v)):
+        return None
+    ms = [1.5] * v.size if m is None else list(m)
+    groups = [np.flatnonzero(np.asarray(ms) == e) for e in set(ms)]
+    try:  # the reader names a bad end: then cell by cell, each named
+        for i in {int(g[end(v[g])]) for g in groups for end in (np.argmin, np.argmax)}:
+            _cell(name, unit, texts[i].strip(), ms[i])
+        one = {e: _cell(name, unit, "1", e) for e in set(ms)} if unit else {}
+        one = {e: getattr(x, "length", x) for e, x in one.items()}  # a clearance's length
+    except InputError:
         return None
     if not unit:
         return v.tolist()
-    if kind == "stiffness":
-        exponents = np.full(v.size, 1.5) if m is None else np.asarray(m, dtype=float)
-        try:  # a unit of another exponent: the reader names the row
-            factor = {e: units.stiffness_factor(unit, e) for e in set(exponents.tolist())}
-        except InputError:
-            return None
-        return (v * np.array([factor[e] for e in exponents.tolist()])).tolist()
-    if kind == "cage_angle":
-        return (v * float(units.parse_cage_angle("1" + unit))).tolist()
-    return (v * units.parse_quantity("1" + unit, str(kind))).tolist()
+    return (v * (one[ms[0]] if len(one) == 1 else np.array([one[e] for e in ms]))).tolist()
 
 
 #: Columns of plain numbers (no unit, no range).
 _NUMBERS = ("balls", "inner_conformity", "outer_conformity", "poisson", "viscosity_index")
-
-
-def _taken(name: str, read: Any, kind: str | None, v: Any, unit: str | None) -> bool:
-    """Whether the reader takes each of the bare numbers ``v`` as it is."""
-    import numpy as np
-
-    low, high, low_open = getattr(read, "range", (-np.inf, np.inf, False))
-    ok = (v > low if low_open else v >= low) & (v <= high)
-    if getattr(read, "positive", False):
-        ok &= v > 0
-    if name == "preload":
-        ok &= v >= 0
-    if name == "balls":
-        ok &= v == np.round(v)
-    return bool(np.all(ok)) and (bool(unit) or kind is None or not _implausible(name, kind, v))
-
-
-def _implausible(name: str, kind: str, values: Any) -> bool:
-    """Whether some bare number lies outside the plausible range of its quantity
-    (:data:`bearingload.units.PLAUSIBLE_BARE`)."""
-    import numpy as np
-
-    from bearingload.units import PLAUSIBLE_BARE
-
-    kind = "angle" if kind == "cage_angle" else kind
-    rule = PLAUSIBLE_BARE.get((kind, name)) or PLAUSIBLE_BARE.get((kind, None))
-    if rule is None:
-        return False
-    low, high, _ = rule
-    return bool(np.any((values < low) | (values >= high)))

@@ -1,15 +1,7 @@
-"""The report of ``bearingload batch``: one row per solved case, the columns of ``solve``.
-
-The columns are ``row`` (the input file's row, header = 1) and then those ``bearingload solve
---format csv`` writes for one case (:data:`bearingload.reports.solve.INPUT_KEYS` and
-``ANSWER_KEYS``; headers through
-:mod:`bearingload.reports.quantities`). They are fixed by the file's header, so that every
-chunk of a long file has the same columns: the bearing columns (``bearing``,
-``clearance_pick``, contact pressures, static safety, lives, ``rotating``) only when the file can name a bearing or a ball
-geometry, ``epsilon`` only with a ``method`` column. A file with a combined-load column
-(``axial_load``, ``moment``, ``moment_cross``, ``misalignment``, ``tilt_radius``) has the columns
-``solve`` writes with an axial load; its rows without a load cell, solved by the radial engine,
-fill the columns the two engines share.
+"""The report of ``bearingload batch``: ``row`` (the input file's row, header = 1), then the
+columns ``solve --format csv`` writes for one case (with a combined-load column, those it
+writes with an axial load), fixed by the header (:data:`NEEDS`) so that every chunk of a long
+file has the same columns.
 """
 
 from __future__ import annotations
@@ -17,47 +9,60 @@ from __future__ import annotations
 from collections.abc import Sequence
 from typing import Any
 
-from bearingload.batch.read import Header
+from bearingload.batch.read import BEARING_COLUMNS, Header
 from bearingload.bearings.mounting import MOUNTING_PARAMS, RESULT_KEYS
 from bearingload.bearings.oil import OIL_INPUTS
 from bearingload.reports.combined import ANSWER_KEYS as COMBINED_ANSWERS
+from bearingload.reports.combined import CONTACT_KEYS
 from bearingload.reports.combined import INPUT_KEYS as COMBINED_INPUTS
-from bearingload.reports.quantities import SERVICE_KEYS, units
+from bearingload.reports.quantities import units
 from bearingload.reports.render import Column, Table, csv_block, render
 from bearingload.reports.solve import INPUT_KEYS, REPORT_KEYS, column
 from bearingload.studies.matrix import MATRIX_KEYS
 
 #: The most rows json, markdown and table hold in memory (csv is streamed without a limit).
 MAX_HELD_ROWS = 100_000
-_BEARING_ONLY = (
-    "bearing",
-    "clearance_pick",
-    "p_max_inner",
-    "p_max_outer",
-    "static_safety",
-    "static_rating",
-    "rating_life",
-    "reference_rating_life",
-    "revolutions",
-    "rotating",
-    "allowable_load",
-)
-
-
-#: Columns of a combined-load file written only when the file has them (as solve writes them
-#: only when given).
-_COMBINED_IF_GIVEN = ("moment_cross", "contact_angle")
-#: The output columns of a combined-load file, after the row number: those of ``solve --format
-#: csv`` with an axial load (:mod:`bearingload.reports.combined`; the contact angle, an input,
-#: after the misalignment), then the entries of the 5x5 tangent stiffness matrix.
+#: The output columns of a combined-load file: solve's csv with an axial load (the contact
+#: angle, an input, after the misalignment), then the 5x5 tangent stiffness matrix.
 _INPUTS = [k for k in COMBINED_INPUTS if k != "contact_angle"]
 _INPUTS.insert(_INPUTS.index("misalignment") + 1, "contact_angle")
 COMBINED_KEYS = (*_INPUTS, *(k for k in COMBINED_ANSWERS if k not in _INPUTS), *MATRIX_KEYS)
-#: What the rows of a combined-load file carry beyond the columns, as solve's json names it:
-#: the model (the ball dynamics added at a speed) and each ball's inner and outer contact angle
-#: [°] and load [N] (json only; null for a radial row, whose model is the radial engine's).
-HELD_KEYS = ("model", "contact_angles_inner", "contact_angles_outer", "ball_loads_inner",
-             "ball_loads_outer")  # fmt: skip
+#: The radial output columns: solve's, with the ball dynamics' density after the speed.
+_RADIAL = [k for k in REPORT_KEYS if k != "relative_error"]
+_RADIAL.insert(_RADIAL.index("speed") + 1, "ball_density")
+RADIAL_KEYS = (*INPUT_KEYS, *_RADIAL, "valid")
+_VISCOSITY = ("viscosity", *OIL_INPUTS)  # the oil gives the viscosity
+_LIFE = (BEARING_COLUMNS,)  # the lives are a bearing's
+_BY_SPEED = (
+    "speed preload_at_speed ball_density cage_frequency ball_pass_frequency_outer "
+    "ball_pass_frequency_inner ball_spin_frequency rating_life_hours reference_rating_life_hours"
+).split()
+_BY_VISCOSITY = tuple(
+    "viscosity rated_viscosity kappa contamination_factor fatigue_load_limit a_iso "
+    "modified_rating_life modified_rating_life_hours reference_equivalent_load a_iso_reference "
+    "modified_reference_rating_life modified_reference_rating_life_hours film_thickness".split()
+)
+_BEARING_ONLY = tuple(
+    "bearing clearance_pick p_max_inner p_max_outer static_safety static_rating rating_life "
+    "reference_rating_life revolutions rotating allowable_load".split()
+)
+#: The output columns written only where the header gives, of each group of input columns of
+#: theirs, one (as solve prints a quantity only where its option is given): a bearing's, the
+#: mounting's results, the lives each operating input makes meaningful (the modified lives need
+#: the viscosity, or an oil; the film ratio the roughness too), the inputs solve echoes if given.
+NEEDS: dict[str, tuple[Sequence[str], ...]] = {
+    **dict.fromkeys(_BEARING_ONLY, _LIFE),
+    **dict.fromkeys(RESULT_KEYS, (MOUNTING_PARAMS,)),
+    **dict.fromkeys(_BY_SPEED, (*_LIFE, ("speed",))),
+    **dict.fromkeys(("reliability", "reliability_factor"), (*_LIFE, ("reliability",))),
+    **dict.fromkeys(_BY_VISCOSITY, (*_LIFE, _VISCOSITY)),
+    **dict.fromkeys(("roughness", "film_ratio"), (*_LIFE, _VISCOSITY, ("roughness",))),
+    **{k: ((k,),) for k in ("moment_cross", "contact_angle")},
+    "epsilon": (("method",),),
+}
+#: What json adds to a row of the combined engine, as solve's json names it: the model and each
+#: ball's inner and outer contact angle [°] and load [N] (null for a radial row).
+HELD_KEYS = ("model", *CONTACT_KEYS)
 #: The note of a table or markdown report with rows solved with the ball dynamics.
 DYNAMICS_NOTE = (
     "Rows with a speed (quasi_static not true) on the combined engine: {} (Jones 1960; Harris & "
@@ -73,91 +78,72 @@ PAIR_AT_SPEED_NOTE = (
     "pair_lift_off_axial_load the lift-off at rest (docs/speed.md); rows with quasi_static true: "
     "the static pair, the speed giving the lives in hours only."
 )
-#: The output columns each service input column can give (solve prints them when the option is
-#: given); a file without the column has none of them.
-SERVICE_OUTPUT = {
-    "speed": ("speed", "preload_at_speed", "ball_density", "cage_frequency",
-              "ball_pass_frequency_outer", "ball_pass_frequency_inner", "ball_spin_frequency",
-              "rating_life_hours",
-              "reference_rating_life_hours",
-              "modified_rating_life_hours", "modified_reference_rating_life_hours"),
-    "reliability": ("reliability", "reliability_factor"),
-    "viscosity": ("viscosity", "rated_viscosity", "kappa", "contamination_factor",
-                  "fatigue_load_limit", "a_iso", "modified_rating_life",
-                  "modified_rating_life_hours", "reference_equivalent_load", "a_iso_reference",
-                  "modified_reference_rating_life", "modified_reference_rating_life_hours",
-                  "film_thickness"),
-    "roughness": ("roughness", "film_ratio"),
-}  # fmt: skip
-
-
-def _service_outputs(header: Header) -> set[str]:
-    """The service columns a file with ``header`` writes."""
-    names = set(header.names)
-    if names & set(OIL_INPUTS):  # the oil gives the viscosity, and what it feeds
-        names.add("viscosity")
-    keys = {k for c, ks in SERVICE_OUTPUT.items() if c in names for k in ks}
-    if "viscosity" not in names:  # the modified lives need a_ISO, the film ratio the film
-        keys -= {"modified_rating_life_hours", "modified_reference_rating_life_hours",
-                 "film_ratio", "roughness"}  # fmt: skip
-    return keys
+#: The last csv column: why a row was skipped (json: ``skipped``; table, markdown: the notes).
+SKIPPED = Column("skipped", "skipped: the reason", "", None, "left")
 
 
 def batch_columns(header: Header) -> list[Column]:
     """The output columns for a file with ``header`` (its oil columns, as given, before the
     operating viscosity they give)."""
-    if header.pairs:
-        from bearingload.batch.pairs import pair_columns
-
-        columns = pair_columns(_service_outputs(header))
-    else:
-        columns = _columns(header)
+    written = {k for k, needs in NEEDS.items() if all(set(header.names) & set(g) for g in needs)}
+    keys: Sequence[str] = COMBINED_KEYS if header.combined else RADIAL_KEYS
+    keys = [k for k in keys if k not in NEEDS or k in written]
+    # rows of roller bearings (m = 10/9) or an exponent column mix exponents: N/mm^m then
+    mixed = not header.combined and ("exponent" in header.names or header.has_bearing)
+    columns = [column(k, None if mixed else 1.5) for k in ("row", *keys)]
+    columns = pair_columns(written) if header.pairs else columns
     oil = [column(k) for k in OIL_INPUTS if k in header.names]
     at = next((i for i, c in enumerate(columns) if c.key == "viscosity"), len(columns))
     return columns[:at] + oil + columns[at:]
 
 
-def _columns(header: Header) -> list[Column]:
-    service = set(SERVICE_KEYS) | {"rating_life_hours", "reference_rating_life_hours",
-                                   "ball_density"}  # fmt: skip
-    if not any(n in header.names for n in MOUNTING_PARAMS):  # no mounting: as bought
-        service |= set(RESULT_KEYS)
-    wanted = _service_outputs(header)
-    if header.combined:  # the columns of solve's csv with an axial load, every one
-        given = [k for k in COMBINED_KEYS if k not in _COMBINED_IF_GIVEN or k in header.names]
-        given = [k for k in given if k not in service or k in wanted]
-        return [column(k, 1.5) for k in ("row", *given)]
-    answer = [k for k in REPORT_KEYS if k != "relative_error"]
-    at = answer.index("speed") + 1  # a ball bearing's row at speed: the ball dynamics' density
-    answer = [*answer[:at], "ball_density", *answer[at:]]
-    answer = [k for k in answer if k not in service or k in wanted]
-    keys = ["row", *INPUT_KEYS, *answer, "valid"]
-    if not header.has_bearing:
-        keys = [k for k in keys if k not in _BEARING_ONLY and k not in service]
-    if "method" not in header.names:
-        keys.remove("epsilon")
-    # rows of roller bearings (m = 10/9) or an exponent column mix exponents: N/mm^m then
-    exponent = None if "exponent" in header.names or header.has_bearing else 1.5
-    return [column(k, exponent) for k in keys]
+def pair_columns(written: set[str] | None) -> list[Column]:
+    """The output columns of a file of pairs: ``row``, then those ``solve 7205BDB --format
+    csv`` writes, of :data:`NEEDS` those in ``written`` (None: every one), the pair's as
+    ``pair_...`` (its cross moment ``pair_moment_cross``; a bearing has no ``moment_cross``, a
+    pair no mounting)."""
+    from bearingload.reports.pair import OWN_KEYS, PAIR_SERVICE, csv_columns
+
+    kept = [
+        k for k in (*PAIR_SERVICE, *OWN_KEYS) if written is None or k in written or k not in NEEDS
+    ]
+    own = [k for k in OWN_KEYS if k in kept and k not in ("moment_cross", *RESULT_KEYS)]
+    return [column("row"), *csv_columns([k for k in PAIR_SERVICE if k in kept], own)]
 
 
-def held_keys(header: Header) -> tuple[str, ...]:
-    """The keys beyond the columns that json, markdown and table hold for a file with
-    ``header`` (:data:`HELD_KEYS` for a combined-load file or a file of pairs, and for a file
-    of bearings with a speed column, whose ball bearings at speed solve gives the ball
-    dynamics)."""
-    at_speed = "speed" in header.names and header.has_bearing
-    return HELD_KEYS if header.combined or header.pairs or at_speed else ()
+def pair_rows(
+    header: Any, many: Any, numbers: list[int], cols: dict[str, list[Any]], errors: dict[int, str]
+) -> tuple[list[int], dict[str, list[Any]]]:
+    """The output rows of the pairs solved by the plan (:mod:`bearingload.plan.many_pairs`):
+    solve's csv rows of each (:func:`bearingload.reports.pair.csv_rows`, one per bearing, its
+    row number twice) with the row's oil cells, ``warnings`` (the pair's, its speed's and its
+    lives') on the first, each bearing's model and contacts (:data:`HELD_KEYS`). A pair whose
+    records solve would refuse is a skipped row with its reason (in ``errors``)."""
+    from bearingload.batch.read import row_message
+    from bearingload.errors import BearingloadError
+    from bearingload.reports.combined import contact_values
+    from bearingload.reports.pair import csv_rows, pair_records
+    from bearingload.reports.solve import printed_warnings
 
-
-def csv_rows(columns: Sequence[Column], rows: Sequence[int], values: dict[str, Any]) -> str:
-    """The csv lines of one solved chunk."""
-    return csv_block(columns, {"row": rows} | row_values(columns, len(rows), values))
-
-
-#: The last csv column: why a row was skipped (blank where it was solved); json lists the
-#: skipped rows under ``skipped``, table and markdown in the notes.
-SKIPPED = Column("skipped", "skipped: the reason", "", None, "left")
+    keys = [c.key for c in pair_columns(None) if c.key != "row"]
+    oil = [k for k in OIL_INPUTS if k in header.names]  # written as given (nu is the oil's)
+    rows: list[int] = []
+    values: dict[str, list[Any]] = {k: [] for k in [*keys, *oil, "warnings"]}
+    solved = many.values.get("pair", []), many.values.get("lives", [])
+    for i, pc, lives in zip(many.rows, *solved, strict=True):
+        try:
+            pair, records = pair_records(pc, lives)
+        except BearingloadError as exc:
+            errors[numbers[i]] = row_message(exc)
+            continue
+        warned = tuple(printed_warnings(pc.warnings, lives.bearings))
+        for j, row in enumerate(csv_rows(pc, pair, records, keys)):
+            rows.append(numbers[i])
+            row |= {k: cols[k][i] for k in oil} | {"warnings": () if j else warned}
+            row |= contact_values(pc.bearings[j].result, pc.bearing.contact_angle)
+            for k, v in row.items():
+                values.setdefault(k, []).append(v)
+    return rows, values
 
 
 def csv_chunk(
@@ -168,12 +154,14 @@ def csv_chunk(
 ) -> str:
     """The csv lines of one chunk in row order (``columns`` ending with :data:`SKIPPED`): each
     solved row, and each skipped row with its number and its reason, its other cells blank."""
-    solved = csv_rows(columns, rows, values).splitlines(keepends=True) if len(rows) else []
-    numbers = [r for r, _ in skipped]
-    blank: dict[str, list[Any]] = {c.key: [None] * len(skipped) for c in columns}
-    blank |= {"row": numbers, "skipped": [m for _, m in skipped]}
-    refused = csv_block(columns, blank).splitlines(keepends=True) if skipped else []
-    lines = list(zip(rows, solved, strict=True)) + list(zip(numbers, refused, strict=True))
+    solved = {"row": rows} | row_values(columns, len(rows), values)
+    blank: dict[str, Any] = {c.key: [None] * len(skipped) for c in columns}
+    blank |= {"row": [r for r, _ in skipped], "skipped": [m for _, m in skipped]}
+    lines = [
+        (r, line)
+        for block in (solved, blank)
+        for r, line in zip(block["row"], csv_block(columns, block).splitlines(True), strict=True)
+    ]
     return "".join(line for _, line in sorted(lines, key=lambda pair: pair[0]))
 
 
@@ -183,16 +171,20 @@ def row_values(columns: Sequence[Column], n: int, values: dict[str, Any]) -> dic
 
 
 class Held:
-    """The solved rows of a file that json, markdown and table hold (at most ``limit``)."""
+    """The solved rows of a file that json, markdown and table hold (at most
+    :data:`MAX_HELD_ROWS`), with :data:`HELD_KEYS` for a file of combined loads, of pairs, or
+    of bearings with a speed column (whose ball bearings at speed have the ball dynamics)."""
 
     def __init__(self, header: Header, columns: list[Column]) -> None:
-        self.columns, self.extra = columns, held_keys(header)
+        at_speed = "speed" in header.names and header.has_bearing  # ball bearings: dynamics
+        self.columns = columns
+        self.extra = HELD_KEYS if header.combined or header.pairs or at_speed else ()
         self.rows: list[int] = []
         self.values: dict[str, list[Any]] = {c.key: [] for c in columns if c.key != "row"}
 
     def add(self, part: Any) -> bool:
         """Hold a chunk's solved rows: each column's, the warnings, json's model and per-ball
-        contacts (as solve's json); False beyond :attr:`limit` rows."""
+        contacts (as solve's json); False beyond :data:`MAX_HELD_ROWS` rows."""
         self.rows += part.rows
         n = len(part.rows)
         values = row_values(self.columns, n, part.values)
@@ -200,51 +192,34 @@ class Held:
         values |= {k: part.values.get(k, [None] * n) for k in self.extra}
         for k, v in values.items():
             self.values.setdefault(k, []).extend(v.tolist() if hasattr(v, "tolist") else v)
-        return len(self.rows) <= self.limit
-
-    @property
-    def limit(self) -> int:
-        """:data:`MAX_HELD_ROWS`."""
-        return MAX_HELD_ROWS
+        return len(self.rows) <= MAX_HELD_ROWS
 
     def report(self, skipped: Sequence[tuple[int, str]], fmt: str) -> str:
-        """The whole report in ``fmt`` (json, markdown, table)."""
-        return held_report(self.columns, self.rows, self.values, skipped, fmt)
-
-
-def held_report(
-    columns: Sequence[Column],
-    rows: Sequence[int],
-    values: dict[str, list[Any]],
-    skipped: Sequence[tuple[int, str]],
-    fmt: str,
-) -> str:
-    """The whole report in ``fmt`` (json, markdown, table) from every solved row."""
-    keys = [c.key for c in columns]
-    data = {"row": list(rows)} | values
-    records = [dict(zip(keys, r, strict=True)) for r in zip(*(data[k] for k in keys), strict=True)]
-    held = [k for k in HELD_KEYS if k in values]
-    if fmt == "json":
-        for i, record in enumerate(records):
-            record |= {k: values[k][i] for k in held}
-        for record, found in zip(records, values.get("warnings", []), strict=False):
-            record["warnings"] = list(found)
-        doc = {
-            "cases": records,
-            "skipped": [{"row": r, "reason": m} for r, m in skipped],
-            "units": {c.key: c.unit for c in columns if c.unit} | units(held, 1.5),
-        }
-        return render([], "json", document=doc)
-    rows_out = [
-        {k: "" if v is None else str(v) if isinstance(v, bool) else v for k, v in r.items()}
-        for r in records
-    ]
-    columns = [Column(c.key, c.key, c.unit, c.digits, c.align) for c in columns]  # short heads
-    dynamics = [m for m in values.get("model", []) if m is not None and "; ball dynamics" in m]
-    models = sorted(set(dynamics))  # not the radial engine's model, which has a '; ' too
-    notes = [DYNAMICS_NOTE.format(m.split("; ", 1)[1]) for m in models]
-    if models and "pair_lift_off_axial_load" in keys:  # pairs at speed: what is at rest
-        notes.append(PAIR_AT_SPEED_NOTE)
-    notes += [f"Row {r} skipped: {m}" for r, m in skipped]
-    title = f"{len(records)} cases (row: the input file's row, the header is row 1)"
-    return render([Table(title, columns, rows_out, notes)], fmt)
+        """The whole report in ``fmt`` (json, markdown, table) from every solved row."""
+        keys, values = [c.key for c in self.columns], self.values
+        data = {"row": self.rows} | values
+        records = [dict(zip(keys, r, strict=True)) for r in zip(*map(data.get, keys), strict=True)]
+        held = [k for k in HELD_KEYS if k in values]
+        if fmt == "json":
+            for i, record in enumerate(records):
+                record |= {k: values[k][i] for k in held}
+                record["warnings"] = list(values["warnings"][i])
+            doc = {
+                "cases": records,
+                "skipped": [{"row": r, "reason": m} for r, m in skipped],
+                "units": {c.key: c.unit for c in self.columns if c.unit} | units(held, 1.5),
+            }
+            return render([], "json", document=doc)
+        rows = [
+            {k: "" if v is None else str(v) if isinstance(v, bool) else v for k, v in r.items()}
+            for r in records
+        ]
+        short = [Column(c.key, c.key, c.unit, c.digits, c.align) for c in self.columns]
+        dynamics = [m for m in values.get("model", []) if m is not None and "; ball dynamics" in m]
+        models = sorted(set(dynamics))  # not the radial engine's model, which has a '; ' too
+        notes = [DYNAMICS_NOTE.format(m.split("; ", 1)[1]) for m in models]
+        if models and "pair_lift_off_axial_load" in keys:  # pairs at speed: what is at rest
+            notes.append(PAIR_AT_SPEED_NOTE)
+        notes += [f"Row {r} skipped: {m}" for r, m in skipped]
+        title = f"{len(records)} cases (row: the input file's row, the header is row 1)"
+        return render([Table(title, short, rows, notes)], fmt)

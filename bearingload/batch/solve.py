@@ -1,8 +1,6 @@
-"""Solving the rows of a block: the cells of each column read by :mod:`bearingload.batch.read`
-into the inputs of the cases, solved by the plan's many cases at once
-(:class:`bearingload.plan.many.Planner`: each row planned as ``solve`` plans its case, the rows
-that share a bearing and an engine solved together on arrays); each refusal is a skipped row
-with its reason, ``column: message``."""
+"""Solving the rows of a block: each column read by :mod:`bearingload.batch.read`, the cases
+solved by the plan of many cases (:class:`bearingload.plan.many.Planner`, as solve plans one);
+each refusal a skipped row with its reason, ``column: message``."""
 
 from __future__ import annotations
 
@@ -15,9 +13,8 @@ from bearingload.plan.many import Planner
 
 @dataclass
 class Chunk:
-    """The answer for one block: the solved ``rows`` (row numbers, in input order), their
-    ``values`` (quantity key -> array or list over ``rows``; None where not given, and
-    ``warnings``: one tuple per row), and the skipped rows (row number, reason)."""
+    """The answer for one block: the solved ``rows`` (row numbers), their ``values`` (key ->
+    array or list over them; ``warnings`` a tuple each) and the skipped rows (number, reason)."""
 
     rows: list[int] = field(default_factory=list)
     values: dict[str, Any] = field(default_factory=dict)
@@ -33,8 +30,7 @@ class BatchSolver:
 
     def solve(self, block: Block) -> Chunk:
         """Solve one block of rows."""
-        errors = dict(block.errors)
-        width = len(self.header.names)
+        errors, width = dict(block.errors), len(self.header.names)
         numbers, rows = block.numbers, block.cells
         if set(map(len, rows)) - {width}:  # lines with another number of cells: bad rows
             numbers, rows = [], []
@@ -47,7 +43,7 @@ class BatchSolver:
                     errors[number] = message
         cols, bad, bare = self._columns(rows)
         if self.header.pairs:
-            from bearingload.batch.pairs import pair_rows
+            from bearingload.batch.report import pair_rows
             from bearingload.plan.many_pairs import solve_pair_cases
 
             many = solve_pair_cases(self.planner, cols, len(numbers), bad, bare)
@@ -63,47 +59,38 @@ class BatchSolver:
         """Why a row's cells do not fit the header, or None: one cell per named column, and
         up to the header's empty trailing columns more, left empty."""
         width, tail = len(self.header.names), self.header.blank_tail
-        if width <= len(cells) <= width + tail:
-            extra = next((c for c in cells[width:] if c.strip()), None)
-            if extra is None:
-                return None
-            return (
-                f"a value ({extra!r}) in a column the header gives no name (after its last "
-                f"column '{self.header.names[-1]}'); name the column or leave it empty"
-            )
-        named = f" (and {tail} unnamed empty one(s) after them)" if tail else ""
-        return f"malformed line: {len(cells)} cells, the header names {width} columns{named}"
+        if not width <= len(cells) <= width + tail:
+            named = f" (and {tail} unnamed empty one(s) after them)" if tail else ""
+            return f"malformed line: {len(cells)} cells, the header names {width} columns{named}"
+        extra = next((c for c in cells[width:] if c.strip()), None)
+        if extra is None:
+            return None
+        return (
+            f"a value ({extra!r}) in a column the header gives no name (after its last column "
+            f"'{self.header.names[-1]}'); name the column or leave it empty"
+        )
 
     def _columns(self, rows: list[list[str]]) -> tuple[dict[str, list[Any]], dict[int, Any], Any]:
         """Every column's values by its input's name (None: blank), each failing row's first
         error (the exponent first: a stiffness unit depends on it, then in file order), and
         whether each cell of a column judged against the bearing's size had no unit."""
+        from bearingload.bearings.designation import contact_exponent
         from bearingload.bearings.plausible import BEARING_SCALE
         from bearingload.units import is_bare
 
-        names = self.header.names
+        names, units = self.header.names, self.header.units
         texts = dict(zip(names, zip(*rows, strict=True), strict=True)) if rows else {}
         cols: dict[str, list[Any]] = {}
         bad: dict[int, Any] = {}
-        m = None
-        if "bearing" in texts:  # m of a stiffness unit: 10/9 where the row names a roller bearing
-            from bearingload.bearings.designation import contact_exponent
-
-            kinds = {t: contact_exponent(t) for t in set(texts["bearing"])}
-            m = [kinds[t] for t in texts["bearing"]]
+        kinds = {t: contact_exponent(t) for t in set(texts.get("bearing", ()))}
+        m = [kinds[t] for t in texts["bearing"]] if "bearing" in texts else None  # 10/9: rollers
         for name in sorted(names, key=lambda n: n != "exponent"):
-            unit = self.header.units.get(name)
-            values, failed = read_column(name, unit, texts.get(name, ()), m)
+            values, failed = read_column(name, units.get(name), texts.get(name, ()), m)
             for i, message in failed.items():
                 bad.setdefault(i, message)
             cols[library_name(name)] = values
-            if name == "exponent":
-                m = [
-                    x if x is not None else 1.5 if m is None else m[i] for i, x in enumerate(values)
-                ]
-        bare = {
-            n: [is_bare(t) for t in texts[n]]
-            for n in BEARING_SCALE
-            if n in texts and n not in self.header.units and self.header.has_bearing
-        }
-        return cols, bad, bare
+            if name == "exponent":  # the given exponents, else the bearings'
+                m = [(m[i] if m else 1.5) if x is None else x for i, x in enumerate(values)]
+        judged = self.header.has_bearing  # bare numbers judged against a bearing's size
+        scale = [n for n in BEARING_SCALE if judged and n in texts and n not in units]
+        return cols, bad, {n: [is_bare(t) for t in texts[n]] for n in scale}

@@ -115,6 +115,7 @@ def service_values(op: Operating, b: LifeBasis) -> ServiceLife:
     out.values = {
         k: float(x) for k, x in columns.items() if np.ndim(x) == 0 and np.isfinite(float(x))
     }
+    out.warnings = life_warnings(op, b, out.values.get("kappa"))[0]
     if "cage_frequency" in out.values:
         out.notes.append(frequency_note(b))
     if op.reliability is not None:
@@ -126,7 +127,6 @@ def service_values(op: Operating, b: LifeBasis) -> ServiceLife:
         assert op.speed is not None and b.pitch_diameter is not None
         out.notes += [op.viscosity_note] if op.viscosity_note else []
         v = out.values
-        out.warnings += ml.clamp_kappa(v["kappa"])[1]
         used = float(ml.clamp_kappa(v["kappa"])[0])
         e_c_note = _contamination(op, b.pitch_diameter)[1]
         cu_note = _fatigue_limit(op, b)[1]
@@ -136,7 +136,6 @@ def service_values(op: Operating, b: LifeBasis) -> ServiceLife:
             f"{cu_note}"
         )
         out.notes += _film_note(op, b) if "film_thickness" in v else []
-        out.warnings += missing_fatigue_limit(op, b)
         if "fatigue_load_limit" in v and "modified_reference_rating_life" in v:
             out.notes.append(
                 "L_nmr: ISO/TS 16281 modified reference rating life a_1 a_ISO L10r, a_ISO at the "
@@ -149,6 +148,17 @@ def service_values(op: Operating, b: LifeBasis) -> ServiceLife:
                 + " bearings, at most 50); L_nm = a_1 a_ISO L10."
             )
     return out
+
+
+def life_warnings(op: Operating, b: LifeBasis, kappa: Any) -> list[list[str]]:
+    """The warnings of the lives of each case (one case, or many of one bearing: ``kappa`` a
+    float or an array over them, None or NaN: none), in the order solve prints them: kappa
+    outside ISO 281's 0.1 ... 4 (:func:`~bearingload.bearings.modified_life.clamp_kappa`),
+    then a viscosity without C_u (:func:`missing_fatigue_limit`)."""
+    common = missing_fatigue_limit(op, b)
+    low, high = ml.KAPPA_RANGE
+    ks = np.atleast_1d(np.asarray(np.nan if kappa is None else kappa, dtype=float)).tolist()
+    return [(ml.clamp_kappa(k)[1] if not low <= k <= high and k == k else []) + common for k in ks]
 
 
 def missing_fatigue_limit(op: Operating, b: LifeBasis) -> list[str]:

@@ -2,8 +2,10 @@
 
 from __future__ import annotations
 
+import contextlib
 import sys
 import time
+from collections.abc import Callable, Iterator
 from itertools import compress
 from typing import Any, BinaryIO
 
@@ -33,12 +35,7 @@ MAX_WARNINGS_SHOWN = 20
 @quiet_option
 @library_errors
 def batch(
-    cases: BinaryIO,
-    strict: bool,
-    chunk_size: int | None,
-    fmt: str,
-    output: str | None,
-    quiet: bool,
+    cases: BinaryIO, strict: bool, chunk_size: int | None, fmt: str, output: str | None, quiet: bool
 ) -> None:
     """Solve every case (row) of a csv file: one output row per case, in input order, with the
     input file's row number (the header is row 1), the inputs and the columns that
@@ -78,8 +75,8 @@ def batch(
     (csv: the last column, skipped; json: skipped; table and markdown: the notes) and standard
     error names it ('Skipped: row N: reason', apart from the warnings of the solved rows); the
     exit status is then 1 (2: a bad command line or header, or a bad row with --strict). A last
-    line on standard error counts the rows solved and skipped and the warnings; -q leaves that
-    line alone.
+    line on standard error counts the rows solved and skipped and the warnings (where a row was
+    skipped or warned, or the file has no data rows); -q leaves that line alone.
 
     Rows that share a bearing and an engine are solved together, chunk by chunk, by one
     vectorised call; each row's answer depends on its own cells only. csv is streamed (-o
@@ -98,8 +95,8 @@ def batch(
       # a speed column: the ball dynamics (quasi_static, ball_density), per-ball contacts in json
       bearingload batch examples/speed_cases.csv --format json
     """
+    from bearingload.batch import report
     from bearingload.batch.read import CHUNK_ROWS, read_cases
-    from bearingload.batch.report import SKIPPED, Held, batch_columns, csv_chunk
     from bearingload.batch.solve import BatchSolver
     from bearingload.errors import InputError
     from bearingload.reports.render import csv_header
@@ -108,37 +105,37 @@ def batch(
         raise click.UsageError("Invalid value for '-o' / '--output': the file name is empty")
     try:
         header, blocks = read_cases(cases, chunk_size or CHUNK_ROWS)
-    except InputError as exc:
-        raise click.UsageError(_header_message(exc)) from exc
-    columns, solver = batch_columns(header), BatchSolver(header)
-    held = Held(header, columns)
+    except InputError as exc:  # a column's unit is named with it ('load [kN]: ...')
+        own = exc.parameter in ("CASES", "columns")
+        where, message = ("", exc.message) if own else (" header", str(exc))
+        raise click.UsageError(f"Invalid value for 'CASES.csv'{where}: {message}") from exc
+    columns, solver = report.batch_columns(header), BatchSolver(header)
+    written, held = [*columns, report.SKIPPED], report.Held(header, columns)  # csv's; the others'
     skipped: list[tuple[int, str]] = []
     warned = total = 0
     progress = _Progress()
-    with _Sink(output, strict) as sink:
+    with _sink(output, strict) as write:
         if fmt == "csv":
-            sink.write(csv_header([*columns, SKIPPED]))
+            write(csv_header(written))
         for block in blocks:
             total += len(block.numbers) + len(block.errors)
             part = solver.solve(block)
             if part.errors and strict:
-                sink.fail()
                 row, message = part.errors[0]
                 raise click.UsageError(f"Invalid value in row {row}: {message}")
             skipped += part.errors
             warned = _row_messages(part, warned, progress, quiet)
             if fmt == "csv":
-                sink.write(csv_chunk([*columns, SKIPPED], part.rows, part.values, part.errors))
+                write(report.csv_chunk(written, part.rows, part.values, part.errors))
             elif not held.add(part):
-                sink.fail()
                 raise click.UsageError(
                     f"Invalid value for '--format': {fmt} holds every row and takes at most "
-                    f"{held.limit} rows; write --format csv for longer files"
+                    f"{report.MAX_HELD_ROWS} rows; write --format csv for longer files"
                 )
             progress.update(total)
         progress.clear()
         if fmt != "csv":
-            sink.write(held.report(skipped, fmt))
+            write(held.report(skipped, fmt))
     _summary(total, len(skipped), warned, quiet)
     if skipped:
         click.get_current_context().exit(1)
@@ -146,15 +143,16 @@ def batch(
 
 def _summary(total: int, skipped: int, warned: int, quiet: bool) -> None:
     """The last line on stderr: the rows solved and skipped and the warnings (said where there
-    were skipped rows or warnings), after the count of warnings not shown."""
+    were skipped rows or warnings, or no rows), after the count of warnings not shown."""
     if warned > MAX_WARNINGS_SHOWN and not quiet:
         click.echo(
             f"Warning: {warned - MAX_WARNINGS_SHOWN} more warnings not shown (--format json "
             "lists every row's warnings)",
             err=True,
         )
-    if skipped or warned:
+    if skipped or warned or not total:
         where = "; the output names each skipped row and its reason" if skipped else ""
+        where = where if total else "; the file has no data rows"
         status = " (exit status 1)" if skipped else ""
         click.echo(
             f"{total - skipped} of {total} rows solved, {skipped} skipped{status}, "
@@ -164,10 +162,9 @@ def _summary(total: int, skipped: int, warned: int, quiet: bool) -> None:
 
 
 def _row_messages(part: Any, warned: int, progress: _Progress, quiet: bool) -> int:
-    """Print the chunk's skipped rows (``Skipped: row N: reason``) and the checks' warnings
-    (``Warning: row N: ...``) in row order (so that stderr does not depend on --chunk-size),
-    the warnings up to :data:`MAX_WARNINGS_SHOWN` in all (``quiet``: none of them); return the
-    number of warnings so far."""
+    """Print the chunk's ``Skipped: row N: reason`` and ``Warning: row N: ...`` lines in row
+    order (stderr does not depend on --chunk-size), at most :data:`MAX_WARNINGS_SHOWN` warnings
+    in all (``quiet``: no line); return the number of warnings so far."""
     found = part.values.get("warnings", [])
     messages = [(row, text, False) for row, text in part.errors]
     for i in compress(range(len(found)), found):
@@ -180,72 +177,44 @@ def _row_messages(part: Any, warned: int, progress: _Progress, quiet: bool) -> i
     return warned
 
 
-def _header_message(exc: Exception) -> str:
-    """'Invalid value for ...' of an error in the header line (a column's unit names it)."""
-    if getattr(exc, "parameter", None) in ("CASES", "columns"):
-        return f"Invalid value for 'CASES.csv': {getattr(exc, 'message', exc)}"
-    return f"Invalid value for 'CASES.csv' header: {exc}"
+@contextlib.contextmanager
+def _sink(output: str | None, strict: bool) -> Iterator[Callable[[str], Any]]:
+    """``write(text)`` of the report: to ``-o FILE`` (atomic_file), to a spool copied to
+    standard output at the end (``--strict``), or to standard output chunk by chunk; an error
+    inside the block writes nothing (a file is left as it was)."""
+    if output not in (None, "-"):
+        from bearingload.reports.render import atomic_file
+
+        with _writing(output), atomic_file(output) as fh:
+            yield fh.write
+    elif strict:
+        import tempfile
+
+        with tempfile.TemporaryFile("w+", encoding="utf-8", newline="\n") as spool:
+            yield spool.write
+            spool.seek(0)
+            while block := spool.read(1 << 20):
+                click.echo(block, nl=False)
+    else:
+        yield lambda text: click.echo(text, nl=False)
 
 
-class _Sink:
-    """Where the report goes: a temporary file renamed over ``-o FILE`` at the end, a spool
-    copied to standard output at the end (``--strict``: nothing is written before the last row
-    is known to be good), or standard output chunk by chunk."""
-
-    def __init__(self, output: str | None, strict: bool) -> None:
-        self.output = None if output in (None, "-") else output
-        self.failed = False
-        self.fh: Any = None
-        if self.output is None and strict:
-            import tempfile
-
-            self.fh = tempfile.TemporaryFile("w+", encoding="utf-8", newline="\n")
-
-    def __enter__(self) -> _Sink:
-        if self.output is not None:
-            from bearingload.reports.render import atomic_file
-
-            self.atomic = atomic_file(self.output)
-            self.fh = self._writing(self.atomic.__enter__)
-        return self
-
-    def write(self, text: str) -> None:
-        if self.fh is None:
-            click.echo(text, nl=False)
-        else:
-            self.fh.write(text)
-
-    def fail(self) -> None:
-        self.failed = True
-
-    def __exit__(self, kind: Any, exc: Any, tb: Any) -> None:
-        bad = kind is not None or self.failed
-        if self.output is not None:
-            self._writing(lambda: self.atomic.__exit__(RuntimeError if bad else None, None, None))
-        elif self.fh is not None:
-            if not bad:
-                self.fh.seek(0)
-                while block := self.fh.read(1 << 20):
-                    click.echo(block, nl=False)
-            self.fh.close()
-
-    def _writing(self, call: Any) -> Any:
-        """``call()``, an OSError said as a bad ``-o``."""
-        try:
-            return call()
-        except OSError as exc:
-            raise click.UsageError(
-                f"Invalid value for '-o' / '--output': cannot write {self.output!r}: {exc.strerror}"
-            ) from exc
+@contextlib.contextmanager
+def _writing(output: str) -> Iterator[None]:
+    """An OSError of the file ``output`` said as a bad ``-o``."""
+    try:
+        yield
+    except OSError as exc:
+        raise click.UsageError(
+            f"Invalid value for '-o' / '--output': cannot write {output!r}: {exc.strerror}"
+        ) from exc
 
 
 class _Progress:
     """Rows done, on standard error when it is a terminal and the run has taken over a second."""
 
     def __init__(self) -> None:
-        self.start = time.monotonic()
-        self.tty = sys.stderr.isatty()
-        self.shown = False
+        self.start, self.tty, self.shown = time.monotonic(), sys.stderr.isatty(), False
 
     def update(self, rows: int) -> None:
         if self.tty and time.monotonic() - self.start > 1.0:

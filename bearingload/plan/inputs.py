@@ -95,22 +95,31 @@ def stiffness(value: Any, name: str) -> str:
     return _as_text(value, name)
 
 
-def _reader(module: str, function: str) -> Reader:
+stiffness.kind = "stiffness"  # type: ignore[attr-defined]
+
+
+def _reader(module: str, function: str, kind: str | None = None) -> Reader:
+    """``module.function`` of the text; ``kind``: the kind of unit of its numbers."""
+
     def read(value: Any, name: str) -> Any:
         import importlib
 
         return getattr(importlib.import_module(module), function)(_as_text(value, name))
 
+    read.kind = kind  # type: ignore[attr-defined]
     return read
 
 
-def _named(module: str, function: str) -> Reader:
+def _named(module: str, function: str, kind: str | None = None) -> Reader:
+    """:func:`_reader` of a parser that names its parameter."""
+
     def read(value: Any, name: str) -> Any:
         import importlib
 
         parse = getattr(importlib.import_module(module), function)
         return parse(_as_text(value, name), parameter=name)
 
+    read.kind = kind  # type: ignore[attr-defined]
     return read
 
 
@@ -170,18 +179,18 @@ READERS: dict[str, Reader] = {
     "misalignment": quantity("angle"),
     "contact_angle": quantity("angle"),
     "arrangement": choice("DB", "DF", "DT", case="upper"),
-    "preload": _named("bearingload.bearings.preload", "parse_preload"),
+    "preload": _named("bearingload.bearings.preload", "parse_preload", "force"),
     "width": quantity("length", positive=True),
-    "tilt_radius": _reader("bearingload.bearings.tilt", "parse_tilt_radius"),
+    "tilt_radius": _reader("bearingload.bearings.tilt", "parse_tilt_radius", "length"),
     "stiffness": stiffness,
-    "clearance": _reader("bearingload.bearings.clearance", "parse_clearance"),
+    "clearance": _reader("bearingload.bearings.clearance", "parse_clearance", "length"),
     "clearance_pick": choice("min", "mean", "max", "range"),
     "shaft_fit": text,
     "housing_fit": text,
     "shaft_bore": quantity("length", positive=True),
     "housing_diameter": quantity("length", positive=True),
-    "inner_ring_temperature": _named("bearingload.units", "parse_temperature"),
-    "outer_ring_temperature": _named("bearingload.units", "parse_temperature"),
+    "inner_ring_temperature": _named("bearingload.units", "parse_temperature", "temperature"),
+    "outer_ring_temperature": _named("bearingload.units", "parse_temperature", "temperature"),
     "ball_diameter": quantity("length"),
     "pitch_diameter": quantity("length"),
     "inner_conformity": lambda v, n: _float(v, n),
@@ -190,7 +199,7 @@ READERS: dict[str, Reader] = {
     "poisson": lambda v, n: _float(v, n),
     "ball_material": text,
     "maker": text,
-    "cage_angle": _named("bearingload.units", "parse_cage_angle"),
+    "cage_angle": _named("bearingload.units", "parse_cage_angle", "angle"),
     "exponent": exponent,
     "dynamic_rating": quantity("force", positive=True),
     "rotating": choice("inner", "outer"),
@@ -204,7 +213,7 @@ READERS: dict[str, Reader] = {
     "viscosity_40": quantity("viscosity", positive=True),
     "viscosity_100": quantity("viscosity", positive=True),
     "viscosity_index": lambda v, n: _float(v, n),
-    "temperature": _named("bearingload.units", "parse_temperature"),
+    "temperature": _named("bearingload.units", "parse_temperature", "temperature"),
     "contamination": choice(*CONTAMINATION_LEVELS),
     "e_c": number_in(0.0, 1.0),
     "fatigue_load_limit": quantity("force", positive=True),

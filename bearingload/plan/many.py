@@ -50,7 +50,7 @@ from bearingload.plan.solve import (
 #: the library given one is a pair).
 PAIR_PARAMS = ("arrangement", "preload", "width")
 #: Inputs that make a case a bearing (resolved) rather than a ring given by z and K.
-_GEOMETRY = ("bearing", "ball_diameter", "pitch_diameter")
+GEOMETRY = ("bearing", "ball_diameter", "pitch_diameter")
 #: Inputs whose plan depends only on whether they are given: a case's plan is kept for the
 #: cases that differ from it only in their values.
 _PER_CASE = (*LOAD_PARAMS[:-1], "load", "cage_angle", "ball_density", *SERVICE)
@@ -143,7 +143,7 @@ class Planner:
         keys: list[Any] = [None] * n
         cols["_lever"] = [None] * n  # a combined case's lever of the tilt [mm]
         rings = [i for i in range(n) if i not in bad]
-        if any(c in cols for c in (*LOAD_PARAMS, *_GEOMETRY, "tilt_radius")):
+        if any(c in cols for c in (*LOAD_PARAMS, *GEOMETRY, "tilt_radius")):
             rings = []
             for i in range(n):
                 if i in bad:

@@ -154,17 +154,12 @@ def _basis(b: Any, members: list[Member], gathered: _Gathered, rotating: str) ->
 def _life_warnings(
     kappa: Any, op: Any, basis: Any, members: list[Member], parts: list[Any]
 ) -> None:
-    """Each case's warnings of its lives, as solve gives them for one case."""
-    from bearingload.bearings.modified_life import KAPPA_RANGE, clamp_kappa
-    from bearingload.bearings.service_life import missing_fatigue_limit
+    """Each case's warnings of its lives, as solve gives them for one case
+    (:func:`bearingload.bearings.service_life.life_warnings`)."""
+    from bearingload.bearings.service_life import life_warnings
 
-    common = missing_fatigue_limit(op, basis)
-    if kappa is None and not common:
-        return
-    ks = np.broadcast_to(np.nan if kappa is None else kappa, (len(members),))
-    low, high = KAPPA_RANGE
-    for (p, j), k in zip(members, ks.tolist(), strict=True):
-        found = (clamp_kappa(k)[1] if k == k and not low <= k <= high else []) + common
+    kappas = np.broadcast_to(np.nan if kappa is None else kappa, (len(members),))
+    for (p, j), found in zip(members, life_warnings(op, basis, kappas), strict=True):
         if found:
             warnings = parts[p][1]["warnings"]
             row = list(warnings[j])
