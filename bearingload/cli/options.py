@@ -14,6 +14,14 @@ from bearingload.units import BASE_UNIT, UNITS, is_bare, parse_cage_angle, parse
 CONTEXT = {"help_option_names": ["-h", "--help"], "max_content_width": 100}
 #: Key of click's context meta: the names of the options given a bare number (no unit).
 BARE = "bearingload.bare"
+#: Key of click's context meta: the text of each option given a number with a unit ("0.1kN").
+TYPED = "bearingload.typed"
+
+
+def note_typed(value: Any, param: click.Parameter | None, ctx: click.Context | None) -> None:
+    """Keep the text of an option given a number with a unit, which a failure names it by."""
+    if ctx is not None and param is not None and isinstance(value, str) and not is_bare(value):
+        ctx.meta.setdefault(TYPED, {})[param.name] = value.strip()
 
 
 class Quantity(click.ParamType):
@@ -36,6 +44,7 @@ class Quantity(click.ParamType):
             self.fail(exc.message, param, ctx)
         if ctx is not None and param is not None and is_bare(value):
             ctx.meta.setdefault(BARE, set()).add(param.name)  # judged against the bearing later
+        note_typed(value, param, ctx)
         if self.kind == "stiffness":
             return str(value)  # converted with the exponent by the command (stiffness_value)
         if self.positive and not number > 0:
@@ -61,9 +70,11 @@ class PreloadValue(click.ParamType):
         from bearingload.bearings.preload import parse_preload
 
         try:
-            return parse_preload(value, parameter=param.name if param else "preload")
+            preload = parse_preload(value, parameter=param.name if param else "preload")
         except InputError as exc:
             self.fail(exc.message, param, ctx)
+        note_typed(value, param, ctx)
+        return preload
 
 
 class CageAngle(click.ParamType):
@@ -77,9 +88,11 @@ class CageAngle(click.ParamType):
         if value == "half" or isinstance(value, float):
             return value
         try:
-            return parse_cage_angle(value)
+            angle = parse_cage_angle(value)
         except InputError as exc:
             self.fail(exc.message, param, ctx)
+        note_typed(value, param, ctx)
+        return angle
 
 
 def units_help(kind: str) -> str:
@@ -246,15 +259,17 @@ def library_errors(func: Callable[..., Any]) -> Callable[..., Any]:
 
 def _failure(exc: BearingloadError) -> str:
     """The line of a failure of the computation: a ConvergenceError names its cases' inputs by
-    the options the user types (``--load = 1000 N``)."""
+    the options the user types, each value as typed (``--load = 1kN``, ``--speed = 3000 rpm``)."""
     from bearingload.errors import ConvergenceError
 
     if not isinstance(exc, ConvergenceError):
         return option_message(str(exc))
     cases = {option_name(k): v for k, v in exc.cases.items()}
     units = {option_name(k): u for k, u in (exc.units or {}).items()}
+    typed = {option_name(k): t for k, t in (exc.typed or {}).items()}
     way = None if exc.way_out is None else option_message(exc.way_out)
-    return str(ConvergenceError(exc.solver, exc.iterations, exc.residual, cases, units, way))
+    failure = ConvergenceError(exc.solver, exc.iterations, exc.residual, cases, units, way, typed)
+    return str(failure)
 
 
 class Exponent(click.ParamType):

@@ -114,8 +114,10 @@ def _analyse(
 ) -> Solution:
     from bearingload.plan.case import Case
     from bearingload.plan.solve import solve_case
+    from bearingload.units import is_bare
 
     values, bare, life = read_arguments(bearing, revolutions, options)
     given = {n for n, v in values.items() if v is not None}
-    case = Case.of(values, given=given, bare=bare)
+    typed = {n: v.strip() for n, v in options.items() if isinstance(v, str) and not is_bare(v)}
+    case = Case.of(values, given=given, bare=bare, typed=typed)
     return solve_case(case, method=method, revolutions=life)
