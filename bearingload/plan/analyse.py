@@ -93,12 +93,13 @@ def read_arguments(
     by its reader (:data:`bearingload.plan.inputs.READERS`), the load required as solve
     requires ``--load``."""
     from bearingload.errors import MissingError
+    from bearingload.plan.case import LOAD_NEEDED
     from bearingload.plan.inputs import quantity, read_inputs, text
     from bearingload.units import is_bare
 
     values = read_inputs(options)
     if values.get("load") is None:  # as solve requires --load
-        raise MissingError("load", "the radial load F_r; 0 with an axial load or a moment")
+        raise MissingError("load", LOAD_NEEDED)
     if bearing is not None:
         values["bearing"] = text(bearing, "bearing")
     bare = {

@@ -52,6 +52,8 @@ DYNAMICS_PARAMS = ("ball_density", "quasi_static")
 OIL_PARAMS = ("oil", "viscosity_40", "viscosity_100", "viscosity_index", "temperature")
 #: The options that feed only the lives.
 LIFE_PARAMS = ("dynamic_rating", "rotating", *SERVICE_PARAMS)
+#: What a case without a load misses (the load is required; F_r may be 0 beside others).
+LOAD_NEEDED = "the radial load F_r; 0 with an axial load or a moment"
 #: The combined-load options, in the order a refusal names the first one given.
 COMBINED_PARAMS = LOAD_PARAMS + TILT_PARAMS + LIFE_PARAMS
 #: Why sweep and table refuse the mounting options (solve and batch take them).
