@@ -72,7 +72,7 @@ class Case:
             validate.positive("load", load, "N"),
             validate.positive("stiffness", stiffness, "N/mm^m"),
             validate.finite("clearance", clearance),
-            np.mod(validate.finite("cage_angle", cage_angle), 360.0),
+            validate.cage_angle(cage_angle),
             validate.exponent(exponent),
         )
         shape = broadcast_shape(dict(zip(INPUTS, arrays, strict=True)))

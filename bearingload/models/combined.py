@@ -585,7 +585,7 @@ def solve_combined(
     mm = validate.finite("moment", 0.0 if moment is None else moment)
     mc = validate.finite("moment_cross", moment_cross)
     tilt_deg = validate.finite("misalignment", 0.0 if misalignment is None else misalignment)
-    cage = np.mod(validate.finite("cage_angle", cage_angle), 360.0)
+    cage = validate.cage_angle(cage_angle)
     e = validate.positive("modulus", modulus, "MPa")
     nu = validate.finite("poisson", poisson)
     k_given = None if stiffness is None else validate.positive("stiffness", stiffness, "N/mm^1.5")

@@ -120,7 +120,7 @@ def ring_forces(
     xs, ys = validate.finite("x", x), validate.finite("y", y)
     kk = validate.positive("stiffness", stiffness, "N/mm^m")
     e = validate.finite("clearance", clearance) / 2.0
-    phi1 = np.mod(validate.finite("cage_angle", cage_angle), 360.0)
+    phi1 = validate.cage_angle(cage_angle)
     m = validate.exponent(exponent)
     shape = validate.broadcast_shape(
         {"x": xs, "y": ys, "stiffness": kk, "clearance": e, "cage_angle": phi1, "exponent": m}
