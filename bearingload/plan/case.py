@@ -52,6 +52,8 @@ DYNAMICS_PARAMS = ("ball_density", "quasi_static")
 OIL_PARAMS = ("oil", "viscosity_40", "viscosity_100", "viscosity_index", "temperature")
 #: The options that feed only the lives.
 LIFE_PARAMS = ("dynamic_rating", "rotating", *SERVICE_PARAMS)
+#: The radial load's rule: a negative one is refused by it as typed (0: by the radial engine).
+LOAD_RULE = "greater than 0 N, or 0 with an axial load or a moment"
 #: What a case without a load misses (the load is required; F_r may be 0 beside others).
 LOAD_NEEDED = "the radial load F_r; 0 with an axial load or a moment"
 #: The combined-load options, in the order a refusal names the first one given.
