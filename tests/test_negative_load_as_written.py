@@ -44,3 +44,13 @@ def test_a_load_of_0_is_refused_only_without_an_axial_load():
     assert analyse("6205", load=0, axial_load="300N").engine == "combined"
     with pytest.raises(InputError, match="must be greater than 0 N"):
         analyse("6205", load=0)
+
+
+def test_a_negative_preload_is_refused_as_written(tmp_path):
+    """A pair's preload in a '[kN]' column (or -0.1kN on the command line): as written too."""
+    path = tmp_path / "pairs.csv"
+    path.write_text("bearing,load,axial_load,preload [kN]\n7205BDB,1kN,100N,-1\n", encoding="utf-8")
+    out = invoke("batch", str(path), "--format", "csv")
+    assert "Skipped: row 2: preload: must be 0 N or more (got -1 kN)" in out.stderr
+    err = invoke("solve", "7205BDB", "-F", "1kN", "--preload=-0.1kN").stderr
+    assert err.strip().endswith("must be 0 N or more (got -0.1 kN)")
