@@ -59,3 +59,16 @@ def test_the_library_solvers_reduce_the_cage_angle():
         9, 1000.0, 10.0, ball_diameter=7.938, pitch_diameter=38.5, cage_angle=-1e-320
     )
     assert combined.cage_angle == 0.0
+
+
+def test_the_tables_take_the_cage_angle_within_one_turn():
+    """table k's header and json: -1e-320 and -0 are a ball under the load (0°, z = 1 kept,
+    which needs its ball on the load line), -10 is 350° as solve gives it."""
+    for angle in ("-1e-320", "-0"):
+        text = invoke("table", "k", f"--cage-angle={angle}", "--z-max", "3").stdout
+        assert "a ball under the load" in text.splitlines()[0]
+        assert [line.split()[0] for line in text.splitlines()[4:7]] == ["1", "2", "3"]
+        doc = invoke("table", "k", f"--cage-angle={angle}", "--z-max", "3", "--format", "json")
+        assert '"cage_angle": -0.0' not in doc.stdout and '"cage_angle": 0.0' in doc.stdout
+    head = invoke("table", "k", "--cage-angle=-10", "--z-max", "3").stdout.splitlines()[0]
+    assert "cage angle 350°" in head
