@@ -133,6 +133,12 @@ class ConvergenceError(BearingloadError, ArithmeticError):
         Largest relative residual left when the solver gave up. [-]
     cases : dict
         The input values of the failing cases (arrays), keyed by parameter name.
+    units : dict or None
+        The unit of each input's values in ``cases``.
+    typed : dict or None
+        Of an input whose failing cases all have the value the user gave it with a unit, the
+        text as given (``"0.1kN"``), which the message writes instead of the number in its
+        unit (``cases`` keeps the number).
     """
 
     def __init__(
@@ -143,6 +149,7 @@ class ConvergenceError(BearingloadError, ArithmeticError):
         cases: dict[str, Any],
         units: dict[str, str] | None = None,
         way_out: str | None = None,
+        typed: dict[str, str] | None = None,
     ) -> None:
         self.solver = solver
         self.iterations = iterations
@@ -150,11 +157,12 @@ class ConvergenceError(BearingloadError, ArithmeticError):
         self.cases = cases
         self.units = units
         self.way_out = way_out
+        self.typed = typed
         import numpy as np  # here: importing the errors must stay light (no numpy)
 
         count = max((int(np.size(v)) for v in cases.values()), default=1)
         what = "" if not cases else " for " + ("the case " if count == 1 else f"{count} cases: ")
-        what += format_cases(cases, units)
+        what += format_cases(cases, units, typed)
         super().__init__(
             f"{solver} did not converge after {iterations} iterations "
             f"(relative residual {residual:.3g}){what}"
@@ -164,7 +172,13 @@ class ConvergenceError(BearingloadError, ArithmeticError):
     def with_way_out(self, way_out: str) -> ConvergenceError:
         """The same failure with what the user can do instead."""
         return ConvergenceError(
-            self.solver, self.iterations, self.residual, self.cases, self.units, way_out
+            self.solver,
+            self.iterations,
+            self.residual,
+            self.cases,
+            self.units,
+            way_out,
+            self.typed,
         )
 
 
@@ -172,11 +186,16 @@ class ConvergenceError(BearingloadError, ArithmeticError):
 SHOWN_VALUES = 4
 
 
-def format_cases(cases: dict[str, Any], units: dict[str, str] | None = None) -> str:
+def format_cases(
+    cases: dict[str, Any],
+    units: dict[str, str] | None = None,
+    typed: dict[str, str] | None = None,
+) -> str:
     """``name = value unit, ...`` of the inputs of some cases, for a message.
 
     Values are written with 6 significant digits (no ``array(...)``); of several cases, the
-    first :data:`SHOWN_VALUES` and how many there are (one value where all are equal).
+    first :data:`SHOWN_VALUES` and how many there are (one value where all are equal). An input
+    in ``typed`` is written as that text (as the user gave it: ``load = 0.1kN``).
 
     >>> import numpy as np
     >>> format_cases({"balls": 8, "load": np.array([1.0, 2.5e-7]), "clearance": np.float64(0.02)},
@@ -184,12 +203,18 @@ def format_cases(cases: dict[str, Any], units: dict[str, str] | None = None) -> 
     'balls = 8, load = 1 and 2.5e-07 N, clearance = 0.02 mm'
     >>> format_cases({"load": np.arange(6.0)}, {"load": "N"})
     'load = 0, 1, 2, 3, ... (6 values) N'
+    >>> format_cases({"load": 100.0, "speed": 3000.0}, {"load": "N", "speed": "rpm"},
+    ...              {"load": "0.1kN"})
+    'load = 0.1kN, speed = 3000 rpm'
     """
     import numpy as np
 
-    units = units or {}
+    units, typed = units or {}, typed or {}
     parts = []
     for name, value in cases.items():
+        if name in typed:
+            parts.append(f"{name} = {typed[name]}")
+            continue
         flat = np.asarray(value).reshape(-1)
         if flat.size > 1 and np.all(flat == flat[0]):
             flat = flat[:1]  # the same value for every case: once

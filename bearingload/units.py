@@ -181,6 +181,20 @@ def is_bare(text: object) -> bool:
     return match is not None and match.group(2) == ""
 
 
+def as_written(text: object, kind: str) -> str:
+    """A quantity as the user wrote it, for a message: its number and unit one space apart
+    (``-1kN`` and a ``-1`` in a ``[kN]`` column of a batch file: ``-1 kN``); a bare number with
+    the unit it is read in (``-1``: ``-1 N``); a text that is no number as it is.
+
+    >>> as_written("-1kN", "force"), as_written(" -1 ", "force"), as_written(2.5, "length")
+    ('-1 kN', '-1 N', '2.5 mm')
+    """
+    match = _NUMBER.match(str(text))
+    if match is None:
+        return str(text).strip()
+    return f"{match.group(1)} {match.group(2) or BASE_UNIT[kind]}"
+
+
 def _canonical(unit: str) -> str:
     return unit.replace(" ", "").replace("**", "^").replace("(3/2)", "3/2")
 

@@ -46,6 +46,29 @@ def finite(name: str, value: object) -> np.ndarray:
     return arr
 
 
+def cage_angle(value: object, name: str = "cage_angle") -> np.ndarray:
+    """Return a cage angle [°] as a float array (:func:`finite`) reduced to [0, 360)
+    (:func:`reduced_angle`)."""
+    return np.asarray(reduced_angle(finite(name, value)))
+
+
+def reduced_angle(angle: Any) -> Any:
+    """An angle [°] (a float or an array) reduced to [0, 360): ``np.mod`` and ``%`` leave 360
+    for a negative angle within rounding of 0 (-1e-320, -1e-17: 360 - 1e-17 is 360 in a
+    double), which is 0 here, as -0 is 0.
+
+    >>> reduced_angle(-1e-320), reduced_angle(-0.0), reduced_angle(-10.0)
+    (0.0, 0.0, 350.0)
+    >>> reduced_angle(np.array([-1e-17, 725.0])).tolist()
+    [0.0, 5.0]
+    """
+    if type(angle) is float:  # one case: no array machinery
+        reduced = angle % 360.0
+        return (reduced if reduced < 360.0 else 0.0) + 0.0
+    reduced = np.mod(angle, 360.0)
+    return np.where(reduced < 360.0, reduced, 0.0) + 0.0  # (+ 0.0: -0 is 0)
+
+
 def plain(value: object) -> float | None:
     """One plain Python number (``float`` or ``int``, not a bool) that is finite, as a float;
     None for anything else, which the array checks then take (and refuse with the reason). Each

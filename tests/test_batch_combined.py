@@ -103,7 +103,10 @@ def test_bad_rows_are_named_and_the_others_solved():
     assert named == [f"row {i}" for i in range(2, 9)]
     assert "'sideways' is not one of inner, outer" in out.stderr
     assert "NU206 is a roller bearing" in out.stderr
-    assert "load: must be 0 N or more" in out.stderr
+    assert (
+        "load: must be greater than 0 N, or 0 with an axial load or a moment (got -5 N)"
+        in out.stderr
+    )
     assert "must be within ±2°" in out.stderr
     assert "not both" in out.stderr
     assert "needs a bearing or its ball geometry" in out.stderr

@@ -47,3 +47,19 @@ def test_a_failure_at_speed_gives_the_units_of_its_inputs():
     with pytest.raises(ConvergenceError) as info:
         high_speed._check(state, np.array([551]), flat)
     assert info.value.units["radial_load"] == "N" and info.value.units["speed"] == "rpm"
+
+
+def test_an_input_given_with_a_unit_is_written_as_typed():
+    """A failure writes a load given as 0.1kN as typed where every failing case has that load;
+    its cases keep the number in N."""
+    case = Case.of({"load": 100.0, "cage_angle": 15.0}, typed={"load": "0.1kN"})
+    out = in_case_terms(_failure([15.0]), case)
+    assert out.typed == {"load": "0.1kN"} and out.cases["load"] == [100.0]
+    assert "the case load = 0.1kN, cage_angle = 15 °" in str(out)
+
+
+def test_a_swept_input_keeps_its_numbers():
+    """Where the failing cases' values are not the one typed, they are written as numbers."""
+    case = Case.of({"load": 100.0}, typed={"load": "0.1kN", "cage_angle": "0.1rad"})
+    out = in_case_terms(_failure([15.0]), case, cage_given=False)
+    assert out.typed == {"load": "0.1kN"} and "cage_angle = 15 °" in str(out)

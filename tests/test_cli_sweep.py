@@ -135,6 +135,22 @@ def test_errors_are_one_line_exit_2(capsys, args, message):
     assert err.startswith(message) and err.count("\n") == 1
 
 
+@pytest.mark.parametrize(
+    ("args", "kurochkin"),
+    [(("6205", "-A", "100N"), False), (("-z", "9", "-K", "1e5"), False), (("-z", "7"), True)],
+)
+def test_a_sweep_without_a_load_says_the_radial_load_is_missing(capsys, args, kurochkin):
+    """What is missing is the radial load (0 beside a thrust); Kurochkin's dimensionless mode,
+    which takes no load, is offered only to a ring given by its balls alone."""
+    code, out, err = run_entry(capsys, "sweep", *args)
+    assert code == 2 and out == "" and err.count("\n") == 1
+    assert err.startswith(
+        "Error: Missing option '--load' / '-F' (the radial load F_r; 0 with an axial load or a "
+        "moment"
+    )
+    assert ("--kurochkin-T" in err) is kurochkin
+
+
 def test_error_leaves_no_output_file(capsys, tmp_path):
     target = tmp_path / "s.csv"
     code, _, err = run_entry(capsys, *CASE, "--steps", "0", "-o", str(target))

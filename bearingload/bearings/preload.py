@@ -69,7 +69,7 @@ def parse_preload(value: Any, *, parameter: str = "preload") -> float | str:
     InputError
         (``parameter``) neither a class letter nor a force of 0 N or more.
     """
-    from bearingload.units import parse_quantity
+    from bearingload.units import as_written, parse_quantity
 
     if isinstance(value, str) and _LETTER.match(value.strip().upper()):
         return value.strip().upper()
@@ -79,7 +79,7 @@ def parse_preload(value: Any, *, parameter: str = "preload") -> float | str:
         way = f"or a preload class: {' | '.join(CLASSES)}"
         raise InputError(parameter, exc.problem, way_out=way, reason=exc.reason) from None
     if not force >= 0:
-        raise InputError(parameter, f"must be 0 N or more (got {force:g} N)")
+        raise InputError(parameter, f"must be 0 N or more (got {as_written(value, 'force')})")
     return force
 
 

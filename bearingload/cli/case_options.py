@@ -21,18 +21,20 @@ import click
 
 from bearingload.cli.options import (
     BARE,
+    TYPED,
     CageAngle,
     Exponent,
     LibraryArgument,
     LibraryOption,
     PreloadValue,
     Quantity,
+    note_typed,
     units_help,
     usage_error,
 )
 from bearingload.constants import CONTAMINATION_LEVELS
 from bearingload.errors import InputError
-from bearingload.plan.case import AT_REST, CASE_FIELDS, Case
+from bearingload.plan.case import AT_REST, CASE_FIELDS, LOAD_RULE, Case
 from bearingload.plan.inputs import LIBRARY_NAMES
 from bearingload.units import plausible_ranges_help
 
@@ -58,9 +60,11 @@ class Clearance(click.ParamType):
         if isinstance(value, ClearanceSpec):
             return value
         try:
-            return parse_clearance(value)
+            spec = parse_clearance(value)
         except InputError as exc:
             self.fail(exc.message, param, ctx)
+        note_typed(value, param, ctx)  # (a class: a failure names its length in mm)
+        return spec
 
 
 class Temperature(click.ParamType):
@@ -132,7 +136,7 @@ DECLARATIONS: dict[str, tuple[tuple[str, ...], dict[str, Any]]] = {
     "load": _option(
         "--load",
         "-F",
-        type=Quantity("force"),
+        type=Quantity("force", not_negative=LOAD_RULE),
         help=f"Radial load F_r > 0 (>= 0 with an axial load or a moment). Units: {_FORCE} "
         "(bare number: N).",
     ),
@@ -519,11 +523,12 @@ def case_options(
 def read_case(values: dict[str, Any]) -> Case:
     """The case of click's converted ``values`` (parameter name -> value; an omitted option
     None), with the options given on the command line (not left at a default) and those typed
-    as a bare number."""
+    as a bare number or with a unit (its text)."""
     ctx = click.get_current_context(silent=True)
     default = (None, click.core.ParameterSource.DEFAULT)
     given = frozenset(
         name for name in values if ctx is not None and ctx.get_parameter_source(name) not in default
     )
     bare = frozenset(ctx.meta.get(BARE, ())) if ctx is not None else frozenset()
-    return Case.of(values, given=given, bare=bare)
+    typed = dict(ctx.meta.get(TYPED, {})) if ctx is not None else {}
+    return Case.of(values, given=given, bare=bare, typed=typed)

@@ -9,20 +9,38 @@ from typing import Any
 import click
 
 from bearingload.errors import BearingloadError, InputError
-from bearingload.units import BASE_UNIT, UNITS, is_bare, parse_cage_angle, parse_quantity
+from bearingload.units import (
+    BASE_UNIT,
+    UNITS,
+    as_written,
+    is_bare,
+    parse_cage_angle,
+    parse_quantity,
+)
 
 CONTEXT = {"help_option_names": ["-h", "--help"], "max_content_width": 100}
 #: Key of click's context meta: the names of the options given a bare number (no unit).
 BARE = "bearingload.bare"
+#: Key of click's context meta: the text of each option given a number with a unit ("0.1kN").
+TYPED = "bearingload.typed"
+
+
+def note_typed(value: Any, param: click.Parameter | None, ctx: click.Context | None) -> None:
+    """Keep the text of an option given a number with a unit, which a failure names it by."""
+    if ctx is not None and param is not None and isinstance(value, str) and not is_bare(value):
+        ctx.meta.setdefault(TYPED, {})[param.name] = value.strip()
 
 
 class Quantity(click.ParamType):
     """A number with an optional unit suffix, converted to the package's internal unit."""
 
-    def __init__(self, kind: str, *, positive: bool = False, at_zero: str = "") -> None:
+    def __init__(
+        self, kind: str, *, positive: bool = False, at_zero: str = "", not_negative: str = ""
+    ) -> None:
         self.kind = kind
         self.positive = positive
         self.at_zero = at_zero  # what a user giving 0 means, and how to ask for it
+        self.not_negative = not_negative  # the rule a negative value breaks (as the reader's)
         self.name = f"{kind} [{BASE_UNIT[kind]}]"
 
     def convert(
@@ -36,12 +54,17 @@ class Quantity(click.ParamType):
             self.fail(exc.message, param, ctx)
         if ctx is not None and param is not None and is_bare(value):
             ctx.meta.setdefault(BARE, set()).add(param.name)  # judged against the bearing later
+        note_typed(value, param, ctx)
         if self.kind == "stiffness":
             return str(value)  # converted with the exponent by the command (stiffness_value)
         if self.positive and not number > 0:
             hint = f": {option_message(self.at_zero)}" if self.at_zero and number == 0 else ""
             self.fail(f"must be greater than 0 {BASE_UNIT[self.kind]} (got {value}){hint}", param,
                       ctx)  # fmt: skip
+        if self.not_negative and number < 0:
+            self.fail(
+                f"must be {self.not_negative} (got {as_written(value, self.kind)})", param, ctx
+            )
         return number
 
     def get_metavar(self, param: click.Parameter, ctx: click.Context | None = None) -> str:
@@ -61,9 +84,11 @@ class PreloadValue(click.ParamType):
         from bearingload.bearings.preload import parse_preload
 
         try:
-            return parse_preload(value, parameter=param.name if param else "preload")
+            preload = parse_preload(value, parameter=param.name if param else "preload")
         except InputError as exc:
             self.fail(exc.message, param, ctx)
+        note_typed(value, param, ctx)
+        return preload
 
 
 class CageAngle(click.ParamType):
@@ -77,9 +102,11 @@ class CageAngle(click.ParamType):
         if value == "half" or isinstance(value, float):
             return value
         try:
-            return parse_cage_angle(value)
+            angle = parse_cage_angle(value)
         except InputError as exc:
             self.fail(exc.message, param, ctx)
+        note_typed(value, param, ctx)
+        return angle
 
 
 def units_help(kind: str) -> str:
@@ -246,15 +273,17 @@ def library_errors(func: Callable[..., Any]) -> Callable[..., Any]:
 
 def _failure(exc: BearingloadError) -> str:
     """The line of a failure of the computation: a ConvergenceError names its cases' inputs by
-    the options the user types (``--load = 1000 N``)."""
+    the options the user types, each value as typed (``--load = 1kN``, ``--speed = 3000 rpm``)."""
     from bearingload.errors import ConvergenceError
 
     if not isinstance(exc, ConvergenceError):
         return option_message(str(exc))
     cases = {option_name(k): v for k, v in exc.cases.items()}
     units = {option_name(k): u for k, u in (exc.units or {}).items()}
+    typed = {option_name(k): t for k, t in (exc.typed or {}).items()}
     way = None if exc.way_out is None else option_message(exc.way_out)
-    return str(ConvergenceError(exc.solver, exc.iterations, exc.residual, cases, units, way))
+    failure = ConvergenceError(exc.solver, exc.iterations, exc.residual, cases, units, way, typed)
+    return str(failure)
 
 
 class Exponent(click.ParamType):

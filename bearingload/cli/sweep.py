@@ -6,10 +6,23 @@ import click
 
 from bearingload.bearings.mounting import MOUNTING_PARAMS
 from bearingload.cli.case_options import case_options
-from bearingload.cli.options import CONTEXT, LibraryOption, emit, library_errors, output_options
+from bearingload.cli.options import (
+    CONTEXT,
+    LibraryOption,
+    emit,
+    library_errors,
+    output_options,
+    usage_error,
+)
 from bearingload.cli.plot import check_plot, save_plot
 from bearingload.plan.bearing import refuse_range
-from bearingload.plan.case import COMBINED_PARAMS, MOUNTING_REFUSAL, SERVICE_PARAMS, Case
+from bearingload.plan.case import (
+    COMBINED_PARAMS,
+    LOAD_NEEDED,
+    MOUNTING_REFUSAL,
+    SERVICE_PARAMS,
+    Case,
+)
 from bearingload.plan.sweep import Swept, sweep_case
 
 #: The case options the dimensionless mode refuses (P = K = 1, the gap from T).
@@ -132,7 +145,7 @@ def sweep(
         _kurochkin(case, kurochkin_t, steps, plot, fmt, output)
         return
     if case.load is None:
-        raise click.UsageError("Missing option '--load' / '-F' (or give --kurochkin-T).")
+        _missing_load(case)
     refuse_range(case, "sweep")
     if plot is not None and case.as_pair() is not None:
         raise click.UsageError(
@@ -171,6 +184,16 @@ def _emit(swept: Swept, plot: str | None, fmt: str, output: str | None) -> None:
         draw = plots.combined_sweep_figure if swept.engine == "combined" else plots.sweep_figure
         save_plot(lambda: draw(result, swept.designation), plot)
     emit(text, output)
+
+
+def _missing_load(case: Case) -> None:
+    """Refuse a sweep without a load, saying what is missing; a ring given by its balls alone
+    may mean Kurochkin's dimensionless mode, which takes no load."""
+    from bearingload.errors import MissingError
+
+    balls_only = case.given <= {"balls"}
+    mode = "; or 'kurochkin_t' for Kurochkin's dimensionless mode" if balls_only else ""
+    raise usage_error(MissingError("load", LOAD_NEEDED + mode))
 
 
 def _kurochkin(

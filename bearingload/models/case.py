@@ -78,7 +78,7 @@ class Case:
             cage_angle=cage_angle,
             exponent=exponent,
         )
-        arrays[4] = np.mod(arrays[4], 360.0)
+        arrays[4] = validate.cage_angle(arrays[4])
         shape = broadcast_shape(dict(zip(INPUTS, arrays, strict=True)))
         balls, load, stiffness, clearance, cage_angle, exponent = (scalar_out(a) for a in arrays)
         return cls(balls, load, stiffness, clearance, cage_angle, exponent, shape)

@@ -300,10 +300,16 @@ def groove_geometry(
     >>> round(float(A), 4), round(float(a0), 4), round(float(sa), 5)
     (0.575, 7.5614, 0.15133)
     """
-    dw = validate.positive("ball_diameter", ball_diameter, "mm")
-    dm = validate.positive("pitch_diameter", pitch_diameter, "mm")
-    fi, fo, gr = validate.each_finite(f_i=f_i, f_o=f_o, clearance=clearance)
-    geo = ring_geometry(dw, dm, fi, fo, gr)
+    dw, dm, gr = validate.each_finite(  # refused in solve_combined's order, by element
+        ball_diameter=ball_diameter, pitch_diameter=pitch_diameter, clearance=clearance
+    )
+    fi, fo = validate.conformity("f_i", f_i), validate.conformity("f_o", f_o)
+    named = {"ball_diameter": dw, "pitch_diameter": dm, "clearance": gr}
+
+    def at(name: str, bad: Any, unit: str = "") -> str:  # the input's element of a bad case
+        return validate.element_at(named[name], bad, np.shape(bad), unit)
+
+    geo = ring_geometry(dw, dm, fi, fo, gr, at=at)
     play = 2.0 * geo.A * np.sin(geo.alpha0)
     return (
         numerics.scalar_out(geo.A),
@@ -351,7 +357,10 @@ def _refuse_geometry(dw: Any, dm: Any, fi: Any, fo: Any, out: Any, at: Callable[
     (:func:`ring_geometry`) and, by ``at``, its element; ``out``: where the clearance is too
     large."""
     for name, value in (("ball_diameter", dw), ("pitch_diameter", dm)):
-        validate.positive(name, value, "mm")
+        try:
+            validate.positive(name, value, "mm")
+        except InputError as exc:  # its element as given (``at``), not of the cases broadcast
+            raise InputError(name, exc.problem, element=at(name, value <= 0, "mm")) from None
     if np.any(dw >= dm):
         raise InputError(
             "ball_diameter",
@@ -576,7 +585,7 @@ def solve_combined(
     mm = validate.finite("moment", 0.0 if moment is None else moment)
     mc = validate.finite("moment_cross", moment_cross)
     tilt_deg = validate.finite("misalignment", 0.0 if misalignment is None else misalignment)
-    cage = np.mod(validate.finite("cage_angle", cage_angle), 360.0)
+    cage = validate.cage_angle(cage_angle)
     e = validate.positive("modulus", modulus, "MPa")
     nu = validate.finite("poisson", poisson)
     k_given = None if stiffness is None else validate.positive("stiffness", stiffness, "N/mm^1.5")
@@ -771,11 +780,11 @@ def _refuse_loads(
             element=at("radial_load", f_ref <= 0, "N"),
         )
     sizes = lambda: load_sizes(fr, fa, mm, mc, geo.R_i)  # noqa: E731
-    check_scale(f_ref, k_ref, geo.A, angular, sizes, status == _core.SetupStatus.TOO_LIGHT)
+    check_scale(f_ref, k_ref, geo.A, angular, sizes, status == _core.SetupStatus.TOO_LIGHT, at)
     if angular:
         moment = np.hypot(mm, mc) / geo.R_i
         _check_angular_scale(
-            f_ref, k_ref, geo.A, (fr, fa, moment), status == _core.SetupStatus.TOO_HEAVY
+            f_ref, k_ref, geo.A, (fr, fa, moment), status == _core.SetupStatus.TOO_HEAVY, at
         )
 
 
@@ -1141,13 +1150,15 @@ def check_scale(
     angular: bool = False,
     sizes: Callable[[], dict[str, np.ndarray]] | None = None,
     flagged: Any = False,
+    at: Callable[..., str] = _no_element,
 ) -> None:
     """Refuse loads so small against the groove geometry that the scaled problem loses its
     digits (the radial solver, without an axial load, takes any ratio; an angular-contact
     bearing, ``angular``, has no other solver: the message gives the smallest load taken).
     ``sizes`` (called on a refusal: :func:`load_sizes`, by parameter [N]) name the parameter of
     the largest load of the first case refused (the first named among equals); without them,
-    ``radial_load``. ``flagged``: the cases the compiled core judged too light (its scale by
+    ``radial_load``; ``at`` names its element (:func:`ring_geometry`: ``radial_load[3] =
+    1e-09 N``). ``flagged``: the cases the compiled core judged too light (its scale by
     libm's pow may differ from numpy's in the last bit at the limit: the core decides)."""
     with np.errstate(over="ignore", divide="ignore"):
         scale = (f_ref / k_ref) ** (2.0 / 3.0)
@@ -1160,17 +1171,20 @@ def check_scale(
         )
     a = big_a if np.shape(big_a) == scale.shape else np.broadcast_to(big_a, scale.shape)
     bad = (a / scale > GEOMETRY_RATIO_MAX) | flagged
-    if bad.any():
-        f_min = float(np.max(k_ref * (a / GEOMETRY_RATIO_MAX) ** 1.5))
+    if bad.any():  # the first case refused: its loads, its least load, its element
+        i = int(np.argmax(bad))
+        f_min = float(np.broadcast_to(k_ref * (a / GEOMETRY_RATIO_MAX) ** 1.5, bad.shape)[i])
         step = 10.0 ** (math.floor(math.log10(f_min)) - 1)  # shown to 2 digits, rounded up
         f_min = math.ceil(f_min / step * (1 - 1e-12)) * step
+        name = _largest_load(None if sizes is None else sizes(), i)
         raise InputError(
-            _largest_load(None if sizes is None else sizes(), int(np.argmax(bad))),
+            name,
             f"the loads are too small for the combined solver (the largest of F_r, |F_a| and "
-            f"M/R_i is {float(np.min(f_ref)):.3g} N; it takes at least {f_min:.2g} N for this "
+            f"M/R_i is {float(f_ref[i]):.3g} N; it takes at least {f_min:.2g} N for this "
             "bearing)",
             way_out=ANGULAR_NO_OTHER_SOLVER if angular else RADIAL_TAKES_ANY_LOAD,
             reason=TOO_LIGHT_ANGULAR if angular else TOO_LIGHT,
+            element=at(name, bad, INPUT_UNITS[name]),
         )
 
 
@@ -1222,10 +1236,11 @@ def _check_angular_scale(
     big_a: np.ndarray,
     loads: tuple[np.ndarray, ...],
     flagged: Any = False,
+    at: Callable[..., str] = _no_element,
 ) -> None:
     """Refuse loads so large against an angular-contact bearing's groove geometry A that its
     one-sided equilibrium is not solved reliably (see :data:`ANGULAR_RATIO_MIN`); ``flagged``:
-    the cases the compiled core judged so (as :func:`check_scale`)."""
+    the cases the compiled core judged so, ``at`` names the element (as :func:`check_scale`)."""
     a = big_a if np.shape(big_a) == f_ref.shape else np.broadcast_to(big_a, f_ref.shape)
     with np.errstate(over="ignore", divide="ignore"):
         bad = (a / (f_ref / k_ref) ** (2.0 / 3.0) < ANGULAR_RATIO_MIN) | flagged
@@ -1233,13 +1248,15 @@ def _check_angular_scale(
         i = int(np.argmax(bad))
         f_max = float(k_ref[i] * (a[i] / ANGULAR_RATIO_MIN) ** 1.5)
         which = int(np.argmax([np.broadcast_to(v, f_ref.shape)[i] for v in loads]))
+        name = ("radial_load", "axial_load", "moment")[which]
         raise InputError(
-            ("radial_load", "axial_load", "moment")[which],
+            name,
             f"too large for the angular-contact model: the largest of F_r, F_a and M/R_i is "
             f"{float(f_ref[i]):.4g} N; above {f_max:.3g} N on this bearing (a ball approach of "
             f"{1 / ANGULAR_RATIO_MIN:.0e} times the groove-centre distance A = "
             f"{float(a[i]):.4g} mm, the contact angles next to 90°, the groove edge) the "
             "one-sided equilibrium is not solved reliably and the loads are refused",
+            element=at(name, bad, INPUT_UNITS[name]),
         )
 
 

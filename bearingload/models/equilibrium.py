@@ -334,7 +334,7 @@ def solve(
     shape = inputs[0].shape
     z, f, kk, g, cage, m = (a.ravel() for a in inputs)
     # reduce in degrees (exact), so a huge angle keeps its position on the ring
-    phi1_deg = np.mod(cage, 360.0)
+    phi1_deg = validate.reduced_angle(cage)
     with np.errstate(all="ignore"):
         scale = (f / kk) ** (1.0 / m)  # approach of one ball carrying the whole load [mm]
         e_hat = (g / 2.0) / scale
@@ -391,7 +391,7 @@ def _solve_one(plain: tuple[Any, ...], tol: float) -> dict[str, Any] | None:
     """One case through the core (its kernel, a batch of one): the fields of its ``OneCase``,
     or None where it is not proven (the vectorised path names the case)."""
     z, f, k, g, cage, m, _, e_hat = plain
-    phi1_deg = cage % 360.0
+    phi1_deg = validate.reduced_angle(cage)
     pitch_deg = 360.0 / z
     frac = (phi1_deg % pitch_deg) / pitch_deg
     mirror = (math.fmod(abs(cage), 360.0) % pitch_deg) / pitch_deg

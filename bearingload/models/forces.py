@@ -122,7 +122,7 @@ def ring_forces(
     kk, g, cage, m = checked(
         stiffness=stiffness, clearance=clearance, cage_angle=cage_angle, exponent=exponent
     )
-    e, phi1 = g / 2.0, np.mod(cage, 360.0)
+    e, phi1 = g / 2.0, validate.cage_angle(cage)
     shape = validate.broadcast_shape(
         {"x": xs, "y": ys, "stiffness": kk, "clearance": e, "cage_angle": phi1, "exponent": m}
     )

@@ -336,7 +336,7 @@ def solve_pair(
         c = dict(zip(named, np.array(list(named.values()))[:, None], strict=True))
     else:
         shape, c = _checked(kind, named)
-    c["cage_angle"] = np.mod(c["cage_angle"], 360.0)
+    c["cage_angle"] = validate.cage_angle(c["cage_angle"])
     narrow = c["width"] < c["ball_diameter"]
     if narrow.any():  # no ring holds its balls so; the shaft's tilt then has no lever
         i = int(np.argmax(narrow))

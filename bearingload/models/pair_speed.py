@@ -44,6 +44,7 @@ from typing import Any
 
 import numpy as np
 
+from bearingload import validate
 from bearingload.constants import STEEL_MODULUS
 from bearingload.errors import ConvergenceError, InputError
 from bearingload.models import combined as _comb
@@ -208,7 +209,7 @@ def solve_pair_high_speed(
                  pitch_diameter=pitch_diameter, f_i=f_i, f_o=f_o, modulus=modulus,
                  poisson=poisson, ball_density=density)  # fmt: skip
     flat = dict(zip(given, _hs.flat_columns(shape, *given.values()), strict=True))
-    flat["cage_angle"] = np.mod(flat["cage_angle"], 360.0)
+    flat["cage_angle"] = validate.cage_angle(flat["cage_angle"])
     sh, geo, v_static = _setup(static, flat, shape)
     with np.errstate(all="ignore"):
         v, st, its, rest = _solve(sh, v_static, flat, static.arrangement != "DT")

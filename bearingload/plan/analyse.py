@@ -93,12 +93,13 @@ def read_arguments(
     by its reader (:data:`bearingload.plan.inputs.READERS`), the load required as solve
     requires ``--load``."""
     from bearingload.errors import MissingError
+    from bearingload.plan.case import LOAD_NEEDED
     from bearingload.plan.inputs import quantity, read_inputs, text
     from bearingload.units import is_bare
 
     values = read_inputs(options)
     if values.get("load") is None:  # as solve requires --load
-        raise MissingError("load", "the radial load F_r; 0 with an axial load or a moment")
+        raise MissingError("load", LOAD_NEEDED)
     if bearing is not None:
         values["bearing"] = text(bearing, "bearing")
     bare = {
@@ -114,8 +115,10 @@ def _analyse(
 ) -> Solution:
     from bearingload.plan.case import Case
     from bearingload.plan.solve import solve_case
+    from bearingload.units import is_bare
 
     values, bare, life = read_arguments(bearing, revolutions, options)
     given = {n for n, v in values.items() if v is not None}
-    case = Case.of(values, given=given, bare=bare)
+    typed = {n: v.strip() for n, v in options.items() if isinstance(v, str) and not is_bare(v)}
+    case = Case.of(values, given=given, bare=bare, typed=typed)
     return solve_case(case, method=method, revolutions=life)

@@ -52,6 +52,10 @@ DYNAMICS_PARAMS = ("ball_density", "quasi_static")
 OIL_PARAMS = ("oil", "viscosity_40", "viscosity_100", "viscosity_index", "temperature")
 #: The options that feed only the lives.
 LIFE_PARAMS = ("dynamic_rating", "rotating", *SERVICE_PARAMS)
+#: The radial load's rule: a negative one is refused by it as typed (0: by the radial engine).
+LOAD_RULE = "greater than 0 N, or 0 with an axial load or a moment"
+#: What a case without a load misses (the load is required; F_r may be 0 beside others).
+LOAD_NEEDED = "the radial load F_r; 0 with an axial load or a moment"
 #: The combined-load options, in the order a refusal names the first one given.
 COMBINED_PARAMS = LOAD_PARAMS + TILT_PARAMS + LIFE_PARAMS
 #: Why sweep and table refuse the mounting options (solve and batch take them).
@@ -135,6 +139,7 @@ class Case:
     pressure_viscosity: float | None = None
     given: frozenset[str] = frozenset()
     bare: frozenset[str] = frozenset()  # options typed as a bare number (no unit)
+    typed: tuple[tuple[str, str], ...] = ()  # (name, text) of the inputs given with a unit
 
     @classmethod
     def of(
@@ -142,16 +147,19 @@ class Case:
         values: dict[str, Any],
         given: Collection[str] | None = None,
         bare: Collection[str] = (),
+        typed: dict[str, str] | None = None,
     ) -> Case:
         """The case of converted ``values`` (parameter name -> value; None: not given);
         ``given`` names the inputs given (default: those with a value), ``bare`` those typed as
-        a bare number (no unit)."""
+        a bare number (no unit), ``typed`` the text of those given with a unit (``"0.1kN"``),
+        which a failure names them by."""
         named = frozenset(n for n, v in values.items() if v is not None)
         given = named if given is None else frozenset(given)
         values = {k: v for k, v in values.items() if v is not None}
         if "exponent" not in given:
             values.pop("exponent", None)
-        return cls(**values, given=given, bare=frozenset(bare))
+        texts = tuple(sorted((typed or {}).items()))
+        return cls(**values, given=given, bare=frozenset(bare), typed=texts)
 
     @property
     def radial_load(self) -> float:
@@ -402,4 +410,4 @@ def pair_of(
 
 #: The inputs of a :class:`Case` (its fields but the bookkeeping of what was given).
 #: (read from the class's annotations: the class is built at its first use, not at import)
-CASE_FIELDS = tuple(n for n in Case.__annotations__ if n not in ("given", "bare"))
+CASE_FIELDS = tuple(n for n in Case.__annotations__ if n not in ("given", "bare", "typed"))

@@ -61,8 +61,8 @@ def analyse_many(cases: Iterable[Mapping[str, Any]]) -> Many:
     --------
     >>> from bearingload import analyse_many
     >>> many = analyse_many([{"bearing": "6205", "load": "1kN"}, {"bearing": "6205", "load": -1e3}])
-    >>> many.rows, [round(float(q), 1) for q in many.values["q_max"]], str(many.errors[1])
-    ([0], [541.7], 'load: must be greater than 0 N (got -1000)')
+    >>> many.rows, [round(float(q), 1) for q in many.values["q_max"]], many.errors[1].parameter
+    ([0], [541.7], 'load')
     """
     if isinstance(cases, Mapping) or not isinstance(cases, Iterable):
         raise InputError(

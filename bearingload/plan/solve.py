@@ -101,22 +101,45 @@ def in_case_terms(exc: ConvergenceError, case: Case, cage_given: bool = True) ->
     argument_of`), those the user gave only (not the defaults the solver filled in), and, with
     ``cage_given``, the cage angle as given (``half``, or -10° that the
     solver reduced to 350°) where the cases were solved at that one cage angle (a sweep's cases
-    are solved at other cage angles than its case's: ``cage_given`` False keeps the solver's)."""
+    are solved at other cage angles than its case's: ``cage_given`` False keeps the solver's).
+    An input given with a unit is written as typed (``0.1kN``) where every failing case has
+    its value (:func:`typed_of`)."""
     import numpy as np
 
     from bearingload.plan.inputs import argument_of
 
     named = {argument_of(k): v for k, v in exc.cases.items()}
     # the inputs the user gave, none the solver filled in; a sweep's cage angle where it failed
-    typed = [k for k in named if k in case.given or (k == "cage_angle" and not cage_given)]
-    cases = {k: named[k] for k in typed or named}
+    kept = [k for k in named if k in case.given or (k == "cage_angle" and not cage_given)]
+    cases = {k: named[k] for k in kept or named}
     units = {argument_of(k): u for k, u in (exc.units or {}).items() if argument_of(k) in cases}
     cage = np.asarray(cases.get("cage_angle", []), dtype=float).reshape(-1)
     if cage_given and cage.size and np.all(cage == cage[0]):  # the case's own, as given
         cases["cage_angle"] = case.cage_angle
         if case.cage_angle == "half":
             units.pop("cage_angle", None)
-    return ConvergenceError(exc.solver, exc.iterations, exc.residual, cases, units, exc.way_out)
+    texts = typed_of(cases, case)
+    return ConvergenceError(
+        exc.solver, exc.iterations, exc.residual, cases, units, exc.way_out, texts or None
+    )
+
+
+def typed_of(cases: dict[str, Any], case: Case) -> dict[str, str]:
+    """Of the inputs of failing ``cases`` (by argument name), the text the user gave each with
+    a unit (``case.typed``) where every case has the value of that text (a sweep's other
+    values keep their numbers)."""
+    import numpy as np
+
+    texts = dict(case.typed)
+    out = {}
+    for name, values in cases.items():
+        given = getattr(case, name, None)
+        given = getattr(given, "length", given)  # a clearance: its length, or a class's None
+        if name not in texts or not isinstance(given, (int, float)):
+            continue
+        if np.all(np.asarray(values, dtype=float) == float(given)):
+            out[name] = texts[name]
+    return out
 
 
 def engine_of(

@@ -159,9 +159,17 @@ def _ring_conditions(case: Case, k_given: float | None) -> Any:
         case.radial_load,
         k,
         clearance_length(case.clearance),
-        case.cage_angle,
+        _cage(case),
         case.exponent_or(1.5),
     )
+
+
+def _cage(case: Case) -> float | str:
+    """The cage angle of the tables: ``half``, or the angle within one turn as the solvers take
+    it (:func:`bearingload.validate.reduced_angle`: -10 is 350°, -1e-320 and -0 are 0)."""
+    from bearingload.validate import reduced_angle
+
+    return "half" if case.cage_angle == "half" else float(reduced_angle(float(case.cage_angle)))
 
 
 def _bearing_conditions(case: Case, k_given: float | None) -> Any:
@@ -179,7 +187,7 @@ def _bearing_conditions(case: Case, k_given: float | None) -> Any:
             "'exponent' 10/9 with 'stiffness'",
         )
     check_exponent(resolved, case.exponent)
-    return for_bearing(resolved, case.radial_load, case.cage_angle)
+    return for_bearing(resolved, case.radial_load, _cage(case))
 
 
 def _life(case: Case, z_max: int | None, method: str | None, clearances: Any, spell: Any) -> Tabled:

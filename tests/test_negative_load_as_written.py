@@ -1,0 +1,56 @@
+"""A negative radial load is refused naming the value as the user wrote it (``-1 kN``, also a
+``-1`` in a ``[kN]`` column of a batch file), not converted to N (``-1000.0 N``), by the one
+rule of the command line, the library and batch (plan.case.LOAD_RULE)."""
+
+import pytest
+
+from bearingload import analyse
+from bearingload.errors import InputError
+
+from .cli_helpers import invoke, run_entry
+
+RULE = "must be greater than 0 N, or 0 with an axial load or a moment"
+
+
+@pytest.mark.parametrize(
+    ("text", "written"),
+    [
+        ("bearing,load [kN],axial_load [kN]\n6205,-1,0.1\n6205,1,0.1\n", "-1 kN"),
+        ("bearing,load,axial_load\n6205,-1kN,100N\n6205,1kN,100N\n", "-1 kN"),
+        ("bearing,load,axial_load\n6205,-5,100N\n6205,1kN,100N\n", "-5 N"),
+    ],
+)
+def test_batch_names_a_negative_load_as_written(tmp_path, text, written):
+    path = tmp_path / "cases.csv"
+    path.write_text(text, encoding="utf-8")
+    out = invoke("batch", str(path), "--format", "csv")
+    assert f"Skipped: row 2: load: {RULE} (got {written})" in out.stderr
+    assert "1000" not in out.stderr.splitlines()[0]
+
+
+def test_solve_and_analyse_name_a_negative_load_as_written(capsys):
+    code, _, err = run_entry(capsys, "solve", "6205", "-F", "-1kN")
+    assert code == 2 and f"'--load' / '-F': {RULE} (got -1 kN)" in err
+    with pytest.raises(InputError) as info:
+        analyse("6205", load="-1kN", axial_load="300N")
+    assert str(info.value) == f"load: {RULE} (got -1 kN)"
+    with pytest.raises(InputError) as info:
+        analyse("6205", load=-5)
+    assert str(info.value) == f"load: {RULE} (got -5 N)"
+
+
+def test_a_load_of_0_is_refused_only_without_an_axial_load():
+    """0 is the radial load of a pure thrust; alone it is refused by the radial engine."""
+    assert analyse("6205", load=0, axial_load="300N").engine == "combined"
+    with pytest.raises(InputError, match="must be greater than 0 N"):
+        analyse("6205", load=0)
+
+
+def test_a_negative_preload_is_refused_as_written(tmp_path):
+    """A pair's preload in a '[kN]' column (or -0.1kN on the command line): as written too."""
+    path = tmp_path / "pairs.csv"
+    path.write_text("bearing,load,axial_load,preload [kN]\n7205BDB,1kN,100N,-1\n", encoding="utf-8")
+    out = invoke("batch", str(path), "--format", "csv")
+    assert "Skipped: row 2: preload: must be 0 N or more (got -1 kN)" in out.stderr
+    err = invoke("solve", "7205BDB", "-F", "1kN", "--preload=-0.1kN").stderr
+    assert err.strip().endswith("must be 0 N or more (got -0.1 kN)")
