@@ -145,9 +145,10 @@ def resolve_bearing(
     if designation is not None and not isinstance(designation, str):
         designation = str(designation)  # 6205 read as "6205", as catalog.lookup reads it
     _check_inputs(modulus, stiffness, ball_diameter, pitch_diameter, poisson, clearance_pick)
-    mounting = Mounting(shaft_fit, housing_fit, shaft_bore, housing_diameter,
-                        inner_ring_temperature, outer_ring_temperature)  # fmt: skip
-    mounting = check_mounting(mounting)
+    seats = (shaft_fit, housing_fit, shaft_bore, housing_diameter, inner_ring_temperature,
+             outer_ring_temperature)  # fmt: skip
+    # a bearing as bought (nothing of the mounting given): no Mounting to check or build
+    mounting = None if all(v is None for v in seats) else check_mounting(Mounting(*seats))
     spec = clearance if isinstance(clearance, ClearanceSpec) else parse_clearance(clearance)
     if designation is not None and _is_roller(designation):
         if ball_material is not None and str(ball_material).strip().lower() != "steel":
