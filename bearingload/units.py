@@ -254,7 +254,7 @@ def parse_quantity(text: str | float, kind: str, *, parameter: str | None = None
         value, unit, written = float(text), "", ""
     else:
         match = _NUMBER.match(str(text))
-        if match is None or re.match(r"^\s*[+-]?\d*,\d", str(text)):
+        if match is None or ("," in str(text) and re.match(r"^\s*[+-]?\d*,\d", str(text))):
             raise InputError(name, _unreadable(str(text), kind))
         written = match.group(1)
         value, unit = float(written), _canonical(match.group(2))

@@ -235,8 +235,8 @@ def test_every_kernel_touches_no_python_object():
 
 def test_a_plain_solve_compiles_no_pattern_it_does_not_use():
     """solve 306 -F 1kN compiled at import the patterns of pairs (7205BDB), seals, designation
-    prefixes and suffixes and stiffness units, none of which a plain designation with a load in
-    N uses: they are compiled at their first use. A fresh interpreter records every pattern re
+    prefixes and suffixes, the ISO designations and stiffness units, none of which a plain GOST
+    designation with a load in N uses: they are compiled at their first use. A fresh interpreter records every pattern re
     compiles while the command runs."""
     import subprocess
     import sys
@@ -267,10 +267,13 @@ def test_a_plain_solve_compiles_no_pattern_it_does_not_use():
         catalog._SEAL,
         designation._PREFIX,
         designation._SUFFIX_TOKENS,
+        designation._ISO[1],
+        designation._ROLLER[1],
+        *(pattern for first, pattern, _ in designation._UNMODELLED if "3" not in first),
         _STIFFNESS_UNIT,
     ]
     assert [p for p in unused if getattr(p, "pattern", p) in seen] == []
-    assert designation._ISO.pattern in seen  # the recording sees the patterns the run uses
+    assert designation._GOST[1] in seen  # the recording sees the patterns the run uses
 
 
 #: Modules that read an exception's text on purpose: the quality harnesses grade what a

@@ -63,6 +63,24 @@ def test_new_csv_files_are_plain(name: str) -> None:
     assert rows[0][-2:] == ["source", "notes"]
 
 
+@pytest.mark.parametrize(
+    "name", ["bearings.csv", "ball_sets.csv", "angular_contact.csv", "rollers.csv"]
+)
+def test_reading_the_rows_of_one_designation_reads_what_the_whole_file_holds(name: str) -> None:
+    """read_rows(name, first) parses only the lines that may start with ``first``: it gives the
+    rows of the whole file whose first cell is ``first``, in file order, for every first cell
+    there is and one there is not; that holds because no cell of the data files holds a line
+    break (one row per line after the header)."""
+    from bearingload.bearings._data import _DIR, read_rows
+
+    rows = read_rows(name)
+    with open(f"{_DIR}/{name}", encoding="utf-8", newline="") as handle:
+        assert len(rows) + 1 == len(handle.read().splitlines())  # no line break in a cell
+    column = next(iter(rows[0]))
+    for first in [*dict.fromkeys(r[column] for r in rows), "9999"]:
+        assert read_rows(name, first) == [r for r in rows if r[column] == first], first
+
+
 def test_new_series_filters() -> None:
     # 618 and 619: 21 each of two-digit bore codes, 9 each of one-digit bores (681 ... 699)
     assert [len(entries(series=s)) for s in ("618", "68", "619", "69xx", "160")] == [

@@ -103,7 +103,7 @@ def test_bore_code(code: str, bore: float) -> None:
     assert bore_from_code(code) == bore
 
 
-@pytest.mark.parametrize("code", ["6", "abc", "123", ""])
+@pytest.mark.parametrize("code", ["6", "abc", "123", "", "6²", " 06"])
 def test_bore_code_rejects(code: str) -> None:
     with pytest.raises(InputError, match="bore_code"):
         bore_from_code(code)
@@ -237,6 +237,25 @@ def test_unmodelled_types_are_named_and_refused(text: str) -> None:
     message = str(info.value)
     assert f"{text!r} is " in message and UNMODELLED[text] in message
     assert message.endswith(f"which bearingload does not model; it models {MODELLED}")
+
+
+def test_a_pattern_is_skipped_only_for_a_designation_it_cannot_match() -> None:
+    """Each form (and unmodelled type) lists the characters a designation it matches starts
+    with; a designation starting otherwise skips its pattern. No designation of these tests,
+    nor any with its first character replaced by another digit or letter, is matched by a
+    pattern beside characters that do not include its first one."""
+    import re
+
+    from bearingload.bearings import designation as d
+
+    forms = [d._ISO, d._ISO_WIDE, d._ISO_SMALL, d._ROLLER, d._GOST]
+    forms += [(first, pattern) for first, pattern, _ in d._UNMODELLED]
+    texts = {t.upper() for t in [*CASES, *UNMODELLED, "608", "61806", "16005", "NUP 306"]}
+    tried = {c + t[1:] for t in texts for c in "0123456789ABCDEFGHIJKLMNOPQRSTUVWXYZ"}
+    for first, pattern in forms:
+        hits = [t for t in tried if re.match(pattern, t)]
+        assert hits, pattern  # every pattern is tried on designations it matches
+        assert [t for t in hits if first and t[0] not in first] == [], pattern
 
 
 def test_the_refusal_keeps_every_form_the_catalogue_accepts() -> None:

@@ -106,7 +106,7 @@ def parse_angular(text: str) -> AngularDesignation | None:
     from bearingload.bearings.designation import bore_from_code
 
     raw = text.strip()
-    norm = re.sub(r"\s+", " ", raw.upper())
+    norm = " ".join(raw.upper().split())  # whitespace runs as one space, as re's \s+
     m = _match(_ISO, norm)
     if m:
         letter = m.group("letter")
@@ -141,7 +141,7 @@ def refuse_gost_suffix(text: str) -> None:
 
     >>> refuse_gost_suffix("36205")  # no suffix: nothing to refuse
     """
-    norm = re.sub(r"\s+", " ", text.strip().upper())
+    norm = " ".join(text.upper().split())
     m = re.match(_GOST_SUFFIXED, norm) if len(norm) > 5 else None  # 5 digits and a suffix
     if m is None:
         return
@@ -174,7 +174,7 @@ def split_pair(text: str) -> tuple[str, str | None, str | None]:
     >>> split_pair("7205CDBL"), split_pair("7008A5 DBEL P4")
     (('7205C', 'DB', 'L'), ('7008A5P4', 'DB', 'EL'))
     """
-    norm = re.sub(r"\s+", " ", text.strip().upper())
+    norm = " ".join(text.upper().split())
     m = _match(_ISO, norm)
     found = re.search(_PAIR, m.group("rest")) if m else None
     if m is not None and found is None:
@@ -284,7 +284,7 @@ def find_angular(parsed: AngularDesignation, maker: str | None = None) -> Angula
         (``bearing``) when there is no row: names the type and the rows of that contact angle
         and series there are; (``maker``) when ``maker`` has no row for it.
     """
-    m = _match(_ISO, re.sub(r"\s+", " ", parsed.text.upper()))
+    m = _match(_ISO, " ".join(parsed.text.upper().split()))
     if m and not re.search(_PAIR, m.group("rest")):
         _refuse_unread_set(parsed.text, m)
     if m and re.search(_PAIR, m.group("rest")):

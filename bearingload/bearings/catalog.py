@@ -395,20 +395,15 @@ def _gost_iso_names() -> frozenset[str]:
 @functools.lru_cache(maxsize=256)
 def _row(standard: str, name: str) -> BearingGeometry | None:
     """The first row of :func:`_rows` with this standard and designation (None: there is none),
-    built alone: a terminal command that looks up one bearing does not build the other 400
-    rows and ball sets (about 6 ms of its start-up)."""
-    rec = next(
-        (
-            r
-            for r in _read("bearings.csv")
-            if r["standard"] == standard and r["designation"] == name
-        ),
-        None,
-    )
+    built alone from its own lines of the files: a terminal command that looks up one bearing
+    does not parse or build the other 400 rows and ball sets (about 7 ms of its start-up)."""
+    from bearingload.bearings._data import read_rows
+
+    rec = next((r for r in read_rows("bearings.csv", name) if r["standard"] == standard), None)
     row = None if rec is None else _csv_row(rec)
     if standard != "ISO":
         return None if row is None else _complete(row, [], ())
-    sets = [_ball_set(r) for r in _read("ball_sets.csv") if r["designation"] == name]
+    sets = [_ball_set(r) for r in read_rows("ball_sets.csv", name)]
     if row is None:
         if not sets:
             return None

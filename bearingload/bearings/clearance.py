@@ -64,7 +64,9 @@ PICKS: tuple[str, ...] = CLEARANCE_PICKS
 RANGE = "range"
 
 _NORMAL = {"N", "CN", "C0", "0", "NORMAL", "NORM", "НОРМАЛЬНАЯ", "НОРМ", "M", "М"}
-_GROUP_WORD = re.compile(r"^(?:G|GR|GROUP|ГР|ГРУППА)\s*\.?\s*(\S+)$")
+#: A GOST group written with its word (``G7``, ``GR. 7``), a pattern text compiled at its
+#: first use by :func:`_group_word`.
+_GROUP_WORD = r"^(?:G|GR|GROUP|ГР|ГРУППА)\s*\.?\s*(\S+)$"
 _ALLOWED = (
     "C2, CN, C3, C4, C5 (ISO 5753-1; 'N', 'normal', '0' mean CN) or the GOST 24810 groups "
     "6, 7, 8, 9 (= C2, C3, C4, C5; normal = CN), also written 'G7'"
@@ -158,7 +160,7 @@ def parse_class(text: str) -> str:
     ('C3', 'CN', 'C5')
     """
     raw = str(text).strip().upper()
-    group = _GROUP_WORD.match(raw)
+    group = _group_word(raw)
     key = group.group(1) if group else raw
     if key in CLASSES:
         return key
@@ -170,6 +172,11 @@ def parse_class(text: str) -> str:
     if key == "C1":
         hint = " (C1 is not tabulated for deep groove ball bearings)"
     raise InputError("clearance", f"unknown clearance class {text!r}{hint}; allowed: {_ALLOWED}")
+
+
+def _group_word(raw: str) -> re.Match[str] | None:
+    """:data:`_GROUP_WORD` matched on ``raw``, skipped (None) unless it starts with G or Г."""
+    return re.match(_GROUP_WORD, raw) if raw[:1] in "GГ" else None
 
 
 def looks_like_class(text: str) -> bool:
@@ -197,7 +204,7 @@ def looks_like_class(text: str) -> bool:
     raw = str(text).strip().upper()
     if re.fullmatch(r"[+-]?(?:\d+\.?\d*|\.\d+)(?:E[+-]?\d+)?", raw):
         return False
-    group = _GROUP_WORD.match(raw)
+    group = _group_word(raw)
     key = group.group(1) if group else raw
     if group and key in GOST_GROUPS:
         return True

@@ -87,62 +87,71 @@ MODELLED = (
 )
 
 #: Designations of bearing types that bearingload does not model, as the makers' catalogues
-#: name them: (pattern of the upper-case designation, whose group ``series`` is the series;
-#: what the designation is, with ``{series}``). Checked before the deep-groove and GOST forms:
-#: a tapered roller bearing 30205 would otherwise read as a GOST ball bearing 205 of design
-#: variant 3. The type digit of GOST 3189 (the fourth from the right) is 2 for cylindrical,
-#: 7 for tapered roller bearings, 6 for angular contact and 8 for thrust ball bearings.
-_UNMODELLED: tuple[tuple[re.Pattern[str], str], ...] = tuple(
-    (re.compile(pattern), what)
-    for pattern, what in (
-        (
-            r"^(?P<series>3(?:0[23]|13|2[0239]|3[012]))\d{2}(?!\d)",
-            "a tapered roller bearing (series {series})",
-        ),
-        (
-            r"^(?P<series>2(?:2[23]|3[01289]|4[01]))\d{2}(?!\d)",
-            "a spherical roller bearing (series {series})",
-        ),
-        (r"^(?P<series>1[23])\d{2}(?!\d)", "a self-aligning ball bearing (series {series})"),
-        (
-            r"^(?P<series>2[23])\d{2}(?!\d)",
-            "a self-aligning ball bearing (series {series}; read as GOST 3189, type digit 2, a "
-            "cylindrical roller bearing: give its ISO name, NU, N, NJ or NUP and the last three "
-            "digits)",
-        ),
-        (
-            r"^(?P<series>5(?:1[1-4]|[234][2-4]))\d{2}(?!\d)",
-            "a thrust ball bearing (series {series})",
-        ),
-        (r"^(?P<series>8[1-5])\d{2}(?!\d)", "a thrust ball bearing (GOST 3189 type digit 8)"),
-        (
-            r"^(?P<series>29[234]|81[12]|89[34])\d{2}(?!\d)",
-            "a thrust roller bearing (series {series})",
-        ),
-        (
-            r"^(?P<series>7[0-4]|71[89])\d{2}\s*[-/]?\s*(?:AC|A|B|C|E)",
-            "a single-row angular contact ball bearing (series {series})",
-        ),
-        (
-            r"^(?P<series>71[89])\d{2}(?!\d)",
-            "a single-row angular contact ball bearing (series {series})",
-        ),
-        (
-            r"^(?P<series>7[0-5])\d{2}(?!\d)",
-            "a single-row angular contact ball bearing (series {series}; read as GOST 3189, "
-            "type digit 7, a tapered roller bearing)",
-        ),
-        (
-            r"^(?P<series>[34]6[1-4])\d{2}(?!\d)",
-            "an angular contact ball bearing (GOST 3189 type digit 6)",
-        ),
-        (
-            r"^(?P<series>RNA|NA|NKI[AB]?|NKS|NKX|NK|NX|HK|BK)\s*\d",
-            "a needle roller bearing ({series})",
-        ),
-        (r"^(?P<series>QJF?)\s*\d", "a four-point contact ball bearing ({series})"),
-        (r"^(?P<series>NNU?)\s*\d", "a double-row cylindrical roller bearing ({series})"),
-    )
+#: name them: (the characters such a designation can start with; pattern of the upper-case
+#: designation, whose group ``series`` is the series; what the designation is, with
+#: ``{series}``). Checked before the deep-groove and GOST forms: a tapered roller bearing 30205
+#: would otherwise read as a GOST ball bearing 205 of design variant 3. The type digit of GOST
+#: 3189 (the fourth from the right) is 2 for cylindrical, 7 for tapered roller bearings, 6 for
+#: angular contact and 8 for thrust ball bearings. The patterns are texts compiled by re at
+#: their first use, which a designation starting otherwise (a deep-groove 6306) does not reach.
+_UNMODELLED: tuple[tuple[str, str, str], ...] = (
+    (
+        "3",
+        r"^(?P<series>3(?:0[23]|13|2[0239]|3[012]))\d{2}(?!\d)",
+        "a tapered roller bearing (series {series})",
+    ),
+    (
+        "2",
+        r"^(?P<series>2(?:2[23]|3[01289]|4[01]))\d{2}(?!\d)",
+        "a spherical roller bearing (series {series})",
+    ),
+    ("1", r"^(?P<series>1[23])\d{2}(?!\d)", "a self-aligning ball bearing (series {series})"),
+    (
+        "2",
+        r"^(?P<series>2[23])\d{2}(?!\d)",
+        "a self-aligning ball bearing (series {series}; read as GOST 3189, type digit 2, a "
+        "cylindrical roller bearing: give its ISO name, NU, N, NJ or NUP and the last three "
+        "digits)",
+    ),
+    (
+        "5",
+        r"^(?P<series>5(?:1[1-4]|[234][2-4]))\d{2}(?!\d)",
+        "a thrust ball bearing (series {series})",
+    ),
+    ("8", r"^(?P<series>8[1-5])\d{2}(?!\d)", "a thrust ball bearing (GOST 3189 type digit 8)"),
+    (
+        "28",
+        r"^(?P<series>29[234]|81[12]|89[34])\d{2}(?!\d)",
+        "a thrust roller bearing (series {series})",
+    ),
+    (
+        "7",
+        r"^(?P<series>7[0-4]|71[89])\d{2}\s*[-/]?\s*(?:AC|A|B|C|E)",
+        "a single-row angular contact ball bearing (series {series})",
+    ),
+    (
+        "7",
+        r"^(?P<series>71[89])\d{2}(?!\d)",
+        "a single-row angular contact ball bearing (series {series})",
+    ),
+    (
+        "7",
+        r"^(?P<series>7[0-5])\d{2}(?!\d)",
+        "a single-row angular contact ball bearing (series {series}; read as GOST 3189, "
+        "type digit 7, a tapered roller bearing)",
+    ),
+    (
+        "34",
+        r"^(?P<series>[34]6[1-4])\d{2}(?!\d)",
+        "an angular contact ball bearing (GOST 3189 type digit 6)",
+    ),
+    (
+        "RNHB",
+        r"^(?P<series>RNA|NA|NKI[AB]?|NKS|NKX|NK|NX|HK|BK)\s*\d",
+        "a needle roller bearing ({series})",
+    ),
+    ("Q", r"^(?P<series>QJF?)\s*\d", "a four-point contact ball bearing ({series})"),
+    ("N", r"^(?P<series>NNU?)\s*\d", "a double-row cylindrical roller bearing ({series})"),
 )
 
 #: Old four-digit names of the 618 and 619 series (``6806`` = ``61806``).
@@ -154,16 +163,21 @@ ROLLER_TYPES: tuple[str, ...] = ("NUP", "NU", "NJ", "N")
 # Cyrillic letters that look like Latin ones, folded so that both spellings parse.
 _FOLD = str.maketrans("АВСЕНКМОРТХ", "ABCEHKMOPTX")
 
-_ISO = re.compile(r"^6(?P<series>[023489])(?P<bore>\d{2})(?P<rest>(?:[^0-9].*)?)$")
-_ISO_WIDE = re.compile(r"^(?P<series>61[89]|160)(?P<bore>\d{2})(?P<rest>(?:[^0-9].*)?)$")
-_ISO_SMALL = re.compile(r"^6(?P<series>[023489])(?P<bore>[1-9])(?P<rest>(?:[^0-9].*)?)$")
-_ROLLER = re.compile(
-    r"^(?P<type>NUP|NU|NJ|N)\s*(?P<series>[23])(?P<bore>\d{2})(?P<rest>(?:[^0-9].*)?)$"
+#: The forms read: (the characters such a designation can start with, "" any; pattern text),
+#: compiled by re at their first use by :func:`_match`, which a designation that cannot match
+#: does not reach (a GOST 306 compiles only :data:`_GOST`).
+_ISO = ("6", r"^6(?P<series>[023489])(?P<bore>\d{2})(?P<rest>(?:[^0-9].*)?)$")
+_ISO_WIDE = ("16", r"^(?P<series>61[89]|160)(?P<bore>\d{2})(?P<rest>(?:[^0-9].*)?)$")
+_ISO_SMALL = ("6", r"^6(?P<series>[023489])(?P<bore>[1-9])(?P<rest>(?:[^0-9].*)?)$")
+_ROLLER = (
+    "N",
+    r"^(?P<type>NUP|NU|NJ|N)\s*(?P<series>[23])(?P<bore>\d{2})(?P<rest>(?:[^0-9].*)?)$",
 )
-_GOST = re.compile(
+_GOST = (
+    "",
     r"^(?:(?P<prefix>[^-\s]{1,6})\s*-\s*)?"
     r"(?:(?P<design>[1-9]\d?)0)?(?P<series>\d)(?P<bore>\d{2})"
-    r"(?P<rest>(?:[^0-9].*)?)$"
+    r"(?P<rest>(?:[^0-9].*)?)$",
 )
 #: Prefix and suffix patterns: texts compiled by re at their first use (a plain 306 has neither).
 _PREFIX = (
@@ -176,6 +190,15 @@ _SUFFIX_TOKENS = (
     r"|(?P<precision>P(?:6X|[0245-6]))(?P<pclr>[1-5])?(?![0-9])"
     r"|(?P<seal>2RS[1HR]?|RS[1HR]?|2RZ|RZ|2Z|ZZ|Z|2NSE|NSE|DDU|DD|LLU|LLB|LLH|LU|LB|VV|NR|N)"
 )
+
+
+def _match(form: tuple[str, str], text: str) -> re.Match[str] | None:
+    """``re.match`` of a form's pattern (:data:`_ISO` ...; an entry of :data:`_UNMODELLED`)
+    on ``text``, skipped (None) where ``text`` starts with none of the form's characters."""
+    first, pattern = form
+    if first and text[:1] not in first:
+        return None
+    return re.match(pattern, text)
 
 
 @dataclass(frozen=True)
@@ -269,7 +292,7 @@ def bore_from_code(code: str) -> float:
     >>> bore_from_code("03"), bore_from_code("06")
     (17.0, 30.0)
     """
-    if not re.fullmatch(r"\d{2}", code):
+    if not (len(code) == 2 and code.isdecimal()):  # what re's \d{2} matches
         raise InputError("bore_code", f"{code!r} is not a two-digit bore code")
     return SPECIAL_BORES.get(code, 5.0 * int(code))
 
@@ -283,12 +306,12 @@ def _refuse_unmodelled(raw: str, norm: str) -> None:
     """Raise :class:`UnmodelledBearing` when ``norm`` (with or without a GOST prefix such as
     ``6-``) names a bearing type of :data:`_UNMODELLED`."""
     bodies = [norm]
-    m = re.match(r"^([^-\s]{1,6})\s*-\s*(\S.*)$", norm)
+    m = re.match(r"^([^-\s]{1,6})\s*-\s*(\S.*)$", norm) if "-" in norm else None
     if m and re.match(_PREFIX, m.group(1)):
         bodies.append(m.group(2))
     for body in bodies:
-        for pattern, what in _UNMODELLED:
-            hit = pattern.match(body)
+        for first, pattern, what in _UNMODELLED:
+            hit = _match((first, pattern), body)
             if hit:
                 raise UnmodelledBearing(
                     "bearing",
@@ -308,6 +331,8 @@ def _error(text: str, why: str = "") -> InputError:
 
 def _parse_suffixes(text: str, rest: str) -> tuple[tuple[str, ...], str | None, str | None]:
     """Split the suffix part into tokens; return (tokens, clearance class, accuracy class)."""
+    if not rest:
+        return (), None, None
     if re.search(r"[^\w\s/-]|_", rest):
         raise _error(text, f"unexpected character in the suffix {rest.strip()!r}")
     tokens: list[str] = []
@@ -382,7 +407,7 @@ def parse(text: str) -> Designation:
     other = _parse_other_iso(raw, norm)
     if other is not None:
         return other
-    m = _ISO.match(norm)
+    m = _match(_ISO, norm)
     if m:
         suffixes, clr, acc = _parse_suffixes(raw, m.group("rest"))
         series, code = m.group("series"), m.group("bore")
@@ -398,7 +423,7 @@ def parse(text: str) -> Designation:
             clearance_class=clr,
             accuracy_class=acc,
         )
-    m = _GOST.match(norm)
+    m = _match(_GOST, norm)
     if m is None:
         raise _error(raw)
     series, code = m.group("series"), m.group("bore")
@@ -444,7 +469,7 @@ def parse(text: str) -> Designation:
 
 def _parse_other_iso(raw: str, norm: str) -> Designation | None:
     """The 618/619/160 series, bores below 10 mm and cylindrical roller bearings; else None."""
-    m = _ROLLER.match(norm)
+    m = _match(_ROLLER, norm)
     if m:
         series, code = m.group("series"), m.group("bore")
         name = f"{m.group('type')}{series}{code}"
@@ -463,7 +488,7 @@ def _parse_other_iso(raw: str, norm: str) -> Designation | None:
             kind="roller",
         )
     for pattern, small in ((_ISO_WIDE, False), (_ISO_SMALL, True)):
-        m = pattern.match(norm)
+        m = _match(pattern, norm)
         if m:
             series, code = m.group("series"), m.group("bore")
             suffixes, clr, acc = _parse_suffixes(raw, m.group("rest"))

@@ -274,11 +274,11 @@ def mounted_clearance(b: Any, m: Mounting, clearance: float, pick: str) -> Mount
     )  # fmt: skip
 
 
-def mount(b: Any, m: Mounting) -> Any:
+def mount(b: Any, m: Mounting | None) -> Any:
     """Bearing ``b`` at its operating clearance: ``clearance`` (what the models solve with)
     becomes the operating clearance, ``mounting`` the :class:`MountedClearance` that holds the
-    unmounted one and the reductions; ``b`` itself where nothing of ``m`` is given."""
-    if not m.given:
+    unmounted one and the reductions; ``b`` itself where ``m`` is None or gives nothing."""
+    if m is None or not m.given:
         return b
     unmounted = b.clearance if b.mounting is None else b.mounting.clearance
     mc = mounted_clearance(b, m, unmounted, b.clearance_pick or "mean")

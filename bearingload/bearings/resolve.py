@@ -60,7 +60,6 @@ from bearingload.bearings.resolved import (
     resolve_clearance,
 )
 from bearingload.errors import InputError, MissingError
-from bearingload.lazy_dataclass import dataclass
 from bearingload.validate import ball_spacing, conformity, finite_positive
 
 if TYPE_CHECKING:
@@ -146,9 +145,10 @@ def resolve_bearing(
     if designation is not None and not isinstance(designation, str):
         designation = str(designation)  # 6205 read as "6205", as catalog.lookup reads it
     _check_inputs(modulus, stiffness, ball_diameter, pitch_diameter, poisson, clearance_pick)
-    mounting = Mounting(shaft_fit, housing_fit, shaft_bore, housing_diameter,
-                        inner_ring_temperature, outer_ring_temperature)  # fmt: skip
-    mounting = check_mounting(mounting)
+    seats = (shaft_fit, housing_fit, shaft_bore, housing_diameter, inner_ring_temperature,
+             outer_ring_temperature)  # fmt: skip
+    # a bearing as bought (nothing of the mounting given): no Mounting to check or build
+    mounting = None if all(v is None for v in seats) else check_mounting(Mounting(*seats))
     spec = clearance if isinstance(clearance, ClearanceSpec) else parse_clearance(clearance)
     if designation is not None and _is_roller(designation):
         if ball_material is not None and str(ball_material).strip().lower() != "steel":
@@ -324,19 +324,33 @@ def _check_inputs(
         raise InputError("pick", f"unknown pick {clearance_pick!r}; allowed: {', '.join(PICKS)}")
 
 
-@dataclass
 class _BallSet:
-    """The ball set in use and where it came from (internal to :func:`resolve_bearing`)."""
+    """The ball set in use and where it came from (internal to :func:`resolve_bearing`; a
+    plain class, read by attribute only: no dataclass to build on every solve)."""
 
-    geom: BearingGeometry | None
-    z: int
-    dw: float | None
-    dm: float | None
-    fi: float | None
-    fo: float | None
-    bore: float | None
-    sources: list[str]
-    provenance: list[Provenance]
+    __slots__ = ("geom", "z", "dw", "dm", "fi", "fo", "bore", "sources", "provenance")
+
+    def __init__(
+        self,
+        geom: BearingGeometry | None,
+        z: int,
+        dw: float | None,
+        dm: float | None,
+        fi: float | None,
+        fo: float | None,
+        bore: float | None,
+        sources: list[str],
+        provenance: list[Provenance],
+    ) -> None:
+        self.geom = geom
+        self.z = z
+        self.dw = dw
+        self.dm = dm
+        self.fi = fi
+        self.fo = fo
+        self.bore = bore
+        self.sources = sources
+        self.provenance = provenance
 
 
 def _ball_set(

@@ -11,7 +11,6 @@ without a speed, no a_ISO without a viscosity. The formulas are those of
 
 from __future__ import annotations
 
-from dataclasses import field
 from typing import Any
 
 import numpy as np
@@ -96,13 +95,14 @@ class LifeBasis:
     rotating: str = "inner"
 
 
-@dataclass
 class ServiceLife:
-    """The values (quantity key -> value), notes (sources, choices) and warnings of one case."""
+    """The values (quantity key -> value), notes (sources, choices) and warnings of one case,
+    filled by :func:`service_values` (a plain class: no dataclass to build at import)."""
 
-    values: dict[str, Any] = field(default_factory=dict)
-    notes: list[str] = field(default_factory=list)
-    warnings: list[str] = field(default_factory=list)
+    def __init__(self) -> None:
+        self.values: dict[str, Any] = {}
+        self.notes: list[str] = []
+        self.warnings: list[str] = []
 
 
 def service_values(op: Operating, b: LifeBasis) -> ServiceLife:
