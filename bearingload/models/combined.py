@@ -570,32 +570,19 @@ def solve_combined(
     z = call_balls(balls)
     if moment is not None and misalignment is not None:
         raise InputError("moment", "give a moment or a misalignment, not both")
-    fr = validate.at_least("radial_load", radial_load, 0.0, "N")
-    fa = validate.finite("axial_load", axial_load)
-    angular = _angular(contact_angle, fa, clearance)
-    mm = validate.finite("moment", 0.0 if moment is None else moment)
-    mc = validate.finite("moment_cross", moment_cross)
-    tilt_deg = validate.finite("misalignment", 0.0 if misalignment is None else misalignment)
-    cage = np.mod(validate.finite("cage_angle", cage_angle), 360.0)
-    e = validate.positive("modulus", modulus, "MPa")
-    nu = validate.finite("poisson", poisson)
-    k_given = None if stiffness is None else validate.positive("stiffness", stiffness, "N/mm^1.5")
-    ball_diameter, pitch_diameter, clearance = validate.each_finite(
-        ball_diameter=ball_diameter, pitch_diameter=pitch_diameter, clearance=clearance
-    )
-    f_i, f_o = validate.conformity("f_i", f_i), validate.conformity("f_o", f_o)
-    named = dict(radial_load=fr, axial_load=fa, moment=mm, misalignment=tilt_deg, cage_angle=cage)
-    named |= dict(modulus=e, poisson=nu, moment_cross=mc, ball_diameter=ball_diameter)
-    named |= dict(pitch_diameter=pitch_diameter, f_i=f_i, f_o=f_o, clearance=clearance)
-    named["contact_angle"] = np.zeros(()) if angular is None else angular
-    shape, flat = _cases(named | ({} if k_given is None else {"stiffness": k_given}))
-    fr, fa, mm, tilt_deg, cage, e, nu, mc, dw, dm, fi, fo, gr, alpha_d = flat[:14]
+    raw = dict(radial_load=radial_load, axial_load=axial_load, moment=moment)
+    raw |= dict(misalignment=misalignment, cage_angle=cage_angle, modulus=modulus)
+    raw |= dict(poisson=poisson, moment_cross=moment_cross, ball_diameter=ball_diameter)
+    raw |= dict(pitch_diameter=pitch_diameter, f_i=f_i, f_o=f_o, clearance=clearance)
+    raw |= dict(contact_angle=contact_angle, stiffness=stiffness)
+    shape, cols, named = _inputs(raw)
+    angular = None if contact_angle is None else cols[_ROW["contact_angle"]]
+    fr, fa, mm, mc, tilt_deg, _, cage, e, nu, dw, dm, fi, fo, _, gr, alpha_d, k_in = cols
 
     def at(name: str, bad: Any, unit: str = "") -> str:  # the input's element of a bad case
         return validate.element_at(named[name], bad, shape, unit)
 
-    alpha_or_gap = gr if angular is None else alpha_d
-    geo = ring_geometry(dw, dm, fi, fo, alpha_or_gap, angular is not None, at)
+    geo = _geometry_of(cols[_GROOVE], angular is not None, at)
     validate.ball_spacing(z, geo.D_w, geo.d_m)  # (z balls must fit on the pitch circle)
     if tilt_radius is not None:
         radius = validate.positive("tilt_radius", tilt_radius, "mm")
@@ -604,20 +591,19 @@ def solve_combined(
     if angular is not None:
         _check_one_sided_moment(z, cage, fa, (mm, mc), geo.R_i, misalignment is not None)
     curve = None
-    if k_given is None:
+    if stiffness is None:
         k_ref, values = hertz_setup(geo, e, nu)
         curve = StiffnessCurve(values)
     else:
-        k_ref = flat[14]
-    loads = (fr, fa, mm, mc, tilt_deg)
-    problem, mirror = _problem(z, loads, cage, geo, k_ref, (angular, misalignment), at)
+        k_ref = k_in
+    problem, mirror = _problem(z, cols[:6], cage, geo, k_ref, (angular, misalignment), at)
     given = {"balls": z, "radial_load": fr, "axial_load": fa, "moment": mm, "moment_cross": mc,
              "clearance": gr, "cage_angle": cage}  # fmt: skip
     if misalignment is not None:  # the moment is then the reaction, not an input
         given["misalignment"] = tilt_deg
     with np.errstate(all="ignore"):
-        vh, vl, kappa, its, end, tangent, flags = _equilibrium(problem, geo, curve, given)
-        checked = _checked(problem, end, its, given)
+        vh, vl, kappa, its, end, tangent, flags, checks = _equilibrium(problem, geo, curve, given)
+        checked = _checked(problem, end, its, given, checks)
         answer = (
             vh + vl,
             kappa,
@@ -626,6 +612,119 @@ def solve_combined(
             physical_tangent(problem, geo, tangent[0], mirror & (mc == 0)),
         )
         return distribution(problem, geo, answer, shape, given, misalignment, flags)
+
+
+#: The inputs of one call of :func:`solve_combined` packed, a row each (the cases along it), as
+#: the compiled core's set-up takes them: the loads (F_r, F_a, M, M_c, the misalignment and a
+#: force the reference force is at least, 0 here: ``combined_problem``), the cage angle, E and
+#: nu, the groove's five (D_w, d_m, f_i, f_o and the clearance or, angular contact, the design
+#: contact angle: ``groove``), the clearance, the contact angle and the stiffness (0 where
+#: not given).
+INPUT_ROWS = (
+    "radial_load",
+    "axial_load",
+    "moment",
+    "moment_cross",
+    "misalignment",
+    "",
+    "cage_angle",
+    "modulus",
+    "poisson",
+    "ball_diameter",
+    "pitch_diameter",
+    "f_i",
+    "f_o",
+    "",
+    "clearance",
+    "contact_angle",
+    "stiffness",
+)
+_ROW = {name: i for i, name in enumerate(INPUT_ROWS) if name}
+_GROOVE = slice(9, 14)
+
+
+def _inputs(raw: dict[str, Any]) -> tuple[tuple[int, ...], np.ndarray, dict[str, Any]]:
+    """The inputs of :func:`solve_combined` by name (None: not given) checked and packed: (the
+    case shape, the rows of :data:`INPUT_ROWS` (17, n), the inputs by name as the refusals
+    name their elements). One case of plain numbers that passes every check skips the array
+    machinery (:func:`_plain_inputs`); any other goes through :func:`_checked_inputs`, which
+    names what it refuses."""
+    cols = _plain_inputs(raw)
+    if cols is not None:
+        return (), cols, raw
+    return _checked_inputs(raw)
+
+
+def _plain_inputs(raw: dict[str, Any]) -> np.ndarray | None:
+    """The rows (17, 1) of one case whose inputs are all plain numbers (``float`` or ``int``)
+    passing every check of :func:`_checked_inputs`, the cage angle taken mod 360°; None for
+    any other."""
+    if not all(type(v) is float or type(v) is int or v is None for v in raw.values()):
+        return None
+    try:
+        v = {k: 0.0 if x is None else float(x) for k, x in raw.items()}
+    except OverflowError:
+        return None
+    if not all(math.isfinite(x) for x in v.values()):
+        return None
+    low, high = validate.CONFORMITY_RANGE
+    ok = v["radial_load"] >= 0.0 and v["modulus"] > 0.0 and low < v["f_i"] < high
+    ok = ok and low < v["f_o"] < high and (raw["stiffness"] is None or v["stiffness"] > 0.0)
+    if raw["contact_angle"] is not None:
+        ok = ok and 0.0 <= v["contact_angle"] <= 60.0 and v["clearance"] == 0.0
+        ok = ok and v["axial_load"] >= 0.0
+    if not ok:
+        return None
+    cols = np.array([v.get(name, 0.0) for name in INPUT_ROWS]).reshape(-1, 1)
+    cols[_GROOVE.stop - 1] = v["clearance" if raw["contact_angle"] is None else "contact_angle"]
+    np.mod(cols[_ROW["cage_angle"]], 360.0, out=cols[_ROW["cage_angle"]])
+    return cols
+
+
+def _checked_inputs(raw: dict[str, Any]) -> tuple[tuple[int, ...], np.ndarray, dict[str, Any]]:
+    """:func:`_inputs` of any inputs: each checked (:mod:`bearingload.validate`, the first
+    refused named), broadcast together (:func:`_cases`) and packed."""
+    fr = validate.at_least("radial_load", raw["radial_load"], 0.0, "N")
+    fa = validate.finite("axial_load", raw["axial_load"])
+    angular = _angular(raw["contact_angle"], fa, raw["clearance"])
+    mm = validate.finite("moment", 0.0 if raw["moment"] is None else raw["moment"])
+    mc = validate.finite("moment_cross", raw["moment_cross"])
+    tilt = raw["misalignment"]
+    tilt_deg = validate.finite("misalignment", 0.0 if tilt is None else tilt)
+    cage = np.mod(validate.finite("cage_angle", raw["cage_angle"]), 360.0)
+    e = validate.positive("modulus", raw["modulus"], "MPa")
+    nu = validate.finite("poisson", raw["poisson"])
+    k = raw["stiffness"]
+    k_given = None if k is None else validate.positive("stiffness", k, "N/mm^1.5")
+    dw, dm, gr = validate.each_finite(
+        ball_diameter=raw["ball_diameter"],
+        pitch_diameter=raw["pitch_diameter"],
+        clearance=raw["clearance"],
+    )
+    f_i, f_o = validate.conformity("f_i", raw["f_i"]), validate.conformity("f_o", raw["f_o"])
+    named = dict(radial_load=fr, axial_load=fa, moment=mm, misalignment=tilt_deg, cage_angle=cage)
+    named |= dict(modulus=e, poisson=nu, moment_cross=mc, ball_diameter=dw)
+    named |= dict(pitch_diameter=dm, f_i=f_i, f_o=f_o, clearance=gr)
+    named["contact_angle"] = np.zeros(()) if angular is None else angular
+    if k_given is not None:
+        named["stiffness"] = k_given
+    shape, flat = _cases(named)
+    cols = np.zeros((len(INPUT_ROWS), flat[0].size))
+    for name, col in zip(named, flat, strict=True):
+        cols[_ROW[name]] = col
+    cols[_GROOVE.stop - 1] = cols[_ROW["clearance" if angular is None else "contact_angle"]]
+    return shape, cols, named
+
+
+def _geometry_of(given: np.ndarray, angular: bool, at: Callable[..., str]) -> _Geometry:
+    """:func:`ring_geometry` of the groove's rows of :data:`INPUT_ROWS` (5, n), flat."""
+    from bearingload.models import _core
+
+    big_a, g, alpha0, r_i, fits = _core.groove(given, angular, *validate.CONFORMITY_RANGE)
+    dw, dm, fi, fo = given[:4]
+    if not fits.all():
+        _refuse_geometry(dw, dm, fi, fo, g >= big_a, at)
+    return _Geometry(dw, dm, fi, fo, big_a, g, alpha0, r_i)
 
 
 #: Positions per revolution at which :func:`load_zone` first looks for the zone's ends, beside
@@ -714,7 +813,7 @@ def _zone_length(kinematics: tuple[np.ndarray, ...], balls: np.ndarray, one_side
 
 def _problem(
     z: int,
-    loads: tuple[np.ndarray, ...],
+    loads: np.ndarray,
     cage: np.ndarray,
     geo: _Geometry,
     k_ref: np.ndarray,
@@ -723,7 +822,8 @@ def _problem(
 ) -> tuple[Problem, np.ndarray]:
     """The scaled problem of the cases (the compiled core's ``combined_problem``: the largest
     load, the scale, the ball directions, the symmetry locks, the forces) and which cases are
-    mirrored about the load line; the loads (F_r, F_a, M, M_c, misalignment [°]) refused as
+    mirrored about the load line; the loads (6, n) (F_r, F_a, M, M_c, misalignment [°], 0: the
+    rows of :data:`INPUT_ROWS`) refused as
     :func:`reference_force`, :func:`check_scale` and :func:`_check_angular_scale` state.
     ``given``: the contact angle and the misalignment as given (None: not given); ``at``
     names the element of a refused case (:func:`ring_geometry`)."""
@@ -735,22 +835,20 @@ def _problem(
     lengths = np.array((geo.A, geo.g, geo.R_i), dtype=float)
     limits = np.array([SYMMETRY_SNAP_DEG, GEOMETRY_RATIO_MAX, ANGULAR_RATIO_MIN])
     k_ref = np.ascontiguousarray(k_ref, dtype=float)
-    rows = np.zeros((6, n))
-    rows[:5] = loads
     status, c, s, mirror, held, f, out = _core.combined_problem(
-        z, rows, cage, lengths, k_ref, angular, imposed, limits
+        z, loads, cage, lengths, k_ref, angular, imposed, limits
     )
     if status.any():
         _refuse_loads(loads, geo, k_ref, angular, at, status)
     fixed = np.zeros((n, 5), dtype=bool)
     fixed[:, 3] = imposed
-    scale, a_hat, pre, gap, b_hi, b_lo, t_imp, f_ref = out
-    scaled = (scale, a_hat, pre, gap, b_hi, b_lo, f, t_imp, held, fixed, f_ref, k_ref)
+    # out: the scale, the lengths (a_hat, pre, gap, b_hi, b_lo, t_imp), F
+    scaled = (out[0], out[1:7], f, held, fixed, out[7], k_ref)
     return Problem(z, c, s, *scaled, np.full(n, angular)), mirror
 
 
 def _refuse_loads(
-    loads: tuple[np.ndarray, ...],
+    loads: np.ndarray,
     geo: _Geometry,
     k_ref: np.ndarray,
     angular: bool,
@@ -804,16 +902,19 @@ def _cases(named: dict[str, np.ndarray]) -> tuple[tuple[int, ...], list[np.ndarr
 
 def _equilibrium(p: Problem, geo: _Geometry, curve: StiffnessCurve | None, given: dict) -> tuple:
     """Every case solved (:func:`_thrust_retry`), a tilt the loads do not determine taken at
-    its least (:func:`_least_norm_tilt`): as :func:`_solve_with_stiffness`, and which cases'
-    tilts are undetermined. A case whose stiffness updates run out raises ConvergenceError
-    naming its inputs (``given``)."""
+    its least (:func:`_least_norm_tilt`): as :func:`_solve_with_stiffness`, which cases' tilts
+    are undetermined and which thrusts neglected, and the core's checks of the answers (None
+    where some were replaced or moved since: :func:`_checked` then measures them). A case whose
+    stiffness updates run out raises ConvergenceError naming its inputs (``given``)."""
     try:
-        got = _solve_with_stiffness(p, geo, curve)
+        solved = _solve_with_stiffness(p, geo, curve)
+        got, checks = solved[:6], solved[6]
         neglected = np.zeros(p.f.shape[0], dtype=bool)
-        if not (_ring.residual_of(p.f, got[4].gen, got[4].size, p.imposed) <= ACCEPT).all():
+        if not (checks[0] <= ACCEPT).all():
             got = _thrust_retry(p, geo, curve, got)  # (each retry needs an unbalanced case)
             neglected = _neglect_thrust(p, geo, curve, got)
             _near_symmetric(p, geo, curve, got, given["cage_angle"])
+            checks = None  # (the answers of some cases replaced: _checked measures them)
         vh, vl, kappa, its, end, tangent = got
     except ConvergenceError as exc:
         rows = np.asarray(exc.cases["rows"])
@@ -821,7 +922,9 @@ def _equilibrium(p: Problem, geo: _Geometry, curve: StiffnessCurve | None, given
             exc.solver, exc.iterations, exc.residual, _described(given, rows), units=INPUT_UNITS
         ) from None
     vh, vl, end, undetermined = _least_norm_tilt(p, (vh, vl), kappa, end, tangent[1])
-    return vh, vl, kappa, its, end, tangent, (undetermined, neglected)
+    if undetermined.any():
+        checks = None
+    return vh, vl, kappa, its, end, tangent, (undetermined, neglected), checks
 
 
 #: A free direction of the ring along which its stiffness (the frozen-K Hessian of the
@@ -1597,40 +1700,49 @@ def _solve_with_stiffness(
     else:
         given[:], start0[:] = 1, v0
     values = np.zeros((n, 0)) if curve is None else curve.values
-    vh, vl, kappa, total, status, at, tangent, holding = _core.solve(
-        np.ascontiguousarray(p.c, dtype=float), np.ascontiguousarray(p.s, dtype=float),
-        *(np.ascontiguousarray(a, dtype=float) for a in
-          (p.a_hat, p.pre, p.gap, p.b_hi, p.b_lo, p.t_imp, p.f)),
-        np.ascontiguousarray(p.locked, dtype=np.uint8),
-        np.ascontiguousarray(p.one_sided, dtype=np.uint8),
-        np.ascontiguousarray(values, dtype=float), NODE_X, NODE_W,
-        np.ascontiguousarray(start0, dtype=float), given,
-        max_iterations=_ring.MAX_ITERATIONS, first_stage_steps=_ring.FIRST_STAGE_STEPS,
-    )  # fmt: skip
+    vh, vl, kappa, total, status, at, tangent, holding, checks = _core.solve(
+        p.c,
+        p.s,
+        p.lengths,
+        p.f,
+        p.locked.view(np.uint8),
+        p.imposed.view(np.uint8),
+        p.one_sided.view(np.uint8),
+        values,
+        NODE_X,
+        NODE_W,
+        start0,
+        given,
+        max_iterations=_ring.MAX_ITERATIONS,
+        first_stage_steps=_ring.FIRST_STAGE_STEPS,
+    )
     balls, gen, size, res = at
-    failed = status != _ring.OK
-    if strict and failed.any():  # the cases by their rows: the caller names their inputs
+    if strict and status.any():  # the cases by their rows: the caller names their inputs
+        failed = status != _ring.OK
         raise ConvergenceError(
             "combined-load ball stiffness update",
             MAX_STIFFNESS_UPDATES,
             float(np.max(res[failed])),
             {"rows": np.flatnonzero(failed)},
         )
-    q0 = p.pre * np.sqrt(p.pre) if p.z >= 2 else np.zeros(n)  # (p^1.5 = 0 without preload)
-    loads = _ring.Loads(*balls[5:], q0)  # type: ignore[call-arg]
-    point = _ring.Point(_ring.Balls(*balls[:5]), loads, gen, size, res)
+    point = _ring.Point(balls, gen, size, res)
     if not strict:
-        return vh, vl, kappa, total, point, (tangent, holding), failed
-    return vh, vl, kappa, total, point, (tangent, holding)
+        return vh, vl, kappa, total, point, (tangent, holding), status != _ring.OK
+    return vh, vl, kappa, total, point, (tangent, holding), checks
 
 
-def _checked(p: Problem, end: _ring.Point, its: np.ndarray, given: dict) -> tuple[Any, ...]:
-    """The balls, loads and forces at the answer; ConvergenceError where the residual (held
-    components but an imposed tilt included) is above ACCEPT, InputError where a loaded ball
-    sits at the groove edge (its groove centres crossed, or its contact angle 90° to the
-    digits of a double). ``end``: the point at the answer (:func:`_solve_with_stiffness`)."""
-    b, lo, gen, size = end.b, end.lo, end.gen, end.size
-    res = _ring.residual_of(p.f, gen, size, p.imposed)
+def _checked(
+    p: Problem, end: _ring.Point, its: np.ndarray, given: dict, checks: tuple | None = None
+) -> tuple[Any, ...]:
+    """The balls and their loads (``end.block``) and the forces at the answer;
+    ConvergenceError where the residual (held components but an imposed tilt included) is
+    above ACCEPT, InputError where a loaded ball sits at the groove edge (its groove centres
+    crossed, or its contact angle 90° to the digits of a double). ``end``: the point at the
+    answer (:func:`_solve_with_stiffness`); ``checks``: the core's residual and groove-edge
+    flag of it (None: measured here)."""
+    res, near_edge = (None, None) if checks is None else checks
+    if res is None:
+        res = _ring.residual_of(p.f, end.gen, end.size, p.imposed)
     bad = ~(res <= ACCEPT)
     if bad.any():
         known = res[bad][~np.isnan(res[bad])]  # nanmax of all-NaN would warn on the terminal
@@ -1641,15 +1753,22 @@ def _checked(p: Problem, end: _ring.Point, its: np.ndarray, given: dict) -> tupl
             _described(given, bad),
             units=INPUT_UNITS,
         )
-    # crossed groove centres, or a contact angle that rounds to 90° (a minimum may sit at the
-    # edge: there the potential's curvature across the groove ends)
+    if near_edge is None or near_edge.any():
+        _check_edge(end, given)
+    return end.block, end.gen
+
+
+def _check_edge(end: _ring.Point, given: dict) -> None:
+    """InputError where a loaded ball of ``end`` sits at the groove edge: crossed groove
+    centres, or a contact angle that rounds to 90° (a minimum may sit at the edge: there the
+    potential's curvature across the groove ends)."""
+    b, lo = end.b, end.lo
     near = (lo.root > 0) & ((b.rho <= 0) | (lo.ca < 1e-8))  # (elsewhere below 90° - 5e-7°)
     if near.any():
         edge = near & ((b.rho <= 0) | (np.rad2deg(np.arctan2(np.abs(lo.sa), lo.ca)) >= 90.0))
         if edge.any():
             case, ball = (int(i[0]) for i in np.nonzero(edge))
             _refuse_edge(case, ball, given)
-    return b, lo, gen
 
 
 def _described(given: dict, rows: np.ndarray) -> dict:
@@ -1743,7 +1862,7 @@ def distribution(
     from bearingload.models import _core
 
     undetermined, neglected = (None, None) if flags is None else flags
-    v, kappa, its, (b, lo, gen), tangent = answer
+    v, kappa, its, (block, gen), tangent = answer
     z = kappa.shape[1]
     case_in = np.array(
         (p.t_imp, p.scale, geo.R_i, geo.alpha0, geo.A, p.one_sided, p.f_ref)
@@ -1753,7 +1872,9 @@ def distribution(
     rows, per_ball = _core.combined_result(
         np.ascontiguousarray(v),
         case_in,
-        *(np.ascontiguousarray(a) for a in (gen, lo.sa, lo.ca, b.eps, lo.q, kappa)),
+        np.ascontiguousarray(gen),
+        block,
+        np.ascontiguousarray(kappa),
         misalignment is not None,
     )
     x, y, axial, tilt, tilt_cross, alpha0, play, moment = rows

@@ -211,6 +211,7 @@ def held_components(kind: str, mirror: np.ndarray, loads: tuple[np.ndarray, ...]
 class _State:
     """The balls of both bearings at the answer: their geometry, stiffness and loads."""
 
+    block: np.ndarray  # the balls and their loads (13, 2, n, z), as the core gives them
     balls: list[_ring.Balls]
     kappa: list[np.ndarray]
     loads: list[_ring.Loads]
@@ -234,10 +235,9 @@ def _solve_stages(pp: _Pair, v0: np.ndarray, curve: Any) -> tuple[Any, ...]:
     args += [cont(pp.held, dtype=np.uint8), cont(values, dtype=float), _comb.NODE_X]
     out = _core.solve_pair(*args, _comb.NODE_W, cont(v0, dtype=float))
     vh, vl, res, its, _, balls, kappa, gen, tangents, local, delta_p = out
-    q0 = np.where(p.deviation, p.pre * np.sqrt(p.pre), 0.0)
-    loads = [_ring.Loads(*balls[5:, k], q0) for k in range(2)]  # type: ignore[call-arg]
+    loads = [_ring.Loads(*balls[5:, k]) for k in range(2)]
     ball_sets = [_ring.Balls(*balls[:5, k]) for k in range(2)]
-    st = _State(ball_sets, list(kappa), loads, gen, tangents, local)
+    st = _State(balls, ball_sets, list(kappa), loads, gen, tangents, local)
     return vh, vl, res, its, st, delta_p
 
 
@@ -505,10 +505,10 @@ def _scaled(z: int, c: dict, geo: Any, k_ref: np.ndarray) -> tuple[Problem, np.n
     )
     if status.any():
         _refuse_scale(geo, k_ref, status == _core.SetupStatus.TOO_LIGHT, *(c[k] for k in names))
-    scale, a_hat, pre, gap, b_hi, b_lo, t_imp, f_ref = out
     none = np.zeros((n, 5), dtype=bool)
-    scaled = (scale, a_hat, pre, gap, b_hi, b_lo, np.zeros((n, 5)), t_imp, none, none)
-    return Problem(z, cos_, sin_, *scaled, f_ref, k_ref, np.ones(n, dtype=bool)), f, mirror
+    # out: the scale, the lengths (a_hat, pre, gap, b_hi, b_lo, t_imp), F
+    scaled = (out[0], out[1:7], np.zeros((n, 5)), none, none, out[7], k_ref)
+    return Problem(z, cos_, sin_, *scaled, np.ones(n, dtype=bool)), f, mirror
 
 
 def _refuse_scale(geo: Any, k_ref: np.ndarray, flagged: np.ndarray, *loads: np.ndarray) -> None:
@@ -619,7 +619,7 @@ def _result(kind: str, pp: _Pair, geo: Any, answer: tuple[Any, ...], c: dict,
     bearings = []
     total = np.zeros((n, 5, 5))
     for k in range(2):
-        lo, gen = st.loads[k], st.gen[k]
+        gen = st.gen[k]
         tangent = _comb.physical_tangent(p, geo, st.tangents[k], mirrored)
         axisymmetric = pp.held[:, 0]  # no radial force nor moment on a bearing, exactly
         given = {"radial_load": np.where(axisymmetric, 0.0, np.hypot(gen[:, 0], gen[:, 1]) * f_ref),
@@ -627,7 +627,7 @@ def _result(kind: str, pp: _Pair, geo: Any, answer: tuple[Any, ...], c: dict,
                  "moment": np.where(axisymmetric, 0.0, gen[:, 3] * f_ref * radius),
                  "clearance": np.zeros(n),
                  "cage_angle": c["cage_angle"]}  # fmt: skip
-        out = (st.local[k], st.kappa[k], its, (st.balls[k], lo, gen), tangent)
+        out = (st.local[k], st.kappa[k], its, (st.block[:, k], gen), tangent)
         bearings.append(_comb.distribution(p, geo, out, shape, given, None))
         total += maps[:, k].transpose(0, 2, 1) @ tangent @ maps[:, k]
     total[mirrored[:, None, None] & _COUPLING] = 0.0
