@@ -105,6 +105,7 @@ from __future__ import annotations
 
 import dataclasses
 import math
+import operator
 from collections.abc import Callable
 from dataclasses import dataclass
 from typing import Any
@@ -115,7 +116,9 @@ from bearingload import numerics, validate
 from bearingload.constants import STEEL_MODULUS
 from bearingload.errors import ConvergenceError, InputError
 from bearingload.models import _combined_ring as _ring
+from bearingload.models import _core
 from bearingload.models._combined_ring import ACCEPT, MAX_ITERATIONS, TOLERANCE, Problem
+from bearingload.models._ring import SYMMETRY_SNAP_DEG
 
 __all__ = ["CombinedDistribution", "solve_combined", "axial_only", "groove_geometry",
            "ball_stiffness_at", "TOLERANCE", "ACCEPT", "MAX_ITERATIONS"]  # fmt: skip
@@ -330,8 +333,6 @@ def ring_geometry(
     design contact angle alpha_0 [°] of an angular-contact bearing (:func:`angular_geometry`).
     The arithmetic is the compiled core's ``groove``, one loop over the cases; ``at(name, bad,
     unit)`` names the input's element of the first case refused (``clearance[1] = 5 mm``)."""
-    from bearingload.models import _core
-
     columns: tuple[np.ndarray, ...] = (dw, dm, fi, fo, clearance)
     shape = columns[0].shape
     if any(v.shape != shape for v in columns) or len(shape) != 1:
@@ -634,13 +635,15 @@ INPUT_ROWS = (
     "pitch_diameter",
     "f_i",
     "f_o",
-    "",
+    "groove",
     "clearance",
     "contact_angle",
     "stiffness",
 )
 _ROW = {name: i for i, name in enumerate(INPUT_ROWS) if name}
-_GROOVE = slice(9, 14)
+_GROOVE = slice(9, 14)  # (the last "groove": the clearance or the contact angle)
+#: The rows of one case of plain numbers by name (:func:`_plain_inputs`).
+_PLAIN_ROWS = operator.itemgetter(*INPUT_ROWS)
 
 
 def _inputs(raw: dict[str, Any]) -> tuple[tuple[int, ...], np.ndarray, dict[str, Any]]:
@@ -659,26 +662,29 @@ def _plain_inputs(raw: dict[str, Any]) -> np.ndarray | None:
     """The rows (17, 1) of one case whose inputs are all plain numbers (``float`` or ``int``)
     passing every check of :func:`_checked_inputs`, the cage angle taken mod 360°; None for
     any other."""
-    if not all(type(v) is float or type(v) is int or v is None for v in raw.values()):
+    values = [0.0 if x is None else x for x in raw.values()]
+    if not all(type(x) is float for x in values):
+        if not all(type(x) is float or type(x) is int for x in values):
+            return None
+        try:
+            values = [float(x) for x in values]
+        except OverflowError:
+            return None
+    if not math.isfinite(sum(values)):  # a NaN or infinity among them (or a sum beyond)
         return None
-    try:
-        v = {k: 0.0 if x is None else float(x) for k, x in raw.items()}
-    except OverflowError:
-        return None
-    if not all(math.isfinite(x) for x in v.values()):
-        return None
+    v = dict(zip(raw, values, strict=True))
     low, high = validate.CONFORMITY_RANGE
     ok = v["radial_load"] >= 0.0 and v["modulus"] > 0.0 and low < v["f_i"] < high
     ok = ok and low < v["f_o"] < high and (raw["stiffness"] is None or v["stiffness"] > 0.0)
-    if raw["contact_angle"] is not None:
+    angular = raw["contact_angle"] is not None
+    if angular:
         ok = ok and 0.0 <= v["contact_angle"] <= 60.0 and v["clearance"] == 0.0
         ok = ok and v["axial_load"] >= 0.0
     if not ok:
         return None
-    cols = np.array([v.get(name, 0.0) for name in INPUT_ROWS]).reshape(-1, 1)
-    cols[_GROOVE.stop - 1] = v["clearance" if raw["contact_angle"] is None else "contact_angle"]
-    np.mod(cols[_ROW["cage_angle"]], 360.0, out=cols[_ROW["cage_angle"]])
-    return cols
+    v["cage_angle"] %= 360.0  # (a float's % is numpy's mod: the same rule, the same bits)
+    v[""], v["groove"] = 0.0, v["contact_angle" if angular else "clearance"]
+    return np.array(_PLAIN_ROWS(v)).reshape(-1, 1)
 
 
 def _checked_inputs(raw: dict[str, Any]) -> tuple[tuple[int, ...], np.ndarray, dict[str, Any]]:
@@ -712,17 +718,15 @@ def _checked_inputs(raw: dict[str, Any]) -> tuple[tuple[int, ...], np.ndarray, d
     cols = np.zeros((len(INPUT_ROWS), flat[0].size))
     for name, col in zip(named, flat, strict=True):
         cols[_ROW[name]] = col
-    cols[_GROOVE.stop - 1] = cols[_ROW["clearance" if angular is None else "contact_angle"]]
+    cols[_ROW["groove"]] = cols[_ROW["clearance" if angular is None else "contact_angle"]]
     return shape, cols, named
 
 
 def _geometry_of(given: np.ndarray, angular: bool, at: Callable[..., str]) -> _Geometry:
     """:func:`ring_geometry` of the groove's rows of :data:`INPUT_ROWS` (5, n), flat."""
-    from bearingload.models import _core
-
     big_a, g, alpha0, r_i, fits = _core.groove(given, angular, *validate.CONFORMITY_RANGE)
     dw, dm, fi, fo = given[:4]
-    if not fits.all():
+    if np.count_nonzero(fits) < fits.size:  # (np.count_nonzero: a fifth of .all()'s time)
         _refuse_geometry(dw, dm, fi, fo, g >= big_a, at)
     return _Geometry(dw, dm, fi, fo, big_a, g, alpha0, r_i)
 
@@ -827,9 +831,6 @@ def _problem(
     :func:`reference_force`, :func:`check_scale` and :func:`_check_angular_scale` state.
     ``given``: the contact angle and the misalignment as given (None: not given); ``at``
     names the element of a refused case (:func:`ring_geometry`)."""
-    from bearingload.models import _core
-    from bearingload.models._ring import SYMMETRY_SNAP_DEG
-
     angular, imposed = (v is not None for v in given)
     n = cage.shape[0]
     lengths = np.array((geo.A, geo.g, geo.R_i), dtype=float)
@@ -838,13 +839,15 @@ def _problem(
     status, c, s, mirror, held, f, out = _core.combined_problem(
         z, loads, cage, lengths, k_ref, angular, imposed, limits
     )
-    if status.any():
+    if np.count_nonzero(status):
         _refuse_loads(loads, geo, k_ref, angular, at, status)
     fixed = np.zeros((n, 5), dtype=bool)
     fixed[:, 3] = imposed
+    one_sided = np.zeros(n, dtype=bool)
+    one_sided[:] = angular
     # out: the scale, the lengths (a_hat, pre, gap, b_hi, b_lo, t_imp), F
     scaled = (out[0], out[1:7], f, held, fixed, out[7], k_ref)
-    return Problem(z, c, s, *scaled, np.full(n, angular)), mirror
+    return Problem(z, c, s, *scaled, one_sided), mirror
 
 
 def _refuse_loads(
@@ -858,8 +861,6 @@ def _refuse_loads(
     """InputError on the loads the core's ``combined_problem`` flagged (``status``: no load, a
     moment over its lever beyond the largest number, loads too small or, angular contact, too
     large); the core's flags decide, these checks word the refusal."""
-    from bearingload.models import _core
-
     fr, fa, mm, mc = loads[:4]
     f_ref = reference_force(fr, fa, mm, mc, geo.R_i)
     if (f_ref <= 0).any():
@@ -910,7 +911,7 @@ def _equilibrium(p: Problem, geo: _Geometry, curve: StiffnessCurve | None, given
         solved = _solve_with_stiffness(p, geo, curve)
         got, checks = solved[:6], solved[6]
         neglected = np.zeros(p.f.shape[0], dtype=bool)
-        if not (checks[0] <= ACCEPT).all():
+        if np.count_nonzero(checks[0] <= ACCEPT) < checks[0].size:
             got = _thrust_retry(p, geo, curve, got)  # (each retry needs an unbalanced case)
             neglected = _neglect_thrust(p, geo, curve, got)
             _near_symmetric(p, geo, curve, got, given["cage_angle"])
@@ -921,9 +922,11 @@ def _equilibrium(p: Problem, geo: _Geometry, curve: StiffnessCurve | None, given
         raise ConvergenceError(
             exc.solver, exc.iterations, exc.residual, _described(given, rows), units=INPUT_UNITS
         ) from None
-    vh, vl, end, undetermined = _least_norm_tilt(p, (vh, vl), kappa, end, tangent[1])
-    if undetermined.any():
-        checks = None
+    undetermined = np.zeros(vh.shape[0], dtype=bool)
+    if np.count_nonzero(tangent[1][1]):  # (no case whose Hessian may be flat: none to move)
+        vh, vl, end, undetermined = _least_norm_tilt(p, (vh, vl), kappa, end, tangent[1])
+        if np.count_nonzero(undetermined):
+            checks = None
     return vh, vl, kappa, its, end, tangent, (undetermined, neglected), checks
 
 
@@ -1356,9 +1359,6 @@ def ball_directions(z: int, cage: np.ndarray) -> tuple[np.ndarray, np.ndarray, n
     apart differ in their last bit, which at a clearance of millions of elastic approaches
     unbalances the mirror balls' loads by 1e-5, against a y held at 0 by the symmetry.
     """
-    from bearingload.models import _core
-    from bearingload.models._ring import SYMMETRY_SNAP_DEG
-
     return _core.directions(z, np.ascontiguousarray(cage, dtype=float), SYMMETRY_SNAP_DEG)
 
 
@@ -1376,8 +1376,6 @@ def symmetry_locks(
     and has the symmetry, so a minimum with these components 0 exists. The rule is the compiled
     core's (``symmetry_locks``, also of :func:`solve_combined`'s set-up).
     """
-    from bearingload.models import _core
-
     rows = np.array((*loads, t_imp), dtype=float)
     held = _core.locks(z, np.ascontiguousarray(mirror, dtype=np.uint8), rows, imposed)
     fixed = np.zeros(held.shape, dtype=bool)
@@ -1419,7 +1417,7 @@ def _light_start(
     single precision, the far balls' approaches, 1e-2 at a ratio of 8e6, would be lost); it is
     a function of the case alone (each case is solved alone), and whatever its residual, the
     light case is solved and checked as any other."""
-    if not p.one_sided.any():
+    if not np.count_nonzero(p.one_sided):
         return np.zeros(0, dtype=np.int64), np.zeros((0, 5))
     rows = np.flatnonzero(p.one_sided & (p.a_hat > LIGHT_RATIO))
     if not rows.size:
@@ -1555,8 +1553,6 @@ def _near_symmetric(
     """The cases of ``got`` (updated in place) left unbalanced with a cage within
     :data:`NEAR_SYMMETRIC_DEG` of a symmetric position and no moment across the load line,
     solved each alone with the balls at the symmetric position (``p`` then holds it)."""
-    from bearingload.models import _core
-
     end = got[4]
     res = _ring.residual_of(p.f, end.gen, end.size, p.imposed)
     rows = np.flatnonzero(~(res <= ACCEPT) & (p.f[:, 4] == 0) & ~p.imposed.any(axis=1))
@@ -1634,15 +1630,14 @@ def hertz_setup(geo: _Geometry, e: np.ndarray, nu: np.ndarray) -> tuple[np.ndarr
     geometry the core cannot set up goes through the vectorised path of ``ball_stiffness``,
     which refuses it with the reason (or, where only the core's Newton did not settle, sets it
     up)."""
-    from bearingload.contact.hertz import ball_stiffness
-    from bearingload.models import _core
-
     params = np.array((geo.D_w, geo.d_m, geo.f_i, geo.f_o, e, nu), dtype=float).T.copy()
     key = params.tobytes() if params.shape[0] == 1 else None
     if key in _SETUP_CACHE:
         return tuple(a.copy() for a in _SETUP_CACHE[key])
     k0, values, bad = _core.hertz_curves(params, NODE_X)
     for i in np.flatnonzero(bad).tolist():
+        from bearingload.contact.hertz import ball_stiffness
+
         dw, dm, fi, fo, ee, nn = params[i]
         k = ball_stiffness(dw, dm / np.append(NODE_COS, 1.0), fi, fo, ee, nn).ball
         k0[i], values[i] = k[-1], (k[:-1] / k[-1] - 1.0) / (NODE_COS - 1.0)
@@ -1688,8 +1683,6 @@ def _solve_with_stiffness(
     :func:`_light_start`. ``strict``: a case whose stiffness updates ran out raises
     ConvergenceError naming its row (``rows``); else the cases that failed (n,) bool come last,
     each case's fate its own."""
-    from bearingload.models import _core
-
     n = p.f.shape[0]
     given = np.zeros(n, dtype=np.uint8)
     start0 = np.zeros((n, 5))
@@ -1717,7 +1710,9 @@ def _solve_with_stiffness(
         first_stage_steps=_ring.FIRST_STAGE_STEPS,
     )
     balls, gen, size, res = at
-    if strict and status.any():  # the cases by their rows: the caller names their inputs
+    if strict and np.count_nonzero(
+        status
+    ):  # the cases by their rows: the caller names their inputs
         failed = status != _ring.OK
         raise ConvergenceError(
             "combined-load ball stiffness update",
@@ -1744,7 +1739,7 @@ def _checked(
     if res is None:
         res = _ring.residual_of(p.f, end.gen, end.size, p.imposed)
     bad = ~(res <= ACCEPT)
-    if bad.any():
+    if np.count_nonzero(bad):
         known = res[bad][~np.isnan(res[bad])]  # nanmax of all-NaN would warn on the terminal
         raise ConvergenceError(
             "combined-load ring equilibrium",
@@ -1753,7 +1748,7 @@ def _checked(
             _described(given, bad),
             units=INPUT_UNITS,
         )
-    if near_edge is None or near_edge.any():
+    if near_edge is None or np.count_nonzero(near_edge):
         _check_edge(end, given)
     return end.block, end.gen
 
@@ -1837,10 +1832,8 @@ def physical_tangent(
     couplings within the rounding of their sums over the balls (the core's ``physical``:
     ``|K_ab| <= sqrt(K_aa K_bb)`` for this positive semi-definite matrix, so a coupling below 4
     z eps of that does not follow the order of the summation)."""
-    from bearingload.models import _core
-
     t, radius = tangent.copy(), np.ascontiguousarray(geo.R_i, dtype=float)
-    if _core.physical(t, p.f_ref / p.scale, radius, mirrored.view(np.uint8), p.z).any():
+    if np.count_nonzero(_core.physical(t, p.f_ref / p.scale, radius, mirrored.view(np.uint8), p.z)):
         # a lever of 1e300 mm: its square times K overflows
         raise InputError(
             "tilt_radius", "is so large that the tilting stiffness (lever^2 K) overflows"
@@ -1859,8 +1852,6 @@ def distribution(
 ) -> CombinedDistribution:
     """Back to physical units and the case shape; ``flags``: the cases whose tilt the loads do
     not determine and those whose negligible thrust was left out (default none)."""
-    from bearingload.models import _core
-
     undetermined, neglected = (None, None) if flags is None else flags
     v, kappa, its, (block, gen), tangent = answer
     z = kappa.shape[1]
@@ -1877,34 +1868,33 @@ def distribution(
         np.ascontiguousarray(kappa),
         misalignment is not None,
     )
-    x, y, axial, tilt, tilt_cross, alpha0, play, moment = rows
-    phi, alpha, approach, k_ball, q = per_ball
+    # one case of plain numbers: Python floats, as numerics.scalar_out gives them
+    cases = rows.reshape((8,) + shape) if shape else rows[:, 0].tolist()
+    x, y, axial, tilt, tilt_cross, alpha0, play, moment = cases
+    phi, alpha, approach, k_ball, q = per_ball.reshape((5,) + shape + (z,))
 
     def case(a: np.ndarray) -> Any:
         return np.asarray(a).reshape(shape) if shape else a.item()
-
-    def ball(a: np.ndarray) -> np.ndarray:
-        return a.reshape(shape + (z,))
 
     return CombinedDistribution(
         balls=z,
         load=case(given["radial_load"]),
         axial_load=case(given["axial_load"]),
-        moment=case(moment),
+        moment=moment,
         clearance=case(given["clearance"]),
         cage_angle=case(given["cage_angle"]),
-        free_contact_angle=case(alpha0),
-        axial_play=case(play),
-        x=case(x),
-        y=case(y),
-        axial=case(axial),
-        tilt=case(tilt),
-        tilt_cross=case(tilt_cross),
-        ball_angles=ball(phi),
-        contact_angles=ball(alpha),
-        ball_approaches=ball(approach),
-        ball_stiffnesses=ball(k_ball),
-        ball_loads=ball(q),
+        free_contact_angle=alpha0,
+        axial_play=play,
+        x=x,
+        y=y,
+        axial=axial,
+        tilt=tilt,
+        tilt_cross=tilt_cross,
+        ball_angles=phi,
+        contact_angles=alpha,
+        ball_approaches=approach,
+        ball_stiffnesses=k_ball,
+        ball_loads=q,
         tilt_radius=case(geo.R_i),
         stiffness_matrix=tangent.reshape(shape + (5, 5)),
         iterations=case(its),
