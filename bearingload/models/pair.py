@@ -53,7 +53,6 @@ import numpy as np
 from bearingload import numerics, validate
 from bearingload.constants import STEEL_MODULUS
 from bearingload.errors import ConvergenceError, InputError
-from bearingload.models import _combined_ring as _ring
 from bearingload.models import combined as _comb
 from bearingload.models._combined_ring import ACCEPT, Problem
 from bearingload.models.combined import CombinedDistribution, StiffnessViews
@@ -212,9 +211,7 @@ class _State:
     """The balls of both bearings at the answer: their geometry, stiffness and loads."""
 
     block: np.ndarray  # the balls and their loads (13, 2, n, z), as the core gives them
-    balls: list[_ring.Balls]
-    kappa: list[np.ndarray]
-    loads: list[_ring.Loads]
+    kappa: np.ndarray  # their stiffness deviations (2, n, z)
     gen: np.ndarray  # each bearing's generalised forces, local and scaled (2, n, 5)
     tangents: np.ndarray  # each bearing's true tangent, local and scaled (2, n, 5, 5)
     local: np.ndarray  # each bearing's local position, scaled (2, n, 5)
@@ -235,9 +232,7 @@ def _solve_stages(pp: _Pair, v0: np.ndarray, curve: Any) -> tuple[Any, ...]:
     args += [cont(pp.held, dtype=np.uint8), cont(values, dtype=float), _comb.NODE_X]
     out = _core.solve_pair(*args, _comb.NODE_W, cont(v0, dtype=float))
     vh, vl, res, its, _, balls, kappa, gen, tangents, local, delta_p = out
-    loads = [_ring.Loads(*balls[5:, k]) for k in range(2)]
-    ball_sets = [_ring.Balls(*balls[:5, k]) for k in range(2)]
-    st = _State(balls, ball_sets, list(kappa), loads, gen, tangents, local)
+    st = _State(balls, kappa, gen, tangents, local)
     return vh, vl, res, its, st, delta_p
 
 
@@ -573,7 +568,7 @@ def _symmetric(z: int, cage: np.ndarray, rows: np.ndarray) -> np.ndarray:
 
 def _accepted(res: np.ndarray, its: np.ndarray, given: dict) -> None:
     bad = ~(res <= ACCEPT)
-    if bad.any():
+    if np.count_nonzero(bad):  # (np.count_nonzero: a fifth of .any()'s time on one case)
         known = res[bad][np.isfinite(res[bad])]
         cases = {k: v[bad] for k, v in given.items()}
         raise ConvergenceError(
@@ -584,15 +579,16 @@ def _accepted(res: np.ndarray, its: np.ndarray, given: dict) -> None:
 
 def _check_edge(st: _State, given: dict) -> None:
     """Refuse a loaded ball at the groove edge (contact angle 90°), as the single bearing."""
+    b = st.block  # rho, ca, sa, root: rows 0, 5, 6, 10 (2, n, z)
+    near = (b[10] > 0) & ((b[0] <= 0) | (b[5] < 1e-8))  # (elsewhere below 90° - 5e-7°)
+    if not np.count_nonzero(near):
+        return
+    edge = near & ((b[0] <= 0) | (np.rad2deg(np.arctan2(np.abs(b[6]), b[5])) >= 90.0))
     for k in range(2):
-        b, lo = st.balls[k], st.loads[k]
-        edge = (lo.root > 0) & (
-            (b.rho <= 0) | (np.rad2deg(np.arctan2(np.abs(lo.sa), lo.ca)) >= 90.0)
-        )
-        if edge.any():
+        if edge[k].any():
             from bearingload.errors import format_cases
 
-            case = int(np.nonzero(edge)[0][0])
+            case = int(np.nonzero(edge[k])[0][0])
             one = {key: v[[case]] for key, v in given.items()}
             raise InputError(
                 "axial_load",
@@ -616,42 +612,63 @@ def _result(kind: str, pp: _Pair, geo: Any, answer: tuple[Any, ...], c: dict,
     scale, f_ref, radius = p.scale, p.f_ref, geo.R_i
     n = vh.shape[0]
     maps = shaft_maps(pp.sigma, pp.lever * radius[:, None])  # physical: tilts in radians
+    axisymmetric = pp.held[:, 0]  # no radial force nor moment on a bearing, exactly
+    gen = st.gen  # both bearings' loads at once (2, n), each element as alone
+    radial = np.where(axisymmetric, 0.0, np.hypot(gen[..., 0], gen[..., 1]) * f_ref)
+    moment = np.where(axisymmetric, 0.0, gen[..., 3] * f_ref * radius)
     bearings = []
     total = np.zeros((n, 5, 5))
     for k in range(2):
-        gen = st.gen[k]
         tangent = _comb.physical_tangent(p, geo, st.tangents[k], mirrored)
-        axisymmetric = pp.held[:, 0]  # no radial force nor moment on a bearing, exactly
-        given = {"radial_load": np.where(axisymmetric, 0.0, np.hypot(gen[:, 0], gen[:, 1]) * f_ref),
-                 "axial_load": gen[:, 2] * f_ref,
-                 "moment": np.where(axisymmetric, 0.0, gen[:, 3] * f_ref * radius),
-                 "clearance": np.zeros(n),
-                 "cage_angle": c["cage_angle"]}  # fmt: skip
-        out = (st.local[k], st.kappa[k], its, (st.block[:, k], gen), tangent)
+        given = {
+            "radial_load": radial[k],
+            "axial_load": gen[k, :, 2] * f_ref,
+            "moment": moment[k],
+            "clearance": np.zeros(n),
+            "cage_angle": c["cage_angle"],
+        }
+        out = (st.local[k], st.kappa[k], its, (st.block[:, k], gen[k]), tangent)
         bearings.append(_comb.distribution(p, geo, out, shape, given, None))
         total += maps[:, k].transpose(0, 2, 1) @ tangent @ maps[:, k]
     total[mirrored[:, None, None] & _COUPLING] = 0.0
-    unloaded = np.empty((n, 2), dtype=bool)
-    for k in range(2):
-        unloaded[:, k] = ~st.loads[k].q.any(axis=1)
+    unloaded = np.ascontiguousarray(~st.block[8].any(axis=2).T)  # no ball loaded (n, 2)
     v = vh + vl
+    offset, thrust = _lift_off(pp, curve, delta_p)
+    lift = None if kind == "DT" else np.where(c["axial_load"] < 0, -thrust, thrust)
+    moved = v[:, :3] * scale[:, None]
+    tilts = np.rad2deg(v[:, 3:] * scale[:, None] / radius[:, None])
+    rows = np.array(
+        [c[k] for k in ("radial_load", "axial_load", "moment", "moment_cross", "preload")]
+        + [offset * scale, c["width"], *moved.T, *tilts.T, res]
+    )  # one case of plain numbers: Python floats, as numerics.scalar_out gives them
+    cases = rows.reshape((13,) + shape) if shape else rows[:, 0].tolist()
+    load, axial_load, moment_, moment_cross, preload, offset_, width = cases[:7]
+    x, y, axial, tilt, tilt_cross, residual = cases[7:]
 
     def case(a: Any) -> Any:
         return np.asarray(a).reshape(shape) if shape else np.asarray(a).item()
 
-    offset, thrust = _lift_off(pp, curve, delta_p)
-    lift = None if kind == "DT" else case(np.where(c["axial_load"] < 0, -thrust, thrust))
     return PairDistribution(
-        arrangement=kind, bearings=(bearings[0], bearings[1]),
-        load=case(c["radial_load"]), axial_load=case(c["axial_load"]), moment=case(c["moment"]),
-        moment_cross=case(c["moment_cross"]), preload=case(c["preload"]),
-        preload_offset=case(offset * scale), width=case(c["width"]),
-        x=case(v[:, 0] * scale), y=case(v[:, 1] * scale), axial=case(v[:, 2] * scale),
-        tilt=case(np.rad2deg(v[:, 3] * scale / radius)),
-        tilt_cross=case(np.rad2deg(v[:, 4] * scale / radius)),
-        stiffness_matrix=total.reshape(shape + (5, 5)), unloaded=unloaded.reshape(shape + (2,)),
-        lift_off_axial_load=lift, residual=case(res), iterations=case(its),
-    )  # fmt: skip
+        arrangement=kind,
+        bearings=(bearings[0], bearings[1]),
+        load=load,
+        axial_load=axial_load,
+        moment=moment_,
+        moment_cross=moment_cross,
+        preload=preload,
+        preload_offset=offset_,
+        width=width,
+        x=x,
+        y=y,
+        axial=axial,
+        tilt=tilt,
+        tilt_cross=tilt_cross,
+        stiffness_matrix=total.reshape(shape + (5, 5)),
+        unloaded=unloaded.reshape(shape + (2,)),
+        lift_off_axial_load=None if lift is None else case(lift),
+        residual=residual,
+        iterations=case(its),
+    )
 
 
 def _lift_off(pp: _Pair, curve: Any, delta: np.ndarray) -> tuple[np.ndarray, np.ndarray]:
