@@ -2019,9 +2019,8 @@ cdef void axial_position(Case *cs, double delta, double *hi, double *lo) noexcep
         quick(sum_, err + lo[0], hi, lo)
 
 
-def solve_pair(const double[:, ::1] c, const double[:, ::1] s, const double[::1] a_hat,
-               const double[::1] pre, const double[::1] gap, const double[::1] b_hi,
-               const double[::1] b_lo, const double[::1] sigma, const double[:, ::1] arm,
+def solve_pair(const double[:, ::1] c, const double[:, ::1] s, const double[:, ::1] lengths,
+               const double[::1] sigma, const double[:, ::1] arm,
                const double[::1] preload, const double[:, ::1] f, const unsigned char[:, ::1] held,
                const double[:, ::1] curve, const double[::1] node_x, const double[::1] node_w,
                const double[:, ::1] v0):
@@ -2030,7 +2029,8 @@ def solve_pair(const double[:, ::1] c, const double[:, ::1] s, const double[::1]
     with the balls in double-double (``pair_newton``).
 
     Arrays over the n cases: ``c``, ``s`` (n, z) the balls of either bearing (one-sided
-    contacts); ``a_hat``, ``pre``, ``gap``, ``b_hi``, ``b_lo`` (n,) their scaled geometry;
+    contacts); ``lengths`` (6, n) their scaled geometry, a_hat, pre, gap, b_hi, b_lo (and
+    the imposed tilt, not read: the Problem's rows);
     ``sigma`` (2,) +1 or -1 (a mirrored bearing); ``arm`` (n, 2) -z_k / R_i; ``preload`` (n,)
     the thrust each bearing carries with no external load (its approach ``preload_delta``, 0
     where not positive; both bearings at the axial offset of ``axial_position`` with every ball
@@ -2085,7 +2085,8 @@ def solve_pair(const double[:, ::1] c, const double[:, ::1] s, const double[::1]
     pr.first_halvings = PAIR_FIRST_HALVINGS
     with nogil:
         for k in range(n):
-            pair_case(&pr, k, z, &c[k, 0], &s[k, 0], a_hat[k], pre[k], gap[k], b_hi[k], b_lo[k])
+            pair_case(&pr, k, z, &c[k, 0], &s[k, 0], lengths[0, k], lengths[1, k], lengths[2, k],
+                      lengths[3, k], lengths[4, k])
             pr.bear.curve = &curve[k, 0] if has_curve else NULL
             pr.bear.node_x = &node_x[0]
             pr.bear.node_w = &node_w[0]

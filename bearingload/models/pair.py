@@ -186,7 +186,7 @@ def shaft_maps(sigma: np.ndarray, lever: np.ndarray) -> np.ndarray:
     diagonal = np.ones((2, 5))
     diagonal[:, 2:] = sigma[:, None]
     m = np.zeros((lever.shape[0], 2, 5, 5))
-    m[:, :, range(5), range(5)] = diagonal
+    m.reshape(-1, 2, 25)[:, :, ::6] = diagonal  # (the diagonal: every sixth of the 25)
     m[:, :, 0, 3] = m[:, :, 1, 4] = -lever
     return m
 
@@ -198,12 +198,18 @@ def held_components(kind: str, mirror: np.ndarray, loads: tuple[np.ndarray, ...]
     bearings' mirror image across the pair's mid-plane (not DT's) without a thrust or moment.
     ``loads`` = (F_r, F_a, M, M_c) (n,) each."""
     fr, fa, mm, mc = loads
-    held = (mirror & (mc == 0))[:, None] & np.array([False, True, False, False, True])
+    across, radial, axial = _HELD
+    held = (mirror & (mc == 0))[:, None] & across
     no_moment = (mm == 0) & (mc == 0)
-    held |= ((fr == 0) & no_moment)[:, None] & np.array([True, True, False, True, True])
+    held |= ((fr == 0) & no_moment)[:, None] & radial
     if kind != "DT":
-        held |= ((fa == 0) & no_moment)[:, None] & np.array([False, False, True, True, True])
+        held |= ((fa == 0) & no_moment)[:, None] & axial
     return held
+
+
+#: The components of (x, y, a, t, t_c) each symmetry of :func:`held_components` holds: the
+#: mirror about the load line, the z-fold symmetry, the mirror across the mid-plane.
+_HELD = np.array([[0, 1, 0, 0, 1], [1, 1, 0, 1, 1], [0, 0, 1, 1, 1]], dtype=bool)
 
 
 @dataclass
@@ -226,11 +232,10 @@ def _solve_stages(pp: _Pair, v0: np.ndarray, curve: Any) -> tuple[Any, ...]:
 
     p = pp.prob
     values = np.zeros((v0.shape[0], 0)) if curve is None else curve.values
-    balls_in = (p.c, p.s, p.a_hat, p.pre, p.gap, p.b_hi, p.b_lo)
     cont = np.ascontiguousarray
-    args = [cont(a, dtype=float) for a in balls_in + (pp.sigma, -pp.lever, pp.preload, pp.f)]
-    args += [cont(pp.held, dtype=np.uint8), cont(values, dtype=float), _comb.NODE_X]
-    out = _core.solve_pair(*args, _comb.NODE_W, cont(v0, dtype=float))
+    args = [cont(a, dtype=float) for a in (pp.sigma, -pp.lever, pp.preload, pp.f)]
+    args += [cont(pp.held).view(np.uint8), cont(values, dtype=float), _comb.NODE_X]
+    out = _core.solve_pair(p.c, p.s, p.lengths, *args, _comb.NODE_W, cont(v0, dtype=float))
     vh, vl, res, its, _, balls, kappa, gen, tangents, local, delta_p = out
     st = _State(balls, kappa, gen, tangents, local)
     return vh, vl, res, its, st, delta_p
@@ -333,7 +338,7 @@ def solve_pair(
         shape, c = _checked(kind, named)
     c["cage_angle"] = np.mod(c["cage_angle"], 360.0)
     narrow = c["width"] < c["ball_diameter"]
-    if narrow.any():  # no ring holds its balls so; the shaft's tilt then has no lever
+    if np.count_nonzero(narrow):  # no ring holds its balls so; the shaft's tilt then has no lever
         i = int(np.argmax(narrow))
         raise InputError(
             "width",
@@ -342,7 +347,9 @@ def solve_pair(
             element=validate.element_at(named["width"], narrow, shape, "mm"),
         )
     wide = c["width"] > WIDTH_MAX * c["pitch_diameter"]
-    if wide.any():  # a shaft between two supports, not a pair (a width of 1e9 mm diverged)
+    if np.count_nonzero(
+        wide
+    ):  # a shaft between two supports, not a pair (a width of 1e9 mm diverged)
         i = int(np.argmax(wide))
         raise InputError(
             "width",
@@ -466,9 +473,11 @@ def _solve(
     given = {k: c[k] for k in NAMED}
     unbalanced = ~(res <= ACCEPT)
     near = (
-        _near_symmetric(z, c["cage_angle"], mc) & unbalanced if snap and unbalanced.any() else None
+        _near_symmetric(z, c["cage_angle"], mc) & unbalanced
+        if snap and np.count_nonzero(unbalanced)
+        else None
     )
-    if near is not None and near.any():
+    if near is not None and np.count_nonzero(near):
         return _solve(
             z, kind, c | {"cage_angle": _symmetric(z, c["cage_angle"], near)}, shape, False
         )
@@ -498,7 +507,7 @@ def _scaled(z: int, c: dict, geo: Any, k_ref: np.ndarray) -> tuple[Problem, np.n
     status, cos_, sin_, mirror, _, f, out = _core.combined_problem(
         z, rows, cage, lengths, k_ref, False, False, limits
     )
-    if status.any():
+    if np.count_nonzero(status):
         _refuse_scale(geo, k_ref, status == _core.SetupStatus.TOO_LIGHT, *(c[k] for k in names))
     none = np.zeros((n, 5), dtype=bool)
     # out: the scale, the lengths (a_hat, pre, gap, b_hi, b_lo, t_imp), F
