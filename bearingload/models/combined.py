@@ -341,10 +341,10 @@ def ring_geometry(
     big_a, g, alpha0, r_i, fits = _core.groove(
         np.array(columns, dtype=float).reshape(5, -1), angular, *validate.CONFORMITY_RANGE
     )
-    if not fits.all():
+    if np.count_nonzero(fits) < fits.size:
         _refuse_geometry(dw, dm, fi, fo, (g >= big_a).reshape(shape), at)
-    cut = tuple(a.reshape(shape) for a in (big_a, g, alpha0, r_i))
-    return _Geometry(dw, dm, fi, fo, *cut)
+    cut = (big_a, g, alpha0, r_i)  # (n,): the shape of flat arrays, else reshaped to it
+    return _Geometry(dw, dm, fi, fo, *(cut if len(shape) == 1 else (a.reshape(shape) for a in cut)))
 
 
 def _refuse_geometry(dw: Any, dm: Any, fi: Any, fo: Any, out: Any, at: Callable[..., str]) -> None:

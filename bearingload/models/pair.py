@@ -553,10 +553,10 @@ def _start(pp: _Pair, z: int, geo: Any, pre: np.ndarray) -> np.ndarray:
     n = f.shape[0]
     v = np.zeros((n, 5))
     ca, sa = np.cos(geo.alpha0), np.sin(geo.alpha0)
-    share = np.where(pp.sigma[1] > 0, 0.5, 1.0) * np.abs(f[:, 2])
+    share = (0.5 if pp.sigma[1] > 0 else 1.0) * np.abs(f[:, 2])
     v[:, 2] = np.sign(f[:, 2]) * np.cbrt(share / (z * sa)) ** 2 / sa
     v[:, 0] = np.cbrt(2.5 * f[:, 0] / (z * ca)) ** 2 / ca
-    light = pre >= np.max(np.abs(f), axis=1)
+    light = pre >= np.abs(f).max(axis=1)
     return np.where(light[:, None], 0.0, v)
 
 
