@@ -202,12 +202,16 @@ def residual_of(f: np.ndarray, gen: np.ndarray, size: np.ndarray, held: np.ndarr
 class Point:
     """The balls and their loads (``block``, (13, n, z): the arrays of :class:`Balls`, then of
     :class:`Loads`, as the compiled core gives them), the generalised forces, term sizes and
-    residual at the positions of some cases (the rows of every array)."""
+    residual at the positions of some cases (the rows of every array); ``checks``: the core's
+    checks of a solve's answer (``solve``: the residual with the imposed components held (n,),
+    whether a loaded ball may sit at the groove edge (n,)), None where not known (a point
+    some of whose rows were replaced since: :meth:`put`)."""
 
     block: np.ndarray
     gen: np.ndarray
     size: np.ndarray
     res: np.ndarray
+    checks: tuple[np.ndarray, np.ndarray] | None = None
 
     @property
     def b(self) -> Balls:
@@ -233,7 +237,8 @@ class Point:
         return Point(balls, gen, size, res)
 
     def put(self, rows: np.ndarray, other: Point) -> None:
-        """Overwrite the rows ``rows`` with ``other`` (in place)."""
+        """Overwrite the rows ``rows`` with ``other`` (in place); the checks are then not known."""
         self.block[:, rows] = other.block
+        self.checks = None
         for name in ("gen", "size", "res"):
             getattr(self, name)[rows] = getattr(other, name)

@@ -603,8 +603,8 @@ def solve_combined(
     if misalignment is not None:  # the moment is then the reaction, not an input
         given["misalignment"] = tilt_deg
     with np.errstate(all="ignore"):
-        vh, vl, kappa, its, end, tangent, flags, checks = _equilibrium(problem, geo, curve, given)
-        checked = _checked(problem, end, its, given, checks)
+        vh, vl, kappa, its, end, tangent, flags = _equilibrium(problem, geo, curve, given)
+        checked = _checked(problem, end, its, given)
         answer = (
             vh + vl,
             kappa,
@@ -903,19 +903,17 @@ def _cases(named: dict[str, np.ndarray]) -> tuple[tuple[int, ...], list[np.ndarr
 
 def _equilibrium(p: Problem, geo: _Geometry, curve: StiffnessCurve | None, given: dict) -> tuple:
     """Every case solved (:func:`_thrust_retry`), a tilt the loads do not determine taken at
-    its least (:func:`_least_norm_tilt`): as :func:`_solve_with_stiffness`, which cases' tilts
-    are undetermined and which thrusts neglected, and the core's checks of the answers (None
-    where some were replaced or moved since: :func:`_checked` then measures them). A case whose
-    stiffness updates run out raises ConvergenceError naming its inputs (``given``)."""
+    its least (:func:`_least_norm_tilt`): as :func:`_solve_with_stiffness`, and which cases'
+    tilts are undetermined and which thrusts neglected. A case whose stiffness updates run out
+    raises ConvergenceError naming its inputs (``given``)."""
     try:
-        solved = _solve_with_stiffness(p, geo, curve)
-        got, checks = solved[:6], solved[6]
+        got = _solve_with_stiffness(p, geo, curve)
         neglected = np.zeros(p.f.shape[0], dtype=bool)
-        if np.count_nonzero(checks[0] <= ACCEPT) < checks[0].size:
+        res = got[4].checks[0]  # (the residual with the imposed components held)
+        if np.count_nonzero(res <= ACCEPT) < res.size:
             got = _thrust_retry(p, geo, curve, got)  # (each retry needs an unbalanced case)
             neglected = _neglect_thrust(p, geo, curve, got)
             _near_symmetric(p, geo, curve, got, given["cage_angle"])
-            checks = None  # (the answers of some cases replaced: _checked measures them)
         vh, vl, kappa, its, end, tangent = got
     except ConvergenceError as exc:
         rows = np.asarray(exc.cases["rows"])
@@ -925,9 +923,7 @@ def _equilibrium(p: Problem, geo: _Geometry, curve: StiffnessCurve | None, given
     undetermined = np.zeros(vh.shape[0], dtype=bool)
     if np.count_nonzero(tangent[1][1]):  # (no case whose Hessian may be flat: none to move)
         vh, vl, end, undetermined = _least_norm_tilt(p, (vh, vl), kappa, end, tangent[1])
-        if np.count_nonzero(undetermined):
-            checks = None
-    return vh, vl, kappa, its, end, tangent, (undetermined, neglected), checks
+    return vh, vl, kappa, its, end, tangent, (undetermined, neglected)
 
 
 #: A free direction of the ring along which its stiffness (the frozen-K Hessian of the
@@ -1710,9 +1706,7 @@ def _solve_with_stiffness(
         first_stage_steps=_ring.FIRST_STAGE_STEPS,
     )
     balls, gen, size, res = at
-    if strict and np.count_nonzero(
-        status
-    ):  # the cases by their rows: the caller names their inputs
+    if strict and np.count_nonzero(status):  # by their rows: the caller names their inputs
         failed = status != _ring.OK
         raise ConvergenceError(
             "combined-load ball stiffness update",
@@ -1720,22 +1714,20 @@ def _solve_with_stiffness(
             float(np.max(res[failed])),
             {"rows": np.flatnonzero(failed)},
         )
-    point = _ring.Point(balls, gen, size, res)
+    point = _ring.Point(balls, gen, size, res, checks)
     if not strict:
         return vh, vl, kappa, total, point, (tangent, holding), status != _ring.OK
-    return vh, vl, kappa, total, point, (tangent, holding), checks
+    return vh, vl, kappa, total, point, (tangent, holding)
 
 
-def _checked(
-    p: Problem, end: _ring.Point, its: np.ndarray, given: dict, checks: tuple | None = None
-) -> tuple[Any, ...]:
+def _checked(p: Problem, end: _ring.Point, its: np.ndarray, given: dict) -> tuple[Any, ...]:
     """The balls and their loads (``end.block``) and the forces at the answer;
     ConvergenceError where the residual (held components but an imposed tilt included) is
     above ACCEPT, InputError where a loaded ball sits at the groove edge (its groove centres
     crossed, or its contact angle 90° to the digits of a double). ``end``: the point at the
-    answer (:func:`_solve_with_stiffness`); ``checks``: the core's residual and groove-edge
-    flag of it (None: measured here)."""
-    res, near_edge = (None, None) if checks is None else checks
+    answer (:func:`_solve_with_stiffness`), with the core's checks of it where known (else
+    measured here)."""
+    res, near_edge = (None, None) if end.checks is None else end.checks
     if res is None:
         res = _ring.residual_of(p.f, end.gen, end.size, p.imposed)
     bad = ~(res <= ACCEPT)
