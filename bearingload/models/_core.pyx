@@ -3696,6 +3696,35 @@ def groove(const double[:, ::1] given, bint angular, double low, double high):
     return out_a
 
 
+def pair_loads(const double[:, :, ::1] gen, const double[:, :, :, ::1] balls,
+               const unsigned char[::1] axisymmetric, const double[::1] f_ref,
+               const double[::1] radius):
+    """The loads each bearing of n pairs carries (bearingload.models.pair) from its scaled
+    generalised forces ``gen`` (2, n, 5): (3, 2, n) = the size of its radial force
+    ``hypot(F_x, F_y) F``, its thrust ``F_a F`` [N] and its moment ``M F R_i`` [N mm] (the
+    radial force and the moment exactly 0 where the case is ``axisymmetric``, (n,) uint8:
+    no radial load nor moment on the shaft); and whether it carries none, (n, 2) uint8: no
+    ball's load (row 8 of the balls at the answer, (13, 2, n, z)) above 0."""
+    cdef Py_ssize_t n = gen.shape[1], k
+    cdef int z = <int> balls.shape[3], b, j
+    loads_a, unloaded_a = np.empty((3, 2, n)), np.empty((n, 2), dtype=bool)
+    cdef double[:, :, ::1] loads = loads_a
+    cdef unsigned char[:, ::1] unloaded = unloaded_a.view(np.uint8)
+    with nogil:
+        for b in range(2):
+            for k in range(n):
+                loads[0, b, k] = hypot(gen[b, k, 0], gen[b, k, 1]) * f_ref[k]
+                loads[1, b, k] = gen[b, k, 2] * f_ref[k]
+                loads[2, b, k] = gen[b, k, 3] * f_ref[k] * radius[k]
+                if axisymmetric[k]:
+                    loads[0, b, k] = loads[2, b, k] = 0.0
+                unloaded[k, b] = True
+                for j in range(z):
+                    if balls[8, b, k, j] != 0:
+                        unloaded[k, b] = False
+    return loads_a, unloaded_a
+
+
 def pair_lift_off(int z, const double[::1] a_hat, const double[::1] gap,
                   const double[::1] delta_p, const double[::1] f_ref, const double[:, ::1] curve,
                   const double[::1] node_x, const double[::1] node_w):

@@ -53,6 +53,7 @@ import numpy as np
 from bearingload import numerics, validate
 from bearingload.constants import STEEL_MODULUS
 from bearingload.errors import ConvergenceError, InputError
+from bearingload.models import _core
 from bearingload.models import combined as _comb
 from bearingload.models._combined_ring import ACCEPT, Problem
 from bearingload.models.combined import CombinedDistribution, StiffnessViews
@@ -228,8 +229,6 @@ def _solve_stages(pp: _Pair, v0: np.ndarray, curve: Any) -> tuple[Any, ...]:
     solve_pair`: Newton in plain doubles to a residual of 1e-9, then with the balls in
     double-double to the tolerance): (position hi, lo, residual, steps, the balls, their loads
     and forces there, the preload approach)."""
-    from bearingload.models import _core
-
     p = pp.prob
     values = np.zeros((v0.shape[0], 0)) if curve is None else curve.values
     cont = np.ascontiguousarray
@@ -493,7 +492,6 @@ def _scaled(z: int, c: dict, geo: Any, k_ref: np.ndarray) -> tuple[Problem, np.n
     the preload (n, 5) and which cases are mirrored about the load line: the compiled core's
     ``combined_problem`` (one loop over the cases); the loads it flags refused by
     :func:`_refuse_scale`."""
-    from bearingload.models import _core
     from bearingload.models._ring import SYMMETRY_SNAP_DEG
 
     names = ("radial_load", "axial_load", "moment", "moment_cross", "preload")
@@ -512,7 +510,9 @@ def _scaled(z: int, c: dict, geo: Any, k_ref: np.ndarray) -> tuple[Problem, np.n
     none = np.zeros((n, 5), dtype=bool)
     # out: the scale, the lengths (a_hat, pre, gap, b_hi, b_lo, t_imp), F
     scaled = (out[0], out[1:7], np.zeros((n, 5)), none, none, out[7], k_ref)
-    return Problem(z, cos_, sin_, *scaled, np.ones(n, dtype=bool)), f, mirror
+    one_sided = np.zeros(n, dtype=bool)
+    one_sided[:] = True  # (np.ones is a Python function: ten times the cost on one case)
+    return Problem(z, cos_, sin_, *scaled, one_sided), f, mirror
 
 
 def _refuse_scale(geo: Any, k_ref: np.ndarray, flagged: np.ndarray, *loads: np.ndarray) -> None:
@@ -563,8 +563,6 @@ def _start(pp: _Pair, z: int, geo: Any, pre: np.ndarray) -> np.ndarray:
 def _near_symmetric(z: int, cage: np.ndarray, mc: np.ndarray) -> np.ndarray:
     """Which cases have a cage [°] within NEAR_SYMMETRIC_DEG of a symmetric position and no
     moment across the load line (the core's symmetry rule, ``directions``, at that snap)."""
-    from bearingload.models import _core
-
     near = _core.directions(z, np.ascontiguousarray(cage, dtype=float), _comb.NEAR_SYMMETRIC_DEG)
     return near[2] & (mc == 0)
 
@@ -622,33 +620,31 @@ def _result(kind: str, pp: _Pair, geo: Any, answer: tuple[Any, ...], c: dict,
     n = vh.shape[0]
     maps = shaft_maps(pp.sigma, pp.lever * radius[:, None])  # physical: tilts in radians
     axisymmetric = pp.held[:, 0]  # no radial force nor moment on a bearing, exactly
-    gen = st.gen  # both bearings' loads at once (2, n), each element as alone
-    radial = np.where(axisymmetric, 0.0, np.hypot(gen[..., 0], gen[..., 1]) * f_ref)
-    moment = np.where(axisymmetric, 0.0, gen[..., 3] * f_ref * radius)
+    (radial, thrust, moment), unloaded = _core.pair_loads(
+        st.gen, st.block, np.ascontiguousarray(axisymmetric).view(np.uint8), f_ref, radius
+    )
     bearings = []
     total = np.zeros((n, 5, 5))
     for k in range(2):
         tangent = _comb.physical_tangent(p, geo, st.tangents[k], mirrored)
         given = {
             "radial_load": radial[k],
-            "axial_load": gen[k, :, 2] * f_ref,
+            "axial_load": thrust[k],
             "moment": moment[k],
             "clearance": np.zeros(n),
             "cage_angle": c["cage_angle"],
         }
-        out = (st.local[k], st.kappa[k], its, (st.block[:, k], gen[k]), tangent)
+        out = (st.local[k], st.kappa[k], its, (st.block[:, k], st.gen[k]), tangent)
         bearings.append(_comb.distribution(p, geo, out, shape, given, None))
         total += maps[:, k].transpose(0, 2, 1) @ tangent @ maps[:, k]
     total[mirrored[:, None, None] & _COUPLING] = 0.0
-    unloaded = np.ascontiguousarray(~st.block[8].any(axis=2).T)  # no ball loaded (n, 2)
-    v = vh + vl
-    offset, thrust = _lift_off(pp, curve, delta_p)
-    lift = None if kind == "DT" else np.where(c["axial_load"] < 0, -thrust, thrust)
-    moved = v[:, :3] * scale[:, None]
-    tilts = np.rad2deg(v[:, 3:] * scale[:, None] / radius[:, None])
+    offset, lift_off = _lift_off(pp, curve, delta_p)
+    lift = None if kind == "DT" else np.where(c["axial_load"] < 0, -lift_off, lift_off)
+    moved = (vh + vl) * scale[:, None]  # (x, y, axial, and the tilts times their lever)
+    tilts = np.rad2deg(moved[:, 3:] / radius[:, None])
     rows = np.array(
         [c[k] for k in ("radial_load", "axial_load", "moment", "moment_cross", "preload")]
-        + [offset * scale, c["width"], *moved.T, *tilts.T, res]
+        + [offset * scale, c["width"], *moved[:, :3].T, *tilts.T, res]
     )  # one case of plain numbers: Python floats, as numerics.scalar_out gives them
     cases = rows.reshape((13,) + shape) if shape else rows[:, 0].tolist()
     load, axial_load, moment_, moment_cross, preload, offset_, width = cases[:7]
@@ -686,8 +682,6 @@ def _lift_off(pp: _Pair, curve: Any, delta: np.ndarray) -> tuple[np.ndarray, np.
     external axial load alone at which one bearing of a preloaded DB/DF pair carries nothing
     (the other then at twice that offset from its zero-load position) [N], its magnitude: the
     compiled core's ``pair_lift_off``."""
-    from bearingload.models import _core
-
     p = pp.prob
     values = np.zeros((delta.shape[0], 0)) if curve is None else curve.values
     cont = np.ascontiguousarray
