@@ -3623,22 +3623,29 @@ def combined_problem(int z, const double[:, ::1] loads, const double[::1] cage,
 
 def combined_result(const double[:, ::1] v, const double[:, ::1] case_in,
                     const double[:, ::1] gen, const double[:, :, :] balls,
-                    const double[:, ::1] kappa, bint imposed):
+                    const double[:, ::1] kappa, bint imposed, double[:, :, ::1] tangent,
+                    const unsigned char[::1] mirrored):
     """The answers of n cases of the combined solver in physical units: the scaled position
     ``v`` (n, 5) and ``case_in`` (11, n) = the imposed tilt t_imp, the scale s, the tilt lever
     R_i, the free contact angle [rad], A, one-sided (1/0), F, the moment given [N mm], the cage
     angle [°], the preload approach p, K_0; the scaled forces ``gen`` (n, 5); the balls at the
     answer (13, n, z), as ``solve``'s point (of them the approach less p, the cos and sin of
     the contact angle and the scaled load are read); the stiffness deviations (n, z);
-    ``imposed``: the tilt imposed, the moment is the tilt's reaction R_i F gen_t.
+    ``imposed``: the tilt imposed, the moment is the tilt's reaction R_i F gen_t; the stiffness
+    ``tangent`` (n, 5, 5), scaled where ``mirrored`` (n,) uint8 says which cases are mirrored
+    about the load line (then made physical in place, ``physical_case`` with F/s and R_i), or
+    physical already where ``mirrored`` is empty (left as it is).
 
     Returns the case rows (8, n) = x, y, axial (from the centred rings, or for one-sided
     contact from the zero-load position), tilt, tilt_cross [°], free contact angle [°], axial
-    play (0 one-sided), moment; and the ball rows (5, n, z) = phi_j [°], contact angle [°],
-    approach [mm], stiffness [N/mm^1.5], load [N]."""
+    play (0 one-sided), moment; the ball rows (5, n, z) = phi_j [°], contact angle [°],
+    approach [mm], stiffness [N/mm^1.5], load [N]; and the cases whose physical stiffness
+    overflows (n,) uint8 (0 where left as it is)."""
     cdef Py_ssize_t n = v.shape[0], k
     cdef int z = <int> kappa.shape[1], j
-    cases_a, balls_a = np.empty((8, n)), np.empty((5, n, z))
+    cdef bint scaled = mirrored.shape[0] == n and n > 0
+    cases_a, balls_a, bad_a = np.empty((8, n)), np.empty((5, n, z)), np.zeros(n, dtype=np.uint8)
+    cdef unsigned char[::1] bad = bad_a
     cdef double[:, ::1] out = cases_a
     cdef double[:, :, ::1] ball = balls_a
     cdef double w[5]
@@ -3662,7 +3669,10 @@ def combined_result(const double[:, ::1] v, const double[:, ::1] case_in,
                 ball[2, k, j] = (case_in[9, k] + balls[3, k, j]) * sc
                 ball[3, k, j] = (1.0 + kappa[k, j]) * case_in[10, k]
                 ball[4, k, j] = case_in[6, k] * balls[8, k, j]
-    return cases_a, balls_a
+            if scaled:
+                bad[k] = not physical_case(&tangent[k, 0, 0], case_in[6, k] / sc, lever,
+                                           mirrored[k], z)
+    return cases_a, balls_a, bad_a
 
 
 def groove(const double[:, ::1] given, bint angular, double low, double high):

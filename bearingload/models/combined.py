@@ -604,15 +604,9 @@ def solve_combined(
         given["misalignment"] = tilt_deg
     with np.errstate(all="ignore"):
         vh, vl, kappa, its, end, tangent, flags = _equilibrium(problem, geo, curve, given)
-        checked = _checked(problem, end, its, given)
-        answer = (
-            vh + vl,
-            kappa,
-            its,
-            checked,
-            physical_tangent(problem, geo, tangent[0], mirror & (mc == 0)),
-        )
-        return distribution(problem, geo, answer, shape, given, misalignment, flags)
+        answer = (vh + vl, kappa, its, _checked(problem, end, its, given), tangent[0])
+        mirrored = mirror & (mc == 0)  # (the scaled tangent: made physical by distribution)
+        return distribution(problem, geo, answer, shape, given, misalignment, flags, mirrored)
 
 
 #: The inputs of one call of :func:`solve_combined` packed, a row each (the cases along it), as
@@ -1826,11 +1820,18 @@ def physical_tangent(
     z eps of that does not follow the order of the summation)."""
     t, radius = tangent.copy(), np.ascontiguousarray(geo.R_i, dtype=float)
     if np.count_nonzero(_core.physical(t, p.f_ref / p.scale, radius, mirrored.view(np.uint8), p.z)):
-        # a lever of 1e300 mm: its square times K overflows
-        raise InputError(
-            "tilt_radius", "is so large that the tilting stiffness (lever^2 K) overflows"
-        )
+        _refuse_overflow()
     return t
+
+
+def _refuse_overflow() -> None:
+    """InputError: a lever of 1e300 mm, whose square times K overflows."""
+    raise InputError("tilt_radius", "is so large that the tilting stiffness (lever^2 K) overflows")
+
+
+#: ``mirrored`` of :func:`distribution`'s call of the core's ``combined_result`` where the
+#: stiffness given is physical already.
+_PHYSICAL = np.zeros(0, dtype=np.uint8)
 
 
 def distribution(
@@ -1841,9 +1842,13 @@ def distribution(
     given: dict,
     misalignment: Any,
     flags: tuple[np.ndarray, np.ndarray] | None = None,
+    mirrored: np.ndarray | None = None,
 ) -> CombinedDistribution:
     """Back to physical units and the case shape; ``flags``: the cases whose tilt the loads do
-    not determine and those whose negligible thrust was left out (default none)."""
+    not determine and those whose negligible thrust was left out (default none). The stiffness
+    of ``answer`` is physical (:func:`physical_tangent`) or, given which cases are ``mirrored``,
+    the core's scaled tangent, made physical here in place (as :func:`physical_tangent`, in the
+    same loop as the other results)."""
     undetermined, neglected = (None, None) if flags is None else flags
     v, kappa, its, (block, gen), tangent = answer
     z = kappa.shape[1]
@@ -1852,14 +1857,18 @@ def distribution(
         + (given["moment"], given["cage_angle"], p.pre, p.k_ref),
         dtype=float,
     )
-    rows, per_ball = _core.combined_result(
+    rows, per_ball, overflow = _core.combined_result(
         np.ascontiguousarray(v),
         case_in,
         np.ascontiguousarray(gen),
         block,
         np.ascontiguousarray(kappa),
         misalignment is not None,
+        tangent,
+        _PHYSICAL if mirrored is None else mirrored.view(np.uint8),
     )
+    if np.count_nonzero(overflow):
+        _refuse_overflow()
     # one case of plain numbers: Python floats, as numerics.scalar_out gives them
     cases = rows.reshape((8,) + shape) if shape else rows[:, 0].tolist()
     x, y, axial, tilt, tilt_cross, alpha0, play, moment = cases
