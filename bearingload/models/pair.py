@@ -199,13 +199,10 @@ def held_components(kind: str, mirror: np.ndarray, loads: tuple[np.ndarray, ...]
     bearings' mirror image across the pair's mid-plane (not DT's) without a thrust or moment.
     ``loads`` = (F_r, F_a, M, M_c) (n,) each."""
     fr, fa, mm, mc = loads
-    across, radial, axial = _HELD
-    held = (mirror & (mc == 0))[:, None] & across
     no_moment = (mm == 0) & (mc == 0)
-    held |= ((fr == 0) & no_moment)[:, None] & radial
-    if kind != "DT":
-        held |= ((fa == 0) & no_moment)[:, None] & axial
-    return held
+    axial = (fa == 0) & no_moment if kind != "DT" else np.zeros(fa.shape, dtype=bool)
+    which = np.array([mirror & (mc == 0), (fr == 0) & no_moment, axial])  # (3, n)
+    return which.T @ _HELD  # (booleans: each component held where any symmetry holds it)
 
 
 #: The components of (x, y, a, t, t_c) each symmetry of :func:`held_components` holds: the
@@ -556,8 +553,8 @@ def _start(pp: _Pair, z: int, geo: Any, pre: np.ndarray) -> np.ndarray:
     share = (0.5 if pp.sigma[1] > 0 else 1.0) * np.abs(f[:, 2])
     v[:, 2] = np.sign(f[:, 2]) * np.cbrt(share / (z * sa)) ** 2 / sa
     v[:, 0] = np.cbrt(2.5 * f[:, 0] / (z * ca)) ** 2 / ca
-    light = pre >= np.abs(f).max(axis=1)
-    return np.where(light[:, None], 0.0, v)
+    v[pre >= np.maximum.reduce(np.abs(f), axis=1)] = 0.0  # (the largest load: the preload)
+    return v
 
 
 def _near_symmetric(z: int, cage: np.ndarray, mc: np.ndarray) -> np.ndarray:
