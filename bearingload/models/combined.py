@@ -1620,10 +1620,12 @@ def hertz_setup(geo: _Geometry, e: np.ndarray, nu: np.ndarray) -> tuple[np.ndarr
     geometry the core cannot set up goes through the vectorised path of ``ball_stiffness``,
     which refuses it with the reason (or, where only the core's Newton did not settle, sets it
     up)."""
-    params = np.array((geo.D_w, geo.d_m, geo.f_i, geo.f_o, e, nu), dtype=float).T.copy()
-    key = params.tobytes() if params.shape[0] == 1 else None
+    params = np.array((geo.D_w, geo.d_m, geo.f_i, geo.f_o, e, nu), dtype=float)  # (6, n)
+    key = params.tobytes() if params.shape[1] == 1 else None  # (one case: its six in order)
     if key in _SETUP_CACHE:
-        return tuple(a.copy() for a in _SETUP_CACHE[key])
+        k0, values = _SETUP_CACHE[key]
+        return k0.copy(), values.copy()
+    params = params.T.copy()
     k0, values, bad = _core.hertz_curves(params, NODE_X)
     for i in np.flatnonzero(bad).tolist():
         from bearingload.contact.hertz import ball_stiffness
