@@ -95,7 +95,7 @@ def main(n: int, seed: int) -> None:
 
     def spy(p: Any, end: Any, its: Any, given: Any) -> Any:
         out = original(p, end, its, given)
-        seen["gen"], seen["f"], seen["size"] = out[2][0], p.f[0], end.size[0]
+        seen["gen"], seen["f"], seen["size"] = out[1][0], p.f[0], end.size[0]
         seen["imposed"] = p.imposed[0]
         return out
 

@@ -82,24 +82,49 @@ def fast_two_sum(s: Any, e: Any) -> tuple[Any, Any]:
 
 @dataclass
 class Problem:
-    """The scaled problem of n cases (every array has the cases on its first axis)."""
+    """The scaled problem of n cases (every array has the cases on its first axis, but
+    ``lengths``, which has them on its second: a row each, as the compiled core takes them)."""
 
     z: int
     c: np.ndarray  # cos phi_j, (n, z)
     s: np.ndarray  # sin phi_j, (n, z)
     scale: np.ndarray  # s [mm], (n,)
-    a_hat: np.ndarray  # A / s
-    pre: np.ndarray  # preload approach p = max(-G_r/2, 0) / s
-    gap: np.ndarray  # max(G_r/2, 0) / s
-    b_hi: np.ndarray  # B = A + p, double-double
-    b_lo: np.ndarray
+    lengths: np.ndarray  # (6, n): a_hat, pre, gap, b_hi, b_lo, t_imp (the properties below)
     f: np.ndarray  # generalised forces of (x, y, a, t, t_c), (n, 5)
-    t_imp: np.ndarray  # imposed R_i theta / s, (n,)
     locked: np.ndarray  # (n, 5) bool: held (imposed tilt, or 0 by symmetry)
     imposed: np.ndarray  # (n, 5) bool: held by an imposed tilt (its moment is a reaction)
     f_ref: np.ndarray  # F [N]
     k_ref: np.ndarray  # K_0 [N/mm^1.5]
     one_sided: np.ndarray  # (n,) bool: angular contact, a ball with u_j < 0 is at 0° (see below)
+
+    @property
+    def a_hat(self) -> np.ndarray:
+        """A / s."""
+        return self.lengths[0]
+
+    @property
+    def pre(self) -> np.ndarray:
+        """The preload approach p = max(-G_r/2, 0) / s."""
+        return self.lengths[1]
+
+    @property
+    def gap(self) -> np.ndarray:
+        """max(G_r/2, 0) / s."""
+        return self.lengths[2]
+
+    @property
+    def b_hi(self) -> np.ndarray:
+        """B = A + p, double-double: its high part (``b_lo`` the low)."""
+        return self.lengths[3]
+
+    @property
+    def b_lo(self) -> np.ndarray:
+        return self.lengths[4]
+
+    @property
+    def t_imp(self) -> np.ndarray:
+        """The imposed R_i theta / s."""
+        return self.lengths[5]
 
     @staticmethod
     def make(z: int, directions: tuple[np.ndarray, np.ndarray], lengths: tuple[np.ndarray, ...],
@@ -108,17 +133,19 @@ class Problem:
         ``rest``: f, t_imp [mm], locked, imposed, f_ref, k_ref, optionally one_sided (n,) bool
         (default none: deep groove; the scale s = (F/K)^(2/3) follows)."""
         scale = (rest["f_ref"] / rest["k_ref"]) ** (2.0 / 3.0)
-        c, s, (a_hat, pre, gap, b_hi, b_lo, t_imp) = _core.scaled_problem(
+        c, s, scaled = _core.scaled_problem(
             *(np.ascontiguousarray(v, dtype=float) for v in directions),
             *(np.ascontiguousarray(v, dtype=float) for v in (*lengths, scale, rest.pop("t_imp"))),
         )
         rest.setdefault("one_sided", np.zeros(np.shape(scale), dtype=bool))
-        return Problem(z, c, s, scale, a_hat, pre, gap, b_hi, b_lo, t_imp=t_imp, **rest)
+        return Problem(z, c, s, scale, scaled, **rest)
 
     def take(self, idx: np.ndarray) -> Problem:
         """The cases ``idx`` only."""
         items = ((f.name, getattr(self, f.name)) for f in dataclasses.fields(self))
-        return Problem(**{k: v[idx] if isinstance(v, np.ndarray) else v for k, v in items})
+        out = {k: v[idx] if isinstance(v, np.ndarray) and k != "lengths" else v for k, v in items}
+        out["lengths"] = np.ascontiguousarray(self.lengths[:, idx])  # (the cases its 2nd axis)
+        return Problem(**out)
 
     @property
     def deviation(self) -> np.ndarray:
@@ -126,7 +153,7 @@ class Problem:
         return (self.pre > 0) & (self.z >= 2)
 
 
-@dataclass(frozen=True)
+@dataclass
 class Balls:
     """The geometry of every ball at one ring position, (n, z) each."""
 
@@ -137,25 +164,21 @@ class Balls:
     up: np.ndarray  # u' = the axial separation the contact sees: u, or max(u, 0) one-sided
 
 
-_BALL_FIELDS = ("rho", "u", "d", "eps", "up")
-
-
 # ----------------------------------------------------------------------------------- forces
 
 
-@dataclass(frozen=True)
+@dataclass
 class Loads:
-    """Ball loads and directions at one position, (n, z) each; ``q0`` (n,)."""
+    """Ball loads and directions at one position, (n, z) each."""
 
     ca: np.ndarray  # cos(alpha)
     sa: np.ndarray  # sin(alpha)
     cam1: np.ndarray  # cos(alpha) - 1, without cancellation
     q: np.ndarray  # (1 + kappa) delta^1.5
-    dq: np.ndarray  # q - q0
+    dq: np.ndarray  # q - q0 (q0 = p^1.5 on the deviation cases, else 0)
     root: np.ndarray  # sqrt(max(delta, 0))
     tau: np.ndarray  # (delta - p)/p on the deviation cases, else 0
     sig: np.ndarray  # sqrt(1 + tau) - 1
-    q0: np.ndarray  # p^1.5 on the deviation cases, else 0
 
 
 def residual_of(f: np.ndarray, gen: np.ndarray, size: np.ndarray, held: np.ndarray) -> np.ndarray:
@@ -177,38 +200,45 @@ def residual_of(f: np.ndarray, gen: np.ndarray, size: np.ndarray, held: np.ndarr
 
 @dataclass
 class Point:
-    """The balls, loads, generalised forces, term sizes and residual at the positions of some
-    cases (the rows of every array)."""
+    """The balls and their loads (``block``, (13, n, z): the arrays of :class:`Balls`, then of
+    :class:`Loads`, as the compiled core gives them), the generalised forces, term sizes and
+    residual at the positions of some cases (the rows of every array); ``checks``: the core's
+    checks of a solve's answer (``solve``: the residual with the imposed components held (n,),
+    whether a loaded ball may sit at the groove edge (n,)), None where not known (a point
+    some of whose rows were replaced since: :meth:`put`)."""
 
-    b: Balls
-    lo: Loads
+    block: np.ndarray
     gen: np.ndarray
     size: np.ndarray
     res: np.ndarray
+    checks: tuple[np.ndarray, np.ndarray] | None = None
+
+    @property
+    def b(self) -> Balls:
+        """The balls (views of ``block``)."""
+        return Balls(*self.block[:5])
+
+    @property
+    def lo(self) -> Loads:
+        """Their loads (views of ``block``)."""
+        return Loads(*self.block[5:])
 
     @staticmethod
     def at(q: Problem, kappa: np.ndarray, vh: np.ndarray, vl: np.ndarray) -> Point:
         """The point of the cases of ``q`` at ``vh + vl`` (n, 5), the stiffness deviations
         ``kappa`` (n, z): the compiled core's ``points`` (its ``reference``, ``loads`` and
         ``forces``, the same kernels as the solve's)."""
-        scalars = np.stack([q.a_hat, q.pre, q.gap, q.b_hi, q.b_lo, q.t_imp], axis=1)
         balls, gen, size, res = _core.points(
-            *(np.ascontiguousarray(v, dtype=float) for v in (q.c, q.s, scalars, q.f)),
+            *(np.ascontiguousarray(v, dtype=float) for v in (q.c, q.s, q.lengths, q.f)),
             np.ascontiguousarray(q.locked, dtype=np.uint8),
             np.ascontiguousarray(q.one_sided, dtype=np.uint8),
             *(np.ascontiguousarray(v, dtype=float) for v in (vh, vl, kappa)),
         )
-        q0 = np.where(q.deviation, q.pre * np.sqrt(q.pre), 0.0)
-        return Point(Balls(*balls[:5]), Loads(*balls[5:], q0), gen, size, res)  # type: ignore[call-arg]
+        return Point(balls, gen, size, res)
 
     def put(self, rows: np.ndarray, other: Point) -> None:
-        """Overwrite the rows ``rows`` with ``other`` (in place)."""
-        for name in _BALL_FIELDS:
-            getattr(self.b, name)[rows] = getattr(other.b, name)
-        for name in _LOAD_FIELDS:
-            getattr(self.lo, name)[rows] = getattr(other.lo, name)
+        """Overwrite the rows ``rows`` with ``other`` (in place); the checks are then not known."""
+        self.block[:, rows] = other.block
+        self.checks = None
         for name in ("gen", "size", "res"):
             getattr(self, name)[rows] = getattr(other, name)
-
-
-_LOAD_FIELDS = ("ca", "sa", "cam1", "q", "dq", "root", "tau", "sig", "q0")

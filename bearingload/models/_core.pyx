@@ -1459,10 +1459,29 @@ cdef void store(const Work *wk, int z, double *kappa, double *balls, Py_ssize_t 
 
 
 
-def solve(const double[:, ::1] c, const double[:, ::1] s, const double[::1] a_hat,
-          const double[::1] pre, const double[::1] gap, const double[::1] b_hi,
-          const double[::1] b_lo, const double[::1] t_imp, const double[:, ::1] f,
-          const unsigned char[:, ::1] locked, const unsigned char[::1] one_sided,
+cdef void answer_flags(Case *cs, const int *imposed, const Point *pt, double *res,
+                       unsigned char *edge) noexcept nogil:
+    """A case's residual with the components ``imposed`` held instead of its locked ones (the
+    acceptance test of combined._checked: a component 0 by a symmetry measured too) and
+    whether a loaded ball may sit at the groove edge (its groove centres crossed, or a contact
+    angle within 1e-8 of 90°: combined._checked looks closer)."""
+    cdef int locked[5]
+    cdef int i, j
+    for i in range(5):
+        locked[i] = cs.locked[i]
+        cs.locked[i] = imposed[i]
+    res[0] = residual(cs, pt.gen, pt.size)
+    for i in range(5):
+        cs.locked[i] = locked[i]
+    edge[0] = False
+    for j in range(cs.z):
+        if pt.lo.root[j] > 0 and (pt.b.rho[j] <= 0 or pt.lo.ca[j] < 1e-8):
+            edge[0] = True
+
+
+def solve(const double[:, ::1] c, const double[:, ::1] s, const double[:, ::1] lengths,
+          const double[:, ::1] f, const unsigned char[:, ::1] locked,
+          const unsigned char[:, ::1] imposed, const unsigned char[::1] one_sided,
           const double[:, ::1] curve, const double[::1] node_x, const double[::1] node_w,
           const double[:, ::1] v0, const unsigned char[::1] given, *,
           int max_iterations=MAX_ITERATIONS,
@@ -1470,36 +1489,38 @@ def solve(const double[:, ::1] c, const double[:, ::1] s, const double[::1] a_ha
     """Solve n cases of the scaled ring equilibrium (see the module docstring).
 
     Arrays over the n cases (the scaled :class:`bearingload.models._combined_ring.Problem`):
-    ``c``, ``s`` (n, z); ``a_hat``, ``pre``, ``gap``, ``b_hi``, ``b_lo``, ``t_imp`` (n,); ``f``,
-    ``locked`` (uint8), ``v0`` (n, 5) the start where ``given`` (n,) uint8 is 1, else the
-    standard one (``standard_start``); ``one_sided`` (n,) uint8; ``curve`` (n, NODES)
+    ``c``, ``s`` (n, z); ``lengths`` (6, n) = a_hat, pre, gap, b_hi, b_lo, t_imp; ``f``,
+    ``locked``, ``imposed`` (uint8), ``v0`` (n, 5) the start where ``given`` (n,) uint8 is 1,
+    else the standard one (``standard_start``); ``one_sided`` (n,) uint8; ``curve`` (n, NODES)
     the stiffness curve's values, or (n, 0) for a constant K; ``node_x``, ``node_w`` its nodes
     and weights (NODES,). ``max_iterations`` (per stiffness update) and ``first_stage_steps``
     default to the module's limits (lower ones make a test's case fail on purpose).
 
-    Returns (vh, vl, kappa, iterations, status, point, tangent, holding): the position in
-    double-double (n, 5) each, the stiffness deviations (n, z), the Newton steps (n,), the
+    Returns (vh, vl, kappa, iterations, status, point, tangent, holding, checks): the position
+    in double-double (n, 5) each, the stiffness deviations (n, z), the Newton steps (n,), the
     status per case (n,), the point at the answer (the balls and their loads, a (13, n, z)
     array of rho, u, d, eps, up, ca, sa, cam1, q, dq, root, tau, sig; the generalised forces
     and the sums of their terms' magnitudes (n, 5) each; the residual (n,)), the tangent of the
-    ring forces there (n, 5, 5), scaled, every component free (``stiffness``), and the Hessian
+    ring forces there (n, 5, 5), scaled, every component free (``stiffness``), the Hessian
     of the balls that determine the equilibrium (``holding``) with whether it may have a null
-    direction among the free components (``maybe_flat``, (n,) uint8).
+    direction among the free components (``maybe_flat``, (n,) uint8), and the answer's checks
+    (``answer_flags``): the residual with the ``imposed`` components held (n,) and whether a
+    loaded ball may sit at the groove edge (n,) uint8.
     """
     cdef Py_ssize_t n = c.shape[0], k
     cdef int z = <int> c.shape[1], i
     cdef bint has_curve = curve.shape[1] == NODES
-    vh_a, vl_a, gen_a, size_a = (np.empty((n, 5)) for _ in range(4))
-    kappa_a, balls_a, res_a = np.empty((n, z)), np.empty((BALL_ARRAYS, n, z)), np.empty(n)
+    v_a, forces_a, mats_a = np.empty((2, n, 5)), np.empty((2, n, 5)), np.empty((2, n, 5, 5))
+    kappa_a, balls_a, res_a = np.empty((n, z)), np.empty((BALL_ARRAYS, n, z)), np.empty((2, n))
     its_a, status_a = np.empty(n, dtype=np.int64), np.empty(n, dtype=np.int32)
-    tangent_a, holding_a, flat_a = np.empty((n, 5, 5)), np.empty((n, 5, 5)), np.zeros(n, np.uint8)
-    cdef double[:, ::1] vh = vh_a, vl = vl_a, kappa = kappa_a
+    flags_a = np.zeros((2, n), np.uint8)
+    cdef double[:, :, ::1] v = v_a, forces = forces_a, balls = balls_a
+    cdef double[:, :, :, ::1] mats = mats_a
+    cdef double[:, ::1] kappa = kappa_a, res = res_a
     cdef int64_t[::1] its = its_a
     cdef int[::1] status = status_a
-    cdef double[:, :, ::1] balls = balls_a, tan = tangent_a, hold = holding_a
-    cdef double[:, ::1] gen = gen_a, size = size_a
-    cdef double[::1] res = res_a
-    cdef unsigned char[::1] flat = flat_a
+    cdef unsigned char[:, ::1] flags = flags_a
+    cdef int held[5]
     cdef Case cs
     cdef Work wk
     cs.lim = LIMITS
@@ -1508,11 +1529,12 @@ def solve(const double[:, ::1] c, const double[:, ::1] s, const double[::1] a_ha
     with nogil:
         for k in range(n):
             cs.z, cs.c, cs.s, cs.one_sided = z, &c[k, 0], &s[k, 0], one_sided[k]
-            cs.a_hat, cs.pre, cs.gap, cs.t_imp = a_hat[k], pre[k], gap[k], t_imp[k]
-            cs.b_hi, cs.b_lo = b_hi[k], b_lo[k]
+            cs.a_hat, cs.pre, cs.gap = lengths[0, k], lengths[1, k], lengths[2, k]
+            cs.b_hi, cs.b_lo, cs.t_imp = lengths[3, k], lengths[4, k], lengths[5, k]
             for i in range(5):
                 cs.f[i] = f[k, i]
                 cs.locked[i] = locked[k, i]
+                held[i] = imposed[k, i]
             cs.deviation = cs.pre > 0 and z >= 2
             cs.q0 = cs.pre * sqrt(cs.pre) if cs.deviation else 0.0
             cs.curve = &curve[k, 0] if has_curve else NULL
@@ -1520,15 +1542,18 @@ def solve(const double[:, ::1] c, const double[:, ::1] s, const double[::1] a_ha
             if not work_open(z, &wk):
                 status[k] = NO_MEMORY
                 continue
-            status[k] = solve_case(&cs, &v0[k, 0], given[k], &vh[k, 0], &vl[k, 0], &its[k], &wk)
+            status[k] = solve_case(&cs, &v0[k, 0], given[k], &v[0, k, 0], &v[1, k, 0], &its[k],
+                                   &wk)
             if status[k] != NO_MEMORY:
-                stiffness(&cs, &wk, &tan[k, 0, 0])
-                holding(&cs, &wk, &hold[k, 0, 0])
-                flat[k] = maybe_flat(&cs, &hold[k, 0, 0])
-            store(&wk, z, &kappa[k, 0], &balls[0, k, 0], n * z, &gen[k, 0], &size[k, 0], &res[k])
+                stiffness(&cs, &wk, &mats[0, k, 0, 0])
+                holding(&cs, &wk, &mats[1, k, 0, 0])
+                flags[0, k] = maybe_flat(&cs, &mats[1, k, 0, 0])
+            store(&wk, z, &kappa[k, 0], &balls[0, k, 0], n * z, &forces[0, k, 0],
+                  &forces[1, k, 0], &res[0, k])
+            answer_flags(&cs, held, &wk.pt, &res[1, k], &flags[1, k])
             free(wk.block)
-    return (vh_a, vl_a, kappa_a, its_a, status_a, (balls_a, gen_a, size_a, res_a), tangent_a,
-            (holding_a, flat_a))
+    return (v_a[0], v_a[1], kappa_a, its_a, status_a, (balls_a, forces_a[0], forces_a[1], res_a[0]),
+            mats_a[0], (mats_a[1], flags_a[0]), (res_a[1], flags_a[1]))
 
 
 # ----------------------------------------------------------------------- the preloaded pair
@@ -1953,9 +1978,8 @@ cdef void axial_position(Case *cs, double delta, double *hi, double *lo) noexcep
         quick(sum_, err + lo[0], hi, lo)
 
 
-def solve_pair(const double[:, ::1] c, const double[:, ::1] s, const double[::1] a_hat,
-               const double[::1] pre, const double[::1] gap, const double[::1] b_hi,
-               const double[::1] b_lo, const double[::1] sigma, const double[:, ::1] arm,
+def solve_pair(const double[:, ::1] c, const double[:, ::1] s, const double[:, ::1] lengths,
+               const double[::1] sigma, const double[:, ::1] arm,
                const double[::1] preload, const double[:, ::1] f, const unsigned char[:, ::1] held,
                const double[:, ::1] curve, const double[::1] node_x, const double[::1] node_w,
                const double[:, ::1] v0):
@@ -1964,7 +1988,8 @@ def solve_pair(const double[:, ::1] c, const double[:, ::1] s, const double[::1]
     with the balls in double-double (``pair_newton``).
 
     Arrays over the n cases: ``c``, ``s`` (n, z) the balls of either bearing (one-sided
-    contacts); ``a_hat``, ``pre``, ``gap``, ``b_hi``, ``b_lo`` (n,) their scaled geometry;
+    contacts); ``lengths`` (6, n) their scaled geometry, a_hat, pre, gap, b_hi, b_lo (and
+    the imposed tilt, not read: the Problem's rows);
     ``sigma`` (2,) +1 or -1 (a mirrored bearing); ``arm`` (n, 2) -z_k / R_i; ``preload`` (n,)
     the thrust each bearing carries with no external load (its approach ``preload_delta``, 0
     where not positive; both bearings at the axial offset of ``axial_position`` with every ball
@@ -2019,7 +2044,8 @@ def solve_pair(const double[:, ::1] c, const double[:, ::1] s, const double[::1]
     pr.first_halvings = PAIR_FIRST_HALVINGS
     with nogil:
         for k in range(n):
-            pair_case(&pr, k, z, &c[k, 0], &s[k, 0], a_hat[k], pre[k], gap[k], b_hi[k], b_lo[k])
+            pair_case(&pr, k, z, &c[k, 0], &s[k, 0], lengths[0, k], lengths[1, k], lengths[2, k],
+                      lengths[3, k], lengths[4, k])
             pr.bear.curve = &curve[k, 0] if has_curve else NULL
             pr.bear.node_x = &node_x[0]
             pr.bear.node_w = &node_w[0]
@@ -3384,14 +3410,16 @@ def solve_speed(const double[:, ::1] consts, const double[:, ::1] ki, const doub
 # C loop over the cases for the whole batch, so a case's bits are the same alone or in a batch.
 
 cdef void case_at(Case *cs, int z, const double *c, const double *s, const double *scalars,
-                  const double *f, const unsigned char *locked, int one_sided) noexcept nogil:
+                  Py_ssize_t n, const double *f, const unsigned char *locked,
+                  int one_sided) noexcept nogil:
     """``cs`` the case of the ball directions ``c``, ``s`` (z), ``scalars`` = (a_hat, pre, gap,
-    b_hi, b_lo, t_imp), the forces ``f`` and held components ``locked`` (5), constant K."""
+    b_hi, b_lo, t_imp) ``n`` apart, the forces ``f`` and held components ``locked`` (5),
+    constant K."""
     cdef int i
     cs.lim = LIMITS
     cs.z, cs.c, cs.s, cs.one_sided = z, c, s, one_sided
-    cs.a_hat, cs.pre, cs.gap = scalars[0], scalars[1], scalars[2]
-    cs.b_hi, cs.b_lo, cs.t_imp = scalars[3], scalars[4], scalars[5]
+    cs.a_hat, cs.pre, cs.gap = scalars[0], scalars[n], scalars[2 * n]
+    cs.b_hi, cs.b_lo, cs.t_imp = scalars[3 * n], scalars[4 * n], scalars[5 * n]
     for i in range(5):
         cs.f[i] = f[i]
         cs.locked[i] = locked[i]
@@ -3406,7 +3434,7 @@ def points(const double[:, ::1] c, const double[:, ::1] s, const double[:, ::1] 
            const double[:, ::1] kappa):
     """Every ball of n cases at the positions ``vh + vl`` (n, 5) in double-double, their loads
     with the stiffness deviations ``kappa`` (n, z), the forces and the residual (``fresh``):
-    ``scalars`` (n, 6) = a_hat, pre, gap, b_hi, b_lo, t_imp; returns the (13, n, z) ball arrays
+    ``scalars`` (6, n) = a_hat, pre, gap, b_hi, b_lo, t_imp; returns the (13, n, z) ball arrays
     (as ``solve``'s point), the forces and their terms' sizes (n, 5) each, the residual (n,)."""
     cdef Py_ssize_t n = c.shape[0], k
     cdef int z = <int> c.shape[1], i, j
@@ -3423,7 +3451,7 @@ def points(const double[:, ::1] c, const double[:, ::1] s, const double[:, ::1] 
     point_on(block, z, &pt)
     with nogil:
         for k in range(n):
-            case_at(&cs, z, &c[k, 0], &s[k, 0], &scalars[k, 0], &f[k, 0], &locked[k, 0],
+            case_at(&cs, z, &c[k, 0], &s[k, 0], &scalars[0, k], n, &f[k, 0], &locked[k, 0],
                     one_sided[k])
             fresh(&cs, &vh[k, 0], &vl[k, 0], &kappa[k, 0], &pt)
             for i in range(BALL_ARRAYS):
@@ -3544,23 +3572,30 @@ def combined_problem(int z, const double[:, ::1] loads, const double[::1] cage,
 
 
 def combined_result(const double[:, ::1] v, const double[:, ::1] case_in,
-                    const double[:, ::1] gen, const double[:, ::1] sa,
-                    const double[:, ::1] ca, const double[:, ::1] eps, const double[:, ::1] q,
-                    const double[:, ::1] kappa, bint imposed):
+                    const double[:, ::1] gen, const double[:, :, :] balls,
+                    const double[:, ::1] kappa, bint imposed, double[:, :, ::1] tangent,
+                    const unsigned char[::1] mirrored):
     """The answers of n cases of the combined solver in physical units: the scaled position
     ``v`` (n, 5) and ``case_in`` (11, n) = the imposed tilt t_imp, the scale s, the tilt lever
     R_i, the free contact angle [rad], A, one-sided (1/0), F, the moment given [N mm], the cage
-    angle [°], the preload approach p, K_0; the scaled forces ``gen`` (n, 5); the balls' sin and
-    cos of the contact angle, approach less p, scaled load, stiffness deviation (n, z) each;
-    ``imposed``: the tilt imposed, the moment is the tilt's reaction R_i F gen_t.
+    angle [°], the preload approach p, K_0; the scaled forces ``gen`` (n, 5); the balls at the
+    answer (13, n, z), as ``solve``'s point (of them the approach less p, the cos and sin of
+    the contact angle and the scaled load are read); the stiffness deviations (n, z);
+    ``imposed``: the tilt imposed, the moment is the tilt's reaction R_i F gen_t; the stiffness
+    ``tangent`` (n, 5, 5), scaled where ``mirrored`` (n,) uint8 says which cases are mirrored
+    about the load line (then made physical in place, ``physical_case`` with F/s and R_i), or
+    physical already where ``mirrored`` is empty (left as it is).
 
     Returns the case rows (8, n) = x, y, axial (from the centred rings, or for one-sided
     contact from the zero-load position), tilt, tilt_cross [°], free contact angle [°], axial
-    play (0 one-sided), moment; and the ball rows (5, n, z) = phi_j [°], contact angle [°],
-    approach [mm], stiffness [N/mm^1.5], load [N]."""
+    play (0 one-sided), moment; the ball rows (5, n, z) = phi_j [°], contact angle [°],
+    approach [mm], stiffness [N/mm^1.5], load [N]; and the cases whose physical stiffness
+    overflows (n,) uint8 (0 where left as it is)."""
     cdef Py_ssize_t n = v.shape[0], k
-    cdef int z = <int> sa.shape[1], j
-    cases_a, balls_a = np.empty((8, n)), np.empty((5, n, z))
+    cdef int z = <int> kappa.shape[1], j
+    cdef bint scaled = mirrored.shape[0] == n and n > 0
+    cases_a, balls_a, bad_a = np.empty((8, n)), np.empty((5, n, z)), np.zeros(n, dtype=np.uint8)
+    cdef unsigned char[::1] bad = bad_a
     cdef double[:, ::1] out = cases_a
     cdef double[:, :, ::1] ball = balls_a
     cdef double w[5]
@@ -3580,11 +3615,14 @@ def combined_result(const double[:, ::1] v, const double[:, ::1] case_in,
             out[7, k] = lever * case_in[6, k] * gen[k, 3] if imposed else case_in[7, k]
             for j in range(z):
                 ball[0, k, j] = floor_mod(case_in[8, k] + 360.0 * j / z, 360.0)
-                ball[1, k, j] = atan2(sa[k, j], ca[k, j]) * deg
-                ball[2, k, j] = (case_in[9, k] + eps[k, j]) * sc
+                ball[1, k, j] = atan2(balls[6, k, j], balls[5, k, j]) * deg
+                ball[2, k, j] = (case_in[9, k] + balls[3, k, j]) * sc
                 ball[3, k, j] = (1.0 + kappa[k, j]) * case_in[10, k]
-                ball[4, k, j] = case_in[6, k] * q[k, j]
-    return cases_a, balls_a
+                ball[4, k, j] = case_in[6, k] * balls[8, k, j]
+            if scaled:
+                bad[k] = not physical_case(&tangent[k, 0, 0], case_in[6, k] / sc, lever,
+                                           mirrored[k], z)
+    return cases_a, balls_a, bad_a
 
 
 def groove(const double[:, ::1] given, bint angular, double low, double high):
@@ -3616,6 +3654,35 @@ def groove(const double[:, ::1] given, bint angular, double low, double high):
             out[4, k] = (dw > 0 and dm > 0 and dw < dm and fi > low and fi < high and
                          fo > low and fo < high and g < big_a)
     return out_a
+
+
+def pair_loads(const double[:, :, ::1] gen, const double[:, :, :, ::1] balls,
+               const unsigned char[::1] axisymmetric, const double[::1] f_ref,
+               const double[::1] radius):
+    """The loads each bearing of n pairs carries (bearingload.models.pair) from its scaled
+    generalised forces ``gen`` (2, n, 5): (3, 2, n) = the size of its radial force
+    ``hypot(F_x, F_y) F``, its thrust ``F_a F`` [N] and its moment ``M F R_i`` [N mm] (the
+    radial force and the moment exactly 0 where the case is ``axisymmetric``, (n,) uint8:
+    no radial load nor moment on the shaft); and whether it carries none, (n, 2) uint8: no
+    ball's load (row 8 of the balls at the answer, (13, 2, n, z)) above 0."""
+    cdef Py_ssize_t n = gen.shape[1], k
+    cdef int z = <int> balls.shape[3], b, j
+    loads_a, unloaded_a = np.empty((3, 2, n)), np.empty((n, 2), dtype=bool)
+    cdef double[:, :, ::1] loads = loads_a
+    cdef unsigned char[:, ::1] unloaded = unloaded_a.view(np.uint8)
+    with nogil:
+        for b in range(2):
+            for k in range(n):
+                loads[0, b, k] = hypot(gen[b, k, 0], gen[b, k, 1]) * f_ref[k]
+                loads[1, b, k] = gen[b, k, 2] * f_ref[k]
+                loads[2, b, k] = gen[b, k, 3] * f_ref[k] * radius[k]
+                if axisymmetric[k]:
+                    loads[0, b, k] = loads[2, b, k] = 0.0
+                unloaded[k, b] = True
+                for j in range(z):
+                    if balls[8, b, k, j] != 0:
+                        unloaded[k, b] = False
+    return loads_a, unloaded_a
 
 
 def pair_lift_off(int z, const double[::1] a_hat, const double[::1] gap,

@@ -105,6 +105,7 @@ from __future__ import annotations
 
 import dataclasses
 import math
+import operator
 from collections.abc import Callable
 from dataclasses import dataclass
 from typing import Any
@@ -115,7 +116,9 @@ from bearingload import numerics, validate
 from bearingload.constants import STEEL_MODULUS
 from bearingload.errors import ConvergenceError, InputError
 from bearingload.models import _combined_ring as _ring
+from bearingload.models import _core
 from bearingload.models._combined_ring import ACCEPT, MAX_ITERATIONS, TOLERANCE, Problem
+from bearingload.models._ring import SYMMETRY_SNAP_DEG
 
 __all__ = ["CombinedDistribution", "solve_combined", "axial_only", "groove_geometry",
            "ball_stiffness_at", "TOLERANCE", "ACCEPT", "MAX_ITERATIONS"]  # fmt: skip
@@ -336,8 +339,6 @@ def ring_geometry(
     design contact angle alpha_0 [°] of an angular-contact bearing (:func:`angular_geometry`).
     The arithmetic is the compiled core's ``groove``, one loop over the cases; ``at(name, bad,
     unit)`` names the input's element of the first case refused (``clearance[1] = 5 mm``)."""
-    from bearingload.models import _core
-
     columns: tuple[np.ndarray, ...] = (dw, dm, fi, fo, clearance)
     shape = columns[0].shape
     if any(v.shape != shape for v in columns) or len(shape) != 1:
@@ -346,10 +347,10 @@ def ring_geometry(
     big_a, g, alpha0, r_i, fits = _core.groove(
         np.array(columns, dtype=float).reshape(5, -1), angular, *validate.CONFORMITY_RANGE
     )
-    if not fits.all():
+    if np.count_nonzero(fits) < fits.size:
         _refuse_geometry(dw, dm, fi, fo, (g >= big_a).reshape(shape), at)
-    cut = tuple(a.reshape(shape) for a in (big_a, g, alpha0, r_i))
-    return _Geometry(dw, dm, fi, fo, *cut)
+    cut = (big_a, g, alpha0, r_i)  # (n,): the shape of flat arrays, else reshaped to it
+    return _Geometry(dw, dm, fi, fo, *(cut if len(shape) == 1 else (a.reshape(shape) for a in cut)))
 
 
 def _refuse_geometry(dw: Any, dm: Any, fi: Any, fo: Any, out: Any, at: Callable[..., str]) -> None:
@@ -579,32 +580,19 @@ def solve_combined(
     z = call_balls(balls)
     if moment is not None and misalignment is not None:
         raise InputError("moment", "give a moment or a misalignment, not both")
-    fr = validate.at_least("radial_load", radial_load, 0.0, "N")
-    fa = validate.finite("axial_load", axial_load)
-    angular = _angular(contact_angle, fa, clearance)
-    mm = validate.finite("moment", 0.0 if moment is None else moment)
-    mc = validate.finite("moment_cross", moment_cross)
-    tilt_deg = validate.finite("misalignment", 0.0 if misalignment is None else misalignment)
-    cage = validate.cage_angle(cage_angle)
-    e = validate.positive("modulus", modulus, "MPa")
-    nu = validate.finite("poisson", poisson)
-    k_given = None if stiffness is None else validate.positive("stiffness", stiffness, "N/mm^1.5")
-    ball_diameter, pitch_diameter, clearance = validate.each_finite(
-        ball_diameter=ball_diameter, pitch_diameter=pitch_diameter, clearance=clearance
-    )
-    f_i, f_o = validate.conformity("f_i", f_i), validate.conformity("f_o", f_o)
-    named = dict(radial_load=fr, axial_load=fa, moment=mm, misalignment=tilt_deg, cage_angle=cage)
-    named |= dict(modulus=e, poisson=nu, moment_cross=mc, ball_diameter=ball_diameter)
-    named |= dict(pitch_diameter=pitch_diameter, f_i=f_i, f_o=f_o, clearance=clearance)
-    named["contact_angle"] = np.zeros(()) if angular is None else angular
-    shape, flat = _cases(named | ({} if k_given is None else {"stiffness": k_given}))
-    fr, fa, mm, tilt_deg, cage, e, nu, mc, dw, dm, fi, fo, gr, alpha_d = flat[:14]
+    raw = dict(radial_load=radial_load, axial_load=axial_load, moment=moment)
+    raw |= dict(misalignment=misalignment, cage_angle=cage_angle, modulus=modulus)
+    raw |= dict(poisson=poisson, moment_cross=moment_cross, ball_diameter=ball_diameter)
+    raw |= dict(pitch_diameter=pitch_diameter, f_i=f_i, f_o=f_o, clearance=clearance)
+    raw |= dict(contact_angle=contact_angle, stiffness=stiffness)
+    shape, cols, named = _inputs(raw)
+    angular = None if contact_angle is None else cols[_ROW["contact_angle"]]
+    fr, fa, mm, mc, tilt_deg, _, cage, e, nu, dw, dm, fi, fo, _, gr, alpha_d, k_in = cols
 
     def at(name: str, bad: Any, unit: str = "") -> str:  # the input's element of a bad case
         return validate.element_at(named[name], bad, shape, unit)
 
-    alpha_or_gap = gr if angular is None else alpha_d
-    geo = ring_geometry(dw, dm, fi, fo, alpha_or_gap, angular is not None, at)
+    geo = _geometry_of(cols[_GROOVE], angular is not None, at)
     validate.ball_spacing(z, geo.D_w, geo.d_m)  # (z balls must fit on the pitch circle)
     if tilt_radius is not None:
         radius = validate.positive("tilt_radius", tilt_radius, "mm")
@@ -613,28 +601,137 @@ def solve_combined(
     if angular is not None:
         _check_one_sided_moment(z, cage, fa, (mm, mc), geo.R_i, misalignment is not None)
     curve = None
-    if k_given is None:
+    if stiffness is None:
         k_ref, values = hertz_setup(geo, e, nu)
         curve = StiffnessCurve(values)
     else:
-        k_ref = flat[14]
-    loads = (fr, fa, mm, mc, tilt_deg)
-    problem, mirror = _problem(z, loads, cage, geo, k_ref, (angular, misalignment), at)
+        k_ref = k_in
+    problem, mirror = _problem(z, cols[:6], cage, geo, k_ref, (angular, misalignment), at)
     given = {"balls": z, "radial_load": fr, "axial_load": fa, "moment": mm, "moment_cross": mc,
              "clearance": gr, "cage_angle": cage}  # fmt: skip
     if misalignment is not None:  # the moment is then the reaction, not an input
         given["misalignment"] = tilt_deg
     with np.errstate(all="ignore"):
         vh, vl, kappa, its, end, tangent, flags = _equilibrium(problem, geo, curve, given)
-        checked = _checked(problem, end, its, given)
-        answer = (
-            vh + vl,
-            kappa,
-            its,
-            checked,
-            physical_tangent(problem, geo, tangent[0], mirror & (mc == 0)),
-        )
-        return distribution(problem, geo, answer, shape, given, misalignment, flags)
+        answer = (vh + vl, kappa, its, _checked(problem, end, its, given), tangent[0])
+        mirrored = mirror & (mc == 0)  # (the scaled tangent: made physical by distribution)
+        return distribution(problem, geo, answer, shape, given, misalignment, flags, mirrored)
+
+
+#: The inputs of one call of :func:`solve_combined` packed, a row each (the cases along it), as
+#: the compiled core's set-up takes them: the loads (F_r, F_a, M, M_c, the misalignment and a
+#: force the reference force is at least, 0 here: ``combined_problem``), the cage angle, E and
+#: nu, the groove's five (D_w, d_m, f_i, f_o and the clearance or, angular contact, the design
+#: contact angle: ``groove``), the clearance, the contact angle and the stiffness (0 where
+#: not given).
+INPUT_ROWS = (
+    "radial_load",
+    "axial_load",
+    "moment",
+    "moment_cross",
+    "misalignment",
+    "",
+    "cage_angle",
+    "modulus",
+    "poisson",
+    "ball_diameter",
+    "pitch_diameter",
+    "f_i",
+    "f_o",
+    "groove",
+    "clearance",
+    "contact_angle",
+    "stiffness",
+)
+_ROW = {name: i for i, name in enumerate(INPUT_ROWS) if name}
+_GROOVE = slice(9, 14)  # (the last "groove": the clearance or the contact angle)
+#: The rows of one case of plain numbers by name (:func:`_plain_inputs`).
+_PLAIN_ROWS = operator.itemgetter(*INPUT_ROWS)
+
+
+def _inputs(raw: dict[str, Any]) -> tuple[tuple[int, ...], np.ndarray, dict[str, Any]]:
+    """The inputs of :func:`solve_combined` by name (None: not given) checked and packed: (the
+    case shape, the rows of :data:`INPUT_ROWS` (17, n), the inputs by name as the refusals
+    name their elements). One case of plain numbers that passes every check skips the array
+    machinery (:func:`_plain_inputs`); any other goes through :func:`_checked_inputs`, which
+    names what it refuses."""
+    cols = _plain_inputs(raw)
+    if cols is not None:
+        return (), cols, raw
+    return _checked_inputs(raw)
+
+
+def _plain_inputs(raw: dict[str, Any]) -> np.ndarray | None:
+    """The rows (17, 1) of one case whose inputs are all plain numbers (``float`` or ``int``)
+    passing every check of :func:`_checked_inputs`, the cage angle taken mod 360°; None for
+    any other."""
+    values = [0.0 if x is None else x for x in raw.values()]
+    if not all(type(x) is float for x in values):
+        if not all(type(x) is float or type(x) is int for x in values):
+            return None
+        try:
+            values = [float(x) for x in values]
+        except OverflowError:
+            return None
+    if not math.isfinite(sum(values)):  # a NaN or infinity among them (or a sum beyond)
+        return None
+    v = dict(zip(raw, values, strict=True))
+    low, high = validate.CONFORMITY_RANGE
+    ok = v["radial_load"] >= 0.0 and v["modulus"] > 0.0 and low < v["f_i"] < high
+    ok = ok and low < v["f_o"] < high and (raw["stiffness"] is None or v["stiffness"] > 0.0)
+    angular = raw["contact_angle"] is not None
+    if angular:
+        ok = ok and 0.0 <= v["contact_angle"] <= 60.0 and v["clearance"] == 0.0
+        ok = ok and v["axial_load"] >= 0.0
+    if not ok:
+        return None
+    v["cage_angle"] = validate.reduced_angle(v["cage_angle"])  # (as validate.cage_angle)
+    v[""], v["groove"] = 0.0, v["contact_angle" if angular else "clearance"]
+    return np.array(_PLAIN_ROWS(v)).reshape(-1, 1)
+
+
+def _checked_inputs(raw: dict[str, Any]) -> tuple[tuple[int, ...], np.ndarray, dict[str, Any]]:
+    """:func:`_inputs` of any inputs: each checked (:mod:`bearingload.validate`, the first
+    refused named), broadcast together (:func:`_cases`) and packed."""
+    fr = validate.at_least("radial_load", raw["radial_load"], 0.0, "N")
+    fa = validate.finite("axial_load", raw["axial_load"])
+    angular = _angular(raw["contact_angle"], fa, raw["clearance"])
+    mm = validate.finite("moment", 0.0 if raw["moment"] is None else raw["moment"])
+    mc = validate.finite("moment_cross", raw["moment_cross"])
+    tilt = raw["misalignment"]
+    tilt_deg = validate.finite("misalignment", 0.0 if tilt is None else tilt)
+    cage = validate.cage_angle(raw["cage_angle"])
+    e = validate.positive("modulus", raw["modulus"], "MPa")
+    nu = validate.finite("poisson", raw["poisson"])
+    k = raw["stiffness"]
+    k_given = None if k is None else validate.positive("stiffness", k, "N/mm^1.5")
+    dw, dm, gr = validate.each_finite(
+        ball_diameter=raw["ball_diameter"],
+        pitch_diameter=raw["pitch_diameter"],
+        clearance=raw["clearance"],
+    )
+    f_i, f_o = validate.conformity("f_i", raw["f_i"]), validate.conformity("f_o", raw["f_o"])
+    named = dict(radial_load=fr, axial_load=fa, moment=mm, misalignment=tilt_deg, cage_angle=cage)
+    named |= dict(modulus=e, poisson=nu, moment_cross=mc, ball_diameter=dw)
+    named |= dict(pitch_diameter=dm, f_i=f_i, f_o=f_o, clearance=gr)
+    named["contact_angle"] = np.zeros(()) if angular is None else angular
+    if k_given is not None:
+        named["stiffness"] = k_given
+    shape, flat = _cases(named)
+    cols = np.zeros((len(INPUT_ROWS), flat[0].size))
+    for name, col in zip(named, flat, strict=True):
+        cols[_ROW[name]] = col
+    cols[_ROW["groove"]] = cols[_ROW["clearance" if angular is None else "contact_angle"]]
+    return shape, cols, named
+
+
+def _geometry_of(given: np.ndarray, angular: bool, at: Callable[..., str]) -> _Geometry:
+    """:func:`ring_geometry` of the groove's rows of :data:`INPUT_ROWS` (5, n), flat."""
+    big_a, g, alpha0, r_i, fits = _core.groove(given, angular, *validate.CONFORMITY_RANGE)
+    dw, dm, fi, fo = given[:4]
+    if np.count_nonzero(fits) < fits.size:  # (np.count_nonzero: a fifth of .all()'s time)
+        _refuse_geometry(dw, dm, fi, fo, g >= big_a, at)
+    return _Geometry(dw, dm, fi, fo, big_a, g, alpha0, r_i)
 
 
 #: Positions per revolution at which :func:`load_zone` first looks for the zone's ends, beside
@@ -723,7 +820,7 @@ def _zone_length(kinematics: tuple[np.ndarray, ...], balls: np.ndarray, one_side
 
 def _problem(
     z: int,
-    loads: tuple[np.ndarray, ...],
+    loads: np.ndarray,
     cage: np.ndarray,
     geo: _Geometry,
     k_ref: np.ndarray,
@@ -732,34 +829,32 @@ def _problem(
 ) -> tuple[Problem, np.ndarray]:
     """The scaled problem of the cases (the compiled core's ``combined_problem``: the largest
     load, the scale, the ball directions, the symmetry locks, the forces) and which cases are
-    mirrored about the load line; the loads (F_r, F_a, M, M_c, misalignment [°]) refused as
+    mirrored about the load line; the loads (6, n) (F_r, F_a, M, M_c, misalignment [°], 0: the
+    rows of :data:`INPUT_ROWS`) refused as
     :func:`reference_force`, :func:`check_scale` and :func:`_check_angular_scale` state.
     ``given``: the contact angle and the misalignment as given (None: not given); ``at``
     names the element of a refused case (:func:`ring_geometry`)."""
-    from bearingload.models import _core
-    from bearingload.models._ring import SYMMETRY_SNAP_DEG
-
     angular, imposed = (v is not None for v in given)
     n = cage.shape[0]
     lengths = np.array((geo.A, geo.g, geo.R_i), dtype=float)
     limits = np.array([SYMMETRY_SNAP_DEG, GEOMETRY_RATIO_MAX, ANGULAR_RATIO_MIN])
     k_ref = np.ascontiguousarray(k_ref, dtype=float)
-    rows = np.zeros((6, n))
-    rows[:5] = loads
     status, c, s, mirror, held, f, out = _core.combined_problem(
-        z, rows, cage, lengths, k_ref, angular, imposed, limits
+        z, loads, cage, lengths, k_ref, angular, imposed, limits
     )
-    if status.any():
+    if np.count_nonzero(status):
         _refuse_loads(loads, geo, k_ref, angular, at, status)
     fixed = np.zeros((n, 5), dtype=bool)
     fixed[:, 3] = imposed
-    scale, a_hat, pre, gap, b_hi, b_lo, t_imp, f_ref = out
-    scaled = (scale, a_hat, pre, gap, b_hi, b_lo, f, t_imp, held, fixed, f_ref, k_ref)
-    return Problem(z, c, s, *scaled, np.full(n, angular)), mirror
+    one_sided = np.zeros(n, dtype=bool)
+    one_sided[:] = angular
+    # out: the scale, the lengths (a_hat, pre, gap, b_hi, b_lo, t_imp), F
+    scaled = (out[0], out[1:7], f, held, fixed, out[7], k_ref)
+    return Problem(z, c, s, *scaled, one_sided), mirror
 
 
 def _refuse_loads(
-    loads: tuple[np.ndarray, ...],
+    loads: np.ndarray,
     geo: _Geometry,
     k_ref: np.ndarray,
     angular: bool,
@@ -769,8 +864,6 @@ def _refuse_loads(
     """InputError on the loads the core's ``combined_problem`` flagged (``status``: no load, a
     moment over its lever beyond the largest number, loads too small or, angular contact, too
     large); the core's flags decide, these checks word the refusal."""
-    from bearingload.models import _core
-
     fr, fa, mm, mc = loads[:4]
     f_ref = reference_force(fr, fa, mm, mc, geo.R_i)
     if (f_ref <= 0).any():
@@ -814,12 +907,13 @@ def _cases(named: dict[str, np.ndarray]) -> tuple[tuple[int, ...], list[np.ndarr
 def _equilibrium(p: Problem, geo: _Geometry, curve: StiffnessCurve | None, given: dict) -> tuple:
     """Every case solved (:func:`_thrust_retry`), a tilt the loads do not determine taken at
     its least (:func:`_least_norm_tilt`): as :func:`_solve_with_stiffness`, and which cases'
-    tilts are undetermined. A case whose stiffness updates run out raises ConvergenceError
-    naming its inputs (``given``)."""
+    tilts are undetermined and which thrusts neglected. A case whose stiffness updates run out
+    raises ConvergenceError naming its inputs (``given``)."""
     try:
         got = _solve_with_stiffness(p, geo, curve)
         neglected = np.zeros(p.f.shape[0], dtype=bool)
-        if not (_ring.residual_of(p.f, got[4].gen, got[4].size, p.imposed) <= ACCEPT).all():
+        res = got[4].checks[0]  # (the residual with the imposed components held)
+        if np.count_nonzero(res <= ACCEPT) < res.size:
             got = _thrust_retry(p, geo, curve, got)  # (each retry needs an unbalanced case)
             neglected = _neglect_thrust(p, geo, curve, got)
             _near_symmetric(p, geo, curve, got, given["cage_angle"])
@@ -829,7 +923,9 @@ def _equilibrium(p: Problem, geo: _Geometry, curve: StiffnessCurve | None, given
         raise ConvergenceError(
             exc.solver, exc.iterations, exc.residual, _described(given, rows), units=INPUT_UNITS
         ) from None
-    vh, vl, end, undetermined = _least_norm_tilt(p, (vh, vl), kappa, end, tangent[1])
+    undetermined = np.zeros(vh.shape[0], dtype=bool)
+    if np.count_nonzero(tangent[1][1]):  # (no case whose Hessian may be flat: none to move)
+        vh, vl, end, undetermined = _least_norm_tilt(p, (vh, vl), kappa, end, tangent[1])
     return vh, vl, kappa, its, end, tangent, (undetermined, neglected)
 
 
@@ -1270,9 +1366,6 @@ def ball_directions(z: int, cage: np.ndarray) -> tuple[np.ndarray, np.ndarray, n
     apart differ in their last bit, which at a clearance of millions of elastic approaches
     unbalances the mirror balls' loads by 1e-5, against a y held at 0 by the symmetry.
     """
-    from bearingload.models import _core
-    from bearingload.models._ring import SYMMETRY_SNAP_DEG
-
     return _core.directions(z, np.ascontiguousarray(cage, dtype=float), SYMMETRY_SNAP_DEG)
 
 
@@ -1290,8 +1383,6 @@ def symmetry_locks(
     and has the symmetry, so a minimum with these components 0 exists. The rule is the compiled
     core's (``symmetry_locks``, also of :func:`solve_combined`'s set-up).
     """
-    from bearingload.models import _core
-
     rows = np.array((*loads, t_imp), dtype=float)
     held = _core.locks(z, np.ascontiguousarray(mirror, dtype=np.uint8), rows, imposed)
     fixed = np.zeros(held.shape, dtype=bool)
@@ -1333,7 +1424,7 @@ def _light_start(
     single precision, the far balls' approaches, 1e-2 at a ratio of 8e6, would be lost); it is
     a function of the case alone (each case is solved alone), and whatever its residual, the
     light case is solved and checked as any other."""
-    if not p.one_sided.any():
+    if not np.count_nonzero(p.one_sided):
         return np.zeros(0, dtype=np.int64), np.zeros((0, 5))
     rows = np.flatnonzero(p.one_sided & (p.a_hat > LIGHT_RATIO))
     if not rows.size:
@@ -1469,8 +1560,6 @@ def _near_symmetric(
     """The cases of ``got`` (updated in place) left unbalanced with a cage within
     :data:`NEAR_SYMMETRIC_DEG` of a symmetric position and no moment across the load line,
     solved each alone with the balls at the symmetric position (``p`` then holds it)."""
-    from bearingload.models import _core
-
     end = got[4]
     res = _ring.residual_of(p.f, end.gen, end.size, p.imposed)
     rows = np.flatnonzero(~(res <= ACCEPT) & (p.f[:, 4] == 0) & ~p.imposed.any(axis=1))
@@ -1548,15 +1637,16 @@ def hertz_setup(geo: _Geometry, e: np.ndarray, nu: np.ndarray) -> tuple[np.ndarr
     geometry the core cannot set up goes through the vectorised path of ``ball_stiffness``,
     which refuses it with the reason (or, where only the core's Newton did not settle, sets it
     up)."""
-    from bearingload.contact.hertz import ball_stiffness
-    from bearingload.models import _core
-
-    params = np.array((geo.D_w, geo.d_m, geo.f_i, geo.f_o, e, nu), dtype=float).T.copy()
-    key = params.tobytes() if params.shape[0] == 1 else None
+    params = np.array((geo.D_w, geo.d_m, geo.f_i, geo.f_o, e, nu), dtype=float)  # (6, n)
+    key = params.tobytes() if params.shape[1] == 1 else None  # (one case: its six in order)
     if key in _SETUP_CACHE:
-        return tuple(a.copy() for a in _SETUP_CACHE[key])
+        k0, values = _SETUP_CACHE[key]
+        return k0.copy(), values.copy()
+    params = params.T.copy()
     k0, values, bad = _core.hertz_curves(params, NODE_X)
     for i in np.flatnonzero(bad).tolist():
+        from bearingload.contact.hertz import ball_stiffness
+
         dw, dm, fi, fo, ee, nn = params[i]
         k = ball_stiffness(dw, dm / np.append(NODE_COS, 1.0), fi, fo, ee, nn).ball
         k0[i], values[i] = k[-1], (k[:-1] / k[-1] - 1.0) / (NODE_COS - 1.0)
@@ -1602,8 +1692,6 @@ def _solve_with_stiffness(
     :func:`_light_start`. ``strict``: a case whose stiffness updates ran out raises
     ConvergenceError naming its row (``rows``); else the cases that failed (n,) bool come last,
     each case's fate its own."""
-    from bearingload.models import _core
-
     n = p.f.shape[0]
     given = np.zeros(n, dtype=np.uint8)
     start0 = np.zeros((n, 5))
@@ -1614,42 +1702,49 @@ def _solve_with_stiffness(
     else:
         given[:], start0[:] = 1, v0
     values = np.zeros((n, 0)) if curve is None else curve.values
-    vh, vl, kappa, total, status, at, tangent, holding = _core.solve(
-        np.ascontiguousarray(p.c, dtype=float), np.ascontiguousarray(p.s, dtype=float),
-        *(np.ascontiguousarray(a, dtype=float) for a in
-          (p.a_hat, p.pre, p.gap, p.b_hi, p.b_lo, p.t_imp, p.f)),
-        np.ascontiguousarray(p.locked, dtype=np.uint8),
-        np.ascontiguousarray(p.one_sided, dtype=np.uint8),
-        np.ascontiguousarray(values, dtype=float), NODE_X, NODE_W,
-        np.ascontiguousarray(start0, dtype=float), given,
-        max_iterations=_ring.MAX_ITERATIONS, first_stage_steps=_ring.FIRST_STAGE_STEPS,
-    )  # fmt: skip
+    vh, vl, kappa, total, status, at, tangent, holding, checks = _core.solve(
+        p.c,
+        p.s,
+        p.lengths,
+        p.f,
+        p.locked.view(np.uint8),
+        p.imposed.view(np.uint8),
+        p.one_sided.view(np.uint8),
+        values,
+        NODE_X,
+        NODE_W,
+        start0,
+        given,
+        max_iterations=_ring.MAX_ITERATIONS,
+        first_stage_steps=_ring.FIRST_STAGE_STEPS,
+    )
     balls, gen, size, res = at
-    failed = status != _ring.OK
-    if strict and failed.any():  # the cases by their rows: the caller names their inputs
+    if strict and np.count_nonzero(status):  # by their rows: the caller names their inputs
+        failed = status != _ring.OK
         raise ConvergenceError(
             "combined-load ball stiffness update",
             MAX_STIFFNESS_UPDATES,
             float(np.max(res[failed])),
             {"rows": np.flatnonzero(failed)},
         )
-    q0 = p.pre * np.sqrt(p.pre) if p.z >= 2 else np.zeros(n)  # (p^1.5 = 0 without preload)
-    loads = _ring.Loads(*balls[5:], q0)  # type: ignore[call-arg]
-    point = _ring.Point(_ring.Balls(*balls[:5]), loads, gen, size, res)
+    point = _ring.Point(balls, gen, size, res, checks)
     if not strict:
-        return vh, vl, kappa, total, point, (tangent, holding), failed
+        return vh, vl, kappa, total, point, (tangent, holding), status != _ring.OK
     return vh, vl, kappa, total, point, (tangent, holding)
 
 
 def _checked(p: Problem, end: _ring.Point, its: np.ndarray, given: dict) -> tuple[Any, ...]:
-    """The balls, loads and forces at the answer; ConvergenceError where the residual (held
-    components but an imposed tilt included) is above ACCEPT, InputError where a loaded ball
-    sits at the groove edge (its groove centres crossed, or its contact angle 90° to the
-    digits of a double). ``end``: the point at the answer (:func:`_solve_with_stiffness`)."""
-    b, lo, gen, size = end.b, end.lo, end.gen, end.size
-    res = _ring.residual_of(p.f, gen, size, p.imposed)
+    """The balls and their loads (``end.block``) and the forces at the answer;
+    ConvergenceError where the residual (held components but an imposed tilt included) is
+    above ACCEPT, InputError where a loaded ball sits at the groove edge (its groove centres
+    crossed, or its contact angle 90° to the digits of a double). ``end``: the point at the
+    answer (:func:`_solve_with_stiffness`), with the core's checks of it where known (else
+    measured here)."""
+    res, near_edge = (None, None) if end.checks is None else end.checks
+    if res is None:
+        res = _ring.residual_of(p.f, end.gen, end.size, p.imposed)
     bad = ~(res <= ACCEPT)
-    if bad.any():
+    if np.count_nonzero(bad):
         known = res[bad][~np.isnan(res[bad])]  # nanmax of all-NaN would warn on the terminal
         raise ConvergenceError(
             "combined-load ring equilibrium",
@@ -1658,15 +1753,22 @@ def _checked(p: Problem, end: _ring.Point, its: np.ndarray, given: dict) -> tupl
             _described(given, bad),
             units=INPUT_UNITS,
         )
-    # crossed groove centres, or a contact angle that rounds to 90° (a minimum may sit at the
-    # edge: there the potential's curvature across the groove ends)
+    if near_edge is None or np.count_nonzero(near_edge):
+        _check_edge(end, given)
+    return end.block, end.gen
+
+
+def _check_edge(end: _ring.Point, given: dict) -> None:
+    """InputError where a loaded ball of ``end`` sits at the groove edge: crossed groove
+    centres, or a contact angle that rounds to 90° (a minimum may sit at the edge: there the
+    potential's curvature across the groove ends)."""
+    b, lo = end.b, end.lo
     near = (lo.root > 0) & ((b.rho <= 0) | (lo.ca < 1e-8))  # (elsewhere below 90° - 5e-7°)
     if near.any():
         edge = near & ((b.rho <= 0) | (np.rad2deg(np.arctan2(np.abs(lo.sa), lo.ca)) >= 90.0))
         if edge.any():
             case, ball = (int(i[0]) for i in np.nonzero(edge))
             _refuse_edge(case, ball, given)
-    return b, lo, gen
 
 
 def _described(given: dict, rows: np.ndarray) -> dict:
@@ -1735,15 +1837,20 @@ def physical_tangent(
     couplings within the rounding of their sums over the balls (the core's ``physical``:
     ``|K_ab| <= sqrt(K_aa K_bb)`` for this positive semi-definite matrix, so a coupling below 4
     z eps of that does not follow the order of the summation)."""
-    from bearingload.models import _core
-
     t, radius = tangent.copy(), np.ascontiguousarray(geo.R_i, dtype=float)
-    if _core.physical(t, p.f_ref / p.scale, radius, mirrored.view(np.uint8), p.z).any():
-        # a lever of 1e300 mm: its square times K overflows
-        raise InputError(
-            "tilt_radius", "is so large that the tilting stiffness (lever^2 K) overflows"
-        )
+    if np.count_nonzero(_core.physical(t, p.f_ref / p.scale, radius, mirrored.view(np.uint8), p.z)):
+        _refuse_overflow()
     return t
+
+
+def _refuse_overflow() -> None:
+    """InputError: a lever of 1e300 mm, whose square times K overflows."""
+    raise InputError("tilt_radius", "is so large that the tilting stiffness (lever^2 K) overflows")
+
+
+#: ``mirrored`` of :func:`distribution`'s call of the core's ``combined_result`` where the
+#: stiffness given is physical already.
+_PHYSICAL = np.zeros(0, dtype=np.uint8)
 
 
 def distribution(
@@ -1754,53 +1861,60 @@ def distribution(
     given: dict,
     misalignment: Any,
     flags: tuple[np.ndarray, np.ndarray] | None = None,
+    mirrored: np.ndarray | None = None,
 ) -> CombinedDistribution:
     """Back to physical units and the case shape; ``flags``: the cases whose tilt the loads do
-    not determine and those whose negligible thrust was left out (default none)."""
-    from bearingload.models import _core
-
+    not determine and those whose negligible thrust was left out (default none). The stiffness
+    of ``answer`` is physical (:func:`physical_tangent`) or, given which cases are ``mirrored``,
+    the core's scaled tangent, made physical here in place (as :func:`physical_tangent`, in the
+    same loop as the other results)."""
     undetermined, neglected = (None, None) if flags is None else flags
-    v, kappa, its, (b, lo, gen), tangent = answer
+    v, kappa, its, (block, gen), tangent = answer
     z = kappa.shape[1]
     case_in = np.array(
         (p.t_imp, p.scale, geo.R_i, geo.alpha0, geo.A, p.one_sided, p.f_ref)
         + (given["moment"], given["cage_angle"], p.pre, p.k_ref),
         dtype=float,
     )
-    rows, per_ball = _core.combined_result(
+    rows, per_ball, overflow = _core.combined_result(
         np.ascontiguousarray(v),
         case_in,
-        *(np.ascontiguousarray(a) for a in (gen, lo.sa, lo.ca, b.eps, lo.q, kappa)),
+        np.ascontiguousarray(gen),
+        block,
+        np.ascontiguousarray(kappa),
         misalignment is not None,
+        tangent,
+        _PHYSICAL if mirrored is None else mirrored.view(np.uint8),
     )
-    x, y, axial, tilt, tilt_cross, alpha0, play, moment = rows
-    phi, alpha, approach, k_ball, q = per_ball
+    if np.count_nonzero(overflow):
+        _refuse_overflow()
+    # one case of plain numbers: Python floats, as numerics.scalar_out gives them
+    cases = rows.reshape((8,) + shape) if shape else rows[:, 0].tolist()
+    x, y, axial, tilt, tilt_cross, alpha0, play, moment = cases
+    phi, alpha, approach, k_ball, q = per_ball.reshape((5,) + shape + (z,))
 
     def case(a: np.ndarray) -> Any:
         return np.asarray(a).reshape(shape) if shape else a.item()
-
-    def ball(a: np.ndarray) -> np.ndarray:
-        return a.reshape(shape + (z,))
 
     return CombinedDistribution(
         balls=z,
         load=case(given["radial_load"]),
         axial_load=case(given["axial_load"]),
-        moment=case(moment),
+        moment=moment,
         clearance=case(given["clearance"]),
         cage_angle=case(given["cage_angle"]),
-        free_contact_angle=case(alpha0),
-        axial_play=case(play),
-        x=case(x),
-        y=case(y),
-        axial=case(axial),
-        tilt=case(tilt),
-        tilt_cross=case(tilt_cross),
-        ball_angles=ball(phi),
-        contact_angles=ball(alpha),
-        ball_approaches=ball(approach),
-        ball_stiffnesses=ball(k_ball),
-        ball_loads=ball(q),
+        free_contact_angle=alpha0,
+        axial_play=play,
+        x=x,
+        y=y,
+        axial=axial,
+        tilt=tilt,
+        tilt_cross=tilt_cross,
+        ball_angles=phi,
+        contact_angles=alpha,
+        ball_approaches=approach,
+        ball_stiffnesses=k_ball,
+        ball_loads=q,
         tilt_radius=case(geo.R_i),
         stiffness_matrix=tangent.reshape(shape + (5, 5)),
         iterations=case(its),

@@ -53,7 +53,7 @@ import numpy as np
 from bearingload import numerics, validate
 from bearingload.constants import STEEL_MODULUS
 from bearingload.errors import ConvergenceError, InputError
-from bearingload.models import _combined_ring as _ring
+from bearingload.models import _core
 from bearingload.models import combined as _comb
 from bearingload.models._combined_ring import ACCEPT, Problem
 from bearingload.models.combined import CombinedDistribution, StiffnessViews
@@ -187,7 +187,7 @@ def shaft_maps(sigma: np.ndarray, lever: np.ndarray) -> np.ndarray:
     diagonal = np.ones((2, 5))
     diagonal[:, 2:] = sigma[:, None]
     m = np.zeros((lever.shape[0], 2, 5, 5))
-    m[:, :, range(5), range(5)] = diagonal
+    m.reshape(-1, 2, 25)[:, :, ::6] = diagonal  # (the diagonal: every sixth of the 25)
     m[:, :, 0, 3] = m[:, :, 1, 4] = -lever
     return m
 
@@ -199,21 +199,23 @@ def held_components(kind: str, mirror: np.ndarray, loads: tuple[np.ndarray, ...]
     bearings' mirror image across the pair's mid-plane (not DT's) without a thrust or moment.
     ``loads`` = (F_r, F_a, M, M_c) (n,) each."""
     fr, fa, mm, mc = loads
-    held = (mirror & (mc == 0))[:, None] & np.array([False, True, False, False, True])
     no_moment = (mm == 0) & (mc == 0)
-    held |= ((fr == 0) & no_moment)[:, None] & np.array([True, True, False, True, True])
-    if kind != "DT":
-        held |= ((fa == 0) & no_moment)[:, None] & np.array([False, False, True, True, True])
-    return held
+    axial = (fa == 0) & no_moment if kind != "DT" else np.zeros(fa.shape, dtype=bool)
+    which = np.array([mirror & (mc == 0), (fr == 0) & no_moment, axial])  # (3, n)
+    return which.T @ _HELD  # (booleans: each component held where any symmetry holds it)
+
+
+#: The components of (x, y, a, t, t_c) each symmetry of :func:`held_components` holds: the
+#: mirror about the load line, the z-fold symmetry, the mirror across the mid-plane.
+_HELD = np.array([[0, 1, 0, 0, 1], [1, 1, 0, 1, 1], [0, 0, 1, 1, 1]], dtype=bool)
 
 
 @dataclass
 class _State:
     """The balls of both bearings at the answer: their geometry, stiffness and loads."""
 
-    balls: list[_ring.Balls]
-    kappa: list[np.ndarray]
-    loads: list[_ring.Loads]
+    block: np.ndarray  # the balls and their loads (13, 2, n, z), as the core gives them
+    kappa: np.ndarray  # their stiffness deviations (2, n, z)
     gen: np.ndarray  # each bearing's generalised forces, local and scaled (2, n, 5)
     tangents: np.ndarray  # each bearing's true tangent, local and scaled (2, n, 5, 5)
     local: np.ndarray  # each bearing's local position, scaled (2, n, 5)
@@ -224,20 +226,14 @@ def _solve_stages(pp: _Pair, v0: np.ndarray, curve: Any) -> tuple[Any, ...]:
     solve_pair`: Newton in plain doubles to a residual of 1e-9, then with the balls in
     double-double to the tolerance): (position hi, lo, residual, steps, the balls, their loads
     and forces there, the preload approach)."""
-    from bearingload.models import _core
-
     p = pp.prob
     values = np.zeros((v0.shape[0], 0)) if curve is None else curve.values
-    balls_in = (p.c, p.s, p.a_hat, p.pre, p.gap, p.b_hi, p.b_lo)
     cont = np.ascontiguousarray
-    args = [cont(a, dtype=float) for a in balls_in + (pp.sigma, -pp.lever, pp.preload, pp.f)]
-    args += [cont(pp.held, dtype=np.uint8), cont(values, dtype=float), _comb.NODE_X]
-    out = _core.solve_pair(*args, _comb.NODE_W, cont(v0, dtype=float))
+    args = [cont(a, dtype=float) for a in (pp.sigma, -pp.lever, pp.preload, pp.f)]
+    args += [cont(pp.held).view(np.uint8), cont(values, dtype=float), _comb.NODE_X]
+    out = _core.solve_pair(p.c, p.s, p.lengths, *args, _comb.NODE_W, cont(v0, dtype=float))
     vh, vl, res, its, _, balls, kappa, gen, tangents, local, delta_p = out
-    q0 = np.where(p.deviation, p.pre * np.sqrt(p.pre), 0.0)
-    loads = [_ring.Loads(*balls[5:, k], q0) for k in range(2)]  # type: ignore[call-arg]
-    ball_sets = [_ring.Balls(*balls[:5, k]) for k in range(2)]
-    st = _State(ball_sets, list(kappa), loads, gen, tangents, local)
+    st = _State(balls, kappa, gen, tangents, local)
     return vh, vl, res, its, st, delta_p
 
 
@@ -338,7 +334,7 @@ def solve_pair(
         shape, c = _checked(kind, named)
     c["cage_angle"] = validate.cage_angle(c["cage_angle"])
     narrow = c["width"] < c["ball_diameter"]
-    if narrow.any():  # no ring holds its balls so; the shaft's tilt then has no lever
+    if np.count_nonzero(narrow):  # no ring holds its balls so; the shaft's tilt then has no lever
         i = int(np.argmax(narrow))
         raise InputError(
             "width",
@@ -347,7 +343,9 @@ def solve_pair(
             element=validate.element_at(named["width"], narrow, shape, "mm"),
         )
     wide = c["width"] > WIDTH_MAX * c["pitch_diameter"]
-    if wide.any():  # a shaft between two supports, not a pair (a width of 1e9 mm diverged)
+    if np.count_nonzero(
+        wide
+    ):  # a shaft between two supports, not a pair (a width of 1e9 mm diverged)
         i = int(np.argmax(wide))
         raise InputError(
             "width",
@@ -471,9 +469,11 @@ def _solve(
     given = {k: c[k] for k in NAMED}
     unbalanced = ~(res <= ACCEPT)
     near = (
-        _near_symmetric(z, c["cage_angle"], mc) & unbalanced if snap and unbalanced.any() else None
+        _near_symmetric(z, c["cage_angle"], mc) & unbalanced
+        if snap and np.count_nonzero(unbalanced)
+        else None
     )
-    if near is not None and near.any():
+    if near is not None and np.count_nonzero(near):
         return _solve(
             z, kind, c | {"cage_angle": _symmetric(z, c["cage_angle"], near)}, shape, False
         )
@@ -489,7 +489,6 @@ def _scaled(z: int, c: dict, geo: Any, k_ref: np.ndarray) -> tuple[Problem, np.n
     the preload (n, 5) and which cases are mirrored about the load line: the compiled core's
     ``combined_problem`` (one loop over the cases); the loads it flags refused by
     :func:`_refuse_scale`."""
-    from bearingload.models import _core
     from bearingload.models._ring import SYMMETRY_SNAP_DEG
 
     names = ("radial_load", "axial_load", "moment", "moment_cross", "preload")
@@ -503,12 +502,14 @@ def _scaled(z: int, c: dict, geo: Any, k_ref: np.ndarray) -> tuple[Problem, np.n
     status, cos_, sin_, mirror, _, f, out = _core.combined_problem(
         z, rows, cage, lengths, k_ref, False, False, limits
     )
-    if status.any():
+    if np.count_nonzero(status):
         _refuse_scale(geo, k_ref, status == _core.SetupStatus.TOO_LIGHT, *(c[k] for k in names))
-    scale, a_hat, pre, gap, b_hi, b_lo, t_imp, f_ref = out
     none = np.zeros((n, 5), dtype=bool)
-    scaled = (scale, a_hat, pre, gap, b_hi, b_lo, np.zeros((n, 5)), t_imp, none, none)
-    return Problem(z, cos_, sin_, *scaled, f_ref, k_ref, np.ones(n, dtype=bool)), f, mirror
+    # out: the scale, the lengths (a_hat, pre, gap, b_hi, b_lo, t_imp), F
+    scaled = (out[0], out[1:7], np.zeros((n, 5)), none, none, out[7], k_ref)
+    one_sided = np.zeros(n, dtype=bool)
+    one_sided[:] = True  # (np.ones is a Python function: ten times the cost on one case)
+    return Problem(z, cos_, sin_, *scaled, one_sided), f, mirror
 
 
 def _refuse_scale(geo: Any, k_ref: np.ndarray, flagged: np.ndarray, *loads: np.ndarray) -> None:
@@ -549,18 +550,16 @@ def _start(pp: _Pair, z: int, geo: Any, pre: np.ndarray) -> np.ndarray:
     n = f.shape[0]
     v = np.zeros((n, 5))
     ca, sa = np.cos(geo.alpha0), np.sin(geo.alpha0)
-    share = np.where(pp.sigma[1] > 0, 0.5, 1.0) * np.abs(f[:, 2])
+    share = (0.5 if pp.sigma[1] > 0 else 1.0) * np.abs(f[:, 2])
     v[:, 2] = np.sign(f[:, 2]) * np.cbrt(share / (z * sa)) ** 2 / sa
     v[:, 0] = np.cbrt(2.5 * f[:, 0] / (z * ca)) ** 2 / ca
-    light = pre >= np.max(np.abs(f), axis=1)
-    return np.where(light[:, None], 0.0, v)
+    v[pre >= np.maximum.reduce(np.abs(f), axis=1)] = 0.0  # (the largest load: the preload)
+    return v
 
 
 def _near_symmetric(z: int, cage: np.ndarray, mc: np.ndarray) -> np.ndarray:
     """Which cases have a cage [°] within NEAR_SYMMETRIC_DEG of a symmetric position and no
     moment across the load line (the core's symmetry rule, ``directions``, at that snap)."""
-    from bearingload.models import _core
-
     near = _core.directions(z, np.ascontiguousarray(cage, dtype=float), _comb.NEAR_SYMMETRIC_DEG)
     return near[2] & (mc == 0)
 
@@ -573,7 +572,7 @@ def _symmetric(z: int, cage: np.ndarray, rows: np.ndarray) -> np.ndarray:
 
 def _accepted(res: np.ndarray, its: np.ndarray, given: dict) -> None:
     bad = ~(res <= ACCEPT)
-    if bad.any():
+    if np.count_nonzero(bad):  # (np.count_nonzero: a fifth of .any()'s time on one case)
         known = res[bad][np.isfinite(res[bad])]
         cases = {k: v[bad] for k, v in given.items()}
         raise ConvergenceError(
@@ -584,15 +583,16 @@ def _accepted(res: np.ndarray, its: np.ndarray, given: dict) -> None:
 
 def _check_edge(st: _State, given: dict) -> None:
     """Refuse a loaded ball at the groove edge (contact angle 90°), as the single bearing."""
+    b = st.block  # rho, ca, sa, root: rows 0, 5, 6, 10 (2, n, z)
+    near = (b[10] > 0) & ((b[0] <= 0) | (b[5] < 1e-8))  # (elsewhere below 90° - 5e-7°)
+    if not np.count_nonzero(near):
+        return
+    edge = near & ((b[0] <= 0) | (np.rad2deg(np.arctan2(np.abs(b[6]), b[5])) >= 90.0))
     for k in range(2):
-        b, lo = st.balls[k], st.loads[k]
-        edge = (lo.root > 0) & (
-            (b.rho <= 0) | (np.rad2deg(np.arctan2(np.abs(lo.sa), lo.ca)) >= 90.0)
-        )
-        if edge.any():
+        if edge[k].any():
             from bearingload.errors import format_cases
 
-            case = int(np.nonzero(edge)[0][0])
+            case = int(np.nonzero(edge[k])[0][0])
             one = {key: v[[case]] for key, v in given.items()}
             raise InputError(
                 "axial_load",
@@ -616,42 +616,61 @@ def _result(kind: str, pp: _Pair, geo: Any, answer: tuple[Any, ...], c: dict,
     scale, f_ref, radius = p.scale, p.f_ref, geo.R_i
     n = vh.shape[0]
     maps = shaft_maps(pp.sigma, pp.lever * radius[:, None])  # physical: tilts in radians
+    axisymmetric = pp.held[:, 0]  # no radial force nor moment on a bearing, exactly
+    (radial, thrust, moment), unloaded = _core.pair_loads(
+        st.gen, st.block, np.ascontiguousarray(axisymmetric).view(np.uint8), f_ref, radius
+    )
     bearings = []
     total = np.zeros((n, 5, 5))
     for k in range(2):
-        lo, gen = st.loads[k], st.gen[k]
         tangent = _comb.physical_tangent(p, geo, st.tangents[k], mirrored)
-        axisymmetric = pp.held[:, 0]  # no radial force nor moment on a bearing, exactly
-        given = {"radial_load": np.where(axisymmetric, 0.0, np.hypot(gen[:, 0], gen[:, 1]) * f_ref),
-                 "axial_load": gen[:, 2] * f_ref,
-                 "moment": np.where(axisymmetric, 0.0, gen[:, 3] * f_ref * radius),
-                 "clearance": np.zeros(n),
-                 "cage_angle": c["cage_angle"]}  # fmt: skip
-        out = (st.local[k], st.kappa[k], its, (st.balls[k], lo, gen), tangent)
+        given = {
+            "radial_load": radial[k],
+            "axial_load": thrust[k],
+            "moment": moment[k],
+            "clearance": np.zeros(n),
+            "cage_angle": c["cage_angle"],
+        }
+        out = (st.local[k], st.kappa[k], its, (st.block[:, k], st.gen[k]), tangent)
         bearings.append(_comb.distribution(p, geo, out, shape, given, None))
         total += maps[:, k].transpose(0, 2, 1) @ tangent @ maps[:, k]
     total[mirrored[:, None, None] & _COUPLING] = 0.0
-    unloaded = np.empty((n, 2), dtype=bool)
-    for k in range(2):
-        unloaded[:, k] = ~st.loads[k].q.any(axis=1)
-    v = vh + vl
+    offset, lift_off = _lift_off(pp, curve, delta_p)
+    lift = None if kind == "DT" else np.where(c["axial_load"] < 0, -lift_off, lift_off)
+    moved = (vh + vl) * scale[:, None]  # (x, y, axial, and the tilts times their lever)
+    tilts = np.rad2deg(moved[:, 3:] / radius[:, None])
+    rows = np.array(
+        [c[k] for k in ("radial_load", "axial_load", "moment", "moment_cross", "preload")]
+        + [offset * scale, c["width"], *moved[:, :3].T, *tilts.T, res]
+    )  # one case of plain numbers: Python floats, as numerics.scalar_out gives them
+    cases = rows.reshape((13,) + shape) if shape else rows[:, 0].tolist()
+    load, axial_load, moment_, moment_cross, preload, offset_, width = cases[:7]
+    x, y, axial, tilt, tilt_cross, residual = cases[7:]
 
     def case(a: Any) -> Any:
         return np.asarray(a).reshape(shape) if shape else np.asarray(a).item()
 
-    offset, thrust = _lift_off(pp, curve, delta_p)
-    lift = None if kind == "DT" else case(np.where(c["axial_load"] < 0, -thrust, thrust))
     return PairDistribution(
-        arrangement=kind, bearings=(bearings[0], bearings[1]),
-        load=case(c["radial_load"]), axial_load=case(c["axial_load"]), moment=case(c["moment"]),
-        moment_cross=case(c["moment_cross"]), preload=case(c["preload"]),
-        preload_offset=case(offset * scale), width=case(c["width"]),
-        x=case(v[:, 0] * scale), y=case(v[:, 1] * scale), axial=case(v[:, 2] * scale),
-        tilt=case(np.rad2deg(v[:, 3] * scale / radius)),
-        tilt_cross=case(np.rad2deg(v[:, 4] * scale / radius)),
-        stiffness_matrix=total.reshape(shape + (5, 5)), unloaded=unloaded.reshape(shape + (2,)),
-        lift_off_axial_load=lift, residual=case(res), iterations=case(its),
-    )  # fmt: skip
+        arrangement=kind,
+        bearings=(bearings[0], bearings[1]),
+        load=load,
+        axial_load=axial_load,
+        moment=moment_,
+        moment_cross=moment_cross,
+        preload=preload,
+        preload_offset=offset_,
+        width=width,
+        x=x,
+        y=y,
+        axial=axial,
+        tilt=tilt,
+        tilt_cross=tilt_cross,
+        stiffness_matrix=total.reshape(shape + (5, 5)),
+        unloaded=unloaded.reshape(shape + (2,)),
+        lift_off_axial_load=None if lift is None else case(lift),
+        residual=residual,
+        iterations=case(its),
+    )
 
 
 def _lift_off(pp: _Pair, curve: Any, delta: np.ndarray) -> tuple[np.ndarray, np.ndarray]:
@@ -660,8 +679,6 @@ def _lift_off(pp: _Pair, curve: Any, delta: np.ndarray) -> tuple[np.ndarray, np.
     external axial load alone at which one bearing of a preloaded DB/DF pair carries nothing
     (the other then at twice that offset from its zero-load position) [N], its magnitude: the
     compiled core's ``pair_lift_off``."""
-    from bearingload.models import _core
-
     p = pp.prob
     values = np.zeros((delta.shape[0], 0)) if curve is None else curve.values
     cont = np.ascontiguousarray
