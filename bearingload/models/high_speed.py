@@ -63,8 +63,15 @@ tangent of the ball forces by the implicit function theorem (the ball equations 
 ball); the step halved, then the step to the first contact of a ball held off the inner ring
 (a tangent singular along the residual: docs/speed.md), then Levenberg-Marquardt steps (a
 nearly singular tangent), none longer than A/10 or to a position where no ball touches the
-inner ring. A case left unbalanced is
-solved again by continuation in omega^2 from the static answer. The components the static model
+inner ring. Where that ends unbalanced with a touching ball of a one-sided bearing held at
+``u' = 0`` (u <= 0: its forces do not move with u), or with a direction whose stiffness is at
+most :data:`SINGULAR` of the largest, it goes on with the Newton step of the active set with
+those balls in contact and the step to a first contact along their side's tangent, until
+balanced and determined (kept where better). A case left unbalanced is
+solved again by continuation in omega^2 from the static answer; an applied component left
+unbalanced by more than :data:`CARRIED` of itself (a thrust of 1e-9 of the radial load), by
+continuation in it from :data:`SMALL_LOAD` of the largest applied load
+(:func:`_carry_small_loads`). The components the static model
 holds by symmetry are held (the speed terms keep those symmetries: ``M_g`` is odd in
 ``alpha_o``). A case stops when each applied component is balanced to ``TOLERANCE`` of the
 largest applied load and every ball to ``BALL_TOLERANCE`` of its forces, or when no step lowers
@@ -153,6 +160,11 @@ FALLBACK_ITERATIONS = 60
 BALL_HALVINGS = 30
 #: Rounding of an approach over its length's (of the ball tolerance). [-]
 _ROUND = 16.0 * _EPS / BALL_TOLERANCE
+#: An applied component is carried where the answer balances it to this share of itself (or
+#: the case to TOLERANCE); a component not carried is solved by continuation from SMALL_LOAD
+#: of the largest applied load (:func:`_carry_small_loads`). [-]
+CARRIED = 1e-3
+SMALL_LOAD = 1e-6
 #: Stages of the continuation in speed of a case the direct solve leaves unbalanced. [-]
 CONTINUATION_STAGES = 200
 #: N mm per kg mm^2/s^2 (forces from kg, mm, s). [-]
@@ -590,7 +602,7 @@ def _limits() -> np.ndarray:
     order."""
     tolerances = [TOLERANCE, ACCEPT, ROUNDING, NOISE_MAX, BALL_TOLERANCE, _ROUND]
     counts = [LM_TRIALS, HALVINGS, BALL_ITERATIONS, FALLBACK_ITERATIONS, BALL_HALVINGS]
-    return np.array(tolerances + counts, dtype=float)
+    return np.array(tolerances + counts + [SINGULAR], dtype=float)
 
 
 def _newton(
@@ -668,9 +680,45 @@ def _solve(
         won = np.flatnonzero(st2.accepted)
         v[bad[won]] = v2[won]
         _put_state(st, bad[won], _take_state(st2, won))
+    _carry_small_loads(bearings, f, held, v_static, (v, st, total))
     _check_resolved(st, bearings, flat)
     _check(st, total, flat)
     return bearings, v, st, total, undetermined(st.jac, held)
+
+
+def _carry_small_loads(
+    r: Ring, f: np.ndarray, held: np.ndarray, v_static: np.ndarray, out: tuple[Any, ...]
+) -> None:
+    """A load too small to matter, carried (in ``out`` = (v, state, iterations) of the
+    solve, in place): a
+    case left above TOLERANCE with a free applied component unbalanced by more than CARRIED of
+    itself (a thrust of 1e-10 to 1e-9 of the radial load, below what ACCEPT asks, left half
+    unbalanced at a position where no ball across the ring carries it: an answer off the one
+    the thrust, however small, makes and its neighbours give) is solved again by continuation
+    in that component from SMALL_LOAD of the largest applied load down to it, a decade a
+    stage: the first as a case of its own (from the static answer ``v_static``, then by the
+    continuation in speed), each next from the last one's position; its answer taken where
+    every stage is accepted and its residual is lower."""
+    v, st, total = out
+    res = np.where(held, 0.0, np.abs(f - st.gen))
+    small = ~held & (f != 0.0) & (res > CARRIED * np.abs(f))
+    rows = np.flatnonzero((st.merit > TOLERANCE) & st.accepted & small.any(axis=1))
+    for i in rows:
+        one = r.take(np.array([i]))
+        decades = math.ceil(math.log10(SMALL_LOAD * r.f_ref[i] / np.abs(f[i, small[i]]).min()))
+        pos, its, ok = v_static[i : i + 1].copy(), 0, True
+        for k in range(max(decades, 0), -1, -1):
+            stage = np.where(small[i], f[i] * 10.0**k, f[i])[None, :]
+            first = k == max(decades, 0)
+            pos, got, n = _newton(one, stage, held[i : i + 1], pos, v_static[i : i + 1], first)
+            its += int(n[0])
+            ok = bool(got.accepted[0])
+            if not ok:
+                break
+        total[i] += its
+        if ok and got.merit[0] < st.merit[i]:
+            v[i] = pos[0]
+            _put_state(st, np.array([i]), got)
 
 
 def undetermined(jac: np.ndarray, held: np.ndarray) -> np.ndarray:
