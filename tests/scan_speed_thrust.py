@@ -30,7 +30,7 @@ from bearingload.models.high_speed import solve_high_speed
 B7205 = dict(ball_diameter=8.7312, pitch_diameter=38.5, contact_angle=40.0, modulus=208000.0)
 RADIAL = [float(f) for f in np.geomspace(20.0, 3000.0, 8)]
 RATIOS = [0.0] + [10.0**k for k in range(-10, -2)]
-CAGES = [0.0, 1e-9, 7.0, 15.0, 22.0]
+CAGES = [0.0, 1e-9, 1e-6, 1e-3, 7.0, 15.0, 22.0]
 SPEEDS = [float(n) for n in np.geomspace(1000.0, 20000.0, 5)]
 #: The thrusts (over F_r) whose answers should agree: the limit of a vanishing thrust. [-]
 TINY = 1e-6

@@ -83,6 +83,30 @@ def test_the_answer_is_continuous_in_a_tiny_thrust(fr, cage, n):
     assert max(tilts) - min(tilts) < 5e-4
 
 
+@pytest.mark.parametrize(
+    "fr, ratio, n, cage",
+    [
+        (40.916660020213875, 1e-8, 20000.0, 1e-6),
+        (83.70865336048837, 1e-8, 20000.0, 1e-3),
+        (83.70865336048837, 1e-10, 20000.0, 1e-3),
+        (20.0, 1e-8, 2114.74, 1e-3),
+    ],
+)
+def test_a_cage_just_off_symmetry_gives_the_answer_of_one_further_off(fr, ratio, n, cage):
+    """The cage 1e-6° to 1e-3° off the load line: the load-line ball's F_y (F_r times the
+    sine of the offset) is carried by a ball across a nearly free y; the Newton crossed y the
+    wrong way and ended in a ConvergenceError (relative residual 1.75e-8 to 2.9e-6), or left
+    half the thrust unbalanced (1e-10 of F_r). Solved by continuation in the offset from
+    0.1°: the answer of a cage of 0.01° to 1e-4° and 0.02 µm (y changes by 0.008 µm over the
+    offset), the thrust carried to 1 % (the tolerance, 1e-12 of F_r, is 1 % of 1e-10 F_r)."""
+    r = solve_high_speed(12, fr, ratio * fr, speed=n, cage_angle=cage, **B7205)
+    far = solve_high_speed(12, fr, ratio * fr, speed=n, cage_angle=0.01, **B7205)
+    radial, thrust = carried(r, fr, ratio * fr)
+    assert radial < 1e-11 and thrust < 1e-2
+    assert abs(r.tilt - far.tilt) < 1e-4 and abs(r.tilt_cross - far.tilt_cross) < 1e-4
+    assert abs(r.y - far.y) < 2e-5
+
+
 def test_the_command_line_answers_a_tiny_thrust(capsys):
     code, out, err = run_entry(
         capsys, "solve", "7205B", "-F", "100N", "-A", "1e-6N", "--speed", "3000", "--cage-angle",
