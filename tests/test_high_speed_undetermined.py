@@ -67,16 +67,28 @@ def test_the_command_line_gives_the_neighbours_answer_without_a_warning(capsys, 
         assert code == 0 and POSITION_UNDETERMINED not in err
 
 
-#: A 7205B whose y the solver leaves in a range (F_r 20 N, F_a 1e-8 of it, the cage 1e-9° off
-#: symmetry, 2114.74 rpm: one of the 127 such cases of ``python -m tests.scan_speed_thrust``).
+#: A 7205B whose y the solver left in a range (F_r 20 N, F_a 1e-8 of it, the cage 1e-9° off
+#: symmetry, 2114.74 rpm: y = +24.33 µm, flagged; one of the 127 such cases of ``python -m
+#: tests.scan_speed_thrust``, 1 since): now by continuation in the cage's offset from 0.1°.
 STILL_FREE = ("7205B", "-F", "20N", "-A", "2e-7N", "--speed", "2114.7425268811285")
 
 
-def test_the_command_line_warns_where_the_loads_leave_a_direction_free(capsys):
+def test_a_cage_1e_9_off_symmetry_gives_the_answer_of_one_1e_6_off():
+    near = dict(ball_diameter=8.7312, pitch_diameter=38.5, contact_angle=40.0, modulus=208000.0)
+    r = solve_high_speed(12, 20.0, 2e-7, speed=2114.7425268811285, cage_angle=1e-9, **near)
+    far = solve_high_speed(12, 20.0, 2e-7, speed=2114.7425268811285, cage_angle=1e-6, **near)
+    assert not r.displacement_undetermined
+    assert abs(r.y - far.y) < 1e-6 and abs(r.tilt_cross - far.tilt_cross) < 1e-5
+
+
+def test_the_command_line_warns_where_the_loads_leave_a_direction_free(capsys, monkeypatch):
+    """solve's case carries the solver's free-direction flag (set here for every case, by the
+    solver's own test replaced: the answers of this page are determined now)."""
+    code, _, err = run_entry(capsys, "solve", *STILL_FREE, "--cage-angle", "1e-9")
+    assert code == 0 and POSITION_UNDETERMINED not in err
+    monkeypatch.setattr(high_speed, "undetermined", lambda jac, held: np.ones(len(jac), bool))
     code, _, err = run_entry(capsys, "solve", *STILL_FREE, "--cage-angle", "1e-9")
     assert code == 0 and f"Warning: {POSITION_UNDETERMINED}" in err
-    code, _, err = run_entry(capsys, "solve", *STILL_FREE, "--cage-angle", "15")
-    assert code == 0 and POSITION_UNDETERMINED not in err
 
 
 def test_table_life_warns_as_solve_where_a_direction_is_free(capsys, monkeypatch):

@@ -71,8 +71,8 @@ balanced and determined (kept where better). A case left unbalanced is
 solved again by continuation in omega^2 from the static answer; an applied component left
 unbalanced by more than :data:`CARRIED` of itself (a thrust of 1e-9 of the radial load), by
 continuation in it from :data:`SMALL_LOAD` of the largest applied load
-(:func:`_carry_small_loads`); a case left unbalanced with the cage less than
-:data:`OFF_SYMMETRY` off a symmetric angle, by continuation in that offset
+(:func:`_carry_small_loads`); a case left unbalanced or undetermined with the cage less
+than :data:`OFF_SYMMETRY` off a symmetric angle, by continuation in that offset
 (:func:`_off_symmetry`). The components the static model
 holds by symmetry are held (the speed terms keep those symmetries: ``M_g`` is odd in
 ``alpha_o``). A case stops when each applied component is balanced to ``TOLERANCE`` of the
@@ -687,12 +687,17 @@ def _solve(
         _put_state(st, bad[won], _take_state(st2, won))
     cage = (z, np.mod(flat["cage_angle"], 360.0))
     _carry_small_loads(bearings, cage, f, held, (v, st, total, v_static))
-    for i in np.flatnonzero(~st.accepted).tolist():  # left unbalanced near a symmetric cage
+    free = undetermined(st.jac, held)
+    for i in np.flatnonzero(~st.accepted | free).tolist():  # near a symmetric cage
         near = _off_symmetry(bearings, i, cage, f[i : i + 1], held[i : i + 1], v[i : i + 1])
-        if near is not None and near[1].accepted[0]:
-            v[i] = near[0][0]
+        if near is None:
+            continue
+        total[i] += near[2]
+        if near[1].accepted[0] and not (
+            st.accepted[i] and undetermined(near[1].jac, held[i : i + 1])[0]
+        ):
+            v[i] = near[0][0]  # (a y left in its range either way: the first answer kept)
             _put_state(st, np.array([i]), near[1])
-        total[i] += 0 if near is None else near[2]
     _check_resolved(st, bearings, flat)
     _check(st, total, flat)
     return bearings, v, st, total, undetermined(st.jac, held)
