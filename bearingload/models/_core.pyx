@@ -2980,11 +2980,12 @@ cdef double kink_reach(const Ring *rg, const Dyn *st, const double *v, const dou
 #: one of them F_r = 15.5 N (F_a/F_r 3e-5), which 4 and 30 balance. [-]
 cdef int CONTACT_STEPS = 8
 cdef double CONTACT_GROWTH = 30.0
-#: The residual (over the largest applied load) a step to a first contact may grow to, over
-#: CONTACT_GROWTH, where the Newton goes on past its end (``shaft_newton``, kept only where
-#: better): a ball brought in across a nearly free direction, its reach a difference of lengths
-#: (47 µm across, the cage 1e-6° off the load line of a 7205B at F_r 41 N, 20 000 rpm), carries
-#: many times the residual it was pressed for (1.6e-3 N for 7e-7 N). [-]
+#: Where the Newton goes on past its end (``shaft_newton``, its answer kept only where better),
+#: a step to a first contact is taken where the residual (over the largest applied load) grows
+#: to at most CONTACT_GROWTH times the larger of its size and this: a ball brought in across a
+#: nearly free direction, its reach a difference of lengths (47 µm across, the cage 1e-6° off
+#: the load line of a 7205B at F_r 41 N, 20 000 rpm), carries many times the residual it was
+#: pressed for (1.6e-3 N for 7e-7 N). [-]
 cdef double LIFTED_GROWTH = 1e-3
 
 
