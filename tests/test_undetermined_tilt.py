@@ -144,3 +144,20 @@ def test_neighbouring_thrusts_on_a_12_ball_bearing_give_neighbouring_tilts():
             b = solve_combined(12, 1000.0, fa * (1 + 1e-6), cage_angle=cage, **B7205B)
             assert abs(a.tilt - b.tilt) <= 1e-4, (cage, fa, a.tilt, b.tilt)
             assert abs(a.tilt_cross - b.tilt_cross) <= 1e-4, (cage, fa)
+
+
+def test_a_thrust_at_the_tolerance_gives_the_least_tilt_of_its_neighbours():
+    """``solve 7205B -F 1kN -A X --cage-angle 7`` gave -0.57158°/0.07226° for X = 1e-10, 1e-8,
+    1e-7 and 1e-6 N but -0.58161°/0.04862° for X = 1e-9 N, a larger tilt: at 1e-12 of F_r (the
+    tolerance) the ball across the ring that carries the thrust, of 5e-10 N, counted as loose,
+    and the balls above it left a plane of tilts, one direction of which was taken, without an
+    end. Where the balls above the tolerance leave more than one direction free, every
+    touching ball holds the ring: one line, as at 1e-8 N. Every thrust from 1e-12 to 1e-6 N
+    now gives the answer of 1e-8 N to 1e-6°, each balanced, the tilt the least of before."""
+    ref = solve_combined(12, 1000.0, 1e-8, cage_angle=7.0, **B7205B)
+    for fa in (1e-12, 1e-11, 1e-10, 3e-10, 1e-9, 3e-9, 1e-7, 1e-6):
+        r = solve_combined(12, 1000.0, fa, cage_angle=7.0, **B7205B)
+        assert bool(r.tilt_undetermined)
+        assert abs(r.tilt - ref.tilt) <= 1e-6 and abs(r.tilt_cross - ref.tilt_cross) <= 1e-6
+        _balanced(r, 1000.0, fa)
+    assert float(np.hypot(ref.tilt, ref.tilt_cross)) < float(np.hypot(-0.58161, 0.04862))

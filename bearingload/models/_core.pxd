@@ -79,6 +79,7 @@ ctypedef struct SpeedLimits:
     # the tolerances and limits of bearingload.models.high_speed (its module constants)
     double tolerance, accept, rounding, noise_max, ball_tolerance, ball_round
     int trials, halvings, ball_iterations, fallback_iterations, ball_halvings
+    double singular
 
 ctypedef struct Ring:
     # one bearing at speed in its own frame (physical units; tilts as R_i theta [mm]): ball j at

@@ -2767,25 +2767,41 @@ cdef void start_ball(const Ring *rg, double rho, double up, const double *prev,
         x[0] = max(x[0], pow(fc / sp.ko[NODES - 1], 2.0 / 3.0))
 
 
-cdef void add_ball_forces(const Ring *rg, int j, const double *t, const double *tot,
-                          Dyn *st) noexcept nogil:
-    """Ball j's ring forces (F_a, F_r) = (t[12], t[13]) into the generalised forces, their
-    tangent and the sums of the terms' magnitudes (``floor``, the rounding added later)."""
-    cdef double arm_r[5]
-    cdef double arm_a[5]
-    cdef int k, l
+cdef inline void ball_arms(const Ring *rg, int j, double *arm_r, double *arm_a) noexcept nogil:
+    """How ball j's radial and axial ring forces (F_r, F_a) enter the generalised forces (x, y,
+    a, R_i theta, R_i theta_c)."""
     arm_r[0] = rg.c[j]
     arm_r[1] = rg.s[j]
     arm_a[3] = rg.c[j]
     arm_a[4] = rg.s[j]
     arm_r[2] = arm_r[3] = arm_r[4] = arm_a[0] = arm_a[1] = 0.0
     arm_a[2] = 1.0
+
+
+cdef void add_ball_tangent(const Ring *rg, int j, const double *tot, double *jac) noexcept nogil:
+    """Ball j's part of the ring tangent from the total derivatives ``tot`` of its ring forces
+    (``eliminate``) into jac (25)."""
+    cdef double arm_r[5]
+    cdef double arm_a[5]
+    cdef int k, l
+    ball_arms(rg, j, arm_r, arm_a)
+    for k in range(5):
+        for l in range(5):
+            jac[5 * k + l] += (arm_r[k] * (tot[2] * arm_r[l] + tot[3] * arm_a[l])
+                               + arm_a[k] * (tot[0] * arm_r[l] + tot[1] * arm_a[l]))
+
+
+cdef void add_ball_forces(const Ring *rg, int j, const double *t, const double *tot,
+                          Dyn *st) noexcept nogil:
+    """Ball j's ring forces (F_a, F_r) = (t[12], t[13]) into the generalised forces and their
+    tangent."""
+    cdef double arm_r[5]
+    cdef double arm_a[5]
+    cdef int k
+    ball_arms(rg, j, arm_r, arm_a)
     for k in range(5):
         st.gen[k] += arm_r[k] * t[13] + arm_a[k] * t[12]
-        for l in range(5):
-            st.jac[5 * k + l] += (arm_r[k] * (tot[2] * arm_r[l] + tot[3] * arm_a[l])
-                                  + arm_a[k] * (tot[0] * arm_r[l] + tot[1] * arm_a[l]))
-
+    add_ball_tangent(rg, j, tot, st.jac)
 
 
 cdef void add_levels(const Ring *rg, int j, const double *t, const double *tot,
@@ -2855,6 +2871,80 @@ cdef void speed_state(const Ring *rg, const double *v, const Dyn *prev, bint war
             st.floor[k] = 0.0
 
 
+# A touching ball of a one-sided (angular-contact) bearing at u <= 0 is held at u' = max(u, 0) =
+# 0 (clipped): its ring forces do not move with u and the plain tangent has no u' column for it.
+# Where a thrust needs such a ball past u = 0 (a radial load with a thrust of 1e-8 of it: the
+# loaded balls at about 0° stopped at u < 0, the ring tilted to bring a ball across the ring in),
+# no step along the plain tangent lowers the residual; the shaft's Newton takes the tangent of
+# their side u > 0 there (``lifted_system``, ``shaft_newton``).
+
+cdef bint clipped(const Ring *rg, const Dyn *st, const double *v, int j, double *rho,
+                  double *u) noexcept nogil:
+    """Whether ball j, at the ring position v, touches the inner ring of a one-sided bearing at
+    u <= 0 (its rho and u into rho, u). [mm]"""
+    centre(rg, v, j, rho, u)
+    return rg.one_sided and u[0] <= 0.0 and st.terms[BALL_TERMS * j + 11] > 0.0
+
+
+cdef double lifted_ball(const Ring *rg, const Dyn *st, int j, double rho,
+                        double *tot) noexcept nogil:
+    """The total derivatives (``eliminate``) of a clipped ball j's ring forces at u' = 0 taken on
+    its side u > 0, into tot (4); returns dF_a/du' there. [N/mm]"""
+    cdef double t[BALL_TERMS]
+    cdef double d[BALL_PARTIALS]
+    cdef double sens[6]
+    cdef double gain[2]
+    ball_eval(&rg.sp, rho, 0.0, st.do[j], st.ao[j], t, d)
+    eliminate(rg, rho, 0.0, 1.0, d, sens, tot, gain)
+    return tot[1]
+
+
+cdef int lift_tangent(const Ring *rg, const Dyn *st, const double *v, int which, int *counter,
+                      double *jac, double *virt) noexcept nogil:
+    """jac (25) += the u' columns of the clipped balls (``clipped``) on their side u > 0, and
+    virt (5) += the ring forces they would have there at their u (< 0) to first order: all of
+    them where ``which`` < 0, else the one numbered ``which`` (counted on from ``counter``
+    over the bearings). How many there are."""
+    cdef double tot[4]
+    cdef double arm_r[5]
+    cdef double arm_a[5]
+    cdef double rho, u
+    cdef int j, k, n = 0
+    for j in range(rg.z):
+        if not clipped(rg, st, v, j, &rho, &u):
+            continue
+        n += 1
+        counter[0] += 1
+        if which >= 0 and counter[0] - 1 != which:
+            continue
+        lifted_ball(rg, st, j, rho, tot)
+        tot[0] = 0.0
+        tot[2] = 0.0
+        add_ball_tangent(rg, j, tot, jac)
+        ball_arms(rg, j, arm_r, arm_a)
+        for k in range(5):
+            virt[k] += (arm_r[k] * tot[3] + arm_a[k] * tot[1]) * u
+    return n
+
+
+cdef double kink_reach(const Ring *rg, const Dyn *st, const double *v, const double *d,
+                       double load) noexcept nogil:
+    """How far along the direction d (a bearing's own frame) the nearest clipped ball passes u =
+    0, pressed to carry about ``load`` axially (u = load over dF_a/du' on that side); inf where
+    none does. [-]"""
+    cdef double tot[4]
+    cdef double reach = INFINITY, rho, u, du, move
+    cdef int j
+    for j in range(rg.z):
+        if not clipped(rg, st, v, j, &rho, &u):
+            continue
+        du = d[2] + d[3] * rg.c[j] + d[4] * rg.s[j]
+        move = (load / lifted_ball(rg, st, j, rho, tot) - u) / du
+        if du > 0.0 and move > 0.0 and isfinite(move):
+            reach = min(reach, move)
+    return reach
+
+
 # ------------------------------------------------------------------- the shaft's damped Newton
 #
 # One bearing, or the rigid shaft of a pair (bearingload.models.pair_speed): the position v
@@ -2870,6 +2960,13 @@ cdef void speed_state(const Ring *rg, const double *v, const Dyn *prev, bint war
 #: one of them F_r = 15.5 N (F_a/F_r 3e-5), which 4 and 30 balance. [-]
 cdef int CONTACT_STEPS = 8
 cdef double CONTACT_GROWTH = 30.0
+#: Where the Newton goes on past its end (``shaft_newton``, its answer kept only where better),
+#: a step to a first contact is taken where the residual (over the largest applied load) grows
+#: to at most CONTACT_GROWTH times the larger of its size and this: a ball brought in across a
+#: nearly free direction, its reach a difference of lengths (47 µm across, the cage 1e-6° off
+#: the load line of a 7205B at F_r 41 N, 20 000 rpm), carries many times the residual it was
+#: pressed for (1.6e-3 N for 7e-7 N). [-]
+cdef double LIFTED_GROWTH = 1e-3
 
 
 cdef void lm_step(const double *jac, const double *res, double mu, double *step) noexcept nogil:
@@ -2958,17 +3055,19 @@ cdef double contact_reach(const Ring *rg, const Dyn *st, const double *d,
 
 
 cdef bint contact_step(const Shaft *sh, const ShaftState *cur, const double *jac,
-                       const double *res, double *step) noexcept nogil:
+                       const double *res, const double *v, double *step) noexcept nogil:
     """The step that brings the nearest ball without inner contact into it (to first order,
     pressed to carry about the residual): along the regularised Newton step (J + 1e-13 tr|J|)
     s = r of the held system. Where the tangent is singular along the residual (no ball
     touching the inner ring; or the balls touching cannot balance it, as one ball under a light
     thrust, whose F_a and M/R_i are equal, the others held off by their centrifugal forces) the
     plain Newton and Levenberg-Marquardt steps have no part along it, and this one mostly that
-    part. No longer than A. Whether there is such a step. [mm]"""
+    part. No longer than A. Where v (the position) is given, a clipped ball passing u = 0
+    (``kink_reach``) counts as a contact too. Whether there is such a step. [mm]"""
     cdef double a[25]
     cdef double d[5]
     cdef double local[5]
+    cdef double here[5]
     cdef double trace = 0.0, size = 0.0, load = 0.0, reach = INFINITY
     cdef const double *m
     cdef int i, k, l
@@ -3003,6 +3102,9 @@ cdef bint contact_step(const Shaft *sh, const ShaftState *cur, const double *jac
             for l in range(5):
                 local[i] += m[5 * i + l] * d[l]
         reach = min(reach, contact_reach(&sh.ring, &cur.part[k], local, sqrt(load)))
+        if v != NULL:
+            local_position(sh, k, v, here)
+            reach = min(reach, kink_reach(&sh.ring, &cur.part[k], here, local, sqrt(load)))
     if not isfinite(reach):
         return False
     reach = min(reach, sh.ring.length)
@@ -3034,6 +3136,17 @@ cdef void shaft_measures(const Shaft *sh, ShaftState *st) noexcept nogil:
     st.level = level / sh.f_ref
 
 
+cdef inline void local_position(const Shaft *sh, int k, const double *v,
+                                double *local) noexcept nogil:
+    """Bearing k's own position L_k v + offset_k at the shaft's position v. [mm]"""
+    cdef const double *m = &sh.maps[25 * k]
+    cdef int i, l
+    for i in range(5):
+        local[i] = sh.offset[5 * k + i]
+        for l in range(5):
+            local[i] += m[5 * i + l] * v[l]
+
+
 cdef void shaft_state(const Shaft *sh, const double *v, ShaftState *prev, bint warm,
                       ShaftState *st) noexcept nogil:
     """Every bearing at the position v (their balls from ``prev``'s, which may be st), the
@@ -3049,10 +3162,7 @@ cdef void shaft_state(const Shaft *sh, const double *v, ShaftState *prev, bint w
     st.touching = False
     for k in range(sh.parts):
         m = &sh.maps[25 * k]
-        for i in range(5):
-            local[i] = sh.offset[5 * k + i]
-            for l in range(5):
-                local[i] += m[5 * i + l] * v[l]
+        local_position(sh, k, v, local)
         p = &st.part[k]
         speed_state(&sh.ring, local, &prev.part[k], warm, p)
         st.touching = st.touching or p.touching
@@ -3097,75 +3207,238 @@ cdef void copy_shaft(const Shaft *sh, const ShaftState *src, ShaftState *dst) no
         copy_dyn(sh.ring.z, &src.part[i], &dst.part[i])
 
 
-cdef void held_system(const Shaft *sh, const ShaftState *st, double *jac,
-                      double *res) noexcept nogil:
-    """The Newton system at st: the tangent with held rows and columns replaced by the
-    identity's, the free residual f - gen (0 where held)."""
+cdef void held_matrix(const Shaft *sh, const double *tangent, double *jac) noexcept nogil:
+    """The Newton matrix of a tangent (25): held rows and columns replaced by the identity's."""
     cdef int k, l
     for k in range(5):
-        res[k] = 0.0 if sh.held[k] else sh.f[k] - st.gen[k]
         for l in range(5):
-            jac[5 * k + l] = 0.0 if (sh.held[k] or sh.held[l]) else st.jac[5 * k + l]
+            jac[5 * k + l] = 0.0 if (sh.held[k] or sh.held[l]) else tangent[5 * k + l]
         if sh.held[k]:
             jac[6 * k] = 1.0
 
 
-cdef int shaft_newton(const Shaft *sh, double *v, ShaftState *cur, ShaftState *trial,
-                      bint warm) noexcept nogil:
-    """Damped Newton on v from the balls in ``cur`` (moved by their sensitivities where
-    ``warm``; NaN balls start on their lines): each iteration the first of its trials
-    (``trial_step``) that lowers the residual's 2-norm (or balances it) with some ball touching
-    an inner ring; until balanced to the tolerance or no trial is taken. The answer in cur; the
-    iterations."""
+cdef void held_system(const Shaft *sh, const ShaftState *st, double *jac,
+                      double *res) noexcept nogil:
+    """The Newton system at st: the tangent with held rows and columns replaced by the
+    identity's, the free residual f - gen (0 where held)."""
+    cdef int k
+    for k in range(5):
+        res[k] = 0.0 if sh.held[k] else sh.f[k] - st.gen[k]
+    held_matrix(sh, st.jac, jac)
+
+
+cdef int lifted_system(const Shaft *sh, const ShaftState *st, const double *v, int which,
+                       double *jac, double *res) noexcept nogil:
+    """The Newton system at st (position v) with the clipped balls (all where ``which`` < 0,
+    else the one numbered ``which``) taken on their side u > 0 (``lift_tangent``, carried
+    through L_k): the tangent with their u' columns, the residual less the forces they would
+    have at their u to first order (the Newton step of the active set with them in contact).
+    How many clipped balls there are."""
+    cdef double tangent[25]
+    cdef double part[25]
+    cdef double virt[5]
+    cdef double local[5]
+    cdef const double *m
+    cdef int k, i, j, l, q, n = 0, counter = 0
+    for i in range(25):
+        tangent[i] = st.jac[i]
+    held_system(sh, st, jac, res)
+    for k in range(sh.parts):
+        m = &sh.maps[25 * k]
+        local_position(sh, k, v, local)
+        for i in range(25):
+            part[i] = 0.0
+        for i in range(5):
+            virt[i] = 0.0
+        n += lift_tangent(&sh.ring, &st.part[k], local, which, &counter, part, virt)
+        for i in range(5):
+            for j in range(5):
+                if not sh.held[i]:
+                    res[i] -= m[5 * j + i] * virt[j]
+                for l in range(5):
+                    for q in range(5):
+                        tangent[5 * i + l] += m[5 * j + i] * part[5 * j + q] * m[5 * q + l]
+    held_matrix(sh, tangent, jac)
+    return n
+
+
+cdef bint take_contact(const Shaft *sh, double *v, ShaftState *cur, ShaftState *trial,
+                       const double *step, double size, bint lifted) noexcept nogil:
+    """The step to a first contact taken from v where some ball touches an inner ring there and
+    the residual's 2-norm (``size`` at cur) grows at most CONTACT_GROWTH-fold or, where
+    ``lifted``, to that many times LIFTED_GROWTH (a residual near the tolerance, a direction
+    the loads barely determine: the ball brought in to carry it, its reach a difference of
+    lengths, can carry many times more); whether."""
+    cdef double vt[5]
+    cdef int i
+    for i in range(5):
+        vt[i] = v[i] + step[i]
+    shaft_state(sh, vt, cur, True, trial)
+    if lifted:
+        size = max(size, LIFTED_GROWTH)
+    if trial.touching and shaft_norm2(sh, trial) < CONTACT_GROWTH * size:
+        for i in range(5):
+            v[i] = vt[i]
+        swap_shaft(cur, trial)
+        return True
+    return False
+
+
+cdef bint singular(const Shaft *sh, const ShaftState *st) noexcept nogil:
+    """Whether a free component's stiffness (the tangent's diagonal) is at most SINGULAR of the
+    largest: a direction the loads do not determine (bearingload.models.high_speed's
+    ``undetermined``)."""
+    cdef double top = 0.0
+    cdef int i
+    for i in range(5):
+        top = max(top, fabs(st.jac[6 * i]))
+    for i in range(5):
+        if not sh.held[i] and fabs(st.jac[6 * i]) <= sh.ring.lim.singular * top and top > 0.0:
+            return True
+    return False
+
+
+cdef inline bint settled(const Shaft *sh, const ShaftState *st, bint lifted) noexcept nogil:
+    """Balanced to the tolerance and, where ``lifted``, determined (not ``singular``)."""
+    return st.merit <= sh.ring.lim.tolerance and not (lifted and singular(sh, st))
+
+
+cdef bint take_step(const Shaft *sh, double *v, ShaftState *cur, ShaftState *trial,
+                    const double *step, double size, bint lifted) noexcept nogil:
+    """A Newton trial taken from v where it lowers the residual's 2-norm (``size`` at cur) or
+    leaves it ``settled``, with some ball touching an inner ring; whether."""
+    cdef double vt[5]
+    cdef int i
+    for i in range(5):
+        vt[i] = v[i] + step[i]
+    shaft_state(sh, vt, cur, True, trial)
+    if ((shaft_norm2(sh, trial) < (1.0 - 1e-4) * size or settled(sh, trial, lifted))
+            and trial.touching):
+        for i in range(5):
+            v[i] = vt[i]
+        swap_shaft(cur, trial)
+        return True
+    return False
+
+
+cdef bint lifted_trials(const Shaft *sh, double *v, ShaftState *cur, ShaftState *trial,
+                        double size, int *contacts) noexcept nogil:
+    """Where the plain trials take no step and balls are clipped: the Newton step of the active
+    set with the clipped balls in contact (``lifted_system``), all of them, then each alone
+    (the step halved as ``trial_step``); then the step to a first contact along the tangent
+    with all of them on their side u > 0, a clipped ball passing u = 0 counting as a contact.
+    Whether a step was taken."""
+    cdef double jac[25]
+    cdef double res[5]
+    cdef double plain[5]
+    cdef double step[5]
+    cdef int n, w, k
+    n = lifted_system(sh, cur, v, -1, jac, res)
+    if n == 0:
+        return False
+    for w in range(-1, n if n > 1 else 0):
+        lifted_system(sh, cur, v, w, jac, res)
+        for k in range(sh.ring.lim.halvings):
+            trial_step(jac, res, sh.held, sh.ring.length, k, sh.ring.lim.halvings, step)
+            if take_step(sh, v, cur, trial, step, size, True):
+                contacts[0] = 0
+                return True
+    if contacts[0] >= CONTACT_STEPS:
+        return False
+    held_system(sh, cur, jac, plain)
+    lifted_system(sh, cur, v, -1, jac, res)
+    if contact_step(sh, cur, jac, plain, v, step) and take_contact(sh, v, cur, trial, step,
+                                                                   size, True):
+        contacts[0] += 1
+        return True
+    return False
+
+
+cdef bint newton_iteration(const Shaft *sh, double *v, ShaftState *cur, ShaftState *trial,
+                           int *contacts, bint lifted) noexcept nogil:
+    """One iteration of the damped Newton: the first of its trials (``trial_step``) that lowers
+    the residual's 2-norm (or balances it) with some ball touching an inner ring; after the
+    Newton steps halved, the step to a first contact (``contact_step``); where ``lifted`` and
+    none is taken, the trials with the clipped balls in contact (``lifted_trials``). Whether a
+    step was taken (v, cur moved)."""
     cdef double jac[25]
     cdef double res[5]
     cdef double step[5]
-    cdef double vt[5]
     cdef double size
-    cdef int its = 0, it, k, i, contacts = 0
+    cdef int k
+    held_system(sh, cur, jac, res)
+    size = shaft_norm2(sh, cur)
+    for k in range(sh.ring.lim.trials):
+        trial_step(jac, res, sh.held, sh.ring.length, k, sh.ring.lim.halvings, step)
+        if take_step(sh, v, cur, trial, step, size, lifted):
+            contacts[0] = 0
+            return True
+        if k + 1 == sh.ring.lim.halvings and contacts[0] < CONTACT_STEPS and contact_step(
+                sh, cur, jac, res, NULL, step):
+            # the Newton step halved finds nothing: a ball to bring into contact first
+            if take_contact(sh, v, cur, trial, step, size, lifted):
+                contacts[0] += 1
+                return True
+    return lifted and lifted_trials(sh, v, cur, trial, size, contacts)
+
+
+cdef int newton_run(const Shaft *sh, double *v, ShaftState *cur, ShaftState *trial,
+                    bint lifted) noexcept nogil:
+    """Newton iterations (``newton_iteration``) until balanced to the tolerance or no step is
+    taken; how many."""
+    cdef int its = 0, it, contacts = 0
     cdef bint found
-    shaft_state(sh, v, cur, warm, cur)
-    if cur.merit <= sh.ring.lim.tolerance:
-        return 0
     for it in range(sh.iterations):
-        held_system(sh, cur, jac, res)
-        size = shaft_norm2(sh, cur)
-        found = False
-        for k in range(sh.ring.lim.trials):
-            trial_step(jac, res, sh.held, sh.ring.length, k, sh.ring.lim.halvings, step)
-            for i in range(5):
-                vt[i] = v[i] + step[i]
-            shaft_state(sh, vt, cur, True, trial)
-            if ((shaft_norm2(sh, trial) < (1.0 - 1e-4) * size
-                    or trial.merit <= sh.ring.lim.tolerance) and trial.touching):
-                for i in range(5):
-                    v[i] = vt[i]
-                swap_shaft(cur, trial)
-                found = True
-                contacts = 0
-                break
-            if k + 1 == sh.ring.lim.halvings and contacts < CONTACT_STEPS and contact_step(
-                    sh, cur, jac, res, step):
-                # the Newton step halved finds nothing: a ball to bring into contact first
-                for i in range(5):
-                    vt[i] = v[i] + step[i]
-                shaft_state(sh, vt, cur, True, trial)
-                if trial.touching and shaft_norm2(sh, trial) < CONTACT_GROWTH * size:
-                    for i in range(5):
-                        v[i] = vt[i]
-                    swap_shaft(cur, trial)
-                    found = True
-                    contacts += 1
-                    break
+        found = newton_iteration(sh, v, cur, trial, &contacts, lifted)
         its += 1
-        if not found or cur.merit <= sh.ring.lim.tolerance:
+        if not found or settled(sh, cur, lifted):
             break
+    return its
+
+
+cdef int shaft_newton(const Shaft *sh, double *v, ShaftState *cur, ShaftState *trial,
+                      ShaftState *spare, bint warm) noexcept nogil:
+    """Damped Newton on v from the balls in ``cur`` (moved by their sensitivities where
+    ``warm``; NaN balls start on their lines) (``newton_run``). Where it ends unbalanced with a
+    clipped ball, or with a direction left undetermined (``singular``), it goes on,
+    the steps to a first contact along the tangent of the clipped balls' side u > 0 too, until
+    balanced and determined; that answer kept where it is accepted wherever the first was and
+    has a lower residual or, the first balanced, is balanced and determined (``spare`` holds
+    the first). The answer in cur; the iterations."""
+    cdef double saved[5]
+    cdef double jac[25]
+    cdef double res[5]
+    cdef double tol = sh.ring.lim.tolerance
+    cdef int its, i
+    cdef bint keep
+    shaft_state(sh, v, cur, warm, cur)
+    if cur.merit <= tol:
+        return 0
+    its = newton_run(sh, v, cur, trial, False)
+    if spare == NULL:
+        return its
+    if not singular(sh, cur) and (cur.merit <= tol or lifted_system(sh, cur, v, -1, jac,
+                                                                    res) == 0):
+        return its
+    copy_shaft(sh, cur, spare)
+    for i in range(5):
+        saved[i] = v[i]
+    its += newton_run(sh, v, cur, trial, True)
+    keep = cur.score <= max(spare.score, sh.ring.lim.accept)
+    if spare.merit > tol:
+        keep = keep and cur.merit < spare.merit
+    else:
+        keep = keep and cur.merit <= tol and not singular(sh, cur)
+    if not keep:
+        copy_shaft(sh, spare, cur)
+        for i in range(5):
+            v[i] = saved[i]
     return its
 
 
 cdef bint shaft_continuation(const Shaft *sh, const double *v_static, double *v,
                              ShaftState *cur, ShaftState *trial, ShaftState *keep,
-                             int *its) noexcept nogil:
+                             ShaftState *spare, int *its) noexcept nogil:
     """The case by continuation in omega^2 (the centrifugal and gyroscopic terms) from the
     static answer: stages of a quarter, halved on a stage not accepted (ACCEPT), doubled after
     one that is, each from the last stage's balls (warm where ``sh.warm_stages``) and its
@@ -3191,7 +3464,7 @@ cdef bint shaft_continuation(const Shaft *sh, const double *v_static, double *v,
             for i in range(sh.parts * sh.ring.z):
                 cur.part[i // sh.ring.z].do[i % sh.ring.z] = NAN
                 cur.part[i // sh.ring.z].ao[i % sh.ring.z] = NAN
-        its[0] += shaft_newton(&stage, x1, cur, trial, done > 0.0 and sh.warm_stages)
+        its[0] += shaft_newton(&stage, x1, cur, trial, NULL, done > 0.0 and sh.warm_stages)
         if cur.score <= sh.ring.lim.accept:
             for i in range(5):
                 if done > 0.0:
@@ -3235,6 +3508,7 @@ cdef void ring_on(Ring *rg, int z, const double *consts, const double *ki, const
     rg.lim.ball_iterations = <int> lim[8]
     rg.lim.fallback_iterations = <int> lim[9]
     rg.lim.ball_halvings = <int> lim[10]
+    rg.lim.singular = lim[11]
 
 
 cdef void shaft_on(Shaft *sh, int parts, const double *maps, const double *offset,
@@ -3281,12 +3555,12 @@ cdef void store_dyn(const Dyn *st, int z, Py_ssize_t n, Py_ssize_t k, double *ba
 
 
 cdef double *shafts_open(int z, ShaftState *states) noexcept nogil:
-    """Four shaft states of two bearings of z balls in one block (to free); NULL if out of
+    """Five shaft states of two bearings of z balls in one block (to free); NULL if out of
     memory."""
-    cdef double *block = <double *> malloc(8 * DYN_PER_BALL * z * sizeof(double) + 8)
+    cdef double *block = <double *> malloc(10 * DYN_PER_BALL * z * sizeof(double) + 8)
     cdef int i
     if block != NULL:
-        for i in range(8):
+        for i in range(10):
             dyn_on(block + i * DYN_PER_BALL * z, z, &states[i // 2].part[i % 2])
     return block
 
@@ -3295,19 +3569,19 @@ cdef int shaft_case(Shaft *sh, double *v, const double *v_static, bint continued
                     ShaftState *st) noexcept nogil:
     """One case: the Newton from v, the balls on their lines; where left unbalanced and
     ``continued``, the continuation from v_static, its answer taken where it reaches the full
-    speed. The answer in v and st[0]; the iterations."""
+    speed. The answer in v and st[0] (st[1] to st[4] work space); the iterations."""
     cdef double saved[5]
     cdef int its, i
     for i in range(sh.parts * sh.ring.z):
         st[0].part[i // sh.ring.z].do[i % sh.ring.z] = NAN
         st[0].part[i // sh.ring.z].ao[i % sh.ring.z] = NAN
-    its = shaft_newton(sh, v, &st[0], &st[1], False)
+    its = shaft_newton(sh, v, &st[0], &st[1], &st[4], False)
     if st[0].score <= sh.ring.lim.accept or not continued:
         return its
     copy_shaft(sh, &st[0], &st[3])
     for i in range(5):
         saved[i] = v[i]
-    if not shaft_continuation(sh, v_static, v, &st[0], &st[1], &st[2], &its):
+    if not shaft_continuation(sh, v_static, v, &st[0], &st[1], &st[2], &st[4], &its):
         copy_shaft(sh, &st[3], &st[0])
         for i in range(5):
             v[i] = saved[i]
@@ -3359,9 +3633,9 @@ def solve_speed(const double[:, ::1] consts, const double[:, ::1] ki, const doub
     shaft (maps (n, 2, 5, 5), offset (n, 2, 5)): ``shaft_case`` from v0 (n, 5), the continuation
     from v_static where ``continued``. Per case: consts (6), ki, ko (NODES) as ``speed_balls``;
     c, s (z); geo (4): A - G_r/2, the largest applied load (and preload), A, one-sided; f (5),
-    held (5, uint8); limits (11): TOLERANCE, ACCEPT, ROUNDING, NOISE_MAX, BALL_TOLERANCE, the
+    held (5, uint8); limits (12): TOLERANCE, ACCEPT, ROUNDING, NOISE_MAX, BALL_TOLERANCE, the
     ball rounding factor, LM_TRIALS, HALVINGS, BALL_ITERATIONS, FALLBACK_ITERATIONS, the ball
-    halvings; shaft_limits (4): Newton iterations, continuation stages, 1: each stage's balls
+    halvings, SINGULAR; shaft_limits (4): Newton iterations, continuation stages, 1: each stage's balls
     warm, 1: the state at rest too (``at_rest``). Returns (v, bearings: (balls, terms, sens,
     ring) of each as ``store_dyn``, out (n, 45) as ``store_case`` with out[:, 38] the
     iterations, 39 accepted, 40-41 ``at_rest``, 42 out of memory)."""
@@ -3382,7 +3656,7 @@ def solve_speed(const double[:, ::1] consts, const double[:, ::1] ki, const doub
         arr2 = bearings[i][3]
         outs[4 * i + 3] = &arr2[0, 0]
     cdef Shaft sh
-    cdef ShaftState st[4]
+    cdef ShaftState st[5]
     cdef double *block
     with nogil:
         for k in range(n):

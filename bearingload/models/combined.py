@@ -976,10 +976,42 @@ def _least_norm_tilt(
         dict(zip(rows.tolist(), vec, strict=True)),
     )
     for i in np.flatnonzero(undetermined).tolist():
-        d = vec_of[i][:, 0] * ~p.locked[i]
-        along = _least_tilt_step(p, i, end, vh[i] + vl[i], d)
-        _move_along(p, i, (vh, vl), kappa, end, (lam_of[i], vec_of[i], along))
+        lam_i, vec_i = lam_of[i], vec_of[i]
+        holds_above = float(TOLERANCE)  # the load above which a ball holds the ring
+        if np.count_nonzero(lam_i <= FLAT * lam_i[-1]) > 1:
+            lam_t, vec_t = _touching_valley(p, i, end, kappa[i])
+            if np.count_nonzero(lam_t <= FLAT * lam_t[-1]) == 1:
+                lam_i, vec_i, holds_above = lam_t, vec_t, 0.0
+        d = vec_i[:, 0] * ~p.locked[i]
+        along = _least_tilt_step(p, i, end, vh[i] + vl[i], d, holds_above)
+        _move_along(p, i, (vh, vl), kappa, end, (lam_i, vec_i, along))
     return vh, vl, end, undetermined
+
+
+def _touching_valley(
+    p: Problem, i: int, end: _ring.Point, kappa: np.ndarray
+) -> tuple[np.ndarray, np.ndarray]:
+    """The eigenvalues and eigenvectors of case ``i``'s Hessian of the potential (the
+    stiffness frozen, the held components decoupled) from every ball that touches: where the
+    balls carrying more than the tolerance leave more than one direction free, a thrust at
+    the tolerance (1e-12 of the largest load) is carried by balls below it, which hold the
+    ring as much as it matters (7205B, F_r 1 kN, F_a 1e-9 N, cage 7°: its ball across the
+    ring, of 5e-10 N, left a plane of tilts, whose least tilt, to first order, no balanced
+    position reaches; 1e-8 N, one line). The core's Hessian, ``holding``, with every load."""
+    b, lo, c, s = end.b, end.lo, p.c[i], p.s[i]
+    ca, sa = lo.ca[i], lo.sa[i]
+    touch = lo.q[i] > 0.0
+    turns = (b.rho[i] > 0) & (~p.one_sided[i] | (b.u[i] > 0))
+    w1 = np.where(touch, 1.5 * (1.0 + kappa) * lo.root[i], 0.0)
+    with np.errstate(divide="ignore", invalid="ignore"):
+        w2 = np.where(touch & turns, lo.q[i] / b.d[i], 0.0)
+    g = np.stack([ca * c, ca * s, sa, sa * c, sa * s])
+    h = np.stack([-sa * c, -sa * s, ca, ca * c, ca * s])
+    hess = (g * w1) @ g.T + (h * w2) @ h.T
+    free = ~p.locked[i]
+    hess = np.where(free[:, None] & free[None, :], hess, 0.0)
+    hess[range(5), range(5)] += np.where(free, 0.0, np.abs(hess).max())
+    return np.linalg.eigh(hess)
 
 
 #: Bisections of the move along a valley whose first-order end is not balanced. [-]
@@ -1046,18 +1078,26 @@ def _valley_point(
     return None
 
 
-def _least_tilt_step(p: Problem, i: int, end: _ring.Point, v: np.ndarray, d: np.ndarray) -> float:
+def _least_tilt_step(
+    p: Problem,
+    i: int,
+    end: _ring.Point,
+    v: np.ndarray,
+    d: np.ndarray,
+    holding: float = float(TOLERANCE),
+) -> float:
     """The move along the valley direction ``d`` (scaled, of case ``i`` at ``v``) to the least
-    tilt within the valley: its ends where a ball that does not hold the ring would touch (to
-    first order from its approach, which may be a rounding above 0) or a loaded one-sided ball
-    at the groove bottom (u <= 0) would leave it; 0 where the valley has no end both ways."""
+    tilt within the valley: its ends where a ball that does not hold the ring (its load at
+    most ``holding``) would touch (to first order from its approach, which may be a rounding
+    above 0) or a loaded one-sided ball at the groove bottom (u <= 0) would leave it; 0 where
+    the valley has no end both ways."""
     c, s = p.c[i], p.s[i]
     dr = d[0] * c + d[1] * s
     du = d[2] + d[3] * c + d[4] * s
     b, lo = end.b, end.lo
     delta = p.pre[i] + b.eps[i]
     rate = lo.ca[i] * dr + lo.sa[i] * du
-    holds = lo.q[i] > TOLERANCE
+    holds = lo.q[i] > holding
     value = np.where(holds, b.u[i], delta)  # each ball's quantity kept <= 0
     speed = np.where(holds, du, rate)
     bound = ~holds | (p.one_sided[i] & (b.u[i] <= 0))

@@ -63,8 +63,17 @@ tangent of the ball forces by the implicit function theorem (the ball equations 
 ball); the step halved, then the step to the first contact of a ball held off the inner ring
 (a tangent singular along the residual: docs/speed.md), then Levenberg-Marquardt steps (a
 nearly singular tangent), none longer than A/10 or to a position where no ball touches the
-inner ring. A case left unbalanced is
-solved again by continuation in omega^2 from the static answer. The components the static model
+inner ring. Where that ends unbalanced with a touching ball of a one-sided bearing held at
+``u' = 0`` (u <= 0: its forces do not move with u), or with a direction whose stiffness is at
+most :data:`SINGULAR` of the largest, it goes on with the Newton step of the active set with
+those balls in contact and the step to a first contact along their side's tangent, until
+balanced and determined (kept where better). A case left unbalanced is
+solved again by continuation in omega^2 from the static answer; an applied component left
+unbalanced by more than :data:`CARRIED` of itself (a thrust of 1e-9 of the radial load), by
+continuation in it from :data:`SMALL_LOAD` of the largest applied load
+(:func:`_carry_small_loads`); a case left unbalanced or undetermined with the cage less
+than :data:`OFF_SYMMETRY` off a symmetric angle, by continuation in that offset
+(:func:`_off_symmetry`). The components the static model
 holds by symmetry are held (the speed terms keep those symmetries: ``M_g`` is odd in
 ``alpha_o``). A case stops when each applied component is balanced to ``TOLERANCE`` of the
 largest applied load and every ball to ``BALL_TOLERANCE`` of its forces, or when no step lowers
@@ -153,6 +162,14 @@ FALLBACK_ITERATIONS = 60
 BALL_HALVINGS = 30
 #: Rounding of an approach over its length's (of the ball tolerance). [-]
 _ROUND = 16.0 * _EPS / BALL_TOLERANCE
+#: An applied component is carried where the answer balances it to this share of itself (or
+#: the case to TOLERANCE); a component not carried is solved by continuation from SMALL_LOAD
+#: of the largest applied load (:func:`_carry_small_loads`). [-]
+CARRIED = 1e-3
+SMALL_LOAD = 1e-6
+#: A case left unbalanced with the cage closer than this to a symmetric angle is solved by
+#: continuation in the offset from it (:func:`_off_symmetry`). [°]
+OFF_SYMMETRY = 0.1
 #: Stages of the continuation in speed of a case the direct solve leaves unbalanced. [-]
 CONTINUATION_STAGES = 200
 #: N mm per kg mm^2/s^2 (forces from kg, mm, s). [-]
@@ -590,7 +607,7 @@ def _limits() -> np.ndarray:
     order."""
     tolerances = [TOLERANCE, ACCEPT, ROUNDING, NOISE_MAX, BALL_TOLERANCE, _ROUND]
     counts = [LM_TRIALS, HALVINGS, BALL_ITERATIONS, FALLBACK_ITERATIONS, BALL_HALVINGS]
-    return np.array(tolerances + counts, dtype=float)
+    return np.array(tolerances + counts + [SINGULAR], dtype=float)
 
 
 def _newton(
@@ -668,9 +685,102 @@ def _solve(
         won = np.flatnonzero(st2.accepted)
         v[bad[won]] = v2[won]
         _put_state(st, bad[won], _take_state(st2, won))
+    cage = (z, np.mod(flat["cage_angle"], 360.0))
+    _carry_small_loads(bearings, cage, f, held, (v, st, total, v_static))
+    free = undetermined(st.jac, held)
+    for i in np.flatnonzero(~st.accepted | free).tolist():  # near a symmetric cage
+        near = _off_symmetry(bearings, i, cage, f[i : i + 1], held[i : i + 1], v[i : i + 1])
+        if near is None:
+            continue
+        total[i] += near[2]
+        if near[1].accepted[0] and not (
+            st.accepted[i] and undetermined(near[1].jac, held[i : i + 1])[0]
+        ):
+            v[i] = near[0][0]  # (a y left in its range either way: the first answer kept)
+            _put_state(st, np.array([i]), near[1])
     _check_resolved(st, bearings, flat)
     _check(st, total, flat)
     return bearings, v, st, total, undetermined(st.jac, held)
+
+
+def _carry_small_loads(
+    r: Ring, cage: tuple[int, np.ndarray], f: np.ndarray, held: np.ndarray, out: tuple
+) -> None:
+    """A load too small to matter, carried (in ``out`` = (v, state, iterations, v_static) of
+    the solve, in place): a case left above TOLERANCE with a free applied component
+    unbalanced by more than CARRIED of itself (a thrust of 1e-10 to 1e-9 of the radial load,
+    below what ACCEPT asks, left half unbalanced at a position where no ball across the ring
+    carries it: an answer off the one the thrust, however small, makes and its neighbours
+    give; 1e-8 of it with the cage 1e-3° off symmetry, left unbalanced) is solved again by
+    continuation in that component from SMALL_LOAD of the largest applied load down to it, a
+    decade a stage: the first as a case of its own (:func:`_alone`, from the static answer),
+    each next from the last one's position; its answer taken where every stage is accepted
+    and its residual is lower."""
+    v, st, total, v_static = out
+    res = np.where(held, 0.0, np.abs(f - st.gen))
+    small = ~held & (f != 0.0) & (res > CARRIED * np.abs(f))
+    rows = np.flatnonzero((st.merit > TOLERANCE) & small.any(axis=1))
+    for i in rows:
+        one = r.take(np.array([i]))
+        decades = max(
+            math.ceil(math.log10(SMALL_LOAD * r.f_ref[i] / np.abs(f[i, small[i]]).min())), 0
+        )
+        stage = np.where(small[i], f[i] * 10.0**decades, f[i])[None, :]
+        pos, got, its = _alone(r, int(i), cage, stage, held[i : i + 1], v_static[i : i + 1])
+        for k in range(decades - 1, -1, -1):
+            if not got.accepted[0]:
+                break
+            stage = np.where(small[i], f[i] * 10.0**k, f[i])[None, :]
+            pos, got, n = _newton(one, stage, held[i : i + 1], pos, pos, False)
+            its += int(n[0])
+        total[i] += its
+        if got.accepted[0] and got.merit[0] < st.merit[i]:
+            v[i] = pos[0]
+            _put_state(st, np.array([i]), got)
+
+
+def _alone(
+    r: Ring, i: int, cage: tuple, f: np.ndarray, held: np.ndarray, start: np.ndarray
+) -> tuple[np.ndarray, BallState, int]:
+    """Case ``i`` of the bearings ``r`` under ``f`` (1, 5) as a case of its own: the Newton
+    from ``start`` (1, 5), where left unbalanced the continuation in speed from it, and where
+    still unbalanced (:func:`_off_symmetry`) the continuation in the cage's offset from
+    symmetry. Returns (v, state, iterations)."""
+    pos, got, n = _newton(r.take(np.array([i])), f, held, start, start, True)
+    near = None if got.accepted[0] else _off_symmetry(r, i, cage, f, held, start)
+    if near is None or not near[1].accepted[0]:
+        return pos, got, int(n[0]) + (0 if near is None else near[2])
+    return near[0], near[1], int(n[0]) + near[2]
+
+
+def _off_symmetry(
+    r: Ring, i: int, cage: tuple, f: np.ndarray, held: np.ndarray, start: np.ndarray
+) -> tuple[np.ndarray, BallState, int] | None:
+    """Case ``i`` of the bearings ``r`` under ``f`` (1, 5) with the cage (``cage``: z and
+    every case's angle [°]) less than OFF_SYMMETRY off a symmetric angle (a ball on the load
+    line or the load between two balls), by continuation in that offset: a 7205B at F_r 41 N,
+    F_a 1e-8 of it, 20 000 rpm, the cage 1e-6° off the load line, leaves the load-line
+    ball's F_y (1.7e-8 of F_r) to a ball across a nearly free y that the Newton crosses the
+    wrong way; at an offset a decade up and more it does not. From the offset that is
+    OFF_SYMMETRY or just under it (from ``start`` (1, 5), then by the continuation in speed),
+    a decade down each stage, each from the last one's position, until a stage is not
+    accepted. Returns (v, state, iterations), or None where the cage is not so near."""
+    z, angle = cage[0], float(cage[1][i])
+    sym = round(angle * z / 180.0) * 180.0 / z
+    offset = angle - sym
+    if offset == 0.0 or abs(offset) >= OFF_SYMMETRY:
+        return None
+    one = r.take(np.array([i]))
+    decades = math.floor(math.log10(OFF_SYMMETRY / abs(offset)))
+    pos, its = start.copy(), 0
+    for k in range(decades, -1, -1):
+        c, s, _ = _combined.ball_directions(z, np.array([sym + offset * 10.0**k]))
+        stage = Ring(one.b, c, s, one.geo) if k else one  # the last: the cage given
+        pos, got, n = _newton(stage, f, held, pos, pos, k == decades)
+        its += int(n[0])
+        if not got.accepted[0]:
+            break
+    return pos, got, its
 
 
 def undetermined(jac: np.ndarray, held: np.ndarray) -> np.ndarray:
