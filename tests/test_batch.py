@@ -349,6 +349,14 @@ def test_render_csv_is_csv_block():
     assert [float(line.split(",")[0]) for line in lines] == [float(f"{v:.10g}") for v in awkward]
 
 
+def test_text_cells_read_back_as_written():
+    """A text cell with a comma, a quote, LF or CR (an oil's name echoed as given) reads back
+    whole: a CR was written unquoted, and a csv reader then ended the record there."""
+    texts = ["ISO VG\r68", "a\r\nb", "x\ny", 'q"', "p,q", "plain"]
+    block = csv_block([Column("t", "t"), Column("n", "n")], {"t": texts, "n": [1] * 6})
+    assert list(csv.reader(io.StringIO(block, newline=""))) == [[t, "1"] for t in texts]
+
+
 def test_integers_and_constant_columns():
     v = np.array([0, -1, 7, 10, 99, 100, -123456789, 9999999999, 2**62, -(2**62)])
     assert csv_block([Column("i", "i")], {"i": v}).splitlines() == [str(x) for x in v.tolist()]

@@ -336,3 +336,21 @@ def test_table_life_json_lists_the_warnings_of_the_lives():
     printed = [w.removeprefix("Warning: ") for w in out.stderr.splitlines()]
     assert any("kappa" in w for w in printed)
     assert json.loads(out.stdout)["warnings"] == printed
+
+
+@pytest.mark.parametrize("name", ['"ISO VG\n68"', "ISO VG\u202868", "ISO VG\x0c68"])
+def test_an_oil_name_with_a_line_break_is_written_as_one_record(name):
+    """The oil's cell is echoed as given: a line break inside it (quoted in the input, so
+    quoted in the output) or a character where str.splitlines breaks a line split the csv
+    output of its row in two, and the rows no longer matched their lines: an internal error,
+    exit 3. Each row is one csv record, beside a skipped row, whatever the chunk size."""
+    text = f"bearing,load,oil,temperature,speed\n6205,1kN,{name},60,3000\n6205,-1,VG68,60,3000\n"
+    for chunk in ("1", "10"):
+        out = CliRunner().invoke(
+            main, ["batch", "-", "--format", "csv", "--chunk-size", chunk], input=text
+        )
+        assert out.exit_code == 1, out.output
+        rows = list(csv.DictReader(io.StringIO(out.stdout, newline="")))
+        after = "4" if "\n" in name else "3"  # a record is numbered by its first line
+        assert [(r["row"], r["skipped"] == "") for r in rows] == [("2", True), (after, False)]
+        assert rows[0]["oil"] == name.strip('"') and rows[0]["q_max [N]"]

@@ -284,3 +284,21 @@ def test_the_clearance_pick_range_is_refused_with_the_plans_reason():
         "batch takes min, mean or max"
     )
     assert [line.split(",", 1)[0] for line in out.stdout.splitlines()[1:]] == ["3"]
+
+
+@pytest.mark.parametrize(
+    ("column", "cells", "implausible"),
+    [("modulus", ("2.1e5", "210", "-1"), "210"), ("revolutions", ("1e6", "36", "0"), "36")],
+)
+def test_an_implausible_bare_number_between_accepted_ones_is_refused(column, cells, implausible):
+    """A modulus or revolutions of 0 or less passes the reader (the model refuses it), but a bare
+    210 (GPa meant) or 36 (10^6 rev meant) is implausible: the acceptance is not one range, so
+    a column whose smallest and largest cells the reader takes may hold a refused cell between
+    them. It is refused as in a column of its own, not read as 210 MPa or 36 rev."""
+    for chunk in ("1", "100"):
+        text = f"bearing,load,{column}\n" + "".join(f"6205,1kN,{c}\n" for c in cells)
+        out = _batch(text, "--chunk-size", chunk)
+        assert out.exit_code == 1, out.output
+        said = [line for line in out.stderr.splitlines() if line.startswith("Skipped: row 3:")]
+        assert len(said) == 1 and f"{column}: a bare {implausible} is" in said[0], out.stderr
+        assert [line.split(",", 1)[0] for line in out.stdout.splitlines()[1:]] == ["2"]

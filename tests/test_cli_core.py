@@ -12,6 +12,7 @@ from pathlib import Path
 
 import click
 import pytest
+from click.testing import CliRunner
 
 from bearingload.cli import main, run
 from bearingload.models.equilibrium import solve
@@ -267,3 +268,28 @@ def test_terminal_calculation_skips_modules_it_does_not_need(args, absent):
     r = _python(code)
     assert r.returncode == 0, r.stderr
     assert r.stdout.strip().splitlines()[-1] == "[]"
+
+
+@pytest.mark.parametrize("fmt", ["table", "markdown", "csv", "json"])
+@pytest.mark.parametrize("method", ["stribeck", "continuum", "palmgren"])
+def test_per_ball_without_the_exact_model_is_refused(fmt, method):
+    """Only the exact model gives each ball's load: '--per-ball --method stribeck' ended table
+    and markdown with an internal error (an empty list of balls indexed, exit 3) and wrote a
+    csv of its header alone. It is refused naming --per-ball (the library's Solution.report
+    too), as --plot is; with the exact model among the methods (all) the balls are printed."""
+    from bearingload import analyse
+    from bearingload.errors import InputError
+
+    out = CliRunner().invoke(
+        main, ["solve", "6205", "-F", "1kN", "--per-ball", "--method", method, "--format", fmt]
+    )
+    assert out.exit_code == 2, out.output
+    assert (
+        f"Error: Invalid value for '--per-ball': the ball loads are the exact model's; '--method' "
+        f"{method} gives none (use '--method' exact or all)\n"
+    ) in out.output
+    with pytest.raises(InputError) as info:  # the library refuses it as the command line does
+        analyse("6205", load="1kN", method=method).report(fmt, per_ball=True)
+    assert info.value.parameter == "per_ball"
+    ok = invoke("solve", "6205", "-F", "1kN", "--per-ball", "--method", "all", "--format", fmt)
+    assert ok.exit_code == 0 and "internal error" not in ok.output

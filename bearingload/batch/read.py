@@ -311,9 +311,11 @@ def _bare_numbers(
     name: str, unit: str | None, texts: Sequence[str], m: Sequence[float] | None
 ) -> list[Any] | None:
     """Every cell a bare number, read at once in package units; None when some cell needs
-    :func:`_cell`. The reader's checks of a number are ranges (and a whole number of balls,
-    checked here): where it takes the smallest and the largest cell (of each exponent m), as
-    :func:`_cell` reads them, it takes every one; a header unit scales each by the value
+    :func:`_cell`. The reader's checks of a number are ranges on each side of 0 (and a whole
+    number of balls, checked here): where it takes the smallest and the largest cell (of each
+    exponent m) above 0 and at most 0, as :func:`_cell` reads them, it takes every one (a
+    modulus or revolutions <= 0 passes the reader, left to the model, where a bare 210 or 36
+    between them is refused as implausible); a header unit scales each by the value
     :func:`_cell` reads for a 1."""
     import numpy as np
 
@@ -329,9 +331,12 @@ def _bare_numbers(
     if not np.all(np.isfinite(v)) or read is count and not np.all(v == np.round(v)):
         return None
     ms = [1.5] * v.size if m is None else list(m)
-    groups = [np.flatnonzero(np.asarray(ms) == e) for e in set(ms)]
+    groups = [
+        np.flatnonzero((np.asarray(ms) == e) & side) for e in set(ms) for side in (v > 0, v <= 0)
+    ]
+    ends = {int(g[end(v[g])]) for g in groups if g.size for end in (np.argmin, np.argmax)}
     try:  # the reader names a bad end: then cell by cell, each named
-        for i in {int(g[end(v[g])]) for g in groups for end in (np.argmin, np.argmax)}:
+        for i in ends:
             _cell(name, unit, texts[i].strip(), ms[i])
         one = {e: _cell(name, unit, "1", e) for e in set(ms)} if unit else {}
         one = {e: getattr(x, "length", x) for e, x in one.items()}  # a clearance's length

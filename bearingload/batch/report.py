@@ -160,9 +160,22 @@ def csv_chunk(
     lines = [
         (r, line)
         for block in (solved, blank)
-        for r, line in zip(block["row"], csv_block(columns, block).splitlines(True), strict=True)
+        for r, line in zip(block["row"], _records(csv_block(columns, block)), strict=True)
     ]
     return "".join(line for _, line in sorted(lines, key=lambda pair: pair[0]))
+
+
+def _records(text: str) -> list[str]:
+    """The records of :func:`~bearingload.reports.render.csv_block`'s text, each with its line
+    end: a cell echoed as given (an oil's name) may hold a line break, quoted, or another
+    character ``str.splitlines`` breaks at, which ends no record."""
+    records: list[str] = []
+    for line in text.split("\n")[:-1]:
+        if records and records[-1].count('"') % 2:  # a quoted cell still open: the same record
+            records[-1] += "\n" + line
+        else:
+            records.append(line)
+    return [record + "\n" for record in records]
 
 
 def row_values(columns: Sequence[Column], n: int, values: dict[str, Any]) -> dict[str, Any]:

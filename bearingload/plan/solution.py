@@ -100,8 +100,22 @@ class Solution:
         self, fmt: str = "table", *, per_ball: bool = False, show_geometry: bool = False
     ) -> str:
         """The solution rendered as ``bearingload solve`` prints it: ``fmt`` one of table, csv,
-        markdown, json; ``per_ball``: csv one row per ball; ``show_geometry``: the geometry
-        used, with the source of every value."""
+        markdown, json; ``per_ball``: csv one row per ball (the exact model's balls: an
+        InputError where no case has them); ``show_geometry``: the geometry used, with the
+        source of every value."""
+        if (
+            per_ball
+            and self.engine == "radial"
+            and all(c.result.method != "exact" for c in self.cases)
+        ):
+            from bearingload.errors import InputError
+
+            method = self.cases[0].result.method
+            raise InputError(
+                "per_ball",
+                f"the ball loads are the exact model's; 'method' {method} gives none (use "
+                "'method' exact or all)",
+            )
         options: dict[str, Any] = {"per_ball": per_ball, "show_geometry": show_geometry}
         if self.engine == "pair":
             from bearingload.reports.pair import pair_report

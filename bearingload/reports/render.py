@@ -195,7 +195,9 @@ def _csv_header(column: Column) -> str:
 
 
 def _csv_cell(text: str) -> str:
-    if any(ch in text for ch in ',"\n'):
+    """A cell quoted where a csv reader needs it: a comma, a quote or a line end (CR or LF, as
+    the csv module quotes them)."""
+    if any(ch in text for ch in ',"\n\r'):
         return '"' + text.replace('"', '""') + '"'
     return text
 
