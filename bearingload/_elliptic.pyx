@@ -10,7 +10,7 @@ layer below the models: numerics cannot import the models' core. Built with the 
 in their written order.
 """
 
-from libc.math cimport exp, expm1, sqrt
+from libc.math cimport NAN, exp, expm1, sqrt
 
 import numpy as np
 
@@ -24,11 +24,16 @@ cdef void agm(double p, double m, double *ell) noexcept nogil:
     """``ell`` = K, E, (E - pK)/m, (K - E)/m, m, p from ``p = 1/kappa^2`` and ``m = 1 - p`` (each
     given rounded once). The AGM from ``a_0 = 1``, ``b_0 = sqrt p``, ``c_0^2 = m``, with
     ``c_(n+1) = c_n^2 / (4 a_(n+1))`` (no cancellation), stops where the term ``2^(n-1) c_n^2``
-    is below ``1e-17 m``; ``m <= 0`` (the circle) takes no step and gives its limits
-    ``K = E = pi/2``, ``(K - E)/m = (E - pK)/m = pi/4``."""
+    is below ``1e-17 m``; ``m = 0`` (the circle) takes no step and gives its limits
+    ``K = E = pi/2``, ``(K - E)/m = (E - pK)/m = pi/4``; outside the domain (``m < 0``: an
+    ellipticity ``kappa < 1``, or NaN) every value is NaN."""
     cdef double a = 1.0, b = sqrt(p), c2 = m, rest = 0.0, weight = 0.5, small = 1e-17 * m
     cdef double a_next, c, term, total = 0.5, k_int
     cdef int i
+    if not m >= 0:
+        for i in range(6):
+            ell[i] = NAN
+        return
     if m > 0:
         for i in range(STEPS):
             a_next = 0.5 * (a + b)

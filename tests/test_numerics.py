@@ -133,3 +133,17 @@ def test_a_float_and_an_array_take_the_one_agm():
     )
     for t, *values in rows:
         assert tuple(values) == elliptic_integrals(t), t
+
+
+@pytest.mark.parametrize("t", [-1e-12, -0.5, -40.0, math.nan])
+def test_elliptic_integrals_outside_their_domain_are_nan(t):
+    import numpy as np
+
+    from bearingload.numerics import elliptic_integrals
+
+    # kappa = e^t < 1 (m < 0) or NaN: no value, not the circle's limits
+    for values in (elliptic_integrals(t), elliptic_integrals(np.array([t, 0.5]))):
+        first = [float(np.ravel(v)[0]) for v in values[:4]]
+        assert all(math.isnan(v) for v in first), first
+    k_int, e_int, *_ = elliptic_integrals(0.0)  # the circle itself keeps its limits
+    assert k_int == e_int == math.pi / 2
