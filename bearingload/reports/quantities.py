@@ -46,10 +46,6 @@ class Quantity:
     display: tuple[str, float] | None = None
     also: tuple[str, float] | None = None
 
-    @property
-    def json_key(self) -> str:
-        return self.key
-
     def shown(self) -> tuple[str, float]:
         """(unit, factor) of the human formats."""
         return self.display if self.display is not None else (self.unit, 1.0)
