@@ -13,7 +13,7 @@ from typing import Any
 from bearingload.reports.quantities import MATRIX_UNITS, QUANTITIES, for_elements, units
 from bearingload.reports.render import Column, Table, render
 from bearingload.studies.matrix import radial_matrix
-from bearingload.studies.sweep import CageSweep
+from bearingload.studies.sweep import CageSweep, one_ball_findings
 from bearingload.units import KGF
 
 #: Quantities summarised over the sweep (min, mean, max, peak-to-peak).
@@ -275,15 +275,4 @@ def sweep_json(s: CageSweep) -> dict[str, Any]:
 def sweep_warnings(s: CageSweep) -> list[str]:
     """The checks of ``solve`` over the pitch: those on the bearing (``s.warnings``), then the
     one that needs no bearing data, one loaded ball, with the cage angles where it holds."""
-    import numpy as np
-
-    one = np.asarray(s.loaded_balls) == 1
-    if not one.any() or int(s.balls) <= 1:
-        return list(s.warnings)
-    angles = np.asarray(s.cage_angle)[one]
-    return [
-        *s.warnings,
-        f"only one ball carries the load at {one.sum()} of {one.size} cage angles "
-        f"({angles.min():.6g}° to {angles.max():.6g}°): the result hangs on a single contact "
-        "(large clearance or few elements); check the clearance",
-    ]
+    return [*s.warnings, *one_ball_findings(s.loaded_balls, s.cage_angle)]

@@ -182,6 +182,50 @@ def hours_at(life: Any, speed: float | None) -> Any:
     return life_hours(life, speed)
 
 
+#: Quantities whose rounding noise is measured against the largest of their family.
+FAMILIES = (("x", "y", "axial"), ("tilt", "tilt_cross"))
+
+
+def family_spread(values: Callable[[str], Any], key: str) -> Spread | None:
+    """Min, mean, max and peak-to-peak of ``values(key)`` over the pitch (None if not given).
+
+    A mean of a displacement (tilt) below 1e-12 of the largest displacement (tilt) of any axis
+    (``values`` of the others of its family in :data:`FAMILIES`) is the solver's rounding noise
+    and is 0 (y and the cross tilt are odd in the cage angle)."""
+    v = values(key)
+    if v is None:
+        return None
+    family = next((f for f in FAMILIES if key in f), (key,))
+    scale = max(float(np.max(np.abs(np.asarray(values(k))))) for k in family)
+    return spread_of(v, scale)
+
+
+def cage_chunks(angles: np.ndarray, balls: int, contacts: int) -> list[np.ndarray]:
+    """``angles`` in consecutive chunks of at most ``contacts`` ball contacts (at least one cage
+    position each): a long sweep solved one call per chunk, which changes no answer."""
+    n = max(1, contacts // balls)
+    return [angles[i : i + n] for i in range(0, angles.size, n)]
+
+
+def at_cage_angles(where: Any, steps: int) -> str:
+    """Where a finding of a sweep holds: ``at 3 of 37 cage angles (10° to 30°)``, ``where`` the
+    cage angles [°] of ``steps`` positions."""
+    a = np.asarray(where, dtype=float)
+    return f"at {a.size} of {steps} cage angles ({a.min():.6g}° to {a.max():.6g}°)"
+
+
+def one_ball_findings(loaded_balls: Any, angles: np.ndarray) -> list[str]:
+    """solve's finding of one loaded ball, once, with the cage ``angles`` [°] where it holds
+    (none where more balls carry the load everywhere)."""
+    one = np.asarray(loaded_balls) == 1
+    if not one.any():
+        return []
+    return [
+        f"only one ball carries the load {at_cage_angles(angles[one], one.size)}: the result "
+        "hangs on a single contact (large clearance or few elements); check the clearance"
+    ]
+
+
 def spread_of(values: Any, scale: float | None = None) -> Spread:
     """Min, mean, max and peak-to-peak of ``values`` over the cage positions of one pitch, both
     ends included (see :class:`Spread`); a mean below 1e-12 of ``scale`` (default the largest
