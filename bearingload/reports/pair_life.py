@@ -21,8 +21,8 @@ from bearingload.reports.pair import (
     pair_records,
     pairs_csv,
 )
-from bearingload.reports.quantities import QUANTITIES, units
-from bearingload.reports.render import Column, Table, render
+from bearingload.reports.quantities import shown_column, units
+from bearingload.reports.render import Table, render
 from bearingload.studies.bearing_pair import ARRANGEMENT_NAMES, PairLives
 from bearingload.studies.pair_life import LifeAgainstPreload
 
@@ -58,17 +58,11 @@ def preload_life_report(
         return render([], "json", document=_json(t, records, speed))
     at_speed = ("reference_rating_life_hours", "preload_at_speed")  # columns at a speed only
     keys = [(k, b, h) for k, b, h in PRELOAD_KEYS if k not in at_speed or k in records[0][0]]
-    columns = []
-    for key, b, header in keys:
-        q = QUANTITIES[key]
-        columns.append(Column(f"{key}{b or ''}", header, q.shown()[0], q.digits))
+    columns = [shown_column(k, h, f"{k}{b or ''}") for k, b, h in keys]
     rows = []
     for pair, recs in records:
-        row: dict[str, Any] = {}
-        for key, b, _ in keys:
-            v = pair.get(key) if b is None else recs[b - 1].get(key)
-            row[f"{key}{b or ''}"] = "-" if v is None else v * QUANTITIES[key].shown()[1]
-        rows.append(row)
+        got = {f"{k}{b or ''}": recs[b - 1].get(k) if b else pair.get(k) for k, b, _ in keys}
+        rows.append({name: "-" if v is None else v for name, v in got.items()})
     notes = _notes(t, records) + _speed_notes(t, records, speed)
     return render([Table(_title(records[0][0], t), columns, rows, notes)], fmt)
 

@@ -13,7 +13,6 @@
 
 from __future__ import annotations
 
-import dataclasses
 from collections.abc import Sequence
 from dataclasses import asdict
 from typing import Any
@@ -29,8 +28,8 @@ from bearingload.reports.pair import (
     pair_records,
     pairs_csv,
 )
-from bearingload.reports.quantities import QUANTITIES, Quantity, units
-from bearingload.reports.render import Column, Table, render
+from bearingload.reports.quantities import QUANTITIES, Quantity, shown_column, units
+from bearingload.reports.render import Table, render
 from bearingload.studies.bearing_pair import ARRANGEMENT_NAMES, PairLives
 from bearingload.studies.pair_sweep import BEARING_KEYS, PAIR_KEYS, PairSweep
 
@@ -85,11 +84,7 @@ def _entries(s: PairSweep) -> list[tuple[str, Quantity, int | None]]:
 def _spread_table(s: PairSweep, context: str) -> Table:
     from bearingload.reports.sweep import spread_table
 
-    entries = []
-    for label, q, k in _entries(s):
-        sp = s.spread(q.key, k)
-        assert sp is not None
-        entries.append((dataclasses.replace(q, label=label), sp, q.shown()))
+    entries = [(label, s.spread(q.key, k), q.shown()) for label, q, k in _entries(s)]
     setting = s.cases[0].preload_class
     notes = [
         *NOTES,
@@ -138,28 +133,26 @@ def title(s: PairSweep) -> str:
 
 
 def _rows_table(s: PairSweep) -> Table:
+    from bearingload.reports.sweep import positions_table
+
     keys = [(k, b, h) for k, b, h in ROW_KEYS
             if k == "cage_angle" or s.values(k, b) is not None]  # fmt: skip
-    columns, factors = [], {}
-    for key, b, header in keys:
-        q = QUANTITIES[key]
-        unit, factors[key] = q.shown()
-        columns.append(Column(f"{key}{b or ''}", header, unit, q.digits))
-    data: dict[str, Any] = {f"{k}{b or ''}": s.cage_angle if k == "cage_angle" else
-                            s.values(k, b) for k, b, _ in keys}  # fmt: skip
-    rows = []
-    for i in range(len(s.cases)):
-        row: dict[str, Any] = {}
-        for key, b, _ in keys:
-            v = float(data[f"{key}{b or ''}"][i])
-            row[f"{key}{b or ''}"] = int(v) if key == "loaded_balls" else v * factors[key]
-        rows.append(row)
-    return Table(
-        "Per cage position (ball 1 at the cage angle; angles from the load line)",
-        columns, rows,
-        ["x, y, axial, tilt: the shaft at the pair's centre; Q_max k, loaded k: bearing k's "
-         "heaviest ball load and its loaded balls; k_r, k_a, k_tilt: the pair's stiffness."],
-    )  # fmt: skip
+    data: dict[str, Any] = {
+        f"{k}{b or ''}": s.cage_angle if k == "cage_angle" else s.values(k, b) for k, b, _ in keys
+    }
+    whole = {k for k in data if k.startswith("loaded_balls")}  # counts, the rest floats
+    rows = [
+        {k: int(v[i]) if k in whole else float(v[i]) for k, v in data.items()}
+        for i in range(len(s.cases))
+    ]
+    return positions_table(
+        [shown_column(k, h, f"{k}{b or ''}") for k, b, h in keys],
+        rows,
+        [
+            "x, y, axial, tilt: the shaft at the pair's centre; Q_max k, loaded k: bearing k's "
+            "heaviest ball load and its loaded balls; k_r, k_a, k_tilt: the pair's stiffness."
+        ],
+    )
 
 
 def pair_sweep_json(s: PairSweep, lives: Sequence[PairLives]) -> dict[str, Any]:

@@ -16,6 +16,7 @@ from typing import Any
 
 from bearingload.constants import KGF, ROLLER_EXPONENT
 from bearingload.lazy_dataclass import dataclass
+from bearingload.reports.render import Column
 
 
 @dataclass(frozen=True)
@@ -307,6 +308,14 @@ def quantity(key: str) -> Quantity:
         return QUANTITIES[key]
     except KeyError:
         raise KeyError(f"unknown quantity {key!r}; known: {', '.join(QUANTITIES)}") from None
+
+
+def shown_column(key: str, header: str, name: str | None = None) -> Column:
+    """The column of quantity ``key`` under ``header`` (the rows' key ``name``, default ``key``):
+    csv and json keep the number in the machine unit, the human formats show it in the display
+    unit (µm, %) at the quantity's digits."""
+    q = QUANTITIES[key]
+    return Column(name or key, header, q.unit, q.digits, display=q.display)
 
 
 def units(keys: Iterable[str], exponent: float | None = None) -> dict[str, str]:
