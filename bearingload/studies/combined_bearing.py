@@ -107,10 +107,7 @@ def solve_combined_bearing(
     """
     from bearingload.bearings.tilt import tilt_lever
 
-    if speed is not None and rotating == "outer":
-        raise InputError("rotating", "the ball dynamics at a speed are coded for the inner ring "
-                         "turning (docs/speed.md); the outer ring's lives are those of the "
-                         "static model (speed None)")  # fmt: skip
+    refuse_outer_at_speed(speed, rotating)
     out = []
     for b in bearings:
         lever = (tilt_radius if isinstance(tilt_radius, np.ndarray)
@@ -394,7 +391,27 @@ def _at_speed(
 ) -> CombinedDistribution:
     """solve_on_bearing with the ball dynamics (:func:`bearingload.models.high_speed.
     solve_high_speed`): the two contacts need the Hertz stiffness of the ball geometry."""
-    from bearingload.models.high_speed import STEEL_DENSITY, solve_high_speed
+    from bearingload.models.high_speed import solve_high_speed
+
+    density = dynamics_density(b, density)
+    return solve_high_speed(b.balls, load, axial_load, speed=speed, ball_density=density,
+                            **common)  # fmt: skip
+
+
+def refuse_outer_at_speed(speed: Any, rotating: str) -> None:
+    """Refuse the outer ring turning at a ``speed``: the ball dynamics are coded for the inner
+    ring turning (the outer ring's lives are those of the static model)."""
+    if speed is not None and rotating == "outer":
+        raise InputError("rotating", "the ball dynamics at a speed are coded for the inner ring "
+                         "turning (docs/speed.md); the outer ring's lives are those of the "
+                         "static model (speed None)")  # fmt: skip
+
+
+def dynamics_density(b: ResolvedBearing, density: Any) -> Any:
+    """The ball density [kg/m^3] of the ball dynamics of ``b``: ``density`` if given, else that
+    of the balls' material (a hybrid's silicon nitride), else steel; refused for a given ball
+    stiffness (the dynamics need each contact's Hertz stiffness from the ball geometry)."""
+    from bearingload.models.high_speed import STEEL_DENSITY
 
     if b.stiffness_given:
         raise InputError(
@@ -403,10 +420,9 @@ def _at_speed(
             "given ball stiffness: leave out the stiffness, or ask for the static model "
             "(speed None)",
         )
-    if density is None:  # the balls' material (a hybrid's silicon nitride), else steel
-        density = STEEL_DENSITY if b.ball_density is None else b.ball_density
-    return solve_high_speed(b.balls, load, axial_load, speed=speed, ball_density=density,
-                            **common)  # fmt: skip
+    if density is not None:
+        return density
+    return STEEL_DENSITY if b.ball_density is None else b.ball_density
 
 
 def life_figures(
