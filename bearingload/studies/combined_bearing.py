@@ -164,30 +164,27 @@ def combined_case(
     p0 = [static_equivalent_load(f, a) if b.contact_angle is None
           else static_equivalent_load_angular(f, a, b.contact_angle)
           for f, a in zip(fr, fa, strict=True)]  # fmt: skip
-    checks = tuple(tuple(combined_warnings(b, fr[i], fa[i], q[i], int(loaded[i]), warned[i], inner[i]))
-                   for i in range(len(q)))  # fmt: skip
     s0 = [None if p is None else static_safety(b.C0, p) for p in p0]
     # each case's own lever (a batch gives one per row; None for groove and pitch)
     levers = [None] * len(q) if lever is None else each(lever)
     said = [lever_warning(x, b.pitch_diameter) for x in levers]
-    checks = tuple(c + (w,) if w else c for c, w in zip(checks, said, strict=True))
     sides = groove_side_warnings(r, len(q))
-    checks = tuple(c + (w,) if w else c for c, w in zip(checks, sides, strict=True))
-    flat = np.reshape(r.tilt_undetermined, -1)
-    checks = tuple(c + (TILT_UNDETERMINED,) if f else c for c, f in zip(checks, flat, strict=True))
-    loose = getattr(r, "displacement_undetermined", None)
-    if loose is not None:
-        flat = np.reshape(loose, -1)
-        checks = tuple(
-            c + (POSITION_UNDETERMINED,) if f else c for c, f in zip(checks, flat, strict=True)
-        )
-    left = getattr(r, "thrust_neglected", None)
-    if left is not None:
-        flat = np.reshape(left, -1)
-        checks = tuple(
-            c + (thrust_neglected_warning(fa[i], fr[i]),) if flat[i] else c
-            for i, c in enumerate(checks)
-        )
+
+    def flags(name: str) -> list[bool]:  # the solver's flag of each case (none: all False)
+        given = getattr(r, name, None)
+        return [False] * len(q) if given is None else np.reshape(given, -1).tolist()
+
+    undetermined = ("tilt_undetermined", "displacement_undetermined", "thrust_neglected")
+    tilt_free, loose, left = (flags(name) for name in undetermined)
+    per_case = []
+    for i in range(len(q)):
+        got = combined_warnings(b, fr[i], fa[i], q[i], int(loaded[i]), warned[i], inner[i])
+        got += [w for w in (said[i], sides[i]) if w]
+        got += [TILT_UNDETERMINED] if tilt_free[i] else []
+        got += [POSITION_UNDETERMINED] if loose[i] else []
+        got += [thrust_neglected_warning(fa[i], fr[i])] if left[i] else []
+        per_case.append(tuple(got))
+    checks = tuple(per_case)
     if shape == ():
         p_eq = None if p_eq is None else float(p_eq)
         life = None if life is None or np.isnan(life) else float(life)
@@ -259,9 +256,9 @@ def warned_tilt(r: CombinedDistribution) -> Any:
     """The tilt the checks weigh (:func:`bearingload.bearings.checks.combined_warnings`), the
     one rule of every command: the inner ring's tilt, both axes together, whatever gives it
     (a moment, an imposed misalignment, or a ring free to tilt under an eccentric load: the
-    tilt is the same with --moment 0 as without a moment). Each case's (an array of cases: an
-    array). [°]"""
-    return ring_tilt(r)
+    tilt is the same with --moment 0 as without a moment): its size, both axes together, of
+    each case (an array of cases: an array). [°]"""
+    return np.degrees(np.hypot(np.radians(r.tilt), np.radians(r.tilt_cross)))
 
 
 def check_misalignment(misalignment: Any) -> None:
@@ -277,11 +274,6 @@ def check_misalignment(misalignment: Any) -> None:
             "bearing tolerates 2-10 arcmin, and a tilt of degrees would push the balls over the "
             "groove shoulders, which the model does not describe",
         )
-
-
-def ring_tilt(r: CombinedDistribution) -> Any:
-    """Size of the inner ring's tilt, both axes together, of every case. [°]"""
-    return np.degrees(np.hypot(np.radians(r.tilt), np.radians(r.tilt_cross)))
 
 
 def solve_on_bearing(
@@ -370,7 +362,7 @@ def solve_on_bearing(
         r = solve_combined(b.balls, load, axial_load, stiffness=stiffness, **common)
     else:
         r = _at_speed(b, load, axial_load, speed, ball_density, common)
-    tilt = float(np.max(ring_tilt(r)))
+    tilt = float(np.max(warned_tilt(r)))
     cross = moment_cross is not None and bool(np.any(np.asarray(moment_cross) != 0))
     tilted = "moment" if moment is not None and misalignment is None else None
     if tilted is None and cross:
