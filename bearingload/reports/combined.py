@@ -21,11 +21,10 @@ from collections.abc import Sequence
 from typing import Any
 
 from bearingload.bearings.mounting import RESULT_KEYS, mounting_notes
-from bearingload.reports.quantities import MATRIX_UNITS, SERVICE_KEYS, units
+from bearingload.reports.quantities import MATRIX_UNITS, SERVICE_KEYS, column, units
 from bearingload.reports.render import Column, Table, render
 from bearingload.reports.solve import (
     case_warnings,
-    column,
     given_keys,
     printed_warnings,
     quantity_rows,

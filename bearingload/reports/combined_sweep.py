@@ -18,9 +18,8 @@ from typing import Any
 import numpy as np
 
 from bearingload.reports.combined import ANGULAR_LABELS, ANGULAR_NOTE, NOTES, tilt_text
-from bearingload.reports.quantities import QUANTITIES, shown_column, units
+from bearingload.reports.quantities import QUANTITIES, column, units
 from bearingload.reports.render import Table, render
-from bearingload.reports.solve import column
 from bearingload.studies.combined_sweep import SPREAD_KEYS, CombinedSweep
 
 #: Per cage position: the quantity and its short header in the human table.
@@ -194,7 +193,7 @@ def _rows_table(s: CombinedSweep) -> Table:
     from bearingload.reports.sweep import positions_table
 
     return positions_table(
-        [shown_column(k, h) for k, h in _row_keys(s)],
+        [column(k, header=h, shown=True) for k, h in _row_keys(s)],
         rows(s),
         [
             f"axial: {_axial_origin(s)}; tilt: about the axis across the load; tilt cross: "

@@ -16,9 +16,9 @@ from collections.abc import Sequence
 from typing import Any
 
 from bearingload.reports.combined import tilt_text
-from bearingload.reports.quantities import QUANTITIES, SERVICE_KEYS, shown_column, units
+from bearingload.reports.quantities import QUANTITIES, SERVICE_KEYS, column, units
 from bearingload.reports.render import Column, Table, render
-from bearingload.reports.solve import column, printed_warnings
+from bearingload.reports.solve import printed_warnings
 from bearingload.studies.life_clearance import (
     AXIAL_LOAD,
     DESIGNATION,
@@ -185,7 +185,7 @@ def life_table(
     t: LifeAgainstClearance, human: bool = True, service: Sequence[Any] | None = None
 ) -> Table:
     """The table: display units (µm) for people, machine units (mm) for csv."""
-    columns = [shown_column(k, h) for k, h in _keys(t) + _service_rows(service)]
+    columns = [column(k, header=h, shown=True) for k, h in _keys(t) + _service_rows(service)]
     columns[0] = dataclasses.replace(columns[0], digits=4)  # G_r to 0.1 µm
     conds = all_conditions(t, service)
     fixed = [] if human else [(column(k), "" if v is None else v) for k, v in conds.items()]

@@ -21,10 +21,9 @@ from typing import Any
 
 from bearingload.bearings.preload import Preload
 from bearingload.reports.combined import ANGULAR_LABELS, MATRIX_UNITS_OF, contact_angle_shown
-from bearingload.reports.quantities import SERVICE_KEYS, units
+from bearingload.reports.quantities import SERVICE_KEYS, column, units
 from bearingload.reports.render import Column, Table, render
 from bearingload.reports.solve import (
-    column,
     material_note,
     printed_warnings,
     quantity_rows,

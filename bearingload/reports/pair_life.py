@@ -21,7 +21,7 @@ from bearingload.reports.pair import (
     pair_records,
     pairs_csv,
 )
-from bearingload.reports.quantities import shown_column, units
+from bearingload.reports.quantities import column, units
 from bearingload.reports.render import Table, render
 from bearingload.studies.bearing_pair import ARRANGEMENT_NAMES, PairLives
 from bearingload.studies.pair_life import LifeAgainstPreload
@@ -58,7 +58,7 @@ def preload_life_report(
         return render([], "json", document=_json(t, records, speed))
     at_speed = ("reference_rating_life_hours", "preload_at_speed")  # columns at a speed only
     keys = [(k, b, h) for k, b, h in PRELOAD_KEYS if k not in at_speed or k in records[0][0]]
-    columns = [shown_column(k, h, f"{k}{b or ''}") for k, b, h in keys]
+    columns = [column(k, header=h, name=f"{k}{b or ''}", shown=True) for k, b, h in keys]
     rows = []
     for pair, recs in records:
         got = {f"{k}{b or ''}": recs[b - 1].get(k) if b else pair.get(k) for k, b, _ in keys}

@@ -28,7 +28,7 @@ from bearingload.reports.pair import (
     pair_records,
     pairs_csv,
 )
-from bearingload.reports.quantities import QUANTITIES, Quantity, shown_column, units
+from bearingload.reports.quantities import QUANTITIES, Quantity, column, units
 from bearingload.reports.render import Table, render
 from bearingload.studies.bearing_pair import ARRANGEMENT_NAMES, PairLives
 from bearingload.studies.pair_sweep import BEARING_KEYS, PAIR_KEYS, PairSweep
@@ -146,7 +146,7 @@ def _rows_table(s: PairSweep) -> Table:
         for i in range(len(s.cases))
     ]
     return positions_table(
-        [shown_column(k, h, f"{k}{b or ''}") for k, b, h in keys],
+        [column(k, header=h, name=f"{k}{b or ''}", shown=True) for k, b, h in keys],
         rows,
         [
             "x, y, axial, tilt: the shaft at the pair's centre; Q_max k, loaded k: bearing k's "

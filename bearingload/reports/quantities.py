@@ -310,12 +310,33 @@ def quantity(key: str) -> Quantity:
         raise KeyError(f"unknown quantity {key!r}; known: {', '.join(QUANTITIES)}") from None
 
 
-def shown_column(key: str, header: str, name: str | None = None) -> Column:
-    """The column of quantity ``key`` under ``header`` (the rows' key ``name``, default ``key``):
-    csv and json keep the number in the machine unit, the human formats show it in the display
-    unit (µm, %) at the quantity's digits."""
+#: Quantities without a unit or digits that are numbers all the same (counts, a ball's number,
+#: a number as printed): set to the right as every number is; the other ones are text (left).
+COUNTS = frozenset(
+    "balls loaded_balls ball q_max_ball iterations row cases max_iterations nan warnings_raised "
+    "refused failures printed checked agree differ".split()
+)
+
+
+def column(
+    key: str,
+    exponent: float | None = None,
+    header: str | None = None,
+    *,
+    name: str | None = None,
+    shown: bool = False,
+) -> Column:
+    """The renderer column of quantity ``key``: its label (or ``header``), machine unit
+    (``N/mm^m`` with the ``exponent``) and digits, text to the left, numbers to the right;
+    ``name`` the rows' key (default ``key``); ``shown``: the human formats show the number in
+    the quantity's display unit (µm, %), csv and json keep the machine unit."""
     q = QUANTITIES[key]
-    return Column(name or key, header, q.unit, q.digits, display=q.display)
+    unit = q.unit.replace("^m", f"^{exponent:g}") if exponent is not None else q.unit
+    text = q.digits is None and q.unit == "" and key not in COUNTS
+    display = q.display if shown else None
+    return Column(
+        name or key, header or q.label, unit, q.digits, "left" if text else "right", display
+    )
 
 
 def units(keys: Iterable[str], exponent: float | None = None) -> dict[str, str]:

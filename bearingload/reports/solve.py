@@ -26,6 +26,7 @@ from bearingload.reports.quantities import (
     MATRIX_UNITS,
     QUANTITIES,
     SERVICE_KEYS,
+    column,
     element_words,
     for_elements,
     units,
@@ -137,17 +138,6 @@ def solve_document(
 
 def _present(records: Sequence[dict[str, Any]], keys: Sequence[str]) -> list[str]:
     return [k for k in keys if any(r.get(k) is not None for r in records)]
-
-
-def column(key: str, exponent: float | None = None, header: str | None = None) -> Column:
-    """The renderer column of a quantity (machine unit: csv headers; the table shows it too)."""
-    q = QUANTITIES[key]
-    unit = q.unit.replace("^m", f"^{exponent:g}") if exponent is not None else q.unit
-    align = "left" if q.digits is None and q.unit == "" and key not in _COUNTS else "right"
-    return Column(key, header or q.label, unit, q.digits, align)
-
-
-_COUNTS = {"balls", "loaded_balls", "ball", "iterations", "row"}
 
 
 def given_keys(records: Sequence[dict[str, Any]], keys: Sequence[str]) -> list[str]:

@@ -13,8 +13,8 @@ from typing import Any
 from bearingload.reports.quantities import (
     MATRIX_UNITS,
     QUANTITIES,
+    column,
     for_elements,
-    shown_column,
     units,
 )
 from bearingload.reports.render import Column, Table, render
@@ -187,7 +187,7 @@ def value_table(title: str, rows: list[dict[str, Any]], notes: list[str]) -> Tab
 
 def _rows_table(s: CageSweep) -> Table:
     return positions_table(
-        [shown_column(k, h) for k, h in [*ROW_KEYS, *_life_rows(s)]],
+        [column(k, header=h, shown=True) for k, h in [*ROW_KEYS, *_life_rows(s)]],
         _flat_rows(s),
         ["ball: the ball carrying Q_max (of two equal, the lower number)."],
     )
@@ -195,7 +195,7 @@ def _rows_table(s: CageSweep) -> Table:
 
 def positions_table(columns: list[Column], rows: list[dict[str, Any]], notes: list[str]) -> Table:
     """The per-position table of a sweep: ``columns`` of :func:`bearingload.reports.quantities.
-    shown_column`, ``rows`` in machine units."""
+    column` (``shown``), ``rows`` in machine units."""
     title = "Per cage position (ball 1 at the cage angle; angles from the load line)"
     return Table(title, columns, rows, notes)
 
@@ -217,13 +217,9 @@ def _flat_rows(s: CageSweep) -> list[dict[str, Any]]:
 def _csv_table(s: CageSweep) -> Table:
     fixed = {k: "" if v is None else v for k, v in _fixed_lives(s).items()}
     keys = [*INPUT_KEYS, *(k for k, _ in [*ROW_KEYS, *_life_rows(s)]), *fixed]
-    columns = []
-    for key in keys:
-        q = QUANTITIES[key]
-        unit = q.unit.replace("^m", f"^{s.exponent:g}")
-        columns.append(Column(key, q.label, unit, q.digits))
     inputs = {k: getattr(s, k) for k in INPUT_KEYS}
-    return Table(title="sweep", columns=columns, rows=[inputs | r | fixed for r in _flat_rows(s)])
+    rows = [inputs | r | fixed for r in _flat_rows(s)]
+    return Table("sweep", [column(k, s.exponent) for k in keys], rows)
 
 
 def _json_rows(s: CageSweep) -> list[dict[str, Any]]:
