@@ -24,8 +24,10 @@ from bearingload.bearings.mounting import RESULT_KEYS, mounting_notes
 from bearingload.reports.quantities import MATRIX_UNITS, SERVICE_KEYS, column, units
 from bearingload.reports.render import Column, Table, render
 from bearingload.reports.solve import (
+    blank,
     case_warnings,
     given_keys,
+    present,
     printed_warnings,
     quantity_rows,
     service_notes,
@@ -187,17 +189,9 @@ def combined_document(
     return bearings_document(cases, records, service)
 
 
-def _present(records: Sequence[dict[str, Any]], keys: Sequence[str]) -> list[str]:
-    return [k for k in keys if any(r.get(k) is not None for r in records)]
-
-
-def _blank(record: dict[str, Any], keys: Sequence[str]) -> dict[str, Any]:
-    return {k: "" if record.get(k) is None else record[k] for k in keys}
-
-
 def _case_table(records: Sequence[dict[str, Any]]) -> Table:
     keys = given_keys(records, tuple(dict.fromkeys(INPUT_KEYS + ANSWER_KEYS + MATRIX_KEYS)))
-    return Table("cases", [column(k, 1.5) for k in keys], [_blank(r, keys) for r in records])
+    return Table("cases", [column(k, 1.5) for k in keys], [blank(r, keys) for r in records])
 
 
 def matrix_table(matrix: Any, title: str = "tangent stiffness matrix", csv: bool = True) -> Table:
@@ -240,7 +234,7 @@ def _per_ball_table(cases: Sequence[CombinedCase], records: Sequence[dict[str, A
         for i, values in enumerate(_balls(c)):
             per = dict(zip(PER_BALL_KEYS[1:5], values, strict=True))
             per |= {k: float(found[k][i]) for k in CONTACT_KEYS}
-            rows.append(_blank(r, inputs) | {"ball": i + 1} | per)
+            rows.append(blank(r, inputs) | {"ball": i + 1} | per)
     return Table("balls", [column(k, 1.5) for k in inputs + list(PER_BALL_KEYS)], rows)
 
 
@@ -268,7 +262,7 @@ RADIAL_AT_SPEED_NOTE = (
 
 
 def _summary(records: Sequence[dict[str, Any]], bearing: Any, dynamics: str | None = None) -> Table:
-    keys = _present(records, ANSWER_KEYS)
+    keys = present(records, ANSWER_KEYS)
     if len({r["clearance"] for r in records}) > 1:
         keys.insert(0, "clearance")
     heads = ["value"] if len(records) == 1 else [f"G_r {r['clearance_pick']}" for r in records]

@@ -20,6 +20,7 @@ import numpy as np
 from bearingload.reports.combined import ANGULAR_LABELS, ANGULAR_NOTE, NOTES, tilt_text
 from bearingload.reports.quantities import QUANTITIES, column, units
 from bearingload.reports.render import Table, render
+from bearingload.reports.solve import blank
 from bearingload.studies.combined_sweep import SPREAD_KEYS, CombinedSweep
 
 #: Per cage position: the quantity and its short header in the human table.
@@ -235,7 +236,7 @@ def _csv_table(s: CombinedSweep) -> Table:
     head = inputs(s)
     tail = fixed(s)
     keys = [*head, *(k for k, _ in _row_keys(s)), *tail]
-    const = {k: "" if v is None else v for k, v in (head | tail).items()}
+    const = blank(head | tail)
     return Table(
         title="sweep",
         columns=[column(k, 1.5) for k in keys],

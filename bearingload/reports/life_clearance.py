@@ -18,7 +18,7 @@ from typing import Any
 from bearingload.reports.combined import tilt_text
 from bearingload.reports.quantities import QUANTITIES, SERVICE_KEYS, column, units
 from bearingload.reports.render import Column, Table, render
-from bearingload.reports.solve import printed_warnings
+from bearingload.reports.solve import blank, printed_warnings
 from bearingload.studies.life_clearance import (
     AXIAL_LOAD,
     DESIGNATION,
@@ -188,7 +188,7 @@ def life_table(
     columns = [column(k, header=h, shown=True) for k, h in _keys(t) + _service_rows(service)]
     columns[0] = dataclasses.replace(columns[0], digits=4)  # G_r to 0.1 µm
     conds = all_conditions(t, service)
-    fixed = [] if human else [(column(k), "" if v is None else v) for k, v in conds.items()]
+    fixed = [] if human else [(column(k), v) for k, v in blank(conds).items()]
     notes = _notes(t) + _service_notes(service) + _speed_notes(t, service) if human else []
     return Table(title(t), columns, _rows(t, service), notes, fixed)
 
@@ -207,12 +207,11 @@ def _speed_model(t: LifeAgainstClearance, service: Sequence[Any] | None) -> dict
     dynamics, ``ball_dynamics`` (:data:`STATIC_AT_SPEED`) for the static model; none
     without a speed."""
     from bearingload.reports.combined import model_name
-    from bearingload.reports.sweep import STATIC_AT_SPEED
+    from bearingload.reports.sweep import static_at_speed
 
     if t.model is not None:
         return {"model": model_name(t.model)}
-    speed = service[0].values.get("speed") if service else None
-    return {} if speed is None else {"ball_dynamics": STATIC_AT_SPEED}
+    return static_at_speed(service[0].values.get("speed") if service else None)
 
 
 def _speed_notes(t: LifeAgainstClearance, service: Sequence[Any] | None) -> list[str]:

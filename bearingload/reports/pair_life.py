@@ -16,12 +16,14 @@ from typing import Any
 
 from bearingload.reports.pair import (
     PAIR_ANSWERS,
-    PAIR_INPUTS,
+    PAIR_MODEL,
     PAIR_SERVICE,
+    model_end,
     pair_records,
     pairs_csv,
+    pairs_document,
 )
-from bearingload.reports.quantities import column, units
+from bearingload.reports.quantities import column
 from bearingload.reports.render import Table, render
 from bearingload.studies.bearing_pair import ARRANGEMENT_NAMES, PairLives
 from bearingload.studies.pair_life import LifeAgainstPreload
@@ -110,24 +112,10 @@ def _speed_notes(t: LifeAgainstPreload, records: list[Any], speed: float | None)
 
 
 def _json(t: LifeAgainstPreload, records: list[Any], speed: float | None) -> dict[str, Any]:
-    from bearingload.reports.pair import STATIC_AT_SPEED
-
     rows = []
     for pair, recs in records:
         answers = {k: pair[k] for k in ("preload", *PAIR_ANSWERS)}
         service = {k: v for k, v in pair.items() if k in PAIR_SERVICE}  # solve's, at a speed
         rows.append(answers | service | {"bearings": recs})
-    head = {k: v for k, v in records[0][0].items() if k in PAIR_INPUTS and k != "preload"}
-    keys = [*head, *rows[0], *(k for r in rows[0]["bearings"] for k in r)]
-    model = "pair of angular-contact ball bearings on one rigid shaft (ISO/TS 16281 each)"
-    if t.model is not None:
-        model += f"; {t.model} in both bearings"
-    elif speed is not None:
-        model += STATIC_AT_SPEED
-    return {
-        **head,
-        "model": model,
-        "rows": rows,
-        "units": units(list(dict.fromkeys(keys)), 1.5),
-        "warnings": list(t.warnings),
-    }
+    model = PAIR_MODEL + model_end(t.model, speed is not None)
+    return pairs_document(records, rows, "preload", model, t.warnings)

@@ -19,16 +19,16 @@ from typing import Any
 
 from bearingload.reports.combined import ANGULAR_LABELS
 from bearingload.reports.pair import (
-    CSV_INPUTS,
     HOURS_NOTE,
     PAIR_ANSWERS,
-    PAIR_INPUTS,
+    PAIR_MODEL,
     PAIR_SERVICE,
-    STATIC_AT_SPEED,
+    model_end,
     pair_records,
     pairs_csv,
+    pairs_document,
 )
-from bearingload.reports.quantities import QUANTITIES, Quantity, column, units
+from bearingload.reports.quantities import QUANTITIES, Quantity, column
 from bearingload.reports.render import Table, render
 from bearingload.studies.bearing_pair import ARRANGEMENT_NAMES, PairLives
 from bearingload.studies.pair_sweep import BEARING_KEYS, PAIR_KEYS, PairSweep
@@ -158,33 +158,13 @@ def _rows_table(s: PairSweep) -> Table:
 def pair_sweep_json(s: PairSweep, lives: Sequence[PairLives]) -> dict[str, Any]:
     """The JSON document: the pair's inputs, ``model``, ``steps``, ``rows`` (the pair's keys of
     solve's json at each position and ``bearings``), ``summary``, ``units``, ``warnings``."""
-    rows = []
-    for c, life in zip(s.cases, lives, strict=True):
-        pair, recs = pair_records(c, life)
-        answers = {k: pair[k] for k in ("cage_angle", *PAIR_ANSWERS, *PAIR_SERVICE) if k in pair}
-        rows.append(answers | {"bearings": recs})
-    head = {k: v for k, v in pair_records(s.cases[0])[0].items()
-            if k in PAIR_INPUTS and k != "cage_angle"}  # fmt: skip
+    records = [pair_records(c, life) for c, life in zip(s.cases, lives, strict=True)]
+    answers = ("cage_angle", *PAIR_ANSWERS, *PAIR_SERVICE)
+    rows = [{k: p[k] for k in answers if k in p} | {"bearings": recs} for p, recs in records]
     summary: dict[str, Any] = {"bearings": [{}, {}]}
     for _, q, k in _entries(s):
         sp = s.spread(q.key, k)
         assert sp is not None
         (summary if k is None else summary["bearings"][k - 1])[q.key] = asdict(sp)
-    keys = [*head, *rows[0], *(k for r in rows[0]["bearings"] for k in r), *CSV_INPUTS]
-    return {
-        **head,
-        "model": "pair of angular-contact ball bearings on one rigid shaft (ISO/TS 16281 each), "
-        "both cages at the cage angle" + _model_end(s),
-        "steps": len(s.cases),
-        "rows": rows,
-        "summary": summary,
-        "units": units(list(dict.fromkeys(keys)), 1.5),
-        "warnings": list(s.warnings),
-    }
-
-
-def _model_end(s: PairSweep) -> str:
-    """The end of the json's ``model``: the ball dynamics, or the static model at a speed."""
-    if s.model is not None:
-        return f"; {s.model} in both bearings"
-    return STATIC_AT_SPEED if s.speed is not None else ""
+    model = f"{PAIR_MODEL}, both cages at the cage angle{model_end(s.model, s.speed is not None)}"
+    return pairs_document(records, rows, "cage_angle", model, s.warnings, len(s.cases), summary)

@@ -136,7 +136,8 @@ def solve_document(
     return _document(cases, _records(cases, service), exponent, service)
 
 
-def _present(records: Sequence[dict[str, Any]], keys: Sequence[str]) -> list[str]:
+def present(records: Sequence[dict[str, Any]], keys: Sequence[str]) -> list[str]:
+    """The ``keys`` some record has a value of (not None), as the human summary shows them."""
     return [k for k in keys if any(r.get(k) is not None for r in records)]
 
 
@@ -148,12 +149,14 @@ def given_keys(records: Sequence[dict[str, Any]], keys: Sequence[str]) -> list[s
 def _case_table(records: Sequence[dict[str, Any]]) -> Table:
     keys = given_keys(records, INPUT_KEYS + REPORT_KEYS + ("valid",))
     exponent = records[0]["exponent"]
-    return Table("cases", [column(k, exponent) for k in keys], [_blank(r, keys) for r in records])
+    return Table("cases", [column(k, exponent) for k in keys], [blank(r, keys) for r in records])
 
 
-def _blank(record: dict[str, Any], keys: Sequence[str]) -> dict[str, Any]:
-    """A csv row: None as an empty cell."""
-    return {k: "" if record.get(k) is None else record[k] for k in keys}
+def blank(record: dict[str, Any], keys: Sequence[str] | None = None) -> dict[str, Any]:
+    """A csv row of ``record`` under ``keys`` (default its own): None as an empty cell."""
+    return {
+        k: "" if record.get(k) is None else record[k] for k in (record if keys is None else keys)
+    }
 
 
 def _per_ball_table(cases: Sequence[LoadedCase], records: Sequence[dict[str, Any]]) -> Table:
@@ -162,7 +165,7 @@ def _per_ball_table(cases: Sequence[LoadedCase], records: Sequence[dict[str, Any
     for c, r in zip(cases, records, strict=True):
         for i, (a, d, q) in enumerate(_balls(c)):
             rows.append(
-                _blank(r, inputs)
+                blank(r, inputs)
                 | {"ball": i + 1, "ball_angles": a, "ball_approaches": d, "ball_loads": q}
             )
     exponent = records[0]["exponent"]
@@ -199,7 +202,7 @@ def _summary(
     records: Sequence[dict[str, Any]],
     extra_notes: Sequence[str] = (),
 ) -> Table:
-    keys = _present(records, REPORT_KEYS)
+    keys = present(records, REPORT_KEYS)
     if len({r["clearance"] for r in records}) > 1:
         keys.insert(0, "clearance")
     heads = ["value"] if len(records) == 1 else [_heading(r) for r in records]

@@ -18,6 +18,7 @@ from bearingload.reports.quantities import (
     units,
 )
 from bearingload.reports.render import Column, Table, render
+from bearingload.reports.solve import blank
 from bearingload.studies.matrix import radial_matrix
 from bearingload.studies.sweep import CageSweep, one_ball_findings
 from bearingload.units import KGF
@@ -215,7 +216,7 @@ def _flat_rows(s: CageSweep) -> list[dict[str, Any]]:
 
 
 def _csv_table(s: CageSweep) -> Table:
-    fixed = {k: "" if v is None else v for k, v in _fixed_lives(s).items()}
+    fixed = blank(_fixed_lives(s))
     keys = [*INPUT_KEYS, *(k for k, _ in [*ROW_KEYS, *_life_rows(s)]), *fixed]
     inputs = {k: getattr(s, k) for k in INPUT_KEYS}
     rows = [inputs | r | fixed for r in _flat_rows(s)]
