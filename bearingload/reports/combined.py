@@ -434,12 +434,8 @@ def collect_combined_warnings(cases: Sequence[CombinedCase]) -> list[str]:
     """The warnings of several cases (the picks of a clearance range), each once, in order, as
     the radial engine's :func:`bearingload.studies.loaded_bearing.collect_warnings` gives them:
     one that only some picks carry is prefixed with its pick (``"G_r max: ..."``)."""
+    from bearingload.studies.loaded_bearing import labelled_warnings
+
     picks = len({c.bearing.clearance_pick for c in cases}) > 1
-    seen: list[str] = []
-    for c in cases:
-        for w in c.warnings:
-            if picks and not all(w in other.warnings for other in cases):
-                w = f"G_r {c.bearing.clearance_pick}: {w}"
-            if w not in seen:
-                seen.append(w)
-    return seen
+    labels = [f"G_r {c.bearing.clearance_pick}" if picks else "" for c in cases]
+    return labelled_warnings([c.warnings for c in cases], labels)
