@@ -122,23 +122,14 @@ class CombinedSweep:
 
     def values(self, key: str) -> np.ndarray | None:
         """The per-position values of ``key`` (one of :data:`SPREAD_KEYS`), None if not given."""
-        r = self.result
-        table = {
-            "x": r.x,
-            "y": r.y,
-            "axial": r.axial,
-            "tilt": r.tilt,
-            "tilt_cross": r.tilt_cross,
-            "moment": r.moment,
-            "q_max": r.q_max,
-            "loaded_balls": r.loaded_balls,
-            "contact_angle_max": self.contact_angle_max,
-            "reference_rating_life": self.reference_rating_life,
-            "reference_rating_life_hours": self.hours(self.reference_rating_life),
-        }
-        if key not in table:
+        if key not in SPREAD_KEYS:
             raise InputError("name", f"must be one of {', '.join(SPREAD_KEYS)}")
-        v = table[key]
+        if key == "reference_rating_life_hours":
+            v = self.hours(self.reference_rating_life)
+        elif key in ("contact_angle_max", "reference_rating_life"):
+            v = getattr(self, key)
+        else:  # the solver's
+            v = getattr(self.result, key)
         return None if v is None else np.asarray(v)
 
     def hours(self, life: Any) -> Any:
