@@ -293,6 +293,8 @@ def sweep(
     >>> round(s.spread("y").max * 1e3, 4)
     0.3125
     """
+    from bearingload.studies.compensation import compensating_clearances
+
     z = _one_int("balls", validate.ball_count(balls))
     angles = cage_angles(z, steps)
     f, k, g, m = (
@@ -319,7 +321,7 @@ def sweep(
         loaded_balls=r.loaded_balls,
         stiffness_matrix=r.stiffness_matrix,
         stiffness_radial=r.stiffness_radial,
-        compensating_clearance=compensating_clearance(z, f, k, m),
+        compensating_clearance=[float(g) for g in compensating_clearances(z, f, k, m)],
         reference_rating_life=(
             None if life is None else np.asarray(life(k * np.maximum(delta, 0.0) ** m))
         ),
@@ -347,16 +349,6 @@ def cage_angles(balls: int, steps: Any = DEFAULT_STEPS) -> np.ndarray:
         )
     n = _one_int("steps", validate.ball_count(steps, name="steps", maximum=MAX_STEPS))
     return np.linspace(0.0, 360.0 / balls, n)
-
-
-def compensating_clearance(
-    balls: int, load: float, stiffness: float, exponent: float
-) -> list[float]:
-    """Every clearance G_r [mm] at which the ring sits at the same x with a ball under the load
-    and with the load between two balls: the one call of the varying-compliance study."""
-    from bearingload.studies.compensation import compensating_clearances
-
-    return [float(v) for v in compensating_clearances(balls, load, stiffness, exponent)]
 
 
 def _ball_approaches(r: LoadDistribution, z: int) -> np.ndarray:
