@@ -24,9 +24,11 @@ from bearingload.bearings.mounting import RESULT_KEYS, mounting_notes
 from bearingload.reports.quantities import MATRIX_UNITS, SERVICE_KEYS, column, units
 from bearingload.reports.render import Column, Table, render
 from bearingload.reports.solve import (
+    balls_table,
     blank,
     case_warnings,
     given_keys,
+    per_ball_table,
     present,
     printed_warnings,
     quantity_rows,
@@ -227,15 +229,12 @@ def _balls(c: CombinedCase) -> list[tuple[float, float, float, float]]:
 
 
 def _per_ball_table(cases: Sequence[CombinedCase], records: Sequence[dict[str, Any]]) -> Table:
-    inputs = given_keys(records, INPUT_KEYS)
-    rows = []
-    for c, r in zip(cases, records, strict=True):
+    per = []
+    for c in cases:
         found = contact_values(c.result, c.bearing.contact_angle)
-        for i, values in enumerate(_balls(c)):
-            per = dict(zip(PER_BALL_KEYS[1:5], values, strict=True))
-            per |= {k: float(found[k][i]) for k in CONTACT_KEYS}
-            rows.append(blank(r, inputs) | {"ball": i + 1} | per)
-    return Table("balls", [column(k, 1.5) for k in inputs + list(PER_BALL_KEYS)], rows)
+        balls = [dict(zip(PER_BALL_KEYS[1:5], values, strict=True)) for values in _balls(c)]
+        per.append([b | {k: float(found[k][i]) for k in CONTACT_KEYS} for i, b in enumerate(balls)])
+    return per_ball_table(records, given_keys(records, INPUT_KEYS), per, PER_BALL_KEYS, 1.5)
 
 
 #: The note of a solve with the ball dynamics at speed (the model's name filled in).
@@ -296,45 +295,17 @@ def _title(records: Sequence[dict[str, Any]]) -> str:
 
 
 def _balls_human(cases: Sequence[CombinedCase], records: Sequence[dict[str, Any]]) -> Table:
-    per = [_balls(c) for c in cases]
+    per = [
+        [
+            {"angle": a, "alpha": contact_angle_shown(alpha, q), "approach": d * 1e3, "q": q}
+            for a, alpha, d, q in _balls(c)
+        ]
+        for c in cases
+    ]
     dynamics = getattr(cases[0].result, "model", None) is not None  # the inner contacts shown
-    columns = [column("ball"), Column("angle", "angle", "°", 6)]
-    one = len(cases) == 1
-    if one:
-        columns += [
-            Column("alpha", "contact angle", "°", 6),
-            Column("approach", "approach delta (< 0: gap)", "µm", 6),
-            Column("q", "load Q", "N", 6),
-        ]
-    else:
-        columns += [
-            Column(f"a{i}", f"contact angle at G_r {r['clearance_pick']}", "°", 6)
-            for i, r in enumerate(records)
-        ]
-        columns += [
-            Column(f"q{i}", f"Q at G_r {r['clearance_pick']}", "N", 6)
-            for i, r in enumerate(records)
-        ]
-    rows = []
-    for j, (angle, alpha, approach, load) in enumerate(per[0]):
-        row: dict[str, Any] = {"ball": j + 1, "angle": angle}
-        if one:
-            row |= {
-                "alpha": contact_angle_shown(alpha, load),
-                "approach": approach * 1e3,
-                "q": load,
-            }
-        else:
-            row |= {f"a{i}": contact_angle_shown(b[j][1], b[j][3]) for i, b in enumerate(per)}
-            row |= {f"q{i}": balls[j][3] for i, balls in enumerate(per)}
-        rows.append(row)
-    loose = any(ball[3] <= 0.0 for balls in per for ball in balls)
-    return Table(
-        "Ball loads (ball 1 at the cage angle; angles from the load line)",
-        columns,
-        rows,
-        [(LOOSE_NOTE_AT_SPEED if dynamics else LOOSE_NOTE)] if loose else [],
-    )
+    loose = any(ball["q"] <= 0.0 for balls in per for ball in balls)
+    notes = [LOOSE_NOTE_AT_SPEED if dynamics else LOOSE_NOTE] if loose else []
+    return balls_table(per, [f"G_r {r['clearance_pick']}" for r in records], notes)
 
 
 #: The per-ball table's note where a ball carries no load.
