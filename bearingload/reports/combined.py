@@ -229,12 +229,16 @@ def _balls(c: CombinedCase) -> list[tuple[float, float, float, float]]:
 
 
 def _per_ball_table(cases: Sequence[CombinedCase], records: Sequence[dict[str, Any]]) -> Table:
-    per = []
-    for c in cases:
-        found = contact_values(c.result, c.bearing.contact_angle)
-        balls = [dict(zip(PER_BALL_KEYS[1:5], values, strict=True)) for values in _balls(c)]
-        per.append([b | {k: float(found[k][i]) for k in CONTACT_KEYS} for i, b in enumerate(balls)])
+    per = [ball_values(c) for c in cases]
     return per_ball_table(records, given_keys(records, INPUT_KEYS), per, PER_BALL_KEYS, 1.5)
+
+
+def ball_values(c: CombinedCase) -> list[dict[str, Any]]:
+    """Each ball's values of a solved case as the csv writes them (:data:`PER_BALL_KEYS` but
+    its number): angle, contact angle, approach, load and each contact's angle and load."""
+    found = contact_values(c.result, c.bearing.contact_angle)
+    balls = [dict(zip(PER_BALL_KEYS[1:5], values, strict=True)) for values in _balls(c)]
+    return [b | {k: float(found[k][i]) for k in CONTACT_KEYS} for i, b in enumerate(balls)]
 
 
 #: The note of a solve with the ball dynamics at speed (the model's name filled in).

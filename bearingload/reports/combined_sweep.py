@@ -135,14 +135,11 @@ def rows(s: CombinedSweep) -> list[dict[str, Any]]:
         "cage_angle": r.cage_angle,
         "q_max_ball": s.q_max_ball,
     } | {k: s.values(k) for k in keys if k in SPREAD_KEYS}
-    out = []
-    for i in range(s.cage_angle.size):
-        row = {}
-        for k in keys:
-            v = data[k][i]
-            row[k] = int(v) if k in ("q_max_ball", "loaded_balls") else float(v)
-        out.append(row)
-    return out
+    whole = ("q_max_ball", "loaded_balls")  # counts, the rest floats
+    return [
+        {k: int(data[k][i]) if k in whole else float(data[k][i]) for k in keys}
+        for i in range(s.cage_angle.size)
+    ]
 
 
 def title(s: CombinedSweep) -> str:

@@ -20,7 +20,12 @@ from collections.abc import Sequence
 from typing import Any
 
 from bearingload.bearings.preload import Preload
-from bearingload.reports.combined import ANGULAR_LABELS, MATRIX_UNITS_OF, contact_angle_shown
+from bearingload.reports.combined import (
+    ANGULAR_LABELS,
+    MATRIX_UNITS_OF,
+    ball_values,
+    contact_angle_shown,
+)
 from bearingload.reports.quantities import SERVICE_KEYS, column, units
 from bearingload.reports.render import Column, Table, render
 from bearingload.reports.solve import (
@@ -336,23 +341,14 @@ def csv_rows(c: PairCase, pair: dict[str, Any], records: list[dict[str, Any]],
              keys: Sequence[str], per_ball: bool = False) -> list[dict[str, Any]]:  # fmt: skip
     """The csv rows of a pair under ``keys`` (:func:`csv_columns`, with the per-ball keys when
     ``per_ball``): one per bearing (``per_ball``: per ball of each bearing), '' where none."""
-    from bearingload.reports.combined import CONTACT_KEYS, contact_values
-
     rows = []
     for n, (b, rec) in enumerate(zip(c.bearings, records, strict=True), start=1):
         base = {k: pair.get(k[5:]) if k.startswith("pair_") else rec.get(k) for k in keys}
         base |= {k: pair.get(k) for k in CSV_INPUTS} | {"bearing_number": n}
-        if not per_ball:
+        if per_ball:
+            rows += [base | {"ball": j + 1} | ball for j, ball in enumerate(ball_values(b))]
+        else:
             rows.append(base)
-            continue
-        res = b.result
-        found = contact_values(res, b.bearing.contact_angle)
-        for j in range(len(res.ball_loads)):
-            rows.append(base | {"ball": j + 1, "ball_angles": float(res.ball_angles[j]),
-                                "contact_angles": float(res.contact_angles[j]),
-                                "ball_approaches": float(res.ball_approaches[j]),
-                                "ball_loads": float(res.ball_loads[j])}
-                        | {k: float(found[k][j]) for k in CONTACT_KEYS})  # fmt: skip
     return [blank(r, keys) for r in rows]
 
 
