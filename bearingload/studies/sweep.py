@@ -19,7 +19,7 @@ import numpy as np
 from bearingload import validate
 from bearingload.errors import InputError
 from bearingload.lazy_dataclass import dataclass
-from bearingload.models.equilibrium import LoadDistribution, ball_approaches, solve
+from bearingload.models.equilibrium import solve
 
 #: Cage positions over one pitch when none are asked for (both ends included). [-]
 DEFAULT_STEPS = 37
@@ -294,6 +294,7 @@ def sweep(
     0.3125
     """
     from bearingload.studies.compensation import compensating_clearances
+    from bearingload.studies.reference_life import all_ball_approaches
 
     z = _one_int("balls", validate.ball_count(balls))
     angles = cage_angles(z, steps)
@@ -304,7 +305,7 @@ def sweep(
         float(_one("exponent", validate.exponent(exponent))),
     )
     r = solve(z, f, k, g, angles, m)
-    delta = _ball_approaches(r, z)
+    delta = all_ball_approaches(r)
     top = delta.max(axis=1, keepdims=True)
     ties = delta >= top - 1e-12 * np.abs(top)
     return CageSweep(
@@ -349,21 +350,6 @@ def cage_angles(balls: int, steps: Any = DEFAULT_STEPS) -> np.ndarray:
         )
     n = _one_int("steps", validate.ball_count(steps, name="steps", maximum=MAX_STEPS))
     return np.linspace(0.0, 360.0 / balls, n)
-
-
-def _ball_approaches(r: LoadDistribution, z: int) -> np.ndarray:
-    """Approach of balls 1..z at every case of ``r``, shape (n, z) [mm]: the engine's own
-    :func:`bearingload.models.equilibrium.ball_approaches` (from the reference position, so that
-    a clearance much larger than the elastic approach costs no digits; under preload from the
-    centred ring, every ball pressed by -G_r/2 plus the ring's displacement)."""
-
-    def column(a: Any) -> np.ndarray:
-        return np.broadcast_to(np.asarray(a, dtype=float), np.shape(r.x)).reshape(-1, 1)
-
-    reference, offset = (np.asarray(a).reshape(-1, 2) for a in (r.reference, r.offset))
-    return ball_approaches(
-        z, column(r.cage_angle), column(r.clearance), column(r.x), column(r.y), reference, offset
-    )
 
 
 def _one(name: str, value: np.ndarray) -> np.ndarray:
