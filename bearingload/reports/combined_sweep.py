@@ -39,14 +39,6 @@ ROW_KEYS = (
     ("reference_rating_life", "L10r"),
     ("reference_rating_life_hours", "L10rh"),
 )
-#: The cage-independent figures (csv: trailing constant columns; json: in the summary).
-FIXED_KEYS = (
-    "free_contact_angle",
-    "axial_play",
-    "dynamic_rating",
-    "equivalent_load",
-    "rating_life",
-)
 
 
 def combined_sweep_report(s: CombinedSweep, fmt: str, context: str = "") -> str:
