@@ -11,7 +11,7 @@ from scipy.optimize import brentq
 
 from bearingload.errors import ConvergenceError
 from bearingload.numerics import bracketed_root
-from bearingload.studies.compensation import _difference, compensating_clearances
+from bearingload.studies.compensation import compensating_clearances, position_difference
 
 AWKWARD = [  # (f, a, b, the root)
     (lambda x: x**3 - 2 * x - 5, 2.0, 3.0, None),  # None: brentq's
@@ -35,7 +35,9 @@ def test_compensating_clearances_agree_with_brentq():
     s = (f / k) ** (1 / m)
     for g in compensating_clearances(z, f, k, m):
         h = 1e-6 * s
-        reference = brentq(_difference, g - h, g + h, args=(z, f, k, m), xtol=1e-12 * s)
+        reference = brentq(
+            lambda c: position_difference(z, f, k, c, m), g - h, g + h, xtol=1e-12 * s
+        )
         assert abs(g - reference) <= 4e-12 * s
 
 

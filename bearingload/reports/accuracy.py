@@ -6,27 +6,15 @@ from __future__ import annotations
 from typing import Any
 
 from bearingload.quality import accuracy
-from bearingload.reports.quantities import QUANTITIES
-from bearingload.reports.render import Column, Table
+from bearingload.reports.quantities import column
+from bearingload.reports.render import Table
 
-
-def _column(key: str, header: str | None = None) -> Column:
-    """The renderer column of a registered quantity (bearingload.reports.quantities)."""
-    q = QUANTITIES[key]
-    text = q.unit == "" and q.digits is None and key not in _COUNTS
-    return Column(key, header or q.label, q.unit, q.digits, "left" if text else "right", q.display)
-
-
-_COUNTS = ("cases", "iterations")
-COLUMNS = (
-    _column("method"),
-    _column("setting"),
-    _column("cases"),
-    _column("error_median"),
-    _column("error_max"),
-    _column("iterations", "iterations (max)"),
+COLUMNS = tuple(
+    column(k, shown=True) for k in ("method", "setting", "cases", "error_median", "error_max")
+) + (column("iterations", header="iterations (max)", shown=True),)
+TIME_COLUMNS = tuple(
+    column(k, shown=True) for k in ("seconds_per_case", "seconds_per_case_vectorised")
 )
-TIME_COLUMNS = (_column("seconds_per_case"), _column("seconds_per_case_vectorised"))
 NOTES = (
     "Error: |Q_max/Q_max,ref - 1| against the exact ring equilibrium at 50 digits (mpmath, "
     "benchmarks/make_reference.py), in % (a fraction in csv and json).",

@@ -21,12 +21,15 @@ from collections.abc import Sequence
 from typing import Any
 
 from bearingload.bearings.mounting import RESULT_KEYS, mounting_notes
-from bearingload.reports.quantities import MATRIX_UNITS, SERVICE_KEYS, units
+from bearingload.reports.quantities import MATRIX_UNITS, SERVICE_KEYS, column, units
 from bearingload.reports.render import Column, Table, render
 from bearingload.reports.solve import (
+    balls_table,
+    blank,
     case_warnings,
-    column,
     given_keys,
+    per_ball_table,
+    present,
     printed_warnings,
     quantity_rows,
     service_notes,
@@ -188,17 +191,9 @@ def combined_document(
     return bearings_document(cases, records, service)
 
 
-def _present(records: Sequence[dict[str, Any]], keys: Sequence[str]) -> list[str]:
-    return [k for k in keys if any(r.get(k) is not None for r in records)]
-
-
-def _blank(record: dict[str, Any], keys: Sequence[str]) -> dict[str, Any]:
-    return {k: "" if record.get(k) is None else record[k] for k in keys}
-
-
 def _case_table(records: Sequence[dict[str, Any]]) -> Table:
     keys = given_keys(records, tuple(dict.fromkeys(INPUT_KEYS + ANSWER_KEYS + MATRIX_KEYS)))
-    return Table("cases", [column(k, 1.5) for k in keys], [_blank(r, keys) for r in records])
+    return Table("cases", [column(k, 1.5) for k in keys], [blank(r, keys) for r in records])
 
 
 def matrix_table(matrix: Any, title: str = "tangent stiffness matrix", csv: bool = True) -> Table:
@@ -234,15 +229,16 @@ def _balls(c: CombinedCase) -> list[tuple[float, float, float, float]]:
 
 
 def _per_ball_table(cases: Sequence[CombinedCase], records: Sequence[dict[str, Any]]) -> Table:
-    inputs = given_keys(records, INPUT_KEYS)
-    rows = []
-    for c, r in zip(cases, records, strict=True):
-        found = contact_values(c.result, c.bearing.contact_angle)
-        for i, values in enumerate(_balls(c)):
-            per = dict(zip(PER_BALL_KEYS[1:5], values, strict=True))
-            per |= {k: float(found[k][i]) for k in CONTACT_KEYS}
-            rows.append(_blank(r, inputs) | {"ball": i + 1} | per)
-    return Table("balls", [column(k, 1.5) for k in inputs + list(PER_BALL_KEYS)], rows)
+    per = [ball_values(c) for c in cases]
+    return per_ball_table(records, given_keys(records, INPUT_KEYS), per, PER_BALL_KEYS, 1.5)
+
+
+def ball_values(c: CombinedCase) -> list[dict[str, Any]]:
+    """Each ball's values of a solved case as the csv writes them (:data:`PER_BALL_KEYS` but
+    its number): angle, contact angle, approach, load and each contact's angle and load."""
+    found = contact_values(c.result, c.bearing.contact_angle)
+    balls = [dict(zip(PER_BALL_KEYS[1:5], values, strict=True)) for values in _balls(c)]
+    return [b | {k: float(found[k][i]) for k in CONTACT_KEYS} for i, b in enumerate(balls)]
 
 
 #: The note of a solve with the ball dynamics at speed (the model's name filled in).
@@ -269,7 +265,7 @@ RADIAL_AT_SPEED_NOTE = (
 
 
 def _summary(records: Sequence[dict[str, Any]], bearing: Any, dynamics: str | None = None) -> Table:
-    keys = _present(records, ANSWER_KEYS)
+    keys = present(records, ANSWER_KEYS)
     if len({r["clearance"] for r in records}) > 1:
         keys.insert(0, "clearance")
     heads = ["value"] if len(records) == 1 else [f"G_r {r['clearance_pick']}" for r in records]
@@ -303,45 +299,17 @@ def _title(records: Sequence[dict[str, Any]]) -> str:
 
 
 def _balls_human(cases: Sequence[CombinedCase], records: Sequence[dict[str, Any]]) -> Table:
-    per = [_balls(c) for c in cases]
+    per = [
+        [
+            {"angle": a, "alpha": contact_angle_shown(alpha, q), "approach": d * 1e3, "q": q}
+            for a, alpha, d, q in _balls(c)
+        ]
+        for c in cases
+    ]
     dynamics = getattr(cases[0].result, "model", None) is not None  # the inner contacts shown
-    columns = [column("ball"), Column("angle", "angle", "°", 6)]
-    one = len(cases) == 1
-    if one:
-        columns += [
-            Column("alpha", "contact angle", "°", 6),
-            Column("approach", "approach delta (< 0: gap)", "µm", 6),
-            Column("q", "load Q", "N", 6),
-        ]
-    else:
-        columns += [
-            Column(f"a{i}", f"contact angle at G_r {r['clearance_pick']}", "°", 6)
-            for i, r in enumerate(records)
-        ]
-        columns += [
-            Column(f"q{i}", f"Q at G_r {r['clearance_pick']}", "N", 6)
-            for i, r in enumerate(records)
-        ]
-    rows = []
-    for j, (angle, alpha, approach, load) in enumerate(per[0]):
-        row: dict[str, Any] = {"ball": j + 1, "angle": angle}
-        if one:
-            row |= {
-                "alpha": contact_angle_shown(alpha, load),
-                "approach": approach * 1e3,
-                "q": load,
-            }
-        else:
-            row |= {f"a{i}": contact_angle_shown(b[j][1], b[j][3]) for i, b in enumerate(per)}
-            row |= {f"q{i}": balls[j][3] for i, balls in enumerate(per)}
-        rows.append(row)
-    loose = any(ball[3] <= 0.0 for balls in per for ball in balls)
-    return Table(
-        "Ball loads (ball 1 at the cage angle; angles from the load line)",
-        columns,
-        rows,
-        [(LOOSE_NOTE_AT_SPEED if dynamics else LOOSE_NOTE)] if loose else [],
-    )
+    loose = any(ball["q"] <= 0.0 for balls in per for ball in balls)
+    notes = [LOOSE_NOTE_AT_SPEED if dynamics else LOOSE_NOTE] if loose else []
+    return balls_table(per, [f"G_r {r['clearance_pick']}" for r in records], notes)
 
 
 #: The per-ball table's note where a ball carries no load.
@@ -441,12 +409,8 @@ def collect_combined_warnings(cases: Sequence[CombinedCase]) -> list[str]:
     """The warnings of several cases (the picks of a clearance range), each once, in order, as
     the radial engine's :func:`bearingload.studies.loaded_bearing.collect_warnings` gives them:
     one that only some picks carry is prefixed with its pick (``"G_r max: ..."``)."""
+    from bearingload.studies.loaded_bearing import labelled_warnings
+
     picks = len({c.bearing.clearance_pick for c in cases}) > 1
-    seen: list[str] = []
-    for c in cases:
-        for w in c.warnings:
-            if picks and not all(w in other.warnings for other in cases):
-                w = f"G_r {c.bearing.clearance_pick}: {w}"
-            if w not in seen:
-                seen.append(w)
-    return seen
+    labels = [f"G_r {c.bearing.clearance_pick}" if picks else "" for c in cases]
+    return labelled_warnings([c.warnings for c in cases], labels)

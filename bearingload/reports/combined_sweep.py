@@ -13,15 +13,14 @@ Same layout as the radial sweep (:mod:`bearingload.reports.sweep`) and the same 
 
 from __future__ import annotations
 
-from dataclasses import asdict
 from typing import Any
 
 import numpy as np
 
 from bearingload.reports.combined import ANGULAR_LABELS, ANGULAR_NOTE, NOTES, tilt_text
-from bearingload.reports.quantities import QUANTITIES, units
+from bearingload.reports.quantities import QUANTITIES, column, units
 from bearingload.reports.render import Table, render
-from bearingload.reports.solve import column
+from bearingload.reports.solve import blank
 from bearingload.studies.combined_sweep import SPREAD_KEYS, CombinedSweep
 
 #: Per cage position: the quantity and its short header in the human table.
@@ -39,14 +38,6 @@ ROW_KEYS = (
     ("contact_angle_max", "alpha_max"),
     ("reference_rating_life", "L10r"),
     ("reference_rating_life_hours", "L10rh"),
-)
-#: The cage-independent figures (csv: trailing constant columns; json: in the summary).
-FIXED_KEYS = (
-    "free_contact_angle",
-    "axial_play",
-    "dynamic_rating",
-    "equivalent_load",
-    "rating_life",
 )
 
 
@@ -136,14 +127,11 @@ def rows(s: CombinedSweep) -> list[dict[str, Any]]:
         "cage_angle": r.cage_angle,
         "q_max_ball": s.q_max_ball,
     } | {k: s.values(k) for k in keys if k in SPREAD_KEYS}
-    out = []
-    for i in range(s.cage_angle.size):
-        row = {}
-        for k in keys:
-            v = data[k][i]
-            row[k] = int(v) if k in ("q_max_ball", "loaded_balls") else float(v)
-        out.append(row)
-    return out
+    whole = ("q_max_ball", "loaded_balls")  # counts, the rest floats
+    return [
+        {k: int(data[k][i]) if k in whole else float(data[k][i]) for k in keys}
+        for i in range(s.cage_angle.size)
+    ]
 
 
 def title(s: CombinedSweep) -> str:
@@ -159,19 +147,14 @@ def title(s: CombinedSweep) -> str:
 
 
 def _spread_table(s: CombinedSweep, context: str) -> Table:
-    import dataclasses
-
     from bearingload.reports.sweep import STATIC_AT_SPEED, spread_table
 
     angular = s.bearing.contact_angle is not None
     entries = []
     for key in _spread_keys(s):
         q = QUANTITIES[key]
-        if angular and key in ANGULAR_LABELS:
-            q = dataclasses.replace(q, label=ANGULAR_LABELS[key])
-        sp = s.spread(key)
-        assert sp is not None
-        entries += [(q, sp, shown) for shown in [q.shown()] + ([q.also] if q.also else [])]
+        label = ANGULAR_LABELS.get(key, q.label) if angular else q.label
+        entries += [(label, s.spread(key), shown) for shown in [q.shown(), q.also] if shown]
     notes = ["mean: over one period (the last position, equal to the first, left out).", *NOTES]
     if angular:  # the axial origin: the zero-load position, not the centred rings
         notes[2] = ANGULAR_NOTE
@@ -184,26 +167,11 @@ def _spread_table(s: CombinedSweep, context: str) -> Table:
 
 
 def _fixed_table(s: CombinedSweep) -> Table:
-    ripple = QUANTITIES["ripple_per_cage_revolution"]
-    out: list[dict[str, Any]] = [
-        {"quantity": f"{ripple.label} (periods per cage revolution)", "value": s.ripple_order,
-         "unit": ripple.unit},
-    ]  # fmt: skip
-    for key, value in fixed(s).items():
-        q = QUANTITIES[key]
-        unit, factor = q.shown()
-        out.append(
-            {
-                "quantity": q.label,
-                "value": "-" if value is None else value * factor,
-                "unit": unit,
-            }
-        )
-    from bearingload.reports.sweep import value_table
+    from bearingload.reports.sweep import ripple_row, value_rows, value_table
 
     return value_table(
         "The same at every cage position",
-        out,
+        [ripple_row(s.ripple_order), *value_rows(fixed(s).items())],
         [
             "ISO 281's basic life (C_r/P)^3 does not see the cage position, the clearance or the "
             "load distribution; L10r (ISO/TS 16281) does, per cage position above."
@@ -215,7 +183,7 @@ def _rows_table(s: CombinedSweep) -> Table:
     from bearingload.reports.sweep import positions_table
 
     return positions_table(
-        _row_keys(s),
+        [column(k, header=h, shown=True) for k, h in _row_keys(s)],
         rows(s),
         [
             f"axial: {_axial_origin(s)}; tilt: about the axis across the load; tilt cross: "
@@ -257,7 +225,7 @@ def _csv_table(s: CombinedSweep) -> Table:
     head = inputs(s)
     tail = fixed(s)
     keys = [*head, *(k for k, _ in _row_keys(s)), *tail]
-    const = {k: "" if v is None else v for k, v in (head | tail).items()}
+    const = blank(head | tail)
     return Table(
         title="sweep",
         columns=[column(k, 1.5) for k in keys],
@@ -269,15 +237,9 @@ def combined_sweep_json(s: CombinedSweep) -> dict[str, Any]:
     """The JSON document: inputs, ``steps``, ``rows``, ``summary``, ``units``, ``geometry`` (the
     bearing's, with the source of every value), ``warnings``."""
     from bearingload.reports.bearing import geometry_document
-    from bearingload.reports.sweep import static_at_speed
+    from bearingload.reports.sweep import spreads, static_at_speed
 
-    summary: dict[str, Any] = {}
-    for key in _spread_keys(s):
-        sp = s.spread(key)
-        assert sp is not None
-        summary[key] = asdict(sp)  # min, mean, max, peak_to_peak
-    summary["ripple_per_cage_revolution"] = s.ripple_order
-    summary |= fixed(s)
+    summary = spreads(s, _spread_keys(s)) | fixed(s)
     head = inputs(s)
     body = rows(s)
     keys = [*head, *body[0], *summary]

@@ -38,22 +38,12 @@ ERRATA_KEYS = (
     "cause",
 )
 SUMMARY_KEYS = ("source", "table", "checked", "agree", "differ")
-_RIGHT = {"printed", "checked", "agree", "differ"}
 
 
 def _column(key: str) -> Column:
-    from bearingload.reports.quantities import QUANTITIES
+    from bearingload.reports.quantities import column
 
-    q = QUANTITIES[key]
-    right = key in _RIGHT or q.digits is not None
-    return Column(
-        key,
-        q.label,
-        "" if q.unit == "" else q.unit,
-        q.digits,
-        "right" if right else "left",
-        q.display,
-    )
+    return column(key, shown=True)
 
 
 def _cells(row: dict[str, Any]) -> dict[str, Any]:

@@ -11,13 +11,14 @@ density among the conditions; the static model (``--quasi-static``) a note and t
 
 from __future__ import annotations
 
+import dataclasses
 from collections.abc import Sequence
 from typing import Any
 
 from bearingload.reports.combined import tilt_text
-from bearingload.reports.quantities import QUANTITIES, SERVICE_KEYS, units
+from bearingload.reports.quantities import QUANTITIES, SERVICE_KEYS, column, units
 from bearingload.reports.render import Column, Table, render
-from bearingload.reports.solve import column, printed_warnings
+from bearingload.reports.solve import blank, printed_warnings
 from bearingload.studies.life_clearance import (
     AXIAL_LOAD,
     DESIGNATION,
@@ -121,9 +122,9 @@ def all_conditions(t: LifeAgainstClearance, service: Sequence[Any] | None) -> di
     return conditions(t) | service_conditions(service) | density
 
 
-def _rows(
-    t: LifeAgainstClearance, human: bool, service: Sequence[Any] | None = None
-) -> list[dict[str, Any]]:
+def _rows(t: LifeAgainstClearance, service: Sequence[Any] | None = None) -> list[dict[str, Any]]:
+    """One dict per clearance in machine units: the quantities of :func:`_keys`, then the
+    service lives that differ from row to row."""
     data: dict[str, Any] = {
         "clearance": t.clearance,
         "free_contact_angle": t.free_contact_angle,
@@ -132,28 +133,16 @@ def _rows(
         "q_max": t.q_max,
         "reference_rating_life": t.reference_rating_life,
         "relative_life": t.relative_life,
+        "rating_life": [t.rating_life] * t.clearance.size,
     }
-    out = []
-    for i in range(t.clearance.size):
-        row: dict[str, Any] = {}
-        for key, _ in _keys(t):
-            if key == "rating_life":
-                v: Any = t.rating_life
-            elif key == "loaded_balls":
-                v = int(data[key][i])
-            else:
-                v = float(data[key][i])
-            if human and isinstance(v, float):
-                v *= QUANTITIES[key].shown()[1]
-            row[key] = v
-        for key, _ in _service_rows(service):
-            assert service is not None
-            v = service[i].values.get(key)
-            if human and v is not None:
-                v *= QUANTITIES[key].shown()[1]
-            row[key] = v
-        out.append(row)
-    return out
+    keys = [k for k, _ in _keys(t)]
+    rows = [
+        {k: int(data[k][i]) if k == "loaded_balls" else float(data[k][i]) for k in keys}
+        for i in range(t.clearance.size)
+    ]
+    for row, lives in zip(rows, service or [], strict=False):
+        row |= {k: lives.values.get(k) for k, _ in _service_rows(service)}
+    return rows
 
 
 def title(t: LifeAgainstClearance) -> str:
@@ -196,18 +185,12 @@ def life_table(
     t: LifeAgainstClearance, human: bool = True, service: Sequence[Any] | None = None
 ) -> Table:
     """The table: display units (µm) for people, machine units (mm) for csv."""
-    columns = []
-    for key, header in _keys(t) + _service_rows(service):
-        q = QUANTITIES[key]
-        if human:
-            digits = 4 if key == "clearance" else q.digits
-            columns.append(Column(key, header, q.shown()[0], digits))
-        else:
-            columns.append(column(key))
+    columns = [column(k, header=h, shown=True) for k, h in _keys(t) + _service_rows(service)]
+    columns[0] = dataclasses.replace(columns[0], digits=4)  # G_r to 0.1 µm
     conds = all_conditions(t, service)
-    fixed = [] if human else [(column(k), "" if v is None else v) for k, v in conds.items()]
+    fixed = [] if human else [(column(k), v) for k, v in blank(conds).items()]
     notes = _notes(t) + _service_notes(service) + _speed_notes(t, service) if human else []
-    return Table(title(t), columns, _rows(t, human, service), notes, fixed)
+    return Table(title(t), columns, _rows(t, service), notes, fixed)
 
 
 #: The note of a table with the ball dynamics at --speed (the model's name, the density).
@@ -224,12 +207,11 @@ def _speed_model(t: LifeAgainstClearance, service: Sequence[Any] | None) -> dict
     dynamics, ``ball_dynamics`` (:data:`STATIC_AT_SPEED`) for the static model; none
     without a speed."""
     from bearingload.reports.combined import model_name
-    from bearingload.reports.sweep import STATIC_AT_SPEED
+    from bearingload.reports.sweep import static_at_speed
 
     if t.model is not None:
         return {"model": model_name(t.model)}
-    speed = service[0].values.get("speed") if service else None
-    return {} if speed is None else {"ball_dynamics": STATIC_AT_SPEED}
+    return static_at_speed(service[0].values.get("speed") if service else None)
 
 
 def _speed_notes(t: LifeAgainstClearance, service: Sequence[Any] | None) -> list[str]:
@@ -260,7 +242,7 @@ def life_document(t: LifeAgainstClearance, service: Sequence[Any] | None = None)
     from bearingload.reports.bearing import geometry_document
 
     conds = all_conditions(t, service)
-    body = _rows(t, human=False, service=service)
+    body = _rows(t, service)
     return {
         "title": title(t),
         **conds,

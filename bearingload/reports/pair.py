@@ -20,11 +20,16 @@ from collections.abc import Sequence
 from typing import Any
 
 from bearingload.bearings.preload import Preload
-from bearingload.reports.combined import ANGULAR_LABELS, MATRIX_UNITS_OF, contact_angle_shown
-from bearingload.reports.quantities import SERVICE_KEYS, units
+from bearingload.reports.combined import (
+    ANGULAR_LABELS,
+    MATRIX_UNITS_OF,
+    ball_values,
+    contact_angle_shown,
+)
+from bearingload.reports.quantities import SERVICE_KEYS, column, units
 from bearingload.reports.render import Column, Table, render
 from bearingload.reports.solve import (
-    column,
+    blank,
     material_note,
     printed_warnings,
     quantity_rows,
@@ -93,13 +98,45 @@ DYNAMICS_NOTE = (
 )
 
 
-def _speed_model(c: PairCase, pair: dict[str, Any]) -> tuple[str | None, str]:
-    """(the note under the table, the end of the JSON's ``model``) of a pair at --speed: the
-    ball dynamics (the result's ``model``) or the static model (--quasi-static)."""
+def _speed_note(c: PairCase, pair: dict[str, Any]) -> list[str]:
+    """The note under the table of a pair at --speed: the ball dynamics (the result's
+    ``model``) or the static model (--quasi-static); none without a speed."""
     dynamics = getattr(c.result, "model", None)
     if dynamics is not None:
-        return DYNAMICS_NOTE.format(dynamics), f"; {dynamics} in both bearings"
-    return (SPEED_NOTE, STATIC_AT_SPEED) if "speed" in pair else (None, "")
+        return [DYNAMICS_NOTE.format(dynamics)]
+    return [SPEED_NOTE] if "speed" in pair else []
+
+
+#: The JSON ``model`` of a pair (:func:`model_end` follows).
+PAIR_MODEL = "pair of angular-contact ball bearings on one rigid shaft (ISO/TS 16281 each)"
+
+
+def model_end(dynamics: str | None, speed: bool) -> str:
+    """The end of a pair's JSON ``model``: the ball ``dynamics`` of both bearings (the result's
+    ``model``), or the static model at a ``speed``; none without a speed."""
+    if dynamics is not None:
+        return f"; {dynamics} in both bearings"
+    return STATIC_AT_SPEED if speed else ""
+
+
+def pairs_document(
+    records: Sequence[Any],
+    rows: list[dict[str, Any]],
+    varying: str,
+    model: str,
+    warnings: Sequence[str],
+    steps: int | None = None,
+    summary: dict[str, Any] | None = None,
+) -> dict[str, Any]:
+    """The JSON document of a pair solved row by row (a sweep's cage positions, table life's
+    preloads; :func:`pair_records` of each in ``records``): the pair's inputs but the
+    ``varying`` one, ``model``, ``steps``, ``rows``, ``summary`` (where given), ``units`` of
+    every key (each bearing's too), ``warnings``."""
+    head = {k: v for k, v in records[0][0].items() if k in PAIR_INPUTS and k != varying}
+    keys = [*head, *rows[0], *(k for r in rows[0]["bearings"] for k in r)]
+    doc = {**head, "model": model} | ({} if steps is None else {"steps": steps})
+    doc |= {"rows": rows} | ({} if summary is None else {"summary": summary})
+    return doc | {"units": units(list(dict.fromkeys(keys)), 1.5), "warnings": list(warnings)}
 
 
 #: The note of a pair's modified lives.
@@ -178,8 +215,7 @@ def pair_report(
     rows_of = [pair, *records]
     keys = [k for k in SUMMARY_KEYS if any(r.get(k) is not None for r in rows_of)]
     columns, rows = quantity_rows(keys, heads, rows_of, ANGULAR_LABELS)
-    speed_note = _speed_model(c, pair)[0]
-    notes = [*NOTES, *([speed_note] if speed_note else []), *material_note(c.bearing)]
+    notes = [*NOTES, *_speed_note(c, pair), *material_note(c.bearing)]
     notes += [MODIFIED_NOTE] if any(k.startswith("modified_") for k in pair) else []
     from bearingload.reports.combined import matrix_table
 
@@ -240,8 +276,7 @@ def _document(
     # object lists its own unlabelled), then their lives'; each once
     said = printed_warnings(c.warnings, service)
     doc = pair | {
-        "model": "pair of angular-contact ball bearings on one rigid shaft (ISO/TS 16281 each)"
-        + _speed_model(c, pair)[1],
+        "model": PAIR_MODEL + model_end(getattr(c.result, "model", None), "speed" in pair),
         "stiffness_matrix": c.result.stiffness_matrix.tolist(),
         "stiffness_matrix_symmetric": c.result.stiffness_matrix_symmetric.tolist(),
         "bearings": singles["cases"],
@@ -306,24 +341,15 @@ def csv_rows(c: PairCase, pair: dict[str, Any], records: list[dict[str, Any]],
              keys: Sequence[str], per_ball: bool = False) -> list[dict[str, Any]]:  # fmt: skip
     """The csv rows of a pair under ``keys`` (:func:`csv_columns`, with the per-ball keys when
     ``per_ball``): one per bearing (``per_ball``: per ball of each bearing), '' where none."""
-    from bearingload.reports.combined import CONTACT_KEYS, contact_values
-
     rows = []
     for n, (b, rec) in enumerate(zip(c.bearings, records, strict=True), start=1):
         base = {k: pair.get(k[5:]) if k.startswith("pair_") else rec.get(k) for k in keys}
         base |= {k: pair.get(k) for k in CSV_INPUTS} | {"bearing_number": n}
-        if not per_ball:
+        if per_ball:
+            rows += [base | {"ball": j + 1} | ball for j, ball in enumerate(ball_values(b))]
+        else:
             rows.append(base)
-            continue
-        res = b.result
-        found = contact_values(res, b.bearing.contact_angle)
-        for j in range(len(res.ball_loads)):
-            rows.append(base | {"ball": j + 1, "ball_angles": float(res.ball_angles[j]),
-                                "contact_angles": float(res.contact_angles[j]),
-                                "ball_approaches": float(res.ball_approaches[j]),
-                                "ball_loads": float(res.ball_loads[j])}
-                        | {k: float(found[k][j]) for k in CONTACT_KEYS})  # fmt: skip
-    return [{k: "" if r.get(k) is None else r[k] for k in keys} for r in rows]
+    return [blank(r, keys) for r in rows]
 
 
 def _pair_column(key: str) -> Column:
@@ -341,5 +367,4 @@ def pairs_csv(title: str, cases: Sequence[PairCase], records: list[Any]) -> Tabl
     rows = []
     for c, (pair, recs) in zip(cases, records, strict=True):
         rows += csv_rows(c, pair, recs, keys)
-    blank = [{k: "" if r[k] is None else r[k] for k in keys} for r in rows]
-    return Table(title, cols, blank)
+    return Table(title, cols, rows)

@@ -16,13 +16,15 @@ from typing import Any
 
 from bearingload.reports.pair import (
     PAIR_ANSWERS,
-    PAIR_INPUTS,
+    PAIR_MODEL,
     PAIR_SERVICE,
+    model_end,
     pair_records,
     pairs_csv,
+    pairs_document,
 )
-from bearingload.reports.quantities import QUANTITIES, units
-from bearingload.reports.render import Column, Table, render
+from bearingload.reports.quantities import column
+from bearingload.reports.render import Table, render
 from bearingload.studies.bearing_pair import ARRANGEMENT_NAMES, PairLives
 from bearingload.studies.pair_life import LifeAgainstPreload
 
@@ -58,17 +60,11 @@ def preload_life_report(
         return render([], "json", document=_json(t, records, speed))
     at_speed = ("reference_rating_life_hours", "preload_at_speed")  # columns at a speed only
     keys = [(k, b, h) for k, b, h in PRELOAD_KEYS if k not in at_speed or k in records[0][0]]
-    columns = []
-    for key, b, header in keys:
-        q = QUANTITIES[key]
-        columns.append(Column(f"{key}{b or ''}", header, q.shown()[0], q.digits))
+    columns = [column(k, header=h, name=f"{k}{b or ''}", shown=True) for k, b, h in keys]
     rows = []
     for pair, recs in records:
-        row: dict[str, Any] = {}
-        for key, b, _ in keys:
-            v = pair.get(key) if b is None else recs[b - 1].get(key)
-            row[f"{key}{b or ''}"] = "-" if v is None else v * QUANTITIES[key].shown()[1]
-        rows.append(row)
+        got = {f"{k}{b or ''}": recs[b - 1].get(k) if b else pair.get(k) for k, b, _ in keys}
+        rows.append({name: "-" if v is None else v for name, v in got.items()})
     notes = _notes(t, records) + _speed_notes(t, records, speed)
     return render([Table(_title(records[0][0], t), columns, rows, notes)], fmt)
 
@@ -116,24 +112,10 @@ def _speed_notes(t: LifeAgainstPreload, records: list[Any], speed: float | None)
 
 
 def _json(t: LifeAgainstPreload, records: list[Any], speed: float | None) -> dict[str, Any]:
-    from bearingload.reports.pair import STATIC_AT_SPEED
-
     rows = []
     for pair, recs in records:
         answers = {k: pair[k] for k in ("preload", *PAIR_ANSWERS)}
         service = {k: v for k, v in pair.items() if k in PAIR_SERVICE}  # solve's, at a speed
         rows.append(answers | service | {"bearings": recs})
-    head = {k: v for k, v in records[0][0].items() if k in PAIR_INPUTS and k != "preload"}
-    keys = [*head, *rows[0], *(k for r in rows[0]["bearings"] for k in r)]
-    model = "pair of angular-contact ball bearings on one rigid shaft (ISO/TS 16281 each)"
-    if t.model is not None:
-        model += f"; {t.model} in both bearings"
-    elif speed is not None:
-        model += STATIC_AT_SPEED
-    return {
-        **head,
-        "model": model,
-        "rows": rows,
-        "units": units(list(dict.fromkeys(keys)), 1.5),
-        "warnings": list(t.warnings),
-    }
+    model = PAIR_MODEL + model_end(t.model, speed is not None)
+    return pairs_document(records, rows, "preload", model, t.warnings)

@@ -13,24 +13,23 @@
 
 from __future__ import annotations
 
-import dataclasses
 from collections.abc import Sequence
 from dataclasses import asdict
 from typing import Any
 
 from bearingload.reports.combined import ANGULAR_LABELS
 from bearingload.reports.pair import (
-    CSV_INPUTS,
     HOURS_NOTE,
     PAIR_ANSWERS,
-    PAIR_INPUTS,
+    PAIR_MODEL,
     PAIR_SERVICE,
-    STATIC_AT_SPEED,
+    model_end,
     pair_records,
     pairs_csv,
+    pairs_document,
 )
-from bearingload.reports.quantities import QUANTITIES, Quantity, units
-from bearingload.reports.render import Column, Table, render
+from bearingload.reports.quantities import QUANTITIES, Quantity, column
+from bearingload.reports.render import Table, render
 from bearingload.studies.bearing_pair import ARRANGEMENT_NAMES, PairLives
 from bearingload.studies.pair_sweep import BEARING_KEYS, PAIR_KEYS, PairSweep
 
@@ -85,11 +84,7 @@ def _entries(s: PairSweep) -> list[tuple[str, Quantity, int | None]]:
 def _spread_table(s: PairSweep, context: str) -> Table:
     from bearingload.reports.sweep import spread_table
 
-    entries = []
-    for label, q, k in _entries(s):
-        sp = s.spread(q.key, k)
-        assert sp is not None
-        entries.append((dataclasses.replace(q, label=label), sp, q.shown()))
+    entries = [(label, s.spread(q.key, k), q.shown()) for label, q, k in _entries(s)]
     setting = s.cases[0].preload_class
     notes = [
         *NOTES,
@@ -138,60 +133,38 @@ def title(s: PairSweep) -> str:
 
 
 def _rows_table(s: PairSweep) -> Table:
+    from bearingload.reports.sweep import positions_table
+
     keys = [(k, b, h) for k, b, h in ROW_KEYS
             if k == "cage_angle" or s.values(k, b) is not None]  # fmt: skip
-    columns, factors = [], {}
-    for key, b, header in keys:
-        q = QUANTITIES[key]
-        unit, factors[key] = q.shown()
-        columns.append(Column(f"{key}{b or ''}", header, unit, q.digits))
-    data: dict[str, Any] = {f"{k}{b or ''}": s.cage_angle if k == "cage_angle" else
-                            s.values(k, b) for k, b, _ in keys}  # fmt: skip
-    rows = []
-    for i in range(len(s.cases)):
-        row: dict[str, Any] = {}
-        for key, b, _ in keys:
-            v = float(data[f"{key}{b or ''}"][i])
-            row[f"{key}{b or ''}"] = int(v) if key == "loaded_balls" else v * factors[key]
-        rows.append(row)
-    return Table(
-        "Per cage position (ball 1 at the cage angle; angles from the load line)",
-        columns, rows,
-        ["x, y, axial, tilt: the shaft at the pair's centre; Q_max k, loaded k: bearing k's "
-         "heaviest ball load and its loaded balls; k_r, k_a, k_tilt: the pair's stiffness."],
-    )  # fmt: skip
+    data: dict[str, Any] = {
+        f"{k}{b or ''}": s.cage_angle if k == "cage_angle" else s.values(k, b) for k, b, _ in keys
+    }
+    whole = {k for k in data if k.startswith("loaded_balls")}  # counts, the rest floats
+    rows = [
+        {k: int(v[i]) if k in whole else float(v[i]) for k, v in data.items()}
+        for i in range(len(s.cases))
+    ]
+    return positions_table(
+        [column(k, header=h, name=f"{k}{b or ''}", shown=True) for k, b, h in keys],
+        rows,
+        [
+            "x, y, axial, tilt: the shaft at the pair's centre; Q_max k, loaded k: bearing k's "
+            "heaviest ball load and its loaded balls; k_r, k_a, k_tilt: the pair's stiffness."
+        ],
+    )
 
 
 def pair_sweep_json(s: PairSweep, lives: Sequence[PairLives]) -> dict[str, Any]:
     """The JSON document: the pair's inputs, ``model``, ``steps``, ``rows`` (the pair's keys of
     solve's json at each position and ``bearings``), ``summary``, ``units``, ``warnings``."""
-    rows = []
-    for c, life in zip(s.cases, lives, strict=True):
-        pair, recs = pair_records(c, life)
-        answers = {k: pair[k] for k in ("cage_angle", *PAIR_ANSWERS, *PAIR_SERVICE) if k in pair}
-        rows.append(answers | {"bearings": recs})
-    head = {k: v for k, v in pair_records(s.cases[0])[0].items()
-            if k in PAIR_INPUTS and k != "cage_angle"}  # fmt: skip
+    records = [pair_records(c, life) for c, life in zip(s.cases, lives, strict=True)]
+    answers = ("cage_angle", *PAIR_ANSWERS, *PAIR_SERVICE)
+    rows = [{k: p[k] for k in answers if k in p} | {"bearings": recs} for p, recs in records]
     summary: dict[str, Any] = {"bearings": [{}, {}]}
     for _, q, k in _entries(s):
         sp = s.spread(q.key, k)
         assert sp is not None
         (summary if k is None else summary["bearings"][k - 1])[q.key] = asdict(sp)
-    keys = [*head, *rows[0], *(k for r in rows[0]["bearings"] for k in r), *CSV_INPUTS]
-    return {
-        **head,
-        "model": "pair of angular-contact ball bearings on one rigid shaft (ISO/TS 16281 each), "
-        "both cages at the cage angle" + _model_end(s),
-        "steps": len(s.cases),
-        "rows": rows,
-        "summary": summary,
-        "units": units(list(dict.fromkeys(keys)), 1.5),
-        "warnings": list(s.warnings),
-    }
-
-
-def _model_end(s: PairSweep) -> str:
-    """The end of the json's ``model``: the ball dynamics, or the static model at a speed."""
-    if s.model is not None:
-        return f"; {s.model} in both bearings"
-    return STATIC_AT_SPEED if s.speed is not None else ""
+    model = f"{PAIR_MODEL}, both cages at the cage angle{model_end(s.model, s.speed is not None)}"
+    return pairs_document(records, rows, "cage_angle", model, s.warnings, len(s.cases), summary)

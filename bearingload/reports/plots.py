@@ -48,29 +48,19 @@ def sweep_figure(s: Any, name: str | None = None) -> Any:
 
     One panel each, in that order; each panel's one line holds the sweep's values.
     """
-    fig = _figure(7.0, 8.0)
-    axes = fig.subplots(4, 1, sharex=True)
-    angle = np.asarray(s.cage_angle)
     panels = [
         (s.x * 1e3, "x, along load [µm]", "ring displacement along the load"),
         (s.y * 1e3, "y, across load [µm]", "ring displacement across the load"),
         (s.q_max, "Q_max [N]", "heaviest ball load"),
         (s.stiffness_radial, "K_r [N/mm]", "radial stiffness dF_r/dx (F_y held 0)"),
     ]
-    for ax, (values, label, title) in zip(axes, panels, strict=True):
-        ax.plot(angle, values, marker=".")
-        ax.set_ylabel(label)
-        ax.set_title(title, fontsize="small", loc="left")
-        ax.grid(True, alpha=0.3)
-    axes[-1].set_xlabel("cage angle (ball 1 from the load line) [°]")
-    for a in axes:
-        a.ticklabel_format(axis="y", useOffset=False)
-    fig.suptitle(
+    return _sweep_panels(
+        s.cage_angle,
+        panels,
         f"{_named(name)}Cage sweep over one pitch: z = {s.balls}, F_r = {s.load:.4g} N, "
         f"K = {s.stiffness:.4g} N/mm^{s.exponent:g}, G_r = {s.clearance * 1e3:.4g} µm",
-        fontsize="medium",
+        height=8.0,
     )
-    return fig
 
 
 def combined_sweep_figure(s: Any, name: str | None = None) -> Any:
@@ -90,24 +80,31 @@ def combined_sweep_figure(s: Any, name: str | None = None) -> Any:
     ]
     if s.reference_rating_life is not None:
         panels.append((s.reference_rating_life, "L10r [10^6 rev]", "ISO/TS 16281 L10r"))
-    fig = _figure(7.0, 1.8 * len(panels) + 0.8)
-    axes = fig.subplots(len(panels), 1, sharex=True)
-    angle = np.asarray(s.cage_angle)
-    for ax, (values, label, title) in zip(axes, panels, strict=True):
-        ax.plot(angle, values, marker=".")
-        ax.set_ylabel(label)
-        ax.set_title(title, fontsize="small", loc="left")
-        ax.grid(True, alpha=0.3)
-        ax.ticklabel_format(axis="y", useOffset=False)
-    axes[-1].set_xlabel("cage angle (ball 1 from the load line) [°]")
-    fig.suptitle(
+    return _sweep_panels(
+        s.cage_angle,
+        panels,
         f"{_named(name)}Cage sweep over one pitch: z = {s.balls}, "
         f"F_r = {float(r.load[0]):.4g} N, "
         f"F_a = {float(r.axial_load[0]):.4g} N, G_r = {float(r.clearance[0]) * 1e3:.4g} µm"
         + ("" if s.speed is None else f"\nn = {s.speed:.6g} rpm")
         + (" (ball dynamics)" if getattr(r, "model", None) is not None else ""),
-        fontsize="medium",
+        height=1.8 * len(panels) + 0.8,
     )
+
+
+def _sweep_panels(angle: Any, panels: list[Any], title: str, height: float) -> Any:
+    """A figure of one panel per (values, axis label, panel title) of ``panels`` over the cage
+    ``angle`` [°], one line of the sweep's values in each, under ``title``."""
+    fig = _figure(7.0, height)
+    axes = fig.subplots(len(panels), 1, sharex=True)
+    for ax, (values, label, name) in zip(axes, panels, strict=True):
+        ax.plot(np.asarray(angle), values, marker=".")
+        ax.set_ylabel(label)
+        ax.set_title(name, fontsize="small", loc="left")
+        ax.grid(True, alpha=0.3)
+        ax.ticklabel_format(axis="y", useOffset=False)
+    axes[-1].set_xlabel("cage angle (ball 1 from the load line) [°]")
+    fig.suptitle(title, fontsize="medium")
     return fig
 
 

@@ -16,6 +16,7 @@ from typing import Any
 
 from bearingload.constants import KGF, ROLLER_EXPONENT
 from bearingload.lazy_dataclass import dataclass
+from bearingload.reports.render import Column
 
 
 @dataclass(frozen=True)
@@ -45,10 +46,6 @@ class Quantity:
     digits: int | None = 6
     display: tuple[str, float] | None = None
     also: tuple[str, float] | None = None
-
-    @property
-    def json_key(self) -> str:
-        return self.key
 
     def shown(self) -> tuple[str, float]:
         """(unit, factor) of the human formats."""
@@ -311,6 +308,35 @@ def quantity(key: str) -> Quantity:
         return QUANTITIES[key]
     except KeyError:
         raise KeyError(f"unknown quantity {key!r}; known: {', '.join(QUANTITIES)}") from None
+
+
+#: Quantities without a unit or digits that are numbers all the same (counts, a ball's number,
+#: a number as printed): set to the right as every number is; the other ones are text (left).
+COUNTS = frozenset(
+    "balls loaded_balls ball q_max_ball iterations row cases max_iterations nan warnings_raised "
+    "refused failures printed checked agree differ".split()
+)
+
+
+def column(
+    key: str,
+    exponent: float | None = None,
+    header: str | None = None,
+    *,
+    name: str | None = None,
+    shown: bool = False,
+) -> Column:
+    """The renderer column of quantity ``key``: its label (or ``header``), machine unit
+    (``N/mm^m`` with the ``exponent``) and digits, text to the left, numbers to the right;
+    ``name`` the rows' key (default ``key``); ``shown``: the human formats show the number in
+    the quantity's display unit (µm, %), csv and json keep the machine unit."""
+    q = QUANTITIES[key]
+    unit = q.unit.replace("^m", f"^{exponent:g}") if exponent is not None else q.unit
+    text = q.digits is None and q.unit == "" and key not in COUNTS
+    display = q.display if shown else None
+    return Column(
+        name or key, header or q.label, unit, q.digits, "left" if text else "right", display
+    )
 
 
 def units(keys: Iterable[str], exponent: float | None = None) -> dict[str, str]:

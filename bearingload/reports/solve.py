@@ -26,6 +26,7 @@ from bearingload.reports.quantities import (
     MATRIX_UNITS,
     QUANTITIES,
     SERVICE_KEYS,
+    column,
     element_words,
     for_elements,
     units,
@@ -135,19 +136,9 @@ def solve_document(
     return _document(cases, _records(cases, service), exponent, service)
 
 
-def _present(records: Sequence[dict[str, Any]], keys: Sequence[str]) -> list[str]:
+def present(records: Sequence[dict[str, Any]], keys: Sequence[str]) -> list[str]:
+    """The ``keys`` some record has a value of (not None), as the human summary shows them."""
     return [k for k in keys if any(r.get(k) is not None for r in records)]
-
-
-def column(key: str, exponent: float | None = None, header: str | None = None) -> Column:
-    """The renderer column of a quantity (machine unit: csv headers; the table shows it too)."""
-    q = QUANTITIES[key]
-    unit = q.unit.replace("^m", f"^{exponent:g}") if exponent is not None else q.unit
-    align = "left" if q.digits is None and q.unit == "" and key not in _COUNTS else "right"
-    return Column(key, header or q.label, unit, q.digits, align)
-
-
-_COUNTS = {"balls", "loaded_balls", "ball", "iterations", "row"}
 
 
 def given_keys(records: Sequence[dict[str, Any]], keys: Sequence[str]) -> list[str]:
@@ -158,25 +149,37 @@ def given_keys(records: Sequence[dict[str, Any]], keys: Sequence[str]) -> list[s
 def _case_table(records: Sequence[dict[str, Any]]) -> Table:
     keys = given_keys(records, INPUT_KEYS + REPORT_KEYS + ("valid",))
     exponent = records[0]["exponent"]
-    return Table("cases", [column(k, exponent) for k in keys], [_blank(r, keys) for r in records])
+    return Table("cases", [column(k, exponent) for k in keys], [blank(r, keys) for r in records])
 
 
-def _blank(record: dict[str, Any], keys: Sequence[str]) -> dict[str, Any]:
-    """A csv row: None as an empty cell."""
-    return {k: "" if record.get(k) is None else record[k] for k in keys}
+def blank(record: dict[str, Any], keys: Sequence[str] | None = None) -> dict[str, Any]:
+    """A csv row of ``record`` under ``keys`` (default its own): None as an empty cell."""
+    return {
+        k: "" if record.get(k) is None else record[k] for k in (record if keys is None else keys)
+    }
 
 
 def _per_ball_table(cases: Sequence[LoadedCase], records: Sequence[dict[str, Any]]) -> Table:
+    per = [[dict(zip(PER_BALL_KEYS[1:], ball, strict=True)) for ball in _balls(c)] for c in cases]
     inputs = given_keys(records, INPUT_KEYS)
-    rows = []
-    for c, r in zip(cases, records, strict=True):
-        for i, (a, d, q) in enumerate(_balls(c)):
-            rows.append(
-                _blank(r, inputs)
-                | {"ball": i + 1, "ball_angles": a, "ball_approaches": d, "ball_loads": q}
-            )
-    exponent = records[0]["exponent"]
-    return Table("balls", [column(k, exponent) for k in inputs + list(PER_BALL_KEYS)], rows)
+    return per_ball_table(records, inputs, per, PER_BALL_KEYS, records[0]["exponent"])
+
+
+def per_ball_table(
+    records: Sequence[dict[str, Any]],
+    inputs: Sequence[str],
+    per: Sequence[Sequence[dict[str, Any]]],
+    keys: Sequence[str],
+    exponent: float,
+) -> Table:
+    """The csv of solved cases with ``per_ball``: a row per ball (``per``: each case's balls'
+    values), each with its case's ``inputs`` (of its record) and its number, ``ball``."""
+    rows = [
+        blank(r, inputs) | {"ball": i + 1} | ball
+        for r, balls in zip(records, per, strict=True)
+        for i, ball in enumerate(balls)
+    ]
+    return Table("balls", [column(k, exponent) for k in (*inputs, *keys)], rows)
 
 
 def _balls(c: LoadedCase) -> list[tuple[float, float, float]]:
@@ -209,7 +212,7 @@ def _summary(
     records: Sequence[dict[str, Any]],
     extra_notes: Sequence[str] = (),
 ) -> Table:
-    keys = _present(records, REPORT_KEYS)
+    keys = present(records, REPORT_KEYS)
     if len({r["clearance"] for r in records}) > 1:
         keys.insert(0, "clearance")
     heads = ["value"] if len(records) == 1 else [_heading(r) for r in records]
@@ -366,27 +369,41 @@ def _set_note(b: Any) -> list[str]:
 
 def _balls_human(cases: Sequence[LoadedCase], records: Sequence[dict[str, Any]]) -> Table:
     exact = [(c, r) for c, r in zip(cases, records, strict=True) if c.result.method == "exact"]
-    per = [_balls(c) for c, _ in exact]
-    one = len(exact) == 1
+    per = [[{"angle": a, "approach": d * 1e3, "q": q} for a, d, q in _balls(c)] for c, _ in exact]
+    return balls_table(per, [_heading(r) for _, r in exact])
+
+
+#: The columns of :func:`balls_table`: key -> (header of one case, of several, unit).
+BALL_COLUMNS = {
+    "alpha": ("contact angle", "contact angle", "°"),
+    "approach": ("approach delta (< 0: gap)", "", "µm"),
+    "q": ("load Q", "Q", "N"),
+}
+
+
+def balls_table(
+    per: Sequence[Sequence[dict[str, Any]]], heads: Sequence[str], notes: Sequence[str] = ()
+) -> Table:
+    """The human table of every ball of solved cases, ``per`` each case's balls (``angle`` [°]
+    and the keys of :data:`BALL_COLUMNS`, as shown): one case all of them, several (headed by
+    ``heads``) their contact angles and loads side by side."""
+    one = len(per) == 1
+    keys = [k for k in BALL_COLUMNS if k in per[0][0] and (one or BALL_COLUMNS[k][1])]
     columns = [column("ball"), Column("angle", "angle", "°", 6)]
-    if one:
-        columns += [
-            Column("approach", "approach delta (< 0: gap)", "µm", 6),
-            Column("q", "load Q", "N", 6),
-        ]
-    else:
-        columns += [
-            Column(f"q{i}", f"Q at {_heading(r)}", "N", 6) for i, (_, r) in enumerate(exact)
-        ]
-    rows = []
-    for j, (angle, approach, load) in enumerate(per[0]):
-        row: dict[str, Any] = {"ball": j + 1, "angle": angle}
+    for k in keys:
+        header, several, unit = BALL_COLUMNS[k]
         if one:
-            row |= {"approach": approach * 1e3, "q": load}
+            columns.append(Column(k, header, unit, 6))
         else:
-            row |= {f"q{i}": balls[j][2] for i, balls in enumerate(per)}
-        rows.append(row)
-    return Table("Ball loads (ball 1 at the cage angle; angles from the load line)", columns, rows)
+            columns += [
+                Column(f"{k}{i}", f"{several} at {h}", unit, 6) for i, h in enumerate(heads)
+            ]
+    rows = []
+    for j, ball in enumerate(per[0]):
+        side = ball if one else {f"{k}{i}": b[j][k] for k in keys for i, b in enumerate(per)}
+        rows.append({"ball": j + 1, "angle": ball["angle"]} | side)
+    title = "Ball loads (ball 1 at the cage angle; angles from the load line)"
+    return Table(title, columns, rows, notes)
 
 
 def _matrix_units(keys: Sequence[str]) -> dict[str, str]:

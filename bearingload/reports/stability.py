@@ -7,23 +7,13 @@ from __future__ import annotations
 from types import ModuleType
 from typing import Any
 
-from bearingload.reports.quantities import QUANTITIES
-from bearingload.reports.render import Column, Table, table_document
-
-#: Counts: no unit and no digits, but numbers, set to the right.
-_COUNTS = ("cases", "max_iterations", "nan", "warnings_raised", "refused", "failures")
-
-
-def _column(key: str) -> Column:
-    """The renderer column of a registered quantity (:mod:`bearingload.reports.quantities`)."""
-    q = QUANTITIES[key]
-    text = q.unit == "" and q.digits is None and key not in _COUNTS
-    return Column(key, q.label, q.unit, q.digits, "left" if text else "right")
+from bearingload.reports.quantities import column
+from bearingload.reports.render import Table, table_document
 
 
 def stability_table(study: ModuleType, rows: list[dict[str, Any]]) -> Table:
     """The summary of ``study``'s families, one row per family."""
-    return Table(study.TITLE, tuple(_column(k) for k in study.KEYS), rows, study.NOTES)
+    return Table(study.TITLE, tuple(column(k) for k in study.KEYS), rows, study.NOTES)
 
 
 def stability_document(tables: dict[str, Table]) -> dict[str, Any]:

@@ -10,10 +10,17 @@ from __future__ import annotations
 from dataclasses import asdict
 from typing import Any
 
-from bearingload.reports.quantities import MATRIX_UNITS, QUANTITIES, for_elements, units
+from bearingload.reports.quantities import (
+    MATRIX_UNITS,
+    QUANTITIES,
+    column,
+    for_elements,
+    units,
+)
 from bearingload.reports.render import Column, Table, render
+from bearingload.reports.solve import blank
 from bearingload.studies.matrix import radial_matrix
-from bearingload.studies.sweep import CageSweep
+from bearingload.studies.sweep import CageSweep, one_ball_findings
 from bearingload.units import KGF
 
 #: Quantities summarised over the sweep (min, mean, max, peak-to-peak).
@@ -102,19 +109,19 @@ def inputs_text(s: CageSweep) -> str:
 
 def _spread_table(s: CageSweep, context: str) -> Table:
     keys = [*SPREADS, *(k for k, _ in _life_rows(s))]
-    entries = [(QUANTITIES[key], s.spread(key), QUANTITIES[key].shown()) for key in keys]
+    entries = [(QUANTITIES[k].label, s.spread(k), QUANTITIES[k].shown()) for k in keys]
     notes = ["mean: over one period (the last position, equal to the first, left out).",
              *_life_notes(s)]  # fmt: skip
     return spread_table(f"Over one ball pitch ({inputs_text(s)})", entries, notes, context)
 
 
 def spread_table(title: str, entries: Any, notes: list[str], context: str) -> Table:
-    """The min/mean/max/peak-to-peak table of a sweep: ``entries`` are (quantity, spread,
+    """The min/mean/max/peak-to-peak table of a sweep: ``entries`` are (label, spread,
     (unit, factor)) rows; ``context`` (if any) is the last note."""
     rows = [
-        {"quantity": q.label, "min": sp.min * factor, "mean": sp.mean * factor,
+        {"quantity": label, "min": sp.min * factor, "mean": sp.mean * factor,
          "max": sp.max * factor, "ptp": sp.peak_to_peak * factor, "unit": unit or ""}
-        for q, sp, (unit, factor) in entries
+        for label, sp, (unit, factor) in entries
     ]  # fmt: skip
     return Table(
         title=title,
@@ -132,30 +139,12 @@ def spread_table(title: str, entries: Any, notes: list[str], context: str) -> Ta
 
 
 def _figures_table(s: CageSweep) -> Table:
-    ripple = QUANTITIES["ripple_per_cage_revolution"]
     comp = QUANTITIES["compensating_clearance"]
-    unit, factor = comp.shown()
-    rows: list[dict[str, Any]] = [
-        {"quantity": f"{ripple.label} (periods per cage revolution)", "value": s.ripple_order,
-         "unit": ripple.unit},
-    ]  # fmt: skip
-    values: list[float | None] = [*s.compensating_clearance] or [None]
-    for g in values:
-        rows.append(
-            {
-                "quantity": comp.label,
-                "value": "none" if g is None else g * factor,
-                "unit": "" if g is None else unit,
-            }
-        )
-    for key, value in _fixed_lives(s).items():
-        q = QUANTITIES[key]
-        shown_unit, shown_factor = q.shown()
-        rows.append({"quantity": q.label, "unit": shown_unit,
-                     "value": "-" if value is None else value * shown_factor})  # fmt: skip
+    clearances = value_rows(("compensating_clearance", g) for g in s.compensating_clearance)
+    none = {"quantity": comp.label, "value": "none", "unit": ""}
     return value_table(
         "Ripple, and the lives the cage does not change" if _fixed_lives(s) else "Ripple",
-        rows,
+        [ripple_row(s.ripple_order), *(clearances or [none]), *value_rows(_fixed_lives(s).items())],
         [
             "compensating clearance: every G_r at which the ring sits at the same x with a ball "
             "under the load and with the load between two balls (no kinematic excitation; "
@@ -163,6 +152,24 @@ def _figures_table(s: CageSweep) -> Table:
             "smallest positive one."
         ],
     )
+
+
+def ripple_row(order: int) -> dict[str, Any]:
+    """The row of :func:`value_table` of a sweep's ripple order (periods per cage revolution)."""
+    ripple = QUANTITIES["ripple_per_cage_revolution"]
+    label = f"{ripple.label} (periods per cage revolution)"
+    return {"quantity": label, "value": order, "unit": ripple.unit}
+
+
+def value_rows(values: Any) -> list[dict[str, Any]]:
+    """Rows of :func:`value_table` of (quantity key, value in its machine unit) pairs: the
+    label, the value in the display unit ('-' where none), the unit."""
+    rows = []
+    for key, value in values:
+        unit, factor = QUANTITIES[key].shown()
+        shown = "-" if value is None else value * factor
+        rows.append({"quantity": QUANTITIES[key].label, "value": shown, "unit": unit})
+    return rows
 
 
 def value_table(title: str, rows: list[dict[str, Any]], notes: list[str]) -> Table:
@@ -181,30 +188,17 @@ def value_table(title: str, rows: list[dict[str, Any]], notes: list[str]) -> Tab
 
 def _rows_table(s: CageSweep) -> Table:
     return positions_table(
-        [*ROW_KEYS, *_life_rows(s)],
+        [column(k, header=h, shown=True) for k, h in [*ROW_KEYS, *_life_rows(s)]],
         _flat_rows(s),
         ["ball: the ball carrying Q_max (of two equal, the lower number)."],
     )
 
 
-def positions_table(keys: Any, rows: list[dict[str, Any]], notes: list[str]) -> Table:
-    """The per-position table of a sweep: ``keys`` are (quantity key, column header) pairs, the
-    floats of ``rows`` shown in each quantity's display unit."""
-    columns = []
-    factors = {}
-    for key, header in keys:
-        q = QUANTITIES[key]
-        unit, factors[key] = q.shown()
-        columns.append(Column(key, header, unit, q.digits))
-    shown = [
-        {k: v * factors[k] if isinstance(v, float) else v for k, v in row.items()} for row in rows
-    ]
-    return Table(
-        title="Per cage position (ball 1 at the cage angle; angles from the load line)",
-        columns=columns,
-        rows=shown,
-        notes=notes,
-    )
+def positions_table(columns: list[Column], rows: list[dict[str, Any]], notes: list[str]) -> Table:
+    """The per-position table of a sweep: ``columns`` of :func:`bearingload.reports.quantities.
+    column` (``shown``), ``rows`` in machine units."""
+    title = "Per cage position (ball 1 at the cage angle; angles from the load line)"
+    return Table(title, columns, rows, notes)
 
 
 def _flat_rows(s: CageSweep) -> list[dict[str, Any]]:
@@ -222,15 +216,11 @@ def _flat_rows(s: CageSweep) -> list[dict[str, Any]]:
 
 
 def _csv_table(s: CageSweep) -> Table:
-    fixed = {k: "" if v is None else v for k, v in _fixed_lives(s).items()}
+    fixed = blank(_fixed_lives(s))
     keys = [*INPUT_KEYS, *(k for k, _ in [*ROW_KEYS, *_life_rows(s)]), *fixed]
-    columns = []
-    for key in keys:
-        q = QUANTITIES[key]
-        unit = q.unit.replace("^m", f"^{s.exponent:g}")
-        columns.append(Column(key, q.label, unit, q.digits))
     inputs = {k: getattr(s, k) for k in INPUT_KEYS}
-    return Table(title="sweep", columns=columns, rows=[inputs | r | fixed for r in _flat_rows(s)])
+    rows = [inputs | r | fixed for r in _flat_rows(s)]
+    return Table("sweep", [column(k, s.exponent) for k in keys], rows)
 
 
 def _json_rows(s: CageSweep) -> list[dict[str, Any]]:
@@ -253,11 +243,7 @@ def _json_rows(s: CageSweep) -> list[dict[str, Any]]:
 
 def sweep_json(s: CageSweep) -> dict[str, Any]:
     """The JSON document of a sweep: inputs, ``rows``, ``summary`` and ``units``."""
-    summary: dict[str, Any] = {}
-    for key in [*SPREADS, *(k for k, _ in _life_rows(s))]:
-        sp = s.spread(key)
-        summary[key] = asdict(sp)  # min, mean, max, peak_to_peak
-    summary["ripple_per_cage_revolution"] = s.ripple_order
+    summary = spreads(s, [*SPREADS, *(k for k, _ in _life_rows(s))])
     summary["compensating_clearance"] = list(s.compensating_clearance)
     summary |= _fixed_lives(s)
     rows = _json_rows(s)
@@ -272,18 +258,13 @@ def sweep_json(s: CageSweep) -> dict[str, Any]:
     } | static_at_speed(s.speed, s.exponent == 1.5)
 
 
+def spreads(s: Any, keys: Any) -> dict[str, Any]:
+    """The json ``summary`` of a sweep ``s``: min, mean, max and peak_to_peak of each of
+    ``keys``, then the ripple order."""
+    return {k: asdict(s.spread(k)) for k in keys} | {"ripple_per_cage_revolution": s.ripple_order}
+
+
 def sweep_warnings(s: CageSweep) -> list[str]:
     """The checks of ``solve`` over the pitch: those on the bearing (``s.warnings``), then the
     one that needs no bearing data, one loaded ball, with the cage angles where it holds."""
-    import numpy as np
-
-    one = np.asarray(s.loaded_balls) == 1
-    if not one.any() or int(s.balls) <= 1:
-        return list(s.warnings)
-    angles = np.asarray(s.cage_angle)[one]
-    return [
-        *s.warnings,
-        f"only one ball carries the load at {one.sum()} of {one.size} cage angles "
-        f"({angles.min():.6g}° to {angles.max():.6g}°): the result hangs on a single contact "
-        "(large clearance or few elements); check the clearance",
-    ]
+    return [*s.warnings, *one_ball_findings(s.loaded_balls, s.cage_angle)]

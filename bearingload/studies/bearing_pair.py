@@ -125,57 +125,17 @@ def solve_bearing_pairs(
     (:func:`bearingload.models.pair_speed.solve_pair_high_speed`). One :class:`PairCase` per
     case, flat. ``preload`` a class: every case at the force of the bearing's table, which the
     cases' ``preload_class`` and the bearing's sources name."""
-    setting = None
-    if isinstance(preload, str):  # a class: the force of the bearing's table, with its source
-        from bearingload.bearings.preload import resolve_preload
-
-        _check_pair_bearing(b)
-        setting = resolve_preload(preload, b)
-        preload = setting.force
-        b = dataclasses.replace(b, sources=(*b.sources, f"preload: {setting.source}"))
-    cases = _solve_pairs(
-        b,
-        load,
-        axial_load,
-        arrangement=arrangement,
-        preload=preload,
-        width=width,
-        cage_angle=cage_angle,
-        moment=moment,
-        moment_cross=moment_cross,
-        tilt_radius=tilt_radius,
-        rotating=rotating,
-        dynamic_rating=dynamic_rating,
-        speed=speed,
-        ball_density=ball_density,
-    )
-    if setting is None:
-        return cases
-    return [dataclasses.replace(c, preload_class=setting) for c in cases]
-
-
-def _solve_pairs(
-    b: ResolvedBearing,
-    load: Any,
-    axial_load: Any,
-    *,
-    arrangement: str,
-    preload: Any,
-    width: float | None,
-    cage_angle: Any,
-    moment: Any,
-    moment_cross: Any,
-    tilt_radius: Any,
-    rotating: str,
-    dynamic_rating: float | None,
-    speed: Any,
-    ball_density: Any,
-) -> list[PairCase]:
-    """:func:`solve_bearing_pairs` with the preload a force [N]."""
     from bearingload.bearings.tilt import tilt_lever
     from bearingload.models.pair import solve_pair
 
     _check_pair_bearing(b)
+    setting = None
+    if isinstance(preload, str):  # a class: the force of the bearing's table, with its source
+        from bearingload.bearings.preload import resolve_preload
+
+        setting = resolve_preload(preload, b)
+        preload = setting.force
+        b = dataclasses.replace(b, sources=(*b.sources, f"preload: {setting.source}"))
     lever = tilt_lever(tilt_radius, b.pitch_diameter)
     common: dict[str, Any] = dict(
         arrangement=arrangement, preload=preload,
@@ -192,13 +152,17 @@ def _solve_pairs(
         r = solve_pair(b.balls, load, axial_load, **common,
                        stiffness=b.stiffness if b.stiffness_given else None)  # fmt: skip
     n = int(np.size(r.x))
-    if np.ndim(r.x) == 0:  # one case
-        return [_pair_case(b, r, _singles(b, r, lever, rotating, dynamic_rating), rotating)]
     every = _singles(b, r, lever, rotating, dynamic_rating)  # on the arrays, once
-    return [
-        _pair_case(b, _case_at(r, i, n), [_single_at(c, i, n) for c in every], rotating)
-        for i in range(n)
-    ]
+    if np.ndim(r.x) == 0:  # one case
+        cases = [_pair_case(b, r, every, rotating)]
+    else:
+        cases = [
+            _pair_case(b, _case_at(r, i, n), [_single_at(c, i, n) for c in every], rotating)
+            for i in range(n)
+        ]
+    if setting is None:
+        return cases
+    return [dataclasses.replace(c, preload_class=setting) for c in cases]
 
 
 def _singles(
@@ -272,19 +236,11 @@ def _pair_at_speed(
 ) -> PairDistribution:  # fmt: skip
     """solve_bearing_pair with the ball dynamics (:func:`bearingload.models.pair_speed.
     solve_pair_high_speed`): the inner rings turning, each contact's Hertz stiffness."""
-    from bearingload.models.high_speed import STEEL_DENSITY
     from bearingload.models.pair_speed import solve_pair_high_speed
+    from bearingload.studies.combined_bearing import dynamics_density, refuse_outer_at_speed
 
-    if rotating == "outer":
-        raise InputError("rotating", "the ball dynamics at a speed are coded for the inner ring "
-                         "turning (docs/speed.md); the outer ring's lives are those of the "
-                         "static model (speed None)")  # fmt: skip
-    if b.stiffness_given:
-        raise InputError("speed", "the ball dynamics need each contact's Hertz stiffness from the "
-                         "ball geometry, not a given ball stiffness: leave out the stiffness, or "
-                         "ask for the static model (speed None)")  # fmt: skip
-    if density is None:  # the balls' material (a hybrid's silicon nitride), else steel
-        density = STEEL_DENSITY if b.ball_density is None else b.ball_density
+    refuse_outer_at_speed(speed, rotating)
+    density = dynamics_density(b, density)
     return solve_pair_high_speed(b.balls, load, axial_load, speed=speed, ball_density=density,
                                  **common)  # fmt: skip
 

@@ -107,10 +107,7 @@ def solve_combined_bearing(
     """
     from bearingload.bearings.tilt import tilt_lever
 
-    if speed is not None and rotating == "outer":
-        raise InputError("rotating", "the ball dynamics at a speed are coded for the inner ring "
-                         "turning (docs/speed.md); the outer ring's lives are those of the "
-                         "static model (speed None)")  # fmt: skip
+    refuse_outer_at_speed(speed, rotating)
     out = []
     for b in bearings:
         lever = (tilt_radius if isinstance(tilt_radius, np.ndarray)
@@ -167,30 +164,27 @@ def combined_case(
     p0 = [static_equivalent_load(f, a) if b.contact_angle is None
           else static_equivalent_load_angular(f, a, b.contact_angle)
           for f, a in zip(fr, fa, strict=True)]  # fmt: skip
-    checks = tuple(tuple(combined_warnings(b, fr[i], fa[i], q[i], int(loaded[i]), warned[i], inner[i]))
-                   for i in range(len(q)))  # fmt: skip
     s0 = [None if p is None else static_safety(b.C0, p) for p in p0]
     # each case's own lever (a batch gives one per row; None for groove and pitch)
     levers = [None] * len(q) if lever is None else each(lever)
     said = [lever_warning(x, b.pitch_diameter) for x in levers]
-    checks = tuple(c + (w,) if w else c for c, w in zip(checks, said, strict=True))
     sides = groove_side_warnings(r, len(q))
-    checks = tuple(c + (w,) if w else c for c, w in zip(checks, sides, strict=True))
-    flat = np.reshape(r.tilt_undetermined, -1)
-    checks = tuple(c + (TILT_UNDETERMINED,) if f else c for c, f in zip(checks, flat, strict=True))
-    loose = getattr(r, "displacement_undetermined", None)
-    if loose is not None:
-        flat = np.reshape(loose, -1)
-        checks = tuple(
-            c + (POSITION_UNDETERMINED,) if f else c for c, f in zip(checks, flat, strict=True)
-        )
-    left = getattr(r, "thrust_neglected", None)
-    if left is not None:
-        flat = np.reshape(left, -1)
-        checks = tuple(
-            c + (thrust_neglected_warning(fa[i], fr[i]),) if flat[i] else c
-            for i, c in enumerate(checks)
-        )
+
+    def flags(name: str) -> list[bool]:  # the solver's flag of each case (none: all False)
+        given = getattr(r, name, None)
+        return [False] * len(q) if given is None else np.reshape(given, -1).tolist()
+
+    undetermined = ("tilt_undetermined", "displacement_undetermined", "thrust_neglected")
+    tilt_free, loose, left = (flags(name) for name in undetermined)
+    per_case = []
+    for i in range(len(q)):
+        got = combined_warnings(b, fr[i], fa[i], q[i], int(loaded[i]), warned[i], inner[i])
+        got += [w for w in (said[i], sides[i]) if w]
+        got += [TILT_UNDETERMINED] if tilt_free[i] else []
+        got += [POSITION_UNDETERMINED] if loose[i] else []
+        got += [thrust_neglected_warning(fa[i], fr[i])] if left[i] else []
+        per_case.append(tuple(got))
+    checks = tuple(per_case)
     if shape == ():
         p_eq = None if p_eq is None else float(p_eq)
         life = None if life is None or np.isnan(life) else float(life)
@@ -262,9 +256,9 @@ def warned_tilt(r: CombinedDistribution) -> Any:
     """The tilt the checks weigh (:func:`bearingload.bearings.checks.combined_warnings`), the
     one rule of every command: the inner ring's tilt, both axes together, whatever gives it
     (a moment, an imposed misalignment, or a ring free to tilt under an eccentric load: the
-    tilt is the same with --moment 0 as without a moment). Each case's (an array of cases: an
-    array). [°]"""
-    return ring_tilt(r)
+    tilt is the same with --moment 0 as without a moment): its size, both axes together, of
+    each case (an array of cases: an array). [°]"""
+    return np.degrees(np.hypot(np.radians(r.tilt), np.radians(r.tilt_cross)))
 
 
 def check_misalignment(misalignment: Any) -> None:
@@ -280,11 +274,6 @@ def check_misalignment(misalignment: Any) -> None:
             "bearing tolerates 2-10 arcmin, and a tilt of degrees would push the balls over the "
             "groove shoulders, which the model does not describe",
         )
-
-
-def ring_tilt(r: CombinedDistribution) -> Any:
-    """Size of the inner ring's tilt, both axes together, of every case. [°]"""
-    return np.degrees(np.hypot(np.radians(r.tilt), np.radians(r.tilt_cross)))
 
 
 def solve_on_bearing(
@@ -373,7 +362,7 @@ def solve_on_bearing(
         r = solve_combined(b.balls, load, axial_load, stiffness=stiffness, **common)
     else:
         r = _at_speed(b, load, axial_load, speed, ball_density, common)
-    tilt = float(np.max(ring_tilt(r)))
+    tilt = float(np.max(warned_tilt(r)))
     cross = moment_cross is not None and bool(np.any(np.asarray(moment_cross) != 0))
     tilted = "moment" if moment is not None and misalignment is None else None
     if tilted is None and cross:
@@ -394,7 +383,27 @@ def _at_speed(
 ) -> CombinedDistribution:
     """solve_on_bearing with the ball dynamics (:func:`bearingload.models.high_speed.
     solve_high_speed`): the two contacts need the Hertz stiffness of the ball geometry."""
-    from bearingload.models.high_speed import STEEL_DENSITY, solve_high_speed
+    from bearingload.models.high_speed import solve_high_speed
+
+    density = dynamics_density(b, density)
+    return solve_high_speed(b.balls, load, axial_load, speed=speed, ball_density=density,
+                            **common)  # fmt: skip
+
+
+def refuse_outer_at_speed(speed: Any, rotating: str) -> None:
+    """Refuse the outer ring turning at a ``speed``: the ball dynamics are coded for the inner
+    ring turning (the outer ring's lives are those of the static model)."""
+    if speed is not None and rotating == "outer":
+        raise InputError("rotating", "the ball dynamics at a speed are coded for the inner ring "
+                         "turning (docs/speed.md); the outer ring's lives are those of the "
+                         "static model (speed None)")  # fmt: skip
+
+
+def dynamics_density(b: ResolvedBearing, density: Any) -> Any:
+    """The ball density [kg/m^3] of the ball dynamics of ``b``: ``density`` if given, else that
+    of the balls' material (a hybrid's silicon nitride), else steel; refused for a given ball
+    stiffness (the dynamics need each contact's Hertz stiffness from the ball geometry)."""
+    from bearingload.models.high_speed import STEEL_DENSITY
 
     if b.stiffness_given:
         raise InputError(
@@ -403,10 +412,9 @@ def _at_speed(
             "given ball stiffness: leave out the stiffness, or ask for the static model "
             "(speed None)",
         )
-    if density is None:  # the balls' material (a hybrid's silicon nitride), else steel
-        density = STEEL_DENSITY if b.ball_density is None else b.ball_density
-    return solve_high_speed(b.balls, load, axial_load, speed=speed, ball_density=density,
-                            **common)  # fmt: skip
+    if density is not None:
+        return density
+    return STEEL_DENSITY if b.ball_density is None else b.ball_density
 
 
 def life_figures(

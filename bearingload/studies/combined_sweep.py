@@ -23,7 +23,16 @@ from bearingload.bearings.resolve import ResolvedBearing
 from bearingload.errors import InputError
 from bearingload.lazy_dataclass import dataclass
 from bearingload.models.combined import CombinedDistribution
-from bearingload.studies.sweep import DEFAULT_STEPS, Spread, cage_angles, hours_at, spread_of
+from bearingload.studies.sweep import (
+    DEFAULT_STEPS,
+    Spread,
+    at_cage_angles,
+    cage_angles,
+    cage_chunks,
+    family_spread,
+    hours_at,
+    one_ball_findings,
+)
 
 #: Per-position quantities a combined sweep summarises, keys of reports.quantities.
 SPREAD_KEYS = (
@@ -113,23 +122,14 @@ class CombinedSweep:
 
     def values(self, key: str) -> np.ndarray | None:
         """The per-position values of ``key`` (one of :data:`SPREAD_KEYS`), None if not given."""
-        r = self.result
-        table = {
-            "x": r.x,
-            "y": r.y,
-            "axial": r.axial,
-            "tilt": r.tilt,
-            "tilt_cross": r.tilt_cross,
-            "moment": r.moment,
-            "q_max": r.q_max,
-            "loaded_balls": r.loaded_balls,
-            "contact_angle_max": self.contact_angle_max,
-            "reference_rating_life": self.reference_rating_life,
-            "reference_rating_life_hours": self.hours(self.reference_rating_life),
-        }
-        if key not in table:
+        if key not in SPREAD_KEYS:
             raise InputError("name", f"must be one of {', '.join(SPREAD_KEYS)}")
-        v = table[key]
+        if key == "reference_rating_life_hours":
+            v = self.hours(self.reference_rating_life)
+        elif key in ("contact_angle_max", "reference_rating_life"):
+            v = getattr(self, key)
+        else:  # the solver's
+            v = getattr(self.result, key)
         return None if v is None else np.asarray(v)
 
     def hours(self, life: Any) -> Any:
@@ -142,16 +142,7 @@ class CombinedSweep:
         A mean of a displacement (tilt) below 1e-12 of the largest displacement (tilt) of any
         axis is the solver's rounding noise and is 0 (y and the cross tilt are odd in the cage
         angle)."""
-        v = self.values(key)
-        if v is None:
-            return None
-        family = next((f for f in _FAMILIES if key in f), (key,))
-        scale = max(float(np.max(np.abs(np.asarray(self.values(k))))) for k in family)
-        return spread_of(v, scale)
-
-
-#: Quantities whose rounding noise is measured against the largest of their family.
-_FAMILIES = (("x", "y", "axial"), ("tilt", "tilt_cross"))
+        return family_spread(self.values, key)
 
 
 def combined_sweep(
@@ -231,7 +222,6 @@ def combined_sweep(
     )
 
     angles = cage_angles(int(bearing.balls), steps)
-    chunk = max(1, CHUNK_BALLS // int(bearing.balls))
     lever = tilt_lever(tilt_radius, bearing.pitch_diameter)
     r = _joined(
         [
@@ -239,7 +229,7 @@ def combined_sweep(
                 bearing,
                 load,
                 axial_load,
-                cage_angle=angles[i : i + chunk],
+                cage_angle=part,
                 moment=moment,
                 misalignment=misalignment,
                 moment_cross=moment_cross,
@@ -247,7 +237,7 @@ def combined_sweep(
                 speed=speed,
                 ball_density=ball_density,
             )  # fmt: skip
-            for i in range(0, angles.size, chunk)
+            for part in cage_chunks(angles, int(bearing.balls), CHUNK_BALLS)
         ]
     )
     l10r, p_eq, life, c_r = life_figures(bearing, r, rotating, dynamic_rating)
@@ -256,14 +246,7 @@ def combined_sweep(
     heaviest = np.argmax(loads >= top * (1.0 - TIE), axis=1) + 1
     tilt = float(np.max(warned_tilt(r)))
     found = combined_warnings(bearing, load, axial_load, float(np.max(r.q_max)), 2, tilt)
-    found += _groove_side(r, angles)
-    one = np.asarray(r.loaded_balls) == 1
-    if one.any() and bearing.balls > 1:
-        found.append(
-            f"only one ball carries the load at {one.sum()} of {one.size} cage angles "
-            f"({angles[one].min():.6g}° to {angles[one].max():.6g}°): the result hangs on a "
-            "single contact (large clearance or few elements); check the clearance"
-        )
+    found += _groove_side(r, angles) + one_ball_findings(r.loaded_balls, angles)
     return CombinedSweep(
         bearing=bearing,
         result=r,
@@ -286,14 +269,21 @@ def _groove_side(r: CombinedDistribution, angles: np.ndarray) -> list[str]:
     """At a speed, solve's warning on balls whose loaded inner contact sits at 90° (the
     groove's side: :func:`bearingload.studies.combined_bearing.groove_side_warnings`), once,
     with the cage angles where it holds. [°]"""
-    from bearingload.studies.combined_bearing import GROOVE_SIDE_WHY, groove_side_warnings
+    from bearingload.studies.combined_bearing import groove_side_warnings
 
     at = [i for i, w in enumerate(groove_side_warnings(r, angles.size)) if w is not None]
     if not at:
         return []
-    return [f"at {len(at)} of {angles.size} cage angles ({angles[at].min():.6g}° to "
-            f"{angles[at].max():.6g}°) the loaded inner contact of a ball sits at 90°"
-            f"{GROOVE_SIDE_WHY}"]  # fmt: skip
+    return [groove_side_finding(angles[at], angles.size)]
+
+
+def groove_side_finding(where: Any, steps: int) -> str:
+    """solve's warning on balls whose loaded inner contact sits at 90° over a sweep, once:
+    ``where`` the cage angles [°] of ``steps`` where it holds."""
+    from bearingload.studies.combined_bearing import GROOVE_SIDE_WHY
+
+    where_text = at_cage_angles(where, steps)
+    return f"{where_text} the loaded inner contact of a ball sits at 90°{GROOVE_SIDE_WHY}"
 
 
 def _joined(parts: Sequence[CombinedDistribution]) -> CombinedDistribution:

@@ -31,10 +31,6 @@ RESOLUTION = 1e-13
 TAYLOR_ORDER = 3
 
 
-def _difference(clearance: float, z: int, f: float, k: float, m: float) -> float:
-    return float(position_difference(z, f, k, clearance, m))
-
-
 def position_difference(
     balls: Any, load: Any, stiffness: Any, clearance: Any, exponent: Any = 1.5
 ) -> Any:

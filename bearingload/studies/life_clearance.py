@@ -222,14 +222,12 @@ def life_against_clearance(
     from bearingload.studies.combined_bearing import (
         largest_loaded_angle,
         life_figures,
+        refuse_outer_at_speed,
         solve_on_bearing,
         warned_tilt,
     )
 
-    if speed is not None and rotating == "outer":
-        raise InputError("rotating", "the ball dynamics at a speed are coded for the inner ring "
-                         "turning (docs/speed.md); the outer ring's lives are those of the "
-                         "static model (speed None)")  # fmt: skip
+    refuse_outer_at_speed(speed, rotating)
     if not (dynamic_rating or bearing.C):
         raise InputError(
             "dynamic_rating",

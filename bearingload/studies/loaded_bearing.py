@@ -207,16 +207,25 @@ def collect_warnings(cases: Sequence[LoadedCase]) -> list[str]:
     A warning every case shares is given as it is; one that only some cases carry is prefixed
     with the case's method and clearance pick (``"palmgren, G_r max: ..."``).
     """
-    seen: list[str] = []
     methods = len({c.result.method for c in cases}) > 1
     picks = len({c.clearance_pick for c in cases}) > 1
-    for c in cases:
-        for w in c.warnings:
-            if not all(w in other.warnings for other in cases):
-                parts = ([c.result.method] if methods else []) + (
-                    [f"G_r {c.clearance_pick}"] if picks else []
-                )
-                w = f"{', '.join(parts)}: {w}"
+    labels = [
+        ", ".join(
+            ([c.result.method] if methods else []) + ([f"G_r {c.clearance_pick}"] if picks else [])
+        )
+        for c in cases
+    ]
+    return labelled_warnings([c.warnings for c in cases], labels)
+
+
+def labelled_warnings(found: Sequence[Sequence[str]], labels: Sequence[str]) -> list[str]:
+    """The warnings ``found`` of several cases, each once, in order: one that only some cases
+    carry is prefixed with its case's label (where it has one), ``"G_r max: ..."``."""
+    seen: list[str] = []
+    for own, label in zip(found, labels, strict=True):
+        for w in own:
+            if label and not all(w in other for other in found):
+                w = f"{label}: {w}"
             if w not in seen:
                 seen.append(w)
     return seen

@@ -19,7 +19,14 @@ import numpy as np
 from bearingload.bearings.resolve import ResolvedBearing
 from bearingload.lazy_dataclass import dataclass
 from bearingload.studies.bearing_pair import PairCase
-from bearingload.studies.sweep import DEFAULT_STEPS, Spread, cage_angles, hours_at, spread_of
+from bearingload.studies.sweep import (
+    DEFAULT_STEPS,
+    Spread,
+    cage_angles,
+    cage_chunks,
+    family_spread,
+    hours_at,
+)
 
 #: The pair's per-position quantities a pair sweep summarises (keys of reports.quantities).
 PAIR_KEYS = ("x", "y", "axial", "tilt", "tilt_cross", "stiffness_radial", "stiffness_axial",
@@ -28,8 +35,6 @@ PAIR_KEYS = ("x", "y", "axial", "tilt", "tilt_cross", "stiffness_radial", "stiff
 BEARING_KEYS = ("q_max", "loaded_balls")
 #: Cage positions times balls solved per call (as a batch of pairs). [-]
 CHUNK_BALLS = 2**14
-#: Quantities whose rounding noise is measured against the largest of their family.
-_FAMILIES = (("x", "y", "axial"), ("tilt", "tilt_cross"))
 
 
 @dataclass(frozen=True)
@@ -92,12 +97,7 @@ class PairSweep:
         """Min, mean, max and peak-to-peak of ``key`` over the pitch (None if not given); a
         mean of a displacement (tilt) below 1e-12 of the largest of any axis is 0, as for one
         bearing's sweep."""
-        v = self.values(key, bearing)
-        if v is None:
-            return None
-        family = next((f for f in _FAMILIES if key in f), (key,))
-        scale = max(float(np.max(np.abs(self.values(k, bearing)))) for k in family)  # type: ignore[arg-type]
-        return spread_of(v, scale)
+        return family_spread(lambda k: self.values(k, bearing), key)
 
 
 def pair_sweep(
@@ -133,10 +133,8 @@ def pair_sweep(
     from bearingload.studies.bearing_pair import solve_bearing_pairs
 
     angles = cage_angles(int(bearing.balls), steps)
-    chunk = max(1, CHUNK_BALLS // int(bearing.balls))
     cases: list[PairCase] = []
-    for i in range(0, angles.size, chunk):
-        part = angles[i : i + chunk]
+    for part in cage_chunks(angles, int(bearing.balls), CHUNK_BALLS):
         cases += solve_bearing_pairs(
             bearing, np.full(part.shape, float(load)), np.full(part.shape, float(axial_load)),
             arrangement=arrangement, preload=preload, width=width, cage_angle=part,
@@ -151,7 +149,8 @@ def _findings(cases: list[PairCase], angles: np.ndarray) -> list[str]:
     """The findings of every position, each once, in order; the warning on balls whose loaded
     inner contact sits at 90° (it names the balls of one position) once per bearing, with the
     cage angles where it holds, as one bearing's sweep gives it. [°]"""
-    from bearingload.studies.combined_bearing import GROOVE_SIDE, GROOVE_SIDE_WHY
+    from bearingload.studies.combined_bearing import GROOVE_SIDE
+    from bearingload.studies.combined_sweep import groove_side_finding
 
     found: list[str] = []
     at: dict[str, list[float]] = {}
@@ -162,7 +161,5 @@ def _findings(cases: list[PairCase], angles: np.ndarray) -> list[str]:
             elif w not in found:
                 found.append(w)
     for who, where in sorted(at.items()):
-        found.append(f"{who}: at {len(where)} of {len(cases)} cage angles ({min(where):.6g}° to "
-                     f"{max(where):.6g}°) the loaded inner contact of a ball sits at 90°"
-                     f"{GROOVE_SIDE_WHY}")  # fmt: skip
+        found.append(f"{who}: {groove_side_finding(where, len(cases))}")
     return found

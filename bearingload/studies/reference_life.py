@@ -79,17 +79,27 @@ def all_ball_loads(model: Any) -> np.ndarray:
     """Loads Q_i [N] of balls 1..z (ball 1 at the cage angle) of every case of the exact
     model's result (one z), one row per case, as
     :attr:`bearingload.models.equilibrium.LoadDistribution.ball_loads` gives them one by one."""
+    delta = all_ball_approaches(model)
+    return _per_case(model, "stiffness") * np.maximum(delta, 0.0) ** _per_case(model, "exponent")
+
+
+def all_ball_approaches(model: Any) -> np.ndarray:
+    """Approach [mm] of balls 1..z of every case of the exact model's result, one row per case:
+    the engine's own :func:`bearingload.models.equilibrium.ball_approaches` (from the reference
+    position, so that a clearance much larger than the elastic approach costs no digits; under
+    preload from the centred ring, every ball pressed by -G_r/2 plus the ring's displacement)."""
     from bearingload.models.equilibrium import ball_approaches
 
     n = int(np.size(model.x))
-
-    def at(name: str) -> np.ndarray:
-        return np.broadcast_to(getattr(model, name), np.shape(model.x)).reshape(n)[:, None]
-
     z = int(np.asarray(model.balls).reshape(-1)[0])
-    reference = np.broadcast_to(model.reference, (*np.shape(model.x), 2)).reshape(n, 2)
-    offset = np.broadcast_to(model.offset, (*np.shape(model.x), 2)).reshape(n, 2)
-    delta = ball_approaches(
-        z, at("cage_angle"), at("clearance"), at("x"), at("y"), reference, offset
+    reference, offset = (
+        np.broadcast_to(a, (*np.shape(model.x), 2)).reshape(n, 2)
+        for a in (model.reference, model.offset)
     )
-    return at("stiffness") * np.maximum(delta, 0.0) ** at("exponent")
+    angle, clearance, x, y = (_per_case(model, k) for k in ("cage_angle", "clearance", "x", "y"))
+    return ball_approaches(z, angle, clearance, x, y, reference, offset)
+
+
+def _per_case(model: Any, name: str) -> np.ndarray:
+    """``name`` of every case of ``model`` as a column, one row per case."""
+    return np.broadcast_to(getattr(model, name), np.shape(model.x)).reshape(-1, 1)

@@ -19,7 +19,7 @@ import numpy as np
 from bearingload import validate
 from bearingload.errors import InputError
 from bearingload.lazy_dataclass import dataclass
-from bearingload.models.equilibrium import LoadDistribution, ball_approaches, solve
+from bearingload.models.equilibrium import solve
 
 #: Cage positions over one pitch when none are asked for (both ends included). [-]
 DEFAULT_STEPS = 37
@@ -182,6 +182,50 @@ def hours_at(life: Any, speed: float | None) -> Any:
     return life_hours(life, speed)
 
 
+#: Quantities whose rounding noise is measured against the largest of their family.
+FAMILIES = (("x", "y", "axial"), ("tilt", "tilt_cross"))
+
+
+def family_spread(values: Callable[[str], Any], key: str) -> Spread | None:
+    """Min, mean, max and peak-to-peak of ``values(key)`` over the pitch (None if not given).
+
+    A mean of a displacement (tilt) below 1e-12 of the largest displacement (tilt) of any axis
+    (``values`` of the others of its family in :data:`FAMILIES`) is the solver's rounding noise
+    and is 0 (y and the cross tilt are odd in the cage angle)."""
+    v = values(key)
+    if v is None:
+        return None
+    family = next((f for f in FAMILIES if key in f), (key,))
+    scale = max(float(np.max(np.abs(np.asarray(values(k))))) for k in family)
+    return spread_of(v, scale)
+
+
+def cage_chunks(angles: np.ndarray, balls: int, contacts: int) -> list[np.ndarray]:
+    """``angles`` in consecutive chunks of at most ``contacts`` ball contacts (at least one cage
+    position each): a long sweep solved one call per chunk, which changes no answer."""
+    n = max(1, contacts // balls)
+    return [angles[i : i + n] for i in range(0, angles.size, n)]
+
+
+def at_cage_angles(where: Any, steps: int) -> str:
+    """Where a finding of a sweep holds: ``at 3 of 37 cage angles (10° to 30°)``, ``where`` the
+    cage angles [°] of ``steps`` positions."""
+    a = np.asarray(where, dtype=float)
+    return f"at {a.size} of {steps} cage angles ({a.min():.6g}° to {a.max():.6g}°)"
+
+
+def one_ball_findings(loaded_balls: Any, angles: np.ndarray) -> list[str]:
+    """solve's finding of one loaded ball, once, with the cage ``angles`` [°] where it holds
+    (none where more balls carry the load everywhere)."""
+    one = np.asarray(loaded_balls) == 1
+    if not one.any():
+        return []
+    return [
+        f"only one ball carries the load {at_cage_angles(angles[one], one.size)}: the result "
+        "hangs on a single contact (large clearance or few elements); check the clearance"
+    ]
+
+
 def spread_of(values: Any, scale: float | None = None) -> Spread:
     """Min, mean, max and peak-to-peak of ``values`` over the cage positions of one pitch, both
     ends included (see :class:`Spread`); a mean below 1e-12 of ``scale`` (default the largest
@@ -249,6 +293,9 @@ def sweep(
     >>> round(s.spread("y").max * 1e3, 4)
     0.3125
     """
+    from bearingload.studies.compensation import compensating_clearances
+    from bearingload.studies.reference_life import all_ball_approaches
+
     z = _one_int("balls", validate.ball_count(balls))
     angles = cage_angles(z, steps)
     f, k, g, m = (
@@ -258,7 +305,7 @@ def sweep(
         float(_one("exponent", validate.exponent(exponent))),
     )
     r = solve(z, f, k, g, angles, m)
-    delta = _ball_approaches(r, z)
+    delta = all_ball_approaches(r)
     top = delta.max(axis=1, keepdims=True)
     ties = delta >= top - 1e-12 * np.abs(top)
     return CageSweep(
@@ -275,7 +322,7 @@ def sweep(
         loaded_balls=r.loaded_balls,
         stiffness_matrix=r.stiffness_matrix,
         stiffness_radial=r.stiffness_radial,
-        compensating_clearance=compensating_clearance(z, f, k, m),
+        compensating_clearance=[float(g) for g in compensating_clearances(z, f, k, m)],
         reference_rating_life=(
             None if life is None else np.asarray(life(k * np.maximum(delta, 0.0) ** m))
         ),
@@ -303,31 +350,6 @@ def cage_angles(balls: int, steps: Any = DEFAULT_STEPS) -> np.ndarray:
         )
     n = _one_int("steps", validate.ball_count(steps, name="steps", maximum=MAX_STEPS))
     return np.linspace(0.0, 360.0 / balls, n)
-
-
-def compensating_clearance(
-    balls: int, load: float, stiffness: float, exponent: float
-) -> list[float]:
-    """Every clearance G_r [mm] at which the ring sits at the same x with a ball under the load
-    and with the load between two balls: the one call of the varying-compliance study."""
-    from bearingload.studies.compensation import compensating_clearances
-
-    return [float(v) for v in compensating_clearances(balls, load, stiffness, exponent)]
-
-
-def _ball_approaches(r: LoadDistribution, z: int) -> np.ndarray:
-    """Approach of balls 1..z at every case of ``r``, shape (n, z) [mm]: the engine's own
-    :func:`bearingload.models.equilibrium.ball_approaches` (from the reference position, so that
-    a clearance much larger than the elastic approach costs no digits; under preload from the
-    centred ring, every ball pressed by -G_r/2 plus the ring's displacement)."""
-
-    def column(a: Any) -> np.ndarray:
-        return np.broadcast_to(np.asarray(a, dtype=float), np.shape(r.x)).reshape(-1, 1)
-
-    reference, offset = (np.asarray(a).reshape(-1, 2) for a in (r.reference, r.offset))
-    return ball_approaches(
-        z, column(r.cage_angle), column(r.clearance), column(r.x), column(r.y), reference, offset
-    )
 
 
 def _one(name: str, value: np.ndarray) -> np.ndarray:
