@@ -586,7 +586,72 @@ def solve_combined(
     raw |= dict(pitch_diameter=pitch_diameter, f_i=f_i, f_o=f_o, clearance=clearance)
     raw |= dict(contact_angle=contact_angle, stiffness=stiffness)
     shape, cols, named = _inputs(raw)
-    angular = None if contact_angle is None else cols[_ROW["contact_angle"]]
+    kinds = (contact_angle is not None, misalignment is not None, stiffness is None)
+    solved = None
+    if tilt_radius is None:  # the common path: one core call (_one_call)
+        state, solved, result, r_i = _one_call(z, cols, *kinds)
+        if state == _core.CallState.ANSWERED:
+            return _answered(z, shape, cols, solved, result, r_i)
+        solved = solved if state == _core.CallState.SOLVED else None
+    return _general(z, shape, cols, named, (kinds, tilt_radius), solved)
+
+
+def _one_call(
+    z: int, cols: np.ndarray, angular: bool, imposed: bool, hertz: bool
+) -> tuple[int, tuple, tuple, np.ndarray]:
+    """The compiled core's ``combined_call`` of the packed inputs ``cols`` (17, n): set-up,
+    solve and results in one (its CallState says where it stopped; the general path,
+    :func:`_general`, takes the call from there), the Hertz set-up of one case from the cache
+    of :func:`hertz_setup` (and into it). Returns (the state, the solve's outputs, the
+    results, R_i (n,))."""
+    key = cols[7:13].tobytes() if hertz and cols.shape[1] == 1 else None
+    known = _SETUP_CACHE.get(key, _UNKNOWN) if key is not None else _UNKNOWN
+    low, high = validate.CONFORMITY_RANGE
+    limits = np.array((SYMMETRY_SNAP_DEG, GEOMETRY_RATIO_MAX, ANGULAR_RATIO_MIN, low, high,
+                       _chord(z), LIGHT_RATIO, ACCEPT))  # fmt: skip
+    state, solved, result, geo, k0, values = _core.combined_call(
+        z, cols, angular, imposed, known, hertz, limits, NODE_X, NODE_W,
+        _ring.MAX_ITERATIONS, _ring.FIRST_STAGE_STEPS,
+    )  # fmt: skip
+    if key is not None and known is _UNKNOWN and state != _core.CallState.SET_UP_APART:
+        _remember(key, np.concatenate((k0, values[0])))
+    return state, solved, result, geo[2]
+
+
+def _chord(z: int) -> float:
+    """sin(180°/z), the chord of the pitch circle between adjacent balls over d_m, as
+    :func:`bearingload.validate.ball_spacing` takes it."""
+    return float(np.sin(np.pi / z))
+
+
+def _answered(
+    z: int, shape: tuple[int, ...], cols: np.ndarray, solved: tuple, result: tuple, r_i: Any
+) -> CombinedDistribution:
+    """The result of a call the core answered whole (:func:`_one_call`)."""
+    rows, per_ball, overflow = result
+    if np.count_nonzero(overflow):
+        _refuse_overflow()
+    its, tangent = solved[3], solved[6]
+    loads = (cols[_ROW["radial_load"]], cols[_ROW["axial_load"]], cols[_ROW["clearance"]],
+             cols[_ROW["cage_angle"]])  # fmt: skip
+    return _distribution_of(shape, z, (rows, per_ball, tangent, its), loads, r_i, None)
+
+
+def _general(
+    z: int,
+    shape: tuple[int, ...],
+    cols: np.ndarray,
+    named: dict[str, Any],
+    given_as: tuple[tuple[bool, bool, bool], Any],
+    solved: tuple | None,
+) -> CombinedDistribution:
+    """:func:`solve_combined` of the packed inputs a step at a time: each refusal in its
+    order, the rare paths (:func:`_equilibrium`); ``solved``: the core's solve of these cases
+    (:func:`_one_call`), else solved here. ``given_as``: (whether the contact angle and the
+    misalignment were given and the stiffness not), the tilt radius given (or None)."""
+    (angular_given, imposed, hertz), tilt_radius = given_as
+    angular = cols[_ROW["contact_angle"]] if angular_given else None
+    misalignment = True if imposed else None
     fr, fa, mm, mc, tilt_deg, _, cage, e, nu, dw, dm, fi, fo, _, gr, alpha_d, k_in = cols
 
     def at(name: str, bad: Any, unit: str = "") -> str:  # the input's element of a bad case
@@ -597,11 +662,11 @@ def solve_combined(
     if tilt_radius is not None:
         radius = validate.positive("tilt_radius", tilt_radius, "mm")
         geo = dataclasses.replace(geo, R_i=np.broadcast_to(radius, dw.shape).astype(float))
-    _check_few_balls(z, cage, (fr, fa, mm, mc), misalignment is not None)
+    _check_few_balls(z, cage, (fr, fa, mm, mc), imposed)
     if angular is not None:
-        _check_one_sided_moment(z, cage, fa, (mm, mc), geo.R_i, misalignment is not None)
+        _check_one_sided_moment(z, cage, fa, (mm, mc), geo.R_i, imposed)
     curve = None
-    if stiffness is None:
+    if hertz:
         k_ref, values = hertz_setup(geo, e, nu)
         curve = StiffnessCurve(values)
     else:
@@ -609,10 +674,10 @@ def solve_combined(
     problem, mirror = _problem(z, cols[:6], cage, geo, k_ref, (angular, misalignment), at)
     given = {"balls": z, "radial_load": fr, "axial_load": fa, "moment": mm, "moment_cross": mc,
              "clearance": gr, "cage_angle": cage}  # fmt: skip
-    if misalignment is not None:  # the moment is then the reaction, not an input
+    if imposed:  # the moment is then the reaction, not an input
         given["misalignment"] = tilt_deg
     with np.errstate(all="ignore"):
-        vh, vl, kappa, its, end, tangent, flags = _equilibrium(problem, geo, curve, given)
+        vh, vl, kappa, its, end, tangent, flags = _equilibrium(problem, geo, curve, given, solved)
         answer = (vh + vl, kappa, its, _checked(problem, end, its, given), tangent[0])
         mirrored = mirror & (mc == 0)  # (the scaled tangent: made physical by distribution)
         return distribution(problem, geo, answer, shape, given, misalignment, flags, mirrored)
@@ -904,13 +969,16 @@ def _cases(named: dict[str, np.ndarray]) -> tuple[tuple[int, ...], list[np.ndarr
     return arrays[0].shape, [a.ravel() for a in arrays]
 
 
-def _equilibrium(p: Problem, geo: _Geometry, curve: StiffnessCurve | None, given: dict) -> tuple:
+def _equilibrium(
+    p: Problem, geo: _Geometry, curve: StiffnessCurve | None, given: dict, solved: Any = None
+) -> tuple:
     """Every case solved (:func:`_thrust_retry`), a tilt the loads do not determine taken at
     its least (:func:`_least_norm_tilt`): as :func:`_solve_with_stiffness`, and which cases'
     tilts are undetermined and which thrusts neglected. A case whose stiffness updates run out
-    raises ConvergenceError naming its inputs (``given``)."""
+    raises ConvergenceError naming its inputs (``given``). ``solved``: the core's outputs of
+    the first solve where the caller has them (:func:`_one_call`)."""
     try:
-        got = _solve_with_stiffness(p, geo, curve)
+        got = _solve_with_stiffness(p, geo, curve) if solved is None else _solved(solved)
         neglected = np.zeros(p.f.shape[0], dtype=bool)
         res = got[4].checks[0]  # (the residual with the imposed components held)
         if np.count_nonzero(res <= ACCEPT) < res.size:
@@ -1624,9 +1692,21 @@ NODE_COS = (NODE_X + 1.0) / 2.0
 #: Distinct geometries whose Hertz set-up the speed model (:mod:`bearingload.models.high_speed`)
 #: and :func:`hertz_setup` of one case keep across calls, the oldest dropped first. [-]
 SETUP_CACHE_SIZE = 256
-#: :func:`hertz_setup` of the last one-case calls, by their six parameters' bits: the values
-#: the core gives that geometry every time, kept so a call on a known bearing skips them.
-_SETUP_CACHE: dict[bytes, tuple[np.ndarray, np.ndarray]] = {}
+#: :func:`hertz_setup` of the last one-case calls, by the bits of their six parameters in the
+#: order of :data:`INPUT_ROWS` (E, nu, D_w, d_m, f_i, f_o): K_0 and the curve's values
+#: (1 + NODES), the values the core gives that geometry every time, kept so a call on a known
+#: bearing skips them.
+_SETUP_CACHE: dict[bytes, np.ndarray] = {}
+#: The Hertz set-up of :func:`_one_call` where the cache does not hold it.
+_UNKNOWN = np.zeros(0)
+
+
+def _remember(key: bytes, known: np.ndarray) -> None:
+    """Keep one geometry's Hertz set-up (K_0 and the curve's values) in the cache, the
+    oldest dropped first beyond SETUP_CACHE_SIZE."""
+    _SETUP_CACHE[key] = known
+    while len(_SETUP_CACHE) > SETUP_CACHE_SIZE:
+        _SETUP_CACHE.pop(next(iter(_SETUP_CACHE)))
 
 
 def hertz_setup(geo: _Geometry, e: np.ndarray, nu: np.ndarray) -> tuple[np.ndarray, np.ndarray]:
@@ -1638,10 +1718,10 @@ def hertz_setup(geo: _Geometry, e: np.ndarray, nu: np.ndarray) -> tuple[np.ndarr
     which refuses it with the reason (or, where only the core's Newton did not settle, sets it
     up)."""
     params = np.array((geo.D_w, geo.d_m, geo.f_i, geo.f_o, e, nu), dtype=float)  # (6, n)
-    key = params.tobytes() if params.shape[1] == 1 else None  # (one case: its six in order)
+    key = params[[4, 5, 0, 1, 2, 3]].tobytes() if params.shape[1] == 1 else None
     if key in _SETUP_CACHE:
-        k0, values = _SETUP_CACHE[key]
-        return k0.copy(), values.copy()
+        known = _SETUP_CACHE[key]
+        return known[:1].copy(), known[None, 1:].copy()
     params = params.T.copy()
     k0, values, bad = _core.hertz_curves(params, NODE_X)
     for i in np.flatnonzero(bad).tolist():
@@ -1651,9 +1731,7 @@ def hertz_setup(geo: _Geometry, e: np.ndarray, nu: np.ndarray) -> tuple[np.ndarr
         k = ball_stiffness(dw, dm / np.append(NODE_COS, 1.0), fi, fo, ee, nn).ball
         k0[i], values[i] = k[-1], (k[:-1] / k[-1] - 1.0) / (NODE_COS - 1.0)
     if key is not None:
-        _SETUP_CACHE[key] = (k0.copy(), values.copy())
-        while len(_SETUP_CACHE) > SETUP_CACHE_SIZE:
-            _SETUP_CACHE.pop(next(iter(_SETUP_CACHE)))  # the oldest first
+        _remember(key, np.concatenate((k0, values[0])))
     return k0, values
 
 
@@ -1718,6 +1796,13 @@ def _solve_with_stiffness(
         max_iterations=_ring.MAX_ITERATIONS,
         first_stage_steps=_ring.FIRST_STAGE_STEPS,
     )
+    return _solved((vh, vl, kappa, total, status, at, tangent, holding, checks), strict)
+
+
+def _solved(out: tuple, strict: bool = True) -> tuple[Any, ...]:
+    """:func:`_solve_with_stiffness`'s answer from the outputs of the core's ``solve`` (or of
+    its ``combined_call``, the same)."""
+    vh, vl, kappa, total, status, at, tangent, holding, checks = out
     balls, gen, size, res = at
     if strict and np.count_nonzero(status):  # by their rows: the caller names their inputs
         failed = status != _ring.OK
@@ -1868,7 +1953,6 @@ def distribution(
     of ``answer`` is physical (:func:`physical_tangent`) or, given which cases are ``mirrored``,
     the core's scaled tangent, made physical here in place (as :func:`physical_tangent`, in the
     same loop as the other results)."""
-    undetermined, neglected = (None, None) if flags is None else flags
     v, kappa, its, (block, gen), tangent = answer
     z = kappa.shape[1]
     case_in = np.array(
@@ -1888,21 +1972,39 @@ def distribution(
     )
     if np.count_nonzero(overflow):
         _refuse_overflow()
+    loads = (given["radial_load"], given["axial_load"], given["clearance"], given["cage_angle"])
+    return _distribution_of(shape, z, (rows, per_ball, tangent, its), loads, geo.R_i, flags)
+
+
+def _distribution_of(
+    shape: tuple[int, ...],
+    z: int,
+    answer: tuple[np.ndarray, ...],
+    loads: tuple[np.ndarray, ...],
+    r_i: np.ndarray,
+    flags: tuple[np.ndarray, np.ndarray] | None,
+) -> CombinedDistribution:
+    """The result of :func:`distribution` from the core's results ``answer`` (the case rows
+    (8, n), the ball rows (5, n, z), the physical stiffness (n, 5, 5), the iterations (n,)),
+    the inputs ``loads`` (F_r, F_a, G_r, the cage angle, (n,) each), R_i and the flags."""
+    rows, per_ball, tangent, its = answer
+    undetermined, neglected = (None, None) if flags is None else flags
     # one case of plain numbers: Python floats, as numerics.scalar_out gives them
     cases = rows.reshape((8,) + shape) if shape else rows[:, 0].tolist()
     x, y, axial, tilt, tilt_cross, alpha0, play, moment = cases
     phi, alpha, approach, k_ball, q = per_ball.reshape((5,) + shape + (z,))
+    fr, fa, gr, cage = loads
 
     def case(a: np.ndarray) -> Any:
         return np.asarray(a).reshape(shape) if shape else a.item()
 
     return CombinedDistribution(
         balls=z,
-        load=case(given["radial_load"]),
-        axial_load=case(given["axial_load"]),
+        load=case(fr),
+        axial_load=case(fa),
         moment=moment,
-        clearance=case(given["clearance"]),
-        cage_angle=case(given["cage_angle"]),
+        clearance=case(gr),
+        cage_angle=case(cage),
         free_contact_angle=alpha0,
         axial_play=play,
         x=x,
@@ -1915,7 +2017,7 @@ def distribution(
         ball_approaches=approach,
         ball_stiffnesses=k_ball,
         ball_loads=q,
-        tilt_radius=case(geo.R_i),
+        tilt_radius=case(r_i),
         stiffness_matrix=tangent.reshape(shape + (5, 5)),
         iterations=case(its),
         tilt_undetermined=np.zeros(shape, dtype=bool)
