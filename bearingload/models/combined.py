@@ -590,10 +590,18 @@ def solve_combined(
     solved = None
     if tilt_radius is None:  # the common path: one core call (_one_call)
         state, solved, result, r_i = _one_call(z, cols, *kinds)
-        if state == _core.CallState.ANSWERED:
+        if state == _ANSWERED:
             return _answered(z, shape, cols, solved, result, r_i)
-        solved = solved if state == _core.CallState.SOLVED else None
+        solved = solved if state == _SOLVED else None
     return _general(z, shape, cols, named, (kinds, tilt_radius), solved)
+
+
+#: The core's CallState of :func:`_one_call` as plain numbers.
+_ANSWERED, _SOLVED, _APART = (
+    int(_core.CallState.ANSWERED),
+    int(_core.CallState.SOLVED),
+    int(_core.CallState.SET_UP_APART),
+)
 
 
 def _one_call(
@@ -606,22 +614,31 @@ def _one_call(
     results, R_i (n,))."""
     key = cols[7:13].tobytes() if hertz and cols.shape[1] == 1 else None
     known = _SETUP_CACHE.get(key, _UNKNOWN) if key is not None else _UNKNOWN
-    low, high = validate.CONFORMITY_RANGE
-    limits = np.array((SYMMETRY_SNAP_DEG, GEOMETRY_RATIO_MAX, ANGULAR_RATIO_MIN, low, high,
-                       _chord(z), LIGHT_RATIO, ACCEPT))  # fmt: skip
     state, solved, result, geo, k0, values = _core.combined_call(
-        z, cols, angular, imposed, known, hertz, limits, NODE_X, NODE_W,
+        z, cols, angular, imposed, known, hertz, _call_limits(z), NODE_X, NODE_W,
         _ring.MAX_ITERATIONS, _ring.FIRST_STAGE_STEPS,
     )  # fmt: skip
-    if key is not None and known is _UNKNOWN and state != _core.CallState.SET_UP_APART:
+    if key is not None and known is _UNKNOWN and state != _APART:
         _remember(key, np.concatenate((k0, values[0])))
     return state, solved, result, geo[2]
 
 
-def _chord(z: int) -> float:
-    """sin(180°/z), the chord of the pitch circle between adjacent balls over d_m, as
-    :func:`bearingload.validate.ball_spacing` takes it."""
-    return float(np.sin(np.pi / z))
+def _call_limits(z: int) -> np.ndarray:
+    """The limits of the core's ``combined_call`` (its docstring), of the module constants as
+    they are at the call: sin(180°/z) as :func:`bearingload.validate.ball_spacing` takes it
+    (the chord of the pitch circle between adjacent balls over d_m)."""
+    low, high = validate.CONFORMITY_RANGE
+    key = (z, SYMMETRY_SNAP_DEG, GEOMETRY_RATIO_MAX, ANGULAR_RATIO_MIN, low, high)
+    key += (LIGHT_RATIO, ACCEPT)
+    limits = _LIMITS.get(key)
+    if limits is None:
+        limits = np.array(key[1:6] + (float(np.sin(np.pi / z)),) + key[6:])
+        _LIMITS[key] = limits
+    return limits
+
+
+#: The arrays of :func:`_call_limits` by their values (a few z in a session).
+_LIMITS: dict[tuple, np.ndarray] = {}
 
 
 def _answered(
@@ -631,10 +648,8 @@ def _answered(
     rows, per_ball, overflow = result
     if np.count_nonzero(overflow):
         _refuse_overflow()
-    its, tangent = solved[3], solved[6]
-    loads = (cols[_ROW["radial_load"]], cols[_ROW["axial_load"]], cols[_ROW["clearance"]],
-             cols[_ROW["cage_angle"]])  # fmt: skip
-    return _distribution_of(shape, z, (rows, per_ball, tangent, its), loads, r_i, None)
+    loads = (cols[0], cols[1], cols[_CLEARANCE], cols[_CAGE])  # (F_r, F_a: the first rows)
+    return _distribution_of(shape, z, (rows, per_ball, solved[6], solved[3]), loads, r_i, None)
 
 
 def _general(
@@ -710,6 +725,7 @@ INPUT_ROWS = (
 )
 _ROW = {name: i for i, name in enumerate(INPUT_ROWS) if name}
 _GROOVE = slice(9, 14)  # (the last "groove": the clearance or the contact angle)
+_CLEARANCE, _CAGE = _ROW["clearance"], _ROW["cage_angle"]
 #: The rows of one case of plain numbers by name (:func:`_plain_inputs`).
 _PLAIN_ROWS = operator.itemgetter(*INPUT_ROWS)
 
