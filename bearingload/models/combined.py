@@ -628,8 +628,8 @@ def _call_limits(z: int) -> np.ndarray:
     they are at the call: sin(180°/z) as :func:`bearingload.validate.ball_spacing` takes it
     (the chord of the pitch circle between adjacent balls over d_m)."""
     low, high = validate.CONFORMITY_RANGE
-    key = (z, SYMMETRY_SNAP_DEG, GEOMETRY_RATIO_MAX, ANGULAR_RATIO_MIN, low, high)
-    key += (LIGHT_RATIO, ACCEPT)
+    key: tuple[float, ...] = (z, SYMMETRY_SNAP_DEG, GEOMETRY_RATIO_MAX, ANGULAR_RATIO_MIN)
+    key += (low, high, LIGHT_RATIO, ACCEPT)
     limits = _LIMITS.get(key)
     if limits is None:
         limits = np.array(key[1:6] + (float(np.sin(np.pi / z)),) + key[6:])
@@ -638,7 +638,7 @@ def _call_limits(z: int) -> np.ndarray:
 
 
 #: The arrays of :func:`_call_limits` by their values (a few z in a session).
-_LIMITS: dict[tuple, np.ndarray] = {}
+_LIMITS: dict[tuple[float, ...], np.ndarray] = {}
 
 
 def _answered(
