@@ -3682,16 +3682,17 @@ ctypedef struct Setup:
     unsigned char *held    # (n, 5)
 
 
-cdef int setup_open(Py_ssize_t n, int z, Setup *st) noexcept nogil:
-    """``st``'s buffers (freed by ``free(st.c)`` and ``free(st.mirror)``); 0 without memory."""
-    st.c = <double *> malloc((2 * n * z + 19 * n) * sizeof(double))
+cdef int setup_open(Py_ssize_t n, int z, double *f, Setup *st) noexcept nogil:
+    """``st``'s buffers (freed by ``free(st.c)`` and ``free(st.mirror)``), its forces ``f``
+    the caller's; 0 without memory."""
+    st.c = <double *> malloc((2 * n * z + 14 * n) * sizeof(double))
     st.mirror = <unsigned char *> malloc(6 * n)
     if st.c == NULL or st.mirror == NULL:
         free(st.c)
         free(st.mirror)
         return 0
     st.s, st.geo6 = st.c + n * z, st.c + 2 * n * z
-    st.f, st.out = st.geo6 + 6 * n, st.geo6 + 11 * n
+    st.f, st.out = f, st.geo6 + 6 * n
     st.held = st.mirror + n
     return 1
 
@@ -3791,26 +3792,28 @@ def combined_call(int z, const double[:, ::1] cols, bint angular, bint imposed,
     ANSWERED), (the case rows (8, n), the ball rows (5, n, z), the cases whose stiffness
     overflows (n,) uint8: ``combined_result``'s, the tangent made physical; set where
     ANSWERED), the geometry (4, n) = A, g, R_i, alpha_0, K_0 or the constant K (n,), the
-    curve's values (n, NODES): set where the set-up passed)."""
+    curve's values (n, NODES), the scaled applied forces (n, 5): set where the set-up
+    passed)."""
     cdef Py_ssize_t n = cols.shape[1]
     cdef Answers a
     cdef Setup st
     cdef Limits lim = LIMITS
     cdef int state = SET_UP_APART
-    geo_a, k0_a, values_a = np.empty((4, n)), np.empty(n), np.empty((n, NODES))
+    geo_a, k0_a, values_a, f_a = np.empty((4, n)), np.empty(n), np.empty((n, NODES)), \
+        np.empty((n, 5))
     result_a = (np.empty((8, n)), np.empty((5, n, z)), np.zeros(n, dtype=np.uint8))
     arrays = answers_arrays(n, z)
     answers_at(&a, n, arrays[0], arrays[1], arrays[2], arrays[3], arrays[4], arrays[5],
                arrays[6], arrays[7], arrays[8])
     out_a = answers_of(arrays)
-    cdef double[:, ::1] geo = geo_a, values = values_a, rows = result_a[0]
+    cdef double[:, ::1] geo = geo_a, values = values_a, rows = result_a[0], f = f_a
     cdef double[::1] k0 = k0_a
     cdef double[:, :, ::1] per_ball = result_a[1]
     cdef unsigned char[::1] bad = result_a[2]
     cdef double *vals = &values[0, 0] if hertz and n > 0 else NULL
     lim.max_iterations, lim.fast_steps = max_iterations, first_stage_steps
-    if n == 0 or not setup_open(n, z, &st):
-        return (state, out_a, result_a, geo_a, k0_a, values_a)
+    if n == 0 or not setup_open(n, z, &f[0, 0], &st):
+        return (state, out_a, result_a, geo_a, k0_a, values_a, f_a)
     with nogil:
         if set_up_all(z, cols, angular, imposed, &limits[0],
                       &known[0] if known.shape[0] else NULL, &node_x[0], geo, k0, vals, &st):
@@ -3821,7 +3824,7 @@ def combined_call(int z, const double[:, ::1] cols, bint angular, bint imposed,
                 result_all(z, cols, angular, imposed, geo, k0, &st, &a, rows, per_ball, bad)
         free(st.c)
         free(st.mirror)
-    return (state, out_a, result_a, geo_a, k0_a, values_a)
+    return (state, out_a, result_a, geo_a, k0_a, values_a, f_a)
 
 
 cdef bint result_case(const double *v, const double *case_in, Py_ssize_t m, const double *gen,

@@ -614,7 +614,7 @@ def _one_call(
     results, R_i (n,))."""
     key = cols[7:13].tobytes() if hertz and cols.shape[1] == 1 else None
     known = _SETUP_CACHE.get(key, _UNKNOWN) if key is not None else _UNKNOWN
-    state, solved, result, geo, k0, values = _core.combined_call(
+    state, solved, result, geo, k0, values, _ = _core.combined_call(
         z, cols, angular, imposed, known, hertz, _call_limits(z), NODE_X, NODE_W,
         _ring.MAX_ITERATIONS, _ring.FIRST_STAGE_STEPS,
     )  # fmt: skip
@@ -647,9 +647,9 @@ def _answered(
     """The result of a call the core answered whole (:func:`_one_call`)."""
     rows, per_ball, overflow = result
     if np.count_nonzero(overflow):
-        _refuse_overflow()
+        refuse_overflow()
     loads = (cols[0], cols[1], cols[_CLEARANCE], cols[_CAGE])  # (F_r, F_a: the first rows)
-    return _distribution_of(shape, z, (rows, per_ball, solved[6], solved[3]), loads, r_i, None)
+    return distribution_of(shape, z, (rows, per_ball, solved[6], solved[3]), loads, r_i, None)
 
 
 def _general(
@@ -1733,12 +1733,12 @@ def hertz_setup(geo: _Geometry, e: np.ndarray, nu: np.ndarray) -> tuple[np.ndarr
     geometry the core cannot set up goes through the vectorised path of ``ball_stiffness``,
     which refuses it with the reason (or, where only the core's Newton did not settle, sets it
     up)."""
-    params = np.array((geo.D_w, geo.d_m, geo.f_i, geo.f_o, e, nu), dtype=float)  # (6, n)
-    key = params[[4, 5, 0, 1, 2, 3]].tobytes() if params.shape[1] == 1 else None
+    params = np.array((e, nu, geo.D_w, geo.d_m, geo.f_i, geo.f_o), dtype=float)  # (6, n)
+    key = params.tobytes() if params.shape[1] == 1 else None  # (one case: its six in order)
     if key in _SETUP_CACHE:
         known = _SETUP_CACHE[key]
         return known[:1].copy(), known[None, 1:].copy()
-    params = params.T.copy()
+    params = params[[2, 3, 4, 5, 0, 1]].T.copy()  # (the core's order: D_w, d_m, f_i, f_o, E, nu)
     k0, values, bad = _core.hertz_curves(params, NODE_X)
     for i in np.flatnonzero(bad).tolist():
         from bearingload.contact.hertz import ball_stiffness
@@ -1940,11 +1940,11 @@ def physical_tangent(
     z eps of that does not follow the order of the summation)."""
     t, radius = tangent.copy(), np.ascontiguousarray(geo.R_i, dtype=float)
     if np.count_nonzero(_core.physical(t, p.f_ref / p.scale, radius, mirrored.view(np.uint8), p.z)):
-        _refuse_overflow()
+        refuse_overflow()
     return t
 
 
-def _refuse_overflow() -> None:
+def refuse_overflow() -> None:
     """InputError: a lever of 1e300 mm, whose square times K overflows."""
     raise InputError("tilt_radius", "is so large that the tilting stiffness (lever^2 K) overflows")
 
@@ -1971,11 +1971,7 @@ def distribution(
     same loop as the other results)."""
     v, kappa, its, (block, gen), tangent = answer
     z = kappa.shape[1]
-    case_in = np.array(
-        (p.t_imp, p.scale, geo.R_i, geo.alpha0, geo.A, p.one_sided, p.f_ref)
-        + (given["moment"], given["cage_angle"], p.pre, p.k_ref),
-        dtype=float,
-    )
+    case_in = result_inputs(p, geo, given["moment"], given["cage_angle"])
     rows, per_ball, overflow = _core.combined_result(
         np.ascontiguousarray(v),
         case_in,
@@ -1987,12 +1983,22 @@ def distribution(
         _PHYSICAL if mirrored is None else mirrored.view(np.uint8),
     )
     if np.count_nonzero(overflow):
-        _refuse_overflow()
+        refuse_overflow()
     loads = (given["radial_load"], given["axial_load"], given["clearance"], given["cage_angle"])
-    return _distribution_of(shape, z, (rows, per_ball, tangent, its), loads, geo.R_i, flags)
+    return distribution_of(shape, z, (rows, per_ball, tangent, its), loads, geo.R_i, flags)
 
 
-def _distribution_of(
+def result_inputs(p: Problem, geo: _Geometry, moment: Any, cage: np.ndarray) -> np.ndarray:
+    """The case rows (11, n) of the core's ``combined_result`` (its docstring) of the cases of
+    ``p`` and ``geo``, the moment given (or carried) and the cage angle."""
+    return np.array(
+        (p.t_imp, p.scale, geo.R_i, geo.alpha0, geo.A, p.one_sided, p.f_ref)
+        + (moment, cage, p.pre, p.k_ref),
+        dtype=float,
+    )
+
+
+def distribution_of(
     shape: tuple[int, ...],
     z: int,
     answer: tuple[np.ndarray, ...],
