@@ -629,7 +629,8 @@ def _result(kind: str, pp: _Pair, geo: Any, answer: tuple[Any, ...], c: dict,
     z = p.z
     # both bearings in one call of the core's combined_result (2n cases, bearing-major), their
     # tangents made physical there (as physical_tangent)
-    case_in = np.tile(_comb.result_inputs(p, geo, moment[0], c["cage_angle"]), 2)
+    one = _comb.result_inputs(p, geo, moment[0], c["cage_angle"])
+    case_in = np.concatenate((one, one), axis=1)
     case_in[7] = moment.reshape(-1)
     tangents = st.tangents.reshape(2 * n, 5, 5).copy()
     rows, per_ball, overflow = _core.combined_result(
@@ -640,7 +641,7 @@ def _result(kind: str, pp: _Pair, geo: Any, answer: tuple[Any, ...], c: dict,
         np.ascontiguousarray(st.kappa).reshape(2 * n, z),
         False,
         tangents,
-        np.tile(mirrored, 2).view(np.uint8),
+        np.concatenate((mirrored, mirrored)).view(np.uint8),
     )
     if np.count_nonzero(overflow):
         _comb.refuse_overflow()
