@@ -98,7 +98,9 @@ its terms much larger than it); a component held at 0 by a symmetry of the case 
 No case depends on the others of its call, nor on earlier calls: the Hertz set-up of a
 geometry (K_0 and the stiffness curve's nodes) is computed per case in the core (a one-case
 call takes it from the last SETUP_CACHE_SIZE geometries so solved, the same bits). Cases left
-above 1e-8 raise :class:`~bearingload.errors.ConvergenceError`, naming their inputs.
+above 1e-8 raise :class:`~bearingload.errors.ConvergenceError`, naming their inputs. A call is
+one core call where its cases need no more (the set-up, the solve and the results:
+:func:`_one_call`); the rest (refusals, retries, the least tilt) is :func:`_general`'s.
 """
 
 from __future__ import annotations
