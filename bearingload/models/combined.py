@@ -582,11 +582,23 @@ def solve_combined(
     z = call_balls(balls)
     if moment is not None and misalignment is not None:
         raise InputError("moment", "give a moment or a misalignment, not both")
-    raw = dict(radial_load=radial_load, axial_load=axial_load, moment=moment)
-    raw |= dict(misalignment=misalignment, cage_angle=cage_angle, modulus=modulus)
-    raw |= dict(poisson=poisson, moment_cross=moment_cross, ball_diameter=ball_diameter)
-    raw |= dict(pitch_diameter=pitch_diameter, f_i=f_i, f_o=f_o, clearance=clearance)
-    raw |= dict(contact_angle=contact_angle, stiffness=stiffness)
+    raw = dict(
+        radial_load=radial_load,
+        axial_load=axial_load,
+        moment=moment,
+        misalignment=misalignment,
+        cage_angle=cage_angle,
+        modulus=modulus,
+        poisson=poisson,
+        moment_cross=moment_cross,
+        ball_diameter=ball_diameter,
+        pitch_diameter=pitch_diameter,
+        f_i=f_i,
+        f_o=f_o,
+        clearance=clearance,
+        contact_angle=contact_angle,
+        stiffness=stiffness,
+    )
     shape, cols, named = _inputs(raw)
     kinds = (contact_angle is not None, misalignment is not None, stiffness is None)
     solved = None
@@ -617,9 +629,18 @@ def _one_call(
     key = cols[7:13].tobytes() if hertz and cols.shape[1] == 1 else None
     known = _SETUP_CACHE.get(key, _UNKNOWN) if key is not None else _UNKNOWN
     state, solved, result, geo, k0, values, _ = _core.combined_call(
-        z, cols, angular, imposed, known, hertz, _call_limits(z), NODE_X, NODE_W,
-        _ring.MAX_ITERATIONS, _ring.FIRST_STAGE_STEPS,
-    )  # fmt: skip
+        z,
+        cols,
+        angular,
+        imposed,
+        known,
+        hertz,
+        _call_limits(z),
+        NODE_X,
+        NODE_W,
+        _ring.MAX_ITERATIONS,
+        _ring.FIRST_STAGE_STEPS,
+    )
     if key is not None and known is _UNKNOWN and state != _APART:
         _remember(key, np.concatenate((k0, values[0])))
     return state, solved, result, geo[2]
