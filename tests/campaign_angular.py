@@ -82,7 +82,8 @@ def main(n: int, seed: int) -> None:
     def call_spy(*args: Any) -> Any:  # a call the core answers whole never reaches _checked
         out = real_call(*args)
         if out[0] == _core.CallState.ANSWERED:
-            seen["gen"], seen["f"], seen["size"] = out[1][5][1][0], out[6][0], out[1][5][2][0]
+            forces = out[1][1]  # (the solve's forces and their terms' sizes: answers_arrays)
+            seen["gen"], seen["f"], seen["size"] = forces[0, 0], out[6][0], forces[1, 0]
         return out
 
     _core.combined_call = call_spy

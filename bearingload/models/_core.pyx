@@ -3788,8 +3788,8 @@ def combined_call(int z, const double[:, ::1] cols, bint angular, bint imposed,
     the light ratio of angular contact, the residual accepted; the nodes and weights of the
     curve; the iteration limits of ``solve``.
 
-    Returns (state, the solve's outputs as ``solve`` returns them (set where SOLVED or
-    ANSWERED), (the case rows (8, n), the ball rows (5, n, z), the cases whose stiffness
+    Returns (state, the solve's output arrays (``answers_arrays``; as ``solve`` returns
+    them: ``answers_of``; set where SOLVED or ANSWERED), (the case rows (8, n), the ball rows (5, n, z), the cases whose stiffness
     overflows (n,) uint8: ``combined_result``'s, the tangent made physical; set where
     ANSWERED), the geometry (4, n) = A, g, R_i, alpha_0, K_0 or the constant K (n,), the
     curve's values (n, NODES), the scaled applied forces (n, 5): set where the set-up
@@ -3805,7 +3805,6 @@ def combined_call(int z, const double[:, ::1] cols, bint angular, bint imposed,
     arrays = answers_arrays(n, z)
     answers_at(&a, n, arrays[0], arrays[1], arrays[2], arrays[3], arrays[4], arrays[5],
                arrays[6], arrays[7], arrays[8])
-    out_a = answers_of(arrays)
     cdef double[:, ::1] geo = geo_a, values = values_a, rows = result_a[0], f = f_a
     cdef double[::1] k0 = k0_a
     cdef double[:, :, ::1] per_ball = result_a[1]
@@ -3813,7 +3812,7 @@ def combined_call(int z, const double[:, ::1] cols, bint angular, bint imposed,
     cdef double *vals = &values[0, 0] if hertz and n > 0 else NULL
     lim.max_iterations, lim.fast_steps = max_iterations, first_stage_steps
     if n == 0 or not setup_open(n, z, &f[0, 0], &st):
-        return (state, out_a, result_a, geo_a, k0_a, values_a, f_a)
+        return (state, arrays, result_a, geo_a, k0_a, values_a, f_a)
     with nogil:
         if set_up_all(z, cols, angular, imposed, &limits[0],
                       &known[0] if known.shape[0] else NULL, &node_x[0], geo, k0, vals, &st):
@@ -3824,7 +3823,7 @@ def combined_call(int z, const double[:, ::1] cols, bint angular, bint imposed,
                 result_all(z, cols, angular, imposed, geo, k0, &st, &a, rows, per_ball, bad)
         free(st.c)
         free(st.mirror)
-    return (state, out_a, result_a, geo_a, k0_a, values_a, f_a)
+    return (state, arrays, result_a, geo_a, k0_a, values_a, f_a)
 
 
 cdef bint result_case(const double *v, const double *case_in, Py_ssize_t m, const double *gen,

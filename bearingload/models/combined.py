@@ -606,7 +606,7 @@ def solve_combined(
         state, solved, result, r_i = _one_call(z, cols, *kinds)
         if state == _ANSWERED:
             return _answered(z, shape, cols, solved, result, r_i)
-        solved = solved if state == _SOLVED else None
+        solved = _core.answers_of(solved) if state == _SOLVED else None
     return _general(z, shape, cols, named, (kinds, tilt_radius), solved)
 
 
@@ -624,8 +624,8 @@ def _one_call(
     """The compiled core's ``combined_call`` of the packed inputs ``cols`` (17, n): set-up,
     solve and results in one (its CallState says where it stopped; the general path,
     :func:`_general`, takes the call from there), the Hertz set-up of one case from the cache
-    of :func:`hertz_setup` (and into it). Returns (the state, the solve's outputs, the
-    results, R_i (n,))."""
+    of :func:`hertz_setup` (and into it). Returns (the state, the solve's output arrays (the
+    core's ``answers_arrays``), the results, R_i (n,))."""
     key = cols[7:13].tobytes() if hertz and cols.shape[1] == 1 else None
     known = _SETUP_CACHE.get(key, _UNKNOWN) if key is not None else _UNKNOWN
     state, solved, result, geo, k0, values, _ = _core.combined_call(
@@ -672,7 +672,8 @@ def _answered(
     if np.count_nonzero(overflow):
         refuse_overflow()
     loads = (cols[0], cols[1], cols[_CLEARANCE], cols[_CAGE])  # (F_r, F_a: the first rows)
-    return distribution_of(shape, z, (rows, per_ball, solved[6], solved[3]), loads, r_i, None)
+    tangent, its = solved[2][0], solved[6]  # (the core's answers_arrays)
+    return distribution_of(shape, z, (rows, per_ball, tangent, its), loads, r_i, None)
 
 
 def _general(
@@ -765,13 +766,17 @@ def _inputs(raw: dict[str, Any]) -> tuple[tuple[int, ...], np.ndarray, dict[str,
     return _checked_inputs(raw)
 
 
+#: The types of plain numbers :func:`_plain_inputs` takes: floats, or floats and ints.
+_FLOAT, _NUMBER = frozenset((float,)), frozenset((float, int))
+
+
 def _plain_inputs(raw: dict[str, Any]) -> np.ndarray | None:
     """The rows (17, 1) of one case whose inputs are all plain numbers (``float`` or ``int``)
     passing every check of :func:`_checked_inputs`, the cage angle taken mod 360°; None for
     any other."""
     values = [0.0 if x is None else x for x in raw.values()]
-    if not all(type(x) is float for x in values):
-        if not all(type(x) is float or type(x) is int for x in values):
+    if not _FLOAT.issuperset(map(type, values)):  # (a bool is neither)
+        if not _NUMBER.issuperset(map(type, values)):
             return None
         try:
             values = [float(x) for x in values]
