@@ -291,29 +291,39 @@ cdef int hertz_curve(const double *geo, const double *node_x, double *k0,
     return 1
 
 
+cdef int curve_of(const double *geo, const double *before, bint reuse, const double *node_x,
+                  double *k0, double *values) noexcept nogil:
+    """``hertz_curve`` of one case's geometry ``geo`` (6), or where ``reuse`` (the case before
+    it set up, its geometry ``before``, its K_0 and values just before ``k0`` and ``values``)
+    and the six are the same, that case's values (the same bits)."""
+    cdef int i
+    cdef bint same = reuse
+    for i in range(6):
+        same = same and geo[i] == before[i]
+    if not same:
+        return hertz_curve(geo, node_x, k0, values)
+    k0[0] = k0[-1]
+    for i in range(NODES):
+        values[i] = values[i - NODES]
+    return 1
+
+
 def hertz_curves(const double[:, ::1] geometry, const double[::1] node_x):
     """K_0 (n,) and the stiffness curve's values (n, NODES) of every case's geometry (n, 6):
     D_w, d_m, f_i, f_o, E, nu (``hertz_curve``), and which cases hertz.py would refuse (n,)
     uint8. A case of the same geometry as the one before it takes its values (the same bits)."""
-    cdef Py_ssize_t n = geometry.shape[0], k, i
+    cdef Py_ssize_t n = geometry.shape[0], k
     k0_a = np.empty(n)
     values_a = np.empty((n, NODES))
     bad_a = np.zeros(n, dtype=np.uint8)
     cdef double[::1] k0 = k0_a
     cdef double[:, ::1] values = values_a
     cdef unsigned char[::1] bad = bad_a
-    cdef bint same
     with nogil:
         for k in range(n):
-            same = k > 0 and not bad[k - 1]
-            for i in range(6):
-                same = same and geometry[k, i] == geometry[k - 1, i]
-            if same:
-                k0[k] = k0[k - 1]
-                for i in range(NODES):
-                    values[k, i] = values[k - 1, i]
-            else:
-                bad[k] = not hertz_curve(&geometry[k, 0], &node_x[0], &k0[k], &values[k, 0])
+            bad[k] = not curve_of(&geometry[k, 0], &geometry[k - 1 if k else 0, 0],
+                                  k > 0 and not bad[k - 1 if k else 0], &node_x[0], &k0[k],
+                                  &values[k, 0])
     return k0_a, values_a, bad_a
 
 
@@ -1479,6 +1489,70 @@ cdef void answer_flags(Case *cs, const int *imposed, const Point *pt, double *re
             edge[0] = True
 
 
+ctypedef struct Answers:
+    # the outputs of ``solve`` for n cases of z balls (as its docstring lays them out)
+    Py_ssize_t n
+    double *v         # (2, n, 5): vh, vl
+    double *forces    # (2, n, 5): the forces, their terms' sizes
+    double *mats      # (2, n, 5, 5): the tangent, the holding Hessian
+    double *kappa     # (n, z)
+    double *balls     # (BALL_ARRAYS, n, z)
+    double *res       # (2, n): the residual, that with the imposed components held
+    int64_t *its      # (n,)
+    int *status       # (n,)
+    unsigned char *flags  # (2, n): maybe flat, maybe at the groove edge
+
+
+def answers_arrays(Py_ssize_t n, int z):
+    """The output arrays of ``solve`` for n cases of z balls: vh and vl (2, n, 5), the forces
+    and their terms' sizes (2, n, 5), the tangent and the holding Hessian (2, n, 5, 5), kappa
+    (n, z), the ball arrays (BALL_ARRAYS, n, z), the residuals (2, n), the iterations (n,),
+    the status (n,), the flags (2, n) (``answers_at`` points into them)."""
+    return (np.empty((2, n, 5)), np.empty((2, n, 5)), np.empty((2, n, 5, 5)), np.empty((n, z)),
+            np.empty((BALL_ARRAYS, n, z)), np.empty((2, n)), np.empty(n, dtype=np.int64),
+            np.empty(n, dtype=np.int32), np.zeros((2, n), np.uint8))
+
+
+def answers_of(arrays):
+    """``solve``'s return of its ``answers_arrays``."""
+    v, forces, mats, kappa, balls, res, its, status, flags = arrays
+    return (v[0], v[1], kappa, its, status, (balls, forces[0], forces[1], res[0]), mats[0],
+            (mats[1], flags[0]), (res[1], flags[1]))
+
+
+cdef void answers_at(Answers *a, Py_ssize_t n, double[:, :, ::1] v, double[:, :, ::1] forces,
+                     double[:, :, :, ::1] mats, double[:, ::1] kappa, double[:, :, ::1] balls,
+                     double[:, ::1] res, int64_t[::1] its, int[::1] status,
+                     unsigned char[:, ::1] flags) noexcept nogil:
+    """``a`` pointing into the arrays of ``answers_arrays`` (none where n is 0)."""
+    a.n = n
+    if n > 0 and kappa.shape[1] > 0:
+        a.v, a.forces, a.mats = &v[0, 0, 0], &forces[0, 0, 0], &mats[0, 0, 0, 0]
+        a.kappa, a.balls, a.res = &kappa[0, 0], &balls[0, 0, 0], &res[0, 0]
+        a.its, a.status, a.flags = &its[0], &status[0], &flags[0, 0]
+
+
+cdef void solve_into(Case *cs, const int *held, const double *v0, bint given, Py_ssize_t k,
+                     Answers *a) noexcept nogil:
+    """Case ``k`` solved (``solve_case``) from ``v0`` where ``given``, its answer, tangent,
+    holding Hessian and checks (the components ``held`` as imposed) stored into ``a``."""
+    cdef Py_ssize_t n = a.n
+    cdef int z = cs.z
+    cdef Work wk
+    if not work_open(z, &wk):
+        a.status[k] = NO_MEMORY
+        return
+    a.status[k] = solve_case(cs, v0, given, &a.v[5 * k], &a.v[5 * (n + k)], &a.its[k], &wk)
+    if a.status[k] != NO_MEMORY:
+        stiffness(cs, &wk, &a.mats[25 * k])
+        holding(cs, &wk, &a.mats[25 * (n + k)])
+        a.flags[k] = maybe_flat(cs, &a.mats[25 * (n + k)])
+    store(&wk, z, &a.kappa[z * k], &a.balls[z * k], n * z, &a.forces[5 * k],
+          &a.forces[5 * (n + k)], &a.res[k])
+    answer_flags(cs, held, &wk.pt, &a.res[n + k], &a.flags[n + k])
+    free(wk.block)
+
+
 def solve(const double[:, ::1] c, const double[:, ::1] s, const double[:, ::1] lengths,
           const double[:, ::1] f, const unsigned char[:, ::1] locked,
           const unsigned char[:, ::1] imposed, const unsigned char[::1] one_sided,
@@ -1510,19 +1584,12 @@ def solve(const double[:, ::1] c, const double[:, ::1] s, const double[:, ::1] l
     cdef Py_ssize_t n = c.shape[0], k
     cdef int z = <int> c.shape[1], i
     cdef bint has_curve = curve.shape[1] == NODES
-    v_a, forces_a, mats_a = np.empty((2, n, 5)), np.empty((2, n, 5)), np.empty((2, n, 5, 5))
-    kappa_a, balls_a, res_a = np.empty((n, z)), np.empty((BALL_ARRAYS, n, z)), np.empty((2, n))
-    its_a, status_a = np.empty(n, dtype=np.int64), np.empty(n, dtype=np.int32)
-    flags_a = np.zeros((2, n), np.uint8)
-    cdef double[:, :, ::1] v = v_a, forces = forces_a, balls = balls_a
-    cdef double[:, :, :, ::1] mats = mats_a
-    cdef double[:, ::1] kappa = kappa_a, res = res_a
-    cdef int64_t[::1] its = its_a
-    cdef int[::1] status = status_a
-    cdef unsigned char[:, ::1] flags = flags_a
     cdef int held[5]
     cdef Case cs
-    cdef Work wk
+    cdef Answers a
+    arrays = answers_arrays(n, z)
+    answers_at(&a, n, arrays[0], arrays[1], arrays[2], arrays[3], arrays[4], arrays[5],
+               arrays[6], arrays[7], arrays[8])
     cs.lim = LIMITS
     cs.lim.max_iterations = max_iterations
     cs.lim.fast_steps = first_stage_steps
@@ -1539,21 +1606,8 @@ def solve(const double[:, ::1] c, const double[:, ::1] s, const double[:, ::1] l
             cs.q0 = cs.pre * sqrt(cs.pre) if cs.deviation else 0.0
             cs.curve = &curve[k, 0] if has_curve else NULL
             cs.node_x, cs.node_w = &node_x[0], &node_w[0]
-            if not work_open(z, &wk):
-                status[k] = NO_MEMORY
-                continue
-            status[k] = solve_case(&cs, &v0[k, 0], given[k], &v[0, k, 0], &v[1, k, 0], &its[k],
-                                   &wk)
-            if status[k] != NO_MEMORY:
-                stiffness(&cs, &wk, &mats[0, k, 0, 0])
-                holding(&cs, &wk, &mats[1, k, 0, 0])
-                flags[0, k] = maybe_flat(&cs, &mats[1, k, 0, 0])
-            store(&wk, z, &kappa[k, 0], &balls[0, k, 0], n * z, &forces[0, k, 0],
-                  &forces[1, k, 0], &res[0, k])
-            answer_flags(&cs, held, &wk.pt, &res[1, k], &flags[1, k])
-            free(wk.block)
-    return (v_a[0], v_a[1], kappa_a, its_a, status_a, (balls_a, forces_a[0], forces_a[1], res_a[0]),
-            mats_a[0], (mats_a[1], flags_a[0]), (res_a[1], flags_a[1]))
+            solve_into(&cs, held, &v0[k, 0], given[k], k, &a)
+    return answers_of(arrays)
 
 
 # ----------------------------------------------------------------------- the preloaded pair
@@ -3845,6 +3899,242 @@ def combined_problem(int z, const double[:, ::1] loads, const double[::1] cage,
     return status_a, c_a, s_a, mirror_a, held_a, f_a, out_a
 
 
+cpdef enum CallState:
+    ANSWERED = 0   # every case set up, solved, checked: the results are set
+    SET_UP_APART = 1  # a case the set-up refuses or treats apart: the caller starts over
+    SOLVED = 2     # every case set up and solved, a case flagged (not converged, its residual
+                   # above the acceptance, a tilt that may be undetermined, a ball that may
+                   # sit at the groove edge): the caller goes on from the solve
+
+
+cdef bint set_up(int z, const double *col, Py_ssize_t n, bint angular, bint imposed,
+                 const double *limits, const double *known, bint reuse, const double *node_x,
+                 double *geo, double *geo6, double *k0, double *values, double *c, double *s,
+                 unsigned char *mirror, unsigned char *held, double *f, double *out) noexcept nogil:
+    """One case of ``combined_call`` set up: ``col`` its column of the 17 input rows (``n``
+    apart); ``geo`` its column of A, g, R_i, alpha_0 (``n`` apart); ``k0`` its K_0: with the
+    Hertz stiffness (``values`` not NULL), K_0 and the curve's values into ``k0``, ``values``
+    from ``known`` (K_0 and the values) where not NULL, else by ``curve_of`` of its six
+    ``geo6`` (the case before just before ``geo6``, ``k0``, ``values``, where ``reuse``); else
+    the constant K of its stiffness row; the rest as ``problem_case``. Returns 0 where the caller's general path must take the
+    call: a geometry ``groove`` refuses, balls that overlap (``limits[5]`` = sin(180°/z)),
+    fewer than 3 balls, an angular-contact moment to check, a Hertz set-up the core cannot
+    make, a load ``problem_case`` refuses, or a light angular-contact case (A/s above
+    ``limits[6]``)."""
+    cdef int i
+    if not groove_case(&col[9 * n], n, angular, limits[3], limits[4], geo, n, True):
+        return 0
+    if z < 3 or not col[9 * n] <= col[10 * n] * limits[5] * (1.0 + 1e-12):
+        return 0
+    if angular and (col[3 * n] != 0 or (col[2 * n] != 0 and not imposed)):
+        return 0
+    if values == NULL:
+        k0[0] = col[16 * n]
+    elif known != NULL:
+        k0[0] = known[0]
+        for i in range(NODES):
+            values[i] = known[1 + i]
+    else:
+        geo6[0], geo6[1], geo6[2], geo6[3] = col[9 * n], col[10 * n], col[11 * n], col[12 * n]
+        geo6[4], geo6[5] = col[7 * n], col[8 * n]
+        if not curve_of(geo6, geo6 - 6 if reuse else geo6, reuse, node_x, k0, values):
+            return 0
+    if problem_case(z, col, col[6 * n], geo, k0[0], angular, imposed, limits, n, c, s,
+                    mirror, held, f, out) != SET_UP:
+        return 0
+    return not (angular and out[n] > limits[6])
+
+
+ctypedef struct Setup:
+    # the scaled problem of n cases of z balls (``problem_case``'s outputs), C buffers
+    double *c          # (n, z)
+    double *s          # (n, z)
+    double *geo6       # (n, 6): D_w, d_m, f_i, f_o, E, nu
+    double *f          # (n, 5)
+    double *out        # (8, n): s, A/s, p, gap, b_hi, b_lo, t_imp, F
+    unsigned char *mirror  # (n,)
+    unsigned char *held    # (n, 5)
+
+
+cdef int setup_open(Py_ssize_t n, int z, double *f, Setup *st) noexcept nogil:
+    """``st``'s buffers (freed by ``free(st.c)`` and ``free(st.mirror)``), its forces ``f``
+    the caller's; 0 without memory."""
+    st.c = <double *> malloc((2 * n * z + 14 * n) * sizeof(double))
+    st.mirror = <unsigned char *> malloc(6 * n)
+    if st.c == NULL or st.mirror == NULL:
+        free(st.c)
+        free(st.mirror)
+        return 0
+    st.s, st.geo6 = st.c + n * z, st.c + 2 * n * z
+    st.f, st.out = f, st.geo6 + 6 * n
+    st.held = st.mirror + n
+    return 1
+
+
+cdef bint set_up_all(int z, const double[:, ::1] cols, bint angular, bint imposed,
+                     const double *limits, const double *known, const double *node_x,
+                     double[:, ::1] geo, double[::1] k0, double *values,
+                     Setup *st) noexcept nogil:
+    """Every case of ``combined_call`` set up (``set_up``); False at the first the caller's
+    general path must take."""
+    cdef Py_ssize_t n = cols.shape[1], k
+    for k in range(n):
+        if not set_up(z, &cols[0, k], n, angular, imposed, limits, known, k > 0, node_x,
+                      &geo[0, k], &st.geo6[6 * k], &k0[k],
+                      &values[NODES * k] if values != NULL else NULL, &st.c[z * k],
+                      &st.s[z * k], &st.mirror[k], &st.held[5 * k], &st.f[5 * k], &st.out[k]):
+            return False
+    return True
+
+
+cdef bint solve_all(int z, Py_ssize_t n, const Setup *st, bint angular, bint imposed,
+                    const double *values, const double *node_x, const double *node_w,
+                    const Limits *lim, double accept, Answers *a) noexcept nogil:
+    """Every case of ``combined_call`` solved from the standard start (as ``solve``); False
+    where a case is flagged (not converged, its residual with the imposed components held
+    above ``accept``, a tilt that may be undetermined, a ball that may sit at the groove
+    edge)."""
+    cdef Py_ssize_t k
+    cdef int i
+    cdef int held[5]
+    cdef double v0[5]
+    cdef Case cs
+    cdef bint clean = True
+    cs.lim = lim[0]
+    for i in range(5):
+        v0[i] = 0.0
+        held[i] = imposed and i == 3
+    for k in range(n):
+        cs.z, cs.c, cs.s, cs.one_sided = z, &st.c[z * k], &st.s[z * k], angular
+        cs.a_hat, cs.pre, cs.gap = st.out[n + k], st.out[2 * n + k], st.out[3 * n + k]
+        cs.b_hi, cs.b_lo, cs.t_imp = st.out[4 * n + k], st.out[5 * n + k], st.out[6 * n + k]
+        for i in range(5):
+            cs.f[i] = st.f[5 * k + i]
+            cs.locked[i] = st.held[5 * k + i]
+        cs.deviation = cs.pre > 0 and z >= 2
+        cs.q0 = cs.pre * sqrt(cs.pre) if cs.deviation else 0.0
+        cs.curve = &values[NODES * k] if values != NULL else NULL
+        cs.node_x, cs.node_w = node_x, node_w
+        solve_into(&cs, held, v0, False, k, a)
+        clean = clean and a.status[k] == OK and a.res[n + k] <= accept
+        clean = clean and not a.flags[k] and not a.flags[n + k]
+    return clean
+
+
+cdef void result_all(int z, const double[:, ::1] cols, bint angular, bint imposed,
+                     const double[:, ::1] geo, const double[::1] k0, const Setup *st,
+                     Answers *a, double[:, ::1] rows, double[:, :, ::1] per_ball,
+                     unsigned char[::1] bad) noexcept nogil:
+    """Every case's results (``result_case``, as ``combined_result`` with the tangent scaled,
+    a case mirrored where its balls are and no cross moment acts)."""
+    cdef Py_ssize_t n = cols.shape[1], k, nz = n * z
+    cdef double v[5]
+    cdef double case_in[11]
+    cdef const double *bl[4]
+    cdef int j
+    for k in range(n):
+        for j in range(5):
+            v[j] = a.v[5 * k + j] + a.v[5 * (n + k) + j]
+        case_in[0], case_in[1], case_in[2] = st.out[6 * n + k], st.out[k], geo[2, k]
+        case_in[3], case_in[4], case_in[5] = geo[3, k], geo[0, k], angular
+        case_in[6], case_in[7], case_in[8] = st.out[7 * n + k], cols[2, k], cols[6, k]
+        case_in[9], case_in[10] = st.out[2 * n + k], k0[k]
+        bl[0], bl[1], bl[2], bl[3] = &a.balls[3 * nz + z * k], &a.balls[5 * nz + z * k], \
+            &a.balls[6 * nz + z * k], &a.balls[8 * nz + z * k]
+        bad[k] = not result_case(v, case_in, 1, &a.forces[5 * k], bl, 1, &a.kappa[z * k], z,
+                                 imposed, &a.mats[25 * k], st.mirror[k] and cols[3, k] == 0,
+                                 &rows[0, k], &per_ball[0, k, 0], n)
+
+
+def combined_call(int z, const double[:, ::1] cols, bint angular, bint imposed,
+                  const double[::1] known, bint hertz, const double[::1] limits,
+                  const double[::1] node_x, const double[::1] node_w, int max_iterations,
+                  int first_stage_steps):
+    """One call of the combined solver on n cases in one: the set-up (``groove``, the Hertz
+    curve, ``combined_problem``), the solve (``solve``, every case from the standard start)
+    and the results (``combined_result``), for the common path; the caller's general path
+    takes what this leaves (the CallState says where it stopped).
+
+    ``cols`` (17, n): the input rows of combined.INPUT_ROWS; ``hertz``: the Hertz stiffness
+    (else the constant K of the stiffness row), with ``known`` = K_0 and the curve's values
+    (1 + NODES) of the one case where known, else empty; ``limits`` = the symmetry snap [°],
+    the largest and the smallest (angular contact) A/s, the conformity range (2), sin(180°/z),
+    the light ratio of angular contact, the residual accepted; the nodes and weights of the
+    curve; the iteration limits of ``solve``.
+
+    Returns (state, the solve's output arrays (``answers_arrays``; as ``solve`` returns
+    them: ``answers_of``; set where SOLVED or ANSWERED), (the case rows (8, n), the ball rows (5, n, z), the cases whose stiffness
+    overflows (n,) uint8: ``combined_result``'s, the tangent made physical; set where
+    ANSWERED), the geometry (4, n) = A, g, R_i, alpha_0, K_0 or the constant K (n,), the
+    curve's values (n, NODES), the scaled applied forces (n, 5): set where the set-up
+    passed)."""
+    cdef Py_ssize_t n = cols.shape[1]
+    cdef Answers a
+    cdef Setup st
+    cdef Limits lim = LIMITS
+    cdef int state = SET_UP_APART
+    geo_a, k0_a, values_a, f_a = np.empty((4, n)), np.empty(n), np.empty((n, NODES)), \
+        np.empty((n, 5))
+    result_a = (np.empty((8, n)), np.empty((5, n, z)), np.zeros(n, dtype=np.uint8))
+    arrays = answers_arrays(n, z)
+    answers_at(&a, n, arrays[0], arrays[1], arrays[2], arrays[3], arrays[4], arrays[5],
+               arrays[6], arrays[7], arrays[8])
+    cdef double[:, ::1] geo = geo_a, values = values_a, rows = result_a[0], f = f_a
+    cdef double[::1] k0 = k0_a
+    cdef double[:, :, ::1] per_ball = result_a[1]
+    cdef unsigned char[::1] bad = result_a[2]
+    cdef double *vals = &values[0, 0] if hertz and n > 0 else NULL
+    lim.max_iterations, lim.fast_steps = max_iterations, first_stage_steps
+    if n == 0 or not setup_open(n, z, &f[0, 0], &st):
+        return (state, arrays, result_a, geo_a, k0_a, values_a, f_a)
+    with nogil:
+        if set_up_all(z, cols, angular, imposed, &limits[0],
+                      &known[0] if known.shape[0] else NULL, &node_x[0], geo, k0, vals, &st):
+            state = SOLVED
+            if solve_all(z, n, &st, angular, imposed, vals, &node_x[0], &node_w[0], &lim,
+                         limits[7], &a):
+                state = ANSWERED
+                result_all(z, cols, angular, imposed, geo, k0, &st, &a, rows, per_ball, bad)
+        free(st.c)
+        free(st.mirror)
+    return (state, arrays, result_a, geo_a, k0_a, values_a, f_a)
+
+
+cdef bint result_case(const double *v, const double *case_in, Py_ssize_t m, const double *gen,
+                      const double **bl, Py_ssize_t step, const double *kappa, int z,
+                      bint imposed, double *tangent, int mirrored, double *out, double *ball,
+                      Py_ssize_t n) noexcept nogil:
+    """One case of ``combined_result``: its position ``v`` (5), its column of ``case_in``
+    (``m`` apart), forces ``gen`` (5), the ball arrays it reads (``bl``: the approach less p,
+    cos and sin of the contact angle, the scaled load, ``step`` apart along the balls), its
+    stiffness deviations ``kappa`` (z); its tangent made physical in place unless ``mirrored``
+    is -1; writes its column of the case rows (``n`` apart) and its ball rows (``n z`` apart).
+    Returns 0 where the physical stiffness overflows."""
+    cdef double w[5]
+    cdef double sc = case_in[m], lever = case_in[2 * m], sin0, deg = 180.0 / PI
+    cdef Py_ssize_t nz = n * z
+    cdef int j
+    for j in range(5):
+        w[j] = v[j] * sc
+    w[3] = (v[3] + case_in[0]) * sc
+    sin0 = sin(case_in[3 * m])
+    out[0], out[n] = w[0], w[1]
+    out[2 * n] = w[2] - (case_in[4 * m] * sin0 if case_in[5 * m] else 0.0)
+    out[3 * n], out[4 * n] = (w[3] / lever) * deg, (w[4] / lever) * deg
+    out[5 * n] = case_in[3 * m] * deg
+    out[6 * n] = 0.0 if case_in[5 * m] else 2.0 * case_in[4 * m] * sin0
+    out[7 * n] = lever * case_in[6 * m] * gen[3] if imposed else case_in[7 * m]
+    for j in range(z):
+        ball[j] = floor_mod(case_in[8 * m] + 360.0 * j / z, 360.0)
+        ball[nz + j] = atan2(bl[2][j * step], bl[1][j * step]) * deg
+        ball[2 * nz + j] = (case_in[9 * m] + bl[0][j * step]) * sc
+        ball[3 * nz + j] = (1.0 + kappa[j]) * case_in[10 * m]
+        ball[4 * nz + j] = case_in[6 * m] * bl[3][j * step]
+    if mirrored < 0:
+        return 1
+    return physical_case(tangent, case_in[6 * m] / sc, lever, mirrored, z)
+
+
 def combined_result(const double[:, ::1] v, const double[:, ::1] case_in,
                     const double[:, ::1] gen, const double[:, :, :] balls,
                     const double[:, ::1] kappa, bint imposed, double[:, :, ::1] tangent,
@@ -3866,37 +4156,43 @@ def combined_result(const double[:, ::1] v, const double[:, ::1] case_in,
     approach [mm], stiffness [N/mm^1.5], load [N]; and the cases whose physical stiffness
     overflows (n,) uint8 (0 where left as it is)."""
     cdef Py_ssize_t n = v.shape[0], k
-    cdef int z = <int> kappa.shape[1], j
+    cdef int z = <int> kappa.shape[1]
     cdef bint scaled = mirrored.shape[0] == n and n > 0
     cases_a, balls_a, bad_a = np.empty((8, n)), np.empty((5, n, z)), np.zeros(n, dtype=np.uint8)
     cdef unsigned char[::1] bad = bad_a
     cdef double[:, ::1] out = cases_a
     cdef double[:, :, ::1] ball = balls_a
-    cdef double w[5]
-    cdef double sc, lever, sin0, deg = 180.0 / PI
+    cdef const double *bl[4]
+    cdef Py_ssize_t step = balls.strides[2] // sizeof(double)
     with nogil:
         for k in range(n):
-            sc, lever = case_in[1, k], case_in[2, k]
-            for j in range(5):
-                w[j] = v[k, j] * sc
-            w[3] = (v[k, 3] + case_in[0, k]) * sc
-            sin0 = sin(case_in[3, k])
-            out[0, k], out[1, k] = w[0], w[1]
-            out[2, k] = w[2] - (case_in[4, k] * sin0 if case_in[5, k] else 0.0)
-            out[3, k], out[4, k] = (w[3] / lever) * deg, (w[4] / lever) * deg
-            out[5, k] = case_in[3, k] * deg
-            out[6, k] = 0.0 if case_in[5, k] else 2.0 * case_in[4, k] * sin0
-            out[7, k] = lever * case_in[6, k] * gen[k, 3] if imposed else case_in[7, k]
-            for j in range(z):
-                ball[0, k, j] = floor_mod(case_in[8, k] + 360.0 * j / z, 360.0)
-                ball[1, k, j] = atan2(balls[6, k, j], balls[5, k, j]) * deg
-                ball[2, k, j] = (case_in[9, k] + balls[3, k, j]) * sc
-                ball[3, k, j] = (1.0 + kappa[k, j]) * case_in[10, k]
-                ball[4, k, j] = case_in[6, k] * balls[8, k, j]
-            if scaled:
-                bad[k] = not physical_case(&tangent[k, 0, 0], case_in[6, k] / sc, lever,
-                                           mirrored[k], z)
+            bl[0], bl[1], bl[2], bl[3] = &balls[3, k, 0], &balls[5, k, 0], &balls[6, k, 0], \
+                &balls[8, k, 0]
+            bad[k] = not result_case(&v[k, 0], &case_in[0, k], n, &gen[k, 0], bl, step,
+                                     &kappa[k, 0], z, imposed, &tangent[k, 0, 0],
+                                     mirrored[k] if scaled else -1, &out[0, k], &ball[0, k, 0], n)
     return cases_a, balls_a, bad_a
+
+
+cdef bint groove_case(const double *given, Py_ssize_t n, bint angular, double low, double high,
+                      double *out, Py_ssize_t m, bint lever_third) noexcept nogil:
+    """One case of ``groove``: ``given`` its column of the five (``n`` apart), ``out`` its
+    column of A, g, alpha0, R_i (``m`` apart; ``lever_third``: A, g, R_i, alpha0); returns
+    whether it fits."""
+    cdef double dw = given[0], dm = given[n], fi = given[2 * n], fo = given[3 * n]
+    cdef double big_a, g, alpha0, half
+    big_a = (fi + fo - 1.0) * dw
+    if angular:
+        alpha0 = given[4 * n] * (PI / 180.0)
+        half = sin(alpha0 / 2.0)
+        g = 4.0 * big_a * (half * half) / 2.0
+    else:
+        g = given[4 * n] / 2.0
+        alpha0 = 2.0 * asin(sqrt(g / (2.0 * big_a))) if g > 0 else 0.0
+    out[0], out[m], out[(3 if lever_third else 2) * m] = big_a, g, alpha0
+    out[(2 if lever_third else 3) * m] = dm / 2.0 + (fi - 0.5) * dw * cos(alpha0)
+    return (dw > 0 and dm > 0 and dw < dm and fi > low and fi < high and
+            fo > low and fo < high and g < big_a)
 
 
 def groove(const double[:, ::1] given, bint angular, double low, double high):
@@ -3911,22 +4207,9 @@ def groove(const double[:, ::1] given, bint angular, double low, double high):
     cdef Py_ssize_t n = given.shape[1], k
     out_a = np.empty((5, n))
     cdef double[:, ::1] out = out_a
-    cdef double dw, dm, fi, fo, big_a, g, alpha0, half
     with nogil:
         for k in range(n):
-            dw, dm, fi, fo = given[0, k], given[1, k], given[2, k], given[3, k]
-            big_a = (fi + fo - 1.0) * dw
-            if angular:
-                alpha0 = given[4, k] * (PI / 180.0)
-                half = sin(alpha0 / 2.0)
-                g = 4.0 * big_a * (half * half) / 2.0
-            else:
-                g = given[4, k] / 2.0
-                alpha0 = 2.0 * asin(sqrt(g / (2.0 * big_a))) if g > 0 else 0.0
-            out[0, k], out[1, k], out[2, k] = big_a, g, alpha0
-            out[3, k] = dm / 2.0 + (fi - 0.5) * dw * cos(alpha0)
-            out[4, k] = (dw > 0 and dm > 0 and dw < dm and fi > low and fi < high and
-                         fo > low and fo < high and g < big_a)
+            out[4, k] = groove_case(&given[0, k], n, angular, low, high, &out[0, k], n, False)
     return out_a
 
 

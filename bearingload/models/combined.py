@@ -98,7 +98,9 @@ its terms much larger than it); a component held at 0 by a symmetry of the case 
 No case depends on the others of its call, nor on earlier calls: the Hertz set-up of a
 geometry (K_0 and the stiffness curve's nodes) is computed per case in the core (a one-case
 call takes it from the last SETUP_CACHE_SIZE geometries so solved, the same bits). Cases left
-above 1e-8 raise :class:`~bearingload.errors.ConvergenceError`, naming their inputs.
+above 1e-8 raise :class:`~bearingload.errors.ConvergenceError`, naming their inputs. A call is
+one core call where its cases need no more (the set-up, the solve and the results:
+:func:`_one_call`); the rest (refusals, retries, the least tilt) is :func:`_general`'s.
 """
 
 from __future__ import annotations
@@ -580,13 +582,115 @@ def solve_combined(
     z = call_balls(balls)
     if moment is not None and misalignment is not None:
         raise InputError("moment", "give a moment or a misalignment, not both")
-    raw = dict(radial_load=radial_load, axial_load=axial_load, moment=moment)
-    raw |= dict(misalignment=misalignment, cage_angle=cage_angle, modulus=modulus)
-    raw |= dict(poisson=poisson, moment_cross=moment_cross, ball_diameter=ball_diameter)
-    raw |= dict(pitch_diameter=pitch_diameter, f_i=f_i, f_o=f_o, clearance=clearance)
-    raw |= dict(contact_angle=contact_angle, stiffness=stiffness)
+    raw = dict(
+        radial_load=radial_load,
+        axial_load=axial_load,
+        moment=moment,
+        misalignment=misalignment,
+        cage_angle=cage_angle,
+        modulus=modulus,
+        poisson=poisson,
+        moment_cross=moment_cross,
+        ball_diameter=ball_diameter,
+        pitch_diameter=pitch_diameter,
+        f_i=f_i,
+        f_o=f_o,
+        clearance=clearance,
+        contact_angle=contact_angle,
+        stiffness=stiffness,
+    )
     shape, cols, named = _inputs(raw)
-    angular = None if contact_angle is None else cols[_ROW["contact_angle"]]
+    kinds = (contact_angle is not None, misalignment is not None, stiffness is None)
+    solved = None
+    if tilt_radius is None:  # the common path: one core call (_one_call)
+        state, solved, result, r_i = _one_call(z, cols, *kinds)
+        if state == _ANSWERED:
+            return _answered(z, shape, cols, solved, result, r_i)
+        solved = _core.answers_of(solved) if state == _SOLVED else None
+    return _general(z, shape, cols, named, (kinds, tilt_radius), solved)
+
+
+#: The core's CallState of :func:`_one_call` as plain numbers.
+_ANSWERED, _SOLVED, _APART = (
+    int(_core.CallState.ANSWERED),
+    int(_core.CallState.SOLVED),
+    int(_core.CallState.SET_UP_APART),
+)
+
+
+def _one_call(
+    z: int, cols: np.ndarray, angular: bool, imposed: bool, hertz: bool
+) -> tuple[int, tuple, tuple, np.ndarray]:
+    """The compiled core's ``combined_call`` of the packed inputs ``cols`` (17, n): set-up,
+    solve and results in one (its CallState says where it stopped; the general path,
+    :func:`_general`, takes the call from there), the Hertz set-up of one case from the cache
+    of :func:`hertz_setup` (and into it). Returns (the state, the solve's output arrays (the
+    core's ``answers_arrays``), the results, R_i (n,))."""
+    key = cols[7:13].tobytes() if hertz and cols.shape[1] == 1 else None
+    known = _SETUP_CACHE.get(key, _UNKNOWN) if key is not None else _UNKNOWN
+    state, solved, result, geo, k0, values, _ = _core.combined_call(
+        z,
+        cols,
+        angular,
+        imposed,
+        known,
+        hertz,
+        _call_limits(z),
+        NODE_X,
+        NODE_W,
+        _ring.MAX_ITERATIONS,
+        _ring.FIRST_STAGE_STEPS,
+    )
+    if key is not None and known is _UNKNOWN and state != _APART:
+        _remember(key, np.concatenate((k0, values[0])))
+    return state, solved, result, geo[2]
+
+
+def _call_limits(z: int) -> np.ndarray:
+    """The limits of the core's ``combined_call`` (its docstring), of the module constants as
+    they are at the call: sin(180°/z) as :func:`bearingload.validate.ball_spacing` takes it
+    (the chord of the pitch circle between adjacent balls over d_m)."""
+    low, high = validate.CONFORMITY_RANGE
+    key: tuple[float, ...] = (z, SYMMETRY_SNAP_DEG, GEOMETRY_RATIO_MAX, ANGULAR_RATIO_MIN)
+    key += (low, high, LIGHT_RATIO, ACCEPT)
+    limits = _LIMITS.get(key)
+    if limits is None:
+        limits = np.array(key[1:6] + (float(np.sin(np.pi / z)),) + key[6:])
+        _LIMITS[key] = limits
+    return limits
+
+
+#: The arrays of :func:`_call_limits` by their values (a few z in a session).
+_LIMITS: dict[tuple[float, ...], np.ndarray] = {}
+
+
+def _answered(
+    z: int, shape: tuple[int, ...], cols: np.ndarray, solved: tuple, result: tuple, r_i: Any
+) -> CombinedDistribution:
+    """The result of a call the core answered whole (:func:`_one_call`)."""
+    rows, per_ball, overflow = result
+    if np.count_nonzero(overflow):
+        refuse_overflow()
+    loads = (cols[0], cols[1], cols[_CLEARANCE], cols[_CAGE])  # (F_r, F_a: the first rows)
+    tangent, its = solved[2][0], solved[6]  # (the core's answers_arrays)
+    return distribution_of(shape, z, (rows, per_ball, tangent, its), loads, r_i, None)
+
+
+def _general(
+    z: int,
+    shape: tuple[int, ...],
+    cols: np.ndarray,
+    named: dict[str, Any],
+    given_as: tuple[tuple[bool, bool, bool], Any],
+    solved: tuple | None,
+) -> CombinedDistribution:
+    """:func:`solve_combined` of the packed inputs a step at a time: each refusal in its
+    order, the rare paths (:func:`_equilibrium`); ``solved``: the core's solve of these cases
+    (:func:`_one_call`), else solved here. ``given_as``: (whether the contact angle and the
+    misalignment were given and the stiffness not), the tilt radius given (or None)."""
+    (angular_given, imposed, hertz), tilt_radius = given_as
+    angular = cols[_ROW["contact_angle"]] if angular_given else None
+    misalignment = True if imposed else None
     fr, fa, mm, mc, tilt_deg, _, cage, e, nu, dw, dm, fi, fo, _, gr, alpha_d, k_in = cols
 
     def at(name: str, bad: Any, unit: str = "") -> str:  # the input's element of a bad case
@@ -597,11 +701,11 @@ def solve_combined(
     if tilt_radius is not None:
         radius = validate.positive("tilt_radius", tilt_radius, "mm")
         geo = dataclasses.replace(geo, R_i=np.broadcast_to(radius, dw.shape).astype(float))
-    _check_few_balls(z, cage, (fr, fa, mm, mc), misalignment is not None)
+    _check_few_balls(z, cage, (fr, fa, mm, mc), imposed)
     if angular is not None:
-        _check_one_sided_moment(z, cage, fa, (mm, mc), geo.R_i, misalignment is not None)
+        _check_one_sided_moment(z, cage, fa, (mm, mc), geo.R_i, imposed)
     curve = None
-    if stiffness is None:
+    if hertz:
         k_ref, values = hertz_setup(geo, e, nu)
         curve = StiffnessCurve(values)
     else:
@@ -609,10 +713,10 @@ def solve_combined(
     problem, mirror = _problem(z, cols[:6], cage, geo, k_ref, (angular, misalignment), at)
     given = {"balls": z, "radial_load": fr, "axial_load": fa, "moment": mm, "moment_cross": mc,
              "clearance": gr, "cage_angle": cage}  # fmt: skip
-    if misalignment is not None:  # the moment is then the reaction, not an input
+    if imposed:  # the moment is then the reaction, not an input
         given["misalignment"] = tilt_deg
     with np.errstate(all="ignore"):
-        vh, vl, kappa, its, end, tangent, flags = _equilibrium(problem, geo, curve, given)
+        vh, vl, kappa, its, end, tangent, flags = _equilibrium(problem, geo, curve, given, solved)
         answer = (vh + vl, kappa, its, _checked(problem, end, its, given), tangent[0])
         mirrored = mirror & (mc == 0)  # (the scaled tangent: made physical by distribution)
         return distribution(problem, geo, answer, shape, given, misalignment, flags, mirrored)
@@ -645,6 +749,7 @@ INPUT_ROWS = (
 )
 _ROW = {name: i for i, name in enumerate(INPUT_ROWS) if name}
 _GROOVE = slice(9, 14)  # (the last "groove": the clearance or the contact angle)
+_CLEARANCE, _CAGE = _ROW["clearance"], _ROW["cage_angle"]
 #: The rows of one case of plain numbers by name (:func:`_plain_inputs`).
 _PLAIN_ROWS = operator.itemgetter(*INPUT_ROWS)
 
@@ -661,13 +766,17 @@ def _inputs(raw: dict[str, Any]) -> tuple[tuple[int, ...], np.ndarray, dict[str,
     return _checked_inputs(raw)
 
 
+#: The types of plain numbers :func:`_plain_inputs` takes: floats, or floats and ints.
+_FLOAT, _NUMBER = frozenset((float,)), frozenset((float, int))
+
+
 def _plain_inputs(raw: dict[str, Any]) -> np.ndarray | None:
     """The rows (17, 1) of one case whose inputs are all plain numbers (``float`` or ``int``)
     passing every check of :func:`_checked_inputs`, the cage angle taken mod 360°; None for
     any other."""
     values = [0.0 if x is None else x for x in raw.values()]
-    if not all(type(x) is float for x in values):
-        if not all(type(x) is float or type(x) is int for x in values):
+    if not _FLOAT.issuperset(map(type, values)):  # (a bool is neither)
+        if not _NUMBER.issuperset(map(type, values)):
             return None
         try:
             values = [float(x) for x in values]
@@ -904,13 +1013,16 @@ def _cases(named: dict[str, np.ndarray]) -> tuple[tuple[int, ...], list[np.ndarr
     return arrays[0].shape, [a.ravel() for a in arrays]
 
 
-def _equilibrium(p: Problem, geo: _Geometry, curve: StiffnessCurve | None, given: dict) -> tuple:
+def _equilibrium(
+    p: Problem, geo: _Geometry, curve: StiffnessCurve | None, given: dict, solved: Any = None
+) -> tuple:
     """Every case solved (:func:`_thrust_retry`), a tilt the loads do not determine taken at
     its least (:func:`_least_norm_tilt`): as :func:`_solve_with_stiffness`, and which cases'
     tilts are undetermined and which thrusts neglected. A case whose stiffness updates run out
-    raises ConvergenceError naming its inputs (``given``)."""
+    raises ConvergenceError naming its inputs (``given``). ``solved``: the core's outputs of
+    the first solve where the caller has them (:func:`_one_call`)."""
     try:
-        got = _solve_with_stiffness(p, geo, curve)
+        got = _solve_with_stiffness(p, geo, curve) if solved is None else _solved(solved)
         neglected = np.zeros(p.f.shape[0], dtype=bool)
         res = got[4].checks[0]  # (the residual with the imposed components held)
         if np.count_nonzero(res <= ACCEPT) < res.size:
@@ -1664,9 +1776,21 @@ NODE_COS = (NODE_X + 1.0) / 2.0
 #: Distinct geometries whose Hertz set-up the speed model (:mod:`bearingload.models.high_speed`)
 #: and :func:`hertz_setup` of one case keep across calls, the oldest dropped first. [-]
 SETUP_CACHE_SIZE = 256
-#: :func:`hertz_setup` of the last one-case calls, by their six parameters' bits: the values
-#: the core gives that geometry every time, kept so a call on a known bearing skips them.
-_SETUP_CACHE: dict[bytes, tuple[np.ndarray, np.ndarray]] = {}
+#: :func:`hertz_setup` of the last one-case calls, by the bits of their six parameters in the
+#: order of :data:`INPUT_ROWS` (E, nu, D_w, d_m, f_i, f_o): K_0 and the curve's values
+#: (1 + NODES), the values the core gives that geometry every time, kept so a call on a known
+#: bearing skips them.
+_SETUP_CACHE: dict[bytes, np.ndarray] = {}
+#: The Hertz set-up of :func:`_one_call` where the cache does not hold it.
+_UNKNOWN = np.zeros(0)
+
+
+def _remember(key: bytes, known: np.ndarray) -> None:
+    """Keep one geometry's Hertz set-up (K_0 and the curve's values) in the cache, the
+    oldest dropped first beyond SETUP_CACHE_SIZE."""
+    _SETUP_CACHE[key] = known
+    while len(_SETUP_CACHE) > SETUP_CACHE_SIZE:
+        _SETUP_CACHE.pop(next(iter(_SETUP_CACHE)))
 
 
 def hertz_setup(geo: _Geometry, e: np.ndarray, nu: np.ndarray) -> tuple[np.ndarray, np.ndarray]:
@@ -1677,12 +1801,12 @@ def hertz_setup(geo: _Geometry, e: np.ndarray, nu: np.ndarray) -> tuple[np.ndarr
     geometry the core cannot set up goes through the vectorised path of ``ball_stiffness``,
     which refuses it with the reason (or, where only the core's Newton did not settle, sets it
     up)."""
-    params = np.array((geo.D_w, geo.d_m, geo.f_i, geo.f_o, e, nu), dtype=float)  # (6, n)
+    params = np.array((e, nu, geo.D_w, geo.d_m, geo.f_i, geo.f_o), dtype=float)  # (6, n)
     key = params.tobytes() if params.shape[1] == 1 else None  # (one case: its six in order)
     if key in _SETUP_CACHE:
-        k0, values = _SETUP_CACHE[key]
-        return k0.copy(), values.copy()
-    params = params.T.copy()
+        known = _SETUP_CACHE[key]
+        return known[:1].copy(), known[None, 1:].copy()
+    params = params[[2, 3, 4, 5, 0, 1]].T.copy()  # (the core's order: D_w, d_m, f_i, f_o, E, nu)
     k0, values, bad = _core.hertz_curves(params, NODE_X)
     for i in np.flatnonzero(bad).tolist():
         from bearingload.contact.hertz import ball_stiffness
@@ -1691,9 +1815,7 @@ def hertz_setup(geo: _Geometry, e: np.ndarray, nu: np.ndarray) -> tuple[np.ndarr
         k = ball_stiffness(dw, dm / np.append(NODE_COS, 1.0), fi, fo, ee, nn).ball
         k0[i], values[i] = k[-1], (k[:-1] / k[-1] - 1.0) / (NODE_COS - 1.0)
     if key is not None:
-        _SETUP_CACHE[key] = (k0.copy(), values.copy())
-        while len(_SETUP_CACHE) > SETUP_CACHE_SIZE:
-            _SETUP_CACHE.pop(next(iter(_SETUP_CACHE)))  # the oldest first
+        _remember(key, np.concatenate((k0, values[0])))
     return k0, values
 
 
@@ -1758,6 +1880,13 @@ def _solve_with_stiffness(
         max_iterations=_ring.MAX_ITERATIONS,
         first_stage_steps=_ring.FIRST_STAGE_STEPS,
     )
+    return _solved((vh, vl, kappa, total, status, at, tangent, holding, checks), strict)
+
+
+def _solved(out: tuple, strict: bool = True) -> tuple[Any, ...]:
+    """:func:`_solve_with_stiffness`'s answer from the outputs of the core's ``solve`` (or of
+    its ``combined_call``, the same)."""
+    vh, vl, kappa, total, status, at, tangent, holding, checks = out
     balls, gen, size, res = at
     if strict and np.count_nonzero(status):  # by their rows: the caller names their inputs
         failed = status != _ring.OK
@@ -1879,11 +2008,11 @@ def physical_tangent(
     z eps of that does not follow the order of the summation)."""
     t, radius = tangent.copy(), np.ascontiguousarray(geo.R_i, dtype=float)
     if np.count_nonzero(_core.physical(t, p.f_ref / p.scale, radius, mirrored.view(np.uint8), p.z)):
-        _refuse_overflow()
+        refuse_overflow()
     return t
 
 
-def _refuse_overflow() -> None:
+def refuse_overflow() -> None:
     """InputError: a lever of 1e300 mm, whose square times K overflows."""
     raise InputError("tilt_radius", "is so large that the tilting stiffness (lever^2 K) overflows")
 
@@ -1908,14 +2037,9 @@ def distribution(
     of ``answer`` is physical (:func:`physical_tangent`) or, given which cases are ``mirrored``,
     the core's scaled tangent, made physical here in place (as :func:`physical_tangent`, in the
     same loop as the other results)."""
-    undetermined, neglected = (None, None) if flags is None else flags
     v, kappa, its, (block, gen), tangent = answer
     z = kappa.shape[1]
-    case_in = np.array(
-        (p.t_imp, p.scale, geo.R_i, geo.alpha0, geo.A, p.one_sided, p.f_ref)
-        + (given["moment"], given["cage_angle"], p.pre, p.k_ref),
-        dtype=float,
-    )
+    case_in = result_inputs(p, geo, given["moment"], given["cage_angle"])
     rows, per_ball, overflow = _core.combined_result(
         np.ascontiguousarray(v),
         case_in,
@@ -1927,22 +2051,50 @@ def distribution(
         _PHYSICAL if mirrored is None else mirrored.view(np.uint8),
     )
     if np.count_nonzero(overflow):
-        _refuse_overflow()
+        refuse_overflow()
+    loads = (given["radial_load"], given["axial_load"], given["clearance"], given["cage_angle"])
+    return distribution_of(shape, z, (rows, per_ball, tangent, its), loads, geo.R_i, flags)
+
+
+def result_inputs(p: Problem, geo: _Geometry, moment: Any, cage: np.ndarray) -> np.ndarray:
+    """The case rows (11, n) of the core's ``combined_result`` (its docstring) of the cases of
+    ``p`` and ``geo``, the moment given (or carried) and the cage angle."""
+    return np.array(
+        (p.t_imp, p.scale, geo.R_i, geo.alpha0, geo.A, p.one_sided, p.f_ref)
+        + (moment, cage, p.pre, p.k_ref),
+        dtype=float,
+    )
+
+
+def distribution_of(
+    shape: tuple[int, ...],
+    z: int,
+    answer: tuple[np.ndarray, ...],
+    loads: tuple[np.ndarray, ...],
+    r_i: np.ndarray,
+    flags: tuple[np.ndarray, np.ndarray] | None,
+) -> CombinedDistribution:
+    """The result of :func:`distribution` from the core's results ``answer`` (the case rows
+    (8, n), the ball rows (5, n, z), the physical stiffness (n, 5, 5), the iterations (n,)),
+    the inputs ``loads`` (F_r, F_a, G_r, the cage angle, (n,) each), R_i and the flags."""
+    rows, per_ball, tangent, its = answer
+    undetermined, neglected = (None, None) if flags is None else flags
     # one case of plain numbers: Python floats, as numerics.scalar_out gives them
     cases = rows.reshape((8,) + shape) if shape else rows[:, 0].tolist()
     x, y, axial, tilt, tilt_cross, alpha0, play, moment = cases
     phi, alpha, approach, k_ball, q = per_ball.reshape((5,) + shape + (z,))
+    fr, fa, gr, cage = loads
 
     def case(a: np.ndarray) -> Any:
         return np.asarray(a).reshape(shape) if shape else a.item()
 
     return CombinedDistribution(
         balls=z,
-        load=case(given["radial_load"]),
-        axial_load=case(given["axial_load"]),
+        load=case(fr),
+        axial_load=case(fa),
         moment=moment,
-        clearance=case(given["clearance"]),
-        cage_angle=case(given["cage_angle"]),
+        clearance=case(gr),
+        cage_angle=case(cage),
         free_contact_angle=alpha0,
         axial_play=play,
         x=x,
@@ -1955,7 +2107,7 @@ def distribution(
         ball_approaches=approach,
         ball_stiffnesses=k_ball,
         ball_loads=q,
-        tilt_radius=case(geo.R_i),
+        tilt_radius=case(r_i),
         stiffness_matrix=tangent.reshape(shape + (5, 5)),
         iterations=case(its),
         tilt_undetermined=np.zeros(shape, dtype=bool)

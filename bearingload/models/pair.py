@@ -210,6 +210,11 @@ def held_components(kind: str, mirror: np.ndarray, loads: tuple[np.ndarray, ...]
 _HELD = np.array([[0, 1, 0, 0, 1], [1, 1, 0, 1, 1], [0, 0, 1, 1, 1]], dtype=bool)
 
 
+#: The ball arrays of a point as the core gives them (rho, u, d, eps, up, ca, sa, cam1, q, dq,
+#: root, tau, sig). [-]
+BALL_ROWS = 13
+
+
 @dataclass
 class _State:
     """The balls of both bearings at the answer: their geometry, stiffness and loads."""
@@ -329,10 +334,11 @@ def solve_pair(
         named["tilt_radius"] = tilt_radius
     if _plain(kind, named):  # one case of plain numbers, every check passed
         shape: tuple[int, ...] = ()
-        c = dict(zip(named, np.array(list(named.values()))[:, None], strict=True))
+        plain = named | {"cage_angle": validate.reduced_angle(named["cage_angle"])}
+        c = dict(zip(named, np.array(list(plain.values()))[:, None], strict=True))
     else:
         shape, c = _checked(kind, named)
-    c["cage_angle"] = validate.cage_angle(c["cage_angle"])
+        c["cage_angle"] = validate.cage_angle(c["cage_angle"])
     narrow = c["width"] < c["ball_diameter"]
     if np.count_nonzero(narrow):  # no ring holds its balls so; the shaft's tilt then has no lever
         i = int(np.argmax(narrow))
@@ -620,19 +626,33 @@ def _result(kind: str, pp: _Pair, geo: Any, answer: tuple[Any, ...], c: dict,
     (radial, thrust, moment), unloaded = _core.pair_loads(
         st.gen, st.block, np.ascontiguousarray(axisymmetric).view(np.uint8), f_ref, radius
     )
+    z = p.z
+    # both bearings in one call of the core's combined_result (2n cases, bearing-major), their
+    # tangents made physical there (as physical_tangent)
+    one = _comb.result_inputs(p, geo, moment[0], c["cage_angle"])
+    case_in = np.concatenate((one, one), axis=1)
+    case_in[7] = moment.reshape(-1)
+    tangents = st.tangents.reshape(2 * n, 5, 5).copy()
+    rows, per_ball, overflow = _core.combined_result(
+        np.ascontiguousarray(st.local).reshape(2 * n, 5),
+        case_in,
+        np.ascontiguousarray(st.gen).reshape(2 * n, 5),
+        st.block.reshape(BALL_ROWS, 2 * n, z),
+        np.ascontiguousarray(st.kappa).reshape(2 * n, z),
+        False,
+        tangents,
+        np.concatenate((mirrored, mirrored)).view(np.uint8),
+    )
+    if np.count_nonzero(overflow):
+        _comb.refuse_overflow()
     bearings = []
     total = np.zeros((n, 5, 5))
     for k in range(2):
-        tangent = _comb.physical_tangent(p, geo, st.tangents[k], mirrored)
-        given = {
-            "radial_load": radial[k],
-            "axial_load": thrust[k],
-            "moment": moment[k],
-            "clearance": np.zeros(n),
-            "cage_angle": c["cage_angle"],
-        }
-        out = (st.local[k], st.kappa[k], its, (st.block[:, k], st.gen[k]), tangent)
-        bearings.append(_comb.distribution(p, geo, out, shape, given, None))
+        part = slice(k * n, (k + 1) * n)
+        tangent = tangents[part].copy()
+        answer = (rows[:, part], per_ball[:, part], tangent, its)
+        loads = (radial[k], thrust[k], np.zeros(n), c["cage_angle"])
+        bearings.append(_comb.distribution_of(shape, z, answer, loads, geo.R_i, None))
         total += maps[:, k].transpose(0, 2, 1) @ tangent @ maps[:, k]
     total[mirrored[:, None, None] & _COUPLING] = 0.0
     offset, lift_off = _lift_off(pp, curve, delta_p)
