@@ -1543,10 +1543,13 @@ cdef void solve_into(Case *cs, const int *held, const double *v0, bint given, Py
         a.status[k] = NO_MEMORY
         return
     a.status[k] = solve_case(cs, v0, given, &a.v[5 * k], &a.v[5 * (n + k)], &a.its[k], &wk)
-    if a.status[k] != NO_MEMORY:
-        stiffness(cs, &wk, &a.mats[25 * k])
-        holding(cs, &wk, &a.mats[25 * (n + k)])
-        a.flags[k] = maybe_flat(cs, &a.mats[25 * (n + k)])
+    if a.status[k] == NO_MEMORY:  # no point to store: the status fails the case
+        a.res[k] = NAN
+        free(wk.block)
+        return
+    stiffness(cs, &wk, &a.mats[25 * k])
+    holding(cs, &wk, &a.mats[25 * (n + k)])
+    a.flags[k] = maybe_flat(cs, &a.mats[25 * (n + k)])
     store(&wk, z, &a.kappa[z * k], &a.balls[z * k], n * z, &a.forces[5 * k],
           &a.forces[5 * (n + k)], &a.res[k])
     answer_flags(cs, held, &wk.pt, &a.res[n + k], &a.flags[n + k])
