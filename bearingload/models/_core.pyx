@@ -530,43 +530,74 @@ cdef inline bint turns(const Case *cs, double rho, double u) noexcept nogil:
     return rho > 0 and (not cs.one_sided or u > 0)
 
 
-cdef void tangent(const Case *cs, const double *ca, const double *sa, const double *w1,
-                  const double *w2, const double *w3, bint hold, double *hess) noexcept nogil:
-    """sum_j w1 g g^T + w2 h h^T (+ w3 g h^T where w3 is given), g = (ca c, ca s, sa, sa c,
-    sa s) the generalised direction of ball j's contact normal, h = that of the direction in
-    which it turns ((ca, sa) turned to (-sa, ca)): with w1 = dQ/d(delta), w2 = Q/d and w3 =
-    dQ/d(alpha)/d the tangent of the ring forces. ``hold``: the
-    locked components decoupled (unit rows and columns), as the Newton matrix has them."""
+cdef inline void normal_directions(const Case *cs, const double *ca, const double *sa, int j,
+                                   double *g, double *h) noexcept nogil:
+    """g = (ca c, ca s, sa, sa c, sa s), the generalised direction of ball j's contact normal,
+    and h, that of the direction in which it turns ((ca, sa) turned to (-sa, ca))."""
+    g[0] = ca[j] * cs.c[j]
+    g[1] = ca[j] * cs.s[j]
+    g[2] = sa[j]
+    g[3] = sa[j] * cs.c[j]
+    g[4] = sa[j] * cs.s[j]
+    h[0] = -sa[j] * cs.c[j]
+    h[1] = -sa[j] * cs.s[j]
+    h[2] = ca[j]
+    h[3] = ca[j] * cs.c[j]
+    h[4] = ca[j] * cs.s[j]
+
+
+cdef void add_turn(const Case *cs, const double *ca, const double *sa, const double *w3,
+                   double *hess) noexcept nogil:
+    """hess += sum_j w3 g h^T (``tangent``), summed on its own first."""
     cdef int i, k, j
     cdef double g[5]
     cdef double h[5]
     cdef double turn[25]
+    cdef double gw
     for i in range(25):
-        hess[i] = 0.0
         turn[i] = 0.0
     for j in range(cs.z):
-        g[0] = ca[j] * cs.c[j]
-        g[1] = ca[j] * cs.s[j]
-        g[2] = sa[j]
-        g[3] = sa[j] * cs.c[j]
-        g[4] = sa[j] * cs.s[j]
-        h[0] = -sa[j] * cs.c[j]
-        h[1] = -sa[j] * cs.s[j]
-        h[2] = ca[j]
-        h[3] = ca[j] * cs.c[j]
-        h[4] = ca[j] * cs.s[j]
-        for i in range(5):  # the symmetric part, its upper triangle
-            for k in range(i, 5):
-                hess[5 * i + k] += w1[j] * g[i] * g[k] + w2[j] * h[i] * h[k]
-        if w3 != NULL:
-            for i in range(5):
-                for k in range(5):
-                    turn[5 * i + k] += w3[j] * g[i] * h[k]
+        normal_directions(cs, ca, sa, j, g, h)
+        for i in range(5):
+            gw = w3[j] * g[i]
+            for k in range(5):
+                turn[5 * i + k] += gw * h[k]
+    for i in range(25):
+        hess[i] += turn[i]
+
+
+cdef void tangent(const Case *cs, const double *ca, const double *sa, const double *w1,
+                  const double *w2, const double *w3, bint hold, double *hess) noexcept nogil:
+    """sum_j w1 g g^T + w2 h h^T (+ w3 g h^T where w3 is given), g and h the generalised
+    directions of ball j's contact normal and of its turn (``normal_directions``): with w1 =
+    dQ/d(delta), w2 = Q/d and w3 = dQ/d(alpha)/d the tangent of the ring forces. ``hold``: the
+    locked components decoupled (unit rows and columns), as the Newton matrix has them; their
+    entries are then not summed (each free entry is the same sum, ball by ball)."""
+    cdef int i, k, j, a, b, n = 0
+    cdef int free_[5]
+    cdef double g[5]
+    cdef double h[5]
+    cdef double gw, hw
+    for i in range(25):
+        hess[i] = 0.0
+    for i in range(5):
+        if not (hold and cs.locked[i]):
+            free_[n] = i
+            n += 1
+    for j in range(cs.z):
+        normal_directions(cs, ca, sa, j, g, h)
+        for a in range(n):  # the symmetric part, its upper triangle
+            i = free_[a]
+            gw = w1[j] * g[i]
+            hw = w2[j] * h[i]
+            for b in range(a, n):
+                k = free_[b]
+                hess[5 * i + k] += gw * g[k] + hw * h[k]
     for i in range(5):
         for k in range(i):
             hess[5 * i + k] = hess[5 * k + i]
-    for i in range(25):
-        hess[i] += turn[i]
+    if w3 != NULL:  # (a sum of the symmetric part is never -0: adding 0 would not change it)
+        add_turn(cs, ca, sa, w3, hess)
     if hold:
         for i in range(5):
             if cs.locked[i]:
@@ -926,12 +957,18 @@ ctypedef struct Fast:
     double *q
     double *root
     double *kappa
+    double *u
+    const int *twin  # an earlier ball to compare with (``mirror_twins``), or -1
     double grad[5]
     double res
     double energy
 
 
-cdef void fast_on(double *block, int z, Fast *st) noexcept nogil:
+cdef enum:
+    FAST_ARRAYS = 8  # the ball arrays of one Fast
+
+
+cdef void fast_on(double *block, int z, const int *twin, Fast *st) noexcept nogil:
     st.ca = block
     st.sa = block + z
     st.rho = block + 2 * z
@@ -939,13 +976,62 @@ cdef void fast_on(double *block, int z, Fast *st) noexcept nogil:
     st.q = block + 4 * z
     st.root = block + 5 * z
     st.kappa = block + 6 * z
+    st.u = block + 7 * z
+    st.twin = twin
+
+
+cdef void mirror_twins(const Case *cs, int *twin) noexcept nogil:
+    """twin[j]: the earlier ball at the mirror image of ball j about the load line (the same
+    cosine, the opposite sine), or -1. Where the ring stays on the load line, the two are at
+    the same (rho, u): ``fast_state`` takes the one's values for the other (where equal). The
+    balls' angles are ``cage + 360° j/z``: the mirror of ball j is ball m - j (mod z), m that
+    of ball 0."""
+    cdef int j, p, m = -1
+    for j in range(cs.z):
+        if cs.c[j] == cs.c[0] and cs.s[j] == -cs.s[0]:
+            m = j
+            break
+    for j in range(cs.z):
+        p = (m - j + cs.z) % cs.z if m >= 0 else -1
+        twin[j] = p if 0 <= p < j and cs.c[p] == cs.c[j] and cs.s[p] == -cs.s[j] else -1
+
+
+cdef inline void fast_ball(const Case *cs, Fast *st, int j, double rho, double u) noexcept nogil:
+    """Ball j of ``fast_state`` at the groove-centre separations (rho, u): its contact
+    direction, approach, stiffness (following the contact angle) and load."""
+    cdef double rp = max(rho, 0.0), d, safe, delta
+    d = norm(rp, u)
+    safe = d if d > 0 else 1.0
+    st.ca[j] = rp / safe
+    st.sa[j] = u / safe
+    st.rho[j] = rho
+    st.u[j] = u
+    st.d[j] = d
+    delta = max(d - cs.a_hat, 0.0)
+    st.root[j] = sqrt(delta)
+    st.kappa[j] = 0.0
+    if delta > 0:
+        st.kappa[j] = curve_kappa(cs, st.ca[j], -st.sa[j] * st.sa[j] / (1.0 + st.ca[j]))
+    st.q[j] = (1.0 + st.kappa[j]) * delta * st.root[j]
+
+
+cdef inline void fast_copy(Fast *st, int p, int j) noexcept nogil:
+    """Ball j of ``fast_state`` as ball p, at the same (rho, u)."""
+    st.ca[j] = st.ca[p]
+    st.sa[j] = st.sa[p]
+    st.rho[j] = st.rho[p]
+    st.u[j] = st.u[p]
+    st.d[j] = st.d[p]
+    st.root[j] = st.root[p]
+    st.kappa[j] = st.kappa[p]
+    st.q[j] = st.q[p]
 
 
 cdef void fast_state(const Case *cs, const double *v, Fast *st) noexcept nogil:
     """The balls, forces, residual and potential at v in plain double precision, the stiffness
     following the contact angles."""
-    cdef int j, i
-    cdef double rho, u, rp, d, safe, delta, gen[5], size[5], err[5], work = 0.0, energy = 0.0
+    cdef int j, i, p
+    cdef double rho, u, delta, gen[5], size[5], err[5], work = 0.0, energy = 0.0
     cdef double qc, qs
     for i in range(5):
         gen[i] = 0.0
@@ -955,21 +1041,14 @@ cdef void fast_state(const Case *cs, const double *v, Fast *st) noexcept nogil:
         rho = (cs.a_hat + cs.pre - cs.gap) + v[0] * cs.c[j]
         rho += v[1] * cs.s[j]
         u = (v[2] + (v[3] + cs.t_imp) * cs.c[j]) + v[4] * cs.s[j]
-        rp = max(rho, 0.0)
         if cs.one_sided:
             u = max(u, 0.0)
-        d = norm(rp, u)
-        safe = d if d > 0 else 1.0
-        st.ca[j] = rp / safe
-        st.sa[j] = u / safe
-        st.rho[j] = rho
-        st.d[j] = d
-        delta = max(d - cs.a_hat, 0.0)
-        st.root[j] = sqrt(delta)
-        st.kappa[j] = 0.0
-        if delta > 0:
-            st.kappa[j] = curve_kappa(cs, st.ca[j], -st.sa[j] * st.sa[j] / (1.0 + st.ca[j]))
-        st.q[j] = (1.0 + st.kappa[j]) * delta * st.root[j]
+        p = st.twin[j]
+        if p >= 0 and st.rho[p] == rho and st.u[p] == u:
+            fast_copy(st, p, j)  # (every value below a function of (rho, u) alone)
+        else:
+            fast_ball(cs, st, j, rho, u)
+        delta = max(st.d[j] - cs.a_hat, 0.0)
         energy += st.q[j] * delta
         qc = st.q[j] * st.ca[j]
         qs = st.q[j] * st.sa[j]
@@ -1312,14 +1391,18 @@ cdef int solve_case(const Case *cs, const double *v0, bint given, double *vh, do
     KAPPA_SETTLED nor the residual by more than 1 % (the caller's residual test judges it). Returns OK, NOT_CONVERGED (the updates ran
     out) or NO_MEMORY; wk.pt is the point at the answer with wk.kappa."""
     cdef Fast cur, trial
-    cdef double *fast_block = <double *> malloc(14 * cs.z * sizeof(double))
+    cdef double *fast_block = <double *> malloc(
+        2 * FAST_ARRAYS * cs.z * sizeof(double) + cs.z * sizeof(int))
+    cdef int *twin
     cdef int i, j, update
     cdef double end_res, change, k_new
     cdef Point *pt = &wk.pt
     if fast_block == NULL:
         return NO_MEMORY
-    fast_on(fast_block, cs.z, &cur)
-    fast_on(fast_block + 7 * cs.z, cs.z, &trial)
+    twin = <int *> (fast_block + 2 * FAST_ARRAYS * cs.z)
+    mirror_twins(cs, twin)
+    fast_on(fast_block, cs.z, twin, &cur)
+    fast_on(fast_block + FAST_ARRAYS * cs.z, cs.z, twin, &trial)
     for i in range(5):
         vh[i] = v0[i]
         vl[i] = 0.0
