@@ -126,6 +126,11 @@ cdef inline void dd_mul(double ah, double al, double bh, double bl,
 
 # ------------------------------------------------------------------------- the balls
 
+cdef inline bint same_bits(double a, double b) noexcept nogil:
+    """Whether a and b are the same number, the sign of a zero included (not NaN)."""
+    return a == b and copysign(1.0, a) == copysign(1.0, b)
+
+
 cdef inline double norm(double a, double b) noexcept nogil:
     """|(a, b)|: the scaled lengths stay far inside the range where the squares neither overflow
     nor underflow (the solver refuses loads beyond a ratio of 2e7 to the groove geometry)."""
@@ -662,6 +667,7 @@ cdef void cap_step(const Case *cs, double *step) noexcept nogil:
 
 cdef enum:
     BALL_ARRAYS = 13  # the arrays of one Point: 5 of Balls, 8 of Loads
+    FAST_ARRAYS = 8   # the ball arrays of one state of the first stage (Fast)
 
 cdef void point_on(double *block, int z, Point *pt) noexcept nogil:
     """A Point whose ball arrays are the 13 z-blocks from block."""
@@ -691,11 +697,18 @@ ctypedef struct Work:
     double *kappa  # the frozen stiffness deviations K_j/K_0 - 1
     double *w1     # tangent weights
     double *w2
+    double *fast   # the first stage's two states (2 FAST_ARRAYS z)
+    int *twin      # each ball's mirror twin (``mirror_twins``)
     double *block  # the memory of all of these
+    double sym[25] # the symmetric part of the tangent at pt (``stiffness``), its weights w1, w2
+    bint sym_at    # whether sym and w1, w2 are those of the current point
 
 
 cdef int work_open(int z, Work *wk) noexcept nogil:
-    cdef double *m = <double *> malloc((3 * BALL_ARRAYS + 9) * z * sizeof(double))
+    """The work space of a case of z balls, one block (its first stage's too: ``fast``, the
+    two states of ``solve_case`` and the balls' mirror twins)."""
+    cdef double *m = <double *> malloc(
+        (3 * BALL_ARRAYS + 9 + 2 * FAST_ARRAYS) * z * sizeof(double) + z * sizeof(int))
     if m == NULL:
         return 0
     wk.block = m
@@ -710,6 +723,9 @@ cdef int work_open(int z, Work *wk) noexcept nogil:
     wk.kappa = m + 4 * z
     wk.w1 = m + 5 * z
     wk.w2 = m + 6 * z
+    wk.fast = m + 9 * z
+    wk.twin = <int *> (wk.fast + 2 * FAST_ARRAYS * z)
+    wk.sym_at = False
     return 1
 
 
@@ -964,10 +980,6 @@ ctypedef struct Fast:
     double energy
 
 
-cdef enum:
-    FAST_ARRAYS = 8  # the ball arrays of one Fast
-
-
 cdef void fast_on(double *block, int z, const int *twin, Fast *st) noexcept nogil:
     st.ca = block
     st.sa = block + z
@@ -1044,7 +1056,7 @@ cdef void fast_state(const Case *cs, const double *v, Fast *st) noexcept nogil:
         if cs.one_sided:
             u = max(u, 0.0)
         p = st.twin[j]
-        if p >= 0 and st.rho[p] == rho and st.u[p] == u:
+        if p >= 0 and same_bits(st.rho[p], rho) and same_bits(st.u[p], u):
             fast_copy(st, p, j)  # (every value below a function of (rho, u) alone)
         else:
             fast_ball(cs, st, j, rho, u)
@@ -1117,11 +1129,12 @@ cdef int fast_newton(const Case *cs, Work *wk, Fast *cur, Fast *trial, double *v
 
 
 cdef void true_tangent(const Case *cs, Point *pt, const double *kappa, double *w1, double *w2,
-                       double *w3, double *out) noexcept nogil:
+                       double *w3, double *out, double *sym) noexcept nogil:
     """The tangent of the ring forces at the point ``pt`` with the stiffness deviations
     ``kappa`` (scaled, every component free): d(generalised force)/d(displacement), with the
     stiffness's change with the contact angle (w3) where K follows it; ``w1``, ``w2``, ``w3``
-    work arrays of z (``physical`` puts it in physical units)."""
+    work arrays of z (``physical`` puts it in physical units). ``sym``: where given, gets the
+    symmetric part (the tangent without the w3 term: ``tangent``'s sum before it adds that)."""
     cdef int j
     cdef double d
     for j in range(cs.z):
@@ -1134,12 +1147,19 @@ cdef void true_tangent(const Case *cs, Point *pt, const double *kappa, double *w
             if cs.curve != NULL and pt.lo.root[j] > 0:
                 w3[j] = (curve_slope(cs, pt.lo.ca[j], pt.lo.cam1[j]) * -pt.lo.sa[j]
                          * pt.lo.root[j] ** 3 / d)
-    tangent(cs, pt.lo.ca, pt.lo.sa, w1, w2, w3 if cs.curve != NULL else NULL, False, out)
+    if sym == NULL:
+        tangent(cs, pt.lo.ca, pt.lo.sa, w1, w2, w3 if cs.curve != NULL else NULL, False, out)
+        return
+    tangent(cs, pt.lo.ca, pt.lo.sa, w1, w2, NULL, False, sym)
+    memcpy(out, sym, 25 * sizeof(double))
+    if cs.curve != NULL:
+        add_turn(cs, pt.lo.ca, pt.lo.sa, w3, out)
 
 
 cdef void stiffness(const Case *cs, Work *wk, double *out) noexcept nogil:
     """The true tangent at the current point of a solve (``true_tangent``)."""
-    true_tangent(cs, &wk.pt, wk.kappa, wk.w1, wk.w2, wk.dd, out)  # (wk.dd free at the answer)
+    true_tangent(cs, &wk.pt, wk.kappa, wk.w1, wk.w2, wk.dd, out, wk.sym)  # (wk.dd: free there)
+    wk.sym_at = True
 
 
 cdef bint physical_case(double *t, double factor, double radius, bint mirrored,
@@ -1184,13 +1204,36 @@ def physical(double[:, :, ::1] t, const double[::1] factor, const double[::1] ra
     return bad_a
 
 
+cdef bint same_weights(const Case *cs, const Work *wk) noexcept nogil:
+    """Whether ``holding`` would weigh every ball as ``stiffness`` did (wk.w1, wk.w2): a ball
+    whose load exceeds the tolerance alike (its distance positive where it turns), any other
+    with weights 0 there too (at a finite direction: a term of +-0 leaves a sum that began at
+    +0 as it is, bit for bit)."""
+    cdef int j
+    cdef const Point *pt = &wk.pt
+    for j in range(cs.z):
+        if not (isfinite(pt.lo.ca[j]) and isfinite(pt.lo.sa[j])):
+            return False
+        if pt.lo.q[j] > cs.lim.tolerance:
+            if turns(cs, pt.b.rho[j], pt.b.u[j]) and not pt.b.d[j] > 0:
+                return False
+        elif not (wk.w1[j] == 0 and wk.w2[j] == 0):
+            return False
+    return True
+
+
 cdef void holding(const Case *cs, Work *wk, double *out) noexcept nogil:
     """The potential's Hessian at the current point (the stiffness frozen) from the balls whose
     load exceeds the tolerance (1e-12 of the largest applied load): the stiffness of the balls
     that determine the equilibrium, every component free. A null direction of it is one the
-    loads do not determine (combined._least_norm_tilt)."""
+    loads do not determine (combined._least_norm_tilt). Where every ball's weights are those
+    of ``stiffness`` just before (``same_weights``), the symmetric part it summed."""
     cdef int j
     cdef Point *pt = &wk.pt
+    if wk.sym_at and same_weights(cs, wk):
+        memcpy(out, wk.sym, 25 * sizeof(double))
+        return
+    wk.sym_at = False
     for j in range(cs.z):
         wk.w1[j] = 0.0
         wk.w2[j] = 0.0
@@ -1388,28 +1431,22 @@ cdef int solve_case(const Case *cs, const double *v0, bint given, double *vh, do
     """The first stage, then minimisations with the stiffness updated to the contact angles
     until the update leaves the equilibrium (to the tolerance), or, where the minimisation
     stalled above the tolerance, until the update changes no stiffness by more than
-    KAPPA_SETTLED nor the residual by more than 1 % (the caller's residual test judges it). Returns OK, NOT_CONVERGED (the updates ran
-    out) or NO_MEMORY; wk.pt is the point at the answer with wk.kappa."""
+    KAPPA_SETTLED nor the residual by more than 1 % (the caller's residual test judges it).
+    Returns OK or NOT_CONVERGED (the updates ran out); wk.pt is the point at the answer with
+    wk.kappa."""
     cdef Fast cur, trial
-    cdef double *fast_block = <double *> malloc(
-        2 * FAST_ARRAYS * cs.z * sizeof(double) + cs.z * sizeof(int))
-    cdef int *twin
     cdef int i, j, update
     cdef double end_res, change, k_new
     cdef Point *pt = &wk.pt
-    if fast_block == NULL:
-        return NO_MEMORY
-    twin = <int *> (fast_block + 2 * FAST_ARRAYS * cs.z)
-    mirror_twins(cs, twin)
-    fast_on(fast_block, cs.z, twin, &cur)
-    fast_on(fast_block + FAST_ARRAYS * cs.z, cs.z, twin, &trial)
+    mirror_twins(cs, wk.twin)
+    fast_on(wk.fast, cs.z, wk.twin, &cur)
+    fast_on(wk.fast + FAST_ARRAYS * cs.z, cs.z, wk.twin, &trial)
     for i in range(5):
         vh[i] = v0[i]
         vl[i] = 0.0
     if not given:
         standard_start(cs, vh)
     iterations[0] = fast_newton(cs, wk, &cur, &trial, vh)
-    free(fast_block)
     for update in range(cs.lim.max_updates):
         iterations[0] += minimise(cs, wk, vh, vl, update > 0, update == 0)
         if cs.curve == NULL:
@@ -1860,7 +1897,8 @@ cdef void add_mapped(const Pair *pr, int k, const double *t, double *out) noexce
 
 cdef void side_tangent(const Pair *pr, PairWork *wk, int k, double *t) noexcept nogil:
     """Bearing k's true tangent at the current state, local and scaled (``true_tangent``)."""
-    true_tangent(&pr.bear, &wk.cur.side[k].pt, wk.cur.side[k].kappa, wk.w1, wk.w2, wk.w3, t)
+    true_tangent(&pr.bear, &wk.cur.side[k].pt, wk.cur.side[k].kappa, wk.w1, wk.w2, wk.w3, t,
+                 NULL)
 
 
 cdef void pair_tangent(const Pair *pr, PairWork *wk, double *out) noexcept nogil:
@@ -3654,6 +3692,37 @@ def combined_problem(int z, const double[:, ::1] loads, const double[::1] cage,
     return status_a, c_a, s_a, mirror_a, held_a, f_a, out_a
 
 
+cdef void ball_angles(int z, const double[:, ::1] case_in, Py_ssize_t k,
+                      double[:, :, ::1] ball) noexcept nogil:
+    """phi_j = cage + 360° j/z mod 360° [°] of case k into ball[0, k]; those of the case
+    before where its cage angle is the same (a function of the cage angle alone: +0 and -0
+    give the same)."""
+    cdef int j
+    if k > 0 and case_in[8, k] == case_in[8, k - 1]:
+        for j in range(z):
+            ball[0, k, j] = ball[0, k - 1, j]
+        return
+    for j in range(z):
+        ball[0, k, j] = floor_mod(case_in[8, k] + 360.0 * j / z, 360.0)
+
+
+cdef void contact_angles(int z, const double *ca, const double *sa, double *out) noexcept nogil:
+    """atan2(sa, ca) [°] of every ball; a ball at the (cos, sin) of its mirror twin about the
+    load line, to the bit (ball -j or -1 - j mod z: the mirrored layouts), takes its angle."""
+    cdef int j, p, m
+    cdef bint known
+    for j in range(z):
+        known = False
+        for m in range(2):
+            p = (2 * z - m - j) % z
+            if p < j and same_bits(ca[p], ca[j]) and same_bits(sa[p], sa[j]):
+                out[j] = out[p]
+                known = True
+                break
+        if not known:
+            out[j] = atan2(sa[j], ca[j]) * (180.0 / PI)
+
+
 def combined_result(const double[:, ::1] v, const double[:, ::1] case_in,
                     const double[:, ::1] gen, const double[:, :, :] balls,
                     const double[:, ::1] kappa, bint imposed, double[:, :, ::1] tangent,
@@ -3696,9 +3765,9 @@ def combined_result(const double[:, ::1] v, const double[:, ::1] case_in,
             out[5, k] = case_in[3, k] * deg
             out[6, k] = 0.0 if case_in[5, k] else 2.0 * case_in[4, k] * sin0
             out[7, k] = lever * case_in[6, k] * gen[k, 3] if imposed else case_in[7, k]
+            ball_angles(z, case_in, k, ball)
+            contact_angles(z, &balls[5, k, 0], &balls[6, k, 0], &ball[1, k, 0])
             for j in range(z):
-                ball[0, k, j] = floor_mod(case_in[8, k] + 360.0 * j / z, 360.0)
-                ball[1, k, j] = atan2(balls[6, k, j], balls[5, k, j]) * deg
                 ball[2, k, j] = (case_in[9, k] + balls[3, k, j]) * sc
                 ball[3, k, j] = (1.0 + kappa[k, j]) * case_in[10, k]
                 ball[4, k, j] = case_in[6, k] * balls[8, k, j]
