@@ -1435,7 +1435,7 @@ cdef int solve_case(const Case *cs, const double *v0, bint given, double *vh, do
     Returns OK or NOT_CONVERGED (the updates ran out); wk.pt is the point at the answer with
     wk.kappa."""
     cdef Fast cur, trial
-    cdef int i, j, update
+    cdef int i, j, p, update
     cdef double end_res, change, k_new
     cdef Point *pt = &wk.pt
     mirror_twins(cs, wk.twin)
@@ -1455,7 +1455,12 @@ cdef int solve_case(const Case *cs, const double *v0, bint given, double *vh, do
         change = 0.0
         for j in range(cs.z):
             if pt.lo.root[j] > 0:
-                k_new = curve_kappa(cs, pt.lo.ca[j], pt.lo.cam1[j])
+                p = wk.twin[j]  # (its twin's new stiffness where its angle is the same)
+                if (p >= 0 and pt.lo.root[p] > 0 and same_bits(pt.lo.ca[p], pt.lo.ca[j])
+                        and same_bits(pt.lo.cam1[p], pt.lo.cam1[j])):
+                    k_new = wk.kappa[p]
+                else:
+                    k_new = curve_kappa(cs, pt.lo.ca[j], pt.lo.cam1[j])
                 change = max(change, fabs(k_new - wk.kappa[j]) / (1.0 + fabs(k_new)))
                 wk.kappa[j] = k_new
         evaluate(cs, wk.kappa, pt)
