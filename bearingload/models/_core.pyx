@@ -1460,26 +1460,43 @@ cdef double axial_offset(const Case *cs, double target, bint single) noexcept no
     """The axial offset u at which z balls alike, each carrying Q = (u/d) delta^1.5 axially,
     carry ``target`` z in all (scaled: K = 1), by bisection: to 4e-16 of u or, ``single``,
     until both ends round to the same single-precision number (the start needs no more; the
-    bisection of bearingload.models.combined.axial_only)."""
+    bisection of bearingload.models.combined.axial_only). Two halvings a round: the middle
+    and both midpoints it may lead to are evaluated together (independent, they overlap),
+    the halvings, their order and their stops those of one at a time."""
     cdef double g = cs.gap - cs.pre, c = cs.a_hat - g, gap2 = g * (2.0 * cs.a_hat - g)
-    cdef double lo = sqrt(max(gap2, 0.0)), hi, mid, r = target ** (1.0 / 3.0)
-    cdef int k
+    cdef double lo = sqrt(max(gap2, 0.0)), hi, mid, left, right, r = target ** (1.0 / 3.0)
+    cdef double f_mid, f_left, f_right, f_next
+    cdef int k, halvings = 0
     hi = lo + r * r + sqrt(r * cs.a_hat) + 1e-300
     for k in range(2000):
         if not axial_excess(c, gap2, cs.a_hat, hi, target) < 0:
             break
         hi *= 2.0
-    for k in range(200):
-        if not hi - lo > 4e-16 * hi:
-            break
-        if single and <float> lo == <float> hi and hi < 1e30:
-            break
+    while halvings < 200 and not bisected(lo, hi, single):
         mid = 0.5 * (lo + hi)
-        if axial_excess(c, gap2, cs.a_hat, mid, target) < 0:
-            lo = mid
+        left = 0.5 * (lo + mid)  # (the next middle where the root is below mid)
+        right = 0.5 * (mid + hi)
+        f_mid = axial_excess(c, gap2, cs.a_hat, mid, target)
+        f_left = axial_excess(c, gap2, cs.a_hat, left, target)
+        f_right = axial_excess(c, gap2, cs.a_hat, right, target)
+        if f_mid < 0:
+            lo, f_next = mid, f_right
         else:
-            hi = mid
+            hi, f_next = mid, f_left
+        halvings += 1
+        if halvings >= 200 or bisected(lo, hi, single):
+            break
+        if f_next < 0:  # (0.5 (lo + hi) is now right or left, as computed)
+            lo = 0.5 * (lo + hi)
+        else:
+            hi = 0.5 * (lo + hi)
+        halvings += 1
     return 0.5 * (lo + hi)
+
+
+cdef inline bint bisected(double lo, double hi, bint single) noexcept nogil:
+    """Whether ``axial_offset``'s bisection stops at [lo, hi]."""
+    return not hi - lo > 4e-16 * hi or (single and <float> lo == <float> hi and hi < 1e30)
 
 
 cdef inline double axial_excess(double c, double gap2, double a, double u,
