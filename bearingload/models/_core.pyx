@@ -1254,24 +1254,36 @@ cdef int fast_newton(const Case *cs, Work *wk, Fast *cur, Fast *trial, double *v
 
 
 cdef void true_tangent(const Case *cs, Point *pt, const double *kappa, double *w1, double *w2,
-                       double *w3, double *out, double *sym) noexcept nogil:
+                       double *w3, double *out, double *sym, const int *twin,
+                       double *slope) noexcept nogil:
     """The tangent of the ring forces at the point ``pt`` with the stiffness deviations
     ``kappa`` (scaled, every component free): d(generalised force)/d(displacement), with the
     stiffness's change with the contact angle (w3) where K follows it; ``w1``, ``w2``, ``w3``
     work arrays of z (``physical`` puts it in physical units). ``sym``: where given, gets the
-    symmetric part (the tangent without the w3 term: ``tangent``'s sum before it adds that)."""
-    cdef int j
+    symmetric part (the tangent without the w3 term: ``tangent``'s sum before it adds that).
+    ``twin``, ``slope``: where given, the balls' mirror twins and a work array of z: a ball
+    whose cos(alpha) and cos(alpha) - 1 are its twin's to the bit takes the twin's slope."""
+    cdef int j, p
     cdef double d
     for j in range(cs.z):
         d = pt.b.d[j] if pt.b.d[j] > 0 else 1.0
         w1[j] = 1.5 * (1.0 + kappa[j]) * pt.lo.root[j]
         w2[j] = 0.0
         w3[j] = 0.0
+        if twin != NULL:
+            slope[j] = NAN
         if turns(cs, pt.b.rho[j], pt.b.u[j]):
             w2[j] = pt.lo.q[j] / d
             if cs.curve != NULL and pt.lo.root[j] > 0:
-                w3[j] = (curve_slope(cs, pt.lo.ca[j], pt.lo.cam1[j]) * -pt.lo.sa[j]
-                         * pt.lo.root[j] ** 3 / d)
+                p = twin[j] if twin != NULL else -1
+                if (p >= 0 and slope[p] == slope[p] and same_bits(pt.lo.ca[p], pt.lo.ca[j])
+                        and same_bits(pt.lo.cam1[p], pt.lo.cam1[j])):
+                    w3[j] = slope[p]
+                else:
+                    w3[j] = curve_slope(cs, pt.lo.ca[j], pt.lo.cam1[j])
+                if twin != NULL:
+                    slope[j] = w3[j]
+                w3[j] = w3[j] * -pt.lo.sa[j] * pt.lo.root[j] ** 3 / d
     if sym == NULL:
         tangent(cs, pt.lo.ca, pt.lo.sa, w1, w2, w3 if cs.curve != NULL else NULL, False, out)
         return
@@ -1283,7 +1295,8 @@ cdef void true_tangent(const Case *cs, Point *pt, const double *kappa, double *w
 
 cdef void stiffness(const Case *cs, Work *wk, double *out) noexcept nogil:
     """The true tangent at the current point of a solve (``true_tangent``)."""
-    true_tangent(cs, &wk.pt, wk.kappa, wk.w1, wk.w2, wk.dd, out, wk.sym)  # (wk.dd: free there)
+    true_tangent(cs, &wk.pt, wk.kappa, wk.w1, wk.w2, wk.dd, out, wk.sym, wk.twin,
+                 wk.ddr)  # (wk.dd, wk.ddr: free at the answer)
     wk.sym_at = True
 
 
@@ -2045,7 +2058,7 @@ cdef void add_mapped(const Pair *pr, int k, const double *t, double *out) noexce
 cdef void side_tangent(const Pair *pr, PairWork *wk, int k, double *t) noexcept nogil:
     """Bearing k's true tangent at the current state, local and scaled (``true_tangent``)."""
     true_tangent(&pr.bear, &wk.cur.side[k].pt, wk.cur.side[k].kappa, wk.w1, wk.w2, wk.w3, t,
-                 NULL)
+                 NULL, NULL, NULL)
 
 
 cdef void pair_tangent(const Pair *pr, PairWork *wk, double *out) noexcept nogil:
