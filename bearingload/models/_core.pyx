@@ -1662,6 +1662,25 @@ cdef bint ball_directions(int z, double cage, double snap, double *c, double *s)
     return mirror
 
 
+def held_solves(const double[:, ::1] a, const double[:, ::1] b,
+                const unsigned char[:, ::1] held):
+    """``solve5`` and ``solve_held`` of n 5x5 systems ``a`` (n, 25, row-major), ``b`` (n, 5)
+    with the components ``held`` (n, 5) uint8: their x (2, n, 5), which are to be the same
+    bits (tests/test_core_held_solve.py)."""
+    cdef Py_ssize_t n = a.shape[0], k
+    cdef Case cs
+    cdef int i
+    out_a = np.empty((2, n, 5))
+    cdef double[:, :, ::1] out = out_a
+    with nogil:
+        for k in range(n):
+            for i in range(5):
+                cs.locked[i] = held[k, i]
+            solve5(&a[k, 0], &b[k, 0], &out[0, k, 0])
+            solve_held(&cs, &a[k, 0], &b[k, 0], &out[1, k, 0])
+    return out_a
+
+
 def directions(int z, const double[::1] cage, double snap):
     """cos and sin of every ball's angle (n, z) each and which cases are symmetric about the
     load line (n,) bool, for the cage angles ``cage`` (n,) [°] (``ball_directions``)."""
