@@ -126,6 +126,11 @@ cdef inline void dd_mul(double ah, double al, double bh, double bl,
 
 # ------------------------------------------------------------------------- the balls
 
+cdef inline bint same_bits(double a, double b) noexcept nogil:
+    """Whether a and b are the same number, the sign of a zero included (not NaN)."""
+    return a == b and copysign(1.0, a) == copysign(1.0, b)
+
+
 cdef inline double norm(double a, double b) noexcept nogil:
     """|(a, b)|: the scaled lengths stay far inside the range where the squares neither overflow
     nor underflow (the solver refuses loads beyond a ratio of 2e7 to the groove geometry)."""
@@ -540,43 +545,74 @@ cdef inline bint turns(const Case *cs, double rho, double u) noexcept nogil:
     return rho > 0 and (not cs.one_sided or u > 0)
 
 
-cdef void tangent(const Case *cs, const double *ca, const double *sa, const double *w1,
-                  const double *w2, const double *w3, bint hold, double *hess) noexcept nogil:
-    """sum_j w1 g g^T + w2 h h^T (+ w3 g h^T where w3 is given), g = (ca c, ca s, sa, sa c,
-    sa s) the generalised direction of ball j's contact normal, h = that of the direction in
-    which it turns ((ca, sa) turned to (-sa, ca)): with w1 = dQ/d(delta), w2 = Q/d and w3 =
-    dQ/d(alpha)/d the tangent of the ring forces. ``hold``: the
-    locked components decoupled (unit rows and columns), as the Newton matrix has them."""
+cdef inline void normal_directions(const Case *cs, const double *ca, const double *sa, int j,
+                                   double *g, double *h) noexcept nogil:
+    """g = (ca c, ca s, sa, sa c, sa s), the generalised direction of ball j's contact normal,
+    and h, that of the direction in which it turns ((ca, sa) turned to (-sa, ca))."""
+    g[0] = ca[j] * cs.c[j]
+    g[1] = ca[j] * cs.s[j]
+    g[2] = sa[j]
+    g[3] = sa[j] * cs.c[j]
+    g[4] = sa[j] * cs.s[j]
+    h[0] = -sa[j] * cs.c[j]
+    h[1] = -sa[j] * cs.s[j]
+    h[2] = ca[j]
+    h[3] = ca[j] * cs.c[j]
+    h[4] = ca[j] * cs.s[j]
+
+
+cdef void add_turn(const Case *cs, const double *ca, const double *sa, const double *w3,
+                   double *hess) noexcept nogil:
+    """hess += sum_j w3 g h^T (``tangent``), summed on its own first."""
     cdef int i, k, j
     cdef double g[5]
     cdef double h[5]
     cdef double turn[25]
+    cdef double gw
     for i in range(25):
-        hess[i] = 0.0
         turn[i] = 0.0
     for j in range(cs.z):
-        g[0] = ca[j] * cs.c[j]
-        g[1] = ca[j] * cs.s[j]
-        g[2] = sa[j]
-        g[3] = sa[j] * cs.c[j]
-        g[4] = sa[j] * cs.s[j]
-        h[0] = -sa[j] * cs.c[j]
-        h[1] = -sa[j] * cs.s[j]
-        h[2] = ca[j]
-        h[3] = ca[j] * cs.c[j]
-        h[4] = ca[j] * cs.s[j]
-        for i in range(5):  # the symmetric part, its upper triangle
-            for k in range(i, 5):
-                hess[5 * i + k] += w1[j] * g[i] * g[k] + w2[j] * h[i] * h[k]
-        if w3 != NULL:
-            for i in range(5):
-                for k in range(5):
-                    turn[5 * i + k] += w3[j] * g[i] * h[k]
+        normal_directions(cs, ca, sa, j, g, h)
+        for i in range(5):
+            gw = w3[j] * g[i]
+            for k in range(5):
+                turn[5 * i + k] += gw * h[k]
+    for i in range(25):
+        hess[i] += turn[i]
+
+
+cdef void tangent(const Case *cs, const double *ca, const double *sa, const double *w1,
+                  const double *w2, const double *w3, bint hold, double *hess) noexcept nogil:
+    """sum_j w1 g g^T + w2 h h^T (+ w3 g h^T where w3 is given), g and h the generalised
+    directions of ball j's contact normal and of its turn (``normal_directions``): with w1 =
+    dQ/d(delta), w2 = Q/d and w3 = dQ/d(alpha)/d the tangent of the ring forces. ``hold``: the
+    locked components decoupled (unit rows and columns), as the Newton matrix has them; their
+    entries are then not summed (each free entry is the same sum, ball by ball)."""
+    cdef int i, k, j, a, b, n = 0
+    cdef int free_[5]
+    cdef double g[5]
+    cdef double h[5]
+    cdef double gw, hw
+    for i in range(25):
+        hess[i] = 0.0
+    for i in range(5):
+        if not (hold and cs.locked[i]):
+            free_[n] = i
+            n += 1
+    for j in range(cs.z):
+        normal_directions(cs, ca, sa, j, g, h)
+        for a in range(n):  # the symmetric part, its upper triangle
+            i = free_[a]
+            gw = w1[j] * g[i]
+            hw = w2[j] * h[i]
+            for b in range(a, n):
+                k = free_[b]
+                hess[5 * i + k] += gw * g[k] + hw * h[k]
     for i in range(5):
         for k in range(i):
             hess[5 * i + k] = hess[5 * k + i]
-    for i in range(25):
-        hess[i] += turn[i]
+    if w3 != NULL:  # (a sum of the symmetric part is never -0: adding 0 would not change it)
+        add_turn(cs, ca, sa, w3, hess)
     if hold:
         for i in range(5):
             if cs.locked[i]:
@@ -622,6 +658,99 @@ cdef void solve5(const double *a, const double *b, double *x) noexcept nogil:
         x[i] = t / m[6 * i]
 
 
+cdef inline bint minus_zero(double v) noexcept nogil:
+    return v == 0 and copysign(1.0, v) < 0
+
+
+cdef bint held_form(const Case *cs, const double *a, const double *b) noexcept nogil:
+    """Whether every held row and column of the 5x5 ``a`` is +0 but its diagonal (positive,
+    finite) and ``b`` is 0 there: ``tangent``'s Newton matrix (``solve_held``)."""
+    cdef int i, k
+    for i in range(5):
+        if not cs.locked[i]:
+            continue
+        if not (b[i] == 0 and a[6 * i] > 0 and isfinite(a[6 * i])):
+            return False
+        for k in range(5):
+            if k != i and not (a[5 * i + k] == 0 and a[5 * k + i] == 0
+                               and copysign(1.0, a[5 * i + k]) > 0
+                               and copysign(1.0, a[5 * k + i]) > 0):
+                return False
+    return True
+
+
+cdef void solve_held(const Case *cs, const double *a, const double *b, double *x) noexcept nogil:
+    """``solve5`` of a Newton matrix whose held components are unit rows and columns
+    (``held_form``), to the bit, with the arithmetic of the free rows and columns alone.
+    There, solve5's operations on a held row or column are +-0 (a +0 over a finite nonzero
+    pivot, times finite numbers): they change no free number but the sign of a zero of the
+    right-hand side or of a back substitution's sum (x - (-0) turns -0 into +0); those signs
+    are followed here. Where a pivot is 0 or not finite, or an x not finite (those +-0 would
+    be NaN there), solve5 itself."""
+    cdef double m[25]
+    cdef double r[5]
+    cdef double t
+    cdef int i, k, col, piv
+    if not held_form(cs, a, b):
+        solve5(a, b, x)
+        return
+    memcpy(m, a, 25 * sizeof(double))
+    memcpy(r, b, 5 * sizeof(double))
+    for col in range(5):
+        if cs.locked[col]:  # r[i] -= (+0 / its diagonal) r[col], each row below
+            if minus_zero(r[col]):
+                for i in range(col + 1, 5):
+                    if minus_zero(r[i]):
+                        r[i] = 0.0
+            continue
+        piv = col
+        for i in range(col + 1, 5):
+            if not cs.locked[i] and fabs(m[5 * i + col]) > fabs(m[5 * piv + col]):
+                piv = i
+        if piv != col:
+            for k in range(5):
+                t = m[5 * col + k]
+                m[5 * col + k] = m[5 * piv + k]
+                m[5 * piv + k] = t
+            t = r[col]
+            r[col] = r[piv]
+            r[piv] = t
+        if not (m[6 * col] != 0 and isfinite(m[6 * col])):
+            solve5(a, b, x)
+            return
+        for i in range(col + 1, 5):
+            if cs.locked[i]:  # r[i] -= (+0 / pivot: its sign) r[col]
+                if minus_zero(r[i]) and (m[6 * col] < 0) != (copysign(1.0, r[col]) < 0):
+                    r[i] = 0.0
+                continue
+            t = m[5 * i + col] / m[5 * col + col]
+            for k in range(col, 5):
+                if not cs.locked[k]:
+                    m[5 * i + k] -= t * m[5 * col + k]
+            r[i] -= t * r[col]
+    if not back_held(cs, m, r, x):
+        solve5(a, b, x)
+
+
+cdef bint back_held(const Case *cs, const double *m, const double *r, double *x) noexcept nogil:
+    """The back substitution of ``solve_held`` (a held row's or column's term +0 x_k, its
+    sign followed); whether every x is finite."""
+    cdef int i, k
+    cdef double t
+    for i in range(4, -1, -1):
+        t = r[i]
+        for k in range(i + 1, 5):
+            if cs.locked[i] or cs.locked[k]:  # t -= +0 x[k]: -0 turns +0 where x[k] < 0
+                if minus_zero(t) and copysign(1.0, x[k]) < 0:
+                    t = 0.0
+            else:
+                t -= m[5 * i + k] * x[k]
+        x[i] = t / m[6 * i]
+        if not isfinite(x[i]):
+            return False
+    return True
+
+
 cdef void cap_step(const Case *cs, double *step) noexcept nogil:
     """One-sided cases: the step shortened so that no axial part (a, t, t_c) exceeds A (a ball
     at u < 0 has no stiffness along its groove; _combined_ring.cap_step)."""
@@ -641,6 +770,7 @@ cdef void cap_step(const Case *cs, double *step) noexcept nogil:
 
 cdef enum:
     BALL_ARRAYS = 13  # the arrays of one Point: 5 of Balls, 8 of Loads
+    FAST_ARRAYS = 8   # the ball arrays of one state of the first stage (Fast)
 
 cdef void point_on(double *block, int z, Point *pt) noexcept nogil:
     """A Point whose ball arrays are the 13 z-blocks from block."""
@@ -670,11 +800,18 @@ ctypedef struct Work:
     double *kappa  # the frozen stiffness deviations K_j/K_0 - 1
     double *w1     # tangent weights
     double *w2
+    double *fast   # the first stage's two states (2 FAST_ARRAYS z)
+    int *twin      # each ball's mirror twin (``mirror_twins``)
     double *block  # the memory of all of these
+    double sym[25] # the symmetric part of the tangent at pt (``stiffness``), its weights w1, w2
+    bint sym_at    # whether sym and w1, w2 are those of the current point
 
 
 cdef int work_open(int z, Work *wk) noexcept nogil:
-    cdef double *m = <double *> malloc((3 * BALL_ARRAYS + 9) * z * sizeof(double))
+    """The work space of a case of z balls, one block (its first stage's too: ``fast``, the
+    two states of ``solve_case`` and the balls' mirror twins)."""
+    cdef double *m = <double *> malloc(
+        (3 * BALL_ARRAYS + 9 + 2 * FAST_ARRAYS) * z * sizeof(double) + 3 * z * sizeof(int))
     if m == NULL:
         return 0
     wk.block = m
@@ -689,6 +826,9 @@ cdef int work_open(int z, Work *wk) noexcept nogil:
     wk.kappa = m + 4 * z
     wk.w1 = m + 5 * z
     wk.w2 = m + 6 * z
+    wk.fast = m + 9 * z
+    wk.twin = <int *> (wk.fast + 2 * FAST_ARRAYS * z)
+    wk.sym_at = False
     return 1
 
 
@@ -789,7 +929,7 @@ cdef void newton_step(const Case *cs, Work *wk, const double *grad, double *step
     reg = 1e-13 * trace + 1e-300
     for i in range(5):
         hess[6 * i] += reg
-    solve5(hess, minus, step)
+    solve_held(cs, hess, minus, step)
     cap_step(cs, step)
     if not trace > held:  # no ball in contact: move along the load to the first contact
         to_contact(cs, pt, step)
@@ -855,7 +995,7 @@ cdef void line_search(const Case *cs, Work *wk, const double *step, const double
         if slow and (not ok or wk.trial.res > 0.9 * res):
             for i in range(5):
                 left[i] = 0.0 if cs.locked[i] else cs.f[i] - wk.trial.gen[i]
-            solve5(hess, left, fix)
+            solve_held(cs, hess, left, fix)
             cap_step(cs, fix)
             for i in range(5):
                 w2[i] = w[i] + fix[i]
@@ -936,12 +1076,16 @@ ctypedef struct Fast:
     double *q
     double *root
     double *kappa
+    double *u
+    const int *twin  # an earlier ball to compare with (``mirror_twins``), or -1
+    int *todo        # work space (z): the balls whose stiffness is interpolated
+    int *src         # work space (z): the ball whose values a ball takes (itself or its twin)
     double grad[5]
     double res
     double energy
 
 
-cdef void fast_on(double *block, int z, Fast *st) noexcept nogil:
+cdef void fast_on(double *block, int z, const int *twin, int *scratch, Fast *st) noexcept nogil:
     st.ca = block
     st.sa = block + z
     st.rho = block + 2 * z
@@ -949,13 +1093,85 @@ cdef void fast_on(double *block, int z, Fast *st) noexcept nogil:
     st.q = block + 4 * z
     st.root = block + 5 * z
     st.kappa = block + 6 * z
+    st.u = block + 7 * z
+    st.twin = twin
+    st.todo = scratch
+    st.src = scratch + z
+
+
+cdef void mirror_twins(const Case *cs, int *twin) noexcept nogil:
+    """twin[j]: the earlier ball at the mirror image of ball j about the load line (the same
+    cosine, the opposite sine), or -1. Where the ring stays on the load line, the two are at
+    the same (rho, u): ``fast_state`` takes the one's values for the other (where equal). The
+    balls' angles are ``cage + 360° j/z``: the mirror of ball j is ball m - j (mod z), m that
+    of ball 0."""
+    cdef int j, p, m = -1
+    for j in range(cs.z):
+        if cs.c[j] == cs.c[0] and cs.s[j] == -cs.s[0]:
+            m = j
+            break
+    for j in range(cs.z):
+        p = (m - j + cs.z) % cs.z if m >= 0 else -1
+        twin[j] = p if 0 <= p < j and cs.c[p] == cs.c[j] and cs.s[p] == -cs.s[j] else -1
+
+
+cdef inline bint fast_ball(const Case *cs, Fast *st, int j, double rho, double u) noexcept nogil:
+    """Ball j of ``fast_state`` at the groove-centre separations (rho, u): its contact
+    direction, approach, stiffness (following the contact angle) and load."""
+    cdef double rp = max(rho, 0.0), d, safe, delta
+    d = norm(rp, u)
+    safe = d if d > 0 else 1.0
+    st.ca[j] = rp / safe
+    st.sa[j] = u / safe
+    st.rho[j] = rho
+    st.u[j] = u
+    st.d[j] = d
+    delta = max(d - cs.a_hat, 0.0)
+    st.root[j] = sqrt(delta)
+    st.kappa[j] = 0.0
+    return delta > 0 and cs.curve != NULL
+
+
+cdef inline void fast_copy(Fast *st, int p, int j) noexcept nogil:
+    """Ball j of ``fast_state`` as ball p, at the same (rho, u)."""
+    st.ca[j] = st.ca[p]
+    st.sa[j] = st.sa[p]
+    st.rho[j] = st.rho[p]
+    st.u[j] = st.u[p]
+    st.d[j] = st.d[p]
+    st.root[j] = st.root[p]
+
+
+cdef void curve_pairs(const Case *cs, Fast *st, int n) noexcept nogil:
+    """``curve_kappa`` of the balls st.todo[:n] into st.kappa, two balls at a time (each
+    ball's sums in the order of the nodes, the same bits; the two chains of additions
+    interleaved), an odd last one alone."""
+    cdef int i, k, j0, j1
+    cdef double t0, t1, a0, a1, n0 = 0.0, n1 = 0.0, d0 = 0.0, d1 = 0.0
+    for i in range(0, n - 1, 2):
+        j0, j1 = st.todo[i], st.todo[i + 1]
+        t0 = 2.0 * min(max(st.ca[j0], 0.0), 1.0) - 1.0
+        t1 = 2.0 * min(max(st.ca[j1], 0.0), 1.0) - 1.0
+        n0 = n1 = d0 = d1 = 0.0
+        for k in range(NODES):
+            a0 = cs.node_w[k] / (t0 - cs.node_x[k])
+            a1 = cs.node_w[k] / (t1 - cs.node_x[k])
+            n0 += a0 * cs.curve[k]
+            d0 += a0
+            n1 += a1 * cs.curve[k]
+            d1 += a1
+        st.kappa[j0] = (-st.sa[j0] * st.sa[j0] / (1.0 + st.ca[j0])) * n0 / d0
+        st.kappa[j1] = (-st.sa[j1] * st.sa[j1] / (1.0 + st.ca[j1])) * n1 / d1
+    if n % 2:
+        j0 = st.todo[n - 1]
+        st.kappa[j0] = curve_kappa(cs, st.ca[j0], -st.sa[j0] * st.sa[j0] / (1.0 + st.ca[j0]))
 
 
 cdef void fast_state(const Case *cs, const double *v, Fast *st) noexcept nogil:
     """The balls, forces, residual and potential at v in plain double precision, the stiffness
     following the contact angles."""
-    cdef int j, i
-    cdef double rho, u, rp, d, safe, delta, gen[5], size[5], err[5], work = 0.0, energy = 0.0
+    cdef int j, i, p, n = 0
+    cdef double rho, u, delta, gen[5], size[5], err[5], work = 0.0, energy = 0.0
     cdef double qc, qs
     for i in range(5):
         gen[i] = 0.0
@@ -965,20 +1181,20 @@ cdef void fast_state(const Case *cs, const double *v, Fast *st) noexcept nogil:
         rho = (cs.a_hat + cs.pre - cs.gap) + v[0] * cs.c[j]
         rho += v[1] * cs.s[j]
         u = (v[2] + (v[3] + cs.t_imp) * cs.c[j]) + v[4] * cs.s[j]
-        rp = max(rho, 0.0)
         if cs.one_sided:
             u = max(u, 0.0)
-        d = norm(rp, u)
-        safe = d if d > 0 else 1.0
-        st.ca[j] = rp / safe
-        st.sa[j] = u / safe
-        st.rho[j] = rho
-        st.d[j] = d
-        delta = max(d - cs.a_hat, 0.0)
-        st.root[j] = sqrt(delta)
-        st.kappa[j] = 0.0
-        if delta > 0:
-            st.kappa[j] = curve_kappa(cs, st.ca[j], -st.sa[j] * st.sa[j] / (1.0 + st.ca[j]))
+        p = st.twin[j]
+        st.src[j] = j
+        if p >= 0 and same_bits(st.rho[p], rho) and same_bits(st.u[p], u):
+            fast_copy(st, p, j)  # (every value here a function of (rho, u) alone)
+            st.src[j] = p
+        elif fast_ball(cs, st, j, rho, u):
+            st.todo[n] = j
+            n += 1
+    curve_pairs(cs, st, n)
+    for j in range(cs.z):
+        st.kappa[j] = st.kappa[st.src[j]]
+        delta = max(st.d[j] - cs.a_hat, 0.0)
         st.q[j] = (1.0 + st.kappa[j]) * delta * st.root[j]
         energy += st.q[j] * delta
         qc = st.q[j] * st.ca[j]
@@ -1019,7 +1235,7 @@ cdef int fast_newton(const Case *cs, Work *wk, Fast *cur, Fast *trial, double *v
             minus[i] = -cur.grad[i]
         for i in range(5):
             hess[6 * i] += 1e-13 * trace
-        solve5(hess, minus, step)
+        solve_held(cs, hess, minus, step)
         cap_step(cs, step)
         slope = 0.0
         for i in range(5):
@@ -1048,29 +1264,50 @@ cdef int fast_newton(const Case *cs, Work *wk, Fast *cur, Fast *trial, double *v
 
 
 cdef void true_tangent(const Case *cs, Point *pt, const double *kappa, double *w1, double *w2,
-                       double *w3, double *out) noexcept nogil:
+                       double *w3, double *out, double *sym, const int *twin,
+                       double *slope) noexcept nogil:
     """The tangent of the ring forces at the point ``pt`` with the stiffness deviations
     ``kappa`` (scaled, every component free): d(generalised force)/d(displacement), with the
     stiffness's change with the contact angle (w3) where K follows it; ``w1``, ``w2``, ``w3``
-    work arrays of z (``physical`` puts it in physical units)."""
-    cdef int j
+    work arrays of z (``physical`` puts it in physical units). ``sym``: where given, gets the
+    symmetric part (the tangent without the w3 term: ``tangent``'s sum before it adds that).
+    ``twin``, ``slope``: where given, the balls' mirror twins and a work array of z: a ball
+    whose cos(alpha) and cos(alpha) - 1 are its twin's to the bit takes the twin's slope."""
+    cdef int j, p
     cdef double d
     for j in range(cs.z):
         d = pt.b.d[j] if pt.b.d[j] > 0 else 1.0
         w1[j] = 1.5 * (1.0 + kappa[j]) * pt.lo.root[j]
         w2[j] = 0.0
         w3[j] = 0.0
+        if twin != NULL:
+            slope[j] = NAN
         if turns(cs, pt.b.rho[j], pt.b.u[j]):
             w2[j] = pt.lo.q[j] / d
             if cs.curve != NULL and pt.lo.root[j] > 0:
-                w3[j] = (curve_slope(cs, pt.lo.ca[j], pt.lo.cam1[j]) * -pt.lo.sa[j]
-                         * pt.lo.root[j] ** 3 / d)
-    tangent(cs, pt.lo.ca, pt.lo.sa, w1, w2, w3 if cs.curve != NULL else NULL, False, out)
+                p = twin[j] if twin != NULL else -1
+                if (p >= 0 and slope[p] == slope[p] and same_bits(pt.lo.ca[p], pt.lo.ca[j])
+                        and same_bits(pt.lo.cam1[p], pt.lo.cam1[j])):
+                    w3[j] = slope[p]
+                else:
+                    w3[j] = curve_slope(cs, pt.lo.ca[j], pt.lo.cam1[j])
+                if twin != NULL:
+                    slope[j] = w3[j]
+                w3[j] = w3[j] * -pt.lo.sa[j] * pt.lo.root[j] ** 3 / d
+    if sym == NULL:
+        tangent(cs, pt.lo.ca, pt.lo.sa, w1, w2, w3 if cs.curve != NULL else NULL, False, out)
+        return
+    tangent(cs, pt.lo.ca, pt.lo.sa, w1, w2, NULL, False, sym)
+    memcpy(out, sym, 25 * sizeof(double))
+    if cs.curve != NULL:
+        add_turn(cs, pt.lo.ca, pt.lo.sa, w3, out)
 
 
 cdef void stiffness(const Case *cs, Work *wk, double *out) noexcept nogil:
     """The true tangent at the current point of a solve (``true_tangent``)."""
-    true_tangent(cs, &wk.pt, wk.kappa, wk.w1, wk.w2, wk.dd, out)  # (wk.dd free at the answer)
+    true_tangent(cs, &wk.pt, wk.kappa, wk.w1, wk.w2, wk.dd, out, wk.sym, wk.twin,
+                 wk.ddr)  # (wk.dd, wk.ddr: free at the answer)
+    wk.sym_at = True
 
 
 cdef bint physical_case(double *t, double factor, double radius, bint mirrored,
@@ -1115,13 +1352,36 @@ def physical(double[:, :, ::1] t, const double[::1] factor, const double[::1] ra
     return bad_a
 
 
+cdef bint same_weights(const Case *cs, const Work *wk) noexcept nogil:
+    """Whether ``holding`` would weigh every ball as ``stiffness`` did (wk.w1, wk.w2): a ball
+    whose load exceeds the tolerance alike (its distance positive where it turns), any other
+    with weights 0 there too (at a finite direction: a term of +-0 leaves a sum that began at
+    +0 as it is, bit for bit)."""
+    cdef int j
+    cdef const Point *pt = &wk.pt
+    for j in range(cs.z):
+        if not (isfinite(pt.lo.ca[j]) and isfinite(pt.lo.sa[j])):
+            return False
+        if pt.lo.q[j] > cs.lim.tolerance:
+            if turns(cs, pt.b.rho[j], pt.b.u[j]) and not pt.b.d[j] > 0:
+                return False
+        elif not (wk.w1[j] == 0 and wk.w2[j] == 0):
+            return False
+    return True
+
+
 cdef void holding(const Case *cs, Work *wk, double *out) noexcept nogil:
     """The potential's Hessian at the current point (the stiffness frozen) from the balls whose
     load exceeds the tolerance (1e-12 of the largest applied load): the stiffness of the balls
     that determine the equilibrium, every component free. A null direction of it is one the
-    loads do not determine (combined._least_norm_tilt)."""
+    loads do not determine (combined._least_norm_tilt). Where every ball's weights are those
+    of ``stiffness`` just before (``same_weights``), the symmetric part it summed."""
     cdef int j
     cdef Point *pt = &wk.pt
+    if wk.sym_at and same_weights(cs, wk):
+        memcpy(out, wk.sym, 25 * sizeof(double))
+        return
+    wk.sym_at = False
     for j in range(cs.z):
         wk.w1[j] = 0.0
         wk.w2[j] = 0.0
@@ -1255,26 +1515,43 @@ cdef double axial_offset(const Case *cs, double target, bint single) noexcept no
     """The axial offset u at which z balls alike, each carrying Q = (u/d) delta^1.5 axially,
     carry ``target`` z in all (scaled: K = 1), by bisection: to 4e-16 of u or, ``single``,
     until both ends round to the same single-precision number (the start needs no more; the
-    bisection of bearingload.models.combined.axial_only)."""
+    bisection of bearingload.models.combined.axial_only). Two halvings a round: the middle
+    and both midpoints it may lead to are evaluated together (independent, they overlap),
+    the halvings, their order and their stops those of one at a time."""
     cdef double g = cs.gap - cs.pre, c = cs.a_hat - g, gap2 = g * (2.0 * cs.a_hat - g)
-    cdef double lo = sqrt(max(gap2, 0.0)), hi, mid, r = target ** (1.0 / 3.0)
-    cdef int k
+    cdef double lo = sqrt(max(gap2, 0.0)), hi, mid, left, right, r = target ** (1.0 / 3.0)
+    cdef double f_mid, f_left, f_right, f_next
+    cdef int k, halvings = 0
     hi = lo + r * r + sqrt(r * cs.a_hat) + 1e-300
     for k in range(2000):
         if not axial_excess(c, gap2, cs.a_hat, hi, target) < 0:
             break
         hi *= 2.0
-    for k in range(200):
-        if not hi - lo > 4e-16 * hi:
-            break
-        if single and <float> lo == <float> hi and hi < 1e30:
-            break
+    while halvings < 200 and not bisected(lo, hi, single):
         mid = 0.5 * (lo + hi)
-        if axial_excess(c, gap2, cs.a_hat, mid, target) < 0:
-            lo = mid
+        left = 0.5 * (lo + mid)  # (the next middle where the root is below mid)
+        right = 0.5 * (mid + hi)
+        f_mid = axial_excess(c, gap2, cs.a_hat, mid, target)
+        f_left = axial_excess(c, gap2, cs.a_hat, left, target)
+        f_right = axial_excess(c, gap2, cs.a_hat, right, target)
+        if f_mid < 0:
+            lo, f_next = mid, f_right
         else:
-            hi = mid
+            hi, f_next = mid, f_left
+        halvings += 1
+        if halvings >= 200 or bisected(lo, hi, single):
+            break
+        if f_next < 0:  # (0.5 (lo + hi) is now right or left, as computed)
+            lo = 0.5 * (lo + hi)
+        else:
+            hi = 0.5 * (lo + hi)
+        halvings += 1
     return 0.5 * (lo + hi)
+
+
+cdef inline bint bisected(double lo, double hi, bint single) noexcept nogil:
+    """Whether ``axial_offset``'s bisection stops at [lo, hi]."""
+    return not hi - lo > 4e-16 * hi or (single and <float> lo == <float> hi and hi < 1e30)
 
 
 cdef inline double axial_excess(double c, double gap2, double a, double u,
@@ -1319,24 +1596,22 @@ cdef int solve_case(const Case *cs, const double *v0, bint given, double *vh, do
     """The first stage, then minimisations with the stiffness updated to the contact angles
     until the update leaves the equilibrium (to the tolerance), or, where the minimisation
     stalled above the tolerance, until the update changes no stiffness by more than
-    KAPPA_SETTLED nor the residual by more than 1 % (the caller's residual test judges it). Returns OK, NOT_CONVERGED (the updates ran
-    out) or NO_MEMORY; wk.pt is the point at the answer with wk.kappa."""
+    KAPPA_SETTLED nor the residual by more than 1 % (the caller's residual test judges it).
+    Returns OK or NOT_CONVERGED (the updates ran out); wk.pt is the point at the answer with
+    wk.kappa."""
     cdef Fast cur, trial
-    cdef double *fast_block = <double *> malloc(14 * cs.z * sizeof(double))
-    cdef int i, j, update
+    cdef int i, j, p, update
     cdef double end_res, change, k_new
     cdef Point *pt = &wk.pt
-    if fast_block == NULL:
-        return NO_MEMORY
-    fast_on(fast_block, cs.z, &cur)
-    fast_on(fast_block + 7 * cs.z, cs.z, &trial)
+    mirror_twins(cs, wk.twin)
+    fast_on(wk.fast, cs.z, wk.twin, wk.twin + cs.z, &cur)  # (one scratch: a state at a time)
+    fast_on(wk.fast + FAST_ARRAYS * cs.z, cs.z, wk.twin, wk.twin + cs.z, &trial)
     for i in range(5):
         vh[i] = v0[i]
         vl[i] = 0.0
     if not given:
         standard_start(cs, vh)
     iterations[0] = fast_newton(cs, wk, &cur, &trial, vh)
-    free(fast_block)
     for update in range(cs.lim.max_updates):
         iterations[0] += minimise(cs, wk, vh, vl, update > 0, update == 0)
         if cs.curve == NULL:
@@ -1345,7 +1620,12 @@ cdef int solve_case(const Case *cs, const double *v0, bint given, double *vh, do
         change = 0.0
         for j in range(cs.z):
             if pt.lo.root[j] > 0:
-                k_new = curve_kappa(cs, pt.lo.ca[j], pt.lo.cam1[j])
+                p = wk.twin[j]  # (its twin's new stiffness where its angle is the same)
+                if (p >= 0 and pt.lo.root[p] > 0 and same_bits(pt.lo.ca[p], pt.lo.ca[j])
+                        and same_bits(pt.lo.cam1[p], pt.lo.cam1[j])):
+                    k_new = wk.kappa[p]
+                else:
+                    k_new = curve_kappa(cs, pt.lo.ca[j], pt.lo.cam1[j])
                 change = max(change, fabs(k_new - wk.kappa[j]) / (1.0 + fabs(k_new)))
                 wk.kappa[j] = k_new
         evaluate(cs, wk.kappa, pt)
@@ -1390,6 +1670,25 @@ cdef bint ball_directions(int z, double cage, double snap, double *c, double *s)
             c[j] = cos(rad + 2.0 * PI * j / z)
             s[j] = sin(rad + 2.0 * PI * j / z)
     return mirror
+
+
+def held_solves(const double[:, ::1] a, const double[:, ::1] b,
+                const unsigned char[:, ::1] held):
+    """``solve5`` and ``solve_held`` of n 5x5 systems ``a`` (n, 25, row-major), ``b`` (n, 5)
+    with the components ``held`` (n, 5) uint8: their x (2, n, 5), which are to be the same
+    bits (tests/test_core_held_solve.py)."""
+    cdef Py_ssize_t n = a.shape[0], k
+    cdef Case cs
+    cdef int i
+    out_a = np.empty((2, n, 5))
+    cdef double[:, :, ::1] out = out_a
+    with nogil:
+        for k in range(n):
+            for i in range(5):
+                cs.locked[i] = held[k, i]
+            solve5(&a[k, 0], &b[k, 0], &out[0, k, 0])
+            solve_held(&cs, &a[k, 0], &b[k, 0], &out[1, k, 0])
+    return out_a
 
 
 def directions(int z, const double[::1] cage, double snap):
@@ -1834,7 +2133,8 @@ cdef void add_mapped(const Pair *pr, int k, const double *t, double *out) noexce
 
 cdef void side_tangent(const Pair *pr, PairWork *wk, int k, double *t) noexcept nogil:
     """Bearing k's true tangent at the current state, local and scaled (``true_tangent``)."""
-    true_tangent(&pr.bear, &wk.cur.side[k].pt, wk.cur.side[k].kappa, wk.w1, wk.w2, wk.w3, t)
+    true_tangent(&pr.bear, &wk.cur.side[k].pt, wk.cur.side[k].kappa, wk.w1, wk.w2, wk.w3, t,
+                 NULL, NULL, NULL)
 
 
 cdef void pair_tangent(const Pair *pr, PairWork *wk, double *out) noexcept nogil:
