@@ -9,7 +9,7 @@ from __future__ import annotations
 from collections.abc import Sequence
 from typing import Any
 
-from bearingload.batch.read import BEARING_COLUMNS, Header
+from bearingload.batch.read import BEARING_COLUMNS, Header, row_message
 from bearingload.bearings.mounting import MOUNTING_PARAMS, RESULT_KEYS
 from bearingload.bearings.oil import OIL_INPUTS
 from bearingload.reports.combined import ANSWER_KEYS as COMBINED_ANSWERS
@@ -119,7 +119,6 @@ def pair_rows(
     row number twice) with the row's oil cells, ``warnings`` (the pair's, its speed's and its
     lives') on the first, each bearing's model and contacts (:data:`HELD_KEYS`). A pair whose
     records solve would refuse is a skipped row with its reason (in ``errors``)."""
-    from bearingload.batch.read import row_message
     from bearingload.errors import BearingloadError
     from bearingload.reports.combined import contact_values
     from bearingload.reports.pair import csv_rows, pair_records
@@ -154,28 +153,15 @@ def csv_chunk(
 ) -> str:
     """The csv lines of one chunk in row order (``columns`` ending with :data:`SKIPPED`): each
     solved row, and each skipped row with its number and its reason, its other cells blank."""
-    solved = {"row": rows} | row_values(columns, len(rows), values)
-    blank: dict[str, Any] = {c.key: [None] * len(skipped) for c in columns}
-    blank |= {"row": [r for r, _ in skipped], "skipped": [m for _, m in skipped]}
-    lines = [
-        (r, line)
-        for block in (solved, blank)
-        for r, line in zip(block["row"], _records(csv_block(columns, block)), strict=True)
-    ]
-    return "".join(line for _, line in sorted(lines, key=lambda pair: pair[0]))
-
-
-def _records(text: str) -> list[str]:
-    """The records of :func:`~bearingload.reports.render.csv_block`'s text, each with its line
-    end: a cell echoed as given (an oil's name) may hold a line break, quoted, or another
-    character ``str.splitlines`` breaks at, which ends no record."""
-    records: list[str] = []
-    for line in text.split("\n")[:-1]:
-        if records and records[-1].count('"') % 2:  # a quoted cell still open: the same record
-            records[-1] += "\n" + line
-        else:
-            records.append(line)
-    return [record + "\n" for record in records]
+    data: dict[str, Any] = {"row": rows} | row_values(columns, len(rows), values)
+    if skipped or list(rows) != sorted(rows):  # in row order, a skipped row blank but its reason
+        blank: dict[str, list[Any]] = {"row": [r for r, _ in skipped]}
+        blank["skipped"], none = [m for _, m in skipped], [None] * len(skipped)
+        order = sorted(range(len(rows) + len(skipped)), key=[*rows, *blank["row"]].__getitem__)
+        for k, v in data.items():
+            cells = [*(v.tolist() if hasattr(v, "tolist") else v), *blank.get(k, none)]
+            data[k] = [cells[i] for i in order]
+    return csv_block(columns, data)
 
 
 def row_values(columns: Sequence[Column], n: int, values: dict[str, Any]) -> dict[str, Any]:
