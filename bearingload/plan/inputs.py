@@ -41,8 +41,6 @@ def quantity(
         return number
 
     read.kind, read.positive, read.not_negative = kind, positive, not_negative  # type: ignore[attr-defined]
-    if not_negative:  # (batch reads a column of bare numbers at once within this range)
-        read.range = (0.0, float("inf"), False)  # type: ignore[attr-defined]
     return read
 
 
