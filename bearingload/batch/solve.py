@@ -74,6 +74,7 @@ class BatchSolver:
         whether each cell of a column judged against the bearing's size had no unit."""
         from bearingload.bearings.designation import contact_exponent
         from bearingload.bearings.plausible import BEARING_SCALE
+        from bearingload.plan.case import negative_load
         from bearingload.units import is_bare
 
         names, units = self.header.names, self.header.units
@@ -84,6 +85,10 @@ class BatchSolver:
         m = [kinds[t] for t in texts["bearing"]] if "bearing" in texts else None  # 10/9: rollers
         for name in sorted(names, key=lambda n: n != "exponent"):
             values, failed = read_column(name, units.get(name), texts.get(name, ()), m)
+            if name == "load":  # below 0: refused as typed by the rule of the row's bearing
+                for i in [i for i, f in enumerate(values) if f is not None and f < 0]:
+                    row = {n: t[i] for n, t in texts.items()}
+                    failed[i] = row_message(negative_load(row, values[i], units.get(name, "")))
             bad = failed | bad  # a row's first error kept
             cols[library_name(name)] = values
             if name == "exponent":  # the given exponents, else the bearings'

@@ -74,6 +74,7 @@ def solve_case(
     check_method(method)
     given = case
     case, engine, at_speed = engine_of(case, method, revolutions)
+    case.check_load(radial=engine == "radial", combined=given.takes_combined)
     methods = list_methods() if method == "all" else [method]
     try:
         if engine == "pair":
