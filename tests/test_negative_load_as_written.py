@@ -100,3 +100,23 @@ def test_a_load_of_0_is_refused_as_a_negative_one_is(capsys, load, written):
     _, _, negative = run_entry(capsys, "solve", "6205", "-F", "-1kN")
     code, _, zero = run_entry(capsys, "solve", "6205", "-F", load)
     assert code == 2 and zero == negative.replace("(got -1 kN)", f"(got {written})")
+
+
+def test_a_load_of_minus_0_is_echoed_as_0(tmp_path):
+    """-0 (with an axial load, a load of 0) is written 0, not -0: the text's F_r, csv's and
+    json's load, a batch row's load, the library's case."""
+    import json
+
+    text = invoke("solve", "6206", "-F", "-0kN", "-A", "1kN").stdout
+    assert "F_r = 0 N," in text and "-0" not in text.splitlines()[0]
+    row = invoke("solve", "6206", "-F", "-0", "-A", "1kN", "--format", "csv").stdout
+    assert row.splitlines()[1].split(",")[3] == "0.0"
+    doc = json.loads(invoke("solve", "6206", "-F", "-0", "-A", "1kN", "--format", "json").stdout)
+    assert str(doc["cases"][0]["load"]) == "0.0"
+    path = tmp_path / "cases.csv"
+    path.write_text("bearing,load,axial_load\n6206,-0,1kN\n6206,-0kN,1kN\n", encoding="utf-8")
+    out = invoke("batch", str(path), "--format", "csv").stdout
+    assert [line.split(",")[4] for line in out.splitlines()[1:]] == ["0.0", "0.0"]
+    assert (
+        str(analyse("6206", load="-0kN", axial_load="1kN").to_dict()["cases"][0]["load"]) == "0.0"
+    )

@@ -85,7 +85,8 @@ class BatchSolver:
         m = [kinds[t] for t in texts["bearing"]] if "bearing" in texts else None  # 10/9: rollers
         for name in sorted(names, key=lambda n: n != "exponent"):
             values, failed = read_column(name, units.get(name), texts.get(name, ()), m)
-            if name == "load":  # below 0: refused as typed by the rule of the row's bearing
+            if name == "load":  # -0 is 0; below 0: refused as typed by its bearing's rule
+                values = [None if f is None else f + 0.0 for f in values]
                 for i in [i for i, f in enumerate(values) if f is not None and f < 0]:
                     row = {n: t[i] for n, t in texts.items()}
                     failed[i] = row_message(negative_load(row, values[i], units.get(name, "")))

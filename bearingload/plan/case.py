@@ -184,6 +184,8 @@ class Case:
         if "exponent" not in given:
             values.pop("exponent", None)
         texts = tuple(sorted((typed or {}).items()))
+        if values.get("load") == 0:
+            values["load"] = 0.0  # -0 is 0, echoed as 0
         return cls(**values, given=given, bare=frozenset(bare), typed=texts)
 
     @property
