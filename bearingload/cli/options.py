@@ -265,7 +265,7 @@ def library_errors(func: Callable[..., Any]) -> Callable[..., Any]:
 
 def _failure(exc: BearingloadError) -> str:
     """The line of a failure of the computation: a ConvergenceError names its cases' inputs by
-    the options the user types, each value as typed (``--load = 1kN``, ``--speed = 3000 rpm``)."""
+    the options the user types, each value as typed (``--load = 1 kN``, ``--speed = 3000 rpm``)."""
     from bearingload.errors import ConvergenceError
 
     if not isinstance(exc, ConvergenceError):
