@@ -12,12 +12,13 @@ from typing import Any
 from bearingload.batch.read import BEARING_COLUMNS, Header, row_message
 from bearingload.bearings.mounting import MOUNTING_PARAMS, RESULT_KEYS
 from bearingload.bearings.oil import OIL_INPUTS
+from bearingload.errors import BearingloadError
 from bearingload.reports.combined import ANSWER_KEYS as COMBINED_ANSWERS
-from bearingload.reports.combined import CONTACT_KEYS
+from bearingload.reports.combined import CONTACT_KEYS, contact_values
 from bearingload.reports.combined import INPUT_KEYS as COMBINED_INPUTS
 from bearingload.reports.quantities import units
 from bearingload.reports.render import Column, Table, csv_block, render
-from bearingload.reports.solve import INPUT_KEYS, REPORT_KEYS, column
+from bearingload.reports.solve import INPUT_KEYS, REPORT_KEYS, column, printed_warnings
 from bearingload.studies.matrix import MATRIX_KEYS
 
 #: The most rows json, markdown and table hold in memory (csv is streamed without a limit).
@@ -37,15 +38,15 @@ _BY_SPEED = (
     "speed preload_at_speed ball_density cage_frequency ball_pass_frequency_outer "
     "ball_pass_frequency_inner ball_spin_frequency rating_life_hours reference_rating_life_hours"
 ).split()
-_BY_VISCOSITY = tuple(
+_BY_VISCOSITY = (
     "viscosity rated_viscosity kappa contamination_factor fatigue_load_limit a_iso "
     "modified_rating_life modified_rating_life_hours reference_equivalent_load a_iso_reference "
-    "modified_reference_rating_life modified_reference_rating_life_hours film_thickness".split()
-)
-_BEARING_ONLY = tuple(
+    "modified_reference_rating_life modified_reference_rating_life_hours film_thickness"
+).split()
+_BEARING_ONLY = (
     "bearing clearance_pick p_max_inner p_max_outer static_safety static_rating rating_life "
-    "reference_rating_life revolutions rotating allowable_load".split()
-)
+    "reference_rating_life revolutions rotating allowable_load"
+).split()
 #: The output columns written only where the header gives, of each group of input columns of
 #: theirs, one (as solve prints a quantity only where its option is given): a bearing's, the
 #: mounting's results, the lives each operating input makes meaningful (the modified lives need
@@ -119,10 +120,7 @@ def pair_rows(
     row number twice) with the row's oil cells, ``warnings`` (the pair's, its speed's and its
     lives') on the first, each bearing's model and contacts (:data:`HELD_KEYS`). A pair whose
     records solve would refuse is a skipped row with its reason (in ``errors``)."""
-    from bearingload.errors import BearingloadError
-    from bearingload.reports.combined import contact_values
     from bearingload.reports.pair import csv_rows, pair_records
-    from bearingload.reports.solve import printed_warnings
 
     keys = [c.key for c in pair_columns(None) if c.key != "row"]
     oil = [k for k in OIL_INPUTS if k in header.names]  # written as given (nu is the oil's)
@@ -145,14 +143,11 @@ def pair_rows(
     return rows, values
 
 
-def csv_chunk(
-    columns: Sequence[Column],
-    rows: Sequence[int],
-    values: dict[str, Any],
-    skipped: Sequence[tuple[int, str]],
-) -> str:
-    """The csv lines of one chunk in row order (``columns`` ending with :data:`SKIPPED`): each
-    solved row, and each skipped row with its number and its reason, its other cells blank."""
+def csv_chunk(columns: Sequence[Column], part: Any) -> str:
+    """The csv lines of a chunk (:class:`~bearingload.batch.solve.Chunk`) in row order
+    (``columns`` ending with :data:`SKIPPED`): each solved row, and each skipped row with its
+    number and its reason, its other cells blank."""
+    rows, values, skipped = part.rows, part.values, part.errors
     data: dict[str, Any] = {"row": rows} | row_values(columns, len(rows), values)
     if skipped or list(rows) != sorted(rows):  # in row order, a skipped row blank but its reason
         blank: dict[str, list[Any]] = {"row": [r for r, _ in skipped]}

@@ -126,7 +126,7 @@ def batch(
             skipped += part.errors
             warned = _row_messages(part, warned, progress, quiet)
             if fmt == "csv":
-                write(report.csv_chunk(written, part.rows, part.values, part.errors))
+                write(report.csv_chunk(written, part))
             elif not held.add(part):
                 raise click.UsageError(
                     f"Invalid value for '--format': {fmt} holds every row and takes at most "
