@@ -181,7 +181,7 @@ def is_bare(text: object) -> bool:
     return match is not None and match.group(2) == ""
 
 
-def as_written(text: object, kind: str) -> str:
+def as_written(text: object, kind: str | None = None) -> str:
     """A quantity as the user wrote it, for a message: its number and unit one space apart
     (``-1kN`` and a ``-1`` in a ``[kN]`` column of a batch file: ``-1 kN``); a bare number with
     the unit it is read in (``-1``: ``-1 N``); a text that is no number as it is.
@@ -192,7 +192,8 @@ def as_written(text: object, kind: str) -> str:
     match = _NUMBER.match(str(text))
     if match is None:
         return str(text).strip()
-    return f"{match.group(1)} {match.group(2) or BASE_UNIT[kind]}"
+    unit = match.group(2) or (BASE_UNIT[kind] if kind else "")
+    return f"{match.group(1)} {unit}".rstrip()
 
 
 def _canonical(unit: str) -> str:

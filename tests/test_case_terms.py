@@ -54,12 +54,27 @@ def test_an_input_given_with_a_unit_is_written_as_typed():
     its cases keep the number in N."""
     case = Case.of({"load": 100.0, "cage_angle": 15.0}, typed={"load": "0.1kN"})
     out = in_case_terms(_failure([15.0]), case)
-    assert out.typed == {"load": "0.1kN"} and out.cases["load"] == [100.0]
-    assert "the case load = 0.1kN, cage_angle = 15 °" in str(out)
+    assert out.typed == {"load": "0.1 kN"} and out.cases["load"] == [100.0]
+    assert "the case load = 0.1 kN, cage_angle = 15 °" in str(out)
 
 
 def test_a_swept_input_keeps_its_numbers():
     """Where the failing cases' values are not the one typed, they are written as numbers."""
     case = Case.of({"load": 100.0}, typed={"load": "0.1kN", "cage_angle": "0.1rad"})
     out = in_case_terms(_failure([15.0]), case, cage_given=False)
-    assert out.typed == {"load": "0.1kN"} and "cage_angle = 15 °" in str(out)
+    assert out.typed == {"load": "0.1 kN"} and "cage_angle = 15 °" in str(out)
+
+
+def test_a_typed_value_is_written_number_space_unit():
+    """'100N' and '0.1kN' as typed read '100 N', '0.1 kN', as the numbers the solver gives do."""
+    case = Case.of({"load": 100.0, "cage_angle": 15.0}, typed={"load": "100N"})
+    assert "the case load = 100 N, cage_angle = 15 °" in str(in_case_terms(_failure([15.0]), case))
+
+
+def test_a_cage_angle_the_solver_read_as_0_is_written_0():
+    """A bare -1e-320 is the solver's 0: written '0 °', not '-9.99989e-321 °'; an angle the
+    solver reduced to another one (-10 to 350) stays as given."""
+    out = in_case_terms(_failure([0.0]), Case.of({"load": 100.0, "cage_angle": -1e-320}))
+    assert "cage_angle = 0 °" in str(out)
+    out = in_case_terms(_failure([350.0]), Case.of({"load": 100.0, "cage_angle": -10.0}))
+    assert "cage_angle = -10 °" in str(out)

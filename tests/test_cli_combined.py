@@ -245,7 +245,7 @@ def test_a_failure_names_the_inputs_as_typed(monkeypatch, capsys):
     )
     assert code == 1 and out == ""
     # the inputs typed only: not the catalogue's 9 balls, not a moment of 0 nobody gave
-    assert "for the case --load = 1kN, --axial-load = 100N, --cage-angle = -10 °" in err
+    assert "for the case --load = 1 kN, --axial-load = 100 N, --cage-angle = -10 °" in err
     assert "--cage-angle = -10 °" in err and "350" not in err and "radial_load" not in err
     with pytest.raises(ConvergenceError) as info:
         analyse("6205", load=1000, axial_load=100, cage_angle=-10)
@@ -254,7 +254,7 @@ def test_a_failure_names_the_inputs_as_typed(monkeypatch, capsys):
 
 
 def test_a_failure_writes_each_input_as_typed(monkeypatch, capsys):
-    """A ConvergenceError writes an input given with a unit as the user typed it (0.1kN, not
+    """A ConvergenceError writes an input given with a unit as the user typed it (0.1kN: 0.1 kN, not
     100 N), on the command line and in the library (whose cases keep the numbers in N); a bare
     number keeps the default unit."""
     import bearingload.models.combined as combined
@@ -268,7 +268,9 @@ def test_a_failure_writes_each_input_as_typed(monkeypatch, capsys):
         capsys, "solve", "6205", "-F", "0.1kN", "-A", "30", "-G", "20um", "--cage-angle", "0.1rad"
     )
     assert code == 1
-    assert "--load = 0.1kN, --axial-load = 30 N, --clearance = 20um, --cage-angle = 0.1rad" in err
+    assert (
+        "--load = 0.1 kN, --axial-load = 30 N, --clearance = 20 um, --cage-angle = 0.1 rad" in err
+    )
     assert "100 N" not in err
     with pytest.raises(ConvergenceError) as info:
         analyse("6205", load="0.1 kN", axial_load=30)

@@ -342,9 +342,7 @@ def _bare_numbers(
         one = {e: getattr(x, "length", x) for e, x in one.items()}  # a clearance's length
     except InputError:
         return None
-    if not unit:
-        return v.tolist()
-    return (v * (one[ms[0]] if len(one) == 1 else np.array([one[e] for e in ms]))).tolist()
+    return (v * np.array([one.get(e, 1.0) for e in ms])).tolist()  # 1.0: no unit
 
 
 #: Columns of plain numbers (no unit, no range).

@@ -9,15 +9,16 @@ from __future__ import annotations
 from collections.abc import Sequence
 from typing import Any
 
-from bearingload.batch.read import BEARING_COLUMNS, Header
+from bearingload.batch.read import BEARING_COLUMNS, Header, row_message
 from bearingload.bearings.mounting import MOUNTING_PARAMS, RESULT_KEYS
 from bearingload.bearings.oil import OIL_INPUTS
+from bearingload.errors import BearingloadError
 from bearingload.reports.combined import ANSWER_KEYS as COMBINED_ANSWERS
-from bearingload.reports.combined import CONTACT_KEYS
+from bearingload.reports.combined import CONTACT_KEYS, contact_values
 from bearingload.reports.combined import INPUT_KEYS as COMBINED_INPUTS
 from bearingload.reports.quantities import units
 from bearingload.reports.render import Column, Table, csv_block, render
-from bearingload.reports.solve import INPUT_KEYS, REPORT_KEYS, column
+from bearingload.reports.solve import INPUT_KEYS, REPORT_KEYS, column, printed_warnings
 from bearingload.studies.matrix import MATRIX_KEYS
 
 #: The most rows json, markdown and table hold in memory (csv is streamed without a limit).
@@ -37,15 +38,15 @@ _BY_SPEED = (
     "speed preload_at_speed ball_density cage_frequency ball_pass_frequency_outer "
     "ball_pass_frequency_inner ball_spin_frequency rating_life_hours reference_rating_life_hours"
 ).split()
-_BY_VISCOSITY = tuple(
+_BY_VISCOSITY = (
     "viscosity rated_viscosity kappa contamination_factor fatigue_load_limit a_iso "
     "modified_rating_life modified_rating_life_hours reference_equivalent_load a_iso_reference "
-    "modified_reference_rating_life modified_reference_rating_life_hours film_thickness".split()
-)
-_BEARING_ONLY = tuple(
+    "modified_reference_rating_life modified_reference_rating_life_hours film_thickness"
+).split()
+_BEARING_ONLY = (
     "bearing clearance_pick p_max_inner p_max_outer static_safety static_rating rating_life "
-    "reference_rating_life revolutions rotating allowable_load".split()
-)
+    "reference_rating_life revolutions rotating allowable_load"
+).split()
 #: The output columns written only where the header gives, of each group of input columns of
 #: theirs, one (as solve prints a quantity only where its option is given): a bearing's, the
 #: mounting's results, the lives each operating input makes meaningful (the modified lives need
@@ -119,11 +120,7 @@ def pair_rows(
     row number twice) with the row's oil cells, ``warnings`` (the pair's, its speed's and its
     lives') on the first, each bearing's model and contacts (:data:`HELD_KEYS`). A pair whose
     records solve would refuse is a skipped row with its reason (in ``errors``)."""
-    from bearingload.batch.read import row_message
-    from bearingload.errors import BearingloadError
-    from bearingload.reports.combined import contact_values
     from bearingload.reports.pair import csv_rows, pair_records
-    from bearingload.reports.solve import printed_warnings
 
     keys = [c.key for c in pair_columns(None) if c.key != "row"]
     oil = [k for k in OIL_INPUTS if k in header.names]  # written as given (nu is the oil's)
@@ -146,36 +143,20 @@ def pair_rows(
     return rows, values
 
 
-def csv_chunk(
-    columns: Sequence[Column],
-    rows: Sequence[int],
-    values: dict[str, Any],
-    skipped: Sequence[tuple[int, str]],
-) -> str:
-    """The csv lines of one chunk in row order (``columns`` ending with :data:`SKIPPED`): each
-    solved row, and each skipped row with its number and its reason, its other cells blank."""
-    solved = {"row": rows} | row_values(columns, len(rows), values)
-    blank: dict[str, Any] = {c.key: [None] * len(skipped) for c in columns}
-    blank |= {"row": [r for r, _ in skipped], "skipped": [m for _, m in skipped]}
-    lines = [
-        (r, line)
-        for block in (solved, blank)
-        for r, line in zip(block["row"], _records(csv_block(columns, block)), strict=True)
-    ]
-    return "".join(line for _, line in sorted(lines, key=lambda pair: pair[0]))
-
-
-def _records(text: str) -> list[str]:
-    """The records of :func:`~bearingload.reports.render.csv_block`'s text, each with its line
-    end: a cell echoed as given (an oil's name) may hold a line break, quoted, or another
-    character ``str.splitlines`` breaks at, which ends no record."""
-    records: list[str] = []
-    for line in text.split("\n")[:-1]:
-        if records and records[-1].count('"') % 2:  # a quoted cell still open: the same record
-            records[-1] += "\n" + line
-        else:
-            records.append(line)
-    return [record + "\n" for record in records]
+def csv_chunk(columns: Sequence[Column], part: Any) -> str:
+    """The csv lines of a chunk (:class:`~bearingload.batch.solve.Chunk`) in row order
+    (``columns`` ending with :data:`SKIPPED`): each solved row, and each skipped row with its
+    number and its reason, its other cells blank."""
+    rows, values, skipped = part.rows, part.values, part.errors
+    data: dict[str, Any] = {"row": rows} | row_values(columns, len(rows), values)
+    if skipped or list(rows) != sorted(rows):  # in row order, a skipped row blank but its reason
+        blank: dict[str, list[Any]] = {"row": [r for r, _ in skipped]}
+        blank["skipped"], none = [m for _, m in skipped], [None] * len(skipped)
+        order = sorted(range(len(rows) + len(skipped)), key=[*rows, *blank["row"]].__getitem__)
+        for k, v in data.items():
+            cells = [*(v.tolist() if hasattr(v, "tolist") else v), *blank.get(k, none)]
+            data[k] = [cells[i] for i in order]
+    return csv_block(columns, data)
 
 
 def row_values(columns: Sequence[Column], n: int, values: dict[str, Any]) -> dict[str, Any]:

@@ -31,16 +31,14 @@ class BatchSolver:
     def solve(self, block: Block) -> Chunk:
         """Solve one block of rows."""
         errors, width = dict(block.errors), len(self.header.names)
-        numbers, rows = block.numbers, block.cells
-        if set(map(len, rows)) - {width}:  # lines with another number of cells: bad rows
-            numbers, rows = [], []
-            for number, cells in zip(block.numbers, block.cells, strict=True):
-                message = self._malformed(cells)
-                if message is None:
-                    numbers.append(number)
-                    rows.append(cells[:width])
-                else:
-                    errors[number] = message
+        numbers, rows = [], []  # a line with another number of cells is a bad row
+        for number, cells in zip(block.numbers, block.cells, strict=True):
+            message = self._malformed(cells)
+            if message is None:
+                numbers.append(number)
+                rows.append(cells[:width])
+            else:
+                errors[number] = message
         cols, bad, bare = self._columns(rows)
         if self.header.pairs:
             from bearingload.batch.report import pair_rows
@@ -76,6 +74,7 @@ class BatchSolver:
         whether each cell of a column judged against the bearing's size had no unit."""
         from bearingload.bearings.designation import contact_exponent
         from bearingload.bearings.plausible import BEARING_SCALE
+        from bearingload.plan.case import negative_load
         from bearingload.units import is_bare
 
         names, units = self.header.names, self.header.units
@@ -86,8 +85,12 @@ class BatchSolver:
         m = [kinds[t] for t in texts["bearing"]] if "bearing" in texts else None  # 10/9: rollers
         for name in sorted(names, key=lambda n: n != "exponent"):
             values, failed = read_column(name, units.get(name), texts.get(name, ()), m)
-            for i, message in failed.items():
-                bad.setdefault(i, message)
+            if name == "load":  # -0 is 0; below 0: refused as typed by its bearing's rule
+                values = [None if f is None else f + 0.0 for f in values]
+                for i in [i for i, f in enumerate(values) if f is not None and f < 0]:
+                    row = {n: t[i] for n, t in texts.items()}
+                    failed[i] = row_message(negative_load(row, values[i], units.get(name, "")))
+            bad = failed | bad  # a row's first error kept
             cols[library_name(name)] = values
             if name == "exponent":  # the given exponents, else the bearings'
                 m = [(m[i] if m else 1.5) if x is None else x for i, x in enumerate(values)]

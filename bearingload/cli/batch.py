@@ -126,7 +126,7 @@ def batch(
             skipped += part.errors
             warned = _row_messages(part, warned, progress, quiet)
             if fmt == "csv":
-                write(report.csv_chunk(written, part.rows, part.values, part.errors))
+                write(report.csv_chunk(written, part))
             elif not held.add(part):
                 raise click.UsageError(
                     f"Invalid value for '--format': {fmt} holds every row and takes at most "
@@ -181,12 +181,17 @@ def _row_messages(part: Any, warned: int, progress: _Progress, quiet: bool) -> i
 def _sink(output: str | None, strict: bool) -> Iterator[Callable[[str], Any]]:
     """``write(text)`` of the report: to ``-o FILE`` (atomic_file), to a spool copied to
     standard output at the end (``--strict``), or to standard output chunk by chunk; an error
-    inside the block writes nothing (a file is left as it was)."""
+    inside the block writes nothing (a file is left as it was; an OSError of it a bad -o)."""
     if output not in (None, "-"):
         from bearingload.reports.render import atomic_file
 
-        with _writing(output), atomic_file(output) as fh:
-            yield fh.write
+        try:
+            with atomic_file(output) as fh:
+                yield fh.write
+        except OSError as exc:
+            raise click.UsageError(
+                f"Invalid value for '-o' / '--output': cannot write {output!r}: {exc.strerror}"
+            ) from exc
     elif strict:
         import tempfile
 
@@ -197,17 +202,6 @@ def _sink(output: str | None, strict: bool) -> Iterator[Callable[[str], Any]]:
                 click.echo(block, nl=False)
     else:
         yield lambda text: click.echo(text, nl=False)
-
-
-@contextlib.contextmanager
-def _writing(output: str) -> Iterator[None]:
-    """An OSError of the file ``output`` said as a bad ``-o``."""
-    try:
-        yield
-    except OSError as exc:
-        raise click.UsageError(
-            f"Invalid value for '-o' / '--output': cannot write {output!r}: {exc.strerror}"
-        ) from exc
 
 
 class _Progress:

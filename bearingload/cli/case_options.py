@@ -34,7 +34,7 @@ from bearingload.cli.options import (
 )
 from bearingload.constants import CONTAMINATION_LEVELS
 from bearingload.errors import InputError
-from bearingload.plan.case import AT_REST, CASE_FIELDS, LOAD_RULE, Case
+from bearingload.plan.case import AT_REST, CASE_FIELDS, Case
 from bearingload.plan.inputs import LIBRARY_NAMES
 from bearingload.units import plausible_ranges_help
 
@@ -136,7 +136,7 @@ DECLARATIONS: dict[str, tuple[tuple[str, ...], dict[str, Any]]] = {
     "load": _option(
         "--load",
         "-F",
-        type=Quantity("force", not_negative=LOAD_RULE),
+        type=Quantity("force"),
         help=f"Radial load F_r > 0 (>= 0 with an axial load or a moment). Units: {_FORCE} "
         "(bare number: N).",
     ),

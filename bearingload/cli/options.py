@@ -12,7 +12,6 @@ from bearingload.errors import BearingloadError, InputError
 from bearingload.units import (
     BASE_UNIT,
     UNITS,
-    as_written,
     is_bare,
     parse_cage_angle,
     parse_quantity,
@@ -34,13 +33,10 @@ def note_typed(value: Any, param: click.Parameter | None, ctx: click.Context | N
 class Quantity(click.ParamType):
     """A number with an optional unit suffix, converted to the package's internal unit."""
 
-    def __init__(
-        self, kind: str, *, positive: bool = False, at_zero: str = "", not_negative: str = ""
-    ) -> None:
+    def __init__(self, kind: str, *, positive: bool = False, at_zero: str = "") -> None:
         self.kind = kind
         self.positive = positive
         self.at_zero = at_zero  # what a user giving 0 means, and how to ask for it
-        self.not_negative = not_negative  # the rule a negative value breaks (as the reader's)
         self.name = f"{kind} [{BASE_UNIT[kind]}]"
 
     def convert(
@@ -61,10 +57,6 @@ class Quantity(click.ParamType):
             hint = f": {option_message(self.at_zero)}" if self.at_zero and number == 0 else ""
             self.fail(f"must be greater than 0 {BASE_UNIT[self.kind]} (got {value}){hint}", param,
                       ctx)  # fmt: skip
-        if self.not_negative and number < 0:
-            self.fail(
-                f"must be {self.not_negative} (got {as_written(value, self.kind)})", param, ctx
-            )
         return number
 
     def get_metavar(self, param: click.Parameter, ctx: click.Context | None = None) -> str:
@@ -273,7 +265,7 @@ def library_errors(func: Callable[..., Any]) -> Callable[..., Any]:
 
 def _failure(exc: BearingloadError) -> str:
     """The line of a failure of the computation: a ConvergenceError names its cases' inputs by
-    the options the user types, each value as typed (``--load = 1kN``, ``--speed = 3000 rpm``)."""
+    the options the user types, each value as typed (``--load = 1 kN``, ``--speed = 3000 rpm``)."""
     from bearingload.errors import ConvergenceError
 
     if not isinstance(exc, ConvergenceError):

@@ -115,10 +115,15 @@ def _analyse(
 ) -> Solution:
     from bearingload.plan.case import Case
     from bearingload.plan.solve import solve_case
-    from bearingload.units import is_bare
 
     values, bare, life = read_arguments(bearing, revolutions, options)
     given = {n for n, v in values.items() if v is not None}
-    typed = {n: v.strip() for n, v in options.items() if isinstance(v, str) and not is_bare(v)}
-    case = Case.of(values, given=given, bare=bare, typed=typed)
+    case = Case.of(values, given=given, bare=bare, typed=typed_texts(options))
     return solve_case(case, method=method, revolutions=life)
+
+
+def typed_texts(options: dict[str, Any]) -> dict[str, str]:
+    """The text of each option given as a string with a unit (``"0.1kN"``), by its name."""
+    from bearingload.units import is_bare
+
+    return {n: v.strip() for n, v in options.items() if isinstance(v, str) and not is_bare(v)}

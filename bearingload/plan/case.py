@@ -52,8 +52,10 @@ DYNAMICS_PARAMS = ("ball_density", "quasi_static")
 OIL_PARAMS = ("oil", "viscosity_40", "viscosity_100", "viscosity_index", "temperature")
 #: The options that feed only the lives.
 LIFE_PARAMS = ("dynamic_rating", "rotating", *SERVICE_PARAMS)
-#: The radial load's rule: a negative one is refused by it as typed (0: by the radial engine).
-LOAD_RULE = "greater than 0 N, or 0 with an axial load or a moment"
+#: The radial load's rule where the radial engine solves the case (:meth:`Case.check_load`).
+LOAD_RULE = "greater than 0 N"
+#: The rule where the command and the bearing take an axial load or a moment (a ball bearing).
+COMBINED_LOAD_RULE = f"{LOAD_RULE}, or 0 with an axial load or a moment"
 #: What a case without a load misses (the load is required; F_r may be 0 beside others).
 LOAD_NEEDED = "the radial load F_r; 0 with an axial load or a moment"
 #: The combined-load options, in the order a refusal names the first one given.
@@ -76,6 +78,29 @@ BEARING_ONLY = (
     "rotating",
     *SERVICE_PARAMS,
 )
+
+
+def load_refusal(load: float, typed: str, combined: bool) -> InputError:
+    """The refusal of a radial load of 0 or less, named as ``typed`` (``-1kN``: ``-1 kN``; a bare
+    number in N; -0 as 0), by :data:`COMBINED_LOAD_RULE` where the command and the bearing
+    take an axial load or a moment (``combined``), else by :data:`LOAD_RULE`."""
+    from bearingload.units import as_written
+
+    written = as_written(typed, "force").removeprefix("-" if load == 0 else "")
+    return InputError(
+        "load", f"must be {COMBINED_LOAD_RULE if combined else LOAD_RULE} (got {written})"
+    )
+
+
+def negative_load(texts: dict[str, str], load: float, unit: str = "") -> InputError:
+    """The refusal of a ``load`` below 0 of a row of cases (its cells' ``texts`` by library
+    name; ``unit``: the unit of a bare number, its column's) by its bearing's rule."""
+    from bearingload.units import is_bare
+
+    names = ("bearing", "ball_diameter", "pitch_diameter")
+    case = Case.of({k: texts.get(k, "").strip() or None for k in names})
+    typed = texts["load"].strip() + (unit if is_bare(texts["load"]) else "")
+    return load_refusal(load, typed, case.takes_combined)
 
 
 @dataclass(frozen=True)
@@ -159,6 +184,8 @@ class Case:
         if "exponent" not in given:
             values.pop("exponent", None)
         texts = tuple(sorted((typed or {}).items()))
+        if values.get("load") == 0:
+            values["load"] = 0.0  # -0 is 0, echoed as 0
         return cls(**values, given=given, bare=frozenset(bare), typed=texts)
 
     @property
@@ -170,6 +197,24 @@ class Case:
     def by_hand(self) -> bool:
         """True for a ring given by its balls and stiffness: no designation, no ball geometry."""
         return self.bearing is None and self.ball_diameter is None and self.pitch_diameter is None
+
+    @property
+    def takes_combined(self) -> bool:
+        """True for a ball bearing (a designation or the ball geometry), which takes an axial
+        load or a moment; False for a roller bearing and a ring given by its balls and stiffness."""
+        from bearingload.bearings.designation import contact_exponent
+        from bearingload.constants import ROLLER_EXPONENT
+
+        return not self.by_hand and contact_exponent(self.bearing) != ROLLER_EXPONENT
+
+    def check_load(self, radial: bool, combined: bool) -> None:
+        """Refuse a radial load below 0, or of 0 where the radial engine solves the case
+        (``radial``), naming it as typed, by the rule of a command and a bearing that take an
+        axial load or a moment (``combined``) or of one that does not (:func:`load_refusal`)."""
+        if self.load is None or self.load > 0 or (self.load == 0 and not radial):
+            return
+        typed = dict(self.typed).get("load", f"{self.load:.10g}")  # a bare number: in N
+        raise load_refusal(self.load, typed, combined)
 
     @property
     def wants_combined(self) -> bool:

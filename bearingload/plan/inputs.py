@@ -13,36 +13,28 @@ from typing import Any
 
 from bearingload.constants import CONTAMINATION_LEVELS
 from bearingload.errors import InputError
-from bearingload.plan.case import AT_REST, LOAD_RULE
+from bearingload.plan.case import AT_REST
 
 Reader = Callable[[Any, str], Any]
 
 
-def quantity(
-    kind: str, *, positive: bool = False, at_zero: str = "", not_negative: str = ""
-) -> Reader:
+def quantity(kind: str, *, positive: bool = False, at_zero: str = "") -> Reader:
     """A number with an optional unit of ``kind`` (:func:`bearingload.units.parse_quantity`); a
     number given without a unit is read as the command line reads a bare number, its
     plausibility for the quantity checked the same way; ``at_zero``: what a 0 given means and
-    how to ask for it (the command line's words); ``not_negative``: the rule a negative value
-    breaks (:data:`~bearingload.plan.case.LOAD_RULE`), refused naming the value as written
-    (``-1 kN``, :func:`bearingload.units.as_written`)."""
+    how to ask for it (the command line's words). (A radial load's sign depends on the bearing
+    and the command: :meth:`bearingload.plan.case.Case.check_load`.)"""
 
     def read(value: Any, name: str) -> float:
-        from bearingload.units import BASE_UNIT, as_written, parse_quantity
+        from bearingload.units import BASE_UNIT, parse_quantity
 
-        typed = _as_text(value, name)
-        number = parse_quantity(typed, kind, parameter=name)
+        number = parse_quantity(_as_text(value, name), kind, parameter=name)
         if positive and not number > 0:
             hint = f": {at_zero}" if at_zero and number == 0 else ""
             raise InputError(name, f"must be greater than 0 {BASE_UNIT[kind]} (got {value}){hint}")
-        if not_negative and number < 0:
-            raise InputError(name, f"must be {not_negative} (got {as_written(typed, kind)})")
         return number
 
-    read.kind, read.positive, read.not_negative = kind, positive, not_negative  # type: ignore[attr-defined]
-    if not_negative:  # (batch reads a column of bare numbers at once within this range)
-        read.range = (0.0, float("inf"), False)  # type: ignore[attr-defined]
+    read.kind, read.positive = kind, positive  # type: ignore[attr-defined]
     return read
 
 
@@ -181,7 +173,7 @@ def _as_text(value: Any, name: str) -> str:
 #: Every input of a case by its library name -> its reader.
 READERS: dict[str, Reader] = {
     "balls": count,
-    "load": quantity("force", not_negative=LOAD_RULE),
+    "load": quantity("force"),
     "axial_load": quantity("force"),
     "moment": quantity("moment"),
     "moment_cross": quantity("moment"),

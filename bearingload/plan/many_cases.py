@@ -134,14 +134,15 @@ def _read_case(given: Mapping[str, Any]) -> Read:
     :func:`~bearingload.plan.solve.check_method`), ``stiffness`` into N/mm^m; what one call on
     arrays cannot give (the clearance pick 'range', ``method`` 'all') refused."""
     from bearingload.bearings.plausible import BEARING_SCALE
-    from bearingload.plan.analyse import read_arguments
+    from bearingload.plan.analyse import read_arguments, typed_texts
     from bearingload.plan.bearing import refuse_range
     from bearingload.plan.solve import check_method
 
     options = {k: v for k, v in given.items() if k not in _NOT_CASE}
     values, bare, life = read_arguments(given.get("bearing"), given.get("revolutions"), options)
     values = {k: v for k, v in values.items() if v is not None}
-    case = Case.of(values)
+    case = Case.of(values, typed=typed_texts(options))
+    case.check_load(radial=False, combined=case.takes_combined)  # below 0: as analyse refuses it
     method = given.get("method")
     pair = _is_pair(case)  # a pair's own refusals (the exact model only ...) come first
     if "method" in given:

@@ -74,6 +74,7 @@ def solve_case(
     check_method(method)
     given = case
     case, engine, at_speed = engine_of(case, method, revolutions)
+    case.check_load(radial=engine == "radial", combined=given.takes_combined)
     methods = list_methods() if method == "all" else [method]
     try:
         if engine == "pair":
@@ -99,11 +100,12 @@ def in_case_terms(exc: ConvergenceError, case: Case, cage_given: bool = True) ->
     """The solver's ConvergenceError naming the inputs of its cases as the case names them:
     the library's argument names (``radial_load`` -> ``load``, :func:`bearingload.plan.inputs.
     argument_of`), those the user gave only (not the defaults the solver filled in), and, with
-    ``cage_given``, the cage angle as given (``half``, or -10° that the
-    solver reduced to 350°) where the cases were solved at that one cage angle (a sweep's cases
+    ``cage_given``, the cage angle as given (``half``, or -10° that the solver reduced to
+    350°; the solver's where it is the same angle: a -1e-320 it used as 0) where the cases
+    were solved at that one cage angle (a sweep's cases
     are solved at other cage angles than its case's: ``cage_given`` False keeps the solver's).
-    An input given with a unit is written as typed (``0.1kN``) where every failing case has
-    its value (:func:`typed_of`)."""
+    An input given with a unit is written as typed (``0.1kN``: ``0.1 kN``) where every failing
+    case has its value (:func:`typed_of`)."""
     import numpy as np
 
     from bearingload.plan.inputs import argument_of
@@ -114,8 +116,12 @@ def in_case_terms(exc: ConvergenceError, case: Case, cage_given: bool = True) ->
     cases = {k: named[k] for k in kept or named}
     units = {argument_of(k): u for k, u in (exc.units or {}).items() if argument_of(k) in cases}
     cage = np.asarray(cases.get("cage_angle", []), dtype=float).reshape(-1)
-    if cage_given and cage.size and np.all(cage == cage[0]):  # the case's own, as given
-        cases["cage_angle"] = case.cage_angle
+    own = case.cage_angle  # as given where it is another angle than the solver's (-10°: 350°)
+    other = (
+        own == "half" or isinstance(own, (int, float)) and cage.size and abs(own - cage[0]) > 1e-9
+    )
+    if cage_given and cage.size and np.all(cage == cage[0]) and other:
+        cases["cage_angle"] = own
         if case.cage_angle == "half":
             units.pop("cage_angle", None)
     texts = typed_of(cases, case)
@@ -130,6 +136,8 @@ def typed_of(cases: dict[str, Any], case: Case) -> dict[str, str]:
     values keep their numbers)."""
     import numpy as np
 
+    from bearingload.units import as_written
+
     texts = dict(case.typed)
     out = {}
     for name, values in cases.items():
@@ -138,7 +146,7 @@ def typed_of(cases: dict[str, Any], case: Case) -> dict[str, str]:
         if name not in texts or not isinstance(given, (int, float)):
             continue
         if np.all(np.asarray(values, dtype=float) == float(given)):
-            out[name] = texts[name]
+            out[name] = as_written(texts[name])  # number, space, unit: 0.1 kN
     return out
 
 

@@ -56,6 +56,7 @@ def sweep_case(case: Case, steps: int) -> Swept:
 
 
 def _swept(case: Case, steps: int) -> Swept:
+    case.check_load(radial=not case.wants_combined, combined=case.takes_combined)
     pair = case.as_pair()
     if pair is not None:
         return _pair(pair, steps)

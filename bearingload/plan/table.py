@@ -87,6 +87,8 @@ def table_case(
         "(docs/angular_contact.md)",
     )
     case.refuse(MOUNTING_PARAMS, where, MOUNTING_REFUSAL)
+    life = name == "life"  # table k and kq: the radial engine, no axial load, no moment
+    case.check_load(radial=not case.wants_combined, combined=life and case.takes_combined)
     if name != "life":
         case.refuse(DYNAMICS_PARAMS, where, DYNAMICS_REFUSAL)
     pair = case.as_pair()
