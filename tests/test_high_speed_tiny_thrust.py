@@ -113,3 +113,14 @@ def test_the_command_line_answers_a_tiny_thrust(capsys):
         "15",
     )  # fmt: skip
     assert code == 0 and "Error" not in err and "ring displacement" in out
+
+
+def test_a_subnormal_thrust_is_stepped_down_to_like_any_tiny_one():
+    """A thrust of 1e-320 N (subnormal: 1e-6 of F_r over it overflows a double, as 10**321
+    does) is continued down to as a thrust of 1e-300 N is, to the same answer; it raised
+    OverflowError (5 balls of 10 mm on 40 mm at 0°, F_r 2000 N, 15 000 rpm, the cage at 1°)."""
+    kw = dict(speed=15000.0, cage_angle=1.0, ball_diameter=10.0, pitch_diameter=40.0)
+    tiny = solve_high_speed(5, 2000.0, 1e-320, contact_angle=0.0, **kw)
+    small = solve_high_speed(5, 2000.0, 1e-300, contact_angle=0.0, **kw)
+    assert abs(tiny.tilt - small.tilt) < 1e-9 and abs(tiny.axial - small.axial) < 1e-9
+    assert carried(tiny, 2000.0, 1.0)[0] < 1e-11

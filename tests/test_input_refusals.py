@@ -9,6 +9,7 @@ import pytest
 
 from bearingload import InputError, ring_forces, solve
 from bearingload.models.combined import solve_combined
+from bearingload.models.high_speed import solve_high_speed
 
 from .cli_helpers import error_line, run_entry, run_process
 
@@ -264,3 +265,30 @@ def test_the_pair_solver_refuses_text_for_its_geometry():
             width=15.0,
         )
     assert info.value.parameter == "contact_angle"
+
+
+@pytest.mark.parametrize(
+    "name", ["radial_load", "axial_load", "poisson", "cage_angle", "moment_cross", "clearance"]
+)
+def test_none_for_an_input_that_is_not_optional_is_refused_as_in_an_array(name):
+    """None means "not given" only for moment, misalignment, contact_angle and stiffness; for
+    any other input solve_combined refuses it, one case of plain numbers as an array of cases
+    does (it was read as 0 on the one-case path)."""
+    kw = dict(GEOMETRY, radial_load=1000.0, axial_load=100.0) | {name: None}
+    with pytest.raises(InputError) as one:
+        solve_combined(9, **kw)
+    assert one.value.parameter == name
+    other = "axial_load" if name == "radial_load" else "radial_load"
+    with pytest.raises(InputError) as many:
+        solve_combined(9, **(kw | {other: np.array([kw[other]])}))
+    assert many.value.parameter == name
+
+
+@pytest.mark.parametrize("name", ["radial_load", "axial_load", "cage_angle"])
+def test_none_at_speed_is_refused_naming_its_input(name):
+    """solve_high_speed passes these to solve_combined: a None read as 0 there met a NaN of
+    its own later (radial_load=None blamed moment_cross, cage_angle=None a bare ValueError)."""
+    kw = dict(GEOMETRY, radial_load=1000.0, axial_load=100.0, contact_angle=25.0) | {name: None}
+    with pytest.raises(InputError) as exc:
+        solve_high_speed(9, speed=5000.0, **kw)
+    assert exc.value.parameter == name

@@ -766,6 +766,9 @@ def _inputs(raw: dict[str, Any]) -> tuple[tuple[int, ...], np.ndarray, dict[str,
     return _checked_inputs(raw)
 
 
+#: The inputs of :func:`solve_combined` whose None means not given (0 in their rows); any
+#: other None is refused by :func:`_checked_inputs`.
+_OPTIONAL = frozenset(("moment", "misalignment", "contact_angle", "stiffness"))
 #: The types of plain numbers :func:`_plain_inputs` takes: floats, or floats and ints.
 _FLOAT, _NUMBER = frozenset((float,)), frozenset((float, int))
 
@@ -774,7 +777,7 @@ def _plain_inputs(raw: dict[str, Any]) -> np.ndarray | None:
     """The rows (17, 1) of one case whose inputs are all plain numbers (``float`` or ``int``)
     passing every check of :func:`_checked_inputs`, the cage angle taken mod 360°; None for
     any other."""
-    values = [0.0 if x is None else x for x in raw.values()]
+    values = [0.0 if x is None and k in _OPTIONAL else x for k, x in raw.items()]
     if not _FLOAT.issuperset(map(type, values)):  # (a bool is neither)
         if not _NUMBER.issuperset(map(type, values)):
             return None

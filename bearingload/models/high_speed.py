@@ -722,21 +722,35 @@ def _carry_small_loads(
     rows = np.flatnonzero((st.merit > TOLERANCE) & small.any(axis=1))
     for i in rows:
         one = r.take(np.array([i]))
-        decades = max(
-            math.ceil(math.log10(SMALL_LOAD * r.f_ref[i] / np.abs(f[i, small[i]]).min())), 0
-        )
-        stage = np.where(small[i], f[i] * 10.0**decades, f[i])[None, :]
+        decades = _decades(SMALL_LOAD * float(r.f_ref[i]), float(np.abs(f[i, small[i]]).min()))
+        stage = np.where(small[i], _times_decades(f[i], decades), f[i])[None, :]
         pos, got, its = _alone(r, int(i), cage, stage, held[i : i + 1], v_static[i : i + 1])
         for k in range(decades - 1, -1, -1):
             if not got.accepted[0]:
                 break
-            stage = np.where(small[i], f[i] * 10.0**k, f[i])[None, :]
+            stage = np.where(small[i], _times_decades(f[i], k), f[i])[None, :]
             pos, got, n = _newton(one, stage, held[i : i + 1], pos, pos, False)
             its += int(n[0])
         total[i] += its
         if got.accepted[0] and got.merit[0] < st.merit[i]:
             v[i] = pos[0]
             _put_state(st, np.array([i]), got)
+
+
+def _decades(top: float, low: float) -> int:
+    """The decades (>= 0) from a load ``low`` > 0 up to ``top``: a subnormal ``low`` (a thrust
+    of 1e-320 N) too, whose quotient overflows."""
+    ratio = top / low
+    if math.isinf(ratio):
+        return max(math.ceil(math.log10(top) - math.log10(low)), 0)
+    return max(math.ceil(math.log10(ratio)), 0)
+
+
+def _times_decades(x: np.ndarray, k: int) -> np.ndarray:
+    """``x * 10**k``, where 10**k is beyond a double (k > 308) too (a subnormal ``x``)."""
+    if k <= 300:
+        return x * 10.0**k
+    return x * 10.0 ** (k - 300) * 1e300
 
 
 def _alone(
