@@ -622,6 +622,19 @@ cdef void tangent(const Case *cs, const double *ca, const double *sa, const doub
                 hess[6 * i] = 1.0
 
 
+cdef inline void swap_rows(double *m, double *r, int a, int b) noexcept nogil:
+    """Rows ``a`` and ``b`` of the 5×5 matrix ``m`` (row-major) and of ``r`` exchanged."""
+    cdef int k
+    cdef double t
+    for k in range(5):
+        t = m[5 * a + k]
+        m[5 * a + k] = m[5 * b + k]
+        m[5 * b + k] = t
+    t = r[a]
+    r[a] = r[b]
+    r[b] = t
+
+
 cdef void solve5(const double *a, const double *b, double *x) noexcept nogil:
     """x = a^-1 b for a 5x5 a (row-major), Gaussian elimination with partial pivoting; a
     singular a gives non-finite x (the caller's residual then stops the case)."""
@@ -639,13 +652,7 @@ cdef void solve5(const double *a, const double *b, double *x) noexcept nogil:
             if fabs(m[5 * i + col]) > fabs(m[5 * piv + col]):
                 piv = i
         if piv != col:
-            for k in range(5):
-                t = m[5 * col + k]
-                m[5 * col + k] = m[5 * piv + k]
-                m[5 * piv + k] = t
-            t = r[col]
-            r[col] = r[piv]
-            r[piv] = t
+            swap_rows(m, r, col, piv)
         for i in range(col + 1, 5):
             t = m[5 * i + col] / m[5 * col + col]
             for k in range(col, 5):
@@ -708,13 +715,7 @@ cdef void solve_held(const Case *cs, const double *a, const double *b, double *x
             if not cs.locked[i] and fabs(m[5 * i + col]) > fabs(m[5 * piv + col]):
                 piv = i
         if piv != col:
-            for k in range(5):
-                t = m[5 * col + k]
-                m[5 * col + k] = m[5 * piv + k]
-                m[5 * piv + k] = t
-            t = r[col]
-            r[col] = r[piv]
-            r[piv] = t
+            swap_rows(m, r, col, piv)
         if not (m[6 * col] != 0 and isfinite(m[6 * col])):
             solve5(a, b, x)
             return
