@@ -84,8 +84,10 @@ def main() -> None:
                 spread[1] = max(spread[1], float(np.ptp(axials)))
     took = time.perf_counter() - start
     print(f"{counts} in {took:.1f} s")
-    print(f"thrusts of 1e-10 to {TINY:.0e} of F_r, the largest spread over one (F_r, cage, n): "
-          f"tilt {spread[0]:.3g}° (at F_r, cage, n = {where}), axial {spread[1]:.3g} µm")  # fmt: skip
+    print(
+        f"thrusts of 1e-10 to {TINY:.0e} of F_r, the largest spread over one (F_r, cage, n): "
+        f"tilt {spread[0]:.3g}° (at F_r, cage, n = {where}), axial {spread[1]:.3g} µm"
+    )
 
 
 if __name__ == "__main__":

@@ -52,11 +52,17 @@ def carried(r, fr: float, fa: float) -> tuple[float, float]:
     [
         (12, 100.0, 1e-6, 3000.0, 15.0, B7205),
         (12, 50.0, 1e-7, 1000.0, 0.0, B7205),
-        (16, 113.0, 4e-6, 5600.0, 19.0,
-         dict(ball_diameter=6.35, pitch_diameter=60.0, contact_angle=15.0)),
+        (
+            16,
+            113.0,
+            4e-6,
+            5600.0,
+            19.0,
+            dict(ball_diameter=6.35, pitch_diameter=60.0, contact_angle=15.0),
+        ),
         (12, 40.916660020213875, 1e-7, 1000.0, 0.0, B7205),
     ],
-)  # fmt: skip
+)
 def test_a_tiny_thrust_at_speed_is_solved_and_carried(z, fr, fa, n, cage, geometry):
     """The cases docs/accuracy.md listed as ending in a ConvergenceError."""
     r = solve_high_speed(z, fr, fa, speed=n, cage_angle=cage, **geometry)
@@ -74,8 +80,10 @@ def test_the_answer_is_continuous_in_a_tiny_thrust(fr, cage, n):
     to 5e-4°, its own change up to 1e-5 F_r being 3e-4°), each carried; a thrust of 1e-9 F_r
     was left half unbalanced at a tilt 0.12° off (F_r 3000 N), 1e-7 ended in a
     ConvergenceError (100 N)."""
-    answers = [solve_high_speed(12, fr, k * fr, speed=n, cage_angle=cage, **B7205)
-               for k in (1e-9, 1e-8, 1e-7, 1e-6)]  # fmt: skip
+    answers = [
+        solve_high_speed(12, fr, k * fr, speed=n, cage_angle=cage, **B7205)
+        for k in (1e-9, 1e-8, 1e-7, 1e-6)
+    ]
     for k, r in zip((1e-9, 1e-8, 1e-7, 1e-6), answers, strict=True):
         assert carried(r, fr, k * fr)[1] < 1e-3
         assert not r.displacement_undetermined
@@ -109,9 +117,18 @@ def test_a_cage_just_off_symmetry_gives_the_answer_of_one_further_off(fr, ratio,
 
 def test_the_command_line_answers_a_tiny_thrust(capsys):
     code, out, err = run_entry(
-        capsys, "solve", "7205B", "-F", "100N", "-A", "1e-6N", "--speed", "3000", "--cage-angle",
+        capsys,
+        "solve",
+        "7205B",
+        "-F",
+        "100N",
+        "-A",
+        "1e-6N",
+        "--speed",
+        "3000",
+        "--cage-angle",
         "15",
-    )  # fmt: skip
+    )
     assert code == 0 and "Error" not in err and "ring displacement" in out
 
 

@@ -145,8 +145,8 @@ def resolve_bearing(
     if designation is not None and not isinstance(designation, str):
         designation = str(designation)  # 6205 read as "6205", as catalog.lookup reads it
     _check_inputs(modulus, stiffness, ball_diameter, pitch_diameter, poisson, clearance_pick)
-    seats = (shaft_fit, housing_fit, shaft_bore, housing_diameter, inner_ring_temperature,
-             outer_ring_temperature)  # fmt: skip
+    fits, temperatures = (shaft_fit, housing_fit), (inner_ring_temperature, outer_ring_temperature)
+    seats = (*fits, shaft_bore, housing_diameter, *temperatures)
     # a bearing as bought (nothing of the mounting given): no Mounting to check or build
     mounting = None if all(v is None for v in seats) else check_mounting(Mounting(*seats))
     spec = clearance if isinstance(clearance, ClearanceSpec) else parse_clearance(clearance)

@@ -386,17 +386,19 @@ def _at_speed(
     from bearingload.models.high_speed import solve_high_speed
 
     density = dynamics_density(b, density)
-    return solve_high_speed(b.balls, load, axial_load, speed=speed, ball_density=density,
-                            **common)  # fmt: skip
+    return solve_high_speed(b.balls, load, axial_load, speed=speed, ball_density=density, **common)
 
 
 def refuse_outer_at_speed(speed: Any, rotating: str) -> None:
     """Refuse the outer ring turning at a ``speed``: the ball dynamics are coded for the inner
     ring turning (the outer ring's lives are those of the static model)."""
     if speed is not None and rotating == "outer":
-        raise InputError("rotating", "the ball dynamics at a speed are coded for the inner ring "
-                         "turning (docs/speed.md); the outer ring's lives are those of the "
-                         "static model (speed None)")  # fmt: skip
+        raise InputError(
+            "rotating",
+            "the ball dynamics at a speed are coded for the inner ring "
+            "turning (docs/speed.md); the outer ring's lives are those of the "
+            "static model (speed None)",
+        )
 
 
 def dynamics_density(b: ResolvedBearing, density: Any) -> Any:
