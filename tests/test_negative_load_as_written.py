@@ -120,3 +120,26 @@ def test_a_load_of_minus_0_is_echoed_as_0(tmp_path):
     assert (
         str(analyse("6206", load="-0kN", axial_load="1kN").to_dict()["cases"][0]["load"]) == "0.0"
     )
+
+
+def test_batch_and_analyse_many_refuse_a_load_of_0_as_solve_does(tmp_path, capsys):
+    """A radial case's load of 0 is refused by the plan's check, as solve -F 0 refuses it and a
+    negative load is refused (the option's rule, the value as typed), not by the solver."""
+    from bearingload import analyse_many
+
+    path = tmp_path / "cases.csv"
+    path.write_text(
+        "bearing,balls,stiffness,load\n6205,,,0\n6205,,,-1\n6205,,,0kN\n,9,1e5,-0\n",
+        encoding="utf-8",
+    )
+    err = invoke("batch", str(path), "--format", "csv").stderr
+    _, _, solve = run_entry(capsys, "solve", "6205", "-F", "0")
+    assert solve.strip().endswith(f"'--load': {RULE} (got 0 N)")
+    assert f"row 2: load: {RULE} (got 0 N)" in err and f"row 3: load: {RULE} (got -1 N)" in err
+    assert f"row 4: load: {RULE} (got 0 kN)" in err and f"row 5: load: {PLAIN} 0 N)" in err
+    many = analyse_many([{"bearing": "6205", "load": 0}, {"bearing": "6205", "load": "0kN"}])
+    assert [str(e) for e in many.errors.values()] == [
+        f"load: {RULE} (got 0 N)",
+        f"load: {RULE} (got 0 kN)",
+    ]
+    assert not analyse_many([{"bearing": "6205", "load": 0, "axial_load": 100}]).errors

@@ -27,6 +27,7 @@ class BatchSolver:
     def __init__(self, header: Header) -> None:
         self.header = header
         self.planner = Planner([library_name(n) for n in header.names])
+        self.typed_loads: list[str] = []  # the block's loads as typed, a bare one with its unit
 
     def solve(self, block: Block) -> Chunk:
         """Solve one block of rows."""
@@ -47,7 +48,7 @@ class BatchSolver:
             many = solve_pair_cases(self.planner, cols, len(numbers), bad, bare)
             solved, values = pair_rows(self.header, many, numbers, cols, errors)
         else:
-            many = self.planner.solve(cols, len(numbers), bad, bare)
+            many = self.planner.solve(cols, len(numbers), bad, bare, self.typed_loads)
             solved, values = [numbers[i] for i in many.rows], many.values
         for i, why in many.errors.items():
             errors[numbers[i]] = why if isinstance(why, str) else row_message(why)
@@ -74,7 +75,7 @@ class BatchSolver:
         whether each cell of a column judged against the bearing's size had no unit."""
         from bearingload.bearings.designation import contact_exponent
         from bearingload.bearings.plausible import BEARING_SCALE
-        from bearingload.plan.case import negative_load
+        from bearingload.plan.case import negative_load, typed_cell
         from bearingload.units import is_bare
 
         names, units = self.header.names, self.header.units
@@ -86,6 +87,7 @@ class BatchSolver:
         for name in sorted(names, key=lambda n: n != "exponent"):
             values, failed = read_column(name, units.get(name), texts.get(name, ()), m)
             if name == "load":  # -0 is 0; below 0: refused as typed by its bearing's rule
+                self.typed_loads = [typed_cell(t, units.get(name, "")) for t in texts.get(name, ())]
                 values = [None if f is None else f + 0.0 for f in values]
                 for i in [i for i, f in enumerate(values) if f is not None and f < 0]:
                     row = {n: t[i] for n, t in texts.items()}

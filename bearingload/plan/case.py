@@ -95,12 +95,16 @@ def load_refusal(load: float, typed: str, combined: bool) -> InputError:
 def negative_load(texts: dict[str, str], load: float, unit: str = "") -> InputError:
     """The refusal of a ``load`` below 0 of a row of cases (its cells' ``texts`` by library
     name; ``unit``: the unit of a bare number, its column's) by its bearing's rule."""
-    from bearingload.units import is_bare
-
     names = ("bearing", "ball_diameter", "pitch_diameter")
     case = Case.of({k: texts.get(k, "").strip() or None for k in names})
-    typed = texts["load"].strip() + (unit if is_bare(texts["load"]) else "")
-    return load_refusal(load, typed, case.takes_combined)
+    return load_refusal(load, typed_cell(texts["load"], unit), case.takes_combined)
+
+
+def typed_cell(text: str, unit: str = "") -> str:
+    """A cell's text as typed with its unit: a bare number with its column's ``unit``."""
+    from bearingload.units import is_bare
+
+    return text.strip() + (unit if is_bare(text) else "")
 
 
 @dataclass(frozen=True)

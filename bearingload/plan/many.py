@@ -76,15 +76,15 @@ class Many:
     errors: dict[int, Exception] = field(default_factory=dict)
 
 
-def case_of(v: Mapping[str, Any]) -> Case:
+def case_of(v: Mapping[str, Any], typed: dict[str, str] | None = None) -> Case:
     """The :class:`~bearingload.plan.case.Case` of one case's inputs ``v`` (not given left out;
-    ``stiffness`` in N/mm^m, kept as its text)."""
+    ``stiffness`` in N/mm^m, kept as its text), ``typed`` the texts of those given with a unit."""
     values = {k: x for k, x in v.items() if k not in _NOT_CASE and k[0] != "_"}
     if "stiffness" in values:
         values["stiffness"] = repr(float(values["stiffness"]))
     if "balls" in values:
         values["balls"] = int(values["balls"])
-    return Case.of(values)
+    return Case.of(values, typed=typed)
 
 
 class Planner:
@@ -108,6 +108,7 @@ class Planner:
         self.pairs = any(n in PAIR_PARAMS for n in self.names)
         self.plans: dict[tuple[Any, ...], Any] = {}
         self.bare: dict[str, list[bool]] = {}
+        self.typed_loads: Sequence[str | None] = ()
 
     def solve(
         self,
@@ -115,10 +116,14 @@ class Planner:
         n: int,
         bad: dict[int, Any],
         bare: dict[str, list[bool]] | None = None,
+        typed_loads: Sequence[str | None] = (),
     ) -> Many:
         """Solve the ``n`` cases of ``cols`` but those in ``bad`` (index -> why not), whose
-        inputs in ``bare`` (name -> per case) were bare numbers, judged by the bearing's size."""
+        inputs in ``bare`` (name -> per case) were bare numbers, judged by the bearing's size;
+        ``typed_loads`` each case's load as typed (``0 kN``; None or none: a number in N),
+        which the refusal of a load of 0 names."""
         self.bare = bare or {}
+        self.typed_loads = typed_loads
         keys = self._keys(cols, n, bad)
         with_oil_viscosity(cols, [i for i, key in enumerate(keys) if key is not None], bad)
         groups: dict[tuple[Any, ...], list[int]] = {}
@@ -156,7 +161,21 @@ class Planner:
                 if keys[i] is None:
                     rings.append(i)
         _ring_keys(cols, rings, keys, bad)
+        for i in [i for i, f in enumerate(cols.get("load", ())) if f == 0 and keys[i]]:
+            if keys[i][0] != "combined":  # the radial engine: as solve refuses it
+                try:
+                    self.refuse_zero_load({k: c[i] for k, c in cols.items() if c[i] is not None}, i)
+                except InputError as exc:
+                    bad[i], keys[i] = exc, None
         return keys
+
+    def refuse_zero_load(self, v: dict[str, Any], i: int) -> None:
+        """Refuse case ``i``'s load of 0 (inputs ``v``) on the radial engine by the plan's check
+        (:meth:`~bearingload.plan.case.Case.check_load`), named as typed (:attr:`typed_loads`);
+        an angular-contact designation's own refusal (the combined engine only) left to it."""
+        typed = self.typed_loads[i] if i < len(self.typed_loads) else None
+        case = case_of(v, None if typed is None else {"load": typed})
+        case.check_load(radial=not case.wants_combined, combined=case.takes_combined)
 
     def _key(self, cols: dict[str, list[Any]], i: int) -> tuple[Any, ...] | None:
         """Case ``i``'s group (None: a ring given by z and K), planned once for every case of
