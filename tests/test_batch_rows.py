@@ -103,6 +103,18 @@ def test_a_quote_never_closed_is_named_where_it_opens(chunk):
     assert [line.split(",")[0] for line in r.stdout.splitlines()[1:]] == ["2"]
 
 
+@pytest.mark.parametrize("end", ["\n", ""])
+def test_a_quote_never_closed_on_the_last_line_is_refused(end):
+    """A quote opened on the file's last line and never closed was solved as if closed
+    ('6205,"1000' as 1000 N); the row is refused, as csv's strict mode refuses the data."""
+    r = _batch(f'bearing,load\n6205,1kN\n6205,"1000{end}')
+    assert r.exit_code == 1
+    assert r.stderr.startswith(
+        "Skipped: row 3: a quote opened in this row is never closed: the file ends in its cell"
+    )
+    assert [line.split(",")[0] for line in r.stdout.splitlines()[1:]] == ["2"]
+
+
 @pytest.mark.parametrize("chunk", ["1", "2", "100"])
 def test_a_record_over_several_lines_is_named_by_its_first_line(chunk):
     """A quoted cell holding a line break makes one record of two lines. It was named by its

@@ -167,18 +167,16 @@ def read_cases(stream: BinaryIO, size: int = CHUNK_ROWS) -> tuple[Header, Iterat
 
 def _blocks(lines: Iterator[bytes], size: int) -> Iterator[Block]:
     errors: dict[int, str] = {}
-    quotes: dict[int, int] = {}  # row -> quote characters, of the lines that have any
-    records = csv.reader(_decoded(lines, errors, quotes))
+    lines_read: dict[int, str] = {}  # row -> text, of the record being read
+    records = csv.reader(_decoded(lines, errors, lines_read))
     block, last = Block(), 1
     while (cells := _record(records)) is not None:
         start, last = last + 1, records.line_num + 1  # the record's first and last lines
-        if last > start and sum(quotes.pop(r, 0) for r in range(start, last + 1)) % 2:
-            cells = []  # an odd count: the reader took every line to the end into a cell
-            errors[start] = (
-                f"a quote opened in this row is never closed: rows {start} to {last} (the end "
-                "of the file) were read as one cell"
-            )
-        quotes.pop(last, None)
+        if _unclosed("".join(lines_read.pop(r, "") for r in range(start, last + 1))):
+            cells = []  # the reader took every line to the end into a cell, as if closed
+            why = f"rows {start} to {last} (the end of the file) were read as one cell"
+            why = why if last > start else "the file ends in its cell"
+            errors[start] = f"a quote opened in this row is never closed: {why}"
         block.errors |= errors
         errors.clear()
         if cells:
@@ -200,6 +198,17 @@ def _record(records: Any) -> list[str] | None:
         return ["\0"]
 
 
+def _unclosed(text: str) -> bool:
+    """Whether a record's text ends in a quoted cell: csv's strict mode reads it only closed."""
+    for end in ("", '"') if '"' in text else ():  # as it is, then closed by a quote at its end
+        try:
+            list(csv.reader([text + end], strict=True))
+        except csv.Error:
+            continue
+        return end == '"'
+    return False
+
+
 def _header(first: bytes | None) -> Header:
     if first is None:
         raise InputError("CASES", "the file is empty; its first line names the columns")
@@ -218,17 +227,16 @@ def _header(first: bytes | None) -> Header:
     return read_header(fields)
 
 
-def _decoded(lines: Iterator[bytes], errors: dict[int, str], quotes: dict[int, int]) -> Any:
-    """The text of each line after the header (row 2 on), its quote characters counted in
-    ``quotes``; a line that is not UTF-8 goes to ``errors`` and reads as a blank line."""
+def _decoded(lines: Iterator[bytes], errors: dict[int, str], read: dict[int, str]) -> Any:
+    """The text of each line after the header (row 2 on), kept in ``read`` by its row until its
+    record is checked; a line that is not UTF-8 goes to ``errors`` and reads as a blank line."""
     for row, raw in enumerate(lines, start=2):
         try:
             text = raw.decode("utf-8")
         except UnicodeDecodeError as exc:
             errors[row] = f"not UTF-8 text ({_where(exc)})"
             text = "\n"
-        if '"' in text:
-            quotes[row] = text.count('"')
+        read[row] = text
         yield text
 
 

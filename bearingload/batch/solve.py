@@ -27,7 +27,6 @@ class BatchSolver:
     def __init__(self, header: Header) -> None:
         self.header = header
         self.planner = Planner([library_name(n) for n in header.names])
-        self.typed_loads: list[str] = []  # the block's loads as typed, a bare one with its unit
 
     def solve(self, block: Block) -> Chunk:
         """Solve one block of rows."""
