@@ -105,3 +105,28 @@ def test_a_cross_moment_an_angular_bearing_cannot_hold_is_refused_with_the_tilt_
     assert info.value.parameter == "moment_cross"
     r = solve_combined(12, 1000.0, 500.0, misalignment=0.0, moment_cross=500.0, **kw)
     assert np.all(np.asarray(r.ball_loads) >= 0)
+
+
+def test_a_batch_row_that_fails_is_named_by_its_columns_as_given(monkeypatch, tmp_path, capsys):
+    """A batch row's failure named the solver's inputs ('balls = 9, radial_load = 889.644 N',
+    the clearance and cage angle it filled in); it names the row's columns and cells as given,
+    as solve names its options."""
+    from bearingload.models import _core
+
+    from .cli_helpers import run_entry
+
+    real = _core.combined_call
+
+    def fails(*args, **kwargs):
+        out = list(real(*args, **kwargs))
+        out[1][7][:] = _core.Status.NOT_CONVERGED
+        out[0] = _core.CallState.SOLVED
+        return tuple(out)
+
+    monkeypatch.setattr(_core, "combined_call", fails)
+    path = tmp_path / "cases.csv"
+    path.write_text("bearing,load [lbf],axial_load\n6205,200,300N\n", encoding="utf-8")
+    code, _, err = run_entry(capsys, "batch", str(path), "--format", "csv")
+    assert code == 1 and "for the case load = 200 lbf, axial_load = 300 N\n" in err, err
+    _, _, solve = run_entry(capsys, "solve", "6205", "-F", "200lbf", "-A", "300N")
+    assert solve.strip().endswith("for the case --load = 200 lbf, --axial-load = 300 N")

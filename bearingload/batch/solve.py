@@ -47,7 +47,7 @@ class BatchSolver:
             many = solve_pair_cases(self.planner, cols, len(numbers), bad, bare)
             solved, values = pair_rows(self.header, many, numbers, cols, errors)
         else:
-            many = self.planner.solve(cols, len(numbers), bad, bare, self.typed_loads)
+            many = self.planner.solve(cols, len(numbers), bad, bare, self.typed)
             solved, values = [numbers[i] for i in many.rows], many.values
         for i, why in many.errors.items():
             errors[numbers[i]] = why if isinstance(why, str) else row_message(why)
@@ -74,11 +74,13 @@ class BatchSolver:
         whether each cell of a column judged against the bearing's size had no unit."""
         from bearingload.bearings.designation import contact_exponent
         from bearingload.bearings.plausible import BEARING_SCALE
-        from bearingload.plan.case import negative_load, typed_cell
+        from bearingload.plan.case import negative_load, typed_cells
         from bearingload.units import is_bare
 
         names, units = self.header.names, self.header.units
         texts = dict(zip(names, zip(*rows, strict=True), strict=True)) if rows else {}
+        cells = [dict(zip(names, row, strict=True)) for row in rows]
+        self.typed = [typed_cells(row, units) for row in cells]
         cols: dict[str, list[Any]] = {}
         bad: dict[int, Any] = {}
         kinds = {t: contact_exponent(t) for t in set(texts.get("bearing", ()))}
@@ -86,11 +88,9 @@ class BatchSolver:
         for name in sorted(names, key=lambda n: n != "exponent"):
             values, failed = read_column(name, units.get(name), texts.get(name, ()), m)
             if name == "load":  # -0 is 0; below 0: refused as typed by its bearing's rule
-                self.typed_loads = [typed_cell(t, units.get(name, "")) for t in texts.get(name, ())]
                 values = [None if f is None else f + 0.0 for f in values]
                 for i in [i for i, f in enumerate(values) if f is not None and f < 0]:
-                    row = {n: t[i] for n, t in texts.items()}
-                    failed[i] = row_message(negative_load(row, values[i], units.get(name, "")))
+                    failed[i] = row_message(negative_load(cells[i], values[i], units.get(name, "")))
             bad = failed | bad  # a row's first error kept
             cols[library_name(name)] = values
             if name == "exponent":  # the given exponents, else the bearings'

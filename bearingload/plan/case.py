@@ -100,6 +100,18 @@ def negative_load(texts: dict[str, str], load: float, unit: str = "") -> InputEr
     return load_refusal(load, typed_cell(texts["load"], unit), case.takes_combined)
 
 
+def typed_cells(cells: dict[str, str], units: dict[str, str]) -> dict[str, str]:
+    """A row's cells typed with a unit (a bare number in a column with a unit: with it), by
+    column: a :class:`Case`'s ``typed``."""
+    from bearingload.units import is_bare
+
+    return {
+        n: typed_cell(t, units.get(n, ""))
+        for n, t in cells.items()
+        if t.strip() and (n in units or not is_bare(t))
+    }
+
+
 def typed_cell(text: str, unit: str = "") -> str:
     """A cell's text as typed with its unit: a bare number with its column's ``unit``."""
     from bearingload.units import is_bare

@@ -40,6 +40,7 @@ from bearingload.plan.solve import (
     QUASI_STATIC_WAY,
     check_revolutions,
     engine_of,
+    in_case_terms,
     refuse_radial_options,
     refuse_revolutions,
     refuse_static_dynamics,
@@ -108,7 +109,7 @@ class Planner:
         self.pairs = any(n in PAIR_PARAMS for n in self.names)
         self.plans: dict[tuple[Any, ...], Any] = {}
         self.bare: dict[str, list[bool]] = {}
-        self.typed_loads: Sequence[str | None] = ()
+        self.typed: Sequence[dict[str, str]] = ()
 
     def solve(
         self,
@@ -116,14 +117,14 @@ class Planner:
         n: int,
         bad: dict[int, Any],
         bare: dict[str, list[bool]] | None = None,
-        typed_loads: Sequence[str | None] = (),
+        typed: Sequence[dict[str, str]] = (),
     ) -> Many:
         """Solve the ``n`` cases of ``cols`` but those in ``bad`` (index -> why not), whose
         inputs in ``bare`` (name -> per case) were bare numbers, judged by the bearing's size;
-        ``typed_loads`` each case's load as typed (``0 kN``; None or none: a number in N),
-        which the refusal of a load of 0 names."""
+        ``typed`` each case's inputs typed with a unit (name -> ``"0kN"``; none: numbers in the
+        package's units), which the refusal of a load of 0 and a failure name as typed."""
         self.bare = bare or {}
-        self.typed_loads = typed_loads
+        self.typed = typed
         keys = self._keys(cols, n, bad)
         with_oil_viscosity(cols, [i for i, key in enumerate(keys) if key is not None], bad)
         groups: dict[tuple[Any, ...], list[int]] = {}
@@ -139,8 +140,17 @@ class Planner:
         for idx, out in parts:  # the oil's inputs, as given (the viscosity is nu's)
             out |= {c: [cols[c][i] for i in idx] for c in OIL_INPUTS if c in cols}
         many = merged(parts)
-        many.errors = dict(bad)
+        many.errors = {i: self.in_case_terms(exc, cols, i) for i, exc in bad.items()}
         return many
+
+    def in_case_terms(self, exc: Any, cols: dict[str, list[Any]], i: int) -> Any:
+        """A failure of case ``i`` named by its inputs as given (:func:`~.solve.in_case_terms`:
+        those given, as typed), not the solver's; ``per_case`` cases are named by their
+        caller, which knows them (:func:`bearingload.plan.analyse.as_called`)."""
+        if self.per_case or not isinstance(exc, ConvergenceError):
+            return exc
+        v = {k: c[i] for k, c in cols.items() if c[i] is not None}
+        return in_case_terms(exc, case_of(v, self.typed[i] if i < len(self.typed) else None))
 
     def _keys(self, cols: dict[str, list[Any]], n: int, bad: dict[int, Any]) -> list[Any]:
         """Each case's group: ("ring", method), ("bearing", resolved bearing, method, rotating)
@@ -171,10 +181,9 @@ class Planner:
 
     def refuse_zero_load(self, v: dict[str, Any], i: int) -> None:
         """Refuse case ``i``'s load of 0 (inputs ``v``) on the radial engine by the plan's check
-        (:meth:`~bearingload.plan.case.Case.check_load`), named as typed (:attr:`typed_loads`);
+        (:meth:`~bearingload.plan.case.Case.check_load`), named as typed (:attr:`typed`);
         an angular-contact designation's own refusal (the combined engine only) left to it."""
-        typed = self.typed_loads[i] if i < len(self.typed_loads) else None
-        case = case_of(v, None if typed is None else {"load": typed})
+        case = case_of(v, self.typed[i] if i < len(self.typed) else None)
         case.check_load(radial=not case.wants_combined, combined=case.takes_combined)
 
     def _key(self, cols: dict[str, list[Any]], i: int) -> tuple[Any, ...] | None:

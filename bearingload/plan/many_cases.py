@@ -123,7 +123,7 @@ def _solve_group(idx: list[int], read: dict[int, Read], *, pairs: bool) -> Many:
 
         solved = solve_pair_cases(planner, cols, len(idx), {}, bare)
     else:
-        typed = [dict(read[i][2].typed).get("load") for i in idx]
+        typed = [dict(read[i][2].typed) for i in idx]
         solved = planner.solve(cols, len(idx), {}, bare, typed)
     errors = {idx[j]: as_called(exc, read[idx[j]][2]) for j, exc in solved.errors.items()}
     return Many([idx[j] for j in solved.rows], solved.values, errors)
