@@ -111,9 +111,20 @@ def test_a_batch_row_that_fails_is_named_by_its_columns_as_given(monkeypatch, tm
     """A batch row's failure named the solver's inputs ('balls = 9, radial_load = 889.644 N',
     the clearance and cage angle it filled in); it names the row's columns and cells as given,
     as solve names its options."""
-    from bearingload.models import _core
-
     from .cli_helpers import run_entry
+
+    _stiffness_updates_fail(monkeypatch)
+    path = tmp_path / "cases.csv"
+    path.write_text("bearing,load [lbf],axial_load\n6205,200,300N\n", encoding="utf-8")
+    code, _, err = run_entry(capsys, "batch", str(path), "--format", "csv")
+    assert code == 1 and "for the case load = 200 lbf, axial_load = 300 N\n" in err, err
+    _, _, solve = run_entry(capsys, "solve", "6205", "-F", "200lbf", "-A", "300N")
+    assert solve.strip().endswith("for the case --load = 200 lbf, --axial-load = 300 N")
+
+
+def _stiffness_updates_fail(monkeypatch):
+    """Every case of the core's combined solve left with its stiffness updates run out."""
+    from bearingload.models import _core
 
     real = _core.combined_call
 
@@ -124,9 +135,18 @@ def test_a_batch_row_that_fails_is_named_by_its_columns_as_given(monkeypatch, tm
         return tuple(out)
 
     monkeypatch.setattr(_core, "combined_call", fails)
+
+
+def test_a_failure_at_speed_names_the_speed_as_given(monkeypatch, tmp_path, capsys):
+    """The static start of the ball dynamics failing named the loads only, not the speed the
+    case was solved at; it names it as typed (--speed 50Hz: 50 Hz), in solve and batch."""
+    from .cli_helpers import run_entry
+
+    _stiffness_updates_fail(monkeypatch)
+    _, _, err = run_entry(capsys, "solve", "6205", "-F", "1kN", "--speed", "50Hz")
+    assert "for the case --load = 1 kN, --speed = 50 Hz;" in err, err
     path = tmp_path / "cases.csv"
-    path.write_text("bearing,load [lbf],axial_load\n6205,200,300N\n", encoding="utf-8")
-    code, _, err = run_entry(capsys, "batch", str(path), "--format", "csv")
-    assert code == 1 and "for the case load = 200 lbf, axial_load = 300 N\n" in err, err
-    _, _, solve = run_entry(capsys, "solve", "6205", "-F", "200lbf", "-A", "300N")
-    assert solve.strip().endswith("for the case --load = 200 lbf, --axial-load = 300 N")
+    path.write_text("bearing,load,speed\n6205,1kN,50Hz\n6205,1kN,3000\n", encoding="utf-8")
+    _, _, err = run_entry(capsys, "batch", str(path), "--format", "csv")
+    assert "row 2: combined-load" in err and "load = 1 kN, speed = 50 Hz;" in err, err
+    assert "load = 1 kN, speed = 3000 rpm;" in err, err

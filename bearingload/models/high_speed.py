@@ -401,13 +401,27 @@ def solve_high_speed(
         wide = np.broadcast_shapes(np.shape(radial_load), n_rpm.shape, density.shape)
         if wide != np.shape(radial_load):
             radial_load = np.broadcast_to(np.asarray(radial_load, dtype=float), wide)
-    static = _combined.solve_combined(
-        balls, radial_load, axial_load, ball_diameter=ball_diameter,
-        pitch_diameter=pitch_diameter, f_i=f_i, f_o=f_o, clearance=clearance,
-        cage_angle=cage_angle, moment=moment, misalignment=misalignment, modulus=modulus,
-        poisson=poisson, tilt_radius=tilt_radius, moment_cross=moment_cross,
-        contact_angle=contact_angle,
-    )  # fmt: skip
+    try:
+        static = _combined.solve_combined(
+            balls,
+            radial_load,
+            axial_load,
+            ball_diameter=ball_diameter,
+            pitch_diameter=pitch_diameter,
+            f_i=f_i,
+            f_o=f_o,
+            clearance=clearance,
+            cage_angle=cage_angle,
+            moment=moment,
+            misalignment=misalignment,
+            modulus=modulus,
+            poisson=poisson,
+            tilt_radius=tilt_radius,
+            moment_cross=moment_cross,
+            contact_angle=contact_angle,
+        )
+    except ConvergenceError as exc:
+        raise _with_speed(exc, n_rpm) from None
     shape = np.shape(static.x)
     z = static.balls
     given = {"radial_load": radial_load, "axial_load": axial_load,
@@ -834,6 +848,17 @@ def _check_resolved(st: BallState, ring: Ring, flat: dict) -> None:
 
 def _rel(a: np.ndarray, b: np.ndarray) -> float:
     return float(np.max(np.abs(a - b) / np.abs(b), initial=0.0))
+
+
+def _with_speed(exc: ConvergenceError, n_rpm: np.ndarray) -> ConvergenceError:
+    """The failure of the static start (the cases at rest, from which the ball dynamics start)
+    naming the speed too where every case has the one speed (one case: solve's, a batch
+    row's); speeds that differ are not named (the failure names its cases by their rows)."""
+    if n_rpm.size == 0 or np.any(n_rpm != n_rpm.flat[0]):
+        return exc
+    cases = exc.cases | {"speed": float(n_rpm.flat[0])}
+    units = (exc.units or {}) | {"speed": _combined.INPUT_UNITS["speed"]}
+    return ConvergenceError(exc.solver, exc.iterations, exc.residual, cases, units, exc.way_out)
 
 
 def _check(st: BallState, its: np.ndarray, flat: dict) -> None:
