@@ -74,13 +74,12 @@ class BatchSolver:
         whether each cell of a column judged against the bearing's size had no unit."""
         from bearingload.bearings.designation import contact_exponent
         from bearingload.bearings.plausible import BEARING_SCALE
-        from bearingload.plan.case import negative_load, typed_cells
+        from bearingload.plan.case import TypedRows, negative_load
         from bearingload.units import is_bare
 
         names, units = self.header.names, self.header.units
         texts = dict(zip(names, zip(*rows, strict=True), strict=True)) if rows else {}
-        cells = [dict(zip(names, row, strict=True)) for row in rows]
-        self.typed = [typed_cells(row, units) for row in cells]
+        self.typed = TypedRows(names, rows, units)  # each row's, read when a row is named
         cols: dict[str, list[Any]] = {}
         bad: dict[int, Any] = {}
         kinds = {t: contact_exponent(t) for t in set(texts.get("bearing", ()))}
@@ -90,7 +89,8 @@ class BatchSolver:
             if name == "load":  # -0 is 0; below 0: refused as typed by its bearing's rule
                 values = [None if f is None else f + 0.0 for f in values]
                 for i in [i for i, f in enumerate(values) if f is not None and f < 0]:
-                    failed[i] = row_message(negative_load(cells[i], values[i], units.get(name, "")))
+                    cells = dict(zip(names, rows[i], strict=True))
+                    failed[i] = row_message(negative_load(cells, values[i], units.get(name, "")))
             bad = failed | bad  # a row's first error kept
             cols[library_name(name)] = values
             if name == "exponent":  # the given exponents, else the bearings'

@@ -12,7 +12,7 @@ Imports nothing heavy: the command line reads it at start-up.
 
 from __future__ import annotations
 
-from collections.abc import Callable, Collection
+from collections.abc import Callable, Collection, Sequence
 from typing import Any
 
 from bearingload.bearings.mounting import MOUNTING_PARAMS
@@ -110,6 +110,20 @@ def typed_cells(cells: dict[str, str], units: dict[str, str]) -> dict[str, str]:
         for n, t in cells.items()
         if t.strip() and (n in units or not is_bare(t))
     }
+
+
+class TypedRows(Sequence[dict[str, str]]):
+    """The :func:`typed_cells` of rows of cells (``names`` the columns, ``units`` theirs), each
+    made when it is read: a batch names a few rows of many."""
+
+    def __init__(self, names: Sequence[str], rows: Sequence[Sequence[str]], units: dict) -> None:
+        self.names, self.rows, self.units = names, rows, units
+
+    def __len__(self) -> int:
+        return len(self.rows)
+
+    def __getitem__(self, i: Any) -> Any:
+        return typed_cells(dict(zip(self.names, self.rows[i], strict=True)), self.units)
 
 
 def typed_cell(text: str, unit: str = "") -> str:
