@@ -25,9 +25,9 @@ from typing import Any
 import numpy as np
 
 from bearingload.errors import ConvergenceError, InputError
-from bearingload.models import _core, combined
 from bearingload.models.combined import solve_combined
 from tests.campaign_combined import BALL_SETS, NAMES, fitting_pitch
+from tests.campaign_tools import spy_forces
 
 
 def static_rating(z: int, dw: float, dm: float, alpha: float) -> float:
@@ -69,24 +69,7 @@ def plain_excess(case: dict[str, Any], r: Any) -> list[float]:
 def main(n: int, seed: int) -> None:
     rng = np.random.default_rng(seed)
     seen: dict[str, Any] = {}
-    original = combined._checked
-
-    def spy(p: Any, end: Any, its: Any, given: Any) -> Any:
-        out = original(p, end, its, given)
-        seen["gen"], seen["f"], seen["size"] = out[1][0], p.f[0], end.size[0]
-        return out
-
-    combined._checked = spy
-    real_call = _core.combined_call
-
-    def call_spy(*args: Any) -> Any:  # a call the core answers whole never reaches _checked
-        out = real_call(*args)
-        if out[0] == _core.CallState.ANSWERED:
-            forces = out[1][1]  # (the solve's forces and their terms' sizes: answers_arrays)
-            seen["gen"], seen["f"], seen["size"] = forces[0, 0], out[6][0], forces[1, 0]
-        return out
-
-    _core.combined_call = call_spy
+    spy_forces(seen)
     counts = dict.fromkeys(("solved", "refused", "ConvergenceError", "NaN", "negative load"), 0)
     own, plain, own_terms, dominated = [0.0] * 5, [0.0] * 3, [0.0] * 5, [0] * 5
     worst: list[Any] = [None] * 5

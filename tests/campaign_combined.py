@@ -27,8 +27,8 @@ from typing import Any
 import numpy as np
 
 from bearingload.errors import ConvergenceError, InputError
-from bearingload.models import _core, combined
 from bearingload.models.combined import GEOMETRY_RATIO_MAX, ball_stiffness_at, solve_combined
+from tests.campaign_tools import spy_forces
 
 BALL_SETS = [(7.938, 38.5), (11.5, 43.5), (23.812, 102.5), (3.0, 14.0)]
 NAMES = ("F_r", "F_y", "F_a", "M", "M_c")
@@ -91,26 +91,7 @@ def plain_excess(case: dict[str, Any], r: Any) -> list[float]:
 def main(n: int, seed: int) -> None:
     rng = np.random.default_rng(seed)
     seen: dict[str, Any] = {}
-    original = combined._checked
-
-    def spy(p: Any, end: Any, its: Any, given: Any) -> Any:
-        out = original(p, end, its, given)
-        seen["gen"], seen["f"], seen["size"] = out[1][0], p.f[0], end.size[0]
-        seen["imposed"] = p.imposed[0]
-        return out
-
-    combined._checked = spy
-    real_call = _core.combined_call
-
-    def call_spy(*args: Any) -> Any:  # a call the core answers whole never reaches _checked
-        out = real_call(*args)
-        if out[0] == _core.CallState.ANSWERED:
-            forces = out[1][1]  # (the solve's forces and their terms' sizes: answers_arrays)
-            seen["gen"], seen["f"], seen["size"] = forces[0, 0], out[6][0], forces[1, 0]
-        seen["imposed"] = np.array([False, False, False, bool(args[3]), False])
-        return out
-
-    _core.combined_call = call_spy
+    spy_forces(seen)
     counts = dict.fromkeys(("solved", "refused: 90 degrees", "refused: load too small",
                             "refused: other", "ConvergenceError", "NaN", "loaded ball at 90 deg or more"), 0)  # fmt: skip
     own = [0.0] * 5  # solver's residual over the applied value
