@@ -793,7 +793,7 @@ def _plain_inputs(raw: dict[str, Any]) -> np.ndarray | None:
     ok = ok and low < v["f_o"] < high and (raw["stiffness"] is None or v["stiffness"] > 0.0)
     angular = raw["contact_angle"] is not None
     if angular:
-        ok = ok and 0.0 <= v["contact_angle"] <= 60.0 and v["clearance"] == 0.0
+        ok = ok and 0.0 <= v["contact_angle"] <= CONTACT_ANGLE_MAX and v["clearance"] == 0.0
         ok = ok and v["axial_load"] >= 0.0
     if not ok:
         return None
@@ -1234,17 +1234,22 @@ def angular_geometry(dw: Any, dm: Any, fi: Any, fo: Any, alpha_deg: np.ndarray) 
     return ring_geometry(dw, dm, fi, fo, alpha_deg, angular=True)
 
 
+#: The largest design contact angle taken [°] (:func:`_angular`; the one-case path's gate too).
+CONTACT_ANGLE_MAX = 60.0
+
+
 def _angular(contact_angle: Any, fa: np.ndarray, clearance: Any) -> np.ndarray | None:
     """The design contact angle [°] checked (None: a deep-groove bearing): 0 to 60°, with no
     clearance (the angle fixes the geometry) and a thrust F_a >= 0 (one-sided contact)."""
     if contact_angle is None:
         return None
     alpha = validate.finite("contact_angle", contact_angle)
-    if ((alpha < 0) | (alpha > 60)).any():
+    out = (alpha < 0) | (alpha > CONTACT_ANGLE_MAX)
+    if out.any():
         raise InputError(
             "contact_angle",
-            "must be from 0 to 60°",
-            element=validate.element(alpha, (alpha < 0) | (alpha > 60), "°"),
+            f"must be from 0 to {CONTACT_ANGLE_MAX:g}°",
+            element=validate.element(alpha, out, "°"),
         )
     gr = validate.finite("clearance", clearance)
     if (gr != 0).any():
