@@ -1,38 +1,13 @@
 """A pair of angular-contact ball bearings (DB, DF, DT) at speed: the rigid shaft of
 :mod:`bearingload.models.pair` with every ball of both bearings in dynamic equilibrium
 (centrifugal force and gyroscopic moment, outer-raceway control: Jones 1960; Harris & Kotzalas,
-*Rolling Bearing Analysis*, 5th ed., vol. 2 "Advanced Concepts of Bearing Technology", ch. 2-3),
-as :mod:`bearingload.models.high_speed` gives them for one bearing.
+*Rolling Bearing Analysis*, 5th ed., vol. 2, ch. 2-3), each bearing in its local frame the
+one-sided angular-contact bearing of :mod:`bearingload.models.high_speed`.
 
 Units: N, mm, kg, s (the shaft speed in rpm at the input, rad/s inside); ball density in kg/m^3.
-
-Model:
-
-* The shaft (both inner rings) moves by ``v = (x, y, a, R_i theta, R_i theta_c)`` about the
-  pair's centre; bearing k sees its local position ``L_k v`` plus its preload offset (the maps,
-  arrangements, mirror ``sigma_k`` and preload of :mod:`bearingload.models.pair`: bearing 1 at
-  ``-B/2`` in DB and DT, at ``+B/2`` in DF; bearing 2 of DB/DF mirrored; each bearing ground to
-  carry F_p with no external load, at rest).
-* In its local frame each bearing is the one-sided angular-contact bearing of
-  :mod:`bearingload.models.high_speed`: each ball's centre from its two equations, inner and
-  outer contact angles and loads of its own, the inner ring sees the inner contacts only.
-* The pair's forces and tangent by virtual work: ``sum_k L_k^T f_k`` and ``sum_k L_k^T J_k L_k``
-  (``J_k`` the bearing's tangent with its ball equations eliminated; not symmetric at speed).
-
-Numerics, in the compiled core (:mod:`bearingload.models._core`, ``solve_pair_speed``: a C loop
-over the cases): Newton on the shaft's five unknowns from the static pair's answer (the balls
-solved by the single bearing's ``speed_state`` at each bearing's local position), the step
-halved, then Levenberg-Marquardt steps, none longer than A/10 nor to a position where no ball
-of the pair touches an inner ring; a case left unbalanced is solved again by continuation in
-omega^2 from the static answer. The components held by a symmetry of the case are those of the
-static pair. A case stops when every applied component is balanced to ``TOLERANCE`` of the
-largest of the applied loads and the preload; it is accepted at ``ACCEPT`` of it or within the
-rounding level of the ball forces on the shaft (each bearing's, from the core's
-``speed_state``, carried through the maps) or, up to ``NOISE_MAX`` of that load, within
-the change of the shaft forces over the balls' own residuals, as the single bearing accepts;
-otherwise
-:class:`~bearingload.errors.ConvergenceError` names its inputs. At speed 0 the answer is the
-static pair's (its position, no step taken where it is balanced).
+The model (the pair's maps and forces by virtual work) and the numerics (the compiled core's
+``solve_speed`` on the shaft's five unknowns from the static pair's answer) are stated in
+docs/speed.md ("Pairs (DB, DF, DT)").
 """
 
 from __future__ import annotations
@@ -166,7 +141,7 @@ def solve_pair_high_speed(
     tilt_radius: Any = None,
 ) -> PairHighSpeedDistribution:
     """Equilibrium of the shaft in a pair of identical angular-contact ball bearings turning at
-    ``speed``, every ball with its centrifugal force and gyroscopic moment (module docstring).
+    ``speed``, every ball with its centrifugal force and gyroscopic moment (docs/speed.md).
 
     Parameters as :func:`bearingload.models.pair.solve_pair` (a constant ``stiffness`` is not
     taken: the two contacts of a ball need their own Hertz stiffness), and
