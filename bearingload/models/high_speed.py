@@ -771,10 +771,6 @@ def _check_resolved(st: BallState, ring: Ring, flat: dict) -> None:
     )
 
 
-def _rel(a: np.ndarray, b: np.ndarray) -> float:
-    return float(np.max(np.abs(a - b) / np.abs(b), initial=0.0))
-
-
 def _with_speed(exc: ConvergenceError, n_rpm: np.ndarray) -> ConvergenceError:
     """The failure of the static start (the cases at rest, from which the ball dynamics start)
     naming the speed too where every case has the one speed (one case: solve's, a batch
