@@ -3172,13 +3172,10 @@ cdef void add_levels(const Ring *rg, int j, const double *t, const double *tot,
     cdef double arm_a[5]
     cdef double g = hypot(t[0], t[1]), own
     cdef int k
-    arm_r[0] = fabs(rg.c[j])
-    arm_r[1] = fabs(rg.s[j])
-    arm_a[3] = arm_r[0]
-    arm_a[4] = arm_r[1]
-    arm_r[2] = arm_r[3] = arm_r[4] = arm_a[0] = arm_a[1] = 0.0
-    arm_a[2] = 1.0
+    ball_arms(rg, j, arm_r, arm_a)
     for k in range(5):
+        arm_r[k] = fabs(arm_r[k])
+        arm_a[k] = fabs(arm_a[k])
         st.floor[k] += arm_r[k] * fabs(t[13]) + arm_a[k] * fabs(t[12])
         moved[k] += ((fabs(tot[2]) + fabs(tot[3])) * arm_r[k]
                      + (fabs(tot[0]) + fabs(tot[1])) * arm_a[k]) * (EPS * length)
