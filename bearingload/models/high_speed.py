@@ -406,13 +406,11 @@ def _dynamic_start(
     contact_angle: Any, rows: np.ndarray,
 ) -> dict[str, np.ndarray]:  # fmt: skip
     """The second start of the ring Newton (cases ``rows`` the static start leaves
-    unbalanced; light loads at speed): the static answer of the bearing whose balls are pushed
-    out by their rigid-rolling centrifugal force (ring position, tilts [°]; ``u`` the axial
-    offset of the groove centres [mm]). A ball at speed sits ``delta_c = (F_c/K_o)^(2/3)``
-    further out in its outer groove; for the inner ring this is the inner groove centre moved
-    in by delta_c: a clearance larger by 2 delta_c (deep groove), ``cos alpha_0`` smaller by
-    delta_c/A (angular contact). Cases at speed 0, or whose shifted bearing the static model
-    refuses, keep the static answer. [mm]"""
+    unbalanced): the static answer of the bearing whose balls are pushed out by their
+    rigid-rolling centrifugal approach ``delta_c = (F_c/K_o)^(2/3)`` (docs/speed.md,
+    "Numerics"): ring position, tilts [°], ``u`` the axial offset of the groove centres [mm].
+    Cases at speed 0, or whose shifted bearing the static model refuses, keep the static
+    answer."""
     shift = np.where(contact_angle is not None, geo.A * np.sin(geo.alpha0), 0.0)
     out = {name: pos[name].copy() for name in ("x", "y", "tilt", "tilt_cross")}
     out["u"] = pos["axial"] + shift
@@ -645,16 +643,11 @@ def _solve(
 def _carry_small_loads(
     r: Ring, cage: tuple[int, np.ndarray], f: np.ndarray, held: np.ndarray, out: tuple
 ) -> None:
-    """A load too small to matter, carried (in ``out`` = (v, state, iterations, v_static) of
-    the solve, in place): a case left above TOLERANCE with a free applied component
-    unbalanced by more than CARRIED of itself (a thrust of 1e-10 to 1e-9 of the radial load,
-    below what ACCEPT asks, left half unbalanced at a position where no ball across the ring
-    carries it: an answer off the one the thrust, however small, makes and its neighbours
-    give; 1e-8 of it with the cage 1e-3° off symmetry, left unbalanced) is solved again by
-    continuation in that component from SMALL_LOAD of the largest applied load down to it, a
-    decade a stage: the first as a case of its own (:func:`_alone`, from the static answer),
-    each next from the last one's position; its answer taken where every stage is accepted
-    and its residual is lower."""
+    """A case left above TOLERANCE with a free applied component unbalanced by more than
+    CARRIED of itself, solved again by continuation in that component from SMALL_LOAD of the
+    largest applied load down to it, a decade a stage (the first by :func:`_alone`, each next
+    from the last position); taken where every stage is accepted and the residual is lower
+    (docs/speed.md, "Numerics"). ``out`` = (v, state, iterations, v_static), in place."""
     v, st, total, v_static = out
     res = np.where(held, 0.0, np.abs(f - st.gen))
     small = ~held & (f != 0.0) & (res > CARRIED * np.abs(f))
@@ -710,14 +703,11 @@ def _off_symmetry(
     r: Ring, i: int, cage: tuple, f: np.ndarray, held: np.ndarray, start: np.ndarray
 ) -> tuple[np.ndarray, BallState, int] | None:
     """Case ``i`` of the bearings ``r`` under ``f`` (1, 5) with the cage (``cage``: z and
-    every case's angle [°]) less than OFF_SYMMETRY off a symmetric angle (a ball on the load
-    line or the load between two balls), by continuation in that offset: a 7205B at F_r 41 N,
-    F_a 1e-8 of it, 20 000 rpm, the cage 1e-6° off the load line, leaves the load-line
-    ball's F_y (1.7e-8 of F_r) to a ball across a nearly free y that the Newton crosses the
-    wrong way; at an offset a decade up and more it does not. From the offset that is
-    OFF_SYMMETRY or just under it (from ``start`` (1, 5), then by the continuation in speed),
-    a decade down each stage, each from the last one's position, until a stage is not
-    accepted. Returns (v, state, iterations), or None where the cage is not so near."""
+    every case's angle [°]) less than OFF_SYMMETRY off a symmetric angle, by continuation in
+    that offset (docs/speed.md, "Numerics"): from the offset a whole number of decades up, just
+    under OFF_SYMMETRY (from ``start`` (1, 5)), a decade down each stage from the last position,
+    until a stage is not accepted. Returns (v, state, iterations), or None where the cage is
+    not so near."""
     z, angle = cage[0], float(cage[1][i])
     sym = round(angle * z / 180.0) * 180.0 / z
     offset = angle - sym
