@@ -38,10 +38,6 @@ __all__ = ["PairHighSpeedDistribution", "solve_pair_high_speed", "MODEL"]
 
 #: The model, as the outputs name it.
 MODEL = _hs.MODEL
-#: Relative residual of the shaft equilibrium (of the largest applied load or the preload). [-]
-TOLERANCE = _hs.TOLERANCE
-#: Largest shaft residual accepted at the end (or the rounding level, when larger). [-]
-ACCEPT = _hs.ACCEPT
 #: Shaft Newton steps (the trials of each: the single bearing's, the core's trial_step). [-]
 ITERATIONS = 200
 #: Stages of the continuation in omega^2. [-]
@@ -94,23 +90,6 @@ class _Shaft:
     f: np.ndarray  # (n, 5) applied [N]
     f_ref: np.ndarray  # (n,) [N]
     held: np.ndarray  # (n, 5) bool
-
-
-@dataclass
-class _State:
-    """Both bearings' balls (high_speed's states, local) and the shaft's forces at v."""
-
-    parts: list[_hs.BallState]
-    gen: np.ndarray  # (n, 5) [N]
-    jac: np.ndarray  # (n, 5, 5)
-    merit: np.ndarray  # (n,) largest free residual over f_ref (inf: a ball unsolved)
-    score: np.ndarray  # (n,) the residual over f_ref or, where larger, its rounding (or the
-    # balls' residuals on it) over ACCEPT
-    level: np.ndarray  # (n,) the largest rounding level over f_ref
-
-    @property
-    def accepted(self) -> np.ndarray:
-        return self.score <= ACCEPT
 
 
 def _local(sh: _Shaft, k: int, v: np.ndarray) -> np.ndarray:
@@ -187,9 +166,9 @@ def solve_pair_high_speed(
     flat["cage_angle"] = validate.cage_angle(flat["cage_angle"])
     sh, geo, v_static = _setup(static, flat, shape)
     with np.errstate(all="ignore"):
-        v, st, its, rest = _solve(sh, v_static, flat, static.arrangement != "DT")
+        v, parts, jac, its, rest = _solve(sh, v_static, flat, static.arrangement != "DT")
         extra = _at_speed(static, rest, shape)
-    return _result(static, sh, geo, flat, shape, (v, st, its, extra))
+    return _result(static, sh, geo, flat, shape, (v, parts, jac, its, extra))
 
 
 def _at_speed(static: PairDistribution, rest: np.ndarray, shape: tuple[int, ...]) -> dict[str, Any]:
@@ -254,18 +233,14 @@ TOO_LIGHT_PAIR = "too_light_pair_dynamics"
 
 def _solve(sh: _Shaft, v_static: np.ndarray, flat: dict, rest: bool) -> tuple[Any, ...]:
     """The core's solve (Newton from the static answer, continuation for the cases left; with
-    ``rest`` the shaft centred too); the checks. Returns (v, state, iterations, rest (n, 2))."""
+    ``rest`` the shaft centred too); the checks. Returns (v, both bearings' states (local),
+    the shaft's tangent (n, 5, 5), iterations, rest (n, 2)); each bearing's state holds the
+    shaft's measures (merit, score, level: the core's, over the largest applied load or
+    preload)."""
     shaft = (sh.maps, sh.offset, sh.f, sh.held.view(np.uint8))
     limits = np.array([ITERATIONS, CONTINUATION_STAGES, 1, 1 if rest else 0], dtype=float)
     v, parts, out = _hs.core_solve(sh.ring, shaft, limits, v_static, v_static, True)
-    st = _State(
-        parts,
-        out[:, :5].copy(),
-        out[:, 5:30].reshape(-1, 5, 5),
-        out[:, 35].copy(),
-        out[:, 36].copy(),
-        out[:, 37].copy(),
-    )
+    st = parts[0]
     its = out[:, 38].astype(int)
     level = np.where(np.isfinite(st.level), st.level, 0.0)
     small = np.flatnonzero(level > _hs.LEVEL_MAX)
@@ -289,16 +264,16 @@ def _solve(sh: _Shaft, v_static: np.ndarray, flat: dict, rest: bool) -> tuple[An
             float(known.max()) if known.size else math.nan,
             {k: flat[k][bad] for k in NAMED}, units=_comb.INPUT_UNITS,
         )  # fmt: skip
-    return v, st, its, out[:, 40:42]
+    return v, parts, out[:, 5:30].reshape(-1, 5, 5), its, out[:, 40:42]
 
 
 def _result(static: PairDistribution, sh: _Shaft, geo: Any, flat: dict, shape: tuple[int, ...],
             out: tuple[Any, ...]) -> PairHighSpeedDistribution:  # fmt: skip
     """The static pair's fields with the shaft's position, each bearing at speed, the tangent;
-    ``out`` = (v, state, iterations, the extra fields)."""
+    ``out`` = (v, both bearings' states, the shaft's tangent, iterations, the extra fields)."""
     from bearingload import numerics
 
-    v, st, its, extra = out
+    v, parts, jac, its, extra = out
     z = int(static.bearings[0].balls)
     radius = geo.R_i
     one_sided = np.ones(radius.size, dtype=bool)
@@ -308,7 +283,7 @@ def _result(static: PairDistribution, sh: _Shaft, geo: Any, flat: dict, shape: t
 
     bearings = []
     for k in range(2):
-        p = st.parts[k]
+        p = parts[k]
         local = {"speed": flat["speed"], "moment": radius * p.gen[:, 3]}
         radial = np.where(sh.held[:, 0], 0.0, np.hypot(p.gen[:, 0], p.gen[:, 1]))
         # each bearing's own position is the shaft's: what the loads leave free is the pair's
@@ -330,18 +305,18 @@ def _result(static: PairDistribution, sh: _Shaft, geo: Any, flat: dict, shape: t
             )
         )
     lever = np.stack([np.ones_like(radius)] * 3 + [radius, radius], axis=1)
-    tangent = st.jac * lever[:, :, None] * lever[:, None, :]
+    tangent = jac * lever[:, :, None] * lever[:, None, :]
     # at speed 0 the static pair's matrix (the same tangent, from the static solve)
     rest = (flat["speed"] == 0)[:, None, None]
     tangent = np.where(rest, np.reshape(static.stiffness_matrix, tangent.shape), tangent)
-    unloaded = np.stack([np.all(st.parts[k].terms[2] == 0, axis=1) for k in range(2)], axis=1)
+    unloaded = np.stack([np.all(parts[k].terms[2] == 0, axis=1) for k in range(2)], axis=1)
     fields = {f.name: getattr(static, f.name) for f in dataclasses.fields(PairDistribution)}
     fields.update(
         bearings=(bearings[0], bearings[1]), x=case(v[:, 0]), y=case(v[:, 1]),
         axial=case(v[:, 2]), tilt=case(np.rad2deg(v[:, 3] / radius)),
         tilt_cross=case(np.rad2deg(v[:, 4] / radius)),
         stiffness_matrix=tangent.reshape(shape + (5, 5)), unloaded=unloaded.reshape(shape + (2,)),
-        residual=case(st.merit),
+        residual=case(parts[0].merit),
         iterations=case(np.asarray(static.iterations).ravel() + its, np.int64),
     )  # fmt: skip
     fields.update(speed=case(flat["speed"]), ball_density=case(flat["ball_density"]), **extra)
