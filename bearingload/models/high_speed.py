@@ -228,9 +228,6 @@ def check_speed(speed: Any, density: Any, dm: Any) -> tuple[np.ndarray, np.ndarr
     """The shaft ``speed`` [rpm] and ball ``density`` [kg/m^3] as float arrays, refused
     (:class:`~bearingload.errors.InputError`) outside their ranges: a speed of 0 or more,
     n d_m at most :data:`MAX_SPEED_PITCH` with the pitch diameters ``dm`` [mm]."""
-    if type(speed) is float and type(density) is float and type(dm) is float:
-        if 0.0 <= speed and 1.0 <= density <= 1e5 and speed * dm <= MAX_SPEED_PITCH:
-            return np.array(speed), np.array(density)  # one plain case in range
     n = validate.finite("speed", speed)
     if np.any(n < 0):
         raise InputError(
