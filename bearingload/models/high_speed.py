@@ -633,7 +633,7 @@ def _solve(
             v[i] = near[0][0]  # (a y left in its range either way: the first answer kept)
             _put_state(st, np.array([i]), near[1])
     _check_resolved(st, bearings, flat)
-    _check(st, total, flat)
+    check_balanced("ball-dynamics ring and ball equilibrium", st, total, flat)
     return bearings, v, st, total, undetermined(st.jac, held)
 
 
@@ -769,16 +769,17 @@ def _with_speed(exc: ConvergenceError, n_rpm: np.ndarray) -> ConvergenceError:
     return ConvergenceError(exc.solver, exc.iterations, exc.residual, cases, units, exc.way_out)
 
 
-def _check(st: BallState, its: np.ndarray, flat: dict) -> None:
-    """ConvergenceError naming the inputs of the cases left unbalanced."""
+def check_balanced(solver: str, st: BallState, its: np.ndarray, cases: dict) -> None:
+    """ConvergenceError of ``solver`` naming the inputs (``cases``: name -> (n,)) of the cases
+    ``st`` leaves unbalanced, ``its`` their iterations (a bearing's, or a pair's shaft)."""
     bad = ~st.accepted
     if np.any(bad):
         known = st.merit[bad][np.isfinite(st.merit[bad])]
         raise ConvergenceError(
-            "ball-dynamics ring and ball equilibrium",
+            solver,
             int(its[bad].max()),
             float(known.max()) if known.size else math.nan,
-            {k: v[bad] for k, v in flat.items()},
+            {k: v[bad] for k, v in cases.items()},
             units=_combined.INPUT_UNITS,
         )
 

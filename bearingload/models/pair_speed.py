@@ -256,14 +256,8 @@ def _solve(sh: _Shaft, v_static: np.ndarray, flat: dict, rest: bool) -> tuple[An
             way_out=STATIC_WAY,
             reason=TOO_LIGHT_PAIR,
         )
-    bad = ~st.accepted
-    if np.any(bad):
-        known = st.merit[bad][np.isfinite(st.merit[bad])]
-        raise ConvergenceError(
-            "bearing-pair shaft and ball-dynamics equilibrium", int(its[bad].max()),
-            float(known.max()) if known.size else math.nan,
-            {k: flat[k][bad] for k in NAMED}, units=_comb.INPUT_UNITS,
-        )  # fmt: skip
+    named = {k: flat[k] for k in NAMED}
+    _hs.check_balanced("bearing-pair shaft and ball-dynamics equilibrium", st, its, named)
     return v, parts, out[:, 5:30].reshape(-1, 5, 5), its, out[:, 40:42]
 
 
