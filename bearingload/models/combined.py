@@ -1060,18 +1060,12 @@ def _least_norm_tilt(
     balance them; and which cases those are (n,) bool. ``held``: the core's Hessian of the
     balls that hold the ring (n, 5, 5) and whether it may have a null direction (n,).
 
-    Where the balls that carry load hold the ring along every direction but one tilt (an
-    angular-contact bearing of 4 balls under a thrust of 1e-3 F_r: two loaded balls opposite
-    each other, a third at 0° whose contact takes no axial part, the fourth loose), every tilt
-    about the line through the loaded balls, up to where a loose ball touches or the ball at
-    0° leaves the groove bottom, balances the loads: the one returned depended on the start
-    (-0.588° or -0.683° for loads 1e-5 apart). The valley is the null direction of the
-    potential's Hessian; its ends are where the first ball changes state along it (to first
-    order, within 1e-6 of the range). A ball carrying less than the tolerance (1e-12 of the
-    largest load) does not hold the ring: it bounds the valley as a loose one (the same case
-    at a thrust 1e-5 larger came back at the valley's end with a ball of 1.6e-15 N, -0.683°,
-    and no flat direction). The tilt returned is the least of the valley, kept only where the
-    equilibrium there is balanced to the tolerance."""
+    The valley of tilts is the null direction of the potential's Hessian from the balls
+    carrying more than the tolerance (1e-12 of the largest load; a ball below it bounds the
+    valley as a loose one); its ends are where the first ball changes state along it (to first
+    order, within 1e-6 of the range). The tilt returned is the least of the valley, kept only
+    where the equilibrium there is balanced to the tolerance (docs/angular_contact.md, "A tilt
+    the loads do not determine")."""
     vh, vl = v
     holding, maybe = held
     undetermined = np.zeros(vh.shape[0], dtype=bool)
@@ -1107,12 +1101,10 @@ def _touching_valley(
     p: Problem, i: int, end: _ring.Point, kappa: np.ndarray
 ) -> tuple[np.ndarray, np.ndarray]:
     """The eigenvalues and eigenvectors of case ``i``'s Hessian of the potential (the
-    stiffness frozen, the held components decoupled) from every ball that touches: where the
-    balls carrying more than the tolerance leave more than one direction free, a thrust at
-    the tolerance (1e-12 of the largest load) is carried by balls below it, which hold the
-    ring as much as it matters (7205B, F_r 1 kN, F_a 1e-9 N, cage 7°: its ball across the
-    ring, of 5e-10 N, left a plane of tilts, whose least tilt, to first order, no balanced
-    position reaches; 1e-8 N, one line). The core's Hessian, ``holding``, with every load."""
+    stiffness frozen, the held components decoupled) from every ball that touches (the core's
+    ``holding`` with every load): where the balls carrying more than the tolerance leave more
+    than one direction free, those below it hold the ring as much as it matters
+    (docs/angular_contact.md)."""
     b, lo, c, s = end.b, end.lo, p.c[i], p.s[i]
     ca, sa = lo.ca[i], lo.sa[i]
     touch = lo.q[i] > 0.0
@@ -1144,11 +1136,8 @@ def _move_along(
     """Case ``i`` moved by ``s`` along the valley's direction (``valley`` = the Hessian's
     eigenvalues, eigenvectors and ``s``) or, where the equilibrium there is not balanced, by
     the furthest fraction of ``s`` that is (bisection, VALLEY_BISECTIONS halvings: 1e-12 of
-    the move), in place in ``v`` and ``end``. The valley is curved and its ends are
-    first-order estimates: on 7205B under F_r = 1 kN, F_a = 1 N (cage 7°) the least tilt lies at
-    the end where a loose ball touches, and the move to its estimate pressed that ball (1.5e-4
-    of the load); the halves tried then (1, 1/2, 1/4) left the ring mid-valley, -0.5758° at
-    F_a = 1.000001 N against -0.5715° at 1 N."""
+    the move), in place in ``v`` and ``end``: the valley is curved and its ends are
+    first-order estimates (docs/angular_contact.md)."""
     lam, vec, s = valley
     one = np.array([i])
     got = _valley_point(p, i, v, kappa, (lam, vec, s))
