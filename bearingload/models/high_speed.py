@@ -471,17 +471,13 @@ class BallState:
 
     do: np.ndarray
     ao: np.ndarray
-    balls_ok: np.ndarray  # (n,) bool
     gen: np.ndarray  # (n, 5) generalised ring forces [N]
     jac: np.ndarray  # (n, 5, 5) d gen / d v
     merit: np.ndarray  # (n,) largest free residual over f_ref (inf: a ball unsolved)
     terms: tuple[np.ndarray, ...]
-    sens: np.ndarray  # (n, z, 6) each ball's rho, u', d(do, ao)/drho, d(do, ao)/du'
     score: np.ndarray  # (n,) the residual over f_ref or, where larger, its rounding (or the
     # balls' own residuals on it, up to NOISE_MAX of f_ref) over ACCEPT
     level: np.ndarray  # (n,) the largest rounding level over f_ref
-    floor: np.ndarray  # (n, 5) the rounding level of each component [N]
-    noise: np.ndarray  # (n, 5) its change over the balls' own residuals (not capped) [N]
 
     @property
     def accepted(self) -> np.ndarray:
@@ -491,23 +487,19 @@ class BallState:
 
 
 def _state(part: tuple[np.ndarray, ...], out: np.ndarray) -> BallState:
-    """A bearing's :class:`BallState` from the core's (balls, terms, sens, ring) (``store_dyn``),
-    the measures of its case (merit, score, level) from ``out`` (``store_case``)."""
-    balls, terms, sens, ring = part
+    """A bearing's :class:`BallState` from the core's (balls, terms, ring) (``store_dyn``), the
+    measures of its case (merit, score, level) from ``out`` (``store_case``)."""
+    balls, terms, ring = part
     n = ring.shape[0]
     return BallState(
         balls[0],
         balls[1],
-        ring[:, 40] != 0,
         ring[:, :5].copy(),
         ring[:, 5:30].reshape(n, 5, 5),
         out[:, 35].copy(),
         tuple(terms),
-        sens,
         out[:, 36].copy(),
         out[:, 37].copy(),
-        ring[:, 30:35].copy(),
-        ring[:, 35:40].copy(),
     )
 
 
