@@ -1036,7 +1036,12 @@ def _equilibrium(
     except ConvergenceError as exc:
         rows = np.asarray(exc.cases["rows"])
         raise ConvergenceError(
-            exc.solver, exc.iterations, exc.residual, _described(given, rows), units=INPUT_UNITS
+            exc.solver,
+            exc.iterations,
+            exc.residual,
+            _described(given, rows),
+            units=INPUT_UNITS,
+            rows=rows,
         ) from None
     undetermined = np.zeros(vh.shape[0], dtype=bool)
     if np.count_nonzero(tangent[1][1]):  # (no case whose Hessian may be flat: none to move)
@@ -1929,6 +1934,7 @@ def _checked(p: Problem, end: _ring.Point, its: np.ndarray, given: dict) -> tupl
             float(known.max()) if known.size else math.nan,
             _described(given, bad),
             units=INPUT_UNITS,
+            rows=np.flatnonzero(bad),
         )
     if near_edge is None or np.count_nonzero(near_edge):
         _check_edge(end, given)

@@ -422,7 +422,10 @@ def solve_high_speed(
             contact_angle=contact_angle,
         )
     except ConvergenceError as exc:
-        raise _with_speed(exc, n_rpm) from None
+        loads = (radial_load, axial_load, moment, misalignment, moment_cross, tilt_radius)
+        ring = (ball_diameter, pitch_diameter, f_i, f_o, clearance, cage_angle, modulus)
+        inputs = (*loads, *ring, poisson, contact_angle)
+        raise _with_speed(exc, n_rpm, inputs) from None
     shape = np.shape(static.x)
     z = static.balls
     given = {"radial_load": radial_load, "axial_load": axial_load,
@@ -873,15 +876,24 @@ def _rel(a: np.ndarray, b: np.ndarray) -> float:
     return float(np.max(np.abs(a - b) / np.abs(b), initial=0.0))
 
 
-def _with_speed(exc: ConvergenceError, n_rpm: np.ndarray) -> ConvergenceError:
+def _with_speed(exc: ConvergenceError, n_rpm: np.ndarray, inputs: tuple) -> ConvergenceError:
     """The failure of the static start (the cases at rest, from which the ball dynamics start)
-    naming the speed too where every case has the one speed (one case: solve's, a batch
-    row's); speeds that differ are not named (the failure names its cases by their rows)."""
-    if n_rpm.size == 0 or np.any(n_rpm != n_rpm.flat[0]):
+    naming the speed of its cases too: the one speed where every case has it (one case:
+    solve's, a batch row's), else the speed of each failing case, by the failure's ``rows``
+    among the cases of the static call's ``inputs`` broadcast together."""
+    if n_rpm.size == 0:
         return exc
-    cases = exc.cases | {"speed": float(n_rpm.flat[0])}
+    speed: Any = float(n_rpm.flat[0])
+    if np.any(n_rpm != speed):
+        if exc.rows is None:
+            return exc
+        shape = np.broadcast_shapes(*(np.shape(v) for v in inputs if v is not None))
+        speed = np.broadcast_to(n_rpm, shape).reshape(-1)[exc.rows]
+    cases = exc.cases | {"speed": speed}
     units = (exc.units or {}) | {"speed": _combined.INPUT_UNITS["speed"]}
-    return ConvergenceError(exc.solver, exc.iterations, exc.residual, cases, units, exc.way_out)
+    return ConvergenceError(
+        exc.solver, exc.iterations, exc.residual, cases, units, exc.way_out, rows=exc.rows
+    )
 
 
 def _check(st: BallState, its: np.ndarray, flat: dict) -> None:
@@ -895,6 +907,7 @@ def _check(st: BallState, its: np.ndarray, flat: dict) -> None:
             float(known.max()) if known.size else math.nan,
             {k: v[bad] for k, v in flat.items()},
             units=_combined.INPUT_UNITS,
+            rows=np.flatnonzero(bad),
         )
 
 
