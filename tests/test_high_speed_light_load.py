@@ -27,6 +27,7 @@ from click.testing import CliRunner
 from bearingload.cli import main
 from bearingload.errors import InputError
 from bearingload.models.high_speed import NOISE_MAX, solve_high_speed
+from tests.bearings_data import B7205B
 from tests.campaign_speed import ball_residual
 
 EPS = float(np.finfo(float).eps)
@@ -133,17 +134,6 @@ def test_a_pair_refused_among_mixed_speeds_is_named_by_its_speed_element():
     with pytest.raises(InputError, match="too small against the ball forces") as err:
         solve_pair_high_speed(12, 1e-6, 1e-6, speed=np.array([3000.0, 40000.0]), **kw)
     assert err.value.parameter == "speed" and err.value.element == "[1] = 40000 rpm"
-
-
-#: 7205B as the catalogue resolves it (bearings.resolve: NSK 40°, z x D_w derived, 0.52/0.53).
-B7205B = dict(
-    ball_diameter=8.7312,
-    pitch_diameter=38.5,
-    f_i=0.52,
-    f_o=0.53,
-    modulus=208000.0,
-    contact_angle=40.0,
-)
 
 
 @pytest.mark.parametrize("fa", [5e-6, 1e-5, 2e-5])
