@@ -90,3 +90,21 @@ def test_the_tables_take_the_cage_angle_within_one_turn():
         assert '"cage_angle": -0.0' not in doc.stdout and '"cage_angle": 0.0' in doc.stdout
     head = invoke("table", "k", "--cage-angle=-10", "--z-max", "3").stdout.splitlines()[0]
     assert "cage angle 350°" in head
+
+
+@pytest.mark.parametrize(
+    "args",
+    [
+        ("6205", "-F", "1kN"),
+        ("6205", "-F", "1kN", "-A", "10N"),
+        ("6205", "-F", "1kN", "--speed", "3000"),
+    ],
+)
+def test_a_ball_just_below_a_whole_turn_is_at_0(args):
+    # a cage 1e-13° below a pitch (z = 9: 40°) puts ball 9 at 360° - 1e-13°, which was printed
+    # at 360.000 (json 359.9999999999999): it is reduced as the cage angle is, to 0
+    cage = f"--cage-angle={40.0 - 1e-13!r}"
+    doc = json.loads(invoke("solve", *args, cage, "--format", "json").stdout)
+    angles = doc["cases"][0]["ball_angles"]
+    assert angles[-1] == 0.0 and angles[0] == pytest.approx(40.0, abs=1e-12)
+    assert "360" not in invoke("solve", *args, cage).output
