@@ -1036,7 +1036,12 @@ def _equilibrium(
     except ConvergenceError as exc:
         rows = np.asarray(exc.cases["rows"])
         raise ConvergenceError(
-            exc.solver, exc.iterations, exc.residual, _described(given, rows), units=INPUT_UNITS
+            exc.solver,
+            exc.iterations,
+            exc.residual,
+            _described(given, rows),
+            units=INPUT_UNITS,
+            rows=rows,
         ) from None
     undetermined = np.zeros(vh.shape[0], dtype=bool)
     if np.count_nonzero(tangent[1][1]):  # (no case whose Hessian may be flat: none to move)
@@ -1929,6 +1934,7 @@ def _checked(p: Problem, end: _ring.Point, its: np.ndarray, given: dict) -> tupl
             float(known.max()) if known.size else math.nan,
             _described(given, bad),
             units=INPUT_UNITS,
+            rows=np.flatnonzero(bad),
         )
     if near_edge is None or np.count_nonzero(near_edge):
         _check_edge(end, given)
@@ -2091,6 +2097,7 @@ def distribution_of(
     cases = rows.reshape((8,) + shape) if shape else rows[:, 0].tolist()
     x, y, axial, tilt, tilt_cross, alpha0, play, moment = cases
     phi, alpha, approach, k_ball, q = per_ball.reshape((5,) + shape + (z,))
+    phi = validate.reduced_angle(phi)  # (a ball just below a whole turn at 0, as the cage)
     fr, fa, gr, cage = loads
 
     def case(a: np.ndarray) -> Any:
