@@ -246,10 +246,10 @@ def test_console_command_runs_no_garbage_collection_in_a_terminal_calculation():
 
 def test_console_command_spares_the_collector_its_pass_at_exit():
     """Start-up: at exit the interpreter ran the collector over every object still alive, a
-    pass the process's end makes needless (a fifth of numpy's import time in solve 306); the
-    console command freezes them out of it. The check is an exit handler registered before the
-    command's, so it runs after it; the command line run in-process (tests, scripts) leaves
-    the collector as it was."""
+    pass the process's end makes needless (about a sixth of numpy's import time in solve
+    306); the console command freezes them out of it. The check is an exit handler registered
+    before the command's, so it runs after it; the command line run in-process (tests,
+    scripts) leaves the collector as it was."""
     code = (
         "import atexit, gc, sys\n"
         "atexit.register(lambda: print('frozen', gc.get_freeze_count() > 0, gc.get_count()[0]))\n"
