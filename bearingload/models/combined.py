@@ -642,7 +642,7 @@ def _one_call(
         _ring.FIRST_STAGE_STEPS,
     )
     if key is not None and known is _UNKNOWN and state != _APART:
-        _remember(key, np.concatenate((k0, values[0])))
+        remember_setup(key, np.concatenate((k0, values[0])))
     return state, solved, result, geo[2]
 
 
@@ -1798,7 +1798,14 @@ _SETUP_CACHE: dict[bytes, np.ndarray] = {}
 _UNKNOWN = np.zeros(0)
 
 
-def _remember(key: bytes, known: np.ndarray) -> None:
+def known_setup(key: bytes | None) -> np.ndarray:
+    """The Hertz set-up (K_0 and the curve's values) the cache holds for one case's geometry,
+    ``key`` the bits of its six parameters in the order of :data:`INPUT_ROWS`; empty where it
+    holds none (or ``key`` is None). The pair's one core call takes it as this one's does."""
+    return _SETUP_CACHE.get(key, _UNKNOWN) if key is not None else _UNKNOWN
+
+
+def remember_setup(key: bytes, known: np.ndarray) -> None:
     """Keep one geometry's Hertz set-up (K_0 and the curve's values) in the cache, the
     oldest dropped first beyond SETUP_CACHE_SIZE."""
     _SETUP_CACHE[key] = known
@@ -1828,7 +1835,7 @@ def hertz_setup(geo: _Geometry, e: np.ndarray, nu: np.ndarray) -> tuple[np.ndarr
         k = ball_stiffness(dw, dm / np.append(NODE_COS, 1.0), fi, fo, ee, nn).ball
         k0[i], values[i] = k[-1], (k[:-1] / k[-1] - 1.0) / (NODE_COS - 1.0)
     if key is not None:
-        _remember(key, np.concatenate((k0, values[0])))
+        remember_setup(key, np.concatenate((k0, values[0])))
     return k0, values
 
 
