@@ -139,6 +139,9 @@ class ConvergenceError(BearingloadError, ArithmeticError):
         Of an input whose failing cases all have the value the user gave it with a unit, the
         text as given (``"0.1kN"``), which the message writes instead of the number in its
         unit (``cases`` keeps the number).
+    rows : array of int or None
+        Of an array call, the failing cases by their flat index among the call's cases (the
+        inputs broadcast together, C order), where the solver knows them; None otherwise.
     """
 
     def __init__(
@@ -150,8 +153,10 @@ class ConvergenceError(BearingloadError, ArithmeticError):
         units: dict[str, str] | None = None,
         way_out: str | None = None,
         typed: dict[str, str] | None = None,
+        rows: Any = None,
     ) -> None:
         self.solver = solver
+        self.rows = rows
         self.iterations = iterations
         self.residual = residual
         self.cases = cases
@@ -179,6 +184,7 @@ class ConvergenceError(BearingloadError, ArithmeticError):
             self.units,
             way_out,
             self.typed,
+            self.rows,
         )
 
 

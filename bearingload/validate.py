@@ -52,21 +52,30 @@ def cage_angle(value: object, name: str = "cage_angle") -> np.ndarray:
     return np.asarray(reduced_angle(finite(name, value)))
 
 
+#: The rounding of reducing an angle to one turn: 4 ulps of 360° (3.2e-13°). An angle within it
+#: below a whole turn is the turn, 0 (-1e-13° reduces to 359.9999999999999°, which every output
+#: printed as 360°); the solvers take a cage angle within it of a symmetric position as that
+#: position (models._ring.SYMMETRY_SNAP_DEG). [°]
+TURN_ROUNDING = 4.0 * float(np.finfo(float).eps) * 360.0
+
+
 def reduced_angle(angle: Any) -> Any:
     """An angle [°] (a float or an array) reduced to [0, 360): ``np.mod`` and ``%`` leave 360
-    for a negative angle within rounding of 0 (-1e-320, -1e-17: 360 - 1e-17 is 360 in a
-    double), which is 0 here, as -0 is 0.
+    or just below it for a negative angle within rounding of 0 (-1e-320, -1e-17: 360 - 1e-17 is
+    360 in a double; -1e-13: 359.9999999999999), which is 0 here (:data:`TURN_ROUNDING`), as
+    -0 is 0.
 
-    >>> reduced_angle(-1e-320), reduced_angle(-0.0), reduced_angle(-10.0)
-    (0.0, 0.0, 350.0)
+    >>> reduced_angle(-1e-320), reduced_angle(-1e-13), reduced_angle(-0.0), reduced_angle(-10.0)
+    (0.0, 0.0, 0.0, 350.0)
     >>> reduced_angle(np.array([-1e-17, 725.0])).tolist()
     [0.0, 5.0]
     """
+    below = 360.0 - TURN_ROUNDING
     if type(angle) is float:  # one case: no array machinery
         reduced = angle % 360.0
-        return (reduced if reduced < 360.0 else 0.0) + 0.0
+        return (reduced if reduced < below else 0.0) + 0.0
     reduced = np.mod(angle, 360.0)
-    return np.where(reduced < 360.0, reduced, 0.0) + 0.0  # (+ 0.0: -0 is 0)
+    return np.where(reduced < below, reduced, 0.0) + 0.0  # (+ 0.0: -0 is 0)
 
 
 def plain(value: object) -> float | None:

@@ -25,9 +25,8 @@ import numpy as np
 
 from bearingload.errors import ConvergenceError
 from bearingload.models.high_speed import solve_high_speed
+from tests.bearings_data import B7205B
 
-#: 7205B (docs: reference/catalog.md; `bearingload solve 7205B --show-geometry`).
-B7205 = dict(ball_diameter=8.7312, pitch_diameter=38.5, contact_angle=40.0, modulus=208000.0)
 RADIAL = [float(f) for f in np.geomspace(20.0, 3000.0, 8)]
 RATIOS = [0.0] + [10.0**k for k in range(-10, -2)]
 CAGES = [0.0, 1e-9, 1e-6, 1e-3, 7.0, 15.0, 22.0]
@@ -44,7 +43,7 @@ def solve_row(fr: float, cage: float, n: float, counts: dict[str, int]) -> list[
         try:
             with warnings.catch_warnings():
                 warnings.simplefilter("error")
-                r = solve_high_speed(12, fr, ratio * fr, speed=n, cage_angle=cage, **B7205)
+                r = solve_high_speed(12, fr, ratio * fr, speed=n, cage_angle=cage, **B7205B)
         except ConvergenceError as err:
             counts["ConvergenceError"] += 1
             print("ConvergenceError:", fr, ratio * fr, cage, n, err)

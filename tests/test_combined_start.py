@@ -13,6 +13,7 @@ them (found by the seeded campaigns): each must solve, balanced.
 from __future__ import annotations
 
 import numpy as np
+import pytest
 
 from bearingload.models.combined import solve_combined
 
@@ -150,3 +151,33 @@ def test_a_failure_at_speed_names_the_speed_as_given(monkeypatch, tmp_path, caps
     _, _, err = run_entry(capsys, "batch", str(path), "--format", "csv")
     assert "row 2: combined-load" in err and "load = 1 kN, speed = 50 Hz;" in err, err
     assert "load = 1 kN, speed = 3000 rpm;" in err, err
+
+
+def test_a_failure_among_mixed_speeds_names_the_speed_of_each_failing_case(monkeypatch):
+    """The static start failing in some cases of a call with an array of speeds named their
+    loads only (the speeds differ, so no one speed was added); it names each failing case's
+    speed, and the failure's ``rows`` its cases by index."""
+    from bearingload.errors import ConvergenceError
+    from bearingload.models import _core
+    from bearingload.models.high_speed import solve_high_speed
+
+    real = _core.combined_call
+
+    def second_fails(*args, **kwargs):  # case 1 of each call left unconverged
+        out = list(real(*args, **kwargs))
+        if out[1][7].size > 1:
+            out[1][7][1] = _core.Status.NOT_CONVERGED
+            out[0] = _core.CallState.SOLVED
+        return tuple(out)
+
+    monkeypatch.setattr(_core, "combined_call", second_fails)
+    speeds = np.array([1000.0, 3000.0, 5000.0])
+    with pytest.raises(ConvergenceError) as info:
+        solve_high_speed(9, 1000.0, 300.0, speed=speeds, ball_diameter=7.938, pitch_diameter=38.5)
+    assert info.value.rows.tolist() == [1]
+    assert info.value.cases["speed"].tolist() == [3000.0]
+    message = str(info.value)
+    assert message.endswith(
+        "radial_load = 1000 N, axial_load = 300 N, clearance = 0 mm, "
+        "cage_angle = 0 °, speed = 3000 rpm"
+    )

@@ -27,6 +27,7 @@ from click.testing import CliRunner
 from bearingload.cli import main
 from bearingload.errors import InputError
 from bearingload.models.high_speed import NOISE_MAX, solve_high_speed
+from tests.bearings_data import B7205B
 from tests.campaign_speed import ball_residual
 
 EPS = float(np.finfo(float).eps)
@@ -110,15 +111,29 @@ def test_a_load_below_the_rounding_of_the_ball_forces_is_refused(fr, clearance, 
     assert off <= max(1e-12 * smallest, level) and across <= max(1e-12 * smallest, level)
 
 
-#: 7205B as the catalogue resolves it (bearings.resolve: NSK 40°, z x D_w derived, 0.52/0.53).
-B7205B = dict(
-    ball_diameter=8.7312,
-    pitch_diameter=38.5,
-    f_i=0.52,
-    f_o=0.53,
-    modulus=208000.0,
-    contact_angle=40.0,
-)
+def test_a_case_refused_among_mixed_speeds_is_named_by_its_speed_element():
+    """Speeds [0, 3000, 50000] rpm with 1e-6 N against 5 µm of preload: the case at 3000 rpm is
+    refused first (the largest rounding at the lowest speed but 0); the refusal named only
+    'radial_load', which is one number for all three; it names the speed that tells the case
+    apart, by its index, as the other array refusals name their element."""
+    speeds = np.array([0.0, 3000.0, 50000.0])
+    with pytest.raises(InputError, match="too small against the ball forces") as err:
+        solve_high_speed(9, 1e-6, 0.0, speed=speeds, clearance=-0.005, **B6205)
+    assert err.value.parameter == "speed" and err.value.element == "[1] = 3000 rpm"
+    assert str(err.value).startswith("speed[1] = 3000 rpm: the loads are too small")
+    # one speed for every case: the load names the case, by its own element where an array
+    with pytest.raises(InputError) as err:
+        solve_high_speed(9, np.array([1.0, 1e-6]), 0.0, speed=3000.0, clearance=-0.005, **B6205)
+    assert err.value.parameter == "radial_load" and err.value.element == "[1] = 1e-06 N"
+
+
+def test_a_pair_refused_among_mixed_speeds_is_named_by_its_speed_element():
+    from bearingload.models.pair_speed import solve_pair_high_speed
+
+    kw = dict(preload=0.0, contact_angle=40.0, width=15.0, **B6205)
+    with pytest.raises(InputError, match="too small against the ball forces") as err:
+        solve_pair_high_speed(12, 1e-6, 1e-6, speed=np.array([3000.0, 40000.0]), **kw)
+    assert err.value.parameter == "speed" and err.value.element == "[1] = 40000 rpm"
 
 
 @pytest.mark.parametrize("fa", [5e-6, 1e-5, 2e-5])

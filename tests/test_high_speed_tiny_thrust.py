@@ -27,13 +27,10 @@ import numpy as np
 import pytest
 
 from bearingload.models.high_speed import solve_high_speed
+from tests.bearings_data import B7205B
 from tests.campaign_speed import ball_residual
 
 from .cli_helpers import run_entry
-
-#: 7205B as the catalogue gives it (`bearingload solve 7205B --show-geometry`: 12 balls of
-#: 8.7312 mm on 38.5 mm, 40°, f_i 0.52, f_o 0.53, E 208 GPa).
-B7205 = dict(ball_diameter=8.7312, pitch_diameter=38.5, contact_angle=40.0, modulus=208000.0)
 
 
 def carried(r, fr: float, fa: float) -> tuple[float, float]:
@@ -50,8 +47,8 @@ def carried(r, fr: float, fa: float) -> tuple[float, float]:
 @pytest.mark.parametrize(
     "z, fr, fa, n, cage, geometry",
     [
-        (12, 100.0, 1e-6, 3000.0, 15.0, B7205),
-        (12, 50.0, 1e-7, 1000.0, 0.0, B7205),
+        (12, 100.0, 1e-6, 3000.0, 15.0, B7205B),
+        (12, 50.0, 1e-7, 1000.0, 0.0, B7205B),
         (
             16,
             113.0,
@@ -60,7 +57,7 @@ def carried(r, fr: float, fa: float) -> tuple[float, float]:
             19.0,
             dict(ball_diameter=6.35, pitch_diameter=60.0, contact_angle=15.0),
         ),
-        (12, 40.916660020213875, 1e-7, 1000.0, 0.0, B7205),
+        (12, 40.916660020213875, 1e-7, 1000.0, 0.0, B7205B),
     ],
 )
 def test_a_tiny_thrust_at_speed_is_solved_and_carried(z, fr, fa, n, cage, geometry):
@@ -81,7 +78,7 @@ def test_the_answer_is_continuous_in_a_tiny_thrust(fr, cage, n):
     was left half unbalanced at a tilt 0.12° off (F_r 3000 N), 1e-7 ended in a
     ConvergenceError (100 N)."""
     answers = [
-        solve_high_speed(12, fr, k * fr, speed=n, cage_angle=cage, **B7205)
+        solve_high_speed(12, fr, k * fr, speed=n, cage_angle=cage, **B7205B)
         for k in (1e-9, 1e-8, 1e-7, 1e-6)
     ]
     for k, r in zip((1e-9, 1e-8, 1e-7, 1e-6), answers, strict=True):
@@ -107,8 +104,8 @@ def test_a_cage_just_off_symmetry_gives_the_answer_of_one_further_off(fr, ratio,
     half the thrust unbalanced (1e-10 of F_r). Solved by continuation in the offset from
     0.1°: the answer of a cage of 0.01° to 1e-4° and 0.02 µm (y changes by 0.008 µm over the
     offset), the thrust carried to 1 % (the tolerance, 1e-12 of F_r, is 1 % of 1e-10 F_r)."""
-    r = solve_high_speed(12, fr, ratio * fr, speed=n, cage_angle=cage, **B7205)
-    far = solve_high_speed(12, fr, ratio * fr, speed=n, cage_angle=0.01, **B7205)
+    r = solve_high_speed(12, fr, ratio * fr, speed=n, cage_angle=cage, **B7205B)
+    far = solve_high_speed(12, fr, ratio * fr, speed=n, cage_angle=0.01, **B7205B)
     radial, thrust = carried(r, fr, ratio * fr)
     assert radial < 1e-11 and thrust < 1e-2
     assert abs(r.tilt - far.tilt) < 1e-4 and abs(r.tilt_cross - far.tilt_cross) < 1e-4

@@ -5,18 +5,10 @@ ConvergenceError of the shaft equilibrium, residual 2.8e-5 after 420 iterations)
 import numpy as np
 
 from bearingload.models.pair import solve_pair
+from tests.bearings_data import B7205B
 
-#: 7205B as the catalogue resolves it (NSK 40°, 12 balls of 8.7312 mm on 38.5 mm, 0.52/0.53).
-GEOMETRY = dict(
-    arrangement="DT",
-    contact_angle=40.0,
-    ball_diameter=8.7312,
-    pitch_diameter=38.5,
-    width=15.0,
-    f_i=0.52,
-    f_o=0.53,
-    modulus=208000.0,
-)
+#: A tandem pair of 7205B (B = 15 mm).
+GEOMETRY = dict(arrangement="DT", width=15.0, **B7205B)
 
 
 def test_a_tandem_pair_just_off_symmetry_is_solved_at_the_symmetric_position():

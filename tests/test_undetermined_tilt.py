@@ -14,6 +14,7 @@ import numpy as np
 import pytest
 
 from bearingload.models.combined import solve_combined
+from tests.bearings_data import B7205B
 
 #: The reported bearing (an angular-contact ball set, 24.06°).
 FOUR = dict(ball_diameter=9.184, pitch_diameter=34.69, contact_angle=24.06)
@@ -106,17 +107,6 @@ def test_a_symmetric_cage_is_flagged_too():
     b = solve_combined(4, 3475.3, 3.4753035, **kw)
     assert bool(a.tilt_undetermined)
     assert abs(a.tilt - b.tilt) <= 1e-5
-
-
-#: 7205B as the catalogue resolves it (NSK 40°, 12 balls of 8.7312 mm on 38.5 mm, 0.52/0.53).
-B7205B = dict(
-    ball_diameter=8.7312,
-    pitch_diameter=38.5,
-    f_i=0.52,
-    f_o=0.53,
-    modulus=208000.0,
-    contact_angle=40.0,
-)
 
 
 def test_a_curved_valley_is_followed_to_its_least_tilt():

@@ -90,23 +90,18 @@ def _refuse_detached_units(args: list[str]) -> None:
 
 #: Exit status of an internal error (a bug), apart from 1 (batch: rows skipped) and 2 (usage).
 INTERNAL_ERROR = 3
-#: Container objects allocated (net) between two runs of the cyclic garbage collector, for the
-#: command: a terminal calculation allocates fewer (its modules, classes and options, no cycles
-#: to free) and runs none, where Python's default of 700 runs a dozen; a long batch still runs
-#: it. [-]
-GC_ALLOCATIONS = 100_000
 
 
 def run(argv: list[str] | None = None) -> None:
-    """Console entry point: every error is one ``Error:`` line on stderr, never a traceback.
+    """The command line, run: every error is one ``Error:`` line on stderr, never a traceback.
+    (The console command runs it through :func:`bearingload.__main__.main`, which also sets the
+    process's collector.)
 
     Exit status: 0 success; 1 a failure of the computation (no convergence) or, for batch, rows
     skipped; 2 bad input (usage); 3 an internal error (a bug: please report it).
     """
-    import gc
     import sys
 
-    gc.set_threshold(GC_ALLOCATIONS, *gc.get_threshold()[1:])
     try:
         _refuse_detached_units(sys.argv[1:] if argv is None else argv)
         status = main.main(args=argv, prog_name="bearingload", standalone_mode=False)

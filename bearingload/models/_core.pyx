@@ -2104,8 +2104,11 @@ cdef void pair_state(const Pair *pr, const double *vh, const double *vl,
     st.res = residual(&pr.whole, st.gen, st.size)
 
 
-cdef void add_mapped(const Pair *pr, int k, const double *t, double *out) noexcept nogil:
-    """out += L_k^T t L_k: bearing k's local tangent t as the shaft's."""
+cdef void add_mapped(double sigma, double arm, const double *t, bint left,
+                     double *out) noexcept nogil:
+    """out += L^T t L: a bearing's local tangent t as the shaft's, L the map of its sign
+    ``sigma`` and its radial move ``arm`` per unit of tilt; summed as L^T (t L), or where
+    ``left`` as (L^T t) L (numpy's order, the pair's stiffness in physical units)."""
     cdef double tl[25]
     cdef double lk[25]
     cdef double acc
@@ -2114,21 +2117,21 @@ cdef void add_mapped(const Pair *pr, int k, const double *t, double *out) noexce
         lk[i] = 0.0
     lk[0] = 1.0
     lk[6] = 1.0
-    lk[3] = pr.arm[k]
-    lk[9] = pr.arm[k]
+    lk[3] = arm
+    lk[9] = arm
     for i in range(2, 5):
-        lk[6 * i] = pr.sigma[k]
-    for i in range(5):  # t L_k
+        lk[6 * i] = sigma
+    for i in range(5):  # t L_k, or L_k^T t
         for n in range(5):
             acc = 0.0
             for m in range(5):
-                acc += t[5 * i + m] * lk[5 * m + n]
+                acc += lk[5 * m + i] * t[5 * m + n] if left else t[5 * i + m] * lk[5 * m + n]
             tl[5 * i + n] = acc
-    for i in range(5):  # L_k^T (t L_k)
+    for i in range(5):  # L_k^T (t L_k), or (L_k^T t) L_k
         for n in range(5):
             acc = 0.0
             for m in range(5):
-                acc += lk[5 * m + i] * tl[5 * m + n]
+                acc += tl[5 * i + m] * lk[5 * m + n] if left else lk[5 * m + i] * tl[5 * m + n]
             out[5 * i + n] += acc
 
 
@@ -2147,7 +2150,7 @@ cdef void pair_tangent(const Pair *pr, PairWork *wk, double *out) noexcept nogil
         out[i] = 0.0
     for k in range(2):
         side_tangent(pr, wk, k, t)
-        add_mapped(pr, k, t, out)
+        add_mapped(pr.sigma[k], pr.arm[k], t, False, out)
 
 
 cdef void pair_move(const Pair *pr, double *jac, const double *grad,
@@ -2336,111 +2339,6 @@ cdef void axial_position(Case *cs, double delta, double *hi, double *lo) noexcep
         quick(sum_, err + lo[0], hi, lo)
 
 
-def solve_pair(const double[:, ::1] c, const double[:, ::1] s, const double[:, ::1] lengths,
-               const double[::1] sigma, const double[:, ::1] arm,
-               const double[::1] preload, const double[:, ::1] f, const unsigned char[:, ::1] held,
-               const double[:, ::1] curve, const double[::1] node_x, const double[::1] node_w,
-               const double[:, ::1] v0):
-    """Solve n cases of the preloaded pair (bearingload.models.pair) from the start v0 (n, 5):
-    damped Newton over the shaft's position, first in plain doubles (``lean_newton``), then
-    with the balls in double-double (``pair_newton``).
-
-    Arrays over the n cases: ``c``, ``s`` (n, z) the balls of either bearing (one-sided
-    contacts); ``lengths`` (6, n) their scaled geometry, a_hat, pre, gap, b_hi, b_lo (and
-    the imposed tilt, not read: the Problem's rows);
-    ``sigma`` (2,) +1 or -1 (a mirrored bearing); ``arm`` (n, 2) -z_k / R_i; ``preload`` (n,)
-    the thrust each bearing carries with no external load (its approach ``preload_delta``, 0
-    where not positive; both bearings at the axial offset of ``axial_position`` with every ball
-    at that approach); ``f`` (n, 5) the applied forces and ``held`` (n, 5, uint8) the
-    components held at 0, scaled; ``curve`` (n, NODES), or (n, 0)
-    for a constant K, with its ``node_x``, ``node_w``; the limits are the module's.
-
-    Returns (vh, vl, residual, steps, status, balls, kappa, gen, tangents, local, delta_p): the
-    position in double-double (n, 5) each, the residual before the last step (n,), the steps
-    of both stages (n,), the status (n,: OK, or NO_MEMORY), the balls of each bearing at the
-    answer and their loads (13, 2, n, z: rho, u, d, eps, up, ca, sa, cam1, q, dq, root, tau,
-    sig), their stiffness deviations (2, n, z), each bearing's generalised forces in its local
-    coordinates (2, n, 5), its true tangent there, scaled (2, n, 5, 5: ``side_tangent``), and
-    its local position (2, n, 5: ``pair_local``, the double-double summed), the preload
-    approach (n,).
-    """
-    cdef Py_ssize_t n = c.shape[0], k
-    cdef int z = <int> c.shape[1], i, b
-    cdef bint has_curve = curve.shape[1] == NODES
-    vh_a = np.empty((n, 5))
-    vl_a = np.empty((n, 5))
-    res_a = np.empty(n)
-    its_a = np.zeros(n, dtype=np.int64)
-    status_a = np.empty(n, dtype=np.int32)
-    balls_a = np.zeros((BALL_ARRAYS, 2, n, z))
-    kappa_a = np.zeros((2, n, z))
-    gen_a = np.zeros((2, n, 5))
-    tangents_a = np.zeros((2, n, 5, 5))
-    local_a = np.zeros((2, n, 5))
-    delta_a = np.zeros(n)
-    cdef double[::1] delta = delta_a
-    cdef double[:, :, :, ::1] tangents = tangents_a
-    cdef double[:, :, ::1] local = local_a, gen = gen_a
-    cdef double wh[5]
-    cdef double wl[5]
-    cdef double[:, ::1] vh = vh_a, vl = vl_a
-    cdef double[::1] res = res_a
-    cdef int64_t[::1] its = its_a
-    cdef int[::1] status = status_a
-    cdef double[:, :, :, ::1] balls = balls_a
-    cdef double[:, :, ::1] kap = kappa_a
-    cdef Pair pr
-    cdef PairWork wk
-    cdef Point *pt
-    memset(&pr, 0, sizeof(Pair))
-    pr.bear.lim = LIMITS
-    pr.whole = pr.bear
-    pr.max_steps = PAIR_MAX_STEPS
-    pr.halvings = PAIR_HALVINGS
-    pr.first_stage = PAIR_FIRST_STAGE
-    pr.first_steps = PAIR_FIRST_STEPS
-    pr.first_halvings = PAIR_FIRST_HALVINGS
-    with nogil:
-        for k in range(n):
-            pair_case(&pr, k, z, &c[k, 0], &s[k, 0], lengths[0, k], lengths[1, k], lengths[2, k],
-                      lengths[3, k], lengths[4, k])
-            pr.bear.curve = &curve[k, 0] if has_curve else NULL
-            pr.bear.node_x = &node_x[0]
-            pr.bear.node_w = &node_w[0]
-            preload_offset(&pr.bear, preload[k], &delta[k], &pr.off_hi[0], &pr.off_lo[0])
-            for b in range(2):
-                pr.sigma[b] = sigma[b]
-                pr.arm[b] = arm[k, b]
-                pr.off_hi[b] = pr.off_hi[0]
-                pr.off_lo[b] = pr.off_lo[0]
-            for i in range(5):
-                pr.whole.f[i] = f[k, i]
-                pr.whole.locked[i] = held[k, i]
-                vh[k, i] = v0[k, i]
-                vl[k, i] = 0.0
-            if not pair_open(z, &wk):
-                status[k] = NO_MEMORY
-                res[k] = INFINITY
-                continue
-            its[k] = lean_newton(&pr, &wk, &vh[k, 0])
-            its[k] += pair_newton(&pr, &wk, &vh[k, 0], &vl[k, 0], &res[k])
-            status[k] = OK
-            for b in range(2):
-                pt = &wk.cur.side[b].pt
-                for i in range(BALL_ARRAYS * z):  # the point's 13 arrays, one block
-                    balls[i // z, b, k, i % z] = pt.b.rho[i]
-                for i in range(z):
-                    kap[b, k, i] = wk.cur.side[b].kappa[i]
-                side_tangent(&pr, &wk, b, &tangents[b, k, 0, 0])
-                pair_local(&pr, b, &vh[k, 0], &vl[k, 0], wh, wl)
-                for i in range(5):
-                    local[b, k, i] = wh[i] + wl[i]
-                    gen[b, k, i] = pt.gen[i]
-            free(wk.block)
-    return (vh_a, vl_a, res_a, its_a, status_a, balls_a, kappa_a, gen_a, tangents_a, local_a,
-            delta_a)
-
-
 cdef void preload_offset(const Case *bear, double target, double *delta, double *hi,
                          double *lo) noexcept nogil:
     """The approach ``delta`` of every ball of the bearing ``bear`` carrying the thrust ``target``
@@ -2576,7 +2474,7 @@ cdef void lean_step(const Pair *pr, PairWork *wk, double *step) noexcept nogil:
                 wk.w3[j] = (curve_slope(cs, ln.ca[j], -ln.sa[j] * ln.sa[j] / (1.0 + ln.ca[j]))
                             * -ln.sa[j] * ln.root[j] ** 3 / safe)
         tangent(cs, ln.ca, ln.sa, wk.w1, wk.w2, wk.w3 if cs.curve != NULL else NULL, False, t)
-        add_mapped(pr, k, t, jac)
+        add_mapped(pr.sigma[k], pr.arm[k], t, False, jac)
     for i in range(5):
         grad[i] = 0.0 if pr.whole.locked[i] else wk.lean.gen[i] - pr.whole.f[i]
     pair_move(pr, jac, grad, step)
@@ -2624,6 +2522,376 @@ cdef int lean_newton(const Pair *pr, PairWork *wk, double *v) noexcept nogil:
             v[i] = trial[i]
         swap_lean(&wk.lean, &wk.lean_trial)
     return its
+
+
+# ------------------------------------------------------------- one call of the pair
+
+cpdef enum PairFlag:
+    UNBALANCED = 1     # the residual above the acceptance (or not finite)
+    EDGE_FIRST = 2     # a loaded ball of bearing 1 at a contact angle of 90°
+    EDGE_SECOND = 4    # the same in bearing 2
+    STIFF_OVERFLOW = 8 # a bearing's physical stiffness overflows
+    NO_CURVE = 16      # a Hertz curve the core cannot set up (the case not solved)
+    NO_GROOVE = 32     # a geometry ``groove`` refuses (the case not solved)
+    BAD_WIDTH = 64     # a width below D_w or beyond its largest times d_m (the case not solved)
+
+
+cdef int NOT_SET_UP = BAD_WIDTH | NO_GROOVE | NO_CURVE
+
+
+ctypedef struct PairCase:
+    # one case of ``pair_call``: the Pair, its set-up and its answer
+    Pair pr
+    double geo[4]     # A, g, R_i (the tilt lever: the tilt radius where given), alpha_0 [mm, rad]
+    double out[8]     # problem_case's s, A/s, p, gap, b_hi, b_lo, t_imp, F
+    double v[5]       # the start, then the answer (double-double with ``vl``)
+    double vl[5]
+    double delta      # the preload approach, scaled
+    double res
+    double k0         # K_0, or the constant K
+    int status        # problem_case's SetupStatus
+    unsigned char mirror
+
+
+cdef void pair_locks_case(bint tandem, bint mirror, double fr, double fa, double mm, double mc,
+                          unsigned char *held) noexcept nogil:
+    """Which of the shaft's (x, y, a, t, t_c) a pair's case holds at 0 (pair.held_components
+    states the symmetries): the mirror about the load line, the z-fold symmetry, the mirror
+    across the pair's mid-plane (not ``tandem``)."""
+    cdef bint no_moment = mm == 0 and mc == 0
+    cdef bint across = mirror and mc == 0
+    cdef bint radial = fr == 0 and no_moment
+    cdef bint axial = not tandem and fa == 0 and no_moment
+    held[0], held[1], held[2] = radial, across or radial, axial
+    held[3], held[4] = radial or axial, across or radial or axial
+
+
+def pair_locks(bint tandem, const unsigned char[::1] mirror, const double[:, ::1] loads):
+    """``pair_locks_case`` of n cases: ``mirror`` (n,) uint8, ``loads`` (4, n) = F_r, F_a, M,
+    M_c; returns held (n, 5) bool."""
+    cdef Py_ssize_t n = mirror.shape[0], k
+    held_a = np.empty((n, 5), dtype=bool)
+    cdef unsigned char[:, ::1] held = held_a.view(np.uint8)
+    with nogil:
+        for k in range(n):
+            pair_locks_case(tandem, mirror[k], loads[0, k], loads[1, k], loads[2, k],
+                            loads[3, k], &held[k, 0])
+    return held_a
+
+
+cdef double cube_root(double x) noexcept nogil:
+    """The cube root of ``x`` rounded to nearest: libm's cbrt (within an ulp) and one Newton
+    step on its residual y^3 - x in double-double (y^3 within a few ulps of x: their difference
+    exact), the bits numpy's cbrt gives (but for rare hard cases)."""
+    cdef double y = cbrt(x), p, e, q, f
+    if not (isfinite(y) and y != 0):
+        return y
+    two_prod(y, y, &p, &e)
+    two_prod(p, y, &q, &f)
+    return y - ((q - x) + (f + e * y)) / (3.0 * (y * y))
+
+
+cdef void pair_start(int z, double alpha0, double sigma2, double pre, const double *f,
+                     double *v) noexcept nogil:
+    """The standard start of a pair's case: the shares of the loads a rigid ring would give
+    (Stribeck's 5 for the radial load, the thrust on one bearing, or on both of a tandem
+    pair: ``sigma2`` > 0), or the preloaded position where the preload ``pre`` is the largest
+    load (scaled forces ``f``)."""
+    cdef double ca = cos(alpha0), sa = sin(alpha0), top = 0.0, share, root
+    cdef int i
+    share = (0.5 if sigma2 > 0 else 1.0) * fabs(f[2])
+    root = cube_root(share / (z * sa))
+    v[2] = ((f[2] > 0) - (f[2] < 0)) * (root * root) / sa
+    root = cube_root(2.5 * f[0] / (z * ca))
+    v[0] = (root * root) / ca
+    v[1] = v[3] = v[4] = 0.0
+    for i in range(5):
+        top = max(top, fabs(f[i]))
+    if pre >= top:
+        for i in range(5):
+            v[i] = 0.0
+
+
+cdef void pair_defaults(Pair *pr, int max_steps, int halvings, double first_stage,
+                        int first_steps, int first_halvings) noexcept nogil:
+    """The limits of every case of a pair's solve (the module's)."""
+    memset(pr, 0, sizeof(Pair))
+    pr.bear.lim = LIMITS
+    pr.whole = pr.bear
+    pr.max_steps, pr.halvings = max_steps, halvings
+    pr.first_stage, pr.first_steps, pr.first_halvings = first_stage, first_steps, first_halvings
+
+
+ctypedef struct PairCall:
+    # the inputs, work space and outputs of one ``pair_call`` (its docstring)
+    int z
+    Py_ssize_t n
+    bint hertz
+    const double *limits
+    const double *known    # K_0 and the curve's values of each case (1 + NODES), or NULL
+    const double *node_x
+    double *geo6           # (n, 6): each case's D_w, d_m, f_i, f_o, E, nu
+    double *c              # (z): the case's ball directions
+    double *s
+    double *k0             # (n)
+    double *values         # (n, NODES)
+    double *rows           # (10, 2n)
+    double *per_ball       # (5, 2n, z)
+    double *tangents       # (2, n, 25)
+    double *stiff          # (n, 25)
+    unsigned char *unloaded  # (n, 2)
+    int64_t *its           # (n)
+
+
+cdef int pair_curve(const PairCall *pc, Py_ssize_t k, const double *col,
+                    bint reuse) noexcept nogil:
+    """Case k's stiffness: the constant K of its stiffness row, or K_0 and the Hertz curve's
+    values from ``known`` where given, else by ``curve_of`` of its six (the case before's,
+    just before, where ``reuse``). Returns 0 where the core cannot set it up."""
+    cdef Py_ssize_t n = pc.n
+    cdef double *geo6 = &pc.geo6[6 * k]
+    cdef int i
+    if not pc.hertz:
+        pc.k0[k] = col[15 * n]
+    elif pc.known != NULL:
+        pc.k0[k] = pc.known[(1 + NODES) * k]
+        for i in range(NODES):
+            pc.values[NODES * k + i] = pc.known[(1 + NODES) * k + 1 + i]
+    else:
+        geo6[0], geo6[1], geo6[2], geo6[3] = col[9 * n], col[10 * n], col[11 * n], col[12 * n]
+        geo6[4], geo6[5] = col[7 * n], col[8 * n]
+        return curve_of(geo6, geo6 - 6 if reuse else geo6, reuse, pc.node_x, &pc.k0[k],
+                        &pc.values[NODES * k])
+    return 1
+
+
+cdef int pair_set_up(const PairCall *call, Py_ssize_t k, const double *col, bint reuse,
+                     PairCase *pc) noexcept nogil:
+    """Case k of ``pair_call`` set up (``col`` its column of the input rows, n apart): the
+    groove (``groove_case``; the tilt radius where given), the stiffness (``pair_curve``), the
+    scaled problem (``problem_case``), the held components, the preload offset
+    (``preload_offset``) and the start. Returns BAD_WIDTH, NO_GROOVE or NO_CURVE where it
+    cannot, else 0."""
+    cdef const double *limits = call.limits
+    cdef double load[6]
+    cdef unsigned char held[5]
+    cdef Pair *pr = &pc.pr
+    cdef Py_ssize_t n = call.n
+    cdef int i
+    if col[14 * n] < col[9 * n] or col[14 * n] > limits[10] * col[10 * n]:
+        return BAD_WIDTH
+    if not groove_case(&col[9 * n], n, True, limits[3], limits[4], pc.geo, 1, True):
+        return NO_GROOVE
+    if not pair_curve(call, k, col, reuse):
+        return NO_CURVE
+    pc.k0 = call.k0[k]
+    if col[16 * n] > 0:
+        pc.geo[2] = col[16 * n]
+    for i in range(6):
+        load[i] = col[i * n]
+    pc.status = problem_case(call.z, load, col[6 * n], pc.geo, pc.k0, False, False, limits, 1,
+                             call.c, call.s, &pc.mirror, held, pr.whole.f, pc.out)
+    pair_locks_case(limits[7] > 0, pc.mirror, load[0], load[1], load[2], load[3], held)
+    pair_case(pr, k, call.z, call.c, call.s, pc.out[1], pc.out[2], pc.out[3], pc.out[4],
+              pc.out[5])
+    pr.bear.curve = &call.values[NODES * k] if call.hertz else NULL
+    for i in range(5):
+        pr.whole.locked[i] = held[i]
+    preload_offset(&pr.bear, load[5] / pc.out[7], &pc.delta, &pr.off_hi[0], &pr.off_lo[0])
+    for i in range(2):
+        pr.sigma[i] = limits[6 + i]
+        pr.arm[i] = -(limits[8 + i] * col[14 * n] / pc.geo[2])
+        pr.off_hi[i], pr.off_lo[i] = pr.off_hi[0], pr.off_lo[0]
+    pair_start(call.z, pc.geo[3], limits[7], load[5] / pc.out[7], pr.whole.f, pc.v)
+    return 0
+
+
+cdef void lift_off(const Case *cs, double delta, double f_ref, double *offset,
+                   double *thrust) noexcept nogil:
+    """A preloaded bearing's offset and the pair's lift-off thrust: from its scaled A/s and
+    max(g, 0)/s and its preload approach ``delta``, the axial approach from the zero-load
+    position to every ball at it, ``u_p - u_0 = delta (2A + delta)/(u_p + u_0)`` (without
+    cancellation; u_0^2 = g (2A - g)), and the external thrust at which the other bearing
+    carries nothing, this one at twice that offset: z (1 + kappa) delta^1.5 sin(alpha) F [N]."""
+    cdef double big_a = cs.a_hat, u0, up, cc, w, u, d, dd, ca, sa, kappa
+    u0 = sqrt(cs.gap * (2.0 * big_a - cs.gap))
+    up = sqrt(u0 * u0 + delta * (2.0 * big_a + delta))
+    offset[0] = delta * (2.0 * big_a + delta) / (up + u0)
+    cc = big_a - cs.gap
+    w = 2.0 * offset[0]
+    u = u0 + w
+    d = hypot(cc, u)
+    dd = w * (2.0 * u0 + w) / (d + big_a)
+    ca, sa = cc / d, u / d
+    kappa = curve_kappa(cs, ca, -sa * sa / (1.0 + ca))
+    thrust[0] = cs.z * (1.0 + kappa) * pow(dd, 1.5) * sa * f_ref
+
+
+cdef int side_edge(const Case *cs, const Point *pt) noexcept nogil:
+    """Whether a loaded ball of a bearing sits at the groove edge (contact angle 90°)."""
+    cdef int j
+    for j in range(cs.z):
+        if pt.lo.root[j] > 0 and (pt.b.rho[j] <= 0 or (
+                pt.lo.ca[j] < 1e-8 and atan2(fabs(pt.lo.sa[j]), pt.lo.ca[j]) * (180.0 / PI)
+                >= 90.0)):
+            return 1
+    return 0
+
+
+cdef int side_result(const PairCase *pc, PairWork *wk, int b, const double *col,
+                     Py_ssize_t n, double *row, double *ball, double *tangent, double *stiff,
+                     unsigned char *unloaded) noexcept nogil:
+    """Bearing b's results (``col`` the case's column of the input rows, ``n`` apart; ``row``
+    its column of the bearing rows, ``ball`` of the ball rows, 2n apart): its loads (the size
+    of its radial force, its thrust [N] in rows 8, 9, its moment [N mm]; the radial force and
+    the moment exactly 0 where the shaft takes no radial load nor moment), ``result_case``
+    with its tangent made physical (``tangent``) and added to the pair's (``stiff``), whether
+    it carries no load. Returns its flags (STIFF_OVERFLOW, its EDGE_)."""
+    cdef const Pair *pr = &pc.pr
+    cdef const Point *pt = &wk.cur.side[b].pt
+    cdef double f_ref = pc.out[7], radius = pc.geo[2]
+    cdef double wh[5]
+    cdef double wl[5]
+    cdef double case_in[11]
+    cdef const double *bl[4]
+    cdef int i, flags = 0
+    cdef bint axisymmetric = pr.whole.locked[0]
+    pair_local(pr, b, pc.v, pc.vl, wh, wl)
+    for i in range(5):
+        wh[i] += wl[i]
+    row[8 * 2 * n] = 0.0 if axisymmetric else hypot(pt.gen[0], pt.gen[1]) * f_ref
+    row[9 * 2 * n] = pt.gen[2] * f_ref
+    case_in[0], case_in[1], case_in[2], case_in[3] = pc.out[6], pc.out[0], radius, pc.geo[3]
+    case_in[4], case_in[5], case_in[6] = pc.geo[0], 1.0, f_ref
+    case_in[7] = 0.0 if axisymmetric else pt.gen[3] * f_ref * radius
+    case_in[8], case_in[9], case_in[10] = col[6 * n], pc.out[2], pc.k0
+    bl[0], bl[1], bl[2], bl[3] = pt.b.eps, pt.lo.ca, pt.lo.sa, pt.lo.q
+    side_tangent(pr, wk, b, tangent)
+    if not result_case(wh, case_in, 1, pt.gen, bl, 1, wk.cur.side[b].kappa, pr.bear.z, False,
+                       tangent, pc.mirror and col[3 * n] == 0, row, ball, 2 * n):
+        flags |= STIFF_OVERFLOW
+    add_mapped(pr.sigma[b], pr.arm[b] * radius, tangent, True, stiff)
+    unloaded[0] = True
+    for i in range(pr.bear.z):
+        unloaded[0] = unloaded[0] and pt.lo.q[i] == 0
+    if side_edge(&pr.bear, pt):
+        flags |= EDGE_FIRST if b == 0 else EDGE_SECOND
+    return flags
+
+
+cdef void pair_rows(const PairCase *pc, const double *col, Py_ssize_t n,
+                    double *row) noexcept nogil:
+    """A case's column of the pair's rows (``n`` apart): F_r, F_a, M, M_c, F_p [N, N mm], the
+    preload offset [mm], B [mm], the shaft's x, y, axial [mm], tilt, tilt_cross [°], the
+    residual, the lift-off thrust (the sign of F_a, + if 0) [N], R_i [mm]."""
+    cdef double sc = pc.out[0], radius = pc.geo[2], offset, thrust, moved
+    cdef int i
+    for i in range(5):
+        row[i * n] = col[i * n] if i < 4 else col[5 * n]
+        moved = (pc.v[i] + pc.vl[i]) * sc
+        row[(7 + i) * n] = moved if i < 3 else (moved / radius) * (180.0 / PI)
+    lift_off(&pc.pr.bear, pc.delta, pc.out[7], &offset, &thrust)
+    row[5 * n], row[6 * n], row[12 * n] = offset * sc, col[14 * n], pc.res
+    row[13 * n], row[14 * n] = -thrust if col[n] < 0 else thrust, radius
+
+
+cdef int pair_one(const PairCall *call, Py_ssize_t k, const double *col, bint reuse,
+                  PairCase *pc, PairWork *wk) noexcept nogil:
+    """Case k of ``pair_call`` set up, solved from the standard start and its results
+    written (``side_result``; the pair's stiffness, its couplings of (x, axial, tilt) with (y,
+    tilt_cross) 0 where the case is mirrored). Returns its PairFlags."""
+    cdef Py_ssize_t n = call.n, col_b
+    cdef double *stiff = &call.stiff[25 * k]
+    cdef int i, b, flags = pair_set_up(call, k, col, reuse, pc)
+    if flags:
+        return flags
+    for i in range(5):
+        pc.vl[i] = 0.0
+    call.its[k] = lean_newton(&pc.pr, wk, pc.v)
+    call.its[k] += pair_newton(&pc.pr, wk, pc.v, pc.vl, &pc.res)
+    if not pc.res <= call.limits[5]:
+        flags |= UNBALANCED
+    for i in range(25):
+        stiff[i] = 0.0
+    for b in range(2):
+        col_b = b * n + k
+        flags |= side_result(pc, wk, b, col, n, &call.rows[col_b],
+                             &call.per_ball[call.z * col_b], &call.tangents[25 * col_b], stiff,
+                             &call.unloaded[2 * k + b])
+    if pc.mirror and col[3 * n] == 0:
+        for i in range(25):
+            if (i // 5 == 1 or i // 5 == 4) != (i % 5 == 1 or i % 5 == 4):
+                stiff[i] = 0.0
+    return flags
+
+
+def pair_call(int z, const double[:, ::1] cols, bint hertz, const double[::1] known,
+              const double[::1] limits, const double[::1] node_x, const double[::1] node_w):
+    """One call of the pair solver (bearingload.models.pair) on n cases: per case the set-up
+    (``groove``, the Hertz curve, ``combined_problem``, the held components, the preload
+    offset, the start), the solve (a damped Newton over the shaft's position, first in plain
+    doubles (``lean_newton``), then with the balls in double-double (``pair_newton``)) and the
+    results; the caller refuses what it flags.
+
+    ``cols`` (17, n): the input rows of pair.INPUT_ROWS; ``hertz``: the Hertz stiffness (else
+    the constant K of the stiffness row), with ``known`` = K_0 and the curve's values (1 +
+    NODES) of every case where known, else empty; ``limits`` = the symmetry snap [°], the
+    largest A/s, 0, the conformity range (2), the residual accepted, sigma_k (2: +1, or -1 for
+    a mirrored bearing), z_k/B (2), the largest width over d_m; the nodes and weights of the
+    curve; the iteration limits are the module's.
+
+    Returns (whether no case is flagged, then (n cases): the PairFlags (uint8), problem_case's
+    SetupStatus (int8), the steps, K_0 or the constant K, the curve's values (n, NODES), the
+    bearings' rows (10, 2n, bearing-major) = ``combined_result``'s 8 (the tangent made
+    physical), the size of the radial force and the thrust [N]; the ball rows (5, 2n, z); the
+    bearings' physical tangents (2, n, 5, 5); the pair's rows (15, n: ``pair_rows``); the
+    pair's stiffness sum_k L_k^T K_k L_k at its centre (n, 5, 5); whether each bearing carries
+    no load (n, 2) bool). A case flagged BAD_WIDTH, NO_GROOVE or NO_CURVE is not solved: its
+    outputs but the flags are not set."""
+    cdef Py_ssize_t n = cols.shape[1], k
+    out = (np.zeros(n, dtype=np.uint8), np.zeros(n, dtype=np.int8), np.zeros(n, dtype=np.int64),
+           np.empty(n), np.empty((n, NODES)), np.empty((10, 2 * n)), np.empty((5, 2 * n, z)),
+           np.empty((2, n, 5, 5)), np.empty((15, n)), np.empty((n, 5, 5)),
+           np.empty((n, 2), dtype=bool))
+    cdef unsigned char[::1] flags = out[0]
+    cdef signed char[::1] status = out[1]
+    cdef int64_t[::1] its = out[2]
+    cdef double[::1] k0 = out[3]
+    cdef double[:, ::1] values = out[4], rows = out[5], prow = out[8]
+    cdef double[:, :, ::1] per_ball = out[6], stiff = out[9]
+    cdef double[:, :, :, ::1] tangents = out[7]
+    cdef unsigned char[:, ::1] unloaded = out[10].view(np.uint8)
+    cdef PairCall call
+    cdef PairCase pc
+    cdef PairWork wk
+    cdef bint clean = True, reuse
+    cdef double *buf = NULL
+    if n == 0:
+        return (clean,) + out
+    buf = <double *> malloc((2 * z + 6 * n) * sizeof(double))
+    if buf == NULL or not pair_open(z, &wk):
+        free(buf)
+        raise MemoryError()
+    call.z, call.n, call.hertz, call.limits = z, n, hertz, &limits[0]
+    call.known = &known[0] if known.shape[0] else NULL
+    call.node_x, call.c, call.s, call.geo6 = &node_x[0], buf, buf + z, buf + 2 * z
+    call.k0, call.values, call.rows = &k0[0], &values[0, 0], &rows[0, 0]
+    call.per_ball, call.tangents = &per_ball[0, 0, 0], &tangents[0, 0, 0, 0]
+    call.stiff, call.unloaded, call.its = &stiff[0, 0, 0], &unloaded[0, 0], &its[0]
+    pair_defaults(&pc.pr, PAIR_MAX_STEPS, PAIR_HALVINGS, PAIR_FIRST_STAGE, PAIR_FIRST_STEPS,
+                  PAIR_FIRST_HALVINGS)
+    pc.pr.bear.node_x, pc.pr.bear.node_w = &node_x[0], &node_w[0]
+    with nogil:
+        for k in range(n):
+            reuse = k > 0 and not flags[k - 1] & NOT_SET_UP
+            flags[k] = pair_one(&call, k, &cols[0, k], reuse, &pc, &wk)
+            if not flags[k] & NOT_SET_UP:
+                status[k] = pc.status
+                pair_rows(&pc, &cols[0, k], n, &prow[0, k])
+            clean = clean and flags[k] == 0 and status[k] == SET_UP
+    free(buf)
+    free(wk.block)
+    return (clean,) + out
 
 
 # ------------------------------------------------------------------------ the balls at speed
@@ -4503,66 +4771,3 @@ def groove(const double[:, ::1] given, bint angular, double low, double high):
         for k in range(n):
             out[4, k] = groove_case(&given[0, k], n, angular, low, high, &out[0, k], n, False)
     return out_a
-
-
-def pair_loads(const double[:, :, ::1] gen, const double[:, :, :, ::1] balls,
-               const unsigned char[::1] axisymmetric, const double[::1] f_ref,
-               const double[::1] radius):
-    """The loads each bearing of n pairs carries (bearingload.models.pair) from its scaled
-    generalised forces ``gen`` (2, n, 5): (3, 2, n) = the size of its radial force
-    ``hypot(F_x, F_y) F``, its thrust ``F_a F`` [N] and its moment ``M F R_i`` [N mm] (the
-    radial force and the moment exactly 0 where the case is ``axisymmetric``, (n,) uint8:
-    no radial load nor moment on the shaft); and whether it carries none, (n, 2) uint8: no
-    ball's load (row 8 of the balls at the answer, (13, 2, n, z)) above 0."""
-    cdef Py_ssize_t n = gen.shape[1], k
-    cdef int z = <int> balls.shape[3], b, j
-    loads_a, unloaded_a = np.empty((3, 2, n)), np.empty((n, 2), dtype=bool)
-    cdef double[:, :, ::1] loads = loads_a
-    cdef unsigned char[:, ::1] unloaded = unloaded_a.view(np.uint8)
-    with nogil:
-        for b in range(2):
-            for k in range(n):
-                loads[0, b, k] = hypot(gen[b, k, 0], gen[b, k, 1]) * f_ref[k]
-                loads[1, b, k] = gen[b, k, 2] * f_ref[k]
-                loads[2, b, k] = gen[b, k, 3] * f_ref[k] * radius[k]
-                if axisymmetric[k]:
-                    loads[0, b, k] = loads[2, b, k] = 0.0
-                unloaded[k, b] = True
-                for j in range(z):
-                    if balls[8, b, k, j] != 0:
-                        unloaded[k, b] = False
-    return loads_a, unloaded_a
-
-
-def pair_lift_off(int z, const double[::1] a_hat, const double[::1] gap,
-                  const double[::1] delta_p, const double[::1] f_ref, const double[:, ::1] curve,
-                  const double[::1] node_x, const double[::1] node_w):
-    """A preloaded pair's preload offset and lift-off thrust, n cases (bearingload.models.pair):
-    from a bearing's scaled A/s and max(g, 0)/s (n,) and its preload approach ``delta_p`` (n,),
-    the axial approach from the zero-load position to every ball at it, ``u_p - u_0 = delta
-    (2A + delta)/(u_p + u_0)`` (without cancellation; u_0^2 = g (2A - g)), and the external
-    thrust at which the other bearing carries nothing, this one at twice that offset: z (1 +
-    kappa) delta^1.5 sin(alpha) F [N] (``f_ref`` F (n,) [N]; ``curve`` (n, NODES) the stiffness
-    curve's values, or (n, 0): a constant K). Returns (offset (n,), thrust (n,))."""
-    cdef Py_ssize_t n = a_hat.shape[0], k
-    offset_a, thrust_a = np.empty(n), np.empty(n)
-    cdef double[::1] offset = offset_a, thrust = thrust_a
-    cdef double big_a, u0, up, dp, cc, w, u, d, delta, ca, sa, kappa
-    cdef Case cs
-    cs.node_x, cs.node_w = &node_x[0], &node_w[0]
-    with nogil:
-        for k in range(n):
-            big_a, dp = a_hat[k], delta_p[k]
-            u0 = sqrt(gap[k] * (2.0 * big_a - gap[k]))
-            up = sqrt(u0 * u0 + dp * (2.0 * big_a + dp))
-            offset[k] = dp * (2.0 * big_a + dp) / (up + u0)
-            cc = big_a - gap[k]
-            w = 2.0 * offset[k]
-            u = u0 + w
-            d = hypot(cc, u)
-            delta = w * (2.0 * u0 + w) / (d + big_a)
-            ca, sa = cc / d, u / d
-            cs.curve = &curve[k, 0] if curve.shape[1] == NODES else NULL
-            kappa = curve_kappa(&cs, ca, -sa * sa / (1.0 + ca))
-            thrust[k] = z * (1.0 + kappa) * pow(delta, 1.5) * sa * f_ref[k]
-    return offset_a, thrust_a

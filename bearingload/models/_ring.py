@@ -23,6 +23,8 @@ import math
 
 import numpy as np
 
+from bearingload import validate
+
 EPS = float(np.finfo(float).eps)
 #: Iteration cap of every Newton loop; reaching it raises ConvergenceError.
 MAX_ITERATIONS = 200
@@ -31,8 +33,8 @@ POLISH = 1e-13
 #: Preloads |e|/s above this are solved from the centred ring (below, from the touching one). [-]
 PRELOAD_CENTRED = 1e-50
 #: A cage angle within this of 0 or half pitch is symmetric: 4 ulps of 360°, the rounding of
-#: reducing an angle to one turn and one pitch. [°]
-SYMMETRY_SNAP_DEG = 4.0 * EPS * 360.0
+#: reducing an angle to one turn and one pitch (validate.TURN_ROUNDING). [°]
+SYMMETRY_SNAP_DEG = validate.TURN_ROUNDING
 #: Cosines and sines below this are rounding of an exact zero. [-]
 SNAP = 1e-14
 #: Range of the one-ball approach (F_r/K)^(1/m) the solver accepts, and of the clearance in

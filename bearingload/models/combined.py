@@ -642,7 +642,7 @@ def _one_call(
         _ring.FIRST_STAGE_STEPS,
     )
     if key is not None and known is _UNKNOWN and state != _APART:
-        _remember(key, np.concatenate((k0, values[0])))
+        remember_setup(key, np.concatenate((k0, values[0])))
     return state, solved, result, geo[2]
 
 
@@ -1036,7 +1036,12 @@ def _equilibrium(
     except ConvergenceError as exc:
         rows = np.asarray(exc.cases["rows"])
         raise ConvergenceError(
-            exc.solver, exc.iterations, exc.residual, _described(given, rows), units=INPUT_UNITS
+            exc.solver,
+            exc.iterations,
+            exc.residual,
+            _described(given, rows),
+            units=INPUT_UNITS,
+            rows=rows,
         ) from None
     undetermined = np.zeros(vh.shape[0], dtype=bool)
     if np.count_nonzero(tangent[1][1]):  # (no case whose Hessian may be flat: none to move)
@@ -1755,7 +1760,14 @@ _SETUP_CACHE: dict[bytes, np.ndarray] = {}
 _UNKNOWN = np.zeros(0)
 
 
-def _remember(key: bytes, known: np.ndarray) -> None:
+def known_setup(key: bytes | None) -> np.ndarray:
+    """The Hertz set-up (K_0 and the curve's values) the cache holds for one case's geometry,
+    ``key`` the bits of its six parameters in the order of :data:`INPUT_ROWS`; empty where it
+    holds none (or ``key`` is None). The pair's one core call takes it as this one's does."""
+    return _SETUP_CACHE.get(key, _UNKNOWN) if key is not None else _UNKNOWN
+
+
+def remember_setup(key: bytes, known: np.ndarray) -> None:
     """Keep one geometry's Hertz set-up (K_0 and the curve's values) in the cache, the
     oldest dropped first beyond SETUP_CACHE_SIZE."""
     _SETUP_CACHE[key] = known
@@ -1785,7 +1797,7 @@ def hertz_setup(geo: _Geometry, e: np.ndarray, nu: np.ndarray) -> tuple[np.ndarr
         k = ball_stiffness(dw, dm / np.append(NODE_COS, 1.0), fi, fo, ee, nn).ball
         k0[i], values[i] = k[-1], (k[:-1] / k[-1] - 1.0) / (NODE_COS - 1.0)
     if key is not None:
-        _remember(key, np.concatenate((k0, values[0])))
+        remember_setup(key, np.concatenate((k0, values[0])))
     return k0, values
 
 
@@ -1891,6 +1903,7 @@ def _checked(p: Problem, end: _ring.Point, its: np.ndarray, given: dict) -> tupl
             float(known.max()) if known.size else math.nan,
             _described(given, bad),
             units=INPUT_UNITS,
+            rows=np.flatnonzero(bad),
         )
     if near_edge is None or np.count_nonzero(near_edge):
         _check_edge(end, given)
@@ -2053,6 +2066,7 @@ def distribution_of(
     cases = rows.reshape((8,) + shape) if shape else rows[:, 0].tolist()
     x, y, axial, tilt, tilt_cross, alpha0, play, moment = cases
     phi, alpha, approach, k_ball, q = per_ball.reshape((5,) + shape + (z,))
+    phi = validate.reduced_angle(phi)  # (a ball just below a whole turn at 0, as the cage)
     fr, fa, gr, cage = loads
 
     def case(a: np.ndarray) -> Any:

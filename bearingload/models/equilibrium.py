@@ -134,8 +134,10 @@ class LoadDistribution:
 
     @property
     def ball_angles(self) -> np.ndarray:
-        """Angles ``phi_i`` of balls 1..z from the load line, in [0, 360), for one case. [°]"""
-        return np.rad2deg(_ball_phi(int(self._one(self.balls)), float(self._one(self.cage_angle))))
+        """Angles ``phi_i`` of balls 1..z from the load line, in [0, 360) as the cage angle is
+        reduced (:func:`bearingload.validate.reduced_angle`), for one case. [°]"""
+        phi = _ball_phi(int(self._one(self.balls)), float(self._one(self.cage_angle)))
+        return validate.reduced_angle(np.rad2deg(phi))
 
     @property
     def ball_approaches(self) -> np.ndarray:

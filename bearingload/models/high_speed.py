@@ -15,6 +15,7 @@ sections at speed; the rescues of this module: :func:`_dynamic_start`,
 from __future__ import annotations
 
 import dataclasses
+import functools
 import math
 from dataclasses import dataclass
 from typing import Any
@@ -343,7 +344,10 @@ def solve_high_speed(
             contact_angle=contact_angle,
         )
     except ConvergenceError as exc:
-        raise _with_speed(exc, n_rpm) from None
+        loads = (radial_load, axial_load, moment, misalignment, moment_cross, tilt_radius)
+        ring = (ball_diameter, pitch_diameter, f_i, f_o, clearance, cage_angle, modulus)
+        inputs = (*loads, *ring, poisson, contact_angle)
+        raise _with_speed(exc, n_rpm, inputs) from None
     shape = np.shape(static.x)
     z = static.balls
     given = {"radial_load": radial_load, "axial_load": axial_load,
@@ -383,6 +387,8 @@ def solve_high_speed(
     case_arrays["shifted"] = lambda rows: _dynamic_start(
         z, geo, flat, case_arrays, (e, nu, rho_b), static_kw, contact_angle, rows
     )
+    named = {"speed": (n_rpm, "rpm"), "radial_load": (radial_load, "N")}
+    case_arrays["refused"] = functools.partial(refused_case, named, shape)
     with np.errstate(all="ignore"):
         out = _solve(z, geo, flat, case_arrays, (e, nu, rho_b), one_sided,
                      misalignment is not None)  # fmt: skip
@@ -624,7 +630,7 @@ def _solve(
         ):
             v[i] = near[0][0]  # (a y left in its range either way: the first answer kept)
             _put_state(st, np.array([i]), near[1])
-    _check_resolved(st, bearings, flat)
+    _check_resolved(st, bearings, flat, pos["refused"])
     check_balanced("ball-dynamics ring and ball equilibrium", st, total, flat)
     return bearings, v, st, total, undetermined(st.jac, held)
 
@@ -723,13 +729,14 @@ def undetermined(jac: np.ndarray, held: np.ndarray) -> np.ndarray:
     return np.any(~held.astype(bool) & (k <= SINGULAR * top) & (top > 0), axis=1)
 
 
-def _check_resolved(st: BallState, ring: Ring, flat: dict) -> None:
+def _check_resolved(st: BallState, ring: Ring, flat: dict, refused: Any) -> None:
     """InputError where the rounding level of the ring forces at the end is above LEVEL_MAX of
     the largest applied load (a load tiny against a preload or the balls' centrifugal forces:
     the double cannot balance it to the digits given). The smallest load accepted: the level
     grows at most as the load^(1/3) (the contact stiffness; constant under a preload), so
     ``F (level/LEVEL_MAX)^1.5`` is resolved. Not at speed 0: there the static solver (in
-    double-double) has answered, and refused what it does not resolve."""
+    double-double) has answered, and refused what it does not resolve. ``refused(i, load)``:
+    the input and element that name case ``i`` (:func:`refused_case`)."""
     level = np.where(np.isfinite(st.level) & (flat["speed"] > 0), st.level, 0.0)
     bad = np.flatnonzero(level > LEVEL_MAX)
     if bad.size == 0:
@@ -737,8 +744,9 @@ def _check_resolved(st: BallState, ring: Ring, flat: dict) -> None:
     i = int(bad[np.argmax(level[bad])])
     f_min = float(ring.f_ref[i] * (level[i] / LEVEL_MAX) ** 1.5)
     f_min = float(f"{f_min * 1.05:.2g}")  # two digits, rounded up
+    parameter, element = refused(i, "radial_load")
     raise InputError(
-        "radial_load",
+        parameter,
         f"the loads are too small against the ball forces at this speed for the ball dynamics "
         f"(the largest of F_r, |F_a| and M/R_i is {float(ring.f_ref[i]):.3g} N; the rounding of "
         f"the ball forces on the ring is {level[i] * float(ring.f_ref[i]):.2g} N, more than "
@@ -747,18 +755,45 @@ def _check_resolved(st: BallState, ring: Ring, flat: dict) -> None:
         f"for this bearing)",
         way_out=_combined.RADIAL_TAKES_ANY_LOAD,
         reason=_combined.TOO_LIGHT,
+        element=element,
     )
 
 
-def _with_speed(exc: ConvergenceError, n_rpm: np.ndarray) -> ConvergenceError:
+def refused_case(
+    given: dict[str, tuple[Any, str]], shape: tuple[int, ...], i: int, parameter: str
+) -> tuple[str, str]:
+    """The input that names the refused case ``i`` (flat, of the cases of ``shape``) and its
+    element: the speed, by its own element (``speed[1] = 3000 rpm``), where the speeds differ
+    over the cases (an array of mixed speeds: the speed tells the case apart); else
+    ``parameter``, by its own element where it is an array (:func:`bearingload.validate.
+    element_at`). ``given``: name -> (the input as given, its unit)."""
+    bad = np.zeros(int(np.prod(shape)), dtype=bool)
+    bad[i] = True
+    speed, unit = given["speed"]
+    if np.size(speed) > 1 and np.ptp(speed) > 0:
+        return "speed", validate.element_at(speed, bad, shape, unit)
+    value, unit = given[parameter]
+    return parameter, validate.element_at(value, bad, shape, unit)
+
+
+def _with_speed(exc: ConvergenceError, n_rpm: np.ndarray, inputs: tuple) -> ConvergenceError:
     """The failure of the static start (the cases at rest, from which the ball dynamics start)
-    naming the speed too where every case has the one speed (one case: solve's, a batch
-    row's); speeds that differ are not named (the failure names its cases by their rows)."""
-    if n_rpm.size == 0 or np.any(n_rpm != n_rpm.flat[0]):
+    naming the speed of its cases too: the one speed where every case has it (one case:
+    solve's, a batch row's), else the speed of each failing case, by the failure's ``rows``
+    among the cases of the static call's ``inputs`` broadcast together."""
+    if n_rpm.size == 0:
         return exc
-    cases = exc.cases | {"speed": float(n_rpm.flat[0])}
+    speed: Any = float(n_rpm.flat[0])
+    if np.any(n_rpm != speed):
+        if exc.rows is None:
+            return exc
+        shape = np.broadcast_shapes(*(np.shape(v) for v in inputs if v is not None))
+        speed = np.broadcast_to(n_rpm, shape).reshape(-1)[exc.rows]
+    cases = exc.cases | {"speed": speed}
     units = (exc.units or {}) | {"speed": _combined.INPUT_UNITS["speed"]}
-    return ConvergenceError(exc.solver, exc.iterations, exc.residual, cases, units, exc.way_out)
+    return ConvergenceError(
+        exc.solver, exc.iterations, exc.residual, cases, units, exc.way_out, rows=exc.rows
+    )
 
 
 def check_balanced(solver: str, st: BallState, its: np.ndarray, cases: dict) -> None:
@@ -773,6 +808,7 @@ def check_balanced(solver: str, st: BallState, its: np.ndarray, cases: dict) -> 
             float(known.max()) if known.size else math.nan,
             {k: v[bad] for k, v in cases.items()},
             units=_combined.INPUT_UNITS,
+            rows=np.flatnonzero(bad),
         )
 
 

@@ -30,21 +30,25 @@ commercial tools model a bearing set):
   load gives a little more: 2.885 F_p for a 7205B at F_p = 500 N).
 
 Numerics: damped Newton on the pair's five unknowns, each case alone in the compiled core
-(:func:`bearingload.models._core.solve_pair`, a C loop over the cases): a first stage in plain
-doubles to a residual of 1e-9, then the balls of each bearing evaluated by the single bearing's
-kernels in double-double arithmetic at the local position, the step solving the pair's tangent
-(with the change of K with the angle), the line search taking a step where the potential
-(stiffness frozen) falls or the residual halves. A case stops when every component is balanced
-to 1e-12 of its load (or to the rounding of its terms), the measure of
-:func:`~bearingload.models._combined_ring.residual_of`; a case left above 1e-8 raises
-:class:`~bearingload.errors.ConvergenceError` naming its inputs. This module keeps the checks,
-the set-up (the preload approach and offset, the start) and the results.
+(:func:`bearingload.models._core.pair_call`, a C loop over the cases that also sets each case
+up and gives its results): a first stage in plain doubles to a residual of 1e-9, then the
+balls of each bearing evaluated by the single bearing's kernels in double-double arithmetic at
+the local position, the step solving the pair's tangent (with the change of K with the angle),
+the line search taking a step where the potential (stiffness frozen) falls or the residual
+halves. A case stops when every component is balanced to 1e-12 of its load (or to the
+rounding of its terms), the measure of :func:`~bearingload.models._combined_ring.residual_of`;
+a case left above 1e-8 raises :class:`~bearingload.errors.ConvergenceError` naming its
+inputs. This module keeps the checks and the refusals: a call the core answers whole is one
+core call; one with a case it flags (a width or geometry to refuse, a Hertz set-up it cannot
+make, loads it cannot scale, a case unbalanced, a ball at the groove edge, a stiffness that
+overflows) takes :func:`_general`, which refuses in the order of the checks.
 """
 
 from __future__ import annotations
 
 import dataclasses
 import math
+import operator
 from dataclasses import dataclass
 from typing import Any
 
@@ -55,7 +59,8 @@ from bearingload.constants import STEEL_MODULUS
 from bearingload.errors import ConvergenceError, InputError
 from bearingload.models import _core
 from bearingload.models import combined as _comb
-from bearingload.models._combined_ring import ACCEPT, Problem
+from bearingload.models._combined_ring import ACCEPT
+from bearingload.models._ring import SYMMETRY_SNAP_DEG
 from bearingload.models.combined import CombinedDistribution, StiffnessViews
 
 __all__ = [
@@ -156,28 +161,22 @@ def pair_life(life_1: Any, life_2: Any, exponent: float = LIFE_EXPONENT) -> Any:
     return numerics.scalar_out(out)
 
 
-@dataclass(frozen=True)
-class _Pair:
-    """The scaled pair problem of n cases: the balls, the maps' signs and levers, the loads."""
-
-    prob: Problem  # the balls of either bearing
-    sigma: np.ndarray  # (2,) +1 or -1
-    lever: np.ndarray  # (n, 2) z_k / R_i
-    preload: np.ndarray  # (n,) F_p, scaled
-    f: np.ndarray  # (n, 5) applied, scaled
-    held: np.ndarray  # (n, 5) bool: y and theta_c of a case symmetric about the load line, 0
-
-
 def signs(kind: str) -> np.ndarray:
     """sigma_k (2,): +1, or -1 for bearing 2 of DB and DF, mirrored."""
     return np.array([1.0, 1.0 if kind == "DT" else -1.0])
 
 
-def levers(kind: str, width: np.ndarray, radius: np.ndarray) -> np.ndarray:
-    """z_k / R_i (n, 2): each bearing's centre from the pair's, over the tilt lever ``radius``;
-    bearing 1 at -B/2 in DB and DT, at +B/2 in DF (``width`` B)."""
+def halves(kind: str) -> np.ndarray:
+    """z_k / B (2,): each bearing's centre from the pair's over the width B of one bearing:
+    bearing 1 at -B/2 in DB and DT, at +B/2 in DF."""
     first = -0.5 if kind in ("DB", "DT") else 0.5
-    return np.array([first, -first]) * width[:, None] / radius[:, None]
+    return np.array([first, -first])
+
+
+def levers(kind: str, width: np.ndarray, radius: np.ndarray) -> np.ndarray:
+    """z_k / R_i (n, 2): each bearing's centre from the pair's (:func:`halves`, ``width`` B),
+    over the tilt lever ``radius``."""
+    return halves(kind) * width[:, None] / radius[:, None]
 
 
 def shaft_maps(sigma: np.ndarray, lever: np.ndarray) -> np.ndarray:
@@ -197,49 +196,10 @@ def held_components(kind: str, mirror: np.ndarray, loads: tuple[np.ndarray, ...]
     exactly: y and t_c where the balls are symmetric about the load line (``mirror``) and no
     moment acts across it; the z-fold symmetry (z >= 3) without a radial load or moment; the
     bearings' mirror image across the pair's mid-plane (not DT's) without a thrust or moment.
-    ``loads`` = (F_r, F_a, M, M_c) (n,) each."""
-    fr, fa, mm, mc = loads
-    no_moment = (mm == 0) & (mc == 0)
-    axial = (fa == 0) & no_moment if kind != "DT" else np.zeros(fa.shape, dtype=bool)
-    which = np.array([mirror & (mc == 0), (fr == 0) & no_moment, axial])  # (3, n)
-    return which.T @ _HELD  # (booleans: each component held where any symmetry holds it)
-
-
-#: The components of (x, y, a, t, t_c) each symmetry of :func:`held_components` holds: the
-#: mirror about the load line, the z-fold symmetry, the mirror across the mid-plane.
-_HELD = np.array([[0, 1, 0, 0, 1], [1, 1, 0, 1, 1], [0, 0, 1, 1, 1]], dtype=bool)
-
-
-#: The ball arrays of a point as the core gives them (rho, u, d, eps, up, ca, sa, cam1, q, dq,
-#: root, tau, sig). [-]
-BALL_ROWS = 13
-
-
-@dataclass
-class _State:
-    """The balls of both bearings at the answer: their geometry, stiffness and loads."""
-
-    block: np.ndarray  # the balls and their loads (13, 2, n, z), as the core gives them
-    kappa: np.ndarray  # their stiffness deviations (2, n, z)
-    gen: np.ndarray  # each bearing's generalised forces, local and scaled (2, n, 5)
-    tangents: np.ndarray  # each bearing's true tangent, local and scaled (2, n, 5, 5)
-    local: np.ndarray  # each bearing's local position, scaled (2, n, 5)
-
-
-def _solve_stages(pp: _Pair, v0: np.ndarray, curve: Any) -> tuple[Any, ...]:
-    """Every case solved from ``v0`` in the compiled core (:func:`bearingload.models._core.
-    solve_pair`: Newton in plain doubles to a residual of 1e-9, then with the balls in
-    double-double to the tolerance): (position hi, lo, residual, steps, the balls, their loads
-    and forces there, the preload approach)."""
-    p = pp.prob
-    values = np.zeros((v0.shape[0], 0)) if curve is None else curve.values
-    cont = np.ascontiguousarray
-    args = [cont(a, dtype=float) for a in (pp.sigma, -pp.lever, pp.preload, pp.f)]
-    args += [cont(pp.held).view(np.uint8), cont(values, dtype=float), _comb.NODE_X]
-    out = _core.solve_pair(p.c, p.s, p.lengths, *args, _comb.NODE_W, cont(v0, dtype=float))
-    vh, vl, res, its, _, balls, kappa, gen, tangents, local, delta_p = out
-    st = _State(balls, kappa, gen, tangents, local)
-    return vh, vl, res, its, st, delta_p
+    ``loads`` = (F_r, F_a, M, M_c) (n,) each. The rule is the compiled core's (``pair_locks``,
+    which its ``pair_call`` applies)."""
+    mirrored = np.ascontiguousarray(mirror, dtype=bool).view(np.uint8)
+    return _core.pair_locks(kind == "DT", mirrored, np.array(loads, dtype=float))
 
 
 #: Largest width B of one bearing (the distance of the two bearings' centres) over the pitch
@@ -334,11 +294,116 @@ def solve_pair(
         named["tilt_radius"] = tilt_radius
     if _plain(kind, named):  # one case of plain numbers, every check passed
         shape: tuple[int, ...] = ()
-        plain = named | {"cage_angle": validate.reduced_angle(named["cage_angle"])}
-        c = dict(zip(named, np.array(list(plain.values()))[:, None], strict=True))
+        plain = _NOT_GIVEN | named | {"cage_angle": validate.reduced_angle(named["cage_angle"])}
+        cols = np.array(_ROWS_OF(plain)).reshape(-1, 1)
     else:
         shape, c = _checked(kind, named)
         c["cage_angle"] = validate.cage_angle(c["cage_angle"])
+        n = c["cage_angle"].shape[0]
+        cols = np.array(_ROWS_OF({k: np.zeros(n) for k in _NOT_GIVEN} | c))
+    hertz = stiffness is None
+    key = cols[_HERTZ_ROWS].tobytes() if hertz and cols.shape[1] == 1 else None
+    known = _comb.known_setup(key)
+    out = _call(z, kind, cols, hertz, known)
+    if key is not None and not known.size and not out[1][0] & _NOT_SET_UP:
+        _comb.remember_setup(key, np.concatenate((out[4], out[5][0])))
+    if out[0]:  # the common path: every case answered by the one core call
+        return _distribution(kind, z, shape, cols, out)
+    with np.errstate(all="ignore"):
+        return _general(z, kind, (shape, named), cols, (hertz, known), out)
+
+
+#: The inputs of a pair packed, a row each (the cases along it), as the compiled core's
+#: ``pair_call`` takes them: the loads (F_r, F_a, M, M_c, a misalignment, 0, and the preload:
+#: ``combined_problem``'s), the cage angle, E and nu, the groove's five (D_w, d_m, f_i, f_o and
+#: the design contact angle: ``groove``), the width, and the stiffness and the tilt radius (0
+#: where not given).
+INPUT_ROWS = (
+    "radial_load",
+    "axial_load",
+    "moment",
+    "moment_cross",
+    "misalignment",
+    "preload",
+    "cage_angle",
+    "modulus",
+    "poisson",
+    "ball_diameter",
+    "pitch_diameter",
+    "f_i",
+    "f_o",
+    "contact_angle",
+    "width",
+    "stiffness",
+    "tilt_radius",
+)
+_ROWS_OF = operator.itemgetter(*INPUT_ROWS)
+_NOT_GIVEN = {"misalignment": 0.0, "stiffness": 0.0, "tilt_radius": 0.0}
+#: The rows of the Hertz set-up (E, nu, D_w, d_m, f_i, f_o: the order of the single bearing's
+#: cache, :func:`bearingload.models.combined.known_setup`).
+_HERTZ_ROWS = slice(7, 13)
+_CAGE_ROW = INPUT_ROWS.index("cage_angle")
+#: The core's flags of a case it could not set up (its general path sets it up or refuses).
+_NOT_SET_UP = int(_core.PairFlag.BAD_WIDTH | _core.PairFlag.NO_GROOVE | _core.PairFlag.NO_CURVE)
+
+
+def _call(z: int, kind: str, cols: np.ndarray, hertz: bool, known: np.ndarray) -> tuple:
+    """The compiled core's ``pair_call`` of the packed inputs ``cols`` (its docstring), the
+    Hertz set-up ``known`` of every case (or empty)."""
+    low, high = validate.CONFORMITY_RANGE
+    limits = (SYMMETRY_SNAP_DEG, _comb.GEOMETRY_RATIO_MAX, 0.0, low, high, ACCEPT)
+    limits += (1.0, -1.0 if kind != "DT" else 1.0, *halves(kind).tolist(), WIDTH_MAX)
+    return _core.pair_call(z, cols, hertz, known, np.array(limits), _comb.NODE_X, _comb.NODE_W)
+
+
+def _general(
+    z: int,
+    kind: str,
+    given_as: tuple[tuple[int, ...], dict[str, Any]],
+    cols: np.ndarray,
+    hertz: tuple[bool, np.ndarray],
+    out: tuple,
+    snap: bool = True,
+) -> PairDistribution:
+    """:func:`solve_pair` of the packed inputs a step at a time, from the core's call ``out``:
+    each refusal in its order; with ``snap``, the cases left unbalanced with a cage within
+    :data:`~bearingload.models.combined.NEAR_SYMMETRIC_DEG` of a symmetric position and no
+    moment across the load line solved at that position, as the single bearing solves them
+    (the cages of the answer are then that position). ``given_as``: the case shape and the
+    inputs by name; ``hertz``: whether the stiffness is Hertz's, and its set-up given."""
+    shape, named = given_as
+    c = dict(zip(INPUT_ROWS, cols, strict=True))
+    _check_width(c, named, shape)
+    groove = (c[k] for k in ("ball_diameter", "pitch_diameter", "f_i", "f_o", "contact_angle"))
+    geo = _comb.angular_geometry(*groove)
+    if "tilt_radius" in named:
+        geo = dataclasses.replace(geo, R_i=c["tilt_radius"])
+    if hertz[0] and np.count_nonzero(out[1] & _core.PairFlag.NO_CURVE):  # (the core could not)
+        k0, values = _comb.hertz_setup(geo, c["modulus"], c["poisson"])
+        hertz = (True, np.concatenate((k0[:, None], values), axis=1).reshape(-1))
+        out = _call(z, kind, cols, *hertz)
+    names = ("radial_load", "axial_load", "moment", "moment_cross", "preload")
+    if np.count_nonzero(out[2]):
+        _refuse_scale(geo, out[4], out[2] == _core.SetupStatus.TOO_LIGHT, *(c[k] for k in names))
+    flags, its, res = out[1], out[3], out[9][12]
+    unbalanced = (flags & _core.PairFlag.UNBALANCED) != 0
+    if snap and np.count_nonzero(unbalanced):
+        near = _near_symmetric(z, c["cage_angle"], c["moment_cross"]) & unbalanced
+        if np.count_nonzero(near):
+            cols = cols.copy()
+            cols[_CAGE_ROW] = _symmetric(z, c["cage_angle"], near)
+            out = _call(z, kind, cols, *hertz)
+            return _general(z, kind, given_as, cols, hertz, out, False)
+    given = {k: c[k] for k in NAMED}
+    _accepted(res, its, given)
+    _check_edge(flags, given)
+    if np.count_nonzero(flags & _core.PairFlag.STIFF_OVERFLOW):
+        _comb.refuse_overflow()
+    return _distribution(kind, z, shape, cols, out)
+
+
+def _check_width(c: dict[str, np.ndarray], named: dict[str, Any], shape: tuple[int, ...]) -> None:
+    """Refuse a width below the ball diameter or beyond :data:`WIDTH_MAX` times d_m."""
     narrow = c["width"] < c["ball_diameter"]
     if np.count_nonzero(narrow):  # no ring holds its balls so; the shaft's tilt then has no lever
         i = int(np.argmax(narrow))
@@ -349,9 +414,7 @@ def solve_pair(
             element=validate.element_at(named["width"], narrow, shape, "mm"),
         )
     wide = c["width"] > WIDTH_MAX * c["pitch_diameter"]
-    if np.count_nonzero(
-        wide
-    ):  # a shaft between two supports, not a pair (a width of 1e9 mm diverged)
+    if np.count_nonzero(wide):  # a shaft between two supports, not a pair (1e9 mm diverged)
         i = int(np.argmax(wide))
         raise InputError(
             "width",
@@ -360,8 +423,6 @@ def solve_pair(
             f"{c['width'][i]:.6g} mm, d_m = {c['pitch_diameter'][i]:.6g} mm",
             element=validate.element_at(named["width"], wide, shape, "mm"),
         )
-    with np.errstate(all="ignore"):
-        return _solve(z, kind, c, shape)
 
 
 def _arrangement(arrangement: Any) -> str:
@@ -449,75 +510,6 @@ NAMED = (
 )
 
 
-def _solve(
-    z: int, kind: str, c: dict, shape: tuple[int, ...], snap: bool = True
-) -> PairDistribution:
-    """The pair of the flat, checked cases ``c``; with ``snap``, the cases left unbalanced with
-    a cage within :data:`~bearingload.models.combined.NEAR_SYMMETRIC_DEG` of a symmetric
-    position and no moment across the load line solved at that position, as the single
-    bearing solves them (the cages of the answer are then that position)."""
-    geo = _comb.angular_geometry(c["ball_diameter"], c["pitch_diameter"], c["f_i"], c["f_o"],
-                                  c["contact_angle"])  # fmt: skip
-    if "tilt_radius" in c:
-        geo = dataclasses.replace(geo, R_i=c["tilt_radius"].astype(float))
-    curve = None
-    if "stiffness" in c:
-        k_ref = c["stiffness"]
-    else:
-        k_ref, values = _comb.hertz_setup(geo, c["modulus"], c["poisson"])
-        curve = _comb.StiffnessCurve(values)
-    fr, fa, mm, mc, fp = (c[k] for k in ("radial_load", "axial_load", "moment", "moment_cross",
-                                         "preload"))  # fmt: skip
-    prob, f, mirror = _scaled(z, c, geo, k_ref)
-    held = held_components(kind, mirror, (fr, fa, mm, mc))
-    pp = _Pair(prob, signs(kind), levers(kind, c["width"], geo.R_i), fp / prob.f_ref, f, held)
-    vh, vl, res, its, st, delta_p = _solve_stages(pp, _start(pp, z, geo, pp.preload), curve)
-    given = {k: c[k] for k in NAMED}
-    unbalanced = ~(res <= ACCEPT)
-    near = (
-        _near_symmetric(z, c["cage_angle"], mc) & unbalanced
-        if snap and np.count_nonzero(unbalanced)
-        else None
-    )
-    if near is not None and np.count_nonzero(near):
-        return _solve(
-            z, kind, c | {"cage_angle": _symmetric(z, c["cage_angle"], near)}, shape, False
-        )
-    _accepted(res, its, given)
-    _check_edge(st, given)
-    return _result(
-        kind, pp, geo, (vh, vl, res, its, st), c, shape, curve, mirror & (mc == 0), delta_p
-    )
-
-
-def _scaled(z: int, c: dict, geo: Any, k_ref: np.ndarray) -> tuple[Problem, np.ndarray, Any]:
-    """The scaled problem of the bearings' balls, the applied forces over the largest load or
-    the preload (n, 5) and which cases are mirrored about the load line: the compiled core's
-    ``combined_problem`` (one loop over the cases); the loads it flags refused by
-    :func:`_refuse_scale`."""
-    from bearingload.models._ring import SYMMETRY_SNAP_DEG
-
-    names = ("radial_load", "axial_load", "moment", "moment_cross", "preload")
-    n = c["preload"].shape[0]
-    rows = np.zeros((6, n))
-    rows[:4], rows[5] = [c[k] for k in names[:4]], c["preload"]
-    lengths = np.array((geo.A, geo.g, geo.R_i), dtype=float)
-    limits = np.array([SYMMETRY_SNAP_DEG, _comb.GEOMETRY_RATIO_MAX, 0.0])
-    k_ref = np.ascontiguousarray(k_ref, dtype=float)
-    cage = np.ascontiguousarray(c["cage_angle"], dtype=float)
-    status, cos_, sin_, mirror, _, f, out = _core.combined_problem(
-        z, rows, cage, lengths, k_ref, False, False, limits
-    )
-    if np.count_nonzero(status):
-        _refuse_scale(geo, k_ref, status == _core.SetupStatus.TOO_LIGHT, *(c[k] for k in names))
-    none = np.zeros((n, 5), dtype=bool)
-    # out: the scale, the lengths (a_hat, pre, gap, b_hi, b_lo, t_imp), F
-    scaled = (out[0], out[1:7], np.zeros((n, 5)), none, none, out[7], k_ref)
-    one_sided = np.zeros(n, dtype=bool)
-    one_sided[:] = True  # (np.ones is a Python function: ten times the cost on one case)
-    return Problem(z, cos_, sin_, *scaled, one_sided), f, mirror
-
-
 def _refuse_scale(geo: Any, k_ref: np.ndarray, flagged: np.ndarray, *loads: np.ndarray) -> None:
     """InputError on the loads of a pair the core flags: none at all, or too small for the
     groove geometry (``flagged``: the core decides; the combined model's check words it, its
@@ -549,20 +541,6 @@ def _refuse_scale(geo: Any, k_ref: np.ndarray, flagged: np.ndarray, *loads: np.n
         ) from exc
 
 
-def _start(pp: _Pair, z: int, geo: Any, pre: np.ndarray) -> np.ndarray:
-    """A start: the shares of the loads a rigid ring would give (Stribeck's 5 for the radial
-    load), or the preloaded position where the preload is the larger."""
-    f = pp.f
-    n = f.shape[0]
-    v = np.zeros((n, 5))
-    ca, sa = np.cos(geo.alpha0), np.sin(geo.alpha0)
-    share = (0.5 if pp.sigma[1] > 0 else 1.0) * np.abs(f[:, 2])
-    v[:, 2] = np.sign(f[:, 2]) * np.cbrt(share / (z * sa)) ** 2 / sa
-    v[:, 0] = np.cbrt(2.5 * f[:, 0] / (z * ca)) ** 2 / ca
-    v[pre >= np.maximum.reduce(np.abs(f), axis=1)] = 0.0  # (the largest load: the preload)
-    return v
-
-
 def _near_symmetric(z: int, cage: np.ndarray, mc: np.ndarray) -> np.ndarray:
     """Which cases have a cage [°] within NEAR_SYMMETRIC_DEG of a symmetric position and no
     moment across the load line (the core's symmetry rule, ``directions``, at that snap)."""
@@ -587,18 +565,15 @@ def _accepted(res: np.ndarray, its: np.ndarray, given: dict) -> None:
         )  # fmt: skip
 
 
-def _check_edge(st: _State, given: dict) -> None:
-    """Refuse a loaded ball at the groove edge (contact angle 90°), as the single bearing."""
-    b = st.block  # rho, ca, sa, root: rows 0, 5, 6, 10 (2, n, z)
-    near = (b[10] > 0) & ((b[0] <= 0) | (b[5] < 1e-8))  # (elsewhere below 90° - 5e-7°)
-    if not np.count_nonzero(near):
-        return
-    edge = near & ((b[0] <= 0) | (np.rad2deg(np.arctan2(np.abs(b[6]), b[5])) >= 90.0))
-    for k in range(2):
-        if edge[k].any():
+def _check_edge(flags: np.ndarray, given: dict) -> None:
+    """Refuse a loaded ball at the groove edge (contact angle 90°), as the single bearing: the
+    first case of bearing 1 the core flags, else of bearing 2."""
+    for k, flag in enumerate((_core.PairFlag.EDGE_FIRST, _core.PairFlag.EDGE_SECOND)):
+        edge = (flags & flag) != 0
+        if np.count_nonzero(edge):
             from bearingload.errors import format_cases
 
-            case = int(np.nonzero(edge[k])[0][0])
+            case = int(np.argmax(edge))
             one = {key: v[[case]] for key, v in given.items()}
             raise InputError(
                 "axial_load",
@@ -607,65 +582,23 @@ def _check_edge(st: _State, given: dict) -> None:
             )
 
 
-#: The couplings of (x, axial, tilt) with (y, tilt_cross): 0 in a case symmetric about the
-#: load line.
-_COUPLING = np.zeros((5, 5), dtype=bool)
-_COUPLING[np.ix_([0, 2, 3], [1, 4])] = _COUPLING[np.ix_([1, 4], [0, 2, 3])] = True
-
-
-def _result(kind: str, pp: _Pair, geo: Any, answer: tuple[Any, ...], c: dict,
-            shape: tuple[int, ...], curve: Any, mirrored: np.ndarray,
-            delta_p: np.ndarray) -> PairDistribution:  # fmt: skip
-    """Back to physical units: each bearing as a CombinedDistribution, the pair's values."""
-    vh, vl, res, its, st = answer
-    p = pp.prob
-    scale, f_ref, radius = p.scale, p.f_ref, geo.R_i
-    n = vh.shape[0]
-    maps = shaft_maps(pp.sigma, pp.lever * radius[:, None])  # physical: tilts in radians
-    axisymmetric = pp.held[:, 0]  # no radial force nor moment on a bearing, exactly
-    (radial, thrust, moment), unloaded = _core.pair_loads(
-        st.gen, st.block, np.ascontiguousarray(axisymmetric).view(np.uint8), f_ref, radius
-    )
-    z = p.z
-    # both bearings in one call of the core's combined_result (2n cases, bearing-major), their
-    # tangents made physical there (as physical_tangent)
-    one = _comb.result_inputs(p, geo, moment[0], c["cage_angle"])
-    case_in = np.concatenate((one, one), axis=1)
-    case_in[7] = moment.reshape(-1)
-    tangents = st.tangents.reshape(2 * n, 5, 5).copy()
-    rows, per_ball, overflow = _core.combined_result(
-        np.ascontiguousarray(st.local).reshape(2 * n, 5),
-        case_in,
-        np.ascontiguousarray(st.gen).reshape(2 * n, 5),
-        st.block.reshape(BALL_ROWS, 2 * n, z),
-        np.ascontiguousarray(st.kappa).reshape(2 * n, z),
-        False,
-        tangents,
-        np.concatenate((mirrored, mirrored)).view(np.uint8),
-    )
-    if np.count_nonzero(overflow):
-        _comb.refuse_overflow()
+def _distribution(
+    kind: str, z: int, shape: tuple[int, ...], cols: np.ndarray, out: tuple
+) -> PairDistribution:
+    """The answer of the core's ``pair_call`` ``out`` (its docstring) of the packed inputs
+    ``cols``: each bearing as a CombinedDistribution, the pair's values."""
+    n = cols.shape[1]
+    its, rows, per_ball, tangents, pair_rows = out[3], out[6], out[7], out[8], out[9]
     bearings = []
-    total = np.zeros((n, 5, 5))
     for k in range(2):
         part = slice(k * n, (k + 1) * n)
-        tangent = tangents[part].copy()
-        answer = (rows[:, part], per_ball[:, part], tangent, its)
-        loads = (radial[k], thrust[k], np.zeros(n), c["cage_angle"])
-        bearings.append(_comb.distribution_of(shape, z, answer, loads, geo.R_i, None))
-        total += maps[:, k].transpose(0, 2, 1) @ tangent @ maps[:, k]
-    total[mirrored[:, None, None] & _COUPLING] = 0.0
-    offset, lift_off = _lift_off(pp, curve, delta_p)
-    lift = None if kind == "DT" else np.where(c["axial_load"] < 0, -lift_off, lift_off)
-    moved = (vh + vl) * scale[:, None]  # (x, y, axial, and the tilts times their lever)
-    tilts = np.rad2deg(moved[:, 3:] / radius[:, None])
-    rows = np.array(
-        [c[k] for k in ("radial_load", "axial_load", "moment", "moment_cross", "preload")]
-        + [offset * scale, c["width"], *moved[:, :3].T, *tilts.T, res]
-    )  # one case of plain numbers: Python floats, as numerics.scalar_out gives them
-    cases = rows.reshape((13,) + shape) if shape else rows[:, 0].tolist()
-    load, axial_load, moment_, moment_cross, preload, offset_, width = cases[:7]
-    x, y, axial, tilt, tilt_cross, residual = cases[7:]
+        answer = (rows[:8, part], per_ball[:, part], tangents[k], its)
+        loads = (rows[8, part], rows[9, part], np.zeros(n), cols[_CAGE_ROW])
+        bearings.append(_comb.distribution_of(shape, z, answer, loads, pair_rows[14], None))
+    # one case of plain numbers: Python floats, as numerics.scalar_out gives them
+    cases = pair_rows.reshape((15,) + shape) if shape else pair_rows[:, 0].tolist()
+    load, axial_load, moment, moment_cross, preload, offset, width = cases[:7]
+    x, y, axial, tilt, tilt_cross, residual, lift = cases[7:14]
 
     def case(a: Any) -> Any:
         return np.asarray(a).reshape(shape) if shape else np.asarray(a).item()
@@ -675,32 +608,19 @@ def _result(kind: str, pp: _Pair, geo: Any, answer: tuple[Any, ...], c: dict,
         bearings=(bearings[0], bearings[1]),
         load=load,
         axial_load=axial_load,
-        moment=moment_,
+        moment=moment,
         moment_cross=moment_cross,
         preload=preload,
-        preload_offset=offset_,
+        preload_offset=offset,
         width=width,
         x=x,
         y=y,
         axial=axial,
         tilt=tilt,
         tilt_cross=tilt_cross,
-        stiffness_matrix=total.reshape(shape + (5, 5)),
-        unloaded=unloaded.reshape(shape + (2,)),
-        lift_off_axial_load=None if lift is None else case(lift),
+        stiffness_matrix=out[10].reshape(shape + (5, 5)),
+        unloaded=out[11].reshape(shape + (2,)),
+        lift_off_axial_load=None if kind == "DT" else lift,
         residual=residual,
         iterations=case(its),
     )
-
-
-def _lift_off(pp: _Pair, curve: Any, delta: np.ndarray) -> tuple[np.ndarray, np.ndarray]:
-    """The axial approach of a bearing from its zero-load position to every ball at ``delta``
-    (scaled), ``u_p - u_0 = delta (2A + delta)/(u_p + u_0)`` without cancellation, and the
-    external axial load alone at which one bearing of a preloaded DB/DF pair carries nothing
-    (the other then at twice that offset from its zero-load position) [N], its magnitude: the
-    compiled core's ``pair_lift_off``."""
-    p = pp.prob
-    values = np.zeros((delta.shape[0], 0)) if curve is None else curve.values
-    cont = np.ascontiguousarray
-    rows = (cont(a, dtype=float) for a in (p.a_hat, p.gap, delta, p.f_ref, values))
-    return _core.pair_lift_off(p.z, *rows, _comb.NODE_X, _comb.NODE_W)

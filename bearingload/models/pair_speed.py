@@ -13,6 +13,7 @@ docs/speed.md ("Pairs (DB, DF, DT)").
 from __future__ import annotations
 
 import dataclasses
+import functools
 import math
 from dataclasses import dataclass
 from typing import Any
@@ -165,8 +166,10 @@ def solve_pair_high_speed(
     flat = dict(zip(given, _hs.flat_columns(shape, *given.values()), strict=True))
     flat["cage_angle"] = validate.cage_angle(flat["cage_angle"])
     sh, geo, v_static = _setup(static, flat, shape)
+    named = {k: (given[k], "rpm" if k == "speed" else "N") for k in _LOADS + ("speed",)}
+    refused = functools.partial(_hs.refused_case, named, shape)
     with np.errstate(all="ignore"):
-        v, parts, jac, its, rest = _solve(sh, v_static, flat, static.arrangement != "DT")
+        v, parts, jac, its, rest = _solve(sh, v_static, flat, static.arrangement != "DT", refused)
         extra = _at_speed(static, rest, shape)
     return _result(static, sh, geo, flat, shape, (v, parts, jac, its, extra))
 
@@ -231,12 +234,19 @@ STATIC_WAY = "the static model of the pair (solve_pair) leaves the ball forces o
 TOO_LIGHT_PAIR = "too_light_pair_dynamics"
 
 
-def _solve(sh: _Shaft, v_static: np.ndarray, flat: dict, rest: bool) -> tuple[Any, ...]:
+#: The loads of which the largest names a case too light for the pair's ball dynamics.
+_LOADS = ("radial_load", "axial_load", "preload")
+
+
+def _solve(
+    sh: _Shaft, v_static: np.ndarray, flat: dict, rest: bool, refused: Any
+) -> tuple[Any, ...]:
     """The core's solve (Newton from the static answer, continuation for the cases left; with
-    ``rest`` the shaft centred too); the checks. Returns (v, both bearings' states (local),
-    the shaft's tangent (n, 5, 5), iterations, rest (n, 2)); each bearing's state holds the
-    shaft's measures (merit, score, level: the core's, over the largest applied load or
-    preload)."""
+    ``rest`` the shaft centred too); the checks, ``refused(i, load)`` the input and element
+    that name case ``i`` (:func:`bearingload.models.high_speed.refused_case`). Returns (v, both
+    bearings' states (local), the shaft's tangent (n, 5, 5), iterations, rest (n, 2)); each
+    bearing's state holds the shaft's measures (merit, score, level: the core's, over the
+    largest applied load or preload)."""
     shaft = (sh.maps, sh.offset, sh.f, sh.held.view(np.uint8))
     limits = np.array([ITERATIONS, CONTINUATION_STAGES, 1, 1 if rest else 0], dtype=float)
     v, parts, out = _hs.core_solve(sh.ring, shaft, limits, v_static, v_static, True)
@@ -246,15 +256,17 @@ def _solve(sh: _Shaft, v_static: np.ndarray, flat: dict, rest: bool) -> tuple[An
     small = np.flatnonzero(level > _hs.LEVEL_MAX)
     if small.size:
         i = int(small[np.argmax(level[small])])
-        sizes = {k: abs(float(flat[k][i])) for k in ("radial_load", "axial_load", "preload")}
+        sizes = {k: abs(float(flat[k][i])) for k in _LOADS}
+        parameter, element = refused(i, max(sizes, key=lambda k: sizes[k]))  # the largest load
         raise InputError(
-            max(sizes, key=lambda k: sizes[k]),  # the largest load names the option
+            parameter,
             f"the loads are too small against the ball forces at this speed for the ball "
             f"dynamics of the pair (the largest of F_r, |F_a|, M/R_i and the preload is "
             f"{float(sh.f_ref[i]):.3g} N; the rounding of the ball forces on the shaft is "
             f"{level[i] * float(sh.f_ref[i]):.2g} N, more than {_hs.LEVEL_MAX:.0e} of it)",
             way_out=STATIC_WAY,
             reason=TOO_LIGHT_PAIR,
+            element=element,
         )
     named = {k: flat[k] for k in NAMED}
     _hs.check_balanced("bearing-pair shaft and ball-dynamics equilibrium", st, its, named)

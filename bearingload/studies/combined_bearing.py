@@ -252,13 +252,25 @@ def groove_side_warnings(r: Any, n: int) -> list[str | None]:
     return out
 
 
+#: The share of the largest ball approach below which the balls do not feel a tilt: a tilt moving
+#: the groove centres at the tilt's lever by at most this share (R_i theta <= 1e-7 delta_max)
+#: changes no ball load by more than 1.5e-7 of the heaviest (Q ~ delta^1.5), under the six digits
+#: the results print: the ring is aligned as far as its balls tell, and the tilt is no finding
+#: (a pair's shaft takes 1e-10° from a thrust of 1e-6 N beside 1.4 kN; 0.01° from 100 N). [-]
+TILT_UNFELT = 1e-7
+
+
 def warned_tilt(r: CombinedDistribution) -> Any:
     """The tilt the checks weigh (:func:`bearingload.bearings.checks.combined_warnings`), the
     one rule of every command: the inner ring's tilt, both axes together, whatever gives it
     (a moment, an imposed misalignment, or a ring free to tilt under an eccentric load: the
     tilt is the same with --moment 0 as without a moment): its size, both axes together, of
-    each case (an array of cases: an array). [°]"""
-    return np.degrees(np.hypot(np.radians(r.tilt), np.radians(r.tilt_cross)))
+    each case (an array of cases: an array); 0 where no ball feels it (:data:`TILT_UNFELT`;
+    a ring whose balls carry nothing feels any tilt). [°]"""
+    tilt = np.hypot(np.radians(r.tilt), np.radians(r.tilt_cross))
+    approach = np.max(np.maximum(r.ball_approaches, 0.0), axis=-1)
+    felt = np.asarray(r.tilt_radius) * tilt > TILT_UNFELT * approach
+    return np.degrees(np.where(felt, tilt, 0.0))
 
 
 def check_misalignment(misalignment: Any) -> None:
