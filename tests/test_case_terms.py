@@ -45,7 +45,7 @@ def test_a_failure_at_speed_gives_the_units_of_its_inputs():
     state = SimpleNamespace(accepted=np.array([False]), merit=np.array([1e-8]))
     flat = {"radial_load": np.array([100.0]), "speed": np.array([3000.0])}
     with pytest.raises(ConvergenceError) as info:
-        high_speed._check(state, np.array([551]), flat)
+        high_speed.check_balanced("ball dynamics", state, np.array([551]), flat)
     assert info.value.units["radial_load"] == "N" and info.value.units["speed"] == "rpm"
 
 

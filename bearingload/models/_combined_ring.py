@@ -89,7 +89,7 @@ class Problem:
     c: np.ndarray  # cos phi_j, (n, z)
     s: np.ndarray  # sin phi_j, (n, z)
     scale: np.ndarray  # s [mm], (n,)
-    lengths: np.ndarray  # (6, n): a_hat, pre, gap, b_hi, b_lo, t_imp (the properties below)
+    lengths: np.ndarray  # (6, n): a_hat, pre, gap, B = A + p (double-double: hi, lo), t_imp
     f: np.ndarray  # generalised forces of (x, y, a, t, t_c), (n, 5)
     locked: np.ndarray  # (n, 5) bool: held (imposed tilt, or 0 by symmetry)
     imposed: np.ndarray  # (n, 5) bool: held by an imposed tilt (its moment is a reaction)
@@ -111,15 +111,6 @@ class Problem:
     def gap(self) -> np.ndarray:
         """max(G_r/2, 0) / s."""
         return self.lengths[2]
-
-    @property
-    def b_hi(self) -> np.ndarray:
-        """B = A + p, double-double: its high part (``b_lo`` the low)."""
-        return self.lengths[3]
-
-    @property
-    def b_lo(self) -> np.ndarray:
-        return self.lengths[4]
 
     @property
     def t_imp(self) -> np.ndarray:
@@ -146,11 +137,6 @@ class Problem:
         out = {k: v[idx] if isinstance(v, np.ndarray) and k != "lengths" else v for k, v in items}
         out["lengths"] = np.ascontiguousarray(self.lengths[:, idx])  # (the cases its 2nd axis)
         return Problem(**out)
-
-    @property
-    def deviation(self) -> np.ndarray:
-        """Cases whose forces are summed from the preloaded reference, (n,) bool."""
-        return (self.pre > 0) & (self.z >= 2)
 
 
 @dataclass

@@ -3440,13 +3440,10 @@ cdef void add_levels(const Ring *rg, int j, const double *t, const double *tot,
     cdef double arm_a[5]
     cdef double g = hypot(t[0], t[1]), own
     cdef int k
-    arm_r[0] = fabs(rg.c[j])
-    arm_r[1] = fabs(rg.s[j])
-    arm_a[3] = arm_r[0]
-    arm_a[4] = arm_r[1]
-    arm_r[2] = arm_r[3] = arm_r[4] = arm_a[0] = arm_a[1] = 0.0
-    arm_a[2] = 1.0
+    ball_arms(rg, j, arm_r, arm_a)
     for k in range(5):
+        arm_r[k] = fabs(arm_r[k])
+        arm_a[k] = fabs(arm_a[k])
         st.floor[k] += arm_r[k] * fabs(t[13]) + arm_a[k] * fabs(t[12])
         moved[k] += ((fabs(tot[2]) + fabs(tot[3])) * arm_r[k]
                      + (fabs(tot[0]) + fabs(tot[1])) * arm_a[k]) * (EPS * length)
@@ -4157,27 +4154,19 @@ cdef void shaft_on(Shaft *sh, int parts, const double *maps, const double *offse
 
 
 cdef void store_dyn(const Dyn *st, int z, Py_ssize_t n, Py_ssize_t k, double *balls,
-                    double *terms, double *sens, double *ring) noexcept nogil:
-    """Case k's bearing into the outputs: balls (3, n, z) delta_o, alpha_o, balanced; terms
-    (BALL_TERMS, n, z); sens (n, z, 6); ring (n, 42): gen (5), jac (25), floor (5), noise (5),
-    balls_ok, touching."""
+                    double *terms, double *ring) noexcept nogil:
+    """Case k's bearing into the outputs: balls (2, n, z) delta_o, alpha_o; terms
+    (BALL_TERMS, n, z); ring (n, 30): gen (5), jac (25)."""
     cdef Py_ssize_t j, i
     for j in range(z):
         balls[k * z + j] = st.do[j]
         balls[(n + k) * z + j] = st.ao[j]
-        balls[(2 * n + k) * z + j] = st.ok[j]
         for i in range(BALL_TERMS):
             terms[(i * n + k) * z + j] = st.terms[BALL_TERMS * j + i]
-        for i in range(6):
-            sens[(k * z + j) * 6 + i] = st.sens[6 * j + i]
     for i in range(5):
-        ring[42 * k + i] = st.gen[i]
-        ring[42 * k + 30 + i] = st.floor[i]
-        ring[42 * k + 35 + i] = st.noise[i]
+        ring[30 * k + i] = st.gen[i]
     for i in range(25):
-        ring[42 * k + 5 + i] = st.jac[i]
-    ring[42 * k + 40] = st.balls_ok
-    ring[42 * k + 41] = st.touching
+        ring[30 * k + 5 + i] = st.jac[i]
 
 
 cdef double *shafts_open(int z, ShaftState *states) noexcept nogil:
@@ -4216,13 +4205,12 @@ cdef int shaft_case(Shaft *sh, double *v, const double *v_static, bint continued
 
 cdef void store_case(const Shaft *sh, const ShaftState *st, Py_ssize_t n, Py_ssize_t k,
                      double **outs, double *out) noexcept nogil:
-    """Case k's answer: each bearing's by ``store_dyn`` into outs (balls, terms, sens, ring of
+    """Case k's answer: each bearing's by ``store_dyn`` into outs (balls, terms, ring of
     bearing 1, then of bearing 2); out (n, 45): gen (5), jac (25), floor (5), merit, score,
     level (35-37); 38-39 left to the caller."""
     cdef int i
     for i in range(sh.parts):
-        store_dyn(&st.part[i], sh.ring.z, n, k, outs[4 * i], outs[4 * i + 1], outs[4 * i + 2],
-                  outs[4 * i + 3])
+        store_dyn(&st.part[i], sh.ring.z, n, k, outs[3 * i], outs[3 * i + 1], outs[3 * i + 2])
     for i in range(5):
         out[45 * k + i] = st.gen[i]
         out[45 * k + 30 + i] = st.floor[i]
@@ -4262,25 +4250,25 @@ def solve_speed(const double[:, ::1] consts, const double[:, ::1] ki, const doub
     held (5, uint8); limits (12): TOLERANCE, ACCEPT, ROUNDING, NOISE_MAX, BALL_TOLERANCE, the
     ball rounding factor, LM_TRIALS, HALVINGS, BALL_ITERATIONS, FALLBACK_ITERATIONS, the ball
     halvings, SINGULAR; shaft_limits (4): Newton iterations, continuation stages, 1: each stage's balls
-    warm, 1: the state at rest too (``at_rest``). Returns (v, bearings: (balls, terms, sens,
-    ring) of each as ``store_dyn``, out (n, 45) as ``store_case`` with out[:, 38] the
+    warm, 1: the state at rest too (``at_rest``). Returns (v, bearings: (balls, terms, ring)
+    of each as ``store_dyn``, out (n, 45) as ``store_case`` with out[:, 38] the
     iterations, 39 accepted, 40-41 ``at_rest``, 42 out of memory)."""
     cdef Py_ssize_t n = c.shape[0], k
     cdef int z = <int> c.shape[1], parts = <int> maps.shape[1], i
     v_a = np.array(v0, dtype=float, copy=True)
-    bearings = [(np.empty((3, n, z)), np.empty((BALL_TERMS, n, z)), np.empty((n, z, 6)),
-                 np.zeros((n, 42))) for i in range(parts)]
+    bearings = [(np.empty((2, n, z)), np.empty((BALL_TERMS, n, z)), np.zeros((n, 30)))
+                for i in range(parts)]
     out_a = np.zeros((n, 45))
     cdef double[:, ::1] v = v_a, out = out_a
-    cdef double *outs[8]
+    cdef double *outs[6]
     cdef double[:, :, ::1] arr3
     cdef double[:, ::1] arr2
     for i in range(parts):
-        for k in range(3):
+        for k in range(2):
             arr3 = bearings[i][k]
-            outs[4 * i + k] = &arr3[0, 0, 0]
-        arr2 = bearings[i][3]
-        outs[4 * i + 3] = &arr2[0, 0]
+            outs[3 * i + k] = &arr3[0, 0, 0]
+        arr2 = bearings[i][2]
+        outs[3 * i + 2] = &arr2[0, 0]
     cdef Shaft sh
     cdef ShaftState st[5]
     cdef double *block

@@ -19,7 +19,7 @@ ctypedef struct RingSet:
     double *u      # gap factor of each ball (1 in the forward problem and under preload)
     double *w      # multiplicity (or the ball stiffness in the forward problem)
     double *delta  # approach of each ball at the last evaluation
-    double *q      # load and slope of each ball at the last evaluation, or NULL
+    double *q      # load and slope of each ball at the last evaluation
     double *dq
     double e       # gap per side (scaled: e_hat); under preload -p
     double m       # load-deflection exponent
@@ -65,9 +65,8 @@ cdef void ring_sums(const RingSet *r, double a, double b, Sums *o) noexcept nogi
             root = sqrt(d) if r.m == 1.5 else pow(d, r.m - 1.0)
             q = d * root
             dq = r.m * root
-        if r.q != NULL:
-            r.q[j] = q
-            r.dq[j] = dq
+        r.q[j] = q
+        r.dq[j] = dq
         if d > 0.0:
             wq = r.w[j] * q
             sums_add(o, wq, r.w[j] * dq, r.c[j], r.s[j])
@@ -98,9 +97,8 @@ cdef void ring_sums_pre(const RingSet *r, double a, double b, Sums *o) noexcept 
             dq = 0.0
             br = -1.0 - (m + 1.0) * t
         r.delta[j] = p + move
-        if r.q != NULL:
-            r.q[j] = q
-            r.dq[j] = dq
+        r.q[j] = q
+        r.dq[j] = dq
         wt = r.w[j] * term
         sums_add(o, wt, r.w[j] * dq, r.c[j], r.s[j])
         o.size += fabs(wt)
@@ -192,10 +190,9 @@ def ring_forces(int z, const double[:] x, const double[:] y, const double[:] k,
 
 cdef double RADIAL_EPS = 2.220446049250313e-16
 
-ctypedef struct Eval:
-    # the scaled residual (gx = force - 1, gy), its Jacobian, the size the residual is measured
-    # against (max(1, sum |terms|)) and the potential
-    double gx, gy, hxx, hxy, hyy, size, energy
+# the ring sums as ``ring_eval`` leaves them: the scaled residual (gx = force - 1, gy), its
+# Jacobian, the size the residual is measured against (max(1, sum |terms|)) and the potential
+ctypedef Sums Eval
 
 ctypedef struct Radial:
     # one case: its ring (the balls in the load frame), its data and its work arrays
@@ -234,25 +231,22 @@ cdef void turn_back(const Radial *rd, Sums *o) noexcept nogil:
 
 cdef void ring_eval(Radial *rd, double a, double b, Eval *ev) noexcept nogil:
     """The scaled residual, Jacobian, size and potential at (a, b) of the load frame."""
-    cdef Sums o
     cdef double at[2]
     at[0] = a
     at[1] = b
     if rd.turned:
         turn_in(rd, a, b, at)
     if rd.r.pre:
-        ring_sums_pre(&rd.r, at[0], at[1], &o)
+        ring_sums_pre(&rd.r, at[0], at[1], ev)
     else:
-        ring_sums(&rd.r, at[0], at[1], &o)
+        ring_sums(&rd.r, at[0], at[1], ev)
     if rd.turned:
-        turn_back(rd, &o)
-    ev.gx = o.gx - 1.0
-    ev.gy = 0.0 if rd.folded else o.gy
-    ev.hxx = o.hxx
-    ev.hxy = 0.0 if rd.folded else o.hxy
-    ev.hyy = o.hyy
-    ev.size = max(1.0, o.size)
-    ev.energy = o.energy / (rd.r.m + 1.0) - a
+        turn_back(rd, ev)
+    ev.gx = ev.gx - 1.0
+    if rd.folded:
+        ev.gy = ev.hxy = 0.0
+    ev.size = max(1.0, ev.size)
+    ev.energy = ev.energy / (rd.r.m + 1.0) - a
 
 
 cdef void ring_start_sums(const double *c, const double *u, const double *w, int k, double m,

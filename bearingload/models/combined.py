@@ -1065,18 +1065,12 @@ def _least_norm_tilt(
     balance them; and which cases those are (n,) bool. ``held``: the core's Hessian of the
     balls that hold the ring (n, 5, 5) and whether it may have a null direction (n,).
 
-    Where the balls that carry load hold the ring along every direction but one tilt (an
-    angular-contact bearing of 4 balls under a thrust of 1e-3 F_r: two loaded balls opposite
-    each other, a third at 0° whose contact takes no axial part, the fourth loose), every tilt
-    about the line through the loaded balls, up to where a loose ball touches or the ball at
-    0° leaves the groove bottom, balances the loads: the one returned depended on the start
-    (-0.588° or -0.683° for loads 1e-5 apart). The valley is the null direction of the
-    potential's Hessian; its ends are where the first ball changes state along it (to first
-    order, within 1e-6 of the range). A ball carrying less than the tolerance (1e-12 of the
-    largest load) does not hold the ring: it bounds the valley as a loose one (the same case
-    at a thrust 1e-5 larger came back at the valley's end with a ball of 1.6e-15 N, -0.683°,
-    and no flat direction). The tilt returned is the least of the valley, kept only where the
-    equilibrium there is balanced to the tolerance."""
+    The valley of tilts is the null direction of the potential's Hessian from the balls
+    carrying more than the tolerance (1e-12 of the largest load; a ball below it bounds the
+    valley as a loose one); its ends are where the first ball changes state along it (to first
+    order, within 1e-6 of the range). The tilt returned is the least of the valley, kept only
+    where the equilibrium there is balanced to the tolerance (docs/angular_contact.md, "A tilt
+    the loads do not determine")."""
     vh, vl = v
     holding, maybe = held
     undetermined = np.zeros(vh.shape[0], dtype=bool)
@@ -1112,12 +1106,10 @@ def _touching_valley(
     p: Problem, i: int, end: _ring.Point, kappa: np.ndarray
 ) -> tuple[np.ndarray, np.ndarray]:
     """The eigenvalues and eigenvectors of case ``i``'s Hessian of the potential (the
-    stiffness frozen, the held components decoupled) from every ball that touches: where the
-    balls carrying more than the tolerance leave more than one direction free, a thrust at
-    the tolerance (1e-12 of the largest load) is carried by balls below it, which hold the
-    ring as much as it matters (7205B, F_r 1 kN, F_a 1e-9 N, cage 7°: its ball across the
-    ring, of 5e-10 N, left a plane of tilts, whose least tilt, to first order, no balanced
-    position reaches; 1e-8 N, one line). The core's Hessian, ``holding``, with every load."""
+    stiffness frozen, the held components decoupled) from every ball that touches (the core's
+    ``holding`` with every load): where the balls carrying more than the tolerance leave more
+    than one direction free, those below it hold the ring as much as it matters
+    (docs/angular_contact.md)."""
     b, lo, c, s = end.b, end.lo, p.c[i], p.s[i]
     ca, sa = lo.ca[i], lo.sa[i]
     touch = lo.q[i] > 0.0
@@ -1149,11 +1141,8 @@ def _move_along(
     """Case ``i`` moved by ``s`` along the valley's direction (``valley`` = the Hessian's
     eigenvalues, eigenvectors and ``s``) or, where the equilibrium there is not balanced, by
     the furthest fraction of ``s`` that is (bisection, VALLEY_BISECTIONS halvings: 1e-12 of
-    the move), in place in ``v`` and ``end``. The valley is curved and its ends are
-    first-order estimates: on 7205B under F_r = 1 kN, F_a = 1 N (cage 7°) the least tilt lies at
-    the end where a loose ball touches, and the move to its estimate pressed that ball (1.5e-4
-    of the load); the halves tried then (1, 1/2, 1/4) left the ring mid-valley, -0.5758° at
-    F_a = 1.000001 N against -0.5715° at 1 N."""
+    the move), in place in ``v`` and ``end``: the valley is curved and its ends are
+    first-order estimates (docs/angular_contact.md)."""
     lam, vec, s = valley
     one = np.array([i])
     got = _valley_point(p, i, v, kappa, (lam, vec, s))
@@ -1572,23 +1561,9 @@ def _light_start(
     geometry) at a load STAGE^1.5 times heavier (the ratio STAGE times smaller, not below
     HEAVY_RATIO), in the scaled units of ``p``; that case is started the same way while its
     ratio is above LIGHT_RATIO. A case whose heavier one does not converge is left out (it keeps
-    the standard start).
-
-    Why: the standard start (the core's ``standard_start``) puts the ring at the radial model's
-    x (the balls at the groove bottom, the clearance 2A (1 - cos alpha_0) taken up) and at the
-    axial closed form's a (the balls near alpha_0): together they press the ball on the load
-    line about sin^2(alpha_0)/2 of A into its grooves (0.09 A at 25°). Where A is millions of approaches, Newton relieves that along x and stops with one
-    ball loaded, near alpha_0, while the answer (F_a/F_r small, the ring free to tilt: that
-    ball near 0°, the far ones at 30-60°, the ring tilted by 0.3 A) lies a large part of A
-    away: the ring must roll the ball down its groove, an arc of radius A at approaches of
-    about 1, and straight Newton steps (the matrix singular along the tilt with one ball
-    loaded) advance some tens of approaches each (a 9-ball ring at 25°, F_a/F_r = 0.004, A =
-    8e6 approaches: 2000 steps ended 0.28 A on, residual 70). A heavier load shortens the arc
-    in approaches; the answer's position in mm changes little with the load, so a stage of 3
-    starts within a few approaches. The start is the heavier case's answer as it is (rounded to
-    single precision, the far balls' approaches, 1e-2 at a ratio of 8e6, would be lost); it is
-    a function of the case alone (each case is solved alone), and whatever its residual, the
-    light case is solved and checked as any other."""
+    the standard start). The start is the heavier answer as it is (rounded, the far balls'
+    approaches would be lost). Why (the standard start a large part of A from the answer of a
+    light case): docs/angular_contact.md, "Light loads"."""
     if not np.count_nonzero(p.one_sided):
         return np.zeros(0, dtype=np.int64), np.zeros((0, 5))
     rows = np.flatnonzero(p.one_sided & (p.a_hat > LIGHT_RATIO))
@@ -1628,21 +1603,8 @@ def _thrust_retry(p: Problem, geo: _Geometry, curve: StiffnessCurve | None, got:
     again by :func:`_thrust_path`, each alone; a case keeps its first answer (and so its
     ConvergenceError) where that does not converge either. Only such cases are touched: a case
     that converges at once keeps its bits, and a retried case's answer is a function of its own
-    inputs (the same alone or in any batch).
-
-    Why: with a thrust of some thousandths of F_r only two or three balls carry load, those on
-    the load side near 0°, one of them often at the kink of the one-sided contact (u_j = 0: no
-    stiffness along the groove on one side, a large one on the other), and the Newton matrix is
-    near-singular along a tilt. Where the start (the core's standard start, then the double-precision Newton
-    stage) or a step lands the ring there, the regularised step along that tilt is enormous, is
-    capped to A (the core's ``cap_step``), and the line search accepts some 1e-7 of it: the
-    residual falls by 1e-5 per step (or not at all, 70.4 being the ceiling of the measure), until
-    MAX_ITERATIONS. Which cases do so is a matter of chance: ``solve_combined(5, 2260.78,
-    2.9589, cage_angle=222.70, contact_angle=14.439, ball_diameter=11.5, pitch_diameter=43.5)``
-    did (the first Newton stage threw the ring to a tilt 3.6 times the answer's, three balls at
-    u_j < 0, the loads 30 times F_r), while 2.26 N and 4.5 N solve at once. At F_a =
-    THRUST_RATIO F_r more balls carry load and the standard start converges; each stage starts
-    from the answer of the one before, nearly the same ring position."""
+    inputs (the same alone or in any batch). Why (a near-singular tilt with two or three balls
+    loaded): docs/angular_contact.md, "Small thrusts at normal loads"."""
     vh, vl, kappa, total, end, tangent = got
     if not p.one_sided.any():
         return vh, vl, kappa, total, end, tangent

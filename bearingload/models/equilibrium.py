@@ -13,29 +13,10 @@ Kuzmenko 2010, §1-3). Conventions:
   ``Q_i = K max(delta_i, 0)^m`` (``m`` = 3/2 balls, 10/9 rollers). The inner ring displacement
   ``(x, y)`` minimises the convex potential ``sum K/(m+1) max(delta_i, 0)^(m+1) - F_r x``.
 
-Numerics. Lengths are scaled by ``s = (F_r/K)^(1/m)``, the approach one ball would have under the
-whole load, so every case is solved at unit load (the ring tables in
-:mod:`bearingload.models._ring`, the solver in the compiled core, ``models/_radial.pxi``).
-With a clearance the unknown is the displacement from the position where the balls nearest the
-load line just touch, so a huge clearance with a small load loses no digits; under preload it is
-the displacement from the centred ring, with the ball forces summed as ``p^m ((1 + t)^m - 1)``
-(the ``p^m`` cancel exactly around the ring), so a heavy preload loses none either. Cages at 0 or
-half pitch are symmetric (``y = 0``): one unknown, bracketed Newton over half the ring; any other
-cage angle: damped Newton in two unknowns with an Armijo line search (the ball directions turned
-per case from one table of a z by the angle of the ball nearest the load line). The core solves a
-batch as a C loop over its cases, each from its own data; one case given as numbers is a batch
-of one (``_core.radial_one``, the same kernel), so its answer is the same bits alone or in any
-batch.
-
-Near-symmetric cage angles. A cage angle counts as symmetric (0 or half pitch) only when it is
-within the rounding of its reduction to one turn and one pitch: 4 ulps of 360°, 3.2e-13°. Any
-other angle is solved as it is. Where a single ball
-carries the whole load with the cage exactly at 0, the minimum is not unique: the ring may slide
-across the load between the positions where the two neighbours touch; the answer there is the
-symmetric one, ``y = 0``. From either side the solution tends to one end of that segment
-(``y -> -+Y``, two balls loaded, the second with a load -> 0), while ``x``, ``q_max`` and the
-ball loads are continuous; the jump of ``y`` and of the loaded-ball count at exactly 0 is that of
-the problem, not of the solver.
+Numerics and the near-symmetric cage angles (a cage within 3.2e-13° of 0 or half pitch is
+symmetric; at exactly 0 with one ball loaded, ``y = 0``): docs/models.md ("The model", "Range of
+the exact solver"). The solver is the compiled core's (``models/_radial.pxi``); one case given as
+numbers is a batch of one, so its answer is the same bits alone or in any batch.
 """
 
 from __future__ import annotations
@@ -64,7 +45,7 @@ from bearingload.models.case import INPUTS, checked
 TOLERANCE = 1e-13
 #: Iteration cap of every Newton loop; reaching it raises ConvergenceError (read per call).
 MAX_ITERATIONS = _ring.MAX_ITERATIONS
-#: A cage angle within this of 0 or half pitch is symmetric (rounding; see the module notes). [°]
+#: A cage angle within this of 0 or half pitch is symmetric (rounding; docs/models.md). [°]
 SYMMETRY_SNAP_DEG = _ring.SYMMETRY_SNAP_DEG
 #: A case the Newton cannot balance with its cage this close to a symmetric position (a ball on
 #: the load line, or the load between two balls) is answered as symmetric, as the combined
@@ -316,7 +297,7 @@ def solve(
     relative; the ball loads ``F_r max(1, |e|/s)^m`` and the stiffness ``m z F_r/s
     max(1, |e|/s)^(m-1)`` within 1e-300 to 1e300 (N, N/mm), so that no result overflows or
     underflows. A cage angle within 3.2e-13° (rounding) of 0 or half pitch is symmetric; at
-    exactly 0 with one ball loaded, ``y = 0`` (see the module notes).
+    exactly 0 with one ball loaded, ``y = 0`` (docs/models.md).
 
     Examples
     --------

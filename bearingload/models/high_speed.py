@@ -1,90 +1,15 @@
 """Ball dynamics at speed: centrifugal force and gyroscopic moment of every ball, outer-raceway
 control (Jones 1960; Harris & Kotzalas, *Rolling Bearing Analysis*, 5th ed., vol. 2 "Advanced
-Concepts of Bearing Technology", ch. 2 "Bearing component motions and speeds" and ch. 3 "High-speed
-operation: ball and roller dynamics").
+Concepts of Bearing Technology", ch. 2-3).
 
-Units: N, mm, kg, s (the shaft speed in rpm at the input, rad/s inside); ball density in kg/m^3
-(bearing steel 7.85e-6; silicon nitride 3.2e-6).
-
-Model (one ball ``j`` at ``phi_j``; the geometry, loads and conventions of
-:func:`bearingload.models.combined.solve_combined`, whose static answer is the start):
-
-* The outer groove curvature centre is fixed; the inner one lies ``rho_j`` radially outward and
-  ``u_j`` axially from it (``rho_j = A - G_r/2 + x cos phi_j + y sin phi_j``, ``u_j = a +
-  R_i (theta cos phi_j + theta_c sin phi_j)``; one-sided angular contact: ``u'_j = max(u_j, 0)``,
-  as in the static model). The ball centre is no longer on the line joining them: it lies at
-  ``(X_1, X_2) = (r'_o + delta_o)(sin alpha_o, cos alpha_o)`` (axial, radial) from the outer
-  centre, ``r'_o = (f_o - 1/2) D_w``; the unknowns of each ball are ``delta_o`` and
-  ``alpha_o``. The inner contact follows: ``(u' - X_1, max(rho - X_2, 0)) = (r'_i +
-  delta_i)(sin alpha_i, cos alpha_i)``. ``Q_i = K_i max(delta_i, 0)^1.5``, ``Q_o = K_o
-  max(delta_o, 0)^1.5``. The inner raceway is the half of the inner groove facing the balls
-  (``cos alpha_i >= 0``; the static model's ``max(rho, 0)``): a ball whose centre lies radially
-  outward of its inner groove centre touches the groove's side at most (at 90°), never the
-  far side of the groove circle, where the ring has no surface.
-* A ball without inner contact (loose) rests on the outer raceway: ``alpha_o = 0`` (then beta
-  = 0, no gyroscopic friction) and ``Q_o = F_c``.
-* Kinematics, outer-raceway control (Jones; Harris & Kotzalas vol. 2, ch. 2): the ball rolls
-  without spinning on the outer raceway; with ``gamma = D_w/d_m`` and the inner ring at
-  ``omega`` (outer ring still) the attitude angle is ``tan beta = sin alpha_o / (cos alpha_o +
-  gamma)`` and, with ``c_o = (cos alpha_o + tan beta sin alpha_o)/(1 + gamma cos alpha_o)`` and
-  ``c_i = (cos alpha_i + tan beta sin alpha_i)/(1 - gamma cos alpha_i)``, the orbit (cage) speed
-  ``omega_c = omega c_o/(c_o + c_i)`` and the ball's spin ``omega_R = omega/(gamma cos beta
-  (c_o + c_i))``. (Both contacts at alpha: ``omega_c = omega (1 - gamma cos alpha)/2``, the
-  rolling speeds.) Each ball's speeds follow its own two contact angles.
-* Forces on the ball (Harris & Kotzalas vol. 2, ch. 3, with lambda_o = 2, lambda_i = 0): the
-  centrifugal force ``F_c = m d_m omega_c^2 / 2`` outward; the gyroscopic moment ``M_g = J
-  omega_R omega_c sin beta``, ``J = m D_w^2/10``, held by friction at the outer contact only,
-  a force ``2 M_g / D_w`` along the outer raceway. Equilibrium, axial and radial::
-
-      Q_i sin a_i - Q_o sin a_o + (2 M_g/D_w) cos a_o = 0
-      Q_i cos a_i - Q_o cos a_o - (2 M_g/D_w) sin a_o + F_c = 0
-
-* The inner ring sees the inner contacts only (lambda_i = 0): ``F_a = sum Q_i sin a_i``,
-  ``F_r`` along ``x``: ``sum Q_i cos a_i cos phi_j``, the moments with the lever ``R_i``, as in
-  the static model.
-* Hertz: ``K_i`` and ``K_o`` of each ball are the exact Hertz stiffnesses of its inner and outer
-  contact at its own angle (:func:`bearingload.contact.hertz.ball_stiffness` at the pitch
-  diameter ``d_m / cos alpha``, the static model's curvature rule), a Chebyshev interpolant in
-  ``cos alpha`` (24 nodes, once per geometry) inside the equations; at speed 0 (alpha_i =
-  alpha_o) their series value is the static model's ``K(alpha)``.
-* Not modelled: ring expansion, cage and lubricant forces, the inner contact's friction; the
-  ring rotating is the inner one.
-
-Numerics, in the compiled core (:mod:`bearingload.models._core`, the sections at speed: a C loop
-over the cases, one case's answer the same bits alone or in any batch). Each ball's two
-equations and their derivatives come from one evaluator (``ball_eval``: analytic, forward-mode
-dual arithmetic). For a given ring position each ball is solved by Newton on its centre (X_1,
-X_2) from its last position moved to first order with the ring (its sensitivity), the step
-halved until its residual falls; a ball left unbalanced is solved from its loose state
-(``solve_ball``). The ring equilibrium: one damped Newton on ``(x, y, a, R_i theta, R_i
-theta_c)`` from the static answer (a case left unbalanced: again from the static answer of the
-bearing whose balls are pushed out by their centrifugal approach, :func:`_dynamic_start`), the
-tangent of the ball forces by the implicit function theorem (the ball equations eliminated per
-ball); the step halved, then the step to the first contact of a ball held off the inner ring
-(a tangent singular along the residual: docs/speed.md), then Levenberg-Marquardt steps (a
-nearly singular tangent), none longer than A/10 or to a position where no ball touches the
-inner ring. Where that ends unbalanced with a touching ball of a one-sided bearing held at
-``u' = 0`` (u <= 0: its forces do not move with u), or with a direction whose stiffness is at
-most :data:`SINGULAR` of the largest, it goes on with the Newton step of the active set with
-those balls in contact and the step to a first contact along their side's tangent, until
-balanced and determined (kept where better). A case left unbalanced is
-solved again by continuation in omega^2 from the static answer; an applied component left
-unbalanced by more than :data:`CARRIED` of itself (a thrust of 1e-9 of the radial load), by
-continuation in it from :data:`SMALL_LOAD` of the largest applied load
-(:func:`_carry_small_loads`); a case left unbalanced or undetermined with the cage less
-than :data:`OFF_SYMMETRY` off a symmetric angle, by continuation in that offset
-(:func:`_off_symmetry`). The components the static model
-holds by symmetry are held (the speed terms keep those symmetries: ``M_g`` is odd in
-``alpha_o``). A case stops when each applied component is balanced to ``TOLERANCE`` of the
-largest applied load and every ball to ``BALL_TOLERANCE`` of its forces, or when no step lowers
-the residual; it is accepted when each component is balanced to ``ACCEPT`` of the largest
-applied load or to the rounding level of its terms (ROUNDING times their magnitudes plus the
-force change over one rounding of each ball's groove-centre position: a light load against a
-preload or the balls' centrifugal forces) or, up to ``NOISE_MAX`` of that load, to the change of
-the ring forces over the balls' own residuals; otherwise
-:class:`~bearingload.errors.ConvergenceError` names its inputs. A load whose rounding level is
-above ``LEVEL_MAX`` of it is refused (:class:`~bearingload.errors.InputError`, naming the
-smallest load accepted). At speed 0 the answer is the static one (no step is taken from it).
+Units: N, mm, kg, s (the shaft speed in rpm at the input, rad/s inside); ball density in kg/m^3.
+The geometry, loads and conventions are those of
+:func:`bearingload.models.combined.solve_combined`, whose static answer is the start; each ball
+has its own centre ``(delta_o, alpha_o)`` from the outer groove curvature centre, and the inner
+ring sees the inner contacts only. The model, its equations and the numerics (the compiled core's
+sections at speed; the rescues of this module: :func:`_dynamic_start`,
+:func:`_carry_small_loads`, :func:`_off_symmetry`) are stated in docs/speed.md ("The model",
+"Numerics"), with the constants of this module by name.
 """
 
 from __future__ import annotations
@@ -304,9 +229,6 @@ def check_speed(speed: Any, density: Any, dm: Any) -> tuple[np.ndarray, np.ndarr
     """The shaft ``speed`` [rpm] and ball ``density`` [kg/m^3] as float arrays, refused
     (:class:`~bearingload.errors.InputError`) outside their ranges: a speed of 0 or more,
     n d_m at most :data:`MAX_SPEED_PITCH` with the pitch diameters ``dm`` [mm]."""
-    if type(speed) is float and type(density) is float and type(dm) is float:
-        if 0.0 <= speed and 1.0 <= density <= 1e5 and speed * dm <= MAX_SPEED_PITCH:
-            return np.array(speed), np.array(density)  # one plain case in range
     n = validate.finite("speed", speed)
     if np.any(n < 0):
         raise InputError(
@@ -370,7 +292,7 @@ def solve_high_speed(
     contact_angle: Any = None,
 ) -> HighSpeedDistribution:
     """Equilibrium of the inner ring turning at ``speed`` with every ball's centrifugal force and
-    gyroscopic moment (outer-raceway control); see the module docstring.
+    gyroscopic moment (outer-raceway control); see docs/speed.md.
 
     Parameters as :func:`bearingload.models.combined.solve_combined` (a constant ``stiffness``
     is not taken: the two contacts need their own Hertz stiffness), and
@@ -487,13 +409,11 @@ def _dynamic_start(
     contact_angle: Any, rows: np.ndarray,
 ) -> dict[str, np.ndarray]:  # fmt: skip
     """The second start of the ring Newton (cases ``rows`` the static start leaves
-    unbalanced; light loads at speed): the static answer of the bearing whose balls are pushed
-    out by their rigid-rolling centrifugal force (ring position, tilts [°]; ``u`` the axial
-    offset of the groove centres [mm]). A ball at speed sits ``delta_c = (F_c/K_o)^(2/3)``
-    further out in its outer groove; for the inner ring this is the inner groove centre moved
-    in by delta_c: a clearance larger by 2 delta_c (deep groove), ``cos alpha_0`` smaller by
-    delta_c/A (angular contact). Cases at speed 0, or whose shifted bearing the static model
-    refuses, keep the static answer. [mm]"""
+    unbalanced): the static answer of the bearing whose balls are pushed out by their
+    rigid-rolling centrifugal approach ``delta_c = (F_c/K_o)^(2/3)`` (docs/speed.md,
+    "Numerics"): ring position, tilts [°], ``u`` the axial offset of the groove centres [mm].
+    Cases at speed 0, or whose shifted bearing the static model refuses, keep the static
+    answer."""
     shift = np.where(contact_angle is not None, geo.A * np.sin(geo.alpha0), 0.0)
     out = {name: pos[name].copy() for name in ("x", "y", "tilt", "tilt_cross")}
     out["u"] = pos["axial"] + shift
@@ -557,17 +477,13 @@ class BallState:
 
     do: np.ndarray
     ao: np.ndarray
-    balls_ok: np.ndarray  # (n,) bool
     gen: np.ndarray  # (n, 5) generalised ring forces [N]
     jac: np.ndarray  # (n, 5, 5) d gen / d v
     merit: np.ndarray  # (n,) largest free residual over f_ref (inf: a ball unsolved)
     terms: tuple[np.ndarray, ...]
-    sens: np.ndarray  # (n, z, 6) each ball's rho, u', d(do, ao)/drho, d(do, ao)/du'
     score: np.ndarray  # (n,) the residual over f_ref or, where larger, its rounding (or the
     # balls' own residuals on it, up to NOISE_MAX of f_ref) over ACCEPT
     level: np.ndarray  # (n,) the largest rounding level over f_ref
-    floor: np.ndarray  # (n, 5) the rounding level of each component [N]
-    noise: np.ndarray  # (n, 5) its change over the balls' own residuals (not capped) [N]
 
     @property
     def accepted(self) -> np.ndarray:
@@ -577,23 +493,19 @@ class BallState:
 
 
 def _state(part: tuple[np.ndarray, ...], out: np.ndarray) -> BallState:
-    """A bearing's :class:`BallState` from the core's (balls, terms, sens, ring) (``store_dyn``),
-    the measures of its case (merit, score, level) from ``out`` (``store_case``)."""
-    balls, terms, sens, ring = part
+    """A bearing's :class:`BallState` from the core's (balls, terms, ring) (``store_dyn``), the
+    measures of its case (merit, score, level) from ``out`` (``store_case``)."""
+    balls, terms, ring = part
     n = ring.shape[0]
     return BallState(
         balls[0],
         balls[1],
-        ring[:, 40] != 0,
         ring[:, :5].copy(),
         ring[:, 5:30].reshape(n, 5, 5),
         out[:, 35].copy(),
         tuple(terms),
-        sens,
         out[:, 36].copy(),
         out[:, 37].copy(),
-        ring[:, 30:35].copy(),
-        ring[:, 35:40].copy(),
     )
 
 
@@ -719,23 +631,18 @@ def _solve(
             v[i] = near[0][0]  # (a y left in its range either way: the first answer kept)
             _put_state(st, np.array([i]), near[1])
     _check_resolved(st, bearings, flat, pos["refused"])
-    _check(st, total, flat)
+    check_balanced("ball-dynamics ring and ball equilibrium", st, total, flat)
     return bearings, v, st, total, undetermined(st.jac, held)
 
 
 def _carry_small_loads(
     r: Ring, cage: tuple[int, np.ndarray], f: np.ndarray, held: np.ndarray, out: tuple
 ) -> None:
-    """A load too small to matter, carried (in ``out`` = (v, state, iterations, v_static) of
-    the solve, in place): a case left above TOLERANCE with a free applied component
-    unbalanced by more than CARRIED of itself (a thrust of 1e-10 to 1e-9 of the radial load,
-    below what ACCEPT asks, left half unbalanced at a position where no ball across the ring
-    carries it: an answer off the one the thrust, however small, makes and its neighbours
-    give; 1e-8 of it with the cage 1e-3° off symmetry, left unbalanced) is solved again by
-    continuation in that component from SMALL_LOAD of the largest applied load down to it, a
-    decade a stage: the first as a case of its own (:func:`_alone`, from the static answer),
-    each next from the last one's position; its answer taken where every stage is accepted
-    and its residual is lower."""
+    """A case left above TOLERANCE with a free applied component unbalanced by more than
+    CARRIED of itself, solved again by continuation in that component from SMALL_LOAD of the
+    largest applied load down to it, a decade a stage (the first by :func:`_alone`, each next
+    from the last position); taken where every stage is accepted and the residual is lower
+    (docs/speed.md, "Numerics"). ``out`` = (v, state, iterations, v_static), in place."""
     v, st, total, v_static = out
     res = np.where(held, 0.0, np.abs(f - st.gen))
     small = ~held & (f != 0.0) & (res > CARRIED * np.abs(f))
@@ -791,14 +698,11 @@ def _off_symmetry(
     r: Ring, i: int, cage: tuple, f: np.ndarray, held: np.ndarray, start: np.ndarray
 ) -> tuple[np.ndarray, BallState, int] | None:
     """Case ``i`` of the bearings ``r`` under ``f`` (1, 5) with the cage (``cage``: z and
-    every case's angle [°]) less than OFF_SYMMETRY off a symmetric angle (a ball on the load
-    line or the load between two balls), by continuation in that offset: a 7205B at F_r 41 N,
-    F_a 1e-8 of it, 20 000 rpm, the cage 1e-6° off the load line, leaves the load-line
-    ball's F_y (1.7e-8 of F_r) to a ball across a nearly free y that the Newton crosses the
-    wrong way; at an offset a decade up and more it does not. From the offset that is
-    OFF_SYMMETRY or just under it (from ``start`` (1, 5), then by the continuation in speed),
-    a decade down each stage, each from the last one's position, until a stage is not
-    accepted. Returns (v, state, iterations), or None where the cage is not so near."""
+    every case's angle [°]) less than OFF_SYMMETRY off a symmetric angle, by continuation in
+    that offset (docs/speed.md, "Numerics"): from the offset a whole number of decades up, just
+    under OFF_SYMMETRY (from ``start`` (1, 5)), a decade down each stage from the last position,
+    until a stage is not accepted. Returns (v, state, iterations), or None where the cage is
+    not so near."""
     z, angle = cage[0], float(cage[1][i])
     sym = round(angle * z / 180.0) * 180.0 / z
     offset = angle - sym
@@ -872,10 +776,6 @@ def refused_case(
     return parameter, validate.element_at(value, bad, shape, unit)
 
 
-def _rel(a: np.ndarray, b: np.ndarray) -> float:
-    return float(np.max(np.abs(a - b) / np.abs(b), initial=0.0))
-
-
 def _with_speed(exc: ConvergenceError, n_rpm: np.ndarray, inputs: tuple) -> ConvergenceError:
     """The failure of the static start (the cases at rest, from which the ball dynamics start)
     naming the speed of its cases too: the one speed where every case has it (one case:
@@ -896,16 +796,17 @@ def _with_speed(exc: ConvergenceError, n_rpm: np.ndarray, inputs: tuple) -> Conv
     )
 
 
-def _check(st: BallState, its: np.ndarray, flat: dict) -> None:
-    """ConvergenceError naming the inputs of the cases left unbalanced."""
+def check_balanced(solver: str, st: BallState, its: np.ndarray, cases: dict) -> None:
+    """ConvergenceError of ``solver`` naming the inputs (``cases``: name -> (n,)) of the cases
+    ``st`` leaves unbalanced, ``its`` their iterations (a bearing's, or a pair's shaft)."""
     bad = ~st.accepted
     if np.any(bad):
         known = st.merit[bad][np.isfinite(st.merit[bad])]
         raise ConvergenceError(
-            "ball-dynamics ring and ball equilibrium",
+            solver,
             int(its[bad].max()),
             float(known.max()) if known.size else math.nan,
-            {k: v[bad] for k, v in flat.items()},
+            {k: v[bad] for k, v in cases.items()},
             units=_combined.INPUT_UNITS,
             rows=np.flatnonzero(bad),
         )

@@ -1,38 +1,13 @@
 """A pair of angular-contact ball bearings (DB, DF, DT) at speed: the rigid shaft of
 :mod:`bearingload.models.pair` with every ball of both bearings in dynamic equilibrium
 (centrifugal force and gyroscopic moment, outer-raceway control: Jones 1960; Harris & Kotzalas,
-*Rolling Bearing Analysis*, 5th ed., vol. 2 "Advanced Concepts of Bearing Technology", ch. 2-3),
-as :mod:`bearingload.models.high_speed` gives them for one bearing.
+*Rolling Bearing Analysis*, 5th ed., vol. 2, ch. 2-3), each bearing in its local frame the
+one-sided angular-contact bearing of :mod:`bearingload.models.high_speed`.
 
 Units: N, mm, kg, s (the shaft speed in rpm at the input, rad/s inside); ball density in kg/m^3.
-
-Model:
-
-* The shaft (both inner rings) moves by ``v = (x, y, a, R_i theta, R_i theta_c)`` about the
-  pair's centre; bearing k sees its local position ``L_k v`` plus its preload offset (the maps,
-  arrangements, mirror ``sigma_k`` and preload of :mod:`bearingload.models.pair`: bearing 1 at
-  ``-B/2`` in DB and DT, at ``+B/2`` in DF; bearing 2 of DB/DF mirrored; each bearing ground to
-  carry F_p with no external load, at rest).
-* In its local frame each bearing is the one-sided angular-contact bearing of
-  :mod:`bearingload.models.high_speed`: each ball's centre from its two equations, inner and
-  outer contact angles and loads of its own, the inner ring sees the inner contacts only.
-* The pair's forces and tangent by virtual work: ``sum_k L_k^T f_k`` and ``sum_k L_k^T J_k L_k``
-  (``J_k`` the bearing's tangent with its ball equations eliminated; not symmetric at speed).
-
-Numerics, in the compiled core (:mod:`bearingload.models._core`, ``solve_pair_speed``: a C loop
-over the cases): Newton on the shaft's five unknowns from the static pair's answer (the balls
-solved by the single bearing's ``speed_state`` at each bearing's local position), the step
-halved, then Levenberg-Marquardt steps, none longer than A/10 nor to a position where no ball
-of the pair touches an inner ring; a case left unbalanced is solved again by continuation in
-omega^2 from the static answer. The components held by a symmetry of the case are those of the
-static pair. A case stops when every applied component is balanced to ``TOLERANCE`` of the
-largest of the applied loads and the preload; it is accepted at ``ACCEPT`` of it or within the
-rounding level of the ball forces on the shaft (each bearing's, from the core's
-``speed_state``, carried through the maps) or, up to ``NOISE_MAX`` of that load, within
-the change of the shaft forces over the balls' own residuals, as the single bearing accepts;
-otherwise
-:class:`~bearingload.errors.ConvergenceError` names its inputs. At speed 0 the answer is the
-static pair's (its position, no step taken where it is balanced).
+The model (the pair's maps and forces by virtual work) and the numerics (the compiled core's
+``solve_speed`` on the shaft's five unknowns from the static pair's answer) are stated in
+docs/speed.md ("Pairs (DB, DF, DT)").
 """
 
 from __future__ import annotations
@@ -64,10 +39,6 @@ __all__ = ["PairHighSpeedDistribution", "solve_pair_high_speed", "MODEL"]
 
 #: The model, as the outputs name it.
 MODEL = _hs.MODEL
-#: Relative residual of the shaft equilibrium (of the largest applied load or the preload). [-]
-TOLERANCE = _hs.TOLERANCE
-#: Largest shaft residual accepted at the end (or the rounding level, when larger). [-]
-ACCEPT = _hs.ACCEPT
 #: Shaft Newton steps (the trials of each: the single bearing's, the core's trial_step). [-]
 ITERATIONS = 200
 #: Stages of the continuation in omega^2. [-]
@@ -122,23 +93,6 @@ class _Shaft:
     held: np.ndarray  # (n, 5) bool
 
 
-@dataclass
-class _State:
-    """Both bearings' balls (high_speed's states, local) and the shaft's forces at v."""
-
-    parts: list[_hs.BallState]
-    gen: np.ndarray  # (n, 5) [N]
-    jac: np.ndarray  # (n, 5, 5)
-    merit: np.ndarray  # (n,) largest free residual over f_ref (inf: a ball unsolved)
-    score: np.ndarray  # (n,) the residual over f_ref or, where larger, its rounding (or the
-    # balls' residuals on it) over ACCEPT
-    level: np.ndarray  # (n,) the largest rounding level over f_ref
-
-    @property
-    def accepted(self) -> np.ndarray:
-        return self.score <= ACCEPT
-
-
 def _local(sh: _Shaft, k: int, v: np.ndarray) -> np.ndarray:
     """Bearing k's local position ``L_k v`` + its offset (n, 5). [mm]"""
     return (sh.maps[:, k] @ v[:, :, None])[:, :, 0] + sh.offset[:, k]
@@ -167,7 +121,7 @@ def solve_pair_high_speed(
     tilt_radius: Any = None,
 ) -> PairHighSpeedDistribution:
     """Equilibrium of the shaft in a pair of identical angular-contact ball bearings turning at
-    ``speed``, every ball with its centrifugal force and gyroscopic moment (module docstring).
+    ``speed``, every ball with its centrifugal force and gyroscopic moment (docs/speed.md).
 
     Parameters as :func:`bearingload.models.pair.solve_pair` (a constant ``stiffness`` is not
     taken: the two contacts of a ball need their own Hertz stiffness), and
@@ -215,9 +169,9 @@ def solve_pair_high_speed(
     named = {k: (given[k], "rpm" if k == "speed" else "N") for k in _LOADS + ("speed",)}
     refused = functools.partial(_hs.refused_case, named, shape)
     with np.errstate(all="ignore"):
-        v, st, its, rest = _solve(sh, v_static, flat, static.arrangement != "DT", refused)
+        v, parts, jac, its, rest = _solve(sh, v_static, flat, static.arrangement != "DT", refused)
         extra = _at_speed(static, rest, shape)
-    return _result(static, sh, geo, flat, shape, (v, st, its, extra))
+    return _result(static, sh, geo, flat, shape, (v, parts, jac, its, extra))
 
 
 def _at_speed(static: PairDistribution, rest: np.ndarray, shape: tuple[int, ...]) -> dict[str, Any]:
@@ -289,19 +243,14 @@ def _solve(
 ) -> tuple[Any, ...]:
     """The core's solve (Newton from the static answer, continuation for the cases left; with
     ``rest`` the shaft centred too); the checks, ``refused(i, load)`` the input and element
-    that name case ``i`` (:func:`bearingload.models.high_speed.refused_case`). Returns (v,
-    state, iterations, rest (n, 2))."""
+    that name case ``i`` (:func:`bearingload.models.high_speed.refused_case`). Returns (v, both
+    bearings' states (local), the shaft's tangent (n, 5, 5), iterations, rest (n, 2)); each
+    bearing's state holds the shaft's measures (merit, score, level: the core's, over the
+    largest applied load or preload)."""
     shaft = (sh.maps, sh.offset, sh.f, sh.held.view(np.uint8))
     limits = np.array([ITERATIONS, CONTINUATION_STAGES, 1, 1 if rest else 0], dtype=float)
     v, parts, out = _hs.core_solve(sh.ring, shaft, limits, v_static, v_static, True)
-    st = _State(
-        parts,
-        out[:, :5].copy(),
-        out[:, 5:30].reshape(-1, 5, 5),
-        out[:, 35].copy(),
-        out[:, 36].copy(),
-        out[:, 37].copy(),
-    )
+    st = parts[0]
     its = out[:, 38].astype(int)
     level = np.where(np.isfinite(st.level), st.level, 0.0)
     small = np.flatnonzero(level > _hs.LEVEL_MAX)
@@ -319,24 +268,18 @@ def _solve(
             reason=TOO_LIGHT_PAIR,
             element=element,
         )
-    bad = ~st.accepted
-    if np.any(bad):
-        known = st.merit[bad][np.isfinite(st.merit[bad])]
-        raise ConvergenceError(
-            "bearing-pair shaft and ball-dynamics equilibrium", int(its[bad].max()),
-            float(known.max()) if known.size else math.nan,
-            {k: flat[k][bad] for k in NAMED}, units=_comb.INPUT_UNITS,
-        )  # fmt: skip
-    return v, st, its, out[:, 40:42]
+    named = {k: flat[k] for k in NAMED}
+    _hs.check_balanced("bearing-pair shaft and ball-dynamics equilibrium", st, its, named)
+    return v, parts, out[:, 5:30].reshape(-1, 5, 5), its, out[:, 40:42]
 
 
 def _result(static: PairDistribution, sh: _Shaft, geo: Any, flat: dict, shape: tuple[int, ...],
             out: tuple[Any, ...]) -> PairHighSpeedDistribution:  # fmt: skip
     """The static pair's fields with the shaft's position, each bearing at speed, the tangent;
-    ``out`` = (v, state, iterations, the extra fields)."""
+    ``out`` = (v, both bearings' states, the shaft's tangent, iterations, the extra fields)."""
     from bearingload import numerics
 
-    v, st, its, extra = out
+    v, parts, jac, its, extra = out
     z = int(static.bearings[0].balls)
     radius = geo.R_i
     one_sided = np.ones(radius.size, dtype=bool)
@@ -346,7 +289,7 @@ def _result(static: PairDistribution, sh: _Shaft, geo: Any, flat: dict, shape: t
 
     bearings = []
     for k in range(2):
-        p = st.parts[k]
+        p = parts[k]
         local = {"speed": flat["speed"], "moment": radius * p.gen[:, 3]}
         radial = np.where(sh.held[:, 0], 0.0, np.hypot(p.gen[:, 0], p.gen[:, 1]))
         # each bearing's own position is the shaft's: what the loads leave free is the pair's
@@ -368,18 +311,18 @@ def _result(static: PairDistribution, sh: _Shaft, geo: Any, flat: dict, shape: t
             )
         )
     lever = np.stack([np.ones_like(radius)] * 3 + [radius, radius], axis=1)
-    tangent = st.jac * lever[:, :, None] * lever[:, None, :]
+    tangent = jac * lever[:, :, None] * lever[:, None, :]
     # at speed 0 the static pair's matrix (the same tangent, from the static solve)
     rest = (flat["speed"] == 0)[:, None, None]
     tangent = np.where(rest, np.reshape(static.stiffness_matrix, tangent.shape), tangent)
-    unloaded = np.stack([np.all(st.parts[k].terms[2] == 0, axis=1) for k in range(2)], axis=1)
+    unloaded = np.stack([np.all(parts[k].terms[2] == 0, axis=1) for k in range(2)], axis=1)
     fields = {f.name: getattr(static, f.name) for f in dataclasses.fields(PairDistribution)}
     fields.update(
         bearings=(bearings[0], bearings[1]), x=case(v[:, 0]), y=case(v[:, 1]),
         axial=case(v[:, 2]), tilt=case(np.rad2deg(v[:, 3] / radius)),
         tilt_cross=case(np.rad2deg(v[:, 4] / radius)),
         stiffness_matrix=tangent.reshape(shape + (5, 5)), unloaded=unloaded.reshape(shape + (2,)),
-        residual=case(st.merit),
+        residual=case(parts[0].merit),
         iterations=case(np.asarray(static.iterations).ravel() + its, np.int64),
     )  # fmt: skip
     fields.update(speed=case(flat["speed"]), ball_density=case(flat["ball_density"]), **extra)
