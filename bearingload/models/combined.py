@@ -1804,8 +1804,8 @@ def _remember(key: bytes, known: np.ndarray) -> None:
 def hertz_setup(geo: _Geometry, e: np.ndarray, nu: np.ndarray) -> tuple[np.ndarray, np.ndarray]:
     """Per case, K_0 = K(alpha = 0) [N/mm^1.5] (n,) and the divided differences ``D(c) = (K(c)/
     K_0 - 1)/(c - 1)`` at the nodes of :class:`StiffnessCurve` (n, NODES), in the compiled core
-    (``hertz_curves``: the scalar path of :func:`bearingload.contact.hertz.ball_stiffness`, the
-    same bits, per case; a case of the geometry of the case before it takes its values). A
+    (``hertz_curves``: K_0 the scalar path of :func:`bearingload.contact.hertz.ball_stiffness`,
+    its bits, the nodes within rounding of it; a case of the geometry before takes its values). A
     geometry the core cannot set up goes through the vectorised path of ``ball_stiffness``,
     which refuses it with the reason (or, where only the core's Newton did not settle, sets it
     up)."""
