@@ -4463,13 +4463,15 @@ def combined_call(int z, const double[:, ::1] cols, bint angular, bint imposed,
     overflows (n,) uint8: ``combined_result``'s, the tangent made physical; set where
     ANSWERED), the geometry (4, n) = A, g, R_i, alpha_0, K_0 or the constant K (n,), the
     curve's values (n, NODES), the scaled applied forces (n, 5): set where the set-up
-    passed)."""
+    passed; and the one array of which K_0 and the values are views (n (1 + NODES): for one
+    case the layout of ``known``, to keep without a copy))."""
     cdef Py_ssize_t n = cols.shape[1]
     cdef Answers a
     cdef Setup st
     cdef Limits lim = LIMITS
     cdef int state = SET_UP_APART
-    geo_a, k0_a, values_a, f_a = np.empty((4, n)), np.empty(n), np.empty((n, NODES)), \
+    kv_a = np.empty(n * (1 + NODES))
+    geo_a, k0_a, values_a, f_a = np.empty((4, n)), kv_a[:n], kv_a[n:].reshape(n, NODES), \
         np.empty((n, 5))
     result_a = (np.empty((8, n)), np.empty((5, n, z)), np.zeros(n, dtype=np.uint8))
     arrays = answers_arrays(n, z)
@@ -4482,7 +4484,7 @@ def combined_call(int z, const double[:, ::1] cols, bint angular, bint imposed,
     cdef double *vals = &values[0, 0] if hertz and n > 0 else NULL
     lim.max_iterations, lim.fast_steps = max_iterations, first_stage_steps
     if n == 0 or not setup_open(n, z, &f[0, 0], &st):
-        return (state, arrays, result_a, geo_a, k0_a, values_a, f_a)
+        return (state, arrays, result_a, geo_a, k0_a, values_a, f_a, kv_a)
     with nogil:
         if set_up_all(z, cols, angular, imposed, &limits[0],
                       &known[0] if known.shape[0] else NULL, &node_x[0], geo, k0, vals, &st):
@@ -4493,7 +4495,7 @@ def combined_call(int z, const double[:, ::1] cols, bint angular, bint imposed,
                 result_all(z, cols, angular, imposed, geo, k0, &st, &a, rows, per_ball, bad)
         free(st.c)
         free(st.mirror)
-    return (state, arrays, result_a, geo_a, k0_a, values_a, f_a)
+    return (state, arrays, result_a, geo_a, k0_a, values_a, f_a, kv_a)
 
 
 cdef bint result_case(const double *v, const double *case_in, Py_ssize_t m, const double *gen,

@@ -628,7 +628,7 @@ def _one_call(
     core's ``answers_arrays``), the results, R_i (n,))."""
     key = cols[7:13].tobytes() if hertz and cols.shape[1] == 1 else None
     known = _SETUP_CACHE.get(key, _UNKNOWN) if key is not None else _UNKNOWN
-    state, solved, result, geo, k0, values, _ = _core.combined_call(
+    state, solved, result, geo, _, _, _, k0_values = _core.combined_call(
         z,
         cols,
         angular,
@@ -642,7 +642,7 @@ def _one_call(
         _ring.FIRST_STAGE_STEPS,
     )
     if key is not None and known is _UNKNOWN and state != _APART:
-        _remember(key, np.concatenate((k0, values[0])))
+        _remember(key, k0_values)  # (K_0 and the values, one array)
     return state, solved, result, geo[2]
 
 
