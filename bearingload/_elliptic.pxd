@@ -2,4 +2,5 @@
 # Hertz stiffness curve: the one copy, which bearingload.numerics.elliptic_integrals calls too.
 
 cdef void agm(double p, double m, double *ell) noexcept nogil
+cdef void agm2(const double *p, const double *m, double *ell) noexcept nogil
 cdef void elliptic(double t, double *ell) noexcept nogil

@@ -31,7 +31,7 @@ from libc.stdint cimport int64_t
 from libc.stdlib cimport free, malloc
 from libc.string cimport memcpy, memset
 
-from bearingload._elliptic cimport elliptic
+from bearingload._elliptic cimport agm, agm2
 from bearingload.models._core cimport (NODES, Balls, Case, Dual, Dyn, Limits, Loads, Point, Ring,
                                       Shaft, ShaftState, Speed, SpeedLimits)
 
@@ -171,13 +171,13 @@ cdef inline double curve_slope(const Case *cs, double ca, double cam1) noexcept 
 
 # ------------------------------------------------------- the Hertz stiffness curve's nodes
 #
-# K(alpha) of both contacts in series at the nodes of the curve, for one geometry: the formulas
-# of the scalar path of bearingload.contact.hertz.ball_stiffness (its _hertz_scalar: the
-# ellipticity by Newton from a fitted start on the AGM's elliptic integrals, ``elliptic`` of
-# bearingload/_elliptic.pyx, the one C copy of numerics.elliptic_integrals; the contact
-# stiffness, both in series), in its order, one node at a time. Inputs hertz.py refuses (a
-# curvature ratio beyond 1e15, Poisson's ratio outside (-1, 0.5]) or an ellipticity not
-# settled come back as a status: the caller lets hertz.py say why.
+# K(alpha) of both contacts in series at the nodes of the curve, for one geometry: the equations
+# of bearingload.contact.hertz.ball_stiffness (its scalar path, _hertz_scalar: the ellipticity
+# by Newton on the AGM's elliptic integrals, ``agm`` of bearingload/_elliptic.pyx, the one C
+# copy of numerics.elliptic_integrals; the contact stiffness, both in series); K_0 in its order
+# (its bits), the nodes from one node to the next (each start within 1e-10: one AGM a contact).
+# Inputs hertz.py refuses (a curvature ratio beyond 1e15, Poisson's ratio outside (-1, 0.5]) or
+# an ellipticity not settled come back as a status: the caller lets hertz.py say why.
 
 from bearingload.contact._hertz_scalar import START_CHEBYSHEV
 
@@ -194,21 +194,6 @@ START[:] = START_CHEBYSHEV
 cdef double START_LOG_MAX = log1p(log(1e15))
 
 
-cdef double ellipticity_residual(double t, double target, double *ell,
-                                 double *slope) noexcept nogil:
-    """ln(B/A) at ``ln kappa = t`` less ``target``, its derivative in t into ``slope`` and the
-    elliptic integrals there into ``ell`` (_hertz_scalar._residual)."""
-    cdef double k_int, e_int, n, d, m, p, dk, de, dn, dd
-    elliptic(t, ell)
-    k_int, e_int, n, d, m, p = ell[0], ell[1], ell[2], ell[3], ell[4], ell[5]
-    dk = n / (2.0 * p) * 2.0 * p
-    de = -d / 2.0 * 2.0 * p
-    dn = ((de + 2.0 * p * k_int - p * dk) - n * 2.0 * p) / m
-    dd = ((dk - de) - d * 2.0 * p) / m
-    slope[0] = dn / n - dd / d + 2.0
-    return log(n / d) + 2.0 * t - target
-
-
 cdef double ellipticity_start(double target) noexcept nogil:
     """The fitted start ``t ~ L g(u)`` (Clenshaw's recurrence; _hertz_scalar.start)."""
     cdef double u = 2.0 * log1p(target) / START_LOG_MAX - 1.0, u2, b1 = 0.0, b2 = 0.0, b0
@@ -221,78 +206,185 @@ cdef double ellipticity_start(double target) noexcept nogil:
     return target * (u * b1 - b2 + START[0])
 
 
-cdef int log_kappa(double target, double *out) noexcept nogil:
-    """``out`` = t = ln kappa for ``ln(B/A) = target > 0``, K and E there, by Newton from the
-    fitted start (_hertz_scalar.log_kappa, which says why each rule); 0 where it did not
-    settle."""
-    cdef double t = min(ellipticity_start(target), target), previous = INFINITY
+cdef inline void p_m(double t, bint node, double *p, double *m) noexcept nogil:
+    """p = e^-2t and m = -expm1(-2t) (``elliptic``'s bits); at a ``node`` of the curve beyond
+    t = 0.35, m = 1 - p (rounded once, p < 1/2: as close)."""
+    p[0] = exp(-2.0 * t)
+    m[0] = 1.0 - p[0] if node and t > 0.35 else -expm1(-2.0 * t)
+
+
+cdef bint newton_last(double target, double *t, double *previous, const double *ell, bint node,
+                      double *out) noexcept nogil:
+    """One Newton step of ``log_kappa`` at ``t``, the integrals there ``ell`` (the residual
+    ln((E - pK)/(K - E)) + 2t - ln(B/A), _hertz_scalar._residual; at a ``node`` its slope, only
+    a step's, in one quotient): True where it was the last (``out`` set), else t and the step
+    before, ``previous``, moved on."""
+    cdef double k_int = ell[0], n = ell[2], d = ell[3], m = ell[4], p = ell[5], dk, de, df, step
+    if node:
+        df = (p * (2.0 * k_int - d - 3.0 * n) * d - (n - p * d) * n) / (m * n * d) + 2.0
+    else:
+        dk = n / (2.0 * p) * 2.0 * p
+        de = -d / 2.0 * 2.0 * p
+        df = ((((de + 2.0 * p * k_int - p * dk) - n * 2.0 * p) / m) / n
+              - (((dk - de) - d * 2.0 * p) / m) / d + 2.0)
+    if t[0] < 0.01:
+        df = 1.5 + 0.046875 * t[0] * t[0]
+    step = (log(n / d) + 2.0 * t[0] - target) / df
+    out[3], out[4] = 1.0 / df, p
+    if fabs(step) <= 1e-9 * t[0] and fabs(step) <= 1e-3 * previous[0]:
+        out[0], out[1], out[2] = t[0] - step, ell[0] - ell[2] * step, ell[1] + ell[5] * ell[3] * step
+        out[4] += p * (2.0 * step)
+        return True
+    if fabs(min(max(t[0] - step, 0.5 * t[0]), target) - t[0]) <= 4 * HERTZ_EPS * t[0] or fabs(
+            step) >= previous[0]:
+        out[0], out[1], out[2] = t[0], ell[0], ell[1]
+        return True
+    previous[0] = fabs(step)
+    t[0] = min(max(t[0] - step, 0.5 * t[0]), target)
+    return False
+
+
+cdef int log_kappa(double target, double t, double previous, double *out,
+                   bint node) noexcept nogil:
+    """``out`` = t = ln kappa for ``ln(B/A) = target > 0``, K and E there, dt/d(target) (at the
+    last step) and p = e^-2t (a last step's change to first order), by Newton from the start
+    ``t`` (_hertz_scalar.log_kappa, which says why each rule; ``previous`` its last step, at
+    first infinite); 0 where it did not settle."""
     cdef double ell[6]
-    cdef double f, df, step, new
+    cdef double p, m
     cdef int i
     for i in range(HERTZ_STEPS):
-        f = ellipticity_residual(t, target, ell, &df)
-        if t < 0.01:
-            df = 1.5 + 0.046875 * t * t
-        step = f / df
-        if fabs(step) <= 1e-9 * t and fabs(step) <= 1e-3 * previous:
-            out[0], out[1], out[2] = t - step, ell[0] - ell[2] * step, ell[1] + ell[5] * ell[3] * step
+        p_m(t, node, &p, &m)
+        agm(p, m, ell)
+        if newton_last(target, &t, &previous, ell, node, out):
             return 1
-        new = min(max(t - step, 0.5 * t), target)
-        if fabs(new - t) <= 4 * HERTZ_EPS * t or fabs(step) >= previous:
-            out[0], out[1], out[2] = t, ell[0], ell[1]
-            return 1
-        previous = fabs(step)
-        t = new
     return 0
 
 
-cdef int contact_stiffness(double rho_x, double rho_y, double e_star,
-                           double *k) noexcept nogil:
-    """K of one point contact, (4 sqrt 2 / 3) E* / (delta*^1.5 sqrt(sum rho))
-    (_hertz_scalar.stiffness); 0 where hertz.py would refuse or not settle."""
-    cdef double small = min(rho_x, rho_y), large = max(rho_x, rho_y), d_star = 1.0
-    cdef double got[3]
-    if not (small > 0 and large <= HERTZ_MAX_RATIO * small):
-        return 0
-    if rho_x != rho_y:
-        if not log_kappa(log(large) - log(small), got):
+cdef inline void sums(double dw, double dm, double f, double sign, double *rho) noexcept nogil:
+    """The curvature sums (rho_x, rho_y) of the inner (``sign`` -1) or outer (+1) contact."""
+    rho[0], rho[1] = 2.0 * dm / (dw * (dm + sign * dw)), (2.0 * f - 1.0) / (f * dw)
+
+
+ctypedef struct Track:
+    # one contact's ellipticity along the nodes: t and dt/d(target) at the last three targets
+    # ln(B/A) (n of them so far)
+    double x[3]
+    double t[3]
+    double d[3]
+    int n
+
+
+cdef double track_start(const Track *tr, double target) noexcept nogil:
+    """Newton's start at ``target``: hertz.py's fitted start at the first node, then the Hermite
+    interpolant (t and its slope) of the last three nodes, extrapolated (within 1e-10 of the
+    root from the fourth: Newton's first step its last)."""
+    cdef double z[6]
+    cdef double q[6]
+    cdef double t
+    cdef int i, j, n = 2 * tr.n
+    for i in range(n):
+        z[i], q[i] = tr.x[i // 2], tr.t[i // 2]
+    for j in range(1, n):  # the divided differences over x_0, x_0, x_1, x_1, ... in place
+        for i in range(n - 1, j - 1, -1):
+            q[i] = tr.d[i // 2] if j == 1 and i % 2 else (q[i] - q[i - 1]) / (z[i] - z[i - j])
+    t = q[n - 1] if n else 0.0
+    for i in range(n - 2, -1, -1):
+        t = t * (target - z[i]) + q[i]
+    return t if 0 < t <= target else min(ellipticity_start(target), target)
+
+
+cdef inline void track_push(Track *tr, double target, const double *got) noexcept nogil:
+    tr.x[2], tr.x[1], tr.x[0] = tr.x[1], tr.x[0], target
+    tr.t[2], tr.t[1], tr.t[0] = tr.t[1], tr.t[0], got[0]
+    tr.d[2], tr.d[1], tr.d[0] = tr.d[1], tr.d[0], got[3]
+    tr.n = min(tr.n + 1, 3)
+
+
+cdef int contacts(const double *rho, Track *tr, double *got) noexcept nogil:
+    """``got[5k:]`` = t, K, E, dt/d(target), p of contact k (curvature sums ``rho[2k:]``) of a
+    ball (the circle: 0, pi/2, pi/2, -, 1), its ellipticity by Newton from ``track_start``
+    (then kept in ``tr[k]``), the first steps of the two at once (at a node, the tracks begun,
+    in one loop: ``agm2``); 0 where hertz.py would refuse or Newton did not settle."""
+    cdef double target[2]
+    cdef double t[2]
+    cdef double p[2]
+    cdef double m[2]
+    cdef double ell[12]
+    cdef double small, large, previous
+    cdef bint node = tr[0].n > 0 or tr[1].n > 0, live[2]
+    cdef int k
+    for k in range(2):
+        small, large = min(rho[2 * k], rho[2 * k + 1]), max(rho[2 * k], rho[2 * k + 1])
+        got[5 * k], got[5 * k + 1], got[5 * k + 2], got[5 * k + 4] = 0.0, PI / 2, PI / 2, 1.0
+        if not (small > 0 and large <= HERTZ_MAX_RATIO * small):
             return 0
+        live[k], p[k], m[k] = small != large, 0.5, 0.5
+        if live[k]:
+            target[k] = log(large / small) if node else log(large) - log(small)
+            t[k] = track_start(&tr[k], target[k])
+            p_m(t[k], node, &p[k], &m[k])
+    if node:
+        agm2(p, m, ell)
+    for k in range(2):
+        if not node:
+            agm(p[k], m[k], &ell[6 * k])
+        previous = INFINITY
+        if live[k] and not (newton_last(target[k], &t[k], &previous, &ell[6 * k], node,
+                                        &got[5 * k]) or
+                            log_kappa(target[k], t[k], previous, &got[5 * k], node)):
+            return 0
+        if live[k]:
+            track_push(&tr[k], target[k], &got[5 * k])
+    return 1
+
+
+cdef inline double node_term(const double *rho, const double *got) noexcept nogil:
+    """``K (p (rho_x + rho_y)/E)^(1/3)`` of one contact (``contact``'s ``got``): a ball's stiffness
+    is (2 sqrt 2 pi/3) E* y^-1.5, y the sum of its two contacts' (their K^(-2/3) in series:
+    delta* (sum rho)^(1/3), delta* = (2K/pi) (pi p/(2E))^(1/3), over (2/pi)^(2/3))."""
+    return got[1] * cbrt(got[4] * (rho[0] + rho[1]) / got[2])
+
+
+cdef double contact_stiffness(const double *rho, double e_star, const double *got) noexcept nogil:
+    """K of one point contact from ``contact``'s t, K, E: (4 sqrt 2 / 3) E* / (delta*^1.5
+    sqrt(sum rho)) (_hertz_scalar.stiffness, its bits)."""
+    cdef double d_star = 1.0
+    if rho[0] != rho[1]:
         d_star = 2.0 * got[1] / PI * pow(PI / (2.0 * exp(2.0 * got[0]) * got[2]), 1.0 / 3.0)
-    k[0] = 4.0 * sqrt(2.0) / 3.0 * e_star / (pow(d_star, 1.5) * sqrt(rho_x + rho_y))
-    return 1
-
-
-cdef int ball_stiffness(double dw, double dm, double fi, double fo, double e_star,
-                        double *k) noexcept nogil:
-    """K of a ball, its inner and outer contacts in series (hertz.ball_stiffness)."""
-    cdef double k_i, k_o
-    if not contact_stiffness(2.0 * dm / (dw * (dm - dw)), (2.0 * fi - 1.0) / (fi * dw),
-                             e_star, &k_i):
-        return 0
-    if not contact_stiffness(2.0 * dm / (dw * (dm + dw)), (2.0 * fo - 1.0) / (fo * dw),
-                             e_star, &k_o):
-        return 0
-    k[0] = pow(pow(k_i, -1.0 / 1.5) + pow(k_o, -1.0 / 1.5), -1.5)
-    return 1
+    return 4.0 * sqrt(2.0) / 3.0 * e_star / (pow(d_star, 1.5) * sqrt(rho[0] + rho[1]))
 
 
 cdef int hertz_curve(const double *geo, const double *node_x, double *k0,
                      double *values) noexcept nogil:
-    """K_0 = K(alpha = 0) and the divided differences ``(K(c)/K_0 - 1)/(c - 1)`` at the nodes
-    ``c = (x + 1)/2`` of one geometry ``geo`` = (D_w, d_m, f_i, f_o, E, nu)
-    (combined.hertz_setup); 0 where hertz.py would refuse or not converge."""
-    cdef double nu = geo[5], e_star, c, k
+    """K_0 = K(alpha = 0) (hertz.ball_stiffness's bits: both contacts in series) and the
+    divided differences ``(K(c)/K_0 - 1)/(c - 1) = ((y_0/y)^1.5 - 1)/(c - 1)`` at the nodes
+    ``c = (x + 1)/2`` (``node_term``'s y, each contact's ellipticity continued from the nodes
+    before) of one geometry ``geo`` = (D_w, d_m, f_i, f_o, E, nu) (combined.hertz_setup); 0
+    where hertz.py would refuse or not converge."""
+    cdef double nu = geo[5], e_star, c, y0, y, r
+    cdef double rho[4]
+    cdef double got[10]
+    cdef Track tr[2]
     cdef int i
     if not (nu > -1.0 and nu <= 0.5):
         return 0
     e_star = 1.0 / ((1.0 - nu * nu) / geo[4] + (1.0 - nu * nu) / geo[4])
-    if not ball_stiffness(geo[0], geo[1], geo[2], geo[3], e_star, k0):
-        return 0
-    for i in range(NODES):
-        c = (node_x[i] + 1.0) / 2.0
-        if not ball_stiffness(geo[0], geo[1] / c, geo[2], geo[3], e_star, &k):
+    tr[0].n = tr[1].n = 0
+    for i in range(-1, NODES):
+        c = (node_x[i] + 1.0) / 2.0 if i >= 0 else 1.0
+        sums(geo[0], geo[1] / c, geo[2], -1.0, rho)
+        sums(geo[0], geo[1] / c, geo[3], 1.0, rho + 2)
+        if not contacts(rho, tr, got):
             return 0
-        values[i] = (k / k0[0] - 1.0) / (c - 1.0)
+        y = node_term(rho, got) + node_term(rho + 2, got + 5)
+        if i < 0:
+            y0 = y
+            k0[0] = pow(pow(contact_stiffness(rho, e_star, got), -1.0 / 1.5) + pow(
+                contact_stiffness(rho + 2, e_star, got + 5), -1.0 / 1.5), -1.5)
+        else:
+            r = y0 / y
+            values[i] = (r * sqrt(r) - 1.0) / (c - 1.0)
     return 1
 
 
@@ -4627,13 +4719,15 @@ def combined_call(int z, const double[:, ::1] cols, bint angular, bint imposed,
     overflows (n,) uint8: ``combined_result``'s, the tangent made physical; set where
     ANSWERED), the geometry (4, n) = A, g, R_i, alpha_0, K_0 or the constant K (n,), the
     curve's values (n, NODES), the scaled applied forces (n, 5): set where the set-up
-    passed)."""
+    passed; and the one array of which K_0 and the values are views (n (1 + NODES): for one
+    case the layout of ``known``, to keep without a copy))."""
     cdef Py_ssize_t n = cols.shape[1]
     cdef Answers a
     cdef Setup st
     cdef Limits lim = LIMITS
     cdef int state = SET_UP_APART
-    geo_a, k0_a, values_a, f_a = np.empty((4, n)), np.empty(n), np.empty((n, NODES)), \
+    kv_a = np.empty(n * (1 + NODES))
+    geo_a, k0_a, values_a, f_a = np.empty((4, n)), kv_a[:n], kv_a[n:].reshape(n, NODES), \
         np.empty((n, 5))
     result_a = (np.empty((8, n)), np.empty((5, n, z)), np.zeros(n, dtype=np.uint8))
     arrays = answers_arrays(n, z)
@@ -4646,7 +4740,7 @@ def combined_call(int z, const double[:, ::1] cols, bint angular, bint imposed,
     cdef double *vals = &values[0, 0] if hertz and n > 0 else NULL
     lim.max_iterations, lim.fast_steps = max_iterations, first_stage_steps
     if n == 0 or not setup_open(n, z, &f[0, 0], &st):
-        return (state, arrays, result_a, geo_a, k0_a, values_a, f_a)
+        return (state, arrays, result_a, geo_a, k0_a, values_a, f_a, kv_a)
     with nogil:
         if set_up_all(z, cols, angular, imposed, &limits[0],
                       &known[0] if known.shape[0] else NULL, &node_x[0], geo, k0, vals, &st):
@@ -4657,7 +4751,7 @@ def combined_call(int z, const double[:, ::1] cols, bint angular, bint imposed,
                 result_all(z, cols, angular, imposed, geo, k0, &st, &a, rows, per_ball, bad)
         free(st.c)
         free(st.mirror)
-    return (state, arrays, result_a, geo_a, k0_a, values_a, f_a)
+    return (state, arrays, result_a, geo_a, k0_a, values_a, f_a, kv_a)
 
 
 cdef bint result_case(const double *v, const double *case_in, Py_ssize_t m, const double *gen,

@@ -628,7 +628,7 @@ def _one_call(
     core's ``answers_arrays``), the results, R_i (n,))."""
     key = cols[7:13].tobytes() if hertz and cols.shape[1] == 1 else None
     known = _SETUP_CACHE.get(key, _UNKNOWN) if key is not None else _UNKNOWN
-    state, solved, result, geo, k0, values, _ = _core.combined_call(
+    state, solved, result, geo, _, _, _, k0_values = _core.combined_call(
         z,
         cols,
         angular,
@@ -642,7 +642,7 @@ def _one_call(
         _ring.FIRST_STAGE_STEPS,
     )
     if key is not None and known is _UNKNOWN and state != _APART:
-        remember_setup(key, np.concatenate((k0, values[0])))
+        remember_setup(key, k0_values)  # (K_0 and the values, one array)
     return state, solved, result, geo[2]
 
 
@@ -1778,8 +1778,8 @@ def remember_setup(key: bytes, known: np.ndarray) -> None:
 def hertz_setup(geo: _Geometry, e: np.ndarray, nu: np.ndarray) -> tuple[np.ndarray, np.ndarray]:
     """Per case, K_0 = K(alpha = 0) [N/mm^1.5] (n,) and the divided differences ``D(c) = (K(c)/
     K_0 - 1)/(c - 1)`` at the nodes of :class:`StiffnessCurve` (n, NODES), in the compiled core
-    (``hertz_curves``: the scalar path of :func:`bearingload.contact.hertz.ball_stiffness`, the
-    same bits, per case; a case of the geometry of the case before it takes its values). A
+    (``hertz_curves``: K_0 the scalar path of :func:`bearingload.contact.hertz.ball_stiffness`,
+    its bits, the nodes within rounding of it; a case of the geometry before takes its values). A
     geometry the core cannot set up goes through the vectorised path of ``ball_stiffness``,
     which refuses it with the reason (or, where only the core's Newton did not settle, sets it
     up)."""
