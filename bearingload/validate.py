@@ -126,12 +126,17 @@ def positive(name: str, value: object, unit: str) -> np.ndarray:
         return np.array(number)
     arr = finite(name, value)
     if np.any(arr <= 0):
-        raise InputError(
-            name,
-            f"must be greater than 0 {unit} (got {_worst(arr, arr <= 0)})",
-            element=element(arr, arr <= 0, unit),
-        )
+        raise not_positive(name, arr, arr <= 0, unit)
     return arr
+
+
+def not_positive(name: str, arr: np.ndarray, bad: Any, unit: str) -> InputError:
+    """The refusal of :func:`positive`: ``arr`` [``unit``] not > 0 where ``bad``."""
+    return InputError(
+        name,
+        f"must be greater than 0 {unit} (got {_worst(arr, bad)})",
+        element=element(arr, bad, unit),
+    )
 
 
 def at_least(name: str, value: object, lowest: float, unit: str) -> np.ndarray:
@@ -142,10 +147,13 @@ def at_least(name: str, value: object, lowest: float, unit: str) -> np.ndarray:
         return np.array(number)
     arr = finite(name, value)
     if np.any(arr < lowest):
-        raise InputError(
-            name, f"must be >= {lowest:g} {unit}", element=element(arr, arr < lowest, unit)
-        )
+        raise below(name, arr, arr < lowest, lowest, unit)
     return arr
+
+
+def below(name: str, arr: np.ndarray, bad: Any, lowest: float, unit: str) -> InputError:
+    """The refusal of :func:`at_least`: ``arr`` [``unit``] below ``lowest`` where ``bad``."""
+    return InputError(name, f"must be >= {lowest:g} {unit}", element=element(arr, bad, unit))
 
 
 #: Groove conformity f = r/D_w, inner (``f_i``) or outer (``f_o``): the groove's radius r lies
@@ -157,20 +165,86 @@ CONFORMITY_RANGE = (0.5, 1.0)
 def conformity(name: str, value: object) -> np.ndarray:
     """Return a groove conformity ``value`` (``f_i``, ``f_o``) as a float array, raising unless
     every element lies in :data:`CONFORMITY_RANGE` (excluded ends)."""
-    low, high = CONFORMITY_RANGE
     number = plain(value)
-    if number is not None and low < number < high:
+    if number is not None and conforms(number):
         return np.array(number)
     arr = finite(name, value)
-    bad = ~((arr > low) & (arr < high))
+    bad = ~conforms(arr)
     if np.any(bad):
-        raise InputError(
-            name,
-            f"groove conformity r/D_w must lie in ({low:g}, {high:g}), the groove radius between "
-            f"the ball's radius and its diameter; got {_worst(arr, bad)}",
-            element=element(arr, bad),
-        )
+        raise nonconforming(name, arr, bad)
     return arr
+
+
+def conforms(f: Any) -> Any:
+    """Where a groove conformity (one float, or an array: the same test) lies in
+    :data:`CONFORMITY_RANGE`."""
+    low, high = CONFORMITY_RANGE
+    return (low < f) & (f < high)
+
+
+def nonconforming(name: str, arr: np.ndarray, bad: Any) -> InputError:
+    """The refusal of :func:`conformity`: ``arr`` outside :data:`CONFORMITY_RANGE` where
+    ``bad``."""
+    low, high = CONFORMITY_RANGE
+    return InputError(
+        name,
+        f"groove conformity r/D_w must lie in ({low:g}, {high:g}), the groove radius between "
+        f"the ball's radius and its diameter; got {_worst(arr, bad)}",
+        element=element(arr, bad),
+    )
+
+
+#: The largest imposed misalignment (tilt of the inner ring) the ball-bearing models take: a
+#: deep-groove ball bearing tolerates 2-10 arcmin, and a tilt of a few degrees would push the
+#: balls over the groove shoulders, which the models do not describe. [°]
+MISALIGNMENT_MAX = 2.0
+
+
+def misalignment_fits(tilt: Any) -> Any:
+    """Where an imposed misalignment [°] (one float, or an array: the same test) lies within
+    ±:data:`MISALIGNMENT_MAX`."""
+    return abs(tilt) <= MISALIGNMENT_MAX
+
+
+def misalignment_beyond(tilt: np.ndarray, bad: np.ndarray) -> InputError:
+    """The refusal of the misalignments [°] ``tilt`` where ``bad`` (not
+    :func:`misalignment_fits`), naming the first."""
+    first = abs(float(np.asarray(tilt)[np.asarray(bad)].flat[0]))
+    return InputError(
+        "misalignment",
+        f"must be within ±{MISALIGNMENT_MAX:g}° (got {first:.10g}°): a deep-groove ball bearing "
+        "tolerates 2-10 arcmin, and a tilt of degrees would push the balls over the groove "
+        "shoulders, which the model does not describe",
+        element=element(tilt, bad, "°"),
+    )
+
+
+def misalignment(value: object) -> np.ndarray:
+    """Return an imposed misalignment [°] as a float array: finite (:func:`finite`) and within
+    ±:data:`MISALIGNMENT_MAX` (:func:`misalignment_fits`)."""
+    arr = finite("misalignment", value)
+    bad = np.logical_not(misalignment_fits(arr))
+    if bad.any():
+        raise misalignment_beyond(arr, bad)
+    return arr
+
+
+def clearance_fits(clearance: Any, ball_diameter: Any) -> Any:
+    """Where a radial internal clearance G_r [mm] (negative: a preload) is one a ball bearing
+    of balls of diameter D_w [mm] can have: |G_r| < D_w/2 (floats, or arrays broadcast
+    together: the same test). A ball diameter not > 0 passes: its own rule refuses it."""
+    return (ball_diameter <= 0.0) | (abs(clearance) < ball_diameter / 2)
+
+
+def clearance_beyond_ball(clearance: float, ball_diameter: float, element: str = "") -> InputError:
+    """The refusal of a clearance G_r [mm] not :func:`clearance_fits` to the balls of diameter
+    ``ball_diameter`` [mm]; ``element``: of an array, its first such element."""
+    return InputError(
+        "clearance",
+        f"G_r = {clearance:g} mm is at least half the ball diameter ({ball_diameter:g} mm): no "
+        "bearing has such a play or preload",
+        element=element,
+    )
 
 
 def finite_positive(name: str, value: object) -> np.ndarray:

@@ -17,12 +17,21 @@ PAIR = {**GEOMETRY, "contact_angle": 40.0, "width": 15.0, "preload": 100.0}
     [
         # the groove limit: G_r below 2 (f_i + f_o - 1) D_w
         (
-            lambda: solve_combined(9, 1000.0, 100.0, **GEOMETRY, clearance=[0.01, 5.0]),
-            "clearance[1] = 5 mm",
+            lambda: solve_combined(9, 1000.0, 100.0, **GEOMETRY, clearance=[0.01, 2.0]),
+            "clearance[1] = 2 mm",
         ),
         (
-            lambda: solve_combined(9, 1000.0, 100.0, **GEOMETRY, clearance=[[0.01], [5.0]]),
-            "clearance[1, 0] = 5 mm",
+            lambda: solve_combined(9, 1000.0, 100.0, **GEOMETRY, clearance=[[0.01], [2.0]]),
+            "clearance[1, 0] = 2 mm",
+        ),
+        # |G_r| below half the ball diameter, and a misalignment within 2°
+        (
+            lambda: solve_combined(9, 1000.0, 100.0, **GEOMETRY, clearance=[[0.01], [-5.0]]),
+            "clearance[1, 0] = -5 mm",
+        ),
+        (
+            lambda: solve_combined(9, 1000.0, 100.0, **GEOMETRY, misalignment=[0.1, -3.0]),
+            "misalignment[1] = -3 °",
         ),
         (
             lambda: solve_combined(9, [1000.0, 0.0], [100.0, 0.0], **GEOMETRY),

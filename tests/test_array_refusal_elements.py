@@ -44,9 +44,10 @@ def test_angular_loads_too_large_name_the_case():
 
 
 BAD_GEOMETRIES = [
-    {"clearance": np.array([0.01, 0.02, 5.0])},
-    {"clearance": np.array([0.01, 5.0]), "ball_diameter": np.array([7.938, 50.0])},
-    {"clearance": np.array([0.01, 5.0]), "f_i": np.array([0.52, 0.4])},
+    {"clearance": np.array([0.01, 0.02, 2.0])},
+    {"clearance": np.array([0.01, -0.02, -5.0])},
+    {"clearance": np.array([0.01, 2.0]), "ball_diameter": np.array([7.938, 50.0])},
+    {"clearance": np.array([0.01, 2.0]), "f_i": np.array([0.52, 0.4])},
     {"clearance": np.nan, "ball_diameter": np.array([7.938, -1.0])},
     {"ball_diameter": np.array([7.938, 50.0]), "f_i": 0.3},
     {"ball_diameter": -1.0, "clearance": np.array([0.01, 0.02])},
@@ -66,8 +67,8 @@ def test_groove_geometry_refuses_as_solve_combined(bad):
 
 def test_groove_geometry_names_the_clearance_element():
     with pytest.raises(InputError) as info:
-        groove_geometry(7.938, 38.5, 0.52, 0.53, np.array([0.01, 5.0]))
-    assert str(info.value).startswith("clearance[1] = 5 mm: must be smaller than 2 (f_i")
+        groove_geometry(7.938, 38.5, 0.52, 0.53, np.array([0.01, 2.0]))
+    assert str(info.value).startswith("clearance[1] = 2 mm: must be smaller than 2 (f_i")
 
 
 def test_a_case_among_many_is_refused_as_alone():

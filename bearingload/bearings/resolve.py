@@ -60,7 +60,13 @@ from bearingload.bearings.resolved import (
     resolve_clearance,
 )
 from bearingload.errors import InputError, MissingError
-from bearingload.validate import ball_spacing, conformity, finite_positive
+from bearingload.validate import (
+    ball_spacing,
+    clearance_beyond_ball,
+    clearance_fits,
+    conformity,
+    finite_positive,
+)
 
 if TYPE_CHECKING:
     from bearingload.bearings.materials import BallMaterial
@@ -198,7 +204,7 @@ def resolve_bearing(
     k_src = "given" if stiffness is not None else "Hertz, exact: (K_i^-2/3 + K_o^-2/3)^-3/2"
     prov.append(Provenance("stiffness", "ball stiffness K (series)", k, "N/mm^1.5", k_src))
     g_r, cls, rng, pick, g_src = resolve_clearance(spec, g.geom, g.bore, clearance_pick)
-    if g.dw is not None and abs(g_r) >= g.dw / 2:
+    if g.dw is not None and not clearance_fits(g_r, g.dw):
         raise _clearance_beyond_ball(spec, g_r, g.dw)
     sources = g.sources + ([clearance_row_source(g.bore)] if rng is not None else [])
     prov.append(Provenance("clearance", "radial clearance G_r (total)", g_r * 1e3, "µm", g_src))
@@ -619,16 +625,18 @@ def _angular(
 
 
 def _clearance_beyond_ball(spec: ClearanceSpec | None, g_r: float, dw: float) -> InputError:
-    """The refusal of |G_r| >= D_w/2 [mm]: a clearance of its class names the ball diameter as
-    the slip; a bare number (mm) the micrometres it likely meant, where that would fit."""
-    what = (f"G_r = {g_r:g} mm is at least half the ball diameter ({dw:g} mm): no bearing has such "
-            "a play or preload")  # fmt: skip
+    """The models' refusal of G_r [mm] with balls of D_w [mm]
+    (:func:`bearingload.validate.clearance_beyond_ball`) as given: a clearance of its class
+    names the ball diameter as the slip; a bare number (mm) the micrometres it likely meant,
+    where that would fit."""
+    refused = clearance_beyond_ball(g_r, dw)
+    what = refused.problem
     if spec is None or spec.length is None:
         return InputError(
             "ball_diameter",
             f"{dw:g} mm is too small for this bearing's clearance: {what} (bare numbers are mm)",
         )
     bare = re.fullmatch(r"\s*[+-]?(?:\d+\.?\d*|\.\d+)(?:[eE][+-]?\d+)?\s*", spec.text)
-    if bare and abs(g_r) * 1e-3 < dw / 2:
-        return InputError("clearance", f"{what}; a bare number is mm (did you mean {g_r:g}um?)")
-    return InputError("clearance", what)
+    if bare and clearance_fits(g_r * 1e-3, dw):
+        return refused.with_way_out(f"a bare number is mm (did you mean {g_r:g}um?)")
+    return refused

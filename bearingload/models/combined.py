@@ -110,7 +110,7 @@ import math
 import operator
 from collections.abc import Callable
 from dataclasses import dataclass
-from typing import Any
+from typing import Any, NamedTuple
 
 import numpy as np
 
@@ -295,7 +295,8 @@ def groove_geometry(
     f_i, f_o : array_like
         Groove conformities r_i/D_w, r_o/D_w, > 0.5. [-]
     clearance : array_like
-        Radial internal clearance G_r (negative = preload), below 2 A. [mm]
+        Radial internal clearance G_r (negative = preload), below 2 A, and |G_r| < D_w/2
+        (:func:`bearingload.validate.clearance_fits`). [mm]
 
     Returns
     -------
@@ -314,6 +315,8 @@ def groove_geometry(
     def at(name: str, bad: Any, unit: str = "") -> str:  # the input's element of a bad case
         return validate.element_at(named[name], bad, np.shape(bad), unit)
 
+    validate.broadcast_shape(named | {"f_i": fi, "f_o": fo})
+    _check_cases(named, at)  # (as solve_combined, before the geometry)
     geo = ring_geometry(dw, dm, fi, fo, gr, at=at)
     play = 2.0 * geo.A * np.sin(geo.alpha0)
     return (
@@ -531,7 +534,8 @@ def solve_combined(
     f_i, f_o : array_like, default 0.52, 0.53
         Groove conformities r_i/D_w, r_o/D_w. [-]
     clearance : array_like, default 0
-        Radial internal clearance G_r, total play; negative = preload. [mm]
+        Radial internal clearance G_r, total play; negative = preload; |G_r| < D_w/2
+        (:func:`bearingload.validate.clearance_fits`, as the command line checks). [mm]
     cage_angle : array_like, default 0
         Angle of ball 1 from the load line. [°]
     moment : array_like, optional
@@ -539,7 +543,8 @@ def solve_combined(
         default: the ring is free to tilt (M = 0). [N mm]
     misalignment : array_like, optional
         Imposed tilt of the inner ring in the plane of the load line, instead of a moment; 0
-        holds the ring aligned (the moment that takes is reported). [°]
+        holds the ring aligned (the moment that takes is reported); within ±2°
+        (:data:`bearingload.validate.MISALIGNMENT_MAX`). [°]
     modulus, poisson : array_like, default 208 000 MPa, 0.3
         E [MPa] and nu [-] of balls and rings.
     stiffness : array_like, optional
@@ -768,73 +773,210 @@ def _inputs(raw: dict[str, Any]) -> tuple[tuple[int, ...], np.ndarray, dict[str,
 
 #: The inputs of :func:`solve_combined` whose None means not given (0 in their rows); any
 #: other None is refused by :func:`_checked_inputs`.
-_OPTIONAL = frozenset(("moment", "misalignment", "contact_angle", "stiffness"))
+_OPTIONAL = ("moment", "misalignment", "contact_angle", "stiffness")
 #: The types of plain numbers :func:`_plain_inputs` takes: floats, or floats and ints.
 _FLOAT, _NUMBER = frozenset((float,)), frozenset((float, int))
+#: The largest design contact angle taken. [°]
+CONTACT_ANGLE_MAX = 60.0
+
+
+class _Rule(NamedTuple):
+    """A rule of the inputs of :func:`solve_combined`: ``holds(v)`` of the inputs by name
+    (``v``: plain floats of one case, or arrays; the same test, written with ``&`` and ``|``)
+    is where a case passes, ``refusal(v, bad, at)`` the InputError of the cases ``bad`` where
+    it does not (``at(name, bad, unit)`` names the input's element of the first). ``reads``:
+    the inputs it reads, each refused first if not finite (:func:`_checked_inputs`); a rule
+    without ``holds`` only does that. ``given``: the optional input (:data:`_OPTIONAL`) without
+    which the rule does not apply."""
+
+    reads: tuple[str, ...]
+    holds: Callable[[dict[str, Any]], Any] | None = None
+    refusal: Callable[..., InputError] | None = None
+    given: str | None = None
+
+
+def _refuse_contact_angle(v: dict[str, Any], bad: Any, at: Callable[..., str]) -> InputError:
+    return InputError(
+        "contact_angle",
+        f"must be from 0 to {CONTACT_ANGLE_MAX:g}°",
+        element=at("contact_angle", bad, "°"),
+    )
+
+
+def _refuse_angular_clearance(v: dict[str, Any], bad: Any, at: Callable[..., str]) -> InputError:
+    return InputError(
+        "clearance",
+        "must be 0 with a contact angle: the design contact angle fixes the geometry of an "
+        "angular-contact bearing",
+        element=at("clearance", bad, "mm"),
+    )
+
+
+def _refuse_angular_thrust(v: dict[str, Any], bad: Any, at: Callable[..., str]) -> InputError:
+    return InputError(
+        "axial_load",
+        "must be >= 0 N for an angular-contact bearing: its balls take thrust one way only "
+        "(a reversed load lifts every ball off its groove; mount the bearing the other way "
+        "round, or give the load to its partner)",
+        element=at("axial_load", bad, "N"),
+    )
+
+
+def _refuse_clearance(v: dict[str, Any], bad: Any, at: Callable[..., str]) -> InputError:
+    i = np.unravel_index(int(np.flatnonzero(bad)[0]), bad.shape)  # the first case refused
+    g_r, d_w = (float(np.broadcast_to(v[k], bad.shape)[i]) for k in ("clearance", "ball_diameter"))
+    return validate.clearance_beyond_ball(g_r, d_w, element=at("clearance", bad, "mm"))
+
+
+#: The rules of the inputs of :func:`solve_combined`, each input's in the order they are
+#: checked (the first refused is named): of one input each, then of the cases (several inputs
+#: broadcast together). :func:`_checked_inputs` checks them one at a time, naming the first
+#: refused; :func:`_plain_inputs` all at once on one case of plain numbers.
+_INPUT_RULES = (
+    _Rule(
+        ("radial_load",),
+        lambda v: v["radial_load"] >= 0.0,
+        lambda v, bad, at: validate.below("radial_load", v["radial_load"], bad, 0.0, "N"),
+    ),
+    _Rule(("axial_load",)),
+    _Rule(
+        ("contact_angle",),
+        lambda v: (0.0 <= v["contact_angle"]) & (v["contact_angle"] <= CONTACT_ANGLE_MAX),
+        _refuse_contact_angle,
+        "contact_angle",
+    ),
+    _Rule(
+        ("clearance",), lambda v: v["clearance"] == 0.0, _refuse_angular_clearance, "contact_angle"
+    ),
+    _Rule(
+        ("axial_load",), lambda v: v["axial_load"] >= 0.0, _refuse_angular_thrust, "contact_angle"
+    ),
+    _Rule(("moment", "moment_cross")),
+    _Rule(
+        ("misalignment",),
+        lambda v: validate.misalignment_fits(v["misalignment"]),
+        lambda v, bad, at: validate.misalignment_beyond(v["misalignment"], bad),
+    ),
+    _Rule(("cage_angle",)),
+    _Rule(
+        ("modulus",),
+        lambda v: v["modulus"] > 0.0,
+        lambda v, bad, at: validate.not_positive("modulus", v["modulus"], bad, "MPa"),
+    ),
+    _Rule(("poisson",)),
+    _Rule(
+        ("stiffness",),
+        lambda v: v["stiffness"] > 0.0,
+        lambda v, bad, at: validate.not_positive("stiffness", v["stiffness"], bad, "N/mm^1.5"),
+        "stiffness",
+    ),
+    _Rule(("ball_diameter", "pitch_diameter", "clearance")),
+    _Rule(
+        ("f_i",),
+        lambda v: validate.conforms(v["f_i"]),
+        lambda v, bad, at: validate.nonconforming("f_i", v["f_i"], bad),
+    ),
+    _Rule(
+        ("f_o",),
+        lambda v: validate.conforms(v["f_o"]),
+        lambda v, bad, at: validate.nonconforming("f_o", v["f_o"], bad),
+    ),
+)
+_CASE_RULES = (
+    _Rule(
+        ("clearance", "ball_diameter"),
+        lambda v: validate.clearance_fits(v["clearance"], v["ball_diameter"]),
+        _refuse_clearance,
+    ),
+)
+
+
+def _gate(angular: bool, k_given: bool) -> tuple[Callable[[dict[str, Any]], Any], ...]:
+    """The tests of :data:`_INPUT_RULES` and :data:`_CASE_RULES` that apply to a case with or
+    without a contact angle and a stiffness."""
+    given = {None, *(("contact_angle",) if angular else ()), *(("stiffness",) if k_given else ())}
+    rules = _INPUT_RULES + _CASE_RULES
+    return tuple(r.holds for r in rules if r.holds is not None and r.given in given)
+
+
+#: :func:`_gate` by (a contact angle given, a stiffness given).
+_GATES = {(a, k): _gate(a, k) for a in (False, True) for k in (False, True)}
 
 
 def _plain_inputs(raw: dict[str, Any]) -> np.ndarray | None:
     """The rows (17, 1) of one case whose inputs are all plain numbers (``float`` or ``int``)
-    passing every check of :func:`_checked_inputs`, the cage angle taken mod 360°; None for
-    any other."""
-    values = [0.0 if x is None and k in _OPTIONAL else x for k, x in raw.items()]
-    if not _FLOAT.issuperset(map(type, values)):  # (a bool is neither)
-        if not _NUMBER.issuperset(map(type, values)):
+    passing every rule (:data:`_INPUT_RULES`, :data:`_CASE_RULES`), the cage angle taken mod
+    360°; None for any other (:func:`_checked_inputs` then names what it refuses)."""
+    v = raw.copy()
+    for name in _OPTIONAL:
+        if v[name] is None:
+            v[name] = 0.0
+    if not _FLOAT.issuperset(map(type, v.values())):  # (a bool is neither)
+        if not _NUMBER.issuperset(map(type, v.values())):
             return None
         try:
-            values = [float(x) for x in values]
+            v = {name: float(x) for name, x in v.items()}
         except OverflowError:
             return None
-    if not math.isfinite(sum(values)):  # a NaN or infinity among them (or a sum beyond)
+    if not math.isfinite(sum(v.values())):  # a NaN or infinity among them (or a sum beyond)
         return None
-    v = dict(zip(raw, values, strict=True))
-    low, high = validate.CONFORMITY_RANGE
-    ok = v["radial_load"] >= 0.0 and v["modulus"] > 0.0 and low < v["f_i"] < high
-    ok = ok and low < v["f_o"] < high and (raw["stiffness"] is None or v["stiffness"] > 0.0)
     angular = raw["contact_angle"] is not None
-    if angular:
-        ok = ok and 0.0 <= v["contact_angle"] <= CONTACT_ANGLE_MAX and v["clearance"] == 0.0
-        ok = ok and v["axial_load"] >= 0.0
-    if not ok:
-        return None
+    for holds in _GATES[angular, raw["stiffness"] is not None]:
+        if not holds(v):
+            return None
     v["cage_angle"] = validate.reduced_angle(v["cage_angle"])  # (as validate.cage_angle)
     v[""], v["groove"] = 0.0, v["contact_angle" if angular else "clearance"]
     return np.array(_PLAIN_ROWS(v)).reshape(-1, 1)
 
 
 def _checked_inputs(raw: dict[str, Any]) -> tuple[tuple[int, ...], np.ndarray, dict[str, Any]]:
-    """:func:`_inputs` of any inputs: each checked (:mod:`bearingload.validate`, the first
-    refused named), broadcast together (:func:`_cases`) and packed."""
-    fr = validate.at_least("radial_load", raw["radial_load"], 0.0, "N")
-    fa = validate.finite("axial_load", raw["axial_load"])
-    angular = _angular(raw["contact_angle"], fa, raw["clearance"])
-    mm = validate.finite("moment", 0.0 if raw["moment"] is None else raw["moment"])
-    mc = validate.finite("moment_cross", raw["moment_cross"])
-    tilt = raw["misalignment"]
-    tilt_deg = validate.finite("misalignment", 0.0 if tilt is None else tilt)
-    cage = validate.cage_angle(raw["cage_angle"])
-    e = validate.positive("modulus", raw["modulus"], "MPa")
-    nu = validate.finite("poisson", raw["poisson"])
-    k = raw["stiffness"]
-    k_given = None if k is None else validate.positive("stiffness", k, "N/mm^1.5")
-    dw, dm, gr = validate.each_finite(
-        ball_diameter=raw["ball_diameter"],
-        pitch_diameter=raw["pitch_diameter"],
-        clearance=raw["clearance"],
-    )
-    f_i, f_o = validate.conformity("f_i", raw["f_i"]), validate.conformity("f_o", raw["f_o"])
-    named = dict(radial_load=fr, axial_load=fa, moment=mm, misalignment=tilt_deg, cage_angle=cage)
-    named |= dict(modulus=e, poisson=nu, moment_cross=mc, ball_diameter=dw)
-    named |= dict(pitch_diameter=dm, f_i=f_i, f_o=f_o, clearance=gr)
-    named["contact_angle"] = np.zeros(()) if angular is None else angular
-    if k_given is not None:
-        named["stiffness"] = k_given
+    """:func:`_inputs` of any inputs: each rule of :data:`_INPUT_RULES` checked in its order
+    (every input read refused first if not finite: :func:`bearingload.validate.finite`), the
+    inputs broadcast together (:func:`_cases`), the rules of :data:`_CASE_RULES` checked on
+    the cases; packed."""
+    given = {name: raw[name] is not None for name in _OPTIONAL}
+    v: dict[str, Any] = {}
+
+    def own(name: str, bad: Any, unit: str = "") -> str:  # the element of one input's rule
+        return validate.element(v[name], bad, unit)
+
+    for rule in _INPUT_RULES:
+        if rule.given is not None and not given[rule.given]:
+            continue
+        for name in rule.reads:
+            if name not in v:
+                value = raw[name]
+                v[name] = validate.finite(name, 0.0 if given.get(name) is False else value)
+        if rule.holds is not None and rule.refusal is not None:
+            bad = np.logical_not(rule.holds(v))
+            if bad.any():
+                raise rule.refusal(v, bad, own)
+    v["cage_angle"] = np.asarray(validate.reduced_angle(v["cage_angle"]))
+    if not given["contact_angle"]:
+        v["contact_angle"] = np.zeros(())
+    named = {name: v[name] for name in raw if name in v}  # (in the order of solve_combined's)
     shape, flat = _cases(named)
     cols = np.zeros((len(INPUT_ROWS), flat[0].size))
     for name, col in zip(named, flat, strict=True):
         cols[_ROW[name]] = col
-    cols[_ROW["groove"]] = cols[_ROW["clearance" if angular is None else "contact_angle"]]
+    cases = dict(zip(named, cols[[_ROW[name] for name in named]], strict=True))
+
+    def at(name: str, bad: Any, unit: str = "") -> str:  # the input's element of a bad case
+        return validate.element_at(named[name], bad, shape, unit)
+
+    _check_cases(cases, at)
+    cols[_ROW["groove"]] = cols[_ROW["contact_angle" if given["contact_angle"] else "clearance"]]
     return shape, cols, named
+
+
+def _check_cases(cases: dict[str, Any], at: Callable[..., str]) -> None:
+    """Refuse the first rule of :data:`_CASE_RULES` the inputs ``cases`` (arrays broadcast
+    together) break; ``at`` names the input's element of the first case refused."""
+    for rule in _CASE_RULES:
+        if rule.holds is not None and rule.refusal is not None:
+            bad = np.logical_not(rule.holds(cases))
+            if bad.any():
+                raise rule.refusal(cases, bad, at)
 
 
 def _geometry_of(given: np.ndarray, angular: bool, at: Callable[..., str]) -> _Geometry:
@@ -1226,42 +1368,6 @@ def angular_geometry(dw: Any, dm: Any, fi: Any, fo: Any, alpha_deg: np.ndarray) 
     """The deep-groove geometry whose free contact angle is the design angle alpha_0 [°]:
     ``G_r = 2A (1 - cos alpha_0) = 4A sin^2(alpha_0/2)``, alpha_0 kept as given."""
     return ring_geometry(dw, dm, fi, fo, alpha_deg, angular=True)
-
-
-#: The largest design contact angle taken [°] (:func:`_angular`; the one-case path's gate too).
-CONTACT_ANGLE_MAX = 60.0
-
-
-def _angular(contact_angle: Any, fa: np.ndarray, clearance: Any) -> np.ndarray | None:
-    """The design contact angle [°] checked (None: a deep-groove bearing): 0 to 60°, with no
-    clearance (the angle fixes the geometry) and a thrust F_a >= 0 (one-sided contact)."""
-    if contact_angle is None:
-        return None
-    alpha = validate.finite("contact_angle", contact_angle)
-    out = (alpha < 0) | (alpha > CONTACT_ANGLE_MAX)
-    if out.any():
-        raise InputError(
-            "contact_angle",
-            f"must be from 0 to {CONTACT_ANGLE_MAX:g}°",
-            element=validate.element(alpha, out, "°"),
-        )
-    gr = validate.finite("clearance", clearance)
-    if (gr != 0).any():
-        raise InputError(
-            "clearance",
-            "must be 0 with a contact angle: the design contact angle fixes the geometry of an "
-            "angular-contact bearing",
-            element=validate.element(gr, gr != 0, "mm"),
-        )
-    if (fa < 0).any():
-        raise InputError(
-            "axial_load",
-            "must be >= 0 N for an angular-contact bearing: its balls take thrust one way only "
-            "(a reversed load lifts every ball off its groove; mount the bearing the other way "
-            "round, or give the load to its partner)",
-            element=validate.element(fa, fa < 0, "N"),
-        )
-    return alpha
 
 
 def _check_one_sided_moment(

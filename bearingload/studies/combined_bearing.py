@@ -19,6 +19,7 @@ from typing import TYPE_CHECKING, Any
 
 import numpy as np
 
+from bearingload import validate
 from bearingload.bearings.mounting import result_fields
 from bearingload.bearings.resolve import ResolvedBearing
 from bearingload.errors import InputError
@@ -27,10 +28,6 @@ from bearingload.studies.matrix import matrix_columns
 
 if TYPE_CHECKING:  # the solver is imported where a case is solved
     from bearingload.models.combined import CombinedDistribution
-
-#: The largest imposed misalignment accepted: a tilt of a few degrees would push the balls over
-#: the groove shoulders of a deep-groove bearing (which tolerates 2-10 arcmin). [°]
-MISALIGNMENT_MAX = 2.0
 
 
 @dataclass(frozen=True)
@@ -273,21 +270,6 @@ def warned_tilt(r: CombinedDistribution) -> Any:
     return np.degrees(np.where(felt, tilt, 0.0))
 
 
-def check_misalignment(misalignment: Any) -> None:
-    """Refuse an imposed misalignment beyond :data:`MISALIGNMENT_MAX` (one value or an array of
-    them, as a batch group passes). [°]"""
-    if misalignment is None:
-        return
-    worst = float(np.max(np.abs(misalignment)))
-    if worst > MISALIGNMENT_MAX:
-        raise InputError(
-            "misalignment",
-            f"must be within ±{MISALIGNMENT_MAX:g}° (got {worst:.10g}°): a deep-groove ball "
-            "bearing tolerates 2-10 arcmin, and a tilt of degrees would push the balls over the "
-            "groove shoulders, which the model does not describe",
-        )
-
-
 def solve_on_bearing(
     b: ResolvedBearing,
     load: float,
@@ -317,8 +299,9 @@ def solve_on_bearing(
     moment : float, optional
         Moment in the plane of the load; default free tilt. [N mm]
     misalignment : float or array_like, optional
-        Imposed tilt in the plane of the load, within ±:data:`MISALIGNMENT_MAX` (an array: one
-        per case, as a batch group of rows gives it). [°]
+        Imposed tilt in the plane of the load, within the models' limit
+        (:func:`bearingload.validate.misalignment`; an array: one per case, as a batch group
+        of rows gives it). [°]
     clearance : float or array_like, optional
         Radial internal clearance G_r instead of the bearing's (an array solves every one in
         the same vectorised call). [mm]
@@ -341,7 +324,8 @@ def solve_on_bearing(
     """
     from bearingload.models.combined import solve_combined
 
-    check_misalignment(misalignment)
+    if misalignment is not None:  # (refused before the bearing's kind, as the model refuses it)
+        validate.misalignment(misalignment)
     if b.kind != "ball":
         raise InputError(
             "bearing",
@@ -381,11 +365,11 @@ def solve_on_bearing(
         tilted = "moment_cross"
     if tilted is None and tilt_radius is not None and misalignment is None:
         tilted = "tilt_radius"  # a free ring: a short lever alone can tilt it beyond the model
-    if tilted is not None and tilt > MISALIGNMENT_MAX:
+    if tilted is not None and tilt > validate.MISALIGNMENT_MAX:
         raise InputError(
             tilted,
-            f"tilts the inner ring by {tilt:.3g}°, beyond ±{MISALIGNMENT_MAX:g}°: the balls "
-            "would ride over the groove shoulders, which the model does not describe",
+            f"tilts the inner ring by {tilt:.3g}°, beyond ±{validate.MISALIGNMENT_MAX:g}°: the "
+            "balls would ride over the groove shoulders, which the model does not describe",
         )
     return r
 
