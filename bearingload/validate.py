@@ -247,6 +247,35 @@ def clearance_beyond_ball(clearance: float, ball_diameter: float, element: str =
     )
 
 
+#: The smallest ball diameter D_w over the pitch diameter d_m taken: the catalogue's ball sets
+#: (``bearings/data/ball_sets.csv``) span D_w/d_m = 0.062 to 0.33; a ball below a sixtieth of
+#: the smallest is no bearing's (and one of 1e-300 mm overflows the Hertz contact). [-]
+BALL_RATIO_MIN = 1e-3
+
+
+def ball_size_fits(ball_diameter: Any, pitch_diameter: Any) -> Any:
+    """Where a ball of diameter D_w [mm] is one a bearing of pitch diameter d_m [mm] has: D_w >=
+    :data:`BALL_RATIO_MIN` d_m (floats, or arrays broadcast together). A diameter not > 0 passes:
+    its own rule refuses it."""
+    return (
+        (ball_diameter <= 0.0)
+        | (pitch_diameter <= 0.0)
+        | (ball_diameter >= BALL_RATIO_MIN * pitch_diameter)
+    )
+
+
+def ball_too_small(ball_diameter: float, pitch_diameter: float, element: str = "") -> InputError:
+    """The refusal of a ball diameter not :func:`ball_size_fits` to its pitch diameter [mm];
+    ``element``: of an array, its first such element."""
+    return InputError(
+        "ball_diameter",
+        f"D_w = {ball_diameter:g} mm is below {BALL_RATIO_MIN:g} of the pitch diameter "
+        f"({pitch_diameter:g} mm): no ball bearing has such small balls (the catalogue's have "
+        f"0.06 to 0.33 d_m); give at least {BALL_RATIO_MIN * pitch_diameter:g} mm",
+        element=element,
+    )
+
+
 def finite_positive(name: str, value: object) -> np.ndarray:
     """Return ``value`` as a float array; every element must be a finite number > 0."""
     arr = np.asarray(value, dtype=float)

@@ -1,5 +1,6 @@
-"""The ball-bearing models refuse the clearance and the misalignment the command line refuses,
-by one rule each (bearingload.validate): |G_r| < D_w/2 and a misalignment within ±2°; their
+"""The ball-bearing models refuse the clearance, the misalignment and the ball size the command
+line refuses, by one rule each (bearingload.validate): |G_r| < D_w/2, a misalignment within ±2°
+and D_w >= 1e-3 d_m; their
 one-case fast path and their checked path refuse alike, in the same order."""
 
 from __future__ import annotations
@@ -9,8 +10,9 @@ import pytest
 
 from bearingload import validate
 from bearingload.errors import InputError
-from bearingload.models.combined import solve_combined
+from bearingload.models.combined import groove_geometry, solve_combined
 from bearingload.models.high_speed import solve_high_speed
+from bearingload.models.pair import solve_pair
 from tests.cli_helpers import error_line
 
 RING = {"ball_diameter": 7.938, "pitch_diameter": 38.5}
@@ -172,3 +174,58 @@ def test_a_rule_tests_one_number_as_an_array_of_it(rule, args, fits):
     """The one-case fast path tests plain floats with the rule the checked path uses on arrays."""
     assert rule(*args) is fits
     assert rule(*(np.array([a]) for a in args)).tolist() == [fits]
+
+
+def _pair(dw):
+    return solve_pair(
+        12,
+        100.0,
+        0.0,
+        preload=500.0,
+        contact_angle=40.0,
+        ball_diameter=dw,
+        pitch_diameter=38.5,
+        width=15.0,
+    )
+
+
+@pytest.mark.parametrize(
+    "model",
+    [
+        lambda dw: solve_combined(9, 1000.0, ball_diameter=dw, pitch_diameter=38.5),
+        lambda dw: solve_combined(
+            9, 1000.0, 100.0, ball_diameter=dw, pitch_diameter=38.5, stiffness=5.9e5
+        ),
+        lambda dw: groove_geometry(dw, 38.5, 0.52, 0.53, 0.0),
+        _pair,
+    ],
+    ids=["combined", "K given", "groove", "pair"],
+)
+@pytest.mark.parametrize("dw", [1e-300, 0.0385 * (1 - 1e-12), 1e-3])
+def test_a_ball_below_a_thousandth_of_the_pitch_diameter_is_refused_naming_it(model, dw):
+    """A ball of 1e-300 mm on a 38.5 mm pitch circle was solved to an x of about 2.9e98 mm (and
+    the command line printed approaches of 1e101 µm): below 1e-3 d_m no bearing has balls."""
+    with pytest.raises(InputError) as info:
+        model(dw)
+    assert info.value.parameter == "ball_diameter"
+    assert "give at least 0.0385 mm" in str(info.value)
+
+
+def test_a_ball_of_a_thousandth_of_the_pitch_diameter_is_solved():
+    r = solve_combined(9, 1000.0, ball_diameter=0.0385, pitch_diameter=38.5)
+    assert np.isfinite(r.q_max)
+
+
+def test_an_array_names_its_too_small_ball_by_index():
+    with pytest.raises(InputError, match=r"ball_diameter\[1\] = 1e-300 mm"):
+        solve_combined(9, 1000.0, ball_diameter=np.array([7.938, 1e-300]), pitch_diameter=38.5)
+    with pytest.raises(InputError, match=r"ball_diameter\[1\] = 1e-300 mm"):
+        _pair([7.938, 1e-300])
+
+
+def test_the_command_line_refuses_a_too_small_ball_with_the_library_message(capsys):
+    args = ("--balls", "9", "--ball-diameter", "1e-300", "--pitch-diameter", "38.5", "-F", "1kN")
+    line = error_line(capsys, "solve", *args)
+    with pytest.raises(InputError) as info:
+        solve_combined(9, 1000.0, ball_diameter=1e-300, pitch_diameter=38.5)
+    assert line == f"Error: Invalid value for '--ball-diameter': {info.value.message}"

@@ -61,7 +61,9 @@ from bearingload.bearings.resolved import (
 )
 from bearingload.errors import InputError, MissingError
 from bearingload.validate import (
+    ball_size_fits,
     ball_spacing,
+    ball_too_small,
     clearance_beyond_ball,
     clearance_fits,
     conformity,
@@ -402,6 +404,8 @@ def _ball_set(
         raise InputError("balls", f"the number of balls must be a whole number >= 1, not {balls!r}")
     if dw is not None and dm is not None:
         ball_spacing(balls, dw, dm)
+        if not ball_size_fits(dw, dm):
+            raise ball_too_small(dw, dm)
     for name in ("f_i", "f_o"):  # the ring's rule, whether or not a Hertz stiffness follows
         if given[name] is not None:
             conformity(name, given[name])

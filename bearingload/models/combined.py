@@ -530,7 +530,8 @@ def solve_combined(
         F_a (either sign). [N]
     ball_diameter, pitch_diameter : array_like
         D_w and d_m; the z balls must fit on the pitch circle, D_w <= d_m sin(180°/z)
-        (:func:`bearingload.validate.ball_spacing`, as the command line checks). [mm]
+        (:func:`bearingload.validate.ball_spacing`), and D_w >= 1e-3 d_m
+        (:func:`bearingload.validate.ball_size_fits`), as the command line checks. [mm]
     f_i, f_o : array_like, default 0.52, 0.53
         Groove conformities r_i/D_w, r_o/D_w. [-]
     clearance : array_like, default 0
@@ -822,10 +823,20 @@ def _refuse_angular_thrust(v: dict[str, Any], bad: Any, at: Callable[..., str]) 
     )
 
 
+def _first_refused(v: dict[str, Any], bad: Any, *names: str) -> list[float]:
+    """The values ``names`` of the first case refused (``bad``, the cases' shape)."""
+    i = np.unravel_index(int(np.flatnonzero(bad)[0]), bad.shape)
+    return [float(np.broadcast_to(v[k], bad.shape)[i]) for k in names]
+
+
 def _refuse_clearance(v: dict[str, Any], bad: Any, at: Callable[..., str]) -> InputError:
-    i = np.unravel_index(int(np.flatnonzero(bad)[0]), bad.shape)  # the first case refused
-    g_r, d_w = (float(np.broadcast_to(v[k], bad.shape)[i]) for k in ("clearance", "ball_diameter"))
+    g_r, d_w = _first_refused(v, bad, "clearance", "ball_diameter")
     return validate.clearance_beyond_ball(g_r, d_w, element=at("clearance", bad, "mm"))
+
+
+def _refuse_ball_size(v: dict[str, Any], bad: Any, at: Callable[..., str]) -> InputError:
+    d_w, d_m = _first_refused(v, bad, "ball_diameter", "pitch_diameter")
+    return validate.ball_too_small(d_w, d_m, element=at("ball_diameter", bad, "mm"))
 
 
 #: The rules of the inputs of :func:`solve_combined`, each input's in the order they are
@@ -883,6 +894,11 @@ _INPUT_RULES = (
     ),
 )
 _CASE_RULES = (
+    _Rule(
+        ("ball_diameter", "pitch_diameter"),
+        lambda v: validate.ball_size_fits(v["ball_diameter"], v["pitch_diameter"]),
+        _refuse_ball_size,
+    ),
     _Rule(
         ("clearance", "ball_diameter"),
         lambda v: validate.clearance_fits(v["clearance"], v["ball_diameter"]),

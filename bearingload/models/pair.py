@@ -446,6 +446,7 @@ def _plain(kind: str, named: dict[str, Any]) -> bool:
     ok = named["radial_load"] >= 0.0 and 0.0 < named["contact_angle"] <= 60.0 and fp >= 0.0
     ok = ok and (kind != "DT" or (fp == 0.0 and fa > 0.0))
     ok = ok and low < named["f_i"] < high and low < named["f_o"] < high
+    ok = ok and validate.ball_size_fits(named["ball_diameter"], named["pitch_diameter"])
     return ok and all(named.get(k, 1.0) > 0.0 for k in positive)
 
 
@@ -466,7 +467,15 @@ def _checked(kind: str, named: dict[str, Any]) -> tuple[tuple[int, ...], dict[st
             arrays[name] = validate.finite(name, value)
     validate.broadcast_shape(arrays)
     flat = np.broadcast_arrays(*(np.asarray(v, dtype=float) for v in arrays.values()))
-    return flat[0].shape, dict(zip(arrays, (a.ravel() for a in flat), strict=True))
+    cases = dict(zip(arrays, (a.ravel() for a in flat), strict=True))
+    bad = ~validate.ball_size_fits(cases["ball_diameter"], cases["pitch_diameter"])
+    if bad.any():
+        i = int(np.argmax(bad))
+        at = validate.element_at(
+            named["ball_diameter"], bad.reshape(flat[0].shape), flat[0].shape, "mm"
+        )
+        raise validate.ball_too_small(cases["ball_diameter"][i], cases["pitch_diameter"][i], at)
+    return flat[0].shape, cases
 
 
 def _check_pair(kind: str, fa: np.ndarray, fp: np.ndarray, contact_angle: Any) -> None:
