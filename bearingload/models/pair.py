@@ -443,7 +443,11 @@ def _plain(kind: str, named: dict[str, Any]) -> bool:
     low, high = validate.CONFORMITY_RANGE
     fa, fp = named["axial_load"], named["preload"]
     positive = ("width", "modulus", "stiffness", "tilt_radius")
-    ok = named["radial_load"] >= 0.0 and 0.0 < named["contact_angle"] <= 60.0 and fp >= 0.0
+    ok = (
+        named["radial_load"] >= 0.0
+        and 0.0 < named["contact_angle"] <= _comb.CONTACT_ANGLE_MAX
+        and fp >= 0.0
+    )
     ok = ok and (kind != "DT" or (fp == 0.0 and fa > 0.0))
     ok = ok and low < named["f_i"] < high and low < named["f_o"] < high
     ok = ok and validate.ball_size_fits(named["ball_diameter"], named["pitch_diameter"])
@@ -481,11 +485,12 @@ def _checked(kind: str, named: dict[str, Any]) -> tuple[tuple[int, ...], dict[st
 def _check_pair(kind: str, fa: np.ndarray, fp: np.ndarray, contact_angle: Any) -> None:
     """Refuse what a pair of this arrangement cannot take."""
     alpha = validate.finite("contact_angle", contact_angle)
-    if ((alpha <= 0) | (alpha > 60)).any():
+    bad = (alpha <= 0) | (alpha > _comb.CONTACT_ANGLE_MAX)
+    if bad.any():
         raise InputError(
             "contact_angle",
-            "must be above 0 and at most 60° for a bearing pair",
-            element=validate.element(alpha, (alpha <= 0) | (alpha > 60), "°"),
+            f"must be above 0 and at most {_comb.CONTACT_ANGLE_MAX:g}° for a bearing pair",
+            element=validate.element(alpha, bad, "°"),
         )
     if (fp < 0).any():
         raise InputError("preload", "must be >= 0 N", element=validate.element(fp, fp < 0, "N"))
