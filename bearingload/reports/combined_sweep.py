@@ -155,9 +155,9 @@ def _spread_table(s: CombinedSweep, context: str) -> Table:
         q = QUANTITIES[key]
         label = ANGULAR_LABELS.get(key, q.label) if angular else q.label
         entries += [(label, s.spread(key), shown) for shown in [q.shown(), q.also] if shown]
-    notes = ["mean: over one period (the last position, equal to the first, left out).", *NOTES]
+    notes = list(NOTES)
     if angular:  # the axial origin: the zero-load position, not the centred rings
-        notes[2] = ANGULAR_NOTE
+        notes[1] = ANGULAR_NOTE
     dynamics = _dynamics(s)
     if dynamics is not None:
         notes.append(DYNAMICS_NOTE.format(dynamics, _density(s)["ball_density"]))

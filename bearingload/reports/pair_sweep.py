@@ -35,7 +35,6 @@ from bearingload.studies.pair_sweep import BEARING_KEYS, PAIR_KEYS, PairSweep
 
 #: The note under a pair sweep.
 NOTES = (
-    "mean: over one period (the last position, equal to the first, left out).",
     "Both bearings' cages at the same angle (ball 1 of each at the cage angle, as solve "
     "--cage-angle); the pair: the shaft's displacement at the pair's centre and its stiffness "
     "(docs/angular_contact.md); L10r: the pair's, (L1^-e + L2^-e)^(-1/e), e = 10/9.",

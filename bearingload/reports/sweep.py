@@ -39,6 +39,8 @@ ROW_KEYS = (
     ("stiffness_radial", "K_r"),
 )
 INPUT_KEYS = ("balls", "load", "stiffness", "clearance", "exponent")
+#: The first note of every sweep's summary (:func:`spread_table`).
+MEAN_NOTE = "mean: over one period (the last position, equal to the first, left out)."
 #: The lives at each cage position, where asked for (--dynamic-rating, --rotating, --speed).
 LIFE_ROW_KEYS = (("reference_rating_life", "L10r"), ("reference_rating_life_hours", "L10rh"))
 
@@ -110,14 +112,12 @@ def inputs_text(s: CageSweep) -> str:
 def _spread_table(s: CageSweep, context: str) -> Table:
     keys = [*SPREADS, *(k for k, _ in _life_rows(s))]
     entries = [(QUANTITIES[k].label, s.spread(k), QUANTITIES[k].shown()) for k in keys]
-    notes = ["mean: over one period (the last position, equal to the first, left out).",
-             *_life_notes(s)]  # fmt: skip
-    return spread_table(f"Over one ball pitch ({inputs_text(s)})", entries, notes, context)
+    return spread_table(f"Over one ball pitch ({inputs_text(s)})", entries, _life_notes(s), context)
 
 
 def spread_table(title: str, entries: Any, notes: list[str], context: str) -> Table:
     """The min/mean/max/peak-to-peak table of a sweep: ``entries`` are (label, spread,
-    (unit, factor)) rows; ``context`` (if any) is the last note."""
+    (unit, factor)) rows; the note on the mean first, ``context`` (if any) last."""
     rows = [
         {"quantity": label, "min": sp.min * factor, "mean": sp.mean * factor,
          "max": sp.max * factor, "ptp": sp.peak_to_peak * factor, "unit": unit or ""}
@@ -134,7 +134,7 @@ def spread_table(title: str, entries: Any, notes: list[str], context: str) -> Ta
             Column("unit", "unit", align="left"),
         ],
         rows=rows,
-        notes=[*notes, context] if context else list(notes),
+        notes=[MEAN_NOTE, *notes, *([context] if context else [])],
     )
 
 
