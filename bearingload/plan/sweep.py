@@ -25,6 +25,7 @@ from bearingload.plan.solve import (
     in_case_terms,
     pair_speed_hint,
     radial_at_speed,
+    refuse_pair_options,
     refuse_static_dynamics,
     speed_hint,
     speed_pair_lives,
@@ -146,10 +147,7 @@ def _pair(case: Case, steps: int) -> Swept:
     from bearingload.bearings.checks import speed_findings
     from bearingload.studies.pair_sweep import pair_sweep
 
-    tilt = "the shaft's tilt follows from the loads; give 'moment'"
-    case.refuse(("misalignment",), "a bearing pair", tilt)
-    fixed = "the design contact angle fixes the geometry of an angular-contact bearing"
-    case.refuse(("clearance",), "a bearing pair", fixed + " (no clearance)")
+    refuse_pair_options(case, "exact", None)  # a misalignment, a clearance
     b = pair_bearing(case)
     args = case.pair_arguments(b.balls)
     del args["cage_angle"]
