@@ -28,8 +28,6 @@ from bearingload.units import KGF
 if TYPE_CHECKING:  # the table command without a bearing does not load the catalogue
     from bearingload.bearings.resolve import ResolvedBearing
 
-#: Young's modulus of Kuzmenko (2010), §3.4: 2.1e4 kgf/mm^2. [MPa]
-KUZMENKO2010_MODULUS = 2.1e4 * KGF
 #: Radial load of the worked example of Kuzmenko (2010), §3.3: 300 kgf. [N]
 KUZMENKO2010_LOAD = 300.0 * KGF
 
@@ -82,15 +80,6 @@ class Conditions:
 def for_bearing(bearing: ResolvedBearing, load: float, cage_angle: float | str = 0.0) -> Conditions:
     """The conditions of a bearing's ball and raceways: its Hertz K and its clearance G_r."""
     return Conditions(load, bearing.stiffness, bearing.clearance, cage_angle, 1.5, bearing)
-
-
-def kuzmenko2010_306(clearance: float) -> Conditions:
-    """Bearing 306 under the conditions of Kuzmenko (2010) §3: catalogue geometry (= the
-    paper's), E = 2.1e4 kgf/mm^2, nu = 0.3, exact Hertz stiffness, 300 kgf, G_r [mm]."""
-    from bearingload.bearings.resolve import resolve_bearing
-
-    b = resolve_bearing("306", modulus=KUZMENKO2010_MODULUS, poisson=0.3, clearance=clearance)
-    return for_bearing(b, KUZMENKO2010_LOAD)
 
 
 def balls_and_angles(z_max: int, cage_angle: float | str) -> tuple[np.ndarray, np.ndarray]:
