@@ -14,10 +14,8 @@ clearance; it is given beside. At a ``speed`` every row is solved with the ball 
 gyroscopic moment, as ``solve --speed`` solves a ball bearing). ``bearingload table life``
 prints it.
 
-The committed table ``tables/life_vs_clearance_6205`` (:func:`life_vs_clearance`) is the
-same computation for the catalogue bearing 6205 (z = 9, D_w = 7.938 mm, d_m = 38.5 mm, groove
-radii 0.52/0.53 D_w, C_r = 14 000 N, C0r = 7850 N, f0 = 13.9; see bearings.csv for the sources),
-inner ring rotating, under F_r = 1400 N alone and with F_a = 700 N, side by side.
+The committed table ``tables/life_vs_clearance_6205`` is :func:`life_vs_clearance`: the same
+computation for the catalogue bearing 6205 (docs/guide.md).
 """
 
 from __future__ import annotations
