@@ -29,6 +29,7 @@ from bearingload.plan.solve import (
     refuse_static_dynamics,
     speed_hint,
     speed_pair_lives,
+    speed_warnings,
     with_solver_findings,
 )
 
@@ -80,11 +81,10 @@ def _swept(case: Case, steps: int) -> Swept:
 def _bearing_checks(case: Case, result: Any) -> tuple[str, ...]:
     """The warnings solve gives on the bearing of the case (s0, C0, contact pressure, clearance),
     at the heaviest ball load of the sweep ``result``, and on a speed above its limiting speed."""
-    from bearingload.bearings.checks import speed_findings
     from bearingload.studies.sweep import bearing_checks
 
     b = with_ratings(resolve_bearings(case, case.stiffness_value()), case)[0]
-    return bearing_checks(b, result) + tuple(speed_findings(case.speed, b))
+    return speed_warnings(bearing_checks(b, result), case.speed, b)
 
 
 def _radial_lives(case: Case) -> tuple[Any, dict[str, Any]]:
@@ -116,7 +116,6 @@ def _radial_lives(case: Case) -> tuple[Any, dict[str, Any]]:
 def _combined(case: Case, steps: int, radial: bool) -> Swept:
     """The sweep under a combined load: one vectorised 3-D solve over the pitch (at a speed the
     ball dynamics, unless quasi-static; ``radial``: a radial case at speed, F_a = 0 set)."""
-    from bearingload.bearings.checks import speed_findings
     from bearingload.studies.combined_sweep import combined_sweep
 
     b = with_ratings(resolve_bearings(case, case.stiffness_value()), case)[0]
@@ -136,7 +135,7 @@ def _combined(case: Case, steps: int, radial: bool) -> Swept:
         raise exc.with_way_out(QUASI_STATIC_WAY if radial else STATIC_PAIR_WAY) from exc
     result = with_solver_findings(result, result.result, case.axial_load or 0.0, case.radial_load)
     if case.speed is not None:  # the hours (and the dynamics' speed); the limiting speed
-        found = (*result.warnings, *speed_findings(case.speed, b))
+        found = speed_warnings(result.warnings, case.speed, b)
         result = dataclasses.replace(result, speed=case.speed, warnings=found)
     return Swept("combined", result, bearing_context(b), b.designation)
 
@@ -144,7 +143,6 @@ def _combined(case: Case, steps: int, radial: bool) -> Swept:
 def _pair(case: Case, steps: int) -> Swept:
     """The sweep of a bearing pair (7205BDB, an arrangement): one vectorised pair solve over
     the pitch."""
-    from bearingload.bearings.checks import speed_findings
     from bearingload.studies.pair_sweep import pair_sweep
 
     refuse_pair_options(case, "exact", None)  # a misalignment, a clearance
@@ -162,7 +160,7 @@ def _pair(case: Case, steps: int) -> Swept:
             raise
         raise hinted from exc
     if case.speed is not None:  # the lives in hours (and the dynamics' speed); the limit
-        found = (*result.warnings, *speed_findings(case.speed, b))
+        found = speed_warnings(result.warnings, case.speed, b)
         result = dataclasses.replace(result, speed=case.speed, warnings=found)
     lives = speed_pair_lives(result.cases, case.speed)
     return Swept("pair", result, bearing_context(b), b.designation, lives)
