@@ -80,11 +80,12 @@ def _swept(case: Case, steps: int) -> Swept:
 
 def _bearing_checks(case: Case, result: Any) -> tuple[str, ...]:
     """The warnings solve gives on the bearing of the case (s0, C0, contact pressure, clearance),
-    at the heaviest ball load of the sweep ``result``, and on a speed above its limiting speed."""
+    at the heaviest ball load of the sweep ``result``, and on a speed above its limiting speed;
+    then the sweep's own (one loaded ball)."""
     from bearingload.studies.sweep import bearing_checks
 
     b = with_ratings(resolve_bearings(case, case.stiffness_value()), case)[0]
-    return speed_warnings(bearing_checks(b, result), case.speed, b)
+    return speed_warnings(bearing_checks(b, result), case.speed, b) + result.warnings
 
 
 def _radial_lives(case: Case) -> tuple[Any, dict[str, Any]]:

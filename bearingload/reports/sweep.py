@@ -20,7 +20,7 @@ from bearingload.reports.quantities import (
 from bearingload.reports.render import Column, Table, render
 from bearingload.reports.solve import blank
 from bearingload.studies.matrix import radial_matrix
-from bearingload.studies.sweep import CageSweep, one_ball_findings
+from bearingload.studies.sweep import CageSweep
 from bearingload.units import KGF
 
 #: Quantities summarised over the sweep (min, mean, max, peak-to-peak).
@@ -254,7 +254,7 @@ def sweep_json(s: CageSweep) -> dict[str, Any]:
         "rows": rows,
         "summary": summary,
         "units": units(keys, s.exponent) | {"stiffness_matrix": MATRIX_UNITS},
-        "warnings": sweep_warnings(s),
+        "warnings": list(s.warnings),
     } | static_at_speed(s.speed, s.exponent == 1.5)
 
 
@@ -262,9 +262,3 @@ def spreads(s: Any, keys: Any) -> dict[str, Any]:
     """The json ``summary`` of a sweep ``s``: min, mean, max and peak_to_peak of each of
     ``keys``, then the ripple order."""
     return {k: asdict(s.spread(k)) for k in keys} | {"ripple_per_cage_revolution": s.ripple_order}
-
-
-def sweep_warnings(s: CageSweep) -> list[str]:
-    """The checks of ``solve`` over the pitch: those on the bearing (``s.warnings``), then the
-    one that needs no bearing data, one loaded ball, with the cage angles where it holds."""
-    return [*s.warnings, *one_ball_findings(s.loaded_balls, s.cage_angle)]
