@@ -1,14 +1,6 @@
-"""The report of a cage sweep under a combined load (``bearingload sweep`` with ``--axial-load``...).
-
-Same layout as the radial sweep (:mod:`bearingload.reports.sweep`) and the same quantity keys as
-``solve``'s combined report (:mod:`bearingload.reports.combined`):
-
-* ``table`` / ``markdown``: min, mean, max and peak-to-peak over the pitch; the figures that do
-  not depend on the cage (ripple order, free contact angle, axial play, C_r, ISO 281's P and
-  L10); one row per cage position.
-* ``csv``: one rectangular table, one row per cage angle, the inputs as leading columns and the
-  cage-independent figures as trailing constant columns.
-* ``json``: inputs, ``rows``, ``summary``, ``units``, ``geometry`` and ``warnings``.
+"""The report of a cage sweep under a combined load (``bearingload sweep`` with ``--axial-load``...):
+the layout of the radial sweep (:mod:`bearingload.reports.sweep`) with the keys of ``solve``'s
+combined report, in the formats docs/guide.md describes.
 """
 
 from __future__ import annotations

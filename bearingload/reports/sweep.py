@@ -1,8 +1,5 @@
-"""The report of a cage sweep: a summary over one pitch and one row per cage position.
-
-Human formats (table, markdown) show lengths in µm; csv and json in mm, like every report. csv is
-one rectangular table: one row per cage angle with the case's inputs as constant columns (the
-summary is in the table and json formats).
+"""The report of a cage sweep: a summary over one pitch and one row per cage position, in the
+formats docs/guide.md ("The turning cage") describes; lengths in µm for people, mm in csv and json.
 """
 
 from __future__ import annotations
