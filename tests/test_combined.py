@@ -442,7 +442,8 @@ def test_life_clearance_study_shapes():
     some clearance helps (larger contact angles share the axial load)."""
     from bearingload.studies.life_clearance import life_vs_clearance
 
-    rows = {r["clearance_um"]: r for r in life_vs_clearance(clearances_um=(-10, 0, 30, 80))}
+    found, _, _ = life_vs_clearance(clearances_um=(-10, 0, 30, 80))
+    rows = {r["clearance_um"]: r for r in found}
     assert rows[-10]["life_r"] > rows[0]["life_r"] > rows[30]["life_r"] > rows[80]["life_r"]
     assert rows[30]["life_c"] > rows[0]["life_c"] > rows[-10]["life_c"]
 

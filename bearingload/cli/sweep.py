@@ -167,17 +167,15 @@ def _emit(swept: Swept, plot: str | None, fmt: str, output: str | None) -> None:
         from bearingload.reports.pair_sweep import pair_sweep_report
 
         text = pair_sweep_report(result, fmt, swept.lives, swept.context)
-        print_warnings(list(result.warnings), False)
     elif swept.engine == "combined":
         from bearingload.reports.combined_sweep import combined_sweep_report
 
         text = combined_sweep_report(result, fmt, swept.context)
-        print_warnings(list(result.warnings), False)
     else:
-        from bearingload.reports.sweep import sweep_report, sweep_warnings
+        from bearingload.reports.sweep import sweep_report
 
         text = sweep_report(result, fmt, swept.context)
-        print_warnings(list(sweep_warnings(result)), False)
+    print_warnings(list(result.warnings), False)
     if plot is not None:
         from bearingload.reports import plots
 

@@ -120,15 +120,22 @@ def check_rotating(case: Case, b: Any, methods: list[str]) -> None:
         return
     if case.speed is not None and b.kind == "ball" and b.has_geometry:
         return  # it names the ring of the defect frequencies at the speed
-    from bearingload.studies.reference_life import rotating_refusal
-
-    why = rotating_refusal(b, case.dynamic_rating, "exact" if "exact" in methods else methods[0])
-    if why is not None:
-        raise InputError(
-            "rotating",
-            "it names the rotating ring for the reference rating life L10r (ISO/TS 16281) and, "
-            f"with 'speed', the defect frequencies, and {why}",
-        )
+    method = "exact" if "exact" in methods else methods[0]
+    if b.kind != "ball":
+        why = f"L10r is computed for ball bearings only ({b.designation} is a {b.kind} bearing)"
+    elif not b.has_geometry:
+        why = "L10r needs the ball geometry (a bearing, or 'ball_diameter' and 'pitch_diameter')"
+    elif not (case.dynamic_rating or b.C):
+        why = "L10r needs the dynamic load rating C_r: give 'dynamic_rating'"
+    elif method != "exact":
+        why = f"L10r needs the exact ball loads ('method' {method} gives none)"
+    else:
+        return
+    raise InputError(
+        "rotating",
+        "it names the rotating ring for the reference rating life L10r (ISO/TS 16281) and, "
+        f"with 'speed', the defect frequencies, and {why}",
+    )
 
 
 def with_ratings(bearings: list[Any], case: Case) -> list[Any]:

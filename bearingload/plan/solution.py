@@ -9,9 +9,6 @@ from typing import Any
 
 from bearingload.lazy_dataclass import dataclass
 
-#: The engines of :attr:`Solution.engine`.
-ENGINES = ("radial", "combined", "pair")
-
 
 @dataclass(frozen=True, eq=False)
 class Solution:

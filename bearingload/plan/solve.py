@@ -36,8 +36,6 @@ from bearingload.plan.bearing import (
 from bearingload.plan.case import Case
 from bearingload.plan.solution import Solution
 
-#: The life of the allowable radial load C/(L/10^6)^(1/3) when none is given. [rev]
-DEFAULT_REVOLUTIONS = 36e6
 #: The way out of a radial case at speed the ball dynamics cannot solve.
 QUASI_STATIC_WAY = "'quasi_static' gives the static radial engine (the ball dynamics left out)"
 #: The way out of a speed beyond the ball dynamics' limit (n d_m).
@@ -242,14 +240,13 @@ def _radial(case: Case, methods: list[str], revolutions: float | None, spell: An
     refuse_static_dynamics(case)
     k_given = case.stiffness_value()
     service = None
-    life = DEFAULT_REVOLUTIONS if revolutions is None else revolutions
     if case.by_hand:
         refuse_unused(case)
         refuse_revolutions(revolutions, "a ring given by its balls and stiffness", "it has no C")
         cases = _by_hand(methods, case, k_given)
     else:
         from bearingload.studies.life_basis import radial_basis
-        from bearingload.studies.loaded_bearing import solve_bearing
+        from bearingload.studies.loaded_bearing import DEFAULT_REVOLUTIONS, solve_bearing
         from bearingload.studies.reference_life import with_reference_lives
 
         bearings = with_ratings(resolve_bearings(case, k_given), case)
@@ -261,6 +258,7 @@ def _radial(case: Case, methods: list[str], revolutions: float | None, spell: An
             )
         check_rotating(case, bearings[0], methods)
         angle = case.cage_angle_deg(bearings[0].balls)
+        life = DEFAULT_REVOLUTIONS if revolutions is None else revolutions
         solved = solve_bearing(bearings, case.radial_load, angle, methods, life)
         solved = with_reference_lives(solved, case.rotating or "inner")
         cases = with_speed_warnings(solved, case.speed)

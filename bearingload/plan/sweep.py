@@ -25,9 +25,11 @@ from bearingload.plan.solve import (
     in_case_terms,
     pair_speed_hint,
     radial_at_speed,
+    refuse_pair_options,
     refuse_static_dynamics,
     speed_hint,
     speed_pair_lives,
+    speed_warnings,
     with_solver_findings,
 )
 
@@ -78,12 +80,12 @@ def _swept(case: Case, steps: int) -> Swept:
 
 def _bearing_checks(case: Case, result: Any) -> tuple[str, ...]:
     """The warnings solve gives on the bearing of the case (s0, C0, contact pressure, clearance),
-    at the heaviest ball load of the sweep ``result``, and on a speed above its limiting speed."""
-    from bearingload.bearings.checks import speed_findings
+    at the heaviest ball load of the sweep ``result``, and on a speed above its limiting speed;
+    then the sweep's own (one loaded ball)."""
     from bearingload.studies.sweep import bearing_checks
 
     b = with_ratings(resolve_bearings(case, case.stiffness_value()), case)[0]
-    return bearing_checks(b, result) + tuple(speed_findings(case.speed, b))
+    return speed_warnings(bearing_checks(b, result), case.speed, b) + result.warnings
 
 
 def _radial_lives(case: Case) -> tuple[Any, dict[str, Any]]:
@@ -115,7 +117,6 @@ def _radial_lives(case: Case) -> tuple[Any, dict[str, Any]]:
 def _combined(case: Case, steps: int, radial: bool) -> Swept:
     """The sweep under a combined load: one vectorised 3-D solve over the pitch (at a speed the
     ball dynamics, unless quasi-static; ``radial``: a radial case at speed, F_a = 0 set)."""
-    from bearingload.bearings.checks import speed_findings
     from bearingload.studies.combined_sweep import combined_sweep
 
     b = with_ratings(resolve_bearings(case, case.stiffness_value()), case)[0]
@@ -135,7 +136,7 @@ def _combined(case: Case, steps: int, radial: bool) -> Swept:
         raise exc.with_way_out(QUASI_STATIC_WAY if radial else STATIC_PAIR_WAY) from exc
     result = with_solver_findings(result, result.result, case.axial_load or 0.0, case.radial_load)
     if case.speed is not None:  # the hours (and the dynamics' speed); the limiting speed
-        found = (*result.warnings, *speed_findings(case.speed, b))
+        found = speed_warnings(result.warnings, case.speed, b)
         result = dataclasses.replace(result, speed=case.speed, warnings=found)
     return Swept("combined", result, bearing_context(b), b.designation)
 
@@ -143,13 +144,9 @@ def _combined(case: Case, steps: int, radial: bool) -> Swept:
 def _pair(case: Case, steps: int) -> Swept:
     """The sweep of a bearing pair (7205BDB, an arrangement): one vectorised pair solve over
     the pitch."""
-    from bearingload.bearings.checks import speed_findings
     from bearingload.studies.pair_sweep import pair_sweep
 
-    tilt = "the shaft's tilt follows from the loads; give 'moment'"
-    case.refuse(("misalignment",), "a bearing pair", tilt)
-    fixed = "the design contact angle fixes the geometry of an angular-contact bearing"
-    case.refuse(("clearance",), "a bearing pair", fixed + " (no clearance)")
+    refuse_pair_options(case, "exact", None)  # a misalignment, a clearance
     b = pair_bearing(case)
     args = case.pair_arguments(b.balls)
     del args["cage_angle"]
@@ -164,7 +161,7 @@ def _pair(case: Case, steps: int) -> Swept:
             raise
         raise hinted from exc
     if case.speed is not None:  # the lives in hours (and the dynamics' speed); the limit
-        found = (*result.warnings, *speed_findings(case.speed, b))
+        found = speed_warnings(result.warnings, case.speed, b)
         result = dataclasses.replace(result, speed=case.speed, warnings=found)
     lives = speed_pair_lives(result.cases, case.speed)
     return Swept("pair", result, bearing_context(b), b.designation, lives)

@@ -1,17 +1,8 @@
 """The report of ``bearingload solve`` under a combined load: one or more cases in every format.
 
 Cases come from :mod:`bearingload.studies.combined_bearing` (one per clearance); every quantity is
-named through :mod:`bearingload.reports.quantities`. Same layout as the radial report
-(:mod:`bearingload.reports.solve`):
-
-* ``table`` / ``markdown``: the answer first (Q_max, loaded balls, the largest contact pressures
-  and the static safety, contact angles, displacements and tilt, the lives), one column per
-  case; then every ball's angle, contact angle, approach and load; the geometry and the source
-  of each value only with ``show_geometry``.
-* ``csv``: one row per case (inputs among the columns), the keys of the JSON case as the radial
-  report writes them (``misalignment`` blank when not given); with ``per_ball`` one row per ball.
-* ``json``: ``{"cases": [...], "units": {...}, "bearing": {...}}``; every case carries the
-  per-ball arrays ``ball_angles``, ``contact_angles``, ``ball_approaches``, ``ball_loads``.
+named through :mod:`bearingload.reports.quantities`. The layout and formats of the radial report
+(:mod:`bearingload.reports.solve`, docs/guide.md), each ball with its contact angle too.
 """
 
 from __future__ import annotations

@@ -1,14 +1,6 @@
-"""The report of a cage sweep under a combined load (``bearingload sweep`` with ``--axial-load``...).
-
-Same layout as the radial sweep (:mod:`bearingload.reports.sweep`) and the same quantity keys as
-``solve``'s combined report (:mod:`bearingload.reports.combined`):
-
-* ``table`` / ``markdown``: min, mean, max and peak-to-peak over the pitch; the figures that do
-  not depend on the cage (ripple order, free contact angle, axial play, C_r, ISO 281's P and
-  L10); one row per cage position.
-* ``csv``: one rectangular table, one row per cage angle, the inputs as leading columns and the
-  cage-independent figures as trailing constant columns.
-* ``json``: inputs, ``rows``, ``summary``, ``units``, ``geometry`` and ``warnings``.
+"""The report of a cage sweep under a combined load (``bearingload sweep`` with ``--axial-load``...):
+the layout of the radial sweep (:mod:`bearingload.reports.sweep`) with the keys of ``solve``'s
+combined report, in the formats docs/guide.md describes.
 """
 
 from __future__ import annotations
@@ -155,9 +147,9 @@ def _spread_table(s: CombinedSweep, context: str) -> Table:
         q = QUANTITIES[key]
         label = ANGULAR_LABELS.get(key, q.label) if angular else q.label
         entries += [(label, s.spread(key), shown) for shown in [q.shown(), q.also] if shown]
-    notes = ["mean: over one period (the last position, equal to the first, left out).", *NOTES]
+    notes = list(NOTES)
     if angular:  # the axial origin: the zero-load position, not the centred rings
-        notes[2] = ANGULAR_NOTE
+        notes[1] = ANGULAR_NOTE
     dynamics = _dynamics(s)
     if dynamics is not None:
         notes.append(DYNAMICS_NOTE.format(dynamics, _density(s)["ball_density"]))

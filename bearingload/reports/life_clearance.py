@@ -25,7 +25,6 @@ from bearingload.studies.life_clearance import (
     RADIAL_LOAD,
     LifeAgainstClearance,
     life_vs_clearance,
-    life_vs_clearance_basic,
 )
 
 #: The row quantities and their short headers in the human table.
@@ -255,10 +254,10 @@ def life_document(t: LifeAgainstClearance, service: Sequence[Any] | None = None)
 
 def life_vs_clearance_table() -> Table:
     """The committed table ``tables/life_vs_clearance_6205``."""
-    rows = life_vs_clearance()
-    basic = life_vs_clearance_basic()
-    b, f0, p = basic["bearing"], basic["f0"], basic["equivalent_load"]
-    assert b.C is not None and b.C0 is not None
+    rows, radial, combined = life_vs_clearance()
+    b, p = combined.bearing, combined.equivalent_load
+    assert b.C is not None and b.C0 is not None and b.geometry is not None and p is not None
+    f0 = b.geometry.f0
     best_r = max(rows, key=lambda r: r["life_r"])
     best_c = max(rows, key=lambda r: r["life_c"])
     columns = [
@@ -284,9 +283,9 @@ def life_vs_clearance_table() -> Table:
         f"Longest life: F_r alone at G_r = {best_r['clearance_um']:g} um, "
         f"F_r + F_a at G_r = {best_c['clearance_um']:g} um (of the rows).",
         f"ISO 281:2007 basic life, blind to clearance: F_r alone (C_r/F_r)^3 = "
-        f"{basic['life_radial']:.5g}; F_r + F_a: P = X F_r + Y F_a = "
+        f"{radial.rating_life:.5g}; F_r + F_a: P = X F_r + Y F_a = "
         f"{p:.5g} N (5.2, Table 3, f0 = {f0:g}, C0r = {b.C0:g} N), "
-        f"(C_r/P)^3 = {basic['life_combined']:.5g} (10^6 rev).",
+        f"(C_r/P)^3 = {combined.rating_life:.5g} (10^6 rev).",
         "Question after Oswald, Zaretsky & Poplawski, NASA TM-2012-217115 (2012).",
     ]
     return Table("L10r against radial internal clearance, 6205", columns, rows, notes)

@@ -1,16 +1,5 @@
-"""The report of ``bearingload solve`` for a pair of angular-contact ball bearings (DB, DF, DT).
-
-* ``table`` / ``markdown``: quantity | pair | bearing 1 | bearing 2 | unit (the loads applied to
-  the shaft in the pair's column, those each bearing carries in its own), then every ball's
-  angle, contact angle and load in both bearings; the geometry only with ``show_geometry``.
-* ``json``: ``{"cases": [pair], "units", "bearing", "warnings"}``: the pair's keys (its inputs,
-  displacement, ``stiffness_matrix``, lift-off, lives; with the service options its speed,
-  reliability, lives in hours and modified lives) and ``bearings``, one object per bearing
-  with the keys of a single bearing's case (:mod:`bearingload.reports.combined`).
-* ``csv``: one rectangular table, one row per bearing (``bearing_number`` 1, 2): the bearing's
-  keys of a single combined case, and the pair's values in every row under ``pair_...``
-  columns (``pair_x``, ``pair_stiffness_axial``, ``pair_rating_life_hours``, ...) beside the pair's inputs; with
-  ``per_ball`` one row per ball of each bearing.
+"""The report of ``bearingload solve`` for a pair of angular-contact ball bearings (DB, DF, DT):
+the terminal table, json and csv that docs/angular_contact.md ("Outputs") describes.
 """
 
 from __future__ import annotations

@@ -1,12 +1,5 @@
-"""The report of ``table life`` of a bearing pair (``table life 7205BDB --preloads ...``).
-
-* ``table`` / ``markdown``: one row per preload: each bearing's Q_max and loaded balls, the
-  pair's stiffness, lift-off load and lives (with ``--speed`` L10r in hours too).
-* ``csv``: solve's pair csv at every preload (one row per bearing, ``bearing_number`` 1 and 2,
-  the pair's values in ``pair_...`` columns): the same columns and values.
-* ``json``: the pair's inputs, ``model`` (solve's: at a speed the ball dynamics or the static
-  model named), ``rows`` (the pair's keys of solve's json and ``bearings``, each bearing's),
-  ``units``, ``warnings``.
+"""The report of ``table life`` of a bearing pair (``table life 7205BDB --preloads ...``): one
+row per preload in every format, as docs/angular_contact.md ("table life") describes it.
 """
 
 from __future__ import annotations

@@ -1,14 +1,5 @@
-"""The report of a cage sweep of a bearing pair (``bearingload sweep 7205BDB --preload ...``).
-
-* ``table`` / ``markdown``: min, mean, max and peak-to-peak over the pitch of the shaft's
-  displacement, the pair's stiffness, each bearing's Q_max and loaded balls and the pair's L10r;
-  then one row per cage position.
-* ``csv``: one rectangular table, the csv of ``solve 7205BDB --cage-angle A --format csv`` at
-  every cage position (one row per bearing, ``bearing_number`` 1 and 2, the pair's values in
-  ``pair_...`` columns): the same columns and values.
-* ``json``: the pair's inputs, ``steps``, ``rows`` (at each position the pair's keys of
-  ``solve``'s json case and ``bearings``, each bearing's keys), ``summary``, ``units``,
-  ``warnings``.
+"""The report of a cage sweep of a bearing pair (``bearingload sweep 7205BDB --preload ...``):
+its summary, rows, csv and json as docs/angular_contact.md ("Pairs in sweep") describes them.
 """
 
 from __future__ import annotations
@@ -35,7 +26,6 @@ from bearingload.studies.pair_sweep import BEARING_KEYS, PAIR_KEYS, PairSweep
 
 #: The note under a pair sweep.
 NOTES = (
-    "mean: over one period (the last position, equal to the first, left out).",
     "Both bearings' cages at the same angle (ball 1 of each at the cage angle, as solve "
     "--cage-angle); the pair: the shaft's displacement at the pair's centre and its stiffness "
     "(docs/angular_contact.md); L10r: the pair's, (L1^-e + L2^-e)^(-1/e), e = 10/9.",

@@ -302,14 +302,6 @@ def _matrix_quantities() -> list[Quantity]:
 QUANTITIES |= {q.key: q for q in _matrix_quantities()}
 
 
-def quantity(key: str) -> Quantity:
-    """The quantity of ``key``; a KeyError names the known keys."""
-    try:
-        return QUANTITIES[key]
-    except KeyError:
-        raise KeyError(f"unknown quantity {key!r}; known: {', '.join(QUANTITIES)}") from None
-
-
 #: Quantities without a unit or digits that are numbers all the same (counts, a ball's number,
 #: a number as printed): set to the right as every number is; the other ones are text (left).
 COUNTS = frozenset(

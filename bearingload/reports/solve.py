@@ -1,19 +1,9 @@
 """The report of ``bearingload solve``: one or more solved cases in every format.
 
 Cases come from :mod:`bearingload.studies.loaded_bearing` (one per model and per clearance);
-every quantity is named through :mod:`bearingload.reports.quantities`.
-
-* ``table`` / ``markdown``: the answer first (Q_max, k, loaded balls, load zone, deflection,
-  stiffness, contact pressure, static safety, the lives L10 and L10r), one column per case; then every ball's load; the geometry
-  of a catalogue bearing and the source of each value only with ``show_geometry``.
-* ``csv``: one rectangular table, one row per case, the case's inputs among the columns: every
-  key of the JSON case (a blank cell where it is null) but the per-ball arrays, the stiffness
-  matrix and the texts (``model``, ``ignores``, ``warnings``: on stderr); with ``per_ball`` one
-  row per ball instead.
-* ``json``: ``{"cases": [...], "units": {...}, "warnings": [...]}`` with every quantity of every
-  case (per-ball arrays and the case's ``warnings`` included), ``"warnings"`` the findings of all
-  cases (each once; empty when all is well), and ``"bearing"`` (geometry with sources) for a
-  catalogue bearing.
+every quantity is named through :mod:`bearingload.reports.quantities`. The formats are those
+docs/guide.md describes (csv: one row per case, or per ball; json: ``cases``, ``units``,
+``warnings`` and, for a catalogue bearing, ``bearing``).
 """
 
 from __future__ import annotations

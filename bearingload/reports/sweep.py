@@ -1,8 +1,5 @@
-"""The report of a cage sweep: a summary over one pitch and one row per cage position.
-
-Human formats (table, markdown) show lengths in µm; csv and json in mm, like every report. csv is
-one rectangular table: one row per cage angle with the case's inputs as constant columns (the
-summary is in the table and json formats).
+"""The report of a cage sweep: a summary over one pitch and one row per cage position, in the
+formats docs/guide.md ("The turning cage") describes; lengths in µm for people, mm in csv and json.
 """
 
 from __future__ import annotations
@@ -20,7 +17,7 @@ from bearingload.reports.quantities import (
 from bearingload.reports.render import Column, Table, render
 from bearingload.reports.solve import blank
 from bearingload.studies.matrix import radial_matrix
-from bearingload.studies.sweep import CageSweep, one_ball_findings
+from bearingload.studies.sweep import CageSweep
 from bearingload.units import KGF
 
 #: Quantities summarised over the sweep (min, mean, max, peak-to-peak).
@@ -39,6 +36,8 @@ ROW_KEYS = (
     ("stiffness_radial", "K_r"),
 )
 INPUT_KEYS = ("balls", "load", "stiffness", "clearance", "exponent")
+#: The first note of every sweep's summary (:func:`spread_table`).
+MEAN_NOTE = "mean: over one period (the last position, equal to the first, left out)."
 #: The lives at each cage position, where asked for (--dynamic-rating, --rotating, --speed).
 LIFE_ROW_KEYS = (("reference_rating_life", "L10r"), ("reference_rating_life_hours", "L10rh"))
 
@@ -110,14 +109,12 @@ def inputs_text(s: CageSweep) -> str:
 def _spread_table(s: CageSweep, context: str) -> Table:
     keys = [*SPREADS, *(k for k, _ in _life_rows(s))]
     entries = [(QUANTITIES[k].label, s.spread(k), QUANTITIES[k].shown()) for k in keys]
-    notes = ["mean: over one period (the last position, equal to the first, left out).",
-             *_life_notes(s)]  # fmt: skip
-    return spread_table(f"Over one ball pitch ({inputs_text(s)})", entries, notes, context)
+    return spread_table(f"Over one ball pitch ({inputs_text(s)})", entries, _life_notes(s), context)
 
 
 def spread_table(title: str, entries: Any, notes: list[str], context: str) -> Table:
     """The min/mean/max/peak-to-peak table of a sweep: ``entries`` are (label, spread,
-    (unit, factor)) rows; ``context`` (if any) is the last note."""
+    (unit, factor)) rows; the note on the mean first, ``context`` (if any) last."""
     rows = [
         {"quantity": label, "min": sp.min * factor, "mean": sp.mean * factor,
          "max": sp.max * factor, "ptp": sp.peak_to_peak * factor, "unit": unit or ""}
@@ -134,7 +131,7 @@ def spread_table(title: str, entries: Any, notes: list[str], context: str) -> Ta
             Column("unit", "unit", align="left"),
         ],
         rows=rows,
-        notes=[*notes, context] if context else list(notes),
+        notes=[MEAN_NOTE, *notes, *([context] if context else [])],
     )
 
 
@@ -254,7 +251,7 @@ def sweep_json(s: CageSweep) -> dict[str, Any]:
         "rows": rows,
         "summary": summary,
         "units": units(keys, s.exponent) | {"stiffness_matrix": MATRIX_UNITS},
-        "warnings": sweep_warnings(s),
+        "warnings": list(s.warnings),
     } | static_at_speed(s.speed, s.exponent == 1.5)
 
 
@@ -262,9 +259,3 @@ def spreads(s: Any, keys: Any) -> dict[str, Any]:
     """The json ``summary`` of a sweep ``s``: min, mean, max and peak_to_peak of each of
     ``keys``, then the ripple order."""
     return {k: asdict(s.spread(k)) for k in keys} | {"ripple_per_cage_revolution": s.ripple_order}
-
-
-def sweep_warnings(s: CageSweep) -> list[str]:
-    """The checks of ``solve`` over the pitch: those on the bearing (``s.warnings``), then the
-    one that needs no bearing data, one loaded ball, with the cage angles where it holds."""
-    return [*s.warnings, *one_ball_findings(s.loaded_balls, s.cage_angle)]

@@ -4,10 +4,9 @@ The numbers come from :func:`bearingload.studies.tables.over_z`; this module onl
 Every table carries its conditions: in the title for people, as leading columns in csv and as
 fields in json.
 
-* ``table_k`` / ``table_kq``: the exact model's k (K_Q) and loaded balls n over z (Kuzmenko 2010,
-  Table 1; Kuzmenko & Sabadash 2014, Table 2.2).
-* ``design_table(name, z_max, cond, method)``: the same by any registered model, or by every
-  model side by side with its error against the exact answer (``method="all"``).
+``design_table(name, z_max, cond, method)``: k (K_Q) and loaded balls n over z (Kuzmenko 2010,
+Table 1; Kuzmenko & Sabadash 2014, Table 2.2) by any registered model, or by every model side by
+side with its error against the exact answer (``method="all"``).
 """
 
 from __future__ import annotations
@@ -51,16 +50,6 @@ def design_table(
     else:
         table = _one_method(name, method, z_max, cond)
     return table
-
-
-def table_k(z_max: int = 30, cond: Conditions | None = None) -> Table:
-    """Table 1 of Kuzmenko (2010): ``k = Q_max/F_r`` and loaded balls ``n`` for z = 1..z_max."""
-    return design_table("k", z_max, cond)
-
-
-def table_kq(z_max: int = 30, cond: Conditions | None = None) -> Table:
-    """Table 2.2 of Kuzmenko & Sabadash (2014): ``K_Q = Q_max/Q_mean = k z/2`` for z = 1..z_max."""
-    return design_table("kq", z_max, cond)
 
 
 def _conditions(cond: Conditions, method: str | None) -> list[tuple[Column, Any]]:

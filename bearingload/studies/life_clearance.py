@@ -14,10 +14,8 @@ clearance; it is given beside. At a ``speed`` every row is solved with the ball 
 gyroscopic moment, as ``solve --speed`` solves a ball bearing). ``bearingload table life``
 prints it.
 
-The committed table ``tables/life_vs_clearance_6205`` (:func:`life_vs_clearance`) is the
-same computation for the catalogue bearing 6205 (z = 9, D_w = 7.938 mm, d_m = 38.5 mm, groove
-radii 0.52/0.53 D_w, C_r = 14 000 N, C0r = 7850 N, f0 = 13.9; see bearings.csv for the sources),
-inner ring rotating, under F_r = 1400 N alone and with F_a = 700 N, side by side.
+The committed table ``tables/life_vs_clearance_6205`` is :func:`life_vs_clearance`: the same
+computation for the catalogue bearing 6205 (docs/guide.md).
 """
 
 from __future__ import annotations
@@ -322,20 +320,18 @@ def _groove_side(r: Any, g: np.ndarray) -> list[str]:
 
 
 def life_vs_clearance(
-    designation: str = DESIGNATION,
-    radial_load: float = RADIAL_LOAD,
-    axial_load: float = AXIAL_LOAD,
     clearances_um: tuple[float, ...] = CLEARANCES_UM,
-) -> list[dict[str, float]]:
+) -> tuple[list[dict[str, float]], LifeAgainstClearance, LifeAgainstClearance]:
     """Rows of G_r [um], alpha_0 [°], loaded balls, Q_max [N], L10r [10^6 rev] for F_r alone and
     for F_r with F_a, and L10r relative to zero clearance: two :func:`life_against_clearance`
-    side by side (inner ring rotating, a ball under the load)."""
+    side by side (inner ring rotating, a ball under the load); and those two, whose ISO 281 P
+    and (C_r/P)^3, blind to the clearance, the committed table states beside its rows."""
     from bearingload.bearings.resolve import resolve_bearing
 
-    b = resolve_bearing(designation, clearance=0.0)
+    b = resolve_bearing(DESIGNATION, clearance=0.0)
     g = np.asarray(clearances_um, dtype=float) * 1e-3
-    radial = life_against_clearance(b, radial_load, 0.0, clearances=g)
-    combined = life_against_clearance(b, radial_load, axial_load, clearances=g)
+    radial = life_against_clearance(b, RADIAL_LOAD, 0.0, clearances=g)
+    combined = life_against_clearance(b, RADIAL_LOAD, AXIAL_LOAD, clearances=g)
     rows = []
     for i, gr in enumerate(clearances_um):
         rows.append(
@@ -353,25 +349,4 @@ def life_vs_clearance(
                 "ratio_c": float(combined.relative_life[i]),
             }
         )
-    return rows
-
-
-def life_vs_clearance_basic(designation: str = DESIGNATION) -> dict[str, Any]:
-    """What the committed table states beside its rows: the bearing, ISO 281:2007's equivalent
-    load ``P = X F_r + Y F_a`` [N] (5.2, Table 3) with its ``f0`` and the basic lives
-    ``(C_r/F_r)^3`` and ``(C_r/P)^3`` [10^6 rev], blind to the clearance."""
-    from bearingload.bearings.life import equivalent_load_deep_groove, rating_life
-    from bearingload.bearings.resolve import resolve_bearing
-
-    b = resolve_bearing(designation, clearance=0.0)
-    assert b.C is not None and b.C0 is not None and b.geometry is not None
-    f0 = b.geometry.f0
-    assert f0 is not None
-    p = float(equivalent_load_deep_groove(RADIAL_LOAD, AXIAL_LOAD, b.C0, f0))
-    return {
-        "bearing": b,
-        "f0": f0,
-        "equivalent_load": p,
-        "life_radial": float(rating_life(b.C, RADIAL_LOAD)),
-        "life_combined": float(rating_life(b.C, p)),
-    }
+    return rows, radial, combined

@@ -39,21 +39,6 @@ def has_reference_life(b: ResolvedBearing, dynamic_rating: float | None = None) 
     return b.kind == "ball" and b.has_geometry and bool(dynamic_rating or b.C)
 
 
-def rotating_refusal(b: ResolvedBearing, dynamic_rating: float | None, method: str) -> str | None:
-    """Why a rotating ring cannot be named for ``b`` solved by ``method`` (no L10r is computed
-    for it to select the ring of), or None: a roller bearing, no ball geometry, no C_r, or no
-    exact ball loads."""
-    if b.kind != "ball":
-        return f"L10r is computed for ball bearings only ({b.designation} is a {b.kind} bearing)"
-    if not b.has_geometry:
-        return "L10r needs the ball geometry (a bearing, or 'ball_diameter' and 'pitch_diameter')"
-    if not (dynamic_rating or b.C):
-        return "L10r needs the dynamic load rating C_r: give 'dynamic_rating'"
-    if method != "exact":
-        return f"L10r needs the exact ball loads ('method' {method} gives none)"
-    return None
-
-
 def with_reference_lives(cases: Sequence[LoadedCase], rotating: str) -> list[LoadedCase]:
     """The radial path's cases (:func:`bearingload.studies.loaded_bearing.solve_bearing`) with
     the reference rating life L10r from the exact model's ball loads, every ball at the contact

@@ -82,8 +82,8 @@ class CageSweep:
     speed : float or None
         Shaft speed for the lives in hours. [rpm]
     warnings : tuple of str
-        The checks of ``solve`` on the bearing over the pitch (:func:`bearing_checks`); the
-        one-loaded-ball finding, per cage angle, is the report's.
+        solve's finding of one loaded ball, with the cage angles where it holds
+        (:func:`one_ball_findings`); the plan puts the checks on a bearing before it.
     """
 
     balls: int
@@ -150,7 +150,7 @@ def bearing_checks(bearing: Any, s: CageSweep) -> tuple[str, ...]:
     (:func:`bearingload.bearings.checks.case_warnings`: static safety s0 = C0/F_r and F_r above
     C0, the contact pressure, the clearance beyond ISO 5753-1's classes or the preload beyond
     this package's bound), over the pitch: the pressure at its heaviest ball load. The finding
-    of one loaded ball is left to the report, which names the cage angles where it holds.
+    of one loaded ball is the sweep's own (:func:`one_ball_findings`, with the cage angles).
 
     Parameters
     ----------
@@ -326,6 +326,7 @@ def sweep(
         reference_rating_life=(
             None if life is None else np.asarray(life(k * np.maximum(delta, 0.0) ** m))
         ),
+        warnings=tuple(one_ball_findings(r.loaded_balls, angles)),
     )
 
 

@@ -5,12 +5,6 @@ z = 1-30 at zero clearance with a ball under the load; Table 2.2 of Kuzmenko & S
 lists ``K_Q = k z/2`` for the same cases. :func:`over_z` computes them (and the other models'
 answers) under the papers' conditions by default or under any load, stiffness, clearance and cage
 angle; :mod:`bearingload.reports.tables` lays them out.
-
-The bearing-306 conditions of Kuzmenko (2010, §3): F_r = 300 kgf, G_r = 20 µm (Delta = 10 µm per
-side) and 100 µm (worn, Delta = 50 µm), the paper's geometry D_w 12.3 mm, d_m 51 mm,
-f_i = f_o = 0.515 (groove radius 1.03 D_w/2) and E = 2.1e4 kgf/mm^2, nu = 0.3 -- but the exact
-Hertz stiffness of that geometry (about 4.0e5 N/mm^1.5), not the paper's 4700 kgf/mm^1.5 (see
-:func:`bearingload.contact.hertz.kuzmenko2010_ball_constant`).
 """
 
 from __future__ import annotations
@@ -23,15 +17,9 @@ import numpy as np
 from bearingload.lazy_dataclass import dataclass
 from bearingload.models.case import Case, Result
 from bearingload.models.registry import get_method
-from bearingload.units import KGF
 
 if TYPE_CHECKING:  # the table command without a bearing does not load the catalogue
     from bearingload.bearings.resolve import ResolvedBearing
-
-#: Young's modulus of Kuzmenko (2010), §3.4: 2.1e4 kgf/mm^2. [MPa]
-KUZMENKO2010_MODULUS = 2.1e4 * KGF
-#: Radial load of the worked example of Kuzmenko (2010), §3.3: 300 kgf. [N]
-KUZMENKO2010_LOAD = 300.0 * KGF
 
 
 @dataclass(frozen=True)
@@ -82,15 +70,6 @@ class Conditions:
 def for_bearing(bearing: ResolvedBearing, load: float, cage_angle: float | str = 0.0) -> Conditions:
     """The conditions of a bearing's ball and raceways: its Hertz K and its clearance G_r."""
     return Conditions(load, bearing.stiffness, bearing.clearance, cage_angle, 1.5, bearing)
-
-
-def kuzmenko2010_306(clearance: float) -> Conditions:
-    """Bearing 306 under the conditions of Kuzmenko (2010) §3: catalogue geometry (= the
-    paper's), E = 2.1e4 kgf/mm^2, nu = 0.3, exact Hertz stiffness, 300 kgf, G_r [mm]."""
-    from bearingload.bearings.resolve import resolve_bearing
-
-    b = resolve_bearing("306", modulus=KUZMENKO2010_MODULUS, poisson=0.3, clearance=clearance)
-    return for_bearing(b, KUZMENKO2010_LOAD)
 
 
 def balls_and_angles(z_max: int, cage_angle: float | str) -> tuple[np.ndarray, np.ndarray]:
