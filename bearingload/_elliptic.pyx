@@ -27,13 +27,9 @@ cdef int STEPS = AGM_STEPS
 cdef double PI = 3.141592653589793
 #: Newton steps of the ellipticity at the most (it settles in 2 to 5; _elliptic.pxd). [-]
 HERTZ_STEPS = NEWTON_STEPS
-cdef double EPS = 2.220446049250313e-16
-#: The largest ratio of curvature sums of a point contact (contact.hertz.MAX_CURVATURE_RATIO). [-]
-MAX_RATIO = 1e15
-cdef double RATIO_MAX = MAX_RATIO
-#: Below this ln(B/A) the ellipticity is the series of ``near_circle``, not Newton's. [-]
-NEAR_CIRCLE_LOG_RATIO = 1e-6
-cdef double NEAR_CIRCLE = NEAR_CIRCLE_LOG_RATIO
+#: The largest ratio of curvature sums of a point contact (contact.hertz.MAX_CURVATURE_RATIO;
+#: ``admissible``, _elliptic.pxd). [-]
+MAX_RATIO = max_ratio()
 
 #: ln(kappa)/ln(B/A) as a Chebyshev series in u = 2 ln(1 + L)/ln(1 + ln 1e15) - 1, fitted to
 #: the exact solution by tools/fit_hertz_start.py (start within 2.6e-7; only a start).
@@ -60,7 +56,7 @@ cdef enum:
     START_TERMS = 17
 cdef double START[START_TERMS]
 START[:] = START_CHEBYSHEV
-cdef double START_LOG_MAX = log1p(log(MAX_RATIO))
+cdef double START_LOG_MAX = log1p(log(max_ratio()))
 
 
 cdef inline void agm_end(double a, double rest, double p, double m, double *ell) noexcept nogil:
@@ -153,51 +149,6 @@ cdef double ellipticity_start(double target) noexcept nogil:
     return target * (u * b1 - b2 + START[0])
 
 
-cdef void p_m(double t, bint node, double *p, double *m) noexcept nogil:
-    """p = e^-2t and m = -expm1(-2t) (``elliptic``'s bits); at a ``node`` of the core's curve
-    beyond t = 0.35, m = 1 - p (rounded once, p < 1/2: as close)."""
-    p[0] = exp(-2.0 * t)
-    m[0] = 1.0 - p[0] if node and t > 0.35 else -expm1(-2.0 * t)
-
-
-cdef bint newton_last(double target, double *t, double *previous, const double *ell, bint node,
-                      double *out) noexcept nogil:
-    """One Newton step at ``t`` on the residual ln((E - pK)/(K - E)) + 2t - ln(B/A), the
-    integrals there ``ell`` (``agm``): True where it was the last (``out`` set: t, K, E,
-    dt/d(target), p), else t and the step before, ``previous``, moved on.
-
-    The slope: dK/dm = n/(2p), dE/dm = -d/2, dm/dt = 2p (n m = E - pK, d m = K - E); at a
-    ``node`` of the core's curve the same in one quotient (only a step's). Near the circle
-    (``t < 0.01``) it cancels; there it is ``3/2 + 3 t^2/64`` (the series), good to ``t^4``.
-    Once a step is below 1e-9 and 1e-3 of the one before (quadratic convergence seen), it is
-    the last: the next error is below ``step^2``, and K, E, p follow it to first order
-    (``dK/dt = (E - pK)/m``, ``dE/dt = -p (K - E)/m``), exact to ``step^2``. A step that
-    no longer moves t, or grows, ends at t."""
-    cdef double k_int = ell[0], n = ell[2], d = ell[3], m = ell[4], p = ell[5], dk, de, df, step
-    if node:
-        df = (p * (2.0 * k_int - d - 3.0 * n) * d - (n - p * d) * n) / (m * n * d) + 2.0
-    else:
-        dk = n / (2.0 * p) * 2.0 * p
-        de = -d / 2.0 * 2.0 * p
-        df = ((((de + 2.0 * p * k_int - p * dk) - n * 2.0 * p) / m) / n
-              - (((dk - de) - d * 2.0 * p) / m) / d + 2.0)
-    if t[0] < 0.01:
-        df = 1.5 + 0.046875 * t[0] * t[0]
-    step = (log(n / d) + 2.0 * t[0] - target) / df
-    out[3], out[4] = 1.0 / df, p
-    if fabs(step) <= 1e-9 * t[0] and fabs(step) <= 1e-3 * previous[0]:
-        out[0], out[1], out[2] = t[0] - step, ell[0] - ell[2] * step, ell[1] + ell[5] * ell[3] * step
-        out[4] += p * (2.0 * step)
-        return True
-    if fabs(min(max(t[0] - step, 0.5 * t[0]), target) - t[0]) <= 4 * EPS * t[0] or fabs(
-            step) >= previous[0]:
-        out[0], out[1], out[2] = t[0], ell[0], ell[1]
-        return True
-    previous[0] = fabs(step)
-    t[0] = min(max(t[0] - step, 0.5 * t[0]), target)
-    return False
-
-
 cdef int log_kappa(double target, double t, double previous, double *out, bint node,
                    int steps) noexcept nogil:
     """``out`` = t = ln kappa for ``ln(B/A) = target > 0``, K and E there, dt/d(target) (at the
@@ -216,43 +167,24 @@ cdef int log_kappa(double target, double t, double previous, double *out, bint n
     return 0
 
 
-cdef bint near_circle(double target, double *got) noexcept nogil:
-    """True and ``got`` of ``ellipticity`` where ``target = ln(B/A) < NEAR_CIRCLE``, by the series of the
-    residual, ``ln(B/A) = 3t/2 + t^3/64 + O(t^5)``: ``t = t0 - t0^3/96``, ``t0 = 2 target/3``
-    (its next term ~t^5, far below t's rounding). There the residual's rounding (~eps, not
-    relative to t) is above Newton's stopping test (a step below 1e-9 t): below ln(B/A) ~ 4e-15
-    Newton did not settle."""
-    cdef double t0 = target / 1.5, t, p, m
-    cdef double ell[6]
-    if not target < NEAR_CIRCLE:
-        return False
-    t = t0 - t0 * t0 * t0 / 96.0
-    p_m(t, False, &p, &m)
-    agm(p, m, ell)
-    got[0], got[1], got[2], got[3], got[4] = t, ell[0], ell[1], 1.0 / (1.5 + 0.046875 * t * t), p
-    return True
-
-
-cdef bint admissible(double small, double large) noexcept nogil:
-    """A point contact of curvature sums ``small <= large``: ``small > 0``, ``large <= MAX_RATIO
-    small`` (contact.hertz refuses the rest)."""
-    return small > 0 and large <= RATIO_MAX * small
+cdef int solve_ellipticity(double target, int steps, double *got) noexcept nogil:
+    """``got`` = t, K, E, dt/d(target), p for ``target = ln(B/A) > 0``: ``near_circle``, else at
+    most ``steps`` of Newton (``log_kappa``) from the fitted start; 0 where it did not settle."""
+    if near_circle(target, got):
+        return 1
+    return log_kappa(target, min(ellipticity_start(target), target), INFINITY, got, False, steps)
 
 
 cdef int ellipticity(double small, double large, int steps, double *got) noexcept nogil:
     """``got`` = t, K, E, dt/d(target), p of one contact of curvature sums ``small <= large``
-    (the circle: 0, pi/2, pi/2, -, 1), by ``log_kappa`` from the fitted start; 0 outside a
-    point contact (``small > 0``, ``large <= MAX_RATIO small``) or where Newton did not settle."""
-    cdef double target
+    (the circle: 0, pi/2, pi/2, -, 1; else ``solve_ellipticity`` at ln(B/A) = ln large - ln
+    small); 0 outside a point contact (``admissible``) or where Newton did not settle."""
     got[0], got[1], got[2], got[4] = 0.0, PI / 2, PI / 2, 1.0
     if not admissible(small, large):
         return 0
     if small == large:
         return 1
-    target = log(large) - log(small)
-    if near_circle(target, got):
-        return 1
-    return log_kappa(target, min(ellipticity_start(target), target), INFINITY, got, False, steps)
+    return solve_ellipticity(log(large) - log(small), steps, got)
 
 
 cdef void coefficients(const double *got, double *out) noexcept nogil:

@@ -32,8 +32,8 @@ from libc.stdlib cimport free, malloc
 from libc.string cimport memcpy, memset
 
 from bearingload._elliptic cimport (NEWTON_STEPS, admissible, agm, agm2, contact_stiffness,
-                                    ellipticity, ellipticity_start, in_series, log_kappa,
-                                    near_circle, newton_last, p_m)
+                                    ellipticity_start, in_series, log_kappa, near_circle,
+                                    newton_last, p_m, solve_ellipticity)
 from bearingload.models._core cimport (NODES, Balls, Case, Dual, Dyn, Limits, Loads, Point, Ring,
                                       Shaft, ShaftState, Speed, SpeedLimits)
 
@@ -226,37 +226,36 @@ cdef inline void track_push(Track *tr, double target, const double *got) noexcep
 
 cdef int contacts(const double *rho, Track *tr, double *got) noexcept nogil:
     """``got[5k:]`` = t, K, E, dt/d(target), p of contact k (curvature sums ``rho[2k:]``) of a
-    ball (the circle: 0, pi/2, pi/2, -, 1): before the tracks begin, ``ellipticity`` (from the
-    fitted start), then Newton from ``track_start``, the first steps of the two contacts at once
-    (in one loop: ``agm2``); each kept in ``tr[k]``. 0 where hertz.py would refuse or Newton did
-    not settle."""
+    ball (the circle: 0, pi/2, pi/2, -, 1): before the tracks begin, ``ellipticity``'s solve
+    (from the fitted start), then Newton from ``track_start``, the first steps of the two
+    contacts at once (in one loop: ``agm2``), near the circle its series; each kept in
+    ``tr[k]``. 0 where hertz.py would refuse or Newton did not settle."""
     cdef double target[2]
     cdef double t[2]
     cdef double p[2]
     cdef double m[2]
     cdef double ell[12]
     cdef double small, large, previous
-    cdef bint node = tr[0].n > 0 or tr[1].n > 0, live[2]
+    cdef bint node = tr[0].n > 0 or tr[1].n > 0, live[2]  # live: Newton from the track next
     cdef int k
     for k in range(2):
         small, large = min(rho[2 * k], rho[2 * k + 1]), max(rho[2 * k], rho[2 * k + 1])
-        live[k] = small != large
-        if not node:
-            if not ellipticity(small, large, NEWTON_STEPS, &got[5 * k]):
-                return 0
-            if live[k]:
-                track_push(&tr[k], log(large) - log(small), &got[5 * k])
-            continue
         got[5 * k], got[5 * k + 1], got[5 * k + 2], got[5 * k + 4] = 0.0, PI / 2, PI / 2, 1.0
         if not admissible(small, large):
             return 0
-        p[k], m[k], target[k] = 0.5, 0.5, log(large / small)
-        if live[k] and near_circle(target[k], &got[5 * k]):
-            track_push(&tr[k], target[k], &got[5 * k])
-            live[k] = False
-        elif live[k]:
+        live[k], p[k], m[k] = small != large, 0.5, 0.5
+        if not live[k]:
+            continue
+        target[k] = log(large / small) if node else log(large) - log(small)
+        if node and not near_circle(target[k], &got[5 * k]):
             t[k] = track_start(&tr[k], target[k])
             p_m(t[k], True, &p[k], &m[k])
+            continue
+        # K_0's contact (``ellipticity``'s solve, its bits) or a node's next to the circle
+        if not (node or solve_ellipticity(target[k], NEWTON_STEPS, &got[5 * k])):
+            return 0
+        track_push(&tr[k], target[k], &got[5 * k])
+        live[k] = False
     if not node:
         return 1
     agm2(p, m, ell)
