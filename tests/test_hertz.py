@@ -632,3 +632,15 @@ def test_scalar_start_fit_is_within_its_stated_error():
     exact = np.log(np.asarray(hertz.hertz_coefficients(1.0, np.exp(ell)).kappa, dtype=float))
     start = np.array([_elliptic.start(float(v)) for v in ell])
     assert np.max(np.abs(start / exact - 1)) < 3e-7
+
+
+@pytest.mark.parametrize("excess", [2.0**-52, 1e-14, 1e-10, 9.9e-7, 1.01e-6, 1e-4])
+def test_next_to_the_circle_matches_mpmath(excess):
+    """Either side of ln(B/A) = 1e-6, where the ellipticity switches from the circle's series
+    (t = t0 - t0^3/96) to Newton (bearingload/_elliptic.pxd, near_circle): both to rounding,
+    for one contact and in an array; a ratio one ulp above 1 settles (Newton alone did not)."""
+    ratio = 1.0 + excess
+    refs = mp_hertz(mp.mpf(ratio))
+    for got in (hertz_coefficients(1.0, ratio), hertz_coefficients(np.ones(2), ratio)):
+        for value, ref in zip(got, refs, strict=True):
+            assert rel(np.ravel(value)[0], ref) < 4e-16
