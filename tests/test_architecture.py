@@ -3,12 +3,14 @@
 Every ``import`` and ``from ... import`` of every module under ``bearingload/`` is read from its
 syntax tree, including the imports inside functions (which hide a circle from the interpreter
 but not from a reader), and resolved to the module it names (``from bearingload.models import
-equilibrium`` is the module ``bearingload.models.equilibrium``).
+equilibrium`` is the module ``bearingload.models.equilibrium``). The compiled modules (``.pyx``)
+are modules of the graph too, their ``import`` and ``cimport`` lines read from their text.
 """
 
 from __future__ import annotations
 
 import ast
+import re
 from pathlib import Path
 
 import pytest
@@ -26,6 +28,7 @@ LAYERS = {
     "units": 1,
     "validate": 1,
     "numerics": 1,
+    "_elliptic": 1,  # compiled: the AGM and one Hertz point contact, for numerics, contact, models
     "contact": 2,
     "bearings": 3,
     "models": 3,
@@ -44,10 +47,10 @@ LAYERS = {
 KNOWN_CIRCLES: set[frozenset[str]] = set()
 
 
-def _modules() -> dict[str, tuple[Path, bool]]:
-    """Module name -> (file, is a package's __init__)."""
+def _modules(compiled: bool = False) -> dict[str, tuple[Path, bool]]:
+    """Module name -> (file, is a package's __init__); the ``.pyx`` ones too if ``compiled``."""
     out = {}
-    for path in PACKAGE.rglob("*.py"):
+    for path in [*PACKAGE.rglob("*.py"), *(PACKAGE.rglob("*.pyx") if compiled else [])]:
         parts = list(path.relative_to(PACKAGE.parent).with_suffix("").parts)
         is_package = parts[-1] == "__init__"
         if is_package:
@@ -62,13 +65,24 @@ def _resolve(name: str, modules: dict[str, tuple[Path, bool]]) -> str | None:
     return name or None
 
 
+#: ``from bearingload.x cimport/import ...`` and ``(c)import bearingload.x`` of a .pyx file.
+_PYX_IMPORT = re.compile(r"^\s*(?:from|c?import)\s+(bearingload(?:\.\w+)*)", re.MULTILINE)
+
+
 def import_graph() -> dict[str, set[str]]:
     """Module -> the package's modules it imports anywhere in its file."""
-    modules = _modules()
+    modules = _modules(compiled=True)
     graph: dict[str, set[str]] = {}
     for name, (path, is_package) in modules.items():
         base = name.split(".") if is_package else name.split(".")[:-1]
         targets: set[str] = set()
+        if path.suffix == ".pyx":  # Cython: not Python's syntax; its imports by their lines
+            for w in _PYX_IMPORT.findall(path.read_text(encoding="utf-8")):
+                target = _resolve(w, modules)
+                if target is not None and target != name:
+                    targets.add(target)
+            graph[name] = targets
+            continue
         for node in ast.walk(ast.parse(path.read_text(encoding="utf-8"))):
             if isinstance(node, ast.Import):
                 wanted = [a.name for a in node.names]
@@ -144,6 +158,16 @@ def test_no_longer_circle():
 
 def test_every_part_has_a_layer():
     assert {_part(m) for m in import_graph()} <= set(LAYERS)
+
+
+def test_the_graph_sees_the_compiled_modules():
+    """The Hertz point contact in C (``_elliptic.pyx``) sits below contact/ and the models, which
+    both use it (contact.hertz imports it, the core cimports it)."""
+    graph = import_graph()
+    assert "bearingload._elliptic" in graph["bearingload.contact.hertz"]
+    assert "bearingload._elliptic" in graph["bearingload.models._core"]
+    assert "bearingload._elliptic" in graph["bearingload.numerics"]
+    assert graph["bearingload._elliptic"] == set()
 
 
 @pytest.mark.parametrize("lower", ["studies", "papers", "quality", "models", "bearings"])

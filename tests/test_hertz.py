@@ -587,18 +587,19 @@ def test_module_doctests():
 
 
 # ---------------------------------------------------------------------------------------------
-# The scalar fast path (pure Python, bearingload.contact._hertz_scalar) against the vectorised path
+# One contact from Python floats against the same contact in an array (bearingload._elliptic)
 # ---------------------------------------------------------------------------------------------
 def test_scalar_path_agrees_with_the_vectorised_path():
-    """One contact from Python and the same contact in an array: to ~1e-14, curvature ratios
-    1 ... 1e15 (the arrays take the vectorised Illinois solver on Carlson's integrals)."""
+    """One contact from Python and the same contact in an array, curvature ratios 1 ... 1e15:
+    the coefficients are one C function's, the same bits; the dimensional values and the ball
+    stiffness of an array come from numpy's formulas (np.cbrt, not pow), to ~1e-14."""
     ratios = np.concatenate([[1.0, 1.0 + 1e-12, 1.0 + 1e-6], np.geomspace(1.001, 1e15, 150)])
     for ratio in ratios:
         one = hertz.hertz_coefficients(0.3, 0.3 * float(ratio))
         many = hertz.hertz_coefficients(np.array([0.3]), 0.3 * ratio)
         for a, b in zip(one, many, strict=True):
-            assert np.ndim(a) == 0 and not isinstance(a, np.ndarray)
-            assert float(a) == pytest.approx(float(b[0]), rel=1e-14)
+            assert type(a) is float
+            assert a == float(b[0])
     for dw, dm, fi, fo in [
         (12.3, 51.0, 0.515, 0.515),
         (3.969, 10.731 * 2, 0.52, 0.53),
@@ -625,9 +626,21 @@ def test_scalar_path_refuses_like_the_vectorised_path():
 
 def test_scalar_start_fit_is_within_its_stated_error():
     """The Chebyshev start of tools/fit_hertz_start.py: within 3e-7 of the exact ln(kappa)."""
-    from bearingload.contact import _hertz_scalar
+    from bearingload import _elliptic
 
     ell = np.linspace(1e-6, np.log(hertz.MAX_CURVATURE_RATIO), 997)
     exact = np.log(np.asarray(hertz.hertz_coefficients(1.0, np.exp(ell)).kappa, dtype=float))
-    start = np.array([_hertz_scalar.start(float(v)) for v in ell])
+    start = np.array([_elliptic.start(float(v)) for v in ell])
     assert np.max(np.abs(start / exact - 1)) < 3e-7
+
+
+@pytest.mark.parametrize("excess", [2.0**-52, 1e-14, 1e-10, 9.9e-7, 1.01e-6, 1e-4])
+def test_next_to_the_circle_matches_mpmath(excess):
+    """Either side of ln(B/A) = 1e-6, where the ellipticity switches from the circle's series
+    (t = t0 - t0^3/96) to Newton (bearingload/_elliptic.pxd, near_circle): both to rounding,
+    for one contact and in an array; a ratio one ulp above 1 settles (Newton alone did not)."""
+    ratio = 1.0 + excess
+    refs = mp_hertz(mp.mpf(ratio))
+    for got in (hertz_coefficients(1.0, ratio), hertz_coefficients(np.ones(2), ratio)):
+        for value, ref in zip(got, refs, strict=True):
+            assert rel(np.ravel(value)[0], ref) < 4e-16

@@ -1,9 +1,11 @@
 """Fit the start of the scalar Hertz solver: ln(kappa)/ln(B/A) as a Chebyshev series.
 
-The scalar path (bearingload/contact/_hertz_scalar.py) starts Newton from this fit and refines
-to rounding level; the fit only saves iterations. Regenerate with
-``python tools/fit_hertz_start.py`` and paste the printed tuple into ``START_CHEBYSHEV``;
-tests/test_hertz.py checks the pasted coefficients start within 1e-6 of the exact solution.
+The Hertz point contact in C (bearingload/_elliptic.pyx: contact.hertz and the compiled core's
+K_0) starts Newton from this fit and refines to rounding level; the fit only saves iterations.
+Regenerate with ``python tools/fit_hertz_start.py`` and paste the printed tuple into
+``START_CHEBYSHEV`` of bearingload/_elliptic.pyx (the one copy; the build turns it into the C
+table the start sums), then rebuild; tests/test_hertz.py checks the pasted coefficients start
+within 3e-7 of the exact solution.
 
 Variable: u = 2 ln(1 + L)/ln(1 + L_max) - 1, L = ln(B/A) in (0, ln 1e15]; fitted: t/L.
 """

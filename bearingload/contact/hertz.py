@@ -31,7 +31,10 @@ A note on scipy: ``scipy.special.ellipk(m)`` and ``ellipe(m)`` take the *paramet
 terminal calculation 0.18 s): it evaluates ``K``, ``E`` and ``(K - E)/m`` by the
 arithmetic-geometric mean in ``kappa`` (``p = 1 - m = 1/kappa^2``), in a form that keeps full
 precision both near the circle (``kappa -> 1``, where ``K - E`` cancels) and for very long
-ellipses (``m -> 1``).
+ellipses (``m -> 1``). One contact, one C function (:mod:`bearingload._elliptic`, which the
+compiled core's Hertz stiffness curve shares): Newton on the ellipticity equation from a fitted
+start, then the coefficients and the stiffness; an array is a C loop over its elements, each the
+same bits as alone.
 
 Line contact (rollers) uses Palmgren's empirical steel formula, see
 :func:`palmgren_line_deflection`.
@@ -48,9 +51,8 @@ from typing import TYPE_CHECKING, Any, NamedTuple
 
 import numpy as np
 
-from bearingload import validate
+from bearingload import _elliptic, validate
 from bearingload.constants import BALL_EXPONENT, ROLLER_EXPONENT, STEEL_MODULUS, STEEL_POISSON
-from bearingload.contact import _hertz_scalar
 from bearingload.errors import ConvergenceError
 from bearingload.numerics import elliptic_integrals, scalar_out
 
@@ -67,10 +69,10 @@ POINT_EXPONENT = BALL_EXPONENT
 LINE_EXPONENT = ROLLER_EXPONENT
 #: Beyond this ratio of curvature sums the contact is a line contact for every practical
 #: purpose (kappa ~ 1e7); the point-contact solution is refused rather than returned inexact.
-MAX_CURVATURE_RATIO = 1e15
+MAX_CURVATURE_RATIO = _elliptic.MAX_RATIO
 
-_MAX_ITERATIONS = 100
-_TOLERANCE = 4.0 * np.finfo(float).eps
+#: Newton steps of the ellipticity at the most (bearingload/_elliptic.pyx). [-]
+_MAX_ITERATIONS = _elliptic.HERTZ_STEPS
 
 
 class HertzCoefficients(NamedTuple):
@@ -137,8 +139,9 @@ class BallContacts(NamedTuple):
 def _plain(*values: object) -> list[float] | None:
     """The values as finite Python floats when every one is a plain real scalar, else None.
 
-    The scalar fast path (:mod:`bearingload.contact._hertz_scalar`) takes such calls; anything
-    else, or anything it would refuse, goes through the vectorised path (which says why).
+    The scalar fast path (one contact straight to :mod:`bearingload._elliptic`) takes such
+    calls; anything else, or anything it would refuse, goes through the array path (which says
+    why).
     """
     out = []
     for v in values:
@@ -160,11 +163,8 @@ def _scalar_modulus(E: float, nu: float) -> float | None:
     return 1.0 / ((1.0 - nu**2) / E + (1.0 - nu**2) / E)
 
 
-def _scalar_pair(rho_x: float, rho_y: float) -> tuple[float, float] | None:
-    small, large = min(rho_x, rho_y), max(rho_x, rho_y)
-    if not (small > 0 and large <= MAX_CURVATURE_RATIO * small):
-        return None
-    return small, large
+def _sorted(rho_x: float, rho_y: float) -> tuple[float, float]:
+    return min(rho_x, rho_y), max(rho_x, rho_y)
 
 
 def reduced_modulus(
@@ -263,53 +263,23 @@ def _curvature_pair(rho_x: ArrayLike, rho_y: ArrayLike) -> tuple[np.ndarray, np.
     return small, large
 
 
-def _log_ratio_residual(t: np.ndarray, log_ratio: np.ndarray) -> np.ndarray:
-    """ln(B/A as a function of ln kappa = t) - ln(B/A wanted); increasing in t."""
+def _not_settled(log_ratio: np.ndarray, t: np.ndarray) -> ConvergenceError:
+    """The error of the contacts whose Newton did not settle (their last ln kappa ``t``)."""
     _, _, n, d, _, _ = elliptic_integrals(t)
-    return np.log(n) - np.log(d) + 2.0 * t - log_ratio
-
-
-def _solve_log_kappa(log_ratio: np.ndarray) -> np.ndarray:
-    """Solve ln kappa for ln(B/A) > 0, vectorised Illinois (bracketed regula falsi).
-
-    The root lies in [0, ln(B/A)] because 1 <= kappa <= B/A. Each iteration updates all
-    unconverged elements at once.
-    """
-    a = np.zeros_like(log_ratio)
-    fa = -log_ratio  # residual at kappa = 1, where B/A = 1 exactly
-    b = log_ratio.copy()
-    fb = _log_ratio_residual(b, log_ratio)
-    active = np.ones(log_ratio.shape, dtype=bool)
-    for _ in range(_MAX_ITERATIONS):
-        idx = np.nonzero(active)
-        ai, fai, bi, fbi, li = a[idx], fa[idx], b[idx], fb[idx], log_ratio[idx]
-        c = bi - fbi * (bi - ai) / (fbi - fai)
-        c = np.clip(c, np.minimum(ai, bi), np.maximum(ai, bi))
-        fc = _log_ratio_residual(c, li)
-        swap = fc * fbi < 0
-        a[idx] = np.where(swap, bi, ai)
-        fa[idx] = np.where(swap, fbi, 0.5 * fai)
-        b[idx] = c
-        fb[idx] = fc
-        width = np.abs(b[idx] - a[idx])
-        done = (fc == 0) | (width <= _TOLERANCE * np.maximum(1.0, np.abs(c)))
-        active[idx] = ~done
-        if not active.any():
-            return b
-    worst = float(np.max(np.abs(fb[active])))
-    raise ConvergenceError(
-        "Hertz ellipticity (Illinois)",
+    residual = np.abs(np.log(n) - np.log(d) + 2.0 * t - log_ratio) / log_ratio
+    return ConvergenceError(
+        "Hertz ellipticity (Newton)",
         _MAX_ITERATIONS,
-        worst,
-        {"B/A": np.exp(log_ratio[active])},
+        float(np.max(residual)),
+        {"B/A": np.exp(log_ratio)},
     )
 
 
 def hertz_coefficients(rho_x: ArrayLike, rho_y: ArrayLike) -> HertzCoefficients:
     """Dimensionless Hertz solution for the curvature sums rho_x, rho_y.
 
-    Solves the transcendental Hertz equation for the ellipticity kappa = a/b (vectorised,
-    to about 1e-15 relative) and returns kappa, Harris's a*, b*, delta* and K(e), E(e).
+    Solves the transcendental Hertz equation for the ellipticity kappa = a/b (each element
+    alone, to rounding level) and returns kappa, Harris's a*, b*, delta* and K(e), E(e).
     Equal curvature sums give the circle exactly: kappa = 1, K = E = pi/2, a* = b* =
     delta* = 1.
 
@@ -336,29 +306,14 @@ def hertz_coefficients(rho_x: ArrayLike, rho_y: ArrayLike) -> HertzCoefficients:
     (1.0, 1.0)
     """
     plain = _plain(rho_x, rho_y)
-    pair = None if plain is None else _scalar_pair(*plain)
-    if pair is not None:
-        try:
-            return HertzCoefficients(*(float(v) for v in _hertz_scalar.coefficients(*pair)))
-        except ArithmeticError:
-            pass  # the vectorised solver below
+    one = None if plain is None else _elliptic.point(*_sorted(*plain))
+    if one is not None:
+        return HertzCoefficients(*one)
     small, large = _curvature_pair(rho_x, rho_y)
-    log_ratio = np.log(large) - np.log(small)
-    t = np.zeros_like(log_ratio)
-    elliptic = log_ratio > 0
-    if elliptic.any():
-        t[elliptic] = _solve_log_kappa(log_ratio[elliptic])
-    kappa = np.exp(t)
-    k_int, e_int, _, _, _, _ = elliptic_integrals(t)
-    circle = ~elliptic
-    k_int = np.where(circle, 0.5 * math.pi, k_int)
-    e_int = np.where(circle, 0.5 * math.pi, e_int)
-    a_star = np.cbrt(2.0 * kappa**2 * e_int / math.pi)
-    b_star = np.cbrt(2.0 * e_int / (math.pi * kappa))
-    delta_star = 2.0 * k_int / math.pi * np.cbrt(math.pi / (2.0 * kappa**2 * e_int))
-    return HertzCoefficients(
-        *(scalar_out(v) for v in (kappa, a_star, b_star, delta_star, k_int, e_int))
-    )
+    values, failed = _elliptic.points(small, large, _MAX_ITERATIONS)
+    if failed.any():
+        raise _not_settled(np.log(large[failed]) - np.log(small[failed]), values[0][failed])
+    return HertzCoefficients(*(scalar_out(v) for v in values))
 
 
 def ellipticity(rho_x: ArrayLike, rho_y: ArrayLike) -> Any:
@@ -435,19 +390,18 @@ def point_contact(
 def _point_contact_scalar(
     rho_x: Any, rho_y: Any, load: Any, E: Any, nu: Any, e_star: Any
 ) -> PointContact | None:
-    """:func:`point_contact` for plain scalars in pure Python (same formulas), else None."""
+    """:func:`point_contact` for plain scalars (same formulas, the contact in C), else None."""
     plain = _plain(rho_x, rho_y, load, E, nu, 1.0 if e_star is None else e_star)
     if plain is None:
         return None
     rx, ry, q, e, n, es_given = plain
-    pair = _scalar_pair(rx, ry)
     es = _scalar_modulus(e, n) if e_star is None else (es_given if es_given > 0 else None)
-    if pair is None or es is None or not q >= 0:
+    if es is None or not q >= 0:
         return None
-    try:
-        kappa, a_star, b_star, d_star, _, _ = _hertz_scalar.coefficients(*pair)
-    except ArithmeticError:
+    one = _elliptic.point(*_sorted(rx, ry))
+    if one is None:
         return None
+    kappa, a_star, b_star, d_star, _, _ = one
     sum_rho = rx + ry
     x = (1.5 * q / (sum_rho * es)) ** (1.0 / 3.0)
     values = (
@@ -604,7 +558,8 @@ def ball_stiffness(
 def _ball_stiffness_scalar(
     D_w: Any, d_m: Any, f_i: Any, f_o: Any, E: Any, nu: Any, e_star: Any
 ) -> BallStiffness | None:
-    """:func:`ball_stiffness` for plain scalars in pure Python (same formulas), else None."""
+    """:func:`ball_stiffness` for plain scalars, else None: both contacts and the series in C
+    (:mod:`bearingload._elliptic`, the compiled core's K_0 too: the same bits)."""
     plain = _plain(D_w, d_m, f_i, f_o, E, nu, 1.0 if e_star is None else e_star)
     if plain is None:
         return None
@@ -615,15 +570,10 @@ def _ball_stiffness_scalar(
     es = _scalar_modulus(e, n) if e_star is None else (es_given if es_given > 0 else None)
     inner = (2.0 * dm / (dw * (dm - dw)), (2.0 * fi - 1.0) / (fi * dw))
     outer = (2.0 * dm / (dw * (dm + dw)), (2.0 * fo - 1.0) / (fo * dw))
-    if es is None or _scalar_pair(*inner) is None or _scalar_pair(*outer) is None:
+    if es is None:
         return None
-    try:
-        k_i = _hertz_scalar.stiffness(*inner, es)
-        k_o = _hertz_scalar.stiffness(*outer, es)
-    except ArithmeticError:
-        return None
-    ball = (k_i ** (-1.0 / POINT_EXPONENT) + k_o ** (-1.0 / POINT_EXPONENT)) ** (-POINT_EXPONENT)
-    return BallStiffness(float(k_i), float(k_o), float(ball))
+    three = _elliptic.ball(*inner, *outer, es)
+    return None if three is None else BallStiffness(*three)
 
 
 def palmgren_line_deflection(

@@ -31,7 +31,9 @@ from libc.stdint cimport int64_t
 from libc.stdlib cimport free, malloc
 from libc.string cimport memcpy, memset
 
-from bearingload._elliptic cimport agm, agm2
+from bearingload._elliptic cimport (NEWTON_STEPS, admissible, agm, agm2, contact_stiffness,
+                                    ellipticity_start, in_series, log_kappa, near_circle,
+                                    newton_last, p_m, solve_ellipticity)
 from bearingload.models._core cimport (NODES, Balls, Case, Dual, Dyn, Limits, Loads, Point, Ring,
                                       Shaft, ShaftState, Speed, SpeedLimits)
 
@@ -171,94 +173,15 @@ cdef inline double curve_slope(const Case *cs, double ca, double cam1) noexcept 
 
 # ------------------------------------------------------- the Hertz stiffness curve's nodes
 #
-# K(alpha) of both contacts in series at the nodes of the curve, for one geometry: the equations
-# of bearingload.contact.hertz.ball_stiffness (its scalar path, _hertz_scalar: the ellipticity
-# by Newton on the AGM's elliptic integrals, ``agm`` of bearingload/_elliptic.pyx, the one C
-# copy of numerics.elliptic_integrals; the contact stiffness, both in series); K_0 in its order
-# (its bits), the nodes from one node to the next (each start within 1e-10: one AGM a contact).
-# Inputs hertz.py refuses (a curvature ratio beyond 1e15, Poisson's ratio outside (-1, 0.5]) or
-# an ellipticity not settled come back as a status: the caller lets hertz.py say why.
+# K(alpha) of both contacts in series at the nodes of the curve, for one geometry: the point
+# contact of bearingload/_elliptic.pyx (the one C copy of contact.hertz's: the ellipticity by
+# Newton on the AGM's elliptic integrals, the contact stiffness, both in series); K_0 by its
+# single-contact solve (hertz.ball_stiffness's bits), the nodes from one node to the next (each
+# start within 1e-10: one AGM a contact) by its Newton steps. Inputs hertz.py refuses (a
+# curvature ratio beyond 1e15, Poisson's ratio outside (-1, 0.5]) or an ellipticity not settled
+# come back as a status: the caller lets hertz.py say why.
 
-from bearingload.contact._hertz_scalar import START_CHEBYSHEV
-
-# the limits of hertz.py: Newton steps, the largest ratio of curvature sums; the fitted start's
-# Chebyshev coefficients and the log1p(ln 1e15) it scales by
-cdef enum:
-    HERTZ_STEPS = 30
-    START_TERMS = 17
-cdef double HERTZ_EPS = 2.220446049250313e-16
-cdef double HERTZ_MAX_RATIO = 1e15
 cdef double PI = 3.141592653589793
-cdef double START[START_TERMS]
-START[:] = START_CHEBYSHEV
-cdef double START_LOG_MAX = log1p(log(1e15))
-
-
-cdef double ellipticity_start(double target) noexcept nogil:
-    """The fitted start ``t ~ L g(u)`` (Clenshaw's recurrence; _hertz_scalar.start)."""
-    cdef double u = 2.0 * log1p(target) / START_LOG_MAX - 1.0, u2, b1 = 0.0, b2 = 0.0, b0
-    cdef int i
-    u2 = u + u
-    for i in range(START_TERMS - 1, 0, -1):
-        b0 = u2 * b1 - b2 + START[i]
-        b2 = b1
-        b1 = b0
-    return target * (u * b1 - b2 + START[0])
-
-
-cdef inline void p_m(double t, bint node, double *p, double *m) noexcept nogil:
-    """p = e^-2t and m = -expm1(-2t) (``elliptic``'s bits); at a ``node`` of the curve beyond
-    t = 0.35, m = 1 - p (rounded once, p < 1/2: as close)."""
-    p[0] = exp(-2.0 * t)
-    m[0] = 1.0 - p[0] if node and t > 0.35 else -expm1(-2.0 * t)
-
-
-cdef bint newton_last(double target, double *t, double *previous, const double *ell, bint node,
-                      double *out) noexcept nogil:
-    """One Newton step of ``log_kappa`` at ``t``, the integrals there ``ell`` (the residual
-    ln((E - pK)/(K - E)) + 2t - ln(B/A), _hertz_scalar._residual; at a ``node`` its slope, only
-    a step's, in one quotient): True where it was the last (``out`` set), else t and the step
-    before, ``previous``, moved on."""
-    cdef double k_int = ell[0], n = ell[2], d = ell[3], m = ell[4], p = ell[5], dk, de, df, step
-    if node:
-        df = (p * (2.0 * k_int - d - 3.0 * n) * d - (n - p * d) * n) / (m * n * d) + 2.0
-    else:
-        dk = n / (2.0 * p) * 2.0 * p
-        de = -d / 2.0 * 2.0 * p
-        df = ((((de + 2.0 * p * k_int - p * dk) - n * 2.0 * p) / m) / n
-              - (((dk - de) - d * 2.0 * p) / m) / d + 2.0)
-    if t[0] < 0.01:
-        df = 1.5 + 0.046875 * t[0] * t[0]
-    step = (log(n / d) + 2.0 * t[0] - target) / df
-    out[3], out[4] = 1.0 / df, p
-    if fabs(step) <= 1e-9 * t[0] and fabs(step) <= 1e-3 * previous[0]:
-        out[0], out[1], out[2] = t[0] - step, ell[0] - ell[2] * step, ell[1] + ell[5] * ell[3] * step
-        out[4] += p * (2.0 * step)
-        return True
-    if fabs(min(max(t[0] - step, 0.5 * t[0]), target) - t[0]) <= 4 * HERTZ_EPS * t[0] or fabs(
-            step) >= previous[0]:
-        out[0], out[1], out[2] = t[0], ell[0], ell[1]
-        return True
-    previous[0] = fabs(step)
-    t[0] = min(max(t[0] - step, 0.5 * t[0]), target)
-    return False
-
-
-cdef int log_kappa(double target, double t, double previous, double *out,
-                   bint node) noexcept nogil:
-    """``out`` = t = ln kappa for ``ln(B/A) = target > 0``, K and E there, dt/d(target) (at the
-    last step) and p = e^-2t (a last step's change to first order), by Newton from the start
-    ``t`` (_hertz_scalar.log_kappa, which says why each rule; ``previous`` its last step, at
-    first infinite); 0 where it did not settle."""
-    cdef double ell[6]
-    cdef double p, m
-    cdef int i
-    for i in range(HERTZ_STEPS):
-        p_m(t, node, &p, &m)
-        agm(p, m, ell)
-        if newton_last(target, &t, &previous, ell, node, out):
-            return 1
-    return 0
 
 
 cdef inline void sums(double dw, double dm, double f, double sign, double *rho) noexcept nogil:
@@ -303,36 +226,44 @@ cdef inline void track_push(Track *tr, double target, const double *got) noexcep
 
 cdef int contacts(const double *rho, Track *tr, double *got) noexcept nogil:
     """``got[5k:]`` = t, K, E, dt/d(target), p of contact k (curvature sums ``rho[2k:]``) of a
-    ball (the circle: 0, pi/2, pi/2, -, 1), its ellipticity by Newton from ``track_start``
-    (then kept in ``tr[k]``), the first steps of the two at once (at a node, the tracks begun,
-    in one loop: ``agm2``); 0 where hertz.py would refuse or Newton did not settle."""
+    ball (the circle: 0, pi/2, pi/2, -, 1): before the tracks begin, ``ellipticity``'s solve
+    (from the fitted start), then Newton from ``track_start``, the first steps of the two
+    contacts at once (in one loop: ``agm2``), near the circle its series; each kept in
+    ``tr[k]``. 0 where hertz.py would refuse or Newton did not settle."""
     cdef double target[2]
     cdef double t[2]
     cdef double p[2]
     cdef double m[2]
     cdef double ell[12]
     cdef double small, large, previous
-    cdef bint node = tr[0].n > 0 or tr[1].n > 0, live[2]
+    cdef bint node = tr[0].n > 0 or tr[1].n > 0, live[2]  # live: Newton from the track next
     cdef int k
     for k in range(2):
         small, large = min(rho[2 * k], rho[2 * k + 1]), max(rho[2 * k], rho[2 * k + 1])
         got[5 * k], got[5 * k + 1], got[5 * k + 2], got[5 * k + 4] = 0.0, PI / 2, PI / 2, 1.0
-        if not (small > 0 and large <= HERTZ_MAX_RATIO * small):
+        if not admissible(small, large):
             return 0
         live[k], p[k], m[k] = small != large, 0.5, 0.5
-        if live[k]:
-            target[k] = log(large / small) if node else log(large) - log(small)
+        if not live[k]:
+            continue
+        target[k] = log(large / small) if node else log(large) - log(small)
+        if node and not near_circle(target[k], &got[5 * k]):
             t[k] = track_start(&tr[k], target[k])
-            p_m(t[k], node, &p[k], &m[k])
-    if node:
-        agm2(p, m, ell)
+            p_m(t[k], True, &p[k], &m[k])
+            continue
+        # K_0's contact (``ellipticity``'s solve, its bits) or a node's next to the circle
+        if not (node or solve_ellipticity(target[k], NEWTON_STEPS, &got[5 * k])):
+            return 0
+        track_push(&tr[k], target[k], &got[5 * k])
+        live[k] = False
+    if not node:
+        return 1
+    agm2(p, m, ell)
     for k in range(2):
-        if not node:
-            agm(p[k], m[k], &ell[6 * k])
         previous = INFINITY
-        if live[k] and not (newton_last(target[k], &t[k], &previous, &ell[6 * k], node,
+        if live[k] and not (newton_last(target[k], &t[k], &previous, &ell[6 * k], True,
                                         &got[5 * k]) or
-                            log_kappa(target[k], t[k], previous, &got[5 * k], node)):
+                            log_kappa(target[k], t[k], previous, &got[5 * k], True, NEWTON_STEPS)):
             return 0
         if live[k]:
             track_push(&tr[k], target[k], &got[5 * k])
@@ -344,15 +275,6 @@ cdef inline double node_term(const double *rho, const double *got) noexcept nogi
     is (2 sqrt 2 pi/3) E* y^-1.5, y the sum of its two contacts' (their K^(-2/3) in series:
     delta* (sum rho)^(1/3), delta* = (2K/pi) (pi p/(2E))^(1/3), over (2/pi)^(2/3))."""
     return got[1] * cbrt(got[4] * (rho[0] + rho[1]) / got[2])
-
-
-cdef double contact_stiffness(const double *rho, double e_star, const double *got) noexcept nogil:
-    """K of one point contact from ``contact``'s t, K, E: (4 sqrt 2 / 3) E* / (delta*^1.5
-    sqrt(sum rho)) (_hertz_scalar.stiffness, its bits)."""
-    cdef double d_star = 1.0
-    if rho[0] != rho[1]:
-        d_star = 2.0 * got[1] / PI * pow(PI / (2.0 * exp(2.0 * got[0]) * got[2]), 1.0 / 3.0)
-    return 4.0 * sqrt(2.0) / 3.0 * e_star / (pow(d_star, 1.5) * sqrt(rho[0] + rho[1]))
 
 
 cdef int hertz_curve(const double *geo, const double *node_x, double *k0,
@@ -380,8 +302,8 @@ cdef int hertz_curve(const double *geo, const double *node_x, double *k0,
         y = node_term(rho, got) + node_term(rho + 2, got + 5)
         if i < 0:
             y0 = y
-            k0[0] = pow(pow(contact_stiffness(rho, e_star, got), -1.0 / 1.5) + pow(
-                contact_stiffness(rho + 2, e_star, got + 5), -1.0 / 1.5), -1.5)
+            k0[0] = in_series(contact_stiffness(rho, e_star, got),
+                              contact_stiffness(rho + 2, e_star, got + 5))
         else:
             r = y0 / y
             values[i] = (r * sqrt(r) - 1.0) / (c - 1.0)
