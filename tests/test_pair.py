@@ -309,6 +309,9 @@ def test_pair_life_combines_with_the_weibull_exponent():
         (dict(width=8.7, arrangement="DT", moment=5000.0), "width"),
         (dict(balls=2), "balls"),
         (dict(radial_load=1e6, axial_load=1e6), "axial_load"),  # a ball over the groove edge
+        # a pitch diameter not > 0 was refused as a width beyond 1000 d_m
+        (dict(pitch_diameter=0.0), "pitch_diameter"),
+        (dict(pitch_diameter=-38.5), "pitch_diameter"),
     ],
 )
 def test_refusals_name_the_parameter(kwargs, name):

@@ -373,9 +373,9 @@ def _general(
     inputs by name; ``hertz``: whether the stiffness is Hertz's, and its set-up given."""
     shape, named = given_as
     c = dict(zip(INPUT_ROWS, cols, strict=True))
-    _check_width(c, named, shape)
     groove = (c[k] for k in ("ball_diameter", "pitch_diameter", "f_i", "f_o", "contact_angle"))
-    geo = _comb.angular_geometry(*groove)
+    geo = _comb.angular_geometry(*groove)  # (before the width, which is weighed against it)
+    _check_width(c, named, shape)
     if "tilt_radius" in named:
         geo = dataclasses.replace(geo, R_i=c["tilt_radius"])
     if hertz[0] and np.count_nonzero(out[1] & _core.PairFlag.NO_CURVE):  # (the core could not)
