@@ -309,6 +309,9 @@ def test_pair_life_combines_with_the_weibull_exponent():
         (dict(width=8.7, arrangement="DT", moment=5000.0), "width"),
         (dict(balls=2), "balls"),
         (dict(radial_load=1e6, axial_load=1e6), "axial_load"),  # a ball over the groove edge
+        # a pitch diameter not > 0 was refused as a width beyond 1000 d_m
+        (dict(pitch_diameter=0.0), "pitch_diameter"),
+        (dict(pitch_diameter=-38.5), "pitch_diameter"),
     ],
 )
 def test_refusals_name_the_parameter(kwargs, name):
@@ -370,3 +373,16 @@ def test_a_width_beyond_a_pair_is_refused_naming_the_limit():
         solve_pair(12, 1000.0, 300.0, preload=100.0, width=1e9, **geo)
     r = solve_pair(12, 1000.0, 300.0, preload=100.0, width=WIDTH_MAX * 38.5, **geo)
     assert np.isfinite(r.x) and r.residual <= 1e-12
+
+
+def test_balls_that_overlap_on_the_pitch_circle_are_refused():
+    """z balls of D_w fit on the pitch circle only where D_w <= d_m sin(180°/z)
+    (validate.ball_spacing, the rule of the command line and of solve_combined): 14 balls of
+    8.7312 mm on 38.5 mm (8.6 mm apart) were solved as a pair; one case or among others, it is
+    refused naming the ball diameter. 13 fit (9.26 mm apart)."""
+    args = dict(contact_angle=40.0, width=WIDTH, preload=100.0, **B7205)
+    for fr in (1000.0, np.array([1000.0, 2000.0])):
+        with pytest.raises(InputError, match=r"^ball_diameter: 14 balls of 8\.7312 mm overlap"):
+            solve_pair(14, fr, 300.0, **args)
+    r = solve_pair(13, 1000.0, 300.0, **args)
+    assert r.residual <= 1e-12

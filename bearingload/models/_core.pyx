@@ -2546,7 +2546,7 @@ cpdef enum PairFlag:
     EDGE_SECOND = 4    # the same in bearing 2
     STIFF_OVERFLOW = 8 # a bearing's physical stiffness overflows
     NO_CURVE = 16      # a Hertz curve the core cannot set up (the case not solved)
-    NO_GROOVE = 32     # a geometry ``groove`` refuses (the case not solved)
+    NO_GROOVE = 32     # a geometry ``groove`` refuses, or balls that overlap (the case not solved)
     BAD_WIDTH = 64     # a width below D_w or beyond its largest times d_m (the case not solved)
 
 
@@ -2684,8 +2684,8 @@ cdef int pair_set_up(const PairCall *call, Py_ssize_t k, const double *col, bint
     """Case k of ``pair_call`` set up (``col`` its column of the input rows, n apart): the
     groove (``groove_case``; the tilt radius where given), the stiffness (``pair_curve``), the
     scaled problem (``problem_case``), the held components, the preload offset
-    (``preload_offset``) and the start. Returns BAD_WIDTH, NO_GROOVE or NO_CURVE where it
-    cannot, else 0."""
+    (``preload_offset``) and the start. Returns BAD_WIDTH, NO_GROOVE (also balls that overlap)
+    or NO_CURVE where it cannot, else 0."""
     cdef const double *limits = call.limits
     cdef double load[6]
     cdef unsigned char held[5]
@@ -2695,6 +2695,8 @@ cdef int pair_set_up(const PairCall *call, Py_ssize_t k, const double *col, bint
     if col[14 * n] < col[9 * n] or col[14 * n] > limits[10] * col[10 * n]:
         return BAD_WIDTH
     if not groove_case(&col[9 * n], n, True, limits[3], limits[4], pc.geo, 1, True):
+        return NO_GROOVE
+    if not col[9 * n] <= col[10 * n] * limits[11] * (1.0 + 1e-12):  # (as ``set_up``)
         return NO_GROOVE
     if not pair_curve(call, k, col, reuse):
         return NO_CURVE
@@ -2851,8 +2853,9 @@ def pair_call(int z, const double[:, ::1] cols, bint hertz, const double[::1] kn
     the constant K of the stiffness row), with ``known`` = K_0 and the curve's values (1 +
     NODES) of every case where known, else empty; ``limits`` = the symmetry snap [°], the
     largest A/s, 0, the conformity range (2), the residual accepted, sigma_k (2: +1, or -1 for
-    a mirrored bearing), z_k/B (2), the largest width over d_m; the nodes and weights of the
-    curve; the iteration limits are the module's.
+    a mirrored bearing), z_k/B (2), the largest width over d_m, sin(180°/z) (balls of D_w above
+    d_m times it overlap: flagged NO_GROOVE); the nodes and weights of the curve; the iteration
+    limits are the module's.
 
     Returns (whether no case is flagged, then (n cases): the PairFlags (uint8), problem_case's
     SetupStatus (int8), the steps, K_0 or the constant K, the curve's values (n, NODES), the

@@ -47,6 +47,7 @@ overflows) takes :func:`_general`, which refuses in the order of the checks.
 from __future__ import annotations
 
 import dataclasses
+import functools
 import math
 import operator
 from dataclasses import dataclass
@@ -248,7 +249,8 @@ def solve_pair(
     contact_angle : array_like
         Design contact angle alpha_0, above 0 to 60. [°]
     ball_diameter, pitch_diameter : array_like
-        D_w and d_m. [mm]
+        D_w and d_m; the z balls must fit on the pitch circle, D_w <= d_m sin(180°/z)
+        (:func:`bearingload.validate.ball_spacing`, as the command line checks). [mm]
     width : array_like
         B of one bearing, at least D_w and at most :data:`WIDTH_MAX` times d_m: their centres
         lie B/2 either side of the pair's centre. [mm]
@@ -352,8 +354,15 @@ def _call(z: int, kind: str, cols: np.ndarray, hertz: bool, known: np.ndarray) -
     Hertz set-up ``known`` of every case (or empty)."""
     low, high = validate.CONFORMITY_RANGE
     limits = (SYMMETRY_SNAP_DEG, _comb.GEOMETRY_RATIO_MAX, 0.0, low, high, ACCEPT)
-    limits += (1.0, -1.0 if kind != "DT" else 1.0, *halves(kind).tolist(), WIDTH_MAX)
+    limits += (1.0, -1.0 if kind != "DT" else 1.0, *halves(kind).tolist(), WIDTH_MAX, _chord(z))
     return _core.pair_call(z, cols, hertz, known, np.array(limits), _comb.NODE_X, _comb.NODE_W)
+
+
+@functools.lru_cache(maxsize=64)
+def _chord(z: int) -> float:
+    """sin(180°/z), as :func:`bearingload.validate.ball_spacing` takes it: z balls of D_w above
+    d_m times it overlap on the pitch circle (the core's ``pair_call`` flags them)."""
+    return float(np.sin(np.pi / z))
 
 
 def _general(
@@ -373,9 +382,10 @@ def _general(
     inputs by name; ``hertz``: whether the stiffness is Hertz's, and its set-up given."""
     shape, named = given_as
     c = dict(zip(INPUT_ROWS, cols, strict=True))
-    _check_width(c, named, shape)
     groove = (c[k] for k in ("ball_diameter", "pitch_diameter", "f_i", "f_o", "contact_angle"))
-    geo = _comb.angular_geometry(*groove)
+    geo = _comb.angular_geometry(*groove)  # (before the width, which is weighed against it)
+    validate.ball_spacing(z, geo.D_w, geo.d_m)  # (z balls must fit on the pitch circle)
+    _check_width(c, named, shape)
     if "tilt_radius" in named:
         geo = dataclasses.replace(geo, R_i=c["tilt_radius"])
     if hertz[0] and np.count_nonzero(out[1] & _core.PairFlag.NO_CURVE):  # (the core could not)
