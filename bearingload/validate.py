@@ -100,9 +100,9 @@ def each_finite(**values: object) -> list[np.ndarray]:
 def require(name: str, value: object, rule: str, ok: Any) -> None:
     """Raise :class:`InputError` ``<name>: must be <rule>; got <value>`` unless every ``ok``."""
     if not np.all(ok):
-        raise InputError(
-            name, f"must be {rule}; got {value!r}", element=element(value, np.logical_not(ok))
-        )
+        bad = np.logical_not(ok)
+        shown = _worst(value, bad) if np.shape(value) == np.shape(bad) else repr(value)
+        raise InputError(name, f"must be {rule}; got {shown}", element=element(value, bad))
 
 
 def positive_number(name: str, value: object) -> np.ndarray:

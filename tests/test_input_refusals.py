@@ -292,3 +292,15 @@ def test_none_at_speed_is_refused_naming_its_input(name):
     with pytest.raises(InputError) as exc:
         solve_high_speed(9, speed=5000.0, **kw)
     assert exc.value.parameter == name
+
+
+def test_a_poisson_ratio_out_of_range_is_shown_as_a_number_not_an_array_repr():
+    """The refusal read ``got array(-1.)`` for a 0-d array (validate.require took its repr)."""
+    import numpy as np
+
+    from bearingload.contact import hertz
+    from bearingload.errors import InputError
+
+    with pytest.raises(InputError) as info:
+        hertz.reduced_modulus(2.08e5, np.asarray(-1.0))
+    assert info.value.message == "must be between -1 and 0.5; got -1"
