@@ -757,93 +757,6 @@ cdef void solve5(const double *a, const double *b, double *x) noexcept nogil:
         x[i] = t / m[6 * i]
 
 
-cdef inline bint minus_zero(double v) noexcept nogil:
-    return v == 0 and copysign(1.0, v) < 0
-
-
-cdef bint held_form(const Case *cs, const double *a, const double *b) noexcept nogil:
-    """Whether every held row and column of the 5x5 ``a`` is +0 but its diagonal (positive,
-    finite) and ``b`` is 0 there: ``tangent``'s Newton matrix (``solve_held``)."""
-    cdef int i, k
-    for i in range(5):
-        if not cs.locked[i]:
-            continue
-        if not (b[i] == 0 and a[6 * i] > 0 and isfinite(a[6 * i])):
-            return False
-        for k in range(5):
-            if k != i and not (a[5 * i + k] == 0 and a[5 * k + i] == 0
-                               and copysign(1.0, a[5 * i + k]) > 0
-                               and copysign(1.0, a[5 * k + i]) > 0):
-                return False
-    return True
-
-
-cdef void solve_held(const Case *cs, const double *a, const double *b, double *x) noexcept nogil:
-    """``solve5`` of a Newton matrix whose held components are unit rows and columns
-    (``held_form``), to the bit, with the arithmetic of the free rows and columns alone.
-    There, solve5's operations on a held row or column are +-0 (a +0 over a finite nonzero
-    pivot, times finite numbers): they change no free number but the sign of a zero of the
-    right-hand side or of a back substitution's sum (x - (-0) turns -0 into +0); those signs
-    are followed here. Where a pivot is 0 or not finite, or an x not finite (those +-0 would
-    be NaN there), solve5 itself."""
-    cdef double m[25]
-    cdef double r[5]
-    cdef double t
-    cdef int i, k, col, piv
-    if not held_form(cs, a, b):
-        solve5(a, b, x)
-        return
-    memcpy(m, a, 25 * sizeof(double))
-    memcpy(r, b, 5 * sizeof(double))
-    for col in range(5):
-        if cs.locked[col]:  # r[i] -= (+0 / its diagonal) r[col], each row below
-            if minus_zero(r[col]):
-                for i in range(col + 1, 5):
-                    if minus_zero(r[i]):
-                        r[i] = 0.0
-            continue
-        piv = col
-        for i in range(col + 1, 5):
-            if not cs.locked[i] and fabs(m[5 * i + col]) > fabs(m[5 * piv + col]):
-                piv = i
-        if piv != col:
-            swap_rows(m, r, col, piv)
-        if not (m[6 * col] != 0 and isfinite(m[6 * col])):
-            solve5(a, b, x)
-            return
-        for i in range(col + 1, 5):
-            if cs.locked[i]:  # r[i] -= (+0 / pivot: its sign) r[col]
-                if minus_zero(r[i]) and (m[6 * col] < 0) != (copysign(1.0, r[col]) < 0):
-                    r[i] = 0.0
-                continue
-            t = m[5 * i + col] / m[5 * col + col]
-            for k in range(col, 5):
-                if not cs.locked[k]:
-                    m[5 * i + k] -= t * m[5 * col + k]
-            r[i] -= t * r[col]
-    if not back_held(cs, m, r, x):
-        solve5(a, b, x)
-
-
-cdef bint back_held(const Case *cs, const double *m, const double *r, double *x) noexcept nogil:
-    """The back substitution of ``solve_held`` (a held row's or column's term +0 x_k, its
-    sign followed); whether every x is finite."""
-    cdef int i, k
-    cdef double t
-    for i in range(4, -1, -1):
-        t = r[i]
-        for k in range(i + 1, 5):
-            if cs.locked[i] or cs.locked[k]:  # t -= +0 x[k]: -0 turns +0 where x[k] < 0
-                if minus_zero(t) and copysign(1.0, x[k]) < 0:
-                    t = 0.0
-            else:
-                t -= m[5 * i + k] * x[k]
-        x[i] = t / m[6 * i]
-        if not isfinite(x[i]):
-            return False
-    return True
-
-
 cdef void cap_step(const Case *cs, double *step) noexcept nogil:
     """One-sided cases: the step shortened so that no axial part (a, t, t_c) exceeds A (a ball
     at u < 0 has no stiffness along its groove; _combined_ring.cap_step)."""
@@ -1022,7 +935,7 @@ cdef void newton_step(const Case *cs, Work *wk, const double *grad, double *step
     reg = 1e-13 * trace + 1e-300
     for i in range(5):
         hess[6 * i] += reg
-    solve_held(cs, hess, minus, step)
+    solve5(hess, minus, step)
     cap_step(cs, step)
     if not trace > held:  # no ball in contact: move along the load to the first contact
         to_contact(cs, pt, step)
@@ -1088,7 +1001,7 @@ cdef void line_search(const Case *cs, Work *wk, const double *step, const double
         if slow and (not ok or wk.trial.res > 0.9 * res):
             for i in range(5):
                 left[i] = 0.0 if cs.locked[i] else cs.f[i] - wk.trial.gen[i]
-            solve_held(cs, hess, left, fix)
+            solve5(hess, left, fix)
             cap_step(cs, fix)
             for i in range(5):
                 w2[i] = w[i] + fix[i]
@@ -1328,7 +1241,7 @@ cdef int fast_newton(const Case *cs, Work *wk, Fast *cur, Fast *trial, double *v
             minus[i] = -cur.grad[i]
         for i in range(5):
             hess[6 * i] += 1e-13 * trace
-        solve_held(cs, hess, minus, step)
+        solve5(hess, minus, step)
         cap_step(cs, step)
         slope = 0.0
         for i in range(5):
@@ -1763,25 +1676,6 @@ cdef bint ball_directions(int z, double cage, double snap, double *c, double *s)
             c[j] = cos(rad + 2.0 * PI * j / z)
             s[j] = sin(rad + 2.0 * PI * j / z)
     return mirror
-
-
-def held_solves(const double[:, ::1] a, const double[:, ::1] b,
-                const unsigned char[:, ::1] held):
-    """``solve5`` and ``solve_held`` of n 5x5 systems ``a`` (n, 25, row-major), ``b`` (n, 5)
-    with the components ``held`` (n, 5) uint8: their x (2, n, 5), which are to be the same
-    bits (tests/test_core_held_solve.py)."""
-    cdef Py_ssize_t n = a.shape[0], k
-    cdef Case cs
-    cdef int i
-    out_a = np.empty((2, n, 5))
-    cdef double[:, :, ::1] out = out_a
-    with nogil:
-        for k in range(n):
-            for i in range(5):
-                cs.locked[i] = held[k, i]
-            solve5(&a[k, 0], &b[k, 0], &out[0, k, 0])
-            solve_held(&cs, &a[k, 0], &b[k, 0], &out[1, k, 0])
-    return out_a
 
 
 def directions(int z, const double[::1] cage, double snap):
