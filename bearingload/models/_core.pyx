@@ -817,7 +817,7 @@ cdef int work_open(int z, Work *wk) noexcept nogil:
     """The work space of a case of z balls, one block (its first stage's too: ``fast``, the
     two states of ``solve_case`` and the balls' mirror twins)."""
     cdef double *m = <double *> malloc(
-        (3 * BALL_ARRAYS + 9 + 2 * FAST_ARRAYS) * z * sizeof(double) + 3 * z * sizeof(int))
+        (3 * BALL_ARRAYS + 9 + 2 * FAST_ARRAYS) * z * sizeof(double) + z * sizeof(int))
     if m == NULL:
         return 0
     wk.block = m
@@ -1084,14 +1084,12 @@ ctypedef struct Fast:
     double *kappa
     double *u
     const int *twin  # an earlier ball to compare with (``mirror_twins``), or -1
-    int *todo        # work space (z): the balls whose stiffness is interpolated
-    int *src         # work space (z): the ball whose values a ball takes (itself or its twin)
     double grad[5]
     double res
     double energy
 
 
-cdef void fast_on(double *block, int z, const int *twin, int *scratch, Fast *st) noexcept nogil:
+cdef void fast_on(double *block, int z, const int *twin, Fast *st) noexcept nogil:
     st.ca = block
     st.sa = block + z
     st.rho = block + 2 * z
@@ -1101,8 +1099,6 @@ cdef void fast_on(double *block, int z, const int *twin, int *scratch, Fast *st)
     st.kappa = block + 6 * z
     st.u = block + 7 * z
     st.twin = twin
-    st.todo = scratch
-    st.src = scratch + z
 
 
 cdef void mirror_twins(const Case *cs, int *twin) noexcept nogil:
@@ -1121,7 +1117,7 @@ cdef void mirror_twins(const Case *cs, int *twin) noexcept nogil:
         twin[j] = p if 0 <= p < j and cs.c[p] == cs.c[j] and cs.s[p] == -cs.s[j] else -1
 
 
-cdef inline bint fast_ball(const Case *cs, Fast *st, int j, double rho, double u) noexcept nogil:
+cdef inline void fast_ball(const Case *cs, Fast *st, int j, double rho, double u) noexcept nogil:
     """Ball j of ``fast_state`` at the groove-centre separations (rho, u): its contact
     direction, approach, stiffness (following the contact angle) and load."""
     cdef double rp = max(rho, 0.0), d, safe, delta
@@ -1134,8 +1130,8 @@ cdef inline bint fast_ball(const Case *cs, Fast *st, int j, double rho, double u
     st.d[j] = d
     delta = max(d - cs.a_hat, 0.0)
     st.root[j] = sqrt(delta)
-    st.kappa[j] = 0.0
-    return delta > 0 and cs.curve != NULL
+    st.kappa[j] = curve_kappa(cs, st.ca[j], -st.sa[j] * st.sa[j] / (1.0 + st.ca[j])) if delta > 0 \
+        else 0.0
 
 
 cdef inline void fast_copy(Fast *st, int p, int j) noexcept nogil:
@@ -1146,37 +1142,13 @@ cdef inline void fast_copy(Fast *st, int p, int j) noexcept nogil:
     st.u[j] = st.u[p]
     st.d[j] = st.d[p]
     st.root[j] = st.root[p]
-
-
-cdef void curve_pairs(const Case *cs, Fast *st, int n) noexcept nogil:
-    """``curve_kappa`` of the balls st.todo[:n] into st.kappa, two balls at a time (each
-    ball's sums in the order of the nodes, the same bits; the two chains of additions
-    interleaved), an odd last one alone."""
-    cdef int i, k, j0, j1
-    cdef double t0, t1, a0, a1, n0 = 0.0, n1 = 0.0, d0 = 0.0, d1 = 0.0
-    for i in range(0, n - 1, 2):
-        j0, j1 = st.todo[i], st.todo[i + 1]
-        t0 = 2.0 * min(max(st.ca[j0], 0.0), 1.0) - 1.0
-        t1 = 2.0 * min(max(st.ca[j1], 0.0), 1.0) - 1.0
-        n0 = n1 = d0 = d1 = 0.0
-        for k in range(NODES):
-            a0 = cs.node_w[k] / (t0 - cs.node_x[k])
-            a1 = cs.node_w[k] / (t1 - cs.node_x[k])
-            n0 += a0 * cs.curve[k]
-            d0 += a0
-            n1 += a1 * cs.curve[k]
-            d1 += a1
-        st.kappa[j0] = (-st.sa[j0] * st.sa[j0] / (1.0 + st.ca[j0])) * n0 / d0
-        st.kappa[j1] = (-st.sa[j1] * st.sa[j1] / (1.0 + st.ca[j1])) * n1 / d1
-    if n % 2:
-        j0 = st.todo[n - 1]
-        st.kappa[j0] = curve_kappa(cs, st.ca[j0], -st.sa[j0] * st.sa[j0] / (1.0 + st.ca[j0]))
+    st.kappa[j] = st.kappa[p]
 
 
 cdef void fast_state(const Case *cs, const double *v, Fast *st) noexcept nogil:
     """The balls, forces, residual and potential at v in plain double precision, the stiffness
     following the contact angles."""
-    cdef int j, i, p, n = 0
+    cdef int j, i, p
     cdef double rho, u, delta, gen[5], size[5], err[5], work = 0.0, energy = 0.0
     cdef double qc, qs
     for i in range(5):
@@ -1190,16 +1162,10 @@ cdef void fast_state(const Case *cs, const double *v, Fast *st) noexcept nogil:
         if cs.one_sided:
             u = max(u, 0.0)
         p = st.twin[j]
-        st.src[j] = j
         if p >= 0 and same_bits(st.rho[p], rho) and same_bits(st.u[p], u):
             fast_copy(st, p, j)  # (every value here a function of (rho, u) alone)
-            st.src[j] = p
-        elif fast_ball(cs, st, j, rho, u):
-            st.todo[n] = j
-            n += 1
-    curve_pairs(cs, st, n)
-    for j in range(cs.z):
-        st.kappa[j] = st.kappa[st.src[j]]
+        else:
+            fast_ball(cs, st, j, rho, u)
         delta = max(st.d[j] - cs.a_hat, 0.0)
         st.q[j] = (1.0 + st.kappa[j]) * delta * st.root[j]
         energy += st.q[j] * delta
@@ -1610,8 +1576,8 @@ cdef int solve_case(const Case *cs, const double *v0, bint given, double *vh, do
     cdef double end_res, change, k_new
     cdef Point *pt = &wk.pt
     mirror_twins(cs, wk.twin)
-    fast_on(wk.fast, cs.z, wk.twin, wk.twin + cs.z, &cur)  # (one scratch: a state at a time)
-    fast_on(wk.fast + FAST_ARRAYS * cs.z, cs.z, wk.twin, wk.twin + cs.z, &trial)
+    fast_on(wk.fast, cs.z, wk.twin, &cur)
+    fast_on(wk.fast + FAST_ARRAYS * cs.z, cs.z, wk.twin, &trial)
     for i in range(5):
         vh[i] = v0[i]
         vl[i] = 0.0
