@@ -1784,6 +1784,24 @@ cdef void answers_at(Answers *a, Py_ssize_t n, double[:, :, ::1] v, double[:, :,
         a.its, a.status, a.flags = &its[0], &status[0], &flags[0, 0]
 
 
+cdef void case_at(Case *cs, int z, const double *c, const double *s, const double *scalars,
+                  Py_ssize_t n, const double *f, const unsigned char *locked, int one_sided,
+                  const double *curve) noexcept nogil:
+    """``cs`` the case of the ball directions ``c``, ``s`` (z), ``scalars`` = (a_hat, pre, gap,
+    b_hi, b_lo, t_imp) ``n`` apart, the forces ``f`` and held components ``locked`` (5), the
+    stiffness curve's values ``curve`` (NULL: constant K); its limits and nodes the caller's."""
+    cdef int i
+    cs.z, cs.c, cs.s, cs.one_sided = z, c, s, one_sided
+    cs.a_hat, cs.pre, cs.gap = scalars[0], scalars[n], scalars[2 * n]
+    cs.b_hi, cs.b_lo, cs.t_imp = scalars[3 * n], scalars[4 * n], scalars[5 * n]
+    for i in range(5):
+        cs.f[i] = f[i]
+        cs.locked[i] = locked[i]
+    cs.deviation = cs.pre > 0 and z >= 2
+    cs.q0 = cs.pre * sqrt(cs.pre) if cs.deviation else 0.0
+    cs.curve = curve
+
+
 cdef void solve_into(Case *cs, const int *held, const double *v0, bint given, Py_ssize_t k,
                      Answers *a) noexcept nogil:
     """Case ``k`` solved (``solve_case``) from ``v0`` where ``given``, its answer, tangent,
@@ -1848,19 +1866,13 @@ def solve(const double[:, ::1] c, const double[:, ::1] s, const double[:, ::1] l
     cs.lim = LIMITS
     cs.lim.max_iterations = max_iterations
     cs.lim.fast_steps = first_stage_steps
+    cs.node_x, cs.node_w = &node_x[0], &node_w[0]
     with nogil:
         for k in range(n):
-            cs.z, cs.c, cs.s, cs.one_sided = z, &c[k, 0], &s[k, 0], one_sided[k]
-            cs.a_hat, cs.pre, cs.gap = lengths[0, k], lengths[1, k], lengths[2, k]
-            cs.b_hi, cs.b_lo, cs.t_imp = lengths[3, k], lengths[4, k], lengths[5, k]
+            case_at(&cs, z, &c[k, 0], &s[k, 0], &lengths[0, k], n, &f[k, 0], &locked[k, 0],
+                    one_sided[k], &curve[k, 0] if has_curve else NULL)
             for i in range(5):
-                cs.f[i] = f[k, i]
-                cs.locked[i] = locked[k, i]
                 held[i] = imposed[k, i]
-            cs.deviation = cs.pre > 0 and z >= 2
-            cs.q0 = cs.pre * sqrt(cs.pre) if cs.deviation else 0.0
-            cs.curve = &curve[k, 0] if has_curve else NULL
-            cs.node_x, cs.node_w = &node_x[0], &node_w[0]
             solve_into(&cs, held, &v0[k, 0], given[k], k, &a)
     return answers_of(arrays)
 
@@ -4249,25 +4261,6 @@ def solve_speed(const double[:, ::1] consts, const double[:, ::1] ki, const doub
 # refuses what does not fit; the arithmetic of a call, before and after ``solve``, is here: one
 # C loop over the cases for the whole batch, so a case's bits are the same alone or in a batch.
 
-cdef void case_at(Case *cs, int z, const double *c, const double *s, const double *scalars,
-                  Py_ssize_t n, const double *f, const unsigned char *locked,
-                  int one_sided) noexcept nogil:
-    """``cs`` the case of the ball directions ``c``, ``s`` (z), ``scalars`` = (a_hat, pre, gap,
-    b_hi, b_lo, t_imp) ``n`` apart, the forces ``f`` and held components ``locked`` (5),
-    constant K."""
-    cdef int i
-    cs.lim = LIMITS
-    cs.z, cs.c, cs.s, cs.one_sided = z, c, s, one_sided
-    cs.a_hat, cs.pre, cs.gap = scalars[0], scalars[n], scalars[2 * n]
-    cs.b_hi, cs.b_lo, cs.t_imp = scalars[3 * n], scalars[4 * n], scalars[5 * n]
-    for i in range(5):
-        cs.f[i] = f[i]
-        cs.locked[i] = locked[i]
-    cs.deviation = cs.pre > 0 and z >= 2
-    cs.q0 = cs.pre * sqrt(cs.pre) if cs.deviation else 0.0
-    cs.curve = NULL
-
-
 def points(const double[:, ::1] c, const double[:, ::1] s, const double[:, ::1] scalars,
            const double[:, ::1] f, const unsigned char[:, ::1] locked,
            const unsigned char[::1] one_sided, const double[:, ::1] vh, const double[:, ::1] vl,
@@ -4289,10 +4282,11 @@ def points(const double[:, ::1] c, const double[:, ::1] s, const double[:, ::1] 
     if block == NULL:
         raise MemoryError()
     point_on(block, z, &pt)
+    cs.lim = LIMITS
     with nogil:
         for k in range(n):
             case_at(&cs, z, &c[k, 0], &s[k, 0], &scalars[0, k], n, &f[k, 0], &locked[k, 0],
-                    one_sided[k])
+                    one_sided[k], NULL)
             fresh(&cs, &vh[k, 0], &vl[k, 0], &kappa[k, 0], &pt)
             for i in range(BALL_ARRAYS):
                 for j in range(z):
@@ -4516,17 +4510,10 @@ cdef bint solve_all(int z, Py_ssize_t n, const Setup *st, bint angular, bint imp
     for i in range(5):
         v0[i] = 0.0
         held[i] = imposed and i == 3
+    cs.node_x, cs.node_w = node_x, node_w
     for k in range(n):
-        cs.z, cs.c, cs.s, cs.one_sided = z, &st.c[z * k], &st.s[z * k], angular
-        cs.a_hat, cs.pre, cs.gap = st.out[n + k], st.out[2 * n + k], st.out[3 * n + k]
-        cs.b_hi, cs.b_lo, cs.t_imp = st.out[4 * n + k], st.out[5 * n + k], st.out[6 * n + k]
-        for i in range(5):
-            cs.f[i] = st.f[5 * k + i]
-            cs.locked[i] = st.held[5 * k + i]
-        cs.deviation = cs.pre > 0 and z >= 2
-        cs.q0 = cs.pre * sqrt(cs.pre) if cs.deviation else 0.0
-        cs.curve = &values[NODES * k] if values != NULL else NULL
-        cs.node_x, cs.node_w = node_x, node_w
+        case_at(&cs, z, &st.c[z * k], &st.s[z * k], &st.out[n + k], n, &st.f[5 * k],
+                &st.held[5 * k], angular, &values[NODES * k] if values != NULL else NULL)
         solve_into(&cs, held, v0, False, k, a)
         clean = clean and a.status[k] == OK and a.res[n + k] <= accept
         clean = clean and not a.flags[k] and not a.flags[n + k]
