@@ -2607,32 +2607,31 @@ ctypedef struct PairCall:
     int64_t *its           # (n)
 
 
-cdef int pair_curve(const PairCall *pc, Py_ssize_t k, const double *col,
-                    bint reuse) noexcept nogil:
-    """Case k's stiffness: the constant K of its stiffness row, or K_0 and the Hertz curve's
-    values from ``known`` where given, else by ``curve_of`` of its six (the case before's,
-    just before, where ``reuse``). Returns 0 where the core cannot set it up."""
-    cdef Py_ssize_t n = pc.n
-    cdef double *geo6 = &pc.geo6[6 * k]
+cdef int stiffness_of(const double *col, Py_ssize_t n, int row, const double *known,
+                      bint reuse, const double *node_x, double *geo6, double *k0,
+                      double *values) noexcept nogil:
+    """A case's stiffness (``col`` its column of the input rows, ``n`` apart): with ``values``
+    NULL the constant K of its row ``row``; else K_0 and the Hertz curve's values from
+    ``known`` (K_0 and the values) where not NULL, else by ``curve_of`` of its six ``geo6``
+    (the case before's, just before, where ``reuse``). Returns 0 where the core cannot."""
     cdef int i
-    if not pc.hertz:
-        pc.k0[k] = col[15 * n]
-    elif pc.known != NULL:
-        pc.k0[k] = pc.known[(1 + NODES) * k]
+    if values == NULL:
+        k0[0] = col[row * n]
+    elif known != NULL:
+        k0[0] = known[0]
         for i in range(NODES):
-            pc.values[NODES * k + i] = pc.known[(1 + NODES) * k + 1 + i]
+            values[i] = known[1 + i]
     else:
         geo6[0], geo6[1], geo6[2], geo6[3] = col[9 * n], col[10 * n], col[11 * n], col[12 * n]
         geo6[4], geo6[5] = col[7 * n], col[8 * n]
-        return curve_of(geo6, geo6 - 6 if reuse else geo6, reuse, pc.node_x, &pc.k0[k],
-                        &pc.values[NODES * k])
+        return curve_of(geo6, geo6 - 6 if reuse else geo6, reuse, node_x, k0, values)
     return 1
 
 
 cdef int pair_set_up(const PairCall *call, Py_ssize_t k, const double *col, bint reuse,
                      PairCase *pc) noexcept nogil:
     """Case k of ``pair_call`` set up (``col`` its column of the input rows, n apart): the
-    groove (``groove_case``; the tilt radius where given), the stiffness (``pair_curve``), the
+    groove (``groove_case``; the tilt radius where given), the stiffness (``stiffness_of``), the
     scaled problem (``problem_case``), the held components, the preload offset
     (``preload_offset``) and the start. Returns BAD_WIDTH, NO_GROOVE or NO_CURVE where it
     cannot, else 0."""
@@ -2646,7 +2645,9 @@ cdef int pair_set_up(const PairCall *call, Py_ssize_t k, const double *col, bint
         return BAD_WIDTH
     if not groove_case(&col[9 * n], n, True, limits[3], limits[4], pc.geo, 1, True):
         return NO_GROOVE
-    if not pair_curve(call, k, col, reuse):
+    if not stiffness_of(col, n, 15, &call.known[(1 + NODES) * k] if call.known != NULL else NULL,
+                        reuse, call.node_x, &call.geo6[6 * k], &call.k0[k],
+                        &call.values[NODES * k] if call.hertz else NULL):
         return NO_CURVE
     pc.k0 = call.k0[k]
     if col[16 * n] > 0:
@@ -4418,33 +4419,20 @@ cdef bint set_up(int z, const double *col, Py_ssize_t n, bint angular, bint impo
                  double *geo, double *geo6, double *k0, double *values, double *c, double *s,
                  unsigned char *mirror, unsigned char *held, double *f, double *out) noexcept nogil:
     """One case of ``combined_call`` set up: ``col`` its column of the 17 input rows (``n``
-    apart); ``geo`` its column of A, g, R_i, alpha_0 (``n`` apart); ``k0`` its K_0: with the
-    Hertz stiffness (``values`` not NULL), K_0 and the curve's values into ``k0``, ``values``
-    from ``known`` (K_0 and the values) where not NULL, else by ``curve_of`` of its six
-    ``geo6`` (the case before just before ``geo6``, ``k0``, ``values``, where ``reuse``); else
-    the constant K of its stiffness row; the rest as ``problem_case``. Returns 0 where the caller's general path must take the
-    call: a geometry ``groove`` refuses, balls that overlap (``limits[5]`` = sin(180°/z)),
+    apart); ``geo`` its column of A, g, R_i, alpha_0 (``n`` apart); ``k0`` its K_0 or
+    constant K and ``values`` its curve's (``stiffness_of``, row 16: the stiffness); the rest
+    as ``problem_case``. Returns 0 where the caller's general path must take the call: a geometry ``groove`` refuses, balls that overlap (``limits[5]`` = sin(180°/z)),
     fewer than 3 balls, an angular-contact moment to check, a Hertz set-up the core cannot
     make, a load ``problem_case`` refuses, or a light angular-contact case (A/s above
     ``limits[6]``)."""
-    cdef int i
     if not groove_case(&col[9 * n], n, angular, limits[3], limits[4], geo, n, True):
         return 0
     if z < 3 or not col[9 * n] <= col[10 * n] * limits[5] * (1.0 + 1e-12):
         return 0
     if angular and (col[3 * n] != 0 or (col[2 * n] != 0 and not imposed)):
         return 0
-    if values == NULL:
-        k0[0] = col[16 * n]
-    elif known != NULL:
-        k0[0] = known[0]
-        for i in range(NODES):
-            values[i] = known[1 + i]
-    else:
-        geo6[0], geo6[1], geo6[2], geo6[3] = col[9 * n], col[10 * n], col[11 * n], col[12 * n]
-        geo6[4], geo6[5] = col[7 * n], col[8 * n]
-        if not curve_of(geo6, geo6 - 6 if reuse else geo6, reuse, node_x, k0, values):
-            return 0
+    if not stiffness_of(col, n, 16, known, reuse, node_x, geo6, k0, values):
+        return 0
     if problem_case(z, col, col[6 * n], geo, k0[0], angular, imposed, limits, n, c, s,
                     mirror, held, f, out) != SET_UP:
         return 0
