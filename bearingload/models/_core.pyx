@@ -1659,28 +1659,34 @@ def directions(int z, const double[::1] cage, double snap):
     return c_a, s_a, mirror_a
 
 
+cdef void scaled_case(int z, const double *c, const double *s, double big_a, double g,
+                      double scale, double t_imp, double *c2, double *s2, double *out,
+                      Py_ssize_t m) noexcept nogil:
+    """One case of ``scaled_problem`` (``c2``, ``s2`` may be ``c``, ``s``; ``out`` its column
+    of the six, ``m`` apart)."""
+    cdef int j
+    cdef double a = big_a / scale, p = (-g if -g > 0.0 else 0.0) / scale
+    for j in range(z):
+        c2[j] = 0.0 if fabs(c[j]) < 1e-15 else c[j]
+        s2[j] = 0.0 if fabs(s[j]) < 1e-15 else s[j]
+    out[0], out[m], out[2 * m] = a, p, (g if g > 0.0 else 0.0) / scale
+    two_sum(a, p, &out[3 * m], &out[4 * m])
+    out[5 * m] = t_imp / scale
+
+
 def scaled_problem(const double[:, ::1] c, const double[:, ::1] s, const double[::1] big_a,
                    const double[::1] g, const double[::1] scale, const double[::1] t_imp):
     """The scaled problem of n cases (_combined_ring.Problem.make): the ball directions ``c``,
     ``s`` (n, z) with those below 1e-15 made 0, and A, p = max(-g, 0), max(g, 0), B = A + p in
     double-double (Knuth's two-sum) and the imposed tilt ``t_imp``, each over ``scale`` (n,)."""
-    cdef Py_ssize_t n = c.shape[0], z = c.shape[1], k, j
+    cdef Py_ssize_t n = c.shape[0], z = c.shape[1], k
     c_a, s_a = np.empty((n, z)), np.empty((n, z))
     out_a = np.empty((6, n))
     cdef double[:, ::1] c2 = c_a, s2 = s_a, out = out_a
-    cdef double a, p, hi, bb
     with nogil:
         for k in range(n):
-            for j in range(z):
-                c2[k, j] = 0.0 if fabs(c[k, j]) < 1e-15 else c[k, j]
-                s2[k, j] = 0.0 if fabs(s[k, j]) < 1e-15 else s[k, j]
-            a = big_a[k] / scale[k]
-            p = (-g[k] if -g[k] > 0.0 else 0.0) / scale[k]
-            hi = a + p
-            bb = hi - a
-            out[0, k], out[1, k], out[2, k] = a, p, (g[k] if g[k] > 0.0 else 0.0) / scale[k]
-            out[3, k], out[4, k] = hi, (a - (hi - bb)) + (p - bb)
-            out[5, k] = t_imp[k] / scale[k]
+            scaled_case(<int> z, &c[k, 0], &s[k, 0], big_a[k], g[k], scale[k], t_imp[k],
+                        &c2[k, 0], &s2[k, 0], &out[0, k], n)
     return c_a, s_a, out_a
 
 
@@ -4342,8 +4348,8 @@ cdef int problem_case(int z, const double *load, double cage, const double *leng
     same)."""
     cdef double fr = load[0], fa = load[n], mm = load[2 * n], mc = load[3 * n]
     cdef double big_a = length[0], g = length[n], radius = length[2 * n]
-    cdef double f_ref, scale, t_imp, a, p, hi, bb
-    cdef int j, status = SET_UP
+    cdef double f_ref, scale, t_imp
+    cdef int status = SET_UP
     f_ref = max(max(max(fr, fabs(fa)), hypot(mm, mc) / radius), load[5 * n])
     scale = pow(f_ref / k_ref, 2.0 / 3.0)
     if not isfinite(f_ref):
@@ -4358,19 +4364,11 @@ cdef int problem_case(int z, const double *load, double cage, const double *leng
         status = TOO_HEAVY
     t_imp = radius * (load[4 * n] * (PI / 180.0))
     mirror[0] = ball_directions(z, cage, limits[0], c, s)
-    for j in range(z):
-        c[j] = 0.0 if fabs(c[j]) < 1e-15 else c[j]
-        s[j] = 0.0 if fabs(s[j]) < 1e-15 else s[j]
+    scaled_case(z, c, s, big_a, g, scale, t_imp, c, s, &out[n], n)
     symmetry_locks(z, mirror[0], fr, fa, mm, mc, t_imp, imposed, held)
     f[0], f[1], f[2] = fr / f_ref, 0.0 / f_ref, fa / f_ref
     f[3], f[4] = (mm / radius) / f_ref, (mc / radius) / f_ref
-    a = big_a / scale
-    p = (-g if -g > 0.0 else 0.0) / scale
-    hi = a + p
-    bb = hi - a
-    out[0], out[n], out[2 * n], out[3 * n] = scale, a, p, (g if g > 0.0 else 0.0) / scale
-    out[4 * n], out[5 * n] = hi, (a - (hi - bb)) + (p - bb)
-    out[6 * n], out[7 * n] = t_imp / scale, f_ref
+    out[0], out[7 * n] = scale, f_ref
     return status
 
 
