@@ -1,5 +1,7 @@
 # cython: language_level=3
-"""The compiled core of the ball-bearing ring equilibrium (C-level Cython).
+"""The compiled core of the ball-bearing ring equilibrium (C-level Cython): its build, its
+kernels over the structs of ``_core.pxd``, its batches and statuses, and what it solves for
+each model: docs/architecture.md, "The compiled core".
 
 One case is one C call: the scaled problem of :mod:`bearingload.models._combined_ring` (its
 docstring gives the model, the scaled units and why each piece keeps its digits) solved by
@@ -10,19 +12,6 @@ docstring gives the model, the scaled units and why each piece keeps its digits)
    the ring position and the ball approaches in double-double (``minimise``);
 3. the stiffness updated to the contact angles and step 2 repeated until the update leaves the
    equilibrium (``solve_case``).
-
-The preloaded pair of :mod:`bearingload.models.pair` (:func:`solve_pair`, the last section)
-reuses the ball kernels for each of its two bearings, with its own two-stage Newton over the
-shaft's position.
-
-A batch is a C loop over cases, each case with its own work space: a case's answer is the same
-bits alone or in any batch. The kernels are ``noexcept nogil`` functions over the structs of
-``_core.pxd``; no Python object enters them. The Python wrapper (:func:`solve`) takes typed
-memoryviews, allocates the outputs and returns a status per case (``OK``, ``NOT_CONVERGED``:
-the stiffness updates ran out); the caller measures the residual and names the inputs.
-
-Double-double arithmetic needs every product rounded on its own: the build compiles this file
-with ``-ffp-contract=off`` (setup.py); the exact products use ``fma``.
 """
 
 from libc.math cimport (asin, atan, atan2, cbrt, copysign, cos, exp, expm1, fabs, fma, fmod, hypot,
@@ -1885,14 +1874,10 @@ def solve(const double[:, ::1] c, const double[:, ::1] s, const double[:, ::1] l
 
 # ----------------------------------------------------------------------- the preloaded pair
 #
-# Two bearings of the same balls on one rigid shaft (bearingload.models.pair): the shaft's
-# position v = (x, y, a, t, t_c) (scaled, t = R_i theta / s) about the pair's centre; bearing k
-# sees the local position L_k v plus its axial preload offset (``pair_local``), its balls are
-# evaluated as one ring of the single bearing above (``reference``, ``loads``, ``forces``), the
-# pair's forces are sum_k L_k^T f_k and its tangent sum_k L_k^T K_k L_k. Damped Newton in plain
-# doubles (``lean_newton``), then with the balls in double-double (``pair_newton``): the stiffness
-# at each ball's angle in the forces and the (non-symmetric) tangent, frozen in the potential of
-# the line search.
+# Two bearings of the same balls on one rigid shaft (bearingload.models.pair; its model and two
+# stages: docs/architecture.md, "The compiled core"): the shaft at v = (x, y, a, t, t_c) (scaled,
+# t = R_i theta / s) about the pair's centre, bearing k at L_k v plus its offset (``pair_local``);
+# in the double-double stage K at each ball's angle, frozen in the line search's potential.
 
 #: Newton steps of a case in the pair's double-double stage, and halvings of a step. [-]
 PAIR_MAX_STEPS = 400
@@ -4263,10 +4248,7 @@ def solve_speed(const double[:, ::1] consts, const double[:, ::1] ki, const doub
 
 
 # ------------------------------------------------- the combined solver's set-up and results
-#
-# The Python side of bearingload.models.combined checks the inputs (bearingload.validate) and
-# refuses what does not fit; the arithmetic of a call, before and after ``solve``, is here: one
-# C loop over the cases for the whole batch, so a case's bits are the same alone or in a batch.
+# (bearingload.models.combined checks and refuses; docs/architecture.md, "The compiled core")
 
 def points(const double[:, ::1] c, const double[:, ::1] s, const double[:, ::1] scalars,
            const double[:, ::1] f, const unsigned char[:, ::1] locked,
