@@ -2508,29 +2508,17 @@ ctypedef struct PairCase:
     unsigned char mirror
 
 
-cdef void pair_locks_case(bint tandem, bint mirror, double fr, double fa, double mm, double mc,
-                          unsigned char *held) noexcept nogil:
-    """Which of the shaft's (x, y, a, t, t_c) a pair's case holds at 0 (pair.held_components
-    states the symmetries): the mirror about the load line, the z-fold symmetry, the mirror
-    across the pair's mid-plane (not ``tandem``)."""
-    cdef bint no_moment = mm == 0 and mc == 0
-    cdef bint across = mirror and mc == 0
-    cdef bint radial = fr == 0 and no_moment
-    cdef bint axial = not tandem and fa == 0 and no_moment
-    held[0], held[1], held[2] = radial, across or radial, axial
-    held[3], held[4] = radial or axial, across or radial or axial
-
-
 def pair_locks(bint tandem, const unsigned char[::1] mirror, const double[:, ::1] loads):
-    """``pair_locks_case`` of n cases: ``mirror`` (n,) uint8, ``loads`` (4, n) = F_r, F_a, M,
-    M_c; returns held (n, 5) bool."""
+    """Which of the shaft's (x, y, a, t, t_c) n pair cases hold at 0 (``symmetry_locks``; its
+    mirror across the mid-plane not where ``tandem``): ``mirror`` (n,) uint8, ``loads`` (4, n)
+    = F_r, F_a, M, M_c; returns held (n, 5) bool."""
     cdef Py_ssize_t n = mirror.shape[0], k
     held_a = np.empty((n, 5), dtype=bool)
     cdef unsigned char[:, ::1] held = held_a.view(np.uint8)
     with nogil:
         for k in range(n):
-            pair_locks_case(tandem, mirror[k], loads[0, k], loads[1, k], loads[2, k],
-                            loads[3, k], &held[k, 0])
+            symmetry_locks(3, mirror[k], loads[0, k], loads[1, k], loads[2, k], loads[3, k],
+                           0.0, False, tandem, &held[k, 0])  # (a pair's z >= 3)
     return held_a
 
 
@@ -2647,7 +2635,8 @@ cdef int pair_set_up(const PairCall *call, Py_ssize_t k, const double *col, bint
         load[i] = col[i * n]
     pc.status = problem_case(call.z, load, col[6 * n], pc.geo, pc.k0, False, False, limits, 1,
                              call.c, call.s, &pc.mirror, held, pr.whole.f, pc.out)
-    pair_locks_case(limits[7] > 0, pc.mirror, load[0], load[1], load[2], load[3], held)
+    symmetry_locks(call.z, pc.mirror, load[0], load[1], load[2], load[3], 0.0, False,
+                   limits[7] > 0, held)
     pair_case(pr, k, call.z, call.c, call.s, pc.out[1], pc.out[2], pc.out[3], pc.out[4],
               pc.out[5])
     pr.bear.curve = &call.values[NODES * k] if call.hertz else NULL
@@ -4297,12 +4286,14 @@ cpdef enum SetupStatus:
 
 
 cdef void symmetry_locks(int z, bint mirror, double fr, double fa, double mm, double mc,
-                         double t_imp, bint imposed, unsigned char *held) noexcept nogil:
+                         double t_imp, bint imposed, bint tandem,
+                         unsigned char *held) noexcept nogil:
     """Which of (x, y, a, t, t_c) a case holds (``held``, 5): the tilt where imposed, and the
-    components 0 by a symmetry of the case (combined.symmetry_locks states them)."""
+    components 0 by a symmetry of the case (combined.symmetry_locks states them; a pair's,
+    pair.held_components: its mirror across the mid-plane, not a ``tandem`` pair's)."""
     cdef bint no_tilt = mm == 0 and mc == 0 and t_imp == 0
     cdef bint across = mirror and mc == 0
-    cdef bint axial = fa == 0 and no_tilt
+    cdef bint axial = not tandem and fa == 0 and no_tilt
     cdef bint radial = fr == 0 and no_tilt and z >= 2
     held[0], held[1], held[2] = radial, across or radial, axial
     held[3], held[4] = axial or radial or imposed, across or axial or radial
@@ -4317,7 +4308,7 @@ def locks(int z, const unsigned char[::1] mirror, const double[:, ::1] loads, bi
     with nogil:
         for k in range(n):
             symmetry_locks(z, mirror[k], loads[0, k], loads[1, k], loads[2, k], loads[3, k],
-                           loads[4, k], imposed, &held[k, 0])
+                           loads[4, k], imposed, False, &held[k, 0])
     return held_a
 
 
@@ -4347,7 +4338,7 @@ cdef int problem_case(int z, const double *load, double cage, const double *leng
     t_imp = radius * (load[4 * n] * (PI / 180.0))
     mirror[0] = ball_directions(z, cage, limits[0], c, s)
     scaled_case(z, c, s, big_a, g, scale, t_imp, c, s, &out[n], n)
-    symmetry_locks(z, mirror[0], fr, fa, mm, mc, t_imp, imposed, held)
+    symmetry_locks(z, mirror[0], fr, fa, mm, mc, t_imp, imposed, False, held)
     f[0], f[1], f[2] = fr / f_ref, 0.0 / f_ref, fa / f_ref
     f[3], f[4] = (mm / radius) / f_ref, (mc / radius) / f_ref
     out[0], out[7 * n] = scale, f_ref
