@@ -4278,11 +4278,9 @@ def points(const double[:, ::1] c, const double[:, ::1] s, const double[:, ::1] 
 
 cpdef enum SetupStatus:
     SET_UP = 0        # the case's scaled problem is set up
-    LOAD_OVERFLOW = 1 # a moment over its lever beyond the largest double
-    NO_LOAD = 2       # no load at all
-    SCALE_HUGE = 3    # the one-ball approach (F/K)^(2/3) beyond 1e100 mm
-    TOO_LIGHT = 4     # A over the approach beyond the combined solver's ratio
-    TOO_HEAVY = 5     # an angular-contact case's A over the approach below its ratio
+    NO_SCALE = 1      # no load, or the load or the one-ball approach (F/K)^(2/3) beyond range
+    TOO_LIGHT = 2     # A over the approach beyond the combined solver's ratio
+    TOO_HEAVY = 3     # an angular-contact case's A over the approach below its ratio
 
 
 cdef void symmetry_locks(int z, bint mirror, double fr, double fa, double mm, double mc,
@@ -4325,12 +4323,8 @@ cdef int problem_case(int z, const double *load, double cage, const double *leng
     cdef int status = SET_UP
     f_ref = max(max(max(fr, fabs(fa)), hypot(mm, mc) / radius), load[5 * n])
     scale = pow(f_ref / k_ref, 2.0 / 3.0)
-    if not isfinite(f_ref):
-        status = LOAD_OVERFLOW
-    elif not f_ref > 0:
-        status = NO_LOAD
-    elif not scale <= 1e100:
-        status = SCALE_HUGE
+    if not (isfinite(f_ref) and f_ref > 0 and scale <= 1e100):
+        status = NO_SCALE
     elif big_a / scale > limits[1]:
         status = TOO_LIGHT
     elif angular and big_a / scale < limits[2]:
