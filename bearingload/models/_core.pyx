@@ -1230,7 +1230,7 @@ cdef void true_tangent(const Case *cs, Point *pt, const double *kappa, double *w
     """The tangent of the ring forces at the point ``pt`` with the stiffness deviations
     ``kappa`` (scaled, every component free): d(generalised force)/d(displacement), with the
     stiffness's change with the contact angle (w3) where K follows it; ``w1``, ``w2``, ``w3``
-    work arrays of z (``physical`` puts it in physical units). ``sym``: where given, gets the
+    work arrays of z (``physical_case`` puts it in physical units). ``sym``: where given, gets the
     symmetric part (the tangent without the w3 term: ``tangent``'s sum before it adds that).
     ``twin``, ``slope``: where given, the balls' mirror twins and a work array of z: a ball
     whose cos(alpha) and cos(alpha) - 1 are its twin's to the bit takes the twin's slope."""
@@ -1300,19 +1300,6 @@ cdef bint physical_case(double *t, double factor, double radius, bint mirrored,
     return True
 
 
-def physical(double[:, :, ::1] t, const double[::1] factor, const double[::1] radius,
-             const unsigned char[::1] mirrored, int z):
-    """The scaled tangents ``t`` (n, 5, 5, in place) in physical units (``physical_case``);
-    returns the cases where an entry overflows (n,) uint8."""
-    cdef Py_ssize_t n = t.shape[0], k
-    bad_a = np.zeros(n, dtype=np.uint8)
-    cdef unsigned char[::1] bad = bad_a
-    with nogil:
-        for k in range(n):
-            bad[k] = not physical_case(&t[k, 0, 0], factor[k], radius[k], mirrored[k], z)
-    return bad_a
-
-
 cdef bint same_weights(const Case *cs, const Work *wk) noexcept nogil:
     """Whether ``holding`` would weigh every ball as ``stiffness`` did (wk.w1, wk.w2): a ball
     whose load exceeds the tolerance alike (its distance positive where it turns), any other
@@ -1361,7 +1348,7 @@ cdef bint maybe_flat(const Case *cs, const double *h) noexcept nogil:
     caught; the caller decides on the eigenvalues)."""
     cdef double m[25]
     cdef int idx[5]
-    cdef int n = 0, i, k, step, best, t
+    cdef int n = 0, i, k, step, best
     cdef double dmax = 0.0, piv
     for i in range(5):
         if not cs.locked[i]:
@@ -3543,7 +3530,7 @@ cdef void lm_step(const double *jac, const double *res, double mu, double *step)
     non-finite parts 0. [mm]"""
     cdef double a[25]
     cdef double b[5]
-    cdef double top = 0.0, lift
+    cdef double top = 0.0
     cdef int i, k, l
     if mu == 0.0:
         solve5(jac, res, step)
@@ -4556,13 +4543,13 @@ def combined_call(int z, const double[:, ::1] cols, bint angular, bint imposed,
 
 cdef bint result_case(const double *v, const double *case_in, Py_ssize_t m, const double *gen,
                       const double **bl, Py_ssize_t step, const double *kappa, int z,
-                      bint imposed, double *tangent, int mirrored, double *out, double *ball,
+                      bint imposed, double *tangent, bint mirrored, double *out, double *ball,
                       Py_ssize_t n) noexcept nogil:
     """One case of ``combined_result``: its position ``v`` (5), its column of ``case_in``
     (``m`` apart), forces ``gen`` (5), the ball arrays it reads (``bl``: the approach less p,
     cos and sin of the contact angle, the scaled load, ``step`` apart along the balls), its
-    stiffness deviations ``kappa`` (z); its tangent made physical in place unless ``mirrored``
-    is -1; writes its column of the case rows (``n`` apart) and its ball rows (``n z`` apart).
+    stiffness deviations ``kappa`` (z); its tangent made physical in place (``mirrored``: as
+    ``physical_case``); writes its column of the case rows (``n`` apart) and its ball rows (``n z`` apart).
     Returns 0 where the physical stiffness overflows."""
     cdef double w[5]
     cdef double sc = case_in[m], lever = case_in[2 * m], sin0, deg = 180.0 / PI
@@ -4584,8 +4571,6 @@ cdef bint result_case(const double *v, const double *case_in, Py_ssize_t m, cons
         ball[2 * nz + j] = (case_in[9 * m] + bl[0][j * step]) * sc
         ball[3 * nz + j] = (1.0 + kappa[j]) * case_in[10 * m]
         ball[4 * nz + j] = case_in[6 * m] * bl[3][j * step]
-    if mirrored < 0:
-        return 1
     return physical_case(tangent, case_in[6 * m] / sc, lever, mirrored, z)
 
 
@@ -4600,18 +4585,16 @@ def combined_result(const double[:, ::1] v, const double[:, ::1] case_in,
     answer (13, n, z), as ``solve``'s point (of them the approach less p, the cos and sin of
     the contact angle and the scaled load are read); the stiffness deviations (n, z);
     ``imposed``: the tilt imposed, the moment is the tilt's reaction R_i F gen_t; the stiffness
-    ``tangent`` (n, 5, 5), scaled where ``mirrored`` (n,) uint8 says which cases are mirrored
-    about the load line (then made physical in place, ``physical_case`` with F/s and R_i), or
-    physical already where ``mirrored`` is empty (left as it is).
+    ``tangent`` (n, 5, 5), scaled, made physical in place (``physical_case`` with F/s and R_i;
+    ``mirrored`` (n,) uint8: the cases mirrored about the load line).
 
     Returns the case rows (8, n) = x, y, axial (from the centred rings, or for one-sided
     contact from the zero-load position), tilt, tilt_cross [°], free contact angle [°], axial
     play (0 one-sided), moment; the ball rows (5, n, z) = phi_j [°], contact angle [°],
     approach [mm], stiffness [N/mm^1.5], load [N]; and the cases whose physical stiffness
-    overflows (n,) uint8 (0 where left as it is)."""
+    overflows (n,) uint8."""
     cdef Py_ssize_t n = v.shape[0], k
     cdef int z = <int> kappa.shape[1]
-    cdef bint scaled = mirrored.shape[0] == n and n > 0
     cases_a, balls_a, bad_a = np.empty((8, n)), np.empty((5, n, z)), np.zeros(n, dtype=np.uint8)
     cdef unsigned char[::1] bad = bad_a
     cdef double[:, ::1] out = cases_a
@@ -4624,7 +4607,7 @@ def combined_result(const double[:, ::1] v, const double[:, ::1] case_in,
                 &balls[8, k, 0]
             bad[k] = not result_case(&v[k, 0], &case_in[0, k], n, &gen[k, 0], bl, step,
                                      &kappa[k, 0], z, imposed, &tangent[k, 0, 0],
-                                     mirrored[k] if scaled else -1, &out[0, k], &ball[0, k, 0], n)
+                                     mirrored[k], &out[0, k], &ball[0, k, 0], n)
     return cases_a, balls_a, bad_a
 
 
