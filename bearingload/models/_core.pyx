@@ -1,5 +1,7 @@
 # cython: language_level=3
-"""The compiled core of the ball-bearing ring equilibrium (C-level Cython).
+"""The compiled core of the ball-bearing ring equilibrium (C-level Cython): its build, its
+kernels over the structs of ``_core.pxd``, its batches and statuses, and what it solves for
+each model: docs/architecture.md, "The compiled core".
 
 One case is one C call: the scaled problem of :mod:`bearingload.models._combined_ring` (its
 docstring gives the model, the scaled units and why each piece keeps its digits) solved by
@@ -10,19 +12,6 @@ docstring gives the model, the scaled units and why each piece keeps its digits)
    the ring position and the ball approaches in double-double (``minimise``);
 3. the stiffness updated to the contact angles and step 2 repeated until the update leaves the
    equilibrium (``solve_case``).
-
-The preloaded pair of :mod:`bearingload.models.pair` (:func:`solve_pair`, the last section)
-reuses the ball kernels for each of its two bearings, with its own two-stage Newton over the
-shaft's position.
-
-A batch is a C loop over cases, each case with its own work space: a case's answer is the same
-bits alone or in any batch. The kernels are ``noexcept nogil`` functions over the structs of
-``_core.pxd``; no Python object enters them. The Python wrapper (:func:`solve`) takes typed
-memoryviews, allocates the outputs and returns a status per case (``OK``, ``NOT_CONVERGED``:
-the stiffness updates ran out); the caller measures the residual and names the inputs.
-
-Double-double arithmetic needs every product rounded on its own: the build compiles this file
-with ``-ffp-contract=off`` (setup.py); the exact products use ``fma``.
 """
 
 from libc.math cimport (asin, atan, atan2, cbrt, copysign, cos, exp, expm1, fabs, fma, fmod, hypot,
@@ -679,93 +668,6 @@ cdef void solve5(const double *a, const double *b, double *x) noexcept nogil:
         x[i] = t / m[6 * i]
 
 
-cdef inline bint minus_zero(double v) noexcept nogil:
-    return v == 0 and copysign(1.0, v) < 0
-
-
-cdef bint held_form(const Case *cs, const double *a, const double *b) noexcept nogil:
-    """Whether every held row and column of the 5x5 ``a`` is +0 but its diagonal (positive,
-    finite) and ``b`` is 0 there: ``tangent``'s Newton matrix (``solve_held``)."""
-    cdef int i, k
-    for i in range(5):
-        if not cs.locked[i]:
-            continue
-        if not (b[i] == 0 and a[6 * i] > 0 and isfinite(a[6 * i])):
-            return False
-        for k in range(5):
-            if k != i and not (a[5 * i + k] == 0 and a[5 * k + i] == 0
-                               and copysign(1.0, a[5 * i + k]) > 0
-                               and copysign(1.0, a[5 * k + i]) > 0):
-                return False
-    return True
-
-
-cdef void solve_held(const Case *cs, const double *a, const double *b, double *x) noexcept nogil:
-    """``solve5`` of a Newton matrix whose held components are unit rows and columns
-    (``held_form``), to the bit, with the arithmetic of the free rows and columns alone.
-    There, solve5's operations on a held row or column are +-0 (a +0 over a finite nonzero
-    pivot, times finite numbers): they change no free number but the sign of a zero of the
-    right-hand side or of a back substitution's sum (x - (-0) turns -0 into +0); those signs
-    are followed here. Where a pivot is 0 or not finite, or an x not finite (those +-0 would
-    be NaN there), solve5 itself."""
-    cdef double m[25]
-    cdef double r[5]
-    cdef double t
-    cdef int i, k, col, piv
-    if not held_form(cs, a, b):
-        solve5(a, b, x)
-        return
-    memcpy(m, a, 25 * sizeof(double))
-    memcpy(r, b, 5 * sizeof(double))
-    for col in range(5):
-        if cs.locked[col]:  # r[i] -= (+0 / its diagonal) r[col], each row below
-            if minus_zero(r[col]):
-                for i in range(col + 1, 5):
-                    if minus_zero(r[i]):
-                        r[i] = 0.0
-            continue
-        piv = col
-        for i in range(col + 1, 5):
-            if not cs.locked[i] and fabs(m[5 * i + col]) > fabs(m[5 * piv + col]):
-                piv = i
-        if piv != col:
-            swap_rows(m, r, col, piv)
-        if not (m[6 * col] != 0 and isfinite(m[6 * col])):
-            solve5(a, b, x)
-            return
-        for i in range(col + 1, 5):
-            if cs.locked[i]:  # r[i] -= (+0 / pivot: its sign) r[col]
-                if minus_zero(r[i]) and (m[6 * col] < 0) != (copysign(1.0, r[col]) < 0):
-                    r[i] = 0.0
-                continue
-            t = m[5 * i + col] / m[5 * col + col]
-            for k in range(col, 5):
-                if not cs.locked[k]:
-                    m[5 * i + k] -= t * m[5 * col + k]
-            r[i] -= t * r[col]
-    if not back_held(cs, m, r, x):
-        solve5(a, b, x)
-
-
-cdef bint back_held(const Case *cs, const double *m, const double *r, double *x) noexcept nogil:
-    """The back substitution of ``solve_held`` (a held row's or column's term +0 x_k, its
-    sign followed); whether every x is finite."""
-    cdef int i, k
-    cdef double t
-    for i in range(4, -1, -1):
-        t = r[i]
-        for k in range(i + 1, 5):
-            if cs.locked[i] or cs.locked[k]:  # t -= +0 x[k]: -0 turns +0 where x[k] < 0
-                if minus_zero(t) and copysign(1.0, x[k]) < 0:
-                    t = 0.0
-            else:
-                t -= m[5 * i + k] * x[k]
-        x[i] = t / m[6 * i]
-        if not isfinite(x[i]):
-            return False
-    return True
-
-
 cdef void cap_step(const Case *cs, double *step) noexcept nogil:
     """One-sided cases: the step shortened so that no axial part (a, t, t_c) exceeds A (a ball
     at u < 0 has no stiffness along its groove; _combined_ring.cap_step)."""
@@ -826,7 +728,7 @@ cdef int work_open(int z, Work *wk) noexcept nogil:
     """The work space of a case of z balls, one block (its first stage's too: ``fast``, the
     two states of ``solve_case`` and the balls' mirror twins)."""
     cdef double *m = <double *> malloc(
-        (3 * BALL_ARRAYS + 9 + 2 * FAST_ARRAYS) * z * sizeof(double) + 3 * z * sizeof(int))
+        (3 * BALL_ARRAYS + 9 + 2 * FAST_ARRAYS) * z * sizeof(double) + z * sizeof(int))
     if m == NULL:
         return 0
     wk.block = m
@@ -944,7 +846,7 @@ cdef void newton_step(const Case *cs, Work *wk, const double *grad, double *step
     reg = 1e-13 * trace + 1e-300
     for i in range(5):
         hess[6 * i] += reg
-    solve_held(cs, hess, minus, step)
+    solve5(hess, minus, step)
     cap_step(cs, step)
     if not trace > held:  # no ball in contact: move along the load to the first contact
         to_contact(cs, pt, step)
@@ -1010,7 +912,7 @@ cdef void line_search(const Case *cs, Work *wk, const double *step, const double
         if slow and (not ok or wk.trial.res > 0.9 * res):
             for i in range(5):
                 left[i] = 0.0 if cs.locked[i] else cs.f[i] - wk.trial.gen[i]
-            solve_held(cs, hess, left, fix)
+            solve5(hess, left, fix)
             cap_step(cs, fix)
             for i in range(5):
                 w2[i] = w[i] + fix[i]
@@ -1093,14 +995,12 @@ ctypedef struct Fast:
     double *kappa
     double *u
     const int *twin  # an earlier ball to compare with (``mirror_twins``), or -1
-    int *todo        # work space (z): the balls whose stiffness is interpolated
-    int *src         # work space (z): the ball whose values a ball takes (itself or its twin)
     double grad[5]
     double res
     double energy
 
 
-cdef void fast_on(double *block, int z, const int *twin, int *scratch, Fast *st) noexcept nogil:
+cdef void fast_on(double *block, int z, const int *twin, Fast *st) noexcept nogil:
     st.ca = block
     st.sa = block + z
     st.rho = block + 2 * z
@@ -1110,8 +1010,6 @@ cdef void fast_on(double *block, int z, const int *twin, int *scratch, Fast *st)
     st.kappa = block + 6 * z
     st.u = block + 7 * z
     st.twin = twin
-    st.todo = scratch
-    st.src = scratch + z
 
 
 cdef void mirror_twins(const Case *cs, int *twin) noexcept nogil:
@@ -1130,7 +1028,7 @@ cdef void mirror_twins(const Case *cs, int *twin) noexcept nogil:
         twin[j] = p if 0 <= p < j and cs.c[p] == cs.c[j] and cs.s[p] == -cs.s[j] else -1
 
 
-cdef inline bint fast_ball(const Case *cs, Fast *st, int j, double rho, double u) noexcept nogil:
+cdef inline void fast_ball(const Case *cs, Fast *st, int j, double rho, double u) noexcept nogil:
     """Ball j of ``fast_state`` at the groove-centre separations (rho, u): its contact
     direction, approach, stiffness (following the contact angle) and load."""
     cdef double rp = max(rho, 0.0), d, safe, delta
@@ -1143,8 +1041,8 @@ cdef inline bint fast_ball(const Case *cs, Fast *st, int j, double rho, double u
     st.d[j] = d
     delta = max(d - cs.a_hat, 0.0)
     st.root[j] = sqrt(delta)
-    st.kappa[j] = 0.0
-    return delta > 0 and cs.curve != NULL
+    st.kappa[j] = curve_kappa(cs, st.ca[j], -st.sa[j] * st.sa[j] / (1.0 + st.ca[j])) if delta > 0 \
+        else 0.0
 
 
 cdef inline void fast_copy(Fast *st, int p, int j) noexcept nogil:
@@ -1155,37 +1053,13 @@ cdef inline void fast_copy(Fast *st, int p, int j) noexcept nogil:
     st.u[j] = st.u[p]
     st.d[j] = st.d[p]
     st.root[j] = st.root[p]
-
-
-cdef void curve_pairs(const Case *cs, Fast *st, int n) noexcept nogil:
-    """``curve_kappa`` of the balls st.todo[:n] into st.kappa, two balls at a time (each
-    ball's sums in the order of the nodes, the same bits; the two chains of additions
-    interleaved), an odd last one alone."""
-    cdef int i, k, j0, j1
-    cdef double t0, t1, a0, a1, n0 = 0.0, n1 = 0.0, d0 = 0.0, d1 = 0.0
-    for i in range(0, n - 1, 2):
-        j0, j1 = st.todo[i], st.todo[i + 1]
-        t0 = 2.0 * min(max(st.ca[j0], 0.0), 1.0) - 1.0
-        t1 = 2.0 * min(max(st.ca[j1], 0.0), 1.0) - 1.0
-        n0 = n1 = d0 = d1 = 0.0
-        for k in range(NODES):
-            a0 = cs.node_w[k] / (t0 - cs.node_x[k])
-            a1 = cs.node_w[k] / (t1 - cs.node_x[k])
-            n0 += a0 * cs.curve[k]
-            d0 += a0
-            n1 += a1 * cs.curve[k]
-            d1 += a1
-        st.kappa[j0] = (-st.sa[j0] * st.sa[j0] / (1.0 + st.ca[j0])) * n0 / d0
-        st.kappa[j1] = (-st.sa[j1] * st.sa[j1] / (1.0 + st.ca[j1])) * n1 / d1
-    if n % 2:
-        j0 = st.todo[n - 1]
-        st.kappa[j0] = curve_kappa(cs, st.ca[j0], -st.sa[j0] * st.sa[j0] / (1.0 + st.ca[j0]))
+    st.kappa[j] = st.kappa[p]
 
 
 cdef void fast_state(const Case *cs, const double *v, Fast *st) noexcept nogil:
     """The balls, forces, residual and potential at v in plain double precision, the stiffness
     following the contact angles."""
-    cdef int j, i, p, n = 0
+    cdef int j, i, p
     cdef double rho, u, delta, gen[5], size[5], err[5], work = 0.0, energy = 0.0
     cdef double qc, qs
     for i in range(5):
@@ -1199,16 +1073,10 @@ cdef void fast_state(const Case *cs, const double *v, Fast *st) noexcept nogil:
         if cs.one_sided:
             u = max(u, 0.0)
         p = st.twin[j]
-        st.src[j] = j
         if p >= 0 and same_bits(st.rho[p], rho) and same_bits(st.u[p], u):
             fast_copy(st, p, j)  # (every value here a function of (rho, u) alone)
-            st.src[j] = p
-        elif fast_ball(cs, st, j, rho, u):
-            st.todo[n] = j
-            n += 1
-    curve_pairs(cs, st, n)
-    for j in range(cs.z):
-        st.kappa[j] = st.kappa[st.src[j]]
+        else:
+            fast_ball(cs, st, j, rho, u)
         delta = max(st.d[j] - cs.a_hat, 0.0)
         st.q[j] = (1.0 + st.kappa[j]) * delta * st.root[j]
         energy += st.q[j] * delta
@@ -1250,7 +1118,7 @@ cdef int fast_newton(const Case *cs, Work *wk, Fast *cur, Fast *trial, double *v
             minus[i] = -cur.grad[i]
         for i in range(5):
             hess[6 * i] += 1e-13 * trace
-        solve_held(cs, hess, minus, step)
+        solve5(hess, minus, step)
         cap_step(cs, step)
         slope = 0.0
         for i in range(5):
@@ -1284,7 +1152,7 @@ cdef void true_tangent(const Case *cs, Point *pt, const double *kappa, double *w
     """The tangent of the ring forces at the point ``pt`` with the stiffness deviations
     ``kappa`` (scaled, every component free): d(generalised force)/d(displacement), with the
     stiffness's change with the contact angle (w3) where K follows it; ``w1``, ``w2``, ``w3``
-    work arrays of z (``physical`` puts it in physical units). ``sym``: where given, gets the
+    work arrays of z (``physical_case`` puts it in physical units). ``sym``: where given, gets the
     symmetric part (the tangent without the w3 term: ``tangent``'s sum before it adds that).
     ``twin``, ``slope``: where given, the balls' mirror twins and a work array of z: a ball
     whose cos(alpha) and cos(alpha) - 1 are its twin's to the bit takes the twin's slope."""
@@ -1354,19 +1222,6 @@ cdef bint physical_case(double *t, double factor, double radius, bint mirrored,
     return True
 
 
-def physical(double[:, :, ::1] t, const double[::1] factor, const double[::1] radius,
-             const unsigned char[::1] mirrored, int z):
-    """The scaled tangents ``t`` (n, 5, 5, in place) in physical units (``physical_case``);
-    returns the cases where an entry overflows (n,) uint8."""
-    cdef Py_ssize_t n = t.shape[0], k
-    bad_a = np.zeros(n, dtype=np.uint8)
-    cdef unsigned char[::1] bad = bad_a
-    with nogil:
-        for k in range(n):
-            bad[k] = not physical_case(&t[k, 0, 0], factor[k], radius[k], mirrored[k], z)
-    return bad_a
-
-
 cdef bint same_weights(const Case *cs, const Work *wk) noexcept nogil:
     """Whether ``holding`` would weigh every ball as ``stiffness`` did (wk.w1, wk.w2): a ball
     whose load exceeds the tolerance alike (its distance positive where it turns), any other
@@ -1415,7 +1270,7 @@ cdef bint maybe_flat(const Case *cs, const double *h) noexcept nogil:
     caught; the caller decides on the eigenvalues)."""
     cdef double m[25]
     cdef int idx[5]
-    cdef int n = 0, i, k, step, best, t
+    cdef int n = 0, i, k, step, best
     cdef double dmax = 0.0, piv
     for i in range(5):
         if not cs.locked[i]:
@@ -1619,8 +1474,8 @@ cdef int solve_case(const Case *cs, const double *v0, bint given, double *vh, do
     cdef double end_res, change, k_new
     cdef Point *pt = &wk.pt
     mirror_twins(cs, wk.twin)
-    fast_on(wk.fast, cs.z, wk.twin, wk.twin + cs.z, &cur)  # (one scratch: a state at a time)
-    fast_on(wk.fast + FAST_ARRAYS * cs.z, cs.z, wk.twin, wk.twin + cs.z, &trial)
+    fast_on(wk.fast, cs.z, wk.twin, &cur)
+    fast_on(wk.fast + FAST_ARRAYS * cs.z, cs.z, wk.twin, &trial)
     for i in range(5):
         vh[i] = v0[i]
         vl[i] = 0.0
@@ -1687,25 +1542,6 @@ cdef bint ball_directions(int z, double cage, double snap, double *c, double *s)
     return mirror
 
 
-def held_solves(const double[:, ::1] a, const double[:, ::1] b,
-                const unsigned char[:, ::1] held):
-    """``solve5`` and ``solve_held`` of n 5x5 systems ``a`` (n, 25, row-major), ``b`` (n, 5)
-    with the components ``held`` (n, 5) uint8: their x (2, n, 5), which are to be the same
-    bits (tests/test_core_held_solve.py)."""
-    cdef Py_ssize_t n = a.shape[0], k
-    cdef Case cs
-    cdef int i
-    out_a = np.empty((2, n, 5))
-    cdef double[:, :, ::1] out = out_a
-    with nogil:
-        for k in range(n):
-            for i in range(5):
-                cs.locked[i] = held[k, i]
-            solve5(&a[k, 0], &b[k, 0], &out[0, k, 0])
-            solve_held(&cs, &a[k, 0], &b[k, 0], &out[1, k, 0])
-    return out_a
-
-
 def directions(int z, const double[::1] cage, double snap):
     """cos and sin of every ball's angle (n, z) each and which cases are symmetric about the
     load line (n,) bool, for the cage angles ``cage`` (n,) [°] (``ball_directions``)."""
@@ -1721,28 +1557,34 @@ def directions(int z, const double[::1] cage, double snap):
     return c_a, s_a, mirror_a
 
 
+cdef void scaled_case(int z, const double *c, const double *s, double big_a, double g,
+                      double scale, double t_imp, double *c2, double *s2, double *out,
+                      Py_ssize_t m) noexcept nogil:
+    """One case of ``scaled_problem`` (``c2``, ``s2`` may be ``c``, ``s``; ``out`` its column
+    of the six, ``m`` apart)."""
+    cdef int j
+    cdef double a = big_a / scale, p = (-g if -g > 0.0 else 0.0) / scale
+    for j in range(z):
+        c2[j] = 0.0 if fabs(c[j]) < 1e-15 else c[j]
+        s2[j] = 0.0 if fabs(s[j]) < 1e-15 else s[j]
+    out[0], out[m], out[2 * m] = a, p, (g if g > 0.0 else 0.0) / scale
+    two_sum(a, p, &out[3 * m], &out[4 * m])
+    out[5 * m] = t_imp / scale
+
+
 def scaled_problem(const double[:, ::1] c, const double[:, ::1] s, const double[::1] big_a,
                    const double[::1] g, const double[::1] scale, const double[::1] t_imp):
     """The scaled problem of n cases (_combined_ring.Problem.make): the ball directions ``c``,
     ``s`` (n, z) with those below 1e-15 made 0, and A, p = max(-g, 0), max(g, 0), B = A + p in
     double-double (Knuth's two-sum) and the imposed tilt ``t_imp``, each over ``scale`` (n,)."""
-    cdef Py_ssize_t n = c.shape[0], z = c.shape[1], k, j
+    cdef Py_ssize_t n = c.shape[0], z = c.shape[1], k
     c_a, s_a = np.empty((n, z)), np.empty((n, z))
     out_a = np.empty((6, n))
     cdef double[:, ::1] c2 = c_a, s2 = s_a, out = out_a
-    cdef double a, p, hi, bb
     with nogil:
         for k in range(n):
-            for j in range(z):
-                c2[k, j] = 0.0 if fabs(c[k, j]) < 1e-15 else c[k, j]
-                s2[k, j] = 0.0 if fabs(s[k, j]) < 1e-15 else s[k, j]
-            a = big_a[k] / scale[k]
-            p = (-g[k] if -g[k] > 0.0 else 0.0) / scale[k]
-            hi = a + p
-            bb = hi - a
-            out[0, k], out[1, k], out[2, k] = a, p, (g[k] if g[k] > 0.0 else 0.0) / scale[k]
-            out[3, k], out[4, k] = hi, (a - (hi - bb)) + (p - bb)
-            out[5, k] = t_imp[k] / scale[k]
+            scaled_case(<int> z, &c[k, 0], &s[k, 0], big_a[k], g[k], scale[k], t_imp[k],
+                        &c2[k, 0], &s2[k, 0], &out[0, k], n)
     return c_a, s_a, out_a
 
 
@@ -1846,6 +1688,24 @@ cdef void answers_at(Answers *a, Py_ssize_t n, double[:, :, ::1] v, double[:, :,
         a.its, a.status, a.flags = &its[0], &status[0], &flags[0, 0]
 
 
+cdef void case_at(Case *cs, int z, const double *c, const double *s, const double *scalars,
+                  Py_ssize_t n, const double *f, const unsigned char *locked, int one_sided,
+                  const double *curve) noexcept nogil:
+    """``cs`` the case of the ball directions ``c``, ``s`` (z), ``scalars`` = (a_hat, pre, gap,
+    b_hi, b_lo, t_imp) ``n`` apart, the forces ``f`` and held components ``locked`` (5), the
+    stiffness curve's values ``curve`` (NULL: constant K); its limits and nodes the caller's."""
+    cdef int i
+    cs.z, cs.c, cs.s, cs.one_sided = z, c, s, one_sided
+    cs.a_hat, cs.pre, cs.gap = scalars[0], scalars[n], scalars[2 * n]
+    cs.b_hi, cs.b_lo, cs.t_imp = scalars[3 * n], scalars[4 * n], scalars[5 * n]
+    for i in range(5):
+        cs.f[i] = f[i]
+        cs.locked[i] = locked[i]
+    cs.deviation = cs.pre > 0 and z >= 2
+    cs.q0 = cs.pre * sqrt(cs.pre) if cs.deviation else 0.0
+    cs.curve = curve
+
+
 cdef void solve_into(Case *cs, const int *held, const double *v0, bint given, Py_ssize_t k,
                      Answers *a) noexcept nogil:
     """Case ``k`` solved (``solve_case``) from ``v0`` where ``given``, its answer, tangent,
@@ -1910,33 +1770,23 @@ def solve(const double[:, ::1] c, const double[:, ::1] s, const double[:, ::1] l
     cs.lim = LIMITS
     cs.lim.max_iterations = max_iterations
     cs.lim.fast_steps = first_stage_steps
+    cs.node_x, cs.node_w = &node_x[0], &node_w[0]
     with nogil:
         for k in range(n):
-            cs.z, cs.c, cs.s, cs.one_sided = z, &c[k, 0], &s[k, 0], one_sided[k]
-            cs.a_hat, cs.pre, cs.gap = lengths[0, k], lengths[1, k], lengths[2, k]
-            cs.b_hi, cs.b_lo, cs.t_imp = lengths[3, k], lengths[4, k], lengths[5, k]
+            case_at(&cs, z, &c[k, 0], &s[k, 0], &lengths[0, k], n, &f[k, 0], &locked[k, 0],
+                    one_sided[k], &curve[k, 0] if has_curve else NULL)
             for i in range(5):
-                cs.f[i] = f[k, i]
-                cs.locked[i] = locked[k, i]
                 held[i] = imposed[k, i]
-            cs.deviation = cs.pre > 0 and z >= 2
-            cs.q0 = cs.pre * sqrt(cs.pre) if cs.deviation else 0.0
-            cs.curve = &curve[k, 0] if has_curve else NULL
-            cs.node_x, cs.node_w = &node_x[0], &node_w[0]
             solve_into(&cs, held, &v0[k, 0], given[k], k, &a)
     return answers_of(arrays)
 
 
 # ----------------------------------------------------------------------- the preloaded pair
 #
-# Two bearings of the same balls on one rigid shaft (bearingload.models.pair): the shaft's
-# position v = (x, y, a, t, t_c) (scaled, t = R_i theta / s) about the pair's centre; bearing k
-# sees the local position L_k v plus its axial preload offset (``pair_local``), its balls are
-# evaluated as one ring of the single bearing above (``reference``, ``loads``, ``forces``), the
-# pair's forces are sum_k L_k^T f_k and its tangent sum_k L_k^T K_k L_k. Damped Newton in plain
-# doubles (``lean_newton``), then with the balls in double-double (``pair_newton``): the stiffness
-# at each ball's angle in the forces and the (non-symmetric) tangent, frozen in the potential of
-# the line search.
+# Two bearings of the same balls on one rigid shaft (bearingload.models.pair; its model and two
+# stages: docs/architecture.md, "The compiled core"): the shaft at v = (x, y, a, t, t_c) (scaled,
+# t = R_i theta / s) about the pair's centre, bearing k at L_k v plus its offset (``pair_local``);
+# in the double-double stage K at each ball's angle, frozen in the line search's potential.
 
 #: Newton steps of a case in the pair's double-double stage, and halvings of a step. [-]
 PAIR_MAX_STEPS = 400
@@ -2567,29 +2417,17 @@ ctypedef struct PairCase:
     unsigned char mirror
 
 
-cdef void pair_locks_case(bint tandem, bint mirror, double fr, double fa, double mm, double mc,
-                          unsigned char *held) noexcept nogil:
-    """Which of the shaft's (x, y, a, t, t_c) a pair's case holds at 0 (pair.held_components
-    states the symmetries): the mirror about the load line, the z-fold symmetry, the mirror
-    across the pair's mid-plane (not ``tandem``)."""
-    cdef bint no_moment = mm == 0 and mc == 0
-    cdef bint across = mirror and mc == 0
-    cdef bint radial = fr == 0 and no_moment
-    cdef bint axial = not tandem and fa == 0 and no_moment
-    held[0], held[1], held[2] = radial, across or radial, axial
-    held[3], held[4] = radial or axial, across or radial or axial
-
-
 def pair_locks(bint tandem, const unsigned char[::1] mirror, const double[:, ::1] loads):
-    """``pair_locks_case`` of n cases: ``mirror`` (n,) uint8, ``loads`` (4, n) = F_r, F_a, M,
-    M_c; returns held (n, 5) bool."""
+    """Which of the shaft's (x, y, a, t, t_c) n pair cases hold at 0 (``symmetry_locks``; its
+    mirror across the mid-plane not where ``tandem``): ``mirror`` (n,) uint8, ``loads`` (4, n)
+    = F_r, F_a, M, M_c; returns held (n, 5) bool."""
     cdef Py_ssize_t n = mirror.shape[0], k
     held_a = np.empty((n, 5), dtype=bool)
     cdef unsigned char[:, ::1] held = held_a.view(np.uint8)
     with nogil:
         for k in range(n):
-            pair_locks_case(tandem, mirror[k], loads[0, k], loads[1, k], loads[2, k],
-                            loads[3, k], &held[k, 0])
+            symmetry_locks(3, mirror[k], loads[0, k], loads[1, k], loads[2, k], loads[3, k],
+                           0.0, False, tandem, &held[k, 0])  # (a pair's z >= 3)
     return held_a
 
 
@@ -2657,32 +2495,31 @@ ctypedef struct PairCall:
     int64_t *its           # (n)
 
 
-cdef int pair_curve(const PairCall *pc, Py_ssize_t k, const double *col,
-                    bint reuse) noexcept nogil:
-    """Case k's stiffness: the constant K of its stiffness row, or K_0 and the Hertz curve's
-    values from ``known`` where given, else by ``curve_of`` of its six (the case before's,
-    just before, where ``reuse``). Returns 0 where the core cannot set it up."""
-    cdef Py_ssize_t n = pc.n
-    cdef double *geo6 = &pc.geo6[6 * k]
+cdef int stiffness_of(const double *col, Py_ssize_t n, int row, const double *known,
+                      bint reuse, const double *node_x, double *geo6, double *k0,
+                      double *values) noexcept nogil:
+    """A case's stiffness (``col`` its column of the input rows, ``n`` apart): with ``values``
+    NULL the constant K of its row ``row``; else K_0 and the Hertz curve's values from
+    ``known`` (K_0 and the values) where not NULL, else by ``curve_of`` of its six ``geo6``
+    (the case before's, just before, where ``reuse``). Returns 0 where the core cannot."""
     cdef int i
-    if not pc.hertz:
-        pc.k0[k] = col[15 * n]
-    elif pc.known != NULL:
-        pc.k0[k] = pc.known[(1 + NODES) * k]
+    if values == NULL:
+        k0[0] = col[row * n]
+    elif known != NULL:
+        k0[0] = known[0]
         for i in range(NODES):
-            pc.values[NODES * k + i] = pc.known[(1 + NODES) * k + 1 + i]
+            values[i] = known[1 + i]
     else:
         geo6[0], geo6[1], geo6[2], geo6[3] = col[9 * n], col[10 * n], col[11 * n], col[12 * n]
         geo6[4], geo6[5] = col[7 * n], col[8 * n]
-        return curve_of(geo6, geo6 - 6 if reuse else geo6, reuse, pc.node_x, &pc.k0[k],
-                        &pc.values[NODES * k])
+        return curve_of(geo6, geo6 - 6 if reuse else geo6, reuse, node_x, k0, values)
     return 1
 
 
 cdef int pair_set_up(const PairCall *call, Py_ssize_t k, const double *col, bint reuse,
                      PairCase *pc) noexcept nogil:
     """Case k of ``pair_call`` set up (``col`` its column of the input rows, n apart): the
-    groove (``groove_case``; the tilt radius where given), the stiffness (``pair_curve``), the
+    groove (``groove_case``; the tilt radius where given), the stiffness (``stiffness_of``), the
     scaled problem (``problem_case``), the held components, the preload offset
     (``preload_offset``) and the start. Returns BAD_WIDTH, NO_GROOVE (also balls that overlap)
     or NO_CURVE where it cannot, else 0."""
@@ -2698,7 +2535,9 @@ cdef int pair_set_up(const PairCall *call, Py_ssize_t k, const double *col, bint
         return NO_GROOVE
     if not col[9 * n] <= col[10 * n] * limits[11] * (1.0 + 1e-12):  # (as ``set_up``)
         return NO_GROOVE
-    if not pair_curve(call, k, col, reuse):
+    if not stiffness_of(col, n, 15, &call.known[(1 + NODES) * k] if call.known != NULL else NULL,
+                        reuse, call.node_x, &call.geo6[6 * k], &call.k0[k],
+                        &call.values[NODES * k] if call.hertz else NULL):
         return NO_CURVE
     pc.k0 = call.k0[k]
     if col[16 * n] > 0:
@@ -2707,7 +2546,8 @@ cdef int pair_set_up(const PairCall *call, Py_ssize_t k, const double *col, bint
         load[i] = col[i * n]
     pc.status = problem_case(call.z, load, col[6 * n], pc.geo, pc.k0, False, False, limits, 1,
                              call.c, call.s, &pc.mirror, held, pr.whole.f, pc.out)
-    pair_locks_case(limits[7] > 0, pc.mirror, load[0], load[1], load[2], load[3], held)
+    symmetry_locks(call.z, pc.mirror, load[0], load[1], load[2], load[3], 0.0, False,
+                   limits[7] > 0, held)
     pair_case(pr, k, call.z, call.c, call.s, pc.out[1], pc.out[2], pc.out[3], pc.out[4],
               pc.out[5])
     pr.bear.curve = &call.values[NODES * k] if call.hertz else NULL
@@ -3615,7 +3455,7 @@ cdef void lm_step(const double *jac, const double *res, double mu, double *step)
     non-finite parts 0. [mm]"""
     cdef double a[25]
     cdef double b[5]
-    cdef double top = 0.0, lift
+    cdef double top = 0.0
     cdef int i, k, l
     if mu == 0.0:
         solve5(jac, res, step)
@@ -4309,29 +4149,7 @@ def solve_speed(const double[:, ::1] consts, const double[:, ::1] ki, const doub
 
 
 # ------------------------------------------------- the combined solver's set-up and results
-#
-# The Python side of bearingload.models.combined checks the inputs (bearingload.validate) and
-# refuses what does not fit; the arithmetic of a call, before and after ``solve``, is here: one
-# C loop over the cases for the whole batch, so a case's bits are the same alone or in a batch.
-
-cdef void case_at(Case *cs, int z, const double *c, const double *s, const double *scalars,
-                  Py_ssize_t n, const double *f, const unsigned char *locked,
-                  int one_sided) noexcept nogil:
-    """``cs`` the case of the ball directions ``c``, ``s`` (z), ``scalars`` = (a_hat, pre, gap,
-    b_hi, b_lo, t_imp) ``n`` apart, the forces ``f`` and held components ``locked`` (5),
-    constant K."""
-    cdef int i
-    cs.lim = LIMITS
-    cs.z, cs.c, cs.s, cs.one_sided = z, c, s, one_sided
-    cs.a_hat, cs.pre, cs.gap = scalars[0], scalars[n], scalars[2 * n]
-    cs.b_hi, cs.b_lo, cs.t_imp = scalars[3 * n], scalars[4 * n], scalars[5 * n]
-    for i in range(5):
-        cs.f[i] = f[i]
-        cs.locked[i] = locked[i]
-    cs.deviation = cs.pre > 0 and z >= 2
-    cs.q0 = cs.pre * sqrt(cs.pre) if cs.deviation else 0.0
-    cs.curve = NULL
-
+# (bearingload.models.combined checks and refuses; docs/architecture.md, "The compiled core")
 
 def points(const double[:, ::1] c, const double[:, ::1] s, const double[:, ::1] scalars,
            const double[:, ::1] f, const unsigned char[:, ::1] locked,
@@ -4354,10 +4172,11 @@ def points(const double[:, ::1] c, const double[:, ::1] s, const double[:, ::1] 
     if block == NULL:
         raise MemoryError()
     point_on(block, z, &pt)
+    cs.lim = LIMITS
     with nogil:
         for k in range(n):
             case_at(&cs, z, &c[k, 0], &s[k, 0], &scalars[0, k], n, &f[k, 0], &locked[k, 0],
-                    one_sided[k])
+                    one_sided[k], NULL)
             fresh(&cs, &vh[k, 0], &vl[k, 0], &kappa[k, 0], &pt)
             for i in range(BALL_ARRAYS):
                 for j in range(z):
@@ -4371,20 +4190,20 @@ def points(const double[:, ::1] c, const double[:, ::1] s, const double[:, ::1] 
 
 cpdef enum SetupStatus:
     SET_UP = 0        # the case's scaled problem is set up
-    LOAD_OVERFLOW = 1 # a moment over its lever beyond the largest double
-    NO_LOAD = 2       # no load at all
-    SCALE_HUGE = 3    # the one-ball approach (F/K)^(2/3) beyond 1e100 mm
-    TOO_LIGHT = 4     # A over the approach beyond the combined solver's ratio
-    TOO_HEAVY = 5     # an angular-contact case's A over the approach below its ratio
+    NO_SCALE = 1      # no load, or the load or the one-ball approach (F/K)^(2/3) beyond range
+    TOO_LIGHT = 2     # A over the approach beyond the combined solver's ratio
+    TOO_HEAVY = 3     # an angular-contact case's A over the approach below its ratio
 
 
 cdef void symmetry_locks(int z, bint mirror, double fr, double fa, double mm, double mc,
-                         double t_imp, bint imposed, unsigned char *held) noexcept nogil:
+                         double t_imp, bint imposed, bint tandem,
+                         unsigned char *held) noexcept nogil:
     """Which of (x, y, a, t, t_c) a case holds (``held``, 5): the tilt where imposed, and the
-    components 0 by a symmetry of the case (combined.symmetry_locks states them)."""
+    components 0 by a symmetry of the case (combined.symmetry_locks states them; a pair's,
+    pair.held_components: its mirror across the mid-plane, not a ``tandem`` pair's)."""
     cdef bint no_tilt = mm == 0 and mc == 0 and t_imp == 0
     cdef bint across = mirror and mc == 0
-    cdef bint axial = fa == 0 and no_tilt
+    cdef bint axial = not tandem and fa == 0 and no_tilt
     cdef bint radial = fr == 0 and no_tilt and z >= 2
     held[0], held[1], held[2] = radial, across or radial, axial
     held[3], held[4] = axial or radial or imposed, across or axial or radial
@@ -4399,7 +4218,7 @@ def locks(int z, const unsigned char[::1] mirror, const double[:, ::1] loads, bi
     with nogil:
         for k in range(n):
             symmetry_locks(z, mirror[k], loads[0, k], loads[1, k], loads[2, k], loads[3, k],
-                           loads[4, k], imposed, &held[k, 0])
+                           loads[4, k], imposed, False, &held[k, 0])
     return held_a
 
 
@@ -4412,35 +4231,23 @@ cdef int problem_case(int z, const double *load, double cage, const double *leng
     same)."""
     cdef double fr = load[0], fa = load[n], mm = load[2 * n], mc = load[3 * n]
     cdef double big_a = length[0], g = length[n], radius = length[2 * n]
-    cdef double f_ref, scale, t_imp, a, p, hi, bb
-    cdef int j, status = SET_UP
+    cdef double f_ref, scale, t_imp
+    cdef int status = SET_UP
     f_ref = max(max(max(fr, fabs(fa)), hypot(mm, mc) / radius), load[5 * n])
     scale = pow(f_ref / k_ref, 2.0 / 3.0)
-    if not isfinite(f_ref):
-        status = LOAD_OVERFLOW
-    elif not f_ref > 0:
-        status = NO_LOAD
-    elif not scale <= 1e100:
-        status = SCALE_HUGE
+    if not (isfinite(f_ref) and f_ref > 0 and scale <= 1e100):
+        status = NO_SCALE
     elif big_a / scale > limits[1]:
         status = TOO_LIGHT
     elif angular and big_a / scale < limits[2]:
         status = TOO_HEAVY
     t_imp = radius * (load[4 * n] * (PI / 180.0))
     mirror[0] = ball_directions(z, cage, limits[0], c, s)
-    for j in range(z):
-        c[j] = 0.0 if fabs(c[j]) < 1e-15 else c[j]
-        s[j] = 0.0 if fabs(s[j]) < 1e-15 else s[j]
-    symmetry_locks(z, mirror[0], fr, fa, mm, mc, t_imp, imposed, held)
+    scaled_case(z, c, s, big_a, g, scale, t_imp, c, s, &out[n], n)
+    symmetry_locks(z, mirror[0], fr, fa, mm, mc, t_imp, imposed, False, held)
     f[0], f[1], f[2] = fr / f_ref, 0.0 / f_ref, fa / f_ref
     f[3], f[4] = (mm / radius) / f_ref, (mc / radius) / f_ref
-    a = big_a / scale
-    p = (-g if -g > 0.0 else 0.0) / scale
-    hi = a + p
-    bb = hi - a
-    out[0], out[n], out[2 * n], out[3 * n] = scale, a, p, (g if g > 0.0 else 0.0) / scale
-    out[4 * n], out[5 * n] = hi, (a - (hi - bb)) + (p - bb)
-    out[6 * n], out[7 * n] = t_imp / scale, f_ref
+    out[0], out[7 * n] = scale, f_ref
     return status
 
 
@@ -4489,33 +4296,20 @@ cdef bint set_up(int z, const double *col, Py_ssize_t n, bint angular, bint impo
                  double *geo, double *geo6, double *k0, double *values, double *c, double *s,
                  unsigned char *mirror, unsigned char *held, double *f, double *out) noexcept nogil:
     """One case of ``combined_call`` set up: ``col`` its column of the 17 input rows (``n``
-    apart); ``geo`` its column of A, g, R_i, alpha_0 (``n`` apart); ``k0`` its K_0: with the
-    Hertz stiffness (``values`` not NULL), K_0 and the curve's values into ``k0``, ``values``
-    from ``known`` (K_0 and the values) where not NULL, else by ``curve_of`` of its six
-    ``geo6`` (the case before just before ``geo6``, ``k0``, ``values``, where ``reuse``); else
-    the constant K of its stiffness row; the rest as ``problem_case``. Returns 0 where the caller's general path must take the
-    call: a geometry ``groove`` refuses, balls that overlap (``limits[5]`` = sin(180°/z)),
+    apart); ``geo`` its column of A, g, R_i, alpha_0 (``n`` apart); ``k0`` its K_0 or
+    constant K and ``values`` its curve's (``stiffness_of``, row 16: the stiffness); the rest
+    as ``problem_case``. Returns 0 where the caller's general path must take the call: a geometry ``groove`` refuses, balls that overlap (``limits[5]`` = sin(180°/z)),
     fewer than 3 balls, an angular-contact moment to check, a Hertz set-up the core cannot
     make, a load ``problem_case`` refuses, or a light angular-contact case (A/s above
     ``limits[6]``)."""
-    cdef int i
     if not groove_case(&col[9 * n], n, angular, limits[3], limits[4], geo, n, True):
         return 0
     if z < 3 or not col[9 * n] <= col[10 * n] * limits[5] * (1.0 + 1e-12):
         return 0
     if angular and (col[3 * n] != 0 or (col[2 * n] != 0 and not imposed)):
         return 0
-    if values == NULL:
-        k0[0] = col[16 * n]
-    elif known != NULL:
-        k0[0] = known[0]
-        for i in range(NODES):
-            values[i] = known[1 + i]
-    else:
-        geo6[0], geo6[1], geo6[2], geo6[3] = col[9 * n], col[10 * n], col[11 * n], col[12 * n]
-        geo6[4], geo6[5] = col[7 * n], col[8 * n]
-        if not curve_of(geo6, geo6 - 6 if reuse else geo6, reuse, node_x, k0, values):
-            return 0
+    if not stiffness_of(col, n, 16, known, reuse, node_x, geo6, k0, values):
+        return 0
     if problem_case(z, col, col[6 * n], geo, k0[0], angular, imposed, limits, n, c, s,
                     mirror, held, f, out) != SET_UP:
         return 0
@@ -4581,17 +4375,10 @@ cdef bint solve_all(int z, Py_ssize_t n, const Setup *st, bint angular, bint imp
     for i in range(5):
         v0[i] = 0.0
         held[i] = imposed and i == 3
+    cs.node_x, cs.node_w = node_x, node_w
     for k in range(n):
-        cs.z, cs.c, cs.s, cs.one_sided = z, &st.c[z * k], &st.s[z * k], angular
-        cs.a_hat, cs.pre, cs.gap = st.out[n + k], st.out[2 * n + k], st.out[3 * n + k]
-        cs.b_hi, cs.b_lo, cs.t_imp = st.out[4 * n + k], st.out[5 * n + k], st.out[6 * n + k]
-        for i in range(5):
-            cs.f[i] = st.f[5 * k + i]
-            cs.locked[i] = st.held[5 * k + i]
-        cs.deviation = cs.pre > 0 and z >= 2
-        cs.q0 = cs.pre * sqrt(cs.pre) if cs.deviation else 0.0
-        cs.curve = &values[NODES * k] if values != NULL else NULL
-        cs.node_x, cs.node_w = node_x, node_w
+        case_at(&cs, z, &st.c[z * k], &st.s[z * k], &st.out[n + k], n, &st.f[5 * k],
+                &st.held[5 * k], angular, &values[NODES * k] if values != NULL else NULL)
         solve_into(&cs, held, v0, False, k, a)
         clean = clean and a.status[k] == OK and a.res[n + k] <= accept
         clean = clean and not a.flags[k] and not a.flags[n + k]
@@ -4681,13 +4468,13 @@ def combined_call(int z, const double[:, ::1] cols, bint angular, bint imposed,
 
 cdef bint result_case(const double *v, const double *case_in, Py_ssize_t m, const double *gen,
                       const double **bl, Py_ssize_t step, const double *kappa, int z,
-                      bint imposed, double *tangent, int mirrored, double *out, double *ball,
+                      bint imposed, double *tangent, bint mirrored, double *out, double *ball,
                       Py_ssize_t n) noexcept nogil:
     """One case of ``combined_result``: its position ``v`` (5), its column of ``case_in``
     (``m`` apart), forces ``gen`` (5), the ball arrays it reads (``bl``: the approach less p,
     cos and sin of the contact angle, the scaled load, ``step`` apart along the balls), its
-    stiffness deviations ``kappa`` (z); its tangent made physical in place unless ``mirrored``
-    is -1; writes its column of the case rows (``n`` apart) and its ball rows (``n z`` apart).
+    stiffness deviations ``kappa`` (z); its tangent made physical in place (``mirrored``: as
+    ``physical_case``); writes its column of the case rows (``n`` apart) and its ball rows (``n z`` apart).
     Returns 0 where the physical stiffness overflows."""
     cdef double w[5]
     cdef double sc = case_in[m], lever = case_in[2 * m], sin0, deg = 180.0 / PI
@@ -4709,8 +4496,6 @@ cdef bint result_case(const double *v, const double *case_in, Py_ssize_t m, cons
         ball[2 * nz + j] = (case_in[9 * m] + bl[0][j * step]) * sc
         ball[3 * nz + j] = (1.0 + kappa[j]) * case_in[10 * m]
         ball[4 * nz + j] = case_in[6 * m] * bl[3][j * step]
-    if mirrored < 0:
-        return 1
     return physical_case(tangent, case_in[6 * m] / sc, lever, mirrored, z)
 
 
@@ -4725,18 +4510,16 @@ def combined_result(const double[:, ::1] v, const double[:, ::1] case_in,
     answer (13, n, z), as ``solve``'s point (of them the approach less p, the cos and sin of
     the contact angle and the scaled load are read); the stiffness deviations (n, z);
     ``imposed``: the tilt imposed, the moment is the tilt's reaction R_i F gen_t; the stiffness
-    ``tangent`` (n, 5, 5), scaled where ``mirrored`` (n,) uint8 says which cases are mirrored
-    about the load line (then made physical in place, ``physical_case`` with F/s and R_i), or
-    physical already where ``mirrored`` is empty (left as it is).
+    ``tangent`` (n, 5, 5), scaled, made physical in place (``physical_case`` with F/s and R_i;
+    ``mirrored`` (n,) uint8: the cases mirrored about the load line).
 
     Returns the case rows (8, n) = x, y, axial (from the centred rings, or for one-sided
     contact from the zero-load position), tilt, tilt_cross [°], free contact angle [°], axial
     play (0 one-sided), moment; the ball rows (5, n, z) = phi_j [°], contact angle [°],
     approach [mm], stiffness [N/mm^1.5], load [N]; and the cases whose physical stiffness
-    overflows (n,) uint8 (0 where left as it is)."""
+    overflows (n,) uint8."""
     cdef Py_ssize_t n = v.shape[0], k
     cdef int z = <int> kappa.shape[1]
-    cdef bint scaled = mirrored.shape[0] == n and n > 0
     cases_a, balls_a, bad_a = np.empty((8, n)), np.empty((5, n, z)), np.zeros(n, dtype=np.uint8)
     cdef unsigned char[::1] bad = bad_a
     cdef double[:, ::1] out = cases_a
@@ -4749,7 +4532,7 @@ def combined_result(const double[:, ::1] v, const double[:, ::1] case_in,
                 &balls[8, k, 0]
             bad[k] = not result_case(&v[k, 0], &case_in[0, k], n, &gen[k, 0], bl, step,
                                      &kappa[k, 0], z, imposed, &tangent[k, 0, 0],
-                                     mirrored[k] if scaled else -1, &out[0, k], &ball[0, k, 0], n)
+                                     mirrored[k], &out[0, k], &ball[0, k, 0], n)
     return cases_a, balls_a, bad_a
 
 

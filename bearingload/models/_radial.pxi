@@ -185,8 +185,7 @@ def ring_forces(int z, const double[:] x, const double[:] y, const double[:] k,
 # symmetric cage (0 or half pitch) is half a ring folded onto the other (``w`` the multiplicity),
 # eta = 0: bracketed Newton on x alone (``ring_solve_sym``). Any other cage angle: damped Newton on
 # the convex potential in (xi, eta) with an Armijo line search, the first contact along a step
-# and the step in x alone where the line search stalls (``ring_solve_gen``). One case at a time, each
-# from its own data: a case's answer is the same bits alone or in any batch.
+# and the step in x alone where the line search stalls (``ring_solve_gen``).
 
 cdef double RADIAL_EPS = 2.220446049250313e-16
 

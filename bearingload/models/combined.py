@@ -2092,39 +2092,9 @@ def _refuse_edge(case: int, ball: int, given: dict) -> None:
     )
 
 
-def physical_tangent(
-    p: Problem, geo: _Geometry, tangent: np.ndarray, mirrored: np.ndarray
-) -> np.ndarray:
-    """The stiffness matrix of every case (n, 5, 5) from the core's tangent of the ring forces
-    (scaled, ``tangent`` (n, 5, 5)), in physical units: d(generalised force)/d(displacement),
-    rows (F_x, F_y, F_a [N], M, M_c [N mm]), columns (x, y, axial [mm], tilt, tilt_cross
-    [rad]), every component free (the held ones too: holding them is the solver's).
-
-    Ball j carries ``Q_j = K(alpha_j) delta_j^1.5`` along its contact normal ``g_j``; its part
-    of the matrix is ``dQ/d(delta) g g^T + Q/d h h^T + dQ/d(alpha) g h^T / d`` (``h`` the
-    direction in which the normal turns, ``d`` the distance of the groove centres; the last term
-    from the stiffness's change with the contact angle, about 1e-5 of the matrix on a 6205). The
-    matrix returned is that tangent, not quite symmetric (its symmetric part is the results'
-    ``stiffness_matrix_symmetric``); with a constant ``stiffness`` it is symmetric. In a
-    case symmetric about the load line (``mirrored``: the balls and the loads) the couplings of
-    (x, axial, tilt) with (y, tilt_cross) are 0, exactly rather than to rounding, as are the
-    couplings within the rounding of their sums over the balls (the core's ``physical``:
-    ``|K_ab| <= sqrt(K_aa K_bb)`` for this positive semi-definite matrix, so a coupling below 4
-    z eps of that does not follow the order of the summation)."""
-    t, radius = tangent.copy(), np.ascontiguousarray(geo.R_i, dtype=float)
-    if np.count_nonzero(_core.physical(t, p.f_ref / p.scale, radius, mirrored.view(np.uint8), p.z)):
-        refuse_overflow()
-    return t
-
-
 def refuse_overflow() -> None:
     """InputError: a lever of 1e300 mm, whose square times K overflows."""
     raise InputError("tilt_radius", "is so large that the tilting stiffness (lever^2 K) overflows")
-
-
-#: ``mirrored`` of :func:`distribution`'s call of the core's ``combined_result`` where the
-#: stiffness given is physical already.
-_PHYSICAL = np.zeros(0, dtype=np.uint8)
 
 
 def distribution(
@@ -2134,14 +2104,14 @@ def distribution(
     shape: tuple[int, ...],
     given: dict,
     misalignment: Any,
-    flags: tuple[np.ndarray, np.ndarray] | None = None,
-    mirrored: np.ndarray | None = None,
+    flags: tuple[np.ndarray, np.ndarray] | None,
+    mirrored: np.ndarray,
 ) -> CombinedDistribution:
     """Back to physical units and the case shape; ``flags``: the cases whose tilt the loads do
-    not determine and those whose negligible thrust was left out (default none). The stiffness
-    of ``answer`` is physical (:func:`physical_tangent`) or, given which cases are ``mirrored``,
-    the core's scaled tangent, made physical here in place (as :func:`physical_tangent`, in the
-    same loop as the other results)."""
+    not determine and those whose negligible thrust was left out (None: none). The stiffness
+    of ``answer`` is the core's scaled tangent, made physical here in place in the same loop
+    as the other results (the core's ``physical_case``: in a case ``mirrored`` about the load
+    line the couplings of (x, axial, tilt) with (y, tilt_cross) exactly 0)."""
     v, kappa, its, (block, gen), tangent = answer
     z = kappa.shape[1]
     case_in = result_inputs(p, geo, given["moment"], given["cage_angle"])
@@ -2153,7 +2123,7 @@ def distribution(
         np.ascontiguousarray(kappa),
         misalignment is not None,
         tangent,
-        _PHYSICAL if mirrored is None else mirrored.view(np.uint8),
+        mirrored.view(np.uint8),
     )
     if np.count_nonzero(overflow):
         refuse_overflow()
