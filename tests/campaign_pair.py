@@ -2,7 +2,8 @@
 of the test suite).
 
 Run: ``.venv/bin/python -m tests.campaign_pair [cases] [seed]`` (default 10 000 cases, seed 1).
-Each case alone: z 3..40, the four ball sets of the deep-groove campaign, a design contact angle
+Each case alone: z 3..40, the four ball sets of the deep-groove campaign (the pitch circle widened
+where z balls would overlap, as there), a design contact angle
 10 to 45°, DB, DF or DT; F_r 0 or 10 N to C_0r, F_a 10 N to C_0r either way (DT: > 0), a preload
 (DB, DF; one in five none) from 1e-3 to 1 times C_0r/10 (light preload to lift-off), one in
 three a moment and one in six a moment across, up to F_a d_m/10; the cage at 0, half a pitch or
@@ -25,13 +26,14 @@ import numpy as np
 
 from bearingload.models.pair import solve_pair
 from tests.campaign_angular import static_rating
-from tests.campaign_combined import BALL_SETS
+from tests.campaign_combined import BALL_SETS, fitting_pitch
 from tests.campaign_tools import attempt
 
 
 def random_case(rng: np.random.Generator) -> dict[str, Any]:
     dw, dm = BALL_SETS[int(rng.integers(len(BALL_SETS)))]
     z = int(rng.integers(3, 41))
+    dm = fitting_pitch(z, dw, dm)
     alpha = float(rng.uniform(10.0, 45.0))
     kind = str(rng.choice(["DB", "DF", "DT"]))
     c0 = static_rating(z, dw, dm, alpha)
