@@ -27,15 +27,18 @@ def finite(name: str, value: object) -> np.ndarray:
             element=element(raw, np.ones(raw.shape, dtype=bool)),
         )
     try:
-        if raw.dtype.kind in "USO" and any(isinstance(v, (str, bytes)) for v in raw.flat):
-            raise ValueError  # numpy would read "1000" as 1000.0, and "1 kN" not at all
+        if raw.dtype.kind == "c" or (raw.dtype.kind in "USO" and _any_not_real(raw)):
+            raise ValueError  # numpy would read "1000" as 1000.0, None as NaN, 1+0j as 1.0
         arr = np.asarray(value, dtype=float)
     except (TypeError, ValueError):
+        bad = _not_numbers(raw)
+        first = raw[bad].flat[0] if raw.ndim and bad.any() else value
+        first = first.item() if isinstance(first, np.generic) else first
         raise InputError(
             name,
-            f"must be a number (got {value!r}); the library takes N, mm, N/mm^m and degrees "
-            "(bearingload.units.parse_quantity reads text with a unit)",
-            element=element(raw, _not_numbers(raw)),
+            f"must be a number (got {first!r}); the library takes N, mm, N/mm^m and "
+            "degrees (bearingload.units.parse_quantity reads text with a unit)",
+            element=element(raw, bad),
         ) from None
     if not np.all(np.isfinite(arr)):
         raise InputError(
@@ -384,12 +387,20 @@ def element_at(value: object, bad: Any, shape: tuple[int, ...], unit: str = "") 
     return f"[{where}] = {_shown(arr[own])}" + (f" {unit}" if unit else "")
 
 
+def _any_not_real(raw: np.ndarray) -> bool:
+    """Whether an array of text or objects holds text, None or a complex number."""
+    return any(
+        v is None or isinstance(v, (str, bytes, complex, np.complexfloating)) for v in raw.flat
+    )
+
+
 def _not_numbers(raw: np.ndarray) -> np.ndarray:
     """Where an array holds an element that is not a number (text, None, an object)."""
     out = np.zeros(raw.shape, dtype=bool)
     for i, v in np.ndenumerate(raw):
         try:
-            out[i] = isinstance(v, (str, bytes)) or float(v) is None  # float() refuses the rest
+            out[i] = isinstance(v, (str, bytes, complex, np.complexfloating)) or v is None
+            out[i] = out[i] or float(v) is None  # float() refuses the rest
         except (TypeError, ValueError):
             out[i] = True
     return out

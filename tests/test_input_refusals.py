@@ -4,6 +4,8 @@ in degrees, loads too small, a thousands separator), and a bug told apart by its
 
 from __future__ import annotations
 
+import re
+
 import numpy as np
 import pytest
 
@@ -304,3 +306,16 @@ def test_a_poisson_ratio_out_of_range_is_shown_as_a_number_not_an_array_repr():
     with pytest.raises(InputError) as info:
         hertz.reduced_modulus(2.08e5, np.asarray(-1.0))
     assert info.value.message == "must be between -1 and 0.5; got -1"
+
+
+@pytest.mark.parametrize(
+    "value, shown",
+    [(1000 + 0j, "(1000+0j)"), (None, "None"), (np.array([1000.0, 1 + 1j]), "(1000+0j)")],
+)
+def test_a_complex_load_or_none_is_refused_as_not_a_number(value, shown):
+    """A complex load was taken as its real part (with numpy's ComplexWarning) and None
+    was read as NaN ("got NaN or infinity")."""
+    with pytest.raises(
+        InputError, match=rf"radial_load.*must be a number \(got {re.escape(shown)}\)"
+    ):
+        solve_combined(9, value, 100.0, ball_diameter=7.938, pitch_diameter=38.5)
