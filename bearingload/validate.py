@@ -100,7 +100,7 @@ def each_finite(**values: object) -> list[np.ndarray]:
     return [finite(name, value) for name, value in values.items()]
 
 
-def require(name: str, value: object, rule: str, ok: Any) -> None:
+def require(name: str, value: Any, rule: str, ok: Any) -> None:
     """Raise :class:`InputError` ``<name>: must be <rule>; got <value>`` unless every ``ok``."""
     if not np.all(ok):
         bad = np.logical_not(ok)
