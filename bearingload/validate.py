@@ -279,7 +279,7 @@ def ball_too_small(ball_diameter: float, pitch_diameter: float, element: str = "
     ``element``: of an array, its first such element."""
     return InputError(
         "ball_diameter",
-        f"D_w = {ball_diameter:g} mm is below {BALL_RATIO_MIN:g} of the pitch diameter "
+        f"D_w = {_shown(ball_diameter)} mm is below {BALL_RATIO_MIN:g} of the pitch diameter "
         f"({pitch_diameter:g} mm): no ball bearing has such small balls (the catalogue's have "
         f"0.06 to 0.33 d_m); give at least {BALL_RATIO_MIN * pitch_diameter:g} mm",
         element=element,
