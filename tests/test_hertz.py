@@ -637,6 +637,16 @@ def test_curvature_ratio_refusal_names_the_ratio_and_its_element():
     assert "array(" not in message
 
 
+@pytest.mark.filterwarnings("error")
+def test_curvature_ratio_check_of_huge_curvature_sums_warns_not():
+    """The ratio check multiplied the smaller sum by MAX_CURVATURE_RATIO: for sums near 1e300
+    numpy warned of an overflow (the scalar call, in C, was silent); the array call now gives
+    the scalar's bits without a warning."""
+    one = hertz.point_contact_stiffness(1e300, 1.5e300)
+    many = hertz.point_contact_stiffness(np.array([1e300]), 1.5e300)
+    assert float(many[0]) == one > 0
+
+
 def test_scalar_start_fit_is_within_its_stated_error():
     """The Chebyshev start of tools/fit_hertz_start.py: within 3e-7 of the exact ln(kappa)."""
     from bearingload import _elliptic

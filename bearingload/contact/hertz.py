@@ -254,7 +254,8 @@ def _curvature_pair(rho_x: ArrayLike, rho_y: ArrayLike) -> tuple[np.ndarray, np.
     rx = validate.positive_number("rho_x", rho_x)
     ry = validate.positive_number("rho_y", rho_y)
     small, large = np.broadcast_arrays(np.minimum(rx, ry), np.maximum(rx, ry))
-    ok = large <= MAX_CURVATURE_RATIO * small
+    with np.errstate(over="ignore"):  # (inf beyond 1.8e308/1e15: the ratio is then within)
+        ok = large <= MAX_CURVATURE_RATIO * small
     if not np.all(ok):
         with np.errstate(over="ignore"):  # the ratio shown: inf where it overflows
             ratio = large / small
