@@ -39,7 +39,7 @@ def finite(name: str, value: object) -> np.ndarray:
         if not isinstance(value, np.ndarray) and raw.ndim:  # a list: its own elements, not
             raw = np.asarray(value, dtype=object)  # numpy's common type (1.0 read as '1.0')
         bad = _not_numbers(raw)
-        first = raw[bad].flat[0] if raw.ndim and bad.any() else value
+        first = raw[bad].flat[0] if bad.any() else value
         first = first.item() if isinstance(first, np.generic) else first
         raise InputError(
             name,

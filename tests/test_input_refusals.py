@@ -340,3 +340,16 @@ def test_a_list_with_one_element_not_a_number_names_that_element(value, shown):
     OverflowError/ValueError instead of an InputError."""
     with pytest.raises(InputError, match=shown):
         solve_combined(9, value, 100.0, ball_diameter=7.938, pitch_diameter=38.5)
+
+
+@pytest.mark.parametrize(
+    "value, shown",
+    [(np.array(1000 + 0j), "(1000+0j)"), (np.array("1000"), "'1000'"), (np.array(None), "None")],
+)
+def test_a_zero_dimensional_array_not_a_number_is_shown_as_its_value(value, shown):
+    """A 0-d array of a complex number, text or None was refused showing numpy's repr
+    (array(1000.+0.j)), not the value."""
+    with pytest.raises(InputError) as info:
+        solve_combined(9, value, 100.0, ball_diameter=7.938, pitch_diameter=38.5)
+    assert f"must be a number (got {shown})" in str(info.value)
+    assert "array(" not in str(info.value)
