@@ -19,7 +19,12 @@ def finite(name: str, value: object) -> np.ndarray:
         return np.array(number)
     if type(value) is int:
         raise InputError(name, "must be a finite number (got an integer beyond 1.8e308)")
-    raw = np.asarray(value)
+    try:
+        raw = np.asarray(value)
+    except ValueError:  # lists of unequal lengths
+        raise InputError(
+            name, "must be a number or an array of numbers (got lists of unequal lengths)"
+        ) from None
     if isinstance(value, (bool, np.bool_)) or raw.dtype == bool:
         raise InputError(
             name,
@@ -30,9 +35,11 @@ def finite(name: str, value: object) -> np.ndarray:
         if raw.dtype.kind == "c" or (raw.dtype.kind in "USO" and _any_not_real(raw)):
             raise ValueError  # numpy would read "1000" as 1000.0, None as NaN, 1+0j as 1.0
         arr = np.asarray(value, dtype=float)
-    except (TypeError, ValueError):
+    except (TypeError, ValueError, OverflowError):
+        if not isinstance(value, np.ndarray) and raw.ndim:  # a list: its own elements, not
+            raw = np.asarray(value, dtype=object)  # numpy's common type (1.0 read as '1.0')
         bad = _not_numbers(raw)
-        first = raw[bad].flat[0] if raw.ndim and bad.any() else value
+        first = raw[bad].flat[0] if bad.any() else value
         first = first.item() if isinstance(first, np.generic) else first
         raise InputError(
             name,
@@ -272,7 +279,7 @@ def ball_too_small(ball_diameter: float, pitch_diameter: float, element: str = "
     ``element``: of an array, its first such element."""
     return InputError(
         "ball_diameter",
-        f"D_w = {ball_diameter:g} mm is below {BALL_RATIO_MIN:g} of the pitch diameter "
+        f"D_w = {_shown(ball_diameter)} mm is below {BALL_RATIO_MIN:g} of the pitch diameter "
         f"({pitch_diameter:g} mm): no ball bearing has such small balls (the catalogue's have "
         f"0.06 to 0.33 d_m); give at least {BALL_RATIO_MIN * pitch_diameter:g} mm",
         element=element,
@@ -350,6 +357,8 @@ def _shown(value: Any) -> str:
     item = value.item() if isinstance(value, np.generic) else value
     if isinstance(item, bool) or not isinstance(item, (int, float)):
         return repr(item)
+    if isinstance(item, int) and not -1e308 < item < 1e308:
+        return repr(item)  # beyond a double
     v = float(item)
     return repr(int(v)) if v.is_integer() and abs(v) < 1e16 else repr(v)
 
@@ -401,7 +410,7 @@ def _not_numbers(raw: np.ndarray) -> np.ndarray:
         try:
             out[i] = isinstance(v, (str, bytes, complex, np.complexfloating)) or v is None
             out[i] = out[i] or float(v) is None  # float() refuses the rest
-        except (TypeError, ValueError):
+        except (TypeError, ValueError, OverflowError):
             out[i] = True
     return out
 

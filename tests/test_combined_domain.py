@@ -216,6 +216,14 @@ def test_a_ball_of_a_thousandth_of_the_pitch_diameter_is_solved():
     assert np.isfinite(r.q_max)
 
 
+def test_a_ball_just_below_the_limit_is_shown_unrounded():
+    """A ball one ulp below 1e-3 d_m was refused as 'D_w = 0.0385 mm is below ... give at least
+    0.0385 mm' (both printed %g): the refused diameter is shown as given."""
+    with pytest.raises(InputError) as info:
+        solve_combined(9, 1000.0, ball_diameter=0.0385 * (1 - 1e-12), pitch_diameter=38.5)
+    assert "D_w = 0.0384999999999615 mm is below" in str(info.value)
+
+
 def test_an_array_names_its_too_small_ball_by_index():
     with pytest.raises(InputError, match=r"ball_diameter\[1\] = 1e-300 mm"):
         solve_combined(9, 1000.0, ball_diameter=np.array([7.938, 1e-300]), pitch_diameter=38.5)

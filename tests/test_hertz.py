@@ -624,6 +624,29 @@ def test_scalar_path_refuses_like_the_vectorised_path():
         hertz.point_contact(0.1, 0.2, -1.0)
 
 
+def test_curvature_ratio_refusal_names_the_ratio_and_its_element():
+    """A ratio of curvature sums beyond MAX_CURVATURE_RATIO is refused with the first refused
+    ratio as a number, and for arrays with its element, not the repr of the two inputs."""
+    with pytest.raises(InputError) as one:
+        hertz.hertz_coefficients(1.0, 2e15)
+    assert str(one.value).endswith("got 2000000000000000")
+    with pytest.raises(InputError) as many:
+        hertz.hertz_coefficients(np.array([1.0, 2.0]), np.array([1e3, 3e15]))
+    message = str(many.value)
+    assert "rho_x/rho_y[1] = 1500000000000000" in message
+    assert "array(" not in message
+
+
+@pytest.mark.filterwarnings("error")
+def test_curvature_ratio_check_of_huge_curvature_sums_warns_not():
+    """The ratio check multiplied the smaller sum by MAX_CURVATURE_RATIO: for sums near 1e300
+    numpy warned of an overflow (the scalar call, in C, was silent); the array call now gives
+    the scalar's bits without a warning."""
+    one = hertz.point_contact_stiffness(1e300, 1.5e300)
+    many = hertz.point_contact_stiffness(np.array([1e300]), 1.5e300)
+    assert float(many[0]) == one > 0
+
+
 def test_scalar_start_fit_is_within_its_stated_error():
     """The Chebyshev start of tools/fit_hertz_start.py: within 3e-7 of the exact ln(kappa)."""
     from bearingload import _elliptic

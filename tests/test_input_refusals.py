@@ -319,3 +319,37 @@ def test_a_complex_load_or_none_is_refused_as_not_a_number(value, shown):
         InputError, match=rf"radial_load.*must be a number \(got {re.escape(shown)}\)"
     ):
         solve_combined(9, value, 100.0, ball_diameter=7.938, pitch_diameter=38.5)
+
+
+@pytest.mark.parametrize(
+    "value, shown",
+    [
+        (
+            [1000.0, 2000 + 0j],
+            r"radial_load\[1\] = \(2000\+0j\): must be a number \(got \(2000\+0j\)\)",
+        ),
+        ([1000.0, "2000"], r"radial_load\[1\] = '2000': must be a number \(got '2000'\)"),
+        ([1000.0, 10**400], r"radial_load\[1\] = 1000+: must be a number"),
+        ([[1000.0, 2000.0], [3000.0]], r"radial_load: must be a number or an array of numbers"),
+    ],
+)
+def test_a_list_with_one_element_not_a_number_names_that_element(value, shown):
+    """A list mixing floats with a complex number or text was read whole as complex or text:
+    the refusal named its first element (1000.0, shown as '1000.0'), not the bad one; an
+    integer beyond a double's range in a list, or lists of unequal lengths, raised numpy's
+    OverflowError/ValueError instead of an InputError."""
+    with pytest.raises(InputError, match=shown):
+        solve_combined(9, value, 100.0, ball_diameter=7.938, pitch_diameter=38.5)
+
+
+@pytest.mark.parametrize(
+    "value, shown",
+    [(np.array(1000 + 0j), "(1000+0j)"), (np.array("1000"), "'1000'"), (np.array(None), "None")],
+)
+def test_a_zero_dimensional_array_not_a_number_is_shown_as_its_value(value, shown):
+    """A 0-d array of a complex number, text or None was refused showing numpy's repr
+    (array(1000.+0.j)), not the value."""
+    with pytest.raises(InputError) as info:
+        solve_combined(9, value, 100.0, ball_diameter=7.938, pitch_diameter=38.5)
+    assert f"must be a number (got {shown})" in str(info.value)
+    assert "array(" not in str(info.value)
