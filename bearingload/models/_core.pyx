@@ -668,6 +668,93 @@ cdef void solve5(const double *a, const double *b, double *x) noexcept nogil:
         x[i] = t / m[6 * i]
 
 
+cdef inline bint minus_zero(double v) noexcept nogil:
+    return v == 0 and copysign(1.0, v) < 0
+
+
+cdef bint held_form(const Case *cs, const double *a, const double *b) noexcept nogil:
+    """Whether every held row and column of the 5x5 ``a`` is +0 but its diagonal (positive,
+    finite) and ``b`` is 0 there: ``tangent``'s Newton matrix (``solve_held``)."""
+    cdef int i, k
+    for i in range(5):
+        if not cs.locked[i]:
+            continue
+        if not (b[i] == 0 and a[6 * i] > 0 and isfinite(a[6 * i])):
+            return False
+        for k in range(5):
+            if k != i and not (a[5 * i + k] == 0 and a[5 * k + i] == 0
+                               and copysign(1.0, a[5 * i + k]) > 0
+                               and copysign(1.0, a[5 * k + i]) > 0):
+                return False
+    return True
+
+
+cdef void solve_held(const Case *cs, const double *a, const double *b, double *x) noexcept nogil:
+    """``solve5`` of a Newton matrix whose held components are unit rows and columns
+    (``held_form``), to the bit, with the arithmetic of the free rows and columns alone.
+    There, solve5's operations on a held row or column are +-0 (a +0 over a finite nonzero
+    pivot, times finite numbers): they change no free number but the sign of a zero of the
+    right-hand side or of a back substitution's sum (x - (-0) turns -0 into +0); those signs
+    are followed here. Where a pivot is 0 or not finite, or an x not finite (those +-0 would
+    be NaN there), solve5 itself."""
+    cdef double m[25]
+    cdef double r[5]
+    cdef double t
+    cdef int i, k, col, piv
+    if not held_form(cs, a, b):
+        solve5(a, b, x)
+        return
+    memcpy(m, a, 25 * sizeof(double))
+    memcpy(r, b, 5 * sizeof(double))
+    for col in range(5):
+        if cs.locked[col]:  # r[i] -= (+0 / its diagonal) r[col], each row below
+            if minus_zero(r[col]):
+                for i in range(col + 1, 5):
+                    if minus_zero(r[i]):
+                        r[i] = 0.0
+            continue
+        piv = col
+        for i in range(col + 1, 5):
+            if not cs.locked[i] and fabs(m[5 * i + col]) > fabs(m[5 * piv + col]):
+                piv = i
+        if piv != col:
+            swap_rows(m, r, col, piv)
+        if not (m[6 * col] != 0 and isfinite(m[6 * col])):
+            solve5(a, b, x)
+            return
+        for i in range(col + 1, 5):
+            if cs.locked[i]:  # r[i] -= (+0 / pivot: its sign) r[col]
+                if minus_zero(r[i]) and (m[6 * col] < 0) != (copysign(1.0, r[col]) < 0):
+                    r[i] = 0.0
+                continue
+            t = m[5 * i + col] / m[5 * col + col]
+            for k in range(col, 5):
+                if not cs.locked[k]:
+                    m[5 * i + k] -= t * m[5 * col + k]
+            r[i] -= t * r[col]
+    if not back_held(cs, m, r, x):
+        solve5(a, b, x)
+
+
+cdef bint back_held(const Case *cs, const double *m, const double *r, double *x) noexcept nogil:
+    """The back substitution of ``solve_held`` (a held row's or column's term +0 x_k, its
+    sign followed); whether every x is finite."""
+    cdef int i, k
+    cdef double t
+    for i in range(4, -1, -1):
+        t = r[i]
+        for k in range(i + 1, 5):
+            if cs.locked[i] or cs.locked[k]:  # t -= +0 x[k]: -0 turns +0 where x[k] < 0
+                if minus_zero(t) and copysign(1.0, x[k]) < 0:
+                    t = 0.0
+            else:
+                t -= m[5 * i + k] * x[k]
+        x[i] = t / m[6 * i]
+        if not isfinite(x[i]):
+            return False
+    return True
+
+
 cdef void cap_step(const Case *cs, double *step) noexcept nogil:
     """One-sided cases: the step shortened so that no axial part (a, t, t_c) exceeds A (a ball
     at u < 0 has no stiffness along its groove; _combined_ring.cap_step)."""
@@ -728,7 +815,7 @@ cdef int work_open(int z, Work *wk) noexcept nogil:
     """The work space of a case of z balls, one block (its first stage's too: ``fast``, the
     two states of ``solve_case`` and the balls' mirror twins)."""
     cdef double *m = <double *> malloc(
-        (3 * BALL_ARRAYS + 9 + 2 * FAST_ARRAYS) * z * sizeof(double) + z * sizeof(int))
+        (3 * BALL_ARRAYS + 9 + 2 * FAST_ARRAYS) * z * sizeof(double) + 3 * z * sizeof(int))
     if m == NULL:
         return 0
     wk.block = m
@@ -846,7 +933,7 @@ cdef void newton_step(const Case *cs, Work *wk, const double *grad, double *step
     reg = 1e-13 * trace + 1e-300
     for i in range(5):
         hess[6 * i] += reg
-    solve5(hess, minus, step)
+    solve_held(cs, hess, minus, step)
     cap_step(cs, step)
     if not trace > held:  # no ball in contact: move along the load to the first contact
         to_contact(cs, pt, step)
@@ -912,7 +999,7 @@ cdef void line_search(const Case *cs, Work *wk, const double *step, const double
         if slow and (not ok or wk.trial.res > 0.9 * res):
             for i in range(5):
                 left[i] = 0.0 if cs.locked[i] else cs.f[i] - wk.trial.gen[i]
-            solve5(hess, left, fix)
+            solve_held(cs, hess, left, fix)
             cap_step(cs, fix)
             for i in range(5):
                 w2[i] = w[i] + fix[i]
@@ -995,12 +1082,14 @@ ctypedef struct Fast:
     double *kappa
     double *u
     const int *twin  # an earlier ball to compare with (``mirror_twins``), or -1
+    int *todo        # work space (z): the balls whose stiffness is interpolated
+    int *src         # work space (z): the ball whose values a ball takes (itself or its twin)
     double grad[5]
     double res
     double energy
 
 
-cdef void fast_on(double *block, int z, const int *twin, Fast *st) noexcept nogil:
+cdef void fast_on(double *block, int z, const int *twin, int *scratch, Fast *st) noexcept nogil:
     st.ca = block
     st.sa = block + z
     st.rho = block + 2 * z
@@ -1010,6 +1099,8 @@ cdef void fast_on(double *block, int z, const int *twin, Fast *st) noexcept nogi
     st.kappa = block + 6 * z
     st.u = block + 7 * z
     st.twin = twin
+    st.todo = scratch
+    st.src = scratch + z
 
 
 cdef void mirror_twins(const Case *cs, int *twin) noexcept nogil:
@@ -1028,7 +1119,7 @@ cdef void mirror_twins(const Case *cs, int *twin) noexcept nogil:
         twin[j] = p if 0 <= p < j and cs.c[p] == cs.c[j] and cs.s[p] == -cs.s[j] else -1
 
 
-cdef inline void fast_ball(const Case *cs, Fast *st, int j, double rho, double u) noexcept nogil:
+cdef inline bint fast_ball(const Case *cs, Fast *st, int j, double rho, double u) noexcept nogil:
     """Ball j of ``fast_state`` at the groove-centre separations (rho, u): its contact
     direction, approach, stiffness (following the contact angle) and load."""
     cdef double rp = max(rho, 0.0), d, safe, delta
@@ -1041,8 +1132,8 @@ cdef inline void fast_ball(const Case *cs, Fast *st, int j, double rho, double u
     st.d[j] = d
     delta = max(d - cs.a_hat, 0.0)
     st.root[j] = sqrt(delta)
-    st.kappa[j] = curve_kappa(cs, st.ca[j], -st.sa[j] * st.sa[j] / (1.0 + st.ca[j])) if delta > 0 \
-        else 0.0
+    st.kappa[j] = 0.0
+    return delta > 0 and cs.curve != NULL
 
 
 cdef inline void fast_copy(Fast *st, int p, int j) noexcept nogil:
@@ -1053,13 +1144,37 @@ cdef inline void fast_copy(Fast *st, int p, int j) noexcept nogil:
     st.u[j] = st.u[p]
     st.d[j] = st.d[p]
     st.root[j] = st.root[p]
-    st.kappa[j] = st.kappa[p]
+
+
+cdef void curve_pairs(const Case *cs, Fast *st, int n) noexcept nogil:
+    """``curve_kappa`` of the balls st.todo[:n] into st.kappa, two balls at a time (each
+    ball's sums in the order of the nodes, the same bits; the two chains of additions
+    interleaved), an odd last one alone."""
+    cdef int i, k, j0, j1
+    cdef double t0, t1, a0, a1, n0 = 0.0, n1 = 0.0, d0 = 0.0, d1 = 0.0
+    for i in range(0, n - 1, 2):
+        j0, j1 = st.todo[i], st.todo[i + 1]
+        t0 = 2.0 * min(max(st.ca[j0], 0.0), 1.0) - 1.0
+        t1 = 2.0 * min(max(st.ca[j1], 0.0), 1.0) - 1.0
+        n0 = n1 = d0 = d1 = 0.0
+        for k in range(NODES):
+            a0 = cs.node_w[k] / (t0 - cs.node_x[k])
+            a1 = cs.node_w[k] / (t1 - cs.node_x[k])
+            n0 += a0 * cs.curve[k]
+            d0 += a0
+            n1 += a1 * cs.curve[k]
+            d1 += a1
+        st.kappa[j0] = (-st.sa[j0] * st.sa[j0] / (1.0 + st.ca[j0])) * n0 / d0
+        st.kappa[j1] = (-st.sa[j1] * st.sa[j1] / (1.0 + st.ca[j1])) * n1 / d1
+    if n % 2:
+        j0 = st.todo[n - 1]
+        st.kappa[j0] = curve_kappa(cs, st.ca[j0], -st.sa[j0] * st.sa[j0] / (1.0 + st.ca[j0]))
 
 
 cdef void fast_state(const Case *cs, const double *v, Fast *st) noexcept nogil:
     """The balls, forces, residual and potential at v in plain double precision, the stiffness
     following the contact angles."""
-    cdef int j, i, p
+    cdef int j, i, p, n = 0
     cdef double rho, u, delta, gen[5], size[5], err[5], work = 0.0, energy = 0.0
     cdef double qc, qs
     for i in range(5):
@@ -1073,10 +1188,16 @@ cdef void fast_state(const Case *cs, const double *v, Fast *st) noexcept nogil:
         if cs.one_sided:
             u = max(u, 0.0)
         p = st.twin[j]
+        st.src[j] = j
         if p >= 0 and same_bits(st.rho[p], rho) and same_bits(st.u[p], u):
             fast_copy(st, p, j)  # (every value here a function of (rho, u) alone)
-        else:
-            fast_ball(cs, st, j, rho, u)
+            st.src[j] = p
+        elif fast_ball(cs, st, j, rho, u):
+            st.todo[n] = j
+            n += 1
+    curve_pairs(cs, st, n)
+    for j in range(cs.z):
+        st.kappa[j] = st.kappa[st.src[j]]
         delta = max(st.d[j] - cs.a_hat, 0.0)
         st.q[j] = (1.0 + st.kappa[j]) * delta * st.root[j]
         energy += st.q[j] * delta
@@ -1118,7 +1239,7 @@ cdef int fast_newton(const Case *cs, Work *wk, Fast *cur, Fast *trial, double *v
             minus[i] = -cur.grad[i]
         for i in range(5):
             hess[6 * i] += 1e-13 * trace
-        solve5(hess, minus, step)
+        solve_held(cs, hess, minus, step)
         cap_step(cs, step)
         slope = 0.0
         for i in range(5):
@@ -1474,8 +1595,8 @@ cdef int solve_case(const Case *cs, const double *v0, bint given, double *vh, do
     cdef double end_res, change, k_new
     cdef Point *pt = &wk.pt
     mirror_twins(cs, wk.twin)
-    fast_on(wk.fast, cs.z, wk.twin, &cur)
-    fast_on(wk.fast + FAST_ARRAYS * cs.z, cs.z, wk.twin, &trial)
+    fast_on(wk.fast, cs.z, wk.twin, wk.twin + cs.z, &cur)  # (one scratch: a state at a time)
+    fast_on(wk.fast + FAST_ARRAYS * cs.z, cs.z, wk.twin, wk.twin + cs.z, &trial)
     for i in range(5):
         vh[i] = v0[i]
         vl[i] = 0.0
@@ -1540,6 +1661,25 @@ cdef bint ball_directions(int z, double cage, double snap, double *c, double *s)
             c[j] = cos(rad + 2.0 * PI * j / z)
             s[j] = sin(rad + 2.0 * PI * j / z)
     return mirror
+
+
+def held_solves(const double[:, ::1] a, const double[:, ::1] b,
+                const unsigned char[:, ::1] held):
+    """``solve5`` and ``solve_held`` of n 5x5 systems ``a`` (n, 25, row-major), ``b`` (n, 5)
+    with the components ``held`` (n, 5) uint8: their x (2, n, 5), which are to be the same
+    bits (tests/test_core_held_solve.py)."""
+    cdef Py_ssize_t n = a.shape[0], k
+    cdef Case cs
+    cdef int i
+    out_a = np.empty((2, n, 5))
+    cdef double[:, :, ::1] out = out_a
+    with nogil:
+        for k in range(n):
+            for i in range(5):
+                cs.locked[i] = held[k, i]
+            solve5(&a[k, 0], &b[k, 0], &out[0, k, 0])
+            solve_held(&cs, &a[k, 0], &b[k, 0], &out[1, k, 0])
+    return out_a
 
 
 def directions(int z, const double[::1] cage, double snap):
