@@ -66,8 +66,9 @@ def test_an_array_of_clearances_names_the_first_beyond_half_the_ball(model):
 
 def test_a_clearance_beside_an_array_of_ball_diameters_is_named_by_its_own_element():
     with pytest.raises(InputError) as info:
-        solve_combined(9, 3000.0, clearance=[0.01, -4.0], ball_diameter=[7.938, 7.0],
-                       pitch_diameter=38.5)  # fmt: skip
+        solve_combined(
+            9, 3000.0, clearance=[0.01, -4.0], ball_diameter=[7.938, 7.0], pitch_diameter=38.5
+        )
     assert str(info.value).startswith(
         "clearance[1] = -4 mm: G_r = -4 mm is at least half the ball diameter (7 mm)"
     )
