@@ -12,6 +12,7 @@ from __future__ import annotations
 import doctest
 import inspect
 import math
+import warnings
 
 import mpmath as mp
 import numpy as np
@@ -667,3 +668,21 @@ def test_next_to_the_circle_matches_mpmath(excess):
     for got in (hertz_coefficients(1.0, ratio), hertz_coefficients(np.ones(2), ratio)):
         for value, ref in zip(got, refs, strict=True):
             assert rel(np.ravel(value)[0], ref) < 4e-16
+
+
+@pytest.mark.parametrize(
+    "rho_x, rho_y, load, name",
+    [
+        (1e-300, 1.5e-300, 1e300, "load"),
+        (1e308, 1.7e308, 1.0, "rho_x"),
+        (np.array([0.1, 1e-300]), np.array([0.2, 1.5e-300]), 1e300, "load"),
+    ],
+)
+def test_a_contact_beyond_the_double_range_is_refused_naming_the_input(rho_x, rho_y, load, name):
+    """point_contact(1e-300, 1.5e-300, 1e300) returned an infinite a and (1e308, 1.7e308, 1)
+    a NaN approach, unrefused; arrays also raised numpy's overflow warnings."""
+    with warnings.catch_warnings():
+        warnings.simplefilter("error")
+        with pytest.raises(InputError) as info:
+            point_contact(rho_x, rho_y, load)
+    assert info.value.parameter == name

@@ -53,7 +53,7 @@ import numpy as np
 
 from bearingload import _elliptic, validate
 from bearingload.constants import BALL_EXPONENT, ROLLER_EXPONENT, STEEL_MODULUS, STEEL_POISSON
-from bearingload.errors import ConvergenceError
+from bearingload.errors import ConvergenceError, InputError
 from bearingload.numerics import elliptic_integrals, scalar_out
 
 if TYPE_CHECKING:
@@ -375,21 +375,33 @@ def point_contact(
     q = validate.non_negative("load", load)
     es = _contact_modulus(modulus, poisson, e_star)
     coeffs = hertz_coefficients(rho_x, rho_y)
-    sum_rho = np.asarray(rho_x, dtype=float) + np.asarray(rho_y, dtype=float)
     kappa = np.asarray(coeffs.kappa)
     a_star = np.asarray(coeffs.a_star)
     b_star = np.asarray(coeffs.b_star)
     d_star = np.asarray(coeffs.delta_star)
-    x = np.cbrt(1.5 * q / (sum_rho * es))  # X^(1/3), [mm]
-    a = a_star * x
-    b = b_star * x
-    delta = 0.5 * d_star * sum_rho * x**2
-    stiffness = 4.0 * math.sqrt(2.0) / 3.0 * es / (d_star**1.5 * np.sqrt(sum_rho))
-    # 3Q/(2 pi a b) written with X so that Q = 0 gives 0, not 0/0
-    p_max = sum_rho * es * x / (math.pi * a_star * b_star)
-    return PointContact(
-        *(scalar_out(v) for v in np.broadcast_arrays(kappa, a, b, delta, stiffness, p_max))
-    )
+    with np.errstate(over="ignore", invalid="ignore"):  # (refused below, by name)
+        sum_rho = np.asarray(rho_x, dtype=float) + np.asarray(rho_y, dtype=float)
+        x = np.cbrt(1.5 * q / (sum_rho * es))  # X^(1/3), [mm]
+        a = a_star * x
+        b = b_star * x
+        delta = 0.5 * d_star * sum_rho * x**2
+        stiffness = 4.0 * math.sqrt(2.0) / 3.0 * es / (d_star**1.5 * np.sqrt(sum_rho))
+        # 3Q/(2 pi a b) written with X so that Q = 0 gives 0, not 0/0
+        p_max = sum_rho * es * x / (math.pi * a_star * b_star)
+    values = np.broadcast_arrays(kappa, a, b, delta, stiffness, p_max)
+    bad = ~np.logical_and.reduce([np.isfinite(v) for v in values])
+    if bad.any():
+        huge = ~np.isfinite(np.broadcast_to(sum_rho, bad.shape))
+        name, given = ("rho_x", rho_x) if (huge & bad).any() else ("load", load)
+        raise InputError(
+            name,
+            "with these curvature sums, load and contact modulus the contact's size, approach "
+            "or pressure is beyond the largest double: no contact of a bearing",
+            element=validate.element(
+                np.broadcast_to(np.asarray(given, dtype=float), bad.shape), bad
+            ),
+        )
+    return PointContact(*(scalar_out(v) for v in values))
 
 
 def _point_contact_scalar(
@@ -417,6 +429,8 @@ def _point_contact_scalar(
         4.0 * math.sqrt(2.0) / 3.0 * es / (d_star**1.5 * math.sqrt(sum_rho)),
         sum_rho * es * x / (math.pi * a_star * b_star),
     )
+    if not all(math.isfinite(v) for v in values):
+        return None  # (refused by the array path, which names the input)
     return PointContact(*(float(v) for v in values))
 
 
