@@ -33,7 +33,7 @@ def finite(name: str, value: object) -> np.ndarray:
         )
     try:
         if raw.dtype.kind == "c" or (raw.dtype.kind in "USO" and _any_not_real(raw)):
-            raise ValueError  # numpy would read "1000" as 1000.0, None as NaN, 1+0j as 1.0
+            raise ValueError  # (numpy would read them as numbers: _not_real)
         arr = np.asarray(value, dtype=float)
     except (TypeError, ValueError, OverflowError):
         if not isinstance(value, np.ndarray) and raw.ndim:  # a list: its own elements, not
@@ -396,20 +396,23 @@ def element_at(value: object, bad: Any, shape: tuple[int, ...], unit: str = "") 
     return f"[{where}] = {_shown(arr[own])}" + (f" {unit}" if unit else "")
 
 
+def _not_real(v: object) -> bool:
+    """Whether one element is text, None or a complex number: what numpy would read as a real
+    number ("1000" as 1000.0, None as NaN, 1+0j as 1.0) but the library refuses."""
+    return v is None or isinstance(v, (str, bytes, complex, np.complexfloating))
+
+
 def _any_not_real(raw: np.ndarray) -> bool:
-    """Whether an array of text or objects holds text, None or a complex number."""
-    return any(
-        v is None or isinstance(v, (str, bytes, complex, np.complexfloating)) for v in raw.flat
-    )
+    """Whether an array of text or objects holds an element :func:`_not_real`."""
+    return any(_not_real(v) for v in raw.flat)
 
 
 def _not_numbers(raw: np.ndarray) -> np.ndarray:
-    """Where an array holds an element that is not a number (text, None, an object)."""
+    """Where an array holds an element that is not a number (:func:`_not_real`, an object)."""
     out = np.zeros(raw.shape, dtype=bool)
     for i, v in np.ndenumerate(raw):
         try:
-            out[i] = isinstance(v, (str, bytes, complex, np.complexfloating)) or v is None
-            out[i] = out[i] or float(v) is None  # float() refuses the rest
+            out[i] = _not_real(v) or float(v) is None  # float() refuses the rest
         except (TypeError, ValueError, OverflowError):
             out[i] = True
     return out
