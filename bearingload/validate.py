@@ -274,6 +274,14 @@ def ball_size_fits(ball_diameter: Any, pitch_diameter: Any) -> Any:
     )
 
 
+def first_refused(bad: Any, *values: Any) -> list[float]:
+    """The ``values`` (arrays broadcast to ``bad``'s shape) of the first case where ``bad``, as
+    floats: what a refusal of several inputs of one case shows."""
+    bad = np.asarray(bad)
+    i = np.unravel_index(int(np.flatnonzero(bad)[0]), bad.shape)
+    return [float(np.broadcast_to(v, bad.shape)[i]) for v in values]
+
+
 def ball_too_small(ball_diameter: float, pitch_diameter: float, element: str = "") -> InputError:
     """The refusal of a ball diameter not :func:`ball_size_fits` to its pitch diameter [mm];
     ``element``: of an array, its first such element."""

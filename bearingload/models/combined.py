@@ -823,19 +823,13 @@ def _refuse_angular_thrust(v: dict[str, Any], bad: Any, at: Callable[..., str]) 
     )
 
 
-def _first_refused(v: dict[str, Any], bad: Any, *names: str) -> list[float]:
-    """The values ``names`` of the first case refused (``bad``, the cases' shape)."""
-    i = np.unravel_index(int(np.flatnonzero(bad)[0]), bad.shape)
-    return [float(np.broadcast_to(v[k], bad.shape)[i]) for k in names]
-
-
 def _refuse_clearance(v: dict[str, Any], bad: Any, at: Callable[..., str]) -> InputError:
-    g_r, d_w = _first_refused(v, bad, "clearance", "ball_diameter")
+    g_r, d_w = validate.first_refused(bad, v["clearance"], v["ball_diameter"])
     return validate.clearance_beyond_ball(g_r, d_w, element=at("clearance", bad, "mm"))
 
 
 def _refuse_ball_size(v: dict[str, Any], bad: Any, at: Callable[..., str]) -> InputError:
-    d_w, d_m = _first_refused(v, bad, "ball_diameter", "pitch_diameter")
+    d_w, d_m = validate.first_refused(bad, v["ball_diameter"], v["pitch_diameter"])
     return validate.ball_too_small(d_w, d_m, element=at("ball_diameter", bad, "mm"))
 
 

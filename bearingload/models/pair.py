@@ -482,14 +482,14 @@ def _checked(kind: str, named: dict[str, Any]) -> tuple[tuple[int, ...], dict[st
     validate.broadcast_shape(arrays)
     flat = np.broadcast_arrays(*(np.asarray(v, dtype=float) for v in arrays.values()))
     cases = dict(zip(arrays, (a.ravel() for a in flat), strict=True))
-    bad = ~validate.ball_size_fits(cases["ball_diameter"], cases["pitch_diameter"])
+    shape = flat[0].shape
+    dw, dm = (np.reshape(cases[k], shape) for k in ("ball_diameter", "pitch_diameter"))
+    bad = np.logical_not(validate.ball_size_fits(dw, dm))
     if bad.any():
-        i = int(np.argmax(bad))
-        at = validate.element_at(
-            named["ball_diameter"], bad.reshape(flat[0].shape), flat[0].shape, "mm"
-        )
-        raise validate.ball_too_small(cases["ball_diameter"][i], cases["pitch_diameter"][i], at)
-    return flat[0].shape, cases
+        at = validate.element_at(named["ball_diameter"], bad, shape, "mm")
+        d_w, d_m = validate.first_refused(bad, dw, dm)
+        raise validate.ball_too_small(d_w, d_m, at)
+    return shape, cases
 
 
 def _check_pair(kind: str, fa: np.ndarray, fp: np.ndarray, contact_angle: Any) -> None:
