@@ -254,17 +254,17 @@ def _curvature_pair(rho_x: ArrayLike, rho_y: ArrayLike) -> tuple[np.ndarray, np.
     rx = validate.positive_number("rho_x", rho_x)
     ry = validate.positive_number("rho_y", rho_y)
     small, large = np.broadcast_arrays(np.minimum(rx, ry), np.maximum(rx, ry))
-    with np.errstate(over="ignore"):  # (inf beyond 1.8e308/1e15: the ratio is then within)
+    # (inf beyond 1.8e308/1e15: the ratio is then within; the ratio shown inf where it overflows)
+    with np.errstate(over="ignore"):
         ok = large <= MAX_CURVATURE_RATIO * small
-    if not np.all(ok):
-        with np.errstate(over="ignore"):  # the ratio shown: inf where it overflows
-            ratio = large / small
-        validate.require(
-            "rho_x/rho_y",
-            ratio,
-            f"a ratio of at most {MAX_CURVATURE_RATIO:g} (beyond it use the line-contact model)",
-            ok,
-        )
+        if not np.all(ok):
+            validate.require(
+                "rho_x/rho_y",
+                large / small,
+                f"a ratio of at most {MAX_CURVATURE_RATIO:g} (beyond it use the line-contact "
+                "model)",
+                ok,
+            )
     return small, large
 
 
