@@ -1,106 +1,10 @@
-"""Combined radial, axial and moment load of a deep-groove ball bearing: the 3-D ring equilibrium.
+"""Combined radial, axial and moment load of a deep-groove (or angular-contact) ball bearing:
+the 3-D equilibrium of the inner ring (ISO/TS 16281:2008; Harris & Kotzalas, 5th ed., ch. 8).
 
-The inner ring moves as a rigid body: radially by ``(x, y)`` (``x`` along the radial load),
-axially by ``a`` and tilts by ``theta`` about the axis across the load line and ``theta_c``
-about the load line itself. The outer ring is fixed. This is the model of ISO/TS 16281:2008
-(its equations for the ball deflection, the operating contact angle and the equilibrium of the
-inner ring) and of Jones/Harris (Harris & Kotzalas, *Rolling Bearing Analysis*, 5th ed., ch. 8).
-
-Geometry (deep-groove ball bearing, one row)
---------------------------------------------
-* Groove radii ``r_i = f_i D_w``, ``r_o = f_o D_w``; the distance of the two groove curvature
-  centres when a ball touches both grooves is ``A = (f_i + f_o - 1) D_w``.
-* At centred rings the centres of ball ``j``'s grooves lie ``A - G_r/2`` apart radially and
-  0 apart axially (``G_r`` the radial internal clearance, total play). Taking up the play
-  axially gives the free contact angle ``alpha_0 = arccos(1 - G_r/(2 A))`` and the axial play
-  ``2 A sin(alpha_0)`` (ISO/TS 16281; Harris & Kotzalas). Negative ``G_r`` = preload:
-  ``alpha_0 = 0``, no axial play.
-* The inner groove centre of ball ``j`` (at ``phi_j`` from the load line) lies at radius
-  ``R_i = d_m/2 + (r_i - D_w/2) cos(alpha_0)``. Small-tilt kinematics (ISO/TS 16281): its
-  radial separation from the outer groove centre is ``rho_j = A - G_r/2 + x cos phi_j +
-  y sin phi_j``, its axial one ``u_j = a + R_i (theta cos phi_j + theta_c sin phi_j)``; the
-  ball is compressed by ``delta_j = sqrt(rho_j^2 + u_j^2) - A`` and its contact angle is
-  ``alpha_j = atan2(u_j, rho_j)``.
-* A ball touches its grooves only while its contact normal is below 90°, ``rho_j > 0``: with
-  ``rho_j <= 0`` its groove centres have crossed, the torus formula would press it against the
-  far halves of the grooves, which have no ring material, and the ball is loose (so with
-  ``F_a = 0`` and no moment the model is the radial engine's for any load and clearance). A
-  ball left carrying load at the groove edge (``rho_j <= 0`` with ``|u_j| > A``, or a contact
-  angle that rounds to 90°: pushed axially past the edge, or tilted over it) is a state the
-  model does not describe: :class:`~bearingload.errors.InputError` names the ball and the case.
-  The contact angle given for a loose ball is ``atan2(u_j, max(rho_j, 0))``, within ±90°.
-* Ball load ``Q_j = K(alpha_j) max(delta_j, 0)^1.5`` with ``K(alpha)`` the exact Hertz stiffness
-  of both contacts in series (:func:`bearingload.contact.hertz.ball_stiffness`) with the
-  contact-angle-dependent curvatures: ``1/R_x = 2/D_w +- 2 cos(alpha)/(d_m -+ D_w cos(alpha))``,
-  i.e. the zero-angle curvatures of a bearing of pitch diameter ``d_m / cos(alpha)``.
-
-Angular contact (``contact_angle`` given)
------------------------------------------
-* Single-row angular-contact ball bearing of design contact angle ``alpha_0`` (Harris & Kotzalas,
-  ch. 8; ISO/TS 16281): the groove curvature centres of every ball lie ``A cos(alpha_0)`` apart
-  radially and ``A sin(alpha_0)`` axially at the zero-load position, where each ball touches
-  both grooves at ``alpha_0``. That is the deep-groove geometry of clearance
-  ``G_r = 2 A (1 - cos alpha_0)`` with the axial unknown shifted by ``A sin(alpha_0)``, so the
-  solver runs on it unchanged; ``axial`` is reported from the zero-load position and
-  ``axial_play`` is 0 (the ring is free the other way). Positive ``F_a`` is the thrust the
-  bearing takes.
-* One-sided contact: the outer ring's low shoulder ends at the groove bottom, so a ball whose
-  contact would move through 0° to the other side of the groove takes no axial part: it sees
-  ``u'_j = max(u_j, 0)`` in place of ``u_j``, ``delta_j = |(max(rho_j, 0), max(u_j, 0))| - A``.
-  The map is componentwise convex and nondecreasing on the nonnegative quadrant where the norm
-  is nondecreasing, so the potential stays convex and once differentiable (the Newton solver's
-  guarantees hold). A ball pushed the wrong way carries nothing while ``rho_j <= A`` (it has left
-  its groove), or, squeezed radially beyond ``A`` at ``u_j <= 0``, carries at 0°, the groove
-  bottom; never a negative load or angle. At ``F_a = 0`` without a moment the loaded balls sit
-  at 0° and the ring has slid the other way by ``A sin(alpha_0)`` (one position of a range: a
-  single bearing under a radial load alone is held axially by its partner in a real mounting).
-* Refused (:class:`~bearingload.errors.InputError`): ``F_a < 0``; a contact angle outside
-  0-60°; a clearance beside it; with the ring free to tilt, a moment the one-way balls cannot
-  hold, ``(M, M_c)/(F_a R_i)`` outside the regular z-gon of the ball positions.
-* Numerics: a ball at ``u_j < 0`` has no stiffness along its groove, so with few balls in
-  contact the Newton matrix may be singular along a move that lifts the others further off;
-  the axial parts of every step of a one-sided case are capped at ``A``
-  (the compiled core's ``cap_step``). Deep-groove cases take none of these
-  branches: their results are bit-identical to those before angular contact was added.
-
-Conventions
------------
-* The axial displacement ``a`` is measured from the centred rings: it includes half the axial
-  play, as MASTA reports it (the ISO/TS 16281 equations measure it from the ring that has taken
-  up the play; the two differ by ``A sin(alpha_0)``).
-* Positive ``F_a`` pushes the inner ring towards +axial. The moment ``M`` [N mm] is the
-  generalised force of ``theta``: positive ``M`` pushes the load-line side of the inner ring
-  towards +axial. Without a moment and without a misalignment the ring is free to tilt (``M =
-  0``), as ISO/TS 16281 and MASTA treat a single bearing; an imposed misalignment (0 included:
-  ``misalignment=0.0`` holds the ring aligned) fixes ``theta`` and the moment it needs is
-  reported (``theta_c`` stays free, balanced by ``moment_cross``).
-* Which ring rotates does not enter the equilibrium (no centrifugal or gyroscopic terms); it
-  enters the life, :mod:`bearingload.bearings.iso16281`.
-* Misalignment and the gaps: to second order in the tilt, ``delta_j`` loses
-  ``R_i^2 theta^2 cos^2(phi_j) / (2 A) = R_i^2 theta^2 (1 + cos 2 phi_j) / (4 A)`` of gap, a
-  constant part plus a ``cos 2 phi_j`` part, the structure of the gap law with misalignment in
-  the abstract on clearance and vibration (eqs. 3a-4); the exact square root is used.
-
-Numerics. With ``K`` frozen per ball, the equilibrium is the minimum of the convex potential
-``sum K_j/2.5 max(delta_j, 0)^2.5 - F_r x - F_a a - M theta`` with ``delta_j = |(max(rho_j, 0),
-u_j)| - A`` (a norm of a convex, nondecreasing map of an affine function, minus a constant:
-convex, once differentiable; it equals the torus formula wherever a ball can touch). Lengths
-are scaled by ``(F/K)^(2/3)`` with ``F`` the largest applied load. The compiled core
-(:mod:`bearingload.models._core`, one C call per case) minimises it by damped Newton (positions
-and ball approaches in double-double, the forces of a preloaded ring summed from the preloaded
-reference, as :mod:`bearingload.models._combined_ring` states them), started from where plain
-double-precision Newton steps (the stiffness following the contact angles) take the radial
-engine's solution and the axial closed form; it measures and finishes every case itself, so
-the accuracy is its own. Then ``K_j`` is updated to the new contact angles and the
-minimisation repeated until the update leaves the equilibrium. Each case stops when
-every applied component is balanced to 1e-12 of itself (or to the rounding of the sum it is,
-its terms much larger than it); a component held at 0 by a symmetry of the case is exactly 0.
-No case depends on the others of its call, nor on earlier calls: the Hertz set-up of a
-geometry (K_0 and the stiffness curve's nodes) is computed per case in the core (a one-case
-call takes it from the last SETUP_CACHE_SIZE geometries so solved, the same bits). Cases left
-above 1e-8 raise :class:`~bearingload.errors.ConvergenceError`, naming their inputs. A call is
-one core call where its cases need no more (the set-up, the solve and the results:
-:func:`_one_call`); the rest (refusals, retries, the least tilt) is :func:`_general`'s.
+The model, its geometry, conventions and numerics: docs/models.md, "Combined radial, axial and
+moment load"; angular contact (one-sided): docs/angular_contact.md, "The model". A call is one
+core call where its cases need no more (:func:`_one_call`); the rest (refusals, retries, the
+least tilt) is :func:`_general`'s.
 """
 
 from __future__ import annotations
@@ -517,8 +421,9 @@ def solve_combined(
     """Equilibrium of the inner ring of a deep-groove (or, given ``contact_angle``, an
     angular-contact) ball bearing under F_r, F_a and a moment.
 
-    Conventions and model: see the module docstring. Arrays broadcast over cases; ``balls`` is
-    one number per call (the ball arrays of the result have the last axis z).
+    Conventions and model: docs/models.md, "Combined radial, axial and moment load". Arrays
+    broadcast over cases; ``balls`` is one number per call (the ball arrays of the result have
+    the last axis z).
 
     Parameters
     ----------
@@ -540,7 +445,7 @@ def solve_combined(
     cage_angle : array_like, default 0
         Angle of ball 1 from the load line. [°]
     moment : array_like, optional
-        Moment tilting the inner ring in the plane of the load line (see the module docstring);
+        Moment tilting the inner ring in the plane of the load line (docs/models.md, "Conventions");
         default: the ring is free to tilt (M = 0). [N mm]
     misalignment : array_like, optional
         Imposed tilt of the inner ring in the plane of the load line, instead of a moment; 0
@@ -560,9 +465,9 @@ def solve_combined(
     contact_angle : array_like, optional
         Design contact angle alpha_0 of an angular-contact ball bearing, 0 to 60: the groove
         centres offset so that every ball touches both grooves at alpha_0 with no load, the
-        contact one-sided (a thrust F_a >= 0 only; see "Angular contact" in the module
-        docstring). ``clearance`` must then be 0 and ``axial`` is measured from that position;
-        ``axial_play`` is 0. Default: a deep-groove bearing. [°]
+        contact one-sided (a thrust F_a >= 0 only; docs/angular_contact.md). ``clearance``
+        must then be 0 and ``axial`` is measured from that position; ``axial_play`` is 0.
+        Default: a deep-groove bearing. [°]
 
     Returns
     -------
@@ -1007,7 +912,7 @@ ZONE_GRID = 720
 def load_zone(r: CombinedDistribution, big_a: Any, one_sided: bool = False) -> Any:
     """The load zone half-angle of every case of the static solution ``r``: half the total
     angle of the positions where a ball would carry load (the arcs summed where a moment makes
-    two), by the kinematics of the module notes
+    two), by the kinematics of the model (docs/models.md)
     (the balls' own): loaded where ``rho > 0`` and ``|(rho, u')| > A``. Under a radial load
     alone it is the radial engine's ``arccos(G_r / (2 |(x, y)|))``; 180 where every position
     is loaded (a thrust, a preload). ``big_a`` = A = (f_i + f_o - 1) D_w [mm]; ``one_sided``:

@@ -4,57 +4,12 @@ Conventions (the same as the discrete engine, :mod:`bearingload.models.equilibri
 on the inner ring, angles ``psi`` from the load line; ``clearance`` is the radial internal
 clearance ``G_r`` (total radial play), the gap per side is ``e = G_r/2``, negative = preload;
 ball stiffness ``K`` of both contacts in series, ``Q = K delta^m`` with ``m = 3/2`` for balls and
-``10/9`` for rollers.
-
-Model. The inner ring moves by ``x`` along the load. A rolling element at ``psi`` is compressed by
-``delta(psi) = x cos(psi) - e``; the ``z`` elements are smeared uniformly, ``z/(2 pi)`` per radian,
-so that
-
-    F_r = z/(2 pi) * int_{-pi}^{pi} K max(x cos(psi) - e, 0)^m cos(psi) dpsi
-        = z Q_max J_r(eps),   Q_max = K delta_max^m,   delta_max = x - e,   eps = (1 - e/x)/2,
-
-with the load-zone integral (Sjövall 1933; Harris & Kotzalas, *Rolling Bearing Analysis*, 5th ed.,
-2007, vol. 1, §7.2, eqs. 7.20-7.23)
-
-    J_r(eps) = 1/(2 pi) int_{-psi_l}^{psi_l} [1 - (1 - cos psi)/(2 eps)]^m cos(psi) dpsi,
-    psi_l = arccos(1 - 2 eps) for eps <= 1,  psi_l = pi for eps > 1 (every element loaded).
-
-``eps = 1/2`` at zero clearance, ``0 < eps < 1/2`` with clearance, ``eps > 1/2`` under preload.
-This is Kuzmenko's continuum model (Kuzmenko 2010, §4-5, eqs. 4.1-4.20 and 5.1-5.14): his
-resolving equation (5.12) ``F_r/(K Delta^(3/2)) = (z/pi) int_0^phi0 (cos phi/cos phi0 - 1)^(3/2)
-cos phi dphi`` is the same relation with ``Delta = e`` and ``cos phi0 = e/x``, and his load factor
-is ``k = Q_max/F_r = 1/(z J_r(eps))``. At zero clearance ``J_r(1/2) = I_m/pi`` with
-``I_m = int_0^{pi/2} cos^(m+1) phi dphi``, hence ``k z = pi/I_m`` (his eqs. 4.17-4.20).
-
-Numerics. ``J_r`` is computed by fixed-order Gauss-Legendre quadrature after substitutions that
-remove the endpoint singularity ``(psi_l - psi)^m``: for ``eps <= 1`` put
-``sin(psi/2) = sqrt(eps) sin(theta)``, which turns the bracket into ``cos^2(theta)`` exactly,
-
-    J_r = 2 sqrt(eps)/pi int_0^{pi/2} cos^(2m+1)(theta) (1 - 2 eps sin^2 theta)
-          / sqrt(1 - eps sin^2 theta) dtheta;
-
-for ``eps > 1`` put ``theta = psi/2`` and subtract the term that integrates to zero,
-
-    J_r = 2/pi int_0^{pi/2} [(1 - sin^2(theta)/eps)^m - 1] (1 - 2 sin^2 theta) dtheta,
-
-which keeps full relative accuracy as ``eps -> infinity`` (``J_r -> m/(4 eps)``). Then
-``theta = pi/2 (1 - v^4)`` clusters the nodes at the end of the load zone. Against mpmath
-(40 digits) the relative error of ``J_r`` is below 1e-13 for 1 <= m <= 3 and every ``eps``.
-
-The solver works with the dimensionless clearance ``eta = e/x_0``, where ``x_0`` is the ring
-displacement at zero clearance: ``k`` and ``eps`` depend on ``eta`` and ``m`` only. The unknown is
-``y = ln(eps)``, the equation ``asinh(eta(eps)) = asinh(e/x_0)`` with
-``eta(eps) = (J_r(1/2)/J_r(eps))^(1/m) (1 - 2 eps)/(2 eps)``, strictly decreasing and nearly
-linear in ``y`` at both ends; a bracketed Newton iteration solves all cases at once.
-
-References
-----------
-.. [1] Kuzmenko A.G. Load distribution between balls in a radial ball bearing (in Russian).
-   Problems of Tribology, 2010, no. 1, pp. 29-41, §4-5.
-.. [2] Harris T.A., Kotzalas M.N. Rolling Bearing Analysis, 5th ed., vol. 1: Essential Concepts of
-   Bearing Technology. CRC Press, 2007, ch. 7 (radial load distribution, load-zone integral).
-.. [3] Sjövall H. The load distribution within ball and roller bearings under given external
-   radial and axial load. Teknisk Tidskrift, Mek., 1933, h. 9.
+``10/9`` for rollers. ``F_r = z Q_max J_r(eps)``, ``eps = (1 - e/x)/2``, with the load-zone
+integral ``J_r`` computed by Gauss-Legendre quadrature after substitutions that remove its
+endpoint singularity (within 1e-13 of mpmath for 1 <= m <= 3 and every ``eps``); the unknown is
+``ln(eps)``. The model, the substitutions and the solver: docs/models.md, "Continuum model and
+the classical approximations" (Kuzmenko 2010, §4-5; Harris & Kotzalas, 5th ed., vol. 1, §7.2;
+Sjövall 1933, its Sources).
 """
 
 from __future__ import annotations

@@ -1,47 +1,14 @@
 """A pair of identical angular-contact ball bearings on one shaft: back-to-back (DB), face-to-face
 (DF) or tandem (DT), with an axial preload.
 
-Model (Harris & Kotzalas, *Rolling Bearing Analysis*, 5th ed., ch. 8 for each bearing, as
-:mod:`bearingload.models.combined`; the pair is two such bearings on one rigid shaft, as the
-commercial tools model a bearing set):
-
-* The shaft (both inner rings) moves as one rigid body about the pair's centre: ``v = (x, y,
-  a, theta, theta_c)``. Bearing ``k`` sits at the axial position ``z_k = -+B/2`` (B the width
-  of one bearing: the rings abut). A rigid tilt moves its inner groove centres radially by
-  ``-z_k theta`` (``-z_k theta_c`` across the load line) and axially by ``R_i (theta cos phi
-  + theta_c sin phi)`` (the conventions of :mod:`bearingload.models.combined`: a positive tilt
-  pushes the load-line side towards +axial).
-* Bearing 1 takes the shaft's thrust towards +axial (its local axes are the pair's); in DB and
-  DF bearing 2 is mirrored (``sigma_2 = -1``: its local axial displacement and tilts are the
-  negatives of the pair's), in DT it faces the same way (``sigma_2 = +1``). The local
-  displacement of bearing k is ``L_k v``: ``(x - z_k theta, y - z_k theta_c, sigma_k a,
-  sigma_k theta, sigma_k theta_c)``, plus its built-in axial preload offset. DB: bearing 1 at
-  ``-B/2``, its contact lines meet the axis further out (pressure centres apart); DF: bearing 1
-  at ``+B/2`` (pressure centres between the bearings); DT: bearing 1 at ``-B/2``.
-* Forces by virtual work: the pair's generalised force is ``sum_k L_k^T f_k`` (``f_k`` the
-  bearing's (F_x, F_y, F_a, M, M_c) on its inner ring), its stiffness ``sum_k L_k^T K_k L_k``:
-  each bearing's moment plus the lever of its radial force about the centre.
-* Preload ``F_p`` (DB, DF): the rings are ground so that, clamped together with no external
-  load, each bearing carries the axial force ``F_p`` (every ball at the same approach; solved
-  from the single bearing's pure-thrust equation with the Hertz K(alpha)). Lift-off: the
-  external axial load alone at which the bearing opposite to it carries nothing, when the
-  loaded one sits at twice the preload offset (for a Hertz contact at a constant angle
-  ``2^1.5 F_p = 2.83 F_p``, the limit of a light preload; the contact angle growing under the
-  load gives a little more: 2.885 F_p for a 7205B at F_p = 500 N).
-
-Numerics: damped Newton on the pair's five unknowns, each case alone in the compiled core
-(:func:`bearingload.models._core.pair_call`, a C loop over the cases that also sets each case
-up and gives its results): a first stage in plain doubles to a residual of 1e-9, then the
-balls of each bearing evaluated by the single bearing's kernels in double-double arithmetic at
-the local position, the step solving the pair's tangent (with the change of K with the angle),
-the line search taking a step where the potential (stiffness frozen) falls or the residual
-halves. A case stops when every component is balanced to 1e-12 of its load (or to the
-rounding of its terms), the measure of :func:`~bearingload.models._combined_ring.residual_of`;
-a case left above 1e-8 raises :class:`~bearingload.errors.ConvergenceError` naming its
-inputs. This module keeps the checks and the refusals: a call the core answers whole is one
-core call; one with a case it flags (a width or geometry to refuse, a Hertz set-up it cannot
-make, loads it cannot scale, a case unbalanced, a ball at the groove edge, a stiffness that
-overflows) takes :func:`_general`, which refuses in the order of the checks.
+The model (each bearing as :mod:`bearingload.models.combined`, one-sided, on one rigid shaft),
+the preload, the lift-off load and the numerics: docs/angular_contact.md, "Pairs: DB, DF, DT".
+Each case is solved alone in the compiled core (:func:`bearingload.models._core.pair_call`,
+which also sets it up and gives its results). This module keeps the checks and the refusals: a
+call the core answers whole is one core call; one with a case it flags (a width or geometry to
+refuse, a Hertz set-up it cannot make, loads it cannot scale, a case unbalanced, a ball at the
+groove edge, a stiffness that overflows) takes :func:`_general`, which refuses in the order of
+the checks.
 """
 
 from __future__ import annotations
