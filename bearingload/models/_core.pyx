@@ -130,7 +130,7 @@ cdef inline double norm(double a, double b) noexcept nogil:
 
 cdef inline double curve_kappa(const Case *cs, double ca, double cam1) noexcept nogil:
     """K(alpha)/K_0 - 1 = (c - 1) D(c), D the barycentric Chebyshev interpolant of the divided
-    difference at the nodes (bearingload.models.combined.StiffnessCurve); 0 at a constant K.
+    difference at the nodes (docs/models.md, "The stiffness curve"); 0 at a constant K.
     (Its 24 quotients are independent: faster than Clenshaw's serial recurrence.)"""
     cdef double t, term, num = 0.0, den = 0.0
     cdef int k
@@ -2557,20 +2557,6 @@ ctypedef struct PairCase:
     unsigned char mirror
 
 
-def pair_locks(bint tandem, const unsigned char[::1] mirror, const double[:, ::1] loads):
-    """Which of the shaft's (x, y, a, t, t_c) n pair cases hold at 0 (``symmetry_locks``; its
-    mirror across the mid-plane not where ``tandem``): ``mirror`` (n,) uint8, ``loads`` (4, n)
-    = F_r, F_a, M, M_c; returns held (n, 5) bool."""
-    cdef Py_ssize_t n = mirror.shape[0], k
-    held_a = np.empty((n, 5), dtype=bool)
-    cdef unsigned char[:, ::1] held = held_a.view(np.uint8)
-    with nogil:
-        for k in range(n):
-            symmetry_locks(3, mirror[k], loads[0, k], loads[1, k], loads[2, k], loads[3, k],
-                           0.0, False, tandem, &held[k, 0])  # (a pair's z >= 3)
-    return held_a
-
-
 cdef double cube_root(double x) noexcept nogil:
     """The cube root of ``x`` rounded to nearest: libm's cbrt (within an ulp) and one Newton
     step on its residual y^3 - x in double-double (y^3 within a few ulps of x: their difference
@@ -4349,16 +4335,19 @@ cdef void symmetry_locks(int z, bint mirror, double fr, double fa, double mm, do
     held[3], held[4] = axial or radial or imposed, across or axial or radial
 
 
-def locks(int z, const unsigned char[::1] mirror, const double[:, ::1] loads, bint imposed):
+def locks(int z, const unsigned char[::1] mirror, const double[:, ::1] loads, bint imposed,
+          bint tandem=False):
     """``symmetry_locks`` of n cases: ``mirror`` (n,) uint8, ``loads`` (5, n) = F_r, F_a, M,
-    M_c, the imposed tilt; returns held (n, 5) bool."""
+    M_c, the imposed tilt (a pair's: (4, n), no tilt; ``tandem``: a DT pair's, without the
+    mirror across the mid-plane); returns held (n, 5) bool."""
     cdef Py_ssize_t n = mirror.shape[0], k
+    cdef bint tilted = loads.shape[0] > 4
     held_a = np.empty((n, 5), dtype=bool)
     cdef unsigned char[:, ::1] held = held_a.view(np.uint8)
     with nogil:
         for k in range(n):
             symmetry_locks(z, mirror[k], loads[0, k], loads[1, k], loads[2, k], loads[3, k],
-                           loads[4, k], imposed, False, &held[k, 0])
+                           loads[4, k] if tilted else 0.0, imposed, tandem, &held[k, 0])
     return held_a
 
 

@@ -164,10 +164,10 @@ def held_components(kind: str, mirror: np.ndarray, loads: tuple[np.ndarray, ...]
     exactly: y and t_c where the balls are symmetric about the load line (``mirror``) and no
     moment acts across it; the z-fold symmetry (z >= 3) without a radial load or moment; the
     bearings' mirror image across the pair's mid-plane (not DT's) without a thrust or moment.
-    ``loads`` = (F_r, F_a, M, M_c) (n,) each. The rule is the compiled core's (``pair_locks``,
-    which its ``pair_call`` applies)."""
+    ``loads`` = (F_r, F_a, M, M_c) (n,) each. The rule is the compiled core's (``locks``, of
+    its ``symmetry_locks``, which its ``pair_call`` applies; a pair's z >= 3)."""
     mirrored = np.ascontiguousarray(mirror, dtype=bool).view(np.uint8)
-    return _core.pair_locks(kind == "DT", mirrored, np.array(loads, dtype=float))
+    return _core.locks(3, mirrored, np.array(loads, dtype=float), False, kind == "DT")
 
 
 #: Largest width B of one bearing (the distance of the two bearings' centres) over the pitch
