@@ -538,7 +538,7 @@ def _one_call(
     of :func:`hertz_setup` (and into it). Returns (the state, the solve's output arrays (the
     core's ``answers_arrays``), the results, R_i (n,))."""
     key = cols[7:13].tobytes() if hertz and cols.shape[1] == 1 else None
-    known = _SETUP_CACHE.get(key, _UNKNOWN) if key is not None else _UNKNOWN
+    known = known_setup(key)
     state, solved, result, geo, _, _, _, k0_values = _core.combined_call(
         z,
         cols,
@@ -607,7 +607,7 @@ def _general(
     def at(name: str, bad: Any, unit: str = "") -> str:  # the input's element of a bad case
         return validate.element_at(named[name], bad, shape, unit)
 
-    geo = _geometry_of(cols[_GROOVE], angular is not None, at)
+    geo = ring_geometry(dw, dm, fi, fo, cols[_ROW["groove"]], angular is not None, at)
     validate.ball_spacing(z, geo.D_w, geo.d_m)  # (z balls must fit on the pitch circle)
     if tilt_radius is not None:
         radius = validate.positive("tilt_radius", tilt_radius, "mm")
@@ -617,8 +617,7 @@ def _general(
         _check_one_sided_moment(z, cage, fa, (mm, mc), geo.R_i, imposed)
     curve = None
     if hertz:
-        k_ref, values = hertz_setup(geo, e, nu)
-        curve = StiffnessCurve(values)
+        k_ref, curve = hertz_setup(geo, e, nu)
     else:
         k_ref = k_in
     problem, mirror = _problem(z, cols[:6], cage, geo, k_ref, (angular, misalignment), at)
@@ -659,7 +658,6 @@ INPUT_ROWS = (
     "stiffness",
 )
 _ROW = {name: i for i, name in enumerate(INPUT_ROWS) if name}
-_GROOVE = slice(9, 14)  # (the last "groove": the clearance or the contact angle)
 _CLEARANCE, _CAGE = _ROW["clearance"], _ROW["cage_angle"]
 #: The rows of one case of plain numbers by name (:func:`_plain_inputs`).
 _PLAIN_ROWS = operator.itemgetter(*INPUT_ROWS)
@@ -894,15 +892,6 @@ def _check_cases(cases: dict[str, Any], at: Callable[..., str]) -> None:
                 raise rule.refusal(cases, bad, at)
 
 
-def _geometry_of(given: np.ndarray, angular: bool, at: Callable[..., str]) -> _Geometry:
-    """:func:`ring_geometry` of the groove's rows of :data:`INPUT_ROWS` (5, n), flat."""
-    big_a, g, alpha0, r_i, fits = _core.groove(given, angular, *validate.CONFORMITY_RANGE)
-    dw, dm, fi, fo = given[:4]
-    if np.count_nonzero(fits) < fits.size:  # (np.count_nonzero: a fifth of .all()'s time)
-        _refuse_geometry(dw, dm, fi, fo, g >= big_a, at)
-    return _Geometry(dw, dm, fi, fo, big_a, g, alpha0, r_i)
-
-
 #: Positions per revolution at which :func:`load_zone` first looks for the zone's ends, beside
 #: the balls' own: an arc of the zone narrower than their spacing (0.5°) that holds no ball
 #: is not seen. [-]
@@ -1074,7 +1063,7 @@ def _cases(named: dict[str, np.ndarray]) -> tuple[tuple[int, ...], list[np.ndarr
 
 
 def _equilibrium(
-    p: Problem, geo: _Geometry, curve: StiffnessCurve | None, given: dict, solved: Any = None
+    p: Problem, geo: _Geometry, curve: np.ndarray | None, given: dict, solved: Any = None
 ) -> tuple:
     """Every case solved (:func:`_thrust_retry`), a tilt the loads do not determine taken at
     its least (:func:`_least_norm_tilt`): as :func:`_solve_with_stiffness`, and which cases'
@@ -1575,7 +1564,7 @@ STAGE = 3.0
 
 
 def _light_start(
-    p: Problem, geo: _Geometry, curve: StiffnessCurve | None
+    p: Problem, geo: _Geometry, curve: np.ndarray | None
 ) -> tuple[np.ndarray, np.ndarray]:
     """The light angular-contact cases (ratio A/(F/K)^(2/3) above LIGHT_RATIO) and their starts
     (rows, (rows, 5)): the answer of the same case (the same load directions, misalignment and
@@ -1598,7 +1587,7 @@ def _light_start(
         t_imp=p.t_imp[rows] * p.scale[rows], locked=p.locked[rows], imposed=p.imposed[rows],
         f_ref=f_ref, k_ref=p.k_ref[rows], one_sided=p.one_sided[rows],
     )  # fmt: skip
-    own = None if curve is None else StiffnessCurve(curve.values[rows])
+    own = None if curve is None else curve[rows]
     vh, vl, *_, failed = _solve_with_stiffness(heavy, sub, own, strict=False)
     v = (vh + vl) * (heavy.scale / p.scale[rows])[:, None]
     kept = ~failed  # (a start only: where the heavier case fails, the standard one stays)
@@ -1618,7 +1607,7 @@ THRUST_STAGE_MIN = 1.01
 THRUST_STAGES_MAX = 200
 
 
-def _thrust_retry(p: Problem, geo: _Geometry, curve: StiffnessCurve | None, got: tuple) -> tuple:
+def _thrust_retry(p: Problem, geo: _Geometry, curve: np.ndarray | None, got: tuple) -> tuple:
     """``got``, :func:`_solve_with_stiffness` of ``p``, with the angular-contact cases that did not
     converge (residual above ACCEPT), under F_r and 0 < F_a < THRUST_RATIO F_r, solved
     again by :func:`_thrust_path`, each alone; a case keeps its first answer (and so its
@@ -1637,7 +1626,7 @@ def _thrust_retry(p: Problem, geo: _Geometry, curve: StiffnessCurve | None, got:
     )  # fmt: skip
     for i in rows.tolist():
         one = np.array([i])
-        own = None if curve is None else StiffnessCurve(curve.values[one])
+        own = None if curve is None else curve[one]
         again = _thrust_path(p.take(one), _geo_take(geo, one), own)
         if again is not None:
             _put_row((vh, vl, kappa, total, end, tangent), i, again)
@@ -1655,11 +1644,11 @@ def _put_row(got: tuple, i: int, again: tuple) -> None:
     tangent[1][0][i], tangent[1][1][i] = again[5][1][0][0], again[5][1][1][0]
 
 
-def _solve_row(q: Problem, geo: _Geometry, curve: StiffnessCurve | None, i: int) -> tuple:
+def _solve_row(q: Problem, geo: _Geometry, curve: np.ndarray | None, i: int) -> tuple:
     """Case ``i``'s problem ``q`` (one row, changed by the caller) solved alone with its own
     geometry and stiffness curve (:func:`_solve_with_stiffness`)."""
     one = np.array([i])
-    own = None if curve is None else StiffnessCurve(curve.values[one])
+    own = None if curve is None else curve[one]
     return _solve_with_stiffness(q, _geo_take(geo, one), own)
 
 
@@ -1673,7 +1662,7 @@ def _solve_row(q: Problem, geo: _Geometry, curve: StiffnessCurve | None, i: int)
 NEGLIGIBLE_THRUST = 1e-12
 
 
-def _neglect_thrust(p: Problem, geo: _Geometry, curve: StiffnessCurve | None, got: tuple) -> Any:
+def _neglect_thrust(p: Problem, geo: _Geometry, curve: np.ndarray | None, got: tuple) -> Any:
     """The cases of ``got`` (as :func:`_thrust_retry` returns them, updated in place) left
     unbalanced with a thrust below :data:`NEGLIGIBLE_THRUST` of their largest load, solved
     each alone with that share as its thrust (``p.f`` then holds it); which cases those are
@@ -1703,7 +1692,7 @@ NEAR_SYMMETRIC_DEG = 1e-9
 
 
 def _near_symmetric(
-    p: Problem, geo: _Geometry, curve: StiffnessCurve | None, got: tuple, cage: np.ndarray
+    p: Problem, geo: _Geometry, curve: np.ndarray | None, got: tuple, cage: np.ndarray
 ) -> None:
     """The cases of ``got`` (updated in place) left unbalanced with a cage within
     :data:`NEAR_SYMMETRIC_DEG` of a symmetric position and no moment across the load line,
@@ -1722,7 +1711,7 @@ def _near_symmetric(
         p.c[i], p.s[i], p.locked[i] = c[0], s[0], q.locked[0]
 
 
-def _thrust_path(q: Problem, geo: _Geometry, curve: StiffnessCurve | None) -> tuple | None:
+def _thrust_path(q: Problem, geo: _Geometry, curve: np.ndarray | None) -> tuple | None:
     """One case (``q`` of one row) solved by the continuation in the thrust of
     :func:`_thrust_retry`: the answer (as :func:`_solve_with_stiffness`, the iterations of
     every stage summed) at its own F_a, or None where a stage at THRUST_RATIO F_r, or one whose
@@ -1797,8 +1786,10 @@ def remember_setup(key: bytes, known: np.ndarray) -> None:
 
 
 def hertz_setup(geo: _Geometry, e: np.ndarray, nu: np.ndarray) -> tuple[np.ndarray, np.ndarray]:
-    """Per case, K_0 = K(alpha = 0) [N/mm^1.5] (n,) and the divided differences ``D(c) = (K(c)/
-    K_0 - 1)/(c - 1)`` at the nodes of :class:`StiffnessCurve` (n, NODES), in the compiled core
+    """Per case, K_0 = K(alpha = 0) [N/mm^1.5] (n,) and the stiffness curve: the divided
+    differences ``D(c) = (K(c)/K_0 - 1)/(c - 1)`` at the nodes NODE_X (n, NODES) of the
+    interpolant of K(alpha)/K_0 - 1 in cos(alpha) (docs/models.md, "The stiffness curve";
+    evaluated in the compiled core, ``curve_kappa``), in the compiled core
     (``hertz_curves``: K_0 the scalar path of :func:`bearingload.contact.hertz.ball_stiffness`,
     its bits, the nodes within rounding of it; a case of the geometry before takes its values). A
     geometry the core cannot set up goes through the vectorised path of ``ball_stiffness``,
@@ -1806,8 +1797,8 @@ def hertz_setup(geo: _Geometry, e: np.ndarray, nu: np.ndarray) -> tuple[np.ndarr
     up)."""
     params = np.array((e, nu, geo.D_w, geo.d_m, geo.f_i, geo.f_o), dtype=float)  # (6, n)
     key = params.tobytes() if params.shape[1] == 1 else None  # (one case: its six in order)
-    if key in _SETUP_CACHE:
-        known = _SETUP_CACHE[key]
+    known = known_setup(key)
+    if known.size:
         return known[:1].copy(), known[None, 1:].copy()
     params = params[[2, 3, 4, 5, 0, 1]].T.copy()  # (the core's order: D_w, d_m, f_i, f_o, E, nu)
     k0, values, bad = _core.hertz_curves(params, NODE_X)
@@ -1822,29 +1813,10 @@ def hertz_setup(geo: _Geometry, e: np.ndarray, nu: np.ndarray) -> tuple[np.ndarr
     return k0, values
 
 
-class StiffnessCurve:
-    """K(alpha)/K_0 - 1 of each case's geometry, from a Chebyshev interpolant in cos(alpha).
-
-    ``K`` depends on the angle only through ``c = cos(alpha)`` in the curvature sums, smoothly
-    (the nearest singularity, ``c = +-d_m/D_w``, lies far outside [0, 1]). Interpolated is the
-    divided difference ``D(c) = (K(c)/K(1) - 1)/(c - 1)`` at 24 Chebyshev points of the first
-    kind (inside (0, 1)), so that ``kappa = (c - 1) D(c)`` with ``c - 1 = -sin^2/(1 + cos)`` keeps
-    its digits at a contact angle of 1e-13 rad (heavy preload, tiny axial load: the forces are
-    summed from the deviations, :mod:`bearingload.models._combined_ring`). The tests check it
-    against :func:`ball_stiffness_at`. One Hertz evaluation per node and distinct geometry. The
-    interpolant is evaluated in the compiled core (``curve_kappa``, the barycentric formula at
-    the nodes NODE_X with the weights NODE_W).
-    """
-
-    def __init__(self, values: np.ndarray) -> None:
-        """``values``: D at the nodes over each case's K_0, (n, NODES) (:func:`hertz_setup`)."""
-        self.values = values
-
-
 def _solve_with_stiffness(
     p: Problem,
     geo: _Geometry,
-    curve: StiffnessCurve | None,
+    curve: np.ndarray | None,
     v0: np.ndarray | None = None,
     strict: bool = True,
 ) -> tuple[Any, ...]:
@@ -1866,7 +1838,7 @@ def _solve_with_stiffness(
             given[rows], start0[rows] = 1, light
     else:
         given[:], start0[:] = 1, v0
-    values = np.zeros((n, 0)) if curve is None else curve.values
+    values = np.zeros((n, 0)) if curve is None else curve
     vh, vl, kappa, total, status, at, tangent, holding, checks = _core.solve(
         p.c,
         p.s,
@@ -2013,7 +1985,11 @@ def distribution(
     line the couplings of (x, axial, tilt) with (y, tilt_cross) exactly 0)."""
     v, kappa, its, (block, gen), tangent = answer
     z = kappa.shape[1]
-    case_in = result_inputs(p, geo, given["moment"], given["cage_angle"])
+    case_in = np.array(  # (the case rows of the core's combined_result: its docstring)
+        (p.t_imp, p.scale, geo.R_i, geo.alpha0, geo.A, p.one_sided, p.f_ref)
+        + (given["moment"], given["cage_angle"], p.pre, p.k_ref),
+        dtype=float,
+    )
     rows, per_ball, overflow = _core.combined_result(
         np.ascontiguousarray(v),
         case_in,
@@ -2028,16 +2004,6 @@ def distribution(
         refuse_overflow()
     loads = (given["radial_load"], given["axial_load"], given["clearance"], given["cage_angle"])
     return distribution_of(shape, z, (rows, per_ball, tangent, its), loads, geo.R_i, flags)
-
-
-def result_inputs(p: Problem, geo: _Geometry, moment: Any, cage: np.ndarray) -> np.ndarray:
-    """The case rows (11, n) of the core's ``combined_result`` (its docstring) of the cases of
-    ``p`` and ``geo``, the moment given (or carried) and the cage angle."""
-    return np.array(
-        (p.t_imp, p.scale, geo.R_i, geo.alpha0, geo.A, p.one_sided, p.f_ref)
-        + (moment, cage, p.pre, p.k_ref),
-        dtype=float,
-    )
 
 
 def distribution_of(
