@@ -43,6 +43,12 @@ APPROACH_RANGE = (1e-100, 1e100)
 CLEARANCE_RATIO_MAX = 1e100
 #: Largest and smallest magnitude of a result (ball load [N], stiffness [N/mm]) accepted. [-]
 RESULT_RANGE = (1e-300, 1e300)
+#: The refusal of a radial load on 1 or 2 balls none of which sits on the load line (the radial
+#: and the combined engines').
+CAGE_OFF_LINE = (
+    "with 1 or 2 balls a ball must sit on the load line (cage angle 0), otherwise no "
+    "equilibrium exists"
+)
 
 
 def snapped_cos(phi: np.ndarray) -> np.ndarray:

@@ -24,7 +24,7 @@ from bearingload.errors import ConvergenceError, InputError
 from bearingload.models import _combined_ring as _ring
 from bearingload.models import _core
 from bearingload.models._combined_ring import ACCEPT, MAX_ITERATIONS, TOLERANCE, Problem
-from bearingload.models._ring import SYMMETRY_SNAP_DEG
+from bearingload.models._ring import CAGE_OFF_LINE, SYMMETRY_SNAP_DEG
 
 __all__ = ["CombinedDistribution", "solve_combined", "axial_only", "groove_geometry",
            "ball_stiffness_at", "TOLERANCE", "ACCEPT", "MAX_ITERATIONS"]  # fmt: skip
@@ -1357,11 +1357,7 @@ def _check_few_balls(z: int, cage: np.ndarray, loads: tuple[np.ndarray, ...], lo
         return
     fr, fa, mm, mc = loads
     if np.any((np.mod(cage, 360.0 / z) != 0) & (fr > 0)):
-        raise InputError(
-            "cage_angle",
-            "with 1 or 2 balls a ball must sit on the load line (cage angle 0), "
-            "otherwise no equilibrium exists",
-        )
+        raise InputError("cage_angle", CAGE_OFF_LINE)
     c = np.deg2rad(cage)
     size = np.maximum(np.hypot(mm, mc), 1e-300)
     if z == 1:

@@ -487,11 +487,7 @@ def _cage_kind(
     kind[near_zero] = 0
     kind[np.abs(mirror - 0.5) <= snap] = 1
     if np.any((z < 3) & (kind != 0)):
-        raise InputError(
-            "cage_angle",
-            "with 1 or 2 balls a ball must sit on the load line (cage angle 0), "
-            "otherwise no equilibrium exists",
-        )
+        raise InputError("cage_angle", _ring.CAGE_OFF_LINE)
     return frac, kind
 
 
