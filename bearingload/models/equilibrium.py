@@ -1,22 +1,13 @@
 """The ring-equilibrium engine: the exact discrete load distribution of a radial bearing.
 
 Every discrete model of the package is a case of this one (Kurochkin 1973, eqs. 1.1-1.8;
-Kuzmenko 2010, §1-3). Conventions:
-
-* Outer ring fixed, radial load ``F_r`` on the inner ring; angles measured from the load line.
-* ``z`` balls equally spaced; ball 1 sits at the cage angle ``phi_1``, ball ``i`` at
-  ``phi_i = phi_1 + 2*pi*(i - 1)/z``. Cage angle 0: a ball under the load; ``180/z`` degrees
-  ("half pitch"): the load acts between two balls.
-* ``clearance`` is the radial internal clearance ``G_r`` (total radial play, as in ISO 5753-1);
-  the gap per side is ``e = G_r/2``. Negative = preload.
-* Ball ``i`` is compressed by ``delta_i = x cos(phi_i) + y sin(phi_i) - e`` and carries
-  ``Q_i = K max(delta_i, 0)^m`` (``m`` = 3/2 balls, 10/9 rollers). The inner ring displacement
-  ``(x, y)`` minimises the convex potential ``sum K/(m+1) max(delta_i, 0)^(m+1) - F_r x``.
-
-Numerics and the near-symmetric cage angles (a cage within 3.2e-13° of 0 or half pitch is
-symmetric; at exactly 0 with one ball loaded, ``y = 0``): docs/models.md ("The model", "Range of
-the exact solver"). The solver is the compiled core's (``models/_radial.pxi``); one case given as
-numbers is a batch of one, so its answer is the same bits alone or in any batch.
+Kuzmenko 2010, §1-3). Outer ring fixed, radial load ``F_r`` on the inner ring, angles from the
+load line; ball 1 at the cage angle ``phi_1`` (0: a ball under the load; ``180/z``: half pitch);
+``clearance`` is the radial internal clearance ``G_r`` (total play, ISO 5753-1; the gap per side
+``e = G_r/2``; negative = preload); ``Q_i = K max(delta_i, 0)^m`` (``m`` = 3/2 balls, 10/9
+rollers). The model, the numerics and the near-symmetric cage angles: docs/models.md ("The
+model", "Range of the exact solver"). The solver is the compiled core's (``models/_radial.pxi``);
+one case given as numbers is a batch of one, so its answer is the same bits alone or in any batch.
 """
 
 from __future__ import annotations

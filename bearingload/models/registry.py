@@ -15,24 +15,8 @@ cases; the one exception is the exact model, which has no equilibrium with one o
 no ball sits on the load line), and every model answers with one
 :class:`~bearingload.models.case.Result`.
 
-=========  ==============================================================  =======================
-name       model                                                           ignores
-=========  ==============================================================  =======================
-exact      ring equilibrium of the discrete balls (Kurochkin 1973;         nothing
-           Kuzmenko 2010, §1-3), :func:`bearingload.models.equilibrium.solve`
-continuum  balls smeared over the raceway (Kuzmenko 2010, §4-5; Sjövall    cage angle
-           load-zone integral), :func:`bearingload.models.continuum.solve_continuum`
-stribeck   ``Q_max = 4.37 F_r/z`` (Stribeck 1901)                          stiffness, clearance,
-                                                                           cage angle, exponent
-palmgren   ``Q_max = 5 F_r/z`` (Palmgren 1959)                             stiffness, clearance,
-                                                                           cage angle, exponent
-=========  ==============================================================  =======================
-
-Adding a model: write one cited, vectorised function whose parameters are named like the case
-inputs (``balls, load, stiffness, clearance, cage_angle, exponent``; leave out what it ignores)
-and whose result has attributes named like :class:`~bearingload.models.case.Result`'s
-(``k``, ``q_max``, ``load_zone`` [°], ``x`` ...); add one :class:`Method` line to
-:func:`_build`; add its published values to ``bearingload/papers/data/published/``.
+The models (exact, continuum, stribeck, palmgren: :func:`_build`), their sources and what each
+ignores: docs/models.md; adding one: docs/architecture.md ("Adding a model").
 
 Importing this module imports no numpy (the command line lists the models at start-up).
 """
