@@ -213,8 +213,8 @@ def misalignment_fits(tilt: Any) -> Any:
 
 def misalignment_beyond(tilt: np.ndarray, bad: np.ndarray) -> InputError:
     """The refusal of the misalignments [°] ``tilt`` where ``bad`` (not
-    :func:`misalignment_fits`), naming the first."""
-    first = abs(float(np.asarray(tilt)[np.asarray(bad)].flat[0]))
+    :func:`misalignment_fits`), naming the first with its sign."""
+    first = float(np.asarray(tilt)[np.asarray(bad)].flat[0])  # as given: -3° reads -3°
     return InputError(
         "misalignment",
         f"must be within ±{MISALIGNMENT_MAX:g}° (got {first:.10g}°): a deep-groove ball bearing "

@@ -61,6 +61,16 @@ def test_a_tilt_of_degrees_is_refused(capsys):
     assert "Invalid value for '--misalignment': must be within ±2°" in err
 
 
+def test_a_negative_misalignment_is_refused_showing_its_sign(capsys):
+    """-3° was refused as 'got 3°' (its magnitude), on the command line and in the library."""
+    code, out, err = run_entry(capsys, "solve", "6205", "-F", "1kN", "--misalignment", "-3")
+    assert code == 2 and out == "" and err.count("\n") == 1
+    assert "must be within ±2° (got -3°)" in err
+    with pytest.raises(InputError) as info:
+        solve_combined(9, 1000.0, 0.0, **GEOMETRY, misalignment=-3.0)
+    assert info.value.message.startswith("must be within ±2° (got -3°)")
+
+
 def test_loads_too_small_for_the_combined_solver_are_refused(capsys):
     code, out, err = run_entry(capsys, "solve", "6205", "-F", "1e-9N", "-A", "1e-9N")
     assert code == 2 and err.count("\n") == 1 and "RuntimeWarning" not in err
