@@ -2161,7 +2161,8 @@ cdef void pair_move(const Pair *pr, double *jac, const double *grad,
                     double *step) noexcept nogil:
     """The Newton step on the pair's tangent ``jac`` (changed: the held components decoupled,
     regularised); where it is not finite or no ball is in contact, a move of length A against
-    the gradient; every component within A."""
+    the gradient; its axial parts (a, t, t_c) within A, as the single bearing's ``cap_step``
+    (a radial part capped too took 10^3 steps where the approach is 10^3 A)."""
     cdef double minus[5]
     cdef double trace = 0.0, norm = 0.0, longest = 0.0, a_hat = pr.bear.a_hat
     cdef bint bad = False
@@ -2186,11 +2187,12 @@ cdef void pair_move(const Pair *pr, double *jac, const double *grad,
         norm = max(sqrt(norm), 1e-300)
         for i in range(5):
             step[i] = -grad[i] / norm * a_hat
-    for i in range(5):
+    for i in range(2, 5):
         longest = max(longest, fabs(step[i]))
-    if longest > a_hat:
+    reach = max(a_hat, 0.1)
+    if longest > reach:
         for i in range(5):
-            step[i] *= a_hat / longest
+            step[i] *= reach / longest
 
 
 cdef void pair_step(const Pair *pr, PairWork *wk, double *step) noexcept nogil:
@@ -2684,7 +2686,7 @@ cdef int pair_set_up(const PairCall *call, Py_ssize_t k, const double *col, bint
         pc.geo[2] = col[16 * n]
     for i in range(6):
         load[i] = col[i * n]
-    pc.status = problem_case(call.z, load, col[6 * n], pc.geo, pc.k0, False, False, limits, 1,
+    pc.status = problem_case(call.z, load, col[6 * n], pc.geo, pc.k0, True, False, limits, 1,
                              call.c, call.s, &pc.mirror, held, pr.whole.f, pc.out)
     symmetry_locks(call.z, pc.mirror, load[0], load[1], load[2], load[3], 0.0, False,
                    limits[7] > 0, held)
@@ -2832,10 +2834,10 @@ def pair_call(int z, const double[:, ::1] cols, bint hertz, const double[::1] kn
     ``cols`` (17, n): the input rows of pair.INPUT_ROWS; ``hertz``: the Hertz stiffness (else
     the constant K of the stiffness row), with ``known`` = K_0 and the curve's values (1 +
     NODES) of every case where known, else empty; ``limits`` = the symmetry snap [°], the
-    largest A/s, 0, the conformity range (2), the residual accepted, sigma_k (2: +1, or -1 for
-    a mirrored bearing), z_k/B (2), the largest width over d_m, sin(180°/z) (balls of D_w above
-    d_m times it overlap: flagged NO_GROOVE); the nodes and weights of the curve; the iteration
-    limits are the module's.
+    largest and the smallest A/s (angular contact: TOO_HEAVY below it), the conformity range
+    (2), the residual accepted, sigma_k (2: +1, or -1 for a mirrored bearing), z_k/B (2), the
+    largest width over d_m, sin(180°/z) (balls of D_w above d_m times it overlap: flagged
+    NO_GROOVE); the nodes and weights of the curve; the iteration limits are the module's.
 
     Returns (whether no case is flagged, then (n cases): the PairFlags (uint8), problem_case's
     SetupStatus (int8), the steps, K_0 or the constant K, the curve's values (n, NODES), the

@@ -1095,7 +1095,7 @@ def _problem(
     load, the scale, the ball directions, the symmetry locks, the forces) and which cases are
     mirrored about the load line; the loads (6, n) (F_r, F_a, M, M_c, misalignment [°], 0: the
     rows of :data:`INPUT_ROWS`) refused as
-    :func:`reference_force`, :func:`check_scale` and :func:`_check_angular_scale` state.
+    :func:`reference_force`, :func:`check_scale` and :func:`check_angular_scale` state.
     ``given``: the contact angle and the misalignment as given (None: not given); ``at``
     names the element of a refused case (:func:`ring_geometry`)."""
     angular, imposed = (v is not None for v in given)
@@ -1139,10 +1139,9 @@ def _refuse_loads(
     sizes = lambda: load_sizes(fr, fa, mm, mc, geo.R_i)  # noqa: E731
     check_scale(f_ref, k_ref, geo.A, angular, sizes, status == _core.SetupStatus.TOO_LIGHT, at)
     if angular:
-        moment = np.hypot(mm, mc) / geo.R_i
-        _check_angular_scale(
-            f_ref, k_ref, geo.A, (fr, fa, moment), status == _core.SetupStatus.TOO_HEAVY, at
-        )
+        named = {"radial_load": fr, "axial_load": fa, "moment": np.hypot(mm, mc) / geo.R_i}
+        heavy = status == _core.SetupStatus.TOO_HEAVY
+        check_angular_scale(f_ref, k_ref, geo.A, named, heavy, at)
 
 
 def call_balls(balls: Any) -> int:
@@ -1596,30 +1595,41 @@ ANGULAR_NO_OTHER_SOLVER = (
 ANGULAR_RATIO_MIN = 1e-4
 
 
-def _check_angular_scale(
+#: The words of a load of :func:`check_angular_scale`'s ``sizes`` in its refusal.
+_SIZE_WORDS = {
+    "radial_load": "F_r",
+    "axial_load": "F_a",
+    "moment": "M/R_i",
+    "preload": "the preload",
+}
+
+
+def check_angular_scale(
     f_ref: np.ndarray,
     k_ref: np.ndarray,
     big_a: np.ndarray,
-    loads: tuple[np.ndarray, ...],
+    sizes: dict[str, np.ndarray],
     flagged: Any = False,
     at: Callable[..., str] = _no_element,
 ) -> None:
     """Refuse loads so large against an angular-contact bearing's groove geometry A that its
-    one-sided equilibrium is not solved reliably (see :data:`ANGULAR_RATIO_MIN`); ``flagged``:
-    the cases the compiled core judged so, ``at`` names the element (as :func:`check_scale`)."""
+    one-sided equilibrium is not solved reliably (see :data:`ANGULAR_RATIO_MIN`): a single
+    bearing's and each of a pair's. ``sizes``: the loads as forces by parameter (flat, of
+    :data:`_SIZE_WORDS`), the largest of the first case refused named; ``flagged``: the cases
+    the compiled core judged so, ``at`` names the element (as :func:`check_scale`)."""
     a = big_a if np.shape(big_a) == f_ref.shape else np.broadcast_to(big_a, f_ref.shape)
     with np.errstate(over="ignore", divide="ignore"):
         bad = (a / (f_ref / k_ref) ** (2.0 / 3.0) < ANGULAR_RATIO_MIN) | flagged
     if bad.any():
         i = int(np.argmax(bad))
         f_max = float(k_ref[i] * (a[i] / ANGULAR_RATIO_MIN) ** 1.5)
-        which = int(np.argmax([np.broadcast_to(v, f_ref.shape)[i] for v in loads]))
-        name = ("radial_load", "axial_load", "moment")[which]
+        name = _largest_load(sizes, i)
+        *most, last = (_SIZE_WORDS[k] for k in sizes)
         raise InputError(
             name,
-            f"too large for the angular-contact model: the largest of F_r, F_a and M/R_i is "
-            f"{float(f_ref[i]):.4g} N; above {f_max:.3g} N on this bearing (a ball approach of "
-            f"{1 / ANGULAR_RATIO_MIN:.0e} times the groove-centre distance A = "
+            f"too large for the angular-contact model: the largest of {', '.join(most)} and "
+            f"{last} is {float(f_ref[i]):.4g} N; above {f_max:.3g} N on this bearing (a ball "
+            f"approach of {1 / ANGULAR_RATIO_MIN:.0e} times the groove-centre distance A = "
             f"{float(a[i]):.4g} mm, the contact angles next to 90°, the groove edge) the "
             "one-sided equilibrium is not solved reliably and the loads are refused",
             element=at(name, bad, INPUT_UNITS[name]),

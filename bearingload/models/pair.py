@@ -353,7 +353,8 @@ def _call(z: int, kind: str, cols: np.ndarray, hertz: bool, known: np.ndarray) -
     """The compiled core's ``pair_call`` of the packed inputs ``cols`` (its docstring), the
     Hertz set-up ``known`` of every case (or empty)."""
     low, high = validate.CONFORMITY_RANGE
-    limits = (SYMMETRY_SNAP_DEG, _comb.GEOMETRY_RATIO_MAX, 0.0, low, high, ACCEPT)
+    ratios = (_comb.GEOMETRY_RATIO_MAX, _comb.ANGULAR_RATIO_MIN)
+    limits = (SYMMETRY_SNAP_DEG, *ratios, low, high, ACCEPT)
     limits += (1.0, -1.0 if kind != "DT" else 1.0, *halves(kind).tolist(), WIDTH_MAX, _chord(z))
     return _core.pair_call(z, cols, hertz, known, np.array(limits), _comb.NODE_X, _comb.NODE_W)
 
@@ -394,7 +395,7 @@ def _general(
         out = _call(z, kind, cols, *hertz)
     names = ("radial_load", "axial_load", "moment", "moment_cross", "preload")
     if np.count_nonzero(out[2]):
-        _refuse_scale(geo, out[4], out[2] == _core.SetupStatus.TOO_LIGHT, *(c[k] for k in names))
+        _refuse_scale(geo, out[4], out[2], *(c[k] for k in names))
     flags, its, res = out[1], out[3], out[9][12]
     unbalanced = (flags & _core.PairFlag.UNBALANCED) != 0
     if snap and np.count_nonzero(unbalanced):
@@ -534,10 +535,11 @@ NAMED = (
 )
 
 
-def _refuse_scale(geo: Any, k_ref: np.ndarray, flagged: np.ndarray, *loads: np.ndarray) -> None:
-    """InputError on the loads of a pair the core flags: none at all, or too small for the
-    groove geometry (``flagged``: the core decides; the combined model's check words it, its
-    advice replaced)."""
+def _refuse_scale(geo: Any, k_ref: np.ndarray, status: np.ndarray, *loads: np.ndarray) -> None:
+    """InputError on the loads of a pair the core flags (``status``: its SetupStatus): none at
+    all, too small for the groove geometry (the combined model's check words it, its advice
+    replaced) or too large for it (the single angular-contact bearing's rule and words: each
+    bearing of the pair is one); the core decides."""
     fr, fa, mm, mc, fp = loads
     f_ref = np.maximum(_comb.reference_force(fr, fa, mm, mc, geo.R_i), fp)
     if (f_ref <= 0).any():
@@ -551,8 +553,9 @@ def _refuse_scale(geo: Any, k_ref: np.ndarray, flagged: np.ndarray, *loads: np.n
     def sizes() -> dict[str, np.ndarray]:
         return {"preload": fp} | _comb.load_sizes(fr, fa, mm, mc, geo.R_i)
 
+    light = status == _core.SetupStatus.TOO_LIGHT
     try:
-        _comb.check_scale(f_ref, k_ref, geo.A, sizes=sizes, flagged=flagged)
+        _comb.check_scale(f_ref, k_ref, geo.A, sizes=sizes, flagged=light)
     except InputError as exc:  # its advice (the radial solver) does not apply to a pair
         if exc.reason not in (_comb.TOO_LIGHT, _comb.TOO_LIGHT_ANGULAR):
             raise
@@ -563,6 +566,10 @@ def _refuse_scale(geo: Any, k_ref: np.ndarray, flagged: np.ndarray, *loads: np.n
             f"the preload is {float(np.min(f_ref)):.3g} N; it takes at least {f_min:.2g} N for "
             "this bearing)",
         ) from exc
+    heavy = status == _core.SetupStatus.TOO_HEAVY
+    moment = np.hypot(mm, mc) / geo.R_i
+    named = {"radial_load": fr, "axial_load": np.abs(fa), "moment": moment, "preload": fp}
+    _comb.check_angular_scale(f_ref, k_ref, geo.A, named, heavy)
 
 
 def _near_symmetric(z: int, cage: np.ndarray, mc: np.ndarray) -> np.ndarray:
