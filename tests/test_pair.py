@@ -11,6 +11,7 @@ Hertz limit 2^1.5 F_p; the refusals.
 
 from __future__ import annotations
 
+import itertools
 import math
 
 import mpmath as mp
@@ -437,3 +438,67 @@ def test_a_heavy_thrust_on_a_pair_reaches_the_groove_edge_not_a_convergence_erro
         solve_combined(Z, 1e10, 1e10, contact_angle=40.0, **B7205)
     with pytest.raises(InputError, match="to a contact angle of 90°"):
         solve_pair(Z, 1e10, 1e10, arrangement=arrangement, contact_angle=40.0, width=WIDTH, **B7205)
+
+
+#: One case of a pair breaking one rule of its inputs each (the rest valid), in the order the
+#: rules are checked, and the parameter refused.
+ONE_PAIR_RULE_BROKEN = [
+    ({"radial_load": -1.0}, "radial_load"),
+    ({"contact_angle": 0.0}, "contact_angle"),
+    ({"preload": -1.0}, "preload"),
+    ({"arrangement": "DT", "preload": 100.0}, "preload"),
+    ({"arrangement": "DT", "preload": 0.0, "axial_load": 0.0}, "axial_load"),
+    ({"width": 0.0}, "width"),
+    ({"f_i": 0.5}, "f_i"),
+    ({"f_o": 1.0}, "f_o"),
+    ({"modulus": -1.0}, "modulus"),
+    ({"stiffness": 0.0}, "stiffness"),
+    ({"tilt_radius": -2.0}, "tilt_radius"),
+    ({"ball_diameter": 1e-3}, "ball_diameter"),
+]
+
+
+def _pair_case(**given):
+    kw = dict(radial_load=2000.0, axial_load=1000.0, preload=300.0, contact_angle=40.0)
+    return kw | dict(width=WIDTH, **B7205) | given
+
+
+@pytest.mark.parametrize(("given", "parameter"), ONE_PAIR_RULE_BROKEN)
+def test_one_pair_case_of_plain_numbers_is_refused_as_an_array_of_it(given, parameter):
+    """The pair's one-case fast gate (plain floats) and its checked path (arrays) take the same
+    rules: one broken rule is refused with the same message either way."""
+    kw = _pair_case(**given)
+    with pytest.raises(InputError) as plain:
+        solve_pair(Z, **kw)
+    arrays = {k: v if k == "arrangement" else np.array([v]) for k, v in kw.items()}
+    with pytest.raises(InputError) as checked:
+        solve_pair(Z, **arrays)
+    assert plain.value.parameter == checked.value.parameter == parameter
+    assert str(plain.value) == str(checked.value)
+
+
+def test_the_pairs_rules_are_checked_in_their_order():
+    """Of two broken rules the first in the order is named, on either path."""
+    for (first, name), (second, _) in itertools.pairwise(ONE_PAIR_RULE_BROKEN):
+        if any(first[k] != second[k] for k in set(first) & set(second)):
+            continue  # (two preloads, two arrangements' rules)
+        kw = _pair_case(**{**second, **first})
+        arrays = {k: v if k == "arrangement" else np.array([v]) for k, v in kw.items()}
+        for args in (kw, arrays):
+            with pytest.raises(InputError) as info:
+                solve_pair(Z, **args)
+            assert info.value.parameter == name, (first, second, info.value)
+
+
+def test_the_pairs_fast_gate_and_checked_path_read_one_table_of_rules():
+    """pair._plain restated the conditions pair._checked tested (as combined's fast path did
+    before its rules table): both now read pair's rules, the single bearing's where they are
+    the same rule (F_r >= 0, the conformities, E and K > 0, the ball size)."""
+    from bearingload.models import combined, pair
+
+    rules = pair._INPUT_RULES + pair._CASE_RULES
+    assert all(isinstance(rule, combined.Rule) for rule in rules)
+    assert combined.RADIAL_LOAD_RULE in pair._INPUT_RULES
+    assert pair._CASE_RULES == (combined.BALL_SIZE_RULE,)
+    for gate in pair._GATES.values():
+        assert set(gate) <= {rule.holds for rule in rules}
