@@ -4608,6 +4608,11 @@ def combined_call(int z, const double[:, ::1] cols, bint angular, bint imposed,
     return (state, arrays, result_a, geo_a, k0_a, values_a, f_a, kv_a)
 
 
+#: Below it a ball's angle [°] is kept, at or above it it is a whole turn, 0: the rule of
+#: validate.reduced_angle (360 less validate.TURN_ROUNDING, 4 eps 360°, computed alike).
+cdef double TURN_BELOW = 360.0 - 4.0 * 2.220446049250313e-16 * 360.0
+
+
 cdef bint result_case(const double *v, const double *case_in, Py_ssize_t m, const double *gen,
                       const double **bl, Py_ssize_t step, const double *kappa, int z,
                       bint imposed, double *tangent, bint mirrored, double *out, double *ball,
@@ -4616,10 +4621,11 @@ cdef bint result_case(const double *v, const double *case_in, Py_ssize_t m, cons
     (``m`` apart), forces ``gen`` (5), the ball arrays it reads (``bl``: the approach less p,
     cos and sin of the contact angle, the scaled load, ``step`` apart along the balls), its
     stiffness deviations ``kappa`` (z); its tangent made physical in place (``mirrored``: as
-    ``physical_case``); writes its column of the case rows (``n`` apart) and its ball rows (``n z`` apart).
+    ``physical_case``); writes its column of the case rows (``n`` apart) and its ball rows (``n z`` apart),
+    the ball angles reduced to [0, 360) as validate.reduced_angle reduces them (:data:`TURN_BELOW`).
     Returns 0 where the physical stiffness overflows."""
     cdef double w[5]
-    cdef double sc = case_in[m], lever = case_in[2 * m], sin0, deg = 180.0 / PI
+    cdef double sc = case_in[m], lever = case_in[2 * m], sin0, deg = 180.0 / PI, phi
     cdef Py_ssize_t nz = n * z
     cdef int j
     for j in range(5):
@@ -4633,7 +4639,8 @@ cdef bint result_case(const double *v, const double *case_in, Py_ssize_t m, cons
     out[6 * n] = 0.0 if case_in[5 * m] else 2.0 * case_in[4 * m] * sin0
     out[7 * n] = lever * case_in[6 * m] * gen[3] if imposed else case_in[7 * m]
     for j in range(z):
-        ball[j] = floor_mod(case_in[8 * m] + 360.0 * j / z, 360.0)
+        phi = floor_mod(case_in[8 * m] + 360.0 * j / z, 360.0)  # (never -0)
+        ball[j] = phi if phi < TURN_BELOW else 0.0  # (just below a whole turn: 0, as the cage)
         ball[nz + j] = atan2(bl[2][j * step], bl[1][j * step]) * deg
         ball[2 * nz + j] = (case_in[9 * m] + bl[0][j * step]) * sc
         ball[3 * nz + j] = (1.0 + kappa[j]) * case_in[10 * m]

@@ -2192,7 +2192,6 @@ def distribution_of(
     cases = rows.reshape((8,) + shape) if shape else rows[:, 0].tolist()
     x, y, axial, tilt, tilt_cross, alpha0, play, moment = cases
     phi, alpha, approach, k_ball, q = per_ball.reshape((5,) + shape + (z,))
-    phi = validate.reduced_angle(phi)  # (a ball just below a whole turn at 0, as the cage)
     fr, fa, gr, cage = loads
 
     def case(a: np.ndarray) -> Any:
