@@ -4621,9 +4621,9 @@ cdef bint result_case(const double *v, const double *case_in, Py_ssize_t m, cons
     (``m`` apart), forces ``gen`` (5), the ball arrays it reads (``bl``: the approach less p,
     cos and sin of the contact angle, the scaled load, ``step`` apart along the balls), its
     stiffness deviations ``kappa`` (z); its tangent made physical in place (``mirrored``: as
-    ``physical_case``); writes its column of the case rows (``n`` apart) and its ball rows (``n z`` apart),
-    the ball angles reduced to [0, 360) as validate.reduced_angle reduces them (:data:`TURN_BELOW`).
-    Returns 0 where the physical stiffness overflows."""
+    ``physical_case``); writes its column of the case rows (``n`` apart) and its ball rows
+    (``n z`` apart), the ball angles reduced to [0, 360) as validate.reduced_angle reduces
+    them (``TURN_BELOW``). Returns 0 where the physical stiffness overflows."""
     cdef double w[5]
     cdef double sc = case_in[m], lever = case_in[2 * m], sin0, deg = 180.0 / PI, phi
     cdef Py_ssize_t nz = n * z
