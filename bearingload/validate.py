@@ -57,10 +57,11 @@ def cage_angle(value: object, name: str = "cage_angle") -> np.ndarray:
     return np.asarray(reduced_angle(finite(name, value)))
 
 
-#: The rounding of reducing an angle to one turn: 4 ulps of 360° (3.2e-13°). An angle within it
-#: below a whole turn is the turn, 0 (-1e-13° reduces to 359.9999999999999°, which every output
-#: printed as 360°); the solvers take a cage angle within it of a symmetric position as that
-#: position (models._ring.SYMMETRY_SNAP_DEG). [°]
+#: The rounding of reducing an angle to one turn: 4 eps times 360° (3.2e-13°, 5.6 ulps of 360:
+#: the doubles 1 to 6 ulps below 360 are within it). An angle within it below a whole turn is
+#: the turn, 0 (-1e-13° reduces to 359.9999999999999°, which every output printed as 360°); the
+#: solvers take a cage angle within it of a symmetric position as that position
+#: (models._ring.SYMMETRY_SNAP_DEG); the core's result_case reduces the ball angles by it. [°]
 TURN_ROUNDING = 4.0 * float(np.finfo(float).eps) * 360.0
 
 
