@@ -12,8 +12,8 @@ from bearingload.errors import InputError
 
 def finite(name: str, value: object) -> np.ndarray:
     """Return ``value`` as a float array, raising :class:`InputError` on NaN or infinity, on
-    text (units belong to the command line: the library takes N, mm, N/mm^m, degrees) and on
-    booleans."""
+    text (units belong to the command line: the library takes N, mm, N/mm^m, degrees), on
+    booleans and on dates or time spans (:func:`not_real`), alone or as elements of a list."""
     number = plain(value)
     if number is not None:
         return np.array(number)
@@ -25,25 +25,20 @@ def finite(name: str, value: object) -> np.ndarray:
         raise InputError(
             name, "must be a number or an array of numbers (got lists of unequal lengths)"
         ) from None
-    if isinstance(value, (bool, np.bool_)) or raw.dtype == bool:
-        raise InputError(
-            name,
-            f"must be a number, not a boolean (got {value!r})",
-            element=element(raw, np.ones(raw.shape, dtype=bool)),
-        )
+    if not isinstance(value, np.ndarray) and raw.ndim:  # a list: its own elements, not
+        raw = np.asarray(value, dtype=object)  # numpy's common type (True read as 1)
     try:
-        if raw.dtype.kind == "c" or (raw.dtype.kind in "USO" and _any_not_real(raw)):
-            raise ValueError  # (numpy would read them as numbers: _not_real)
+        if raw.dtype.kind not in "iuf" and _any_not_real(raw):
+            raise ValueError  # (numpy would read them as numbers: not_real)
         arr = np.asarray(value, dtype=float)
     except (TypeError, ValueError, OverflowError):
-        if not isinstance(value, np.ndarray) and raw.ndim:  # a list: its own elements, not
-            raw = np.asarray(value, dtype=object)  # numpy's common type (1.0 read as '1.0')
         bad = _not_numbers(raw)
-        first = raw[bad].flat[0] if bad.any() else value
-        first = first.item() if isinstance(first, np.generic) else first
+        first = _item(raw[bad].flat[0] if bad.any() else value)
         raise InputError(
             name,
-            f"must be a number (got {first!r}); the library takes N, mm, N/mm^m and "
+            f"must be a number, not a boolean (got {first!r})"
+            if isinstance(first, bool)
+            else f"must be a number (got {first!r}); the library takes N, mm, N/mm^m and "
             "degrees (bearingload.units.parse_quantity reads text with a unit)",
             element=element(raw, bad),
         ) from None
@@ -62,10 +57,11 @@ def cage_angle(value: object, name: str = "cage_angle") -> np.ndarray:
     return np.asarray(reduced_angle(finite(name, value)))
 
 
-#: The rounding of reducing an angle to one turn: 4 ulps of 360° (3.2e-13°). An angle within it
-#: below a whole turn is the turn, 0 (-1e-13° reduces to 359.9999999999999°, which every output
-#: printed as 360°); the solvers take a cage angle within it of a symmetric position as that
-#: position (models._ring.SYMMETRY_SNAP_DEG). [°]
+#: The rounding of reducing an angle to one turn: 4 eps times 360° (3.2e-13°, 5.6 ulps of 360:
+#: the doubles 1 to 6 ulps below 360 are within it). An angle within it below a whole turn is
+#: the turn, 0 (-1e-13° reduces to 359.9999999999999°, which every output printed as 360°); the
+#: solvers take a cage angle within it of a symmetric position as that position
+#: (models._ring.SYMMETRY_SNAP_DEG); the core's result_case reduces the ball angles by it. [°]
 TURN_ROUNDING = 4.0 * float(np.finfo(float).eps) * 360.0
 
 
@@ -218,8 +214,8 @@ def misalignment_fits(tilt: Any) -> Any:
 
 def misalignment_beyond(tilt: np.ndarray, bad: np.ndarray) -> InputError:
     """The refusal of the misalignments [°] ``tilt`` where ``bad`` (not
-    :func:`misalignment_fits`), naming the first."""
-    first = abs(float(np.asarray(tilt)[np.asarray(bad)].flat[0]))
+    :func:`misalignment_fits`), naming the first with its sign."""
+    first = float(np.asarray(tilt)[np.asarray(bad)].flat[0])  # as given: -3° reads -3°
     return InputError(
         "misalignment",
         f"must be within ±{MISALIGNMENT_MAX:g}° (got {first:.10g}°): a deep-groove ball bearing "
@@ -362,7 +358,7 @@ def _worst(arr: np.ndarray, bad: np.ndarray) -> str:
 
 def _shown(value: Any) -> str:
     """One value as a message shows it: a whole number without ``.0``, else its shortest repr."""
-    item = value.item() if isinstance(value, np.generic) else value
+    item = _item(value)
     if isinstance(item, bool) or not isinstance(item, (int, float)):
         return repr(item)
     if isinstance(item, int) and not -1e308 < item < 1e308:
@@ -404,23 +400,37 @@ def element_at(value: object, bad: Any, shape: tuple[int, ...], unit: str = "") 
     return f"[{where}] = {_shown(arr[own])}" + (f" {unit}" if unit else "")
 
 
-def _not_real(v: object) -> bool:
-    """Whether one element is text, None or a complex number: what numpy would read as a real
-    number ("1000" as 1000.0, None as NaN, 1+0j as 1.0) but the library refuses."""
-    return v is None or isinstance(v, (str, bytes, complex, np.complexfloating))
+#: The types of :func:`not_real` (besides None).
+_NOT_REAL = (str, bytes, complex, np.complexfloating, bool, np.bool_, np.datetime64, np.timedelta64)
+
+
+def not_real(v: object) -> bool:
+    """Whether one value (an element) is text, None, a complex number, a boolean, a date or a
+    time span: what numpy would read as a real number ("1000" as 1000.0, None as NaN, 1+0j as
+    1.0, True as 1, the year 2020 as 50) but the library refuses."""
+    return v is None or isinstance(v, _NOT_REAL)
+
+
+def _item(value: Any) -> Any:
+    """A numpy scalar as the Python value a message shows (np.float64(2.0) as 2.0, np.True_ as
+    True); a date or a time span as numpy shows it (its ``item`` is a datetime)."""
+    if isinstance(value, np.generic) and not isinstance(value, (np.datetime64, np.timedelta64)):
+        return value.item()
+    return value
 
 
 def _any_not_real(raw: np.ndarray) -> bool:
-    """Whether an array of text or objects holds an element :func:`_not_real`."""
-    return any(_not_real(v) for v in raw.flat)
+    """Whether an array (of objects, text, booleans, complex numbers or dates) holds an element
+    :func:`not_real`: the first such element ends the search."""
+    return any(not_real(v) for v in raw.flat)
 
 
 def _not_numbers(raw: np.ndarray) -> np.ndarray:
-    """Where an array holds an element that is not a number (:func:`_not_real`, an object)."""
+    """Where an array holds an element that is not a number (:func:`not_real`, an object)."""
     out = np.zeros(raw.shape, dtype=bool)
     for i, v in np.ndenumerate(raw):
         try:
-            out[i] = _not_real(v) or float(v) is None  # float() refuses the rest
+            out[i] = not_real(v) or float(v) is None  # float() refuses the rest
         except (TypeError, ValueError, OverflowError):
             out[i] = True
     return out

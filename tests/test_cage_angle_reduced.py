@@ -108,3 +108,72 @@ def test_a_ball_just_below_a_whole_turn_is_at_0(args):
     angles = doc["cases"][0]["ball_angles"]
     assert angles[-1] == 0.0 and angles[0] == pytest.approx(40.0, abs=1e-12)
     assert "360" not in invoke("solve", *args, cage).output
+
+
+#: Angles about the edges of one turn: -1e-13° and the doubles 1 to 8 ulps below 360° (the
+#: rule's TURN_ROUNDING, 4 eps 360°, is 5.6 ulps of 360: at 6 ulps and nearer, 0), 360° and
+#: the first double above, 0 and -0, a tiny negative, a whole number of turns.
+EDGE_ANGLES = [-1e-13, -1e-17, -1e-320, -0.0, 0.0, 360.0, 720.0, -360.0, 1e-300, -3e-13]
+EDGE_ANGLES += [float(360.0 - k * np.spacing(360.0, dtype=float)) for k in range(1, 9)]
+EDGE_ANGLES += [float(np.nextafter(360.0, 400.0)), 359.9999999999999, -1e-12]
+
+
+def _core_ball_angles(angles: np.ndarray) -> np.ndarray:
+    """The angle of the one ball (z = 1) of cases whose cage is at ``angles``, as the core's
+    result_case writes it (``combined_result``; the other rows are not read here)."""
+    from bearingload.models import _core
+
+    n = angles.size
+    case_in = np.zeros((11, n))
+    case_in[1] = case_in[2] = case_in[4] = case_in[6] = case_in[10] = 1.0  # s, R_i, A, F, K_0
+    case_in[8] = angles
+    position, forces, kappa = np.zeros((n, 5)), np.zeros((n, 5)), np.zeros((n, 1))
+    at_balls, tangent, mirrored = np.zeros((13, n, 1)), np.zeros((n, 5, 5)), np.zeros(n, np.uint8)
+    _, balls, _ = _core.combined_result(
+        position, case_in, forces, at_balls, kappa, False, tangent, mirrored
+    )
+    return balls[0, :, 0]
+
+
+def test_the_core_reduces_a_ball_angle_as_validate_reduces_an_angle():
+    """The ball angles were reduced in Python (validate.reduced_angle in combined.distribution_
+    of, 2 us of a 22 us call); the core's result_case reduces them where it makes them, to the
+    same bits: random angles of many turns either way and the edges of a turn."""
+    rng = np.random.default_rng(5)
+    turns = 360.0 * rng.integers(-5, 6, 500) - rng.uniform(0.0, 1e-12, 500)
+    random = (rng.uniform(-1e4, 1e4, 2000), rng.uniform(-1.0, 1.0, 500), turns)
+    angles = np.concatenate((np.array(EDGE_ANGLES), *random))
+    got = _core_ball_angles(angles)
+    want = reduced_angle(angles)
+    assert np.all((0.0 <= got) & (got < 360.0))
+    assert got.view(np.int64).tolist() == want.view(np.int64).tolist()  # bits: no -0
+    assert got[0] == got[EDGE_ANGLES.index(360.0 - np.spacing(360.0))] == 0.0  # -1e-13°, 1 ulp
+
+
+@pytest.mark.parametrize("z", [3, 4, 7, 9, 12, 16])
+def test_the_ball_angles_of_every_solver_are_the_reduced_angles_of_the_balls(z):
+    """Ball j at the cage plus 360° j/z, reduced to one turn by validate.reduced_angle (as
+    combined.distribution_of did): the same bits, one case or many, single bearing and pair;
+    cages a rounding below a ball's pitch included (a ball just below 360°: 0)."""
+    from bearingload.models.combined import solve_combined
+    from bearingload.models.pair import solve_pair
+
+    rng = np.random.default_rng(z)
+    pitch = 360.0 / z
+    below = [pitch * k - np.spacing(pitch * k) * j for k in (1, z) for j in range(1, 6)]
+    cages = np.concatenate((rng.uniform(0.0, 360.0, 8), pitch * np.arange(1, z + 1) - 1e-13, below))
+    geometry = {"ball_diameter": 7.938 if z <= 12 else 4.0, "pitch_diameter": 38.5}
+    one = [solve_combined(z, 1000.0, 100.0, cage_angle=float(c), **geometry) for c in cages]
+    kw = {"preload": 100.0, "contact_angle": 40.0, "width": 15.0, **geometry}
+    pair = solve_pair(z, 1000.0, 100.0, cage_angle=cages, **kw)
+    solved = {
+        "combined": solve_combined(z, 1000.0, 100.0, cage_angle=cages, **geometry).ball_angles,
+        "combined, one case": np.array([r.ball_angles for r in one]),
+        "pair, bearing 1": pair.bearings[0].ball_angles,
+        "pair, bearing 2": pair.bearings[1].ball_angles,
+    }
+    cage = reduced_angle(cages)
+    want = reduced_angle(np.mod(cage[:, None] + 360.0 * np.arange(z) / z, 360.0))
+    for name, got in solved.items():
+        got = np.asarray(got, dtype=float).reshape(want.shape)
+        assert got.view(np.int64).tolist() == want.view(np.int64).tolist(), name

@@ -75,7 +75,7 @@ def test_a_clearance_beside_an_array_of_ball_diameters_is_named_by_its_own_eleme
 
 
 @MODELS
-@pytest.mark.parametrize(("misalignment", "shown"), [(1e300, "1e+300"), (3.0, "3"), (-2.5, "2.5")])
+@pytest.mark.parametrize(("misalignment", "shown"), [(1e300, "1e+300"), (3.0, "3"), (-2.5, "-2.5")])
 def test_a_misalignment_beyond_two_degrees_is_refused_naming_it(model, misalignment, shown):
     """1e300° ended in a ConvergenceError after 0 iterations and 3° was solved; the command
     line refuses a misalignment beyond ±2°."""

@@ -9,7 +9,7 @@ import re
 import numpy as np
 import pytest
 
-from bearingload import InputError, ring_forces, solve
+from bearingload import InputError, analyse, ring_forces, solve, solve_pair
 from bearingload.models.combined import solve_combined
 from bearingload.models.high_speed import solve_high_speed
 
@@ -59,6 +59,16 @@ def test_a_tilt_of_degrees_is_refused(capsys):
     code, out, err = run_entry(capsys, "solve", "6205", "-F", "1kN", "--misalignment", "90")
     assert code == 2 and out == "" and err.count("\n") == 1
     assert "Invalid value for '--misalignment': must be within ±2°" in err
+
+
+def test_a_negative_misalignment_is_refused_showing_its_sign(capsys):
+    """-3° was refused as 'got 3°' (its magnitude), on the command line and in the library."""
+    code, out, err = run_entry(capsys, "solve", "6205", "-F", "1kN", "--misalignment", "-3")
+    assert code == 2 and out == "" and err.count("\n") == 1
+    assert "must be within ±2° (got -3°)" in err
+    with pytest.raises(InputError) as info:
+        solve_combined(9, 1000.0, 0.0, **GEOMETRY, misalignment=-3.0)
+    assert info.value.message.startswith("must be within ±2° (got -3°)")
 
 
 def test_loads_too_small_for_the_combined_solver_are_refused(capsys):
@@ -353,3 +363,66 @@ def test_a_zero_dimensional_array_not_a_number_is_shown_as_its_value(value, show
         solve_combined(9, value, 100.0, ball_diameter=7.938, pitch_diameter=38.5)
     assert f"must be a number (got {shown})" in str(info.value)
     assert "array(" not in str(info.value)
+
+
+PAIR_GEOMETRY = {**GEOMETRY, "contact_angle": 40.0, "width": 15.0, "preload": 100.0}
+
+#: Each model's call with its radial load given as ``v``.
+LOAD_CALLS = {
+    "solve": (lambda v: solve(8, v, 1e5), "load"),
+    "solve_combined": (lambda v: solve_combined(9, v, 100.0, **GEOMETRY), "radial_load"),
+    "solve_pair": (lambda v: solve_pair(12, v, 100.0, **PAIR_GEOMETRY), "radial_load"),
+    "solve_high_speed": (
+        lambda v: solve_high_speed(9, v, 100.0, speed=5000.0, contact_angle=25.0, **GEOMETRY),
+        "radial_load",
+    ),
+    "analyse": (lambda v: analyse("6205", load=v), "load"),
+    "analyse a pair": (lambda v: analyse("7205BDB", load=v), "load"),
+}
+
+
+@pytest.mark.parametrize("call", LOAD_CALLS, ids=str)
+@pytest.mark.parametrize(
+    "value",
+    [
+        np.datetime64("2020"),
+        np.timedelta64(3, "s"),
+        np.array(["2020-01-01"], dtype="datetime64[D]"),
+        [1000.0, np.datetime64("2020")],
+        True,
+        np.True_,
+        [1000, True],
+        [1000.0, np.True_],
+        np.array([1000, True], dtype=object),
+    ],
+    ids=repr,
+)
+def test_a_date_or_a_boolean_load_is_refused_as_not_a_number(call, value):
+    """numpy reads a date as a number (np.datetime64('2020') as 50, years since 1970), a time
+    span as its count (3 s as 3), and a boolean among numbers as 0 or 1 ([1000, True] as
+    [1000, 1]): every model solved them (analyse took a time span to a TypeError, and a date
+    as 'not an array'). A boolean alone was refused already; among numbers it is now too."""
+    solve_with, name = LOAD_CALLS[call]
+    with pytest.raises(InputError) as info:
+        solve_with(value)
+    assert info.value.parameter == name
+    assert re.search("must be a number|give a number, not an array", info.value.message)
+
+
+@pytest.mark.parametrize(
+    "value, named",
+    [
+        ([1000, True], "radial_load[1] = True: must be a number, not a boolean (got True)"),
+        (True, "radial_load: must be a number, not a boolean (got True)"),
+        (
+            [1000.0, np.datetime64("2020")],
+            "radial_load[1] = np.datetime64('2020'): must be a number (got np.datetime64('2020'))",
+        ),
+    ],
+)
+def test_a_boolean_or_a_date_among_numbers_names_its_element(value, named):
+    """A boolean is refused with the same words alone or in a list, its element named as any
+    refused element is."""
+    with pytest.raises(InputError) as info:
+        solve_combined(9, value, 100.0, **GEOMETRY)
+    assert str(info.value).startswith(named), str(info.value)

@@ -11,6 +11,7 @@ Hertz limit 2^1.5 F_p; the refusals.
 
 from __future__ import annotations
 
+import itertools
 import math
 
 import mpmath as mp
@@ -386,3 +387,118 @@ def test_balls_that_overlap_on_the_pitch_circle_are_refused():
             solve_pair(14, fr, 300.0, **args)
     r = solve_pair(13, 1000.0, 300.0, **args)
     assert r.residual <= 1e-12
+
+
+def _angular_limit(message: str) -> str:
+    """The largest load a refusal 'too large for the angular-contact model' names [N]."""
+    return message.split("; above ")[1].split(" N on this bearing")[0]
+
+
+@pytest.mark.parametrize(
+    ("loads", "name"),
+    [
+        (dict(radial_load=1e11), "radial_load"),
+        (dict(radial_load=1e3, axial_load=1e11), "axial_load"),
+        (dict(radial_load=1e3, preload=1e11), "preload"),
+    ],
+)
+def test_loads_beyond_the_angular_contact_scale_are_refused_as_for_one_bearing(loads, name):
+    """A load of 1e11 N (10^7 C_0r) on a 7205B DB pair ended in a ConvergenceError; the single
+    bearing refuses it (the one-ball approach beyond 10^4 A, combined.ANGULAR_RATIO_MIN): the
+    pair refuses it by the same rule, naming its largest load and the same limit."""
+    kw = dict(axial_load=0.0, preload=0.0) | loads
+    with pytest.raises(InputError, match="too large for the angular-contact model") as info:
+        solve_pair(Z, contact_angle=40.0, width=WIDTH, **kw, **B7205)
+    assert info.value.parameter == name
+    with pytest.raises(InputError) as one:
+        solve_combined(Z, 1e11, 0.0, contact_angle=40.0, **B7205)
+    assert _angular_limit(info.value.message) == _angular_limit(one.value.message) == "8.31e+10"
+
+
+def test_a_pair_under_a_radial_load_the_single_bearing_takes_is_balanced():
+    """1e10 N, within the single bearing's scale (it answers): the pair's Newton capped every
+    component of its step at A and ran out of steps (a ConvergenceError from 1e10 N on); its
+    radial parts are free, as the single bearing's. Each bearing of DB carries half the load
+    (the mirror symmetry), the radial forces sum to the load, the thrusts cancel."""
+    r = solve_pair(Z, 1e10, 0.0, contact_angle=40.0, width=WIDTH, **B7205)
+    assert r.residual <= 1e-12
+    one, two = r.bearings
+    assert one.load + two.load == pytest.approx(1e10, rel=1e-12)
+    assert one.load == pytest.approx(two.load, rel=1e-12)
+    assert one.axial_load == pytest.approx(two.axial_load, rel=1e-12)
+
+
+@pytest.mark.parametrize("arrangement", ["DB", "DF"])
+def test_a_heavy_thrust_on_a_pair_reaches_the_groove_edge_not_a_convergence_error(arrangement):
+    """F_r = F_a = 1e10 N drives a ball to 90°, as the single bearing under these loads (its
+    refusal): the pair's Newton, its axial steps capped at A = 4e-4 of the approach, stopped
+    after 460 steps short of it (a ConvergenceError); capped at a tenth of the approach where
+    A is less, it reaches the edge and refuses it."""
+    with pytest.raises(InputError, match="to a contact angle of 90°"):
+        solve_combined(Z, 1e10, 1e10, contact_angle=40.0, **B7205)
+    with pytest.raises(InputError, match="to a contact angle of 90°"):
+        solve_pair(Z, 1e10, 1e10, arrangement=arrangement, contact_angle=40.0, width=WIDTH, **B7205)
+
+
+#: One case of a pair breaking one rule of its inputs each (the rest valid), in the order the
+#: rules are checked, and the parameter refused.
+ONE_PAIR_RULE_BROKEN = [
+    ({"radial_load": -1.0}, "radial_load"),
+    ({"contact_angle": 0.0}, "contact_angle"),
+    ({"preload": -1.0}, "preload"),
+    ({"arrangement": "DT", "preload": 100.0}, "preload"),
+    ({"arrangement": "DT", "preload": 0.0, "axial_load": 0.0}, "axial_load"),
+    ({"width": 0.0}, "width"),
+    ({"f_i": 0.5}, "f_i"),
+    ({"f_o": 1.0}, "f_o"),
+    ({"modulus": -1.0}, "modulus"),
+    ({"stiffness": 0.0}, "stiffness"),
+    ({"tilt_radius": -2.0}, "tilt_radius"),
+    ({"ball_diameter": 1e-3}, "ball_diameter"),
+]
+
+
+def _pair_case(**given):
+    kw = dict(radial_load=2000.0, axial_load=1000.0, preload=300.0, contact_angle=40.0)
+    return kw | dict(width=WIDTH, **B7205) | given
+
+
+@pytest.mark.parametrize(("given", "parameter"), ONE_PAIR_RULE_BROKEN)
+def test_one_pair_case_of_plain_numbers_is_refused_as_an_array_of_it(given, parameter):
+    """The pair's one-case fast gate (plain floats) and its checked path (arrays) take the same
+    rules: one broken rule is refused with the same message either way."""
+    kw = _pair_case(**given)
+    with pytest.raises(InputError) as plain:
+        solve_pair(Z, **kw)
+    arrays = {k: v if k == "arrangement" else np.array([v]) for k, v in kw.items()}
+    with pytest.raises(InputError) as checked:
+        solve_pair(Z, **arrays)
+    assert plain.value.parameter == checked.value.parameter == parameter
+    assert str(plain.value) == str(checked.value)
+
+
+def test_the_pairs_rules_are_checked_in_their_order():
+    """Of two broken rules the first in the order is named, on either path."""
+    for (first, name), (second, _) in itertools.pairwise(ONE_PAIR_RULE_BROKEN):
+        if any(first[k] != second[k] for k in set(first) & set(second)):
+            continue  # (two preloads, two arrangements' rules)
+        kw = _pair_case(**{**second, **first})
+        arrays = {k: v if k == "arrangement" else np.array([v]) for k, v in kw.items()}
+        for args in (kw, arrays):
+            with pytest.raises(InputError) as info:
+                solve_pair(Z, **args)
+            assert info.value.parameter == name, (first, second, info.value)
+
+
+def test_the_pairs_fast_gate_and_checked_path_read_one_table_of_rules():
+    """pair._plain restated the conditions pair._checked tested (as combined's fast path did
+    before its rules table): both now read pair's rules, the single bearing's where they are
+    the same rule (F_r >= 0, the conformities, E and K > 0, the ball size)."""
+    from bearingload.models import combined, pair
+
+    rules = pair._INPUT_RULES + pair._CASE_RULES
+    assert all(isinstance(rule, combined.Rule) for rule in rules)
+    assert combined.RADIAL_LOAD_RULE in pair._INPUT_RULES
+    assert pair._CASE_RULES == (combined.BALL_SIZE_RULE,)
+    for gate in pair._GATES.values():
+        assert set(gate) <= {rule.holds for rule in rules}

@@ -2161,7 +2161,8 @@ cdef void pair_move(const Pair *pr, double *jac, const double *grad,
                     double *step) noexcept nogil:
     """The Newton step on the pair's tangent ``jac`` (changed: the held components decoupled,
     regularised); where it is not finite or no ball is in contact, a move of length A against
-    the gradient; every component within A."""
+    the gradient; its axial parts (a, t, t_c) within A, as the single bearing's ``cap_step``
+    (a radial part capped too took 10^3 steps where the approach is 10^3 A)."""
     cdef double minus[5]
     cdef double trace = 0.0, norm = 0.0, longest = 0.0, a_hat = pr.bear.a_hat
     cdef bint bad = False
@@ -2186,11 +2187,12 @@ cdef void pair_move(const Pair *pr, double *jac, const double *grad,
         norm = max(sqrt(norm), 1e-300)
         for i in range(5):
             step[i] = -grad[i] / norm * a_hat
-    for i in range(5):
+    for i in range(2, 5):
         longest = max(longest, fabs(step[i]))
-    if longest > a_hat:
+    reach = max(a_hat, 0.1)
+    if longest > reach:
         for i in range(5):
-            step[i] *= a_hat / longest
+            step[i] *= reach / longest
 
 
 cdef void pair_step(const Pair *pr, PairWork *wk, double *step) noexcept nogil:
@@ -2670,7 +2672,7 @@ cdef int pair_set_up(const PairCall *call, Py_ssize_t k, const double *col, bint
         pc.geo[2] = col[16 * n]
     for i in range(6):
         load[i] = col[i * n]
-    pc.status = problem_case(call.z, load, col[6 * n], pc.geo, pc.k0, False, False, limits, 1,
+    pc.status = problem_case(call.z, load, col[6 * n], pc.geo, pc.k0, True, False, limits, 1,
                              call.c, call.s, &pc.mirror, held, pr.whole.f, pc.out)
     symmetry_locks(call.z, pc.mirror, load[0], load[1], load[2], load[3], 0.0, False,
                    limits[7] > 0, held)
@@ -2818,10 +2820,10 @@ def pair_call(int z, const double[:, ::1] cols, bint hertz, const double[::1] kn
     ``cols`` (17, n): the input rows of pair.INPUT_ROWS; ``hertz``: the Hertz stiffness (else
     the constant K of the stiffness row), with ``known`` = K_0 and the curve's values (1 +
     NODES) of every case where known, else empty; ``limits`` = the symmetry snap [°], the
-    largest A/s, 0, the conformity range (2), the residual accepted, sigma_k (2: +1, or -1 for
-    a mirrored bearing), z_k/B (2), the largest width over d_m, sin(180°/z) (balls of D_w above
-    d_m times it overlap: flagged NO_GROOVE); the nodes and weights of the curve; the iteration
-    limits are the module's.
+    largest and the smallest A/s (angular contact: TOO_HEAVY below it), the conformity range
+    (2), the residual accepted, sigma_k (2: +1, or -1 for a mirrored bearing), z_k/B (2), the
+    largest width over d_m, sin(180°/z) (balls of D_w above d_m times it overlap: flagged
+    NO_GROOVE); the nodes and weights of the curve; the iteration limits are the module's.
 
     Returns (whether no case is flagged, then (n cases): the PairFlags (uint8), problem_case's
     SetupStatus (int8), the steps, K_0 or the constant K, the curve's values (n, NODES), the
@@ -4595,6 +4597,11 @@ def combined_call(int z, const double[:, ::1] cols, bint angular, bint imposed,
     return (state, arrays, result_a, geo_a, k0_a, values_a, f_a, kv_a)
 
 
+#: Below it a ball's angle [°] is kept, at or above it it is a whole turn, 0: the rule of
+#: validate.reduced_angle (360 less validate.TURN_ROUNDING, 4 eps 360°, computed alike).
+cdef double TURN_BELOW = 360.0 - 4.0 * 2.220446049250313e-16 * 360.0
+
+
 cdef bint result_case(const double *v, const double *case_in, Py_ssize_t m, const double *gen,
                       const double **bl, Py_ssize_t step, const double *kappa, int z,
                       bint imposed, double *tangent, bint mirrored, double *out, double *ball,
@@ -4603,10 +4610,11 @@ cdef bint result_case(const double *v, const double *case_in, Py_ssize_t m, cons
     (``m`` apart), forces ``gen`` (5), the ball arrays it reads (``bl``: the approach less p,
     cos and sin of the contact angle, the scaled load, ``step`` apart along the balls), its
     stiffness deviations ``kappa`` (z); its tangent made physical in place (``mirrored``: as
-    ``physical_case``); writes its column of the case rows (``n`` apart) and its ball rows (``n z`` apart).
-    Returns 0 where the physical stiffness overflows."""
+    ``physical_case``); writes its column of the case rows (``n`` apart) and its ball rows
+    (``n z`` apart), the ball angles reduced to [0, 360) as validate.reduced_angle reduces
+    them (``TURN_BELOW``). Returns 0 where the physical stiffness overflows."""
     cdef double w[5]
-    cdef double sc = case_in[m], lever = case_in[2 * m], sin0, deg = 180.0 / PI
+    cdef double sc = case_in[m], lever = case_in[2 * m], sin0, deg = 180.0 / PI, phi
     cdef Py_ssize_t nz = n * z
     cdef int j
     for j in range(5):
@@ -4620,7 +4628,8 @@ cdef bint result_case(const double *v, const double *case_in, Py_ssize_t m, cons
     out[6 * n] = 0.0 if case_in[5 * m] else 2.0 * case_in[4 * m] * sin0
     out[7 * n] = lever * case_in[6 * m] * gen[3] if imposed else case_in[7 * m]
     for j in range(z):
-        ball[j] = floor_mod(case_in[8 * m] + 360.0 * j / z, 360.0)
+        phi = floor_mod(case_in[8 * m] + 360.0 * j / z, 360.0)  # (never -0)
+        ball[j] = phi if phi < TURN_BELOW else 0.0  # (just below a whole turn: 0, as the cage)
         ball[nz + j] = atan2(bl[2][j * step], bl[1][j * step]) * deg
         ball[2 * nz + j] = (case_in[9 * m] + bl[0][j * step]) * sc
         ball[3 * nz + j] = (1.0 + kappa[j]) * case_in[10 * m]

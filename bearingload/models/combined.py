@@ -220,7 +220,7 @@ def groove_geometry(
         return validate.element_at(named[name], bad, np.shape(bad), unit)
 
     validate.broadcast_shape(named | {"f_i": fi, "f_o": fo})
-    _check_cases(named, at)  # (as solve_combined, before the geometry)
+    check_cases(_CASE_RULES, named, at)  # (as solve_combined, before the geometry)
     geo = ring_geometry(dw, dm, fi, fo, gr, at=at)
     play = 2.0 * geo.A * np.sin(geo.alpha0)
     return (
@@ -684,19 +684,48 @@ _FLOAT, _NUMBER = frozenset((float,)), frozenset((float, int))
 CONTACT_ANGLE_MAX = 60.0
 
 
-class _Rule(NamedTuple):
-    """A rule of the inputs of :func:`solve_combined`: ``holds(v)`` of the inputs by name
-    (``v``: plain floats of one case, or arrays; the same test, written with ``&`` and ``|``)
-    is where a case passes, ``refusal(v, bad, at)`` the InputError of the cases ``bad`` where
-    it does not (``at(name, bad, unit)`` names the input's element of the first). ``reads``:
-    the inputs it reads, each refused first if not finite (:func:`_checked_inputs`); a rule
-    without ``holds`` only does that. ``given``: the optional input (:data:`_OPTIONAL`) without
-    which the rule does not apply."""
+class Rule(NamedTuple):
+    """A rule of a solver's inputs (:func:`solve_combined`'s, a pair's): ``holds(v)`` of the
+    inputs by name (``v``: plain floats of one case, or arrays; the same test, written with
+    ``&`` and ``|``) is where a case passes, ``refusal(v, bad, at)`` the InputError of the cases
+    ``bad`` where it does not (``at(name, bad, unit)`` names the input's element of the first).
+    ``reads``: the inputs it reads, each refused first if not finite (:func:`check_rules`); a
+    rule without ``holds`` only does that. ``given``: the condition (an optional input given,
+    :data:`_OPTIONAL`; a pair's arrangement) without which the rule does not apply."""
 
     reads: tuple[str, ...]
     holds: Callable[[dict[str, Any]], Any] | None = None
     refusal: Callable[..., InputError] | None = None
     given: str | None = None
+
+
+def positive_rule(name: str, unit: str, given: str | None = None) -> Rule:
+    """The rule of an input [``unit``] that must be > 0 (:func:`bearingload.validate.positive`'s
+    refusal)."""
+    return Rule(
+        (name,),
+        lambda v: v[name] > 0.0,
+        lambda v, bad, at: validate.not_positive(name, v[name], bad, unit),
+        given,
+    )
+
+
+def conformity_rule(name: str) -> Rule:
+    """The rule of a groove conformity ``name`` (``f_i``, ``f_o``):
+    :data:`bearingload.validate.CONFORMITY_RANGE`."""
+    return Rule(
+        (name,),
+        lambda v: validate.conforms(v[name]),
+        lambda v, bad, at: validate.nonconforming(name, v[name], bad),
+    )
+
+
+#: F_r >= 0 N, the rule of a single bearing and a pair.
+RADIAL_LOAD_RULE = Rule(
+    ("radial_load",),
+    lambda v: v["radial_load"] >= 0.0,
+    lambda v, bad, at: validate.below("radial_load", v["radial_load"], bad, 0.0, "N"),
+)
 
 
 def _refuse_contact_angle(v: dict[str, Any], bad: Any, at: Callable[..., str]) -> InputError:
@@ -736,67 +765,49 @@ def _refuse_ball_size(v: dict[str, Any], bad: Any, at: Callable[..., str]) -> In
     return validate.ball_too_small(d_w, d_m, element=at("ball_diameter", bad, "mm"))
 
 
+#: D_w >= 1e-3 d_m (validate.ball_size_fits), a rule of the cases of a single bearing and a pair.
+BALL_SIZE_RULE = Rule(
+    ("ball_diameter", "pitch_diameter"),
+    lambda v: validate.ball_size_fits(v["ball_diameter"], v["pitch_diameter"]),
+    _refuse_ball_size,
+)
+
 #: The rules of the inputs of :func:`solve_combined`, each input's in the order they are
 #: checked (the first refused is named): of one input each, then of the cases (several inputs
 #: broadcast together). :func:`_checked_inputs` checks them one at a time, naming the first
 #: refused; :func:`_plain_inputs` all at once on one case of plain numbers.
 _INPUT_RULES = (
-    _Rule(
-        ("radial_load",),
-        lambda v: v["radial_load"] >= 0.0,
-        lambda v, bad, at: validate.below("radial_load", v["radial_load"], bad, 0.0, "N"),
-    ),
-    _Rule(("axial_load",)),
-    _Rule(
+    RADIAL_LOAD_RULE,
+    Rule(("axial_load",)),
+    Rule(
         ("contact_angle",),
         lambda v: (0.0 <= v["contact_angle"]) & (v["contact_angle"] <= CONTACT_ANGLE_MAX),
         _refuse_contact_angle,
         "contact_angle",
     ),
-    _Rule(
+    Rule(
         ("clearance",), lambda v: v["clearance"] == 0.0, _refuse_angular_clearance, "contact_angle"
     ),
-    _Rule(
+    Rule(
         ("axial_load",), lambda v: v["axial_load"] >= 0.0, _refuse_angular_thrust, "contact_angle"
     ),
-    _Rule(("moment", "moment_cross")),
-    _Rule(
+    Rule(("moment", "moment_cross")),
+    Rule(
         ("misalignment",),
         lambda v: validate.misalignment_fits(v["misalignment"]),
         lambda v, bad, at: validate.misalignment_beyond(v["misalignment"], bad),
     ),
-    _Rule(("cage_angle",)),
-    _Rule(
-        ("modulus",),
-        lambda v: v["modulus"] > 0.0,
-        lambda v, bad, at: validate.not_positive("modulus", v["modulus"], bad, "MPa"),
-    ),
-    _Rule(("poisson",)),
-    _Rule(
-        ("stiffness",),
-        lambda v: v["stiffness"] > 0.0,
-        lambda v, bad, at: validate.not_positive("stiffness", v["stiffness"], bad, "N/mm^1.5"),
-        "stiffness",
-    ),
-    _Rule(("ball_diameter", "pitch_diameter", "clearance")),
-    _Rule(
-        ("f_i",),
-        lambda v: validate.conforms(v["f_i"]),
-        lambda v, bad, at: validate.nonconforming("f_i", v["f_i"], bad),
-    ),
-    _Rule(
-        ("f_o",),
-        lambda v: validate.conforms(v["f_o"]),
-        lambda v, bad, at: validate.nonconforming("f_o", v["f_o"], bad),
-    ),
+    Rule(("cage_angle",)),
+    positive_rule("modulus", "MPa"),
+    Rule(("poisson",)),
+    positive_rule("stiffness", "N/mm^1.5", "stiffness"),
+    Rule(("ball_diameter", "pitch_diameter", "clearance")),
+    conformity_rule("f_i"),
+    conformity_rule("f_o"),
 )
 _CASE_RULES = (
-    _Rule(
-        ("ball_diameter", "pitch_diameter"),
-        lambda v: validate.ball_size_fits(v["ball_diameter"], v["pitch_diameter"]),
-        _refuse_ball_size,
-    ),
-    _Rule(
+    BALL_SIZE_RULE,
+    Rule(
         ("clearance", "ball_diameter"),
         lambda v: validate.clearance_fits(v["clearance"], v["ball_diameter"]),
         _refuse_clearance,
@@ -804,16 +815,23 @@ _CASE_RULES = (
 )
 
 
-def _gate(angular: bool, k_given: bool) -> tuple[Callable[[dict[str, Any]], Any], ...]:
-    """The tests of :data:`_INPUT_RULES` and :data:`_CASE_RULES` that apply to a case with or
-    without a contact angle and a stiffness."""
-    given = {None, *(("contact_angle",) if angular else ()), *(("stiffness",) if k_given else ())}
-    rules = _INPUT_RULES + _CASE_RULES
+def gate(rules: tuple[Rule, ...], given: set[str | None]) -> tuple[Callable[..., Any], ...]:
+    """The tests of the ``rules`` that apply where the conditions ``given`` hold (None among
+    them: the rules of every case), in their order: a case of plain floats passing each passes
+    the rules (a fast path's gate)."""
     return tuple(r.holds for r in rules if r.holds is not None and r.given in given)
 
 
-#: :func:`_gate` by (a contact angle given, a stiffness given).
-_GATES = {(a, k): _gate(a, k) for a in (False, True) for k in (False, True)}
+#: The gates of :data:`_INPUT_RULES` and :data:`_CASE_RULES` by (a contact angle given, a
+#: stiffness given).
+_GATES = {
+    (a, k): gate(
+        _INPUT_RULES + _CASE_RULES,
+        {None, *(("contact_angle",) if a else ()), *(("stiffness",) if k else ())},
+    )
+    for a in (False, True)
+    for k in (False, True)
+}
 
 
 def _plain_inputs(raw: dict[str, Any]) -> np.ndarray | None:
@@ -844,26 +862,13 @@ def _plain_inputs(raw: dict[str, Any]) -> np.ndarray | None:
 
 def _checked_inputs(raw: dict[str, Any]) -> tuple[tuple[int, ...], np.ndarray, dict[str, Any]]:
     """:func:`_inputs` of any inputs: each rule of :data:`_INPUT_RULES` checked in its order
-    (every input read refused first if not finite: :func:`bearingload.validate.finite`), the
-    inputs broadcast together (:func:`_cases`), the rules of :data:`_CASE_RULES` checked on
-    the cases; packed."""
+    (:func:`check_rules`), the inputs broadcast together (:func:`_cases`), the rules of
+    :data:`_CASE_RULES` checked on the cases; packed."""
     given = {name: raw[name] is not None for name in _OPTIONAL}
-    v: dict[str, Any] = {}
-
-    def own(name: str, bad: Any, unit: str = "") -> str:  # the element of one input's rule
-        return validate.element(v[name], bad, unit)
-
-    for rule in _INPUT_RULES:
-        if rule.given is not None and not given[rule.given]:
-            continue
-        for name in rule.reads:
-            if name not in v:
-                value = raw[name]
-                v[name] = validate.finite(name, 0.0 if given.get(name) is False else value)
-        if rule.holds is not None and rule.refusal is not None:
-            bad = np.logical_not(rule.holds(v))
-            if bad.any():
-                raise rule.refusal(v, bad, own)
+    conditions = {None, *(name for name in _OPTIONAL if given[name])}
+    v = check_rules(
+        _INPUT_RULES, conditions, lambda name: 0.0 if given.get(name) is False else raw[name]
+    )
     v["cage_angle"] = np.asarray(validate.reduced_angle(v["cage_angle"]))
     if not given["contact_angle"]:
         v["contact_angle"] = np.zeros(())
@@ -877,15 +882,40 @@ def _checked_inputs(raw: dict[str, Any]) -> tuple[tuple[int, ...], np.ndarray, d
     def at(name: str, bad: Any, unit: str = "") -> str:  # the input's element of a bad case
         return validate.element_at(named[name], bad, shape, unit)
 
-    _check_cases(cases, at)
+    check_cases(_CASE_RULES, cases, at)
     cols[_ROW["groove"]] = cols[_ROW["contact_angle" if given["contact_angle"] else "clearance"]]
     return shape, cols, named
 
 
-def _check_cases(cases: dict[str, Any], at: Callable[..., str]) -> None:
-    """Refuse the first rule of :data:`_CASE_RULES` the inputs ``cases`` (arrays broadcast
-    together) break; ``at`` names the input's element of the first case refused."""
-    for rule in _CASE_RULES:
+def check_rules(
+    rules: tuple[Rule, ...], given: set[str | None], value_of: Callable[[str], Any]
+) -> dict[str, np.ndarray]:
+    """Each of the ``rules`` that applies where the conditions ``given`` hold (:func:`gate`),
+    in its order: every input it reads (``value_of(name)``) refused first if not finite
+    (:func:`bearingload.validate.finite`), then its test; the first refused raises its
+    InputError, naming the input's element. Returns the inputs read, as float arrays."""
+    v: dict[str, Any] = {}
+
+    def own(name: str, bad: Any, unit: str = "") -> str:  # the element of one input's rule
+        return validate.element(v[name], bad, unit)
+
+    for rule in rules:
+        if rule.given not in given:
+            continue
+        for name in rule.reads:
+            if name not in v:
+                v[name] = validate.finite(name, value_of(name))
+        if rule.holds is not None and rule.refusal is not None:
+            bad = np.logical_not(rule.holds(v))
+            if bad.any():
+                raise rule.refusal(v, bad, own)
+    return v
+
+
+def check_cases(rules: tuple[Rule, ...], cases: dict[str, Any], at: Callable[..., str]) -> None:
+    """Refuse the first of the ``rules`` the inputs ``cases`` (arrays broadcast together) break;
+    ``at`` names the input's element of the first case refused."""
+    for rule in rules:
         if rule.holds is not None and rule.refusal is not None:
             bad = np.logical_not(rule.holds(cases))
             if bad.any():
@@ -989,7 +1019,7 @@ def _problem(
     load, the scale, the ball directions, the symmetry locks, the forces) and which cases are
     mirrored about the load line; the loads (6, n) (F_r, F_a, M, M_c, misalignment [°], 0: the
     rows of :data:`INPUT_ROWS`) refused as
-    :func:`reference_force`, :func:`check_scale` and :func:`_check_angular_scale` state.
+    :func:`reference_force`, :func:`check_scale` and :func:`check_angular_scale` state.
     ``given``: the contact angle and the misalignment as given (None: not given); ``at``
     names the element of a refused case (:func:`ring_geometry`)."""
     angular, imposed = (v is not None for v in given)
@@ -1033,10 +1063,9 @@ def _refuse_loads(
     sizes = lambda: load_sizes(fr, fa, mm, mc, geo.R_i)  # noqa: E731
     check_scale(f_ref, k_ref, geo.A, angular, sizes, status == _core.SetupStatus.TOO_LIGHT, at)
     if angular:
-        moment = np.hypot(mm, mc) / geo.R_i
-        _check_angular_scale(
-            f_ref, k_ref, geo.A, (fr, fa, moment), status == _core.SetupStatus.TOO_HEAVY, at
-        )
+        named = {"radial_load": fr, "axial_load": fa, "moment": np.hypot(mm, mc) / geo.R_i}
+        heavy = status == _core.SetupStatus.TOO_HEAVY
+        check_angular_scale(f_ref, k_ref, geo.A, named, heavy, at)
 
 
 def call_balls(balls: Any) -> int:
@@ -1486,30 +1515,41 @@ ANGULAR_NO_OTHER_SOLVER = (
 ANGULAR_RATIO_MIN = 1e-4
 
 
-def _check_angular_scale(
+#: The words of a load of :func:`check_angular_scale`'s ``sizes`` in its refusal.
+_SIZE_WORDS = {
+    "radial_load": "F_r",
+    "axial_load": "F_a",
+    "moment": "M/R_i",
+    "preload": "the preload",
+}
+
+
+def check_angular_scale(
     f_ref: np.ndarray,
     k_ref: np.ndarray,
     big_a: np.ndarray,
-    loads: tuple[np.ndarray, ...],
+    sizes: dict[str, np.ndarray],
     flagged: Any = False,
     at: Callable[..., str] = _no_element,
 ) -> None:
     """Refuse loads so large against an angular-contact bearing's groove geometry A that its
-    one-sided equilibrium is not solved reliably (see :data:`ANGULAR_RATIO_MIN`); ``flagged``:
-    the cases the compiled core judged so, ``at`` names the element (as :func:`check_scale`)."""
+    one-sided equilibrium is not solved reliably (see :data:`ANGULAR_RATIO_MIN`): a single
+    bearing's and each of a pair's. ``sizes``: the loads as forces by parameter (flat, of
+    :data:`_SIZE_WORDS`), the largest of the first case refused named; ``flagged``: the cases
+    the compiled core judged so, ``at`` names the element (as :func:`check_scale`)."""
     a = big_a if np.shape(big_a) == f_ref.shape else np.broadcast_to(big_a, f_ref.shape)
     with np.errstate(over="ignore", divide="ignore"):
         bad = (a / (f_ref / k_ref) ** (2.0 / 3.0) < ANGULAR_RATIO_MIN) | flagged
     if bad.any():
         i = int(np.argmax(bad))
         f_max = float(k_ref[i] * (a[i] / ANGULAR_RATIO_MIN) ** 1.5)
-        which = int(np.argmax([np.broadcast_to(v, f_ref.shape)[i] for v in loads]))
-        name = ("radial_load", "axial_load", "moment")[which]
+        name = _largest_load(sizes, i)
+        *most, last = (_SIZE_WORDS[k] for k in sizes)
         raise InputError(
             name,
-            f"too large for the angular-contact model: the largest of F_r, F_a and M/R_i is "
-            f"{float(f_ref[i]):.4g} N; above {f_max:.3g} N on this bearing (a ball approach of "
-            f"{1 / ANGULAR_RATIO_MIN:.0e} times the groove-centre distance A = "
+            f"too large for the angular-contact model: the largest of {', '.join(most)} and "
+            f"{last} is {float(f_ref[i]):.4g} N; above {f_max:.3g} N on this bearing (a ball "
+            f"approach of {1 / ANGULAR_RATIO_MIN:.0e} times the groove-centre distance A = "
             f"{float(a[i]):.4g} mm, the contact angles next to 90°, the groove edge) the "
             "one-sided equilibrium is not solved reliably and the loads are refused",
             element=at(name, bad, INPUT_UNITS[name]),
@@ -2019,7 +2059,6 @@ def distribution_of(
     cases = rows.reshape((8,) + shape) if shape else rows[:, 0].tolist()
     x, y, axial, tilt, tilt_cross, alpha0, play, moment = cases
     phi, alpha, approach, k_ball, q = per_ball.reshape((5,) + shape + (z,))
-    phi = validate.reduced_angle(phi)  # (a ball just below a whole turn at 0, as the cage)
     fr, fa, gr, cage = loads
 
     def case(a: np.ndarray) -> Any:

@@ -15,8 +15,10 @@ from __future__ import annotations
 
 import dataclasses
 import functools
+import itertools
 import math
 import operator
+from collections.abc import Callable
 from dataclasses import dataclass
 from typing import Any
 
@@ -320,7 +322,8 @@ def _call(z: int, kind: str, cols: np.ndarray, hertz: bool, known: np.ndarray) -
     """The compiled core's ``pair_call`` of the packed inputs ``cols`` (its docstring), the
     Hertz set-up ``known`` of every case (or empty)."""
     low, high = validate.CONFORMITY_RANGE
-    limits = (SYMMETRY_SNAP_DEG, _comb.GEOMETRY_RATIO_MAX, 0.0, low, high, ACCEPT)
+    ratios = (_comb.GEOMETRY_RATIO_MAX, _comb.ANGULAR_RATIO_MIN)
+    limits = (SYMMETRY_SNAP_DEG, *ratios, low, high, ACCEPT)
     limits += (1.0, -1.0 if kind != "DT" else 1.0, *halves(kind).tolist(), WIDTH_MAX, _chord(z))
     return _core.pair_call(z, cols, hertz, known, np.array(limits), _comb.NODE_X, _comb.NODE_W)
 
@@ -361,7 +364,7 @@ def _general(
         out = _call(z, kind, cols, *hertz)
     names = ("radial_load", "axial_load", "moment", "moment_cross", "preload")
     if np.count_nonzero(out[2]):
-        _refuse_scale(geo, out[4], out[2] == _core.SetupStatus.TOO_LIGHT, *(c[k] for k in names))
+        _refuse_scale(geo, out[4], out[2], *(c[k] for k in names))
     flags, its, res = out[1], out[3], out[9][12]
     unbalanced = (flags & _core.PairFlag.UNBALANCED) != 0
     if snap and np.count_nonzero(unbalanced):
@@ -412,80 +415,109 @@ def _arrangement(arrangement: Any) -> str:
     return kind
 
 
+def _refuse_contact_angle(v: dict[str, Any], bad: Any, at: Callable[..., str]) -> InputError:
+    return InputError(
+        "contact_angle",
+        f"must be above 0 and at most {_comb.CONTACT_ANGLE_MAX:g}° for a bearing pair",
+        element=at("contact_angle", bad, "°"),
+    )
+
+
+def _refuse_tandem_preload(v: dict[str, Any], bad: Any, at: Callable[..., str]) -> InputError:
+    return InputError(
+        "preload",
+        "a tandem pair (DT) is not preloaded in itself: both bearings face the same way, "
+        "so it is preloaded against another bearing; give 0, or use DB or DF",
+        element=at("preload", bad, "N"),
+    )
+
+
+def _refuse_tandem_thrust(v: dict[str, Any], bad: Any, at: Callable[..., str]) -> InputError:
+    return InputError(
+        "axial_load",
+        "must be > 0 N for a tandem pair (DT): both bearings take thrust towards +axial only "
+        "(a reversed load lifts every ball; with none the axial position is held by "
+        "another bearing)",
+        element=at("axial_load", bad, "N"),
+    )
+
+
+#: The rules of the inputs of :func:`solve_pair` in the order they are checked (the first
+#: refused is named), the single bearing's where they are the same
+#: (:class:`bearingload.models.combined.Rule`): :func:`_checked` checks them one at a time,
+#: :func:`_plain` all at once on one case of plain floats. ``given``: "DT" (the rule of a
+#: tandem pair), or the optional input (stiffness, tilt_radius).
+_INPUT_RULES = (
+    _comb.RADIAL_LOAD_RULE,
+    _comb.Rule(("axial_load", "preload")),
+    _comb.Rule(
+        ("contact_angle",),
+        lambda v: (0.0 < v["contact_angle"]) & (v["contact_angle"] <= _comb.CONTACT_ANGLE_MAX),
+        _refuse_contact_angle,
+    ),
+    _comb.Rule(
+        ("preload",),
+        lambda v: v["preload"] >= 0.0,
+        lambda v, bad, at: InputError("preload", "must be >= 0 N", element=at("preload", bad, "N")),
+    ),
+    _comb.Rule(("preload",), lambda v: v["preload"] == 0.0, _refuse_tandem_preload, "DT"),
+    _comb.Rule(("axial_load",), lambda v: v["axial_load"] > 0.0, _refuse_tandem_thrust, "DT"),
+    _comb.Rule(("ball_diameter", "pitch_diameter")),
+    _comb.positive_rule("width", "mm"),
+    _comb.conformity_rule("f_i"),
+    _comb.conformity_rule("f_o"),
+    _comb.Rule(("cage_angle", "moment", "moment_cross")),
+    _comb.positive_rule("modulus", "MPa"),
+    _comb.Rule(("poisson",)),
+    _comb.positive_rule("stiffness", "N/mm^1.5", "stiffness"),
+    _comb.positive_rule("tilt_radius", "mm", "tilt_radius"),
+)
+#: The rules of the cases (the inputs broadcast together).
+_CASE_RULES = (_comb.BALL_SIZE_RULE,)
+
+
+def _conditions(tandem: bool, stiffness: bool, tilt_radius: bool) -> set[str | None]:
+    """The conditions of the rules (:class:`bearingload.models.combined.Rule`'s ``given``) that
+    hold for a pair: a ``tandem`` one (DT), with a ``stiffness`` or a ``tilt_radius`` given."""
+    given = {"DT": tandem, "stiffness": stiffness, "tilt_radius": tilt_radius}
+    return {None, *(name for name, holds in given.items() if holds)}
+
+
+#: The gates of the rules (:func:`bearingload.models.combined.gate`) by :func:`_conditions`.
+_GATES = {
+    flags: _comb.gate(_INPUT_RULES + _CASE_RULES, _conditions(*flags))
+    for flags in itertools.product((False, True), repeat=3)
+}
+
+
 def _plain(kind: str, named: dict[str, Any]) -> bool:
-    """Whether every value is a plain float that passes every check of :func:`_checked` (a case
-    that does not is checked there, which names what it refuses)."""
+    """Whether every value is a plain float that passes every rule (:data:`_INPUT_RULES`,
+    :data:`_CASE_RULES`; a case that does not is checked by :func:`_checked`, which names what
+    it refuses)."""
     if not all(type(v) is float and math.isfinite(v) for v in named.values()):
         return False
-    low, high = validate.CONFORMITY_RANGE
-    fa, fp = named["axial_load"], named["preload"]
-    positive = ("width", "modulus", "stiffness", "tilt_radius")
-    ok = (
-        named["radial_load"] >= 0.0
-        and 0.0 < named["contact_angle"] <= _comb.CONTACT_ANGLE_MAX
-        and fp >= 0.0
-    )
-    ok = ok and (kind != "DT" or (fp == 0.0 and fa > 0.0))
-    ok = ok and low < named["f_i"] < high and low < named["f_o"] < high
-    ok = ok and validate.ball_size_fits(named["ball_diameter"], named["pitch_diameter"])
-    return ok and all(named.get(k, 1.0) > 0.0 for k in positive)
+    for holds in _GATES[kind == "DT", "stiffness" in named, "tilt_radius" in named]:
+        if not holds(named):
+            return False
+    return True
 
 
 def _checked(kind: str, named: dict[str, Any]) -> tuple[tuple[int, ...], dict[str, np.ndarray]]:
-    """The values ``named`` checked, broadcast together: (the case shape, each flat)."""
-    fr = validate.at_least("radial_load", named["radial_load"], 0.0, "N")
-    fa = validate.finite("axial_load", named["axial_load"])
-    fp = validate.finite("preload", named["preload"])
-    _check_pair(kind, fa, fp, named["contact_angle"])
-    units = {"width": "mm", "modulus": "MPa", "stiffness": "N/mm^1.5", "tilt_radius": "mm"}
-    arrays = {"radial_load": fr, "axial_load": fa, "preload": fp}
-    for name, value in named.items():
-        if name in units:
-            arrays[name] = validate.positive(name, value, units[name])
-        elif name in ("f_i", "f_o"):
-            arrays[name] = validate.conformity(name, value)
-        elif name not in arrays:
-            arrays[name] = validate.finite(name, value)
+    """The values ``named`` checked (each rule of :data:`_INPUT_RULES` in its order, then of
+    :data:`_CASE_RULES` on the cases), broadcast together: (the case shape, each flat)."""
+    given = _conditions(kind == "DT", "stiffness" in named, "tilt_radius" in named)
+    v = _comb.check_rules(_INPUT_RULES, given, named.__getitem__)
+    arrays = {name: v[name] for name in named}
     validate.broadcast_shape(arrays)
-    flat = np.broadcast_arrays(*(np.asarray(v, dtype=float) for v in arrays.values()))
+    flat = np.broadcast_arrays(*(np.asarray(a, dtype=float) for a in arrays.values()))
     cases = dict(zip(arrays, (a.ravel() for a in flat), strict=True))
     shape = flat[0].shape
-    dw, dm = (np.reshape(cases[k], shape) for k in ("ball_diameter", "pitch_diameter"))
-    bad = np.logical_not(validate.ball_size_fits(dw, dm))
-    if bad.any():
-        at = validate.element_at(named["ball_diameter"], bad, shape, "mm")
-        d_w, d_m = validate.first_refused(bad, dw, dm)
-        raise validate.ball_too_small(d_w, d_m, at)
+
+    def at(name: str, bad: Any, unit: str = "") -> str:  # the input's element of a bad case
+        return validate.element_at(named[name], bad, shape, unit)
+
+    _comb.check_cases(_CASE_RULES, cases, at)
     return shape, cases
-
-
-def _check_pair(kind: str, fa: np.ndarray, fp: np.ndarray, contact_angle: Any) -> None:
-    """Refuse what a pair of this arrangement cannot take."""
-    alpha = validate.finite("contact_angle", contact_angle)
-    bad = (alpha <= 0) | (alpha > _comb.CONTACT_ANGLE_MAX)
-    if bad.any():
-        raise InputError(
-            "contact_angle",
-            f"must be above 0 and at most {_comb.CONTACT_ANGLE_MAX:g}° for a bearing pair",
-            element=validate.element(alpha, bad, "°"),
-        )
-    if (fp < 0).any():
-        raise InputError("preload", "must be >= 0 N", element=validate.element(fp, fp < 0, "N"))
-    if kind == "DT" and (fp > 0).any():
-        raise InputError(
-            "preload",
-            "a tandem pair (DT) is not preloaded in itself: both bearings face the same way, "
-            "so it is preloaded against another bearing; give 0, or use DB or DF",
-            element=validate.element(fp, fp > 0, "N"),
-        )
-    if kind == "DT" and (fa <= 0).any():
-        raise InputError(
-            "axial_load",
-            "must be > 0 N for a tandem pair (DT): both bearings take thrust towards +axial only "
-            "(a reversed load lifts every ball; with none the axial position is held by "
-            "another bearing)",
-            element=validate.element(fa, fa <= 0, "N"),
-        )
 
 
 #: The inputs a pair's refusal or failure names (their units: combined.INPUT_UNITS).
@@ -501,10 +533,11 @@ NAMED = (
 )
 
 
-def _refuse_scale(geo: Any, k_ref: np.ndarray, flagged: np.ndarray, *loads: np.ndarray) -> None:
-    """InputError on the loads of a pair the core flags: none at all, or too small for the
-    groove geometry (``flagged``: the core decides; the combined model's check words it, its
-    advice replaced)."""
+def _refuse_scale(geo: Any, k_ref: np.ndarray, status: np.ndarray, *loads: np.ndarray) -> None:
+    """InputError on the loads of a pair the core flags (``status``: its SetupStatus): none at
+    all, too small for the groove geometry (the combined model's check words it, its advice
+    replaced) or too large for it (the single angular-contact bearing's rule and words: each
+    bearing of the pair is one); the core decides."""
     fr, fa, mm, mc, fp = loads
     f_ref = np.maximum(_comb.reference_force(fr, fa, mm, mc, geo.R_i), fp)
     if (f_ref <= 0).any():
@@ -518,8 +551,9 @@ def _refuse_scale(geo: Any, k_ref: np.ndarray, flagged: np.ndarray, *loads: np.n
     def sizes() -> dict[str, np.ndarray]:
         return {"preload": fp} | _comb.load_sizes(fr, fa, mm, mc, geo.R_i)
 
+    light = status == _core.SetupStatus.TOO_LIGHT
     try:
-        _comb.check_scale(f_ref, k_ref, geo.A, sizes=sizes, flagged=flagged)
+        _comb.check_scale(f_ref, k_ref, geo.A, sizes=sizes, flagged=light)
     except InputError as exc:  # its advice (the radial solver) does not apply to a pair
         if exc.reason not in (_comb.TOO_LIGHT, _comb.TOO_LIGHT_ANGULAR):
             raise
@@ -530,6 +564,10 @@ def _refuse_scale(geo: Any, k_ref: np.ndarray, flagged: np.ndarray, *loads: np.n
             f"the preload is {float(np.min(f_ref)):.3g} N; it takes at least {f_min:.2g} N for "
             "this bearing)",
         ) from exc
+    heavy = status == _core.SetupStatus.TOO_HEAVY
+    moment = np.hypot(mm, mc) / geo.R_i
+    named = {"radial_load": fr, "axial_load": np.abs(fa), "moment": moment, "preload": fp}
+    _comb.check_angular_scale(f_ref, k_ref, geo.A, named, heavy)
 
 
 def _near_symmetric(z: int, cage: np.ndarray, mc: np.ndarray) -> np.ndarray:

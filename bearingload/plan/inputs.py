@@ -142,20 +142,22 @@ def _float(value: Any, name: str) -> float:
     import math
     import numbers
 
+    from bearingload.validate import not_real
+
     if isinstance(value, str):
         try:
             number = float(value)
         except ValueError:
             raise InputError(name, f"must be a number, got {value!r}") from None
-    elif isinstance(value, numbers.Real) and not isinstance(value, bool):
+    elif not_real(value) or not (isinstance(value, numbers.Real) or hasattr(value, "shape")):
+        raise InputError(name, f"must be a number, got {value!r}")  # (True, a date: not_real)
+    elif isinstance(value, numbers.Real):
         try:
             number = float(value)
         except OverflowError:
             raise InputError(name, "is too large for a number of this package") from None
-    elif getattr(value, "shape", None) is not None:
-        raise InputError(name, "analyse takes one case: give a number, not an array")
     else:
-        raise InputError(name, f"must be a number, got {value!r}")
+        raise InputError(name, "analyse takes one case: give a number, not an array")
     if not math.isfinite(number):
         raise InputError(name, f"must be a finite number, got {number}")
     return number
