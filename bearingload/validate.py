@@ -11,9 +11,23 @@ from bearingload.errors import InputError
 
 
 def finite(name: str, value: object) -> np.ndarray:
-    """Return ``value`` as a float array, raising :class:`InputError` on NaN or infinity, on
-    text (units belong to the command line: the library takes N, mm, N/mm^m, degrees), on
-    booleans and on dates or time spans (:func:`not_real`), alone or as elements of a list."""
+    """Return ``value`` as a float array, raising :class:`InputError` on NaN or infinity and on
+    what is not a number (:func:`numbers`)."""
+    arr = numbers(name, value)
+    if not np.all(np.isfinite(arr)):
+        raise InputError(
+            name,
+            "must be a finite number (got NaN or infinity)",
+            element=element(arr, ~np.isfinite(arr)),
+        )
+    return arr
+
+
+def numbers(name: str, value: object) -> np.ndarray:
+    """Return ``value`` as a float array (NaN and infinity included), raising
+    :class:`InputError` on text (units belong to the command line: the library takes N, mm,
+    N/mm^m, degrees), on booleans and on dates or time spans (:func:`not_real`), alone or as
+    elements of a list."""
     number = plain(value)
     if number is not None:
         return np.array(number)
@@ -42,12 +56,6 @@ def finite(name: str, value: object) -> np.ndarray:
             "degrees (bearingload.units.parse_quantity reads text with a unit)",
             element=element(raw, bad),
         ) from None
-    if not np.all(np.isfinite(arr)):
-        raise InputError(
-            name,
-            "must be a finite number (got NaN or infinity)",
-            element=element(arr, ~np.isfinite(arr)),
-        )
     return arr
 
 
@@ -291,8 +299,9 @@ def ball_too_small(ball_diameter: float, pitch_diameter: float, element: str = "
 
 
 def finite_positive(name: str, value: object) -> np.ndarray:
-    """Return ``value`` as a float array; every element must be a finite number > 0."""
-    arr = np.asarray(value, dtype=float)
+    """Return ``value`` as a float array; every element must be a finite number > 0 (and a
+    number: :func:`numbers`)."""
+    arr = numbers(name, value)
     good = np.isfinite(arr) & (arr > 0)
     if not np.all(good):  # the first offending value, not the repr of an array
         raise InputError(

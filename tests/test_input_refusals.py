@@ -426,3 +426,19 @@ def test_a_boolean_or_a_date_among_numbers_names_its_element(value, named):
     with pytest.raises(InputError) as info:
         solve_combined(9, value, 100.0, **GEOMETRY)
     assert str(info.value).startswith(named), str(info.value)
+
+
+@pytest.mark.parametrize("value", [True, np.datetime64("2020"), "1000", [3000.0, True]], ids=repr)
+def test_a_life_or_lubrication_input_that_is_not_a_number_is_refused(value):
+    """The life and lubrication functions check their inputs with
+    ``validate.finite_positive``, which read them with numpy alone: a boolean as 1, a date as
+    its years since 1970, the text "1000" as 1000.0, and each gave a life."""
+    from bearingload.bearings.life import rating_life
+    from bearingload.bearings.lubrication import rated_viscosity
+
+    with pytest.raises(InputError) as info:
+        rating_life(value, 1000.0)
+    assert info.value.parameter == "C"
+    assert "must be a number" in info.value.message
+    with pytest.raises(InputError, match="must be a number"):
+        rated_viscosity(value, 38.5)
