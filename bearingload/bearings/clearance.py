@@ -73,9 +73,9 @@ _ALLOWED = (
 )
 
 
-@dataclass(frozen=True)
 class ClearanceRow:
-    """One bore range of the clearance table.
+    """One bore range of the clearance table (a plain class, read by attribute only: no
+    dataclass to build on every solve of a bearing).
 
     Attributes
     ----------
@@ -87,10 +87,19 @@ class ClearanceRow:
         Where the row was copied from.
     """
 
-    bore_over: float
-    bore_incl: float
-    limits: dict[str, tuple[float, float]]
-    source: str
+    __slots__ = ("bore_over", "bore_incl", "limits", "source")
+
+    def __init__(
+        self,
+        bore_over: float,
+        bore_incl: float,
+        limits: dict[str, tuple[float, float]],
+        source: str,
+    ) -> None:
+        self.bore_over = bore_over
+        self.bore_incl = bore_incl
+        self.limits = limits
+        self.source = source
 
 
 #: Bearing kind -> (file of its clearance table, what the table covers).

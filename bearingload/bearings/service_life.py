@@ -19,10 +19,8 @@ from bearingload.bearings import lubrication as lub
 from bearingload.bearings import modified_life as ml
 from bearingload.constants import BALL_LIFE_EXPONENT, ROLLER_LIFE_EXPONENT
 from bearingload.errors import InputError
-from bearingload.lazy_dataclass import dataclass
 
 
-@dataclass(frozen=True)
 class Operating:
     """Operating conditions; None where not given.
 
@@ -47,17 +45,43 @@ class Operating:
         (a mineral oil; see :attr:`alpha`). [1/Pa]
     viscosity_note : str or None
         Where the viscosity comes from (an oil at its temperature), for the notes.
+
+    (A plain class, read by attribute only: no dataclass to build on every solve.)
     """
 
-    speed: float | None = None
-    reliability: float | None = None
-    viscosity: float | None = None
-    contamination: str | None = None
-    e_c: float | None = None
-    fatigue_load_limit: float | None = None
-    roughness: float | None = None
-    pressure_viscosity: float | None = None
-    viscosity_note: str | None = None
+    __slots__ = (
+        "speed",
+        "reliability",
+        "viscosity",
+        "contamination",
+        "e_c",
+        "fatigue_load_limit",
+        "roughness",
+        "pressure_viscosity",
+        "viscosity_note",
+    )
+
+    def __init__(
+        self,
+        speed: float | None = None,
+        reliability: float | None = None,
+        viscosity: float | None = None,
+        contamination: str | None = None,
+        e_c: float | None = None,
+        fatigue_load_limit: float | None = None,
+        roughness: float | None = None,
+        pressure_viscosity: float | None = None,
+        viscosity_note: str | None = None,
+    ) -> None:
+        self.speed = speed
+        self.reliability = reliability
+        self.viscosity = viscosity
+        self.contamination = contamination
+        self.e_c = e_c
+        self.fatigue_load_limit = fatigue_load_limit
+        self.roughness = roughness
+        self.pressure_viscosity = pressure_viscosity
+        self.viscosity_note = viscosity_note
 
     @property
     def alpha(self) -> Any:
@@ -66,33 +90,77 @@ class Operating:
         return lub.PRESSURE_VISCOSITY if given is None else given
 
 
-@dataclass(frozen=True)
 class LifeBasis:
     """What one solved case (or the cases of one bearing) knows for its lives: ``kind``, the
     ratings and the geometry are the bearing's; ``equivalent_load``, the lives, ``q_max`` and
     ``contact_angle`` a float, or an array over cases (NaN: none). ``contact_angle`` is the
     heaviest ball's (its inner contact's at speed, ``contact_angle_outer`` its outer one there,
     None: the same), ``balls`` the number of balls (None: no defect frequencies) and
-    ``rotating`` the ring turning at the speed. [N, mm, MPa, °, 10^6 rev]"""
+    ``rotating`` the ring turning at the speed. [N, mm, MPa, °, 10^6 rev]
 
-    kind: str = "ball"
-    C: float | None = None
-    C0: float | None = None
-    equivalent_load: Any = None
-    rating_life: Any = None
-    reference_rating_life: Any = None
-    pitch_diameter: float | None = None
-    ball_diameter: float | None = None
-    f_i: float | None = None
-    f_o: float | None = None
-    modulus: float | None = None
-    poisson: float | None = None
-    roller_length: float | None = None
-    q_max: Any = None
-    contact_angle: Any = 0.0
-    balls: int | None = None
-    contact_angle_outer: Any = None
-    rotating: str = "inner"
+    (A plain class, read by attribute only: no dataclass to build on every solve.)
+    """
+
+    __slots__ = (
+        "kind",
+        "C",
+        "C0",
+        "equivalent_load",
+        "rating_life",
+        "reference_rating_life",
+        "pitch_diameter",
+        "ball_diameter",
+        "f_i",
+        "f_o",
+        "modulus",
+        "poisson",
+        "roller_length",
+        "q_max",
+        "contact_angle",
+        "balls",
+        "contact_angle_outer",
+        "rotating",
+    )
+
+    def __init__(
+        self,
+        kind: str = "ball",
+        C: float | None = None,
+        C0: float | None = None,
+        equivalent_load: Any = None,
+        rating_life: Any = None,
+        reference_rating_life: Any = None,
+        pitch_diameter: float | None = None,
+        ball_diameter: float | None = None,
+        f_i: float | None = None,
+        f_o: float | None = None,
+        modulus: float | None = None,
+        poisson: float | None = None,
+        roller_length: float | None = None,
+        q_max: Any = None,
+        contact_angle: Any = 0.0,
+        balls: int | None = None,
+        contact_angle_outer: Any = None,
+        rotating: str = "inner",
+    ) -> None:
+        self.kind = kind
+        self.C = C
+        self.C0 = C0
+        self.equivalent_load = equivalent_load
+        self.rating_life = rating_life
+        self.reference_rating_life = reference_rating_life
+        self.pitch_diameter = pitch_diameter
+        self.ball_diameter = ball_diameter
+        self.f_i = f_i
+        self.f_o = f_o
+        self.modulus = modulus
+        self.poisson = poisson
+        self.roller_length = roller_length
+        self.q_max = q_max
+        self.contact_angle = contact_angle
+        self.balls = balls
+        self.contact_angle_outer = contact_angle_outer
+        self.rotating = rotating
 
 
 class ServiceLife:

@@ -75,65 +75,110 @@ MAX_CURVATURE_RATIO = _elliptic.MAX_RATIO
 _MAX_ITERATIONS = _elliptic.HERTZ_STEPS
 
 
-class HertzCoefficients(NamedTuple):
-    """Dimensionless solution of the Hertz point contact (all [-])."""
-
-    kappa: Any
-    """Ellipticity a/b >= 1."""
-    a_star: Any
-    """Harris a* (Timoshenko m, Russian n_a)."""
-    b_star: Any
-    """Harris b* (Timoshenko n, Russian n_b)."""
-    delta_star: Any
-    """Harris delta* (Russian n_delta)."""
-    ellipk: Any
-    """Complete elliptic integral of the first kind K(e), e^2 = 1 - 1/kappa^2."""
-    ellipe: Any
-    """Complete elliptic integral of the second kind E(e)."""
+# The result types here use typing.NamedTuple's call form: under the module's postponed
+# annotations its class form compiles every field's annotation text when the module is imported
+# (a ForwardRef each, about 0.2 ms per class of every command that imports this module).
 
 
-class PointContact(NamedTuple):
-    """Hertz solution of one loaded point contact."""
+class HertzCoefficients(
+    NamedTuple(
+        "HertzCoefficients",
+        [
+            ("kappa", Any),
+            ("a_star", Any),
+            ("b_star", Any),
+            ("delta_star", Any),
+            ("ellipk", Any),
+            ("ellipe", Any),
+        ],
+    )
+):
+    """Dimensionless solution of the Hertz point contact (all [-]).
 
-    kappa: Any
-    """Ellipticity a/b. [-]"""
-    a: Any
-    """Semi-major axis, in the plane of the smaller curvature sum. [mm]"""
-    b: Any
-    """Semi-minor axis. [mm]"""
-    delta: Any
-    """Elastic approach of the two bodies. [mm]"""
-    stiffness: Any
-    """K = Q / delta^1.5, independent of the load. [N/mm^1.5]"""
-    p_max: Any
-    """Maximum contact pressure 3Q / (2 pi a b). [MPa]"""
+    Attributes
+    ----------
+    kappa
+        Ellipticity a/b >= 1.
+    a_star
+        Harris a* (Timoshenko m, Russian n_a).
+    b_star
+        Harris b* (Timoshenko n, Russian n_b).
+    delta_star
+        Harris delta* (Russian n_delta).
+    ellipk
+        Complete elliptic integral of the first kind K(e), e^2 = 1 - 1/kappa^2.
+    ellipe
+        Complete elliptic integral of the second kind E(e).
+    """
+
+    __slots__ = ()
 
 
-class RacewayCurvatures(NamedTuple):
+class PointContact(
+    NamedTuple(
+        "PointContact",
+        [
+            ("kappa", Any),
+            ("a", Any),
+            ("b", Any),
+            ("delta", Any),
+            ("stiffness", Any),
+            ("p_max", Any),
+        ],
+    )
+):
+    """Hertz solution of one loaded point contact.
+
+    Attributes
+    ----------
+    kappa
+        Ellipticity a/b. [-]
+    a
+        Semi-major axis, in the plane of the smaller curvature sum. [mm]
+    b
+        Semi-minor axis. [mm]
+    delta
+        Elastic approach of the two bodies. [mm]
+    stiffness
+        K = Q / delta^1.5, independent of the load. [N/mm^1.5]
+    p_max
+        Maximum contact pressure 3Q / (2 pi a b). [MPa]
+    """
+
+    __slots__ = ()
+
+
+class RacewayCurvatures(
+    NamedTuple(
+        "RacewayCurvatures",
+        [("inner_x", Any), ("inner_y", Any), ("outer_x", Any), ("outer_y", Any)],
+    )
+):
     """Curvature sums of the ball-inner and ball-outer raceway contacts. [1/mm]"""
 
-    inner_x: Any
-    inner_y: Any
-    outer_x: Any
-    outer_y: Any
+    __slots__ = ()
 
 
-class BallStiffness(NamedTuple):
-    """Contact stiffnesses of one ball. [N/mm^1.5]"""
+class BallStiffness(NamedTuple("BallStiffness", [("inner", Any), ("outer", Any), ("ball", Any)])):
+    """Contact stiffnesses of one ball. [N/mm^1.5]
 
-    inner: Any
-    """Ball-inner raceway contact."""
-    outer: Any
-    """Ball-outer raceway contact."""
-    ball: Any
-    """Both contacts in series: Q = ball * (delta_i + delta_o)^1.5."""
+    Attributes
+    ----------
+    inner
+        Ball-inner raceway contact.
+    outer
+        Ball-outer raceway contact.
+    ball
+        Both contacts in series: Q = ball * (delta_i + delta_o)^1.5.
+    """
+
+    __slots__ = ()
 
 
-class BallContacts(NamedTuple):
+class BallContacts(NamedTuple("BallContacts", [("inner", PointContact), ("outer", PointContact)])):
     """Hertz solution of both contacts of one ball under the same load."""
 
-    inner: PointContact
-    outer: PointContact
+    __slots__ = ()
 
 
 def _plain(*values: object) -> list[float] | None:
@@ -666,31 +711,53 @@ def roller_stiffness(
     return series_stiffness(k_i, k_o, LINE_EXPONENT)
 
 
-class Kuzmenko2010BallConstant(NamedTuple):
-    """Kuzmenko (2010), §3.4.2, step by step (kgf, mm, as in the paper)."""
+class Kuzmenko2010BallConstant(
+    NamedTuple(
+        "Kuzmenko2010BallConstant",
+        [
+            ("e_star", float),
+            ("sum_rho", float),
+            ("A", float),
+            ("B", float),
+            ("A_over_B", float),
+            ("n_delta", float),
+            ("c1", float),
+            ("c_v", float),
+            ("c", float),
+            ("k_contact", float),
+            ("k_pair", float),
+        ],
+    )
+):
+    """Kuzmenko (2010), §3.4.2, step by step (kgf, mm, as in the paper).
 
-    e_star: float
-    """E* = E / (2 (1 - nu^2)); printed 1.1538e4. [kgf/mm^2]"""
-    sum_rho: float
-    """2/R1 - 1/R2 + 1/R3; printed 0.2189. [1/mm]"""
-    A: float
-    """(1/R1 - 1/R2)/2; printed 0.0023. [1/mm]"""
-    B: float
-    """(1/R2 + 1/R3)/2 as printed (Hertz's B is (1/R1 + 1/R3)/2); printed 0.1048. [1/mm]"""
-    A_over_B: float
-    """A/B; printed 0.0219 (= 0.0023/0.1048 with the rounded A and B). [-]"""
-    n_delta: float
-    """Coefficient read from the printed table ([20], table 61): 0.55. [-]"""
-    c1: float
-    """Compliance of one contact, delta = c1 Q^(2/3); printed 0.000425. [mm/kgf^(2/3)]"""
-    c_v: float
-    """What the paper calls the ball constant: 1/c1; printed 2350. [kgf/mm^1.5 as labelled]"""
-    c: float
-    """The paper's total, 2 c_v; printed 4700. [kgf/mm^1.5 as labelled]"""
-    k_contact: float
-    """What c1 actually implies for one contact: c1^(-3/2). [kgf/mm^1.5]"""
-    k_pair: float
-    """Two such contacts in series: (2 c1)^(-3/2). [kgf/mm^1.5]"""
+    Attributes
+    ----------
+    e_star
+        E* = E / (2 (1 - nu^2)); printed 1.1538e4. [kgf/mm^2]
+    sum_rho
+        2/R1 - 1/R2 + 1/R3; printed 0.2189. [1/mm]
+    A
+        (1/R1 - 1/R2)/2; printed 0.0023. [1/mm]
+    B
+        (1/R2 + 1/R3)/2 as printed (Hertz's B is (1/R1 + 1/R3)/2); printed 0.1048. [1/mm]
+    A_over_B
+        A/B; printed 0.0219 (= 0.0023/0.1048 with the rounded A and B). [-]
+    n_delta
+        Coefficient read from the printed table ([20], table 61): 0.55. [-]
+    c1
+        Compliance of one contact, delta = c1 Q^(2/3); printed 0.000425. [mm/kgf^(2/3)]
+    c_v
+        What the paper calls the ball constant: 1/c1; printed 2350. [kgf/mm^1.5 as labelled]
+    c
+        The paper's total, 2 c_v; printed 4700. [kgf/mm^1.5 as labelled]
+    k_contact
+        What c1 actually implies for one contact: c1^(-3/2). [kgf/mm^1.5]
+    k_pair
+        Two such contacts in series: (2 c1)^(-3/2). [kgf/mm^1.5]
+    """
+
+    __slots__ = ()
 
 
 def kuzmenko2010_ball_constant(

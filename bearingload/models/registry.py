@@ -28,15 +28,14 @@ from collections.abc import Callable
 from typing import Any
 
 from bearingload.errors import InputError
-from bearingload.lazy_dataclass import dataclass
 
 #: The default method of :func:`compute` and of ``bearingload solve``.
 DEFAULT_METHOD = "exact"
 
 
-@dataclass(frozen=True)
 class Method:
-    """A registered model: its function and what to tell the user about it.
+    """A registered model: its function and what to tell the user about it (a plain class,
+    read by attribute only: no dataclass to build when the command line lists the methods).
 
     Attributes
     ----------
@@ -52,12 +51,23 @@ class Method:
         ``is_valid(case, result) -> bool array``: whether each case lies inside that range.
     """
 
-    name: str
-    module: str
-    function: str
-    title: str
-    validity: str = ""
-    is_valid: Callable[[Any, Any], Any] | None = None
+    __slots__ = ("name", "module", "function", "title", "validity", "is_valid")
+
+    def __init__(
+        self,
+        name: str,
+        module: str,
+        function: str,
+        title: str,
+        validity: str = "",
+        is_valid: Callable[[Any, Any], Any] | None = None,
+    ) -> None:
+        self.name = name
+        self.module = module
+        self.function = function
+        self.title = title
+        self.validity = validity
+        self.is_valid = is_valid
 
     def model(self) -> Callable[..., Any]:
         """The model function itself."""

@@ -15,13 +15,12 @@ from collections.abc import Iterable
 from typing import Any
 
 from bearingload.constants import KGF, ROLLER_EXPONENT
-from bearingload.lazy_dataclass import dataclass
 from bearingload.reports.render import Column
 
 
-@dataclass(frozen=True)
 class Quantity:
-    """One quantity.
+    """One quantity (a plain class, read by attribute only: some two hundred are built at
+    import, where a dataclass would also compile its methods).
 
     Attributes
     ----------
@@ -40,12 +39,23 @@ class Quantity:
         A second unit shown on an extra line of the human summary (``Q_max`` in kgf).
     """
 
-    key: str
-    label: str
-    unit: str = "-"
-    digits: int | None = 6
-    display: tuple[str, float] | None = None
-    also: tuple[str, float] | None = None
+    __slots__ = ("key", "label", "unit", "digits", "display", "also")
+
+    def __init__(
+        self,
+        key: str,
+        label: str,
+        unit: str = "-",
+        digits: int | None = 6,
+        display: tuple[str, float] | None = None,
+        also: tuple[str, float] | None = None,
+    ) -> None:
+        self.key = key
+        self.label = label
+        self.unit = unit
+        self.digits = digits
+        self.display = display
+        self.also = also
 
     def shown(self) -> tuple[str, float]:
         """(unit, factor) of the human formats."""
