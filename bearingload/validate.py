@@ -3,6 +3,7 @@
 from __future__ import annotations
 
 import math
+from collections.abc import Sequence
 from typing import Any
 
 import numpy as np
@@ -479,3 +480,26 @@ def ball_spacing(balls: object, ball_diameter: object, pitch_diameter: object) -
             f"centres are d_m sin(pi/z) = {c:.{k}g} mm apart, so with z = {n:.0f} and d_m = {p:g} "
             f"mm the ball diameter D_w must be at most {most:.{k}g} mm (or fewer balls)",
         )
+
+
+def known_columns(name: str, header: Sequence[str], allowed: Sequence[str]) -> None:
+    """InputError ``name`` unless every column of a csv ``header`` is one of ``allowed``: the
+    unknown ones named, or the separator of a file whose header reads as one column."""
+    unknown = ", ".join(repr(n) for n in header if n not in allowed)
+    if unknown:
+        why = f"unknown column(s) {unknown}; allowed: {', '.join(allowed)}"
+        raise InputError(name, separator_slip(header) or why)
+
+
+def separator_slip(header: Sequence[str]) -> str | None:
+    """Why a csv header of one cell is another separator's (``;``, a tab, ``|``: a spreadsheet
+    set to decimal commas saves its csv with ``;``), for the refusal of its file; else None."""
+    for sep in (";", "\t", "|"):
+        if len(header) == 1 and sep in header[0]:
+            why = " (as a spreadsheet set to decimal commas saves a csv)" if sep == ";" else ""
+            return (
+                f"the header {header[0].strip()!r} is one column: the columns of a csv are "
+                f"separated by commas, and this file separates them by {sep!r}{why}; save it "
+                "comma-separated"
+            )
+    return None

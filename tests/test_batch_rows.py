@@ -314,3 +314,22 @@ def test_an_implausible_bare_number_between_accepted_ones_is_refused(column, cel
         said = [line for line in out.stderr.splitlines() if line.startswith("Skipped: row 3:")]
         assert len(said) == 1 and f"{column}: a bare {implausible} is" in said[0], out.stderr
         assert [line.split(",", 1)[0] for line in out.stdout.splitlines()[1:]] == ["2"]
+
+
+@pytest.mark.parametrize(("sep", "why"), [(";", "decimal commas"), ("\t", ""), ("|", "")])
+def test_a_file_of_another_separator_is_refused_naming_it(capsys, tmp_path, sep, why):
+    """A csv saved by a spreadsheet set to decimal commas separates its columns by ';': the
+    header read as one column was refused as "unknown column(s) 'balls;load;stiffness'". The
+    refusal names the separator and what batch reads (fit's too); the file with commas solves."""
+    from .cli_helpers import error_line
+
+    path = tmp_path / "cases.csv"
+    path.write_text(f"{sep.join(('balls', 'load', 'stiffness'))}\n8{sep}1000{sep}1e5\n")
+    line = error_line(capsys, "batch", str(path))
+    assert "is one column: the columns of a csv are separated by commas" in line, line
+    assert f"separates them by {sep!r}" in line and why in line, line
+    assert _batch("balls,load,stiffness\n8,1000,1e5\n").exit_code == 0
+    path.write_text("bogus\n8\n")
+    assert "unknown column(s) 'bogus'" in error_line(capsys, "batch", str(path))
+    path.write_text(f"load{sep}displacement\n1{sep}1\n2{sep}2\n")
+    assert f"separates them by {sep!r}" in error_line(capsys, "fit", str(path))

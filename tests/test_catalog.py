@@ -387,3 +387,19 @@ def test_the_dynamic_rating_is_always_in_newtons():
     shown = json.loads(invoke("catalog", "show", "6205", "--format", "json").output)
     assert listed["units"]["C"] == "N" and row["C"] == 14000.0
     assert json.dumps(shown).count("14000.0") >= 1
+
+
+@pytest.mark.parametrize("bore", ["-5", "0", "-3in"])
+@pytest.mark.parametrize("kind", ["deep-groove", "angular"])
+def test_a_bore_of_zero_or_less_is_refused_not_listed_as_empty(capsys, kind, bore):
+    """catalog --bore -5 printed an empty list (0 bearings), exit 0, as if no bearing had that
+    bore; the library's entries(bore=nan) returned [] alike. A bore must be a number > 0."""
+    from .cli_helpers import error_line
+
+    line = error_line(capsys, "catalog", "--type", kind, f"--bore={bore}")
+    assert line.startswith("Error: Invalid value for '--bore': must be greater than 0 mm"), line
+    for bad in (-5.0, float("nan"), "30", [30, 40]):
+        with pytest.raises(InputError) as info:
+            entries(bore=bad)
+        assert info.value.parameter == "bore"
+    assert entries(bore=31) == [] and len(entries(bore=30.0)) == 9

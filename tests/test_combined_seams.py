@@ -241,6 +241,23 @@ def test_a_ball_driven_to_the_groove_edge_is_refused(z, fr, fa, clearance, extra
     assert f"clearance = {clearance:.6g} mm" in message and "array" not in message
 
 
+def test_the_groove_edge_refusal_of_a_free_ring_names_the_ways_that_solve_it():
+    """A 6205 at G_r = 0.5 mm, F_r 1 kN, the inner ring free to tilt: F_a = 100 N tilts it until
+    ball 5 reaches the groove edge. The refusal said "lower the axial load", but F_a = 0 and
+    3 kN solve (the tilt seats the balls under more thrust as under less), and so does the tilt
+    held at 0: the refusal names both ways. Under an imposed tilt it still says lower."""
+    with pytest.raises(InputError) as info:
+        solve_combined(9, 1000.0, 100.0, clearance=0.5, **G6205)
+    message = str(info.value)
+    assert info.value.parameter == "axial_load" and "lower the axial load" not in message
+    assert "change the axial load" in message and "misalignment (0: aligned)" in message
+    for fa, extra in ((0.0, {}), (3000.0, {}), (100.0, {"misalignment": 0.0})):
+        assert solve_combined(9, 1000.0, fa, clearance=0.5, **G6205, **extra).q_max > 0
+    with pytest.raises(InputError) as info:
+        solve_combined(9, 1e5, 1000.0, clearance=0.5, misalignment=1.0, **G6205)
+    assert "lower the axial load, moment or tilt, or the clearance" in str(info.value)
+
+
 # --------------------------------------------------------------- 3. heavy preload, tiny loads
 
 DPS = 50

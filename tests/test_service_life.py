@@ -561,6 +561,7 @@ def test_an_infinite_value_is_rendered_not_a_crash():
 @pytest.mark.parametrize("option", ["--static-rating", "--dynamic-rating"])
 def test_a_rating_beyond_any_bearing_is_refused(capsys, option):
     """--static-rating 1e300 with a tiny load overflowed s0 to infinity and ended in an internal
-    error in --format json (the review's find); a rating above 1e9 N is refused."""
-    code, out, err = run_entry(capsys, "solve", "6205", "-F", "1e-12N", option, "1e300")
+    error in --format json (the review's find); a rating above 1e9 N is refused, written with
+    its unit too (a bare one is refused first as implausible for the bearing)."""
+    code, out, err = run_entry(capsys, "solve", "6205", "-F", "1e-12N", option, "1e300N")
     assert code == 2 and err.startswith(f"Error: Invalid value for '{option}': must lie between")

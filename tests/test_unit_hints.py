@@ -380,3 +380,58 @@ def test_bare_numbers_in_the_bearing_range_and_rings_by_hand_are_used():
         ["-z", "8", "-F", "3", "-K", "4700"],
     ):
         assert invoke("solve", *args).exit_code == 0, args
+
+
+@pytest.mark.parametrize(
+    ("bearing", "option", "bare", "meant", "catalogue"),
+    [
+        ("6205", "--dynamic-rating", "14", "14kN", "C = 14000 N"),
+        ("6205", "--static-rating", "7.85", "7.85kN", "C0 = 7850 N"),
+        ("7205BDB", "--dynamic-rating", "16.7", "16.7kN", "C = 16700 N"),
+    ],
+)
+def test_a_bare_load_rating_implausible_for_the_bearing_names_its_unit(
+    capsys, bearing, option, bare, meant, catalogue
+):
+    """solve 6205 --dynamic-rating 14 (14 kN meant) took 14 N and printed L10 = 2.7e-6 x 10^6
+    rev; --dynamic-rating 1e-300 an L10 of 0. A bare rating is judged against the catalogue's
+    (a tenth to ten times it); the number with its unit is used as it is."""
+    from .cli_helpers import error_line
+
+    args = ("solve", bearing, "-F", "1kN", *(("--preload", "300N") if "DB" in bearing else ()))
+    line = error_line(capsys, *args, option, bare)
+    assert line.startswith(f"Error: Invalid value for '{option}': a bare {bare} is "), line
+    assert f"({catalogue}; plausible" in line and f"did you mean {meant}?" in line, line
+    assert "did you mean" not in error_line(capsys, *args, option, "1e-300")
+    for written in (f"{bare}N", meant):
+        assert run_entry(capsys, *args, option, written)[0] == 0, written
+
+
+def test_a_bare_rating_is_judged_alike_by_solve_analyse_many_and_batch(capsys, tmp_path):
+    """A case of analyse_many and a row of batch judge a bare rating against the catalogue's,
+    as solve does, and a bare load against the catalogue's C0 where the case gives its own
+    static rating (C0 = 785 N made a bare load of 3 N plausible there)."""
+    from bearingload import analyse_many
+
+    cases = [
+        {"bearing": "6205", "load": 1000, "dynamic_rating": 14},
+        {"bearing": "6205", "load": 1000, "dynamic_rating": "14N"},
+        {"bearing": "6205", "load": 1000, "axial_load": 100, "static_rating": 7.85},
+        {"bearing": "6205", "load": 3, "static_rating": 785},
+        {"bearing": "7205BDB", "load": 1000, "preload": 300, "dynamic_rating": 16.7},
+        {"bearing": "7205BDB", "load": 1000, "preload": 300, "dynamic_rating": 16700},
+    ]
+    many = analyse_many(cases)
+    assert many.rows == [1, 5]
+    for i, name in (
+        (0, "dynamic_rating"),
+        (2, "static_rating"),
+        (3, "load"),
+        (4, "dynamic_rating"),
+    ):
+        assert many.errors[i].parameter == name and "implausible" in many.errors[i].message
+    path = tmp_path / "ratings.csv"
+    path.write_text("bearing,load,dynamic_rating\n6205,1000,14\n6205,1000,14000\n")
+    code, out, err = run_entry(capsys, "batch", str(path), "--format", "csv")
+    assert code == 1 and "row 2: dynamic_rating: a bare 14 is 14 N" in err
+    assert [line.split(",", 1)[0] for line in out.splitlines()[1:]] == ["2", "3"]

@@ -16,6 +16,7 @@ from bearingload.errors import InputError, UnusedError
 from bearingload.plan.case import LOAD_PARAMS
 from bearingload.plan.inputs import READERS, Reader, count, quantity, text
 from bearingload.plan.many import GEOMETRY, PAIR_PARAMS
+from bearingload.validate import known_columns
 
 #: Rows read, solved and written at a time (memory stays flat however long the file).
 CHUNK_ROWS = 10_000
@@ -67,9 +68,7 @@ def read_header(fields: list[str]) -> Header:
             f"the header's column {names.index('') + 1} has no name (only empty columns at the "
             "end of the header are allowed, and their cells must be empty)",
         )
-    unknown = ", ".join(repr(n) for n in names if n not in COLUMNS)
-    if unknown:
-        raise InputError("columns", f"unknown column(s) {unknown}; allowed: {', '.join(COLUMNS)}")
+    known_columns("columns", names, COLUMNS)
     for kind in _FILE_KINDS:
         _check_file(names, *kind)
     twice = sorted({n for n in names if names.count(n) > 1})

@@ -503,7 +503,7 @@ def entries(
     Raises
     ------
     InputError
-        Unknown series or standard.
+        Unknown series or standard; a bore that is not a number > 0.
 
     Examples
     --------
@@ -522,8 +522,20 @@ def entries(
             )
         rows = [r for r in rows if r.standard == std]
     if bore is not None:
-        rows = [r for r in rows if math.isclose(r.d, float(bore))]
+        d = checked_bore(bore)
+        rows = [r for r in rows if math.isclose(r.d, d)]
     return rows
+
+
+def checked_bore(bore: object) -> float:
+    """The bore diameter a catalogue list is filtered by [mm]: one finite number > 0, else
+    :class:`InputError` (a bore of -5 or NaN listed no bearing, as if none had it)."""
+    from bearingload.validate import positive
+
+    d = positive("bore", bore, "mm")
+    if d.ndim:
+        raise InputError("bore", f"must be one number [mm] (got an array of shape {d.shape})")
+    return float(d)
 
 
 def find(designation: str) -> BearingGeometry:

@@ -25,23 +25,30 @@ from bearingload.units import BASE_UNIT, UNITS
 #: parameter -> (kind, what it is, the units a slip most likely meant, the plausible range of a
 #: bare number as multiples of the bearing's scale (:func:`bearing_scale`)). A load below a
 #: thousandth of C0, a moment below 1e-4 of C0 d_m/2 (the moment of C0 at the pitch radius), a
-#: ball stiffness beyond ten times either side of the Hertz value of the ball set.
+#: ball stiffness beyond ten times either side of the Hertz value of the ball set, a load rating
+#: beyond ten times either side of the catalogue's (14 on a 6205 is 14 kN meant: C = 14 kN).
 BEARING_SCALE: dict[str, tuple[str, str, tuple[str, ...], tuple[float, float]]] = {
     "load": ("force", "a load", ("kN", "kgf"), (1e-3, float("inf"))),
     "axial_load": ("force", "an axial load", ("kN", "kgf"), (1e-3, float("inf"))),
     "moment": ("moment", "a moment", ("Nm", "kNm"), (1e-4, float("inf"))),
     "moment_cross": ("moment", "a moment", ("Nm", "kNm"), (1e-4, float("inf"))),
     "stiffness": ("stiffness", "a ball stiffness", ("kgf/mm^1.5", "N/um^1.5"), (0.1, 10.0)),
+    "dynamic_rating": ("force", "a dynamic load rating", ("kN", "kgf"), (0.1, 10.0)),
+    "static_rating": ("force", "a static load rating", ("kN", "kgf"), (0.1, 10.0)),
 }
 
 
 def bearing_scale(bearing: Any, parameter: str) -> tuple[float, str] | None:
-    """The bearing's own size for ``parameter`` and its words: C0 [N] for a load, C0 d_m/2
-    [N mm] for a moment, the Hertz stiffness of its ball set [N/mm^1.5] (series of the inner
-    and outer contacts); None where the bearing does not give it (a ring by hand, a roller)."""
+    """The bearing's own size for ``parameter`` and its words: C0 [N] for a load and a static
+    rating, C [N] for a dynamic rating, C0 d_m/2 [N mm] for a moment, the Hertz stiffness of
+    its ball set [N/mm^1.5] (series of the inner and outer contacts); None where the bearing
+    does not give it (a ring by hand, a roller's stiffness, a rating not in the catalogue)."""
     c0, dm = getattr(bearing, "C0", None), getattr(bearing, "pitch_diameter", None)
-    if parameter in ("load", "axial_load") and c0:
+    if parameter in ("load", "axial_load", "static_rating") and c0:
         return float(c0), f"C0 = {c0:g} N"
+    c = getattr(bearing, "C", None)
+    if parameter == "dynamic_rating" and c:
+        return float(c), f"C = {c:g} N"
     if parameter in ("moment", "moment_cross") and c0 and dm:
         return float(c0) * float(dm) / 2.0, f"C0 d_m/2 = {c0 * dm / 2.0:.4g} N mm"
     k_i, k_o = getattr(bearing, "stiffness_inner", None), getattr(bearing, "stiffness_outer", None)

@@ -1990,12 +1990,20 @@ def _refuse_edge(case: int, ball: int, given: dict) -> None:
         name = next(
             (k for k in ("misalignment", "moment", "moment_cross") if k in one), "clearance"
         )
+    if "misalignment" in one:
+        way = "lower the axial load, moment or tilt, or the clearance"
+    else:  # a free ring's tilt may seat the balls under more thrust as well as under less
+        way = (
+            "lower the clearance, change the axial load or moment (the inner ring is free to "
+            "tilt: more thrust may seat the balls, as less may), or impose the tilt with a "
+            "misalignment (0: aligned)"
+        )
     raise InputError(
         name,
         f"the loads and the clearance drive ball {ball + 1} to a contact angle of 90°, the "
         "edge of its groove (the centres of its two grooves cross): it would ride over the "
-        "groove shoulder, which the model does not describe; lower the axial load, moment or "
-        f"tilt, or the clearance ({format_cases(one, INPUT_UNITS)})",
+        f"groove shoulder, which the model does not describe; {way} "
+        f"({format_cases(one, INPUT_UNITS)})",
     )
 
 

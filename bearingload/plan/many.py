@@ -55,6 +55,8 @@ GEOMETRY = ("bearing", "ball_diameter", "pitch_diameter")
 #: Inputs whose plan depends only on whether they are given: a case's plan is kept for the
 #: cases that differ from it only in their values.
 _PER_CASE = (*LOAD_PARAMS[:-1], "load", "cage_angle", "ball_density", *SERVICE)
+#: The load ratings a case may give in place of the catalogue's.
+_RATINGS = ("dynamic_rating", "static_rating")
 #: Inputs of no case but of the radial engine: its method and life.
 _NOT_CASE = ("method", "revolutions")
 #: Inputs a ring given by z and K may have; any other refuses its case.
@@ -216,10 +218,14 @@ class Planner:
 
     def refuse_bare(self, v: dict[str, Any], i: int, b: Any) -> None:
         """Refuse a bare number of case ``i`` implausible for its bearing ``b``
-        (:func:`bearingload.bearings.plausible.refuse_implausible_bare`, solve's rule)."""
+        (:func:`bearingload.bearings.plausible.refuse_implausible_bare`, solve's rule): judged
+        against the catalogue's ratings, as solve judges them, where the case replaces them."""
         from bearingload.bearings.plausible import refuse_implausible_bare
 
         bare = {n: float(v[n]) for n, flags in self.bare.items() if n in v and flags[i]}
+        if bare and any(n in v for n in _RATINGS):
+            rest = {k: x for k, x in v.items() if k not in _RATINGS}
+            b = self.planned({**rest, "_catalogue": True}, _catalogue_bearing)
         if bare:
             refuse_implausible_bare(b, bare)
 
@@ -278,6 +284,13 @@ def _combined_key(case: Case) -> tuple[tuple[Any, ...], float | None]:
     dynamics = (case.dynamics_arguments()["speed"] is not None, case.ball_density is not None)
     key = ("combined", b, tilts, case.rotating or "inner", case.dynamic_rating, dynamics)
     return key, lever
+
+
+def _catalogue_bearing(v: dict[str, Any]) -> Any:
+    """The resolved bearing (one of a pair) of a case's inputs ``v`` given without ratings:
+    the catalogue's ratings."""
+    case = engine_of(case_of(v), v.get("method", "exact"), v.get("revolutions"))[0]
+    return resolve_bearings(case, case.stiffness_value())[0]
 
 
 def bearing_of(case: Case) -> Any:

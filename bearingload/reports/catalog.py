@@ -66,7 +66,9 @@ def angular_list(fmt: str, bore: float | None = None) -> str:
     """The angular-contact rows (:func:`bearingload.bearings.angular.angular_rows`), those of
     bore ``bore`` [mm] where given, rendered in ``fmt``."""
     from bearingload.bearings.angular import angular_rows
+    from bearingload.bearings.catalog import checked_bore
 
+    bore = None if bore is None else checked_bore(bore)
     rows = [
         {"designation": r.designation, "contact_angle": r.contact_angle, "d": r.d, "D": r.D,
          "B": r.B, "balls": r.balls, "ball_diameter": r.ball_diameter,

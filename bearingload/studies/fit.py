@@ -42,6 +42,7 @@ import numpy as np
 from bearingload.errors import ConvergenceError, InputError
 from bearingload.lazy_dataclass import dataclass
 from bearingload.units import parse_quantity
+from bearingload.validate import separator_slip
 
 #: Fitting methods accepted by :func:`fit_power_law`, with a one-line description.
 METHODS = {
@@ -358,7 +359,8 @@ def read_measurements(
                     if col.lower() not in header:
                         raise InputError(
                             f"{name} row {row}, column {col!r}",
-                            f"the header has no column {col!r} (found: {', '.join(header)})",
+                            separator_slip(record)
+                            or f"the header has no column {col!r} (found: {', '.join(header)})",
                         )
                     positions[col] = header.index(col.lower())
                 continue
