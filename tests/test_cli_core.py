@@ -352,3 +352,20 @@ def test_per_ball_without_the_exact_model_is_refused(fmt, method):
     assert info.value.parameter == "per_ball"
     ok = invoke("solve", "6205", "-F", "1kN", "--per-ball", "--method", "all", "--format", fmt)
     assert ok.exit_code == 0 and "internal error" not in ok.output
+
+
+@pytest.mark.skipif(not os.path.exists("/dev/full"), reason="needs a /dev/full device (Linux)")
+@pytest.mark.parametrize("fmt", ["table", "json"])
+def test_output_to_a_full_device_is_one_error_line_not_an_internal_error(fmt):
+    """Standard output on a full disk (/dev/full) was reported as an internal error, a bug to
+    report; it is the disk, said in one line with exit status 1."""
+    with open("/dev/full", "w") as full:
+        done = subprocess.run(
+            [sys.executable, "-m", "bearingload", "solve", "6205", "-F", "1kN", "--format", fmt],
+            stdout=full,
+            stderr=subprocess.PIPE,
+            text=True,
+            timeout=60,
+        )
+    assert done.returncode == 1
+    assert done.stderr == "Error: cannot write the output: No space left on device\n"

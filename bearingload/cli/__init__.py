@@ -6,6 +6,7 @@ Commands live one per module; each builds its rows with the library and prints t
 
 from __future__ import annotations
 
+import errno
 import importlib
 
 import click
@@ -90,6 +91,8 @@ def _refuse_detached_units(args: list[str]) -> None:
 
 #: Exit status of an internal error (a bug), apart from 1 (batch: rows skipped) and 2 (usage).
 INTERNAL_ERROR = 3
+#: The errors of writing to a full device or past a size or quota limit.
+OUTPUT_FULL = (errno.ENOSPC, errno.EFBIG, errno.EDQUOT)
 
 
 def run(argv: list[str] | None = None) -> None:
@@ -105,6 +108,7 @@ def run(argv: list[str] | None = None) -> None:
     try:
         _refuse_detached_units(sys.argv[1:] if argv is None else argv)
         status = main.main(args=argv, prog_name="bearingload", standalone_mode=False)
+        sys.stdout.flush()  # (a full disk refused here, not at the interpreter's exit)
         if isinstance(status, int) and status:  # ctx.exit(n) returns n without standalone mode
             sys.exit(status)
     except click.exceptions.Exit as exc:
@@ -120,6 +124,9 @@ def run(argv: list[str] | None = None) -> None:
     except BrokenPipeError:
         sys.exit(1)
     except Exception as exc:  # a bug, not bad input: still one line, but say so
+        if isinstance(exc, OSError) and exc.errno in OUTPUT_FULL:  # (not a bug: the disk)
+            click.echo(f"Error: cannot write the output: {exc.strerror}", err=True)
+            sys.exit(1)
         click.echo(
             f"Error: internal error ({type(exc).__name__}: {exc}); please report it with the "
             "command line that caused it",
