@@ -1854,7 +1854,7 @@ def answers_arrays(Py_ssize_t n, int z, list doubles=None, mats=None):
             np.empty(n, dtype=np.int64), np.empty(n, dtype=np.int32), np.zeros((2, n), np.uint8))
 
 
-cdef tuple answer_shapes(Py_ssize_t n, int z):
+def answer_shapes(Py_ssize_t n, int z):
     """The shapes of ``answers_arrays``' vh and vl, forces, kappa, balls and residuals."""
     return ((2, n, 5), (2, n, 5), (n, z), (BALL_ARRAYS, n, z), (2, n))
 
@@ -1864,29 +1864,26 @@ cdef tuple answer_shapes(Py_ssize_t n, int z):
 cdef Py_ssize_t CARVED = 1 << 15
 
 
-cdef list carve(tuple shapes):
+def carve(tuple shapes):
     """Arrays of doubles of ``shapes`` as views of one block. One allocation, not one each:
     freed, a block this large raises glibc's trim threshold with it, and the next call's
     arrays take its pages again instead of faulting in fresh ones (0.3-0.5 page faults a case
     in the batches of combined_call, ~0.8 us a case of 10 000 on a 6205)."""
     cdef Py_ssize_t total = 0, size, at = 0
+    sizes = []
     for shape in shapes:
-        total += size_of(shape)
+        size = 1
+        for m in shape:
+            size *= m
+        sizes.append(size)
+        total += size
     if total < CARVED:
         return [np.empty(shape) for shape in shapes]
     block, out = np.empty(total), []
-    for shape in shapes:
-        size = size_of(shape)
+    for shape, size in zip(shapes, sizes):
         out.append(block[at:at + size].reshape(shape))
         at += size
     return out
-
-
-cdef Py_ssize_t size_of(tuple shape):
-    cdef Py_ssize_t size = 1
-    for m in shape:
-        size *= m
-    return size
 
 
 def answers_of(arrays):
