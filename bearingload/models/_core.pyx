@@ -1849,7 +1849,7 @@ def answers_arrays(Py_ssize_t n, int z, list doubles=None, mats=None):
     (n, z), the ball arrays (BALL_ARRAYS, n, z), the residuals (2, n), the iterations (n,),
     the status (n,), the flags (2, n) (``answers_at`` points into them). ``doubles``, ``mats``:
     the caller's arrays of ``answer_shapes`` and its tangent and Hessian array, else its own."""
-    v, forces, kappa, balls, res = doubles if doubles is not None else carve(answer_shapes(n, z))
+    v, forces, kappa, balls, res = carve(n, answer_shapes(n, z)) if doubles is None else doubles
     return (v, forces, np.empty((2, n, 5, 5)) if mats is None else mats, kappa, balls, res,
             np.empty(n, dtype=np.int64), np.empty(n, dtype=np.int32), np.zeros((2, n), np.uint8))
 
@@ -1859,17 +1859,19 @@ def answer_shapes(Py_ssize_t n, int z):
     return ((2, n, 5), (2, n, 5), (n, z), (BALL_ARRAYS, n, z), (2, n))
 
 
-#: Doubles below which ``carve`` allocates each array on its own (a few pages: no faults to save,
+#: Cases below which ``carve`` allocates each array on its own (a few pages: no faults to save,
 #: and the views would cost more than the allocations). [-]
-cdef Py_ssize_t CARVED = 1 << 15
+CARVED = 64
 
 
-def carve(tuple shapes):
-    """Arrays of doubles of ``shapes`` as views of one block. One allocation, not one each:
-    freed, a block this large raises glibc's trim threshold with it, and the next call's
-    arrays take its pages again instead of faulting in fresh ones (0.3-0.5 page faults a case
-    in the batches of combined_call, ~0.8 us a case of 10 000 on a 6205)."""
+def carve(Py_ssize_t n, tuple shapes):
+    """Arrays of doubles of ``shapes`` (of n cases) as views of one block. One allocation, not
+    one each: freed, a block this large raises glibc's trim threshold with it, and the next
+    call's arrays take its pages again instead of faulting in fresh ones (0.3-0.5 page faults
+    a case in the batches of combined_call, ~0.8 us a case of 10 000 on a 6205)."""
     cdef Py_ssize_t total = 0, size, at = 0
+    if n < CARVED:
+        return [np.empty(shape) for shape in shapes]
     sizes = []
     for shape in shapes:
         size = 1
@@ -1877,8 +1879,6 @@ def carve(tuple shapes):
             size *= m
         sizes.append(size)
         total += size
-    if total < CARVED:
-        return [np.empty(shape) for shape in shapes]
     block, out = np.empty(total), []
     for shape, size in zip(shapes, sizes):
         out.append(block[at:at + size].reshape(shape))
@@ -4656,8 +4656,8 @@ def combined_call(int z, const double[:, ::1] cols, bint angular, bint imposed,
     cdef Limits lim = LIMITS
     cdef int state = SET_UP_APART
     # (what the result keeps in one block, the rest in another: ``carve``)
-    geo_a, rows_a, per_ball_a, mats_a = carve(((4, n), (8, n), (5, n, z), (2, n, 5, 5)))
-    kv_a, f_a, *doubles = carve(((n * (1 + NODES),), (n, 5)) + answer_shapes(n, z))
+    geo_a, rows_a, per_ball_a, mats_a = carve(n, ((4, n), (8, n), (5, n, z), (2, n, 5, 5)))
+    kv_a, f_a, *doubles = carve(n, ((n * (1 + NODES),), (n, 5)) + answer_shapes(n, z))
     arrays = answers_arrays(n, z, doubles, mats_a)
     k0_a, values_a = kv_a[:n], kv_a[n:].reshape(n, NODES)
     result_a = (rows_a, per_ball_a, np.zeros(n, dtype=np.uint8))
