@@ -294,11 +294,11 @@ def test_cage_angle_in_arcmin():
      ["sweep", "7205B", "-F", "2kN", "-A", "1kN"], ["table", "life", "-b", "6205", "-F", "2kN"]],
 )  # fmt: skip
 def test_a_dynamic_rating_beyond_its_range_is_named_in_every_engine(capsys, args):
-    """The radial engine refused -C 1e300 for its range; the combined engines overflowed L10 and
+    """The radial engine refused -C 1e300N for its range; the combined engines overflowed L10 and
     refused it as a bad '--load'."""
     from tests.cli_helpers import run_entry
 
-    code, out, err = run_entry(capsys, *args, "-C", "1e300")
+    code, out, err = run_entry(capsys, *args, "-C", "1e300N")
     assert code == 2 and out == ""
     assert err.strip() == (
         "Error: Invalid value for '--dynamic-rating': must lie between 0 and 1e+09 N (got 1e+300 N)"
