@@ -31,7 +31,7 @@ COMBINED_KEYS = (*_INPUTS, *(k for k in COMBINED_ANSWERS if k not in _INPUTS), *
 #: The radial output columns: solve's, with the ball dynamics' density after the speed.
 _RADIAL = [k for k in REPORT_KEYS if k != "relative_error"]
 _RADIAL.insert(_RADIAL.index("speed") + 1, "ball_density")
-RADIAL_KEYS = (*INPUT_KEYS, *_RADIAL, "valid")
+RADIAL_KEYS = (*INPUT_KEYS, *_RADIAL, "valid", *MATRIX_KEYS)
 _VISCOSITY = ("viscosity", *OIL_INPUTS)  # the oil gives the viscosity
 _LIFE = (BEARING_COLUMNS,)  # the lives are a bearing's
 _BY_SPEED = (

@@ -13,8 +13,9 @@ from typing import Any
 
 from bearingload.bearings.mounting import RESULT_KEYS, mounting_notes
 from bearingload.reports.quantities import MATRIX_UNITS, SERVICE_KEYS, column, units
-from bearingload.reports.render import Column, Table, render
+from bearingload.reports.render import Table, render
 from bearingload.reports.solve import (
+    MATRIX_ENTRY,
     balls_table,
     blank,
     case_warnings,
@@ -27,8 +28,9 @@ from bearingload.reports.solve import (
     set_note,
     with_service,
 )
+from bearingload.reports.solve import matrix_table as solve_matrix_table
 from bearingload.studies.combined_bearing import CombinedCase, combined_values
-from bearingload.studies.matrix import MATRIX_COLUMNS, MATRIX_KEYS, MATRIX_ROWS
+from bearingload.studies.matrix import MATRIX_KEYS
 
 INPUT_KEYS = (
     "bearing",
@@ -188,22 +190,15 @@ def _case_table(records: Sequence[dict[str, Any]]) -> Table:
 
 
 def matrix_table(matrix: Any, title: str = "tangent stiffness matrix", csv: bool = True) -> Table:
-    """A 5x5 ``stiffness_matrix`` as people read it: a row per force or moment, a column per
-    displacement or tilt, each entry d(row)/d(column) in the units the row and column name;
-    ``csv``: the output's csv carries it (a pair's csv rows are its bearings')."""
-    columns = [Column("row", "", align="left")]
-    columns += [Column(m, f"d/d({m}) [1/{u}]", "", 6) for m, u in MATRIX_COLUMNS]
-    moves = [m for m, _ in MATRIX_COLUMNS]
-    rows = []
-    for (force, unit), row in zip(MATRIX_ROWS, matrix, strict=True):
-        rows.append({"row": f"{force} [{unit}]"} | dict(zip(moves, map(float, row), strict=True)))
-    notes = [
-        "Entry: the change of the row's force or moment per unit of the column's motion "
-        f"({MATRIX_UNITS}); the true tangent, not quite symmetric (its symmetric part: json "
+    """A 5x5 ``stiffness_matrix`` of the combined engine as people read it
+    (:func:`bearingload.reports.solve.matrix_table`); ``csv``: the output's csv carries it (a
+    pair's csv rows are its bearings')."""
+    note = (
+        f"{MATRIX_ENTRY}; the true tangent, not quite symmetric (its symmetric part: json "
         "stiffness_matrix_symmetric); json: stiffness_matrix"
         + (", csv: stiffness_matrix_11 ... _55." if csv else ".")
-    ]
-    return Table(title, columns, rows, notes)
+    )
+    return solve_matrix_table(matrix, title, note)
 
 
 def _balls(c: CombinedCase) -> list[tuple[float, float, float, float]]:
