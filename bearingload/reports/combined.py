@@ -31,6 +31,7 @@ from bearingload.reports.solve import (
 from bearingload.reports.solve import matrix_table as solve_matrix_table
 from bearingload.studies.combined_bearing import CombinedCase, combined_values
 from bearingload.studies.matrix import MATRIX_KEYS
+from bearingload.units import turn_angle
 
 INPUT_KEYS = (
     "bearing",
@@ -280,7 +281,7 @@ def _title(records: Sequence[dict[str, Any]]) -> str:
         clear = f"angular contact, contact angle {r['contact_angle']:.6g}°"
     return (
         f"{who}z = {r['balls']}, F_r = {r['load']:.6g} N, F_a = {r['axial_load']:.6g} N, "
-        f"{clear}, cage angle {r['cage_angle']:.6g}°, {r['rotating']} ring rotating{lever}"
+        f"{clear}, cage angle {turn_angle(r['cage_angle'], 6):.6g}°, {r['rotating']} ring rotating{lever}"
     )
 
 

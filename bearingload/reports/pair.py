@@ -28,6 +28,7 @@ from bearingload.reports.solve import (
 from bearingload.studies.bearing_pair import ARRANGEMENT_NAMES, PairCase, PairLives
 from bearingload.studies.combined_bearing import combined_values
 from bearingload.studies.matrix import MATRIX_KEYS
+from bearingload.units import turn_angle
 
 #: The pair's inputs (every row of the csv, the JSON case).
 PAIR_INPUTS = ("bearing", "arrangement", "balls", "load", "axial_load", "moment", "moment_cross",
@@ -230,19 +231,19 @@ def _title(p: dict[str, Any], setting: Preload | None = None) -> str:
         f"{who}pair {p['arrangement']} ({ARRANGEMENT_NAMES[p['arrangement']]}), z = "
         f"{p['balls']} per bearing, contact angle {p['contact_angle']:.6g}°, F_r = "
         f"{p['load']:.6g} N, F_a = {p['axial_load']:.6g} N, preload {preload}, width "
-        f"B = {p['width']:.6g} mm, cage angle {p['cage_angle']:.6g}°, {p['rotating']} ring rotating"
+        f"B = {p['width']:.6g} mm, cage angle {turn_angle(p['cage_angle'], 6):.6g}°, {p['rotating']} ring rotating"
     )
 
 
 def _balls_table(c: PairCase) -> Table:
-    columns = [column("ball"), Column("angle", "angle", "°", 6)]
+    columns = [column("ball"), Column("ball_angles", "angle", "°", 6)]
     for k in (1, 2):
         columns += [Column(f"a{k}", f"contact angle, bearing {k}", "°", 6),
                     Column(f"q{k}", f"load Q, bearing {k}", "N", 6)]  # fmt: skip
     b1, b2 = (b.result for b in c.bearings)
     rows = []
     for j in range(len(b1.ball_loads)):
-        row: dict[str, Any] = {"ball": j + 1, "angle": float(b1.ball_angles[j])}
+        row: dict[str, Any] = {"ball": j + 1, "ball_angles": float(b1.ball_angles[j])}
         for k, b in ((1, b1), (2, b2)):
             q = float(b.ball_loads[j])
             row |= {f"a{k}": contact_angle_shown(float(b.contact_angles[j]), q), f"q{k}": q}

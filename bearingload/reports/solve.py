@@ -29,6 +29,7 @@ from bearingload.studies.loaded_bearing import (
     with_relative_errors,
 )
 from bearingload.studies.matrix import MATRIX_COLUMNS, MATRIX_KEYS, MATRIX_ROWS
+from bearingload.units import turn_angle
 
 #: Inputs of a case (the csv columns that say which case a row is).
 INPUT_KEYS = (
@@ -274,7 +275,7 @@ def _title(cases: Sequence[LoadedCase], records: Sequence[dict[str, Any]]) -> st
     )
     return (
         f"{who}z = {r['balls']}, F_r = {r['load']:.6g} N ({r['load'] / 9.80665:.6g} kgf), "
-        f"K = {r['stiffness']:.6g} N/mm^{m:g}, {clear}, cage angle {r['cage_angle']:.6g}°, "
+        f"K = {r['stiffness']:.6g} N/mm^{m:g}, {clear}, cage angle {turn_angle(r['cage_angle'], 6):.6g}°, "
         f"m = {m:.6g}"
     )
 
@@ -381,7 +382,7 @@ def balls_table(
     ``heads``) their contact angles and loads side by side."""
     one = len(per) == 1
     keys = [k for k in BALL_COLUMNS if k in per[0][0] and (one or BALL_COLUMNS[k][1])]
-    columns = [column("ball"), Column("angle", "angle", "°", 6)]
+    columns = [column("ball"), Column("ball_angles", "angle", "°", 6)]
     for k in keys:
         header, several, unit = BALL_COLUMNS[k]
         if one:
@@ -393,7 +394,7 @@ def balls_table(
     rows = []
     for j, ball in enumerate(per[0]):
         side = ball if one else {f"{k}{i}": b[j][k] for k in keys for i, b in enumerate(per)}
-        rows.append({"ball": j + 1, "angle": ball["angle"]} | side)
+        rows.append({"ball": j + 1, "ball_angles": ball["angle"]} | side)
     title = "Ball loads (ball 1 at the cage angle; angles from the load line)"
     return Table(title, columns, rows, notes)
 
