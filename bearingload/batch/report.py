@@ -109,7 +109,7 @@ def pair_columns(written: set[str] | None) -> list[Column]:
         k for k in (*PAIR_SERVICE, *OWN_KEYS) if written is None or k in written or k not in NEEDS
     ]
     own = [k for k in OWN_KEYS if k in kept and k not in ("moment_cross", *RESULT_KEYS)]
-    return [column("row"), *csv_columns([k for k in PAIR_SERVICE if k in kept], own)]
+    return [column("row"), *csv_columns([k for k in PAIR_SERVICE if k in kept], own, True)]
 
 
 def pair_rows(

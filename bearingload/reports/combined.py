@@ -190,14 +190,15 @@ def _case_table(records: Sequence[dict[str, Any]]) -> Table:
     return Table("cases", [column(k, 1.5) for k in keys], [blank(r, keys) for r in records])
 
 
-def matrix_table(matrix: Any, title: str = "tangent stiffness matrix", csv: bool = True) -> Table:
+def matrix_table(
+    matrix: Any, title: str = "tangent stiffness matrix", csv: str = "stiffness_matrix"
+) -> Table:
     """A 5x5 ``stiffness_matrix`` of the combined engine as people read it
-    (:func:`bearingload.reports.solve.matrix_table`); ``csv``: the output's csv carries it (a
-    pair's csv rows are its bearings')."""
+    (:func:`bearingload.reports.solve.matrix_table`); ``csv``: the stem of its csv columns
+    (``pair_stiffness_matrix`` for a pair's shaft)."""
     note = (
         f"{MATRIX_ENTRY}; the true tangent, not quite symmetric (its symmetric part: json "
-        "stiffness_matrix_symmetric); json: stiffness_matrix"
-        + (", csv: stiffness_matrix_11 ... _55." if csv else ".")
+        f"stiffness_matrix_symmetric); json: stiffness_matrix, csv: {csv}_11 ... _55."
     )
     return solve_matrix_table(matrix, title, note)
 
