@@ -16,6 +16,7 @@ from __future__ import annotations
 
 import math
 import re
+from typing import Any
 
 from bearingload.constants import INCH, KGF, LBF  # noqa: F401  (re-exported: units.KGF)
 
@@ -471,3 +472,17 @@ def parse_stiffness(text: str | float, exponent: float, *, parameter: str = "sti
     value = float(match.group(1))
     unit = _canonical(match.group(2))
     return value if unit == "" else value * stiffness_factor(unit, exponent, parameter=parameter)
+
+
+def turn_angle(value: Any, digits: int) -> Any:
+    """A turn angle [°] as a report rounds it to ``digits`` significant digits: 0 where that
+    gives 360 (an angle just below a turn, -1e-12° reduced to 359.999999999999°, is printed at
+    the turn's start, never as 360), else ``value``. The one rule of every format: json, csv, table
+    and markdown (:data:`bearingload.reports.render.TURN_KEYS`) and a title's cage angle.
+
+    >>> turn_angle(359.999999999999, 10), turn_angle(359.99, 6), turn_angle(359.9999999, 6)
+    (0.0, 359.99, 0.0)
+    """
+    if value is None or isinstance(value, (bool, str)) or not 355.0 <= value <= 365.0:
+        return value  # (nothing outside rounds to 360 at any digits)
+    return 0.0 if float(f"{float(value):.{digits}g}") == 360.0 else value

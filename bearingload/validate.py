@@ -3,6 +3,7 @@
 from __future__ import annotations
 
 import math
+import sys
 from collections.abc import Sequence
 from typing import Any
 
@@ -34,6 +35,9 @@ def numbers(name: str, value: object) -> np.ndarray:
         return np.array(number)
     if type(value) is int:
         raise InputError(name, "must be a finite number (got an integer beyond 1.8e308)")
+    masked = sys.modules.get("numpy.ma")  # (not imported at start-up: no masked array then)
+    if masked is not None and isinstance(value, masked.MaskedArray):
+        _refuse_masked(name, value)
     try:
         raw = np.asarray(value)
     except ValueError:  # lists of unequal lengths
@@ -58,6 +62,19 @@ def numbers(name: str, value: object) -> np.ndarray:
             element=element(raw, bad),
         ) from None
     return arr
+
+
+def _refuse_masked(name: str, value: np.ma.MaskedArray) -> None:
+    """Raise :class:`InputError` where a masked array (numpy.ma) has a masked element, naming
+    the first (``load[1]: masked``): numpy would read its hidden value as a number."""
+    hidden = np.ma.getmaskarray(value)
+    if not hidden.any():
+        return
+    where = ""
+    if hidden.size > 1:
+        index = np.unravel_index(int(np.flatnonzero(hidden)[0]), hidden.shape)
+        where = "[" + ", ".join(str(int(i)) for i in index) + "]"
+    raise InputError(name, "masked", way_out="give the numbers without a mask", element=where)
 
 
 def cage_angle(value: object, name: str = "cage_angle") -> np.ndarray:

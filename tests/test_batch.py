@@ -24,18 +24,18 @@ balls,load [kgf],stiffness,clearance,cage_angle
 """
 
 SMALL_CSV = """\
-row,method,balls,load [N],stiffness [N/mm^1.5],clearance [mm],cage_angle [°],exponent,q_max [N],k,K_Q,loaded_balls,load_zone [°],x [mm],y [mm],stiffness_radial [N/mm],approach_max [mm],valid
-2,exact,8,2941.995,46091.255,0.02,0.0,1.5,1640.74899,0.5576994489,2.230797796,3,85.14740553,0.1182137403,0.0,41498.22827,0.1082137403,True
-3,exact,12,5000.0,380000.0,-0.05,15.0,1.5,2379.275159,0.4758550318,2.855130191,12,180.0,0.009287385775,0.0,533484.305,0.03397092578,True
+row,method,balls,load [N],stiffness [N/mm^1.5],clearance [mm],cage_angle [°],exponent,q_max [N],k,K_Q,loaded_balls,load_zone [°],x [mm],y [mm],stiffness_radial [N/mm],approach_max [mm],valid,stiffness_matrix_11 [N/mm],stiffness_matrix_12 [N/mm],stiffness_matrix_13 [N/mm],stiffness_matrix_14 [N/rad],stiffness_matrix_15 [N/rad],stiffness_matrix_21 [N/mm],stiffness_matrix_22 [N/mm],stiffness_matrix_23 [N/mm],stiffness_matrix_24 [N/rad],stiffness_matrix_25 [N/rad],stiffness_matrix_31 [N/mm],stiffness_matrix_32 [N/mm],stiffness_matrix_33 [N/mm],stiffness_matrix_34 [N/rad],stiffness_matrix_35 [N/rad],stiffness_matrix_41 [N mm/mm],stiffness_matrix_42 [N mm/mm],stiffness_matrix_43 [N mm/mm],stiffness_matrix_44 [N mm/rad],stiffness_matrix_45 [N mm/rad],stiffness_matrix_51 [N mm/mm],stiffness_matrix_52 [N mm/mm],stiffness_matrix_53 [N mm/mm],stiffness_matrix_54 [N mm/rad],stiffness_matrix_55 [N mm/rad]
+2,exact,8,2941.995,46091.255,0.02,0.0,1.5,1640.74899,0.5576994489,2.230797796,3,85.14740553,0.1182137403,0.0,41498.22827,0.1082137403,True,41498.22827,0.0,,,,0.0,18755.05832,,,,,,,,,,,,,,,,,,
+3,exact,12,5000.0,380000.0,-0.05,15.0,1.5,2379.275159,0.4758550318,2.855130191,12,180.0,0.009287385775,0.0,533484.305,0.03397092578,True,533484.305,0.0,,,,0.0,538364.629,,,,,,,,,,,,,,,,,,
 """
 
 SMALL_MARKDOWN = """\
 ### 2 cases (row: the input file's row, the header is row 1)
 
-| row | method | balls | load [N] | stiffness [N/mm^1.5] | clearance [mm] | cage_angle [°] | exponent [-] | q_max [N] |    k [-] | K_Q [-] | loaded_balls | load_zone [°] |     x [mm] | y [mm] | stiffness_radial [N/mm] | approach_max [mm] | valid |
-|----:|:-------|------:|---------:|---------------------:|---------------:|---------------:|-------------:|----------:|---------:|--------:|-------------:|--------------:|-----------:|-------:|------------------------:|------------------:|:------|
-|   2 | exact  |     8 |  2941.99 |              46091.3 |      0.0200000 |              0 |      1.50000 |   1640.75 | 0.557699 | 2.23080 |            3 |       85.1474 |   0.118214 |      0 |                 41498.2 |          0.108214 | True  |
-|   3 | exact  |    12 |  5000.00 |               380000 |     -0.0500000 |        15.0000 |      1.50000 |   2379.28 | 0.475855 | 2.85513 |           12 |       180.000 | 0.00928739 |      0 |                  533484 |         0.0339709 | True  |
+| row | method | balls | load [N] | stiffness [N/mm^1.5] | clearance [mm] | cage_angle [°] | exponent [-] | q_max [N] |    k [-] | K_Q [-] | loaded_balls | load_zone [°] |     x [mm] | y [mm] | stiffness_radial [N/mm] | approach_max [mm] | valid | stiffness_matrix_11 [N/mm] | stiffness_matrix_12 [N/mm] | stiffness_matrix_13 [N/mm] | stiffness_matrix_14 [N/rad] | stiffness_matrix_15 [N/rad] | stiffness_matrix_21 [N/mm] | stiffness_matrix_22 [N/mm] | stiffness_matrix_23 [N/mm] | stiffness_matrix_24 [N/rad] | stiffness_matrix_25 [N/rad] | stiffness_matrix_31 [N/mm] | stiffness_matrix_32 [N/mm] | stiffness_matrix_33 [N/mm] | stiffness_matrix_34 [N/rad] | stiffness_matrix_35 [N/rad] | stiffness_matrix_41 [N mm/mm] | stiffness_matrix_42 [N mm/mm] | stiffness_matrix_43 [N mm/mm] | stiffness_matrix_44 [N mm/rad] | stiffness_matrix_45 [N mm/rad] | stiffness_matrix_51 [N mm/mm] | stiffness_matrix_52 [N mm/mm] | stiffness_matrix_53 [N mm/mm] | stiffness_matrix_54 [N mm/rad] | stiffness_matrix_55 [N mm/rad] |
+|----:|:-------|------:|---------:|---------------------:|---------------:|---------------:|-------------:|----------:|---------:|--------:|-------------:|--------------:|-----------:|-------:|------------------------:|------------------:|:------|---------------------------:|---------------------------:|---------------------------:|----------------------------:|----------------------------:|---------------------------:|---------------------------:|---------------------------:|----------------------------:|----------------------------:|---------------------------:|---------------------------:|---------------------------:|----------------------------:|----------------------------:|------------------------------:|------------------------------:|------------------------------:|-------------------------------:|-------------------------------:|------------------------------:|------------------------------:|------------------------------:|-------------------------------:|-------------------------------:|
+|   2 | exact  |     8 |  2941.99 |              46091.3 |      0.0200000 |              0 |      1.50000 |   1640.75 | 0.557699 | 2.23080 |            3 |       85.1474 |   0.118214 |      0 |                 41498.2 |          0.108214 | True  |                    41498.2 |                          0 |                            |                             |                             |                          0 |                    18755.1 |                            |                             |                             |                            |                            |                            |                             |                             |                               |                               |                               |                                |                                |                               |                               |                               |                                |                                |
+|   3 | exact  |    12 |  5000.00 |               380000 |     -0.0500000 |        15.0000 |      1.50000 |   2379.28 | 0.475855 | 2.85513 |           12 |       180.000 | 0.00928739 |      0 |                  533484 |         0.0339709 | True  |                     533484 |                          0 |                            |                             |                             |                          0 |                     538365 |                            |                             |                             |                            |                            |                            |                             |                             |                               |                               |                               |                                |                                |                               |                               |                               |                                |                                |
 """
 
 
@@ -84,11 +84,12 @@ def test_json_exact(small):
     assert doc["cases"][1]["cage_angle"] == 15.0
     assert doc["skipped"] == []
     assert doc["units"]["q_max"] == "N" and doc["units"]["stiffness"] == "N/mm^1.5"
-    # the same numbers as the csv, key for key
+    # the same numbers as the csv, key for key (null as an empty cell)
     rows = list(csv.DictReader(io.StringIO(SMALL_CSV)))
     for case, row in zip(doc["cases"], rows, strict=True):
         for head, text in row.items():
-            assert _machine_text(case[head.split(" [")[0]]) == text
+            value = case[head.split(" [")[0]]
+            assert ("" if value is None else _machine_text(value)) == text
 
 
 def test_units_in_headers_and_in_values(tmp_path):

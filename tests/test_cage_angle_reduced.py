@@ -2,7 +2,9 @@
 (-1e-320°, which ``np.mod`` takes to 360; -1e-13°, which it takes to 359.9999999999999, printed
 360) is 0°, in every engine and front door."""
 
+import csv
 import json
+import re
 
 import numpy as np
 import pytest
@@ -55,6 +57,49 @@ def test_solve_echoes_a_cage_angle_just_below_0_as_0(args, angle):
     assert balls and all(a == 0.0 for a in balls)
 
 
+@pytest.mark.parametrize(
+    "args",
+    [
+        ("6205", "-F", "1kN"),
+        ("6205", "-F", "1kN", "-A", "10N"),
+        ("NU206", "-F", "5kN"),
+        ("7205BDB", "-F", "1kN", "-A", "10N", "--preload", "100N"),
+    ],
+)
+@pytest.mark.parametrize("angle", ["-1e-12", "-1e-9"])
+def test_a_turn_angle_that_rounds_to_360_is_printed_0_in_every_format(args, angle):
+    """-1e-12° reduces to 359.999999999999° (kept: not within rounding of 0), which 10 digits
+    (json, csv) and 6 (table, markdown) round to 360: a turn angle is printed 0 there."""
+
+    def out(*more):
+        return invoke("solve", *args, f"--cage-angle={angle}", *more).stdout
+
+    doc = json.loads(out("--format", "json"))
+    docs = doc["cases"] + [b for c in doc["cases"] for b in c.get("bearings", [])]
+    assert all(d["cage_angle"] == 0.0 for d in docs)
+    assert all(d["ball_angles"][0] == 0.0 for d in docs if "ball_angles" in d)
+    for fmt in ("table", "markdown"):
+        text = out("--format", fmt)
+        assert "cage angle 0°" in text and "cage angle 360" not in text
+        assert not re.search(r"^\|? *1 +\|? *360", text, re.M), text
+    if args[0] != "7205BDB":  # (a pair's csv is its bearings' rows, without ball angles)
+        rows = list(csv.DictReader(out("--format", "csv", "--per-ball").splitlines()))
+        assert rows[0]["cage_angle [°]"] == rows[0]["ball_angles [°]"] == "0.0"
+
+
+def test_only_a_turn_angle_is_printed_0_where_it_rounds_to_360():
+    """The cage angle and the ball angles are turn angles; a load zone's half-angle or a
+    contact angle is not (json, csv and the human formats alike)."""
+    from bearingload.reports.render import Column, Table, render
+
+    keys = ("cage_angle", "ball_angles", "load_zone", "contact_angles")
+    table = Table("t", [Column(k, k, "°", 6) for k in keys], [dict.fromkeys(keys, 359.9999999999)])
+    assert render([table], "csv").splitlines()[1] == "0.0,0.0,360.0,360.0"
+    assert render([table], "table").splitlines()[4].split() == ["0", "0", "360.000", "360.000"]
+    document = json.loads(render([], "json", document=dict.fromkeys(keys, [359.9999999999])))
+    assert document == dict(zip(keys, [[0.0], [0.0], [360.0], [360.0]], strict=True))
+
+
 def test_batch_echoes_a_cage_angle_just_below_0_as_0(tmp_path):
     path = tmp_path / "cases.csv"
     path.write_text(
@@ -90,6 +135,11 @@ def test_the_tables_take_the_cage_angle_within_one_turn():
         assert '"cage_angle": -0.0' not in doc.stdout and '"cage_angle": 0.0' in doc.stdout
     head = invoke("table", "k", "--cage-angle=-10", "--z-max", "3").stdout.splitlines()[0]
     assert "cage angle 350°" in head
+    # -1e-12: 359.999999999999°, printed at 6 and 10 digits as 0 (a turn angle)
+    head = invoke("table", "k", "--cage-angle=-1e-12", "--z-max", "3").stdout.splitlines()[0]
+    assert "cage angle 0°" in head
+    doc = invoke("table", "k", "--cage-angle=-1e-12", "--z-max", "3", "--format", "json")
+    assert '"cage_angle": 0.0' in doc.stdout and "360" not in doc.stdout
 
 
 @pytest.mark.parametrize(

@@ -233,6 +233,42 @@ def test_the_stiffness_matrix_is_in_every_format_of_solve(capsys):
     assert "tangent stiffness matrix of the shaft" in out
 
 
+def test_a_pairs_stiffness_matrices_are_in_every_format_of_solve(capsys):
+    """A pair's json gives the shaft's matrix and each bearing's: csv carries them too, the
+    shaft's as pair_stiffness_matrix_ij on both rows, each bearing's as stiffness_matrix_ij
+    on its own row; the table and markdown show the three; sweep's json rows (whose csv rows
+    are solve's) give them as solve's json does."""
+    import csv as csv_module
+    import io
+    import json as json_module
+    import re
+
+    from .cli_helpers import run_entry
+
+    case = ("solve", "7205BDB", "-F", "1kN", "-A", "300N")
+    doc = json_module.loads(run_entry(capsys, *case, "--format", "json")[1])["cases"][0]
+    rows = list(csv_module.DictReader(io.StringIO(run_entry(capsys, *case, "--format", "csv")[1])))
+    assert len(rows) == 2
+    for n, row in enumerate(rows):
+        cells = {re.sub(r" \[.*\]$", "", k): v for k, v in row.items()}
+        for i in range(5):
+            for j in range(5):
+                shaft = cells[f"pair_stiffness_matrix_{i + 1}{j + 1}"]
+                own = cells[f"stiffness_matrix_{i + 1}{j + 1}"]
+                assert float(shaft) == doc["stiffness_matrix"][i][j]
+                assert float(own) == doc["bearings"][n]["stiffness_matrix"][i][j]
+    for fmt in ("table", "markdown"):
+        out = run_entry(capsys, *case, "--format", fmt)[1]
+        assert out.count("tangent stiffness matrix") == 3
+        assert "of the shaft" in out and "of bearing 1" in out and "of bearing 2" in out
+    sweep = ("sweep", "7205BDB", "-F", "1kN", "-A", "300N", "--steps", "2", "--format", "json")
+    first = json_module.loads(run_entry(capsys, *sweep)[1])["rows"][0]
+    assert first["stiffness_matrix"] == doc["stiffness_matrix"]
+    assert [b["stiffness_matrix"] for b in first["bearings"]] == [
+        b["stiffness_matrix"] for b in doc["bearings"]
+    ]
+
+
 def test_radial_stiffness_is_one_quantity_in_both_engines():
     """stiffness_radial is dF_r/dx with F_y held at zero in the radial engine and in the 3-D
     one: off the symmetric cage (K_xy != 0) the same case with '-A 0' gives the same number

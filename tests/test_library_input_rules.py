@@ -141,3 +141,38 @@ def test_a_valid_input_never_looks_for_a_bad_element(monkeypatch):
         validate.at_least("load", value, 0.0, "N")
     validate.conformity("f_i", [0.52, 0.53])
     validate.ball_count([8, 9])
+
+
+@pytest.mark.parametrize(
+    ("call", "text"),
+    [
+        (
+            lambda: bearingload.solve(8, np.ma.masked_array([1000, 2000], [0, 1]), 1e5),
+            "load[1]: masked; give the numbers without a mask",
+        ),
+        (
+            lambda: bearingload.solve_combined(
+                9, np.ma.masked_array([[1e3, 2e3], [3e3, 4e3]], [[0, 0], [1, 0]]), 500.0, **RING
+            ),
+            "radial_load[1, 0]: masked; give the numbers without a mask",
+        ),
+        (
+            lambda: bearingload.solve(8, 1000.0, np.ma.masked),
+            "stiffness: masked; give the numbers without a mask",
+        ),
+    ],
+    ids=["radial", "combined, 2-D", "one masked number"],
+)
+def test_a_masked_element_is_refused_naming_it(call, text):
+    """numpy reads a masked array's hidden values as numbers (2000 N solved as given): a
+    masked element is refused, the first named by its index, not used."""
+    with pytest.raises(InputError) as info:
+        call()
+    assert str(info.value) == text
+
+
+def test_a_masked_array_without_masked_elements_is_its_numbers():
+    given = np.ma.masked_array([1000.0, 2000.0], [0, 0])
+    assert list(bearingload.solve(8, given, 1e5).q_max) == list(
+        bearingload.solve(8, np.array([1000.0, 2000.0]), 1e5).q_max
+    )

@@ -63,9 +63,36 @@ def test_solve_csv_carries_the_keys_of_its_json(command):
     # csv writes json's 5x5 stiffness_matrix entry by entry: stiffness_matrix_ij is [i-1][j-1]
     entries = [k for k in csv_keys if re.fullmatch(r"stiffness_matrix_\d\d", k)]
     assert set(csv_keys) - set(entries) == json_keys
+    has_matrix = any("stiffness_matrix" in case for case in document["cases"])
+    assert len(entries) == (25 if has_matrix else 0)
     combined = "misalignment" in document["cases"][0]
-    assert len(entries) == (25 if combined else 0)
     assert ("misalignment" if combined else "epsilon") in csv_keys  # null in the JSON
+
+
+@pytest.mark.parametrize("command", SOLVES)
+def test_solve_csv_table_and_markdown_carry_the_stiffness_matrix_of_its_json(command):
+    """Every output gives json's ``stiffness_matrix``: csv entry by entry,
+    ``stiffness_matrix_ij`` = json's [i-1][j-1], null (what the radial engine does not
+    determine) an empty cell; table and markdown a 'tangent stiffness matrix' per case that
+    has one, null as '-'; a case without one (an approximate method) blank cells."""
+    document = json.loads(_out(command + " --format json"))
+    rows = list(csv.DictReader(_out(command + " --format csv").splitlines()))
+    assert len(rows) == len(document["cases"])
+    matrices = [case.get("stiffness_matrix") for case in document["cases"]]
+    for matrix, row in zip(matrices, rows, strict=True):
+        cells = {re.sub(r" \[.*\]$", "", k): v for k, v in row.items()}
+        for i in range(5):
+            for j in range(5):
+                value = None if matrix is None else matrix[i][j]
+                cell = cells[f"stiffness_matrix_{i + 1}{j + 1}"]
+                assert cell == "" if value is None else float(cell) == value, (i, j)
+    shown = sum(m is not None for m in matrices)
+    for fmt in ("table", "markdown"):
+        text = _out(f"{command} --format {fmt}")
+        assert text.count("tangent stiffness matrix") == shown, fmt
+    if any(m is not None and m[2][2] is None for m in matrices):  # the radial engine's
+        block = _out(command).split("tangent stiffness matrix")[1]
+        assert re.search(r"^F_a \[N\] +- +- +- +- +-$", block, re.M), block
 
 
 def test_solve_per_ball_csv_names_the_same_inputs_for_every_case():

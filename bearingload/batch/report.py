@@ -31,7 +31,7 @@ COMBINED_KEYS = (*_INPUTS, *(k for k in COMBINED_ANSWERS if k not in _INPUTS), *
 #: The radial output columns: solve's, with the ball dynamics' density after the speed.
 _RADIAL = [k for k in REPORT_KEYS if k != "relative_error"]
 _RADIAL.insert(_RADIAL.index("speed") + 1, "ball_density")
-RADIAL_KEYS = (*INPUT_KEYS, *_RADIAL, "valid")
+RADIAL_KEYS = (*INPUT_KEYS, *_RADIAL, "valid", *MATRIX_KEYS)
 _VISCOSITY = ("viscosity", *OIL_INPUTS)  # the oil gives the viscosity
 _LIFE = (BEARING_COLUMNS,)  # the lives are a bearing's
 _BY_SPEED = (
@@ -109,7 +109,7 @@ def pair_columns(written: set[str] | None) -> list[Column]:
         k for k in (*PAIR_SERVICE, *OWN_KEYS) if written is None or k in written or k not in NEEDS
     ]
     own = [k for k in OWN_KEYS if k in kept and k not in ("moment_cross", *RESULT_KEYS)]
-    return [column("row"), *csv_columns([k for k in PAIR_SERVICE if k in kept], own)]
+    return [column("row"), *csv_columns([k for k in PAIR_SERVICE if k in kept], own, True)]
 
 
 def pair_rows(

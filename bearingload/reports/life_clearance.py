@@ -26,6 +26,7 @@ from bearingload.studies.life_clearance import (
     LifeAgainstClearance,
     life_vs_clearance,
 )
+from bearingload.units import turn_angle
 
 #: The row quantities and their short headers in the human table.
 ROW_KEYS = (
@@ -151,7 +152,7 @@ def title(t: LifeAgainstClearance) -> str:
     return (
         f"L10r against radial internal clearance: {who}, z = {c['balls']}, "
         f"F_r = {t.load:.6g} N, F_a = {t.axial_load:.6g} N{tilt}, {t.rotating} ring rotating, "
-        f"cage angle {t.cage_angle:.6g}°, C_r = {t.dynamic_rating:.6g} N"
+        f"cage angle {turn_angle(t.cage_angle, 6):.6g}°, C_r = {t.dynamic_rating:.6g} N"
     )
 
 

@@ -15,7 +15,7 @@ from bearingload.reports.combined import (
     ball_values,
     contact_angle_shown,
 )
-from bearingload.reports.quantities import SERVICE_KEYS, column, units
+from bearingload.reports.quantities import MATRIX_UNITS, SERVICE_KEYS, column, units
 from bearingload.reports.render import Column, Table, render
 from bearingload.reports.solve import (
     blank,
@@ -27,7 +27,8 @@ from bearingload.reports.solve import (
 )
 from bearingload.studies.bearing_pair import ARRANGEMENT_NAMES, PairCase, PairLives
 from bearingload.studies.combined_bearing import combined_values
-from bearingload.studies.matrix import MATRIX_KEYS
+from bearingload.studies.matrix import MATRIX_KEYS, matrix_columns
+from bearingload.units import turn_angle
 
 #: The pair's inputs (every row of the csv, the JSON case).
 PAIR_INPUTS = ("bearing", "arrangement", "balls", "load", "axial_load", "moment", "moment_cross",
@@ -125,7 +126,19 @@ def pairs_document(
     keys = [*head, *rows[0], *(k for r in rows[0]["bearings"] for k in r)]
     doc = {**head, "model": model} | ({} if steps is None else {"steps": steps})
     doc |= {"rows": rows} | ({} if summary is None else {"summary": summary})
-    return doc | {"units": units(list(dict.fromkeys(keys)), 1.5), "warnings": list(warnings)}
+    matrix = {"stiffness_matrix": MATRIX_UNITS} if "stiffness_matrix" in keys else {}
+    doc |= {"units": units(list(dict.fromkeys(keys)), 1.5) | matrix}
+    return doc | {"warnings": list(warnings)}
+
+
+def with_matrices(c: PairCase, row: dict[str, Any]) -> dict[str, Any]:
+    """A json row of :func:`pairs_document` with the shaft's ``stiffness_matrix`` and each of
+    its ``bearings``', as solve's json gives them (csv: :func:`csv_columns`, ``matrix``)."""
+    bearings = [
+        r | {"stiffness_matrix": b.result.stiffness_matrix.tolist()}
+        for r, b in zip(row["bearings"], c.bearings, strict=True)
+    ]
+    return row | {"stiffness_matrix": c.result.stiffness_matrix.tolist(), "bearings": bearings}
 
 
 #: The note of a pair's modified lives.
@@ -210,8 +223,16 @@ def pair_report(
 
     notes += [] if c.preload_class is None else [f"Preload: {c.preload_class.source}."]
     summary = Table(_title(pair, c.preload_class), columns, rows, notes + service_notes(service))
-    shaft = matrix_table(c.result.stiffness_matrix, "tangent stiffness matrix of the shaft", False)
-    tables += [summary, shaft, _balls_table(c)]
+    shaft = c.result.stiffness_matrix
+    tables += [
+        summary,
+        matrix_table(shaft, "tangent stiffness matrix of the shaft", "pair_stiffness_matrix"),
+    ]
+    tables += [
+        matrix_table(b.result.stiffness_matrix, f"tangent stiffness matrix of bearing {n}")
+        for n, b in enumerate(c.bearings, start=1)
+    ]
+    tables.append(_balls_table(c))
     return render(tables, fmt)
 
 
@@ -230,19 +251,19 @@ def _title(p: dict[str, Any], setting: Preload | None = None) -> str:
         f"{who}pair {p['arrangement']} ({ARRANGEMENT_NAMES[p['arrangement']]}), z = "
         f"{p['balls']} per bearing, contact angle {p['contact_angle']:.6g}°, F_r = "
         f"{p['load']:.6g} N, F_a = {p['axial_load']:.6g} N, preload {preload}, width "
-        f"B = {p['width']:.6g} mm, cage angle {p['cage_angle']:.6g}°, {p['rotating']} ring rotating"
+        f"B = {p['width']:.6g} mm, cage angle {turn_angle(p['cage_angle'], 6):.6g}°, {p['rotating']} ring rotating"
     )
 
 
 def _balls_table(c: PairCase) -> Table:
-    columns = [column("ball"), Column("angle", "angle", "°", 6)]
+    columns = [column("ball"), Column("ball_angles", "angle", "°", 6)]
     for k in (1, 2):
         columns += [Column(f"a{k}", f"contact angle, bearing {k}", "°", 6),
                     Column(f"q{k}", f"load Q, bearing {k}", "N", 6)]  # fmt: skip
     b1, b2 = (b.result for b in c.bearings)
     rows = []
     for j in range(len(b1.ball_loads)):
-        row: dict[str, Any] = {"ball": j + 1, "angle": float(b1.ball_angles[j])}
+        row: dict[str, Any] = {"ball": j + 1, "ball_angles": float(b1.ball_angles[j])}
         for k, b in ((1, b1), (2, b2)):
             q = float(b.ball_loads[j])
             row |= {f"a{k}": contact_angle_shown(float(b.contact_angles[j]), q), f"q{k}": q}
@@ -285,7 +306,8 @@ def _csv_table(c: PairCase, pair: dict[str, Any], records: list[dict[str, Any]],
     from bearingload.reports.combined import PER_BALL_KEYS
 
     service = tuple(k for k in PAIR_SERVICE if k in pair)
-    cols = csv_columns(service, [k for k in OWN_KEYS if any(k in r for r in records)])
+    own = [k for k in OWN_KEYS if any(k in r for r in records)]
+    cols = csv_columns(service, own, matrix=not per_ball)
     if per_ball:
         cols += [column(k) for k in PER_BALL_KEYS]
     rows = csv_rows(c, pair, records, [col.key for col in cols], per_ball)
@@ -316,14 +338,17 @@ def _own_keys() -> tuple[str, ...]:
 OWN_KEYS = _own_keys()
 
 
-def csv_columns(service: Sequence[str], own: Sequence[str]) -> list[Column]:
+def csv_columns(service: Sequence[str], own: Sequence[str], matrix: bool = False) -> list[Column]:
     """The csv columns of a pair: its inputs, the loads on the shaft, its answers and the
     ``service`` values of :data:`PAIR_SERVICE` as ``pair_...``, ``bearing_number``, then each
-    bearing's ``own`` keys (a single bearing's). ``batch`` writes these for a file of pairs."""
-    answers = [f"pair_{k}" for k in (*PAIR_ANSWERS, *service)]
+    bearing's ``own`` keys (a single bearing's); ``matrix``: the shaft's stiffness matrix after
+    the pair's answers (``pair_stiffness_matrix_11`` ...), each bearing's after its own keys (as
+    solve's json gives them). ``batch`` writes these for a file of pairs."""
+    matrices = MATRIX_KEYS if matrix else ()
+    answers = [f"pair_{k}" for k in (*PAIR_ANSWERS, *service, *matrices)]
     cols = [column(k, 1.5) for k in CSV_INPUTS]  # ball bearings: N/mm^1.5, as one bearing's
     cols += [_pair_column(k) for k in (*CSV_APPLIED, *answers)] + [column("bearing_number")]
-    return cols + [column(k, 1.5) for k in own]
+    return cols + [column(k, 1.5) for k in (*own, *matrices)]
 
 
 def csv_rows(c: PairCase, pair: dict[str, Any], records: list[dict[str, Any]],
@@ -331,6 +356,9 @@ def csv_rows(c: PairCase, pair: dict[str, Any], records: list[dict[str, Any]],
     """The csv rows of a pair under ``keys`` (:func:`csv_columns`, with the per-ball keys when
     ``per_ball``): one per bearing (``per_ball``: per ball of each bearing), '' where none."""
     rows = []
+    if MATRIX_KEYS[0] in keys:  # the matrices of csv_columns(matrix=True)
+        pair = pair | _matrix_entries(c.result)
+        records = [r | _matrix_entries(b.result) for r, b in zip(records, c.bearings, strict=True)]
     for n, (b, rec) in enumerate(zip(c.bearings, records, strict=True), start=1):
         base = {k: pair.get(k[5:]) if k.startswith("pair_") else rec.get(k) for k in keys}
         base |= {k: pair.get(k) for k in CSV_INPUTS} | {"bearing_number": n}
@@ -339,6 +367,11 @@ def csv_rows(c: PairCase, pair: dict[str, Any], records: list[dict[str, Any]],
         else:
             rows.append(base)
     return [blank(r, keys) for r in rows]
+
+
+def _matrix_entries(result: Any) -> dict[str, float]:
+    """The 25 entries of a result's ``stiffness_matrix`` under :data:`MATRIX_KEYS`."""
+    return {k: float(v[0]) for k, v in matrix_columns(result).items()}
 
 
 def _pair_column(key: str) -> Column:
@@ -351,7 +384,7 @@ def pairs_csv(title: str, cases: Sequence[PairCase], records: list[Any]) -> Tabl
     """solve's csv of each pair of ``cases`` (:func:`pair_records` of each in ``records``), one
     table: the rows of a pair's sweep (cage positions) and table life (preloads)."""
     own = [k for k in OWN_KEYS if any(k in r for _, rs in records for r in rs)]
-    cols = csv_columns(tuple(k for k in PAIR_SERVICE if k in records[0][0]), own)
+    cols = csv_columns(tuple(k for k in PAIR_SERVICE if k in records[0][0]), own, matrix=True)
     keys = [c.key for c in cols]
     rows = []
     for c, (pair, recs) in zip(cases, records, strict=True):

@@ -15,6 +15,7 @@ from bearingload.reports.pair import (
     pair_records,
     pairs_csv,
     pairs_document,
+    with_matrices,
 )
 from bearingload.reports.quantities import column
 from bearingload.reports.render import Table, render
@@ -106,9 +107,9 @@ def _speed_notes(t: LifeAgainstPreload, records: list[Any], speed: float | None)
 
 def _json(t: LifeAgainstPreload, records: list[Any], speed: float | None) -> dict[str, Any]:
     rows = []
-    for pair, recs in records:
+    for c, (pair, recs) in zip(t.cases, records, strict=True):
         answers = {k: pair[k] for k in ("preload", *PAIR_ANSWERS)}
         service = {k: v for k, v in pair.items() if k in PAIR_SERVICE}  # solve's, at a speed
-        rows.append(answers | service | {"bearings": recs})
+        rows.append(with_matrices(c, answers | service | {"bearings": recs}))
     model = PAIR_MODEL + model_end(t.model, speed is not None)
     return pairs_document(records, rows, "preload", model, t.warnings)

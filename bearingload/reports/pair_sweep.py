@@ -18,6 +18,7 @@ from bearingload.reports.pair import (
     pair_records,
     pairs_csv,
     pairs_document,
+    with_matrices,
 )
 from bearingload.reports.quantities import QUANTITIES, Quantity, column
 from bearingload.reports.render import Table, render
@@ -150,7 +151,10 @@ def pair_sweep_json(s: PairSweep, lives: Sequence[PairLives]) -> dict[str, Any]:
     solve's json at each position and ``bearings``), ``summary``, ``units``, ``warnings``."""
     records = [pair_records(c, life) for c, life in zip(s.cases, lives, strict=True)]
     answers = ("cage_angle", *PAIR_ANSWERS, *PAIR_SERVICE)
-    rows = [{k: p[k] for k in answers if k in p} | {"bearings": recs} for p, recs in records]
+    rows = [
+        with_matrices(c, {k: p[k] for k in answers if k in p} | {"bearings": recs})
+        for c, (p, recs) in zip(s.cases, records, strict=True)
+    ]
     summary: dict[str, Any] = {"bearings": [{}, {}]}
     for _, q, k in _entries(s):
         sp = s.spread(q.key, k)

@@ -15,6 +15,7 @@ from collections.abc import Sequence
 from typing import Any
 
 from bearingload.lazy_dataclass import dataclass
+from bearingload.units import turn_angle
 
 FORMATS = ("table", "csv", "markdown", "json")
 MACHINE_DIGITS = 10
@@ -61,6 +62,12 @@ class Table:
     rows: Sequence[dict[str, Any]]
     notes: Sequence[str] = ()
     conditions: Sequence[tuple[Column, Any]] = ()
+
+
+#: The keys of turn angles [°], each reduced to one turn [0, 360): the cage angle and each
+#: ball's angle from the load line (not a contact angle or the load zone's half-angle), which
+#: every format prints by :func:`bearingload.units.turn_angle`.
+TURN_KEYS = frozenset({"cage_angle", "ball_angles"})
 
 
 def machine_number(value: Any) -> Any:
@@ -119,7 +126,7 @@ def render(tables: Sequence[Table], fmt: str, *, document: dict[str, Any] | None
         if fmt == "csv":
             blocks.append(_csv(t))
             continue
-        cells = [[_human(c.shown(r[c.key]), c.digits) for c in t.columns] for r in t.rows]
+        cells = [[_human(_shown(c, r[c.key]), c.digits) for c in t.columns] for r in t.rows]
         headers = [c.label() for c in t.columns]
         align = [c.align for c in t.columns]
         if fmt == "markdown":
@@ -132,6 +139,15 @@ def render(tables: Sequence[Table], fmt: str, *, document: dict[str, Any] | None
                 text += "\n\n" + "\n".join(t.notes)
         blocks.append(text)
     return "\n\n".join(blocks) + "\n"
+
+
+def _shown(column: Column, value: Any) -> Any:
+    """A cell as the human formats show it (:meth:`Column.shown`), a turn angle by
+    :func:`turn_angle` at the column's digits."""
+    value = column.shown(value)
+    if column.key in TURN_KEYS and column.digits is not None:
+        return turn_angle(value, column.digits)
+    return value
 
 
 def _grid(cells: list[list[str]], headers: list[str], align: list[str], *, markdown: bool) -> str:
@@ -214,14 +230,16 @@ def plain_tree(obj: Any) -> Any:
     return obj
 
 
-def _machine_tree(obj: Any) -> Any:
+def _machine_tree(obj: Any, turn: bool = False) -> Any:
+    """A document as json writes it, the numbers by :func:`machine_number`; ``turn``: the
+    numbers of a key of :data:`TURN_KEYS` (and of its lists), by :func:`turn_angle` too."""
     if isinstance(obj, dict):
-        return {k: _machine_tree(v) for k, v in obj.items()}
+        return {k: _machine_tree(v, k in TURN_KEYS) for k, v in obj.items()}
     if isinstance(obj, (list, tuple)):
-        return [_machine_tree(v) for v in obj]
+        return [_machine_tree(v, turn) for v in obj]
     if hasattr(obj, "tolist") and getattr(obj, "ndim", 0) > 0:
-        return [_machine_tree(v) for v in obj.tolist()]
-    return machine_number(obj)
+        return [_machine_tree(v, turn) for v in obj.tolist()]
+    return machine_number(turn_angle(obj, MACHINE_DIGITS) if turn else obj)
 
 
 def csv_header(columns: Sequence[Column]) -> str:
@@ -255,6 +273,11 @@ def _column_cells(key: str, vals: Any) -> list[str]:
     """The cells of one column: floats by :func:`number_text`, each distinct other value once."""
     items = vals.tolist() if hasattr(vals, "tolist") else vals
     kind = getattr(getattr(vals, "dtype", None), "kind", "")
+    if key in TURN_KEYS:
+        import numpy as np
+
+        items = [turn_angle(v, MACHINE_DIGITS) for v in items]
+        vals = np.asarray(items, dtype=float) if kind == "f" else items
     try:
         if kind == "f":
             import numpy as np

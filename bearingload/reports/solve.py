@@ -28,6 +28,8 @@ from bearingload.studies.loaded_bearing import (
     collect_warnings,
     with_relative_errors,
 )
+from bearingload.studies.matrix import MATRIX_COLUMNS, MATRIX_KEYS, MATRIX_ROWS
+from bearingload.units import turn_angle
 
 #: Inputs of a case (the csv columns that say which case a row is).
 INPUT_KEYS = (
@@ -103,6 +105,7 @@ def solve_report(
 
         tables.append(geometry_table(cases[0].bearing))
     tables.append(_summary(cases, records, service_notes(service)))
+    tables += _matrix_tables(cases, records)
     if per_ball or any(c.result.method == "exact" for c in cases):
         tables.append(_balls_human(cases, records))
     return render([for_elements(t, exponent) for t in tables], fmt)  # rollers: 'roller loads'
@@ -137,7 +140,7 @@ def given_keys(records: Sequence[dict[str, Any]], keys: Sequence[str]) -> list[s
 
 
 def _case_table(records: Sequence[dict[str, Any]]) -> Table:
-    keys = given_keys(records, INPUT_KEYS + REPORT_KEYS + ("valid",))
+    keys = given_keys(records, INPUT_KEYS + REPORT_KEYS + ("valid",) + MATRIX_KEYS)
     exponent = records[0]["exponent"]
     return Table("cases", [column(k, exponent) for k in keys], [blank(r, keys) for r in records])
 
@@ -272,7 +275,7 @@ def _title(cases: Sequence[LoadedCase], records: Sequence[dict[str, Any]]) -> st
     )
     return (
         f"{who}z = {r['balls']}, F_r = {r['load']:.6g} N ({r['load'] / 9.80665:.6g} kgf), "
-        f"K = {r['stiffness']:.6g} N/mm^{m:g}, {clear}, cage angle {r['cage_angle']:.6g}°, "
+        f"K = {r['stiffness']:.6g} N/mm^{m:g}, {clear}, cage angle {turn_angle(r['cage_angle'], 6):.6g}°, "
         f"m = {m:.6g}"
     )
 
@@ -379,7 +382,7 @@ def balls_table(
     ``heads``) their contact angles and loads side by side."""
     one = len(per) == 1
     keys = [k for k in BALL_COLUMNS if k in per[0][0] and (one or BALL_COLUMNS[k][1])]
-    columns = [column("ball"), Column("angle", "angle", "°", 6)]
+    columns = [column("ball"), Column("ball_angles", "angle", "°", 6)]
     for k in keys:
         header, several, unit = BALL_COLUMNS[k]
         if one:
@@ -391,9 +394,54 @@ def balls_table(
     rows = []
     for j, ball in enumerate(per[0]):
         side = ball if one else {f"{k}{i}": b[j][k] for k in keys for i, b in enumerate(per)}
-        rows.append({"ball": j + 1, "angle": ball["angle"]} | side)
+        rows.append({"ball": j + 1, "ball_angles": ball["angle"]} | side)
     title = "Ball loads (ball 1 at the cage angle; angles from the load line)"
     return Table(title, columns, rows, notes)
+
+
+#: The first words of the note under every stiffness matrix table (:func:`matrix_table`).
+MATRIX_ENTRY = (
+    "Entry: the change of the row's force or moment per unit of the column's motion "
+    f"({MATRIX_UNITS})"
+)
+#: The note under the radial engine's stiffness matrix table.
+RADIAL_MATRIX_NOTE = (
+    f"{MATRIX_ENTRY}; '-': not determined: the radial engine holds the ring axially and "
+    "untilted (a deep-groove ball bearing solved with a load option, -A 0 too, gives all 25); "
+    "json: stiffness_matrix, csv: stiffness_matrix_11 ... _55."
+)
+
+
+def matrix_table(matrix: Any, title: str, note: str) -> Table:
+    """A 5x5 ``stiffness_matrix`` as people read it: a row per force or moment, a column per
+    displacement or tilt, each entry d(row)/d(column) in the units the row and column name
+    ('-' where it is None: not determined), under ``note``."""
+    columns = [Column("row", "", align="left")]
+    columns += [Column(m, f"d/d({m}) [1/{u}]", "", 6) for m, u in MATRIX_COLUMNS]
+    moves = [m for m, _ in MATRIX_COLUMNS]
+    rows = []
+    for (force, unit), row in zip(MATRIX_ROWS, matrix, strict=True):
+        cells: dict[str, Any] = {"row": f"{force} [{unit}]"}
+        cells |= {m: "-" if v is None else float(v) for m, v in zip(moves, row, strict=True)}
+        rows.append(cells)
+    return Table(title, columns, rows, [note])
+
+
+def _matrix_tables(cases: Sequence[LoadedCase], records: Sequence[dict[str, Any]]) -> list[Table]:
+    """The stiffness matrix of each case of the exact model (the only one that gives it),
+    headed by the case where there are several."""
+    from bearingload.studies.matrix import radial_matrix
+
+    several = len(records) > 1
+    return [
+        matrix_table(
+            radial_matrix(c.result.model.stiffness_matrix),
+            "tangent stiffness matrix" + (f" ({_heading(r)})" if several else ""),
+            RADIAL_MATRIX_NOTE,
+        )
+        for c, r in zip(cases, records, strict=True)
+        if c.result.method == "exact"
+    ]
 
 
 def _matrix_units(keys: Sequence[str]) -> dict[str, str]:
@@ -412,7 +460,7 @@ def _document(
     said = case_warnings([c.warnings for c in cases], service)
     docs: list[dict[str, Any]] = []
     for c, r in zip(cases, records, strict=True):
-        doc = {k: v for k, v in r.items()}
+        doc = {k: v for k, v in r.items() if k not in MATRIX_KEYS}  # json: the matrix whole
         doc["model"] = METHODS[r["method"]].title
         doc["ignores"] = list(METHODS[r["method"]].ignores)
         if c.result.method == "exact":

@@ -292,7 +292,19 @@ def case_columns(lc: LoadedCase) -> dict[str, Any]:
         "reference_rating_life": col(lc.reference_rating_life),
         "rotating": lc.rotating,
         **{k: col(v) for k, v in result_fields(b).items()},
+        **_matrix_columns(r),
     }
+
+
+def _matrix_columns(r: Result) -> dict[str, Any]:
+    """The 5x5 ``stiffness_matrix`` of the exact model under its csv columns
+    (:func:`bearingload.studies.matrix.radial_matrix_columns`); none for the other methods,
+    which give no matrix."""
+    if r.method != "exact":
+        return {}
+    from bearingload.studies.matrix import radial_matrix_columns
+
+    return radial_matrix_columns(r.model.stiffness_matrix)
 
 
 def with_relative_errors(records: list[dict[str, Any]]) -> list[dict[str, Any]]:

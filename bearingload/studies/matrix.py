@@ -46,3 +46,18 @@ def radial_matrix(k: Any) -> list[list[float | None]]:
     return [
         [float(block[i, j]) if i < 2 and j < 2 else None for j in range(size)] for i in range(size)
     ]
+
+
+def radial_matrix_columns(k: Any) -> dict[str, Any]:
+    """The entries of :func:`radial_matrix` under :data:`MATRIX_KEYS` (csv's and batch's
+    columns, as :func:`matrix_columns` gives a combined case's): the radial engine's 2x2 block
+    ``k`` (shape (..., 2, 2)) an array over the cases each, the undetermined entries ``None``."""
+    import numpy as np
+
+    m = np.asarray(k, dtype=float).reshape(-1, 2, 2)
+    size = len(MATRIX_ROWS)
+    return {
+        matrix_key(i, j): m[:, i, j] if i < 2 and j < 2 else None
+        for i in range(size)
+        for j in range(size)
+    }

@@ -17,6 +17,7 @@ import numpy as np
 from bearingload.lazy_dataclass import dataclass
 from bearingload.models.case import Case, Result
 from bearingload.models.registry import get_method
+from bearingload.units import turn_angle
 
 if TYPE_CHECKING:  # the table command without a bearing does not load the catalogue
     from bearingload.bearings.resolve import ResolvedBearing
@@ -59,7 +60,7 @@ class Conditions:
             if self.cage_angle == "half"
             else "a ball under the load"
             if self.cage_angle == 0
-            else f"cage angle {self.cage_angle:.6g}°"
+            else f"cage angle {turn_angle(self.cage_angle, 6):.6g}°"
         )
         text = f"{gap}, {cage}, m = {self.exponent:.6g}"
         if self.clearance != 0:
