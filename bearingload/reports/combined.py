@@ -20,6 +20,7 @@ from bearingload.reports.solve import (
     blank,
     case_warnings,
     given_keys,
+    noted_once,
     per_ball_table,
     present,
     printed_warnings,
@@ -170,9 +171,15 @@ def combined_report(
     summary = _summary(records, cases[0].bearing, getattr(cases[0].result, "model", None))
     summary = dataclasses.replace(summary, notes=[*summary.notes, *service_notes(service)])
     tables.append(summary)
-    for c in cases:
-        pick = f" (G_r {c.bearing.clearance_pick})" if len(cases) > 1 else ""
-        tables.append(matrix_table(c.result.stiffness_matrix, f"tangent stiffness matrix{pick}"))
+    several = len(cases) > 1
+    matrices = [
+        matrix_table(
+            c.result.stiffness_matrix,
+            "tangent stiffness matrix" + (f" (G_r {c.bearing.clearance_pick})" if several else ""),
+        )
+        for c in cases
+    ]
+    tables += noted_once(matrices)
     tables.append(_balls_human(cases, records))
     return render(tables, fmt)
 

@@ -8,6 +8,7 @@ docs/guide.md describes (csv: one row per case, or per ball; json: ``cases``, ``
 
 from __future__ import annotations
 
+import dataclasses
 from collections.abc import Sequence
 from typing import Any
 
@@ -105,7 +106,6 @@ def solve_report(
 
         tables.append(geometry_table(cases[0].bearing))
     tables.append(_summary(cases, records, service_notes(service)))
-    tables += _matrix_tables(cases, records)
     if per_ball or any(c.result.method == "exact" for c in cases):
         tables.append(_balls_human(cases, records))
     return render([for_elements(t, exponent) for t in tables], fmt)  # rollers: 'roller loads'
@@ -208,9 +208,12 @@ def _summary(
     keys = present(records, REPORT_KEYS)
     if len({r["clearance"] for r in records}) > 1:
         keys.insert(0, "clearance")
+    matrix = present(records, MATRIX_KEYS)  # (the radial engine's 2x2 block, after k_r)
+    at = keys.index("stiffness_radial") + 1 if "stiffness_radial" in keys else len(keys)
+    keys[at:at] = matrix
     heads = ["value"] if len(records) == 1 else [_heading(r) for r in records]
     columns, rows = quantity_rows(keys, heads, records)
-    notes = _notes(cases, records) + list(extra_notes)
+    notes = _notes(cases, records) + [RADIAL_MATRIX_NOTE] * bool(matrix) + list(extra_notes)
     return Table(_title(cases, records), columns, rows, notes)
 
 
@@ -404,11 +407,12 @@ MATRIX_ENTRY = (
     "Entry: the change of the row's force or moment per unit of the column's motion "
     f"({MATRIX_UNITS})"
 )
-#: The note under the radial engine's stiffness matrix table.
+#: The note under the radial engine's summary, of the stiffness matrix entries it lists.
 RADIAL_MATRIX_NOTE = (
-    f"{MATRIX_ENTRY}; '-': not determined: the radial engine holds the ring axially and "
-    "untilted (a deep-groove ball bearing solved with a load option, -A 0 too, gives all 25); "
-    "json: stiffness_matrix, csv: stiffness_matrix_11 ... _55."
+    "stiffness dF_x/d(x) ... dF_y/d(y): the entries of the tangent stiffness matrix the radial "
+    "engine determines (it holds the ring axially and untilted; a deep-groove ball bearing "
+    "solved with a load option, -A 0 too, gives all 25); json: stiffness_matrix, csv: "
+    "stiffness_matrix_11 ... _55."
 )
 
 
@@ -427,21 +431,10 @@ def matrix_table(matrix: Any, title: str, note: str) -> Table:
     return Table(title, columns, rows, [note])
 
 
-def _matrix_tables(cases: Sequence[LoadedCase], records: Sequence[dict[str, Any]]) -> list[Table]:
-    """The stiffness matrix of each case of the exact model (the only one that gives it),
-    headed by the case where there are several."""
-    from bearingload.studies.matrix import radial_matrix
-
-    several = len(records) > 1
-    return [
-        matrix_table(
-            radial_matrix(c.result.model.stiffness_matrix),
-            "tangent stiffness matrix" + (f" ({_heading(r)})" if several else ""),
-            RADIAL_MATRIX_NOTE,
-        )
-        for c, r in zip(cases, records, strict=True)
-        if c.result.method == "exact"
-    ]
+def noted_once(tables: list[Table]) -> list[Table]:
+    """Tables of one kind in a row (a matrix per case) with their shared note under the last
+    only."""
+    return [dataclasses.replace(t, notes=[]) for t in tables[:-1]] + tables[-1:]
 
 
 def _matrix_units(keys: Sequence[str]) -> dict[str, str]:
