@@ -4,12 +4,16 @@ first used, and its comparison and text methods when one of them is first looked
 A terminal command imports some thirty dataclasses, creates instances of two thirds of them
 and compares, hashes or prints few; :mod:`dataclasses` compiles every method it adds from
 source text, and that is most of what a dataclass costs at import. This decorator takes the
-same arguments and gives the same class, built in two steps by :mod:`dataclasses` itself:
+same arguments and gives the same class, built in two steps:
 
 1. at the first instance (or the first look at its fields, ``__init__``, a frozen class's
    ``__setattr__`` and ``__delattr__``, ``__match_args__`` or ``__dataclass_params__``):
-   those, as :mod:`dataclasses` builds them (a class with a ``field(...)`` default is built so
-   at once, its class attribute then being the default as :mod:`dataclasses` leaves it);
+   those (a class with a ``field(...)`` default is built so at once, its class attribute then
+   being the default as :mod:`dataclasses` leaves it). :mod:`dataclasses` collects the fields;
+   for a class of plain fields (:func:`plain_fields`: the package's) the three methods are
+   functions of this module that do what those of :mod:`dataclasses` do without compiling
+   source text (:func:`plain_init`, :func:`frozen_methods`), else :mod:`dataclasses` builds
+   them;
 2. at the first look at ``__repr__``, ``__eq__``, ``__hash__`` or an order method: all of
    these, built by :mod:`dataclasses` for a twin of the class with the same fields (these
    methods name no class: they read ``self.__class__``).
