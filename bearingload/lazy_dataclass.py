@@ -116,7 +116,8 @@ def plain_fields(cls: type, options: dict[str, Any]) -> bool:
     """Whether every field of ``cls`` is a plain one :func:`plain_init` sets as
     :mod:`dataclasses` would: its annotations text naming no ``InitVar``, ``ClassVar`` or
     ``KW_ONLY``, no ``kw_only`` option, each ``field(...)`` with ``init`` and without
-    ``kw_only``, and, unless frozen, no ``__setattr__`` of its own or a base's."""
+    ``kw_only``, no ``__slots__`` in the class or a base, and, unless frozen, no
+    ``__setattr__`` of its own or a base's."""
     notes = cls.__dict__.get("__annotations__", {})
     if options.get("kw_only") or not all(isinstance(t, str) for t in notes.values()):
         return False
@@ -126,6 +127,8 @@ def plain_fields(cls: type, options: dict[str, Any]) -> bool:
         f = cls.__dict__.get(name)
         if isinstance(f, dataclasses.Field) and (not f.init or f.kw_only is True):
             return False
+    if any("__slots__" in c.__dict__ for c in cls.__mro__):  # no instance dict to fill
+        return False
     return bool(options.get("frozen")) or cls.__setattr__ is object.__setattr__
 
 
@@ -157,7 +160,7 @@ def plain_init(cls: type, fields: tuple[dataclasses.Field, ...], frozen: bool) -
             raise TypeError(f"non-default argument {f.name!r} follows default argument")
     post_init = hasattr(cls, "__post_init__")
 
-    def __init__(self: Any, *args: Any, **kwargs: Any) -> None:
+    def __init__(self: Any, /, *args: Any, **kwargs: Any) -> None:
         given = len(args)
         if (
             given > len(names)
@@ -173,8 +176,8 @@ def plain_init(cls: type, fields: tuple[dataclasses.Field, ...], frozen: bool) -
             values.update(zip(names, args, strict=False))  # the rest: defaults
             values.update(kwargs)
             for name in factories:
-                if isinstance(values[name], Factory):
-                    values[name] = values[name].make()
+                if values[name] is start[name]:
+                    values[name] = start[name].make()
             self.__dict__.update(values)
         if post_init:
             self.__post_init__()
