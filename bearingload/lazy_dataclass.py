@@ -4,12 +4,16 @@ first used, and its comparison and text methods when one of them is first looked
 A terminal command imports some thirty dataclasses, creates instances of two thirds of them
 and compares, hashes or prints few; :mod:`dataclasses` compiles every method it adds from
 source text, and that is most of what a dataclass costs at import. This decorator takes the
-same arguments and gives the same class, built in two steps by :mod:`dataclasses` itself:
+same arguments and gives the same class, built in two steps:
 
 1. at the first instance (or the first look at its fields, ``__init__``, a frozen class's
    ``__setattr__`` and ``__delattr__``, ``__match_args__`` or ``__dataclass_params__``):
-   those, as :mod:`dataclasses` builds them (a class with a ``field(...)`` default is built so
-   at once, its class attribute then being the default as :mod:`dataclasses` leaves it);
+   those (a class with a ``field(...)`` default is built so at once, its class attribute then
+   being the default as :mod:`dataclasses` leaves it). :mod:`dataclasses` collects the fields;
+   for a class of plain fields (:func:`plain_fields`: the package's) the three methods are
+   functions of this module that do what those of :mod:`dataclasses` do without compiling
+   source text (:func:`plain_init`, :func:`frozen_methods`), else :mod:`dataclasses` builds
+   them;
 2. at the first look at ``__repr__``, ``__eq__``, ``__hash__`` or an order method: all of
    these, built by :mod:`dataclasses` for a twin of the class with the same fields (these
    methods name no class: they read ``self.__class__``).
@@ -73,19 +77,170 @@ class Deferred:
 
 def build_class(cls: type, options: dict[str, Any]) -> None:
     """Step 1: :func:`dataclasses.dataclass` with ``options`` but none of the methods of step
-    2 (their stand-ins stay), then the ``__dataclass_params__`` of ``options`` themselves."""
+    2 (their stand-ins stay), then the ``__dataclass_params__`` of ``options`` themselves.
+
+    A class of plain fields (:func:`plain_fields`) gets the ``__init__``, ``__setattr__`` and
+    ``__delattr__`` of :func:`plain_init` and :func:`frozen_methods` (no source compiled)."""
     built = cls.__dict__.get("__dataclass_fields__")
     if built is not None and not isinstance(built, Deferred):
         return
     for name in FIRST_STEP:
         if isinstance(cls.__dict__.get(name), Deferred):
             delattr(cls, name)
+    plain = plain_fields(cls, options)
+    first = {k: options.get(k, v) for k, v in FIRST_OPTIONS.items()}
+    skip = {"init": False, "frozen": False} if plain else {}
     dataclasses.dataclass(
-        cls, **{**options, "repr": False, "eq": False, "order": False, "unsafe_hash": False}
+        cls,
+        **{**options, "repr": False, "eq": False, "order": False, "unsafe_hash": False, **skip},
     )
     params = cls.__dataclass_params__  # type: ignore[attr-defined]
-    for option, value in METHOD_OPTIONS.items():  # the options asked for, not those used here
+    asked = {**METHOD_OPTIONS, "init": True, "frozen": False}  # the options asked for
+    for option, value in asked.items():
         setattr(params, option, options.get(option, value))
+    if plain:
+        fields = dataclasses.fields(cls)
+        if first["init"]:
+            cls.__init__ = plain_init(cls, fields, first["frozen"])  # type: ignore[misc]
+        if first["frozen"]:
+            setter, deleter = frozen_methods(cls, fields)
+            cls.__setattr__ = setter  # type: ignore[method-assign]
+            cls.__delattr__ = deleter  # type: ignore[method-assign]
+
+
+#: What a class annotation names that makes a field other than a plain one.
+SPECIAL_TYPES = ("InitVar", "ClassVar", "KW_ONLY")
+
+
+def plain_fields(cls: type, options: dict[str, Any]) -> bool:
+    """Whether every field of ``cls`` is a plain one :func:`plain_init` sets as
+    :mod:`dataclasses` would: its annotations text naming no ``InitVar``, ``ClassVar`` or
+    ``KW_ONLY``, no ``kw_only`` option, each ``field(...)`` with ``init`` and without
+    ``kw_only``, no ``__slots__`` in the class or a base, and, unless frozen, no
+    ``__setattr__`` of its own or a base's."""
+    notes = cls.__dict__.get("__annotations__", {})
+    if options.get("kw_only") or not all(isinstance(t, str) for t in notes.values()):
+        return False
+    if any(kind in t for t in notes.values() for kind in SPECIAL_TYPES):
+        return False
+    for name in notes:
+        f = cls.__dict__.get(name)
+        if isinstance(f, dataclasses.Field) and (not f.init or f.kw_only is True):
+            return False
+    if any("__slots__" in c.__dict__ for c in cls.__mro__):  # no instance dict to fill
+        return False
+    return bool(options.get("frozen")) or cls.__setattr__ is object.__setattr__
+
+
+class Factory:
+    """Stands for a field's default factory among the defaults of :func:`plain_init`."""
+
+    def __init__(self, make: Any) -> None:
+        self.make = make
+
+    def __repr__(self) -> str:
+        return "<factory>"  # as dataclasses shows it in the signature
+
+
+def plain_init(cls: type, fields: tuple[dataclasses.Field, ...], frozen: bool) -> Any:
+    """The ``__init__`` of a class of plain ``fields``: the values of the arguments, bound to
+    the fields in order, or their defaults (a default factory called), set in the instance's
+    dict in the fields' order, then ``__post_init__`` if the class has one. Arguments that do
+    not bind go to the ``__init__`` :mod:`dataclasses` builds, which refuses them with its
+    own message."""
+    names = tuple(f.name for f in fields)
+    start: dict[str, Any] = {}
+    for f in fields:
+        missing = f.default is dataclasses.MISSING
+        start[f.name] = Factory(f.default_factory) if missing else f.default
+    factories = tuple(n for n, v in start.items() if isinstance(v, Factory))
+    needed = len([f for f in fields if f.default is f.default_factory])  # both MISSING
+    for f in fields[needed:]:
+        if f.default is f.default_factory:
+            raise TypeError(f"non-default argument {f.name!r} follows default argument")
+    post_init = hasattr(cls, "__post_init__")
+
+    def __init__(self: Any, /, *args: Any, **kwargs: Any) -> None:
+        given = len(args)
+        if (
+            given > len(names)
+            or (given < needed and not all(n in kwargs for n in names[given:needed]))
+            or (
+                kwargs
+                and not (kwargs.keys() <= start.keys() and kwargs.keys().isdisjoint(names[:given]))
+            )
+        ):
+            dataclass_init(cls)(self, *args, **kwargs)  # refuses as dataclasses does
+        else:
+            values = start.copy()
+            values.update(zip(names, args, strict=False))  # the rest: defaults
+            values.update(kwargs)
+            for name in factories:
+                if values[name] is start[name]:
+                    values[name] = start[name].make()
+            self.__dict__.update(values)
+        if post_init:
+            self.__post_init__()
+
+    __init__.__qualname__ = f"{cls.__qualname__}.__init__"
+    __init__.__module__ = cls.__module__
+    __init__.__signature__ = init_signature(fields)  # type: ignore[attr-defined]
+    return __init__
+
+
+def init_signature(fields: tuple[dataclasses.Field, ...]) -> Any:
+    """The signature of the ``__init__`` :mod:`dataclasses` builds for ``fields``."""
+    import inspect
+
+    keyword = inspect.Parameter.POSITIONAL_OR_KEYWORD
+    params = [inspect.Parameter("self", keyword)]
+    for f in fields:
+        default = f.default
+        if default is dataclasses.MISSING and f.default_factory is not dataclasses.MISSING:
+            default = Factory(f.default_factory)
+        elif default is dataclasses.MISSING:
+            default = inspect.Parameter.empty
+        params.append(inspect.Parameter(f.name, keyword, default=default, annotation=f.type))
+    return inspect.Signature(params, return_annotation=None)
+
+
+def dataclass_init(cls: type) -> Any:
+    """The ``__init__`` :mod:`dataclasses` builds for the fields of ``cls`` (built for a twin
+    of the class; it names no class)."""
+    fields = dataclasses.fields(cls)
+    body: dict[str, Any] = {
+        "__module__": cls.__module__,
+        "__qualname__": cls.__qualname__,
+        "__annotations__": {f.name: f.type for f in fields},
+    }
+    for f in fields:
+        body[f.name] = dataclasses.field(default=f.default, default_factory=f.default_factory)
+    frozen = cls.__dataclass_params__.frozen  # type: ignore[attr-defined]
+    twin: Any = dataclasses.dataclass(
+        type(cls.__name__, (), body), frozen=frozen, repr=False, eq=False
+    )
+    return twin.__init__
+
+
+def frozen_methods(cls: type, fields: tuple[dataclasses.Field, ...]) -> tuple[Any, Any]:
+    """The ``__setattr__`` and ``__delattr__`` of a frozen class, as :mod:`dataclasses`
+    builds them: a field, or any name on the class itself, refused."""
+    names = frozenset(f.name for f in fields)
+
+    def __setattr__(self: Any, name: str, value: Any) -> None:
+        if type(self) is cls or name in names:
+            raise dataclasses.FrozenInstanceError(f"cannot assign to field {name!r}")
+        super(cls, self).__setattr__(name, value)  # type: ignore[arg-type]
+
+    def __delattr__(self: Any, name: str) -> None:
+        if type(self) is cls or name in names:
+            raise dataclasses.FrozenInstanceError(f"cannot delete field {name!r}")
+        super(cls, self).__delattr__(name)  # type: ignore[arg-type]
+
+    for method in (__setattr__, __delattr__):
+        method.__qualname__ = f"{cls.__qualname__}.{method.__name__}"
+        method.__module__ = cls.__module__
+    return __setattr__, __delattr__
 
 
 def build_deferred(cls: type, options: dict[str, Any]) -> None:

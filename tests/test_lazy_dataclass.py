@@ -6,6 +6,7 @@ from __future__ import annotations
 import dataclasses
 import inspect
 import pickle
+import re
 
 import pytest
 
@@ -162,3 +163,47 @@ class PICKLED:
 
     x: float
     label: str = ""
+
+
+@pytest.mark.parametrize("frozen", [False, True])
+def test_init_binds_and_refuses_as_the_dataclass(frozen):
+    real, cls = twins(frozen=frozen)
+    calls = [((1.0,), {}), ((1.0, "a"), {"secret": 3}), ((), {"x": 2.0, "tags": ["t"]})]
+    for args, kwargs in calls:
+        assert vars(cls(*args, **kwargs)) == vars(real(*args, **kwargs))
+        assert list(vars(cls(*args, **kwargs))) == list(vars(real(*args, **kwargs)))
+    assert cls(1.0).tags is not cls(1.0).tags  # a new list from the factory each time
+    wrong = [((), {}), ((1.0, "a", [], 0, 9), {}), ((1.0,), {"x": 2.0}), ((1.0,), {"y": 2})]
+    for args, kwargs in wrong:
+        with pytest.raises(TypeError) as theirs:
+            real(*args, **kwargs)
+        with pytest.raises(TypeError, match=f"^{re.escape(str(theirs.value))}$"):
+            cls(*args, **kwargs)
+
+
+def test_init_runs_post_init():
+    @lazy(frozen=True)
+    class Checked:
+        """Refuses a negative x."""
+
+        x: float = 0.0
+
+        def __post_init__(self) -> None:
+            if self.x < 0:
+                raise ValueError("x")
+
+    assert Checked(1.0).x == 1.0
+    with pytest.raises(ValueError, match="x"):
+        Checked(-1.0)
+
+
+def test_a_non_default_field_after_a_default_is_refused_at_the_first_instance():
+    @lazy
+    class Bad:
+        """Out of order."""
+
+        x: int = 0
+        y: int  # type: ignore[misc]
+
+    with pytest.raises(TypeError, match="non-default argument 'y' follows default argument"):
+        Bad(1, 2)
