@@ -424,7 +424,7 @@ cdef void offset(const Case *cs, Balls ref, const double *w, Balls b,
 cdef void loads(const Case *cs, Balls b, const double *kappa, Loads lo) noexcept nogil:
     """Ball loads (scaled, stiffness 1 + kappa) and directions (_combined_ring's notes)."""
     cdef int j
-    cdef double rp, ca, sa, delta, pos, root, k, tau, sig
+    cdef double rp, ca, sa, delta, tau
     for j in range(cs.z):
         rp = max(b.rho[j], 0.0)
         if b.d[j] > 0:
@@ -437,20 +437,32 @@ cdef void loads(const Case *cs, Balls b, const double *kappa, Loads lo) noexcept
         lo.sa[j] = sa
         lo.cam1[j] = -sa * sa / (1.0 + ca) if b.rho[j] > 0 else ca - 1.0
         delta = cs.pre + b.eps[j]
-        pos = delta if delta > 0 else 0.0
-        root = sqrt(pos)
-        k = 1.0 + kappa[j]
-        lo.root[j] = root
-        lo.q[j] = k * pos * root
+        lo.root[j] = sqrt(delta if delta > 0 else 0.0)
         if cs.deviation:
             tau = b.eps[j] / cs.pre
-            sig = tau / (1.0 + sqrt(max(1.0 + tau, 0.0)))
             lo.tau[j] = tau
-            lo.sig[j] = sig
-            lo.dq[j] = cs.q0 * ((k * (tau + sig + tau * sig) + kappa[j]) if delta > 0 else -1.0)
+            lo.sig[j] = tau / (1.0 + sqrt(max(1.0 + tau, 0.0)))
         else:
             lo.tau[j] = 0.0
             lo.sig[j] = 0.0
+    stiff_loads(cs, b, kappa, lo)
+
+
+cdef void stiff_loads(const Case *cs, Balls b, const double *kappa, Loads lo) noexcept nogil:
+    """The loads of ``loads`` with the stiffness 1 + kappa, its directions, roots and
+    deviations (lo.ca ... lo.sig) given: alone where only the stiffness changed."""
+    cdef int j
+    cdef double delta, pos, k, tau, sig
+    for j in range(cs.z):
+        delta = cs.pre + b.eps[j]
+        pos = delta if delta > 0 else 0.0
+        k = 1.0 + kappa[j]
+        lo.q[j] = k * pos * lo.root[j]
+        if cs.deviation:
+            tau = lo.tau[j]
+            sig = lo.sig[j]
+            lo.dq[j] = cs.q0 * ((k * (tau + sig + tau * sig) + kappa[j]) if delta > 0 else -1.0)
+        else:
             lo.dq[j] = lo.q[j]
 
 
@@ -585,36 +597,61 @@ cdef void add_turn(const Case *cs, const double *ca, const double *sa, const dou
         hess[i] += turn[i]
 
 
+cdef void tangent_sums(const Case *cs, const double *ca, const double *sa, const double *w1,
+                       const double *w2, double *u) noexcept nogil:
+    """The upper triangle u (15 entries, row by row) of sum_j w1 g g^T + w2 h h^T
+    (``tangent``), each entry summed ball by ball in a local accumulator (kept in registers:
+    none can alias the inputs)."""
+    cdef int j
+    cdef double g0, g1, g2, g3, g4, h0, h1, h2, h3, h4, a, b
+    cdef double s00 = 0.0, s01 = 0.0, s02 = 0.0, s03 = 0.0, s04 = 0.0, s11 = 0.0, s12 = 0.0
+    cdef double s13 = 0.0, s14 = 0.0, s22 = 0.0, s23 = 0.0, s24 = 0.0, s33 = 0.0, s34 = 0.0
+    cdef double s44 = 0.0
+    for j in range(cs.z):
+        g0, g1, g2 = ca[j] * cs.c[j], ca[j] * cs.s[j], sa[j]  # (``normal_directions``)
+        g3, g4 = sa[j] * cs.c[j], sa[j] * cs.s[j]
+        h0, h1, h2 = -sa[j] * cs.c[j], -sa[j] * cs.s[j], ca[j]
+        h3, h4 = ca[j] * cs.c[j], ca[j] * cs.s[j]
+        a, b = w1[j] * g0, w2[j] * h0
+        s00 += a * g0 + b * h0
+        s01 += a * g1 + b * h1
+        s02 += a * g2 + b * h2
+        s03 += a * g3 + b * h3
+        s04 += a * g4 + b * h4
+        a, b = w1[j] * g1, w2[j] * h1
+        s11 += a * g1 + b * h1
+        s12 += a * g2 + b * h2
+        s13 += a * g3 + b * h3
+        s14 += a * g4 + b * h4
+        a, b = w1[j] * g2, w2[j] * h2
+        s22 += a * g2 + b * h2
+        s23 += a * g3 + b * h3
+        s24 += a * g4 + b * h4
+        a, b = w1[j] * g3, w2[j] * h3
+        s33 += a * g3 + b * h3
+        s34 += a * g4 + b * h4
+        a, b = w1[j] * g4, w2[j] * h4
+        s44 += a * g4 + b * h4
+    u[0], u[1], u[2], u[3], u[4] = s00, s01, s02, s03, s04
+    u[5], u[6], u[7], u[8], u[9] = s11, s12, s13, s14, s22
+    u[10], u[11], u[12], u[13], u[14] = s23, s24, s33, s34, s44
+
+
 cdef void tangent(const Case *cs, const double *ca, const double *sa, const double *w1,
                   const double *w2, const double *w3, bint hold, double *hess) noexcept nogil:
     """sum_j w1 g g^T + w2 h h^T (+ w3 g h^T where w3 is given), g and h the generalised
     directions of ball j's contact normal and of its turn (``normal_directions``): with w1 =
     dQ/d(delta), w2 = Q/d and w3 = dQ/d(alpha)/d the tangent of the ring forces. ``hold``: the
-    locked components decoupled (unit rows and columns), as the Newton matrix has them; their
-    entries are then not summed (each free entry is the same sum, ball by ball)."""
-    cdef int i, k, j, a, b, n = 0
-    cdef int free_[5]
-    cdef double g[5]
-    cdef double h[5]
-    cdef double gw, hw
-    for i in range(25):
-        hess[i] = 0.0
+    locked components decoupled (unit rows and columns), as the Newton matrix has them (every
+    entry is summed, ball by ball; those of a locked component are then replaced)."""
+    cdef int i, k, n = 0
+    cdef double upper[15]
+    tangent_sums(cs, ca, sa, w1, w2, upper)
     for i in range(5):
-        if not (hold and cs.locked[i]):
-            free_[n] = i
+        for k in range(i, 5):
+            hess[5 * i + k] = upper[n]
+            hess[5 * k + i] = upper[n]
             n += 1
-    for j in range(cs.z):
-        normal_directions(cs, ca, sa, j, g, h)
-        for a in range(n):  # the symmetric part, its upper triangle
-            i = free_[a]
-            gw = w1[j] * g[i]
-            hw = w2[j] * h[i]
-            for b in range(a, n):
-                k = free_[b]
-                hess[5 * i + k] += gw * g[k] + hw * h[k]
-    for i in range(5):
-        for k in range(i):
-            hess[5 * i + k] = hess[5 * k + i]
     if w3 != NULL:  # (a sum of the symmetric part is never -0: adding 0 would not change it)
         add_turn(cs, ca, sa, w3, hess)
     if hold:
@@ -1663,7 +1700,9 @@ cdef int solve_case(const Case *cs, const double *v0, bint given, double *vh, do
                     k_new = curve_kappa(cs, pt.lo.ca[j], pt.lo.cam1[j])
                 change = max(change, fabs(k_new - wk.kappa[j]) / (1.0 + fabs(k_new)))
                 wk.kappa[j] = k_new
-        evaluate(cs, wk.kappa, pt)
+        stiff_loads(cs, pt.b, wk.kappa, pt.lo)  # (only the stiffness changed)
+        forces(cs, pt.lo, pt.gen, pt.size)
+        pt.res = residual(cs, pt.gen, pt.size)
         if not pt.res > max(cs.lim.tolerance, end_res):
             return OK
         if end_res > cs.lim.tolerance and change <= KAPPA_SETTLED and pt.res <= 1.01 * end_res:
