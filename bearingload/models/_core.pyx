@@ -579,22 +579,27 @@ cdef inline void normal_directions(const Case *cs, const double *ca, const doubl
 
 cdef void add_turn(const Case *cs, const double *ca, const double *sa, const double *w3,
                    double *hess) noexcept nogil:
-    """hess += sum_j w3 g h^T (``tangent``), summed on its own first."""
-    cdef int i, k, j
+    """hess += sum_j w3 g h^T (``tangent``), summed on its own first: row by row, each row's
+    five sums ball by ball in local accumulators."""
+    cdef int i, j
     cdef double g[5]
     cdef double h[5]
-    cdef double turn[25]
-    cdef double gw
-    for i in range(25):
-        turn[i] = 0.0
-    for j in range(cs.z):
-        normal_directions(cs, ca, sa, j, g, h)
-        for i in range(5):
+    cdef double gw, r0, r1, r2, r3, r4
+    for i in range(5):
+        r0 = r1 = r2 = r3 = r4 = 0.0
+        for j in range(cs.z):
+            normal_directions(cs, ca, sa, j, g, h)
             gw = w3[j] * g[i]
-            for k in range(5):
-                turn[5 * i + k] += gw * h[k]
-    for i in range(25):
-        hess[i] += turn[i]
+            r0 += gw * h[0]
+            r1 += gw * h[1]
+            r2 += gw * h[2]
+            r3 += gw * h[3]
+            r4 += gw * h[4]
+        hess[5 * i] += r0
+        hess[5 * i + 1] += r1
+        hess[5 * i + 2] += r2
+        hess[5 * i + 3] += r3
+        hess[5 * i + 4] += r4
 
 
 cdef void tangent_sums(const Case *cs, const double *ca, const double *sa, const double *w1,
@@ -1305,6 +1310,26 @@ cdef int fast_newton(const Case *cs, Work *wk, Fast *cur, Fast *trial, double *v
     return steps
 
 
+cdef inline double turn_weight(const Case *cs, const Point *pt, int j, double d,
+                               const int *twin, double *slope, const double *w3) noexcept nogil:
+    """``true_tangent``'s w3 of ball j (turning, loaded; d its safe centre distance): its
+    twin's slope where its cos(alpha) and cos(alpha) - 1 are the twin's to the bit, and the
+    twin's whole w3 where its sin(alpha), root and centre distance are too (the same
+    operations on the same numbers)."""
+    cdef int p = twin[j] if twin != NULL else -1
+    cdef bint same = (p >= 0 and slope[p] == slope[p] and same_bits(pt.lo.ca[p], pt.lo.ca[j])
+                      and same_bits(pt.lo.cam1[p], pt.lo.cam1[j]))
+    cdef double s
+    if (same and same_bits(pt.lo.sa[p], pt.lo.sa[j]) and same_bits(pt.lo.root[p], pt.lo.root[j])
+            and same_bits(pt.b.d[p], pt.b.d[j])):
+        slope[j] = slope[p]
+        return w3[p]
+    s = slope[p] if same else curve_slope(cs, pt.lo.ca[j], pt.lo.cam1[j])
+    if twin != NULL:
+        slope[j] = s
+    return s * -pt.lo.sa[j] * pt.lo.root[j] ** 3 / d
+
+
 cdef void true_tangent(const Case *cs, Point *pt, const double *kappa, double *w1, double *w2,
                        double *w3, double *out, double *sym, const int *twin,
                        double *slope) noexcept nogil:
@@ -1314,8 +1339,9 @@ cdef void true_tangent(const Case *cs, Point *pt, const double *kappa, double *w
     work arrays of z (``physical_case`` puts it in physical units). ``sym``: where given, gets the
     symmetric part (the tangent without the w3 term: ``tangent``'s sum before it adds that).
     ``twin``, ``slope``: where given, the balls' mirror twins and a work array of z: a ball
-    whose cos(alpha) and cos(alpha) - 1 are its twin's to the bit takes the twin's slope."""
-    cdef int j, p
+    whose cos(alpha) and cos(alpha) - 1 are its twin's to the bit takes the twin's slope
+    (``turn_weight``)."""
+    cdef int j
     cdef double d
     for j in range(cs.z):
         d = pt.b.d[j] if pt.b.d[j] > 0 else 1.0
@@ -1327,15 +1353,7 @@ cdef void true_tangent(const Case *cs, Point *pt, const double *kappa, double *w
         if turns(cs, pt.b.rho[j], pt.b.u[j]):
             w2[j] = pt.lo.q[j] / d
             if cs.curve != NULL and pt.lo.root[j] > 0:
-                p = twin[j] if twin != NULL else -1
-                if (p >= 0 and slope[p] == slope[p] and same_bits(pt.lo.ca[p], pt.lo.ca[j])
-                        and same_bits(pt.lo.cam1[p], pt.lo.cam1[j])):
-                    w3[j] = slope[p]
-                else:
-                    w3[j] = curve_slope(cs, pt.lo.ca[j], pt.lo.cam1[j])
-                if twin != NULL:
-                    slope[j] = w3[j]
-                w3[j] = w3[j] * -pt.lo.sa[j] * pt.lo.root[j] ** 3 / d
+                w3[j] = turn_weight(cs, pt, j, d, twin, slope, w3)
     if sym == NULL:
         tangent(cs, pt.lo.ca, pt.lo.sa, w1, w2, w3 if cs.curve != NULL else NULL, False, out)
         return
