@@ -1189,26 +1189,34 @@ cdef inline void fast_copy(Fast *st, int p, int j) noexcept nogil:
     st.root[j] = st.root[p]
 
 
-cdef void curve_pairs(const Case *cs, Fast *st, int n) noexcept nogil:
-    """``curve_kappa`` of the balls st.todo[:n] into st.kappa, two balls at a time (each
-    ball's sums in the order of the nodes, the same bits; the two chains of additions
-    interleaved), an odd last one alone."""
-    cdef int i, k, j0, j1
+cdef inline void curve_two(const Case *cs, double ca0, double cam0, double ca1, double cam1,
+                           double *k0, double *k1) noexcept nogil:
+    """``curve_kappa`` of two balls, each ball's sums in the order of the nodes (the same
+    bits), the two chains of additions interleaved."""
+    cdef int k
     cdef double t0, t1, a0, a1, n0 = 0.0, n1 = 0.0, d0 = 0.0, d1 = 0.0
+    t0 = 2.0 * min(max(ca0, 0.0), 1.0) - 1.0
+    t1 = 2.0 * min(max(ca1, 0.0), 1.0) - 1.0
+    for k in range(NODES):
+        a0 = cs.node_w[k] / (t0 - cs.node_x[k])
+        a1 = cs.node_w[k] / (t1 - cs.node_x[k])
+        n0 += a0 * cs.curve[k]
+        d0 += a0
+        n1 += a1 * cs.curve[k]
+        d1 += a1
+    k0[0] = cam0 * n0 / d0
+    k1[0] = cam1 * n1 / d1
+
+
+cdef void curve_pairs(const Case *cs, Fast *st, int n) noexcept nogil:
+    """``curve_kappa`` of the balls st.todo[:n] into st.kappa, two balls at a time
+    (``curve_two``), an odd last one alone."""
+    cdef int i, j0, j1
     for i in range(0, n - 1, 2):
         j0, j1 = st.todo[i], st.todo[i + 1]
-        t0 = 2.0 * min(max(st.ca[j0], 0.0), 1.0) - 1.0
-        t1 = 2.0 * min(max(st.ca[j1], 0.0), 1.0) - 1.0
-        n0 = n1 = d0 = d1 = 0.0
-        for k in range(NODES):
-            a0 = cs.node_w[k] / (t0 - cs.node_x[k])
-            a1 = cs.node_w[k] / (t1 - cs.node_x[k])
-            n0 += a0 * cs.curve[k]
-            d0 += a0
-            n1 += a1 * cs.curve[k]
-            d1 += a1
-        st.kappa[j0] = (-st.sa[j0] * st.sa[j0] / (1.0 + st.ca[j0])) * n0 / d0
-        st.kappa[j1] = (-st.sa[j1] * st.sa[j1] / (1.0 + st.ca[j1])) * n1 / d1
+        curve_two(cs, st.ca[j0], -st.sa[j0] * st.sa[j0] / (1.0 + st.ca[j0]),
+                  st.ca[j1], -st.sa[j1] * st.sa[j1] / (1.0 + st.ca[j1]),
+                  &st.kappa[j0], &st.kappa[j1])
     if n % 2:
         j0 = st.todo[n - 1]
         st.kappa[j0] = curve_kappa(cs, st.ca[j0], -st.sa[j0] * st.sa[j0] / (1.0 + st.ca[j0]))
@@ -1681,6 +1689,38 @@ cdef void standard_start(const Case *cs, double *v) noexcept nogil:
 
 # ---------------------------------------------------------------------------- one case
 
+cdef double stiffness_update(const Case *cs, Work *wk, Fast *st) noexcept nogil:
+    """wk.kappa of the loaded balls at wk.pt's contact angles (a ball whose angle is its
+    twin's to the bit takes the twin's; the others two at a time, ``curve_two``, into the
+    free first-stage arrays ``st``); returns the largest change |new - old| / (1 + |new|)."""
+    cdef const Point *pt = &wk.pt
+    cdef int j, p, i, n = 0
+    cdef double change = 0.0, k_new
+    for j in range(cs.z):
+        p = wk.twin[j]
+        st.src[j] = j
+        if pt.lo.root[j] > 0:
+            if (p >= 0 and pt.lo.root[p] > 0 and same_bits(pt.lo.ca[p], pt.lo.ca[j])
+                    and same_bits(pt.lo.cam1[p], pt.lo.cam1[j])):
+                st.src[j] = p
+            else:
+                st.todo[n] = j
+                n += 1
+    for i in range(0, n - 1, 2):
+        j, p = st.todo[i], st.todo[i + 1]
+        curve_two(cs, pt.lo.ca[j], pt.lo.cam1[j], pt.lo.ca[p], pt.lo.cam1[p], &st.kappa[j],
+                  &st.kappa[p])
+    if n % 2:
+        j = st.todo[n - 1]
+        st.kappa[j] = curve_kappa(cs, pt.lo.ca[j], pt.lo.cam1[j])
+    for j in range(cs.z):
+        if pt.lo.root[j] > 0:
+            k_new = st.kappa[st.src[j]]
+            change = max(change, fabs(k_new - wk.kappa[j]) / (1.0 + fabs(k_new)))
+            wk.kappa[j] = k_new
+    return change
+
+
 cdef int solve_case(const Case *cs, const double *v0, bint given, double *vh, double *vl,
                     int64_t *iterations, Work *wk) noexcept nogil:
     """The first stage, then minimisations with the stiffness updated to the contact angles
@@ -1690,8 +1730,8 @@ cdef int solve_case(const Case *cs, const double *v0, bint given, double *vh, do
     Returns OK or NOT_CONVERGED (the updates ran out); wk.pt is the point at the answer with
     wk.kappa."""
     cdef Fast cur, trial
-    cdef int i, j, p, update
-    cdef double end_res, change, k_new
+    cdef int i, update
+    cdef double end_res, change
     cdef Point *pt = &wk.pt
     mirror_twins(cs, wk.twin)
     fast_on(wk.fast, cs.z, wk.twin, wk.twin + cs.z, &cur)  # (one scratch: a state at a time)
@@ -1707,17 +1747,7 @@ cdef int solve_case(const Case *cs, const double *v0, bint given, double *vh, do
         if cs.curve == NULL:
             return OK
         end_res = pt.res
-        change = 0.0
-        for j in range(cs.z):
-            if pt.lo.root[j] > 0:
-                p = wk.twin[j]  # (its twin's new stiffness where its angle is the same)
-                if (p >= 0 and pt.lo.root[p] > 0 and same_bits(pt.lo.ca[p], pt.lo.ca[j])
-                        and same_bits(pt.lo.cam1[p], pt.lo.cam1[j])):
-                    k_new = wk.kappa[p]
-                else:
-                    k_new = curve_kappa(cs, pt.lo.ca[j], pt.lo.cam1[j])
-                change = max(change, fabs(k_new - wk.kappa[j]) / (1.0 + fabs(k_new)))
-                wk.kappa[j] = k_new
+        change = stiffness_update(cs, wk, &cur)
         stiff_loads(cs, pt.b, wk.kappa, pt.lo)  # (only the stiffness changed)
         forces(cs, pt.lo, pt.gen, pt.size)
         pt.res = residual(cs, pt.gen, pt.size)
