@@ -642,21 +642,77 @@ cdef void tangent_sums(const Case *cs, const double *ca, const double *sa, const
     u[10], u[11], u[12], u[13], u[14] = s23, s24, s33, s34, s44
 
 
+cdef inline void direction_of(const Case *cs, const double *ca, const double *sa, int j,
+                                int i, double *g, double *h) noexcept nogil:
+    """Component i of ``normal_directions``'s g and h of ball j (the same products)."""
+    if i == 0:
+        g[0], h[0] = ca[j] * cs.c[j], -sa[j] * cs.c[j]
+    elif i == 1:
+        g[0], h[0] = ca[j] * cs.s[j], -sa[j] * cs.s[j]
+    elif i == 2:
+        g[0], h[0] = sa[j], ca[j]
+    elif i == 3:
+        g[0], h[0] = sa[j] * cs.c[j], ca[j] * cs.c[j]
+    else:
+        g[0], h[0] = sa[j] * cs.s[j], ca[j] * cs.s[j]
+
+
+cdef void tangent_sums3(const Case *cs, const double *ca, const double *sa, const double *w1,
+                        const double *w2, const int *free_, double *hess) noexcept nogil:
+    """``tangent_sums`` where only the three components free_[:3] are free (a mirrored case:
+    y and the cross tilt held): their six entries of the upper triangle into hess (the
+    others left), each summed ball by ball in a local accumulator, as tangent_sums does."""
+    cdef int j, i0 = free_[0], i1 = free_[1], i2 = free_[2]
+    cdef double g0, g1, g2, h0, h1, h2, a, b
+    cdef double s00 = 0.0, s01 = 0.0, s02 = 0.0, s11 = 0.0, s12 = 0.0, s22 = 0.0
+    for j in range(cs.z):
+        direction_of(cs, ca, sa, j, i0, &g0, &h0)
+        direction_of(cs, ca, sa, j, i1, &g1, &h1)
+        direction_of(cs, ca, sa, j, i2, &g2, &h2)
+        a, b = w1[j] * g0, w2[j] * h0
+        s00 += a * g0 + b * h0
+        s01 += a * g1 + b * h1
+        s02 += a * g2 + b * h2
+        a, b = w1[j] * g1, w2[j] * h1
+        s11 += a * g1 + b * h1
+        s12 += a * g2 + b * h2
+        a, b = w1[j] * g2, w2[j] * h2
+        s22 += a * g2 + b * h2
+    hess[6 * i0], hess[5 * i0 + i1], hess[5 * i0 + i2] = s00, s01, s02
+    hess[6 * i1], hess[5 * i1 + i2], hess[6 * i2] = s11, s12, s22
+
+
 cdef void tangent(const Case *cs, const double *ca, const double *sa, const double *w1,
                   const double *w2, const double *w3, bint hold, double *hess) noexcept nogil:
     """sum_j w1 g g^T + w2 h h^T (+ w3 g h^T where w3 is given), g and h the generalised
     directions of ball j's contact normal and of its turn (``normal_directions``): with w1 =
     dQ/d(delta), w2 = Q/d and w3 = dQ/d(alpha)/d the tangent of the ring forces. ``hold``: the
-    locked components decoupled (unit rows and columns), as the Newton matrix has them (every
-    entry is summed, ball by ball; those of a locked component are then replaced)."""
+    locked components decoupled (unit rows and columns), as the Newton matrix has them: with
+    three free components (a mirrored case) only their entries are summed
+    (``tangent_sums3``), otherwise every entry, those of a locked component then replaced;
+    each free entry is the same sum, ball by ball."""
     cdef int i, k, n = 0
+    cdef int free_[5]
     cdef double upper[15]
-    tangent_sums(cs, ca, sa, w1, w2, upper)
     for i in range(5):
-        for k in range(i, 5):
-            hess[5 * i + k] = upper[n]
-            hess[5 * k + i] = upper[n]
+        if not (hold and cs.locked[i]):
+            free_[n] = i
             n += 1
+    if n == 3:  # (free_ ascending: its entries are upper-triangle ones)
+        for i in range(25):
+            hess[i] = 0.0
+        tangent_sums3(cs, ca, sa, w1, w2, free_, hess)
+        for i in range(5):
+            for k in range(i):
+                hess[5 * i + k] = hess[5 * k + i]
+    else:
+        n = 0
+        tangent_sums(cs, ca, sa, w1, w2, upper)
+        for i in range(5):
+            for k in range(i, 5):
+                hess[5 * i + k] = upper[n]
+                hess[5 * k + i] = upper[n]
+                n += 1
     if w3 != NULL:  # (a sum of the symmetric part is never -0: adding 0 would not change it)
         add_turn(cs, ca, sa, w3, hess)
     if hold:
