@@ -424,7 +424,7 @@ cdef void offset(const Case *cs, Balls ref, const double *w, Balls b,
 cdef void loads(const Case *cs, Balls b, const double *kappa, Loads lo) noexcept nogil:
     """Ball loads (scaled, stiffness 1 + kappa) and directions (_combined_ring's notes)."""
     cdef int j
-    cdef double rp, ca, sa, delta, pos, root, k, tau, sig
+    cdef double rp, ca, sa, delta, tau
     for j in range(cs.z):
         rp = max(b.rho[j], 0.0)
         if b.d[j] > 0:
@@ -437,20 +437,32 @@ cdef void loads(const Case *cs, Balls b, const double *kappa, Loads lo) noexcept
         lo.sa[j] = sa
         lo.cam1[j] = -sa * sa / (1.0 + ca) if b.rho[j] > 0 else ca - 1.0
         delta = cs.pre + b.eps[j]
-        pos = delta if delta > 0 else 0.0
-        root = sqrt(pos)
-        k = 1.0 + kappa[j]
-        lo.root[j] = root
-        lo.q[j] = k * pos * root
+        lo.root[j] = sqrt(delta if delta > 0 else 0.0)
         if cs.deviation:
             tau = b.eps[j] / cs.pre
-            sig = tau / (1.0 + sqrt(max(1.0 + tau, 0.0)))
             lo.tau[j] = tau
-            lo.sig[j] = sig
-            lo.dq[j] = cs.q0 * ((k * (tau + sig + tau * sig) + kappa[j]) if delta > 0 else -1.0)
+            lo.sig[j] = tau / (1.0 + sqrt(max(1.0 + tau, 0.0)))
         else:
             lo.tau[j] = 0.0
             lo.sig[j] = 0.0
+    stiff_loads(cs, b, kappa, lo)
+
+
+cdef void stiff_loads(const Case *cs, Balls b, const double *kappa, Loads lo) noexcept nogil:
+    """The loads of ``loads`` with the stiffness 1 + kappa, its directions, roots and
+    deviations (lo.ca ... lo.sig) given: alone where only the stiffness changed."""
+    cdef int j
+    cdef double delta, pos, k, tau, sig
+    for j in range(cs.z):
+        delta = cs.pre + b.eps[j]
+        pos = delta if delta > 0 else 0.0
+        k = 1.0 + kappa[j]
+        lo.q[j] = k * pos * lo.root[j]
+        if cs.deviation:
+            tau = lo.tau[j]
+            sig = lo.sig[j]
+            lo.dq[j] = cs.q0 * ((k * (tau + sig + tau * sig) + kappa[j]) if delta > 0 else -1.0)
+        else:
             lo.dq[j] = lo.q[j]
 
 
@@ -567,22 +579,107 @@ cdef inline void normal_directions(const Case *cs, const double *ca, const doubl
 
 cdef void add_turn(const Case *cs, const double *ca, const double *sa, const double *w3,
                    double *hess) noexcept nogil:
-    """hess += sum_j w3 g h^T (``tangent``), summed on its own first."""
-    cdef int i, k, j
+    """hess += sum_j w3 g h^T (``tangent``), summed on its own first: row by row, each row's
+    five sums ball by ball in local accumulators."""
+    cdef int i, j
     cdef double g[5]
     cdef double h[5]
-    cdef double turn[25]
-    cdef double gw
-    for i in range(25):
-        turn[i] = 0.0
-    for j in range(cs.z):
-        normal_directions(cs, ca, sa, j, g, h)
-        for i in range(5):
+    cdef double gw, r0, r1, r2, r3, r4
+    for i in range(5):
+        r0 = r1 = r2 = r3 = r4 = 0.0
+        for j in range(cs.z):
+            normal_directions(cs, ca, sa, j, g, h)
             gw = w3[j] * g[i]
-            for k in range(5):
-                turn[5 * i + k] += gw * h[k]
-    for i in range(25):
-        hess[i] += turn[i]
+            r0 += gw * h[0]
+            r1 += gw * h[1]
+            r2 += gw * h[2]
+            r3 += gw * h[3]
+            r4 += gw * h[4]
+        hess[5 * i] += r0
+        hess[5 * i + 1] += r1
+        hess[5 * i + 2] += r2
+        hess[5 * i + 3] += r3
+        hess[5 * i + 4] += r4
+
+
+cdef void tangent_sums(const Case *cs, const double *ca, const double *sa, const double *w1,
+                       const double *w2, double *u) noexcept nogil:
+    """The upper triangle u (15 entries, row by row) of sum_j w1 g g^T + w2 h h^T
+    (``tangent``), each entry summed ball by ball in a local accumulator (kept in registers:
+    none can alias the inputs)."""
+    cdef int j
+    cdef double g0, g1, g2, g3, g4, h0, h1, h2, h3, h4, a, b
+    cdef double s00 = 0.0, s01 = 0.0, s02 = 0.0, s03 = 0.0, s04 = 0.0, s11 = 0.0, s12 = 0.0
+    cdef double s13 = 0.0, s14 = 0.0, s22 = 0.0, s23 = 0.0, s24 = 0.0, s33 = 0.0, s34 = 0.0
+    cdef double s44 = 0.0
+    for j in range(cs.z):
+        g0, g1, g2 = ca[j] * cs.c[j], ca[j] * cs.s[j], sa[j]  # (``normal_directions``)
+        g3, g4 = sa[j] * cs.c[j], sa[j] * cs.s[j]
+        h0, h1, h2 = -sa[j] * cs.c[j], -sa[j] * cs.s[j], ca[j]
+        h3, h4 = ca[j] * cs.c[j], ca[j] * cs.s[j]
+        a, b = w1[j] * g0, w2[j] * h0
+        s00 += a * g0 + b * h0
+        s01 += a * g1 + b * h1
+        s02 += a * g2 + b * h2
+        s03 += a * g3 + b * h3
+        s04 += a * g4 + b * h4
+        a, b = w1[j] * g1, w2[j] * h1
+        s11 += a * g1 + b * h1
+        s12 += a * g2 + b * h2
+        s13 += a * g3 + b * h3
+        s14 += a * g4 + b * h4
+        a, b = w1[j] * g2, w2[j] * h2
+        s22 += a * g2 + b * h2
+        s23 += a * g3 + b * h3
+        s24 += a * g4 + b * h4
+        a, b = w1[j] * g3, w2[j] * h3
+        s33 += a * g3 + b * h3
+        s34 += a * g4 + b * h4
+        a, b = w1[j] * g4, w2[j] * h4
+        s44 += a * g4 + b * h4
+    u[0], u[1], u[2], u[3], u[4] = s00, s01, s02, s03, s04
+    u[5], u[6], u[7], u[8], u[9] = s11, s12, s13, s14, s22
+    u[10], u[11], u[12], u[13], u[14] = s23, s24, s33, s34, s44
+
+
+cdef inline void direction_of(const Case *cs, const double *ca, const double *sa, int j,
+                                int i, double *g, double *h) noexcept nogil:
+    """Component i of ``normal_directions``'s g and h of ball j (the same products)."""
+    if i == 0:
+        g[0], h[0] = ca[j] * cs.c[j], -sa[j] * cs.c[j]
+    elif i == 1:
+        g[0], h[0] = ca[j] * cs.s[j], -sa[j] * cs.s[j]
+    elif i == 2:
+        g[0], h[0] = sa[j], ca[j]
+    elif i == 3:
+        g[0], h[0] = sa[j] * cs.c[j], ca[j] * cs.c[j]
+    else:
+        g[0], h[0] = sa[j] * cs.s[j], ca[j] * cs.s[j]
+
+
+cdef void tangent_sums3(const Case *cs, const double *ca, const double *sa, const double *w1,
+                        const double *w2, const int *free_, double *hess) noexcept nogil:
+    """``tangent_sums`` where only the three components free_[:3] are free (a mirrored case:
+    y and the cross tilt held): their six entries of the upper triangle into hess (the
+    others left), each summed ball by ball in a local accumulator, as tangent_sums does."""
+    cdef int j, i0 = free_[0], i1 = free_[1], i2 = free_[2]
+    cdef double g0, g1, g2, h0, h1, h2, a, b
+    cdef double s00 = 0.0, s01 = 0.0, s02 = 0.0, s11 = 0.0, s12 = 0.0, s22 = 0.0
+    for j in range(cs.z):
+        direction_of(cs, ca, sa, j, i0, &g0, &h0)
+        direction_of(cs, ca, sa, j, i1, &g1, &h1)
+        direction_of(cs, ca, sa, j, i2, &g2, &h2)
+        a, b = w1[j] * g0, w2[j] * h0
+        s00 += a * g0 + b * h0
+        s01 += a * g1 + b * h1
+        s02 += a * g2 + b * h2
+        a, b = w1[j] * g1, w2[j] * h1
+        s11 += a * g1 + b * h1
+        s12 += a * g2 + b * h2
+        a, b = w1[j] * g2, w2[j] * h2
+        s22 += a * g2 + b * h2
+    hess[6 * i0], hess[5 * i0 + i1], hess[5 * i0 + i2] = s00, s01, s02
+    hess[6 * i1], hess[5 * i1 + i2], hess[6 * i2] = s11, s12, s22
 
 
 cdef void tangent(const Case *cs, const double *ca, const double *sa, const double *w1,
@@ -590,31 +687,32 @@ cdef void tangent(const Case *cs, const double *ca, const double *sa, const doub
     """sum_j w1 g g^T + w2 h h^T (+ w3 g h^T where w3 is given), g and h the generalised
     directions of ball j's contact normal and of its turn (``normal_directions``): with w1 =
     dQ/d(delta), w2 = Q/d and w3 = dQ/d(alpha)/d the tangent of the ring forces. ``hold``: the
-    locked components decoupled (unit rows and columns), as the Newton matrix has them; their
-    entries are then not summed (each free entry is the same sum, ball by ball)."""
-    cdef int i, k, j, a, b, n = 0
+    locked components decoupled (unit rows and columns), as the Newton matrix has them: with
+    three free components (a mirrored case) only their entries are summed
+    (``tangent_sums3``), otherwise every entry, those of a locked component then replaced;
+    each free entry is the same sum, ball by ball."""
+    cdef int i, k, n = 0
     cdef int free_[5]
-    cdef double g[5]
-    cdef double h[5]
-    cdef double gw, hw
-    for i in range(25):
-        hess[i] = 0.0
+    cdef double upper[15]
     for i in range(5):
         if not (hold and cs.locked[i]):
             free_[n] = i
             n += 1
-    for j in range(cs.z):
-        normal_directions(cs, ca, sa, j, g, h)
-        for a in range(n):  # the symmetric part, its upper triangle
-            i = free_[a]
-            gw = w1[j] * g[i]
-            hw = w2[j] * h[i]
-            for b in range(a, n):
-                k = free_[b]
-                hess[5 * i + k] += gw * g[k] + hw * h[k]
-    for i in range(5):
-        for k in range(i):
-            hess[5 * i + k] = hess[5 * k + i]
+    if n == 3:  # (free_ ascending: its entries are upper-triangle ones)
+        for i in range(25):
+            hess[i] = 0.0
+        tangent_sums3(cs, ca, sa, w1, w2, free_, hess)
+        for i in range(5):
+            for k in range(i):
+                hess[5 * i + k] = hess[5 * k + i]
+    else:
+        n = 0
+        tangent_sums(cs, ca, sa, w1, w2, upper)
+        for i in range(5):
+            for k in range(i, 5):
+                hess[5 * i + k] = upper[n]
+                hess[5 * k + i] = upper[n]
+                n += 1
     if w3 != NULL:  # (a sum of the symmetric part is never -0: adding 0 would not change it)
         add_turn(cs, ca, sa, w3, hess)
     if hold:
@@ -1147,26 +1245,34 @@ cdef inline void fast_copy(Fast *st, int p, int j) noexcept nogil:
     st.root[j] = st.root[p]
 
 
-cdef void curve_pairs(const Case *cs, Fast *st, int n) noexcept nogil:
-    """``curve_kappa`` of the balls st.todo[:n] into st.kappa, two balls at a time (each
-    ball's sums in the order of the nodes, the same bits; the two chains of additions
-    interleaved), an odd last one alone."""
-    cdef int i, k, j0, j1
+cdef inline void curve_two(const Case *cs, double ca0, double cam0, double ca1, double cam1,
+                           double *k0, double *k1) noexcept nogil:
+    """``curve_kappa`` of two balls, each ball's sums in the order of the nodes (the same
+    bits), the two chains of additions interleaved."""
+    cdef int k
     cdef double t0, t1, a0, a1, n0 = 0.0, n1 = 0.0, d0 = 0.0, d1 = 0.0
+    t0 = 2.0 * min(max(ca0, 0.0), 1.0) - 1.0
+    t1 = 2.0 * min(max(ca1, 0.0), 1.0) - 1.0
+    for k in range(NODES):
+        a0 = cs.node_w[k] / (t0 - cs.node_x[k])
+        a1 = cs.node_w[k] / (t1 - cs.node_x[k])
+        n0 += a0 * cs.curve[k]
+        d0 += a0
+        n1 += a1 * cs.curve[k]
+        d1 += a1
+    k0[0] = cam0 * n0 / d0
+    k1[0] = cam1 * n1 / d1
+
+
+cdef void curve_pairs(const Case *cs, Fast *st, int n) noexcept nogil:
+    """``curve_kappa`` of the balls st.todo[:n] into st.kappa, two balls at a time
+    (``curve_two``), an odd last one alone."""
+    cdef int i, j0, j1
     for i in range(0, n - 1, 2):
         j0, j1 = st.todo[i], st.todo[i + 1]
-        t0 = 2.0 * min(max(st.ca[j0], 0.0), 1.0) - 1.0
-        t1 = 2.0 * min(max(st.ca[j1], 0.0), 1.0) - 1.0
-        n0 = n1 = d0 = d1 = 0.0
-        for k in range(NODES):
-            a0 = cs.node_w[k] / (t0 - cs.node_x[k])
-            a1 = cs.node_w[k] / (t1 - cs.node_x[k])
-            n0 += a0 * cs.curve[k]
-            d0 += a0
-            n1 += a1 * cs.curve[k]
-            d1 += a1
-        st.kappa[j0] = (-st.sa[j0] * st.sa[j0] / (1.0 + st.ca[j0])) * n0 / d0
-        st.kappa[j1] = (-st.sa[j1] * st.sa[j1] / (1.0 + st.ca[j1])) * n1 / d1
+        curve_two(cs, st.ca[j0], -st.sa[j0] * st.sa[j0] / (1.0 + st.ca[j0]),
+                  st.ca[j1], -st.sa[j1] * st.sa[j1] / (1.0 + st.ca[j1]),
+                  &st.kappa[j0], &st.kappa[j1])
     if n % 2:
         j0 = st.todo[n - 1]
         st.kappa[j0] = curve_kappa(cs, st.ca[j0], -st.sa[j0] * st.sa[j0] / (1.0 + st.ca[j0]))
@@ -1268,6 +1374,26 @@ cdef int fast_newton(const Case *cs, Work *wk, Fast *cur, Fast *trial, double *v
     return steps
 
 
+cdef inline double turn_weight(const Case *cs, const Point *pt, int j, double d,
+                               const int *twin, double *slope, const double *w3) noexcept nogil:
+    """``true_tangent``'s w3 of ball j (turning, loaded; d its safe centre distance): its
+    twin's slope where its cos(alpha) and cos(alpha) - 1 are the twin's to the bit, and the
+    twin's whole w3 where its sin(alpha), root and centre distance are too (the same
+    operations on the same numbers)."""
+    cdef int p = twin[j] if twin != NULL else -1
+    cdef bint same = (p >= 0 and slope[p] == slope[p] and same_bits(pt.lo.ca[p], pt.lo.ca[j])
+                      and same_bits(pt.lo.cam1[p], pt.lo.cam1[j]))
+    cdef double s
+    if (same and same_bits(pt.lo.sa[p], pt.lo.sa[j]) and same_bits(pt.lo.root[p], pt.lo.root[j])
+            and same_bits(pt.b.d[p], pt.b.d[j])):
+        slope[j] = slope[p]
+        return w3[p]
+    s = slope[p] if same else curve_slope(cs, pt.lo.ca[j], pt.lo.cam1[j])
+    if twin != NULL:
+        slope[j] = s
+    return s * -pt.lo.sa[j] * pt.lo.root[j] ** 3 / d
+
+
 cdef void true_tangent(const Case *cs, Point *pt, const double *kappa, double *w1, double *w2,
                        double *w3, double *out, double *sym, const int *twin,
                        double *slope) noexcept nogil:
@@ -1277,8 +1403,9 @@ cdef void true_tangent(const Case *cs, Point *pt, const double *kappa, double *w
     work arrays of z (``physical_case`` puts it in physical units). ``sym``: where given, gets the
     symmetric part (the tangent without the w3 term: ``tangent``'s sum before it adds that).
     ``twin``, ``slope``: where given, the balls' mirror twins and a work array of z: a ball
-    whose cos(alpha) and cos(alpha) - 1 are its twin's to the bit takes the twin's slope."""
-    cdef int j, p
+    whose cos(alpha) and cos(alpha) - 1 are its twin's to the bit takes the twin's slope
+    (``turn_weight``)."""
+    cdef int j
     cdef double d
     for j in range(cs.z):
         d = pt.b.d[j] if pt.b.d[j] > 0 else 1.0
@@ -1290,15 +1417,7 @@ cdef void true_tangent(const Case *cs, Point *pt, const double *kappa, double *w
         if turns(cs, pt.b.rho[j], pt.b.u[j]):
             w2[j] = pt.lo.q[j] / d
             if cs.curve != NULL and pt.lo.root[j] > 0:
-                p = twin[j] if twin != NULL else -1
-                if (p >= 0 and slope[p] == slope[p] and same_bits(pt.lo.ca[p], pt.lo.ca[j])
-                        and same_bits(pt.lo.cam1[p], pt.lo.cam1[j])):
-                    w3[j] = slope[p]
-                else:
-                    w3[j] = curve_slope(cs, pt.lo.ca[j], pt.lo.cam1[j])
-                if twin != NULL:
-                    slope[j] = w3[j]
-                w3[j] = w3[j] * -pt.lo.sa[j] * pt.lo.root[j] ** 3 / d
+                w3[j] = turn_weight(cs, pt, j, d, twin, slope, w3)
     if sym == NULL:
         tangent(cs, pt.lo.ca, pt.lo.sa, w1, w2, w3 if cs.curve != NULL else NULL, False, out)
         return
@@ -1626,6 +1745,38 @@ cdef void standard_start(const Case *cs, double *v) noexcept nogil:
 
 # ---------------------------------------------------------------------------- one case
 
+cdef double stiffness_update(const Case *cs, Work *wk, Fast *st) noexcept nogil:
+    """wk.kappa of the loaded balls at wk.pt's contact angles (a ball whose angle is its
+    twin's to the bit takes the twin's; the others two at a time, ``curve_two``, into the
+    free first-stage arrays ``st``); returns the largest change |new - old| / (1 + |new|)."""
+    cdef const Point *pt = &wk.pt
+    cdef int j, p, i, n = 0
+    cdef double change = 0.0, k_new
+    for j in range(cs.z):
+        p = wk.twin[j]
+        st.src[j] = j
+        if pt.lo.root[j] > 0:
+            if (p >= 0 and pt.lo.root[p] > 0 and same_bits(pt.lo.ca[p], pt.lo.ca[j])
+                    and same_bits(pt.lo.cam1[p], pt.lo.cam1[j])):
+                st.src[j] = p
+            else:
+                st.todo[n] = j
+                n += 1
+    for i in range(0, n - 1, 2):
+        j, p = st.todo[i], st.todo[i + 1]
+        curve_two(cs, pt.lo.ca[j], pt.lo.cam1[j], pt.lo.ca[p], pt.lo.cam1[p], &st.kappa[j],
+                  &st.kappa[p])
+    if n % 2:
+        j = st.todo[n - 1]
+        st.kappa[j] = curve_kappa(cs, pt.lo.ca[j], pt.lo.cam1[j])
+    for j in range(cs.z):
+        if pt.lo.root[j] > 0:
+            k_new = st.kappa[st.src[j]]
+            change = max(change, fabs(k_new - wk.kappa[j]) / (1.0 + fabs(k_new)))
+            wk.kappa[j] = k_new
+    return change
+
+
 cdef int solve_case(const Case *cs, const double *v0, bint given, double *vh, double *vl,
                     int64_t *iterations, Work *wk) noexcept nogil:
     """The first stage, then minimisations with the stiffness updated to the contact angles
@@ -1635,8 +1786,8 @@ cdef int solve_case(const Case *cs, const double *v0, bint given, double *vh, do
     Returns OK or NOT_CONVERGED (the updates ran out); wk.pt is the point at the answer with
     wk.kappa."""
     cdef Fast cur, trial
-    cdef int i, j, p, update
-    cdef double end_res, change, k_new
+    cdef int i, update
+    cdef double end_res, change
     cdef Point *pt = &wk.pt
     mirror_twins(cs, wk.twin)
     fast_on(wk.fast, cs.z, wk.twin, wk.twin + cs.z, &cur)  # (one scratch: a state at a time)
@@ -1652,18 +1803,10 @@ cdef int solve_case(const Case *cs, const double *v0, bint given, double *vh, do
         if cs.curve == NULL:
             return OK
         end_res = pt.res
-        change = 0.0
-        for j in range(cs.z):
-            if pt.lo.root[j] > 0:
-                p = wk.twin[j]  # (its twin's new stiffness where its angle is the same)
-                if (p >= 0 and pt.lo.root[p] > 0 and same_bits(pt.lo.ca[p], pt.lo.ca[j])
-                        and same_bits(pt.lo.cam1[p], pt.lo.cam1[j])):
-                    k_new = wk.kappa[p]
-                else:
-                    k_new = curve_kappa(cs, pt.lo.ca[j], pt.lo.cam1[j])
-                change = max(change, fabs(k_new - wk.kappa[j]) / (1.0 + fabs(k_new)))
-                wk.kappa[j] = k_new
-        evaluate(cs, wk.kappa, pt)
+        change = stiffness_update(cs, wk, &cur)
+        stiff_loads(cs, pt.b, wk.kappa, pt.lo)  # (only the stiffness changed)
+        forces(cs, pt.lo, pt.gen, pt.size)
+        pt.res = residual(cs, pt.gen, pt.size)
         if not pt.res > max(cs.lim.tolerance, end_res):
             return OK
         if end_res > cs.lim.tolerance and change <= KAPPA_SETTLED and pt.res <= 1.01 * end_res:
