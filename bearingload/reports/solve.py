@@ -410,8 +410,8 @@ MATRIX_ENTRY = (
 #: The note under the radial engine's summary, of the stiffness matrix entries it lists.
 RADIAL_MATRIX_NOTE = (
     "stiffness dF_x/d(x) ... dF_y/d(y): the entries of the tangent stiffness matrix the radial "
-    "engine determines (it holds the ring axially and untilted; a deep-groove ball bearing "
-    "solved with a load option, -A 0 too, gives all 25); json: stiffness_matrix, csv: "
+    "engine determines (it holds the ring axially and untilted; deep-groove ball bearings "
+    "solved with a load option, -A 0 too, give all 25); json: stiffness_matrix, csv: "
     "stiffness_matrix_11 ... _55."
 )
 
