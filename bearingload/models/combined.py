@@ -1935,21 +1935,22 @@ def _checked(p: Problem, end: _ring.Point, its: np.ndarray, given: dict) -> tupl
             rows=np.flatnonzero(bad),
         )
     if near_edge is None or np.count_nonzero(near_edge):
-        _check_edge(end, given)
+        _check_edge(end, given, p.one_sided)
     return end.block, end.gen
 
 
-def _check_edge(end: _ring.Point, given: dict) -> None:
+def _check_edge(end: _ring.Point, given: dict, one_sided: np.ndarray) -> None:
     """InputError where a loaded ball of ``end`` sits at the groove edge: crossed groove
     centres, or a contact angle that rounds to 90° (a minimum may sit at the edge: there the
-    potential's curvature across the groove ends)."""
+    potential's curvature across the groove ends). ``one_sided`` (n,): the angular-contact
+    cases."""
     b, lo = end.b, end.lo
     near = (lo.root > 0) & ((b.rho <= 0) | (lo.ca < 1e-8))  # (elsewhere below 90° - 5e-7°)
     if near.any():
         edge = near & ((b.rho <= 0) | (np.rad2deg(np.arctan2(np.abs(lo.sa), lo.ca)) >= 90.0))
         if edge.any():
             case, ball = (int(i[0]) for i in np.nonzero(edge))
-            _refuse_edge(case, ball, given)
+            _refuse_edge(case, ball, given, bool(one_sided[case]))
 
 
 def _described(given: dict, rows: np.ndarray) -> dict:
@@ -1979,28 +1980,34 @@ INPUT_UNITS = {
 }
 
 
-def _refuse_edge(case: int, ball: int, given: dict) -> None:
-    """InputError: ball ``ball`` of case ``case`` would carry load past the groove edge."""
+def _refuse_edge(case: int, ball: int, given: dict, angular: bool = False) -> None:
+    """InputError: ball ``ball`` of case ``case`` would carry load past the groove edge.
+    ``angular``: an angular-contact case, whose clearance is not an input (0: its design
+    contact angle fixes the geometry), so neither named nor advised."""
     from bearingload.errors import format_cases
 
     one = _described(given, np.array([case]))
+    if angular:
+        del one["clearance"]
     if one["axial_load"] != 0:
         name = "axial_load"
     else:
         name = next(
-            (k for k in ("misalignment", "moment", "moment_cross") if k in one), "clearance"
+            (k for k in ("misalignment", "moment", "moment_cross") if k in one),
+            "radial_load" if angular else "clearance",
         )
+    clearance = "" if angular else " and the clearance"
     if "misalignment" in one:
-        way = "lower the axial load, moment or tilt, or the clearance"
+        way = "lower the axial load, moment or tilt" + ("" if angular else ", or the clearance")
     else:  # a free ring's tilt may seat the balls under more thrust as well as under less
         way = (
-            "lower the clearance, change the axial load or moment (the inner ring is free to "
-            "tilt: more thrust may seat the balls, as less may), or impose the tilt with a "
-            "misalignment (0: aligned)"
+            ("change" if angular else "lower the clearance, change")
+            + " the axial load or moment (the inner ring is free to tilt: more thrust may seat "
+            "the balls, as less may), or impose the tilt with a misalignment (0: aligned)"
         )
     raise InputError(
         name,
-        f"the loads and the clearance drive ball {ball + 1} to a contact angle of 90°, the "
+        f"the loads{clearance} drive ball {ball + 1} to a contact angle of 90°, the "
         "edge of its groove (the centres of its two grooves cross): it would ride over the "
         f"groove shoulder, which the model does not describe; {way} "
         f"({format_cases(one, INPUT_UNITS)})",
