@@ -1065,7 +1065,7 @@ def _refuse_loads(
     if angular:
         named = {"radial_load": fr, "axial_load": fa, "moment": np.hypot(mm, mc) / geo.R_i}
         heavy = status == _core.SetupStatus.TOO_HEAVY
-        check_angular_scale(f_ref, k_ref, geo.A, named, heavy, at)
+        check_angular_scale(f_ref, k_ref, geo.A, named, heavy, at, (mm, mc))
 
 
 def call_balls(balls: Any) -> int:
@@ -1531,12 +1531,15 @@ def check_angular_scale(
     sizes: dict[str, np.ndarray],
     flagged: Any = False,
     at: Callable[..., str] = _no_element,
+    moments: tuple[np.ndarray, np.ndarray] | None = None,
 ) -> None:
     """Refuse loads so large against an angular-contact bearing's groove geometry A that its
     one-sided equilibrium is not solved reliably (see :data:`ANGULAR_RATIO_MIN`): a single
     bearing's and each of a pair's. ``sizes``: the loads as forces by parameter (flat, of
-    :data:`_SIZE_WORDS`), the largest of the first case refused named; ``flagged``: the cases
-    the compiled core judged so, ``at`` names the element (as :func:`check_scale`)."""
+    :data:`_SIZE_WORDS`; ``moment`` the size of both moments), the largest of the first case
+    refused named, the larger of ``moments`` (M, M_c, flat) where it is the moment;
+    ``flagged``: the cases the compiled core judged so, ``at`` names the element (as
+    :func:`check_scale`)."""
     a = big_a if np.shape(big_a) == f_ref.shape else np.broadcast_to(big_a, f_ref.shape)
     with np.errstate(over="ignore", divide="ignore"):
         bad = (a / (f_ref / k_ref) ** (2.0 / 3.0) < ANGULAR_RATIO_MIN) | flagged
@@ -1544,6 +1547,9 @@ def check_angular_scale(
         i = int(np.argmax(bad))
         f_max = float(k_ref[i] * (a[i] / ANGULAR_RATIO_MIN) ** 1.5)
         name = _largest_load(sizes, i)
+        if name == "moment" and moments is not None:
+            mm, mc = (abs(float(np.reshape(m, -1)[i])) for m in moments)
+            name = "moment_cross" if mc > mm else name
         *most, last = (_SIZE_WORDS[k] for k in sizes)
         raise InputError(
             name,
