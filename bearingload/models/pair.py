@@ -201,7 +201,8 @@ def solve_pair(
 ) -> PairDistribution:
     """Equilibrium of the shaft in a pair of identical angular-contact ball bearings.
 
-    Model and conventions: the module docstring. Arrays broadcast over cases.
+    Model and conventions: docs/angular_contact.md, "Pairs: DB, DF, DT". Arrays broadcast
+    over cases.
 
     Parameters
     ----------
