@@ -1823,8 +1823,19 @@ def remember_setup(key: bytes, known: np.ndarray) -> None:
     """Keep one geometry's Hertz set-up (K_0 and the curve's values) in the cache, the
     oldest dropped first beyond SETUP_CACHE_SIZE."""
     _SETUP_CACHE[key] = known
-    while len(_SETUP_CACHE) > SETUP_CACHE_SIZE:
-        _SETUP_CACHE.pop(next(iter(_SETUP_CACHE)))
+    trim_cache(_SETUP_CACHE)
+
+
+def trim_cache(cache: dict) -> None:
+    """Drop the oldest entries of a cache beyond SETUP_CACHE_SIZE. Threads may share it: one
+    may drop the entry another is dropping, or change the cache while another looks for its
+    oldest (a KeyError, or the RuntimeError of a dict changed during its iteration, raised
+    from solve_combined): then it looks again."""
+    while len(cache) > SETUP_CACHE_SIZE:
+        try:
+            del cache[next(iter(cache))]
+        except (KeyError, RuntimeError, StopIteration):  # (another thread was first)
+            continue
 
 
 def hertz_setup(geo: _Geometry, e: np.ndarray, nu: np.ndarray) -> tuple[np.ndarray, np.ndarray]:
