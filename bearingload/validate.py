@@ -434,13 +434,19 @@ _NOT_REAL = (str, bytes, complex, np.complexfloating, bool, np.bool_, np.datetim
 def not_real(v: object) -> bool:
     """Whether one value (an element) is text, None, a complex number, a boolean, a date or a
     time span: what numpy would read as a real number ("1000" as 1000.0, None as NaN, 1+0j as
-    1.0, True as 1, the year 2020 as 50) but the library refuses."""
+    1.0, True as 1, the year 2020 as 50) but the library refuses; an array of no dimension
+    (an element of a list as ``np.array(True)``) by the value it holds."""
+    if isinstance(v, np.ndarray) and v.ndim == 0:
+        v = v[()]
     return v is None or isinstance(v, _NOT_REAL)
 
 
 def _item(value: Any) -> Any:
     """A numpy scalar as the Python value a message shows (np.float64(2.0) as 2.0, np.True_ as
-    True); a date or a time span as numpy shows it (its ``item`` is a datetime)."""
+    True), an array of no dimension as its value; a date or a time span as numpy shows it (its
+    ``item`` is a datetime)."""
+    if isinstance(value, np.ndarray) and value.ndim == 0:
+        value = value[()]
     if isinstance(value, np.generic) and not isinstance(value, (np.datetime64, np.timedelta64)):
         return value.item()
     return value

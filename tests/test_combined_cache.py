@@ -105,3 +105,41 @@ def test_setup_matches_the_exact_stiffness() -> None:
         r = _case(38.5, load)
         exact = combined.ball_stiffness_at(r.contact_angles, 7.938, 38.5, 0.52, 0.53)
         assert np.allclose(r.ball_stiffnesses, exact, rtol=1e-12, atol=0)
+
+
+class _TakenFirst(dict):
+    """A cache as a thread sees it when another has just dropped its oldest entry, once: its
+    first key is one no longer held (the other thread's ``del`` came between)."""
+
+    changed = False
+
+    def __iter__(self):
+        if not self.changed:
+            self.changed = True
+            return iter(["taken by another thread", *dict.__iter__(self)])
+        return dict.__iter__(self)
+
+
+class _ChangedMeanwhile(dict):
+    """A cache another thread changes while this one looks for its oldest entry, once."""
+
+    changed = False
+
+    def __iter__(self):
+        if not self.changed:
+            self.changed = True
+            raise RuntimeError("dictionary changed size during iteration")
+        return dict.__iter__(self)
+
+
+@pytest.mark.parametrize("kind", [_TakenFirst, _ChangedMeanwhile], ids=lambda k: k.__name__)
+def test_a_cache_shared_by_threads_is_trimmed_whatever_another_did(kind, monkeypatch) -> None:
+    """solve_combined in four threads raised KeyError or 'dictionary changed size during
+    iteration' (3 of 6000 one-case calls of new geometries, sys.setswitchinterval(1e-6)): the
+    cache's trim took the first key and dropped it, and another thread had dropped it or
+    changed the cache in between. A trim meeting either looks again."""
+    cache = kind({bytes([i]): np.zeros(1) for i in range(4)})
+    monkeypatch.setattr(combined, "_SETUP_CACHE", cache)
+    monkeypatch.setattr(combined, "SETUP_CACHE_SIZE", 2)
+    _case(40.0)  # (a new geometry, remembered: the cache trimmed)
+    assert len(cache) == 2 and bytes([3]) in cache

@@ -258,6 +258,25 @@ def test_the_groove_edge_refusal_of_a_free_ring_names_the_ways_that_solve_it():
     assert "lower the axial load, moment or tilt, or the clearance" in str(info.value)
 
 
+@pytest.mark.parametrize("extra", [{}, {"misalignment": 0.0}], ids=["free", "imposed"])
+def test_the_groove_edge_refusal_of_an_angular_bearing_names_no_clearance(extra):
+    """An angular-contact bearing takes no clearance (its design contact angle fixes the
+    geometry; a clearance beside it is refused), yet its groove-edge refusal said "the loads
+    and the clearance drive", advised to lower the clearance and listed "clearance = 0 mm".
+    Its words are now of the loads alone; a deep-groove bearing's keep the clearance."""
+    g = dict(ball_diameter=7.938, pitch_diameter=38.5, f_i=0.52, f_o=0.53)
+    with pytest.raises(InputError) as info:
+        solve_combined(9, 1e7, 5e7, contact_angle=25.0, **g, **extra)
+    message = str(info.value)
+    assert info.value.parameter == "axial_load"
+    assert "the loads drive ball" in message and "contact angle of 90°" in message
+    assert "clearance" not in message, message
+    with pytest.raises(InputError) as info:
+        solve_combined(9, 1e7, 5e7, clearance=0.0, **g, **extra)
+    assert "the loads and the clearance drive ball" in str(info.value)
+    assert "clearance = 0 mm" in str(info.value)
+
+
 # --------------------------------------------------------------- 3. heavy preload, tiny loads
 
 DPS = 50

@@ -442,3 +442,24 @@ def test_a_life_or_lubrication_input_that_is_not_a_number_is_refused(value):
     assert "must be a number" in info.value.message
     with pytest.raises(InputError, match="must be a number"):
         rated_viscosity(value, 38.5)
+
+
+@pytest.mark.parametrize(
+    "value, named",
+    [
+        ([np.array(1000.0), np.array(True)], "radial_load[1] = True: must be a number, not a bool"),
+        ([np.array("1000"), 2000.0], "radial_load[0] = '1000': must be a number (got '1000')"),
+        ([1000.0, np.array(1 + 0j)], "radial_load[1] = (1+0j): must be a number (got (1+0j))"),
+        ([1000.0, np.array(None)], "radial_load[1] = None: must be a number (got None)"),
+        ([np.array(np.datetime64("2020"))], "radial_load: must be a number (got np.datetime64("),
+    ],
+    ids=repr,
+)
+def test_an_array_of_no_dimension_in_a_list_is_judged_by_its_value(value, named):
+    """numpy keeps a 0-d array in a list as the array (not its value), which
+    ``validate.not_real`` did not look into: [np.array(1000.0), np.array(True)] was solved as
+    [1000, 1], [np.array("1000")] as 1000, a date as 50, a complex number with numpy's
+    ComplexWarning, None as a NaN. Each is now refused as the value it holds."""
+    with pytest.raises(InputError) as info:
+        solve_combined(9, value, 100.0, **GEOMETRY)
+    assert str(info.value).startswith(named), str(info.value)

@@ -415,6 +415,25 @@ def test_loads_beyond_the_angular_contact_scale_are_refused_as_for_one_bearing(l
     assert _angular_limit(info.value.message) == _angular_limit(one.value.message) == "8.31e+10"
 
 
+@pytest.mark.parametrize(
+    ("moments", "name"),
+    [
+        (dict(moment=2e13), "moment"),
+        (dict(moment_cross=2e13), "moment_cross"),
+        (dict(moment=1e13, moment_cross=-2e13), "moment_cross"),
+        (dict(moment=-2e13, moment_cross=1e13), "moment"),
+    ],
+)
+def test_a_moment_beyond_the_angular_contact_scale_is_named_as_given(moments, name):
+    """M/R_i is the size of both moments, hypot(M, M_c)/R_i: a moment across the load line too
+    large for a 7205B pair was refused naming ``moment`` (the command line's --moment, which
+    was not given). The larger of the two is named."""
+    kw = dict(contact_angle=40.0, width=WIDTH, preload=100.0) | moments
+    with pytest.raises(InputError, match="too large for the angular-contact model") as info:
+        solve_pair(Z, 1000.0, 0.0, **kw, **B7205)
+    assert info.value.parameter == name
+
+
 def test_a_pair_under_a_radial_load_the_single_bearing_takes_is_balanced():
     """1e10 N, within the single bearing's scale (it answers): the pair's Newton capped every
     component of its step at A and ran out of steps (a ConvergenceError from 1e10 N on); its

@@ -118,7 +118,9 @@ def test_combined_refusals_are_counted_with_their_reason(combined_rows):
     assert r["refused"] == 13
     text = r["refusal_reasons"]
     assert text.startswith("axial_load: the loads and the clearance drive a ball to a contact")
-    assert "with a misalignment (0: aligned) (x7); clearance: must be smaller than 2 (f_i" in text
+    # (a free ring: the refusal names the ways that solve it, the imposed tilt among them)
+    edge_ways = "or impose the tilt with a misalignment (0: aligned) (x7); "
+    assert edge_ways + "clearance: must be smaller than 2 (f_i + f_o - 1) D_w" in text
     assert text.endswith("leave the grooves axially (x6)")
     assert combined_rows["combined_preload"]["refusal_reasons"] == "-"
 

@@ -2381,8 +2381,10 @@ cdef void pair_move(const Pair *pr, double *jac, const double *grad,
                     double *step) noexcept nogil:
     """The Newton step on the pair's tangent ``jac`` (changed: the held components decoupled,
     regularised); where it is not finite or no ball is in contact, a move of length A against
-    the gradient; its axial parts (a, t, t_c) within A, as the single bearing's ``cap_step``
-    (a radial part capped too took 10^3 steps where the approach is 10^3 A)."""
+    the gradient; its axial parts (a, t, t_c) within max(A, 0.1) of the scaled approach (the
+    single bearing's ``cap_step`` takes A: capped at A, a heavy pair's steps ran out short of
+    the groove edge), its radial parts free (capped too, they took 10^3 steps where the
+    approach is 10^3 A)."""
     cdef double minus[5]
     cdef double trace = 0.0, norm = 0.0, longest = 0.0, a_hat = pr.bear.a_hat
     cdef bint bad = False

@@ -1065,7 +1065,7 @@ def _refuse_loads(
     if angular:
         named = {"radial_load": fr, "axial_load": fa, "moment": np.hypot(mm, mc) / geo.R_i}
         heavy = status == _core.SetupStatus.TOO_HEAVY
-        check_angular_scale(f_ref, k_ref, geo.A, named, heavy, at)
+        check_angular_scale(f_ref, k_ref, geo.A, named, heavy, at, (mm, mc))
 
 
 def call_balls(balls: Any) -> int:
@@ -1531,12 +1531,15 @@ def check_angular_scale(
     sizes: dict[str, np.ndarray],
     flagged: Any = False,
     at: Callable[..., str] = _no_element,
+    moments: tuple[np.ndarray, np.ndarray] | None = None,
 ) -> None:
     """Refuse loads so large against an angular-contact bearing's groove geometry A that its
     one-sided equilibrium is not solved reliably (see :data:`ANGULAR_RATIO_MIN`): a single
     bearing's and each of a pair's. ``sizes``: the loads as forces by parameter (flat, of
-    :data:`_SIZE_WORDS`), the largest of the first case refused named; ``flagged``: the cases
-    the compiled core judged so, ``at`` names the element (as :func:`check_scale`)."""
+    :data:`_SIZE_WORDS`; ``moment`` the size of both moments), the largest of the first case
+    refused named, the larger of ``moments`` (M, M_c, flat) where it is the moment;
+    ``flagged``: the cases the compiled core judged so, ``at`` names the element (as
+    :func:`check_scale`)."""
     a = big_a if np.shape(big_a) == f_ref.shape else np.broadcast_to(big_a, f_ref.shape)
     with np.errstate(over="ignore", divide="ignore"):
         bad = (a / (f_ref / k_ref) ** (2.0 / 3.0) < ANGULAR_RATIO_MIN) | flagged
@@ -1544,6 +1547,9 @@ def check_angular_scale(
         i = int(np.argmax(bad))
         f_max = float(k_ref[i] * (a[i] / ANGULAR_RATIO_MIN) ** 1.5)
         name = _largest_load(sizes, i)
+        if name == "moment" and moments is not None:
+            mm, mc = (abs(float(np.reshape(m, -1)[i])) for m in moments)
+            name = "moment_cross" if mc > mm else name
         *most, last = (_SIZE_WORDS[k] for k in sizes)
         raise InputError(
             name,
@@ -1817,8 +1823,19 @@ def remember_setup(key: bytes, known: np.ndarray) -> None:
     """Keep one geometry's Hertz set-up (K_0 and the curve's values) in the cache, the
     oldest dropped first beyond SETUP_CACHE_SIZE."""
     _SETUP_CACHE[key] = known
-    while len(_SETUP_CACHE) > SETUP_CACHE_SIZE:
-        _SETUP_CACHE.pop(next(iter(_SETUP_CACHE)))
+    trim_cache(_SETUP_CACHE)
+
+
+def trim_cache(cache: dict) -> None:
+    """Drop the oldest entries of a cache beyond SETUP_CACHE_SIZE. Threads may share it: one
+    may drop the entry another is dropping, or change the cache while another looks for its
+    oldest (a KeyError, or the RuntimeError of a dict changed during its iteration, raised
+    from solve_combined): then it looks again."""
+    while len(cache) > SETUP_CACHE_SIZE:
+        try:
+            del cache[next(iter(cache))]
+        except (KeyError, RuntimeError, StopIteration):  # (another thread was first)
+            continue
 
 
 def hertz_setup(geo: _Geometry, e: np.ndarray, nu: np.ndarray) -> tuple[np.ndarray, np.ndarray]:
@@ -1935,21 +1952,22 @@ def _checked(p: Problem, end: _ring.Point, its: np.ndarray, given: dict) -> tupl
             rows=np.flatnonzero(bad),
         )
     if near_edge is None or np.count_nonzero(near_edge):
-        _check_edge(end, given)
+        _check_edge(end, given, p.one_sided)
     return end.block, end.gen
 
 
-def _check_edge(end: _ring.Point, given: dict) -> None:
+def _check_edge(end: _ring.Point, given: dict, one_sided: np.ndarray) -> None:
     """InputError where a loaded ball of ``end`` sits at the groove edge: crossed groove
     centres, or a contact angle that rounds to 90° (a minimum may sit at the edge: there the
-    potential's curvature across the groove ends)."""
+    potential's curvature across the groove ends). ``one_sided`` (n,): the angular-contact
+    cases."""
     b, lo = end.b, end.lo
     near = (lo.root > 0) & ((b.rho <= 0) | (lo.ca < 1e-8))  # (elsewhere below 90° - 5e-7°)
     if near.any():
         edge = near & ((b.rho <= 0) | (np.rad2deg(np.arctan2(np.abs(lo.sa), lo.ca)) >= 90.0))
         if edge.any():
             case, ball = (int(i[0]) for i in np.nonzero(edge))
-            _refuse_edge(case, ball, given)
+            _refuse_edge(case, ball, given, bool(one_sided[case]))
 
 
 def _described(given: dict, rows: np.ndarray) -> dict:
@@ -1979,28 +1997,34 @@ INPUT_UNITS = {
 }
 
 
-def _refuse_edge(case: int, ball: int, given: dict) -> None:
-    """InputError: ball ``ball`` of case ``case`` would carry load past the groove edge."""
+def _refuse_edge(case: int, ball: int, given: dict, angular: bool = False) -> None:
+    """InputError: ball ``ball`` of case ``case`` would carry load past the groove edge.
+    ``angular``: an angular-contact case, whose clearance is not an input (0: its design
+    contact angle fixes the geometry), so neither named nor advised."""
     from bearingload.errors import format_cases
 
     one = _described(given, np.array([case]))
+    if angular:
+        del one["clearance"]
     if one["axial_load"] != 0:
         name = "axial_load"
     else:
         name = next(
-            (k for k in ("misalignment", "moment", "moment_cross") if k in one), "clearance"
+            (k for k in ("misalignment", "moment", "moment_cross") if k in one),
+            "radial_load" if angular else "clearance",
         )
+    clearance = "" if angular else " and the clearance"
     if "misalignment" in one:
-        way = "lower the axial load, moment or tilt, or the clearance"
+        way = "lower the axial load, moment or tilt" + ("" if angular else ", or the clearance")
     else:  # a free ring's tilt may seat the balls under more thrust as well as under less
         way = (
-            "lower the clearance, change the axial load or moment (the inner ring is free to "
-            "tilt: more thrust may seat the balls, as less may), or impose the tilt with a "
-            "misalignment (0: aligned)"
+            ("change" if angular else "lower the clearance, change")
+            + " the axial load or moment (the inner ring is free to tilt: more thrust may seat "
+            "the balls, as less may), or impose the tilt with a misalignment (0: aligned)"
         )
     raise InputError(
         name,
-        f"the loads and the clearance drive ball {ball + 1} to a contact angle of 90°, the "
+        f"the loads{clearance} drive ball {ball + 1} to a contact angle of 90°, the "
         "edge of its groove (the centres of its two grooves cross): it would ride over the "
         f"groove shoulder, which the model does not describe; {way} "
         f"({format_cases(one, INPUT_UNITS)})",

@@ -207,13 +207,14 @@ def stiffness_nodes(geo: Any, e: np.ndarray, nu: np.ndarray) -> tuple[np.ndarray
     columns = (geo.D_w, geo.d_m, geo.f_i, geo.f_o, e, nu)
     rows_i, rows_o = [], []
     for key in zip(*(a.tolist() for a in columns), strict=True):
-        if key not in _NODE_CACHE:
+        nodes = _NODE_CACHE.get(key)
+        if nodes is None:  # (kept here: another thread may drop it from the cache)
             dw, dm, fi, fo, ee, nn = key
             k = ball_stiffness(dw, dm / _NODE_COS, fi, fo, ee, nn)
-            _NODE_CACHE[key] = (np.asarray(k.inner, float), np.asarray(k.outer, float))
-            while len(_NODE_CACHE) > _combined.SETUP_CACHE_SIZE:
-                _NODE_CACHE.pop(next(iter(_NODE_CACHE)))
-        k_i, k_o = _NODE_CACHE[key]
+            nodes = (np.asarray(k.inner, float), np.asarray(k.outer, float))
+            _NODE_CACHE[key] = nodes
+            _combined.trim_cache(_NODE_CACHE)
+        k_i, k_o = nodes
         rows_i.append(k_i)
         rows_o.append(k_o)
     return np.stack(rows_i)[:, None, :], np.stack(rows_o)[:, None, :]

@@ -201,7 +201,8 @@ def solve_pair(
 ) -> PairDistribution:
     """Equilibrium of the shaft in a pair of identical angular-contact ball bearings.
 
-    Model and conventions: the module docstring. Arrays broadcast over cases.
+    Model and conventions: docs/angular_contact.md, "Pairs: DB, DF, DT". Arrays broadcast
+    over cases.
 
     Parameters
     ----------
@@ -567,7 +568,7 @@ def _refuse_scale(geo: Any, k_ref: np.ndarray, status: np.ndarray, *loads: np.nd
     heavy = status == _core.SetupStatus.TOO_HEAVY
     moment = np.hypot(mm, mc) / geo.R_i
     named = {"radial_load": fr, "axial_load": np.abs(fa), "moment": moment, "preload": fp}
-    _comb.check_angular_scale(f_ref, k_ref, geo.A, named, heavy)
+    _comb.check_angular_scale(f_ref, k_ref, geo.A, named, heavy, moments=(mm, mc))
 
 
 def _near_symmetric(z: int, cage: np.ndarray, mc: np.ndarray) -> np.ndarray:
