@@ -227,8 +227,9 @@ def nonconforming(name: str, arr: np.ndarray, bad: Any) -> InputError:
 
 
 #: The largest imposed misalignment (tilt of the inner ring) the ball-bearing models take: a
-#: deep-groove ball bearing tolerates 2-10 arcmin, and a tilt of a few degrees would push the
-#: balls over the groove shoulders, which the models do not describe. [°]
+#: deep-groove ball bearing tolerates 2-10 arcmin (an angular-contact one little), and a tilt of
+#: a few degrees would push the balls over the groove shoulders, which the models do not
+#: describe. [°]
 MISALIGNMENT_MAX = 2.0
 
 
@@ -244,9 +245,10 @@ def misalignment_beyond(tilt: np.ndarray, bad: np.ndarray) -> InputError:
     first = float(np.asarray(tilt)[np.asarray(bad)].flat[0])  # as given: -3° reads -3°
     return InputError(
         "misalignment",
-        f"must be within ±{MISALIGNMENT_MAX:g}° (got {first:.10g}°): a deep-groove ball bearing "
-        "tolerates 2-10 arcmin, and a tilt of degrees would push the balls over the groove "
-        "shoulders, which the model does not describe",
+        f"must be within ±{MISALIGNMENT_MAX:g}° (got {first:.10g}°): ball bearings tolerate "
+        "minutes of arc at most (a deep-groove one 2-10 arcmin, an angular-contact one little), "
+        "and a tilt of degrees would push the balls over the groove shoulders, which the model "
+        "does not describe",
         element=element(tilt, bad, "°"),
     )
 

@@ -82,7 +82,7 @@ def test_a_misalignment_beyond_two_degrees_is_refused_naming_it(model, misalignm
     with pytest.raises(InputError) as info:
         model(misalignment=misalignment)
     assert info.value.parameter == "misalignment"
-    assert info.value.message.startswith(f"must be within ±2° (got {shown}°): a deep-groove ball")
+    assert info.value.message.startswith(f"must be within ±2° (got {shown}°): ball bearings")
 
 
 @MODELS
@@ -238,3 +238,12 @@ def test_the_command_line_refuses_a_too_small_ball_with_the_library_message(caps
     with pytest.raises(InputError) as info:
         solve_combined(9, 1000.0, ball_diameter=1e-300, pitch_diameter=38.5)
     assert line == f"Error: Invalid value for '--ball-diameter': {info.value.message}"
+
+
+def test_an_angular_contact_misalignment_refusal_does_not_speak_of_a_deep_groove_bearing(capsys):
+    """The refusal of a misalignment beyond ±2° gave a deep-groove ball bearing's 2-10 arcmin as
+    the reason, also for an angular-contact bearing (which takes little misalignment)."""
+    line = error_line(capsys, "solve", "7205B", "-F", "1kN", "--misalignment", "-3")
+    assert "(got -3°): ball bearings tolerate minutes of arc at most" in line
+    assert "an angular-contact one little" in line
+    assert "a deep-groove ball bearing tolerates" not in line
