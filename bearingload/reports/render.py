@@ -273,11 +273,13 @@ def _column_cells(key: str, vals: Any) -> list[str]:
     """The cells of one column: floats by :func:`number_text`, each distinct other value once."""
     items = vals.tolist() if hasattr(vals, "tolist") else vals
     kind = getattr(getattr(vals, "dtype", None), "kind", "")
-    if key in TURN_KEYS:
-        import numpy as np
+    if key in TURN_KEYS and (kind != "f" or bool((vals >= 355.0).any())):
+        import numpy as np  # (no angle below 355° rounds to 360: turn_angle)
 
         items = [turn_angle(v, MACHINE_DIGITS) for v in items]
         vals = np.asarray(items, dtype=float) if kind == "f" else items
+    if not kind and items and items[0] is None and items.count(None) == len(items):
+        return [""] * len(items)  # (a column no row gives: the radial engine's matrix entries)
     try:
         if kind == "f":
             import numpy as np
