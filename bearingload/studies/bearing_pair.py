@@ -174,9 +174,7 @@ def _singles(
     from bearingload.studies.combined_bearing import combined_case
 
     return [
-        combined_case(
-            b, rk, rk.load, rk.axial_load, rk.moment, None, None, lever, rotating, dynamic_rating
-        )
+        combined_case(b, rk, rk.load, rk.axial_load, None, None, lever, rotating, dynamic_rating)
         for rk in r.bearings
     ]
 
@@ -250,8 +248,6 @@ def _pair_case(
 ) -> PairCase:
     """The pair's case of its solution ``r`` (one case) and each bearing's single case
     (:func:`_singles`): an unloaded bearing without lives, the pair's lives and findings."""
-    from bearingload.models.pair import pair_life
-
     cases = []
     for k, c in enumerate(singles):
         if r.unloaded[k]:  # no ball loaded: no life, no equivalent load
@@ -273,16 +269,18 @@ def _pair_case(
             f"bearing {k + 1} of the {ARRANGEMENT_NAMES[r.arrangement]} pair carries no load"
             f"{when}: its balls may skid; raise the preload"
         )
-    return PairCase(b, r, (cases[0], cases[1]), _combined(lives, pair_life),
-                    _combined(basic, pair_life), rotating, tuple(found))  # fmt: skip
+    return PairCase(b, r, (cases[0], cases[1]), _combined(lives), _combined(basic), rotating,
+                    tuple(found))  # fmt: skip
 
 
-def _combined(lives: list[Any], rule: Any) -> float | None:
-    """The pair's life of the bearings' lives (an unloaded bearing's infinite one drops out);
-    None where a loaded bearing's is unknown."""
+def _combined(lives: list[Any]) -> float | None:
+    """The pair's life of the bearings' lives (:func:`bearingload.models.pair.pair_life`; an
+    unloaded bearing's infinite one drops out); None where a loaded bearing's is unknown."""
+    from bearingload.models.pair import pair_life
+
     if any(x is None or math.isnan(float(x)) for x in lives):
         return None
-    out = float(rule(float(lives[0]), float(lives[1])))
+    out = float(pair_life(float(lives[0]), float(lives[1])))
     return None if math.isinf(out) else out
 
 
@@ -324,7 +322,6 @@ def pair_service_values(c: PairCase, service: Sequence[Any] | None) -> dict[str,
     Keys without a value are left out (no speed: no hours; no viscosity: no modified life).
     """
     from bearingload.bearings.modified_life import life_hours
-    from bearingload.models.pair import pair_life
 
     if not service:
         return {}
@@ -335,7 +332,7 @@ def pair_service_values(c: PairCase, service: Sequence[Any] | None) -> dict[str,
     for key in MODIFIED_LIVES:
         if any(key in v for v in given):
             lives = [math.inf if c.result.unloaded[k] else v.get(key) for k, v in enumerate(given)]
-            life = _combined(lives, pair_life)
+            life = _combined(lives)
             if life is not None:
                 out[key] = life
     speed = out.get("speed")

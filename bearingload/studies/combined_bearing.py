@@ -112,14 +112,14 @@ def solve_combined_bearing(
         r = solve_on_bearing(b, load, axial_load, cage_angle=cage_angle, moment=moment,
                              misalignment=misalignment, moment_cross=moment_cross,
                              tilt_radius=lever, speed=speed, ball_density=ball_density)  # fmt: skip
-        out.append(combined_case(b, r, load, axial_load, moment, misalignment, moment_cross,
-                                  lever, rotating, dynamic_rating))  # fmt: skip
+        out.append(combined_case(b, r, load, axial_load, misalignment, moment_cross, lever,
+                                  rotating, dynamic_rating))  # fmt: skip
     return out
 
 
 def combined_case(
-    b: ResolvedBearing, r: CombinedDistribution, load: Any, axial_load: Any, moment: Any,
-    misalignment: Any, moment_cross: Any, lever: Any, rotating: str, dynamic_rating: Any,
+    b: ResolvedBearing, r: CombinedDistribution, load: Any, axial_load: Any, misalignment: Any,
+    moment_cross: Any, lever: Any, rotating: str, dynamic_rating: Any,
 ) -> CombinedCase:  # fmt: skip
     """What derives from the solved case(s) ``r``: lives, the largest contact pressures, P0,
     s0 and the checks of every case (one case: numbers; many: arrays or lists)."""
