@@ -17,10 +17,10 @@ from .cli_helpers import invoke, run_entry
 CASE = ("sweep", "-z", "9", "-F", "1kN", "-K", "1e5", "-G", "10um")
 
 CSV_3 = """\
-balls,load [N],stiffness [N/mm^1.5],clearance [mm],exponent,cage_angle [°],x [mm],y [mm],q_max [N],q_max_ball,loaded_balls,stiffness_xx [N/mm],stiffness_xy [N/mm],stiffness_yy [N/mm],stiffness_radial [N/mm]
-9,1000.0,100000.0,0.01,1.5,0.0,0.03472437386,0.0,512.4707383,1,5,52025.23487,0.0,27554.40218,52025.23487
-9,1000.0,100000.0,0.01,1.5,20.0,0.03471268143,0.0,459.005443,1,4,52361.87697,0.0,30842.96794,52361.87697
-9,1000.0,100000.0,0.01,1.5,40.0,0.03472437386,0.0,512.4707383,9,5,52025.23487,0.0,27554.40218,52025.23487
+balls,load [N],stiffness [N/mm^1.5],clearance [mm],exponent,cage_angle [°],x [mm],y [mm],q_max [N],q_max_ball,loaded_balls,stiffness_matrix_11 [N/mm],stiffness_matrix_12 [N/mm],stiffness_matrix_21 [N/mm],stiffness_matrix_22 [N/mm],stiffness_radial [N/mm]
+9,1000.0,100000.0,0.01,1.5,0.0,0.03472437386,0.0,512.4707383,1,5,52025.23487,0.0,0.0,27554.40218,52025.23487
+9,1000.0,100000.0,0.01,1.5,20.0,0.03471268143,0.0,459.005443,1,4,52361.87697,0.0,0.0,30842.96794,52361.87697
+9,1000.0,100000.0,0.01,1.5,40.0,0.03472437386,0.0,512.4707383,9,5,52025.23487,0.0,0.0,27554.40218,52025.23487
 """
 
 

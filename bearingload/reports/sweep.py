@@ -16,7 +16,7 @@ from bearingload.reports.quantities import (
 )
 from bearingload.reports.render import Column, Table, render
 from bearingload.reports.solve import blank
-from bearingload.studies.matrix import radial_matrix
+from bearingload.studies.matrix import matrix_key, radial_matrix
 from bearingload.studies.sweep import CageSweep
 from bearingload.units import KGF
 
@@ -30,9 +30,10 @@ ROW_KEYS = (
     ("q_max", "Q_max"),
     ("q_max_ball", "ball"),
     ("loaded_balls", "loaded"),
-    ("stiffness_xx", "K_xx"),
-    ("stiffness_xy", "K_xy"),
-    ("stiffness_yy", "K_yy"),
+    ("stiffness_matrix_11", "K_xx"),
+    ("stiffness_matrix_12", "K_xy"),
+    ("stiffness_matrix_21", "K_yx"),
+    ("stiffness_matrix_22", "K_yy"),
     ("stiffness_radial", "K_r"),
 )
 INPUT_KEYS = ("balls", "load", "stiffness", "clearance", "exponent")
@@ -199,15 +200,12 @@ def positions_table(columns: list[Column], rows: list[dict[str, Any]], notes: li
 
 
 def _flat_rows(s: CageSweep) -> list[dict[str, Any]]:
-    """One dict per cage position, the stiffness matrix as its three entries (mm, N, N/mm)."""
+    """One dict per cage position, the stiffness matrix as the four entries of its radial block
+    under solve's csv names (``stiffness_matrix_11`` ... ``_22``; mm, N, N/mm)."""
     rows = []
     for row in _json_rows(s):
         matrix = row.pop("stiffness_matrix")
-        row |= {
-            "stiffness_xx": matrix[0][0],
-            "stiffness_xy": matrix[0][1],
-            "stiffness_yy": matrix[1][1],
-        }
+        row |= {matrix_key(i, j): matrix[i][j] for i in range(2) for j in range(2)}
         rows.append(row)
     return rows
 
