@@ -369,3 +369,23 @@ def test_output_to_a_full_device_is_one_error_line_not_an_internal_error(fmt):
         )
     assert done.returncode == 1
     assert done.stderr == "Error: cannot write the output: No space left on device\n"
+
+
+@pytest.mark.skipif(os.name != "posix", reason="closes file descriptor 1 in the child (POSIX)")
+def test_a_closed_standard_output_is_no_internal_error_and_output_to_a_file_is_written(tmp_path):
+    """With standard output closed (``>&-``) Python has no sys.stdout; flushing it at the end
+    of run() said 'internal error (AttributeError ...)' with exit 3, also for batch -o, whose
+    output goes to its file and which needs no standard output."""
+    cases = Path(__file__).resolve().parent.parent / "examples" / "cases.csv"
+    out = tmp_path / "out.csv"
+    args = ("batch", str(cases), "-o", str(out), "-q", "--format", "csv")
+    done = subprocess.run(
+        [sys.executable, "-m", "bearingload", *args],
+        stderr=subprocess.PIPE,
+        text=True,
+        timeout=120,
+        preexec_fn=lambda: os.close(1),  # noqa: PLW1509 (no threads in the child yet)
+    )
+    assert "internal error" not in done.stderr
+    assert done.returncode == 0, done.stderr
+    assert out.read_text(encoding="utf-8").startswith("row,bearing,")

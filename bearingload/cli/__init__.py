@@ -108,7 +108,8 @@ def run(argv: list[str] | None = None) -> None:
     try:
         _refuse_detached_units(sys.argv[1:] if argv is None else argv)
         status = main.main(args=argv, prog_name="bearingload", standalone_mode=False)
-        sys.stdout.flush()  # (a full disk refused here, not at the interpreter's exit)
+        if sys.stdout is not None:  # (None: standard output closed, '>&-')
+            sys.stdout.flush()  # (a full disk refused here, not at the interpreter's exit)
         if isinstance(status, int) and status:  # ctx.exit(n) returns n without standalone mode
             sys.exit(status)
     except click.exceptions.Exit as exc:
