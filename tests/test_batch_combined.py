@@ -113,7 +113,7 @@ def test_bad_rows_are_named_and_the_others_solved():
 
 
 def test_headers_that_cannot_be_combined_are_refused(capsys, tmp_path):
-    for head, word in (("load,axial_load", "needs deep-groove ball bearings"),
+    for head, word in (("load,axial_load", "combined load needs ball bearings"),
                        ("bearing,load,axial_load,method", "method: not used"),
                        ("bearing,load,moment,exponent", "exponent: not used")):  # fmt: skip
         path = tmp_path / "cases.csv"

@@ -247,3 +247,12 @@ def test_an_angular_contact_misalignment_refusal_does_not_speak_of_a_deep_groove
     assert "(got -3°): ball bearings tolerate minutes of arc at most" in line
     assert "an angular-contact one little" in line
     assert "a deep-groove ball bearing tolerates" not in line
+
+
+def test_a_roller_bearing_under_a_combined_load_is_refused_naming_both_ball_kinds(capsys):
+    """A roller bearing's refusal of the combined load said it is solved 'for deep-groove ball
+    bearings only', while an angular-contact one (7205B -A 500N) is solved too."""
+    line = error_line(capsys, "solve", "NU206", "-F", "1kN", "-A", "100N")
+    assert "NU206 is a roller bearing" in line
+    assert "deep-groove ball bearings only" not in line
+    assert "ball bearings only (deep-groove and angular-contact)" in line

@@ -113,7 +113,7 @@ def _check_file(
 _FILE_KINDS = (
     (
         COMBINED_COLUMNS,
-        "the combined load needs deep-groove ball bearings: add a 'bearing' column (a "
+        "the combined load needs ball bearings: add a 'bearing' column (a "
         "designation) or 'ball_diameter' and 'pitch_diameter'",
         ("method", "revolutions", "exponent"),
         "with the combined load ({}): its rows are solved by the 3-D equilibrium of a ball "

@@ -330,7 +330,8 @@ def solve_on_bearing(
         raise InputError(
             "bearing",
             f"{b.designation} is a {b.kind} bearing: the combined load (axial load, moment, "
-            "misalignment, ISO/TS 16281 life) is solved for deep-groove ball bearings only",
+            "misalignment, ISO/TS 16281 life) is solved for ball bearings only (deep-groove and "
+            "angular-contact)",
         )
     if not b.has_geometry:
         raise InputError(
