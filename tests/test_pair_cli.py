@@ -66,6 +66,20 @@ def test_terminal_table_shows_the_pair_and_both_bearings(capsys):
     assert "contact angle, bearing 2" in out
 
 
+@pytest.mark.parametrize("fmt", ["table", "markdown"])
+def test_the_bearings_matrices_carry_their_shared_note_once(capsys, fmt):
+    """The matrices of bearing 1 and 2 share one note (csv stiffness_matrix_11 ...), given under
+    the last as under a clearance range's matrices; the shaft's names its own csv columns."""
+    args = ("solve", "7205BDB", "--preload", "300N", "-F", "2kN", "-A", "1kN", "--format", fmt)
+    code, out, _ = run_entry(capsys, *args)
+    assert code == 0
+    assert out.count("tangent stiffness matrix of bearing") == 2
+    assert out.count("json: stiffness_matrix, csv: stiffness_matrix_11 ... _55.") == 1
+    assert out.count("json: stiffness_matrix, csv: pair_stiffness_matrix_11 ... _55.") == 1
+    shared = out.split("tangent stiffness matrix of bearing 2")[1]
+    assert "csv: stiffness_matrix_11" in shared  # (under the last)
+
+
 def test_csv_is_one_row_per_bearing(capsys):
     code, out, _ = run_entry(capsys, "solve", "7205BDT", "-F", "1kN", "-A", "2kN", "--format",
                              "csv")  # fmt: skip

@@ -20,6 +20,7 @@ from bearingload.reports.render import Column, Table, render
 from bearingload.reports.solve import (
     blank,
     material_note,
+    noted_once,
     printed_warnings,
     quantity_rows,
     service_notes,
@@ -228,10 +229,12 @@ def pair_report(
         summary,
         matrix_table(shaft, "tangent stiffness matrix of the shaft", "pair_stiffness_matrix"),
     ]
-    tables += [
-        matrix_table(b.result.stiffness_matrix, f"tangent stiffness matrix of bearing {n}")
-        for n, b in enumerate(c.bearings, start=1)
-    ]
+    tables += noted_once(
+        [
+            matrix_table(b.result.stiffness_matrix, f"tangent stiffness matrix of bearing {n}")
+            for n, b in enumerate(c.bearings, start=1)
+        ]
+    )
     tables.append(_balls_table(c))
     return render(tables, fmt)
 
