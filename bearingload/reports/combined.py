@@ -13,9 +13,8 @@ from typing import Any
 
 from bearingload.bearings.mounting import RESULT_KEYS, mounting_notes
 from bearingload.reports.quantities import MATRIX_UNITS, SERVICE_KEYS, column, units
-from bearingload.reports.render import Table, render
+from bearingload.reports.render import Column, Table, render
 from bearingload.reports.solve import (
-    MATRIX_ENTRY,
     balls_table,
     blank,
     case_warnings,
@@ -29,9 +28,8 @@ from bearingload.reports.solve import (
     set_note,
     with_service,
 )
-from bearingload.reports.solve import matrix_table as solve_matrix_table
 from bearingload.studies.combined_bearing import CombinedCase, combined_values
-from bearingload.studies.matrix import MATRIX_KEYS
+from bearingload.studies.matrix import MATRIX_COLUMNS, MATRIX_KEYS, MATRIX_ROWS
 from bearingload.units import turn_angle
 
 INPUT_KEYS = (
@@ -200,14 +198,22 @@ def _case_table(records: Sequence[dict[str, Any]]) -> Table:
 def matrix_table(
     matrix: Any, title: str = "tangent stiffness matrix", csv: str = "stiffness_matrix"
 ) -> Table:
-    """A 5x5 ``stiffness_matrix`` of the combined engine as people read it
-    (:func:`bearingload.reports.solve.matrix_table`); ``csv``: the stem of its csv columns
-    (``pair_stiffness_matrix`` for a pair's shaft)."""
+    """A 5x5 ``stiffness_matrix`` of the combined engine as people read it: a row per force or
+    moment, a column per displacement or tilt, each entry d(row)/d(column) in the units the row
+    and column name; ``csv``: the stem of its csv columns (``pair_stiffness_matrix`` for a
+    pair's shaft)."""
+    columns = [Column("row", "", align="left")]
+    columns += [Column(m, f"d/d({m}) [1/{u}]", "", 6) for m, u in MATRIX_COLUMNS]
+    moves = [m for m, _ in MATRIX_COLUMNS]
+    rows = []
+    for (force, unit), row in zip(MATRIX_ROWS, matrix, strict=True):
+        rows.append({"row": f"{force} [{unit}]"} | dict(zip(moves, map(float, row), strict=True)))
     note = (
-        f"{MATRIX_ENTRY}; the true tangent, not quite symmetric (its symmetric part: json "
+        "Entry: the change of the row's force or moment per unit of the column's motion "
+        f"({MATRIX_UNITS}); the true tangent, not quite symmetric (its symmetric part: json "
         f"stiffness_matrix_symmetric); json: stiffness_matrix, csv: {csv}_11 ... _55."
     )
-    return solve_matrix_table(matrix, title, note)
+    return Table(title, columns, rows, [note])
 
 
 def _balls(c: CombinedCase) -> list[tuple[float, float, float, float]]:

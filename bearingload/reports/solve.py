@@ -29,7 +29,7 @@ from bearingload.studies.loaded_bearing import (
     collect_warnings,
     with_relative_errors,
 )
-from bearingload.studies.matrix import MATRIX_COLUMNS, MATRIX_KEYS, MATRIX_ROWS
+from bearingload.studies.matrix import MATRIX_KEYS
 from bearingload.units import turn_angle
 
 #: Inputs of a case (the csv columns that say which case a row is).
@@ -402,11 +402,6 @@ def balls_table(
     return Table(title, columns, rows, notes)
 
 
-#: The first words of the note under every stiffness matrix table (:func:`matrix_table`).
-MATRIX_ENTRY = (
-    "Entry: the change of the row's force or moment per unit of the column's motion "
-    f"({MATRIX_UNITS})"
-)
 #: The note under the radial engine's summary, of the stiffness matrix entries it lists.
 RADIAL_MATRIX_NOTE = (
     "stiffness dF_x/d(x) ... dF_y/d(y): the entries of the tangent stiffness matrix the radial "
@@ -414,21 +409,6 @@ RADIAL_MATRIX_NOTE = (
     "solved with a load option, -A 0 too, give all 25); json: stiffness_matrix, csv: "
     "stiffness_matrix_11 ... _55."
 )
-
-
-def matrix_table(matrix: Any, title: str, note: str) -> Table:
-    """A 5x5 ``stiffness_matrix`` as people read it: a row per force or moment, a column per
-    displacement or tilt, each entry d(row)/d(column) in the units the row and column name
-    ('-' where it is None: not determined), under ``note``."""
-    columns = [Column("row", "", align="left")]
-    columns += [Column(m, f"d/d({m}) [1/{u}]", "", 6) for m, u in MATRIX_COLUMNS]
-    moves = [m for m, _ in MATRIX_COLUMNS]
-    rows = []
-    for (force, unit), row in zip(MATRIX_ROWS, matrix, strict=True):
-        cells: dict[str, Any] = {"row": f"{force} [{unit}]"}
-        cells |= {m: "-" if v is None else float(v) for m, v in zip(moves, row, strict=True)}
-        rows.append(cells)
-    return Table(title, columns, rows, [note])
 
 
 def noted_once(tables: list[Table]) -> list[Table]:
