@@ -70,10 +70,7 @@ def _refuse_masked(name: str, value: np.ma.MaskedArray) -> None:
     hidden = np.ma.getmaskarray(value)
     if not hidden.any():
         return
-    where = ""
-    if hidden.size > 1:
-        index = np.unravel_index(int(np.flatnonzero(hidden)[0]), hidden.shape)
-        where = "[" + ", ".join(str(int(i)) for i in index) + "]"
+    where = _indexed(first_index(hidden)) if hidden.size > 1 else ""
     raise InputError(name, "masked", way_out="give the numbers without a mask", element=where)
 
 
@@ -302,7 +299,7 @@ def first_refused(bad: Any, *values: Any) -> list[float]:
     """The ``values`` (arrays broadcast to ``bad``'s shape) of the first case where ``bad``, as
     floats: what a refusal of several inputs of one case shows."""
     bad = np.asarray(bad)
-    i = np.unravel_index(int(np.flatnonzero(bad)[0]), bad.shape)
+    i = first_index(bad)
     return [float(np.broadcast_to(v, bad.shape)[i]) for v in values]
 
 
@@ -406,9 +403,8 @@ def element(value: object, bad: Any, unit: str = "") -> str:
     flags = np.asarray(bad)
     if arr.size < 2 or flags.shape != arr.shape or not flags.any():
         return ""
-    index = np.unravel_index(int(np.flatnonzero(flags)[0]), arr.shape)
-    where = ", ".join(str(int(i)) for i in index)
-    return f"[{where}] = {_shown(arr[index])}" + (f" {unit}" if unit else "")
+    index = first_index(flags)
+    return f"{_indexed(index)} = {_shown(arr[index])}" + (f" {unit}" if unit else "")
 
 
 def element_at(value: object, bad: Any, shape: tuple[int, ...], unit: str = "") -> str:
@@ -420,13 +416,21 @@ def element_at(value: object, bad: Any, shape: tuple[int, ...], unit: str = "") 
     flags = np.asarray(bad).reshape(-1)
     if arr.size < 2 or not flags.any() or flags.size != int(np.prod(shape)):
         return ""
-    case = np.unravel_index(int(np.flatnonzero(flags)[0]), shape)
+    case = first_index(flags.reshape(shape))
     own = tuple(
-        0 if n == 1 else int(i)
-        for i, n in zip(case[len(case) - arr.ndim :], arr.shape, strict=True)
+        0 if n == 1 else i for i, n in zip(case[len(case) - arr.ndim :], arr.shape, strict=True)
     )
-    where = ", ".join(str(i) for i in own)
-    return f"[{where}] = {_shown(arr[own])}" + (f" {unit}" if unit else "")
+    return f"{_indexed(own)} = {_shown(arr[own])}" + (f" {unit}" if unit else "")
+
+
+def first_index(flags: np.ndarray) -> tuple[int, ...]:
+    """The index (of ``flags``' shape) of its first True element, as ints."""
+    return tuple(int(i) for i in np.unravel_index(int(np.flatnonzero(flags)[0]), flags.shape))
+
+
+def _indexed(index: tuple[int, ...]) -> str:
+    """``[1, 2]``: an element's index as a message names it."""
+    return "[" + ", ".join(map(str, index)) + "]"
 
 
 #: The types of :func:`not_real` (besides None).
