@@ -207,6 +207,21 @@ def init_signature(fields: tuple[dataclasses.Field, ...]) -> Any:
 def dataclass_init(cls: type) -> Any:
     """The ``__init__`` :mod:`dataclasses` builds for the fields of ``cls`` (built for a twin
     of the class; it names no class)."""
+    frozen = cls.__dataclass_params__.frozen  # type: ignore[attr-defined]
+    made = twin(
+        cls,
+        lambda f: {"default": f.default, "default_factory": f.default_factory},
+        frozen=frozen,
+        repr=False,
+        eq=False,
+    )
+    return made.__init__  # type: ignore[misc]
+
+
+def twin(cls: type, field_options: Any, **options: Any) -> type:
+    """A new dataclass of the fields of ``cls`` (its module, name and field types), each
+    field made with ``field_options(f)`` and the class with ``options``: whose methods
+    :mod:`dataclasses` builds as for ``cls`` (they name no class)."""
     fields = dataclasses.fields(cls)
     body: dict[str, Any] = {
         "__module__": cls.__module__,
@@ -214,12 +229,8 @@ def dataclass_init(cls: type) -> Any:
         "__annotations__": {f.name: f.type for f in fields},
     }
     for f in fields:
-        body[f.name] = dataclasses.field(default=f.default, default_factory=f.default_factory)
-    frozen = cls.__dataclass_params__.frozen  # type: ignore[attr-defined]
-    twin: Any = dataclasses.dataclass(
-        type(cls.__name__, (), body), frozen=frozen, repr=False, eq=False
-    )
-    return twin.__init__
+        body[f.name] = dataclasses.field(**field_options(f))
+    return dataclasses.dataclass(type(cls.__name__, (), body), **options)
 
 
 def frozen_methods(cls: type, fields: tuple[dataclasses.Field, ...]) -> tuple[Any, Any]:
@@ -250,21 +261,17 @@ def build_deferred(cls: type, options: dict[str, Any]) -> None:
     waiting = [n for n in DEFERRED if isinstance(cls.__dict__.get(n), Deferred)]
     if not waiting:
         return
-    fields = dataclasses.fields(cls)  # step 1 first, if not done
-    body: dict[str, Any] = {
-        "__module__": cls.__module__,
-        "__qualname__": cls.__qualname__,
-        "__annotations__": {f.name: f.type for f in fields},
-    }
-    for f in fields:
-        body[f.name] = dataclasses.field(repr=f.repr, hash=f.hash, compare=f.compare)
     later = {k: options.get(k, v) for k, v in METHOD_OPTIONS.items()}
-    twin: type = dataclasses.dataclass(
-        type(cls.__name__, (), body), init=False, frozen=options.get("frozen", False), **later
+    made = twin(  # (dataclasses.fields: step 1 first, if not done)
+        cls,
+        lambda f: {"repr": f.repr, "hash": f.hash, "compare": f.compare},
+        init=False,
+        frozen=options.get("frozen", False),
+        **later,
     )
     for name in waiting:
-        if name in twin.__dict__:
-            setattr(cls, name, twin.__dict__[name])
+        if name in made.__dict__:
+            setattr(cls, name, made.__dict__[name])
         else:
             delattr(cls, name)
 
